@@ -1,0 +1,117 @@
+//! Diagnostics: errors are data. Every stage reports problems as [`Diagnostic`]s with a byte span
+//! into the source text; nothing in the core panics on user input.
+
+use serde::Serialize;
+use std::ops::Range;
+
+/// How bad a diagnostic is. An `Error` stops the pipeline before geometry is produced.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Severity {
+    Error,
+    Warning,
+}
+
+/// One problem found in a grammar, located by a UTF-8 byte range of the source text.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Diagnostic {
+    pub severity: Severity,
+    /// A stable code (`E0101`), listed in docs/LANGUAGE.md, for tests and documentation.
+    pub code: &'static str,
+    pub message: String,
+    pub span: Range<usize>,
+}
+
+impl Diagnostic {
+    pub fn error(code: &'static str, span: Range<usize>, message: impl Into<String>) -> Self {
+        Diagnostic {
+            severity: Severity::Error,
+            code,
+            message: message.into(),
+            span,
+        }
+    }
+
+    pub fn warning(code: &'static str, span: Range<usize>, message: impl Into<String>) -> Self {
+        Diagnostic {
+            severity: Severity::Warning,
+            code,
+            message: message.into(),
+            span,
+        }
+    }
+}
+
+/// True when any diagnostic is an error.
+pub fn has_errors(diagnostics: &[Diagnostic]) -> bool {
+    diagnostics.iter().any(|d| d.severity == Severity::Error)
+}
+
+/// A diagnostic with its position resolved to 1-based line and column (columns count Unicode
+/// scalar values). This is the shape that crosses the wasm boundary and the CLI prints.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct LocatedDiagnostic {
+    pub severity: Severity,
+    pub code: &'static str,
+    pub message: String,
+    /// UTF-8 byte offsets into the source.
+    pub from: usize,
+    pub to: usize,
+    pub line: usize,
+    pub column: usize,
+}
+
+/// Maps byte offsets of one text to lines and columns.
+pub struct LineIndex<'a> {
+    text: &'a str,
+    line_starts: Vec<usize>,
+}
+
+impl<'a> LineIndex<'a> {
+    pub fn new(text: &'a str) -> Self {
+        let mut line_starts = vec![0];
+        line_starts.extend(text.match_indices('\n').map(|(i, _)| i + 1));
+        LineIndex { text, line_starts }
+    }
+
+    /// 1-based (line, column) of a byte offset; offsets past the end or inside a character are
+    /// clamped to the previous character boundary.
+    pub fn line_column(&self, offset: usize) -> (usize, usize) {
+        let mut offset = offset.min(self.text.len());
+        while !self.text.is_char_boundary(offset) {
+            offset -= 1;
+        }
+        let line = self.line_starts.partition_point(|&start| start <= offset) - 1;
+        let column = self.text[self.line_starts[line]..offset].chars().count() + 1;
+        (line + 1, column)
+    }
+
+    pub fn locate(&self, d: &Diagnostic) -> LocatedDiagnostic {
+        let (line, column) = self.line_column(d.span.start);
+        LocatedDiagnostic {
+            severity: d.severity,
+            code: d.code,
+            message: d.message.clone(),
+            from: d.span.start,
+            to: d.span.end.max(d.span.start),
+            line,
+            column,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn line_and_column_count_characters_not_bytes() {
+        let text = "ab\nωx\n";
+        let index = LineIndex::new(text);
+        assert_eq!(index.line_column(0), (1, 1));
+        assert_eq!(index.line_column(3), (2, 1));
+        assert_eq!(index.line_column(5), (2, 2)); // after the two-byte ω
+        assert_eq!(index.line_column(4), (2, 1)); // inside ω: clamped
+        assert_eq!(index.line_column(100), (3, 1));
+    }
+}

@@ -1,0 +1,18 @@
+//! Meristem's core: an L-system engine with a 3D turtle, free of IO and of the browser.
+//!
+//! The pipeline is one module per stage with plain data between them (see ARCHITECTURE.md):
+//! [`syntax`] (text -> syntax tree) -> [`model`] (resolve: validated model) -> [`derive`]
+//! (rewriting) -> [`turtle`] (interpretation: skeleton) -> [`mesh`] (triangles) -> [`export`].
+//! [`pipeline::build`] runs them all. `wasm` is the only file that knows about JavaScript.
+
+pub mod derive;
+pub mod diagnostics;
+pub mod export;
+pub mod mesh;
+pub mod model;
+pub mod pipeline;
+pub mod syntax;
+pub mod turtle;
+mod wasm;
+
+pub use pipeline::{build, Build, BuildOptions};

@@ -1,0 +1,99 @@
+//! The whole pipeline, parse -> resolve -> derive -> interpret -> mesh, as one call shared by the
+//! command-line tool and the wasm boundary. Each stage's output is kept in the [`Build`], so callers
+//! can show the derived string, the geometry and every diagnostic.
+
+use crate::derive::{self, DeriveOptions};
+use crate::diagnostics::{has_errors, Diagnostic, LineIndex, LocatedDiagnostic};
+use crate::export::Stats;
+use crate::mesh::{self, MeshBuffers, MeshOptions};
+use crate::model::{self, LString, Model};
+use crate::syntax;
+use crate::turtle::{self, Skeleton};
+
+/// Options of one build; `None` fields take the grammar's own settings.
+#[derive(Clone, Debug, Default)]
+pub struct BuildOptions {
+    /// Overrides `#iterations`.
+    pub iterations: Option<u32>,
+    pub mesh: MeshOptions,
+}
+
+/// Everything one build produced. When `diagnostics` has an error, the stages after the failing
+/// one did not run and their fields are empty.
+#[derive(Clone, Debug, Default)]
+pub struct Build {
+    pub diagnostics: Vec<Diagnostic>,
+    pub model: Option<Model>,
+    pub string: LString,
+    pub skeleton: Skeleton,
+    pub mesh: MeshBuffers,
+    pub stats: Stats,
+}
+
+impl Build {
+    /// True when no diagnostic is an error (the geometry is complete).
+    pub fn ok(&self) -> bool {
+        !has_errors(&self.diagnostics)
+    }
+
+    /// The derived string in canonical text form.
+    pub fn derived_text(&self) -> String {
+        self.model
+            .as_ref()
+            .map(|m| self.string.to_text(&m.alphabet))
+            .unwrap_or_default()
+    }
+
+    /// Diagnostics with line and column, in source order.
+    pub fn located_diagnostics(&self, source: &str) -> Vec<LocatedDiagnostic> {
+        let index = LineIndex::new(source);
+        let mut located: Vec<_> = self.diagnostics.iter().map(|d| index.locate(d)).collect();
+        located.sort_by_key(|d| (d.from, d.to));
+        located
+    }
+}
+
+/// Runs every stage on `source`.
+pub fn build(source: &str, options: &BuildOptions) -> Build {
+    let mut result = Build::default();
+    let (file, diagnostics) = syntax::parse(source);
+    result.diagnostics = diagnostics;
+    let (model, diagnostics) = model::resolve(&file);
+    result.diagnostics.extend(diagnostics);
+    let Some(model) = model else { return result };
+    if !result.ok() {
+        result.model = Some(model);
+        return result;
+    }
+    let steps = options.iterations.unwrap_or(model.settings.iterations);
+    if steps > model.settings.max_steps {
+        result.diagnostics.push(Diagnostic::error(
+            "E0202",
+            model.settings.iterations_span.clone().unwrap_or(0..0),
+            format!(
+                "{steps} iterations are more than the step limit {}; raise it with '#max_steps {steps}'",
+                model.settings.max_steps
+            ),
+        ));
+        result.model = Some(model);
+        return result;
+    }
+    match derive::derive(&model, &DeriveOptions { steps }) {
+        Ok(string) => result.string = string,
+        Err(diagnostic) => {
+            result.diagnostics.push(diagnostic);
+            result.model = Some(model);
+            return result;
+        }
+    }
+    result.skeleton = turtle::interpret(&model, &result.string);
+    result.mesh = mesh::build_mesh(&result.skeleton, &options.mesh);
+    result.stats = Stats::new(
+        result.string.len(),
+        result.skeleton.segments.len(),
+        steps,
+        &result.mesh,
+    );
+    result.model = Some(model);
+    result
+}

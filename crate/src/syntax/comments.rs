@@ -1,0 +1,77 @@
+//! Comments are replaced by spaces before parsing, byte for byte, so every span the parser reports
+//! is a span of the original text and line numbers do not move.
+
+use crate::diagnostics::Diagnostic;
+
+/// Returns `source` with `// …` and `/* … */` comments blanked out (newlines inside block comments
+/// are kept), and a diagnostic for an unterminated block comment.
+pub fn blank_comments(source: &str) -> (String, Vec<Diagnostic>) {
+    let bytes = source.as_bytes();
+    let mut out = bytes.to_vec();
+    let mut diagnostics = Vec::new();
+    let mut i = 0;
+    while i < bytes.len() {
+        if bytes[i] == b'/' && bytes.get(i + 1) == Some(&b'/') {
+            while i < bytes.len() && bytes[i] != b'\n' {
+                out[i] = b' ';
+                i += 1;
+            }
+        } else if bytes[i] == b'/' && bytes.get(i + 1) == Some(&b'*') {
+            let start = i;
+            out[i] = b' ';
+            out[i + 1] = b' ';
+            i += 2;
+            let mut closed = false;
+            while i < bytes.len() {
+                if bytes[i] == b'*' && bytes.get(i + 1) == Some(&b'/') {
+                    out[i] = b' ';
+                    out[i + 1] = b' ';
+                    i += 2;
+                    closed = true;
+                    break;
+                }
+                if bytes[i] != b'\n' {
+                    out[i] = b' ';
+                }
+                i += 1;
+            }
+            if !closed {
+                diagnostics.push(Diagnostic::error(
+                    "E0102",
+                    start..start + 2,
+                    "unterminated block comment: '/*' has no matching '*/'",
+                ));
+            }
+        } else {
+            i += 1;
+        }
+    }
+    // Only whole characters were replaced by ASCII spaces, so the bytes are still UTF-8.
+    let text = String::from_utf8(out)
+        .unwrap_or_else(|e| String::from_utf8_lossy(e.as_bytes()).into_owned());
+    (text, diagnostics)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn comments_become_spaces_of_the_same_length() {
+        let src = "F // ωωω\n/* a\nb */G";
+        let (text, diags) = blank_comments(src);
+        assert!(diags.is_empty());
+        assert_eq!(text.len(), src.len());
+        assert_eq!(
+            text.lines().collect::<Vec<_>>(),
+            vec!["F          ", "    ", "    G"]
+        );
+    }
+
+    #[test]
+    fn unterminated_block_comment_is_reported_where_it_opens() {
+        let (_, diags) = blank_comments("F\n  /* oops");
+        assert_eq!(diags.len(), 1);
+        assert_eq!(diags[0].span, 4..6);
+    }
+}

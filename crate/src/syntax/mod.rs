@@ -1,0 +1,13 @@
+//! Stage 1, `syntax`: grammar text to a syntax tree with spans, plus diagnostics.
+//!
+//! The parser never gives up: it reads the file line by line, reports what it cannot read and goes
+//! on at the next line, so the editor always gets every problem at once. Nothing here knows what a
+//! module *means*; that is the resolve step's job (`model`).
+
+mod ast;
+mod comments;
+mod parse;
+
+pub use ast::{Directive, ModuleSyntax, ProductionSyntax, SourceFile, Span};
+pub use comments::blank_comments;
+pub use parse::parse;

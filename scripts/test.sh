@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# The one test command (`npm test`): installs the tools npm cannot, then runs every gate and suite
+# (lint, cargo test, vitest with the real wasm, browser tests in headless Chromium) even when an
+# earlier one fails, and ends with one line `N passed, N failed` counting them all.
+# Artefacts (screenshots, JSON reports) go to test-results/.
+set -uo pipefail
+cd "$(dirname "$0")/.."
+[ -f "$HOME/.cargo/env" ] && . "$HOME/.cargo/env"
+export PATH="$PWD/node_modules/.bin:$PATH"
+
+bash scripts/setup.sh --browser || { echo "setup failed"; echo "0 passed, 1 failed"; exit 1; }
+
+rm -rf test-results && mkdir -p test-results
+passed=0
+failed=0
+gate() { # gate NAME COMMAND...: a lint or build step counted as one test
+  local name=$1; shift
+  echo "::: $name"
+  if "$@"; then passed=$((passed + 1)); else echo "FAILED: $name"; failed=$((failed + 1)); fi
+}
+count_vitest() { # count_vitest REPORT.json: add a vitest JSON report's totals
+  if [ -f "$1" ]; then
+    read -r p f < <(node -e 'const r=require(process.argv[1]);console.log(r.numPassedTests, r.numFailedTests + (r.numTotalTestSuites && r.success===false && r.numFailedTests===0 ? 1 : 0))' "$1")
+    passed=$((passed + p)); failed=$((failed + f))
+  else
+    echo "FAILED: no report $1"; failed=$((failed + 1))
+  fi
+}
+
+gate "cargo fmt --check" cargo fmt --manifest-path crate/Cargo.toml --check
+gate "cargo clippy -D warnings" cargo clippy --quiet --manifest-path crate/Cargo.toml --all-targets -- -D warnings
+gate "tsc --noEmit" tsc --noEmit -p tsconfig.json
+
+echo "::: cargo test"
+cargo test --manifest-path crate/Cargo.toml 2>&1 | tee test-results/cargo.txt
+cargo_status=${PIPESTATUS[0]}
+read -r p f < <(grep -E '^test result:' test-results/cargo.txt | sed -E 's/.* ([0-9]+) passed; ([0-9]+) failed.*/\1 \2/' | awk '{p+=$1; f+=$2} END {print p+0, f+0}')
+passed=$((passed + p)); failed=$((failed + f))
+if [ "$cargo_status" -ne 0 ] && [ "$f" -eq 0 ]; then echo "FAILED: cargo test did not run to the end"; failed=$((failed + 1)); fi
+
+gate "build wasm" bash scripts/build-wasm.sh
+echo "::: vitest (unit and cross-boundary, real wasm in node)"
+vitest run --reporter=default --reporter=json --outputFile=test-results/vitest.json
+count_vitest test-results/vitest.json
+
+gate "vite build" vite build --logLevel warn
+echo "::: browser tests (headless Chromium)"
+vitest run --config tests/browser/vitest.config.ts --reporter=default --reporter=json --outputFile=test-results/browser.json
+count_vitest test-results/browser.json
+
+echo
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
