@@ -34,6 +34,58 @@ impl MeshBuffers {
         self.indices.len() / 3
     }
 
+    /// Checks the invariants every mesh satisfies: array lengths agree, indices in range, finite
+    /// floats, colours in 0..=1, unit normals, no degenerate triangle, and counter-clockwise
+    /// winding (each face normal agrees with its vertex normals). Returns the first violation.
+    pub fn check(&self) -> Result<(), String> {
+        let vertices = self.vertex_count();
+        if !self.positions.len().is_multiple_of(3) || self.normals.len() != self.positions.len() {
+            return Err("positions and normals must hold 3 floats per vertex each".into());
+        }
+        if self.colors.len() != self.positions.len() || !self.indices.len().is_multiple_of(3) {
+            return Err("colors must hold 3 floats per vertex and indices 3 per triangle".into());
+        }
+        if let Some(i) = self.indices.iter().find(|&&i| i as usize >= vertices) {
+            return Err(format!("index {i} out of range ({vertices} vertices)"));
+        }
+        if !self
+            .positions
+            .iter()
+            .chain(&self.normals)
+            .chain(&self.colors)
+            .all(|v| v.is_finite())
+        {
+            return Err("a float is not finite".into());
+        }
+        if !self.colors.iter().all(|c| (0.0..=1.0).contains(c)) {
+            return Err("a colour component is outside 0..=1".into());
+        }
+        let vector = |array: &[f32], i: u32| {
+            let i = i as usize * 3;
+            DVec3::new(array[i] as f64, array[i + 1] as f64, array[i + 2] as f64)
+        };
+        for v in 0..vertices as u32 {
+            let length = vector(&self.normals, v).length();
+            if (length - 1.0).abs() > 1e-5 {
+                return Err(format!("normal of vertex {v} has length {length}"));
+            }
+        }
+        for t in self.indices.chunks_exact(3) {
+            let p = |i: u32| vector(&self.positions, i);
+            let face = (p(t[1]) - p(t[0])).cross(p(t[2]) - p(t[0]));
+            if face.length() == 0.0 {
+                return Err(format!("degenerate triangle {t:?}"));
+            }
+            let normals = vector(&self.normals, t[0])
+                + vector(&self.normals, t[1])
+                + vector(&self.normals, t[2]);
+            if face.dot(normals) <= 0.0 {
+                return Err(format!("triangle {t:?} winds clockwise seen from outside"));
+            }
+        }
+        Ok(())
+    }
+
     /// `[[min x, y, z], [max x, y, z]]` of the vertices; all zeros for an empty mesh.
     pub fn bounds(&self) -> [[f64; 3]; 2] {
         if self.positions.is_empty() {
@@ -151,53 +203,9 @@ fn skeleton_diagonal(skeleton: &Skeleton) -> f64 {
 }
 
 #[cfg(test)]
-pub(crate) mod tests {
+mod tests {
     use super::*;
     use crate::turtle::Segment;
-
-    /// The mesh invariants every mesh must satisfy; used by the gallery tests too.
-    pub(crate) fn check_invariants(mesh: &MeshBuffers) {
-        let vertices = mesh.vertex_count();
-        assert_eq!(mesh.positions.len() % 3, 0);
-        assert_eq!(mesh.normals.len(), mesh.positions.len());
-        assert_eq!(mesh.colors.len(), mesh.positions.len());
-        assert_eq!(mesh.indices.len() % 3, 0);
-        assert!(
-            mesh.indices.iter().all(|&i| (i as usize) < vertices),
-            "index out of range"
-        );
-        assert!(mesh
-            .positions
-            .iter()
-            .chain(&mesh.normals)
-            .chain(&mesh.colors)
-            .all(|v| v.is_finite()));
-        assert!(mesh.colors.iter().all(|&c| (0.0..=1.0).contains(&c)));
-        for n in mesh.normals.chunks_exact(3) {
-            let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
-            assert!((len - 1.0).abs() < 1e-5, "normal of length {len}");
-        }
-        for t in mesh.indices.chunks_exact(3) {
-            let p = |i: u32| {
-                let i = i as usize * 3;
-                DVec3::new(
-                    mesh.positions[i] as f64,
-                    mesh.positions[i + 1] as f64,
-                    mesh.positions[i + 2] as f64,
-                )
-            };
-            let face = (p(t[1]) - p(t[0])).cross(p(t[2]) - p(t[0]));
-            assert!(face.length() > 0.0, "degenerate triangle {t:?}");
-            // Winding: the face normal agrees with the vertex normals (counter-clockwise outside).
-            let i = t[0] as usize * 3;
-            let n = DVec3::new(
-                mesh.normals[i] as f64,
-                mesh.normals[i + 1] as f64,
-                mesh.normals[i + 2] as f64,
-            );
-            assert!(face.dot(n) > 0.0, "triangle {t:?} winds clockwise");
-        }
-    }
 
     fn segment(start: DVec3, end: DVec3) -> Segment {
         Segment {
@@ -226,7 +234,7 @@ pub(crate) mod tests {
         );
         assert_eq!(mesh.vertex_count(), 16);
         assert_eq!(mesh.triangle_count(), 16);
-        check_invariants(&mesh);
+        assert_eq!(mesh.check(), Ok(()));
         let [min, max] = mesh.bounds();
         assert!(
             (max[0] - 0.1).abs() < 1e-6 && (min[1]).abs() < 1e-6 && (max[1] - 1.0).abs() < 1e-6

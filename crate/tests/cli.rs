@@ -1,0 +1,82 @@
+//! The command-line tool, run as a user runs it.
+
+use std::path::PathBuf;
+use std::process::Command;
+
+fn meristem(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_meristem"))
+        .args(args)
+        .output()
+        .expect("run meristem");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+fn example(name: &str) -> String {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../public/examples")
+        .join(name)
+        .display()
+        .to_string()
+}
+
+fn temp_file(name: &str, bytes: &[u8]) -> String {
+    let path = std::env::temp_dir().join(format!("meristem-cli-{}-{name}", std::process::id()));
+    std::fs::write(&path, bytes).expect("write temp file");
+    path.display().to_string()
+}
+
+#[test]
+fn derive_prints_the_string_on_one_line() {
+    let (code, out, err) = meristem(&["derive", &example("abop-1.24d.lsys"), "--iterations", "1"]);
+    assert_eq!((code, err.as_str()), (0, ""));
+    assert_eq!(out, "F[+X]F[-X]+X\n");
+}
+
+#[test]
+fn derive_stats_is_one_json_object_with_the_counts_and_bounds() {
+    let (code, out, _) = meristem(&["derive", &example("abop-1.24d.lsys"), "--stats"]);
+    assert_eq!(code, 0);
+    assert_eq!(out.lines().count(), 1);
+    for key in [
+        "\"modules\":13956",
+        "\"segments\":",
+        "\"vertices\":",
+        "\"triangles\":",
+        "\"bounds\":[[",
+    ] {
+        assert!(out.contains(key), "{key} missing from {out}");
+    }
+}
+
+#[test]
+fn check_reports_file_line_column_and_fails_on_errors() {
+    let file = temp_file("broken.lsys", b"axiom: X\nX -> F[\n#nope\n");
+    let (code, out, err) = meristem(&["check", &file]);
+    assert_eq!(code, 1);
+    assert_eq!(out, "");
+    assert!(
+        err.contains(&format!("{file}:2:7: error: '[' is never closed")),
+        "{err}"
+    );
+    assert!(
+        err.contains(&format!("{file}:3:1: error: unknown directive '#nope'")),
+        "{err}"
+    );
+    let good = temp_file("good.lsys", b"axiom: F\n");
+    assert_eq!(meristem(&["check", &good]).0, 0);
+}
+
+#[test]
+fn bad_arguments_and_non_utf8_files_fail_politely() {
+    assert_eq!(meristem(&["derive"]).0, 2);
+    assert_eq!(meristem(&["frobnicate", &example("abop-1.24d.lsys")]).0, 2);
+    assert_eq!(meristem(&["derive", "/nonexistent/x.lsys"]).0, 2);
+    let latin1 = temp_file("latin1.lsys", b"axiom: F\xe9\n");
+    let (code, _, err) = meristem(&["check", &latin1]);
+    assert_eq!(code, 1);
+    assert!(err.contains("not UTF-8"), "{err}");
+}
