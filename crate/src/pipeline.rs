@@ -15,6 +15,8 @@ use crate::turtle::{self, Skeleton};
 pub struct BuildOptions {
     /// Overrides `#iterations`.
     pub iterations: Option<u32>,
+    /// Overrides `#seed`.
+    pub seed: Option<u64>,
     pub mesh: MeshOptions,
 }
 
@@ -24,7 +26,10 @@ pub struct BuildOptions {
 pub struct Build {
     pub diagnostics: Vec<Diagnostic>,
     pub model: Option<Model>,
+    /// The derived string (the L-system's state after the last step).
     pub string: LString,
+    /// The string the turtle read, when homomorphism rules made it differ from `string`.
+    pub interpreted: Option<LString>,
     pub skeleton: Skeleton,
     pub mesh: MeshBuffers,
     pub stats: Stats,
@@ -78,15 +83,28 @@ pub fn build(source: &str, options: &BuildOptions) -> Build {
         result.model = Some(model);
         return result;
     }
-    match derive::derive(&model, &DeriveOptions { steps }) {
-        Ok(string) => result.string = string,
+    match derive::derive(
+        &model,
+        &DeriveOptions {
+            steps,
+            seed: options.seed,
+        },
+    ) {
+        Ok(derivation) => {
+            result.diagnostics.extend(derivation.warnings);
+            result.string = derivation.string;
+            result.interpreted = derivation.interpreted;
+        }
         Err(diagnostic) => {
             result.diagnostics.push(diagnostic);
             result.model = Some(model);
             return result;
         }
     }
-    result.skeleton = turtle::interpret(&model, &result.string);
+    result.skeleton = turtle::interpret(
+        &model,
+        result.interpreted.as_ref().unwrap_or(&result.string),
+    );
     result.mesh = mesh::build_mesh(&result.skeleton, &options.mesh);
     result.stats = Stats::new(
         result.string.len(),

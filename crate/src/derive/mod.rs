@@ -1,88 +1,163 @@
 //! Stage 3, `derive`: parallel rewriting of the string, step by step.
 //!
-//! Every module of step k is rewritten from the string of step k (two buffers, swapped). The
-//! length of the next string is computed before it is written, so the module limit stops a
-//! derivation before it allocates.
+//! Every module of step k is rewritten from the string of step k (two buffers, swapped). Two
+//! paths share the semantics:
+//! - the D0L path, for grammars without parameters, contexts, conditions or weights: a flat table
+//!   from module id to successor, the next length computed before writing, no allocation per module;
+//! - the general path: productions tried in source order per module with bracket-aware contexts
+//!   ([`context`]), compiled conditions, weighted (stochastic) choice and Green's random variables.
+//!
+//! After each step, decomposition rules are applied until nothing changes and cut modules (`%`,
+//! `@Prune`) remove the rest of their branch. Homomorphism rules make the string the turtle reads.
+
+pub mod context;
 
 use crate::diagnostics::Diagnostic;
-use crate::model::{LString, Model, ModuleId};
+use crate::model::{Env, LString, Model, ModuleId, Production, Program, RuleSet, SuccessorModule};
+use crate::syntax::Span;
+use rand::{RngExt, SeedableRng};
+
+/// The named generator behind every random choice: PCG-64 (MCG variant), seeded from `#seed`.
+pub type Generator = rand_pcg::Pcg64Mcg;
 
 /// What one derivation does.
 #[derive(Clone, Debug)]
 pub struct DeriveOptions {
     pub steps: u32,
+    /// Overrides `#seed`.
+    pub seed: Option<u64>,
 }
 
-/// The productions in the flat form the rewriting loop reads: for each module id, the range of its
-/// successor in one shared array, or `None` to copy the module.
-struct RuleTable {
-    successors: Vec<ModuleId>,
-    rule_of: Vec<Option<(u32, u32)>>,
+/// The result of a derivation.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Derivation {
+    /// The derived string after the last step (the L-system's state).
+    pub string: LString,
+    /// The string the turtle reads: `string` after homomorphism; `None` without homomorphism rules.
+    pub interpreted: Option<LString>,
+    /// Warnings met on the way (a homomorphism that hit its maximum depth).
+    pub warnings: Vec<Diagnostic>,
 }
 
-impl RuleTable {
-    fn new(model: &Model) -> Self {
-        let mut successors = Vec::new();
-        let rule_of = model
-            .rule_of
-            .iter()
-            .map(|rule| {
-                rule.map(|p| {
-                    let start = successors.len() as u32;
-                    successors.extend_from_slice(&model.productions[p as usize].successor);
-                    (start, successors.len() as u32)
-                })
-            })
-            .collect();
-        RuleTable {
-            successors,
-            rule_of,
-        }
+impl Derivation {
+    /// The string the turtle reads.
+    pub fn turtle_string(&self) -> &LString {
+        self.interpreted.as_ref().unwrap_or(&self.string)
     }
+}
 
-    /// Length of the string that `ids` rewrites to.
-    fn next_len(&self, ids: &[ModuleId]) -> usize {
-        ids.iter()
-            .map(|id| match self.rule_of[id.index()] {
-                Some((start, end)) => (end - start) as usize,
-                None => 1,
-            })
-            .sum()
+/// Derives with the generator seeded from `options.seed` or the grammar's `#seed`.
+pub fn derive(model: &Model, options: &DeriveOptions) -> Result<Derivation, Diagnostic> {
+    let mut rng = Generator::seed_from_u64(options.seed.unwrap_or(model.settings.seed));
+    derive_with(model, options.steps, &mut rng)
+}
+
+/// Derives `steps` steps, drawing every random number from `rng`.
+pub fn derive_with<R: rand::Rng + ?Sized>(
+    model: &Model,
+    steps: u32,
+    rng: &mut R,
+) -> Result<Derivation, Diagnostic> {
+    let mut rewriter = Rewriter::new(model, steps, rng);
+    let mut current = rewriter.axiom()?;
+    let mut next = LString::default();
+    let has_cut = contains_cut(model);
+    if !model.decomposition.is_empty() {
+        rewriter.decompose(&mut current, &mut next, 0)?;
     }
-
-    fn rewrite(&self, src: &[ModuleId], dst: &mut Vec<ModuleId>) {
-        for &id in src {
-            match self.rule_of[id.index()] {
-                Some((start, end)) => {
-                    dst.extend_from_slice(&self.successors[start as usize..end as usize])
-                }
-                None => dst.push(id),
+    let d0l = D0lTable::new(model);
+    for step in 1..=steps {
+        match &d0l {
+            Some(table) => table.step(model, &current, &mut next, step)?,
+            None => {
+                rewriter.pass(&model.productions, &current, &mut next, step)?;
             }
         }
+        std::mem::swap(&mut current, &mut next);
+        if !model.decomposition.is_empty() {
+            rewriter.decompose(&mut current, &mut next, step)?;
+        }
+        if has_cut {
+            cut(model, &mut current);
+        }
     }
+    let mut derivation = Derivation {
+        string: current,
+        interpreted: None,
+        warnings: Vec::new(),
+    };
+    if !model.homomorphism.is_empty() {
+        let mut shown = derivation.string.clone();
+        let rules = &model.homomorphism;
+        let mut depth = 0;
+        loop {
+            if depth == rules.max_depth {
+                let span = rules.productions.first().map_or(0..0, |p| p.span.clone());
+                derivation.warnings.push(Diagnostic::warning(
+                    "E0403",
+                    span,
+                    format!(
+                        "homomorphism stopped at its maximum depth {} with modules left to rewrite; \
+                         raise it with 'maximum depth: N' after 'homomorphism:'",
+                        rules.max_depth
+                    ),
+                ));
+                break;
+            }
+            if !rewriter.pass(rules, &shown, &mut next, steps)? {
+                break;
+            }
+            std::mem::swap(&mut shown, &mut next);
+            depth += 1;
+        }
+        derivation.interpreted = Some(shown);
+    }
+    Ok(derivation)
 }
 
-/// Derives `options.steps` steps from the model's axiom. Hitting the module limit is an error
-/// diagnostic that names the limit, the step and how to raise it.
-pub fn derive(model: &Model, options: &DeriveOptions) -> Result<LString, Diagnostic> {
-    let table = RuleTable::new(model);
-    let max = model.settings.max_modules;
-    if model.axiom.len() > max {
-        return Err(limit_error(model, 0, model.axiom.len()));
+fn contains_cut(model: &Model) -> bool {
+    let is_cut = |s: &SuccessorModule| model.cut.contains(&s.id);
+    model.axiom.iter().any(is_cut)
+        || [&model.productions, &model.decomposition]
+            .iter()
+            .any(|set| {
+                set.productions
+                    .iter()
+                    .any(|p| p.successor.iter().any(is_cut))
+            })
+}
+
+/// Removes each cut module and the rest of its branch (up to, not including, the `]` that closes
+/// the branch, or to the end of the string on the main axis).
+fn cut(model: &Model, s: &mut LString) {
+    if !s.ids.iter().any(|id| model.cut.contains(id)) {
+        return;
     }
-    let mut current = model.axiom.ids.clone();
-    let mut next = Vec::new();
-    for step in 1..=options.steps {
-        let len = table.next_len(&current);
-        if len > max {
-            return Err(limit_error(model, step, len));
+    let old = std::mem::take(s);
+    s.clear(old.is_parametric());
+    let mut i = 0;
+    while i < old.len() {
+        let id = old.ids[i];
+        if model.cut.contains(&id) {
+            let mut depth = 0usize;
+            i += 1;
+            while i < old.len() {
+                let id = old.ids[i];
+                if id == model.open {
+                    depth += 1;
+                } else if id == model.close {
+                    if depth == 0 {
+                        break;
+                    }
+                    depth -= 1;
+                }
+                i += 1;
+            }
+            continue;
         }
-        next.clear();
-        next.reserve(len);
-        table.rewrite(&current, &mut next);
-        std::mem::swap(&mut current, &mut next);
+        s.push(id, old.params_of(i));
+        i += 1;
     }
-    Ok(LString { ids: current })
 }
 
 fn limit_error(model: &Model, step: u32, len: usize) -> Diagnostic {
@@ -96,52 +171,329 @@ fn limit_error(model: &Model, step: u32, len: usize) -> Diagnostic {
         "E0400",
         span,
         format!(
-            "step {step} would make a string of {len} modules, more than the limit of {max}; \
+            "step {step} would make a string of {len} modules or more, above the limit of {max}; \
              use fewer iterations or raise the limit with '#max_modules {}'",
             len.max(max.saturating_mul(2))
         ),
     )
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::{model, syntax};
+/// The D0L path: usable when no production has parameters, contexts, conditions or weights.
+struct D0lTable {
+    successors: Vec<ModuleId>,
+    rule_of: Vec<Option<(u32, u32)>>,
+}
 
-    fn derive_text(src: &str, steps: u32) -> Result<String, Diagnostic> {
-        let (file, diags) = syntax::parse(src);
-        assert!(diags.is_empty(), "{diags:?}");
-        let (model, diags) = model::resolve(&file);
-        assert!(diags.is_empty(), "{diags:?}");
-        let model = model.expect("model");
-        derive(&model, &DeriveOptions { steps }).map(|s| s.to_text(&model.alphabet))
+impl D0lTable {
+    fn new(model: &Model) -> Option<Self> {
+        let rules = &model.productions;
+        let simple = !model.parametric
+            && rules
+                .productions
+                .iter()
+                .all(|p| !p.has_context() && p.condition.is_none() && p.weight.is_none());
+        if !simple {
+            return None;
+        }
+        let mut successors = Vec::new();
+        let rule_of = rules
+            .by_predecessor
+            .iter()
+            .map(|candidates| {
+                candidates.first().map(|&p| {
+                    let start = successors.len() as u32;
+                    successors.extend(rules.productions[p as usize].successor.iter().map(|s| s.id));
+                    (start, successors.len() as u32)
+                })
+            })
+            .collect();
+        Some(D0lTable {
+            successors,
+            rule_of,
+        })
     }
 
-    #[test]
-    fn rewriting_is_parallel() {
-        assert_eq!(derive_text("axiom: AB\nA -> B\nB -> AB", 1).unwrap(), "BAB");
-        assert_eq!(
-            derive_text("axiom: AB\nA -> B\nB -> AB", 2).unwrap(),
-            "ABBAB"
-        );
+    fn step(
+        &self,
+        model: &Model,
+        src: &LString,
+        dst: &mut LString,
+        step: u32,
+    ) -> Result<(), Diagnostic> {
+        let len: usize = src
+            .ids
+            .iter()
+            .map(|id| match self.rule_of[id.index()] {
+                Some((start, end)) => (end - start) as usize,
+                None => 1,
+            })
+            .sum();
+        if len > model.settings.max_modules {
+            return Err(limit_error(model, step, len));
+        }
+        dst.clear(false);
+        dst.ids.reserve(len);
+        for &id in &src.ids {
+            match self.rule_of[id.index()] {
+                Some((start, end)) => dst
+                    .ids
+                    .extend_from_slice(&self.successors[start as usize..end as usize]),
+                None => dst.ids.push(id),
+            }
+        }
+        Ok(())
+    }
+}
+
+/// The general path's working state, reused across modules and steps.
+struct Rewriter<'m, R: rand::Rng + ?Sized> {
+    model: &'m Model,
+    rng: &'m mut R,
+    max_it: f64,
+    slots: Vec<f64>,
+    vars: Vec<Option<f64>>,
+    var_programs: Vec<Program>,
+    partner: Vec<u32>,
+    /// Matching weighted productions of the current module: (production, weight, bound slots).
+    weighted: Vec<(u32, f64, Vec<f64>)>,
+}
+
+impl<'m, R: rand::Rng + ?Sized> Rewriter<'m, R> {
+    fn new(model: &'m Model, steps: u32, rng: &'m mut R) -> Self {
+        let max_slots = [
+            &model.productions,
+            &model.homomorphism,
+            &model.decomposition,
+        ]
+        .iter()
+        .flat_map(|set| set.productions.iter().map(|p| p.slots))
+        .max()
+        .unwrap_or(0);
+        Rewriter {
+            model,
+            rng,
+            max_it: steps as f64,
+            slots: vec![0.0; max_slots],
+            vars: vec![None; model.random_variables.len()],
+            var_programs: model
+                .random_variables
+                .iter()
+                .map(|v| v.distribution.clone())
+                .collect(),
+            partner: Vec::new(),
+            weighted: Vec::new(),
+        }
     }
 
-    #[test]
-    fn abop_1_24a_has_5_to_the_n_segments() {
-        let s = derive_text("axiom: F\nF -> F[+F]F[-F]F", 5).unwrap();
-        assert_eq!(s.matches('F').count(), 5usize.pow(5));
+    fn eval(
+        &mut self,
+        program: &Program,
+        slots: usize,
+        num_it: u32,
+        fresh_vars: bool,
+    ) -> Result<f64, Diagnostic> {
+        let mut env = Env {
+            slots: &self.slots[..slots],
+            num_it: num_it as f64,
+            max_it: self.max_it,
+            vars: &mut self.vars,
+            fresh_vars,
+            var_programs: &self.var_programs,
+            rng: &mut *self.rng,
+        };
+        program
+            .eval(&mut env)
+            .map_err(|e| e.into_diagnostic(&format!(" (at step {num_it})")))
     }
 
-    #[test]
-    fn the_module_limit_stops_cleanly_and_says_how_to_raise_it() {
-        let err = derive_text("#max_modules 1000\naxiom: F\nF -> FF", 20).unwrap_err();
-        assert_eq!(err.code, "E0400");
-        assert!(
-            err.message
-                .contains("step 10 would make a string of 1024 modules"),
-            "{}",
-            err.message
-        );
-        assert!(err.message.contains("#max_modules"));
+    fn axiom(&mut self) -> Result<LString, Diagnostic> {
+        let mut s = LString::default();
+        s.clear(self.model.parametric);
+        let mut params = Vec::new();
+        for m in &self.model.axiom {
+            params.clear();
+            for a in &m.args {
+                params.push(self.eval(a, 0, 0, true)?);
+            }
+            s.push(m.id, &params);
+        }
+        Ok(s)
     }
+
+    /// Applies decomposition rules to `s` until nothing changes.
+    fn decompose(
+        &mut self,
+        s: &mut LString,
+        scratch: &mut LString,
+        step: u32,
+    ) -> Result<(), Diagnostic> {
+        let model = self.model;
+        let rules = &model.decomposition;
+        for _ in 0..rules.max_depth {
+            if !self.pass(rules, s, scratch, step)? {
+                return Ok(());
+            }
+            std::mem::swap(s, scratch);
+        }
+        // One more pass tells whether anything is still left to decompose.
+        if self.pass(rules, s, scratch, step)? {
+            let span = rules.productions.first().map_or(0..0, |p| p.span.clone());
+            return Err(Diagnostic::error(
+                "E0402",
+                span,
+                format!(
+                    "decomposition did not finish within its maximum depth {} at step {step}; \
+                     raise it with 'maximum depth: N' after 'decomposition:'",
+                    rules.max_depth
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    /// Tests production `p` on module `i` of `src`, binding its slots.
+    fn matches(
+        &mut self,
+        p: &Production,
+        src: &LString,
+        i: usize,
+        num_it: u32,
+    ) -> Result<bool, Diagnostic> {
+        let params = src.params_of(i);
+        if params.len() != p.predecessor.arity {
+            return Ok(false);
+        }
+        let first = p.predecessor.first_slot as usize;
+        self.slots[first..first + params.len()].copy_from_slice(params);
+        if !p.left.is_empty()
+            && !context::match_left(self.model, src, &self.partner, i, &p.left, &mut self.slots)
+        {
+            return Ok(false);
+        }
+        if !p.right.is_empty()
+            && !context::match_right(
+                self.model,
+                src,
+                &self.partner,
+                i + 1,
+                &p.right,
+                &mut self.slots,
+            )
+        {
+            return Ok(false);
+        }
+        match &p.condition {
+            Some(c) => Ok(self.eval(c, p.slots, num_it, false)? != 0.0),
+            None => Ok(true),
+        }
+    }
+
+    /// One parallel rewriting of `src` into `dst` with `rules`. Returns whether any production
+    /// applied.
+    fn pass(
+        &mut self,
+        rules: &RuleSet,
+        src: &LString,
+        dst: &mut LString,
+        num_it: u32,
+    ) -> Result<bool, Diagnostic> {
+        let model = self.model;
+        if rules.has_contexts() {
+            context::bracket_partners(model, src, &mut self.partner);
+        }
+        dst.clear(model.parametric);
+        let mut changed = false;
+        for i in 0..src.len() {
+            let id = src.ids[i];
+            let candidates = rules
+                .by_predecessor
+                .get(id.index())
+                .map_or(&[][..], Vec::as_slice);
+            if candidates.is_empty() {
+                dst.push(id, src.params_of(i));
+                continue;
+            }
+            self.vars.iter_mut().for_each(|v| *v = None);
+            let mut chosen = None;
+            for (k, &index) in candidates.iter().enumerate() {
+                let p = &rules.productions[index as usize];
+                if !self.matches(p, src, i, num_it)? {
+                    continue;
+                }
+                chosen = Some(match &p.weight {
+                    None => index,
+                    Some(_) => self.choose_weighted(rules, &candidates[k..], src, i, num_it)?,
+                });
+                break;
+            }
+            let Some(index) = chosen else {
+                dst.push(id, src.params_of(i));
+                continue;
+            };
+            changed = true;
+            let p = &rules.productions[index as usize];
+            for s in &p.successor {
+                dst.ids.push(s.id);
+                if model.parametric {
+                    for a in &s.args {
+                        let v = self.eval(a, p.slots, num_it, true)?;
+                        dst.params.push(v);
+                    }
+                    dst.offsets.push(dst.params.len() as u32);
+                }
+            }
+            if dst.len() > model.settings.max_modules {
+                return Err(limit_error(model, num_it, dst.len()));
+            }
+        }
+        Ok(changed)
+    }
+
+    /// Draws among the matching weighted productions in `candidates` (the first of which matched
+    /// already), in proportion to their weights; leaves the chosen one's slots bound.
+    fn choose_weighted(
+        &mut self,
+        rules: &RuleSet,
+        candidates: &[u32],
+        src: &LString,
+        i: usize,
+        num_it: u32,
+    ) -> Result<u32, Diagnostic> {
+        self.weighted.clear();
+        let mut total = 0.0;
+        for (k, &index) in candidates.iter().enumerate() {
+            let p = &rules.productions[index as usize];
+            let Some(weight) = &p.weight else { continue };
+            if k > 0 && !self.matches(p, src, i, num_it)? {
+                continue;
+            }
+            let w = self.eval(weight, p.slots, num_it, false)?;
+            if w < 0.0 {
+                return Err(negative_weight(weight.span.clone(), w));
+            }
+            total += w;
+            self.weighted
+                .push((index, w, self.slots[..p.slots].to_vec()));
+        }
+        let mut r = self.rng.random::<f64>() * total;
+        let mut pick = self.weighted.len() - 1;
+        for (k, (_, w, _)) in self.weighted.iter().enumerate() {
+            if r < *w {
+                pick = k;
+                break;
+            }
+            r -= w;
+        }
+        let (index, _, slots) = &self.weighted[pick];
+        self.slots[..slots.len()].copy_from_slice(slots);
+        Ok(*index)
+    }
+}
+
+fn negative_weight(span: Span, w: f64) -> Diagnostic {
+    Diagnostic::error(
+        "E0513",
+        span,
+        format!("a weight cannot be negative (it is {w} here)"),
+    )
 }

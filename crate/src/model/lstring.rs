@@ -1,11 +1,18 @@
 //! The derived string: the plain data that flows from `derive` to `turtle`.
 
 use super::{Alphabet, ModuleId};
+use std::fmt::Write;
 
-/// A string of modules, stored as a flat array of module ids (no allocation per module).
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
+/// A string of modules as flat arrays, with no allocation per module.
+///
+/// Module `i` is `ids[i]`; its parameters are `params[offsets[i]..offsets[i + 1]]`. When no
+/// module of the string has parameters, `offsets` and `params` are both empty (the fast path of
+/// non-parametric grammars writes module ids only).
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct LString {
     pub ids: Vec<ModuleId>,
+    pub offsets: Vec<u32>,
+    pub params: Vec<f64>,
 }
 
 impl LString {
@@ -17,28 +24,82 @@ impl LString {
         self.ids.is_empty()
     }
 
-    /// The canonical text form: module names as written, no spaces (`F[+X]F`).
-    pub fn to_text(&self, alphabet: &Alphabet) -> String {
-        let mut out = String::with_capacity(self.ids.len());
-        for &id in &self.ids {
-            out.push_str(alphabet.name(id));
-        }
-        out
+    /// True when the string stores parameters (`offsets` is filled).
+    pub fn is_parametric(&self) -> bool {
+        !self.offsets.is_empty()
     }
 
-    /// Like [`LString::to_text`] but stops after about `max_chars` characters, appending `…` when
-    /// the string is longer.
+    /// The parameters of module `i`.
+    #[inline]
+    pub fn params_of(&self, i: usize) -> &[f64] {
+        if self.offsets.is_empty() {
+            &[]
+        } else {
+            &self.params[self.offsets[i] as usize..self.offsets[i + 1] as usize]
+        }
+    }
+
+    /// Empties the string, keeping its buffers; `parametric` says whether offsets are kept.
+    pub fn clear(&mut self, parametric: bool) {
+        self.ids.clear();
+        self.params.clear();
+        self.offsets.clear();
+        if parametric {
+            self.offsets.push(0);
+        }
+    }
+
+    /// Appends one module (in a parametric string).
+    #[inline]
+    pub fn push(&mut self, id: ModuleId, params: &[f64]) {
+        self.ids.push(id);
+        if !self.offsets.is_empty() {
+            self.params.extend_from_slice(params);
+            self.offsets.push(self.params.len() as u32);
+        }
+    }
+
+    /// The same string with offsets filled, so that parameters can be appended.
+    pub fn into_parametric(mut self) -> LString {
+        if self.offsets.is_empty() {
+            self.offsets = vec![0; self.ids.len() + 1];
+        }
+        self
+    }
+
+    /// The canonical text form: module names as written, parameters in parentheses separated by
+    /// commas, each number as Rust's `{}` prints an f64 (`1`, not `1.0`), no spaces.
+    pub fn to_text(&self, alphabet: &Alphabet) -> String {
+        self.to_text_truncated(alphabet, usize::MAX)
+    }
+
+    /// Like [`LString::to_text`] but stops before passing `max_chars` characters, appending `…`
+    /// when the string is longer.
     pub fn to_text_truncated(&self, alphabet: &Alphabet, max_chars: usize) -> String {
         let mut out = String::new();
-        let mut chars = 0;
-        for &id in &self.ids {
-            let name = alphabet.name(id);
-            if chars + name.chars().count() > max_chars {
+        let mut module = String::new();
+        let mut chars = 0usize;
+        for i in 0..self.ids.len() {
+            module.clear();
+            module.push_str(alphabet.name(self.ids[i]));
+            let params = self.params_of(i);
+            if !params.is_empty() {
+                module.push('(');
+                for (k, p) in params.iter().enumerate() {
+                    if k > 0 {
+                        module.push(',');
+                    }
+                    let _ = write!(module, "{p}");
+                }
+                module.push(')');
+            }
+            let n = module.chars().count();
+            if chars.saturating_add(n) > max_chars {
                 out.push('…');
                 return out;
             }
-            chars += name.chars().count();
-            out.push_str(name);
+            chars += n;
+            out.push_str(&module);
         }
         out
     }

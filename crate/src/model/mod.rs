@@ -1,24 +1,89 @@
 //! Stage 2, `model` (resolve): the syntax tree becomes a validated [`Model`] with interned module
-//! ids, so that derivation and interpretation never look at text or re-check anything.
+//! ids, checked arities and compiled expressions, so that derivation and interpretation never look
+//! at text or re-check anything.
 
 mod alphabet;
 mod lstring;
+mod program;
 mod resolve;
 
 pub use alphabet::{Alphabet, ModuleId};
 pub use lstring::LString;
+pub use program::{Env, EvalError, Function, Program, Scope, MAX_STACK};
 pub use resolve::resolve;
 
-use crate::syntax::Span;
+use crate::syntax::{Section, Span};
 
-/// A production after resolution: `predecessor -> successor` over module ids.
+/// A module in a predecessor or context: its formal parameters bind slots
+/// `first_slot .. first_slot + arity` of the production.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PatternModule {
+    pub id: ModuleId,
+    pub arity: usize,
+    pub first_slot: u16,
+    pub span: Span,
+}
+
+/// One element of a right context, which may contain branches.
+#[derive(Clone, Debug, PartialEq)]
+pub enum PatternItem {
+    Module(PatternModule),
+    /// `[`: the string must branch here.
+    Open,
+    /// `]`: the rest of the string's current branch is skipped.
+    Close,
+}
+
+/// One module of a successor, with its argument expressions.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SuccessorModule {
+    pub id: ModuleId,
+    pub args: Vec<Program>,
+}
+
+/// A production after resolution.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Production {
     pub label: Option<String>,
-    pub predecessor: ModuleId,
-    pub successor: Vec<ModuleId>,
+    pub section: Section,
+    pub left: Vec<PatternModule>,
+    pub predecessor: PatternModule,
+    pub right: Vec<PatternItem>,
+    pub condition: Option<Program>,
+    pub weight: Option<Program>,
+    pub successor: Vec<SuccessorModule>,
+    /// Number of formal-parameter slots (predecessor and contexts).
+    pub slots: usize,
     /// The production's line in the source.
     pub span: Span,
+}
+
+impl Production {
+    /// True when matching needs more than the predecessor's id and arity.
+    pub fn has_context(&self) -> bool {
+        !self.left.is_empty() || !self.right.is_empty()
+    }
+}
+
+/// The productions of one section, indexed by predecessor.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct RuleSet {
+    pub productions: Vec<Production>,
+    /// For each module id, the indices of the productions whose predecessor it is, in source order.
+    pub by_predecessor: Vec<Vec<u32>>,
+    /// `maximum depth:` for homomorphism and decomposition.
+    pub max_depth: u32,
+}
+
+impl RuleSet {
+    pub fn is_empty(&self) -> bool {
+        self.productions.is_empty()
+    }
+
+    /// True when any production has a left or right context.
+    pub fn has_contexts(&self) -> bool {
+        self.productions.iter().any(Production::has_context)
+    }
 }
 
 /// Values set by directives, with the defaults of LANGUAGE.md section 2.
@@ -28,6 +93,8 @@ pub struct Settings {
     pub angle: f64,
     /// `#iterations` / `derivation length:`: the default number of derivation steps.
     pub iterations: u32,
+    /// `#seed`: the seed of the random generator.
+    pub seed: u64,
     /// `#step`: the default length of `F` and `f`.
     pub step: f64,
     /// `#width`: the initial segment width, in width units (see `mesh`).
@@ -46,12 +113,15 @@ pub struct Settings {
 pub const DEFAULT_MAX_MODULES: usize = 5_000_000;
 /// The default limit on derivation steps.
 pub const DEFAULT_MAX_STEPS: u32 = 10_000;
+/// The default `maximum depth:` of homomorphism and decomposition.
+pub const DEFAULT_MAX_DEPTH: u32 = 16;
 
 impl Default for Settings {
     fn default() -> Self {
         Settings {
             angle: 90.0,
             iterations: 0,
+            seed: 1,
             step: 1.0,
             width: 1.0,
             max_modules: DEFAULT_MAX_MODULES,
@@ -62,16 +132,32 @@ impl Default for Settings {
     }
 }
 
+/// A `#random` variable: a name and the distribution each deviate is drawn from.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RandomVariable {
+    pub name: String,
+    pub distribution: Program,
+}
+
 /// A validated grammar: everything later stages need, nothing they must check again.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Model {
     pub alphabet: Alphabet,
-    pub axiom: LString,
+    /// The axiom as modules with argument expressions (evaluated when derivation starts).
+    pub axiom: Vec<SuccessorModule>,
     /// Span of the `axiom:` line.
     pub axiom_span: Span,
-    /// In source order.
-    pub productions: Vec<Production>,
-    /// For each module id, the index of the production that rewrites it (`None`: copied).
-    pub rule_of: Vec<Option<u32>>,
+    pub productions: RuleSet,
+    pub homomorphism: RuleSet,
+    pub decomposition: RuleSet,
+    pub random_variables: Vec<RandomVariable>,
+    /// For each module id: skipped when matching contexts (`#ignore`, or not in `#consider`).
+    pub ignored: Vec<bool>,
+    /// The ids of `[`, `]`, and of the cut modules `%` and `@Prune` (always interned).
+    pub open: ModuleId,
+    pub close: ModuleId,
+    pub cut: [ModuleId; 2],
+    /// True when any module of the axiom or a successor has parameters.
+    pub parametric: bool,
     pub settings: Settings,
 }

@@ -1,36 +1,72 @@
-//! Resolve: syntax tree -> [`Model`]. Checks directive arguments, interns module names and builds
-//! the production lookup table.
+//! Resolve: syntax tree -> [`Model`]. Checks directive arguments, interns module names, binds
+//! formal parameters to slots, compiles every expression and indexes productions by predecessor.
 
-use super::{Alphabet, LString, Model, Production, Settings};
+use super::{
+    Alphabet, Model, ModuleId, PatternItem, PatternModule, Production, Program, RandomVariable,
+    RuleSet, Scope, Settings, SuccessorModule, DEFAULT_MAX_DEPTH,
+};
 use crate::diagnostics::Diagnostic;
-use crate::syntax::{Directive, SourceFile};
+use crate::syntax::{
+    Directive, ExprSyntax, ModuleSyntax, ProductionSyntax, Section, SourceFile, Span,
+};
+use std::collections::HashMap;
 
-/// Directives of LANGUAGE.md section 2 that this version reads but does not implement yet; using
+/// Directives of LANGUAGE.md section 2 that belong to the turtle and are not implemented yet; using
 /// one is an error that says so, rather than being silently ignored.
-const NOT_YET: &[&str] = &[
-    "define",
-    "seed",
-    "ignore",
-    "consider",
-    "random",
-    "width_step",
-    "tropism",
-];
+const NOT_YET: &[&str] = &["width_step", "tropism"];
 
 /// Resolves a parsed file. Returns `None` for the model when there is nothing to derive (no
 /// axiom); otherwise a model plus every diagnostic, even when some are errors.
 pub fn resolve(file: &SourceFile) -> (Option<Model>, Vec<Diagnostic>) {
-    let mut diagnostics = Vec::new();
-    let mut alphabet = Alphabet::default();
+    let mut r = Resolver {
+        diagnostics: Vec::new(),
+        alphabet: Alphabet::default(),
+        defines: HashMap::new(),
+        random_names: Vec::new(),
+    };
+    let open = r.alphabet.intern("[");
+    let close = r.alphabet.intern("]");
+    let cut = [r.alphabet.intern("%"), r.alphabet.intern("@Prune")];
     let mut settings = Settings::default();
+    let mut homomorphism_depth = DEFAULT_MAX_DEPTH;
+    let mut decomposition_depth = DEFAULT_MAX_DEPTH;
+    let mut ignore: Vec<ModuleId> = Vec::new();
+    let mut consider: Option<Vec<ModuleId>> = None;
+    let mut random_syntax: Vec<&Directive> = Vec::new();
     let mut seen: Vec<&Directive> = Vec::new();
 
+    // Definitions first: expressions anywhere may use them.
     for d in &file.directives {
-        if let Some(previous) = seen
-            .iter()
-            .find(|p| p.name == d.name && d.name != "module" && d.name != "draw")
-        {
-            diagnostics.push(Diagnostic::warning(
+        if let (Some((name, span)), Some(expr)) = (&d.target, &d.expr) {
+            let taken = r.defines.contains_key(name) || r.random_names.iter().any(|n| n == name);
+            if taken
+                || name == "NumIt"
+                || name == "MaxIt"
+                || super::Function::lookup(name).is_some()
+            {
+                r.diagnostics.push(Diagnostic::error(
+                    "E0205",
+                    span.clone(),
+                    format!("'{name}' is already defined"),
+                ));
+                continue;
+            }
+            if d.name == "define" {
+                r.defines.insert(name.clone(), expr.clone());
+            } else {
+                r.random_names.push(name.clone());
+                random_syntax.push(d);
+            }
+        }
+    }
+
+    for d in &file.directives {
+        let repeatable = matches!(
+            d.name.as_str(),
+            "module" | "draw" | "define" | "random" | "ignore"
+        );
+        if let Some(previous) = seen.iter().find(|p| p.name == d.name && !repeatable) {
+            r.diagnostics.push(Diagnostic::warning(
                 "E0201",
                 d.name_span.clone(),
                 format!(
@@ -41,151 +77,418 @@ pub fn resolve(file: &SourceFile) -> (Option<Model>, Vec<Diagnostic>) {
         }
         seen.push(d);
         match d.name.as_str() {
-            "angle" => {
-                if let Some(v) = number(d, &mut diagnostics) {
-                    settings.angle = v;
-                }
-            }
-            "step" => {
-                if let Some(v) = number(d, &mut diagnostics) {
-                    settings.step = v;
-                }
-            }
-            "width" => {
-                if let Some(v) = number(d, &mut diagnostics) {
-                    settings.width = v;
-                }
-            }
+            "angle" => settings.angle = r.number(d).unwrap_or(settings.angle),
+            "step" => settings.step = r.number(d).unwrap_or(settings.step),
+            "width" => settings.width = r.number(d).unwrap_or(settings.width),
             "iterations" => {
-                if let Some(v) = whole(d, u32::MAX as u64, &mut diagnostics) {
+                if let Some(v) = r.whole(d, u32::MAX as u64) {
                     settings.iterations = v as u32;
                     settings.iterations_span = Some(d.name_span.start..d.args_span.end);
                 }
             }
+            "seed" => settings.seed = r.whole(d, u64::MAX).unwrap_or(settings.seed),
             "max_modules" => {
-                if let Some(v) = whole(d, u32::MAX as u64, &mut diagnostics) {
-                    settings.max_modules = v.max(1) as usize;
-                }
+                settings.max_modules = r
+                    .whole(d, u32::MAX as u64)
+                    .map_or(settings.max_modules, |v| v.max(1) as usize)
             }
             "max_steps" => {
-                if let Some(v) = whole(d, u32::MAX as u64, &mut diagnostics) {
-                    settings.max_steps = v as u32;
-                }
+                settings.max_steps = r
+                    .whole(d, u32::MAX as u64)
+                    .map_or(settings.max_steps, |v| v as u32)
             }
-            "module" => {} // read by the parser
-            "draw" => {
-                for name in d.args.split_whitespace() {
-                    let id = alphabet.intern(name);
-                    settings.draw.push(id);
-                }
+            "homomorphism_depth" => {
+                homomorphism_depth = r.whole(d, 10_000).map_or(homomorphism_depth, |v| v as u32)
             }
-            name if NOT_YET.contains(&name) => diagnostics.push(Diagnostic::error(
+            "decomposition_depth" => {
+                decomposition_depth = r.whole(d, 10_000).map_or(decomposition_depth, |v| v as u32)
+            }
+            "module" | "define" | "random" => {}
+            "draw" => settings
+                .draw
+                .extend(d.modules.iter().map(|m| r.alphabet.intern(&m.name))),
+            "ignore" => ignore.extend(d.modules.iter().map(|m| r.alphabet.intern(&m.name))),
+            "consider" => {
+                consider = Some(
+                    d.modules
+                        .iter()
+                        .map(|m| r.alphabet.intern(&m.name))
+                        .collect(),
+                )
+            }
+            name if NOT_YET.contains(&name) => r.diagnostics.push(Diagnostic::error(
                 "E0290",
                 d.name_span.clone(),
                 format!("#{name} is part of the language but not implemented yet"),
             )),
-            name => diagnostics.push(Diagnostic::error(
+            name => r.diagnostics.push(Diagnostic::error(
                 "E0200",
                 d.name_span.clone(),
                 format!("unknown directive '#{name}'"),
             )),
         }
     }
+    if !ignore.is_empty() && consider.is_some() {
+        r.diagnostics.push(Diagnostic::error(
+            "E0206",
+            0..0,
+            "#ignore and #consider cannot both be used: one says what to skip, the other what to keep",
+        ));
+    }
+
+    let mut random_variables = Vec::new();
+    for d in random_syntax {
+        let (Some((name, _)), Some(expr)) = (&d.target, &d.expr) else {
+            continue;
+        };
+        if let Some(distribution) = r.compile(expr, &Slots::default()) {
+            random_variables.push(RandomVariable {
+                name: name.clone(),
+                distribution,
+            });
+        }
+    }
+
     let Some((axiom_syntax, axiom_span)) = &file.axiom else {
-        diagnostics.push(Diagnostic::error(
+        r.diagnostics.push(Diagnostic::error(
             "E0300",
             0..0,
             "the grammar has no axiom: add a line 'axiom: …'",
         ));
-        return (None, diagnostics);
+        return (None, r.diagnostics);
     };
-    let axiom = LString {
-        ids: axiom_syntax
-            .iter()
-            .map(|m| alphabet.intern(&m.name))
-            .collect(),
-    };
+    let axiom = r.successor(axiom_syntax, &Slots::default());
 
-    let mut productions = Vec::with_capacity(file.productions.len());
-    let mut rule_of: Vec<Option<u32>> = Vec::new();
+    let mut sets = [RuleSet::default(), RuleSet::default(), RuleSet::default()];
     for p in &file.productions {
-        let predecessor = alphabet.intern(&p.predecessor.name);
-        let successor = p
-            .successor
-            .iter()
-            .map(|m| alphabet.intern(&m.name))
-            .collect();
-        if rule_of.len() < alphabet.len() {
-            rule_of.resize(alphabet.len(), None);
+        if let Some(production) = r.production(p) {
+            let set = &mut sets[section_index(p.section)];
+            set.productions.push(production);
         }
-        if let Some(first) = rule_of[predecessor.index()] {
-            let first_line = &file.productions[first as usize].span;
-            diagnostics.push(Diagnostic::warning(
-                "E0301",
-                p.span.clone(),
-                format!(
-                    "this production never applies: the production at byte {} already rewrites '{}'",
-                    first_line.start, p.predecessor.name
-                ),
-            ));
-        } else {
-            rule_of[predecessor.index()] = Some(productions.len() as u32);
-        }
-        productions.push(Production {
-            label: p.label.clone(),
-            predecessor,
-            successor,
-            span: p.span.clone(),
-        });
     }
-    rule_of.resize(alphabet.len(), None);
+    let [mut productions, mut homomorphism, mut decomposition] = sets;
+    productions.max_depth = 1;
+    homomorphism.max_depth = homomorphism_depth;
+    decomposition.max_depth = decomposition_depth;
+
+    // Arities: a pattern must match how the module is actually written somewhere.
+    let mut written: HashMap<ModuleId, Vec<(usize, Span)>> = HashMap::new();
+    for m in axiom.iter().zip(axiom_syntax) {
+        written
+            .entry(m.0.id)
+            .or_default()
+            .push((m.0.args.len(), m.1.span.clone()));
+    }
+    for set in [&productions, &homomorphism, &decomposition] {
+        for p in &set.productions {
+            for s in &p.successor {
+                written
+                    .entry(s.id)
+                    .or_default()
+                    .push((s.args.len(), p.span.clone()));
+            }
+        }
+    }
+    for set in [&productions, &homomorphism, &decomposition] {
+        for p in &set.productions {
+            let patterns = p.left.iter().chain(std::iter::once(&p.predecessor)).chain(
+                p.right.iter().filter_map(|i| match i {
+                    PatternItem::Module(m) => Some(m),
+                    _ => None,
+                }),
+            );
+            for m in patterns {
+                if let Some(uses) = written.get(&m.id) {
+                    if !uses.iter().any(|(arity, _)| *arity == m.arity) {
+                        let (arity, _) = &uses[0];
+                        r.diagnostics.push(Diagnostic::error(
+                            "E0511",
+                            m.span.clone(),
+                            format!(
+                                "'{}' is matched with {} parameter{} here, but it is written with {arity} everywhere else",
+                                r.alphabet.name(m.id),
+                                m.arity,
+                                if m.arity == 1 { "" } else { "s" }
+                            ),
+                        ));
+                    }
+                }
+            }
+        }
+    }
+
+    let module_count = r.alphabet.len();
+    for set in [&mut productions, &mut homomorphism, &mut decomposition] {
+        set.by_predecessor = vec![Vec::new(); module_count];
+        for (index, p) in set.productions.iter().enumerate() {
+            set.by_predecessor[p.predecessor.id.index()].push(index as u32);
+        }
+        unreachable_warnings(set, &r.alphabet, &mut r.diagnostics);
+    }
+
+    let mut ignored = vec![false; module_count];
+    if let Some(keep) = &consider {
+        ignored.iter_mut().for_each(|x| *x = true);
+        for id in keep {
+            ignored[id.index()] = false;
+        }
+    }
+    for id in &ignore {
+        ignored[id.index()] = true;
+    }
+    ignored[open.index()] = false;
+    ignored[close.index()] = false;
+
+    let parametric = axiom.iter().any(|m| !m.args.is_empty())
+        || [&productions, &homomorphism, &decomposition]
+            .iter()
+            .any(|set| {
+                set.productions
+                    .iter()
+                    .any(|p| p.successor.iter().any(|s| !s.args.is_empty()))
+            });
 
     let model = Model {
-        alphabet,
+        alphabet: r.alphabet,
         axiom,
         axiom_span: axiom_span.clone(),
         productions,
-        rule_of,
+        homomorphism,
+        decomposition,
+        random_variables,
+        ignored,
+        open,
+        close,
+        cut,
+        parametric,
         settings,
     };
-    (Some(model), diagnostics)
+    (Some(model), r.diagnostics)
 }
 
-fn number(d: &Directive, diagnostics: &mut Vec<Diagnostic>) -> Option<f64> {
-    match d.args.parse::<f64>() {
-        Ok(v) if v.is_finite() => Some(v),
-        _ => {
-            diagnostics.push(Diagnostic::error(
-                "E0203",
-                if d.args.is_empty() {
-                    d.name_span.clone()
-                } else {
-                    d.args_span.clone()
-                },
-                format!("#{} needs a number, found '{}'", d.name, d.args),
-            ));
-            None
+fn section_index(section: Section) -> usize {
+    match section {
+        Section::Productions => 0,
+        Section::Homomorphism => 1,
+        Section::Decomposition => 2,
+    }
+}
+
+/// Warns about productions that an earlier, unconditional one always pre-empts.
+fn unreachable_warnings(set: &RuleSet, alphabet: &Alphabet, diagnostics: &mut Vec<Diagnostic>) {
+    for candidates in &set.by_predecessor {
+        for (k, &q) in candidates.iter().enumerate() {
+            let q = &set.productions[q as usize];
+            let blocker = candidates[..k]
+                .iter()
+                .map(|&p| &set.productions[p as usize])
+                .find(|p| {
+                    p.predecessor.arity == q.predecessor.arity
+                        && !p.has_context()
+                        && p.condition.is_none()
+                        && (p.weight.is_none() || q.weight.is_none())
+                });
+            if let Some(p) = blocker {
+                diagnostics.push(Diagnostic::warning(
+                    "E0301",
+                    q.span.clone(),
+                    format!(
+                        "this production never applies: the production at byte {} always rewrites '{}' first",
+                        p.span.start,
+                        alphabet.name(q.predecessor.id)
+                    ),
+                ));
+            }
         }
     }
 }
 
-fn whole(d: &Directive, max: u64, diagnostics: &mut Vec<Diagnostic>) -> Option<u64> {
-    match d.args.parse::<u64>() {
-        Ok(v) if v <= max => Some(v),
-        _ => {
-            diagnostics.push(Diagnostic::error(
-                "E0204",
-                if d.args.is_empty() {
-                    d.name_span.clone()
-                } else {
-                    d.args_span.clone()
-                },
-                format!(
-                    "#{} needs a whole number from 0 to {max}, found '{}'",
-                    d.name, d.args
-                ),
-            ));
-            None
+/// The formal parameters of one production: name -> slot.
+#[derive(Default)]
+struct Slots {
+    names: Vec<String>,
+}
+
+struct ScopeView<'a> {
+    slots: &'a Slots,
+    defines: &'a HashMap<String, ExprSyntax>,
+    random_names: &'a [String],
+}
+
+impl Scope for ScopeView<'_> {
+    fn slot(&self, name: &str) -> Option<u16> {
+        self.slots
+            .names
+            .iter()
+            .position(|n| n == name)
+            .map(|i| i as u16)
+    }
+    fn define(&self, name: &str) -> Option<&ExprSyntax> {
+        self.defines.get(name)
+    }
+    fn random_var(&self, name: &str) -> Option<u16> {
+        self.random_names
+            .iter()
+            .position(|n| n == name)
+            .map(|i| i as u16)
+    }
+}
+
+struct Resolver {
+    diagnostics: Vec<Diagnostic>,
+    alphabet: Alphabet,
+    defines: HashMap<String, ExprSyntax>,
+    random_names: Vec<String>,
+}
+
+impl Resolver {
+    fn compile(&mut self, expr: &ExprSyntax, slots: &Slots) -> Option<Program> {
+        let scope = ScopeView {
+            slots,
+            defines: &self.defines,
+            random_names: &self.random_names,
+        };
+        match Program::compile(expr, &scope) {
+            Ok(p) => Some(p),
+            Err(d) => {
+                self.diagnostics.push(d);
+                None
+            }
+        }
+    }
+
+    fn successor(&mut self, modules: &[ModuleSyntax], slots: &Slots) -> Vec<SuccessorModule> {
+        modules
+            .iter()
+            .map(|m| {
+                let id = self.alphabet.intern(&m.name);
+                let args = m
+                    .params
+                    .iter()
+                    .filter_map(|e| self.compile(e, slots))
+                    .collect();
+                SuccessorModule { id, args }
+            })
+            .collect()
+    }
+
+    /// A predecessor or context module: its parameters must be names, bound to new slots.
+    fn pattern(&mut self, m: &ModuleSyntax, slots: &mut Slots) -> PatternModule {
+        let first_slot = slots.names.len() as u16;
+        for p in &m.params {
+            match p {
+                ExprSyntax::Name(name, span) => {
+                    if slots.names.contains(name) {
+                        self.diagnostics.push(Diagnostic::error(
+                            "E0512",
+                            span.clone(),
+                            format!(
+                                "the formal parameter '{name}' is bound twice in this production"
+                            ),
+                        ));
+                    }
+                    slots.names.push(name.clone());
+                }
+                other => {
+                    self.diagnostics.push(Diagnostic::error(
+                        "E0510",
+                        other.span(),
+                        "a parameter of a predecessor or context must be a name (a formal parameter)",
+                    ));
+                    slots.names.push(String::new());
+                }
+            }
+        }
+        PatternModule {
+            id: self.alphabet.intern(&m.name),
+            arity: m.params.len(),
+            first_slot,
+            span: m.span.clone(),
+        }
+    }
+
+    fn production(&mut self, p: &ProductionSyntax) -> Option<Production> {
+        let errors_before = self.diagnostics.len();
+        let mut slots = Slots::default();
+        let predecessor = self.pattern(&p.predecessor, &mut slots);
+        let left: Vec<_> = p.left.iter().map(|m| self.pattern(m, &mut slots)).collect();
+        let right = p
+            .right
+            .iter()
+            .map(|m| match m.name.as_str() {
+                "[" => PatternItem::Open,
+                "]" => PatternItem::Close,
+                _ => PatternItem::Module(self.pattern(m, &mut slots)),
+            })
+            .collect();
+        let condition = p.condition.as_ref().and_then(|c| self.compile(c, &slots));
+        let weight = p.weight.as_ref().and_then(|w| self.compile(w, &slots));
+        if let Some(w) = weight.as_ref().and_then(Program::constant) {
+            if w < 0.0 {
+                self.diagnostics.push(Diagnostic::error(
+                    "E0513",
+                    p.weight.as_ref().map_or(0..0, |w| w.span()),
+                    "a weight cannot be negative",
+                ));
+            }
+        }
+        let successor = self.successor(&p.successor, &slots);
+        if self.diagnostics[errors_before..]
+            .iter()
+            .any(|d| d.severity == crate::diagnostics::Severity::Error)
+        {
+            return None;
+        }
+        Some(Production {
+            label: p.label.clone(),
+            section: p.section,
+            left,
+            predecessor,
+            right,
+            condition,
+            weight,
+            successor,
+            slots: slots.names.len(),
+            span: p.span.clone(),
+        })
+    }
+
+    fn number(&mut self, d: &Directive) -> Option<f64> {
+        match d.args.parse::<f64>() {
+            Ok(v) if v.is_finite() => Some(v),
+            _ => {
+                self.diagnostics.push(Diagnostic::error(
+                    "E0203",
+                    if d.args.is_empty() {
+                        d.name_span.clone()
+                    } else {
+                        d.args_span.clone()
+                    },
+                    format!("#{} needs a number, found '{}'", d.name, d.args),
+                ));
+                None
+            }
+        }
+    }
+
+    fn whole(&mut self, d: &Directive, max: u64) -> Option<u64> {
+        match d.args.parse::<u64>() {
+            Ok(v) if v <= max => Some(v),
+            _ => {
+                self.diagnostics.push(Diagnostic::error(
+                    "E0204",
+                    if d.args.is_empty() {
+                        d.name_span.clone()
+                    } else {
+                        d.args_span.clone()
+                    },
+                    format!(
+                        "#{} needs a whole number from 0 to {max}, found '{}'",
+                        d.name, d.args
+                    ),
+                ));
+                None
+            }
         }
     }
 }

@@ -14,7 +14,8 @@ pub struct SourceFile {
     pub productions: Vec<ProductionSyntax>,
 }
 
-/// A `#name args` line (also `derivation length: N`, which is stored as `iterations`).
+/// A `#name args` line. `derivation length: N` is stored as `iterations`, and `maximum depth: N`
+/// as `homomorphism_depth` or `decomposition_depth` after the section it stands in.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Directive {
     pub name: String,
@@ -22,22 +23,97 @@ pub struct Directive {
     /// The text after the name, trimmed.
     pub args: String,
     pub args_span: Span,
+    /// For `#define NAME expr` and `#random NAME = expr`: the name being defined.
+    pub target: Option<(String, Span)>,
+    /// For `#define` and `#random`: the expression.
+    pub expr: Option<ExprSyntax>,
+    /// For `#ignore`, `#consider`, `#draw`: the modules listed.
+    pub modules: Vec<ModuleSyntax>,
 }
 
-/// One module occurrence: a name such as `F`, `F_a`, `@O`, `?P`.
+/// One module occurrence: a name such as `F`, `F_a`, `@O`, `?P`, with its parameters.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ModuleSyntax {
     pub name: String,
+    /// The name and its parameter list.
     pub span: Span,
+    pub params: Vec<ExprSyntax>,
 }
 
-/// `label: predecessor -> successor`.
+/// Which rule set a production belongs to (LANGUAGE.md section 3).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Section {
+    Productions,
+    Homomorphism,
+    Decomposition,
+}
+
+/// `label: left < predecessor > right : condition -> (weight) successor`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ProductionSyntax {
     pub label: Option<String>,
+    pub section: Section,
+    /// Left context, in written order; empty when absent or `*`.
+    pub left: Vec<ModuleSyntax>,
     pub predecessor: ModuleSyntax,
-    /// Empty for `A -> ε` and `A ->`.
+    /// Right context, in written order, possibly with `[` `]`; empty when absent or `*`.
+    pub right: Vec<ModuleSyntax>,
+    pub condition: Option<ExprSyntax>,
+    pub weight: Option<ExprSyntax>,
+    /// Empty for `A -> ε`, `A -> *` and `A ->`.
     pub successor: Vec<ModuleSyntax>,
     /// The whole production line.
     pub span: Span,
+}
+
+/// Unary operators.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum UnaryOp {
+    Neg,
+    Not,
+}
+
+/// Binary operators, lowest precedence last.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BinaryOp {
+    Pow,
+    Mul,
+    Div,
+    Rem,
+    Add,
+    Sub,
+    Lt,
+    Le,
+    Gt,
+    Ge,
+    Eq,
+    Ne,
+    And,
+    Or,
+}
+
+/// An arithmetic expression (LANGUAGE.md section 4).
+#[derive(Clone, Debug, PartialEq)]
+pub enum ExprSyntax {
+    Number(f64, Span),
+    Name(String, Span),
+    Unary(UnaryOp, Box<ExprSyntax>, Span),
+    Binary(BinaryOp, Box<ExprSyntax>, Box<ExprSyntax>, Span),
+    /// `c ? a : b`
+    Conditional(Box<ExprSyntax>, Box<ExprSyntax>, Box<ExprSyntax>, Span),
+    /// `name(args)`: the name's span, then the whole call's span.
+    Call(String, Span, Vec<ExprSyntax>, Span),
+}
+
+impl ExprSyntax {
+    pub fn span(&self) -> Span {
+        match self {
+            ExprSyntax::Number(_, s)
+            | ExprSyntax::Name(_, s)
+            | ExprSyntax::Unary(_, _, s)
+            | ExprSyntax::Binary(_, _, _, s)
+            | ExprSyntax::Conditional(_, _, _, s)
+            | ExprSyntax::Call(_, _, _, s) => s.clone(),
+        }
+    }
 }

@@ -6,8 +6,13 @@
 
 mod ast;
 mod comments;
+mod expr;
 mod parse;
 
-pub use ast::{Directive, ModuleSyntax, ProductionSyntax, SourceFile, Span};
+pub use ast::{
+    BinaryOp, Directive, ExprSyntax, ModuleSyntax, ProductionSyntax, Section, SourceFile, Span,
+    UnaryOp,
+};
 pub use comments::blank_comments;
+pub use expr::{parse_expression, MAX_EXPRESSION_DEPTH};
 pub use parse::parse;

@@ -1,8 +1,9 @@
 //! The line-oriented parser. Each line is a directive, an axiom, or a production; a line that
 //! cannot be read yields a diagnostic and parsing resumes at the next line.
 
-use super::ast::{Directive, ModuleSyntax, ProductionSyntax, SourceFile, Span};
+use super::ast::{Directive, ModuleSyntax, ProductionSyntax, Section, SourceFile, Span};
 use super::comments::blank_comments;
+use super::expr::{parse_expression, split_arguments};
 use crate::diagnostics::Diagnostic;
 
 /// `@` names of LANGUAGE.md sections 6 and 7, matched longest first so that `@GcF` is `@Gc F`.
@@ -40,6 +41,7 @@ pub fn parse(source: &str) -> (SourceFile, Vec<Diagnostic>) {
         declared: &declared,
     };
 
+    let mut section = Section::Productions;
     for (start, line) in lines {
         let lead = line.len() - line.trim_start().len();
         let content = line.trim();
@@ -49,7 +51,7 @@ pub fn parse(source: &str) -> (SourceFile, Vec<Diagnostic>) {
         let at = start + lead;
         let span = at..at + content.len();
         if let Some(after_hash) = content.strip_prefix('#') {
-            parse_directive(after_hash, at, &mut file, &mut diagnostics);
+            parse_directive(after_hash, at, &scanner, &mut file, &mut diagnostics);
         } else if let Some((keyword, rest_at)) = keyword(content) {
             let rest = &content[rest_at..];
             let rest_start = at + rest_at;
@@ -69,26 +71,47 @@ pub fn parse(source: &str) -> (SourceFile, Vec<Diagnostic>) {
                     }
                     file.axiom = Some((modules, span));
                 }
-                Keyword::DerivationLength => {
+                Keyword::DerivationLength | Keyword::MaximumDepth => {
+                    let name = match (keyword, section) {
+                        (Keyword::DerivationLength, _) => "iterations",
+                        (_, Section::Decomposition) => "decomposition_depth",
+                        (_, Section::Homomorphism) => "homomorphism_depth",
+                        (_, Section::Productions) => {
+                            diagnostics.push(Diagnostic::error(
+                                "E0111",
+                                at..rest_start,
+                                "'maximum depth:' belongs after 'homomorphism:' or 'decomposition:'",
+                            ));
+                            continue;
+                        }
+                    };
                     let trimmed = rest.trim();
                     let args_at = rest_start + (rest.len() - rest.trim_start().len());
                     file.directives.push(Directive {
-                        name: "iterations".into(),
+                        name: name.into(),
                         name_span: at..rest_start,
                         args: trimmed.to_string(),
                         args_span: args_at..args_at + trimmed.len(),
+                        target: None,
+                        expr: None,
+                        modules: Vec::new(),
                     });
                 }
-                Keyword::Unsupported(name) => diagnostics.push(Diagnostic::error(
-                    "E0190",
-                    at..rest_start,
-                    format!("'{name}' sections are part of the language but not implemented yet"),
-                )),
+                Keyword::Section(new_section) => {
+                    section = new_section;
+                    if !rest.trim().is_empty() {
+                        diagnostics.push(Diagnostic::error(
+                            "E0112",
+                            rest_start..at + content.len(),
+                            "a section keyword stands alone on its line",
+                        ));
+                    }
+                }
             }
-        } else {
-            if let Some(p) = parse_production(content, at, &scanner, &mut diagnostics) {
-                file.productions.push(p);
-            }
+        } else if content.eq_ignore_ascii_case("endlsystem") {
+            section = Section::Productions;
+        } else if let Some(p) = parse_production(content, at, section, &scanner, &mut diagnostics) {
+            file.productions.push(p);
         }
     }
     (file, diagnostics)
@@ -105,10 +128,12 @@ fn split_lines(text: &str) -> Vec<(usize, &str)> {
     lines
 }
 
+#[derive(Clone, Copy)]
 enum Keyword {
     Axiom,
     DerivationLength,
-    Unsupported(&'static str),
+    MaximumDepth,
+    Section(Section),
 }
 
 /// Recognises `axiom:`, `ω:`, `derivation length:` and the section keywords; returns the keyword
@@ -119,9 +144,10 @@ fn keyword(content: &str) -> Option<(Keyword, usize)> {
     let kw = match word.as_str() {
         "axiom" | "ω" => Keyword::Axiom,
         "derivation length" => Keyword::DerivationLength,
-        "homomorphism" => Keyword::Unsupported("homomorphism:"),
-        "decomposition" => Keyword::Unsupported("decomposition:"),
-        "maximum depth" => Keyword::Unsupported("maximum depth:"),
+        "homomorphism" => Keyword::Section(Section::Homomorphism),
+        "decomposition" => Keyword::Section(Section::Decomposition),
+        "productions" => Keyword::Section(Section::Productions),
+        "maximum depth" => Keyword::MaximumDepth,
         _ => return None,
     };
     Some((kw, colon + 1))
@@ -130,6 +156,7 @@ fn keyword(content: &str) -> Option<(Keyword, usize)> {
 fn parse_directive(
     after_hash: &str,
     at: usize,
+    scanner: &ModuleScanner,
     file: &mut SourceFile,
     diagnostics: &mut Vec<Diagnostic>,
 ) {
@@ -148,12 +175,61 @@ fn parse_directive(
     let rest = &after_hash[name_len..];
     let args = rest.trim();
     let args_at = at + 1 + name_len + (rest.len() - rest.trim_start().len());
-    file.directives.push(Directive {
+    let mut directive = Directive {
         name: name.to_string(),
         name_span: at..at + 1 + name_len,
         args: args.to_string(),
         args_span: args_at..args_at + args.len(),
-    });
+        target: None,
+        expr: None,
+        modules: Vec::new(),
+    };
+    match name {
+        "define" | "random" => {
+            // `#define NAME expr`, `#random NAME = expr` (the '=' is optional for both).
+            let ident_len = args
+                .find(|c: char| !(c.is_alphanumeric() || c == '_'))
+                .unwrap_or(args.len());
+            if ident_len == 0 || args.starts_with(|c: char| c.is_ascii_digit()) {
+                diagnostics.push(Diagnostic::error(
+                    "E0113",
+                    directive.name_span.clone(),
+                    format!("#{name} needs a name, then an expression"),
+                ));
+                return;
+            }
+            directive.target = Some((args[..ident_len].to_string(), args_at..args_at + ident_len));
+            let mut expr_text = &args[ident_len..];
+            let mut expr_at = args_at + ident_len;
+            let trimmed = expr_text.trim_start();
+            expr_at += expr_text.len() - trimmed.len();
+            expr_text = trimmed;
+            if let Some(after_eq) = expr_text.strip_prefix('=') {
+                expr_at += 1;
+                expr_text = after_eq;
+            }
+            if expr_text.trim().is_empty() {
+                diagnostics.push(Diagnostic::error(
+                    "E0113",
+                    directive.args_span.clone(),
+                    format!("#{name} {} needs an expression", &args[..ident_len]),
+                ));
+                return;
+            }
+            match parse_expression(expr_text, expr_at) {
+                Ok(e) => directive.expr = Some(e),
+                Err(d) => {
+                    diagnostics.push(d);
+                    return;
+                }
+            }
+        }
+        "ignore" | "consider" | "draw" => {
+            directive.modules = scanner.scan(args, args_at, diagnostics);
+        }
+        _ => {}
+    }
+    file.directives.push(directive);
 }
 
 /// Finds the production arrow: `->`, `-->` or `→`. Returns (start, end) byte offsets in `content`.
@@ -175,9 +251,37 @@ fn find_arrow(content: &str) -> Option<(usize, usize)> {
     }
 }
 
+/// Finds the first occurrence of `token` outside parentheses.
+fn find_top_level(text: &str, token: char) -> Option<usize> {
+    let mut depth = 0i32;
+    for (i, c) in text.char_indices() {
+        match c {
+            '(' => depth += 1,
+            ')' => depth -= 1,
+            c if c == token && depth == 0 => return Some(i),
+            _ => {}
+        }
+    }
+    None
+}
+
+/// Scans one context (`*` alone means no context).
+fn scan_context(
+    text: &str,
+    at: usize,
+    scanner: &ModuleScanner,
+    diagnostics: &mut Vec<Diagnostic>,
+) -> Vec<ModuleSyntax> {
+    if text.trim() == "*" {
+        return Vec::new();
+    }
+    scanner.scan(text, at, diagnostics)
+}
+
 fn parse_production(
     content: &str,
     at: usize,
+    section: Section,
     scanner: &ModuleScanner,
     diagnostics: &mut Vec<Diagnostic>,
 ) -> Option<ProductionSyntax> {
@@ -209,25 +313,52 @@ fn parse_production(
             lhs = &lhs[colon + 1..];
         }
     }
-    let pred_span = lhs_at..at + arrow_start;
-    for (token, what, code) in [
-        ('<', "left contexts ('<')", "E0191"),
-        ('>', "right contexts ('>')", "E0191"),
-        (':', "conditions (':')", "E0192"),
-        ('(', "parameters ('(…)')", "E0193"),
-    ] {
-        if let Some(i) = lhs.find(token) {
+    let errors_before = diagnostics.len();
+
+    // The condition: after the first ':' outside parentheses.
+    let mut condition = None;
+    if let Some(colon) = find_top_level(lhs, ':') {
+        let text = &lhs[colon + 1..];
+        if text.trim().is_empty() {
             diagnostics.push(Diagnostic::error(
-                code,
-                lhs_at + i..lhs_at + i + 1,
-                format!("{what} are part of the language but not implemented yet"),
+                "E0114",
+                lhs_at + colon..lhs_at + colon + 1,
+                "expected a condition after ':'",
             ));
-            return None;
+        } else {
+            match parse_expression(text, lhs_at + colon + 1) {
+                Ok(e) => condition = Some(e),
+                Err(d) => diagnostics.push(d),
+            }
+        }
+        lhs = &lhs[..colon];
+    }
+
+    // Contexts: `left < predecessor > right`.
+    let mut left = Vec::new();
+    let mut right = Vec::new();
+    let mut pred_text = lhs;
+    let mut pred_at = lhs_at;
+    if let Some(lt) = find_top_level(pred_text, '<') {
+        left = scan_context(&pred_text[..lt], pred_at, scanner, diagnostics);
+        pred_at += lt + 1;
+        pred_text = &pred_text[lt + 1..];
+    }
+    if let Some(gt) = find_top_level(pred_text, '>') {
+        right = scan_context(&pred_text[gt + 1..], pred_at + gt + 1, scanner, diagnostics);
+        pred_text = &pred_text[..gt];
+    }
+    for m in &left {
+        if m.name == "[" || m.name == "]" {
+            diagnostics.push(Diagnostic::error(
+                "E0115",
+                m.span.clone(),
+                "a left context cannot hold brackets",
+            ));
         }
     }
-    let mut local = Vec::new();
-    let predecessor = scanner.scan(lhs, lhs_at, &mut local);
-    diagnostics.extend(local);
+    check_brackets(&right, diagnostics);
+    let predecessor = scanner.scan(pred_text, pred_at, diagnostics);
     let predecessor = match predecessor.len() {
         1 => predecessor.into_iter().next()?,
         0 => {
@@ -241,7 +372,7 @@ fn parse_production(
         n => {
             diagnostics.push(Diagnostic::error(
                 "E0107",
-                pred_span,
+                pred_at..pred_at + pred_text.len(),
                 format!("the predecessor must be a single module; found {n}"),
             ));
             return None;
@@ -249,30 +380,75 @@ fn parse_production(
     };
 
     let rhs = &content[arrow_end..];
-    let rhs_at = at + arrow_end;
-    let trimmed = rhs.trim();
+    let mut rhs_at = at + arrow_end;
+    let mut trimmed = rhs.trim();
+    rhs_at += rhs.len() - rhs.trim_start().len();
+    // A weight: a parenthesised expression right after the arrow.
+    let mut weight = None;
+    if trimmed.starts_with('(') {
+        match matching_paren(trimmed) {
+            Some(close) => {
+                match parse_expression(&trimmed[1..close], rhs_at + 1) {
+                    Ok(e) => weight = Some(e),
+                    Err(d) => diagnostics.push(d),
+                }
+                let after = &trimmed[close + 1..];
+                rhs_at += close + 1 + (after.len() - after.trim_start().len());
+                trimmed = after.trim();
+            }
+            None => {
+                diagnostics.push(Diagnostic::error(
+                    "E0116",
+                    rhs_at..rhs_at + 1,
+                    "'(' is never closed by a ')'",
+                ));
+                return None;
+            }
+        }
+    }
     let successor = if trimmed.is_empty() || trimmed == "ε" || trimmed == "*" {
         Vec::new()
     } else {
-        if trimmed.starts_with('(') {
-            let i = rhs.find('(').unwrap_or(0);
-            diagnostics.push(Diagnostic::error(
-                "E0194",
-                rhs_at + i..rhs_at + i + 1,
-                "weighted (stochastic) productions are part of the language but not implemented yet",
-            ));
-            return None;
-        }
-        let modules = scanner.scan(rhs, rhs_at, diagnostics);
+        let modules = scanner.scan(trimmed, rhs_at, diagnostics);
         check_brackets(&modules, diagnostics);
         modules
     };
+    if diagnostics.len() > errors_before
+        && diagnostics[errors_before..]
+            .iter()
+            .any(|d| d.code == "E0115")
+    {
+        return None;
+    }
     Some(ProductionSyntax {
         label,
+        section,
+        left,
         predecessor,
+        right,
+        condition,
+        weight,
         successor,
         span,
     })
+}
+
+/// Byte index of the ')' that closes the '(' at the start of `text`.
+fn matching_paren(text: &str) -> Option<usize> {
+    let mut depth = 0i32;
+    for (i, c) in text.char_indices() {
+        match c {
+            '(' => depth += 1,
+            ')' => {
+                depth -= 1;
+                if depth == 0 {
+                    return Some(i);
+                }
+            }
+            _ => {}
+        }
+    }
+    None
 }
 
 /// Reports unbalanced `[` `]` in one module string (axiom or successor).
@@ -323,13 +499,55 @@ impl ModuleScanner<'_> {
                 continue;
             }
             if c == '(' {
-                let close = rest.find(')').map_or(text.len(), |j| i + j + 1);
-                diagnostics.push(Diagnostic::error(
-                    "E0193",
-                    base + i..base + close,
-                    "parameters ('(…)') are part of the language but not implemented yet",
-                ));
-                i = close;
+                // Parameters of the module just read (whitespace before '(' is allowed).
+                let close = matching_paren(rest);
+                let Some(last) = modules
+                    .last_mut()
+                    .filter(|m: &&mut ModuleSyntax| m.params.is_empty())
+                else {
+                    let end = close.map_or(text.len(), |j| i + j + 1);
+                    diagnostics.push(Diagnostic::error(
+                        "E0117",
+                        base + i..base + end,
+                        "a parameter list '(…)' must follow a module name",
+                    ));
+                    i = end;
+                    continue;
+                };
+                let Some(close) = close else {
+                    diagnostics.push(Diagnostic::error(
+                        "E0116",
+                        base + i..base + i + 1,
+                        "'(' is never closed by a ')'",
+                    ));
+                    return modules;
+                };
+                let inner = &rest[1..close];
+                if inner.trim().is_empty() {
+                    diagnostics.push(Diagnostic::error(
+                        "E0118",
+                        base + i..base + i + close + 1,
+                        "an empty parameter list '()': write the module without parentheses",
+                    ));
+                } else {
+                    for (offset, piece) in split_arguments(inner) {
+                        if piece.trim().is_empty() {
+                            let at = base + i + 1 + offset;
+                            diagnostics.push(Diagnostic::error(
+                                "E0119",
+                                at..at + 1,
+                                "an empty parameter between commas",
+                            ));
+                            continue;
+                        }
+                        match parse_expression(piece, base + i + 1 + offset) {
+                            Ok(e) => last.params.push(e),
+                            Err(d) => diagnostics.push(d),
+                        }
+                    }
+                }
+                last.span.end = base + i + close + 1;
+                i += close + 1;
                 continue;
             }
             if c == ')' {
@@ -345,6 +563,7 @@ impl ModuleScanner<'_> {
             modules.push(ModuleSyntax {
                 name: rest[..len].to_string(),
                 span: base + i..base + i + len,
+                params: Vec::new(),
             });
             i += len;
         }

@@ -110,10 +110,14 @@ pub fn interpret(model: &Model, string: &LString) -> Skeleton {
         let Some(command) = table[id.index()] else {
             continue;
         };
+        // A first parameter replaces the default length or angle: `F(l)`, `+(a)`.
+        let first = string.params_of(index).first().copied();
+        let length = first.unwrap_or(settings.step);
+        let angle = first.map_or(delta, f64::to_radians);
         match command {
             Command::Forward => {
                 let start = turtle.position;
-                turtle.position += turtle.heading * settings.step;
+                turtle.position += turtle.heading * length;
                 segments.push(Segment {
                     start,
                     end: turtle.position,
@@ -124,13 +128,13 @@ pub fn interpret(model: &Model, string: &LString) -> Skeleton {
                     module: index as u32,
                 });
             }
-            Command::Move => turtle.position += turtle.heading * settings.step,
-            Command::TurnLeft => turtle.yaw(delta),
-            Command::TurnRight => turtle.yaw(-delta),
-            Command::PitchDown => turtle.pitch(delta),
-            Command::PitchUp => turtle.pitch(-delta),
-            Command::RollRight => turtle.roll(delta),
-            Command::RollLeft => turtle.roll(-delta),
+            Command::Move => turtle.position += turtle.heading * length,
+            Command::TurnLeft => turtle.yaw(angle),
+            Command::TurnRight => turtle.yaw(-angle),
+            Command::PitchDown => turtle.pitch(angle),
+            Command::PitchUp => turtle.pitch(-angle),
+            Command::RollRight => turtle.roll(angle),
+            Command::RollLeft => turtle.roll(-angle),
             Command::TurnAround => turtle.yaw(std::f64::consts::PI),
             Command::Push => stack.push(turtle),
             Command::Pop => {
@@ -157,7 +161,14 @@ mod tests {
         let (model, diags) = model::resolve(&file);
         assert!(diags.is_empty(), "{diags:?}");
         let model = model.expect("model");
-        interpret(&model, &model.axiom)
+        let derivation = crate::derive::derive(
+            &model,
+            &crate::derive::DeriveOptions {
+                steps: 0,
+                seed: None,
+            },
+        );
+        interpret(&model, &derivation.expect("derives").string)
     }
 
     fn close(a: DVec3, b: DVec3) -> bool {
@@ -203,6 +214,13 @@ mod tests {
             run("#angle 90\naxiom: \\+F").end,
             DVec3::new(0.0, 0.0, -1.0)
         ));
+    }
+
+    #[test]
+    fn parameters_set_length_and_angle() {
+        let s = run("#angle 10\naxiom: F(2)+(90)f(3)F");
+        assert!(close(s.segments[0].end, DVec3::new(0.0, 2.0, 0.0)));
+        assert!(close(s.end, DVec3::new(-4.0, 2.0, 0.0)), "{}", s.end);
     }
 
     #[test]

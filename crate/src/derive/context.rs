@@ -1,0 +1,154 @@
+//! Bracket-aware context matching (LANGUAGE.md section 3; ABOP section 1.8, cpfg's "bracketed
+//! sense"). Looking left, the neighbour is the previous module on the path to the root: whole
+//! branches `[…]` are skipped and a `[` is stepped out of. Looking right, branches the pattern does
+//! not mention are skipped, a `]` ends the search, and `[`…`]` in the pattern are matched against
+//! the string's branches (trying each sibling branch in turn). Ignored modules are skipped on both
+//! sides.
+
+use crate::model::{LString, Model, PatternItem, PatternModule};
+
+/// No partner: not a bracket, or an unbalanced one.
+pub const NONE: u32 = u32::MAX;
+
+/// For each `[` the index of its `]` and back; [`NONE`] elsewhere.
+pub fn bracket_partners(model: &Model, s: &LString, partner: &mut Vec<u32>) {
+    partner.clear();
+    partner.resize(s.len(), NONE);
+    let mut stack: Vec<u32> = Vec::new();
+    for (i, &id) in s.ids.iter().enumerate() {
+        if id == model.open {
+            stack.push(i as u32);
+        } else if id == model.close {
+            if let Some(open) = stack.pop() {
+                partner[open as usize] = i as u32;
+                partner[i] = open;
+            }
+        }
+    }
+}
+
+/// The module before `j` on the path to the root, skipping branches and ignored modules.
+fn previous(model: &Model, s: &LString, partner: &[u32], mut j: usize) -> Option<usize> {
+    while j > 0 {
+        j -= 1;
+        let id = s.ids[j];
+        if id == model.close {
+            let open = partner[j];
+            if open == NONE {
+                return None;
+            }
+            j = open as usize; // the loop then steps past the '['
+        } else if id == model.open || model.ignored[id.index()] {
+            continue;
+        } else {
+            return Some(j);
+        }
+    }
+    None
+}
+
+fn bind(m: &PatternModule, params: &[f64], slots: &mut [f64]) -> bool {
+    if params.len() != m.arity {
+        return false;
+    }
+    let first = m.first_slot as usize;
+    slots[first..first + params.len()].copy_from_slice(params);
+    true
+}
+
+/// Matches a left context ending just before module `i`, binding its formal parameters.
+pub fn match_left(
+    model: &Model,
+    s: &LString,
+    partner: &[u32],
+    i: usize,
+    pattern: &[PatternModule],
+    slots: &mut [f64],
+) -> bool {
+    let mut j = i;
+    for m in pattern.iter().rev() {
+        let Some(k) = previous(model, s, partner, j) else {
+            return false;
+        };
+        if s.ids[k] != m.id || !bind(m, s.params_of(k), slots) {
+            return false;
+        }
+        j = k;
+    }
+    true
+}
+
+/// Matches a right context starting at module `pos`, binding its formal parameters.
+pub fn match_right(
+    model: &Model,
+    s: &LString,
+    partner: &[u32],
+    mut pos: usize,
+    pattern: &[PatternItem],
+    slots: &mut [f64],
+) -> bool {
+    let Some(item) = pattern.first() else {
+        return true;
+    };
+    let n = s.len();
+    match item {
+        PatternItem::Module(m) => loop {
+            if pos >= n {
+                return false;
+            }
+            let id = s.ids[pos];
+            if id == model.open {
+                let close = partner[pos];
+                if close == NONE {
+                    return false;
+                }
+                pos = close as usize + 1;
+            } else if id == model.close {
+                return false;
+            } else if model.ignored[id.index()] {
+                pos += 1;
+            } else {
+                return id == m.id
+                    && bind(m, s.params_of(pos), slots)
+                    && match_right(model, s, partner, pos + 1, &pattern[1..], slots);
+            }
+        },
+        PatternItem::Open => loop {
+            if pos >= n {
+                return false;
+            }
+            let id = s.ids[pos];
+            if id == model.open {
+                if match_right(model, s, partner, pos + 1, &pattern[1..], slots) {
+                    return true;
+                }
+                let close = partner[pos];
+                if close == NONE {
+                    return false;
+                }
+                pos = close as usize + 1; // try the next sibling branch
+            } else if model.ignored[id.index()] {
+                pos += 1;
+            } else {
+                return false;
+            }
+        },
+        PatternItem::Close => loop {
+            if pos >= n {
+                return false;
+            }
+            let id = s.ids[pos];
+            if id == model.open {
+                let close = partner[pos];
+                if close == NONE {
+                    return false;
+                }
+                pos = close as usize + 1;
+            } else if id == model.close {
+                return match_right(model, s, partner, pos + 1, &pattern[1..], slots);
+            } else {
+                pos += 1;
+            }
+        },
+    }
+}

@@ -1,0 +1,709 @@
+//! Compiled expressions: a small stack bytecode, evaluated in f64 without allocation. Names are
+//! resolved when compiling (formal parameters become slots, `#define` constants are inlined), so
+//! evaluation never looks at text.
+
+use crate::diagnostics::Diagnostic;
+use crate::syntax::{BinaryOp, ExprSyntax, Span, UnaryOp};
+use rand::RngExt;
+use rand_distr::{Binomial, Distribution, Exp, Normal, Poisson};
+
+/// Deepest evaluation stack a compiled expression may need.
+pub const MAX_STACK: usize = 64;
+
+/// Functions of LANGUAGE.md section 4 (trigonometry in degrees).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Function {
+    Sin,
+    Cos,
+    Tan,
+    Asin,
+    Acos,
+    Atan,
+    Atan2,
+    Sqrt,
+    Exp,
+    Log,
+    Abs,
+    Floor,
+    Ceil,
+    Round,
+    Min,
+    Max,
+    Clamp,
+    Sign,
+    // Random functions (section 5): a fresh deviate at each evaluation.
+    Uniform,
+    Normal,
+    Exponential,
+    UniformInt,
+    Binomial,
+    Poisson,
+    Constant,
+}
+
+impl Function {
+    /// Name, arity, function.
+    const TABLE: &'static [(&'static str, usize, Function)] = &[
+        ("sin", 1, Function::Sin),
+        ("cos", 1, Function::Cos),
+        ("tan", 1, Function::Tan),
+        ("asin", 1, Function::Asin),
+        ("acos", 1, Function::Acos),
+        ("atan", 1, Function::Atan),
+        ("atan2", 2, Function::Atan2),
+        ("sqrt", 1, Function::Sqrt),
+        ("exp", 1, Function::Exp),
+        ("log", 1, Function::Log),
+        ("abs", 1, Function::Abs),
+        ("floor", 1, Function::Floor),
+        ("ceil", 1, Function::Ceil),
+        ("round", 1, Function::Round),
+        ("min", 2, Function::Min),
+        ("max", 2, Function::Max),
+        ("clamp", 3, Function::Clamp),
+        ("sign", 1, Function::Sign),
+        ("uniform", 2, Function::Uniform),
+        ("normal", 2, Function::Normal),
+        ("exponential", 1, Function::Exponential),
+        ("uniform_int", 2, Function::UniformInt),
+        ("binomial", 2, Function::Binomial),
+        ("poisson", 1, Function::Poisson),
+        ("constant", 1, Function::Constant),
+    ];
+
+    /// Looks a function up by name (case-insensitive, so Green's `UNIFORM(0,1)` reads too).
+    pub fn lookup(name: &str) -> Option<(usize, Function)> {
+        Self::TABLE
+            .iter()
+            .find(|(n, _, _)| n.eq_ignore_ascii_case(name))
+            .map(|&(_, a, f)| (a, f))
+    }
+
+    pub fn is_random(self) -> bool {
+        matches!(
+            self,
+            Function::Uniform
+                | Function::Normal
+                | Function::Exponential
+                | Function::UniformInt
+                | Function::Binomial
+                | Function::Poisson
+        )
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Op {
+    Const(f64),
+    Slot(u16),
+    NumIt,
+    MaxIt,
+    /// A random variable (`#random`): in a condition, the module's deviate; elsewhere, fresh.
+    Var(u16),
+    Neg,
+    Not,
+    /// Turns the top of the stack into 1 or 0.
+    Truth,
+    Bin(BinaryOp),
+    Call(Function),
+    /// Jump to the op index when the popped value is false (zero).
+    JumpIfFalse(u32),
+    Jump(u32),
+}
+
+/// A compiled expression.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Program {
+    ops: Vec<Op>,
+    /// For each op, the span of the source it came from (for runtime diagnostics).
+    spans: Vec<Span>,
+    /// The whole expression's span.
+    pub span: Span,
+    /// True when the expression draws random numbers (its value differs between evaluations).
+    pub random: bool,
+}
+
+/// What names mean while compiling one expression.
+pub trait Scope {
+    /// The slot of a formal parameter.
+    fn slot(&self, name: &str) -> Option<u16>;
+    /// The expression of a `#define` constant.
+    fn define(&self, name: &str) -> Option<&ExprSyntax>;
+    /// The index of a `#random` variable.
+    fn random_var(&self, name: &str) -> Option<u16>;
+}
+
+/// Why an evaluation failed; turned into a diagnostic at the op's span.
+#[derive(Clone, Debug, PartialEq)]
+pub struct EvalError {
+    pub message: String,
+    pub span: Span,
+}
+
+impl EvalError {
+    pub fn into_diagnostic(self, context: &str) -> Diagnostic {
+        Diagnostic::error("E0500", self.span, format!("{}{context}", self.message))
+    }
+}
+
+/// The values an evaluation reads, besides its own constants.
+pub struct Env<'a, R: rand::Rng + ?Sized> {
+    pub slots: &'a [f64],
+    pub num_it: f64,
+    pub max_it: f64,
+    /// Per-module deviates of `#random` variables, drawn on first use (`None` until then); when
+    /// `fresh_vars` is true every use draws anew instead.
+    pub vars: &'a mut [Option<f64>],
+    pub fresh_vars: bool,
+    /// The distributions of the `#random` variables.
+    pub var_programs: &'a [Program],
+    pub rng: &'a mut R,
+}
+
+impl Program {
+    /// Compiles `expr` in `scope`.
+    pub fn compile(expr: &ExprSyntax, scope: &dyn Scope) -> Result<Program, Diagnostic> {
+        let mut c = Compiler {
+            ops: Vec::new(),
+            spans: Vec::new(),
+            scope,
+            expanding: Vec::new(),
+            random: false,
+        };
+        c.expr(expr, 0)?;
+        let program = Program {
+            ops: c.ops,
+            spans: c.spans,
+            span: expr.span(),
+            random: c.random,
+        };
+        if program.max_stack() > MAX_STACK {
+            return Err(Diagnostic::error(
+                "E0127",
+                expr.span(),
+                format!("expression too complex: it needs more than {MAX_STACK} stack slots"),
+            ));
+        }
+        Ok(program)
+    }
+
+    /// The constant value, when the expression has no names and draws nothing.
+    pub fn constant(&self) -> Option<f64> {
+        match self.ops.as_slice() {
+            [Op::Const(v)] => Some(*v),
+            _ => None,
+        }
+    }
+
+    fn max_stack(&self) -> usize {
+        let mut depth: isize = 0;
+        let mut max = 0;
+        for op in &self.ops {
+            depth += match op {
+                Op::Const(_) | Op::Slot(_) | Op::NumIt | Op::MaxIt | Op::Var(_) => 1,
+                Op::Neg | Op::Not | Op::Truth | Op::Jump(_) => 0,
+                Op::Bin(_) | Op::JumpIfFalse(_) => -1,
+                Op::Call(f) => {
+                    1 - Function::TABLE
+                        .iter()
+                        .find(|t| t.2 == *f)
+                        .map_or(1, |t| t.1) as isize
+                }
+            };
+            max = max.max(depth);
+        }
+        max.max(0) as usize
+    }
+
+    /// Evaluates the expression. Division by zero, invalid arguments of random functions and
+    /// results that are not finite numbers are errors, never silent NaNs.
+    pub fn eval<R: rand::Rng + ?Sized>(&self, env: &mut Env<'_, R>) -> Result<f64, EvalError> {
+        let mut stack = [0.0f64; MAX_STACK];
+        let mut sp = 0usize;
+        let mut pc = 0usize;
+        while pc < self.ops.len() {
+            let op = self.ops[pc];
+            pc += 1;
+            match op {
+                Op::Const(v) => {
+                    stack[sp] = v;
+                    sp += 1;
+                }
+                Op::Slot(s) => {
+                    stack[sp] = env.slots.get(s as usize).copied().unwrap_or(0.0);
+                    sp += 1;
+                }
+                Op::NumIt => {
+                    stack[sp] = env.num_it;
+                    sp += 1;
+                }
+                Op::MaxIt => {
+                    stack[sp] = env.max_it;
+                    sp += 1;
+                }
+                Op::Var(k) => {
+                    let k = k as usize;
+                    let value = match env.vars.get(k).copied().flatten() {
+                        Some(v) if !env.fresh_vars => v,
+                        _ => {
+                            let program = &env.var_programs[k];
+                            let mut inner = Env {
+                                slots: &[],
+                                num_it: env.num_it,
+                                max_it: env.max_it,
+                                vars: &mut [],
+                                fresh_vars: true,
+                                var_programs: &[],
+                                rng: &mut *env.rng,
+                            };
+                            let v = program.eval(&mut inner)?;
+                            if !env.fresh_vars {
+                                if let Some(slot) = env.vars.get_mut(k) {
+                                    *slot = Some(v);
+                                }
+                            }
+                            v
+                        }
+                    };
+                    stack[sp] = value;
+                    sp += 1;
+                }
+                Op::Neg => stack[sp - 1] = -stack[sp - 1],
+                Op::Not => stack[sp - 1] = truth(stack[sp - 1] == 0.0),
+                Op::Truth => stack[sp - 1] = truth(stack[sp - 1] != 0.0),
+                Op::Bin(op) => {
+                    sp -= 1;
+                    let (a, b) = (stack[sp - 1], stack[sp]);
+                    stack[sp - 1] = match op {
+                        BinaryOp::Add => a + b,
+                        BinaryOp::Sub => a - b,
+                        BinaryOp::Mul => a * b,
+                        BinaryOp::Div | BinaryOp::Rem if b == 0.0 => {
+                            return Err(self.error(pc - 1, "division by zero".into()));
+                        }
+                        BinaryOp::Div => a / b,
+                        BinaryOp::Rem => a % b,
+                        BinaryOp::Pow => a.powf(b),
+                        BinaryOp::Lt => truth(a < b),
+                        BinaryOp::Le => truth(a <= b),
+                        BinaryOp::Gt => truth(a > b),
+                        BinaryOp::Ge => truth(a >= b),
+                        BinaryOp::Eq => truth(a == b),
+                        BinaryOp::Ne => truth(a != b),
+                        BinaryOp::And | BinaryOp::Or => unreachable_logic(a, b, op),
+                    };
+                }
+                Op::Call(f) => {
+                    let arity = Function::TABLE.iter().find(|t| t.2 == f).map_or(1, |t| t.1);
+                    sp -= arity;
+                    let args = &stack[sp..sp + arity];
+                    let value = call(f, args, env.rng).map_err(|m| self.error(pc - 1, m))?;
+                    stack[sp] = value;
+                    sp += 1;
+                }
+                Op::JumpIfFalse(target) => {
+                    sp -= 1;
+                    if stack[sp] == 0.0 {
+                        pc = target as usize;
+                    }
+                }
+                Op::Jump(target) => pc = target as usize,
+            }
+        }
+        let value = stack[0];
+        if !value.is_finite() {
+            return Err(EvalError {
+                message: format!("the expression gives {value}, not a finite number"),
+                span: self.span.clone(),
+            });
+        }
+        Ok(value)
+    }
+
+    fn error(&self, op: usize, message: String) -> EvalError {
+        EvalError {
+            message,
+            span: self
+                .spans
+                .get(op)
+                .cloned()
+                .unwrap_or_else(|| self.span.clone()),
+        }
+    }
+}
+
+/// `&&` and `||` compile to jumps, so they never reach `Op::Bin`; this keeps the match total.
+fn unreachable_logic(a: f64, b: f64, op: BinaryOp) -> f64 {
+    match op {
+        BinaryOp::And => truth(a != 0.0 && b != 0.0),
+        _ => truth(a != 0.0 || b != 0.0),
+    }
+}
+
+fn truth(b: bool) -> f64 {
+    if b {
+        1.0
+    } else {
+        0.0
+    }
+}
+
+fn call<R: rand::Rng + ?Sized>(f: Function, a: &[f64], rng: &mut R) -> Result<f64, String> {
+    let deg = |x: f64| x.to_radians();
+    Ok(match f {
+        Function::Sin => deg(a[0]).sin(),
+        Function::Cos => deg(a[0]).cos(),
+        Function::Tan => deg(a[0]).tan(),
+        Function::Asin => a[0].asin().to_degrees(),
+        Function::Acos => a[0].acos().to_degrees(),
+        Function::Atan => a[0].atan().to_degrees(),
+        Function::Atan2 => a[0].atan2(a[1]).to_degrees(),
+        Function::Sqrt => a[0].sqrt(),
+        Function::Exp => a[0].exp(),
+        Function::Log => a[0].ln(),
+        Function::Abs => a[0].abs(),
+        Function::Floor => a[0].floor(),
+        Function::Ceil => a[0].ceil(),
+        Function::Round => a[0].round(),
+        Function::Min => a[0].min(a[1]),
+        Function::Max => a[0].max(a[1]),
+        Function::Clamp => a[0].max(a[1]).min(a[2]),
+        Function::Sign => {
+            if a[0] > 0.0 {
+                1.0
+            } else if a[0] < 0.0 {
+                -1.0
+            } else {
+                0.0
+            }
+        }
+        Function::Constant => a[0],
+        Function::Uniform => {
+            if a[0] > a[1] {
+                return Err(format!(
+                    "uniform({}, {}): the lower bound is above the upper",
+                    a[0], a[1]
+                ));
+            }
+            a[0] + (a[1] - a[0]) * rng.random::<f64>()
+        }
+        Function::UniformInt => {
+            let (lo, hi) = (a[0].ceil(), a[1].floor());
+            if lo > hi {
+                return Err(format!(
+                    "uniform_int({}, {}): no whole number in the range",
+                    a[0], a[1]
+                ));
+            }
+            (lo + (rng.random::<f64>() * (hi - lo + 1.0)).floor()).min(hi)
+        }
+        Function::Normal => Normal::new(a[0], a[1])
+            .map_err(|_| format!("normal({}, {}): the deviation must be ≥ 0", a[0], a[1]))?
+            .sample(rng),
+        Function::Exponential => Exp::new(a[0])
+            .map_err(|_| format!("exponential({}): the rate must be ≥ 0", a[0]))?
+            .sample(rng),
+        Function::Binomial => {
+            if !(a[0] >= 0.0 && a[0] <= 1e12) {
+                return Err(format!(
+                    "binomial({}, {}): n must be a count from 0 to 10^12",
+                    a[0], a[1]
+                ));
+            }
+            Binomial::new(a[0] as u64, a[1])
+                .map_err(|_| format!("binomial({}, {}): p must be in 0..1", a[0], a[1]))?
+                .sample(rng) as f64
+        }
+        Function::Poisson => Poisson::new(a[0])
+            .map_err(|_| format!("poisson({}): the mean must be > 0", a[0]))?
+            .sample(rng),
+    })
+}
+
+struct Compiler<'a> {
+    ops: Vec<Op>,
+    spans: Vec<Span>,
+    scope: &'a dyn Scope,
+    /// `#define` names being expanded, to catch cycles.
+    expanding: Vec<String>,
+    random: bool,
+}
+
+impl Compiler<'_> {
+    fn emit(&mut self, op: Op, span: Span) -> usize {
+        self.ops.push(op);
+        self.spans.push(span);
+        self.ops.len() - 1
+    }
+
+    fn patch(&mut self, at: usize) {
+        let target = self.ops.len() as u32;
+        match &mut self.ops[at] {
+            Op::JumpIfFalse(t) | Op::Jump(t) => *t = target,
+            _ => {}
+        }
+    }
+
+    fn expr(&mut self, e: &ExprSyntax, depth: usize) -> Result<(), Diagnostic> {
+        if depth > 4 * crate::syntax::MAX_EXPRESSION_DEPTH {
+            return Err(Diagnostic::error(
+                "E0121",
+                e.span(),
+                "expression nested too deeply (through #define)",
+            ));
+        }
+        match e {
+            ExprSyntax::Number(v, span) => {
+                self.emit(Op::Const(*v), span.clone());
+            }
+            ExprSyntax::Name(name, span) => self.name(name, span, depth)?,
+            ExprSyntax::Unary(op, x, span) => {
+                let start = self.ops.len();
+                self.expr(x, depth + 1)?;
+                if let [Op::Const(v)] = self.ops[start..] {
+                    let folded = match op {
+                        UnaryOp::Neg => -v,
+                        UnaryOp::Not => truth(v == 0.0),
+                    };
+                    *self.ops.last_mut().expect("just pushed") = Op::Const(folded);
+                    return Ok(());
+                }
+                self.emit(
+                    if *op == UnaryOp::Neg {
+                        Op::Neg
+                    } else {
+                        Op::Not
+                    },
+                    span.clone(),
+                );
+            }
+            ExprSyntax::Binary(BinaryOp::And, a, b, span) => {
+                // a && b  =>  a ? truth(b) : 0
+                self.expr(a, depth + 1)?;
+                let jump_false = self.emit(Op::JumpIfFalse(0), span.clone());
+                self.expr(b, depth + 1)?;
+                self.emit(Op::Truth, span.clone());
+                let jump_end = self.emit(Op::Jump(0), span.clone());
+                self.patch(jump_false);
+                self.emit(Op::Const(0.0), span.clone());
+                self.patch(jump_end);
+            }
+            ExprSyntax::Binary(BinaryOp::Or, a, b, span) => {
+                // a || b  =>  a ? 1 : truth(b)
+                self.expr(a, depth + 1)?;
+                let jump_false = self.emit(Op::JumpIfFalse(0), span.clone());
+                self.emit(Op::Const(1.0), span.clone());
+                let jump_end = self.emit(Op::Jump(0), span.clone());
+                self.patch(jump_false);
+                self.expr(b, depth + 1)?;
+                self.emit(Op::Truth, span.clone());
+                self.patch(jump_end);
+            }
+            ExprSyntax::Binary(op, a, b, span) => {
+                let start = self.ops.len();
+                self.expr(a, depth + 1)?;
+                self.expr(b, depth + 1)?;
+                // Fold constant operands (not division by zero: that stays a runtime error).
+                if let [Op::Const(x), Op::Const(y)] = self.ops[start..] {
+                    if !matches!(op, BinaryOp::Div | BinaryOp::Rem) || y != 0.0 {
+                        let mut env_rng = rand_pcg::Pcg64Mcg::new(0);
+                        let program = Program {
+                            ops: vec![Op::Const(x), Op::Const(y), Op::Bin(*op)],
+                            spans: vec![span.clone(); 3],
+                            span: span.clone(),
+                            random: false,
+                        };
+                        let mut env = Env {
+                            slots: &[],
+                            num_it: 0.0,
+                            max_it: 0.0,
+                            vars: &mut [],
+                            fresh_vars: true,
+                            var_programs: &[],
+                            rng: &mut env_rng,
+                        };
+                        if let Ok(v) = program.eval(&mut env) {
+                            self.ops.truncate(start);
+                            self.spans.truncate(start);
+                            self.emit(Op::Const(v), span.clone());
+                            return Ok(());
+                        }
+                    }
+                }
+                self.emit(Op::Bin(*op), span.clone());
+            }
+            ExprSyntax::Conditional(c, a, b, span) => {
+                self.expr(c, depth + 1)?;
+                let jump_false = self.emit(Op::JumpIfFalse(0), span.clone());
+                self.expr(a, depth + 1)?;
+                let jump_end = self.emit(Op::Jump(0), span.clone());
+                self.patch(jump_false);
+                self.expr(b, depth + 1)?;
+                self.patch(jump_end);
+            }
+            ExprSyntax::Call(name, name_span, args, span) => {
+                let Some((arity, f)) = Function::lookup(name) else {
+                    return Err(Diagnostic::error(
+                        "E0501",
+                        name_span.clone(),
+                        format!("unknown function '{name}'"),
+                    ));
+                };
+                if args.len() != arity {
+                    return Err(Diagnostic::error(
+                        "E0502",
+                        span.clone(),
+                        format!(
+                            "{name} takes {arity} argument{}, not {}",
+                            if arity == 1 { "" } else { "s" },
+                            args.len()
+                        ),
+                    ));
+                }
+                for a in args {
+                    self.expr(a, depth + 1)?;
+                }
+                if f.is_random() {
+                    self.random = true;
+                }
+                self.emit(Op::Call(f), span.clone());
+            }
+        }
+        Ok(())
+    }
+
+    fn name(&mut self, name: &str, span: &Span, depth: usize) -> Result<(), Diagnostic> {
+        if let Some(slot) = self.scope.slot(name) {
+            self.emit(Op::Slot(slot), span.clone());
+        } else if name == "NumIt" {
+            self.emit(Op::NumIt, span.clone());
+        } else if name == "MaxIt" {
+            self.emit(Op::MaxIt, span.clone());
+        } else if let Some(k) = self.scope.random_var(name) {
+            self.random = true;
+            self.emit(Op::Var(k), span.clone());
+        } else if let Some(definition) = self.scope.define(name) {
+            if self.expanding.iter().any(|n| n == name) {
+                return Err(Diagnostic::error(
+                    "E0503",
+                    span.clone(),
+                    format!(
+                        "#define {name} refers to itself (through {})",
+                        self.expanding.join(" -> ")
+                    ),
+                ));
+            }
+            self.expanding.push(name.to_string());
+            let definition = definition.clone();
+            self.expr(&definition, depth + 1)?;
+            self.expanding.pop();
+        } else if Function::lookup(name).is_some() {
+            return Err(Diagnostic::error(
+                "E0504",
+                span.clone(),
+                format!("'{name}' is a function: call it as {name}(…)"),
+            ));
+        } else {
+            return Err(Diagnostic::error(
+                "E0505",
+                span.clone(),
+                format!("unknown name '{name}'"),
+            ));
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::syntax::parse_expression;
+
+    struct TestScope;
+    impl Scope for TestScope {
+        fn slot(&self, name: &str) -> Option<u16> {
+            ["x", "y", "z"]
+                .iter()
+                .position(|n| *n == name)
+                .map(|i| i as u16)
+        }
+        fn define(&self, _: &str) -> Option<&ExprSyntax> {
+            None
+        }
+        fn random_var(&self, _: &str) -> Option<u16> {
+            None
+        }
+    }
+
+    fn eval(text: &str, slots: &[f64]) -> Result<f64, String> {
+        let e = parse_expression(text, 0).map_err(|d| d.message)?;
+        let p = Program::compile(&e, &TestScope).map_err(|d| d.message)?;
+        let mut rng = rand_pcg::Pcg64Mcg::new(7);
+        let mut env = Env {
+            slots,
+            num_it: 3.0,
+            max_it: 5.0,
+            vars: &mut [],
+            fresh_vars: true,
+            var_programs: &[],
+            rng: &mut rng,
+        };
+        p.eval(&mut env).map_err(|e| e.message)
+    }
+
+    #[test]
+    fn arithmetic_logic_and_functions() {
+        assert_eq!(eval("1 + 2 * 3", &[]), Ok(7.0));
+        assert_eq!(eval("x/y", &[1.0, 4.0]), Ok(0.25));
+        assert_eq!(eval("x + y + z > 10 && x = 4", &[4.0, 5.0, 6.0]), Ok(1.0));
+        assert_eq!(eval("x < 1 || y", &[2.0, 0.0]), Ok(0.0));
+        assert_eq!(eval("x < 1 ? 10 : 20", &[2.0]), Ok(20.0));
+        assert_eq!(eval("7 % 4 + 2^3", &[]), Ok(11.0));
+        assert!((eval("sin(30)", &[]).unwrap() - 0.5).abs() < 1e-12);
+        assert!((eval("atan2(1, 1)", &[]).unwrap() - 45.0).abs() < 1e-12);
+        assert_eq!(
+            eval("clamp(5, 0, 2) + sign(-3) + NumIt * MaxIt", &[]),
+            Ok(16.0)
+        );
+        assert_eq!(eval("!0 + !5", &[]), Ok(1.0));
+    }
+
+    #[test]
+    fn runtime_errors_are_reported_not_nan() {
+        assert_eq!(
+            eval("x / (y - 1)", &[1.0, 1.0]),
+            Err("division by zero".into())
+        );
+        assert!(eval("sqrt(x)", &[-1.0])
+            .unwrap_err()
+            .contains("not a finite number"));
+        assert_eq!(eval("1 / 0", &[]), Err("division by zero".into()));
+        assert!(eval("uniform(2, 1)", &[])
+            .unwrap_err()
+            .contains("lower bound"));
+    }
+
+    #[test]
+    fn compile_errors_name_the_problem() {
+        assert_eq!(eval("q + 1", &[]), Err("unknown name 'q'".into()));
+        assert_eq!(
+            eval("sin(1, 2)", &[]),
+            Err("sin takes 1 argument, not 2".into())
+        );
+        assert_eq!(eval("frob(1)", &[]), Err("unknown function 'frob'".into()));
+        assert_eq!(
+            eval("sin + 1", &[]),
+            Err("'sin' is a function: call it as sin(…)".into())
+        );
+    }
+
+    #[test]
+    fn random_functions_stay_in_range() {
+        for _ in 0..100 {
+            let v = eval("uniform(2, 3)", &[]).unwrap();
+            assert!((2.0..3.0).contains(&v));
+            let k = eval("uniform_int(1, 3)", &[]).unwrap();
+            assert!([1.0, 2.0, 3.0].contains(&k));
+        }
+    }
+}
