@@ -1,7 +1,7 @@
 //! `meristem`, the command-line tool: the same core as the studio, for scripts, tests and CI.
 //!
 //! ```text
-//! meristem derive FILE [--iterations N] [--stats]   the derived string on one line, or stats as JSON
+//! meristem derive FILE [--iterations N] [--seed S] [--stats]   the derived string, or stats as JSON
 //! meristem check FILE                               diagnostics as FILE:LINE:COL: severity: message
 //! ```
 
@@ -10,7 +10,7 @@ use meristem::{build, BuildOptions};
 use std::process::ExitCode;
 
 const USAGE: &str = "usage:
-  meristem derive FILE [--iterations N] [--stats]
+  meristem derive FILE [--iterations N] [--seed S] [--stats]
   meristem check FILE
   meristem --version";
 
@@ -18,6 +18,7 @@ struct Args {
     verb: String,
     file: String,
     iterations: Option<u32>,
+    seed: Option<u64>,
     stats: bool,
 }
 
@@ -27,10 +28,12 @@ fn parse_args() -> Result<Args, lexopt::Error> {
     let mut verb = None;
     let mut file = None;
     let mut iterations = None;
+    let mut seed = None;
     let mut stats = false;
     while let Some(arg) = parser.next()? {
         match arg {
             Long("iterations") | Short('n') => iterations = Some(parser.value()?.parse()?),
+            Long("seed") | Short('s') => seed = Some(parser.value()?.parse()?),
             Long("stats") => stats = true,
             Long("version") | Short('V') => {
                 println!("meristem {}", env!("CARGO_PKG_VERSION"));
@@ -51,6 +54,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
         verb,
         file,
         iterations,
+        seed,
         stats,
     })
 }
@@ -97,6 +101,7 @@ fn main() -> ExitCode {
         &source,
         &BuildOptions {
             iterations: args.iterations,
+            seed: args.seed,
             ..BuildOptions::default()
         },
     );

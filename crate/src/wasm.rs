@@ -19,11 +19,16 @@ pub fn commands() -> String {
 }
 
 /// Runs the whole pipeline: parse -> resolve -> derive -> interpret -> mesh.
-/// `iterations`: `None` takes the grammar's `#iterations`.
+/// `iterations`: `None` takes the grammar's `#iterations`; `seed`: `None` takes `#seed` (a whole
+/// number from 0 to 2^53; other values are ignored).
 #[wasm_bindgen]
-pub fn build(source: &str, iterations: Option<u32>) -> Build {
+pub fn build(source: &str, iterations: Option<u32>, seed: Option<f64>) -> Build {
+    let seed = seed.filter(|s| {
+        s.is_finite() && *s >= 0.0 && s.fract() == 0.0 && *s <= 9.007_199_254_740_992e15
+    });
     let options = BuildOptions {
         iterations,
+        seed: seed.map(|s| s as u64),
         ..BuildOptions::default()
     };
     let inner = pipeline::build(source, &options);
@@ -82,6 +87,41 @@ impl Build {
                 .string
                 .to_text_truncated(&model.alphabet, max_chars),
             None => String::new(),
+        }
+    }
+}
+
+/// A parsed and resolved grammar that can be derived many times (benchmarks, and later the
+/// step-through view), without the turtle and mesh stages.
+#[wasm_bindgen]
+pub struct Grammar {
+    model: crate::model::Model,
+}
+
+#[wasm_bindgen]
+impl Grammar {
+    /// Parses and resolves `source`; `undefined` when it has errors (use [`build`] to see them).
+    pub fn compile(source: &str) -> Option<Grammar> {
+        let (file, mut diagnostics) = crate::syntax::parse(source);
+        let (model, more) = crate::model::resolve(&file);
+        diagnostics.extend(more);
+        if crate::diagnostics::has_errors(&diagnostics) {
+            return None;
+        }
+        model.map(|model| Grammar { model })
+    }
+
+    /// Derives `iterations` steps and returns the number of modules, or −1 when derivation fails
+    /// (a limit or a runtime error).
+    #[wasm_bindgen(js_name = deriveLength)]
+    pub fn derive_length(&self, iterations: u32, seed: Option<f64>) -> f64 {
+        let options = crate::derive::DeriveOptions {
+            steps: iterations,
+            seed: seed.map(|s| s as u64),
+        };
+        match crate::derive::derive(&self.model, &options) {
+            Ok(d) => d.string.len() as f64,
+            Err(_) => -1.0,
         }
     }
 }

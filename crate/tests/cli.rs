@@ -80,3 +80,16 @@ fn bad_arguments_and_non_utf8_files_fail_politely() {
     assert_eq!(code, 1);
     assert!(err.contains("not UTF-8"), "{err}");
 }
+
+#[test]
+fn seed_overrides_the_grammar_seed_and_fixes_the_result() {
+    let file = temp_file(
+        "stochastic.lsys",
+        b"#seed 5\naxiom: F\nF -> (0.33) F[+F]F[-F]F\nF -> (0.33) F[+F]F\nF -> (0.34) F[-F]F\n",
+    );
+    let run = |seed: &str| meristem(&["derive", &file, "--iterations", "4", "--seed", seed]).1;
+    assert_eq!(run("1"), run("1"));
+    assert_ne!(run("1"), run("2"));
+    let (_, grammar_seed, _) = meristem(&["derive", &file, "--iterations", "4"]);
+    assert_eq!(grammar_seed, run("5"));
+}
