@@ -18,19 +18,22 @@ gate() { # gate NAME COMMAND...: a lint or build step counted as one test
   echo "::: $name"
   if "$@"; then passed=$((passed + 1)); else echo "FAILED: $name"; failed=$((failed + 1)); fi
 }
-count_vitest() { # count_vitest REPORT.json: add a vitest JSON report's totals
-  if [ -f "$1" ]; then
-    read -r p f < <(node -e 'const r=require(process.argv[1]);console.log(r.numPassedTests, r.numFailedTests + (r.numTotalTestSuites && r.success===false && r.numFailedTests===0 ? 1 : 0))' "$1")
+count_vitest() { # count_vitest REPORT.json: add a vitest JSON report's totals; no report is a failure
+  local counts
+  if counts=$(node -e '
+      const r = JSON.parse(require("fs").readFileSync(process.argv[1], "utf8"));
+      // A suite that failed to load has no failed tests but success=false: count it as one failure.
+      const broken = r.success === false && r.numFailedTests === 0 ? 1 : 0;
+      console.log(r.numPassedTests, r.numFailedTests + broken);' "$PWD/$1" 2>/dev/null) && [ -n "$counts" ]; then
+    read -r p f <<<"$counts"
     passed=$((passed + p)); failed=$((failed + f))
   else
-    echo "FAILED: no report $1"; failed=$((failed + 1))
+    echo "FAILED: no readable report $1"; failed=$((failed + 1))
   fi
 }
 
 gate "cargo fmt --check" cargo fmt --manifest-path crate/Cargo.toml --check
 gate "cargo clippy -D warnings" cargo clippy --quiet --manifest-path crate/Cargo.toml --all-targets -- -D warnings
-gate "tsc --noEmit" tsc --noEmit -p tsconfig.json
-
 echo "::: cargo test"
 cargo test --manifest-path crate/Cargo.toml 2>&1 | tee test-results/cargo.txt
 cargo_status=${PIPESTATUS[0]}
@@ -39,6 +42,8 @@ passed=$((passed + p)); failed=$((failed + f))
 if [ "$cargo_status" -ne 0 ] && [ "$f" -eq 0 ]; then echo "FAILED: cargo test did not run to the end"; failed=$((failed + 1)); fi
 
 gate "build wasm" bash scripts/build-wasm.sh
+# tsc needs the generated crate/pkg/meristem.d.ts, so it runs after the wasm build.
+gate "tsc --noEmit" tsc --noEmit -p tsconfig.json
 echo "::: vitest (unit and cross-boundary, real wasm in node)"
 vitest run --reporter=default --reporter=json --outputFile=test-results/vitest.json
 count_vitest test-results/vitest.json

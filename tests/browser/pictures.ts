@@ -1,0 +1,109 @@
+// Pixel measurements on PNG screenshots, for asserting that the 3D view shows a plant.
+import { PNG } from 'pngjs';
+
+/** A decoded RGBA picture. */
+export interface Picture {
+  width: number;
+  height: number;
+  data: Uint8Array;
+}
+
+/** Decodes a PNG screenshot. */
+export function decodePng(png: Buffer): Picture {
+  const { width, height, data } = PNG.sync.read(png);
+  return { width, height, data };
+}
+
+/** Colour distance that counts as "clearly different" (sum of |ΔR|+|ΔG|+|ΔB|, 0..765). */
+export const CLEARLY_DIFFERENT = 60;
+
+function distance(a: Uint8Array, i: number, b: Uint8Array | readonly number[], j: number): number {
+  return Math.abs(a[i] - b[j]) + Math.abs(a[i + 1] - b[j + 1]) + Math.abs(a[i + 2] - b[j + 2]);
+}
+
+/** The background colour: the most common colour among the picture's border pixels. */
+export function backgroundColour(picture: Picture): [number, number, number] {
+  const counts = new Map<number, number>();
+  const { width, height, data } = picture;
+  const add = (x: number, y: number) => {
+    const i = 4 * (y * width + x);
+    const key = (data[i] << 16) | (data[i + 1] << 8) | data[i + 2];
+    counts.set(key, (counts.get(key) ?? 0) + 1);
+  };
+  for (let x = 0; x < width; x++) (add(x, 0), add(x, height - 1));
+  for (let y = 0; y < height; y++) (add(0, y), add(width - 1, y));
+  const [key] = [...counts.entries()].sort((a, b) => b[1] - a[1])[0];
+  return [(key >> 16) & 255, (key >> 8) & 255, key & 255];
+}
+
+/** Which pixels are clearly not background (1) — the plant — as a mask. */
+export function foregroundMask(picture: Picture, background = backgroundColour(picture)): Uint8Array {
+  const mask = new Uint8Array(picture.width * picture.height);
+  for (let p = 0; p < mask.length; p++) mask[p] = distance(picture.data, 4 * p, background, 0) > CLEARLY_DIFFERENT ? 1 : 0;
+  return mask;
+}
+
+/** Share of pixels (0..1) that are clearly not background. */
+export function foregroundShare(picture: Picture): number {
+  const mask = foregroundMask(picture);
+  return mask.reduce((sum, v) => sum + v, 0) / mask.length;
+}
+
+/** Number of distinct colours, a cheap sign of shading (a flat fill has one or two). */
+export function distinctColours(picture: Picture): number {
+  const seen = new Set<number>();
+  const { data } = picture;
+  for (let i = 0; i < data.length; i += 4) seen.add((data[i] << 16) | (data[i + 1] << 8) | data[i + 2]);
+  return seen.size;
+}
+
+/**
+ * How different two same-sized pictures are: the share of the pixels that are foreground in either
+ * picture whose colour changed clearly. 0 = same picture, 1 = nothing in common.
+ */
+export function changedShare(a: Picture, b: Picture): number {
+  if (a.width !== b.width || a.height !== b.height) throw new Error('pictures differ in size');
+  const maskA = foregroundMask(a);
+  const maskB = foregroundMask(b);
+  let union = 0;
+  let changed = 0;
+  for (let p = 0; p < maskA.length; p++) {
+    if (!maskA[p] && !maskB[p]) continue;
+    union++;
+    if (distance(a.data, 4 * p, b.data, 4 * p) > CLEARLY_DIFFERENT) changed++;
+  }
+  return union === 0 ? 0 : changed / union;
+}
+
+/** How much the foregrounds of two same-sized pictures overlap: |A ∩ B| / |A ∪ B| (1 = same silhouette). */
+export function foregroundOverlap(a: Picture, b: Picture): number {
+  if (a.width !== b.width || a.height !== b.height) throw new Error('pictures differ in size');
+  const maskA = foregroundMask(a);
+  const maskB = foregroundMask(b);
+  let union = 0;
+  let both = 0;
+  for (let p = 0; p < maskA.length; p++) {
+    union += maskA[p] | maskB[p];
+    both += maskA[p] & maskB[p];
+  }
+  return union === 0 ? 0 : both / union;
+}
+
+/** The box around the foreground as shares (0..1) of the picture's width and height. */
+export function foregroundExtent(picture: Picture): { width: number; height: number } {
+  const mask = foregroundMask(picture);
+  let minX = Infinity;
+  let maxX = -Infinity;
+  let minY = Infinity;
+  let maxY = -Infinity;
+  for (let y = 0; y < picture.height; y++)
+    for (let x = 0; x < picture.width; x++)
+      if (mask[y * picture.width + x]) {
+        minX = Math.min(minX, x);
+        maxX = Math.max(maxX, x);
+        minY = Math.min(minY, y);
+        maxY = Math.max(maxY, y);
+      }
+  if (maxX < minX) return { width: 0, height: 0 };
+  return { width: (maxX - minX + 1) / picture.width, height: (maxY - minY + 1) / picture.height };
+}

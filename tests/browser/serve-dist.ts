@@ -1,0 +1,33 @@
+// Global setup of the browser suite: serves the built site (dist/) with vite's preview server on
+// a free loopback port and hands its URL to the tests as `inject('studioUrl')`.
+import { existsSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+import { preview } from 'vite';
+import type { TestProject } from 'vitest/node';
+
+declare module 'vitest' {
+  export interface ProvidedContext {
+    /** URL of the studio page served from dist/. */
+    studioUrl: string;
+  }
+}
+
+const repoRoot = fileURLToPath(new URL('../..', import.meta.url));
+
+/** Starts the preview server on dist/ and returns the teardown that stops it. */
+export default async function serveDist(project: TestProject): Promise<() => Promise<void>> {
+  if (!existsSync(`${repoRoot}/dist/index.html`)) {
+    throw new Error('dist/index.html is missing: run `npx vite build` before the browser tests');
+  }
+  const server = await preview({
+    configFile: `${repoRoot}/vite.config.ts`,
+    logLevel: 'warn',
+    preview: { host: '127.0.0.1', port: 0, strictPort: true, open: false },
+  });
+  const address = server.httpServer.address();
+  if (address === null || typeof address === 'string') throw new Error('preview server has no TCP address');
+  project.provide('studioUrl', `http://127.0.0.1:${address.port}/`);
+  return async () => {
+    await server.close();
+  };
+}

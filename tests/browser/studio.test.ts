@@ -1,0 +1,185 @@
+// End-to-end: the built studio in headless Chromium. It must show a plant, redraw it on an edit,
+// mark errors in the editor while keeping the last good plant, and log no errors at all.
+import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { chromium, type Browser, type Page } from 'playwright-core';
+import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
+import { changedShare, decodePng, distinctColours, foregroundExtent, foregroundOverlap, foregroundShare, type Picture } from './pictures';
+
+const RESULTS = new URL('../../test-results/', import.meta.url);
+const EXAMPLE = readFileSync(new URL('../../public/examples/abop-1.24d.lsys', import.meta.url), 'utf8');
+
+let browser: Browser;
+let page: Page;
+/** Console errors, uncaught exceptions, failed requests and HTTP errors seen so far. */
+const problems: string[] = [];
+
+function save(name: string, png: Buffer): void {
+  writeFileSync(new URL(name, RESULTS), png);
+}
+
+/** Screenshots the 3D canvas (saved as `name`) and decodes it; overlays such as the stale badge are hidden. */
+async function canvasPicture(name: string): Promise<Picture> {
+  await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
+  const png = await page
+    .locator('[data-testid=viewport] canvas')
+    .screenshot({ style: '[data-testid=viewport] > :not(canvas) { visibility: hidden !important; }' });
+  save(name, png);
+  return decodePng(png);
+}
+
+async function savePage(name: string): Promise<void> {
+  save(name, await page.screenshot({ fullPage: true }));
+}
+
+/** The build counter shown on the status line. */
+async function generation(): Promise<number> {
+  return Number((await page.getByTestId('status').getAttribute('data-generation')) ?? '0');
+}
+
+/** Waits until a build after `previous` finished, and returns the status state. */
+async function nextBuild(previous: number): Promise<string | null> {
+  await page.waitForFunction(
+    (before) => Number(document.querySelector('[data-testid=status]')?.getAttribute('data-generation') ?? 0) > before,
+    previous,
+  );
+  return page.getByTestId('status').getAttribute('data-state');
+}
+
+/** The segment count of the plant on screen, from the page's test hook. */
+function shownStats(): Promise<{ segments: number; iterations: number } | null> {
+  return page.evaluate(() => window.__meristem?.lastStats ?? null);
+}
+
+beforeAll(async () => {
+  mkdirSync(RESULTS, { recursive: true });
+  browser = await chromium.launch({ executablePath: '/usr/bin/chromium' });
+  page = await browser.newPage({ viewport: { width: 1280, height: 800 }, colorScheme: 'light' });
+  page.on('console', (message) => {
+    if (message.type() === 'error') problems.push(`console error: ${message.text()}`);
+  });
+  page.on('pageerror', (error) => problems.push(`page error: ${error.message}`));
+  page.on('requestfailed', (request) => problems.push(`request failed: ${request.url()} ${request.failure()?.errorText}`));
+  page.on('response', (response) => {
+    if (response.status() >= 400) problems.push(`HTTP ${response.status()}: ${response.url()}`);
+  });
+  await page.goto(inject('studioUrl'));
+});
+
+afterAll(async () => {
+  await browser?.close();
+});
+
+describe('the studio', () => {
+  let firstPicture: Picture;
+  let afterEdit: Picture;
+
+  it('loads the example grammar and shows its plant', async () => {
+    await page.waitForFunction(() => (window.__meristem?.lastStats?.segments ?? 0) > 0);
+    await expect.poll(() => page.getByTestId('status').getAttribute('data-state')).toBe('ok');
+    await expect(page.getByTestId('editor').locator('.cm-content').textContent()).resolves.toContain('axiom: X');
+    const status = (await page.getByTestId('status').textContent()) ?? '';
+    expect(status).toMatch(/^[\d,]+ modules · [\d,]+ segments · [\d,]+ vertices · [\d,]+ triangles · [\d.]+ ms$/);
+    expect(await page.title()).toContain('Meristem');
+
+    firstPicture = await canvasPicture('studio-canvas.png');
+    await savePage('studio.png');
+    const share = foregroundShare(firstPicture);
+    expect(share, 'share of the canvas covered by the plant').toBeGreaterThan(0.01);
+    expect(share, 'share of the canvas covered by the plant').toBeLessThan(0.6);
+    expect(distinctColours(firstPicture), 'a shaded plant has many colours').toBeGreaterThan(50);
+    expect(foregroundExtent(firstPicture).height, 'the framed plant spans most of the view').toBeGreaterThan(0.6);
+    expect(problems).toEqual([]);
+  });
+
+  it('shows the doc of a turtle command from the core table on hover', async () => {
+    const production = page.getByTestId('editor').locator('.cm-line', { hasText: /^X\s*->/ });
+    const draw = production.locator('span', { hasText: /^F$/ }).first();
+    const box = await draw.boundingBox();
+    expect(box).not.toBeNull();
+    await page.mouse.move(box!.x + 1, box!.y + box!.height / 2);
+    await page.mouse.move(box!.x + box!.width / 2, box!.y + box!.height / 2);
+    const doc = page.locator('.cm-tooltip .cm-command-doc');
+    await doc.waitFor({ state: 'visible' });
+    expect(await doc.textContent()).toMatch(/^F — .*draw/);
+    await page.mouse.move(900, 20);
+    await doc.waitFor({ state: 'hidden' });
+    expect(problems).toEqual([]);
+  });
+
+  it('redraws the plant when the grammar is edited', async () => {
+    const angle = /^#angle[ \t]+(\S+)[ \t]*$/m.exec(EXAMPLE);
+    expect(angle, 'the example sets #angle').not.toBeNull();
+    const before = await generation();
+    // Put the caret at the end of the `#angle` line, delete the value and type a new one.
+    await page.getByTestId('editor').locator('.cm-line', { hasText: '#angle' }).click();
+    await page.keyboard.press('End');
+    for (let i = 0; i < angle![1].length; i++) await page.keyboard.press('Backspace');
+    await page.keyboard.type('45');
+    expect(await nextBuild(before)).toBe('ok');
+    await expect(page.getByTestId('editor').locator('.cm-content').textContent()).resolves.toContain('#angle 45');
+
+    afterEdit = await canvasPicture('studio-after-edit-canvas.png');
+    await savePage('studio-after-edit.png');
+    expect(foregroundShare(afterEdit)).toBeGreaterThan(0.01);
+    expect(changedShare(firstPicture, afterEdit), 'share of plant pixels that changed').toBeGreaterThan(0.3);
+    expect(problems).toEqual([]);
+  });
+
+  it('marks an error in the editor and keeps the last good plant on screen', async () => {
+    const goodStats = await shownStats();
+    const before = await generation();
+    await page.getByTestId('editor').locator('.cm-content').click();
+    await page.keyboard.press('Control+End');
+    await page.keyboard.insertText('\nY -> F[+Y');
+    expect(await nextBuild(before)).toBe('stale');
+    await expect(page.getByTestId('status').textContent()).resolves.toMatch(/^1 error — showing last good plant$/);
+
+    const mark = page.getByTestId('editor').locator('.cm-lintRange-error');
+    await mark.first().waitFor({ state: 'visible' });
+    expect(await mark.first().textContent()).toBe('[');
+    await expect(page.getByTestId('editor').locator('.cm-lint-marker-error').count()).resolves.toBeGreaterThan(0);
+    await expect(page.locator('#stale-badge').isVisible()).resolves.toBe(true);
+
+    const stale = await canvasPicture('studio-error-canvas.png');
+    await savePage('studio-error.png');
+    expect(await shownStats()).toEqual(goodStats);
+    expect(foregroundShare(stale), 'a plant is still drawn').toBeGreaterThan(0.01);
+    expect(foregroundOverlap(afterEdit, stale), 'it is the last good plant').toBeGreaterThan(0.8);
+    expect(problems).toEqual([]);
+  });
+
+  it('rebuilds with the iterations typed into the toolbar', async () => {
+    // Remove the broken line again, then ask for fewer iterations than the grammar's.
+    let before = await generation();
+    for (let i = 0; i < '\nY -> F[+Y'.length; i++) await page.keyboard.press('Backspace');
+    expect(await nextBuild(before)).toBe('ok');
+    const full = await shownStats();
+
+    before = await generation();
+    await page.getByTestId('iterations').fill('3');
+    expect(await nextBuild(before)).toBe('ok');
+    const fewer = await shownStats();
+    expect(fewer?.iterations).toBe(3);
+    expect(fewer!.segments).toBeLessThan(full!.segments);
+
+    await page.getByTestId('frame').click();
+    const framed = await canvasPicture('studio-iterations-canvas.png');
+    expect(foregroundShare(framed), 'the small plant is drawn').toBeGreaterThan(0.003);
+    expect(foregroundExtent(framed).height, 'Frame fits the small plant to the view').toBeGreaterThan(0.6);
+    expect(problems).toEqual([]);
+  });
+
+  it('stacks the editor above the view on a narrow screen', async () => {
+    await page.setViewportSize({ width: 420, height: 860 });
+    await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
+    const editor = await page.getByTestId('editor').boundingBox();
+    const viewport = await page.getByTestId('viewport').boundingBox();
+    expect(editor && viewport).toBeTruthy();
+    expect(viewport!.y).toBeGreaterThanOrEqual(editor!.y + editor!.height - 1);
+    expect(viewport!.width).toBeGreaterThan(380);
+    expect(viewport!.height).toBeGreaterThan(200);
+    await savePage('studio-narrow.png');
+    expect(foregroundShare(await canvasPicture('studio-narrow-canvas.png'))).toBeGreaterThan(0.01);
+    expect(problems).toEqual([]);
+  });
+});

@@ -1,0 +1,147 @@
+// Cross-boundary tests: the TypeScript facade over the REAL WebAssembly core (crate/pkg, built by
+// `npm run build:wasm`), compared with the command-line tool built from the same Rust code.
+import { execFileSync } from 'node:child_process';
+import { readFileSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+import { beforeAll, describe, expect, it } from 'vitest';
+import { buildPlant, byteOffsetToUtf16, initCore, type Bounds, type PlantBuild } from '../../web/src/core';
+
+const repoRoot = fileURLToPath(new URL('../..', import.meta.url));
+const EXAMPLE = 'public/examples/abop-1.24d.lsys';
+
+/** What `meristem derive FILE --stats` prints. */
+interface CliStats {
+  modules: number;
+  segments: number;
+  vertices: number;
+  triangles: number;
+  bounds: Bounds;
+}
+
+beforeAll(async () => {
+  await initCore(readFileSync(new URL('../../crate/pkg/meristem_bg.wasm', import.meta.url)));
+});
+
+function expectFinite(name: string, values: Float32Array): void {
+  const bad = values.findIndex((v) => !Number.isFinite(v));
+  expect(bad, `${name}[${bad}] is not finite`).toBe(-1);
+}
+
+describe('buildPlant on the gallery example', () => {
+  let plant: PlantBuild;
+  beforeAll(() => {
+    plant = buildPlant(readFileSync(new URL(`../../${EXAMPLE}`, import.meta.url), 'utf8'));
+  });
+
+  it('builds without diagnostics and reports positive sizes', () => {
+    expect(plant.diagnostics).toEqual([]);
+    expect(plant.ok).toBe(true);
+    const { stats } = plant;
+    expect(stats.iterations).toBe(7);
+    for (const key of ['modules', 'segments', 'vertices', 'triangles'] as const) expect(stats[key]).toBeGreaterThan(0);
+    expect(plant.derived.length).toBeGreaterThan(0);
+    expect(plant.derived.length).toBeLessThanOrEqual(10_001);
+  });
+
+  it('returns mesh arrays whose lengths agree with the stats', () => {
+    const { mesh, stats } = plant;
+    expect(mesh.positions).toBeInstanceOf(Float32Array);
+    expect(mesh.indices).toBeInstanceOf(Uint32Array);
+    expect(mesh.positions.length).toBe(3 * stats.vertices);
+    expect(mesh.normals.length).toBe(3 * stats.vertices);
+    expect(mesh.colors.length).toBe(3 * stats.vertices);
+    expect(mesh.indices.length).toBe(3 * stats.triangles);
+  });
+
+  it('returns a well-formed mesh: indices in range, finite floats, unit normals, colours in 0..1', () => {
+    const { mesh, stats } = plant;
+    let maxIndex = 0;
+    for (const i of mesh.indices) maxIndex = Math.max(maxIndex, i);
+    expect(maxIndex).toBeLessThan(stats.vertices);
+    expectFinite('positions', mesh.positions);
+    expectFinite('normals', mesh.normals);
+    expectFinite('colors', mesh.colors);
+    let worstNormal = 0;
+    for (let v = 0; v < stats.vertices; v++) {
+      const n = mesh.normals;
+      worstNormal = Math.max(worstNormal, Math.abs(Math.hypot(n[3 * v], n[3 * v + 1], n[3 * v + 2]) - 1));
+    }
+    expect(worstNormal).toBeLessThan(1e-3);
+    const outOfRange = mesh.colors.findIndex((c) => c < 0 || c > 1);
+    expect(outOfRange, `colors[${outOfRange}] outside 0..1`).toBe(-1);
+  });
+
+  it('puts every vertex inside the reported bounds (+Y up: the plant grows upwards)', () => {
+    const [min, max] = plant.stats.bounds;
+    const eps = 1e-3;
+    for (let v = 0; v < plant.stats.vertices; v++)
+      for (let axis = 0; axis < 3; axis++) {
+        const c = plant.mesh.positions[3 * v + axis];
+        if (c < min[axis] - eps || c > max[axis] + eps) throw new Error(`vertex ${v} axis ${axis}: ${c} outside bounds`);
+      }
+    expect(max[1] - min[1]).toBeGreaterThan(max[0] - min[0]);
+  });
+
+  it('owns its arrays: later builds (which grow wasm memory) do not change them', () => {
+    const before = plant.mesh.positions.slice();
+    const bigger = buildPlant(readFileSync(new URL(`../../${EXAMPLE}`, import.meta.url), 'utf8'), { iterations: 8 });
+    expect(bigger.ok).toBe(true);
+    expect(bigger.stats.iterations).toBe(8);
+    expect(bigger.stats.segments).toBeGreaterThan(plant.stats.segments);
+    expect(plant.mesh.positions).toEqual(before);
+    expect(plant.mesh.positions.buffer.byteLength).toBe(plant.mesh.positions.byteLength);
+  });
+
+  it(
+    'agrees with the command-line tool (`meristem derive --stats`)',
+    () => {
+      const stdout = execFileSync(
+        'cargo',
+        ['run', '--quiet', '--release', '--manifest-path', 'crate/Cargo.toml', '--bin', 'meristem', '--', 'derive', EXAMPLE, '--stats'],
+        { cwd: repoRoot, encoding: 'utf8', stdio: ['ignore', 'pipe', 'inherit'] },
+      );
+      const cli = JSON.parse(stdout.trim()) as CliStats;
+      const { stats } = plant;
+      expect({ modules: stats.modules, segments: stats.segments, vertices: stats.vertices, triangles: stats.triangles }).toEqual({
+        modules: cli.modules,
+        segments: cli.segments,
+        vertices: cli.vertices,
+        triangles: cli.triangles,
+      });
+      for (let corner = 0; corner < 2; corner++)
+        for (let axis = 0; axis < 3; axis++)
+          expect(Math.abs(stats.bounds[corner][axis] - cli.bounds[corner][axis])).toBeLessThan(1e-4);
+    },
+    180_000,
+  );
+});
+
+describe('buildPlant on a grammar with an error', () => {
+  it('reports ok=false and a diagnostic on the right line, with no geometry', () => {
+    const plant = buildPlant('axiom: X\nX -> F[');
+    expect(plant.ok).toBe(false);
+    const errors = plant.diagnostics.filter((d) => d.severity === 'error');
+    expect(errors.length).toBeGreaterThan(0);
+    expect(errors[0]).toMatchObject({ line: 2, column: 7, fromByte: 15, toByte: 16 });
+    expect(errors[0].code).toMatch(/^E\d{4}$/);
+    expect(plant.mesh.positions.length).toBe(0);
+    expect(plant.mesh.indices.length).toBe(0);
+  });
+
+  it('locates the error after multi-byte characters (byte offsets → UTF-16 positions)', () => {
+    const source = '// 🌱 é →\naxiom: X\nX -> F[';
+    const [error] = buildPlant(source).diagnostics;
+    expect(error.line).toBe(3);
+    const from = byteOffsetToUtf16(source, error.fromByte);
+    const to = byteOffsetToUtf16(source, error.toByte);
+    expect(source.slice(from, to)).toBe('[');
+  });
+
+  it('overrides the grammar’s iterations when asked', () => {
+    const plant = buildPlant('#iterations 5\naxiom: F\nF -> FF', { iterations: 2 });
+    expect(plant.ok).toBe(true);
+    expect(plant.stats.iterations).toBe(2);
+    expect(plant.stats.segments).toBe(4);
+    expect(plant.derived).toBe('FFFF');
+  });
+});

@@ -1,0 +1,27 @@
+// Build and unit-test configuration of the studio.
+// - vite: the page lives in web/, the example gallery in public/ (served as-is), the site is built to dist/
+//   with relative URLs (`base: './'`) so it works from any sub-path.
+// - vitest (`npx vitest run`): unit tests next to the code in web/src and the cross-boundary tests in
+//   tests/core, all in node against the real WebAssembly core. The browser suite has its own config
+//   (tests/browser/vitest.config.ts).
+import { fileURLToPath } from 'node:url';
+import { defineConfig } from 'vitest/config';
+
+const repoRoot = fileURLToPath(new URL('.', import.meta.url));
+
+export default defineConfig({
+  root: 'web',
+  base: './',
+  publicDir: '../public',
+  build: {
+    outDir: '../dist',
+    emptyOutDir: true,
+    // three.js + CodeMirror are one ~1 MB chunk by nature; there is nothing to split off yet.
+    chunkSizeWarningLimit: 1500,
+  },
+  test: {
+    root: repoRoot,
+    environment: 'node',
+    include: ['web/src/**/*.test.ts', 'tests/core/**/*.test.ts'],
+  },
+});

@@ -1,0 +1,16 @@
+// The core: the Rust/WebAssembly pipeline behind an idiomatic TypeScript facade.
+// Invariant: no other TypeScript imports crate/pkg; everything else uses these names.
+export { initCore, coreVersion } from './init';
+export { buildPlant } from './build';
+export { turtleCommands, type TurtleCommand } from './commands';
+export { byteOffsetToUtf16 } from './offsets';
+export {
+  DERIVED_PREVIEW_CHARS,
+  type Bounds,
+  type BuildOptions,
+  type Diagnostic,
+  type MeshBuffers,
+  type PlantBuild,
+  type PlantStats,
+  type Severity,
+} from './types';

@@ -1,0 +1,79 @@
+import { describe, expect, it } from 'vitest';
+import { byteOffsetToUtf16 } from './offsets';
+
+/** Every char boundary of `text` as [utf8 byte offset, utf16 offset], computed with TextEncoder. */
+function boundaries(text: string): [number, number][] {
+  const result: [number, number][] = [[0, 0]];
+  let bytes = 0;
+  let units = 0;
+  for (const char of text) {
+    bytes += new TextEncoder().encode(char).length;
+    units += char.length;
+    result.push([bytes, units]);
+  }
+  return result;
+}
+
+describe('byteOffsetToUtf16', () => {
+  it('is the identity on ASCII', () => {
+    const text = 'axiom: X\nX -> F[+X]';
+    for (let i = 0; i <= text.length; i++) expect(byteOffsetToUtf16(text, i)).toBe(i);
+  });
+
+  it('counts 2-byte characters as one unit', () => {
+    // "é" is 2 bytes in UTF-8, 1 UTF-16 unit.
+    const text = 'é->F';
+    expect(byteOffsetToUtf16(text, 0)).toBe(0);
+    expect(byteOffsetToUtf16(text, 2)).toBe(1);
+    expect(byteOffsetToUtf16(text, 4)).toBe(3);
+    expect(byteOffsetToUtf16(text, 5)).toBe(4);
+  });
+
+  it('counts 3-byte characters as one unit', () => {
+    // "→" (U+2192, the arrow the grammar accepts) is 3 bytes, 1 unit.
+    const text = 'X → FX';
+    expect(byteOffsetToUtf16(text, 2)).toBe(2);
+    expect(byteOffsetToUtf16(text, 5)).toBe(3);
+    expect(byteOffsetToUtf16(text, 6)).toBe(4);
+    expect(byteOffsetToUtf16(text, 8)).toBe(6);
+  });
+
+  it('counts 4-byte (astral) characters as two units', () => {
+    // "🌱" (U+1F331) is 4 bytes in UTF-8 and a surrogate pair in UTF-16.
+    const text = '// 🌱 sprout\nF';
+    expect(byteOffsetToUtf16(text, 3)).toBe(3);
+    expect(byteOffsetToUtf16(text, 7)).toBe(5);
+    expect(byteOffsetToUtf16(text, 8)).toBe(6);
+    const f = text.indexOf('F');
+    expect(byteOffsetToUtf16(text, new TextEncoder().encode(text).length - 1)).toBe(f);
+  });
+
+  it('maps an offset inside a character to the start of that character', () => {
+    const text = 'a🌱b';
+    expect(byteOffsetToUtf16(text, 2)).toBe(1);
+    expect(byteOffsetToUtf16(text, 3)).toBe(1);
+    expect(byteOffsetToUtf16(text, 4)).toBe(1);
+    expect(byteOffsetToUtf16(text, 5)).toBe(3);
+  });
+
+  it('maps offsets at and past the end to the length', () => {
+    const text = 'F→🌱é';
+    const end = new TextEncoder().encode(text).length;
+    expect(end).toBe(10);
+    expect(byteOffsetToUtf16(text, end)).toBe(text.length);
+    expect(byteOffsetToUtf16(text, end + 1)).toBe(text.length);
+    expect(byteOffsetToUtf16(text, Number.MAX_SAFE_INTEGER)).toBe(text.length);
+    expect(byteOffsetToUtf16('', 0)).toBe(0);
+    expect(byteOffsetToUtf16('', 3)).toBe(0);
+  });
+
+  it('maps negative offsets to 0', () => {
+    expect(byteOffsetToUtf16('abc', -1)).toBe(0);
+  });
+
+  it('agrees with TextEncoder at every boundary of mixed text', () => {
+    const text = 'p1: X → F[+X]é中🌿𝒳\n// ok';
+    const slices = boundaries(text);
+    for (const [bytes, units] of slices) expect(byteOffsetToUtf16(text, bytes)).toBe(units);
+  });
+});

@@ -1,0 +1,79 @@
+// The plain data that crosses from the core into the studio. Nothing here refers to WebAssembly:
+// the rest of the front end programs against these types only.
+
+/** How bad a diagnostic is; an `error` means the build produced no geometry. */
+export type Severity = 'error' | 'warning';
+
+/**
+ * One problem found in a grammar, exactly as the core reports it (`diagnostics.rs`,
+ * `LocatedDiagnostic`). Offsets are UTF-8 **byte** offsets into the source text: convert them
+ * with {@link byteOffsetToUtf16} before handing them to anything that counts UTF-16 units
+ * (CodeMirror, `String.prototype.slice`).
+ */
+export interface Diagnostic {
+  severity: Severity;
+  /** Stable code such as `E0101`, listed in docs/LANGUAGE.md. */
+  code: string;
+  message: string;
+  /** Start of the span: UTF-8 byte offset into the source. */
+  fromByte: number;
+  /** End of the span (exclusive): UTF-8 byte offset into the source. */
+  toByte: number;
+  /** 1-based line of `fromByte`. */
+  line: number;
+  /** 1-based column of `fromByte`, counted in Unicode scalar values. */
+  column: number;
+}
+
+/** An axis-aligned box as `[[minX, minY, minZ], [maxX, maxY, maxZ]]`. */
+export type Bounds = [[number, number, number], [number, number, number]];
+
+/** Sizes of one build, as reported by the core (and by `meristem derive --stats`). */
+export interface PlantStats {
+  /** Modules in the derived string. */
+  modules: number;
+  /** Segments the turtle drew. */
+  segments: number;
+  /** Mesh vertices (`mesh.positions.length / 3`). */
+  vertices: number;
+  /** Mesh triangles (`mesh.indices.length / 3`). */
+  triangles: number;
+  /** Derivation steps actually applied. */
+  iterations: number;
+  /** Bounding box of the plant in world units (+Y is up). */
+  bounds: Bounds;
+}
+
+/**
+ * The triangle mesh of a plant as flat typed arrays, owned by JavaScript (copied out of wasm
+ * memory, so they stay valid however the core's memory grows).
+ *
+ * The layout is defined once, on the core's `MeshBuffers` (`crate/src/mesh/mod.rs`); in short:
+ * `positions`, `normals` and `colors` hold 3 floats per vertex, `indices` 3 per triangle.
+ */
+export interface MeshBuffers {
+  positions: Float32Array;
+  normals: Float32Array;
+  colors: Float32Array;
+  indices: Uint32Array;
+}
+
+/** Options of {@link buildPlant}. */
+export interface BuildOptions {
+  /** Derivation steps; omitted = the grammar's `#iterations` (0 when the grammar has none). */
+  iterations?: number;
+}
+
+/** Everything one run of the pipeline (parse → resolve → derive → interpret → mesh) produced. */
+export interface PlantBuild {
+  /** True when no diagnostic is an error; only then do `mesh` and `stats` describe a plant. */
+  ok: boolean;
+  diagnostics: Diagnostic[];
+  stats: PlantStats;
+  mesh: MeshBuffers;
+  /** The derived string, cut to its first {@link DERIVED_PREVIEW_CHARS} characters (then ending in "…"). */
+  derived: string;
+}
+
+/** How many characters of the derived string {@link buildPlant} keeps. */
+export const DERIVED_PREVIEW_CHARS = 10_000;

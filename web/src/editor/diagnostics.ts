@@ -1,0 +1,37 @@
+// Core diagnostics shown in the editor: exact ranges, a gutter marker, hover text.
+import { linter, lintGutter, type Diagnostic as EditorDiagnostic } from '@codemirror/lint';
+import type { Extension } from '@codemirror/state';
+import { byteOffsetToUtf16, type Diagnostic } from '../core';
+
+/**
+ * Converts the core's diagnostics for `text` (UTF-8 byte spans) into CodeMirror diagnostics
+ * (UTF-16 positions, clamped to the text). The code (`E0101`) becomes the diagnostic's source,
+ * shown before the message.
+ */
+export function toEditorDiagnostics(text: string, diagnostics: readonly Diagnostic[]): EditorDiagnostic[] {
+  return diagnostics.map((d) => {
+    const from = byteOffsetToUtf16(text, d.fromByte);
+    const to = Math.max(from, byteOffsetToUtf16(text, d.toByte));
+    return { from, to, severity: d.severity, message: d.message, source: d.code };
+  });
+}
+
+/** Returns the core's diagnostics for a grammar text (normally from a cached build). */
+export type Diagnose = (text: string) => readonly Diagnostic[];
+
+/** How long the editor waits after the last edit before showing diagnostics, in ms. */
+export const LINT_DELAY_MS = 400;
+
+/** The lint extensions: underline + tooltip at each span, and markers in a gutter. */
+export function grammarLinting(diagnose: Diagnose): Extension {
+  return [
+    linter(
+      (view) => {
+        const text = view.state.doc.toString();
+        return toEditorDiagnostics(text, diagnose(text));
+      },
+      { delay: LINT_DELAY_MS },
+    ),
+    lintGutter(),
+  ];
+}

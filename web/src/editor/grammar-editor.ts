@@ -1,0 +1,58 @@
+// The grammar editor: CodeMirror 6 with the grammar language and the core's diagnostics.
+import { basicSetup } from 'codemirror';
+import { EditorView } from '@codemirror/view';
+import { forceLinting } from '@codemirror/lint';
+import type { TurtleCommand } from '../core';
+import { grammarSupport } from './language';
+import { commandHover } from './hover';
+import { grammarLinting, type Diagnose } from './diagnostics';
+import { studioEditorTheme } from './theme';
+
+/** What {@link createGrammarEditor} needs. */
+export interface GrammarEditorOptions {
+  /** Element the editor is appended to. */
+  parent: HTMLElement;
+  /** Initial grammar text. */
+  doc: string;
+  /** Called with the new text after every change of the document. */
+  onChange: (text: string) => void;
+  /** Supplies the diagnostics shown for a text. */
+  diagnose: Diagnose;
+  /** The core's turtle command table: drives highlighting and hover docs. */
+  commands: readonly TurtleCommand[];
+}
+
+/** A grammar editor on the page. */
+export interface GrammarEditor {
+  /** The CodeMirror view (for focus, tests, and future commands). */
+  readonly view: EditorView;
+  /** The current grammar text. */
+  text(): string;
+  /** Re-runs the diagnostics now, e.g. after an option that changes the build changed. */
+  refreshDiagnostics(): void;
+}
+
+/** Creates the editor in `options.parent`. */
+export function createGrammarEditor(options: GrammarEditorOptions): GrammarEditor {
+  const view = new EditorView({
+    parent: options.parent,
+    doc: options.doc,
+    extensions: [
+      basicSetup,
+      grammarSupport(options.commands),
+      commandHover(options.commands),
+      grammarLinting(options.diagnose),
+      studioEditorTheme,
+      EditorView.lineWrapping,
+      EditorView.contentAttributes.of({ 'aria-label': 'L-system grammar' }),
+      EditorView.updateListener.of((update) => {
+        if (update.docChanged) options.onChange(update.state.doc.toString());
+      }),
+    ],
+  });
+  return {
+    view,
+    text: () => view.state.doc.toString(),
+    refreshDiagnostics: () => forceLinting(view),
+  };
+}

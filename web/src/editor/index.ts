@@ -1,0 +1,7 @@
+// The grammar editor (CodeMirror 6): highlighting of the grammar language, hover docs of turtle
+// commands, and the core's diagnostics.
+export { createGrammarEditor, type GrammarEditor, type GrammarEditorOptions } from './grammar-editor';
+export { grammarLanguage, grammarHighlightStyle, grammarTags, grammarSupport } from './language';
+export { commandHover, commandHoverText } from './hover';
+export { toEditorDiagnostics, grammarLinting, LINT_DELAY_MS, type Diagnose } from './diagnostics';
+export { studioEditorTheme } from './theme';

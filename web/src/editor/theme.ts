@@ -1,0 +1,39 @@
+// The editor's look: fills its pane, follows the page's colour scheme through CSS variables.
+import { EditorView } from '@codemirror/view';
+
+/** Editor theme; the colours live in style.css so `prefers-color-scheme` switches them. */
+export const studioEditorTheme = EditorView.theme({
+  '&': {
+    height: '100%',
+    fontSize: '14px',
+    color: 'var(--text)',
+    backgroundColor: 'var(--editor-bg)',
+  },
+  '.cm-scroller': {
+    fontFamily: 'ui-monospace, SFMono-Regular, Menlo, Consolas, "Liberation Mono", monospace',
+    lineHeight: '1.55',
+  },
+  '.cm-content': { caretColor: 'var(--text)' },
+  '.cm-cursor, .cm-dropCursor': { borderLeftColor: 'var(--text)' },
+  '.cm-gutters': {
+    backgroundColor: 'var(--editor-gutter)',
+    color: 'var(--muted)',
+    borderRight: '1px solid var(--border)',
+  },
+  '.cm-activeLine': { backgroundColor: 'var(--editor-active-line)' },
+  '.cm-activeLineGutter': { backgroundColor: 'var(--editor-active-line)' },
+  '&.cm-focused .cm-selectionBackground, .cm-selectionBackground, ::selection': {
+    backgroundColor: 'var(--editor-selection)',
+  },
+  '&.cm-focused': { outline: 'none' },
+  '.cm-command-doc': {
+    padding: '4px 8px',
+    fontFamily: 'system-ui, sans-serif',
+    fontSize: '13px',
+  },
+  '.cm-tooltip': {
+    backgroundColor: 'var(--panel)',
+    color: 'var(--text)',
+    border: '1px solid var(--border)',
+  },
+});

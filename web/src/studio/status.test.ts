@@ -1,0 +1,41 @@
+import { describe, expect, it } from 'vitest';
+import type { Diagnostic, PlantStats } from '../core';
+import { plural, reportErrors, reportPlant } from './status';
+
+const stats: PlantStats = {
+  modules: 12345,
+  segments: 1,
+  vertices: 1024,
+  triangles: 2000,
+  iterations: 7,
+  bounds: [
+    [0, 0, 0],
+    [1, 1, 1],
+  ],
+};
+
+function diagnostic(severity: Diagnostic['severity']): Diagnostic {
+  return { severity, code: 'E0000', message: 'm', fromByte: 0, toByte: 1, line: 1, column: 1 };
+}
+
+describe('status line', () => {
+  it('pluralises', () => {
+    expect(plural(1, 'error')).toBe('1 error');
+    expect(plural(0, 'error')).toBe('0 errors');
+    expect(plural(1500, 'module')).toBe('1,500 modules');
+  });
+
+  it('reports the sizes and build time of a plant', () => {
+    expect(reportPlant(stats, [], 3.14159)).toEqual({
+      state: 'ok',
+      text: '12,345 modules · 1 segment · 1,024 vertices · 2,000 triangles · 3.1 ms',
+    });
+    expect(reportPlant(stats, [diagnostic('warning')], 42.4).text).toMatch(/· 42 ms · 1 warning$/);
+  });
+
+  it('reports errors and whether the last good plant is still shown', () => {
+    const twoErrors = [diagnostic('error'), diagnostic('warning'), diagnostic('error')];
+    expect(reportErrors(twoErrors, true)).toEqual({ state: 'stale', text: '2 errors — showing last good plant' });
+    expect(reportErrors([diagnostic('error')], false)).toEqual({ state: 'error', text: '1 error — no plant yet' });
+  });
+});

@@ -1,0 +1,54 @@
+import { describe, expect, it } from 'vitest';
+import { Box3, PerspectiveCamera, Vector3 } from 'three';
+import { framePose } from './framing';
+
+/** True when every corner of `box` projects inside the camera's view. */
+function cornersVisible(box: Box3, camera: PerspectiveCamera): boolean {
+  for (const x of [box.min.x, box.max.x])
+    for (const y of [box.min.y, box.max.y])
+      for (const z of [box.min.z, box.max.z]) {
+        const p = new Vector3(x, y, z).project(camera);
+        if (Math.abs(p.x) > 1 || Math.abs(p.y) > 1 || p.z < -1 || p.z > 1) return false;
+      }
+  return true;
+}
+
+function cameraAt(box: Box3, aspect: number): PerspectiveCamera {
+  const camera = new PerspectiveCamera(40, aspect);
+  const pose = framePose(box, camera.fov, aspect);
+  camera.position.copy(pose.position);
+  camera.near = pose.near;
+  camera.far = pose.far;
+  camera.lookAt(pose.target);
+  camera.updateProjectionMatrix();
+  camera.updateMatrixWorld();
+  return camera;
+}
+
+describe('framePose', () => {
+  it('keeps a tall planar plant entirely in view, wide or narrow', () => {
+    const box = new Box3(new Vector3(-20, 0, -0.5), new Vector3(25, 90, 0.5));
+    for (const aspect of [0.5, 1, 2]) expect(cornersVisible(box, cameraAt(box, aspect))).toBe(true);
+  });
+
+  it('fills a good part of the view (not a speck)', () => {
+    const box = new Box3(new Vector3(-1, 0, -1), new Vector3(1, 2, 1));
+    const camera = cameraAt(box, 1);
+    const top = new Vector3(0, 2, 0).project(camera).y;
+    const bottom = new Vector3(0, 0, 0).project(camera).y;
+    expect(top - bottom).toBeGreaterThan(0.6);
+  });
+
+  it('looks at a plant in the YZ plane face-on, not edge-on', () => {
+    const box = new Box3(new Vector3(-0.1, 0, -5), new Vector3(0.1, 10, 5));
+    const pose = framePose(box, 40, 1);
+    const view = pose.position.clone().sub(pose.target).normalize();
+    expect(Math.abs(view.x)).toBeGreaterThan(0.9);
+  });
+
+  it('survives an empty box', () => {
+    const pose = framePose(new Box3(), 40, 1);
+    expect(Number.isFinite(pose.position.length())).toBe(true);
+    expect(pose.near).toBeGreaterThan(0);
+  });
+});

@@ -1,0 +1,159 @@
+// The 3D view: one plant mesh, lights, an orbiting camera; renders on demand.
+import {
+  Box3,
+  BufferGeometry,
+  DirectionalLight,
+  DoubleSide,
+  GridHelper,
+  HemisphereLight,
+  Mesh,
+  MeshStandardMaterial,
+  PerspectiveCamera,
+  Scene,
+  WebGLRenderer,
+} from 'three';
+import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+import type { MeshBuffers } from '../core';
+import { framePose } from './framing';
+import { scenePalette } from './palette';
+import { plantGeometry } from './plant-geometry';
+
+const DARK_SCHEME = '(prefers-color-scheme: dark)';
+
+/**
+ * Shows one plant at a time in a container element. The camera is framed on the first plant and
+ * on {@link PlantView.frame}, and otherwise left where the user put it. Every new plant replaces
+ * (and disposes) the previous geometry. The canvas keeps its drawing buffer so tests can read it.
+ */
+export class PlantView {
+  private readonly renderer: WebGLRenderer;
+  private readonly scene = new Scene();
+  private readonly camera = new PerspectiveCamera(40, 1, 0.01, 1000);
+  private readonly controls: OrbitControls;
+  private readonly material = new MeshStandardMaterial({
+    vertexColors: true,
+    side: DoubleSide,
+    roughness: 0.85,
+    metalness: 0,
+  });
+  private readonly plant = new Mesh(new BufferGeometry(), this.material);
+  private grid: GridHelper | undefined;
+  /** The camera has been framed on a plant with geometry; from then on it stays where the user puts it. */
+  private framed = false;
+  private renderQueued = false;
+  private readonly darkScheme = window.matchMedia(DARK_SCHEME);
+  private readonly resizeObserver: ResizeObserver;
+
+  constructor(private readonly container: HTMLElement) {
+    this.renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
+    this.renderer.domElement.setAttribute('aria-label', '3D view of the plant; drag to orbit, scroll to zoom');
+    container.append(this.renderer.domElement);
+
+    this.scene.add(new HemisphereLight(0xffffff, 0x6b5a48, 1.4));
+    const headlight = new DirectionalLight(0xffffff, 1.9);
+    headlight.position.set(0.6, 0.9, 0.4);
+    this.camera.add(headlight, headlight.target); // a light that follows the camera
+    headlight.target.position.set(0, 0, -1);
+    this.scene.add(this.camera, this.plant);
+
+    this.controls = new OrbitControls(this.camera, this.renderer.domElement);
+    this.controls.addEventListener('change', () => this.requestRender());
+
+    this.applyPalette();
+    this.darkScheme.addEventListener('change', this.applyPalette);
+    this.resizeObserver = new ResizeObserver(() => this.resize());
+    this.resizeObserver.observe(container);
+    this.resize();
+  }
+
+  /** Replaces the plant. The first plant with geometry is framed; later ones keep the camera. */
+  showPlant(mesh: MeshBuffers): void {
+    const old = this.plant.geometry;
+    this.plant.geometry = plantGeometry(mesh);
+    old.dispose();
+    if (!this.framed && mesh.indices.length > 0) {
+      this.framed = true;
+      this.frame();
+    }
+    this.requestRender();
+  }
+
+  /** Points the camera at the whole plant and fits the ground grid under it. */
+  frame(): void {
+    const box = this.plant.geometry.boundingBox ?? new Box3();
+    const pose = framePose(box, this.camera.fov, this.camera.aspect);
+    this.camera.position.copy(pose.position);
+    this.camera.near = pose.near;
+    this.camera.far = pose.far;
+    this.camera.updateProjectionMatrix();
+    this.controls.target.copy(pose.target);
+    this.controls.update();
+    this.placeGrid(box);
+    this.requestRender();
+  }
+
+  /** Marks the plant as out of date (the grammar has errors) or current. */
+  setStale(stale: boolean): void {
+    this.container.toggleAttribute('data-stale', stale);
+  }
+
+  /** Releases the GPU resources and listeners. */
+  dispose(): void {
+    this.resizeObserver.disconnect();
+    this.darkScheme.removeEventListener('change', this.applyPalette);
+    this.controls.dispose();
+    this.plant.geometry.dispose();
+    this.material.dispose();
+    this.removeGrid();
+    this.renderer.dispose();
+    this.renderer.domElement.remove();
+  }
+
+  private placeGrid(box: Box3): void {
+    this.removeGrid();
+    if (box.isEmpty()) return;
+    const palette = scenePalette(this.darkScheme.matches);
+    const span = Math.max(box.max.x - box.min.x, box.max.z - box.min.z, (box.max.y - box.min.y) * 0.6);
+    const step = 10 ** Math.floor(Math.log10(span / 4 || 1));
+    const size = Math.ceil((span * 1.6) / step) * step;
+    this.grid = new GridHelper(size, Math.round(size / step), palette.gridCenter, palette.grid);
+    this.grid.position.set((box.min.x + box.max.x) / 2, box.min.y, (box.min.z + box.max.z) / 2);
+    this.scene.add(this.grid);
+  }
+
+  private removeGrid(): void {
+    if (!this.grid) return;
+    this.scene.remove(this.grid);
+    this.grid.dispose();
+    this.grid = undefined;
+  }
+
+  private readonly applyPalette = (): void => {
+    const palette = scenePalette(this.darkScheme.matches);
+    this.scene.background = palette.background;
+    if (this.grid) {
+      const box = this.plant.geometry.boundingBox ?? new Box3();
+      this.placeGrid(box);
+    }
+    this.requestRender();
+  };
+
+  private resize(): void {
+    const width = Math.max(1, this.container.clientWidth);
+    const height = Math.max(1, this.container.clientHeight);
+    this.renderer.setSize(width, height, false);
+    this.camera.aspect = width / height;
+    this.camera.updateProjectionMatrix();
+    this.requestRender();
+  }
+
+  private requestRender(): void {
+    if (this.renderQueued) return;
+    this.renderQueued = true;
+    requestAnimationFrame(() => {
+      this.renderQueued = false;
+      this.renderer.render(this.scene, this.camera);
+    });
+  }
+}
