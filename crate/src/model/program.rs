@@ -121,6 +121,8 @@ pub struct Program {
     pub span: Span,
     /// True when the expression draws random numbers (its value differs between evaluations).
     pub random: bool,
+    /// The deepest the evaluation stack gets.
+    stack_depth: usize,
 }
 
 /// What names mean while compiling one expression.
@@ -171,13 +173,15 @@ impl Program {
             random: false,
         };
         c.expr(expr, 0)?;
-        let program = Program {
+        let mut program = Program {
             ops: c.ops,
             spans: c.spans,
             span: expr.span(),
             random: c.random,
+            stack_depth: 0,
         };
-        if program.max_stack() > MAX_STACK {
+        program.stack_depth = program.max_stack();
+        if program.stack_depth > MAX_STACK {
             return Err(Diagnostic::error(
                 "E0127",
                 expr.span(),
@@ -217,8 +221,24 @@ impl Program {
 
     /// Evaluates the expression. Division by zero, invalid arguments of random functions and
     /// results that are not finite numbers are errors, never silent NaNs.
+    #[inline]
     pub fn eval<R: rand::Rng + ?Sized>(&self, env: &mut Env<'_, R>) -> Result<f64, EvalError> {
-        let mut stack = [0.0f64; MAX_STACK];
+        if let [Op::Const(v)] = self.ops.as_slice() {
+            return Ok(*v);
+        }
+        // Most expressions need a few slots: a small stack is cheaper to set up.
+        if self.stack_depth <= 8 {
+            self.run::<8, R>(env)
+        } else {
+            self.run::<MAX_STACK, R>(env)
+        }
+    }
+
+    fn run<const N: usize, R: rand::Rng + ?Sized>(
+        &self,
+        env: &mut Env<'_, R>,
+    ) -> Result<f64, EvalError> {
+        let mut stack = [0.0f64; N];
         let mut sp = 0usize;
         let mut pc = 0usize;
         while pc < self.ops.len() {
@@ -512,6 +532,7 @@ impl Compiler<'_> {
                             spans: vec![span.clone(); 3],
                             span: span.clone(),
                             random: false,
+                            stack_depth: 2,
                         };
                         let mut env = Env {
                             slots: &[],
