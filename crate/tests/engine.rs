@@ -348,3 +348,49 @@ fn the_module_limit_applies_on_the_general_path_too() {
     assert_eq!(e.code, "E0400");
     assert!(e.message.contains("step 10"), "{}", e.message);
 }
+
+#[test]
+fn switch_rewrites_one_member_per_step_in_turn() {
+    let src = "axiom: @Switch(A B C)\nA -> AA\nB -> BB\nC -> CC";
+    assert_eq!(derived(src, 0), "@Switch(0)@<A@|B@|C@>");
+    assert_eq!(derived(src, 1), "@Switch(1)@<AA@|B@|C@>");
+    assert_eq!(derived(src, 2), "@Switch(2)@<AA@|BB@|C@>");
+    assert_eq!(derived(src, 3), "@Switch(0)@<AA@|BB@|CC@>");
+    assert_eq!(derived(src, 4), "@Switch(1)@<AAAA@|BB@|CC@>");
+}
+
+#[test]
+fn pendulum_rewrites_every_member_and_reverses_on_even_steps() {
+    let src = "axiom: F@Pendulum(A B [C])F\nA -> Ax\nB -> By\nC -> Cz";
+    assert_eq!(derived(src, 1), "F@Pendulum(0)@<Ax@|By@|[Cz]@>F");
+    assert_eq!(derived(src, 2), "F@Pendulum(1)@<[Czz]@|Byy@|Axx@>F");
+    assert_eq!(derived(src, 3), "F@Pendulum(0)@<Axxx@|Byyy@|[Czzz]@>F");
+}
+
+#[test]
+fn repeat_derives_its_string_k_times_within_one_step() {
+    let src = "axiom: @Repeat(3, A)F\nA -> AB";
+    assert_eq!(derived(src, 1), "@Repeat(3)@<ABBB@>F");
+    assert_eq!(derived(src, 2), "@Repeat(3)@<ABBBBBB@>F");
+    // A random count is drawn once, when the group is made: each group keeps its own pace.
+    let src = "#seed 4\naxiom: X\nX -> [@Repeat(uniform_int(0, 3), A)][@Repeat(uniform_int(0, 3), A)]\nA -> AB";
+    let s = derived(src, 3);
+    assert_eq!(s.matches("@Repeat(").count(), 2, "{s}");
+}
+
+#[test]
+fn groups_can_be_made_by_productions_and_the_turtle_reads_their_members() {
+    let src = "axiom: S\nS -> F@Switch(A B)\nA -> F\nB -> FF";
+    let m = model(src);
+    let d = derive(
+        &m,
+        &DeriveOptions {
+            steps: 3,
+            seed: None,
+        },
+    )
+    .expect("derives");
+    assert_eq!(d.string.to_text(&m.alphabet), "F@Switch(0)@<F@|FF@>");
+    let skeleton = meristem::turtle::interpret(&m, &d.string);
+    assert_eq!(skeleton.segments.len(), 4);
+}

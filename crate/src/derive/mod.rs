@@ -145,11 +145,14 @@ fn cut(model: &Model, s: &mut LString) {
                 let id = old.ids[i];
                 if id == model.open {
                     depth += 1;
-                } else if id == model.close {
+                } else if id == model.close || model.groups.is_marker(id) && id != model.groups.open
+                {
                     if depth == 0 {
                         break;
                     }
                     depth -= 1;
+                } else if id == model.groups.open {
+                    depth += 1;
                 }
                 i += 1;
             }
@@ -309,15 +312,52 @@ impl<'m, R: rand::Rng + ?Sized> Rewriter<'m, R> {
     fn axiom(&mut self) -> Result<LString, Diagnostic> {
         let mut s = LString::default();
         s.clear(self.model.parametric);
-        let mut params = Vec::new();
-        for m in &self.model.axiom {
-            params.clear();
-            for a in &m.args {
-                params.push(self.eval(a, 0, 0, true)?);
-            }
-            s.push(m.id, &params);
-        }
+        let model = self.model;
+        self.emit(&model.axiom, 0, 0, &mut s)?;
         Ok(s)
+    }
+
+    /// Appends successor modules, evaluating their arguments with the first `slots` slots bound;
+    /// a control module writes its header and its members between markers.
+    fn emit(
+        &mut self,
+        modules: &[SuccessorModule],
+        slots: usize,
+        num_it: u32,
+        dst: &mut LString,
+    ) -> Result<(), Diagnostic> {
+        let model = self.model;
+        for s in modules {
+            dst.ids.push(s.id);
+            if model.parametric {
+                if let Some(_members) = &s.group {
+                    // The header's one parameter: the Switch cursor, the Pendulum orientation
+                    // (0: as written), or the Repeat count, evaluated once when the group is made.
+                    let value = match s.args.first() {
+                        Some(k) => self.eval(k, slots, num_it, true)?.round().max(0.0),
+                        None => 0.0,
+                    };
+                    dst.params.push(value);
+                } else {
+                    for a in &s.args {
+                        let v = self.eval(a, slots, num_it, true)?;
+                        dst.params.push(v);
+                    }
+                }
+                dst.offsets.push(dst.params.len() as u32);
+            }
+            if let Some(members) = &s.group {
+                dst.push(model.groups.open, &[]);
+                for (k, member) in members.iter().enumerate() {
+                    if k > 0 {
+                        dst.push(model.groups.separator, &[]);
+                    }
+                    self.emit(member, slots, num_it, dst)?;
+                }
+                dst.push(model.groups.close, &[]);
+            }
+        }
+        Ok(())
     }
 
     /// Applies decomposition rules to `s` until nothing changes.
@@ -402,36 +442,78 @@ impl<'m, R: rand::Rng + ?Sized> Rewriter<'m, R> {
             context::bracket_partners(model, src, &mut self.partner);
         }
         dst.clear(model.parametric);
+        self.rewrite_range(rules, src, 0..src.len(), dst, num_it)
+    }
+
+    /// Rewrites modules `range` of `src` onto the end of `dst`. Control module groups act only in
+    /// the productions section; elsewhere their members are rewritten like any module.
+    fn rewrite_range(
+        &mut self,
+        rules: &RuleSet,
+        src: &LString,
+        range: std::ops::Range<usize>,
+        dst: &mut LString,
+        num_it: u32,
+    ) -> Result<bool, Diagnostic> {
+        let model = self.model;
+        let groups_act = model.has_groups && std::ptr::eq(rules, &model.productions);
         let mut changed = false;
-        for i in 0..src.len() {
+        let mut i = range.start;
+        while i < range.end {
             let id = src.ids[i];
-            let candidates = rules
-                .by_predecessor
-                .get(id.index())
-                .map_or(&[][..], Vec::as_slice);
-            if candidates.is_empty() {
-                dst.push(id, src.params_of(i));
+            if groups_act
+                && model.groups.is_group(id)
+                && src.ids.get(i + 1) == Some(&model.groups.open)
+            {
+                i = self.rewrite_group(rules, src, i, dst, num_it)?;
+                changed = true;
                 continue;
             }
-            self.vars.iter_mut().for_each(|v| *v = None);
-            let mut chosen = None;
-            for (k, &index) in candidates.iter().enumerate() {
-                let p = &rules.productions[index as usize];
-                if !self.matches(p, src, i, num_it)? {
-                    continue;
-                }
-                chosen = Some(match &p.weight {
-                    None => index,
-                    Some(_) => self.choose_weighted(rules, &candidates[k..], src, i, num_it)?,
-                });
-                break;
-            }
-            let Some(index) = chosen else {
-                dst.push(id, src.params_of(i));
-                continue;
-            };
-            changed = true;
+            changed |= self.rewrite_module(rules, src, i, dst, num_it)?;
+            i += 1;
+        }
+        Ok(changed)
+    }
+
+    /// Rewrites module `i` of `src` onto `dst`; returns whether a production applied.
+    fn rewrite_module(
+        &mut self,
+        rules: &RuleSet,
+        src: &LString,
+        i: usize,
+        dst: &mut LString,
+        num_it: u32,
+    ) -> Result<bool, Diagnostic> {
+        let model = self.model;
+        let id = src.ids[i];
+        let candidates = rules
+            .by_predecessor
+            .get(id.index())
+            .map_or(&[][..], Vec::as_slice);
+        if candidates.is_empty() {
+            dst.push(id, src.params_of(i));
+            return Ok(false);
+        }
+        self.vars.iter_mut().for_each(|v| *v = None);
+        let mut chosen = None;
+        for (k, &index) in candidates.iter().enumerate() {
             let p = &rules.productions[index as usize];
+            if !self.matches(p, src, i, num_it)? {
+                continue;
+            }
+            chosen = Some(match &p.weight {
+                None => index,
+                Some(_) => self.choose_weighted(rules, &candidates[k..], src, i, num_it)?,
+            });
+            break;
+        }
+        let Some(index) = chosen else {
+            dst.push(id, src.params_of(i));
+            return Ok(false);
+        };
+        let p = &rules.productions[index as usize];
+        if p.successor.iter().all(|s| s.group.is_none()) {
+            // The hot path: no control modules in this successor.
             for s in &p.successor {
                 dst.ids.push(s.id);
                 if model.parametric {
@@ -442,11 +524,113 @@ impl<'m, R: rand::Rng + ?Sized> Rewriter<'m, R> {
                     dst.offsets.push(dst.params.len() as u32);
                 }
             }
-            if dst.len() > model.settings.max_modules {
-                return Err(limit_error(model, num_it, dst.len()));
+        } else {
+            self.emit(&p.successor, p.slots, num_it, dst)?;
+        }
+        if dst.len() > model.settings.max_modules {
+            return Err(limit_error(model, num_it, dst.len()));
+        }
+        Ok(true)
+    }
+
+    /// Derives the control module group whose header is at `i` (LANGUAGE.md section 7) and returns
+    /// the index just after its closing marker.
+    fn rewrite_group(
+        &mut self,
+        rules: &RuleSet,
+        src: &LString,
+        i: usize,
+        dst: &mut LString,
+        num_it: u32,
+    ) -> Result<usize, Diagnostic> {
+        let g = self.model.groups;
+        // Members: the ranges between the group's own separators.
+        let mut members = Vec::new();
+        let mut depth = 0usize;
+        let mut start = i + 2;
+        let mut end = src.len();
+        for k in i + 2..src.len() {
+            let id = src.ids[k];
+            if id == g.open {
+                depth += 1;
+            } else if id == g.close {
+                if depth == 0 {
+                    end = k;
+                    break;
+                }
+                depth -= 1;
+            } else if id == g.separator && depth == 0 {
+                members.push(start..k);
+                start = k + 1;
             }
         }
-        Ok(changed)
+        members.push(start..end);
+        let id = src.ids[i];
+        let header = src.params_of(i).first().copied().unwrap_or(0.0);
+        let n = members.len();
+        let write_header = |dst: &mut LString, value: f64| dst.push(id, &[value]);
+        if id == g.switch {
+            let cursor = (header.max(0.0) as usize) % n;
+            write_header(dst, ((cursor + 1) % n) as f64);
+            dst.push(g.open, &[]);
+            for (k, member) in members.into_iter().enumerate() {
+                if k > 0 {
+                    dst.push(g.separator, &[]);
+                }
+                if k == cursor {
+                    self.rewrite_range(rules, src, member, dst, num_it)?;
+                } else {
+                    for j in member {
+                        dst.push(src.ids[j], src.params_of(j));
+                    }
+                }
+            }
+        } else if id == g.pendulum {
+            // As written on odd steps, reversed on even ones.
+            let reversed = if num_it.is_multiple_of(2) { 1.0 } else { 0.0 };
+            if reversed != header {
+                members.reverse();
+            }
+            write_header(dst, reversed);
+            dst.push(g.open, &[]);
+            for (k, member) in members.into_iter().enumerate() {
+                if k > 0 {
+                    dst.push(g.separator, &[]);
+                }
+                self.rewrite_range(rules, src, member, dst, num_it)?;
+            }
+        } else {
+            // @Repeat(k): the enclosed string is derived k times within this step.
+            let times = header.max(0.0) as u32;
+            write_header(dst, header);
+            dst.push(g.open, &[]);
+            let member = members.swap_remove(0);
+            let mut current = LString::default();
+            current.clear(src.is_parametric());
+            for j in member {
+                current.push(src.ids[j], src.params_of(j));
+            }
+            let mut next = LString::default();
+            let saved = std::mem::take(&mut self.partner);
+            for _ in 0..times {
+                if rules.has_contexts() {
+                    context::bracket_partners(self.model, &current, &mut self.partner);
+                }
+                next.clear(current.is_parametric());
+                let len = current.len();
+                self.rewrite_range(rules, &current, 0..len, &mut next, num_it)?;
+                std::mem::swap(&mut current, &mut next);
+                if current.len() > self.model.settings.max_modules {
+                    return Err(limit_error(self.model, num_it, current.len()));
+                }
+            }
+            self.partner = saved;
+            for j in 0..current.len() {
+                dst.push(current.ids[j], current.params_of(j));
+            }
+        }
+        dst.push(g.close, &[]);
+        Ok((end + 1).min(src.len()))
     }
 
     /// Draws among the matching weighted productions in `candidates` (the first of which matched

@@ -39,6 +39,33 @@ pub enum PatternItem {
 pub struct SuccessorModule {
     pub id: ModuleId,
     pub args: Vec<Program>,
+    /// The members of a control module (`@Switch`, `@Pendulum`, `@Repeat`).
+    pub group: Option<Vec<Vec<SuccessorModule>>>,
+}
+
+/// Green's control modules (LANGUAGE.md section 7) and how their groups sit in a string:
+/// `@Switch(cursor) @< A @| B @| C @>`, `@Pendulum(reversed) @< … @>`, `@Repeat(k) @< … @>`.
+/// The markers `@<`, `@|`, `@>` are internal names that no grammar can write.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct GroupIds {
+    pub switch: ModuleId,
+    pub pendulum: ModuleId,
+    pub repeat: ModuleId,
+    pub open: ModuleId,
+    pub separator: ModuleId,
+    pub close: ModuleId,
+}
+
+impl GroupIds {
+    /// True for the three control modules.
+    pub fn is_group(&self, id: ModuleId) -> bool {
+        id == self.switch || id == self.pendulum || id == self.repeat
+    }
+
+    /// True for the three markers.
+    pub fn is_marker(&self, id: ModuleId) -> bool {
+        id == self.open || id == self.separator || id == self.close
+    }
 }
 
 /// A production after resolution.
@@ -157,6 +184,9 @@ pub struct Model {
     pub open: ModuleId,
     pub close: ModuleId,
     pub cut: [ModuleId; 2],
+    pub groups: GroupIds,
+    /// True when any successor or the axiom holds a control module group.
+    pub has_groups: bool,
     /// True when any module of the axiom or a successor has parameters.
     pub parametric: bool,
     pub settings: Settings,

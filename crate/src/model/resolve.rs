@@ -27,6 +27,14 @@ pub fn resolve(file: &SourceFile) -> (Option<Model>, Vec<Diagnostic>) {
     let open = r.alphabet.intern("[");
     let close = r.alphabet.intern("]");
     let cut = [r.alphabet.intern("%"), r.alphabet.intern("@Prune")];
+    let groups = super::GroupIds {
+        switch: r.alphabet.intern("@Switch"),
+        pendulum: r.alphabet.intern("@Pendulum"),
+        repeat: r.alphabet.intern("@Repeat"),
+        open: r.alphabet.intern("@<"),
+        separator: r.alphabet.intern("@|"),
+        close: r.alphabet.intern("@>"),
+    };
     let mut settings = Settings::default();
     let mut homomorphism_depth = DEFAULT_MAX_DEPTH;
     let mut decomposition_depth = DEFAULT_MAX_DEPTH;
@@ -239,14 +247,23 @@ pub fn resolve(file: &SourceFile) -> (Option<Model>, Vec<Diagnostic>) {
     ignored[open.index()] = false;
     ignored[close.index()] = false;
 
-    let parametric = axiom.iter().any(|m| !m.args.is_empty())
-        || [&productions, &homomorphism, &decomposition]
+    for marker in [groups.open, groups.separator, groups.close] {
+        ignored[marker.index()] = true;
+    }
+
+    fn any_module(modules: &[SuccessorModule], f: &dyn Fn(&SuccessorModule) -> bool) -> bool {
+        modules
             .iter()
-            .any(|set| {
-                set.productions
-                    .iter()
-                    .any(|p| p.successor.iter().any(|s| !s.args.is_empty()))
-            });
+            .any(|m| f(m) || m.group.iter().flatten().any(|member| any_module(member, f)))
+    }
+    let everywhere = |f: &dyn Fn(&SuccessorModule) -> bool| {
+        any_module(&axiom, f)
+            || [&productions, &homomorphism, &decomposition]
+                .iter()
+                .any(|set| set.productions.iter().any(|p| any_module(&p.successor, f)))
+    };
+    let has_groups = everywhere(&|m| m.group.is_some());
+    let parametric = has_groups || everywhere(&|m| !m.args.is_empty());
 
     let model = Model {
         alphabet: r.alphabet,
@@ -260,6 +277,8 @@ pub fn resolve(file: &SourceFile) -> (Option<Model>, Vec<Diagnostic>) {
         open,
         close,
         cut,
+        groups,
+        has_groups,
         parametric,
         settings,
     };
@@ -367,7 +386,13 @@ impl Resolver {
                     .iter()
                     .filter_map(|e| self.compile(e, slots))
                     .collect();
-                SuccessorModule { id, args }
+                let group = m.group.as_ref().map(|members| {
+                    members
+                        .iter()
+                        .map(|member| self.successor(member, slots))
+                        .collect()
+                });
+                SuccessorModule { id, args, group }
             })
             .collect()
     }

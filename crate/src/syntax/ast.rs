@@ -38,7 +38,13 @@ pub struct ModuleSyntax {
     /// The name and its parameter list.
     pub span: Span,
     pub params: Vec<ExprSyntax>,
+    /// For Green's control modules `@Switch(A B C)`, `@Pendulum(A B C)` and `@Repeat(k, A B)`:
+    /// the members (each a module string). `@Repeat` has one member and its count in `params`.
+    pub group: Option<Vec<Vec<ModuleSyntax>>>,
 }
+
+/// The control modules whose parentheses hold modules rather than expressions.
+pub const GROUP_MODULES: [&str; 3] = ["@Switch", "@Pendulum", "@Repeat"];
 
 /// Which rule set a production belongs to (LANGUAGE.md section 3).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

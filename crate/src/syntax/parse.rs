@@ -1,7 +1,9 @@
 //! The line-oriented parser. Each line is a directive, an axiom, or a production; a line that
 //! cannot be read yields a diagnostic and parsing resumes at the next line.
 
-use super::ast::{Directive, ModuleSyntax, ProductionSyntax, Section, SourceFile, Span};
+use super::ast::{
+    Directive, ModuleSyntax, ProductionSyntax, Section, SourceFile, Span, GROUP_MODULES,
+};
 use super::comments::blank_comments;
 use super::expr::{parse_expression, split_arguments};
 use crate::diagnostics::Diagnostic;
@@ -560,14 +562,109 @@ impl ModuleScanner<'_> {
                 continue;
             }
             let len = self.name_length(rest);
+            let name = &rest[..len];
+            let after = &rest[len..];
+            let gap = after.len() - after.trim_start().len();
+            if GROUP_MODULES.contains(&name) && after[gap..].starts_with('(') {
+                let open = i + len + gap;
+                let Some(close) = matching_paren(&text[open..]) else {
+                    diagnostics.push(Diagnostic::error(
+                        "E0116",
+                        base + open..base + open + 1,
+                        "'(' is never closed by a ')'",
+                    ));
+                    return modules;
+                };
+                let module = self.group(
+                    name,
+                    &text[open + 1..open + close],
+                    base + open + 1,
+                    base + i,
+                    diagnostics,
+                );
+                modules.push(ModuleSyntax {
+                    span: base + i..base + open + close + 1,
+                    ..module
+                });
+                i = open + close + 1;
+                continue;
+            }
             modules.push(ModuleSyntax {
-                name: rest[..len].to_string(),
+                name: name.to_string(),
                 span: base + i..base + i + len,
                 params: Vec::new(),
+                group: None,
             });
             i += len;
         }
         modules
+    }
+
+    /// The inside of a control module's parentheses: `k, modules` for `@Repeat`, members for the
+    /// others (each module is a member; a `[…]` branch is one member).
+    fn group(
+        &self,
+        name: &str,
+        inner: &str,
+        at: usize,
+        start: usize,
+        diagnostics: &mut Vec<Diagnostic>,
+    ) -> ModuleSyntax {
+        let mut params = Vec::new();
+        let mut body = inner;
+        let mut body_at = at;
+        if name == "@Repeat" {
+            match find_top_level(inner, ',') {
+                Some(comma) => {
+                    match parse_expression(&inner[..comma], at) {
+                        Ok(e) => params.push(e),
+                        Err(d) => diagnostics.push(d),
+                    }
+                    body = &inner[comma + 1..];
+                    body_at = at + comma + 1;
+                }
+                None => diagnostics.push(Diagnostic::error(
+                    "E0130",
+                    at..at + inner.len(),
+                    "@Repeat needs a count and the modules to repeat: @Repeat(k, A B)",
+                )),
+            }
+        }
+        let modules = self.scan(body, body_at, diagnostics);
+        check_brackets(&modules, diagnostics);
+        let members = if name == "@Repeat" {
+            vec![modules]
+        } else {
+            let mut members: Vec<Vec<ModuleSyntax>> = Vec::new();
+            let mut depth = 0usize;
+            for m in modules {
+                if depth == 0 {
+                    members.push(Vec::new());
+                }
+                match m.name.as_str() {
+                    "[" => depth += 1,
+                    "]" => depth = depth.saturating_sub(1),
+                    _ => {}
+                }
+                if let Some(last) = members.last_mut() {
+                    last.push(m);
+                }
+            }
+            members
+        };
+        if members.iter().all(Vec::is_empty) || members.is_empty() {
+            diagnostics.push(Diagnostic::error(
+                "E0131",
+                start..at + inner.len() + 1,
+                format!("{name}(…) needs at least one module"),
+            ));
+        }
+        ModuleSyntax {
+            name: name.to_string(),
+            span: start..at + inner.len() + 1,
+            params,
+            group: Some(members),
+        }
     }
 
     /// Byte length of the module name at the start of `rest` (which is not empty).
