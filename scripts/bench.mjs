@@ -11,11 +11,11 @@ initSync({ module: readFileSync(new URL('../crate/pkg/meristem_bg.wasm', import.
 /** [gallery file, iterations] — keep in step with crate/benches/derive.rs. */
 const WORKLOADS = [
   ['abop-1.24d.lsys', 10],
-  ['abop-1.31a.lsys', 30],
-  ['abop-1.31a.lsys', 50],
-  ['abop-2.08a.lsys', 8],
-  ['abop-1.27.lsys', 8],
-  ['abop-eq-1.9.lsys', 16],
+  ['abop-1.31a-hogeweg.lsys', 30],
+  ['abop-1.31a-hogeweg.lsys', 50],
+  ['abop-2.08a-ternary-tree.lsys', 8],
+  ['abop-1.27-stochastic.lsys', 8],
+  ['abop-eq-1.9-proportions.lsys', 16],
 ];
 
 function median(values) {

@@ -69,26 +69,75 @@ fn render(source: &str) -> String {
     out.replace("-0.000000", "0.000000")
 }
 
+/// FNV-1a, 64 bits: a stable fingerprint of a whole derived string.
+fn fnv1a(text: &str) -> u64 {
+    text.bytes().fold(0xcbf2_9ce4_8422_2325, |h, b| {
+        (h ^ b as u64).wrapping_mul(0x0100_0000_01b3)
+    })
+}
+
+/// A gallery example's golden: the derived string's length, fingerprint and first characters, and
+/// the stats (so a change to any stage that alters a gallery plant shows up in review).
+fn render_example(source: &str) -> String {
+    let result = build(source, &BuildOptions::default());
+    let text = result.derived_text();
+    let head: String = text.chars().take(300).collect();
+    format!(
+        "diagnostics {}\nmodules {}\nfnv1a {:016x}\nhead {head}\nstats {}\n",
+        result.diagnostics.len(),
+        result.string.len(),
+        fnv1a(&text),
+        result.stats.to_json()
+    )
+}
+
 #[test]
 fn golden_files_match() {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/golden");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    check_dir(
+        &root.join("tests/golden"),
+        &root.join("tests/golden"),
+        render,
+        4,
+    );
+}
+
+#[test]
+fn gallery_goldens_match() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    check_dir(
+        &root.join("../public/examples"),
+        &root.join("tests/golden/gallery"),
+        render_example,
+        1,
+    );
+}
+
+/// Renders every `.lsys` in `inputs` and compares it with `NAME.golden` in `goldens`, or rewrites
+/// the golden under `UPDATE_GOLDEN=1`.
+fn check_dir(inputs: &Path, goldens: &Path, render: fn(&str) -> String, at_least: usize) {
     let update = std::env::var_os("UPDATE_GOLDEN").is_some();
-    let mut inputs: Vec<_> = std::fs::read_dir(&dir)
-        .expect("tests/golden exists")
+    let mut files: Vec<_> = std::fs::read_dir(inputs)
+        .expect("input folder exists")
         .filter_map(|e| e.ok().map(|e| e.path()))
         .filter(|p| p.extension().is_some_and(|x| x == "lsys"))
         .collect();
-    inputs.sort();
+    files.sort();
     assert!(
-        inputs.len() >= 4,
-        "expected golden inputs in {}",
-        dir.display()
+        files.len() >= at_least,
+        "expected at least {at_least} inputs in {}",
+        inputs.display()
     );
+    if update {
+        std::fs::create_dir_all(goldens).expect("create the golden folder");
+    }
     let mut failures = Vec::new();
-    for input in inputs {
+    for input in files {
         let source = std::fs::read_to_string(&input).expect("golden input is UTF-8");
         let actual = render(&source);
-        let golden = input.with_extension("golden");
+        let golden = goldens
+            .join(input.file_name().expect("a file name"))
+            .with_extension("golden");
         if update {
             std::fs::write(&golden, &actual).expect("write golden");
             continue;

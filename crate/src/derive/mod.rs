@@ -60,6 +60,9 @@ pub fn derive_with<R: rand::Rng + ?Sized>(
 ) -> Result<Derivation, Diagnostic> {
     let mut rewriter = Rewriter::new(model, steps, rng);
     let mut current = rewriter.axiom()?;
+    if current.len() > model.settings.max_modules {
+        return Err(limit_error(model, 0, current.len()));
+    }
     let mut next = LString::default();
     let has_cut = contains_cut(model);
     if !model.decomposition.is_empty() {
@@ -170,13 +173,17 @@ fn limit_error(model: &Model, step: u32, len: usize) -> Diagnostic {
         .iterations_span
         .clone()
         .unwrap_or_else(|| model.axiom_span.clone());
+    let when = if step == 0 {
+        "the axiom has".to_string()
+    } else {
+        format!("step {step} would make a string of")
+    };
     Diagnostic::error(
         "E0400",
         span,
         format!(
-            "step {step} would make a string of {len} modules or more, above the limit of {max}; \
-             use fewer iterations or raise the limit with '#max_modules {}'",
-            len.max(max.saturating_mul(2))
+            "{when} {len} modules or more, above the limit of {max}; \
+             use fewer iterations or raise the limit with '#max_modules N'"
         ),
     )
 }

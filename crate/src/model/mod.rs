@@ -41,6 +41,8 @@ pub struct SuccessorModule {
     pub args: Vec<Program>,
     /// The members of a control module (`@Switch`, `@Pendulum`, `@Repeat`).
     pub group: Option<Vec<Vec<SuccessorModule>>>,
+    /// Where the module is written.
+    pub span: Span,
 }
 
 /// Green's control modules (LANGUAGE.md section 7) and how their groups sit in a string:

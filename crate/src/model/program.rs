@@ -564,6 +564,20 @@ impl Compiler<'_> {
             }
             ExprSyntax::Call(name, name_span, args, span) => {
                 let Some((arity, f)) = Function::lookup(name) else {
+                    let is_value = name == "NumIt"
+                        || name == "MaxIt"
+                        || self.scope.slot(name).is_some()
+                        || self.scope.define(name).is_some()
+                        || self.scope.random_var(name).is_some();
+                    if is_value {
+                        return Err(Diagnostic::error(
+                            "E0506",
+                            name_span.clone(),
+                            format!(
+                                "'{name}' is a value, not a function: write it without parentheses"
+                            ),
+                        ));
+                    }
                     return Err(Diagnostic::error(
                         "E0501",
                         name_span.clone(),
@@ -609,8 +623,10 @@ impl Compiler<'_> {
                     "E0503",
                     span.clone(),
                     format!(
-                        "#define {name} refers to itself (through {})",
-                        self.expanding.join(" -> ")
+                        "#define {name} is defined in terms of itself: {} -> {name}",
+                        self.expanding
+                            [self.expanding.iter().position(|n| n == name).unwrap_or(0)..]
+                            .join(" -> ")
                     ),
                 ));
             }

@@ -137,9 +137,14 @@ pub fn resolve(file: &SourceFile) -> (Option<Model>, Vec<Diagnostic>) {
         }
     }
     if !ignore.is_empty() && consider.is_some() {
+        let last = file
+            .directives
+            .iter()
+            .rev()
+            .find(|d| d.name == "ignore" || d.name == "consider");
         r.diagnostics.push(Diagnostic::error(
             "E0206",
-            0..0,
+            last.map_or(0..0, |d| d.name_span.clone()),
             "#ignore and #consider cannot both be used: one says what to skip, the other what to keep",
         ));
     }
@@ -179,23 +184,61 @@ pub fn resolve(file: &SourceFile) -> (Option<Model>, Vec<Diagnostic>) {
     homomorphism.max_depth = homomorphism_depth;
     decomposition.max_depth = decomposition_depth;
 
-    // Arities: a pattern must match how the module is actually written somewhere.
+    // Arities. Where a module is written (axiom, successors), a module named by letters that is not
+    // a turtle command must always have the same number of parameters; and a pattern must match how
+    // the module is written somewhere.
     let mut written: HashMap<ModuleId, Vec<(usize, Span)>> = HashMap::new();
-    for m in axiom.iter().zip(axiom_syntax) {
-        written
-            .entry(m.0.id)
-            .or_default()
-            .push((m.0.args.len(), m.1.span.clone()));
-    }
-    for set in [&productions, &homomorphism, &decomposition] {
-        for p in &set.productions {
-            for s in &p.successor {
+    fn collect(modules: &[SuccessorModule], written: &mut HashMap<ModuleId, Vec<(usize, Span)>>) {
+        for m in modules {
+            if m.group.is_none() {
                 written
-                    .entry(s.id)
+                    .entry(m.id)
                     .or_default()
-                    .push((s.args.len(), p.span.clone()));
+                    .push((m.args.len(), m.span.clone()));
+            }
+            for member in m.group.iter().flatten() {
+                collect(member, written);
             }
         }
+    }
+    collect(&axiom, &mut written);
+    for set in [&productions, &homomorphism, &decomposition] {
+        for p in &set.productions {
+            collect(&p.successor, &mut written);
+        }
+    }
+    let mut inconsistent: Vec<(ModuleId, usize, usize, Span)> = Vec::new();
+    for (&id, uses) in &written {
+        let name = r.alphabet.name(id);
+        let checked = name.starts_with(|c: char| c.is_alphabetic())
+            && !crate::turtle::COMMANDS.iter().any(|c| c.name == name);
+        if !checked {
+            continue;
+        }
+        let first = uses
+            .iter()
+            .min_by_key(|(_, span)| span.start)
+            .map(|(a, _)| *a)
+            .unwrap_or(0);
+        if let Some((arity, span)) = uses
+            .iter()
+            .filter(|(a, _)| *a != first)
+            .min_by_key(|(_, span)| span.start)
+        {
+            inconsistent.push((id, *arity, first, span.clone()));
+        }
+    }
+    inconsistent.sort_by_key(|(_, _, _, span)| span.start);
+    for (id, arity, first, span) in inconsistent {
+        r.diagnostics.push(Diagnostic::error(
+            "E0514",
+            span,
+            format!(
+                "'{}' is written with {arity} parameter{} here but with {first} before; a module keeps one number of parameters",
+                r.alphabet.name(id),
+                if arity == 1 { "" } else { "s" },
+            ),
+        ));
     }
     for set in [&productions, &homomorphism, &decomposition] {
         for p in &set.productions {
@@ -392,7 +435,12 @@ impl Resolver {
                         .map(|member| self.successor(member, slots))
                         .collect()
                 });
-                SuccessorModule { id, args, group }
+                SuccessorModule {
+                    id,
+                    args,
+                    group,
+                    span: m.span.clone(),
+                }
             })
             .collect()
     }
@@ -478,40 +526,81 @@ impl Resolver {
         })
     }
 
+    /// The value of a directive's argument: a number or a constant expression (`#angle 360 / n`
+    /// with `#define n 7`); `None` with the reason when it is not one.
+    fn constant(&mut self, d: &Directive) -> Result<f64, String> {
+        if d.args.is_empty() {
+            return Err("nothing".into());
+        }
+        if let Ok(v) = d.args.parse::<f64>() {
+            return if v.is_finite() {
+                Ok(v)
+            } else {
+                Err(format!("'{}', which is too large", d.args))
+            };
+        }
+        let quoted = |message: String| format!("'{}' ({message})", d.args);
+        let expr = crate::syntax::parse_expression(&d.args, d.args_span.start)
+            .map_err(|e| quoted(e.message))?;
+        let scope = ScopeView {
+            slots: &Slots::default(),
+            defines: &self.defines,
+            random_names: &[],
+        };
+        let program = Program::compile(&expr, &scope).map_err(|e| quoted(e.message))?;
+        if program.random {
+            return Err(format!("'{}', which draws random numbers", d.args));
+        }
+        let mut rng = rand_pcg::Pcg64Mcg::new(0);
+        let mut env = super::Env {
+            slots: &[],
+            num_it: 0.0,
+            max_it: 0.0,
+            vars: &mut [],
+            fresh_vars: true,
+            var_programs: &[],
+            rng: &mut rng,
+        };
+        program.eval(&mut env).map_err(|e| e.message)
+    }
+
+    fn directive_error(&mut self, code: &'static str, d: &Directive, message: String) {
+        let span = if d.args.is_empty() {
+            d.name_span.clone()
+        } else {
+            d.args_span.clone()
+        };
+        self.diagnostics
+            .push(Diagnostic::error(code, span, message));
+    }
+
     fn number(&mut self, d: &Directive) -> Option<f64> {
-        match d.args.parse::<f64>() {
-            Ok(v) if v.is_finite() => Some(v),
-            _ => {
-                self.diagnostics.push(Diagnostic::error(
+        match self.constant(d) {
+            Ok(v) => Some(v),
+            Err(found) => {
+                self.directive_error(
                     "E0203",
-                    if d.args.is_empty() {
-                        d.name_span.clone()
-                    } else {
-                        d.args_span.clone()
-                    },
-                    format!("#{} needs a number, found '{}'", d.name, d.args),
-                ));
+                    d,
+                    format!("{} needs a number, found {found}", d.written),
+                );
                 None
             }
         }
     }
 
     fn whole(&mut self, d: &Directive, max: u64) -> Option<u64> {
-        match d.args.parse::<u64>() {
-            Ok(v) if v <= max => Some(v),
-            _ => {
-                self.diagnostics.push(Diagnostic::error(
+        match self.constant(d) {
+            Ok(v) if v >= 0.0 && v.fract() == 0.0 && v <= max as f64 => Some(v as u64),
+            result => {
+                let found = result.map_or_else(|e| e, |v| format!("{v}"));
+                self.directive_error(
                     "E0204",
-                    if d.args.is_empty() {
-                        d.name_span.clone()
-                    } else {
-                        d.args_span.clone()
-                    },
+                    d,
                     format!(
-                        "#{} needs a whole number from 0 to {max}, found '{}'",
-                        d.name, d.args
+                        "{} needs a whole number from 0 to {max}, found {found}",
+                        d.written
                     ),
-                ));
+                );
                 None
             }
         }

@@ -19,6 +19,8 @@ pub struct SourceFile {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Directive {
     pub name: String,
+    /// The directive as the user wrote it, for messages: `#angle`, `derivation length:`.
+    pub written: String,
     pub name_span: Span,
     /// The text after the name, trimmed.
     pub args: String,

@@ -11,7 +11,7 @@ pub fn blank_comments(source: &str) -> (String, Vec<Diagnostic>) {
     let mut diagnostics = Vec::new();
     let mut i = 0;
     while i < bytes.len() {
-        if bytes[i] == b'/' && bytes.get(i + 1) == Some(&b'/') {
+        if bytes[i] == b'/' && bytes.get(i + 1) == Some(&b'/') && starts_line_comment(bytes, i) {
             while i < bytes.len() && bytes[i] != b'\n' {
                 out[i] = b' ';
                 i += 1;
@@ -52,6 +52,14 @@ pub fn blank_comments(source: &str) -> (String, Vec<Diagnostic>) {
     (text, diagnostics)
 }
 
+/// A `//` starts a comment at the start of a line or after whitespace, unless it is part of a run
+/// of three or more slashes: ABOP writes five rolls as `/////` (`F -> S/////F`).
+fn starts_line_comment(bytes: &[u8], i: usize) -> bool {
+    let after_space = i == 0 || bytes[i - 1].is_ascii_whitespace();
+    let longer_run = bytes.get(i + 2) == Some(&b'/') || (i > 0 && bytes[i - 1] == b'/');
+    after_space && !longer_run
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -65,6 +73,20 @@ mod tests {
         assert_eq!(
             text.lines().collect::<Vec<_>>(),
             vec!["F          ", "    ", "    G"]
+        );
+    }
+
+    #[test]
+    fn runs_of_slashes_are_rolls_not_comments() {
+        let (text, _) =
+            blank_comments("F -> S/////F\nA -> [&FL!A] /////'[&FL!A] // note\nX -> F//F");
+        assert_eq!(
+            text.lines().collect::<Vec<_>>(),
+            [
+                "F -> S/////F",
+                "A -> [&FL!A] /////'[&FL!A]        ",
+                "X -> F//F"
+            ]
         );
     }
 

@@ -91,6 +91,7 @@ pub fn parse(source: &str) -> (SourceFile, Vec<Diagnostic>) {
                     let args_at = rest_start + (rest.len() - rest.trim_start().len());
                     file.directives.push(Directive {
                         name: name.into(),
+                        written: content[..rest_start - at].trim().to_string(),
                         name_span: at..rest_start,
                         args: trimmed.to_string(),
                         args_span: args_at..args_at + trimmed.len(),
@@ -179,6 +180,7 @@ fn parse_directive(
     let args_at = at + 1 + name_len + (rest.len() - rest.trim_start().len());
     let mut directive = Directive {
         name: name.to_string(),
+        written: format!("#{name}"),
         name_span: at..at + 1 + name_len,
         args: args.to_string(),
         args_span: args_at..args_at + args.len(),
@@ -226,8 +228,45 @@ fn parse_directive(
                 }
             }
         }
-        "ignore" | "consider" | "draw" => {
-            directive.modules = scanner.scan(args, args_at, diagnostics);
+        "ignore" | "consider" | "draw" | "module" => {
+            if args.is_empty() {
+                diagnostics.push(Diagnostic::error(
+                    "E0133",
+                    directive.name_span.clone(),
+                    format!("#{name} lists no modules"),
+                ));
+                return;
+            }
+            if name == "module" {
+                for (offset, word) in args
+                    .split_whitespace()
+                    .map(|w| (w.as_ptr() as usize - args.as_ptr() as usize, w))
+                {
+                    if !word.starts_with(|c: char| c.is_alphabetic())
+                        || !word.chars().all(|c| c.is_alphanumeric() || c == '_')
+                    {
+                        let at = args_at + offset;
+                        diagnostics.push(Diagnostic::error(
+                            "E0134",
+                            at..at + word.len(),
+                            format!("'{word}' cannot be a module name: names are a letter followed by letters, digits or '_'"),
+                        ));
+                    }
+                }
+            } else {
+                directive.modules = scanner.scan(args, args_at, diagnostics);
+                if let Some(m) = directive
+                    .modules
+                    .iter()
+                    .find(|m| !m.params.is_empty() || m.group.is_some())
+                {
+                    diagnostics.push(Diagnostic::error(
+                        "E0135",
+                        m.span.clone(),
+                        format!("#{name} lists module names, without parameters"),
+                    ));
+                }
+            }
         }
         _ => {}
     }
@@ -383,6 +422,14 @@ fn parse_production(
 
     let rhs = &content[arrow_end..];
     let mut rhs_at = at + arrow_end;
+    if let Some((second, end)) = find_arrow(rhs) {
+        diagnostics.push(Diagnostic::error(
+            "E0136",
+            rhs_at + second..rhs_at + end,
+            "a second arrow: a production has one predecessor and one successor",
+        ));
+        return None;
+    }
     let mut trimmed = rhs.trim();
     rhs_at += rhs.len() - rhs.trim_start().len();
     // A weight: a parenthesised expression right after the arrow.
@@ -415,10 +462,11 @@ fn parse_production(
         check_brackets(&modules, diagnostics);
         modules
     };
-    if diagnostics.len() > errors_before
-        && diagnostics[errors_before..]
-            .iter()
-            .any(|d| d.code == "E0115")
+    // A line with an error yields no production: half a production would only cause more
+    // (misleading) diagnostics later.
+    if diagnostics[errors_before..]
+        .iter()
+        .any(|d| d.severity == crate::diagnostics::Severity::Error)
     {
         return None;
     }
@@ -768,7 +816,11 @@ mod tests {
     #[test]
     fn a_bad_line_does_not_stop_the_parser() {
         let (file, diags) = parse("axiom: X\nX F\nX -> F[\nF -> FF\n");
-        assert_eq!(file.productions.len(), 2);
+        assert_eq!(
+            file.productions.len(),
+            1,
+            "the line with an error yields no production"
+        );
         assert_eq!(
             diags.iter().map(|d| d.code).collect::<Vec<_>>(),
             ["E0105", "E0109"]
