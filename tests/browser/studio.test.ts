@@ -100,7 +100,7 @@ describe('the studio', () => {
     await page.mouse.move(box!.x + box!.width / 2, box!.y + box!.height / 2);
     const doc = page.locator('.cm-tooltip .cm-command-doc');
     await doc.waitFor({ state: 'visible' });
-    expect(await doc.textContent()).toMatch(/^F — .*draw/);
+    expect(await doc.textContent()).toMatch(/^F(\(l = #step\))? — .*draw/);
     await page.mouse.move(900, 20);
     await doc.waitFor({ state: 'hidden' });
     expect(problems).toEqual([]);
