@@ -10,11 +10,11 @@ use std::hint::black_box;
 /// (gallery file, iterations) — the same list as scripts/bench.mjs.
 const WORKLOADS: &[(&str, u32)] = &[
     ("abop-1.24d.lsys", 10),
-    ("abop-1.31a.lsys", 30),
-    ("abop-1.31a.lsys", 50),
-    ("abop-2.08a.lsys", 8),
-    ("abop-1.27.lsys", 8),
-    ("abop-eq-1.9.lsys", 16),
+    ("abop-1.31a-hogeweg.lsys", 30),
+    ("abop-1.31a-hogeweg.lsys", 50),
+    ("abop-2.08a-ternary-tree.lsys", 8),
+    ("abop-1.27-stochastic.lsys", 8),
+    ("abop-eq-1.9-proportions.lsys", 16),
 ];
 
 fn model(file: &str) -> Model {
