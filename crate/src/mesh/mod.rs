@@ -6,6 +6,11 @@
 //! frames the plant: `#width 1` draws thin but visible branches at any size, and `!(10)` a trunk
 //! ten times thicker.
 
+pub mod curve;
+pub mod polygon;
+pub mod sphere;
+pub mod surfaces;
+
 use crate::turtle::Skeleton;
 use glam::DVec3;
 
