@@ -37,7 +37,17 @@ pub struct Derivation {
     pub interpreted: Option<LString>,
     /// Warnings met on the way (a homomorphism that hit its maximum depth).
     pub warnings: Vec<Diagnostic>,
+    /// Provenance, filled by [`derive_tracked`] only: for each module of `string`, the index in
+    /// `model.productions` of the production that made it in the last step ([`NOT_REWRITTEN`]
+    /// when it was copied, or comes from the axiom).
+    pub origin: Vec<u32>,
+    /// Filled by [`derive_tracked`] when there is a homomorphism: for each module of the string
+    /// the turtle reads, the index of the module of `string` it comes from.
+    pub turtle_origin: Vec<u32>,
 }
+
+/// In [`Derivation::origin`]: no production made this module in the last step.
+pub const NOT_REWRITTEN: u32 = u32::MAX;
 
 impl Derivation {
     /// The string the turtle reads.
@@ -58,6 +68,74 @@ pub fn derive_with<R: rand::Rng + ?Sized>(
     steps: u32,
     rng: &mut R,
 ) -> Result<Derivation, Diagnostic> {
+    run(model, steps, rng, false, None)
+}
+
+/// Like [`derive`], and also records provenance ([`Derivation::origin`] and
+/// [`Derivation::turtle_origin`]) for the studio's highlighting and picking. Only the last step
+/// and what follows it are tracked, so the cost is one pass's worth of bookkeeping.
+///
+/// `queries`, when the grammar has query modules (`?P ?H ?U ?L`), interprets a string and returns
+/// the value each query module reads (module index, x, y, z): it is called on the axiom and after
+/// every step, and the values become the query modules' parameters (environmental L-systems). The
+/// pipeline passes the turtle here; derive itself knows nothing of geometry.
+pub fn derive_tracked(
+    model: &Model,
+    options: &DeriveOptions,
+    queries: Option<&mut QueryFn<'_>>,
+) -> Result<Derivation, Diagnostic> {
+    let mut rng = Generator::seed_from_u64(options.seed.unwrap_or(model.settings.seed));
+    run(model, options.steps, &mut rng, true, queries)
+}
+
+/// Interprets a string and returns the values its query modules read: (module index, [x, y, z]).
+pub type QueryFn<'a> = dyn FnMut(&LString) -> Vec<(u32, [f64; 3])> + 'a;
+
+/// Sets each query module's three parameters to the value the turtle reads there.
+fn apply_queries(model: &Model, s: &mut LString, queries: &mut QueryFn<'_>) {
+    let names = ["?P", "?H", "?U", "?L"];
+    if !names
+        .iter()
+        .any(|n| model.alphabet.get(n).is_some_and(|id| s.ids.contains(&id)))
+        || !s.is_parametric()
+    {
+        return;
+    }
+    for (module, value) in queries(s) {
+        let i = module as usize;
+        if i < s.len() && s.params_of(i).len() == 3 {
+            let at = s.offsets[i] as usize;
+            s.params[at..at + 3].copy_from_slice(&value);
+        }
+    }
+}
+
+/// Where each module written by a tracked pass comes from.
+#[derive(Default)]
+struct Tracker {
+    /// For each module written, the index of the source module it was rewritten from.
+    parent: Vec<u32>,
+    /// For each module written, the production applied ([`NOT_REWRITTEN`] for a copy).
+    origin: Vec<u32>,
+}
+
+impl Tracker {
+    /// Annotates every module written since the last call.
+    fn fill(&mut self, len: usize, parent: usize, origin: u32) {
+        while self.parent.len() < len {
+            self.parent.push(parent as u32);
+            self.origin.push(origin);
+        }
+    }
+}
+
+fn run<R: rand::Rng + ?Sized>(
+    model: &Model,
+    steps: u32,
+    rng: &mut R,
+    track: bool,
+    mut queries: Option<&mut QueryFn<'_>>,
+) -> Result<Derivation, Diagnostic> {
     let mut rewriter = Rewriter::new(model, steps, rng);
     let mut current = rewriter.axiom()?;
     if current.len() > model.settings.max_modules {
@@ -68,31 +146,70 @@ pub fn derive_with<R: rand::Rng + ?Sized>(
     if !model.decomposition.is_empty() {
         rewriter.decompose(&mut current, &mut next, 0)?;
     }
+    if let Some(q) = queries.as_deref_mut() {
+        apply_queries(model, &mut current, q);
+    }
     let d0l = D0lTable::new(model);
+    let mut origin: Vec<u32> = Vec::new();
     for step in 1..=steps {
+        let tracked = track && step == steps;
+        if tracked {
+            rewriter.tracker = Some(Tracker::default());
+        }
         match &d0l {
+            Some(table) if tracked => {
+                origin = table.step_tracked(model, &current, &mut next, step)?
+            }
             Some(table) => table.step(model, &current, &mut next, step)?,
             None => {
                 rewriter.pass(&model.productions, &current, &mut next, step)?;
+                if let Some(t) = rewriter.tracker.take() {
+                    origin = t.origin;
+                }
             }
         }
         std::mem::swap(&mut current, &mut next);
         if !model.decomposition.is_empty() {
-            rewriter.decompose(&mut current, &mut next, step)?;
+            if tracked {
+                rewriter.tracker = Some(Tracker::default());
+            }
+            let parents = rewriter.decompose(&mut current, &mut next, step)?;
+            if let Some(parents) = parents {
+                origin = parents.iter().map(|&p| origin[p as usize]).collect();
+            }
+            rewriter.tracker = None;
         }
         if has_cut {
-            cut(model, &mut current);
+            let kept = cut(model, &mut current);
+            if tracked {
+                if let Some(kept) = kept {
+                    origin = kept.iter().map(|&k| origin[k as usize]).collect();
+                }
+            }
         }
+        if let Some(q) = queries.as_deref_mut() {
+            apply_queries(model, &mut current, q);
+        }
+    }
+    if track && origin.len() != current.len() {
+        origin = vec![NOT_REWRITTEN; current.len()];
     }
     let mut derivation = Derivation {
         string: current,
         interpreted: None,
         warnings: Vec::new(),
+        origin,
+        turtle_origin: Vec::new(),
     };
     if !model.homomorphism.is_empty() {
         let mut shown = derivation.string.clone();
         let rules = &model.homomorphism;
         let mut depth = 0;
+        let mut turtle_origin: Vec<u32> = if track {
+            (0..shown.len() as u32).collect()
+        } else {
+            Vec::new()
+        };
         loop {
             if depth == rules.max_depth {
                 let span = rules.productions.first().map_or(0..0, |p| p.span.clone());
@@ -107,13 +224,26 @@ pub fn derive_with<R: rand::Rng + ?Sized>(
                 ));
                 break;
             }
-            if !rewriter.pass(rules, &shown, &mut next, steps)? {
+            if track {
+                rewriter.tracker = Some(Tracker::default());
+            }
+            let changed = rewriter.pass(rules, &shown, &mut next, steps)?;
+            let tracker = rewriter.tracker.take();
+            if !changed {
                 break;
+            }
+            if let Some(t) = tracker {
+                turtle_origin = t
+                    .parent
+                    .iter()
+                    .map(|&p| turtle_origin[p as usize])
+                    .collect();
             }
             std::mem::swap(&mut shown, &mut next);
             depth += 1;
         }
         derivation.interpreted = Some(shown);
+        derivation.turtle_origin = turtle_origin;
     }
     Ok(derivation)
 }
@@ -132,12 +262,14 @@ fn contains_cut(model: &Model) -> bool {
 
 /// Removes each cut module and the rest of its branch (up to, not including, the `]` that closes
 /// the branch, or to the end of the string on the main axis).
-fn cut(model: &Model, s: &mut LString) {
+/// Returns the indices of the kept modules in the old string, when anything was cut.
+fn cut(model: &Model, s: &mut LString) -> Option<Vec<u32>> {
     if !s.ids.iter().any(|id| model.cut.contains(id)) {
-        return;
+        return None;
     }
     let old = std::mem::take(s);
     s.clear(old.is_parametric());
+    let mut kept = Vec::new();
     let mut i = 0;
     while i < old.len() {
         let id = old.ids[i];
@@ -162,8 +294,10 @@ fn cut(model: &Model, s: &mut LString) {
             continue;
         }
         s.push(id, old.params_of(i));
+        kept.push(i as u32);
         i += 1;
     }
+    Some(kept)
 }
 
 fn limit_error(model: &Model, step: u32, len: usize) -> Diagnostic {
@@ -192,6 +326,8 @@ fn limit_error(model: &Model, step: u32, len: usize) -> Diagnostic {
 struct D0lTable {
     successors: Vec<ModuleId>,
     rule_of: Vec<Option<(u32, u32)>>,
+    /// For each module id, the production that rewrites it ([`NOT_REWRITTEN`] if none).
+    production_of: Vec<u32>,
 }
 
 impl D0lTable {
@@ -217,10 +353,38 @@ impl D0lTable {
                 })
             })
             .collect();
+        let production_of = rules
+            .by_predecessor
+            .iter()
+            .map(|c| c.first().copied().unwrap_or(NOT_REWRITTEN))
+            .collect();
         Some(D0lTable {
             successors,
             rule_of,
+            production_of,
         })
+    }
+
+    /// [`D0lTable::step`], returning for each written module the production that made it.
+    fn step_tracked(
+        &self,
+        model: &Model,
+        src: &LString,
+        dst: &mut LString,
+        step: u32,
+    ) -> Result<Vec<u32>, Diagnostic> {
+        self.step(model, src, dst, step)?;
+        let mut origin = Vec::with_capacity(dst.len());
+        for &id in &src.ids {
+            match self.rule_of[id.index()] {
+                Some((start, end)) => {
+                    let production = self.production_of[id.index()];
+                    origin.extend(std::iter::repeat_n(production, (end - start) as usize));
+                }
+                None => origin.push(NOT_REWRITTEN),
+            }
+        }
+        Ok(origin)
     }
 
     fn step(
@@ -266,6 +430,8 @@ struct Rewriter<'m, R: rand::Rng + ?Sized> {
     partner: Vec<u32>,
     /// Matching weighted productions of the current module: (production, weight, bound slots).
     weighted: Vec<(u32, f64, Vec<f64>)>,
+    /// Provenance of the pass being run, when tracking.
+    tracker: Option<Tracker>,
 }
 
 impl<'m, R: rand::Rng + ?Sized> Rewriter<'m, R> {
@@ -292,6 +458,7 @@ impl<'m, R: rand::Rng + ?Sized> Rewriter<'m, R> {
                 .collect(),
             partner: Vec::new(),
             weighted: Vec::new(),
+            tracker: None,
         }
     }
 
@@ -368,17 +535,24 @@ impl<'m, R: rand::Rng + ?Sized> Rewriter<'m, R> {
     }
 
     /// Applies decomposition rules to `s` until nothing changes.
+    /// Applies decomposition rules to `s` until nothing changes. When tracking, returns for each
+    /// module of the result the index of the module of the input it comes from.
     fn decompose(
         &mut self,
         s: &mut LString,
         scratch: &mut LString,
         step: u32,
-    ) -> Result<(), Diagnostic> {
+    ) -> Result<Option<Vec<u32>>, Diagnostic> {
         let model = self.model;
         let rules = &model.decomposition;
+        let mut parents: Option<Vec<u32>> =
+            self.tracker.as_ref().map(|_| (0..s.len() as u32).collect());
         for _ in 0..rules.max_depth {
             if !self.pass(rules, s, scratch, step)? {
-                return Ok(());
+                return Ok(parents);
+            }
+            if let (Some(parents), Some(t)) = (&mut parents, &self.tracker) {
+                *parents = t.parent.iter().map(|&p| parents[p as usize]).collect();
             }
             std::mem::swap(s, scratch);
         }
@@ -395,7 +569,7 @@ impl<'m, R: rand::Rng + ?Sized> Rewriter<'m, R> {
                 ),
             ));
         }
-        Ok(())
+        Ok(parents)
     }
 
     /// Tests production `p` on module `i` of `src`, binding its slots.
@@ -449,6 +623,10 @@ impl<'m, R: rand::Rng + ?Sized> Rewriter<'m, R> {
             context::bracket_partners(model, src, &mut self.partner);
         }
         dst.clear(model.parametric);
+        if let Some(t) = &mut self.tracker {
+            t.parent.clear();
+            t.origin.clear();
+        }
         self.rewrite_range(rules, src, 0..src.len(), dst, num_it)
     }
 
@@ -473,16 +651,26 @@ impl<'m, R: rand::Rng + ?Sized> Rewriter<'m, R> {
                 && src.ids.get(i + 1) == Some(&model.groups.open)
             {
                 i = self.rewrite_group(rules, src, i, dst, num_it)?;
+                self.note(dst.len(), i, NOT_REWRITTEN);
                 changed = true;
                 continue;
             }
-            changed |= self.rewrite_module(rules, src, i, dst, num_it)?;
+            let applied = self.rewrite_module(rules, src, i, dst, num_it)?;
+            self.note(dst.len(), i, applied.unwrap_or(NOT_REWRITTEN));
+            changed |= applied.is_some();
             i += 1;
         }
         Ok(changed)
     }
 
-    /// Rewrites module `i` of `src` onto `dst`; returns whether a production applied.
+    /// When tracking, annotates the modules written since the last note as coming from `parent`.
+    fn note(&mut self, len: usize, parent: usize, origin: u32) {
+        if let Some(t) = &mut self.tracker {
+            t.fill(len, parent, origin);
+        }
+    }
+
+    /// Rewrites module `i` of `src` onto `dst`; returns the production applied, if any.
     fn rewrite_module(
         &mut self,
         rules: &RuleSet,
@@ -490,7 +678,7 @@ impl<'m, R: rand::Rng + ?Sized> Rewriter<'m, R> {
         i: usize,
         dst: &mut LString,
         num_it: u32,
-    ) -> Result<bool, Diagnostic> {
+    ) -> Result<Option<u32>, Diagnostic> {
         let model = self.model;
         let id = src.ids[i];
         let candidates = rules
@@ -499,7 +687,7 @@ impl<'m, R: rand::Rng + ?Sized> Rewriter<'m, R> {
             .map_or(&[][..], Vec::as_slice);
         if candidates.is_empty() {
             dst.push(id, src.params_of(i));
-            return Ok(false);
+            return Ok(None);
         }
         self.vars.iter_mut().for_each(|v| *v = None);
         let mut chosen = None;
@@ -516,7 +704,7 @@ impl<'m, R: rand::Rng + ?Sized> Rewriter<'m, R> {
         }
         let Some(index) = chosen else {
             dst.push(id, src.params_of(i));
-            return Ok(false);
+            return Ok(None);
         };
         let p = &rules.productions[index as usize];
         if p.successor.iter().all(|s| s.group.is_none()) {
@@ -537,7 +725,7 @@ impl<'m, R: rand::Rng + ?Sized> Rewriter<'m, R> {
         if dst.len() > model.settings.max_modules {
             return Err(limit_error(model, num_it, dst.len()));
         }
-        Ok(true)
+        Ok(Some(index))
     }
 
     /// Derives the control module group whose header is at `i` (LANGUAGE.md section 7) and returns
@@ -580,15 +768,18 @@ impl<'m, R: rand::Rng + ?Sized> Rewriter<'m, R> {
             let cursor = (header.max(0.0) as usize) % n;
             write_header(dst, ((cursor + 1) % n) as f64);
             dst.push(g.open, &[]);
+            self.note(dst.len(), i, NOT_REWRITTEN);
             for (k, member) in members.into_iter().enumerate() {
                 if k > 0 {
                     dst.push(g.separator, &[]);
+                    self.note(dst.len(), i, NOT_REWRITTEN);
                 }
                 if k == cursor {
                     self.rewrite_range(rules, src, member, dst, num_it)?;
                 } else {
                     for j in member {
                         dst.push(src.ids[j], src.params_of(j));
+                        self.note(dst.len(), j, NOT_REWRITTEN);
                     }
                 }
             }
@@ -600,9 +791,11 @@ impl<'m, R: rand::Rng + ?Sized> Rewriter<'m, R> {
             }
             write_header(dst, reversed);
             dst.push(g.open, &[]);
+            self.note(dst.len(), i, NOT_REWRITTEN);
             for (k, member) in members.into_iter().enumerate() {
                 if k > 0 {
                     dst.push(g.separator, &[]);
+                    self.note(dst.len(), i, NOT_REWRITTEN);
                 }
                 self.rewrite_range(rules, src, member, dst, num_it)?;
             }
@@ -611,6 +804,9 @@ impl<'m, R: rand::Rng + ?Sized> Rewriter<'m, R> {
             let times = header.max(0.0) as u32;
             write_header(dst, header);
             dst.push(g.open, &[]);
+            self.note(dst.len(), i, NOT_REWRITTEN);
+            // The k inner derivations are not tracked: their modules count as the group's.
+            let tracker = self.tracker.take();
             let member = members.swap_remove(0);
             let mut current = LString::default();
             current.clear(src.is_parametric());
@@ -632,9 +828,11 @@ impl<'m, R: rand::Rng + ?Sized> Rewriter<'m, R> {
                 }
             }
             self.partner = saved;
+            self.tracker = tracker;
             for j in 0..current.len() {
                 dst.push(current.ids[j], current.params_of(j));
             }
+            self.note(dst.len(), i, NOT_REWRITTEN);
         }
         dst.push(g.close, &[]);
         Ok((end + 1).min(src.len()))
