@@ -30,6 +30,9 @@ pub struct Build {
     pub string: LString,
     /// The string the turtle read, when homomorphism rules made it differ from `string`.
     pub interpreted: Option<LString>,
+    /// For each module of `string`, the production that made it in the last step
+    /// (`derive::NOT_REWRITTEN` when copied).
+    pub origin: Vec<u32>,
     pub skeleton: Skeleton,
     pub mesh: MeshBuffers,
     pub stats: Stats,
@@ -83,29 +86,48 @@ pub fn build(source: &str, options: &BuildOptions) -> Build {
         result.model = Some(model);
         return result;
     }
-    match derive::derive(
+    let mut queries = |s: &LString| -> Vec<(u32, [f64; 3])> {
+        turtle::interpret(&model, s)
+            .queries
+            .into_iter()
+            .map(|q| (q.module, q.value))
+            .collect()
+    };
+    let turtle_origin = match derive::derive_tracked(
         &model,
         &DeriveOptions {
             steps,
             seed: options.seed,
         },
+        Some(&mut queries),
     ) {
         Ok(derivation) => {
             result.diagnostics.extend(derivation.warnings);
             result.string = derivation.string;
             result.interpreted = derivation.interpreted;
+            result.origin = derivation.origin;
+            derivation.turtle_origin
         }
         Err(diagnostic) => {
             result.diagnostics.push(diagnostic);
             result.model = Some(model);
             return result;
         }
-    }
+    };
     result.skeleton = turtle::interpret(
         &model,
         result.interpreted.as_ref().unwrap_or(&result.string),
     );
     result.mesh = mesh::build_mesh(&result.skeleton, &options.mesh);
+    // Provenance ranges name modules of the derived string, not of the homomorphism's output.
+    if !turtle_origin.is_empty() {
+        for pair in result.mesh.ranges.chunks_exact_mut(2) {
+            pair[1] = turtle_origin
+                .get(pair[1] as usize)
+                .copied()
+                .unwrap_or(pair[1]);
+        }
+    }
     result.stats = Stats::new(
         result.string.len(),
         result.skeleton.segments.len(),

@@ -79,6 +79,29 @@ impl Build {
         self.inner.mesh.indices.clone()
     }
 
+    /// Provenance: (first triangle, module) pairs, sorted (layout: `MeshBuffers::ranges`); the
+    /// module is an index into the derived string.
+    pub fn ranges(&self) -> Vec<u32> {
+        self.inner.mesh.ranges.clone()
+    }
+
+    /// For each module of the derived string, the index of the production that made it in the
+    /// last step, or 4294967295 (u32::MAX) when it was copied.
+    pub fn origins(&self) -> Vec<u32> {
+        self.inner.origin.clone()
+    }
+
+    /// Line ends (x, y, z each) when the model was too large to mesh; empty otherwise.
+    pub fn lines(&self) -> Vec<f32> {
+        self.inner.mesh.lines.clone()
+    }
+
+    /// A colour (r, g, b) per line end.
+    #[wasm_bindgen(js_name = lineColors)]
+    pub fn line_colors(&self) -> Vec<f32> {
+        self.inner.mesh.line_colors.clone()
+    }
+
     /// The derived string, cut after `max_chars` characters with `…` appended when longer.
     pub fn derived(&self, max_chars: usize) -> String {
         match &self.inner.model {

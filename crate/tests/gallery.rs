@@ -89,3 +89,79 @@ fn abop_1_24d_has_the_known_size() {
         "the issue's reference size of 1.24d at n = 10"
     );
 }
+
+fn example(name: &str) -> String {
+    let (_, text) = examples()
+        .into_iter()
+        .find(|(p, _)| p.ends_with(name))
+        .unwrap_or_else(|| panic!("{name}"));
+    text
+}
+
+#[test]
+fn pruning_keeps_every_segment_end_inside_its_volume() {
+    let ellipsoid = build(
+        &example("green-prune-ellipsoid.lsys"),
+        &BuildOptions::default(),
+    );
+    assert!(ellipsoid.skeleton.segments.len() > 100, "the tree grows");
+    let inside = |p: glam::DVec3| {
+        p.x * p.x / 16.0 + (p.y - 5.5).powi(2) / 30.25 + p.z * p.z / 16.0 <= 1.0 + 1e-9
+    };
+    for s in &ellipsoid.skeleton.segments {
+        assert!(inside(s.end), "segment end {} outside the ellipsoid", s.end);
+    }
+    let unpruned = build(
+        &example("green-prune-ellipsoid.lsys")
+            .lines()
+            .filter(|l| !l.ends_with("-> %"))
+            .collect::<Vec<_>>()
+            .join("\n"),
+        &BuildOptions::default(),
+    );
+    assert!(
+        unpruned.skeleton.segments.iter().any(|s| !inside(s.end)),
+        "without the cut the tree grows out"
+    );
+
+    let boxed = build(&example("green-prune-box.lsys"), &BuildOptions::default());
+    assert!(boxed.skeleton.segments.len() > 100);
+    for s in &boxed.skeleton.segments {
+        let p = s.end;
+        assert!(
+            p.x.abs() <= 3.0 + 1e-9
+                && p.z.abs() <= 3.0 + 1e-9
+                && (-1e-9..=8.0 + 1e-9).contains(&p.y),
+            "{p} outside the box"
+        );
+    }
+}
+
+#[test]
+fn the_bush_of_fig_1_25_shows_its_leaves() {
+    let bush = build(&example("abop-1.25-bush.lsys"), &BuildOptions::default());
+    assert!(
+        bush.skeleton.polygons.len() > 100,
+        "{} leaves",
+        bush.skeleton.polygons.len()
+    );
+    // Each leaf is two-sided: its triangles come twice, and they are coloured as leaves.
+    let leaf_triangles = bush.mesh.ranges.chunks_exact(2).count();
+    assert!(leaf_triangles > bush.skeleton.polygons.len());
+    assert_eq!(bush.mesh.check(), Ok(()));
+}
+
+#[test]
+fn smooth_branches_make_more_rings_than_joints() {
+    let smooth = build(&example("smooth-tree.lsys"), &BuildOptions::default());
+    let sharp = build(
+        &example("smooth-tree.lsys").replace("@Gc", ""),
+        &BuildOptions::default(),
+    );
+    assert_eq!(
+        smooth.skeleton.segments.len(),
+        sharp.skeleton.segments.len()
+    );
+    assert!(smooth.stats.vertices > 2 * sharp.stats.vertices);
+    assert_eq!(smooth.mesh.check(), Ok(()));
+}

@@ -57,6 +57,52 @@ fn render(source: &str) -> String {
         )
         .ok();
     }
+    let v = |p: glam::DVec3| format!("({:.6}, {:.6}, {:.6})", p.x, p.y, p.z);
+    for p in result.skeleton.polygons.iter().take(10) {
+        let points: Vec<String> = p.points.iter().map(|&q| v(q)).collect();
+        writeln!(
+            out,
+            "polygon #{} c{} {}",
+            p.module,
+            p.color,
+            points.join(" ")
+        )
+        .ok();
+    }
+    for s in result.skeleton.surfaces.iter().take(10) {
+        writeln!(
+            out,
+            "surface #{} {:?} at {} h {} l {} scale {} c{}",
+            s.module,
+            s.kind,
+            v(s.origin),
+            v(s.heading),
+            v(s.left),
+            s.scale,
+            s.color
+        )
+        .ok();
+    }
+    for s in result.skeleton.spheres.iter().take(10) {
+        writeln!(
+            out,
+            "sphere #{} at {} r {} {:?} c{}",
+            s.module,
+            v(s.center),
+            s.radius,
+            s.radius_width,
+            s.color
+        )
+        .ok();
+    }
+    for q in result.skeleton.queries.iter().take(10) {
+        writeln!(
+            out,
+            "query #{} ({:.6}, {:.6}, {:.6})",
+            q.module, q.value[0], q.value[1], q.value[2]
+        )
+        .ok();
+    }
     writeln!(
         out,
         "end ({:.6}, {:.6}, {:.6})",

@@ -15,6 +15,8 @@ pub struct Stats {
     pub segments: usize,
     pub vertices: usize,
     pub triangles: usize,
+    /// Segments drawn as lines because the model was too large to mesh (0 normally).
+    pub lines: usize,
     /// Derivation steps run.
     pub iterations: u32,
     /// `[[minx, miny, minz], [maxx, maxy, maxz]]` of the mesh vertices.
@@ -28,6 +30,7 @@ impl Stats {
             segments,
             vertices: mesh.vertex_count(),
             triangles: mesh.triangle_count(),
+            lines: mesh.lines.len() / 6,
             iterations,
             bounds: mesh.bounds(),
         }

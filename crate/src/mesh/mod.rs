@@ -21,13 +21,27 @@ use glam::DVec3;
 /// - `normals`: `f32` × 3 per vertex, unit length, pointing out of the surface.
 /// - `colors`: `f32` × 3 per vertex (r, g, b), linear, 0..=1.
 /// - `indices`: `u32` × 3 per triangle, each `< positions.len() / 3`, counter-clockwise seen
-///   from outside (the side the normals point to).
+///   from outside (the side the normals point to). Leaves and polygons are two-sided: each is
+///   there twice, once per side, with opposite normals.
+/// - `ranges`: provenance, `u32` × 2 per range: (first triangle, module), sorted by first
+///   triangle; a range runs to the next range's first triangle. `module` is the index, in the string
+///   the turtle read, of the module that drew those triangles (a segment's `F`, a polygon's `{`, …).
+/// - `lines`, `line_colors`: only when the model is too large to mesh (`MeshOptions::max_vertices`):
+///   `f32` × 3 per line end (two per segment) and `f32` × 3 colour per end; the triangle arrays
+///   are then empty.
+///
+/// Memory: a tube of `sides` sides costs `sides` vertices per joint (36 bytes each: position,
+/// normal, colour) and `2·sides` triangles per segment (24 bytes each), plus two caps per axis;
+/// with the default 6 sides, about 370 bytes per segment.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct MeshBuffers {
     pub positions: Vec<f32>,
     pub normals: Vec<f32>,
     pub colors: Vec<f32>,
     pub indices: Vec<u32>,
+    pub ranges: Vec<u32>,
+    pub lines: Vec<f32>,
+    pub line_colors: Vec<f32>,
 }
 
 impl MeshBuffers {
@@ -49,6 +63,23 @@ impl MeshBuffers {
         }
         if self.colors.len() != self.positions.len() || !self.indices.len().is_multiple_of(3) {
             return Err("colors must hold 3 floats per vertex and indices 3 per triangle".into());
+        }
+        if !self.ranges.len().is_multiple_of(2) {
+            return Err("ranges must hold (first triangle, module) pairs".into());
+        }
+        let firsts: Vec<u32> = self.ranges.iter().step_by(2).copied().collect();
+        if firsts.windows(2).any(|w| w[0] >= w[1])
+            || firsts
+                .last()
+                .is_some_and(|&f| f as usize >= self.triangle_count())
+        {
+            return Err("ranges must start at increasing triangles inside the mesh".into());
+        }
+        if !firsts.is_empty() && firsts[0] != 0 {
+            return Err("the first range must start at triangle 0".into());
+        }
+        if !self.lines.len().is_multiple_of(6) || self.line_colors.len() != self.lines.len() {
+            return Err("lines must hold two 3-float ends per segment, each with a colour".into());
         }
         if let Some(i) = self.indices.iter().find(|&&i| i as usize >= vertices) {
             return Err(format!("index {i} out of range ({vertices} vertices)"));
@@ -91,14 +122,20 @@ impl MeshBuffers {
         Ok(())
     }
 
-    /// `[[min x, y, z], [max x, y, z]]` of the vertices; all zeros for an empty mesh.
+    /// `[[min x, y, z], [max x, y, z]]` of the vertices (or of the lines, in the fallback); all
+    /// zeros for an empty mesh.
     pub fn bounds(&self) -> [[f64; 3]; 2] {
-        if self.positions.is_empty() {
+        let points = if self.positions.is_empty() {
+            &self.lines
+        } else {
+            &self.positions
+        };
+        if points.is_empty() {
             return [[0.0; 3]; 2];
         }
         let mut min = [f64::INFINITY; 3];
         let mut max = [f64::NEG_INFINITY; 3];
-        for p in self.positions.chunks_exact(3) {
+        for p in points.chunks_exact(3) {
             for k in 0..3 {
                 min[k] = min[k].min(p[k] as f64);
                 max[k] = max[k].max(p[k] as f64);
@@ -123,6 +160,14 @@ pub struct MeshOptions {
     /// Sides of each tube (at least 3).
     pub sides: u32,
     pub width_unit: WidthUnit,
+    /// Make every axis a smooth generalized cylinder, not only those between `@Gc` and `@Ge`.
+    pub smooth_all: bool,
+    /// Rings per segment along a smooth axis.
+    pub smooth_samples: u32,
+    /// Segments around (and half as many rings along) each sphere.
+    pub sphere_segments: u32,
+    /// Above this many vertices the mesh falls back to lines (`MeshBuffers::lines`).
+    pub max_vertices: usize,
 }
 
 impl Default for MeshOptions {
@@ -130,66 +175,346 @@ impl Default for MeshOptions {
         MeshOptions {
             sides: 6,
             width_unit: WidthUnit::Relative(1.0 / 300.0),
+            smooth_all: false,
+            smooth_samples: 4,
+            sphere_segments: 12,
+            max_vertices: 4_000_000,
         }
     }
 }
 
-/// Colours for the colour index (`'` and `;` in later versions): index 0 is the stem colour.
+/// Colours for the colour index (`'`, `;`), taken modulo the palette's length. Index 0 is the
+/// default stem colour; ABOP's Fig 1.25 colours its leaves three indices on.
 pub const PALETTE: &[[f32; 3]] = &[
-    [0.30, 0.50, 0.16], // stem green
-    [0.20, 0.55, 0.12], // leaf green
-    [0.12, 0.38, 0.10], // dark green
-    [0.45, 0.30, 0.16], // bark brown
-    [0.85, 0.30, 0.45], // petal pink
-    [0.95, 0.80, 0.20], // yellow
-    [0.90, 0.90, 0.85], // white
-    [0.55, 0.20, 0.60], // purple
+    [0.36, 0.45, 0.18], // 0 olive stem
+    [0.30, 0.50, 0.15], // 1 green stem
+    [0.22, 0.55, 0.14], // 2 fresh green
+    [0.18, 0.60, 0.16], // 3 leaf green
+    [0.30, 0.68, 0.20], // 4 light leaf green
+    [0.55, 0.35, 0.20], // 5 bark brown
+    [0.90, 0.82, 0.30], // 6 yellow
+    [0.88, 0.45, 0.60], // 7 petal pink
+    [0.95, 0.95, 0.92], // 8 white
+    [0.55, 0.25, 0.65], // 9 purple
+    [0.85, 0.30, 0.20], // 10 red
+    [0.40, 0.28, 0.16], // 11 dark bark
 ];
 
-/// Builds the tube mesh of a skeleton. Segments of zero length or zero width draw nothing.
+fn color(index: u16) -> [f32; 3] {
+    PALETTE[index as usize % PALETTE.len()]
+}
+
+/// Consecutive segments whose directions differ by more than this start a new tube: a ring at
+/// a sharper joint would pinch.
+const MAX_JOINT_ANGLE_COS: f64 = -0.2;
+
+/// Builds the mesh of a skeleton: a tube per axis (segments that continue each other share their
+/// joint rings, ends are capped), smooth axes as generalized cylinders through their joints,
+/// polygons and predefined surfaces two-sided, spheres. Above `max_vertices` it returns lines.
 pub fn build_mesh(skeleton: &Skeleton, options: &MeshOptions) -> MeshBuffers {
-    let sides = options.sides.max(3) as usize;
     let unit = match options.width_unit {
         WidthUnit::Absolute(u) => u,
         WidthUnit::Relative(fraction) => fraction * skeleton_diagonal(skeleton),
     };
-    let ring: Vec<(f64, f64)> = (0..sides)
-        .map(|k| (k as f64 / sides as f64 * std::f64::consts::TAU).sin_cos())
-        .collect();
-
-    let drawn = skeleton.segments.len();
-    let mut mesh = MeshBuffers {
-        positions: Vec::with_capacity(drawn * sides * 6),
-        normals: Vec::with_capacity(drawn * sides * 6),
-        colors: Vec::with_capacity(drawn * sides * 6),
-        indices: Vec::with_capacity(drawn * sides * 6),
+    let mut builder = Builder {
+        mesh: MeshBuffers::default(),
+        options,
+        unit,
+        sides: options.sides.max(3) as usize,
     };
-    for segment in &skeleton.segments {
-        let radius = 0.5 * segment.width * unit;
-        let length = (segment.end - segment.start).length();
-        if !(radius > 0.0 && radius.is_finite() && length > 1e-12 && length.is_finite()) {
+    if builder.estimate(skeleton) > options.max_vertices {
+        builder.lines(skeleton);
+        return builder.mesh;
+    }
+    // A chain that starts where another segment ends is a branch growing out of a joint: its
+    // start is inside the parent's tube, so it needs no start cap.
+    let joints: std::collections::HashSet<[u64; 3]> =
+        skeleton.segments.iter().map(|s| key(s.end)).collect();
+    for chain in chains(skeleton) {
+        let hidden_start = joints.contains(&key(skeleton.segments[chain[0] as usize].start));
+        builder.tube(skeleton, &chain, !hidden_start);
+    }
+    for p in &skeleton.polygons {
+        builder.flat(&p.points, color(p.color), p.module);
+    }
+    for s in &skeleton.surfaces {
+        let kind = match s.kind {
+            crate::turtle::SurfaceKind::Leaf => surfaces::SurfaceKind::Leaf,
+            crate::turtle::SurfaceKind::Petal => surfaces::SurfaceKind::Petal,
+        };
+        let points = surfaces::place(kind, s.origin, s.heading, s.left, s.scale);
+        builder.flat(&points, color(s.color), s.module);
+    }
+    for s in &skeleton.spheres {
+        let radius = s.radius_width.map_or(s.radius, |w| w * unit);
+        builder.sphere(s.center, radius, color(s.color), s.module);
+    }
+    builder.mesh
+}
+
+/// A point as a hash key (exact: joints are the same computed value, not merely close).
+fn key(p: DVec3) -> [u64; 3] {
+    [p.x.to_bits(), p.y.to_bits(), p.z.to_bits()]
+}
+
+/// The axes of the skeleton as lists of segment indices, each continuing the one before. A chain
+/// breaks where widths are zero, at sharp joints, and where smoothness changes.
+fn chains(skeleton: &Skeleton) -> Vec<Vec<u32>> {
+    let segments = &skeleton.segments;
+    let direction = |i: usize| (segments[i].end - segments[i].start).normalize();
+    let mut next: Vec<Option<u32>> = vec![None; segments.len()];
+    let mut continues = vec![false; segments.len()];
+    for (i, s) in segments.iter().enumerate() {
+        if s.width <= 0.0 {
             continue;
         }
-        let base = mesh.vertex_count() as u32;
-        let color = PALETTE[segment.color as usize % PALETTE.len()];
-        for center in [segment.start, segment.end] {
-            for &(sin, cos) in &ring {
-                let normal: DVec3 = segment.left * cos + segment.up * sin;
-                let p = center + normal * radius;
-                mesh.positions.extend([p.x as f32, p.y as f32, p.z as f32]);
-                mesh.normals
-                    .extend([normal.x as f32, normal.y as f32, normal.z as f32]);
-                mesh.colors.extend(color);
+        if let Some(p) = s.previous {
+            let p = p as usize;
+            let joins = next[p].is_none()
+                && segments[p].width > 0.0
+                && segments[p].smooth == s.smooth
+                && direction(p).dot(direction(i)) > MAX_JOINT_ANGLE_COS;
+            if joins {
+                next[p] = Some(i as u32);
+                continues[i] = true;
             }
         }
+    }
+    let mut chains = Vec::new();
+    for start in 0..segments.len() {
+        if continues[start] || segments[start].width <= 0.0 {
+            continue;
+        }
+        let mut chain = vec![start as u32];
+        let mut at = start;
+        while let Some(n) = next[at] {
+            chain.push(n);
+            at = n as usize;
+        }
+        chains.push(chain);
+    }
+    chains
+}
+
+struct Builder<'a> {
+    mesh: MeshBuffers,
+    options: &'a MeshOptions,
+    unit: f64,
+    sides: usize,
+}
+
+impl Builder<'_> {
+    /// An upper bound of the vertices the full mesh needs.
+    fn estimate(&self, skeleton: &Skeleton) -> usize {
+        let rings_per_segment =
+            if self.options.smooth_all || skeleton.segments.iter().any(|s| s.smooth) {
+                self.options.smooth_samples.max(1) as usize
+            } else {
+                1
+            };
+        let tubes = skeleton.segments.len() * (rings_per_segment + 2) * (self.sides + 1);
+        let flats: usize = skeleton
+            .polygons
+            .iter()
+            .map(|p| 2 * p.points.len())
+            .sum::<usize>()
+            + skeleton.surfaces.len() * 64;
+        let spheres = skeleton.spheres.len() * (self.options.sphere_segments as usize + 1).pow(2);
+        tubes + flats + spheres
+    }
+
+    fn vertex(&mut self, p: DVec3, n: DVec3, c: [f32; 3]) -> u32 {
+        let index = self.mesh.vertex_count() as u32;
+        self.mesh
+            .positions
+            .extend([p.x as f32, p.y as f32, p.z as f32]);
+        self.mesh
+            .normals
+            .extend([n.x as f32, n.y as f32, n.z as f32]);
+        self.mesh.colors.extend(c);
+        index
+    }
+
+    /// Starts a provenance range: the triangles from here on come from `module`.
+    fn range(&mut self, module: u32) {
+        let first = self.mesh.triangle_count() as u32;
+        if let [.., last_first, last_module] = self.mesh.ranges[..] {
+            if last_module == module {
+                return;
+            }
+            if last_first == first {
+                let n = self.mesh.ranges.len();
+                self.mesh.ranges[n - 1] = module;
+                return;
+            }
+        }
+        self.mesh.ranges.extend([first, module]);
+    }
+
+    fn tube(&mut self, skeleton: &Skeleton, chain: &[u32], start_cap: bool) {
+        let segments: Vec<&crate::turtle::Segment> = chain
+            .iter()
+            .map(|&i| &skeleton.segments[i as usize])
+            .collect();
+        let mut points: Vec<DVec3> = vec![segments[0].start];
+        points.extend(segments.iter().map(|s| s.end));
+        // The width at each joint: a segment's width at its start; the last keeps its own.
+        let mut widths: Vec<f64> = segments.iter().map(|s| s.width).collect();
+        widths.push(segments[segments.len() - 1].width);
+        let smooth = self.options.smooth_all || segments[0].smooth;
+
+        // Samples along the axis: (point, tangent, width, segment of the chain it starts).
+        let mut samples: Vec<(DVec3, DVec3, f64, usize)> = Vec::new();
+        if smooth && points.len() > 2 {
+            let pieces = curve::bezier_through(&points);
+            let per = self.options.smooth_samples.max(1);
+            for (k, piece) in pieces.iter().enumerate() {
+                let first = if k == 0 { 0 } else { 1 };
+                for j in first..=per {
+                    let t = j as f64 / per as f64;
+                    let (p, tangent) = curve::evaluate(piece, t);
+                    let w = widths[k] + (widths[k + 1] - widths[k]) * t;
+                    samples.push((p, tangent, w, k.min(segments.len() - 1)));
+                }
+            }
+        } else {
+            let direction = |i: usize| (points[i + 1] - points[i]).normalize();
+            for i in 0..points.len() {
+                let tangent = if i == 0 {
+                    direction(0)
+                } else if i == points.len() - 1 {
+                    direction(i - 1)
+                } else {
+                    (direction(i - 1) + direction(i)).normalize()
+                };
+                samples.push((points[i], tangent, widths[i], i.min(segments.len() - 1)));
+            }
+        }
+        samples.retain(|(p, t, _, _)| p.is_finite() && t.is_finite());
+        samples.dedup_by(|b, a| (b.0 - a.0).length() < 1e-12);
+        if samples.len() < 2 {
+            return;
+        }
+        let frame_input: Vec<(DVec3, DVec3)> =
+            samples.iter().map(|(p, t, _, _)| (*p, *t)).collect();
+        let normals = curve::rotation_minimizing_normals(&frame_input, segments[0].left);
+        let sides = self.sides;
+        let ring: Vec<(f64, f64)> = (0..sides)
+            .map(|k| (k as f64 / sides as f64 * std::f64::consts::TAU).sin_cos())
+            .collect();
+
+        let mut rings: Vec<u32> = Vec::with_capacity(samples.len());
+        for (k, (p, t, w, _)) in samples.iter().enumerate() {
+            let n = normals[k];
+            let b = t.cross(n);
+            let radius = 0.5 * w * self.unit;
+            let c = color(segments[samples[k].3].color);
+            let first = self.mesh.vertex_count() as u32;
+            for &(sin, cos) in &ring {
+                let radial = n * cos + b * sin;
+                self.vertex(*p + radial * radius, radial, c);
+            }
+            rings.push(first);
+        }
         let n = sides as u32;
-        for k in 0..n {
-            let next = (k + 1) % n;
-            let (a, b, c, d) = (base + k, base + next, base + n + k, base + n + next);
-            mesh.indices.extend([a, b, c, b, d, c]);
+        // Start cap, facing back along the axis.
+        self.range(segments[0].module);
+        if start_cap {
+            self.cap(
+                samples[0].0,
+                -samples[0].1,
+                rings[0],
+                color(segments[0].color),
+                true,
+            );
+        }
+        for k in 0..rings.len() - 1 {
+            self.range(segments[samples[k].3].module);
+            let (a0, b0) = (rings[k], rings[k + 1]);
+            for j in 0..n {
+                let next = (j + 1) % n;
+                let (a, b, c, d) = (a0 + j, a0 + next, b0 + j, b0 + next);
+                self.mesh.indices.extend([a, b, c, b, d, c]);
+            }
+        }
+        let last = samples.len() - 1;
+        let c = color(segments[segments.len() - 1].color);
+        self.cap(samples[last].0, samples[last].1, rings[last], c, false);
+    }
+
+    /// A flat disk closing a tube: a fan around a centre vertex facing `normal`. The ring's order
+    /// runs counter-clockwise around the axis, so the start cap reverses it.
+    fn cap(&mut self, center: DVec3, normal: DVec3, ring: u32, c: [f32; 3], reverse: bool) {
+        let n = self.sides as u32;
+        let first = self.mesh.vertex_count() as u32;
+        for j in 0..n {
+            let i = (ring + j) as usize * 3;
+            let p = DVec3::new(
+                self.mesh.positions[i] as f64,
+                self.mesh.positions[i + 1] as f64,
+                self.mesh.positions[i + 2] as f64,
+            );
+            self.vertex(p, normal, c);
+        }
+        let middle = self.vertex(center, normal, c);
+        for j in 0..n {
+            let (a, b) = (first + j, first + (j + 1) % n);
+            if reverse {
+                self.mesh.indices.extend([middle, b, a]);
+            } else {
+                self.mesh.indices.extend([middle, a, b]);
+            }
         }
     }
-    mesh
+
+    /// A polygon or predefined surface, two-sided: the front faces its normal, the back the other way.
+    fn flat(&mut self, points: &[DVec3], c: [f32; 3], module: u32) {
+        let t = polygon::triangulate(points);
+        if t.triangles.is_empty() {
+            return;
+        }
+        self.range(module);
+        for (normal, flip) in [(t.normal, false), (-t.normal, true)] {
+            let first = self.mesh.vertex_count() as u32;
+            for p in points {
+                self.vertex(*p, normal, c);
+            }
+            for tri in &t.triangles {
+                let [a, b, d] = tri.map(|i| first + i);
+                if flip {
+                    self.mesh.indices.extend([a, d, b]);
+                } else {
+                    self.mesh.indices.extend([a, b, d]);
+                }
+            }
+        }
+    }
+
+    fn sphere(&mut self, center: DVec3, radius: f64, c: [f32; 3], module: u32) {
+        let segments = self.options.sphere_segments.max(3);
+        let s = sphere::sphere(center, radius, segments, segments / 2);
+        if s.triangles.is_empty() {
+            return;
+        }
+        self.range(module);
+        let first = self.mesh.vertex_count() as u32;
+        for (p, n) in s.positions.iter().zip(&s.normals) {
+            self.vertex(*p, *n, c);
+        }
+        for tri in &s.triangles {
+            self.mesh.indices.extend(tri.map(|i| first + i));
+        }
+    }
+
+    /// The fallback for models too large to mesh: each segment as a coloured line.
+    fn lines(&mut self, skeleton: &Skeleton) {
+        for s in &skeleton.segments {
+            for p in [s.start, s.end] {
+                self.mesh.lines.extend([p.x as f32, p.y as f32, p.z as f32]);
+                self.mesh.line_colors.extend(color(s.color));
+            }
+        }
+    }
 }
 
 /// Length of the diagonal of the box around every segment end point.
@@ -200,7 +525,11 @@ fn skeleton_diagonal(skeleton: &Skeleton) -> f64 {
         min = min.min(s.start).min(s.end);
         max = max.max(s.start).max(s.end);
     }
-    if skeleton.segments.is_empty() {
+    for p in skeleton.polygons.iter().flat_map(|p| &p.points) {
+        min = min.min(*p);
+        max = max.max(*p);
+    }
+    if min.x > max.x {
         0.0
     } else {
         (max - min).length()
@@ -210,9 +539,9 @@ fn skeleton_diagonal(skeleton: &Skeleton) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::turtle::Segment;
+    use crate::turtle::{Polygon, Segment, Sphere};
 
-    fn segment(start: DVec3, end: DVec3) -> Segment {
+    fn segment(start: DVec3, end: DVec3, previous: Option<u32>) -> Segment {
         Segment {
             start,
             end,
@@ -221,38 +550,197 @@ mod tests {
             width: 1.0,
             color: 0,
             module: 0,
+            previous,
+            smooth: false,
+        }
+    }
+
+    fn absolute(unit: f64) -> MeshOptions {
+        MeshOptions {
+            sides: 8,
+            width_unit: WidthUnit::Absolute(unit),
+            ..MeshOptions::default()
         }
     }
 
     #[test]
-    fn a_segment_is_a_tube_of_sides_quads() {
+    fn a_segment_is_a_capped_tube() {
         let skeleton = Skeleton {
-            segments: vec![segment(DVec3::ZERO, DVec3::Y)],
-            end: DVec3::Y,
+            segments: vec![segment(DVec3::ZERO, DVec3::Y, None)],
+            ..Skeleton::default()
+        };
+        let mesh = build_mesh(&skeleton, &absolute(0.2));
+        // Two rings of 8, and two caps of 8 + 1 vertices; 16 side triangles and 8 per cap.
+        assert_eq!(mesh.vertex_count(), 16 + 18);
+        assert_eq!(mesh.triangle_count(), 16 + 16);
+        assert_eq!(mesh.check(), Ok(()));
+        let [min, max] = mesh.bounds();
+        assert!((max[0] - 0.1).abs() < 1e-6 && min[1].abs() < 1e-6 && (max[1] - 1.0).abs() < 1e-6);
+    }
+
+    #[test]
+    fn an_axis_shares_its_joints() {
+        // Three segments of one axis with turns: one tube of four rings, not three tubes.
+        let a = DVec3::ZERO;
+        let b = DVec3::Y;
+        let c = DVec3::new(-0.3, 1.9, 0.0);
+        let d = DVec3::new(-0.4, 2.9, 0.0);
+        let skeleton = Skeleton {
+            segments: vec![
+                segment(a, b, None),
+                segment(b, c, Some(0)),
+                segment(c, d, Some(1)),
+            ],
+            ..Skeleton::default()
+        };
+        let mesh = build_mesh(&skeleton, &absolute(0.1));
+        assert_eq!(mesh.vertex_count(), 4 * 8 + 2 * 9);
+        assert_eq!(mesh.check(), Ok(()));
+        // The joint ring at b is the bisector's: its vertices are all at distance 0.05 from b.
+        let ring = (8..16).map(|v| {
+            DVec3::new(
+                mesh.positions[v * 3] as f64,
+                mesh.positions[v * 3 + 1] as f64,
+                mesh.positions[v * 3 + 2] as f64,
+            )
+        });
+        for p in ring {
+            assert!(((p - b).length() - 0.05).abs() < 1e-6);
+        }
+    }
+
+    #[test]
+    fn a_branch_from_a_joint_has_no_start_cap() {
+        // F[+F]: the branch starts at the end of the first segment, inside its tube.
+        let mut branch = segment(DVec3::Y, DVec3::new(-0.7, 1.7, 0.0), None);
+        branch.module = 3;
+        let skeleton = Skeleton {
+            segments: vec![segment(DVec3::ZERO, DVec3::Y, None), branch],
+            ..Skeleton::default()
+        };
+        let mesh = build_mesh(&skeleton, &absolute(0.1));
+        assert_eq!(mesh.vertex_count(), (16 + 18) + (16 + 9));
+        assert_eq!(mesh.check(), Ok(()));
+    }
+
+    #[test]
+    fn a_sharp_turn_or_a_zero_width_breaks_the_axis() {
+        let skeleton = Skeleton {
+            segments: vec![
+                segment(DVec3::ZERO, DVec3::Y, None),
+                segment(DVec3::Y, DVec3::ZERO, Some(0)),
+            ],
+            ..Skeleton::default()
+        };
+        assert_eq!(chains(&skeleton), vec![vec![0], vec![1]]);
+        let mut thin = segment(DVec3::Y, DVec3::new(0.0, 2.0, 0.0), Some(0));
+        thin.width = 0.0;
+        let skeleton = Skeleton {
+            segments: vec![segment(DVec3::ZERO, DVec3::Y, None), thin],
+            ..Skeleton::default()
+        };
+        assert_eq!(chains(&skeleton), vec![vec![0]]);
+        assert_eq!(build_mesh(&skeleton, &absolute(0.1)).check(), Ok(()));
+    }
+
+    #[test]
+    fn smooth_axes_have_rings_between_the_joints() {
+        let mut segments = vec![
+            segment(DVec3::ZERO, DVec3::Y, None),
+            segment(DVec3::Y, DVec3::new(0.5, 1.8, 0.0), Some(0)),
+            segment(
+                DVec3::new(0.5, 1.8, 0.0),
+                DVec3::new(1.2, 2.3, 0.0),
+                Some(1),
+            ),
+        ];
+        for s in &mut segments {
+            s.smooth = true;
+        }
+        let skeleton = Skeleton {
+            segments,
+            ..Skeleton::default()
         };
         let mesh = build_mesh(
             &skeleton,
             &MeshOptions {
-                sides: 8,
-                width_unit: WidthUnit::Absolute(0.2),
+                smooth_samples: 5,
+                ..absolute(0.1)
             },
         );
-        assert_eq!(mesh.vertex_count(), 16);
-        assert_eq!(mesh.triangle_count(), 16);
+        assert_eq!(mesh.vertex_count(), (3 * 5 + 1) * 8 + 2 * 9);
         assert_eq!(mesh.check(), Ok(()));
-        let [min, max] = mesh.bounds();
-        assert!(
-            (max[0] - 0.1).abs() < 1e-6 && (min[1]).abs() < 1e-6 && (max[1] - 1.0).abs() < 1e-6
-        );
     }
 
     #[test]
-    fn zero_length_segments_make_no_triangles() {
+    fn polygons_are_two_sided_and_spheres_closed() {
+        let square = vec![DVec3::ZERO, DVec3::X, DVec3::new(1.0, 1.0, 0.0), DVec3::Y];
         let skeleton = Skeleton {
-            segments: vec![segment(DVec3::Y, DVec3::Y)],
-            end: DVec3::Y,
+            polygons: vec![Polygon {
+                points: square,
+                color: 3,
+                module: 7,
+            }],
+            spheres: vec![Sphere {
+                center: DVec3::ZERO,
+                radius: 1.0,
+                radius_width: None,
+                color: 0,
+                module: 9,
+            }],
+            ..Skeleton::default()
         };
         let mesh = build_mesh(&skeleton, &MeshOptions::default());
+        assert_eq!(mesh.check(), Ok(()));
+        assert_eq!(
+            &mesh.ranges[..4],
+            &[0, 7, 4, 9],
+            "the square's 2 + 2 triangles, then the sphere"
+        );
+        // The square's front faces +Z, its back −Z.
+        assert_eq!(&mesh.normals[..3], &[0.0, 0.0, 1.0]);
+        assert_eq!(&mesh.normals[12..15], &[0.0, 0.0, -1.0]);
+    }
+
+    #[test]
+    fn huge_models_fall_back_to_lines() {
+        let skeleton = Skeleton {
+            segments: (0..100)
+                .map(|i| {
+                    segment(
+                        DVec3::new(i as f64, 0.0, 0.0),
+                        DVec3::new(i as f64, 1.0, 0.0),
+                        None,
+                    )
+                })
+                .collect(),
+            ..Skeleton::default()
+        };
+        let mesh = build_mesh(
+            &skeleton,
+            &MeshOptions {
+                max_vertices: 500,
+                ..MeshOptions::default()
+            },
+        );
         assert_eq!(mesh.triangle_count(), 0);
+        assert_eq!(mesh.lines.len(), 100 * 6);
+        assert_eq!(mesh.check(), Ok(()));
+        assert_eq!(mesh.bounds(), [[0.0, 0.0, 0.0], [99.0, 1.0, 0.0]]);
+    }
+
+    #[test]
+    fn ranges_map_triangles_to_the_modules_that_drew_them() {
+        let mut first = segment(DVec3::ZERO, DVec3::Y, None);
+        first.module = 2;
+        let mut second = segment(DVec3::Y, DVec3::new(0.0, 2.0, 0.0), Some(0));
+        second.module = 5;
+        let skeleton = Skeleton {
+            segments: vec![first, second],
+            ..Skeleton::default()
+        };
+        let mesh = build_mesh(&skeleton, &absolute(0.1));
+        // Start cap and first quads: module 2; second quads and end cap: module 5.
+        assert_eq!(mesh.ranges, vec![0, 2, 8 + 16, 5]);
     }
 }

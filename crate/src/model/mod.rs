@@ -128,6 +128,10 @@ pub struct Settings {
     pub step: f64,
     /// `#width`: the initial segment width, in width units (see `mesh`).
     pub width: f64,
+    /// `#width_step`: how much `!` without a parameter decreases the width.
+    pub width_step: f64,
+    /// `#tropism x y z e`: the tropism vector T and susceptibility e (ABOP 2.3); e = 0 is none.
+    pub tropism: (glam::DVec3, f64),
     /// `#max_modules`: derivation stops with an error when a string would grow past this.
     pub max_modules: usize,
     /// `#max_steps`: the largest number of derivation steps a build may run.
@@ -153,6 +157,8 @@ impl Default for Settings {
             seed: 1,
             step: 1.0,
             width: 1.0,
+            width_step: 0.1,
+            tropism: (glam::DVec3::NEG_Y, 0.0),
             max_modules: DEFAULT_MAX_MODULES,
             max_steps: DEFAULT_MAX_STEPS,
             draw: Vec::new(),

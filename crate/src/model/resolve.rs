@@ -11,10 +11,6 @@ use crate::syntax::{
 };
 use std::collections::HashMap;
 
-/// Directives of LANGUAGE.md section 2 that belong to the turtle and are not implemented yet; using
-/// one is an error that says so, rather than being silently ignored.
-const NOT_YET: &[&str] = &["width_step", "tropism"];
-
 /// Resolves a parsed file. Returns `None` for the model when there is nothing to derive (no
 /// axiom); otherwise a model plus every diagnostic, even when some are errors.
 pub fn resolve(file: &SourceFile) -> (Option<Model>, Vec<Diagnostic>) {
@@ -88,6 +84,12 @@ pub fn resolve(file: &SourceFile) -> (Option<Model>, Vec<Diagnostic>) {
             "angle" => settings.angle = r.number(d).unwrap_or(settings.angle),
             "step" => settings.step = r.number(d).unwrap_or(settings.step),
             "width" => settings.width = r.number(d).unwrap_or(settings.width),
+            "width_step" => settings.width_step = r.number(d).unwrap_or(settings.width_step),
+            "tropism" => {
+                if let Some(t) = r.tropism(d) {
+                    settings.tropism = t;
+                }
+            }
             "iterations" => {
                 if let Some(v) = r.whole(d, u32::MAX as u64) {
                     settings.iterations = v as u32;
@@ -124,11 +126,6 @@ pub fn resolve(file: &SourceFile) -> (Option<Model>, Vec<Diagnostic>) {
                         .collect(),
                 )
             }
-            name if NOT_YET.contains(&name) => r.diagnostics.push(Diagnostic::error(
-                "E0290",
-                d.name_span.clone(),
-                format!("#{name} is part of the language but not implemented yet"),
-            )),
             name => r.diagnostics.push(Diagnostic::error(
                 "E0200",
                 d.name_span.clone(),
@@ -562,6 +559,33 @@ impl Resolver {
             rng: &mut rng,
         };
         program.eval(&mut env).map_err(|e| e.message)
+    }
+
+    /// `#tropism x y z e`: four numbers (or constant expressions without spaces).
+    fn tropism(&mut self, d: &Directive) -> Option<(glam::DVec3, f64)> {
+        let words: Vec<&str> = d.args.split_whitespace().collect();
+        let mut values = Vec::new();
+        for word in &words {
+            let offset = word.as_ptr() as usize - d.args.as_ptr() as usize;
+            let part = Directive {
+                args: word.to_string(),
+                args_span: d.args_span.start + offset..d.args_span.start + offset + word.len(),
+                ..d.clone()
+            };
+            values.push(self.number(&part)?);
+        }
+        if values.len() != 4 {
+            self.directive_error(
+                "E0207",
+                d,
+                format!(
+                    "#tropism needs four numbers: x y z e, found {}",
+                    values.len()
+                ),
+            );
+            return None;
+        }
+        Some((glam::DVec3::new(values[0], values[1], values[2]), values[3]))
     }
 
     fn directive_error(&mut self, code: &'static str, d: &Directive, message: String) {

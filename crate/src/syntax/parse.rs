@@ -731,6 +731,8 @@ impl ModuleScanner<'_> {
                     .unwrap_or(rest.len() - 1)
             }
             b'?' if bytes.len() > 1 && bytes[1].is_ascii_alphabetic() => 2,
+            // cpfg's predefined surfaces: `~l` (leaf), `~p` (petal), one letter each.
+            b'~' if bytes.len() > 1 && bytes[1].is_ascii_alphabetic() => 2,
             // A subscript is one letter (`F_a`) or a run of digits (`A_12`).
             c if c.is_ascii_alphabetic()
                 && bytes.len() > 2

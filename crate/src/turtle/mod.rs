@@ -1,4 +1,5 @@
-//! Stage 4, `turtle`: the derived string becomes a [`Skeleton`] of segments in 3D.
+//! Stage 4, `turtle`: the derived string becomes a [`Skeleton`] in 3D: segments, polygons,
+//! predefined surfaces and spheres, plus the values of query modules.
 //!
 //! Frame conventions (docs/LANGUAGE.md, "Turtle"): the turtle starts at the origin with heading
 //! H = +Y, left L = −X and up U = +Z (H × L = U), so plants grow up the Y axis (three.js's up)
@@ -8,7 +9,7 @@
 
 mod commands;
 
-pub use commands::{commands_json, Category, Command, CommandInfo, COMMANDS};
+pub use commands::{command_named, commands_json, Category, Command, CommandInfo, COMMANDS};
 
 use crate::model::{LString, Model};
 use glam::DVec3;
@@ -23,17 +24,75 @@ pub struct Segment {
     pub up: DVec3,
     pub width: f64,
     pub color: u16,
-    /// Index in the derived string of the module that drew this segment.
+    /// Index in the interpreted string of the module that drew this segment.
     pub module: u32,
+    /// The segment this one continues on the same axis (it starts where that one ended, with no
+    /// branch, move or jump between): the mesh shares their joint.
+    pub previous: Option<u32>,
+    /// Drawn between `@Gc` and `@Ge`: part of a smooth generalized cylinder.
+    pub smooth: bool,
+}
+
+/// A filled polygon (`{ … }`), vertices in drawing order.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Polygon {
+    pub points: Vec<DVec3>,
+    pub color: u16,
+    /// Index of the `{` module.
+    pub module: u32,
+}
+
+/// Which predefined surface.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SurfaceKind {
+    Leaf,
+    Petal,
+}
+
+/// A predefined surface (`~l`, `~p`) placed at the turtle.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Surface {
+    pub kind: SurfaceKind,
+    pub origin: DVec3,
+    pub heading: DVec3,
+    pub left: DVec3,
+    pub scale: f64,
+    pub color: u16,
+    pub module: u32,
+}
+
+/// A sphere (`@O`). Its radius is in model units (`@O(r)`), or half the width in width units
+/// when `@O` has no parameter (`radius_width`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Sphere {
+    pub center: DVec3,
+    pub radius: f64,
+    pub radius_width: Option<f64>,
+    pub color: u16,
+    pub module: u32,
+}
+
+/// The value a query module (`?P`, `?H`, `?U`, `?L`) reads at its place in the string.
+#[derive(Clone, Debug, PartialEq)]
+pub struct QueryValue {
+    pub module: u32,
+    pub value: [f64; 3],
 }
 
 /// The turtle's output: plain geometry, no mesh yet.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Skeleton {
     pub segments: Vec<Segment>,
+    pub polygons: Vec<Polygon>,
+    pub surfaces: Vec<Surface>,
+    pub spheres: Vec<Sphere>,
+    pub queries: Vec<QueryValue>,
     /// Where the turtle stood after the last module.
     pub end: DVec3,
 }
+
+/// The world's up direction, for `$` (ABOP's V).
+const VERTICAL: DVec3 = DVec3::Y;
 
 #[derive(Clone, Copy, Debug)]
 struct TurtleState {
@@ -43,20 +102,14 @@ struct TurtleState {
     up: DVec3,
     width: f64,
     color: u16,
+    tropism: DVec3,
+    susceptibility: f64,
+    smooth: bool,
+    /// The last segment drawn on this axis, if the turtle still stands at its end.
+    last_segment: Option<u32>,
 }
 
 impl TurtleState {
-    fn initial(width: f64) -> Self {
-        TurtleState {
-            position: DVec3::ZERO,
-            heading: DVec3::Y,
-            left: DVec3::NEG_X,
-            up: DVec3::Z,
-            width,
-            color: 0,
-        }
-    }
-
     /// Right-handed rotation by `a` radians about U: H turns towards L.
     fn yaw(&mut self, a: f64) {
         let (s, c) = a.sin_cos();
@@ -79,10 +132,36 @@ impl TurtleState {
         self.set_frame(self.heading, l);
     }
 
+    /// `$`: L = V × H / |V × H|, U = H × L (unchanged when H is vertical).
+    fn roll_to_vertical(&mut self) {
+        let l = VERTICAL.cross(self.heading);
+        if l.length() > 1e-9 {
+            self.set_frame(self.heading, l);
+        }
+    }
+
+    /// ABOP 2.3: after a step, H bends towards T by e·|H × T| (L and U follow).
+    fn bend(&mut self) {
+        if self.susceptibility == 0.0 {
+            return;
+        }
+        let axis = self.heading.cross(self.tropism);
+        let strength = axis.length();
+        if strength < 1e-12 {
+            return;
+        }
+        let angle = self.susceptibility * strength;
+        let rotation = glam::DQuat::from_axis_angle(axis / strength, angle);
+        self.set_frame(rotation * self.heading, rotation * self.left);
+    }
+
     /// Sets H and L, re-orthonormalising so that rounding never accumulates; U = H × L.
     fn set_frame(&mut self, heading: DVec3, left: DVec3) {
         let h = heading.normalize();
         let l = (left - h * h.dot(left)).normalize();
+        if !(h.is_finite() && l.is_finite()) {
+            return;
+        }
         self.heading = h;
         self.left = l;
         self.up = h.cross(l);
@@ -102,33 +181,73 @@ pub fn interpret(model: &Model, string: &LString) -> Skeleton {
         table[id.index()] = Some(Command::Forward);
     }
     let delta = settings.angle.to_radians();
-    let mut turtle = TurtleState::initial(settings.width);
+    let (tropism, susceptibility) = settings.tropism;
+    let mut turtle = TurtleState {
+        position: DVec3::ZERO,
+        heading: DVec3::Y,
+        left: DVec3::NEG_X,
+        up: DVec3::Z,
+        width: settings.width,
+        color: 0,
+        tropism,
+        susceptibility,
+        smooth: false,
+        last_segment: None,
+    };
     let mut stack: Vec<TurtleState> = Vec::new();
-    let mut segments = Vec::new();
+    let mut open_polygons: Vec<(Vec<DVec3>, u16, u32)> = Vec::new();
+    let mut skeleton = Skeleton::default();
 
     for (index, id) in string.ids.iter().enumerate() {
         let Some(command) = table[id.index()] else {
             continue;
         };
+        let params = string.params_of(index);
         // A first parameter replaces the default length or angle: `F(l)`, `+(a)`.
-        let first = string.params_of(index).first().copied();
+        let first = params.first().copied().filter(|v| v.is_finite());
         let length = first.unwrap_or(settings.step);
         let angle = first.map_or(delta, f64::to_radians);
+        let vector = || {
+            (params.len() >= 3)
+                .then(|| DVec3::new(params[0], params[1], params[2]))
+                .filter(|v| v.is_finite())
+        };
+        let index = index as u32;
         match command {
-            Command::Forward => {
+            Command::Forward | Command::ForwardNoVertex | Command::Move | Command::MoveNoVertex => {
                 let start = turtle.position;
                 turtle.position += turtle.heading * length;
-                segments.push(Segment {
-                    start,
-                    end: turtle.position,
-                    left: turtle.left,
-                    up: turtle.up,
-                    width: turtle.width,
-                    color: turtle.color,
-                    module: index as u32,
-                });
+                let draws = matches!(command, Command::Forward | Command::ForwardNoVertex);
+                let records = matches!(command, Command::Forward | Command::Move);
+                if let Some((points, _, _)) = open_polygons.last_mut() {
+                    // Inside a polygon, F and f trace its outline instead of drawing.
+                    if records {
+                        points.push(turtle.position);
+                    }
+                    turtle.last_segment = None;
+                } else if draws && length != 0.0 {
+                    let previous = turtle
+                        .last_segment
+                        .filter(|&s| skeleton.segments[s as usize].end == start);
+                    skeleton.segments.push(Segment {
+                        start,
+                        end: turtle.position,
+                        left: turtle.left,
+                        up: turtle.up,
+                        width: turtle.width,
+                        color: turtle.color,
+                        module: index,
+                        previous,
+                        smooth: turtle.smooth,
+                    });
+                    turtle.last_segment = Some(skeleton.segments.len() as u32 - 1);
+                } else {
+                    turtle.last_segment = None;
+                }
+                if draws {
+                    turtle.bend();
+                }
             }
-            Command::Move => turtle.position += turtle.heading * length,
             Command::TurnLeft => turtle.yaw(angle),
             Command::TurnRight => turtle.yaw(-angle),
             Command::PitchDown => turtle.pitch(angle),
@@ -136,111 +255,114 @@ pub fn interpret(model: &Model, string: &LString) -> Skeleton {
             Command::RollRight => turtle.roll(angle),
             Command::RollLeft => turtle.roll(-angle),
             Command::TurnAround => turtle.yaw(std::f64::consts::PI),
-            Command::Push => stack.push(turtle),
+            Command::RollToVertical => turtle.roll_to_vertical(),
+            Command::Push => {
+                stack.push(turtle);
+                // A branch starts a new axis: its first segment does not continue the parent's.
+                turtle.last_segment = None;
+            }
             Command::Pop => {
                 if let Some(saved) = stack.pop() {
                     turtle = saved;
                 }
             }
+            Command::StartPolygon => {
+                open_polygons.push((vec![turtle.position], turtle.color, index))
+            }
+            Command::PolygonVertex => {
+                if let Some((points, _, _)) = open_polygons.last_mut() {
+                    points.push(turtle.position);
+                }
+            }
+            Command::EndPolygon => {
+                if let Some((points, color, module)) = open_polygons.pop() {
+                    skeleton.polygons.push(Polygon {
+                        points,
+                        color,
+                        module,
+                    });
+                }
+            }
+            Command::Width => {
+                turtle.width = match first {
+                    Some(w) => w.max(0.0),
+                    None => (turtle.width - settings.width_step).max(0.0),
+                }
+            }
+            Command::NextColor => {
+                let step = first.map_or(1, |n| n.round().clamp(-1000.0, 1000.0) as i32);
+                turtle.color = (turtle.color as i32 + step).clamp(0, u16::MAX as i32) as u16;
+            }
+            Command::SetColor => {
+                turtle.color = match first {
+                    Some(c) => c.round().clamp(0.0, u16::MAX as f64) as u16,
+                    None => turtle.color.saturating_add(1),
+                }
+            }
+            Command::Leaf | Command::Petal => {
+                let scale = first.unwrap_or(1.0);
+                if scale > 0.0 {
+                    skeleton.surfaces.push(Surface {
+                        kind: if command == Command::Leaf {
+                            SurfaceKind::Leaf
+                        } else {
+                            SurfaceKind::Petal
+                        },
+                        origin: turtle.position,
+                        heading: turtle.heading,
+                        left: turtle.left,
+                        scale,
+                        color: turtle.color,
+                        module: index,
+                    });
+                }
+            }
+            Command::Sphere => skeleton.spheres.push(Sphere {
+                center: turtle.position,
+                radius: first.unwrap_or(0.0).max(0.0),
+                radius_width: first.is_none().then_some(turtle.width * 0.5),
+                color: turtle.color,
+                module: index,
+            }),
+            Command::MoveTo => {
+                if let Some(p) = vector() {
+                    turtle.position = p;
+                    turtle.last_segment = None;
+                }
+            }
+            Command::TropismVector => {
+                if let Some(t) = vector() {
+                    turtle.tropism = t;
+                }
+            }
+            Command::TropismStrength => {
+                if let Some(e) = first {
+                    turtle.susceptibility = e;
+                }
+            }
+            Command::StartSmooth => turtle.smooth = true,
+            Command::EndSmooth => turtle.smooth = false,
+            Command::QueryPosition
+            | Command::QueryHeading
+            | Command::QueryUp
+            | Command::QueryLeft => {
+                let v = match command {
+                    Command::QueryPosition => turtle.position,
+                    Command::QueryHeading => turtle.heading,
+                    Command::QueryUp => turtle.up,
+                    _ => turtle.left,
+                };
+                skeleton.queries.push(QueryValue {
+                    module: index,
+                    value: [v.x, v.y, v.z],
+                });
+            }
+            Command::Derivation => {}
         }
     }
-    Skeleton {
-        segments,
-        end: turtle.position,
-    }
+    skeleton.end = turtle.position;
+    skeleton
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::{model, syntax};
-
-    fn run(src: &str) -> Skeleton {
-        let (file, diags) = syntax::parse(src);
-        assert!(diags.is_empty(), "{diags:?}");
-        let (model, diags) = model::resolve(&file);
-        assert!(diags.is_empty(), "{diags:?}");
-        let model = model.expect("model");
-        let derivation = crate::derive::derive(
-            &model,
-            &crate::derive::DeriveOptions {
-                steps: 0,
-                seed: None,
-            },
-        );
-        interpret(&model, &derivation.expect("derives").string)
-    }
-
-    fn close(a: DVec3, b: DVec3) -> bool {
-        (a - b).length() < 1e-12
-    }
-
-    #[test]
-    fn f_plus_f_at_90_degrees_turns_left() {
-        let s = run("#angle 90\naxiom: F+F");
-        assert_eq!(s.segments.len(), 2);
-        assert!(close(s.segments[0].end, DVec3::new(0.0, 1.0, 0.0)));
-        assert!(close(s.end, DVec3::new(-1.0, 1.0, 0.0)), "{}", s.end);
-    }
-
-    #[test]
-    fn minus_turns_right_and_f_moves_without_drawing() {
-        let s = run("#angle 90\naxiom: f-F");
-        assert_eq!(s.segments.len(), 1);
-        assert!(close(s.end, DVec3::new(1.0, 1.0, 0.0)), "{}", s.end);
-    }
-
-    #[test]
-    fn pitch_down_tips_the_heading_away_from_up() {
-        // H = +Y, U = +Z: '&' by 90° heads to −Z; '^' heads to +Z.
-        assert!(close(
-            run("#angle 90\naxiom: &F").end,
-            DVec3::new(0.0, 0.0, -1.0)
-        ));
-        assert!(close(
-            run("#angle 90\naxiom: ^F").end,
-            DVec3::new(0.0, 0.0, 1.0)
-        ));
-    }
-
-    #[test]
-    fn roll_then_turn_leaves_the_plane() {
-        // '/' by 90° rolls L (−X) to U (+Z); then '+' turns H towards the new L.
-        assert!(close(
-            run("#angle 90\naxiom: /+F").end,
-            DVec3::new(0.0, 0.0, 1.0)
-        ));
-        assert!(close(
-            run("#angle 90\naxiom: \\+F").end,
-            DVec3::new(0.0, 0.0, -1.0)
-        ));
-    }
-
-    #[test]
-    fn parameters_set_length_and_angle() {
-        let s = run("#angle 10\naxiom: F(2)+(90)f(3)F");
-        assert!(close(s.segments[0].end, DVec3::new(0.0, 2.0, 0.0)));
-        assert!(close(s.end, DVec3::new(-4.0, 2.0, 0.0)), "{}", s.end);
-    }
-
-    #[test]
-    fn turn_around_and_branches_restore_the_state() {
-        assert!(close(run("axiom: F|F").end, DVec3::ZERO));
-        let s = run("#angle 90\naxiom: F[+F]F");
-        assert!(close(s.segments[1].end, DVec3::new(-1.0, 1.0, 0.0)));
-        assert!(close(s.end, DVec3::new(0.0, 2.0, 0.0)));
-    }
-
-    #[test]
-    fn the_frame_stays_orthonormal_after_many_rotations() {
-        let s = run(&format!("#angle 13.7\naxiom: {}F", "+&/".repeat(2000)));
-        let seg = &s.segments[0];
-        let h = (seg.end - seg.start).normalize();
-        assert!((seg.left.length() - 1.0).abs() < 1e-12 && (seg.up.length() - 1.0).abs() < 1e-12);
-        assert!(
-            h.dot(seg.left).abs() < 1e-12
-                && h.dot(seg.up).abs() < 1e-12
-                && seg.left.dot(seg.up).abs() < 1e-12
-        );
-    }
-}
+mod tests;

@@ -1,0 +1,238 @@
+//! The turtle against hand computations.
+
+use super::*;
+use crate::{derive, model, syntax};
+
+fn run(src: &str) -> Skeleton {
+    let (file, diags) = syntax::parse(src);
+    assert!(diags.is_empty(), "{diags:?}");
+    let (model, diags) = model::resolve(&file);
+    assert!(diags.is_empty(), "{diags:?}");
+    let model = model.expect("model");
+    let steps = model.settings.iterations;
+    let derivation =
+        derive::derive(&model, &derive::DeriveOptions { steps, seed: None }).expect("derives");
+    interpret(&model, &derivation.string)
+}
+
+fn close(a: DVec3, b: DVec3) -> bool {
+    (a - b).length() < 1e-9
+}
+
+#[test]
+fn f_plus_f_at_90_degrees_turns_left() {
+    let s = run("#angle 90\naxiom: F+F");
+    assert_eq!(s.segments.len(), 2);
+    assert!(close(s.segments[0].end, DVec3::new(0.0, 1.0, 0.0)));
+    assert!(close(s.end, DVec3::new(-1.0, 1.0, 0.0)), "{}", s.end);
+}
+
+#[test]
+fn minus_turns_right_and_f_moves_without_drawing() {
+    let s = run("#angle 90\naxiom: f-F");
+    assert_eq!(s.segments.len(), 1);
+    assert!(close(s.end, DVec3::new(1.0, 1.0, 0.0)), "{}", s.end);
+}
+
+#[test]
+fn pitch_down_tips_the_heading_away_from_up() {
+    // H = +Y, U = +Z: '&' by 90° heads to −Z; '^' heads to +Z.
+    assert!(close(
+        run("#angle 90\naxiom: &F").end,
+        DVec3::new(0.0, 0.0, -1.0)
+    ));
+    assert!(close(
+        run("#angle 90\naxiom: ^F").end,
+        DVec3::new(0.0, 0.0, 1.0)
+    ));
+}
+
+#[test]
+fn roll_then_turn_leaves_the_plane() {
+    // '/' by 90° rolls L (−X) to U (+Z); then '+' turns H towards the new L.
+    assert!(close(
+        run("#angle 90\naxiom: /+F").end,
+        DVec3::new(0.0, 0.0, 1.0)
+    ));
+    assert!(close(
+        run("#angle 90\naxiom: \\+F").end,
+        DVec3::new(0.0, 0.0, -1.0)
+    ));
+}
+
+#[test]
+fn parameters_set_length_and_angle() {
+    let s = run("#angle 10\naxiom: F(2)+(90)f(3)F");
+    assert!(close(s.segments[0].end, DVec3::new(0.0, 2.0, 0.0)));
+    assert!(close(s.end, DVec3::new(-4.0, 2.0, 0.0)), "{}", s.end);
+}
+
+#[test]
+fn turn_around_and_branches_restore_the_state() {
+    assert!(close(run("axiom: F|F").end, DVec3::ZERO));
+    let s = run("#angle 90\naxiom: F[+F]F");
+    assert!(close(s.segments[1].end, DVec3::new(-1.0, 1.0, 0.0)));
+    assert!(close(s.end, DVec3::new(0.0, 2.0, 0.0)));
+}
+
+#[test]
+fn the_frame_stays_orthonormal_after_many_rotations() {
+    let s = run(&format!("#angle 13.7\naxiom: {}F", "+&/".repeat(2000)));
+    let seg = &s.segments[0];
+    let h = (seg.end - seg.start).normalize();
+    assert!((seg.left.length() - 1.0).abs() < 1e-12 && (seg.up.length() - 1.0).abs() < 1e-12);
+    assert!(
+        h.dot(seg.left).abs() < 1e-12
+            && h.dot(seg.up).abs() < 1e-12
+            && seg.left.dot(seg.up).abs() < 1e-12
+    );
+}
+
+#[test]
+fn fig_1_37a_row_of_trees_ends_on_its_baseline() {
+    // F(x) -> F(x*p)+F(x*h)--F(x*h)+F(x*q): the bump is symmetric, so the polyline ends on the line
+    // of its first heading. With δ = 90° (the construction ABOP's text describes) it ends at
+    // distance exactly 1; at the book's δ = 86° each step stretches it by 1 + 2h·cos 86°.
+    let grammar = |angle: f64| {
+        format!(
+            "#define c 1\n#define p 0.3\n#define q c - p\n#define h (p*q)^0.5\n#angle {angle}\n#iterations 5\n\
+             axiom: F(1)\nF(x) -> F(x*p)+F(x*h)--F(x*h)+F(x*q)"
+        )
+    };
+    let s = run(&grammar(90.0));
+    assert_eq!(s.segments.len(), 4usize.pow(5));
+    assert!(close(s.segments[0].start, DVec3::ZERO));
+    assert!(close(s.end, DVec3::new(0.0, 1.0, 0.0)), "{}", s.end);
+    let s = run(&grammar(86.0));
+    let h = (0.3f64 * 0.7).sqrt();
+    let stretch = (1.0 + 2.0 * h * 86f64.to_radians().cos()).powi(5);
+    assert!(close(s.end, DVec3::new(0.0, stretch, 0.0)), "{}", s.end);
+}
+
+#[test]
+fn tropism_bends_the_heading_towards_t_by_e_times_sin() {
+    // H = +Y, T = +X, e = 0.5: |H × T| = 1, so after one F the heading turns 0.5 rad towards +X.
+    let s = run("#tropism 1 0 0 0.5\naxiom: FF");
+    let second = &s.segments[1];
+    let h = (second.end - second.start).normalize();
+    assert!(close(h, DVec3::new(0.5f64.sin(), 0.5f64.cos(), 0.0)), "{h}");
+    // Again: |H × T| is now cos 0.5, so the next bend is 0.5·cos 0.5.
+    let s = run("#tropism 1 0 0 0.5\naxiom: FFF");
+    let third = &s.segments[2];
+    let h = (third.end - third.start).normalize();
+    let angle = 0.5 + 0.5 * 0.5f64.cos();
+    assert!(close(h, DVec3::new(angle.sin(), angle.cos(), 0.0)), "{h}");
+    // A heading along T does not bend; @Ts(0) turns tropism off for a branch.
+    let s = run("#tropism 0 1 0 0.9\naxiom: FF");
+    assert!(close(s.end, DVec3::new(0.0, 2.0, 0.0)));
+    let s = run("#tropism 1 0 0 0.5\naxiom: [@Ts(0)FF]FF");
+    assert!(close(s.segments[1].end, DVec3::new(0.0, 2.0, 0.0)));
+    // @Tp sets T for the branch only.
+    let s = run("#tropism 1 0 0 0.5\naxiom: [@Tp(0,1,0)FF]FF");
+    assert!(close(s.segments[1].end, DVec3::new(0.0, 2.0, 0.0)));
+    assert!(s.segments[3].end.x > 0.4);
+}
+
+#[test]
+fn dollar_rolls_l_horizontal() {
+    // Heading +X after '-'(90) with a roll: '$' makes L horizontal and U point up.
+    let s = run("#angle 90\naxiom: -/(30)$F?L(0,0,0)?U(0,0,0)");
+    let left = DVec3::from_array(s.queries[0].value);
+    let up = DVec3::from_array(s.queries[1].value);
+    assert!(left.y.abs() < 1e-12, "{left}");
+    assert!(up.y > 0.99, "{up}");
+    assert!(close(s.end, DVec3::new(1.0, 0.0, 0.0)));
+}
+
+#[test]
+fn widths_and_colours() {
+    let s = run("#width 2\n#width_step 0.5\naxiom: F!F!(7)F'F;(5)F;F'(-2)F!(0)!F");
+    let widths: Vec<f64> = s.segments.iter().map(|x| x.width).collect();
+    let colours: Vec<u16> = s.segments.iter().map(|x| x.color).collect();
+    assert_eq!(widths, [2.0, 1.5, 7.0, 7.0, 7.0, 7.0, 7.0, 0.0]);
+    assert_eq!(colours, [0, 0, 0, 1, 5, 6, 4, 4]);
+}
+
+#[test]
+fn polygons_record_f_and_dots_but_not_g() {
+    let s = run("#angle 90\naxiom: {F+F+g.+F}F");
+    assert_eq!(s.polygons.len(), 1);
+    let points = &s.polygons[0].points;
+    let expected = [
+        DVec3::ZERO,
+        DVec3::Y,
+        DVec3::new(-1.0, 1.0, 0.0),
+        DVec3::new(-1.0, 0.0, 0.0),
+        DVec3::new(0.0, 0.0, 0.0),
+    ];
+    assert_eq!(points.len(), expected.len());
+    for (p, e) in points.iter().zip(expected) {
+        assert!(close(*p, e), "{p} vs {e}");
+    }
+    // Inside the polygon F traced the outline; only the F after '}' drew a segment.
+    assert_eq!(s.segments.len(), 1);
+}
+
+#[test]
+fn fig_1_25_bush_has_its_leaves() {
+    let src = "#angle 22.5\n#iterations 3\naxiom: A\nA -> [&FL!A]/////'[&FL!A]///////'[&FL!A]\nF -> S/////F\nS -> FL\nL -> ['''^^{-f+f+f-|-f+f+f}]";
+    let s = run(src);
+    assert!(!s.polygons.is_empty());
+    for p in &s.polygons {
+        assert_eq!(
+            p.points.len(),
+            7,
+            "a leaf is traced by six f moves from its base"
+        );
+        assert!(
+            close(p.points[0], p.points[6]),
+            "the outline returns to its base"
+        );
+        assert!(p.color >= 3, "leaves are coloured three steps on");
+    }
+}
+
+#[test]
+fn surfaces_spheres_and_move_to() {
+    let s = run("axiom: ~l(2)F@O(0.5)@M(3,4,5)~p@O");
+    assert_eq!(s.surfaces.len(), 2);
+    assert_eq!(
+        (s.surfaces[0].kind, s.surfaces[0].scale),
+        (SurfaceKind::Leaf, 2.0)
+    );
+    assert!(close(s.surfaces[1].origin, DVec3::new(3.0, 4.0, 5.0)));
+    assert_eq!(s.spheres.len(), 2);
+    assert!(close(s.spheres[0].center, DVec3::Y) && s.spheres[0].radius == 0.5);
+    assert_eq!(s.spheres[1].radius_width, Some(0.5));
+}
+
+#[test]
+fn axes_chain_segments_and_branches_start_new_axes() {
+    let s = run("#angle 30\naxiom: FF[+F]F-F");
+    let previous: Vec<Option<u32>> = s.segments.iter().map(|x| x.previous).collect();
+    // F F [+F] F -F: the branch is its own axis; the main axis goes on after it, through the turn.
+    assert_eq!(previous, [None, Some(0), None, Some(1), Some(3)]);
+    let s = run("axiom: FfF@M(0,5,0)F");
+    assert_eq!(
+        s.segments.iter().map(|x| x.previous).collect::<Vec<_>>(),
+        [None, None, None]
+    );
+}
+
+#[test]
+fn queries_read_the_turtle_where_they_stand() {
+    let s = run("#angle 90\naxiom: F?P(0,0,0)+F?H(0,0,0)");
+    assert_eq!(s.queries.len(), 2);
+    assert_eq!(s.queries[0].module, 1);
+    assert!(close(DVec3::from_array(s.queries[0].value), DVec3::Y));
+    assert!(close(DVec3::from_array(s.queries[1].value), DVec3::NEG_X));
+}
+
+#[test]
+fn smooth_marks_segments_between_gc_and_ge() {
+    let s = run("axiom: F@GcFF@GeF");
+    assert_eq!(
+        s.segments.iter().map(|x| x.smooth).collect::<Vec<_>>(),
+        [false, true, true, false]
+    );
+}
