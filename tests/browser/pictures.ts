@@ -107,3 +107,17 @@ export function foregroundExtent(picture: Picture): { width: number; height: num
   if (maxX < minX) return { width: 0, height: 0 };
   return { width: (maxX - minX + 1) / picture.width, height: (maxY - minY + 1) / picture.height };
 }
+
+/** Share (0..1) of the foreground pixels whose colour satisfies `test` (r, g, b in 0..255). */
+export function colourShare(picture: Picture, test: (r: number, g: number, b: number) => boolean): number {
+  const mask = foregroundMask(picture);
+  let foreground = 0;
+  let matching = 0;
+  for (let p = 0; p < mask.length; p++) {
+    if (!mask[p]) continue;
+    foreground++;
+    const i = 4 * p;
+    if (test(picture.data[i], picture.data[i + 1], picture.data[i + 2])) matching++;
+  }
+  return foreground === 0 ? 0 : matching / foreground;
+}

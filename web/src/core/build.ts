@@ -30,7 +30,7 @@ interface RawDiagnostic {
  */
 export function buildPlant(source: string, options: BuildOptions = {}): PlantBuild {
   assertReady();
-  const result = build(source, options.iterations ?? undefined);
+  const result = build(source, options.iterations ?? undefined, options.seed ?? undefined);
   try {
     return {
       ok: result.ok,
@@ -41,6 +41,9 @@ export function buildPlant(source: string, options: BuildOptions = {}): PlantBui
         normals: ownedArray(result.normals()),
         colors: ownedArray(result.colors()),
         indices: ownedArray(result.indices()),
+        ranges: ownedArray(result.ranges()),
+        lines: ownedArray(result.lines()),
+        lineColors: ownedArray(result.lineColors()),
       },
       derived: result.derived(DERIVED_PREVIEW_CHARS),
     };

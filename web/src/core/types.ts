@@ -38,6 +38,8 @@ export interface PlantStats {
   vertices: number;
   /** Mesh triangles (`mesh.indices.length / 3`). */
   triangles: number;
+  /** Segments drawn as lines because the model was too large to mesh (0 normally). */
+  lines: number;
   /** Derivation steps actually applied. */
   iterations: number;
   /** Bounding box of the plant in world units (+Y is up). */
@@ -49,19 +51,26 @@ export interface PlantStats {
  * memory, so they stay valid however the core's memory grows).
  *
  * The layout is defined once, on the core's `MeshBuffers` (`crate/src/mesh/mod.rs`); in short:
- * `positions`, `normals` and `colors` hold 3 floats per vertex, `indices` 3 per triangle.
+ * `positions`, `normals` and `colors` hold 3 floats per vertex, `indices` 3 per triangle;
+ * `ranges` holds (first triangle, derived-string module) pairs; `lines`/`lineColors` hold two
+ * 3-float ends per segment, only when the model was too large to mesh (the triangles are then empty).
  */
 export interface MeshBuffers {
   positions: Float32Array;
   normals: Float32Array;
   colors: Float32Array;
   indices: Uint32Array;
+  ranges: Uint32Array;
+  lines: Float32Array;
+  lineColors: Float32Array;
 }
 
 /** Options of {@link buildPlant}. */
 export interface BuildOptions {
   /** Derivation steps; omitted = the grammar's `#iterations` (0 when the grammar has none). */
   iterations?: number;
+  /** Seed of the random generator (a whole number); omitted = the grammar's `#seed`. */
+  seed?: number;
 }
 
 /** Everything one run of the pipeline (parse → resolve → derive → interpret → mesh) produced. */

@@ -58,15 +58,17 @@ describe('grammar highlighting', () => {
   });
 
   it('tells turtle commands from other modules', () => {
-    expect(tokens('f & ^ \\ / | G')).toEqual([
+    expect(tokens('f & ^ \\ / | G A')).toEqual([
       'turtle:f',
       'turtle:&',
       'turtle:^',
       'turtle:\\',
       'turtle:/',
       'turtle:|',
-      'module:G',
+      'turtle:G',
+      'module:A',
     ]);
+    expect(tokens('~l @O @Gc ?P X')).toEqual(['turtle:~l', 'turtle:@O', 'turtle:@Gc', 'turtle:?P', 'module:X']);
   });
 
   it('ends a production at a trailing comment', () => {

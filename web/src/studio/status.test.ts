@@ -7,6 +7,7 @@ const stats: PlantStats = {
   segments: 1,
   vertices: 1024,
   triangles: 2000,
+  lines: 0,
   iterations: 7,
   bounds: [
     [0, 0, 0],
@@ -31,6 +32,11 @@ describe('status line', () => {
       text: '12,345 modules · 1 segment · 1,024 vertices · 2,000 triangles · 3.1 ms',
     });
     expect(reportPlant(stats, [diagnostic('warning')], 42.4).text).toMatch(/· 42 ms · 1 warning$/);
+  });
+
+  it('says when a model too large to mesh is drawn as lines', () => {
+    const huge = { ...stats, vertices: 0, triangles: 0, lines: 2000000 };
+    expect(reportPlant(huge, [], 900).text).toMatch(/· too large to mesh: 2,000,000 segments drawn as lines$/);
   });
 
   it('reports errors and whether the last good plant is still shown', () => {

@@ -26,6 +26,7 @@ export function reportPlant(stats: PlantStats, diagnostics: readonly Diagnostic[
   ];
   const warnings = diagnostics.filter((d) => d.severity === 'warning').length;
   if (warnings > 0) parts.push(plural(warnings, 'warning'));
+  if (stats.lines > 0) parts.push(`too large to mesh: ${plural(stats.lines, 'segment')} drawn as lines`);
   return { state: 'ok', text: parts.join(' · ') };
 }
 

@@ -8,10 +8,24 @@ import type { MeshBuffers } from '../core';
  */
 export function plantGeometry(mesh: MeshBuffers): BufferGeometry {
   const geometry = new BufferGeometry();
+  if (mesh.indices.length === 0 && mesh.lines.length > 0) return lineGeometry(mesh);
   geometry.setAttribute('position', new BufferAttribute(mesh.positions, 3));
   geometry.setAttribute('normal', new BufferAttribute(mesh.normals, 3));
   geometry.setAttribute('color', new BufferAttribute(mesh.colors, 3));
   geometry.setIndex(new BufferAttribute(mesh.indices, 1));
+  geometry.computeBoundingBox();
+  geometry.computeBoundingSphere();
+  return geometry;
+}
+
+/**
+ * The fallback for models too large to mesh: the core's line ends and their colours, for a
+ * `LineSegments` object.
+ */
+export function lineGeometry(mesh: MeshBuffers): BufferGeometry {
+  const geometry = new BufferGeometry();
+  geometry.setAttribute('position', new BufferAttribute(mesh.lines, 3));
+  geometry.setAttribute('color', new BufferAttribute(mesh.lineColors, 3));
   geometry.computeBoundingBox();
   geometry.computeBoundingSphere();
   return geometry;

@@ -6,6 +6,8 @@ import {
   DoubleSide,
   GridHelper,
   HemisphereLight,
+  LineBasicMaterial,
+  LineSegments,
   Mesh,
   MeshStandardMaterial,
   PerspectiveCamera,
@@ -37,6 +39,8 @@ export class PlantView {
     metalness: 0,
   });
   private readonly plant = new Mesh(new BufferGeometry(), this.material);
+  /** The fallback for models too large to mesh: one coloured line per segment. */
+  private readonly lines = new LineSegments(new BufferGeometry(), new LineBasicMaterial({ vertexColors: true }));
   private grid: GridHelper | undefined;
   /** The camera has been framed on a plant with geometry; from then on it stays where the user puts it. */
   private framed = false;
@@ -55,7 +59,7 @@ export class PlantView {
     headlight.position.set(0.6, 0.9, 0.4);
     this.camera.add(headlight, headlight.target); // a light that follows the camera
     headlight.target.position.set(0, 0, -1);
-    this.scene.add(this.camera, this.plant);
+    this.scene.add(this.camera, this.plant, this.lines);
 
     this.controls = new OrbitControls(this.camera, this.renderer.domElement);
     this.controls.addEventListener('change', () => this.requestRender());
@@ -67,12 +71,22 @@ export class PlantView {
     this.resize();
   }
 
+  /** The bounding box of what is shown: the mesh, or the lines of the fallback. */
+  private visibleBox(): Box3 {
+    const geometry = this.plant.geometry.getAttribute('position') ? this.plant.geometry : this.lines.geometry;
+    return geometry.boundingBox ?? new Box3();
+  }
+
   /** Replaces the plant. The first plant with geometry is framed; later ones keep the camera. */
   showPlant(mesh: MeshBuffers): void {
-    const old = this.plant.geometry;
-    this.plant.geometry = plantGeometry(mesh);
-    old.dispose();
-    if (!this.framed && mesh.indices.length > 0) {
+    const asLines = mesh.indices.length === 0 && mesh.lines.length > 0;
+    const oldMesh = this.plant.geometry;
+    const oldLines = this.lines.geometry;
+    this.plant.geometry = asLines ? new BufferGeometry() : plantGeometry(mesh);
+    this.lines.geometry = asLines ? plantGeometry(mesh) : new BufferGeometry();
+    oldMesh.dispose();
+    oldLines.dispose();
+    if (!this.framed && (mesh.indices.length > 0 || asLines)) {
       this.framed = true;
       this.frame();
     }
@@ -81,7 +95,7 @@ export class PlantView {
 
   /** Points the camera at the whole plant and fits the ground grid under it. */
   frame(): void {
-    const box = this.plant.geometry.boundingBox ?? new Box3();
+    const box = this.visibleBox();
     const pose = framePose(box, this.camera.fov, this.camera.aspect);
     this.camera.position.copy(pose.position);
     this.camera.near = pose.near;
@@ -104,6 +118,8 @@ export class PlantView {
     this.darkScheme.removeEventListener('change', this.applyPalette);
     this.controls.dispose();
     this.plant.geometry.dispose();
+    this.lines.geometry.dispose();
+    this.lines.material.dispose();
     this.material.dispose();
     this.removeGrid();
     this.renderer.dispose();
@@ -133,7 +149,7 @@ export class PlantView {
     const palette = scenePalette(this.darkScheme.matches);
     this.scene.background = palette.background;
     if (this.grid) {
-      const box = this.plant.geometry.boundingBox ?? new Box3();
+      const box = this.visibleBox();
       this.placeGrid(box);
     }
     this.requestRender();
