@@ -183,27 +183,6 @@ impl Default for MeshOptions {
     }
 }
 
-/// Colours for the colour index (`'`, `;`), taken modulo the palette's length. Index 0 is the
-/// default stem colour; ABOP's Fig 1.25 colours its leaves three indices on.
-pub const PALETTE: &[[f32; 3]] = &[
-    [0.36, 0.45, 0.18], // 0 olive stem
-    [0.30, 0.50, 0.15], // 1 green stem
-    [0.22, 0.55, 0.14], // 2 fresh green
-    [0.18, 0.60, 0.16], // 3 leaf green
-    [0.30, 0.68, 0.20], // 4 light leaf green
-    [0.55, 0.35, 0.20], // 5 bark brown
-    [0.90, 0.82, 0.30], // 6 yellow
-    [0.88, 0.45, 0.60], // 7 petal pink
-    [0.95, 0.95, 0.92], // 8 white
-    [0.55, 0.25, 0.65], // 9 purple
-    [0.85, 0.30, 0.20], // 10 red
-    [0.40, 0.28, 0.16], // 11 dark bark
-];
-
-fn color(index: u16) -> [f32; 3] {
-    PALETTE[index as usize % PALETTE.len()]
-}
-
 /// Consecutive segments whose directions differ by more than this start a new tube: a ring at
 /// a sharper joint would pinch.
 const MAX_JOINT_ANGLE_COS: f64 = -0.2;
@@ -235,7 +214,7 @@ pub fn build_mesh(skeleton: &Skeleton, options: &MeshOptions) -> MeshBuffers {
         builder.tube(skeleton, &chain, !hidden_start);
     }
     for p in &skeleton.polygons {
-        builder.flat(&p.points, color(p.color), p.module);
+        builder.flat(&p.points, skeleton.color(p.color), p.module);
     }
     for s in &skeleton.surfaces {
         let kind = match s.kind {
@@ -243,11 +222,11 @@ pub fn build_mesh(skeleton: &Skeleton, options: &MeshOptions) -> MeshBuffers {
             crate::turtle::SurfaceKind::Petal => surfaces::SurfaceKind::Petal,
         };
         let points = surfaces::place(kind, s.origin, s.heading, s.left, s.scale);
-        builder.flat(&points, color(s.color), s.module);
+        builder.flat(&points, skeleton.color(s.color), s.module);
     }
     for s in &skeleton.spheres {
         let radius = s.radius_width.map_or(s.radius, |w| w * unit);
-        builder.sphere(s.center, radius, color(s.color), s.module);
+        builder.sphere(s.center, radius, skeleton.color(s.color), s.module);
     }
     builder.mesh
 }
@@ -408,7 +387,7 @@ impl Builder<'_> {
             let n = normals[k];
             let b = t.cross(n);
             let radius = 0.5 * w * self.unit;
-            let c = color(segments[samples[k].3].color);
+            let c = skeleton.color(segments[samples[k].3].color);
             let first = self.mesh.vertex_count() as u32;
             for &(sin, cos) in &ring {
                 let radial = n * cos + b * sin;
@@ -424,7 +403,7 @@ impl Builder<'_> {
                 samples[0].0,
                 -samples[0].1,
                 rings[0],
-                color(segments[0].color),
+                skeleton.color(segments[0].color),
                 true,
             );
         }
@@ -438,7 +417,7 @@ impl Builder<'_> {
             }
         }
         let last = samples.len() - 1;
-        let c = color(segments[segments.len() - 1].color);
+        let c = skeleton.color(segments[segments.len() - 1].color);
         self.cap(samples[last].0, samples[last].1, rings[last], c, false);
     }
 
@@ -511,7 +490,7 @@ impl Builder<'_> {
         for s in &skeleton.segments {
             for p in [s.start, s.end] {
                 self.mesh.lines.extend([p.x as f32, p.y as f32, p.z as f32]);
-                self.mesh.line_colors.extend(color(s.color));
+                self.mesh.line_colors.extend(skeleton.color(s.color));
             }
         }
     }

@@ -138,9 +138,37 @@ pub struct Settings {
     pub max_steps: u32,
     /// `#draw A B`: further modules that draw a segment like `F`.
     pub draw: Vec<ModuleId>,
+    /// The colours of the colour index (`'`, `;`), linear RGB in 0..=1: [`DEFAULT_PALETTE`]
+    /// with the entries `#color` set. An index past the end wraps modulo the length.
+    pub palette: Vec<[f32; 3]>,
     /// Span of the `#iterations` directive, where step-related diagnostics point.
     pub iterations_span: Option<Span>,
 }
+
+/// The colour index's default colours: a ramp from bark brown (0) through olive and greens to
+/// light green (7), then flower and fruit colours. Index 0 is the turtle's starting colour, so
+/// stems start brown and `'` steps them towards leaf green.
+pub const DEFAULT_PALETTE: [[f32; 3]; 16] = [
+    [0.40, 0.27, 0.15], // 0 bark brown
+    [0.44, 0.34, 0.17], // 1 light bark
+    [0.43, 0.42, 0.18], // 2 olive
+    [0.36, 0.48, 0.16], // 3 green olive
+    [0.27, 0.54, 0.15], // 4 green
+    [0.20, 0.58, 0.16], // 5 leaf green
+    [0.28, 0.66, 0.20], // 6 fresh green
+    [0.48, 0.74, 0.28], // 7 light green
+    [0.92, 0.80, 0.28], // 8 yellow
+    [0.93, 0.55, 0.20], // 9 orange
+    [0.82, 0.22, 0.18], // 10 red
+    [0.90, 0.50, 0.65], // 11 pink
+    [0.55, 0.28, 0.68], // 12 purple
+    [0.30, 0.45, 0.85], // 13 blue
+    [0.95, 0.95, 0.92], // 14 white
+    [0.50, 0.50, 0.50], // 15 grey
+];
+
+/// The largest colour index `#color` may set.
+pub const MAX_COLOR_INDEX: usize = 255;
 
 /// Limits that protect the page from grammars that explode (overridable per grammar).
 pub const DEFAULT_MAX_MODULES: usize = 5_000_000;
@@ -162,6 +190,7 @@ impl Default for Settings {
             max_modules: DEFAULT_MAX_MODULES,
             max_steps: DEFAULT_MAX_STEPS,
             draw: Vec::new(),
+            palette: DEFAULT_PALETTE.to_vec(),
             iterations_span: None,
         }
     }

@@ -3,7 +3,7 @@
 
 use super::{
     Alphabet, Model, ModuleId, PatternItem, PatternModule, Production, Program, RandomVariable,
-    RuleSet, Scope, Settings, SuccessorModule, DEFAULT_MAX_DEPTH,
+    RuleSet, Scope, Settings, SuccessorModule, DEFAULT_MAX_DEPTH, MAX_COLOR_INDEX,
 };
 use crate::diagnostics::Diagnostic;
 use crate::syntax::{
@@ -67,7 +67,7 @@ pub fn resolve(file: &SourceFile) -> (Option<Model>, Vec<Diagnostic>) {
     for d in &file.directives {
         let repeatable = matches!(
             d.name.as_str(),
-            "module" | "draw" | "define" | "random" | "ignore"
+            "module" | "draw" | "define" | "random" | "ignore" | "color" | "colour"
         );
         if let Some(previous) = seen.iter().find(|p| p.name == d.name && !repeatable) {
             r.diagnostics.push(Diagnostic::warning(
@@ -90,6 +90,7 @@ pub fn resolve(file: &SourceFile) -> (Option<Model>, Vec<Diagnostic>) {
                     settings.tropism = t;
                 }
             }
+            "color" | "colour" => r.color(d, &mut settings.palette),
             "iterations" => {
                 if let Some(v) = r.whole(d, u32::MAX as u64) {
                     settings.iterations = v as u32;
@@ -561,11 +562,10 @@ impl Resolver {
         program.eval(&mut env).map_err(|e| e.message)
     }
 
-    /// `#tropism x y z e`: four numbers (or constant expressions without spaces).
-    fn tropism(&mut self, d: &Directive) -> Option<(glam::DVec3, f64)> {
-        let words: Vec<&str> = d.args.split_whitespace().collect();
+    /// The whitespace-separated numbers (or constant expressions without spaces) of a directive.
+    fn numbers(&mut self, d: &Directive) -> Option<Vec<f64>> {
         let mut values = Vec::new();
-        for word in &words {
+        for word in d.args.split_whitespace() {
             let offset = word.as_ptr() as usize - d.args.as_ptr() as usize;
             let part = Directive {
                 args: word.to_string(),
@@ -574,6 +574,12 @@ impl Resolver {
             };
             values.push(self.number(&part)?);
         }
+        Some(values)
+    }
+
+    /// `#tropism x y z e`: four numbers.
+    fn tropism(&mut self, d: &Directive) -> Option<(glam::DVec3, f64)> {
+        let values = self.numbers(d)?;
         if values.len() != 4 {
             self.directive_error(
                 "E0207",
@@ -586,6 +592,54 @@ impl Resolver {
             return None;
         }
         Some((glam::DVec3::new(values[0], values[1], values[2]), values[3]))
+    }
+
+    /// `#color i r g b` sets one entry of the palette; `#color i j r g b r g b` sets entries
+    /// i..=j to a linear ramp between two colours. Components are 0..=255, indices 0..=255.
+    fn color(&mut self, d: &Directive, palette: &mut Vec<[f32; 3]>) {
+        let Some(values) = self.numbers(d) else {
+            return;
+        };
+        let usage = "#color needs 'index r g b' or 'first last r g b r g b' \
+                     (indices 0 to 255, components 0 to 255)";
+        let (first, last, from, to) = match values.as_slice() {
+            [i, r, g, b] => (*i, *i, [*r, *g, *b], [*r, *g, *b]),
+            [i, j, r0, g0, b0, r1, g1, b1] => (*i, *j, [*r0, *g0, *b0], [*r1, *g1, *b1]),
+            _ => {
+                self.directive_error(
+                    "E0208",
+                    d,
+                    format!("{usage}, found {} numbers", values.len()),
+                );
+                return;
+            }
+        };
+        let index_ok = |v: f64| v >= 0.0 && v.fract() == 0.0 && v <= MAX_COLOR_INDEX as f64;
+        let component_ok = |v: &f64| (0.0..=255.0).contains(v);
+        if !index_ok(first)
+            || !index_ok(last)
+            || last < first
+            || !from.iter().all(component_ok)
+            || !to.iter().all(component_ok)
+        {
+            self.directive_error("E0208", d, format!("{usage}, with first <= last"));
+            return;
+        }
+        let (first, last) = (first as usize, last as usize);
+        // Entries between the old end and `first` keep the colours they had by wrapping.
+        let old = palette.len();
+        while palette.len() <= last {
+            let wrapped = palette[palette.len() % old];
+            palette.push(wrapped);
+        }
+        for (offset, entry) in palette[first..=last].iter_mut().enumerate() {
+            let t = if last == first {
+                0.0
+            } else {
+                offset as f64 / (last - first) as f64
+            };
+            *entry = std::array::from_fn(|k| ((from[k] + (to[k] - from[k]) * t) / 255.0) as f32);
+        }
     }
 
     fn directive_error(&mut self, code: &'static str, d: &Directive, message: String) {

@@ -89,6 +89,21 @@ pub struct Skeleton {
     pub queries: Vec<QueryValue>,
     /// Where the turtle stood after the last module.
     pub end: DVec3,
+    /// The colours of the colour indices (the grammar's palette); empty means
+    /// [`crate::model::DEFAULT_PALETTE`].
+    pub palette: Vec<[f32; 3]>,
+}
+
+impl Skeleton {
+    /// The colour of a colour index: the palette entry, wrapping modulo the palette's length.
+    pub fn color(&self, index: u16) -> [f32; 3] {
+        let palette: &[[f32; 3]] = if self.palette.is_empty() {
+            &crate::model::DEFAULT_PALETTE
+        } else {
+            &self.palette
+        };
+        palette[index as usize % palette.len()]
+    }
 }
 
 /// The world's up direction, for `$` (ABOP's V).
@@ -196,7 +211,10 @@ pub fn interpret(model: &Model, string: &LString) -> Skeleton {
     };
     let mut stack: Vec<TurtleState> = Vec::new();
     let mut open_polygons: Vec<(Vec<DVec3>, u16, u32)> = Vec::new();
-    let mut skeleton = Skeleton::default();
+    let mut skeleton = Skeleton {
+        palette: settings.palette.clone(),
+        ..Skeleton::default()
+    };
 
     for (index, id) in string.ids.iter().enumerate() {
         let Some(command) = table[id.index()] else {

@@ -236,3 +236,20 @@ fn smooth_marks_segments_between_gc_and_ge() {
         [false, true, true, false]
     );
 }
+
+#[test]
+fn color_sets_palette_entries_and_ramps() {
+    let s = run("#color 2 255 0 0\n#color 20 22 0 0 0 100 200 255\naxiom: F");
+    // One entry, in 0..=1.
+    assert_eq!(s.color(2), [1.0, 0.0, 0.0]);
+    // A ramp: the ends and the middle, linear in each component.
+    assert_eq!(s.color(20), [0.0, 0.0, 0.0]);
+    assert_eq!(s.color(22), [100.0 / 255.0, 200.0 / 255.0, 1.0]);
+    assert_eq!(s.color(21), [50.0 / 255.0, 100.0 / 255.0, 127.5 / 255.0]);
+    // Entries the ramp skipped over keep the colours they had by wrapping; untouched ones stay.
+    let default = crate::model::DEFAULT_PALETTE;
+    assert_eq!(s.color(17), default[17 % default.len()]);
+    assert_eq!(s.color(0), default[0]);
+    // Past the end, indices wrap modulo the palette's length (23 here).
+    assert_eq!(s.color(23 + 2), [1.0, 0.0, 0.0]);
+}
