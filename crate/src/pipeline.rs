@@ -36,6 +36,11 @@ pub struct Build {
     pub skeleton: Skeleton,
     pub mesh: MeshBuffers,
     pub stats: Stats,
+    /// Derivation steps run.
+    pub iterations: u32,
+    /// For each module of the string the turtle read, the module of `string` it came from (empty
+    /// when they are the same string).
+    pub turtle_origin: Vec<u32>,
 }
 
 impl Build {
@@ -50,6 +55,28 @@ impl Build {
             .as_ref()
             .map(|m| self.string.to_text(&m.alphabet))
             .unwrap_or_default()
+    }
+
+    /// Runs the mesh stage again on the kept skeleton, with other mesh options (a view option
+    /// such as the number of sides or smooth axes needs no new derivation), and updates the stats.
+    pub fn remesh(&mut self, options: &MeshOptions) {
+        self.mesh = mesh::build_mesh(&self.skeleton, options);
+        // Provenance ranges name modules of the derived string, not of the homomorphism's output.
+        if !self.turtle_origin.is_empty() {
+            for pair in self.mesh.ranges.chunks_exact_mut(2) {
+                pair[1] = self
+                    .turtle_origin
+                    .get(pair[1] as usize)
+                    .copied()
+                    .unwrap_or(pair[1]);
+            }
+        }
+        self.stats = Stats::new(
+            self.string.len(),
+            self.skeleton.segments.len(),
+            self.iterations,
+            &self.mesh,
+        );
     }
 
     /// Diagnostics with line and column, in source order.
@@ -93,7 +120,7 @@ pub fn build(source: &str, options: &BuildOptions) -> Build {
             .map(|q| (q.module, q.value))
             .collect()
     };
-    let turtle_origin = match derive::derive_tracked(
+    result.turtle_origin = match derive::derive_tracked(
         &model,
         &DeriveOptions {
             steps,
@@ -118,22 +145,8 @@ pub fn build(source: &str, options: &BuildOptions) -> Build {
         &model,
         result.interpreted.as_ref().unwrap_or(&result.string),
     );
-    result.mesh = mesh::build_mesh(&result.skeleton, &options.mesh);
-    // Provenance ranges name modules of the derived string, not of the homomorphism's output.
-    if !turtle_origin.is_empty() {
-        for pair in result.mesh.ranges.chunks_exact_mut(2) {
-            pair[1] = turtle_origin
-                .get(pair[1] as usize)
-                .copied()
-                .unwrap_or(pair[1]);
-        }
-    }
-    result.stats = Stats::new(
-        result.string.len(),
-        result.skeleton.segments.len(),
-        steps,
-        &result.mesh,
-    );
+    result.iterations = steps;
+    result.remesh(&options.mesh);
     result.model = Some(model);
     result
 }

@@ -1,6 +1,7 @@
 //! The wasm boundary: the only file with `#[wasm_bindgen]`. A thin layer over [`crate::pipeline`];
 //! the TypeScript facade in `web/src/core/` mirrors it with idiomatic types. Bulk data leaves as
-//! flat typed arrays (layout: [`crate::mesh::MeshBuffers`]), small structured data as JSON.
+//! flat typed arrays (layout: [`crate::mesh::MeshBuffers`]), each copied once out of wasm memory
+//! into a fresh JavaScript array (`js_sys::Float32Array::from`); small structured data as JSON.
 #![deny(clippy::unwrap_used)]
 
 use crate::pipeline::{self, BuildOptions};
@@ -20,21 +21,37 @@ pub fn commands() -> String {
 
 /// Runs the whole pipeline: parse -> resolve -> derive -> interpret -> mesh.
 /// `iterations`: `None` takes the grammar's `#iterations`; `seed`: `None` takes `#seed` (a whole
-/// number from 0 to 2^53; other values are ignored).
+/// number from 0 to 2^53; other values are ignored); `sides` (3 to 64, default 6) and
+/// `smooth_all` (default false) are the mesh's view options.
 #[wasm_bindgen]
-pub fn build(source: &str, iterations: Option<u32>, seed: Option<f64>) -> Build {
+pub fn build(
+    source: &str,
+    iterations: Option<u32>,
+    seed: Option<f64>,
+    sides: Option<u32>,
+    smooth_all: Option<bool>,
+) -> Build {
     let seed = seed.filter(|s| {
         s.is_finite() && *s >= 0.0 && s.fract() == 0.0 && *s <= 9.007_199_254_740_992e15
     });
     let options = BuildOptions {
         iterations,
         seed: seed.map(|s| s as u64),
-        ..BuildOptions::default()
+        mesh: mesh_options(sides, smooth_all),
     };
     let inner = pipeline::build(source, &options);
     let diagnostics =
         serde_json::to_string(&inner.located_diagnostics(source)).unwrap_or_else(|_| "[]".into());
     Build { inner, diagnostics }
+}
+
+fn mesh_options(sides: Option<u32>, smooth_all: Option<bool>) -> crate::mesh::MeshOptions {
+    let defaults = crate::mesh::MeshOptions::default();
+    crate::mesh::MeshOptions {
+        sides: sides.map_or(defaults.sides, |s| s.clamp(3, 64)),
+        smooth_all: smooth_all.unwrap_or(defaults.smooth_all),
+        ..defaults
+    }
 }
 
 /// The result of [`build`]. Free it with `.free()` once its arrays are copied out.
@@ -63,43 +80,51 @@ impl Build {
         self.inner.stats.to_json()
     }
 
-    pub fn positions(&self) -> Vec<f32> {
-        self.inner.mesh.positions.clone()
+    pub fn positions(&self) -> js_sys::Float32Array {
+        js_sys::Float32Array::from(&self.inner.mesh.positions[..])
     }
 
-    pub fn normals(&self) -> Vec<f32> {
-        self.inner.mesh.normals.clone()
+    pub fn normals(&self) -> js_sys::Float32Array {
+        js_sys::Float32Array::from(&self.inner.mesh.normals[..])
     }
 
-    pub fn colors(&self) -> Vec<f32> {
-        self.inner.mesh.colors.clone()
+    pub fn colors(&self) -> js_sys::Float32Array {
+        js_sys::Float32Array::from(&self.inner.mesh.colors[..])
     }
 
-    pub fn indices(&self) -> Vec<u32> {
-        self.inner.mesh.indices.clone()
+    pub fn indices(&self) -> js_sys::Uint32Array {
+        js_sys::Uint32Array::from(&self.inner.mesh.indices[..])
     }
 
     /// Provenance: (first triangle, module) pairs, sorted (layout: `MeshBuffers::ranges`); the
     /// module is an index into the derived string.
-    pub fn ranges(&self) -> Vec<u32> {
-        self.inner.mesh.ranges.clone()
+    pub fn ranges(&self) -> js_sys::Uint32Array {
+        js_sys::Uint32Array::from(&self.inner.mesh.ranges[..])
     }
 
     /// For each module of the derived string, the index of the production that made it in the
     /// last step, or 4294967295 (u32::MAX) when it was copied.
-    pub fn origins(&self) -> Vec<u32> {
-        self.inner.origin.clone()
+    pub fn origins(&self) -> js_sys::Uint32Array {
+        js_sys::Uint32Array::from(&self.inner.origin[..])
+    }
+
+    /// Meshes the kept skeleton again with `sides` sides per tube (3 to 64) and, when
+    /// `smooth_all`, every axis as a smooth generalized cylinder: view options that need no new
+    /// derivation. The arrays and stats change; the derived string does not.
+    pub fn remesh(&mut self, sides: u32, smooth_all: bool) {
+        self.inner
+            .remesh(&mesh_options(Some(sides), Some(smooth_all)));
     }
 
     /// Line ends (x, y, z each) when the model was too large to mesh; empty otherwise.
-    pub fn lines(&self) -> Vec<f32> {
-        self.inner.mesh.lines.clone()
+    pub fn lines(&self) -> js_sys::Float32Array {
+        js_sys::Float32Array::from(&self.inner.mesh.lines[..])
     }
 
     /// A colour (r, g, b) per line end.
     #[wasm_bindgen(js_name = lineColors)]
-    pub fn line_colors(&self) -> Vec<f32> {
-        self.inner.mesh.line_colors.clone()
+    pub fn line_colors(&self) -> js_sys::Float32Array {
+        js_sys::Float32Array::from(&self.inner.mesh.line_colors[..])
     }
 
     /// The derived string, cut after `max_chars` characters with `…` appended when longer.

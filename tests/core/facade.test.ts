@@ -144,4 +144,20 @@ describe('buildPlant on a grammar with an error', () => {
     expect(plant.stats.segments).toBe(4);
     expect(plant.derived).toBe('FFFF');
   });
+
+  it('meshes with the view options: more sides, and every axis smooth', () => {
+    const source = 'axiom: F+F+F';
+    const plain = buildPlant(source);
+    const sides = buildPlant(source, { sides: 12 });
+    // One axis of three segments (joints share rings): 4 rings of `sides` vertices, and 2 caps of
+    // `sides` vertices and a centre each.
+    expect(plain.stats.segments).toBe(3);
+    expect(plain.stats.vertices).toBe(4 * 6 + 2 * (6 + 1));
+    expect(sides.stats.vertices).toBe(4 * 12 + 2 * (12 + 1));
+    const bent = '#angle 20\naxiom: F+F+F+F';
+    const sharp = buildPlant(bent);
+    const smooth = buildPlant(bent, { smoothAll: true });
+    expect(smooth.stats.segments).toBe(sharp.stats.segments);
+    expect(smooth.stats.vertices, 'a smooth axis has rings between the joints').toBeGreaterThan(sharp.stats.vertices);
+  });
 });

@@ -30,7 +30,13 @@ interface RawDiagnostic {
  */
 export function buildPlant(source: string, options: BuildOptions = {}): PlantBuild {
   assertReady();
-  const result = build(source, options.iterations ?? undefined, options.seed ?? undefined);
+  const result = build(
+    source,
+    options.iterations ?? undefined,
+    options.seed ?? undefined,
+    options.sides ?? undefined,
+    options.smoothAll ?? undefined,
+  );
   try {
     return {
       ok: result.ok,

@@ -71,6 +71,10 @@ export interface BuildOptions {
   iterations?: number;
   /** Seed of the random generator (a whole number); omitted = the grammar's `#seed`. */
   seed?: number;
+  /** Sides of each branch tube, 3 to 64; omitted = 6. */
+  sides?: number;
+  /** Draw every axis as a smooth generalized cylinder, not only those inside `@Gc … @Ge`. */
+  smoothAll?: boolean;
 }
 
 /** Everything one run of the pipeline (parse → resolve → derive → interpret → mesh) produced. */
