@@ -32,6 +32,8 @@ interface StudioElements {
   status: HTMLElement;
   version: HTMLElement;
   iterations: HTMLInputElement;
+  sides: HTMLSelectElement;
+  smoothAll: HTMLInputElement;
   frame: HTMLButtonElement;
   staleBadge: HTMLElement;
 }
@@ -49,6 +51,8 @@ function studioElements(): StudioElements {
     status: byId('status', HTMLElement),
     version: byId('core-version', HTMLElement),
     iterations: byId('iterations', HTMLInputElement),
+    sides: byId('sides', HTMLSelectElement),
+    smoothAll: byId('smooth-all', HTMLInputElement),
     frame: byId('frame', HTMLButtonElement),
     staleBadge: byId('stale-badge', HTMLElement),
   };
@@ -87,7 +91,11 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   const buildOf = (text: string): TimedBuild | undefined => {
     if (crashed) return undefined;
     try {
-      return builder.build(text, iterationsOverride(els.iterations));
+      return builder.build(text, {
+        iterations: iterationsOverride(els.iterations),
+        sides: Number(els.sides.value),
+        smoothAll: els.smoothAll.checked,
+      });
     } catch (error) {
       crashed = true;
       console.error('Meristem core crashed:', error);
@@ -132,6 +140,9 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
       editor?.refreshDiagnostics();
     }, REBUILD_DELAY_MS),
   );
+  // View options re-mesh the plant at once (the editor's diagnostics do not depend on them).
+  els.sides.addEventListener('change', rebuild);
+  els.smoothAll.addEventListener('change', rebuild);
   els.frame.addEventListener('click', () => view.frame());
   rebuild();
 }

@@ -1,5 +1,5 @@
 // Builds with a one-entry cache, so the 3D view and the editor's linter share one build per edit.
-import { buildPlant, type PlantBuild } from '../core';
+import { buildPlant, type BuildOptions, type PlantBuild } from '../core';
 
 /** A build and how long it took. */
 export interface TimedBuild {
@@ -9,19 +9,20 @@ export interface TimedBuild {
 }
 
 /**
- * Remembers the last build: asking again for the same source and iterations returns it without
+ * Remembers the last build: asking again for the same source and options returns it without
  * running the core a second time.
  */
 export class PlantBuilder {
-  private last: { source: string; iterations: number | undefined; result: TimedBuild } | undefined;
+  private last: { source: string; key: string; result: TimedBuild } | undefined;
 
-  /** The build of `source` with `iterations` (undefined: the grammar's own). May throw if the core crashes. */
-  build(source: string, iterations: number | undefined): TimedBuild {
-    if (this.last && this.last.source === source && this.last.iterations === iterations) return this.last.result;
+  /** The build of `source` with `options` (iterations, seed, view options). May throw if the core crashes. */
+  build(source: string, options: BuildOptions = {}): TimedBuild {
+    const key = JSON.stringify([options.iterations, options.seed, options.sides, options.smoothAll]);
+    if (this.last && this.last.source === source && this.last.key === key) return this.last.result;
     const start = performance.now();
-    const build = buildPlant(source, { iterations });
+    const build = buildPlant(source, options);
     const result = { build, millis: performance.now() - start };
-    this.last = { source, iterations, result };
+    this.last = { source, key, result };
     return result;
   }
 }
