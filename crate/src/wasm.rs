@@ -19,6 +19,12 @@ pub fn commands() -> String {
     crate::turtle::commands_json()
 }
 
+/// The directive table (`crate::model::directives::DIRECTIVES`) as JSON: `[{name, args, doc}]`.
+#[wasm_bindgen]
+pub fn directives() -> String {
+    crate::model::directives::directives_json()
+}
+
 /// Runs the whole pipeline: parse -> resolve -> derive -> interpret -> mesh.
 /// `iterations`: `None` takes the grammar's `#iterations`; `seed`: `None` takes `#seed` (a whole
 /// number from 0 to 2^53; other values are ignored); `sides` (3 to 64, default 6) and

@@ -106,6 +106,33 @@ describe('the studio', () => {
     expect(problems).toEqual([]);
   });
 
+  it('completes directives and commands from the core tables, and Escape leaves the text as typed', async () => {
+    const content = page.getByTestId('editor').locator('.cm-content');
+    await content.click();
+    await page.keyboard.press('Control+End');
+    const before = await generation();
+    await page.keyboard.press('Enter');
+    await page.keyboard.type('#tro');
+    const list = page.locator('.cm-tooltip-autocomplete');
+    await list.waitFor({ state: 'visible' });
+    expect(await list.textContent()).toContain('#tropism');
+    await page.keyboard.press('Enter'); // accept
+    expect(await page.locator('.cm-line').last().textContent()).toBe('#tropism ');
+    // Undo the experiment: the example is unchanged and builds as before.
+    await page.keyboard.press('Control+z');
+    await page.keyboard.press('Control+z');
+    await page.keyboard.press('Control+z');
+    await page.keyboard.press('Escape');
+    await page.waitForFunction((text) => {
+      const lines = [...document.querySelectorAll('[data-testid=editor] .cm-line')].map((l) => l.textContent ?? '');
+      return lines.join('\n').trimEnd() === text.trimEnd();
+    }, EXAMPLE);
+    // The half-typed directive was an error (stale plant); the restored text builds again.
+    await nextBuild(before);
+    await page.waitForFunction(() => document.querySelector('[data-testid=status]')?.getAttribute('data-state') === 'ok');
+    expect(problems).toEqual([]);
+  });
+
   it('redraws the plant when the grammar is edited', async () => {
     const angle = /^#angle[ \t]+(\S+)[ \t]*$/m.exec(EXAMPLE);
     expect(angle, 'the example sets #angle').not.toBeNull();

@@ -1,7 +1,7 @@
 // The studio page: wires the grammar editor, the core and the 3D view together.
 // Edits rebuild the plant after a short pause; a grammar with errors keeps the last good plant.
 import './style.css';
-import { coreVersion, initCore, turtleCommands, type PlantStats } from './core';
+import { coreVersion, grammarDirectives, initCore, turtleCommands, type PlantStats } from './core';
 import { createGrammarEditor, type GrammarEditor } from './editor';
 import { PlantView } from './view';
 import { PlantBuilder, debounce, reportErrors, reportPlant, type StatusReport, type TimedBuild } from './studio';
@@ -132,6 +132,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     onChange: scheduleRebuild,
     diagnose: (text) => buildOf(text)?.build.diagnostics ?? [],
     commands: turtleCommands(),
+    directives: grammarDirectives(),
   });
   els.iterations.addEventListener(
     'input',

@@ -2,7 +2,7 @@
 // Invariant: no other TypeScript imports crate/pkg; everything else uses these names.
 export { initCore, coreVersion } from './init';
 export { buildPlant } from './build';
-export { turtleCommands, type TurtleCommand } from './commands';
+export { grammarDirectives, turtleCommands, type GrammarDirective, type TurtleCommand } from './commands';
 export { byteOffsetToUtf16 } from './offsets';
 export {
   DERIVED_PREVIEW_CHARS,

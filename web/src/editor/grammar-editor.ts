@@ -2,7 +2,8 @@
 import { basicSetup } from 'codemirror';
 import { EditorView } from '@codemirror/view';
 import { forceLinting } from '@codemirror/lint';
-import type { TurtleCommand } from '../core';
+import type { GrammarDirective, TurtleCommand } from '../core';
+import { grammarCompletion } from './completion';
 import { grammarSupport } from './language';
 import { commandHover } from './hover';
 import { grammarLinting, type Diagnose } from './diagnostics';
@@ -18,8 +19,10 @@ export interface GrammarEditorOptions {
   onChange: (text: string) => void;
   /** Supplies the diagnostics shown for a text. */
   diagnose: Diagnose;
-  /** The core's turtle command table: drives highlighting and hover docs. */
+  /** The core's turtle command table: drives highlighting, completion and hover docs. */
   commands: readonly TurtleCommand[];
+  /** The core's directive table: drives completion. */
+  directives: readonly GrammarDirective[];
 }
 
 /** A grammar editor on the page. */
@@ -41,6 +44,7 @@ export function createGrammarEditor(options: GrammarEditorOptions): GrammarEdito
       basicSetup,
       grammarSupport(options.commands),
       commandHover(options.commands),
+      grammarCompletion(options.commands, options.directives),
       grammarLinting(options.diagnose),
       studioEditorTheme,
       EditorView.lineWrapping,
