@@ -1,6 +1,10 @@
 //! The whole pipeline, parse -> resolve -> derive -> interpret -> mesh, as one call shared by the
 //! command-line tool and the wasm boundary. Each stage's output is kept in the [`Build`], so callers
 //! can show the derived string, the geometry and every diagnostic.
+//!
+//! The core reads no clock: a caller that has one passes it to [`build_with_clock`] (the wasm
+//! boundary passes JavaScript's `performance.now`, the CLI `std::time::Instant`), and the time of
+//! each stage lands in [`Build::timings`].
 
 use crate::derive::{self, DeriveOptions};
 use crate::diagnostics::{has_errors, Diagnostic, LineIndex, LocatedDiagnostic};
@@ -9,6 +13,7 @@ use crate::mesh::{self, MeshBuffers, MeshOptions};
 use crate::model::{self, LString, Model};
 use crate::syntax;
 use crate::turtle::{self, Skeleton};
+use serde::Serialize;
 
 /// Options of one build; `None` fields take the grammar's own settings.
 #[derive(Clone, Debug, Default)]
@@ -41,6 +46,65 @@ pub struct Build {
     /// For each module of the string the turtle read, the module of `string` it came from (empty
     /// when they are the same string).
     pub turtle_origin: Vec<u32>,
+    /// How long each stage took, when the caller passed a clock ([`build_with_clock`]).
+    pub timings: Option<StageTimings>,
+}
+
+/// Wall-clock time of each stage of one build, in the unit of the caller's clock (milliseconds
+/// for the studio and the CLI). A stage that did not run (after an error) took 0.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct StageTimings {
+    /// Parsing the text and resolving it into a model.
+    pub parse_resolve: f64,
+    /// Deriving the string (including the turtle runs that feed query modules).
+    pub derive: f64,
+    /// Interpreting the string with the turtle into a skeleton.
+    pub interpret: f64,
+    /// Building the mesh from the skeleton.
+    pub mesh: f64,
+}
+
+impl StageTimings {
+    /// One JSON object, e.g. `{"parseResolve":0.1,"derive":0.4,"interpret":0.9,"mesh":2.5}`.
+    pub fn to_json(&self) -> String {
+        serde_json::to_string(self).unwrap_or_else(|_| "{}".into())
+    }
+}
+
+/// Reads a caller's clock between stages; without a clock it measures nothing.
+struct Stopwatch<'a> {
+    clock: Option<&'a mut dyn FnMut() -> f64>,
+    last: f64,
+    timings: StageTimings,
+}
+
+impl<'a> Stopwatch<'a> {
+    fn new(mut clock: Option<&'a mut dyn FnMut() -> f64>) -> Self {
+        let last = clock.as_mut().map_or(0.0, |now| now());
+        Stopwatch {
+            clock,
+            last,
+            timings: StageTimings::default(),
+        }
+    }
+
+    /// The time since the previous lap (or the start).
+    fn lap(&mut self) -> f64 {
+        let Some(now) = self.clock.as_mut() else {
+            return 0.0;
+        };
+        let time = now();
+        let elapsed = (time - self.last).max(0.0);
+        self.last = time;
+        elapsed
+    }
+
+    fn finish(self, build: &mut Build) {
+        if self.clock.is_some() {
+            build.timings = Some(self.timings);
+        }
+    }
 }
 
 impl Build {
@@ -90,11 +154,37 @@ impl Build {
 
 /// Runs every stage on `source`.
 pub fn build(source: &str, options: &BuildOptions) -> Build {
+    build_with_clock_option(source, options, None)
+}
+
+/// Runs every stage on `source`, reading `clock` (any monotonic time, e.g. milliseconds) before
+/// and after each stage to fill [`Build::timings`].
+pub fn build_with_clock(
+    source: &str,
+    options: &BuildOptions,
+    clock: &mut dyn FnMut() -> f64,
+) -> Build {
+    build_with_clock_option(source, options, Some(clock))
+}
+
+fn build_with_clock_option(
+    source: &str,
+    options: &BuildOptions,
+    clock: Option<&mut dyn FnMut() -> f64>,
+) -> Build {
+    let mut watch = Stopwatch::new(clock);
+    let mut result = run_stages(source, options, &mut watch);
+    watch.finish(&mut result);
+    result
+}
+
+fn run_stages(source: &str, options: &BuildOptions, watch: &mut Stopwatch) -> Build {
     let mut result = Build::default();
     let (file, diagnostics) = syntax::parse(source);
     result.diagnostics = diagnostics;
     let (model, diagnostics) = model::resolve(&file);
     result.diagnostics.extend(diagnostics);
+    watch.timings.parse_resolve = watch.lap();
     let Some(model) = model else { return result };
     if !result.ok() {
         result.model = Some(model);
@@ -138,15 +228,84 @@ pub fn build(source: &str, options: &BuildOptions) -> Build {
         Err(diagnostic) => {
             result.diagnostics.push(diagnostic);
             result.model = Some(model);
+            watch.timings.derive = watch.lap();
             return result;
         }
     };
+    watch.timings.derive = watch.lap();
     result.skeleton = turtle::interpret(
         &model,
         result.interpreted.as_ref().unwrap_or(&result.string),
     );
+    watch.timings.interpret = watch.lap();
     result.iterations = steps;
     result.remesh(&options.mesh);
+    watch.timings.mesh = watch.lap();
     result.model = Some(model);
     result
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A clock that advances by one unit each time it is read.
+    fn ticking() -> impl FnMut() -> f64 {
+        let mut t = 0.0;
+        move || {
+            t += 1.0;
+            t
+        }
+    }
+
+    #[test]
+    fn without_a_clock_there_are_no_timings() {
+        assert_eq!(build("axiom: F", &BuildOptions::default()).timings, None);
+    }
+
+    #[test]
+    fn a_clock_is_read_once_around_each_stage() {
+        let mut clock = ticking();
+        let result = build_with_clock("axiom: F\nF -> FF", &BuildOptions::default(), &mut clock);
+        let timings = result.timings.expect("timings");
+        assert_eq!(
+            timings,
+            StageTimings {
+                parse_resolve: 1.0,
+                derive: 1.0,
+                interpret: 1.0,
+                mesh: 1.0
+            }
+        );
+        assert_eq!(
+            timings.to_json(),
+            r#"{"parseResolve":1.0,"derive":1.0,"interpret":1.0,"mesh":1.0}"#
+        );
+    }
+
+    #[test]
+    fn stages_after_an_error_take_no_time() {
+        let mut clock = ticking();
+        let result = build_with_clock("axiom: F[", &BuildOptions::default(), &mut clock);
+        assert!(!result.ok());
+        let timings = result.timings.expect("timings");
+        assert_eq!(timings.parse_resolve, 1.0);
+        assert_eq!(
+            (timings.derive, timings.interpret, timings.mesh),
+            (0.0, 0.0, 0.0)
+        );
+    }
+
+    #[test]
+    fn a_clock_changes_nothing_else() {
+        let source = "#angle 30\naxiom: X\nX -> F[+X]F[-X]+X\nF -> FF";
+        let options = BuildOptions {
+            iterations: Some(3),
+            ..BuildOptions::default()
+        };
+        let plain = build(source, &options);
+        let timed = build_with_clock(source, &options, &mut ticking());
+        assert_eq!(plain.stats, timed.stats);
+        assert_eq!(plain.mesh.positions, timed.mesh.positions);
+    }
 }

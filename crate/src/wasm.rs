@@ -28,7 +28,9 @@ pub fn directives() -> String {
 /// Runs the whole pipeline: parse -> resolve -> derive -> interpret -> mesh.
 /// `iterations`: `None` takes the grammar's `#iterations`; `seed`: `None` takes `#seed` (a whole
 /// number from 0 to 2^53; other values are ignored); `sides` (3 to 64, default 6) and
-/// `smooth_all` (default false) are the mesh's view options.
+/// `smooth_all` (default false) are the mesh's view options. `now`, when given, is a clock
+/// (JavaScript's `() => performance.now()`) read between the stages: their times come back in
+/// `timings()`. The core itself reads no clock.
 #[wasm_bindgen]
 pub fn build(
     source: &str,
@@ -36,6 +38,7 @@ pub fn build(
     seed: Option<f64>,
     sides: Option<u32>,
     smooth_all: Option<bool>,
+    now: Option<js_sys::Function>,
 ) -> Build {
     let seed = seed.filter(|s| {
         s.is_finite() && *s >= 0.0 && s.fract() == 0.0 && *s <= 9.007_199_254_740_992e15
@@ -45,7 +48,18 @@ pub fn build(
         seed: seed.map(|s| s as u64),
         mesh: mesh_options(sides, smooth_all),
     };
-    let inner = pipeline::build(source, &options);
+    let inner = match now {
+        Some(now) => {
+            let mut clock = || {
+                now.call0(&JsValue::NULL)
+                    .ok()
+                    .and_then(|t| t.as_f64())
+                    .unwrap_or(0.0)
+            };
+            pipeline::build_with_clock(source, &options, &mut clock)
+        }
+        None => pipeline::build(source, &options),
+    };
     let diagnostics =
         serde_json::to_string(&inner.located_diagnostics(source)).unwrap_or_else(|_| "[]".into());
     Build { inner, diagnostics }
@@ -84,6 +98,30 @@ impl Build {
     /// JSON `{modules, segments, vertices, triangles, iterations, bounds}`.
     pub fn stats(&self) -> String {
         self.inner.stats.to_json()
+    }
+
+    /// JSON `{parseResolve, derive, interpret, mesh}` in the clock's unit (milliseconds), or
+    /// `null` when [`build`] was called without a clock.
+    pub fn timings(&self) -> String {
+        self.inner
+            .timings
+            .map_or_else(|| "null".into(), |t| t.to_json())
+    }
+
+    /// True when everything drawn lies in the plane z = 0 (`Skeleton::is_flat`).
+    #[wasm_bindgen(getter)]
+    pub fn flat(&self) -> bool {
+        self.inner.skeleton.is_flat()
+    }
+
+    /// The grammar's own `#iterations` (0 when it has none or could not be resolved), whatever
+    /// iterations this build ran.
+    #[wasm_bindgen(getter, js_name = grammarIterations)]
+    pub fn grammar_iterations(&self) -> u32 {
+        self.inner
+            .model
+            .as_ref()
+            .map_or(0, |m| m.settings.iterations)
     }
 
     pub fn positions(&self) -> js_sys::Float32Array {

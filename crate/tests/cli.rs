@@ -93,3 +93,31 @@ fn seed_overrides_the_grammar_seed_and_fixes_the_result() {
     let (_, grammar_seed, _) = meristem(&["derive", &file, "--iterations", "4"]);
     assert_eq!(grammar_seed, run("5"));
 }
+
+#[test]
+fn derive_time_prints_each_stage_on_stderr() {
+    let (code, out, err) = meristem(&["derive", &example("abop-1.24d.lsys"), "--stats", "--time"]);
+    assert_eq!(code, 0);
+    assert_eq!(out.lines().count(), 1, "stdout keeps only the stats");
+    let pattern = [
+        "parse+resolve ",
+        " ms, derive ",
+        " ms, interpret ",
+        " ms, mesh ",
+        " ms\n",
+    ];
+    let mut rest = err.as_str();
+    for (i, part) in pattern.iter().enumerate() {
+        let at = rest
+            .find(part)
+            .unwrap_or_else(|| panic!("{part:?} missing in {err:?}"));
+        if i > 0 {
+            let number = &rest[..at];
+            assert!(
+                number.parse::<f64>().is_ok_and(|t| t >= 0.0),
+                "{number:?} in {err:?}"
+            );
+        }
+        rest = &rest[at + part.len()..];
+    }
+}

@@ -4,7 +4,7 @@ import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { beforeAll, describe, expect, it } from 'vitest';
-import { buildPlant, byteOffsetToUtf16, initCore, type Bounds, type PlantBuild } from '../../web/src/core';
+import { NOT_REWRITTEN, buildPlant, byteOffsetToUtf16, initCore, type Bounds, type PlantBuild } from '../../web/src/core';
 
 const repoRoot = fileURLToPath(new URL('../..', import.meta.url));
 const EXAMPLE = 'public/examples/abop-1.24d.lsys';
@@ -116,6 +116,29 @@ describe('buildPlant on the gallery example', () => {
   );
 });
 
+describe('what buildPlant reports beyond the mesh', () => {
+  it('times each stage with the page’s clock', () => {
+    const plant = buildPlant(readFileSync(new URL(`../../${EXAMPLE}`, import.meta.url), 'utf8'));
+    const { parseResolve, derive, interpret, mesh } = plant.timings;
+    for (const t of [parseResolve, derive, interpret, mesh]) expect(t).toBeGreaterThanOrEqual(0);
+    expect(parseResolve + derive + interpret + mesh).toBeGreaterThan(0);
+    const broken = buildPlant('axiom: F[').timings;
+    expect([broken.derive, broken.interpret, broken.mesh]).toEqual([0, 0, 0]);
+  });
+
+  it('tells a flat drawing from a 3D one', () => {
+    expect(buildPlant('#angle 30\naxiom: F[+F]-F').flat).toBe(true);
+    expect(buildPlant('#angle 30\naxiom: F[&F]-F').flat).toBe(false);
+  });
+
+  it('gives the production that made each module of the derived string', () => {
+    const plant = buildPlant('#iterations 1\naxiom: A B\nA -> C D\np2: B -> B');
+    expect(plant.derived).toBe('CDB');
+    expect([...plant.origins]).toEqual([0, 0, 1]);
+    expect(buildPlant('#iterations 1\naxiom: A B\nA -> C').origins[1]).toBe(NOT_REWRITTEN);
+  });
+});
+
 describe('buildPlant on a grammar with an error', () => {
   it('reports ok=false and a diagnostic on the right line, with no geometry', () => {
     const plant = buildPlant('axiom: X\nX -> F[');
@@ -137,10 +160,11 @@ describe('buildPlant on a grammar with an error', () => {
     expect(source.slice(from, to)).toBe('[');
   });
 
-  it('overrides the grammar’s iterations when asked', () => {
+  it('overrides the grammar’s iterations when asked, and still reports the grammar’s own', () => {
     const plant = buildPlant('#iterations 5\naxiom: F\nF -> FF', { iterations: 2 });
     expect(plant.ok).toBe(true);
     expect(plant.stats.iterations).toBe(2);
+    expect(plant.grammarIterations).toBe(5);
     expect(plant.stats.segments).toBe(4);
     expect(plant.derived).toBe('FFFF');
   });

@@ -104,6 +104,38 @@ impl Skeleton {
         };
         palette[index as usize % palette.len()]
     }
+
+    /// True when something was drawn and all of it lies in the plane z = 0 (the plane a grammar
+    /// that only turns with `+` and `-` draws in), up to a millionth of the drawing's size: the
+    /// studio then shows it face-on in an orthographic view. Widths do not count (tubes always
+    /// have thickness); spheres count by their centres.
+    pub fn is_flat(&self) -> bool {
+        let mut points: Vec<DVec3> = Vec::new();
+        for s in &self.segments {
+            points.extend([s.start, s.end]);
+        }
+        for p in &self.polygons {
+            points.extend(p.points.iter().copied());
+        }
+        for s in &self.surfaces {
+            // The outline spans heading and left from the origin.
+            points.extend([
+                s.origin,
+                s.origin + s.heading * s.scale,
+                s.origin + s.left * s.scale,
+            ]);
+        }
+        points.extend(self.spheres.iter().map(|s| s.center));
+        if points.is_empty() {
+            return false;
+        }
+        let (min, max) = points.iter().fold((points[0], points[0]), |(lo, hi), p| {
+            (lo.min(*p), hi.max(*p))
+        });
+        let size = (max - min).max_element();
+        let tolerance = 1e-6 * size.max(1e-12);
+        points.iter().all(|p| p.z.abs() <= tolerance)
+    }
 }
 
 /// The world's up direction, for `$` (ABOP's V).

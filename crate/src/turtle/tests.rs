@@ -253,3 +253,18 @@ fn color_sets_palette_entries_and_ramps() {
     // Past the end, indices wrap modulo the palette's length (23 here).
     assert_eq!(s.color(23 + 2), [1.0, 0.0, 0.0]);
 }
+
+#[test]
+fn a_grammar_that_only_turns_with_plus_and_minus_is_flat() {
+    assert!(run("#angle 30\naxiom: F[+F]F[-F]F").is_flat());
+    assert!(run("#angle 90\naxiom: F+F{.f+f+f}").is_flat());
+    assert!(!run("#angle 30\naxiom: F&F").is_flat());
+    assert!(
+        !run("#angle 30\naxiom: F/(45)+F").is_flat(),
+        "a roll takes + out of the plane"
+    );
+    assert!(
+        !run("axiom: A").is_flat(),
+        "nothing drawn is not a flat drawing"
+    );
+}

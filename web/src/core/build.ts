@@ -8,7 +8,10 @@ import {
   type PlantBuild,
   type PlantStats,
   type Severity,
+  type StageTimings,
 } from './types';
+
+const NO_TIMINGS: StageTimings = { parseResolve: 0, derive: 0, interpret: 0, mesh: 0 };
 
 /** A diagnostic as the core serialises it (byte offsets named `from`/`to`). */
 interface RawDiagnostic {
@@ -36,6 +39,7 @@ export function buildPlant(source: string, options: BuildOptions = {}): PlantBui
     options.seed ?? undefined,
     options.sides ?? undefined,
     options.smoothAll ?? undefined,
+    () => performance.now(),
   );
   try {
     return {
@@ -51,7 +55,11 @@ export function buildPlant(source: string, options: BuildOptions = {}): PlantBui
         lines: ownedArray(result.lines()),
         lineColors: ownedArray(result.lineColors()),
       },
+      origins: ownedArray(result.origins()),
       derived: result.derived(DERIVED_PREVIEW_CHARS),
+      timings: (JSON.parse(result.timings()) as StageTimings | null) ?? NO_TIMINGS,
+      flat: result.flat,
+      grammarIterations: result.grammarIterations,
     };
   } finally {
     result.free();

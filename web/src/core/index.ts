@@ -6,6 +6,7 @@ export { grammarDirectives, turtleCommands, type GrammarDirective, type TurtleCo
 export { byteOffsetToUtf16 } from './offsets';
 export {
   DERIVED_PREVIEW_CHARS,
+  NOT_REWRITTEN,
   type Bounds,
   type BuildOptions,
   type Diagnostic,
@@ -13,4 +14,5 @@ export {
   type PlantBuild,
   type PlantStats,
   type Severity,
+  type StageTimings,
 } from './types';

@@ -77,6 +77,22 @@ export interface BuildOptions {
   smoothAll?: boolean;
 }
 
+/**
+ * How long each stage of one build took, in milliseconds, measured with `performance.now()` read
+ * by the core between its stages (the core has no clock of its own). A stage that did not run
+ * (after an error) took 0.
+ */
+export interface StageTimings {
+  /** Parsing the text and resolving it into a model. */
+  parseResolve: number;
+  /** Deriving the string (including the turtle runs that answer query modules). */
+  derive: number;
+  /** Interpreting the string with the turtle. */
+  interpret: number;
+  /** Building the mesh. */
+  mesh: number;
+}
+
 /** Everything one run of the pipeline (parse → resolve → derive → interpret → mesh) produced. */
 export interface PlantBuild {
   /** True when no diagnostic is an error; only then do `mesh` and `stats` describe a plant. */
@@ -84,9 +100,23 @@ export interface PlantBuild {
   diagnostics: Diagnostic[];
   stats: PlantStats;
   mesh: MeshBuffers;
+  /**
+   * For each module of the derived string, the index of the production that made it in the last
+   * step, or {@link NOT_REWRITTEN} when it was copied unchanged.
+   */
+  origins: Uint32Array;
   /** The derived string, cut to its first {@link DERIVED_PREVIEW_CHARS} characters (then ending in "…"). */
   derived: string;
+  /** Time per stage. */
+  timings: StageTimings;
+  /** Everything drawn lies in the plane z = 0 (a grammar that only turns with `+` and `-`). */
+  flat: boolean;
+  /** The grammar's own `#iterations` (0 when it has none), whatever `BuildOptions.iterations` asked. */
+  grammarIterations: number;
 }
+
+/** The value of {@link PlantBuild.origins} for a module no production rewrote in the last step. */
+export const NOT_REWRITTEN = 0xffffffff;
 
 /** How many characters of the derived string {@link buildPlant} keeps. */
 export const DERIVED_PREVIEW_CHARS = 10_000;
