@@ -44,6 +44,21 @@ describe('grammar completion', () => {
     expect(labels(complete('axiom: F\nhom|'))).toEqual(['homomorphism:']);
   });
 
+  it('offers the document’s #define names inside expressions', () => {
+    const grammar = '#define lr 1.109\n#define vr 1.732 // [1, 2]\n#define q lr*2\naxiom: A\n';
+    expect(labels(complete(`${grammar}A -> F(l|`))).toEqual(['lr', 'vr', 'q']);
+    const inParens = complete(`${grammar}A -> !(v|)`);
+    expect(inParens?.from).toBe(`${grammar}A -> !(`.length);
+    expect(inParens?.options.find((o) => o.label === 'vr')?.detail).toBe('= 1.732');
+    expect(labels(complete(`${grammar}A(l) : l > l|`))).toContain('lr');
+    expect(labels(complete(`${grammar}#define w v|`))).toEqual(['lr', 'vr', 'q']);
+    expect(labels(complete(`${grammar}#define w |`, true))).toContain('q');
+    // Not its own name, not outside expressions, not after the arrow's parameters close.
+    expect(labels(complete(`#define a 2\n#define b a|`))).toEqual(['a']);
+    expect(complete(`${grammar}A -> F(1) l|`)).toBeNull();
+    expect(complete(`${grammar}A(l) : l > 1 -> F l|`)).toBeNull();
+  });
+
   it('stays quiet in comments and while typing modules', () => {
     expect(complete('// see #ang|')).toBeNull();
     expect(complete('axiom: F\nX -> F[+X]|')).toBeNull();

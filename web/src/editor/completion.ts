@@ -1,9 +1,11 @@
 // Completion from the core's tables: `#` directives at the start of a line, section keywords, and
 // the turtle commands with multi-character names (`@O`, `~l`, `?P`, …), each with its parameters
-// and its one-line doc. Ctrl-Space anywhere in a rule lists every turtle command.
+// and its one-line doc. Ctrl-Space anywhere in a rule lists every turtle command. Inside an
+// expression (parameters, conditions, a `#define`'s value) the document's `#define` names.
 import { autocompletion, type Completion, type CompletionContext, type CompletionResult } from '@codemirror/autocomplete';
 import type { Extension } from '@codemirror/state';
 import type { GrammarDirective, TurtleCommand } from '../core';
+import { defineNames } from './defines';
 
 /** Words that open a line of their own (docs/LANGUAGE.md). */
 const KEYWORDS: readonly { label: string; info: string }[] = [
@@ -34,6 +36,32 @@ export function completionOptions(commands: readonly TurtleCommand[], directives
   return { directive, command, keyword };
 }
 
+/**
+ * True when the text before the cursor on its line ends inside an expression: within parentheses
+ * (a module's parameters), in a condition (after `) :` and before the arrow), or in a `#define`'s
+ * value.
+ */
+export function inExpression(before: string): boolean {
+  if (/^\s*#define\s+\w+\s+/.test(before)) return true;
+  if (/^\s*#/.test(before)) return false;
+  let depth = 0;
+  for (const char of before) depth += char === '(' ? 1 : char === ')' ? -1 : 0;
+  if (depth > 0) return true;
+  return /\)\s*:/.test(before) && !/->|→/.test(before);
+}
+
+/** The `#define` names of the document as completions (the value as detail). */
+function defineCompletions(text: string, exceptLine: number): Completion[] {
+  const seen = new Set<string>();
+  const options: Completion[] = [];
+  for (const d of defineNames(text)) {
+    if (d.line === exceptLine || seen.has(d.name)) continue;
+    seen.add(d.name);
+    options.push({ label: d.name, detail: `= ${d.value}`, info: `#define ${d.name} ${d.value} (line ${d.line})`, type: 'constant' });
+  }
+  return options;
+}
+
 /** The completion source of the grammar language. */
 export function grammarCompletionSource(commands: readonly TurtleCommand[], directives: readonly GrammarDirective[]) {
   const options = completionOptions(commands, directives);
@@ -50,6 +78,13 @@ export function grammarCompletionSource(commands: readonly TurtleCommand[], dire
       const word = keyword[1];
       const matching = options.keyword.filter((k) => k.label.startsWith(word));
       if (matching.length > 0) return { from: context.pos - word.length, options: matching };
+    }
+    if (inExpression(before)) {
+      const word = context.matchBefore(/[A-Za-z_]\w*$/);
+      if (!word && !context.explicit) return null;
+      const options = defineCompletions(context.state.doc.toString(), line.number);
+      if (options.length === 0) return null;
+      return { from: word?.from ?? context.pos, options, validFor: /^[A-Za-z_]\w*$/ };
     }
     // A multi-character command starts with @, ~ or ?.
     const special = context.matchBefore(/[@~?][A-Za-z]*$/);

@@ -16,8 +16,12 @@ export function toEditorDiagnostics(text: string, diagnostics: readonly Diagnost
   });
 }
 
-/** Returns the core's diagnostics for a grammar text (normally from a cached build). */
-export type Diagnose = (text: string) => readonly Diagnostic[];
+/**
+ * Returns the core's diagnostics for a grammar text, now or later (the studio answers when the
+ * build worker delivers that text's build). An answer about a text that is no longer the
+ * document's is dropped by the linter.
+ */
+export type Diagnose = (text: string) => readonly Diagnostic[] | Promise<readonly Diagnostic[]>;
 
 /** How long the editor waits after the last edit before showing diagnostics, in ms. */
 export const LINT_DELAY_MS = 400;
@@ -26,9 +30,9 @@ export const LINT_DELAY_MS = 400;
 export function grammarLinting(diagnose: Diagnose): Extension {
   return [
     linter(
-      (view) => {
+      async (view) => {
         const text = view.state.doc.toString();
-        return toEditorDiagnostics(text, diagnose(text));
+        return toEditorDiagnostics(text, await diagnose(text));
       },
       { delay: LINT_DELAY_MS },
     ),

@@ -2,6 +2,7 @@
 import { basicSetup } from 'codemirror';
 import { EditorView } from '@codemirror/view';
 import { forceLinting } from '@codemirror/lint';
+import { isolateHistory } from '@codemirror/commands';
 import type { GrammarDirective, TurtleCommand } from '../core';
 import { grammarCompletion } from './completion';
 import { grammarSupport } from './language';
@@ -33,6 +34,16 @@ export interface GrammarEditor {
   text(): string;
   /** Re-runs the diagnostics now, e.g. after an option that changes the build changed. */
   refreshDiagnostics(): void;
+  /**
+   * Replaces the whole text in one undoable transaction (Ctrl+Z brings the old text back), e.g.
+   * when an example is opened; the cursor goes to the start.
+   */
+  replaceText(text: string): void;
+  /**
+   * Replaces `from`..`to` (UTF-16 offsets) with `insert`, undoable; changes made in quick
+   * succession under the same `userEvent` (a slider drag) undo together.
+   */
+  replaceRange(from: number, to: number, insert: string, userEvent?: string): void;
 }
 
 /** Creates the editor in `options.parent`. */
@@ -58,5 +69,15 @@ export function createGrammarEditor(options: GrammarEditorOptions): GrammarEdito
     view,
     text: () => view.state.doc.toString(),
     refreshDiagnostics: () => forceLinting(view),
+    replaceText: (text) =>
+      view.dispatch({
+        changes: { from: 0, to: view.state.doc.length, insert: text },
+        selection: { anchor: 0 },
+        scrollIntoView: true,
+        userEvent: 'input.replace',
+        annotations: isolateHistory.of('full'), // one undo step of its own, never joined to typing
+      }),
+    replaceRange: (from, to, insert, userEvent = 'input') =>
+      view.dispatch({ changes: { from, to, insert }, userEvent }),
   };
 }

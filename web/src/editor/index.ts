@@ -6,3 +6,4 @@ export { commandHover, commandHoverText } from './hover';
 export { grammarCompletion, grammarCompletionSource } from './completion';
 export { toEditorDiagnostics, grammarLinting, LINT_DELAY_MS, type Diagnose } from './diagnostics';
 export { studioEditorTheme } from './theme';
+export { defineConstants, defineNames, defaultRange, defaultStep, formatNumber, type DefineConstant, type DefineName } from './defines';
