@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { Box3, PerspectiveCamera, Vector3 } from 'three';
-import { framePose } from './framing';
+import { Box3, OrthographicCamera, PerspectiveCamera, Vector3 } from 'three';
+import { flatPose, framePose } from './framing';
 
 /** True when every corner of `box` projects inside the camera's view. */
 function cornersVisible(box: Box3, camera: PerspectiveCamera): boolean {
@@ -50,5 +50,40 @@ describe('framePose', () => {
     const pose = framePose(new Box3(), 40, 1);
     expect(Number.isFinite(pose.position.length())).toBe(true);
     expect(pose.near).toBeGreaterThan(0);
+  });
+});
+
+describe('flatPose', () => {
+  function orthoAt(box: Box3, aspect: number): OrthographicCamera {
+    const pose = flatPose(box, aspect);
+    const camera = new OrthographicCamera(-pose.halfHeight * aspect, pose.halfHeight * aspect, pose.halfHeight, -pose.halfHeight, pose.near, pose.far);
+    camera.position.copy(pose.position);
+    camera.lookAt(pose.target);
+    camera.updateProjectionMatrix();
+    camera.updateMatrixWorld();
+    return camera;
+  }
+
+  it('shows a flat plant face-on and whole, tall or wide, in any view', () => {
+    const tall = new Box3(new Vector3(-70, 0, -0.4), new Vector3(70, 249, 0.4));
+    const wide = new Box3(new Vector3(-20, -2, -0.2), new Vector3(85, 10, 0.2));
+    for (const box of [tall, wide])
+      for (const aspect of [0.5, 1, 2]) {
+        const camera = orthoAt(box, aspect);
+        for (const x of [box.min.x, box.max.x])
+          for (const y of [box.min.y, box.max.y])
+            for (const z of [box.min.z, box.max.z]) {
+              const p = new Vector3(x, y, z).project(camera);
+              expect(Math.max(Math.abs(p.x), Math.abs(p.y), Math.abs(p.z))).toBeLessThanOrEqual(1);
+            }
+        const pose = flatPose(box, aspect);
+        expect(pose.position.clone().sub(pose.target).normalize().z).toBeCloseTo(1);
+      }
+  });
+
+  it('fills the view along the limiting side', () => {
+    const box = new Box3(new Vector3(0, 0, 0), new Vector3(1, 2, 0));
+    const top = new Vector3(0.5, 2, 0).project(orthoAt(box, 1)).y;
+    expect(top).toBeGreaterThan(0.9);
   });
 });

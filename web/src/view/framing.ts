@@ -32,3 +32,35 @@ export function framePose(box: Box3, fovDeg: number, aspect: number): CameraPose
     far: distance * 100,
   };
 }
+
+/** An orthographic camera placement looking down −Z at the XY plane (a flat plant, face-on). */
+export interface FlatPose {
+  /** Eye position: in front of the box on +Z. */
+  position: Vector3;
+  target: Vector3;
+  /** Half the visible height in world units (the width follows from the aspect). */
+  halfHeight: number;
+  near: number;
+  far: number;
+}
+
+/**
+ * The orthographic pose that shows all of `box`'s XY extent, with a small margin, in a view of
+ * aspect ratio `aspect` (width / height). An empty or degenerate box is treated as a unit square.
+ */
+export function flatPose(box: Box3, aspect: number): FlatPose {
+  const empty = box.isEmpty();
+  const center = empty ? new Vector3() : box.getCenter(new Vector3());
+  const size = empty ? new Vector3(1, 1, 1) : box.getSize(new Vector3());
+  const width = Math.max(size.x, 1e-6);
+  const height = Math.max(size.y, 1e-6);
+  const halfHeight = (Math.max(height, width / Math.max(aspect, 1e-6)) / 2) * 1.08;
+  const depth = Math.max(size.z, width, height);
+  return {
+    position: new Vector3(center.x, center.y, center.z + depth * 2),
+    target: center,
+    halfHeight,
+    near: depth * 0.01,
+    far: depth * 4,
+  };
+}

@@ -1,5 +1,7 @@
-// The 3D view (three.js): the plant mesh, lights, camera framing and orbit controls.
-export { PlantView } from './plant-view';
+// The 3D view (three.js): the plant mesh, lights, camera framing and orbit controls, and the
+// gallery's thumbnails drawn the same way.
+export { PlantView, type Projection, type ProjectionMode } from './plant-view';
+export { ThumbnailRenderer } from './thumbnail';
 export { plantGeometry } from './plant-geometry';
-export { framePose, type CameraPose } from './framing';
+export { framePose, flatPose, type CameraPose, type FlatPose } from './framing';
 export { scenePalette, type ScenePalette } from './palette';

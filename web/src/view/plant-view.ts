@@ -1,52 +1,71 @@
-// The 3D view: one plant mesh, lights, an orbiting camera; renders on demand.
+// The 3D view: one plant mesh, lights, an orbiting perspective camera or a face-on orthographic
+// one for flat plants, an optional ground grid; renders on demand.
 import {
   Box3,
   BufferGeometry,
-  DirectionalLight,
-  DoubleSide,
   GridHelper,
-  HemisphereLight,
   LineBasicMaterial,
   LineSegments,
+  Material,
   Mesh,
-  MeshStandardMaterial,
+  OrthographicCamera,
   PerspectiveCamera,
   Scene,
   WebGLRenderer,
+  type Camera,
 } from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import type { MeshBuffers } from '../core';
-import { framePose } from './framing';
+import { flatPose, framePose } from './framing';
 import { scenePalette } from './palette';
 import { plantGeometry } from './plant-geometry';
+import { addHeadlight, addSkyLight, litPlantMaterial, unlitPlantMaterial } from './scene-setup';
 
 const DARK_SCHEME = '(prefers-color-scheme: dark)';
 
+/** `perspective`: orbit in 3D; `orthographic`: the XY plane face-on (2D), pan and zoom only. */
+export type Projection = 'perspective' | 'orthographic';
+
+/** How the projection is chosen: from the plant (`auto`: flat plants in 2D), or fixed by the user. */
+export type ProjectionMode = 'auto' | Projection;
+
+/** One of the two cameras with its controls and whether it has been framed on a plant yet. */
+interface CameraRig<C extends PerspectiveCamera | OrthographicCamera> {
+  camera: C;
+  controls: OrbitControls;
+  framed: boolean;
+}
+
 /**
- * Shows one plant at a time in a container element. The camera is framed on the first plant and
- * on {@link PlantView.frame}, and otherwise left where the user put it. Every new plant replaces
- * (and disposes) the previous geometry. The canvas keeps its drawing buffer so tests can read it.
+ * Shows one plant at a time in a container element. Each camera is framed on the first plant it
+ * shows, after {@link PlantView.frameNextPlant}, and on {@link PlantView.frame}; otherwise it
+ * stays where the user put it, across edits. Every new plant replaces (and disposes) the previous
+ * geometry. The canvas keeps its drawing buffer so tests can read it.
+ *
+ * The container gets `data-projection` (`perspective` | `orthographic`) for styling and tests.
  */
 export class PlantView {
   private readonly renderer: WebGLRenderer;
   private readonly scene = new Scene();
-  private readonly camera = new PerspectiveCamera(40, 1, 0.01, 1000);
-  private readonly controls: OrbitControls;
-  private readonly material = new MeshStandardMaterial({
-    vertexColors: true,
-    side: DoubleSide,
-    roughness: 0.85,
-    metalness: 0,
-  });
-  private readonly plant = new Mesh(new BufferGeometry(), this.material);
+  private readonly perspective: CameraRig<PerspectiveCamera>;
+  private readonly orthographic: CameraRig<OrthographicCamera>;
+  private active: CameraRig<PerspectiveCamera> | CameraRig<OrthographicCamera>;
+  private readonly lit = litPlantMaterial();
+  private readonly unlit = unlitPlantMaterial();
+  private readonly plant = new Mesh<BufferGeometry, Material>(new BufferGeometry(), this.lit);
   /** The fallback for models too large to mesh: one coloured line per segment. */
   private readonly lines = new LineSegments(new BufferGeometry(), new LineBasicMaterial({ vertexColors: true }));
   private grid: GridHelper | undefined;
-  /** The camera has been framed on a plant with geometry; from then on it stays where the user puts it. */
-  private framed = false;
+  private gridVisible = true;
+  private mode: ProjectionMode = 'auto';
+  /** The plant on screen lies in the plane z = 0. */
+  private flat = false;
+  /** Frame the next plant shown (a new grammar was opened). */
+  private frameNext = false;
   private renderQueued = false;
   private readonly darkScheme = window.matchMedia(DARK_SCHEME);
   private readonly resizeObserver: ResizeObserver;
+  private readonly renderListeners = new Set<() => void>();
 
   constructor(private readonly container: HTMLElement) {
     this.renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
@@ -54,15 +73,14 @@ export class PlantView {
     this.renderer.domElement.setAttribute('aria-label', '3D view of the plant; drag to orbit, scroll to zoom');
     container.append(this.renderer.domElement);
 
-    this.scene.add(new HemisphereLight(0xffffff, 0x6b5a48, 1.4));
-    const headlight = new DirectionalLight(0xffffff, 1.9);
-    headlight.position.set(0.6, 0.9, 0.4);
-    this.camera.add(headlight, headlight.target); // a light that follows the camera
-    headlight.target.position.set(0, 0, -1);
-    this.scene.add(this.camera, this.plant, this.lines);
-
-    this.controls = new OrbitControls(this.camera, this.renderer.domElement);
-    this.controls.addEventListener('change', () => this.requestRender());
+    addSkyLight(this.scene);
+    this.perspective = this.rig(new PerspectiveCamera(40, 1, 0.01, 1000));
+    this.orthographic = this.rig(new OrthographicCamera(-1, 1, 1, -1, 0.01, 1000));
+    this.orthographic.controls.enableRotate = false; // a 2D view pans and zooms
+    this.active = this.perspective;
+    this.perspective.controls.enabled = true;
+    this.scene.add(this.perspective.camera, this.plant, this.lines);
+    this.container.dataset.projection = 'perspective';
 
     this.applyPalette();
     this.darkScheme.addEventListener('change', this.applyPalette);
@@ -71,14 +89,36 @@ export class PlantView {
     this.resize();
   }
 
+  private rig<C extends PerspectiveCamera | OrthographicCamera>(camera: C): CameraRig<C> {
+    addHeadlight(camera);
+    const controls = new OrbitControls(camera, this.renderer.domElement);
+    controls.enabled = false;
+    controls.addEventListener('change', () => this.requestRender());
+    return { camera, controls, framed: false };
+  }
+
+  /** The projection in use. */
+  get projection(): Projection {
+    return this.active === this.orthographic ? 'orthographic' : 'perspective';
+  }
+
+  /** The camera in use (for tests and the future picking of segments). */
+  get camera(): Camera {
+    return this.active.camera;
+  }
+
   /** The bounding box of what is shown: the mesh, or the lines of the fallback. */
   private visibleBox(): Box3 {
     const geometry = this.plant.geometry.getAttribute('position') ? this.plant.geometry : this.lines.geometry;
     return geometry.boundingBox ?? new Box3();
   }
 
-  /** Replaces the plant. The first plant with geometry is framed; later ones keep the camera. */
-  showPlant(mesh: MeshBuffers): void {
+  /**
+   * Replaces the plant; `flat` says it lies in the plane z = 0 (in `auto` mode it is then shown
+   * face-on in 2D). A camera is framed on its first plant (and after {@link frameNextPlant});
+   * later plants keep the camera where it is.
+   */
+  showPlant(mesh: MeshBuffers, flat = false): void {
     const asLines = mesh.indices.length === 0 && mesh.lines.length > 0;
     const oldMesh = this.plant.geometry;
     const oldLines = this.lines.geometry;
@@ -86,24 +126,95 @@ export class PlantView {
     this.lines.geometry = asLines ? plantGeometry(mesh) : new BufferGeometry();
     oldMesh.dispose();
     oldLines.dispose();
-    if (!this.framed && (mesh.indices.length > 0 || asLines)) {
-      this.framed = true;
-      this.frame();
+    const hasGeometry = mesh.indices.length > 0 || asLines;
+    if (hasGeometry && this.frameNext) {
+      this.frameNext = false;
+      this.perspective.framed = false;
+      this.orthographic.framed = false;
     }
+    this.flat = flat;
+    this.useProjection(this.wantedProjection(), hasGeometry);
+    if (hasGeometry && !this.active.framed) this.frame();
     this.requestRender();
   }
 
-  /** Points the camera at the whole plant and fits the ground grid under it. */
+  /** Frames the camera on the next plant shown (e.g. after another example was opened). */
+  frameNextPlant(): void {
+    this.frameNext = true;
+  }
+
+  /** Chooses the projection: `auto` (2D for flat plants) or a fixed one. */
+  setProjectionMode(mode: ProjectionMode): void {
+    this.mode = mode;
+    this.useProjection(this.wantedProjection(), true);
+  }
+
+  /** The projection mode last set. */
+  get projectionMode(): ProjectionMode {
+    return this.mode;
+  }
+
+  private wantedProjection(): Projection {
+    if (this.mode !== 'auto') return this.mode;
+    return this.flat ? 'orthographic' : 'perspective';
+  }
+
+  private useProjection(projection: Projection, frameIfNew: boolean): void {
+    const next = projection === 'orthographic' ? this.orthographic : this.perspective;
+    if (next === this.active) return;
+    this.active.controls.enabled = false;
+    this.scene.remove(this.active.camera); // its headlight goes with it
+    this.active = next;
+    this.active.controls.enabled = true;
+    this.scene.add(this.active.camera);
+    this.container.dataset.projection = projection;
+    this.resize();
+    if (frameIfNew && !this.active.framed && !this.visibleBox().isEmpty()) this.frame();
+    else this.placeGrid(this.visibleBox());
+    this.requestRender();
+  }
+
+  /** Points the camera at the whole plant and fits the ground grid under (or behind) it. */
   frame(): void {
     const box = this.visibleBox();
-    const pose = framePose(box, this.camera.fov, this.camera.aspect);
-    this.camera.position.copy(pose.position);
-    this.camera.near = pose.near;
-    this.camera.far = pose.far;
-    this.camera.updateProjectionMatrix();
-    this.controls.target.copy(pose.target);
-    this.controls.update();
+    if (this.active === this.orthographic) {
+      const { camera, controls } = this.orthographic;
+      const pose = flatPose(box, this.aspect());
+      camera.position.copy(pose.position);
+      camera.up.set(0, 1, 0);
+      camera.zoom = 1;
+      camera.top = pose.halfHeight;
+      camera.bottom = -pose.halfHeight;
+      camera.near = pose.near;
+      camera.far = pose.far;
+      this.fitOrthographic();
+      controls.target.copy(pose.target);
+      controls.update();
+    } else {
+      const { camera, controls } = this.perspective;
+      const pose = framePose(box, camera.fov, camera.aspect);
+      camera.position.copy(pose.position);
+      camera.near = pose.near;
+      camera.far = pose.far;
+      camera.updateProjectionMatrix();
+      controls.target.copy(pose.target);
+      controls.update();
+    }
+    if (!box.isEmpty()) this.active.framed = true;
     this.placeGrid(box);
+    this.requestRender();
+  }
+
+  /** Shows or hides the ground grid. */
+  setGridVisible(visible: boolean): void {
+    this.gridVisible = visible;
+    if (this.grid) this.grid.visible = visible;
+    this.requestRender();
+  }
+
+  /** Lit and shaded (true), or the palette's colours unshaded (false). */
+  setLighting(lit: boolean): void {
+    this.plant.material = lit ? this.lit : this.unlit;
     this.requestRender();
   }
 
@@ -112,29 +223,52 @@ export class PlantView {
     this.container.toggleAttribute('data-stale', stale);
   }
 
+  /** Calls `listener` after every frame drawn; returns the function that stops it. */
+  onRender(listener: () => void): () => void {
+    this.renderListeners.add(listener);
+    return () => this.renderListeners.delete(listener);
+  }
+
   /** Releases the GPU resources and listeners. */
   dispose(): void {
     this.resizeObserver.disconnect();
     this.darkScheme.removeEventListener('change', this.applyPalette);
-    this.controls.dispose();
+    this.perspective.controls.dispose();
+    this.orthographic.controls.dispose();
     this.plant.geometry.dispose();
     this.lines.geometry.dispose();
     this.lines.material.dispose();
-    this.material.dispose();
+    this.lit.dispose();
+    this.unlit.dispose();
     this.removeGrid();
     this.renderer.dispose();
     this.renderer.domElement.remove();
   }
 
+  /**
+   * A grid of round-numbered squares: on the ground under the plant in 3D; in 2D behind it, in the
+   * plane of the drawing, its centre line at the plant's base.
+   */
   private placeGrid(box: Box3): void {
     this.removeGrid();
     if (box.isEmpty()) return;
     const palette = scenePalette(this.darkScheme.matches);
-    const span = Math.max(box.max.x - box.min.x, box.max.z - box.min.z, (box.max.y - box.min.y) * 0.6);
+    const flat = this.active === this.orthographic;
+    // In 2D the grid's centre line is the ground: it must reach the plant's top above it.
+    const span = flat
+      ? Math.max(box.max.x - box.min.x, 2 * (box.max.y - box.min.y))
+      : Math.max(box.max.x - box.min.x, box.max.z - box.min.z, (box.max.y - box.min.y) * 0.6);
     const step = 10 ** Math.floor(Math.log10(span / 4 || 1));
     const size = Math.ceil((span * 1.6) / step) * step;
     this.grid = new GridHelper(size, Math.round(size / step), palette.gridCenter, palette.grid);
-    this.grid.position.set((box.min.x + box.max.x) / 2, box.min.y, (box.min.z + box.max.z) / 2);
+    if (flat) {
+      this.grid.rotation.x = Math.PI / 2;
+      const depth = Math.max(box.max.z - box.min.z, span * 1e-3);
+      this.grid.position.set((box.min.x + box.max.x) / 2, box.min.y, box.min.z - depth);
+    } else {
+      this.grid.position.set((box.min.x + box.max.x) / 2, box.min.y, (box.min.z + box.max.z) / 2);
+    }
+    this.grid.visible = this.gridVisible;
     this.scene.add(this.grid);
   }
 
@@ -148,19 +282,30 @@ export class PlantView {
   private readonly applyPalette = (): void => {
     const palette = scenePalette(this.darkScheme.matches);
     this.scene.background = palette.background;
-    if (this.grid) {
-      const box = this.visibleBox();
-      this.placeGrid(box);
-    }
+    if (this.grid) this.placeGrid(this.visibleBox());
     this.requestRender();
   };
+
+  private aspect(): number {
+    return Math.max(1, this.container.clientWidth) / Math.max(1, this.container.clientHeight);
+  }
+
+  /** The orthographic camera's width follows the view's aspect; its height is the framed one. */
+  private fitOrthographic(): void {
+    const camera = this.orthographic.camera;
+    const halfWidth = camera.top * this.aspect();
+    camera.left = -halfWidth;
+    camera.right = halfWidth;
+    camera.updateProjectionMatrix();
+  }
 
   private resize(): void {
     const width = Math.max(1, this.container.clientWidth);
     const height = Math.max(1, this.container.clientHeight);
     this.renderer.setSize(width, height, false);
-    this.camera.aspect = width / height;
-    this.camera.updateProjectionMatrix();
+    this.perspective.camera.aspect = width / height;
+    this.perspective.camera.updateProjectionMatrix();
+    this.fitOrthographic();
     this.requestRender();
   }
 
@@ -169,7 +314,8 @@ export class PlantView {
     this.renderQueued = true;
     requestAnimationFrame(() => {
       this.renderQueued = false;
-      this.renderer.render(this.scene, this.camera);
+      this.renderer.render(this.scene, this.active.camera);
+      for (const listener of this.renderListeners) listener();
     });
   }
 }
