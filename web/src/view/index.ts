@@ -2,6 +2,6 @@
 // gallery's thumbnails drawn the same way.
 export { PlantView, type Projection, type ProjectionMode } from './plant-view';
 export { ThumbnailRenderer } from './thumbnail';
-export { plantGeometry } from './plant-geometry';
+export { plantGeometry, lineGeometry, pointsBox } from './plant-geometry';
 export { framePose, flatPose, type CameraPose, type FlatPose } from './framing';
 export { scenePalette, type ScenePalette } from './palette';

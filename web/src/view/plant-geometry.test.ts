@@ -1,0 +1,33 @@
+import { describe, expect, it } from 'vitest';
+import type { MeshBuffers } from '../core';
+import { plantGeometry, pointsBox } from './plant-geometry';
+
+/** A strip of `quads` quads (2 triangles each) along x: vertices 2k, 2k+1 at x = k. */
+function strip(quads: number): MeshBuffers {
+  const vertices = 2 * (quads + 1);
+  const positions = new Float32Array(3 * vertices);
+  for (let v = 0; v < vertices; v++) positions.set([v >> 1, v & 1, 0], 3 * v);
+  const indices = new Uint32Array(6 * quads);
+  for (let q = 0; q < quads; q++) indices.set([2 * q, 2 * q + 2, 2 * q + 1, 2 * q + 1, 2 * q + 2, 2 * q + 3], 6 * q);
+  const empty = new Float32Array(0);
+  return { positions, normals: positions.slice(), colors: positions.slice(), indices, ranges: new Uint32Array(0), lines: empty, lineColors: empty };
+}
+
+describe('plantGeometry', () => {
+  it('wraps the arrays without copying them, with bounds', () => {
+    const mesh = strip(10);
+    const geometry = plantGeometry(mesh);
+    expect(geometry.getAttribute('color').array).toBe(mesh.colors);
+    expect(geometry.boundingBox!.max.toArray()).toEqual([10, 1, 0]);
+    expect(geometry.boundingSphere!.radius).toBeGreaterThan(5);
+  });
+});
+
+describe('pointsBox', () => {
+  it('bounds the points, and is empty without any', () => {
+    const box = pointsBox(new Float32Array([1, 2, 3, -1, 5, 0]));
+    expect(box.min.toArray()).toEqual([-1, 2, 0]);
+    expect(box.max.toArray()).toEqual([1, 5, 3]);
+    expect(pointsBox(new Float32Array(0)).isEmpty()).toBe(true);
+  });
+});
