@@ -1,11 +1,14 @@
 // Build and unit-test configuration of the studio.
 // - vite: the page lives in web/, the example gallery in public/ (served as-is), the site is built to dist/
-//   with relative URLs (`base: './'`) so it works from any sub-path.
+//   with relative URLs (`base: './'`) so it works from any sub-path. The build worker (web/src/studio/
+//   worker.ts) is bundled as an ES module worker. The gallery manifest (examples/index.json) comes
+//   from a plugin (scripts/gallery-plugin.ts), served in dev and emitted in the build.
 // - vitest (`npx vitest run`): unit tests next to the code in web/src and the cross-boundary tests in
 //   tests/core, all in node against the real WebAssembly core. The browser suite has its own config
 //   (tests/browser/vitest.config.ts).
 import { fileURLToPath } from 'node:url';
 import { defineConfig } from 'vitest/config';
+import { galleryManifestPlugin } from './scripts/gallery-plugin.ts';
 
 const repoRoot = fileURLToPath(new URL('.', import.meta.url));
 
@@ -13,6 +16,8 @@ export default defineConfig({
   root: 'web',
   base: './',
   publicDir: '../public',
+  plugins: [galleryManifestPlugin(`${repoRoot}public/examples`)],
+  worker: { format: 'es' },
   build: {
     outDir: '../dist',
     emptyOutDir: true,

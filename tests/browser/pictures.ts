@@ -121,3 +121,11 @@ export function colourShare(picture: Picture, test: (r: number, g: number, b: nu
   }
   return foreground === 0 ? 0 : matching / foreground;
 }
+
+/** Share (0..1) of all pixels whose colour differs by more than `threshold` (|ΔR|+|ΔG|+|ΔB|) between two same-sized pictures. */
+export function differingShare(a: Picture, b: Picture, threshold = 0): number {
+  if (a.width !== b.width || a.height !== b.height) throw new Error('pictures differ in size');
+  let differing = 0;
+  for (let i = 0; i < a.data.length; i += 4) if (distance(a.data, i, b.data, i) > threshold) differing++;
+  return differing / (a.width * a.height);
+}

@@ -1,5 +1,7 @@
 // Global setup of the browser suite: serves the built site (dist/) with vite's preview server on
-// a free loopback port and hands its URL to the tests as `inject('studioUrl')`.
+// a free loopback port, under a sub-path (the site must work from any sub-path: every URL in it,
+// the workers' and the wasm's included, is relative), and hands its URL to the tests as
+// `inject('studioUrl')`.
 import { existsSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { preview } from 'vite';
@@ -13,6 +15,8 @@ declare module 'vitest' {
 }
 
 const repoRoot = fileURLToPath(new URL('../..', import.meta.url));
+/** Where the site is served: not the server's root. */
+const SUB_PATH = '/some/sub/path/';
 
 /** Starts the preview server on dist/ and returns the teardown that stops it. */
 export default async function serveDist(project: TestProject): Promise<() => Promise<void>> {
@@ -22,11 +26,12 @@ export default async function serveDist(project: TestProject): Promise<() => Pro
   const server = await preview({
     configFile: `${repoRoot}/vite.config.ts`,
     logLevel: 'warn',
+    base: SUB_PATH,
     preview: { host: '127.0.0.1', port: 0, strictPort: true, open: false },
   });
   const address = server.httpServer.address();
   if (address === null || typeof address === 'string') throw new Error('preview server has no TCP address');
-  project.provide('studioUrl', `http://127.0.0.1:${address.port}/`);
+  project.provide('studioUrl', `http://127.0.0.1:${address.port}${SUB_PATH}`);
   return async () => {
     await server.close();
   };

@@ -78,7 +78,9 @@ describe('the studio', () => {
     await expect.poll(() => page.getByTestId('status').getAttribute('data-state')).toBe('ok');
     await expect(page.getByTestId('editor').locator('.cm-content').textContent()).resolves.toContain('axiom: X');
     const status = (await page.getByTestId('status').textContent()) ?? '';
-    expect(status).toMatch(/^[\d,]+ modules · [\d,]+ segments · [\d,]+ vertices · [\d,]+ triangles · [\d.]+ ms$/);
+    expect(status).toMatch(
+      /^[\d,]+ modules · [\d,]+ segments · [\d,]+ vertices · [\d,]+ triangles · parse\+resolve [\d.]+ · derive [\d.]+ · interpret [\d.]+ · mesh [\d.]+ ms · [\d.]+ ms round trip$/,
+    );
     expect(await page.title()).toContain('Meristem');
 
     firstPicture = await canvasPicture('studio-canvas.png');

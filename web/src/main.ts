@@ -1,22 +1,41 @@
-// The studio page: wires the grammar editor, the core and the 3D view together.
-// Edits rebuild the plant after a short pause; a grammar with errors keeps the last good plant.
+// The studio page: wires the grammar editor, the build worker, the 3D view and the controls
+// around them (see index.html). The logic lives in ./studio, ./editor and ./view; this file only
+// connects the pieces.
 import './style.css';
-import { coreVersion, grammarDirectives, initCore, turtleCommands, type PlantStats } from './core';
+import { coreVersion, grammarDirectives, initCore, turtleCommands, type BuildOptions, type PlantStats } from './core';
 import { createGrammarEditor, type GrammarEditor } from './editor';
 import { PlantView } from './view';
-import { PlantBuilder, debounce, reportErrors, reportPlant, type StatusReport, type TimedBuild } from './studio';
+import {
+  BuildClient,
+  GalleryDialog,
+  GalleryThumbnails,
+  LivePreview,
+  Playback,
+  SliderPanel,
+  askToReplace,
+  attachSplitter,
+  createBuildWorker,
+  fetchExample,
+  installShortcuts,
+  renderShortcutHelp,
+  showStatus,
+  type GalleryEntry,
+  type ShortcutAction,
+} from './studio';
 
-/** The grammar shown at start, relative to the page so the site works from any sub-path. */
-const INITIAL_EXAMPLE_URL = 'examples/abop-1.24d.lsys';
-/** Pause after the last keystroke before rebuilding, in ms. */
-const REBUILD_DELAY_MS = 150;
+/** The example shown at start (in public/examples). */
+const INITIAL_EXAMPLE = 'abop-1.24d.lsys';
 
-/** What the page exposes for its end-to-end tests (and nothing else is global). */
+/** What the page exposes for its end-to-end tests and benchmarks (and nothing else is global). */
 interface StudioTestHook {
   /** Settles when the first build is on screen (rejects if the studio could not start). */
   ready: Promise<void>;
   /** Stats of the plant on screen. */
   lastStats: PlantStats | null;
+  /** The live preview (last builds, delivery events). */
+  preview?: LivePreview;
+  /** The last frame drawn: the delivered-build counter at the time, and `performance.now()`. */
+  rendered: { generation: number; at: number } | null;
 }
 
 declare global {
@@ -25,131 +44,222 @@ declare global {
   }
 }
 
-/** The page's fixed elements (see index.html). */
-interface StudioElements {
-  editor: HTMLElement;
-  viewport: HTMLElement;
-  status: HTMLElement;
-  version: HTMLElement;
-  iterations: HTMLInputElement;
-  sides: HTMLSelectElement;
-  smoothAll: HTMLInputElement;
-  frame: HTMLButtonElement;
-  staleBadge: HTMLElement;
-}
-
 function byId<T extends HTMLElement>(id: string, type: new () => T): T {
   const element = document.getElementById(id);
   if (!(element instanceof type)) throw new Error(`index.html lacks #${id}`);
   return element;
 }
 
-function studioElements(): StudioElements {
+/** The page's fixed elements (see index.html). */
+function studioElements() {
   return {
+    studio: byId('studio', HTMLElement),
     editor: byId('editor', HTMLElement),
     viewport: byId('viewport', HTMLElement),
     status: byId('status', HTMLElement),
     version: byId('core-version', HTMLElement),
     iterations: byId('iterations', HTMLInputElement),
+    stepBack: byId('step-back', HTMLButtonElement),
+    stepForward: byId('step-forward', HTMLButtonElement),
+    play: byId('play', HTMLButtonElement),
+    seed: byId('seed', HTMLInputElement),
+    reroll: byId('reroll', HTMLButtonElement),
     sides: byId('sides', HTMLSelectElement),
     smoothAll: byId('smooth-all', HTMLInputElement),
     frame: byId('frame', HTMLButtonElement),
+    projection: byId('projection', HTMLButtonElement),
+    grid: byId('grid', HTMLButtonElement),
+    lighting: byId('lighting', HTMLButtonElement),
     staleBadge: byId('stale-badge', HTMLElement),
+    sliders: byId('sliders', HTMLElement),
+    constantsCount: byId('constants-count', HTMLElement),
+    constantsEmpty: byId('constants-empty', HTMLElement),
+    splitter: byId('splitter', HTMLElement),
+    openGallery: byId('open-gallery', HTMLButtonElement),
+    gallery: byId('gallery', HTMLDialogElement),
+    galleryList: byId('gallery-list', HTMLElement),
+    confirm: byId('confirm-replace', HTMLDialogElement),
+    confirmExample: byId('confirm-example', HTMLElement),
+    shortcutList: byId('shortcut-list', HTMLElement),
   };
 }
+type StudioElements = ReturnType<typeof studioElements>;
 
-async function fetchText(url: string): Promise<string> {
-  const response = await fetch(url);
-  if (!response.ok) throw new Error(`${url}: HTTP ${response.status}`);
-  return response.text();
-}
-
-/** Shows a report in the status line: its text, and its state as `data-state` (for CSS and tests). */
-function showStatus(status: HTMLElement, report: StatusReport | { state: 'loading' | 'crashed'; text: string }): void {
-  status.textContent = report.text;
-  status.dataset.state = report.state;
-}
-
-/** The override typed into the iterations box, or undefined to use the grammar's `#iterations`. */
-function iterationsOverride(input: HTMLInputElement): number | undefined {
+/** A whole number typed into `input` (0 or more), or undefined when it is empty or not one. */
+function wholeNumber(input: HTMLInputElement): number | undefined {
   const value = input.valueAsNumber;
   return Number.isFinite(value) && value >= 0 ? Math.floor(value) : undefined;
 }
 
+/** A toggle button's state, kept in `aria-pressed`. */
+function pressed(button: HTMLButtonElement): boolean {
+  return button.getAttribute('aria-pressed') === 'true';
+}
+
 async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<void> {
   showStatus(els.status, { state: 'loading', text: 'Loading…' });
-  const [source] = await Promise.all([fetchText(INITIAL_EXAMPLE_URL), initCore()]);
+  // The page's own core instance only serves the tables (commands, directives, version); builds
+  // run in the worker's.
+  const [source] = await Promise.all([fetchExample(INITIAL_EXAMPLE), initCore()]);
   els.version.textContent = `core ${coreVersion()}`;
 
-  const builder = new PlantBuilder();
   const view = new PlantView(els.viewport);
-  let crashed = false;
-  let hasPlant = false;
-  let generation = 0;
-
-  /** The build of `text`, or undefined once the core has crashed (the page then says so). */
-  const buildOf = (text: string): TimedBuild | undefined => {
-    if (crashed) return undefined;
-    try {
-      return builder.build(text, {
-        iterations: iterationsOverride(els.iterations),
-        sides: Number(els.sides.value),
-        smoothAll: els.smoothAll.checked,
-      });
-    } catch (error) {
-      crashed = true;
-      console.error('Meristem core crashed:', error);
-      showStatus(els.status, { state: 'crashed', text: 'The core crashed — reload the page to continue' });
-      return undefined;
-    }
-  };
-
+  const options = (): BuildOptions => ({
+    iterations: wholeNumber(els.iterations),
+    seed: wholeNumber(els.seed),
+    sides: Number(els.sides.value),
+    smoothAll: els.smoothAll.checked,
+  });
   let editor: GrammarEditor | undefined;
-  const rebuild = (): void => {
-    if (!editor) return;
-    const result = buildOf(editor.text());
-    if (!result) return;
-    const { build, millis } = result;
-    if (build.ok) {
-      view.showPlant(build.mesh);
-      hasPlant = true;
-      hook.lastStats = build.stats;
-      if (iterationsOverride(els.iterations) === undefined) els.iterations.placeholder = String(build.stats.iterations);
-      showStatus(els.status, reportPlant(build.stats, build.diagnostics, millis));
-    } else {
-      showStatus(els.status, reportErrors(build.diagnostics, hasPlant));
-    }
-    const stale = !build.ok && hasPlant;
-    view.setStale(stale);
-    els.staleBadge.hidden = !stale;
-    els.status.dataset.generation = String(++generation); // counts builds: tests wait for the next one
-  };
-  const scheduleRebuild = debounce(rebuild, REBUILD_DELAY_MS);
-
+  const preview = new LivePreview({
+    client: new BuildClient(createBuildWorker),
+    view,
+    status: els.status,
+    staleBadge: els.staleBadge,
+    text: () => editor?.text() ?? source,
+    options,
+    diagnosticsChanged: () => editor?.refreshDiagnostics(),
+  });
+  const sliders = new SliderPanel(els.sliders, els.constantsCount, els.constantsEmpty, {
+    replaceRange: (from, to, insert, history) => editor?.replaceRange(from, to, insert, history),
+  });
   editor = createGrammarEditor({
     parent: els.editor,
     doc: source,
-    onChange: scheduleRebuild,
-    diagnose: (text) => buildOf(text)?.build.diagnostics ?? [],
+    onChange: (text) => {
+      sliders.update(text);
+      preview.rebuild();
+    },
+    diagnose: (text) => preview.feed.diagnose(text),
     commands: turtleCommands(),
     directives: grammarDirectives(),
   });
-  els.iterations.addEventListener(
-    'input',
-    debounce(() => {
-      rebuild();
-      editor?.refreshDiagnostics();
-    }, REBUILD_DELAY_MS),
+  const grammarEditor = editor;
+  sliders.update(source);
+
+  // Iterations: the box, step −/+, play / pause.
+  const grammarIterations = () => preview.lastResult?.build.grammarIterations ?? 0;
+  const playback = new Playback(
+    {
+      shown: () => wholeNumber(els.iterations) ?? grammarIterations(),
+      grammarIterations,
+      show: (n) => {
+        els.iterations.value = n === undefined ? '' : String(n);
+        preview.rebuild();
+      },
+    },
+    { maxIterations: Number(els.iterations.max) },
   );
-  // View options re-mesh the plant at once (the editor's diagnostics do not depend on them).
-  els.sides.addEventListener('change', rebuild);
-  els.smoothAll.addEventListener('change', rebuild);
+  playback.onPlayingChange((playing) => {
+    els.play.setAttribute('aria-pressed', String(playing));
+    els.play.textContent = playing ? 'Pause' : 'Play';
+  });
+  els.iterations.addEventListener('input', () => {
+    playback.pause();
+    preview.rebuild();
+  });
+  els.stepBack.addEventListener('click', () => playback.stepBy(-1));
+  els.stepForward.addEventListener('click', () => playback.stepBy(+1));
+  els.play.addEventListener('click', () => playback.toggle());
+
+  // Seed.
+  const reroll = () => {
+    els.seed.value = String(crypto.getRandomValues(new Uint32Array(1))[0]);
+    preview.rebuild();
+  };
+  els.seed.addEventListener('input', () => preview.rebuild());
+  els.reroll.addEventListener('click', reroll);
+
+  // View options and tools.
+  const showProjection = () => els.projection.setAttribute('aria-pressed', String(view.projection === 'orthographic'));
+  const toggleProjection = () => {
+    view.setProjectionMode(view.projection === 'orthographic' ? 'perspective' : 'orthographic');
+    showProjection();
+  };
+  els.sides.addEventListener('change', () => preview.rebuild());
+  els.smoothAll.addEventListener('change', () => preview.rebuild());
   els.frame.addEventListener('click', () => view.frame());
-  rebuild();
+  els.projection.addEventListener('click', toggleProjection);
+  els.grid.addEventListener('click', () => {
+    els.grid.setAttribute('aria-pressed', String(!pressed(els.grid)));
+    view.setGridVisible(pressed(els.grid));
+  });
+  els.lighting.addEventListener('click', () => {
+    els.lighting.setAttribute('aria-pressed', String(!pressed(els.lighting)));
+    view.setLighting(pressed(els.lighting));
+  });
+
+  preview.onDelivered((result) => {
+    els.iterations.placeholder = String(result.build.grammarIterations);
+    if (result.build.ok) hook.lastStats = result.build.stats;
+    showProjection();
+    playback.shownBuild();
+  });
+  view.onRender(() => (hook.rendered = { generation: preview.generation, at: performance.now() }));
+
+  // The gallery. The text the user started from (an example, unchanged) is `pristine`; anything
+  // else is theirs, and opening an example asks first (and stays undoable in the editor).
+  let pristine = source;
+  let currentFile = INITIAL_EXAMPLE;
+  const openExample = async (entry: GalleryEntry) => {
+    const text = await fetchExample(entry.file);
+    const mine = grammarEditor.text();
+    if (mine !== pristine && mine !== text && !(await askToReplace(els.confirm, els.confirmExample, entry.title))) {
+      grammarEditor.view.focus();
+      return;
+    }
+    playback.pause();
+    els.iterations.value = '';
+    els.seed.value = '';
+    sliders.reset();
+    view.setProjectionMode('auto');
+    view.frameNextPlant();
+    pristine = text;
+    currentFile = entry.file;
+    grammarEditor.replaceText(text);
+    grammarEditor.view.focus();
+    preview.rebuild(true);
+  };
+  const gallery = new GalleryDialog(
+    els.gallery,
+    els.galleryList,
+    new GalleryThumbnails(fetchExample),
+    (entry) => void openExample(entry).catch((error: unknown) => console.error('Could not open the example:', error)),
+    () => currentFile,
+  );
+  const openGallery = () => void gallery.open().catch((error: unknown) => console.error('Could not open the gallery:', error));
+  els.openGallery.addEventListener('click', openGallery);
+  window.addEventListener('beforeunload', (event) => {
+    if (grammarEditor.text() !== pristine) event.preventDefault(); // the browser asks before leaving
+  });
+
+  // Keyboard: shortcuts anywhere, their help, the splitter.
+  const actions: Record<ShortcutAction, () => void> = {
+    stepBack: () => playback.stepBy(-1),
+    stepForward: () => playback.stepBy(+1),
+    playPause: () => playback.toggle(),
+    reroll,
+    gallery: openGallery,
+    frame: () => view.frame(),
+    projection: toggleProjection,
+  };
+  installShortcuts(window, (action) => actions[action]());
+  renderShortcutHelp(els.shortcutList);
+  attachSplitter(els.splitter, els.studio);
+
+  hook.preview = preview;
+  const firstBuild = new Promise<void>((resolve) => {
+    const stop = preview.onDelivered(() => {
+      stop();
+      resolve();
+    });
+  });
+  preview.rebuild();
+  await firstBuild;
 }
 
 const els = studioElements();
-const hook: StudioTestHook = { ready: Promise.resolve(), lastStats: null };
+const hook: StudioTestHook = { ready: Promise.resolve(), lastStats: null, rendered: null };
 hook.ready = startStudio(els, hook);
 hook.ready.catch((error: unknown) => {
   console.error('Meristem could not start:', error);

@@ -1,6 +1,7 @@
 // The grammar editor: CodeMirror 6 with the grammar language and the core's diagnostics.
 import { basicSetup } from 'codemirror';
 import { EditorView } from '@codemirror/view';
+import { Transaction } from '@codemirror/state';
 import { forceLinting } from '@codemirror/lint';
 import { isolateHistory } from '@codemirror/commands';
 import type { GrammarDirective, TurtleCommand } from '../core';
@@ -40,10 +41,10 @@ export interface GrammarEditor {
    */
   replaceText(text: string): void;
   /**
-   * Replaces `from`..`to` (UTF-16 offsets) with `insert`, undoable; changes made in quick
-   * succession under the same `userEvent` (a slider drag) undo together.
+   * Replaces `from`..`to` (UTF-16 offsets) with `insert`: an undoable step, or with `history:
+   * false` a change undo skips (the steps of a slider drag, made one undo step at its end).
    */
-  replaceRange(from: number, to: number, insert: string, userEvent?: string): void;
+  replaceRange(from: number, to: number, insert: string, options?: { history?: boolean }): void;
 }
 
 /** Creates the editor in `options.parent`. */
@@ -77,7 +78,11 @@ export function createGrammarEditor(options: GrammarEditorOptions): GrammarEdito
         userEvent: 'input.replace',
         annotations: isolateHistory.of('full'), // one undo step of its own, never joined to typing
       }),
-    replaceRange: (from, to, insert, userEvent = 'input') =>
-      view.dispatch({ changes: { from, to, insert }, userEvent }),
+    replaceRange: (from, to, insert, { history = true } = {}) =>
+      view.dispatch({
+        changes: { from, to, insert },
+        userEvent: 'input',
+        annotations: history ? [] : [Transaction.addToHistory.of(false)],
+      }),
   };
 }

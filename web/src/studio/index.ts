@@ -1,4 +1,15 @@
-// The studio page's own logic: building on edit, the status line.
-export { PlantBuilder, type TimedBuild } from './plant-builder';
-export { reportPlant, reportErrors, plural, type StatusReport } from './status';
-export { debounce } from './debounce';
+// The studio page's own logic: building in a worker on edit, the status line, and the panels
+// and controls around the editor and the view.
+export { reportPlant, reportErrors, plural, millis, type StatusReport } from './status';
+export { BuildClient, createBuildWorker, type BuildOutcome, type BuildResult, type WorkerLike } from './worker-client';
+export { transferablesOf, type BuildRequest, type BuildResponse } from './worker-protocol';
+export { DiagnosticsFeed } from './diagnostics-feed';
+export { LivePreview, showStatus, type LivePreviewParts } from './live-preview';
+export { SliderPanel, sliderRanges, type SliderRange, type SliderEditor } from './sliders';
+export { Playback, type PlaybackHost, type PlaybackOptions } from './playback';
+export { attachSplitter, clampShare, shareAfterKey } from './splitter';
+export { installShortcuts, renderShortcutHelp, shortcutFor, SHORTCUTS, type Shortcut, type ShortcutAction } from './shortcuts';
+export { GalleryDialog, fetchExample, fetchManifest } from './gallery';
+export { GalleryThumbnails } from './thumbnails';
+export { galleryManifest, parseExampleHeader, isGalleryManifest, type GalleryEntry } from './gallery-manifest';
+export { askToReplace } from './confirm';

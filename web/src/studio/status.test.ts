@@ -26,17 +26,21 @@ describe('status line', () => {
     expect(plural(1500, 'module')).toBe('1,500 modules');
   });
 
-  it('reports the sizes and build time of a plant', () => {
-    expect(reportPlant(stats, [], 3.14159)).toEqual({
+  const timings = { parseResolve: 0.04, derive: 1.25, interpret: 12.5, mesh: 61.3 };
+
+  it('reports the sizes, the time of each stage and the whole round trip', () => {
+    expect(reportPlant(stats, [], timings, 83.14159)).toEqual({
       state: 'ok',
-      text: '12,345 modules · 1 segment · 1,024 vertices · 2,000 triangles · 3.1 ms',
+      text:
+        '12,345 modules · 1 segment · 1,024 vertices · 2,000 triangles · ' +
+        'parse+resolve 0.0 · derive 1.3 · interpret 13 · mesh 61 ms · 83 ms round trip',
     });
-    expect(reportPlant(stats, [diagnostic('warning')], 42.4).text).toMatch(/· 42 ms · 1 warning$/);
+    expect(reportPlant(stats, [diagnostic('warning')], timings, 4.24).text).toMatch(/· 4\.2 ms round trip · 1 warning$/);
   });
 
   it('says when a model too large to mesh is drawn as lines', () => {
     const huge = { ...stats, vertices: 0, triangles: 0, lines: 2000000 };
-    expect(reportPlant(huge, [], 900).text).toMatch(/· too large to mesh: 2,000,000 segments drawn as lines$/);
+    expect(reportPlant(huge, [], timings, 900).text).toMatch(/· too large to mesh: 2,000,000 segments drawn as lines$/);
   });
 
   it('reports errors and whether the last good plant is still shown', () => {

@@ -1,5 +1,5 @@
 // The status line's text, as pure functions of a build (tested without a page).
-import type { Diagnostic, PlantStats } from '../core';
+import type { Diagnostic, PlantStats, StageTimings } from '../core';
 
 /** What the status line shows after a build. */
 export interface StatusReport {
@@ -15,14 +15,29 @@ export function plural(n: number, noun: string, nouns = `${noun}s`): string {
   return `${count.format(n)} ${n === 1 ? noun : nouns}`;
 }
 
-/** The status after a successful build: sizes, build time and any warnings. */
-export function reportPlant(stats: PlantStats, diagnostics: readonly Diagnostic[], millis: number): StatusReport {
+/** A duration in ms: one decimal under 10 ms, whole above. */
+export function millis(ms: number): string {
+  return ms < 10 ? ms.toFixed(1) : String(Math.round(ms));
+}
+
+/**
+ * The status after a successful build: sizes, the time of each stage of the core, the round trip
+ * (`totalMillis`: from the request to the build's arrival on the page, waiting for the worker and
+ * transferring the arrays included) and any warnings.
+ */
+export function reportPlant(
+  stats: PlantStats,
+  diagnostics: readonly Diagnostic[],
+  timings: StageTimings,
+  totalMillis: number,
+): StatusReport {
   const parts = [
     plural(stats.modules, 'module'),
     plural(stats.segments, 'segment'),
     plural(stats.vertices, 'vertex', 'vertices'),
     plural(stats.triangles, 'triangle'),
-    `${millis < 10 ? millis.toFixed(1) : Math.round(millis)} ms`,
+    `parse+resolve ${millis(timings.parseResolve)} · derive ${millis(timings.derive)} · interpret ${millis(timings.interpret)} · mesh ${millis(timings.mesh)} ms`,
+    `${millis(totalMillis)} ms round trip`,
   ];
   const warnings = diagnostics.filter((d) => d.severity === 'warning').length;
   if (warnings > 0) parts.push(plural(warnings, 'warning'));

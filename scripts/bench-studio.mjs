@@ -1,0 +1,114 @@
+// `npm run bench:studio`: keystroke-to-frame time of the studio in headless Chromium, on the built
+// site (dist/). For each workload the grammar is opened, then one key at a time is typed into the
+// `#angle` line (Backspace makes `#angle 2`, `0` makes `#angle 20` again: every keystroke gives a
+// new valid grammar); each keystroke is timed from its keydown event to the end of the frame that
+// draws its plant, and to the next animation frame after it. Each key waits until the previous
+// key's frames are done, so each is measured alone. Two Chromium setups: GPU compositing on
+// SwiftShader (as on a machine with a GPU) and Chromium's default without a GPU (software
+// compositing: every WebGL frame is read back on the main thread, waiting for the rasterizer).
+// Medians go to test-results/bench-studio.json. Not part of `npm test`.
+import { mkdirSync, writeFileSync } from 'node:fs';
+import os from 'node:os';
+import { chromium } from 'playwright-core';
+import { preview } from 'vite';
+
+const KEYSTROKES = 16;
+const WORKLOADS = [
+  { name: 'ABOP 1.24d, n = 10 (116,050 segments)', iterations: '10' },
+  { name: 'ABOP 1.24d, n = 7 (4,118 segments)', iterations: '' },
+];
+const SETUPS = {
+  'GPU compositing (SwiftShader)': ['--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
+  'software compositing (Chromium default without a GPU)': [],
+};
+
+const median = (values) => {
+  const s = [...values].sort((a, b) => a - b);
+  return s.length === 0 ? NaN : s[Math.floor(s.length / 2)];
+};
+const round = (ms) => Math.round(ms * 10) / 10;
+
+const server = await preview({ configFile: new URL('../vite.config.ts', import.meta.url).pathname, logLevel: 'warn', preview: { host: '127.0.0.1', port: 0 } });
+const url = `http://127.0.0.1:${server.httpServer.address().port}/`;
+const results = [];
+try {
+  for (const [setup, args] of Object.entries(SETUPS)) {
+    const browser = await chromium.launch({ executablePath: '/usr/bin/chromium', args });
+    for (const workload of WORKLOADS) {
+      const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
+      await page.goto(url);
+      await page.waitForFunction(() => (window.__meristem?.lastStats?.segments ?? 0) > 0);
+      if (workload.iterations) {
+        await page.getByTestId('iterations').fill(workload.iterations);
+        await page.waitForFunction((n) => window.__meristem?.lastStats?.iterations === n, Number(workload.iterations), { timeout: 60_000 });
+      }
+      await page.getByTestId('frame').click();
+      const stats = await page.evaluate(() => window.__meristem.lastStats);
+      // In the page: the keydown time, and for each delivered build its arrival, cost and first frame.
+      await page.evaluate(() => {
+        const w = window;
+        w.__bench = { keydown: 0, deliveries: [] };
+        addEventListener('keydown', (e) => (w.__bench.keydown = e.timeStamp), { capture: true });
+        w.__meristem.preview.onDelivered((r) =>
+          w.__bench.deliveries.push({ source: r.source, at: performance.now(), generation: w.__meristem.preview.generation, roundTrip: r.roundTripMillis, timings: r.build.timings }),
+        );
+      });
+      await page.locator('[data-testid=editor] .cm-line', { hasText: '#angle' }).click();
+      await page.keyboard.press('End');
+      const samples = [];
+      for (let i = 0; i < KEYSTROKES; i++) {
+        await page.keyboard.press(i % 2 === 0 ? 'Backspace' : 'Digit0');
+        const expected = i % 2 === 0 ? '#angle 2\n' : '#angle 20\n';
+        const sample = await page.evaluate(
+          (text) =>
+            new Promise((resolve) => {
+              const poll = () => {
+                const b = window.__bench;
+                const d = b.deliveries.at(-1);
+                const r = window.__meristem.rendered;
+                if (d && d.source.includes(text) && r && r.generation >= d.generation) {
+                  requestAnimationFrame(() => {
+                    resolve({ keydown: b.keydown, delivered: d.at, rendered: r.at, nextFrame: performance.now(), roundTrip: d.roundTrip, timings: d.timings });
+                  });
+                } else setTimeout(poll, 1);
+              };
+              poll();
+            }),
+          expected,
+        );
+        samples.push(sample);
+        // Let the (software) GPU finish: two more frames, then a pause.
+        await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
+        await page.waitForTimeout(300);
+      }
+      const pick = (f) => round(median(samples.map(f)));
+      const row = {
+        setup,
+        workload: workload.name,
+        segments: stats.segments,
+        vertices: stats.vertices,
+        keystrokeToDrawnMs: pick((s) => s.rendered - s.keydown),
+        keystrokeToNextFrameMs: pick((s) => s.nextFrame - s.keydown),
+        roundTripMs: pick((s) => s.roundTrip),
+        coreMs: pick((s) => s.timings.parseResolve + s.timings.derive + s.timings.interpret + s.timings.mesh),
+        meshMs: pick((s) => s.timings.mesh),
+        deliveredToDrawnMs: pick((s) => s.rendered - s.delivered),
+      };
+      results.push(row);
+      console.log(JSON.stringify(row));
+      await page.close();
+    }
+    await browser.close();
+  }
+} finally {
+  await server.close();
+}
+mkdirSync(new URL('../test-results/', import.meta.url), { recursive: true });
+writeFileSync(
+  new URL('../test-results/bench-studio.json', import.meta.url),
+  `${JSON.stringify({ date: new Date().toISOString(), cpu: os.cpus()[0]?.model, cores: os.cpus().length, keystrokes: KEYSTROKES, results }, null, 1)}\n`,
+);
+console.log('\n| setup | workload | keystroke → frame drawn | → next frame | round trip (request → build on the page) | core stages | of which mesh | build on the page → drawn |');
+console.log('| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: |');
+for (const r of results)
+  console.log(`| ${r.setup} | ${r.workload} | ${r.keystrokeToDrawnMs} ms | ${r.keystrokeToNextFrameMs} ms | ${r.roundTripMs} ms | ${r.coreMs} ms | ${r.meshMs} ms | ${r.deliveredToDrawnMs} ms |`);

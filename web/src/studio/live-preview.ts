@@ -1,0 +1,98 @@
+// The live preview: every change of the text or of a build option sends a build to the worker;
+// only the newest one is shown. A grammar with errors keeps the last good plant on screen, marked
+// stale. The editor's linter gets its diagnostics from the same builds (DiagnosticsFeed).
+import type { BuildOptions } from '../core';
+import type { PlantView } from '../view';
+import { DiagnosticsFeed } from './diagnostics-feed';
+import { reportErrors, reportPlant, type StatusReport } from './status';
+import type { BuildClient, BuildOutcome, BuildResult } from './worker-client';
+
+/** What the preview reads and writes on the page. */
+export interface LivePreviewParts {
+  client: BuildClient;
+  view: PlantView;
+  /** The status line: its text, `data-state` and `data-generation` (a counter of delivered builds). */
+  status: HTMLElement;
+  staleBadge: HTMLElement;
+  /** The grammar text now. */
+  text: () => string;
+  /** The build options now (iterations, seed, view options). */
+  options: () => BuildOptions;
+  /** Called when a build's diagnostics may differ from what the linter showed for the same text. */
+  diagnosticsChanged: () => void;
+}
+
+/** A status line state beyond a build's own. */
+type PageStatus = StatusReport | { state: 'loading' | 'crashed'; text: string };
+
+/** Shows a report in the status line: its text, and its state as `data-state` (for CSS and tests). */
+export function showStatus(status: HTMLElement, report: PageStatus): void {
+  status.textContent = report.text;
+  status.dataset.state = report.state;
+}
+
+/** Keeps the view in step with the text and options. */
+export class LivePreview {
+  /** The diagnostics of delivered builds, for the editor's linter. */
+  readonly feed = new DiagnosticsFeed();
+  /** The last build delivered (with or without errors). */
+  lastResult: BuildResult | undefined;
+  /** The last build without errors: the plant on screen. */
+  lastGood: BuildResult | undefined;
+  /** Delivered builds so far (also `data-generation` on the status line). */
+  generation = 0;
+  private requestedKey: string | undefined;
+  private readonly listeners = new Set<(result: BuildResult) => void>();
+
+  constructor(private readonly parts: LivePreviewParts) {}
+
+  /** Calls `listener` after every delivered build has been applied to the page. */
+  onDelivered(listener: (result: BuildResult) => void): () => void {
+    this.listeners.add(listener);
+    return () => this.listeners.delete(listener);
+  }
+
+  /**
+   * Builds the current text with the current options, unless that is what was asked last (or
+   * `force`: e.g. an example opened again must be framed again).
+   */
+  rebuild(force = false): void {
+    const source = this.parts.text();
+    const options = this.parts.options();
+    const key = JSON.stringify(options) + '\n' + source;
+    if (key === this.requestedKey && !force) return;
+    this.requestedKey = key;
+    void this.parts.client.request(source, options).then((outcome) => this.deliver(outcome));
+  }
+
+  private deliver(outcome: BuildOutcome): void {
+    if (outcome.kind === 'superseded') return;
+    const { view, status, staleBadge } = this.parts;
+    if (outcome.kind === 'crashed') {
+      console.error('Meristem core crashed:', outcome.message);
+      this.requestedKey = undefined; // the same text may be tried again, on a fresh worker
+      this.feed.delivered(this.parts.text(), []);
+      showStatus(status, { state: 'crashed', text: 'The core crashed on this grammar (a bug); edit to try again' });
+      status.dataset.generation = String(++this.generation);
+      return;
+    }
+    const { result } = outcome;
+    const { build } = result;
+    const sameText = this.lastResult?.source === result.source;
+    if (build.ok) {
+      view.showPlant(build.mesh, build.flat);
+      this.lastGood = result;
+      showStatus(status, reportPlant(build.stats, build.diagnostics, build.timings, result.roundTripMillis));
+    } else {
+      showStatus(status, reportErrors(build.diagnostics, this.lastGood !== undefined));
+    }
+    const stale = !build.ok && this.lastGood !== undefined;
+    view.setStale(stale);
+    staleBadge.hidden = !stale;
+    this.lastResult = result;
+    this.feed.delivered(result.source, build.diagnostics);
+    if (sameText) this.parts.diagnosticsChanged();
+    status.dataset.generation = String(++this.generation);
+    for (const listener of this.listeners) listener(result);
+  }
+}

@@ -1,0 +1,69 @@
+// The studio's keyboard shortcuts: one table, which drives both the key handler and the help.
+// All use Alt with a key the editor and browsers leave free (Alt with F, E, D, V, S, B, T, H or a
+// digit opens browser menus or tabs on some systems), and work wherever the focus is.
+
+/** What a shortcut does. */
+export type ShortcutAction = 'stepBack' | 'stepForward' | 'playPause' | 'reroll' | 'gallery' | 'frame' | 'projection';
+
+/** One shortcut: the key (`KeyboardEvent.code`, with Alt), how it is written, what it does. */
+export interface Shortcut {
+  code: string;
+  keys: string;
+  action: ShortcutAction;
+  description: string;
+}
+
+export const SHORTCUTS: readonly Shortcut[] = [
+  { code: 'Comma', keys: 'Alt+,', action: 'stepBack', description: 'One iteration fewer' },
+  { code: 'Period', keys: 'Alt+.', action: 'stepForward', description: 'One iteration more' },
+  { code: 'KeyP', keys: 'Alt+P', action: 'playPause', description: 'Play the derivation from 0 / pause' },
+  { code: 'KeyR', keys: 'Alt+R', action: 'reroll', description: 'New random seed' },
+  { code: 'KeyG', keys: 'Alt+G', action: 'gallery', description: 'Open the gallery' },
+  { code: 'KeyK', keys: 'Alt+K', action: 'frame', description: 'Frame the plant' },
+  { code: 'KeyO', keys: 'Alt+O', action: 'projection', description: 'Switch between the 2D and the 3D view' },
+];
+
+/** The action of a key event, if it is one of the shortcuts (Alt alone as modifier). */
+export function shortcutFor(event: Pick<KeyboardEvent, 'code' | 'altKey' | 'ctrlKey' | 'metaKey' | 'shiftKey'>): Shortcut | undefined {
+  if (!event.altKey || event.ctrlKey || event.metaKey || event.shiftKey) return undefined;
+  return SHORTCUTS.find((s) => s.code === event.code);
+}
+
+/** Runs the actions on their keys anywhere on the page (before the editor sees them). */
+export function installShortcuts(target: Window, run: (action: ShortcutAction) => void): void {
+  target.addEventListener(
+    'keydown',
+    (event) => {
+      const shortcut = shortcutFor(event);
+      if (!shortcut || event.repeat) return;
+      event.preventDefault();
+      event.stopPropagation();
+      run(shortcut.action);
+    },
+    { capture: true },
+  );
+}
+
+/** Fills a help list (`<dl>`) with the shortcuts and the other keys worth knowing. */
+export function renderShortcutHelp(list: HTMLElement): void {
+  const rows: [string, string][] = [
+    ...SHORTCUTS.map((s): [string, string] => [s.keys, s.description]),
+    ['Ctrl+Space', 'Complete a directive, command or #define name'],
+    ['Ctrl+Z', 'Undo, also an example opened from the gallery'],
+    ['← → on the divider', 'Resize the editor and the view'],
+  ];
+  list.replaceChildren(
+    ...rows.flatMap(([keys, description]) => {
+      const term = document.createElement('dt');
+      for (const [i, key] of keys.split('+').entries()) {
+        if (i > 0) term.append('+');
+        const kbd = document.createElement('kbd');
+        kbd.textContent = key;
+        term.append(kbd);
+      }
+      const detail = document.createElement('dd');
+      detail.textContent = description;
+      return [term, detail];
+    }),
+  );
+}

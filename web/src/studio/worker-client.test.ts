@@ -1,0 +1,142 @@
+import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
+import type { PlantBuild } from '../core';
+import { BuildClient, type BuildOutcome, type WorkerLike } from './worker-client';
+import type { BuildRequest, BuildResponse } from './worker-protocol';
+
+/** A worker that records requests and answers when the test says so. */
+class FakeWorker implements WorkerLike {
+  requests: BuildRequest[] = [];
+  terminated = false;
+  private onMessage: ((event: MessageEvent<BuildResponse>) => void) | undefined;
+  private onError: ((event: ErrorEvent) => void) | undefined;
+
+  postMessage(message: BuildRequest): void {
+    this.requests.push(message);
+  }
+  terminate(): void {
+    this.terminated = true;
+  }
+  addEventListener(type: 'message', listener: (event: MessageEvent<BuildResponse>) => void): void;
+  addEventListener(type: 'error', listener: (event: ErrorEvent) => void): void;
+  addEventListener(type: 'message' | 'error', listener: ((event: MessageEvent<BuildResponse>) => void) | ((event: ErrorEvent) => void)): void {
+    if (type === 'message') this.onMessage = listener as (event: MessageEvent<BuildResponse>) => void;
+    else this.onError = listener as (event: ErrorEvent) => void;
+  }
+  /** Answers request `id` (default: the last one) with a build whose `derived` is its source. */
+  answer(id = this.requests.at(-1)!.id): void {
+    const request = this.requests.find((r) => r.id === id)!;
+    const build = { ok: true, derived: request.source } as unknown as PlantBuild;
+    this.onMessage?.({ data: { kind: 'built', id, build, workerMillis: 1 } } as MessageEvent<BuildResponse>);
+  }
+  crash(id = this.requests.at(-1)!.id): void {
+    this.onMessage?.({ data: { kind: 'crashed', id, message: 'RuntimeError: unreachable' } } as MessageEvent<BuildResponse>);
+  }
+  fail(): void {
+    this.onError?.({ message: 'no module', preventDefault() {} } as ErrorEvent);
+  }
+}
+
+let workers: FakeWorker[];
+let clock: number;
+let client: BuildClient;
+const latest = () => workers.at(-1)!;
+const source = (outcome: BuildOutcome) => (outcome.kind === 'built' ? outcome.result.build.derived : outcome.kind);
+
+beforeEach(() => {
+  vi.useFakeTimers();
+  workers = [];
+  clock = 0;
+  client = new BuildClient(
+    () => {
+      workers.push(new FakeWorker());
+      return latest();
+    },
+    { now: () => clock, abandonAfterMs: 2000 },
+  );
+});
+
+afterEach(() => {
+  vi.useRealTimers();
+});
+
+describe('BuildClient', () => {
+  it('delivers a build and its round trip time', async () => {
+    const outcome = client.request('A', { iterations: 3 });
+    expect(latest().requests).toEqual([{ id: 1, source: 'A', options: { iterations: 3 } }]);
+    clock = 40;
+    latest().answer();
+    const result = await outcome;
+    expect(result.kind).toBe('built');
+    if (result.kind === 'built') {
+      expect(result.result.source).toBe('A');
+      expect(result.result.roundTripMillis).toBe(40);
+    }
+  });
+
+  it('runs one build at a time and keeps only the newest waiting request', async () => {
+    const a = client.request('A', {});
+    const b = client.request('B', {});
+    const c = client.request('C', {});
+    expect(latest().requests.map((r) => r.source)).toEqual(['A']);
+    expect(source(await a)).toBe('superseded');
+    expect(source(await b)).toBe('superseded');
+    latest().answer(1); // A's answer arrives late: dropped, and C goes out
+    expect(latest().requests.map((r) => r.source)).toEqual(['A', 'C']);
+    latest().answer();
+    expect(source(await c)).toBe('C');
+    expect(workers).toHaveLength(1);
+  });
+
+  it('never delivers a stale build, even when its answer comes after the newer request', async () => {
+    const outcomes: string[] = [];
+    void client.request('old', {}).then((o) => outcomes.push(source(o)));
+    void client.request('new', {}).then((o) => outcomes.push(source(o)));
+    latest().answer(1);
+    latest().answer(2);
+    await vi.runAllTimersAsync();
+    expect(outcomes).toEqual(['superseded', 'new']);
+  });
+
+  it('terminates a worker stuck on an outdated build for 2 s and sends the newest request to a new one', async () => {
+    void client.request('slow', {});
+    clock = 500;
+    const fresh = client.request('fresh', {});
+    await vi.advanceTimersByTimeAsync(1400);
+    expect(workers).toHaveLength(1);
+    clock = 2000;
+    await vi.advanceTimersByTimeAsync(100);
+    expect(workers).toHaveLength(2);
+    expect(workers[0].terminated).toBe(true);
+    expect(latest().requests.map((r) => r.source)).toEqual(['fresh']);
+    workers[0].answer(1); // the old worker's answer (if any) is ignored
+    latest().answer();
+    expect(source(await fresh)).toBe('fresh');
+    expect(client.workersStarted).toBe(2);
+  });
+
+  it('lets a long build finish when nothing newer is asked', async () => {
+    const slow = client.request('slow', {});
+    clock = 10_000;
+    await vi.advanceTimersByTimeAsync(10_000);
+    latest().answer();
+    expect(source(await slow)).toBe('slow');
+    expect(workers).toHaveLength(1);
+  });
+
+  it('reports a crash and builds the next request on a fresh worker', async () => {
+    const broken = client.request('panic', {});
+    latest().crash();
+    expect(await broken).toEqual({ kind: 'crashed', message: 'RuntimeError: unreachable' });
+    expect(workers[0].terminated).toBe(true);
+    const next = client.request('fine', {});
+    expect(workers).toHaveLength(2);
+    latest().answer();
+    expect(source(await next)).toBe('fine');
+  });
+
+  it('reports a worker that fails to start', async () => {
+    const outcome = client.request('A', {});
+    latest().fail();
+    expect(await outcome).toEqual({ kind: 'crashed', message: 'the build worker failed: no module' });
+  });
+});
