@@ -3,7 +3,8 @@
 //! of any aspect ratio, a key light and a shadowless fill light, and the plant as one `mesh2`
 //! with per-vertex normals and a `texture_list` holding one texture per colour index (each face
 //! names its texture). POV-Ray is left-handed, so z is negated (the plant is not mirrored). A model
-//! too large to mesh becomes thin cylinders, one `union` per colour index.
+//! too large to mesh becomes cylinders as wide as its segments, with a declared texture per
+//! colour index.
 //!
 //! Render: `povray +Iplant.pov +Oplant.png +W800 +H600 +A0.3` (run it in the file's folder:
 //! POV-Ray's default I/O restrictions allow the current directory).
@@ -105,36 +106,50 @@ fn mesh2(out: &mut String, scene: &Scene, groups: &[super::scene::ColorGroup], d
     out.push_str("  }\n}\nobject { Meristem_Plant }\n");
 }
 
+/// The fallback's lines as cylinders as wide as their segments (line `i` is segment `i`), so
+/// POV-Ray draws the tubes the mesh could not hold; each names its colour index's texture.
 fn cylinders(
     out: &mut String,
     scene: &Scene,
     groups: &[super::scene::ColorGroup],
     decimals: usize,
 ) {
-    let radius = extent(scene.bounds()) / 1000.0;
     let lines = &scene.mesh.lines;
+    let unit = scene.mesh.width_unit;
     for group in groups {
-        writeln!(out, "union {{ // colour index {}", group.index).ok();
+        write!(
+            out,
+            "#declare Meristem_Color_{} = texture {{ pigment {{ color rgb <",
+            group.index
+        )
+        .ok();
+        rgb(out, group.color);
+        out.push_str("> } finish { ambient 0.15 diffuse 0.85 } }\n");
+    }
+    for group in groups {
         for &item in &group.items {
             let at = |k: usize| {
                 let i = 6 * item as usize + 3 * k;
                 DVec3::new(lines[i] as f64, lines[i + 1] as f64, lines[i + 2] as f64)
             };
             let (a, b) = (at(0), at(1));
-            if (b - a).length() <= radius * 1e-3 {
+            let width = scene
+                .skeleton
+                .segments
+                .get(item as usize)
+                .map_or(1.0, |s| s.width);
+            let radius = 0.5 * width * unit;
+            if !(radius > 0.0 && (b - a).length() > 0.0) {
                 continue;
             }
-            out.push_str("  cylinder { ");
+            out.push_str("cylinder { ");
             point(out, a, decimals);
             out.push_str(", ");
             point(out, b, decimals);
             out.push_str(", ");
-            number(out, radius, decimals + 1);
-            out.push_str(" }\n");
+            number(out, radius, decimals + 2);
+            writeln!(out, " texture {{ Meristem_Color_{} }} }}", group.index).ok();
         }
-        out.push_str("  texture { pigment { color rgb <");
-        rgb(out, group.color);
-        out.push_str("> } finish { ambient 0.15 diffuse 0.85 } }\n}\n");
     }
 }
 
