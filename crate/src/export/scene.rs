@@ -207,22 +207,60 @@ pub fn srgb(linear: [f32; 3]) -> [f32; 3] {
 }
 
 /// Writes `value` with at most `decimals` decimals, trailing zeros and a trailing point removed
-/// and `-0` printed as `0`: `1.5`, `2`, `-0.25`. The same bytes on every machine (Rust's own
-/// float formatting, no locale).
+/// and `-0` printed as `0`: `1.5`, `2`, `-0.25`. The same bytes on every machine: the value is
+/// scaled and rounded (half away from zero) in IEEE arithmetic, then printed as integers, which is
+/// also several times faster than `{:.6}` on the millions of numbers of a large model. Values too
+/// large for that take Rust's own formatting (no locale either way).
 pub fn number(out: &mut String, value: f64, decimals: usize) {
-    let start = out.len();
+    const POWERS: [u64; 16] = {
+        let mut p = [1u64; 16];
+        let mut k = 1;
+        while k < 16 {
+            p[k] = p[k - 1] * 10;
+            k += 1;
+        }
+        p
+    };
     let value = if value.is_finite() { value } else { 0.0 };
-    write!(out, "{value:.decimals$}").ok();
-    if out[start..].contains('.') {
-        let trimmed = out[start..]
-            .trim_end_matches('0')
-            .trim_end_matches('.')
-            .len();
-        out.truncate(start + trimmed);
+    let scaled = if decimals < POWERS.len() {
+        (value * POWERS[decimals] as f64).round()
+    } else {
+        f64::INFINITY
+    };
+    if scaled.abs() >= 9.0e15 {
+        let start = out.len();
+        write!(out, "{value:.decimals$}").ok();
+        if out[start..].contains('.') {
+            let trimmed = out[start..]
+                .trim_end_matches('0')
+                .trim_end_matches('.')
+                .len();
+            out.truncate(start + trimmed);
+        }
+        if &out[start..] == "-0" {
+            out.truncate(start);
+            out.push('0');
+        }
+        return;
     }
-    if &out[start..] == "-0" {
-        out.truncate(start);
+    let magnitude = scaled.abs() as u64;
+    if magnitude == 0 {
         out.push('0');
+        return;
+    }
+    if scaled < 0.0 {
+        out.push('-');
+    }
+    let whole = magnitude / POWERS[decimals];
+    let mut fraction = magnitude % POWERS[decimals];
+    write!(out, "{whole}").ok();
+    if fraction != 0 {
+        let mut digits = decimals;
+        while fraction.is_multiple_of(10) {
+            fraction /= 10;
+            digits -= 1;
+        }
+        write!(out, ".{fraction:0digits$}").ok();
     }
 }
 
@@ -261,6 +299,10 @@ mod tests {
         assert_eq!(text(123.456789, 3), "123.457");
         assert_eq!(text(100.0, 0), "100");
         assert_eq!(text(f64::NAN, 3), "0");
+        assert_eq!(text(0.05, 4), "0.05");
+        assert_eq!(text(-3.000_04, 4), "-3");
+        assert_eq!(text(0.000_123, 8), "0.000123");
+        assert_eq!(text(2.5e20, 6), "250000000000000000000");
     }
 
     #[test]
