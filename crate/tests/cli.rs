@@ -126,6 +126,7 @@ fn export_writes_the_format_of_the_extension() {
     assert!(obj.contains("\nmtllib plant.mtl\n"));
     let mtl = std::fs::read_to_string(dir.join("plant.mtl")).expect("mtl");
     assert!(mtl.contains("newmtl color_0\n"));
+    std::fs::remove_dir_all(dir).ok();
 }
 
 #[test]
@@ -149,6 +150,7 @@ fn export_takes_the_format_option_and_is_deterministic() {
         "same grammar and seed, same bytes"
     );
     assert_ne!(first, run("c.bin", "4"), "another seed, another plant");
+    std::fs::remove_dir_all(dir).ok();
 }
 
 #[test]
@@ -178,4 +180,5 @@ fn export_refuses_unknown_formats_and_reports_grammar_errors() {
         "{err}"
     );
     assert!(!out.exists(), "no file for a grammar with errors");
+    std::fs::remove_dir_all(dir).ok();
 }
