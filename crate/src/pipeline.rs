@@ -41,6 +41,22 @@ pub struct Build {
     /// For each module of the string the turtle read, the module of `string` it came from (empty
     /// when they are the same string).
     pub turtle_origin: Vec<u32>,
+    /// The string before the last step, and for each module of `string` the module of it that
+    /// it came from (both empty after 0 steps): what [`Build::explain`] reads.
+    pub previous: LString,
+    pub parent: Vec<u32>,
+}
+
+/// [`derive::Explanation`] in terms of the derived string: which of its modules production `p`
+/// made in the last step, and which descend from the modules that served as its contexts.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Explained {
+    pub explanation: derive::Explanation,
+    /// Modules of `string` the production wrote in the last step.
+    pub produced: Vec<u32>,
+    /// Modules of `string` that descend from a left / right context module of those rewritings.
+    pub left: Vec<u32>,
+    pub right: Vec<u32>,
 }
 
 impl Build {
@@ -77,6 +93,51 @@ impl Build {
             self.iterations,
             &self.mesh,
         );
+    }
+
+    /// Explains production `production` (an index into the model's productions) on the last step:
+    /// `None` before any step or without a model.
+    pub fn explain(&self, production: u32) -> Option<Result<Explained, Diagnostic>> {
+        let model = self.model.as_ref()?;
+        if self.parent.is_empty() {
+            return None;
+        }
+        Some(
+            derive::explain(
+                model,
+                &self.previous,
+                &self.origin,
+                &self.parent,
+                self.iterations,
+                production,
+            )
+            .map(|explanation| {
+                let mut is_left = vec![false; self.previous.len()];
+                let mut is_right = vec![false; self.previous.len()];
+                explanation
+                    .left
+                    .iter()
+                    .for_each(|&i| is_left[i as usize] = true);
+                explanation
+                    .right
+                    .iter()
+                    .for_each(|&i| is_right[i as usize] = true);
+                let mut explained = Explained::default();
+                for (j, (&o, &p)) in self.origin.iter().zip(&self.parent).enumerate() {
+                    if o == production {
+                        explained.produced.push(j as u32);
+                    }
+                    if is_left[p as usize] {
+                        explained.left.push(j as u32);
+                    }
+                    if is_right[p as usize] {
+                        explained.right.push(j as u32);
+                    }
+                }
+                explained.explanation = explanation;
+                explained
+            }),
+        )
     }
 
     /// Diagnostics with line and column, in source order.
@@ -133,6 +194,8 @@ pub fn build(source: &str, options: &BuildOptions) -> Build {
             result.string = derivation.string;
             result.interpreted = derivation.interpreted;
             result.origin = derivation.origin;
+            result.previous = derivation.previous;
+            result.parent = derivation.parent;
             derivation.turtle_origin
         }
         Err(diagnostic) => {

@@ -133,6 +133,71 @@ impl Build {
         js_sys::Float32Array::from(&self.inner.mesh.line_colors[..])
     }
 
+    /// The productions of the productions section, as JSON `[{index, from, to, label, context}]`:
+    /// `from`/`to` are the UTF-8 byte range of the production in the source, `context` whether it
+    /// has a left or right context. The index is what `origins()` and `explain` use.
+    pub fn productions(&self) -> String {
+        #[derive(serde::Serialize)]
+        struct Row<'a> {
+            index: usize,
+            from: usize,
+            to: usize,
+            label: Option<&'a str>,
+            context: bool,
+        }
+        let rows: Vec<Row> = self.inner.model.as_ref().map_or_else(Vec::new, |m| {
+            m.productions
+                .productions
+                .iter()
+                .enumerate()
+                .map(|(index, p)| Row {
+                    index,
+                    from: p.span.start,
+                    to: p.span.end,
+                    label: p.label.as_deref(),
+                    context: p.has_context(),
+                })
+                .collect()
+        });
+        serde_json::to_string(&rows).unwrap_or_else(|_| "[]".into())
+    }
+
+    /// Explains production `production` on the last step (see `pipeline::Build::explain`);
+    /// `undefined` before the first step, for an unknown index, or on a runtime error.
+    pub fn explain(&self, production: u32) -> Option<Explanation> {
+        match self.inner.explain(production)? {
+            Ok(inner) => Some(Explanation { inner }),
+            Err(_) => None,
+        }
+    }
+
+    /// Modules in the derived string.
+    #[wasm_bindgen(getter, js_name = moduleCount)]
+    pub fn module_count(&self) -> usize {
+        self.inner.string.len()
+    }
+
+    /// The text of modules `start .. start + count` of the derived string, as a JSON array of
+    /// strings (one per module), for the virtualised string panel.
+    #[wasm_bindgen(js_name = moduleTexts)]
+    pub fn module_texts(&self, start: usize, count: usize) -> String {
+        let Some(model) = &self.inner.model else {
+            return "[]".into();
+        };
+        let s = &self.inner.string;
+        let end = start.saturating_add(count).min(s.len());
+        let texts: Vec<String> = (start.min(end)..end)
+            .map(|i| s.module_text(&model.alphabet, i))
+            .collect();
+        serde_json::to_string(&texts).unwrap_or_else(|_| "[]".into())
+    }
+
+    /// For each module of the derived string, the index of the module of the previous step's
+    /// string it was rewritten or copied from (empty after 0 steps).
+    pub fn parents(&self) -> js_sys::Uint32Array {
+        js_sys::Uint32Array::from(&self.inner.parent[..])
+    }
+
     /// The derived string, cut after `max_chars` characters with `…` appended when longer.
     pub fn derived(&self, max_chars: usize) -> String {
         match &self.inner.model {
@@ -142,6 +207,50 @@ impl Build {
                 .to_text_truncated(&model.alphabet, max_chars),
             None => String::new(),
         }
+    }
+}
+
+/// Why and where one production fired in the last step. Module indices name the derived string.
+#[wasm_bindgen]
+pub struct Explanation {
+    inner: pipeline::Explained,
+}
+
+#[wasm_bindgen]
+impl Explanation {
+    /// Modules the production rewrote.
+    #[wasm_bindgen(getter)]
+    pub fn fired(&self) -> u32 {
+        self.inner.explanation.rewritten.len() as u32
+    }
+
+    /// Modules whose predecessor and contexts matched it.
+    #[wasm_bindgen(getter, js_name = contextMatched)]
+    pub fn context_matched(&self) -> u32 {
+        self.inner.explanation.context_matched
+    }
+
+    /// Of those, the modules whose condition was false.
+    #[wasm_bindgen(getter, js_name = conditionFailed)]
+    pub fn condition_failed(&self) -> u32 {
+        self.inner.explanation.condition_failed
+    }
+
+    /// Modules of the derived string the production wrote.
+    pub fn produced(&self) -> js_sys::Uint32Array {
+        js_sys::Uint32Array::from(&self.inner.produced[..])
+    }
+
+    /// Modules of the derived string descending from the modules that served as left context.
+    #[wasm_bindgen(js_name = leftContext)]
+    pub fn left_context(&self) -> js_sys::Uint32Array {
+        js_sys::Uint32Array::from(&self.inner.left[..])
+    }
+
+    /// Modules of the derived string descending from the modules that served as right context.
+    #[wasm_bindgen(js_name = rightContext)]
+    pub fn right_context(&self) -> js_sys::Uint32Array {
+        js_sys::Uint32Array::from(&self.inner.right[..])
     }
 }
 
