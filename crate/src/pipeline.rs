@@ -98,6 +98,31 @@ impl Build {
     /// Explains production `production` (an index into the model's productions) on the last step:
     /// `None` before any step or without a model.
     pub fn explain(&self, production: u32) -> Option<Result<Explained, Diagnostic>> {
+        self.explain_where(production, None)
+    }
+
+    /// Explains how module `module` of the derived string was made: the production that wrote it
+    /// and the contexts of that one rewriting (`produced` is then every module that rewriting
+    /// wrote). `None` when it was copied, before any step, or without a model.
+    pub fn explain_module(&self, module: usize) -> Option<Result<Explained, Diagnostic>> {
+        let production = *self.origin.get(module)?;
+        if production == derive::NOT_REWRITTEN {
+            return None;
+        }
+        let source = *self.parent.get(module)? as usize;
+        let mut explained = self.explain_where(production, Some(source))?;
+        if let Ok(e) = &mut explained {
+            e.produced
+                .retain(|&j| self.parent[j as usize] as usize == source);
+        }
+        Some(explained)
+    }
+
+    fn explain_where(
+        &self,
+        production: u32,
+        only: Option<usize>,
+    ) -> Option<Result<Explained, Diagnostic>> {
         let model = self.model.as_ref()?;
         if self.parent.is_empty() {
             return None;
@@ -110,6 +135,7 @@ impl Build {
                 &self.parent,
                 self.iterations,
                 production,
+                only,
             )
             .map(|explanation| {
                 let mut is_left = vec![false; self.previous.len()];

@@ -171,6 +171,24 @@ impl Build {
         }
     }
 
+    /// Explains how module `module` of the derived string was made (the production that wrote it,
+    /// the contexts of that rewriting); `undefined` when it was copied or before the first step.
+    #[wasm_bindgen(js_name = explainModule)]
+    pub fn explain_module(&self, module: usize) -> Option<Explanation> {
+        match self.inner.explain_module(module)? {
+            Ok(inner) => Some(Explanation { inner }),
+            Err(_) => None,
+        }
+    }
+
+    /// Frees the geometry (mesh and skeleton) once its arrays are copied out, keeping what
+    /// `explain` and `moduleTexts` need: an inspected build then costs only its strings.
+    #[wasm_bindgen(js_name = releaseGeometry)]
+    pub fn release_geometry(&mut self) {
+        self.inner.mesh = Default::default();
+        self.inner.skeleton = Default::default();
+    }
+
     /// Modules in the derived string.
     #[wasm_bindgen(getter, js_name = moduleCount)]
     pub fn module_count(&self) -> usize {
@@ -218,6 +236,12 @@ pub struct Explanation {
 
 #[wasm_bindgen]
 impl Explanation {
+    /// The production explained (an index into `productions()`).
+    #[wasm_bindgen(getter)]
+    pub fn production(&self) -> u32 {
+        self.inner.explanation.production
+    }
+
     /// Modules the production rewrote.
     #[wasm_bindgen(getter)]
     pub fn fired(&self) -> u32 {

@@ -106,3 +106,28 @@ fn nothing_to_explain_before_the_first_step() {
     let b = build("axiom: A\nA -> B", &BuildOptions::default());
     assert!(b.explain(0).is_none());
 }
+
+#[test]
+fn a_module_is_explained_by_the_one_rewriting_that_made_it() {
+    // Two signals: b at 0 and b at 3 of "babbaa"... keep it plain: A(x) < B -> C(x) twice.
+    let source = "axiom: A(1)BA(2)B\nA(x) < B -> C(x)D";
+    let b = build(
+        source,
+        &BuildOptions {
+            iterations: Some(1),
+            ..BuildOptions::default()
+        },
+    );
+    assert_eq!(b.derived_text(), "A(1)C(1)DA(2)C(2)D");
+    // C(2) at 4 came from the B at 3, whose left context is A(2) at 2 (now at 3).
+    let e = b.explain_module(4).unwrap().unwrap();
+    assert_eq!(e.explanation.production, 0);
+    assert_eq!(e.explanation.rewritten, [3]);
+    assert_eq!(e.explanation.left, [2]);
+    assert_eq!(e.produced, [4, 5]);
+    assert_eq!(e.left, [3]);
+    // The counts still cover the whole string.
+    assert_eq!(e.explanation.context_matched, 2);
+    // A copied module has nothing to explain.
+    assert!(b.explain_module(0).is_none());
+}

@@ -4,7 +4,7 @@ import './style.css';
 import { coreVersion, grammarDirectives, initCore, turtleCommands, type PlantStats } from './core';
 import { createGrammarEditor, type GrammarEditor } from './editor';
 import { PlantView } from './view';
-import { PlantBuilder, debounce, reportErrors, reportPlant, type StatusReport, type TimedBuild } from './studio';
+import { ContextView, PlantBuilder, debounce, reportErrors, reportPlant, type StatusReport, type TimedBuild } from './studio';
 
 /** The grammar shown at start, relative to the page so the site works from any sub-path. */
 const INITIAL_EXAMPLE_URL = 'examples/abop-1.24d.lsys';
@@ -36,6 +36,10 @@ interface StudioElements {
   smoothAll: HTMLInputElement;
   frame: HTMLButtonElement;
   staleBadge: HTMLElement;
+  stringPanel: HTMLElement;
+  explainSummary: HTMLElement;
+  byProduction: HTMLInputElement;
+  productionLegend: HTMLElement;
 }
 
 function byId<T extends HTMLElement>(id: string, type: new () => T): T {
@@ -55,6 +59,10 @@ function studioElements(): StudioElements {
     smoothAll: byId('smooth-all', HTMLInputElement),
     frame: byId('frame', HTMLButtonElement),
     staleBadge: byId('stale-badge', HTMLElement),
+    stringPanel: byId('string-panel', HTMLElement),
+    explainSummary: byId('explain-summary', HTMLElement),
+    byProduction: byId('by-production', HTMLInputElement),
+    productionLegend: byId('production-legend', HTMLElement),
   };
 }
 
@@ -105,13 +113,22 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   };
 
   let editor: GrammarEditor | undefined;
+  const contexts = new ContextView(
+    { panel: els.stringPanel, summary: els.explainSummary, byProduction: els.byProduction, legend: els.productionLegend },
+    view,
+    () => editor,
+  );
   const rebuild = (): void => {
     if (!editor) return;
-    const result = buildOf(editor.text());
+    const text = editor.text();
+    const result = buildOf(text);
     if (!result) return;
     const { build, millis } = result;
     if (build.ok) {
       view.showPlant(build.mesh);
+      result.adopted = true;
+      contexts.setBuild(build, result.inspector, text);
+      contexts.cursorAt(editor.view.state.selection.main.head);
       hasPlant = true;
       hook.lastStats = build.stats;
       if (iterationsOverride(els.iterations) === undefined) els.iterations.placeholder = String(build.stats.iterations);
@@ -133,6 +150,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     diagnose: (text) => buildOf(text)?.build.diagnostics ?? [],
     commands: turtleCommands(),
     directives: grammarDirectives(),
+    onCursor: (pos) => contexts.cursorAt(pos),
   });
   els.iterations.addEventListener(
     'input',

@@ -984,6 +984,8 @@ pub struct Explanation {
 /// provenance, so stochastic choices are the ones the derivation made; the contexts are matched
 /// again on [`Derivation::previous`]. A condition that draws random numbers is evaluated again
 /// with fresh numbers for the `condition_failed` count (documented in docs/LANGUAGE.md).
+/// With `only`, the rewritten modules and contexts are those of that one module of `previous`
+/// (the counts still cover the whole string).
 pub fn explain(
     model: &Model,
     previous: &LString,
@@ -991,6 +993,7 @@ pub fn explain(
     parent: &[u32],
     steps: u32,
     production: u32,
+    only: Option<usize>,
 ) -> Result<Explanation, Diagnostic> {
     let mut explanation = Explanation {
         production,
@@ -1046,7 +1049,7 @@ pub fn explain(
         } else {
             fired_i
         };
-        if fired_here {
+        if fired_here && only.is_none_or(|o| o == i) {
             explanation.rewritten.push(i as u32);
             explanation.left.extend(&left);
             explanation.right.extend(&right);

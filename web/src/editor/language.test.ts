@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { highlightTree, tagHighlighter, tags } from '@lezer/highlight';
 import { readFileSync } from 'node:fs';
 import { initCore, turtleCommands, type TurtleCommand } from '../core';
-import { grammarLanguage, grammarTags } from './language';
+import { grammarLanguage, grammarTags, productionParts } from './language';
 
 // The real command table from the core, so the test follows the Rust table.
 await initCore(readFileSync(new URL('../../../crate/pkg/meristem_bg.wasm', import.meta.url)));
@@ -73,5 +73,48 @@ describe('grammar highlighting', () => {
 
   it('ends a production at a trailing comment', () => {
     expect(tokens('X -> F // grow')).toEqual(['module:X', 'arrow:->', 'turtle:F', 'comment:// grow']);
+  });
+});
+
+/** A highlighter that names only the production parts. */
+const parts = tagHighlighter([
+  { tag: grammarTags.leftContext, class: 'L' },
+  { tag: grammarTags.predecessor, class: 'P' },
+  { tag: grammarTags.rightContext, class: 'R' },
+  { tag: grammarTags.condition, class: 'C' },
+]);
+
+function partTokens(text: string): string[] {
+  const tree = grammarLanguage(commands).parser.parse(text);
+  const out: string[] = [];
+  // Adjacent tokens of one part are joined: the part is one highlighted run.
+  let last = { classes: '', to: -1 };
+  highlightTree(tree, parts, (from, to, classes) => {
+    if (classes === last.classes && from === last.to) out[out.length - 1] += text.slice(from, to);
+    else out.push(`${classes}:${text.slice(from, to)}`);
+    last = { classes, to };
+  });
+  return out;
+}
+
+describe('the parts of a context-sensitive production', () => {
+  it('splits left context, strict predecessor, right context and condition, outside parentheses', () => {
+    expect(productionParts('A(x) < B(y) > C : x > y -> D')).toEqual({ less: 5, greater: 12, colon: 16, arrow: 24, start: 0 });
+    expect(productionParts('p2: b < a -> b')).toMatchObject({ less: 6, greater: -1, colon: -1, start: 3 });
+    expect(productionParts('axiom: F')).toBeNull();
+    expect(productionParts('// a -> b')).toBeNull();
+  });
+
+  it('gives each part its own highlight, and leaves the successor alone', () => {
+    expect(partTokens('axiom: A\nA(x) < B(y) > [C]D : x > y -> D(x)')).toEqual([
+      'L:A(x)',
+      'P:B(y)',
+      'R:[C]D',
+      'C:x',
+      'C:>', // an operator inside the condition is still condition
+      'C:y',
+    ]);
+    expect(partTokens('axiom: A\nb < a -> b')).toEqual(['L:b', 'P:a']);
+    expect(partTokens('axiom: A\nF -> FF')).toEqual(['P:F']);
   });
 });

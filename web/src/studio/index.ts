@@ -2,3 +2,4 @@
 export { PlantBuilder, type TimedBuild } from './plant-builder';
 export { reportPlant, reportErrors, plural, type StatusReport } from './status';
 export { debounce } from './debounce';
+export { ContextView } from './context-view';

@@ -1,9 +1,13 @@
 // Builds with a one-entry cache, so the 3D view and the editor's linter share one build per edit.
-import { buildPlant, type BuildOptions, type PlantBuild } from '../core';
+import { inspectPlant, type BuildOptions, type PlantBuild, type PlantInspector } from '../core';
 
 /** A build and how long it took. */
 export interface TimedBuild {
   build: PlantBuild;
+  /** The core's derivation kept alive for explanations. Whoever shows the build takes it over
+   * (`adopted`); otherwise the builder frees it when the next build replaces this one. */
+  inspector: PlantInspector;
+  adopted: boolean;
   /** Wall-clock time of the core call, in milliseconds. */
   millis: number;
 }
@@ -20,8 +24,9 @@ export class PlantBuilder {
     const key = JSON.stringify([options.iterations, options.seed, options.sides, options.smoothAll]);
     if (this.last && this.last.source === source && this.last.key === key) return this.last.result;
     const start = performance.now();
-    const build = buildPlant(source, options);
-    const result = { build, millis: performance.now() - start };
+    const { build, inspector } = inspectPlant(source, options);
+    const result: TimedBuild = { build, inspector, adopted: false, millis: performance.now() - start };
+    if (this.last && !this.last.result.adopted) this.last.result.inspector.free();
     this.last = { source, key, result };
     return result;
   }
