@@ -103,6 +103,15 @@ describe('the studio', () => {
     expect(await doc.textContent()).toMatch(/^F(\(l = #step\))? — .*draw/);
     await page.mouse.move(900, 20);
     await doc.waitFor({ state: 'hidden' });
+    // Directives have docs too, from the core's directive table.
+    const angle = page.getByTestId('editor').locator('.cm-line', { hasText: /^#angle/ }).locator('span').first();
+    const at = (await angle.boundingBox())!;
+    await page.mouse.move(at.x + 2, at.y + at.height / 2);
+    await page.mouse.move(at.x + at.width / 2, at.y + at.height / 2);
+    await doc.waitFor({ state: 'visible' });
+    expect(await doc.textContent()).toMatch(/^#angle degrees — .*turn angle/);
+    await page.mouse.move(900, 20);
+    await doc.waitFor({ state: 'hidden' });
     expect(problems).toEqual([]);
   });
 

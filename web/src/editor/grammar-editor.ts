@@ -69,7 +69,7 @@ export function createGrammarEditor(options: GrammarEditorOptions): GrammarEdito
     extensions: [
       basicSetup,
       grammarSupport(options.commands),
-      commandHover(options.commands),
+      commandHover(options.commands, options.directives),
       grammarCompletion(options.commands, options.directives),
       grammarLinting(options.diagnose),
       studioEditorTheme,

@@ -20,6 +20,10 @@ const names = tagHighlighter([
   { tag: grammarTags.turtleCommand, class: 'turtle' },
   { tag: grammarTags.module, class: 'module' },
   { tag: tags.string, class: 'string' },
+  { tag: tags.variableName, class: 'var' },
+  { tag: tags.operator, class: 'op' },
+  { tag: tags.paren, class: 'paren' },
+  { tag: grammarTags.weight, class: 'weight' },
 ]);
 
 /** The highlighted tokens of `text` as `class:text` strings, in order. */
@@ -69,6 +73,49 @@ describe('grammar highlighting', () => {
       'module:A',
     ]);
     expect(tokens('~l @O @Gc ?P X')).toEqual(['turtle:~l', 'turtle:@O', 'turtle:@Gc', 'turtle:?P', 'module:X']);
+  });
+
+  it('reads parameters, conditions and weights as expressions', () => {
+    expect(tokens('A(x,y) : x >= 2*y -> F(x*0.5)+(30)A(-x)')).toEqual([
+      'module:A',
+      'paren:(',
+      'var:x',
+      'op:,',
+      'var:y',
+      'paren:)',
+      'var:x',
+      'op:>=',
+      'number:2',
+      'op:*',
+      'var:y',
+      'arrow:->',
+      'turtle:F',
+      'paren:(',
+      'var:x',
+      'op:*',
+      'number:0.5',
+      'paren:)',
+      'turtle:+',
+      'paren:(',
+      'number:30',
+      'paren:)',
+      'module:A',
+      'paren:(',
+      'op:-',
+      'var:x',
+      'paren:)',
+    ]);
+    expect(tokens('F -> (0.25) F[+F]')).toEqual([
+      'turtle:F',
+      'arrow:->',
+      'paren weight:(',
+      'number weight:0.25',
+      'paren weight:)',
+      'turtle:F',
+      'bracket:[',
+      'turtle:+F',
+      'bracket:]',
+    ]);
   });
 
   it('ends a production at a trailing comment', () => {

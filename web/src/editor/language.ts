@@ -20,6 +20,8 @@ export const grammarTags = {
   predecessor: Tag.define(),
   rightContext: Tag.define(),
   condition: Tag.define(),
+  /** A stochastic production's weight, `(0.33)` after the arrow. */
+  weight: Tag.define(),
 };
 
 /** Where the parts of a production's left-hand side lie in its line (offsets into the line). */
@@ -76,7 +78,16 @@ interface LineState {
   atLineStart: boolean;
   /** The parts of the production on this line, if it is one. */
   parts: ProductionParts | null;
+  /** Parenthesis depth: inside parentheses are expressions (parameters, weights). */
+  depth: number;
+  /** The arrow has been read and nothing else yet: a `(` now opens the production's weight. */
+  afterArrow: boolean;
+  /** Inside the weight's parentheses. */
+  weight: boolean;
 }
+
+/** Operators of expressions (LANGUAGE.md section 4), longest first. */
+const OPERATOR = /^(&&|\|\||==|!=|<=|>=|[-+*/^<>!?%,:=])/;
 
 /** The part of the production a token at `pos` belongs to (a tag name of the token table), if any. */
 function partAt(parts: ProductionParts | null, pos: number): string | null {
@@ -101,10 +112,15 @@ function tokenizer(commands: readonly TurtleCommand[]) {
       state.atLineStart = true;
       const text = stream.string;
       state.parts = /^\s*(#|\/\/)/.test(text) ? null : productionParts(text);
+      state.depth = 0;
+      state.afterArrow = false;
+      state.weight = false;
     }
     if (stream.eatSpace()) return null;
     const first = state.atLineStart;
     state.atLineStart = false;
+    const afterArrow = state.afterArrow;
+    state.afterArrow = false;
 
     if (stream.match('//')) {
       stream.skipToEnd();
@@ -114,7 +130,7 @@ function tokenizer(commands: readonly TurtleCommand[]) {
       state.directive = true;
       return 'directive';
     }
-    if (stream.match(state.directive ? /^-?\d+(\.\d+)?/ : /^\d+(\.\d+)?/)) return 'number';
+    if (stream.match(state.directive ? /^-?\d+(\.\d+)?/ : /^\d+(\.\d+)?/)) return state.weight ? 'number weight' : 'number';
     if (state.directive) {
       if (!stream.match(/^[^\s/]+/)) stream.next();
       return 'string';
@@ -127,9 +143,30 @@ function tokenizer(commands: readonly TurtleCommand[]) {
         return word[0] === 'axiom' ? 'keyword' : 'labelName';
       }
     }
-    if (stream.match('-->') || stream.match('->') || stream.match('→')) return 'arrow';
+    if (state.depth === 0 && (stream.match('-->') || stream.match('->') || stream.match('→'))) {
+      state.afterArrow = true;
+      return 'arrow';
+    }
+    if (stream.match('(')) {
+      if (afterArrow && state.depth === 0) state.weight = true;
+      state.depth++;
+      return state.weight ? 'paren weight' : 'paren';
+    }
+    if (stream.match(')')) {
+      const weight = state.weight;
+      state.depth = Math.max(0, state.depth - 1);
+      if (state.depth === 0) state.weight = false;
+      return weight ? 'paren weight' : 'paren';
+    }
+    // Expressions: parameters and weights inside parentheses, and the condition.
+    const inCondition = state.parts !== null && state.parts.colon >= 0 && stream.pos > state.parts.colon && stream.pos < state.parts.arrow;
+    if (state.depth > 0 || inCondition) {
+      const weight = state.weight ? ' weight' : '';
+      if (stream.match(/^\d*\.?\d+([eE][-+]?\d+)?/)) return `number${weight}`;
+      if (stream.match(IDENTIFIER)) return `variableName${weight}`;
+      if (stream.match(OPERATOR)) return `operator${weight}`;
+    }
     if (stream.match(':')) return 'punctuation';
-    if (stream.match('(') || stream.match(')')) return 'paren';
     const command = names.find((name) => stream.match(name));
     if (command !== undefined) return category.get(command) === 'branch' ? 'squareBracket' : 'turtleCommand';
     stream.next();
@@ -149,7 +186,7 @@ function tokenizer(commands: readonly TurtleCommand[]) {
 export function grammarLanguage(commands: readonly TurtleCommand[]): StreamLanguage<LineState> {
   return StreamLanguage.define<LineState>({
     name: 'lsystem',
-    startState: () => ({ directive: false, atLineStart: true, parts: null }),
+    startState: () => ({ directive: false, atLineStart: true, parts: null, depth: 0, afterArrow: false, weight: false }),
     copyState: (state) => ({ ...state }),
     token: tokenizer(commands),
     tokenTable: {
@@ -161,6 +198,7 @@ export function grammarLanguage(commands: readonly TurtleCommand[]): StreamLangu
       predecessor: grammarTags.predecessor,
       rightContext: grammarTags.rightContext,
       condition: grammarTags.condition,
+      weight: grammarTags.weight,
     },
     languageData: { commentTokens: { line: '//' } },
   });
@@ -182,6 +220,9 @@ export const grammarHighlightStyle = HighlightStyle.define([
   { tag: grammarTags.leftContext, backgroundColor: 'color-mix(in srgb, var(--hl-left) 22%, transparent)', borderBottom: '2px solid var(--hl-left)' },
   { tag: grammarTags.rightContext, backgroundColor: 'color-mix(in srgb, var(--hl-right) 22%, transparent)', borderBottom: '2px solid var(--hl-right)' },
   { tag: grammarTags.predecessor, textDecoration: 'underline 2px var(--hl-produced)' },
+  { tag: tags.variableName, color: 'var(--tok-variable)', fontStyle: 'italic' },
+  { tag: tags.operator, color: 'var(--tok-operator)' },
+  { tag: grammarTags.weight, backgroundColor: 'color-mix(in srgb, var(--tok-number) 14%, transparent)', borderRadius: '3px' },
   { tag: grammarTags.condition, fontStyle: 'italic', backgroundColor: 'color-mix(in srgb, var(--muted) 12%, transparent)' },
 ]);
 
