@@ -1,10 +1,11 @@
-// `npm run bench`: derivation speed of the WebAssembly core in Node, on the workloads of issue 3.
-// Prints a table and writes test-results/bench.json (medians). The same grammars are benchmarked
-// natively by criterion (crate/benches/derive.rs); both read them from the gallery.
+// `npm run bench`: speed of the WebAssembly core in Node. Two tables: derivation on the workloads
+// of issue 3, and the whole pipeline and the mesh stage on those of issue 4. Writes
+// test-results/bench.json (medians). The same workloads are benchmarked natively by criterion
+// (crate/benches/derive.rs, crate/benches/pipeline.rs); all read their grammars from the gallery.
 import { readFileSync, mkdirSync, writeFileSync } from 'node:fs';
 import { performance } from 'node:perf_hooks';
 import os from 'node:os';
-import { initSync, Grammar } from '../crate/pkg/meristem.js';
+import { initSync, Grammar, build } from '../crate/pkg/meristem.js';
 
 initSync({ module: readFileSync(new URL('../crate/pkg/meristem_bg.wasm', import.meta.url)) });
 
@@ -45,7 +46,54 @@ for (const [file, n] of WORKLOADS) {
 }
 
 console.table(rows);
+
+/** Runs `run` until ~1 s or 200 runs (at least 15) after 3 warm-ups; returns the median in ms. */
+function time(run) {
+  for (let i = 0; i < 3; i++) run();
+  const times = [];
+  const start = performance.now();
+  while (times.length < 15 || (performance.now() - start < 1000 && times.length < 200)) {
+    const t0 = performance.now();
+    run();
+    times.push(performance.now() - t0);
+  }
+  return { ms: median(times), runs: times.length };
+}
+
+const example = (file) => readFileSync(new URL(`../public/examples/${file}`, import.meta.url), 'utf8');
+const copyOut = (b) => [b.positions(), b.normals(), b.colors(), b.indices(), b.ranges()];
+
+// Issue 4: a tree the size of seed 001's (468 branches, 87,200 vertices) from grammar text to typed
+// arrays in JavaScript, every stage included.
+const pipelineRows = [];
+{
+  const source = example('game-tree.lsys');
+  const probe = build(source);
+  const stats = JSON.parse(probe.stats());
+  probe.free();
+  const { ms, runs } = time(() => {
+    const b = build(source);
+    copyOut(b);
+    b.free();
+  });
+  pipelineRows.push({ workload: 'game-tree.lsys: text → typed arrays', vertices: stats.vertices, median_ms: +ms.toFixed(2), runs, target_ms: 10 });
+}
+// Issue 4: the mesh stage alone on a million tube vertices (ABOP 2.8a, n = 9, 10 sides), arrays
+// copied out included.
+{
+  const b = build(example('abop-2.08a-ternary-tree.lsys'), 9, undefined, 10, false);
+  const stats = JSON.parse(b.stats());
+  const { ms, runs } = time(() => {
+    b.remesh(10, false);
+    copyOut(b);
+  });
+  b.free();
+  pipelineRows.push({ workload: 'ABOP 2.8a n=9, 10 sides: mesh stage → typed arrays', vertices: stats.vertices, median_ms: +ms.toFixed(2), runs, target_ms: 100 });
+}
+console.table(pipelineRows);
+const failures = pipelineRows.filter((r) => r.median_ms > r.target_ms);
 const machine = `${os.cpus()[0]?.model ?? 'unknown CPU'}, ${os.cpus().length} cores, Node ${process.version}`;
 mkdirSync(new URL('../test-results/', import.meta.url), { recursive: true });
-writeFileSync(new URL('../test-results/bench.json', import.meta.url), JSON.stringify({ machine, date: new Date().toISOString(), rows }, null, 2));
+writeFileSync(new URL('../test-results/bench.json', import.meta.url), JSON.stringify({ machine, date: new Date().toISOString(), rows, pipeline: pipelineRows }, null, 2));
 console.log(`machine: ${machine}\nwritten: test-results/bench.json`);
+for (const r of failures) console.log(`over target: ${r.workload}: ${r.median_ms} ms > ${r.target_ms} ms`);

@@ -3,12 +3,13 @@
 //! ```text
 //! meristem derive FILE [--iterations N] [--seed S] [--stats]   the derived string, or stats as JSON
 //! meristem check FILE                               diagnostics as FILE:LINE:COL: severity: message
-//! meristem export FILE -o OUT.EXT [--format EXT] [--iterations N] [--seed S]
+//! meristem export FILE -o OUT.EXT [--format EXT] [--iterations N] [--seed S] [--sides N] [--smooth-all]
 //!                                                   the model as OUT.wrl, .glb, .pov, .obj (+ .mtl), .iv or .svg
 //! ```
 
 use meristem::diagnostics::{LocatedDiagnostic, Severity};
 use meristem::export::{self, Format};
+use meristem::mesh::MeshOptions;
 use meristem::{build, BuildOptions};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -16,9 +17,10 @@ use std::process::ExitCode;
 const USAGE: &str = "usage:
   meristem derive FILE [--iterations N] [--seed S] [--stats]
   meristem check FILE
-  meristem export FILE -o OUT.EXT [--format EXT] [--iterations N] [--seed S]
+  meristem export FILE -o OUT.EXT [--format EXT] [--iterations N] [--seed S] [--sides N] [--smooth-all]
       EXT: wrl (VRML 2.0), glb (glTF 2.0), pov (POV-Ray 3.7), obj (OBJ, writes OUT.mtl too),
            iv (OpenInventor 2.1), svg (SVG); --format overrides the extension
+      --sides N (3 to 64, default 6) and --smooth-all are the studio's view options
   meristem --version";
 
 struct Args {
@@ -29,6 +31,8 @@ struct Args {
     stats: bool,
     output: Option<PathBuf>,
     format: Option<String>,
+    sides: Option<u32>,
+    smooth_all: bool,
 }
 
 fn parse_args() -> Result<Args, lexopt::Error> {
@@ -41,6 +45,8 @@ fn parse_args() -> Result<Args, lexopt::Error> {
     let mut stats = false;
     let mut output = None;
     let mut format = None;
+    let mut sides = None;
+    let mut smooth_all = false;
     while let Some(arg) = parser.next()? {
         match arg {
             Long("iterations") | Short('n') => iterations = Some(parser.value()?.parse()?),
@@ -48,6 +54,8 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             Long("stats") => stats = true,
             Long("output") | Short('o') => output = Some(PathBuf::from(parser.value()?)),
             Long("format") | Short('f') => format = Some(parser.value()?.string()?),
+            Long("sides") => sides = Some(parser.value()?.parse()?),
+            Long("smooth-all") => smooth_all = true,
             Long("version") | Short('V') => {
                 println!("meristem {}", env!("CARGO_PKG_VERSION"));
                 std::process::exit(0);
@@ -71,6 +79,8 @@ fn parse_args() -> Result<Args, lexopt::Error> {
         stats,
         output,
         format,
+        sides,
+        smooth_all,
     })
 }
 
@@ -176,7 +186,7 @@ fn main() -> ExitCode {
         &BuildOptions {
             iterations: args.iterations,
             seed: args.seed,
-            ..BuildOptions::default()
+            mesh: MeshOptions::view(args.sides, Some(args.smooth_all)),
         },
     );
     let diagnostics = result.located_diagnostics(&source);

@@ -36,6 +36,27 @@ pub struct Build {
     pub skeleton: Skeleton,
     pub mesh: MeshBuffers,
     pub stats: Stats,
+    /// Derivation steps run.
+    pub iterations: u32,
+    /// For each module of the string the turtle read, the module of `string` it came from (empty
+    /// when they are the same string).
+    pub turtle_origin: Vec<u32>,
+    /// The string before the last step, and for each module of `string` the module of it that
+    /// it came from (both empty after 0 steps): what [`Build::explain`] reads.
+    pub previous: LString,
+    pub parent: Vec<u32>,
+}
+
+/// [`derive::Explanation`] in terms of the derived string: which of its modules production `p`
+/// made in the last step, and which descend from the modules that served as its contexts.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Explained {
+    pub explanation: derive::Explanation,
+    /// Modules of `string` the production wrote in the last step.
+    pub produced: Vec<u32>,
+    /// Modules of `string` that descend from a left / right context module of those rewritings.
+    pub left: Vec<u32>,
+    pub right: Vec<u32>,
 }
 
 impl Build {
@@ -50,6 +71,99 @@ impl Build {
             .as_ref()
             .map(|m| self.string.to_text(&m.alphabet))
             .unwrap_or_default()
+    }
+
+    /// Runs the mesh stage again on the kept skeleton, with other mesh options (a view option
+    /// such as the number of sides or smooth axes needs no new derivation), and updates the stats.
+    pub fn remesh(&mut self, options: &MeshOptions) {
+        self.mesh = mesh::build_mesh(&self.skeleton, options);
+        // Provenance ranges name modules of the derived string, not of the homomorphism's output.
+        if !self.turtle_origin.is_empty() {
+            for pair in self.mesh.ranges.chunks_exact_mut(2) {
+                pair[1] = self
+                    .turtle_origin
+                    .get(pair[1] as usize)
+                    .copied()
+                    .unwrap_or(pair[1]);
+            }
+        }
+        self.stats = Stats::new(
+            self.string.len(),
+            self.skeleton.segments.len(),
+            self.iterations,
+            &self.mesh,
+        );
+    }
+
+    /// Explains production `production` (an index into the model's productions) on the last step:
+    /// `None` before any step or without a model.
+    pub fn explain(&self, production: u32) -> Option<Result<Explained, Diagnostic>> {
+        self.explain_where(production, None)
+    }
+
+    /// Explains how module `module` of the derived string was made: the production that wrote it
+    /// and the contexts of that one rewriting (`produced` is then every module that rewriting
+    /// wrote). `None` when it was copied, before any step, or without a model.
+    pub fn explain_module(&self, module: usize) -> Option<Result<Explained, Diagnostic>> {
+        let production = *self.origin.get(module)?;
+        if production == derive::NOT_REWRITTEN {
+            return None;
+        }
+        let source = *self.parent.get(module)? as usize;
+        let mut explained = self.explain_where(production, Some(source))?;
+        if let Ok(e) = &mut explained {
+            e.produced
+                .retain(|&j| self.parent[j as usize] as usize == source);
+        }
+        Some(explained)
+    }
+
+    fn explain_where(
+        &self,
+        production: u32,
+        only: Option<usize>,
+    ) -> Option<Result<Explained, Diagnostic>> {
+        let model = self.model.as_ref()?;
+        if self.parent.is_empty() {
+            return None;
+        }
+        Some(
+            derive::explain(
+                model,
+                &self.previous,
+                &self.origin,
+                &self.parent,
+                self.iterations,
+                production,
+                only,
+            )
+            .map(|explanation| {
+                let mut is_left = vec![false; self.previous.len()];
+                let mut is_right = vec![false; self.previous.len()];
+                explanation
+                    .left
+                    .iter()
+                    .for_each(|&i| is_left[i as usize] = true);
+                explanation
+                    .right
+                    .iter()
+                    .for_each(|&i| is_right[i as usize] = true);
+                let mut explained = Explained::default();
+                for (j, (&o, &p)) in self.origin.iter().zip(&self.parent).enumerate() {
+                    if o == production {
+                        explained.produced.push(j as u32);
+                    }
+                    if is_left[p as usize] {
+                        explained.left.push(j as u32);
+                    }
+                    if is_right[p as usize] {
+                        explained.right.push(j as u32);
+                    }
+                }
+                explained.explanation = explanation;
+                explained
+            }),
+        )
     }
 
     /// Diagnostics with line and column, in source order.
@@ -93,7 +207,7 @@ pub fn build(source: &str, options: &BuildOptions) -> Build {
             .map(|q| (q.module, q.value))
             .collect()
     };
-    let turtle_origin = match derive::derive_tracked(
+    result.turtle_origin = match derive::derive_tracked(
         &model,
         &DeriveOptions {
             steps,
@@ -106,6 +220,8 @@ pub fn build(source: &str, options: &BuildOptions) -> Build {
             result.string = derivation.string;
             result.interpreted = derivation.interpreted;
             result.origin = derivation.origin;
+            result.previous = derivation.previous;
+            result.parent = derivation.parent;
             derivation.turtle_origin
         }
         Err(diagnostic) => {
@@ -118,22 +234,8 @@ pub fn build(source: &str, options: &BuildOptions) -> Build {
         &model,
         result.interpreted.as_ref().unwrap_or(&result.string),
     );
-    result.mesh = mesh::build_mesh(&result.skeleton, &options.mesh);
-    // Provenance ranges name modules of the derived string, not of the homomorphism's output.
-    if !turtle_origin.is_empty() {
-        for pair in result.mesh.ranges.chunks_exact_mut(2) {
-            pair[1] = turtle_origin
-                .get(pair[1] as usize)
-                .copied()
-                .unwrap_or(pair[1]);
-        }
-    }
-    result.stats = Stats::new(
-        result.string.len(),
-        result.skeleton.segments.len(),
-        steps,
-        &result.mesh,
-    );
+    result.iterations = steps;
+    result.remesh(&options.mesh);
     result.model = Some(model);
     result
 }

@@ -154,6 +154,27 @@ fn export_takes_the_format_option_and_is_deterministic() {
 }
 
 #[test]
+fn export_takes_the_studio_view_options() {
+    let dir = temp_dir("export-view");
+    let source = example("abop-1.24a.lsys");
+    let vertices = |extra: &[&str]| {
+        let out = dir.join("plant.obj");
+        let out = out.to_str().expect("UTF-8 path");
+        let mut args = vec!["export", &source, "-o", out, "--iterations", "2"];
+        args.extend_from_slice(extra);
+        let (code, _, err) = meristem(&args);
+        assert_eq!((code, err.as_str()), (0, ""));
+        let obj = std::fs::read_to_string(out).expect("written");
+        obj.lines().filter(|l| l.starts_with("v ")).count()
+    };
+    let six = vertices(&[]);
+    assert_eq!(vertices(&["--sides", "6"]), six, "6 sides is the default");
+    assert!(vertices(&["--sides", "12"]) > six);
+    assert!(vertices(&["--smooth-all"]) > six);
+    std::fs::remove_dir_all(dir).ok();
+}
+
+#[test]
 fn export_refuses_unknown_formats_and_reports_grammar_errors() {
     let dir = temp_dir("export-errors");
     let source = example("abop-1.24a.lsys");

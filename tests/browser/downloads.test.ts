@@ -1,6 +1,6 @@
 // End-to-end: the Download menu of the built studio. Each model download, clicked as a user would,
-// must be byte for byte what `meristem export` writes for the same grammar and iterations (OBJ: a
-// zip of the tool's OBJ and MTL); the PNG must have the chosen size and show the plant.
+// must be byte for byte what `meristem export` writes for the same grammar, iterations and view
+// options (OBJ: a zip of the tool's OBJ and MTL); the PNG must have the chosen size and show the plant.
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { unzipSync } from 'fflate';
@@ -13,6 +13,9 @@ const RESULTS = new URL('../../test-results/', import.meta.url);
 /** A grammar with several colour indices and polygon leaves, at fewer iterations than its own. */
 const EXAMPLE = 'abop-1.25-bush.lsys';
 const ITERATIONS = '4';
+/** The toolbar's view options, and the command-line tool's for the same mesh. */
+const SIDES = '8';
+const CLI_OPTIONS = ['--iterations', ITERATIONS, '--sides', SIDES, '--smooth-all'];
 
 let browser: Browser;
 let page: Page;
@@ -75,6 +78,12 @@ beforeAll(async () => {
   before = await generation();
   await page.getByTestId('iterations').fill(ITERATIONS);
   expect(await nextBuild(before)).toBe('ok');
+  before = await generation();
+  await page.getByTestId('sides').selectOption(SIDES);
+  expect(await nextBuild(before)).toBe('ok');
+  before = await generation();
+  await page.getByTestId('smooth-all').check();
+  expect(await nextBuild(before)).toBe('ok');
   await openMenu();
   writeFileSync(new URL('studio-downloads-menu.png', RESULTS), await page.screenshot());
 });
@@ -89,7 +98,7 @@ describe('the Download menu', () => {
     const download = await clickDownload(`download-${format}`);
     expect(download.suggestedFilename()).toBe(`plant.${format}`);
     const bytes = await downloadedBytes(download);
-    const cli = exportWithCli(grammarFile, join(dir, `plant.${format}`), ['--iterations', ITERATIONS]);
+    const cli = exportWithCli(grammarFile, join(dir, `plant.${format}`), CLI_OPTIONS);
     expect(bytes.length).toBe(cli.length);
     expect(bytes.equals(cli), `plant.${format} differs from the command-line tool's`).toBe(true);
     await expect.poll(() => page.getByTestId('export-status').textContent()).toMatch(new RegExp(`^Saved plant\\.${format} · `));
@@ -101,7 +110,7 @@ describe('the Download menu', () => {
     expect(download.suggestedFilename()).toBe('plant.zip');
     const entries = unzipSync(new Uint8Array(await downloadedBytes(download)));
     expect(Object.keys(entries)).toEqual(['plant.obj', 'plant.mtl']);
-    const obj = exportWithCli(grammarFile, join(dir, 'plant.obj'), ['--iterations', ITERATIONS]);
+    const obj = exportWithCli(grammarFile, join(dir, 'plant.obj'), CLI_OPTIONS);
     expect(Buffer.from(entries['plant.obj']).equals(obj)).toBe(true);
     expect(Buffer.from(entries['plant.mtl']).equals(readFileSync(join(dir, 'plant.mtl')))).toBe(true);
     expect(problems).toEqual([]);

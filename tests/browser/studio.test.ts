@@ -103,6 +103,42 @@ describe('the studio', () => {
     expect(await doc.textContent()).toMatch(/^F(\(l = #step\))? — .*draw/);
     await page.mouse.move(900, 20);
     await doc.waitFor({ state: 'hidden' });
+    // Directives have docs too, from the core's directive table.
+    const angle = page.getByTestId('editor').locator('.cm-line', { hasText: /^#angle/ }).locator('span').first();
+    const at = (await angle.boundingBox())!;
+    await page.mouse.move(at.x + 2, at.y + at.height / 2);
+    await page.mouse.move(at.x + at.width / 2, at.y + at.height / 2);
+    await doc.waitFor({ state: 'visible' });
+    expect(await doc.textContent()).toMatch(/^#angle degrees — .*turn angle/);
+    await page.mouse.move(900, 20);
+    await doc.waitFor({ state: 'hidden' });
+    expect(problems).toEqual([]);
+  });
+
+  it('completes directives and commands from the core tables, and Escape leaves the text as typed', async () => {
+    const content = page.getByTestId('editor').locator('.cm-content');
+    await content.click();
+    await page.keyboard.press('Control+End');
+    const before = await generation();
+    await page.keyboard.press('Enter');
+    await page.keyboard.type('#tro');
+    const list = page.locator('.cm-tooltip-autocomplete');
+    await list.waitFor({ state: 'visible' });
+    expect(await list.textContent()).toContain('#tropism');
+    await page.keyboard.press('Enter'); // accept
+    expect(await page.locator('.cm-line').last().textContent()).toBe('#tropism ');
+    // Undo the experiment: the example is unchanged and builds as before.
+    await page.keyboard.press('Control+z');
+    await page.keyboard.press('Control+z');
+    await page.keyboard.press('Control+z');
+    await page.keyboard.press('Escape');
+    await page.waitForFunction((text) => {
+      const lines = [...document.querySelectorAll('[data-testid=editor] .cm-line')].map((l) => l.textContent ?? '');
+      return lines.join('\n').trimEnd() === text.trimEnd();
+    }, EXAMPLE);
+    // The half-typed directive was an error (stale plant); the restored text builds again.
+    await nextBuild(before);
+    await page.waitForFunction(() => document.querySelector('[data-testid=status]')?.getAttribute('data-state') === 'ok');
     expect(problems).toEqual([]);
   });
 
@@ -169,6 +205,33 @@ describe('the studio', () => {
     expect(problems).toEqual([]);
   });
 
+  it('re-meshes with the view options: sides and smooth axes', async () => {
+    const vertices = async () =>
+      (await page.evaluate(() => window.__meristem?.lastStats ?? null)) as { vertices: number; segments: number };
+    const six = await vertices();
+    let before = await generation();
+    await page.getByTestId('sides').selectOption('12');
+    expect(await nextBuild(before)).toBe('ok');
+    const twelve = await vertices();
+    expect(twelve.segments).toBe(six.segments);
+    expect(twelve.vertices, 'twice the sides, about twice the vertices').toBeGreaterThan(1.8 * six.vertices);
+
+    before = await generation();
+    await page.getByTestId('smooth-all').check();
+    expect(await nextBuild(before)).toBe('ok');
+    const smooth = await vertices();
+    expect(smooth.segments).toBe(six.segments);
+    expect(smooth.vertices, 'smooth axes have rings between the joints').toBeGreaterThan(twelve.vertices);
+    await canvasPicture('studio-smooth-all-canvas.png');
+
+    before = await generation();
+    await page.getByTestId('smooth-all').uncheck();
+    await page.getByTestId('sides').selectOption('6');
+    await nextBuild(before);
+    await page.waitForFunction((v) => window.__meristem?.lastStats?.vertices === v, six.vertices);
+    expect(problems).toEqual([]);
+  });
+
   it('stacks the editor above the view on a narrow screen', async () => {
     await page.setViewportSize({ width: 420, height: 860 });
     await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
@@ -179,7 +242,7 @@ describe('the studio', () => {
     expect(viewport!.width).toBeGreaterThan(380);
     expect(viewport!.height).toBeGreaterThan(200);
     await savePage('studio-narrow.png');
-    expect(foregroundShare(await canvasPicture('studio-narrow-canvas.png'))).toBeGreaterThan(0.01);
+    expect(foregroundShare(await canvasPicture('studio-narrow-canvas.png')), 'the thin brown plant is drawn').toBeGreaterThan(0.005);
     expect(problems).toEqual([]);
   });
 });

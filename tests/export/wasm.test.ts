@@ -1,7 +1,7 @@
 // The studio's downloads are the command-line tool's files: the TypeScript facade over the real
 // WebAssembly core (`exportModel`, what the Download menu calls) gives byte for byte what
-// `meristem export` writes, for the same grammar, iterations and seed; OBJ comes as a zip whose
-// entries are the tool's OBJ and MTL.
+// `meristem export` writes, for the same grammar, iterations, seed and view options (sides, smooth
+// axes); OBJ comes as a zip whose entries are the tool's OBJ and MTL.
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { unzipSync } from 'fflate';
@@ -17,21 +17,24 @@ beforeAll(async () => {
 });
 
 /** Grammars and the options both sides get. */
-const CASES: { example: string; iterations?: number; seed?: number }[] = [
+const CASES: { example: string; iterations?: number; seed?: number; sides?: number; smoothAll?: boolean }[] = [
   { example: 'abop-1.24d.lsys' },
   { example: 'abop-1.25-bush.lsys', iterations: 4 },
   { example: 'abop-1.27-stochastic.lsys', iterations: 4, seed: 7 },
+  { example: 'abop-2.06a-monopodial.lsys', iterations: 6, sides: 9, smoothAll: true },
 ];
 
 describe('exportModel (wasm) against meristem export (native)', () => {
-  for (const { example, iterations, seed } of CASES) {
+  for (const { example, iterations, seed, sides, smoothAll } of CASES) {
     const grammar = join(galleryDir, example);
     const cliOptions = [
       ...(iterations === undefined ? [] : ['--iterations', String(iterations)]),
       ...(seed === undefined ? [] : ['--seed', String(seed)]),
+      ...(sides === undefined ? [] : ['--sides', String(sides)]),
+      ...(smoothAll ? ['--smooth-all'] : []),
     ];
     it.each(MODEL_FORMATS.map((f) => f.format))(`${example} ${cliOptions.join(' ')}: %s, the same bytes`, (format: ModelFormat) => {
-      const file = exportModel(readFileSync(grammar, 'utf8'), format, { name: 'plant', iterations, seed });
+      const file = exportModel(readFileSync(grammar, 'utf8'), format, { name: 'plant', iterations, seed, sides, smoothAll });
       const cli = exportWithCli(grammar, join(dir, `plant.${format}`), cliOptions);
       if (format === 'obj') {
         expect([file.fileName, file.mimeType]).toEqual(['plant.zip', 'application/zip']);

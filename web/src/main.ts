@@ -2,10 +2,11 @@
 // Edits rebuild the plant after a short pause; a grammar with errors keeps the last good plant.
 // The Download menu saves the plant on screen as a model file (written by the core) or a PNG.
 import './style.css';
-import { coreVersion, exportModel, initCore, MODEL_FORMATS, turtleCommands, type ModelFormat, type PlantStats } from './core';
+import { coreVersion, exportModel, grammarDirectives, initCore, MODEL_FORMATS, turtleCommands, type BuildOptions, type ModelFormat, type PlantStats } from './core';
 import { createGrammarEditor, type GrammarEditor } from './editor';
 import { PlantView } from './view';
 import {
+  ContextView,
   PlantBuilder,
   afterPaint,
   debounce,
@@ -44,8 +45,14 @@ interface StudioElements {
   status: HTMLElement;
   version: HTMLElement;
   iterations: HTMLInputElement;
+  sides: HTMLSelectElement;
+  smoothAll: HTMLInputElement;
   frame: HTMLButtonElement;
   staleBadge: HTMLElement;
+  stringPanel: HTMLElement;
+  explainSummary: HTMLElement;
+  byProduction: HTMLInputElement;
+  productionLegend: HTMLElement;
   downloads: HTMLDetailsElement;
   modelDownloads: HTMLElement;
   pngWidth: HTMLInputElement;
@@ -67,8 +74,14 @@ function studioElements(): StudioElements {
     status: byId('status', HTMLElement),
     version: byId('core-version', HTMLElement),
     iterations: byId('iterations', HTMLInputElement),
+    sides: byId('sides', HTMLSelectElement),
+    smoothAll: byId('smooth-all', HTMLInputElement),
     frame: byId('frame', HTMLButtonElement),
     staleBadge: byId('stale-badge', HTMLElement),
+    stringPanel: byId('string-panel', HTMLElement),
+    explainSummary: byId('explain-summary', HTMLElement),
+    byProduction: byId('by-production', HTMLInputElement),
+    productionLegend: byId('production-legend', HTMLElement),
     downloads: byId('downloads', HTMLDetailsElement),
     modelDownloads: byId('model-downloads', HTMLElement),
     pngWidth: byId('png-width', HTMLInputElement),
@@ -106,14 +119,21 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   let crashed = false;
   let hasPlant = false;
   let generation = 0;
-  /** The grammar and iterations of the plant on screen: what a download saves. */
-  let shown: { source: string; iterations: number | undefined } | undefined;
+  /** The grammar and build options of the plant on screen: what a download saves. */
+  let shown: { source: string; options: BuildOptions } | undefined;
+
+  /** The toolbar's options: iterations, and the view options of the mesh. */
+  const buildOptions = (): BuildOptions => ({
+    iterations: iterationsOverride(els.iterations),
+    sides: Number(els.sides.value),
+    smoothAll: els.smoothAll.checked,
+  });
 
   /** The build of `text`, or undefined once the core has crashed (the page then says so). */
   const buildOf = (text: string): TimedBuild | undefined => {
     if (crashed) return undefined;
     try {
-      return builder.build(text, iterationsOverride(els.iterations));
+      return builder.build(text, buildOptions());
     } catch (error) {
       crashed = true;
       console.error('Meristem core crashed:', error);
@@ -123,17 +143,25 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   };
 
   let editor: GrammarEditor | undefined;
+  const contexts = new ContextView(
+    { panel: els.stringPanel, summary: els.explainSummary, byProduction: els.byProduction, legend: els.productionLegend },
+    view,
+    () => editor,
+  );
   const rebuild = (): void => {
     if (!editor) return;
-    const source = editor.text();
-    const iterations = iterationsOverride(els.iterations);
-    const result = buildOf(source);
+    const text = editor.text();
+    const options = buildOptions();
+    const result = buildOf(text);
     if (!result) return;
     const { build, millis } = result;
     if (build.ok) {
       view.showPlant(build.mesh);
+      result.adopted = true;
+      contexts.setBuild(build, result.inspector, text);
+      contexts.cursorAt(editor.view.state.selection.main.head);
       hasPlant = true;
-      shown = { source, iterations };
+      shown = { source: text, options };
       hook.lastStats = build.stats;
       if (iterationsOverride(els.iterations) === undefined) els.iterations.placeholder = String(build.stats.iterations);
       showStatus(els.status, reportPlant(build.stats, build.diagnostics, millis));
@@ -153,6 +181,8 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     onChange: scheduleRebuild,
     diagnose: (text) => buildOf(text)?.build.diagnostics ?? [],
     commands: turtleCommands(),
+    directives: grammarDirectives(),
+    onCursor: (pos) => contexts.cursorAt(pos),
   });
   els.iterations.addEventListener(
     'input',
@@ -161,6 +191,9 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
       editor?.refreshDiagnostics();
     }, REBUILD_DELAY_MS),
   );
+  // View options re-mesh the plant at once (the editor's diagnostics do not depend on them).
+  els.sides.addEventListener('change', rebuild);
+  els.smoothAll.addEventListener('change', rebuild);
   els.frame.addEventListener('click', () => view.frame());
 
   /** Runs one download with the menu's buttons disabled and its progress on the export status. */
@@ -183,7 +216,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   const downloadModel = (format: ModelFormat, label: string): Promise<void> =>
     download(label, async () => {
       if (!shown) throw new Error('no plant yet');
-      const file = exportModel(shown.source, format, { iterations: shown.iterations });
+      const file = exportModel(shown.source, format, shown.options);
       saveFile(file.bytes, file.fileName, file.mimeType);
       return `Saved ${file.fileName} · ${fileSize(file.bytes.length)}`;
     });

@@ -220,6 +220,20 @@ impl Default for MeshOptions {
     }
 }
 
+impl MeshOptions {
+    /// The default options with the studio's view options: `sides` (clamped to 3..=64, default
+    /// 6) and `smooth_all` (default false). The wasm boundary and the CLI's `--sides` and
+    /// `--smooth-all` both build their meshes with these, so a download is the mesh on screen.
+    pub fn view(sides: Option<u32>, smooth_all: Option<bool>) -> MeshOptions {
+        let defaults = MeshOptions::default();
+        MeshOptions {
+            sides: sides.map_or(defaults.sides, |s| s.clamp(3, 64)),
+            smooth_all: smooth_all.unwrap_or(defaults.smooth_all),
+            ..defaults
+        }
+    }
+}
+
 /// Consecutive segments whose directions differ by more than this start a new tube: a ring at
 /// a sharper joint would pinch.
 const MAX_JOINT_ANGLE_COS: f64 = -0.2;
@@ -232,6 +246,7 @@ pub fn build_mesh(skeleton: &Skeleton, options: &MeshOptions) -> MeshBuffers {
         WidthUnit::Absolute(u) => u,
         WidthUnit::Relative(fraction) => fraction * skeleton_diagonal(skeleton),
     };
+    let sides = options.sides.max(3) as usize;
     let mut builder = Builder {
         mesh: MeshBuffers {
             width_unit: unit,
@@ -239,18 +254,28 @@ pub fn build_mesh(skeleton: &Skeleton, options: &MeshOptions) -> MeshBuffers {
         },
         options,
         unit,
-        sides: options.sides.max(3) as usize,
+        sides,
+        ring: (0..sides)
+            .map(|k| (k as f64 / sides as f64 * std::f64::consts::TAU).sin_cos())
+            .collect(),
     };
-    if builder.estimate(skeleton) > options.max_vertices {
+    let estimate = builder.estimate(skeleton);
+    if estimate > options.max_vertices {
         builder.lines(skeleton);
         return builder.mesh;
     }
+    // Grow each array once: reallocating arrays of millions of floats costs more than meshing.
+    builder.mesh.positions.reserve(3 * estimate);
+    builder.mesh.normals.reserve(3 * estimate);
+    builder.mesh.colors.reserve(3 * estimate);
+    builder.mesh.indices.reserve(6 * estimate);
     // A chain that starts where another segment ends is a branch growing out of a joint: its
     // start is inside the parent's tube, so it needs no start cap.
-    let joints: std::collections::HashSet<[u64; 3]> =
-        skeleton.segments.iter().map(|s| key(s.end)).collect();
+    let mut joints: Vec<[u64; 3]> = skeleton.segments.iter().map(|s| key(s.end)).collect();
+    joints.sort_unstable();
     for chain in chains(skeleton) {
-        let hidden_start = joints.contains(&key(skeleton.segments[chain[0] as usize].start));
+        let start = key(skeleton.segments[chain[0] as usize].start);
+        let hidden_start = joints.binary_search(&start).is_ok();
         builder.tube(skeleton, &chain, !hidden_start);
     }
     for p in &skeleton.polygons {
@@ -320,6 +345,8 @@ struct Builder<'a> {
     options: &'a MeshOptions,
     unit: f64,
     sides: usize,
+    /// (sin, cos) of each side's angle around a ring.
+    ring: Vec<(f64, f64)>,
 }
 
 impl Builder<'_> {
@@ -410,10 +437,6 @@ impl Builder<'_> {
             samples.iter().map(|(p, t, _, _)| (*p, *t)).collect();
         let normals = curve::rotation_minimizing_normals(&frame_input, segments[0].left);
         let sides = self.sides;
-        let ring: Vec<(f64, f64)> = (0..sides)
-            .map(|k| (k as f64 / sides as f64 * std::f64::consts::TAU).sin_cos())
-            .collect();
-
         let mut rings: Vec<u32> = Vec::with_capacity(samples.len());
         for (k, (p, t, w, _)) in samples.iter().enumerate() {
             let n = normals[k];
@@ -421,7 +444,8 @@ impl Builder<'_> {
             let radius = 0.5 * w * self.unit;
             let c = skeleton.color(segments[samples[k].3].color);
             let first = self.mesh.vertex_count() as u32;
-            for &(sin, cos) in &ring {
+            for j in 0..self.ring.len() {
+                let (sin, cos) = self.ring[j];
                 let radial = n * cos + b * sin;
                 self.vertex(*p + radial * radius, radial, c);
             }

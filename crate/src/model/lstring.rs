@@ -73,6 +73,23 @@ impl LString {
         self.to_text_truncated(alphabet, usize::MAX)
     }
 
+    /// The text of module `i` alone, as [`LString::to_text`] writes it.
+    pub fn module_text(&self, alphabet: &Alphabet, i: usize) -> String {
+        let mut module = String::from(alphabet.name(self.ids[i]));
+        let params = self.params_of(i);
+        if !params.is_empty() {
+            module.push('(');
+            for (k, p) in params.iter().enumerate() {
+                if k > 0 {
+                    module.push(',');
+                }
+                let _ = write!(module, "{p}");
+            }
+            module.push(')');
+        }
+        module
+    }
+
     /// Like [`LString::to_text`] but stops before passing `max_chars` characters, appending `…`
     /// when the string is longer.
     pub fn to_text_truncated(&self, alphabet: &Alphabet, max_chars: usize) -> String {

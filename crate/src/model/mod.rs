@@ -3,6 +3,7 @@
 //! at text or re-check anything.
 
 mod alphabet;
+pub mod directives;
 mod lstring;
 mod program;
 mod resolve;

@@ -1,5 +1,6 @@
-// The core's turtle command table, the one source for highlighting and hover docs.
-import { commands } from '../../../crate/pkg/meristem.js';
+// The core's turtle command and directive tables, the one source for highlighting, completion and
+// hover docs.
+import { commands, directives } from '../../../crate/pkg/meristem.js';
 import { assertReady } from './init';
 
 /** One turtle command as the core's table (`crate/src/turtle/commands.rs`) declares it. */
@@ -18,4 +19,20 @@ export interface TurtleCommand {
 export function turtleCommands(): TurtleCommand[] {
   assertReady();
   return JSON.parse(commands()) as TurtleCommand[];
+}
+
+/** One directive as the core's table (`crate/src/model/directives.rs`) declares it. */
+export interface GrammarDirective {
+  /** The name without `#`, e.g. `angle`. */
+  name: string;
+  /** How its arguments are written, e.g. `x y z e`. */
+  args: string;
+  /** One sentence for completion and the reference. */
+  doc: string;
+}
+
+/** The directives the core accepts, in table order. Requires {@link initCore}. */
+export function grammarDirectives(): GrammarDirective[] {
+  assertReady();
+  return JSON.parse(directives()) as GrammarDirective[];
 }

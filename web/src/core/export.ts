@@ -32,14 +32,23 @@ export interface ExportOptions extends BuildOptions {
 }
 
 /**
- * Builds `source` and writes its model in `format`: the same bytes as
- * `meristem export FILE -o NAME.EXT` for the same grammar, iterations and seed (for `obj`, a zip
- * holding exactly the command's NAME.obj and NAME.mtl). Throws when the grammar has errors (export
- * only a plant that built) or the core fails. Requires {@link initCore}.
+ * Builds `source` with `options` (as {@link buildPlant} does, so the mesh is the one on screen) and
+ * writes its model in `format`: the same bytes as `meristem export FILE -o NAME.EXT` for the same
+ * grammar, iterations, seed, sides and smooth axes (for `obj`, a zip holding exactly the command's
+ * NAME.obj and NAME.mtl). Throws when the grammar has errors (export only a plant that built) or the
+ * core fails. Requires {@link initCore}.
  */
 export function exportModel(source: string, format: ModelFormat, options: ExportOptions = {}): ModelFile {
   assertReady();
-  const result = coreExportModel(source, format, options.name ?? 'plant', options.iterations ?? undefined, options.seed ?? undefined);
+  const result = coreExportModel(
+    source,
+    format,
+    options.name ?? 'plant',
+    options.iterations ?? undefined,
+    options.seed ?? undefined,
+    options.sides ?? undefined,
+    options.smoothAll ?? undefined,
+  );
   try {
     return { fileName: result.fileName, mimeType: result.mimeType, bytes: result.bytes() };
   } finally {

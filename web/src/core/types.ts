@@ -71,6 +71,10 @@ export interface BuildOptions {
   iterations?: number;
   /** Seed of the random generator (a whole number); omitted = the grammar's `#seed`. */
   seed?: number;
+  /** Sides of each branch tube, 3 to 64; omitted = 6. */
+  sides?: number;
+  /** Draw every axis as a smooth generalized cylinder, not only those inside `@Gc … @Ge`. */
+  smoothAll?: boolean;
 }
 
 /** Everything one run of the pipeline (parse → resolve → derive → interpret → mesh) produced. */
@@ -82,6 +86,61 @@ export interface PlantBuild {
   mesh: MeshBuffers;
   /** The derived string, cut to its first {@link DERIVED_PREVIEW_CHARS} characters (then ending in "…"). */
   derived: string;
+  /** Modules in the derived string. */
+  moduleCount: number;
+  /** The productions of the productions section, in source order (indices as in `origins`). */
+  productions: ProductionInfo[];
+  /**
+   * Provenance of the last step: for each module of the derived string, the index of the production
+   * that wrote it, or {@link NOT_REWRITTEN} when it was copied.
+   */
+  origins: Uint32Array;
+}
+
+/** In `PlantBuild.origins`: no production wrote this module in the last step. */
+export const NOT_REWRITTEN = 0xffffffff;
+
+/** One production of the grammar, located in the source text. */
+export interface ProductionInfo {
+  /** Index among the productions (what `origins` and `explain` use). */
+  index: number;
+  /** UTF-16 range of the production in the source text. */
+  from: number;
+  to: number;
+  label: string | null;
+  /** Whether it has a left or right context. */
+  context: boolean;
+}
+
+/** Why and where one production fired in the last step (module indices of the derived string). */
+export interface Explanation {
+  production: number;
+  /** Modules it rewrote. */
+  fired: number;
+  /** Modules whose predecessor and contexts matched it. */
+  contextMatched: number;
+  /** Of those, modules whose condition was false. */
+  conditionFailed: number;
+  /** Modules of the derived string it wrote. */
+  produced: Uint32Array;
+  /** Modules descending from the modules that served as its left / right context. */
+  leftContext: Uint32Array;
+  rightContext: Uint32Array;
+}
+
+/** Questions about one build that need the core's full derivation (kept alive until `free`). */
+export interface PlantInspector {
+  /** Explains a production on the last step; null before the first step. */
+  explain(production: number): Promise<Explanation | null>;
+  /**
+   * Explains how one module of the derived string was made: the production that wrote it and the
+   * contexts of that one rewriting (the counts cover the whole string); null when it was copied.
+   */
+  explainModule(module: number): Promise<Explanation | null>;
+  /** The text of modules `start .. start + count` of the derived string. */
+  moduleTexts(start: number, count: number): Promise<string[]>;
+  /** Releases the core's memory; later questions answer null / []. */
+  free(): void;
 }
 
 /** How many characters of the derived string {@link buildPlant} keeps. */

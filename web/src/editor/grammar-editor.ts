@@ -1,8 +1,10 @@
 // The grammar editor: CodeMirror 6 with the grammar language and the core's diagnostics.
 import { basicSetup } from 'codemirror';
-import { EditorView } from '@codemirror/view';
+import { Decoration, EditorView, type DecorationSet } from '@codemirror/view';
+import { StateEffect, StateField } from '@codemirror/state';
 import { forceLinting } from '@codemirror/lint';
-import type { TurtleCommand } from '../core';
+import type { GrammarDirective, TurtleCommand } from '../core';
+import { grammarCompletion } from './completion';
 import { grammarSupport } from './language';
 import { commandHover } from './hover';
 import { grammarLinting, type Diagnose } from './diagnostics';
@@ -18,9 +20,34 @@ export interface GrammarEditorOptions {
   onChange: (text: string) => void;
   /** Supplies the diagnostics shown for a text. */
   diagnose: Diagnose;
-  /** The core's turtle command table: drives highlighting and hover docs. */
+  /** The core's turtle command table: drives highlighting, completion and hover docs. */
   commands: readonly TurtleCommand[];
+  /** The core's directive table: drives completion. */
+  directives: readonly GrammarDirective[];
+  /** Called with the cursor's position (UTF-16) whenever it moves or the text changes. */
+  onCursor?: (pos: number) => void;
 }
+
+/** Sets (or clears, with null) the marked production range. */
+const markProductionEffect = StateEffect.define<{ from: number; to: number } | null>();
+
+/** The production marked by a pick in the 3D view or the string panel. */
+const markedProduction = StateField.define<DecorationSet>({
+  create: () => Decoration.none,
+  update(marks, transaction) {
+    let next = marks.map(transaction.changes);
+    for (const effect of transaction.effects) {
+      if (!effect.is(markProductionEffect)) continue;
+      const range = effect.value;
+      next =
+        range && range.to > range.from
+          ? Decoration.set([Decoration.mark({ class: 'cm-picked-production' }).range(range.from, range.to)])
+          : Decoration.none;
+    }
+    return next;
+  },
+  provide: (field) => EditorView.decorations.from(field),
+});
 
 /** A grammar editor on the page. */
 export interface GrammarEditor {
@@ -30,6 +57,8 @@ export interface GrammarEditor {
   text(): string;
   /** Re-runs the diagnostics now, e.g. after an option that changes the build changed. */
   refreshDiagnostics(): void;
+  /** Marks a range (a production picked elsewhere) and scrolls it into view; null clears the mark. */
+  markProduction(range: { from: number; to: number } | null): void;
 }
 
 /** Creates the editor in `options.parent`. */
@@ -40,13 +69,16 @@ export function createGrammarEditor(options: GrammarEditorOptions): GrammarEdito
     extensions: [
       basicSetup,
       grammarSupport(options.commands),
-      commandHover(options.commands),
+      commandHover(options.commands, options.directives),
+      grammarCompletion(options.commands, options.directives),
       grammarLinting(options.diagnose),
       studioEditorTheme,
       EditorView.lineWrapping,
       EditorView.contentAttributes.of({ 'aria-label': 'L-system grammar' }),
+      markedProduction,
       EditorView.updateListener.of((update) => {
         if (update.docChanged) options.onChange(update.state.doc.toString());
+        if (update.docChanged || update.selectionSet) options.onCursor?.(update.state.selection.main.head);
       }),
     ],
   });
@@ -54,5 +86,15 @@ export function createGrammarEditor(options: GrammarEditorOptions): GrammarEdito
     view,
     text: () => view.state.doc.toString(),
     refreshDiagnostics: () => forceLinting(view),
+    markProduction: (range) => {
+      const length = view.state.doc.length;
+      const clamped = range && { from: Math.min(range.from, length), to: Math.min(range.to, length) };
+      view.dispatch({
+        effects: [
+          markProductionEffect.of(clamped),
+          ...(clamped ? [EditorView.scrollIntoView(clamped.from, { y: 'nearest' })] : []),
+        ],
+      });
+    },
   };
 }

@@ -3,5 +3,6 @@
 export { createGrammarEditor, type GrammarEditor, type GrammarEditorOptions } from './grammar-editor';
 export { grammarLanguage, grammarHighlightStyle, grammarTags, grammarSupport } from './language';
 export { commandHover, commandHoverText } from './hover';
+export { grammarCompletion, grammarCompletionSource } from './completion';
 export { toEditorDiagnostics, grammarLinting, LINT_DELAY_MS, type Diagnose } from './diagnostics';
 export { studioEditorTheme } from './theme';

@@ -1,6 +1,7 @@
 // The 3D view: one plant mesh, lights, an orbiting camera; renders on demand.
 import {
   Box3,
+  BufferAttribute,
   BufferGeometry,
   DirectionalLight,
   DoubleSide,
@@ -11,7 +12,9 @@ import {
   Mesh,
   MeshStandardMaterial,
   PerspectiveCamera,
+  Raycaster,
   Scene,
+  Vector2,
   WebGLRenderer,
 } from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
@@ -19,6 +22,7 @@ import type { MeshBuffers } from '../core';
 import { framePose } from './framing';
 import { scenePalette } from './palette';
 import { plantGeometry } from './plant-geometry';
+import { highlightOverlay, moduleOfTriangle, type Rgb } from './highlight';
 
 const DARK_SCHEME = '(prefers-color-scheme: dark)';
 
@@ -42,6 +46,22 @@ export class PlantView {
   /** The fallback for models too large to mesh: one coloured line per segment. */
   private readonly lines = new LineSegments(new BufferGeometry(), new LineBasicMaterial({ vertexColors: true }));
   private grid: GridHelper | undefined;
+  /** The mesh on screen (its own colours and provenance ranges), for highlighting and picking. */
+  private mesh: MeshBuffers | undefined;
+  private readonly raycaster = new Raycaster();
+  /** Highlighted modules, drawn over the plant (which is dimmed meanwhile). */
+  private readonly overlay = new Mesh(
+    new BufferGeometry(),
+    new MeshStandardMaterial({
+      vertexColors: true,
+      side: DoubleSide,
+      roughness: 0.7,
+      metalness: 0,
+      polygonOffset: true,
+      polygonOffsetFactor: -1,
+      polygonOffsetUnits: -1,
+    }),
+  );
   /** The camera has been framed on a plant with geometry; from then on it stays where the user puts it. */
   private framed = false;
   private renderQueued = false;
@@ -59,7 +79,7 @@ export class PlantView {
     headlight.position.set(0.6, 0.9, 0.4);
     this.camera.add(headlight, headlight.target); // a light that follows the camera
     headlight.target.position.set(0, 0, -1);
-    this.scene.add(this.camera, this.plant, this.lines);
+    this.scene.add(this.camera, this.plant, this.lines, this.overlay);
 
     this.controls = new OrbitControls(this.camera, this.renderer.domElement);
     this.controls.addEventListener('change', () => this.requestRender());
@@ -86,11 +106,52 @@ export class PlantView {
     this.lines.geometry = asLines ? plantGeometry(mesh) : new BufferGeometry();
     oldMesh.dispose();
     oldLines.dispose();
+    this.mesh = asLines ? undefined : mesh;
+    this.colourModules(null);
     if (!this.framed && (mesh.indices.length > 0 || asLines)) {
       this.framed = true;
       this.frame();
     }
     this.requestRender();
+  }
+
+  /**
+   * Paints the triangles of the modules `colourOf` names in its colour and dims the rest; `null`
+   * restores the plant's own colours. (The line fallback of huge models is not highlighted.)
+   */
+  colourModules(colourOf: ((module: number) => Rgb | null) | null): void {
+    const mesh = this.mesh;
+    const old = this.overlay.geometry;
+    this.overlay.geometry = new BufferGeometry();
+    old.dispose();
+    this.material.color.setScalar(1);
+    if (mesh && colourOf) {
+      const overlay = highlightOverlay(mesh, colourOf);
+      const geometry = this.overlay.geometry;
+      geometry.setAttribute('position', new BufferAttribute(overlay.positions, 3));
+      geometry.setAttribute('normal', new BufferAttribute(overlay.normals, 3));
+      geometry.setAttribute('color', new BufferAttribute(overlay.colors, 3));
+      geometry.computeBoundingSphere();
+      this.material.color.setScalar(0.55); // dim the rest
+    }
+    this.requestRender();
+  }
+
+  /** The module of the derived string drawn at a point of the page, or null (nothing there). */
+  pickModule(clientX: number, clientY: number): number | null {
+    const mesh = this.mesh;
+    if (!mesh) return null;
+    const rect = this.renderer.domElement.getBoundingClientRect();
+    const ndc = new Vector2(((clientX - rect.left) / rect.width) * 2 - 1, -((clientY - rect.top) / rect.height) * 2 + 1);
+    this.raycaster.setFromCamera(ndc, this.camera);
+    const hit = this.raycaster.intersectObject(this.plant, false)[0];
+    if (!hit || hit.faceIndex == null) return null;
+    return moduleOfTriangle(mesh.ranges, hit.faceIndex);
+  }
+
+  /** The canvas, for pointer events. */
+  get canvas(): HTMLCanvasElement {
+    return this.renderer.domElement;
   }
 
   /** Points the camera at the whole plant and fits the ground grid under it. */
@@ -153,6 +214,8 @@ export class PlantView {
     this.darkScheme.removeEventListener('change', this.applyPalette);
     this.controls.dispose();
     this.plant.geometry.dispose();
+    this.overlay.geometry.dispose();
+    this.overlay.material.dispose();
     this.lines.geometry.dispose();
     this.lines.material.dispose();
     this.material.dispose();
