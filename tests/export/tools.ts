@@ -52,6 +52,7 @@ export function scratchDir(label: string): string {
   return mkdtempSync(join(tmpdir(), `meristem-${label}-`));
 }
 
+/** Deletes a folder made by {@link scratchDir}. */
 export function removeScratch(dir: string): void {
   rmSync(dir, { recursive: true, force: true });
 }

@@ -209,6 +209,11 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     } catch (error) {
       console.error(`Export of ${what} failed:`, error);
       showExportStatus(els.exportStatus, 'error', `Export of ${what} failed: ${String(error)}`);
+      if (error instanceof WebAssembly.RuntimeError) {
+        // A panic in the core: its state is unknown, as after a crash while building.
+        crashed = true;
+        showStatus(els.status, { state: 'crashed', text: 'The core crashed — reload the page to continue' });
+      }
     } finally {
       menuButtons().forEach((b) => (b.disabled = false));
     }
