@@ -250,6 +250,15 @@ impl Build {
         self.inner.skeleton = Default::default();
     }
 
+    /// A fingerprint of the derived string (16 hex digits): equal for equal derivations.
+    #[wasm_bindgen(js_name = derivedHash)]
+    pub fn derived_hash(&self) -> String {
+        match &self.inner.model {
+            Some(model) => format!("{:016x}", self.inner.string.fingerprint(&model.alphabet)),
+            None => String::new(),
+        }
+    }
+
     /// Modules in the derived string.
     #[wasm_bindgen(getter, js_name = moduleCount)]
     pub fn module_count(&self) -> usize {
