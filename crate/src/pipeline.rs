@@ -46,8 +46,24 @@ pub struct Build {
     /// For each module of the string the turtle read, the module of `string` it came from (empty
     /// when they are the same string).
     pub turtle_origin: Vec<u32>,
+    /// The string before the last step, and for each module of `string` the module of it that
+    /// it came from (both empty after 0 steps): what [`Build::explain`] reads.
+    pub previous: LString,
+    pub parent: Vec<u32>,
     /// How long each stage took, when the caller passed a clock ([`build_with_clock`]).
     pub timings: Option<StageTimings>,
+}
+
+/// [`derive::Explanation`] in terms of the derived string: which of its modules production `p`
+/// made in the last step, and which descend from the modules that served as its contexts.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Explained {
+    pub explanation: derive::Explanation,
+    /// Modules of `string` the production wrote in the last step.
+    pub produced: Vec<u32>,
+    /// Modules of `string` that descend from a left / right context module of those rewritings.
+    pub left: Vec<u32>,
+    pub right: Vec<u32>,
 }
 
 /// Wall-clock time of each stage of one build, in the unit of the caller's clock (milliseconds
@@ -143,6 +159,77 @@ impl Build {
         );
     }
 
+    /// Explains production `production` (an index into the model's productions) on the last step:
+    /// `None` before any step or without a model.
+    pub fn explain(&self, production: u32) -> Option<Result<Explained, Diagnostic>> {
+        self.explain_where(production, None)
+    }
+
+    /// Explains how module `module` of the derived string was made: the production that wrote it
+    /// and the contexts of that one rewriting (`produced` is then every module that rewriting
+    /// wrote). `None` when it was copied, before any step, or without a model.
+    pub fn explain_module(&self, module: usize) -> Option<Result<Explained, Diagnostic>> {
+        let production = *self.origin.get(module)?;
+        if production == derive::NOT_REWRITTEN {
+            return None;
+        }
+        let source = *self.parent.get(module)? as usize;
+        let mut explained = self.explain_where(production, Some(source))?;
+        if let Ok(e) = &mut explained {
+            e.produced
+                .retain(|&j| self.parent[j as usize] as usize == source);
+        }
+        Some(explained)
+    }
+
+    fn explain_where(
+        &self,
+        production: u32,
+        only: Option<usize>,
+    ) -> Option<Result<Explained, Diagnostic>> {
+        let model = self.model.as_ref()?;
+        if self.parent.is_empty() {
+            return None;
+        }
+        Some(
+            derive::explain(
+                model,
+                &self.previous,
+                &self.origin,
+                &self.parent,
+                self.iterations,
+                production,
+                only,
+            )
+            .map(|explanation| {
+                let mut is_left = vec![false; self.previous.len()];
+                let mut is_right = vec![false; self.previous.len()];
+                explanation
+                    .left
+                    .iter()
+                    .for_each(|&i| is_left[i as usize] = true);
+                explanation
+                    .right
+                    .iter()
+                    .for_each(|&i| is_right[i as usize] = true);
+                let mut explained = Explained::default();
+                for (j, (&o, &p)) in self.origin.iter().zip(&self.parent).enumerate() {
+                    if o == production {
+                        explained.produced.push(j as u32);
+                    }
+                    if is_left[p as usize] {
+                        explained.left.push(j as u32);
+                    }
+                    if is_right[p as usize] {
+                        explained.right.push(j as u32);
+                    }
+                }
+                explained.explanation = explanation;
+                explained
+            }),
+        )
+    }
+
     /// Diagnostics with line and column, in source order.
     pub fn located_diagnostics(&self, source: &str) -> Vec<LocatedDiagnostic> {
         let index = LineIndex::new(source);
@@ -223,6 +310,8 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Stopwatch) -> Bu
             result.string = derivation.string;
             result.interpreted = derivation.interpreted;
             result.origin = derivation.origin;
+            result.previous = derivation.previous;
+            result.parent = derivation.parent;
             derivation.turtle_origin
         }
         Err(diagnostic) => {

@@ -4,6 +4,8 @@
 //! into a fresh JavaScript array (`js_sys::Float32Array::from`); small structured data as JSON.
 #![deny(clippy::unwrap_used)]
 
+use crate::export::{self, Format};
+use crate::mesh::MeshOptions;
 use crate::pipeline::{self, BuildOptions};
 use wasm_bindgen::prelude::*;
 
@@ -40,14 +42,7 @@ pub fn build(
     smooth_all: Option<bool>,
     now: Option<js_sys::Function>,
 ) -> Build {
-    let seed = seed.filter(|s| {
-        s.is_finite() && *s >= 0.0 && s.fract() == 0.0 && *s <= 9.007_199_254_740_992e15
-    });
-    let options = BuildOptions {
-        iterations,
-        seed: seed.map(|s| s as u64),
-        mesh: mesh_options(sides, smooth_all),
-    };
+    let options = build_options(iterations, seed, sides, smooth_all);
     let inner = match now {
         Some(now) => {
             let mut clock = || {
@@ -65,12 +60,79 @@ pub fn build(
     Build { inner, diagnostics }
 }
 
-fn mesh_options(sides: Option<u32>, smooth_all: Option<bool>) -> crate::mesh::MeshOptions {
-    let defaults = crate::mesh::MeshOptions::default();
-    crate::mesh::MeshOptions {
-        sides: sides.map_or(defaults.sides, |s| s.clamp(3, 64)),
-        smooth_all: smooth_all.unwrap_or(defaults.smooth_all),
-        ..defaults
+/// The options of a build from the boundary's arguments; a seed that is not a whole number from 0
+/// to 2^53 is ignored (the grammar's `#seed` is used); `sides` and `smooth_all` are the view
+/// options of the mesh ([`MeshOptions::view`]).
+fn build_options(
+    iterations: Option<u32>,
+    seed: Option<f64>,
+    sides: Option<u32>,
+    smooth_all: Option<bool>,
+) -> BuildOptions {
+    let seed = seed.filter(|s| {
+        s.is_finite() && *s >= 0.0 && s.fract() == 0.0 && *s <= 9.007_199_254_740_992e15
+    });
+    BuildOptions {
+        iterations,
+        seed: seed.map(|s| s as u64),
+        mesh: MeshOptions::view(sides, smooth_all),
+    }
+}
+
+/// Builds `source` (as [`build`] does, with the same options) and writes the model as a file to
+/// download: `format` is `wrl`, `glb`, `pov`, `obj`, `iv` or `svg`; `name` is the file name without
+/// extension. OBJ comes as a zip of `NAME.obj` and `NAME.mtl`. The bytes are exactly what
+/// `meristem export FILE -o NAME.EXT` writes for the same grammar, iterations, seed, `--sides` and
+/// `--smooth-all`. Throws when the format is unknown or the grammar has errors (callers export a
+/// plant that built).
+#[wasm_bindgen(js_name = exportModel)]
+pub fn export_model(
+    source: &str,
+    format: &str,
+    name: &str,
+    iterations: Option<u32>,
+    seed: Option<f64>,
+    sides: Option<u32>,
+    smooth_all: Option<bool>,
+) -> Result<ExportedModel, JsError> {
+    let format = Format::from_extension(format).ok_or_else(|| {
+        JsError::new(&format!(
+            "unknown format '{format}'; the formats are {}",
+            Format::names()
+        ))
+    })?;
+    let result = pipeline::build(source, &build_options(iterations, seed, sides, smooth_all));
+    if !result.ok() {
+        return Err(JsError::new("the grammar has errors: nothing to export"));
+    }
+    let file = export::download(format, &result.mesh, &result.skeleton, name)
+        .ok_or_else(|| JsError::new("the export is larger than 4 GiB"))?;
+    Ok(ExportedModel { file })
+}
+
+/// One file to download, from [`export_model`]. Free it with `.free()` once its bytes are copied.
+#[wasm_bindgen]
+pub struct ExportedModel {
+    file: export::ExportedFile,
+}
+
+#[wasm_bindgen]
+impl ExportedModel {
+    /// File name with extension: `plant.glb`, or `plant.zip` for OBJ + MTL.
+    #[wasm_bindgen(getter, js_name = fileName)]
+    pub fn file_name(&self) -> String {
+        self.file.name.clone()
+    }
+
+    /// Media type for the download (`model/gltf-binary`, `application/zip`, …).
+    #[wasm_bindgen(getter, js_name = mimeType)]
+    pub fn mime_type(&self) -> String {
+        self.file.mime.to_string()
+    }
+
+    /// The file's bytes.
+    pub fn bytes(&self) -> Vec<u8> {
+        self.file.bytes.clone()
     }
 }
 
@@ -157,7 +219,7 @@ impl Build {
     /// derivation. The arrays and stats change; the derived string does not.
     pub fn remesh(&mut self, sides: u32, smooth_all: bool) {
         self.inner
-            .remesh(&mesh_options(Some(sides), Some(smooth_all)));
+            .remesh(&MeshOptions::view(Some(sides), Some(smooth_all)));
     }
 
     /// Line ends (x, y, z each) when the model was too large to mesh; empty otherwise.
@@ -171,6 +233,98 @@ impl Build {
         js_sys::Float32Array::from(&self.inner.mesh.line_colors[..])
     }
 
+    /// The productions of the productions section, as JSON `[{index, from, to, label, context}]`:
+    /// `from`/`to` are the UTF-8 byte range of the production in the source, `context` whether it
+    /// has a left or right context. The index is what `origins()` and `explain` use.
+    pub fn productions(&self) -> String {
+        #[derive(serde::Serialize)]
+        struct Row<'a> {
+            index: usize,
+            from: usize,
+            to: usize,
+            label: Option<&'a str>,
+            context: bool,
+        }
+        let rows: Vec<Row> = self.inner.model.as_ref().map_or_else(Vec::new, |m| {
+            m.productions
+                .productions
+                .iter()
+                .enumerate()
+                .map(|(index, p)| Row {
+                    index,
+                    from: p.span.start,
+                    to: p.span.end,
+                    label: p.label.as_deref(),
+                    context: p.has_context(),
+                })
+                .collect()
+        });
+        serde_json::to_string(&rows).unwrap_or_else(|_| "[]".into())
+    }
+
+    /// Explains production `production` on the last step (see `pipeline::Build::explain`);
+    /// `undefined` before the first step, for an unknown index, or on a runtime error.
+    pub fn explain(&self, production: u32) -> Option<Explanation> {
+        match self.inner.explain(production)? {
+            Ok(inner) => Some(Explanation { inner }),
+            Err(_) => None,
+        }
+    }
+
+    /// Explains how module `module` of the derived string was made (the production that wrote it,
+    /// the contexts of that rewriting); `undefined` when it was copied or before the first step.
+    #[wasm_bindgen(js_name = explainModule)]
+    pub fn explain_module(&self, module: usize) -> Option<Explanation> {
+        match self.inner.explain_module(module)? {
+            Ok(inner) => Some(Explanation { inner }),
+            Err(_) => None,
+        }
+    }
+
+    /// Frees the geometry (mesh and skeleton) once its arrays are copied out, keeping what
+    /// `explain` and `moduleTexts` need: an inspected build then costs only its strings.
+    #[wasm_bindgen(js_name = releaseGeometry)]
+    pub fn release_geometry(&mut self) {
+        self.inner.mesh = Default::default();
+        self.inner.skeleton = Default::default();
+    }
+
+    /// A fingerprint of the derived string (16 hex digits): equal for equal derivations.
+    #[wasm_bindgen(js_name = derivedHash)]
+    pub fn derived_hash(&self) -> String {
+        match &self.inner.model {
+            Some(model) => format!("{:016x}", self.inner.string.fingerprint(&model.alphabet)),
+            None => String::new(),
+        }
+    }
+
+    /// Modules in the derived string.
+    #[wasm_bindgen(getter, js_name = moduleCount)]
+    pub fn module_count(&self) -> usize {
+        self.inner.string.len()
+    }
+
+    /// The text of modules `start .. start + count` of the derived string, as a JSON array of
+    /// strings (one per module), for the virtualised string panel.
+    #[wasm_bindgen(js_name = moduleTexts)]
+    pub fn module_texts(&self, start: usize, count: usize) -> String {
+        let Some(model) = &self.inner.model else {
+            return "[]".into();
+        };
+        let s = &self.inner.string;
+        let end = start.saturating_add(count).min(s.len());
+        let texts: Vec<String> = (start.min(end)..end)
+            .map(|i| s.module_text(&model.alphabet, i))
+            .collect();
+        serde_json::to_string(&texts).unwrap_or_else(|_| "[]".into())
+    }
+
+    /// For each module of the derived string, the index of the module of the previous step's
+    /// string it was rewritten or copied from (empty after 0 steps).
+    pub fn parents(&self) -> js_sys::Uint32Array {
+        js_sys::Uint32Array::from(&self.inner.parent[..])
+    }
+
     /// The derived string, cut after `max_chars` characters with `…` appended when longer.
     pub fn derived(&self, max_chars: usize) -> String {
         match &self.inner.model {
@@ -180,6 +334,56 @@ impl Build {
                 .to_text_truncated(&model.alphabet, max_chars),
             None => String::new(),
         }
+    }
+}
+
+/// Why and where one production fired in the last step. Module indices name the derived string.
+#[wasm_bindgen]
+pub struct Explanation {
+    inner: pipeline::Explained,
+}
+
+#[wasm_bindgen]
+impl Explanation {
+    /// The production explained (an index into `productions()`).
+    #[wasm_bindgen(getter)]
+    pub fn production(&self) -> u32 {
+        self.inner.explanation.production
+    }
+
+    /// Modules the production rewrote.
+    #[wasm_bindgen(getter)]
+    pub fn fired(&self) -> u32 {
+        self.inner.explanation.rewritten.len() as u32
+    }
+
+    /// Modules whose predecessor and contexts matched it.
+    #[wasm_bindgen(getter, js_name = contextMatched)]
+    pub fn context_matched(&self) -> u32 {
+        self.inner.explanation.context_matched
+    }
+
+    /// Of those, the modules whose condition was false.
+    #[wasm_bindgen(getter, js_name = conditionFailed)]
+    pub fn condition_failed(&self) -> u32 {
+        self.inner.explanation.condition_failed
+    }
+
+    /// Modules of the derived string the production wrote.
+    pub fn produced(&self) -> js_sys::Uint32Array {
+        js_sys::Uint32Array::from(&self.inner.produced[..])
+    }
+
+    /// Modules of the derived string descending from the modules that served as left context.
+    #[wasm_bindgen(js_name = leftContext)]
+    pub fn left_context(&self) -> js_sys::Uint32Array {
+        js_sys::Uint32Array::from(&self.inner.left[..])
+    }
+
+    /// Modules of the derived string descending from the modules that served as right context.
+    #[wasm_bindgen(js_name = rightContext)]
+    pub fn right_context(&self) -> js_sys::Uint32Array {
+        js_sys::Uint32Array::from(&self.inner.right[..])
     }
 }
 

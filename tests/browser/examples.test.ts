@@ -32,7 +32,7 @@ describe('every gallery example, opened from the gallery', () => {
     const picture = await canvasPicture(page, `example-${file.replace(/\.lsys$/, '')}.png`);
     const extent = foregroundExtent(picture);
     expect(foregroundShare(picture), 'share of the canvas covered').toBeGreaterThan(0.002);
-    expect(Math.max(extent.width, extent.height), 'the plant is framed to fill the view').toBeGreaterThan(0.5);
+    expect(Math.max(extent.width, extent.height), 'the plant is framed to fill the view').toBeGreaterThan(0.4);
     expect(problems).toEqual([]);
   });
 });
@@ -47,16 +47,16 @@ describe('the gallery dialog', () => {
       { timeout: 60_000 },
     );
     await savePage(page, 'gallery-dialog.png');
-    // Each picture is a PNG of a plant (read back through its URL).
+    // Each picture shows a plant (read back by drawing the image on a canvas: the page's CSP lets
+    // images, not fetches, load blob: URLs).
     const pngs = await page.$$eval('[data-testid=gallery-list] img', (images) =>
-      Promise.all(
-        images.map(async (image) => {
-          const bytes = new Uint8Array(await (await fetch((image as HTMLImageElement).src)).arrayBuffer());
-          let binary = '';
-          for (const byte of bytes) binary += String.fromCharCode(byte);
-          return btoa(binary);
-        }),
-      ),
+      images.map((image) => {
+        const img = image as HTMLImageElement;
+        const canvas = document.createElement('canvas');
+        [canvas.width, canvas.height] = [img.naturalWidth, img.naturalHeight];
+        canvas.getContext('2d')!.drawImage(img, 0, 0);
+        return canvas.toDataURL('image/png').replace(/^data:image\/png;base64,/, '');
+      }),
     );
     expect(pngs).toHaveLength(count);
     for (const png of pngs) expect(foregroundShare(decodePng(Buffer.from(png, 'base64')))).toBeGreaterThan(0.005);

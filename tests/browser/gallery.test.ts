@@ -23,7 +23,9 @@ async function show(source: string, picture: string): Promise<{ state: string | 
   await page.keyboard.press('Control+A');
   await page.keyboard.insertText(source);
   await page.waitForFunction(
-    (previous) => Number(document.querySelector('[data-testid=status]')?.getAttribute('data-generation') ?? 0) > previous,
+    (previous) =>
+      Number(document.querySelector('[data-testid=status]')?.getAttribute('data-generation') ?? 0) > previous &&
+      window.__meristem?.preview?.settled === true,
     before,
     { timeout: 30_000 },
   );

@@ -46,10 +46,15 @@ export async function generation(page: Page): Promise<number> {
   return Number((await page.getByTestId('status').getAttribute('data-generation')) ?? '0');
 }
 
-/** Waits for a build delivered after `previous` (and optionally for the editor to hold `text`); returns the status state. */
+/**
+ * Waits for a build delivered after `previous`, and for the build of the text and options now in
+ * the studio to be on screen; returns the status state.
+ */
 export async function nextBuild(page: Page, previous: number, timeout = 30_000): Promise<string | null> {
   await page.waitForFunction(
-    (before) => Number(document.querySelector('[data-testid=status]')?.getAttribute('data-generation') ?? 0) > before,
+    (before) =>
+      Number(document.querySelector('[data-testid=status]')?.getAttribute('data-generation') ?? 0) > before &&
+      window.__meristem?.preview?.settled === true,
     previous,
     { timeout },
   );

@@ -36,10 +36,15 @@ async function generation(): Promise<number> {
   return Number((await page.getByTestId('status').getAttribute('data-generation')) ?? '0');
 }
 
-/** Waits until a build after `previous` finished, and returns the status state. */
+/**
+ * Waits until a build after `previous` finished and the build of the text now in the editor is on
+ * screen (builds of the keystrokes between may have come first), and returns the status state.
+ */
 async function nextBuild(previous: number): Promise<string | null> {
   await page.waitForFunction(
-    (before) => Number(document.querySelector('[data-testid=status]')?.getAttribute('data-generation') ?? 0) > before,
+    (before) =>
+      Number(document.querySelector('[data-testid=status]')?.getAttribute('data-generation') ?? 0) > before &&
+      window.__meristem?.preview?.settled === true,
     previous,
   );
   return page.getByTestId('status').getAttribute('data-state');
@@ -103,6 +108,15 @@ describe('the studio', () => {
     const doc = page.locator('.cm-tooltip .cm-command-doc');
     await doc.waitFor({ state: 'visible' });
     expect(await doc.textContent()).toMatch(/^F(\(l = #step\))? — .*draw/);
+    await page.mouse.move(900, 20);
+    await doc.waitFor({ state: 'hidden' });
+    // Directives have docs too, from the core's directive table.
+    const angle = page.getByTestId('editor').locator('.cm-line', { hasText: /^#angle/ }).locator('span').first();
+    const at = (await angle.boundingBox())!;
+    await page.mouse.move(at.x + 2, at.y + at.height / 2);
+    await page.mouse.move(at.x + at.width / 2, at.y + at.height / 2);
+    await doc.waitFor({ state: 'visible' });
+    expect(await doc.textContent()).toMatch(/^#angle degrees — .*turn angle/);
     await page.mouse.move(900, 20);
     await doc.waitFor({ state: 'hidden' });
     expect(problems).toEqual([]);

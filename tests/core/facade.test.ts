@@ -4,7 +4,7 @@ import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { beforeAll, describe, expect, it } from 'vitest';
-import { NOT_REWRITTEN, buildPlant, byteOffsetToUtf16, initCore, type Bounds, type PlantBuild } from '../../web/src/core';
+import { buildPlant, byteOffsetToUtf16, initCore, inspectPlant, NOT_REWRITTEN, type Bounds, type PlantBuild } from '../../web/src/core';
 
 const repoRoot = fileURLToPath(new URL('../..', import.meta.url));
 const EXAMPLE = 'public/examples/abop-1.24d.lsys';
@@ -183,5 +183,49 @@ describe('buildPlant on a grammar with an error', () => {
     const smooth = buildPlant(bent, { smoothAll: true });
     expect(smooth.stats.segments).toBe(sharp.stats.segments);
     expect(smooth.stats.vertices, 'a smooth axis has rings between the joints').toBeGreaterThan(sharp.stats.vertices);
+  });
+});
+
+describe('inspectPlant: provenance and explanations across the boundary', () => {
+  const signal = readFileSync(new URL('../../public/examples/abop-sec-1.8-signal.lsys', import.meta.url), 'utf8');
+
+  it('locates the productions in the text and tells which production wrote each module', () => {
+    const { build, inspector } = inspectPlant(signal);
+    try {
+      expect(build.moduleCount).toBe(9);
+      expect(build.productions.map((p) => signal.slice(p.from, p.to).trim())).toEqual(['b < a -> b', 'b -> a']);
+      expect(build.productions.map((p) => p.context)).toEqual([true, false]);
+      // aaaabaaaa: the b at 4 was written by production 0, the a at 3 by production 1, the rest copied.
+      expect(Array.from(build.origins)).toEqual([
+        NOT_REWRITTEN, NOT_REWRITTEN, NOT_REWRITTEN, 1, 0, NOT_REWRITTEN, NOT_REWRITTEN, NOT_REWRITTEN, NOT_REWRITTEN,
+      ]);
+    } finally {
+      inspector.free();
+    }
+  });
+
+  it('explains a context-sensitive production and gives module texts', async () => {
+    const { inspector } = inspectPlant(signal);
+    const explained = await inspector.explain(0);
+    expect(explained).not.toBeNull();
+    expect(explained!.fired).toBe(1);
+    expect(explained!.contextMatched).toBe(1);
+    expect(explained!.conditionFailed).toBe(0);
+    expect(Array.from(explained!.produced)).toEqual([4]);
+    expect(Array.from(explained!.leftContext)).toEqual([3]);
+    expect(Array.from(explained!.rightContext)).toEqual([]);
+    expect(await inspector.moduleTexts(2, 4)).toEqual(['a', 'a', 'b', 'a']);
+    expect(await inspector.moduleTexts(7, 100)).toEqual(['a', 'a']);
+    expect(await inspector.derivedHash()).toMatch(/^[0-9a-f]{16}$/);
+    inspector.free();
+    expect(await inspector.derivedHash()).toBe('');
+    expect(await inspector.explain(0)).toBeNull();
+    expect(await inspector.moduleTexts(0, 3)).toEqual([]);
+  });
+
+  it('gives parametric module texts as the derived string writes them', async () => {
+    const { inspector } = inspectPlant('axiom: A(1)\nA(x) -> A(x+0.5)B(x*2,3)', { iterations: 1 });
+    expect(await inspector.moduleTexts(0, 2)).toEqual(['A(1.5)', 'B(2,3)']);
+    inspector.free();
   });
 });

@@ -1,23 +1,38 @@
-// The studio page: wires the grammar editor, the build worker, the 3D view and the controls
-// around them (see index.html). The logic lives in ./studio, ./editor and ./view; this file only
-// connects the pieces.
+// The studio page: wires the grammar editor, the build worker, the 3D view, the context-sensitivity
+// view, the downloads and the controls around them (see index.html). The logic lives in ./studio,
+// ./editor and ./view; this file only connects the pieces.
 import './style.css';
-import { coreVersion, grammarDirectives, initCore, turtleCommands, type BuildOptions, type PlantStats } from './core';
+import {
+  coreVersion,
+  exportModel,
+  grammarDirectives,
+  initCore,
+  MODEL_FORMATS,
+  turtleCommands,
+  type BuildOptions,
+  type ModelFormat,
+  type PlantStats,
+} from './core';
 import { createGrammarEditor, type GrammarEditor } from './editor';
 import { PlantView } from './view';
 import {
   BuildClient,
+  ContextView,
   GalleryDialog,
   GalleryThumbnails,
   LivePreview,
   Playback,
   SliderPanel,
+  afterPaint,
   askToReplace,
   attachSplitter,
   createBuildWorker,
   fetchExample,
+  fileSize,
   installShortcuts,
+  pictureSize,
   renderShortcutHelp,
+  saveFile,
   showStatus,
   type GalleryEntry,
   type ShortcutAction,
@@ -81,6 +96,16 @@ function studioElements() {
     confirm: byId('confirm-replace', HTMLDialogElement),
     confirmExample: byId('confirm-example', HTMLElement),
     shortcutList: byId('shortcut-list', HTMLElement),
+    stringPanel: byId('string-panel', HTMLElement),
+    explainSummary: byId('explain-summary', HTMLElement),
+    byProduction: byId('by-production', HTMLInputElement),
+    productionLegend: byId('production-legend', HTMLElement),
+    downloads: byId('downloads', HTMLDetailsElement),
+    modelDownloads: byId('model-downloads', HTMLElement),
+    pngWidth: byId('png-width', HTMLInputElement),
+    pngHeight: byId('png-height', HTMLInputElement),
+    downloadPng: byId('download-png', HTMLButtonElement),
+    exportStatus: byId('export-status', HTMLElement),
   };
 }
 type StudioElements = ReturnType<typeof studioElements>;
@@ -111,6 +136,12 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     smoothAll: els.smoothAll.checked,
   });
   let editor: GrammarEditor | undefined;
+  // The context-sensitivity view: the cursor on a production lights up what it wrote.
+  const contexts = new ContextView(
+    { panel: els.stringPanel, summary: els.explainSummary, byProduction: els.byProduction, legend: els.productionLegend },
+    view,
+    () => editor,
+  );
   const preview = new LivePreview({
     client: new BuildClient(createBuildWorker),
     view,
@@ -119,6 +150,10 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     text: () => editor?.text() ?? source,
     options,
     diagnosticsChanged: () => editor?.refreshDiagnostics(),
+    adopt: (result) => {
+      contexts.setBuild(result.build, result.inspector, result.source);
+      if (editor) contexts.cursorAt(editor.view.state.selection.main.head);
+    },
   });
   const sliders = new SliderPanel(els.sliders, els.constantsCount, els.constantsEmpty, {
     replaceRange: (from, to, insert, history) => editor?.replaceRange(from, to, insert, history),
@@ -133,6 +168,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     diagnose: (text) => preview.feed.diagnose(text),
     commands: turtleCommands(),
     directives: grammarDirectives(),
+    onCursor: (pos) => contexts.cursorAt(pos),
   });
   const grammarEditor = editor;
   sliders.update(source);
@@ -233,6 +269,10 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     if (grammarEditor.text() !== pristine) event.preventDefault(); // the browser asks before leaving
   });
 
+  // Downloads: the plant on screen (the last good build's text and options), written by the page's
+  // own core instance, as a model file or a PNG of the view.
+  installDownloads(els, view, () => preview.lastGood && { source: preview.lastGood.source, options: preview.lastGood.options });
+
   // Keyboard: shortcuts anywhere, their help, the splitter.
   const actions: Record<ShortcutAction, () => void> = {
     stepBack: () => playback.stepBy(-1),
@@ -256,6 +296,80 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   });
   preview.rebuild();
   await firstBuild;
+}
+
+/** The Download menu: a button per model format and the PNG of the view, each run with the menu disabled. */
+function installDownloads(
+  els: StudioElements,
+  view: PlantView,
+  shown: () => { source: string; options: BuildOptions } | undefined,
+): void {
+  const menuButtons = (): HTMLButtonElement[] => [...els.downloads.querySelectorAll('button')];
+  let crashed = false;
+  const download = async (what: string, save: () => Promise<string>): Promise<void> => {
+    if (crashed || menuButtons().some((b) => b.disabled)) return;
+    els.downloads.open = false;
+    menuButtons().forEach((b) => (b.disabled = true));
+    showExportStatus(els.exportStatus, 'busy', `Exporting ${what}…`);
+    try {
+      await afterPaint(); // the status shows while the core works (it blocks this thread)
+      showExportStatus(els.exportStatus, 'done', await save());
+    } catch (error) {
+      console.error(`Export of ${what} failed:`, error);
+      showExportStatus(els.exportStatus, 'error', `Export of ${what} failed: ${String(error)}`);
+      if (error instanceof WebAssembly.RuntimeError) {
+        // A panic in the page's core: its state is unknown (the builds, in the worker, go on).
+        crashed = true;
+        showStatus(els.status, { state: 'crashed', text: 'The core crashed while exporting — reload the page to export again' });
+      }
+    } finally {
+      menuButtons().forEach((b) => (b.disabled = false));
+    }
+  };
+  const downloadModel = (format: ModelFormat, label: string): Promise<void> =>
+    download(label, async () => {
+      const plant = shown();
+      if (!plant) throw new Error('no plant yet');
+      const file = exportModel(plant.source, format, plant.options);
+      saveFile(file.bytes, file.fileName, file.mimeType);
+      return `Saved ${file.fileName} · ${fileSize(file.bytes.length)}`;
+    });
+  for (const { format, label, file } of MODEL_FORMATS) {
+    const button = document.createElement('button');
+    button.type = 'button';
+    button.className = 'menu-item';
+    button.dataset.testid = `download-${format}`;
+    button.append(label, Object.assign(document.createElement('span'), { className: 'file-type', textContent: file }));
+    button.addEventListener('click', () => void downloadModel(format, label));
+    els.modelDownloads.append(button);
+  }
+  // The menu closes like a menu: on a click elsewhere and on Escape.
+  document.addEventListener('pointerdown', (event) => {
+    if (els.downloads.open && !els.downloads.contains(event.target as Node)) els.downloads.open = false;
+  });
+  els.downloads.addEventListener('keydown', (event) => {
+    if (event.key !== 'Escape' || !els.downloads.open) return;
+    els.downloads.open = false;
+    els.downloads.querySelector('summary')?.focus();
+  });
+  els.downloadPng.addEventListener('click', () => {
+    const size = pictureSize(els.pngWidth.value, els.pngHeight.value, view.maxPictureSide());
+    if (!size.ok) {
+      showExportStatus(els.exportStatus, 'error', size.message);
+      return;
+    }
+    void download(`PNG ${size.width} × ${size.height}`, async () => {
+      const png = await view.snapshot(size.width, size.height);
+      saveFile(png, 'plant.png', 'image/png');
+      return `Saved plant.png · ${size.width} × ${size.height} · ${fileSize(png.size)}`;
+    });
+  });
+}
+
+/** Shows the state of the last download next to the build status. */
+function showExportStatus(element: HTMLElement, state: 'busy' | 'done' | 'error', text: string): void {
+  element.textContent = text;
+  element.dataset.state = state;
 }
 
 const els = studioElements();

@@ -56,6 +56,38 @@ fn bind(m: &PatternModule, params: &[f64], slots: &mut [f64]) -> bool {
     true
 }
 
+/// Where a match records the modules that served as context. Derivation records nothing (`()`,
+/// compiled away); the studio's explanation of a production records their indices.
+pub trait Recorder {
+    fn record(&mut self, index: usize);
+    fn mark(&self) -> usize;
+    /// Forgets what was recorded since `mark` (a branch of the pattern that did not match).
+    fn reset(&mut self, mark: usize);
+}
+
+impl Recorder for () {
+    #[inline(always)]
+    fn record(&mut self, _: usize) {}
+    #[inline(always)]
+    fn mark(&self) -> usize {
+        0
+    }
+    #[inline(always)]
+    fn reset(&mut self, _: usize) {}
+}
+
+impl Recorder for Vec<u32> {
+    fn record(&mut self, index: usize) {
+        self.push(index as u32);
+    }
+    fn mark(&self) -> usize {
+        self.len()
+    }
+    fn reset(&mut self, mark: usize) {
+        self.truncate(mark);
+    }
+}
+
 /// Matches a left context ending just before module `i`, binding its formal parameters.
 pub fn match_left(
     model: &Model,
@@ -65,14 +97,31 @@ pub fn match_left(
     pattern: &[PatternModule],
     slots: &mut [f64],
 ) -> bool {
+    match_left_recording(model, s, partner, i, pattern, slots, &mut ())
+}
+
+/// [`match_left`], recording the indices of the context modules it matched.
+pub fn match_left_recording<R: Recorder>(
+    model: &Model,
+    s: &LString,
+    partner: &[u32],
+    i: usize,
+    pattern: &[PatternModule],
+    slots: &mut [f64],
+    recorder: &mut R,
+) -> bool {
+    let mark = recorder.mark();
     let mut j = i;
     for m in pattern.iter().rev() {
         let Some(k) = previous(model, s, partner, j) else {
+            recorder.reset(mark);
             return false;
         };
         if s.ids[k] != m.id || !bind(m, s.params_of(k), slots) {
+            recorder.reset(mark);
             return false;
         }
+        recorder.record(k);
         j = k;
     }
     true
@@ -83,9 +132,22 @@ pub fn match_right(
     model: &Model,
     s: &LString,
     partner: &[u32],
+    pos: usize,
+    pattern: &[PatternItem],
+    slots: &mut [f64],
+) -> bool {
+    match_right_recording(model, s, partner, pos, pattern, slots, &mut ())
+}
+
+/// [`match_right`], recording the indices of the context modules it matched.
+pub fn match_right_recording<R: Recorder>(
+    model: &Model,
+    s: &LString,
+    partner: &[u32],
     mut pos: usize,
     pattern: &[PatternItem],
     slots: &mut [f64],
+    recorder: &mut R,
 ) -> bool {
     let Some(item) = pattern.first() else {
         return true;
@@ -108,9 +170,17 @@ pub fn match_right(
             } else if model.ignored[id.index()] {
                 pos += 1;
             } else {
-                return id == m.id
-                    && bind(m, s.params_of(pos), slots)
-                    && match_right(model, s, partner, pos + 1, &pattern[1..], slots);
+                if id != m.id || !bind(m, s.params_of(pos), slots) {
+                    return false;
+                }
+                let mark = recorder.mark();
+                recorder.record(pos);
+                if match_right_recording(model, s, partner, pos + 1, &pattern[1..], slots, recorder)
+                {
+                    return true;
+                }
+                recorder.reset(mark);
+                return false;
             }
         },
         PatternItem::Open => loop {
@@ -119,7 +189,8 @@ pub fn match_right(
             }
             let id = s.ids[pos];
             if id == model.open {
-                if match_right(model, s, partner, pos + 1, &pattern[1..], slots) {
+                if match_right_recording(model, s, partner, pos + 1, &pattern[1..], slots, recorder)
+                {
                     return true;
                 }
                 let close = partner[pos];
@@ -145,7 +216,15 @@ pub fn match_right(
                 }
                 pos = close as usize + 1;
             } else if id == model.close {
-                return match_right(model, s, partner, pos + 1, &pattern[1..], slots);
+                return match_right_recording(
+                    model,
+                    s,
+                    partner,
+                    pos + 1,
+                    &pattern[1..],
+                    slots,
+                    recorder,
+                );
             } else {
                 pos += 1;
             }

@@ -1,16 +1,21 @@
 // The facade over the core's `build`: one call, plain data out, the wasm object freed.
-import { build } from '../../../crate/pkg/meristem.js';
+import { build, type Build, type Explanation as WasmExplanation } from '../../../crate/pkg/meristem.js';
+import { byteOffsetToUtf16 } from './offsets';
 import { assertReady, ownedArray } from './init';
 import {
   DERIVED_PREVIEW_CHARS,
   type BuildOptions,
   type Diagnostic,
+  type Explanation,
   type PlantBuild,
+  type PlantInspector,
+  type ProductionInfo,
   type PlantStats,
   type Severity,
   type StageTimings,
 } from './types';
 
+/** The timings of a build made without a clock (none is: this facade always lends one). */
 const NO_TIMINGS: StageTimings = { parseResolve: 0, derive: 0, interpret: 0, mesh: 0 };
 
 /** A diagnostic as the core serialises it (byte offsets named `from`/`to`). */
@@ -32,37 +37,131 @@ interface RawDiagnostic {
  * Requires {@link initCore} to have finished.
  */
 export function buildPlant(source: string, options: BuildOptions = {}): PlantBuild {
+  const result = runBuild(source, options);
+  try {
+    return plainBuild(source, result);
+  } finally {
+    result.free();
+  }
+}
+
+/**
+ * Like {@link buildPlant}, and also keeps the core's derivation alive behind a
+ * {@link PlantInspector} (explanations, module texts) until its `free` is called.
+ */
+export function inspectPlant(source: string, options: BuildOptions = {}): { build: PlantBuild; inspector: PlantInspector } {
+  const result = runBuild(source, options);
+  let plain: PlantBuild;
+  try {
+    plain = plainBuild(source, result);
+  } catch (error) {
+    result.free();
+    throw error;
+  }
+  result.releaseGeometry();
+  return { build: plain, inspector: new LiveInspector(result, plain.moduleCount) };
+}
+
+function runBuild(source: string, options: BuildOptions): Build {
   assertReady();
-  const result = build(
+  return build(
     source,
     options.iterations ?? undefined,
     options.seed ?? undefined,
     options.sides ?? undefined,
     options.smoothAll ?? undefined,
-    () => performance.now(),
+    () => performance.now(), // the core reads no clock: it reads ours between its stages
   );
+}
+
+interface RawProduction {
+  index: number;
+  from: number;
+  to: number;
+  label: string | null;
+  context: boolean;
+}
+
+function plainBuild(source: string, result: Build): PlantBuild {
+  return {
+    ok: result.ok,
+    diagnostics: (JSON.parse(result.diagnostics()) as RawDiagnostic[]).map(toDiagnostic),
+    stats: JSON.parse(result.stats()) as PlantStats,
+    mesh: {
+      positions: ownedArray(result.positions()),
+      normals: ownedArray(result.normals()),
+      colors: ownedArray(result.colors()),
+      indices: ownedArray(result.indices()),
+      ranges: ownedArray(result.ranges()),
+      lines: ownedArray(result.lines()),
+      lineColors: ownedArray(result.lineColors()),
+    },
+    derived: result.derived(DERIVED_PREVIEW_CHARS),
+    moduleCount: result.moduleCount,
+    productions: (JSON.parse(result.productions()) as RawProduction[]).map(
+      (p): ProductionInfo => ({
+        index: p.index,
+        from: byteOffsetToUtf16(source, p.from),
+        to: byteOffsetToUtf16(source, p.to),
+        label: p.label,
+        context: p.context,
+      }),
+    ),
+    origins: ownedArray(result.origins()),
+    timings: (JSON.parse(result.timings()) as StageTimings | null) ?? NO_TIMINGS,
+    flat: result.flat,
+    grammarIterations: result.grammarIterations,
+  };
+}
+
+/** Copies a wasm explanation into plain data and frees it. */
+function toExplanation(explained: WasmExplanation | undefined): Explanation | null {
+  if (!explained) return null;
   try {
     return {
-      ok: result.ok,
-      diagnostics: (JSON.parse(result.diagnostics()) as RawDiagnostic[]).map(toDiagnostic),
-      stats: JSON.parse(result.stats()) as PlantStats,
-      mesh: {
-        positions: ownedArray(result.positions()),
-        normals: ownedArray(result.normals()),
-        colors: ownedArray(result.colors()),
-        indices: ownedArray(result.indices()),
-        ranges: ownedArray(result.ranges()),
-        lines: ownedArray(result.lines()),
-        lineColors: ownedArray(result.lineColors()),
-      },
-      origins: ownedArray(result.origins()),
-      derived: result.derived(DERIVED_PREVIEW_CHARS),
-      timings: (JSON.parse(result.timings()) as StageTimings | null) ?? NO_TIMINGS,
-      flat: result.flat,
-      grammarIterations: result.grammarIterations,
+      production: explained.production,
+      fired: explained.fired,
+      contextMatched: explained.contextMatched,
+      conditionFailed: explained.conditionFailed,
+      produced: ownedArray(explained.produced()),
+      leftContext: ownedArray(explained.leftContext()),
+      rightContext: ownedArray(explained.rightContext()),
     };
   } finally {
-    result.free();
+    explained.free();
+  }
+}
+
+/** A {@link PlantInspector} over a wasm `Build` on this thread. */
+class LiveInspector implements PlantInspector {
+  constructor(
+    private result: Build | undefined,
+    private readonly moduleCount: number,
+  ) {}
+
+  explain(production: number): Promise<Explanation | null> {
+    return Promise.resolve(toExplanation(this.result?.explain(production)));
+  }
+
+  explainModule(module: number): Promise<Explanation | null> {
+    if (!Number.isInteger(module) || module < 0) return Promise.resolve(null);
+    return Promise.resolve(toExplanation(this.result?.explainModule(module)));
+  }
+
+  moduleTexts(start: number, count: number): Promise<string[]> {
+    if (!this.result) return Promise.resolve([]);
+    const from = Math.max(0, Math.min(start, this.moduleCount));
+    const n = Math.max(0, Math.min(count, this.moduleCount - from));
+    return Promise.resolve(JSON.parse(this.result.moduleTexts(from, n)) as string[]);
+  }
+
+  derivedHash(): Promise<string> {
+    return Promise.resolve(this.result?.derivedHash() ?? '');
+  }
+
+  free(): void {
+    this.result?.free();
+    this.result = undefined;
   }
 }
 

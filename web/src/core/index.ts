@@ -1,13 +1,17 @@
 // The core: the Rust/WebAssembly pipeline behind an idiomatic TypeScript facade.
 // Invariant: no other TypeScript imports crate/pkg; everything else uses these names.
 export { initCore, coreVersion } from './init';
-export { buildPlant } from './build';
+export { buildPlant, inspectPlant } from './build';
+export { exportModel, MODEL_FORMATS, type ExportOptions, type ModelFile, type ModelFormat } from './export';
 export { grammarDirectives, turtleCommands, type GrammarDirective, type TurtleCommand } from './commands';
 export { byteOffsetToUtf16 } from './offsets';
 export {
   DERIVED_PREVIEW_CHARS,
   NOT_REWRITTEN,
   type Bounds,
+  type Explanation,
+  type PlantInspector,
+  type ProductionInfo,
   type BuildOptions,
   type Diagnostic,
   type MeshBuffers,

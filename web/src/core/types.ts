@@ -100,11 +100,6 @@ export interface PlantBuild {
   diagnostics: Diagnostic[];
   stats: PlantStats;
   mesh: MeshBuffers;
-  /**
-   * For each module of the derived string, the index of the production that made it in the last
-   * step, or {@link NOT_REWRITTEN} when it was copied unchanged.
-   */
-  origins: Uint32Array;
   /** The derived string, cut to its first {@link DERIVED_PREVIEW_CHARS} characters (then ending in "…"). */
   derived: string;
   /** Time per stage. */
@@ -113,10 +108,65 @@ export interface PlantBuild {
   flat: boolean;
   /** The grammar's own `#iterations` (0 when it has none), whatever `BuildOptions.iterations` asked. */
   grammarIterations: number;
+  /** Modules in the derived string. */
+  moduleCount: number;
+  /** The productions of the productions section, in source order (indices as in `origins`). */
+  productions: ProductionInfo[];
+  /**
+   * Provenance of the last step: for each module of the derived string, the index of the production
+   * that wrote it, or {@link NOT_REWRITTEN} when it was copied.
+   */
+  origins: Uint32Array;
 }
 
-/** The value of {@link PlantBuild.origins} for a module no production rewrote in the last step. */
+/** In `PlantBuild.origins`: no production wrote this module in the last step. */
 export const NOT_REWRITTEN = 0xffffffff;
+
+/** One production of the grammar, located in the source text. */
+export interface ProductionInfo {
+  /** Index among the productions (what `origins` and `explain` use). */
+  index: number;
+  /** UTF-16 range of the production in the source text. */
+  from: number;
+  to: number;
+  label: string | null;
+  /** Whether it has a left or right context. */
+  context: boolean;
+}
+
+/** Why and where one production fired in the last step (module indices of the derived string). */
+export interface Explanation {
+  production: number;
+  /** Modules it rewrote. */
+  fired: number;
+  /** Modules whose predecessor and contexts matched it. */
+  contextMatched: number;
+  /** Of those, modules whose condition was false. */
+  conditionFailed: number;
+  /** Modules of the derived string it wrote. */
+  produced: Uint32Array;
+  /** Modules descending from the modules that served as its left / right context. */
+  leftContext: Uint32Array;
+  rightContext: Uint32Array;
+}
+
+/** Questions about one build that need the core's full derivation (kept alive until `free`). */
+export interface PlantInspector {
+  /** Explains a production on the last step; null before the first step. */
+  explain(production: number): Promise<Explanation | null>;
+  /**
+   * Explains how one module of the derived string was made: the production that wrote it and the
+   * contexts of that one rewriting (the counts cover the whole string); null when it was copied.
+   */
+  explainModule(module: number): Promise<Explanation | null>;
+  /** The text of modules `start .. start + count` of the derived string. */
+  moduleTexts(start: number, count: number): Promise<string[]>;
+  /** A fingerprint of the derived string (16 hex digits; '' once freed): equal for equal derivations. */
+  derivedHash(): Promise<string>;
+  /** Releases the core's memory; later questions answer null / []. */
+  free(): void;
+}
+
 
 /** How many characters of the derived string {@link buildPlant} keeps. */
 export const DERIVED_PREVIEW_CHARS = 10_000;

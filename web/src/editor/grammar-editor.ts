@@ -1,7 +1,7 @@
 // The grammar editor: CodeMirror 6 with the grammar language and the core's diagnostics.
 import { basicSetup } from 'codemirror';
-import { EditorView } from '@codemirror/view';
-import { Transaction } from '@codemirror/state';
+import { Decoration, EditorView, type DecorationSet } from '@codemirror/view';
+import { StateEffect, StateField, Transaction } from '@codemirror/state';
 import { forceLinting } from '@codemirror/lint';
 import { isolateHistory } from '@codemirror/commands';
 import type { GrammarDirective, TurtleCommand } from '../core';
@@ -25,7 +25,30 @@ export interface GrammarEditorOptions {
   commands: readonly TurtleCommand[];
   /** The core's directive table: drives completion. */
   directives: readonly GrammarDirective[];
+  /** Called with the cursor's position (UTF-16) whenever it moves or the text changes. */
+  onCursor?: (pos: number) => void;
 }
+
+/** Sets (or clears, with null) the marked production range. */
+const markProductionEffect = StateEffect.define<{ from: number; to: number } | null>();
+
+/** The production marked by a pick in the 3D view or the string panel. */
+const markedProduction = StateField.define<DecorationSet>({
+  create: () => Decoration.none,
+  update(marks, transaction) {
+    let next = marks.map(transaction.changes);
+    for (const effect of transaction.effects) {
+      if (!effect.is(markProductionEffect)) continue;
+      const range = effect.value;
+      next =
+        range && range.to > range.from
+          ? Decoration.set([Decoration.mark({ class: 'cm-picked-production' }).range(range.from, range.to)])
+          : Decoration.none;
+    }
+    return next;
+  },
+  provide: (field) => EditorView.decorations.from(field),
+});
 
 /** A grammar editor on the page. */
 export interface GrammarEditor {
@@ -45,6 +68,8 @@ export interface GrammarEditor {
    * false` a change undo skips (the steps of a slider drag, made one undo step at its end).
    */
   replaceRange(from: number, to: number, insert: string, options?: { history?: boolean }): void;
+  /** Marks a range (a production picked elsewhere) and scrolls it into view; null clears the mark. */
+  markProduction(range: { from: number; to: number } | null): void;
 }
 
 /** Creates the editor in `options.parent`. */
@@ -55,14 +80,16 @@ export function createGrammarEditor(options: GrammarEditorOptions): GrammarEdito
     extensions: [
       basicSetup,
       grammarSupport(options.commands),
-      commandHover(options.commands),
+      commandHover(options.commands, options.directives),
       grammarCompletion(options.commands, options.directives),
       grammarLinting(options.diagnose),
       studioEditorTheme,
       EditorView.lineWrapping,
       EditorView.contentAttributes.of({ 'aria-label': 'L-system grammar' }),
+      markedProduction,
       EditorView.updateListener.of((update) => {
         if (update.docChanged) options.onChange(update.state.doc.toString());
+        if (update.docChanged || update.selectionSet) options.onCursor?.(update.state.selection.main.head);
       }),
     ],
   });
@@ -84,5 +111,15 @@ export function createGrammarEditor(options: GrammarEditorOptions): GrammarEdito
         userEvent: 'input',
         annotations: history ? [] : [Transaction.addToHistory.of(false)],
       }),
+    markProduction: (range) => {
+      const length = view.state.doc.length;
+      const clamped = range && { from: Math.min(range.from, length), to: Math.min(range.to, length) };
+      view.dispatch({
+        effects: [
+          markProductionEffect.of(clamped),
+          ...(clamped ? [EditorView.scrollIntoView(clamped.from, { y: 'nearest' })] : []),
+        ],
+      });
+    },
   };
 }

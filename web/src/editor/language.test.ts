@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { highlightTree, tagHighlighter, tags } from '@lezer/highlight';
 import { readFileSync } from 'node:fs';
 import { initCore, turtleCommands, type TurtleCommand } from '../core';
-import { grammarLanguage, grammarTags } from './language';
+import { grammarLanguage, grammarTags, productionParts } from './language';
 
 // The real command table from the core, so the test follows the Rust table.
 await initCore(readFileSync(new URL('../../../crate/pkg/meristem_bg.wasm', import.meta.url)));
@@ -20,6 +20,10 @@ const names = tagHighlighter([
   { tag: grammarTags.turtleCommand, class: 'turtle' },
   { tag: grammarTags.module, class: 'module' },
   { tag: tags.string, class: 'string' },
+  { tag: tags.variableName, class: 'var' },
+  { tag: tags.operator, class: 'op' },
+  { tag: tags.paren, class: 'paren' },
+  { tag: grammarTags.weight, class: 'weight' },
 ]);
 
 /** The highlighted tokens of `text` as `class:text` strings, in order. */
@@ -71,7 +75,93 @@ describe('grammar highlighting', () => {
     expect(tokens('~l @O @Gc ?P X')).toEqual(['turtle:~l', 'turtle:@O', 'turtle:@Gc', 'turtle:?P', 'module:X']);
   });
 
+  it('reads parameters, conditions and weights as expressions', () => {
+    expect(tokens('A(x,y) : x >= 2*y -> F(x*0.5)+(30)A(-x)')).toEqual([
+      'module:A',
+      'paren:(',
+      'var:x',
+      'op:,',
+      'var:y',
+      'paren:)',
+      'var:x',
+      'op:>=',
+      'number:2',
+      'op:*',
+      'var:y',
+      'arrow:->',
+      'turtle:F',
+      'paren:(',
+      'var:x',
+      'op:*',
+      'number:0.5',
+      'paren:)',
+      'turtle:+',
+      'paren:(',
+      'number:30',
+      'paren:)',
+      'module:A',
+      'paren:(',
+      'op:-',
+      'var:x',
+      'paren:)',
+    ]);
+    expect(tokens('F -> (0.25) F[+F]')).toEqual([
+      'turtle:F',
+      'arrow:->',
+      'paren weight:(',
+      'number weight:0.25',
+      'paren weight:)',
+      'turtle:F',
+      'bracket:[',
+      'turtle:+F',
+      'bracket:]',
+    ]);
+  });
+
   it('ends a production at a trailing comment', () => {
     expect(tokens('X -> F // grow')).toEqual(['module:X', 'arrow:->', 'turtle:F', 'comment:// grow']);
+  });
+});
+
+/** A highlighter that names only the production parts. */
+const parts = tagHighlighter([
+  { tag: grammarTags.leftContext, class: 'L' },
+  { tag: grammarTags.predecessor, class: 'P' },
+  { tag: grammarTags.rightContext, class: 'R' },
+  { tag: grammarTags.condition, class: 'C' },
+]);
+
+function partTokens(text: string): string[] {
+  const tree = grammarLanguage(commands).parser.parse(text);
+  const out: string[] = [];
+  // Adjacent tokens of one part are joined: the part is one highlighted run.
+  let last = { classes: '', to: -1 };
+  highlightTree(tree, parts, (from, to, classes) => {
+    if (classes === last.classes && from === last.to) out[out.length - 1] += text.slice(from, to);
+    else out.push(`${classes}:${text.slice(from, to)}`);
+    last = { classes, to };
+  });
+  return out;
+}
+
+describe('the parts of a context-sensitive production', () => {
+  it('splits left context, strict predecessor, right context and condition, outside parentheses', () => {
+    expect(productionParts('A(x) < B(y) > C : x > y -> D')).toEqual({ less: 5, greater: 12, colon: 16, arrow: 24, start: 0 });
+    expect(productionParts('p2: b < a -> b')).toMatchObject({ less: 6, greater: -1, colon: -1, start: 3 });
+    expect(productionParts('axiom: F')).toBeNull();
+    expect(productionParts('// a -> b')).toBeNull();
+  });
+
+  it('gives each part its own highlight, and leaves the successor alone', () => {
+    expect(partTokens('axiom: A\nA(x) < B(y) > [C]D : x > y -> D(x)')).toEqual([
+      'L:A(x)',
+      'P:B(y)',
+      'R:[C]D',
+      'C:x',
+      'C:>', // an operator inside the condition is still condition
+      'C:y',
+    ]);
+    expect(partTokens('axiom: A\nb < a -> b')).toEqual(['L:b', 'P:a']);
+    expect(partTokens('axiom: A\nF -> FF')).toEqual(['P:F']);
   });
 });

@@ -15,7 +15,60 @@ export const grammarTags = {
   arrow: Tag.define(tags.definitionOperator),
   /** A directive such as `#angle`. */
   directive: Tag.define(tags.meta),
+  /** The parts of a production before its arrow: left context, strict predecessor, right context, condition. */
+  leftContext: Tag.define(),
+  predecessor: Tag.define(),
+  rightContext: Tag.define(),
+  condition: Tag.define(),
+  /** A stochastic production's weight, `(0.33)` after the arrow. */
+  weight: Tag.define(),
 };
+
+/** Where the parts of a production's left-hand side lie in its line (offsets into the line). */
+export interface ProductionParts {
+  /** The `<` ending the left context, or -1. */
+  less: number;
+  /** The `>` starting the right context, or -1. */
+  greater: number;
+  /** The `:` starting the condition, or -1. */
+  colon: number;
+  /** Where the arrow starts. */
+  arrow: number;
+  /** Where the left-hand side starts (after a label). */
+  start: number;
+}
+
+const ARROW = /-->|->|→/;
+
+/**
+ * Splits a production line into its parts: `left < pred > right : condition -> successor`, with
+ * a leading `label:` skipped. Only `<`, `>` and `:` outside parentheses count. Null when the line
+ * has no arrow (not a production).
+ */
+export function productionParts(line: string): ProductionParts | null {
+  const arrowMatch = ARROW.exec(line);
+  if (!arrowMatch) return null;
+  const comment = line.indexOf('//');
+  if (comment >= 0 && comment < arrowMatch.index) return null;
+  const arrow = arrowMatch.index;
+  const label = /^\s*[A-Za-z_]\w*\s*:/.exec(line);
+  const start = label && !label[0].trim().startsWith('axiom') && label[0].length <= arrow ? label[0].length : 0;
+  let less = -1;
+  let greater = -1;
+  let colon = -1;
+  let depth = 0;
+  for (let i = start; i < arrow; i++) {
+    const c = line[i];
+    if (c === '(') depth++;
+    else if (c === ')') depth = Math.max(0, depth - 1);
+    else if (depth === 0 && colon < 0) {
+      if (c === ':') colon = i;
+      else if (c === '<' && less < 0 && greater < 0) less = i;
+      else if (c === '>' && greater < 0) greater = i;
+    }
+  }
+  return { less, greater, colon, arrow, start };
+}
 
 /** Tokenizer state; the flags are reset at every line start. */
 interface LineState {
@@ -23,6 +76,27 @@ interface LineState {
   directive: boolean;
   /** No token has been read on this line yet. */
   atLineStart: boolean;
+  /** The parts of the production on this line, if it is one. */
+  parts: ProductionParts | null;
+  /** Parenthesis depth: inside parentheses are expressions (parameters, weights). */
+  depth: number;
+  /** The arrow has been read and nothing else yet: a `(` now opens the production's weight. */
+  afterArrow: boolean;
+  /** Inside the weight's parentheses. */
+  weight: boolean;
+}
+
+/** Operators of expressions (LANGUAGE.md section 4), longest first. */
+const OPERATOR = /^(&&|\|\||==|!=|<=|>=|[-+*/^<>!?%,:=])/;
+
+/** The part of the production a token at `pos` belongs to (a tag name of the token table), if any. */
+function partAt(parts: ProductionParts | null, pos: number): string | null {
+  if (!parts || pos >= parts.arrow || pos < parts.start) return null;
+  if (pos === parts.less || pos === parts.greater || pos === parts.colon) return null;
+  if (parts.colon >= 0 && pos > parts.colon) return 'condition';
+  if (parts.less >= 0 && pos < parts.less) return 'leftContext';
+  if (parts.greater >= 0 && pos > parts.greater) return 'rightContext';
+  return 'predecessor';
 }
 
 const IDENTIFIER = /^[A-Za-z_][A-Za-z0-9_]*/;
@@ -32,14 +106,21 @@ function tokenizer(commands: readonly TurtleCommand[]) {
   const names = commands.map((c) => c.name).sort((a, b) => b.length - a.length);
   const category = new Map(commands.map((c) => [c.name, c.category]));
 
-  return (stream: StringStream, state: LineState): string | null => {
+  const token = (stream: StringStream, state: LineState): string | null => {
     if (stream.sol()) {
       state.directive = false;
       state.atLineStart = true;
+      const text = stream.string;
+      state.parts = /^\s*(#|\/\/)/.test(text) ? null : productionParts(text);
+      state.depth = 0;
+      state.afterArrow = false;
+      state.weight = false;
     }
     if (stream.eatSpace()) return null;
     const first = state.atLineStart;
     state.atLineStart = false;
+    const afterArrow = state.afterArrow;
+    state.afterArrow = false;
 
     if (stream.match('//')) {
       stream.skipToEnd();
@@ -49,7 +130,7 @@ function tokenizer(commands: readonly TurtleCommand[]) {
       state.directive = true;
       return 'directive';
     }
-    if (stream.match(state.directive ? /^-?\d+(\.\d+)?/ : /^\d+(\.\d+)?/)) return 'number';
+    if (stream.match(state.directive ? /^-?\d+(\.\d+)?/ : /^\d+(\.\d+)?/)) return state.weight ? 'number weight' : 'number';
     if (state.directive) {
       if (!stream.match(/^[^\s/]+/)) stream.next();
       return 'string';
@@ -62,13 +143,42 @@ function tokenizer(commands: readonly TurtleCommand[]) {
         return word[0] === 'axiom' ? 'keyword' : 'labelName';
       }
     }
-    if (stream.match('-->') || stream.match('->') || stream.match('→')) return 'arrow';
+    if (state.depth === 0 && (stream.match('-->') || stream.match('->') || stream.match('→'))) {
+      state.afterArrow = true;
+      return 'arrow';
+    }
+    if (stream.match('(')) {
+      if (afterArrow && state.depth === 0) state.weight = true;
+      state.depth++;
+      return state.weight ? 'paren weight' : 'paren';
+    }
+    if (stream.match(')')) {
+      const weight = state.weight;
+      state.depth = Math.max(0, state.depth - 1);
+      if (state.depth === 0) state.weight = false;
+      return weight ? 'paren weight' : 'paren';
+    }
+    // Expressions: parameters and weights inside parentheses, and the condition.
+    const inCondition = state.parts !== null && state.parts.colon >= 0 && stream.pos > state.parts.colon && stream.pos < state.parts.arrow;
+    if (state.depth > 0 || inCondition) {
+      const weight = state.weight ? ' weight' : '';
+      if (stream.match(/^\d*\.?\d+([eE][-+]?\d+)?/)) return `number${weight}`;
+      if (stream.match(IDENTIFIER)) return `variableName${weight}`;
+      if (stream.match(OPERATOR)) return `operator${weight}`;
+    }
     if (stream.match(':')) return 'punctuation';
-    if (stream.match('(') || stream.match(')')) return 'paren';
     const command = names.find((name) => stream.match(name));
     if (command !== undefined) return category.get(command) === 'branch' ? 'squareBracket' : 'turtleCommand';
     stream.next();
     return 'module';
+  };
+  // Each token before the arrow also carries the part of the production it is in.
+  return (stream: StringStream, state: LineState): string | null => {
+    const start = stream.pos;
+    const style = token(stream, state);
+    const part = partAt(state.parts, start);
+    if (!part || !style || style === 'comment') return style;
+    return `${style} ${part}`;
   };
 }
 
@@ -76,7 +186,7 @@ function tokenizer(commands: readonly TurtleCommand[]) {
 export function grammarLanguage(commands: readonly TurtleCommand[]): StreamLanguage<LineState> {
   return StreamLanguage.define<LineState>({
     name: 'lsystem',
-    startState: () => ({ directive: false, atLineStart: true }),
+    startState: () => ({ directive: false, atLineStart: true, parts: null, depth: 0, afterArrow: false, weight: false }),
     copyState: (state) => ({ ...state }),
     token: tokenizer(commands),
     tokenTable: {
@@ -84,6 +194,11 @@ export function grammarLanguage(commands: readonly TurtleCommand[]): StreamLangu
       module: grammarTags.module,
       arrow: grammarTags.arrow,
       directive: grammarTags.directive,
+      leftContext: grammarTags.leftContext,
+      predecessor: grammarTags.predecessor,
+      rightContext: grammarTags.rightContext,
+      condition: grammarTags.condition,
+      weight: grammarTags.weight,
     },
     languageData: { commentTokens: { line: '//' } },
   });
@@ -101,6 +216,14 @@ export const grammarHighlightStyle = HighlightStyle.define([
   { tag: tags.squareBracket, color: 'var(--tok-bracket)', fontWeight: '600' },
   { tag: grammarTags.turtleCommand, color: 'var(--tok-turtle)' },
   { tag: grammarTags.module, color: 'var(--tok-module)', fontWeight: '600' },
+  // The parts of a context-sensitive production, in the colours the 3D view and the panel use.
+  { tag: grammarTags.leftContext, backgroundColor: 'color-mix(in srgb, var(--hl-left) 22%, transparent)', borderBottom: '2px solid var(--hl-left)' },
+  { tag: grammarTags.rightContext, backgroundColor: 'color-mix(in srgb, var(--hl-right) 22%, transparent)', borderBottom: '2px solid var(--hl-right)' },
+  { tag: grammarTags.predecessor, textDecoration: 'underline 2px var(--hl-produced)' },
+  { tag: tags.variableName, color: 'var(--tok-variable)', fontStyle: 'italic' },
+  { tag: tags.operator, color: 'var(--tok-operator)' },
+  { tag: grammarTags.weight, backgroundColor: 'color-mix(in srgb, var(--tok-number) 14%, transparent)', borderRadius: '3px' },
+  { tag: grammarTags.condition, fontStyle: 'italic', backgroundColor: 'color-mix(in srgb, var(--muted) 12%, transparent)' },
 ]);
 
 /** The language plus its highlighting, as one editor extension. */

@@ -1,5 +1,5 @@
-// The studio page's own logic: building in a worker on edit, the status line, and the panels
-// and controls around the editor and the view.
+// The studio page's own logic: building in a worker on edit, the status line, the panels and
+// controls around the editor and the view, the context-sensitivity view, downloads.
 export { reportPlant, reportErrors, plural, millis, type StatusReport } from './status';
 export { BuildClient, createBuildWorker, type BuildOutcome, type BuildResult, type WorkerLike } from './worker-client';
 export { transferablesOf, type BuildRequest, type BuildResponse } from './worker-protocol';
@@ -13,3 +13,5 @@ export { GalleryDialog, fetchExample, fetchManifest } from './gallery';
 export { GalleryThumbnails } from './thumbnails';
 export { galleryManifest, parseExampleHeader, isGalleryManifest, type GalleryEntry } from './gallery-manifest';
 export { askToReplace } from './confirm';
+export { ContextView } from './context-view';
+export { afterPaint, fileSize, pictureSize, saveFile, PICTURE_MAX, PICTURE_MIN, type PictureSize } from './downloads';

@@ -20,6 +20,11 @@ export interface LivePreviewParts {
   options: () => BuildOptions;
   /** Called when a build's diagnostics may differ from what the linter showed for the same text. */
   diagnosticsChanged: () => void;
+  /**
+   * Takes over a build without errors that is now on screen, its `inspector` included (and frees
+   * the one it held before). Without it the preview frees each inspector itself.
+   */
+  adopt?: (result: BuildResult) => void;
 }
 
 /** A status line state beyond a build's own. */
@@ -42,6 +47,7 @@ export class LivePreview {
   /** Delivered builds so far (also `data-generation` on the status line). */
   generation = 0;
   private requestedKey: string | undefined;
+  private deliveredKey: string | undefined;
   private readonly listeners = new Set<(result: BuildResult) => void>();
 
   constructor(private readonly parts: LivePreviewParts) {}
@@ -62,10 +68,15 @@ export class LivePreview {
     const key = JSON.stringify(options) + '\n' + source;
     if (key === this.requestedKey && !force) return;
     this.requestedKey = key;
-    void this.parts.client.request(source, options).then((outcome) => this.deliver(outcome));
+    void this.parts.client.request(source, options).then((outcome) => this.deliver(outcome, key));
   }
 
-  private deliver(outcome: BuildOutcome): void {
+  /** The last build asked for has been delivered: what is on screen is of the text and options now. */
+  get settled(): boolean {
+    return this.requestedKey !== undefined && this.deliveredKey === this.requestedKey;
+  }
+
+  private deliver(outcome: BuildOutcome, key: string): void {
     if (outcome.kind === 'superseded') return;
     const { view, status, staleBadge } = this.parts;
     if (outcome.kind === 'crashed') {
@@ -80,10 +91,13 @@ export class LivePreview {
     const { build } = result;
     const sameText = this.lastResult?.source === result.source;
     if (build.ok) {
-      view.showPlant(build.mesh, build.flat);
+      view.showPlant(build.mesh, build.flat, result.gpu);
       this.lastGood = result;
+      if (this.parts.adopt) this.parts.adopt(result);
+      else result.inspector.free();
       showStatus(status, reportPlant(build.stats, build.diagnostics, build.timings, result.roundTripMillis));
     } else {
+      result.inspector.free(); // not shown: the plant on screen stays the last good one
       showStatus(status, reportErrors(build.diagnostics, this.lastGood !== undefined));
     }
     const stale = !build.ok && this.lastGood !== undefined;
@@ -92,6 +106,7 @@ export class LivePreview {
     this.lastResult = result;
     this.feed.delivered(result.source, build.diagnostics);
     if (sameText) this.parts.diagnosticsChanged();
+    this.deliveredKey = key;
     status.dataset.generation = String(++this.generation);
     for (const listener of this.listeners) listener(result);
   }

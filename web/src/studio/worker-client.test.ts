@@ -1,35 +1,44 @@
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
 import type { PlantBuild } from '../core';
 import { BuildClient, type BuildOutcome, type WorkerLike } from './worker-client';
-import type { BuildRequest, BuildResponse } from './worker-protocol';
+import type { InspectAnswer, WorkerRequest, WorkerResponse } from './worker-protocol';
 
 /** A worker that records requests and answers when the test says so. */
 class FakeWorker implements WorkerLike {
-  requests: BuildRequest[] = [];
+  messages: WorkerRequest[] = [];
   terminated = false;
-  private onMessage: ((event: MessageEvent<BuildResponse>) => void) | undefined;
+  private onMessage: ((event: MessageEvent<WorkerResponse>) => void) | undefined;
   private onError: ((event: ErrorEvent) => void) | undefined;
 
-  postMessage(message: BuildRequest): void {
-    this.requests.push(message);
+  postMessage(message: WorkerRequest): void {
+    this.messages.push(message);
+  }
+  /** The build requests received. */
+  get requests() {
+    return this.messages.filter((m) => m.kind === 'build');
   }
   terminate(): void {
     this.terminated = true;
   }
-  addEventListener(type: 'message', listener: (event: MessageEvent<BuildResponse>) => void): void;
+  addEventListener(type: 'message', listener: (event: MessageEvent<WorkerResponse>) => void): void;
   addEventListener(type: 'error', listener: (event: ErrorEvent) => void): void;
-  addEventListener(type: 'message' | 'error', listener: ((event: MessageEvent<BuildResponse>) => void) | ((event: ErrorEvent) => void)): void {
-    if (type === 'message') this.onMessage = listener as (event: MessageEvent<BuildResponse>) => void;
+  addEventListener(type: 'message' | 'error', listener: ((event: MessageEvent<WorkerResponse>) => void) | ((event: ErrorEvent) => void)): void {
+    if (type === 'message') this.onMessage = listener as (event: MessageEvent<WorkerResponse>) => void;
     else this.onError = listener as (event: ErrorEvent) => void;
   }
   /** Answers request `id` (default: the last one) with a build whose `derived` is its source. */
   answer(id = this.requests.at(-1)!.id): void {
     const request = this.requests.find((r) => r.id === id)!;
     const build = { ok: true, derived: request.source } as unknown as PlantBuild;
-    this.onMessage?.({ data: { kind: 'built', id, build, workerMillis: 1 } } as MessageEvent<BuildResponse>);
+    this.onMessage?.({ data: { kind: 'built', id, build, workerMillis: 1 } } as MessageEvent<WorkerResponse>);
   }
   crash(id = this.requests.at(-1)!.id): void {
-    this.onMessage?.({ data: { kind: 'crashed', id, message: 'RuntimeError: unreachable' } } as MessageEvent<BuildResponse>);
+    this.onMessage?.({ data: { kind: 'crashed', id, message: 'RuntimeError: unreachable' } } as MessageEvent<WorkerResponse>);
+  }
+  /** Answers the last question asked. */
+  reply(answer: InspectAnswer): void {
+    const question = this.messages.filter((m) => m.kind === 'inspect').at(-1)!;
+    this.onMessage?.({ data: { kind: 'inspected', id: question.id, answer } } as MessageEvent<WorkerResponse>);
   }
   fail(): void {
     this.onError?.({ message: 'no module', preventDefault() {} } as ErrorEvent);
@@ -62,7 +71,7 @@ afterEach(() => {
 describe('BuildClient', () => {
   it('delivers a build and its round trip time', async () => {
     const outcome = client.request('A', { iterations: 3 });
-    expect(latest().requests).toEqual([{ id: 1, source: 'A', options: { iterations: 3 } }]);
+    expect(latest().requests).toEqual([{ kind: 'build', id: 1, source: 'A', options: { iterations: 3 } }]);
     clock = 40;
     latest().answer();
     const result = await outcome;
@@ -132,6 +141,44 @@ describe('BuildClient', () => {
     expect(workers).toHaveLength(2);
     latest().answer();
     expect(source(await next)).toBe('fine');
+  });
+
+  it('asks the worker about a kept build, and frees it once', async () => {
+    const outcome = client.request('A', {});
+    latest().answer();
+    const result = await outcome;
+    if (result.kind !== 'built') throw new Error('not built');
+    const hash = result.result.inspector.derivedHash();
+    expect(latest().messages.at(-1)).toEqual({ kind: 'inspect', id: 1, build: 1, question: 'derivedHash', args: [] });
+    latest().reply('00ff00ff00ff00ff');
+    expect(await hash).toBe('00ff00ff00ff00ff');
+    const texts = result.result.inspector.moduleTexts(0, 2);
+    expect(latest().messages.at(-1)).toMatchObject({ question: 'moduleTexts', args: [0, 2] });
+    latest().reply(['F', '+']);
+    expect(await texts).toEqual(['F', '+']);
+    result.result.inspector.free();
+    result.result.inspector.free();
+    expect(latest().messages.filter((m) => m.kind === 'free')).toEqual([{ kind: 'free', build: 1 }]);
+    expect(await result.result.inspector.explain(0)).toBeNull();
+  });
+
+  it('frees the kept build of a superseded request as soon as it arrives', async () => {
+    void client.request('old', {});
+    void client.request('new', {});
+    latest().answer(1);
+    expect(latest().messages).toContainEqual({ kind: 'free', build: 1 });
+  });
+
+  it('answers questions with empty answers once the worker that kept the build is gone', async () => {
+    const outcome = client.request('A', {});
+    latest().answer();
+    const result = await outcome;
+    if (result.kind !== 'built') throw new Error('not built');
+    const open = result.result.inspector.explain(3); // asked, never answered
+    void client.request('B', {});
+    latest().crash();
+    expect(await open).toBeNull();
+    expect(await result.result.inspector.moduleTexts(0, 5)).toEqual([]);
   });
 
   it('reports a worker that fails to start', async () => {

@@ -1,13 +1,14 @@
 // The page's side of the build worker: one request at a time, the newest waiting request only,
 // stale answers never delivered, and a worker stuck on an outdated build replaced.
-import type { BuildOptions, PlantBuild } from '../core';
-import type { BuildRequest, BuildResponse } from './worker-protocol';
+import type { BuildOptions, Explanation, PlantBuild, PlantInspector } from '../core';
+import type { GpuArrays } from '../view/gpu-arrays';
+import type { BuildResponse, InspectAnswer, InspectQuestion, WorkerRequest, WorkerResponse } from './worker-protocol';
 
 /** What the client needs of a Worker (a fake one in unit tests). */
 export interface WorkerLike {
-  postMessage(message: BuildRequest): void;
+  postMessage(message: WorkerRequest): void;
   terminate(): void;
-  addEventListener(type: 'message', listener: (event: MessageEvent<BuildResponse>) => void): void;
+  addEventListener(type: 'message', listener: (event: MessageEvent<WorkerResponse>) => void): void;
   addEventListener(type: 'error', listener: (event: ErrorEvent) => void): void;
 }
 
@@ -16,6 +17,13 @@ export interface BuildResult {
   source: string;
   options: BuildOptions;
   build: PlantBuild;
+  /** The mesh's normals and colours packed for the GPU (for `PlantView.showPlant`). */
+  gpu?: GpuArrays;
+  /**
+   * Questions about this build, answered by the worker, which keeps the core's derivation until
+   * `inspector.free()`: whoever takes the result must free it (or hand it on) when done.
+   */
+  inspector: PlantInspector;
   /** Time of the core call in the worker (its stages are in `build.timings`). */
   workerMillis: number;
   /** From the request to the answer on the page: waiting, building and transferring. */
@@ -71,6 +79,9 @@ export class BuildClient {
   private waiting: Entry | undefined;
   private nextId = 1;
   private abandonTimer: ReturnType<typeof setTimeout> | undefined;
+  /** Open questions to the current worker, by id: each settles with its answer, or its fallback if the worker goes. */
+  private readonly questions = new Map<number, { settle: (answer: InspectAnswer) => void; fallback: InspectAnswer }>();
+  private nextQuestion = 1;
   private readonly abandonAfterMs: number;
   private readonly now: () => number;
   /** Workers started so far (the first one included): more than one means a restart. */
@@ -119,7 +130,14 @@ export class BuildClient {
     const worker = this.createWorker();
     this.workersStarted++;
     worker.addEventListener('message', (event) => {
-      if (worker === this.worker) this.answer(event.data);
+      if (worker !== this.worker) return;
+      const response = event.data;
+      if (response.kind === 'inspected') {
+        this.questions.get(response.id)?.settle(response.answer);
+        this.questions.delete(response.id);
+      } else {
+        this.answer(response);
+      }
     });
     worker.addEventListener('error', (event) => {
       if (worker !== this.worker) return;
@@ -135,6 +153,24 @@ export class BuildClient {
     this.abandonTimer = undefined;
     this.worker?.terminate();
     this.worker = undefined;
+    // The kept builds died with it: open questions get their empty answers.
+    for (const question of this.questions.values()) question.settle(question.fallback);
+    this.questions.clear();
+  }
+
+  /** Asks `worker`'s kept build `build` a question; the fallback if that worker is gone. */
+  ask<T extends InspectAnswer>(worker: WorkerLike, build: number, question: InspectQuestion, args: number[], fallback: T): Promise<T> {
+    if (worker !== this.worker) return Promise.resolve(fallback);
+    const id = this.nextQuestion++;
+    return new Promise<T>((resolve) => {
+      this.questions.set(id, { settle: (answer) => resolve(answer as T), fallback });
+      worker.postMessage({ kind: 'inspect', id, build, question, args });
+    });
+  }
+
+  /** Lets `worker` free its kept build `build` (nothing to do if that worker is gone). */
+  release(worker: WorkerLike, build: number): void {
+    if (worker === this.worker) worker.postMessage({ kind: 'free', build });
   }
 
   private sendWaiting(): void {
@@ -143,7 +179,7 @@ export class BuildClient {
     this.waiting = undefined;
     entry.sentAt = this.now();
     this.running = entry;
-    this.ensureWorker().postMessage({ id: entry.id, source: entry.source, options: entry.options });
+    this.ensureWorker().postMessage({ kind: 'build', id: entry.id, source: entry.source, options: entry.options });
   }
 
   private answer(response: BuildResponse): void {
@@ -153,14 +189,21 @@ export class BuildClient {
     if (this.abandonTimer !== undefined) clearTimeout(this.abandonTimer);
     this.abandonTimer = undefined;
     if (response.kind === 'built') {
-      const result: BuildResult = {
-        source: running.source,
-        options: running.options,
-        build: response.build,
-        workerMillis: response.workerMillis,
-        roundTripMillis: this.now() - running.requestedAt,
-      };
-      this.settle(running, { kind: 'built', result });
+      const worker = this.worker!;
+      if (running.settled) {
+        this.release(worker, response.id); // superseded: nobody will ask it anything
+      } else {
+        const result: BuildResult = {
+          source: running.source,
+          options: running.options,
+          build: response.build,
+          gpu: response.gpu,
+          inspector: new RemoteInspector(this, worker, response.id),
+          workerMillis: response.workerMillis,
+          roundTripMillis: this.now() - running.requestedAt,
+        };
+        this.settle(running, { kind: 'built', result });
+      }
     } else {
       this.settle(running, { kind: 'crashed', message: response.message });
       this.stopWorker(); // its wasm instance may be broken: the next request gets a fresh one
@@ -186,5 +229,38 @@ export class BuildClient {
       this.stopWorker();
       this.sendWaiting();
     }, left);
+  }
+}
+
+/** A {@link PlantInspector} whose build is kept by the worker: each question is a message. */
+class RemoteInspector implements PlantInspector {
+  private freed = false;
+
+  constructor(
+    private readonly client: BuildClient,
+    private readonly worker: WorkerLike,
+    private readonly build: number,
+  ) {}
+
+  explain(production: number): Promise<Explanation | null> {
+    return this.freed ? Promise.resolve(null) : this.client.ask<Explanation | null>(this.worker, this.build, 'explain', [production], null);
+  }
+
+  explainModule(module: number): Promise<Explanation | null> {
+    return this.freed ? Promise.resolve(null) : this.client.ask<Explanation | null>(this.worker, this.build, 'explainModule', [module], null);
+  }
+
+  moduleTexts(start: number, count: number): Promise<string[]> {
+    return this.freed ? Promise.resolve([]) : this.client.ask<string[]>(this.worker, this.build, 'moduleTexts', [start, count], []);
+  }
+
+  derivedHash(): Promise<string> {
+    return this.freed ? Promise.resolve('') : this.client.ask<string>(this.worker, this.build, 'derivedHash', [], '');
+  }
+
+  free(): void {
+    if (this.freed) return;
+    this.freed = true;
+    this.client.release(this.worker, this.build);
   }
 }

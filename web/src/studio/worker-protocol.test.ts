@@ -1,15 +1,17 @@
 import { describe, expect, it } from 'vitest';
 import { readFileSync } from 'node:fs';
 import { buildPlant, initCore } from '../core';
-import { transferablesOf } from './worker-protocol';
+import { packForGpu } from '../view/gpu-arrays';
+import { answerTransferables, transferablesOf } from './worker-protocol';
 
 await initCore(readFileSync(new URL('../../../crate/pkg/meristem_bg.wasm', import.meta.url)));
 
 describe('transferablesOf', () => {
   it('lists the buffer of every array of a build once, and moving them leaves nothing behind', () => {
     const build = buildPlant('#iterations 2\naxiom: X\nX -> F[+X]F[-X]+X\nF -> FF');
-    const buffers = transferablesOf(build);
-    const arrays = [...Object.values(build.mesh), build.origins].filter((a) => a.byteLength > 0);
+    const gpu = packForGpu(build.mesh);
+    const buffers = transferablesOf(build, gpu);
+    const arrays = [...Object.values(build.mesh), build.origins, gpu.normals, gpu.colors].filter((a) => a.byteLength > 0);
     expect(arrays.length).toBeGreaterThanOrEqual(6);
     for (const array of arrays) expect(buffers).toContain(array.buffer);
     expect(new Set(buffers).size).toBe(buffers.length);
@@ -17,5 +19,16 @@ describe('transferablesOf', () => {
     const moved = structuredClone(build, { transfer: buffers });
     expect(moved.mesh.positions.length).toBeGreaterThan(0);
     expect(build.mesh.positions.length).toBe(0);
+  });
+});
+
+describe('answerTransferables', () => {
+  it('moves an explanation’s module lists, and nothing for other answers', () => {
+    const lists = [new Uint32Array([1, 2]), new Uint32Array([3]), new Uint32Array(0)];
+    const explanation = { production: 0, fired: 1, contextMatched: 1, conditionFailed: 0, produced: lists[0], leftContext: lists[1], rightContext: lists[2] };
+    expect(answerTransferables(explanation)).toEqual([lists[0].buffer, lists[1].buffer]);
+    expect(answerTransferables(['F'])).toEqual([]);
+    expect(answerTransferables(null)).toEqual([]);
+    expect(answerTransferables('abc')).toEqual([]);
   });
 });

@@ -1,21 +1,35 @@
-// The messages between the page and the build worker (worker.ts), and the transfer list that
-// moves a build's typed arrays out of the worker without copying them.
-import type { BuildOptions, PlantBuild } from '../core';
+// The messages between the page and the build worker (worker.ts), and the transfer lists that move
+// typed arrays out of the worker without copying them.
+import type { BuildOptions, Explanation, PlantBuild } from '../core';
+import type { GpuArrays } from '../view/gpu-arrays';
 
-/** Page → worker: build `source` with `options`; `id` ties the answer to the request. */
-export interface BuildRequest {
-  id: number;
-  source: string;
-  options: BuildOptions;
-}
+/** The questions a kept build answers (the methods of `PlantInspector`). */
+export type InspectQuestion = 'explain' | 'explainModule' | 'moduleTexts' | 'derivedHash';
 
-/** Worker → page: the answer to request `id`. */
-export type BuildResponse =
+/** Page → worker. */
+export type WorkerRequest =
+  /** Build `source` with `options`; `id` ties the answer to the request and names the kept build. */
+  | { kind: 'build'; id: number; source: string; options: BuildOptions }
+  /** Ask kept build `build` a question; `id` ties the answer to it. */
+  | { kind: 'inspect'; id: number; build: number; question: InspectQuestion; args: number[] }
+  /** Release kept build `build`. */
+  | { kind: 'free'; build: number };
+
+/** The build request alone. */
+export type BuildRequest = Extract<WorkerRequest, { kind: 'build' }>;
+
+/** What an inspect question answers. */
+export type InspectAnswer = Explanation | null | string[] | string;
+
+/** Worker → page. */
+export type WorkerResponse =
   | {
       kind: 'built';
       id: number;
       build: PlantBuild;
-      /** Time of `buildPlant` inside the worker, copying the arrays out of wasm memory included. */
+      /** The mesh's normals and colours packed for the GPU (the view sends these, not the floats). */
+      gpu: GpuArrays;
+      /** Time of the core call inside the worker, copying the arrays out of wasm memory included. */
       workerMillis: number;
     }
   | {
@@ -23,15 +37,30 @@ export type BuildResponse =
       kind: 'crashed';
       id: number;
       message: string;
-    };
+    }
+  | { kind: 'inspected'; id: number; answer: InspectAnswer };
 
-/**
- * The buffers of every typed array in `build`, each once: posting the build with this transfer
- * list moves them to the other side (no copy) and leaves them detached (length 0) here.
- */
-export function transferablesOf(build: PlantBuild): ArrayBuffer[] {
-  const arrays = [...Object.values(build.mesh), build.origins];
+/** The build answer alone. */
+export type BuildResponse = Extract<WorkerResponse, { kind: 'built' | 'crashed' }>;
+
+/** The distinct non-empty buffers of `arrays`. */
+function buffersOf(arrays: readonly ArrayBufferView[]): ArrayBuffer[] {
   const buffers = new Set<ArrayBuffer>();
   for (const array of arrays) if (array.buffer instanceof ArrayBuffer && array.buffer.byteLength > 0) buffers.add(array.buffer);
   return [...buffers];
+}
+
+/**
+ * The buffers of every typed array in `build` (and `gpu`), each once: posting them with this transfer
+ * list moves them to the other side (no copy) and leaves them detached (length 0) here.
+ */
+export function transferablesOf(build: PlantBuild, gpu?: GpuArrays): ArrayBuffer[] {
+  return buffersOf([...Object.values(build.mesh), build.origins, ...(gpu ? [gpu.normals, gpu.colors] : [])]);
+}
+
+/** The buffers of an inspect answer (an explanation's module lists), for its transfer list. */
+export function answerTransferables(answer: InspectAnswer): ArrayBuffer[] {
+  return answer !== null && typeof answer === 'object' && !Array.isArray(answer)
+    ? buffersOf([answer.produced, answer.leftContext, answer.rightContext])
+    : [];
 }

@@ -1,23 +1,75 @@
 // The build worker: runs the core (parse → resolve → derive → interpret → mesh) off the page's
 // main thread, so typing never waits for a big plant. It initialises its own WebAssembly
-// instance and answers each BuildRequest in order, moving the typed arrays back in a transfer
-// list. Started by createBuildWorker (worker-client.ts).
-import { buildPlant, initCore } from '../core';
-import { transferablesOf, type BuildRequest, type BuildResponse } from './worker-protocol';
+// instance and answers each request in order: builds, whose typed arrays go back in a transfer
+// list, and questions about a kept build (the context-sensitivity view's explanations and the
+// derived-string panel's module texts), until the page frees it. Started by createBuildWorker
+// (worker-client.ts).
+import { initCore, inspectPlant, type PlantInspector } from '../core';
+import { packForGpu } from '../view/gpu-arrays';
+import { answerTransferables, transferablesOf, type InspectAnswer, type WorkerRequest, type WorkerResponse } from './worker-protocol';
+
+/** Kept builds at most: the page frees what it does not show, this only bounds a leak. */
+const MAX_KEPT = 4;
 
 const ready = initCore();
+const kept = new Map<number, PlantInspector>();
 
-function reply(response: BuildResponse, transfer: Transferable[] = []): void {
+function reply(response: WorkerResponse, transfer: Transferable[] = []): void {
   postMessage(response, { transfer });
 }
 
-addEventListener('message', async (event: MessageEvent<BuildRequest>) => {
-  const { id, source, options } = event.data;
+function keep(id: number, inspector: PlantInspector): void {
+  kept.set(id, inspector);
+  for (const [oldest, old] of kept) {
+    if (kept.size <= MAX_KEPT) break;
+    old.free();
+    kept.delete(oldest);
+  }
+}
+
+async function answer(inspector: PlantInspector | undefined, question: string, args: number[]): Promise<InspectAnswer> {
+  switch (question) {
+    case 'explain':
+      return inspector ? inspector.explain(args[0]) : null;
+    case 'explainModule':
+      return inspector ? inspector.explainModule(args[0]) : null;
+    case 'moduleTexts':
+      return inspector ? inspector.moduleTexts(args[0], args[1]) : [];
+    default:
+      return inspector ? inspector.derivedHash() : '';
+  }
+}
+
+addEventListener('message', async (event: MessageEvent<WorkerRequest>) => {
+  const request = event.data;
   try {
     await ready;
+  } catch (error) {
+    if (request.kind === 'build') reply({ kind: 'crashed', id: request.id, message: `the core could not start: ${String(error)}` });
+    return;
+  }
+  if (request.kind === 'free') {
+    kept.get(request.build)?.free();
+    kept.delete(request.build);
+    return;
+  }
+  if (request.kind === 'inspect') {
+    let result: InspectAnswer = request.question === 'moduleTexts' ? [] : request.question === 'derivedHash' ? '' : null;
+    try {
+      result = await answer(kept.get(request.build), request.question, request.args);
+    } catch (error) {
+      console.error('Meristem core failed to answer', request.question, error);
+    }
+    reply({ kind: 'inspected', id: request.id, answer: result }, answerTransferables(result));
+    return;
+  }
+  const { id, source, options } = request;
+  try {
     const start = performance.now();
-    const build = buildPlant(source, options);
-    reply({ kind: 'built', id, build, workerMillis: performance.now() - start }, transferablesOf(build));
+    const { build, inspector } = inspectPlant(source, options);
+    keep(id, inspector);
+    const gpu = packForGpu(build.mesh);
+    reply({ kind: 'built', id, build, gpu, workerMillis: performance.now() - start }, transferablesOf(build, gpu));
   } catch (error) {
     reply({ kind: 'crashed', id, message: error instanceof Error ? `${error.name}: ${error.message}` : String(error) });
   }

@@ -20,7 +20,8 @@ export function framePose(box: Box3, fovDeg: number, aspect: number): CameraPose
   const radius = sphere.radius > 1e-6 ? sphere.radius : 1;
   const vertical = MathUtils.degToRad(fovDeg);
   const horizontal = 2 * Math.atan(Math.tan(vertical / 2) * aspect);
-  const distance = (radius / Math.sin(Math.min(vertical, horizontal) / 2)) * 0.92;
+  // The bounding sphere just fits: a tall thin plant touches the top and bottom, never leaves them.
+  const distance = radius / Math.sin(Math.min(vertical, horizontal) / 2);
 
   const size = box.isEmpty() ? new Vector3(1, 1, 1) : box.getSize(new Vector3());
   const across = size.z <= size.x ? new Vector3(0.25, 0.18, 1) : new Vector3(1, 0.18, -0.25);

@@ -3,5 +3,6 @@
 export { PlantView, type Projection, type ProjectionMode } from './plant-view';
 export { ThumbnailRenderer } from './thumbnail';
 export { plantGeometry, lineGeometry, pointsBox } from './plant-geometry';
+export { packForGpu, type GpuArrays } from './gpu-arrays';
 export { framePose, flatPose, type CameraPose, type FlatPose } from './framing';
 export { scenePalette, type ScenePalette } from './palette';

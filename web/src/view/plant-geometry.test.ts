@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import type { MeshBuffers } from '../core';
+import { packForGpu } from './gpu-arrays';
 import { plantGeometry, pointsBox } from './plant-geometry';
 
 /** A strip of `quads` quads (2 triangles each) along x: vertices 2k, 2k+1 at x = k. */
@@ -29,5 +30,25 @@ describe('pointsBox', () => {
     expect(box.min.toArray()).toEqual([-1, 2, 0]);
     expect(box.max.toArray()).toEqual([1, 5, 3]);
     expect(pointsBox(new Float32Array(0)).isEmpty()).toBe(true);
+  });
+});
+
+describe('packForGpu', () => {
+  it('packs unit normals to 16 bits and colours to 8 bits, within a rounding step', () => {
+    const mesh = strip(4);
+    mesh.normals.set([0, 0, 1, 0.6, -0.8, 0, -1, 0, 0]);
+    mesh.colors.set([0.5, 0.25, 1, 0, 0.0031, 2]);
+    const gpu = packForGpu(mesh);
+    expect(gpu.normals).toBeInstanceOf(Int16Array);
+    expect(Array.from(gpu.normals.slice(0, 9))).toEqual([0, 0, 32767, 19660, -26214, 0, -32767, 0, 0]);
+    expect(Array.from(gpu.colors.slice(0, 6))).toEqual([128, 64, 255, 0, 1, 255]);
+    for (let i = 0; i < 9; i++) expect(Math.abs(gpu.normals[i] / 32767 - mesh.normals[i])).toBeLessThan(1e-4);
+  });
+
+  it('gives plantGeometry normalized attributes', () => {
+    const mesh = strip(2);
+    const geometry = plantGeometry(mesh, packForGpu(mesh));
+    expect(geometry.getAttribute('normal').normalized).toBe(true);
+    expect(geometry.getAttribute('color').array).toBeInstanceOf(Uint8Array);
   });
 });

@@ -1,18 +1,20 @@
 // The plant's triangle mesh as three.js BufferGeometries.
 import { Box3, BufferAttribute, BufferGeometry, Sphere, Vector3 } from 'three';
 import type { MeshBuffers } from '../core';
+import type { GpuArrays } from './gpu-arrays';
 
 /**
  * Wraps the core's mesh arrays (no copy: they are JavaScript-owned already) in a BufferGeometry
  * with `position`, `normal`, `color` (linear RGB) attributes and an index, bounds computed (the
- * sphere from the box: one pass over a million vertices instead of three).
+ * sphere from the box: one pass over a million vertices instead of three). With `gpu`, its packed
+ * normals and colours are used instead of the mesh's floats.
  */
-export function plantGeometry(mesh: MeshBuffers): BufferGeometry {
+export function plantGeometry(mesh: MeshBuffers, gpu?: GpuArrays): BufferGeometry {
   const geometry = new BufferGeometry();
   if (mesh.indices.length === 0 && mesh.lines.length > 0) return lineGeometry(mesh);
   geometry.setAttribute('position', new BufferAttribute(mesh.positions, 3));
-  geometry.setAttribute('normal', new BufferAttribute(mesh.normals, 3));
-  geometry.setAttribute('color', new BufferAttribute(mesh.colors, 3));
+  geometry.setAttribute('normal', gpu ? new BufferAttribute(gpu.normals, 3, true) : new BufferAttribute(mesh.normals, 3));
+  geometry.setAttribute('color', gpu ? new BufferAttribute(gpu.colors, 3, true) : new BufferAttribute(mesh.colors, 3));
   geometry.setIndex(new BufferAttribute(mesh.indices, 1));
   setBounds(geometry, mesh.positions);
   return geometry;

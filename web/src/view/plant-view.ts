@@ -2,15 +2,20 @@
 // one for flat plants, an optional ground grid; renders on demand.
 import {
   Box3,
+  BufferAttribute,
   BufferGeometry,
+  DoubleSide,
   GridHelper,
   LineBasicMaterial,
   LineSegments,
   Material,
   Mesh,
+  MeshStandardMaterial,
   OrthographicCamera,
   PerspectiveCamera,
+  Raycaster,
   Scene,
+  Vector2,
   WebGLRenderer,
   type Camera,
 } from 'three';
@@ -19,9 +24,12 @@ import type { MeshBuffers } from '../core';
 import { flatPose, framePose } from './framing';
 import { scenePalette } from './palette';
 import { plantGeometry } from './plant-geometry';
+import type { GpuArrays } from './gpu-arrays';
 import { addHeadlight, addSkyLight, litPlantMaterial, unlitPlantMaterial } from './scene-setup';
+import { highlightOverlay, moduleOfTriangle, type Rgb } from './highlight';
 
 const DARK_SCHEME = '(prefers-color-scheme: dark)';
+
 
 /** `perspective`: orbit in 3D; `orthographic`: the XY plane face-on (2D), pan and zoom only. */
 export type Projection = 'perspective' | 'orthographic';
@@ -57,6 +65,22 @@ export class PlantView {
   private readonly lines = new LineSegments(new BufferGeometry(), new LineBasicMaterial({ vertexColors: true }));
   private grid: GridHelper | undefined;
   private gridVisible = true;
+  /** The mesh on screen (its own colours and provenance ranges), for highlighting and picking. */
+  private mesh: MeshBuffers | undefined;
+  private readonly raycaster = new Raycaster();
+  /** Highlighted modules, drawn over the plant (which is dimmed meanwhile). */
+  private readonly overlay = new Mesh(
+    new BufferGeometry(),
+    new MeshStandardMaterial({
+      vertexColors: true,
+      side: DoubleSide,
+      roughness: 0.7,
+      metalness: 0,
+      polygonOffset: true,
+      polygonOffsetFactor: -1,
+      polygonOffsetUnits: -1,
+    }),
+  );
   private mode: ProjectionMode = 'auto';
   /** The plant on screen lies in the plane z = 0. */
   private flat = false;
@@ -79,7 +103,7 @@ export class PlantView {
     this.orthographic.controls.enableRotate = false; // a 2D view pans and zooms
     this.active = this.perspective;
     this.perspective.controls.enabled = true;
-    this.scene.add(this.perspective.camera, this.plant, this.lines);
+    this.scene.add(this.perspective.camera, this.plant, this.lines, this.overlay);
     this.container.dataset.projection = 'perspective';
 
     this.applyPalette();
@@ -117,15 +141,25 @@ export class PlantView {
    * Replaces the plant; `flat` says it lies in the plane z = 0 (in `auto` mode it is then shown
    * face-on in 2D). A camera is framed on its first plant (and after {@link frameNextPlant});
    * later plants keep the camera where it is.
+   * `gpu`, when given, holds the normals and colours packed smaller for the GPU (from
+   * {@link packForGpu}, done in the worker): a big plant reaches the GPU in less time.
    */
-  showPlant(mesh: MeshBuffers, flat = false): void {
+  showPlant(mesh: MeshBuffers, flat = false, gpu?: GpuArrays): void {
     const asLines = mesh.indices.length === 0 && mesh.lines.length > 0;
+    this.mesh = asLines ? undefined : mesh;
+    this.swapIn(mesh, flat, asLines ? undefined : plantGeometry(mesh, gpu));
+  }
+
+  /** Puts `mesh` (its `geometry`, or its lines) on screen in place of the old plant. */
+  private swapIn(mesh: MeshBuffers, flat: boolean, geometry: BufferGeometry | undefined): void {
+    const asLines = geometry === undefined;
     const oldMesh = this.plant.geometry;
     const oldLines = this.lines.geometry;
-    this.plant.geometry = asLines ? new BufferGeometry() : plantGeometry(mesh);
+    this.plant.geometry = geometry ?? new BufferGeometry();
     this.lines.geometry = asLines ? plantGeometry(mesh) : new BufferGeometry();
     oldMesh.dispose();
     oldLines.dispose();
+    this.colourModules(null);
     const hasGeometry = mesh.indices.length > 0 || asLines;
     if (hasGeometry && this.frameNext) {
       this.frameNext = false;
@@ -136,6 +170,47 @@ export class PlantView {
     this.useProjection(this.wantedProjection(), hasGeometry);
     if (hasGeometry && !this.active.framed) this.frame();
     this.requestRender();
+  }
+
+  /**
+   * Paints the triangles of the modules `colourOf` names in its colour and dims the rest; `null`
+   * restores the plant's own colours. (The line fallback of huge models is not highlighted.)
+   */
+  colourModules(colourOf: ((module: number) => Rgb | null) | null): void {
+    const mesh = this.mesh;
+    const old = this.overlay.geometry;
+    this.overlay.geometry = new BufferGeometry();
+    old.dispose();
+    let dim = 1;
+    if (mesh && colourOf) {
+      const overlay = highlightOverlay(mesh, colourOf);
+      const geometry = this.overlay.geometry;
+      geometry.setAttribute('position', new BufferAttribute(overlay.positions, 3));
+      geometry.setAttribute('normal', new BufferAttribute(overlay.normals, 3));
+      geometry.setAttribute('color', new BufferAttribute(overlay.colors, 3));
+      geometry.computeBoundingSphere();
+      dim = 0.55; // dim the rest
+    }
+    this.lit.color.setScalar(dim);
+    this.unlit.color.setScalar(dim);
+    this.requestRender();
+  }
+
+  /** The module of the derived string drawn at a point of the page, or null (nothing there). */
+  pickModule(clientX: number, clientY: number): number | null {
+    const mesh = this.mesh;
+    if (!mesh) return null;
+    const rect = this.renderer.domElement.getBoundingClientRect();
+    const ndc = new Vector2(((clientX - rect.left) / rect.width) * 2 - 1, -((clientY - rect.top) / rect.height) * 2 + 1);
+    this.raycaster.setFromCamera(ndc, this.active.camera);
+    const hit = this.raycaster.intersectObject(this.plant, false)[0];
+    if (!hit || hit.faceIndex == null) return null;
+    return moduleOfTriangle(mesh.ranges, hit.faceIndex);
+  }
+
+  /** The canvas, for pointer events. */
+  get canvas(): HTMLCanvasElement {
+    return this.renderer.domElement;
   }
 
   /** Frames the camera on the next plant shown (e.g. after another example was opened). */
@@ -205,6 +280,44 @@ export class PlantView {
     this.requestRender();
   }
 
+  /**
+   * A PNG of the current view at `width` × `height` pixels: the same camera, lights and
+   * background, the aspect ratio of the picture (the vertical field of view, or the orthographic
+   * height, is kept). The canvas is drawn at that size for one frame and restored before the page
+   * paints again.
+   */
+  async snapshot(width: number, height: number): Promise<Blob> {
+    const canvas = this.renderer.domElement;
+    const pixelRatio = this.renderer.getPixelRatio();
+    const camera = this.active.camera;
+    let blob: Promise<Blob | null>;
+    try {
+      this.renderer.setPixelRatio(1);
+      this.renderer.setSize(width, height, false);
+      if (camera instanceof PerspectiveCamera) camera.aspect = width / height;
+      else [camera.left, camera.right] = [-camera.top * (width / height), camera.top * (width / height)];
+      camera.updateProjectionMatrix();
+      this.renderer.render(this.scene, camera);
+      // toBlob copies the bitmap now (preserveDrawingBuffer keeps it); encoding finishes later.
+      blob = new Promise((resolve) => canvas.toBlob(resolve, 'image/png'));
+    } finally {
+      this.renderer.setPixelRatio(pixelRatio);
+      this.resize();
+      this.renderer.render(this.scene, camera);
+    }
+    const png = await blob;
+    if (!png) throw new Error(`the browser could not encode a ${width} × ${height} PNG`);
+    return png;
+  }
+
+  /** The largest picture side the GPU can draw (its renderbuffer and viewport limits). */
+  maxPictureSide(): number {
+    const gl = this.renderer.getContext();
+    const viewport = gl.getParameter(gl.MAX_VIEWPORT_DIMS) as Int32Array;
+    const renderbuffer = gl.getParameter(gl.MAX_RENDERBUFFER_SIZE) as number;
+    return Math.min(viewport[0], viewport[1], renderbuffer);
+  }
+
   /** Shows or hides the ground grid. */
   setGridVisible(visible: boolean): void {
     this.gridVisible = visible;
@@ -236,6 +349,8 @@ export class PlantView {
     this.perspective.controls.dispose();
     this.orthographic.controls.dispose();
     this.plant.geometry.dispose();
+    this.overlay.geometry.dispose();
+    this.overlay.material.dispose();
     this.lines.geometry.dispose();
     this.lines.material.dispose();
     this.lit.dispose();

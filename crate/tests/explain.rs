@@ -1,0 +1,154 @@
+//! The explanation of a production (the studio's context-sensitivity view): which modules it
+//! rewrote in the last step, which modules served as its contexts, and the counts, checked by hand.
+
+use meristem::{build, BuildOptions};
+
+/// Explains production `p` of `source` after `n` steps: (produced, left, right, rewritten, left
+/// and right in the previous string, context matched, condition failed).
+fn explain(source: &str, n: u32, p: u32) -> meristem::pipeline::Explained {
+    let b = build(
+        source,
+        &BuildOptions {
+            iterations: Some(n),
+            ..BuildOptions::default()
+        },
+    );
+    assert!(b.ok(), "{:?}", b.diagnostics);
+    b.explain(p)
+        .expect("a step was taken")
+        .expect("no runtime error")
+}
+
+#[test]
+fn the_signal_of_section_1_8_is_rewritten_by_its_left_context() {
+    let source = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../public/examples/abop-sec-1.8-signal.lsys"
+    ))
+    .unwrap();
+    // Step 3 is aaabaaaaa; step 4 is aaaabaaaa. `b < a -> b` rewrote the a at 4, seeing the b at 3.
+    let e = explain(&source, 4, 0);
+    assert_eq!(e.explanation.rewritten, [4]);
+    assert_eq!(e.explanation.left, [3]);
+    assert!(e.explanation.right.is_empty());
+    assert_eq!(e.explanation.context_matched, 1);
+    assert_eq!(e.explanation.condition_failed, 0);
+    assert_eq!(e.produced, [4]);
+    // The b at 3 became an a, still at 3.
+    assert_eq!(e.left, [3]);
+    // `b -> a` rewrote the b at 3 (no context).
+    let e = explain(&source, 4, 1);
+    assert_eq!(e.explanation.rewritten, [3]);
+    assert_eq!(e.explanation.context_matched, 1);
+    assert!(e.explanation.left.is_empty() && e.left.is_empty());
+}
+
+#[test]
+fn conditions_are_counted_apart_from_contexts() {
+    let e = explain("axiom: A(1)A(2)A(3)\nA(x) < A(y) : y > 2 -> B(x+y)", 1, 0);
+    // A(2) and A(3) have a left A; only A(3) passes the condition.
+    assert_eq!(e.explanation.context_matched, 2);
+    assert_eq!(e.explanation.condition_failed, 1);
+    assert_eq!(e.explanation.rewritten, [2]);
+    assert_eq!(e.explanation.left, [1]);
+    assert_eq!(e.produced, [2]);
+}
+
+#[test]
+fn contexts_skip_branches_as_in_abop_and_are_found_inside_them() {
+    // H's left neighbour on the path to the root is F: the branch [G] is skipped.
+    let e = explain("axiom: F[G]H\nF < H -> X", 1, 0);
+    assert_eq!(e.explanation.rewritten, [4]);
+    assert_eq!(e.explanation.left, [0]);
+    // A right context that names a branch is matched inside it: A > [B]C sees B at 2 and C at 4.
+    let e = explain("axiom: A[B]C\nA > [B]C -> X", 1, 0);
+    assert_eq!(e.explanation.rewritten, [0]);
+    assert_eq!(e.explanation.right, [2, 4]);
+    // In the new string X[B]C the right context's descendants are B and C.
+    assert_eq!(e.right, [2, 4]);
+}
+
+#[test]
+fn a_production_that_erases_is_explained_from_matching() {
+    // `A > B -> ε` erases the A before B; the first A has no B on its right.
+    let e = explain("axiom: AAB\nA > B ->", 1, 0);
+    assert_eq!(e.explanation.rewritten, [1]);
+    assert_eq!(e.explanation.right, [2]);
+    assert!(e.produced.is_empty());
+    assert_eq!(e.right, [1]); // B is now at 1
+}
+
+#[test]
+fn stochastic_choices_are_the_ones_the_derivation_made() {
+    let source = "#seed 7\naxiom: FFFFFFFFFFFFFFFFFFFF\nF -> (1) A\nF -> (1) B";
+    let b = build(
+        source,
+        &BuildOptions {
+            iterations: Some(1),
+            ..BuildOptions::default()
+        },
+    );
+    let text = b.derived_text();
+    let a = b.explain(0).unwrap().unwrap();
+    let expected: Vec<u32> = text
+        .char_indices()
+        .filter(|(_, c)| *c == 'A')
+        .map(|(i, _)| i as u32)
+        .collect();
+    assert!(!expected.is_empty() && expected.len() < 20, "{text}");
+    assert_eq!(a.explanation.rewritten, expected);
+    assert_eq!(a.produced, expected);
+    assert_eq!(a.explanation.context_matched, 20);
+}
+
+#[test]
+fn nothing_to_explain_before_the_first_step() {
+    let b = build("axiom: A\nA -> B", &BuildOptions::default());
+    assert!(b.explain(0).is_none());
+}
+
+#[test]
+fn a_module_is_explained_by_the_one_rewriting_that_made_it() {
+    // Two signals: b at 0 and b at 3 of "babbaa"... keep it plain: A(x) < B -> C(x) twice.
+    let source = "axiom: A(1)BA(2)B\nA(x) < B -> C(x)D";
+    let b = build(
+        source,
+        &BuildOptions {
+            iterations: Some(1),
+            ..BuildOptions::default()
+        },
+    );
+    assert_eq!(b.derived_text(), "A(1)C(1)DA(2)C(2)D");
+    // C(2) at 4 came from the B at 3, whose left context is A(2) at 2 (now at 3).
+    let e = b.explain_module(4).unwrap().unwrap();
+    assert_eq!(e.explanation.production, 0);
+    assert_eq!(e.explanation.rewritten, [3]);
+    assert_eq!(e.explanation.left, [2]);
+    assert_eq!(e.produced, [4, 5]);
+    assert_eq!(e.left, [3]);
+    // The counts still cover the whole string.
+    assert_eq!(e.explanation.context_matched, 2);
+    // A copied module has nothing to explain.
+    assert!(b.explain_module(0).is_none());
+}
+
+#[test]
+fn the_fingerprint_tells_derivations_apart_and_repeats_for_equal_ones() {
+    let run = |source: &str, seed: u64| {
+        let b = build(
+            source,
+            &BuildOptions {
+                seed: Some(seed),
+                ..BuildOptions::default()
+            },
+        );
+        b.string.fingerprint(&b.model.as_ref().unwrap().alphabet)
+    };
+    let stochastic = "#iterations 4\naxiom: F\nF -> (1) F[+F]F\nF -> (1) F[-F]F";
+    assert_eq!(run(stochastic, 5), run(stochastic, 5));
+    assert_ne!(run(stochastic, 5), run(stochastic, 6));
+    // Parameters count, to the bit.
+    assert_ne!(run("axiom: A(1)", 1), run("axiom: A(1.0000001)", 1));
+    // Interning order does not: the same string from differently ordered grammars.
+    assert_eq!(run("axiom: AB", 1), run("#module B\naxiom: AB", 1));
+}

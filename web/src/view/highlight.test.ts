@@ -1,0 +1,41 @@
+import { describe, expect, it } from 'vitest';
+import type { MeshBuffers } from '../core';
+import { highlightOverlay, moduleOfTriangle } from './highlight';
+
+/** Three triangles over five vertices: triangles 0-1 from module 7, triangle 2 from module 9. */
+function mesh(): MeshBuffers {
+  return {
+    positions: new Float32Array(15),
+    normals: new Float32Array(15),
+    colors: new Float32Array([0.2, 0.4, 0.6, 0.2, 0.4, 0.6, 0.2, 0.4, 0.6, 0.2, 0.4, 0.6, 0.2, 0.4, 0.6]),
+    indices: new Uint32Array([0, 1, 2, 1, 3, 2, 3, 4, 2]),
+    ranges: new Uint32Array([0, 7, 2, 9]),
+    lines: new Float32Array(0),
+    lineColors: new Float32Array(0),
+  };
+}
+
+describe('moduleOfTriangle', () => {
+  it('finds the range a triangle falls in', () => {
+    const ranges = new Uint32Array([0, 7, 2, 9, 10, 4]);
+    expect([0, 1, 2, 9, 10, 500].map((t) => moduleOfTriangle(ranges, t))).toEqual([7, 7, 9, 9, 4, 4]);
+    expect(moduleOfTriangle(new Uint32Array(0), 0)).toBeNull();
+  });
+});
+
+describe('highlightOverlay', () => {
+  it('copies the triangles of the chosen modules with their colour, and only those', () => {
+    const m = mesh();
+    m.positions = Float32Array.from({ length: 15 }, (_, i) => i);
+    const overlay = highlightOverlay(m, (module) => (module === 9 ? [1, 0, 0] : null));
+    // Module 9 drew triangle 2 = vertices 3, 4, 2.
+    expect(Array.from(overlay.positions)).toEqual([9, 10, 11, 12, 13, 14, 6, 7, 8]);
+    expect(Array.from(overlay.colors)).toEqual([1, 0, 0, 1, 0, 0, 1, 0, 0]);
+    expect(overlay.normals.length).toBe(9);
+    const both = highlightOverlay(m, (module) => (module === 7 ? [0, 1, 0] : [0, 0, 1]));
+    expect(both.positions.length).toBe(27);
+    expect(Array.from(both.colors.slice(0, 3))).toEqual([0, 1, 0]);
+    expect(Array.from(both.colors.slice(18, 21))).toEqual([0, 0, 1]);
+    expect(highlightOverlay(m, () => null).positions.length).toBe(0);
+  });
+});
