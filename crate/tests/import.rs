@@ -1,8 +1,9 @@
 //! The importers on real files: every file under `tests/import/` (Lparser `.ls` files from the
-//! Lparser distribution) is imported; the output must parse and resolve without errors and carry
-//! exactly the expected notes. Known files are then derived and compared with an independent
-//! model of Lparser 2.1's own rewriting and turtle (`L_system`, `L_draw`) that the translation
-//! must draw segment for segment.
+//! Lparser distribution, Green's worked example) is imported; the output must parse and resolve without
+//! errors and carry exactly the expected notes. Known files are then derived and compared with
+//! what the other tool gives: Green's published step, and, for Lparser, an independent model of
+//! Lparser 2.1's own rewriting and turtle (`L_system`, `L_draw`) that the translation must draw
+//! segment for segment.
 
 use meristem::import::{self, Dialect, Import};
 use meristem::model::LString;
@@ -43,6 +44,19 @@ fn import_file(relative: &str) -> Import {
 type Notes = &'static [(usize, &'static str)];
 
 const EXPECTED: &[(&str, Dialect, Notes)] = &[
+    (
+        "green/worked-example.txt",
+        Dialect::Green,
+        &[(0, "how many steps"), (8, "p<0.4 (line 7) and p>0.4")],
+    ),
+    (
+        "green/random-variables.txt",
+        Dialect::Green,
+        &[
+            (0, "how many steps"),
+            (3, "standard deviation or a variance"),
+        ],
+    ),
     (
         "lparser/abop-bush.ls",
         Dialect::Lparser,
@@ -566,6 +580,43 @@ fn lparser_translations_keep_lparsers_string_symbol_for_symbol() {
 }
 
 // ------------------------------------------------------------------------------------------------
+// Green: the paper's worked example.
+
+fn derive(result: &Import, iterations: Option<u32>, seed: Option<u64>) -> Build {
+    let b = build(
+        &result.text,
+        &BuildOptions {
+            iterations,
+            seed,
+            ..BuildOptions::default()
+        },
+    );
+    assert!(b.ok(), "{:?}\n{}", b.diagnostics, result.text);
+    b
+}
+
+#[test]
+fn greens_worked_example_derives_to_the_published_step() {
+    // Lluch et al.: "A(1)B(3)A(5) => A(2)B(6)[A(3)]B(4)" when the first rule is drawn for A(1)
+    // and the second for A(5); seed 3 (as public/examples/green-context.lsys) draws exactly so.
+    let result = import_file("green/worked-example.txt");
+    let b = derive(&result, None, Some(3));
+    assert_eq!(b.iterations, 1);
+    assert_eq!(b.derived_text(), "A(2)B(6)[A(3)]B(4)");
+    // Other seeds give Green's other outcomes: each A becomes A(x+1) or B(x-1), and B(3) always
+    // becomes B(6)[A(3)] when both its neighbours are still A.
+    let mut outcomes = std::collections::BTreeSet::new();
+    for seed in 0..64 {
+        outcomes.insert(derive(&result, None, Some(seed)).derived_text());
+    }
+    assert!(outcomes.len() >= 3, "{outcomes:?}");
+    for o in &outcomes {
+        assert!(o.starts_with("A(2)") || o.starts_with("B(0)"), "{o}");
+        assert!(o.contains("B(6)[A(3)]"), "{o}");
+    }
+}
+
+// ------------------------------------------------------------------------------------------------
 // No input makes an importer panic, and what it gives either resolves or has nothing to derive.
 
 use proptest::prelude::*;
@@ -576,6 +627,7 @@ proptest! {
     fn importers_never_panic_and_their_text_resolves(
         prefix in prop::sample::select(vec![
             "",
+            "SYSTEM\nDECLARATIONS\nCONTINUOUS p UNIFORM(0,1)\nAXIOM\nA(1)\nRULES\n",
             "3\n30\n10\nA\n",
             "recursion 3\nangle 20\naxiom A\nrule A = ",
         ]),

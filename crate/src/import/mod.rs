@@ -1,12 +1,13 @@
 //! Importers: other L-system notations translated into Meristem's language (text in, text out),
 //! with a note for every construct that could not be translated, at its line.
 //!
-//! One module per dialect: [`lparser`] (Laurens Lapré's Lparser `.ls`, positional and keyword
-//! formats). Each builds its output with an [`Output`], whose [`Output::finish`] checks the text
+//! One module per dialect: [`green`] (Green's RL-systems), [`lparser`] (Laurens Lapré's Lparser
+//! `.ls`, positional and keyword formats). Each builds its output with an [`Output`], whose [`Output::finish`] checks the text
 //! with Meristem's own parser and resolver: a line Meristem rejects is commented out and reported,
 //! so an import never hands the editor a grammar with errors unless it has no axiom at all.
 //! Like the rest of the core, nothing here does IO or panics on any input.
 
+mod green;
 mod lparser;
 
 use crate::diagnostics::{has_errors, LineIndex, Severity};
@@ -16,17 +17,20 @@ use serde::Serialize;
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Dialect {
+    /// Green's RL-systems: `SYSTEM DECLARATIONS AXIOM RULES END.` (Lluch et al.).
+    Green,
     /// Laurens Lapré's Lparser `.ls`, the positional (1.x-4.x) and the keyword (2.x) format.
     Lparser,
 }
 
 impl Dialect {
     /// Every dialect, in the order of the documentation.
-    pub const ALL: [Dialect; 1] = [Dialect::Lparser];
+    pub const ALL: [Dialect; 2] = [Dialect::Green, Dialect::Lparser];
 
-    /// The name used by `--from` and the wasm boundary: `lparser`.
+    /// The name used by `--from` and the wasm boundary: `green`, `lparser`.
     pub fn name(self) -> &'static str {
         match self {
+            Dialect::Green => "green",
             Dialect::Lparser => "lparser",
         }
     }
@@ -64,13 +68,14 @@ impl Import {
 /// Translates `text`, written in `dialect`, into Meristem's language.
 pub fn import(text: &str, dialect: Dialect) -> Import {
     match dialect {
+        Dialect::Green => green::import(text),
         Dialect::Lparser => lparser::import(text),
     }
 }
 
-/// Guesses the dialect of a file from its name's extension (`.ls` Lparser), else from its
-/// content (Lparser's keywords, or its numeric header and `@` end mark). `None` for Meristem's
-/// own `.lsys` and for text that is none of these. `file_name` may be empty.
+/// Guesses the dialect of a file from its name's extension (`.ls` Lparser), else from its content
+/// (Green's `SYSTEM … RULES … END.`, Lparser's keywords or its numeric header and `@` end mark). `None` for Meristem's own `.lsys` and for text that is none of
+/// these. `file_name` may be empty.
 pub fn detect(text: &str, file_name: &str) -> Option<Dialect> {
     let lower = file_name.to_ascii_lowercase();
     let extension = lower.rsplit_once('.').map(|(_, e)| e).unwrap_or("");
@@ -80,6 +85,14 @@ pub fn detect(text: &str, file_name: &str) -> Option<Dialect> {
         _ => {}
     }
     let lines: Vec<&str> = text.lines().map(str::trim).collect();
+    let upper = |l: &&str| l.to_ascii_uppercase();
+    if lines.iter().any(|l| upper(l) == "RULES")
+        && lines
+            .iter()
+            .any(|l| upper(l) == "SYSTEM" || upper(l).starts_with("SYSTEM "))
+    {
+        return Some(Dialect::Green);
+    }
     let content: Vec<&str> = lines
         .iter()
         .copied()
@@ -264,9 +277,10 @@ mod tests {
     #[test]
     fn detection_uses_the_extension_then_the_content() {
         assert_eq!(detect("", "tree.LS"), Some(Dialect::Lparser));
+        assert_eq!(detect("SYSTEM\nAXIOM\nRULES\nEND.", "x.lsys"), None);
         assert_eq!(
-            detect("recursion 5\naxiom F\nrule F = FF\n", "x.lsys"),
-            None
+            detect("SYSTEM\nAXIOM\n A\nRULES\n A -> B\nEND.", ""),
+            Some(Dialect::Green)
         );
         assert_eq!(
             detect("recursion 5\naxiom F\nrule F = FF\n", "tree.txt"),
