@@ -1,5 +1,6 @@
 //! The importers on real files: every file under `tests/import/` (Lparser `.ls` files from the
-//! Lparser distribution, Green's worked example) is imported; the output must parse and resolve without
+//! Lparser distribution, cpfg `.l` files from the Virtual Laboratory, L-Py `.lpy` files from
+//! L-Py's share/, Green's worked example) is imported; the output must parse and resolve without
 //! errors and carry exactly the expected notes. Known files are then derived and compared with
 //! what the other tool gives: Green's published step, and, for Lparser, an independent model of
 //! Lparser 2.1's own rewriting and turtle (`L_system`, `L_draw`) that the translation must draw
@@ -55,6 +56,63 @@ const EXPECTED: &[(&str, Dialect, Notes)] = &[
         &[
             (0, "how many steps"),
             (3, "standard deviation or a variance"),
+        ],
+    ),
+    ("cpfg/snowflake.l", Dialect::Cpfg, &[]),
+    ("cpfg/compound-homo.l", Dialect::Cpfg, &[]),
+    ("cpfg/recursive.l", Dialect::Cpfg, &[]),
+    ("cpfg/alternating.l", Dialect::Cpfg, &[]),
+    ("cpfg/basipetal.l", Dialect::Cpfg, &[]),
+    (
+        "cpfg/phyllotaxis.l",
+        Dialect::Cpfg,
+        &[(9, "@c is not a Meristem command")],
+    ),
+    (
+        "cpfg/monopodial.l",
+        Dialect::Cpfg,
+        &[
+            (23, "func(…) reads a function"),
+            (24, "func(…) reads a function"),
+        ],
+    ),
+    (
+        "cpfg/lychnis.l",
+        Dialect::Cpfg,
+        &[
+            (50, "func(…)"),
+            (52, "func(…)"),
+            (53, "func(…)"),
+            (58, "func(…)"),
+            (66, "func(…)"),
+            (71, "func(…)"),
+            (76, "func(…)"),
+            (83, "func(…)"),
+        ],
+    ),
+    ("lpy/lsystem1.9.lpy", Dialect::Lpy, &[]),
+    ("lpy/lsystem1.4.lpy", Dialect::Lpy, &[]),
+    ("lpy/lsystem-fig1.37.lpy", Dialect::Lpy, &[]),
+    ("lpy/lsystem-fig1.37b.lpy", Dialect::Lpy, &[]),
+    (
+        "lpy/06a-simple-differentiation.lpy",
+        Dialect::Lpy,
+        &[(23, "@c is not a Meristem command")],
+    ),
+    (
+        "lpy/ex_vonkoch.lpy",
+        Dialect::Lpy,
+        &[(8, "function '__initialiseContext__'")],
+    ),
+    (
+        "lpy/ex_lsystem1.lpy",
+        Dialect::Lpy,
+        &[
+            (17, "function 'Start'"),
+            (21, "function 'End'"),
+            (25, "function 'StartEach'"),
+            (28, "function 'EndEach'"),
+            (73, "L-Py's '_' becomes one for Meristem's '!'"),
         ],
     ),
     (
@@ -580,7 +638,7 @@ fn lparser_translations_keep_lparsers_string_symbol_for_symbol() {
 }
 
 // ------------------------------------------------------------------------------------------------
-// Green: the paper's worked example.
+// Green, cpfg and L-Py: derived results that can be counted by hand.
 
 fn derive(result: &Import, iterations: Option<u32>, seed: Option<u64>) -> Build {
     let b = build(
@@ -616,6 +674,53 @@ fn greens_worked_example_derives_to_the_published_step() {
     }
 }
 
+#[test]
+fn cpfg_and_lpy_translations_derive_the_strings_their_rules_give() {
+    // Koch curve: F -> F+F--F+F, 4 steps: 4^4 F, and 4 turns for each of the 1 + 4 + 16 + 64
+    // rewritings.
+    let b = derive(&import_file("cpfg/snowflake.l"), None, None);
+    assert_eq!(b.iterations, 4);
+    assert_eq!(b.stats.modules, 1 + 256 + 4 * 85);
+    assert_eq!(b.stats.segments, 256);
+    // A compound leaf drawn through its homomorphism: the derived string keeps A and I.
+    let b = derive(&import_file("cpfg/compound-homo.l"), None, None);
+    let text = b.derived_text();
+    assert!(
+        text.starts_with("IIIIIIII[+IIII[+II[+I[+A][-A]IA]"),
+        "{text}"
+    );
+    assert!(b.interpreted.is_some() && !text.contains('F'));
+    // ABOP Fig 1.9's H-tree in L-Py: A(s) -> F(s)[+(a)A(s/R)][-(a)A(s/R)], 11 steps: 2^11 apices,
+    // 2^11 - 1 rewritings of 7 more modules each, and the width `_(0.01)` first.
+    let b = derive(&import_file("lpy/lsystem1.9.lpy"), None, None);
+    assert_eq!(b.stats.modules, 1 + 2048 + 2047 * 7);
+    assert_eq!(b.stats.segments, 2047);
+    assert!(b
+        .derived_text()
+        .starts_with("!(0.01)F(1)[+(85)F(0.6868131868131868)"));
+    // ABOP Fig 1.4's alternating branches: 20 branches B(20,i) of 20 internodes each, and A(20);
+    // the Python `if` bodies became conditions, the interpretation's `,(2 if i % 2 else 3)` a
+    // conditional expression.
+    let b = derive(&import_file("lpy/lsystem1.4.lpy"), None, None);
+    assert_eq!(b.stats.modules, 20 * 21 + 1);
+    assert_eq!(b.stats.segments, 400);
+    assert!(b.derived_text().ends_with("B(20,19)F(0.01)F(0.01)F(0.01)F(0.01)F(0.01)F(0.01)F(0.01)F(0.01)F(0.01)F(0.01)F(0.01)F(0.01)F(0.01)F(0.01)F(0.01)F(0.01)F(0.01)F(0.01)F(0.01)F(0.01)A(20)"));
+    // Fig 1.37's L-Py file with delays: `G(x,t):` then `if t == 0: produce …` and
+    // `else: produce G(x,t-1)` became two conditional productions, so only the segments whose
+    // delay has run out are divided.
+    let delayed = import_file("lpy/lsystem-fig1.37b.lpy");
+    assert_eq!(
+        derive(&delayed, Some(1), None).derived_text(),
+        "!(0.002)-(90)G(0.3,2)+(86)G(0.458257569495584,1)-(172)G(0.458257569495584,1)+(86)G(0.7,0)"
+    );
+    assert_eq!(
+        derive(&delayed, Some(2), None).derived_text(),
+        "!(0.002)-(90)G(0.3,1)+(86)G(0.458257569495584,0)-(172)G(0.458257569495584,0)+(86)G(0.21,2)+(86)G(0.32078029864690877,1)-(172)G(0.32078029864690877,1)+(86)G(0.48999999999999994,0)"
+    );
+    let plain = derive(&import_file("lpy/lsystem-fig1.37.lpy"), None, None);
+    assert_eq!(plain.stats.segments, 4usize.pow(5));
+}
+
 // ------------------------------------------------------------------------------------------------
 // No input makes an importer panic, and what it gives either resolves or has nothing to derive.
 
@@ -630,6 +735,8 @@ proptest! {
             "SYSTEM\nDECLARATIONS\nCONTINUOUS p UNIFORM(0,1)\nAXIOM\nA(1)\nRULES\n",
             "3\n30\n10\nA\n",
             "recursion 3\nangle 20\naxiom A\nrule A = ",
+            "#define N 3\nLsystem: 1\nderivation length: 2\nAxiom: A(1)\n",
+            "k = 2\nAxiom: A(1)\nproduction:\nA(t) :\n    if ",
         ]),
         body in "[-+&^<>|%$~!?:;'\"cFfgZzt\\[\\]{}.()0-9ABCabpx=@#*/, \n]{0,80}",
     ) {

@@ -2,11 +2,13 @@
 //! with a note for every construct that could not be translated, at its line.
 //!
 //! One module per dialect: [`green`] (Green's RL-systems), [`lparser`] (Laurens Lapré's Lparser
-//! `.ls`, positional and keyword formats). Each builds its output with an [`Output`], whose [`Output::finish`] checks the text
+//! `.ls`, positional and keyword formats), [`cpfg`] (the common subset of cpfg `.l` and L-Py
+//! `.lpy`). Each builds its output with an [`Output`], whose [`Output::finish`] checks the text
 //! with Meristem's own parser and resolver: a line Meristem rejects is commented out and reported,
 //! so an import never hands the editor a grammar with errors unless it has no axiom at all.
 //! Like the rest of the core, nothing here does IO or panics on any input.
 
+mod cpfg;
 mod green;
 mod lparser;
 
@@ -21,17 +23,28 @@ pub enum Dialect {
     Green,
     /// Laurens Lapré's Lparser `.ls`, the positional (1.x-4.x) and the keyword (2.x) format.
     Lparser,
+    /// cpfg `.l` (the Virtual Laboratory's plant simulator).
+    Cpfg,
+    /// L-Py `.lpy` (OpenAlea).
+    Lpy,
 }
 
 impl Dialect {
     /// Every dialect, in the order of the documentation.
-    pub const ALL: [Dialect; 2] = [Dialect::Green, Dialect::Lparser];
+    pub const ALL: [Dialect; 4] = [
+        Dialect::Green,
+        Dialect::Lparser,
+        Dialect::Cpfg,
+        Dialect::Lpy,
+    ];
 
-    /// The name used by `--from` and the wasm boundary: `green`, `lparser`.
+    /// The name used by `--from` and the wasm boundary: `green`, `lparser`, `cpfg`, `lpy`.
     pub fn name(self) -> &'static str {
         match self {
             Dialect::Green => "green",
             Dialect::Lparser => "lparser",
+            Dialect::Cpfg => "cpfg",
+            Dialect::Lpy => "lpy",
         }
     }
 
@@ -70,17 +83,23 @@ pub fn import(text: &str, dialect: Dialect) -> Import {
     match dialect {
         Dialect::Green => green::import(text),
         Dialect::Lparser => lparser::import(text),
+        Dialect::Cpfg => cpfg::import(text, cpfg::Flavour::Cpfg),
+        Dialect::Lpy => cpfg::import(text, cpfg::Flavour::Lpy),
     }
 }
 
-/// Guesses the dialect of a file from its name's extension (`.ls` Lparser), else from its content
-/// (Green's `SYSTEM … RULES … END.`, Lparser's keywords or its numeric header and `@` end mark). `None` for Meristem's own `.lsys` and for text that is none of
+/// Guesses the dialect of a file from its name's extension (`.ls` Lparser, `.l` cpfg, `.lpy`
+/// L-Py), else from its content (Green's `SYSTEM … RULES … END.`, Lparser's keywords or its
+/// numeric header and `@` end mark, L-Py's `production:`/`interpretation:` sections or Python
+/// assignments, cpfg's `Lsystem:`). `None` for Meristem's own `.lsys` and for text that is none of
 /// these. `file_name` may be empty.
 pub fn detect(text: &str, file_name: &str) -> Option<Dialect> {
     let lower = file_name.to_ascii_lowercase();
     let extension = lower.rsplit_once('.').map(|(_, e)| e).unwrap_or("");
     match extension {
         "ls" => return Some(Dialect::Lparser),
+        "l" => return Some(Dialect::Cpfg),
+        "lpy" => return Some(Dialect::Lpy),
         "lsys" => return None,
         _ => {}
     }
@@ -117,6 +136,28 @@ pub fn detect(text: &str, file_name: &str) -> Option<Dialect> {
         && content.iter().any(|l| l.starts_with('@'))
     {
         return Some(Dialect::Lparser);
+    }
+    let has = |prefix: &str| {
+        lines
+            .iter()
+            .any(|l| l.to_ascii_lowercase().starts_with(prefix))
+    };
+    let python_assignment = lines.iter().any(|l| {
+        l.split_once('=').is_some_and(|(left, right)| {
+            let name = left.trim();
+            !right.starts_with('=')
+                && !name.is_empty()
+                && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+                && !name.starts_with(|c: char| c.is_ascii_digit())
+        })
+    });
+    if has("axiom:") {
+        if has("production:") || has("interpretation:") || has("def ") || python_assignment {
+            return Some(Dialect::Lpy);
+        }
+        if has("lsystem:") || has("derivation length") || has("#define") {
+            return Some(Dialect::Cpfg);
+        }
     }
     None
 }
@@ -214,6 +255,11 @@ impl Output {
         self.lines.len()
     }
 
+    /// The last line written ("" when none).
+    pub fn last(&self) -> &str {
+        self.lines.last().map_or("", |(text, _)| text.as_str())
+    }
+
     /// Replaces the text of line `index` (0-based), keeping its source line.
     pub fn replace(&mut self, index: usize, text: String) {
         if let Some(line) = self.lines.get_mut(index) {
@@ -277,6 +323,8 @@ mod tests {
     #[test]
     fn detection_uses_the_extension_then_the_content() {
         assert_eq!(detect("", "tree.LS"), Some(Dialect::Lparser));
+        assert_eq!(detect("", "a/b/plant.l"), Some(Dialect::Cpfg));
+        assert_eq!(detect("", "x.lpy"), Some(Dialect::Lpy));
         assert_eq!(detect("SYSTEM\nAXIOM\nRULES\nEND.", "x.lsys"), None);
         assert_eq!(
             detect("SYSTEM\nAXIOM\n A\nRULES\n A -> B\nEND.", ""),
@@ -289,6 +337,14 @@ mod tests {
         assert_eq!(
             detect("# c\n5\n20\n10 # t\nF\nF=FF\n@\n", ""),
             Some(Dialect::Lparser)
+        );
+        assert_eq!(
+            detect("a = 3\nAxiom: A\nproduction:\nA --> B\n", ""),
+            Some(Dialect::Lpy)
+        );
+        assert_eq!(
+            detect("Lsystem: 1\nAxiom: A\nA --> B\nendlsystem\n", ""),
+            Some(Dialect::Cpfg)
         );
         assert_eq!(detect("axiom: F\nF -> FF\n", "plain.txt"), None);
     }
