@@ -4,6 +4,7 @@ export { initCore, coreVersion } from './init';
 export { buildPlant, inspectPlant } from './build';
 export { grammarDirectives, turtleCommands, type GrammarDirective, type TurtleCommand } from './commands';
 export { byteOffsetToUtf16 } from './offsets';
+export { importGrammar, type Dialect, type ImportedGrammar, type ImportNote } from './import';
 export {
   DERIVED_PREVIEW_CHARS,
   NOT_REWRITTEN,
