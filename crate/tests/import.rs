@@ -750,3 +750,36 @@ proptest! {
         }
     }
 }
+
+// ------------------------------------------------------------------------------------------------
+// The gallery's imported examples are the importer's output under a written header.
+
+#[test]
+fn the_gallerys_lparser_examples_are_exactly_what_the_importer_writes() {
+    let body = |text: &str| -> String {
+        text.lines()
+            .skip_while(|l| l.starts_with("//"))
+            .map(|l| format!("{l}\n"))
+            .collect()
+    };
+    for (example, original) in [
+        ("lparser-fern.lsys", "lparser/fern-plant.ls"),
+        ("lparser-conifer.lsys", "lparser/conifer-type-tree.ls"),
+        ("lparser-spiral-plant.lsys", "lparser/spiral_plant.ls"),
+    ] {
+        let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+            .join("../public/examples")
+            .join(example);
+        let gallery = std::fs::read_to_string(&path).expect("gallery example");
+        assert!(gallery
+            .lines()
+            .nth(1)
+            .is_some_and(|l| l.starts_with("// Source:")));
+        assert!(gallery.contains(original), "{example} names its original");
+        assert_eq!(
+            body(&gallery),
+            body(&import_file(original).text),
+            "{example}: regenerate it with meristem import crate/tests/import/{original}"
+        );
+    }
+}

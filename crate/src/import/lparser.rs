@@ -1096,7 +1096,7 @@ impl<'f, 'o> Translator<'f, 'o> {
         let file = self.file;
         let format = match file.format {
             Format::Positional => "positional format",
-            Format::Keyword => "keyword format (Lparser 2)",
+            Format::Keyword => "keyword format of Lparser 2",
         };
         self.out.comment(
             &format!("Imported from Lparser ({format}) by meristem import."),
