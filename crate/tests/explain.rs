@@ -131,3 +131,24 @@ fn a_module_is_explained_by_the_one_rewriting_that_made_it() {
     // A copied module has nothing to explain.
     assert!(b.explain_module(0).is_none());
 }
+
+#[test]
+fn the_fingerprint_tells_derivations_apart_and_repeats_for_equal_ones() {
+    let run = |source: &str, seed: u64| {
+        let b = build(
+            source,
+            &BuildOptions {
+                seed: Some(seed),
+                ..BuildOptions::default()
+            },
+        );
+        b.string.fingerprint(&b.model.as_ref().unwrap().alphabet)
+    };
+    let stochastic = "#iterations 4\naxiom: F\nF -> (1) F[+F]F\nF -> (1) F[-F]F";
+    assert_eq!(run(stochastic, 5), run(stochastic, 5));
+    assert_ne!(run(stochastic, 5), run(stochastic, 6));
+    // Parameters count, to the bit.
+    assert_ne!(run("axiom: A(1)", 1), run("axiom: A(1.0000001)", 1));
+    // Interning order does not: the same string from differently ordered grammars.
+    assert_eq!(run("axiom: AB", 1), run("#module B\naxiom: AB", 1));
+}

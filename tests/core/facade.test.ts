@@ -192,7 +192,9 @@ describe('inspectPlant: provenance and explanations across the boundary', () => 
     expect(Array.from(explained!.rightContext)).toEqual([]);
     expect(await inspector.moduleTexts(2, 4)).toEqual(['a', 'a', 'b', 'a']);
     expect(await inspector.moduleTexts(7, 100)).toEqual(['a', 'a']);
+    expect(await inspector.derivedHash()).toMatch(/^[0-9a-f]{16}$/);
     inspector.free();
+    expect(await inspector.derivedHash()).toBe('');
     expect(await inspector.explain(0)).toBeNull();
     expect(await inspector.moduleTexts(0, 3)).toEqual([]);
   });

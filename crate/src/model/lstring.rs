@@ -73,6 +73,29 @@ impl LString {
         self.to_text_truncated(alphabet, usize::MAX)
     }
 
+    /// A 64-bit FNV-1a hash of the string's ids and parameter bits: equal strings (same modules,
+    /// same numbers) hash equal on every platform, so a shared link can prove it reproduced the
+    /// exact derivation. Names enter through `alphabet`, not through interning order.
+    pub fn fingerprint(&self, alphabet: &Alphabet) -> u64 {
+        const PRIME: u64 = 0x0000_0100_0000_01b3;
+        let mut hash: u64 = 0xcbf2_9ce4_8422_2325;
+        let mut eat = |bytes: &[u8]| {
+            for &b in bytes {
+                hash ^= b as u64;
+                hash = hash.wrapping_mul(PRIME);
+            }
+        };
+        for i in 0..self.ids.len() {
+            eat(alphabet.name(self.ids[i]).as_bytes());
+            eat(&[0]);
+            for p in self.params_of(i) {
+                eat(&p.to_bits().to_le_bytes());
+            }
+            eat(&[1]);
+        }
+        hash
+    }
+
     /// The text of module `i` alone, as [`LString::to_text`] writes it.
     pub fn module_text(&self, alphabet: &Alphabet, i: usize) -> String {
         let mut module = String::from(alphabet.name(self.ids[i]));

@@ -147,6 +147,10 @@ class LiveInspector implements PlantInspector {
     return Promise.resolve(JSON.parse(this.result.moduleTexts(from, n)) as string[]);
   }
 
+  derivedHash(): Promise<string> {
+    return Promise.resolve(this.result?.derivedHash() ?? '');
+  }
+
   free(): void {
     this.result?.free();
     this.result = undefined;

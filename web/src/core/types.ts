@@ -139,6 +139,8 @@ export interface PlantInspector {
   explainModule(module: number): Promise<Explanation | null>;
   /** The text of modules `start .. start + count` of the derived string. */
   moduleTexts(start: number, count: number): Promise<string[]>;
+  /** A fingerprint of the derived string (16 hex digits; '' once freed): equal for equal derivations. */
+  derivedHash(): Promise<string>;
   /** Releases the core's memory; later questions answer null / []. */
   free(): void;
 }

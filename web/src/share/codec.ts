@@ -1,0 +1,188 @@
+// Share links: the studio's whole state in the URL fragment, compressed (deflate-raw + base64url)
+// behind a format version, so a link made today still opens after the format grows. Decoding
+// treats every fragment as hostile: length, encoding, inflated size, JSON shape, value ranges and
+// HTML-looking text are all checked, and any failure is a message, never an exception.
+
+/** The fragment's key: `#s=<version>.<payload>`. */
+export const FRAGMENT_KEY = 's';
+/** The format version written by this build; every version up to it can be read. */
+export const SHARE_VERSION = 1;
+/** Longest fragment accepted (characters). */
+export const MAX_FRAGMENT = 64 * 1024;
+/** Largest inflated payload accepted (bytes): a decompression bomb stops here. */
+export const MAX_INFLATED = 512 * 1024;
+/** Longest grammar text accepted (characters). */
+export const MAX_TEXT = 200_000;
+
+/** Everything a link restores. */
+export interface SharedState {
+  /** The grammar text. */
+  text: string;
+  /** The iterations override; absent = the grammar's own. */
+  iterations?: number;
+  /** The seed override; absent = the grammar's `#seed`. */
+  seed?: number;
+  /** Values of `#define` sliders by name (already in the text; kept for the record). */
+  sliders?: Record<string, number>;
+  /** View options. */
+  view?: { sides?: number; smoothAll?: boolean; byProduction?: boolean; grid?: boolean };
+  /** The camera: eye position and the point looked at. */
+  camera?: { position: [number, number, number]; target: [number, number, number] };
+}
+
+export type Decoded = { ok: true; state: SharedState } | { ok: false; error: string };
+
+/** Encodes a state as a URL fragment (with the leading `#`). */
+export async function encodeState(state: SharedState): Promise<string> {
+  const json = JSON.stringify({ v: SHARE_VERSION, ...state });
+  const deflated = await pipe(new TextEncoder().encode(json), new CompressionStream('deflate-raw'), Infinity);
+  return `#${FRAGMENT_KEY}=${SHARE_VERSION}.${toBase64Url(deflated)}`;
+}
+
+/** True when a location fragment carries a shared state (it may still be invalid). */
+export function hasSharedState(fragment: string): boolean {
+  return fragment.replace(/^#/, '').startsWith(`${FRAGMENT_KEY}=`);
+}
+
+/** Decodes a fragment (with or without `#`); never throws. */
+export async function decodeState(fragment: string): Promise<Decoded> {
+  const raw = fragment.replace(/^#/, '');
+  if (raw.length > MAX_FRAGMENT) return fail(`the link is too long (${raw.length} characters; at most ${MAX_FRAGMENT})`);
+  if (!raw.startsWith(`${FRAGMENT_KEY}=`)) return fail('the link holds no Meristem state');
+  const body = raw.slice(FRAGMENT_KEY.length + 1);
+  const dot = body.indexOf('.');
+  const version = dot > 0 ? Number(body.slice(0, dot)) : NaN;
+  if (!Number.isInteger(version) || version < 1) return fail('the link has no format version');
+  if (version > SHARE_VERSION) return fail(`the link was made by a newer Meristem (format ${version}); this one reads up to ${SHARE_VERSION}`);
+  const bytes = fromBase64Url(body.slice(dot + 1));
+  if (!bytes) return fail('the link is not valid base64url');
+  let inflated: Uint8Array;
+  try {
+    inflated = await pipe(bytes, new DecompressionStream('deflate-raw'), MAX_INFLATED);
+  } catch (error) {
+    return fail(error instanceof TooLarge ? `the link inflates to more than ${MAX_INFLATED / 1024} KiB` : 'the link is not valid compressed data');
+  }
+  let json: unknown;
+  try {
+    json = JSON.parse(new TextDecoder('utf-8', { fatal: true }).decode(inflated));
+  } catch {
+    return fail('the link does not hold valid JSON text');
+  }
+  return validate(json);
+}
+
+function fail(error: string): Decoded {
+  return { ok: false, error };
+}
+
+/**
+ * HTML that has no business in a grammar. `A<B>C` contexts are fine: only tag names of three letters
+ * or more that carry active content count (`<a>` would be the context `b<a>a`).
+ */
+const HTML = /<\s*\/?\s*(script|iframe|img|svg|object|embed|style|link|meta|div|span|body|html|form|input|button|math|video|audio|base|frame|frameset|template)(\s|\/|>)|javascript:|\bon[a-z]+\s*=/i;
+
+function isRecord(value: unknown): value is Record<string, unknown> {
+  return typeof value === 'object' && value !== null && !Array.isArray(value);
+}
+
+function isWhole(value: unknown, max: number): value is number {
+  return typeof value === 'number' && Number.isInteger(value) && value >= 0 && value <= max;
+}
+
+function isPoint(value: unknown): value is [number, number, number] {
+  return Array.isArray(value) && value.length === 3 && value.every((v) => typeof v === 'number' && Number.isFinite(v) && Math.abs(v) < 1e12);
+}
+
+/** Checks the shape of a decoded state; copies only known fields. */
+export function validate(json: unknown): Decoded {
+  if (!isRecord(json)) return fail('the link does not hold a state object');
+  const { text, iterations, seed, sliders, view, camera } = json;
+  if (typeof text !== 'string') return fail('the link holds no grammar text');
+  if (text.length > MAX_TEXT) return fail(`the grammar in the link is too long (${text.length} characters; at most ${MAX_TEXT})`);
+  if (HTML.test(text)) return fail('the grammar in the link looks like HTML or script, not an L-system');
+  const state: SharedState = { text };
+  if (iterations !== undefined) {
+    if (!isWhole(iterations, 10_000)) return fail('the link’s iterations are not a whole number from 0 to 10000');
+    state.iterations = iterations;
+  }
+  if (seed !== undefined) {
+    if (!isWhole(seed, Number.MAX_SAFE_INTEGER)) return fail('the link’s seed is not a whole number');
+    state.seed = seed;
+  }
+  if (sliders !== undefined) {
+    if (!isRecord(sliders) || Object.keys(sliders).length > 200) return fail('the link’s sliders are malformed');
+    const clean: Record<string, number> = {};
+    for (const [name, value] of Object.entries(sliders)) {
+      if (!/^[A-Za-z_]\w{0,63}$/.test(name) || ['__proto__', 'constructor', 'prototype'].includes(name) || typeof value !== 'number' || !Number.isFinite(value)) {
+        return fail('the link’s sliders are malformed');
+      }
+      clean[name] = value;
+    }
+    state.sliders = clean;
+  }
+  if (view !== undefined) {
+    if (!isRecord(view)) return fail('the link’s view options are malformed');
+    const clean: NonNullable<SharedState['view']> = {};
+    if (view.sides !== undefined) {
+      if (!isWhole(view.sides, 64) || view.sides < 3) return fail('the link’s number of sides is not from 3 to 64');
+      clean.sides = view.sides;
+    }
+    for (const key of ['smoothAll', 'byProduction', 'grid'] as const) {
+      if (view[key] === undefined) continue;
+      if (typeof view[key] !== 'boolean') return fail(`the link’s view option ${key} is not true or false`);
+      clean[key] = view[key];
+    }
+    state.view = clean;
+  }
+  if (camera !== undefined) {
+    if (!isRecord(camera) || !isPoint(camera.position) || !isPoint(camera.target)) return fail('the link’s camera is malformed');
+    state.camera = { position: [...camera.position], target: [...camera.target] };
+  }
+  return { ok: true, state };
+}
+
+class TooLarge extends Error {}
+
+/** Runs bytes through a (de)compression stream, failing with TooLarge past `limit` output bytes. */
+async function pipe(input: Uint8Array<ArrayBuffer>, stream: CompressionStream | DecompressionStream, limit: number): Promise<Uint8Array> {
+  const writer = stream.writable.getWriter();
+  const written = writer.write(input).then(() => writer.close());
+  written.catch(() => {}); // the reader reports the error
+  const reader = stream.readable.getReader();
+  const chunks: Uint8Array[] = [];
+  let total = 0;
+  for (;;) {
+    const { done, value } = await reader.read();
+    if (done) break;
+    total += value.length;
+    if (total > limit) {
+      await reader.cancel();
+      throw new TooLarge();
+    }
+    chunks.push(value);
+  }
+  await written;
+  const out = new Uint8Array(total);
+  let offset = 0;
+  for (const chunk of chunks) {
+    out.set(chunk, offset);
+    offset += chunk.length;
+  }
+  return out;
+}
+
+function toBase64Url(bytes: Uint8Array): string {
+  let binary = '';
+  for (let i = 0; i < bytes.length; i += 0x8000) binary += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
+  return btoa(binary).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
+}
+
+function fromBase64Url(text: string): Uint8Array<ArrayBuffer> | null {
+  if (!/^[A-Za-z0-9_-]*$/.test(text) || text.length % 4 === 1) return null;
+  try {
+    const binary = atob(text.replace(/-/g, '+').replace(/_/g, '/') + '='.repeat((4 - (text.length % 4)) % 4));
+    return Uint8Array.from(binary, (c) => c.charCodeAt(0));
+  } catch {
+    return null;
+  }
+}
