@@ -8,6 +8,7 @@
 pub mod derive;
 pub mod diagnostics;
 pub mod export;
+pub mod import;
 pub mod mesh;
 pub mod model;
 pub mod pipeline;

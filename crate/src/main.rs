@@ -7,10 +7,12 @@
 //! meristem check FILE                               diagnostics as FILE:LINE:COL: severity: message
 //! meristem export FILE -o OUT.EXT [--format EXT] [--iterations N] [--seed S] [--sides N] [--smooth-all]
 //!                                                   the model as OUT.wrl, .glb, .pov, .obj (+ .mtl), .iv or .svg
+//! meristem import FILE [--from D] [-o OUT.lsys]      another dialect translated; notes on stderr
 //! ```
 
 use meristem::diagnostics::{LocatedDiagnostic, Severity};
 use meristem::export::{self, Format};
+use meristem::import::{self, Dialect};
 use meristem::mesh::MeshOptions;
 use meristem::pipeline::build_with_clock;
 use meristem::BuildOptions;
@@ -24,6 +26,7 @@ const USAGE: &str = "usage:
       EXT: wrl (VRML 2.0), glb (glTF 2.0), pov (POV-Ray 3.7), obj (OBJ, writes OUT.mtl too),
            iv (OpenInventor 2.1), svg (SVG); --format overrides the extension
       --sides N (3 to 64, default 6) and --smooth-all are the studio's view options
+  meristem import FILE [--from green|lparser|cpfg|lpy] [-o OUT.lsys]
   meristem --version";
 
 struct Args {
@@ -33,6 +36,7 @@ struct Args {
     seed: Option<u64>,
     stats: bool,
     time: bool,
+    from: Option<String>,
     output: Option<PathBuf>,
     format: Option<String>,
     sides: Option<u32>,
@@ -48,6 +52,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
     let mut seed = None;
     let mut stats = false;
     let mut time = false;
+    let mut from = None;
     let mut output = None;
     let mut format = None;
     let mut sides = None;
@@ -58,6 +63,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             Long("seed") | Short('s') => seed = Some(parser.value()?.parse()?),
             Long("stats") => stats = true,
             Long("time") => time = true,
+            Long("from") => from = Some(parser.value()?.string()?),
             Long("output") | Short('o') => output = Some(PathBuf::from(parser.value()?)),
             Long("format") | Short('f') => format = Some(parser.value()?.string()?),
             Long("sides") => sides = Some(parser.value()?.parse()?),
@@ -84,6 +90,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
         seed,
         stats,
         time,
+        from,
         output,
         format,
         sides,
@@ -174,6 +181,16 @@ fn main() -> ExitCode {
     let source = match std::fs::read(&args.file) {
         Ok(bytes) => match String::from_utf8(bytes) {
             Ok(text) => text,
+            // Files of other tools often predate UTF-8 (Lparser's are DOS text): an import reads
+            // them with each invalid byte replaced, and says so.
+            Err(e) if args.verb == "import" => {
+                eprintln!(
+                    "{}: note: not UTF-8 (invalid byte at offset {}); invalid bytes are read as U+FFFD",
+                    args.file,
+                    e.utf8_error().valid_up_to()
+                );
+                String::from_utf8_lossy(e.as_bytes()).into_owned()
+            }
             Err(e) => {
                 eprintln!(
                     "{}: the file is not UTF-8 text (invalid byte at offset {})",
@@ -188,6 +205,9 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
+    if args.verb == "import" {
+        return import_file(&args, &source);
+    }
     // The core reads no clock; this binary lends it one.
     let start = std::time::Instant::now();
     let mut clock = || start.elapsed().as_secs_f64() * 1000.0;
@@ -242,5 +262,51 @@ fn main() -> ExitCode {
         ExitCode::SUCCESS
     } else {
         ExitCode::from(1)
+    }
+}
+
+/// `meristem import`: the translation on stdout (or in `-o OUT`), one `FILE:LINE: note: …` line on
+/// stderr per note. Exit 0, or 1 when nothing could be imported (no axiom), 2 on usage errors.
+fn import_file(args: &Args, source: &str) -> ExitCode {
+    let dialect = match &args.from {
+        Some(name) => match Dialect::from_name(name) {
+            Some(d) => d,
+            None => {
+                eprintln!("meristem: unknown dialect '{name}' (green, lparser, cpfg or lpy)");
+                return ExitCode::from(2);
+            }
+        },
+        None => match import::detect(source, &args.file) {
+            Some(d) => d,
+            None => {
+                eprintln!(
+                    "meristem: cannot tell which dialect {} is written in; say it with --from green|lparser|cpfg|lpy",
+                    args.file
+                );
+                return ExitCode::from(2);
+            }
+        },
+    };
+    let result = import::import(source, dialect);
+    for note in &result.notes {
+        if note.line == 0 {
+            eprintln!("{}: note: {}", args.file, note.message);
+        } else {
+            eprintln!("{}:{}: note: {}", args.file, note.line, note.message);
+        }
+    }
+    match &args.output {
+        Some(path) => {
+            if let Err(e) = std::fs::write(path, &result.text) {
+                eprintln!("meristem: cannot write {}: {e}", path.display());
+                return ExitCode::from(2);
+            }
+        }
+        None => print!("{}", result.text),
+    }
+    if result.is_empty() {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
     }
 }

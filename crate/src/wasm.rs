@@ -421,3 +421,42 @@ impl Grammar {
         }
     }
 }
+
+// ---- Importing other dialects (crate::import) ----------------------------------------------
+
+/// Translates `text`, written in another L-system dialect, into Meristem's language.
+/// `dialect_or_file_name` is a dialect name (`green`, `lparser`, `cpfg`, `lpy`) or the file's
+/// name, whose extension or content then tells the dialect. Returns JSON
+/// `{text, notes: [{line, message}], dialect}`: `line` is 1-based in `text` (0 for the whole
+/// file); when the dialect cannot be told, `text` is empty, `dialect` null and one note says why.
+#[wasm_bindgen]
+pub fn import_grammar(text: &str, dialect_or_file_name: &str) -> String {
+    use crate::import::{self, Dialect, Import, ImportNote};
+    #[derive(serde::Serialize)]
+    struct Imported {
+        #[serde(flatten)]
+        import: Import,
+        dialect: Option<Dialect>,
+    }
+    let dialect = Dialect::from_name(dialect_or_file_name)
+        .or_else(|| import::detect(text, dialect_or_file_name));
+    let result = match dialect {
+        Some(d) => Imported {
+            import: import::import(text, d),
+            dialect: Some(d),
+        },
+        None => Imported {
+            import: Import {
+                text: String::new(),
+                notes: vec![ImportNote {
+                    line: 0,
+                    message: format!(
+                        "cannot tell which dialect '{dialect_or_file_name}' is written in (green, lparser, cpfg or lpy)"
+                    ),
+                }],
+            },
+            dialect: None,
+        },
+    };
+    serde_json::to_string(&result).unwrap_or_else(|_| "{}".into())
+}

@@ -122,6 +122,82 @@ fn derive_time_prints_each_stage_on_stderr() {
     }
 }
 
+fn import_input(relative: &str) -> String {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/import")
+        .join(relative)
+        .display()
+        .to_string()
+}
+
+#[test]
+fn import_prints_the_translation_and_notes_as_file_line_note() {
+    let file = import_input("lparser/abop-monopodial-tree.ls");
+    let (code, out, err) = meristem(&["import", &file]);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        out.starts_with("// Imported from Lparser (positional format)"),
+        "{out}"
+    );
+    assert!(
+        out.contains("\naxiom: ;(12)F(1,0.15)F(1,0.15)A(1,0.15)L\n"),
+        "{out}"
+    );
+    assert!(
+        err.contains(&format!("{file}:23: note: '~' without a value")),
+        "{err}"
+    );
+    assert_eq!(err.lines().count(), 3, "{err}");
+    // The translation builds.
+    let out_file = temp_file("monopodial.lsys", out.as_bytes());
+    assert_eq!(
+        meristem(&["check", &out_file]),
+        (0, String::new(), String::new())
+    );
+}
+
+#[test]
+fn import_writes_the_output_file_and_takes_the_dialect_from_the_command_line() {
+    let green = temp_file(
+        "green.txt",
+        b"SYSTEM\nAXIOM\n  A(1)\nRULES\n  A(x) --> A(x+1)B\nEND.\n",
+    );
+    let target = std::env::temp_dir().join(format!("meristem-cli-{}-out.lsys", std::process::id()));
+    let target = target.display().to_string();
+    let (code, out, err) = meristem(&["import", &green, "--from", "green", "-o", &target]);
+    assert_eq!((code, out.as_str()), (0, ""), "{err}");
+    assert!(err.contains(&format!(
+        "{green}: note: Green's syntax does not say how many steps"
+    )));
+    let written = std::fs::read_to_string(&target).expect("written");
+    assert!(written.contains("A(x) -> A(x+1)B"), "{written}");
+    let (code, out, _) = meristem(&["derive", &target]);
+    assert_eq!((code, out.as_str()), (0, "A(2)B\n"));
+    // Detected from the content when no dialect is given.
+    assert_eq!(meristem(&["import", &green]).0, 0);
+}
+
+#[test]
+fn import_fails_politely() {
+    let plain = temp_file("plain.txt", b"axiom: F\n");
+    let (code, _, err) = meristem(&["import", &plain]);
+    assert_eq!(code, 2);
+    assert!(err.contains("--from green|lparser|cpfg|lpy"), "{err}");
+    assert_eq!(meristem(&["import", &plain, "--from", "basic"]).0, 2);
+    // Nothing to import: exit 1, with the reason.
+    let empty = temp_file("empty.l", b"Lsystem: 1\nF --> FF\nendlsystem\n");
+    let (code, out, err) = meristem(&["import", &empty]);
+    assert_eq!(code, 1);
+    assert!(out.contains("F -> FF"));
+    assert!(err.contains("no Axiom: line"), "{err}");
+    // Lparser files predate UTF-8: a Latin-1 comment is read, and said so.
+    let latin1 = temp_file("latin1.ls", b"# Lapr\xe9\n2\n30\n10\nF\nF=FF\n@\n");
+    let (code, out, err) = meristem(&["import", &latin1]);
+    assert_eq!(code, 0, "{err}");
+    assert!(err.contains("not UTF-8"), "{err}");
+    assert!(out.contains("F_r -> F_r"), "{out}");
+}
+
 /// A fresh folder for one test's output files.
 fn temp_dir(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("meristem-cli-{}-{name}", std::process::id()));

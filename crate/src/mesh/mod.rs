@@ -574,7 +574,7 @@ fn push_range(ranges: &mut Vec<u32>, first: u32, value: u32) {
 }
 
 /// Length of the diagonal of the box around every segment end point.
-fn skeleton_diagonal(skeleton: &Skeleton) -> f64 {
+pub(crate) fn skeleton_diagonal(skeleton: &Skeleton) -> f64 {
     let mut min = DVec3::INFINITY;
     let mut max = DVec3::NEG_INFINITY;
     for s in &skeleton.segments {

@@ -5,6 +5,7 @@ export { buildPlant, inspectPlant } from './build';
 export { exportModel, MODEL_FORMATS, type ExportOptions, type ModelFile, type ModelFormat } from './export';
 export { grammarDirectives, turtleCommands, type GrammarDirective, type TurtleCommand } from './commands';
 export { byteOffsetToUtf16 } from './offsets';
+export { importGrammar, type Dialect, type ImportedGrammar, type ImportNote } from './import';
 export {
   DERIVED_PREVIEW_CHARS,
   NOT_REWRITTEN,

@@ -1,0 +1,1366 @@
+//! The common subset of cpfg `.l` (the Virtual Laboratory) and L-Py `.lpy` (OpenAlea) -> Meristem.
+//!
+//! Both write ABOP's notation: `Axiom:`, `derivation length:`, `ignore:`/`consider:`,
+//! productions `lc < pred > rc : cond --> succ`, `homomorphism`/`interpretation:`,
+//! `decomposition`, `maximum depth:`, `endlsystem`. cpfg runs the file through the C
+//! preprocessor (`#define`, `/* */`) and may put statement blocks `{x = …;}` before and after a
+//! condition and a probability after the successor (`--> succ : 0.3`); L-Py is Python: `#`
+//! comments, `NAME = value` assignments before the L-system, productions whose body is Python
+//! (`A(t) :` then `if t < 3: produce …`). The importer translates the notation, straight-line
+//! statement blocks (substituted into the condition and successor), Python assignments of
+//! numbers (as `#define`s), Python expressions (`**`, `and`, `x if c else y`, trigonometry in
+//! radians), and production bodies made only of `if`/`elif`/`else` and `produce` (one Meristem
+//! production per branch, in order: Meristem applies the first that matches, as L-Py does).
+//! Anything else is reported and left out.
+
+use super::{Import, Output};
+use std::collections::HashMap;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Flavour {
+    Cpfg,
+    Lpy,
+}
+
+impl Flavour {
+    fn tool(self) -> &'static str {
+        match self {
+            Flavour::Cpfg => "cpfg",
+            Flavour::Lpy => "L-Py",
+        }
+    }
+}
+
+/// One line of code with its comment taken out.
+#[derive(Clone, Debug)]
+struct Line {
+    n: usize,
+    code: String,
+    comment: String,
+    indent: usize,
+}
+
+/// `180 / π`: L-Py's trigonometry is Python's, in radians; Meristem's is in degrees.
+const DEGREES: &str = "57.2957795131";
+
+/// L-Py's predefined modules with long names that have a Meristem command.
+const LPY_NAMES: &[(&str, &str)] = &[
+    ("TurnLeft", "+"),
+    ("TurnRight", "-"),
+    ("PitchDown", "&"),
+    ("PitchUp", "^"),
+    ("RollLeft", "\\"),
+    ("RollRight", "/"),
+    ("TurnAround", "|"),
+    ("RollToVert", "@v"),
+    ("SetWidth", "!"),
+    ("SetColor", ";"),
+    ("IncColor", ";"),
+    ("Sphere", "@O"),
+    ("MoveTo", "@M"),
+    ("StartGC", "@Gc"),
+    ("EndGC", "@Ge"),
+    ("Cut", "%"),
+    ("GetPos", "?P"),
+    ("GetHead", "?H"),
+    ("GetUp", "?U"),
+    ("GetLeft", "?L"),
+];
+
+/// Meristem's `@` and `~` names; other ones are kept as modules the turtle ignores.
+const KNOWN_AT: &[&str] = &[
+    "@O",
+    "@M",
+    "@v",
+    "@Tp",
+    "@Ts",
+    "@Gc",
+    "@Ge",
+    "@Switch",
+    "@Pendulum",
+    "@Repeat",
+    "@Prune",
+];
+
+pub(super) fn import(text: &str, flavour: Flavour) -> Import {
+    let mut importer = Importer {
+        flavour,
+        out: Output::default(),
+        declared: Vec::new(),
+        unknown_names: Vec::new(),
+        noted: Vec::new(),
+        axiom: false,
+    };
+    importer.run(text);
+    importer.out.finish()
+}
+
+struct Importer {
+    flavour: Flavour,
+    out: Output,
+    /// Multi-letter module names (L-Py `module` declarations and names met in strings).
+    declared: Vec<String>,
+    /// Long names that are neither declared nor L-Py's (written as modules, reported once).
+    unknown_names: Vec<String>,
+    noted: Vec<String>,
+    axiom: bool,
+}
+
+/// Splits the text into lines without comments: cpfg's `/* … */` and `//`, L-Py's `#`.
+fn lines(text: &str, flavour: Flavour) -> Vec<Line> {
+    let mut result = Vec::new();
+    let mut in_block = false;
+    for (index, raw) in text.lines().enumerate() {
+        let mut code = String::new();
+        let mut comment = String::new();
+        let chars: Vec<char> = raw.chars().collect();
+        let mut i = 0;
+        let mut quote: Option<char> = None;
+        while i < chars.len() {
+            let c = chars[i];
+            if in_block {
+                if c == '*' && chars.get(i + 1) == Some(&'/') {
+                    in_block = false;
+                    i += 2;
+                    comment.push(' ');
+                    continue;
+                }
+                comment.push(c);
+                i += 1;
+                continue;
+            }
+            if let Some(q) = quote {
+                code.push(c);
+                if c == q {
+                    quote = None;
+                }
+                i += 1;
+                continue;
+            }
+            match flavour {
+                Flavour::Cpfg => {
+                    if c == '/' && chars.get(i + 1) == Some(&'*') {
+                        in_block = true;
+                        i += 2;
+                        continue;
+                    }
+                    if c == '/' && chars.get(i + 1) == Some(&'/') {
+                        comment.extend(&chars[i + 2..]);
+                        break;
+                    }
+                }
+                Flavour::Lpy => {
+                    if c == '\'' || c == '"' {
+                        quote = Some(c);
+                    } else if c == '#' {
+                        comment.extend(&chars[i + 1..]);
+                        break;
+                    }
+                }
+            }
+            code.push(c);
+            i += 1;
+        }
+        let indent = code.chars().take_while(|c| c.is_whitespace()).count();
+        result.push(Line {
+            n: index + 1,
+            code: code.trim().to_string(),
+            comment: comment.trim().to_string(),
+            indent,
+        });
+    }
+    result
+}
+
+/// cpfg's statement blocks `{ … }` may span lines: a line whose braces are not closed takes the
+/// lines after it until they are.
+fn join_blocks(lines: Vec<Line>, flavour: Flavour) -> Vec<Line> {
+    if flavour != Flavour::Cpfg {
+        return lines;
+    }
+    let mut joined: Vec<Line> = Vec::new();
+    let mut open = 0i32;
+    for line in lines {
+        let delta = line.code.matches('{').count() as i32 - line.code.matches('}').count() as i32;
+        match joined.last_mut() {
+            Some(last) if open > 0 => {
+                if !line.code.is_empty() {
+                    last.code.push(' ');
+                    last.code.push_str(&line.code);
+                }
+                if !line.comment.is_empty() {
+                    last.comment.push(' ');
+                    last.comment.push_str(&line.comment);
+                }
+            }
+            _ => joined.push(line),
+        }
+        open = (open + delta).max(0);
+    }
+    joined
+}
+
+/// The byte index of the first `token` outside brackets, braces and parentheses.
+fn top_level(text: &str, token: &str) -> Option<usize> {
+    let mut depth = 0i32;
+    let bytes = text.as_bytes();
+    for (i, c) in text.char_indices() {
+        match c {
+            '(' | '{' => depth += 1,
+            ')' | '}' => depth -= 1,
+            _ => {}
+        }
+        if depth == 0 && bytes[i..].starts_with(token.as_bytes()) {
+            return Some(i);
+        }
+    }
+    None
+}
+
+/// The production arrow: `-->` or `->` outside parentheses; (start, end).
+fn arrow(code: &str) -> Option<(usize, usize)> {
+    if let Some(i) = top_level(code, "-->") {
+        // `- --> +` or `---> +`: the first '-' of "--->" is the predecessor.
+        if i == 0 || !code[..i].trim().is_empty() {
+            return Some((i, i + 3));
+        }
+        return Some((i + 1, i + 4));
+    }
+    top_level(code, "->").map(|i| (i, i + 2))
+}
+
+fn is_identifier(s: &str) -> bool {
+    s.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_')
+        && s.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+}
+
+/// A `{ … }` statement block's bindings: each `name = expr;` in order.
+type Env = HashMap<String, String>;
+
+impl Importer {
+    fn note(&mut self, line: usize, message: impl Into<String>) {
+        self.out.note(line, message);
+    }
+
+    fn note_once(&mut self, key: &str, line: usize, message: impl Into<String>) {
+        if !self.noted.iter().any(|k| k == key) {
+            self.noted.push(key.to_string());
+            self.out.note(line, message);
+        }
+    }
+
+    fn run(&mut self, text: &str) {
+        let all = join_blocks(lines(text, self.flavour), self.flavour);
+        // L-Py's `module` declarations change how strings split into modules: read them first.
+        if self.flavour == Flavour::Lpy {
+            for line in &all {
+                if let Some(rest) = line.code.strip_prefix("module ") {
+                    for item in rest.split(',') {
+                        let name = item.split('(').next().unwrap_or("").trim();
+                        if is_identifier(name) && name.len() > 1 {
+                            self.declared.push(name.to_string());
+                        }
+                    }
+                }
+            }
+        }
+        self.out.comment(
+            &format!("Imported from {} by meristem import.", self.flavour.tool()),
+            0,
+        );
+        let module_line = self.out.len();
+        self.out.line("", 0);
+        let mut ended = false;
+        let mut i = 0;
+        while i < all.len() {
+            let line = all[i].clone();
+            i += 1;
+            if line.code.is_empty() {
+                if !line.comment.is_empty() {
+                    self.out.comment(&line.comment, line.n);
+                }
+                continue;
+            }
+            // The lines of a block: those indented more than its header.
+            let block_end = {
+                let mut j = i;
+                while j < all.len() && (all[j].code.is_empty() || all[j].indent > line.indent) {
+                    j += 1;
+                }
+                j
+            };
+            let before = self.out.len();
+            i = self.statement(&line, &all, i, block_end, &mut ended);
+            // A comment after code stays after its translation.
+            if !line.comment.is_empty() {
+                if self.out.len() > before && !self.out.last().starts_with("//") {
+                    let last = self.out.len() - 1;
+                    let text = format!(
+                        "{} // {}",
+                        self.out.last(),
+                        super::defuse_comment(&line.comment)
+                    );
+                    self.out.replace(last, text);
+                } else {
+                    self.out.comment(&line.comment, line.n);
+                }
+            }
+        }
+        if !self.declared.is_empty() {
+            self.out
+                .replace(module_line, format!("#module {}", self.declared.join(" ")));
+        }
+        if !self.axiom {
+            self.note(0, "no Axiom: line");
+        }
+    }
+
+    /// Translates one statement (a line, or a production with the lines it takes); returns the
+    /// index of the next line to read.
+    fn statement(
+        &mut self,
+        line: &Line,
+        all: &[Line],
+        mut i: usize,
+        block_end: usize,
+        ended: &mut bool,
+    ) -> usize {
+        {
+            let code = line.code.as_str();
+            let lower = code.to_ascii_lowercase();
+            if *ended {
+                if self.flavour == Flavour::Lpy {
+                    i = self.python(line, &all[i..block_end], block_end, i);
+                } else {
+                    self.note_once(
+                        "after",
+                        line.n,
+                        "text after endlsystem (another L-system of the file) is not translated",
+                    );
+                }
+                return i;
+            }
+            if self.flavour == Flavour::Cpfg && code.starts_with('#') {
+                self.preprocessor(line);
+                return i;
+            }
+            if keyword(&lower, code, "lsystem:").is_some() {
+                return i;
+            }
+            if let Some(rest) = keyword(&lower, code, "derivation length:") {
+                match self.expression(rest, &Env::new()) {
+                    Ok(e) => self.out.line(format!("derivation length: {e}"), line.n),
+                    Err(why) => self.note(line.n, format!("derivation length: {why}")),
+                }
+                return i;
+            }
+            if let Some(rest) = keyword(&lower, code, "axiom:") {
+                match self.modules(rest, &Env::new(), line.n) {
+                    Ok(m) => {
+                        self.axiom = true;
+                        self.out.line(format!("axiom: {}", separate(&m)), line.n);
+                    }
+                    Err(why) => self.note(line.n, format!("the axiom: {why}")),
+                }
+                return i;
+            }
+            let lists = [("ignore:", "#ignore"), ("consider:", "#consider")];
+            if let Some((kw, directive)) = lists.iter().find(|(k, _)| lower.starts_with(k)) {
+                let rest = &code[kw.len()..];
+                match self.modules(rest, &Env::new(), line.n) {
+                    Ok(m) => {
+                        let names = module_names(&m);
+                        if !names.is_empty() {
+                            self.out
+                                .line(format!("{directive} {}", names.join(" ")), line.n);
+                        }
+                    }
+                    Err(why) => self.note(line.n, format!("{kw} {why}")),
+                }
+                return i;
+            }
+            if let Some(rest) = keyword(&lower, code, "maximum depth:") {
+                self.out
+                    .line(format!("maximum depth: {}", rest.trim()), line.n);
+                return i;
+            }
+            if let Some(section) = section(&lower) {
+                self.out.line(section, line.n);
+                return i;
+            }
+            if lower == "endlsystem" {
+                self.out.line("endlsystem", line.n);
+                *ended = true;
+                return i;
+            }
+            if lower.starts_with("group") || lower == "endgroup" {
+                self.note_once(
+                    "group",
+                    line.n,
+                    "L-Py's production groups are not translated: every group's productions are imported as one set",
+                );
+                return i;
+            }
+            if self.flavour == Flavour::Lpy && code.starts_with("module ") {
+                return i;
+            }
+            if arrow(code).is_some() {
+                // A production may go on on the next lines (cpfg writes long successors so).
+                let mut text = code.to_string();
+                while i < all.len()
+                    && !all[i].code.is_empty()
+                    && all[i].indent > line.indent
+                    && arrow(&all[i].code).is_none()
+                {
+                    text.push(' ');
+                    text.push_str(&all[i].code);
+                    i += 1;
+                }
+                self.production(&text, line.n);
+                return i;
+            }
+            if self.flavour == Flavour::Lpy && code.ends_with(':') && i <= all.len() {
+                if let Some(rest) = python_production_header(code) {
+                    self.python_production(rest, &all[i..block_end], line.n);
+                    i = block_end;
+                    return i;
+                }
+            }
+            if self.flavour == Flavour::Lpy {
+                if let Some((pattern, succ)) = inline_produce(code) {
+                    self.production(&format!("{pattern} --> {succ}"), line.n);
+                    return i;
+                }
+                i = self.python(line, &all[i..block_end], block_end, i);
+                return i;
+            }
+            self.note(
+                line.n,
+                format!("'{code}' is not part of the notation Meristem imports; skipped"),
+            );
+        }
+        i
+    }
+
+    /// cpfg's preprocessor lines: `#define NAME value` becomes Meristem's `#define`.
+    fn preprocessor(&mut self, line: &Line) {
+        let code = line.code.trim_start_matches('#').trim_start();
+        if let Some(rest) = code.strip_prefix("define") {
+            let rest = rest.trim();
+            let name_end = rest
+                .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+                .unwrap_or(rest.len());
+            let (name, value) = (&rest[..name_end], rest[name_end..].trim());
+            if value.starts_with('(') && rest[name_end..].starts_with('(') {
+                self.note(
+                    line.n,
+                    format!("#define {name}(…): macros with arguments are not translated"),
+                );
+                return;
+            }
+            if !is_identifier(name) || value.is_empty() {
+                self.note(line.n, format!("'#{code}' defines no value; skipped"));
+                return;
+            }
+            match self.expression(value, &Env::new()) {
+                Ok(e) => self.out.line(format!("#define {name} {e}"), line.n),
+                Err(why) => self.note(line.n, format!("#define {name}: {why}")),
+            }
+            return;
+        }
+        let word = code.split_whitespace().next().unwrap_or("");
+        self.note(
+            line.n,
+            format!("the C preprocessor's #{word} is not translated; the line is skipped"),
+        );
+    }
+
+    /// L-Py's Python outside productions: `NAME = number expression` becomes a `#define`; other
+    /// statements are reported (a block with its indented lines). Returns where to go on.
+    fn python(&mut self, line: &Line, block: &[Line], block_end: usize, next: usize) -> usize {
+        let code = line.code.as_str();
+        if let Some((name, value)) = code.split_once('=') {
+            let name = name.trim();
+            let value = value.trim();
+            let assignment = is_identifier(name) && !value.starts_with('=');
+            if assignment && name.starts_with("__") && name.ends_with("__") {
+                let text = value.trim_matches(|c| c == '\'' || c == '"');
+                self.out
+                    .comment(&format!("{}: {text}", name.trim_matches('_')), line.n);
+                return next;
+            }
+            if assignment {
+                match self.expression(value, &Env::new()) {
+                    Ok(e) => self.out.line(format!("#define {name} {e}"), line.n),
+                    Err(why) => {
+                        self.note(line.n, format!("{name} = {value}: {why}; not translated"))
+                    }
+                }
+                return next;
+            }
+        }
+        let first = code
+            .split(|c: char| !c.is_ascii_alphanumeric() && c != '_')
+            .next();
+        let message = match first.unwrap_or("") {
+            "def" => format!(
+                "the Python function '{}' is not translated",
+                code[3..].split('(').next().unwrap_or("").trim()
+            ),
+            "import" | "from" => "Python imports are not translated".to_string(),
+            _ => format!("the Python statement '{code}' is not translated"),
+        };
+        self.note(line.n, message);
+        if block.is_empty() {
+            next
+        } else {
+            block_end
+        }
+    }
+
+    /// `pred : {pre} cond {post} --> succ : probability` in Meristem's notation.
+    fn production(&mut self, code: &str, n: usize) {
+        let Some((start, end)) = arrow(code) else {
+            return;
+        };
+        let left = code[..start].trim();
+        let mut right = code[end..].trim();
+        let (pattern, condition_part) = match top_level(left, ":") {
+            Some(i) => (left[..i].trim(), left[i + 1..].trim()),
+            None => (left, ""),
+        };
+        // Blocks `{…}` before and after the condition, and the condition between them.
+        let mut env = Env::new();
+        let mut condition = String::new();
+        let mut rest = condition_part;
+        let mut post = None;
+        while !rest.is_empty() {
+            if let Some(inner) = rest.strip_prefix('{') {
+                let Some(close) = inner.find('}') else {
+                    self.note(n, "a '{' block is never closed; the production is skipped");
+                    return;
+                };
+                let block = &inner[..close];
+                if condition.trim().is_empty() {
+                    if let Err(why) = self.block(block, &mut env) {
+                        self.note(n, format!("{why}; the production is skipped"));
+                        return;
+                    }
+                } else {
+                    post = Some(block.to_string());
+                }
+                rest = inner[close + 1..].trim_start();
+            } else {
+                let stop = rest.find('{').unwrap_or(rest.len());
+                condition.push_str(&rest[..stop]);
+                rest = &rest[stop..];
+            }
+        }
+        let condition = condition.trim();
+        let condition = if condition.is_empty() || condition == "*" {
+            None
+        } else {
+            match self.expression(condition, &env) {
+                Ok(c) => Some(c),
+                Err(why) => {
+                    self.note(
+                        n,
+                        format!("the condition {condition}: {why}; the production is skipped"),
+                    );
+                    return;
+                }
+            }
+        };
+        if let Some(block) = post {
+            if let Err(why) = self.block(&block, &mut env) {
+                self.note(n, format!("{why}; the production is skipped"));
+                return;
+            }
+        }
+        // cpfg's probability after the successor: `--> succ : 0.3`.
+        let mut weight = None;
+        if let Some(i) = top_level(right, ":") {
+            match self.expression(right[i + 1..].trim(), &env) {
+                Ok(w) => weight = Some(w),
+                Err(why) => {
+                    self.note(
+                        n,
+                        format!("the probability: {why}; the production is skipped"),
+                    );
+                    return;
+                }
+            }
+            right = right[..i].trim();
+        }
+        let result = self.pattern(pattern, n).and_then(|p| {
+            let s = if right.is_empty() || right == "*" {
+                String::new()
+            } else {
+                self.modules(right, &env, n)?
+            };
+            Ok((p, s))
+        });
+        match result {
+            Ok((p, s)) => {
+                let mut text = p;
+                if let Some(c) = condition {
+                    text.push_str(&format!(" : {c}"));
+                }
+                text.push_str(" ->");
+                if let Some(w) = weight {
+                    text.push_str(&format!(" ({w})"));
+                }
+                if s.is_empty() {
+                    text.push_str(" ε");
+                } else {
+                    text.push(' ');
+                    text.push_str(&separate(&s));
+                }
+                self.out.line(text, n);
+            }
+            Err(why) => self.note(n, format!("{why}; the production is skipped")),
+        }
+    }
+
+    /// A production's left side: contexts and predecessor (formal parameters are names).
+    fn pattern(&mut self, pattern: &str, n: usize) -> Result<String, String> {
+        let strict = {
+            let after = top_level(pattern, "<").map_or(pattern, |i| &pattern[i + 1..]);
+            top_level(after, ">").map_or(after, |i| &after[..i]).trim()
+        };
+        let (width, target) = match self.flavour {
+            Flavour::Cpfg => ('#', "!"),
+            Flavour::Lpy => ('_', "!"),
+        };
+        for (symbol, meristem) in [(width, target), (',', ";")] {
+            if strict.starts_with(symbol) {
+                self.note(
+                    n,
+                    format!(
+                        "a production for {}'s '{symbol}' becomes one for Meristem's '{meristem}', which also stands for the dialect's own '{meristem}': it rewrites those modules too",
+                        self.flavour.tool()
+                    ),
+                );
+            }
+        }
+        let mut parts = Vec::new();
+        let mut rest = pattern;
+        if let Some(i) = top_level(rest, "<") {
+            parts.push(self.modules(&rest[..i], &Env::new(), n)?);
+            parts.push("<".into());
+            rest = &rest[i + 1..];
+        }
+        if let Some(i) = top_level(rest, ">") {
+            parts.push(self.modules(&rest[..i], &Env::new(), n)?);
+            parts.push(">".into());
+            parts.push(self.modules(&rest[i + 1..], &Env::new(), n)?);
+        } else {
+            parts.push(self.modules(rest, &Env::new(), n)?);
+        }
+        Ok(parts
+            .into_iter()
+            .map(|p| if p.is_empty() { "*".to_string() } else { p })
+            .collect::<Vec<_>>()
+            .join(" "))
+    }
+
+    /// A statement block: assignments `x = e;` (also `+=` …), in order.
+    fn block(&mut self, block: &str, env: &mut Env) -> Result<(), String> {
+        for statement in block.split(';').map(str::trim).filter(|s| !s.is_empty()) {
+            let (target, op, value) = ["+=", "-=", "*=", "/=", "="]
+                .iter()
+                .find_map(|op| {
+                    statement
+                        .split_once(op)
+                        .map(|(t, v)| (t.trim(), *op, v.trim()))
+                })
+                .ok_or_else(|| format!("the statement '{statement}' is not an assignment"))?;
+            if !is_identifier(target) || value.starts_with('=') {
+                return Err(format!("the statement '{statement}' is not an assignment"));
+            }
+            let value = self.expression(value, env)?;
+            let value = match op {
+                "=" => value,
+                _ => {
+                    let old = env
+                        .get(target)
+                        .cloned()
+                        .unwrap_or_else(|| target.to_string());
+                    format!("{old}{}({value})", &op[..1])
+                }
+            };
+            env.insert(target.to_string(), format!("({value})"));
+        }
+        Ok(())
+    }
+
+    /// L-Py: a production with a Python body of `if`/`elif`/`else` and `produce`.
+    fn python_production(&mut self, pattern: &str, body: &[Line], n: usize) {
+        let mut branches: Vec<(Option<String>, String, usize)> = Vec::new();
+        let mut pending: Option<(Option<String>, usize)> = None;
+        let lines: Vec<&Line> = body.iter().filter(|l| !l.code.is_empty()).collect();
+        for line in lines {
+            let code = line.code.as_str();
+            let (head, tail) = match code.find(':') {
+                Some(i)
+                    if code.starts_with("if ")
+                        || code.starts_with("elif ")
+                        || code.starts_with("else") =>
+                {
+                    (&code[..i], code[i + 1..].trim())
+                }
+                _ => ("", code),
+            };
+            if !head.is_empty() {
+                let condition = if head.trim() == "else" {
+                    None
+                } else {
+                    let c = head
+                        .trim_start_matches("elif ")
+                        .trim_start_matches("if ")
+                        .trim();
+                    match self.expression(c, &Env::new()) {
+                        Ok(c) => Some(c),
+                        Err(why) => {
+                            self.note(
+                                line.n,
+                                format!("the condition {c}: {why}; the production is skipped"),
+                            );
+                            return;
+                        }
+                    }
+                };
+                if tail.is_empty() {
+                    pending = Some((condition, line.n));
+                    continue;
+                }
+                match produce(tail) {
+                    Some(s) => branches.push((condition, s.to_string(), line.n)),
+                    None => {
+                        self.note(line.n, format!("the Python code '{tail}' is not translated; the production is skipped"));
+                        return;
+                    }
+                }
+                continue;
+            }
+            match produce(code) {
+                Some(s) => {
+                    let condition = pending.take().and_then(|(c, _)| c);
+                    branches.push((condition, s.to_string(), line.n));
+                }
+                None => {
+                    self.note(line.n, format!("the Python code '{code}' is not translated (Meristem imports bodies made of if, elif, else and produce); the production is skipped"));
+                    return;
+                }
+            }
+        }
+        if branches.is_empty() {
+            self.note(n, "a Python production that produces nothing; skipped");
+            return;
+        }
+        for (condition, successor, line) in branches {
+            let successor = if successor.trim().is_empty() {
+                "*".to_string()
+            } else {
+                successor
+            };
+            let text = match condition {
+                Some(c) => format!("{pattern} : {c} --> {successor}"),
+                None => format!("{pattern} --> {successor}"),
+            };
+            self.production(&text, line);
+        }
+    }
+
+    /// Translates an expression (cpfg's C, L-Py's Python) with `env`'s names substituted.
+    fn expression(&mut self, text: &str, env: &Env) -> Result<String, String> {
+        let text = text.trim();
+        if self.flavour == Flavour::Lpy {
+            // Python's conditional expression `a if c else b`.
+            if let (Some(i), Some(e)) = (find_word(text, "if"), find_word(text, "else")) {
+                if i < e {
+                    let a = self.expression(&text[..i], env)?;
+                    let c = self.expression(&text[i + 2..e], env)?;
+                    let b = self.expression(&text[e + 4..], env)?;
+                    return Ok(format!("({c}?{a}:{b})"));
+                }
+            }
+        }
+        let chars: Vec<char> = text.chars().collect();
+        let mut out = String::new();
+        let mut i = 0;
+        while i < chars.len() {
+            let c = chars[i];
+            if c == '\'' || c == '"' {
+                return Err("a string is not a number".into());
+            }
+            if c.is_ascii_digit()
+                || (c == '.' && chars.get(i + 1).is_some_and(char::is_ascii_digit))
+            {
+                let start = i;
+                while i < chars.len()
+                    && (chars[i].is_ascii_alphanumeric()
+                        || chars[i] == '.'
+                        || ((chars[i] == '-' || chars[i] == '+')
+                            && matches!(chars[i - 1], 'e' | 'E')))
+                {
+                    i += 1;
+                }
+                out.push_str(&chars[start..i].iter().collect::<String>());
+                continue;
+            }
+            if c.is_ascii_alphabetic() || c == '_' {
+                let start = i;
+                while i < chars.len()
+                    && (chars[i].is_ascii_alphanumeric() || chars[i] == '_' || chars[i] == '.')
+                {
+                    i += 1;
+                }
+                let mut word: String = chars[start..i].iter().collect();
+                if self.flavour == Flavour::Lpy {
+                    for prefix in ["math.", "random.", "np.", "numpy."] {
+                        if let Some(w) = word.strip_prefix(prefix) {
+                            word = w.to_string();
+                        }
+                    }
+                }
+                if word.contains('.') {
+                    return Err(format!("'{word}' is Python, not a number expression"));
+                }
+                let mut j = i;
+                while j < chars.len() && chars[j] == ' ' {
+                    j += 1;
+                }
+                if chars.get(j) == Some(&'(') {
+                    let close = matching(&chars, j).ok_or("a '(' is never closed")?;
+                    let inner: String = chars[j + 1..close].iter().collect();
+                    let mut args = Vec::new();
+                    for arg in split_top(&inner, ',') {
+                        if !arg.trim().is_empty() {
+                            args.push(self.expression(arg, env)?);
+                        }
+                    }
+                    out.push_str(&self.call(&word, &args)?);
+                    i = close + 1;
+                    continue;
+                }
+                if let Some(value) = env.get(&word) {
+                    out.push_str(value);
+                    continue;
+                }
+                let replacement = match (self.flavour, word.as_str()) {
+                    (Flavour::Lpy, "and") => "&&".to_string(),
+                    (Flavour::Lpy, "or") => "||".to_string(),
+                    (Flavour::Lpy, "not") => "!".to_string(),
+                    (Flavour::Lpy, "True") => "1".to_string(),
+                    (Flavour::Lpy, "False") => "0".to_string(),
+                    (Flavour::Lpy, "pi") => "3.14159265359".to_string(),
+                    (Flavour::Lpy, "None") => return Err("None is not a number".into()),
+                    _ => word,
+                };
+                if replacement.chars().all(|c| c.is_ascii_alphabetic())
+                    && !out.is_empty()
+                    && out.ends_with(|c: char| c.is_ascii_alphanumeric())
+                {
+                    out.push(' ');
+                }
+                out.push_str(&replacement);
+                continue;
+            }
+            let two: String = chars[i..(i + 2).min(chars.len())].iter().collect();
+            match (self.flavour, two.as_str(), c) {
+                (Flavour::Lpy, "**", _) => {
+                    out.push('^');
+                    i += 2;
+                }
+                (Flavour::Lpy, "//", _) => {
+                    return Err("Python's floor division // is not translated".into())
+                }
+                (Flavour::Lpy, _, '^') => {
+                    return Err("Python's ^ is a bitwise or, not a power".into())
+                }
+                (_, _, '[' | ']' | '{' | '}' | ';' | '`' | '$' | '@' | '#') => {
+                    return Err(format!("'{c}' in an expression"));
+                }
+                _ => {
+                    out.push(c);
+                    i += 1;
+                }
+            }
+        }
+        Ok(out)
+    }
+
+    /// A function call in Meristem's terms.
+    fn call(&mut self, name: &str, args: &[String]) -> Result<String, String> {
+        let a = |k: usize| args.get(k).cloned().unwrap_or_default();
+        let all = args.join(",");
+        Ok(match (self.flavour, name) {
+            (Flavour::Lpy, "sin" | "cos" | "tan") => format!("{name}(({})*{DEGREES})", a(0)),
+            (Flavour::Lpy, "asin" | "acos" | "atan" | "atan2") => {
+                format!("({name}({all})/{DEGREES})")
+            }
+            (Flavour::Lpy, "radians") => format!("(({})/{DEGREES})", a(0)),
+            (Flavour::Lpy, "degrees") => format!("(({})*{DEGREES})", a(0)),
+            (Flavour::Lpy, "random") if args.is_empty() => "uniform(0,1)".into(),
+            (Flavour::Lpy, "randint") => format!("uniform_int({all})"),
+            (Flavour::Lpy, "gauss" | "normalvariate") => format!("normal({all})"),
+            (Flavour::Lpy, "expovariate") => format!("exponential({all})"),
+            (Flavour::Lpy, "float") => format!("({})", a(0)),
+            (Flavour::Lpy, "int") | (Flavour::Cpfg, "trunc") => {
+                format!("(({0})<0?ceil({0}):floor({0}))", a(0))
+            }
+            (Flavour::Lpy, "pow") => format!("(({})^({}))", a(0), a(1)),
+            (Flavour::Cpfg, "func" | "tfunc") => {
+                return Err(format!(
+                    "cpfg's {name}(…) reads a function from the model's function file, which is not part of the L-system"
+                ))
+            }
+            (Flavour::Cpfg, "ran") => format!("uniform(0,{})", a(0)),
+            (Flavour::Cpfg, "nran") => format!("normal({all})"),
+            (_, "fabs") => format!("abs({all})"),
+            _ => format!("{name}({all})"),
+        })
+    }
+
+    /// Translates a module string; modules are written without spaces.
+    fn modules(&mut self, text: &str, env: &Env, n: usize) -> Result<String, String> {
+        let chars: Vec<char> = text.chars().collect();
+        let mut out = String::new();
+        let mut i = 0;
+        while i < chars.len() {
+            let c = chars[i];
+            if c.is_whitespace() {
+                i += 1;
+                continue;
+            }
+            let start = i;
+            let name: String = if c == '@' || c == '~' || c == '?' {
+                i += 1;
+                if c == '@' {
+                    while i < chars.len() && chars[i].is_ascii_alphabetic() {
+                        i += 1;
+                    }
+                    // cpfg's `@!`, `@#`: one symbol after the '@'.
+                    if i == start + 1
+                        && i < chars.len()
+                        && !chars[i].is_whitespace()
+                        && chars[i] != '('
+                    {
+                        i += 1;
+                    }
+                } else if chars.get(i).is_some_and(char::is_ascii_alphabetic) {
+                    i += 1;
+                }
+                chars[start..i].iter().collect()
+            } else if c.is_ascii_alphabetic() && self.flavour == Flavour::Lpy {
+                let rest: String = chars[i..].iter().collect();
+                let candidates: Vec<String> = self
+                    .declared
+                    .iter()
+                    .cloned()
+                    .chain(LPY_NAMES.iter().map(|(long, _)| long.to_string()))
+                    .collect();
+                let long = candidates
+                    .iter()
+                    .filter(|d| {
+                        rest.starts_with(d.as_str())
+                            && !rest[d.len()..].starts_with(|c: char| c.is_ascii_alphanumeric())
+                    })
+                    .max_by_key(|d| d.len())
+                    .cloned();
+                let word_len = rest
+                    .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+                    .unwrap_or(rest.len());
+                match long {
+                    Some(name) => {
+                        i += name.chars().count();
+                        name
+                    }
+                    // A longer word followed by '(' is one module in L-Py (an undeclared name).
+                    None if word_len > 1
+                        && rest[word_len..].trim_start().starts_with('(')
+                        && rest[..word_len].chars().all(|c| c.is_ascii_alphabetic()) =>
+                    {
+                        let word = rest[..word_len].to_string();
+                        if !self.unknown_names.contains(&word) {
+                            self.unknown_names.push(word.clone());
+                            self.declared.push(word.clone());
+                            self.note(
+                                n,
+                                format!("'{word}' is not a module Meristem knows; kept as a module its turtle ignores (#module {word})"),
+                            );
+                        }
+                        i += word_len;
+                        word
+                    }
+                    None => {
+                        i += 1;
+                        c.to_string()
+                    }
+                }
+            } else {
+                i += 1;
+                c.to_string()
+            };
+            // Parameters.
+            let mut j = i;
+            while j < chars.len() && chars[j] == ' ' {
+                j += 1;
+            }
+            let mut params = Vec::new();
+            let mut has_params = false;
+            if chars.get(j) == Some(&'(') {
+                let close = matching(&chars, j).ok_or("a '(' is never closed")?;
+                let inner: String = chars[j + 1..close].iter().collect();
+                has_params = true;
+                for arg in split_top(&inner, ',') {
+                    params.push(self.expression(arg, env)?);
+                }
+                i = close + 1;
+            }
+            out.push_str(&self.module(&name, params, has_params, n));
+        }
+        Ok(out)
+    }
+
+    /// One module with its parameters, renamed where the dialect's meaning is Meristem's other
+    /// symbol.
+    fn module(&mut self, name: &str, params: Vec<String>, has_params: bool, n: usize) -> String {
+        let with = |m: &str, p: &[String]| {
+            if p.is_empty() {
+                m.to_string()
+            } else {
+                format!("{m}({})", p.join(","))
+            }
+        };
+        let tool = self.flavour.tool();
+        let width = match self.flavour {
+            Flavour::Cpfg => "#",
+            Flavour::Lpy => "_",
+        };
+        if name == width {
+            if has_params {
+                return with("!", &params);
+            }
+            self.note_once(
+                "width+",
+                n,
+                format!("{tool}'s '{width}' without a value widens by the width increment; Meristem has no such command; dropped"),
+            );
+            return String::new();
+        }
+        if name == "," {
+            return if has_params {
+                with(";", &params)
+            } else {
+                "'(-1)".into()
+            };
+        }
+        if let Some((_, m)) = LPY_NAMES.iter().find(|(l, _)| *l == name) {
+            return with(m, &params);
+        }
+        if name.starts_with('@') && !KNOWN_AT.contains(&name) {
+            if !name[1..].chars().all(|c| c.is_ascii_alphabetic()) || name.len() == 1 {
+                self.note_once(
+                    name,
+                    n,
+                    format!("{tool}'s {name} is not a Meristem command; dropped"),
+                );
+                return String::new();
+            }
+            self.note_once(
+                name,
+                n,
+                format!("{tool}'s {name} is not a Meristem command; kept as a module the turtle ignores"),
+            );
+        }
+        if name.starts_with('~') && name != "~l" && name != "~p" {
+            self.note_once(
+                name,
+                n,
+                format!("{name} names a surface from a file; Meristem draws only ~l and ~p, so it is kept as a module the turtle ignores"),
+            );
+        }
+        if name.chars().count() > 1
+            && name.chars().all(|c| c.is_ascii_alphanumeric())
+            && !self.declared.iter().any(|d| d == name)
+        {
+            self.declared.push(name.to_string());
+        }
+        with(name, &params)
+    }
+}
+
+/// `derivation length: 5` -> `Some(" 5")` (case-insensitive keyword).
+fn keyword<'a>(lower: &str, code: &'a str, keyword: &str) -> Option<&'a str> {
+    let compact: String = lower.chars().filter(|c| !c.is_whitespace()).collect();
+    let key: String = keyword.chars().filter(|c| !c.is_whitespace()).collect();
+    if !compact.starts_with(&key) {
+        return None;
+    }
+    let colon = code.find(':')?;
+    Some(&code[colon + 1..])
+}
+
+/// The section a line starts, in Meristem's words.
+fn section(lower: &str) -> Option<&'static str> {
+    let word = lower.split(':').next().unwrap_or("").trim();
+    let rest_ok = |w: &str| {
+        let after = lower[w.len()..].trim_start_matches(':').trim();
+        after.is_empty() || after == "no warnings"
+    };
+    match word {
+        "homomorphism" if rest_ok("homomorphism") => Some("homomorphism:"),
+        "interpretation" if rest_ok("interpretation") => Some("homomorphism:"),
+        "decomposition" if rest_ok("decomposition") => Some("decomposition:"),
+        "production" if rest_ok("production") => Some("productions:"),
+        "productions" if rest_ok("productions") => Some("productions:"),
+        _ => None,
+    }
+}
+
+/// `A(t) :` -> `Some("A(t)")` when the line is a Python production's header.
+fn python_production_header(code: &str) -> Option<&str> {
+    let pattern = code.strip_suffix(':')?.trim();
+    let first = pattern
+        .split(|c: char| !c.is_ascii_alphanumeric() && c != '_')
+        .next()?;
+    let python = [
+        "def", "if", "elif", "else", "for", "while", "class", "with", "try", "except", "finally",
+    ];
+    (!pattern.is_empty() && !python.contains(&first)).then_some(pattern)
+}
+
+/// `F(x) : produce F(x/3)` -> (`F(x)`, `F(x/3)`).
+fn inline_produce(code: &str) -> Option<(&str, &str)> {
+    let i = top_level(code, ":")?;
+    let successor = produce(code[i + 1..].trim())?;
+    Some((code[..i].trim(), successor))
+}
+
+/// The successor of a `produce` statement.
+fn produce(code: &str) -> Option<&str> {
+    let rest = code.strip_prefix("produce")?;
+    (rest.is_empty() || rest.starts_with(char::is_whitespace)).then(|| rest.trim())
+}
+
+/// The index of the ')' that closes the '(' at `open`.
+fn matching(chars: &[char], open: usize) -> Option<usize> {
+    let mut depth = 0;
+    for (k, &c) in chars.iter().enumerate().skip(open) {
+        match c {
+            '(' => depth += 1,
+            ')' => {
+                depth -= 1;
+                if depth == 0 {
+                    return Some(k);
+                }
+            }
+            _ => {}
+        }
+    }
+    None
+}
+
+/// Splits at `sep` outside parentheses.
+fn split_top(text: &str, sep: char) -> Vec<&str> {
+    let mut parts = Vec::new();
+    let mut depth = 0i32;
+    let mut start = 0;
+    for (i, c) in text.char_indices() {
+        match c {
+            '(' => depth += 1,
+            ')' => depth -= 1,
+            c if c == sep && depth == 0 => {
+                parts.push(&text[start..i]);
+                start = i + 1;
+            }
+            _ => {}
+        }
+    }
+    parts.push(&text[start..]);
+    parts
+}
+
+/// The byte index of `word` standing alone (not part of a longer name), outside parentheses.
+fn find_word(text: &str, word: &str) -> Option<usize> {
+    let bytes = text.as_bytes();
+    let mut depth = 0i32;
+    for (i, c) in text.char_indices() {
+        match c {
+            '(' => depth += 1,
+            ')' => depth -= 1,
+            _ => {}
+        }
+        if depth == 0 && text[i..].starts_with(word) {
+            let before = i == 0 || !(bytes[i - 1].is_ascii_alphanumeric() || bytes[i - 1] == b'_');
+            let end = i + word.len();
+            let after =
+                end >= bytes.len() || !(bytes[end].is_ascii_alphanumeric() || bytes[end] == b'_');
+            if before && after {
+                return Some(i);
+            }
+        }
+    }
+    None
+}
+
+/// The module names of a translated module string (for `#ignore`, `#consider`).
+fn module_names(modules: &str) -> Vec<String> {
+    let (file, _) = crate::syntax::parse(&format!("axiom: {modules}"));
+    file.axiom
+        .map(|(m, _)| m.into_iter().map(|m| m.name).collect())
+        .unwrap_or_default()
+}
+
+/// A string that starts with exactly two rolls is written `/ /…`, so that Meristem does not read
+/// `//` after a space as a comment.
+fn separate(s: &str) -> String {
+    if s.starts_with("//") && !s.starts_with("///") {
+        format!("/ {}", &s[1..])
+    } else {
+        s.to_string()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn body(import: &Import) -> Vec<&str> {
+        import
+            .text
+            .lines()
+            .filter(|l| !l.starts_with("//") && !l.is_empty())
+            .collect()
+    }
+
+    fn resolves(import: &Import) {
+        let (file, d) = crate::syntax::parse(&import.text);
+        let (_, r) = crate::model::resolve(&file);
+        assert!(
+            !crate::diagnostics::has_errors(&d) && !crate::diagnostics::has_errors(&r),
+            "{}\n{d:?}{r:?}",
+            import.text
+        );
+    }
+
+    #[test]
+    fn cpfg_blocks_are_substituted_and_probabilities_become_weights() {
+        let import = import(
+            "#define STEPS 4 /* steps */\n#define R 1.3\nLsystem: 1\nderivation length: STEPS\nignore: +-/\nAxiom: #(0.05)A(0)\nA(t) : {t=t-1;} t>0 --> \n\tI(t)[+(45)A(t)]\nM(t) : 1 {x=0.5*R^t; x+=1;} --> I(x)M(t)\nF --> F[+F]F : 0.3\nB --> *\ndecomposition\nmaximum depth: 2\nhomomorphism: no warnings\nI(x) --> F(x)\nendlsystem\n",
+            Flavour::Cpfg,
+        );
+        resolves(&import);
+        assert_eq!(
+            body(&import),
+            [
+                "#define STEPS 4 // steps",
+                "#define R 1.3",
+                "derivation length: STEPS",
+                "#ignore + - /",
+                "axiom: !(0.05)A(0)",
+                "A(t) : (t-1)>0 -> I((t-1))[+(45)A((t-1))]",
+                "M(t) : 1 -> I(((0.5*R^t)+(1)))M(t)",
+                "F -> (0.3) F[+F]F",
+                "B -> ε",
+                "decomposition:",
+                "maximum depth: 2",
+                "homomorphism:",
+                "I(x) -> F(x)",
+                "endlsystem",
+            ]
+        );
+        assert!(import.notes.is_empty(), "{:?}", import.notes);
+    }
+
+    #[test]
+    fn lpy_python_becomes_defines_and_conditional_productions() {
+        let import = import(
+            "import math\nR = 1.456\nh = (0.3*0.7) ** 0.5\n__authors__ = 'C. Godin'\n\nAxiom: _(0.01) ,(2) A(1)\nderivation length: 3\nproduction:\nA(s) --> F(s)[+(85)A(s/R)][-(85)A(s/R)]\nB(t) :\n    if t < 2 and not t == 1: produce B(t+1)\n    elif t == 2:\n        produce C(t if t > 1 else 0)\n    else: produce *\nF(x) : produce F(x/3.)+(60)F(x/3.)\ninterpretation:\nC(t) --> F(sin(t))\nendlsystem\ndef End():\n    print('x')\n",
+            Flavour::Lpy,
+        );
+        resolves(&import);
+        assert_eq!(
+            body(&import),
+            [
+                "#define R 1.456",
+                "#define h (0.3*0.7) ^ 0.5",
+                "axiom: !(0.01);(2)A(1)",
+                "derivation length: 3",
+                "productions:",
+                "A(s) -> F(s)[+(85)A(s/R)][-(85)A(s/R)]",
+                "B(t) : t < 2 && ! t == 1 -> B(t+1)",
+                "B(t) : t == 2 -> C((t > 1?t:0))",
+                "B(t) -> ε",
+                "F(x) -> F(x/3.)+(60)F(x/3.)",
+                "homomorphism:",
+                "C(t) -> F(sin((t)*57.2957795131))",
+                "endlsystem",
+            ]
+        );
+        let notes: Vec<(usize, &str)> = import
+            .notes
+            .iter()
+            .map(|n| (n.line, n.message.as_str()))
+            .collect();
+        assert_eq!(notes.len(), 2, "{notes:?}");
+        assert!(notes[0].0 == 1 && notes[0].1.contains("imports"));
+        assert!(notes[1].0 == 19 && notes[1].1.contains("'End'"));
+        assert!(import.text.contains("// authors: C. Godin"));
+    }
+
+    #[test]
+    fn what_cannot_be_translated_is_reported_at_its_line() {
+        let import = import(
+            "#include \"x.h\"\n#define f(x) x\nAxiom: A(1)\nA(t) : {if (t>1) t=2;} t>0 --> B\nA(t) --> @c(1)~k(2)F(frob(1,t))\nendlsystem\nLsystem: 2\n",
+            Flavour::Cpfg,
+        );
+        resolves(&import);
+        let lines: Vec<usize> = import.notes.iter().map(|n| n.line).collect();
+        assert_eq!(lines, [1, 2, 4, 5, 5, 5, 7], "{:?}", import.notes);
+        assert!(import
+            .text
+            .contains("// not imported: A(t) -> @c(1)~k(2)F(frob(1,t))"));
+    }
+
+    #[test]
+    fn lpy_bodies_with_other_code_are_skipped_whole() {
+        let import = import(
+            "Axiom: A(0)\nA(t) :\n    x = t + 1\n    produce A(x)\nA(t) :\n    nproduce B\n",
+            Flavour::Lpy,
+        );
+        resolves(&import);
+        assert_eq!(body(&import), ["axiom: A(0)"]);
+        assert_eq!(import.notes.len(), 2);
+    }
+
+    #[test]
+    fn odd_input_never_panics() {
+        for text in [
+            "",
+            "Axiom:",
+            "-->",
+            "A --> B(",
+            "A(t) : {x= --> B",
+            "Axiom: A\nA :\n",
+            "if",
+            "x = 'a'\nAxiom: F(\"a\")",
+            "Axiom: A\nA --> B : \n",
+        ] {
+            for flavour in [Flavour::Cpfg, Flavour::Lpy] {
+                let import = import(text, flavour);
+                let (file, _) = crate::syntax::parse(&import.text);
+                if file.axiom.is_some() {
+                    let (_, d) = crate::model::resolve(&file);
+                    assert!(
+                        !crate::diagnostics::has_errors(&d),
+                        "{text:?}: {d:?}\n{}",
+                        import.text
+                    );
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,390 @@
+//! Importers: other L-system notations translated into Meristem's language (text in, text out),
+//! with a note for every construct that could not be translated, at its line.
+//!
+//! One module per dialect: [`green`] (Green's RL-systems), [`lparser`] (Laurens Lapré's Lparser
+//! `.ls`, positional and keyword formats), [`cpfg`] (the common subset of cpfg `.l` and L-Py
+//! `.lpy`). Each builds its output with an [`Output`], whose [`Output::finish`] checks the text
+//! with Meristem's own parser and resolver: a line Meristem rejects is commented out and reported,
+//! so an import never hands the editor a grammar with errors unless it has no axiom at all.
+//! Like the rest of the core, nothing here does IO or panics on any input.
+
+mod cpfg;
+mod green;
+mod lparser;
+
+use crate::diagnostics::{has_errors, LineIndex, Severity};
+use serde::Serialize;
+
+/// A notation the importers read.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Dialect {
+    /// Green's RL-systems: `SYSTEM DECLARATIONS AXIOM RULES END.` (Lluch et al.).
+    Green,
+    /// Laurens Lapré's Lparser `.ls`, the positional (1.x-4.x) and the keyword (2.x) format.
+    Lparser,
+    /// cpfg `.l` (the Virtual Laboratory's plant simulator).
+    Cpfg,
+    /// L-Py `.lpy` (OpenAlea).
+    Lpy,
+}
+
+impl Dialect {
+    /// Every dialect, in the order of the documentation.
+    pub const ALL: [Dialect; 4] = [
+        Dialect::Green,
+        Dialect::Lparser,
+        Dialect::Cpfg,
+        Dialect::Lpy,
+    ];
+
+    /// The name used by `--from` and the wasm boundary: `green`, `lparser`, `cpfg`, `lpy`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Dialect::Green => "green",
+            Dialect::Lparser => "lparser",
+            Dialect::Cpfg => "cpfg",
+            Dialect::Lpy => "lpy",
+        }
+    }
+
+    /// The dialect of a name (case-insensitive), or `None`.
+    pub fn from_name(name: &str) -> Option<Dialect> {
+        Dialect::ALL
+            .into_iter()
+            .find(|d| d.name().eq_ignore_ascii_case(name.trim()))
+    }
+}
+
+/// Something the importer could not translate (or translated only approximately), at a 1-based
+/// line of the imported text (0 when it concerns the whole file).
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct ImportNote {
+    pub line: usize,
+    pub message: String,
+}
+
+/// The result of an import: Meristem text, and the notes.
+#[derive(Clone, Debug, Default, PartialEq, Eq, Serialize)]
+pub struct Import {
+    pub text: String,
+    pub notes: Vec<ImportNote>,
+}
+
+impl Import {
+    /// True when nothing could be imported: the text has no axiom to derive.
+    pub fn is_empty(&self) -> bool {
+        crate::syntax::parse(&self.text).0.axiom.is_none()
+    }
+}
+
+/// Translates `text`, written in `dialect`, into Meristem's language.
+pub fn import(text: &str, dialect: Dialect) -> Import {
+    match dialect {
+        Dialect::Green => green::import(text),
+        Dialect::Lparser => lparser::import(text),
+        Dialect::Cpfg => cpfg::import(text, cpfg::Flavour::Cpfg),
+        Dialect::Lpy => cpfg::import(text, cpfg::Flavour::Lpy),
+    }
+}
+
+/// Guesses the dialect of a file from its name's extension (`.ls` Lparser, `.l` cpfg, `.lpy`
+/// L-Py), else from its content (Green's `SYSTEM … RULES … END.`, Lparser's keywords or its
+/// numeric header and `@` end mark, L-Py's `production:`/`interpretation:` sections or Python
+/// assignments, cpfg's `Lsystem:`). `None` for Meristem's own `.lsys` and for text that is none of
+/// these. `file_name` may be empty.
+pub fn detect(text: &str, file_name: &str) -> Option<Dialect> {
+    let lower = file_name.to_ascii_lowercase();
+    let extension = lower.rsplit_once('.').map(|(_, e)| e).unwrap_or("");
+    match extension {
+        "ls" => return Some(Dialect::Lparser),
+        "l" => return Some(Dialect::Cpfg),
+        "lpy" => return Some(Dialect::Lpy),
+        "lsys" => return None,
+        _ => {}
+    }
+    let lines: Vec<&str> = text.lines().map(str::trim).collect();
+    let upper = |l: &&str| l.to_ascii_uppercase();
+    if lines.iter().any(|l| upper(l) == "RULES")
+        && lines
+            .iter()
+            .any(|l| upper(l) == "SYSTEM" || upper(l).starts_with("SYSTEM "))
+    {
+        return Some(Dialect::Green);
+    }
+    let content: Vec<&str> = lines
+        .iter()
+        .copied()
+        .filter(|l| !l.is_empty() && !l.starts_with('#'))
+        .collect();
+    let keyword = |l: &&str| {
+        let word = l.split_whitespace().next().unwrap_or("");
+        matches!(word, "recursion" | "rule" | "axiom" | "angle" | "thickness")
+    };
+    if content.iter().filter(|l| keyword(l)).count() >= 2
+        && content.iter().any(|l| l.starts_with("rule "))
+    {
+        return Some(Dialect::Lparser);
+    }
+    let numeric = |l: &str| {
+        l.split(|c: char| c.is_whitespace() || c == '#')
+            .next()
+            .is_some_and(|w| w.parse::<f64>().is_ok())
+    };
+    if content.len() >= 4
+        && content[..3].iter().all(|l| numeric(l))
+        && content.iter().any(|l| l.starts_with('@'))
+    {
+        return Some(Dialect::Lparser);
+    }
+    let has = |prefix: &str| {
+        lines
+            .iter()
+            .any(|l| l.to_ascii_lowercase().starts_with(prefix))
+    };
+    let python_assignment = lines.iter().any(|l| {
+        l.split_once('=').is_some_and(|(left, right)| {
+            let name = left.trim();
+            !right.starts_with('=')
+                && !name.is_empty()
+                && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+                && !name.starts_with(|c: char| c.is_ascii_digit())
+        })
+    });
+    if has("axiom:") {
+        if has("production:") || has("interpretation:") || has("def ") || python_assignment {
+            return Some(Dialect::Lpy);
+        }
+        if has("lsystem:") || has("derivation length") || has("#define") {
+            return Some(Dialect::Cpfg);
+        }
+    }
+    None
+}
+
+/// The text an importer writes, line by line, each line remembering the line of the imported
+/// text it came from (for notes about it).
+#[derive(Debug, Default)]
+pub(crate) struct Output {
+    lines: Vec<(String, usize)>,
+    notes: Vec<ImportNote>,
+}
+
+/// How many times [`Output::finish`] re-checks after commenting out rejected lines.
+const MAX_REPAIRS: usize = 64;
+
+impl Output {
+    /// Appends one line (which must not contain a newline) that came from source line `source`
+    /// (0: from no particular line).
+    pub fn line(&mut self, text: impl Into<String>, source: usize) {
+        let text: String = text.into();
+        // A newline would shift every later line: keep any extra text as lines of their own.
+        for part in text.split('\n') {
+            self.lines.push((part.to_string(), source));
+        }
+    }
+
+    /// Appends a `// …` comment line (comment markers inside are defused).
+    pub fn comment(&mut self, text: &str, source: usize) {
+        self.line(format!("// {}", defuse_comment(text)), source);
+    }
+
+    /// Records a note at source line `line`.
+    pub fn note(&mut self, line: usize, message: impl Into<String>) {
+        self.notes.push(ImportNote {
+            line,
+            message: message.into(),
+        });
+    }
+
+    /// Checks the text with Meristem's parser and resolver; every line holding an error is
+    /// commented out (`// not imported: …`) with a note at its source line, and the check runs
+    /// again, until the text resolves or only errors without a line are left. Notes are sorted
+    /// by line (stable).
+    pub fn finish(mut self) -> Import {
+        for _ in 0..MAX_REPAIRS {
+            let text = self.text();
+            let (file, mut diagnostics) = crate::syntax::parse(&text);
+            diagnostics.extend(crate::model::resolve(&file).1);
+            if !has_errors(&diagnostics) {
+                break;
+            }
+            let index = LineIndex::new(&text);
+            let mut repaired = false;
+            let mut seen = Vec::new();
+            for d in diagnostics.iter().filter(|d| d.severity == Severity::Error) {
+                if d.code == "E0300" {
+                    let message = "nothing to derive: no axiom could be imported".to_string();
+                    if !self.notes.iter().any(|n| n.message == message) {
+                        self.note(0, message);
+                    }
+                    continue;
+                }
+                let (line, _) = index.line_column(d.span.start);
+                let Some((content, source)) = self.lines.get(line - 1).cloned() else {
+                    continue;
+                };
+                if seen.contains(&line) || content.trim_start().starts_with("//") {
+                    continue;
+                }
+                seen.push(line);
+                self.lines[line - 1].0 = format!("// not imported: {}", defuse_comment(&content));
+                self.note(
+                    source,
+                    format!(
+                        "Meristem rejects the translation `{}`: {} (the line is commented out)",
+                        content.trim(),
+                        d.message
+                    ),
+                );
+                repaired = true;
+            }
+            if !repaired {
+                break;
+            }
+        }
+        self.notes.sort_by_key(|n| n.line);
+        Import {
+            text: self.text(),
+            notes: self.notes,
+        }
+    }
+
+    /// How many lines have been written.
+    pub fn len(&self) -> usize {
+        self.lines.len()
+    }
+
+    /// The last line written ("" when none).
+    pub fn last(&self) -> &str {
+        self.lines.last().map_or("", |(text, _)| text.as_str())
+    }
+
+    /// Replaces the text of line `index` (0-based), keeping its source line.
+    pub fn replace(&mut self, index: usize, text: String) {
+        if let Some(line) = self.lines.get_mut(index) {
+            line.0 = text;
+        }
+    }
+
+    /// The text written so far.
+    pub fn text(&self) -> String {
+        let mut text = String::new();
+        for (line, _) in &self.lines {
+            text.push_str(line);
+            text.push('\n');
+        }
+        text
+    }
+}
+
+/// Makes text safe inside a `//` comment: no block-comment markers.
+fn defuse_comment(text: &str) -> String {
+    text.replace("/*", "/ *").replace("*/", "* /")
+}
+
+/// A number as Meristem text: shortest round trip of the value rounded to 12 significant digits
+/// (so `0.8 * 0.9` prints `0.72`), integers without a fraction.
+pub(crate) fn number(value: f64) -> String {
+    if !value.is_finite() {
+        return "0".into();
+    }
+    if value == 0.0 {
+        return "0".into();
+    }
+    let digits = 12 - 1 - value.abs().log10().floor() as i32;
+    let rounded = if (0..=300).contains(&digits) {
+        let scale = 10f64.powi(digits);
+        let r = (value * scale).round() / scale;
+        if r.is_finite() {
+            r
+        } else {
+            value
+        }
+    } else {
+        value
+    };
+    format!("{rounded}")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn dialect_names_round_trip() {
+        for d in Dialect::ALL {
+            assert_eq!(Dialect::from_name(d.name()), Some(d));
+            assert_eq!(Dialect::from_name(&d.name().to_uppercase()), Some(d));
+        }
+        assert_eq!(Dialect::from_name("lsys"), None);
+    }
+
+    #[test]
+    fn detection_uses_the_extension_then_the_content() {
+        assert_eq!(detect("", "tree.LS"), Some(Dialect::Lparser));
+        assert_eq!(detect("", "a/b/plant.l"), Some(Dialect::Cpfg));
+        assert_eq!(detect("", "x.lpy"), Some(Dialect::Lpy));
+        assert_eq!(detect("SYSTEM\nAXIOM\nRULES\nEND.", "x.lsys"), None);
+        assert_eq!(
+            detect("SYSTEM\nAXIOM\n A\nRULES\n A -> B\nEND.", ""),
+            Some(Dialect::Green)
+        );
+        assert_eq!(
+            detect("recursion 5\naxiom F\nrule F = FF\n", "tree.txt"),
+            Some(Dialect::Lparser)
+        );
+        assert_eq!(
+            detect("# c\n5\n20\n10 # t\nF\nF=FF\n@\n", ""),
+            Some(Dialect::Lparser)
+        );
+        assert_eq!(
+            detect("a = 3\nAxiom: A\nproduction:\nA --> B\n", ""),
+            Some(Dialect::Lpy)
+        );
+        assert_eq!(
+            detect("Lsystem: 1\nAxiom: A\nA --> B\nendlsystem\n", ""),
+            Some(Dialect::Cpfg)
+        );
+        assert_eq!(detect("axiom: F\nF -> FF\n", "plain.txt"), None);
+    }
+
+    #[test]
+    fn numbers_print_short() {
+        assert_eq!(number(0.8 * 0.9), "0.72");
+        assert_eq!(number(1.0), "1");
+        assert_eq!(number(1.0 / 0.9), "1.11111111111");
+        assert_eq!(number(343.774677078494), "343.774677078");
+        assert_eq!(number(-2.5), "-2.5");
+        assert_eq!(number(1e-7), "0.0000001");
+        assert_eq!(number(f64::NAN), "0");
+    }
+
+    #[test]
+    fn finish_comments_out_what_meristem_rejects_and_says_so() {
+        let mut out = Output::default();
+        out.line("axiom: A", 1);
+        out.line("A -> B(frob(1))", 2);
+        out.line("B -> [", 3);
+        let import = out.finish();
+        assert!(import.text.contains("// not imported: A -> B(frob(1))"));
+        assert!(import.text.contains("// not imported: B -> ["));
+        assert_eq!(
+            import.notes.iter().map(|n| n.line).collect::<Vec<_>>(),
+            [2, 3]
+        );
+        assert!(import.notes[0].message.contains("unknown function 'frob'"));
+        let (file, d) = crate::syntax::parse(&import.text);
+        assert!(d.is_empty() && crate::model::resolve(&file).1.is_empty());
+    }
+
+    #[test]
+    fn finish_reports_a_missing_axiom_once() {
+        let mut out = Output::default();
+        out.line("A -> B", 4);
+        let import = out.finish();
+        assert!(import.is_empty());
+        assert_eq!(import.notes.len(), 1);
+        assert_eq!(import.notes[0].line, 0);
+    }
+}

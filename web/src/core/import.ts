@@ -1,0 +1,35 @@
+// The facade over the core's importers (`crate/src/import`): another dialect's text in, Meristem
+// text and notes out. The studio's file opening calls this; it holds no UI.
+import { import_grammar } from '../../../crate/pkg/meristem.js';
+import { assertReady } from './init';
+
+/** The notations the core imports: Green's RL-systems, Lparser `.ls`, cpfg `.l`, L-Py `.lpy`. */
+export type Dialect = 'green' | 'lparser' | 'cpfg' | 'lpy';
+
+/** Something the importer could not translate, or translated only approximately. */
+export interface ImportNote {
+  /** 1-based line of the imported text; 0 when the note concerns the whole file. */
+  line: number;
+  message: string;
+}
+
+/** The result of {@link importGrammar}. */
+export interface ImportedGrammar {
+  /** The grammar in Meristem's language (empty when the dialect could not be told). */
+  text: string;
+  /** One note per construct that was not translated, in line order. */
+  notes: ImportNote[];
+  /** The dialect read, or `null` when neither the name nor the content told it. */
+  dialect: Dialect | null;
+}
+
+/**
+ * Translates a file written in another L-system dialect into Meristem's language. `fileName`
+ * (e.g. `tree.ls`) tells the dialect by its extension, else the content does; a dialect name
+ * (`lparser`, …) may be given instead to force one. Never throws on odd input: what cannot be
+ * translated comes back as notes. Requires {@link initCore} to have finished.
+ */
+export function importGrammar(text: string, fileName: string): ImportedGrammar {
+  assertReady();
+  return JSON.parse(import_grammar(text, fileName)) as ImportedGrammar;
+}
