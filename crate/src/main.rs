@@ -2,6 +2,7 @@
 //!
 //! ```text
 //! meristem derive FILE [--iterations N] [--seed S] [--stats]   the derived string, or stats as JSON
+//! meristem derive FILE --growth                     what the growth attributes did, step by step (JSON)
 //! meristem check FILE                               diagnostics as FILE:LINE:COL: severity: message
 //! ```
 
@@ -10,7 +11,7 @@ use meristem::{build, BuildOptions};
 use std::process::ExitCode;
 
 const USAGE: &str = "usage:
-  meristem derive FILE [--iterations N] [--seed S] [--stats]
+  meristem derive FILE [--iterations N] [--seed S] [--stats | --growth]
   meristem check FILE
   meristem --version";
 
@@ -20,6 +21,7 @@ struct Args {
     iterations: Option<u32>,
     seed: Option<u64>,
     stats: bool,
+    growth: bool,
 }
 
 fn parse_args() -> Result<Args, lexopt::Error> {
@@ -30,11 +32,13 @@ fn parse_args() -> Result<Args, lexopt::Error> {
     let mut iterations = None;
     let mut seed = None;
     let mut stats = false;
+    let mut growth = false;
     while let Some(arg) = parser.next()? {
         match arg {
             Long("iterations") | Short('n') => iterations = Some(parser.value()?.parse()?),
             Long("seed") | Short('s') => seed = Some(parser.value()?.parse()?),
             Long("stats") => stats = true,
+            Long("growth") => growth = true,
             Long("version") | Short('V') => {
                 println!("meristem {}", env!("CARGO_PKG_VERSION"));
                 std::process::exit(0);
@@ -56,6 +60,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
         iterations,
         seed,
         stats,
+        growth,
     })
 }
 
@@ -110,7 +115,14 @@ fn main() -> ExitCode {
     match args.verb.as_str() {
         "check" => {}
         "derive" if result.ok() => {
-            if args.stats {
+            if args.growth {
+                // One report per step; `[]` when the grammar sets no growth attribute.
+                let steps = result
+                    .growth
+                    .as_ref()
+                    .map_or("[]".into(), |g| g.steps_json());
+                println!("{steps}");
+            } else if args.stats {
                 println!("{}", result.stats.to_json());
             } else {
                 println!("{}", result.derived_text());
