@@ -370,3 +370,29 @@ fn apices_are_modules_with_productions_that_do_not_draw_unless_apex_says_otherwi
         "F[+F[+X]F[-X]+X]F[-F[+X]F[-X]+X]+F[+X]F[-X]+X"
     );
 }
+
+#[test]
+fn the_fig_2_example_lets_nb_of_the_64_second_generation_branches_grow() {
+    let text = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../public/examples/jou-fig2-lifetime.lsys"),
+    )
+    .expect("example");
+    for seed in 1..=10 {
+        let b = seeded(&text, seed);
+        let steps = &b.growth.as_ref().expect("growth").steps;
+        assert_eq!(steps.len(), 3);
+        assert_eq!(steps[1].apices.iter().sum::<u32>(), 8);
+        assert_eq!(steps[1].stopped, [0, 0, 0]);
+        let third = &steps[2];
+        assert_eq!(third.apices.iter().sum::<u32>(), 64);
+        let nb = third.survivors.expect("NB");
+        assert!((34..=66).contains(&nb), "{nb}");
+        assert_eq!(third.stopped.iter().sum::<u32>(), 64 - nb.min(64));
+        // Each surviving branch becomes eight; each stopped one stays one segment.
+        assert_eq!(
+            b.skeleton.segments.len() as u32,
+            8 * nb.min(64) + (64 - nb.min(64))
+        );
+    }
+}
