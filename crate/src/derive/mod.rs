@@ -577,6 +577,12 @@ impl<'m, R: rand::Rng + ?Sized> Rewriter<'m, R> {
             return Ok(());
         };
         record.state.step = step - 1;
+        // Every pass is followed, so the state matches the string; never index past it anyway.
+        debug_assert_eq!(record.state.modules.len(), current.len());
+        record
+            .state
+            .modules
+            .resize(current.len(), growth::ModuleGrowth::default());
         let thirds = match observer.filter(|_| attributes.needs_heights()) {
             Some(o) => {
                 let heights = o.heights(current, &record.state);
