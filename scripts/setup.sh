@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Installs what npm cannot: the Rust wasm32 target and lint components, the wasm-bindgen CLI pinned
-# to the crate's wasm-bindgen version, and (with --browser) Debian's Chromium for the browser tests.
-# Every step is guarded by a version check, so a warm machine skips it in well under a second.
+# to the crate's wasm-bindgen version, with --browser Debian's Chromium for the browser tests, and
+# with --consumers the programs the export tests feed the exported files to (POV-Ray, tovrmlx3d and
+# view3dscene under Xvfb, Open Inventor's ivcat). Every step is guarded by a version or `command -v`
+# check, so a warm machine skips it in well under a second. Usage: setup.sh [--browser] [--consumers]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -23,16 +25,43 @@ if ! wasm-bindgen --version 2>/dev/null | grep -qx "wasm-bindgen $WASM_BINDGEN_V
   cargo install wasm-bindgen-cli --version "$WASM_BINDGEN_VERSION" --locked
 fi
 
-if [ "${1:-}" = "--browser" ]; then
-  if [ ! -x /usr/bin/chromium ]; then
-    if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
-      echo "setup: installing Debian's chromium for the browser tests"
-      apt-get update -qq
-      DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium >/dev/null
-    else
-      echo "setup: the browser tests need Chromium at /usr/bin/chromium. Run:"
-      echo "  sudo apt-get update && sudo apt-get install -y chromium"
-      exit 1
-    fi
+browser=false
+consumers=false
+for flag in "$@"; do
+  case "$flag" in
+    --browser) browser=true ;;
+    --consumers) consumers=true ;;
+    *) echo "setup: unknown option $flag (use --browser, --consumers)"; exit 2 ;;
+  esac
+done
+
+# apt_install WHAT PACKAGE...: installs Debian packages as root, or prints the command and fails.
+apt_install() {
+  local what=$1; shift
+  if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
+    echo "setup: installing $* for $what"
+    apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "$@" >/dev/null
+  else
+    echo "setup: $what need $*. Run:"
+    echo "  sudo apt-get update && sudo apt-get install -y $*"
+    exit 1
+  fi
+}
+
+if $browser && [ ! -x /usr/bin/chromium ]; then
+  apt_install "the browser tests (Chromium at /usr/bin/chromium)" chromium
+fi
+
+if $consumers; then
+  # program -> Debian package; the export tests run each of them on the exported files.
+  missing=()
+  for pair in povray:povray tovrmlx3d:view3dscene view3dscene:view3dscene xvfb-run:xvfb xauth:xauth ivcat:inventor-clients; do
+    command -v "${pair%%:*}" >/dev/null 2>&1 || missing+=("${pair#*:}")
+  done
+  if [ ${#missing[@]} -gt 0 ]; then
+    # shellcheck disable=SC2207 # package names have no spaces
+    packages=($(printf '%s\n' "${missing[@]}" | sort -u))
+    apt_install "the export tests (the real consumers of the files)" "${packages[@]}"
   fi
 fi

@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # The one test command (`npm test`): installs the tools npm cannot, then runs every gate and suite
-# (lint, cargo test, vitest with the real wasm, browser tests in headless Chromium) even when an
-# earlier one fails, and ends with one line `N passed, N failed` counting them all.
+# (lint, cargo test, vitest with the real wasm, the export files read by their real consumers,
+# browser tests in headless Chromium) even when an earlier one fails, and ends with one line
+# `N passed, N failed` counting them all.
 # Artefacts (screenshots, JSON reports) go to test-results/.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 [ -f "$HOME/.cargo/env" ] && . "$HOME/.cargo/env"
 export PATH="$PWD/node_modules/.bin:$PATH"
 
-bash scripts/setup.sh --browser || { echo "setup failed"; echo "0 passed, 1 failed"; exit 1; }
+bash scripts/setup.sh --browser --consumers || { echo "setup failed"; echo "0 passed, 1 failed"; exit 1; }
 
 rm -rf test-results && mkdir -p test-results
 passed=0
@@ -47,6 +48,10 @@ gate "tsc --noEmit" tsc --noEmit -p tsconfig.json
 echo "::: vitest (unit and cross-boundary, real wasm in node)"
 vitest run --reporter=default --reporter=json --outputFile=test-results/vitest.json
 count_vitest test-results/vitest.json
+
+echo "::: export tests (every format read back by the real tools)"
+vitest run --config tests/export/vitest.config.ts --reporter=default --reporter=json --outputFile=test-results/export.json
+count_vitest test-results/export.json
 
 gate "vite build" vite build --logLevel warn
 echo "::: browser tests (headless Chromium)"

@@ -4,15 +4,24 @@
 //! meristem derive FILE [--iterations N] [--seed S] [--stats]   the derived string, or stats as JSON
 //! meristem derive FILE --growth                     what the growth attributes did, step by step (JSON)
 //! meristem check FILE                               diagnostics as FILE:LINE:COL: severity: message
+//! meristem export FILE -o OUT.EXT [--format EXT] [--iterations N] [--seed S] [--sides N] [--smooth-all]
+//!                                                   the model as OUT.wrl, .glb, .pov, .obj (+ .mtl), .iv or .svg
 //! ```
 
 use meristem::diagnostics::{LocatedDiagnostic, Severity};
+use meristem::export::{self, Format};
+use meristem::mesh::MeshOptions;
 use meristem::{build, BuildOptions};
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 const USAGE: &str = "usage:
   meristem derive FILE [--iterations N] [--seed S] [--stats | --growth]
   meristem check FILE
+  meristem export FILE -o OUT.EXT [--format EXT] [--iterations N] [--seed S] [--sides N] [--smooth-all]
+      EXT: wrl (VRML 2.0), glb (glTF 2.0), pov (POV-Ray 3.7), obj (OBJ, writes OUT.mtl too),
+           iv (OpenInventor 2.1), svg (SVG); --format overrides the extension
+      --sides N (3 to 64, default 6) and --smooth-all are the studio's view options
   meristem --version";
 
 struct Args {
@@ -22,6 +31,10 @@ struct Args {
     seed: Option<u64>,
     stats: bool,
     growth: bool,
+    output: Option<PathBuf>,
+    format: Option<String>,
+    sides: Option<u32>,
+    smooth_all: bool,
 }
 
 fn parse_args() -> Result<Args, lexopt::Error> {
@@ -33,12 +46,20 @@ fn parse_args() -> Result<Args, lexopt::Error> {
     let mut seed = None;
     let mut stats = false;
     let mut growth = false;
+    let mut output = None;
+    let mut format = None;
+    let mut sides = None;
+    let mut smooth_all = false;
     while let Some(arg) = parser.next()? {
         match arg {
             Long("iterations") | Short('n') => iterations = Some(parser.value()?.parse()?),
             Long("seed") | Short('s') => seed = Some(parser.value()?.parse()?),
             Long("stats") => stats = true,
             Long("growth") => growth = true,
+            Long("output") | Short('o') => output = Some(PathBuf::from(parser.value()?)),
+            Long("format") | Short('f') => format = Some(parser.value()?.string()?),
+            Long("sides") => sides = Some(parser.value()?.parse()?),
+            Long("smooth-all") => smooth_all = true,
             Long("version") | Short('V') => {
                 println!("meristem {}", env!("CARGO_PKG_VERSION"));
                 std::process::exit(0);
@@ -61,7 +82,59 @@ fn parse_args() -> Result<Args, lexopt::Error> {
         seed,
         stats,
         growth,
+        output,
+        format,
+        sides,
+        smooth_all,
     })
+}
+
+/// Where `export` writes and in which format: `-o` is required; the format is `--format`, else
+/// the output's extension.
+fn export_target(args: &Args) -> Result<(PathBuf, Format), String> {
+    let output = args
+        .output
+        .clone()
+        .ok_or("export needs an output file: -o OUT.EXT")?;
+    let name = match &args.format {
+        Some(name) => name.clone(),
+        None => output
+            .extension()
+            .and_then(|e| e.to_str())
+            .unwrap_or("")
+            .to_string(),
+    };
+    let format = Format::from_extension(&name).ok_or_else(|| {
+        let what = if args.format.is_some() {
+            format!("unknown format '{name}'")
+        } else if name.is_empty() {
+            format!("{} has no extension to tell the format", output.display())
+        } else {
+            format!("unknown extension '.{name}'")
+        };
+        format!(
+            "{what}; the formats are {} (PNG comes from the studio's renderer)",
+            Format::names()
+        )
+    })?;
+    Ok((output, format))
+}
+
+/// Writes the files of an export: the first at `output`, any others (OBJ's MTL) beside it with
+/// their own extension.
+fn write_export(output: &Path, files: &[export::ExportedFile]) -> Result<(), String> {
+    for (k, file) in files.iter().enumerate() {
+        let path = if k == 0 {
+            output.to_path_buf()
+        } else {
+            let extension = file.name.rsplit('.').next().unwrap_or("");
+            output.with_extension(extension)
+        };
+        std::fs::write(&path, &file.bytes)
+            .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+        println!("wrote {} ({} bytes)", path.display(), file.bytes.len());
+    }
+    Ok(())
 }
 
 fn print_diagnostics(file: &str, diagnostics: &[LocatedDiagnostic]) {
@@ -85,6 +158,17 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
+    let export_target = if args.verb == "export" {
+        match export_target(&args) {
+            Ok(target) => Some(target),
+            Err(e) => {
+                eprintln!("meristem: {e}\n{USAGE}");
+                return ExitCode::from(2);
+            }
+        }
+    } else {
+        None
+    };
     let source = match std::fs::read(&args.file) {
         Ok(bytes) => match String::from_utf8(bytes) {
             Ok(text) => text,
@@ -107,7 +191,7 @@ fn main() -> ExitCode {
         &BuildOptions {
             iterations: args.iterations,
             seed: args.seed,
-            ..BuildOptions::default()
+            mesh: MeshOptions::view(args.sides, Some(args.smooth_all)),
         },
     );
     let diagnostics = result.located_diagnostics(&source);
@@ -129,6 +213,21 @@ fn main() -> ExitCode {
             }
         }
         "derive" => {}
+        "export" if result.ok() => {
+            if let Some((output, format)) = &export_target {
+                // The stem names the MTL file inside the OBJ, so it is the output's own stem.
+                let stem = output
+                    .file_stem()
+                    .map(|s| s.to_string_lossy().into_owned())
+                    .unwrap_or_else(|| "plant".into());
+                let files = export::export(*format, &result.mesh, &result.skeleton, &stem);
+                if let Err(e) = write_export(output, &files) {
+                    eprintln!("meristem: {e}");
+                    return ExitCode::from(2);
+                }
+            }
+        }
+        "export" => {}
         other => {
             eprintln!("meristem: unknown verb '{other}'\n{USAGE}");
             return ExitCode::from(2);

@@ -4,6 +4,8 @@
 //! into a fresh JavaScript array (`js_sys::Float32Array::from`); small structured data as JSON.
 #![deny(clippy::unwrap_used)]
 
+use crate::export::{self, Format};
+use crate::mesh::MeshOptions;
 use crate::pipeline::{self, BuildOptions};
 use wasm_bindgen::prelude::*;
 
@@ -37,26 +39,85 @@ pub fn build(
     sides: Option<u32>,
     smooth_all: Option<bool>,
 ) -> Build {
-    let seed = seed.filter(|s| {
-        s.is_finite() && *s >= 0.0 && s.fract() == 0.0 && *s <= 9.007_199_254_740_992e15
-    });
-    let options = BuildOptions {
-        iterations,
-        seed: seed.map(|s| s as u64),
-        mesh: mesh_options(sides, smooth_all),
-    };
-    let inner = pipeline::build(source, &options);
+    let inner = pipeline::build(source, &build_options(iterations, seed, sides, smooth_all));
     let diagnostics =
         serde_json::to_string(&inner.located_diagnostics(source)).unwrap_or_else(|_| "[]".into());
     Build { inner, diagnostics }
 }
 
-fn mesh_options(sides: Option<u32>, smooth_all: Option<bool>) -> crate::mesh::MeshOptions {
-    let defaults = crate::mesh::MeshOptions::default();
-    crate::mesh::MeshOptions {
-        sides: sides.map_or(defaults.sides, |s| s.clamp(3, 64)),
-        smooth_all: smooth_all.unwrap_or(defaults.smooth_all),
-        ..defaults
+/// The options of a build from the boundary's arguments; a seed that is not a whole number from 0
+/// to 2^53 is ignored (the grammar's `#seed` is used); `sides` and `smooth_all` are the view
+/// options of the mesh ([`MeshOptions::view`]).
+fn build_options(
+    iterations: Option<u32>,
+    seed: Option<f64>,
+    sides: Option<u32>,
+    smooth_all: Option<bool>,
+) -> BuildOptions {
+    let seed = seed.filter(|s| {
+        s.is_finite() && *s >= 0.0 && s.fract() == 0.0 && *s <= 9.007_199_254_740_992e15
+    });
+    BuildOptions {
+        iterations,
+        seed: seed.map(|s| s as u64),
+        mesh: MeshOptions::view(sides, smooth_all),
+    }
+}
+
+/// Builds `source` (as [`build`] does, with the same options) and writes the model as a file to
+/// download: `format` is `wrl`, `glb`, `pov`, `obj`, `iv` or `svg`; `name` is the file name without
+/// extension. OBJ comes as a zip of `NAME.obj` and `NAME.mtl`. The bytes are exactly what
+/// `meristem export FILE -o NAME.EXT` writes for the same grammar, iterations, seed, `--sides` and
+/// `--smooth-all`. Throws when the format is unknown or the grammar has errors (callers export a
+/// plant that built).
+#[wasm_bindgen(js_name = exportModel)]
+pub fn export_model(
+    source: &str,
+    format: &str,
+    name: &str,
+    iterations: Option<u32>,
+    seed: Option<f64>,
+    sides: Option<u32>,
+    smooth_all: Option<bool>,
+) -> Result<ExportedModel, JsError> {
+    let format = Format::from_extension(format).ok_or_else(|| {
+        JsError::new(&format!(
+            "unknown format '{format}'; the formats are {}",
+            Format::names()
+        ))
+    })?;
+    let result = pipeline::build(source, &build_options(iterations, seed, sides, smooth_all));
+    if !result.ok() {
+        return Err(JsError::new("the grammar has errors: nothing to export"));
+    }
+    let file = export::download(format, &result.mesh, &result.skeleton, name)
+        .ok_or_else(|| JsError::new("the export is larger than 4 GiB"))?;
+    Ok(ExportedModel { file })
+}
+
+/// One file to download, from [`export_model`]. Free it with `.free()` once its bytes are copied.
+#[wasm_bindgen]
+pub struct ExportedModel {
+    file: export::ExportedFile,
+}
+
+#[wasm_bindgen]
+impl ExportedModel {
+    /// File name with extension: `plant.glb`, or `plant.zip` for OBJ + MTL.
+    #[wasm_bindgen(getter, js_name = fileName)]
+    pub fn file_name(&self) -> String {
+        self.file.name.clone()
+    }
+
+    /// Media type for the download (`model/gltf-binary`, `application/zip`, …).
+    #[wasm_bindgen(getter, js_name = mimeType)]
+    pub fn mime_type(&self) -> String {
+        self.file.mime.to_string()
+    }
+
+    /// The file's bytes.
+    pub fn bytes(&self) -> Vec<u8> {
+        self.file.bytes.clone()
     }
 }
 
@@ -119,7 +180,7 @@ impl Build {
     /// derivation. The arrays and stats change; the derived string does not.
     pub fn remesh(&mut self, sides: u32, smooth_all: bool) {
         self.inner
-            .remesh(&mesh_options(Some(sides), Some(smooth_all)));
+            .remesh(&MeshOptions::view(Some(sides), Some(smooth_all)));
     }
 
     /// Line ends (x, y, z each) when the model was too large to mesh; empty otherwise.

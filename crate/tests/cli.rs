@@ -119,3 +119,113 @@ fn derive_growth_prints_what_each_step_did_as_json() {
     let (code, out, _) = meristem(&["derive", &example("abop-1.24d.lsys"), "--growth"]);
     assert_eq!((code, out.as_str()), (0, "[]\n"));
 }
+
+/// A fresh folder for one test's output files.
+fn temp_dir(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("meristem-cli-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("create temp dir");
+    dir
+}
+
+#[test]
+fn export_writes_the_format_of_the_extension() {
+    let dir = temp_dir("export");
+    let source = example("abop-1.24a.lsys");
+    for (extension, start) in [
+        ("wrl", &b"#VRML V2.0 utf8\n"[..]),
+        ("glb", b"glTF"),
+        ("pov", b"#version 3.7;\n"),
+        ("obj", b"# Made with Meristem"),
+        ("iv", b"#Inventor V2.1 ascii\n"),
+        ("svg", b"<?xml version=\"1.0\""),
+    ] {
+        let out = dir.join(format!("plant.{extension}"));
+        let out = out.to_str().expect("UTF-8 path");
+        let (code, stdout, err) = meristem(&["export", &source, "-o", out, "--iterations", "2"]);
+        assert_eq!((code, err.as_str()), (0, ""), "{extension}");
+        assert!(stdout.starts_with(&format!("wrote {out} (")), "{stdout}");
+        let bytes = std::fs::read(out).expect("written");
+        assert!(bytes.starts_with(start), "{extension}");
+    }
+    // OBJ names its material library, written beside it.
+    let obj = std::fs::read_to_string(dir.join("plant.obj")).expect("obj");
+    assert!(obj.contains("\nmtllib plant.mtl\n"));
+    let mtl = std::fs::read_to_string(dir.join("plant.mtl")).expect("mtl");
+    assert!(mtl.contains("newmtl color_0\n"));
+    std::fs::remove_dir_all(dir).ok();
+}
+
+#[test]
+fn export_takes_the_format_option_and_is_deterministic() {
+    let dir = temp_dir("export-format");
+    let source = example("abop-1.27-stochastic.lsys");
+    let run = |name: &str, seed: &str| {
+        let out = dir.join(name);
+        let out = out.to_str().expect("UTF-8 path").to_string();
+        let (code, _, err) = meristem(&[
+            "export", &source, "-o", &out, "--format", "glb", "--seed", seed,
+        ]);
+        assert_eq!((code, err.as_str()), (0, ""));
+        std::fs::read(&out).expect("written")
+    };
+    let first = run("a.bin", "3");
+    assert!(first.starts_with(b"glTF"));
+    assert_eq!(
+        first,
+        run("b.bin", "3"),
+        "same grammar and seed, same bytes"
+    );
+    assert_ne!(first, run("c.bin", "4"), "another seed, another plant");
+    std::fs::remove_dir_all(dir).ok();
+}
+
+#[test]
+fn export_takes_the_studio_view_options() {
+    let dir = temp_dir("export-view");
+    let source = example("abop-1.24a.lsys");
+    let vertices = |extra: &[&str]| {
+        let out = dir.join("plant.obj");
+        let out = out.to_str().expect("UTF-8 path");
+        let mut args = vec!["export", &source, "-o", out, "--iterations", "2"];
+        args.extend_from_slice(extra);
+        let (code, _, err) = meristem(&args);
+        assert_eq!((code, err.as_str()), (0, ""));
+        let obj = std::fs::read_to_string(out).expect("written");
+        obj.lines().filter(|l| l.starts_with("v ")).count()
+    };
+    let six = vertices(&[]);
+    assert_eq!(vertices(&["--sides", "6"]), six, "6 sides is the default");
+    assert!(vertices(&["--sides", "12"]) > six);
+    assert!(vertices(&["--smooth-all"]) > six);
+    std::fs::remove_dir_all(dir).ok();
+}
+
+#[test]
+fn export_refuses_unknown_formats_and_reports_grammar_errors() {
+    let dir = temp_dir("export-errors");
+    let source = example("abop-1.24a.lsys");
+    let png = dir.join("plant.png");
+    let (code, _, err) = meristem(&["export", &source, "-o", png.to_str().expect("path")]);
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("unknown extension '.png'; the formats are wrl, glb, pov, obj, iv, svg"),
+        "{err}"
+    );
+    let (code, _, err) = meristem(&["export", &source]);
+    assert_eq!(code, 2);
+    assert!(err.contains("-o OUT.EXT"), "{err}");
+    let (code, _, err) = meristem(&["export", &source, "-o", "x.glb", "--format", "stl"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("unknown format 'stl'"), "{err}");
+
+    let broken = temp_file("broken-export.lsys", b"axiom: X\nX -> F[\n");
+    let out = dir.join("broken.wrl");
+    let (code, stdout, err) = meristem(&["export", &broken, "-o", out.to_str().expect("path")]);
+    assert_eq!((code, stdout.as_str()), (1, ""));
+    assert!(
+        err.contains(&format!("{broken}:2:7: error: '[' is never closed")),
+        "{err}"
+    );
+    assert!(!out.exists(), "no file for a grammar with errors");
+    std::fs::remove_dir_all(dir).ok();
+}

@@ -165,3 +165,50 @@ fn smooth_branches_make_more_rings_than_joints() {
     assert!(smooth.stats.vertices > 2 * sharp.stats.vertices);
     assert_eq!(smooth.mesh.check(), Ok(()));
 }
+
+/// Green's gallery: each Random L-system grows a different individual of the same species per seed.
+#[test]
+fn greens_random_l_systems_grow_individuals_of_one_species() {
+    let build = |name: &str, seed: u64| {
+        let b = meristem::build(
+            &example(name),
+            &meristem::BuildOptions {
+                seed: Some(seed),
+                ..meristem::BuildOptions::default()
+            },
+        );
+        assert!(b.ok(), "{name}: {:?}", b.diagnostics);
+        b
+    };
+    // The ternary tree: the same architecture (segments, leaves) for every seed, other angles.
+    let (a, b) = (
+        build("green-ternary-tree.lsys", 1),
+        build("green-ternary-tree.lsys", 2),
+    );
+    assert_eq!(a.skeleton.segments.len(), 365);
+    assert_eq!(a.skeleton.segments.len(), b.skeleton.segments.len());
+    assert_eq!(a.skeleton.surfaces.len(), 3 * 729);
+    assert_ne!(a.derived_text(), b.derived_text());
+    // The palm: @Repeat draws the trunk's pace once per palm, so heights differ between seeds; the
+    // crown always has its eight fronds.
+    let heights: Vec<f64> = (1..=6)
+        .map(|seed| build("green-palm-tree.lsys", seed).stats.bounds[1][1])
+        .collect();
+    assert!(
+        heights.iter().any(|&h| (h - heights[0]).abs() > 1.0),
+        "{heights:?}"
+    );
+    let palm = build("green-palm-tree.lsys", 1);
+    assert_eq!(palm.derived_text().matches("R(").count(), 8);
+    // The coral: a rounded tip on every branch, and its four stems (in a Switch) of unequal ages.
+    let coral = build("green-coral.lsys", 1);
+    assert_eq!(
+        coral.skeleton.spheres.len() + 1,
+        coral.skeleton.segments.len()
+    );
+    let tips = |stem: &str| stem.matches("A(").count();
+    let text = coral.derived_text();
+    let stems: Vec<usize> = text.split("@|").map(tips).collect();
+    assert_eq!(stems.len(), 4, "{text}");
+    assert!(stems.iter().any(|&n| n != stems[0]), "{stems:?}");
+}

@@ -1,10 +1,23 @@
 // The studio page: wires the grammar editor, the core and the 3D view together.
 // Edits rebuild the plant after a short pause; a grammar with errors keeps the last good plant.
+// The Download menu saves the plant on screen as a model file (written by the core) or a PNG.
 import './style.css';
-import { coreVersion, grammarDirectives, initCore, turtleCommands, type PlantStats } from './core';
+import { coreVersion, exportModel, grammarDirectives, initCore, MODEL_FORMATS, turtleCommands, type BuildOptions, type ModelFormat, type PlantStats } from './core';
 import { createGrammarEditor, type GrammarEditor } from './editor';
 import { PlantView } from './view';
-import { ContextView, PlantBuilder, debounce, reportErrors, reportPlant, type StatusReport, type TimedBuild } from './studio';
+import {
+  ContextView,
+  PlantBuilder,
+  afterPaint,
+  debounce,
+  fileSize,
+  pictureSize,
+  reportErrors,
+  reportPlant,
+  saveFile,
+  type StatusReport,
+  type TimedBuild,
+} from './studio';
 
 /** The grammar shown at start, relative to the page so the site works from any sub-path. */
 const INITIAL_EXAMPLE_URL = 'examples/abop-1.24d.lsys';
@@ -40,6 +53,12 @@ interface StudioElements {
   explainSummary: HTMLElement;
   byProduction: HTMLInputElement;
   productionLegend: HTMLElement;
+  downloads: HTMLDetailsElement;
+  modelDownloads: HTMLElement;
+  pngWidth: HTMLInputElement;
+  pngHeight: HTMLInputElement;
+  downloadPng: HTMLButtonElement;
+  exportStatus: HTMLElement;
 }
 
 function byId<T extends HTMLElement>(id: string, type: new () => T): T {
@@ -63,6 +82,12 @@ function studioElements(): StudioElements {
     explainSummary: byId('explain-summary', HTMLElement),
     byProduction: byId('by-production', HTMLInputElement),
     productionLegend: byId('production-legend', HTMLElement),
+    downloads: byId('downloads', HTMLDetailsElement),
+    modelDownloads: byId('model-downloads', HTMLElement),
+    pngWidth: byId('png-width', HTMLInputElement),
+    pngHeight: byId('png-height', HTMLInputElement),
+    downloadPng: byId('download-png', HTMLButtonElement),
+    exportStatus: byId('export-status', HTMLElement),
   };
 }
 
@@ -94,16 +119,21 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   let crashed = false;
   let hasPlant = false;
   let generation = 0;
+  /** The grammar and build options of the plant on screen: what a download saves. */
+  let shown: { source: string; options: BuildOptions } | undefined;
+
+  /** The toolbar's options: iterations, and the view options of the mesh. */
+  const buildOptions = (): BuildOptions => ({
+    iterations: iterationsOverride(els.iterations),
+    sides: Number(els.sides.value),
+    smoothAll: els.smoothAll.checked,
+  });
 
   /** The build of `text`, or undefined once the core has crashed (the page then says so). */
   const buildOf = (text: string): TimedBuild | undefined => {
     if (crashed) return undefined;
     try {
-      return builder.build(text, {
-        iterations: iterationsOverride(els.iterations),
-        sides: Number(els.sides.value),
-        smoothAll: els.smoothAll.checked,
-      });
+      return builder.build(text, buildOptions());
     } catch (error) {
       crashed = true;
       console.error('Meristem core crashed:', error);
@@ -121,6 +151,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   const rebuild = (): void => {
     if (!editor) return;
     const text = editor.text();
+    const options = buildOptions();
     const result = buildOf(text);
     if (!result) return;
     const { build, millis } = result;
@@ -130,6 +161,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
       contexts.setBuild(build, result.inspector, text);
       contexts.cursorAt(editor.view.state.selection.main.head);
       hasPlant = true;
+      shown = { source: text, options };
       hook.lastStats = build.stats;
       if (iterationsOverride(els.iterations) === undefined) els.iterations.placeholder = String(build.stats.iterations);
       showStatus(els.status, reportPlant(build.stats, build.diagnostics, millis));
@@ -163,7 +195,73 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   els.sides.addEventListener('change', rebuild);
   els.smoothAll.addEventListener('change', rebuild);
   els.frame.addEventListener('click', () => view.frame());
+
+  /** Runs one download with the menu's buttons disabled and its progress on the export status. */
+  const menuButtons = (): HTMLButtonElement[] => [...els.downloads.querySelectorAll('button')];
+  const download = async (what: string, save: () => Promise<string>): Promise<void> => {
+    if (crashed || menuButtons().some((b) => b.disabled)) return;
+    els.downloads.open = false;
+    menuButtons().forEach((b) => (b.disabled = true));
+    showExportStatus(els.exportStatus, 'busy', `Exporting ${what}…`);
+    try {
+      await afterPaint(); // the status shows while the core works (it blocks this thread)
+      showExportStatus(els.exportStatus, 'done', await save());
+    } catch (error) {
+      console.error(`Export of ${what} failed:`, error);
+      showExportStatus(els.exportStatus, 'error', `Export of ${what} failed: ${String(error)}`);
+      if (error instanceof WebAssembly.RuntimeError) {
+        // A panic in the core: its state is unknown, as after a crash while building.
+        crashed = true;
+        showStatus(els.status, { state: 'crashed', text: 'The core crashed — reload the page to continue' });
+      }
+    } finally {
+      menuButtons().forEach((b) => (b.disabled = false));
+    }
+  };
+  const downloadModel = (format: ModelFormat, label: string): Promise<void> =>
+    download(label, async () => {
+      if (!shown) throw new Error('no plant yet');
+      const file = exportModel(shown.source, format, shown.options);
+      saveFile(file.bytes, file.fileName, file.mimeType);
+      return `Saved ${file.fileName} · ${fileSize(file.bytes.length)}`;
+    });
+  for (const { format, label, file } of MODEL_FORMATS) {
+    const button = document.createElement('button');
+    button.type = 'button';
+    button.className = 'menu-item';
+    button.dataset.testid = `download-${format}`;
+    button.append(label, Object.assign(document.createElement('span'), { className: 'file-type', textContent: file }));
+    button.addEventListener('click', () => void downloadModel(format, label));
+    els.modelDownloads.append(button);
+  }
+  // The menu closes like a menu: on a click elsewhere and on Escape.
+  document.addEventListener('pointerdown', (event) => {
+    if (els.downloads.open && !els.downloads.contains(event.target as Node)) els.downloads.open = false;
+  });
+  els.downloads.addEventListener('keydown', (event) => {
+    if (event.key !== 'Escape' || !els.downloads.open) return;
+    els.downloads.open = false;
+    els.downloads.querySelector('summary')?.focus();
+  });
+  els.downloadPng.addEventListener('click', () => {
+    const size = pictureSize(els.pngWidth.value, els.pngHeight.value, view.maxPictureSide());
+    if (!size.ok) {
+      showExportStatus(els.exportStatus, 'error', size.message);
+      return;
+    }
+    void download(`PNG ${size.width} × ${size.height}`, async () => {
+      const png = await view.snapshot(size.width, size.height);
+      saveFile(png, 'plant.png', 'image/png');
+      return `Saved plant.png · ${size.width} × ${size.height} · ${fileSize(png.size)}`;
+    });
+  });
   rebuild();
+}
+
+/** Shows the state of the last download next to the build status. */
+function showExportStatus(element: HTMLElement, state: 'busy' | 'done' | 'error', text: string): void {
+  element.textContent = text;
+  element.dataset.state = state;
 }
 
 const els = studioElements();

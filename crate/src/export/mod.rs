@@ -1,10 +1,155 @@
-//! Stage 6, `export`: what leaves the core as text. This version writes the statistics object
-//! (`meristem derive --stats` and the studio's status line); the model formats (VRML, glTF,
-//! POV-Ray, OBJ, …) will live here, one writer per module, each reading only [`MeshBuffers`] and
-//! the skeleton.
+//! Stage 6, `export`: what leaves the core as files. The statistics object (`meristem derive
+//! --stats` and the studio's status line), and the model formats, one writer per module, each a
+//! plain function of the [`MeshBuffers`] and the [`Skeleton`] (palette, colour indices, segments)
+//! that returns bytes: no IO, no browser, so the command-line tool and the studio write the same
+//! bytes. Output is deterministic: groups in colour-index order, numbers printed by
+//! [`scene::number`].
+//!
+//! | format | module | what it holds |
+//! | --- | --- | --- |
+//! | VRML 2.0 `.wrl` | [`vrml`] | a `Shape` per colour index over one shared `Coordinate`/`Normal`, a framing `Viewpoint` |
+//! | glTF 2.0 binary `.glb` | [`gltf`] | a primitive and PBR material per colour index over shared accessors |
+//! | POV-Ray 3.7 `.pov` | [`pov`] | one `mesh2` with a `texture_list`, camera and lights |
+//! | OBJ + MTL `.obj` | [`obj`] | `usemtl color_N` groups; the MTL beside it (a zip in the studio) |
+//! | OpenInventor 2.1 `.iv` | [`inventor`] | shared `Coordinate3`/`Normal`, a `Material` + face set per colour index |
+//! | SVG `.svg` | [`svg`] | the skeleton projected onto X–Y: stroked segments, filled polygons |
+
+pub mod gltf;
+pub mod inventor;
+pub mod obj;
+pub mod pov;
+pub mod scene;
+pub mod svg;
+pub mod vrml;
+pub mod zip;
 
 use crate::mesh::MeshBuffers;
+use crate::turtle::Skeleton;
+use scene::Scene;
 use serde::Serialize;
+
+/// A model file format the core writes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Format {
+    Vrml,
+    Glb,
+    Pov,
+    Obj,
+    Inventor,
+    Svg,
+}
+
+impl Format {
+    /// Every format, in the order the studio lists them.
+    pub const ALL: [Format; 6] = [
+        Format::Vrml,
+        Format::Glb,
+        Format::Pov,
+        Format::Obj,
+        Format::Inventor,
+        Format::Svg,
+    ];
+
+    /// The file extension, which is also the format's name on the command line and at the wasm
+    /// boundary.
+    pub fn extension(self) -> &'static str {
+        match self {
+            Format::Vrml => "wrl",
+            Format::Glb => "glb",
+            Format::Pov => "pov",
+            Format::Obj => "obj",
+            Format::Inventor => "iv",
+            Format::Svg => "svg",
+        }
+    }
+
+    /// The format of an extension (`wrl`, `glb`, `pov`, `obj`, `iv`, `svg`; any case).
+    pub fn from_extension(extension: &str) -> Option<Format> {
+        Format::ALL
+            .into_iter()
+            .find(|f| f.extension().eq_ignore_ascii_case(extension))
+    }
+
+    /// The extensions, for messages: `wrl, glb, pov, obj, iv, svg`.
+    pub fn names() -> String {
+        Format::ALL.map(Format::extension).join(", ")
+    }
+}
+
+/// One written file.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ExportedFile {
+    /// File name: the stem given to [`export`] and the format's extension.
+    pub name: String,
+    pub bytes: Vec<u8>,
+    /// Media type, for a download.
+    pub mime: &'static str,
+}
+
+/// Writes the model in `format` as files named after `stem` (`plant` gives `plant.wrl`; OBJ gives
+/// `plant.obj`, which names `plant.mtl`, and `plant.mtl`).
+pub fn export(
+    format: Format,
+    mesh: &MeshBuffers,
+    skeleton: &Skeleton,
+    stem: &str,
+) -> Vec<ExportedFile> {
+    let scene = Scene::new(mesh, skeleton);
+    let file = |extension: &str, bytes: Vec<u8>, mime: &'static str| ExportedFile {
+        name: format!("{stem}.{extension}"),
+        bytes,
+        mime,
+    };
+    match format {
+        Format::Vrml => vec![file("wrl", vrml::write(&scene).into_bytes(), "model/vrml")],
+        Format::Glb => vec![file("glb", gltf::write(&scene), "model/gltf-binary")],
+        Format::Pov => vec![file("pov", pov::write(&scene).into_bytes(), "text/plain")],
+        Format::Obj => {
+            let mtl = format!("{stem}.mtl");
+            vec![
+                file(
+                    "obj",
+                    obj::write_obj(&scene, &mtl).into_bytes(),
+                    "model/obj",
+                ),
+                file("mtl", obj::write_mtl(&scene).into_bytes(), "model/mtl"),
+            ]
+        }
+        Format::Inventor => vec![file(
+            "iv",
+            inventor::write(&scene).into_bytes(),
+            "text/plain",
+        )],
+        Format::Svg => vec![file(
+            "svg",
+            svg::write(mesh, skeleton).into_bytes(),
+            "image/svg+xml",
+        )],
+    }
+}
+
+/// What the studio downloads: the one file of the format, or a zip (`plant.zip`) of its files
+/// when it has several (OBJ and MTL). `None` only past 4 GiB.
+pub fn download(
+    format: Format,
+    mesh: &MeshBuffers,
+    skeleton: &Skeleton,
+    stem: &str,
+) -> Option<ExportedFile> {
+    let mut files = export(format, mesh, skeleton, stem);
+    if files.len() == 1 {
+        return files.pop();
+    }
+    let entries: Vec<(&str, &[u8])> = files
+        .iter()
+        .map(|f| (f.name.as_str(), f.bytes.as_slice()))
+        .collect();
+    Some(ExportedFile {
+        name: format!("{stem}.zip"),
+        bytes: zip::stored(&entries)?,
+        mime: "application/zip",
+    })
+}
 
 /// Counts and extent of one build.
 #[derive(Clone, Debug, Default, PartialEq, Serialize)]
@@ -39,5 +184,90 @@ impl Stats {
     /// One JSON object on one line.
     pub fn to_json(&self) -> String {
         serde_json::to_string(self).unwrap_or_else(|_| "{}".into())
+    }
+}
+
+#[cfg(test)]
+pub(crate) mod tests {
+    use super::*;
+    use crate::mesh::MeshOptions;
+    use crate::pipeline::{build, BuildOptions};
+
+    /// The mesh and skeleton of a grammar with the default options.
+    pub fn built(source: &str) -> (MeshBuffers, Skeleton) {
+        built_with(source, MeshOptions::default())
+    }
+
+    fn built_with(source: &str, mesh: MeshOptions) -> (MeshBuffers, Skeleton) {
+        let result = build(
+            source,
+            &BuildOptions {
+                mesh,
+                ..BuildOptions::default()
+            },
+        );
+        assert!(result.ok(), "{:?}", result.diagnostics);
+        (result.mesh, result.skeleton)
+    }
+
+    /// A trunk of colour index 0 with a branch of colour index 1.
+    pub fn two_colour_plant() -> (MeshBuffers, Skeleton) {
+        built("#angle 30\naxiom: F[+;F]F\n")
+    }
+
+    /// A plant of colour indices 0, 1 and 2 meshed with at most `max_vertices`: lines when small.
+    pub fn small_scene(max_vertices: usize) -> (MeshBuffers, Skeleton) {
+        let (mesh, skeleton) = built_with(
+            "#angle 30\naxiom: F[+;F]F[-;;F]\n",
+            MeshOptions {
+                max_vertices,
+                ..MeshOptions::default()
+            },
+        );
+        assert!(mesh.indices.is_empty() && !mesh.lines.is_empty());
+        (mesh, skeleton)
+    }
+
+    #[test]
+    fn formats_are_named_by_their_extensions() {
+        for format in Format::ALL {
+            assert_eq!(Format::from_extension(format.extension()), Some(format));
+        }
+        assert_eq!(Format::from_extension("WRL"), Some(Format::Vrml));
+        assert_eq!(Format::from_extension("png"), None);
+        assert_eq!(Format::names(), "wrl, glb, pov, obj, iv, svg");
+    }
+
+    #[test]
+    fn obj_is_two_files_and_its_download_a_zip_of_both() {
+        let (mesh, skeleton) = two_colour_plant();
+        let files = export(Format::Obj, &mesh, &skeleton, "tree");
+        let names: Vec<&str> = files.iter().map(|f| f.name.as_str()).collect();
+        assert_eq!(names, ["tree.obj", "tree.mtl"]);
+        let zip = download(Format::Obj, &mesh, &skeleton, "tree").expect("small");
+        assert_eq!(zip.name, "tree.zip");
+        assert_eq!(zip.mime, "application/zip");
+        // Stored entries: each file's bytes appear whole in the archive.
+        for f in &files {
+            assert!(zip
+                .bytes
+                .windows(f.bytes.len())
+                .any(|w| w == f.bytes.as_slice()));
+        }
+        let glb = download(Format::Glb, &mesh, &skeleton, "tree").expect("small");
+        assert_eq!(
+            (glb.name.as_str(), glb.mime),
+            ("tree.glb", "model/gltf-binary")
+        );
+    }
+
+    #[test]
+    fn every_writer_handles_a_plant_that_draws_nothing() {
+        let (mesh, skeleton) = built("axiom: X\n");
+        assert_eq!(mesh.triangle_count(), 0);
+        for format in Format::ALL {
+            let files = export(format, &mesh, &skeleton, "empty");
+            assert!(files.iter().all(|f| !f.bytes.is_empty()), "{format:?}");
+        }
     }
 }

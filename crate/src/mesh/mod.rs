@@ -26,9 +26,18 @@ use glam::DVec3;
 /// - `ranges`: provenance, `u32` × 2 per range: (first triangle, module), sorted by first
 ///   triangle; a range runs to the next range's first triangle. `module` is the index, in the string
 ///   the turtle read, of the module that drew those triangles (a segment's `F`, a polygon's `{`, …).
+/// - `color_ranges`: the colour index of every triangle, `u32` × 2 per range: (first triangle,
+///   colour index), sorted and running like `ranges`. A triangle's index is that of the segment,
+///   polygon, surface or sphere that drew it (`Skeleton::color` gives the colour); its vertices
+///   carry that colour too, except where a tube passes from one segment to the next of another
+///   colour, whose ring has the next segment's colour (the preview blends them along the quad).
+///   The file writers group triangles by this index, one material per colour index. Stays in the
+///   core (not copied to JavaScript).
 /// - `lines`, `line_colors`: only when the model is too large to mesh (`MeshOptions::max_vertices`):
 ///   `f32` × 3 per line end (two per segment) and `f32` × 3 colour per end; the triangle arrays
-///   are then empty.
+///   are then empty. Line `i` is `Skeleton::segments[i]` (its colour index is that segment's).
+/// - `width_unit`: model units per width unit (what `#width 1` measured across), for writers that
+///   draw widths themselves (SVG).
 ///
 /// Memory: a tube of `sides` sides costs `sides` vertices per joint (36 bytes each: position,
 /// normal, colour) and `2·sides` triangles per segment (24 bytes each), plus two caps per axis;
@@ -40,8 +49,10 @@ pub struct MeshBuffers {
     pub colors: Vec<f32>,
     pub indices: Vec<u32>,
     pub ranges: Vec<u32>,
+    pub color_ranges: Vec<u32>,
     pub lines: Vec<f32>,
     pub line_colors: Vec<f32>,
+    pub width_unit: f64,
 }
 
 impl MeshBuffers {
@@ -64,19 +75,10 @@ impl MeshBuffers {
         if self.colors.len() != self.positions.len() || !self.indices.len().is_multiple_of(3) {
             return Err("colors must hold 3 floats per vertex and indices 3 per triangle".into());
         }
-        if !self.ranges.len().is_multiple_of(2) {
-            return Err("ranges must hold (first triangle, module) pairs".into());
-        }
-        let firsts: Vec<u32> = self.ranges.iter().step_by(2).copied().collect();
-        if firsts.windows(2).any(|w| w[0] >= w[1])
-            || firsts
-                .last()
-                .is_some_and(|&f| f as usize >= self.triangle_count())
-        {
-            return Err("ranges must start at increasing triangles inside the mesh".into());
-        }
-        if !firsts.is_empty() && firsts[0] != 0 {
-            return Err("the first range must start at triangle 0".into());
+        self.check_ranges("ranges", &self.ranges)?;
+        self.check_ranges("color_ranges", &self.color_ranges)?;
+        if self.color_ranges.is_empty() != (self.triangle_count() == 0) {
+            return Err("color_ranges must cover every triangle".into());
         }
         if !self.lines.len().is_multiple_of(6) || self.line_colors.len() != self.lines.len() {
             return Err("lines must hold two 3-float ends per segment, each with a colour".into());
@@ -120,6 +122,41 @@ impl MeshBuffers {
             }
         }
         Ok(())
+    }
+
+    /// (first triangle, value) pairs at increasing triangles inside the mesh, the first at 0.
+    fn check_ranges(&self, name: &str, ranges: &[u32]) -> Result<(), String> {
+        if !ranges.len().is_multiple_of(2) {
+            return Err(format!("{name} must hold (first triangle, value) pairs"));
+        }
+        let firsts: Vec<u32> = ranges.iter().step_by(2).copied().collect();
+        if firsts.windows(2).any(|w| w[0] >= w[1])
+            || firsts
+                .last()
+                .is_some_and(|&f| f as usize >= self.triangle_count())
+        {
+            return Err(format!(
+                "{name} must start at increasing triangles inside the mesh"
+            ));
+        }
+        if !firsts.is_empty() && firsts[0] != 0 {
+            return Err(format!("the first of {name} must start at triangle 0"));
+        }
+        Ok(())
+    }
+
+    /// The colour index of each triangle, expanded from `color_ranges`.
+    pub fn triangle_color_indices(&self) -> Vec<u16> {
+        let mut out = Vec::with_capacity(self.triangle_count());
+        let pairs: Vec<&[u32]> = self.color_ranges.chunks_exact(2).collect();
+        for (k, pair) in pairs.iter().enumerate() {
+            let end = pairs
+                .get(k + 1)
+                .map_or(self.triangle_count(), |next| next[0] as usize);
+            let index = pair[1].min(u16::MAX as u32) as u16;
+            out.resize(end.max(out.len()), index);
+        }
+        out
     }
 
     /// `[[min x, y, z], [max x, y, z]]` of the vertices (or of the lines, in the fallback); all
@@ -183,6 +220,20 @@ impl Default for MeshOptions {
     }
 }
 
+impl MeshOptions {
+    /// The default options with the studio's view options: `sides` (clamped to 3..=64, default
+    /// 6) and `smooth_all` (default false). The wasm boundary and the CLI's `--sides` and
+    /// `--smooth-all` both build their meshes with these, so a download is the mesh on screen.
+    pub fn view(sides: Option<u32>, smooth_all: Option<bool>) -> MeshOptions {
+        let defaults = MeshOptions::default();
+        MeshOptions {
+            sides: sides.map_or(defaults.sides, |s| s.clamp(3, 64)),
+            smooth_all: smooth_all.unwrap_or(defaults.smooth_all),
+            ..defaults
+        }
+    }
+}
+
 /// Consecutive segments whose directions differ by more than this start a new tube: a ring at
 /// a sharper joint would pinch.
 const MAX_JOINT_ANGLE_COS: f64 = -0.2;
@@ -197,7 +248,10 @@ pub fn build_mesh(skeleton: &Skeleton, options: &MeshOptions) -> MeshBuffers {
     };
     let sides = options.sides.max(3) as usize;
     let mut builder = Builder {
-        mesh: MeshBuffers::default(),
+        mesh: MeshBuffers {
+            width_unit: unit,
+            ..MeshBuffers::default()
+        },
         options,
         unit,
         sides,
@@ -225,7 +279,7 @@ pub fn build_mesh(skeleton: &Skeleton, options: &MeshOptions) -> MeshBuffers {
         builder.tube(skeleton, &chain, !hidden_start);
     }
     for p in &skeleton.polygons {
-        builder.flat(&p.points, skeleton.color(p.color), p.module);
+        builder.flat(&p.points, skeleton, p.color, p.module);
     }
     for s in &skeleton.surfaces {
         let kind = match s.kind {
@@ -233,11 +287,11 @@ pub fn build_mesh(skeleton: &Skeleton, options: &MeshOptions) -> MeshBuffers {
             crate::turtle::SurfaceKind::Petal => surfaces::SurfaceKind::Petal,
         };
         let points = surfaces::place(kind, s.origin, s.heading, s.left, s.scale);
-        builder.flat(&points, skeleton.color(s.color), s.module);
+        builder.flat(&points, skeleton, s.color, s.module);
     }
     for s in &skeleton.spheres {
         let radius = s.radius_width.map_or(s.radius, |w| w * unit);
-        builder.sphere(s.center, radius, skeleton.color(s.color), s.module);
+        builder.sphere(s.center, radius, skeleton, s.color, s.module);
     }
     builder.mesh
 }
@@ -338,20 +392,12 @@ impl Builder<'_> {
         index
     }
 
-    /// Starts a provenance range: the triangles from here on come from `module`.
-    fn range(&mut self, module: u32) {
+    /// Starts a provenance range and a colour range: the triangles from here on come from
+    /// `module` and have colour index `color`.
+    fn range(&mut self, module: u32, color: u16) {
         let first = self.mesh.triangle_count() as u32;
-        if let [.., last_first, last_module] = self.mesh.ranges[..] {
-            if last_module == module {
-                return;
-            }
-            if last_first == first {
-                let n = self.mesh.ranges.len();
-                self.mesh.ranges[n - 1] = module;
-                return;
-            }
-        }
-        self.mesh.ranges.extend([first, module]);
+        push_range(&mut self.mesh.ranges, first, module);
+        push_range(&mut self.mesh.color_ranges, first, color as u32);
     }
 
     fn tube(&mut self, skeleton: &Skeleton, chain: &[u32], start_cap: bool) {
@@ -418,7 +464,7 @@ impl Builder<'_> {
         }
         let n = sides as u32;
         // Start cap, facing back along the axis.
-        self.range(segments[0].module);
+        self.range(segments[0].module, segments[0].color);
         if start_cap {
             self.cap(
                 samples[0].0,
@@ -429,7 +475,8 @@ impl Builder<'_> {
             );
         }
         for k in 0..rings.len() - 1 {
-            self.range(segments[samples[k].3].module);
+            let segment = segments[samples[k].3];
+            self.range(segment.module, segment.color);
             let (a0, b0) = (rings[k], rings[k + 1]);
             for j in 0..n {
                 let next = (j + 1) % n;
@@ -438,7 +485,9 @@ impl Builder<'_> {
             }
         }
         let last = samples.len() - 1;
-        let c = skeleton.color(segments[segments.len() - 1].color);
+        let end = segments[segments.len() - 1];
+        self.range(end.module, end.color);
+        let c = skeleton.color(end.color);
         self.cap(samples[last].0, samples[last].1, rings[last], c, false);
     }
 
@@ -468,12 +517,13 @@ impl Builder<'_> {
     }
 
     /// A polygon or predefined surface, two-sided: the front faces its normal, the back the other way.
-    fn flat(&mut self, points: &[DVec3], c: [f32; 3], module: u32) {
+    fn flat(&mut self, points: &[DVec3], skeleton: &Skeleton, color: u16, module: u32) {
         let t = polygon::triangulate(points);
         if t.triangles.is_empty() {
             return;
         }
-        self.range(module);
+        self.range(module, color);
+        let c = skeleton.color(color);
         for (normal, flip) in [(t.normal, false), (-t.normal, true)] {
             let first = self.mesh.vertex_count() as u32;
             for p in points {
@@ -490,13 +540,14 @@ impl Builder<'_> {
         }
     }
 
-    fn sphere(&mut self, center: DVec3, radius: f64, c: [f32; 3], module: u32) {
+    fn sphere(&mut self, center: DVec3, radius: f64, skeleton: &Skeleton, color: u16, module: u32) {
         let segments = self.options.sphere_segments.max(3);
         let s = sphere::sphere(center, radius, segments, segments / 2);
         if s.triangles.is_empty() {
             return;
         }
-        self.range(module);
+        self.range(module, color);
+        let c = skeleton.color(color);
         let first = self.mesh.vertex_count() as u32;
         for (p, n) in s.positions.iter().zip(&s.normals) {
             self.vertex(*p, *n, c);
@@ -515,6 +566,22 @@ impl Builder<'_> {
             }
         }
     }
+}
+
+/// Appends (first, value) to a range list unless the last range has that value already; a range
+/// that would stay empty is overwritten.
+fn push_range(ranges: &mut Vec<u32>, first: u32, value: u32) {
+    if let [.., last_first, last_value] = ranges[..] {
+        if last_value == value {
+            return;
+        }
+        if last_first == first {
+            let n = ranges.len();
+            ranges[n - 1] = value;
+            return;
+        }
+    }
+    ranges.extend([first, value]);
 }
 
 /// Length of the diagonal of the box around every segment end point.
@@ -767,5 +834,40 @@ mod tests {
         let mesh = build_mesh(&skeleton, &absolute(0.1));
         // Start cap and first quads: module 2; second quads and end cap: module 5.
         assert_eq!(mesh.ranges, vec![0, 2, 8 + 16, 5]);
+    }
+
+    #[test]
+    fn color_ranges_give_every_triangle_the_colour_index_that_drew_it() {
+        let mut second = segment(DVec3::Y, DVec3::new(0.0, 2.0, 0.0), Some(0));
+        second.color = 2;
+        let skeleton = Skeleton {
+            segments: vec![segment(DVec3::ZERO, DVec3::Y, None), second],
+            polygons: vec![Polygon {
+                points: vec![
+                    DVec3::X,
+                    DVec3::new(2.0, 0.0, 0.0),
+                    DVec3::new(2.0, 1.0, 0.0),
+                ],
+                color: 5,
+                module: 9,
+            }],
+            ..Skeleton::default()
+        };
+        let mesh = build_mesh(&skeleton, &absolute(0.1));
+        assert_eq!(mesh.check(), Ok(()));
+        // Start cap and first quads: index 0; second quads and end cap: 2; the triangle: 5.
+        assert_eq!(mesh.color_ranges, vec![0, 0, 8 + 16, 2, 8 + 16 + 16 + 8, 5]);
+        let indices = mesh.triangle_color_indices();
+        assert_eq!(indices.len(), mesh.triangle_count());
+        // The first vertex of every triangle has its index's colour.
+        for (t, &index) in indices.iter().enumerate() {
+            let v = mesh.indices[3 * t] as usize;
+            assert_eq!(
+                &mesh.colors[3 * v..3 * v + 3],
+                &skeleton.color(index),
+                "triangle {t}"
+            );
+        }
+        assert_eq!(mesh.width_unit, 0.1);
     }
 }

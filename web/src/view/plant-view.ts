@@ -168,6 +168,41 @@ export class PlantView {
     this.requestRender();
   }
 
+  /**
+   * A PNG of the current view at `width` × `height` pixels: the same camera, lights and
+   * background, the aspect ratio of the picture (the vertical field of view is kept). The canvas
+   * is drawn at that size for one frame and restored before the page paints again.
+   */
+  async snapshot(width: number, height: number): Promise<Blob> {
+    const canvas = this.renderer.domElement;
+    const pixelRatio = this.renderer.getPixelRatio();
+    let blob: Promise<Blob | null>;
+    try {
+      this.renderer.setPixelRatio(1);
+      this.renderer.setSize(width, height, false);
+      this.camera.aspect = width / height;
+      this.camera.updateProjectionMatrix();
+      this.renderer.render(this.scene, this.camera);
+      // toBlob copies the bitmap now (preserveDrawingBuffer keeps it); encoding finishes later.
+      blob = new Promise((resolve) => canvas.toBlob(resolve, 'image/png'));
+    } finally {
+      this.renderer.setPixelRatio(pixelRatio);
+      this.resize();
+      this.renderer.render(this.scene, this.camera);
+    }
+    const png = await blob;
+    if (!png) throw new Error(`the browser could not encode a ${width} × ${height} PNG`);
+    return png;
+  }
+
+  /** The largest picture side the GPU can draw (its renderbuffer and viewport limits). */
+  maxPictureSide(): number {
+    const gl = this.renderer.getContext();
+    const viewport = gl.getParameter(gl.MAX_VIEWPORT_DIMS) as Int32Array;
+    const renderbuffer = gl.getParameter(gl.MAX_RENDERBUFFER_SIZE) as number;
+    return Math.min(viewport[0], viewport[1], renderbuffer);
+  }
+
   /** Marks the plant as out of date (the grammar has errors) or current. */
   setStale(stale: boolean): void {
     this.container.toggleAttribute('data-stale', stale);

@@ -1,0 +1,141 @@
+//! OpenInventor 2.1 ASCII (`.iv`): one `Separator` with a `PerspectiveCamera` that frames the
+//! plant, a `DirectionalLight`, `ShapeHints` (counter-clockwise, solid: leaves are two-sided in
+//! the mesh already), one `Coordinate3` and one `Normal` (bound per vertex, indexed by
+//! `coordIndex`) that every face set shares, then per colour index a `Material` (sRGB) and an
+//! `IndexedFaceSet`. A model too large to mesh becomes `IndexedLineSet`s drawn in their base
+//! colour.
+
+use super::scene::{decimals_for, extent, number, srgb, Primitive, Scene, View};
+use std::fmt::Write;
+
+/// The Inventor text of `scene`.
+pub fn write(scene: &Scene) -> String {
+    let bounds = scene.bounds();
+    let decimals = decimals_for(extent(bounds));
+    let view = View::framing(bounds);
+    let groups = scene.groups();
+    let primitive = scene.primitive();
+    let points = scene.points();
+    let mut out = String::with_capacity(64 + points.len() * 12);
+
+    out.push_str("#Inventor V2.1 ascii\n\n");
+    writeln!(
+        out,
+        "# Made with Meristem {}: one Material and face set per colour index",
+        env!("CARGO_PKG_VERSION")
+    )
+    .ok();
+    out.push_str("Separator {\n  PerspectiveCamera {\n    position ");
+    vector(&mut out, view.eye.to_array(), decimals);
+    let (axis, angle) = view.orientation();
+    out.push_str("\n    orientation ");
+    vector(&mut out, axis.to_array(), 6);
+    out.push(' ');
+    number(&mut out, angle, 6);
+    out.push_str("\n    nearDistance ");
+    number(
+        &mut out,
+        (view.distance - view.radius).max(view.distance * 0.01),
+        decimals,
+    );
+    out.push_str("\n    farDistance ");
+    number(&mut out, view.distance + view.radius * 2.0, decimals);
+    out.push_str("\n    focalDistance ");
+    number(&mut out, view.distance, decimals);
+    out.push_str("\n    heightAngle ");
+    number(&mut out, view.fov, 6);
+    out.push_str("\n  }\n  DirectionalLight {\n    direction ");
+    vector(&mut out, view.direction().to_array(), 6);
+    out.push_str("\n  }\n");
+
+    if groups.is_empty() {
+        out.push_str("}\n");
+        return out;
+    }
+    match primitive {
+        Primitive::Triangles => {
+            out.push_str(
+                "  ShapeHints {\n    vertexOrdering COUNTERCLOCKWISE\n    shapeType SOLID\n  }\n",
+            );
+        }
+        Primitive::Lines => out.push_str("  LightModel {\n    model BASE_COLOR\n  }\n"),
+    }
+    out.push_str("  Coordinate3 {\n    point [\n");
+    triples(&mut out, points, decimals);
+    out.push_str("    ]\n  }\n");
+    if primitive == Primitive::Triangles {
+        out.push_str("  Normal {\n    vector [\n");
+        triples(&mut out, &scene.mesh.normals, 4);
+        out.push_str("    ]\n  }\n  NormalBinding {\n    value PER_VERTEX_INDEXED\n  }\n");
+    }
+    let arity = scene.arity();
+    for group in &groups {
+        let [r, g, b] = srgb(group.color);
+        write!(
+            out,
+            "  # colour index {}\n  Material {{\n    diffuseColor ",
+            group.index
+        )
+        .ok();
+        vector(&mut out, [r as f64, g as f64, b as f64], 4);
+        out.push_str("\n  }\n");
+        match primitive {
+            Primitive::Triangles => out.push_str("  IndexedFaceSet {\n    coordIndex [\n"),
+            Primitive::Lines => out.push_str("  IndexedLineSet {\n    coordIndex [\n"),
+        }
+        for &item in &group.items {
+            out.push_str("     ");
+            for corner in &scene.corners(item)[..arity] {
+                write!(out, " {corner},").ok();
+            }
+            out.push_str(" -1,\n");
+        }
+        out.push_str("    ]\n  }\n");
+    }
+    out.push_str("}\n");
+    out
+}
+
+fn vector(out: &mut String, v: [f64; 3], decimals: usize) {
+    for (k, c) in v.iter().enumerate() {
+        if k > 0 {
+            out.push(' ');
+        }
+        number(out, *c, decimals);
+    }
+}
+
+fn triples(out: &mut String, flat: &[f32], decimals: usize) {
+    for p in flat.chunks_exact(3) {
+        out.push_str("      ");
+        vector(out, [p[0] as f64, p[1] as f64, p[2] as f64], decimals);
+        out.push_str(",\n");
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::export::tests::{small_scene, two_colour_plant};
+
+    #[test]
+    fn shared_coordinates_and_a_face_set_per_colour_index() {
+        let (mesh, skeleton) = two_colour_plant();
+        let text = write(&Scene::new(&mesh, &skeleton));
+        assert!(text.starts_with("#Inventor V2.1 ascii\n"));
+        assert_eq!(text.matches("Coordinate3 {").count(), 1);
+        assert_eq!(text.matches("IndexedFaceSet {").count(), 2);
+        assert_eq!(text.matches('{').count(), text.matches('}').count());
+        assert_eq!(
+            text.lines().filter(|l| l.ends_with(" -1,")).count(),
+            mesh.triangle_count()
+        );
+    }
+
+    #[test]
+    fn the_fallback_writes_line_sets() {
+        let (mesh, skeleton) = small_scene(10);
+        let text = write(&Scene::new(&mesh, &skeleton));
+        assert!(text.contains("IndexedLineSet {") && !text.contains("IndexedFaceSet"));
+    }
+}

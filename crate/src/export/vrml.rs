@@ -1,0 +1,146 @@
+//! VRML 2.0 (VRML97, `.wrl`): one `Shape` per colour index with a `Material`, all sharing one
+//! `Coordinate` and one `Normal` node (`DEF` in the first shape, `USE` in the others), triangles
+//! in an `IndexedFaceSet` (counter-clockwise, `solid`: leaves are already two-sided in the mesh),
+//! a `Viewpoint` that frames the plant and a white `Background`. Colours are sRGB. A model too
+//! large to mesh is written as an `IndexedLineSet` per colour index (emissive colour).
+
+use super::scene::{decimals_for, extent, number, srgb, Primitive, Scene, View};
+use std::fmt::Write;
+
+/// The VRML text of `scene`.
+pub fn write(scene: &Scene) -> String {
+    let bounds = scene.bounds();
+    let decimals = decimals_for(extent(bounds));
+    let view = View::framing(bounds);
+    let groups = scene.groups();
+    let primitive = scene.primitive();
+    let mut out = String::with_capacity(64 + scene.points().len() * 12);
+
+    out.push_str("#VRML V2.0 utf8\n");
+    out.push_str(&format!(
+        "# Made with Meristem {}: {} {}, one shape per colour index.\n",
+        env!("CARGO_PKG_VERSION"),
+        groups.iter().map(|g| g.items.len()).sum::<usize>(),
+        match primitive {
+            Primitive::Triangles => "triangles",
+            Primitive::Lines => "lines (too large to mesh)",
+        }
+    ));
+    out.push_str("WorldInfo { title \"Meristem plant\" }\n");
+    out.push_str("NavigationInfo { type [ \"EXAMINE\", \"ANY\" ] headlight TRUE }\n");
+    out.push_str("Background { skyColor [ 1 1 1 ] }\n");
+    out.push_str("Viewpoint {\n  position ");
+    vector(&mut out, view.eye.to_array(), decimals);
+    out.push_str("\n  orientation ");
+    let (axis, angle) = view.orientation();
+    vector(&mut out, axis.to_array(), 6);
+    out.push(' ');
+    number(&mut out, angle, 6);
+    out.push_str("\n  fieldOfView ");
+    number(&mut out, view.fov, 6);
+    out.push_str("\n  description \"Whole plant\"\n}\n");
+
+    for (k, group) in groups.iter().enumerate() {
+        let [r, g, b] = srgb(group.color);
+        out.push_str(&format!(
+            "# colour index {}\nShape {{\n  appearance Appearance {{\n    material Material {{ ",
+            group.index
+        ));
+        let color_field = match primitive {
+            Primitive::Triangles => "diffuseColor",
+            Primitive::Lines => "emissiveColor",
+        };
+        out.push_str(color_field);
+        out.push(' ');
+        vector(&mut out, [r as f64, g as f64, b as f64], 4);
+        out.push_str(" }\n  }\n");
+        match primitive {
+            Primitive::Triangles => out.push_str("  geometry IndexedFaceSet {\n"),
+            Primitive::Lines => out.push_str("  geometry IndexedLineSet {\n"),
+        }
+        if k == 0 {
+            out.push_str("    coord DEF Meristem_Points Coordinate { point [\n");
+            points(&mut out, scene.points(), decimals);
+            out.push_str("    ] }\n");
+            if primitive == Primitive::Triangles {
+                out.push_str("    normal DEF Meristem_Normals Normal { vector [\n");
+                points(&mut out, &scene.mesh.normals, 4);
+                out.push_str("    ] }\n");
+            }
+        } else {
+            out.push_str("    coord USE Meristem_Points\n");
+            if primitive == Primitive::Triangles {
+                out.push_str("    normal USE Meristem_Normals\n");
+            }
+        }
+        out.push_str("    coordIndex [\n");
+        let arity = scene.arity();
+        for &item in &group.items {
+            out.push_str("     ");
+            for corner in &scene.corners(item)[..arity] {
+                write!(out, " {corner}").ok();
+            }
+            out.push_str(" -1\n");
+        }
+        out.push_str("    ]\n  }\n}\n");
+    }
+    out
+}
+
+/// `x y z` of a vector.
+fn vector(out: &mut String, v: [f64; 3], decimals: usize) {
+    for (k, c) in v.iter().enumerate() {
+        if k > 0 {
+            out.push(' ');
+        }
+        number(out, *c, decimals);
+    }
+}
+
+/// One `x y z,` line per point of a flat `f32` × 3 array.
+fn points(out: &mut String, flat: &[f32], decimals: usize) {
+    for p in flat.chunks_exact(3) {
+        out.push_str("      ");
+        vector(out, [p[0] as f64, p[1] as f64, p[2] as f64], decimals);
+        out.push_str(",\n");
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::export::tests::{small_scene, two_colour_plant};
+
+    #[test]
+    fn shapes_share_one_coordinate_node_and_index_it_in_range() {
+        let (mesh, skeleton) = two_colour_plant();
+        let text = write(&Scene::new(&mesh, &skeleton));
+        assert!(text.starts_with("#VRML V2.0 utf8\n"));
+        assert_eq!(text.matches("Shape {").count(), 2);
+        assert_eq!(text.matches("DEF Meristem_Points").count(), 1);
+        assert_eq!(text.matches("USE Meristem_Points").count(), 1);
+        assert_eq!(text.matches("Viewpoint {").count(), 1);
+        // Every triangle once, each index below the vertex count.
+        let faces: Vec<&str> = text.lines().filter(|l| l.ends_with(" -1")).collect();
+        assert_eq!(faces.len(), mesh.triangle_count());
+        for face in faces {
+            let corners: Vec<u32> = face
+                .split_whitespace()
+                .map(|w| w.parse().unwrap_or(0))
+                .collect();
+            assert_eq!(corners.len(), 4);
+            assert!(corners[..3]
+                .iter()
+                .all(|&i| (i as usize) < mesh.vertex_count()));
+        }
+    }
+
+    #[test]
+    fn the_fallback_writes_line_sets() {
+        let (mesh, skeleton) = small_scene(10);
+        let text = write(&Scene::new(&mesh, &skeleton));
+        assert!(text.contains("IndexedLineSet"));
+        assert!(!text.contains("IndexedFaceSet"));
+        assert!(text.contains("emissiveColor"));
+    }
+}

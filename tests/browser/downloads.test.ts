@@ -1,0 +1,161 @@
+// End-to-end: the Download menu of the built studio. Each model download, clicked as a user would,
+// must be byte for byte what `meristem export` writes for the same grammar, iterations and view
+// options (OBJ: a zip of the tool's OBJ and MTL); the PNG must have the chosen size and show the plant.
+import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { unzipSync } from 'fflate';
+import { chromium, type Browser, type Download, type Page } from 'playwright-core';
+import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
+import { exportWithCli, galleryDir, removeScratch, scratchDir } from '../export/tools';
+import { decodePng, foregroundShare } from './pictures';
+
+const RESULTS = new URL('../../test-results/', import.meta.url);
+/** A grammar with several colour indices and polygon leaves, at fewer iterations than its own. */
+const EXAMPLE = 'abop-1.25-bush.lsys';
+const ITERATIONS = '4';
+/** The toolbar's view options, and the command-line tool's for the same mesh. */
+const SIDES = '8';
+const CLI_OPTIONS = ['--iterations', ITERATIONS, '--sides', SIDES, '--smooth-all'];
+
+let browser: Browser;
+let page: Page;
+const problems: string[] = [];
+const dir = scratchDir('downloads');
+const grammarFile = join(dir, 'grammar.lsys');
+
+/** Opens the Download menu unless it is open. */
+async function openMenu(): Promise<void> {
+  if (!(await page.getByTestId('downloads').evaluate((menu) => (menu as HTMLDetailsElement).open))) {
+    await page.getByTestId('downloads').locator('summary').click();
+  }
+  await page.getByTestId('download-glb').waitFor({ state: 'visible' });
+}
+
+/** Clicks a download button in the menu and returns the download the browser made. */
+async function clickDownload(testId: string): Promise<Download> {
+  await openMenu();
+  const [download] = await Promise.all([page.waitForEvent('download'), page.getByTestId(testId).click()]);
+  return download;
+}
+
+async function downloadedBytes(download: Download): Promise<Buffer> {
+  return readFileSync(await download.path());
+}
+
+/** Waits for the next build after `previous` and returns the status state. */
+async function nextBuild(previous: number): Promise<string | null> {
+  await page.waitForFunction(
+    (before) => Number(document.querySelector('[data-testid=status]')?.getAttribute('data-generation') ?? 0) > before,
+    previous,
+    { timeout: 30_000 },
+  );
+  return page.getByTestId('status').getAttribute('data-state');
+}
+
+async function generation(): Promise<number> {
+  return Number((await page.getByTestId('status').getAttribute('data-generation')) ?? '0');
+}
+
+beforeAll(async () => {
+  mkdirSync(RESULTS, { recursive: true });
+  browser = await chromium.launch({ executablePath: '/usr/bin/chromium' });
+  page = await browser.newPage({ viewport: { width: 1280, height: 800 }, colorScheme: 'light', acceptDownloads: true });
+  page.on('console', (message) => {
+    if (message.type() === 'error') problems.push(`console error: ${message.text()}`);
+  });
+  page.on('pageerror', (error) => problems.push(`page error: ${error.message}`));
+  await page.goto(inject('studioUrl'));
+  await page.waitForFunction(() => (window.__meristem?.lastStats?.segments ?? 0) > 0);
+
+  // The grammar, pasted as a user would, and the iterations typed into the toolbar.
+  const source = readFileSync(join(galleryDir, EXAMPLE), 'utf8');
+  writeFileSync(grammarFile, source);
+  let before = await generation();
+  await page.getByTestId('editor').locator('.cm-content').click();
+  await page.keyboard.press('Control+A');
+  await page.keyboard.insertText(source);
+  expect(await nextBuild(before)).toBe('ok');
+  before = await generation();
+  await page.getByTestId('iterations').fill(ITERATIONS);
+  expect(await nextBuild(before)).toBe('ok');
+  before = await generation();
+  await page.getByTestId('sides').selectOption(SIDES);
+  expect(await nextBuild(before)).toBe('ok');
+  before = await generation();
+  await page.getByTestId('smooth-all').check();
+  expect(await nextBuild(before)).toBe('ok');
+  await openMenu();
+  writeFileSync(new URL('studio-downloads-menu.png', RESULTS), await page.screenshot());
+});
+
+afterAll(async () => {
+  await browser?.close();
+  removeScratch(dir);
+});
+
+describe('the Download menu', () => {
+  it.each(['wrl', 'glb', 'pov', 'iv', 'svg'])('%s: the bytes of meristem export', async (format) => {
+    const download = await clickDownload(`download-${format}`);
+    expect(download.suggestedFilename()).toBe(`plant.${format}`);
+    const bytes = await downloadedBytes(download);
+    const cli = exportWithCli(grammarFile, join(dir, `plant.${format}`), CLI_OPTIONS);
+    expect(bytes.length).toBe(cli.length);
+    expect(bytes.equals(cli), `plant.${format} differs from the command-line tool's`).toBe(true);
+    await expect.poll(() => page.getByTestId('export-status').textContent()).toMatch(new RegExp(`^Saved plant\\.${format} · `));
+    expect(problems).toEqual([]);
+  });
+
+  it('obj: a zip of the OBJ and MTL that meristem export writes', async () => {
+    const download = await clickDownload('download-obj');
+    expect(download.suggestedFilename()).toBe('plant.zip');
+    const entries = unzipSync(new Uint8Array(await downloadedBytes(download)));
+    expect(Object.keys(entries)).toEqual(['plant.obj', 'plant.mtl']);
+    const obj = exportWithCli(grammarFile, join(dir, 'plant.obj'), CLI_OPTIONS);
+    expect(Buffer.from(entries['plant.obj']).equals(obj)).toBe(true);
+    expect(Buffer.from(entries['plant.mtl']).equals(readFileSync(join(dir, 'plant.mtl')))).toBe(true);
+    expect(problems).toEqual([]);
+  });
+
+  it('png: a picture of the view at the chosen size', async () => {
+    await page.getByTestId('frame').click(); // the view still frames the studio's first plant
+    await openMenu();
+    await page.getByTestId('png-width').fill('640');
+    await page.getByTestId('png-height').fill('360');
+    const download = await clickDownload('download-png');
+    expect(download.suggestedFilename()).toBe('plant.png');
+    const bytes = await downloadedBytes(download);
+    writeFileSync(new URL('downloaded-view.png', RESULTS), bytes);
+    const picture = decodePng(bytes);
+    expect([picture.width, picture.height]).toEqual([640, 360]);
+    expect(foregroundShare(picture), 'share of the picture covered by the plant').toBeGreaterThan(0.01);
+    await expect.poll(() => page.getByTestId('export-status').textContent()).toMatch(/^Saved plant\.png · 640 × 360 · /);
+    // The view on the page is back to its own size.
+    const canvas = await page.locator('[data-testid=viewport] canvas').boundingBox();
+    const viewport = await page.getByTestId('viewport').boundingBox();
+    expect(Math.round(canvas!.width)).toBe(Math.round(viewport!.width));
+    expect(problems).toEqual([]);
+  });
+
+  it('png: a size out of range is refused with the range', async () => {
+    await openMenu();
+    await page.getByTestId('png-width').fill('8');
+    await page.getByTestId('download-png').click();
+    await expect.poll(() => page.getByTestId('export-status').getAttribute('data-state')).toBe('error');
+    expect(await page.getByTestId('export-status').textContent()).toMatch(/^PNG size: width and height must be whole numbers from 16 to \d+$/);
+    await expect(page.getByTestId('png-width').isVisible(), 'the menu stays open to fix the size').resolves.toBe(true);
+    expect(problems).toEqual([]);
+  });
+
+  it('closes like a menu: after a choice, on Escape and on a click elsewhere', async () => {
+    const isOpen = () => page.getByTestId('downloads').evaluate((menu) => (menu as HTMLDetailsElement).open);
+    await clickDownload('download-svg');
+    expect(await isOpen()).toBe(false);
+    await openMenu();
+    await page.keyboard.press('Escape');
+    expect(await isOpen()).toBe(false);
+    await openMenu();
+    await page.getByTestId('viewport').click({ position: { x: 40, y: 400 } });
+    expect(await isOpen()).toBe(false);
+    expect(problems).toEqual([]);
+  });
+});

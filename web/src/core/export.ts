@@ -1,0 +1,57 @@
+// The facade over the core's file writers: one call, the file's bytes out, the wasm object freed.
+import { exportModel as coreExportModel } from '../../../crate/pkg/meristem.js';
+import { assertReady } from './init';
+import type { BuildOptions } from './types';
+
+/** A model format the core writes, named by its file extension. */
+export type ModelFormat = 'wrl' | 'glb' | 'pov' | 'obj' | 'iv' | 'svg';
+
+/** The formats in menu order, with what a user sees for each. */
+export const MODEL_FORMATS: readonly { format: ModelFormat; label: string; file: string }[] = [
+  { format: 'wrl', label: 'VRML 2.0', file: '.wrl' },
+  { format: 'glb', label: 'glTF 2.0 binary', file: '.glb' },
+  { format: 'pov', label: 'POV-Ray 3.7 scene', file: '.pov' },
+  { format: 'obj', label: 'OBJ + MTL', file: '.zip' },
+  { format: 'iv', label: 'OpenInventor 2.1', file: '.iv' },
+  { format: 'svg', label: 'SVG drawing (X–Y plane)', file: '.svg' },
+];
+
+/** A file ready to download. */
+export interface ModelFile {
+  /** `plant.glb`, or `plant.zip` (OBJ and its MTL) for `obj`. */
+  fileName: string;
+  mimeType: string;
+  /** The file's bytes, owned by JavaScript. */
+  bytes: Uint8Array;
+}
+
+/** Options of {@link exportModel}: the build's, and the file name without extension. */
+export interface ExportOptions extends BuildOptions {
+  /** File name without extension; default `plant`. */
+  name?: string;
+}
+
+/**
+ * Builds `source` with `options` (as {@link buildPlant} does, so the mesh is the one on screen) and
+ * writes its model in `format`: the same bytes as `meristem export FILE -o NAME.EXT` for the same
+ * grammar, iterations, seed, sides and smooth axes (for `obj`, a zip holding exactly the command's
+ * NAME.obj and NAME.mtl). Throws when the grammar has errors (export only a plant that built) or the
+ * core fails. Requires {@link initCore}.
+ */
+export function exportModel(source: string, format: ModelFormat, options: ExportOptions = {}): ModelFile {
+  assertReady();
+  const result = coreExportModel(
+    source,
+    format,
+    options.name ?? 'plant',
+    options.iterations ?? undefined,
+    options.seed ?? undefined,
+    options.sides ?? undefined,
+    options.smoothAll ?? undefined,
+  );
+  try {
+    return { fileName: result.fileName, mimeType: result.mimeType, bytes: result.bytes() };
+  } finally {
+    result.free();
+  }
+}
