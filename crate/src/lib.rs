@@ -3,11 +3,13 @@
 //! The pipeline is one module per stage with plain data between them (see ARCHITECTURE.md):
 //! [`syntax`] (text -> syntax tree) -> [`model`] (resolve: validated model) -> [`derive`]
 //! (rewriting) -> [`turtle`] (interpretation: skeleton) -> [`mesh`] (triangles) -> [`export`].
-//! [`pipeline::build`] runs them all. `wasm` is the only file that knows about JavaScript.
+//! [`pipeline::build`] runs them all. [`growth`] adds the particle attributes (lifetime, speed,
+//! shape, attractors) to derive and turtle. `wasm` is the only file that knows about JavaScript.
 
 pub mod derive;
 pub mod diagnostics;
 pub mod export;
+pub mod growth;
 pub mod import;
 pub mod mesh;
 pub mod model;

@@ -1,9 +1,10 @@
 //! `meristem`, the command-line tool: the same core as the studio, for scripts, tests and CI.
 //!
 //! ```text
-//! meristem derive FILE [--iterations N] [--seed S] [--stats] [--time]
+//! meristem derive FILE [--iterations N] [--seed S] [--stats | --growth] [--time]
 //!                                                   the derived string, or stats as JSON;
 //!                                                   --time: each stage's time on stderr
+//! meristem derive FILE --growth                     what the growth attributes did, step by step (JSON)
 //! meristem check FILE                               diagnostics as FILE:LINE:COL: severity: message
 //! meristem export FILE -o OUT.EXT [--format EXT] [--iterations N] [--seed S] [--sides N] [--smooth-all]
 //!                                                   the model as OUT.wrl, .glb, .pov, .obj (+ .mtl), .iv or .svg
@@ -20,7 +21,7 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 const USAGE: &str = "usage:
-  meristem derive FILE [--iterations N] [--seed S] [--stats] [--time]
+  meristem derive FILE [--iterations N] [--seed S] [--stats | --growth] [--time]
   meristem check FILE
   meristem export FILE -o OUT.EXT [--format EXT] [--iterations N] [--seed S] [--sides N] [--smooth-all]
       EXT: wrl (VRML 2.0), glb (glTF 2.0), pov (POV-Ray 3.7), obj (OBJ, writes OUT.mtl too),
@@ -37,6 +38,7 @@ struct Args {
     stats: bool,
     time: bool,
     from: Option<String>,
+    growth: bool,
     output: Option<PathBuf>,
     format: Option<String>,
     sides: Option<u32>,
@@ -53,6 +55,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
     let mut stats = false;
     let mut time = false;
     let mut from = None;
+    let mut growth = false;
     let mut output = None;
     let mut format = None;
     let mut sides = None;
@@ -64,6 +67,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             Long("stats") => stats = true,
             Long("time") => time = true,
             Long("from") => from = Some(parser.value()?.string()?),
+            Long("growth") => growth = true,
             Long("output") | Short('o') => output = Some(PathBuf::from(parser.value()?)),
             Long("format") | Short('f') => format = Some(parser.value()?.string()?),
             Long("sides") => sides = Some(parser.value()?.parse()?),
@@ -91,6 +95,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
         stats,
         time,
         from,
+        growth,
         output,
         format,
         sides,
@@ -231,7 +236,14 @@ fn main() -> ExitCode {
     match args.verb.as_str() {
         "check" => {}
         "derive" if result.ok() => {
-            if args.stats {
+            if args.growth {
+                // One report per step; `[]` when the grammar sets no growth attribute.
+                let steps = result
+                    .growth
+                    .as_ref()
+                    .map_or("[]".into(), |g| g.steps_json());
+                println!("{steps}");
+            } else if args.stats {
                 println!("{}", result.stats.to_json());
             } else {
                 println!("{}", result.derived_text());

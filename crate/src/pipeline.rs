@@ -9,6 +9,7 @@
 use crate::derive::{self, DeriveOptions};
 use crate::diagnostics::{has_errors, Diagnostic, LineIndex, LocatedDiagnostic};
 use crate::export::Stats;
+use crate::growth::{GrowthRecord, GrowthState, Heights};
 use crate::mesh::{self, MeshBuffers, MeshOptions};
 use crate::model::{self, LString, Model};
 use crate::syntax;
@@ -52,6 +53,9 @@ pub struct Build {
     pub parent: Vec<u32>,
     /// How long each stage took, when the caller passed a clock ([`build_with_clock`]).
     pub timings: Option<StageTimings>,
+    /// With growth attributes (`#lifetime`, `#shape`, `#sun`, …): each module's growth state and
+    /// what every step did (apices growing and stopped per third, rewritings).
+    pub growth: Option<GrowthRecord>,
 }
 
 /// [`derive::Explanation`] in terms of the derived string: which of its modules production `p`
@@ -239,6 +243,55 @@ impl Build {
     }
 }
 
+/// Derive's observer: the turtle, run on the derived string (not its homomorphism image).
+struct TurtleObserver<'m> {
+    model: &'m Model,
+}
+
+impl derive::Observer for TurtleObserver<'_> {
+    fn queries(&mut self, s: &LString, growth: Option<&GrowthState>) -> Vec<(u32, [f64; 3])> {
+        turtle::interpret_grown(self.model, s, growth)
+            .queries
+            .into_iter()
+            .map(|q| (q.module, q.value))
+            .collect()
+    }
+
+    fn heights(&mut self, s: &LString, growth: &GrowthState) -> Heights {
+        turtle::heights(self.model, s, Some(growth))
+    }
+}
+
+/// The growth state of the string the turtle reads: with a homomorphism, each module takes the
+/// state of the derived module it comes from, and only the first module from each keeps its
+/// rotations (so a module drawn as several segments turns once).
+fn turtle_growth(state: &GrowthState, turtle_origin: &[u32]) -> GrowthState {
+    if turtle_origin.is_empty() {
+        return state.clone();
+    }
+    let modules = turtle_origin
+        .iter()
+        .enumerate()
+        .map(|(j, &o)| {
+            let g = state.modules.get(o as usize).copied().unwrap_or_default();
+            if j > 0 && turtle_origin[j - 1] == o {
+                crate::growth::ModuleGrowth {
+                    sun: 0.0,
+                    wind: 0.0,
+                    gravity: 0.0,
+                    ..g
+                }
+            } else {
+                g
+            }
+        })
+        .collect();
+    GrowthState {
+        step: state.step,
+        modules,
+    }
+}
+
 /// Runs every stage on `source`.
 pub fn build(source: &str, options: &BuildOptions) -> Build {
     build_with_clock_option(source, options, None)
@@ -290,20 +343,14 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Stopwatch) -> Bu
         result.model = Some(model);
         return result;
     }
-    let mut queries = |s: &LString| -> Vec<(u32, [f64; 3])> {
-        turtle::interpret(&model, s)
-            .queries
-            .into_iter()
-            .map(|q| (q.module, q.value))
-            .collect()
-    };
+    let mut observer = TurtleObserver { model: &model };
     result.turtle_origin = match derive::derive_tracked(
         &model,
         &DeriveOptions {
             steps,
             seed: options.seed,
         },
-        Some(&mut queries),
+        Some(&mut observer),
     ) {
         Ok(derivation) => {
             result.diagnostics.extend(derivation.warnings);
@@ -312,6 +359,7 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Stopwatch) -> Bu
             result.origin = derivation.origin;
             result.previous = derivation.previous;
             result.parent = derivation.parent;
+            result.growth = derivation.growth;
             derivation.turtle_origin
         }
         Err(diagnostic) => {
@@ -322,9 +370,14 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Stopwatch) -> Bu
         }
     };
     watch.timings.derive = watch.lap();
-    result.skeleton = turtle::interpret(
+    let growth = result
+        .growth
+        .as_ref()
+        .map(|g| turtle_growth(&g.state, &result.turtle_origin));
+    result.skeleton = turtle::interpret_grown(
         &model,
         result.interpreted.as_ref().unwrap_or(&result.string),
+        growth.as_ref(),
     );
     watch.timings.interpret = watch.lap();
     result.iterations = steps;

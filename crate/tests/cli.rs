@@ -198,6 +198,32 @@ fn import_fails_politely() {
     assert!(out.contains("F_r -> F_r"), "{out}");
 }
 
+#[test]
+fn derive_growth_prints_what_each_step_did_as_json() {
+    let (code, out, err) = meristem(&["derive", &example("jou-fig2-lifetime.lsys"), "--growth"]);
+    assert_eq!((code, err.as_str()), (0, ""));
+    let steps: serde_json::Value = serde_json::from_str(&out).expect("JSON");
+    let steps = steps.as_array().expect("one report per step");
+    assert_eq!(steps.len(), 3);
+    let third = &steps[2];
+    assert_eq!(third["step"], 3);
+    let sum = |key: &str| -> u64 {
+        third[key]
+            .as_array()
+            .expect("per third")
+            .iter()
+            .map(|v| v.as_u64().expect("count"))
+            .sum()
+    };
+    assert_eq!(sum("apices"), 64);
+    let nb = third["survivors"].as_u64().expect("NB");
+    assert!((34..=66).contains(&nb));
+    assert_eq!(sum("growing") + sum("stopped"), 64);
+    // Without growth directives there is nothing to report.
+    let (code, out, _) = meristem(&["derive", &example("abop-1.24d.lsys"), "--growth"]);
+    assert_eq!((code, out.as_str()), (0, "[]\n"));
+}
+
 /// A fresh folder for one test's output files.
 fn temp_dir(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("meristem-cli-{}-{name}", std::process::id()));

@@ -9,10 +9,16 @@
 //!
 //! After each step, decomposition rules are applied until nothing changes and cut modules (`%`,
 //! `@Prune`) remove the rest of their branch. Homomorphism rules make the string the turtle reads.
+//!
+//! With growth attributes (`#lifetime`, `#speed`, `#shape`, `#sun`, …; [`crate::growth`]), every
+//! step starts with the growth hook: the modules' thirds from an [`Observer`], the segments bend,
+//! apices stop or get extra rewritings; the general path then rewrites, and every module's
+//! [`GrowthState`] follows it through rewriting, decomposition and cut.
 
 pub mod context;
 
 use crate::diagnostics::Diagnostic;
+use crate::growth::{self, GrowthRecord, GrowthState, Heights, StepValues, Third};
 use crate::model::{Env, LString, Model, ModuleId, Production, Program, RuleSet, SuccessorModule};
 use crate::syntax::Span;
 use rand::{RngExt, SeedableRng};
@@ -49,6 +55,8 @@ pub struct Derivation {
     /// Filled by [`derive_tracked`]: for each module of `string`, the index in `previous` of the
     /// module it was rewritten or copied from (empty after 0 steps).
     pub parent: Vec<u32>,
+    /// With growth attributes: each module's growth state and what each step did.
+    pub growth: Option<GrowthRecord>,
 }
 
 /// In [`Derivation::origin`]: no production made this module in the last step.
@@ -78,26 +86,41 @@ pub fn derive_with<R: rand::Rng + ?Sized>(
 
 /// Like [`derive`], and also records provenance ([`Derivation::origin`] and
 /// [`Derivation::turtle_origin`]) for the studio's highlighting and picking. Only the last step
-/// and what follows it are tracked, so the cost is one pass's worth of bookkeeping.
+/// and what follows it are tracked, so the cost is one pass's worth of bookkeeping (with growth
+/// attributes every pass is followed anyway, for the modules' growth states).
 ///
-/// `queries`, when the grammar has query modules (`?P ?H ?U ?L`), interprets a string and returns
-/// the value each query module reads (module index, x, y, z): it is called on the axiom and after
-/// every step, and the values become the query modules' parameters (environmental L-systems). The
-/// pipeline passes the turtle here; derive itself knows nothing of geometry.
+/// `observer` is the turtle, passed by the pipeline (derive itself knows nothing of geometry).
+/// When the grammar has query modules (`?P ?H ?U ?L`), it is asked on the axiom and after every
+/// step for the value each query module reads, and the values become the query modules'
+/// parameters (environmental L-systems). With growth attributes that depend on position
+/// (`#lifetime`, `#speed`, `#sun`), it is asked before every step for the height of every module.
+/// Without an observer ([`derive`], [`derive_with`]) every module counts as in the middle third.
 pub fn derive_tracked(
     model: &Model,
     options: &DeriveOptions,
-    queries: Option<&mut QueryFn<'_>>,
+    observer: Option<&mut dyn Observer>,
 ) -> Result<Derivation, Diagnostic> {
     let mut rng = Generator::seed_from_u64(options.seed.unwrap_or(model.settings.seed));
-    run(model, options.steps, &mut rng, true, queries)
+    run(model, options.steps, &mut rng, true, observer)
 }
 
-/// Interprets a string and returns the values its query modules read: (module index, [x, y, z]).
-pub type QueryFn<'a> = dyn FnMut(&LString) -> Vec<(u32, [f64; 3])> + 'a;
+/// What derive asks of the turtle while it derives: the pipeline implements it by interpreting
+/// the string.
+pub trait Observer {
+    /// The value each query module of `s` reads: (module index, [x, y, z]). `growth` is the
+    /// string's growth state when the grammar has growth attributes.
+    fn queries(&mut self, s: &LString, growth: Option<&GrowthState>) -> Vec<(u32, [f64; 3])>;
+    /// The height of every module of `s` with its growth state, and the plant's extent.
+    fn heights(&mut self, s: &LString, growth: &GrowthState) -> Heights;
+}
 
 /// Sets each query module's three parameters to the value the turtle reads there.
-fn apply_queries(model: &Model, s: &mut LString, queries: &mut QueryFn<'_>) {
+fn apply_queries<'o>(
+    model: &Model,
+    s: &mut LString,
+    observer: &mut (dyn Observer + 'o),
+    growth: Option<&GrowthState>,
+) {
     let names = ["?P", "?H", "?U", "?L"];
     if !names
         .iter()
@@ -106,7 +129,7 @@ fn apply_queries(model: &Model, s: &mut LString, queries: &mut QueryFn<'_>) {
     {
         return;
     }
-    for (module, value) in queries(s) {
+    for (module, value) in observer.queries(s, growth) {
         let i = module as usize;
         if i < s.len() && s.params_of(i).len() == 3 {
             let at = s.offsets[i] as usize;
@@ -139,8 +162,9 @@ fn run<R: rand::Rng + ?Sized>(
     steps: u32,
     rng: &mut R,
     track: bool,
-    mut queries: Option<&mut QueryFn<'_>>,
+    mut observer: Option<&mut dyn Observer>,
 ) -> Result<Derivation, Diagnostic> {
+    let growing = model.growth.is_active();
     let mut rewriter = Rewriter::new(model, steps, rng);
     let mut current = rewriter.axiom()?;
     if current.len() > model.settings.max_modules {
@@ -148,21 +172,39 @@ fn run<R: rand::Rng + ?Sized>(
     }
     let mut next = LString::default();
     let has_cut = contains_cut(model);
+    if growing {
+        let modules = growth::born_all(&model.growth, &current, 0, &mut *rewriter.rng);
+        rewriter.growth = Some(GrowthRecord {
+            state: GrowthState { step: 0, modules },
+            steps: Vec::new(),
+        });
+    }
     if !model.decomposition.is_empty() {
+        if growing {
+            rewriter.tracker = Some(Tracker::default());
+        }
         rewriter.decompose(&mut current, &mut next, 0)?;
+        rewriter.tracker = None;
     }
-    if let Some(q) = queries.as_deref_mut() {
-        apply_queries(model, &mut current, q);
+    if let Some(o) = observer.as_deref_mut() {
+        apply_queries(model, &mut current, o, rewriter.growth_state());
     }
-    let d0l = D0lTable::new(model);
+    // The growth hook works per module on the general path.
+    let d0l = if growing { None } else { D0lTable::new(model) };
     let mut origin: Vec<u32> = Vec::new();
     let mut parent: Vec<u32> = Vec::new();
     let mut previous = LString::default();
     for step in 1..=steps {
         let tracked = track && step == steps;
         if tracked {
-            rewriter.tracker = Some(Tracker::default());
             previous = current.clone();
+        }
+        // Growth follows every module through the step, so it needs the tracker at every step.
+        if tracked || growing {
+            rewriter.tracker = Some(Tracker::default());
+        }
+        if growing {
+            rewriter.prepare_growth(&current, step, observer.as_deref_mut())?;
         }
         match &d0l {
             Some(table) if tracked => {
@@ -171,35 +213,46 @@ fn run<R: rand::Rng + ?Sized>(
             Some(table) => table.step(model, &current, &mut next, step)?,
             None => {
                 rewriter.pass(&model.productions, &current, &mut next, step)?;
+                rewriter.plan = None;
+                rewriter.follow_growth(&next, Some(step));
                 if let Some(t) = rewriter.tracker.take() {
-                    origin = t.origin;
-                    parent = t.parent;
+                    if tracked {
+                        origin = t.origin;
+                        parent = t.parent;
+                    }
                 }
             }
         }
         std::mem::swap(&mut current, &mut next);
         if !model.decomposition.is_empty() {
-            if tracked {
+            if tracked || growing {
                 rewriter.tracker = Some(Tracker::default());
             }
             let parents = rewriter.decompose(&mut current, &mut next, step)?;
-            if let Some(parents) = parents {
+            if let (true, Some(parents)) = (tracked, parents) {
                 origin = parents.iter().map(|&p| origin[p as usize]).collect();
                 parent = parents.iter().map(|&p| parent[p as usize]).collect();
             }
             rewriter.tracker = None;
         }
         if has_cut {
-            let kept = cut(model, &mut current);
-            if tracked {
-                if let Some(kept) = kept {
+            if let Some(kept) = cut(model, &mut current) {
+                if tracked {
                     origin = kept.iter().map(|&k| origin[k as usize]).collect();
                     parent = kept.iter().map(|&k| parent[k as usize]).collect();
                 }
+                if let Some(g) = rewriter.growth.as_mut() {
+                    let old = std::mem::take(&mut g.state.modules);
+                    g.state.modules = kept.iter().map(|&k| old[k as usize]).collect();
+                }
             }
         }
-        if let Some(q) = queries.as_deref_mut() {
-            apply_queries(model, &mut current, q);
+        if let Some(g) = rewriter.growth.as_mut() {
+            g.state.step = step;
+            debug_assert_eq!(g.state.modules.len(), current.len());
+        }
+        if let Some(o) = observer.as_deref_mut() {
+            apply_queries(model, &mut current, o, rewriter.growth_state());
         }
     }
     if track && origin.len() != current.len() {
@@ -217,6 +270,7 @@ fn run<R: rand::Rng + ?Sized>(
         turtle_origin: Vec::new(),
         previous,
         parent,
+        growth: rewriter.growth.take(),
     };
     if !model.homomorphism.is_empty() {
         let mut shown = derivation.string.clone();
@@ -454,6 +508,11 @@ struct Rewriter<'m, R: rand::Rng + ?Sized> {
     weighted: Vec<(u32, f64, Vec<f64>)>,
     /// Provenance of the pass being run, when tracking.
     tracker: Option<Tracker>,
+    /// The growth state of the current string and the steps' reports, with growth attributes.
+    growth: Option<GrowthRecord>,
+    /// During a step's productions pass with growth attributes: how many times each module of
+    /// the string is rewritten (0: a stopped or resting apex, 1: as usual, more: `#speed`).
+    plan: Option<Vec<u32>>,
 }
 
 impl<'m, R: rand::Rng + ?Sized> Rewriter<'m, R> {
@@ -481,7 +540,90 @@ impl<'m, R: rand::Rng + ?Sized> Rewriter<'m, R> {
             partner: Vec::new(),
             weighted: Vec::new(),
             tracker: None,
+            growth: None,
+            plan: None,
         }
+    }
+
+    fn growth_state(&self) -> Option<&GrowthState> {
+        self.growth.as_ref().map(|g| &g.state)
+    }
+
+    /// The growth hook at the start of step `step`: the thirds of the modules (from the observer,
+    /// on the string's geometry so far), the segments' bending, and the lifetime and speed plan
+    /// that the productions pass follows.
+    fn prepare_growth<'o>(
+        &mut self,
+        current: &LString,
+        step: u32,
+        observer: Option<&mut (dyn Observer + 'o)>,
+    ) -> Result<(), Diagnostic> {
+        let model = self.model;
+        let attributes = &model.growth;
+        let mut values = StepValues::default();
+        if let Some(l) = &attributes.lifetime {
+            values.lifetime = Some((
+                self.eval(&l.mean, 0, step, false)?,
+                self.eval(&l.variance, 0, step, false)?,
+            ));
+        }
+        if let Some(s) = &attributes.speed {
+            values.speed = Some((
+                self.eval(&s.mean, 0, step, false)?,
+                self.eval(&s.variance, 0, step, false)?,
+            ));
+        }
+        let Some(record) = self.growth.as_mut() else {
+            return Ok(());
+        };
+        record.state.step = step - 1;
+        // Every pass is followed, so the state matches the string; never index past it anyway.
+        debug_assert_eq!(record.state.modules.len(), current.len());
+        record
+            .state
+            .modules
+            .resize(current.len(), growth::ModuleGrowth::default());
+        let thirds = match observer.filter(|_| attributes.needs_heights()) {
+            Some(o) => {
+                let heights = o.heights(current, &record.state);
+                if heights.modules.len() == current.len() {
+                    heights.thirds()
+                } else {
+                    vec![Third::Middle; current.len()]
+                }
+            }
+            None => vec![Third::Middle; current.len()],
+        };
+        growth::bend(attributes, &current.ids, &thirds, &mut record.state.modules);
+        let (times, report) = growth::plan(
+            attributes,
+            step,
+            &current.ids,
+            &thirds,
+            &mut record.state.modules,
+            values,
+            &mut *self.rng,
+        );
+        record.steps.push(report);
+        self.plan = Some(times);
+        Ok(())
+    }
+
+    /// After a pass with the tracker on: the growth state follows the string the pass wrote
+    /// (`birth`: the step, or `None` for decomposition, which finishes its parents' step).
+    fn follow_growth(&mut self, written: &LString, birth: Option<u32>) {
+        let (Some(record), Some(t)) = (self.growth.as_mut(), self.tracker.as_ref()) else {
+            return;
+        };
+        record.state.modules = growth::follow(
+            &self.model.growth,
+            &record.state.modules,
+            written,
+            &t.parent,
+            |j| t.origin[j] != NOT_REWRITTEN,
+            birth,
+            &mut *self.rng,
+        );
     }
 
     fn eval(
@@ -573,6 +715,7 @@ impl<'m, R: rand::Rng + ?Sized> Rewriter<'m, R> {
             if !self.pass(rules, s, scratch, step)? {
                 return Ok(parents);
             }
+            self.follow_growth(scratch, None);
             if let (Some(parents), Some(t)) = (&mut parents, &self.tracker) {
                 *parents = t.parent.iter().map(|&p| parents[p as usize]).collect();
             }
@@ -715,6 +858,7 @@ impl<'m, R: rand::Rng + ?Sized> Rewriter<'m, R> {
     ) -> Result<bool, Diagnostic> {
         let model = self.model;
         let groups_act = model.has_groups && std::ptr::eq(rules, &model.productions);
+        let planned = self.plan.is_some();
         let mut changed = false;
         let mut i = range.start;
         while i < range.end {
@@ -728,7 +872,11 @@ impl<'m, R: rand::Rng + ?Sized> Rewriter<'m, R> {
                 changed = true;
                 continue;
             }
-            let applied = self.rewrite_module(rules, src, i, dst, num_it)?;
+            let applied = if planned {
+                self.rewrite_planned(rules, src, i, dst, num_it)?
+            } else {
+                self.rewrite_module(rules, src, i, dst, num_it)?
+            };
             self.note(dst.len(), i, applied.unwrap_or(NOT_REWRITTEN));
             changed |= applied.is_some();
             i += 1;
@@ -741,6 +889,73 @@ impl<'m, R: rand::Rng + ?Sized> Rewriter<'m, R> {
         if let Some(t) = &mut self.tracker {
             t.fill(len, parent, origin);
         }
+    }
+
+    /// Rewrites module `i` of `src` as the growth plan says: not at all (a stopped or resting
+    /// apex), once, or several times (`#speed`).
+    fn rewrite_planned(
+        &mut self,
+        rules: &RuleSet,
+        src: &LString,
+        i: usize,
+        dst: &mut LString,
+        num_it: u32,
+    ) -> Result<Option<u32>, Diagnostic> {
+        let times = self
+            .plan
+            .as_ref()
+            .map_or(1, |plan| plan.get(i).copied().unwrap_or(1));
+        match times {
+            0 => {
+                dst.push(src.ids[i], src.params_of(i));
+                Ok(None)
+            }
+            1 => self.rewrite_module(rules, src, i, dst, num_it),
+            _ => self.rewrite_repeatedly(rules, src, i, dst, num_it, times),
+        }
+    }
+
+    /// `#speed`: rewrites module `i` of `src` `times` times within this step, like `@Repeat` on
+    /// that one module. The first rewriting sees the whole string's contexts, the later ones
+    /// only the module's own successor; nothing more happens when no production applies.
+    fn rewrite_repeatedly(
+        &mut self,
+        rules: &RuleSet,
+        src: &LString,
+        i: usize,
+        dst: &mut LString,
+        num_it: u32,
+        times: u32,
+    ) -> Result<Option<u32>, Diagnostic> {
+        let model = self.model;
+        let mut current = LString::default();
+        current.clear(model.parametric);
+        let applied = self.rewrite_module(rules, src, i, &mut current, num_it)?;
+        if applied.is_some() && times > 1 {
+            let plan = self.plan.take();
+            let tracker = self.tracker.take();
+            let saved = std::mem::take(&mut self.partner);
+            let mut next = LString::default();
+            for _ in 1..times {
+                if rules.has_contexts() {
+                    context::bracket_partners(model, &current, &mut self.partner);
+                }
+                next.clear(model.parametric);
+                let len = current.len();
+                self.rewrite_range(rules, &current, 0..len, &mut next, num_it)?;
+                std::mem::swap(&mut current, &mut next);
+                if dst.len() + current.len() > model.settings.max_modules {
+                    return Err(limit_error(model, num_it, dst.len() + current.len()));
+                }
+            }
+            self.partner = saved;
+            self.tracker = tracker;
+            self.plan = plan;
+        }
+        for j in 0..current.len() {
+            dst.push(current.ids[j], current.params_of(j));
+        }
+        Ok(applied)
     }
 
     /// Rewrites module `i` of `src` onto `dst`; returns the production applied, if any.
@@ -878,8 +1093,10 @@ impl<'m, R: rand::Rng + ?Sized> Rewriter<'m, R> {
             write_header(dst, header);
             dst.push(g.open, &[]);
             self.note(dst.len(), i, NOT_REWRITTEN);
-            // The k inner derivations are not tracked: their modules count as the group's.
+            // The k inner derivations are not tracked: their modules count as the group's. The
+            // growth plan names modules of the step's string, not of the group's.
             let tracker = self.tracker.take();
+            let plan = self.plan.take();
             let member = members.swap_remove(0);
             let mut current = LString::default();
             current.clear(src.is_parametric());
@@ -902,6 +1119,7 @@ impl<'m, R: rand::Rng + ?Sized> Rewriter<'m, R> {
             }
             self.partner = saved;
             self.tracker = tracker;
+            self.plan = plan;
             for j in 0..current.len() {
                 dst.push(current.ids[j], current.params_of(j));
             }

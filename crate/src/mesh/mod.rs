@@ -273,7 +273,7 @@ pub fn build_mesh(skeleton: &Skeleton, options: &MeshOptions) -> MeshBuffers {
     // start is inside the parent's tube, so it needs no start cap.
     let mut joints: Vec<[u64; 3]> = skeleton.segments.iter().map(|s| key(s.end)).collect();
     joints.sort_unstable();
-    for chain in chains(skeleton) {
+    for chain in chains(skeleton, unit) {
         let start = key(skeleton.segments[chain[0] as usize].start);
         let hidden_start = joints.binary_search(&start).is_ok();
         builder.tube(skeleton, &chain, !hidden_start);
@@ -302,10 +302,20 @@ fn key(p: DVec3) -> [u64; 3] {
 }
 
 /// The axes of the skeleton as lists of segment indices, each continuing the one before. A chain
-/// breaks where widths are zero, at sharp joints, and where smoothness changes.
-fn chains(skeleton: &Skeleton) -> Vec<Vec<u32>> {
+/// breaks where widths are zero, at sharp joints, where smoothness changes, and where the joint's
+/// ring would reach past the middle of a segment it joins (a tube much wider than a short segment
+/// at a bend: its rings would cross and the tube turn inside out). `unit` is the width unit.
+fn chains(skeleton: &Skeleton, unit: f64) -> Vec<Vec<u32>> {
     let segments = &skeleton.segments;
     let direction = |i: usize| (segments[i].end - segments[i].start).normalize();
+    let length = |i: usize| (segments[i].end - segments[i].start).length();
+    // The joint ring lies across the bisector, tilted by half the bend from each segment's
+    // cross-section: it reaches radius × sin(bend / 2) along each of them.
+    let overruns = |p: usize, i: usize| {
+        let cos = direction(p).dot(direction(i)).clamp(-1.0, 1.0);
+        let reach = 0.5 * segments[i].width * unit * ((1.0 - cos) * 0.5).sqrt();
+        reach >= 0.5 * length(p).min(length(i))
+    };
     let mut next: Vec<Option<u32>> = vec![None; segments.len()];
     let mut continues = vec![false; segments.len()];
     for (i, s) in segments.iter().enumerate() {
@@ -317,7 +327,8 @@ fn chains(skeleton: &Skeleton) -> Vec<Vec<u32>> {
             let joins = next[p].is_none()
                 && segments[p].width > 0.0
                 && segments[p].smooth == s.smooth
-                && direction(p).dot(direction(i)) > MAX_JOINT_ANGLE_COS;
+                && direction(p).dot(direction(i)) > MAX_JOINT_ANGLE_COS
+                && !overruns(p, i);
             if joins {
                 next[p] = Some(i as u32);
                 continues[i] = true;
@@ -688,15 +699,40 @@ mod tests {
             ],
             ..Skeleton::default()
         };
-        assert_eq!(chains(&skeleton), vec![vec![0], vec![1]]);
+        assert_eq!(chains(&skeleton, 0.1), vec![vec![0], vec![1]]);
         let mut thin = segment(DVec3::Y, DVec3::new(0.0, 2.0, 0.0), Some(0));
         thin.width = 0.0;
         let skeleton = Skeleton {
             segments: vec![segment(DVec3::ZERO, DVec3::Y, None), thin],
             ..Skeleton::default()
         };
-        assert_eq!(chains(&skeleton), vec![vec![0]]);
+        assert_eq!(chains(&skeleton, 0.1), vec![vec![0]]);
         assert_eq!(build_mesh(&skeleton, &absolute(0.1)).check(), Ok(()));
+    }
+
+    #[test]
+    fn a_wide_tube_at_a_bend_of_short_segments_breaks_instead_of_turning_inside_out() {
+        // Width 40 at unit 0.1 is a radius of 2; a bend of 80° tilts the joint ring by 40°, so
+        // it reaches 2 × sin 40° ≈ 1.29 along each segment: past the middle of a 0.3-long one.
+        let turned = DVec3::new(
+            -(80f64.to_radians().sin()),
+            1.0 + 80f64.to_radians().cos(),
+            0.0,
+        );
+        let mut segments = vec![
+            segment(DVec3::ZERO, DVec3::Y, None),
+            segment(DVec3::Y, DVec3::Y + (turned - DVec3::Y) * 0.3, Some(0)),
+        ];
+        segments.iter_mut().for_each(|s| s.width = 40.0);
+        let skeleton = Skeleton {
+            segments,
+            ..Skeleton::default()
+        };
+        assert_eq!(chains(&skeleton, 0.1), vec![vec![0], vec![1]]);
+        assert_eq!(build_mesh(&skeleton, &absolute(0.1)).check(), Ok(()));
+        // Thin enough, the same bend shares its joint.
+        assert_eq!(chains(&skeleton, 0.001), vec![vec![0, 1]]);
+        assert_eq!(build_mesh(&skeleton, &absolute(0.001)).check(), Ok(()));
     }
 
     #[test]

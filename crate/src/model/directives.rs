@@ -40,6 +40,14 @@ pub const DIRECTIVES: &[DirectiveInfo] = &[
     row("max_steps", "n", "The largest number of derivation steps a build may run (default 10,000)."),
     row("homomorphism_depth", "n", "The maximum depth of homomorphism rules (default 16)."),
     row("decomposition_depth", "n", "The maximum depth of decomposition rules (default 16)."),
+    row("apex", "modules", "Growth: the modules that are branch apices (default: modules with productions that are not turtle commands)."),
+    row("lifetime", "MB VB [pu pm pl]", "Growth: MB + Round(Rand()·VB) apices keep growing each step, shared by the upper, middle and lower thirds (default 0.6 0.3 0.1); the others stop."),
+    row("speed", "SM VR [PFu PFm PFl]", "Growth: each apex is rewritten PF + SM + Round(Rand()·VR) times per step (PF default 2 1 1)."),
+    row("shape", "GR m [VR]", "Growth: a segment of age i is GR^i times as long up to maturity m, then log_GR(i) − log_GR(m) + GR^m, ± Round(Rand()·VR)."),
+    row("shape_width", "[VR [PFu PFm PFl]]", "Growth: a segment of age i is i + PF + Round(Rand()·VR) times as wide (PF default 2 1 0)."),
+    row("sun", "latitude season angle", "Growth: upper and middle segments turn towards the noon sun (+X side) by angle degrees per step; season summer, equinox or winter."),
+    row("gravity", "angle [variation]", "Growth: every segment turns down by angle + Round(Rand()·variation) degrees per step."),
+    row("wind", "x z angle [variation]", "Growth: every segment turns towards the horizontal direction (x, 0, z) by angle + Round(Rand()·variation) degrees per step."),
 ];
 
 /// The directive table as JSON, for the TypeScript side.
@@ -59,7 +67,14 @@ mod tests {
                 "color" | "colour" => "1 10 20 30",
                 "define" => "k 2",
                 "random" => "r = uniform(0, 1)",
-                "ignore" | "consider" | "draw" | "module" => "A",
+                "ignore" | "consider" | "draw" | "module" | "apex" => "A",
+                "lifetime" => "34 32",
+                "speed" => "0 1",
+                "shape" => "1.5 3",
+                "shape_width" => "1",
+                "sun" => "38 summer 2",
+                "gravity" => "5",
+                "wind" => "1 0 3",
                 _ => "3",
             };
             let text = format!("#{} {args}\naxiom: F", d.name);
@@ -68,6 +83,13 @@ mod tests {
             assert!(
                 diagnostics.iter().all(|x| x.code != "E0200"),
                 "#{} is in the table but unknown to the resolver",
+                d.name
+            );
+            assert!(
+                diagnostics
+                    .iter()
+                    .all(|x| x.severity != crate::diagnostics::Severity::Error),
+                "#{} {args}: {diagnostics:?}",
                 d.name
             );
         }

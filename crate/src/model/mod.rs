@@ -228,4 +228,7 @@ pub struct Model {
     /// True when any module of the axiom or a successor has parameters.
     pub parametric: bool,
     pub settings: Settings,
+    /// The particle attributes (`#lifetime`, `#speed`, `#shape`, `#sun`, …) and which modules are
+    /// apices and segments; all off by default.
+    pub growth: crate::growth::Attributes,
 }

@@ -38,6 +38,8 @@ pub fn resolve(file: &SourceFile) -> (Option<Model>, Vec<Diagnostic>) {
     let mut consider: Option<Vec<ModuleId>> = None;
     let mut random_syntax: Vec<&Directive> = Vec::new();
     let mut seen: Vec<&Directive> = Vec::new();
+    let mut growth = crate::growth::Attributes::default();
+    let mut apex: Vec<ModuleId> = Vec::new();
 
     // Definitions first: expressions anywhere may use them.
     for d in &file.directives {
@@ -67,7 +69,7 @@ pub fn resolve(file: &SourceFile) -> (Option<Model>, Vec<Diagnostic>) {
     for d in &file.directives {
         let repeatable = matches!(
             d.name.as_str(),
-            "module" | "draw" | "define" | "random" | "ignore" | "color" | "colour"
+            "module" | "draw" | "define" | "random" | "ignore" | "color" | "colour" | "apex"
         );
         if let Some(previous) = seen.iter().find(|p| p.name == d.name && !repeatable) {
             r.diagnostics.push(Diagnostic::warning(
@@ -119,6 +121,14 @@ pub fn resolve(file: &SourceFile) -> (Option<Model>, Vec<Diagnostic>) {
                 .draw
                 .extend(d.modules.iter().map(|m| r.alphabet.intern(&m.name))),
             "ignore" => ignore.extend(d.modules.iter().map(|m| r.alphabet.intern(&m.name))),
+            "apex" => apex.extend(d.modules.iter().map(|m| r.alphabet.intern(&m.name))),
+            "lifetime" => growth.lifetime = r.lifetime(d),
+            "speed" => growth.speed = r.speed(d),
+            "shape" => growth.shape = r.shape(d),
+            "shape_width" => growth.shape_width = r.shape_width(d),
+            "sun" => growth.sun = r.sun(d),
+            "gravity" => growth.gravity = r.bend(d, None),
+            "wind" => growth.wind = r.bend(d, Some(())),
             "consider" => {
                 consider = Some(
                     d.modules
@@ -305,6 +315,13 @@ pub fn resolve(file: &SourceFile) -> (Option<Model>, Vec<Diagnostic>) {
     };
     let has_groups = everywhere(&|m| m.group.is_some());
     let parametric = has_groups || everywhere(&|m| !m.args.is_empty());
+    (growth.apex, growth.segment) = growth_modules(
+        &r.alphabet,
+        &productions,
+        &homomorphism,
+        &settings.draw,
+        &apex,
+    );
 
     let model = Model {
         alphabet: r.alphabet,
@@ -322,8 +339,66 @@ pub fn resolve(file: &SourceFile) -> (Option<Model>, Vec<Diagnostic>) {
         has_groups,
         parametric,
         settings,
+        growth,
     };
     (Some(model), r.diagnostics)
+}
+
+/// For each module id: is it an apex, and is it a segment (docs/LANGUAGE.md, "Growth")? Apices
+/// are the modules `#apex` lists; without it, the modules that have a production and are not
+/// turtle commands, or when there are none (edge rewriting), every module that has a production.
+/// Segments are the modules the turtle draws (`F`, `G`, `#draw`) and those a homomorphism
+/// rewrites.
+fn growth_modules(
+    alphabet: &Alphabet,
+    productions: &RuleSet,
+    homomorphism: &RuleSet,
+    draw: &[ModuleId],
+    listed: &[ModuleId],
+) -> (Vec<bool>, Vec<bool>) {
+    use crate::turtle::{command_named, Command};
+    let n = alphabet.len();
+    let ids = || (0..n).map(|i| ModuleId(i as u32));
+    let has_production = |id: ModuleId| {
+        productions
+            .by_predecessor
+            .get(id.index())
+            .is_some_and(|p| !p.is_empty())
+    };
+    let is_command = |id: ModuleId| {
+        let name = alphabet.name(id);
+        command_named(name).is_some()
+            || draw.contains(&id)
+            || name.starts_with('@')
+            || name == "["
+            || name == "]"
+            || name == "%"
+    };
+    let apex: Vec<bool> = if !listed.is_empty() {
+        ids().map(|id| listed.contains(&id)).collect()
+    } else {
+        let nodes: Vec<bool> = ids()
+            .map(|id| has_production(id) && !is_command(id))
+            .collect();
+        if nodes.iter().any(|&x| x) {
+            nodes
+        } else {
+            ids().map(has_production).collect()
+        }
+    };
+    let segment = ids()
+        .map(|id| {
+            let draws = command_named(alphabet.name(id))
+                .is_some_and(|c| matches!(c.command, Command::Forward | Command::ForwardNoVertex));
+            draws
+                || draw.contains(&id)
+                || homomorphism
+                    .by_predecessor
+                    .get(id.index())
+                    .is_some_and(|p| !p.is_empty())
+        })
+        .collect();
+    (apex, segment)
 }
 
 fn section_index(section: Section) -> usize {
@@ -640,6 +715,248 @@ impl Resolver {
             };
             *entry = std::array::from_fn(|k| ((from[k] + (to[k] - from[k]) * t) / 255.0) as f32);
         }
+    }
+
+    /// The words of a directive's arguments, each as a directive of its own (for spans).
+    fn words(d: &Directive) -> Vec<Directive> {
+        d.args
+            .split_whitespace()
+            .map(|word| {
+                let offset = word.as_ptr() as usize - d.args.as_ptr() as usize;
+                Directive {
+                    args: word.to_string(),
+                    args_span: d.args_span.start + offset..d.args_span.start + offset + word.len(),
+                    ..d.clone()
+                }
+            })
+            .collect()
+    }
+
+    /// An argument that may change from step to step: an expression over `NumIt` (the step about
+    /// to run), `MaxIt` and `#define`d names, drawing no random number.
+    fn step_program(&mut self, word: &Directive) -> Option<Program> {
+        let expr = match crate::syntax::parse_expression(&word.args, word.args_span.start) {
+            Ok(e) => e,
+            Err(e) => {
+                self.diagnostics.push(e);
+                return None;
+            }
+        };
+        let program = self.compile(&expr, &Slots::default())?;
+        if program.random {
+            self.directive_error(
+                "E0209",
+                word,
+                format!(
+                    "{} cannot draw random numbers here: its own Rand() is drawn at every step",
+                    word.written
+                ),
+            );
+            return None;
+        }
+        Some(program)
+    }
+
+    /// Three numbers for the upper, middle and lower thirds.
+    fn thirds(&mut self, words: &[Directive]) -> Option<[f64; 3]> {
+        let mut v = [0.0; 3];
+        for (k, w) in words.iter().enumerate() {
+            v[k] = self.number(w)?;
+        }
+        Some(v)
+    }
+
+    /// `#lifetime MB VB [pu pm pl]`.
+    fn lifetime(&mut self, d: &Directive) -> Option<crate::growth::Lifetime> {
+        let words = Self::words(d);
+        if words.len() != 2 && words.len() != 5 {
+            self.directive_error(
+                "E0209",
+                d,
+                format!(
+                    "#lifetime needs 'MB VB' or 'MB VB pu pm pl' (the mean and variance of the \
+                     surviving branches, then the shares of the upper, middle and lower thirds), \
+                     found {} values",
+                    words.len()
+                ),
+            );
+            return None;
+        }
+        let mean = self.step_program(&words[0]);
+        let variance = self.step_program(&words[1]);
+        let probabilities = if words.len() == 5 {
+            let p = self.thirds(&words[2..])?;
+            if p.iter().any(|x| *x < 0.0) || p.iter().all(|x| *x == 0.0) {
+                self.directive_error(
+                    "E0209",
+                    d,
+                    "#lifetime's shares of the thirds must be 0 or more, and not all 0".into(),
+                );
+                return None;
+            }
+            p
+        } else {
+            crate::growth::DEFAULT_PROBABILITIES
+        };
+        Some(crate::growth::Lifetime {
+            mean: mean?,
+            variance: variance?,
+            probabilities,
+        })
+    }
+
+    /// `#speed SM VR [PFu PFm PFl]`.
+    fn speed(&mut self, d: &Directive) -> Option<crate::growth::Speed> {
+        let words = Self::words(d);
+        if words.len() != 2 && words.len() != 5 {
+            self.directive_error(
+                "E0209",
+                d,
+                format!(
+                    "#speed needs 'SM VR' or 'SM VR PFu PFm PFl' (the seasonal mean and variance \
+                     of the rewritings, then the positional factors of the thirds), found {} values",
+                    words.len()
+                ),
+            );
+            return None;
+        }
+        let mean = self.step_program(&words[0]);
+        let variance = self.step_program(&words[1]);
+        let positional = if words.len() == 5 {
+            self.thirds(&words[2..])?
+        } else {
+            crate::growth::DEFAULT_SPEED_POSITIONAL
+        };
+        Some(crate::growth::Speed {
+            mean: mean?,
+            variance: variance?,
+            positional,
+        })
+    }
+
+    /// `#shape GR m [VR]`.
+    fn shape(&mut self, d: &Directive) -> Option<crate::growth::Shape> {
+        let words = Self::words(d);
+        let usage = "#shape needs 'GR m' or 'GR m VR': a growth rate above 0 other than 1, a \
+                     maturity from 1 and the variance of the length";
+        if words.len() != 2 && words.len() != 3 {
+            self.directive_error("E0209", d, format!("{usage}, found {} values", words.len()));
+            return None;
+        }
+        let rate = self.number(&words[0])?;
+        let maturity = self.whole(&words[1], 1_000)?;
+        let variance = match words.get(2) {
+            Some(w) => self.number(w)?,
+            None => 0.0,
+        };
+        if rate <= 0.0 || rate == 1.0 || maturity == 0 {
+            self.directive_error("E0209", d, usage.into());
+            return None;
+        }
+        Some(crate::growth::Shape {
+            rate,
+            maturity: maturity as u32,
+            variance,
+        })
+    }
+
+    /// `#shape_width [VR [PFu PFm PFl]]`.
+    fn shape_width(&mut self, d: &Directive) -> Option<crate::growth::ShapeWidth> {
+        let words = Self::words(d);
+        if ![0, 1, 4].contains(&words.len()) {
+            self.directive_error(
+                "E0209",
+                d,
+                format!(
+                    "#shape_width needs nothing, 'VR' or 'VR PFu PFm PFl' (the variance of the \
+                     width, then the positional factors of the thirds), found {} values",
+                    words.len()
+                ),
+            );
+            return None;
+        }
+        let variance = match words.first() {
+            Some(w) => self.number(w)?,
+            None => 0.0,
+        };
+        let positional = if words.len() == 4 {
+            self.thirds(&words[1..])?
+        } else {
+            crate::growth::DEFAULT_WIDTH_POSITIONAL
+        };
+        Some(crate::growth::ShapeWidth {
+            variance,
+            positional,
+        })
+    }
+
+    /// `#sun latitude season angle`.
+    fn sun(&mut self, d: &Directive) -> Option<crate::growth::Sun> {
+        let words = Self::words(d);
+        let usage = "#sun needs 'latitude season angle': a latitude from -90 to 90, a season \
+                     (summer, winter, spring, autumn, fall or equinox) and the degrees per step";
+        if words.len() != 3 {
+            self.directive_error("E0209", d, format!("{usage}, found {} values", words.len()));
+            return None;
+        }
+        let latitude = self.number(&words[0])?;
+        let Some(season) = crate::growth::Season::named(&words[1].args) else {
+            self.directive_error(
+                "E0209",
+                &words[1],
+                format!("{usage}; '{}' is not a season", words[1].args),
+            );
+            return None;
+        };
+        let angle = self.number(&words[2])?;
+        if !(-90.0..=90.0).contains(&latitude) {
+            self.directive_error("E0209", &words[0], usage.into());
+            return None;
+        }
+        Some(crate::growth::Sun {
+            latitude,
+            season,
+            angle,
+        })
+    }
+
+    /// `#gravity angle [variation]`, or with `wind`, `#wind x z angle [variation]`.
+    fn bend(&mut self, d: &Directive, wind: Option<()>) -> Option<crate::growth::Bend> {
+        let words = Self::words(d);
+        let (skip, usage) = match wind {
+            Some(()) => (
+                2,
+                "#wind needs 'x z angle' or 'x z angle variation': a horizontal direction other \
+                 than 0 0, and the degrees per step",
+            ),
+            None => (
+                0,
+                "#gravity needs 'angle' or 'angle variation': the degrees per step",
+            ),
+        };
+        if words.len() != skip + 1 && words.len() != skip + 2 {
+            self.directive_error("E0209", d, format!("{usage}, found {} values", words.len()));
+            return None;
+        }
+        let mut values = Vec::new();
+        for w in &words {
+            values.push(self.number(w)?);
+        }
+        let direction = if skip == 2 {
+            let v = glam::DVec3::new(values[0], 0.0, values[1]);
+            if v.length() == 0.0 {
+                self.directive_error("E0209", d, usage.into());
+                return None;
+            }
+            v.normalize()
+        } else {
+            glam::DVec3::NEG_Y
+        };
+        Some(crate::growth::Bend {
+            direction,
+            angle: values[skip],
+            variance: values.get(skip + 1).copied().unwrap_or(0.0),
+        })
     }
 
     fn directive_error(&mut self, code: &'static str, d: &Directive, message: String) {

@@ -29,7 +29,7 @@ pub struct Directive {
     pub target: Option<(String, Span)>,
     /// For `#define` and `#random`: the expression.
     pub expr: Option<ExprSyntax>,
-    /// For `#ignore`, `#consider`, `#draw`: the modules listed.
+    /// For `#ignore`, `#consider`, `#draw`, `#apex`: the modules listed.
     pub modules: Vec<ModuleSyntax>,
 }
 

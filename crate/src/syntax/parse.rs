@@ -228,7 +228,7 @@ fn parse_directive(
                 }
             }
         }
-        "ignore" | "consider" | "draw" | "module" => {
+        "ignore" | "consider" | "draw" | "module" | "apex" => {
             if args.is_empty() {
                 diagnostics.push(Diagnostic::error(
                     "E0133",

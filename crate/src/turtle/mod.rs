@@ -6,11 +6,17 @@
 //! and a flat grammar lies in the XY plane facing +Z. `+`, `&` and `/` are right-handed rotations
 //! by δ about U, L and H respectively; `-`, `^` and `\` rotate by −δ. So `+` turns towards L
 //! (left, counter-clockwise seen from +Z) and `&` tips H away from U (down).
+//!
+//! With growth attributes ([`interpret_grown`]), each module's [`crate::growth::ModuleGrowth`]
+//! scales moves by the segment's age (`#shape`), scales widths by age and third
+//! (`#shape_width`), and turns the turtle towards the sun, the wind and the ground before the
+//! module by the rotation the module has accumulated (`#sun`, `#wind`, `#gravity`).
 
 mod commands;
 
 pub use commands::{command_named, commands_json, Category, Command, CommandInfo, COMMANDS};
 
+use crate::growth::{self, GrowthState, Heights, Third};
 use crate::model::{LString, Model};
 use glam::DVec3;
 
@@ -202,6 +208,23 @@ impl TurtleState {
         self.set_frame(rotation * self.heading, rotation * self.left);
     }
 
+    /// Turns H towards `target` by `degrees` (away from it when negative) about H × target,
+    /// never past it (nor past pointing straight away from it); L and U follow. Nothing happens
+    /// when H points along the target (the pull has no side to turn to).
+    fn turn_towards(&mut self, target: DVec3, degrees: f64) {
+        let axis = self.heading.cross(target);
+        let s = axis.length();
+        if degrees == 0.0 || s < 1e-9 {
+            return;
+        }
+        let between = self.heading.angle_between(target);
+        let angle = degrees
+            .to_radians()
+            .clamp(between - std::f64::consts::PI, between);
+        let rotation = glam::DQuat::from_axis_angle(axis / s, angle);
+        self.set_frame(rotation * self.heading, rotation * self.left);
+    }
+
     /// Sets H and L, re-orthonormalising so that rounding never accumulates; U = H × L.
     fn set_frame(&mut self, heading: DVec3, left: DVec3) {
         let h = heading.normalize();
@@ -217,6 +240,30 @@ impl TurtleState {
 
 /// Runs the turtle over `string`.
 pub fn interpret(model: &Model, string: &LString) -> Skeleton {
+    run(model, string, None, None)
+}
+
+/// Runs the turtle over `string` with its growth state (one module state per module of
+/// `string`; ignored when the lengths differ).
+pub fn interpret_grown(model: &Model, string: &LString, growth: Option<&GrowthState>) -> Skeleton {
+    run(model, string, growth, None)
+}
+
+/// The height (Y) of the turtle at every module of `string` (the middle of the move for
+/// `F f G g`), and the lowest and highest Y it reaches, its start included: what the growth
+/// attributes divide into thirds.
+pub fn heights(model: &Model, string: &LString, growth: Option<&GrowthState>) -> Heights {
+    let mut heights = Heights::default();
+    run(model, string, growth, Some(&mut heights));
+    heights
+}
+
+fn run(
+    model: &Model,
+    string: &LString,
+    growth: Option<&GrowthState>,
+    mut heights: Option<&mut Heights>,
+) -> Skeleton {
     let settings = &model.settings;
     let mut table: Vec<Option<Command>> = vec![None; model.alphabet.len()];
     for info in COMMANDS {
@@ -247,15 +294,51 @@ pub fn interpret(model: &Model, string: &LString) -> Skeleton {
         palette: settings.palette.clone(),
         ..Skeleton::default()
     };
+    let grown = growth.filter(|g| g.modules.len() == string.len());
+    let attributes = &model.growth;
+    let (sun, gravity) = (attributes.sun_direction(), attributes.gravity.is_some());
+    let wind = attributes.wind.as_ref().map(|w| w.direction);
+    // The lowest and highest Y the turtle reaches, and each module's Y (for `heights`).
+    let (mut low, mut high) = (0.0f64, 0.0f64);
+    let mut note = |y: f64, at: f64| {
+        low = low.min(y);
+        high = high.max(y);
+        if let Some(h) = heights.as_deref_mut() {
+            h.modules.push(at);
+        }
+    };
 
     for (index, id) in string.ids.iter().enumerate() {
+        // Growth: the rotation this module has accumulated turns the turtle before it.
+        let module_growth = grown.map(|g| &g.modules[index]);
+        if let Some(g) = module_growth.filter(|g| g.is_bent()) {
+            if let Some(sun) = sun {
+                turtle.turn_towards(sun, g.sun);
+            }
+            if let Some(wind) = wind {
+                turtle.turn_towards(wind, g.wind);
+            }
+            if gravity {
+                turtle.turn_towards(DVec3::NEG_Y, g.gravity);
+            }
+        }
         let Some(command) = table[id.index()] else {
+            note(turtle.position.y, turtle.position.y);
             continue;
         };
+        let before = turtle.position.y;
         let params = string.params_of(index);
         // A first parameter replaces the default length or angle: `F(l)`, `+(a)`.
         let first = params.first().copied().filter(|v| v.is_finite());
-        let length = first.unwrap_or(settings.step);
+        let mut length = first.unwrap_or(settings.step);
+        // `#shape`: moves outside polygons stretch with the module's age.
+        if let (Some(shape), Some(g), Some(state)) = (&attributes.shape, module_growth, grown) {
+            if open_polygons.is_empty() {
+                length *= (growth::branch_length(shape.rate, shape.maturity, g.age(state.step))
+                    + g.length_variation)
+                    .max(0.0);
+            }
+        }
         let angle = first.map_or(delta, f64::to_radians);
         let vector = || {
             (params.len() >= 3)
@@ -408,6 +491,26 @@ pub fn interpret(model: &Model, string: &LString) -> Skeleton {
                 });
             }
             Command::Derivation => {}
+        }
+        let y = turtle.position.y;
+        let moved = matches!(
+            command,
+            Command::Forward | Command::ForwardNoVertex | Command::Move | Command::MoveNoVertex
+        );
+        note(y, if moved { (before + y) * 0.5 } else { y });
+    }
+    if let Some(h) = heights {
+        h.low = low;
+        h.high = high;
+    }
+    // `#shape_width`: widths by age and by the third the segment's middle stands in.
+    if let (Some(width), Some(g)) = (&attributes.shape_width, grown) {
+        for segment in &mut skeleton.segments {
+            let m = &g.modules[segment.module as usize];
+            let third = Third::of((segment.start.y + segment.end.y) * 0.5, low, high);
+            let factor = growth::branch_width(m.age(g.step), width.positional[third as usize])
+                + m.width_variation;
+            segment.width *= factor.max(0.0);
         }
     }
     skeleton.end = turtle.position;
