@@ -608,6 +608,7 @@ mod tests {
             module: 0,
             previous,
             smooth: false,
+            anchor: previous,
         }
     }
 
@@ -736,6 +737,7 @@ mod tests {
                 points: square,
                 color: 3,
                 module: 7,
+                anchor: None,
             }],
             spheres: vec![Sphere {
                 center: DVec3::ZERO,
@@ -743,6 +745,7 @@ mod tests {
                 radius_width: None,
                 color: 0,
                 module: 9,
+                anchor: None,
             }],
             ..Skeleton::default()
         };
@@ -814,6 +817,7 @@ mod tests {
                 ],
                 color: 5,
                 module: 9,
+                anchor: None,
             }],
             ..Skeleton::default()
         };
