@@ -5,6 +5,7 @@
 //! (rewriting) -> [`turtle`] (interpretation: skeleton) -> [`mesh`] (triangles) -> [`export`].
 //! [`pipeline::build`] runs them all. `wasm` is the only file that knows about JavaScript.
 
+pub mod branches;
 pub mod derive;
 pub mod diagnostics;
 pub mod export;
