@@ -310,6 +310,17 @@ impl Build {
             .collect()
     }
 
+    /// The joints of branch `branch` where they are now (empty for no such branch).
+    pub fn branch_joints(&mut self, branch: u32) -> Vec<glam::DVec3> {
+        self.editor();
+        match &self.editor {
+            Some(e) if (branch as usize) < e.tree().len() => {
+                e.tree().joints(&self.skeleton, branch)
+            }
+            _ => Vec::new(),
+        }
+    }
+
     /// Replaces all edits by `edits` (an empty list undoes every edit) and rebuilds the edited
     /// skeleton and the whole mesh. Edits whose path names no branch are reported, not errors.
     pub fn apply_edits(&mut self, edits: &[BranchEdit]) -> EditReport {
