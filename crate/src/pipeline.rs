@@ -354,7 +354,7 @@ impl Build {
         if change.full {
             self.remeshed();
         } else {
-            self.stats.bounds = self.mesh.bounds();
+            self.stats.bounds = change.bounds;
         }
         Ok(change)
     }

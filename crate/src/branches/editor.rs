@@ -35,6 +35,8 @@ pub struct MeshChange {
     /// The vertices whose positions and normals changed: (first vertex, count), sorted and
     /// disjoint. After a full rebuild: every vertex.
     pub ranges: Vec<[u32; 2]>,
+    /// The bounds of the mesh's vertices after the change (as `MeshBuffers::bounds`).
+    pub bounds: [[f64; 3]; 2],
 }
 
 impl MeshChange {
@@ -60,6 +62,12 @@ struct DragSession {
     /// The motion of the branch's end joint when the drag began.
     base_end: Rigid,
     ranges: Vec<[u32; 2]>,
+    /// The segments of the branch and below (their ends move), and the sorted joint keys of
+    /// all other segments' ends (fixed while the drag lasts): where tubes may start hidden.
+    moving_segments: Vec<u32>,
+    fixed_joints: Vec<[u64; 3]>,
+    /// The bounds of the vertices outside `ranges` (fixed while the drag lasts).
+    fixed_bounds: Option<[[f32; 3]; 2]>,
 }
 
 /// An edited plant (see the module documentation).
@@ -171,6 +179,7 @@ impl BranchEditor {
             full: true,
             reason: Some("the whole plant was meshed".into()),
             ranges: vec![[0, mesh.vertex_count() as u32]],
+            bounds: mesh.bounds(),
         };
         mesh
     }
@@ -273,7 +282,7 @@ impl BranchEditor {
             offset.dot(frame[2]),
         ) / b.length;
         if self.session.as_ref().is_none_or(|s| s.branch != branch) {
-            self.session = self.start_session(branch, mesh);
+            self.session = self.start_session(branch, skeleton, mesh);
         }
         let mut handles = self.edits[branch as usize].unwrap_or([DVec3::ZERO; 3]);
         handles[handle - 1] = local;
@@ -298,7 +307,12 @@ impl BranchEditor {
     }
 
     /// The session of a drag of `branch` that begins now (`None` for the lines fallback).
-    fn start_session(&self, branch: u32, mesh: &MeshBuffers) -> Option<DragSession> {
+    fn start_session(
+        &self,
+        branch: u32,
+        skeleton: &Skeleton,
+        mesh: &MeshBuffers,
+    ) -> Option<DragSession> {
         if self.parts.lines {
             return None;
         }
@@ -364,6 +378,30 @@ impl BranchEditor {
             }
             None => self.inherited[branch as usize],
         };
+        let moving_segments: Vec<u32> = subtree
+            .iter()
+            .flat_map(|&d| tree.branches[d as usize].segments.iter().copied())
+            .collect();
+        let mut moving = vec![false; self.original.segments.len()];
+        moving_segments
+            .iter()
+            .for_each(|&s| moving[s as usize] = true);
+        let mut fixed_joints: Vec<[u64; 3]> = mesh_key_ends(&self.original, &moving, skeleton);
+        fixed_joints.sort_unstable();
+        let ranges = merge(ranges);
+        let mut fixed_bounds = None;
+        let mut from = 0;
+        for r in ranges
+            .iter()
+            .copied()
+            .chain([[mesh.vertex_count() as u32, 0]])
+        {
+            fixed_bounds = union(
+                fixed_bounds,
+                bounds_of(&mesh.positions, [from, r[0] - from]),
+            );
+            from = r[0] + r[1];
+        }
         Some(DragSession {
             branch,
             rebuilt,
@@ -372,7 +410,10 @@ impl BranchEditor {
             base_positions,
             base_normals,
             base_end,
-            ranges: merge(ranges),
+            ranges,
+            moving_segments,
+            fixed_joints,
+            fixed_bounds,
         })
     }
 
@@ -421,9 +462,17 @@ impl BranchEditor {
                 }
             }
         }
-        let keys = parts::joint_keys(skeleton);
+        let mut moving_joints: Vec<[u64; 3]> = session
+            .moving_segments
+            .iter()
+            .map(|&s| mesh::joint_key(skeleton.segments[s as usize].end))
+            .collect();
+        moving_joints.sort_unstable();
         for c in &self.parts.chains {
-            if parts::start_cap(&keys, skeleton, &c.segments) != c.start_cap {
+            let start = mesh::joint_key(skeleton.segments[c.segments[0] as usize].start);
+            let hidden = session.fixed_joints.binary_search(&start).is_ok()
+                || moving_joints.binary_search(&start).is_ok();
+            if hidden == c.start_cap {
                 return Err("a tube's start cap appeared or vanished".into());
             }
         }
@@ -486,10 +535,15 @@ impl BranchEditor {
                 );
             }
         }
+        let mut bounds = session.fixed_bounds;
+        for &r in &session.ranges {
+            bounds = union(bounds, bounds_of(&mesh.positions, r));
+        }
         self.change = MeshChange {
             full: false,
             reason: None,
             ranges: session.ranges.clone(),
+            bounds: bounds.map_or([[0.0; 3]; 2], |b| b.map(|p| p.map(f64::from))),
         };
         Ok(())
     }
@@ -551,6 +605,41 @@ impl BranchEditor {
             }
         }
         out
+    }
+}
+
+/// The joint keys of the ends of the segments that do not move (`moving[s]` false), where they
+/// are in `skeleton`.
+fn mesh_key_ends(original: &Skeleton, moving: &[bool], skeleton: &Skeleton) -> Vec<[u64; 3]> {
+    (0..original.segments.len())
+        .filter(|&s| !moving[s])
+        .map(|s| mesh::joint_key(skeleton.segments[s].end))
+        .collect()
+}
+
+/// The bounds of vertices `range[0] .. range[0] + range[1]`; `None` for no vertex.
+fn bounds_of(positions: &[f32], range: [u32; 2]) -> Option<[[f32; 3]; 2]> {
+    let (from, to) = (3 * range[0] as usize, 3 * (range[0] + range[1]) as usize);
+    let points = positions.get(from..to)?.chunks_exact(3);
+    let mut out: Option<[[f32; 3]; 2]> = None;
+    for p in points {
+        let b = out.get_or_insert([[p[0], p[1], p[2]]; 2]);
+        for k in 0..3 {
+            b[0][k] = b[0][k].min(p[k]);
+            b[1][k] = b[1][k].max(p[k]);
+        }
+    }
+    out
+}
+
+fn union(a: Option<[[f32; 3]; 2]>, b: Option<[[f32; 3]; 2]>) -> Option<[[f32; 3]; 2]> {
+    match (a, b) {
+        (Some(a), Some(b)) => Some([
+            [0, 1, 2].map(|k| a[0][k].min(b[0][k])),
+            [0, 1, 2].map(|k| a[1][k].max(b[1][k])),
+        ]),
+        (a, None) => a,
+        (None, b) => b,
     }
 }
 

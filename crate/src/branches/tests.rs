@@ -216,6 +216,7 @@ fn a_drag_rebuilds_the_branch_and_moves_its_descendants_like_a_full_mesh() {
             partial_frames += (!change.full) as u32 + (!change2.full) as u32;
             assert!(change.vertices() > 0 && change.vertices() < b.mesh.vertex_count());
             assert_mesh_is_full_mesh(&mut b, 2e-5);
+            assert_eq!(b.stats.bounds, b.mesh.bounds(), "the stats' bounds follow");
             // The handle is where it was dragged.
             let now = b.branches()[branch as usize].control;
             assert!(

@@ -309,7 +309,11 @@ pub fn build_mesh_with_parts(
 }
 
 /// A point as a hash key (exact: joints are the same computed value, not merely close; the two
-/// zeros are one).
+/// zeros are one): where a chain starts hidden at another segment's end.
+pub fn joint_key(p: DVec3) -> [u64; 3] {
+    key(p)
+}
+
 fn key(p: DVec3) -> [u64; 3] {
     let p = p + DVec3::ZERO;
     [p.x.to_bits(), p.y.to_bits(), p.z.to_bits()]
