@@ -6,6 +6,21 @@ export { exportModel, MODEL_FORMATS, type ExportOptions, type ModelFile, type Mo
 export { grammarDirectives, turtleCommands, type GrammarDirective, type TurtleCommand } from './commands';
 export { byteOffsetToUtf16 } from './offsets';
 export {
+  applyMeshUpdate,
+  editPlant,
+  EDITS_VERSION,
+  noEdits,
+  validateEdits,
+  type BranchEdit,
+  type BranchInfo,
+  type EditReport,
+  type EditsDocument,
+  type Handle,
+  type MeshUpdate,
+  type PlantEditor,
+  type Vec3,
+} from './branches';
+export {
   DERIVED_PREVIEW_CHARS,
   NOT_REWRITTEN,
   type Bounds,
