@@ -41,6 +41,10 @@ pub use parts::{ChainPart, MeshParts, Part};
 /// - `width_unit`: model units per width unit (what `#width 1` measured across), for writers that
 ///   draw widths themselves (SVG).
 ///
+/// Where each chain, polygon, leaf and sphere of the skeleton lies in these arrays (contiguous runs
+/// of vertices and triangles, in that order) is recorded by [`build_mesh_with_parts`] as
+/// [`MeshParts`], for re-meshing a part alone (dragging a branch).
+///
 /// Memory: a tube of `sides` sides costs `sides` vertices per joint (36 bytes each: position,
 /// normal, colour) and `2·sides` triangles per segment (24 bytes each), plus two caps per axis;
 /// with the default 6 sides, about 370 bytes per segment.
