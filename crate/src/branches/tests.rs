@@ -509,3 +509,53 @@ fn branch_ranges_name_the_branch_of_every_triangle() {
     assert!(firsts.windows(2).all(|w| w[0] < w[1]));
     assert!((*firsts.last().unwrap() as usize) < b.mesh.triangle_count());
 }
+
+#[test]
+fn the_lines_fallback_is_rebuilt_whole() {
+    let mut b = build(
+        "axiom: F[+F]F",
+        &BuildOptions {
+            mesh: crate::mesh::MeshOptions {
+                max_vertices: 0,
+                ..crate::mesh::MeshOptions::default()
+            },
+            ..BuildOptions::default()
+        },
+    );
+    let p3 = b.branches()[0].control[3];
+    let change = b.drag(0, 3, p3 + glam::DVec3::X).unwrap();
+    assert!(change.full);
+    assert_eq!(
+        change.reason.as_deref(),
+        Some("the mesh is the lines fallback")
+    );
+    assert_eq!(b.mesh.triangle_count(), 0);
+    // The first line is the dragged segment, now ending at the handle.
+    let end = glam::DVec3::new(
+        b.mesh.lines[3] as f64,
+        b.mesh.lines[4] as f64,
+        b.mesh.lines[5] as f64,
+    );
+    assert!((end - (p3 + glam::DVec3::X)).length() < 1e-6);
+}
+
+#[test]
+fn provenance_still_names_derived_modules_after_drags_and_edits() {
+    // With a homomorphism the turtle reads another string; ranges name the derived string.
+    let mut b = built_n(
+        "#angle 30\naxiom: A\nA -> B[+A][-A]BA\nhomomorphism:\nB -> FF",
+        Some(3),
+    );
+    assert!(!b.turtle_origin.is_empty());
+    let unedited = b.mesh.ranges.clone();
+    let info = b.branches();
+    let k = info.iter().position(|i| i.path == [0, 0]).unwrap() as u32;
+    let change = b
+        .drag(k, 3, info[k as usize].control[3] + glam::DVec3::Y * 0.2)
+        .unwrap();
+    assert!(!change.full);
+    assert_eq!(b.mesh.ranges, unedited);
+    let edits = b.edits();
+    b.apply_edits(&edits);
+    assert_eq!(b.mesh.ranges, unedited);
+}
