@@ -1,5 +1,6 @@
 // `npm run bench`: speed of the WebAssembly core in Node. Two tables: derivation on the workloads
-// of issue 3, and the whole pipeline and the mesh stage on those of issue 4. Writes
+// of issue 3, and the whole pipeline and the mesh stage on those of issue 4, with issue 8's drag
+// frame (one branch handle moved, the changed vertices copied out to JavaScript). Writes
 // test-results/bench.json (medians). The same workloads are benchmarked natively by criterion
 // (crate/benches/derive.rs, crate/benches/pipeline.rs); all read their grammars from the gallery.
 import { readFileSync, mkdirSync, writeFileSync } from 'node:fs';
@@ -89,6 +90,29 @@ const pipelineRows = [];
   });
   b.free();
   pipelineRows.push({ workload: 'ABOP 2.8a n=9, 10 sides: mesh stage → typed arrays', vertices: stats.vertices, median_ms: +ms.toFixed(2), runs, target_ms: 100 });
+}
+// Issue 8: one drag frame of a branch of that tree: its handle P3 moved, the branch and its
+// descendants re-placed and re-meshed, and the changed vertices copied out (what the studio
+// uploads to the GPU). Target: 5 ms in wasm.
+{
+  const b = build(example('game-tree.lsys'));
+  const paths = JSON.parse(b.branchPaths());
+  for (const [path, what] of [[[0, 0], 'a bough, 120 descendants'], [[0, 2, 0], 'a mid-level branch, 39 descendants']]) {
+    const branch = paths.findIndex((p) => p.join() === path.join());
+    const p3 = b.branchControlPoints().slice(12 * branch + 9, 12 * branch + 12);
+    let frame = 0;
+    let vertices = 0;
+    const { ms, runs } = time(() => {
+      frame += 1;
+      const full = b.drag(branch, 3, p3[0] + 0.02 * (frame % 8), p3[1] - 0.05, p3[2] + 0.03);
+      if (full) throw new Error(`drag of ${path} rebuilt the whole mesh: ${b.changeReason()}`);
+      b.changedRanges();
+      vertices = b.changedPositions().length / 3;
+      b.changedNormals();
+    });
+    pipelineRows.push({ workload: `game-tree.lsys: drag branch [${path}] (${what}) → changed arrays`, vertices, median_ms: +ms.toFixed(2), runs, target_ms: 5 });
+  }
+  b.free();
 }
 console.table(pipelineRows);
 const failures = pipelineRows.filter((r) => r.median_ms > r.target_ms);

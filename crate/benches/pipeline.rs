@@ -1,6 +1,7 @@
 //! Criterion benchmarks of the whole pipeline and of the mesh stage, natively, on the workloads of
 //! issue 4 (`npm run bench` runs the same ones in WebAssembly): a tree the size of seed 001's from
-//! grammar text to mesh arrays, and a million tube vertices.
+//! grammar text to mesh arrays, and a million tube vertices; and issue 8's drag frame: one handle
+//! of one branch of that tree moved, the branch and its descendants re-placed and re-meshed.
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use meristem::mesh::MeshOptions;
@@ -52,6 +53,33 @@ fn bench(c: &mut Criterion) {
             })
         },
     );
+    // Issue 8: one drag frame of a branch with descendants (target ≤ 5 ms in wasm).
+    for (path, what) in [
+        (vec![0, 0], "a bough, 120 descendants"),
+        (vec![0, 2, 0], "a mid-level branch, 39 descendants"),
+    ] {
+        let mut tree_build = build(&tree, &BuildOptions::default());
+        let branch = tree_build
+            .branch_tree()
+            .find(&path)
+            .expect("the branch exists");
+        let p3 = tree_build.branches()[branch as usize].control[3];
+        let mut frame = 0u32;
+        group.bench_function(
+            format!("game-tree.lsys drag one branch {path:?} ({what})"),
+            |b| {
+                b.iter(|| {
+                    frame += 1;
+                    let offset = glam::DVec3::new(0.02 * (frame % 8) as f64, -0.05, 0.03);
+                    let change = tree_build
+                        .drag(branch, 3, black_box(p3 + offset))
+                        .expect("a valid drag");
+                    assert!(!change.full);
+                    black_box(change.vertices())
+                })
+            },
+        );
+    }
     group.finish();
 }
 

@@ -6,6 +6,7 @@
 //! [`pipeline::build`] runs them all. [`growth`] adds the particle attributes (lifetime, speed,
 //! shape, attractors) to derive and turtle. `wasm` is the only file that knows about JavaScript.
 
+pub mod branches;
 pub mod derive;
 pub mod diagnostics;
 pub mod export;

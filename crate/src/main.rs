@@ -1,16 +1,20 @@
 //! `meristem`, the command-line tool: the same core as the studio, for scripts, tests and CI.
 //!
 //! ```text
-//! meristem derive FILE [--iterations N] [--seed S] [--stats | --growth] [--time]
+//! meristem derive FILE [--iterations N] [--seed S] [--stats | --growth] [--time] [--edits EDITS.json]
 //!                                                   the derived string, or stats as JSON;
 //!                                                   --time: each stage's time on stderr
 //! meristem derive FILE --growth                     what the growth attributes did, step by step (JSON)
 //! meristem check FILE                               diagnostics as FILE:LINE:COL: severity: message
 //! meristem export FILE -o OUT.EXT [--format EXT] [--iterations N] [--seed S] [--sides N] [--smooth-all]
-//!                                                   the model as OUT.wrl, .glb, .pov, .obj (+ .mtl), .iv or .svg
+//!                 [--edits EDITS.json]              the model as OUT.wrl, .glb, .pov, .obj (+ .mtl), .iv or .svg
 //! meristem import FILE [--from D] [-o OUT.lsys]      another dialect translated; notes on stderr
 //! ```
+//!
+//! `--edits` applies branch edits (the studio's edits document, docs/LANGUAGE.md) to the plant
+//! before its stats or its export; an edit whose branch no longer exists is a warning.
 
+use meristem::branches::parse_edits;
 use meristem::diagnostics::{LocatedDiagnostic, Severity};
 use meristem::export::{self, Format};
 use meristem::import::{self, Dialect};
@@ -21,12 +25,14 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 const USAGE: &str = "usage:
-  meristem derive FILE [--iterations N] [--seed S] [--stats | --growth] [--time]
+  meristem derive FILE [--iterations N] [--seed S] [--stats | --growth] [--time] [--edits EDITS.json]
   meristem check FILE
   meristem export FILE -o OUT.EXT [--format EXT] [--iterations N] [--seed S] [--sides N] [--smooth-all]
+                  [--edits EDITS.json]
       EXT: wrl (VRML 2.0), glb (glTF 2.0), pov (POV-Ray 3.7), obj (OBJ, writes OUT.mtl too),
            iv (OpenInventor 2.1), svg (SVG); --format overrides the extension
       --sides N (3 to 64, default 6) and --smooth-all are the studio's view options
+      --edits EDITS.json: branch edits made in the studio (its edits document), applied first
   meristem import FILE [--from green|lparser|cpfg|lpy] [-o OUT.lsys]
   meristem --version";
 
@@ -43,6 +49,7 @@ struct Args {
     format: Option<String>,
     sides: Option<u32>,
     smooth_all: bool,
+    edits: Option<PathBuf>,
 }
 
 fn parse_args() -> Result<Args, lexopt::Error> {
@@ -60,6 +67,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
     let mut format = None;
     let mut sides = None;
     let mut smooth_all = false;
+    let mut edits = None;
     while let Some(arg) = parser.next()? {
         match arg {
             Long("iterations") | Short('n') => iterations = Some(parser.value()?.parse()?),
@@ -72,6 +80,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             Long("format") | Short('f') => format = Some(parser.value()?.string()?),
             Long("sides") => sides = Some(parser.value()?.parse()?),
             Long("smooth-all") => smooth_all = true,
+            Long("edits") => edits = Some(PathBuf::from(parser.value()?)),
             Long("version") | Short('V') => {
                 println!("meristem {}", env!("CARGO_PKG_VERSION"));
                 std::process::exit(0);
@@ -100,6 +109,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
         format,
         sides,
         smooth_all,
+        edits,
     })
 }
 
@@ -216,7 +226,24 @@ fn main() -> ExitCode {
     // The core reads no clock; this binary lends it one.
     let start = std::time::Instant::now();
     let mut clock = || start.elapsed().as_secs_f64() * 1000.0;
-    let result = build_with_clock(
+    // The edits document is read (and checked) before building, so a bad one fails fast.
+    let edits = match &args.edits {
+        None => None,
+        Some(path) => match std::fs::read_to_string(path) {
+            Ok(text) => match parse_edits(&text) {
+                Ok(edits) => Some(edits),
+                Err(e) => {
+                    eprintln!("{}: {e}", path.display());
+                    return ExitCode::from(2);
+                }
+            },
+            Err(e) => {
+                eprintln!("meristem: cannot read {}: {e}", path.display());
+                return ExitCode::from(2);
+            }
+        },
+    };
+    let mut result = build_with_clock(
         &source,
         &BuildOptions {
             iterations: args.iterations,
@@ -233,6 +260,17 @@ fn main() -> ExitCode {
     }
     let diagnostics = result.located_diagnostics(&source);
     print_diagnostics(&args.file, &diagnostics);
+    if let (Some(edits), Some(path), true) = (&edits, &args.edits, result.ok()) {
+        let report = result.apply_edits(edits);
+        for skipped in &report.not_applied {
+            eprintln!(
+                "{}: warning: the edit of branch {:?} does not apply: {}",
+                path.display(),
+                skipped.path,
+                skipped.reason
+            );
+        }
+    }
     match args.verb.as_str() {
         "check" => {}
         "derive" if result.ok() => {

@@ -6,6 +6,7 @@
 //! boundary passes JavaScript's `performance.now`, the CLI `std::time::Instant`), and the time of
 //! each stage lands in [`Build::timings`].
 
+use crate::branches::{BranchEdit, BranchEditor, BranchTree, EditReport, MeshChange};
 use crate::derive::{self, DeriveOptions};
 use crate::diagnostics::{has_errors, Diagnostic, LineIndex, LocatedDiagnostic};
 use crate::export::Stats;
@@ -56,6 +57,11 @@ pub struct Build {
     /// With growth attributes (`#lifetime`, `#shape`, `#sun`, …): each module's growth state and
     /// what every step did (apices growing and stopped per third, rewritings).
     pub growth: Option<GrowthRecord>,
+    /// The mesh options of the last (re)mesh.
+    pub mesh_options: MeshOptions,
+    /// Branch edits (issue 8): created by the first call that needs it ([`Build::branches`],
+    /// [`Build::apply_edits`], [`Build::drag`]); `skeleton` and `mesh` are then the edited ones.
+    pub editor: Option<Box<BranchEditor>>,
 }
 
 /// [`derive::Explanation`] in terms of the derived string: which of its modules production `p`
@@ -144,7 +150,16 @@ impl Build {
     /// Runs the mesh stage again on the kept skeleton, with other mesh options (a view option
     /// such as the number of sides or smooth axes needs no new derivation), and updates the stats.
     pub fn remesh(&mut self, options: &MeshOptions) {
-        self.mesh = mesh::build_mesh(&self.skeleton, options);
+        self.mesh_options = options.clone();
+        self.mesh = match &mut self.editor {
+            Some(editor) => editor.remesh(&self.skeleton, options),
+            None => mesh::build_mesh(&self.skeleton, options),
+        };
+        self.remeshed();
+    }
+
+    /// After a whole new mesh: provenance in terms of the derived string, and the stats.
+    fn remeshed(&mut self) {
         // Provenance ranges name modules of the derived string, not of the homomorphism's output.
         if !self.turtle_origin.is_empty() {
             for pair in self.mesh.ranges.chunks_exact_mut(2) {
@@ -385,6 +400,117 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Stopwatch) -> Bu
     watch.timings.mesh = watch.lap();
     result.model = Some(model);
     result
+}
+
+/// One branch as the studio shows it (see [`crate::branches`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct BranchInfo {
+    pub path: Vec<u32>,
+    pub parent: Option<u32>,
+    pub children: Vec<u32>,
+    /// Its segments, in order along the axis.
+    pub segments: Vec<u32>,
+    /// Its Bézier control points `P0 … P3` where they are now (edits and ancestors' edits
+    /// included); `P0` is where it attaches.
+    pub control: [glam::DVec3; 4],
+    /// The parameter of each of its joints on the curve (by cumulative length, 0 to 1).
+    pub params: Vec<f64>,
+}
+
+/// Editing branches by their Bézier handles (issue 8): [`crate::branches`].
+impl Build {
+    /// The branch editor, created on first use from the unedited plant (meshing it once more to
+    /// record the mesh's layout).
+    pub fn editor(&mut self) -> &BranchEditor {
+        if self.editor.is_none() {
+            let (editor, mesh) =
+                BranchEditor::new(&self.skeleton, &self.mesh_options, self.mesh.width_unit);
+            self.editor = Some(Box::new(editor));
+            self.mesh = mesh;
+            self.remeshed();
+        }
+        self.editor.as_deref().expect("created above")
+    }
+
+    /// The branch tree of the plant (of its unedited skeleton: edits move branches, never make
+    /// or remove one).
+    pub fn branch_tree(&mut self) -> &BranchTree {
+        self.editor().tree()
+    }
+
+    /// Every branch: path, parent, children, segments, and its control points where they are now.
+    pub fn branches(&mut self) -> Vec<BranchInfo> {
+        let editor = self.editor();
+        let tree = editor.tree();
+        (0..tree.len() as u32)
+            .map(|b| {
+                let branch = &tree.branches[b as usize];
+                BranchInfo {
+                    path: branch.path.clone(),
+                    parent: branch.parent,
+                    children: branch.children.clone(),
+                    segments: branch.segments.clone(),
+                    control: editor.control_points(b),
+                    params: branch.fit.params.clone(),
+                }
+            })
+            .collect()
+    }
+
+    /// The joints of branch `branch` where they are now (empty for no such branch).
+    pub fn branch_joints(&mut self, branch: u32) -> Vec<glam::DVec3> {
+        self.editor();
+        match &self.editor {
+            Some(e) if (branch as usize) < e.tree().len() => {
+                e.tree().joints(&self.skeleton, branch)
+            }
+            _ => Vec::new(),
+        }
+    }
+
+    /// Replaces all edits by `edits` (an empty list undoes every edit) and rebuilds the edited
+    /// skeleton and the whole mesh. Edits whose path names no branch are reported, not errors.
+    pub fn apply_edits(&mut self, edits: &[BranchEdit]) -> EditReport {
+        self.editor();
+        let editor = self.editor.as_deref_mut().expect("created by editor()");
+        let report = editor.apply(edits, &mut self.skeleton, &mut self.mesh);
+        self.remeshed();
+        report
+    }
+
+    /// The edits in force (applied ones only), in branch order.
+    pub fn edits(&self) -> Vec<BranchEdit> {
+        self.editor.as_ref().map_or_else(Vec::new, |e| e.edits())
+    }
+
+    /// Drags handle `handle` (1, 2, 3 for P1, P2, P3) of branch `branch` (an index into
+    /// [`Build::branches`]) to `position`: the branch's edit changes, it and its descendants
+    /// move, and only the changed part of the mesh is rebuilt (see [`MeshChange`]). The stats'
+    /// bounds follow. Errors name a bad branch, handle or position.
+    pub fn drag(
+        &mut self,
+        branch: u32,
+        handle: usize,
+        position: glam::DVec3,
+    ) -> Result<MeshChange, String> {
+        self.editor();
+        let editor = self.editor.as_deref_mut().expect("created by editor()");
+        let change = editor
+            .drag(branch, handle, position, &mut self.skeleton, &mut self.mesh)?
+            .clone();
+        if change.full {
+            self.remeshed();
+        } else {
+            self.stats.bounds = change.bounds;
+        }
+        Ok(change)
+    }
+
+    /// The branch that drew each triangle, as (first triangle, branch) pairs (see
+    /// [`BranchEditor::branch_ranges`]).
+    pub fn branch_ranges(&mut self) -> Vec<u32> {
+        self.editor().branch_ranges()
+    }
 }
 
 #[cfg(test)]

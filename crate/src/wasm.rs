@@ -287,6 +287,7 @@ impl Build {
     pub fn release_geometry(&mut self) {
         self.inner.mesh = Default::default();
         self.inner.skeleton = Default::default();
+        self.inner.editor = None;
     }
 
     /// A fingerprint of the derived string (16 hex digits): equal for equal derivations.
@@ -459,4 +460,229 @@ pub fn import_grammar(text: &str, dialect_or_file_name: &str) -> String {
         },
     };
     serde_json::to_string(&result).unwrap_or_else(|_| "{}".into())
+}
+
+// ---- Editing branches by their Bézier handles (issue 8): `crate::branches`. ----------------
+// The first of these calls on a build starts its branch editor (the mesh is meshed once more to
+// record its layout); from then on `positions()` … and `stats()` are those of the edited plant.
+
+#[wasm_bindgen]
+impl Build {
+    /// Branches in the plant (see `crate::branches` for what a branch is).
+    #[wasm_bindgen(js_name = branchCount)]
+    pub fn branch_count(&mut self) -> u32 {
+        self.inner.branch_tree().len() as u32
+    }
+
+    /// The path of each branch, as JSON: `[[0], [0, 0], [0, 1], …]` (branch `i` is entry `i`).
+    #[wasm_bindgen(js_name = branchPaths)]
+    pub fn branch_paths(&mut self) -> String {
+        let paths: Vec<&Vec<u32>> = self
+            .inner
+            .branch_tree()
+            .branches
+            .iter()
+            .map(|b| &b.path)
+            .collect();
+        serde_json::to_string(&paths).unwrap_or_else(|_| "[]".into())
+    }
+
+    /// The parent of each branch; 4294967295 (u32::MAX) for a root.
+    #[wasm_bindgen(js_name = branchParents)]
+    pub fn branch_parents(&mut self) -> js_sys::Uint32Array {
+        let parents: Vec<u32> = self
+            .inner
+            .branch_tree()
+            .branches
+            .iter()
+            .map(|b| b.parent.unwrap_or(crate::branches::NO_BRANCH))
+            .collect();
+        js_sys::Uint32Array::from(&parents[..])
+    }
+
+    /// The Bézier control points of every branch where they are now: 12 floats per branch
+    /// (P0, P1, P2, P3, each x, y, z). P0 is where the branch attaches; P1 to P3 can be dragged.
+    #[wasm_bindgen(js_name = branchControlPoints)]
+    pub fn branch_control_points(&mut self) -> js_sys::Float32Array {
+        let editor = self.inner.editor();
+        let mut out = Vec::with_capacity(12 * editor.tree().len());
+        for b in 0..editor.tree().len() as u32 {
+            for p in editor.control_points(b) {
+                out.extend([p.x as f32, p.y as f32, p.z as f32]);
+            }
+        }
+        js_sys::Float32Array::from(&out[..])
+    }
+
+    /// The joints of branch `branch` where they are now (3 floats each); empty for no branch.
+    #[wasm_bindgen(js_name = branchJoints)]
+    pub fn branch_joints(&mut self, branch: u32) -> js_sys::Float32Array {
+        let joints = self.inner.branch_joints(branch);
+        let flat: Vec<f32> = joints
+            .iter()
+            .flat_map(|j| [j.x as f32, j.y as f32, j.z as f32])
+            .collect();
+        js_sys::Float32Array::from(&flat[..])
+    }
+
+    /// The parameter of each joint of branch `branch` on its curve (0 to 1, by length).
+    #[wasm_bindgen(js_name = branchParameters)]
+    pub fn branch_parameters(&mut self, branch: u32) -> js_sys::Float32Array {
+        let params: Vec<f32> = self
+            .inner
+            .branch_tree()
+            .branches
+            .get(branch as usize)
+            .map_or_else(Vec::new, |b| {
+                b.fit.params.iter().map(|&t| t as f32).collect()
+            });
+        js_sys::Float32Array::from(&params[..])
+    }
+
+    /// The branch that drew each triangle: (first triangle, branch) pairs sorted like `ranges()`;
+    /// branch 4294967295 for what grew from no segment. What picking a branch reads.
+    #[wasm_bindgen(js_name = branchRanges)]
+    pub fn branch_ranges(&mut self) -> js_sys::Uint32Array {
+        js_sys::Uint32Array::from(&self.inner.branch_ranges()[..])
+    }
+
+    /// Replaces every edit by those of `edits` (the edits document, `docs/LANGUAGE.md`) and
+    /// rebuilds the plant's geometry whole. Returns the report as JSON: `{"applied": [paths],
+    /// "notApplied": [{"path", "reason"}]}`. Throws when the document is malformed.
+    #[wasm_bindgen(js_name = applyEdits)]
+    pub fn apply_edits(&mut self, edits: &str) -> Result<String, JsError> {
+        let edits = crate::branches::parse_edits(edits).map_err(|e| JsError::new(&e))?;
+        Ok(self.inner.apply_edits(&edits).to_json())
+    }
+
+    /// The edits in force as an edits document (JSON).
+    pub fn edits(&self) -> String {
+        crate::branches::write_edits(&self.inner.edits())
+    }
+
+    /// Drags handle `handle` (1, 2 or 3) of branch `branch` to (x, y, z): the branch's edit
+    /// changes and only what moved is re-meshed. Returns true when the whole mesh was rebuilt
+    /// (read every array again, `changeReason()` says why); otherwise read only the changed
+    /// vertices (`changedRanges`, `changedPositions`, `changedNormals`). Throws on a bad branch,
+    /// handle or position.
+    pub fn drag(
+        &mut self,
+        branch: u32,
+        handle: u32,
+        x: f64,
+        y: f64,
+        z: f64,
+    ) -> Result<bool, JsError> {
+        self.inner
+            .drag(branch, handle as usize, glam::DVec3::new(x, y, z))
+            .map(|change| change.full)
+            .map_err(|e| JsError::new(&e))
+    }
+
+    /// The vertices the last edit changed: (first vertex, count) pairs, sorted and disjoint.
+    #[wasm_bindgen(js_name = changedRanges)]
+    pub fn changed_ranges(&self) -> js_sys::Uint32Array {
+        let flat: Vec<u32> = self
+            .last_change()
+            .ranges
+            .iter()
+            .flatten()
+            .copied()
+            .collect();
+        js_sys::Uint32Array::from(&flat[..])
+    }
+
+    /// Why the last edit rebuilt the whole mesh; `undefined` when it did not.
+    #[wasm_bindgen(js_name = changeReason)]
+    pub fn change_reason(&self) -> Option<String> {
+        let change = self.last_change();
+        change
+            .full
+            .then(|| change.reason.clone().unwrap_or_default())
+    }
+
+    /// The positions of the changed vertices, range after range (3 floats per vertex).
+    #[wasm_bindgen(js_name = changedPositions)]
+    pub fn changed_positions(&self) -> js_sys::Float32Array {
+        self.gather(&self.inner.mesh.positions)
+    }
+
+    /// The normals of the changed vertices, range after range.
+    #[wasm_bindgen(js_name = changedNormals)]
+    pub fn changed_normals(&self) -> js_sys::Float32Array {
+        self.gather(&self.inner.mesh.normals)
+    }
+
+    /// The positions of vertices `first .. first + count` (clamped to the mesh).
+    #[wasm_bindgen(js_name = positionsRange)]
+    pub fn positions_range(&self, first: u32, count: u32) -> js_sys::Float32Array {
+        js_sys::Float32Array::from(window(&self.inner.mesh.positions, first, count))
+    }
+
+    /// The normals of vertices `first .. first + count` (clamped to the mesh).
+    #[wasm_bindgen(js_name = normalsRange)]
+    pub fn normals_range(&self, first: u32, count: u32) -> js_sys::Float32Array {
+        js_sys::Float32Array::from(window(&self.inner.mesh.normals, first, count))
+    }
+}
+
+impl Build {
+    fn last_change(&self) -> crate::branches::MeshChange {
+        self.inner
+            .editor
+            .as_ref()
+            .map(|e| e.last_change().clone())
+            .unwrap_or_default()
+    }
+
+    fn gather(&self, array: &[f32]) -> js_sys::Float32Array {
+        let change = self.last_change();
+        let out = js_sys::Float32Array::new_with_length(3 * change.vertices() as u32);
+        let mut at = 0;
+        for r in &change.ranges {
+            let part = window(array, r[0], r[1]);
+            out.set(&js_sys::Float32Array::from(part), at);
+            at += part.len() as u32;
+        }
+        out
+    }
+}
+
+/// Vertices `first .. first + count` of a 3-floats-per-vertex array, clamped.
+fn window(array: &[f32], first: u32, count: u32) -> &[f32] {
+    let from = (3 * first as usize).min(array.len());
+    let to = from.saturating_add(3 * count as usize).min(array.len());
+    &array[from..to]
+}
+
+/// As [`export_model`], with the branch edits of `edits` (an edits document) applied: the bytes
+/// of `meristem export FILE -o NAME.EXT --edits EDITS.json`. Edits that do not apply are left
+/// out (as the command line does, which warns). Throws on a malformed document too.
+#[allow(clippy::too_many_arguments)]
+#[wasm_bindgen(js_name = exportModelWithEdits)]
+pub fn export_model_with_edits(
+    source: &str,
+    edits: &str,
+    format: &str,
+    name: &str,
+    iterations: Option<u32>,
+    seed: Option<f64>,
+    sides: Option<u32>,
+    smooth_all: Option<bool>,
+) -> Result<ExportedModel, JsError> {
+    let format = Format::from_extension(format).ok_or_else(|| {
+        JsError::new(&format!(
+            "unknown format '{format}'; the formats are {}",
+            Format::names()
+        ))
+    })?;
+    let edits = crate::branches::parse_edits(edits).map_err(|e| JsError::new(&e))?;
+    let mut result = pipeline::build(source, &build_options(iterations, seed, sides, smooth_all));
+    if !result.ok() {
+        return Err(JsError::new("the grammar has errors: nothing to export"));
+    }
+    result.apply_edits(&edits);
+    let file = export::download(format, &result.mesh, &result.skeleton, name)
+        .ok_or_else(|| JsError::new("the export is larger than 4 GiB"))?;
+    Ok(ExportedModel { file })
 }

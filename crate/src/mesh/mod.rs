@@ -7,12 +7,14 @@
 //! ten times thicker.
 
 pub mod curve;
+pub mod parts;
 pub mod polygon;
 pub mod sphere;
 pub mod surfaces;
 
 use crate::turtle::Skeleton;
 use glam::DVec3;
+pub use parts::{ChainPart, MeshParts, Part};
 
 /// The mesh as four flat arrays. **This is the one place the layout is defined**; the wasm
 /// boundary and the TypeScript `MeshBuffers` type refer here.
@@ -38,6 +40,10 @@ use glam::DVec3;
 ///   are then empty. Line `i` is `Skeleton::segments[i]` (its colour index is that segment's).
 /// - `width_unit`: model units per width unit (what `#width 1` measured across), for writers that
 ///   draw widths themselves (SVG).
+///
+/// Where each chain, polygon, leaf and sphere of the skeleton lies in these arrays (contiguous runs
+/// of vertices and triangles, in that order) is recorded by [`build_mesh_with_parts`] as
+/// [`MeshParts`], for re-meshing a part alone (dragging a branch).
 ///
 /// Memory: a tube of `sides` sides costs `sides` vertices per joint (36 bytes each: position,
 /// normal, colour) and `2·sides` triangles per segment (24 bytes each), plus two caps per axis;
@@ -242,80 +248,108 @@ const MAX_JOINT_ANGLE_COS: f64 = -0.2;
 /// joint rings, ends are capped), smooth axes as generalized cylinders through their joints,
 /// polygons and predefined surfaces two-sided, spheres. Above `max_vertices` it returns lines.
 pub fn build_mesh(skeleton: &Skeleton, options: &MeshOptions) -> MeshBuffers {
+    build_mesh_with_parts(skeleton, options).0
+}
+
+/// [`build_mesh`], and where each element of the skeleton landed in the mesh ([`MeshParts`]):
+/// what a partial re-mesh needs to rebuild or move one part alone.
+pub fn build_mesh_with_parts(
+    skeleton: &Skeleton,
+    options: &MeshOptions,
+) -> (MeshBuffers, MeshParts) {
     let unit = match options.width_unit {
         WidthUnit::Absolute(u) => u,
         WidthUnit::Relative(fraction) => fraction * skeleton_diagonal(skeleton),
     };
-    let sides = options.sides.max(3) as usize;
-    let mut builder = Builder {
-        mesh: MeshBuffers {
-            width_unit: unit,
-            ..MeshBuffers::default()
-        },
-        options,
-        unit,
-        sides,
-        ring: (0..sides)
-            .map(|k| (k as f64 / sides as f64 * std::f64::consts::TAU).sin_cos())
-            .collect(),
+    let mut builder = Builder::new(options, unit);
+    let mut parts = MeshParts {
+        segment_chain: vec![parts::NO_CHAIN; skeleton.segments.len()],
+        ..MeshParts::default()
     };
     let estimate = builder.estimate(skeleton);
     if estimate > options.max_vertices {
         builder.lines(skeleton);
-        return builder.mesh;
+        parts.lines = true;
+        return (builder.mesh, parts);
     }
     // Grow each array once: reallocating arrays of millions of floats costs more than meshing.
     builder.mesh.positions.reserve(3 * estimate);
     builder.mesh.normals.reserve(3 * estimate);
     builder.mesh.colors.reserve(3 * estimate);
     builder.mesh.indices.reserve(6 * estimate);
-    // A chain that starts where another segment ends is a branch growing out of a joint: its
-    // start is inside the parent's tube, so it needs no start cap.
-    let mut joints: Vec<[u64; 3]> = skeleton.segments.iter().map(|s| key(s.end)).collect();
-    joints.sort_unstable();
+    let joints = parts::joint_keys(skeleton);
     for chain in chains(skeleton, unit) {
-        let start = key(skeleton.segments[chain[0] as usize].start);
-        let hidden_start = joints.binary_search(&start).is_ok();
-        builder.tube(skeleton, &chain, !hidden_start);
+        let start_cap = parts::start_cap(&joints, skeleton, &chain);
+        let before = builder.mark();
+        builder.tube(skeleton, &chain, start_cap);
+        let part = builder.part_since(before);
+        let ranges = builder.element_ranges_since(&before);
+        for &s in &chain {
+            parts.segment_chain[s as usize] = parts.chains.len() as u32;
+        }
+        parts.chains.push(ChainPart {
+            part,
+            segments: chain,
+            start_cap,
+            ranges,
+        });
     }
-    for p in &skeleton.polygons {
-        builder.flat(&p.points, skeleton, p.color, p.module);
+    for i in 0..skeleton.polygons.len() {
+        let before = builder.mark();
+        builder.polygon(skeleton, i);
+        parts.polygons.push(builder.part_since(before));
     }
-    for s in &skeleton.surfaces {
-        let kind = match s.kind {
-            crate::turtle::SurfaceKind::Leaf => surfaces::SurfaceKind::Leaf,
-            crate::turtle::SurfaceKind::Petal => surfaces::SurfaceKind::Petal,
-        };
-        let points = surfaces::place(kind, s.origin, s.heading, s.left, s.scale);
-        builder.flat(&points, skeleton, s.color, s.module);
+    for i in 0..skeleton.surfaces.len() {
+        let before = builder.mark();
+        builder.surface(skeleton, i);
+        parts.surfaces.push(builder.part_since(before));
     }
-    for s in &skeleton.spheres {
-        let radius = s.radius_width.map_or(s.radius, |w| w * unit);
-        builder.sphere(s.center, radius, skeleton, s.color, s.module);
+    for i in 0..skeleton.spheres.len() {
+        let before = builder.mark();
+        builder.sphere_of(skeleton, i);
+        parts.spheres.push(builder.part_since(before));
     }
-    builder.mesh
+    (builder.mesh, parts)
 }
 
-/// A point as a hash key (exact: joints are the same computed value, not merely close).
+/// A point as a hash key (exact: joints are the same computed value, not merely close; the two
+/// zeros are one): where a chain starts hidden at another segment's end.
+pub fn joint_key(p: DVec3) -> [u64; 3] {
+    key(p)
+}
+
 fn key(p: DVec3) -> [u64; 3] {
+    let p = p + DVec3::ZERO;
     [p.x.to_bits(), p.y.to_bits(), p.z.to_bits()]
 }
 
-/// The axes of the skeleton as lists of segment indices, each continuing the one before. A chain
-/// breaks where widths are zero, at sharp joints, where smoothness changes, and where the joint's
-/// ring would reach past the middle of a segment it joins (a tube much wider than a short segment
-/// at a bend: its rings would cross and the tube turn inside out). `unit` is the width unit.
-fn chains(skeleton: &Skeleton, unit: f64) -> Vec<Vec<u32>> {
+/// Whether segment `i` joins segment `p` (the one it continues) in one tube: both have a width,
+/// the same smoothness, the joint between them is not sharper than `MAX_JOINT_ANGLE_COS`, and the
+/// joint's ring does not reach past the middle of either segment (a tube much wider than a short
+/// segment at a bend: its rings would cross and the tube turn inside out). `unit` is the width unit.
+pub(crate) fn joins(skeleton: &Skeleton, p: usize, i: usize, unit: f64) -> bool {
     let segments = &skeleton.segments;
     let direction = |i: usize| (segments[i].end - segments[i].start).normalize();
     let length = |i: usize| (segments[i].end - segments[i].start).length();
     // The joint ring lies across the bisector, tilted by half the bend from each segment's
     // cross-section: it reaches radius × sin(bend / 2) along each of them.
-    let overruns = |p: usize, i: usize| {
+    let overruns = || {
         let cos = direction(p).dot(direction(i)).clamp(-1.0, 1.0);
         let reach = 0.5 * segments[i].width * unit * ((1.0 - cos) * 0.5).sqrt();
         reach >= 0.5 * length(p).min(length(i))
     };
+    segments[i].width > 0.0
+        && segments[p].width > 0.0
+        && segments[p].smooth == segments[i].smooth
+        && direction(p).dot(direction(i)) > MAX_JOINT_ANGLE_COS
+        && !overruns()
+}
+
+/// The axes of the skeleton as lists of segment indices, each continuing the one before. A chain
+/// breaks where widths are zero, at sharp joints, where smoothness changes, and where the joint's
+/// ring would reach past the middle of a segment it joins (see [`joins`]). `unit` is the width unit.
+pub(crate) fn chains(skeleton: &Skeleton, unit: f64) -> Vec<Vec<u32>> {
+    let segments = &skeleton.segments;
     let mut next: Vec<Option<u32>> = vec![None; segments.len()];
     let mut continues = vec![false; segments.len()];
     for (i, s) in segments.iter().enumerate() {
@@ -324,12 +358,7 @@ fn chains(skeleton: &Skeleton, unit: f64) -> Vec<Vec<u32>> {
         }
         if let Some(p) = s.previous {
             let p = p as usize;
-            let joins = next[p].is_none()
-                && segments[p].width > 0.0
-                && segments[p].smooth == s.smooth
-                && direction(p).dot(direction(i)) > MAX_JOINT_ANGLE_COS
-                && !overruns(p, i);
-            if joins {
+            if next[p].is_none() && joins(skeleton, p, i, unit) {
                 next[p] = Some(i as u32);
                 continues[i] = true;
             }
@@ -351,16 +380,91 @@ fn chains(skeleton: &Skeleton, unit: f64) -> Vec<Vec<u32>> {
     chains
 }
 
-struct Builder<'a> {
+pub(crate) struct Builder<'a> {
     mesh: MeshBuffers,
     options: &'a MeshOptions,
     unit: f64,
     sides: usize,
     /// (sin, cos) of each side's angle around a ring.
     ring: Vec<(f64, f64)>,
+    /// (first triangle, segment) pairs, as `ranges` but naming the segment that drew each
+    /// triangle of a tube (`parts::NO_CHAIN` for other elements): what [`MeshParts`] records.
+    element_ranges: Vec<u32>,
+    /// The segment the next `range` call stands for.
+    element: u32,
 }
 
-impl Builder<'_> {
+impl<'a> Builder<'a> {
+    fn new(options: &'a MeshOptions, unit: f64) -> Builder<'a> {
+        let sides = options.sides.max(3) as usize;
+        Builder {
+            mesh: MeshBuffers {
+                width_unit: unit,
+                ..MeshBuffers::default()
+            },
+            options,
+            unit,
+            sides,
+            ring: (0..sides)
+                .map(|k| (k as f64 / sides as f64 * std::f64::consts::TAU).sin_cos())
+                .collect(),
+            element_ranges: Vec::new(),
+            element: parts::NO_CHAIN,
+        }
+    }
+
+    /// The position of the next vertex, triangle and element range.
+    fn mark(&self) -> [u32; 3] {
+        [
+            self.mesh.vertex_count() as u32,
+            self.mesh.triangle_count() as u32,
+            self.element_ranges.len() as u32,
+        ]
+    }
+
+    /// The part written since `mark`.
+    fn part_since(&self, mark: [u32; 3]) -> Part {
+        Part {
+            first_vertex: mark[0],
+            vertices: self.mesh.vertex_count() as u32 - mark[0],
+            first_triangle: mark[1],
+            triangles: self.mesh.triangle_count() as u32 - mark[1],
+        }
+    }
+
+    /// The element ranges written since `mark`, their first triangles counted from the mark's.
+    fn element_ranges_since(&self, mark: &[u32; 3]) -> Vec<u32> {
+        let mut ranges = self.element_ranges[mark[2] as usize..].to_vec();
+        for pair in ranges.chunks_exact_mut(2) {
+            pair[0] -= mark[1];
+        }
+        ranges
+    }
+
+    fn polygon(&mut self, skeleton: &Skeleton, i: usize) {
+        let p = &skeleton.polygons[i];
+        self.element = parts::NO_CHAIN;
+        self.flat(&p.points, skeleton, p.color, p.module);
+    }
+
+    fn surface(&mut self, skeleton: &Skeleton, i: usize) {
+        let s = &skeleton.surfaces[i];
+        let kind = match s.kind {
+            crate::turtle::SurfaceKind::Leaf => surfaces::SurfaceKind::Leaf,
+            crate::turtle::SurfaceKind::Petal => surfaces::SurfaceKind::Petal,
+        };
+        let points = surfaces::place(kind, s.origin, s.heading, s.left, s.scale);
+        self.element = parts::NO_CHAIN;
+        self.flat(&points, skeleton, s.color, s.module);
+    }
+
+    fn sphere_of(&mut self, skeleton: &Skeleton, i: usize) {
+        let s = &skeleton.spheres[i];
+        let radius = s.radius_width.map_or(s.radius, |w| w * self.unit);
+        self.element = parts::NO_CHAIN;
+        self.sphere(s.center, radius, skeleton, s.color, s.module);
+    }
+
     /// An upper bound of the vertices the full mesh needs.
     fn estimate(&self, skeleton: &Skeleton) -> usize {
         let rings_per_segment =
@@ -398,6 +502,7 @@ impl Builder<'_> {
         let first = self.mesh.triangle_count() as u32;
         push_range(&mut self.mesh.ranges, first, module);
         push_range(&mut self.mesh.color_ranges, first, color as u32);
+        push_range(&mut self.element_ranges, first, self.element);
     }
 
     fn tube(&mut self, skeleton: &Skeleton, chain: &[u32], start_cap: bool) {
@@ -464,6 +569,7 @@ impl Builder<'_> {
         }
         let n = sides as u32;
         // Start cap, facing back along the axis.
+        self.element = chain[0];
         self.range(segments[0].module, segments[0].color);
         if start_cap {
             self.cap(
@@ -476,6 +582,7 @@ impl Builder<'_> {
         }
         for k in 0..rings.len() - 1 {
             let segment = segments[samples[k].3];
+            self.element = chain[samples[k].3];
             self.range(segment.module, segment.color);
             let (a0, b0) = (rings[k], rings[k + 1]);
             for j in 0..n {
@@ -486,6 +593,7 @@ impl Builder<'_> {
         }
         let last = samples.len() - 1;
         let end = segments[segments.len() - 1];
+        self.element = chain[chain.len() - 1];
         self.range(end.module, end.color);
         let c = skeleton.color(end.color);
         self.cap(samples[last].0, samples[last].1, rings[last], c, false);
@@ -619,6 +727,7 @@ mod tests {
             module: 0,
             previous,
             smooth: false,
+            anchor: previous,
         }
     }
 
@@ -772,6 +881,7 @@ mod tests {
                 points: square,
                 color: 3,
                 module: 7,
+                anchor: None,
             }],
             spheres: vec![Sphere {
                 center: DVec3::ZERO,
@@ -779,6 +889,7 @@ mod tests {
                 radius_width: None,
                 color: 0,
                 module: 9,
+                anchor: None,
             }],
             ..Skeleton::default()
         };
@@ -850,6 +961,7 @@ mod tests {
                 ],
                 color: 5,
                 module: 9,
+                anchor: None,
             }],
             ..Skeleton::default()
         };

@@ -37,6 +37,12 @@ pub struct Segment {
     pub previous: Option<u32>,
     /// Drawn between `@Gc` and `@Ge`: part of a smooth generalized cylinder.
     pub smooth: bool,
+    /// The segment this one grows from: the last segment drawn before it on the turtle's path
+    /// from the start of the string (a closed `[…]` branch does not count, `f` keeps it, `@M`
+    /// clears it). Equal to `previous` when the segment continues an axis; otherwise the segment
+    /// at whose end joint a branch leaves. `None` for a segment that starts a new root. See
+    /// [`crate::branches`].
+    pub anchor: Option<u32>,
 }
 
 /// A filled polygon (`{ … }`), vertices in drawing order.
@@ -46,6 +52,8 @@ pub struct Polygon {
     pub color: u16,
     /// Index of the `{` module.
     pub module: u32,
+    /// The segment the turtle's state at `{` grew from (as [`Segment::anchor`]).
+    pub anchor: Option<u32>,
 }
 
 /// Which predefined surface.
@@ -65,6 +73,8 @@ pub struct Surface {
     pub scale: f64,
     pub color: u16,
     pub module: u32,
+    /// The segment the turtle's state here grew from (as [`Segment::anchor`]).
+    pub anchor: Option<u32>,
 }
 
 /// A sphere (`@O`). Its radius is in model units (`@O(r)`), or half the width in width units
@@ -76,6 +86,8 @@ pub struct Sphere {
     pub radius_width: Option<f64>,
     pub color: u16,
     pub module: u32,
+    /// The segment the turtle's state here grew from (as [`Segment::anchor`]).
+    pub anchor: Option<u32>,
 }
 
 /// The value a query module (`?P`, `?H`, `?U`, `?L`) reads at its place in the string.
@@ -160,6 +172,8 @@ struct TurtleState {
     smooth: bool,
     /// The last segment drawn on this axis, if the turtle still stands at its end.
     last_segment: Option<u32>,
+    /// The last segment drawn on the turtle's path (`Segment::anchor` of what it draws next).
+    anchor: Option<u32>,
 }
 
 impl TurtleState {
@@ -287,9 +301,10 @@ fn run(
         susceptibility,
         smooth: false,
         last_segment: None,
+        anchor: None,
     };
     let mut stack: Vec<TurtleState> = Vec::new();
-    let mut open_polygons: Vec<(Vec<DVec3>, u16, u32)> = Vec::new();
+    let mut open_polygons: Vec<(Vec<DVec3>, u16, u32, Option<u32>)> = Vec::new();
     let mut skeleton = Skeleton {
         palette: settings.palette.clone(),
         ..Skeleton::default()
@@ -352,7 +367,7 @@ fn run(
                 turtle.position += turtle.heading * length;
                 let draws = matches!(command, Command::Forward | Command::ForwardNoVertex);
                 let records = matches!(command, Command::Forward | Command::Move);
-                if let Some((points, _, _)) = open_polygons.last_mut() {
+                if let Some((points, ..)) = open_polygons.last_mut() {
                     // Inside a polygon, F and f trace its outline instead of drawing.
                     if records {
                         points.push(turtle.position);
@@ -362,6 +377,7 @@ fn run(
                     let previous = turtle
                         .last_segment
                         .filter(|&s| skeleton.segments[s as usize].end == start);
+                    let anchor = turtle.anchor;
                     skeleton.segments.push(Segment {
                         start,
                         end: turtle.position,
@@ -372,8 +388,10 @@ fn run(
                         module: index,
                         previous,
                         smooth: turtle.smooth,
+                        anchor,
                     });
                     turtle.last_segment = Some(skeleton.segments.len() as u32 - 1);
+                    turtle.anchor = turtle.last_segment;
                 } else {
                     turtle.last_segment = None;
                 }
@@ -400,19 +418,20 @@ fn run(
                 }
             }
             Command::StartPolygon => {
-                open_polygons.push((vec![turtle.position], turtle.color, index))
+                open_polygons.push((vec![turtle.position], turtle.color, index, turtle.anchor))
             }
             Command::PolygonVertex => {
-                if let Some((points, _, _)) = open_polygons.last_mut() {
+                if let Some((points, ..)) = open_polygons.last_mut() {
                     points.push(turtle.position);
                 }
             }
             Command::EndPolygon => {
-                if let Some((points, color, module)) = open_polygons.pop() {
+                if let Some((points, color, module, anchor)) = open_polygons.pop() {
                     skeleton.polygons.push(Polygon {
                         points,
                         color,
                         module,
+                        anchor,
                     });
                 }
             }
@@ -447,6 +466,7 @@ fn run(
                         scale,
                         color: turtle.color,
                         module: index,
+                        anchor: turtle.anchor,
                     });
                 }
             }
@@ -456,11 +476,14 @@ fn run(
                 radius_width: first.is_none().then_some(turtle.width * 0.5),
                 color: turtle.color,
                 module: index,
+                anchor: turtle.anchor,
             }),
             Command::MoveTo => {
                 if let Some(p) = vector() {
                     turtle.position = p;
                     turtle.last_segment = None;
+                    // What is drawn from an absolute position does not grow from a joint.
+                    turtle.anchor = None;
                 }
             }
             Command::TropismVector => {

@@ -268,3 +268,28 @@ fn a_grammar_that_only_turns_with_plus_and_minus_is_flat() {
         "nothing drawn is not a flat drawing"
     );
 }
+
+#[test]
+fn anchors_name_the_segment_a_state_grew_from() {
+    // seg 0 F, seg 1 in [+F], seg 2 after `f` inside [fF], seg 3 continues seg 0; then a leaf,
+    // a polygon and a sphere at seg 3's end; @M starts a new root (seg 4).
+    let s = run("axiom: F[+F][fF]F~l{.f.f.}@O@M(5,0,0)F");
+    let anchors: Vec<_> = s.segments.iter().map(|x| (x.previous, x.anchor)).collect();
+    assert_eq!(
+        anchors,
+        vec![
+            (None, None),
+            (None, Some(0)),
+            (None, Some(0)),
+            (Some(0), Some(0)),
+            (None, None),
+        ]
+    );
+    assert_eq!(s.surfaces[0].anchor, Some(3));
+    assert_eq!(s.polygons[0].anchor, Some(3));
+    assert_eq!(s.spheres[0].anchor, Some(3));
+    // A nested branch grows from the segment before its bracket, not from nothing.
+    let s = run("axiom: F[[+F]-F]");
+    assert_eq!(s.segments[1].anchor, Some(0));
+    assert_eq!(s.segments[2].anchor, Some(0));
+}

@@ -7,6 +7,7 @@ import {
   type BuildOptions,
   type Diagnostic,
   type Explanation,
+  type MeshBuffers,
   type PlantBuild,
   type PlantInspector,
   type ProductionInfo,
@@ -62,7 +63,8 @@ export function inspectPlant(source: string, options: BuildOptions = {}): { buil
   return { build: plain, inspector: new LiveInspector(result, plain.moduleCount) };
 }
 
-function runBuild(source: string, options: BuildOptions): Build {
+/** Runs the core's `build` (for this folder's facades; the caller frees the result). */
+export function runBuild(source: string, options: BuildOptions): Build {
   assertReady();
   return build(
     source,
@@ -82,20 +84,13 @@ interface RawProduction {
   context: boolean;
 }
 
-function plainBuild(source: string, result: Build): PlantBuild {
+/** Copies a wasm build into plain data (for this folder's facades; the caller frees the build). */
+export function plainBuild(source: string, result: Build): PlantBuild {
   return {
     ok: result.ok,
     diagnostics: (JSON.parse(result.diagnostics()) as RawDiagnostic[]).map(toDiagnostic),
     stats: JSON.parse(result.stats()) as PlantStats,
-    mesh: {
-      positions: ownedArray(result.positions()),
-      normals: ownedArray(result.normals()),
-      colors: ownedArray(result.colors()),
-      indices: ownedArray(result.indices()),
-      ranges: ownedArray(result.ranges()),
-      lines: ownedArray(result.lines()),
-      lineColors: ownedArray(result.lineColors()),
-    },
+    mesh: copyMesh(result),
     derived: result.derived(DERIVED_PREVIEW_CHARS),
     moduleCount: result.moduleCount,
     productions: (JSON.parse(result.productions()) as RawProduction[]).map(
@@ -111,6 +106,19 @@ function plainBuild(source: string, result: Build): PlantBuild {
     timings: (JSON.parse(result.timings()) as StageTimings | null) ?? NO_TIMINGS,
     flat: result.flat,
     grammarIterations: result.grammarIterations,
+  };
+}
+
+/** Copies every mesh array of a wasm build out of wasm memory. */
+export function copyMesh(result: Build): MeshBuffers {
+  return {
+    positions: ownedArray(result.positions()),
+    normals: ownedArray(result.normals()),
+    colors: ownedArray(result.colors()),
+    indices: ownedArray(result.indices()),
+    ranges: ownedArray(result.ranges()),
+    lines: ownedArray(result.lines()),
+    lineColors: ownedArray(result.lineColors()),
   };
 }
 

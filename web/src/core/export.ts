@@ -1,5 +1,6 @@
 // The facade over the core's file writers: one call, the file's bytes out, the wasm object freed.
-import { exportModel as coreExportModel } from '../../../crate/pkg/meristem.js';
+import { exportModel as coreExportModel, exportModelWithEdits } from '../../../crate/pkg/meristem.js';
+import type { EditsDocument } from './branches';
 import { assertReady } from './init';
 import type { BuildOptions } from './types';
 
@@ -29,26 +30,29 @@ export interface ModelFile {
 export interface ExportOptions extends BuildOptions {
   /** File name without extension; default `plant`. */
   name?: string;
+  /** Branch edits to apply first (the file is then `meristem export … --edits EDITS.json`'s). */
+  edits?: EditsDocument;
 }
 
 /**
  * Builds `source` with `options` (as {@link buildPlant} does, so the mesh is the one on screen) and
  * writes its model in `format`: the same bytes as `meristem export FILE -o NAME.EXT` for the same
  * grammar, iterations, seed, sides and smooth axes (for `obj`, a zip holding exactly the command's
- * NAME.obj and NAME.mtl). Throws when the grammar has errors (export only a plant that built) or the
- * core fails. Requires {@link initCore}.
+ * NAME.obj and NAME.mtl). With `options.edits`, the branch edits are applied first (edits whose
+ * branch no longer exists are left out). Throws when the grammar has errors (export only a plant
+ * that built), the edits are malformed, or the core fails. Requires {@link initCore}.
  */
 export function exportModel(source: string, format: ModelFormat, options: ExportOptions = {}): ModelFile {
   assertReady();
-  const result = coreExportModel(
-    source,
+  const args = [
     format,
     options.name ?? 'plant',
     options.iterations ?? undefined,
     options.seed ?? undefined,
     options.sides ?? undefined,
     options.smoothAll ?? undefined,
-  );
+  ] as const;
+  const result = options.edits ? exportModelWithEdits(source, JSON.stringify(options.edits), ...args) : coreExportModel(source, ...args);
   try {
     return { fileName: result.fileName, mimeType: result.mimeType, bytes: result.bytes() };
   } finally {

@@ -7,6 +7,21 @@ export { grammarDirectives, turtleCommands, type GrammarDirective, type TurtleCo
 export { byteOffsetToUtf16 } from './offsets';
 export { importGrammar, type Dialect, type ImportedGrammar, type ImportNote } from './import';
 export {
+  applyMeshUpdate,
+  editPlant,
+  EDITS_VERSION,
+  noEdits,
+  validateEdits,
+  type BranchEdit,
+  type BranchInfo,
+  type EditReport,
+  type EditsDocument,
+  type Handle,
+  type MeshUpdate,
+  type PlantEditor,
+  type Vec3,
+} from './branches';
+export {
   DERIVED_PREVIEW_CHARS,
   NOT_REWRITTEN,
   type Bounds,

@@ -1,0 +1,255 @@
+//! Branches of a skeleton and their Bézier skeletons, and the edits a user makes by dragging a
+//! branch's handles (issue 8, after Rynkiewicz & Napieralski). Between the turtle and the mesh:
+//! `Skeleton` → [`BranchTree`] (plain data) → with [`BranchEdit`]s → an edited `Skeleton`.
+//!
+//! **A branch** is a run of segments along one axis between branching points. An axis is a
+//! chain of segments each continuing the one before (`Segment::previous`). A *branching point*
+//! is the end joint of a segment from which another segment grows (`Segment::anchor`) other
+//! than its continuation — a lateral `[…]`, or a segment after `f` — or where the axis ends. The
+//! axis is cut at every branching point, so a branch's children always grow from its **end**
+//! joint, and the continuation of the axis after a branching point is a child too (the last
+//! one: it comes last in the string).
+//!
+//! - **parent**: the branch holding the segment its first segment grows from; none for a
+//!   **root** (a segment drawn before any other on its path, or after `@M`).
+//! - **children**: in the order their first segments appear in the string.
+//! - **path**: the index of its root among the roots, then the child index at each level:
+//!   `[0]` is the first root, `[0, 2]` its third child, `[0, 2, 1]` that one's second child.
+//!   The same string always gives the same paths; after a re-derivation a path names the
+//!   branch in the same place as long as the branches before it in the string still exist.
+//! - **items**: polygons, leaves and spheres belong to the branch of the segment they grow from
+//!   (their `anchor`), at that segment's end joint, and follow that joint when it moves.
+//!
+//! Each branch has a cubic Bézier curve fitted to its joints ([`fit`]); its control points
+//! are what the user drags.
+
+pub mod deform;
+pub mod editor;
+pub mod edits;
+pub mod fit;
+
+pub use deform::Rigid;
+pub use editor::{BranchEditor, MeshChange};
+pub use edits::{parse_edits, write_edits, BranchEdit, EditReport, NotApplied, EDITS_VERSION};
+
+use crate::turtle::Skeleton;
+use glam::DVec3;
+
+/// No branch (a root's parent, an item drawn before any segment).
+pub const NO_BRANCH: u32 = u32::MAX;
+
+/// Something drawn at a joint that is not a segment.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Item {
+    Polygon(u32),
+    Surface(u32),
+    Sphere(u32),
+}
+
+/// One branch of the tree (see the module documentation).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Branch {
+    pub path: Vec<u32>,
+    pub parent: Option<u32>,
+    pub children: Vec<u32>,
+    /// Its segments in order along the axis (indices into `Skeleton::segments`).
+    pub segments: Vec<u32>,
+    /// Polygons, leaves and spheres growing from its joints: (item, k) with the item at the end
+    /// joint of `segments[k]`.
+    pub items: Vec<(Item, u32)>,
+    /// The Bézier curve fitted to the unedited branch's joints.
+    pub fit: fit::Fit,
+    /// The sum of its segments' lengths (the unit of edit offsets).
+    pub length: f64,
+}
+
+/// The branches of a skeleton, parents before children.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct BranchTree {
+    pub branches: Vec<Branch>,
+    /// The root branches, in the order they appear.
+    pub roots: Vec<u32>,
+    /// For each segment, its branch.
+    pub segment_branch: Vec<u32>,
+    /// For each segment, its index in its branch's `segments`.
+    pub segment_position: Vec<u32>,
+}
+
+impl BranchTree {
+    /// The branches of `skeleton`.
+    pub fn new(skeleton: &Skeleton) -> BranchTree {
+        let segments = &skeleton.segments;
+        let n = segments.len();
+        // The continuation of each segment (the first segment continuing it), and whether
+        // anything else grows from its end.
+        let mut continuation: Vec<Option<u32>> = vec![None; n];
+        let mut continues = vec![false; n];
+        let mut forks = vec![false; n];
+        for (i, s) in segments.iter().enumerate() {
+            match (s.previous, s.anchor) {
+                (Some(p), _) if continuation[p as usize].is_none() && (p as usize) < i => {
+                    continuation[p as usize] = Some(i as u32);
+                    continues[i] = true;
+                }
+                (_, Some(a)) if (a as usize) < i => forks[a as usize] = true,
+                _ => {}
+            }
+        }
+        let ends_branch = |s: usize| forks[s] || continuation[s].is_none();
+        let mut tree = BranchTree {
+            segment_branch: vec![NO_BRANCH; n],
+            segment_position: vec![0; n],
+            ..BranchTree::default()
+        };
+        for start in 0..n {
+            let starts = !continues[start]
+                || segments[start]
+                    .previous
+                    .is_some_and(|p| ends_branch(p as usize));
+            if !starts {
+                continue;
+            }
+            let id = tree.branches.len() as u32;
+            let mut run = vec![start as u32];
+            let mut at = start;
+            while !ends_branch(at) {
+                let Some(next) = continuation[at] else { break };
+                run.push(next);
+                at = next as usize;
+            }
+            for (k, &s) in run.iter().enumerate() {
+                tree.segment_branch[s as usize] = id;
+                tree.segment_position[s as usize] = k as u32;
+            }
+            let grows_from = segments[start]
+                .anchor
+                .filter(|&a| (a as usize) < start)
+                .map(|a| tree.segment_branch[a as usize])
+                .filter(|&b| b != NO_BRANCH);
+            let path = match grows_from {
+                Some(parent) => {
+                    let p = &mut tree.branches[parent as usize];
+                    p.children.push(id);
+                    let mut path = p.path.clone();
+                    path.push(p.children.len() as u32 - 1);
+                    path
+                }
+                None => {
+                    tree.roots.push(id);
+                    vec![tree.roots.len() as u32 - 1]
+                }
+            };
+            let mut joints = vec![segments[start].start];
+            joints.extend(run.iter().map(|&s| segments[s as usize].end));
+            let length = run
+                .iter()
+                .map(|&s| {
+                    let s = &segments[s as usize];
+                    (s.end - s.start).length()
+                })
+                .sum();
+            tree.branches.push(Branch {
+                path,
+                parent: grows_from,
+                children: Vec::new(),
+                segments: run,
+                items: Vec::new(),
+                fit: fit::fit(&joints),
+                length,
+            });
+        }
+        let anchored = skeleton
+            .polygons
+            .iter()
+            .enumerate()
+            .map(|(i, p)| (Item::Polygon(i as u32), p.anchor))
+            .chain(
+                skeleton
+                    .surfaces
+                    .iter()
+                    .enumerate()
+                    .map(|(i, s)| (Item::Surface(i as u32), s.anchor)),
+            )
+            .chain(
+                skeleton
+                    .spheres
+                    .iter()
+                    .enumerate()
+                    .map(|(i, s)| (Item::Sphere(i as u32), s.anchor)),
+            );
+        for (item, anchor) in anchored {
+            if let Some(a) = anchor.filter(|&a| (a as usize) < n) {
+                let b = tree.segment_branch[a as usize];
+                if b != NO_BRANCH {
+                    let k = tree.segment_position[a as usize];
+                    tree.branches[b as usize].items.push((item, k));
+                }
+            }
+        }
+        tree
+    }
+
+    pub fn len(&self) -> usize {
+        self.branches.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.branches.is_empty()
+    }
+
+    /// The branch at `path`, or why there is none (the deepest part of the path that exists).
+    pub fn find(&self, path: &[u32]) -> Result<u32, String> {
+        let Some((&root, rest)) = path.split_first() else {
+            return Err("the path is empty".into());
+        };
+        let mut at = *self.roots.get(root as usize).ok_or_else(|| {
+            format!(
+                "the plant has {} root branch{}",
+                self.roots.len(),
+                if self.roots.len() == 1 { "" } else { "es" }
+            )
+        })?;
+        for (depth, &child) in rest.iter().enumerate() {
+            let children = &self.branches[at as usize].children;
+            at = *children.get(child as usize).ok_or_else(|| {
+                let n = children.len();
+                format!(
+                    "branch {:?} has {n} child branch{}",
+                    &path[..depth + 1],
+                    if n == 1 { "" } else { "es" }
+                )
+            })?;
+        }
+        Ok(at)
+    }
+
+    /// `branch` and all its descendants, parents before children.
+    pub fn subtree(&self, branch: u32) -> Vec<u32> {
+        let mut out = vec![branch];
+        let mut k = 0;
+        while k < out.len() {
+            out.extend(&self.branches[out[k] as usize].children);
+            k += 1;
+        }
+        out.sort_unstable();
+        out
+    }
+
+    /// The joints of `branch` in `skeleton`: its first segment's start, then each segment's end.
+    pub fn joints(&self, skeleton: &Skeleton, branch: u32) -> Vec<DVec3> {
+        let b = &self.branches[branch as usize];
+        let mut joints = Vec::with_capacity(b.segments.len() + 1);
+        if let Some(&first) = b.segments.first() {
+            joints.push(skeleton.segments[first as usize].start);
+        }
+        joints.extend(
+            b.segments
+                .iter()
+                .map(|&s| skeleton.segments[s as usize].end),
+        );
+        joints
+    }
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,246 @@
+//! Where each element of the skeleton lies in a mesh, and meshing one element alone: what a
+//! partial re-mesh (dragging a branch, issue 8) uses to rebuild a few tubes and move the others
+//! instead of meshing the whole plant again.
+//!
+//! [`build_mesh`](super::build_mesh) writes the tubes of the chains in order, then the polygons,
+//! the leaves and petals, and the spheres, each into one contiguous run of vertices and of
+//! triangles (a [`Part`]). Meshing an element alone ([`chain_mesh`] …) writes exactly what
+//! `build_mesh` writes for it, from vertex 0: when its counts are those of its part, it can be
+//! copied over the part (indices shifted by the part's first vertex), and the provenance and
+//! colour ranges stay true as long as each triangle comes from the same segment as before
+//! ([`ChainPart::ranges`]).
+
+use super::{Builder, MeshBuffers, MeshOptions};
+use crate::turtle::Skeleton;
+
+/// Not in a chain (a segment of zero width), or not a segment (in element ranges).
+pub const NO_CHAIN: u32 = u32::MAX;
+
+/// A contiguous run of vertices and of triangles in a mesh.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Part {
+    pub first_vertex: u32,
+    pub vertices: u32,
+    pub first_triangle: u32,
+    pub triangles: u32,
+}
+
+/// The tube of one chain.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct ChainPart {
+    pub part: Part,
+    /// Its segments in order.
+    pub segments: Vec<u32>,
+    /// Whether its start is capped (it does not start at another segment's end).
+    pub start_cap: bool,
+    /// (first triangle counted from the part's first, segment) pairs: the segment that drew
+    /// each of its triangles (which gives their module and colour index).
+    pub ranges: Vec<u32>,
+}
+
+/// The layout of a mesh by skeleton element.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct MeshParts {
+    pub chains: Vec<ChainPart>,
+    /// For each segment, its chain (`NO_CHAIN` when it has no tube).
+    pub segment_chain: Vec<u32>,
+    /// One part per polygon, per surface and per sphere of the skeleton (empty parts for those
+    /// that drew nothing).
+    pub polygons: Vec<Part>,
+    pub surfaces: Vec<Part>,
+    pub spheres: Vec<Part>,
+    /// The mesh is the lines fallback: there are no parts.
+    pub lines: bool,
+}
+
+/// The end joint of every segment as an exact key, sorted: where a chain may start hidden.
+pub fn joint_keys(skeleton: &Skeleton) -> Vec<[u64; 3]> {
+    let mut joints: Vec<[u64; 3]> = skeleton
+        .segments
+        .iter()
+        .map(|s| super::key(s.end))
+        .collect();
+    joints.sort_unstable();
+    joints
+}
+
+/// Whether a chain's tube gets a start cap: not when it starts where a segment ends (a branch
+/// growing out of a joint starts inside its parent's tube).
+pub fn start_cap(joints: &[[u64; 3]], skeleton: &Skeleton, chain: &[u32]) -> bool {
+    let start = super::key(skeleton.segments[chain[0] as usize].start);
+    joints.binary_search(&start).is_err()
+}
+
+/// The chains (axes cut where widths are zero, joints sharp, smoothness changes or a wide ring
+/// would overrun a short segment), as
+/// [`super::build_mesh`] cuts them.
+pub fn chains(skeleton: &Skeleton, unit: f64) -> Vec<Vec<u32>> {
+    super::chains(skeleton, unit)
+}
+
+/// Whether segment `i` continues segment `p` in one tube (given that it continues it on the
+/// axis and is the first to).
+pub fn joins(skeleton: &Skeleton, p: u32, i: u32, unit: f64) -> bool {
+    super::joins(skeleton, p as usize, i as usize, unit)
+}
+
+/// The tube of one chain alone, as `build_mesh` writes it, and its element ranges.
+pub fn chain_mesh(
+    skeleton: &Skeleton,
+    options: &MeshOptions,
+    unit: f64,
+    chain: &[u32],
+    start_cap: bool,
+) -> (MeshBuffers, Vec<u32>) {
+    let mut builder = Builder::new(options, unit);
+    builder.tube(skeleton, chain, start_cap);
+    let ranges = builder.element_ranges_since(&[0, 0, 0]);
+    (builder.mesh, ranges)
+}
+
+/// One polygon alone.
+pub fn polygon_mesh(
+    skeleton: &Skeleton,
+    options: &MeshOptions,
+    unit: f64,
+    i: usize,
+) -> MeshBuffers {
+    let mut builder = Builder::new(options, unit);
+    builder.polygon(skeleton, i);
+    builder.mesh
+}
+
+/// One leaf or petal alone.
+pub fn surface_mesh(
+    skeleton: &Skeleton,
+    options: &MeshOptions,
+    unit: f64,
+    i: usize,
+) -> MeshBuffers {
+    let mut builder = Builder::new(options, unit);
+    builder.surface(skeleton, i);
+    builder.mesh
+}
+
+/// One sphere alone.
+pub fn sphere_mesh(skeleton: &Skeleton, options: &MeshOptions, unit: f64, i: usize) -> MeshBuffers {
+    let mut builder = Builder::new(options, unit);
+    builder.sphere_of(skeleton, i);
+    builder.mesh
+}
+
+/// Copies `alone` (one element meshed alone) over `part` of `mesh`: positions and normals, and
+/// the indices when `indices` (their pattern may differ, e.g. a polygon triangulated anew).
+/// Returns false, changing nothing, when the counts differ.
+pub fn write_part(mesh: &mut MeshBuffers, part: &Part, alone: &MeshBuffers, indices: bool) -> bool {
+    if alone.vertex_count() != part.vertices as usize
+        || alone.triangle_count() != part.triangles as usize
+    {
+        return false;
+    }
+    let v = 3 * part.first_vertex as usize;
+    let n = alone.positions.len();
+    mesh.positions[v..v + n].copy_from_slice(&alone.positions);
+    mesh.normals[v..v + n].copy_from_slice(&alone.normals);
+    if indices {
+        let t = 3 * part.first_triangle as usize;
+        for (to, from) in mesh.indices[t..t + alone.indices.len()]
+            .iter_mut()
+            .zip(&alone.indices)
+        {
+            *to = from + part.first_vertex;
+        }
+    }
+    true
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::pipeline::{build, BuildOptions};
+
+    #[test]
+    fn parts_cover_the_mesh_and_each_element_meshes_alone_to_its_part() {
+        let source = "#angle 30\naxiom: X\nX -> F[+X~l][-X{.f.f.}]F@O(0.1)X\nF -> FF";
+        let result = build(
+            source,
+            &BuildOptions {
+                iterations: Some(3),
+                ..BuildOptions::default()
+            },
+        );
+        let options = MeshOptions::default();
+        let (mesh, parts) = super::super::build_mesh_with_parts(&result.skeleton, &options);
+        assert_eq!(mesh, result.mesh);
+        let unit = mesh.width_unit;
+        let all: Vec<Part> = parts
+            .chains
+            .iter()
+            .map(|c| c.part)
+            .chain(parts.polygons.iter().copied())
+            .chain(parts.surfaces.iter().copied())
+            .chain(parts.spheres.iter().copied())
+            .collect();
+        let (mut v, mut t) = (0, 0);
+        for p in &all {
+            assert_eq!((p.first_vertex, p.first_triangle), (v, t));
+            v += p.vertices;
+            t += p.triangles;
+        }
+        assert_eq!(
+            (v as usize, t as usize),
+            (mesh.vertex_count(), mesh.triangle_count())
+        );
+        assert!(
+            !parts.surfaces.is_empty() && !parts.polygons.is_empty() && !parts.spheres.is_empty()
+        );
+
+        // Rewriting every part from its element meshed alone gives the same mesh.
+        let mut copy = mesh.clone();
+        copy.positions.iter_mut().for_each(|x| *x = 0.0);
+        for c in &parts.chains {
+            let (alone, ranges) =
+                chain_mesh(&result.skeleton, &options, unit, &c.segments, c.start_cap);
+            assert_eq!(ranges, c.ranges);
+            assert!(write_part(&mut copy, &c.part, &alone, true));
+        }
+        for (i, p) in parts.polygons.iter().enumerate() {
+            assert!(write_part(
+                &mut copy,
+                p,
+                &polygon_mesh(&result.skeleton, &options, unit, i),
+                true
+            ));
+        }
+        for (i, p) in parts.surfaces.iter().enumerate() {
+            assert!(write_part(
+                &mut copy,
+                p,
+                &surface_mesh(&result.skeleton, &options, unit, i),
+                true
+            ));
+        }
+        for (i, p) in parts.spheres.iter().enumerate() {
+            assert!(write_part(
+                &mut copy,
+                p,
+                &sphere_mesh(&result.skeleton, &options, unit, i),
+                true
+            ));
+        }
+        assert_eq!(copy, mesh);
+        // A part of another size is refused.
+        let (alone, _) = chain_mesh(
+            &result.skeleton,
+            &options,
+            unit,
+            &parts.chains[0].segments,
+            true,
+        );
+        let small = Part {
+            vertices: 3,
+            ..parts.chains[0].part
+        };
+        assert!(!write_part(&mut copy, &small, &alone, false));
+    }
+}

@@ -1,0 +1,273 @@
+//! Editing branches by their Bézier handles (issue 8), from the outside: the tree the size of
+//! seed 001's, every gallery example, edits travelling in every export and on the command line.
+
+use glam::DVec3;
+use meristem::branches::{parse_edits, write_edits, BranchEdit};
+use meristem::export::{self, Format};
+use meristem::mesh::MeshBuffers;
+use meristem::pipeline::{build, Build, BuildOptions};
+use std::path::PathBuf;
+use std::process::Command;
+
+fn example_path(name: &str) -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../public/examples")
+        .join(name)
+}
+
+fn example(name: &str) -> String {
+    std::fs::read_to_string(example_path(name)).expect("example exists")
+}
+
+/// The size of the plant (its bounding box's diagonal), at least 1.
+fn size(mesh: &MeshBuffers) -> f32 {
+    let [min, max] = mesh.bounds();
+    let d = (0..3)
+        .map(|k| (max[k] - min[k]).powi(2))
+        .sum::<f64>()
+        .sqrt();
+    d.max(1.0) as f32
+}
+
+/// The build's mesh against a full re-mesh of its (edited) skeleton: positions and normals within
+/// `tolerance` times the plant's size, everything else exactly.
+fn assert_equals_full_remesh(b: &Build, tolerance: f32, what: &str) {
+    let mut full = b.clone();
+    full.remesh(&b.mesh_options.clone());
+    let (m, f) = (&b.mesh, &full.mesh);
+    assert_eq!(m.indices, f.indices, "{what}: indices");
+    assert_eq!(m.ranges, f.ranges, "{what}: provenance");
+    assert_eq!(m.color_ranges, f.color_ranges, "{what}: colour ranges");
+    assert_eq!(m.colors, f.colors, "{what}: colours");
+    let eps = tolerance * size(f);
+    let worst = |a: &[f32], b: &[f32]| {
+        a.iter()
+            .zip(b)
+            .map(|(x, y)| (x - y).abs())
+            .fold(0.0f32, f32::max)
+    };
+    assert_eq!(m.positions.len(), f.positions.len(), "{what}");
+    let (p, n) = (
+        worst(&m.positions, &f.positions),
+        worst(&m.normals, &f.normals),
+    );
+    assert!(
+        p <= eps && n <= tolerance,
+        "{what}: positions off by {p}, normals by {n}"
+    );
+    assert_eq!(m.check(), Ok(()), "{what}");
+}
+
+#[test]
+fn the_game_tree_has_a_branch_per_drawn_apex_and_a_drag_rebuilds_a_third_of_it() {
+    let mut b = build(&example("game-tree.lsys"), &BuildOptions::default());
+    let info = b.branches();
+    // Every A that drew (1 + 3 + 9 + 27 + 81 + 243) is one branch of 9 segments.
+    assert_eq!(info.len(), 364);
+    assert!(info.iter().all(|i| i.segments.len() == 9));
+    assert_eq!(info[0].path, vec![0]);
+    assert_eq!(info[0].children.len(), 3);
+    let bough = b.branch_tree().find(&[0, 0]).unwrap();
+    let below = b.branch_tree().subtree(bough).len();
+    assert_eq!(below, 1 + 3 + 9 + 27 + 81);
+    let p3 = info[bough as usize].control[3];
+    let vertices = b.mesh.vertex_count();
+    for frame in 0..4 {
+        let change = b
+            .drag(bough, 3, p3 + DVec3::new(0.05 * frame as f64, -0.1, 0.08))
+            .unwrap();
+        assert!(!change.full, "{change:?}");
+        // About a third of the tree is re-meshed, never all of it.
+        assert!(change.vertices() > vertices / 5 && change.vertices() < vertices / 2);
+        assert_equals_full_remesh(&b, 1e-6, "game tree");
+    }
+}
+
+/// The path of a branch with descendants in the middle of the tree, if any.
+fn middle_branch(b: &mut Build) -> Option<u32> {
+    let info = b.branches();
+    let deepest = info.iter().map(|i| i.path.len()).max()?;
+    let with_children: Vec<usize> = (0..info.len())
+        .filter(|&k| !info[k].children.is_empty())
+        .collect();
+    with_children
+        .iter()
+        .copied()
+        .find(|&k| info[k].path.len() == deepest.div_ceil(2).max(2))
+        .or_else(|| with_children.first().copied())
+        .or(Some(0))
+        .map(|k| k as u32)
+}
+
+#[test]
+fn every_gallery_example_has_a_tree_of_its_segments_and_drags_like_a_full_remesh() {
+    let dir = example_path("");
+    let mut names: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .filter_map(|e| e.ok()?.file_name().into_string().ok())
+        .filter(|n| n.ends_with(".lsys"))
+        .collect();
+    names.sort();
+    let mut dragged = 0;
+    for name in &names {
+        let mut b = build(&example(name), &BuildOptions::default());
+        if b.skeleton.segments.len() > 30_000 || !b.mesh.lines.is_empty() {
+            continue; // big plants: the test would take minutes in a debug build
+        }
+        let tree = b.branch_tree().clone();
+        // Every segment is in exactly one branch; children attach at their parent's end.
+        let mut seen = vec![0; b.skeleton.segments.len()];
+        for branch in &tree.branches {
+            for &s in &branch.segments {
+                seen[s as usize] += 1;
+            }
+            if let Some(parent) = branch.parent {
+                let last = *tree.branches[parent as usize].segments.last().unwrap();
+                assert_eq!(
+                    b.skeleton.segments[branch.segments[0] as usize].anchor,
+                    Some(last),
+                    "{name}"
+                );
+            }
+        }
+        assert!(seen.iter().all(|&n| n == 1), "{name}");
+        let Some(branch) = middle_branch(&mut b) else {
+            continue;
+        };
+        let p3 = b.branches()[branch as usize].control[3];
+        let length = tree.branches[branch as usize].length;
+        let change = b
+            .drag(branch, 3, p3 + DVec3::new(0.03, 0.02, 0.05) * length)
+            .unwrap();
+        assert_equals_full_remesh(&b, 1e-5, name);
+        dragged += !change.full as u32;
+    }
+    assert!(dragged > 20, "only {dragged} examples took a partial drag");
+}
+
+/// Every file of every format: (name, bytes).
+fn exports(b: &Build) -> Vec<(String, Vec<u8>)> {
+    Format::ALL
+        .into_iter()
+        .flat_map(|f| export::export(f, &b.mesh, &b.skeleton, "plant"))
+        .map(|f| (f.name, f.bytes))
+        .collect()
+}
+
+const LEAFY: &str = "#angle 22.5\n#width 3\naxiom: A\n\
+    A -> !(2)F[&(30)FL@O(0.05)A]/(137)[&(30)F{.+f.-f.-f.}A]F/(90)A\nL -> ~l(0.4)";
+
+#[test]
+fn edits_travel_in_every_export() {
+    let options = BuildOptions {
+        iterations: Some(3),
+        ..BuildOptions::default()
+    };
+    let unedited = build(LEAFY, &options);
+    let edits = vec![BranchEdit {
+        path: vec![0, 1],
+        handles: [
+            DVec3::ZERO,
+            DVec3::new(0.0, 0.3, 0.1),
+            DVec3::new(0.1, 0.5, -0.2),
+        ],
+    }];
+    let mut edited = build(LEAFY, &options);
+    assert_eq!(edited.apply_edits(&edits).applied, vec![vec![0, 1]]);
+    let (before, after) = (exports(&unedited), exports(&edited));
+    assert_eq!(before.len(), 7);
+    for ((name, a), (_, b)) in before.iter().zip(&after) {
+        // The material library of the OBJ holds colours only.
+        if name != "plant.mtl" {
+            assert_ne!(a, b, "{name} shows the edit");
+        }
+    }
+    // The files are those of a full mesh of the edited skeleton, byte for byte.
+    let mut full = edited.clone();
+    full.remesh(&edited.mesh_options.clone());
+    assert_eq!(exports(&full), after);
+    // After drags (partial re-meshes), applying the edits in force writes the same files as a
+    // fresh build with them: what the studio's download and the command line do.
+    let bough = edited.branch_tree().find(&[0, 0]).unwrap();
+    let at = edited.branches()[bough as usize].control[2];
+    for k in 1..4 {
+        edited
+            .drag(bough, 2, at + DVec3::new(0.0, 0.0, 0.02 * k as f64))
+            .unwrap();
+    }
+    let now = edited.edits();
+    assert_eq!(now.len(), 2);
+    let document = write_edits(&now);
+    let mut fresh = build(LEAFY, &options);
+    fresh.apply_edits(&parse_edits(&document).unwrap());
+    edited.apply_edits(&now);
+    assert_eq!(exports(&fresh), exports(&edited));
+}
+
+fn meristem(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_meristem"))
+        .args(args)
+        .output()
+        .expect("run meristem");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn the_command_line_applies_an_edits_file() {
+    let dir = std::env::temp_dir().join(format!("meristem-branches-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let grammar = dir.join("leafy.lsys");
+    std::fs::write(&grammar, LEAFY).unwrap();
+    let grammar = grammar.to_str().unwrap();
+    let edits = vec![
+        BranchEdit {
+            path: vec![0, 0],
+            handles: [DVec3::ZERO, DVec3::ZERO, DVec3::new(0.0, 0.4, 0.0)],
+        },
+        BranchEdit {
+            path: vec![0, 9],
+            handles: [DVec3::ZERO; 3],
+        },
+    ];
+    let file = dir.join("edits.json");
+    std::fs::write(&file, write_edits(&edits)).unwrap();
+    let file = file.to_str().unwrap();
+    let out = dir.join("plant.glb");
+    let out = out.to_str().unwrap();
+    let (code, _, err) = meristem(&["export", grammar, "-o", out, "-n", "3", "--edits", file]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(
+        err,
+        format!(
+            "{file}: warning: the edit of branch [0, 9] does not apply: no branch at this path: branch [0] has 3 child branches\n"
+        )
+    );
+    let mut b = build(
+        LEAFY,
+        &BuildOptions {
+            iterations: Some(3),
+            ..BuildOptions::default()
+        },
+    );
+    let unedited = export::export(Format::Glb, &b.mesh, &b.skeleton, "plant");
+    b.apply_edits(&edits);
+    let expected = export::export(Format::Glb, &b.mesh, &b.skeleton, "plant");
+    let written = std::fs::read(out).unwrap();
+    assert_eq!(written, expected[0].bytes);
+    assert_ne!(written, unedited[0].bytes);
+    // Stats see the edited plant; a malformed document fails before building.
+    let (code, stats, _) = meristem(&["derive", grammar, "-n", "3", "--stats", "--edits", file]);
+    assert_eq!(code, 0);
+    assert_eq!(stats.trim(), b.stats.to_json());
+    let bad = dir.join("bad.json");
+    std::fs::write(&bad, "{\"version\": 7, \"edits\": []}").unwrap();
+    let bad = bad.to_str().unwrap();
+    let (code, _, err) = meristem(&["derive", grammar, "--stats", "--edits", bad]);
+    assert_eq!(code, 2);
+    assert!(err.contains("newer Meristem"), "{err}");
+    std::fs::remove_dir_all(dir).ok();
+}

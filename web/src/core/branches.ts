@@ -1,0 +1,294 @@
+// Editing a plant's branches by their Bézier handles (issue 8): the facade over the core's branch
+// editor (crate/src/branches). A branch is a run of segments along one axis between branching
+// points; its path is its root's index, then child indices (docs/LANGUAGE.md, "Branches").
+import { type Build } from '../../../crate/pkg/meristem.js';
+import { copyMesh, plainBuild, runBuild } from './build';
+import { ownedArray } from './init';
+import type { BuildOptions, MeshBuffers, PlantBuild, PlantStats } from './types';
+
+/** A point or an offset: x, y, z. */
+export type Vec3 = [number, number, number];
+
+/** The draggable handles of a branch's curve: P1, P2 and the end P3 (P0 is where it attaches). */
+export type Handle = 1 | 2 | 3;
+
+/** The version of the edits document this core reads and writes. */
+export const EDITS_VERSION = 1;
+
+/**
+ * An override of one branch's handles: the offsets of P1, P2, P3 from their fitted places, each as
+ * (heading, left, up) components in the branch's start frame, in units of the branch's length.
+ */
+export interface BranchEdit {
+  path: number[];
+  handles: [Vec3, Vec3, Vec3];
+}
+
+/**
+ * The edits document (docs/LANGUAGE.md, "Branch edits"): what share links, the undo history and
+ * `meristem export --edits` carry.
+ */
+export interface EditsDocument {
+  version: typeof EDITS_VERSION;
+  edits: BranchEdit[];
+}
+
+/** One branch of the plant. `index` is what the editor's other methods take. */
+export interface BranchInfo {
+  index: number;
+  path: number[];
+  /** Its parent's index; null for a root. */
+  parent: number | null;
+  /** Its children's indices, in the order they appear in the string. */
+  children: number[];
+}
+
+/** What applying edits did: every edit is applied or listed with the reason it is not. */
+export interface EditReport {
+  applied: number[][];
+  notApplied: { path: number[]; reason: string }[];
+}
+
+/**
+ * What a change did to the mesh. When `full`, the mesh was rebuilt whole (its sizes may differ):
+ * `mesh` holds every array. Otherwise only the vertices in `ranges` changed, and `positions` /
+ * `normals` hold their new values, range after range (apply them with {@link applyMeshUpdate}).
+ */
+export interface MeshUpdate {
+  full: boolean;
+  /** Why the mesh was rebuilt whole (null when it was not). */
+  reason: string | null;
+  /** (first vertex, count) pairs, sorted and disjoint. */
+  ranges: Uint32Array;
+  positions: Float32Array;
+  normals: Float32Array;
+  /** The whole new mesh, when `full`. */
+  mesh: MeshBuffers | null;
+  /** The plant's stats after the change (its bounds move with its branches). */
+  stats: PlantStats;
+}
+
+/** A plant whose branches can be edited; it keeps the core's build alive until `free`. */
+export interface PlantEditor {
+  /** The branches, parents before children (the tree never changes for one build). */
+  branches(): BranchInfo[];
+  /** The index of the branch at `path`, or null when there is none. */
+  findBranch(path: readonly number[]): number | null;
+  /** Every branch's control points P0, P1, P2, P3 where they are now: 12 floats per branch. */
+  controlPoints(): Float32Array;
+  /** The joints of one branch where they are now (3 floats each). */
+  joints(branch: number): Float32Array;
+  /** The parameter of each joint of one branch on its curve (0 to 1, by length). */
+  parameters(branch: number): Float32Array;
+  /** The branch that drew triangle `triangle` of the current mesh, or null. */
+  branchAt(triangle: number): number | null;
+  /**
+   * Moves handle `handle` of `branch` to `position` (world coordinates): the branch's edit
+   * changes, it and its descendants move, and only what moved is re-meshed. Throws on a bad
+   * branch, handle or position (a caller's bug, not a user's).
+   */
+  drag(branch: number, handle: Handle, position: Vec3): MeshUpdate;
+  /** Replaces every edit by `document`'s (rebuilding the whole mesh); throws when malformed. */
+  applyEdits(document: EditsDocument): { report: EditReport; update: MeshUpdate };
+  /** The edits in force (applied ones only). */
+  edits(): EditsDocument;
+  /** A copy of the whole current mesh. */
+  mesh(): MeshBuffers;
+  /** Releases the core's memory; the editor must not be used afterwards. */
+  free(): void;
+}
+
+/**
+ * Builds `source` like `buildPlant` and keeps the build alive behind a {@link PlantEditor}.
+ * Starting to edit meshes the plant once more (to record where each part lies), so the first
+ * editor call costs about one mesh stage. Requires `initCore`.
+ */
+export function editPlant(source: string, options: BuildOptions = {}): { build: PlantBuild; editor: PlantEditor } {
+  const result = runBuild(source, options);
+  let plain: PlantBuild;
+  try {
+    plain = plainBuild(source, result);
+  } catch (error) {
+    result.free();
+    throw error;
+  }
+  return { build: plain, editor: new LiveEditor(result) };
+}
+
+/** The empty edits document. */
+export function noEdits(): EditsDocument {
+  return { version: EDITS_VERSION, edits: [] };
+}
+
+/**
+ * Writes a partial update into `mesh` (the page's own copy) and returns it; after a full update,
+ * returns the update's new mesh instead.
+ */
+export function applyMeshUpdate(mesh: MeshBuffers, update: MeshUpdate): MeshBuffers {
+  if (update.full && update.mesh) return update.mesh;
+  let at = 0;
+  for (let k = 0; k < update.ranges.length; k += 2) {
+    const from = 3 * update.ranges[k];
+    const n = 3 * update.ranges[k + 1];
+    mesh.positions.set(update.positions.subarray(at, at + n), from);
+    mesh.normals.set(update.normals.subarray(at, at + n), from);
+    at += n;
+  }
+  return mesh;
+}
+
+/** Limits of the edits document, as the core checks them (crate/src/branches/edits.rs). */
+const MAX_EDITS = 100_000;
+const MAX_PATH = 10_000;
+const MAX_OFFSET = 1_000;
+
+function isRecord(value: unknown): value is Record<string, unknown> {
+  return typeof value === 'object' && value !== null && !Array.isArray(value);
+}
+
+function hasOnly(value: Record<string, unknown>, keys: string[]): boolean {
+  return Object.keys(value).every((k) => keys.includes(k));
+}
+
+/**
+ * Checks an edits document that came from outside (a share link, a file) with the core's rules,
+ * without the core: version 1, at most 100,000 edits, each a path of 1 to 10,000 whole numbers
+ * and three handles of three finite numbers of at most 1,000 branch lengths, no other fields.
+ * Never throws; a failure says what is wrong.
+ */
+export function validateEdits(value: unknown): { ok: true; document: EditsDocument } | { ok: false; error: string } {
+  const fail = (error: string) => ({ ok: false as const, error });
+  if (!isRecord(value)) return fail('the edits are not a JSON object');
+  const { version, edits } = value;
+  if (typeof version === 'number' && Number.isInteger(version) && version > EDITS_VERSION)
+    return fail(`the edits were written by a newer Meristem (version ${version}); this one reads version ${EDITS_VERSION}`);
+  if (version !== EDITS_VERSION) return fail(`the edits have no "version": ${EDITS_VERSION}`);
+  if (!hasOnly(value, ['version', 'edits']) || !Array.isArray(edits)) return fail('the edits are malformed');
+  if (edits.length > MAX_EDITS) return fail(`more than ${MAX_EDITS} edits`);
+  const clean: BranchEdit[] = [];
+  for (const [k, edit] of edits.entries()) {
+    if (!isRecord(edit) || !hasOnly(edit, ['path', 'handles']) || !Array.isArray(edit.path) || !Array.isArray(edit.handles))
+      return fail('the edits are malformed');
+    const { path, handles } = edit;
+    if (!path.every((i) => typeof i === 'number' && Number.isInteger(i) && i >= 0 && i <= 0xffffffff)) return fail('the edits are malformed');
+    if (handles.length !== 3 || !handles.every((h) => Array.isArray(h) && h.length === 3 && h.every((v) => typeof v === 'number')))
+      return fail('the edits are malformed');
+    if (path.length === 0 || path.length > MAX_PATH) return fail(`edit ${k}: a path has 1 to ${MAX_PATH} indices, not ${path.length}`);
+    const triples = handles as number[][];
+    if (!triples.every((h) => h.every((v) => Number.isFinite(v) && Math.abs(v) <= MAX_OFFSET)))
+      return fail(`edit ${k}: handle offsets must be finite numbers of at most ${MAX_OFFSET} branch lengths`);
+    clean.push({ path: [...(path as number[])], handles: triples.map((h) => [h[0], h[1], h[2]]) as [Vec3, Vec3, Vec3] });
+  }
+  return { ok: true, document: { version: EDITS_VERSION, edits: clean } };
+}
+
+/** A {@link PlantEditor} over a wasm `Build` on this thread. */
+class LiveEditor implements PlantEditor {
+  private tree: BranchInfo[] | undefined;
+  private byPath: Map<string, number> | undefined;
+  private triangleRanges: Uint32Array | undefined;
+  private triangles = 0;
+
+  constructor(private result: Build) {}
+
+  branches(): BranchInfo[] {
+    if (!this.tree) {
+      const paths = JSON.parse(this.result.branchPaths()) as number[][];
+      const parents = this.result.branchParents();
+      const tree: BranchInfo[] = paths.map((path, index) => ({
+        index,
+        path,
+        parent: parents[index] === 0xffffffff ? null : parents[index],
+        children: [],
+      }));
+      for (const b of tree) if (b.parent !== null) tree[b.parent].children.push(b.index);
+      this.tree = tree;
+      this.byPath = new Map(tree.map((b) => [b.path.join(','), b.index]));
+    }
+    return this.tree;
+  }
+
+  findBranch(path: readonly number[]): number | null {
+    this.branches();
+    return this.byPath?.get(path.join(',')) ?? null;
+  }
+
+  controlPoints(): Float32Array {
+    return ownedArray(this.result.branchControlPoints());
+  }
+
+  joints(branch: number): Float32Array {
+    return ownedArray(this.result.branchJoints(branch));
+  }
+
+  parameters(branch: number): Float32Array {
+    return ownedArray(this.result.branchParameters(branch));
+  }
+
+  branchAt(triangle: number): number | null {
+    if (!this.triangleRanges) {
+      this.triangleRanges = ownedArray(this.result.branchRanges());
+      this.triangles = (JSON.parse(this.result.stats()) as PlantStats).triangles;
+    }
+    const r = this.triangleRanges;
+    // The last range whose first triangle is at or before `triangle`.
+    let lo = 0;
+    let hi = r.length / 2 - 1;
+    if (hi < 0 || !Number.isInteger(triangle) || triangle < r[0] || triangle >= this.triangles) return null;
+    while (lo < hi) {
+      const mid = (lo + hi + 1) >> 1;
+      if (r[2 * mid] <= triangle) lo = mid;
+      else hi = mid - 1;
+    }
+    const branch = r[2 * lo + 1];
+    return branch === 0xffffffff ? null : branch;
+  }
+
+  drag(branch: number, handle: Handle, position: Vec3): MeshUpdate {
+    const full = this.result.drag(branch, handle, position[0], position[1], position[2]);
+    return this.update(full);
+  }
+
+  applyEdits(document: EditsDocument): { report: EditReport; update: MeshUpdate } {
+    const report = JSON.parse(this.result.applyEdits(JSON.stringify(document))) as EditReport;
+    return { report, update: this.update(true) };
+  }
+
+  edits(): EditsDocument {
+    return JSON.parse(this.result.edits()) as EditsDocument;
+  }
+
+  mesh(): MeshBuffers {
+    return copyMesh(this.result);
+  }
+
+  free(): void {
+    this.result.free();
+  }
+
+  private update(full: boolean): MeshUpdate {
+    const stats = JSON.parse(this.result.stats()) as PlantStats;
+    if (full) {
+      this.triangleRanges = undefined;
+      const mesh = copyMesh(this.result);
+      return {
+        full,
+        reason: this.result.changeReason() ?? null,
+        ranges: Uint32Array.of(0, mesh.positions.length / 3),
+        positions: mesh.positions,
+        normals: mesh.normals,
+        mesh,
+        stats,
+      };
+    }
+    return {
+      full,
+      reason: null,
+      ranges: ownedArray(this.result.changedRanges()),
+      positions: ownedArray(this.result.changedPositions()),
+      normals: ownedArray(this.result.changedNormals()),
+      mesh: null,
+      stats,
+    };
+  }
+}
