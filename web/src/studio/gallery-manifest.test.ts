@@ -41,7 +41,7 @@ describe('galleryManifest', () => {
       expect(entry.title, entry.file).not.toBe(entry.file.replace(/\.lsys$/, ''));
       expect(entry.source, entry.file).not.toBe('');
       expect(entry.description.length, entry.file).toBeGreaterThan(20);
-      expect(entry.description, `${entry.file}: a source spilling into the description`).toMatch(/^[A-Z]/);
+      expect(entry.description, `${entry.file}: a source spilling into the description`).toMatch(/^["“A-Z]/);
     }
   });
 });
