@@ -95,16 +95,90 @@ pub fn export_model(
     sides: Option<u32>,
     smooth_all: Option<bool>,
 ) -> Result<ExportedModel, JsError> {
+    let options = build_options(iterations, seed, sides, smooth_all);
+    export_reporting(source, None, format, name, &options, &mut |_| {})
+}
+
+/// The stages an export reports, in order, to [`export_model_reporting`]'s `progress`.
+pub const EXPORT_STAGES: [&str; 6] = [
+    "parsing",
+    "deriving",
+    "interpreting",
+    "meshing",
+    "applying edits",
+    "writing",
+];
+
+/// [`export_model`] and [`export_model_with_edits`] in one, telling `progress` each stage as it
+/// starts: `progress(stage, index, count)` with a stage of [`EXPORT_STAGES`] (`applying edits` only
+/// when `edits` is not empty). For the studio's export worker, whose page shows the stage while the
+/// core works. `edits`: an edits document, or empty for none. The bytes are those of the other two.
+#[allow(clippy::too_many_arguments)]
+#[wasm_bindgen(js_name = exportModelReporting)]
+pub fn export_model_reporting(
+    source: &str,
+    edits: &str,
+    format: &str,
+    name: &str,
+    iterations: Option<u32>,
+    seed: Option<f64>,
+    sides: Option<u32>,
+    smooth_all: Option<bool>,
+    progress: &js_sys::Function,
+) -> Result<ExportedModel, JsError> {
+    let options = build_options(iterations, seed, sides, smooth_all);
+    let edits = (!edits.is_empty()).then_some(edits);
+    export_reporting(source, edits, format, name, &options, &mut |stage| {
+        let index = EXPORT_STAGES.iter().position(|s| *s == stage).unwrap_or(0);
+        // A progress callback that throws changes nothing: the export goes on.
+        let _ = progress.call3(
+            &JsValue::NULL,
+            &JsValue::from_str(stage),
+            &JsValue::from_f64(index as f64),
+            &JsValue::from_f64(EXPORT_STAGES.len() as f64),
+        );
+    })
+}
+
+/// Builds, applies `edits` and writes, calling `report` with each stage of [`EXPORT_STAGES`] as it
+/// starts. The pipeline reads its clock once before the first stage and after each one; this clock
+/// is a counter that reports the stage about to start.
+fn export_reporting(
+    source: &str,
+    edits: Option<&str>,
+    format: &str,
+    name: &str,
+    options: &BuildOptions,
+    report: &mut dyn FnMut(&str),
+) -> Result<ExportedModel, JsError> {
     let format = Format::from_extension(format).ok_or_else(|| {
         JsError::new(&format!(
             "unknown format '{format}'; the formats are {}",
             Format::names()
         ))
     })?;
-    let result = pipeline::build(source, &build_options(iterations, seed, sides, smooth_all));
+    let edits = edits
+        .map(crate::branches::parse_edits)
+        .transpose()
+        .map_err(|e| JsError::new(&e))?;
+    let mut reads = 0usize;
+    let mut clock = || {
+        // Reads 0 to 3 start parse+resolve, derive, interpret and mesh; read 4 ends the mesh.
+        if let Some(stage) = EXPORT_STAGES[..4].get(reads) {
+            report(stage);
+        }
+        reads += 1;
+        reads as f64
+    };
+    let mut result = pipeline::build_with_clock(source, options, &mut clock);
     if !result.ok() {
         return Err(JsError::new("the grammar has errors: nothing to export"));
     }
+    if let Some(edits) = &edits {
+        report(EXPORT_STAGES[4]);
+        result.apply_edits(edits);
+    }
+    report(EXPORT_STAGES[5]);
     let file = export::download(format, &result.mesh, &result.skeleton, name)
         .ok_or_else(|| JsError::new("the export is larger than 4 GiB"))?;
     Ok(ExportedModel { file })
@@ -670,19 +744,6 @@ pub fn export_model_with_edits(
     sides: Option<u32>,
     smooth_all: Option<bool>,
 ) -> Result<ExportedModel, JsError> {
-    let format = Format::from_extension(format).ok_or_else(|| {
-        JsError::new(&format!(
-            "unknown format '{format}'; the formats are {}",
-            Format::names()
-        ))
-    })?;
-    let edits = crate::branches::parse_edits(edits).map_err(|e| JsError::new(&e))?;
-    let mut result = pipeline::build(source, &build_options(iterations, seed, sides, smooth_all));
-    if !result.ok() {
-        return Err(JsError::new("the grammar has errors: nothing to export"));
-    }
-    result.apply_edits(&edits);
-    let file = export::download(format, &result.mesh, &result.skeleton, name)
-        .ok_or_else(|| JsError::new("the export is larger than 4 GiB"))?;
-    Ok(ExportedModel { file })
+    let options = build_options(iterations, seed, sides, smooth_all);
+    export_reporting(source, Some(edits), format, name, &options, &mut |_| {})
 }

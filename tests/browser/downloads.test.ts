@@ -160,4 +160,57 @@ describe('the Download menu', () => {
     expect(await isOpen()).toBe(false);
     expect(problems).toEqual([]);
   });
+
+  it('writes a big model in an export worker, showing each stage, and Cancel stops one', async () => {
+    // ABOP 1.24d at 10 iterations: 116,050 segments, about 950,000 vertices.
+    const source = readFileSync(join(galleryDir, 'abop-1.24d.lsys'), 'utf8');
+    let before = await generation();
+    await page.getByTestId('editor').locator('.cm-content').click();
+    await page.keyboard.press('Control+A');
+    await page.keyboard.insertText(source);
+    await page.getByTestId('iterations').fill('10');
+    await page.getByTestId('smooth-all').uncheck();
+    expect(await nextBuild(before)).toBe('ok');
+    before = await generation();
+    const exportWorkers: string[] = [];
+    page.on('worker', (worker) => {
+      if (worker.url().includes('export-worker')) exportWorkers.push(worker.url());
+    });
+    // Every text the status line shows, as the page sets it.
+    await page.evaluate(() => {
+      const status = document.querySelector('[data-testid=export-status]')!;
+      const seen: string[] = [];
+      (window as unknown as { __exportTexts: string[] }).__exportTexts = seen;
+      new MutationObserver(() => seen.push(status.textContent ?? '')).observe(status, { childList: true, characterData: true, subtree: true });
+    });
+    const download = await clickDownload('download-glb');
+    const bytes = await downloadedBytes(download);
+    const texts = await page.evaluate(() => (window as unknown as { __exportTexts: string[] }).__exportTexts);
+    for (const stage of ['parsing (1 of 6)', 'deriving (2 of 6)', 'interpreting (3 of 6)', 'meshing (4 of 6)', 'writing (6 of 6)']) {
+      expect(texts, `the status said "${stage}"`).toContain(`Exporting glTF 2.0 binary: ${stage}…`);
+    }
+    expect(texts.at(-1)).toMatch(/^Saved plant\.glb · \d+(\.\d)? MB$/);
+    expect(exportWorkers.length, 'the file was written by an export worker').toBe(1);
+    expect(bytes.subarray(0, 4).toString('latin1')).toBe('glTF');
+    expect(await page.getByTestId('export-progress').isHidden()).toBe(true);
+
+    // Cancel: the worker goes, no file comes, the menu works again.
+    let downloads = 0;
+    const count = () => downloads++;
+    page.on('download', count);
+    await openMenu();
+    await page.getByTestId('download-wrl').click();
+    await page.getByTestId('export-cancel').click();
+    await expect.poll(() => page.getByTestId('export-status').getAttribute('data-state')).toBe('cancelled');
+    expect(await page.getByTestId('export-status').textContent()).toBe('Export of VRML 2.0 cancelled');
+    await page.waitForTimeout(1500);
+    page.off('download', count);
+    expect(downloads, 'a cancelled export saves nothing').toBe(0);
+    expect(await page.getByTestId('export-cancel').isHidden()).toBe(true);
+    await openMenu();
+    expect(await page.getByTestId('download-wrl').isEnabled()).toBe(true);
+    await page.keyboard.press('Escape');
+    expect(problems).toEqual([]);
+  });
 });
+

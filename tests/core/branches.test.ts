@@ -11,6 +11,7 @@ import {
   applyMeshUpdate,
   editPlant,
   exportModel,
+  exportModelWithProgress,
   initCore,
   noEdits,
   validateEdits,
@@ -261,5 +262,37 @@ describe('a download with edits', () => {
     } finally {
       editor.free();
     }
+  });
+});
+
+describe('exportModelWithProgress (the export worker\'s call)', () => {
+  it('tells each stage in order and writes the same bytes as exportModel, with and without edits', () => {
+    const stages: string[] = [];
+    const file = exportModelWithProgress(LEAFY, 'glb', { iterations: 3 }, (p) => {
+      expect(p.count).toBe(6);
+      stages.push(`${p.index}:${p.stage}`);
+    });
+    expect(stages).toEqual(['0:parsing', '1:deriving', '2:interpreting', '3:meshing', '5:writing']);
+    expect(file.bytes).toEqual(exportModel(LEAFY, 'glb', { iterations: 3 }).bytes);
+    const { editor } = editPlant(LEAFY, { iterations: 3 });
+    try {
+      const branch = editor.branches().find((b) => b.parent !== null)!;
+      const points = editor.controlPoints();
+      const end = points.slice(12 * branch.index + 9, 12 * branch.index + 12);
+      editor.drag(branch.index, 3, [end[0] + 0.5, end[1], end[2]]);
+      const edits = editor.edits();
+      stages.length = 0;
+      const edited = exportModelWithProgress(LEAFY, 'wrl', { iterations: 3, edits }, (p) => stages.push(p.stage));
+      expect(stages).toContain('applying edits');
+      expect(edited.bytes).toEqual(exportModel(LEAFY, 'wrl', { iterations: 3, edits }).bytes);
+    } finally {
+      editor.free();
+    }
+  });
+
+  it('refuses a grammar with errors after parsing, as exportModel does', () => {
+    const stages: string[] = [];
+    expect(() => exportModelWithProgress('axiom: F[', 'obj', {}, (p) => stages.push(p.stage))).toThrow(/errors/);
+    expect(stages[0]).toBe('parsing');
   });
 });

@@ -4,7 +4,6 @@
 import './style.css';
 import {
   coreVersion,
-  exportModel,
   grammarDirectives,
   initCore,
   MODEL_FORMATS,
@@ -27,10 +26,13 @@ import {
   askToReplace,
   attachSplitter,
   createBuildWorker,
+  createExportWorker,
+  describeProgress,
   fetchExample,
   fileSize,
   installShortcuts,
   pictureSize,
+  runExport,
   renderShortcutHelp,
   saveFile,
   showStatus,
@@ -106,6 +108,8 @@ function studioElements() {
     pngHeight: byId('png-height', HTMLInputElement),
     downloadPng: byId('download-png', HTMLButtonElement),
     exportStatus: byId('export-status', HTMLElement),
+    exportProgress: byId('export-progress', HTMLProgressElement),
+    exportCancel: byId('export-cancel', HTMLButtonElement),
   };
 }
 type StudioElements = ReturnType<typeof studioElements>;
@@ -298,41 +302,59 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   await firstBuild;
 }
 
-/** The Download menu: a button per model format and the PNG of the view, each run with the menu disabled. */
+/**
+ * The Download menu: a button per model format, written in an export worker with its progress and
+ * a Cancel button on the status line (the page stays responsive), and the PNG of the view. One
+ * download at a time: the menu is disabled meanwhile.
+ */
 function installDownloads(
   els: StudioElements,
   view: PlantView,
   shown: () => { source: string; options: BuildOptions } | undefined,
 ): void {
   const menuButtons = (): HTMLButtonElement[] => [...els.downloads.querySelectorAll('button')];
-  let crashed = false;
-  const download = async (what: string, save: () => Promise<string>): Promise<void> => {
-    if (crashed || menuButtons().some((b) => b.disabled)) return;
+  const busy = (on: boolean) => {
+    menuButtons().forEach((b) => (b.disabled = on));
+    els.exportProgress.hidden = !on;
+    els.exportCancel.hidden = !on;
+    if (on) els.exportProgress.removeAttribute('value'); // indeterminate until the first stage
+  };
+  let cancel: (() => void) | undefined;
+  els.exportCancel.addEventListener('click', () => cancel?.());
+  /** Runs one download; `save` returns the status text, or null when cancelled. */
+  const download = async (what: string, save: () => Promise<string | null>): Promise<void> => {
+    if (menuButtons().some((b) => b.disabled)) return;
     els.downloads.open = false;
-    menuButtons().forEach((b) => (b.disabled = true));
+    busy(true);
     showExportStatus(els.exportStatus, 'busy', `Exporting ${what}…`);
     try {
-      await afterPaint(); // the status shows while the core works (it blocks this thread)
-      showExportStatus(els.exportStatus, 'done', await save());
+      const done = await save();
+      showExportStatus(els.exportStatus, done === null ? 'cancelled' : 'done', done ?? `Export of ${what} cancelled`);
     } catch (error) {
       console.error(`Export of ${what} failed:`, error);
-      showExportStatus(els.exportStatus, 'error', `Export of ${what} failed: ${String(error)}`);
-      if (error instanceof WebAssembly.RuntimeError) {
-        // A panic in the page's core: its state is unknown (the builds, in the worker, go on).
-        crashed = true;
-        showStatus(els.status, { state: 'crashed', text: 'The core crashed while exporting — reload the page to export again' });
-      }
+      showExportStatus(els.exportStatus, 'error', `Export of ${what} failed: ${error instanceof Error ? error.message : String(error)}`);
     } finally {
-      menuButtons().forEach((b) => (b.disabled = false));
+      cancel = undefined;
+      busy(false);
     }
   };
   const downloadModel = (format: ModelFormat, label: string): Promise<void> =>
     download(label, async () => {
       const plant = shown();
       if (!plant) throw new Error('no plant yet');
-      const file = exportModel(plant.source, format, plant.options);
-      saveFile(file.bytes, file.fileName, file.mimeType);
-      return `Saved ${file.fileName} · ${fileSize(file.bytes.length)}`;
+      const running = runExport(createExportWorker, { source: plant.source, format, options: plant.options }, (progress) => {
+        els.exportProgress.max = progress.count;
+        els.exportProgress.value = progress.index + 1;
+        showExportStatus(els.exportStatus, 'busy', describeProgress(label, progress));
+      });
+      cancel = running.cancel;
+      const outcome = await running.done;
+      if (outcome.kind === 'cancelled') return null;
+      if (outcome.kind === 'failed') {
+        throw new Error(outcome.crashed ? `the core crashed (a bug): ${outcome.message}` : outcome.message);
+      }
+      saveFile(outcome.file.bytes, outcome.file.fileName, outcome.file.mimeType);
+      return `Saved ${outcome.file.fileName} · ${fileSize(outcome.file.bytes.length)}`;
     });
   for (const { format, label, file } of MODEL_FORMATS) {
     const button = document.createElement('button');
@@ -358,7 +380,9 @@ function installDownloads(
       showExportStatus(els.exportStatus, 'error', size.message);
       return;
     }
+    // The picture is drawn by the page's WebGL context: it cannot move to a worker (it is one draw).
     void download(`PNG ${size.width} × ${size.height}`, async () => {
+      await afterPaint(); // the status shows before the draw
       const png = await view.snapshot(size.width, size.height);
       saveFile(png, 'plant.png', 'image/png');
       return `Saved plant.png · ${size.width} × ${size.height} · ${fileSize(png.size)}`;
@@ -367,7 +391,7 @@ function installDownloads(
 }
 
 /** Shows the state of the last download next to the build status. */
-function showExportStatus(element: HTMLElement, state: 'busy' | 'done' | 'error', text: string): void {
+function showExportStatus(element: HTMLElement, state: 'busy' | 'done' | 'cancelled' | 'error', text: string): void {
   element.textContent = text;
   element.dataset.state = state;
 }

@@ -1,5 +1,5 @@
 // The facade over the core's file writers: one call, the file's bytes out, the wasm object freed.
-import { exportModel as coreExportModel, exportModelWithEdits } from '../../../crate/pkg/meristem.js';
+import { exportModel as coreExportModel, exportModelReporting, exportModelWithEdits } from '../../../crate/pkg/meristem.js';
 import type { EditsDocument } from './branches';
 import { assertReady } from './init';
 import type { BuildOptions } from './types';
@@ -53,6 +53,45 @@ export function exportModel(source: string, format: ModelFormat, options: Export
     options.smoothAll ?? undefined,
   ] as const;
   const result = options.edits ? exportModelWithEdits(source, JSON.stringify(options.edits), ...args) : coreExportModel(source, ...args);
+  try {
+    return { fileName: result.fileName, mimeType: result.mimeType, bytes: result.bytes() };
+  } finally {
+    result.free();
+  }
+}
+
+/** A stage of an export, as the core reports it (in this order; `applying edits` only with edits). */
+export type ExportStage = 'parsing' | 'deriving' | 'interpreting' | 'meshing' | 'applying edits' | 'writing';
+
+/** Where an export is: the stage that just started, its index and the number of stages. */
+export interface ExportProgress {
+  stage: ExportStage;
+  index: number;
+  count: number;
+}
+
+/**
+ * {@link exportModel}, telling `onProgress` each stage as it starts (the core calls it between its
+ * stages). The bytes are the same as {@link exportModel}'s. For the export worker.
+ */
+export function exportModelWithProgress(
+  source: string,
+  format: ModelFormat,
+  options: ExportOptions,
+  onProgress: (progress: ExportProgress) => void,
+): ModelFile {
+  assertReady();
+  const result = exportModelReporting(
+    source,
+    options.edits ? JSON.stringify(options.edits) : '',
+    format,
+    options.name ?? 'plant',
+    options.iterations ?? undefined,
+    options.seed ?? undefined,
+    options.sides ?? undefined,
+    options.smoothAll ?? undefined,
+    (stage: ExportStage, index: number, count: number) => onProgress({ stage, index, count }),
+  );
   try {
     return { fileName: result.fileName, mimeType: result.mimeType, bytes: result.bytes() };
   } finally {

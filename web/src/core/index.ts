@@ -2,7 +2,16 @@
 // Invariant: no other TypeScript imports crate/pkg; everything else uses these names.
 export { initCore, coreVersion } from './init';
 export { buildPlant, inspectPlant } from './build';
-export { exportModel, MODEL_FORMATS, type ExportOptions, type ModelFile, type ModelFormat } from './export';
+export {
+  exportModel,
+  exportModelWithProgress,
+  MODEL_FORMATS,
+  type ExportOptions,
+  type ExportProgress,
+  type ExportStage,
+  type ModelFile,
+  type ModelFormat,
+} from './export';
 export { grammarDirectives, turtleCommands, type GrammarDirective, type TurtleCommand } from './commands';
 export { byteOffsetToUtf16 } from './offsets';
 export { importGrammar, type Dialect, type ImportedGrammar, type ImportNote } from './import';

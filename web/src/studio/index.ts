@@ -15,3 +15,4 @@ export { galleryManifest, parseExampleHeader, isGalleryManifest, type GalleryEnt
 export { askToReplace } from './confirm';
 export { ContextView } from './context-view';
 export { afterPaint, fileSize, pictureSize, saveFile, PICTURE_MAX, PICTURE_MIN, type PictureSize } from './downloads';
+export { createExportWorker, describeProgress, runExport, type ExportOutcome, type ExportRequest, type ExportResponse, type RunningExport } from './export-client';
