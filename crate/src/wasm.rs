@@ -60,6 +60,36 @@ pub fn build(
     Build { inner, diagnostics }
 }
 
+/// [`build`] up to the turtle, with every segment as a line instead of tubes (the mesh stage's
+/// line fallback, which costs next to nothing): the live preview shows this sketch of a big plant
+/// at once, then calls `remesh` with the same `sides` and `smooth_all` for the tubes, which are
+/// then exactly [`build`]'s.
+#[wasm_bindgen(js_name = buildSketch)]
+pub fn build_sketch(
+    source: &str,
+    iterations: Option<u32>,
+    seed: Option<f64>,
+    now: Option<js_sys::Function>,
+) -> Build {
+    let mut options = build_options(iterations, seed, None, None);
+    options.mesh.max_vertices = 0;
+    let inner = match now {
+        Some(now) => {
+            let mut clock = || {
+                now.call0(&JsValue::NULL)
+                    .ok()
+                    .and_then(|t| t.as_f64())
+                    .unwrap_or(0.0)
+            };
+            pipeline::build_with_clock(source, &options, &mut clock)
+        }
+        None => pipeline::build(source, &options),
+    };
+    let diagnostics =
+        serde_json::to_string(&inner.located_diagnostics(source)).unwrap_or_else(|_| "[]".into());
+    Build { inner, diagnostics }
+}
+
 /// The options of a build from the boundary's arguments; a seed that is not a whole number from 0
 /// to 2^53 is ignored (the grammar's `#seed` is used); `sides` and `smooth_all` are the view
 /// options of the mesh ([`MeshOptions::view`]).

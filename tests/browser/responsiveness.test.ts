@@ -88,4 +88,35 @@ describe('typing while a 100,000-segment tree rebuilds', () => {
     expect(Math.max(0, ...longTasks), `long tasks (ms): ${longTasks.join(', ')}`).toBeLessThanOrEqual(LONG_TASK_LIMIT_MS);
     expect(problems).toEqual([]);
   }, 180_000);
+
+  it('draws a big plant as lines first, then its tubes', async () => {
+    // The tree is big already (the test above). One keystroke: its sketch, then its build.
+    await page.evaluate(() => {
+      const w = window as unknown as { __events: string[] };
+      w.__events = [];
+      const preview = window.__meristem!.preview!;
+      preview.onSketched((s) => w.__events.push(`sketch ${s.segments} ${s.lines.length}`));
+      preview.onDelivered((r) => w.__events.push(`build ${r.build.stats.segments} ${r.build.mesh.lines.length} ${r.build.mesh.indices.length > 0}`));
+    });
+    const before = await generation(page);
+    await page.locator('[data-testid=editor] .cm-line', { hasText: '#angle' }).click();
+    await page.keyboard.press('End');
+    await page.keyboard.press('Backspace');
+    await page.keyboard.press('5'); // #angle 25
+    expect(await nextBuild(page, before, 60_000)).toBe('ok');
+    await twoFrames(page);
+    const { events, sketched, rendered } = await page.evaluate(() => ({
+      events: (window as unknown as { __events: string[] }).__events,
+      sketched: window.__meristem!.sketched,
+      rendered: window.__meristem!.rendered!.at,
+    }));
+    const segments = (await page.evaluate(() => window.__meristem!.lastStats!.segments));
+    // Each shown sketch is followed by its build; the last events are the sketch and the build of #angle 25.
+    expect(events.at(-2)).toBe(`sketch ${segments} ${6 * segments}`);
+    expect(events.at(-1)).toBe(`build ${segments} 0 true`);
+    expect(sketched, 'a frame drew the sketch before the tubes').not.toBeNull();
+    expect(sketched!).toBeLessThan(rendered);
+    expect(problems).toEqual([]);
+  }, 120_000);
 });
+

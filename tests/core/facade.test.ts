@@ -116,6 +116,35 @@ describe('buildPlant on the gallery example', () => {
   );
 });
 
+describe('inspectPlant with a sketch (the live preview of big plants)', () => {
+  const TREE = '#angle 25.7\naxiom: F\nF -> F[+F]F[-F]F';
+  it('hands over the segments as lines first, then gives exactly the build of one call', () => {
+    const sketches: { lines: number; segments: number }[] = [];
+    const { build, inspector } = inspectPlant(TREE, { iterations: 4, sides: 5 }, {
+      minSegments: 100,
+      show: (s) => sketches.push({ lines: s.lines.length, segments: s.segments }),
+    });
+    inspector.free();
+    const plain = buildPlant(TREE, { iterations: 4, sides: 5 });
+    expect(sketches).toEqual([{ lines: 6 * plain.stats.segments, segments: plain.stats.segments }]);
+    expect(build.stats).toEqual(plain.stats);
+    expect(build.mesh.positions).toEqual(plain.mesh.positions);
+    expect(build.mesh.indices).toEqual(plain.mesh.indices);
+    expect(build.mesh.lines.length).toBe(0);
+    expect(build.timings.mesh).toBeGreaterThan(0);
+  });
+
+  it('gives no sketch for a small plant or a grammar with errors', () => {
+    const sketches: unknown[] = [];
+    const show = (s: unknown) => sketches.push(s);
+    inspectPlant(TREE, { iterations: 1 }, { minSegments: 100, show }).inspector.free();
+    const broken = inspectPlant('axiom: F[', {}, { minSegments: 0, show });
+    broken.inspector.free();
+    expect(broken.build.ok).toBe(false);
+    expect(sketches).toEqual([]);
+  });
+});
+
 describe('what buildPlant reports beyond the mesh', () => {
   it('times each stage with the page’s clock', () => {
     const plant = buildPlant(readFileSync(new URL(`../../${EXAMPLE}`, import.meta.url), 'utf8'));

@@ -53,6 +53,8 @@ interface StudioTestHook {
   preview?: LivePreview;
   /** The last frame drawn: the delivered-build counter at the time, and `performance.now()`. */
   rendered: { generation: number; at: number } | null;
+  /** `performance.now()` at the end of the first frame that drew the last sketch (a big plant as lines). */
+  sketched: number | null;
 }
 
 declare global {
@@ -235,7 +237,13 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     showProjection();
     playback.shownBuild();
   });
-  view.onRender(() => (hook.rendered = { generation: preview.generation, at: performance.now() }));
+  let sketchPending = false;
+  preview.onSketched(() => (sketchPending = true));
+  view.onRender(() => {
+    hook.rendered = { generation: preview.generation, at: performance.now() };
+    if (sketchPending) hook.sketched = hook.rendered.at;
+    sketchPending = false;
+  });
 
   // The gallery. The text the user started from (an example, unchanged) is `pristine`; anything
   // else is theirs, and opening an example asks first (and stays undoable in the editor).
@@ -397,7 +405,7 @@ function showExportStatus(element: HTMLElement, state: 'busy' | 'done' | 'cancel
 }
 
 const els = studioElements();
-const hook: StudioTestHook = { ready: Promise.resolve(), lastStats: null, rendered: null };
+const hook: StudioTestHook = { ready: Promise.resolve(), lastStats: null, rendered: null, sketched: null };
 hook.ready = startStudio(els, hook);
 hook.ready.catch((error: unknown) => {
   console.error('Meristem could not start:', error);

@@ -1,5 +1,5 @@
 // The facade over the core's `build`: one call, plain data out, the wasm object freed.
-import { build, type Build, type Explanation as WasmExplanation } from '../../../crate/pkg/meristem.js';
+import { build, buildSketch, type Build, type Explanation as WasmExplanation } from '../../../crate/pkg/meristem.js';
 import { byteOffsetToUtf16 } from './offsets';
 import { assertReady, ownedArray } from './init';
 import {
@@ -50,8 +50,12 @@ export function buildPlant(source: string, options: BuildOptions = {}): PlantBui
  * Like {@link buildPlant}, and also keeps the core's derivation alive behind a
  * {@link PlantInspector} (explanations, module texts) until its `free` is called.
  */
-export function inspectPlant(source: string, options: BuildOptions = {}): { build: PlantBuild; inspector: PlantInspector } {
-  const result = runBuild(source, options);
+export function inspectPlant(
+  source: string,
+  options: BuildOptions = {},
+  sketch?: SketchRequest,
+): { build: PlantBuild; inspector: PlantInspector } {
+  const result = sketch ? runSketched(source, options, sketch) : runBuild(source, options);
   let plain: PlantBuild;
   try {
     plain = plainBuild(source, result);
@@ -62,6 +66,52 @@ export function inspectPlant(source: string, options: BuildOptions = {}): { buil
   result.releaseGeometry();
   return { build: plain, inspector: new LiveInspector(result, plain.moduleCount) };
 }
+
+/** A big plant's skeleton as lines, shown while its tubes are meshed (see {@link inspectPlant}). */
+export interface PlantSketch {
+  /** Line ends, x, y, z each: two per segment. */
+  lines: Float32Array;
+  /** Linear RGB per line end. */
+  lineColors: Float32Array;
+  /** As {@link PlantBuild.flat}. */
+  flat: boolean;
+  segments: number;
+}
+
+/** Asks {@link inspectPlant} for a sketch of plants of at least `minSegments` segments. */
+export interface SketchRequest {
+  minSegments: number;
+  /** Called with the sketch before the tubes are meshed (not called for smaller plants or errors). */
+  show: (sketch: PlantSketch) => void;
+}
+
+/**
+ * The pipeline in two steps: up to the turtle with segments as lines (`buildSketch`), the sketch
+ * handed to `request.show` when the plant is big, then the tubes (`remesh` with the view options,
+ * the very mesh `build` makes). The mesh stage's time is the remesh's.
+ */
+function runSketched(source: string, options: BuildOptions, request: SketchRequest): Build {
+  assertReady();
+  const result = buildSketch(source, options.iterations ?? undefined, options.seed ?? undefined, () => performance.now());
+  try {
+    if (result.ok) {
+      const segments = (JSON.parse(result.stats()) as PlantStats).segments;
+      if (segments >= request.minSegments) {
+        request.show({ lines: ownedArray(result.lines()), lineColors: ownedArray(result.lineColors()), flat: result.flat, segments });
+      }
+    }
+    const start = performance.now();
+    result.remesh(options.sides ?? 6, options.smoothAll ?? false);
+    meshMillis.set(result, performance.now() - start);
+    return result;
+  } catch (error) {
+    result.free();
+    throw error;
+  }
+}
+
+/** The remesh time of sketched builds (their own timings hold the line fallback's). */
+const meshMillis = new WeakMap<Build, number>();
 
 /** Runs the core's `build` (for this folder's facades; the caller frees the result). */
 export function runBuild(source: string, options: BuildOptions): Build {
@@ -103,10 +153,14 @@ export function plainBuild(source: string, result: Build): PlantBuild {
       }),
     ),
     origins: ownedArray(result.origins()),
-    timings: (JSON.parse(result.timings()) as StageTimings | null) ?? NO_TIMINGS,
+    timings: withMeshTime((JSON.parse(result.timings()) as StageTimings | null) ?? NO_TIMINGS, meshMillis.get(result)),
     flat: result.flat,
     grammarIterations: result.grammarIterations,
   };
+}
+
+function withMeshTime(timings: StageTimings, mesh: number | undefined): StageTimings {
+  return mesh === undefined ? timings : { ...timings, mesh: timings.mesh + mesh };
 }
 
 /** Copies every mesh array of a wasm build out of wasm memory. */

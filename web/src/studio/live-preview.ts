@@ -1,7 +1,7 @@
 // The live preview: every change of the text or of a build option sends a build to the worker;
 // only the newest one is shown. A grammar with errors keeps the last good plant on screen, marked
 // stale. The editor's linter gets its diagnostics from the same builds (DiagnosticsFeed).
-import type { BuildOptions } from '../core';
+import type { BuildOptions, PlantSketch } from '../core';
 import type { PlantView } from '../view';
 import { DiagnosticsFeed } from './diagnostics-feed';
 import { reportErrors, reportPlant, type StatusReport } from './status';
@@ -49,6 +49,7 @@ export class LivePreview {
   private requestedKey: string | undefined;
   private deliveredKey: string | undefined;
   private readonly listeners = new Set<(result: BuildResult) => void>();
+  private readonly sketchListeners = new Set<(sketch: PlantSketch) => void>();
 
   constructor(private readonly parts: LivePreviewParts) {}
 
@@ -68,7 +69,32 @@ export class LivePreview {
     const key = JSON.stringify(options) + '\n' + source;
     if (key === this.requestedKey && !force) return;
     this.requestedKey = key;
-    void this.parts.client.request(source, options).then((outcome) => this.deliver(outcome, key));
+    void this.parts.client.request(source, options, (sketch) => this.sketch(sketch, key)).then((outcome) => this.deliver(outcome, key));
+  }
+
+  /** Calls `listener` after each sketch (a big plant as lines, its tubes to follow) is on screen. */
+  onSketched(listener: (sketch: PlantSketch) => void): () => void {
+    this.sketchListeners.add(listener);
+    return () => this.sketchListeners.delete(listener);
+  }
+
+  /**
+   * A big plant's skeleton, while its tubes are meshed in the worker: drawn as lines at once, so an
+   * edit shows within a frame; the build replaces it (or, if it has errors, the last good plant
+   * comes back). Not a delivery: the generation counter and `settled` wait for the build.
+   */
+  private sketch(sketch: PlantSketch, key: string): void {
+    if (key !== this.requestedKey) return;
+    const empty = new Float32Array(0);
+    this.parts.view.showPlant(
+      { positions: empty, normals: empty, colors: empty, indices: new Uint32Array(0), ranges: new Uint32Array(0), lines: sketch.lines, lineColors: sketch.lineColors },
+      sketch.flat,
+    );
+    this.parts.view.setStale(false);
+    this.parts.staleBadge.hidden = true;
+    // The status line keeps the last report until the build: a second text change per keystroke
+    // costs a compositor pass that, without a GPU, delays the tubes' frame by a second.
+    for (const listener of this.sketchListeners) listener(sketch);
   }
 
   /** The last build asked for has been delivered: what is on screen is of the text and options now. */

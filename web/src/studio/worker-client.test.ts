@@ -40,6 +40,11 @@ class FakeWorker implements WorkerLike {
     const question = this.messages.filter((m) => m.kind === 'inspect').at(-1)!;
     this.onMessage?.({ data: { kind: 'inspected', id: question.id, answer } } as MessageEvent<WorkerResponse>);
   }
+  /** Sends the sketch of request `id` (default: the last one). */
+  sketch(id = this.requests.at(-1)!.id): void {
+    const sketch = { lines: new Float32Array(6), lineColors: new Float32Array(6), flat: false, segments: 1 };
+    this.onMessage?.({ data: { kind: 'sketch', id, sketch } } as MessageEvent<WorkerResponse>);
+  }
   fail(): void {
     this.onError?.({ message: 'no module', preventDefault() {} } as ErrorEvent);
   }
@@ -80,6 +85,22 @@ describe('BuildClient', () => {
       expect(result.result.source).toBe('A');
       expect(result.result.roundTripMillis).toBe(40);
     }
+  });
+
+  it("hands a big plant's sketch to the running request before its build, and drops a superseded one's", async () => {
+    const sketched: string[] = [];
+    const a = client.request('A', {}, () => sketched.push('A'));
+    latest().sketch(1);
+    expect(sketched).toEqual(['A']);
+    const b = client.request('B', {}, () => sketched.push('B'));
+    latest().sketch(1); // A is superseded: its sketch is not shown
+    expect(sketched).toEqual(['A']);
+    expect(source(await a)).toBe('superseded');
+    latest().answer(1);
+    latest().sketch(2);
+    latest().answer(2);
+    expect(source(await b)).toBe('B');
+    expect(sketched).toEqual(['A', 'B']);
   });
 
   it('runs one build at a time and keeps only the newest waiting request', async () => {

@@ -1,6 +1,6 @@
 // The page's side of the build worker: one request at a time, the newest waiting request only,
 // stale answers never delivered, and a worker stuck on an outdated build replaced.
-import type { BuildOptions, Explanation, PlantBuild, PlantInspector } from '../core';
+import type { BuildOptions, Explanation, PlantBuild, PlantInspector, PlantSketch } from '../core';
 import type { GpuArrays } from '../view/gpu-arrays';
 import type { BuildResponse, InspectAnswer, InspectQuestion, WorkerRequest, WorkerResponse } from './worker-protocol';
 
@@ -59,6 +59,8 @@ interface Entry {
   settled: boolean;
   /** When it was posted to the worker. */
   sentAt?: number;
+  /** Takes the sketch of a big plant, before its build. */
+  onSketch?: (sketch: PlantSketch) => void;
 }
 
 /** Starts the real build worker (vite bundles worker.ts as a module worker next to the page). */
@@ -95,10 +97,13 @@ export class BuildClient {
     this.now = options.now ?? (() => performance.now());
   }
 
-  /** Builds `source` with `options`; settles with the build, or says why there is none. */
-  request(source: string, options: BuildOptions): Promise<BuildOutcome> {
+  /**
+   * Builds `source` with `options`; settles with the build, or says why there is none. A big
+   * plant's sketch goes to `onSketch` first, unless the request is superseded by then.
+   */
+  request(source: string, options: BuildOptions, onSketch?: (sketch: PlantSketch) => void): Promise<BuildOutcome> {
     return new Promise((resolve) => {
-      const entry: Entry = { id: this.nextId++, source, options, requestedAt: this.now(), resolve, settled: false };
+      const entry: Entry = { id: this.nextId++, source, options, requestedAt: this.now(), resolve, settled: false, onSketch };
       if (this.waiting) this.settle(this.waiting, { kind: 'superseded' });
       this.waiting = entry;
       if (this.running) {
@@ -135,6 +140,10 @@ export class BuildClient {
       if (response.kind === 'inspected') {
         this.questions.get(response.id)?.settle(response.answer);
         this.questions.delete(response.id);
+      } else if (response.kind === 'sketch') {
+        // Only the running request's, and only while it is still wanted.
+        const running = this.running;
+        if (running && running.id === response.id && !running.settled) running.onSketch?.(response.sketch);
       } else {
         this.answer(response);
       }

@@ -1,6 +1,6 @@
 // The messages between the page and the build worker (worker.ts), and the transfer lists that move
 // typed arrays out of the worker without copying them.
-import type { BuildOptions, Explanation, PlantBuild } from '../core';
+import type { BuildOptions, Explanation, PlantBuild, PlantSketch } from '../core';
 import type { GpuArrays } from '../view/gpu-arrays';
 
 /** The questions a kept build answers (the methods of `PlantInspector`). */
@@ -21,8 +21,13 @@ export type BuildRequest = Extract<WorkerRequest, { kind: 'build' }>;
 /** What an inspect question answers. */
 export type InspectAnswer = Explanation | null | string[] | string;
 
+/** Plants of at least this many segments are first sent as a sketch (lines), then meshed. */
+export const SKETCH_MIN_SEGMENTS = 20_000;
+
 /** Worker → page. */
 export type WorkerResponse =
+  /** Build `id`'s plant as lines, before its tubes (only for big plants; the build follows). */
+  | { kind: 'sketch'; id: number; sketch: PlantSketch }
   | {
       kind: 'built';
       id: number;
@@ -42,6 +47,9 @@ export type WorkerResponse =
 
 /** The build answer alone. */
 export type BuildResponse = Extract<WorkerResponse, { kind: 'built' | 'crashed' }>;
+
+/** The sketch answer alone. */
+export type SketchResponse = Extract<WorkerResponse, { kind: 'sketch' }>;
 
 /** The distinct non-empty buffers of `arrays`. */
 function buffersOf(arrays: readonly ArrayBufferView[]): ArrayBuffer[] {

@@ -3,10 +3,10 @@
 // instance and answers each request in order: builds, whose typed arrays go back in a transfer
 // list, and questions about a kept build (the context-sensitivity view's explanations and the
 // derived-string panel's module texts), until the page frees it. Started by createBuildWorker
-// (worker-client.ts).
+// (worker-client.ts). A big plant is first sent as a sketch (its segments as lines), then built.
 import { initCore, inspectPlant, type PlantInspector } from '../core';
 import { packForGpu } from '../view/gpu-arrays';
-import { answerTransferables, transferablesOf, type InspectAnswer, type WorkerRequest, type WorkerResponse } from './worker-protocol';
+import { answerTransferables, SKETCH_MIN_SEGMENTS, transferablesOf, type InspectAnswer, type WorkerRequest, type WorkerResponse } from './worker-protocol';
 
 /** Kept builds at most: the page frees what it does not show, this only bounds a leak. */
 const MAX_KEPT = 4;
@@ -66,7 +66,11 @@ addEventListener('message', async (event: MessageEvent<WorkerRequest>) => {
   const { id, source, options } = request;
   try {
     const start = performance.now();
-    const { build, inspector } = inspectPlant(source, options);
+    // A big plant goes to the page as lines first: on screen while its tubes are meshed.
+    const { build, inspector } = inspectPlant(source, options, {
+      minSegments: SKETCH_MIN_SEGMENTS,
+      show: (sketch) => reply({ kind: 'sketch', id, sketch }, [sketch.lines.buffer as ArrayBuffer, sketch.lineColors.buffer as ArrayBuffer]),
+    });
     keep(id, inspector);
     const gpu = packForGpu(build.mesh);
     reply({ kind: 'built', id, build, gpu, workerMillis: performance.now() - start }, transferablesOf(build, gpu));
