@@ -667,6 +667,8 @@ impl<'a> Builder<'a> {
 
     /// The fallback for models too large to mesh: each segment as a coloured line.
     fn lines(&mut self, skeleton: &Skeleton) {
+        self.mesh.lines.reserve(6 * skeleton.segments.len());
+        self.mesh.line_colors.reserve(6 * skeleton.segments.len());
         for s in &skeleton.segments {
             for p in [s.start, s.end] {
                 self.mesh.lines.extend([p.x as f32, p.y as f32, p.z as f32]);

@@ -128,31 +128,30 @@ impl Skeleton {
     /// studio then shows it face-on in an orthographic view. Widths do not count (tubes always
     /// have thickness); spheres count by their centres.
     pub fn is_flat(&self) -> bool {
-        let mut points: Vec<DVec3> = Vec::new();
-        for s in &self.segments {
-            points.extend([s.start, s.end]);
-        }
-        for p in &self.polygons {
-            points.extend(p.points.iter().copied());
-        }
-        for s in &self.surfaces {
-            // The outline spans heading and left from the origin.
-            points.extend([
-                s.origin,
-                s.origin + s.heading * s.scale,
-                s.origin + s.left * s.scale,
-            ]);
-        }
-        points.extend(self.spheres.iter().map(|s| s.center));
-        if points.is_empty() {
-            return false;
-        }
-        let (min, max) = points.iter().fold((points[0], points[0]), |(lo, hi), p| {
-            (lo.min(*p), hi.max(*p))
+        // Two passes over the points without collecting them (a big plant has millions).
+        let mut bounds: Option<(DVec3, DVec3)> = None;
+        self.for_each_point(&mut |p| {
+            bounds = Some(bounds.map_or((p, p), |(lo, hi)| (lo.min(p), hi.max(p))));
+            true
         });
+        let Some((min, max)) = bounds else {
+            return false;
+        };
         let size = (max - min).max_element();
         let tolerance = 1e-6 * size.max(1e-12);
-        points.iter().all(|p| p.z.abs() <= tolerance)
+        self.for_each_point(&mut |p| p.z.abs() <= tolerance)
+    }
+
+    /// Calls `f` on every point that counts for [`Skeleton::is_flat`] until it returns false;
+    /// returns whether it never did.
+    fn for_each_point(&self, f: &mut dyn FnMut(DVec3) -> bool) -> bool {
+        self.segments.iter().all(|s| f(s.start) && f(s.end))
+            && self.polygons.iter().all(|p| p.points.iter().all(|&q| f(q)))
+            // A surface's outline spans heading and left from the origin.
+            && self.surfaces.iter().all(|s| {
+                f(s.origin) && f(s.origin + s.heading * s.scale) && f(s.origin + s.left * s.scale)
+            })
+            && self.spheres.iter().all(|s| f(s.center))
     }
 }
 
