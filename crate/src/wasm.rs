@@ -43,6 +43,11 @@ pub fn build(
     now: Option<js_sys::Function>,
 ) -> Build {
     let options = build_options(iterations, seed, sides, smooth_all);
+    build_reading(source, &options, now)
+}
+
+/// Runs the pipeline with `options`, reading `now` (a JavaScript clock) between the stages.
+fn build_reading(source: &str, options: &BuildOptions, now: Option<js_sys::Function>) -> Build {
     let inner = match now {
         Some(now) => {
             let mut clock = || {
@@ -51,9 +56,9 @@ pub fn build(
                     .and_then(|t| t.as_f64())
                     .unwrap_or(0.0)
             };
-            pipeline::build_with_clock(source, &options, &mut clock)
+            pipeline::build_with_clock(source, options, &mut clock)
         }
-        None => pipeline::build(source, &options),
+        None => pipeline::build(source, options),
     };
     let diagnostics =
         serde_json::to_string(&inner.located_diagnostics(source)).unwrap_or_else(|_| "[]".into());
@@ -73,21 +78,7 @@ pub fn build_sketch(
 ) -> Build {
     let mut options = build_options(iterations, seed, None, None);
     options.mesh.max_vertices = 0;
-    let inner = match now {
-        Some(now) => {
-            let mut clock = || {
-                now.call0(&JsValue::NULL)
-                    .ok()
-                    .and_then(|t| t.as_f64())
-                    .unwrap_or(0.0)
-            };
-            pipeline::build_with_clock(source, &options, &mut clock)
-        }
-        None => pipeline::build(source, &options),
-    };
-    let diagnostics =
-        serde_json::to_string(&inner.located_diagnostics(source)).unwrap_or_else(|_| "[]".into());
-    Build { inner, diagnostics }
+    build_reading(source, &options, now)
 }
 
 /// The options of a build from the boundary's arguments; a seed that is not a whole number from 0

@@ -1,5 +1,10 @@
 // The facade over the core's file writers: one call, the file's bytes out, the wasm object freed.
-import { exportModel as coreExportModel, exportModelReporting, exportModelWithEdits } from '../../../crate/pkg/meristem.js';
+import {
+  exportModel as coreExportModel,
+  exportModelReporting,
+  exportModelWithEdits,
+  type ExportedModel,
+} from '../../../crate/pkg/meristem.js';
 import type { EditsDocument } from './branches';
 import { assertReady } from './init';
 import type { BuildOptions } from './types';
@@ -53,11 +58,7 @@ export function exportModel(source: string, format: ModelFormat, options: Export
     options.smoothAll ?? undefined,
   ] as const;
   const result = options.edits ? exportModelWithEdits(source, JSON.stringify(options.edits), ...args) : coreExportModel(source, ...args);
-  try {
-    return { fileName: result.fileName, mimeType: result.mimeType, bytes: result.bytes() };
-  } finally {
-    result.free();
-  }
+  return takeFile(result);
 }
 
 /** A stage of an export, as the core reports it (in this order; `applying edits` only with edits). */
@@ -92,6 +93,11 @@ export function exportModelWithProgress(
     options.smoothAll ?? undefined,
     (stage: ExportStage, index: number, count: number) => onProgress({ stage, index, count }),
   );
+  return takeFile(result);
+}
+
+/** Copies a wasm file out of wasm memory and frees it. */
+function takeFile(result: ExportedModel): ModelFile {
   try {
     return { fileName: result.fileName, mimeType: result.mimeType, bytes: result.bytes() };
   } finally {
