@@ -7,6 +7,7 @@ import { extname, join, normalize } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { chromium, type Browser } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { encodeState } from '../../web/src/share/codec';
 import { decodePng, foregroundShare } from './pictures';
 
 const DIST = fileURLToPath(new URL('../../dist/', import.meta.url));
@@ -87,4 +88,23 @@ describe('deployment from a sub-path of a static host', () => {
     expect(problems.some((p) => p.includes('CSP violation'))).toBe(true);
     await page.close();
   });
+
+  it('opens a share link there', async () => {
+    const page = await browser.newPage({ viewport: { width: 1024, height: 700 } });
+    const problems: string[] = [];
+    page.on('console', (m) => m.type() === 'error' && problems.push(`console: ${m.text()}`));
+    page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
+    page.on('response', (r) => r.status() >= 400 && problems.push(`HTTP ${r.status()} ${r.url()}`));
+    const text = '// Shared from a course page\n#angle 20\naxiom: X\nX -> F[+X]F[-X]+X\nF -> FF';
+    await page.goto(base + (await encodeState({ text, iterations: 5, seed: 3 })));
+    await page.waitForFunction(() => (window.__meristem?.lastStats?.segments ?? 0) > 0, undefined, { timeout: 30_000 });
+    expect(await page.evaluate(() => window.__meristem!.lastStats!.iterations)).toBe(5);
+    expect(await page.getByTestId('iterations').inputValue()).toBe('5');
+    const lines = await page.evaluate(() => [...document.querySelectorAll('[data-testid=editor] .cm-line')].map((l) => l.textContent).join('\n'));
+    expect(lines).toBe(text);
+    expect(page.url()).toBe(base); // the fragment is consumed; the page stays under the sub-path
+    expect(problems).toEqual([]);
+    await page.close();
+  });
 });
+

@@ -13,7 +13,9 @@ import {
   type PlantStats,
 } from './core';
 import { createGrammarEditor, type GrammarEditor } from './editor';
-import { PlantView } from './view';
+import { decodeState, encodeState, hasSharedState, type SharedState } from './share/codec';
+import { GrammarStore, titleOf, type KeyValueStorage } from './share/storage';
+import { PlantView, type ProjectionMode } from './view';
 import {
   BuildClient,
   ContextView,
@@ -31,8 +33,15 @@ import {
   fetchExample,
   fileSize,
   installShortcuts,
+  LibraryDialog,
+  linkWithFragment,
+  lsysFileName,
+  Notice,
+  openGrammarBytes,
+  dialectName,
   pictureSize,
   runExport,
+  ShareDialog,
   renderShortcutHelp,
   saveFile,
   showStatus,
@@ -55,6 +64,10 @@ interface StudioTestHook {
   rendered: { generation: number; at: number } | null;
   /** `performance.now()` at the end of the first frame that drew the last sketch (a big plant as lines). */
   sketched: number | null;
+  /** The derived string's fingerprint of the plant on screen (share links must reproduce it). */
+  derivedHash?: () => Promise<string>;
+  /** Where the camera in use stands. */
+  cameraPose?: () => { position: number[]; target: number[]; zoom: number };
 }
 
 declare global {
@@ -112,6 +125,33 @@ function studioElements() {
     exportStatus: byId('export-status', HTMLElement),
     exportProgress: byId('export-progress', HTMLProgressElement),
     exportCancel: byId('export-cancel', HTMLButtonElement),
+    fileMenu: byId('file-menu', HTMLDetailsElement),
+    openFile: byId('open-file', HTMLButtonElement),
+    saveFile: byId('save-file', HTMLButtonElement),
+    openLibrary: byId('open-library', HTMLButtonElement),
+    fileInput: byId('file-input', HTMLInputElement),
+    share: byId('share', HTMLButtonElement),
+    notice: {
+      root: byId('notice', HTMLElement),
+      text: byId('notice-text', HTMLElement),
+      list: byId('notice-list', HTMLElement),
+      close: byId('notice-close', HTMLButtonElement),
+    },
+    shareDialog: {
+      dialog: byId('share-dialog', HTMLDialogElement),
+      link: byId('share-link', HTMLInputElement),
+      copy: byId('share-copy', HTMLButtonElement),
+      status: byId('share-status', HTMLElement),
+      size: byId('share-size', HTMLElement),
+    },
+    library: {
+      dialog: byId('library', HTMLDialogElement),
+      name: byId('library-name', HTMLInputElement),
+      save: byId('library-save', HTMLButtonElement),
+      list: byId('library-list', HTMLElement),
+      empty: byId('library-empty', HTMLElement),
+      status: byId('library-status', HTMLElement),
+    },
   };
 }
 type StudioElements = ReturnType<typeof studioElements>;
@@ -129,9 +169,12 @@ function pressed(button: HTMLButtonElement): boolean {
 
 async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<void> {
   showStatus(els.status, { state: 'loading', text: 'Loading…' });
-  // The page's own core instance only serves the tables (commands, directives, version); builds
-  // run in the worker's.
-  const [source] = await Promise.all([fetchExample(INITIAL_EXAMPLE), initCore()]);
+  const notice = new Notice(els.notice);
+  const store = new GrammarStore(browserStorage());
+  // The page's own core instance serves the tables (commands, directives, version) and the
+  // importers of opened files; builds run in the worker's.
+  const [start] = await Promise.all([startingText(store, notice), initCore()]);
+  const source = start.text;
   els.version.textContent = `core ${coreVersion()}`;
 
   const view = new PlantView(els.viewport);
@@ -142,6 +185,8 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     smoothAll: els.smoothAll.checked,
   });
   let editor: GrammarEditor | undefined;
+  /** Set once autosave is ready (below); the editor calls it on every change. */
+  let autosaveOnChange = () => {};
   // The context-sensitivity view: the cursor on a production lights up what it wrote.
   const contexts = new ContextView(
     { panel: els.stringPanel, summary: els.explainSummary, byProduction: els.byProduction, legend: els.productionLegend },
@@ -170,6 +215,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     onChange: (text) => {
       sliders.update(text);
       preview.rebuild();
+      autosaveOnChange();
     },
     diagnose: (text) => preview.feed.diagnose(text),
     commands: turtleCommands(),
@@ -245,16 +291,16 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     sketchPending = false;
   });
 
-  // The gallery. The text the user started from (an example, unchanged) is `pristine`; anything
-  // else is theirs, and opening an example asks first (and stays undoable in the editor).
-  let pristine = source;
-  let currentFile = INITIAL_EXAMPLE;
-  const openExample = async (entry: GalleryEntry) => {
-    const text = await fetchExample(entry.file);
+  // Opening another text (an example, a file, a saved grammar, a shared link). The text the user
+  // started from, if it was an example left unchanged, is `pristine`; anything else is theirs, and
+  // opening something else asks first (and stays undoable in the editor).
+  let pristine: string | undefined = start.from === 'example' ? source : undefined;
+  let currentFile = start.from === 'example' ? INITIAL_EXAMPLE : '';
+  const replaceText = async (text: string, title: string, file = ''): Promise<boolean> => {
     const mine = grammarEditor.text();
-    if (mine !== pristine && mine !== text && !(await askToReplace(els.confirm, els.confirmExample, entry.title))) {
+    if (mine !== pristine && mine !== text && !(await askToReplace(els.confirm, els.confirmExample, title))) {
       grammarEditor.view.focus();
-      return;
+      return false;
     }
     playback.pause();
     els.iterations.value = '';
@@ -262,11 +308,17 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     sliders.reset();
     view.setProjectionMode('auto');
     view.frameNextPlant();
-    pristine = text;
-    currentFile = entry.file;
+    pristine = file.endsWith('.lsys') && currentIsExample(file) ? text : undefined;
+    currentFile = file;
     grammarEditor.replaceText(text);
     grammarEditor.view.focus();
     preview.rebuild(true);
+    return true;
+  };
+  const currentIsExample = (file: string) => file !== '' && !file.includes('/');
+  const openExample = async (entry: GalleryEntry) => {
+    const text = await fetchExample(entry.file);
+    if (await replaceText(text, entry.title, entry.file)) notice.hide();
   };
   const gallery = new GalleryDialog(
     els.gallery,
@@ -277,9 +329,150 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   );
   const openGallery = () => void gallery.open().catch((error: unknown) => console.error('Could not open the gallery:', error));
   els.openGallery.addEventListener('click', openGallery);
-  window.addEventListener('beforeunload', (event) => {
-    if (grammarEditor.text() !== pristine) event.preventDefault(); // the browser asks before leaving
+
+  // Autosave: every change, shortly after typing stops, and when the page goes away.
+  let autosaveTimer: ReturnType<typeof setTimeout> | undefined;
+  let autosaveFailed = false;
+  const autosaveNow = () => {
+    clearTimeout(autosaveTimer);
+    autosaveTimer = undefined;
+    const ok = store.autosave(grammarEditor.text());
+    if (!ok && !autosaveFailed) notice.show('error', 'Your text cannot be saved in this browser (its storage is full or switched off): save it as a file or share it.');
+    autosaveFailed = !ok;
+  };
+  autosaveOnChange = () => {
+    clearTimeout(autosaveTimer);
+    autosaveTimer = setTimeout(autosaveNow, 300);
+  };
+  window.addEventListener('pagehide', () => autosaveTimer !== undefined && autosaveNow());
+  document.addEventListener('visibilitychange', () => document.visibilityState === 'hidden' && autosaveTimer !== undefined && autosaveNow());
+  if (start.from === 'link') autosaveNow(); // the link's text is now the work in progress
+
+  // Files: open (picker, Ctrl+O, drag and drop; other dialects imported with their notes) and save.
+  const openFile = async (file: File) => {
+    const opened = openGrammarBytes(file.name, new Uint8Array(await file.arrayBuffer()));
+    if (!opened.ok) {
+      notice.show('error', `Could not open ${file.name}: ${opened.error}.`);
+      return;
+    }
+    if (!(await replaceText(opened.text, file.name, `file/${file.name}`))) return;
+    if (opened.dialect) {
+      const what = `Imported ${file.name} from ${dialectName(opened.dialect)}`;
+      notice.show(
+        'info',
+        opened.notes.length === 0 ? `${what}: everything was translated.` : `${what}. Not translated, or only approximately (${opened.notes.length}):`,
+        opened.notes,
+      );
+    } else if (opened.notes.length > 0) notice.show('info', `Opened ${file.name}.`, opened.notes);
+    else notice.hide();
+  };
+  const pickFile = () => {
+    els.fileMenu.open = false;
+    els.fileInput.value = '';
+    els.fileInput.click();
+  };
+  els.openFile.addEventListener('click', pickFile);
+  els.fileInput.addEventListener('change', () => {
+    const file = els.fileInput.files?.[0];
+    if (file) void openFile(file).catch((error: unknown) => notice.show('error', `Could not open ${file.name}: ${String(error)}`));
   });
+  const saveAsFile = () => {
+    els.fileMenu.open = false;
+    const text = grammarEditor.text();
+    saveFile(new TextEncoder().encode(text), lsysFileName(titleOf(text)), 'text/plain');
+  };
+  els.saveFile.addEventListener('click', saveAsFile);
+  installDrop(els.studio, (file) => void openFile(file).catch((error: unknown) => notice.show('error', `Could not open ${file.name}: ${String(error)}`)));
+  window.addEventListener(
+    'keydown',
+    (event) => {
+      if (!(event.ctrlKey || event.metaKey) || event.altKey || event.shiftKey || event.repeat) return;
+      if (event.code === 'KeyO') pickFile();
+      else if (event.code === 'KeyS') saveAsFile();
+      else return;
+      event.preventDefault();
+      event.stopPropagation();
+    },
+    { capture: true },
+  );
+  closeLikeAMenu(els.fileMenu);
+
+  // My grammars.
+  const library = new LibraryDialog(els.library, store, {
+    text: () => grammarEditor.text(),
+    open: (entry) => void replaceText(entry.text, entry.name, `saved/${entry.id}`).then((done) => done && notice.hide()),
+  });
+  els.openLibrary.addEventListener('click', () => {
+    els.fileMenu.open = false;
+    library.open();
+  });
+
+  // Share: the whole state in the link's fragment.
+  const shareDialog = new ShareDialog(els.shareDialog);
+  const sharedState = (): SharedState => {
+    const state: SharedState = { text: grammarEditor.text() };
+    const iterations = wholeNumber(els.iterations);
+    const seed = wholeNumber(els.seed);
+    if (iterations !== undefined) state.iterations = iterations;
+    if (seed !== undefined) state.seed = seed;
+    const values = sliders.values();
+    if (Object.keys(values).length > 0) state.sliders = values;
+    state.view = {
+      sides: Number(els.sides.value),
+      smoothAll: els.smoothAll.checked,
+      byProduction: els.byProduction.checked,
+      grid: pressed(els.grid),
+      lighting: pressed(els.lighting),
+      projection: view.projectionMode,
+    };
+    state.camera = view.cameraPose();
+    return state;
+  };
+  els.share.addEventListener('click', () => {
+    void encodeState(sharedState())
+      .then((fragment) => shareDialog.open(linkWithFragment(location, fragment)))
+      .catch((error: unknown) => notice.show('error', `Could not make a link: ${String(error)}`));
+  });
+  // A link pasted into this tab's address bar.
+  window.addEventListener('hashchange', () => {
+    if (!hasSharedState(location.hash)) return;
+    if (autosaveTimer !== undefined) autosaveNow(); // the text now is what the link may replace
+    void openLink(location.hash, store, notice).then((opened) => {
+      history.replaceState(null, '', linkWithFragment(location, ''));
+      if (!opened) return;
+      void replaceText(opened.state.text, 'the shared link', 'link').then((done) => {
+        if (!done) return;
+        applyLinkOptions(opened.state);
+        if (opened.state.camera) cameraToApply = opened.state.camera;
+        preview.rebuild(true);
+      });
+    });
+  });
+  // The link's view options, before its first build (the camera after it: it needs the plant).
+  const applyLinkOptions = (state: SharedState) => {
+    els.iterations.value = state.iterations === undefined ? '' : String(state.iterations);
+    els.seed.value = state.seed === undefined ? '' : String(state.seed);
+    const v = state.view ?? {};
+    if (v.sides !== undefined && [...els.sides.options].some((o) => o.value === String(v.sides))) els.sides.value = String(v.sides);
+    if (v.smoothAll !== undefined) els.smoothAll.checked = v.smoothAll;
+    if (v.grid !== undefined && v.grid !== pressed(els.grid)) els.grid.click();
+    if (v.lighting !== undefined && v.lighting !== pressed(els.lighting)) els.lighting.click();
+    if (v.byProduction !== undefined && v.byProduction !== els.byProduction.checked) els.byProduction.click();
+    if (v.projection !== undefined) view.setProjectionMode(v.projection as ProjectionMode);
+    showProjection();
+  };
+  let cameraToApply: SharedState['camera'] = undefined;
+  preview.onDelivered((result) => {
+    if (!cameraToApply || !result.build.ok) return;
+    view.setCameraPose({ zoom: 1, ...cameraToApply });
+    cameraToApply = undefined;
+  });
+  if (start.from === 'link' && start.state) {
+    applyLinkOptions(start.state);
+    cameraToApply = start.state.camera;
+  }
+  hook.derivedHash = () => preview.lastGood?.inspector.derivedHash() ?? Promise.resolve('');
+  hook.cameraPose = () => view.cameraPose();
 
   // Downloads: the plant on screen (the last good build's text and options), written by the page's
   // own core instance, as a model file or a PNG of the view.
@@ -373,15 +566,7 @@ function installDownloads(
     button.addEventListener('click', () => void downloadModel(format, label));
     els.modelDownloads.append(button);
   }
-  // The menu closes like a menu: on a click elsewhere and on Escape.
-  document.addEventListener('pointerdown', (event) => {
-    if (els.downloads.open && !els.downloads.contains(event.target as Node)) els.downloads.open = false;
-  });
-  els.downloads.addEventListener('keydown', (event) => {
-    if (event.key !== 'Escape' || !els.downloads.open) return;
-    els.downloads.open = false;
-    els.downloads.querySelector('summary')?.focus();
-  });
+  closeLikeAMenu(els.downloads);
   els.downloadPng.addEventListener('click', () => {
     const size = pictureSize(els.pngWidth.value, els.pngHeight.value, view.maxPictureSide());
     if (!size.ok) {
@@ -396,6 +581,113 @@ function installDownloads(
       return `Saved plant.png · ${size.width} × ${size.height} · ${fileSize(png.size)}`;
     });
   });
+}
+
+/** A `<details>` menu closes like a menu: on a click elsewhere and on Escape. */
+function closeLikeAMenu(menu: HTMLDetailsElement): void {
+  document.addEventListener('pointerdown', (event) => {
+    if (menu.open && !menu.contains(event.target as Node)) menu.open = false;
+  });
+  menu.addEventListener('keydown', (event) => {
+    if (event.key !== 'Escape' || !menu.open) return;
+    menu.open = false;
+    menu.querySelector('summary')?.focus();
+  });
+}
+
+/** Files dropped anywhere on `target` open with `open` (before the editor can insert them as text). */
+function installDrop(target: HTMLElement, open: (file: File) => void): void {
+  const hasFiles = (event: DragEvent) => event.dataTransfer?.types.includes('Files') ?? false;
+  let depth = 0;
+  const leave = () => {
+    depth = 0;
+    target.classList.remove('drop-target');
+  };
+  target.addEventListener('dragenter', (event) => {
+    if (!hasFiles(event)) return;
+    event.preventDefault();
+    depth++;
+    target.classList.add('drop-target');
+  });
+  target.addEventListener('dragover', (event) => {
+    if (!hasFiles(event)) return;
+    event.preventDefault();
+    event.dataTransfer!.dropEffect = 'copy';
+  });
+  target.addEventListener('dragleave', (event) => {
+    if (!hasFiles(event)) return;
+    depth = Math.max(0, depth - 1);
+    if (depth === 0) leave();
+  });
+  target.addEventListener(
+    'drop',
+    (event) => {
+      if (!hasFiles(event)) return;
+      event.preventDefault();
+      event.stopPropagation();
+      leave();
+      const file = event.dataTransfer?.files[0];
+      if (file) open(file);
+    },
+    { capture: true },
+  );
+}
+
+/** `localStorage`, or nothing where the browser refuses it (private modes, sandboxed frames). */
+function browserStorage(): KeyValueStorage | undefined {
+  try {
+    return window.localStorage;
+  } catch {
+    return undefined;
+  }
+}
+
+/** Where the editor's first text comes from. */
+interface StartingText {
+  text: string;
+  from: 'link' | 'autosave' | 'example';
+  /** The link's state, when it came from one. */
+  state?: SharedState;
+}
+
+/**
+ * The text the studio opens with: a shared link's (its fragment is then removed from the address,
+ * so a reload restores the user's later edits), else the autosaved text, else the first example.
+ * A link that cannot be opened is said in the notice, and the studio opens as if it had none.
+ */
+async function startingText(store: GrammarStore, notice: Notice): Promise<StartingText> {
+  if (hasSharedState(location.hash)) {
+    const opened = await openLink(location.hash, store, notice);
+    history.replaceState(null, '', linkWithFragment(location, ''));
+    if (opened) return { text: opened.state.text, from: 'link', state: opened.state };
+  }
+  const saved = store.restore();
+  if (saved && saved.text.trim() !== '') return { text: saved.text, from: 'autosave' };
+  return { text: await fetchExample(INITIAL_EXAMPLE), from: 'example' };
+}
+
+/**
+ * Decodes a shared link. A rejected one is said in the notice (and nothing changes). An accepted
+ * one first keeps the autosaved work in My grammars, unless it is the link's text or saved there
+ * already: opening a link never loses a user's text.
+ */
+async function openLink(fragment: string, store: GrammarStore, notice: Notice): Promise<{ state: SharedState } | null> {
+  const decoded = await decodeState(fragment);
+  if (!decoded.ok) {
+    notice.show('error', `This link could not be opened: ${decoded.error}. The studio opened as usual.`);
+    return null;
+  }
+  const previous = store.restore();
+  if (previous && previous.text.trim() !== '' && previous.text !== decoded.state.text && !store.list().some((g) => g.text === previous.text)) {
+    const kept = store.save(`Before a shared link: ${titleOf(previous.text)}`, previous.text);
+    notice.show(
+      'info',
+      kept
+        ? `Opened a shared link. Your previous text is kept in My grammars as “${kept.name}”.`
+        : 'Opened a shared link. Your previous text could not be kept (this browser’s storage is full): Ctrl+Z in the editor does not reach it.',
+    );
+  } else notice.hide();
+  return { state: decoded.state };
 }
 
 /** Shows the state of the last download next to the build status. */

@@ -1,5 +1,5 @@
 // The facade over the core's importers (`crate/src/import`): another dialect's text in, Meristem
-// text and notes out. The studio's file opening calls this; it holds no UI.
+// text and notes out. The studio's file opening (studio/grammar-files.ts) calls this.
 import { import_grammar } from '../../../crate/pkg/meristem.js';
 import { assertReady } from './init';
 

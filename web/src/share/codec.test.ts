@@ -16,8 +16,8 @@ describe('share links', () => {
       iterations: 7,
       seed: 2 ** 40,
       sliders: { r: 0.75, theta: 22.5 },
-      view: { sides: 12, smoothAll: true, byProduction: false, grid: true },
-      camera: { position: [1.5, 2, -3], target: [0, 1, 0] },
+      view: { sides: 12, smoothAll: true, byProduction: false, grid: true, lighting: false, projection: 'orthographic' },
+      camera: { position: [1.5, 2, -3], target: [0, 1, 0], zoom: 2.5 },
     };
     const fragment = await encodeState(state);
     expect(fragment).toMatch(/^#s=1\.[A-Za-z0-9_-]+$/);
@@ -62,6 +62,8 @@ describe('share links', () => {
     ['an infinite camera', () => fragmentOf('{"text":"axiom: F","camera":{"position":[1e400,0,0],"target":[0,0,0]}}'), /camera/],
     ['a slider named __proto__', () => fragmentOf('{"text":"axiom: F","sliders":{"__proto__":1}}'), /sliders/],
     ['a thousand sides', () => fragmentOf(JSON.stringify({ text: 'axiom: F', view: { sides: 1000 } })), /sides/],
+    ['an unknown projection', () => fragmentOf(JSON.stringify({ text: 'axiom: F', view: { projection: 'fisheye' } })), /projection/],
+    ['a zero zoom', () => fragmentOf(JSON.stringify({ text: 'axiom: F', camera: { position: [0, 0, 1], target: [0, 0, 0], zoom: 0 } })), /zoom/],
     ['a view option that is not boolean', () => fragmentOf(JSON.stringify({ text: 'axiom: F', view: { grid: 'yes' } })), /grid/],
   ];
 

@@ -25,9 +25,17 @@ export interface SharedState {
   /** Values of `#define` sliders by name (already in the text; kept for the record). */
   sliders?: Record<string, number>;
   /** View options. */
-  view?: { sides?: number; smoothAll?: boolean; byProduction?: boolean; grid?: boolean };
-  /** The camera: eye position and the point looked at. */
-  camera?: { position: [number, number, number]; target: [number, number, number] };
+  view?: {
+    sides?: number;
+    smoothAll?: boolean;
+    byProduction?: boolean;
+    grid?: boolean;
+    lighting?: boolean;
+    /** The 2D/3D choice: `auto` (2D for flat plants) or fixed. */
+    projection?: 'auto' | 'perspective' | 'orthographic';
+  };
+  /** The camera in use: eye position, the point looked at, and the orthographic zoom. */
+  camera?: { position: [number, number, number]; target: [number, number, number]; zoom?: number };
 }
 
 export type Decoded = { ok: true; state: SharedState } | { ok: false; error: string };
@@ -127,16 +135,26 @@ export function validate(json: unknown): Decoded {
       if (!isWhole(view.sides, 64) || view.sides < 3) return fail('the link’s number of sides is not from 3 to 64');
       clean.sides = view.sides;
     }
-    for (const key of ['smoothAll', 'byProduction', 'grid'] as const) {
+    for (const key of ['smoothAll', 'byProduction', 'grid', 'lighting'] as const) {
       if (view[key] === undefined) continue;
       if (typeof view[key] !== 'boolean') return fail(`the link’s view option ${key} is not true or false`);
       clean[key] = view[key];
+    }
+    if (view.projection !== undefined) {
+      if (view.projection !== 'auto' && view.projection !== 'perspective' && view.projection !== 'orthographic') {
+        return fail('the link’s projection is not auto, perspective or orthographic');
+      }
+      clean.projection = view.projection;
     }
     state.view = clean;
   }
   if (camera !== undefined) {
     if (!isRecord(camera) || !isPoint(camera.position) || !isPoint(camera.target)) return fail('the link’s camera is malformed');
     state.camera = { position: [...camera.position], target: [...camera.target] };
+    if (camera.zoom !== undefined) {
+      if (typeof camera.zoom !== 'number' || !(camera.zoom > 1e-6 && camera.zoom < 1e6)) return fail('the link’s camera zoom is malformed');
+      state.camera.zoom = camera.zoom;
+    }
   }
   return { ok: true, state };
 }

@@ -16,3 +16,7 @@ export { askToReplace } from './confirm';
 export { ContextView } from './context-view';
 export { afterPaint, fileSize, pictureSize, saveFile, PICTURE_MAX, PICTURE_MIN, type PictureSize } from './downloads';
 export { createExportWorker, describeProgress, runExport, type ExportOutcome, type ExportRequest, type ExportResponse, type RunningExport } from './export-client';
+export { Notice, type NoticeElements, type NoticeKind } from './notice';
+export { ShareDialog, linkWithFragment, type ShareDialogElements } from './share-dialog';
+export { LibraryDialog, type LibraryElements, type LibraryHost } from './library-dialog';
+export { openGrammarBytes, decodeText, dialectName, lsysFileName, MAX_FILE_BYTES, type OpenedFile } from './grammar-files';

@@ -48,8 +48,10 @@ export function installShortcuts(target: Window, run: (action: ShortcutAction) =
 export function renderShortcutHelp(list: HTMLElement): void {
   const rows: [string, string][] = [
     ...SHORTCUTS.map((s): [string, string] => [s.keys, s.description]),
+    ['Ctrl+O', 'Open a grammar file (or drop one on the page)'],
+    ['Ctrl+S', 'Save the grammar as a .lsys file'],
     ['Ctrl+Space', 'Complete a directive, command or #define name'],
-    ['Ctrl+Z', 'Undo, also an example opened from the gallery'],
+    ['Ctrl+Z', 'Undo, also an example, file or saved grammar opened over your text'],
     ['← → on the divider', 'Resize the editor and the view'],
   ];
   list.replaceChildren(

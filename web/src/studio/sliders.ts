@@ -58,6 +58,11 @@ export class SliderPanel {
   ) {}
 
   /** Forgets the remembered ranges (another grammar was opened). */
+  /** The value of every slider, by its constant's name (what a share link records). */
+  values(): Record<string, number> {
+    return Object.fromEntries(this.constants.map((c) => [c.name, c.value]));
+  }
+
   reset(): void {
     this.remembered.clear();
   }

@@ -37,6 +37,13 @@ export type Projection = 'perspective' | 'orthographic';
 /** How the projection is chosen: from the plant (`auto`: flat plants in 2D), or fixed by the user. */
 export type ProjectionMode = 'auto' | Projection;
 
+/** A camera's place: eye, the point it looks at (the orbit's centre), and the orthographic zoom. */
+export interface ViewPose {
+  position: [number, number, number];
+  target: [number, number, number];
+  zoom: number;
+}
+
 /** One of the two cameras with its controls and whether it has been framed on a plant yet. */
 interface CameraRig<C extends PerspectiveCamera | OrthographicCamera> {
   camera: C;
@@ -211,6 +218,41 @@ export class PlantView {
   /** The canvas, for pointer events. */
   get canvas(): HTMLCanvasElement {
     return this.renderer.domElement;
+  }
+
+  /**
+   * Where the camera in use stands: what a share link keeps. `zoom` is the orthographic camera's
+   * (1 for the perspective one).
+   */
+  cameraPose(): ViewPose {
+    const { camera, controls } = this.active;
+    return {
+      position: camera.position.toArray() as [number, number, number],
+      target: controls.target.toArray() as [number, number, number],
+      zoom: this.active === this.orthographic ? this.orthographic.camera.zoom : 1,
+    };
+  }
+
+  /**
+   * Puts the camera in use where `pose` says (after framing it on the plant on screen, for its
+   * clipping planes and the grid), and keeps it there across later plants.
+   */
+  setCameraPose(pose: ViewPose): void {
+    this.frame();
+    const { camera, controls } = this.active;
+    camera.position.fromArray(pose.position);
+    controls.target.fromArray(pose.target);
+    if (camera instanceof OrthographicCamera) camera.zoom = pose.zoom;
+    else {
+      // Keep the plant inside the clipping range wherever the camera stands.
+      const distance = camera.position.distanceTo(controls.target);
+      camera.near = Math.min(camera.near, distance / 1000);
+      camera.far = Math.max(camera.far, distance * 10);
+    }
+    camera.updateProjectionMatrix();
+    controls.update();
+    this.active.framed = true;
+    this.requestRender();
   }
 
   /** Frames the camera on the next plant shown (e.g. after another example was opened). */

@@ -1,0 +1,284 @@
+// End-to-end: sharing by link, autosave, My grammars, and opening and saving files (issue 7), on
+// the built studio in headless Chromium. A share link must reproduce the plant exactly (the same
+// derived string, by its fingerprint) and the view (options and camera); hostile links are refused
+// with a message while the studio opens as usual; the user's text survives a reload and the
+// opening of a link; other dialects are imported with their notes, from the picker and by drop.
+import { readFileSync } from 'node:fs';
+import { deflateRawSync } from 'node:zlib';
+import { chromium, type Browser, type BrowserContext, type Page } from 'playwright-core';
+import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
+import { MAX_FRAGMENT } from '../../web/src/share/codec';
+import { editorText, example, generation, nextBuild, openFromGallery, openStudio, savePage, twoFrames } from './studio-page';
+
+let browser: Browser;
+
+beforeAll(async () => {
+  browser = await chromium.launch({ executablePath: '/usr/bin/chromium' });
+});
+
+afterAll(async () => {
+  await browser?.close();
+});
+
+/** A browser context of its own (its own storage, as another browser or profile). */
+const newContext = () => browser.newContext({ viewport: { width: 1280, height: 800 }, acceptDownloads: true });
+
+/** Opens `url` in `context` (default: a fresh one) and waits for the first plant. */
+async function openAt(url: string, context?: BrowserContext): Promise<{ page: Page; problems: string[] }> {
+  const page = await (context ?? (await newContext())).newPage();
+  const problems: string[] = [];
+  page.on('console', (m) => m.type() === 'error' && problems.push(`console error: ${m.text()}`));
+  page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
+  await page.goto(url);
+  await page.waitForFunction(() => (window.__meristem?.lastStats?.segments ?? 0) > 0, undefined, { timeout: 30_000 });
+  await page.waitForFunction(() => window.__meristem?.preview?.settled === true);
+  return { page, problems };
+}
+
+const derivedHash = (page: Page) => page.evaluate(() => window.__meristem!.derivedHash!());
+const cameraPose = (page: Page) => page.evaluate(() => window.__meristem!.cameraPose!());
+
+/** Replaces the editor's text by typing it in as a paste. */
+async function typeText(page: Page, text: string): Promise<void> {
+  const before = await generation(page);
+  await page.getByTestId('editor').locator('.cm-content').click();
+  await page.keyboard.press('Control+A');
+  await page.keyboard.insertText(text);
+  await nextBuild(page, before);
+}
+
+/** A fragment holding `payload` compressed as the studio compresses. */
+const fragmentOf = (payload: string | Uint8Array, version = 1) =>
+  `#s=${version}.${Buffer.from(deflateRawSync(typeof payload === 'string' ? Buffer.from(payload) : payload)).toString('base64url')}`;
+
+describe('share links', () => {
+  it('reproduce the plant (same derived string), its options and the camera, from a fresh browser', async () => {
+    const { page, problems } = await openStudio(browser);
+    await openFromGallery(page, 'abop-1.27-stochastic.lsys');
+    await page.waitForFunction(() => window.__meristem?.preview?.settled === true && (window.__meristem.lastStats?.segments ?? 0) > 0);
+    let before = await generation(page);
+    await page.getByTestId('iterations').fill('4');
+    await nextBuild(page, before);
+    before = await generation(page);
+    await page.getByTestId('seed').fill('77');
+    await nextBuild(page, before);
+    before = await generation(page);
+    await page.getByTestId('sides').selectOption('8');
+    await nextBuild(page, before);
+    await page.getByTestId('grid').click();
+    // Orbit the camera by dragging on the view.
+    const box = (await page.getByTestId('viewport').boundingBox())!;
+    await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+    await page.mouse.down();
+    await page.mouse.move(box.x + box.width / 2 + 120, box.y + box.height / 2 - 40, { steps: 8 });
+    await page.mouse.up();
+    await twoFrames(page);
+    const hash = await derivedHash(page);
+    const pose = await cameraPose(page);
+    const text = await editorText(page);
+    expect(hash).toMatch(/^[0-9a-f]{16}$/);
+
+    await page.getByTestId('share').click();
+    await page.getByTestId('share-dialog').waitFor({ state: 'visible' });
+    const link = await page.getByTestId('share-link').inputValue();
+    expect(link.startsWith(inject('studioUrl'))).toBe(true);
+    expect(link).toMatch(/#s=1\.[A-Za-z0-9_-]+$/);
+    await expect.poll(() => page.getByTestId('share-status').textContent()).toMatch(/copied|copy it/);
+    await savePage(page, 'share-dialog.png');
+    await page.keyboard.press('Escape');
+    expect(problems).toEqual([]);
+
+    // Another browser (its own storage) opens the link.
+    const other = await newContext();
+    const opened = await openAt(link, other);
+    expect(await editorText(opened.page)).toBe(text);
+    expect(await derivedHash(opened.page)).toBe(hash);
+    const openedPose = await cameraPose(opened.page);
+    for (const key of ['position', 'target'] as const) {
+      openedPose[key].forEach((v, i) => expect(v).toBeCloseTo(pose[key][i], 6));
+    }
+    expect(await opened.page.getByTestId('iterations').inputValue()).toBe('4');
+    expect(await opened.page.getByTestId('seed').inputValue()).toBe('77');
+    expect(await opened.page.getByTestId('sides').inputValue()).toBe('8');
+    expect(await opened.page.getByTestId('grid').getAttribute('aria-pressed')).toBe('false');
+    // The fragment is gone from the address: a reload shows the user's later edits, not the link again.
+    expect(new URL(opened.page.url()).hash).toBe('');
+    expect(await opened.page.getByTestId('notice').isHidden(), 'nothing to report: no earlier work').toBe(true);
+    await savePage(opened.page, 'share-opened.png');
+    expect(opened.problems).toEqual([]);
+    await other.close();
+    await page.close();
+  });
+
+  const hostile: [string, string][] = [
+    ['too long', '#s=1.' + 'A'.repeat(MAX_FRAGMENT + 1)],
+    ['not base64url', '#s=1.%3Cscript%3E'],
+    ['not compressed', '#s=1.AAAAAAAAAAAA'],
+    ['a decompression bomb', fragmentOf(new Uint8Array(8 * 1024 * 1024))],
+    ['a grammar holding a script tag', fragmentOf(JSON.stringify({ v: 1, text: 'axiom: F\n<script>alert(1)</script>' }))],
+    ['an image with onerror', fragmentOf(JSON.stringify({ v: 1, text: '<img src=x onerror=alert(1)>' }))],
+    ['a newer format', fragmentOf(JSON.stringify({ v: 9, text: 'axiom: F' }), 9)],
+    ['a malformed camera', fragmentOf(JSON.stringify({ v: 1, text: 'axiom: F', camera: { position: 'x' } }))],
+  ];
+
+  it.each(hostile)('refuse %s politely, and the studio opens as usual', async (_name, fragment) => {
+    const { page, problems } = await openAt(inject('studioUrl') + fragment);
+    const notice = page.getByTestId('notice');
+    expect(await notice.isVisible()).toBe(true);
+    expect(await notice.getAttribute('data-kind')).toBe('error');
+    expect(await notice.getAttribute('role')).toBe('alert');
+    expect(await page.getByTestId('notice-text').textContent()).toMatch(/^This link could not be opened: .+\. The studio opened as usual\.$/);
+    expect(await editorText(page)).toBe(example('abop-1.24d.lsys'));
+    expect(await page.evaluate(() => document.querySelectorAll('script:not([src]), img[onerror]').length)).toBe(0);
+    expect(problems).toEqual([]);
+    await page.getByTestId('notice-close').click();
+    expect(await notice.isHidden()).toBe(true);
+    await page.close();
+  });
+});
+
+describe('saving work', () => {
+  it('autosaves the text: it survives a reload', async () => {
+    const context = await newContext();
+    const { page, problems } = await openAt(inject('studioUrl'), context);
+    const mine = '// my own bush\n#angle 30\naxiom: F\nF -> F[+F]F[-F]F';
+    await typeText(page, mine);
+    await page.waitForTimeout(500); // autosave waits for a pause in typing
+    await page.reload();
+    await page.waitForFunction(() => window.__meristem?.preview?.settled === true && (window.__meristem.lastStats?.segments ?? 0) > 0);
+    expect(await editorText(page)).toBe(mine);
+    expect(problems).toEqual([]);
+    await context.close();
+  });
+
+  it('keeps the earlier work in My grammars when a link is opened over it', async () => {
+    const context = await newContext();
+    const first = await openAt(inject('studioUrl'), context);
+    const mine = '// work in progress\naxiom: F+F+F';
+    await typeText(first.page, mine);
+    await first.page.waitForTimeout(500);
+    await first.page.close();
+    const link = fragmentOf(JSON.stringify({ v: 1, text: '// from a friend\naxiom: F-F-F', iterations: 0 }));
+    const { page, problems } = await openAt(inject('studioUrl') + link, context);
+    expect(await editorText(page)).toBe('// from a friend\naxiom: F-F-F');
+    expect(await page.getByTestId('notice-text').textContent()).toBe(
+      'Opened a shared link. Your previous text is kept in My grammars as “Before a shared link: work in progress”.',
+    );
+    await page.getByTestId('file-menu').locator('summary').click();
+    await page.getByTestId('open-library').click();
+    const item = page.getByTestId('library-list').locator('li');
+    expect(await item.count()).toBe(1);
+    await item.getByTestId('library-open').click();
+    expect(await page.getByTestId('confirm-replace').isVisible(), 'the link’s text is the user’s now: asked first').toBe(true);
+    await page.getByTestId('confirm-replace-button').click();
+    await expect.poll(() => editorText(page)).toBe(mine);
+    expect(problems).toEqual([]);
+    await context.close();
+  });
+
+  it('My grammars: save, rename, duplicate, delete and open', async () => {
+    const context = await newContext();
+    const { page, problems } = await openAt(inject('studioUrl'), context);
+    const library = page.getByTestId('library');
+    const items = library.getByTestId('library-list').locator('li');
+    await page.getByTestId('file-menu').locator('summary').click();
+    await page.getByTestId('open-library').click();
+    expect(await library.isVisible()).toBe(true);
+    // The name field suggests the grammar's own title, its first comment line.
+    expect(await page.getByTestId('library-name').inputValue()).toBe(example('abop-1.24d.lsys').split('\n')[0].replace(/^\/\/\s*/, ''));
+    await page.getByTestId('library-name').fill('Bush <b>bold</b>');
+    await page.getByTestId('library-save').click();
+    expect(await items.count()).toBe(1);
+    expect(await items.first().locator('.library-name').textContent()).toBe('Bush <b>bold</b>');
+    expect(await items.first().locator('b').count(), 'names are text, never HTML').toBe(0);
+    await items.first().getByTestId('library-duplicate').click();
+    expect(await items.count()).toBe(2);
+    expect(await items.allTextContents()).toEqual([expect.stringContaining('Bush <b>bold</b> (copy)'), expect.stringContaining('Bush <b>bold</b>')]);
+    await items.first().getByTestId('library-rename').click();
+    await library.getByTestId('library-rename-input').fill('Second bush');
+    await page.keyboard.press('Enter');
+    expect(await items.first().locator('.library-name').textContent()).toBe('Second bush');
+    await items.nth(1).getByTestId('library-delete').click();
+    expect(await items.count(), 'the first click only asks').toBe(2);
+    await items.nth(1).getByTestId('library-delete').click();
+    expect(await items.count()).toBe(1);
+    // Saved grammars outlive the page.
+    await page.keyboard.press('Escape');
+    await typeText(page, 'axiom: FF');
+    await page.reload();
+    await page.waitForFunction(() => window.__meristem?.preview?.settled === true);
+    await page.getByTestId('file-menu').locator('summary').click();
+    await page.getByTestId('open-library').click();
+    expect(await items.count()).toBe(1);
+    await savePage(page, 'my-grammars.png');
+    await items.first().getByTestId('library-open').click();
+    await page.getByTestId('confirm-replace-button').click();
+    await expect.poll(() => editorText(page)).toBe(example('abop-1.24d.lsys'));
+    expect(problems).toEqual([]);
+    await context.close();
+  });
+});
+
+describe('grammar files', () => {
+  const lparser = new URL('../../crate/tests/import/lparser/abop-monopodial-tree.ls', import.meta.url);
+  const cpfg = new URL('../../crate/tests/import/cpfg/monopodial.l', import.meta.url);
+
+  it('imports an Lparser file from the picker, with its notes, and draws it', async () => {
+    const { page, problems } = await openAt(inject('studioUrl'));
+    const before = await generation(page);
+    await page.getByTestId('file-input').setInputFiles(lparser.pathname);
+    expect(await nextBuild(page, before)).toBe('ok');
+    expect(await editorText(page)).toMatch(/^\/\/ Imported from Lparser \(positional format\)/);
+    expect(await page.getByTestId('notice').getAttribute('data-kind')).toBe('info');
+    expect(await page.getByTestId('notice-text').textContent()).toMatch(/^Imported abop-monopodial-tree\.ls from Lparser\. Not translated, or only approximately \(\d+\):$/);
+    expect(await page.getByTestId('notice-list').locator('li').allTextContents()).toContainEqual(expect.stringMatching(/^line 23: '~' without a value/));
+    await savePage(page, 'imported-lparser.png');
+    expect(problems).toEqual([]);
+    await page.close();
+  });
+
+  it('imports a cpfg file dropped on the page (not inserted into the editor as text)', async () => {
+    const { page, problems } = await openAt(inject('studioUrl'));
+    const bytes = [...readFileSync(cpfg)];
+    const before = await generation(page);
+    const drop = await page.evaluateHandle((data) => {
+      const transfer = new DataTransfer();
+      transfer.items.add(new File([new Uint8Array(data)], 'monopodial.l', { type: 'text/plain' }));
+      return transfer;
+    }, bytes);
+    await page.dispatchEvent('[data-testid=editor] .cm-content', 'dragenter', { dataTransfer: drop });
+    expect(await page.locator('#studio').getAttribute('class')).toContain('drop-target');
+    await page.dispatchEvent('[data-testid=editor] .cm-content', 'drop', { dataTransfer: drop });
+    expect(await nextBuild(page, before)).toBe('ok');
+    const text = await editorText(page);
+    expect(text).toMatch(/^\/\/ Imported from cpfg/);
+    expect(text).not.toContain('Lsystem:');
+    expect(await page.getByTestId('notice-text').textContent()).toMatch(/^Imported monopodial\.l from cpfg/);
+    expect(await page.locator('#studio').getAttribute('class')).not.toContain('drop-target');
+    expect(problems).toEqual([]);
+    await page.close();
+  });
+
+  it('saves the grammar as a .lsys file (Ctrl+S), and opens it back as it is', async () => {
+    const { page, problems } = await openAt(inject('studioUrl'));
+    const mine = '// Tiny fern\n#angle 25\naxiom: X\nX -> F[+X]F[-X]+X\nF -> FF';
+    await typeText(page, mine);
+    const [download] = await Promise.all([page.waitForEvent('download'), page.keyboard.press('Control+S')]);
+    expect(download.suggestedFilename()).toBe('tiny-fern.lsys');
+    const saved = readFileSync(await download.path(), 'utf8');
+    expect(saved).toBe(mine);
+    await typeText(page, 'axiom: F');
+    const before = await generation(page);
+    await page.getByTestId('file-input').setInputFiles({ name: 'tiny-fern.lsys', mimeType: 'text/plain', buffer: Buffer.from(saved) });
+    await page.getByTestId('confirm-replace-button').click();
+    expect(await nextBuild(page, before)).toBe('ok');
+    expect(await editorText(page)).toBe(mine);
+    expect(await page.getByTestId('notice').isHidden()).toBe(true);
+    // A file that is not text is refused with a message; the text stays.
+    await page.getByTestId('file-input').setInputFiles({ name: 'photo.lsys', mimeType: 'image/png', buffer: Buffer.from([0x89, 0x50, 0x4e, 0x47, 0, 0, 0]) });
+    await expect.poll(() => page.getByTestId('notice-text').textContent()).toBe('Could not open photo.lsys: photo.lsys is not a text file.');
+    expect(await editorText(page)).toBe(mine);
+    expect(problems).toEqual([]);
+    await page.close();
+  });
+});

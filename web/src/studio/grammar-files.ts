@@ -1,0 +1,69 @@
+// Opening and saving grammar files: `.lsys` (Meristem's language) as it is, Green, Lparser `.ls`,
+// cpfg `.l` and L-Py `.lpy` through the core's importers, with their notes; text that is not UTF-8
+// (old Lparser files) read as Windows-1252. Saving writes the editor's text as `NAME.lsys`.
+import { importGrammar, type Dialect } from '../core';
+
+/** Largest grammar file opened (bytes). */
+export const MAX_FILE_BYTES = 1_000_000;
+
+/** What opening a file gives. */
+export type OpenedFile =
+  | {
+      ok: true;
+      /** The grammar in Meristem's language. */
+      text: string;
+      /** The dialect it was imported from; null for Meristem's own. */
+      dialect: Dialect | null;
+      /** What the importer could not translate, `line N: …` (or a note about the encoding). */
+      notes: string[];
+    }
+  | { ok: false; error: string };
+
+const DIALECT_NAMES: Record<Dialect, string> = { green: "Green's RL-systems", lparser: 'Lparser', cpfg: 'cpfg', lpy: 'L-Py' };
+
+/** A dialect's name for people. */
+export function dialectName(dialect: Dialect): string {
+  return DIALECT_NAMES[dialect];
+}
+
+/** UTF-8 if the bytes are, else Windows-1252 (what pre-Unicode grammar files are written in). */
+export function decodeText(bytes: Uint8Array): { text: string; utf8: boolean } {
+  try {
+    return { text: new TextDecoder('utf-8', { fatal: true }).decode(bytes), utf8: true };
+  } catch {
+    return { text: new TextDecoder('windows-1252').decode(bytes), utf8: false };
+  }
+}
+
+/**
+ * Reads a grammar file: `.lsys` (and any file the importers do not recognise) as Meristem's
+ * language; other dialects, told by extension or content, translated with notes. Requires the
+ * core (for the importers).
+ */
+export function openGrammarBytes(name: string, bytes: Uint8Array): OpenedFile {
+  if (bytes.length > MAX_FILE_BYTES) {
+    return { ok: false, error: `${name} is too large for a grammar (${bytes.length.toLocaleString('en-US')} bytes; at most ${MAX_FILE_BYTES.toLocaleString('en-US')})` };
+  }
+  if (bytes.includes(0)) return { ok: false, error: `${name} is not a text file` };
+  const { text, utf8 } = decodeText(bytes);
+  const encoding = utf8 ? [] : ['The file is not UTF-8; it was read as Windows-1252.'];
+  if (/\.lsys$/i.test(name)) return { ok: true, text, dialect: null, notes: encoding };
+  const imported = importGrammar(text, name);
+  if (imported.dialect === null) return { ok: true, text, dialect: null, notes: encoding };
+  const notes = imported.notes.map((n) => (n.line > 0 ? `line ${n.line}: ${n.message}` : n.message));
+  return { ok: true, text: imported.text, dialect: imported.dialect, notes: [...encoding, ...notes] };
+}
+
+/** A file name for a grammar titled `title`: letters, digits, `-` and `_`, then `.lsys`. */
+export function lsysFileName(title: string): string {
+  const stem = title
+    .normalize('NFKD')
+    .replace(/[^\w\s-]/g, '')
+    .trim()
+    .replace(/[\s_]+/g, '-')
+    .replace(/-+/g, '-')
+    .slice(0, 60)
+    .replace(/^-|-$/g, '')
+    .toLowerCase();
+  return `${stem || 'grammar'}.lsys`;
+}
