@@ -9,6 +9,8 @@ import {
   MODEL_FORMATS,
   turtleCommands,
   type BuildOptions,
+  type EditsDocument,
+  type ExportOptions,
   type ModelFormat,
   type PlantStats,
 } from './core';
@@ -17,6 +19,7 @@ import { decodeState, encodeState, hasSharedState, type SharedState } from './sh
 import { GrammarStore, titleOf, type KeyValueStorage } from './share/storage';
 import { PlantView, type ProjectionMode } from './view';
 import {
+  BranchEditSession,
   BuildClient,
   ContextView,
   GalleryDialog,
@@ -68,6 +71,12 @@ interface StudioTestHook {
   derivedHash?: () => Promise<string>;
   /** Where the camera in use stands. */
   cameraPose?: () => { position: number[]; target: number[]; zoom: number };
+  /** Branch editing: the selected branch's handles on the page, its path, and the edits. */
+  branches?: {
+    handlesOnPage: () => { x: number; y: number }[];
+    selectedPath: () => number[] | null;
+    document: () => unknown;
+  };
 }
 
 declare global {
@@ -125,6 +134,12 @@ function studioElements() {
     exportStatus: byId('export-status', HTMLElement),
     exportProgress: byId('export-progress', HTMLProgressElement),
     exportCancel: byId('export-cancel', HTMLButtonElement),
+    branchEditing: {
+      toggle: byId('edit-branches', HTMLButtonElement),
+      undo: byId('edit-undo', HTMLButtonElement),
+      redo: byId('edit-redo', HTMLButtonElement),
+      reset: byId('edit-reset', HTMLButtonElement),
+    },
     fileMenu: byId('file-menu', HTMLDetailsElement),
     openFile: byId('open-file', HTMLButtonElement),
     saveFile: byId('save-file', HTMLButtonElement),
@@ -187,6 +202,10 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   let editor: GrammarEditor | undefined;
   /** Set once autosave is ready (below); the editor calls it on every change. */
   let autosaveOnChange = () => {};
+  /** Set once branch editing is ready (below): the edits for downloads and links, and a link's. */
+  let editsForExport: () => EditsDocument | undefined = () => undefined;
+  let editsForLink: () => EditsDocument | undefined = () => undefined;
+  let restoreEdits: (doc: EditsDocument) => void = () => {};
   // The context-sensitivity view: the cursor on a production lights up what it wrote.
   const contexts = new ContextView(
     { panel: els.stringPanel, summary: els.explainSummary, byProduction: els.byProduction, legend: els.productionLegend },
@@ -426,6 +445,8 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
       projection: view.projectionMode,
     };
     state.camera = view.cameraPose();
+    const edits = editsForLink();
+    if (edits) state.edits = edits;
     return state;
   };
   els.share.addEventListener('click', () => {
@@ -443,6 +464,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
       void replaceText(opened.state.text, 'the shared link', 'link').then((done) => {
         if (!done) return;
         applyLinkOptions(opened.state);
+        if (opened.state.edits) restoreEdits(opened.state.edits);
         if (opened.state.camera) cameraToApply = opened.state.camera;
         preview.rebuild(true);
       });
@@ -471,12 +493,41 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     applyLinkOptions(start.state);
     cameraToApply = start.state.camera;
   }
+  // Branch editing (issue 8): the plant on screen with its edits, handles in Edit mode.
+  const branchEdits = new BranchEditSession(els.branchEditing, view, {
+    shown: () => {
+      const good = preview.lastGood;
+      return good && { source: good.source, options: good.options, segments: good.build.stats.segments, flat: good.build.flat };
+    },
+    tell: (kind, message, items) => (message === null ? notice.hide() : notice.show(kind, message, items)),
+    modeChanged: (on) => {
+      contexts.picking = !on;
+      if (on) contexts.pickModule(null);
+    },
+  });
+  preview.onDelivered((result) => {
+    if (result.build.ok) branchEdits.plantShown();
+  });
+  window.addEventListener('keydown', (event) => {
+    // Ctrl+Z over the view undoes branch edits; in the editor and fields it stays theirs.
+    const inText = (event.target as HTMLElement | null)?.closest('input, textarea, select, .cm-editor, dialog');
+    if (!inText && (branchEdits.active || branchEdits.document()) && branchEdits.handleKey(event)) event.preventDefault();
+  });
+  if (start.from === 'link' && start.state?.edits) branchEdits.restore(start.state.edits);
+  editsForExport = () => branchEdits.document();
+  editsForLink = () => branchEdits.document();
+  restoreEdits = (doc) => branchEdits.restore(doc);
+  hook.branches = {
+    handlesOnPage: () => branchEdits.handlesOnPage(),
+    selectedPath: () => branchEdits.selectedPath(),
+    document: () => branchEdits.document() ?? null,
+  };
   hook.derivedHash = () => preview.lastGood?.inspector.derivedHash() ?? Promise.resolve('');
   hook.cameraPose = () => view.cameraPose();
 
   // Downloads: the plant on screen (the last good build's text and options), written by the page's
   // own core instance, as a model file or a PNG of the view.
-  installDownloads(els, view, () => preview.lastGood && { source: preview.lastGood.source, options: preview.lastGood.options });
+  installDownloads(els, view, () => preview.lastGood && { source: preview.lastGood.source, options: { ...preview.lastGood.options, edits: editsForExport() } });
 
   // Keyboard: shortcuts anywhere, their help, the splitter.
   const actions: Record<ShortcutAction, () => void> = {
@@ -511,7 +562,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
 function installDownloads(
   els: StudioElements,
   view: PlantView,
-  shown: () => { source: string; options: BuildOptions } | undefined,
+  shown: () => { source: string; options: ExportOptions } | undefined,
 ): void {
   const menuButtons = (): HTMLButtonElement[] => [...els.downloads.querySelectorAll('button')];
   const busy = (on: boolean) => {

@@ -2,6 +2,7 @@
 // behind a format version, so a link made today still opens after the format grows. Decoding
 // treats every fragment as hostile: length, encoding, inflated size, JSON shape, value ranges and
 // HTML-looking text are all checked, and any failure is a message, never an exception.
+import { validateEdits, type EditsDocument } from '../core/branches';
 
 /** The fragment's key: `#s=<version>.<payload>`. */
 export const FRAGMENT_KEY = 's';
@@ -36,6 +37,8 @@ export interface SharedState {
   };
   /** The camera in use: eye position, the point looked at, and the orthographic zoom. */
   camera?: { position: [number, number, number]; target: [number, number, number]; zoom?: number };
+  /** Branch edits (their Bézier handles moved), keyed by branch path. */
+  edits?: EditsDocument;
 }
 
 export type Decoded = { ok: true; state: SharedState } | { ok: false; error: string };
@@ -104,7 +107,7 @@ function isPoint(value: unknown): value is [number, number, number] {
 /** Checks the shape of a decoded state; copies only known fields. */
 export function validate(json: unknown): Decoded {
   if (!isRecord(json)) return fail('the link does not hold a state object');
-  const { text, iterations, seed, sliders, view, camera } = json;
+  const { text, iterations, seed, sliders, view, camera, edits } = json;
   if (typeof text !== 'string') return fail('the link holds no grammar text');
   if (text.length > MAX_TEXT) return fail(`the grammar in the link is too long (${text.length} characters; at most ${MAX_TEXT})`);
   if (HTML.test(text)) return fail('the grammar in the link looks like HTML or script, not an L-system');
@@ -155,6 +158,11 @@ export function validate(json: unknown): Decoded {
       if (typeof camera.zoom !== 'number' || !(camera.zoom > 1e-6 && camera.zoom < 1e6)) return fail('the link’s camera zoom is malformed');
       state.camera.zoom = camera.zoom;
     }
+  }
+  if (edits !== undefined) {
+    const checked = validateEdits(edits);
+    if (!checked.ok) return fail(`the link’s branch edits are malformed (${checked.error})`);
+    state.edits = checked.document;
   }
   return { ok: true, state };
 }

@@ -62,8 +62,8 @@ export class ContextView {
     }
     els.byProduction.addEventListener('change', () => this.refresh());
     view.canvas.addEventListener('click', (event) => {
-      // A click, not the end of an orbit drag.
-      if (event.detail === 0 || this.dragged(event)) return;
+      // A click, not the end of an orbit drag (nor a click that selects a branch to edit).
+      if (!this.picking || event.detail === 0 || this.dragged(event)) return;
       this.pickModule(view.pickModule(event.clientX, event.clientY));
     });
     view.canvas.addEventListener('pointerdown', (event) => {
@@ -72,6 +72,8 @@ export class ContextView {
   }
 
   private down = { x: 0, y: 0 };
+  /** Clicks on the plant pick modules (off while branches are edited: clicks select branches). */
+  picking = true;
 
   private dragged(event: MouseEvent): boolean {
     return Math.hypot(event.clientX - this.down.x, event.clientY - this.down.y) > 4;

@@ -20,3 +20,4 @@ export { Notice, type NoticeElements, type NoticeKind } from './notice';
 export { ShareDialog, linkWithFragment, type ShareDialogElements } from './share-dialog';
 export { LibraryDialog, type LibraryElements, type LibraryHost } from './library-dialog';
 export { openGrammarBytes, decodeText, dialectName, lsysFileName, MAX_FILE_BYTES, type OpenedFile } from './grammar-files';
+export { BranchEditSession, MAX_EDITABLE_SEGMENTS, pathText, staleEditsMessage, type BranchEditingElements, type BranchEditingHost } from './branch-editing';

@@ -13,8 +13,11 @@ import {
   MeshStandardMaterial,
   OrthographicCamera,
   PerspectiveCamera,
+  Plane,
   Raycaster,
   Scene,
+  Sphere,
+  Vector3,
   Vector2,
   WebGLRenderer,
   type Camera,
@@ -23,10 +26,11 @@ import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import type { MeshBuffers } from '../core';
 import { flatPose, framePose } from './framing';
 import { scenePalette } from './palette';
-import { plantGeometry } from './plant-geometry';
+import { plantGeometry, pointsBox } from './plant-geometry';
 import type { GpuArrays } from './gpu-arrays';
 import { addHeadlight, addSkyLight, litPlantMaterial, unlitPlantMaterial } from './scene-setup';
 import { highlightOverlay, moduleOfTriangle, type Rgb } from './highlight';
+import { BezierHandles } from './handles';
 
 const DARK_SCHEME = '(prefers-color-scheme: dark)';
 
@@ -88,6 +92,8 @@ export class PlantView {
       polygonOffsetUnits: -1,
     }),
   );
+  /** The selected branch's Bézier handles (branch editing). */
+  private readonly handles = new BezierHandles();
   private mode: ProjectionMode = 'auto';
   /** The plant on screen lies in the plane z = 0. */
   private flat = false;
@@ -110,7 +116,7 @@ export class PlantView {
     this.orthographic.controls.enableRotate = false; // a 2D view pans and zooms
     this.active = this.perspective;
     this.perspective.controls.enabled = true;
-    this.scene.add(this.perspective.camera, this.plant, this.lines, this.overlay);
+    this.scene.add(this.perspective.camera, this.plant, this.lines, this.overlay, this.handles.group);
     this.container.dataset.projection = 'perspective';
 
     this.applyPalette();
@@ -213,6 +219,76 @@ export class PlantView {
     const hit = this.raycaster.intersectObject(this.plant, false)[0];
     if (!hit || hit.faceIndex == null) return null;
     return moduleOfTriangle(mesh.ranges, hit.faceIndex);
+  }
+
+  /** The page point as normalised device coordinates of the canvas, set on the raycaster. */
+  private aim(clientX: number, clientY: number): void {
+    const rect = this.renderer.domElement.getBoundingClientRect();
+    const ndc = new Vector2(((clientX - rect.left) / rect.width) * 2 - 1, -((clientY - rect.top) / rect.height) * 2 + 1);
+    this.raycaster.setFromCamera(ndc, this.active.camera);
+  }
+
+  /** The triangle of the mesh on screen at a point of the page, or null. */
+  pickTriangle(clientX: number, clientY: number): number | null {
+    if (!this.mesh) return null;
+    this.aim(clientX, clientY);
+    const hit = this.raycaster.intersectObject(this.plant, false)[0];
+    return hit && hit.faceIndex != null ? hit.faceIndex : null;
+  }
+
+  /**
+   * After vertices of the mesh on screen were changed in place (its arrays are the geometry's),
+   * uploads only `ranges` ((first vertex, count) pairs) and updates the bounds.
+   */
+  patchVertices(ranges: Uint32Array): void {
+    const mesh = this.mesh;
+    if (!mesh) return;
+    const geometry = this.plant.geometry;
+    for (const name of ['position', 'normal'] as const) {
+      const attribute = geometry.getAttribute(name) as BufferAttribute | undefined;
+      if (!attribute || attribute.array !== (name === 'position' ? mesh.positions : mesh.normals)) continue;
+      attribute.clearUpdateRanges();
+      for (let k = 0; k + 1 < ranges.length; k += 2) attribute.addUpdateRange(3 * ranges[k], 3 * ranges[k + 1]);
+      attribute.needsUpdate = true;
+    }
+    geometry.boundingBox = pointsBox(mesh.positions);
+    geometry.boundingSphere = geometry.boundingBox.getBoundingSphere(new Sphere());
+    this.requestRender();
+  }
+
+  /** Shows a branch's handles at `points` (P0..P3, 12 floats), or hides them (null). */
+  showHandles(points: Float32Array | null): void {
+    const box = this.visibleBox();
+    const size = box.isEmpty() ? 1 : box.getSize(new Vector3()).length();
+    this.handles.show(points, size * 0.012);
+    this.requestRender();
+  }
+
+  /** The draggable handle (1, 2, 3) at a point of the page, or null. */
+  handleAt(clientX: number, clientY: number): 1 | 2 | 3 | null {
+    this.aim(clientX, clientY);
+    return this.handles.hit(this.raycaster);
+  }
+
+  /** Where a point of the page meets the plane through `through` facing the camera (a drag's target). */
+  dragTarget(clientX: number, clientY: number, through: [number, number, number]): [number, number, number] | null {
+    this.aim(clientX, clientY);
+    const normal = this.active.camera.getWorldDirection(new Vector3());
+    const plane = new Plane().setFromNormalAndCoplanarPoint(normal, new Vector3(...through));
+    const point = this.raycaster.ray.intersectPlane(plane, new Vector3());
+    return point ? [point.x, point.y, point.z] : null;
+  }
+
+  /** A model point's place on the page (CSS pixels), for tests and tooltips. */
+  pageOf(point: [number, number, number]): { x: number; y: number } {
+    const rect = this.renderer.domElement.getBoundingClientRect();
+    const p = new Vector3(...point).project(this.active.camera);
+    return { x: rect.left + ((p.x + 1) / 2) * rect.width, y: rect.top + ((1 - p.y) / 2) * rect.height };
+  }
+
+  /** Lets the mouse orbit the camera, or not (while a handle is dragged). */
+  setOrbitEnabled(enabled: boolean): void {
+    this.active.controls.enabled = enabled;
   }
 
   /** The canvas, for pointer events. */

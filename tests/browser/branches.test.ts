@@ -1,0 +1,164 @@
+// End-to-end: editing a branch by its Bézier handles (issue 8) in the built studio. Select a branch
+// of the game tree by clicking it, see its handles (pixels of the handle colour), drag one with the
+// mouse (the picture changes), undo and redo (the pictures come back), keep the edit across text
+// edits while its branch exists and say when it no longer applies, download it as the command-line
+// tool exports it with --edits, and carry it in a share link.
+import { readFileSync, writeFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { chromium, type Browser, type Page } from 'playwright-core';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { exportWithCli, removeScratch, scratchDir } from '../export/tools';
+import { colourShare, differingShare, foregroundMask, type Picture } from './pictures';
+import { canvasPicture, editorText, generation, nextBuild, openFromGallery, openStudio, savePage, twoFrames } from './studio-page';
+
+let browser: Browser;
+let page: Page;
+let problems: string[];
+const dir = scratchDir('branches');
+
+beforeAll(async () => {
+  browser = await chromium.launch({ executablePath: '/usr/bin/chromium' });
+  ({ page, problems } = await openStudio(browser));
+  await openFromGallery(page, 'game-tree.lsys');
+  await page.waitForFunction(() => window.__meristem?.preview?.settled === true && (window.__meristem.lastStats?.segments ?? 0) > 1000);
+  await page.getByTestId('grid').click(); // only the plant differs from the background
+  await twoFrames(page);
+});
+
+afterAll(async () => {
+  await browser?.close();
+  if (problems.length === 0) removeScratch(dir);
+});
+
+/** A point on the trunk: a plant pixel near the foot of the plant, in the middle of its row. */
+function trunkPoint(picture: Picture): { x: number; y: number } {
+  const mask = foregroundMask(picture);
+  const rows: number[] = [];
+  for (let y = 0; y < picture.height; y++) {
+    for (let x = 0; x < picture.width; x++) if (mask[y * picture.width + x]) {
+      rows.push(y);
+      break;
+    }
+  }
+  const y = Math.round(rows[0] + 0.95 * (rows.at(-1)! - rows[0]));
+  const xs: number[] = [];
+  for (let x = 0; x < picture.width; x++) if (mask[y * picture.width + x]) xs.push(x);
+  return { x: xs[Math.floor(xs.length / 2)], y };
+}
+
+const handles = () => page.evaluate(() => window.__meristem!.branches!.handlesOnPage());
+const editsDocument = () => page.evaluate(() => window.__meristem!.branches!.document());
+const isHandleColour = (r: number, g: number, b: number) => r > 200 && g > 70 && g < 180 && b < 90;
+
+describe('editing a branch by its Bézier handles', () => {
+  let before: Picture;
+  let after: Picture;
+  let edited: unknown;
+
+  it('selects a branch with a click and shows its handles', async () => {
+    before = await canvasPicture(page, 'branches-before.png');
+    await page.getByTestId('edit-branches').click();
+    expect(await page.getByTestId('edit-branches').getAttribute('aria-pressed')).toBe('true');
+    const canvas = (await page.locator('[data-testid=viewport] canvas').boundingBox())!;
+    const point = trunkPoint(before);
+    await page.mouse.click(canvas.x + point.x, canvas.y + point.y);
+    await twoFrames(page);
+    const path = await page.evaluate(() => window.__meristem!.branches!.selectedPath());
+    expect(path, 'a branch is selected').not.toBeNull();
+    expect((await handles()).length).toBe(4);
+    const shown = await canvasPicture(page, 'branches-handles.png');
+    expect(colourShare(shown, isHandleColour), 'the handles are drawn').toBeGreaterThan(0.0005);
+    expect(colourShare(before, isHandleColour)).toBe(0);
+    // The context view does not pick modules meanwhile.
+    expect(await page.getByTestId('explain-summary').textContent()).not.toMatch(/^Module/);
+  });
+
+  it('drags a handle: the branch and what grows on it move, and the edit is recorded', async () => {
+    const [, , , p3] = await handles();
+    await page.mouse.move(p3.x, p3.y);
+    await page.mouse.down();
+    await page.mouse.move(p3.x + 60, p3.y + 10, { steps: 10 });
+    await page.mouse.up();
+    await twoFrames(page);
+    edited = await editsDocument();
+    expect(edited).toMatchObject({ version: 1, edits: [{ path: await page.evaluate(() => window.__meristem!.branches!.selectedPath()) }] });
+    await page.evaluate(() => window.__meristem!.branches!.handlesOnPage()); // still selected
+    after = await canvasPicture(page, 'branches-dragged.png');
+    // Hide the handles to compare plants: leave Edit mode (the edit stays).
+    await page.keyboard.press('Escape');
+    expect(await page.getByTestId('edit-branches').getAttribute('aria-pressed')).toBe('false');
+    after = await canvasPicture(page, 'branches-dragged-plant.png');
+    expect(differingShare(before, after, 40), 'the plant changed').toBeGreaterThan(0.002);
+    expect(await page.getByTestId('edit-undo').isEnabled()).toBe(true);
+    expect(await page.getByTestId('edit-reset').isEnabled()).toBe(true);
+  });
+
+  it('undoes and redoes the edit', async () => {
+    await page.getByTestId('edit-undo').click();
+    expect(await editsDocument()).toBeNull();
+    expect(differingShare(before, await canvasPicture(page, 'branches-undone.png'), 40)).toBeLessThan(0.0005);
+    await page.getByTestId('edit-redo').click();
+    expect(await editsDocument()).toEqual(edited);
+    expect(differingShare(after, await canvasPicture(page, 'branches-redone.png'), 40)).toBeLessThan(0.0005);
+  });
+
+  it('keeps the edit across text edits while its branch exists, and says when it no longer applies', async () => {
+    // Another tropism: the same branches, bent a little differently; the edit still applies.
+    let previous = await generation(page);
+    await page.locator('[data-testid=editor] .cm-line', { hasText: '#tropism' }).click();
+    await page.keyboard.press('End');
+    await page.keyboard.press('Backspace');
+    await page.keyboard.type('5'); // 0.04 → 0.05
+    expect(await nextBuild(page, previous)).toBe('ok');
+    expect(await editsDocument()).toEqual(edited);
+    expect(await page.getByTestId('notice').isHidden()).toBe(true);
+    // No iterations: nothing is drawn, the branch is gone; the edit is kept and named.
+    previous = await generation(page);
+    await page.getByTestId('iterations').fill('0');
+    expect(await nextBuild(page, previous)).toBe('ok');
+    await expect.poll(() => page.getByTestId('notice-text').textContent()).toBe(
+      '1 branch edit no longer applies to this plant (kept, in case the branch comes back):',
+    );
+    expect(await page.getByTestId('notice-list').textContent()).toMatch(/^branch [\d/]+: /);
+    expect(await editsDocument()).toEqual(edited);
+    // Back to the grammar's iterations: it applies again.
+    previous = await generation(page);
+    await page.getByTestId('iterations').fill('');
+    expect(await nextBuild(page, previous)).toBe('ok');
+    await expect.poll(() => page.getByTestId('notice').isHidden()).toBe(true);
+    await savePage(page, 'branches-page.png');
+  });
+
+  it('downloads the edited plant as meristem export --edits writes it', async () => {
+    const grammar = join(dir, 'grammar.lsys');
+    writeFileSync(grammar, (await editorText(page)) + '\n');
+    const editsFile = join(dir, 'edits.json');
+    writeFileSync(editsFile, JSON.stringify(await editsDocument()));
+    await page.getByTestId('downloads').locator('summary').click();
+    const [download] = await Promise.all([page.waitForEvent('download'), page.getByTestId('download-glb').click()]);
+    const bytes = readFileSync(await download.path());
+    const cli = exportWithCli(grammar, join(dir, 'plant.glb'), ['--edits', editsFile]);
+    const unedited = exportWithCli(grammar, join(dir, 'plain.glb'));
+    writeFileSync(join(dir, 'studio.glb'), bytes);
+    expect([bytes.length, bytes.equals(cli)], `the download is the command-line export with the edits (${dir})`).toEqual([cli.length, true]);
+    expect(bytes.equals(unedited)).toBe(false);
+  });
+
+  it('carries the edits in a share link', async () => {
+    await page.getByTestId('share').click();
+    const link = await page.getByTestId('share-link').inputValue();
+    await page.keyboard.press('Escape');
+    const other = await browser.newPage({ viewport: { width: 1280, height: 800 } });
+    await other.goto(link);
+    await other.waitForFunction(() => (window.__meristem?.lastStats?.segments ?? 0) > 1000 && window.__meristem?.preview?.settled === true);
+    expect(await other.evaluate(() => window.__meristem!.branches!.document())).toEqual(edited);
+    expect(await other.getByTestId('edit-reset').isEnabled()).toBe(true);
+    await other.close();
+    // Reset removes every edit, undoably.
+    await page.getByTestId('edit-reset').click();
+    expect(await editsDocument()).toBeNull();
+    await page.getByTestId('edit-undo').click();
+    expect(await editsDocument()).toEqual(edited);
+    expect(problems).toEqual([]);
+  });
+});
