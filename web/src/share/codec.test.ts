@@ -18,6 +18,7 @@ describe('share links', () => {
       sliders: { r: 0.75, theta: 22.5 },
       view: { sides: 12, smoothAll: true, byProduction: false, grid: true, lighting: false, projection: 'orthographic' },
       camera: { position: [1.5, 2, -3], target: [0, 1, 0], zoom: 2.5 },
+      edits: { version: 1, edits: [{ path: [0, 2, 1], handles: [[0, 0.1, 0], [0, 0, 0], [0.2, -0.1, 0.05]] }] },
     };
     const fragment = await encodeState(state);
     expect(fragment).toMatch(/^#s=1\.[A-Za-z0-9_-]+$/);
@@ -64,6 +65,8 @@ describe('share links', () => {
     ['a thousand sides', () => fragmentOf(JSON.stringify({ text: 'axiom: F', view: { sides: 1000 } })), /sides/],
     ['an unknown projection', () => fragmentOf(JSON.stringify({ text: 'axiom: F', view: { projection: 'fisheye' } })), /projection/],
     ['a zero zoom', () => fragmentOf(JSON.stringify({ text: 'axiom: F', camera: { position: [0, 0, 1], target: [0, 0, 0], zoom: 0 } })), /zoom/],
+    ['branch edits without a version', () => fragmentOf(JSON.stringify({ text: 'axiom: F', edits: { edits: [] } })), /branch edits/],
+    ['branch edits with a path of text', () => fragmentOf(JSON.stringify({ text: 'axiom: F', edits: { version: 1, edits: [{ path: ['x'], handles: [[0, 0, 0], [0, 0, 0], [0, 0, 0]] }] } })), /branch edits/],
     ['a view option that is not boolean', () => fragmentOf(JSON.stringify({ text: 'axiom: F', view: { grid: 'yes' } })), /grid/],
   ];
 
