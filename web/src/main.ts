@@ -24,6 +24,7 @@ import {
   ContextView,
   GalleryDialog,
   GalleryThumbnails,
+  GrowthPanel,
   LivePreview,
   Playback,
   SliderPanel,
@@ -115,6 +116,8 @@ function studioElements() {
     sliders: byId('sliders', HTMLElement),
     constantsCount: byId('constants-count', HTMLElement),
     constantsEmpty: byId('constants-empty', HTMLElement),
+    growthRows: byId('growth-rows', HTMLElement),
+    growthCount: byId('growth-count', HTMLElement),
     splitter: byId('splitter', HTMLElement),
     openGallery: byId('open-gallery', HTMLButtonElement),
     gallery: byId('gallery', HTMLDialogElement),
@@ -228,11 +231,16 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   const sliders = new SliderPanel(els.sliders, els.constantsCount, els.constantsEmpty, {
     replaceRange: (from, to, insert, history) => editor?.replaceRange(from, to, insert, history),
   });
+  const growth = new GrowthPanel(els.growthRows, els.growthCount, {
+    text: () => editor?.text() ?? source,
+    replaceRange: (from, to, insert) => editor?.replaceRange(from, to, insert),
+  });
   editor = createGrammarEditor({
     parent: els.editor,
     doc: source,
     onChange: (text) => {
       sliders.update(text);
+      growth.update(text);
       preview.rebuild();
       autosaveOnChange();
     },
@@ -243,6 +251,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   });
   const grammarEditor = editor;
   sliders.update(source);
+  growth.update(source);
 
   // Iterations: the box, step −/+, play / pause.
   const grammarIterations = () => preview.lastResult?.build.grammarIterations ?? 0;

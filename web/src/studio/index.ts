@@ -21,3 +21,4 @@ export { ShareDialog, linkWithFragment, type ShareDialogElements } from './share
 export { LibraryDialog, type LibraryElements, type LibraryHost } from './library-dialog';
 export { openGrammarBytes, decodeText, dialectName, lsysFileName, MAX_FILE_BYTES, type OpenedFile } from './grammar-files';
 export { BranchEditSession, MAX_EDITABLE_SEGMENTS, pathText, staleEditsMessage, type BranchEditingElements, type BranchEditingHost } from './branch-editing';
+export { GrowthPanel, type GrowthEditor } from './growth-panel';

@@ -1,0 +1,75 @@
+// End-to-end: the Growth panel (issue 8, seed 002's particle attributes) writes its directives into
+// the text, one undoable change each, and the plant follows.
+import { chromium, type Browser, type Page } from 'playwright-core';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { editorText, generation, nextBuild, openStudio, savePage, shownStats } from './studio-page';
+
+let browser: Browser;
+let page: Page;
+let problems: string[];
+
+beforeAll(async () => {
+  browser = await chromium.launch({ executablePath: '/usr/bin/chromium' });
+  ({ page, problems } = await openStudio(browser));
+});
+
+afterAll(async () => {
+  await browser?.close();
+});
+
+describe('the Growth panel', () => {
+  it('switches lifetime on and off, edits its values, and the plant follows', async () => {
+    const plain = (await shownStats(page))!.segments;
+    await page.getByTestId('growth').locator('summary').click();
+    expect(await page.getByTestId('growth-lifetime-mb').isDisabled()).toBe(true);
+
+    let before = await generation(page);
+    await page.getByTestId('growth-lifetime').check();
+    expect(await nextBuild(page, before)).toBe('ok');
+    expect(await editorText(page)).toContain('\n#lifetime 34 32\naxiom: X');
+    const living = (await shownStats(page))!.segments;
+    expect(living, 'apices stop growing: fewer segments').toBeLessThan(plain);
+
+    before = await generation(page);
+    await page.getByTestId('growth-lifetime-mb').fill('2');
+    await page.getByTestId('growth-lifetime-vb').fill('0');
+    await page.getByTestId('growth-lifetime-vb').press('Tab');
+    expect(await nextBuild(page, before)).toBe('ok');
+    expect(await editorText(page)).toContain('\n#lifetime 2 0\n');
+    expect((await shownStats(page))!.segments).toBeLessThan(living);
+
+    // What the core would not read is marked, and not written.
+    await page.getByTestId('growth-lifetime-mb').fill('two apices');
+    await page.getByTestId('growth-lifetime-mb').press('Tab');
+    expect(await page.getByTestId('growth-lifetime-mb').getAttribute('aria-invalid')).toBe('true');
+    expect(await editorText(page)).toContain('\n#lifetime 2 0\n');
+    await savePage(page, 'growth-panel.png');
+
+    before = await generation(page);
+    await page.getByTestId('growth-lifetime').uncheck();
+    expect(await nextBuild(page, before)).toBe('ok');
+    expect(await editorText(page)).not.toContain('#lifetime');
+    expect((await shownStats(page))!.segments).toBe(plain);
+    expect(problems).toEqual([]);
+  });
+
+  it('sets the sun and the season together with gravity', async () => {
+    let before = await generation(page);
+    await page.getByTestId('growth-sun').check();
+    expect(await nextBuild(page, before)).toBe('ok');
+    before = await generation(page);
+    await page.getByTestId('growth-sun-season').selectOption('winter');
+    expect(await nextBuild(page, before)).toBe('ok');
+    before = await generation(page);
+    await page.getByTestId('growth-gravity').check();
+    expect(await nextBuild(page, before)).toBe('ok');
+    const text = await editorText(page);
+    expect(text).toContain('#sun 38 winter 2\n#gravity 5 3\naxiom: X');
+    // Typing in the editor updates the panel.
+    await page.locator('[data-testid=editor] .cm-line', { hasText: '#gravity' }).click();
+    await page.keyboard.press('End');
+    await page.keyboard.type('0'); // #gravity 5 30
+    await expect.poll(() => page.getByTestId('growth-gravity-variation').inputValue()).toBe('30');
+    expect(problems).toEqual([]);
+  });
+});
