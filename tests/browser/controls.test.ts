@@ -132,6 +132,8 @@ describe('iterations: step and play', () => {
     await page.getByTestId('play').click();
     expect(await page.getByTestId('play').getAttribute('aria-pressed')).toBe('true');
     await page.waitForFunction(() => document.querySelector('[data-testid=play]')?.getAttribute('aria-pressed') === 'false', null, { timeout: 20_000 });
+    // Play stops as it asks for the last plant (the grammar's own iterations): wait for it.
+    await page.waitForFunction(() => window.__meristem?.preview?.settled === true && window.__meristem.lastStats?.iterations === 7);
     const shown = await page.evaluate(() => (window as unknown as { __iterations: number[] }).__iterations);
     expect(shown).toEqual([0, 1, 2, 3, 4, 5, 6, 7]);
     expect(await page.getByTestId('iterations').inputValue(), 'it ends on the grammar’s own iterations').toBe('');
