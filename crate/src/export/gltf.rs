@@ -333,8 +333,14 @@ mod tests {
         assert_eq!(texcoord["type"], "VEC2");
         assert_eq!(texcoord["count"], mesh.vertex_count());
         let materials = document["materials"].as_array().expect("materials");
-        let names: Vec<&str> = materials.iter().filter_map(|m| m["name"].as_str()).collect();
-        assert_eq!(names, ["color_0", "color_0_leaf", "color_0_plain", "color_1_leaf"]);
+        let names: Vec<&str> = materials
+            .iter()
+            .filter_map(|m| m["name"].as_str())
+            .collect();
+        assert_eq!(
+            names,
+            ["color_0", "color_0_leaf", "color_0_plain", "color_1_leaf"]
+        );
         assert_eq!(materials[1]["alphaMode"], "MASK");
         assert_eq!(materials[1]["doubleSided"], true);
         assert!(materials[0]["pbrMetallicRoughness"]["baseColorTexture"].is_object());
