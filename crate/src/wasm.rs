@@ -297,6 +297,18 @@ impl Build {
         js_sys::Uint32Array::from(&self.inner.mesh.indices[..])
     }
 
+    /// Texture coordinates, 2 floats per vertex (layout: `MeshBuffers::uvs`).
+    pub fn uvs(&self) -> js_sys::Float32Array {
+        js_sys::Float32Array::from(&self.inner.mesh.uvs[..])
+    }
+
+    /// Material kinds: (first triangle, kind) pairs, 0 bark, 1 leaf, 2 plain (layout:
+    /// `MeshBuffers::material_ranges`).
+    #[wasm_bindgen(js_name = materialRanges)]
+    pub fn material_ranges(&self) -> js_sys::Uint32Array {
+        js_sys::Uint32Array::from(&self.inner.mesh.material_ranges[..])
+    }
+
     /// Provenance: (first triangle, module) pairs, sorted (layout: `MeshBuffers::ranges`); the
     /// module is an index into the derived string.
     pub fn ranges(&self) -> js_sys::Uint32Array {
