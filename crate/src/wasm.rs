@@ -720,6 +720,23 @@ impl Build {
         self.gather(&self.inner.mesh.normals)
     }
 
+    /// The texture coordinates of the changed vertices, range after range (2 floats per vertex:
+    /// a re-meshed tube's v follows its new length).
+    #[wasm_bindgen(js_name = changedUvs)]
+    pub fn changed_uvs(&self) -> js_sys::Float32Array {
+        let change = self.last_change();
+        let out = js_sys::Float32Array::new_with_length(2 * change.vertices() as u32);
+        let uvs = &self.inner.mesh.uvs;
+        let mut at = 0;
+        for r in &change.ranges {
+            let from = (2 * r[0] as usize).min(uvs.len());
+            let to = (2 * (r[0] as usize + r[1] as usize)).min(uvs.len());
+            out.set(&js_sys::Float32Array::from(&uvs[from..to]), at);
+            at += (to - from) as u32;
+        }
+        out
+    }
+
     /// The positions of vertices `first .. first + count` (clamped to the mesh).
     #[wasm_bindgen(js_name = positionsRange)]
     pub fn positions_range(&self, first: u32, count: u32) -> js_sys::Float32Array {

@@ -34,7 +34,7 @@ describe('textures', () => {
       return Promise.all(urls.map(async (u) => (await fetch(u)).headers.get('content-type')));
     });
     expect(served).toEqual(['image/png', 'image/png']);
-    await page.waitForTimeout(500);
+    await expect.poll(() => viewport.getAttribute('data-textures')).toBe('true');
     expect(await viewport.getAttribute('data-textures-error')).toBeNull();
     const textured = await canvasPicture(page, 'textures-on-canvas.png');
     await savePage(page, 'textures-on.png');

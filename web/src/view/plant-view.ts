@@ -75,14 +75,16 @@ export class PlantView {
   private readonly unlit = unlitPlantMaterial();
   /** Bark and leaf textured materials ([bark, leaf, plain], by the mesh's material groups). */
   private readonly textured = texturedMaterials(
-    loadTexture('bark', () => this.requestRender(), (message) => this.texturesFailed(message)),
-    loadTexture('leaf', () => this.requestRender(), (message) => this.texturesFailed(message)),
+    loadTexture('bark', () => this.textureLoaded(), (message) => this.texturesFailed(message)),
+    loadTexture('leaf', () => this.textureLoaded(), (message) => this.texturesFailed(message)),
     this.lit,
     this.unlit,
   );
   private lighting = true;
   private texturing = true;
-  private readonly plant = new Mesh<BufferGeometry, Material | Material[]>(new BufferGeometry(), this.textured.lit);
+  /** Images loaded so far (of 2): the plant shows untextured until both are there. */
+  private texturesLoaded = 0;
+  private readonly plant = new Mesh<BufferGeometry, Material | Material[]>(new BufferGeometry(), this.lit);
   /** The fallback for models too large to mesh: one coloured line per segment. */
   private readonly lines = new LineSegments(new BufferGeometry(), new LineBasicMaterial({ vertexColors: true }));
   private grid: GridHelper | undefined;
@@ -256,11 +258,15 @@ export class PlantView {
     const mesh = this.mesh;
     if (!mesh) return;
     const geometry = this.plant.geometry;
-    for (const name of ['position', 'normal'] as const) {
+    for (const [name, array, size] of [
+      ['position', mesh.positions, 3],
+      ['normal', mesh.normals, 3],
+      ['uv', mesh.uvs, 2],
+    ] as const) {
       const attribute = geometry.getAttribute(name) as BufferAttribute | undefined;
-      if (!attribute || attribute.array !== (name === 'position' ? mesh.positions : mesh.normals)) continue;
+      if (!attribute || attribute.array !== array) continue;
       attribute.clearUpdateRanges();
-      for (let k = 0; k + 1 < ranges.length; k += 2) attribute.addUpdateRange(3 * ranges[k], 3 * ranges[k + 1]);
+      for (let k = 0; k + 1 < ranges.length; k += 2) attribute.addUpdateRange(size * ranges[k], size * ranges[k + 1]);
       attribute.needsUpdate = true;
     }
     geometry.boundingBox = pointsBox(mesh.positions);
@@ -469,9 +475,16 @@ export class PlantView {
 
   private applyMaterial(): void {
     const textured = this.lighting ? this.textured.lit : this.textured.unlit;
-    this.plant.material = this.texturing ? textured : this.lighting ? this.lit : this.unlit;
-    this.container.dataset.textures = String(this.texturing);
+    const on = this.texturing && this.texturesLoaded === 2;
+    this.plant.material = on ? textured : this.lighting ? this.lit : this.unlit;
+    this.container.dataset.textures = String(on);
     this.requestRender();
+  }
+
+  /** An image arrived; with both, the plant is drawn textured (if the toggle is on). */
+  private textureLoaded(): void {
+    this.texturesLoaded++;
+    this.applyMaterial();
   }
 
   /** A texture did not load: show the plant untextured, and say so on the container (for tests). */
