@@ -48,4 +48,19 @@ describe('textures', () => {
     expect(await viewport.getAttribute('data-textures')).toBe('true');
     expect(problems).toEqual([]);
   });
+
+  it('shows bark on thick branches (a close-up screenshot of smooth-tree)', async () => {
+    const before = await generation(page);
+    await openFromGallery(page, 'smooth-tree.lsys');
+    const replace = page.getByTestId('confirm-replace-button');
+    if (await replace.isVisible()) await replace.click();
+    expect(await nextBuild(page, before)).toBe('ok');
+    const box = (await page.getByTestId('viewport').boundingBox())!;
+    await page.mouse.move(box.x + box.width / 2, box.y + box.height * 0.7);
+    for (let k = 0; k < 6; k++) await page.mouse.wheel(0, -300);
+    await page.waitForTimeout(300);
+    const close = await canvasPicture(page, 'textures-smooth-tree-canvas.png');
+    expect(foregroundShare(close)).toBeGreaterThan(0.05);
+    expect(problems).toEqual([]);
+  });
 });
