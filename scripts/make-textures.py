@@ -90,7 +90,9 @@ def leaf():
     rows = []
     for j in range(SIZE):
         v = (j + 0.5) / SIZE
-        half = 0.5 * math.sin(math.pi * v) ** 0.5  # half-width of the outline at v
+        # Half-width of the outline at v: full over most of the length, rounding off only near
+        # the base and the tip, so a leaf's own drawn outline is never cut into.
+        half = 0.5 * min(1.0, 1.6 * math.sin(math.pi * v) ** 0.5)
         row = []
         for i in range(SIZE):
             u = (i + 0.5) / SIZE
