@@ -145,11 +145,14 @@ fn export_target(args: &Args) -> Result<(PathBuf, Format), String> {
 }
 
 /// Writes the files of an export: the first at `output`, any others (OBJ's MTL) beside it with
-/// their own extension.
+/// their own extension, texture images (POV-Ray's) beside it with their own names.
 fn write_export(output: &Path, files: &[export::ExportedFile]) -> Result<(), String> {
     for (k, file) in files.iter().enumerate() {
         let path = if k == 0 {
             output.to_path_buf()
+        } else if file.mime == "image/png" {
+            // A texture keeps its own name (`bark.png`): the scene refers to it by that name.
+            output.with_file_name(&file.name)
         } else {
             let extension = file.name.rsplit('.').next().unwrap_or("");
             output.with_extension(extension)

@@ -297,6 +297,18 @@ impl Build {
         js_sys::Uint32Array::from(&self.inner.mesh.indices[..])
     }
 
+    /// Texture coordinates, 2 floats per vertex (layout: `MeshBuffers::uvs`).
+    pub fn uvs(&self) -> js_sys::Float32Array {
+        js_sys::Float32Array::from(&self.inner.mesh.uvs[..])
+    }
+
+    /// Material kinds: (first triangle, kind) pairs, 0 bark, 1 leaf, 2 plain (layout:
+    /// `MeshBuffers::material_ranges`).
+    #[wasm_bindgen(js_name = materialRanges)]
+    pub fn material_ranges(&self) -> js_sys::Uint32Array {
+        js_sys::Uint32Array::from(&self.inner.mesh.material_ranges[..])
+    }
+
     /// Provenance: (first triangle, module) pairs, sorted (layout: `MeshBuffers::ranges`); the
     /// module is an index into the derived string.
     pub fn ranges(&self) -> js_sys::Uint32Array {
@@ -706,6 +718,23 @@ impl Build {
     #[wasm_bindgen(js_name = changedNormals)]
     pub fn changed_normals(&self) -> js_sys::Float32Array {
         self.gather(&self.inner.mesh.normals)
+    }
+
+    /// The texture coordinates of the changed vertices, range after range (2 floats per vertex:
+    /// a re-meshed tube's v follows its new length).
+    #[wasm_bindgen(js_name = changedUvs)]
+    pub fn changed_uvs(&self) -> js_sys::Float32Array {
+        let change = self.last_change();
+        let out = js_sys::Float32Array::new_with_length(2 * change.vertices() as u32);
+        let uvs = &self.inner.mesh.uvs;
+        let mut at = 0;
+        for r in &change.ranges {
+            let from = (2 * r[0] as usize).min(uvs.len());
+            let to = (2 * (r[0] as usize + r[1] as usize)).min(uvs.len());
+            out.set(&js_sys::Float32Array::from(&uvs[from..to]), at);
+            at += (to - from) as u32;
+        }
+        out
     }
 
     /// The positions of vertices `first .. first + count` (clamped to the mesh).

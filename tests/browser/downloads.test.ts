@@ -96,7 +96,7 @@ afterAll(async () => {
 });
 
 describe('the Download menu', () => {
-  it.each(['wrl', 'glb', 'pov', 'iv', 'svg'])('%s: the bytes of meristem export', async (format) => {
+  it.each(['wrl', 'glb', 'iv', 'svg'])('%s: the bytes of meristem export', async (format) => {
     const download = await clickDownload(`download-${format}`);
     expect(download.suggestedFilename()).toBe(`plant.${format}`);
     const bytes = await downloadedBytes(download);
@@ -115,6 +115,19 @@ describe('the Download menu', () => {
     const obj = exportWithCli(grammarFile, join(dir, 'plant.obj'), CLI_OPTIONS);
     expect(Buffer.from(entries['plant.obj']).equals(obj)).toBe(true);
     expect(Buffer.from(entries['plant.mtl']).equals(readFileSync(join(dir, 'plant.mtl')))).toBe(true);
+    expect(problems).toEqual([]);
+  });
+
+  it('pov: a zip of the scene and the texture images that meristem export writes beside it', async () => {
+    const download = await clickDownload('download-pov');
+    expect(download.suggestedFilename()).toBe('plant.zip');
+    const entries = unzipSync(new Uint8Array(await downloadedBytes(download)));
+    const names = Object.keys(entries);
+    expect(names[0]).toBe('plant.pov');
+    expect(names.slice(1).every((n) => n === 'bark.png' || n === 'leaf.png') && names.length > 1).toBe(true);
+    const pov = exportWithCli(grammarFile, join(dir, 'plant.pov'), CLI_OPTIONS);
+    expect(Buffer.from(entries['plant.pov']).equals(pov)).toBe(true);
+    for (const name of names.slice(1)) expect(Buffer.from(entries[name]).equals(readFileSync(join(dir, name)))).toBe(true);
     expect(problems).toEqual([]);
   });
 

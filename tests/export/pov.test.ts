@@ -68,7 +68,7 @@ describe('POV-Ray renders the exported scenes', () => {
 
   it('the pixel check can fail: a scene without the plant is blank', () => {
     const scene = readFileSync(join(goldenDir, 'leafy-3d.pov'), 'utf8');
-    const withoutPlant = scene.replace('object { Meristem_Plant }', '');
+    const withoutPlant = scene.replace('object { Meristem_Plant double_illuminate }', '');
     expect(withoutPlant).not.toBe(scene);
     writeFileSync(join(dir, 'no-plant.pov'), withoutPlant);
     expect(render('no-plant').plantPixels).toBe(0);

@@ -42,6 +42,18 @@ describe('exportModel (wasm) against meristem export (native)', () => {
         expect(Object.keys(entries)).toEqual(['plant.obj', 'plant.mtl']);
         expect(Buffer.from(entries['plant.obj']).equals(cli)).toBe(true);
         expect(Buffer.from(entries['plant.mtl']).equals(readFileSync(join(dir, 'plant.mtl')))).toBe(true);
+      } else if (format === 'pov') {
+        // The scene and the texture images it names, written by the CLI beside it.
+        expect([file.fileName, file.mimeType]).toEqual(['plant.zip', 'application/zip']);
+        const entries = unzipSync(file.bytes);
+        const names = Object.keys(entries);
+        expect(names[0]).toBe('plant.pov');
+        expect(names.length).toBeGreaterThan(1);
+        expect(Buffer.from(entries['plant.pov']).equals(cli)).toBe(true);
+        for (const name of names.slice(1)) {
+          expect(['bark.png', 'leaf.png']).toContain(name);
+          expect(Buffer.from(entries[name]).equals(readFileSync(join(dir, name)))).toBe(true);
+        }
       } else {
         expect(file.fileName).toBe(`plant.${format}`);
         expect(file.bytes.length).toBe(cli.length);

@@ -112,6 +112,7 @@ function studioElements() {
     projection: byId('projection', HTMLButtonElement),
     grid: byId('grid', HTMLButtonElement),
     lighting: byId('lighting', HTMLButtonElement),
+    textures: byId('textures', HTMLButtonElement),
     staleBadge: byId('stale-badge', HTMLElement),
     sliders: byId('sliders', HTMLElement),
     constantsCount: byId('constants-count', HTMLElement),
@@ -299,6 +300,10 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   els.grid.addEventListener('click', () => {
     els.grid.setAttribute('aria-pressed', String(!pressed(els.grid)));
     view.setGridVisible(pressed(els.grid));
+  });
+  els.textures.addEventListener('click', () => {
+    els.textures.setAttribute('aria-pressed', String(!pressed(els.textures)));
+    view.setTextures(pressed(els.textures));
   });
   els.lighting.addEventListener('click', () => {
     els.lighting.setAttribute('aria-pressed', String(!pressed(els.lighting)));

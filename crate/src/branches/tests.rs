@@ -151,7 +151,7 @@ fn dvec(mesh: &[f32], v: usize) -> glam::DVec3 {
 }
 
 /// The mesh equals a full mesh of `build`'s skeleton with the editor's options: positions and
-/// normals within `eps`, everything else exactly.
+/// normals within `eps`, uvs within `eps` relative to their size, everything else exactly.
 fn assert_mesh_is_full_mesh(b: &mut Build, eps: f32) {
     let options = b.editor().options().clone();
     let mut full = build_mesh(&b.skeleton, &options);
@@ -164,8 +164,19 @@ fn assert_close(mesh: &MeshBuffers, full: &mut MeshBuffers, eps: f32) {
     assert_eq!(mesh.indices, full.indices);
     assert_eq!(mesh.ranges, full.ranges);
     assert_eq!(mesh.color_ranges, full.color_ranges);
+    assert_eq!(mesh.material_ranges, full.material_ranges);
     assert_eq!(mesh.colors, full.colors);
     assert_eq!(mesh.positions.len(), full.positions.len());
+    assert_eq!(mesh.uvs.len(), full.uvs.len());
+    // A texture coordinate along a tube grows with its length (in circumferences): compare
+    // relatively.
+    let uv = mesh
+        .uvs
+        .iter()
+        .zip(&full.uvs)
+        .map(|(x, y)| (x - y).abs() / y.abs().max(1.0))
+        .fold(0.0f32, f32::max);
+    assert!(uv <= eps.max(1e-4), "uvs off by {uv}");
     let worst = |a: &[f32], b: &[f32]| {
         a.iter()
             .zip(b)

@@ -4,11 +4,19 @@
 //! `POSITION`) and indexing them with `u32` indices. The JSON chunk is padded with spaces and the
 //! binary chunk with zeros to 4 bytes. A model too large to mesh becomes `LINES` primitives.
 //!
+//! Textures: a `TEXCOORD_0` accessor (`MeshBuffers::uvs`) and, within each colour index, one
+//! primitive per material kind (`MeshBuffers::material_ranges`): bark triangles (material
+//! `color_3`) with the bark texture, leaf triangles (`color_3_leaf`) with the leaf texture,
+//! `alphaMode` `MASK` and `doubleSided`, and sphere triangles (`color_3_plain`) untextured. The
+//! textures (`public/textures/*.png`, compiled in) are embedded in the binary chunk as
+//! `image/png` buffer views, only those some triangle uses, with a repeating, mipmapped sampler.
+//!
 //! Written here rather than with three.js's GLTFExporter so that the command-line tool and the
 //! studio give the same bytes, and so that it runs wherever the core runs (a worker, Node) with
 //! no `FileReader`.
 
 use super::scene::{Primitive, Scene};
+use crate::mesh::{MATERIAL_BARK, MATERIAL_LEAF, MATERIAL_PLAIN};
 use serde_json::{json, Value};
 
 const FLOAT: u32 = 5126;
@@ -17,6 +25,14 @@ const ARRAY_BUFFER: u32 = 34962;
 const ELEMENT_ARRAY_BUFFER: u32 = 34963;
 const TRIANGLES: u32 = 4;
 const LINES: u32 = 1;
+const LINEAR: u32 = 9729;
+const LINEAR_MIPMAP_LINEAR: u32 = 9987;
+const REPEAT: u32 = 10497;
+
+/// The bark texture (tileable, RGB), as shipped in `public/textures/`.
+pub const BARK_PNG: &[u8] = include_bytes!("../../../public/textures/bark.png");
+/// The leaf texture (RGBA, transparent around the leaf), as shipped in `public/textures/`.
+pub const LEAF_PNG: &[u8] = include_bytes!("../../../public/textures/leaf.png");
 
 /// The GLB bytes of `scene`.
 pub fn write(scene: &Scene) -> Vec<u8> {
@@ -28,6 +44,18 @@ pub fn write(scene: &Scene) -> Vec<u8> {
     let mut accessors: Vec<Value> = Vec::new();
     let mut materials: Vec<Value> = Vec::new();
     let mut primitives: Vec<Value> = Vec::new();
+    let mut images: Vec<Value> = Vec::new();
+    let mut textures: Vec<Value> = Vec::new();
+    let materials_of: Vec<u8> = if primitive == Primitive::Triangles {
+        scene.mesh.triangle_materials()
+    } else {
+        Vec::new()
+    };
+    let kind_of = |item: u32| {
+        materials_of
+            .get(item as usize)
+            .map_or(MATERIAL_PLAIN, |&m| m as u32)
+    };
 
     if !groups.is_empty() {
         let count = points.len() / 3;
@@ -48,41 +76,107 @@ pub fn write(scene: &Scene) -> Vec<u8> {
                 "bufferView": 1, "componentType": FLOAT, "count": count, "type": "VEC3",
             }));
             attributes["NORMAL"] = json!(1);
+            buffer_views.push(view(&mut bin, floats(&scene.mesh.uvs), Some(ARRAY_BUFFER)));
+            accessors.push(json!({
+                "bufferView": 2, "componentType": FLOAT, "count": count, "type": "VEC2",
+            }));
+            attributes["TEXCOORD_0"] = json!(2);
         }
         let arity = scene.arity();
         let index_view = buffer_views.len();
         let start = bin.len();
+        // The texture of each kind once some primitive needs it: (kind, texture index).
+        let mut texture_of: Vec<(u32, usize)> = Vec::new();
         for group in &groups {
-            let offset = bin.len() - start;
-            for &item in &group.items {
-                for corner in &scene.corners(item)[..arity] {
-                    bin.extend_from_slice(&corner.to_le_bytes());
+            let kinds: &[u32] = if primitive == Primitive::Triangles {
+                &[MATERIAL_BARK, MATERIAL_LEAF, MATERIAL_PLAIN]
+            } else {
+                &[MATERIAL_PLAIN]
+            };
+            for &kind in kinds {
+                let offset = bin.len() - start;
+                let mut count = 0;
+                for &item in &group.items {
+                    if primitive == Primitive::Triangles && kind_of(item) != kind {
+                        continue;
+                    }
+                    count += 1;
+                    for corner in &scene.corners(item)[..arity] {
+                        bin.extend_from_slice(&corner.to_le_bytes());
+                    }
                 }
+                if count == 0 {
+                    continue;
+                }
+                let [r, g, b] = group.color;
+                let (suffix, textured) = match (primitive, kind) {
+                    (Primitive::Lines, _) => ("", false),
+                    (_, MATERIAL_BARK) => ("", true),
+                    (_, MATERIAL_LEAF) => ("_leaf", true),
+                    _ => ("_plain", false),
+                };
+                let mut material = json!({
+                    "name": format!("color_{}{}", group.index, suffix),
+                    "pbrMetallicRoughness": {
+                        "baseColorFactor": [r as f64, g as f64, b as f64, 1.0],
+                        "metallicFactor": 0.0,
+                        "roughnessFactor": 0.85,
+                    },
+                });
+                if textured {
+                    let texture = match texture_of.iter().find(|(k, _)| *k == kind) {
+                        Some(&(_, t)) => t,
+                        None => {
+                            texture_of.push((kind, textures.len()));
+                            textures.push(json!({ "sampler": 0, "source": images.len() }));
+                            images.push(json!({ "kind": kind }));
+                            textures.len() - 1
+                        }
+                    };
+                    material["pbrMetallicRoughness"]["baseColorTexture"] =
+                        json!({ "index": texture, "texCoord": 0 });
+                }
+                if kind == MATERIAL_LEAF && primitive == Primitive::Triangles {
+                    material["alphaMode"] = json!("MASK");
+                    material["alphaCutoff"] = json!(0.5);
+                    material["doubleSided"] = json!(true);
+                }
+                materials.push(material);
+                primitives.push(json!({
+                    "attributes": attributes,
+                    "indices": accessors.len(),
+                    "material": materials.len() - 1,
+                    "mode": if primitive == Primitive::Triangles { TRIANGLES } else { LINES },
+                }));
+                accessors.push(json!({
+                    "bufferView": index_view, "byteOffset": offset, "componentType": UNSIGNED_INT,
+                    "count": count * arity, "type": "SCALAR",
+                }));
             }
-            let [r, g, b] = group.color;
-            materials.push(json!({
-                "name": format!("color_{}", group.index),
-                "pbrMetallicRoughness": {
-                    "baseColorFactor": [r as f64, g as f64, b as f64, 1.0],
-                    "metallicFactor": 0.0,
-                    "roughnessFactor": 0.85,
-                },
-            }));
-            primitives.push(json!({
-                "attributes": attributes,
-                "indices": accessors.len(),
-                "material": materials.len() - 1,
-                "mode": if primitive == Primitive::Triangles { TRIANGLES } else { LINES },
-            }));
-            accessors.push(json!({
-                "bufferView": index_view, "byteOffset": offset, "componentType": UNSIGNED_INT,
-                "count": group.items.len() * arity, "type": "SCALAR",
-            }));
         }
         buffer_views.push(json!({
             "buffer": 0, "byteOffset": start, "byteLength": bin.len() - start,
             "target": ELEMENT_ARRAY_BUFFER,
         }));
+        // The images the textures use, after the indices, each in its own buffer view.
+        for image in images.iter_mut() {
+            let bytes = if image["kind"] == json!(MATERIAL_LEAF) {
+                LEAF_PNG
+            } else {
+                BARK_PNG
+            };
+            let name = if image["kind"] == json!(MATERIAL_LEAF) {
+                "leaf"
+            } else {
+                "bark"
+            };
+            bin.resize(bin.len().next_multiple_of(4), 0);
+            buffer_views.push(view(&mut bin, bytes.to_vec(), None));
+            *image = json!({
+                "name": name, "bufferView": buffer_views.len() - 1, "mimeType": "image/png",
+            });
+        }
+        bin.resize(bin.len().next_multiple_of(4), 0);
     }
 
     let mut document = json!({
@@ -98,6 +192,14 @@ pub fn write(scene: &Scene) -> Vec<u8> {
         document["nodes"] = json!([{ "name": "plant", "mesh": 0 }]);
         document["meshes"] = json!([{ "name": "plant", "primitives": primitives }]);
         document["materials"] = Value::Array(materials);
+        if !images.is_empty() {
+            document["images"] = Value::Array(images);
+            document["textures"] = Value::Array(textures);
+            document["samplers"] = json!([{
+                "magFilter": LINEAR, "minFilter": LINEAR_MIPMAP_LINEAR,
+                "wrapS": REPEAT, "wrapT": REPEAT,
+            }]);
+        }
         document["accessors"] = Value::Array(accessors);
         document["bufferViews"] = Value::Array(buffer_views);
         document["buffers"] = json!([{ "byteLength": bin.len() }]);
@@ -217,6 +319,45 @@ mod tests {
             .sum();
         assert_eq!(indices as usize, mesh.indices.len());
         assert_eq!(document["buffers"][0]["byteLength"], bin.len());
+    }
+
+    #[test]
+    fn texture_coordinates_and_embedded_textures_for_bark_and_two_sided_leaves() {
+        let (mesh, skeleton) =
+            crate::export::tests::built("#angle 30\naxiom: F[+F~l][-;{.f+f+f.}]@O(0.2)\n");
+        let (document, bin) = parse(&write(&Scene::new(&mesh, &skeleton)));
+        let primitives = document["meshes"][0]["primitives"].as_array().expect("p");
+        let texcoord = &document["accessors"][primitives[0]["attributes"]["TEXCOORD_0"]
+            .as_u64()
+            .expect("TEXCOORD_0") as usize];
+        assert_eq!(texcoord["type"], "VEC2");
+        assert_eq!(texcoord["count"], mesh.vertex_count());
+        let materials = document["materials"].as_array().expect("materials");
+        let names: Vec<&str> = materials
+            .iter()
+            .filter_map(|m| m["name"].as_str())
+            .collect();
+        assert_eq!(
+            names,
+            ["color_0", "color_0_leaf", "color_0_plain", "color_1_leaf"]
+        );
+        assert_eq!(materials[1]["alphaMode"], "MASK");
+        assert_eq!(materials[1]["doubleSided"], true);
+        assert!(materials[0]["pbrMetallicRoughness"]["baseColorTexture"].is_object());
+        assert!(materials[2]["pbrMetallicRoughness"]
+            .get("baseColorTexture")
+            .is_none());
+        // Two images (bark, leaf), each an exact copy of the shipped PNG in the binary chunk.
+        let images = document["images"].as_array().expect("images");
+        assert_eq!(images.len(), 2);
+        for (image, png) in images.iter().zip([BARK_PNG, LEAF_PNG]) {
+            assert_eq!(image["mimeType"], "image/png");
+            let view = &document["bufferViews"][image["bufferView"].as_u64().unwrap() as usize];
+            let at = view["byteOffset"].as_u64().unwrap() as usize;
+            assert_eq!(at % 4, 0);
+            assert_eq!(&bin[at..at + png.len()], png);
+        }
+        assert_eq!(document["samplers"][0]["wrapS"], REPEAT);
     }
 
     #[test]

@@ -103,7 +103,24 @@ pub fn export(
     match format {
         Format::Vrml => vec![file("wrl", vrml::write(&scene).into_bytes(), "model/vrml")],
         Format::Glb => vec![file("glb", gltf::write(&scene), "model/gltf-binary")],
-        Format::Pov => vec![file("pov", pov::write(&scene).into_bytes(), "text/plain")],
+        Format::Pov => {
+            // The images the scene's textures name, beside it (only those some triangle uses).
+            let kinds = mesh.triangle_materials();
+            let mut files = vec![file("pov", pov::write(&scene).into_bytes(), "text/plain")];
+            for (kind, name, png) in [
+                (crate::mesh::MATERIAL_BARK, "bark.png", gltf::BARK_PNG),
+                (crate::mesh::MATERIAL_LEAF, "leaf.png", gltf::LEAF_PNG),
+            ] {
+                if kinds.contains(&(kind as u8)) {
+                    files.push(ExportedFile {
+                        name: name.into(),
+                        bytes: png.to_vec(),
+                        mime: "image/png",
+                    });
+                }
+            }
+            files
+        }
         Format::Obj => {
             let mtl = format!("{stem}.mtl");
             vec![
@@ -129,7 +146,7 @@ pub fn export(
 }
 
 /// What the studio downloads: the one file of the format, or a zip (`plant.zip`) of its files
-/// when it has several (OBJ and MTL). `None` only past 4 GiB.
+/// when it has several (OBJ and MTL; POV-Ray's scene and the texture images it names). `None` only past 4 GiB.
 pub fn download(
     format: Format,
     mesh: &MeshBuffers,

@@ -6,10 +6,19 @@
 //! too large to mesh becomes cylinders as wide as its segments, with a declared texture per
 //! colour index.
 //!
+//! Textures: the mesh2 carries `uv_vectors` (v flipped: POV-Ray's image rows run bottom up) and
+//! each colour index gets a texture per material kind it has: bark triangles `uv_mapping` the
+//! bark image (`bark.png`) as a pattern scaled to the colour (the vertex colour multiplies the
+//! texture, as in the view), leaf triangles the leaf image (`leaf.png`), fully transparent outside
+//! the leaf's alpha, spheres plain. The mesh is `double_illuminate`d so leaves are lit on both
+//! sides. The images are not in the text: [`super::export`] returns them beside the `.pov` (the
+//! command-line tool writes them next to it, the studio zips them with it).
+//!
 //! Render: `povray +Iplant.pov +Oplant.png +W800 +H600 +A0.3` (run it in the file's folder:
 //! POV-Ray's default I/O restrictions allow the current directory).
 
 use super::scene::{decimals_for, extent, number, Primitive, Scene, View};
+use crate::mesh::{MATERIAL_BARK, MATERIAL_LEAF};
 use glam::DVec3;
 use std::fmt::Write;
 
@@ -78,13 +87,49 @@ fn mesh2(out: &mut String, scene: &Scene, groups: &[super::scene::ColorGroup], d
     )
     .ok();
     vectors(out, &mesh.normals, 4);
-    writeln!(out, "  }}\n  texture_list {{\n    {},", groups.len()).ok();
-    for group in groups {
-        write!(out, "    texture {{ pigment {{ color rgb <").ok();
-        rgb(out, group.color);
+    writeln!(out, "  }}\n  uv_vectors {{\n    {},", mesh.vertex_count()).ok();
+    for (k, uv) in mesh.uvs.chunks_exact(2).enumerate() {
+        out.push_str(if k == 0 { "    <" } else { ",\n    <" });
+        number(out, uv[0] as f64, 4);
+        out.push_str(", ");
+        number(out, 1.0 - uv[1] as f64, 4);
+        out.push('>');
+    }
+    out.push('\n');
+    let kinds = mesh.triangle_materials();
+    let kind_of = |item: u32| kinds.get(item as usize).map_or(2, |&k| k as u32);
+    // A texture per (colour index, material kind) present, in colour order.
+    let mut textures: Vec<(usize, u32)> = Vec::new();
+    for (g, group) in groups.iter().enumerate() {
+        for kind in [MATERIAL_BARK, MATERIAL_LEAF, 2] {
+            if group.items.iter().any(|&t| kind_of(t) == kind) {
+                textures.push((g, kind));
+            }
+        }
+    }
+    writeln!(out, "  }}\n  texture_list {{\n    {},", textures.len()).ok();
+    for &(g, kind) in &textures {
+        let group = &groups[g];
+        let mut colour = String::new();
+        rgb(&mut colour, group.color);
+        match kind {
+            MATERIAL_BARK => write!(
+                out,
+                "    texture {{ uv_mapping pigment {{ image_pattern {{ png \"bark.png\" interpolate 2 }} \
+                 color_map {{ [0 rgb 0] [1 rgb <{colour}>] }} }}"
+            ),
+            MATERIAL_LEAF => write!(
+                out,
+                "    texture {{ uv_mapping pigment {{ image_pattern {{ png \"leaf.png\" interpolate 2 use_alpha }} \
+                 pigment_map {{ [0 rgbt 1] [0.5 rgbt 1] [0.5 image_pattern {{ png \"leaf.png\" interpolate 2 }} \
+                 color_map {{ [0 rgb 0] [1 rgb <{colour}>] }}] }} }}"
+            ),
+            _ => write!(out, "    texture {{ pigment {{ color rgb <{colour}> }}"),
+        }
+        .ok();
         writeln!(
             out,
-            "> }} finish {{ ambient 0.15 diffuse 0.85 }} }} // colour index {}",
+            " finish {{ ambient 0.15 diffuse 0.85 }} }} // colour index {}",
             group.index
         )
         .ok();
@@ -96,14 +141,17 @@ fn mesh2(out: &mut String, scene: &Scene, groups: &[super::scene::ColorGroup], d
     )
     .ok();
     // Faces in colour order, each followed by its texture's place in the list.
-    for (t, group) in groups.iter().enumerate() {
-        for &item in &group.items {
+    for (t, &(g, kind)) in textures.iter().enumerate() {
+        for &item in &groups[g].items {
+            if kind_of(item) != kind {
+                continue;
+            }
             let [a, b, c] = scene.corners(item);
             // Negating z reverses the winding; POV-Ray does not cull, but keep faces consistent.
             writeln!(out, "    <{a}, {c}, {b}>, {t},").ok();
         }
     }
-    out.push_str("  }\n}\nobject { Meristem_Plant }\n");
+    out.push_str("  }\n}\nobject { Meristem_Plant double_illuminate }\n");
 }
 
 /// The fallback's lines as cylinders as wide as their segments (line `i` is segment `i`), so

@@ -35,6 +35,18 @@ pub use parts::{ChainPart, MeshParts, Part};
 ///   colour, whose ring has the next segment's colour (the preview blends them along the quad).
 ///   The file writers group triangles by this index, one material per colour index. Stays in the
 ///   core (not copied to JavaScript).
+/// - `uvs`: `f32` × 2 per vertex, texture coordinates (see `docs/LANGUAGE.md`, "Texture
+///   coordinates"). Tubes: u runs 0..1 around the circumference (each ring has `sides + 1`
+///   vertices, the last a copy of the first at u = 1, so the texture does not wrap backwards over
+///   the seam) and v along the axis, accumulated over the chain in units of the tube's
+///   circumference (bark is not stretched: one texture tile is as long as the tube is round);
+///   caps map the disk into 0..1. Leaves and petals: u across and v along the leaf's own outline
+///   frame, both 0..1. Polygons: a planar projection in their plane, u across and v from the first
+///   point towards the farthest one, 0..1. Spheres: longitude and latitude, 0..1.
+/// - `material_ranges`: the material kind of every triangle, `u32` × 2 per range (first
+///   triangle, kind), sorted and running like `ranges`: [`MATERIAL_BARK`] (tubes and their caps),
+///   [`MATERIAL_LEAF`] (predefined surfaces and polygons, two-sided) or [`MATERIAL_PLAIN`]
+///   (spheres). The view and the writers choose the texture by it.
 /// - `lines`, `line_colors`: only when the model is too large to mesh (`MeshOptions::max_vertices`):
 ///   `f32` × 3 per line end (two per segment) and `f32` × 3 colour per end; the triangle arrays
 ///   are then empty. Line `i` is `Skeleton::segments[i]` (its colour index is that segment's).
@@ -45,8 +57,8 @@ pub use parts::{ChainPart, MeshParts, Part};
 /// of vertices and triangles, in that order) is recorded by [`build_mesh_with_parts`] as
 /// [`MeshParts`], for re-meshing a part alone (dragging a branch).
 ///
-/// Memory: a tube of `sides` sides costs `sides` vertices per joint (36 bytes each: position,
-/// normal, colour) and `2·sides` triangles per segment (24 bytes each), plus two caps per axis;
+/// Memory: a tube of `sides` sides costs `sides + 1` vertices per joint (44 bytes each: position,
+/// normal, colour, uv) and `2·sides` triangles per segment (24 bytes each), plus two caps per axis;
 /// with the default 6 sides, about 370 bytes per segment.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct MeshBuffers {
@@ -56,10 +68,19 @@ pub struct MeshBuffers {
     pub indices: Vec<u32>,
     pub ranges: Vec<u32>,
     pub color_ranges: Vec<u32>,
+    pub uvs: Vec<f32>,
+    pub material_ranges: Vec<u32>,
     pub lines: Vec<f32>,
     pub line_colors: Vec<f32>,
     pub width_unit: f64,
 }
+
+/// Material kind of tubes (bark texture).
+pub const MATERIAL_BARK: u32 = 0;
+/// Material kind of leaves, petals and polygons (leaf texture, two-sided, alpha-masked).
+pub const MATERIAL_LEAF: u32 = 1;
+/// Material kind of spheres (no texture).
+pub const MATERIAL_PLAIN: u32 = 2;
 
 impl MeshBuffers {
     pub fn vertex_count(&self) -> usize {
@@ -85,6 +106,16 @@ impl MeshBuffers {
         self.check_ranges("color_ranges", &self.color_ranges)?;
         if self.color_ranges.is_empty() != (self.triangle_count() == 0) {
             return Err("color_ranges must cover every triangle".into());
+        }
+        self.check_ranges("material_ranges", &self.material_ranges)?;
+        if self.material_ranges.is_empty() != (self.triangle_count() == 0) {
+            return Err("material_ranges must cover every triangle".into());
+        }
+        if self.uvs.len() != 2 * vertices {
+            return Err("uvs must hold 2 floats per vertex".into());
+        }
+        if !self.uvs.iter().all(|v| v.is_finite()) {
+            return Err("a texture coordinate is not finite".into());
         }
         if !self.lines.len().is_multiple_of(6) || self.line_colors.len() != self.lines.len() {
             return Err("lines must hold two 3-float ends per segment, each with a colour".into());
@@ -161,6 +192,19 @@ impl MeshBuffers {
                 .map_or(self.triangle_count(), |next| next[0] as usize);
             let index = pair[1].min(u16::MAX as u32) as u16;
             out.resize(end.max(out.len()), index);
+        }
+        out
+    }
+
+    /// The material kind of each triangle, expanded from `material_ranges`.
+    pub fn triangle_materials(&self) -> Vec<u8> {
+        let mut out = Vec::with_capacity(self.triangle_count());
+        let pairs: Vec<&[u32]> = self.material_ranges.chunks_exact(2).collect();
+        for (k, pair) in pairs.iter().enumerate() {
+            let end = pairs
+                .get(k + 1)
+                .map_or(self.triangle_count(), |next| next[0] as usize);
+            out.resize(end.max(out.len()), pair[1].min(255) as u8);
         }
         out
     }
@@ -276,6 +320,7 @@ pub fn build_mesh_with_parts(
     builder.mesh.positions.reserve(3 * estimate);
     builder.mesh.normals.reserve(3 * estimate);
     builder.mesh.colors.reserve(3 * estimate);
+    builder.mesh.uvs.reserve(2 * estimate);
     builder.mesh.indices.reserve(6 * estimate);
     let joints = parts::joint_keys(skeleton);
     for chain in chains(skeleton, unit) {
@@ -392,6 +437,8 @@ pub(crate) struct Builder<'a> {
     element_ranges: Vec<u32>,
     /// The segment the next `range` call stands for.
     element: u32,
+    /// The material kind the next `range` call stands for.
+    material: u32,
 }
 
 impl<'a> Builder<'a> {
@@ -410,6 +457,7 @@ impl<'a> Builder<'a> {
                 .collect(),
             element_ranges: Vec::new(),
             element: parts::NO_CHAIN,
+            material: MATERIAL_BARK,
         }
     }
 
@@ -444,7 +492,7 @@ impl<'a> Builder<'a> {
     fn polygon(&mut self, skeleton: &Skeleton, i: usize) {
         let p = &skeleton.polygons[i];
         self.element = parts::NO_CHAIN;
-        self.flat(&p.points, skeleton, p.color, p.module);
+        self.flat(&p.points, None, skeleton, p.color, p.module);
     }
 
     fn surface(&mut self, skeleton: &Skeleton, i: usize) {
@@ -455,7 +503,12 @@ impl<'a> Builder<'a> {
         };
         let points = surfaces::place(kind, s.origin, s.heading, s.left, s.scale);
         self.element = parts::NO_CHAIN;
-        self.flat(&points, skeleton, s.color, s.module);
+        // The leaf's own frame: across along `left`, along the heading.
+        let uvs = unit_square(points.iter().map(|p| {
+            let d = *p - s.origin;
+            (d.dot(s.left), d.dot(s.heading))
+        }));
+        self.flat(&points, Some(uvs), skeleton, s.color, s.module);
     }
 
     fn sphere_of(&mut self, skeleton: &Skeleton, i: usize) {
@@ -484,8 +537,9 @@ impl<'a> Builder<'a> {
         tubes + flats + spheres
     }
 
-    fn vertex(&mut self, p: DVec3, n: DVec3, c: [f32; 3]) -> u32 {
+    fn vertex(&mut self, p: DVec3, n: DVec3, c: [f32; 3], uv: [f32; 2]) -> u32 {
         let index = self.mesh.vertex_count() as u32;
+        self.mesh.uvs.extend(uv);
         self.mesh
             .positions
             .extend([p.x as f32, p.y as f32, p.z as f32]);
@@ -502,6 +556,7 @@ impl<'a> Builder<'a> {
         let first = self.mesh.triangle_count() as u32;
         push_range(&mut self.mesh.ranges, first, module);
         push_range(&mut self.mesh.color_ranges, first, color as u32);
+        push_range(&mut self.mesh.material_ranges, first, self.material);
         push_range(&mut self.element_ranges, first, self.element);
     }
 
@@ -554,22 +609,33 @@ impl<'a> Builder<'a> {
         let normals = curve::rotation_minimizing_normals(&frame_input, segments[0].left);
         let sides = self.sides;
         let mut rings: Vec<u32> = Vec::with_capacity(samples.len());
+        // v: the distance along the axis in circumferences of the tube (the mean of the two
+        // rings' circumferences over each step), so a texture tile is as long as the tube is round.
+        let unit = self.unit;
+        let circumference = |w: f64| (std::f64::consts::PI * w * unit).max(1e-12);
+        let mut v = 0.0f64;
         for (k, (p, t, w, _)) in samples.iter().enumerate() {
+            if k > 0 {
+                let (q, _, wq, _) = samples[k - 1];
+                v += (*p - q).length() / (0.5 * (circumference(wq) + circumference(*w)));
+            }
             let n = normals[k];
             let b = t.cross(n);
             let radius = 0.5 * w * self.unit;
             let c = skeleton.color(segments[samples[k].3].color);
             let first = self.mesh.vertex_count() as u32;
-            for j in 0..self.ring.len() {
-                let (sin, cos) = self.ring[j];
+            for j in 0..=sides {
+                let (sin, cos) = self.ring[j % sides];
                 let radial = n * cos + b * sin;
-                self.vertex(*p + radial * radius, radial, c);
+                let u = j as f32 / sides as f32;
+                self.vertex(*p + radial * radius, radial, c, [u, v as f32]);
             }
             rings.push(first);
         }
         let n = sides as u32;
         // Start cap, facing back along the axis.
         self.element = chain[0];
+        self.material = MATERIAL_BARK;
         self.range(segments[0].module, segments[0].color);
         if start_cap {
             self.cap(
@@ -586,7 +652,7 @@ impl<'a> Builder<'a> {
             self.range(segment.module, segment.color);
             let (a0, b0) = (rings[k], rings[k + 1]);
             for j in 0..n {
-                let next = (j + 1) % n;
+                let next = j + 1;
                 let (a, b, c, d) = (a0 + j, a0 + next, b0 + j, b0 + next);
                 self.mesh.indices.extend([a, b, c, b, d, c]);
             }
@@ -611,9 +677,12 @@ impl<'a> Builder<'a> {
                 self.mesh.positions[i + 1] as f64,
                 self.mesh.positions[i + 2] as f64,
             );
-            self.vertex(p, normal, c);
+            let (sin, cos) = self.ring[j as usize];
+            let u = 0.5 + 0.5 * cos as f32;
+            let v = 0.5 + if reverse { -0.5 } else { 0.5 } * sin as f32;
+            self.vertex(p, normal, c, [u, v]);
         }
-        let middle = self.vertex(center, normal, c);
+        let middle = self.vertex(center, normal, c, [0.5, 0.5]);
         for j in 0..n {
             let (a, b) = (first + j, first + (j + 1) % n);
             if reverse {
@@ -625,17 +694,28 @@ impl<'a> Builder<'a> {
     }
 
     /// A polygon or predefined surface, two-sided: the front faces its normal, the back the other way.
-    fn flat(&mut self, points: &[DVec3], skeleton: &Skeleton, color: u16, module: u32) {
+    /// `uvs` holds a texture coordinate per point, or `None` for a polygon's planar projection
+    /// (both sides share them: the back shows the texture mirrored, as the back of a leaf does).
+    fn flat(
+        &mut self,
+        points: &[DVec3],
+        uvs: Option<Vec<[f32; 2]>>,
+        skeleton: &Skeleton,
+        color: u16,
+        module: u32,
+    ) {
         let t = polygon::triangulate(points);
         if t.triangles.is_empty() {
             return;
         }
+        let uvs = uvs.unwrap_or_else(|| polygon_uvs(points, t.normal));
+        self.material = MATERIAL_LEAF;
         self.range(module, color);
         let c = skeleton.color(color);
         for (normal, flip) in [(t.normal, false), (-t.normal, true)] {
             let first = self.mesh.vertex_count() as u32;
-            for p in points {
-                self.vertex(*p, normal, c);
+            for (p, uv) in points.iter().zip(&uvs) {
+                self.vertex(*p, normal, c, *uv);
             }
             for tri in &t.triangles {
                 let [a, b, d] = tri.map(|i| first + i);
@@ -654,11 +734,15 @@ impl<'a> Builder<'a> {
         if s.triangles.is_empty() {
             return;
         }
+        self.material = MATERIAL_PLAIN;
         self.range(module, color);
         let c = skeleton.color(color);
         let first = self.mesh.vertex_count() as u32;
         for (p, n) in s.positions.iter().zip(&s.normals) {
-            self.vertex(*p, *n, c);
+            // Longitude and latitude of the normal.
+            let u = 0.5 + n.z.atan2(n.x) / std::f64::consts::TAU;
+            let v = n.y.clamp(-1.0, 1.0).acos() / std::f64::consts::PI;
+            self.vertex(*p, *n, c, [u as f32, v as f32]);
         }
         for tri in &s.triangles {
             self.mesh.indices.extend(tri.map(|i| first + i));
@@ -676,6 +760,56 @@ impl<'a> Builder<'a> {
             }
         }
     }
+}
+
+/// 2-D coordinates scaled into the unit square by their bounding box (a zero extent maps to 0).
+fn unit_square(points: impl Iterator<Item = (f64, f64)> + Clone) -> Vec<[f32; 2]> {
+    let (mut lo, mut hi) = (
+        (f64::INFINITY, f64::INFINITY),
+        (f64::NEG_INFINITY, f64::NEG_INFINITY),
+    );
+    for (a, b) in points.clone() {
+        lo = (lo.0.min(a), lo.1.min(b));
+        hi = (hi.0.max(a), hi.1.max(b));
+    }
+    let scale = |x: f64, l: f64, h: f64| {
+        let r = if h - l > 1e-12 {
+            (x - l) / (h - l)
+        } else {
+            0.0
+        };
+        if r.is_finite() {
+            r.clamp(0.0, 1.0) as f32
+        } else {
+            0.0
+        }
+    };
+    points
+        .map(|(a, b)| [scale(a, lo.0, hi.0), scale(b, lo.1, hi.1)])
+        .collect()
+}
+
+/// A polygon's texture coordinates: projected in its plane with v from the first point towards
+/// the point farthest from it (a leaf drawn from its base runs along its length) and u across,
+/// scaled into 0..1.
+fn polygon_uvs(points: &[DVec3], normal: DVec3) -> Vec<[f32; 2]> {
+    let Some(&origin) = points.first() else {
+        return Vec::new();
+    };
+    let far = points
+        .iter()
+        .map(|p| *p - origin)
+        .max_by(|a, b| a.length_squared().total_cmp(&b.length_squared()))
+        .unwrap_or(DVec3::Y);
+    let along = far.try_normalize().unwrap_or(DVec3::Y);
+    let across = normal
+        .cross(along)
+        .try_normalize()
+        .unwrap_or_else(|| along.any_orthonormal_vector());
+    unit_square(points.iter().map(|p| {
+        let d = *p - origin;
+        (d.dot(across), d.dot(along))
+    }))
 }
 
 /// Appends (first, value) to a range list unless the last range has that value already; a range
@@ -748,8 +882,9 @@ mod tests {
             ..Skeleton::default()
         };
         let mesh = build_mesh(&skeleton, &absolute(0.2));
-        // Two rings of 8, and two caps of 8 + 1 vertices; 16 side triangles and 8 per cap.
-        assert_eq!(mesh.vertex_count(), 16 + 18);
+        // Two rings of 8 + 1 (the seam's copy), and two caps of 8 + 1 vertices; 16 side
+        // triangles and 8 per cap.
+        assert_eq!(mesh.vertex_count(), 18 + 18);
         assert_eq!(mesh.triangle_count(), 16 + 16);
         assert_eq!(mesh.check(), Ok(()));
         let [min, max] = mesh.bounds();
@@ -772,10 +907,10 @@ mod tests {
             ..Skeleton::default()
         };
         let mesh = build_mesh(&skeleton, &absolute(0.1));
-        assert_eq!(mesh.vertex_count(), 4 * 8 + 2 * 9);
+        assert_eq!(mesh.vertex_count(), 4 * 9 + 2 * 9);
         assert_eq!(mesh.check(), Ok(()));
         // The joint ring at b is the bisector's: its vertices are all at distance 0.05 from b.
-        let ring = (8..16).map(|v| {
+        let ring = (9..18).map(|v| {
             DVec3::new(
                 mesh.positions[v * 3] as f64,
                 mesh.positions[v * 3 + 1] as f64,
@@ -788,6 +923,81 @@ mod tests {
     }
 
     #[test]
+    fn tube_uvs_go_round_once_with_a_seam_and_grow_along_the_axis_in_circumferences() {
+        let (a, b, c) = (DVec3::ZERO, DVec3::Y, DVec3::new(0.0, 2.0, 0.0));
+        let skeleton = Skeleton {
+            segments: vec![segment(a, b, None), segment(b, c, Some(0))],
+            ..Skeleton::default()
+        };
+        let mesh = build_mesh(&skeleton, &absolute(0.1));
+        assert_eq!(mesh.check(), Ok(()));
+        let uv = |v: usize| (mesh.uvs[2 * v], mesh.uvs[2 * v + 1]);
+        let circumference = std::f64::consts::PI * 0.1;
+        for ring in 0..3 {
+            // u from 0 to 1 in 8 steps; the seam's two vertices share a position.
+            for j in 0..=8 {
+                let (u, v) = uv(ring * 9 + j);
+                assert!((u - j as f32 / 8.0).abs() < 1e-6);
+                assert!((v as f64 - ring as f64 / circumference).abs() < 1e-3, "{v}");
+            }
+            let p = |v: usize| &mesh.positions[3 * v..3 * v + 3];
+            assert_eq!(p(ring * 9), p(ring * 9 + 8));
+        }
+        // Continuous around the tube: no side triangle (after the start cap's 8) spans the seam
+        // backwards.
+        for t in mesh.indices[3 * 8..3 * (8 + 32)].chunks_exact(3) {
+            let us: Vec<f32> = t.iter().map(|&i| uv(i as usize).0).collect();
+            let spread = us.iter().cloned().fold(f32::MIN, f32::max)
+                - us.iter().cloned().fold(f32::MAX, f32::min);
+            assert!(spread <= 1.0 / 8.0 + 1e-6);
+        }
+        assert!(mesh
+            .triangle_materials()
+            .iter()
+            .all(|&m| m as u32 == MATERIAL_BARK));
+    }
+
+    #[test]
+    fn leaves_polygons_and_spheres_have_uvs_in_the_unit_square_and_their_materials() {
+        let skeleton = Skeleton {
+            polygons: vec![Polygon {
+                points: vec![DVec3::ZERO, DVec3::X, DVec3::new(0.5, 2.0, 0.0)],
+                color: 0,
+                module: 0,
+                anchor: None,
+            }],
+            surfaces: vec![crate::turtle::Surface {
+                kind: crate::turtle::SurfaceKind::Leaf,
+                origin: DVec3::ZERO,
+                heading: DVec3::Y,
+                left: DVec3::NEG_X,
+                scale: 1.0,
+                color: 0,
+                module: 1,
+                anchor: None,
+            }],
+            spheres: vec![Sphere {
+                center: DVec3::ZERO,
+                radius: 1.0,
+                radius_width: None,
+                color: 0,
+                module: 2,
+                anchor: None,
+            }],
+            ..Skeleton::default()
+        };
+        let mesh = build_mesh(&skeleton, &absolute(0.1));
+        assert_eq!(mesh.check(), Ok(()));
+        assert!(mesh.uvs.iter().all(|x| (0.0..=1.0).contains(x)));
+        let materials = mesh.triangle_materials();
+        assert!(materials.contains(&(MATERIAL_LEAF as u8)));
+        assert_eq!(*materials.last().unwrap(), MATERIAL_PLAIN as u8);
+        // The polygon's tip (farthest from its first point) is at v = 1, its base at v = 0.
+        assert_eq!(mesh.uvs[1], 0.0);
+        assert_eq!(mesh.uvs[5], 1.0);
+    }
+
+    #[test]
     fn a_branch_from_a_joint_has_no_start_cap() {
         // F[+F]: the branch starts at the end of the first segment, inside its tube.
         let mut branch = segment(DVec3::Y, DVec3::new(-0.7, 1.7, 0.0), None);
@@ -797,7 +1007,7 @@ mod tests {
             ..Skeleton::default()
         };
         let mesh = build_mesh(&skeleton, &absolute(0.1));
-        assert_eq!(mesh.vertex_count(), (16 + 18) + (16 + 9));
+        assert_eq!(mesh.vertex_count(), (18 + 18) + (18 + 9));
         assert_eq!(mesh.check(), Ok(()));
     }
 
@@ -871,7 +1081,7 @@ mod tests {
                 ..absolute(0.1)
             },
         );
-        assert_eq!(mesh.vertex_count(), (3 * 5 + 1) * 8 + 2 * 9);
+        assert_eq!(mesh.vertex_count(), (3 * 5 + 1) * 9 + 2 * 9);
         assert_eq!(mesh.check(), Ok(()));
     }
 

@@ -129,7 +129,7 @@ pub fn sphere_mesh(skeleton: &Skeleton, options: &MeshOptions, unit: f64, i: usi
     builder.mesh
 }
 
-/// Copies `alone` (one element meshed alone) over `part` of `mesh`: positions and normals, and
+/// Copies `alone` (one element meshed alone) over `part` of `mesh`: positions, normals and uvs, and
 /// the indices when `indices` (their pattern may differ, e.g. a polygon triangulated anew).
 /// Returns false, changing nothing, when the counts differ.
 pub fn write_part(mesh: &mut MeshBuffers, part: &Part, alone: &MeshBuffers, indices: bool) -> bool {
@@ -142,6 +142,8 @@ pub fn write_part(mesh: &mut MeshBuffers, part: &Part, alone: &MeshBuffers, indi
     let n = alone.positions.len();
     mesh.positions[v..v + n].copy_from_slice(&alone.positions);
     mesh.normals[v..v + n].copy_from_slice(&alone.normals);
+    let u = 2 * part.first_vertex as usize;
+    mesh.uvs[u..u + alone.uvs.len()].copy_from_slice(&alone.uvs);
     if indices {
         let t = 3 * part.first_triangle as usize;
         for (to, from) in mesh.indices[t..t + alone.indices.len()]

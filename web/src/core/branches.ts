@@ -62,6 +62,8 @@ export interface MeshUpdate {
   ranges: Uint32Array;
   positions: Float32Array;
   normals: Float32Array;
+  /** Texture coordinates of the changed vertices (2 floats each). */
+  uvs: Float32Array;
   /** The whole new mesh, when `full`. */
   mesh: MeshBuffers | null;
   /** The plant's stats after the change (its bounds move with its branches). */
@@ -127,12 +129,16 @@ export function noEdits(): EditsDocument {
 export function applyMeshUpdate(mesh: MeshBuffers, update: MeshUpdate): MeshBuffers {
   if (update.full && update.mesh) return update.mesh;
   let at = 0;
+  let uv = 0;
   for (let k = 0; k < update.ranges.length; k += 2) {
     const from = 3 * update.ranges[k];
     const n = 3 * update.ranges[k + 1];
     mesh.positions.set(update.positions.subarray(at, at + n), from);
     mesh.normals.set(update.normals.subarray(at, at + n), from);
     at += n;
+    const m = 2 * update.ranges[k + 1];
+    if (update.uvs.length >= uv + m && mesh.uvs.length >= 2 * update.ranges[k] + m) mesh.uvs.set(update.uvs.subarray(uv, uv + m), 2 * update.ranges[k]);
+    uv += m;
   }
   return mesh;
 }
@@ -277,6 +283,7 @@ class LiveEditor implements PlantEditor {
         ranges: Uint32Array.of(0, mesh.positions.length / 3),
         positions: mesh.positions,
         normals: mesh.normals,
+        uvs: mesh.uvs,
         mesh,
         stats,
       };
@@ -287,6 +294,7 @@ class LiveEditor implements PlantEditor {
       ranges: ownedArray(this.result.changedRanges()),
       positions: ownedArray(this.result.changedPositions()),
       normals: ownedArray(this.result.changedNormals()),
+      uvs: ownedArray(this.result.changedUvs()),
       mesh: null,
       stats,
     };

@@ -171,6 +171,8 @@ export function copyMesh(result: Build): MeshBuffers {
     colors: ownedArray(result.colors()),
     indices: ownedArray(result.indices()),
     ranges: ownedArray(result.ranges()),
+    uvs: ownedArray(result.uvs()),
+    materialRanges: ownedArray(result.materialRanges()),
     lines: ownedArray(result.lines()),
     lineColors: ownedArray(result.lineColors()),
   };

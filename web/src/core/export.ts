@@ -16,7 +16,7 @@ export type ModelFormat = 'wrl' | 'glb' | 'pov' | 'obj' | 'iv' | 'svg';
 export const MODEL_FORMATS: readonly { format: ModelFormat; label: string; file: string }[] = [
   { format: 'wrl', label: 'VRML 2.0', file: '.wrl' },
   { format: 'glb', label: 'glTF 2.0 binary', file: '.glb' },
-  { format: 'pov', label: 'POV-Ray 3.7 scene', file: '.pov' },
+  { format: 'pov', label: 'POV-Ray 3.7 scene + textures', file: '.zip' },
   { format: 'obj', label: 'OBJ + MTL', file: '.zip' },
   { format: 'iv', label: 'OpenInventor 2.1', file: '.iv' },
   { format: 'svg', label: 'SVG drawing (X–Y plane)', file: '.svg' },
@@ -24,7 +24,7 @@ export const MODEL_FORMATS: readonly { format: ModelFormat; label: string; file:
 
 /** A file ready to download. */
 export interface ModelFile {
-  /** `plant.glb`, or `plant.zip` (OBJ and its MTL) for `obj`. */
+  /** `plant.glb`, or `plant.zip` (OBJ and its MTL for `obj`; the scene and its texture images for `pov`). */
   fileName: string;
   mimeType: string;
   /** The file's bytes, owned by JavaScript. */

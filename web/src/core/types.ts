@@ -53,7 +53,9 @@ export interface PlantStats {
  * The layout is defined once, on the core's `MeshBuffers` (`crate/src/mesh/mod.rs`); in short:
  * `positions`, `normals` and `colors` hold 3 floats per vertex, `indices` 3 per triangle;
  * `ranges` holds (first triangle, derived-string module) pairs; `lines`/`lineColors` hold two
- * 3-float ends per segment, only when the model was too large to mesh (the triangles are then empty).
+ * 3-float ends per segment, only when the model was too large to mesh (the triangles are then empty);
+ * `uvs` holds 2 floats (texture coordinates) per vertex and `materialRanges` (first triangle,
+ * material kind) pairs: 0 bark (tubes), 1 leaf (leaves, petals, polygons), 2 plain (spheres).
  */
 export interface MeshBuffers {
   positions: Float32Array;
@@ -61,6 +63,8 @@ export interface MeshBuffers {
   colors: Float32Array;
   indices: Uint32Array;
   ranges: Uint32Array;
+  uvs: Float32Array;
+  materialRanges: Uint32Array;
   lines: Float32Array;
   lineColors: Float32Array;
 }

@@ -12,6 +12,8 @@ function mesh(): MeshBuffers {
     ranges: new Uint32Array([0, 7, 2, 9]),
     lines: new Float32Array(0),
     lineColors: new Float32Array(0),
+    uvs: new Float32Array(0),
+    materialRanges: new Uint32Array(0),
   };
 }
 

@@ -16,8 +16,24 @@ export function plantGeometry(mesh: MeshBuffers, gpu?: GpuArrays): BufferGeometr
   geometry.setAttribute('normal', gpu ? new BufferAttribute(gpu.normals, 3, true) : new BufferAttribute(mesh.normals, 3));
   geometry.setAttribute('color', gpu ? new BufferAttribute(gpu.colors, 3, true) : new BufferAttribute(mesh.colors, 3));
   geometry.setIndex(new BufferAttribute(mesh.indices, 1));
+  if (mesh.uvs.length === (mesh.positions.length / 3) * 2) geometry.setAttribute('uv', new BufferAttribute(mesh.uvs, 2));
+  addMaterialGroups(geometry, mesh);
   setBounds(geometry, mesh.positions);
   return geometry;
+}
+
+/**
+ * One draw group per material range (`materialRanges`: first triangle, kind), its material index
+ * the kind: 0 bark, 1 leaf, 2 plain, the order of the view's material arrays.
+ */
+export function addMaterialGroups(geometry: BufferGeometry, mesh: MeshBuffers): void {
+  const ranges = mesh.materialRanges;
+  const triangles = mesh.indices.length / 3;
+  for (let k = 0; k + 1 < ranges.length; k += 2) {
+    const first = ranges[k];
+    const end = k + 2 < ranges.length ? ranges[k + 2] : triangles;
+    if (end > first) geometry.addGroup(3 * first, 3 * (end - first), Math.min(ranges[k + 1], 2));
+  }
 }
 
 /** Sets a geometry's bounding box from its points and its bounding sphere around that box. */

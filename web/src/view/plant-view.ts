@@ -10,6 +10,7 @@ import {
   LineSegments,
   Material,
   Mesh,
+  MeshBasicMaterial,
   MeshStandardMaterial,
   OrthographicCamera,
   PerspectiveCamera,
@@ -28,6 +29,7 @@ import { flatPose, framePose } from './framing';
 import { scenePalette } from './palette';
 import { plantGeometry, pointsBox } from './plant-geometry';
 import type { GpuArrays } from './gpu-arrays';
+import { loadTexture, texturedMaterials } from './textures';
 import { addHeadlight, addSkyLight, litPlantMaterial, unlitPlantMaterial } from './scene-setup';
 import { highlightOverlay, moduleOfTriangle, type Rgb } from './highlight';
 import { BezierHandles } from './handles';
@@ -71,7 +73,18 @@ export class PlantView {
   private active: CameraRig<PerspectiveCamera> | CameraRig<OrthographicCamera>;
   private readonly lit = litPlantMaterial();
   private readonly unlit = unlitPlantMaterial();
-  private readonly plant = new Mesh<BufferGeometry, Material>(new BufferGeometry(), this.lit);
+  /** Bark and leaf textured materials ([bark, leaf, plain], by the mesh's material groups). */
+  private readonly textured = texturedMaterials(
+    loadTexture('bark', () => this.textureLoaded(), (message) => this.texturesFailed(message)),
+    loadTexture('leaf', () => this.textureLoaded(), (message) => this.texturesFailed(message)),
+    this.lit,
+    this.unlit,
+  );
+  private lighting = true;
+  private texturing = true;
+  /** Images loaded so far (of 2): the plant shows untextured until both are there. */
+  private texturesLoaded = 0;
+  private readonly plant = new Mesh<BufferGeometry, Material | Material[]>(new BufferGeometry(), this.lit);
   /** The fallback for models too large to mesh: one coloured line per segment. */
   private readonly lines = new LineSegments(new BufferGeometry(), new LineBasicMaterial({ vertexColors: true }));
   private grid: GridHelper | undefined;
@@ -206,6 +219,7 @@ export class PlantView {
     }
     this.lit.color.setScalar(dim);
     this.unlit.color.setScalar(dim);
+    for (const m of [...this.textured.lit, ...this.textured.unlit]) (m as MeshBasicMaterial).color.setScalar(dim);
     this.requestRender();
   }
 
@@ -244,11 +258,15 @@ export class PlantView {
     const mesh = this.mesh;
     if (!mesh) return;
     const geometry = this.plant.geometry;
-    for (const name of ['position', 'normal'] as const) {
+    for (const [name, array, size] of [
+      ['position', mesh.positions, 3],
+      ['normal', mesh.normals, 3],
+      ['uv', mesh.uvs, 2],
+    ] as const) {
       const attribute = geometry.getAttribute(name) as BufferAttribute | undefined;
-      if (!attribute || attribute.array !== (name === 'position' ? mesh.positions : mesh.normals)) continue;
+      if (!attribute || attribute.array !== array) continue;
       attribute.clearUpdateRanges();
-      for (let k = 0; k + 1 < ranges.length; k += 2) attribute.addUpdateRange(3 * ranges[k], 3 * ranges[k + 1]);
+      for (let k = 0; k + 1 < ranges.length; k += 2) attribute.addUpdateRange(size * ranges[k], size * ranges[k + 1]);
       attribute.needsUpdate = true;
     }
     geometry.boundingBox = pointsBox(mesh.positions);
@@ -445,8 +463,34 @@ export class PlantView {
 
   /** Lit and shaded (true), or the palette's colours unshaded (false). */
   setLighting(lit: boolean): void {
-    this.plant.material = lit ? this.lit : this.unlit;
+    this.lighting = lit;
+    this.applyMaterial();
+  }
+
+  /** Bark and leaf textures on (true, the default) or off (the palette's colours alone). */
+  setTextures(on: boolean): void {
+    this.texturing = on;
+    this.applyMaterial();
+  }
+
+  private applyMaterial(): void {
+    const textured = this.lighting ? this.textured.lit : this.textured.unlit;
+    const on = this.texturing && this.texturesLoaded === 2;
+    this.plant.material = on ? textured : this.lighting ? this.lit : this.unlit;
+    this.container.dataset.textures = String(on);
     this.requestRender();
+  }
+
+  /** An image arrived; with both, the plant is drawn textured (if the toggle is on). */
+  private textureLoaded(): void {
+    this.texturesLoaded++;
+    this.applyMaterial();
+  }
+
+  /** A texture did not load: show the plant untextured, and say so on the container (for tests). */
+  private texturesFailed(message: string): void {
+    this.container.dataset.texturesError = message;
+    this.setTextures(false);
   }
 
   /** Marks the plant as out of date (the grammar has errors) or current. */
@@ -473,6 +517,7 @@ export class PlantView {
     this.lines.material.dispose();
     this.lit.dispose();
     this.unlit.dispose();
+    this.textured.dispose();
     this.removeGrid();
     this.renderer.dispose();
     this.renderer.domElement.remove();

@@ -1,0 +1,51 @@
+// Bark and leaf textures for the plant view: the images shipped in public/textures/, loaded
+// relative to the page (the site may be served from any sub-path), and the lit and unlit material
+// triples (bark, leaf, plain) indexed by the mesh's material kinds (see addMaterialGroups).
+import { DoubleSide, type Material, MeshBasicMaterial, MeshStandardMaterial, RepeatWrapping, SRGBColorSpace, type Texture, TextureLoader } from 'three';
+
+/** Where a shipped texture is, relative to the page. */
+export function textureUrl(name: 'bark' | 'leaf'): string {
+  return new URL(`textures/${name}.png`, document.baseURI).href;
+}
+
+/**
+ * Loads a texture; `onLoad` runs when its image arrived (to render again). The image rows run
+ * top-down from v = 0, as in glTF (`flipY` off), and it repeats both ways.
+ */
+export function loadTexture(name: 'bark' | 'leaf', onLoad: () => void, onError: (message: string) => void): Texture {
+  const texture = new TextureLoader().load(textureUrl(name), onLoad, undefined, () => onError(`The ${name} texture could not be loaded.`));
+  texture.flipY = false;
+  texture.wrapS = RepeatWrapping;
+  texture.wrapT = RepeatWrapping;
+  texture.colorSpace = SRGBColorSpace;
+  return texture;
+}
+
+/** The textured materials of the plant: [bark, leaf, plain], lit and unlit. */
+export interface TexturedMaterials {
+  lit: Material[];
+  unlit: Material[];
+  dispose(): void;
+}
+
+/**
+ * Bark: the bark texture times the vertex colour. Leaf: the leaf texture times the vertex colour,
+ * cut out where the image is transparent (`alphaTest`), both sides shaded. Plain (spheres):
+ * `plainLit` / `plainUnlit`, the untextured materials.
+ */
+export function texturedMaterials(bark: Texture, leaf: Texture, plainLit: Material, plainUnlit: Material): TexturedMaterials {
+  const lit = { vertexColors: true, side: DoubleSide, roughness: 0.85, metalness: 0 } as const;
+  const barkLit = new MeshStandardMaterial({ ...lit, map: bark });
+  const leafLit = new MeshStandardMaterial({ ...lit, map: leaf, alphaTest: 0.5 });
+  const barkUnlit = new MeshBasicMaterial({ vertexColors: true, side: DoubleSide, map: bark });
+  const leafUnlit = new MeshBasicMaterial({ vertexColors: true, side: DoubleSide, map: leaf, alphaTest: 0.5 });
+  return {
+    lit: [barkLit, leafLit, plainLit],
+    unlit: [barkUnlit, leafUnlit, plainUnlit],
+    dispose() {
+      for (const m of [barkLit, leafLit, barkUnlit, leafUnlit]) m.dispose();
+      bark.dispose();
+      leaf.dispose();
+    },
+  };
+}
