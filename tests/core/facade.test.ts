@@ -202,11 +202,11 @@ describe('buildPlant on a grammar with an error', () => {
     const source = 'axiom: F+F+F';
     const plain = buildPlant(source);
     const sides = buildPlant(source, { sides: 12 });
-    // One axis of three segments (joints share rings): 4 rings of `sides` vertices, and 2 caps of
-    // `sides` vertices and a centre each.
+    // One axis of three segments (joints share rings): 4 rings of `sides` vertices plus a seam
+    // vertex for the texture's wrap, and 2 caps of `sides` vertices and a centre each.
     expect(plain.stats.segments).toBe(3);
-    expect(plain.stats.vertices).toBe(4 * 6 + 2 * (6 + 1));
-    expect(sides.stats.vertices).toBe(4 * 12 + 2 * (12 + 1));
+    expect(plain.stats.vertices).toBe(4 * (6 + 1) + 2 * (6 + 1));
+    expect(sides.stats.vertices).toBe(4 * (12 + 1) + 2 * (12 + 1));
     const bent = '#angle 20\naxiom: F+F+F+F';
     const sharp = buildPlant(bent);
     const smooth = buildPlant(bent, { smoothAll: true });
