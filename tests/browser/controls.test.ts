@@ -9,7 +9,7 @@ import {
   editorText,
   generation,
   nextBuild,
-  openFromGallery,
+  openExample,
   openStudio,
   savePage,
   shownStats,
@@ -22,11 +22,7 @@ let problems: string[];
 
 /** Opens an example from the gallery, replacing the text if the studio asks, and waits for it. */
 async function open(file: string): Promise<void> {
-  const before = await generation(page);
-  await openFromGallery(page, file);
-  const replace = page.getByTestId('confirm-replace-button');
-  if (await replace.isVisible()) await replace.click();
-  expect(await nextBuild(page, before)).toBe('ok');
+  expect(await openExample(page, file)).toBe('ok');
 }
 
 /** The iterations of every build delivered from now on, recorded in the page. */

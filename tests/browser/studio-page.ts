@@ -96,3 +96,15 @@ export async function openFromGallery(page: Page, file: string): Promise<void> {
   await card.scrollIntoViewIfNeeded();
   await card.click();
 }
+
+/**
+ * Opens an example from the gallery, replacing the text if the studio asks first, and waits for
+ * its build: returns the build's status (`ok` when the plant is shown).
+ */
+export async function openExample(page: Page, file: string): Promise<string | null> {
+  const before = await generation(page);
+  await openFromGallery(page, file);
+  const replace = page.getByTestId('confirm-replace-button');
+  if (await replace.isVisible()) await replace.click();
+  return nextBuild(page, before);
+}

@@ -4,7 +4,7 @@
 import { chromium, type Browser, type Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { changedShare, foregroundShare } from './pictures';
-import { canvasPicture, generation, nextBuild, openFromGallery, openStudio, savePage } from './studio-page';
+import { canvasPicture, openExample, openStudio, savePage } from './studio-page';
 
 let browser: Browser;
 let page: Page;
@@ -21,11 +21,7 @@ afterAll(async () => {
 
 describe('textures', () => {
   it('loads the bark and leaf textures and shows them on the plant, with a toggle', async () => {
-    const before = await generation(page);
-    await openFromGallery(page, 'abop-1.25-bush.lsys');
-    const replace = page.getByTestId('confirm-replace-button');
-    if (await replace.isVisible()) await replace.click();
-    expect(await nextBuild(page, before)).toBe('ok');
+    expect(await openExample(page, 'abop-1.25-bush.lsys')).toBe('ok');
     const viewport = page.getByTestId('viewport');
     expect(await page.getByTestId('textures').getAttribute('aria-pressed')).toBe('true');
     // The images are served from the page's own folder (a failed request would be in `problems`).
@@ -50,11 +46,7 @@ describe('textures', () => {
   });
 
   it('shows bark on thick branches (a close-up screenshot of smooth-tree)', async () => {
-    const before = await generation(page);
-    await openFromGallery(page, 'smooth-tree.lsys');
-    const replace = page.getByTestId('confirm-replace-button');
-    if (await replace.isVisible()) await replace.click();
-    expect(await nextBuild(page, before)).toBe('ok');
+    expect(await openExample(page, 'smooth-tree.lsys')).toBe('ok');
     const box = (await page.getByTestId('viewport').boundingBox())!;
     await page.mouse.move(box.x + box.width / 2, box.y + box.height * 0.7);
     for (let k = 0; k < 6; k++) await page.mouse.wheel(0, -300);
