@@ -182,7 +182,9 @@ export class ContextView {
       return;
     }
     const name = this.productionName(production);
-    const counts = `fired ${plural(explanation.fired, 'time')} · contexts matched ${explanation.contextMatched} · condition failed ${explanation.conditionFailed}`;
+    // A context-free production has no context to match: say what its count means there.
+    const matched = production.context ? 'contexts matched' : 'predecessor matched';
+    const counts = `fired ${plural(explanation.fired, 'time')} · ${matched} ${explanation.contextMatched} · condition failed ${explanation.conditionFailed}`;
     summary.dataset.fired = String(explanation.fired);
     summary.dataset.contextMatched = String(explanation.contextMatched);
     summary.dataset.conditionFailed = String(explanation.conditionFailed);
