@@ -5,28 +5,24 @@
 // tool exports it with --edits, and carry it in a share link.
 import { readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { chromium, type Browser, type Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { exportWithCli, removeScratch, scratchDir } from '../export/tools';
 import { colourShare, differingShare, foregroundMask, type Picture } from './pictures';
-import { canvasPicture, editorText, generation, nextBuild, openFromGallery, openStudio, savePage, twoFrames } from './studio-page';
+import { canvasPicture, editorText, generation, nextBuild, openFromGallery, savePage, twoFrames } from './studio-page';
+import { browser, page, problems, useStudio } from './session';
 
-let browser: Browser;
-let page: Page;
-let problems: string[];
 const dir = scratchDir('branches');
 
+useStudio();
+
 beforeAll(async () => {
-  browser = await chromium.launch({ executablePath: '/usr/bin/chromium' });
-  ({ page, problems } = await openStudio(browser));
   await openFromGallery(page, 'game-tree.lsys');
   await page.waitForFunction(() => window.__meristem?.preview?.settled === true && (window.__meristem.lastStats?.segments ?? 0) > 1000);
   await page.getByTestId('grid').click(); // only the plant differs from the background
   await twoFrames(page);
 });
 
-afterAll(async () => {
-  await browser?.close();
+afterAll(() => {
   if (problems.length === 0) removeScratch(dir);
 });
 

@@ -1,8 +1,7 @@
 // End-to-end: the studio's controls around the editor and the view: #define sliders, step / play,
 // the seed, 2D / 3D, grid and lighting, the camera kept across edits, the splitter, the shortcuts
 // and their help, #define completion. Screenshots of the whole page land in test-results/.
-import { chromium, type Browser, type Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import { changedShare, differingShare, foregroundOverlap, foregroundShare } from './pictures';
 import {
   canvasPicture,
@@ -10,15 +9,11 @@ import {
   generation,
   nextBuild,
   openExample,
-  openStudio,
   savePage,
   shownStats,
   twoFrames,
 } from './studio-page';
-
-let browser: Browser;
-let page: Page;
-let problems: string[];
+import { page, problems, useStudio } from './session';
 
 /** Opens an example from the gallery, replacing the text if the studio asks, and waits for it. */
 async function open(file: string): Promise<void> {
@@ -34,14 +29,7 @@ async function recordIterations(): Promise<void> {
   });
 }
 
-beforeAll(async () => {
-  browser = await chromium.launch({ executablePath: '/usr/bin/chromium' });
-  ({ page, problems } = await openStudio(browser));
-});
-
-afterAll(async () => {
-  await browser?.close();
-});
+useStudio();
 
 describe('sliders for #define constants', () => {
   it('has one slider per numeric #define, and dragging one rewrites the text and the plant', async () => {

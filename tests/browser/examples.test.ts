@@ -1,23 +1,12 @@
 // End-to-end: every example of the gallery opened through the gallery dialog, as a user does it:
 // no console errors, the text in the editor, a plant on the canvas. And the gallery's own
 // behaviour: thumbnails, keyboard use, and never losing the user's text.
-import { chromium, type Browser, type Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import { decodePng, foregroundExtent, foregroundShare } from './pictures';
-import { canvasPicture, editorText, example, exampleFiles, generation, nextBuild, openFromGallery, openStudio, savePage } from './studio-page';
+import { canvasPicture, editorText, example, exampleFiles, generation, nextBuild, openFromGallery, savePage } from './studio-page';
+import { page, problems, useStudio } from './session';
 
-let browser: Browser;
-let page: Page;
-let problems: string[];
-
-beforeAll(async () => {
-  browser = await chromium.launch({ executablePath: '/usr/bin/chromium' });
-  ({ page, problems } = await openStudio(browser));
-});
-
-afterAll(async () => {
-  await browser?.close();
-});
+useStudio();
 
 describe('every gallery example, opened from the gallery', () => {
   it.each(exampleFiles())('%s opens and shows a plant', async (file) => {

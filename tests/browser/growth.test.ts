@@ -1,21 +1,10 @@
 // End-to-end: the Growth panel (issue 8, seed 002's particle attributes) writes its directives into
 // the text, one undoable change each, and the plant follows.
-import { chromium, type Browser, type Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { editorText, generation, nextBuild, openStudio, savePage, shownStats } from './studio-page';
+import { describe, expect, it } from 'vitest';
+import { editorText, generation, nextBuild, savePage, shownStats } from './studio-page';
+import { page, problems, useStudio } from './session';
 
-let browser: Browser;
-let page: Page;
-let problems: string[];
-
-beforeAll(async () => {
-  browser = await chromium.launch({ executablePath: '/usr/bin/chromium' });
-  ({ page, problems } = await openStudio(browser));
-});
-
-afterAll(async () => {
-  await browser?.close();
-});
+useStudio();
 
 describe('the Growth panel', () => {
   it('switches lifetime on and off, edits its values, and the plant follows', async () => {

@@ -10,27 +10,16 @@
 // measures the CPU rasterizer, not the page (it happens on a plain orbit too, with no build at
 // all). `npm run bench:studio` reports both setups.
 import { writeFileSync } from 'node:fs';
-import { chromium, type Browser, type Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { RESULTS, generation, nextBuild, openStudio, savePage, twoFrames } from './studio-page';
+import { describe, expect, it } from 'vitest';
+import { RESULTS, generation, nextBuild, savePage, twoFrames } from './studio-page';
+import { page, problems, useStudio } from './session';
 
 /** The longest main-thread task allowed while typing. */
 const LONG_TASK_LIMIT_MS = 200;
 /** GPU compositing on SwiftShader (see above). */
 export const GPU_COMPOSITING = ['--use-angle=swiftshader', '--enable-unsafe-swiftshader'];
 
-let browser: Browser;
-let page: Page;
-let problems: string[];
-
-beforeAll(async () => {
-  browser = await chromium.launch({ executablePath: '/usr/bin/chromium', args: GPU_COMPOSITING });
-  ({ page, problems } = await openStudio(browser));
-});
-
-afterAll(async () => {
-  await browser?.close();
-});
+useStudio(GPU_COMPOSITING);
 
 describe('typing while a 100,000-segment tree rebuilds', () => {
   it('never blocks the main thread for more than 200 ms and never shows a stale build', async () => {

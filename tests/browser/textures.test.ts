@@ -1,23 +1,12 @@
 // End-to-end: bark and leaf textures in the view. The shipped images load (relative to the page,
 // no console errors, no failed requests), the plant's pixels differ with textures on and off, and
 // a screenshot of a leafy plant with thick branches lands in test-results/.
-import { chromium, type Browser, type Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import { changedShare, foregroundShare } from './pictures';
-import { canvasPicture, openExample, openStudio, savePage } from './studio-page';
+import { canvasPicture, openExample, savePage } from './studio-page';
+import { page, problems, useStudio } from './session';
 
-let browser: Browser;
-let page: Page;
-let problems: string[];
-
-beforeAll(async () => {
-  browser = await chromium.launch({ executablePath: '/usr/bin/chromium' });
-  ({ page, problems } = await openStudio(browser));
-});
-
-afterAll(async () => {
-  await browser?.close();
-});
+useStudio();
 
 describe('textures', () => {
   it('loads the bark and leaf textures and shows them on the plant, with a toggle', async () => {

@@ -875,6 +875,13 @@ mod tests {
         }
     }
 
+    /// The mesh of `skeleton` with 8 sides and widths in units of 0.1, checked for consistency.
+    fn checked_mesh(skeleton: &Skeleton) -> MeshBuffers {
+        let mesh = build_mesh(skeleton, &absolute(0.1));
+        assert_eq!(mesh.check(), Ok(()));
+        mesh
+    }
+
     #[test]
     fn a_segment_is_a_capped_tube() {
         let skeleton = Skeleton {
@@ -906,7 +913,7 @@ mod tests {
             ],
             ..Skeleton::default()
         };
-        let mesh = build_mesh(&skeleton, &absolute(0.1));
+        let mesh = checked_mesh(&skeleton);
         assert_eq!(mesh.vertex_count(), 4 * 9 + 2 * 9);
         assert_eq!(mesh.check(), Ok(()));
         // The joint ring at b is the bisector's: its vertices are all at distance 0.05 from b.
@@ -929,8 +936,7 @@ mod tests {
             segments: vec![segment(a, b, None), segment(b, c, Some(0))],
             ..Skeleton::default()
         };
-        let mesh = build_mesh(&skeleton, &absolute(0.1));
-        assert_eq!(mesh.check(), Ok(()));
+        let mesh = checked_mesh(&skeleton);
         let uv = |v: usize| (mesh.uvs[2 * v], mesh.uvs[2 * v + 1]);
         let circumference = std::f64::consts::PI * 0.1;
         for ring in 0..3 {
@@ -986,8 +992,7 @@ mod tests {
             }],
             ..Skeleton::default()
         };
-        let mesh = build_mesh(&skeleton, &absolute(0.1));
-        assert_eq!(mesh.check(), Ok(()));
+        let mesh = checked_mesh(&skeleton);
         assert!(mesh.uvs.iter().all(|x| (0.0..=1.0).contains(x)));
         let materials = mesh.triangle_materials();
         assert!(materials.contains(&(MATERIAL_LEAF as u8)));
@@ -1006,7 +1011,7 @@ mod tests {
             segments: vec![segment(DVec3::ZERO, DVec3::Y, None), branch],
             ..Skeleton::default()
         };
-        let mesh = build_mesh(&skeleton, &absolute(0.1));
+        let mesh = checked_mesh(&skeleton);
         assert_eq!(mesh.vertex_count(), (18 + 18) + (18 + 9));
         assert_eq!(mesh.check(), Ok(()));
     }
@@ -1154,7 +1159,7 @@ mod tests {
             segments: vec![first, second],
             ..Skeleton::default()
         };
-        let mesh = build_mesh(&skeleton, &absolute(0.1));
+        let mesh = checked_mesh(&skeleton);
         // Start cap and first quads: module 2; second quads and end cap: module 5.
         assert_eq!(mesh.ranges, vec![0, 2, 8 + 16, 5]);
     }
@@ -1177,8 +1182,7 @@ mod tests {
             }],
             ..Skeleton::default()
         };
-        let mesh = build_mesh(&skeleton, &absolute(0.1));
-        assert_eq!(mesh.check(), Ok(()));
+        let mesh = checked_mesh(&skeleton);
         // Start cap and first quads: index 0; second quads and end cap: 2; the triangle: 5.
         assert_eq!(mesh.color_ranges, vec![0, 0, 8 + 16, 2, 8 + 16 + 16 + 8, 5]);
         let indices = mesh.triangle_color_indices();
