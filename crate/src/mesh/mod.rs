@@ -184,27 +184,25 @@ impl MeshBuffers {
 
     /// The colour index of each triangle, expanded from `color_ranges`.
     pub fn triangle_color_indices(&self) -> Vec<u16> {
-        let mut out = Vec::with_capacity(self.triangle_count());
-        let pairs: Vec<&[u32]> = self.color_ranges.chunks_exact(2).collect();
-        for (k, pair) in pairs.iter().enumerate() {
-            let end = pairs
-                .get(k + 1)
-                .map_or(self.triangle_count(), |next| next[0] as usize);
-            let index = pair[1].min(u16::MAX as u32) as u16;
-            out.resize(end.max(out.len()), index);
-        }
-        out
+        self.per_triangle(&self.color_ranges, |value| {
+            value.min(u16::MAX as u32) as u16
+        })
     }
 
     /// The material kind of each triangle, expanded from `material_ranges`.
     pub fn triangle_materials(&self) -> Vec<u8> {
+        self.per_triangle(&self.material_ranges, |value| value.min(255) as u8)
+    }
+
+    /// Expands `[first triangle, value, ...]` ranges to one `convert(value)` per triangle.
+    fn per_triangle<T: Copy>(&self, ranges: &[u32], convert: impl Fn(u32) -> T) -> Vec<T> {
         let mut out = Vec::with_capacity(self.triangle_count());
-        let pairs: Vec<&[u32]> = self.material_ranges.chunks_exact(2).collect();
+        let pairs: Vec<&[u32]> = ranges.chunks_exact(2).collect();
         for (k, pair) in pairs.iter().enumerate() {
             let end = pairs
                 .get(k + 1)
                 .map_or(self.triangle_count(), |next| next[0] as usize);
-            out.resize(end.max(out.len()), pair[1].min(255) as u8);
+            out.resize(end.max(out.len()), convert(pair[1]));
         }
         out
     }
@@ -875,6 +873,28 @@ mod tests {
         }
     }
 
+    /// A polygon with no anchor.
+    fn polygon(points: Vec<DVec3>, color: u16, module: u32) -> Polygon {
+        Polygon {
+            points,
+            color,
+            module,
+            anchor: None,
+        }
+    }
+
+    /// A sphere of radius 1 at the origin, with no anchor.
+    fn unit_sphere(color: u16, module: u32) -> Sphere {
+        Sphere {
+            center: DVec3::ZERO,
+            radius: 1.0,
+            radius_width: None,
+            color,
+            module,
+            anchor: None,
+        }
+    }
+
     /// The mesh of `skeleton` with 8 sides and widths in units of 0.1, checked for consistency.
     fn checked_mesh(skeleton: &Skeleton) -> MeshBuffers {
         let mesh = build_mesh(skeleton, &absolute(0.1));
@@ -966,12 +986,11 @@ mod tests {
     #[test]
     fn leaves_polygons_and_spheres_have_uvs_in_the_unit_square_and_their_materials() {
         let skeleton = Skeleton {
-            polygons: vec![Polygon {
-                points: vec![DVec3::ZERO, DVec3::X, DVec3::new(0.5, 2.0, 0.0)],
-                color: 0,
-                module: 0,
-                anchor: None,
-            }],
+            polygons: vec![polygon(
+                vec![DVec3::ZERO, DVec3::X, DVec3::new(0.5, 2.0, 0.0)],
+                0,
+                0,
+            )],
             surfaces: vec![crate::turtle::Surface {
                 kind: crate::turtle::SurfaceKind::Leaf,
                 origin: DVec3::ZERO,
@@ -982,14 +1001,7 @@ mod tests {
                 module: 1,
                 anchor: None,
             }],
-            spheres: vec![Sphere {
-                center: DVec3::ZERO,
-                radius: 1.0,
-                radius_width: None,
-                color: 0,
-                module: 2,
-                anchor: None,
-            }],
+            spheres: vec![unit_sphere(0, 2)],
             ..Skeleton::default()
         };
         let mesh = checked_mesh(&skeleton);
@@ -1094,20 +1106,8 @@ mod tests {
     fn polygons_are_two_sided_and_spheres_closed() {
         let square = vec![DVec3::ZERO, DVec3::X, DVec3::new(1.0, 1.0, 0.0), DVec3::Y];
         let skeleton = Skeleton {
-            polygons: vec![Polygon {
-                points: square,
-                color: 3,
-                module: 7,
-                anchor: None,
-            }],
-            spheres: vec![Sphere {
-                center: DVec3::ZERO,
-                radius: 1.0,
-                radius_width: None,
-                color: 0,
-                module: 9,
-                anchor: None,
-            }],
+            polygons: vec![polygon(square, 3, 7)],
+            spheres: vec![unit_sphere(0, 9)],
             ..Skeleton::default()
         };
         let mesh = build_mesh(&skeleton, &MeshOptions::default());
@@ -1170,16 +1170,15 @@ mod tests {
         second.color = 2;
         let skeleton = Skeleton {
             segments: vec![segment(DVec3::ZERO, DVec3::Y, None), second],
-            polygons: vec![Polygon {
-                points: vec![
+            polygons: vec![polygon(
+                vec![
                     DVec3::X,
                     DVec3::new(2.0, 0.0, 0.0),
                     DVec3::new(2.0, 1.0, 0.0),
                 ],
-                color: 5,
-                module: 9,
-                anchor: None,
-            }],
+                5,
+                9,
+            )],
             ..Skeleton::default()
         };
         let mesh = checked_mesh(&skeleton);
