@@ -196,12 +196,11 @@ impl MeshBuffers {
 
     /// Expands `[first triangle, value, ...]` ranges to one `convert(value)` per triangle.
     fn per_triangle<T: Copy>(&self, ranges: &[u32], convert: impl Fn(u32) -> T) -> Vec<T> {
-        let mut out = Vec::with_capacity(self.triangle_count());
-        let pairs: Vec<&[u32]> = ranges.chunks_exact(2).collect();
-        for (k, pair) in pairs.iter().enumerate() {
-            let end = pairs
-                .get(k + 1)
-                .map_or(self.triangle_count(), |next| next[0] as usize);
+        let count = self.triangle_count();
+        let mut out = Vec::with_capacity(count);
+        let mut pairs = ranges.chunks_exact(2).peekable();
+        while let Some(pair) = pairs.next() {
+            let end = pairs.peek().map_or(count, |next| next[0] as usize);
             out.resize(end.max(out.len()), convert(pair[1]));
         }
         out
@@ -935,7 +934,6 @@ mod tests {
         };
         let mesh = checked_mesh(&skeleton);
         assert_eq!(mesh.vertex_count(), 4 * 9 + 2 * 9);
-        assert_eq!(mesh.check(), Ok(()));
         // The joint ring at b is the bisector's: its vertices are all at distance 0.05 from b.
         let ring = (9..18).map(|v| {
             DVec3::new(
@@ -1025,7 +1023,6 @@ mod tests {
         };
         let mesh = checked_mesh(&skeleton);
         assert_eq!(mesh.vertex_count(), (18 + 18) + (18 + 9));
-        assert_eq!(mesh.check(), Ok(()));
     }
 
     #[test]
