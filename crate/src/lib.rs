@@ -17,6 +17,7 @@ pub mod model;
 pub mod pipeline;
 pub mod syntax;
 pub mod turtle;
+pub mod vocabulary;
 mod wasm;
 
 pub use pipeline::{build, Build, BuildOptions};

@@ -10,7 +10,7 @@ use crate::branches::{BranchEdit, BranchEditor, BranchTree, EditReport, MeshChan
 use crate::derive::{self, DeriveOptions};
 use crate::diagnostics::{has_errors, Diagnostic, LineIndex, LocatedDiagnostic};
 use crate::export::Stats;
-use crate::growth::{GrowthRecord, GrowthState, Heights};
+use crate::growth::{Adjustments, GrowthRecord, GrowthTracker};
 use crate::mesh::{self, MeshBuffers, MeshOptions};
 use crate::model::{self, LString, Model};
 use crate::syntax;
@@ -258,52 +258,71 @@ impl Build {
     }
 }
 
-/// Derive's observer: the turtle, run on the derived string (not its homomorphism image).
-struct TurtleObserver<'m> {
+/// What the stages after derive do while it derives: growth follows every module and plans each
+/// step (asking the turtle for heights), and the turtle answers query modules. Both read the
+/// derived string itself, not its homomorphism image.
+struct StageObserver<'m> {
     model: &'m Model,
+    growth: Option<GrowthTracker<'m>>,
 }
 
-impl derive::Observer for TurtleObserver<'_> {
-    fn queries(&mut self, s: &LString, growth: Option<&GrowthState>) -> Vec<(u32, [f64; 3])> {
-        turtle::interpret_grown(self.model, s, growth)
+impl derive::Observer for StageObserver<'_> {
+    fn follows_modules(&self) -> bool {
+        self.growth.is_some()
+    }
+
+    fn axiom(&mut self, axiom: &LString, rng: &mut dyn rand::Rng) {
+        if let Some(g) = &mut self.growth {
+            g.axiom(axiom, rng);
+        }
+    }
+
+    fn plan(
+        &mut self,
+        step: u32,
+        s: &LString,
+        rng: &mut dyn rand::Rng,
+    ) -> Result<Option<Vec<u32>>, Diagnostic> {
+        let Some(g) = &mut self.growth else {
+            return Ok(None);
+        };
+        let model = self.model;
+        let mut heights = |s: &LString, a: &Adjustments| turtle::heights(model, s, Some(a));
+        g.plan(step, s, &mut heights, rng).map(Some)
+    }
+
+    fn followed(
+        &mut self,
+        written: &LString,
+        parent: &[u32],
+        origin: &[u32],
+        birth: Option<u32>,
+        rng: &mut dyn rand::Rng,
+    ) {
+        if let Some(g) = &mut self.growth {
+            g.follow(written, parent, origin, birth, rng);
+        }
+    }
+
+    fn cut(&mut self, kept: &[u32]) {
+        if let Some(g) = &mut self.growth {
+            g.cut(kept);
+        }
+    }
+
+    fn stepped(&mut self, step: u32) {
+        if let Some(g) = &mut self.growth {
+            g.stepped(step);
+        }
+    }
+
+    fn queries(&mut self, s: &LString) -> Vec<(u32, [f64; 3])> {
+        let adjustments = self.growth.as_ref().map(|g| g.adjustments(&[]));
+        turtle::interpret_adjusted(self.model, s, adjustments.as_ref())
             .queries
             .into_iter()
             .map(|q| (q.module, q.value))
             .collect()
-    }
-
-    fn heights(&mut self, s: &LString, growth: &GrowthState) -> Heights {
-        turtle::heights(self.model, s, Some(growth))
-    }
-}
-
-/// The growth state of the string the turtle reads: with a homomorphism, each module takes the
-/// state of the derived module it comes from, and only the first module from each keeps its
-/// rotations (so a module drawn as several segments turns once).
-fn turtle_growth(state: &GrowthState, turtle_origin: &[u32]) -> GrowthState {
-    if turtle_origin.is_empty() {
-        return state.clone();
-    }
-    let modules = turtle_origin
-        .iter()
-        .enumerate()
-        .map(|(j, &o)| {
-            let g = state.modules.get(o as usize).copied().unwrap_or_default();
-            if j > 0 && turtle_origin[j - 1] == o {
-                crate::growth::ModuleGrowth {
-                    sun: 0.0,
-                    wind: 0.0,
-                    gravity: 0.0,
-                    ..g
-                }
-            } else {
-                g
-            }
-        })
-        .collect();
-    GrowthState {
-        step: state.step,
-        modules,
     }
 }
 
@@ -358,15 +377,19 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Stopwatch) -> Bu
         result.model = Some(model);
         return result;
     }
-    let mut observer = TurtleObserver { model: &model };
-    result.turtle_origin = match derive::derive_tracked(
+    let mut observer = StageObserver {
+        model: &model,
+        growth: GrowthTracker::new(&model, steps),
+    };
+    let derived = derive::derive_tracked(
         &model,
         &DeriveOptions {
             steps,
             seed: options.seed,
         },
-        Some(&mut observer),
-    ) {
+        &mut observer,
+    );
+    let adjustments = match derived {
         Ok(derivation) => {
             result.diagnostics.extend(derivation.warnings);
             result.string = derivation.string;
@@ -374,8 +397,13 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Stopwatch) -> Bu
             result.origin = derivation.origin;
             result.previous = derivation.previous;
             result.parent = derivation.parent;
-            result.growth = derivation.growth;
-            derivation.turtle_origin
+            result.turtle_origin = derivation.turtle_origin;
+            let adjustments = observer
+                .growth
+                .as_ref()
+                .map(|g| g.adjustments(&result.turtle_origin));
+            result.growth = observer.growth.map(GrowthTracker::finish);
+            adjustments
         }
         Err(diagnostic) => {
             result.diagnostics.push(diagnostic);
@@ -385,14 +413,10 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Stopwatch) -> Bu
         }
     };
     watch.timings.derive = watch.lap();
-    let growth = result
-        .growth
-        .as_ref()
-        .map(|g| turtle_growth(&g.state, &result.turtle_origin));
-    result.skeleton = turtle::interpret_grown(
+    result.skeleton = turtle::interpret_adjusted(
         &model,
         result.interpreted.as_ref().unwrap_or(&result.string),
-        growth.as_ref(),
+        adjustments.as_ref(),
     );
     watch.timings.interpret = watch.lap();
     result.iterations = steps;

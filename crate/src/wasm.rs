@@ -15,16 +15,11 @@ pub fn version() -> String {
     env!("CARGO_PKG_VERSION").to_string()
 }
 
-/// The turtle command table as JSON: `[{"name","params","doc","category"}]`.
+/// The language's vocabulary as JSON (`crate::vocabulary::vocabulary_json`): modules, directives,
+/// keywords, functions and values, each with typed parameters.
 #[wasm_bindgen]
-pub fn commands() -> String {
-    crate::turtle::commands_json()
-}
-
-/// The directive table (`crate::model::directives::DIRECTIVES`) as JSON: `[{name, args, doc}]`.
-#[wasm_bindgen]
-pub fn directives() -> String {
-    crate::model::directives::directives_json()
+pub fn vocabulary() -> String {
+    crate::vocabulary::vocabulary_json()
 }
 
 /// Runs the whole pipeline: parse -> resolve -> derive -> interpret -> mesh.

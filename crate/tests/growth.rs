@@ -216,7 +216,7 @@ fn the_sun_in_the_south_bends_the_middle_and_upper_stem_towards_plus_x() {
         // Never past the sun: no segment leans further from the vertical than the sun does.
         let altitude = meristem::growth::solar_altitude(
             38.0,
-            meristem::growth::Season::named(season).expect("season"),
+            meristem::vocabulary::Season::named(season).expect("season"),
         );
         for s in segments {
             let from_vertical = direction(s).angle_between(DVec3::Y).to_degrees();

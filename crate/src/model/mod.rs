@@ -3,17 +3,22 @@
 //! at text or re-check anything.
 
 mod alphabet;
-pub mod directives;
 mod lstring;
 mod program;
 mod resolve;
+mod settings;
 
 pub use alphabet::{Alphabet, ModuleId};
 pub use lstring::LString;
-pub use program::{Env, EvalError, Function, Program, Scope, MAX_STACK};
+pub use program::{Env, EvalError, Program, Scope, MAX_STACK};
 pub use resolve::resolve;
+pub use settings::{
+    directive_default, Bend, GrowthAttributes, Lifetime, Settings, Shape, ShapeWidth, Speed, Sun,
+    DEFAULT_PALETTE,
+};
 
 use crate::syntax::{Section, Span};
+use crate::vocabulary::{Command, ModuleInfo};
 
 /// A module in a predecessor or context: its formal parameters bind slots
 /// `first_slot .. first_slot + arity` of the production.
@@ -48,7 +53,7 @@ pub struct SuccessorModule {
 
 /// Green's control modules (LANGUAGE.md section 7) and how their groups sit in a string:
 /// `@Switch(cursor) @< A @| B @| C @>`, `@Pendulum(reversed) @< … @>`, `@Repeat(k) @< … @>`.
-/// The markers `@<`, `@|`, `@>` are internal names that no grammar can write.
+/// The markers ([`GroupIds::MARKERS`]) are internal names that no grammar can write.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct GroupIds {
     pub switch: ModuleId,
@@ -60,6 +65,10 @@ pub struct GroupIds {
 }
 
 impl GroupIds {
+    /// The names of the markers that open a group, separate its members and close it: not names
+    /// of the language (the tokenizer never reads them), so no grammar can write them.
+    pub const MARKERS: [&'static str; 3] = ["@<", "@|", "@>"];
+
     /// True for the three control modules.
     pub fn is_group(&self, id: ModuleId) -> bool {
         id == self.switch || id == self.pendulum || id == self.repeat
@@ -116,87 +125,6 @@ impl RuleSet {
     }
 }
 
-/// Values set by directives, with the defaults of LANGUAGE.md section 2.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Settings {
-    /// `#angle`: the default turn angle δ in degrees.
-    pub angle: f64,
-    /// `#iterations` / `derivation length:`: the default number of derivation steps.
-    pub iterations: u32,
-    /// `#seed`: the seed of the random generator.
-    pub seed: u64,
-    /// `#step`: the default length of `F` and `f`.
-    pub step: f64,
-    /// `#width`: the initial segment width, in width units (see `mesh`).
-    pub width: f64,
-    /// `#width_step`: how much `!` without a parameter decreases the width.
-    pub width_step: f64,
-    /// `#tropism x y z e`: the tropism vector T and susceptibility e (ABOP 2.3); e = 0 is none.
-    pub tropism: (glam::DVec3, f64),
-    /// `#max_modules`: derivation stops with an error when a string would grow past this.
-    pub max_modules: usize,
-    /// `#max_steps`: the largest number of derivation steps a build may run.
-    pub max_steps: u32,
-    /// `#draw A B`: further modules that draw a segment like `F`.
-    pub draw: Vec<ModuleId>,
-    /// The colours of the colour index (`'`, `;`), linear RGB in 0..=1: [`DEFAULT_PALETTE`]
-    /// with the entries `#color` set. An index past the end wraps modulo the length.
-    pub palette: Vec<[f32; 3]>,
-    /// Span of the `#iterations` directive, where step-related diagnostics point.
-    pub iterations_span: Option<Span>,
-}
-
-/// The colour index's default colours: a ramp from bark brown (0) through olive and greens to
-/// light green (7), then flower and fruit colours. Index 0 is the turtle's starting colour, so
-/// stems start brown and `'` steps them towards leaf green.
-pub const DEFAULT_PALETTE: [[f32; 3]; 16] = [
-    [0.40, 0.27, 0.15], // 0 bark brown
-    [0.44, 0.34, 0.17], // 1 light bark
-    [0.43, 0.42, 0.18], // 2 olive
-    [0.36, 0.48, 0.16], // 3 green olive
-    [0.27, 0.54, 0.15], // 4 green
-    [0.20, 0.58, 0.16], // 5 leaf green
-    [0.28, 0.66, 0.20], // 6 fresh green
-    [0.48, 0.74, 0.28], // 7 light green
-    [0.92, 0.80, 0.28], // 8 yellow
-    [0.93, 0.55, 0.20], // 9 orange
-    [0.82, 0.22, 0.18], // 10 red
-    [0.90, 0.50, 0.65], // 11 pink
-    [0.55, 0.28, 0.68], // 12 purple
-    [0.30, 0.45, 0.85], // 13 blue
-    [0.95, 0.95, 0.92], // 14 white
-    [0.50, 0.50, 0.50], // 15 grey
-];
-
-/// The largest colour index `#color` may set.
-pub const MAX_COLOR_INDEX: usize = 255;
-
-/// Limits that protect the page from grammars that explode (overridable per grammar).
-pub const DEFAULT_MAX_MODULES: usize = 5_000_000;
-/// The default limit on derivation steps.
-pub const DEFAULT_MAX_STEPS: u32 = 10_000;
-/// The default `maximum depth:` of homomorphism and decomposition.
-pub const DEFAULT_MAX_DEPTH: u32 = 16;
-
-impl Default for Settings {
-    fn default() -> Self {
-        Settings {
-            angle: 90.0,
-            iterations: 0,
-            seed: 1,
-            step: 1.0,
-            width: 1.0,
-            width_step: 0.1,
-            tropism: (glam::DVec3::NEG_Y, 0.0),
-            max_modules: DEFAULT_MAX_MODULES,
-            max_steps: DEFAULT_MAX_STEPS,
-            draw: Vec::new(),
-            palette: DEFAULT_PALETTE.to_vec(),
-            iterations_span: None,
-        }
-    }
-}
-
 /// A `#random` variable: a name and the distribution each deviate is drawn from.
 #[derive(Clone, Debug, PartialEq)]
 pub struct RandomVariable {
@@ -228,7 +156,25 @@ pub struct Model {
     /// True when any module of the axiom or a successor has parameters.
     pub parametric: bool,
     pub settings: Settings,
+    /// For each module id: its row of the vocabulary (what the turtle and derivation do with it),
+    /// `None` for a module without meaning. `#draw` modules have `F`'s row.
+    pub meanings: Vec<Option<&'static ModuleInfo>>,
     /// The particle attributes (`#lifetime`, `#speed`, `#shape`, `#sun`, …) and which modules are
     /// apices and segments; all off by default.
-    pub growth: crate::growth::Attributes,
+    pub growth: GrowthAttributes,
+}
+
+impl Model {
+    /// What the turtle does with module `id`.
+    pub fn command(&self, id: ModuleId) -> Option<Command> {
+        self.meanings.get(id.index()).copied().flatten()?.command()
+    }
+
+    /// True when a query module (`?P ?H ?U ?L`) is in the grammar's alphabet.
+    pub fn has_queries(&self) -> bool {
+        (0..self.alphabet.len()).any(|i| {
+            self.command(ModuleId(i as u32))
+                .is_some_and(Command::is_query)
+        })
+    }
 }

@@ -4,93 +4,12 @@
 
 use crate::diagnostics::Diagnostic;
 use crate::syntax::{BinaryOp, ExprSyntax, Span, UnaryOp};
+use crate::vocabulary::{function_named, value_named, Function, Value};
 use rand::RngExt;
 use rand_distr::{Binomial, Distribution, Exp, Normal, Poisson};
 
 /// Deepest evaluation stack a compiled expression may need.
 pub const MAX_STACK: usize = 64;
-
-/// Functions of LANGUAGE.md section 4 (trigonometry in degrees).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Function {
-    Sin,
-    Cos,
-    Tan,
-    Asin,
-    Acos,
-    Atan,
-    Atan2,
-    Sqrt,
-    Exp,
-    Log,
-    Abs,
-    Floor,
-    Ceil,
-    Round,
-    Min,
-    Max,
-    Clamp,
-    Sign,
-    // Random functions (section 5): a fresh deviate at each evaluation.
-    Uniform,
-    Normal,
-    Exponential,
-    UniformInt,
-    Binomial,
-    Poisson,
-    Constant,
-}
-
-impl Function {
-    /// Name, arity, function.
-    const TABLE: &'static [(&'static str, usize, Function)] = &[
-        ("sin", 1, Function::Sin),
-        ("cos", 1, Function::Cos),
-        ("tan", 1, Function::Tan),
-        ("asin", 1, Function::Asin),
-        ("acos", 1, Function::Acos),
-        ("atan", 1, Function::Atan),
-        ("atan2", 2, Function::Atan2),
-        ("sqrt", 1, Function::Sqrt),
-        ("exp", 1, Function::Exp),
-        ("log", 1, Function::Log),
-        ("abs", 1, Function::Abs),
-        ("floor", 1, Function::Floor),
-        ("ceil", 1, Function::Ceil),
-        ("round", 1, Function::Round),
-        ("min", 2, Function::Min),
-        ("max", 2, Function::Max),
-        ("clamp", 3, Function::Clamp),
-        ("sign", 1, Function::Sign),
-        ("uniform", 2, Function::Uniform),
-        ("normal", 2, Function::Normal),
-        ("exponential", 1, Function::Exponential),
-        ("uniform_int", 2, Function::UniformInt),
-        ("binomial", 2, Function::Binomial),
-        ("poisson", 1, Function::Poisson),
-        ("constant", 1, Function::Constant),
-    ];
-
-    /// Looks a function up by name (case-insensitive, so Green's `UNIFORM(0,1)` reads too).
-    pub fn lookup(name: &str) -> Option<(usize, Function)> {
-        Self::TABLE
-            .iter()
-            .find(|(n, _, _)| n.eq_ignore_ascii_case(name))
-            .map(|&(_, a, f)| (a, f))
-    }
-
-    pub fn is_random(self) -> bool {
-        matches!(
-            self,
-            Function::Uniform
-                | Function::Normal
-                | Function::Exponential
-                | Function::UniformInt
-                | Function::Binomial
-                | Function::Poisson
-        )
-    }
-}
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Op {
@@ -207,12 +126,7 @@ impl Program {
                 Op::Const(_) | Op::Slot(_) | Op::NumIt | Op::MaxIt | Op::Var(_) => 1,
                 Op::Neg | Op::Not | Op::Truth | Op::Jump(_) => 0,
                 Op::Bin(_) | Op::JumpIfFalse(_) => -1,
-                Op::Call(f) => {
-                    1 - Function::TABLE
-                        .iter()
-                        .find(|t| t.2 == *f)
-                        .map_or(1, |t| t.1) as isize
-                }
+                Op::Call(f) => 1 - f.info().arity() as isize,
             };
             max = max.max(depth);
         }
@@ -314,7 +228,7 @@ impl Program {
                     };
                 }
                 Op::Call(f) => {
-                    let arity = Function::TABLE.iter().find(|t| t.2 == f).map_or(1, |t| t.1);
+                    let arity = f.info().arity();
                     sp -= arity;
                     let args = &stack[sp..sp + arity];
                     let value = call(f, args, env.rng).map_err(|m| self.error(pc - 1, m))?;
@@ -563,9 +477,8 @@ impl Compiler<'_> {
                 self.patch(jump_end);
             }
             ExprSyntax::Call(name, name_span, args, span) => {
-                let Some((arity, f)) = Function::lookup(name) else {
-                    let is_value = name == "NumIt"
-                        || name == "MaxIt"
+                let Some(info) = function_named(name) else {
+                    let is_value = value_named(name).is_some()
                         || self.scope.slot(name).is_some()
                         || self.scope.define(name).is_some()
                         || self.scope.random_var(name).is_some();
@@ -584,6 +497,7 @@ impl Compiler<'_> {
                         format!("unknown function '{name}'"),
                     ));
                 };
+                let (arity, f) = (info.arity(), info.function);
                 if args.len() != arity {
                     return Err(Diagnostic::error(
                         "E0502",
@@ -598,7 +512,7 @@ impl Compiler<'_> {
                 for a in args {
                     self.expr(a, depth + 1)?;
                 }
-                if f.is_random() {
+                if info.random {
                     self.random = true;
                 }
                 self.emit(Op::Call(f), span.clone());
@@ -610,10 +524,12 @@ impl Compiler<'_> {
     fn name(&mut self, name: &str, span: &Span, depth: usize) -> Result<(), Diagnostic> {
         if let Some(slot) = self.scope.slot(name) {
             self.emit(Op::Slot(slot), span.clone());
-        } else if name == "NumIt" {
-            self.emit(Op::NumIt, span.clone());
-        } else if name == "MaxIt" {
-            self.emit(Op::MaxIt, span.clone());
+        } else if let Some(value) = value_named(name) {
+            let op = match value.value {
+                Value::NumIt => Op::NumIt,
+                Value::MaxIt => Op::MaxIt,
+            };
+            self.emit(op, span.clone());
         } else if let Some(k) = self.scope.random_var(name) {
             self.random = true;
             self.emit(Op::Var(k), span.clone());
@@ -634,7 +550,7 @@ impl Compiler<'_> {
             let definition = definition.clone();
             self.expr(&definition, depth + 1)?;
             self.expanding.pop();
-        } else if Function::lookup(name).is_some() {
+        } else if function_named(name).is_some() {
             return Err(Diagnostic::error(
                 "E0504",
                 span.clone(),

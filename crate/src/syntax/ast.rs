@@ -1,5 +1,6 @@
 //! The syntax tree: what the text says, with byte spans, before any validation.
 
+use crate::vocabulary::DirectiveKind;
 use std::ops::Range;
 
 /// A UTF-8 byte range in the source text.
@@ -18,7 +19,10 @@ pub struct SourceFile {
 /// as `homomorphism_depth` or `decomposition_depth` after the section it stands in.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Directive {
+    /// The name as written, without `#` (`derivation length:` is `iterations`).
     pub name: String,
+    /// What the vocabulary says the name is; `None` for an unknown directive.
+    pub kind: Option<DirectiveKind>,
     /// The directive as the user wrote it, for messages: `#angle`, `derivation length:`.
     pub written: String,
     pub name_span: Span,
@@ -44,9 +48,6 @@ pub struct ModuleSyntax {
     /// the members (each a module string). `@Repeat` has one member and its count in `params`.
     pub group: Option<Vec<Vec<ModuleSyntax>>>,
 }
-
-/// The control modules whose parentheses hold modules rather than expressions.
-pub const GROUP_MODULES: [&str; 3] = ["@Switch", "@Pendulum", "@Repeat"];
 
 /// Which rule set a production belongs to (LANGUAGE.md section 3).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

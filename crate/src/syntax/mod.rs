@@ -6,8 +6,11 @@
 
 mod ast;
 mod comments;
+mod directive;
 mod expr;
 mod parse;
+mod production;
+mod scanner;
 
 pub use ast::{
     BinaryOp, Directive, ExprSyntax, ModuleSyntax, ProductionSyntax, Section, SourceFile, Span,

@@ -2,6 +2,7 @@
 
 use super::*;
 use crate::{derive, model, syntax};
+use glam::DVec3;
 
 fn run(src: &str) -> Skeleton {
     let (file, diags) = syntax::parse(src);

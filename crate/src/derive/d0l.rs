@@ -1,0 +1,109 @@
+//! The D0L path: a flat table from module id to successor, for grammars whose productions have no
+//! parameters, contexts, conditions or weights. The next length is computed before writing, and
+//! nothing is allocated per module.
+
+use super::{limit_error, NOT_REWRITTEN};
+use crate::diagnostics::Diagnostic;
+use crate::model::{LString, Model, ModuleId};
+
+/// The D0L path: usable when no production has parameters, contexts, conditions or weights.
+pub(super) struct D0lTable {
+    successors: Vec<ModuleId>,
+    rule_of: Vec<Option<(u32, u32)>>,
+    /// For each module id, the production that rewrites it ([`NOT_REWRITTEN`] if none).
+    production_of: Vec<u32>,
+}
+
+impl D0lTable {
+    pub(super) fn new(model: &Model) -> Option<Self> {
+        let rules = &model.productions;
+        let simple = !model.parametric
+            && rules
+                .productions
+                .iter()
+                .all(|p| !p.has_context() && p.condition.is_none() && p.weight.is_none());
+        if !simple {
+            return None;
+        }
+        let mut successors = Vec::new();
+        let rule_of = rules
+            .by_predecessor
+            .iter()
+            .map(|candidates| {
+                candidates.first().map(|&p| {
+                    let start = successors.len() as u32;
+                    successors.extend(rules.productions[p as usize].successor.iter().map(|s| s.id));
+                    (start, successors.len() as u32)
+                })
+            })
+            .collect();
+        let production_of = rules
+            .by_predecessor
+            .iter()
+            .map(|c| c.first().copied().unwrap_or(NOT_REWRITTEN))
+            .collect();
+        Some(D0lTable {
+            successors,
+            rule_of,
+            production_of,
+        })
+    }
+
+    /// [`D0lTable::step`], returning for each written module the production that made it.
+    pub(super) fn step_tracked(
+        &self,
+        model: &Model,
+        src: &LString,
+        dst: &mut LString,
+        step: u32,
+    ) -> Result<(Vec<u32>, Vec<u32>), Diagnostic> {
+        self.step(model, src, dst, step)?;
+        let mut origin = Vec::with_capacity(dst.len());
+        let mut parent = Vec::with_capacity(dst.len());
+        for (i, &id) in src.ids.iter().enumerate() {
+            match self.rule_of[id.index()] {
+                Some((start, end)) => {
+                    let production = self.production_of[id.index()];
+                    origin.extend(std::iter::repeat_n(production, (end - start) as usize));
+                    parent.extend(std::iter::repeat_n(i as u32, (end - start) as usize));
+                }
+                None => {
+                    origin.push(NOT_REWRITTEN);
+                    parent.push(i as u32);
+                }
+            }
+        }
+        Ok((origin, parent))
+    }
+
+    pub(super) fn step(
+        &self,
+        model: &Model,
+        src: &LString,
+        dst: &mut LString,
+        step: u32,
+    ) -> Result<(), Diagnostic> {
+        let len: usize = src
+            .ids
+            .iter()
+            .map(|id| match self.rule_of[id.index()] {
+                Some((start, end)) => (end - start) as usize,
+                None => 1,
+            })
+            .sum();
+        if len > model.settings.max_modules {
+            return Err(limit_error(model, step, len));
+        }
+        dst.clear(false);
+        dst.ids.reserve(len);
+        for &id in &src.ids {
+            match self.rule_of[id.index()] {
+                Some((start, end)) => dst
+                    .ids
+                    .extend_from_slice(&self.successors[start as usize..end as usize]),
+                None => dst.ids.push(id),
+            }
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,76 @@
+//! Planned steps: when the observer plans a step (the growth attributes decide which apices stop
+//! and how often each grows), each module is rewritten as many times as the plan says.
+
+use super::rewriter::Rewriter;
+use super::{context, limit_error};
+use crate::diagnostics::Diagnostic;
+use crate::model::{LString, RuleSet};
+
+impl<R: rand::Rng> Rewriter<'_, R> {
+    /// Rewrites module `i` of `src` as the step's plan says: not at all (a stopped or resting
+    /// apex), once, or several times (`#speed` of the growth attributes).
+    pub(super) fn rewrite_planned(
+        &mut self,
+        rules: &RuleSet,
+        src: &LString,
+        i: usize,
+        dst: &mut LString,
+        num_it: u32,
+    ) -> Result<Option<u32>, Diagnostic> {
+        let times = self
+            .plan
+            .as_ref()
+            .map_or(1, |plan| plan.get(i).copied().unwrap_or(1));
+        match times {
+            0 => {
+                dst.push(src.ids[i], src.params_of(i));
+                Ok(None)
+            }
+            1 => self.rewrite_module(rules, src, i, dst, num_it),
+            _ => self.rewrite_repeatedly(rules, src, i, dst, num_it, times),
+        }
+    }
+
+    /// Rewrites module `i` of `src` `times` times within this step, like `@Repeat` on that one
+    /// module (the growth attributes' `#speed`). The first rewriting sees the whole string's contexts, the later ones
+    /// only the module's own successor; nothing more happens when no production applies.
+    fn rewrite_repeatedly(
+        &mut self,
+        rules: &RuleSet,
+        src: &LString,
+        i: usize,
+        dst: &mut LString,
+        num_it: u32,
+        times: u32,
+    ) -> Result<Option<u32>, Diagnostic> {
+        let model = self.model;
+        let mut current = LString::default();
+        current.clear(model.parametric);
+        let applied = self.rewrite_module(rules, src, i, &mut current, num_it)?;
+        if applied.is_some() && times > 1 {
+            let plan = self.plan.take();
+            let tracker = self.tracker.take();
+            let saved = std::mem::take(&mut self.partner);
+            let mut next = LString::default();
+            for _ in 1..times {
+                if rules.has_contexts() {
+                    context::bracket_partners(model, &current, &mut self.partner);
+                }
+                next.clear(model.parametric);
+                let len = current.len();
+                self.rewrite_range(rules, &current, 0..len, &mut next, num_it)?;
+                std::mem::swap(&mut current, &mut next);
+                if dst.len() + current.len() > model.settings.max_modules {
+                    return Err(limit_error(model, num_it, dst.len() + current.len()));
+                }
+            }
+            self.partner = saved;
+            self.tracker = tracker;
+            self.plan = plan;
+        }
+        for j in 0..current.len() {
+            dst.push(current.ids[j], current.params_of(j));
+        }
+        Ok(applied)
+    }
+}

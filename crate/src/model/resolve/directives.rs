@@ -1,0 +1,515 @@
+//! Directive arguments, read by the kinds the vocabulary declares for them
+//! ([`crate::vocabulary::DIRECTIVES`]) and applied to the settings.
+
+use super::scope::Slots;
+use super::Resolver;
+use crate::diagnostics::Diagnostic;
+use crate::model::settings::directive_default;
+use crate::model::{
+    Bend, Env, GrowthAttributes, Lifetime, ModuleId, Program, Settings, Shape, ShapeWidth, Speed,
+    Sun,
+};
+use crate::syntax::{Directive, SourceFile};
+use crate::vocabulary::{DirectiveInfo, DirectiveKind, ParamKind, Season};
+use glam::DVec3;
+
+/// Everything the directives of a file set.
+pub(super) struct DirectiveValues {
+    pub settings: Settings,
+    pub homomorphism_depth: u32,
+    pub decomposition_depth: u32,
+    pub ignore: Vec<ModuleId>,
+    pub consider: Option<Vec<ModuleId>>,
+    pub apex: Vec<ModuleId>,
+    pub growth: GrowthAttributes,
+}
+
+impl Default for DirectiveValues {
+    fn default() -> Self {
+        DirectiveValues {
+            settings: Settings::default(),
+            homomorphism_depth: directive_default(DirectiveKind::HomomorphismDepth, 0) as u32,
+            decomposition_depth: directive_default(DirectiveKind::DecompositionDepth, 0) as u32,
+            ignore: Vec::new(),
+            consider: None,
+            apex: Vec::new(),
+            growth: GrowthAttributes::default(),
+        }
+    }
+}
+
+/// One argument, read by its parameter's kind.
+enum Arg {
+    Number(f64),
+    Program(Program),
+    Season(Season),
+}
+
+/// The arguments of one directive, the longest form's length (missing optional ones take their
+/// defaults).
+struct Args(Vec<Arg>);
+
+impl Args {
+    fn number(&self, k: usize) -> f64 {
+        match self.0.get(k) {
+            Some(Arg::Number(v)) => *v,
+            _ => 0.0,
+        }
+    }
+
+    fn numbers<const N: usize>(&self, first: usize) -> [f64; N] {
+        std::array::from_fn(|k| self.number(first + k))
+    }
+
+    fn program(&mut self, k: usize) -> Option<Program> {
+        match std::mem::replace(self.0.get_mut(k)?, Arg::Number(0.0)) {
+            Arg::Program(p) => Some(p),
+            _ => None,
+        }
+    }
+
+    fn season(&self, k: usize) -> Season {
+        match self.0.get(k) {
+            Some(Arg::Season(s)) => *s,
+            _ => Season::Equinox,
+        }
+    }
+}
+
+/// The words of a directive's arguments, each as a directive of its own (for spans).
+fn words(d: &Directive) -> Vec<Directive> {
+    d.args
+        .split_whitespace()
+        .map(|word| {
+            let offset = word.as_ptr() as usize - d.args.as_ptr() as usize;
+            Directive {
+                args: word.to_string(),
+                args_span: d.args_span.start + offset..d.args_span.start + offset + word.len(),
+                ..d.clone()
+            }
+        })
+        .collect()
+}
+
+/// `#name needs 'A B' or 'A B C' (what they mean)`: the forms and their explanation.
+fn usage(d: &Directive, info: &DirectiveInfo) -> String {
+    let explanation = if info.usage.starts_with('(') {
+        format!(" {}", info.usage)
+    } else {
+        info.usage.to_string()
+    };
+    format!("{} needs {}{explanation}", d.written, info.forms_text())
+}
+
+impl Resolver {
+    /// Reads every directive of `file` into settings, limits, module lists and growth attributes.
+    pub(super) fn directives(&mut self, file: &SourceFile) -> DirectiveValues {
+        let mut values = DirectiveValues::default();
+        let mut seen: Vec<&Directive> = Vec::new();
+        for d in &file.directives {
+            let repeatable = d.kind.is_some_and(|k| k.info().repeatable);
+            if let Some(previous) = seen.iter().find(|p| p.name == d.name && !repeatable) {
+                self.diagnostics.push(Diagnostic::warning(
+                    "E0201",
+                    d.name_span.clone(),
+                    format!(
+                        "#{} is set twice; this one replaces the value at byte {}",
+                        d.name, previous.name_span.start
+                    ),
+                ));
+            }
+            seen.push(d);
+            match d.kind {
+                Some(kind) => self.directive(kind, d, &mut values),
+                None => self.diagnostics.push(Diagnostic::error(
+                    "E0200",
+                    d.name_span.clone(),
+                    format!("unknown directive '#{}'", d.name),
+                )),
+            }
+        }
+        if !values.ignore.is_empty() && values.consider.is_some() {
+            let last = file.directives.iter().rev().find(|d| {
+                matches!(
+                    d.kind,
+                    Some(DirectiveKind::Ignore | DirectiveKind::Consider)
+                )
+            });
+            self.diagnostics.push(Diagnostic::error(
+                "E0206",
+                last.map_or(0..0, |d| d.name_span.clone()),
+                "#ignore and #consider cannot both be used: one says what to skip, the other what to keep",
+            ));
+        }
+        values
+    }
+
+    /// Applies one directive.
+    fn directive(&mut self, kind: DirectiveKind, d: &Directive, v: &mut DirectiveValues) {
+        use DirectiveKind as K;
+        let s = &mut v.settings;
+        let whole_max =
+            |kind: DirectiveKind| kind.info().params()[0].range.map_or(0, |r| r.1 as u64);
+        match kind {
+            K::Angle => s.angle = self.number(d).unwrap_or(s.angle),
+            K::Step => s.step = self.number(d).unwrap_or(s.step),
+            K::Width => s.width = self.number(d).unwrap_or(s.width),
+            K::WidthStep => s.width_step = self.number(d).unwrap_or(s.width_step),
+            K::Tropism => {
+                if let Some(a) = self.arguments(d) {
+                    let [x, y, z, e] = a.numbers(0);
+                    s.tropism = (DVec3::new(x, y, z), e);
+                }
+            }
+            K::Color => self.color(d, kind.info(), &mut s.palette),
+            K::Iterations => {
+                if let Some(n) = self.whole(d, whole_max(kind)) {
+                    s.iterations = n as u32;
+                    s.iterations_span = Some(d.name_span.start..d.args_span.end);
+                }
+            }
+            K::Seed => s.seed = self.whole(d, whole_max(kind)).unwrap_or(s.seed),
+            K::MaxModules => {
+                s.max_modules = self
+                    .whole(d, whole_max(kind))
+                    .map_or(s.max_modules, |n| n.max(1) as usize)
+            }
+            K::MaxSteps => {
+                s.max_steps = self
+                    .whole(d, whole_max(kind))
+                    .map_or(s.max_steps, |n| n as u32)
+            }
+            K::HomomorphismDepth => {
+                v.homomorphism_depth = self
+                    .whole(d, whole_max(kind))
+                    .map_or(v.homomorphism_depth, |n| n as u32)
+            }
+            K::DecompositionDepth => {
+                v.decomposition_depth = self
+                    .whole(d, whole_max(kind))
+                    .map_or(v.decomposition_depth, |n| n as u32)
+            }
+            K::Module | K::Define | K::Random => {}
+            K::Draw => s.draw.extend(self.module_ids(d)),
+            K::Ignore => v.ignore.extend(self.module_ids(d)),
+            K::Apex => v.apex.extend(self.module_ids(d)),
+            K::Consider => v.consider = Some(self.module_ids(d)),
+            K::Lifetime => v.growth.lifetime = self.lifetime(d),
+            K::Speed => v.growth.speed = self.speed(d),
+            K::Shape => v.growth.shape = self.shape(d),
+            K::ShapeWidth => v.growth.shape_width = self.shape_width(d),
+            K::Sun => v.growth.sun = self.sun(d),
+            K::Gravity => v.growth.gravity = self.bend(d, kind),
+            K::Wind => v.growth.wind = self.bend(d, kind),
+        }
+    }
+
+    fn module_ids(&mut self, d: &Directive) -> Vec<ModuleId> {
+        d.modules
+            .iter()
+            .map(|m| self.alphabet.intern(&m.name))
+            .collect()
+    }
+
+    /// Reads the arguments of a directive written as words, by the kinds of the form whose length
+    /// they have; the missing optional ones of a shorter form take their defaults. Reports a wrong
+    /// number of words, and every word that is not of its kind.
+    fn arguments(&mut self, d: &Directive) -> Option<Args> {
+        let info = d.kind?.info();
+        let words = words(d);
+        let Some(form) = info.forms.iter().find(|f| f.len() == words.len()) else {
+            let message = format!("{}, found {} values", usage(d, info), words.len());
+            self.directive_error(info.count_code, d, message);
+            return None;
+        };
+        let mut args = Vec::new();
+        let mut ok = true;
+        for (word, param) in words.iter().zip(form.iter()) {
+            let arg = match param.kind {
+                ParamKind::Number => self.number(word).map(Arg::Number),
+                ParamKind::Whole => {
+                    let max = param.range.map_or(u64::MAX, |r| r.1 as u64);
+                    self.whole(word, max).map(|n| Arg::Number(n as f64))
+                }
+                ParamKind::StepExpression => self.step_program(word).map(Arg::Program),
+                ParamKind::Season => match Season::named(&word.args) {
+                    Some(s) => Some(Arg::Season(s)),
+                    None => {
+                        let message =
+                            format!("{}; '{}' is not a season", usage(d, info), word.args);
+                        self.directive_error(info.count_code, word, message);
+                        None
+                    }
+                },
+                ParamKind::Expression | ParamKind::Name | ParamKind::Modules => None,
+            };
+            match arg {
+                Some(arg) => args.push(arg),
+                None => ok = false,
+            }
+        }
+        if !ok {
+            return None;
+        }
+        // A shorter form is the start of the longest: the rest take their defaults.
+        let longest = info.params();
+        if longest.starts_with(form) {
+            for param in &longest[form.len()..] {
+                if let Some(value) = param.default_value(|_| 0.0) {
+                    args.push(Arg::Number(value));
+                }
+            }
+        }
+        Some(Args(args))
+    }
+
+    /// `#color i r g b` sets one entry of the palette; `#color i j r g b r g b` sets entries
+    /// i..=j to a linear ramp between two colours.
+    fn color(&mut self, d: &Directive, info: &DirectiveInfo, palette: &mut Vec<[f32; 3]>) {
+        let Some(args) = self.arguments(d) else {
+            return;
+        };
+        let (first, last, from, to) = match args.0.len() {
+            4 => {
+                let [i, r, g, b] = args.numbers(0);
+                (i, i, [r, g, b], [r, g, b])
+            }
+            _ => {
+                let [i, j, r0, g0, b0, r1, g1, b1] = args.numbers(0);
+                (i, j, [r0, g0, b0], [r1, g1, b1])
+            }
+        };
+        let in_range = |v: f64, k: usize| {
+            info.params()[k]
+                .range
+                .is_some_and(|(lo, hi)| v >= lo && v <= hi)
+        };
+        let index_ok = |v: f64| v.fract() == 0.0 && in_range(v, 0);
+        let component_ok = |v: &f64| in_range(*v, 2);
+        if !index_ok(first)
+            || !index_ok(last)
+            || last < first
+            || !from.iter().all(component_ok)
+            || !to.iter().all(component_ok)
+        {
+            let message = format!("{}, with first <= last", usage(d, info));
+            self.directive_error(info.count_code, d, message);
+            return;
+        }
+        let (first, last) = (first as usize, last as usize);
+        // Entries between the old end and `first` keep the colours they had by wrapping.
+        let old = palette.len();
+        while palette.len() <= last {
+            let wrapped = palette[palette.len() % old];
+            palette.push(wrapped);
+        }
+        for (offset, entry) in palette[first..=last].iter_mut().enumerate() {
+            let t = if last == first {
+                0.0
+            } else {
+                offset as f64 / (last - first) as f64
+            };
+            *entry = std::array::from_fn(|k| ((from[k] + (to[k] - from[k]) * t) / 255.0) as f32);
+        }
+    }
+
+    /// `#lifetime MB VB [pu pm pl]`.
+    fn lifetime(&mut self, d: &Directive) -> Option<Lifetime> {
+        let mut a = self.arguments(d)?;
+        let probabilities = a.numbers(2);
+        if probabilities.iter().any(|x| *x < 0.0) || probabilities.iter().all(|x| *x == 0.0) {
+            let message = format!(
+                "{}'s shares of the thirds must be 0 or more, and not all 0",
+                d.written
+            );
+            self.directive_error("E0209", d, message);
+            return None;
+        }
+        Some(Lifetime {
+            mean: a.program(0)?,
+            variance: a.program(1)?,
+            probabilities,
+        })
+    }
+
+    /// `#speed SM VR [PFu PFm PFl]`.
+    fn speed(&mut self, d: &Directive) -> Option<Speed> {
+        let mut a = self.arguments(d)?;
+        Some(Speed {
+            positional: a.numbers(2),
+            mean: a.program(0)?,
+            variance: a.program(1)?,
+        })
+    }
+
+    /// `#shape GR m [VR]`: a growth rate above 0 other than 1 and a maturity from 1.
+    fn shape(&mut self, d: &Directive) -> Option<Shape> {
+        let a = self.arguments(d)?;
+        let [rate, maturity, variance] = a.numbers(0);
+        if rate <= 0.0 || rate == 1.0 || maturity == 0.0 {
+            let info = d.kind?.info();
+            self.directive_error(info.count_code, d, usage(d, info));
+            return None;
+        }
+        Some(Shape {
+            rate,
+            maturity: maturity as u32,
+            variance,
+        })
+    }
+
+    /// `#shape_width [VR [PFu PFm PFl]]`.
+    fn shape_width(&mut self, d: &Directive) -> Option<ShapeWidth> {
+        let a = self.arguments(d)?;
+        Some(ShapeWidth {
+            variance: a.number(0),
+            positional: a.numbers(1),
+        })
+    }
+
+    /// `#sun latitude season angle`, the latitude within its range.
+    fn sun(&mut self, d: &Directive) -> Option<Sun> {
+        let a = self.arguments(d)?;
+        let info = d.kind?.info();
+        let latitude = a.number(0);
+        let within = info.params()[0]
+            .range
+            .is_none_or(|(lo, hi)| (lo..=hi).contains(&latitude));
+        if !within {
+            let word = &words(d)[0];
+            self.directive_error(info.count_code, word, usage(d, info));
+            return None;
+        }
+        Some(Sun {
+            latitude,
+            season: a.season(1),
+            angle: a.number(2),
+        })
+    }
+
+    /// `#gravity angle [variation]` (towards −Y), or `#wind x z angle [variation]` (towards the
+    /// horizontal direction (x, 0, z), which must not be 0 0).
+    fn bend(&mut self, d: &Directive, kind: DirectiveKind) -> Option<Bend> {
+        let a = self.arguments(d)?;
+        let (direction, first) = if kind == DirectiveKind::Wind {
+            let v = DVec3::new(a.number(0), 0.0, a.number(1));
+            if v.length() == 0.0 {
+                let info = kind.info();
+                self.directive_error(info.count_code, d, usage(d, info));
+                return None;
+            }
+            (v.normalize(), 2)
+        } else {
+            (DVec3::NEG_Y, 0)
+        };
+        Some(Bend {
+            direction,
+            angle: a.number(first),
+            variance: a.number(first + 1),
+        })
+    }
+
+    /// An argument that may change from step to step: an expression over `NumIt` (the step about
+    /// to run), `MaxIt` and `#define`d names, drawing no random number.
+    fn step_program(&mut self, word: &Directive) -> Option<Program> {
+        let expr = match crate::syntax::parse_expression(&word.args, word.args_span.start) {
+            Ok(e) => e,
+            Err(e) => {
+                self.diagnostics.push(e);
+                return None;
+            }
+        };
+        let program = self.compile(&expr, &Slots::default())?;
+        if program.random {
+            self.directive_error(
+                "E0209",
+                word,
+                format!(
+                    "{} cannot draw random numbers here: its own Rand() is drawn at every step",
+                    word.written
+                ),
+            );
+            return None;
+        }
+        Some(program)
+    }
+
+    /// The value of a directive's argument: a number or a constant expression (`#angle 360 / n`
+    /// with `#define n 7`); the reason when it is not one.
+    fn constant(&mut self, d: &Directive) -> Result<f64, String> {
+        if d.args.is_empty() {
+            return Err("nothing".into());
+        }
+        if let Ok(v) = d.args.parse::<f64>() {
+            return if v.is_finite() {
+                Ok(v)
+            } else {
+                Err(format!("'{}', which is too large", d.args))
+            };
+        }
+        let quoted = |message: String| format!("'{}' ({message})", d.args);
+        let expr = crate::syntax::parse_expression(&d.args, d.args_span.start)
+            .map_err(|e| quoted(e.message))?;
+        let program = self
+            .compile_constant(&expr)
+            .map_err(|e| quoted(e.message))?;
+        if program.random {
+            return Err(format!("'{}', which draws random numbers", d.args));
+        }
+        let mut rng = rand_pcg::Pcg64Mcg::new(0);
+        let mut env = Env {
+            slots: &[],
+            num_it: 0.0,
+            max_it: 0.0,
+            vars: &mut [],
+            fresh_vars: true,
+            var_programs: &[],
+            rng: &mut rng,
+        };
+        program.eval(&mut env).map_err(|e| e.message)
+    }
+
+    fn directive_error(&mut self, code: &'static str, d: &Directive, message: String) {
+        let span = if d.args.is_empty() {
+            d.name_span.clone()
+        } else {
+            d.args_span.clone()
+        };
+        self.diagnostics
+            .push(Diagnostic::error(code, span, message));
+    }
+
+    /// A number (or constant expression), or `E0203`.
+    fn number(&mut self, d: &Directive) -> Option<f64> {
+        match self.constant(d) {
+            Ok(v) => Some(v),
+            Err(found) => {
+                self.directive_error(
+                    "E0203",
+                    d,
+                    format!("{} needs a number, found {found}", d.written),
+                );
+                None
+            }
+        }
+    }
+
+    /// A whole number from 0 to `max`, or `E0204`.
+    fn whole(&mut self, d: &Directive, max: u64) -> Option<u64> {
+        match self.constant(d) {
+            Ok(v) if v >= 0.0 && v.fract() == 0.0 && v <= max as f64 => Some(v as u64),
+            result => {
+                let found = result.map_or_else(|e| e, |v| format!("{v}"));
+                self.directive_error(
+                    "E0204",
+                    d,
+                    format!(
+                        "{} needs a whole number from 0 to {max}, found {found}",
+                        d.written
+                    ),
+                );
+                None
+            }
+        }
+    }
+}

@@ -1,0 +1,300 @@
+//! Resolve: syntax tree -> [`Model`]. Interns module names and gives each its meaning from the
+//! vocabulary, reads directive arguments by the kinds the vocabulary declares
+//! ([`directives`]), binds formal parameters to slots and compiles every expression
+//! ([`rules`]), checks arities, and indexes productions by predecessor.
+
+mod directives;
+mod rules;
+mod scope;
+
+use super::{Alphabet, GroupIds, Model, ModuleId, RandomVariable, RuleSet, SuccessorModule};
+use crate::diagnostics::Diagnostic;
+use crate::syntax::{Directive, ExprSyntax, Section, SourceFile};
+use crate::vocabulary::{
+    function_named, module_named, name_of, value_named, Command, DirectiveKind, GroupKind, Meaning,
+    ModuleInfo, MODULES,
+};
+use directives::DirectiveValues;
+use scope::Slots;
+use std::collections::HashMap;
+
+/// Resolves a parsed file. Returns `None` for the model when there is nothing to derive (no
+/// axiom); otherwise a model plus every diagnostic, even when some are errors.
+pub fn resolve(file: &SourceFile) -> (Option<Model>, Vec<Diagnostic>) {
+    let mut r = Resolver::new();
+    let fixed = r.fixed_ids();
+    let randoms = r.definitions(file);
+    let values = r.directives(file);
+    let random_variables = r.random_variables(&randoms);
+
+    let Some((axiom_syntax, axiom_span)) = &file.axiom else {
+        r.diagnostics.push(Diagnostic::error(
+            "E0300",
+            0..0,
+            "the grammar has no axiom: add a line 'axiom: …'",
+        ));
+        return (None, r.diagnostics);
+    };
+    let axiom = r.successor(axiom_syntax, &Slots::default());
+    let [mut productions, mut homomorphism, mut decomposition] = r.rule_sets(file);
+    productions.max_depth = 1;
+    homomorphism.max_depth = values.homomorphism_depth;
+    decomposition.max_depth = values.decomposition_depth;
+    r.check_arities(&axiom, [&productions, &homomorphism, &decomposition]);
+    for set in [&mut productions, &mut homomorphism, &mut decomposition] {
+        r.index(set);
+    }
+
+    let meanings = meanings(&r.alphabet, &values.settings.draw);
+    let ignored = ignored(&r.alphabet, &values, &fixed);
+    let everywhere = |f: &dyn Fn(&SuccessorModule) -> bool| {
+        any_module(&axiom, f)
+            || [&productions, &homomorphism, &decomposition]
+                .iter()
+                .any(|set| set.productions.iter().any(|p| any_module(&p.successor, f)))
+    };
+    let has_groups = everywhere(&|m| m.group.is_some());
+    let parametric = has_groups || everywhere(&|m| !m.args.is_empty());
+    let mut growth = values.growth;
+    (growth.apex, growth.segment) = growth_modules(
+        &r.alphabet,
+        &meanings,
+        &productions,
+        &homomorphism,
+        &values.apex,
+    );
+
+    let model = Model {
+        alphabet: r.alphabet,
+        axiom,
+        axiom_span: axiom_span.clone(),
+        productions,
+        homomorphism,
+        decomposition,
+        random_variables,
+        ignored,
+        open: fixed.open,
+        close: fixed.close,
+        cut: fixed.cut,
+        groups: fixed.groups,
+        has_groups,
+        parametric,
+        settings: values.settings,
+        meanings,
+        growth,
+    };
+    (Some(model), r.diagnostics)
+}
+
+/// The resolver's state while it walks the file.
+struct Resolver {
+    diagnostics: Vec<Diagnostic>,
+    alphabet: Alphabet,
+    /// `#define` names and their expressions (inlined where they are used).
+    defines: HashMap<String, ExprSyntax>,
+    /// `#random` names, in order (a variable's index is its position).
+    random_names: Vec<String>,
+}
+
+/// The ids every model has, interned first and always in this order.
+struct FixedIds {
+    open: ModuleId,
+    close: ModuleId,
+    cut: [ModuleId; 2],
+    groups: GroupIds,
+}
+
+impl Resolver {
+    fn new() -> Self {
+        Resolver {
+            diagnostics: Vec::new(),
+            alphabet: Alphabet::default(),
+            defines: HashMap::new(),
+            random_names: Vec::new(),
+        }
+    }
+
+    /// Interns the branch brackets, the cut modules, the control modules and the group markers.
+    fn fixed_ids(&mut self) -> FixedIds {
+        let mut intern = |meaning| self.alphabet.intern(name_of(meaning));
+        let open = intern(Meaning::Turtle(Command::Push));
+        let close = intern(Meaning::Turtle(Command::Pop));
+        let mut cuts = MODULES.iter().filter(|m| m.meaning == Meaning::Cut);
+        let mut next_cut = || cuts.next().map_or("", |m| m.name);
+        let cut = [next_cut(), next_cut()].map(|name| self.alphabet.intern(name));
+        let mut group = |kind| self.alphabet.intern(name_of(Meaning::Group(kind)));
+        let (switch, pendulum, repeat) = (
+            group(GroupKind::Switch),
+            group(GroupKind::Pendulum),
+            group(GroupKind::Repeat),
+        );
+        let [open_marker, separator, close_marker] =
+            GroupIds::MARKERS.map(|name| self.alphabet.intern(name));
+        FixedIds {
+            open,
+            close,
+            cut,
+            groups: GroupIds {
+                switch,
+                pendulum,
+                repeat,
+                open: open_marker,
+                separator,
+                close: close_marker,
+            },
+        }
+    }
+
+    /// Collects `#define` and `#random` names first: expressions anywhere may use them. Returns
+    /// the `#random` directives whose names were taken.
+    fn definitions<'f>(&mut self, file: &'f SourceFile) -> Vec<&'f Directive> {
+        let mut randoms = Vec::new();
+        for d in &file.directives {
+            let (Some((name, span)), Some(expr)) = (&d.target, &d.expr) else {
+                continue;
+            };
+            let taken = self.defines.contains_key(name)
+                || self.random_names.iter().any(|n| n == name)
+                || value_named(name).is_some()
+                || function_named(name).is_some();
+            if taken {
+                self.diagnostics.push(Diagnostic::error(
+                    "E0205",
+                    span.clone(),
+                    format!("'{name}' is already defined"),
+                ));
+                continue;
+            }
+            if d.kind == Some(DirectiveKind::Define) {
+                self.defines.insert(name.clone(), expr.clone());
+            } else {
+                self.random_names.push(name.clone());
+                randoms.push(d);
+            }
+        }
+        randoms
+    }
+
+    /// The `#random` variables, compiled in the order of their names.
+    fn random_variables(&mut self, randoms: &[&Directive]) -> Vec<RandomVariable> {
+        let mut variables = Vec::new();
+        for d in randoms {
+            let (Some((name, _)), Some(expr)) = (&d.target, &d.expr) else {
+                continue;
+            };
+            if let Some(distribution) = self.compile(expr, &Slots::default()) {
+                variables.push(RandomVariable {
+                    name: name.clone(),
+                    distribution,
+                });
+            }
+        }
+        variables
+    }
+
+    /// The productions of each section, resolved.
+    fn rule_sets(&mut self, file: &SourceFile) -> [RuleSet; 3] {
+        let mut sets = [RuleSet::default(), RuleSet::default(), RuleSet::default()];
+        for p in &file.productions {
+            if let Some(production) = self.production(p) {
+                let index = match p.section {
+                    Section::Productions => 0,
+                    Section::Homomorphism => 1,
+                    Section::Decomposition => 2,
+                };
+                sets[index].productions.push(production);
+            }
+        }
+        sets
+    }
+}
+
+/// For each module id: its vocabulary row (`F`'s for the modules `#draw` lists).
+fn meanings(alphabet: &Alphabet, draw: &[ModuleId]) -> Vec<Option<&'static ModuleInfo>> {
+    let forward = module_named(name_of(Meaning::Turtle(Command::Forward)));
+    (0..alphabet.len())
+        .map(|i| {
+            let id = ModuleId(i as u32);
+            if draw.contains(&id) {
+                forward
+            } else {
+                module_named(alphabet.name(id))
+            }
+        })
+        .collect()
+}
+
+/// For each module id: skipped by context matching (`#ignore`, or left out by `#consider`). The
+/// branch brackets never are; the group markers always are.
+fn ignored(alphabet: &Alphabet, values: &DirectiveValues, fixed: &FixedIds) -> Vec<bool> {
+    let mut ignored = vec![false; alphabet.len()];
+    if let Some(keep) = &values.consider {
+        ignored.iter_mut().for_each(|x| *x = true);
+        for id in keep {
+            ignored[id.index()] = false;
+        }
+    }
+    for id in &values.ignore {
+        ignored[id.index()] = true;
+    }
+    ignored[fixed.open.index()] = false;
+    ignored[fixed.close.index()] = false;
+    let g = &fixed.groups;
+    for marker in [g.open, g.separator, g.close] {
+        ignored[marker.index()] = true;
+    }
+    ignored
+}
+
+/// True when `f` holds for a module of `modules` or of a control module's members.
+fn any_module(modules: &[SuccessorModule], f: &dyn Fn(&SuccessorModule) -> bool) -> bool {
+    modules
+        .iter()
+        .any(|m| f(m) || m.group.iter().flatten().any(|member| any_module(member, f)))
+}
+
+/// For each module id: is it an apex, and is it a segment (docs/LANGUAGE.md, "Growth")? Apices
+/// are the modules `#apex` lists; without it, the modules that have a production and have no
+/// meaning for the turtle or derivation (nor an `@` name), or when there are none (edge
+/// rewriting), every module that has a production. Segments are the modules the turtle draws
+/// (`F`, `G`, `#draw`) and those a homomorphism rewrites.
+fn growth_modules(
+    alphabet: &Alphabet,
+    meanings: &[Option<&'static ModuleInfo>],
+    productions: &RuleSet,
+    homomorphism: &RuleSet,
+    listed: &[ModuleId],
+) -> (Vec<bool>, Vec<bool>) {
+    let ids = || (0..alphabet.len()).map(|i| ModuleId(i as u32));
+    let rewrites = |set: &RuleSet, id: ModuleId| {
+        set.by_predecessor
+            .get(id.index())
+            .is_some_and(|p| !p.is_empty())
+    };
+    let has_meaning =
+        |id: ModuleId| meanings[id.index()].is_some() || alphabet.name(id).starts_with('@');
+    let apex: Vec<bool> = if !listed.is_empty() {
+        ids().map(|id| listed.contains(&id)).collect()
+    } else {
+        let nodes: Vec<bool> = ids()
+            .map(|id| rewrites(productions, id) && !has_meaning(id))
+            .collect();
+        if nodes.iter().any(|&x| x) {
+            nodes
+        } else {
+            ids().map(|id| rewrites(productions, id)).collect()
+        }
+    };
+    let segment = ids()
+        .map(|id| {
+            let draws = meanings[id.index()]
+                .and_then(ModuleInfo::command)
+                .is_some_and(Command::draws);
+            draws || rewrites(homomorphism, id)
+        })
+        .collect();
+    (apex, segment)
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,68 @@
+//! What names mean inside expressions: a production's formal parameters, `#define`d names and
+//! `#random` variables; compiling an expression in that scope.
+
+use super::Resolver;
+use crate::diagnostics::Diagnostic;
+use crate::model::{Program, Scope};
+use crate::syntax::ExprSyntax;
+use std::collections::HashMap;
+
+/// The formal parameters of one production: name -> slot.
+#[derive(Default)]
+pub(super) struct Slots {
+    pub names: Vec<String>,
+}
+
+struct ScopeView<'a> {
+    slots: &'a Slots,
+    defines: &'a HashMap<String, ExprSyntax>,
+    random_names: &'a [String],
+}
+
+impl Scope for ScopeView<'_> {
+    fn slot(&self, name: &str) -> Option<u16> {
+        self.slots
+            .names
+            .iter()
+            .position(|n| n == name)
+            .map(|i| i as u16)
+    }
+    fn define(&self, name: &str) -> Option<&ExprSyntax> {
+        self.defines.get(name)
+    }
+    fn random_var(&self, name: &str) -> Option<u16> {
+        self.random_names
+            .iter()
+            .position(|n| n == name)
+            .map(|i| i as u16)
+    }
+}
+
+impl Resolver {
+    /// Compiles `expr` with `slots` bound, reporting an error as a diagnostic.
+    pub(super) fn compile(&mut self, expr: &ExprSyntax, slots: &Slots) -> Option<Program> {
+        let scope = ScopeView {
+            slots,
+            defines: &self.defines,
+            random_names: &self.random_names,
+        };
+        match Program::compile(expr, &scope) {
+            Ok(p) => Some(p),
+            Err(d) => {
+                self.diagnostics.push(d);
+                None
+            }
+        }
+    }
+
+    /// Compiles a directive's constant expression: `#define`d names only (no slots, no random
+    /// variables); the error is returned for the caller's message.
+    pub(super) fn compile_constant(&self, expr: &ExprSyntax) -> Result<Program, Diagnostic> {
+        let scope = ScopeView {
+            slots: &Slots::default(),
+            defines: &self.defines,
+            random_names: &[],
+        };
+        Program::compile(expr, &scope)
+    }
+}

@@ -1,0 +1,207 @@
+//! What directives set: the turtle's and derivation's settings, the palette, the limits, and the
+//! growth attributes. Defaults are those of the vocabulary's directive table.
+
+use super::{ModuleId, Program};
+use crate::syntax::Span;
+use crate::vocabulary::{DirectiveKind, Season};
+use glam::DVec3;
+
+/// Values set by directives, with the defaults of LANGUAGE.md section 2.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Settings {
+    /// `#angle`: the default turn angle δ in degrees.
+    pub angle: f64,
+    /// `#iterations` / `derivation length:`: the default number of derivation steps.
+    pub iterations: u32,
+    /// `#seed`: the seed of the random generator.
+    pub seed: u64,
+    /// `#step`: the default length of `F` and `f`.
+    pub step: f64,
+    /// `#width`: the initial segment width, in width units (see `mesh`).
+    pub width: f64,
+    /// `#width_step`: how much `!` without a parameter decreases the width.
+    pub width_step: f64,
+    /// `#tropism x y z e`: the tropism vector T and susceptibility e (ABOP 2.3); e = 0 is none.
+    pub tropism: (DVec3, f64),
+    /// `#max_modules`: derivation stops with an error when a string would grow past this.
+    pub max_modules: usize,
+    /// `#max_steps`: the largest number of derivation steps a build may run.
+    pub max_steps: u32,
+    /// `#draw A B`: further modules that draw a segment like `F`.
+    pub draw: Vec<ModuleId>,
+    /// The colours of the colour index (`'`, `;`), linear RGB in 0..=1: [`DEFAULT_PALETTE`]
+    /// with the entries `#color` set. An index past the end wraps modulo the length.
+    pub palette: Vec<[f32; 3]>,
+    /// Span of the `#iterations` directive, where step-related diagnostics point.
+    pub iterations_span: Option<Span>,
+}
+
+/// The colour index's default colours: a ramp from bark brown (0) through olive and greens to
+/// light green (7), then flower and fruit colours. Index 0 is the turtle's starting colour, so
+/// stems start brown and `'` steps them towards leaf green.
+pub const DEFAULT_PALETTE: [[f32; 3]; 16] = [
+    [0.40, 0.27, 0.15], // 0 bark brown
+    [0.44, 0.34, 0.17], // 1 light bark
+    [0.43, 0.42, 0.18], // 2 olive
+    [0.36, 0.48, 0.16], // 3 green olive
+    [0.27, 0.54, 0.15], // 4 green
+    [0.20, 0.58, 0.16], // 5 leaf green
+    [0.28, 0.66, 0.20], // 6 fresh green
+    [0.48, 0.74, 0.28], // 7 light green
+    [0.92, 0.80, 0.28], // 8 yellow
+    [0.93, 0.55, 0.20], // 9 orange
+    [0.82, 0.22, 0.18], // 10 red
+    [0.90, 0.50, 0.65], // 11 pink
+    [0.55, 0.28, 0.68], // 12 purple
+    [0.30, 0.45, 0.85], // 13 blue
+    [0.95, 0.95, 0.92], // 14 white
+    [0.50, 0.50, 0.50], // 15 grey
+];
+
+impl Settings {
+    /// The value of a directive that takes one number (`#step`, `#angle`, …), as the settings
+    /// hold it; 0 for the others.
+    pub fn value(&self, directive: DirectiveKind) -> f64 {
+        match directive {
+            DirectiveKind::Angle => self.angle,
+            DirectiveKind::Step => self.step,
+            DirectiveKind::Width => self.width,
+            DirectiveKind::WidthStep => self.width_step,
+            DirectiveKind::Iterations => self.iterations as f64,
+            DirectiveKind::Seed => self.seed as f64,
+            DirectiveKind::MaxModules => self.max_modules as f64,
+            DirectiveKind::MaxSteps => self.max_steps as f64,
+            _ => 0.0,
+        }
+    }
+}
+
+/// The default of a directive's `k`-th argument (in its longest form), from the vocabulary.
+pub fn directive_default(kind: DirectiveKind, k: usize) -> f64 {
+    kind.info()
+        .params()
+        .get(k)
+        .and_then(|p| p.default_value(|_| 0.0))
+        .unwrap_or(0.0)
+}
+
+/// The default of a directive that takes one value.
+fn default_of(kind: DirectiveKind) -> f64 {
+    directive_default(kind, 0)
+}
+
+impl Default for Settings {
+    /// Every setting at the default its directive's row declares.
+    fn default() -> Self {
+        let tropism = |k| directive_default(DirectiveKind::Tropism, k);
+        Settings {
+            angle: default_of(DirectiveKind::Angle),
+            iterations: default_of(DirectiveKind::Iterations) as u32,
+            seed: default_of(DirectiveKind::Seed) as u64,
+            step: default_of(DirectiveKind::Step),
+            width: default_of(DirectiveKind::Width),
+            width_step: default_of(DirectiveKind::WidthStep),
+            tropism: (DVec3::new(tropism(0), tropism(1), tropism(2)), tropism(3)),
+            max_modules: default_of(DirectiveKind::MaxModules) as usize,
+            max_steps: default_of(DirectiveKind::MaxSteps) as u32,
+            draw: Vec::new(),
+            palette: DEFAULT_PALETTE.to_vec(),
+            iterations_span: None,
+        }
+    }
+}
+
+/// `#lifetime MB VB [pu pm pl]`: MB and VB may use `NumIt` (the step about to run).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Lifetime {
+    pub mean: Program,
+    pub variance: Program,
+    /// The share of survivors given to the upper, middle and lower thirds.
+    pub probabilities: [f64; 3],
+}
+
+/// `#speed SM VR [PFu PFm PFl]`: SM and VR may use `NumIt`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Speed {
+    pub mean: Program,
+    pub variance: Program,
+    /// The positional factor PF of the upper, middle and lower thirds.
+    pub positional: [f64; 3],
+}
+
+/// `#shape GR m [VR]`: segment lengths by age.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Shape {
+    pub rate: f64,
+    pub maturity: u32,
+    pub variance: f64,
+}
+
+/// `#shape_width [VR [PFu PFm PFl]]`: segment widths by age.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ShapeWidth {
+    pub variance: f64,
+    pub positional: [f64; 3],
+}
+
+/// `#sun latitude season angle`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Sun {
+    pub latitude: f64,
+    pub season: Season,
+    /// Degrees per step towards the sun (negative: away from it).
+    pub angle: f64,
+}
+
+/// `#gravity angle [variation]` and `#wind x z angle [variation]`: every segment turns towards
+/// `direction` by its own angle, `angle` + Round(Rand() × variation) degrees, at every step.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Bend {
+    pub direction: DVec3,
+    pub angle: f64,
+    pub variance: f64,
+}
+
+/// The particle attributes of a grammar (Jou, Park and Bahng; all off by default), and which
+/// modules are apices and segments (docs/LANGUAGE.md, "Growth"). `growth` turns them into each
+/// module's state and the turtle's adjustments.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct GrowthAttributes {
+    /// For each module id: an apex.
+    pub apex: Vec<bool>,
+    /// For each module id: a segment.
+    pub segment: Vec<bool>,
+    pub lifetime: Option<Lifetime>,
+    pub speed: Option<Speed>,
+    pub shape: Option<Shape>,
+    pub shape_width: Option<ShapeWidth>,
+    pub sun: Option<Sun>,
+    pub gravity: Option<Bend>,
+    pub wind: Option<Bend>,
+}
+
+impl GrowthAttributes {
+    /// True when any attribute is on.
+    pub fn is_active(&self) -> bool {
+        self.lifetime.is_some()
+            || self.speed.is_some()
+            || self.shape.is_some()
+            || self.shape_width.is_some()
+            || self.sun.is_some()
+            || self.gravity.is_some()
+            || self.wind.is_some()
+    }
+
+    /// True when a step needs to know where the modules stand (their thirds).
+    pub fn needs_heights(&self) -> bool {
+        self.lifetime.is_some() || self.speed.is_some() || self.sun.is_some()
+    }
+
+    pub fn is_apex(&self, id: ModuleId) -> bool {
+        self.apex.get(id.index()).copied().unwrap_or(false)
+    }
+
+    pub fn is_segment(&self, id: ModuleId) -> bool {
+        self.segment.get(id.index()).copied().unwrap_or(false)
+    }
+}

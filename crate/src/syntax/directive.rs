@@ -1,0 +1,149 @@
+//! `#name arguments` lines. What the arguments hold comes from the directive's row in the
+//! vocabulary: a definition (`#define NAME expr`, `#random NAME = expr`) and module lists
+//! (`#ignore A B`) are read here; other arguments stay text for the resolver, which knows their
+//! kinds.
+
+use super::ast::Directive;
+use super::expr::parse_expression;
+use super::scanner::ModuleScanner;
+use crate::diagnostics::Diagnostic;
+use crate::vocabulary::{directive_named, DirectiveKind, ParamKind};
+
+/// Parses the directive whose `#` is at byte `at`; `None` when the line is too broken to keep.
+pub(super) fn parse_directive(
+    after_hash: &str,
+    at: usize,
+    scanner: &ModuleScanner,
+    diagnostics: &mut Vec<Diagnostic>,
+) -> Option<Directive> {
+    let name_len = after_hash
+        .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+        .unwrap_or(after_hash.len());
+    if name_len == 0 {
+        diagnostics.push(Diagnostic::error(
+            "E0103",
+            at..at + 1,
+            "expected a directive name after '#'",
+        ));
+        return None;
+    }
+    let name = &after_hash[..name_len];
+    let rest = &after_hash[name_len..];
+    let args = rest.trim();
+    let args_at = at + 1 + name_len + (rest.len() - rest.trim_start().len());
+    let info = directive_named(name);
+    let mut directive = Directive {
+        name: name.to_string(),
+        kind: info.map(|i| i.kind),
+        written: format!("#{name}"),
+        name_span: at..at + 1 + name_len,
+        args: args.to_string(),
+        args_span: args_at..args_at + args.len(),
+        target: None,
+        expr: None,
+        modules: Vec::new(),
+    };
+    let first = info.and_then(|i| i.params().first()).map(|p| p.kind);
+    let kept = match first {
+        Some(ParamKind::Name) => definition(&mut directive, diagnostics),
+        Some(ParamKind::Modules) => module_list(&mut directive, scanner, diagnostics),
+        _ => true,
+    };
+    kept.then_some(directive)
+}
+
+/// `#define NAME expr`, `#random NAME = expr` (the `=` is optional for both). False when the line
+/// is not kept.
+fn definition(d: &mut Directive, diagnostics: &mut Vec<Diagnostic>) -> bool {
+    let args = d.args.as_str();
+    let args_at = d.args_span.start;
+    let ident_len = args
+        .find(|c: char| !(c.is_alphanumeric() || c == '_'))
+        .unwrap_or(args.len());
+    if ident_len == 0 || args.starts_with(|c: char| c.is_ascii_digit()) {
+        diagnostics.push(Diagnostic::error(
+            "E0113",
+            d.name_span.clone(),
+            format!("{} needs a name, then an expression", d.written),
+        ));
+        return false;
+    }
+    let target = (args[..ident_len].to_string(), args_at..args_at + ident_len);
+    let mut expr_text = &args[ident_len..];
+    let mut expr_at = args_at + ident_len;
+    let trimmed = expr_text.trim_start();
+    expr_at += expr_text.len() - trimmed.len();
+    expr_text = trimmed;
+    if let Some(after_eq) = expr_text.strip_prefix('=') {
+        expr_at += 1;
+        expr_text = after_eq;
+    }
+    if expr_text.trim().is_empty() {
+        diagnostics.push(Diagnostic::error(
+            "E0113",
+            d.args_span.clone(),
+            format!("{} {} needs an expression", d.written, &args[..ident_len]),
+        ));
+        return false;
+    }
+    match parse_expression(expr_text, expr_at) {
+        Ok(e) => {
+            d.target = Some(target);
+            d.expr = Some(e);
+            true
+        }
+        Err(e) => {
+            diagnostics.push(e);
+            false
+        }
+    }
+}
+
+/// `#ignore`, `#consider`, `#draw`, `#apex`, `#module`: module names. False when the line is not
+/// kept.
+fn module_list(
+    d: &mut Directive,
+    scanner: &ModuleScanner,
+    diagnostics: &mut Vec<Diagnostic>,
+) -> bool {
+    let (args, args_at) = (d.args.as_str(), d.args_span.start);
+    if args.is_empty() {
+        diagnostics.push(Diagnostic::error(
+            "E0133",
+            d.name_span.clone(),
+            format!("{} lists no modules", d.written),
+        ));
+        return false;
+    }
+    if d.kind == Some(DirectiveKind::Module) {
+        for (offset, word) in args
+            .split_whitespace()
+            .map(|w| (w.as_ptr() as usize - args.as_ptr() as usize, w))
+        {
+            if !word.starts_with(|c: char| c.is_alphabetic())
+                || !word.chars().all(|c| c.is_alphanumeric() || c == '_')
+            {
+                let at = args_at + offset;
+                diagnostics.push(Diagnostic::error(
+                    "E0134",
+                    at..at + word.len(),
+                    format!("'{word}' cannot be a module name: names are a letter followed by letters, digits or '_'"),
+                ));
+            }
+        }
+        return true;
+    }
+    let modules = scanner.scan(args, args_at, diagnostics);
+    if let Some(m) = modules
+        .iter()
+        .find(|m| !m.params.is_empty() || m.group.is_some())
+    {
+        diagnostics.push(Diagnostic::error(
+            "E0135",
+            m.span.clone(),
+            format!("{} lists module names, without parameters", d.written),
+        ));
+    }
+    d.modules = modules;
+    true
+}

@@ -1,0 +1,326 @@
+//! Splitting text into modules: names, parameter lists and control-module groups, and the
+//! bracket checks every module string gets.
+
+use super::ast::{ModuleSyntax, Span};
+use super::expr::{parse_expression, split_arguments};
+use crate::diagnostics::Diagnostic;
+use crate::vocabulary::{module_named, Command, GroupKind, Meaning, MODULES};
+
+/// Finds the first occurrence of `token` outside parentheses.
+pub(super) fn find_top_level(text: &str, token: char) -> Option<usize> {
+    let mut depth = 0i32;
+    for (i, c) in text.char_indices() {
+        match c {
+            '(' => depth += 1,
+            ')' => depth -= 1,
+            c if c == token && depth == 0 => return Some(i),
+            _ => {}
+        }
+    }
+    None
+}
+
+/// Byte index of the ')' that closes the '(' at the start of `text`.
+pub(super) fn matching_paren(text: &str) -> Option<usize> {
+    let mut depth = 0i32;
+    for (i, c) in text.char_indices() {
+        match c {
+            '(' => depth += 1,
+            ')' => {
+                depth -= 1;
+                if depth == 0 {
+                    return Some(i);
+                }
+            }
+            _ => {}
+        }
+    }
+    None
+}
+
+/// Reports unbalanced `[` `]` in one module string (axiom or successor).
+pub(super) fn check_brackets(modules: &[ModuleSyntax], diagnostics: &mut Vec<Diagnostic>) {
+    let mut open: Vec<&Span> = Vec::new();
+    for m in modules {
+        match branch_bracket(&m.name) {
+            Some(Command::Push) => open.push(&m.span),
+            Some(_) if open.pop().is_none() => {
+                diagnostics.push(Diagnostic::error(
+                    "E0108",
+                    m.span.clone(),
+                    "']' has no matching '['",
+                ));
+            }
+            _ => {}
+        }
+    }
+    for span in open {
+        diagnostics.push(Diagnostic::error(
+            "E0109",
+            span.clone(),
+            "'[' is never closed by a ']'",
+        ));
+    }
+}
+
+/// `Push` for the name of `[`, `Pop` for `]`, `None` for any other name.
+pub(super) fn branch_bracket(name: &str) -> Option<Command> {
+    module_named(name)
+        .and_then(|m| m.command())
+        .filter(|c| matches!(c, Command::Push | Command::Pop))
+}
+
+/// The control module a name stands for, if any.
+fn group_kind(name: &str) -> Option<GroupKind> {
+    match module_named(name)?.meaning {
+        Meaning::Group(kind) => Some(kind),
+        _ => None,
+    }
+}
+
+/// Splits a module string into module names (LANGUAGE.md section 1).
+pub(super) struct ModuleScanner<'a> {
+    /// `#module` names, longest first.
+    declared: &'a [String],
+    /// The vocabulary's `@` names, longest first, so that `@GcF` is `@Gc F`.
+    at_names: Vec<&'static str>,
+}
+
+impl<'a> ModuleScanner<'a> {
+    pub(super) fn new(declared: &'a [String]) -> Self {
+        let mut at_names: Vec<&'static str> = MODULES
+            .iter()
+            .map(|m| m.name)
+            .filter(|n| n.starts_with('@'))
+            .collect();
+        at_names.sort_by_key(|n| std::cmp::Reverse(n.len()));
+        ModuleScanner { declared, at_names }
+    }
+
+    /// True for a name declared with `#module`.
+    pub(super) fn is_declared(&self, name: &str) -> bool {
+        self.declared.iter().any(|d| d == name)
+    }
+
+    pub(super) fn scan(
+        &self,
+        text: &str,
+        base: usize,
+        diagnostics: &mut Vec<Diagnostic>,
+    ) -> Vec<ModuleSyntax> {
+        let mut modules = Vec::new();
+        let mut i = 0;
+        while i < text.len() {
+            let rest = &text[i..];
+            let Some(c) = rest.chars().next() else { break };
+            if c.is_whitespace() {
+                i += c.len_utf8();
+                continue;
+            }
+            if c == '(' {
+                // Parameters of the module just read (whitespace before '(' is allowed).
+                let close = matching_paren(rest);
+                let Some(last) = modules
+                    .last_mut()
+                    .filter(|m: &&mut ModuleSyntax| m.params.is_empty())
+                else {
+                    let end = close.map_or(text.len(), |j| i + j + 1);
+                    diagnostics.push(Diagnostic::error(
+                        "E0117",
+                        base + i..base + end,
+                        "a parameter list '(…)' must follow a module name",
+                    ));
+                    i = end;
+                    continue;
+                };
+                let Some(close) = close else {
+                    diagnostics.push(Diagnostic::error(
+                        "E0116",
+                        base + i..base + i + 1,
+                        "'(' is never closed by a ')'",
+                    ));
+                    return modules;
+                };
+                let inner = &rest[1..close];
+                if inner.trim().is_empty() {
+                    diagnostics.push(Diagnostic::error(
+                        "E0118",
+                        base + i..base + i + close + 1,
+                        "an empty parameter list '()': write the module without parentheses",
+                    ));
+                } else {
+                    for (offset, piece) in split_arguments(inner) {
+                        if piece.trim().is_empty() {
+                            let at = base + i + 1 + offset;
+                            diagnostics.push(Diagnostic::error(
+                                "E0119",
+                                at..at + 1,
+                                "an empty parameter between commas",
+                            ));
+                            continue;
+                        }
+                        match parse_expression(piece, base + i + 1 + offset) {
+                            Ok(e) => last.params.push(e),
+                            Err(d) => diagnostics.push(d),
+                        }
+                    }
+                }
+                last.span.end = base + i + close + 1;
+                i += close + 1;
+                continue;
+            }
+            if c == ')' {
+                diagnostics.push(Diagnostic::error(
+                    "E0110",
+                    base + i..base + i + 1,
+                    "')' has no matching '('",
+                ));
+                i += 1;
+                continue;
+            }
+            let len = self.name_length(rest);
+            let name = &rest[..len];
+            let after = &rest[len..];
+            let gap = after.len() - after.trim_start().len();
+            if group_kind(name).is_some() && after[gap..].starts_with('(') {
+                let open = i + len + gap;
+                let Some(close) = matching_paren(&text[open..]) else {
+                    diagnostics.push(Diagnostic::error(
+                        "E0116",
+                        base + open..base + open + 1,
+                        "'(' is never closed by a ')'",
+                    ));
+                    return modules;
+                };
+                let module = self.group(
+                    name,
+                    &text[open + 1..open + close],
+                    base + open + 1,
+                    base + i,
+                    diagnostics,
+                );
+                modules.push(ModuleSyntax {
+                    span: base + i..base + open + close + 1,
+                    ..module
+                });
+                i = open + close + 1;
+                continue;
+            }
+            modules.push(ModuleSyntax {
+                name: name.to_string(),
+                span: base + i..base + i + len,
+                params: Vec::new(),
+                group: None,
+            });
+            i += len;
+        }
+        modules
+    }
+
+    /// The inside of a control module's parentheses: `k, modules` for `@Repeat`, members for the
+    /// others (each module is a member; a `[…]` branch is one member).
+    fn group(
+        &self,
+        name: &str,
+        inner: &str,
+        at: usize,
+        start: usize,
+        diagnostics: &mut Vec<Diagnostic>,
+    ) -> ModuleSyntax {
+        let repeat = group_kind(name) == Some(GroupKind::Repeat);
+        let mut params = Vec::new();
+        let mut body = inner;
+        let mut body_at = at;
+        if repeat {
+            match find_top_level(inner, ',') {
+                Some(comma) => {
+                    match parse_expression(&inner[..comma], at) {
+                        Ok(e) => params.push(e),
+                        Err(d) => diagnostics.push(d),
+                    }
+                    body = &inner[comma + 1..];
+                    body_at = at + comma + 1;
+                }
+                None => diagnostics.push(Diagnostic::error(
+                    "E0130",
+                    at..at + inner.len(),
+                    format!("{name} needs a count and the modules to repeat: {name}(k, A B)"),
+                )),
+            }
+        }
+        let modules = self.scan(body, body_at, diagnostics);
+        check_brackets(&modules, diagnostics);
+        let members = if repeat {
+            vec![modules]
+        } else {
+            let mut members: Vec<Vec<ModuleSyntax>> = Vec::new();
+            let mut depth = 0usize;
+            for m in modules {
+                if depth == 0 {
+                    members.push(Vec::new());
+                }
+                match branch_bracket(&m.name) {
+                    Some(Command::Push) => depth += 1,
+                    Some(_) => depth = depth.saturating_sub(1),
+                    None => {}
+                }
+                if let Some(last) = members.last_mut() {
+                    last.push(m);
+                }
+            }
+            members
+        };
+        if members.iter().all(Vec::is_empty) || members.is_empty() {
+            diagnostics.push(Diagnostic::error(
+                "E0131",
+                start..at + inner.len() + 1,
+                format!("{name}(…) needs at least one module"),
+            ));
+        }
+        ModuleSyntax {
+            name: name.to_string(),
+            span: start..at + inner.len() + 1,
+            params,
+            group: Some(members),
+        }
+    }
+
+    /// Byte length of the module name at the start of `rest` (which is not empty).
+    fn name_length(&self, rest: &str) -> usize {
+        if let Some(d) = self.declared.iter().find(|d| rest.starts_with(d.as_str())) {
+            return d.len();
+        }
+        let bytes = rest.as_bytes();
+        match bytes[0] {
+            b'@' => {
+                if let Some(known) = self.at_names.iter().find(|n| rest.starts_with(*n)) {
+                    return known.len();
+                }
+                1 + rest[1..]
+                    .find(|c: char| !c.is_ascii_alphabetic())
+                    .unwrap_or(rest.len() - 1)
+            }
+            b'?' if bytes.len() > 1 && bytes[1].is_ascii_alphabetic() => 2,
+            // cpfg's predefined surfaces: `~l` (leaf), `~p` (petal), one letter each.
+            b'~' if bytes.len() > 1 && bytes[1].is_ascii_alphabetic() => 2,
+            // A subscript is one letter (`F_a`) or a run of digits (`A_12`).
+            c if c.is_ascii_alphabetic()
+                && bytes.len() > 2
+                && bytes[1] == b'_'
+                && bytes[2].is_ascii_alphabetic() =>
+            {
+                3
+            }
+            c if c.is_ascii_alphabetic()
+                && bytes.len() > 2
+                && bytes[1] == b'_'
+                && bytes[2].is_ascii_digit() =>
+            {
+                2 + rest[2..]
+                    .find(|c: char| !c.is_ascii_digit())
+                    .unwrap_or(rest.len() - 2)
+            }
+            _ => rest.chars().next().map_or(1, char::len_utf8),
+        }
+    }
+}

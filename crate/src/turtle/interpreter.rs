@@ -1,0 +1,348 @@
+//! The interpreter: reads the string module by module and draws.
+
+use super::skeleton::{Polygon, QueryValue, Segment, Skeleton, Sphere, Surface, SurfaceKind};
+use super::state::TurtleState;
+use crate::growth::{Adjustments, Heights, Third};
+use crate::model::{LString, Model, Settings};
+use crate::vocabulary::{Command, ModuleInfo};
+use glam::DVec3;
+
+/// A polygon being traced: its points, colour, the `{` module and the segment it grows from.
+type OpenPolygon = (Vec<DVec3>, u16, u32, Option<u32>);
+
+/// What the turtle does with one module id: the command, and its first parameter's default.
+type Action = (Command, Option<f64>);
+
+pub(super) struct Interpreter<'a> {
+    settings: &'a Settings,
+    /// For each module id, what the turtle does with it.
+    actions: Vec<Option<Action>>,
+    turtle: TurtleState,
+    stack: Vec<TurtleState>,
+    open_polygons: Vec<OpenPolygon>,
+    skeleton: Skeleton,
+    adjustments: Option<&'a Adjustments>,
+    /// The lowest and highest Y the turtle reaches.
+    low: f64,
+    high: f64,
+    /// When asked, the turtle's Y at each module.
+    heights: Option<&'a mut Heights>,
+}
+
+/// The first parameter's default of a module, reading directives' values from the settings.
+fn first_default(info: &ModuleInfo, settings: &Settings) -> Option<f64> {
+    info.params
+        .first()?
+        .default_value(|directive| settings.value(directive))
+}
+
+impl<'a> Interpreter<'a> {
+    pub fn new(
+        model: &'a Model,
+        string: &LString,
+        adjustments: Option<&'a Adjustments>,
+        heights: Option<&'a mut Heights>,
+    ) -> Self {
+        let settings = &model.settings;
+        let actions = model
+            .meanings
+            .iter()
+            .map(|m| m.and_then(|info| Some((info.command()?, first_default(info, settings)))))
+            .collect();
+        let (tropism, susceptibility) = settings.tropism;
+        Interpreter {
+            settings,
+            actions,
+            turtle: TurtleState {
+                position: DVec3::ZERO,
+                heading: DVec3::Y,
+                left: DVec3::NEG_X,
+                up: DVec3::Z,
+                width: settings.width,
+                color: 0,
+                tropism,
+                susceptibility,
+                smooth: false,
+                last_segment: None,
+                anchor: None,
+            },
+            stack: Vec::new(),
+            open_polygons: Vec::new(),
+            skeleton: Skeleton {
+                palette: settings.palette.clone(),
+                ..Skeleton::default()
+            },
+            adjustments: adjustments.filter(|a| a.modules.len() == string.len()),
+            low: 0.0,
+            high: 0.0,
+            heights,
+        }
+    }
+
+    pub fn run(mut self, string: &LString) -> Skeleton {
+        for (index, id) in string.ids.iter().enumerate() {
+            self.turn_by_growth(index);
+            let before = self.turtle.position.y;
+            let moved = match self.actions[id.index()] {
+                Some((command, default)) => {
+                    let params = string.params_of(index);
+                    // A first parameter replaces the default length or angle: `F(l)`, `+(a)`.
+                    let first = params.first().copied().filter(|v| v.is_finite());
+                    self.command(command, first, first.or(default), params, index as u32)
+                }
+                None => false,
+            };
+            let y = self.turtle.position.y;
+            self.note(y, if moved { (before + y) * 0.5 } else { y });
+        }
+        self.finish()
+    }
+
+    /// Records the turtle's height at a module (`at`, the middle of a move) and the extent.
+    fn note(&mut self, y: f64, at: f64) {
+        self.low = self.low.min(y);
+        self.high = self.high.max(y);
+        if let Some(h) = self.heights.as_deref_mut() {
+            h.modules.push(at);
+        }
+    }
+
+    /// Growth: the rotation the module has accumulated turns the turtle before it.
+    fn turn_by_growth(&mut self, index: usize) {
+        let Some(adjustments) = self.adjustments else {
+            return;
+        };
+        let m = &adjustments.modules[index];
+        if !m.turns() {
+            return;
+        }
+        for (attractor, degrees) in adjustments.attractors.iter().zip(m.turns) {
+            if let Some(direction) = attractor {
+                self.turtle.turn_towards(*direction, degrees);
+            }
+        }
+    }
+
+    /// Does one command. `first` is the module's first parameter (when finite), `value` that or
+    /// the parameter's default. Returns whether the turtle moved forward.
+    fn command(
+        &mut self,
+        command: Command,
+        first: Option<f64>,
+        value: Option<f64>,
+        params: &[f64],
+        index: u32,
+    ) -> bool {
+        let t = &mut self.turtle;
+        let angle = || value.unwrap_or(0.0).to_radians();
+        match command {
+            Command::Forward | Command::ForwardNoVertex | Command::Move | Command::MoveNoVertex => {
+                self.forward(command, value.unwrap_or(0.0), index);
+                return true;
+            }
+            Command::TurnLeft => t.yaw(angle()),
+            Command::TurnRight => t.yaw(-angle()),
+            Command::PitchDown => t.pitch(angle()),
+            Command::PitchUp => t.pitch(-angle()),
+            Command::RollRight => t.roll(angle()),
+            Command::RollLeft => t.roll(-angle()),
+            Command::TurnAround => t.yaw(std::f64::consts::PI),
+            Command::RollToVertical => t.roll_to_vertical(),
+            Command::Push => {
+                self.stack.push(*t);
+                // A branch starts a new axis: its first segment does not continue the parent's.
+                self.turtle.last_segment = None;
+            }
+            Command::Pop => {
+                if let Some(saved) = self.stack.pop() {
+                    *t = saved;
+                }
+            }
+            Command::StartPolygon | Command::PolygonVertex | Command::EndPolygon => {
+                self.polygon(command, index)
+            }
+            Command::Width => {
+                t.width = match first {
+                    Some(w) => w.max(0.0),
+                    None => (t.width - self.settings.width_step).max(0.0),
+                }
+            }
+            Command::NextColor => {
+                let step = value.map_or(1, |n| n.round().clamp(-1000.0, 1000.0) as i32);
+                t.color = (t.color as i32 + step).clamp(0, u16::MAX as i32) as u16;
+            }
+            Command::SetColor => {
+                t.color = match first {
+                    Some(c) => c.round().clamp(0.0, u16::MAX as f64) as u16,
+                    None => t.color.saturating_add(1),
+                }
+            }
+            Command::Leaf | Command::Petal => self.surface(command, value.unwrap_or(1.0), index),
+            Command::Sphere => self.skeleton.spheres.push(Sphere {
+                center: t.position,
+                radius: first.unwrap_or(0.0).max(0.0),
+                radius_width: first.is_none().then_some(t.width * 0.5),
+                color: t.color,
+                module: index,
+                anchor: t.anchor,
+            }),
+            Command::MoveTo => {
+                if let Some(p) = vector(params) {
+                    t.position = p;
+                    t.last_segment = None;
+                    // What is drawn from an absolute position does not grow from a joint.
+                    t.anchor = None;
+                }
+            }
+            Command::TropismVector => {
+                if let Some(v) = vector(params) {
+                    t.tropism = v;
+                }
+            }
+            Command::TropismStrength => {
+                if let Some(e) = first {
+                    t.susceptibility = e;
+                }
+            }
+            Command::StartSmooth => t.smooth = true,
+            Command::EndSmooth => t.smooth = false,
+            Command::QueryPosition
+            | Command::QueryHeading
+            | Command::QueryUp
+            | Command::QueryLeft => self.query(command, index),
+        }
+        false
+    }
+
+    /// `F f G g`: move by `length` (scaled by growth outside polygons); `F` and `G` draw a
+    /// segment; inside a polygon `F` and `f` record its vertices instead.
+    fn forward(&mut self, command: Command, mut length: f64, index: u32) {
+        if let Some(a) = self.adjustments.filter(|a| a.scales_length) {
+            if self.open_polygons.is_empty() {
+                length *= a.modules[index as usize].length;
+            }
+        }
+        let t = &mut self.turtle;
+        let start = t.position;
+        t.position += t.heading * length;
+        let draws = command.draws();
+        let records = matches!(command, Command::Forward | Command::Move);
+        if let Some((points, ..)) = self.open_polygons.last_mut() {
+            if records {
+                points.push(t.position);
+            }
+            t.last_segment = None;
+        } else if draws && length != 0.0 {
+            let segments = &mut self.skeleton.segments;
+            let previous = t
+                .last_segment
+                .filter(|&s| segments[s as usize].end == start);
+            segments.push(Segment {
+                start,
+                end: t.position,
+                left: t.left,
+                up: t.up,
+                width: t.width,
+                color: t.color,
+                module: index,
+                previous,
+                smooth: t.smooth,
+                anchor: t.anchor,
+            });
+            t.last_segment = Some(segments.len() as u32 - 1);
+            t.anchor = t.last_segment;
+        } else {
+            t.last_segment = None;
+        }
+        if draws {
+            t.bend();
+        }
+    }
+
+    /// `{`, `.`, `}`.
+    fn polygon(&mut self, command: Command, index: u32) {
+        let t = &self.turtle;
+        match command {
+            Command::StartPolygon => {
+                self.open_polygons
+                    .push((vec![t.position], t.color, index, t.anchor))
+            }
+            Command::PolygonVertex => {
+                if let Some((points, ..)) = self.open_polygons.last_mut() {
+                    points.push(t.position);
+                }
+            }
+            _ => {
+                if let Some((points, color, module, anchor)) = self.open_polygons.pop() {
+                    self.skeleton.polygons.push(Polygon {
+                        points,
+                        color,
+                        module,
+                        anchor,
+                    });
+                }
+            }
+        }
+    }
+
+    /// `~l`, `~p`: a predefined surface `scale` long along H.
+    fn surface(&mut self, command: Command, scale: f64, index: u32) {
+        if scale <= 0.0 {
+            return;
+        }
+        let t = &self.turtle;
+        self.skeleton.surfaces.push(Surface {
+            kind: if command == Command::Leaf {
+                SurfaceKind::Leaf
+            } else {
+                SurfaceKind::Petal
+            },
+            origin: t.position,
+            heading: t.heading,
+            left: t.left,
+            scale,
+            color: t.color,
+            module: index,
+            anchor: t.anchor,
+        });
+    }
+
+    /// `?P ?H ?U ?L`: what the turtle reads here.
+    fn query(&mut self, command: Command, index: u32) {
+        let t = &self.turtle;
+        let v = match command {
+            Command::QueryPosition => t.position,
+            Command::QueryHeading => t.heading,
+            Command::QueryUp => t.up,
+            _ => t.left,
+        };
+        self.skeleton.queries.push(QueryValue {
+            module: index,
+            value: [v.x, v.y, v.z],
+        });
+    }
+
+    /// The extent for heights, growth's widths by third, and where the turtle ended.
+    fn finish(mut self) -> Skeleton {
+        if let Some(h) = self.heights.take() {
+            h.low = self.low;
+            h.high = self.high;
+        }
+        if let Some(a) = self.adjustments.filter(|a| a.scales_width) {
+            for segment in &mut self.skeleton.segments {
+                let middle = (segment.start.y + segment.end.y) * 0.5;
+                let third = Third::of(middle, self.low, self.high);
+                segment.width *= a.modules[segment.module as usize].width[third as usize];
+            }
+        }
+        self.skeleton.end = self.turtle.position;
+        self.skeleton
+    }
+}
+
+/// The first three parameters as a vector, when there are three and they are finite.
+fn vector(params: &[f64]) -> Option<DVec3> {
+    (params.len() >= 3)
+        .then(|| DVec3::new(params[0], params[1], params[2]))
+        .filter(|v| v.is_finite())
+}

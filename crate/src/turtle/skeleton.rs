@@ -1,0 +1,139 @@
+//! The turtle's output: plain geometry (segments, polygons, predefined surfaces, spheres) and the
+//! values query modules read.
+
+use glam::DVec3;
+
+/// One drawn segment, from `start` to `end`, with the turtle's frame at the time.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Segment {
+    pub start: DVec3,
+    pub end: DVec3,
+    /// The turtle's left and up vectors while drawing (unit, orthogonal to the segment).
+    pub left: DVec3,
+    pub up: DVec3,
+    pub width: f64,
+    pub color: u16,
+    /// Index in the interpreted string of the module that drew this segment.
+    pub module: u32,
+    /// The segment this one continues on the same axis (it starts where that one ended, with no
+    /// branch, move or jump between): the mesh shares their joint.
+    pub previous: Option<u32>,
+    /// Drawn between `@Gc` and `@Ge`: part of a smooth generalized cylinder.
+    pub smooth: bool,
+    /// The segment this one grows from: the last segment drawn before it on the turtle's path
+    /// from the start of the string (a closed `[…]` branch does not count, `f` keeps it, `@M`
+    /// clears it). Equal to `previous` when the segment continues an axis; otherwise the segment
+    /// at whose end joint a branch leaves. `None` for a segment that starts a new root. See
+    /// [`crate::branches`].
+    pub anchor: Option<u32>,
+}
+
+/// A filled polygon (`{ … }`), vertices in drawing order.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Polygon {
+    pub points: Vec<DVec3>,
+    pub color: u16,
+    /// Index of the `{` module.
+    pub module: u32,
+    /// The segment the turtle's state at `{` grew from (as [`Segment::anchor`]).
+    pub anchor: Option<u32>,
+}
+
+/// Which predefined surface.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SurfaceKind {
+    Leaf,
+    Petal,
+}
+
+/// A predefined surface (`~l`, `~p`) placed at the turtle.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Surface {
+    pub kind: SurfaceKind,
+    pub origin: DVec3,
+    pub heading: DVec3,
+    pub left: DVec3,
+    pub scale: f64,
+    pub color: u16,
+    pub module: u32,
+    /// The segment the turtle's state here grew from (as [`Segment::anchor`]).
+    pub anchor: Option<u32>,
+}
+
+/// A sphere (`@O`). Its radius is in model units (`@O(r)`), or half the width in width units
+/// when `@O` has no parameter (`radius_width`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Sphere {
+    pub center: DVec3,
+    pub radius: f64,
+    pub radius_width: Option<f64>,
+    pub color: u16,
+    pub module: u32,
+    /// The segment the turtle's state here grew from (as [`Segment::anchor`]).
+    pub anchor: Option<u32>,
+}
+
+/// The value a query module (`?P`, `?H`, `?U`, `?L`) reads at its place in the string.
+#[derive(Clone, Debug, PartialEq)]
+pub struct QueryValue {
+    pub module: u32,
+    pub value: [f64; 3],
+}
+
+/// The turtle's output: plain geometry, no mesh yet.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Skeleton {
+    pub segments: Vec<Segment>,
+    pub polygons: Vec<Polygon>,
+    pub surfaces: Vec<Surface>,
+    pub spheres: Vec<Sphere>,
+    pub queries: Vec<QueryValue>,
+    /// Where the turtle stood after the last module.
+    pub end: DVec3,
+    /// The colours of the colour indices (the grammar's palette); empty means
+    /// [`crate::model::DEFAULT_PALETTE`].
+    pub palette: Vec<[f32; 3]>,
+}
+
+impl Skeleton {
+    /// The colour of a colour index: the palette entry, wrapping modulo the palette's length.
+    pub fn color(&self, index: u16) -> [f32; 3] {
+        let palette: &[[f32; 3]] = if self.palette.is_empty() {
+            &crate::model::DEFAULT_PALETTE
+        } else {
+            &self.palette
+        };
+        palette[index as usize % palette.len()]
+    }
+
+    /// True when something was drawn and all of it lies in the plane z = 0 (the plane a grammar
+    /// that only turns with `+` and `-` draws in), up to a millionth of the drawing's size: the
+    /// studio then shows it face-on in an orthographic view. Widths do not count (tubes always
+    /// have thickness); spheres count by their centres.
+    pub fn is_flat(&self) -> bool {
+        // Two passes over the points without collecting them (a big plant has millions).
+        let mut bounds: Option<(DVec3, DVec3)> = None;
+        self.for_each_point(&mut |p| {
+            bounds = Some(bounds.map_or((p, p), |(lo, hi)| (lo.min(p), hi.max(p))));
+            true
+        });
+        let Some((min, max)) = bounds else {
+            return false;
+        };
+        let size = (max - min).max_element();
+        let tolerance = 1e-6 * size.max(1e-12);
+        self.for_each_point(&mut |p| p.z.abs() <= tolerance)
+    }
+
+    /// Calls `f` on every point that counts for [`Skeleton::is_flat`] until it returns false;
+    /// returns whether it never did.
+    fn for_each_point(&self, f: &mut dyn FnMut(DVec3) -> bool) -> bool {
+        self.segments.iter().all(|s| f(s.start) && f(s.end))
+            && self.polygons.iter().all(|p| p.points.iter().all(|&q| f(q)))
+            // A surface's outline spans heading and left from the origin.
+            && self.surfaces.iter().all(|s| {
+                f(s.origin) && f(s.origin + s.heading * s.scale) && f(s.origin + s.left * s.scale)
+            })
+            && self.spheres.iter().all(|s| f(s.center))
+    }
+}

@@ -1,0 +1,100 @@
+//! The turtle's state and its rotations (docs/LANGUAGE.md, "Turtle").
+
+use glam::DVec3;
+
+/// The world's up direction, for `$` (ABOP's V).
+const VERTICAL: DVec3 = DVec3::Y;
+
+/// The turtle: where it stands, its frame (heading H, left L, up U), and what it draws with.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct TurtleState {
+    pub position: DVec3,
+    pub heading: DVec3,
+    pub left: DVec3,
+    pub up: DVec3,
+    pub width: f64,
+    pub color: u16,
+    pub tropism: DVec3,
+    pub susceptibility: f64,
+    pub smooth: bool,
+    /// The last segment drawn on this axis, if the turtle still stands at its end.
+    pub last_segment: Option<u32>,
+    /// The last segment drawn on the turtle's path (`Segment::anchor` of what it draws next).
+    pub anchor: Option<u32>,
+}
+
+impl TurtleState {
+    /// Right-handed rotation by `a` radians about U: H turns towards L.
+    pub fn yaw(&mut self, a: f64) {
+        let (s, c) = a.sin_cos();
+        let h = self.heading * c + self.left * s;
+        let l = self.left * c - self.heading * s;
+        self.set_frame(h, l);
+    }
+
+    /// Right-handed rotation by `a` radians about L: H turns away from U (down).
+    pub fn pitch(&mut self, a: f64) {
+        let (s, c) = a.sin_cos();
+        let h = self.heading * c - self.up * s;
+        self.set_frame(h, self.left);
+    }
+
+    /// Right-handed rotation by `a` radians about H: L turns towards U.
+    pub fn roll(&mut self, a: f64) {
+        let (s, c) = a.sin_cos();
+        let l = self.left * c + self.up * s;
+        self.set_frame(self.heading, l);
+    }
+
+    /// `$`: L = V × H / |V × H|, U = H × L (unchanged when H is vertical).
+    pub fn roll_to_vertical(&mut self) {
+        let l = VERTICAL.cross(self.heading);
+        if l.length() > 1e-9 {
+            self.set_frame(self.heading, l);
+        }
+    }
+
+    /// ABOP 2.3: after a step, H bends towards T by e·|H × T| (L and U follow).
+    pub fn bend(&mut self) {
+        if self.susceptibility == 0.0 {
+            return;
+        }
+        let axis = self.heading.cross(self.tropism);
+        let strength = axis.length();
+        if strength < 1e-12 {
+            return;
+        }
+        let angle = self.susceptibility * strength;
+        let rotation = glam::DQuat::from_axis_angle(axis / strength, angle);
+        self.set_frame(rotation * self.heading, rotation * self.left);
+    }
+
+    /// Turns H towards `target` by `degrees` (away from it when negative) about H × target,
+    /// never past it (nor past pointing straight away from it); L and U follow. Nothing happens
+    /// when H points along the target (the pull has no side to turn to).
+    pub fn turn_towards(&mut self, target: DVec3, degrees: f64) {
+        let axis = self.heading.cross(target);
+        let s = axis.length();
+        if degrees == 0.0 || s < 1e-9 {
+            return;
+        }
+        let between = self.heading.angle_between(target);
+        let angle = degrees
+            .to_radians()
+            .clamp(between - std::f64::consts::PI, between);
+        let rotation = glam::DQuat::from_axis_angle(axis / s, angle);
+        self.set_frame(rotation * self.heading, rotation * self.left);
+    }
+
+    /// Sets H and L, re-orthonormalising so that rounding never accumulates; U = H × L.
+    fn set_frame(&mut self, heading: DVec3, left: DVec3) {
+        let h = heading.normalize();
+        let l = (left - h * h.dot(left)).normalize();
+        if !(h.is_finite() && l.is_finite()) {
+            return;
+        }
+        self.heading = h;
+        self.left = l;
+        self.up = h.cross(l);
+    }
+}

@@ -1,0 +1,464 @@
+//! The directives: `#name arguments` lines, each with the forms its arguments may take.
+
+use super::params::{Param, ParamKind};
+use serde::{Serialize, Serializer};
+
+/// Every directive. `#colour` is another spelling of [`DirectiveKind::Color`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum DirectiveKind {
+    Angle,
+    Iterations,
+    Step,
+    Width,
+    WidthStep,
+    Tropism,
+    Color,
+    Seed,
+    Define,
+    Random,
+    Ignore,
+    Consider,
+    Module,
+    Draw,
+    MaxModules,
+    MaxSteps,
+    HomomorphismDepth,
+    DecompositionDepth,
+    Apex,
+    Lifetime,
+    Speed,
+    Shape,
+    ShapeWidth,
+    Sun,
+    Gravity,
+    Wind,
+}
+
+impl DirectiveKind {
+    /// Its row (the first, for `#color`).
+    pub fn info(self) -> &'static DirectiveInfo {
+        directive(self)
+    }
+
+    /// Its name without `#` (`angle`).
+    pub fn name(self) -> &'static str {
+        self.info().name
+    }
+}
+
+impl Serialize for DirectiveKind {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.serialize_str(self.name())
+    }
+}
+
+/// A season of `#sun`: the sun's noon altitude is 23.5° higher in summer, 23.5° lower in winter.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Season {
+    Summer,
+    Equinox,
+    Winter,
+}
+
+/// The season names `#sun` accepts, with the season each means.
+const SEASONS: [(&str, Season); 6] = [
+    ("summer", Season::Summer),
+    ("spring", Season::Equinox),
+    ("autumn", Season::Equinox),
+    ("winter", Season::Winter),
+    ("fall", Season::Equinox),
+    ("equinox", Season::Equinox),
+];
+
+impl Season {
+    /// `summer`, `winter`, and `spring`, `autumn`, `fall` or `equinox` for the equinox, in any case.
+    pub fn named(name: &str) -> Option<Season> {
+        SEASONS
+            .iter()
+            .find(|(n, _)| n.eq_ignore_ascii_case(name))
+            .map(|&(_, s)| s)
+    }
+}
+
+/// Which part of the language a directive belongs to (for the reference and the studio's panels).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum DirectiveGroup {
+    Turtle,
+    Derivation,
+    Names,
+    Limits,
+    Growth,
+}
+
+/// One row of the directive table.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct DirectiveInfo {
+    /// The name without `#`.
+    pub name: &'static str,
+    pub kind: DirectiveKind,
+    /// A few words for a field or switch in the studio (`Lifetime`, `Length by age`).
+    pub label: &'static str,
+    /// The argument lists it accepts, shortest first; each shorter form is the start of the
+    /// longer ones, except `#color`'s (`index r g b` or `first last r g b r g b`).
+    pub forms: &'static [&'static [Param]],
+    /// What the arguments mean, for messages about their number.
+    #[serde(skip)]
+    pub usage: &'static str,
+    /// The diagnostic code when the number of arguments is wrong.
+    #[serde(skip)]
+    pub count_code: &'static str,
+    /// True when it may be written several times (each adds to the others).
+    pub repeatable: bool,
+    pub group: DirectiveGroup,
+    /// The arguments the studio writes when the directive is switched on (the Growth panel).
+    #[serde(skip_serializing_if = "<[_]>::is_empty")]
+    pub enable: &'static [&'static str],
+    pub doc: &'static str,
+}
+
+impl DirectiveInfo {
+    /// The longest argument list.
+    pub fn params(&self) -> &'static [Param] {
+        self.forms
+            .iter()
+            .max_by_key(|f| f.len())
+            .copied()
+            .unwrap_or(&[])
+    }
+
+    /// The argument lists as written in docs and messages: `'MB VB' or 'MB VB pu pm pl'`.
+    pub fn forms_text(&self) -> String {
+        let form = |f: &[Param]| {
+            let names: Vec<&str> = f.iter().map(|p| p.name).collect();
+            format!("'{}'", names.join(" "))
+        };
+        let forms: Vec<String> = self
+            .forms
+            .iter()
+            .filter(|f| !f.is_empty())
+            .map(|f| form(f))
+            .collect();
+        let mut text = forms.join(" or ");
+        if self.forms.iter().any(|f| f.is_empty()) {
+            text = format!("nothing, {}", forms.join(" or "));
+        }
+        text
+    }
+
+    /// True when its arguments are one value written as a whole (spaces allowed: `#angle 360 / n`).
+    pub fn takes_one_value(&self) -> bool {
+        matches!(self.forms, [[p]] if matches!(p.kind, ParamKind::Number | ParamKind::Whole))
+    }
+}
+
+const fn row(
+    name: &'static str,
+    kind: DirectiveKind,
+    label: &'static str,
+    forms: &'static [&'static [Param]],
+    group: DirectiveGroup,
+    doc: &'static str,
+) -> DirectiveInfo {
+    DirectiveInfo {
+        name,
+        kind,
+        label,
+        forms,
+        usage: "",
+        count_code: "E0209",
+        repeatable: false,
+        group,
+        enable: &[],
+        doc,
+    }
+}
+
+impl DirectiveInfo {
+    const fn repeatable(mut self) -> DirectiveInfo {
+        self.repeatable = true;
+        self
+    }
+
+    const fn usage(mut self, code: &'static str, usage: &'static str) -> DirectiveInfo {
+        self.count_code = code;
+        self.usage = usage;
+        self
+    }
+
+    const fn enable(mut self, args: &'static [&'static str]) -> DirectiveInfo {
+        self.enable = args;
+        self
+    }
+}
+
+const MODULE_LIST: &[&[Param]] = &[&[Param::new("modules", ParamKind::Modules, "module names")]];
+const DEFINE: &[&[Param]] = &[&[
+    Param::new("name", ParamKind::Name, "the constant's name"),
+    Param::new("expression", ParamKind::Expression, "its value"),
+]];
+const RANDOM: &[&[Param]] = &[&[
+    Param::new("name", ParamKind::Name, "the variable's name"),
+    Param::new(
+        "distribution",
+        ParamKind::Expression,
+        "a random function such as uniform(0, 1)",
+    ),
+]];
+const DEPTH: &[&[Param]] = &[&[Param::whole("n", 0.0, 10_000.0, "the depth").default(16.0)]];
+const U32_MAX: f64 = u32::MAX as f64;
+
+// Shared parameters of the growth directives.
+const PF_SPEED: [Param; 3] = [
+    Param::number("PFu", "positional factor of the upper third").default(2.0),
+    Param::number("PFm", "positional factor of the middle third").default(1.0),
+    Param::number("PFl", "positional factor of the lower third").default(1.0),
+];
+const PF_WIDTH: [Param; 3] = [
+    Param::number("PFu", "positional factor of the upper third").default(2.0),
+    Param::number("PFm", "positional factor of the middle third").default(1.0),
+    Param::number("PFl", "positional factor of the lower third").default(0.0),
+];
+const LIFETIME: [Param; 5] = [
+    Param::new(
+        "MB",
+        ParamKind::StepExpression,
+        "apices that keep growing at each step, at least",
+    ),
+    Param::new(
+        "VB",
+        ParamKind::StepExpression,
+        "plus Round(Rand() × VB) more",
+    ),
+    Param::number("pu", "share of the upper third").default(0.6),
+    Param::number("pm", "share of the middle third").default(0.3),
+    Param::number("pl", "share of the lower third").default(0.1),
+];
+const SPEED: [Param; 5] = [
+    Param::new(
+        "SM",
+        ParamKind::StepExpression,
+        "rewritings per step added to the positional factor",
+    ),
+    Param::new("VR", ParamKind::StepExpression, "plus Round(Rand() × VR)"),
+    PF_SPEED[0],
+    PF_SPEED[1],
+    PF_SPEED[2],
+];
+const SHAPE: [Param; 3] = [
+    Param::number(
+        "GR",
+        "growth rate: a segment of age i is GR^i long up to maturity",
+    ),
+    Param::whole("m", 0.0, 1_000.0, "maturity, then logarithmic growth").unit("steps"),
+    Param::number("VR", "random variation, ± Round(Rand() × VR)").default(0.0),
+];
+const SHAPE_WIDTH: [Param; 4] = [
+    Param::number("VR", "random variation, Round(Rand() × VR)").default(0.0),
+    PF_WIDTH[0],
+    PF_WIDTH[1],
+    PF_WIDTH[2],
+];
+const SUN: [Param; 3] = [
+    Param::number("latitude", "latitude (negative: south)")
+        .range(-90.0, 90.0)
+        .unit("degrees"),
+    Param::new(
+        "season",
+        ParamKind::Season,
+        "the season: the sun's noon altitude",
+    )
+    .choices(&["summer", "spring", "autumn", "winter", "fall", "equinox"]),
+    Param::number(
+        "angle",
+        "turn of the upper and middle segments towards the sun per step",
+    )
+    .unit("degrees"),
+];
+const GRAVITY: [Param; 2] = [
+    Param::number("angle", "turn of every segment downwards per step").unit("degrees"),
+    Param::number("variation", "plus Round(Rand() × variation)")
+        .default(0.0)
+        .unit("degrees"),
+];
+const WIND: [Param; 4] = [
+    Param::number("x", "wind direction, x"),
+    Param::number("z", "wind direction, z"),
+    Param::number("angle", "turn of every segment with the wind per step").unit("degrees"),
+    Param::number("variation", "plus Round(Rand() × variation)")
+        .default(0.0)
+        .unit("degrees"),
+];
+const COLOR: &[&[Param]] = &[
+    &[
+        Param::number("index", "the palette entry (a whole number)").range(0.0, 255.0),
+        Param::number("r", "red").range(0.0, 255.0),
+        Param::number("g", "green").range(0.0, 255.0),
+        Param::number("b", "blue").range(0.0, 255.0),
+    ],
+    &[
+        Param::number(
+            "first",
+            "the first palette entry of the ramp (a whole number)",
+        )
+        .range(0.0, 255.0),
+        Param::number(
+            "last",
+            "the last palette entry of the ramp (a whole number)",
+        )
+        .range(0.0, 255.0),
+        Param::number("r", "red of the first entry").range(0.0, 255.0),
+        Param::number("g", "green of the first entry").range(0.0, 255.0),
+        Param::number("b", "blue of the first entry").range(0.0, 255.0),
+        Param::number("r", "red of the last entry").range(0.0, 255.0),
+        Param::number("g", "green of the last entry").range(0.0, 255.0),
+        Param::number("b", "blue of the last entry").range(0.0, 255.0),
+    ],
+];
+const COLOR_USAGE: &str = "(indices 0 to 255, components 0 to 255)";
+
+use DirectiveGroup as G;
+use DirectiveKind as D;
+
+/// Every directive, in the order of docs/LANGUAGE.md.
+#[rustfmt::skip]
+pub const DIRECTIVES: &[DirectiveInfo] = &[
+    row("angle", D::Angle, "Angle", &[&[Param::number("degrees", "the turn angle δ").default(90.0).unit("degrees")]], G::Turtle,
+        "The default turn angle δ of + - & ^ \\ / (default 90)."),
+    row("iterations", D::Iterations, "Iterations", &[&[Param::whole("n", 0.0, U32_MAX, "derivation steps").default(0.0)]], G::Derivation,
+        "The number of derivation steps (default 0)."),
+    row("step", D::Step, "Step", &[&[Param::number("length", "the length of F, f, G and g").default(1.0).unit("units")]], G::Turtle,
+        "The default length of F, f, G and g (default 1)."),
+    row("width", D::Width, "Width", &[&[Param::number("w", "the initial width").default(1.0).unit("width units")]], G::Turtle,
+        "The initial segment width, in width units (default 1)."),
+    row("width_step", D::WidthStep, "Width step", &[&[Param::number("d", "how much ! narrows").default(0.1).unit("width units")]], G::Turtle,
+        "How much ! without a parameter decreases the width (default 0.1)."),
+    row("tropism", D::Tropism, "Tropism", &[&[
+            Param::number("x", "tropism vector, x").default(0.0),
+            Param::number("y", "tropism vector, y").default(-1.0),
+            Param::number("z", "tropism vector, z").default(0.0),
+            Param::number("e", "susceptibility").default(0.0),
+        ]], G::Turtle,
+        "The tropism vector T and susceptibility e (ABOP 2.3; default 0 -1 0 0).")
+        .usage("E0207", ""),
+    row("color", D::Color, "Colour", COLOR, G::Turtle,
+        "Set a palette entry, or a ramp of entries (components 0 to 255).")
+        .usage("E0208", COLOR_USAGE).repeatable(),
+    row("colour", D::Color, "Colour", COLOR, G::Turtle, "The same as #color.")
+        .usage("E0208", COLOR_USAGE).repeatable(),
+    row("seed", D::Seed, "Seed", &[&[Param::whole("n", 0.0, u64::MAX as f64, "the seed").default(1.0)]], G::Derivation,
+        "The seed of the random generator (default 1)."),
+    row("define", D::Define, "Constant", DEFINE, G::Names,
+        "A named constant or expression, inlined where it is used.").repeatable(),
+    row("random", D::Random, "Random variable", RANDOM, G::Names,
+        "A random variable (Green): one deviate per module while matching.").repeatable(),
+    row("ignore", D::Ignore, "Ignored modules", MODULE_LIST, G::Derivation,
+        "Modules that context matching skips.").repeatable(),
+    row("consider", D::Consider, "Considered modules", MODULE_LIST, G::Derivation,
+        "The only modules context matching sees (not with #ignore)."),
+    row("module", D::Module, "Module names", MODULE_LIST, G::Names,
+        "Declare multi-letter module names.").repeatable(),
+    row("draw", D::Draw, "Drawn modules", MODULE_LIST, G::Turtle,
+        "Further modules that draw a segment like F.").repeatable(),
+    row("max_modules", D::MaxModules, "Module limit", &[&[Param::whole("n", 0.0, U32_MAX, "modules at most").default(5_000_000.0)]], G::Limits,
+        "Stop with an error when the string would grow past n modules (default 5,000,000)."),
+    row("max_steps", D::MaxSteps, "Step limit", &[&[Param::whole("n", 0.0, U32_MAX, "steps at most").default(10_000.0)]], G::Limits,
+        "The largest number of derivation steps a build may run (default 10,000)."),
+    row("homomorphism_depth", D::HomomorphismDepth, "Homomorphism depth", DEPTH, G::Limits,
+        "The maximum depth of homomorphism rules (default 16)."),
+    row("decomposition_depth", D::DecompositionDepth, "Decomposition depth", DEPTH, G::Limits,
+        "The maximum depth of decomposition rules (default 16)."),
+    row("apex", D::Apex, "Apices", MODULE_LIST, G::Growth,
+        "Growth: the modules that are branch apices (default: modules with productions that are not turtle commands).")
+        .repeatable().enable(&["A"]),
+    row("lifetime", D::Lifetime, "Lifetime", &[&[LIFETIME[0], LIFETIME[1]], &LIFETIME], G::Growth,
+        "Growth: MB + Round(Rand()·VB) apices keep growing each step, shared by the upper, middle and lower thirds (default 0.6 0.3 0.1); the others stop.")
+        .usage("E0209", "(the mean and variance of the surviving branches, then the shares of the upper, middle and lower thirds)")
+        .enable(&["34", "32"]),
+    row("speed", D::Speed, "Speed", &[&[SPEED[0], SPEED[1]], &SPEED], G::Growth,
+        "Growth: each apex is rewritten PF + SM + Round(Rand()·VR) times per step (PF default 2 1 1).")
+        .usage("E0209", "(the seasonal mean and variance of the rewritings, then the positional factors of the thirds)")
+        .enable(&["0", "1"]),
+    row("shape", D::Shape, "Length by age", &[&[SHAPE[0], SHAPE[1]], &SHAPE], G::Growth,
+        "Growth: a segment of age i is GR^i times as long up to maturity m, then log_GR(i) − log_GR(m) + GR^m, ± Round(Rand()·VR).")
+        .usage("E0209", ": a growth rate above 0 other than 1, a maturity from 1 and the variance of the length")
+        .enable(&["1.5", "3"]),
+    row("shape_width", D::ShapeWidth, "Width by age", &[&[], &[SHAPE_WIDTH[0]], &SHAPE_WIDTH], G::Growth,
+        "Growth: a segment of age i is i + PF + Round(Rand()·VR) times as wide (PF default 2 1 0).")
+        .usage("E0209", "(the variance of the width, then the positional factors of the thirds)")
+        .enable(&["1"]),
+    row("sun", D::Sun, "Sun", &[&SUN], G::Growth,
+        "Growth: upper and middle segments turn towards the noon sun (+X side) by angle degrees per step; season summer, equinox or winter.")
+        .usage("E0209", ": a latitude from -90 to 90, a season (summer, winter, spring, autumn, fall or equinox) and the degrees per step")
+        .enable(&["38", "summer", "2"]),
+    row("gravity", D::Gravity, "Gravity", &[&[GRAVITY[0]], &GRAVITY], G::Growth,
+        "Growth: every segment turns down by angle + Round(Rand()·variation) degrees per step.")
+        .usage("E0209", ": the degrees per step")
+        .enable(&["5", "3"]),
+    row("wind", D::Wind, "Wind", &[&[WIND[0], WIND[1], WIND[2]], &WIND], G::Growth,
+        "Growth: every segment turns towards the horizontal direction (x, 0, z) by angle + Round(Rand()·variation) degrees per step.")
+        .usage("E0209", ": a horizontal direction other than 0 0, and the degrees per step")
+        .enable(&["1", "0", "2"]),
+];
+
+/// The row of `kind` (the first of its spellings).
+pub fn directive(kind: DirectiveKind) -> &'static DirectiveInfo {
+    DIRECTIVES
+        .iter()
+        .find(|d| d.kind == kind)
+        .unwrap_or(&DIRECTIVES[0])
+}
+
+/// The row of a directive name (without `#`).
+pub fn directive_named(name: &str) -> Option<&'static DirectiveInfo> {
+    DIRECTIVES.iter().find(|d| d.name == name)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_kind_has_a_row_and_forms_grow() {
+        for d in DIRECTIVES {
+            assert_eq!(directive(d.kind).kind, d.kind);
+            assert!(!d.forms.is_empty(), "#{}", d.name);
+            if d.kind != DirectiveKind::Color {
+                for pair in d.forms.windows(2) {
+                    assert!(pair[0].len() < pair[1].len(), "#{}", d.name);
+                    assert!(
+                        pair[1].starts_with(pair[0]),
+                        "#{}: a shorter form starts the longer",
+                        d.name
+                    );
+                }
+            }
+        }
+        assert_eq!(
+            directive_named("colour").map(|d| d.kind),
+            Some(DirectiveKind::Color)
+        );
+        assert_eq!(DirectiveKind::Color.name(), "color");
+    }
+
+    #[test]
+    fn seasons_are_read_in_any_case() {
+        assert_eq!(Season::named("Spring"), Some(Season::Equinox));
+        assert_eq!(Season::named("monsoon"), None);
+        let choices = DirectiveKind::Sun.info().params()[1].choices;
+        assert!(choices.iter().all(|c| Season::named(c).is_some()));
+        assert_eq!(choices.len(), SEASONS.len());
+    }
+
+    #[test]
+    fn forms_are_written_for_messages() {
+        assert_eq!(
+            DirectiveKind::Lifetime.info().forms_text(),
+            "'MB VB' or 'MB VB pu pm pl'"
+        );
+        assert_eq!(
+            DirectiveKind::ShapeWidth.info().forms_text(),
+            "nothing, 'VR' or 'VR PFu PFm PFl'"
+        );
+    }
+}

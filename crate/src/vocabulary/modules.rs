@@ -1,0 +1,265 @@
+//! The modules with a meaning: turtle commands, cut and Green's control modules.
+
+use super::params::{Param, ParamKind};
+use super::DirectiveKind;
+use serde::{Serialize, Serializer};
+
+/// What the turtle does when it reads a module.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Command {
+    /// `F`: move forward and draw a segment (records a polygon vertex inside `{ }`).
+    Forward,
+    /// `f`: move forward without drawing (records a polygon vertex inside `{ }`).
+    Move,
+    /// `G`: draw forward without recording a polygon vertex.
+    ForwardNoVertex,
+    /// `g`: move forward without drawing or recording a polygon vertex.
+    MoveNoVertex,
+    TurnLeft,
+    TurnRight,
+    PitchDown,
+    PitchUp,
+    RollLeft,
+    RollRight,
+    TurnAround,
+    /// `$`, `@v`: roll so that L is horizontal.
+    RollToVertical,
+    Push,
+    Pop,
+    StartPolygon,
+    PolygonVertex,
+    EndPolygon,
+    /// `!`: decrease the width, or set it.
+    Width,
+    /// `'`: next colour index (or add the parameter).
+    NextColor,
+    /// `;`: set the colour index (or next, without a parameter).
+    SetColor,
+    Leaf,
+    Petal,
+    Sphere,
+    MoveTo,
+    TropismVector,
+    TropismStrength,
+    StartSmooth,
+    EndSmooth,
+    QueryPosition,
+    QueryHeading,
+    QueryUp,
+    QueryLeft,
+}
+
+impl Command {
+    /// True for the query modules (`?P ?H ?U ?L`): derivation writes the turtle's reading into
+    /// their parameters after every step.
+    pub fn is_query(self) -> bool {
+        matches!(
+            self,
+            Command::QueryPosition | Command::QueryHeading | Command::QueryUp | Command::QueryLeft
+        )
+    }
+
+    /// True for the moves that draw a segment (`F`, `G`).
+    pub fn draws(self) -> bool {
+        matches!(self, Command::Forward | Command::ForwardNoVertex)
+    }
+}
+
+/// Green's control modules: their parentheses hold modules, not expressions.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum GroupKind {
+    Switch,
+    Pendulum,
+    Repeat,
+}
+
+/// What a module means.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Meaning {
+    /// The turtle reads it.
+    Turtle(Command),
+    /// Cut: after each step the rest of its branch is removed.
+    Cut,
+    /// A control module, acting during derivation.
+    Group(GroupKind),
+}
+
+impl Serialize for Meaning {
+    /// `"turtle"`, `"cut"` or `"group"`.
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.serialize_str(match self {
+            Meaning::Turtle(_) => "turtle",
+            Meaning::Cut => "cut",
+            Meaning::Group(_) => "group",
+        })
+    }
+}
+
+/// Groups of modules, for the editor's colours and the reference page.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Category {
+    Move,
+    Rotate,
+    Branch,
+    Polygon,
+    Appearance,
+    Surface,
+    Tropism,
+    Query,
+    Derivation,
+}
+
+/// One row of the module table.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct ModuleInfo {
+    /// The module's name as written (`F`, `+`, `@O`, `?P`, `~l`).
+    pub name: &'static str,
+    pub meaning: Meaning,
+    /// Its parameters, all optional: a parameter left out takes its default (or, without one,
+    /// what the doc says).
+    pub params: &'static [Param],
+    pub doc: &'static str,
+    pub category: Category,
+}
+
+impl ModuleInfo {
+    /// The turtle command, for modules the turtle reads.
+    pub fn command(&self) -> Option<Command> {
+        match self.meaning {
+            Meaning::Turtle(c) => Some(c),
+            _ => None,
+        }
+    }
+}
+
+const fn row(
+    name: &'static str,
+    meaning: Meaning,
+    params: &'static [Param],
+    doc: &'static str,
+    category: Category,
+) -> ModuleInfo {
+    ModuleInfo {
+        name,
+        meaning,
+        params,
+        doc,
+        category,
+    }
+}
+
+const fn turtle(
+    name: &'static str,
+    command: Command,
+    params: &'static [Param],
+    doc: &'static str,
+    category: Category,
+) -> ModuleInfo {
+    row(name, Meaning::Turtle(command), params, doc, category)
+}
+
+const LENGTH: &[Param] = &[Param::number("l", "the distance moved")
+    .default_from(DirectiveKind::Step)
+    .unit("units")];
+const ANGLE: &[Param] = &[Param::number("a", "the angle turned")
+    .default_from(DirectiveKind::Angle)
+    .unit("degrees")];
+const POINT: &[Param] = &[
+    Param::number("x", "x coordinate"),
+    Param::number("y", "y coordinate"),
+    Param::number("z", "z coordinate"),
+];
+const VECTOR: &[Param] = &[
+    Param::number("x", "x component"),
+    Param::number("y", "y component"),
+    Param::number("z", "z component"),
+];
+const QUERIED: &[Param] = &[
+    Param::number("x", "x, set by the turtle"),
+    Param::number("y", "y, set by the turtle"),
+    Param::number("z", "z, set by the turtle"),
+];
+const SCALE: &[Param] = &[Param::number("s", "the length of the surface").default(1.0)];
+
+use Category as K;
+use Command as C;
+
+/// Every module of LANGUAGE.md section 6 and the derivation-time modules of sections 6 and 7.
+#[rustfmt::skip]
+pub const MODULES: &[ModuleInfo] = &[
+    turtle("F", C::Forward, LENGTH, "Move forward by l and draw a segment.", K::Move),
+    turtle("f", C::Move, LENGTH, "Move forward by l without drawing.", K::Move),
+    turtle("G", C::ForwardNoVertex, LENGTH, "Draw forward by l without recording a polygon vertex.", K::Move),
+    turtle("g", C::MoveNoVertex, LENGTH, "Move forward by l without drawing or recording a polygon vertex.", K::Move),
+    turtle("@M", C::MoveTo, POINT, "Move to the point (x, y, z) without drawing.", K::Move),
+    turtle("+", C::TurnLeft, ANGLE, "Turn left by a degrees around the up vector U.", K::Rotate),
+    turtle("-", C::TurnRight, ANGLE, "Turn right by a degrees around the up vector U.", K::Rotate),
+    turtle("&", C::PitchDown, ANGLE, "Pitch down by a degrees around the left vector L.", K::Rotate),
+    turtle("^", C::PitchUp, ANGLE, "Pitch up by a degrees around the left vector L.", K::Rotate),
+    turtle("\\", C::RollLeft, ANGLE, "Roll left by a degrees around the heading H.", K::Rotate),
+    turtle("/", C::RollRight, ANGLE, "Roll right by a degrees around the heading H.", K::Rotate),
+    turtle("|", C::TurnAround, &[], "Turn around: 180° around the up vector U.", K::Rotate),
+    turtle("$", C::RollToVertical, &[], "Roll around H so that L is horizontal (ABOP p. 57).", K::Rotate),
+    turtle("@v", C::RollToVertical, &[], "Roll around H so that L is horizontal; the same as $.", K::Rotate),
+    turtle("[", C::Push, &[], "Start a branch: push the turtle state.", K::Branch),
+    turtle("]", C::Pop, &[], "End a branch: pop the turtle state.", K::Branch),
+    turtle("{", C::StartPolygon, &[], "Start a polygon: the turtle's position and later F, f and . moves are its vertices.", K::Polygon),
+    turtle(".", C::PolygonVertex, &[], "Record the turtle's position as a polygon vertex.", K::Polygon),
+    turtle("}", C::EndPolygon, &[], "Close and fill the polygon.", K::Polygon),
+    turtle("!", C::Width, &[Param::number("w", "the new width; without it, the width decreases by #width_step").unit("width units")],
+        "Set the width to w; without w, decrease it by #width_step.", K::Appearance),
+    turtle("'", C::NextColor, &[Param::number("n", "how many colour indices to step").default(1.0)],
+        "Increase the colour index by n.", K::Appearance),
+    turtle(";", C::SetColor, &[Param::number("c", "the colour index; without it, the next one")],
+        "Set the colour index to c; without c, increase it by 1.", K::Appearance),
+    turtle("~l", C::Leaf, SCALE, "Draw the predefined leaf, s long, along H.", K::Surface),
+    turtle("~p", C::Petal, SCALE, "Draw the predefined petal, s long, along H.", K::Surface),
+    turtle("@O", C::Sphere, &[Param::number("r", "the radius; without it, half the current width")],
+        "Draw a sphere of radius r (without r: as wide as the current width).", K::Surface),
+    turtle("@Tp", C::TropismVector, VECTOR, "Set this branch's tropism vector T.", K::Tropism),
+    turtle("@Ts", C::TropismStrength, &[Param::number("e", "the susceptibility")], "Set this branch's tropism susceptibility e.", K::Tropism),
+    turtle("@Gc", C::StartSmooth, &[], "Start a smooth branch: segments until @Ge form one generalized cylinder.", K::Surface),
+    turtle("@Ge", C::EndSmooth, &[], "End a smooth branch.", K::Surface),
+    turtle("?P", C::QueryPosition, QUERIED, "Query: after each step, set to the turtle's position here.", K::Query),
+    turtle("?H", C::QueryHeading, QUERIED, "Query: after each step, set to the turtle's heading here.", K::Query),
+    turtle("?U", C::QueryUp, QUERIED, "Query: after each step, set to the turtle's up vector here.", K::Query),
+    turtle("?L", C::QueryLeft, QUERIED, "Query: after each step, set to the turtle's left vector here.", K::Query),
+    row("%", Meaning::Cut, &[], "Cut: remove the rest of this branch from the string (during derivation).", K::Derivation),
+    row("@Prune", Meaning::Cut, &[], "Cut, as %.", K::Derivation),
+    row("@Switch", Meaning::Group(GroupKind::Switch), &[],
+        "@Switch(A B C): only one member is rewritten per step, in turn.", K::Derivation),
+    row("@Pendulum", Meaning::Group(GroupKind::Pendulum), &[],
+        "@Pendulum(A B C): every member is rewritten; the order reverses on even steps.", K::Derivation),
+    row("@Repeat", Meaning::Group(GroupKind::Repeat),
+        &[Param::new("k", ParamKind::Whole, "how many times the modules inside are derived per step")],
+        "@Repeat(k, A B): the string inside is derived k times per step.", K::Derivation),
+];
+
+/// The row of a module name, if the name has a meaning.
+pub fn module_named(name: &str) -> Option<&'static ModuleInfo> {
+    MODULES.iter().find(|m| m.name == name)
+}
+
+/// The name of the first module with `meaning` (`Meaning::Cut` is `%`; `@Prune` is a synonym).
+pub fn name_of(meaning: Meaning) -> &'static str {
+    MODULES
+        .iter()
+        .find(|m| m.meaning == meaning)
+        .map_or("", |m| m.name)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_meaning_has_a_name() {
+        for m in MODULES {
+            assert_eq!(module_named(m.name).map(|r| r.meaning), Some(m.meaning));
+            assert!(!name_of(m.meaning).is_empty());
+        }
+        assert_eq!(name_of(Meaning::Turtle(Command::Push)), "[");
+        assert_eq!(name_of(Meaning::Cut), "%");
+    }
+}

@@ -1,0 +1,125 @@
+//! Typed parameters: of modules (`F(l)`) and of directives (`#lifetime MB VB`).
+
+use super::DirectiveKind;
+use serde::{Serialize, Serializer};
+
+/// What a parameter holds, and so how it is read and checked.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub enum ParamKind {
+    /// A number, or a constant expression over `#define`d names (`360 / n`).
+    Number,
+    /// A whole number within the parameter's range.
+    Whole,
+    /// A number or an expression that may change from step to step (over `NumIt`, `MaxIt` and
+    /// `#define`d names), drawing no random number.
+    StepExpression,
+    /// Any expression (a `#define`'s value, a `#random` distribution).
+    Expression,
+    /// One of the season names ([`super::Season`]).
+    Season,
+    /// A name being defined (`#define NAME …`).
+    Name,
+    /// A list of module names, without parameters.
+    Modules,
+}
+
+/// The value a parameter takes when it is not written.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ParamDefault {
+    Value(f64),
+    /// The value of a directive (`F`'s length is `#step`).
+    Directive(DirectiveKind),
+}
+
+impl Serialize for ParamDefault {
+    /// A number, or the directive as written (`"#step"`).
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        match self {
+            ParamDefault::Value(v) => serializer.serialize_f64(*v),
+            ParamDefault::Directive(d) => serializer.serialize_str(&format!("#{}", d.name())),
+        }
+    }
+}
+
+/// One parameter of a module or a directive.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Param {
+    /// Its name in docs and in the studio's fields (`l`, `MB`, `latitude`).
+    pub name: &'static str,
+    pub kind: ParamKind,
+    /// The value when it is not written; `None` when leaving it out means something else (the
+    /// doc says what) or when it must be written.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub default: Option<ParamDefault>,
+    /// The values it may take, inclusive.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub range: Option<(f64, f64)>,
+    /// `degrees`, `steps`, … (empty for plain numbers).
+    #[serde(skip_serializing_if = "str::is_empty")]
+    pub unit: &'static str,
+    /// What it is, in a few plain words (hover docs, the studio's field titles).
+    pub doc: &'static str,
+    /// For [`ParamKind::Season`]: the names it accepts.
+    #[serde(skip_serializing_if = "<[_]>::is_empty")]
+    pub choices: &'static [&'static str],
+}
+
+impl Param {
+    /// A parameter of `kind` with nothing else said.
+    pub const fn new(name: &'static str, kind: ParamKind, doc: &'static str) -> Param {
+        Param {
+            name,
+            kind,
+            default: None,
+            range: None,
+            unit: "",
+            doc,
+            choices: &[],
+        }
+    }
+
+    /// A number (or constant expression).
+    pub const fn number(name: &'static str, doc: &'static str) -> Param {
+        Param::new(name, ParamKind::Number, doc)
+    }
+
+    /// A whole number from `min` to `max`.
+    pub const fn whole(name: &'static str, min: f64, max: f64, doc: &'static str) -> Param {
+        Param::new(name, ParamKind::Whole, doc).range(min, max)
+    }
+
+    pub const fn default(mut self, value: f64) -> Param {
+        self.default = Some(ParamDefault::Value(value));
+        self
+    }
+
+    /// Defaults to the value of `directive`.
+    pub const fn default_from(mut self, directive: DirectiveKind) -> Param {
+        self.default = Some(ParamDefault::Directive(directive));
+        self
+    }
+
+    pub const fn range(mut self, min: f64, max: f64) -> Param {
+        self.range = Some((min, max));
+        self
+    }
+
+    pub const fn unit(mut self, unit: &'static str) -> Param {
+        self.unit = unit;
+        self
+    }
+
+    pub const fn choices(mut self, choices: &'static [&'static str]) -> Param {
+        self.choices = choices;
+        self
+    }
+
+    /// The default as a number, reading a directive's value through `setting`.
+    pub fn default_value(&self, setting: impl Fn(DirectiveKind) -> f64) -> Option<f64> {
+        match self.default? {
+            ParamDefault::Value(v) => Some(v),
+            ParamDefault::Directive(d) => Some(setting(d)),
+        }
+    }
+}
