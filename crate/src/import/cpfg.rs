@@ -14,6 +14,7 @@
 //! Anything else is reported and left out.
 
 use super::{Import, Output};
+use crate::vocabulary::{module_named, name_of, Command, DirectiveKind, KeywordKind, Meaning};
 use std::collections::HashMap;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -44,42 +45,27 @@ struct Line {
 const DEGREES: &str = "57.2957795131";
 
 /// L-Py's predefined modules with long names that have a Meristem command.
-const LPY_NAMES: &[(&str, &str)] = &[
-    ("TurnLeft", "+"),
-    ("TurnRight", "-"),
-    ("PitchDown", "&"),
-    ("PitchUp", "^"),
-    ("RollLeft", "\\"),
-    ("RollRight", "/"),
-    ("TurnAround", "|"),
-    ("RollToVert", "@v"),
-    ("SetWidth", "!"),
-    ("SetColor", ";"),
-    ("IncColor", ";"),
-    ("Sphere", "@O"),
-    ("MoveTo", "@M"),
-    ("StartGC", "@Gc"),
-    ("EndGC", "@Ge"),
-    ("Cut", "%"),
-    ("GetPos", "?P"),
-    ("GetHead", "?H"),
-    ("GetUp", "?U"),
-    ("GetLeft", "?L"),
-];
-
-/// Meristem's `@` and `~` names; other ones are kept as modules the turtle ignores.
-const KNOWN_AT: &[&str] = &[
-    "@O",
-    "@M",
-    "@v",
-    "@Tp",
-    "@Ts",
-    "@Gc",
-    "@Ge",
-    "@Switch",
-    "@Pendulum",
-    "@Repeat",
-    "@Prune",
+const LPY_NAMES: &[(&str, Meaning)] = &[
+    ("TurnLeft", Meaning::Turtle(Command::TurnLeft)),
+    ("TurnRight", Meaning::Turtle(Command::TurnRight)),
+    ("PitchDown", Meaning::Turtle(Command::PitchDown)),
+    ("PitchUp", Meaning::Turtle(Command::PitchUp)),
+    ("RollLeft", Meaning::Turtle(Command::RollLeft)),
+    ("RollRight", Meaning::Turtle(Command::RollRight)),
+    ("TurnAround", Meaning::Turtle(Command::TurnAround)),
+    ("RollToVert", Meaning::Turtle(Command::RollToVertical)),
+    ("SetWidth", Meaning::Turtle(Command::Width)),
+    ("SetColor", Meaning::Turtle(Command::SetColor)),
+    ("IncColor", Meaning::Turtle(Command::SetColor)),
+    ("Sphere", Meaning::Turtle(Command::Sphere)),
+    ("MoveTo", Meaning::Turtle(Command::MoveTo)),
+    ("StartGC", Meaning::Turtle(Command::StartSmooth)),
+    ("EndGC", Meaning::Turtle(Command::EndSmooth)),
+    ("Cut", Meaning::Cut),
+    ("GetPos", Meaning::Turtle(Command::QueryPosition)),
+    ("GetHead", Meaning::Turtle(Command::QueryHeading)),
+    ("GetUp", Meaning::Turtle(Command::QueryUp)),
+    ("GetLeft", Meaning::Turtle(Command::QueryLeft)),
 ];
 
 pub(super) fn import(text: &str, flavour: Flavour) -> Import {
@@ -307,8 +293,14 @@ impl Importer {
             }
         }
         if !self.declared.is_empty() {
-            self.out
-                .replace(module_line, format!("#module {}", self.declared.join(" ")));
+            self.out.replace(
+                module_line,
+                format!(
+                    "{} {}",
+                    DirectiveKind::Module.written(),
+                    self.declared.join(" ")
+                ),
+            );
         }
         if !self.axiom {
             self.note(0, "no Axiom: line");
@@ -347,24 +339,35 @@ impl Importer {
             if keyword(&lower, code, "lsystem:").is_some() {
                 return i;
             }
+            // dialect: cpfg's keyword
             if let Some(rest) = keyword(&lower, code, "derivation length:") {
                 match self.expression(rest, &Env::new()) {
-                    Ok(e) => self.out.line(format!("derivation length: {e}"), line.n),
+                    Ok(e) => self.out.line(
+                        format!("{} {e}", KeywordKind::DerivationLength.written()),
+                        line.n,
+                    ),
                     Err(why) => self.note(line.n, format!("derivation length: {why}")),
                 }
                 return i;
             }
+            // dialect: cpfg's keyword
             if let Some(rest) = keyword(&lower, code, "axiom:") {
                 match self.modules(rest, &Env::new(), line.n) {
                     Ok(m) => {
                         self.axiom = true;
-                        self.out.line(format!("axiom: {}", separate(&m)), line.n);
+                        self.out.line(
+                            format!("{} {}", KeywordKind::Axiom.written(), separate(&m)),
+                            line.n,
+                        );
                     }
                     Err(why) => self.note(line.n, format!("the axiom: {why}")),
                 }
                 return i;
             }
-            let lists = [("ignore:", "#ignore"), ("consider:", "#consider")];
+            let lists = [
+                ("ignore:", DirectiveKind::Ignore.written()),
+                ("consider:", DirectiveKind::Consider.written()),
+            ];
             if let Some((kw, directive)) = lists.iter().find(|(k, _)| lower.starts_with(k)) {
                 let rest = &code[kw.len()..];
                 match self.modules(rest, &Env::new(), line.n) {
@@ -379,17 +382,21 @@ impl Importer {
                 }
                 return i;
             }
+            // dialect: cpfg's keyword
             if let Some(rest) = keyword(&lower, code, "maximum depth:") {
-                self.out
-                    .line(format!("maximum depth: {}", rest.trim()), line.n);
+                self.out.line(
+                    format!("{} {}", KeywordKind::MaximumDepth.written(), rest.trim()),
+                    line.n,
+                );
                 return i;
             }
             if let Some(section) = section(&lower) {
                 self.out.line(section, line.n);
                 return i;
             }
-            if lower == "endlsystem" {
-                self.out.line("endlsystem", line.n);
+            let end = KeywordKind::EndLSystem.written();
+            if lower == end {
+                self.out.line(end, line.n);
                 *ended = true;
                 return i;
             }
@@ -463,7 +470,10 @@ impl Importer {
                 return;
             }
             match self.expression(value, &Env::new()) {
-                Ok(e) => self.out.line(format!("#define {name} {e}"), line.n),
+                Ok(e) => self.out.line(
+                    format!("{} {name} {e}", DirectiveKind::Define.written()),
+                    line.n,
+                ),
                 Err(why) => self.note(line.n, format!("#define {name}: {why}")),
             }
             return;
@@ -491,7 +501,10 @@ impl Importer {
             }
             if assignment {
                 match self.expression(value, &Env::new()) {
-                    Ok(e) => self.out.line(format!("#define {name} {e}"), line.n),
+                    Ok(e) => self.out.line(
+                        format!("{} {name} {e}", DirectiveKind::Define.written()),
+                        line.n,
+                    ),
                     Err(why) => {
                         self.note(line.n, format!("{name} = {value}: {why}; not translated"))
                     }
@@ -1057,10 +1070,10 @@ impl Importer {
                 "'(-1)".into()
             };
         }
-        if let Some((_, m)) = LPY_NAMES.iter().find(|(l, _)| *l == name) {
-            return with(m, &params);
+        if let Some(&(_, meaning)) = LPY_NAMES.iter().find(|(l, _)| *l == name) {
+            return with(name_of(meaning), &params);
         }
-        if name.starts_with('@') && !KNOWN_AT.contains(&name) {
+        if name.starts_with('@') && module_named(name).is_none() {
             if !name[1..].chars().all(|c| c.is_ascii_alphabetic()) || name.len() == 1 {
                 self.note_once(
                     name,
@@ -1075,7 +1088,7 @@ impl Importer {
                 format!("{tool}'s {name} is not a Meristem command; kept as a module the turtle ignores"),
             );
         }
-        if name.starts_with('~') && name != "~l" && name != "~p" {
+        if name.starts_with('~') && module_named(name).is_none() {
             self.note_once(
                 name,
                 n,
@@ -1104,20 +1117,22 @@ fn keyword<'a>(lower: &str, code: &'a str, keyword: &str) -> Option<&'a str> {
 }
 
 /// The section a line starts, in Meristem's words.
-fn section(lower: &str) -> Option<&'static str> {
+fn section(lower: &str) -> Option<String> {
     let word = lower.split(':').next().unwrap_or("").trim();
     let rest_ok = |w: &str| {
         let after = lower[w.len()..].trim_start_matches(':').trim();
         after.is_empty() || after == "no warnings"
     };
     match word {
-        "homomorphism" if rest_ok("homomorphism") => Some("homomorphism:"),
-        "interpretation" if rest_ok("interpretation") => Some("homomorphism:"),
-        "decomposition" if rest_ok("decomposition") => Some("decomposition:"),
-        "production" if rest_ok("production") => Some("productions:"),
-        "productions" if rest_ok("productions") => Some("productions:"),
+        // cpfg's and L-Py's section words, and Meristem's section each starts.
+        "homomorphism" if rest_ok("homomorphism") => Some(KeywordKind::Homomorphism),
+        "interpretation" if rest_ok("interpretation") => Some(KeywordKind::Homomorphism),
+        "decomposition" if rest_ok("decomposition") => Some(KeywordKind::Decomposition),
+        "production" if rest_ok("production") => Some(KeywordKind::Productions),
+        "productions" if rest_ok("productions") => Some(KeywordKind::Productions),
         _ => None,
     }
+    .map(KeywordKind::written)
 }
 
 /// `A(t) :` -> `Some("A(t)")` when the line is a Python production's header.

@@ -9,6 +9,7 @@
 //! `Prune`) into Meristem's `@Switch`, `@Pendulum`, `@Repeat`, `@Prune`.
 
 use super::{Import, Output};
+use crate::vocabulary::{name_of, names_of, DirectiveKind, Function, GroupKind, Meaning};
 
 #[derive(Clone, Copy, PartialEq)]
 enum Section {
@@ -20,13 +21,20 @@ enum Section {
 }
 
 /// Green's control modules, by the paper's names and Meristem's, and what Meristem calls them.
-const CONTROL_MODULES: &[(&str, &str)] = &[
-    ("switch", "@Switch"),
-    ("pendulum", "@Pendulum"),
-    ("repetition", "@Repeat"),
-    ("repeat", "@Repeat"),
-    ("prune", "@Prune"),
+const CONTROL_MODULES: &[(&str, Meaning)] = &[
+    ("switch", Meaning::Group(GroupKind::Switch)),
+    ("pendulum", Meaning::Group(GroupKind::Pendulum)),
+    ("repetition", Meaning::Group(GroupKind::Repeat)),
+    ("repeat", Meaning::Group(GroupKind::Repeat)),
+    ("prune", Meaning::Cut),
 ];
+
+/// The `@` spelling of a meaning: Green's control modules and pruning are written as `@` names.
+fn at_name(meaning: Meaning) -> &'static str {
+    names_of(meaning)
+        .find(|n| n.starts_with('@'))
+        .unwrap_or_else(|| name_of(meaning))
+}
 
 pub(super) fn import(text: &str) -> Import {
     let mut out = Output::default();
@@ -97,7 +105,7 @@ pub(super) fn import(text: &str) -> Import {
         out.note(0, "no END. closes the system; read to the end of the text");
     }
 
-    out.line("#iterations 1", 0);
+    out.line(format!("{} 1", DirectiveKind::Iterations.written()), 0);
     out.note(
         0,
         "Green's syntax does not say how many steps to derive (the number is given when the system is derived): #iterations 1 is written, one step as in the paper's worked example",
@@ -161,13 +169,14 @@ fn random_variable(text: &str, n: usize, out: &mut Output) -> Option<(String, St
     let function = distribution[..open].trim().to_ascii_lowercase();
     let arguments = &distribution[open..];
     let (meristem, fits) = match (function.as_str(), continuous) {
-        ("constant", _) => ("constant", true),
-        ("uniform", true) => ("uniform", true),
-        ("uniform", false) => ("uniform_int", true),
-        ("exponential", c) => ("exponential", c),
-        ("normal" | "gaussian", c) => ("normal", c),
-        ("binomial", c) => ("binomial", !c),
-        ("poisson", c) => ("poisson", !c),
+        // Green's distribution names (in lower case) and the function of Meristem's each becomes.
+        ("constant", _) => (Function::Constant, true),
+        ("uniform", true) => (Function::Uniform, true),
+        ("uniform", false) => (Function::UniformInt, true),
+        ("exponential", c) => (Function::Exponential, c),
+        ("normal" | "gaussian", c) => (Function::Normal, c),
+        ("binomial", c) => (Function::Binomial, !c),
+        ("poisson", c) => (Function::Poisson, !c),
         _ => {
             out.note(
                 n,
@@ -176,11 +185,12 @@ fn random_variable(text: &str, n: usize, out: &mut Output) -> Option<(String, St
             return None;
         }
     };
+    let translated = meristem.info().name;
     if !fits {
         out.note(
             n,
             format!(
-                "Green lists {} as a {} distribution; declared {} here, translated as {meristem}",
+                "Green lists {} as a {} distribution; declared {} here, translated as {translated}",
                 function.to_ascii_uppercase(),
                 if continuous { "discrete" } else { "continuous" },
                 kind
@@ -188,11 +198,11 @@ fn random_variable(text: &str, n: usize, out: &mut Output) -> Option<(String, St
         );
     }
     match meristem {
-        "exponential" => out.note(
+        Function::Exponential => out.note(
             n,
             "the paper does not say whether EXPONENTIAL takes a rate or a mean: Meristem's exponential takes the rate",
         ),
-        "normal" => out.note(
+        Function::Normal => out.note(
             n,
             "the paper does not say whether NORMAL takes a standard deviation or a variance: Meristem's normal takes (mean, standard deviation)",
         ),
@@ -200,7 +210,10 @@ fn random_variable(text: &str, n: usize, out: &mut Output) -> Option<(String, St
     }
     Some((
         name.to_string(),
-        format!("#random {name} = {meristem}{arguments}"),
+        format!(
+            "{} {name} = {translated}{arguments}",
+            DirectiveKind::Random.written()
+        ),
     ))
 }
 
@@ -287,7 +300,7 @@ fn modules(text: &str) -> String {
                 .iter()
                 .find(|(green, _)| word.eq_ignore_ascii_case(green))
             {
-                Some((_, meristem)) => out.push_str(meristem),
+                Some(&(_, meaning)) => out.push_str(at_name(meaning)),
                 None => {
                     if had_at {
                         out.push('@');

@@ -21,6 +21,7 @@
 //! turtle commands (widths, `Z`, `~`, `t`).
 
 use super::{number, Import, Output};
+use crate::vocabulary::{DirectiveKind, KeywordKind};
 use std::collections::HashMap;
 
 /// Lparser 2.1's defaults (`static` initialisers of `Lparser2.c`).
@@ -1119,10 +1120,17 @@ impl<'f, 'o> Translator<'f, 'o> {
             depth = depth.ceil();
         }
         self.out.line(
-            format!("#iterations {}", number(depth.min(1e6))),
+            format!(
+                "{} {}",
+                DirectiveKind::Iterations.written(),
+                number(depth.min(1e6))
+            ),
             file.recursion_line,
         );
-        self.out.line(format!("#angle {}", number(file.angle)), 0);
+        self.out.line(
+            format!("{} {}", DirectiveKind::Angle.written(), number(file.angle)),
+            0,
+        );
 
         // The axiom and rules first (they decide what the homomorphism needs).
         let start = self.start.map(Prod::constant);
@@ -1167,7 +1175,11 @@ impl<'f, 'o> Translator<'f, 'o> {
             );
             self.width_line = Some(self.out.len());
             self.out.line(
-                format!("#define width_scale {}", number(WIDTH_SCALE)),
+                format!(
+                    "{} width_scale {}",
+                    DirectiveKind::Define.written(),
+                    number(WIDTH_SCALE)
+                ),
                 file.thickness_line,
             );
         }
@@ -1208,7 +1220,7 @@ impl<'f, 'o> Translator<'f, 'o> {
             homomorphism.push("t(e) -> @Ts(e)G(0)@Ts(0)".to_string());
         }
         if !homomorphism.is_empty() || !leftovers.is_empty() {
-            self.out.line("homomorphism:", 0);
+            self.out.line(KeywordKind::Homomorphism.written(), 0);
             self.out.comment(
                 "How Lparser draws what Meristem's turtle does not: widths, Z (half length), ~ (random turn), t (gravity).",
                 0,
@@ -1226,7 +1238,8 @@ impl<'f, 'o> Translator<'f, 'o> {
                 Some(scale) => self.out.replace(
                     at,
                     format!(
-                        "#define width_scale {} // width units per model unit: Lparser's thicknesses at the file's depth",
+                        "{} width_scale {} // width units per model unit: Lparser's thicknesses at the file's depth",
+                        DirectiveKind::Define.written(),
                         number(scale)
                     ),
                 ),
@@ -1302,9 +1315,13 @@ impl<'f, 'o> Translator<'f, 'o> {
             }
             let c = rgb(table[i]);
             if j == i {
-                self.out.line(format!("#color {i} {c}"), 0);
+                self.out
+                    .line(format!("{} {i} {c}", DirectiveKind::Color.written()), 0);
             } else {
-                self.out.line(format!("#color {i} {j} {c} {c}"), 0);
+                self.out.line(
+                    format!("{} {i} {j} {c} {c}", DirectiveKind::Color.written()),
+                    0,
+                );
             }
             i = j + 1;
         }

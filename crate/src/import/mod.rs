@@ -151,10 +151,12 @@ pub fn detect(text: &str, file_name: &str) -> Option<Dialect> {
                 && !name.starts_with(|c: char| c.is_ascii_digit())
         })
     });
+    // dialect: cpfg's and L-Py's keyword
     if has("axiom:") {
         if has("production:") || has("interpretation:") || has("def ") || python_assignment {
             return Some(Dialect::Lpy);
         }
+        // dialect: cpfg's
         if has("lsystem:") || has("derivation length") || has("#define") {
             return Some(Dialect::Cpfg);
         }

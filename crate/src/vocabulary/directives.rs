@@ -44,6 +44,11 @@ impl DirectiveKind {
     pub fn name(self) -> &'static str {
         self.info().name
     }
+
+    /// As written in a grammar, `#angle`.
+    pub fn written(self) -> String {
+        format!("#{}", self.name())
+    }
 }
 
 impl Serialize for DirectiveKind {

@@ -18,6 +18,16 @@ pub enum KeywordKind {
     EndLSystem,
 }
 
+impl KeywordKind {
+    /// As written in a grammar, with its colon: `maximum depth:` (`endlsystem` has none).
+    pub fn written(self) -> String {
+        let row = KEYWORDS.iter().find(|k| k.kind == self);
+        row.map_or_else(String::new, |k| {
+            format!("{}{}", k.name, if k.colon { ":" } else { "" })
+        })
+    }
+}
+
 /// One row of the keyword table.
 #[derive(Clone, Copy, Debug, Serialize)]
 pub struct KeywordInfo {

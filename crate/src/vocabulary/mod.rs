@@ -28,7 +28,7 @@ pub use expressions::{
 };
 pub use keywords::{keyword_named, KeywordInfo, KeywordKind, KEYWORDS};
 pub use modules::{
-    module_named, name_of, Category, Command, GroupKind, Meaning, ModuleInfo, MODULES,
+    module_named, name_of, names_of, Category, Command, GroupKind, Meaning, ModuleInfo, MODULES,
 };
 pub use params::{Param, ParamDefault, ParamKind};
 

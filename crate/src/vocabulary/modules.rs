@@ -241,6 +241,14 @@ pub fn module_named(name: &str) -> Option<&'static ModuleInfo> {
     MODULES.iter().find(|m| m.name == name)
 }
 
+/// Every name with `meaning`, in table order (`%` and `@Prune` for cut).
+pub fn names_of(meaning: Meaning) -> impl Iterator<Item = &'static str> {
+    MODULES
+        .iter()
+        .filter(move |m| m.meaning == meaning)
+        .map(|m| m.name)
+}
+
 /// The name of the first module with `meaning` (`Meaning::Cut` is `%`; `@Prune` is a synonym).
 pub fn name_of(meaning: Meaning) -> &'static str {
     MODULES
