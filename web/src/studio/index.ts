@@ -22,3 +22,4 @@ export { LibraryDialog, type LibraryElements, type LibraryHost } from './library
 export { openGrammarBytes, decodeText, dialectName, lsysFileName, MAX_FILE_BYTES, type OpenedFile } from './grammar-files';
 export { BranchEditSession, MAX_EDITABLE_SEGMENTS, pathText, staleEditsMessage, type BranchEditingElements, type BranchEditingHost } from './branch-editing';
 export { GrowthPanel, type GrowthEditor } from './growth-panel';
+export { ViewOptions, DEFAULT_VIEW_OPTIONS, type SharedViewOptions, type ViewOption, type ViewOptionValues, type ViewOptionsListener } from './view-options';
