@@ -6,17 +6,13 @@ import {
   coreVersion,
   grammarDirectives,
   initCore,
-  MODEL_FORMATS,
   turtleCommands,
   type BuildOptions,
   type EditsDocument,
-  type ExportOptions,
-  type ModelFormat,
-  type PlantStats,
 } from './core';
 import { createGrammarEditor, type GrammarEditor } from './editor';
 import { decodeState, encodeState, hasSharedState, type SharedState } from './share/codec';
-import { GrammarStore, titleOf, type KeyValueStorage } from './share/storage';
+import { GrammarStore, titleOf } from './share/storage';
 import { PlantView, type ProjectionMode } from './view';
 import {
   BranchEditSession,
@@ -28,14 +24,16 @@ import {
   LivePreview,
   Playback,
   SliderPanel,
-  afterPaint,
   askToReplace,
   attachSplitter,
+  browserStorage,
+  closeLikeAMenu,
+  connectTestHook,
   createBuildWorker,
-  createExportWorker,
-  describeProgress,
+  emptyTestHook,
   fetchExample,
-  fileSize,
+  installDownloads,
+  installDrop,
   installShortcuts,
   LibraryDialog,
   linkWithFragment,
@@ -43,137 +41,19 @@ import {
   Notice,
   openGrammarBytes,
   dialectName,
-  pictureSize,
-  runExport,
   ShareDialog,
   renderShortcutHelp,
   saveFile,
   showStatus,
+  studioElements,
   type GalleryEntry,
   type ShortcutAction,
+  type StudioElements,
+  type StudioTestHook,
 } from './studio';
 
 /** The example shown at start (in public/examples). */
 const INITIAL_EXAMPLE = 'abop-1.24d.lsys';
-
-/** What the page exposes for its end-to-end tests and benchmarks (and nothing else is global). */
-interface StudioTestHook {
-  /** Settles when the first build is on screen (rejects if the studio could not start). */
-  ready: Promise<void>;
-  /** Stats of the plant on screen. */
-  lastStats: PlantStats | null;
-  /** The live preview (last builds, delivery events). */
-  preview?: LivePreview;
-  /** The last frame drawn: the delivered-build counter at the time, and `performance.now()`. */
-  rendered: { generation: number; at: number } | null;
-  /** `performance.now()` at the end of the first frame that drew the last sketch (a big plant as lines). */
-  sketched: number | null;
-  /** The derived string's fingerprint of the plant on screen (share links must reproduce it). */
-  derivedHash?: () => Promise<string>;
-  /** Where the camera in use stands. */
-  cameraPose?: () => { position: number[]; target: number[]; zoom: number };
-  /** Branch editing: the selected branch's handles on the page, its path, and the edits. */
-  branches?: {
-    handlesOnPage: () => { x: number; y: number }[];
-    selectedPath: () => number[] | null;
-    document: () => unknown;
-  };
-}
-
-declare global {
-  interface Window {
-    __meristem?: StudioTestHook;
-  }
-}
-
-function byId<T extends HTMLElement>(id: string, type: new () => T): T {
-  const element = document.getElementById(id);
-  if (!(element instanceof type)) throw new Error(`index.html lacks #${id}`);
-  return element;
-}
-
-/** The page's fixed elements (see index.html). */
-function studioElements() {
-  return {
-    studio: byId('studio', HTMLElement),
-    editor: byId('editor', HTMLElement),
-    viewport: byId('viewport', HTMLElement),
-    status: byId('status', HTMLElement),
-    version: byId('core-version', HTMLElement),
-    iterations: byId('iterations', HTMLInputElement),
-    stepBack: byId('step-back', HTMLButtonElement),
-    stepForward: byId('step-forward', HTMLButtonElement),
-    play: byId('play', HTMLButtonElement),
-    seed: byId('seed', HTMLInputElement),
-    reroll: byId('reroll', HTMLButtonElement),
-    sides: byId('sides', HTMLSelectElement),
-    smoothAll: byId('smooth-all', HTMLInputElement),
-    frame: byId('frame', HTMLButtonElement),
-    projection: byId('projection', HTMLButtonElement),
-    grid: byId('grid', HTMLButtonElement),
-    lighting: byId('lighting', HTMLButtonElement),
-    textures: byId('textures', HTMLButtonElement),
-    staleBadge: byId('stale-badge', HTMLElement),
-    sliders: byId('sliders', HTMLElement),
-    constantsCount: byId('constants-count', HTMLElement),
-    constantsEmpty: byId('constants-empty', HTMLElement),
-    growthRows: byId('growth-rows', HTMLElement),
-    growthCount: byId('growth-count', HTMLElement),
-    splitter: byId('splitter', HTMLElement),
-    openGallery: byId('open-gallery', HTMLButtonElement),
-    gallery: byId('gallery', HTMLDialogElement),
-    galleryList: byId('gallery-list', HTMLElement),
-    confirm: byId('confirm-replace', HTMLDialogElement),
-    confirmExample: byId('confirm-example', HTMLElement),
-    shortcutList: byId('shortcut-list', HTMLElement),
-    stringPanel: byId('string-panel', HTMLElement),
-    explainSummary: byId('explain-summary', HTMLElement),
-    byProduction: byId('by-production', HTMLInputElement),
-    productionLegend: byId('production-legend', HTMLElement),
-    downloads: byId('downloads', HTMLDetailsElement),
-    modelDownloads: byId('model-downloads', HTMLElement),
-    pngWidth: byId('png-width', HTMLInputElement),
-    pngHeight: byId('png-height', HTMLInputElement),
-    downloadPng: byId('download-png', HTMLButtonElement),
-    exportStatus: byId('export-status', HTMLElement),
-    exportProgress: byId('export-progress', HTMLProgressElement),
-    exportCancel: byId('export-cancel', HTMLButtonElement),
-    branchEditing: {
-      toggle: byId('edit-branches', HTMLButtonElement),
-      undo: byId('edit-undo', HTMLButtonElement),
-      redo: byId('edit-redo', HTMLButtonElement),
-      reset: byId('edit-reset', HTMLButtonElement),
-    },
-    fileMenu: byId('file-menu', HTMLDetailsElement),
-    openFile: byId('open-file', HTMLButtonElement),
-    saveFile: byId('save-file', HTMLButtonElement),
-    openLibrary: byId('open-library', HTMLButtonElement),
-    fileInput: byId('file-input', HTMLInputElement),
-    share: byId('share', HTMLButtonElement),
-    notice: {
-      root: byId('notice', HTMLElement),
-      text: byId('notice-text', HTMLElement),
-      list: byId('notice-list', HTMLElement),
-      close: byId('notice-close', HTMLButtonElement),
-    },
-    shareDialog: {
-      dialog: byId('share-dialog', HTMLDialogElement),
-      link: byId('share-link', HTMLInputElement),
-      copy: byId('share-copy', HTMLButtonElement),
-      status: byId('share-status', HTMLElement),
-      size: byId('share-size', HTMLElement),
-    },
-    library: {
-      dialog: byId('library', HTMLDialogElement),
-      name: byId('library-name', HTMLInputElement),
-      save: byId('library-save', HTMLButtonElement),
-      list: byId('library-list', HTMLElement),
-      empty: byId('library-empty', HTMLElement),
-      status: byId('library-status', HTMLElement),
-    },
-  };
-}
-type StudioElements = ReturnType<typeof studioElements>;
 
 /** A whole number typed into `input` (0 or more), or undefined when it is empty or not one. */
 function wholeNumber(input: HTMLInputElement): number | undefined {
@@ -198,10 +78,10 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
 
   const view = new PlantView(els.viewport);
   const options = (): BuildOptions => ({
-    iterations: wholeNumber(els.iterations),
-    seed: wholeNumber(els.seed),
-    sides: Number(els.sides.value),
-    smoothAll: els.smoothAll.checked,
+    iterations: wholeNumber(els.derivation.iterations),
+    seed: wholeNumber(els.derivation.seed),
+    sides: Number(els.viewTools.sides.value),
+    smoothAll: els.viewTools.smoothAll.checked,
   });
   let editor: GrammarEditor | undefined;
   /** Set once autosave is ready (below); the editor calls it on every change. */
@@ -212,7 +92,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   let restoreEdits: (doc: EditsDocument) => void = () => {};
   // The context-sensitivity view: the cursor on a production lights up what it wrote.
   const contexts = new ContextView(
-    { panel: els.stringPanel, summary: els.explainSummary, byProduction: els.byProduction, legend: els.productionLegend },
+    { panel: els.contexts.panel, summary: els.contexts.summary, byProduction: els.viewTools.byProduction, legend: els.contexts.legend },
     view,
     () => editor,
   );
@@ -258,72 +138,63 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   const grammarIterations = () => preview.lastResult?.build.grammarIterations ?? 0;
   const playback = new Playback(
     {
-      shown: () => wholeNumber(els.iterations) ?? grammarIterations(),
+      shown: () => wholeNumber(els.derivation.iterations) ?? grammarIterations(),
       grammarIterations,
       show: (n) => {
-        els.iterations.value = n === undefined ? '' : String(n);
+        els.derivation.iterations.value = n === undefined ? '' : String(n);
         preview.rebuild();
       },
     },
-    { maxIterations: Number(els.iterations.max) },
+    { maxIterations: Number(els.derivation.iterations.max) },
   );
   playback.onPlayingChange((playing) => {
-    els.play.setAttribute('aria-pressed', String(playing));
-    els.play.textContent = playing ? 'Pause' : 'Play';
+    els.derivation.play.setAttribute('aria-pressed', String(playing));
+    els.derivation.play.textContent = playing ? 'Pause' : 'Play';
   });
-  els.iterations.addEventListener('input', () => {
+  els.derivation.iterations.addEventListener('input', () => {
     playback.pause();
     preview.rebuild();
   });
-  els.stepBack.addEventListener('click', () => playback.stepBy(-1));
-  els.stepForward.addEventListener('click', () => playback.stepBy(+1));
-  els.play.addEventListener('click', () => playback.toggle());
+  els.derivation.stepBack.addEventListener('click', () => playback.stepBy(-1));
+  els.derivation.stepForward.addEventListener('click', () => playback.stepBy(+1));
+  els.derivation.play.addEventListener('click', () => playback.toggle());
 
   // Seed.
   const reroll = () => {
-    els.seed.value = String(crypto.getRandomValues(new Uint32Array(1))[0]);
+    els.derivation.seed.value = String(crypto.getRandomValues(new Uint32Array(1))[0]);
     preview.rebuild();
   };
-  els.seed.addEventListener('input', () => preview.rebuild());
-  els.reroll.addEventListener('click', reroll);
+  els.derivation.seed.addEventListener('input', () => preview.rebuild());
+  els.derivation.reroll.addEventListener('click', reroll);
 
   // View options and tools.
-  const showProjection = () => els.projection.setAttribute('aria-pressed', String(view.projection === 'orthographic'));
+  const showProjection = () => els.viewTools.projection.setAttribute('aria-pressed', String(view.projection === 'orthographic'));
   const toggleProjection = () => {
     view.setProjectionMode(view.projection === 'orthographic' ? 'perspective' : 'orthographic');
     showProjection();
   };
-  els.sides.addEventListener('change', () => preview.rebuild());
-  els.smoothAll.addEventListener('change', () => preview.rebuild());
-  els.frame.addEventListener('click', () => view.frame());
-  els.projection.addEventListener('click', toggleProjection);
-  els.grid.addEventListener('click', () => {
-    els.grid.setAttribute('aria-pressed', String(!pressed(els.grid)));
-    view.setGridVisible(pressed(els.grid));
+  els.viewTools.sides.addEventListener('change', () => preview.rebuild());
+  els.viewTools.smoothAll.addEventListener('change', () => preview.rebuild());
+  els.viewTools.frame.addEventListener('click', () => view.frame());
+  els.viewTools.projection.addEventListener('click', toggleProjection);
+  els.viewTools.grid.addEventListener('click', () => {
+    els.viewTools.grid.setAttribute('aria-pressed', String(!pressed(els.viewTools.grid)));
+    view.setGridVisible(pressed(els.viewTools.grid));
   });
-  els.textures.addEventListener('click', () => {
-    els.textures.setAttribute('aria-pressed', String(!pressed(els.textures)));
-    view.setTextures(pressed(els.textures));
+  els.viewTools.textures.addEventListener('click', () => {
+    els.viewTools.textures.setAttribute('aria-pressed', String(!pressed(els.viewTools.textures)));
+    view.setTextures(pressed(els.viewTools.textures));
   });
-  els.lighting.addEventListener('click', () => {
-    els.lighting.setAttribute('aria-pressed', String(!pressed(els.lighting)));
-    view.setLighting(pressed(els.lighting));
+  els.viewTools.lighting.addEventListener('click', () => {
+    els.viewTools.lighting.setAttribute('aria-pressed', String(!pressed(els.viewTools.lighting)));
+    view.setLighting(pressed(els.viewTools.lighting));
   });
 
   preview.onDelivered((result) => {
-    els.iterations.placeholder = String(result.build.grammarIterations);
-    if (result.build.ok) hook.lastStats = result.build.stats;
+    els.derivation.iterations.placeholder = String(result.build.grammarIterations);
     showProjection();
     playback.shownBuild();
   });
-  let sketchPending = false;
-  preview.onSketched(() => (sketchPending = true));
-  view.onRender(() => {
-    hook.rendered = { generation: preview.generation, at: performance.now() };
-    if (sketchPending) hook.sketched = hook.rendered.at;
-    sketchPending = false;
-  });
-
   // Opening another text (an example, a file, a saved grammar, a shared link). The text the user
   // started from, if it was an example left unchanged, is `pristine`; anything else is theirs, and
   // opening something else asks first (and stays undoable in the editor).
@@ -331,13 +202,13 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   let currentFile = start.from === 'example' ? INITIAL_EXAMPLE : '';
   const replaceText = async (text: string, title: string, file = ''): Promise<boolean> => {
     const mine = grammarEditor.text();
-    if (mine !== pristine && mine !== text && !(await askToReplace(els.confirm, els.confirmExample, title))) {
+    if (mine !== pristine && mine !== text && !(await askToReplace(els.confirm.dialog, els.confirm.example, title))) {
       grammarEditor.view.focus();
       return false;
     }
     playback.pause();
-    els.iterations.value = '';
-    els.seed.value = '';
+    els.derivation.iterations.value = '';
+    els.derivation.seed.value = '';
     sliders.reset();
     view.setProjectionMode('auto');
     view.frameNextPlant();
@@ -400,21 +271,21 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     else notice.hide();
   };
   const pickFile = () => {
-    els.fileMenu.open = false;
-    els.fileInput.value = '';
-    els.fileInput.click();
+    els.fileMenu.menu.open = false;
+    els.fileMenu.fileInput.value = '';
+    els.fileMenu.fileInput.click();
   };
-  els.openFile.addEventListener('click', pickFile);
-  els.fileInput.addEventListener('change', () => {
-    const file = els.fileInput.files?.[0];
+  els.fileMenu.openFile.addEventListener('click', pickFile);
+  els.fileMenu.fileInput.addEventListener('change', () => {
+    const file = els.fileMenu.fileInput.files?.[0];
     if (file) void openFile(file).catch((error: unknown) => notice.show('error', `Could not open ${file.name}: ${String(error)}`));
   });
   const saveAsFile = () => {
-    els.fileMenu.open = false;
+    els.fileMenu.menu.open = false;
     const text = grammarEditor.text();
     saveFile(new TextEncoder().encode(text), lsysFileName(titleOf(text)), 'text/plain');
   };
-  els.saveFile.addEventListener('click', saveAsFile);
+  els.fileMenu.saveFile.addEventListener('click', saveAsFile);
   installDrop(els.studio, (file) => void openFile(file).catch((error: unknown) => notice.show('error', `Could not open ${file.name}: ${String(error)}`)));
   window.addEventListener(
     'keydown',
@@ -428,15 +299,15 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     },
     { capture: true },
   );
-  closeLikeAMenu(els.fileMenu);
+  closeLikeAMenu(els.fileMenu.menu);
 
   // My grammars.
   const library = new LibraryDialog(els.library, store, {
     text: () => grammarEditor.text(),
     open: (entry) => void replaceText(entry.text, entry.name, `saved/${entry.id}`).then((done) => done && notice.hide()),
   });
-  els.openLibrary.addEventListener('click', () => {
-    els.fileMenu.open = false;
+  els.fileMenu.openLibrary.addEventListener('click', () => {
+    els.fileMenu.menu.open = false;
     library.open();
   });
 
@@ -444,18 +315,18 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   const shareDialog = new ShareDialog(els.shareDialog);
   const sharedState = (): SharedState => {
     const state: SharedState = { text: grammarEditor.text() };
-    const iterations = wholeNumber(els.iterations);
-    const seed = wholeNumber(els.seed);
+    const iterations = wholeNumber(els.derivation.iterations);
+    const seed = wholeNumber(els.derivation.seed);
     if (iterations !== undefined) state.iterations = iterations;
     if (seed !== undefined) state.seed = seed;
     const values = sliders.values();
     if (Object.keys(values).length > 0) state.sliders = values;
     state.view = {
-      sides: Number(els.sides.value),
-      smoothAll: els.smoothAll.checked,
-      byProduction: els.byProduction.checked,
-      grid: pressed(els.grid),
-      lighting: pressed(els.lighting),
+      sides: Number(els.viewTools.sides.value),
+      smoothAll: els.viewTools.smoothAll.checked,
+      byProduction: els.viewTools.byProduction.checked,
+      grid: pressed(els.viewTools.grid),
+      lighting: pressed(els.viewTools.lighting),
       projection: view.projectionMode,
     };
     state.camera = view.cameraPose();
@@ -486,14 +357,14 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   });
   // The link's view options, before its first build (the camera after it: it needs the plant).
   const applyLinkOptions = (state: SharedState) => {
-    els.iterations.value = state.iterations === undefined ? '' : String(state.iterations);
-    els.seed.value = state.seed === undefined ? '' : String(state.seed);
+    els.derivation.iterations.value = state.iterations === undefined ? '' : String(state.iterations);
+    els.derivation.seed.value = state.seed === undefined ? '' : String(state.seed);
     const v = state.view ?? {};
-    if (v.sides !== undefined && [...els.sides.options].some((o) => o.value === String(v.sides))) els.sides.value = String(v.sides);
-    if (v.smoothAll !== undefined) els.smoothAll.checked = v.smoothAll;
-    if (v.grid !== undefined && v.grid !== pressed(els.grid)) els.grid.click();
-    if (v.lighting !== undefined && v.lighting !== pressed(els.lighting)) els.lighting.click();
-    if (v.byProduction !== undefined && v.byProduction !== els.byProduction.checked) els.byProduction.click();
+    if (v.sides !== undefined && [...els.viewTools.sides.options].some((o) => o.value === String(v.sides))) els.viewTools.sides.value = String(v.sides);
+    if (v.smoothAll !== undefined) els.viewTools.smoothAll.checked = v.smoothAll;
+    if (v.grid !== undefined && v.grid !== pressed(els.viewTools.grid)) els.viewTools.grid.click();
+    if (v.lighting !== undefined && v.lighting !== pressed(els.viewTools.lighting)) els.viewTools.lighting.click();
+    if (v.byProduction !== undefined && v.byProduction !== els.viewTools.byProduction.checked) els.viewTools.byProduction.click();
     if (v.projection !== undefined) view.setProjectionMode(v.projection as ProjectionMode);
     showProjection();
   };
@@ -531,17 +402,11 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   editsForExport = () => branchEdits.document();
   editsForLink = () => branchEdits.document();
   restoreEdits = (doc) => branchEdits.restore(doc);
-  hook.branches = {
-    handlesOnPage: () => branchEdits.handlesOnPage(),
-    selectedPath: () => branchEdits.selectedPath(),
-    document: () => branchEdits.document() ?? null,
-  };
-  hook.derivedHash = () => preview.lastGood?.inspector.derivedHash() ?? Promise.resolve('');
-  hook.cameraPose = () => view.cameraPose();
+  connectTestHook(hook, { preview, view, branchEdits });
 
   // Downloads: the plant on screen (the last good build's text and options), written by the page's
   // own core instance, as a model file or a PNG of the view.
-  installDownloads(els, view, () => preview.lastGood && { source: preview.lastGood.source, options: { ...preview.lastGood.options, edits: editsForExport() } });
+  installDownloads(els.downloads, view, () => preview.lastGood && { source: preview.lastGood.source, options: { ...preview.lastGood.options, edits: editsForExport() } });
 
   // Keyboard: shortcuts anywhere, their help, the splitter.
   const actions: Record<ShortcutAction, () => void> = {
@@ -557,7 +422,6 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   renderShortcutHelp(els.shortcutList);
   attachSplitter(els.splitter, els.studio);
 
-  hook.preview = preview;
   const firstBuild = new Promise<void>((resolve) => {
     const stop = preview.onDelivered(() => {
       stop();
@@ -566,145 +430,6 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   });
   preview.rebuild();
   await firstBuild;
-}
-
-/**
- * The Download menu: a button per model format, written in an export worker with its progress and
- * a Cancel button on the status line (the page stays responsive), and the PNG of the view. One
- * download at a time: the menu is disabled meanwhile.
- */
-function installDownloads(
-  els: StudioElements,
-  view: PlantView,
-  shown: () => { source: string; options: ExportOptions } | undefined,
-): void {
-  const menuButtons = (): HTMLButtonElement[] => [...els.downloads.querySelectorAll('button')];
-  const busy = (on: boolean) => {
-    menuButtons().forEach((b) => (b.disabled = on));
-    els.exportProgress.hidden = !on;
-    els.exportCancel.hidden = !on;
-    if (on) els.exportProgress.removeAttribute('value'); // indeterminate until the first stage
-  };
-  let cancel: (() => void) | undefined;
-  els.exportCancel.addEventListener('click', () => cancel?.());
-  /** Runs one download; `save` returns the status text, or null when cancelled. */
-  const download = async (what: string, save: () => Promise<string | null>): Promise<void> => {
-    if (menuButtons().some((b) => b.disabled)) return;
-    els.downloads.open = false;
-    busy(true);
-    showExportStatus(els.exportStatus, 'busy', `Exporting ${what}…`);
-    try {
-      const done = await save();
-      showExportStatus(els.exportStatus, done === null ? 'cancelled' : 'done', done ?? `Export of ${what} cancelled`);
-    } catch (error) {
-      console.error(`Export of ${what} failed:`, error);
-      showExportStatus(els.exportStatus, 'error', `Export of ${what} failed: ${error instanceof Error ? error.message : String(error)}`);
-    } finally {
-      cancel = undefined;
-      busy(false);
-    }
-  };
-  const downloadModel = (format: ModelFormat, label: string): Promise<void> =>
-    download(label, async () => {
-      const plant = shown();
-      if (!plant) throw new Error('no plant yet');
-      const running = runExport(createExportWorker, { source: plant.source, format, options: plant.options }, (progress) => {
-        els.exportProgress.max = progress.count;
-        els.exportProgress.value = progress.index + 1;
-        showExportStatus(els.exportStatus, 'busy', describeProgress(label, progress));
-      });
-      cancel = running.cancel;
-      const outcome = await running.done;
-      if (outcome.kind === 'cancelled') return null;
-      if (outcome.kind === 'failed') {
-        throw new Error(outcome.crashed ? `the core crashed (a bug): ${outcome.message}` : outcome.message);
-      }
-      saveFile(outcome.file.bytes, outcome.file.fileName, outcome.file.mimeType);
-      return `Saved ${outcome.file.fileName} · ${fileSize(outcome.file.bytes.length)}`;
-    });
-  for (const { format, label, file } of MODEL_FORMATS) {
-    const button = document.createElement('button');
-    button.type = 'button';
-    button.className = 'menu-item';
-    button.dataset.testid = `download-${format}`;
-    button.append(label, Object.assign(document.createElement('span'), { className: 'file-type', textContent: file }));
-    button.addEventListener('click', () => void downloadModel(format, label));
-    els.modelDownloads.append(button);
-  }
-  closeLikeAMenu(els.downloads);
-  els.downloadPng.addEventListener('click', () => {
-    const size = pictureSize(els.pngWidth.value, els.pngHeight.value, view.maxPictureSide());
-    if (!size.ok) {
-      showExportStatus(els.exportStatus, 'error', size.message);
-      return;
-    }
-    // The picture is drawn by the page's WebGL context: it cannot move to a worker (it is one draw).
-    void download(`PNG ${size.width} × ${size.height}`, async () => {
-      await afterPaint(); // the status shows before the draw
-      const png = await view.snapshot(size.width, size.height);
-      saveFile(png, 'plant.png', 'image/png');
-      return `Saved plant.png · ${size.width} × ${size.height} · ${fileSize(png.size)}`;
-    });
-  });
-}
-
-/** A `<details>` menu closes like a menu: on a click elsewhere and on Escape. */
-function closeLikeAMenu(menu: HTMLDetailsElement): void {
-  document.addEventListener('pointerdown', (event) => {
-    if (menu.open && !menu.contains(event.target as Node)) menu.open = false;
-  });
-  menu.addEventListener('keydown', (event) => {
-    if (event.key !== 'Escape' || !menu.open) return;
-    menu.open = false;
-    menu.querySelector('summary')?.focus();
-  });
-}
-
-/** Files dropped anywhere on `target` open with `open` (before the editor can insert them as text). */
-function installDrop(target: HTMLElement, open: (file: File) => void): void {
-  const hasFiles = (event: DragEvent) => event.dataTransfer?.types.includes('Files') ?? false;
-  let depth = 0;
-  const leave = () => {
-    depth = 0;
-    target.classList.remove('drop-target');
-  };
-  target.addEventListener('dragenter', (event) => {
-    if (!hasFiles(event)) return;
-    event.preventDefault();
-    depth++;
-    target.classList.add('drop-target');
-  });
-  target.addEventListener('dragover', (event) => {
-    if (!hasFiles(event)) return;
-    event.preventDefault();
-    event.dataTransfer!.dropEffect = 'copy';
-  });
-  target.addEventListener('dragleave', (event) => {
-    if (!hasFiles(event)) return;
-    depth = Math.max(0, depth - 1);
-    if (depth === 0) leave();
-  });
-  target.addEventListener(
-    'drop',
-    (event) => {
-      if (!hasFiles(event)) return;
-      event.preventDefault();
-      event.stopPropagation();
-      leave();
-      const file = event.dataTransfer?.files[0];
-      if (file) open(file);
-    },
-    { capture: true },
-  );
-}
-
-/** `localStorage`, or nothing where the browser refuses it (private modes, sandboxed frames). */
-function browserStorage(): KeyValueStorage | undefined {
-  try {
-    return window.localStorage;
-  } catch {
-    return undefined;
-  }
 }
 
 /** Where the editor's first text comes from. */
@@ -755,14 +480,8 @@ async function openLink(fragment: string, store: GrammarStore, notice: Notice): 
   return { state: decoded.state };
 }
 
-/** Shows the state of the last download next to the build status. */
-function showExportStatus(element: HTMLElement, state: 'busy' | 'done' | 'cancelled' | 'error', text: string): void {
-  element.textContent = text;
-  element.dataset.state = state;
-}
-
 const els = studioElements();
-const hook: StudioTestHook = { ready: Promise.resolve(), lastStats: null, rendered: null, sketched: null };
+const hook = emptyTestHook();
 hook.ready = startStudio(els, hook);
 hook.ready.catch((error: unknown) => {
   console.error('Meristem could not start:', error);

@@ -23,3 +23,9 @@ export { openGrammarBytes, decodeText, dialectName, lsysFileName, MAX_FILE_BYTES
 export { BranchEditSession, MAX_EDITABLE_SEGMENTS, pathText, staleEditsMessage, type BranchEditingElements, type BranchEditingHost } from './branch-editing';
 export { GrowthPanel, type GrowthEditor } from './growth-panel';
 export { ViewOptions, DEFAULT_VIEW_OPTIONS, type SharedViewOptions, type ViewOption, type ViewOptionValues, type ViewOptionsListener } from './view-options';
+export { byId, studioElements, type StudioElements } from './page-elements';
+export { installDrop } from './file-drop';
+export { closeLikeAMenu } from './menus';
+export { installDownloads, showExportStatus, type DownloadedPlant, type DownloadMenuElements, type ExportState } from './download-menu';
+export { connectTestHook, emptyTestHook, type StudioTestHook, type TestedStudio } from './test-hook';
+export { browserStorage } from './browser-storage';
