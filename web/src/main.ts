@@ -13,16 +13,16 @@ import {
 import { createGrammarEditor, type GrammarEditor } from './editor';
 import { decodeState, encodeState, hasSharedState, type SharedState } from './share/codec';
 import { GrammarStore, titleOf } from './share/storage';
-import { PlantView, type ProjectionMode } from './view';
+import { PlantView } from './view';
 import {
   BranchEditSession,
   BuildClient,
   ContextView,
+  DerivationControls,
   GalleryDialog,
   GalleryThumbnails,
   GrowthPanel,
   LivePreview,
-  Playback,
   SliderPanel,
   askToReplace,
   attachSplitter,
@@ -45,7 +45,10 @@ import {
   renderShortcutHelp,
   saveFile,
   showStatus,
+  sidesChoices,
   studioElements,
+  ViewOptions,
+  ViewTools,
   type GalleryEntry,
   type ShortcutAction,
   type StudioElements,
@@ -54,17 +57,6 @@ import {
 
 /** The example shown at start (in public/examples). */
 const INITIAL_EXAMPLE = 'abop-1.24d.lsys';
-
-/** A whole number typed into `input` (0 or more), or undefined when it is empty or not one. */
-function wholeNumber(input: HTMLInputElement): number | undefined {
-  const value = input.valueAsNumber;
-  return Number.isFinite(value) && value >= 0 ? Math.floor(value) : undefined;
-}
-
-/** A toggle button's state, kept in `aria-pressed`. */
-function pressed(button: HTMLButtonElement): boolean {
-  return button.getAttribute('aria-pressed') === 'true';
-}
 
 async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<void> {
   showStatus(els.status, { state: 'loading', text: 'Loading…' });
@@ -77,11 +69,14 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   els.version.textContent = `core ${coreVersion()}`;
 
   const view = new PlantView(els.viewport);
+  const viewOptions = new ViewOptions(sidesChoices(els.viewTools.sides));
+  viewOptions.applyShared(start.state?.view); // a link's, before anything follows the options
+  const derivation = new DerivationControls(els.derivation);
   const options = (): BuildOptions => ({
-    iterations: wholeNumber(els.derivation.iterations),
-    seed: wholeNumber(els.derivation.seed),
-    sides: Number(els.viewTools.sides.value),
-    smoothAll: els.viewTools.smoothAll.checked,
+    iterations: derivation.iterations(),
+    seed: derivation.seed(),
+    sides: viewOptions.values.sides,
+    smoothAll: viewOptions.values.smoothAll,
   });
   let editor: GrammarEditor | undefined;
   /** Set once autosave is ready (below); the editor calls it on every change. */
@@ -91,11 +86,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   let editsForLink: () => EditsDocument | undefined = () => undefined;
   let restoreEdits: (doc: EditsDocument) => void = () => {};
   // The context-sensitivity view: the cursor on a production lights up what it wrote.
-  const contexts = new ContextView(
-    { panel: els.contexts.panel, summary: els.contexts.summary, byProduction: els.viewTools.byProduction, legend: els.contexts.legend },
-    view,
-    () => editor,
-  );
+  const contexts = new ContextView(els.contexts, view, () => editor, viewOptions);
   const preview = new LivePreview({
     client: new BuildClient(createBuildWorker),
     view,
@@ -134,66 +125,13 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   sliders.update(source);
   growth.update(source);
 
-  // Iterations: the box, step −/+, play / pause.
-  const grammarIterations = () => preview.lastResult?.build.grammarIterations ?? 0;
-  const playback = new Playback(
-    {
-      shown: () => wholeNumber(els.derivation.iterations) ?? grammarIterations(),
-      grammarIterations,
-      show: (n) => {
-        els.derivation.iterations.value = n === undefined ? '' : String(n);
-        preview.rebuild();
-      },
-    },
-    { maxIterations: Number(els.derivation.iterations.max) },
-  );
-  playback.onPlayingChange((playing) => {
-    els.derivation.play.setAttribute('aria-pressed', String(playing));
-    els.derivation.play.textContent = playing ? 'Pause' : 'Play';
-  });
-  els.derivation.iterations.addEventListener('input', () => {
-    playback.pause();
-    preview.rebuild();
-  });
-  els.derivation.stepBack.addEventListener('click', () => playback.stepBy(-1));
-  els.derivation.stepForward.addEventListener('click', () => playback.stepBy(+1));
-  els.derivation.play.addEventListener('click', () => playback.toggle());
-
-  // Seed.
-  const reroll = () => {
-    els.derivation.seed.value = String(crypto.getRandomValues(new Uint32Array(1))[0]);
-    preview.rebuild();
-  };
-  els.derivation.seed.addEventListener('input', () => preview.rebuild());
-  els.derivation.reroll.addEventListener('click', reroll);
-
-  // View options and tools.
-  const showProjection = () => els.viewTools.projection.setAttribute('aria-pressed', String(view.projection === 'orthographic'));
-  const toggleProjection = () => {
-    view.setProjectionMode(view.projection === 'orthographic' ? 'perspective' : 'orthographic');
-    showProjection();
-  };
-  els.viewTools.sides.addEventListener('change', () => preview.rebuild());
-  els.viewTools.smoothAll.addEventListener('change', () => preview.rebuild());
-  els.viewTools.frame.addEventListener('click', () => view.frame());
-  els.viewTools.projection.addEventListener('click', toggleProjection);
-  els.viewTools.grid.addEventListener('click', () => {
-    els.viewTools.grid.setAttribute('aria-pressed', String(!pressed(els.viewTools.grid)));
-    view.setGridVisible(pressed(els.viewTools.grid));
-  });
-  els.viewTools.textures.addEventListener('click', () => {
-    els.viewTools.textures.setAttribute('aria-pressed', String(!pressed(els.viewTools.textures)));
-    view.setTextures(pressed(els.viewTools.textures));
-  });
-  els.viewTools.lighting.addEventListener('click', () => {
-    els.viewTools.lighting.setAttribute('aria-pressed', String(!pressed(els.viewTools.lighting)));
-    view.setLighting(pressed(els.viewTools.lighting));
-  });
-
+  // Options: the derivation's and the view's; a change of either asks for a build (meshing ones).
+  derivation.onChange(() => preview.rebuild());
+  const viewTools = new ViewTools(els.viewTools, viewOptions, view);
+  viewOptions.onChange((_, changed) => (changed.has('sides') || changed.has('smoothAll')) && preview.rebuild());
   preview.onDelivered((result) => {
-    els.derivation.iterations.placeholder = String(result.build.grammarIterations);
-    showProjection();
-    playback.shownBuild();
+    derivation.buildShown(result.build.grammarIterations);
+    viewTools.showProjection();
   });
   // Opening another text (an example, a file, a saved grammar, a shared link). The text the user
   // started from, if it was an example left unchanged, is `pristine`; anything else is theirs, and
@@ -206,11 +144,9 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
       grammarEditor.view.focus();
       return false;
     }
-    playback.pause();
-    els.derivation.iterations.value = '';
-    els.derivation.seed.value = '';
+    derivation.clear();
     sliders.reset();
-    view.setProjectionMode('auto');
+    viewOptions.set({ projection: 'auto' });
     view.frameNextPlant();
     pristine = file.endsWith('.lsys') && currentIsExample(file) ? text : undefined;
     currentFile = file;
@@ -314,21 +250,10 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   // Share: the whole state in the link's fragment.
   const shareDialog = new ShareDialog(els.shareDialog);
   const sharedState = (): SharedState => {
-    const state: SharedState = { text: grammarEditor.text() };
-    const iterations = wholeNumber(els.derivation.iterations);
-    const seed = wholeNumber(els.derivation.seed);
-    if (iterations !== undefined) state.iterations = iterations;
-    if (seed !== undefined) state.seed = seed;
+    const state: SharedState = { text: grammarEditor.text(), ...derivation.toShared() };
     const values = sliders.values();
     if (Object.keys(values).length > 0) state.sliders = values;
-    state.view = {
-      sides: Number(els.viewTools.sides.value),
-      smoothAll: els.viewTools.smoothAll.checked,
-      byProduction: els.viewTools.byProduction.checked,
-      grid: pressed(els.viewTools.grid),
-      lighting: pressed(els.viewTools.lighting),
-      projection: view.projectionMode,
-    };
+    state.view = viewOptions.toShared();
     state.camera = view.cameraPose();
     const edits = editsForLink();
     if (edits) state.edits = edits;
@@ -355,18 +280,10 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
       });
     });
   });
-  // The link's view options, before its first build (the camera after it: it needs the plant).
+  // The link's options, before its first build (the camera after it: it needs the plant).
   const applyLinkOptions = (state: SharedState) => {
-    els.derivation.iterations.value = state.iterations === undefined ? '' : String(state.iterations);
-    els.derivation.seed.value = state.seed === undefined ? '' : String(state.seed);
-    const v = state.view ?? {};
-    if (v.sides !== undefined && [...els.viewTools.sides.options].some((o) => o.value === String(v.sides))) els.viewTools.sides.value = String(v.sides);
-    if (v.smoothAll !== undefined) els.viewTools.smoothAll.checked = v.smoothAll;
-    if (v.grid !== undefined && v.grid !== pressed(els.viewTools.grid)) els.viewTools.grid.click();
-    if (v.lighting !== undefined && v.lighting !== pressed(els.viewTools.lighting)) els.viewTools.lighting.click();
-    if (v.byProduction !== undefined && v.byProduction !== els.viewTools.byProduction.checked) els.viewTools.byProduction.click();
-    if (v.projection !== undefined) view.setProjectionMode(v.projection as ProjectionMode);
-    showProjection();
+    derivation.applyShared(state);
+    viewOptions.applyShared(state.view);
   };
   let cameraToApply: SharedState['camera'] = undefined;
   preview.onDelivered((result) => {
@@ -410,13 +327,13 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
 
   // Keyboard: shortcuts anywhere, their help, the splitter.
   const actions: Record<ShortcutAction, () => void> = {
-    stepBack: () => playback.stepBy(-1),
-    stepForward: () => playback.stepBy(+1),
-    playPause: () => playback.toggle(),
-    reroll,
+    stepBack: () => derivation.playback.stepBy(-1),
+    stepForward: () => derivation.playback.stepBy(+1),
+    playPause: () => derivation.playback.toggle(),
+    reroll: () => derivation.reroll(),
     gallery: openGallery,
     frame: () => view.frame(),
-    projection: toggleProjection,
+    projection: () => viewTools.toggleProjection(),
   };
   installShortcuts(window, (action) => actions[action]());
   renderShortcutHelp(els.shortcutList);
