@@ -1,5 +1,6 @@
 // The studio page's own logic: building in a worker on edit, the status line, the panels and
-// controls around the editor and the view, the context-sensitivity view, downloads.
+// controls around the editor and the view, the context-sensitivity view, downloads, and the page
+// around them (its elements, opening texts and links, autosave, the menus, the test hook).
 export { reportPlant, reportErrors, plural, millis, type StatusReport } from './status';
 export { BuildClient, createBuildWorker, type BuildOutcome, type BuildResult, type WorkerLike } from './worker-client';
 export { transferablesOf, type BuildRequest, type BuildResponse } from './worker-protocol';
@@ -17,7 +18,7 @@ export { ContextView, cssColour, type ContextViewElements } from './context-view
 export { afterPaint, fileSize, pictureSize, saveFile, PICTURE_MAX, PICTURE_MIN, type PictureSize } from './downloads';
 export { createExportWorker, describeProgress, runExport, type ExportOutcome, type ExportRequest, type ExportResponse, type RunningExport } from './export-client';
 export { Notice, type NoticeElements, type NoticeKind } from './notice';
-export { ShareDialog, linkWithFragment, type ShareDialogElements } from './share-dialog';
+export { ShareDialog, installShareButton, linkWithFragment, type ShareDialogElements } from './share-dialog';
 export { LibraryDialog, type LibraryElements, type LibraryHost } from './library-dialog';
 export { openGrammarBytes, decodeText, dialectName, lsysFileName, MAX_FILE_BYTES, type OpenedFile } from './grammar-files';
 export { BranchEditSession, MAX_EDITABLE_SEGMENTS, pathText, staleEditsMessage, type BranchEditingElements, type BranchEditingHost } from './branch-editing';
@@ -31,3 +32,8 @@ export { connectTestHook, emptyTestHook, type StudioTestHook, type TestedStudio 
 export { browserStorage } from './browser-storage';
 export { ViewTools, sidesChoices, type ViewToolElements } from './view-tools';
 export { DerivationControls, type DerivationElements, type SharedDerivation } from './derivation-controls';
+export { Autosave, AUTOSAVE_DELAY } from './autosave';
+export { TextOpening, type OpenedText, type TextOpeningParts } from './text-opening';
+export { LinkState, type LinkStateParts } from './link-state';
+export { openLink, openPastedLinks, startingText, type PastedLinkParts, type StartingText } from './link-opening';
+export { installFileMenu, type FileMenuActions, type FileMenuElements } from './file-menu';
