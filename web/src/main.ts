@@ -124,11 +124,6 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   preview.onDelivered((result) => {
     if (result.build.ok) branchEdits.plantShown();
   });
-  window.addEventListener('keydown', (event) => {
-    // Ctrl+Z over the view undoes branch edits; in the editor and fields it stays theirs.
-    const inText = (event.target as HTMLElement | null)?.closest('input, textarea, select, .cm-editor, dialog');
-    if (!inText && (branchEdits.active || branchEdits.document()) && branchEdits.handleKey(event)) event.preventDefault();
-  });
   connectTestHook(hook, { preview, view, branchEdits });
 
   // Downloads: the plant on screen (the last good build's text and options, with the edits).
