@@ -117,7 +117,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
 
   // Share links: the whole state in the link's fragment; the page's own link, and pasted ones.
   const link = new LinkState({ editor: grammarEditor, derivation, sliders, viewOptions, view, branchEdits, preview });
-  if (start.state) link.restore(start.state);
+  if (start.state) link.restore(start.state); // iterations, seed, edits, camera (its view options apply already)
   installShareButton(els.share, new ShareDialog(els.shareDialog), () => link.capture(), notice);
   openPastedLinks({ store, notice, autosave, opening, link, buildNow: () => preview.rebuild(true) });
 
@@ -143,12 +143,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   renderShortcutHelp(els.shortcutList);
   attachSplitter(els.splitter, els.studio);
 
-  const firstBuild = new Promise<void>((resolve) => {
-    const stop = preview.onDelivered(() => {
-      stop();
-      resolve();
-    });
-  });
+  const firstBuild = preview.nextDelivery();
   preview.rebuild();
   await firstBuild;
 }

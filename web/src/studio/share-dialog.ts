@@ -1,5 +1,6 @@
-// The Share dialog: the link to the studio's state, in a read-only field to copy by hand, and a
-// Copy button that puts it on the clipboard (or says how to copy it where the clipboard is denied).
+// The Share button and its dialog: the link to the studio's state, in a read-only field to copy by
+// hand, and a Copy button that puts it on the clipboard (or says how to copy it where the clipboard
+// is denied).
 import { encodeState, type SharedState } from '../share/codec';
 import type { Notice } from './notice';
 
