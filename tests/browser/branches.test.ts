@@ -98,6 +98,28 @@ describe('editing a branch by its Bézier handles', () => {
     expect(differingShare(after, await canvasPicture(page, 'branches-redone.png'), 40)).toBeLessThan(0.0005);
   });
 
+  it('undoes and redoes with Ctrl+Z and Ctrl+Shift+Z outside the editor and the fields', async () => {
+    const blur = () => page.evaluate(() => (document.activeElement as HTMLElement | null)?.blur());
+    // In Edit mode: both ways.
+    await page.getByTestId('edit-branches').click();
+    await blur();
+    await page.keyboard.press('Control+Z');
+    expect(await editsDocument()).toBeNull();
+    await page.keyboard.press('Control+Shift+Z');
+    expect(await editsDocument()).toEqual(edited);
+    await page.keyboard.press('Escape');
+    expect(await page.getByTestId('edit-branches').getAttribute('aria-pressed')).toBe('false');
+    // Out of Edit mode, while there are edits; in a field, Ctrl+Z is the field's.
+    await page.getByTestId('seed').focus();
+    await page.keyboard.press('Control+Z');
+    expect(await editsDocument()).toEqual(edited);
+    await blur();
+    await page.keyboard.press('Control+Z');
+    expect(await editsDocument()).toBeNull();
+    await page.getByTestId('edit-redo').click();
+    expect(await editsDocument()).toEqual(edited);
+  });
+
   it('keeps the edit across text edits while its branch exists, and says when it no longer applies', async () => {
     // Another tropism: the same branches, bent a little differently; the edit still applies.
     let previous = await generation(page);

@@ -7,7 +7,7 @@ import { readFileSync } from 'node:fs';
 import { deflateRawSync } from 'node:zlib';
 import { chromium, type Browser, type BrowserContext, type Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
-import { MAX_FRAGMENT } from '../../web/src/share/codec';
+import { decodeState, MAX_FRAGMENT, type SharedState } from '../../web/src/share/codec';
 import { editorText, example, generation, nextBuild, openFromGallery, openStudio, savePage, twoFrames } from './studio-page';
 
 let browser: Browser;
@@ -134,6 +134,54 @@ describe('share links', () => {
     await page.getByTestId('notice-close').click();
     expect(await notice.isHidden()).toBe(true);
     await page.close();
+  });
+});
+
+describe('view options in links', () => {
+  const view: NonNullable<SharedState['view']> = { sides: 12, smoothAll: true, byProduction: true, grid: false, lighting: false, projection: 'orthographic' };
+  const fragment = fragmentOf(JSON.stringify({ v: 1, text: '// from a link\n#angle 20\naxiom: F\nF -> F[+F]F[-F]F', iterations: 2, seed: 5, view }));
+
+  /** Checks that the controls show the link's options (and Textures, which links do not hold, as it was). */
+  async function expectLinkOptions(page: Page): Promise<void> {
+    expect(await page.getByTestId('sides').inputValue()).toBe('12');
+    expect(await page.getByTestId('smooth-all').isChecked()).toBe(true);
+    expect(await page.getByTestId('by-production').isChecked()).toBe(true);
+    expect(await page.getByTestId('grid').getAttribute('aria-pressed')).toBe('false');
+    expect(await page.getByTestId('lighting').getAttribute('aria-pressed')).toBe('false');
+    expect(await page.getByTestId('textures').getAttribute('aria-pressed')).toBe('true');
+    expect(await page.getByTestId('projection').getAttribute('aria-pressed')).toBe('true');
+    expect(await page.getByTestId('viewport').getAttribute('data-projection')).toBe('orthographic');
+    expect(await page.getByTestId('iterations').inputValue()).toBe('2');
+    expect(await page.getByTestId('seed').inputValue()).toBe('5');
+    expect(new URL(page.url()).hash).toBe('');
+    // Shared again, the link holds the same options.
+    await page.getByTestId('share').click();
+    await page.getByTestId('share-dialog').waitFor({ state: 'visible' });
+    const decoded = await decodeState(new URL(await page.getByTestId('share-link').inputValue()).hash);
+    await page.keyboard.press('Escape');
+    expect(decoded.ok && decoded.state.view).toEqual(view);
+    expect(decoded.ok && [decoded.state.iterations, decoded.state.seed]).toEqual([2, 5]);
+  }
+
+  it('are shown and kept when the studio opens with a link', async () => {
+    const context = await newContext();
+    const { page, problems } = await openAt(inject('studioUrl') + fragment, context);
+    await expectLinkOptions(page);
+    expect(problems).toEqual([]);
+    await context.close();
+  });
+
+  it('are shown and kept when a link is pasted into the address bar of an open studio', async () => {
+    const context = await newContext();
+    const { page, problems } = await openAt(inject('studioUrl'), context);
+    const before = await generation(page);
+    await page.evaluate((hash) => (location.hash = hash), fragment);
+    expect(await nextBuild(page, before)).toBe('ok');
+    expect(await editorText(page)).toMatch(/^\/\/ from a link/);
+    expect(await page.getByTestId('confirm-replace').isVisible(), 'an untouched example is replaced without asking').toBe(false);
+    await expectLinkOptions(page);
+    expect(problems).toEqual([]);
+    await context.close();
   });
 });
 

@@ -93,6 +93,11 @@ export class BranchEditSession {
       if (!this.editing) return;
       if (event.key === 'Escape' && !document.querySelector('dialog[open]')) this.setMode(false);
     });
+    window.addEventListener('keydown', (event) => {
+      // Ctrl+Z over the view undoes branch edits; in the editor and fields it stays theirs.
+      const inText = (event.target as HTMLElement | null)?.closest('input, textarea, select, .cm-editor, dialog');
+      if (!inText && (this.editing || this.doc.edits.length > 0) && this.handleKey(event)) event.preventDefault();
+    });
     this.showButtons();
   }
 
@@ -318,7 +323,7 @@ export class BranchEditSession {
   }
 
   /** Ctrl+Z / Ctrl+Shift+Z while the view has the focus (the editor keeps its own). */
-  handleKey(event: KeyboardEvent): boolean {
+  private handleKey(event: KeyboardEvent): boolean {
     if (!(event.ctrlKey || event.metaKey) || event.altKey || event.code !== 'KeyZ') return false;
     if (event.shiftKey) this.redo();
     else this.undo();

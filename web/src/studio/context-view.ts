@@ -9,6 +9,7 @@ import type { GrammarEditor } from '../editor';
 import { HIGHLIGHT, PRODUCTION_COLOURS, type Rgb } from '../view/highlight';
 import type { PlantView } from '../view';
 import { StringPanel, type ModuleRole } from './string-panel';
+import type { ViewOptions } from './view-options';
 import { plural } from './status';
 
 /** The page elements of the view. */
@@ -17,8 +18,7 @@ export interface ContextViewElements {
   panel: HTMLElement;
   /** The one-line explanation (counts). */
   summary: HTMLElement;
-  /** The "colour by production" switch and its legend. */
-  byProduction: HTMLInputElement;
+  /** The legend of "colour by production". */
   legend: HTMLElement;
 }
 
@@ -54,13 +54,15 @@ export class ContextView {
     private readonly els: ContextViewElements,
     private readonly view: PlantView,
     private readonly editor: () => GrammarEditor | undefined,
+    /** The view options: `byProduction` paints every module by the production that wrote it. */
+    private readonly viewOptions: ViewOptions,
   ) {
     this.panel = new StringPanel(els.panel, (module) => this.pickModule(module));
     // One definition of the highlight colours: the 3D view's, passed on to the page's CSS.
     for (const [role, rgb] of Object.entries(HIGHLIGHT)) {
       document.documentElement.style.setProperty(`--hl-${role}`, cssColour(rgb));
     }
-    els.byProduction.addEventListener('change', () => this.refresh());
+    viewOptions.onChange((_, changed) => changed.has('byProduction') && this.refresh());
     view.canvas.addEventListener('click', (event) => {
       // A click, not the end of an orbit drag (nor a click that selects a branch to edit).
       if (!this.picking || event.detail === 0 || this.dragged(event)) return;
@@ -143,7 +145,7 @@ export class ContextView {
       mark(explanation.rightContext, 'right');
     }
     if (focus?.kind === 'module' && focus.index < roles.length) roles[focus.index] = ROLE_CODE.selected;
-    const byProduction = this.els.byProduction.checked;
+    const byProduction = this.viewOptions.values.byProduction;
     const productionRgb = (module: number): Rgb | null => {
       const origin = build.origins[module];
       return origin === undefined || origin === NOT_REWRITTEN ? null : PRODUCTION_COLOURS[origin % PRODUCTION_COLOURS.length];

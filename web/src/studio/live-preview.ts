@@ -59,6 +59,16 @@ export class LivePreview {
     return () => this.listeners.delete(listener);
   }
 
+  /** Settles after the next build is delivered (applied to the page). */
+  nextDelivery(): Promise<void> {
+    return new Promise((resolve) => {
+      const stop = this.onDelivered(() => {
+        stop();
+        resolve();
+      });
+    });
+  }
+
   /**
    * Builds the current text with the current options, unless that is what was asked last (or
    * `force`: e.g. an example opened again must be framed again).

@@ -1,5 +1,8 @@
-// The Share dialog: the link to the studio's state, in a read-only field to copy by hand, and a
-// Copy button that puts it on the clipboard (or says how to copy it where the clipboard is denied).
+// The Share button and its dialog: the link to the studio's state, in a read-only field to copy by
+// hand, and a Copy button that puts it on the clipboard (or says how to copy it where the clipboard
+// is denied).
+import { encodeState, type SharedState } from '../share/codec';
+import type { Notice } from './notice';
 
 /** The dialog's elements (see index.html). */
 export interface ShareDialogElements {
@@ -41,6 +44,15 @@ export class ShareDialog {
     status.dataset.state = copied ? 'copied' : 'manual';
     status.textContent = copied ? 'Link copied to the clipboard.' : 'Select the link and copy it (Ctrl+C).';
   }
+}
+
+/** The Share button: the studio's state now, `state()`, as a link in the dialog (a failure in the notice). */
+export function installShareButton(button: HTMLButtonElement, dialog: ShareDialog, state: () => SharedState, notice: Notice): void {
+  button.addEventListener('click', () => {
+    void encodeState(state())
+      .then((fragment) => dialog.open(linkWithFragment(location, fragment)))
+      .catch((error: unknown) => notice.show('error', `Could not make a link: ${String(error)}`));
+  });
 }
 
 /** The studio's address without any fragment, then `fragment`: a link that opens this state. */

@@ -1,0 +1,46 @@
+// Autosave: the editor's text is kept in the browser on every change, shortly after typing stops,
+// and at once when the page goes away; if it cannot be, the notice says so (once, until it can).
+import type { GrammarStore } from '../share/storage';
+import type { Notice } from './notice';
+
+/** How long after the last change the text is saved (ms). */
+export const AUTOSAVE_DELAY = 300;
+
+/** The text's autosave. */
+export class Autosave {
+  private timer: ReturnType<typeof setTimeout> | undefined;
+  /** The text of the last change, while its save waits for the timer. */
+  private pending = '';
+  private failed = false;
+
+  constructor(
+    private readonly store: GrammarStore,
+    private readonly notice: Notice,
+  ) {
+    window.addEventListener('pagehide', () => this.flush());
+    document.addEventListener('visibilitychange', () => document.visibilityState === 'hidden' && this.flush());
+  }
+
+  /** The text changed to `text`: it is saved shortly. */
+  changed(text: string): void {
+    clearTimeout(this.timer);
+    this.pending = text;
+    this.timer = setTimeout(() => this.save(this.pending), AUTOSAVE_DELAY);
+  }
+
+  /** Saves a change still waiting for its timer now (e.g. before a link may replace the text). */
+  flush(): void {
+    if (this.timer !== undefined) this.save(this.pending);
+  }
+
+  /** Saves `text` now, as the work in progress. */
+  save(text: string): void {
+    clearTimeout(this.timer);
+    this.timer = undefined;
+    const ok = this.store.autosave(text);
+    if (!ok && !this.failed) {
+      this.notice.show('error', 'Your text cannot be saved in this browser (its storage is full or switched off): save it as a file or share it.');
+    }
+    this.failed = !ok;
+  }
+}

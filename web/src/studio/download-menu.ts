@@ -1,0 +1,108 @@
+// The Download menu: a button per model format, written in an export worker with its progress and
+// a Cancel button on the status line (the page stays responsive), and the PNG of the view. One
+// download at a time: the menu is disabled meanwhile.
+import { MODEL_FORMATS, type ExportOptions, type ModelFormat } from '../core';
+import type { PlantView } from '../view';
+import { afterPaint, fileSize, pictureSize, saveFile } from './downloads';
+import { createExportWorker, describeProgress, runExport } from './export-client';
+import { closeLikeAMenu } from './menus';
+
+/** The menu and the export's status (see index.html). */
+export interface DownloadMenuElements {
+  menu: HTMLDetailsElement;
+  /** Where the model formats' buttons go. */
+  modelDownloads: HTMLElement;
+  pngWidth: HTMLInputElement;
+  pngHeight: HTMLInputElement;
+  downloadPng: HTMLButtonElement;
+  exportStatus: HTMLElement;
+  exportProgress: HTMLProgressElement;
+  exportCancel: HTMLButtonElement;
+}
+
+/** The plant a model download writes: its text and options (with its branch edits). */
+export interface DownloadedPlant {
+  source: string;
+  options: ExportOptions;
+}
+
+/** The state of the last download. */
+export type ExportState = 'busy' | 'done' | 'cancelled' | 'error';
+
+/** Shows the state of the last download next to the build status. */
+export function showExportStatus(element: HTMLElement, state: ExportState, text: string): void {
+  element.textContent = text;
+  element.dataset.state = state;
+}
+
+/** Fills the Download menu; `shown` is the plant on screen (none before the first good build). */
+export function installDownloads(els: DownloadMenuElements, view: PlantView, shown: () => DownloadedPlant | undefined): void {
+  const menuButtons = (): HTMLButtonElement[] => [...els.menu.querySelectorAll('button')];
+  const busy = (on: boolean) => {
+    menuButtons().forEach((b) => (b.disabled = on));
+    els.exportProgress.hidden = !on;
+    els.exportCancel.hidden = !on;
+    if (on) els.exportProgress.removeAttribute('value'); // indeterminate until the first stage
+  };
+  let cancel: (() => void) | undefined;
+  els.exportCancel.addEventListener('click', () => cancel?.());
+  /** Runs one download; `save` returns the status text, or null when cancelled. */
+  const download = async (what: string, save: () => Promise<string | null>): Promise<void> => {
+    if (menuButtons().some((b) => b.disabled)) return;
+    els.menu.open = false;
+    busy(true);
+    showExportStatus(els.exportStatus, 'busy', `Exporting ${what}…`);
+    try {
+      const done = await save();
+      showExportStatus(els.exportStatus, done === null ? 'cancelled' : 'done', done ?? `Export of ${what} cancelled`);
+    } catch (error) {
+      console.error(`Export of ${what} failed:`, error);
+      showExportStatus(els.exportStatus, 'error', `Export of ${what} failed: ${error instanceof Error ? error.message : String(error)}`);
+    } finally {
+      cancel = undefined;
+      busy(false);
+    }
+  };
+  const downloadModel = (format: ModelFormat, label: string): Promise<void> =>
+    download(label, async () => {
+      const plant = shown();
+      if (!plant) throw new Error('no plant yet');
+      const running = runExport(createExportWorker, { source: plant.source, format, options: plant.options }, (progress) => {
+        els.exportProgress.max = progress.count;
+        els.exportProgress.value = progress.index + 1;
+        showExportStatus(els.exportStatus, 'busy', describeProgress(label, progress));
+      });
+      cancel = running.cancel;
+      const outcome = await running.done;
+      if (outcome.kind === 'cancelled') return null;
+      if (outcome.kind === 'failed') {
+        throw new Error(outcome.crashed ? `the core crashed (a bug): ${outcome.message}` : outcome.message);
+      }
+      saveFile(outcome.file.bytes, outcome.file.fileName, outcome.file.mimeType);
+      return `Saved ${outcome.file.fileName} · ${fileSize(outcome.file.bytes.length)}`;
+    });
+  for (const { format, label, file } of MODEL_FORMATS) {
+    const button = document.createElement('button');
+    button.type = 'button';
+    button.className = 'menu-item';
+    button.dataset.testid = `download-${format}`;
+    button.append(label, Object.assign(document.createElement('span'), { className: 'file-type', textContent: file }));
+    button.addEventListener('click', () => void downloadModel(format, label));
+    els.modelDownloads.append(button);
+  }
+  closeLikeAMenu(els.menu);
+  els.downloadPng.addEventListener('click', () => {
+    const size = pictureSize(els.pngWidth.value, els.pngHeight.value, view.maxPictureSide());
+    if (!size.ok) {
+      showExportStatus(els.exportStatus, 'error', size.message);
+      return;
+    }
+    // The picture is drawn by the page's WebGL context: it cannot move to a worker (it is one draw).
+    void download(`PNG ${size.width} × ${size.height}`, async () => {
+      await afterPaint(); // the status shows before the draw
+      const png = await view.snapshot(size.width, size.height);
+      saveFile(png, 'plant.png', 'image/png');
+      return `Saved plant.png · ${size.width} × ${size.height} · ${fileSize(png.size)}`;
+    });
+  });
+}

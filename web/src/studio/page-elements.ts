@@ -1,0 +1,106 @@
+// The studio page's fixed elements (see index.html), looked up once at the start, grouped by the
+// piece of the studio that uses them.
+
+/** The element `#id`, which must be a `type`; a page without it is a broken build. */
+export function byId<T extends HTMLElement>(id: string, type: new () => T): T {
+  const element = document.getElementById(id);
+  if (!(element instanceof type)) throw new Error(`index.html lacks #${id}`);
+  return element;
+}
+
+/** Looks up the page's fixed elements. */
+export function studioElements() {
+  return {
+    studio: byId('studio', HTMLElement),
+    editor: byId('editor', HTMLElement),
+    viewport: byId('viewport', HTMLElement),
+    status: byId('status', HTMLElement),
+    version: byId('core-version', HTMLElement),
+    derivation: {
+      iterations: byId('iterations', HTMLInputElement),
+      stepBack: byId('step-back', HTMLButtonElement),
+      stepForward: byId('step-forward', HTMLButtonElement),
+      play: byId('play', HTMLButtonElement),
+      seed: byId('seed', HTMLInputElement),
+      reroll: byId('reroll', HTMLButtonElement),
+    },
+    viewTools: {
+      sides: byId('sides', HTMLSelectElement),
+      smoothAll: byId('smooth-all', HTMLInputElement),
+      frame: byId('frame', HTMLButtonElement),
+      projection: byId('projection', HTMLButtonElement),
+      grid: byId('grid', HTMLButtonElement),
+      lighting: byId('lighting', HTMLButtonElement),
+      textures: byId('textures', HTMLButtonElement),
+      byProduction: byId('by-production', HTMLInputElement),
+    },
+    staleBadge: byId('stale-badge', HTMLElement),
+    sliders: byId('sliders', HTMLElement),
+    constantsCount: byId('constants-count', HTMLElement),
+    constantsEmpty: byId('constants-empty', HTMLElement),
+    growthRows: byId('growth-rows', HTMLElement),
+    growthCount: byId('growth-count', HTMLElement),
+    splitter: byId('splitter', HTMLElement),
+    openGallery: byId('open-gallery', HTMLButtonElement),
+    gallery: byId('gallery', HTMLDialogElement),
+    galleryList: byId('gallery-list', HTMLElement),
+    confirm: {
+      dialog: byId('confirm-replace', HTMLDialogElement),
+      example: byId('confirm-example', HTMLElement),
+    },
+    shortcutList: byId('shortcut-list', HTMLElement),
+    contexts: {
+      panel: byId('string-panel', HTMLElement),
+      summary: byId('explain-summary', HTMLElement),
+      legend: byId('production-legend', HTMLElement),
+    },
+    downloads: {
+      menu: byId('downloads', HTMLDetailsElement),
+      modelDownloads: byId('model-downloads', HTMLElement),
+      pngWidth: byId('png-width', HTMLInputElement),
+      pngHeight: byId('png-height', HTMLInputElement),
+      downloadPng: byId('download-png', HTMLButtonElement),
+      exportStatus: byId('export-status', HTMLElement),
+      exportProgress: byId('export-progress', HTMLProgressElement),
+      exportCancel: byId('export-cancel', HTMLButtonElement),
+    },
+    branchEditing: {
+      toggle: byId('edit-branches', HTMLButtonElement),
+      undo: byId('edit-undo', HTMLButtonElement),
+      redo: byId('edit-redo', HTMLButtonElement),
+      reset: byId('edit-reset', HTMLButtonElement),
+    },
+    fileMenu: {
+      menu: byId('file-menu', HTMLDetailsElement),
+      openFile: byId('open-file', HTMLButtonElement),
+      saveFile: byId('save-file', HTMLButtonElement),
+      openLibrary: byId('open-library', HTMLButtonElement),
+      fileInput: byId('file-input', HTMLInputElement),
+    },
+    share: byId('share', HTMLButtonElement),
+    notice: {
+      root: byId('notice', HTMLElement),
+      text: byId('notice-text', HTMLElement),
+      list: byId('notice-list', HTMLElement),
+      close: byId('notice-close', HTMLButtonElement),
+    },
+    shareDialog: {
+      dialog: byId('share-dialog', HTMLDialogElement),
+      link: byId('share-link', HTMLInputElement),
+      copy: byId('share-copy', HTMLButtonElement),
+      status: byId('share-status', HTMLElement),
+      size: byId('share-size', HTMLElement),
+    },
+    library: {
+      dialog: byId('library', HTMLDialogElement),
+      name: byId('library-name', HTMLInputElement),
+      save: byId('library-save', HTMLButtonElement),
+      list: byId('library-list', HTMLElement),
+      empty: byId('library-empty', HTMLElement),
+      status: byId('library-status', HTMLElement),
+    },
+  };
+}
+
+/** The page's fixed elements. */
+export type StudioElements = ReturnType<typeof studioElements>;

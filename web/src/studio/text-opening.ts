@@ -1,0 +1,114 @@
+// Opening another text in the editor: an example, a file, a saved grammar, a shared link. The text
+// the user started from, if it was an example left unchanged, is pristine; anything else is theirs,
+// and opening something else asks first (and stays undoable in the editor).
+import type { StoredGrammar } from '../share/storage';
+import type { GrammarEditor } from '../editor';
+import { askToReplace } from './confirm';
+import { fetchExample } from './gallery';
+import type { GalleryEntry } from './gallery-manifest';
+import { dialectName, openGrammarBytes } from './grammar-files';
+import type { Notice } from './notice';
+
+/** What opening a text reads and changes on the page. */
+export interface TextOpeningParts {
+  editor: GrammarEditor;
+  /** The question asked before replacing the user's text (index.html `#confirm-replace`). */
+  confirm: { dialog: HTMLDialogElement; example: HTMLElement };
+  notice: Notice;
+  /** Forgets what belonged to the text being replaced (its iterations, seed, sliders, projection, framing). */
+  forgetText(): void;
+  /** Builds the new text, even when it is the text on screen (it is framed again). */
+  buildNow(): void;
+}
+
+/** The text the editor holds first, and the file it is (an example's name, or ''). */
+export interface OpenedText {
+  text: string;
+  file: string;
+}
+
+/**
+ * Where a file name says a text came from: a gallery example is its own name (`abop-1.24d.lsys`),
+ * others have a kind in front (`file/NAME`, `saved/ID`).
+ */
+function isExample(file: string): boolean {
+  return file.endsWith('.lsys') && !file.includes('/');
+}
+
+/** Opens texts over the editor's, asking first when the user's text would be lost. */
+export class TextOpening {
+  /** The text on screen if it is an example nobody changed (it may be replaced without asking). */
+  private pristine: string | undefined;
+  private file: string;
+
+  constructor(
+    private readonly parts: TextOpeningParts,
+    first: OpenedText,
+  ) {
+    this.pristine = isExample(first.file) ? first.text : undefined;
+    this.file = first.file;
+  }
+
+  /** The example, file (`file/NAME`) or saved grammar (`saved/ID`) opened last; '' if none. */
+  get currentFile(): string {
+    return this.file;
+  }
+
+  /**
+   * Replaces the editor's text by `text` (titled `title` in the question), unless the user's own
+   * text would be lost and they choose to keep it; settles whether it was replaced.
+   */
+  async replace(text: string, title: string, file = ''): Promise<boolean> {
+    const { editor, confirm } = this.parts;
+    const mine = editor.text();
+    if (mine !== this.pristine && mine !== text && !(await askToReplace(confirm.dialog, confirm.example, title))) {
+      editor.view.focus();
+      return false;
+    }
+    this.parts.forgetText();
+    this.pristine = isExample(file) ? text : undefined;
+    this.file = file;
+    editor.replaceText(text);
+    editor.view.focus();
+    this.parts.buildNow();
+    return true;
+  }
+
+  /** Opens a gallery example. */
+  openExample(entry: GalleryEntry): void {
+    const open = async () => {
+      const text = await fetchExample(entry.file);
+      if (await this.replace(text, entry.title, entry.file)) this.parts.notice.hide();
+    };
+    open().catch((error: unknown) => console.error('Could not open the example:', error));
+  }
+
+  /** Opens a grammar saved in My grammars. */
+  openSaved(entry: StoredGrammar): void {
+    void this.replace(entry.text, entry.name, `saved/${entry.id}`).then((done) => done && this.parts.notice.hide());
+  }
+
+  /** Opens a file: `.lsys` as it is, another dialect imported, its notes in the notice. */
+  openFile(file: File): void {
+    this.readFile(file).catch((error: unknown) => this.parts.notice.show('error', `Could not open ${file.name}: ${String(error)}`));
+  }
+
+  private async readFile(file: File): Promise<void> {
+    const { notice } = this.parts;
+    const opened = openGrammarBytes(file.name, new Uint8Array(await file.arrayBuffer()));
+    if (!opened.ok) {
+      notice.show('error', `Could not open ${file.name}: ${opened.error}.`);
+      return;
+    }
+    if (!(await this.replace(opened.text, file.name, `file/${file.name}`))) return;
+    if (opened.dialect) {
+      const what = `Imported ${file.name} from ${dialectName(opened.dialect)}`;
+      notice.show(
+        'info',
+        opened.notes.length === 0 ? `${what}: everything was translated.` : `${what}. Not translated, or only approximately (${opened.notes.length}):`,
+        opened.notes,
+      );
+    } else if (opened.notes.length > 0) notice.show('info', `Opened ${file.name}.`, opened.notes);
+    else notice.hide();
+  }
+}
