@@ -32,8 +32,9 @@ impl<R: rand::Rng> Rewriter<'_, R> {
     }
 
     /// Rewrites module `i` of `src` `times` times within this step, like `@Repeat` on that one
-    /// module (the growth attributes' `#speed`). The first rewriting sees the whole string's contexts, the later ones
-    /// only the module's own successor; nothing more happens when no production applies.
+    /// module (the growth attributes' `#speed`). The first rewriting sees the whole string's
+    /// contexts, the later ones only the module's own successor; nothing more happens when no
+    /// production applies.
     fn rewrite_repeatedly(
         &mut self,
         rules: &RuleSet,
@@ -43,34 +44,47 @@ impl<R: rand::Rng> Rewriter<'_, R> {
         num_it: u32,
         times: u32,
     ) -> Result<Option<u32>, Diagnostic> {
-        let model = self.model;
         let mut current = LString::default();
-        current.clear(model.parametric);
+        current.clear(self.model.parametric);
         let applied = self.rewrite_module(rules, src, i, &mut current, num_it)?;
         if applied.is_some() && times > 1 {
-            let plan = self.plan.take();
-            let tracker = self.tracker.take();
-            let saved = std::mem::take(&mut self.partner);
-            let mut next = LString::default();
-            for _ in 1..times {
-                if rules.has_contexts() {
-                    context::bracket_partners(model, &current, &mut self.partner);
-                }
-                next.clear(model.parametric);
-                let len = current.len();
-                self.rewrite_range(rules, &current, 0..len, &mut next, num_it)?;
-                std::mem::swap(&mut current, &mut next);
-                if dst.len() + current.len() > model.settings.max_modules {
-                    return Err(limit_error(model, num_it, dst.len() + current.len()));
-                }
-            }
-            self.partner = saved;
-            self.tracker = tracker;
-            self.plan = plan;
+            current = self.derive_apart(rules, current, times - 1, num_it, dst.len())?;
         }
-        for j in 0..current.len() {
-            dst.push(current.ids[j], current.params_of(j));
-        }
+        dst.extend_from(&current);
         Ok(applied)
+    }
+
+    /// Derives `current` `times` more times on its own within step `num_it`: its contexts are its
+    /// own, and the step's tracking and plan do not reach inside (what `@Repeat` and repeated
+    /// rewritings do). `outside` modules already written count against the module limit.
+    pub(super) fn derive_apart(
+        &mut self,
+        rules: &RuleSet,
+        mut current: LString,
+        times: u32,
+        num_it: u32,
+        outside: usize,
+    ) -> Result<LString, Diagnostic> {
+        let model = self.model;
+        let plan = self.plan.take();
+        let tracker = self.tracker.take();
+        let saved = std::mem::take(&mut self.partner);
+        let mut next = LString::default();
+        for _ in 0..times {
+            if rules.has_contexts() {
+                context::bracket_partners(model, &current, &mut self.partner);
+            }
+            next.clear(model.parametric);
+            let len = current.len();
+            self.rewrite_range(rules, &current, 0..len, &mut next, num_it)?;
+            std::mem::swap(&mut current, &mut next);
+            if outside + current.len() > model.settings.max_modules {
+                return Err(limit_error(model, num_it, outside + current.len()));
+            }
+        }
+        self.partner = saved;
+        self.tracker = tracker;
+        self.plan = plan;
+        Ok(current)
     }
 }

@@ -51,6 +51,13 @@ impl LString {
 
     /// Appends one module (in a parametric string).
     #[inline]
+    /// Appends every module of `other`.
+    pub fn extend_from(&mut self, other: &LString) {
+        for j in 0..other.len() {
+            self.push(other.ids[j], other.params_of(j));
+        }
+    }
+
     pub fn push(&mut self, id: ModuleId, params: &[f64]) {
         self.ids.push(id);
         if !self.offsets.is_empty() {

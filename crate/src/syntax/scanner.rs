@@ -102,6 +102,7 @@ impl<'a> ModuleScanner<'a> {
         self.declared.iter().any(|d| d == name)
     }
 
+    /// The modules of `text`, which starts at byte `base` of the file.
     pub(super) fn scan(
         &self,
         text: &str,
@@ -111,110 +112,71 @@ impl<'a> ModuleScanner<'a> {
         let mut modules = Vec::new();
         let mut i = 0;
         while i < text.len() {
-            let rest = &text[i..];
-            let Some(c) = rest.chars().next() else { break };
-            if c.is_whitespace() {
-                i += c.len_utf8();
-                continue;
-            }
-            if c == '(' {
-                // Parameters of the module just read (whitespace before '(' is allowed).
-                let close = matching_paren(rest);
-                let Some(last) = modules
-                    .last_mut()
-                    .filter(|m: &&mut ModuleSyntax| m.params.is_empty())
-                else {
-                    let end = close.map_or(text.len(), |j| i + j + 1);
-                    diagnostics.push(Diagnostic::error(
-                        "E0117",
-                        base + i..base + end,
-                        "a parameter list '(…)' must follow a module name",
-                    ));
-                    i = end;
-                    continue;
-                };
-                let Some(close) = close else {
-                    diagnostics.push(Diagnostic::error(
-                        "E0116",
-                        base + i..base + i + 1,
-                        "'(' is never closed by a ')'",
-                    ));
-                    return modules;
-                };
-                let inner = &rest[1..close];
-                if inner.trim().is_empty() {
-                    diagnostics.push(Diagnostic::error(
-                        "E0118",
-                        base + i..base + i + close + 1,
-                        "an empty parameter list '()': write the module without parentheses",
-                    ));
-                } else {
-                    for (offset, piece) in split_arguments(inner) {
-                        if piece.trim().is_empty() {
-                            let at = base + i + 1 + offset;
-                            diagnostics.push(Diagnostic::error(
-                                "E0119",
-                                at..at + 1,
-                                "an empty parameter between commas",
-                            ));
-                            continue;
-                        }
-                        match parse_expression(piece, base + i + 1 + offset) {
-                            Ok(e) => last.params.push(e),
-                            Err(d) => diagnostics.push(d),
-                        }
-                    }
-                }
-                last.span.end = base + i + close + 1;
-                i += close + 1;
-                continue;
-            }
-            if c == ')' {
+            let Some(c) = text[i..].chars().next() else {
+                break;
+            };
+            let next = if c.is_whitespace() {
+                Some(i + c.len_utf8())
+            } else if c == '(' {
+                parameter_list(text, i, base, &mut modules, diagnostics)
+            } else if c == ')' {
                 diagnostics.push(Diagnostic::error(
                     "E0110",
                     base + i..base + i + 1,
                     "')' has no matching '('",
                 ));
-                i += 1;
-                continue;
+                Some(i + 1)
+            } else {
+                self.module(text, i, base, &mut modules, diagnostics)
+            };
+            match next {
+                Some(n) => i = n,
+                None => break,
             }
-            let len = self.name_length(rest);
-            let name = &rest[..len];
-            let after = &rest[len..];
-            let gap = after.len() - after.trim_start().len();
-            if group_kind(name).is_some() && after[gap..].starts_with('(') {
-                let open = i + len + gap;
-                let Some(close) = matching_paren(&text[open..]) else {
-                    diagnostics.push(Diagnostic::error(
-                        "E0116",
-                        base + open..base + open + 1,
-                        "'(' is never closed by a ')'",
-                    ));
-                    return modules;
-                };
-                let module = self.group(
-                    name,
-                    &text[open + 1..open + close],
-                    base + open + 1,
-                    base + i,
-                    diagnostics,
-                );
-                modules.push(ModuleSyntax {
-                    span: base + i..base + open + close + 1,
-                    ..module
-                });
-                i = open + close + 1;
-                continue;
-            }
+        }
+        modules
+    }
+
+    /// The module whose name starts at `i` (a control module with its members); returns where
+    /// scanning goes on, `None` when the rest cannot be read.
+    fn module(
+        &self,
+        text: &str,
+        i: usize,
+        base: usize,
+        modules: &mut Vec<ModuleSyntax>,
+        diagnostics: &mut Vec<Diagnostic>,
+    ) -> Option<usize> {
+        let rest = &text[i..];
+        let len = self.name_length(rest);
+        let name = &rest[..len];
+        let after = &rest[len..];
+        let gap = after.len() - after.trim_start().len();
+        if group_kind(name).is_none() || !after[gap..].starts_with('(') {
             modules.push(ModuleSyntax {
                 name: name.to_string(),
                 span: base + i..base + i + len,
                 params: Vec::new(),
                 group: None,
             });
-            i += len;
+            return Some(i + len);
         }
-        modules
+        let open = i + len + gap;
+        let Some(close) = matching_paren(&text[open..]) else {
+            diagnostics.push(Diagnostic::error(
+                "E0116",
+                base + open..base + open + 1,
+                "'(' is never closed by a ')'",
+            ));
+            return None;
+        };
+        let inner = &text[open + 1..open + close];
+        let module = self.group(name, inner, base + open + 1, base + i, diagnostics);
+        modules.push(ModuleSyntax {
+            span: base + i..base + open + close + 1,
+            ..module
+        });
+        Some(open + close + 1)
     }
 
     /// The inside of a control module's parentheses: `k, modules` for `@Repeat`, members for the
@@ -323,4 +285,62 @@ impl<'a> ModuleScanner<'a> {
             _ => rest.chars().next().map_or(1, char::len_utf8),
         }
     }
+}
+
+/// The parameters of the module just read, in the parentheses at `i` (whitespace before '(' is
+/// allowed); returns where scanning goes on, `None` when the parenthesis is never closed.
+fn parameter_list(
+    text: &str,
+    i: usize,
+    base: usize,
+    modules: &mut [ModuleSyntax],
+    diagnostics: &mut Vec<Diagnostic>,
+) -> Option<usize> {
+    let rest = &text[i..];
+    let close = matching_paren(rest);
+    let Some(last) = modules.last_mut().filter(|m| m.params.is_empty()) else {
+        let end = close.map_or(text.len(), |j| i + j + 1);
+        diagnostics.push(Diagnostic::error(
+            "E0117",
+            base + i..base + end,
+            "a parameter list '(…)' must follow a module name",
+        ));
+        return Some(end);
+    };
+    let Some(close) = close else {
+        diagnostics.push(Diagnostic::error(
+            "E0116",
+            base + i..base + i + 1,
+            "'(' is never closed by a ')'",
+        ));
+        return None;
+    };
+    let inner = &rest[1..close];
+    let pieces = if inner.trim().is_empty() {
+        diagnostics.push(Diagnostic::error(
+            "E0118",
+            base + i..base + i + close + 1,
+            "an empty parameter list '()': write the module without parentheses",
+        ));
+        Vec::new()
+    } else {
+        split_arguments(inner)
+    };
+    for (offset, piece) in pieces {
+        let at = base + i + 1 + offset;
+        if piece.trim().is_empty() {
+            diagnostics.push(Diagnostic::error(
+                "E0119",
+                at..at + 1,
+                "an empty parameter between commas",
+            ));
+            continue;
+        }
+        match parse_expression(piece, at) {
+            Ok(e) => last.params.push(e),
+            Err(d) => diagnostics.push(d),
+        }
+    }
+    last.span.end = base + i + close + 1;
+    Some(i + close + 1)
 }

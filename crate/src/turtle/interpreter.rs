@@ -133,34 +133,68 @@ impl<'a> Interpreter<'a> {
         params: &[f64],
         index: u32,
     ) -> bool {
-        let t = &mut self.turtle;
-        let angle = || value.unwrap_or(0.0).to_radians();
         match command {
             Command::Forward | Command::ForwardNoVertex | Command::Move | Command::MoveNoVertex => {
                 self.forward(command, value.unwrap_or(0.0), index);
                 return true;
             }
-            Command::TurnLeft => t.yaw(angle()),
-            Command::TurnRight => t.yaw(-angle()),
-            Command::PitchDown => t.pitch(angle()),
-            Command::PitchUp => t.pitch(-angle()),
-            Command::RollRight => t.roll(angle()),
-            Command::RollLeft => t.roll(-angle()),
-            Command::TurnAround => t.yaw(std::f64::consts::PI),
-            Command::RollToVertical => t.roll_to_vertical(),
+            Command::TurnLeft
+            | Command::TurnRight
+            | Command::PitchDown
+            | Command::PitchUp
+            | Command::RollRight
+            | Command::RollLeft
+            | Command::TurnAround
+            | Command::RollToVertical => self.rotate(command, value.unwrap_or(0.0).to_radians()),
             Command::Push => {
-                self.stack.push(*t);
+                self.stack.push(self.turtle);
                 // A branch starts a new axis: its first segment does not continue the parent's.
                 self.turtle.last_segment = None;
             }
             Command::Pop => {
                 if let Some(saved) = self.stack.pop() {
-                    *t = saved;
+                    self.turtle = saved;
                 }
             }
             Command::StartPolygon | Command::PolygonVertex | Command::EndPolygon => {
                 self.polygon(command, index)
             }
+            Command::Width | Command::NextColor | Command::SetColor => {
+                self.appearance(command, first, value)
+            }
+            Command::Leaf | Command::Petal => self.surface(command, value.unwrap_or(1.0), index),
+            Command::Sphere => self.sphere(first, index),
+            Command::MoveTo
+            | Command::TropismVector
+            | Command::TropismStrength
+            | Command::StartSmooth
+            | Command::EndSmooth => self.set(command, first, params),
+            Command::QueryPosition | Command::QueryHeading | Command::QueryUp | Command::QueryLeft => {
+                self.query(command, index)
+            }
+        }
+        false
+    }
+
+    /// The rotations, by `angle` radians where they take one.
+    fn rotate(&mut self, command: Command, angle: f64) {
+        let t = &mut self.turtle;
+        match command {
+            Command::TurnLeft => t.yaw(angle),
+            Command::TurnRight => t.yaw(-angle),
+            Command::PitchDown => t.pitch(angle),
+            Command::PitchUp => t.pitch(-angle),
+            Command::RollRight => t.roll(angle),
+            Command::RollLeft => t.roll(-angle),
+            Command::TurnAround => t.yaw(std::f64::consts::PI),
+            _ => t.roll_to_vertical(),
+        }
+    }
+
+    /// `!`, `'`, `;`: the width and the colour index.
+    fn appearance(&mut self, command: Command, first: Option<f64>, value: Option<f64>) {
+        let t = &mut self.turtle;
+        match command {
             Command::Width => {
                 t.width = match first {
                     Some(w) => w.max(0.0),
@@ -171,21 +205,19 @@ impl<'a> Interpreter<'a> {
                 let step = value.map_or(1, |n| n.round().clamp(-1000.0, 1000.0) as i32);
                 t.color = (t.color as i32 + step).clamp(0, u16::MAX as i32) as u16;
             }
-            Command::SetColor => {
+            _ => {
                 t.color = match first {
                     Some(c) => c.round().clamp(0.0, u16::MAX as f64) as u16,
                     None => t.color.saturating_add(1),
                 }
             }
-            Command::Leaf | Command::Petal => self.surface(command, value.unwrap_or(1.0), index),
-            Command::Sphere => self.skeleton.spheres.push(Sphere {
-                center: t.position,
-                radius: first.unwrap_or(0.0).max(0.0),
-                radius_width: first.is_none().then_some(t.width * 0.5),
-                color: t.color,
-                module: index,
-                anchor: t.anchor,
-            }),
+        }
+    }
+
+    /// `@M`, `@Tp`, `@Ts`, `@Gc`, `@Ge`: the position, this branch's tropism, smoothness.
+    fn set(&mut self, command: Command, first: Option<f64>, params: &[f64]) {
+        let t = &mut self.turtle;
+        match command {
             Command::MoveTo => {
                 if let Some(p) = vector(params) {
                     t.position = p;
@@ -205,13 +237,21 @@ impl<'a> Interpreter<'a> {
                 }
             }
             Command::StartSmooth => t.smooth = true,
-            Command::EndSmooth => t.smooth = false,
-            Command::QueryPosition
-            | Command::QueryHeading
-            | Command::QueryUp
-            | Command::QueryLeft => self.query(command, index),
+            _ => t.smooth = false,
         }
-        false
+    }
+
+    /// `@O`: a sphere of radius `first`, or as wide as the turtle without one.
+    fn sphere(&mut self, first: Option<f64>, index: u32) {
+        let t = &self.turtle;
+        self.skeleton.spheres.push(Sphere {
+            center: t.position,
+            radius: first.unwrap_or(0.0).max(0.0),
+            radius_width: first.is_none().then_some(t.width * 0.5),
+            color: t.color,
+            module: index,
+            anchor: t.anchor,
+        });
     }
 
     /// `F f G g`: move by `length` (scaled by growth outside polygons); `F` and `G` draw a
