@@ -5,6 +5,7 @@
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use meristem::mesh::MeshOptions;
+use meristem::pipeline::PlantEditor;
 use meristem::{build, BuildOptions};
 use std::hint::black_box;
 
@@ -17,13 +18,17 @@ fn bench(c: &mut Criterion) {
     let mut group = c.benchmark_group("pipeline");
     group.sample_size(20);
     let tree = example("game-tree.lsys");
-    let vertices = build(&tree, &BuildOptions::default()).mesh.vertex_count();
+    let vertices = build(&tree, &BuildOptions::default())
+        .plant
+        .mesh
+        .vertex_count();
     group.bench_function(
         format!("game-tree.lsys text to mesh ({vertices} vertices)"),
         |b| {
             b.iter(|| {
                 black_box(
                     build(black_box(&tree), &BuildOptions::default())
+                        .plant
                         .mesh
                         .positions
                         .len(),
@@ -43,13 +48,13 @@ fn bench(c: &mut Criterion) {
             ..BuildOptions::default()
         },
     );
-    let vertices = big.mesh.vertex_count();
+    let vertices = big.plant.mesh.vertex_count();
     group.bench_function(
         format!("ABOP 2.8a n=9 mesh stage ({vertices} vertices)"),
         |b| {
             b.iter(|| {
                 big.remesh(black_box(&ten_sides));
-                black_box(big.mesh.positions.len())
+                black_box(big.plant.mesh.positions.len())
             })
         },
     );
@@ -58,11 +63,8 @@ fn bench(c: &mut Criterion) {
         (vec![0, 0], "a bough, 120 descendants"),
         (vec![0, 2, 0], "a mid-level branch, 39 descendants"),
     ] {
-        let mut tree_build = build(&tree, &BuildOptions::default());
-        let branch = tree_build
-            .branch_tree()
-            .find(&path)
-            .expect("the branch exists");
+        let mut tree_build = PlantEditor::new(build(&tree, &BuildOptions::default()).plant);
+        let branch = tree_build.tree().find(&path).expect("the branch exists");
         let p3 = tree_build.branches()[branch as usize].control[3];
         let mut frame = 0u32;
         group.bench_function(

@@ -100,6 +100,14 @@ impl<'a> LineIndex<'a> {
     }
 }
 
+/// Every diagnostic of `source` with its line and column, in source order.
+pub fn locate_all(source: &str, diagnostics: &[Diagnostic]) -> Vec<LocatedDiagnostic> {
+    let index = LineIndex::new(source);
+    let mut located: Vec<_> = diagnostics.iter().map(|d| index.locate(d)).collect();
+    located.sort_by_key(|d| (d.from, d.to));
+    located
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -9,17 +9,22 @@
 //! meristem export FILE -o OUT.EXT [--format EXT] [--iterations N] [--seed S] [--sides N] [--smooth-all]
 //!                 [--edits EDITS.json]              the model as OUT.wrl, .glb, .pov, .obj (+ .mtl), .iv or .svg
 //! meristem import FILE [--from D] [-o OUT.lsys]      another dialect translated; notes on stderr
+//! meristem help [modules|directives]                the language's modules or directives, from
+//!                                                   the vocabulary the core reads
 //! ```
 //!
 //! `--edits` applies branch edits (the studio's edits document, docs/LANGUAGE.md) to the plant
 //! before its stats or its export; an edit whose branch no longer exists is a warning.
 
-use meristem::branches::parse_edits;
-use meristem::diagnostics::{LocatedDiagnostic, Severity};
+use meristem::branches::{parse_edits, BranchEdit, EditReport};
+use meristem::diagnostics::{locate_all, LocatedDiagnostic, Severity};
 use meristem::export::{self, Format};
 use meristem::import::{self, Dialect};
 use meristem::mesh::MeshOptions;
-use meristem::pipeline::build_with_clock;
+use meristem::pipeline::{
+    self, Build, ExportError, ExportOptions, Hooks, PlantEditor, StageTimings,
+};
+use meristem::vocabulary::{Param, ParamDefault, DIRECTIVES, MODULES};
 use meristem::BuildOptions;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -34,6 +39,7 @@ const USAGE: &str = "usage:
       --sides N (3 to 64, default 6) and --smooth-all are the studio's view options
       --edits EDITS.json: branch edits made in the studio (its edits document), applied first
   meristem import FILE [--from green|lparser|cpfg|lpy] [-o OUT.lsys]
+  meristem help [modules|directives]     the language's modules and directives
   meristem --version";
 
 struct Args {
@@ -95,7 +101,11 @@ fn parse_args() -> Result<Args, lexopt::Error> {
         }
     }
     let verb = verb.ok_or("missing verb")?;
-    let file = file.ok_or("missing FILE")?;
+    let file = match (verb.as_str(), file) {
+        ("help", topic) => topic.unwrap_or_default(),
+        (_, Some(file)) => file,
+        (_, None) => return Err("missing FILE".into()),
+    };
     Ok(Args {
         verb,
         file,
@@ -185,6 +195,13 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
+    if args.verb == "help" {
+        return help(&args.file);
+    }
+    if !["derive", "check", "export", "import"].contains(&args.verb.as_str()) {
+        eprintln!("meristem: unknown verb '{}'\n{USAGE}", args.verb);
+        return ExitCode::from(2);
+    }
     let export_target = if args.verb == "export" {
         match export_target(&args) {
             Ok(target) => Some(target),
@@ -196,126 +213,225 @@ fn main() -> ExitCode {
     } else {
         None
     };
-    let source = match std::fs::read(&args.file) {
-        Ok(bytes) => match String::from_utf8(bytes) {
-            Ok(text) => text,
-            // Files of other tools often predate UTF-8 (Lparser's are DOS text): an import reads
-            // them with each invalid byte replaced, and says so.
-            Err(e) if args.verb == "import" => {
-                eprintln!(
-                    "{}: note: not UTF-8 (invalid byte at offset {}); invalid bytes are read as U+FFFD",
-                    args.file,
-                    e.utf8_error().valid_up_to()
-                );
-                String::from_utf8_lossy(e.as_bytes()).into_owned()
-            }
-            Err(e) => {
-                eprintln!(
-                    "{}: the file is not UTF-8 text (invalid byte at offset {})",
-                    args.file,
-                    e.utf8_error().valid_up_to()
-                );
-                return ExitCode::from(1);
-            }
-        },
-        Err(e) => {
-            eprintln!("meristem: cannot read {}: {e}", args.file);
-            return ExitCode::from(2);
-        }
+    let source = match read_source(&args) {
+        Ok(source) => source,
+        Err(code) => return code,
     };
     if args.verb == "import" {
         return import_file(&args, &source);
     }
+    // The edits document is read (and checked) before building, so a bad one fails fast.
+    let edits = match read_edits(&args) {
+        Ok(edits) => edits,
+        Err(code) => return code,
+    };
     // The core reads no clock; this binary lends it one.
     let start = std::time::Instant::now();
     let mut clock = || start.elapsed().as_secs_f64() * 1000.0;
-    // The edits document is read (and checked) before building, so a bad one fails fast.
-    let edits = match &args.edits {
-        None => None,
-        Some(path) => match std::fs::read_to_string(path) {
-            Ok(text) => match parse_edits(&text) {
-                Ok(edits) => Some(edits),
-                Err(e) => {
-                    eprintln!("{}: {e}", path.display());
-                    return ExitCode::from(2);
-                }
-            },
-            Err(e) => {
-                eprintln!("meristem: cannot read {}: {e}", path.display());
-                return ExitCode::from(2);
-            }
-        },
+    let mut hooks = Hooks {
+        clock: Some(&mut clock),
+        progress: None,
     };
-    let mut result = build_with_clock(
-        &source,
-        &BuildOptions {
-            iterations: args.iterations,
-            seed: args.seed,
-            mesh: MeshOptions::view(args.sides, Some(args.smooth_all)),
-        },
-        &mut clock,
-    );
-    if let (true, Some(t)) = (args.time, result.timings) {
+    let options = BuildOptions {
+        iterations: args.iterations,
+        seed: args.seed,
+        mesh: MeshOptions::view(args.sides, Some(args.smooth_all)),
+    };
+    match export_target {
+        Some((output, format)) => {
+            export_file(&args, &source, options, edits, &output, format, &mut hooks)
+        }
+        None => derive_or_check(&args, &source, &options, edits, &mut hooks),
+    }
+}
+
+/// The grammar file's text. Files of other tools often predate UTF-8 (Lparser's are DOS text): an
+/// import reads them with each invalid byte replaced, and says so.
+fn read_source(args: &Args) -> Result<String, ExitCode> {
+    let bytes = std::fs::read(&args.file).map_err(|e| {
+        eprintln!("meristem: cannot read {}: {e}", args.file);
+        ExitCode::from(2)
+    })?;
+    match String::from_utf8(bytes) {
+        Ok(text) => Ok(text),
+        Err(e) if args.verb == "import" => {
+            eprintln!(
+                "{}: note: not UTF-8 (invalid byte at offset {}); invalid bytes are read as U+FFFD",
+                args.file,
+                e.utf8_error().valid_up_to()
+            );
+            Ok(String::from_utf8_lossy(e.as_bytes()).into_owned())
+        }
+        Err(e) => {
+            eprintln!(
+                "{}: the file is not UTF-8 text (invalid byte at offset {})",
+                args.file,
+                e.utf8_error().valid_up_to()
+            );
+            Err(ExitCode::from(1))
+        }
+    }
+}
+
+/// The edits of `--edits`, checked.
+fn read_edits(args: &Args) -> Result<Option<Vec<BranchEdit>>, ExitCode> {
+    let Some(path) = &args.edits else {
+        return Ok(None);
+    };
+    let text = std::fs::read_to_string(path).map_err(|e| {
+        eprintln!("meristem: cannot read {}: {e}", path.display());
+        ExitCode::from(2)
+    })?;
+    parse_edits(&text).map(Some).map_err(|e| {
+        eprintln!("{}: {e}", path.display());
+        ExitCode::from(2)
+    })
+}
+
+/// `--time`: each stage's time on stderr.
+fn print_timings(args: &Args, timings: Option<StageTimings>) {
+    if let (true, Some(t)) = (args.time, timings) {
         eprintln!(
             "parse+resolve {:.3} ms, derive {:.3} ms, interpret {:.3} ms, mesh {:.3} ms",
             t.parse_resolve, t.derive, t.interpret, t.mesh
         );
     }
-    let diagnostics = result.located_diagnostics(&source);
-    print_diagnostics(&args.file, &diagnostics);
-    if let (Some(edits), Some(path), true) = (&edits, &args.edits, result.ok()) {
-        let report = result.apply_edits(edits);
-        for skipped in &report.not_applied {
-            eprintln!(
-                "{}: warning: the edit of branch {:?} does not apply: {}",
-                path.display(),
-                skipped.path,
-                skipped.reason
-            );
+}
+
+/// Warns about each edit whose branch no longer exists.
+fn print_edit_report(args: &Args, report: &EditReport) {
+    let Some(path) = &args.edits else {
+        return;
+    };
+    for skipped in &report.not_applied {
+        eprintln!(
+            "{}: warning: the edit of branch {:?} does not apply: {}",
+            path.display(),
+            skipped.path,
+            skipped.reason
+        );
+    }
+}
+
+/// `meristem derive` and `meristem check`.
+fn derive_or_check(
+    args: &Args,
+    source: &str,
+    options: &BuildOptions,
+    edits: Option<Vec<BranchEdit>>,
+    hooks: &mut Hooks,
+) -> ExitCode {
+    let mut build = pipeline::build_with(source, options, hooks);
+    print_timings(args, build.timings);
+    print_diagnostics(&args.file, &build.located_diagnostics(source));
+    if !build.ok() {
+        return ExitCode::from(1);
+    }
+    if let Some(edits) = edits {
+        let mut editor = PlantEditor::new(std::mem::take(&mut build.plant));
+        print_edit_report(args, &editor.apply_edits(&edits));
+        build.plant = editor.into_plant();
+    }
+    if args.verb == "derive" {
+        println!("{}", derived_output(args, &build));
+    }
+    ExitCode::SUCCESS
+}
+
+/// What `derive` prints: the growth report, the stats, or the derived string.
+fn derived_output(args: &Args, build: &Build) -> String {
+    if args.growth {
+        // One report per step; `[]` when the grammar sets no growth attribute.
+        build
+            .growth
+            .as_ref()
+            .map_or("[]".into(), |g| g.steps_json())
+    } else if args.stats {
+        build.plant.stats.to_json()
+    } else {
+        build.derived_text()
+    }
+}
+
+/// `meristem export`: the files of the format at `output` (and beside it).
+fn export_file(
+    args: &Args,
+    source: &str,
+    build: BuildOptions,
+    edits: Option<Vec<BranchEdit>>,
+    output: &Path,
+    format: Format,
+    hooks: &mut Hooks,
+) -> ExitCode {
+    // The stem names the MTL file inside the OBJ, so it is the output's own stem.
+    let stem = output
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_else(|| "plant".into());
+    let options = ExportOptions {
+        build,
+        format,
+        stem,
+        edits,
+    };
+    let exported = match pipeline::export(source, &options, hooks) {
+        Ok(exported) => exported,
+        Err(ExportError::Grammar(build)) => {
+            print_timings(args, build.timings);
+            print_diagnostics(&args.file, &build.located_diagnostics(source));
+            return ExitCode::from(1);
+        }
+    };
+    print_timings(args, exported.timings);
+    print_diagnostics(&args.file, &locate_all(source, &exported.diagnostics));
+    if let Some(report) = &exported.edits {
+        print_edit_report(args, report);
+    }
+    match write_export(output, &exported.files) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("meristem: {e}");
+            ExitCode::from(2)
         }
     }
-    match args.verb.as_str() {
-        "check" => {}
-        "derive" if result.ok() => {
-            if args.growth {
-                // One report per step; `[]` when the grammar sets no growth attribute.
-                let steps = result
-                    .growth
-                    .as_ref()
-                    .map_or("[]".into(), |g| g.steps_json());
-                println!("{steps}");
-            } else if args.stats {
-                println!("{}", result.stats.to_json());
-            } else {
-                println!("{}", result.derived_text());
+}
+
+/// `meristem help [modules|directives]`: the usage, or a table of the vocabulary.
+fn help(topic: &str) -> ExitCode {
+    match topic {
+        "" => println!("{USAGE}"),
+        "modules" => {
+            for m in MODULES {
+                println!("{:<10} {:<24} {}", m.name, params_text(m.params), m.doc);
             }
         }
-        "derive" => {}
-        "export" if result.ok() => {
-            if let Some((output, format)) = &export_target {
-                // The stem names the MTL file inside the OBJ, so it is the output's own stem.
-                let stem = output
-                    .file_stem()
-                    .map(|s| s.to_string_lossy().into_owned())
-                    .unwrap_or_else(|| "plant".into());
-                let files = export::export(*format, &result.mesh, &result.skeleton, &stem);
-                if let Err(e) = write_export(output, &files) {
-                    eprintln!("meristem: {e}");
-                    return ExitCode::from(2);
-                }
+        "directives" => {
+            for d in DIRECTIVES {
+                println!("#{:<20} {:<28} {}", d.name, d.forms_text(), d.doc);
             }
         }
-        "export" => {}
         other => {
-            eprintln!("meristem: unknown verb '{other}'\n{USAGE}");
+            eprintln!("meristem: no help on '{other}'; try 'meristem help modules' or 'meristem help directives'");
             return ExitCode::from(2);
         }
     }
-    if result.ok() {
-        ExitCode::SUCCESS
-    } else {
-        ExitCode::from(1)
+    ExitCode::SUCCESS
+}
+
+/// `(l = #step)`, `(x, y, z)`, or nothing.
+fn params_text(params: &[Param]) -> String {
+    if params.is_empty() {
+        return String::new();
     }
+    let each: Vec<String> = params
+        .iter()
+        .map(|p| match p.default {
+            Some(ParamDefault::Value(v)) => format!("{} = {v}", p.name),
+            Some(ParamDefault::Directive(d)) => format!("{} = {}", p.name, d.written()),
+            None => p.name.to_string(),
+        })
+        .collect();
+    format!("({})", each.join(", "))
 }
 
 /// `meristem import`: the translation on stdout (or in `-o OUT`), one `FILE:LINE: note: …` line on

@@ -5,7 +5,7 @@ use glam::DVec3;
 use meristem::branches::{parse_edits, write_edits, BranchEdit};
 use meristem::export::{self, Format};
 use meristem::mesh::MeshBuffers;
-use meristem::pipeline::{build, Build, BuildOptions};
+use meristem::pipeline::{build, BuildOptions, Plant, PlantEditor};
 use std::path::PathBuf;
 use std::process::Command;
 
@@ -17,6 +17,11 @@ fn example_path(name: &str) -> PathBuf {
 
 fn example(name: &str) -> String {
     std::fs::read_to_string(example_path(name)).expect("example exists")
+}
+
+/// Starts editing a plant.
+fn edit(plant: Plant) -> PlantEditor {
+    PlantEditor::new(plant)
 }
 
 /// The size of the plant (its bounding box's diagonal), at least 1.
@@ -31,10 +36,10 @@ fn size(mesh: &MeshBuffers) -> f32 {
 
 /// The build's mesh against a full re-mesh of its (edited) skeleton: positions and normals within
 /// `tolerance` times the plant's size, everything else exactly.
-fn assert_equals_full_remesh(b: &Build, tolerance: f32, what: &str) {
+fn assert_equals_full_remesh(b: &PlantEditor, tolerance: f32, what: &str) {
     let mut full = b.clone();
-    full.remesh(&b.mesh_options.clone());
-    let (m, f) = (&b.mesh, &full.mesh);
+    full.remesh(&b.plant().mesh_options.clone());
+    let (m, f) = (&b.plant().mesh, &full.plant().mesh);
     assert_eq!(m.indices, f.indices, "{what}: indices");
     assert_eq!(m.ranges, f.ranges, "{what}: provenance");
     assert_eq!(m.color_ranges, f.color_ranges, "{what}: colour ranges");
@@ -60,18 +65,18 @@ fn assert_equals_full_remesh(b: &Build, tolerance: f32, what: &str) {
 
 #[test]
 fn the_game_tree_has_a_branch_per_drawn_apex_and_a_drag_rebuilds_a_third_of_it() {
-    let mut b = build(&example("game-tree.lsys"), &BuildOptions::default());
+    let mut b = edit(build(&example("game-tree.lsys"), &BuildOptions::default()).plant);
     let info = b.branches();
     // Every A that drew (1 + 3 + 9 + 27 + 81 + 243) is one branch of 9 segments.
     assert_eq!(info.len(), 364);
     assert!(info.iter().all(|i| i.segments.len() == 9));
     assert_eq!(info[0].path, vec![0]);
     assert_eq!(info[0].children.len(), 3);
-    let bough = b.branch_tree().find(&[0, 0]).unwrap();
-    let below = b.branch_tree().subtree(bough).len();
+    let bough = b.tree().find(&[0, 0]).unwrap();
+    let below = b.tree().subtree(bough).len();
     assert_eq!(below, 1 + 3 + 9 + 27 + 81);
     let p3 = info[bough as usize].control[3];
-    let vertices = b.mesh.vertex_count();
+    let vertices = b.plant().mesh.vertex_count();
     for frame in 0..4 {
         let change = b
             .drag(bough, 3, p3 + DVec3::new(0.05 * frame as f64, -0.1, 0.08))
@@ -84,7 +89,7 @@ fn the_game_tree_has_a_branch_per_drawn_apex_and_a_drag_rebuilds_a_third_of_it()
 }
 
 /// The path of a branch with descendants in the middle of the tree, if any.
-fn middle_branch(b: &mut Build) -> Option<u32> {
+fn middle_branch(b: &PlantEditor) -> Option<u32> {
     let info = b.branches();
     let deepest = info.iter().map(|i| i.path.len()).max()?;
     let with_children: Vec<usize> = (0..info.len())
@@ -110,13 +115,14 @@ fn every_gallery_example_has_a_tree_of_its_segments_and_drags_like_a_full_remesh
     names.sort();
     let mut dragged = 0;
     for name in &names {
-        let mut b = build(&example(name), &BuildOptions::default());
-        if b.skeleton.segments.len() > 30_000 || !b.mesh.lines.is_empty() {
+        let built = build(&example(name), &BuildOptions::default());
+        if built.plant.skeleton.segments.len() > 30_000 || !built.plant.mesh.lines.is_empty() {
             continue; // big plants: the test would take minutes in a debug build
         }
-        let tree = b.branch_tree().clone();
+        let mut b = edit(built.plant);
+        let tree = b.tree().clone();
         // Every segment is in exactly one branch; children attach at their parent's end.
-        let mut seen = vec![0; b.skeleton.segments.len()];
+        let mut seen = vec![0; b.plant().skeleton.segments.len()];
         for branch in &tree.branches {
             for &s in &branch.segments {
                 seen[s as usize] += 1;
@@ -124,32 +130,33 @@ fn every_gallery_example_has_a_tree_of_its_segments_and_drags_like_a_full_remesh
             if let Some(parent) = branch.parent {
                 let last = *tree.branches[parent as usize].segments.last().unwrap();
                 assert_eq!(
-                    b.skeleton.segments[branch.segments[0] as usize].anchor,
+                    b.plant().skeleton.segments[branch.segments[0] as usize].anchor,
                     Some(last),
                     "{name}"
                 );
             }
         }
         assert!(seen.iter().all(|&n| n == 1), "{name}");
-        let Some(branch) = middle_branch(&mut b) else {
+        let Some(branch) = middle_branch(&b) else {
             continue;
         };
         let p3 = b.branches()[branch as usize].control[3];
         let length = tree.branches[branch as usize].length;
-        let change = b
+        let full = b
             .drag(branch, 3, p3 + DVec3::new(0.03, 0.02, 0.05) * length)
-            .unwrap();
+            .unwrap()
+            .full;
         assert_equals_full_remesh(&b, 1e-5, name);
-        dragged += !change.full as u32;
+        dragged += !full as u32;
     }
     assert!(dragged > 20, "only {dragged} examples took a partial drag");
 }
 
 /// Every file of every format: (name, bytes).
-fn exports(b: &Build) -> Vec<(String, Vec<u8>)> {
+fn exports(plant: &Plant) -> Vec<(String, Vec<u8>)> {
     Format::ALL
         .into_iter()
-        .flat_map(|f| export::export(f, &b.mesh, &b.skeleton, "plant"))
+        .flat_map(|f| export::export(f, &plant.mesh, &plant.skeleton, "plant"))
         .map(|f| (f.name, f.bytes))
         .collect()
 }
@@ -172,9 +179,9 @@ fn edits_travel_in_every_export() {
             DVec3::new(0.1, 0.5, -0.2),
         ],
     }];
-    let mut edited = build(LEAFY, &options);
+    let mut edited = edit(build(LEAFY, &options).plant);
     assert_eq!(edited.apply_edits(&edits).applied, vec![vec![0, 1]]);
-    let (before, after) = (exports(&unedited), exports(&edited));
+    let (before, after) = (exports(&unedited.plant), exports(edited.plant()));
     // Seven files, and POV-Ray's two texture images.
     assert_eq!(before.len(), 9);
     for ((name, a), (_, b)) in before.iter().zip(&after) {
@@ -185,11 +192,11 @@ fn edits_travel_in_every_export() {
     }
     // The files are those of a full mesh of the edited skeleton, byte for byte.
     let mut full = edited.clone();
-    full.remesh(&edited.mesh_options.clone());
-    assert_eq!(exports(&full), after);
+    full.remesh(&edited.plant().mesh_options.clone());
+    assert_eq!(exports(full.plant()), after);
     // After drags (partial re-meshes), applying the edits in force writes the same files as a
     // fresh build with them: what the studio's download and the command line do.
-    let bough = edited.branch_tree().find(&[0, 0]).unwrap();
+    let bough = edited.tree().find(&[0, 0]).unwrap();
     let at = edited.branches()[bough as usize].control[2];
     for k in 1..4 {
         edited
@@ -199,10 +206,10 @@ fn edits_travel_in_every_export() {
     let now = edited.edits();
     assert_eq!(now.len(), 2);
     let document = write_edits(&now);
-    let mut fresh = build(LEAFY, &options);
+    let mut fresh = edit(build(LEAFY, &options).plant);
     fresh.apply_edits(&parse_edits(&document).unwrap());
     edited.apply_edits(&now);
-    assert_eq!(exports(&fresh), exports(&edited));
+    assert_eq!(exports(fresh.plant()), exports(edited.plant()));
 }
 
 fn meristem(args: &[&str]) -> (i32, String, String) {
@@ -247,23 +254,30 @@ fn the_command_line_applies_an_edits_file() {
             "{file}: warning: the edit of branch [0, 9] does not apply: no branch at this path: branch [0] has 3 child branches\n"
         )
     );
-    let mut b = build(
+    let built = build(
         LEAFY,
         &BuildOptions {
             iterations: Some(3),
             ..BuildOptions::default()
         },
     );
-    let unedited = export::export(Format::Glb, &b.mesh, &b.skeleton, "plant");
+    let unedited = export::export(
+        Format::Glb,
+        &built.plant.mesh,
+        &built.plant.skeleton,
+        "plant",
+    );
+    let mut b = edit(built.plant);
     b.apply_edits(&edits);
-    let expected = export::export(Format::Glb, &b.mesh, &b.skeleton, "plant");
+    let plant = b.plant();
+    let expected = export::export(Format::Glb, &plant.mesh, &plant.skeleton, "plant");
     let written = std::fs::read(out).unwrap();
     assert_eq!(written, expected[0].bytes);
     assert_ne!(written, unedited[0].bytes);
     // Stats see the edited plant; a malformed document fails before building.
     let (code, stats, _) = meristem(&["derive", grammar, "-n", "3", "--stats", "--edits", file]);
     assert_eq!(code, 0);
-    assert_eq!(stats.trim(), b.stats.to_json());
+    assert_eq!(stats.trim(), b.plant().stats.to_json());
     let bad = dir.join("bad.json");
     std::fs::write(&bad, "{\"version\": 7, \"edits\": []}").unwrap();
     let bad = bad.to_str().unwrap();

@@ -14,7 +14,9 @@ fn explain(source: &str, n: u32, p: u32) -> meristem::pipeline::Explained {
         },
     );
     assert!(b.ok(), "{:?}", b.diagnostics);
-    b.explain(p)
+    b.inspector()
+        .expect("model")
+        .explain(p)
         .expect("a step was taken")
         .expect("no runtime error")
 }
@@ -89,7 +91,7 @@ fn stochastic_choices_are_the_ones_the_derivation_made() {
         },
     );
     let text = b.derived_text();
-    let a = b.explain(0).unwrap().unwrap();
+    let a = b.inspector().expect("model").explain(0).unwrap().unwrap();
     let expected: Vec<u32> = text
         .char_indices()
         .filter(|(_, c)| *c == 'A')
@@ -104,7 +106,7 @@ fn stochastic_choices_are_the_ones_the_derivation_made() {
 #[test]
 fn nothing_to_explain_before_the_first_step() {
     let b = build("axiom: A\nA -> B", &BuildOptions::default());
-    assert!(b.explain(0).is_none());
+    assert!(b.inspector().expect("model").explain(0).is_none());
 }
 
 #[test]
@@ -120,7 +122,12 @@ fn a_module_is_explained_by_the_one_rewriting_that_made_it() {
     );
     assert_eq!(b.derived_text(), "A(1)C(1)DA(2)C(2)D");
     // C(2) at 4 came from the B at 3, whose left context is A(2) at 2 (now at 3).
-    let e = b.explain_module(4).unwrap().unwrap();
+    let e = b
+        .inspector()
+        .expect("model")
+        .explain_module(4)
+        .unwrap()
+        .unwrap();
     assert_eq!(e.explanation.production, 0);
     assert_eq!(e.explanation.rewritten, [3]);
     assert_eq!(e.explanation.left, [2]);
@@ -129,7 +136,7 @@ fn a_module_is_explained_by_the_one_rewriting_that_made_it() {
     // The counts still cover the whole string.
     assert_eq!(e.explanation.context_matched, 2);
     // A copied module has nothing to explain.
-    assert!(b.explain_module(0).is_none());
+    assert!(b.inspector().expect("model").explain_module(0).is_none());
 }
 
 #[test]
@@ -142,7 +149,9 @@ fn the_fingerprint_tells_derivations_apart_and_repeats_for_equal_ones() {
                 ..BuildOptions::default()
             },
         );
-        b.string.fingerprint(&b.model.as_ref().unwrap().alphabet)
+        b.derivation
+            .string
+            .fingerprint(&b.model.as_ref().unwrap().alphabet)
     };
     let stochastic = "#iterations 4\naxiom: F\nF -> (1) F[+F]F\nF -> (1) F[-F]F";
     assert_eq!(run(stochastic, 5), run(stochastic, 5));

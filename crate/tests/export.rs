@@ -44,7 +44,7 @@ fn exports(path: &Path) -> Vec<export::ExportedFile> {
     assert!(result.ok(), "{}: {:?}", path.display(), result.diagnostics);
     Format::ALL
         .into_iter()
-        .flat_map(|format| export::export(format, &result.mesh, &result.skeleton, stem))
+        .flat_map(|format| export::export(format, &result.plant.mesh, &result.plant.skeleton, stem))
         .collect()
 }
 

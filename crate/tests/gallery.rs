@@ -50,16 +50,16 @@ fn every_example_builds_cleanly_with_a_valid_mesh() {
             result.diagnostics
         );
         assert!(
-            result.stats.segments > 0,
+            result.plant.stats.segments > 0,
             "{}: draws nothing",
             path.display()
         );
         assert!(
-            result.stats.triangles > 0,
+            result.plant.stats.triangles > 0,
             "{}: no triangles",
             path.display()
         );
-        if let Err(e) = result.mesh.check() {
+        if let Err(e) = result.plant.mesh.check() {
             panic!("{}: {e}", path.display());
         }
     }
@@ -75,8 +75,8 @@ fn abop_1_24d_has_the_known_size() {
     // Each X makes three X per step, so n = 7 leaves 3^7 of them.
     let derived = result.derived_text();
     assert_eq!(derived.matches('X').count(), 3usize.pow(7));
-    assert_eq!(result.stats.modules, derived.chars().count());
-    assert_eq!(result.stats.segments, derived.matches('F').count());
+    assert_eq!(result.plant.stats.modules, derived.chars().count());
+    assert_eq!(result.plant.stats.segments, derived.matches('F').count());
     let ten = build(
         &text,
         &BuildOptions {
@@ -85,7 +85,7 @@ fn abop_1_24d_has_the_known_size() {
         },
     );
     assert_eq!(
-        ten.stats.modules, 381_767,
+        ten.plant.stats.modules, 381_767,
         "the issue's reference size of 1.24d at n = 10"
     );
 }
@@ -104,11 +104,14 @@ fn pruning_keeps_every_segment_end_inside_its_volume() {
         &example("green-prune-ellipsoid.lsys"),
         &BuildOptions::default(),
     );
-    assert!(ellipsoid.skeleton.segments.len() > 100, "the tree grows");
+    assert!(
+        ellipsoid.plant.skeleton.segments.len() > 100,
+        "the tree grows"
+    );
     let inside = |p: glam::DVec3| {
         p.x * p.x / 16.0 + (p.y - 5.5).powi(2) / 30.25 + p.z * p.z / 16.0 <= 1.0 + 1e-9
     };
-    for s in &ellipsoid.skeleton.segments {
+    for s in &ellipsoid.plant.skeleton.segments {
         assert!(inside(s.end), "segment end {} outside the ellipsoid", s.end);
     }
     let unpruned = build(
@@ -120,13 +123,18 @@ fn pruning_keeps_every_segment_end_inside_its_volume() {
         &BuildOptions::default(),
     );
     assert!(
-        unpruned.skeleton.segments.iter().any(|s| !inside(s.end)),
+        unpruned
+            .plant
+            .skeleton
+            .segments
+            .iter()
+            .any(|s| !inside(s.end)),
         "without the cut the tree grows out"
     );
 
     let boxed = build(&example("green-prune-box.lsys"), &BuildOptions::default());
-    assert!(boxed.skeleton.segments.len() > 100);
-    for s in &boxed.skeleton.segments {
+    assert!(boxed.plant.skeleton.segments.len() > 100);
+    for s in &boxed.plant.skeleton.segments {
         let p = s.end;
         assert!(
             p.x.abs() <= 3.0 + 1e-9
@@ -141,14 +149,14 @@ fn pruning_keeps_every_segment_end_inside_its_volume() {
 fn the_bush_of_fig_1_25_shows_its_leaves() {
     let bush = build(&example("abop-1.25-bush.lsys"), &BuildOptions::default());
     assert!(
-        bush.skeleton.polygons.len() > 100,
+        bush.plant.skeleton.polygons.len() > 100,
         "{} leaves",
-        bush.skeleton.polygons.len()
+        bush.plant.skeleton.polygons.len()
     );
     // Each leaf is two-sided: its triangles come twice, and they are coloured as leaves.
-    let leaf_triangles = bush.mesh.ranges.chunks_exact(2).count();
-    assert!(leaf_triangles > bush.skeleton.polygons.len());
-    assert_eq!(bush.mesh.check(), Ok(()));
+    let leaf_triangles = bush.plant.mesh.ranges.chunks_exact(2).count();
+    assert!(leaf_triangles > bush.plant.skeleton.polygons.len());
+    assert_eq!(bush.plant.mesh.check(), Ok(()));
 }
 
 #[test]
@@ -159,11 +167,11 @@ fn smooth_branches_make_more_rings_than_joints() {
         &BuildOptions::default(),
     );
     assert_eq!(
-        smooth.skeleton.segments.len(),
-        sharp.skeleton.segments.len()
+        smooth.plant.skeleton.segments.len(),
+        sharp.plant.skeleton.segments.len()
     );
-    assert!(smooth.stats.vertices > 2 * sharp.stats.vertices);
-    assert_eq!(smooth.mesh.check(), Ok(()));
+    assert!(smooth.plant.stats.vertices > 2 * sharp.plant.stats.vertices);
+    assert_eq!(smooth.plant.mesh.check(), Ok(()));
 }
 
 /// Green's gallery: each Random L-system grows a different individual of the same species per seed.
@@ -185,14 +193,17 @@ fn greens_random_l_systems_grow_individuals_of_one_species() {
         build("green-ternary-tree.lsys", 1),
         build("green-ternary-tree.lsys", 2),
     );
-    assert_eq!(a.skeleton.segments.len(), 365);
-    assert_eq!(a.skeleton.segments.len(), b.skeleton.segments.len());
-    assert_eq!(a.skeleton.surfaces.len(), 3 * 729);
+    assert_eq!(a.plant.skeleton.segments.len(), 365);
+    assert_eq!(
+        a.plant.skeleton.segments.len(),
+        b.plant.skeleton.segments.len()
+    );
+    assert_eq!(a.plant.skeleton.surfaces.len(), 3 * 729);
     assert_ne!(a.derived_text(), b.derived_text());
     // The palm: @Repeat draws the trunk's pace once per palm, so heights differ between seeds; the
     // crown always has its eight fronds.
     let heights: Vec<f64> = (1..=6)
-        .map(|seed| build("green-palm-tree.lsys", seed).stats.bounds[1][1])
+        .map(|seed| build("green-palm-tree.lsys", seed).plant.stats.bounds[1][1])
         .collect();
     assert!(
         heights.iter().any(|&h| (h - heights[0]).abs() > 1.0),
@@ -203,8 +214,8 @@ fn greens_random_l_systems_grow_individuals_of_one_species() {
     // The coral: a rounded tip on every branch, and its four stems (in a Switch) of unequal ages.
     let coral = build("green-coral.lsys", 1);
     assert_eq!(
-        coral.skeleton.spheres.len() + 1,
-        coral.skeleton.segments.len()
+        coral.plant.skeleton.spheres.len() + 1,
+        coral.plant.skeleton.segments.len()
     );
     let tips = |stem: &str| stem.matches("A(").count();
     let text = coral.derived_text();

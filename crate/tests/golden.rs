@@ -49,7 +49,7 @@ fn render(source: &str) -> String {
     )
     .ok();
     out.push_str("== turtle\n");
-    for s in result.skeleton.segments.iter().take(40) {
+    for s in result.plant.skeleton.segments.iter().take(40) {
         writeln!(
             out,
             "#{} ({:.6}, {:.6}, {:.6}) -> ({:.6}, {:.6}, {:.6}) w{} c{}",
@@ -58,7 +58,7 @@ fn render(source: &str) -> String {
         .ok();
     }
     let v = |p: glam::DVec3| format!("({:.6}, {:.6}, {:.6})", p.x, p.y, p.z);
-    for p in result.skeleton.polygons.iter().take(10) {
+    for p in result.plant.skeleton.polygons.iter().take(10) {
         let points: Vec<String> = p.points.iter().map(|&q| v(q)).collect();
         writeln!(
             out,
@@ -69,7 +69,7 @@ fn render(source: &str) -> String {
         )
         .ok();
     }
-    for s in result.skeleton.surfaces.iter().take(10) {
+    for s in result.plant.skeleton.surfaces.iter().take(10) {
         writeln!(
             out,
             "surface #{} {:?} at {} h {} l {} scale {} c{}",
@@ -83,7 +83,7 @@ fn render(source: &str) -> String {
         )
         .ok();
     }
-    for s in result.skeleton.spheres.iter().take(10) {
+    for s in result.plant.skeleton.spheres.iter().take(10) {
         writeln!(
             out,
             "sphere #{} at {} r {} {:?} c{}",
@@ -95,7 +95,7 @@ fn render(source: &str) -> String {
         )
         .ok();
     }
-    for q in result.skeleton.queries.iter().take(10) {
+    for q in result.plant.skeleton.queries.iter().take(10) {
         writeln!(
             out,
             "query #{} ({:.6}, {:.6}, {:.6})",
@@ -106,11 +106,11 @@ fn render(source: &str) -> String {
     writeln!(
         out,
         "end ({:.6}, {:.6}, {:.6})",
-        result.skeleton.end.x, result.skeleton.end.y, result.skeleton.end.z
+        result.plant.skeleton.end.x, result.plant.skeleton.end.y, result.plant.skeleton.end.z
     )
     .ok();
     out.push_str("== stats\n");
-    writeln!(out, "{}", result.stats.to_json()).ok();
+    writeln!(out, "{}", result.plant.stats.to_json()).ok();
     // Negative zero prints as "-0.000000"; fold it so goldens do not depend on rounding direction.
     out.replace("-0.000000", "0.000000")
 }
@@ -131,9 +131,9 @@ fn render_example(source: &str) -> String {
     format!(
         "diagnostics {}\nmodules {}\nfnv1a {:016x}\nhead {head}\nstats {}\n",
         result.diagnostics.len(),
-        result.string.len(),
+        result.derivation.string.len(),
         fnv1a(&text),
-        result.stats.to_json()
+        result.plant.stats.to_json()
     )
 }
 

@@ -134,7 +134,8 @@ fn extra_rewritings_grow_the_whole_branch_of_the_apex() {
 }
 
 fn lengths(b: &Build) -> Vec<f64> {
-    b.skeleton
+    b.plant
+        .skeleton
         .segments
         .iter()
         .map(|s| (s.end - s.start).length())
@@ -153,7 +154,7 @@ fn shape_stretches_segments_by_age_as_in_fig_4() {
     assert!((l[2] - 2.25).abs() < 1e-12, "{l:?}");
     assert!((l[3] - 1.5).abs() < 1e-12, "{l:?}");
     // The top is where the stretched stem ends.
-    let top = b.skeleton.segments[3].end;
+    let top = b.plant.skeleton.segments[3].end;
     assert!((top.y - l.iter().sum::<f64>()).abs() < 1e-9);
 }
 
@@ -182,11 +183,11 @@ fn widths_grow_with_age_plus_the_positional_factor_of_the_third() {
     // Unit segments at y 0–1, 1–2, 2–3, 3–4 (lower, middle, middle, upper by their middles), of
     // ages 4, 3, 2, 1: widths i + PF with PF 2 / 1 / 0 are 4, 4, 3, 3.
     let b = built("#iterations 3\n#shape_width\naxiom: F A\nA -> F A");
-    let w: Vec<f64> = b.skeleton.segments.iter().map(|s| s.width).collect();
+    let w: Vec<f64> = b.plant.skeleton.segments.iter().map(|s| s.width).collect();
     assert_eq!(w, [4.0, 4.0, 3.0, 3.0]);
     // #width scales them; other positional factors replace 2 / 1 / 0.
     let b = built("#iterations 3\n#width 0.5\n#shape_width 0 0 0 10\naxiom: F A\nA -> F A");
-    let w: Vec<f64> = b.skeleton.segments.iter().map(|s| s.width).collect();
+    let w: Vec<f64> = b.plant.skeleton.segments.iter().map(|s| s.width).collect();
     assert_eq!(w, [7.0, 1.5, 1.0, 0.5]);
 }
 
@@ -194,7 +195,7 @@ fn widths_grow_with_age_plus_the_positional_factor_of_the_third() {
 const GROWING_STEM: &str = "#iterations 5\naxiom: F F F A\nA -> F A";
 
 fn tip(b: &Build) -> DVec3 {
-    b.skeleton.segments.last().expect("segments").end
+    b.plant.skeleton.segments.last().expect("segments").end
 }
 
 fn direction(s: &meristem::turtle::Segment) -> DVec3 {
@@ -208,7 +209,7 @@ fn the_sun_in_the_south_bends_the_middle_and_upper_stem_towards_plus_x() {
     let mut leans = Vec::new();
     for season in ["summer", "equinox", "winter"] {
         let b = built(&format!("#sun 38 {season} 5\n{GROWING_STEM}"));
-        let segments = &b.skeleton.segments;
+        let segments = &b.plant.skeleton.segments;
         // The lowest segment stays in the lower third: it never turns.
         assert!((direction(&segments[0]) - DVec3::Y).length() < 1e-12);
         let t = tip(&b);
@@ -243,7 +244,7 @@ fn bending_accumulates_step_after_step() {
         let b = built(&format!(
             "#sun 38 equinox 2\n#iterations {steps}\naxiom: F F F A\nA -> F A"
         ));
-        let segments = &b.skeleton.segments;
+        let segments = &b.plant.skeleton.segments;
         // The third segment has been in the upper or middle third since it was written.
         direction(&segments[2]).angle_between(DVec3::Y).to_degrees()
     };
@@ -257,13 +258,13 @@ fn gravity_pulls_a_horizontal_branch_down_and_leaves_a_vertical_stem_alone() {
     let source =
         |steps: u32| format!("#gravity 5\n#iterations {steps}\naxiom: F[-(90)F A]F\nA -> F A");
     let plain = built("#iterations 4\naxiom: F[-(90)F A]F\nA -> F A");
-    let branch_tip = |b: &Build| b.skeleton.segments[b.skeleton.segments.len() - 2].end;
+    let branch_tip = |b: &Build| b.plant.skeleton.segments[b.plant.skeleton.segments.len() - 2].end;
     assert!((branch_tip(&plain).y - 1.0).abs() < 1e-12);
     let mut drops = Vec::new();
     for steps in [1, 2, 4] {
         let b = built(&source(steps));
         // The stem is vertical: gravity has no side to pull it to.
-        let stem = b.skeleton.segments.last().expect("stem");
+        let stem = b.plant.skeleton.segments.last().expect("stem");
         assert!((direction(stem) - DVec3::Y).length() < 1e-12);
         let t = branch_tip(&b);
         assert!(t.x > 0.0 && t.y < 1.0, "{t}");
@@ -280,6 +281,7 @@ fn gravity_angles_differ_per_branch_within_the_variation() {
     let model = b.model.as_ref().expect("model");
     let f = model.alphabet.get("F").expect("F");
     let angles: std::collections::BTreeSet<i64> = b
+        .derivation
         .string
         .ids
         .iter()
@@ -289,7 +291,7 @@ fn gravity_angles_differ_per_branch_within_the_variation() {
         .collect();
     assert!(angles.iter().all(|a| (5..=8).contains(a)), "{angles:?}");
     assert!(angles.len() >= 2, "{angles:?}");
-    assert_eq!(built(source).skeleton, b.skeleton);
+    assert_eq!(built(source).plant.skeleton, b.plant.skeleton);
 }
 
 #[test]
@@ -298,7 +300,7 @@ fn wind_bends_everything_towards_its_horizontal_direction() {
     let t = tip(&b);
     assert!(t.z > 0.1 && t.x.abs() < 1e-12, "{t}");
     // The wind bends the lowest segment too.
-    assert!(direction(&b.skeleton.segments[0]).z > 0.0);
+    assert!(direction(&b.plant.skeleton.segments[0]).z > 0.0);
     let west = built(&format!("#wind -1 0 4\n{GROWING_STEM}"));
     assert!(tip(&west).x < -0.1);
 }
@@ -312,6 +314,7 @@ fn a_replaced_branch_keeps_its_bend_in_its_first_module() {
     let model = b.model.as_ref().expect("model");
     let f = model.alphabet.get("F").expect("F");
     let bends: Vec<f64> = b
+        .derivation
         .string
         .ids
         .iter()
@@ -332,9 +335,9 @@ fn attributes_work_together_and_every_build_is_reproducible() {
     let a = built(source);
     let b = built(source);
     assert_eq!(a.derived_text(), b.derived_text());
-    assert_eq!(a.skeleton, b.skeleton);
+    assert_eq!(a.plant.skeleton, b.plant.skeleton);
     assert_eq!(a.growth, b.growth);
-    assert_eq!(a.mesh.check(), Ok(()));
+    assert_eq!(a.plant.mesh.check(), Ok(()));
     let other = seeded(source, 99);
     assert_ne!(other.derived_text(), a.derived_text());
     for step in &a.growth.as_ref().expect("growth").steps {
@@ -350,7 +353,7 @@ fn without_growth_directives_nothing_changes() {
     // #apex alone sets no attribute.
     let apex = built("#apex X\n#iterations 3\n#angle 30\naxiom: X\nX -> F[+X]F[-X]+X\nF -> FF");
     assert_eq!(apex.growth, None);
-    assert_eq!(apex.skeleton, b.skeleton);
+    assert_eq!(apex.plant.skeleton, b.plant.skeleton);
 }
 
 #[test]
@@ -391,7 +394,7 @@ fn the_fig_2_example_lets_nb_of_the_64_second_generation_branches_grow() {
         assert_eq!(third.stopped.iter().sum::<u32>(), 64 - nb.min(64));
         // Each surviving branch becomes eight; each stopped one stays one segment.
         assert_eq!(
-            b.skeleton.segments.len() as u32,
+            b.plant.skeleton.segments.len() as u32,
             8 * nb.min(64) + (64 - nb.min(64))
         );
     }
@@ -418,7 +421,7 @@ fn every_attribute_on_every_gallery_grammar_builds_a_valid_mesh() {
     for path in files {
         let text = std::fs::read_to_string(&path).expect("UTF-8");
         let plain = build(&text, &BuildOptions::default());
-        let steps = plain.iterations.min(5);
+        let steps = plain.steps.min(5);
         for seed in 1..=3 {
             let b = build(
                 &format!("{attributes}{text}"),
@@ -432,7 +435,7 @@ fn every_attribute_on_every_gallery_grammar_builds_a_valid_mesh() {
             let growth = b.growth.as_ref().expect("growth");
             assert_eq!(
                 growth.state.modules.len(),
-                b.string.len(),
+                b.derivation.string.len(),
                 "{}",
                 path.display()
             );
@@ -440,7 +443,7 @@ fn every_attribute_on_every_gallery_grammar_builds_a_valid_mesh() {
             if text.contains("@Gc") {
                 continue;
             }
-            if let Err(e) = b.mesh.check() {
+            if let Err(e) = b.plant.mesh.check() {
                 panic!("{} (seed {seed}): {e}", path.display());
             }
             checked += 1;

@@ -333,7 +333,11 @@ fn lparser_draw(l: &Lparser, s: &str) -> Vec<Act> {
 /// The same from Meristem's build of the translation: the string the turtle reads.
 fn meristem_draw(b: &Build, width_scale: f64, dis: f64) -> Vec<Act> {
     let model = b.model.as_ref().expect("model");
-    let s: &LString = b.interpreted.as_ref().unwrap_or(&b.string);
+    let s: &LString = b
+        .derivation
+        .interpreted
+        .as_ref()
+        .unwrap_or(&b.derivation.string);
     let mut width = 0.0;
     let mut acts = Vec::new();
     for i in 0..s.len() {
@@ -589,9 +593,9 @@ fn lparser_names(l: &Lparser, depth: usize, rewritten: &str) -> Vec<String> {
 
 fn derived_names(b: &Build) -> Vec<String> {
     let model = b.model.as_ref().expect("model");
-    (0..b.string.len())
+    (0..b.derivation.string.len())
         .map(|i| {
-            let t = b.string.module_text(&model.alphabet, i);
+            let t = b.derivation.string.module_text(&model.alphabet, i);
             t.split('(').next().unwrap_or("").to_string()
         })
         .collect()
@@ -615,7 +619,7 @@ fn lparser_translations_keep_lparsers_string_symbol_for_symbol() {
         let result = import_file(file);
         let b = build(&result.text, &BuildOptions::default());
         assert!(b.ok(), "{file}: {:?}", b.diagnostics);
-        assert_eq!(b.iterations, depth);
+        assert_eq!(b.steps, depth);
         let mut expected = lparser_names(l, depth as usize, rewritten);
         if colour_prefix {
             expected.insert(0, ";".into()); // Lparser starts with colour 2: `;(2)`
@@ -627,14 +631,14 @@ fn lparser_translations_keep_lparsers_string_symbol_for_symbol() {
             "{file}: module count at depth {depth}"
         );
         assert_eq!(actual, expected, "{file}");
-        assert_eq!(b.stats.modules, expected.len());
+        assert_eq!(b.plant.stats.modules, expected.len());
     }
     // The count at the file's depth, as `meristem derive --stats` reports it.
     let b = build(
         &import_file("lparser/abop-bush.ls").text,
         &BuildOptions::default(),
     );
-    assert_eq!(b.stats.modules, 69_367);
+    assert_eq!(b.plant.stats.modules, 69_367);
 }
 
 // ------------------------------------------------------------------------------------------------
@@ -659,7 +663,7 @@ fn greens_worked_example_derives_to_the_published_step() {
     // and the second for A(5); seed 3 (as public/examples/green-context.lsys) draws exactly so.
     let result = import_file("green/worked-example.txt");
     let b = derive(&result, None, Some(3));
-    assert_eq!(b.iterations, 1);
+    assert_eq!(b.steps, 1);
     assert_eq!(b.derived_text(), "A(2)B(6)[A(3)]B(4)");
     // Other seeds give Green's other outcomes: each A becomes A(x+1) or B(x-1), and B(3) always
     // becomes B(6)[A(3)] when both its neighbours are still A.
@@ -679,9 +683,9 @@ fn cpfg_and_lpy_translations_derive_the_strings_their_rules_give() {
     // Koch curve: F -> F+F--F+F, 4 steps: 4^4 F, and 4 turns for each of the 1 + 4 + 16 + 64
     // rewritings.
     let b = derive(&import_file("cpfg/snowflake.l"), None, None);
-    assert_eq!(b.iterations, 4);
-    assert_eq!(b.stats.modules, 1 + 256 + 4 * 85);
-    assert_eq!(b.stats.segments, 256);
+    assert_eq!(b.steps, 4);
+    assert_eq!(b.plant.stats.modules, 1 + 256 + 4 * 85);
+    assert_eq!(b.plant.stats.segments, 256);
     // A compound leaf drawn through its homomorphism: the derived string keeps A and I.
     let b = derive(&import_file("cpfg/compound-homo.l"), None, None);
     let text = b.derived_text();
@@ -689,12 +693,12 @@ fn cpfg_and_lpy_translations_derive_the_strings_their_rules_give() {
         text.starts_with("IIIIIIII[+IIII[+II[+I[+A][-A]IA]"),
         "{text}"
     );
-    assert!(b.interpreted.is_some() && !text.contains('F'));
+    assert!(b.derivation.interpreted.is_some() && !text.contains('F'));
     // ABOP Fig 1.9's H-tree in L-Py: A(s) -> F(s)[+(a)A(s/R)][-(a)A(s/R)], 11 steps: 2^11 apices,
     // 2^11 - 1 rewritings of 7 more modules each, and the width `_(0.01)` first.
     let b = derive(&import_file("lpy/lsystem1.9.lpy"), None, None);
-    assert_eq!(b.stats.modules, 1 + 2048 + 2047 * 7);
-    assert_eq!(b.stats.segments, 2047);
+    assert_eq!(b.plant.stats.modules, 1 + 2048 + 2047 * 7);
+    assert_eq!(b.plant.stats.segments, 2047);
     assert!(b
         .derived_text()
         .starts_with("!(0.01)F(1)[+(85)F(0.6868131868131868)"));
@@ -702,8 +706,8 @@ fn cpfg_and_lpy_translations_derive_the_strings_their_rules_give() {
     // the Python `if` bodies became conditions, the interpretation's `,(2 if i % 2 else 3)` a
     // conditional expression.
     let b = derive(&import_file("lpy/lsystem1.4.lpy"), None, None);
-    assert_eq!(b.stats.modules, 20 * 21 + 1);
-    assert_eq!(b.stats.segments, 400);
+    assert_eq!(b.plant.stats.modules, 20 * 21 + 1);
+    assert_eq!(b.plant.stats.segments, 400);
     assert!(b.derived_text().ends_with("B(20,19)F(0.01)F(0.01)F(0.01)F(0.01)F(0.01)F(0.01)F(0.01)F(0.01)F(0.01)F(0.01)F(0.01)F(0.01)F(0.01)F(0.01)F(0.01)F(0.01)F(0.01)F(0.01)F(0.01)F(0.01)A(20)"));
     // Fig 1.37's L-Py file with delays: `G(x,t):` then `if t == 0: produce …` and
     // `else: produce G(x,t-1)` became two conditional productions, so only the segments whose
@@ -718,7 +722,7 @@ fn cpfg_and_lpy_translations_derive_the_strings_their_rules_give() {
         "!(0.002)-(90)G(0.3,1)+(86)G(0.458257569495584,0)-(172)G(0.458257569495584,0)+(86)G(0.21,2)+(86)G(0.32078029864690877,1)-(172)G(0.32078029864690877,1)+(86)G(0.48999999999999994,0)"
     );
     let plain = derive(&import_file("lpy/lsystem-fig1.37.lpy"), None, None);
-    assert_eq!(plain.stats.segments, 4usize.pow(5));
+    assert_eq!(plain.plant.stats.segments, 4usize.pow(5));
 }
 
 // ------------------------------------------------------------------------------------------------

@@ -2,13 +2,14 @@
 
 use super::*;
 use crate::mesh::{build_mesh, MeshBuffers};
-use crate::pipeline::{build, Build, BuildOptions};
+use crate::pipeline::{build, BuildOptions, PlantEditor};
 
-fn built(source: &str) -> Build {
+fn built(source: &str) -> PlantEditor {
     built_n(source, None)
 }
 
-fn built_n(source: &str, iterations: Option<u32>) -> Build {
+/// The plant of `source` after `iterations` steps, ready to edit.
+fn built_n(source: &str, iterations: Option<u32>) -> PlantEditor {
     let result = build(
         source,
         &BuildOptions {
@@ -17,7 +18,7 @@ fn built_n(source: &str, iterations: Option<u32>) -> Build {
         },
     );
     assert!(result.ok(), "{:?}", result.diagnostics);
-    result
+    PlantEditor::new(result.plant)
 }
 
 fn paths(tree: &BranchTree) -> Vec<(Vec<u32>, Vec<u32>)> {
@@ -30,8 +31,8 @@ fn paths(tree: &BranchTree) -> Vec<(Vec<u32>, Vec<u32>)> {
 #[test]
 fn an_axis_is_cut_where_a_branch_leaves_and_the_continuation_is_the_last_child() {
     // s0 s1 [s2 s3 [s4] s5] s6 [s7] s8
-    let mut b = built("axiom: FF[+FF[-F]F]F[-F]F");
-    let tree = b.branch_tree().clone();
+    let b = built("axiom: FF[+FF[-F]F]F[-F]F");
+    let tree = b.tree().clone();
     assert_eq!(
         paths(&tree),
         vec![
@@ -61,8 +62,8 @@ fn an_axis_is_cut_where_a_branch_leaves_and_the_continuation_is_the_last_child()
 #[test]
 fn several_roots_and_moves() {
     // Two bracketed roots; `f` inside a branch still grows from the joint; `@M` starts a root.
-    let mut b = built("axiom: [F][+F[fF]]@M(3,0,0)FF");
-    let tree = b.branch_tree().clone();
+    let b = built("axiom: [F][+F[fF]]@M(3,0,0)FF");
+    let tree = b.tree().clone();
     assert_eq!(
         paths(&tree),
         vec![
@@ -76,8 +77,8 @@ fn several_roots_and_moves() {
 
 #[test]
 fn missing_paths_say_how_far_they_exist() {
-    let mut b = built("axiom: F[+F]F");
-    let tree = b.branch_tree().clone();
+    let b = built("axiom: F[+F]F");
+    let tree = b.tree().clone();
     assert_eq!(tree.find(&[]), Err("the path is empty".into()));
     assert_eq!(tree.find(&[1]), Err("the plant has 1 root branch".into()));
     assert_eq!(
@@ -94,8 +95,8 @@ fn missing_paths_say_how_far_they_exist() {
 fn items_belong_to_the_joint_they_are_drawn_at() {
     // A leaf at the end of s0 (inside a bracket), a sphere at the end of s1, a polygon in the
     // lateral from s1.
-    let mut b = built("axiom: F[&~l]F@O(0.2)[+F{.f.f.}]F");
-    let tree = b.branch_tree().clone();
+    let b = built("axiom: F[&~l]F@O(0.2)[+F{.f.f.}]F");
+    let tree = b.tree().clone();
     assert_eq!(
         paths(&tree),
         vec![
@@ -114,14 +115,14 @@ fn items_belong_to_the_joint_they_are_drawn_at() {
 #[test]
 fn paths_are_stable_under_re_derivation() {
     let source = "#angle 25\naxiom: X\nX -> F[+X][-X]FX\nF -> FF";
-    let (mut a, mut b) = (built_n(source, Some(3)), built_n(source, Some(4)));
-    let (ta, tb) = (a.branch_tree().clone(), b.branch_tree().clone());
+    let (a, b) = (built_n(source, Some(3)), built_n(source, Some(4)));
+    let (ta, tb) = (a.tree().clone(), b.tree().clone());
     assert!(tb.len() > ta.len());
     // Each branch of n = 3 is at the same path at n = 4, starting where the same place grew to.
     for branch in &ta.branches {
         let other = tb.find(&branch.path).expect("the path still exists");
-        let start = |t: &BranchTree, s: &Build, b: u32| {
-            s.skeleton.segments[t.branches[b as usize].segments[0] as usize].start
+        let start = |t: &BranchTree, s: &PlantEditor, b: u32| {
+            s.plant().skeleton.segments[t.branches[b as usize].segments[0] as usize].start
         };
         let k = ta.find(&branch.path).unwrap();
         // F -> FF doubles every length: the same place is twice as far.
@@ -131,7 +132,7 @@ fn paths_are_stable_under_re_derivation() {
 
 #[test]
 fn a_straight_branch_has_its_handles_at_its_thirds() {
-    let mut b = built("axiom: F(1)F(2)F(3)");
+    let b = built("axiom: F(1)F(2)F(3)");
     let info = b.branches();
     assert_eq!(info.len(), 1);
     let c = info[0].control;
@@ -152,12 +153,10 @@ fn dvec(mesh: &[f32], v: usize) -> glam::DVec3 {
 
 /// The mesh equals a full mesh of `build`'s skeleton with the editor's options: positions and
 /// normals within `eps`, uvs within `eps` relative to their size, everything else exactly.
-fn assert_mesh_is_full_mesh(b: &mut Build, eps: f32) {
-    let options = b.editor().options().clone();
-    let mut full = build_mesh(&b.skeleton, &options);
-    // The build's provenance is in terms of the derived string (the same here: no homomorphism).
-    assert!(b.turtle_origin.is_empty());
-    assert_close(&b.mesh, &mut full, eps);
+fn assert_mesh_is_full_mesh(b: &mut PlantEditor, eps: f32) {
+    let options = b.branch_editor().options().clone();
+    let mut full = build_mesh(&b.plant().skeleton, &options);
+    assert_close(&b.plant().mesh, &mut full, eps);
 }
 
 fn assert_close(mesh: &MeshBuffers, full: &mut MeshBuffers, eps: f32) {
@@ -200,10 +199,19 @@ fn a_drag_rebuilds_the_branch_and_moves_its_descendants_like_a_full_mesh() {
         // Smooth: every axis a generalized cylinder through Bézier pieces.
         let source = LEAFY.replace("axiom: A", if smooth { "axiom: @Gc A" } else { "axiom: A" });
         let mut b = built_n(&source, Some(4));
-        assert!(b.skeleton.segments.iter().all(|s| s.smooth == smooth));
-        let before = b.mesh.clone();
+        assert!(b
+            .plant()
+            .skeleton
+            .segments
+            .iter()
+            .all(|s| s.smooth == smooth));
+        let before = b.plant().mesh.clone();
         let info = b.branches();
-        assert_eq!(b.mesh, before, "starting to edit does not change the mesh");
+        assert_eq!(
+            b.plant().mesh,
+            before,
+            "starting to edit does not change the mesh"
+        );
         // A branch with descendants, neither root nor leaf of the tree.
         let branch = info
             .iter()
@@ -225,9 +233,13 @@ fn a_drag_rebuilds_the_branch_and_moves_its_descendants_like_a_full_mesh() {
                 .drag(branch, 1, p1 + glam::DVec3::new(0.0, 0.0, 0.01 * f))
                 .unwrap();
             partial_frames += (!change.full) as u32 + (!change2.full) as u32;
-            assert!(change.vertices() > 0 && change.vertices() < b.mesh.vertex_count());
+            assert!(change.vertices() > 0 && change.vertices() < b.plant().mesh.vertex_count());
             assert_mesh_is_full_mesh(&mut b, 2e-5);
-            assert_eq!(b.stats.bounds, b.mesh.bounds(), "the stats' bounds follow");
+            assert_eq!(
+                b.plant().stats.bounds,
+                b.plant().mesh.bounds(),
+                "the stats' bounds follow"
+            );
             // The handle is where it was dragged.
             let now = b.branches()[branch as usize].control;
             assert!(
@@ -258,7 +270,7 @@ fn a_drag_rebuilds_the_branch_and_moves_its_descendants_like_a_full_mesh() {
                 info[branch as usize].control[2] + glam::DVec3::X * 0.01,
             )
             .unwrap();
-        let before = b.mesh.clone();
+        let before = b.plant().mesh.clone();
         let mut inside = vec![false; before.vertex_count()];
         for r in &change.ranges {
             inside[r[0] as usize..(r[0] + r[1]) as usize].fill(true);
@@ -272,7 +284,7 @@ fn a_drag_rebuilds_the_branch_and_moves_its_descendants_like_a_full_mesh() {
         for (v, &changed) in inside.iter().enumerate() {
             if !changed {
                 assert_eq!(
-                    dvec(&b.mesh.positions, v),
+                    dvec(&b.plant().mesh.positions, v),
                     dvec(&before.positions, v),
                     "vertex {v}"
                 );
@@ -284,13 +296,13 @@ fn a_drag_rebuilds_the_branch_and_moves_its_descendants_like_a_full_mesh() {
 #[test]
 fn descendants_move_rigidly() {
     let mut b = built_n(LEAFY, Some(4));
-    let original = b.skeleton.clone();
+    let original = b.plant().skeleton.clone();
     let info = b.branches();
     let branch = info.iter().position(|i| i.path == [0, 0]).unwrap() as u32;
     let p3 = info[branch as usize].control[3];
     b.drag(branch, 3, p3 + glam::DVec3::new(0.3, 0.1, -0.2))
         .unwrap();
-    let tree = b.branch_tree().clone();
+    let tree = b.tree().clone();
     let below: Vec<u32> = tree.subtree(branch)[1..]
         .iter()
         .flat_map(|&d| tree.branches[d as usize].segments.clone())
@@ -299,12 +311,12 @@ fn descendants_move_rigidly() {
     let segment = |s: &crate::turtle::Skeleton, i: u32| s.segments[i as usize].clone();
     let mut moved = false;
     for &i in &below {
-        let (o, e) = (segment(&original, i), segment(&b.skeleton, i));
+        let (o, e) = (segment(&original, i), segment(&b.plant().skeleton, i));
         moved |= (o.end - e.end).length() > 1e-3;
         assert!(((o.end - o.start).length() - (e.end - e.start).length()).abs() < 1e-12);
         assert!((e.left.length() - 1.0).abs() < 1e-12 && e.left.dot(e.up).abs() < 1e-12);
         for &j in &below {
-            let (p, q) = (segment(&original, j), segment(&b.skeleton, j));
+            let (p, q) = (segment(&original, j), segment(&b.plant().skeleton, j));
             // Distances between joints and angles between segments are kept.
             assert!(((o.end - p.end).length() - (e.end - q.end).length()).abs() < 1e-12);
             let angle = |a: &crate::turtle::Segment, b: &crate::turtle::Segment| {
@@ -324,7 +336,7 @@ fn descendants_move_rigidly() {
         .collect();
     for i in 0..original.segments.len() as u32 {
         if !mine.contains(&i) {
-            assert_eq!(segment(&original, i), segment(&b.skeleton, i));
+            assert_eq!(segment(&original, i), segment(&b.plant().skeleton, i));
         }
     }
 }
@@ -336,18 +348,21 @@ fn an_edited_straight_branch_lies_on_its_edited_curve() {
     let target = info[0].control[3] + glam::DVec3::new(1.0, 0.0, 0.5);
     b.drag(0, 3, target).unwrap();
     let now = b.branches();
-    let joints = b.branch_tree().clone().joints(&b.skeleton, 0);
+    let joints = b.tree().clone().joints(&b.plant().skeleton, 0);
     for (j, t) in joints.iter().zip(&now[0].params) {
         assert!((fit::point(&now[0].control, *t) - *j).length() < 1e-12);
     }
     // The child still starts at the branch's end.
-    assert_eq!(b.skeleton.segments[4].start, *joints.last().unwrap());
+    assert_eq!(
+        b.plant().skeleton.segments[4].start,
+        *joints.last().unwrap()
+    );
 }
 
 #[test]
 fn edits_apply_by_path_undo_exactly_and_report_what_does_not_apply() {
     let mut b = built_n(LEAFY, Some(3));
-    let unedited = (b.skeleton.clone(), b.mesh.clone());
+    let unedited = (b.plant().skeleton.clone(), b.plant().mesh.clone());
     let edits = vec![
         BranchEdit {
             path: vec![0, 0],
@@ -381,7 +396,7 @@ fn edits_apply_by_path_undo_exactly_and_report_what_does_not_apply() {
             },
         ]
     );
-    assert_ne!(b.mesh.positions, unedited.1.positions);
+    assert_ne!(b.plant().mesh.positions, unedited.1.positions);
     assert_eq!(b.edits(), vec![edits[0].clone()]);
     assert_mesh_is_full_mesh(&mut b, 0.0);
     // A later edit of the same branch wins.
@@ -400,7 +415,10 @@ fn edits_apply_by_path_undo_exactly_and_report_what_does_not_apply() {
     // No edits: exactly the unedited plant.
     let report = b.apply_edits(&[]);
     assert_eq!(report, EditReport::default());
-    assert_eq!((b.skeleton.clone(), b.mesh.clone()), unedited);
+    assert_eq!(
+        (b.plant().skeleton.clone(), b.plant().mesh.clone()),
+        unedited
+    );
 }
 
 #[test]
@@ -420,10 +438,10 @@ fn edits_survive_re_derivation_with_another_iteration_count() {
         let report = b.apply_edits(std::slice::from_ref(&edit));
         assert_eq!(report.applied, vec![vec![0, 1]], "n = {n}");
         let edited = b.branches();
-        let k = b.branch_tree().find(&[0, 1]).unwrap() as usize;
+        let k = b.tree().find(&[0, 1]).unwrap() as usize;
         // The end handle moved by the offset: 0.4 branch lengths along L and 0.2 along U of
         // the branch's start frame.
-        let length = b.branch_tree().branches[k].length;
+        let length = b.tree().branches[k].length;
         let moved = edited[k].control[3] - unedited[k].control[3];
         assert!(
             (moved.length() - length * (0.4f64.hypot(0.2))).abs() < 1e-9,
@@ -508,7 +526,7 @@ fn bad_drags_are_errors_not_panics() {
 
 #[test]
 fn branch_ranges_name_the_branch_of_every_triangle() {
-    let mut b = built("axiom: FF[+F~l]F");
+    let b = built("axiom: FF[+F~l]F");
     let ranges = b.branch_ranges();
     assert_eq!(ranges.len() % 2, 0);
     assert_eq!(ranges[0], 0);
@@ -518,20 +536,23 @@ fn branch_ranges_name_the_branch_of_every_triangle() {
     assert_eq!(branches, vec![0, 2, 1]);
     let firsts: Vec<u32> = ranges.chunks(2).map(|p| p[0]).collect();
     assert!(firsts.windows(2).all(|w| w[0] < w[1]));
-    assert!((*firsts.last().unwrap() as usize) < b.mesh.triangle_count());
+    assert!((*firsts.last().unwrap() as usize) < b.plant().mesh.triangle_count());
 }
 
 #[test]
 fn the_lines_fallback_is_rebuilt_whole() {
-    let mut b = build(
-        "axiom: F[+F]F",
-        &BuildOptions {
-            mesh: crate::mesh::MeshOptions {
-                max_vertices: 0,
-                ..crate::mesh::MeshOptions::default()
+    let mut b = PlantEditor::new(
+        build(
+            "axiom: F[+F]F",
+            &BuildOptions {
+                mesh: crate::mesh::MeshOptions {
+                    max_vertices: 0,
+                    ..crate::mesh::MeshOptions::default()
+                },
+                ..BuildOptions::default()
             },
-            ..BuildOptions::default()
-        },
+        )
+        .plant,
     );
     let p3 = b.branches()[0].control[3];
     let change = b.drag(0, 3, p3 + glam::DVec3::X).unwrap();
@@ -540,12 +561,12 @@ fn the_lines_fallback_is_rebuilt_whole() {
         change.reason.as_deref(),
         Some("the mesh is the lines fallback")
     );
-    assert_eq!(b.mesh.triangle_count(), 0);
+    assert_eq!(b.plant().mesh.triangle_count(), 0);
     // The first line is the dragged segment, now ending at the handle.
     let end = glam::DVec3::new(
-        b.mesh.lines[3] as f64,
-        b.mesh.lines[4] as f64,
-        b.mesh.lines[5] as f64,
+        b.plant().mesh.lines[3] as f64,
+        b.plant().mesh.lines[4] as f64,
+        b.plant().mesh.lines[5] as f64,
     );
     assert!((end - (p3 + glam::DVec3::X)).length() < 1e-6);
 }
@@ -553,20 +574,24 @@ fn the_lines_fallback_is_rebuilt_whole() {
 #[test]
 fn provenance_still_names_derived_modules_after_drags_and_edits() {
     // With a homomorphism the turtle reads another string; ranges name the derived string.
-    let mut b = built_n(
+    let grown = build(
         "#angle 30\naxiom: A\nA -> B[+A][-A]BA\nhomomorphism:\nB -> FF",
-        Some(3),
+        &BuildOptions {
+            iterations: Some(3),
+            ..BuildOptions::default()
+        },
     );
-    assert!(!b.turtle_origin.is_empty());
-    let unedited = b.mesh.ranges.clone();
+    assert!(!grown.derivation.turtle_origin.is_empty());
+    let mut b = PlantEditor::new(grown.plant);
+    let unedited = b.plant().mesh.ranges.clone();
     let info = b.branches();
     let k = info.iter().position(|i| i.path == [0, 0]).unwrap() as u32;
     let change = b
         .drag(k, 3, info[k as usize].control[3] + glam::DVec3::Y * 0.2)
         .unwrap();
     assert!(!change.full);
-    assert_eq!(b.mesh.ranges, unedited);
+    assert_eq!(b.plant().mesh.ranges, unedited);
     let edits = b.edits();
     b.apply_edits(&edits);
-    assert_eq!(b.mesh.ranges, unedited);
+    assert_eq!(b.plant().mesh.ranges, unedited);
 }

@@ -99,7 +99,12 @@ impl<R: rand::Rng> Rewriter<'_, R> {
         dst: &mut LString,
         num_it: u32,
     ) -> Result<(), Diagnostic> {
-        let Group { at: i, header, members, .. } = group;
+        let Group {
+            at: i,
+            header,
+            members,
+            ..
+        } = group;
         let n = members.len();
         let cursor = (header.max(0.0) as usize) % n;
         self.open_group(src, i, ((cursor + 1) % n) as f64, dst);
@@ -155,7 +160,12 @@ impl<R: rand::Rng> Rewriter<'_, R> {
         dst: &mut LString,
         num_it: u32,
     ) -> Result<(), Diagnostic> {
-        let Group { at: i, header, members, .. } = group;
+        let Group {
+            at: i,
+            header,
+            members,
+            ..
+        } = group;
         let times = header.max(0.0) as u32;
         self.open_group(src, i, header, dst);
         let mut enclosed = LString::default();

@@ -145,15 +145,10 @@ pub fn export(
     }
 }
 
-/// What the studio downloads: the one file of the format, or a zip (`plant.zip`) of its files
-/// when it has several (OBJ and MTL; POV-Ray's scene and the texture images it names). `None` only past 4 GiB.
-pub fn download(
-    format: Format,
-    mesh: &MeshBuffers,
-    skeleton: &Skeleton,
-    stem: &str,
-) -> Option<ExportedFile> {
-    let mut files = export(format, mesh, skeleton, stem);
+/// What the studio downloads: the one file of an export, or a zip (`STEM.zip`) of its files
+/// when it has several (OBJ and MTL; POV-Ray's scene and the texture images it names). `None`
+/// only past 4 GiB.
+pub fn bundle(mut files: Vec<ExportedFile>, stem: &str) -> Option<ExportedFile> {
     if files.len() == 1 {
         return files.pop();
     }
@@ -224,7 +219,7 @@ pub(crate) mod tests {
             },
         );
         assert!(result.ok(), "{:?}", result.diagnostics);
-        (result.mesh, result.skeleton)
+        (result.plant.mesh, result.plant.skeleton)
     }
 
     /// A trunk of colour index 0 with a branch of colour index 1.
@@ -261,7 +256,7 @@ pub(crate) mod tests {
         let files = export(Format::Obj, &mesh, &skeleton, "tree");
         let names: Vec<&str> = files.iter().map(|f| f.name.as_str()).collect();
         assert_eq!(names, ["tree.obj", "tree.mtl"]);
-        let zip = download(Format::Obj, &mesh, &skeleton, "tree").expect("small");
+        let zip = bundle(files.clone(), "tree").expect("small");
         assert_eq!(zip.name, "tree.zip");
         assert_eq!(zip.mime, "application/zip");
         // Stored entries: each file's bytes appear whole in the archive.
@@ -271,7 +266,7 @@ pub(crate) mod tests {
                 .windows(f.bytes.len())
                 .any(|w| w == f.bytes.as_slice()));
         }
-        let glb = download(Format::Glb, &mesh, &skeleton, "tree").expect("small");
+        let glb = bundle(export(Format::Glb, &mesh, &skeleton, "tree"), "tree").expect("small");
         assert_eq!(
             (glb.name.as_str(), glb.mime),
             ("tree.glb", "model/gltf-binary")

@@ -172,8 +172,8 @@ mod tests {
             },
         );
         let options = MeshOptions::default();
-        let (mesh, parts) = super::super::build_mesh_with_parts(&result.skeleton, &options);
-        assert_eq!(mesh, result.mesh);
+        let (mesh, parts) = super::super::build_mesh_with_parts(&result.plant.skeleton, &options);
+        assert_eq!(mesh, result.plant.mesh);
         let unit = mesh.width_unit;
         let all: Vec<Part> = parts
             .chains
@@ -201,8 +201,13 @@ mod tests {
         let mut copy = mesh.clone();
         copy.positions.iter_mut().for_each(|x| *x = 0.0);
         for c in &parts.chains {
-            let (alone, ranges) =
-                chain_mesh(&result.skeleton, &options, unit, &c.segments, c.start_cap);
+            let (alone, ranges) = chain_mesh(
+                &result.plant.skeleton,
+                &options,
+                unit,
+                &c.segments,
+                c.start_cap,
+            );
             assert_eq!(ranges, c.ranges);
             assert!(write_part(&mut copy, &c.part, &alone, true));
         }
@@ -210,7 +215,7 @@ mod tests {
             assert!(write_part(
                 &mut copy,
                 p,
-                &polygon_mesh(&result.skeleton, &options, unit, i),
+                &polygon_mesh(&result.plant.skeleton, &options, unit, i),
                 true
             ));
         }
@@ -218,7 +223,7 @@ mod tests {
             assert!(write_part(
                 &mut copy,
                 p,
-                &surface_mesh(&result.skeleton, &options, unit, i),
+                &surface_mesh(&result.plant.skeleton, &options, unit, i),
                 true
             ));
         }
@@ -226,14 +231,14 @@ mod tests {
             assert!(write_part(
                 &mut copy,
                 p,
-                &sphere_mesh(&result.skeleton, &options, unit, i),
+                &sphere_mesh(&result.plant.skeleton, &options, unit, i),
                 true
             ));
         }
         assert_eq!(copy, mesh);
         // A part of another size is refused.
         let (alone, _) = chain_mesh(
-            &result.skeleton,
+            &result.plant.skeleton,
             &options,
             unit,
             &parts.chains[0].segments,

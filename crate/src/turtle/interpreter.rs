@@ -169,9 +169,10 @@ impl<'a> Interpreter<'a> {
             | Command::TropismStrength
             | Command::StartSmooth
             | Command::EndSmooth => self.set(command, first, params),
-            Command::QueryPosition | Command::QueryHeading | Command::QueryUp | Command::QueryLeft => {
-                self.query(command, index)
-            }
+            Command::QueryPosition
+            | Command::QueryHeading
+            | Command::QueryUp
+            | Command::QueryLeft => self.query(command, index),
         }
         false
     }

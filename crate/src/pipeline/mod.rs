@@ -1,0 +1,450 @@
+//! The whole pipeline, parse -> resolve -> derive -> (growth) -> interpret -> mesh, as one call
+//! shared by the command-line tool and the wasm boundary, and what a caller does with its result.
+//!
+//! - [`build`] runs every stage and returns a [`Build`]: the diagnostics, the model, the
+//!   [`Derivation`], the growth record and the [`Plant`] (skeleton, mesh, stats);
+//! - [`Build::inspector`] answers questions about the derivation ([`Inspector`]: why a production
+//!   fired, the text of the derived string);
+//! - [`PlantEditor`] edits the plant's branches by their Bézier handles;
+//! - [`export`] builds and writes a model file, the same bytes for the CLI and the studio.
+//!
+//! The core reads no clock and knows nothing of progress bars: a caller lends [`Hooks`] (a clock
+//! read around each stage, a callback told each stage as it starts).
+
+mod editor;
+mod export;
+mod inspector;
+mod plant;
+
+pub use editor::{BranchInfo, PlantEditor};
+pub use export::{export, ExportError, ExportOptions, Exported};
+pub use inspector::{Explained, Inspector};
+pub use plant::Plant;
+
+use crate::derive::{self, Derivation, DeriveOptions};
+use crate::diagnostics::{has_errors, locate_all, Diagnostic, LocatedDiagnostic};
+use crate::growth::{Adjustments, GrowthRecord, GrowthTracker};
+use crate::mesh::MeshOptions;
+use crate::model::{self, LString, Model};
+use crate::syntax;
+use crate::turtle;
+use serde::Serialize;
+
+/// Options of one build; `None` fields take the grammar's own settings.
+#[derive(Clone, Debug, Default)]
+pub struct BuildOptions {
+    /// Overrides `#iterations`.
+    pub iterations: Option<u32>,
+    /// Overrides `#seed`.
+    pub seed: Option<u64>,
+    pub mesh: MeshOptions,
+}
+
+/// A stage of a build or an export, in order.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Stage {
+    Parse,
+    Derive,
+    Interpret,
+    Mesh,
+    /// Exports only, with branch edits.
+    ApplyEdits,
+    /// Exports only.
+    Write,
+}
+
+impl Stage {
+    /// Every stage, in order.
+    pub const ALL: [Stage; 6] = [
+        Stage::Parse,
+        Stage::Derive,
+        Stage::Interpret,
+        Stage::Mesh,
+        Stage::ApplyEdits,
+        Stage::Write,
+    ];
+
+    /// What a progress line says while the stage runs: `parsing`, `deriving`, …
+    pub fn label(self) -> &'static str {
+        match self {
+            Stage::Parse => "parsing",
+            Stage::Derive => "deriving",
+            Stage::Interpret => "interpreting",
+            Stage::Mesh => "meshing",
+            Stage::ApplyEdits => "applying edits",
+            Stage::Write => "writing",
+        }
+    }
+}
+
+/// What a caller lends a build. Both are optional; neither changes the result.
+#[derive(Default)]
+pub struct Hooks<'a> {
+    /// Any monotonic clock (the studio's and the CLI's are in milliseconds), read before and after
+    /// each stage to fill [`Build::timings`].
+    pub clock: Option<&'a mut dyn FnMut() -> f64>,
+    /// Told each stage as it starts.
+    pub progress: Option<&'a mut dyn FnMut(Stage)>,
+}
+
+impl Hooks<'_> {
+    /// Tells the progress callback that `stage` starts.
+    pub fn start(&mut self, stage: Stage) {
+        if let Some(progress) = self.progress.as_mut() {
+            progress(stage);
+        }
+    }
+}
+
+/// The hooks of one run, with the time of the last lap.
+struct Watch<'h, 'a> {
+    hooks: &'h mut Hooks<'a>,
+    last: Option<f64>,
+    timings: StageTimings,
+}
+
+impl<'h, 'a> Watch<'h, 'a> {
+    fn new(hooks: &'h mut Hooks<'a>) -> Self {
+        let last = hooks.clock.as_mut().map(|now| now());
+        Watch {
+            hooks,
+            last,
+            timings: StageTimings::default(),
+        }
+    }
+
+    fn start(&mut self, stage: Stage) {
+        self.hooks.start(stage);
+    }
+
+    /// The time since the previous lap (0 without a clock).
+    fn lap(&mut self) -> f64 {
+        let (Some(now), Some(last)) = (self.hooks.clock.as_mut(), self.last) else {
+            return 0.0;
+        };
+        let time = now();
+        self.last = Some(time);
+        (time - last).max(0.0)
+    }
+
+    /// The timings, when there is a clock.
+    fn timings(&self) -> Option<StageTimings> {
+        self.last.map(|_| self.timings)
+    }
+}
+
+/// Everything one build produced. When `diagnostics` has an error, the stages after the failing
+/// one did not run and what they make is empty.
+#[derive(Clone, Debug, Default)]
+pub struct Build {
+    pub diagnostics: Vec<Diagnostic>,
+    pub model: Option<Model>,
+    /// The derived string and where its modules come from.
+    pub derivation: Derivation,
+    /// Derivation steps run.
+    pub steps: u32,
+    /// With growth attributes (`#lifetime`, `#shape`, `#sun`, …): each module's growth state and
+    /// what every step did (apices growing and stopped per third, rewritings).
+    pub growth: Option<GrowthRecord>,
+    pub plant: Plant,
+    /// How long each stage took, when the caller lent a clock.
+    pub timings: Option<StageTimings>,
+}
+
+/// Wall-clock time of each stage of one build, in the unit of the caller's clock (milliseconds
+/// for the studio and the CLI). A stage that did not run (after an error) took 0.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct StageTimings {
+    /// Parsing the text and resolving it into a model.
+    pub parse_resolve: f64,
+    /// Deriving the string (including the turtle runs that feed query modules and growth).
+    pub derive: f64,
+    /// Interpreting the string with the turtle into a skeleton.
+    pub interpret: f64,
+    /// Building the mesh from the skeleton.
+    pub mesh: f64,
+}
+
+impl StageTimings {
+    /// One JSON object, e.g. `{"parseResolve":0.1,"derive":0.4,"interpret":0.9,"mesh":2.5}`.
+    pub fn to_json(&self) -> String {
+        serde_json::to_string(self).unwrap_or_else(|_| "{}".into())
+    }
+}
+
+impl Build {
+    /// True when no diagnostic is an error (the geometry is complete).
+    pub fn ok(&self) -> bool {
+        !has_errors(&self.diagnostics)
+    }
+
+    /// The derived string in canonical text form.
+    pub fn derived_text(&self) -> String {
+        self.model
+            .as_ref()
+            .map(|m| self.derivation.string.to_text(&m.alphabet))
+            .unwrap_or_default()
+    }
+
+    /// Questions about the derivation, when there is a model.
+    pub fn inspector(&self) -> Option<Inspector<'_>> {
+        Some(Inspector::new(
+            self.model.as_ref()?,
+            &self.derivation,
+            self.steps,
+        ))
+    }
+
+    /// Meshes the plant again with other mesh options (a view option such as the number of sides
+    /// or smooth axes needs no new derivation).
+    pub fn remesh(&mut self, options: &MeshOptions) {
+        self.plant.remesh(options);
+    }
+
+    /// Diagnostics with line and column, in source order.
+    pub fn located_diagnostics(&self, source: &str) -> Vec<LocatedDiagnostic> {
+        locate_all(source, &self.diagnostics)
+    }
+}
+
+/// Runs every stage on `source`.
+pub fn build(source: &str, options: &BuildOptions) -> Build {
+    build_with(source, options, &mut Hooks::default())
+}
+
+/// Runs every stage on `source`, with the caller's clock and progress callback.
+pub fn build_with(source: &str, options: &BuildOptions, hooks: &mut Hooks) -> Build {
+    let mut watch = Watch::new(hooks);
+    let mut result = run_stages(source, options, &mut watch);
+    result.timings = watch.timings();
+    result
+}
+
+/// The stages, each timed; a stage that fails leaves the later ones out.
+fn run_stages(source: &str, options: &BuildOptions, watch: &mut Watch<'_, '_>) -> Build {
+    let mut result = Build::default();
+    watch.start(Stage::Parse);
+    let (file, diagnostics) = syntax::parse(source);
+    result.diagnostics = diagnostics;
+    let (model, diagnostics) = model::resolve(&file);
+    result.diagnostics.extend(diagnostics);
+    watch.timings.parse_resolve = watch.lap();
+    let Some(model) = model else { return result };
+    if !result.ok() {
+        result.model = Some(model);
+        return result;
+    }
+    let steps = options.iterations.unwrap_or(model.settings.iterations);
+    if steps > model.settings.max_steps {
+        result.diagnostics.push(Diagnostic::error(
+            "E0202",
+            model.settings.iterations_span.clone().unwrap_or(0..0),
+            format!(
+                "{steps} iterations are more than the step limit {}; raise it with '{} {steps}'",
+                model.settings.max_steps,
+                crate::vocabulary::DirectiveKind::MaxSteps.written(),
+            ),
+        ));
+        result.model = Some(model);
+        return result;
+    }
+    watch.start(Stage::Derive);
+    let derived = derive_stage(&model, steps, options.seed, &mut result);
+    watch.timings.derive = watch.lap();
+    if let Some(adjustments) = derived {
+        watch.start(Stage::Interpret);
+        let skeleton = turtle::interpret_adjusted(
+            &model,
+            result.derivation.turtle_string(),
+            adjustments.as_ref(),
+        );
+        watch.timings.interpret = watch.lap();
+        watch.start(Stage::Mesh);
+        result.steps = steps;
+        result.plant = Plant::new(skeleton, &options.mesh, &result.derivation, steps);
+        watch.timings.mesh = watch.lap();
+    }
+    result.model = Some(model);
+    result
+}
+
+/// Derives (with growth following, when the grammar has growth attributes) into `result`;
+/// returns the turtle's adjustments, or `None` when derivation failed.
+fn derive_stage(
+    model: &Model,
+    steps: u32,
+    seed: Option<u64>,
+    result: &mut Build,
+) -> Option<Option<Adjustments>> {
+    let mut observer = StageObserver {
+        model,
+        growth: GrowthTracker::new(model, steps),
+    };
+    let options = DeriveOptions { steps, seed };
+    match derive::derive_tracked(model, &options, &mut observer) {
+        Ok(mut derivation) => {
+            result.diagnostics.append(&mut derivation.warnings);
+            let adjustments = observer
+                .growth
+                .as_ref()
+                .map(|g| g.adjustments(&derivation.turtle_origin));
+            result.growth = observer.growth.map(GrowthTracker::finish);
+            result.derivation = derivation;
+            Some(adjustments)
+        }
+        Err(diagnostic) => {
+            result.diagnostics.push(diagnostic);
+            None
+        }
+    }
+}
+
+/// What the stages after derive do while it derives: growth follows every module and plans each
+/// step (asking the turtle for heights), and the turtle answers query modules. Both read the
+/// derived string itself, not its homomorphism image.
+struct StageObserver<'m> {
+    model: &'m Model,
+    growth: Option<GrowthTracker<'m>>,
+}
+
+impl derive::Observer for StageObserver<'_> {
+    fn follows_modules(&self) -> bool {
+        self.growth.is_some()
+    }
+
+    fn axiom(&mut self, axiom: &LString, rng: &mut dyn rand::Rng) {
+        if let Some(g) = &mut self.growth {
+            g.axiom(axiom, rng);
+        }
+    }
+
+    fn plan(
+        &mut self,
+        step: u32,
+        s: &LString,
+        rng: &mut dyn rand::Rng,
+    ) -> Result<Option<Vec<u32>>, Diagnostic> {
+        let Some(g) = &mut self.growth else {
+            return Ok(None);
+        };
+        let model = self.model;
+        let mut heights = |s: &LString, a: &Adjustments| turtle::heights(model, s, Some(a));
+        g.plan(step, s, &mut heights, rng).map(Some)
+    }
+
+    fn followed(
+        &mut self,
+        written: &LString,
+        parent: &[u32],
+        origin: &[u32],
+        birth: Option<u32>,
+        rng: &mut dyn rand::Rng,
+    ) {
+        if let Some(g) = &mut self.growth {
+            g.follow(written, parent, origin, birth, rng);
+        }
+    }
+
+    fn cut(&mut self, kept: &[u32]) {
+        if let Some(g) = &mut self.growth {
+            g.cut(kept);
+        }
+    }
+
+    fn stepped(&mut self, step: u32) {
+        if let Some(g) = &mut self.growth {
+            g.stepped(step);
+        }
+    }
+
+    fn queries(&mut self, s: &LString) -> Vec<(u32, [f64; 3])> {
+        let adjustments = self.growth.as_ref().map(|g| g.adjustments(&[]));
+        turtle::interpret_adjusted(self.model, s, adjustments.as_ref())
+            .queries
+            .into_iter()
+            .map(|q| (q.module, q.value))
+            .collect()
+    }
+}
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Hooks with `clock` and no progress.
+    fn timed<'a>(clock: &'a mut dyn FnMut() -> f64) -> Hooks<'a> {
+        Hooks {
+            clock: Some(clock),
+            progress: None,
+        }
+    }
+
+    /// A clock that advances by one unit each time it is read.
+    fn ticking() -> impl FnMut() -> f64 {
+        let mut t = 0.0;
+        move || {
+            t += 1.0;
+            t
+        }
+    }
+
+    #[test]
+    fn without_a_clock_there_are_no_timings() {
+        assert_eq!(build("axiom: F", &BuildOptions::default()).timings, None);
+    }
+
+    #[test]
+    fn a_clock_is_read_once_around_each_stage() {
+        let mut clock = ticking();
+        let result = build_with(
+            "axiom: F\nF -> FF",
+            &BuildOptions::default(),
+            &mut timed(&mut clock),
+        );
+        let timings = result.timings.expect("timings");
+        assert_eq!(
+            timings,
+            StageTimings {
+                parse_resolve: 1.0,
+                derive: 1.0,
+                interpret: 1.0,
+                mesh: 1.0
+            }
+        );
+        assert_eq!(
+            timings.to_json(),
+            r#"{"parseResolve":1.0,"derive":1.0,"interpret":1.0,"mesh":1.0}"#
+        );
+    }
+
+    #[test]
+    fn stages_after_an_error_take_no_time() {
+        let mut clock = ticking();
+        let result = build_with(
+            "axiom: F[",
+            &BuildOptions::default(),
+            &mut timed(&mut clock),
+        );
+        assert!(!result.ok());
+        let timings = result.timings.expect("timings");
+        assert_eq!(timings.parse_resolve, 1.0);
+        assert_eq!(
+            (timings.derive, timings.interpret, timings.mesh),
+            (0.0, 0.0, 0.0)
+        );
+    }
+
+    #[test]
+    fn a_clock_changes_nothing_else() {
+        let source = "#angle 30\naxiom: X\nX -> F[+X]F[-X]+X\nF -> FF";
+        let options = BuildOptions {
+            iterations: Some(3),
+            ..BuildOptions::default()
+        };
+        let plain = build(source, &options);
+        let mut clock = ticking();
+        let timed = build_with(source, &options, &mut timed(&mut clock));
+        assert_eq!(plain.plant.stats, timed.plant.stats);
+        assert_eq!(plain.plant.mesh.positions, timed.plant.mesh.positions);
+    }
+}

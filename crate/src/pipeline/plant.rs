@@ -1,0 +1,74 @@
+//! The plant a build made: the turtle's skeleton and its mesh, with the counts the studio shows.
+
+use crate::derive::Derivation;
+use crate::export::Stats;
+use crate::mesh::{self, MeshBuffers, MeshOptions};
+use crate::turtle::Skeleton;
+
+/// The geometry of one build.
+#[derive(Clone, Debug, Default)]
+pub struct Plant {
+    pub skeleton: Skeleton,
+    pub mesh: MeshBuffers,
+    /// The options the mesh was last built with.
+    pub mesh_options: MeshOptions,
+    pub stats: Stats,
+    /// Modules in the derived string, and derivation steps run (for the stats).
+    modules: usize,
+    steps: u32,
+    /// For each module of the string the turtle read, the module of the derived string it came
+    /// from (empty when they are the same string): the mesh's provenance names derived modules.
+    turtle_origin: Vec<u32>,
+}
+
+impl Plant {
+    /// Meshes `skeleton`, which the turtle drew from `derivation`'s string after `steps` steps.
+    pub fn new(
+        skeleton: Skeleton,
+        options: &MeshOptions,
+        derivation: &Derivation,
+        steps: u32,
+    ) -> Plant {
+        let mut plant = Plant {
+            skeleton,
+            modules: derivation.string.len(),
+            steps,
+            turtle_origin: derivation.turtle_origin.clone(),
+            ..Plant::default()
+        };
+        plant.remesh(options);
+        plant
+    }
+
+    /// Meshes the skeleton again with other options (the stats follow).
+    pub fn remesh(&mut self, options: &MeshOptions) {
+        self.mesh_options = options.clone();
+        self.mesh = mesh::build_mesh(&self.skeleton, options);
+        self.meshed();
+    }
+
+    /// After a whole new mesh (here or by an editor): provenance in terms of the derived string,
+    /// and the stats.
+    pub(super) fn meshed(&mut self) {
+        if !self.turtle_origin.is_empty() {
+            for pair in self.mesh.ranges.chunks_exact_mut(2) {
+                pair[1] = self
+                    .turtle_origin
+                    .get(pair[1] as usize)
+                    .copied()
+                    .unwrap_or(pair[1]);
+            }
+        }
+        self.stats = Stats::new(
+            self.modules,
+            self.skeleton.segments.len(),
+            self.steps,
+            &self.mesh,
+        );
+    }
+
+    /// True when everything drawn lies in the plane z = 0 ([`Skeleton::is_flat`]).
+    pub fn is_flat(&self) -> bool {
+        self.skeleton.is_flat()
+    }
+}
