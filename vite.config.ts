@@ -28,5 +28,6 @@ export default defineConfig({
     root: repoRoot,
     environment: 'node',
     include: ['web/src/**/*.test.ts', 'tests/core/**/*.test.ts'],
+    setupFiles: ['tests/unit-setup.ts'],
   },
 });

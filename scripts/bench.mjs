@@ -69,11 +69,11 @@ const copyOut = (b) => [b.positions(), b.normals(), b.colors(), b.indices(), b.r
 const pipelineRows = [];
 {
   const source = example('game-tree.lsys');
-  const probe = build(source);
+  const probe = build(source, {});
   const stats = JSON.parse(probe.stats());
   probe.free();
   const { ms, runs } = time(() => {
-    const b = build(source);
+    const b = build(source, {});
     copyOut(b);
     b.free();
   });
@@ -82,10 +82,10 @@ const pipelineRows = [];
 // Issue 4: the mesh stage alone on a million tube vertices (ABOP 2.8a, n = 9, 10 sides), arrays
 // copied out included.
 {
-  const b = build(example('abop-2.08a-ternary-tree.lsys'), 9, undefined, 10, false);
+  const b = build(example('abop-2.08a-ternary-tree.lsys'), { iterations: 9, sides: 10 });
   const stats = JSON.parse(b.stats());
   const { ms, runs } = time(() => {
-    b.remesh(10, false);
+    b.remesh({ sides: 10 });
     copyOut(b);
   });
   b.free();
@@ -95,7 +95,7 @@ const pipelineRows = [];
 // descendants re-placed and re-meshed, and the changed vertices copied out (what the studio
 // uploads to the GPU). Target: 5 ms in wasm.
 {
-  const b = build(example('game-tree.lsys'));
+  const b = build(example('game-tree.lsys'), {}).intoEditor();
   const paths = JSON.parse(b.branchPaths());
   for (const [path, what] of [[[0, 0], 'a bough, 120 descendants'], [[0, 2, 0], 'a mid-level branch, 39 descendants']]) {
     const branch = paths.findIndex((p) => p.join() === path.join());

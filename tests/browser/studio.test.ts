@@ -132,6 +132,9 @@ describe('the studio', () => {
     const list = page.locator('.cm-tooltip-autocomplete');
     await list.waitFor({ state: 'visible' });
     expect(await list.textContent()).toContain('#tropism');
+    // CodeMirror ignores Enter for `interactionDelay` (75 ms) after the list opens, so that fast
+    // typing never picks a completion by accident: a user's Enter comes later than that.
+    await page.waitForTimeout(150);
     await page.keyboard.press('Enter'); // accept
     expect(await page.locator('.cm-line').last().textContent()).toBe('#tropism ');
     // Undo the experiment: the example is unchanged and builds as before.

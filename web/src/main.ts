@@ -1,15 +1,15 @@
 // The studio page: creates the pieces of ./studio, ./editor and ./view and connects them, each
 // piece after those it needs (see index.html for the page, ARCHITECTURE.md for the pieces).
 import './style.css';
-import { coreVersion, grammarDirectives, initCore, turtleCommands } from './core';
-import { createGrammarEditor, type GrammarEditor } from './editor';
+import { coreVersion, initCore, languageVocabulary } from './core';
+import { createGrammarEditor, growthAttributes, type GrammarEditor } from './editor';
 import { GrammarStore } from './share/storage';
 import { PlantView } from './view';
 import {
   Autosave, BranchEditSession, BuildClient, ContextView, DerivationControls, GalleryDialog, GalleryThumbnails, GrowthPanel,
   LibraryDialog, LinkState, LivePreview, Notice, ShareDialog, SliderPanel, TextOpening, ViewOptions, ViewTools,
   attachSplitter, browserStorage, connectTestHook, createBuildWorker, emptyTestHook, fetchExample, installDownloads, installDrop,
-  installFileMenu, installShareButton, installShortcuts, openPastedLinks, renderShortcutHelp, showStatus, sidesChoices,
+  installFileMenu, installShareButton, installShortcuts, openPastedLinks, renderShortcutHelp, reportCoreCrashes, showStatus, sidesChoices,
   startingText, studioElements, type ShortcutAction, type StudioElements, type StudioTestHook,
 } from './studio';
 
@@ -46,11 +46,18 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
       contexts.setBuild(result.build, result.inspector, result.source);
       if (editor) contexts.cursorAt(editor.view.state.selection.main.head);
     },
+    crashed: reportCoreCrashes(notice),
   });
   const sliders = new SliderPanel(els.sliders, els.constantsCount, els.constantsEmpty, {
     replaceRange: (from, to, insert, history) => editor?.replaceRange(from, to, insert, history),
   });
-  const growth = new GrowthPanel(els.growthRows, els.growthCount, { text: currentText, replaceRange: (from, to, insert) => editor?.replaceRange(from, to, insert) });
+  const vocabulary = languageVocabulary();
+  const growth = new GrowthPanel(
+    els.growthRows,
+    els.growthCount,
+    { text: currentText, replaceRange: (from, to, insert) => editor?.replaceRange(from, to, insert) },
+    growthAttributes(vocabulary),
+  );
   const grammarEditor = createGrammarEditor({
     parent: els.editor,
     doc: start.text,
@@ -61,8 +68,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
       autosave.changed(text);
     },
     diagnose: (text) => preview.feed.diagnose(text),
-    commands: turtleCommands(),
-    directives: grammarDirectives(),
+    vocabulary,
     onCursor: (pos) => contexts.cursorAt(pos),
   });
   editor = grammarEditor;

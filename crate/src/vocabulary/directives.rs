@@ -52,8 +52,10 @@ impl DirectiveKind {
 }
 
 impl Serialize for DirectiveKind {
+    /// The kind's identifier (`Angle`, `ShapeWidth`): what code refers to a directive by, so that
+    /// its spelling lives only in the table.
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
-        serializer.serialize_str(self.name())
+        serializer.serialize_str(&format!("{self:?}"))
     }
 }
 
@@ -373,9 +375,6 @@ pub const DIRECTIVES: &[DirectiveInfo] = &[
         "The maximum depth of homomorphism rules (default 16)."),
     row("decomposition_depth", D::DecompositionDepth, "Decomposition depth", DEPTH, G::Limits,
         "The maximum depth of decomposition rules (default 16)."),
-    row("apex", D::Apex, "Apices", MODULE_LIST, G::Growth,
-        "Growth: the modules that are branch apices (default: modules with productions that are not turtle commands).")
-        .repeatable().enable(&["A"]),
     row("lifetime", D::Lifetime, "Lifetime", &[&[LIFETIME[0], LIFETIME[1]], &LIFETIME], G::Growth,
         "Growth: MB + Round(Rand()·VB) apices keep growing each step, shared by the upper, middle and lower thirds (default 0.6 0.3 0.1); the others stop.")
         .usage("E0209", "(the mean and variance of the surviving branches, then the shares of the upper, middle and lower thirds)")
@@ -404,6 +403,9 @@ pub const DIRECTIVES: &[DirectiveInfo] = &[
         "Growth: every segment turns towards the horizontal direction (x, 0, z) by angle + Round(Rand()·variation) degrees per step.")
         .usage("E0209", ": a horizontal direction other than 0 0, and the degrees per step")
         .enable(&["1", "0", "2"]),
+    row("apex", D::Apex, "Apices", MODULE_LIST, G::Growth,
+        "Growth: the modules that are branch apices (default: modules with productions that are not turtle commands).")
+        .repeatable().enable(&["A"]),
 ];
 
 /// The row of `kind` (the first of its spellings).

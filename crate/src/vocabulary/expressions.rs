@@ -1,7 +1,7 @@
 //! What expressions may call and read: functions (LANGUAGE.md sections 4 and 5) and the values
 //! `NumIt` and `MaxIt`.
 
-use serde::{Serialize, Serializer};
+use serde::Serialize;
 
 /// A function of expressions (trigonometry in degrees).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -128,7 +128,7 @@ pub fn function_named(name: &str) -> Option<&'static FunctionInfo> {
 }
 
 /// A value an expression reads without a parameter.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 pub enum Value {
     /// The step being derived (1 for the first).
     NumIt,
@@ -136,20 +136,10 @@ pub enum Value {
     MaxIt,
 }
 
-impl Serialize for Value {
-    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
-        serializer.serialize_str(match self {
-            Value::NumIt => "numIt",
-            Value::MaxIt => "maxIt",
-        })
-    }
-}
-
 /// One row of the value table.
 #[derive(Clone, Copy, Debug, Serialize)]
 pub struct ValueInfo {
     pub name: &'static str,
-    #[serde(skip)]
     pub value: Value,
     pub doc: &'static str,
 }

@@ -3,8 +3,8 @@
 
 use serde::Serialize;
 
-/// What a keyword line says.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// What a keyword line says (serialized as the variant's identifier, `Axiom`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 pub enum KeywordKind {
     Axiom,
     /// `derivation length: N`, the same as `#iterations N`.
@@ -33,7 +33,6 @@ impl KeywordKind {
 pub struct KeywordInfo {
     /// The word(s) before the colon, in lower case (`derivation length`).
     pub name: &'static str,
-    #[serde(skip)]
     pub kind: KeywordKind,
     /// Other spellings (`ω` for the axiom).
     #[serde(skip_serializing_if = "<[_]>::is_empty")]

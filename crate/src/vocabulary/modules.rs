@@ -4,8 +4,8 @@ use super::params::{Param, ParamKind};
 use super::DirectiveKind;
 use serde::{Serialize, Serializer};
 
-/// What the turtle does when it reads a module.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// What the turtle does when it reads a module (serialized as the variant's identifier).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 pub enum Command {
     /// `F`: move forward and draw a segment (records a polygon vertex inside `{ }`).
     Forward,
@@ -85,13 +85,14 @@ pub enum Meaning {
 }
 
 impl Serialize for Meaning {
-    /// `"turtle"`, `"cut"` or `"group"`.
+    /// The identifier of what the module means: its turtle command (`Forward`, `Push`), `Cut`, or
+    /// its control module (`Switch`, `Pendulum`, `Repeat`).
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
-        serializer.serialize_str(match self {
-            Meaning::Turtle(_) => "turtle",
-            Meaning::Cut => "cut",
-            Meaning::Group(_) => "group",
-        })
+        match self {
+            Meaning::Turtle(c) => c.serialize(serializer),
+            Meaning::Cut => serializer.serialize_str("Cut"),
+            Meaning::Group(g) => serializer.serialize_str(&format!("{g:?}")),
+        }
     }
 }
 

@@ -1,9 +1,9 @@
 // Editing a plant's branches by their Bézier handles (issue 8): the facade over the core's branch
 // editor (crate/src/branches). A branch is a run of segments along one axis between branching
 // points; its path is its root's index, then child indices (docs/LANGUAGE.md, "Branches").
-import { type Build } from '../../../crate/pkg/meristem.js';
+import { type PlantEditor as WasmPlantEditor } from '../../../crate/pkg/meristem.js';
 import { copyMesh, plainBuild, runBuild } from './build';
-import { ownedArray } from './init';
+import { guarded, ownedArray } from './init';
 import type { BuildOptions, MeshBuffers, PlantBuild, PlantStats } from './types';
 
 /** A point or an offset: x, y, z. */
@@ -114,7 +114,7 @@ export function editPlant(source: string, options: BuildOptions = {}): { build: 
     result.free();
     throw error;
   }
-  return { build: plain, editor: new LiveEditor(result) };
+  return { build: plain, editor: new LiveEditor(guarded(() => result.intoEditor())) };
 }
 
 /** The empty edits document. */
@@ -188,19 +188,19 @@ export function validateEdits(value: unknown): { ok: true; document: EditsDocume
   return { ok: true, document: { version: EDITS_VERSION, edits: clean } };
 }
 
-/** A {@link PlantEditor} over a wasm `Build` on this thread. */
+/** A {@link PlantEditor} over the core's `PlantEditor` on this thread. */
 class LiveEditor implements PlantEditor {
   private tree: BranchInfo[] | undefined;
   private byPath: Map<string, number> | undefined;
   private triangleRanges: Uint32Array | undefined;
   private triangles = 0;
 
-  constructor(private result: Build) {}
+  constructor(private core: WasmPlantEditor) {}
 
   branches(): BranchInfo[] {
     if (!this.tree) {
-      const paths = JSON.parse(this.result.branchPaths()) as number[][];
-      const parents = this.result.branchParents();
+      const paths = JSON.parse(guarded(() => this.core.branchPaths())) as number[][];
+      const parents = guarded(() => this.core.branchParents());
       const tree: BranchInfo[] = paths.map((path, index) => ({
         index,
         path,
@@ -220,21 +220,21 @@ class LiveEditor implements PlantEditor {
   }
 
   controlPoints(): Float32Array {
-    return ownedArray(this.result.branchControlPoints());
+    return ownedArray(guarded(() => this.core.branchControlPoints()));
   }
 
   joints(branch: number): Float32Array {
-    return ownedArray(this.result.branchJoints(branch));
+    return ownedArray(guarded(() => this.core.branchJoints(branch)));
   }
 
   parameters(branch: number): Float32Array {
-    return ownedArray(this.result.branchParameters(branch));
+    return ownedArray(guarded(() => this.core.branchParameters(branch)));
   }
 
   branchAt(triangle: number): number | null {
     if (!this.triangleRanges) {
-      this.triangleRanges = ownedArray(this.result.branchRanges());
-      this.triangles = (JSON.parse(this.result.stats()) as PlantStats).triangles;
+      this.triangleRanges = ownedArray(guarded(() => this.core.branchRanges()));
+      this.triangles = (JSON.parse(guarded(() => this.core.stats())) as PlantStats).triangles;
     }
     const r = this.triangleRanges;
     // The last range whose first triangle is at or before `triangle`.
@@ -251,35 +251,36 @@ class LiveEditor implements PlantEditor {
   }
 
   drag(branch: number, handle: Handle, position: Vec3): MeshUpdate {
-    const full = this.result.drag(branch, handle, position[0], position[1], position[2]);
+    const full = guarded(() => this.core.drag(branch, handle, position[0], position[1], position[2]));
     return this.update(full);
   }
 
   applyEdits(document: EditsDocument): { report: EditReport; update: MeshUpdate } {
-    const report = JSON.parse(this.result.applyEdits(JSON.stringify(document))) as EditReport;
+    const report = JSON.parse(guarded(() => this.core.applyEdits(JSON.stringify(document)))) as EditReport;
     return { report, update: this.update(true) };
   }
 
   edits(): EditsDocument {
-    return JSON.parse(this.result.edits()) as EditsDocument;
+    return JSON.parse(guarded(() => this.core.edits())) as EditsDocument;
   }
 
   mesh(): MeshBuffers {
-    return copyMesh(this.result);
+    return copyMesh(this.core);
   }
 
   free(): void {
-    this.result.free();
+    this.core.free();
   }
 
   private update(full: boolean): MeshUpdate {
-    const stats = JSON.parse(this.result.stats()) as PlantStats;
+    const core = this.core;
+    const stats = JSON.parse(guarded(() => core.stats())) as PlantStats;
     if (full) {
       this.triangleRanges = undefined;
-      const mesh = copyMesh(this.result);
+      const mesh = copyMesh(core);
       return {
         full,
-        reason: this.result.changeReason() ?? null,
+        reason: guarded(() => core.changeReason()) ?? null,
         ranges: Uint32Array.of(0, mesh.positions.length / 3),
         positions: mesh.positions,
         normals: mesh.normals,
@@ -288,15 +289,15 @@ class LiveEditor implements PlantEditor {
         stats,
       };
     }
-    return {
+    return guarded(() => ({
       full,
       reason: null,
-      ranges: ownedArray(this.result.changedRanges()),
-      positions: ownedArray(this.result.changedPositions()),
-      normals: ownedArray(this.result.changedNormals()),
-      uvs: ownedArray(this.result.changedUvs()),
+      ranges: ownedArray(core.changedRanges()),
+      positions: ownedArray(core.changedPositions()),
+      normals: ownedArray(core.changedNormals()),
+      uvs: ownedArray(core.changedUvs()),
       mesh: null,
       stats,
-    };
+    }));
   }
 }

@@ -1,7 +1,14 @@
-// The facade over the core's `build`: one call, plain data out, the wasm object freed.
-import { build, buildSketch, type Build, type Explanation as WasmExplanation } from '../../../crate/pkg/meristem.js';
+// The facade over the core's `build`: one call, plain data out, the wasm object freed (or turned
+// into the inspector or the editor that mirror it).
+import {
+  build,
+  type Explanation as WasmExplanation,
+  type PlantBuild as WasmPlantBuild,
+  type PlantEditor as WasmPlantEditor,
+  type PlantInspector as WasmPlantInspector,
+} from '../../../crate/pkg/meristem.js';
 import { byteOffsetToUtf16 } from './offsets';
-import { assertReady, ownedArray } from './init';
+import { assertReady, guarded, ownedArray } from './init';
 import {
   DERIVED_PREVIEW_CHARS,
   type BuildOptions,
@@ -33,7 +40,7 @@ interface RawDiagnostic {
 /**
  * Runs the whole pipeline (parse → resolve → derive → interpret → mesh) on `source` and returns
  * plain data that stays valid after the call: the typed arrays are owned by JavaScript and the
- * core's `Build` object has been freed. Grammar errors never throw: they come back as
+ * core's `PlantBuild` object has been freed. Grammar errors never throw: they come back as
  * `diagnostics` with `ok: false`. A throw means the core itself failed (a bug, e.g. a panic).
  * Requires {@link initCore} to have finished.
  */
@@ -63,8 +70,8 @@ export function inspectPlant(
     result.free();
     throw error;
   }
-  result.releaseGeometry();
-  return { build: plain, inspector: new LiveInspector(result, plain.moduleCount) };
+  const moduleCount = plain.moduleCount;
+  return { build: plain, inspector: new LiveInspector(guarded(() => result.intoInspector()), moduleCount) };
 }
 
 /** A big plant's skeleton as lines, shown while its tubes are meshed (see {@link inspectPlant}). */
@@ -86,13 +93,12 @@ export interface SketchRequest {
 }
 
 /**
- * The pipeline in two steps: up to the turtle with segments as lines (`buildSketch`), the sketch
- * handed to `request.show` when the plant is big, then the tubes (`remesh` with the view options,
- * the very mesh `build` makes). The mesh stage's time is the remesh's.
+ * The pipeline in two steps: up to the turtle with segments as lines (a `sketch` build), the
+ * sketch handed to `request.show` when the plant is big, then the tubes (`remesh` with the view
+ * options, the very mesh a plain build makes). The mesh stage's time is the remesh's.
  */
-function runSketched(source: string, options: BuildOptions, request: SketchRequest): Build {
-  assertReady();
-  const result = buildSketch(source, options.iterations ?? undefined, options.seed ?? undefined, () => performance.now());
+function runSketched(source: string, options: BuildOptions, request: SketchRequest): WasmPlantBuild {
+  const result = runBuild(source, { ...options, sketch: true });
   try {
     if (result.ok) {
       const segments = (JSON.parse(result.stats()) as PlantStats).segments;
@@ -101,7 +107,7 @@ function runSketched(source: string, options: BuildOptions, request: SketchReque
       }
     }
     const start = performance.now();
-    result.remesh(options.sides ?? 6, options.smoothAll ?? false);
+    guarded(() => result.remesh({ sides: options.sides, smoothAll: options.smoothAll }));
     meshMillis.set(result, performance.now() - start);
     return result;
   } catch (error) {
@@ -111,19 +117,14 @@ function runSketched(source: string, options: BuildOptions, request: SketchReque
 }
 
 /** The remesh time of sketched builds (their own timings hold the line fallback's). */
-const meshMillis = new WeakMap<Build, number>();
+const meshMillis = new WeakMap<WasmPlantBuild, number>();
 
 /** Runs the core's `build` (for this folder's facades; the caller frees the result). */
-export function runBuild(source: string, options: BuildOptions): Build {
+export function runBuild(source: string, options: BuildOptions & { sketch?: boolean }): WasmPlantBuild {
   assertReady();
-  return build(
-    source,
-    options.iterations ?? undefined,
-    options.seed ?? undefined,
-    options.sides ?? undefined,
-    options.smoothAll ?? undefined,
-    () => performance.now(), // the core reads no clock: it reads ours between its stages
-  );
+  const { iterations, seed, sides, smoothAll, sketch } = options;
+  // The core reads no clock: it reads ours between its stages.
+  return guarded(() => build(source, { iterations, seed, sides, smoothAll, sketch }, () => performance.now()));
 }
 
 interface RawProduction {
@@ -135,8 +136,8 @@ interface RawProduction {
 }
 
 /** Copies a wasm build into plain data (for this folder's facades; the caller frees the build). */
-export function plainBuild(source: string, result: Build): PlantBuild {
-  return {
+export function plainBuild(source: string, result: WasmPlantBuild): PlantBuild {
+  return guarded(() => ({
     ok: result.ok,
     diagnostics: (JSON.parse(result.diagnostics()) as RawDiagnostic[]).map(toDiagnostic),
     stats: JSON.parse(result.stats()) as PlantStats,
@@ -156,16 +157,19 @@ export function plainBuild(source: string, result: Build): PlantBuild {
     timings: withMeshTime((JSON.parse(result.timings()) as StageTimings | null) ?? NO_TIMINGS, meshMillis.get(result)),
     flat: result.flat,
     grammarIterations: result.grammarIterations,
-  };
+  }));
 }
 
 function withMeshTime(timings: StageTimings, mesh: number | undefined): StageTimings {
   return mesh === undefined ? timings : { ...timings, mesh: timings.mesh + mesh };
 }
 
-/** Copies every mesh array of a wasm build out of wasm memory. */
-export function copyMesh(result: Build): MeshBuffers {
-  return {
+/** The core's classes that hold a plant's mesh: a build and an editor. */
+type MeshHolder = WasmPlantBuild | WasmPlantEditor;
+
+/** Copies every mesh array of a wasm build or editor out of wasm memory. */
+export function copyMesh(result: MeshHolder): MeshBuffers {
+  return guarded(() => ({
     positions: ownedArray(result.positions()),
     normals: ownedArray(result.normals()),
     colors: ownedArray(result.colors()),
@@ -175,7 +179,7 @@ export function copyMesh(result: Build): MeshBuffers {
     materialRanges: ownedArray(result.materialRanges()),
     lines: ownedArray(result.lines()),
     lineColors: ownedArray(result.lineColors()),
-  };
+  }));
 }
 
 /** Copies a wasm explanation into plain data and frees it. */
@@ -196,31 +200,32 @@ function toExplanation(explained: WasmExplanation | undefined): Explanation | nu
   }
 }
 
-/** A {@link PlantInspector} over a wasm `Build` on this thread. */
+/** A {@link PlantInspector} over the core's `PlantInspector` on this thread. */
 class LiveInspector implements PlantInspector {
   constructor(
-    private result: Build | undefined,
+    private result: WasmPlantInspector | undefined,
     private readonly moduleCount: number,
   ) {}
 
   explain(production: number): Promise<Explanation | null> {
-    return Promise.resolve(toExplanation(this.result?.explain(production)));
+    return Promise.resolve(toExplanation(guarded(() => this.result?.explain(production))));
   }
 
   explainModule(module: number): Promise<Explanation | null> {
     if (!Number.isInteger(module) || module < 0) return Promise.resolve(null);
-    return Promise.resolve(toExplanation(this.result?.explainModule(module)));
+    return Promise.resolve(toExplanation(guarded(() => this.result?.explainModule(module))));
   }
 
   moduleTexts(start: number, count: number): Promise<string[]> {
-    if (!this.result) return Promise.resolve([]);
+    const result = this.result;
+    if (!result) return Promise.resolve([]);
     const from = Math.max(0, Math.min(start, this.moduleCount));
     const n = Math.max(0, Math.min(count, this.moduleCount - from));
-    return Promise.resolve(JSON.parse(this.result.moduleTexts(from, n)) as string[]);
+    return Promise.resolve(JSON.parse(guarded(() => result.moduleTexts(from, n))) as string[]);
   }
 
   derivedHash(): Promise<string> {
-    return Promise.resolve(this.result?.derivedHash() ?? '');
+    return Promise.resolve(guarded(() => this.result?.derivedHash()) ?? '');
   }
 
   free(): void {

@@ -1,12 +1,7 @@
 // The facade over the core's file writers: one call, the file's bytes out, the wasm object freed.
-import {
-  exportModel as coreExportModel,
-  exportModelReporting,
-  exportModelWithEdits,
-  type ExportedModel,
-} from '../../../crate/pkg/meristem.js';
+import { exportModel as coreExportModel, type ExportedModel } from '../../../crate/pkg/meristem.js';
 import type { EditsDocument } from './branches';
-import { assertReady } from './init';
+import { assertReady, guarded } from './init';
 import type { BuildOptions } from './types';
 
 /** A model format the core writes, named by its file extension. */
@@ -48,17 +43,20 @@ export interface ExportOptions extends BuildOptions {
  * that built), the edits are malformed, or the core fails. Requires {@link initCore}.
  */
 export function exportModel(source: string, format: ModelFormat, options: ExportOptions = {}): ModelFile {
+  return runExport(source, format, options);
+}
+
+/** The core's export options for `format` and `options`. */
+function coreOptions(format: ModelFormat, options: ExportOptions) {
+  const { iterations, seed, sides, smoothAll, name, edits } = options;
+  return { format, name, iterations, seed, sides, smoothAll, edits: edits ? JSON.stringify(edits) : undefined };
+}
+
+/** Runs the core's export, telling `onProgress` each stage when given. */
+function runExport(source: string, format: ModelFormat, options: ExportOptions, onProgress?: (progress: ExportProgress) => void): ModelFile {
   assertReady();
-  const args = [
-    format,
-    options.name ?? 'plant',
-    options.iterations ?? undefined,
-    options.seed ?? undefined,
-    options.sides ?? undefined,
-    options.smoothAll ?? undefined,
-  ] as const;
-  const result = options.edits ? exportModelWithEdits(source, JSON.stringify(options.edits), ...args) : coreExportModel(source, ...args);
-  return takeFile(result);
+  const progress = onProgress && ((stage: ExportStage, index: number, count: number) => onProgress({ stage, index, count }));
+  return takeFile(guarded(() => coreExportModel(source, coreOptions(format, options), progress)));
 }
 
 /** A stage of an export, as the core reports it (in this order; `applying edits` only with edits). */
@@ -81,25 +79,13 @@ export function exportModelWithProgress(
   options: ExportOptions,
   onProgress: (progress: ExportProgress) => void,
 ): ModelFile {
-  assertReady();
-  const result = exportModelReporting(
-    source,
-    options.edits ? JSON.stringify(options.edits) : '',
-    format,
-    options.name ?? 'plant',
-    options.iterations ?? undefined,
-    options.seed ?? undefined,
-    options.sides ?? undefined,
-    options.smoothAll ?? undefined,
-    (stage: ExportStage, index: number, count: number) => onProgress({ stage, index, count }),
-  );
-  return takeFile(result);
+  return runExport(source, format, options, onProgress);
 }
 
 /** Copies a wasm file out of wasm memory and frees it. */
 function takeFile(result: ExportedModel): ModelFile {
   try {
-    return { fileName: result.fileName, mimeType: result.mimeType, bytes: result.bytes() };
+    return guarded(() => ({ fileName: result.fileName, mimeType: result.mimeType, bytes: result.bytes() }));
   } finally {
     result.free();
   }

@@ -1,7 +1,7 @@
 // The facade over the core's importers (`crate/src/import`): another dialect's text in, Meristem
 // text and notes out. The studio's file opening (studio/grammar-files.ts) calls this.
-import { import_grammar } from '../../../crate/pkg/meristem.js';
-import { assertReady } from './init';
+import { importGrammar as coreImportGrammar } from '../../../crate/pkg/meristem.js';
+import { assertReady, guarded } from './init';
 
 /** The notations the core imports: Green's RL-systems, Lparser `.ls`, cpfg `.l`, L-Py `.lpy`. */
 export type Dialect = 'green' | 'lparser' | 'cpfg' | 'lpy';
@@ -31,5 +31,5 @@ export interface ImportedGrammar {
  */
 export function importGrammar(text: string, fileName: string): ImportedGrammar {
   assertReady();
-  return JSON.parse(import_grammar(text, fileName)) as ImportedGrammar;
+  return JSON.parse(guarded(() => coreImportGrammar(text, fileName))) as ImportedGrammar;
 }

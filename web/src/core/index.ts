@@ -1,6 +1,6 @@
 // The core: the Rust/WebAssembly pipeline behind an idiomatic TypeScript facade.
 // Invariant: no other TypeScript imports crate/pkg; everything else uses these names.
-export { initCore, coreVersion } from './init';
+export { initCore, coreVersion, CoreCrashed } from './init';
 export { buildPlant, inspectPlant, type PlantSketch, type SketchRequest } from './build';
 export {
   exportModel,
@@ -12,7 +12,23 @@ export {
   type ModelFile,
   type ModelFormat,
 } from './export';
-export { grammarDirectives, turtleCommands, type GrammarDirective, type TurtleCommand } from './commands';
+export {
+  argumentsText,
+  directiveOfKind,
+  languageVocabulary,
+  paramsText,
+  writtenDirective,
+  writtenKeyword,
+  type DirectiveInfo,
+  type FunctionInfo,
+  type KeywordInfo,
+  type ModuleCategory,
+  type ModuleInfo,
+  type Param,
+  type ParamKind,
+  type ValueInfo,
+  type Vocabulary,
+} from './vocabulary';
 export { byteOffsetToUtf16 } from './offsets';
 export { importGrammar, type Dialect, type ImportedGrammar, type ImportNote } from './import';
 export {

@@ -1,9 +1,21 @@
-// Loading the WebAssembly core. This folder is the only TypeScript that imports crate/pkg.
-import init, { initSync, version } from '../../../crate/pkg/meristem.js';
+// Loading the WebAssembly core, and what happens when it fails. This folder is the only
+// TypeScript that imports crate/pkg.
+import init, { initSync, onPanic, version } from '../../../crate/pkg/meristem.js';
 import wasmUrl from '../../../crate/pkg/meristem_bg.wasm?url';
 
 let memory: WebAssembly.Memory | undefined;
 let loading: Promise<void> | undefined;
+/** The message of the core's last panic, until the call that panicked throws. */
+let panicMessage: string | undefined;
+
+/**
+ * A panic of the core (a bug): `message` is the core's own (`the core crashed (a bug): panicked
+ * at …`). The core instance that threw it must not be used again: a worker is replaced, the page
+ * asks for a reload.
+ */
+export class CoreCrashed extends Error {
+  override name = 'CoreCrashed';
+}
 
 /**
  * Instantiates the core once; later calls return the same promise.
@@ -15,12 +27,15 @@ let loading: Promise<void> | undefined;
  */
 export function initCore(wasm?: BufferSource): Promise<void> {
   if (loading) return loading;
+  const listen = () => onPanic((message: string) => (panicMessage = message));
   if (wasm !== undefined) {
     memory = initSync({ module: wasm }).memory;
+    listen();
     loading = Promise.resolve();
   } else {
     loading = init({ module_or_path: wasmUrl }).then((output) => {
       memory = output.memory;
+      listen();
     });
   }
   return loading;
@@ -29,12 +44,27 @@ export function initCore(wasm?: BufferSource): Promise<void> {
 /** The core's version (the crate version), for the about line and bug reports. */
 export function coreVersion(): string {
   assertReady();
-  return version();
+  return guarded(() => version());
 }
 
 /** Throws a clear error when the core is used before {@link initCore} finished. */
 export function assertReady(): void {
   if (memory === undefined) throw new Error('Meristem core used before initCore() finished');
+}
+
+/**
+ * Runs `call` on the core. A panic of the core comes out as {@link CoreCrashed} with the core's
+ * message (instead of WebAssembly's bare "unreachable"); other errors pass unchanged.
+ */
+export function guarded<T>(call: () => T): T {
+  try {
+    return call();
+  } catch (error) {
+    if (!(error instanceof WebAssembly.RuntimeError)) throw error;
+    const message = panicMessage ?? `the core crashed (a bug): ${error.message}`;
+    panicMessage = undefined;
+    throw new CoreCrashed(message, { cause: error });
+  }
 }
 
 /**

@@ -1,5 +1,7 @@
-// The plain data that crosses from the core into the studio. Nothing here refers to WebAssembly:
-// the rest of the front end programs against these types only.
+// The plain data that crosses from the core into the studio. Nothing here refers to WebAssembly
+// (the options type is the core's declaration, a type only): the rest of the front end programs
+// against these types only.
+import type { BuildOptions as CoreBuildOptions } from '../../../crate/pkg/meristem.js';
 
 /** How bad a diagnostic is; an `error` means the build produced no geometry. */
 export type Severity = 'error' | 'warning';
@@ -69,17 +71,11 @@ export interface MeshBuffers {
   lineColors: Float32Array;
 }
 
-/** Options of {@link buildPlant}. */
-export interface BuildOptions {
-  /** Derivation steps; omitted = the grammar's `#iterations` (0 when the grammar has none). */
-  iterations?: number;
-  /** Seed of the random generator (a whole number); omitted = the grammar's `#seed`. */
-  seed?: number;
-  /** Sides of each branch tube, 3 to 64; omitted = 6. */
-  sides?: number;
-  /** Draw every axis as a smooth generalized cylinder, not only those inside `@Gc … @Ge`. */
-  smoothAll?: boolean;
-}
+/**
+ * Options of {@link buildPlant}: the core's own `BuildOptions` (declared once, beside the boundary
+ * in `crate/src/wasm.rs`) without `sketch`, which the facade sets itself.
+ */
+export type BuildOptions = Omit<CoreBuildOptions, 'sketch'>;
 
 /**
  * How long each stage of one build took, in milliseconds, measured with `performance.now()` read

@@ -1,13 +1,11 @@
 import { describe, expect, it } from 'vitest';
-import { readFileSync } from 'node:fs';
 import { CompletionContext, type CompletionResult } from '@codemirror/autocomplete';
 import { EditorState } from '@codemirror/state';
-import { grammarDirectives, initCore, turtleCommands } from '../core';
+import { languageVocabulary } from '../core';
 import { grammarCompletionSource } from './completion';
 
-// The real tables from the core, so the test follows the Rust tables.
-await initCore(readFileSync(new URL('../../../crate/pkg/meristem_bg.wasm', import.meta.url)));
-const source = grammarCompletionSource(turtleCommands(), grammarDirectives());
+// The real vocabulary from the core, so the test follows the Rust tables.
+const source = grammarCompletionSource(languageVocabulary());
 
 /** Completions at the `|` in `text`. */
 function complete(text: string, explicit = false): CompletionResult | null {

@@ -1,38 +1,33 @@
-// Completion from the core's tables: `#` directives at the start of a line, section keywords, and
+// Completion from the core's vocabulary: `#` directives at the start of a line, keywords, and
 // the turtle commands with multi-character names (`@O`, `~l`, `?P`, …), each with its parameters
 // and its one-line doc. Ctrl-Space anywhere in a rule lists every turtle command. Inside an
 // expression (parameters, conditions, a `#define`'s value) the document's `#define` names.
 import { autocompletion, type Completion, type CompletionContext, type CompletionResult } from '@codemirror/autocomplete';
 import type { Extension } from '@codemirror/state';
-import type { GrammarDirective, TurtleCommand } from '../core';
-import { defineNames } from './defines';
+import { argumentsText, paramsText, writtenDirective, writtenKeyword, type Vocabulary } from '../core';
+import { defineDirective, defineNames } from './defines';
 
-/** Words that open a line of their own (docs/LANGUAGE.md). */
-const KEYWORDS: readonly { label: string; info: string }[] = [
-  { label: 'axiom:', info: 'The initial string ω (also written ω:).' },
-  { label: 'homomorphism:', info: 'Start the rules that rewrite the string for the turtle only.' },
-  { label: 'decomposition:', info: 'Start the rules applied after each step until nothing changes.' },
-  { label: 'maximum depth:', info: 'The depth limit of the homomorphism or decomposition section above.' },
-  { label: 'derivation length:', info: 'The number of derivation steps (as #iterations).' },
-  { label: 'endlsystem', info: 'End of the grammar: later lines are ignored.' },
-];
-
-/** The completion options for the tables, built once per editor. */
-export function completionOptions(commands: readonly TurtleCommand[], directives: readonly GrammarDirective[]) {
-  const directive: Completion[] = directives.map((d) => ({
-    label: `#${d.name}`,
-    detail: d.args,
+/** The completion options for the vocabulary, built once per editor. */
+export function completionOptions(vocabulary: Vocabulary) {
+  const directive: Completion[] = vocabulary.directives.map((d) => ({
+    label: writtenDirective(d),
+    detail: argumentsText(d),
     info: d.doc,
     type: 'keyword',
-    apply: `#${d.name} `,
+    apply: `${writtenDirective(d)} `,
   }));
-  const command: Completion[] = commands.map((c) => ({
+  const command: Completion[] = vocabulary.modules.map((c) => ({
     label: c.name,
-    detail: c.params.length > 0 ? `(${c.params.join(', ')})` : undefined,
+    detail: c.params.length > 0 ? `(${paramsText(c.params)})` : undefined,
     info: c.doc,
     type: 'function',
   }));
-  const keyword: Completion[] = KEYWORDS.map((k) => ({ label: k.label, info: k.info, type: 'keyword', apply: `${k.label} ` }));
+  const keyword: Completion[] = vocabulary.keywords.map((k) => ({
+    label: writtenKeyword(k),
+    info: k.doc,
+    type: 'keyword',
+    apply: `${writtenKeyword(k)} `,
+  }));
   return { directive, command, keyword };
 }
 
@@ -42,7 +37,9 @@ export function completionOptions(commands: readonly TurtleCommand[], directives
  * value.
  */
 export function inExpression(before: string): boolean {
-  if (/^\s*#define\s+\w+\s+/.test(before)) return true;
+  const define = defineDirective();
+  const afterDefine = before.trimStart();
+  if (afterDefine.startsWith(define) && /^\s+\w+\s+/.test(afterDefine.slice(define.length))) return true;
   if (/^\s*#/.test(before)) return false;
   let depth = 0;
   for (const char of before) depth += char === '(' ? 1 : char === ')' ? -1 : 0;
@@ -57,14 +54,14 @@ function defineCompletions(text: string, exceptLine: number): Completion[] {
   for (const d of defineNames(text)) {
     if (d.line === exceptLine || seen.has(d.name)) continue;
     seen.add(d.name);
-    options.push({ label: d.name, detail: `= ${d.value}`, info: `#define ${d.name} ${d.value} (line ${d.line})`, type: 'constant' });
+    options.push({ label: d.name, detail: `= ${d.value}`, info: `${defineDirective()} ${d.name} ${d.value} (line ${d.line})`, type: 'constant' });
   }
   return options;
 }
 
 /** The completion source of the grammar language. */
-export function grammarCompletionSource(commands: readonly TurtleCommand[], directives: readonly GrammarDirective[]) {
-  const options = completionOptions(commands, directives);
+export function grammarCompletionSource(vocabulary: Vocabulary) {
+  const options = completionOptions(vocabulary);
   return (context: CompletionContext): CompletionResult | null => {
     const line = context.state.doc.lineAt(context.pos);
     const before = line.text.slice(0, context.pos - line.from);
@@ -102,6 +99,6 @@ export function grammarCompletionSource(commands: readonly TurtleCommand[], dire
 }
 
 /** Completion as one editor extension. */
-export function grammarCompletion(commands: readonly TurtleCommand[], directives: readonly GrammarDirective[]): Extension {
-  return autocompletion({ override: [grammarCompletionSource(commands, directives)] });
+export function grammarCompletion(vocabulary: Vocabulary): Extension {
+  return autocompletion({ override: [grammarCompletionSource(vocabulary)] });
 }

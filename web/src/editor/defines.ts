@@ -2,6 +2,7 @@
 // for completion. A constant whose value is a plain number gets a slider: its range comes from a
 // `// [min, max]` or `// [min, max, step]` comment on its line, else from its value (see
 // `defaultRange`); dragging rewrites the number in place (`formatNumber`).
+import { directiveOfKind, languageVocabulary, writtenDirective } from '../core';
 
 /** A `#define NAME VALUE` line: any value (an expression too), for completion. */
 export interface DefineName {
@@ -31,7 +32,23 @@ export interface DefineConstant {
 }
 
 const NUMBER = String.raw`-?(?:\d+(?:\.\d*)?|\.\d+)`;
-const DEFINE = /^([ \t]*#define[ \t]+)([A-Za-z_]\w*)([ \t]+)(.*?)[ \t]*(?:\/\/(.*))?$/;
+
+let defineLine: RegExp | undefined;
+
+/** A `#define NAME VALUE // comment` line, the directive spelled as the core's vocabulary does. */
+export function definePattern(): RegExp {
+  defineLine ??= new RegExp(String.raw`^([ \t]*${escapeRegExp(defineDirective())}[ \t]+)([A-Za-z_]\w*)([ \t]+)(.*?)[ \t]*(?:\/\/(.*))?$`);
+  return defineLine;
+}
+
+/** `#define` as the vocabulary writes it. */
+export function defineDirective(): string {
+  return writtenDirective(directiveOfKind(languageVocabulary(), 'Define'));
+}
+
+function escapeRegExp(text: string): string {
+  return text.replace(/[.*+?^${}()|[\]\\]/g, '\\$&');
+}
 const PLAIN_NUMBER = new RegExp(`^${NUMBER}$`);
 const RANGE = new RegExp(String.raw`\[\s*(${NUMBER})\s*,\s*(${NUMBER})\s*(?:,\s*(${NUMBER})\s*)?\]`);
 
@@ -50,7 +67,7 @@ function* lines(text: string): Generator<{ text: string; from: number; number: n
 export function defineNames(text: string): DefineName[] {
   const names: DefineName[] = [];
   for (const line of lines(text)) {
-    const match = DEFINE.exec(line.text);
+    const match = definePattern().exec(line.text);
     if (match && match[4] !== '') names.push({ name: match[2], value: match[4], line: line.number });
   }
   return names;
@@ -108,7 +125,7 @@ export function formatNumber(value: number, step: number): string {
 export function defineConstants(text: string): DefineConstant[] {
   const constants: DefineConstant[] = [];
   for (const line of lines(text)) {
-    const match = DEFINE.exec(line.text);
+    const match = definePattern().exec(line.text);
     if (!match || !PLAIN_NUMBER.test(match[4])) continue;
     const numberText = match[4];
     const value = Number(numberText);

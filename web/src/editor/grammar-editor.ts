@@ -4,7 +4,7 @@ import { Decoration, EditorView, type DecorationSet } from '@codemirror/view';
 import { StateEffect, StateField, Transaction } from '@codemirror/state';
 import { forceLinting } from '@codemirror/lint';
 import { isolateHistory } from '@codemirror/commands';
-import type { GrammarDirective, TurtleCommand } from '../core';
+import type { Vocabulary } from '../core';
 import { grammarCompletion } from './completion';
 import { grammarSupport } from './language';
 import { commandHover } from './hover';
@@ -21,10 +21,8 @@ export interface GrammarEditorOptions {
   onChange: (text: string) => void;
   /** Supplies the diagnostics shown for a text. */
   diagnose: Diagnose;
-  /** The core's turtle command table: drives highlighting, completion and hover docs. */
-  commands: readonly TurtleCommand[];
-  /** The core's directive table: drives completion. */
-  directives: readonly GrammarDirective[];
+  /** The core's vocabulary: drives highlighting, completion and hover docs. */
+  vocabulary: Vocabulary;
   /** Called with the cursor's position (UTF-16) whenever it moves or the text changes. */
   onCursor?: (pos: number) => void;
 }
@@ -79,9 +77,9 @@ export function createGrammarEditor(options: GrammarEditorOptions): GrammarEdito
     doc: options.doc,
     extensions: [
       basicSetup,
-      grammarSupport(options.commands),
-      commandHover(options.commands, options.directives),
-      grammarCompletion(options.commands, options.directives),
+      grammarSupport(options.vocabulary),
+      commandHover(options.vocabulary),
+      grammarCompletion(options.vocabulary),
       grammarLinting(options.diagnose),
       studioEditorTheme,
       EditorView.lineWrapping,

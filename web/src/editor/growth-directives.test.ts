@@ -1,7 +1,8 @@
 import { describe, expect, it } from 'vitest';
-import { argumentValues, findDirective, GROWTH_ATTRIBUTES, setArguments, toggleAttribute, validArgument, type TextChange } from './growth-directives';
+import { languageVocabulary } from '../core';
+import { argumentValues, findDirective, growthAttributes, setArguments, toggleAttribute, validArgument, type TextChange } from './growth-directives';
 
-const attribute = (name: string) => GROWTH_ATTRIBUTES.find((a) => a.directive === name)!;
+const attribute = (name: string) => growthAttributes(languageVocabulary()).find((a) => a.directive === name)!;
 const apply = (text: string, change: TextChange | null) => (change ? text.slice(0, change.from) + change.insert + text.slice(change.to) : text);
 
 const TREE = '// A tree\n#angle 30\n#iterations 5\naxiom: F A\nA -> F[+A][-A]\n';

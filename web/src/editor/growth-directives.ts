@@ -1,7 +1,8 @@
-// The growth directives of a grammar's text (#lifetime #speed #shape #shape_width #sun #gravity
-// #wind #apex, docs/LANGUAGE.md "Growth: particle attributes"), read and rewritten for the studio's
-// Growth panel: one directive per line, its arguments separated by spaces (expressions are written
-// without spaces), a `//` comment after them kept.
+// The growth directives of a grammar's text (the vocabulary's growth group, docs/LANGUAGE.md
+// "Growth: particle attributes"), read and rewritten for the studio's Growth panel: one directive
+// per line, its arguments separated by spaces (expressions are written without spaces), a `//`
+// comment after them kept. Their arguments, defaults and labels come from the core's vocabulary.
+import { languageVocabulary, type Param, type Vocabulary } from '../core';
 
 /** One argument of a directive, as the panel edits it. */
 export interface GrowthField {
@@ -13,10 +14,13 @@ export interface GrowthField {
   /** The core's default, for an optional argument. */
   placeholder?: string;
   title: string;
+  /** For a season: the names the core accepts. */
+  choices?: string[];
 }
 
 /** A growth attribute: its directive, its arguments, and what enabling it writes. */
 export interface GrowthAttribute {
+  /** The directive's name (without `#`). */
   directive: string;
   label: string;
   fields: GrowthField[];
@@ -24,91 +28,48 @@ export interface GrowthAttribute {
   defaults: string[];
 }
 
-export const SEASONS = ['summer', 'spring', 'autumn', 'winter'] as const;
+/** The panel's kind of field for a parameter of the vocabulary. */
+function fieldKind(param: Param): GrowthField['kind'] {
+  switch (param.kind) {
+    case 'stepExpression':
+    case 'expression':
+      return 'expression';
+    case 'season':
+      return 'season';
+    case 'modules':
+    case 'name':
+      return 'names';
+    default:
+      return 'number';
+  }
+}
 
-export const GROWTH_ATTRIBUTES: readonly GrowthAttribute[] = [
-  {
-    directive: 'lifetime',
-    label: 'Lifetime',
-    defaults: ['34', '32'],
-    fields: [
-      { name: 'MB', kind: 'expression', title: 'Apices that keep growing at each step, at least' },
-      { name: 'VB', kind: 'expression', title: 'plus Round(Rand() × VB) more' },
-      { name: 'upper', kind: 'number', optional: true, placeholder: '0.6', title: 'Share of the upper third' },
-      { name: 'middle', kind: 'number', optional: true, placeholder: '0.3', title: 'Share of the middle third' },
-      { name: 'lower', kind: 'number', optional: true, placeholder: '0.1', title: 'Share of the lower third' },
-    ],
-  },
-  {
-    directive: 'speed',
-    label: 'Speed',
-    defaults: ['0', '1'],
-    fields: [
-      { name: 'SM', kind: 'expression', title: 'Rewritings per step added to the positional factor' },
-      { name: 'VR', kind: 'expression', title: 'plus Round(Rand() × VR)' },
-      { name: 'PF upper', kind: 'number', optional: true, placeholder: '2', title: 'Positional factor of the upper third' },
-      { name: 'PF middle', kind: 'number', optional: true, placeholder: '1', title: 'Positional factor of the middle third' },
-      { name: 'PF lower', kind: 'number', optional: true, placeholder: '1', title: 'Positional factor of the lower third' },
-    ],
-  },
-  {
-    directive: 'shape',
-    label: 'Length by age',
-    defaults: ['1.5', '3'],
-    fields: [
-      { name: 'GR', kind: 'number', title: 'Growth rate: a segment of age i is GR^i long up to maturity' },
-      { name: 'm', kind: 'number', title: 'Maturity (steps), then logarithmic growth' },
-      { name: 'VR', kind: 'number', optional: true, placeholder: '0', title: 'Random variation, ± Round(Rand() × VR)' },
-    ],
-  },
-  {
-    directive: 'shape_width',
-    label: 'Width by age',
-    defaults: ['1'],
-    fields: [
-      { name: 'VR', kind: 'number', optional: true, placeholder: '0', title: 'Random variation, Round(Rand() × VR)' },
-      { name: 'PF upper', kind: 'number', optional: true, placeholder: '2', title: 'Positional factor of the upper third' },
-      { name: 'PF middle', kind: 'number', optional: true, placeholder: '1', title: 'Positional factor of the middle third' },
-      { name: 'PF lower', kind: 'number', optional: true, placeholder: '0', title: 'Positional factor of the lower third' },
-    ],
-  },
-  {
-    directive: 'sun',
-    label: 'Sun',
-    defaults: ['38', 'summer', '2'],
-    fields: [
-      { name: 'latitude', kind: 'number', title: 'Latitude in degrees (negative: south)' },
-      { name: 'season', kind: 'season', title: 'Season: the sun’s noon altitude' },
-      { name: 'angle', kind: 'number', title: 'Degrees per step the upper and middle segments turn to the sun' },
-    ],
-  },
-  {
-    directive: 'gravity',
-    label: 'Gravity',
-    defaults: ['5', '3'],
-    fields: [
-      { name: 'angle', kind: 'number', title: 'Degrees per step every segment turns down' },
-      { name: 'variation', kind: 'number', optional: true, placeholder: '0', title: 'plus Round(Rand() × variation)' },
-    ],
-  },
-  {
-    directive: 'wind',
-    label: 'Wind',
-    defaults: ['1', '0', '2'],
-    fields: [
-      { name: 'x', kind: 'number', title: 'Wind direction, x' },
-      { name: 'z', kind: 'number', title: 'Wind direction, z' },
-      { name: 'angle', kind: 'number', title: 'Degrees per step every segment turns with the wind' },
-      { name: 'variation', kind: 'number', optional: true, placeholder: '0', title: 'plus Round(Rand() × variation)' },
-    ],
-  },
-  {
-    directive: 'apex',
-    label: 'Apices',
-    defaults: ['A'],
-    fields: [{ name: 'modules', kind: 'names', title: 'The modules that are branch apices (default: those with productions that the turtle does not draw)' }],
-  },
-];
+/**
+ * The growth attributes, read off the core's vocabulary: its directives of the growth group, each
+ * with the fields of its longest form (those beyond its shortest form optional, with the core's
+ * defaults as placeholders) and the arguments the core suggests writing when it is switched on.
+ */
+export function growthAttributes(vocabulary: Vocabulary): GrowthAttribute[] {
+  return vocabulary.directives
+    .filter((d) => d.group === 'growth')
+    .map((d) => {
+      const shortest = Math.min(...d.forms.map((f) => f.length));
+      const longest = d.forms.reduce((a, b) => (b.length > a.length ? b : a), [] as Param[]);
+      return {
+        directive: d.name,
+        label: d.label,
+        defaults: d.enable ?? [],
+        fields: longest.map((p, k) => ({
+          name: p.name,
+          kind: fieldKind(p),
+          optional: k >= shortest || undefined,
+          placeholder: p.default === undefined ? undefined : String(p.default),
+          title: p.doc.charAt(0).toUpperCase() + p.doc.slice(1),
+          choices: p.choices,
+        })),
+      };
+    });
+}
 
 /** A directive found in the text: where its line is and its arguments. */
 export interface FoundDirective {
@@ -150,9 +111,19 @@ export interface TextChange {
   insert: string;
 }
 
+let axiomPattern: RegExp | undefined;
+
+/** A line that starts with the axiom keyword (any of its spellings, any case). */
+function axiomLine(): RegExp {
+  const keyword = languageVocabulary().keywords.find((k) => k.kind === 'Axiom');
+  const spellings = [keyword?.name ?? '', ...(keyword?.aliases ?? [])].filter(Boolean);
+  axiomPattern ??= new RegExp(String.raw`^[ \t]*(?:${spellings.join('|')})\s*:`, 'im');
+  return axiomPattern;
+}
+
 /** Where a new directive line goes: after the last directive line before the axiom, else before the axiom, else at the end. */
 function insertionPoint(text: string): number {
-  const axiom = /^[ \t]*axiom\s*:/im.exec(text);
+  const axiom = axiomLine().exec(text);
   const head = axiom ? text.slice(0, axiom.index) : text;
   let at = -1;
   const directive = /^[ \t]*#\w+[^\n]*(\n|$)/gm;
@@ -182,7 +153,7 @@ export function validArgument(field: GrowthField, value: string): boolean {
     case 'expression':
       return /^[\w.+\-*/^()<>=!&|?:,]+$/.test(v);
     case 'season':
-      return [...SEASONS, 'equinox', 'fall'].includes(v.toLowerCase());
+      return (field.choices ?? []).includes(v.toLowerCase());
     case 'names':
       return /^[A-Za-z][\w]*([ \t]+[A-Za-z][\w]*)*$/.test(v);
   }

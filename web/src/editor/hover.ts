@@ -1,18 +1,19 @@
-// Hover docs: pointing at a turtle command shows its line from the core's command table.
+// Hover docs: pointing at a module with a meaning or a directive shows its row of the core's
+// vocabulary.
 import { syntaxTree } from '@codemirror/language';
 import type { Extension } from '@codemirror/state';
 import { hoverTooltip } from '@codemirror/view';
-import type { GrammarDirective, TurtleCommand } from '../core';
+import { argumentsText, paramsText, writtenDirective, type DirectiveInfo, type ModuleInfo, type Vocabulary } from '../core';
 
-/** Text of the hover for a command, e.g. `F — Move forward by the step length and draw a segment.` */
-export function commandHoverText(command: TurtleCommand): string {
-  const params = command.params.length > 0 ? `(${command.params.join(', ')})` : '';
-  return `${command.name}${params} — ${command.doc}`;
+/** Text of the hover for a module, e.g. `F(l = #step) — Move forward by l and draw a segment.` */
+export function commandHoverText(module: Pick<ModuleInfo, 'name' | 'params' | 'doc'>): string {
+  const params = module.params.length > 0 ? `(${paramsText(module.params)})` : '';
+  return `${module.name}${params} — ${module.doc}`;
 }
 
 /** Text of the hover for a directive, e.g. `#tropism x y z e — The tropism vector…`. */
-export function directiveHoverText(directive: GrammarDirective): string {
-  return `#${directive.name} ${directive.args} — ${directive.doc}`;
+export function directiveHoverText(directive: DirectiveInfo): string {
+  return `${writtenDirective(directive)} ${argumentsText(directive)} — ${directive.doc}`;
 }
 
 /** Syntax node names (token names of the grammar language) that stand for a turtle command. */
@@ -27,9 +28,9 @@ export function tokenClass(nodeName: string): string {
 }
 
 /** A tooltip with the doc of the turtle command or directive under the pointer (not in comments, arrows, …). */
-export function commandHover(commands: readonly TurtleCommand[], directives: readonly GrammarDirective[] = []): Extension {
-  const byName = new Map(commands.map((c) => [c.name, c]));
-  const directiveByName = new Map(directives.map((d) => [`#${d.name}`, d]));
+export function commandHover(vocabulary: Vocabulary): Extension {
+  const byName = new Map(vocabulary.modules.map((c) => [c.name, c]));
+  const directiveByName = new Map(vocabulary.directives.map((d) => [writtenDirective(d), d]));
   return hoverTooltip((view, pos, side) => {
     const node = syntaxTree(view.state).resolveInner(pos, side);
     const kind = tokenClass(node.name);

@@ -7,3 +7,4 @@ export { grammarCompletion, grammarCompletionSource } from './completion';
 export { toEditorDiagnostics, grammarLinting, LINT_DELAY_MS, type Diagnose } from './diagnostics';
 export { studioEditorTheme } from './theme';
 export { defineConstants, defineNames, defaultRange, defaultStep, formatNumber, type DefineConstant, type DefineName } from './defines';
+export { growthAttributes, type GrowthAttribute, type GrowthField } from './growth-directives';

@@ -1,12 +1,10 @@
 import { describe, expect, it } from 'vitest';
 import { highlightTree, tagHighlighter, tags } from '@lezer/highlight';
-import { readFileSync } from 'node:fs';
-import { initCore, turtleCommands, type TurtleCommand } from '../core';
+import { languageVocabulary } from '../core';
 import { grammarLanguage, grammarTags, productionParts } from './language';
 
-// The real command table from the core, so the test follows the Rust table.
-await initCore(readFileSync(new URL('../../../crate/pkg/meristem_bg.wasm', import.meta.url)));
-const commands: TurtleCommand[] = turtleCommands();
+// The real vocabulary from the core, so the test follows the Rust table.
+const vocabulary = languageVocabulary();
 
 /** A highlighter that names each token class, so tests read like the language. */
 const names = tagHighlighter([
@@ -28,7 +26,7 @@ const names = tagHighlighter([
 
 /** The highlighted tokens of `text` as `class:text` strings, in order. */
 function tokens(text: string): string[] {
-  const tree = grammarLanguage(commands).parser.parse(text);
+  const tree = grammarLanguage(vocabulary).parser.parse(text);
   const out: string[] = [];
   highlightTree(tree, names, (from, to, classes) => out.push(`${classes}:${text.slice(from, to)}`));
   return out;
@@ -132,7 +130,7 @@ const parts = tagHighlighter([
 ]);
 
 function partTokens(text: string): string[] {
-  const tree = grammarLanguage(commands).parser.parse(text);
+  const tree = grammarLanguage(vocabulary).parser.parse(text);
   const out: string[] = [];
   // Adjacent tokens of one part are joined: the part is one highlighted run.
   let last = { classes: '', to: -1 };

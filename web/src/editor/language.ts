@@ -1,9 +1,9 @@
 // Syntax highlighting of the grammar language as a CodeMirror StreamLanguage, driven by the core's
-// turtle command table (so a command added in Rust is highlighted without touching this file).
+// vocabulary (so a command added in Rust is highlighted without touching this file).
 import { HighlightStyle, StreamLanguage, syntaxHighlighting, type StringStream } from '@codemirror/language';
 import type { Extension } from '@codemirror/state';
 import { Tag, tags } from '@lezer/highlight';
-import type { TurtleCommand } from '../core';
+import type { Vocabulary } from '../core';
 
 /** Highlight tags of the grammar language beyond the standard ones. */
 export const grammarTags = {
@@ -42,17 +42,18 @@ const ARROW = /-->|->|→/;
 
 /**
  * Splits a production line into its parts: `left < pred > right : condition -> successor`, with
- * a leading `label:` skipped. Only `<`, `>` and `:` outside parentheses count. Null when the line
- * has no arrow (not a production).
+ * a leading `label:` skipped (unless it is one of `keywords`, e.g. `axiom`). Only `<`, `>` and `:`
+ * outside parentheses count. Null when the line has no arrow (not a production).
  */
-export function productionParts(line: string): ProductionParts | null {
+export function productionParts(line: string, keywords: ReadonlySet<string> = new Set()): ProductionParts | null {
   const arrowMatch = ARROW.exec(line);
   if (!arrowMatch) return null;
   const comment = line.indexOf('//');
   if (comment >= 0 && comment < arrowMatch.index) return null;
   const arrow = arrowMatch.index;
   const label = /^\s*[A-Za-z_]\w*\s*:/.exec(line);
-  const start = label && !label[0].trim().startsWith('axiom') && label[0].length <= arrow ? label[0].length : 0;
+  const isKeyword = label !== null && keywords.has(label[0].replace(':', '').trim().toLowerCase());
+  const start = label && !isKeyword && label[0].length <= arrow ? label[0].length : 0;
   let less = -1;
   let greater = -1;
   let colon = -1;
@@ -101,17 +102,20 @@ function partAt(parts: ProductionParts | null, pos: number): string | null {
 
 const IDENTIFIER = /^[A-Za-z_][A-Za-z0-9_]*/;
 
-/** The tokenizer for a given command table: names sorted longest first so the longest wins. */
-function tokenizer(commands: readonly TurtleCommand[]) {
-  const names = commands.map((c) => c.name).sort((a, b) => b.length - a.length);
-  const category = new Map(commands.map((c) => [c.name, c.category]));
+/** The tokenizer for a vocabulary: module names sorted longest first so the longest wins. */
+function tokenizer(vocabulary: Vocabulary) {
+  const modules = vocabulary.modules;
+  const names = modules.map((c) => c.name).sort((a, b) => b.length - a.length);
+  const category = new Map(modules.map((c) => [c.name, c.category]));
+  // Keywords with a colon stand at the start of a line, like production labels.
+  const keywords = new Set(vocabulary.keywords.filter((k) => k.colon).flatMap((k) => [k.name, ...(k.aliases ?? [])]));
 
   const token = (stream: StringStream, state: LineState): string | null => {
     if (stream.sol()) {
       state.directive = false;
       state.atLineStart = true;
       const text = stream.string;
-      state.parts = /^\s*(#|\/\/)/.test(text) ? null : productionParts(text);
+      state.parts = /^\s*(#|\/\/)/.test(text) ? null : productionParts(text, keywords);
       state.depth = 0;
       state.afterArrow = false;
       state.weight = false;
@@ -140,7 +144,7 @@ function tokenizer(commands: readonly TurtleCommand[]) {
       const word = stream.match(IDENTIFIER, false) as RegExpMatchArray | null;
       if (word && stream.string.slice(stream.pos + word[0].length).trimStart().startsWith(':')) {
         stream.match(IDENTIFIER);
-        return word[0] === 'axiom' ? 'keyword' : 'labelName';
+        return keywords.has(word[0].toLowerCase()) ? 'keyword' : 'labelName';
       }
     }
     if (state.depth === 0 && (stream.match('-->') || stream.match('->') || stream.match('→'))) {
@@ -182,13 +186,13 @@ function tokenizer(commands: readonly TurtleCommand[]) {
   };
 }
 
-/** The grammar language (`.lsys`) for CodeMirror, with `//` line comments, for a command table. */
-export function grammarLanguage(commands: readonly TurtleCommand[]): StreamLanguage<LineState> {
+/** The grammar language (`.lsys`) for CodeMirror, with `//` line comments, for a vocabulary. */
+export function grammarLanguage(vocabulary: Vocabulary): StreamLanguage<LineState> {
   return StreamLanguage.define<LineState>({
     name: 'lsystem',
     startState: () => ({ directive: false, atLineStart: true, parts: null, depth: 0, afterArrow: false, weight: false }),
     copyState: (state) => ({ ...state }),
-    token: tokenizer(commands),
+    token: tokenizer(vocabulary),
     tokenTable: {
       turtleCommand: grammarTags.turtleCommand,
       module: grammarTags.module,
@@ -227,6 +231,6 @@ export const grammarHighlightStyle = HighlightStyle.define([
 ]);
 
 /** The language plus its highlighting, as one editor extension. */
-export function grammarSupport(commands: readonly TurtleCommand[]): Extension {
-  return [grammarLanguage(commands), syntaxHighlighting(grammarHighlightStyle)];
+export function grammarSupport(vocabulary: Vocabulary): Extension {
+  return [grammarLanguage(vocabulary), syntaxHighlighting(grammarHighlightStyle)];
 }

@@ -76,7 +76,7 @@ export function installDownloads(els: DownloadMenuElements, view: PlantView, sho
       const outcome = await running.done;
       if (outcome.kind === 'cancelled') return null;
       if (outcome.kind === 'failed') {
-        throw new Error(outcome.crashed ? `the core crashed (a bug): ${outcome.message}` : outcome.message);
+        throw new Error(outcome.message);
       }
       saveFile(outcome.file.bytes, outcome.file.fileName, outcome.file.mimeType);
       return `Saved ${outcome.file.fileName} · ${fileSize(outcome.file.bytes.length)}`;

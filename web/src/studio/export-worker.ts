@@ -2,7 +2,7 @@
 // → mesh → edits → write, in the core), telling the page each stage as it starts, then sends the
 // file's bytes in a transfer list. The page starts one worker per export and terminates it after
 // (or to cancel): a big export grows a WebAssembly memory, which never shrinks, so it dies with it.
-import { exportModelWithProgress, initCore } from '../core';
+import { CoreCrashed, exportModelWithProgress, initCore } from '../core';
 import type { ExportRequest, ExportResponse } from './export-client';
 
 function reply(response: ExportResponse, transfer: Transferable[] = []): void {
@@ -21,9 +21,9 @@ addEventListener('message', async (event: MessageEvent<ExportRequest>) => {
     const file = exportModelWithProgress(source, format, options, (progress) => reply({ kind: 'progress', progress }));
     reply({ kind: 'done', file }, [file.bytes.buffer as ArrayBuffer]);
   } catch (error) {
-    // A RuntimeError is a panic of the core (a bug); anything else is the core's refusal (errors
-    // in the grammar, a malformed edits document), said in its message.
-    const crashed = error instanceof WebAssembly.RuntimeError;
+    // CoreCrashed is a panic of the core (a bug); anything else is the core's refusal (errors in
+    // the grammar, a malformed edits document), said in its message.
+    const crashed = error instanceof CoreCrashed;
     reply({ kind: 'failed', message: error instanceof Error ? error.message : String(error), crashed });
   }
 });

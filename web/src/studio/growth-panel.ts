@@ -5,8 +5,6 @@
 import {
   argumentValues,
   findDirective,
-  GROWTH_ATTRIBUTES,
-  SEASONS,
   setArguments,
   toggleAttribute,
   validArgument,
@@ -33,8 +31,9 @@ export class GrowthPanel {
     list: HTMLElement,
     private readonly count: HTMLElement,
     private readonly editor: GrowthEditor,
+    attributes: readonly GrowthAttribute[],
   ) {
-    this.rows = GROWTH_ATTRIBUTES.map((attribute) => this.row(attribute));
+    this.rows = attributes.map((attribute) => this.row(attribute));
     list.replaceChildren(
       ...this.rows.map((r) => {
         const row = document.createElement('div');
@@ -66,7 +65,7 @@ export class GrowthPanel {
       let input: HTMLInputElement | HTMLSelectElement;
       if (field.kind === 'season') {
         input = document.createElement('select');
-        for (const season of SEASONS) input.append(new Option(season, season));
+        for (const season of field.choices ?? []) input.append(new Option(season, season));
       } else {
         input = Object.assign(document.createElement('input'), { type: 'text', placeholder: field.placeholder ?? '' });
         input.inputMode = field.kind === 'number' ? 'decimal' : 'text';

@@ -37,3 +37,4 @@ export { installDrop } from './file-drop';
 export { closeLikeAMenu } from './menus';
 export { installDownloads, showExportStatus, type DownloadedPlant, type DownloadMenuElements, type ExportState } from './download-menu';
 export { connectTestHook, emptyTestHook, type StudioTestHook, type TestedStudio } from './test-hook';
+export { reportCoreCrashes } from './core-crashes';

@@ -25,6 +25,8 @@ export interface LivePreviewParts {
    * the one it held before). Without it the preview frees each inspector itself.
    */
   adopt?: (result: BuildResult) => void;
+  /** Told the core's message when it crashed on a build (the next build runs on a fresh worker). */
+  crashed?: (message: string) => void;
 }
 
 /** A status line state beyond a build's own. */
@@ -117,6 +119,7 @@ export class LivePreview {
     const { view, status, staleBadge } = this.parts;
     if (outcome.kind === 'crashed') {
       console.error('Meristem core crashed:', outcome.message);
+      this.parts.crashed?.(outcome.message);
       this.requestedKey = undefined; // the same text may be tried again, on a fresh worker
       this.feed.delivered(this.parts.text(), []);
       showStatus(status, { state: 'crashed', text: 'The core crashed on this grammar (a bug); edit to try again' });

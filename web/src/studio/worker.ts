@@ -4,7 +4,7 @@
 // list, and questions about a kept build (the context-sensitivity view's explanations and the
 // derived-string panel's module texts), until the page frees it. Started by createBuildWorker
 // (worker-client.ts). A big plant is first sent as a sketch (its segments as lines), then built.
-import { initCore, inspectPlant, type PlantInspector } from '../core';
+import { CoreCrashed, initCore, inspectPlant, type PlantInspector } from '../core';
 import { packForGpu } from '../view/gpu-arrays';
 import { answerTransferables, SKETCH_MIN_SEGMENTS, transferablesOf, type InspectAnswer, type WorkerRequest, type WorkerResponse } from './worker-protocol';
 
@@ -75,6 +75,8 @@ addEventListener('message', async (event: MessageEvent<WorkerRequest>) => {
     const gpu = packForGpu(build.mesh);
     reply({ kind: 'built', id, build, gpu, workerMillis: performance.now() - start }, transferablesOf(build, gpu));
   } catch (error) {
-    reply({ kind: 'crashed', id, message: error instanceof Error ? `${error.name}: ${error.message}` : String(error) });
+    // A panic carries the core's own message; anything else thrown here is a bug of this file.
+    const message = error instanceof CoreCrashed ? error.message : error instanceof Error ? `${error.name}: ${error.message}` : String(error);
+    reply({ kind: 'crashed', id, message });
   }
 });

@@ -1,0 +1,6 @@
+// Every unit test file starts with the real WebAssembly core loaded (crate/pkg, built by
+// `npm run build:wasm`), so modules that read the core's vocabulary work as they do on the page.
+import { readFileSync } from 'node:fs';
+import { initCore } from '../web/src/core';
+
+await initCore(readFileSync(new URL('../crate/pkg/meristem_bg.wasm', import.meta.url)));
