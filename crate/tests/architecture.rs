@@ -11,6 +11,9 @@
 //!   says it is another dialect's word (`// dialect: …`, in the importers); and every directive or
 //!   module name that a literal mentions exists in the vocabulary.
 //!
+//! - **No IO, no clock, no browser**: only `main.rs` (the CLI) and `wasm.rs` (the boundary) may
+//!   touch files, the environment, clocks, OS randomness or JavaScript.
+//!
 //! Test code (`#[cfg(test)]` items, `tests.rs` files) is not checked: tests spell names on purpose.
 
 use std::collections::BTreeSet;
@@ -486,4 +489,53 @@ fn the_name_checks_can_fail() {
         ["#max_modules", "@Foo"]
     );
     assert!(!all.contains("@Foo"));
+}
+
+/// What only the command line and the wasm boundary may use.
+const OUTSIDE_WORLD: &[&str] = &[
+    "std::fs",
+    "std::io",
+    "std::env",
+    "std::time",
+    "std::process",
+    "std::net",
+    "Instant",
+    "SystemTime",
+    "thread_rng",
+    "rand::rng",
+    "getrandom",
+    "wasm_bindgen",
+    "js_sys",
+];
+
+#[test]
+fn the_core_does_no_io_and_knows_nothing_of_the_browser() {
+    let mut problems = Vec::new();
+    for source in sources() {
+        if source.module == "main" || source.module == "wasm" {
+            continue;
+        }
+        for (k, line) in source.code.iter().enumerate() {
+            for word in OUTSIDE_WORLD.iter().filter(|w| line.contains(*w)) {
+                problems.push(format!("{}:{}: uses {word}", source.path.display(), k + 1));
+            }
+        }
+    }
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
+}
+
+#[test]
+fn the_language_reference_lists_every_name() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/LANGUAGE.md");
+    let reference = std::fs::read_to_string(path).expect("docs/LANGUAGE.md");
+    let missing: Vec<String> = meristem::vocabulary::MODULES
+        .iter()
+        .map(|m| m.name.replace('|', "\\|"))
+        .chain(meristem::vocabulary::DIRECTIVES.iter().map(|d| format!("#{}", d.name)))
+        .filter(|name| !reference.contains(&format!("`{name}")) && !reference.contains(&format!(" {name} ")))
+        .collect();
+    assert!(
+        missing.is_empty(),
+        "docs/LANGUAGE.md does not mention {missing:?}"
+    );
 }

@@ -34,7 +34,6 @@ export { importGrammar, type Dialect, type ImportedGrammar, type ImportNote } fr
 export {
   applyMeshUpdate,
   editPlant,
-  EDITS_VERSION,
   noEdits,
   validateEdits,
   type BranchEdit,
@@ -47,7 +46,6 @@ export {
   type Vec3,
 } from './branches';
 export {
-  DERIVED_PREVIEW_CHARS,
   NOT_REWRITTEN,
   type Bounds,
   type Explanation,

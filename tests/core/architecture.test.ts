@@ -1,7 +1,8 @@
-// The studio names no part of the language the core's vocabulary does not have, and spells none
-// of them for its logic: the TypeScript side of crate/tests/architecture.rs's vocabulary check.
-// It reads every non-test file of web/src and looks at its literals (strings, templates, regular
-// expressions; comments are skipped):
+// The studio's side of crate/tests/architecture.rs: it reads every non-test file of web/src.
+// - One boundary: only web/src/core/ imports the generated package (crate/pkg).
+// - One vocabulary: the studio names no part of the language the core's vocabulary does not have,
+//   and spells none of them for its logic. In the files' literals (strings, templates, regular
+//   expressions; comments are skipped):
 // - every directive (`#name`, three letters or more, not a colour) and every `@Name`, `?X`, `~x`
 //   module a literal mentions is in the vocabulary;
 // - no string literal is exactly a name (a directive, a module of two characters or more, a keyword
@@ -98,6 +99,17 @@ const spelled = [
   ...vocabulary.modules.map((m) => m.name).filter((n) => n.length > 1),
   ...vocabulary.keywords.flatMap((k) => [writtenKeyword(k), ...(k.aliases ?? []).map((a) => (k.colon ? `${a}:` : a))]),
 ];
+
+describe('the boundary', () => {
+  it('is crossed only in web/src/core', () => {
+    const crossing = files(root)
+      .filter((file) => /from ['"][./]*\/crate\/pkg\//.test(readFileSync(file, 'utf8')))
+      .map((file) => relative(root, file))
+      .filter((file) => !file.startsWith('core/'));
+    expect(crossing).toEqual([]);
+    expect(files(root).some((file) => relative(root, file) === 'core/init.ts')).toBe(true);
+  });
+});
 
 describe('the studio and the vocabulary', () => {
   it('mentions only names the vocabulary has, and spells none for its logic', () => {
