@@ -531,8 +531,14 @@ fn the_language_reference_lists_every_name() {
     let missing: Vec<String> = meristem::vocabulary::MODULES
         .iter()
         .map(|m| m.name.replace('|', "\\|"))
-        .chain(meristem::vocabulary::DIRECTIVES.iter().map(|d| format!("#{}", d.name)))
-        .filter(|name| !reference.contains(&format!("`{name}")) && !reference.contains(&format!(" {name} ")))
+        .chain(
+            meristem::vocabulary::DIRECTIVES
+                .iter()
+                .map(|d| format!("#{}", d.name)),
+        )
+        .filter(|name| {
+            !reference.contains(&format!("`{name}")) && !reference.contains(&format!(" {name} "))
+        })
         .collect();
     assert!(
         missing.is_empty(),

@@ -99,16 +99,10 @@ impl<R: rand::Rng> Rewriter<'_, R> {
         dst: &mut LString,
         num_it: u32,
     ) -> Result<(), Diagnostic> {
-        let Group {
-            at: i,
-            header,
-            members,
-            ..
-        } = group;
-        let n = members.len();
-        let cursor = (header.max(0.0) as usize) % n;
+        let (i, n) = (group.at, group.members.len());
+        let cursor = (group.header.max(0.0) as usize) % n;
         self.open_group(src, i, ((cursor + 1) % n) as f64, dst);
-        for (k, member) in members.into_iter().enumerate() {
+        for (k, member) in group.members.into_iter().enumerate() {
             self.separate(k, i, dst);
             if k == cursor {
                 self.rewrite_range(rules, src, member, dst, num_it)?;
@@ -132,14 +126,9 @@ impl<R: rand::Rng> Rewriter<'_, R> {
         dst: &mut LString,
         num_it: u32,
     ) -> Result<(), Diagnostic> {
-        let Group {
-            at: i,
-            header,
-            mut members,
-            ..
-        } = group;
+        let (i, mut members) = (group.at, group.members);
         let reversed = if num_it.is_multiple_of(2) { 1.0 } else { 0.0 };
-        if reversed != header {
+        if reversed != group.header {
             members.reverse();
         }
         self.open_group(src, i, reversed, dst);
@@ -160,17 +149,12 @@ impl<R: rand::Rng> Rewriter<'_, R> {
         dst: &mut LString,
         num_it: u32,
     ) -> Result<(), Diagnostic> {
-        let Group {
-            at: i,
-            header,
-            members,
-            ..
-        } = group;
-        let times = header.max(0.0) as u32;
-        self.open_group(src, i, header, dst);
+        let i = group.at;
+        let times = group.header.max(0.0) as u32;
+        self.open_group(src, i, group.header, dst);
         let mut enclosed = LString::default();
         enclosed.clear(src.is_parametric());
-        for j in members[0].clone() {
+        for j in group.members[0].clone() {
             enclosed.push(src.ids[j], src.params_of(j));
         }
         let derived = self.derive_apart(rules, enclosed, times, num_it, 0)?;

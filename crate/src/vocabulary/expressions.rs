@@ -74,6 +74,7 @@ const fn f(
     }
 }
 
+/// A random function: a fresh deviate at each evaluation.
 const fn random(
     name: &'static str,
     function: Function,
@@ -81,11 +82,8 @@ const fn random(
     doc: &'static str,
 ) -> FunctionInfo {
     FunctionInfo {
-        name,
-        function,
-        params,
         random: true,
-        doc,
+        ..f(name, function, params, doc)
     }
 }
 
