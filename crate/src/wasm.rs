@@ -147,6 +147,13 @@ pub fn on_panic(listener: js_sys::Function) {
     PANIC_LISTENER.with(|l| *l.borrow_mut() = Some(listener));
 }
 
+/// Panics with `message`: how the tests reach the panic path (the hook, [`on_panic`], the studio's
+/// `CoreCrashed`) now that no known input does.
+#[wasm_bindgen(js_name = panicForTests)]
+pub fn panic_for_tests(message: &str) {
+    panic!("{message}");
+}
+
 /// The core's version (the crate version).
 #[wasm_bindgen]
 pub fn version() -> String {
