@@ -5,7 +5,9 @@
 //! `IndexedFaceSet`. A model too large to mesh becomes `IndexedLineSet`s drawn in their base
 //! colour.
 
-use super::scene::{decimals_for, extent, number, srgb, ColorGroup, Primitive, Scene, View};
+use super::scene::{
+    coord_index, decimals_for, extent, number, srgb, ColorGroup, Primitive, Scene, View,
+};
 use std::fmt::Write;
 
 /// The Inventor text of `scene`.
@@ -99,14 +101,7 @@ fn shape(out: &mut String, scene: &Scene, group: &ColorGroup) {
         Primitive::Triangles => out.push_str("  IndexedFaceSet {\n    coordIndex [\n"),
         Primitive::Lines => out.push_str("  IndexedLineSet {\n    coordIndex [\n"),
     }
-    let arity = scene.arity();
-    for &item in &group.items {
-        out.push_str("     ");
-        for corner in &scene.corners(item)[..arity] {
-            write!(out, " {corner},").ok();
-        }
-        out.push_str(" -1,\n");
-    }
+    coord_index(out, scene, &group.items, ",");
     out.push_str("    ]\n  }\n");
 }
 

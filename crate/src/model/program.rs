@@ -403,17 +403,25 @@ impl Compiler<'_> {
             }
             ExprSyntax::Name(name, span) => self.name(name, span, depth)?,
             ExprSyntax::Unary(op, x, span) => self.unary(*op, x, span, inner)?,
-            ExprSyntax::Binary(BinaryOp::And, a, b, span) => self.and(a, b, span, inner)?,
-            ExprSyntax::Binary(BinaryOp::Or, a, b, span) => self.or(a, b, span, inner)?,
+            // a && b  =>  a ? truth(b) : 0
+            ExprSyntax::Binary(BinaryOp::And, a, b, span) => self.conditional(
+                a,
+                span,
+                inner,
+                |c| c.truth(b, span, inner),
+                |c| c.constant(0.0, span),
+            )?,
+            // a || b  =>  a ? 1 : truth(b)
+            ExprSyntax::Binary(BinaryOp::Or, a, b, span) => self.conditional(
+                a,
+                span,
+                inner,
+                |c| c.constant(1.0, span),
+                |c| c.truth(b, span, inner),
+            )?,
             ExprSyntax::Binary(op, a, b, span) => self.binary(*op, a, b, span, inner)?,
             ExprSyntax::Conditional(c, a, b, span) => {
-                self.expr(c, inner)?;
-                let jump_false = self.emit(Op::JumpIfFalse(0), span.clone());
-                self.expr(a, inner)?;
-                let jump_end = self.emit(Op::Jump(0), span.clone());
-                self.patch(jump_false);
-                self.expr(b, inner)?;
-                self.patch(jump_end);
+                self.conditional(c, span, inner, |s| s.expr(a, inner), |s| s.expr(b, inner))?
             }
             ExprSyntax::Call(name, name_span, args, span) => {
                 self.call(name, name_span, args, span, inner)?
@@ -448,41 +456,37 @@ impl Compiler<'_> {
         Ok(())
     }
 
-    /// `a && b`, as `a ? truth(b) : 0`. `depth` is that of the operands.
-    fn and(
+    /// `condition ? then : otherwise`, the branches compiled by `then` and `otherwise`: a jump
+    /// past `then` when the condition is false, and one past `otherwise` after `then`. `depth`
+    /// is that of the condition.
+    fn conditional(
         &mut self,
-        a: &ExprSyntax,
-        b: &ExprSyntax,
+        condition: &ExprSyntax,
         span: &Span,
         depth: usize,
+        then: impl FnOnce(&mut Self) -> Result<(), Diagnostic>,
+        otherwise: impl FnOnce(&mut Self) -> Result<(), Diagnostic>,
     ) -> Result<(), Diagnostic> {
-        self.expr(a, depth)?;
+        self.expr(condition, depth)?;
         let jump_false = self.emit(Op::JumpIfFalse(0), span.clone());
-        self.expr(b, depth)?;
-        self.emit(Op::Truth, span.clone());
+        then(self)?;
         let jump_end = self.emit(Op::Jump(0), span.clone());
         self.patch(jump_false);
-        self.emit(Op::Const(0.0), span.clone());
+        otherwise(self)?;
         self.patch(jump_end);
         Ok(())
     }
 
-    /// `a || b`, as `a ? 1 : truth(b)`. `depth` is that of the operands.
-    fn or(
-        &mut self,
-        a: &ExprSyntax,
-        b: &ExprSyntax,
-        span: &Span,
-        depth: usize,
-    ) -> Result<(), Diagnostic> {
-        self.expr(a, depth)?;
-        let jump_false = self.emit(Op::JumpIfFalse(0), span.clone());
-        self.emit(Op::Const(1.0), span.clone());
-        let jump_end = self.emit(Op::Jump(0), span.clone());
-        self.patch(jump_false);
-        self.expr(b, depth)?;
+    /// `truth(x)`: 1 when `x` is not zero, else 0.
+    fn truth(&mut self, x: &ExprSyntax, span: &Span, depth: usize) -> Result<(), Diagnostic> {
+        self.expr(x, depth)?;
         self.emit(Op::Truth, span.clone());
-        self.patch(jump_end);
+        Ok(())
+    }
+
+    /// A constant `v`.
+    fn constant(&mut self, v: f64, span: &Span) -> Result<(), Diagnostic> {
+        self.emit(Op::Const(v), span.clone());
         Ok(())
     }
 
