@@ -87,6 +87,7 @@ struct Axes {
 }
 
 impl Axes {
+    /// How `segments` continue each other.
     fn of(segments: &[Segment]) -> Axes {
         let n = segments.len();
         let mut axes = Axes {

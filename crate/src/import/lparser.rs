@@ -254,6 +254,7 @@ fn parse_positional(text: &str, file: &mut LsFile, out: &mut Output) {
     }
 }
 
+/// Reads the keyword format of Lparser 2 into `file`, line by line.
 fn parse_keywords(text: &str, file: &mut LsFile, out: &mut Output) {
     let mut noted: Vec<String> = Vec::new();
     for (index, raw) in text.lines().enumerate() {

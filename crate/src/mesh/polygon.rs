@@ -160,6 +160,7 @@ impl Outline {
         (0..self.ring.len()).find(|&k| self.is_ear(k))
     }
 
+    /// Whether position `k` of the loop is an ear (see [`Outline::ear`]).
     fn is_ear(&self, k: usize) -> bool {
         let (ia, ib, ic) = self.corner(k);
         let (a, b, c) = (self.flat[ia], self.flat[ib], self.flat[ic]);

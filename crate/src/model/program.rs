@@ -148,6 +148,7 @@ impl Program {
         }
     }
 
+    /// The interpreter loop over the ops, with a stack of `N` values.
     fn run<const N: usize, R: rand::Rng + ?Sized>(
         &self,
         env: &mut Env<'_, R>,

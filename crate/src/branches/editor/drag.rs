@@ -153,6 +153,7 @@ impl BranchEditor {
         fixed_joints
     }
 
+    /// Where `item` lies in the current mesh.
     pub(super) fn item_part(&self, item: Item) -> parts::Part {
         match item {
             Item::Polygon(i) => self.parts.polygons[i as usize],
@@ -353,6 +354,7 @@ fn bounds_of(positions: &[f32], range: [u32; 2]) -> Option<Bounds> {
     out
 }
 
+/// The bounds around both `a` and `b`.
 fn union(a: Option<Bounds>, b: Option<Bounds>) -> Option<Bounds> {
     match (a, b) {
         (Some(a), Some(b)) => Some([
