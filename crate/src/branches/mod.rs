@@ -32,7 +32,7 @@ pub use deform::Rigid;
 pub use editor::{BranchEditor, MeshChange};
 pub use edits::{parse_edits, write_edits, BranchEdit, EditReport, NotApplied, EDITS_VERSION};
 
-use crate::turtle::Skeleton;
+use crate::turtle::{Segment, Skeleton};
 use glam::DVec3;
 
 /// No branch (a root's parent, an item drawn before any segment).
@@ -75,89 +75,138 @@ pub struct BranchTree {
     pub segment_position: Vec<u32>,
 }
 
+/// How the segments of a skeleton continue each other: where [`BranchTree::new`] cuts the axes
+/// into branches.
+struct Axes {
+    /// The continuation of each segment (the first segment continuing it).
+    continuation: Vec<Option<u32>>,
+    /// Whether each segment continues another.
+    continues: Vec<bool>,
+    /// Whether anything other than its continuation grows from each segment's end.
+    forks: Vec<bool>,
+}
+
+impl Axes {
+    /// How `segments` continue each other.
+    fn of(segments: &[Segment]) -> Axes {
+        let n = segments.len();
+        let mut axes = Axes {
+            continuation: vec![None; n],
+            continues: vec![false; n],
+            forks: vec![false; n],
+        };
+        for (i, s) in segments.iter().enumerate() {
+            match (s.previous, s.anchor) {
+                (Some(p), _) if axes.continuation[p as usize].is_none() && (p as usize) < i => {
+                    axes.continuation[p as usize] = Some(i as u32);
+                    axes.continues[i] = true;
+                }
+                (_, Some(a)) if (a as usize) < i => axes.forks[a as usize] = true,
+                _ => {}
+            }
+        }
+        axes
+    }
+
+    /// Whether a branch ends at segment `s`'s end joint: a branching point, or the axis ends.
+    fn ends_branch(&self, s: usize) -> bool {
+        self.forks[s] || self.continuation[s].is_none()
+    }
+
+    /// Whether a branch starts with segment `s`: it continues nothing, or the segment it
+    /// continues ends a branch.
+    fn starts_branch(&self, segments: &[Segment], s: usize) -> bool {
+        !self.continues[s]
+            || segments[s]
+                .previous
+                .is_some_and(|p| self.ends_branch(p as usize))
+    }
+
+    /// The segments of the branch that starts with segment `start`.
+    fn branch_from(&self, start: usize) -> Vec<u32> {
+        let mut run = vec![start as u32];
+        let mut at = start;
+        while !self.ends_branch(at) {
+            let Some(next) = self.continuation[at] else {
+                break;
+            };
+            run.push(next);
+            at = next as usize;
+        }
+        run
+    }
+}
+
 impl BranchTree {
     /// The branches of `skeleton`.
     pub fn new(skeleton: &Skeleton) -> BranchTree {
         let segments = &skeleton.segments;
         let n = segments.len();
-        // The continuation of each segment (the first segment continuing it), and whether
-        // anything else grows from its end.
-        let mut continuation: Vec<Option<u32>> = vec![None; n];
-        let mut continues = vec![false; n];
-        let mut forks = vec![false; n];
-        for (i, s) in segments.iter().enumerate() {
-            match (s.previous, s.anchor) {
-                (Some(p), _) if continuation[p as usize].is_none() && (p as usize) < i => {
-                    continuation[p as usize] = Some(i as u32);
-                    continues[i] = true;
-                }
-                (_, Some(a)) if (a as usize) < i => forks[a as usize] = true,
-                _ => {}
-            }
-        }
-        let ends_branch = |s: usize| forks[s] || continuation[s].is_none();
+        let axes = Axes::of(segments);
         let mut tree = BranchTree {
             segment_branch: vec![NO_BRANCH; n],
             segment_position: vec![0; n],
             ..BranchTree::default()
         };
         for start in 0..n {
-            let starts = !continues[start]
-                || segments[start]
-                    .previous
-                    .is_some_and(|p| ends_branch(p as usize));
-            if !starts {
-                continue;
+            if axes.starts_branch(segments, start) {
+                tree.add_branch(segments, axes.branch_from(start));
             }
-            let id = tree.branches.len() as u32;
-            let mut run = vec![start as u32];
-            let mut at = start;
-            while !ends_branch(at) {
-                let Some(next) = continuation[at] else { break };
-                run.push(next);
-                at = next as usize;
-            }
-            for (k, &s) in run.iter().enumerate() {
-                tree.segment_branch[s as usize] = id;
-                tree.segment_position[s as usize] = k as u32;
-            }
-            let grows_from = segments[start]
-                .anchor
-                .filter(|&a| (a as usize) < start)
-                .map(|a| tree.segment_branch[a as usize])
-                .filter(|&b| b != NO_BRANCH);
-            let path = match grows_from {
-                Some(parent) => {
-                    let p = &mut tree.branches[parent as usize];
-                    p.children.push(id);
-                    let mut path = p.path.clone();
-                    path.push(p.children.len() as u32 - 1);
-                    path
-                }
-                None => {
-                    tree.roots.push(id);
-                    vec![tree.roots.len() as u32 - 1]
-                }
-            };
-            let mut joints = vec![segments[start].start];
-            joints.extend(run.iter().map(|&s| segments[s as usize].end));
-            let length = run
-                .iter()
-                .map(|&s| {
-                    let s = &segments[s as usize];
-                    (s.end - s.start).length()
-                })
-                .sum();
-            tree.branches.push(Branch {
-                path,
-                parent: grows_from,
-                children: Vec::new(),
-                segments: run,
-                items: Vec::new(),
-                fit: fit::fit(&joints),
-                length,
-            });
         }
+        tree.attach_items(skeleton);
+        tree
+    }
+
+    /// Adds the branch of the segments `run`, a child of the branch its first segment grows
+    /// from (whose branch is already in the tree) or a root.
+    fn add_branch(&mut self, segments: &[Segment], run: Vec<u32>) {
+        let id = self.branches.len() as u32;
+        let start = run[0] as usize;
+        for (k, &s) in run.iter().enumerate() {
+            self.segment_branch[s as usize] = id;
+            self.segment_position[s as usize] = k as u32;
+        }
+        let grows_from = segments[start]
+            .anchor
+            .filter(|&a| (a as usize) < start)
+            .map(|a| self.segment_branch[a as usize])
+            .filter(|&b| b != NO_BRANCH);
+        let path = match grows_from {
+            Some(parent) => {
+                let p = &mut self.branches[parent as usize];
+                p.children.push(id);
+                let mut path = p.path.clone();
+                path.push(p.children.len() as u32 - 1);
+                path
+            }
+            None => {
+                self.roots.push(id);
+                vec![self.roots.len() as u32 - 1]
+            }
+        };
+        let mut joints = vec![segments[start].start];
+        joints.extend(run.iter().map(|&s| segments[s as usize].end));
+        let length = run
+            .iter()
+            .map(|&s| {
+                let s = &segments[s as usize];
+                (s.end - s.start).length()
+            })
+            .sum();
+        self.branches.push(Branch {
+            path,
+            parent: grows_from,
+            children: Vec::new(),
+            segments: run,
+            items: Vec::new(),
+            fit: fit::fit(&joints),
+            length,
+        });
+    }
+
+    /// Gives each polygon, leaf and sphere to the branch of the segment it grows from.
+    fn attach_items(&mut self, skeleton: &Skeleton) {
+        let n = skeleton.segments.len();
         let anchored = skeleton
             .polygons
             .iter()
@@ -179,14 +228,13 @@ impl BranchTree {
             );
         for (item, anchor) in anchored {
             if let Some(a) = anchor.filter(|&a| (a as usize) < n) {
-                let b = tree.segment_branch[a as usize];
+                let b = self.segment_branch[a as usize];
                 if b != NO_BRANCH {
-                    let k = tree.segment_position[a as usize];
-                    tree.branches[b as usize].items.push((item, k));
+                    let k = self.segment_position[a as usize];
+                    self.branches[b as usize].items.push((item, k));
                 }
             }
         }
-        tree
     }
 
     pub fn len(&self) -> usize {

@@ -144,7 +144,7 @@ pub fn match_right_recording<R: Recorder>(
     model: &Model,
     s: &LString,
     partner: &[u32],
-    mut pos: usize,
+    pos: usize,
     pattern: &[PatternItem],
     slots: &mut [f64],
     recorder: &mut R,
@@ -152,19 +152,67 @@ pub fn match_right_recording<R: Recorder>(
     let Some(item) = pattern.first() else {
         return true;
     };
-    let n = s.len();
+    let right = RightContext {
+        model,
+        s,
+        partner,
+        rest: &pattern[1..],
+    };
     match item {
-        PatternItem::Module(m) => loop {
-            if pos >= n {
-                return false;
-            }
+        PatternItem::Module(m) => right.module(pos, m, slots, recorder),
+        PatternItem::Open => right.branch(pos, slots, recorder),
+        PatternItem::Close => right.branch_end(pos, slots, recorder),
+    }
+}
+
+/// One step of a right-context match: the string, and the pattern after the item being matched.
+struct RightContext<'a> {
+    model: &'a Model,
+    s: &'a LString,
+    partner: &'a [u32],
+    /// The pattern items after the one this step matches.
+    rest: &'a [PatternItem],
+}
+
+impl RightContext<'_> {
+    /// Matches the rest of the pattern from `pos`.
+    #[inline]
+    fn rest<R: Recorder>(&self, pos: usize, slots: &mut [f64], recorder: &mut R) -> bool {
+        match_right_recording(
+            self.model,
+            self.s,
+            self.partner,
+            pos,
+            self.rest,
+            slots,
+            recorder,
+        )
+    }
+
+    /// The index just past the branch whose `[` is at `open`, or `None` when it is unbalanced.
+    #[inline]
+    fn past_branch(&self, open: usize) -> Option<usize> {
+        let close = self.partner[open];
+        (close != NONE).then(|| close as usize + 1)
+    }
+
+    /// Matches the pattern module `m` with the next module from `pos` on this branch, skipping
+    /// branches and ignored modules, then the rest of the pattern after it.
+    fn module<R: Recorder>(
+        &self,
+        mut pos: usize,
+        m: &PatternModule,
+        slots: &mut [f64],
+        recorder: &mut R,
+    ) -> bool {
+        let (model, s) = (self.model, self.s);
+        while pos < s.len() {
             let id = s.ids[pos];
             if id == model.open {
-                let close = partner[pos];
-                if close == NONE {
+                let Some(next) = self.past_branch(pos) else {
                     return false;
-                }
-                pos = close as usize + 1;
+                };
+                pos = next;
             } else if id == model.close {
                 return false;
             } else if model.ignored[id.index()] {
@@ -175,59 +223,56 @@ pub fn match_right_recording<R: Recorder>(
                 }
                 let mark = recorder.mark();
                 recorder.record(pos);
-                if match_right_recording(model, s, partner, pos + 1, &pattern[1..], slots, recorder)
-                {
+                if self.rest(pos + 1, slots, recorder) {
                     return true;
                 }
                 recorder.reset(mark);
                 return false;
             }
-        },
-        PatternItem::Open => loop {
-            if pos >= n {
-                return false;
-            }
+        }
+        false
+    }
+
+    /// Matches a pattern `[` with one of the branches starting at `pos` (skipping ignored modules),
+    /// trying each sibling branch in turn with the rest of the pattern.
+    fn branch<R: Recorder>(&self, mut pos: usize, slots: &mut [f64], recorder: &mut R) -> bool {
+        let (model, s) = (self.model, self.s);
+        while pos < s.len() {
             let id = s.ids[pos];
             if id == model.open {
-                if match_right_recording(model, s, partner, pos + 1, &pattern[1..], slots, recorder)
-                {
+                if self.rest(pos + 1, slots, recorder) {
                     return true;
                 }
-                let close = partner[pos];
-                if close == NONE {
+                let Some(next) = self.past_branch(pos) else {
                     return false;
-                }
-                pos = close as usize + 1; // try the next sibling branch
+                };
+                pos = next; // try the next sibling branch
             } else if model.ignored[id.index()] {
                 pos += 1;
             } else {
                 return false;
             }
-        },
-        PatternItem::Close => loop {
-            if pos >= n {
-                return false;
-            }
+        }
+        false
+    }
+
+    /// Matches a pattern `]` with the end of the branch `pos` is on (skipping whatever the branch
+    /// still holds), then the rest of the pattern after it.
+    fn branch_end<R: Recorder>(&self, mut pos: usize, slots: &mut [f64], recorder: &mut R) -> bool {
+        let (model, s) = (self.model, self.s);
+        while pos < s.len() {
             let id = s.ids[pos];
             if id == model.open {
-                let close = partner[pos];
-                if close == NONE {
+                let Some(next) = self.past_branch(pos) else {
                     return false;
-                }
-                pos = close as usize + 1;
+                };
+                pos = next;
             } else if id == model.close {
-                return match_right_recording(
-                    model,
-                    s,
-                    partner,
-                    pos + 1,
-                    &pattern[1..],
-                    slots,
-                    recorder,
-                );
+                return self.rest(pos + 1, slots, recorder);
             } else {
                 pos += 1;
             }
-        },
+        }
+        false
     }
 }

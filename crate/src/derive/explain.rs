@@ -4,7 +4,7 @@
 use super::rewriter::Rewriter;
 use super::{context, Generator};
 use crate::diagnostics::Diagnostic;
-use crate::model::{LString, Model, Production};
+use crate::model::{LString, Model};
 use rand::SeedableRng;
 
 /// Why and where one production of the productions section fired in the last step of a tracked
@@ -107,57 +107,4 @@ pub fn explain(
         list.dedup();
     }
     Ok(explanation)
-}
-
-impl<R: rand::Rng> Rewriter<'_, R> {
-    /// Like [`Rewriter::matches`], recording the context modules: returns whether the predecessor
-    /// and contexts matched, and whether the condition then held.
-    fn matches_recording(
-        &mut self,
-        p: &Production,
-        src: &LString,
-        i: usize,
-        num_it: u32,
-        left: &mut Vec<u32>,
-        right: &mut Vec<u32>,
-    ) -> Result<(bool, bool), Diagnostic> {
-        let params = src.params_of(i);
-        if params.len() != p.predecessor.arity {
-            return Ok((false, false));
-        }
-        let first = p.predecessor.first_slot as usize;
-        self.slots[first..first + params.len()].copy_from_slice(params);
-        let model = self.model;
-        if !p.left.is_empty()
-            && !context::match_left_recording(
-                model,
-                src,
-                &self.partner,
-                i,
-                &p.left,
-                &mut self.slots,
-                left,
-            )
-        {
-            return Ok((false, false));
-        }
-        if !p.right.is_empty()
-            && !context::match_right_recording(
-                model,
-                src,
-                &self.partner,
-                i + 1,
-                &p.right,
-                &mut self.slots,
-                right,
-            )
-        {
-            return Ok((false, false));
-        }
-        let condition = match &p.condition {
-            Some(c) => self.eval(c, p.slots, num_it, false)? != 0.0,
-            None => true,
-        };
-        Ok((true, condition))
-    }
 }

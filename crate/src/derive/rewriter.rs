@@ -1,7 +1,8 @@
 //! The general path: productions tried in source order for each module, with bracket-aware
 //! contexts, compiled conditions, weighted (stochastic) choice and Green's random variables.
 
-use super::{context, limit_error, Observer, NOT_REWRITTEN};
+use super::context::{self, Recorder};
+use super::{limit_error, Observer, NOT_REWRITTEN};
 use crate::diagnostics::Diagnostic;
 use crate::model::{Env, LString, Model, Production, Program, RuleSet, SuccessorModule};
 use crate::syntax::Span;
@@ -196,6 +197,7 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
     }
 
     /// Tests production `p` on module `i` of `src`, binding its slots.
+    #[inline]
     pub fn matches(
         &mut self,
         p: &Production,
@@ -203,33 +205,61 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         i: usize,
         num_it: u32,
     ) -> Result<bool, Diagnostic> {
+        let (contexts, condition) = self.matches_recording(p, src, i, num_it, &mut (), &mut ())?;
+        Ok(contexts && condition)
+    }
+
+    /// [`Rewriter::matches`], recording the indices of the context modules it matched in `left`
+    /// and `right`: returns whether the predecessor and contexts matched, and whether the
+    /// condition then held (false when they did not match). Derivation records nothing (`()`).
+    #[inline]
+    pub(super) fn matches_recording<C: Recorder>(
+        &mut self,
+        p: &Production,
+        src: &LString,
+        i: usize,
+        num_it: u32,
+        left: &mut C,
+        right: &mut C,
+    ) -> Result<(bool, bool), Diagnostic> {
         let params = src.params_of(i);
         if params.len() != p.predecessor.arity {
-            return Ok(false);
+            return Ok((false, false));
         }
         let first = p.predecessor.first_slot as usize;
         self.slots[first..first + params.len()].copy_from_slice(params);
+        let model = self.model;
         if !p.left.is_empty()
-            && !context::match_left(self.model, src, &self.partner, i, &p.left, &mut self.slots)
+            && !context::match_left_recording(
+                model,
+                src,
+                &self.partner,
+                i,
+                &p.left,
+                &mut self.slots,
+                left,
+            )
         {
-            return Ok(false);
+            return Ok((false, false));
         }
         if !p.right.is_empty()
-            && !context::match_right(
-                self.model,
+            && !context::match_right_recording(
+                model,
                 src,
                 &self.partner,
                 i + 1,
                 &p.right,
                 &mut self.slots,
+                right,
             )
         {
-            return Ok(false);
+            return Ok((false, false));
         }
-        match &p.condition {
-            Some(c) => Ok(self.eval(c, p.slots, num_it, false)? != 0.0),
-            None => Ok(true),
-        }
+        let condition = match &p.condition {
+            Some(c) => self.eval(c, p.slots, num_it, false)? != 0.0,
+            None => true,
+        };
+        Ok((true, condition))
     }
 
     /// One parallel rewriting of `src` into `dst` with `rules`. Returns whether any production

@@ -15,7 +15,7 @@
 //! studio give the same bytes, and so that it runs wherever the core runs (a worker, Node) with
 //! no `FileReader`.
 
-use super::scene::{Primitive, Scene};
+use super::scene::{ColorGroup, Primitive, Scene};
 use crate::mesh::{MATERIAL_BARK, MATERIAL_LEAF, MATERIAL_PLAIN};
 use serde_json::{json, Value};
 
@@ -36,175 +36,243 @@ pub const LEAF_PNG: &[u8] = include_bytes!("../../../public/textures/leaf.png");
 
 /// The GLB bytes of `scene`.
 pub fn write(scene: &Scene) -> Vec<u8> {
-    let primitive = scene.primitive();
-    let points = scene.points();
     let groups = scene.groups();
-    let mut bin: Vec<u8> = Vec::new();
-    let mut buffer_views: Vec<Value> = Vec::new();
-    let mut accessors: Vec<Value> = Vec::new();
-    let mut materials: Vec<Value> = Vec::new();
-    let mut primitives: Vec<Value> = Vec::new();
-    let mut images: Vec<Value> = Vec::new();
-    let mut textures: Vec<Value> = Vec::new();
-    let materials_of: Vec<u8> = if primitive == Primitive::Triangles {
-        scene.mesh.triangle_materials()
-    } else {
-        Vec::new()
-    };
-    let kind_of = |item: u32| {
-        materials_of
-            .get(item as usize)
-            .map_or(MATERIAL_PLAIN, |&m| m as u32)
-    };
-
+    let mut document = Document::default();
     if !groups.is_empty() {
+        let attributes = document.vertex_attributes(scene);
+        document.primitives(scene, &groups, &attributes);
+        document.embed_textures();
+        document.pad_bin();
+    }
+    document.into_glb()
+}
+
+/// The glTF document as it is written: the binary chunk and the JSON arrays that point into it.
+#[derive(Default)]
+struct Document {
+    /// The binary chunk: vertex attributes, then indices, then the embedded images.
+    bin: Vec<u8>,
+    buffer_views: Vec<Value>,
+    accessors: Vec<Value>,
+    materials: Vec<Value>,
+    primitives: Vec<Value>,
+    images: Vec<Value>,
+    /// The material kind each texture shows (bark or leaf), in the order they were first used;
+    /// texture `i` shows image `i`.
+    textures: Vec<u32>,
+}
+
+impl Document {
+    /// Writes the vertex attributes every primitive shares (`POSITION` with `min`/`max`, and for
+    /// triangles `NORMAL` and `TEXCOORD_0`) and returns the `attributes` object naming them.
+    fn vertex_attributes(&mut self, scene: &Scene) -> Value {
+        let points = scene.points();
         let count = points.len() / 3;
         let (min, max) = min_max(points);
-        buffer_views.push(view(&mut bin, floats(points), Some(ARRAY_BUFFER)));
-        accessors.push(json!({
-            "bufferView": 0, "componentType": FLOAT, "count": count, "type": "VEC3",
-            "min": min, "max": max,
-        }));
+        self.attribute(
+            floats(points),
+            json!({
+                "bufferView": 0, "componentType": FLOAT, "count": count, "type": "VEC3",
+                "min": min, "max": max,
+            }),
+        );
         let mut attributes = json!({ "POSITION": 0 });
-        if primitive == Primitive::Triangles {
-            buffer_views.push(view(
-                &mut bin,
+        if scene.primitive() == Primitive::Triangles {
+            self.attribute(
                 floats(&scene.mesh.normals),
-                Some(ARRAY_BUFFER),
-            ));
-            accessors.push(json!({
-                "bufferView": 1, "componentType": FLOAT, "count": count, "type": "VEC3",
-            }));
+                json!({
+                    "bufferView": 1, "componentType": FLOAT, "count": count, "type": "VEC3",
+                }),
+            );
             attributes["NORMAL"] = json!(1);
-            buffer_views.push(view(&mut bin, floats(&scene.mesh.uvs), Some(ARRAY_BUFFER)));
-            accessors.push(json!({
-                "bufferView": 2, "componentType": FLOAT, "count": count, "type": "VEC2",
-            }));
+            self.attribute(
+                floats(&scene.mesh.uvs),
+                json!({
+                    "bufferView": 2, "componentType": FLOAT, "count": count, "type": "VEC2",
+                }),
+            );
             attributes["TEXCOORD_0"] = json!(2);
         }
-        let arity = scene.arity();
-        let index_view = buffer_views.len();
-        let start = bin.len();
-        // The texture of each kind once some primitive needs it: (kind, texture index).
-        let mut texture_of: Vec<(u32, usize)> = Vec::new();
-        for group in &groups {
-            let kinds: &[u32] = if primitive == Primitive::Triangles {
-                &[MATERIAL_BARK, MATERIAL_LEAF, MATERIAL_PLAIN]
-            } else {
-                &[MATERIAL_PLAIN]
-            };
+        attributes
+    }
+
+    /// Appends a vertex attribute's `bytes` in a buffer view of its own, and its `accessor`.
+    fn attribute(&mut self, bytes: Vec<u8>, accessor: Value) {
+        self.buffer_views
+            .push(view(&mut self.bin, bytes, Some(ARRAY_BUFFER)));
+        self.accessors.push(accessor);
+    }
+
+    /// One primitive per colour group and (for triangles) material kind that has any items, with
+    /// its material; their indices one after the other in one buffer view.
+    fn primitives(&mut self, scene: &Scene, groups: &[ColorGroup], attributes: &Value) {
+        let primitive = scene.primitive();
+        let (kinds, materials_of): (&[u32], Vec<u8>) = if primitive == Primitive::Triangles {
+            (
+                &[MATERIAL_BARK, MATERIAL_LEAF, MATERIAL_PLAIN],
+                scene.mesh.triangle_materials(),
+            )
+        } else {
+            (&[MATERIAL_PLAIN], Vec::new())
+        };
+        let kind_of = |item: u32| {
+            materials_of
+                .get(item as usize)
+                .map_or(MATERIAL_PLAIN, |&m| m as u32)
+        };
+        let index_view = self.buffer_views.len();
+        let start = self.bin.len();
+        for group in groups {
             for &kind in kinds {
-                let offset = bin.len() - start;
-                let mut count = 0;
-                for &item in &group.items {
-                    if primitive == Primitive::Triangles && kind_of(item) != kind {
-                        continue;
-                    }
-                    count += 1;
-                    for corner in &scene.corners(item)[..arity] {
-                        bin.extend_from_slice(&corner.to_le_bytes());
-                    }
-                }
+                let offset = self.bin.len() - start;
+                let items = group
+                    .items
+                    .iter()
+                    .copied()
+                    .filter(|&item| primitive != Primitive::Triangles || kind_of(item) == kind);
+                let count = self.indices(scene, items);
                 if count == 0 {
                     continue;
                 }
-                let [r, g, b] = group.color;
-                let (suffix, textured) = match (primitive, kind) {
-                    (Primitive::Lines, _) => ("", false),
-                    (_, MATERIAL_BARK) => ("", true),
-                    (_, MATERIAL_LEAF) => ("_leaf", true),
-                    _ => ("_plain", false),
-                };
-                let mut material = json!({
-                    "name": format!("color_{}{}", group.index, suffix),
-                    "pbrMetallicRoughness": {
-                        "baseColorFactor": [r as f64, g as f64, b as f64, 1.0],
-                        "metallicFactor": 0.0,
-                        "roughnessFactor": 0.85,
-                    },
-                });
-                if textured {
-                    let texture = match texture_of.iter().find(|(k, _)| *k == kind) {
-                        Some(&(_, t)) => t,
-                        None => {
-                            texture_of.push((kind, textures.len()));
-                            textures.push(json!({ "sampler": 0, "source": images.len() }));
-                            images.push(json!({ "kind": kind }));
-                            textures.len() - 1
-                        }
-                    };
-                    material["pbrMetallicRoughness"]["baseColorTexture"] =
-                        json!({ "index": texture, "texCoord": 0 });
-                }
-                if kind == MATERIAL_LEAF && primitive == Primitive::Triangles {
-                    material["alphaMode"] = json!("MASK");
-                    material["alphaCutoff"] = json!(0.5);
-                    material["doubleSided"] = json!(true);
-                }
-                materials.push(material);
-                primitives.push(json!({
+                let material = self.material(group, kind, primitive);
+                self.materials.push(material);
+                self.primitives.push(json!({
                     "attributes": attributes,
-                    "indices": accessors.len(),
-                    "material": materials.len() - 1,
+                    "indices": self.accessors.len(),
+                    "material": self.materials.len() - 1,
                     "mode": if primitive == Primitive::Triangles { TRIANGLES } else { LINES },
                 }));
-                accessors.push(json!({
+                self.accessors.push(json!({
                     "bufferView": index_view, "byteOffset": offset, "componentType": UNSIGNED_INT,
-                    "count": count * arity, "type": "SCALAR",
+                    "count": count, "type": "SCALAR",
                 }));
             }
         }
-        buffer_views.push(json!({
-            "buffer": 0, "byteOffset": start, "byteLength": bin.len() - start,
+        self.buffer_views.push(json!({
+            "buffer": 0, "byteOffset": start, "byteLength": self.bin.len() - start,
             "target": ELEMENT_ARRAY_BUFFER,
         }));
-        // The images the textures use, after the indices, each in its own buffer view.
-        for image in images.iter_mut() {
-            let bytes = if image["kind"] == json!(MATERIAL_LEAF) {
-                LEAF_PNG
-            } else {
-                BARK_PNG
-            };
-            let name = if image["kind"] == json!(MATERIAL_LEAF) {
-                "leaf"
-            } else {
-                "bark"
-            };
-            bin.resize(bin.len().next_multiple_of(4), 0);
-            buffer_views.push(view(&mut bin, bytes.to_vec(), None));
-            *image = json!({
-                "name": name, "bufferView": buffer_views.len() - 1, "mimeType": "image/png",
-            });
-        }
-        bin.resize(bin.len().next_multiple_of(4), 0);
     }
 
-    let mut document = json!({
-        "asset": {
-            "version": "2.0",
-            "generator": format!("Meristem {}", env!("CARGO_PKG_VERSION")),
-        },
-        "scene": 0,
-        "scenes": [{ "name": "Meristem plant" }],
-    });
-    if !primitives.is_empty() {
+    /// Appends the corners of `items` (triangles or lines) to the binary chunk as `u32`s;
+    /// returns how many it wrote.
+    fn indices(&mut self, scene: &Scene, items: impl Iterator<Item = u32>) -> usize {
+        let arity = scene.arity();
+        let mut count = 0;
+        for item in items {
+            count += arity;
+            for corner in &scene.corners(item)[..arity] {
+                self.bin.extend_from_slice(&corner.to_le_bytes());
+            }
+        }
+        count
+    }
+
+    /// The material of `group`'s items of material `kind`: the group's colour, with the bark or
+    /// leaf texture (leaves alpha-masked and two-sided) or none.
+    fn material(&mut self, group: &ColorGroup, kind: u32, primitive: Primitive) -> Value {
+        let [r, g, b] = group.color;
+        let (suffix, textured) = match (primitive, kind) {
+            (Primitive::Lines, _) => ("", false),
+            (_, MATERIAL_BARK) => ("", true),
+            (_, MATERIAL_LEAF) => ("_leaf", true),
+            _ => ("_plain", false),
+        };
+        let mut material = json!({
+            "name": format!("color_{}{}", group.index, suffix),
+            "pbrMetallicRoughness": {
+                "baseColorFactor": [r as f64, g as f64, b as f64, 1.0],
+                "metallicFactor": 0.0,
+                "roughnessFactor": 0.85,
+            },
+        });
+        if textured {
+            material["pbrMetallicRoughness"]["baseColorTexture"] =
+                json!({ "index": self.texture(kind), "texCoord": 0 });
+        }
+        if kind == MATERIAL_LEAF && primitive == Primitive::Triangles {
+            material["alphaMode"] = json!("MASK");
+            material["alphaCutoff"] = json!(0.5);
+            material["doubleSided"] = json!(true);
+        }
+        material
+    }
+
+    /// The index of the texture of material `kind`, added when no material used it before.
+    fn texture(&mut self, kind: u32) -> usize {
+        match self.textures.iter().position(|&k| k == kind) {
+            Some(texture) => texture,
+            None => {
+                self.textures.push(kind);
+                self.textures.len() - 1
+            }
+        }
+    }
+
+    /// Embeds the image of each texture after the indices, each in its own buffer view at a
+    /// 4-byte boundary.
+    fn embed_textures(&mut self) {
+        for texture in 0..self.textures.len() {
+            let (bytes, name) = if self.textures[texture] == MATERIAL_LEAF {
+                (LEAF_PNG, "leaf")
+            } else {
+                (BARK_PNG, "bark")
+            };
+            self.pad_bin();
+            self.buffer_views
+                .push(view(&mut self.bin, bytes.to_vec(), None));
+            self.images.push(json!({
+                "name": name, "bufferView": self.buffer_views.len() - 1, "mimeType": "image/png",
+            }));
+        }
+    }
+
+    /// Pads the binary chunk with zeros to a 4-byte boundary.
+    fn pad_bin(&mut self) {
+        self.bin.resize(self.bin.len().next_multiple_of(4), 0);
+    }
+
+    /// The GLB container of the document: its JSON and its binary chunk.
+    fn into_glb(mut self) -> Vec<u8> {
+        let bin = std::mem::take(&mut self.bin);
+        let json = self.json(bin.len());
+        glb(&serde_json::to_vec(&json).unwrap_or_default(), &bin)
+    }
+
+    /// The JSON document (its binary chunk `bin_length` bytes long): one scene, and when there are
+    /// primitives one node with one mesh.
+    fn json(self, bin_length: usize) -> Value {
+        let mut document = json!({
+            "asset": {
+                "version": "2.0",
+                "generator": format!("Meristem {}", env!("CARGO_PKG_VERSION")),
+            },
+            "scene": 0,
+            "scenes": [{ "name": "Meristem plant" }],
+        });
+        if self.primitives.is_empty() {
+            return document;
+        }
         document["scenes"][0]["nodes"] = json!([0]);
         document["nodes"] = json!([{ "name": "plant", "mesh": 0 }]);
-        document["meshes"] = json!([{ "name": "plant", "primitives": primitives }]);
-        document["materials"] = Value::Array(materials);
-        if !images.is_empty() {
-            document["images"] = Value::Array(images);
+        document["meshes"] = json!([{ "name": "plant", "primitives": self.primitives }]);
+        document["materials"] = Value::Array(self.materials);
+        if !self.images.is_empty() {
+            let textures: Vec<Value> = (0..self.textures.len())
+                .map(|i| json!({ "sampler": 0, "source": i }))
+                .collect();
+            document["images"] = Value::Array(self.images);
             document["textures"] = Value::Array(textures);
             document["samplers"] = json!([{
                 "magFilter": LINEAR, "minFilter": LINEAR_MIPMAP_LINEAR,
                 "wrapS": REPEAT, "wrapT": REPEAT,
             }]);
         }
-        document["accessors"] = Value::Array(accessors);
-        document["bufferViews"] = Value::Array(buffer_views);
-        document["buffers"] = json!([{ "byteLength": bin.len() }]);
+        document["accessors"] = Value::Array(self.accessors);
+        document["bufferViews"] = Value::Array(self.buffer_views);
+        document["buffers"] = json!([{ "byteLength": bin_length }]);
+        document
     }
-    glb(&serde_json::to_vec(&document).unwrap_or_default(), &bin)
 }
 
 /// Appends `bytes` to the binary chunk (at a 4-byte boundary) and returns its buffer view.

@@ -5,16 +5,16 @@
 //! `IndexedFaceSet`. A model too large to mesh becomes `IndexedLineSet`s drawn in their base
 //! colour.
 
-use super::scene::{decimals_for, extent, number, srgb, Primitive, Scene, View};
+use super::scene::{
+    coord_index, decimals_for, extent, number, srgb, ColorGroup, Primitive, Scene, View,
+};
 use std::fmt::Write;
 
 /// The Inventor text of `scene`.
 pub fn write(scene: &Scene) -> String {
     let bounds = scene.bounds();
     let decimals = decimals_for(extent(bounds));
-    let view = View::framing(bounds);
     let groups = scene.groups();
-    let primitive = scene.primitive();
     let points = scene.points();
     let mut out = String::with_capacity(64 + points.len() * 12);
 
@@ -25,33 +25,49 @@ pub fn write(scene: &Scene) -> String {
         env!("CARGO_PKG_VERSION")
     )
     .ok();
-    out.push_str("Separator {\n  PerspectiveCamera {\n    position ");
-    vector(&mut out, view.eye.to_array(), decimals);
+    out.push_str("Separator {\n");
+    camera_and_light(&mut out, &View::framing(bounds), decimals);
+    if !groups.is_empty() {
+        shared_vertices(&mut out, scene, decimals);
+        for group in &groups {
+            shape(&mut out, scene, group);
+        }
+    }
+    out.push_str("}\n");
+    out
+}
+
+/// The `PerspectiveCamera` that frames the plant as `view` does, and a `DirectionalLight` along
+/// the view.
+fn camera_and_light(out: &mut String, view: &View, decimals: usize) {
+    out.push_str("  PerspectiveCamera {\n    position ");
+    vector(out, view.eye.to_array(), decimals);
     let (axis, angle) = view.orientation();
     out.push_str("\n    orientation ");
-    vector(&mut out, axis.to_array(), 6);
+    vector(out, axis.to_array(), 6);
     out.push(' ');
-    number(&mut out, angle, 6);
+    number(out, angle, 6);
     out.push_str("\n    nearDistance ");
     number(
-        &mut out,
+        out,
         (view.distance - view.radius).max(view.distance * 0.01),
         decimals,
     );
     out.push_str("\n    farDistance ");
-    number(&mut out, view.distance + view.radius * 2.0, decimals);
+    number(out, view.distance + view.radius * 2.0, decimals);
     out.push_str("\n    focalDistance ");
-    number(&mut out, view.distance, decimals);
+    number(out, view.distance, decimals);
     out.push_str("\n    heightAngle ");
-    number(&mut out, view.fov, 6);
+    number(out, view.fov, 6);
     out.push_str("\n  }\n  DirectionalLight {\n    direction ");
-    vector(&mut out, view.direction().to_array(), 6);
+    vector(out, view.direction().to_array(), 6);
     out.push_str("\n  }\n");
+}
 
-    if groups.is_empty() {
-        out.push_str("}\n");
-        return out;
-    }
+/// What every shape shares: `ShapeHints` (or, for lines, a `LightModel` of base colours), the
+/// `Coordinate3` and, for triangles, the `Normal` bound per vertex.
+fn shared_vertices(out: &mut String, scene: &Scene, decimals: usize) {
+    let primitive = scene.primitive();
     match primitive {
         Primitive::Triangles => {
             out.push_str(
@@ -61,39 +77,32 @@ pub fn write(scene: &Scene) -> String {
         Primitive::Lines => out.push_str("  LightModel {\n    model BASE_COLOR\n  }\n"),
     }
     out.push_str("  Coordinate3 {\n    point [\n");
-    triples(&mut out, points, decimals);
+    triples(out, scene.points(), decimals);
     out.push_str("    ]\n  }\n");
     if primitive == Primitive::Triangles {
         out.push_str("  Normal {\n    vector [\n");
-        triples(&mut out, &scene.mesh.normals, 4);
+        triples(out, &scene.mesh.normals, 4);
         out.push_str("    ]\n  }\n  NormalBinding {\n    value PER_VERTEX_INDEXED\n  }\n");
     }
-    let arity = scene.arity();
-    for group in &groups {
-        let [r, g, b] = srgb(group.color);
-        write!(
-            out,
-            "  # colour index {}\n  Material {{\n    diffuseColor ",
-            group.index
-        )
-        .ok();
-        vector(&mut out, [r as f64, g as f64, b as f64], 4);
-        out.push_str("\n  }\n");
-        match primitive {
-            Primitive::Triangles => out.push_str("  IndexedFaceSet {\n    coordIndex [\n"),
-            Primitive::Lines => out.push_str("  IndexedLineSet {\n    coordIndex [\n"),
-        }
-        for &item in &group.items {
-            out.push_str("     ");
-            for corner in &scene.corners(item)[..arity] {
-                write!(out, " {corner},").ok();
-            }
-            out.push_str(" -1,\n");
-        }
-        out.push_str("    ]\n  }\n");
+}
+
+/// The `Material` of a colour group and its `IndexedFaceSet` (or `IndexedLineSet`).
+fn shape(out: &mut String, scene: &Scene, group: &ColorGroup) {
+    let [r, g, b] = srgb(group.color);
+    write!(
+        out,
+        "  # colour index {}\n  Material {{\n    diffuseColor ",
+        group.index
+    )
+    .ok();
+    vector(out, [r as f64, g as f64, b as f64], 4);
+    out.push_str("\n  }\n");
+    match scene.primitive() {
+        Primitive::Triangles => out.push_str("  IndexedFaceSet {\n    coordIndex [\n"),
+        Primitive::Lines => out.push_str("  IndexedLineSet {\n    coordIndex [\n"),
     }
-    out.push_str("}\n");
-    out
+    coord_index(out, scene, &group.items, ",");
+    out.push_str("    ]\n  }\n");
 }
 
 fn vector(out: &mut String, v: [f64; 3], decimals: usize) {

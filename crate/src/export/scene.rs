@@ -206,6 +206,20 @@ pub fn srgb(linear: [f32; 3]) -> [f32; 3] {
     })
 }
 
+/// The rows of an Inventor or VRML `coordIndex` for `items` (triangles or lines of `scene`):
+/// each item's corners and `-1`, every number after a space and followed by `separator` (`,` in
+/// Inventor, nothing in VRML).
+pub fn coord_index(out: &mut String, scene: &Scene, items: &[u32], separator: &str) {
+    let arity = scene.arity();
+    for &item in items {
+        out.push_str("     ");
+        for corner in &scene.corners(item)[..arity] {
+            write!(out, " {corner}{separator}").ok();
+        }
+        writeln!(out, " -1{separator}").ok();
+    }
+}
+
 /// Writes `value` with at most `decimals` decimals, trailing zeros and a trailing point removed
 /// and `-0` printed as `0`: `1.5`, `2`, `-0.25`. The same bytes on every machine: the value is
 /// scaled and rounded (half away from zero) in IEEE arithmetic, then printed as integers, which is

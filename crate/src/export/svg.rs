@@ -112,55 +112,14 @@ pub fn write(mesh: &MeshBuffers, skeleton: &Skeleton) -> String {
         size + DVec2::splat(2.0 * margin),
     );
     let decimals = decimals_for(size.max_element()).saturating_sub(2);
-    let scale = PICTURE_SIZE / size.max_element();
 
     let mut out = String::with_capacity(256 + shapes.len() * 48);
-    out.push_str("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
-    out.push_str("<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"");
-    for (k, v) in [min.x, min.y, size.x, size.y].into_iter().enumerate() {
-        if k > 0 {
-            out.push(' ');
-        }
-        number(&mut out, v, decimals);
-    }
-    out.push_str("\" width=\"");
-    number(&mut out, size.x * scale, 1);
-    out.push_str("\" height=\"");
-    number(&mut out, size.y * scale, 1);
-    out.push_str("\">\n<title>Meristem plant</title>\n");
-    writeln!(
-        out,
-        "<desc>Made with Meristem {}: the plant projected onto the X-Y plane, Y up.</desc>",
-        env!("CARGO_PKG_VERSION")
-    )
-    .ok();
+    header(&mut out, min, size, decimals);
     out.push_str("<g stroke-linecap=\"round\" stroke-linejoin=\"round\">\n");
-
     let mut k = 0;
     while k < shapes.len() {
         match &shapes[k] {
-            Shape::Line(start, end, width, color) => {
-                // A run of segments that continue each other with one colour and width.
-                out.push_str("<path d=\"M");
-                pair(&mut out, *start, decimals);
-                out.push('L');
-                pair(&mut out, *end, decimals);
-                let mut last = *end;
-                while let Some(Shape::Line(a, b, w, c)) = shapes.get(k + 1) {
-                    if *a != last || w != width || c != color {
-                        break;
-                    }
-                    out.push('L');
-                    pair(&mut out, *b, decimals);
-                    last = *b;
-                    k += 1;
-                }
-                out.push_str("\" fill=\"none\" stroke=\"");
-                out.push_str(&hex(skeleton, *color));
-                out.push_str("\" stroke-width=\"");
-                number(&mut out, *width, decimals + 1);
-                out.push_str("\"/>\n");
-            }
+            Shape::Line(..) => k = path(&mut out, skeleton, &shapes, k, decimals),
             Shape::Fill(points, color) => {
                 out.push_str("<polygon points=\"");
                 for (i, p) in points.iter().enumerate() {
@@ -185,6 +144,65 @@ pub fn write(mesh: &MeshBuffers, skeleton: &Skeleton) -> String {
     }
     out.push_str("</g>\n</svg>\n");
     out
+}
+
+/// The XML declaration, the `svg` element (its `viewBox` from `min` over `size`, the picture
+/// [`PICTURE_SIZE`] on its longer side), its title and description.
+fn header(out: &mut String, min: DVec2, size: DVec2, decimals: usize) {
+    let scale = PICTURE_SIZE / size.max_element();
+    out.push_str("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
+    out.push_str("<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"");
+    for (k, v) in [min.x, min.y, size.x, size.y].into_iter().enumerate() {
+        if k > 0 {
+            out.push(' ');
+        }
+        number(out, v, decimals);
+    }
+    out.push_str("\" width=\"");
+    number(out, size.x * scale, 1);
+    out.push_str("\" height=\"");
+    number(out, size.y * scale, 1);
+    out.push_str("\">\n<title>Meristem plant</title>\n");
+    writeln!(
+        out,
+        "<desc>Made with Meristem {}: the plant projected onto the X-Y plane, Y up.</desc>",
+        env!("CARGO_PKG_VERSION")
+    )
+    .ok();
+}
+
+/// One `path` for the line `shapes[k]` and the lines after it that continue it with the same
+/// colour and width; returns the index of the last line it drew.
+fn path(
+    out: &mut String,
+    skeleton: &Skeleton,
+    shapes: &[Shape],
+    mut k: usize,
+    decimals: usize,
+) -> usize {
+    let Shape::Line(start, end, width, color) = &shapes[k] else {
+        return k;
+    };
+    out.push_str("<path d=\"M");
+    pair(out, *start, decimals);
+    out.push('L');
+    pair(out, *end, decimals);
+    let mut last = *end;
+    while let Some(Shape::Line(a, b, w, c)) = shapes.get(k + 1) {
+        if *a != last || w != width || c != color {
+            break;
+        }
+        out.push('L');
+        pair(out, *b, decimals);
+        last = *b;
+        k += 1;
+    }
+    out.push_str("\" fill=\"none\" stroke=\"");
+    out.push_str(&hex(skeleton, *color));
+    out.push_str("\" stroke-width=\"");
+    number(out, *width, decimals + 1);
+    out.push_str("\"/>\n");
+    k
 }
 
 /// `x,y` (path data and polygon points).

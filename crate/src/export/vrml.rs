@@ -4,8 +4,7 @@
 //! a `Viewpoint` that frames the plant and a white `Background`. Colours are sRGB. A model too
 //! large to mesh is written as an `IndexedLineSet` per colour index (emissive colour).
 
-use super::scene::{decimals_for, extent, number, srgb, Primitive, Scene, View};
-use std::fmt::Write;
+use super::scene::{coord_index, decimals_for, extent, number, srgb, Primitive, Scene, View};
 
 /// The VRML text of `scene`.
 pub fn write(scene: &Scene) -> String {
@@ -74,14 +73,7 @@ pub fn write(scene: &Scene) -> String {
             }
         }
         out.push_str("    coordIndex [\n");
-        let arity = scene.arity();
-        for &item in &group.items {
-            out.push_str("     ");
-            for corner in &scene.corners(item)[..arity] {
-                write!(out, " {corner}").ok();
-            }
-            out.push_str(" -1\n");
-        }
+        coord_index(&mut out, scene, &group.items, "");
         out.push_str("    ]\n  }\n}\n");
     }
     out

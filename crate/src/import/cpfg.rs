@@ -313,140 +313,167 @@ impl Importer {
         &mut self,
         line: &Line,
         all: &[Line],
-        mut i: usize,
+        i: usize,
         block_end: usize,
         ended: &mut bool,
     ) -> usize {
-        {
-            let code = line.code.as_str();
-            let lower = code.to_ascii_lowercase();
-            if *ended {
-                if self.flavour == Flavour::Lpy {
-                    i = self.python(line, &all[i..block_end], block_end, i);
-                } else {
-                    self.note_once(
-                        "after",
-                        line.n,
-                        "text after endlsystem (another L-system of the file) is not translated",
-                    );
-                }
-                return i;
-            }
-            if self.flavour == Flavour::Cpfg && code.starts_with('#') {
-                self.preprocessor(line);
-                return i;
-            }
-            if keyword(&lower, code, "lsystem:").is_some() {
-                return i;
-            }
-            // dialect: cpfg's keyword
-            if let Some(rest) = keyword(&lower, code, "derivation length:") {
-                match self.expression(rest, &Env::new()) {
-                    Ok(e) => self.out.line(
-                        format!("{} {e}", KeywordKind::DerivationLength.written()),
-                        line.n,
-                    ),
-                    Err(why) => self.note(line.n, format!("derivation length: {why}")),
-                }
-                return i;
-            }
-            // dialect: cpfg's keyword
-            if let Some(rest) = keyword(&lower, code, "axiom:") {
-                match self.modules(rest, &Env::new(), line.n) {
-                    Ok(m) => {
-                        self.axiom = true;
-                        self.out.line(
-                            format!("{} {}", KeywordKind::Axiom.written(), separate(&m)),
-                            line.n,
-                        );
-                    }
-                    Err(why) => self.note(line.n, format!("the axiom: {why}")),
-                }
-                return i;
-            }
-            let lists = [
-                ("ignore:", DirectiveKind::Ignore.written()),
-                ("consider:", DirectiveKind::Consider.written()),
-            ];
-            if let Some((kw, directive)) = lists.iter().find(|(k, _)| lower.starts_with(k)) {
-                let rest = &code[kw.len()..];
-                match self.modules(rest, &Env::new(), line.n) {
-                    Ok(m) => {
-                        let names = module_names(&m);
-                        if !names.is_empty() {
-                            self.out
-                                .line(format!("{directive} {}", names.join(" ")), line.n);
-                        }
-                    }
-                    Err(why) => self.note(line.n, format!("{kw} {why}")),
-                }
-                return i;
-            }
-            // dialect: cpfg's keyword
-            if let Some(rest) = keyword(&lower, code, "maximum depth:") {
-                self.out.line(
-                    format!("{} {}", KeywordKind::MaximumDepth.written(), rest.trim()),
-                    line.n,
-                );
-                return i;
-            }
-            if let Some(section) = section(&lower) {
-                self.out.line(section, line.n);
-                return i;
-            }
-            let end = KeywordKind::EndLSystem.written();
-            if lower == end {
-                self.out.line(end, line.n);
-                *ended = true;
-                return i;
-            }
-            if lower.starts_with("group") || lower == "endgroup" {
-                self.note_once(
-                    "group",
-                    line.n,
-                    "L-Py's production groups are not translated: every group's productions are imported as one set",
-                );
-                return i;
-            }
-            if self.flavour == Flavour::Lpy && code.starts_with("module ") {
-                return i;
-            }
-            if arrow(code).is_some() {
-                // A production may go on on the next lines (cpfg writes long successors so).
-                let mut text = code.to_string();
-                while i < all.len()
-                    && !all[i].code.is_empty()
-                    && all[i].indent > line.indent
-                    && arrow(&all[i].code).is_none()
-                {
-                    text.push(' ');
-                    text.push_str(&all[i].code);
-                    i += 1;
-                }
-                self.production(&text, line.n);
-                return i;
-            }
-            if self.flavour == Flavour::Lpy && code.ends_with(':') && i <= all.len() {
-                if let Some(rest) = python_production_header(code) {
-                    self.python_production(rest, &all[i..block_end], line.n);
-                    i = block_end;
-                    return i;
-                }
-            }
+        let code = line.code.as_str();
+        if *ended {
             if self.flavour == Flavour::Lpy {
-                if let Some((pattern, succ)) = inline_produce(code) {
-                    self.production(&format!("{pattern} --> {succ}"), line.n);
-                    return i;
-                }
-                i = self.python(line, &all[i..block_end], block_end, i);
-                return i;
+                return self.python(line, &all[i..block_end], block_end, i);
             }
-            self.note(
+            self.note_once(
+                "after",
                 line.n,
-                format!("'{code}' is not part of the notation Meristem imports; skipped"),
+                "text after endlsystem (another L-system of the file) is not translated",
             );
+            return i;
         }
+        if self.flavour == Flavour::Cpfg && code.starts_with('#') {
+            self.preprocessor(line);
+            return i;
+        }
+        if self.keyword_statement(line, ended) {
+            return i;
+        }
+        if arrow(code).is_some() {
+            return self.production_lines(line, all, i);
+        }
+        if self.flavour == Flavour::Lpy {
+            return self.python_statement(line, all, i, block_end);
+        }
+        self.note(
+            line.n,
+            format!("'{code}' is not part of the notation Meristem imports; skipped"),
+        );
         i
+    }
+
+    /// Translates a line that starts with a keyword of the notation (`Axiom:`, `derivation
+    /// length:`, `ignore:`, a section's name, `endlsystem` …) or that means nothing to Meristem
+    /// (`lsystem:`, production groups, L-Py's `module` declarations, read before). Returns
+    /// whether the line was one; sets `ended` at `endlsystem`.
+    fn keyword_statement(&mut self, line: &Line, ended: &mut bool) -> bool {
+        let code = line.code.as_str();
+        let lower = code.to_ascii_lowercase();
+        if keyword(&lower, code, "lsystem:").is_some() {
+            return true;
+        }
+        // dialect: cpfg's keyword
+        if let Some(rest) = keyword(&lower, code, "derivation length:") {
+            match self.expression(rest, &Env::new()) {
+                Ok(e) => self.out.line(
+                    format!("{} {e}", KeywordKind::DerivationLength.written()),
+                    line.n,
+                ),
+                Err(why) => self.note(line.n, format!("derivation length: {why}")),
+            }
+            return true;
+        }
+        // dialect: cpfg's keyword
+        if let Some(rest) = keyword(&lower, code, "axiom:") {
+            self.axiom(rest, line.n);
+            return true;
+        }
+        let lists = [
+            ("ignore:", DirectiveKind::Ignore.written()),
+            ("consider:", DirectiveKind::Consider.written()),
+        ];
+        if let Some((kw, directive)) = lists.iter().find(|(k, _)| lower.starts_with(k)) {
+            self.module_list(kw, directive, &code[kw.len()..], line.n);
+            return true;
+        }
+        // dialect: cpfg's keyword
+        if let Some(rest) = keyword(&lower, code, "maximum depth:") {
+            self.out.line(
+                format!("{} {}", KeywordKind::MaximumDepth.written(), rest.trim()),
+                line.n,
+            );
+            return true;
+        }
+        if let Some(section) = section(&lower) {
+            self.out.line(section, line.n);
+            return true;
+        }
+        let end = KeywordKind::EndLSystem.written();
+        if lower == end {
+            self.out.line(end, line.n);
+            *ended = true;
+            return true;
+        }
+        if lower.starts_with("group") || lower == "endgroup" {
+            self.note_once(
+                "group",
+                line.n,
+                "L-Py's production groups are not translated: every group's productions are imported as one set",
+            );
+            return true;
+        }
+        self.flavour == Flavour::Lpy && code.starts_with("module ")
+    }
+
+    /// `Axiom: modules` (the text after the colon is `rest`).
+    fn axiom(&mut self, rest: &str, n: usize) {
+        match self.modules(rest, &Env::new(), n) {
+            Ok(m) => {
+                self.axiom = true;
+                self.out.line(
+                    format!("{} {}", KeywordKind::Axiom.written(), separate(&m)),
+                    n,
+                );
+            }
+            Err(why) => self.note(n, format!("the axiom: {why}")),
+        }
+    }
+
+    /// `ignore: modules` or `consider: modules` (the keyword `kw`, then `rest`) as Meristem's
+    /// `directive` with the modules' names.
+    fn module_list(&mut self, kw: &str, directive: &str, rest: &str, n: usize) {
+        match self.modules(rest, &Env::new(), n) {
+            Ok(m) => {
+                let names = module_names(&m);
+                if !names.is_empty() {
+                    self.out.line(format!("{directive} {}", names.join(" ")), n);
+                }
+            }
+            Err(why) => self.note(n, format!("{kw} {why}")),
+        }
+    }
+
+    /// A production starting at `line`, which may go on on the lines after it from `i` (cpfg
+    /// writes long successors so: lines indented more that have no arrow). Returns the index of
+    /// the next line to read.
+    fn production_lines(&mut self, line: &Line, all: &[Line], mut i: usize) -> usize {
+        let mut text = line.code.clone();
+        while i < all.len()
+            && !all[i].code.is_empty()
+            && all[i].indent > line.indent
+            && arrow(&all[i].code).is_none()
+        {
+            text.push(' ');
+            text.push_str(&all[i].code);
+            i += 1;
+        }
+        self.production(&text, line.n);
+        i
+    }
+
+    /// An L-Py line that is no keyword and no production with an arrow: a production with a
+    /// Python body (the lines from `i` to `block_end`), a one-line `pattern : produce …`, or other
+    /// Python. Returns the index of the next line to read.
+    fn python_statement(&mut self, line: &Line, all: &[Line], i: usize, block_end: usize) -> usize {
+        let code = line.code.as_str();
+        if code.ends_with(':') && i <= all.len() {
+            if let Some(rest) = python_production_header(code) {
+                self.python_production(rest, &all[i..block_end], line.n);
+                return block_end;
+            }
+        }
+        if let Some((pattern, succ)) = inline_produce(code) {
+            self.production(&format!("{pattern} --> {succ}"), line.n);
+            return i;
+        }
+        self.python(line, &all[i..block_end], block_end, i)
     }
 
     /// cpfg's preprocessor lines: `#define NAME value` becomes Meristem's `#define`.
@@ -536,29 +563,65 @@ impl Importer {
         let Some((start, end)) = arrow(code) else {
             return;
         };
-        let left = code[..start].trim();
-        let mut right = code[end..].trim();
-        let (pattern, condition_part) = match top_level(left, ":") {
+        match self.production_text(code[..start].trim(), code[end..].trim(), n) {
+            Ok(text) => self.out.line(text, n),
+            Err(why) => self.note(n, format!("{why}; the production is skipped")),
+        }
+    }
+
+    /// The Meristem production of `left --> right`, or why it has none.
+    fn production_text(&mut self, left: &str, right: &str, n: usize) -> Result<String, String> {
+        let (pattern, guard) = match top_level(left, ":") {
             Some(i) => (left[..i].trim(), left[i + 1..].trim()),
             None => (left, ""),
         };
-        // Blocks `{…}` before and after the condition, and the condition between them.
+        let (env, condition) = self.guard(guard)?;
+        // cpfg's probability after the successor: `--> succ : 0.3`.
+        let (right, weight) = match top_level(right, ":") {
+            Some(i) => {
+                let weight = self
+                    .expression(right[i + 1..].trim(), &env)
+                    .map_err(|why| format!("the probability: {why}"))?;
+                (right[..i].trim(), Some(weight))
+            }
+            None => (right, None),
+        };
+        let mut text = self.pattern(pattern, n)?;
+        let successor = if right.is_empty() || right == "*" {
+            String::new()
+        } else {
+            self.modules(right, &env, n)?
+        };
+        if let Some(c) = condition {
+            text.push_str(&format!(" : {c}"));
+        }
+        text.push_str(" ->");
+        if let Some(w) = weight {
+            text.push_str(&format!(" ({w})"));
+        }
+        if successor.is_empty() {
+            text.push_str(" ε");
+        } else {
+            text.push(' ');
+            text.push_str(&separate(&successor));
+        }
+        Ok(text)
+    }
+
+    /// A production's guard (what stands between `:` and the arrow): statement blocks `{…}`
+    /// before and after a condition. Returns the names the blocks bind and the condition in
+    /// Meristem's terms (`None` when there is none or it is `*`).
+    fn guard(&mut self, guard: &str) -> Result<(Env, Option<String>), String> {
         let mut env = Env::new();
         let mut condition = String::new();
-        let mut rest = condition_part;
+        let mut rest = guard;
         let mut post = None;
         while !rest.is_empty() {
             if let Some(inner) = rest.strip_prefix('{') {
-                let Some(close) = inner.find('}') else {
-                    self.note(n, "a '{' block is never closed; the production is skipped");
-                    return;
-                };
+                let close = inner.find('}').ok_or("a '{' block is never closed")?;
                 let block = &inner[..close];
                 if condition.trim().is_empty() {
-                    if let Err(why) = self.block(block, &mut env) {
-                        self.note(n, format!("{why}; the production is skipped"));
-                        return;
-                    }
+                    self.block(block, &mut env)?;
                 } else {
                     post = Some(block.to_string());
                 }
@@ -573,66 +636,15 @@ impl Importer {
         let condition = if condition.is_empty() || condition == "*" {
             None
         } else {
-            match self.expression(condition, &env) {
-                Ok(c) => Some(c),
-                Err(why) => {
-                    self.note(
-                        n,
-                        format!("the condition {condition}: {why}; the production is skipped"),
-                    );
-                    return;
-                }
-            }
+            let translated = self
+                .expression(condition, &env)
+                .map_err(|why| format!("the condition {condition}: {why}"))?;
+            Some(translated)
         };
         if let Some(block) = post {
-            if let Err(why) = self.block(&block, &mut env) {
-                self.note(n, format!("{why}; the production is skipped"));
-                return;
-            }
+            self.block(&block, &mut env)?;
         }
-        // cpfg's probability after the successor: `--> succ : 0.3`.
-        let mut weight = None;
-        if let Some(i) = top_level(right, ":") {
-            match self.expression(right[i + 1..].trim(), &env) {
-                Ok(w) => weight = Some(w),
-                Err(why) => {
-                    self.note(
-                        n,
-                        format!("the probability: {why}; the production is skipped"),
-                    );
-                    return;
-                }
-            }
-            right = right[..i].trim();
-        }
-        let result = self.pattern(pattern, n).and_then(|p| {
-            let s = if right.is_empty() || right == "*" {
-                String::new()
-            } else {
-                self.modules(right, &env, n)?
-            };
-            Ok((p, s))
-        });
-        match result {
-            Ok((p, s)) => {
-                let mut text = p;
-                if let Some(c) = condition {
-                    text.push_str(&format!(" : {c}"));
-                }
-                text.push_str(" ->");
-                if let Some(w) = weight {
-                    text.push_str(&format!(" ({w})"));
-                }
-                if s.is_empty() {
-                    text.push_str(" ε");
-                } else {
-                    text.push(' ');
-                    text.push_str(&separate(&s));
-                }
-                self.out.line(text, n);
-            }
-            Err(why) => self.note(n, format!("{why}; the production is skipped")),
-        }
+        Ok((env, condition))
     }
 
     /// A production's left side: contexts and predecessor (formal parameters are names).
@@ -807,101 +819,107 @@ impl Importer {
             if c == '\'' || c == '"' {
                 return Err("a string is not a number".into());
             }
-            if c.is_ascii_digit()
+            i = if c.is_ascii_digit()
                 || (c == '.' && chars.get(i + 1).is_some_and(char::is_ascii_digit))
             {
-                let start = i;
-                while i < chars.len()
-                    && (chars[i].is_ascii_alphanumeric()
-                        || chars[i] == '.'
-                        || ((chars[i] == '-' || chars[i] == '+')
-                            && matches!(chars[i - 1], 'e' | 'E')))
-                {
-                    i += 1;
-                }
-                out.push_str(&chars[start..i].iter().collect::<String>());
-                continue;
-            }
-            if c.is_ascii_alphabetic() || c == '_' {
-                let start = i;
-                while i < chars.len()
-                    && (chars[i].is_ascii_alphanumeric() || chars[i] == '_' || chars[i] == '.')
-                {
-                    i += 1;
-                }
-                let mut word: String = chars[start..i].iter().collect();
-                if self.flavour == Flavour::Lpy {
-                    for prefix in ["math.", "random.", "np.", "numpy."] {
-                        if let Some(w) = word.strip_prefix(prefix) {
-                            word = w.to_string();
-                        }
-                    }
-                }
-                if word.contains('.') {
-                    return Err(format!("'{word}' is Python, not a number expression"));
-                }
-                let mut j = i;
-                while j < chars.len() && chars[j] == ' ' {
-                    j += 1;
-                }
-                if chars.get(j) == Some(&'(') {
-                    let close = matching(&chars, j).ok_or("a '(' is never closed")?;
-                    let inner: String = chars[j + 1..close].iter().collect();
-                    let mut args = Vec::new();
-                    for arg in split_top(&inner, ',') {
-                        if !arg.trim().is_empty() {
-                            args.push(self.expression(arg, env)?);
-                        }
-                    }
-                    out.push_str(&self.call(&word, &args)?);
-                    i = close + 1;
-                    continue;
-                }
-                if let Some(value) = env.get(&word) {
-                    out.push_str(value);
-                    continue;
-                }
-                let replacement = match (self.flavour, word.as_str()) {
-                    (Flavour::Lpy, "and") => "&&".to_string(),
-                    (Flavour::Lpy, "or") => "||".to_string(),
-                    (Flavour::Lpy, "not") => "!".to_string(),
-                    (Flavour::Lpy, "True") => "1".to_string(),
-                    (Flavour::Lpy, "False") => "0".to_string(),
-                    (Flavour::Lpy, "pi") => "3.14159265359".to_string(),
-                    (Flavour::Lpy, "None") => return Err("None is not a number".into()),
-                    _ => word,
-                };
-                if replacement.chars().all(|c| c.is_ascii_alphabetic())
-                    && !out.is_empty()
-                    && out.ends_with(|c: char| c.is_ascii_alphanumeric())
-                {
-                    out.push(' ');
-                }
-                out.push_str(&replacement);
-                continue;
-            }
-            let two: String = chars[i..(i + 2).min(chars.len())].iter().collect();
-            match (self.flavour, two.as_str(), c) {
-                (Flavour::Lpy, "**", _) => {
-                    out.push('^');
-                    i += 2;
-                }
-                (Flavour::Lpy, "//", _) => {
-                    return Err("Python's floor division // is not translated".into())
-                }
-                (Flavour::Lpy, _, '^') => {
-                    return Err("Python's ^ is a bitwise or, not a power".into())
-                }
-                (_, _, '[' | ']' | '{' | '}' | ';' | '`' | '$' | '@' | '#') => {
-                    return Err(format!("'{c}' in an expression"));
-                }
-                _ => {
-                    out.push(c);
-                    i += 1;
+                let end = number_end(&chars, i);
+                out.extend(&chars[i..end]);
+                end
+            } else if c.is_ascii_alphabetic() || c == '_' {
+                self.word(&chars, i, env, &mut out)?
+            } else {
+                self.operator(&chars, i, &mut out)?
+            };
+        }
+        Ok(out)
+    }
+
+    /// Translates the name at `chars[start]` into `out`: a call with its arguments, a name bound
+    /// in `env`, one of Python's words, or the name itself. Returns the index after it.
+    fn word(
+        &mut self,
+        chars: &[char],
+        start: usize,
+        env: &Env,
+        out: &mut String,
+    ) -> Result<usize, String> {
+        let mut i = start;
+        while i < chars.len()
+            && (chars[i].is_ascii_alphanumeric() || chars[i] == '_' || chars[i] == '.')
+        {
+            i += 1;
+        }
+        let mut word: String = chars[start..i].iter().collect();
+        if self.flavour == Flavour::Lpy {
+            for prefix in ["math.", "random.", "np.", "numpy."] {
+                if let Some(w) = word.strip_prefix(prefix) {
+                    word = w.to_string();
                 }
             }
         }
-        Ok(out)
+        if word.contains('.') {
+            return Err(format!("'{word}' is Python, not a number expression"));
+        }
+        let mut j = i;
+        while j < chars.len() && chars[j] == ' ' {
+            j += 1;
+        }
+        if chars.get(j) == Some(&'(') {
+            let close = matching(chars, j).ok_or("a '(' is never closed")?;
+            let inner: String = chars[j + 1..close].iter().collect();
+            let mut args = Vec::new();
+            for arg in split_top(&inner, ',') {
+                if !arg.trim().is_empty() {
+                    args.push(self.expression(arg, env)?);
+                }
+            }
+            out.push_str(&self.call(&word, &args)?);
+            return Ok(close + 1);
+        }
+        if let Some(value) = env.get(&word) {
+            out.push_str(value);
+            return Ok(i);
+        }
+        let replacement = match (self.flavour, word.as_str()) {
+            (Flavour::Lpy, "and") => "&&".to_string(),
+            (Flavour::Lpy, "or") => "||".to_string(),
+            (Flavour::Lpy, "not") => "!".to_string(),
+            (Flavour::Lpy, "True") => "1".to_string(),
+            (Flavour::Lpy, "False") => "0".to_string(),
+            (Flavour::Lpy, "pi") => "3.14159265359".to_string(),
+            (Flavour::Lpy, "None") => return Err("None is not a number".into()),
+            _ => word,
+        };
+        if replacement.chars().all(|c| c.is_ascii_alphabetic())
+            && !out.is_empty()
+            && out.ends_with(|c: char| c.is_ascii_alphanumeric())
+        {
+            out.push(' ');
+        }
+        out.push_str(&replacement);
+        Ok(i)
+    }
+
+    /// Translates the operator or punctuation at `chars[i]` into `out` (Python's `**` is `^`;
+    /// what has no meaning in an expression is an error). Returns the index after it.
+    fn operator(&self, chars: &[char], i: usize, out: &mut String) -> Result<usize, String> {
+        let c = chars[i];
+        let two: String = chars[i..(i + 2).min(chars.len())].iter().collect();
+        match (self.flavour, two.as_str(), c) {
+            (Flavour::Lpy, "**", _) => {
+                out.push('^');
+                Ok(i + 2)
+            }
+            (Flavour::Lpy, "//", _) => Err("Python's floor division // is not translated".into()),
+            (Flavour::Lpy, _, '^') => Err("Python's ^ is a bitwise or, not a power".into()),
+            (_, _, '[' | ']' | '{' | '}' | ';' | '`' | '$' | '@' | '#') => {
+                Err(format!("'{c}' in an expression"))
+            }
+            _ => {
+                out.push(c);
+                Ok(i + 1)
+            }
+        }
     }
 
     /// A function call in Meristem's terms.
@@ -947,75 +965,14 @@ impl Importer {
                 i += 1;
                 continue;
             }
-            let start = i;
-            let name: String = if c == '@' || c == '~' || c == '?' {
-                i += 1;
-                if c == '@' {
-                    while i < chars.len() && chars[i].is_ascii_alphabetic() {
-                        i += 1;
-                    }
-                    // cpfg's `@!`, `@#`: one symbol after the '@'.
-                    if i == start + 1
-                        && i < chars.len()
-                        && !chars[i].is_whitespace()
-                        && chars[i] != '('
-                    {
-                        i += 1;
-                    }
-                } else if chars.get(i).is_some_and(char::is_ascii_alphabetic) {
-                    i += 1;
-                }
-                chars[start..i].iter().collect()
+            let (name, after) = if c == '@' || c == '~' || c == '?' {
+                symbol_name(&chars, i)
             } else if c.is_ascii_alphabetic() && self.flavour == Flavour::Lpy {
-                let rest: String = chars[i..].iter().collect();
-                let candidates: Vec<String> = self
-                    .declared
-                    .iter()
-                    .cloned()
-                    .chain(LPY_NAMES.iter().map(|(long, _)| long.to_string()))
-                    .collect();
-                let long = candidates
-                    .iter()
-                    .filter(|d| {
-                        rest.starts_with(d.as_str())
-                            && !rest[d.len()..].starts_with(|c: char| c.is_ascii_alphanumeric())
-                    })
-                    .max_by_key(|d| d.len())
-                    .cloned();
-                let word_len = rest
-                    .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
-                    .unwrap_or(rest.len());
-                match long {
-                    Some(name) => {
-                        i += name.chars().count();
-                        name
-                    }
-                    // A longer word followed by '(' is one module in L-Py (an undeclared name).
-                    None if word_len > 1
-                        && rest[word_len..].trim_start().starts_with('(')
-                        && rest[..word_len].chars().all(|c| c.is_ascii_alphabetic()) =>
-                    {
-                        let word = rest[..word_len].to_string();
-                        if !self.unknown_names.contains(&word) {
-                            self.unknown_names.push(word.clone());
-                            self.declared.push(word.clone());
-                            self.note(
-                                n,
-                                format!("'{word}' is not a module Meristem knows; kept as a module its turtle ignores (#module {word})"),
-                            );
-                        }
-                        i += word_len;
-                        word
-                    }
-                    None => {
-                        i += 1;
-                        c.to_string()
-                    }
-                }
+                self.lpy_name(&chars, i, n)
             } else {
-                i += 1;
-                c.to_string()
+                (c.to_string(), i + 1)
             };
+            i = after;
             // Parameters.
             let mut j = i;
             while j < chars.len() && chars[j] == ' ' {
@@ -1035,6 +992,53 @@ impl Importer {
             out.push_str(&self.module(&name, params, has_params, n));
         }
         Ok(out)
+    }
+
+    /// The L-Py module name at `chars[start]`: the longest declared or predefined long name
+    /// there, an undeclared longer word before `(` (declared now, and reported once), or one
+    /// letter. Returns it and the index after it.
+    fn lpy_name(&mut self, chars: &[char], start: usize, n: usize) -> (String, usize) {
+        let rest: String = chars[start..].iter().collect();
+        let candidates: Vec<String> = self
+            .declared
+            .iter()
+            .cloned()
+            .chain(LPY_NAMES.iter().map(|(long, _)| long.to_string()))
+            .collect();
+        let long = candidates
+            .iter()
+            .filter(|d| {
+                rest.starts_with(d.as_str())
+                    && !rest[d.len()..].starts_with(|c: char| c.is_ascii_alphanumeric())
+            })
+            .max_by_key(|d| d.len())
+            .cloned();
+        let word_len = rest
+            .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+            .unwrap_or(rest.len());
+        match long {
+            Some(name) => {
+                let end = start + name.chars().count();
+                (name, end)
+            }
+            // A longer word followed by '(' is one module in L-Py (an undeclared name).
+            None if word_len > 1
+                && rest[word_len..].trim_start().starts_with('(')
+                && rest[..word_len].chars().all(|c| c.is_ascii_alphabetic()) =>
+            {
+                let word = rest[..word_len].to_string();
+                if !self.unknown_names.contains(&word) {
+                    self.unknown_names.push(word.clone());
+                    self.declared.push(word.clone());
+                    self.note(
+                        n,
+                        format!("'{word}' is not a module Meristem knows; kept as a module its turtle ignores (#module {word})"),
+                    );
+                }
+                (word, start + word_len)
+            }
+            None => (chars[start].to_string(), start + 1),
+        }
     }
 
     /// One module with its parameters, renamed where the dialect's meaning is Meristem's other
@@ -1158,6 +1162,39 @@ fn inline_produce(code: &str) -> Option<(&str, &str)> {
 fn produce(code: &str) -> Option<&str> {
     let rest = code.strip_prefix("produce")?;
     (rest.is_empty() || rest.starts_with(char::is_whitespace)).then(|| rest.trim())
+}
+
+/// The index after the number that starts at `chars[start]` (digits, letters and dots, and a
+/// sign after an exponent's `e`).
+fn number_end(chars: &[char], start: usize) -> usize {
+    let mut i = start;
+    while i < chars.len()
+        && (chars[i].is_ascii_alphanumeric()
+            || chars[i] == '.'
+            || ((chars[i] == '-' || chars[i] == '+') && matches!(chars[i - 1], 'e' | 'E')))
+    {
+        i += 1;
+    }
+    i
+}
+
+/// The module name at `chars[start]`, which is `@`, `~` or `?`: `@` and the letters after it
+/// (or cpfg's one symbol, `@!`, `@#`), or `~` or `?` and one letter. Returns it and the index
+/// after it.
+fn symbol_name(chars: &[char], start: usize) -> (String, usize) {
+    let mut i = start + 1;
+    if chars[start] == '@' {
+        while i < chars.len() && chars[i].is_ascii_alphabetic() {
+            i += 1;
+        }
+        // cpfg's `@!`, `@#`: one symbol after the '@'.
+        if i == start + 1 && i < chars.len() && !chars[i].is_whitespace() && chars[i] != '(' {
+            i += 1;
+        }
+    } else if chars.get(i).is_some_and(char::is_ascii_alphabetic) {
+        i += 1;
+    }
+    (chars[start..i].iter().collect(), i)
 }
 
 /// The index of the ')' that closes the '(' at `open`.

@@ -39,90 +39,25 @@ fn at_name(meaning: Meaning) -> &'static str {
 pub(super) fn import(text: &str) -> Import {
     let mut out = Output::default();
     out.comment("Imported from Green (an RL-system) by meristem import.", 0);
-    let mut section = Section::Before;
-    let mut axiom: Vec<(String, usize)> = Vec::new();
-    let mut rules: Vec<(String, usize)> = Vec::new();
-    let mut declarations: Vec<(String, usize)> = Vec::new();
-    let mut ended = false;
-    for (index, raw) in text.lines().enumerate() {
-        let n = index + 1;
-        let line = raw.trim();
-        if line.is_empty() {
-            continue;
-        }
-        if ended {
-            out.note(n, "text after END. is not part of the system; ignored");
-            break;
-        }
-        let (word, rest) = match line.find(char::is_whitespace) {
-            Some(i) => (&line[..i], line[i..].trim()),
-            None => (line, ""),
-        };
-        let keyword = word.to_ascii_uppercase();
-        let rest = match keyword.as_str() {
-            "SYSTEM" => {
-                section = Section::System;
-                if !rest.is_empty() {
-                    out.comment(&format!("System: {rest}"), n);
-                }
-                continue;
-            }
-            "DECLARATIONS" => {
-                section = Section::Declarations;
-                rest
-            }
-            "AXIOM" => {
-                section = Section::Axiom;
-                rest
-            }
-            "RULES" => {
-                section = Section::Rules;
-                rest
-            }
-            "END." | "END" => {
-                ended = true;
-                continue;
-            }
-            _ => line,
-        };
-        if rest.is_empty() {
-            continue;
-        }
-        match section {
-            Section::Before | Section::System => {
-                out.note(n, "a line outside DECLARATIONS, AXIOM and RULES; ignored")
-            }
-            Section::Declarations => {
-                for part in rest.split(';').map(str::trim).filter(|p| !p.is_empty()) {
-                    declarations.push((part.to_string(), n));
-                }
-            }
-            Section::Axiom => axiom.push((rest.to_string(), n)),
-            Section::Rules => rules.push((rest.to_string(), n)),
-        }
-    }
-    if !ended {
-        out.note(0, "no END. closes the system; read to the end of the text");
-    }
-
+    let system = System::read(text, &mut out);
     out.line(format!("{} 1", DirectiveKind::Iterations.written()), 0);
     out.note(
         0,
         "Green's syntax does not say how many steps to derive (the number is given when the system is derived): #iterations 1 is written, one step as in the paper's worked example",
     );
     let mut variables = Vec::new();
-    for (declaration, n) in &declarations {
+    for (declaration, n) in &system.declarations {
         if let Some((name, line)) = random_variable(declaration, *n, &mut out) {
             variables.push(name);
             out.line(line, *n);
         }
     }
-    if let Some(&(_, first)) = axiom.first() {
-        let joined: Vec<&str> = axiom.iter().map(|(t, _)| t.as_str()).collect();
+    if let Some(&(_, first)) = system.axiom.first() {
+        let joined: Vec<&str> = system.axiom.iter().map(|(t, _)| t.as_str()).collect();
         out.line(format!("axiom: {}", modules(&joined.join(""))), first);
     }
     let mut translated = Vec::new();
-    for (rule, n) in &rules {
+    for (rule, n) in &system.rules {
         match production(rule) {
             Some(p) => {
                 translated.push((p.clone(), *n));
@@ -136,6 +71,92 @@ pub(super) fn import(text: &str) -> Import {
     }
     note_gaps(&translated, &variables, &mut out);
     out.finish()
+}
+
+/// The text of a Green system by section, each piece with its line number.
+#[derive(Default)]
+struct System {
+    /// One random variable each (a line may declare several, separated by `;`).
+    declarations: Vec<(String, usize)>,
+    /// The axiom's pieces, to be joined (it may span lines).
+    axiom: Vec<(String, usize)>,
+    /// One production each.
+    rules: Vec<(String, usize)>,
+}
+
+impl System {
+    /// Splits `text` into its sections, noting in `out` what stands outside them (before the
+    /// first section, after `END.`) and a missing `END.`.
+    fn read(text: &str, out: &mut Output) -> System {
+        let mut system = System::default();
+        let mut section = Section::Before;
+        let mut ended = false;
+        for (index, raw) in text.lines().enumerate() {
+            let n = index + 1;
+            let line = raw.trim();
+            if line.is_empty() {
+                continue;
+            }
+            if ended {
+                out.note(n, "text after END. is not part of the system; ignored");
+                break;
+            }
+            let (word, rest) = match line.find(char::is_whitespace) {
+                Some(i) => (&line[..i], line[i..].trim()),
+                None => (line, ""),
+            };
+            let keyword = word.to_ascii_uppercase();
+            let rest = match keyword.as_str() {
+                "SYSTEM" => {
+                    section = Section::System;
+                    if !rest.is_empty() {
+                        out.comment(&format!("System: {rest}"), n);
+                    }
+                    continue;
+                }
+                "DECLARATIONS" => {
+                    section = Section::Declarations;
+                    rest
+                }
+                "AXIOM" => {
+                    section = Section::Axiom;
+                    rest
+                }
+                "RULES" => {
+                    section = Section::Rules;
+                    rest
+                }
+                "END." | "END" => {
+                    ended = true;
+                    continue;
+                }
+                _ => line,
+            };
+            if !rest.is_empty() {
+                system.add(section, rest, n, out);
+            }
+        }
+        if !ended {
+            out.note(0, "no END. closes the system; read to the end of the text");
+        }
+        system
+    }
+
+    /// Adds the text `rest` of line `n` to `section`.
+    fn add(&mut self, section: Section, rest: &str, n: usize, out: &mut Output) {
+        match section {
+            Section::Before | Section::System => {
+                out.note(n, "a line outside DECLARATIONS, AXIOM and RULES; ignored")
+            }
+            Section::Declarations => {
+                for part in rest.split(';').map(str::trim).filter(|p| !p.is_empty()) {
+                    self.declarations.push((part.to_string(), n));
+                }
+            }
+            Section::Axiom => self.axiom.push((rest.to_string(), n)),
+            Section::Rules => self.rules.push((rest.to_string(), n)),
+        }
+    }
 }
 
 /// `CONTINUOUS p UNIFORM(0,1)` -> `#random p = uniform(0,1)`, with notes on what the paper does

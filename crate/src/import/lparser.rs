@@ -254,6 +254,7 @@ fn parse_positional(text: &str, file: &mut LsFile, out: &mut Output) {
     }
 }
 
+/// Reads the keyword format of Lparser 2 into `file`, line by line.
 fn parse_keywords(text: &str, file: &mut LsFile, out: &mut Output) {
     let mut noted: Vec<String> = Vec::new();
     for (index, raw) in text.lines().enumerate() {
@@ -275,86 +276,90 @@ fn parse_keywords(text: &str, file: &mut LsFile, out: &mut Output) {
             None => (code, ""),
         };
         let keyword = keyword.to_ascii_lowercase();
-        let float = |out: &mut Output, default: f64| match leading_float(command) {
-            Some(v) => v,
-            None => {
-                out.note(
-                    n,
-                    format!(
-                        "'{keyword}' needs a number; Lparser's default {} is used",
-                        number(default)
-                    ),
-                );
-                default
-            }
-        };
-        let mut once = |out: &mut Output, message: &str| {
+        if let Some(message) = untranslated_keyword(&keyword) {
             if !noted.contains(&keyword) {
-                noted.push(keyword.clone());
-                out.note(n, message.to_string());
+                noted.push(keyword);
+                out.note(n, message);
             }
-        };
-        match keyword.as_str() {
-            "recursion" => {
-                // `sscanf(command, "%d", &lev)`: a whole number.
-                file.recursion = leading_float(command).map_or_else(
-                    || float(out, DEFAULT_RECURSION),
-                    |v| v.trunc(),
-                );
-                file.recursion_line = n;
-            }
-            "angle" => file.angle = float(out, DEFAULT_ANGLE),
-            "thickness" => {
-                file.thickness = float(out, DEFAULT_THICKNESS);
-                file.thickness_line = n;
-            }
-            "min_thickness" => file.min_thickness = float(out, 0.0),
-            "mutation" => once(
-                out,
-                "'mutation': Lparser edits the rules at random before deriving (insert, replace, append, swap directions and sizes); Meristem derives the rules as written",
-            ),
-            "switch_yz" => once(
-                out,
-                "'switch_yz' only swaps the y and z axes of Lparser's VRML output; Meristem always grows the axiom's heading up the screen",
-            ),
-            "shape" => once(
-                out,
-                "'shape' chooses blocks or attached cylinders in Lparser's output; Meristem draws every segment as a tube",
-            ),
-            "poly_limit" => once(
-                out,
-                "'poly_limit' stops Lparser's drawing after that many polygons; not translated (Meristem limits the string with #max_modules)",
-            ),
-            "trace" | "no_wait" => once(
-                out,
-                &format!("'{keyword}' is an option of the Lparser program, not of the plant; ignored"),
-            ),
-            "color" => {
-                let numbers: Vec<f64> = command
-                    .split_whitespace()
-                    .filter_map(leading_float)
-                    .collect();
-                match numbers.as_slice() {
-                    [i, r, g, b, ..] if *i >= 0.0 && *i < 100.0 => {
-                        file.colors.push((*i as usize, [*r / 255.0, *g / 255.0, *b / 255.0]));
-                    }
-                    _ => out.note(
-                        n,
-                        "'color' needs an index from 0 to 99 and red, green, blue from 0 to 255; ignored",
-                    ),
-                }
-            }
-            "axiom" => {
-                file.axiom = tokenize(&without_spaces(command), n, out);
-                file.axiom_line = n;
-                file.axiom_comment = comment.to_string();
-            }
-            "rule" => add_rule(file, &without_spaces(command), n, comment, out),
-            _ => out.note(
-                n,
-                format!("unknown keyword '{keyword}' (Lparser stops with an error here); the line is skipped"),
-            ),
+            continue;
         }
+        keyword_line(file, &keyword, command, comment, n, out);
+    }
+}
+
+/// Why a keyword of Lparser's program or output, not of the plant, is not translated (noted
+/// once a file); `None` for the others.
+fn untranslated_keyword(keyword: &str) -> Option<String> {
+    Some(match keyword {
+        "mutation" => "'mutation': Lparser edits the rules at random before deriving (insert, replace, append, swap directions and sizes); Meristem derives the rules as written".into(),
+        "switch_yz" => "'switch_yz' only swaps the y and z axes of Lparser's VRML output; Meristem always grows the axiom's heading up the screen".into(),
+        "shape" => "'shape' chooses blocks or attached cylinders in Lparser's output; Meristem draws every segment as a tube".into(),
+        "poly_limit" => "'poly_limit' stops Lparser's drawing after that many polygons; not translated (Meristem limits the string with #max_modules)".into(),
+        "trace" | "no_wait" => format!("'{keyword}' is an option of the Lparser program, not of the plant; ignored"),
+        _ => return None,
+    })
+}
+
+/// One line `keyword command # comment` of the keyword format (line `n`) read into `file`.
+fn keyword_line(
+    file: &mut LsFile,
+    keyword: &str,
+    command: &str,
+    comment: &str,
+    n: usize,
+    out: &mut Output,
+) {
+    let float = |out: &mut Output, default: f64| match leading_float(command) {
+        Some(v) => v,
+        None => {
+            out.note(
+                n,
+                format!(
+                    "'{keyword}' needs a number; Lparser's default {} is used",
+                    number(default)
+                ),
+            );
+            default
+        }
+    };
+    match keyword {
+        "recursion" => {
+            // `sscanf(command, "%d", &lev)`: a whole number.
+            file.recursion =
+                leading_float(command).map_or_else(|| float(out, DEFAULT_RECURSION), |v| v.trunc());
+            file.recursion_line = n;
+        }
+        "angle" => file.angle = float(out, DEFAULT_ANGLE),
+        "thickness" => {
+            file.thickness = float(out, DEFAULT_THICKNESS);
+            file.thickness_line = n;
+        }
+        "min_thickness" => file.min_thickness = float(out, 0.0),
+        "color" => {
+            let numbers: Vec<f64> = command
+                .split_whitespace()
+                .filter_map(leading_float)
+                .collect();
+            match numbers.as_slice() {
+                [i, r, g, b, ..] if *i >= 0.0 && *i < 100.0 => {
+                    file.colors.push((*i as usize, [*r / 255.0, *g / 255.0, *b / 255.0]));
+                }
+                _ => out.note(
+                    n,
+                    "'color' needs an index from 0 to 99 and red, green, blue from 0 to 255; ignored",
+                ),
+            }
+        }
+        "axiom" => {
+            file.axiom = tokenize(&without_spaces(command), n, out);
+            file.axiom_line = n;
+            file.axiom_comment = comment.to_string();
+        }
+        "rule" => add_rule(file, &without_spaces(command), n, comment, out),
+        _ => out.note(
+            n,
+            format!("unknown keyword '{keyword}' (Lparser stops with an error here); the line is skipped"),
+        ),
     }
 }
 
@@ -1093,7 +1098,42 @@ impl<'f, 'o> Translator<'f, 'o> {
         })
     }
 
+    /// Writes the translation: the header, the `#width_scale` and palette, the axiom and the
+    /// productions, the homomorphism that draws what Meristem's turtle does not, and finally the
+    /// width scale measured on the plant.
     fn write(mut self) {
+        self.header();
+        // The axiom and rules first (they decide what the homomorphism needs).
+        let axiom = self.axiom();
+        let productions = self.productions();
+        let commands = self.command_productions();
+        if self.uses.forward || self.uses.half {
+            self.width_scale_placeholder();
+        }
+        self.palette();
+        let file = self.file;
+        self.out
+            .line(format!("axiom: {}", separate(&axiom)), file.axiom_line);
+        if !file.axiom_comment.is_empty() {
+            self.out.comment(&file.axiom_comment, file.axiom_line);
+        }
+        for (text, line, comment) in productions {
+            match keep_comment(&comment) {
+                Some(c) => self
+                    .out
+                    .line(format!("{text} // {}", super::defuse_comment(&c)), line),
+                None => self.out.line(text, line),
+            }
+        }
+        self.homomorphism(commands);
+        if let Some(at) = self.width_line {
+            self.measure_width(at);
+        }
+    }
+
+    /// Where the translation comes from, the file's header comments, `#iterations` (a
+    /// fractional recursion rounded up, with a note) and `#angle`.
+    fn header(&mut self) {
         let file = self.file;
         let format = match file.format {
             Format::Positional => "positional format",
@@ -1131,16 +1171,25 @@ impl<'f, 'o> Translator<'f, 'o> {
             format!("{} {}", DirectiveKind::Angle.written(), number(file.angle)),
             0,
         );
+    }
 
-        // The axiom and rules first (they decide what the homomorphism needs).
+    /// The axiom in Meristem's modules, starting with Lparser's first colour.
+    fn axiom(&mut self) -> String {
+        let file = self.file;
         let start = self.start.map(Prod::constant);
-        let mut axiom = self.string(&file.axiom, start, file.axiom_line);
+        let axiom = self.string(&file.axiom, start, file.axiom_line);
         if file.axiom.first().map(|t| t.ch) != Some('c') {
-            axiom = format!(";(2){axiom}"); // Lparser starts with colour 2
+            return format!(";(2){axiom}"); // Lparser starts with colour 2
         }
-        let mut productions = Vec::new();
+        axiom
+    }
+
+    /// Each rule as a production, in the file's order: (text, line, comment).
+    fn productions(&mut self) -> Vec<(String, usize, String)> {
+        let file = self.file;
         let mut preds: Vec<(usize, char)> = self.rule_of.iter().map(|(&c, &i)| (i, c)).collect();
         preds.sort();
+        let mut productions = Vec::new();
         for (i, ch) in preds {
             let rule = &file.rules[i];
             let params = self.params(ch);
@@ -1148,7 +1197,14 @@ impl<'f, 'o> Translator<'f, 'o> {
             let rhs = self.string(&rule.succ, params, rule.line);
             productions.push((production(&lhs, &rhs), rule.line, rule.comment.clone()));
         }
-        let mut leftovers = Vec::new();
+        productions
+    }
+
+    /// For each command that has a rule (and so stays a module of its own in the derived
+    /// string), the homomorphism production that draws it: (text, line).
+    fn command_productions(&mut self) -> Vec<(String, usize)> {
+        let file = self.file;
+        let mut commands = Vec::new();
         for (ch, i) in self.sorted_rules() {
             let is_command = VALUE_COMMANDS.contains(ch) || "|%$".contains(ch);
             if !is_command {
@@ -1165,42 +1221,37 @@ impl<'f, 'o> Translator<'f, 'o> {
                 &params,
                 file.rules[i].line,
             );
-            leftovers.push((production(&lhs, &rhs), file.rules[i].line));
+            commands.push((production(&lhs, &rhs), file.rules[i].line));
         }
+        commands
+    }
 
-        if self.uses.forward || self.uses.half {
-            self.out.note(
-                file.thickness_line,
-                "thickness: Lparser draws each segment as thick as its length times the thickness, in model units; Meristem's widths are in width units (1/300 of the plant's size), so the translation writes width_scale × length × thickness with width_scale measured on the plant at the file's depth: at other depths the plant's size changes and the widths with it",
-            );
-            self.width_line = Some(self.out.len());
-            self.out.line(
-                format!(
-                    "{} width_scale {}",
-                    DirectiveKind::Define.written(),
-                    number(WIDTH_SCALE)
-                ),
-                file.thickness_line,
-            );
-        }
-        self.palette();
-        self.out
-            .line(format!("axiom: {}", separate(&axiom)), file.axiom_line);
-        if !file.axiom_comment.is_empty() {
-            self.out.comment(&file.axiom_comment, file.axiom_line);
-        }
-        for (text, line, comment) in productions {
-            match keep_comment(&comment) {
-                Some(c) => self
-                    .out
-                    .line(format!("{text} // {}", super::defuse_comment(&c)), line),
-                None => self.out.line(text, line),
-            }
-        }
-        let width = if file.min_thickness > 0.0 {
+    /// `#define width_scale` with a default value, replaced once the plant is measured
+    /// ([`Translator::measure_width`]), and a note on what it means.
+    fn width_scale_placeholder(&mut self) {
+        let thickness_line = self.file.thickness_line;
+        self.out.note(
+            thickness_line,
+            "thickness: Lparser draws each segment as thick as its length times the thickness, in model units; Meristem's widths are in width units (1/300 of the plant's size), so the translation writes width_scale × length × thickness with width_scale measured on the plant at the file's depth: at other depths the plant's size changes and the widths with it",
+        );
+        self.width_line = Some(self.out.len());
+        self.out.line(
+            format!(
+                "{} width_scale {}",
+                DirectiveKind::Define.written(),
+                number(WIDTH_SCALE)
+            ),
+            thickness_line,
+        );
+    }
+
+    /// The `homomorphism:` section, when anything needs one: widths, `Z`, `~` and `t` as
+    /// Meristem draws them, and the productions of `commands` that have rules.
+    fn homomorphism(&mut self, commands: Vec<(String, usize)>) {
+        let width = if self.file.min_thickness > 0.0 {
             format!(
                 "width_scale*max(x*t,{})",
-                number(file.min_thickness / 100.0)
+                number(self.file.min_thickness / 100.0)
             )
         } else {
             "width_scale*x*t".to_string()
@@ -1219,36 +1270,39 @@ impl<'f, 'o> Translator<'f, 'o> {
         if self.uses.tropism {
             homomorphism.push("t(e) -> @Ts(e)G(0)@Ts(0)".to_string());
         }
-        if !homomorphism.is_empty() || !leftovers.is_empty() {
-            self.out.line(KeywordKind::Homomorphism.written(), 0);
-            self.out.comment(
-                "How Lparser draws what Meristem's turtle does not: widths, Z (half length), ~ (random turn), t (gravity).",
-                0,
-            );
-            for h in homomorphism {
-                self.out.line(h, 0);
-            }
-            for (text, line) in leftovers {
-                self.out.line(text, line);
-            }
+        if homomorphism.is_empty() && commands.is_empty() {
+            return;
         }
-        if let Some(at) = self.width_line {
-            let thickness_line = file.thickness_line;
-            match measure_width_scale(&self.out.text()) {
-                Some(scale) => self.out.replace(
-                    at,
-                    format!(
-                        "{} width_scale {} // width units per model unit: Lparser's thicknesses at the file's depth",
-                        DirectiveKind::Define.written(),
-                        number(scale)
-                    ),
+        self.out.line(KeywordKind::Homomorphism.written(), 0);
+        self.out.comment(
+            "How Lparser draws what Meristem's turtle does not: widths, Z (half length), ~ (random turn), t (gravity).",
+            0,
+        );
+        for h in homomorphism {
+            self.out.line(h, 0);
+        }
+        for (text, line) in commands {
+            self.out.line(text, line);
+        }
+    }
+
+    /// Replaces the `#define width_scale` line at `at` with the scale measured on the translated
+    /// plant, or notes that it could not be measured.
+    fn measure_width(&mut self, at: usize) {
+        match measure_width_scale(&self.out.text()) {
+            Some(scale) => self.out.replace(
+                at,
+                format!(
+                    "{} width_scale {} // width units per model unit: Lparser's thicknesses at the file's depth",
+                    DirectiveKind::Define.written(),
+                    number(scale)
                 ),
-                None => {
-                    self.out.note(
-                        thickness_line,
-                        format!("the plant could not be measured at its depth (too large to derive, or it draws nothing): width_scale is {}, tune it", number(WIDTH_SCALE)),
-                    );
-                }
+            ),
+            None => {
+                self.out.note(
+                    self.file.thickness_line,
+                    format!("the plant could not be measured at its depth (too large to derive, or it draws nothing): width_scale is {}, tune it", number(WIDTH_SCALE)),
+                );
             }
         }
     }

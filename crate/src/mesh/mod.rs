@@ -11,6 +11,7 @@ pub mod parts;
 pub mod polygon;
 pub mod sphere;
 pub mod surfaces;
+mod tube;
 
 use crate::turtle::Skeleton;
 use glam::DVec3;
@@ -555,139 +556,6 @@ impl<'a> Builder<'a> {
         push_range(&mut self.mesh.color_ranges, first, color as u32);
         push_range(&mut self.mesh.material_ranges, first, self.material);
         push_range(&mut self.element_ranges, first, self.element);
-    }
-
-    fn tube(&mut self, skeleton: &Skeleton, chain: &[u32], start_cap: bool) {
-        let segments: Vec<&crate::turtle::Segment> = chain
-            .iter()
-            .map(|&i| &skeleton.segments[i as usize])
-            .collect();
-        let mut points: Vec<DVec3> = vec![segments[0].start];
-        points.extend(segments.iter().map(|s| s.end));
-        // The width at each joint: a segment's width at its start; the last keeps its own.
-        let mut widths: Vec<f64> = segments.iter().map(|s| s.width).collect();
-        widths.push(segments[segments.len() - 1].width);
-        let smooth = self.options.smooth_all || segments[0].smooth;
-
-        // Samples along the axis: (point, tangent, width, segment of the chain it starts).
-        let mut samples: Vec<(DVec3, DVec3, f64, usize)> = Vec::new();
-        if smooth && points.len() > 2 {
-            let pieces = curve::bezier_through(&points);
-            let per = self.options.smooth_samples.max(1);
-            for (k, piece) in pieces.iter().enumerate() {
-                let first = if k == 0 { 0 } else { 1 };
-                for j in first..=per {
-                    let t = j as f64 / per as f64;
-                    let (p, tangent) = curve::evaluate(piece, t);
-                    let w = widths[k] + (widths[k + 1] - widths[k]) * t;
-                    samples.push((p, tangent, w, k.min(segments.len() - 1)));
-                }
-            }
-        } else {
-            let direction = |i: usize| (points[i + 1] - points[i]).normalize();
-            for i in 0..points.len() {
-                let tangent = if i == 0 {
-                    direction(0)
-                } else if i == points.len() - 1 {
-                    direction(i - 1)
-                } else {
-                    (direction(i - 1) + direction(i)).normalize()
-                };
-                samples.push((points[i], tangent, widths[i], i.min(segments.len() - 1)));
-            }
-        }
-        samples.retain(|(p, t, _, _)| p.is_finite() && t.is_finite());
-        samples.dedup_by(|b, a| (b.0 - a.0).length() < 1e-12);
-        if samples.len() < 2 {
-            return;
-        }
-        let frame_input: Vec<(DVec3, DVec3)> =
-            samples.iter().map(|(p, t, _, _)| (*p, *t)).collect();
-        let normals = curve::rotation_minimizing_normals(&frame_input, segments[0].left);
-        let sides = self.sides;
-        let mut rings: Vec<u32> = Vec::with_capacity(samples.len());
-        // v: the distance along the axis in circumferences of the tube (the mean of the two
-        // rings' circumferences over each step), so a texture tile is as long as the tube is round.
-        let unit = self.unit;
-        let circumference = |w: f64| (std::f64::consts::PI * w * unit).max(1e-12);
-        let mut v = 0.0f64;
-        for (k, (p, t, w, _)) in samples.iter().enumerate() {
-            if k > 0 {
-                let (q, _, wq, _) = samples[k - 1];
-                v += (*p - q).length() / (0.5 * (circumference(wq) + circumference(*w)));
-            }
-            let n = normals[k];
-            let b = t.cross(n);
-            let radius = 0.5 * w * self.unit;
-            let c = skeleton.color(segments[samples[k].3].color);
-            let first = self.mesh.vertex_count() as u32;
-            for j in 0..=sides {
-                let (sin, cos) = self.ring[j % sides];
-                let radial = n * cos + b * sin;
-                let u = j as f32 / sides as f32;
-                self.vertex(*p + radial * radius, radial, c, [u, v as f32]);
-            }
-            rings.push(first);
-        }
-        let n = sides as u32;
-        // Start cap, facing back along the axis.
-        self.element = chain[0];
-        self.material = MATERIAL_BARK;
-        self.range(segments[0].module, segments[0].color);
-        if start_cap {
-            self.cap(
-                samples[0].0,
-                -samples[0].1,
-                rings[0],
-                skeleton.color(segments[0].color),
-                true,
-            );
-        }
-        for k in 0..rings.len() - 1 {
-            let segment = segments[samples[k].3];
-            self.element = chain[samples[k].3];
-            self.range(segment.module, segment.color);
-            let (a0, b0) = (rings[k], rings[k + 1]);
-            for j in 0..n {
-                let next = j + 1;
-                let (a, b, c, d) = (a0 + j, a0 + next, b0 + j, b0 + next);
-                self.mesh.indices.extend([a, b, c, b, d, c]);
-            }
-        }
-        let last = samples.len() - 1;
-        let end = segments[segments.len() - 1];
-        self.element = chain[chain.len() - 1];
-        self.range(end.module, end.color);
-        let c = skeleton.color(end.color);
-        self.cap(samples[last].0, samples[last].1, rings[last], c, false);
-    }
-
-    /// A flat disk closing a tube: a fan around a centre vertex facing `normal`. The ring's order
-    /// runs counter-clockwise around the axis, so the start cap reverses it.
-    fn cap(&mut self, center: DVec3, normal: DVec3, ring: u32, c: [f32; 3], reverse: bool) {
-        let n = self.sides as u32;
-        let first = self.mesh.vertex_count() as u32;
-        for j in 0..n {
-            let i = (ring + j) as usize * 3;
-            let p = DVec3::new(
-                self.mesh.positions[i] as f64,
-                self.mesh.positions[i + 1] as f64,
-                self.mesh.positions[i + 2] as f64,
-            );
-            let (sin, cos) = self.ring[j as usize];
-            let u = 0.5 + 0.5 * cos as f32;
-            let v = 0.5 + if reverse { -0.5 } else { 0.5 } * sin as f32;
-            self.vertex(p, normal, c, [u, v]);
-        }
-        let middle = self.vertex(center, normal, c, [0.5, 0.5]);
-        for j in 0..n {
-            let (a, b) = (first + j, first + (j + 1) % n);
-            if reverse {
-                self.mesh.indices.extend([middle, b, a]);
-            } else {
-                self.mesh.indices.extend([middle, a, b]);
-            }
-        }
     }
 
     /// A polygon or predefined surface, two-sided: the front faces its normal, the back the other way.

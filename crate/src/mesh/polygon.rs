@@ -30,11 +30,7 @@ pub fn triangulate(points: &[DVec3]) -> Triangulation {
     if points.len() < 3 || points.iter().any(|p| !p.is_finite()) {
         return empty;
     }
-    let mut newell = DVec3::ZERO;
-    for (i, a) in points.iter().enumerate() {
-        let b = points[(i + 1) % points.len()];
-        newell += a.cross(b);
-    }
+    let newell = newell_normal(points);
     let size = points
         .iter()
         .fold(0.0f64, |m, p| m.max((*p - points[0]).length()));
@@ -42,92 +38,152 @@ pub fn triangulate(points: &[DVec3]) -> Triangulation {
         return empty;
     }
     let normal = newell.normalize();
-    // A right-handed basis of the plane, so counter-clockwise about `normal` is counter-clockwise in 2D.
-    let u = normal.any_orthonormal_vector();
-    let v = normal.cross(u);
-    let flat: Vec<DVec2> = points
-        .iter()
-        .map(|p| DVec2::new(p.dot(u), p.dot(v)))
-        .collect();
-
-    // Drop repeated points (including the last equal to the first).
-    let tolerance = EPSILON * size;
-    let mut ring: Vec<usize> = Vec::with_capacity(points.len());
-    for i in 0..points.len() {
-        if ring
-            .last()
-            .is_none_or(|&last| (flat[last] - flat[i]).length() > tolerance)
-        {
-            ring.push(i);
-        }
-    }
-    while ring.len() > 1 && (flat[ring[0]] - flat[*ring.last().unwrap()]).length() <= tolerance {
-        ring.pop();
-    }
-
-    let area_tolerance = EPSILON * size * size;
-    let cross = |a: DVec2, b: DVec2, c: DVec2| (b - a).perp_dot(c - a);
-    let mut triangles = Vec::with_capacity(points.len().saturating_sub(2));
-    let mut guard = 0usize;
-    while ring.len() >= 3 {
-        let n = ring.len();
-        // Remove collinear vertices: they make zero-area ears.
-        if let Some(k) = (0..n).find(|&k| {
-            let (a, b, c) = (
-                flat[ring[(k + n - 1) % n]],
-                flat[ring[k]],
-                flat[ring[(k + 1) % n]],
-            );
-            cross(a, b, c).abs() <= area_tolerance
-        }) {
-            ring.remove(k);
-            continue;
-        }
-        let is_ear = |k: usize| {
-            let (ia, ib, ic) = (ring[(k + n - 1) % n], ring[k], ring[(k + 1) % n]);
-            let (a, b, c) = (flat[ia], flat[ib], flat[ic]);
-            if cross(a, b, c) <= 0.0 {
-                return false;
-            }
-            ring.iter().all(|&j| {
-                if j == ia || j == ib || j == ic {
-                    return true;
-                }
-                let p = flat[j];
-                // Strictly outside the triangle, or on it: points on an edge do not block an ear.
-                !(cross(a, b, p) > area_tolerance
-                    && cross(b, c, p) > area_tolerance
-                    && cross(c, a, p) > area_tolerance)
-            })
-        };
-        let ear = (0..n).find(|&k| is_ear(k));
-        // A self-intersecting loop may have no ear; cut the most convex corner so that every
-        // input still gives a closed surface instead of a hole.
-        let k = ear.unwrap_or_else(|| {
-            (0..n)
-                .max_by(|&x, &y| {
-                    let turn = |k: usize| {
-                        cross(
-                            flat[ring[(k + n - 1) % n]],
-                            flat[ring[k]],
-                            flat[ring[(k + 1) % n]],
-                        )
-                    };
-                    turn(x).total_cmp(&turn(y))
-                })
-                .unwrap()
-        });
-        let (a, b, c) = (ring[(k + n - 1) % n], ring[k], ring[(k + 1) % n]);
-        if cross(flat[a], flat[b], flat[c]) > 0.0 {
-            triangles.push([a as u32, b as u32, c as u32]);
-        }
-        ring.remove(k);
-        guard += 1;
-        if guard > points.len() * 2 {
-            break;
-        }
-    }
+    let triangles = Outline::new(points, normal, size).clip_ears();
     Triangulation { normal, triangles }
+}
+
+/// Newell's normal of a closed loop, not normalized: twice its area along its normal.
+fn newell_normal(points: &[DVec3]) -> DVec3 {
+    let mut newell = DVec3::ZERO;
+    for (i, a) in points.iter().enumerate() {
+        let b = points[(i + 1) % points.len()];
+        newell += a.cross(b);
+    }
+    newell
+}
+
+/// Twice the signed area of the triangle `a b c`: positive when it turns counter-clockwise.
+#[inline]
+fn cross(a: DVec2, b: DVec2, c: DVec2) -> f64 {
+    (b - a).perp_dot(c - a)
+}
+
+/// A polygon projected onto its plane, and the loop of its points that ear clipping has not yet
+/// cut off.
+struct Outline {
+    /// Each point of the polygon in 2-D coordinates of its plane (counter-clockwise about the
+    /// normal is counter-clockwise here).
+    flat: Vec<DVec2>,
+    /// The indices of the points still on the loop, in order, none repeating the one before.
+    ring: Vec<usize>,
+    /// Twice an area this small or smaller counts as none.
+    area_tolerance: f64,
+    /// How many ears may be cut at most (a guard against an endless loop).
+    max_cuts: usize,
+}
+
+impl Outline {
+    /// `points` projected onto the plane through the origin facing `normal`, without repeated
+    /// points (including the last equal to the first). `size` is the polygon's extent.
+    fn new(points: &[DVec3], normal: DVec3, size: f64) -> Outline {
+        // A right-handed basis of the plane, so counter-clockwise about `normal` is counter-clockwise in 2D.
+        let u = normal.any_orthonormal_vector();
+        let v = normal.cross(u);
+        let flat: Vec<DVec2> = points
+            .iter()
+            .map(|p| DVec2::new(p.dot(u), p.dot(v)))
+            .collect();
+        let tolerance = EPSILON * size;
+        let mut ring: Vec<usize> = Vec::with_capacity(points.len());
+        for i in 0..points.len() {
+            if ring
+                .last()
+                .is_none_or(|&last| (flat[last] - flat[i]).length() > tolerance)
+            {
+                ring.push(i);
+            }
+        }
+        while ring.len() > 1 && (flat[ring[0]] - flat[*ring.last().unwrap()]).length() <= tolerance
+        {
+            ring.pop();
+        }
+        Outline {
+            flat,
+            ring,
+            area_tolerance: EPSILON * size * size,
+            max_cuts: points.len() * 2,
+        }
+    }
+
+    /// The point indices of the corner at position `k` of the loop: (before, at, after).
+    #[inline]
+    fn corner(&self, k: usize) -> (usize, usize, usize) {
+        let n = self.ring.len();
+        (
+            self.ring[(k + n - 1) % n],
+            self.ring[k],
+            self.ring[(k + 1) % n],
+        )
+    }
+
+    /// How the loop turns at position `k`: positive where it is convex.
+    #[inline]
+    fn turn(&self, k: usize) -> f64 {
+        let (a, b, c) = self.corner(k);
+        cross(self.flat[a], self.flat[b], self.flat[c])
+    }
+
+    /// Cuts ears off the loop until fewer than three points are left; returns the triangles.
+    fn clip_ears(mut self) -> Vec<[u32; 3]> {
+        let mut triangles = Vec::with_capacity(self.flat.len().saturating_sub(2));
+        let mut cuts = 0usize;
+        while self.ring.len() >= 3 {
+            // Remove collinear vertices: they make zero-area ears.
+            if let Some(k) = self.collinear_corner() {
+                self.ring.remove(k);
+                continue;
+            }
+            // A self-intersecting loop may have no ear; cut the most convex corner so that every
+            // input still gives a closed surface instead of a hole.
+            let k = self.ear().unwrap_or_else(|| self.most_convex_corner());
+            if self.turn(k) > 0.0 {
+                let (a, b, c) = self.corner(k);
+                triangles.push([a as u32, b as u32, c as u32]);
+            }
+            self.ring.remove(k);
+            cuts += 1;
+            if cuts > self.max_cuts {
+                break;
+            }
+        }
+        triangles
+    }
+
+    /// The first position of the loop where it runs straight on.
+    fn collinear_corner(&self) -> Option<usize> {
+        (0..self.ring.len()).find(|&k| self.turn(k).abs() <= self.area_tolerance)
+    }
+
+    /// The first position of the loop that is an ear: convex, with no other point of the loop
+    /// inside its triangle.
+    fn ear(&self) -> Option<usize> {
+        (0..self.ring.len()).find(|&k| self.is_ear(k))
+    }
+
+    /// Whether position `k` of the loop is an ear (see [`Outline::ear`]).
+    fn is_ear(&self, k: usize) -> bool {
+        let (ia, ib, ic) = self.corner(k);
+        let (a, b, c) = (self.flat[ia], self.flat[ib], self.flat[ic]);
+        if cross(a, b, c) <= 0.0 {
+            return false;
+        }
+        let inside = self.area_tolerance;
+        self.ring.iter().all(|&j| {
+            if j == ia || j == ib || j == ic {
+                return true;
+            }
+            let p = self.flat[j];
+            // Strictly outside the triangle, or on it: points on an edge do not block an ear.
+            !(cross(a, b, p) > inside && cross(b, c, p) > inside && cross(c, a, p) > inside)
+        })
+    }
+
+    /// The position of the loop where it turns most to the left.
+    fn most_convex_corner(&self) -> usize {
+        (0..self.ring.len())
+            .max_by(|&x, &y| self.turn(x).total_cmp(&self.turn(y)))
+            .unwrap()
+    }
 }
 
 #[cfg(test)]

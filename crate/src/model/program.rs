@@ -148,6 +148,7 @@ impl Program {
         }
     }
 
+    /// The interpreter loop over the ops, with a stack of `N` values.
     fn run<const N: usize, R: rand::Rng + ?Sized>(
         &self,
         env: &mut Env<'_, R>,
@@ -176,30 +177,7 @@ impl Program {
                     sp += 1;
                 }
                 Op::Var(k) => {
-                    let k = k as usize;
-                    let value = match env.vars.get(k).copied().flatten() {
-                        Some(v) if !env.fresh_vars => v,
-                        _ => {
-                            let program = &env.var_programs[k];
-                            let mut inner = Env {
-                                slots: &[],
-                                num_it: env.num_it,
-                                max_it: env.max_it,
-                                vars: &mut [],
-                                fresh_vars: true,
-                                var_programs: &[],
-                                rng: &mut *env.rng,
-                            };
-                            let v = program.eval(&mut inner)?;
-                            if !env.fresh_vars {
-                                if let Some(slot) = env.vars.get_mut(k) {
-                                    *slot = Some(v);
-                                }
-                            }
-                            v
-                        }
-                    };
-                    stack[sp] = value;
+                    stack[sp] = deviate(env, k as usize)?;
                     sp += 1;
                 }
                 Op::Neg => stack[sp - 1] = -stack[sp - 1],
@@ -207,25 +185,8 @@ impl Program {
                 Op::Truth => stack[sp - 1] = truth(stack[sp - 1] != 0.0),
                 Op::Bin(op) => {
                     sp -= 1;
-                    let (a, b) = (stack[sp - 1], stack[sp]);
-                    stack[sp - 1] = match op {
-                        BinaryOp::Add => a + b,
-                        BinaryOp::Sub => a - b,
-                        BinaryOp::Mul => a * b,
-                        BinaryOp::Div | BinaryOp::Rem if b == 0.0 => {
-                            return Err(self.error(pc - 1, "division by zero".into()));
-                        }
-                        BinaryOp::Div => a / b,
-                        BinaryOp::Rem => a % b,
-                        BinaryOp::Pow => a.powf(b),
-                        BinaryOp::Lt => truth(a < b),
-                        BinaryOp::Le => truth(a <= b),
-                        BinaryOp::Gt => truth(a > b),
-                        BinaryOp::Ge => truth(a >= b),
-                        BinaryOp::Eq => truth(a == b),
-                        BinaryOp::Ne => truth(a != b),
-                        BinaryOp::And | BinaryOp::Or => unreachable_logic(a, b, op),
-                    };
+                    stack[sp - 1] = evaluate_binary(op, stack[sp - 1], stack[sp])
+                        .ok_or_else(|| self.error(pc - 1, "division by zero".into()))?;
                 }
                 Op::Call(f) => {
                     let arity = f.info().arity();
@@ -264,6 +225,55 @@ impl Program {
                 .unwrap_or_else(|| self.span.clone()),
         }
     }
+}
+
+/// The value of random variable `k` (`#random`): the module's deviate, drawn on first use, or a
+/// fresh one when `env.fresh_vars`.
+#[inline]
+fn deviate<R: rand::Rng + ?Sized>(env: &mut Env<'_, R>, k: usize) -> Result<f64, EvalError> {
+    if let Some(v) = env.vars.get(k).copied().flatten() {
+        if !env.fresh_vars {
+            return Ok(v);
+        }
+    }
+    let program = &env.var_programs[k];
+    let mut inner = Env {
+        slots: &[],
+        num_it: env.num_it,
+        max_it: env.max_it,
+        vars: &mut [],
+        fresh_vars: true,
+        var_programs: &[],
+        rng: &mut *env.rng,
+    };
+    let v = program.eval(&mut inner)?;
+    if !env.fresh_vars {
+        if let Some(slot) = env.vars.get_mut(k) {
+            *slot = Some(v);
+        }
+    }
+    Ok(v)
+}
+
+/// `a op b`, or `None` for a division (or remainder) by zero.
+#[inline(always)]
+fn evaluate_binary(op: BinaryOp, a: f64, b: f64) -> Option<f64> {
+    Some(match op {
+        BinaryOp::Add => a + b,
+        BinaryOp::Sub => a - b,
+        BinaryOp::Mul => a * b,
+        BinaryOp::Div | BinaryOp::Rem if b == 0.0 => return None,
+        BinaryOp::Div => a / b,
+        BinaryOp::Rem => a % b,
+        BinaryOp::Pow => a.powf(b),
+        BinaryOp::Lt => truth(a < b),
+        BinaryOp::Le => truth(a <= b),
+        BinaryOp::Gt => truth(a > b),
+        BinaryOp::Ge => truth(a >= b),
+        BinaryOp::Eq => truth(a == b),
+        BinaryOp::Ne => truth(a != b),
+        BinaryOp::And | BinaryOp::Or => unreachable_logic(a, b, op),
+    })
 }
 
 /// `&&` and `||` compile to jumps, so they never reach `Op::Bin`; this keeps the match total.
@@ -386,139 +396,179 @@ impl Compiler<'_> {
                 "expression nested too deeply (through #define)",
             ));
         }
+        // The depth of the operands.
+        let inner = depth + 1;
         match e {
             ExprSyntax::Number(v, span) => {
                 self.emit(Op::Const(*v), span.clone());
             }
             ExprSyntax::Name(name, span) => self.name(name, span, depth)?,
-            ExprSyntax::Unary(op, x, span) => {
-                let start = self.ops.len();
-                self.expr(x, depth + 1)?;
-                if let [Op::Const(v)] = self.ops[start..] {
-                    let folded = match op {
-                        UnaryOp::Neg => -v,
-                        UnaryOp::Not => truth(v == 0.0),
-                    };
-                    *self.ops.last_mut().expect("just pushed") = Op::Const(folded);
-                    return Ok(());
-                }
-                self.emit(
-                    if *op == UnaryOp::Neg {
-                        Op::Neg
-                    } else {
-                        Op::Not
-                    },
-                    span.clone(),
-                );
-            }
-            ExprSyntax::Binary(BinaryOp::And, a, b, span) => {
-                // a && b  =>  a ? truth(b) : 0
-                self.expr(a, depth + 1)?;
-                let jump_false = self.emit(Op::JumpIfFalse(0), span.clone());
-                self.expr(b, depth + 1)?;
-                self.emit(Op::Truth, span.clone());
-                let jump_end = self.emit(Op::Jump(0), span.clone());
-                self.patch(jump_false);
-                self.emit(Op::Const(0.0), span.clone());
-                self.patch(jump_end);
-            }
-            ExprSyntax::Binary(BinaryOp::Or, a, b, span) => {
-                // a || b  =>  a ? 1 : truth(b)
-                self.expr(a, depth + 1)?;
-                let jump_false = self.emit(Op::JumpIfFalse(0), span.clone());
-                self.emit(Op::Const(1.0), span.clone());
-                let jump_end = self.emit(Op::Jump(0), span.clone());
-                self.patch(jump_false);
-                self.expr(b, depth + 1)?;
-                self.emit(Op::Truth, span.clone());
-                self.patch(jump_end);
-            }
-            ExprSyntax::Binary(op, a, b, span) => {
-                let start = self.ops.len();
-                self.expr(a, depth + 1)?;
-                self.expr(b, depth + 1)?;
-                // Fold constant operands (not division by zero: that stays a runtime error).
-                if let [Op::Const(x), Op::Const(y)] = self.ops[start..] {
-                    if !matches!(op, BinaryOp::Div | BinaryOp::Rem) || y != 0.0 {
-                        let mut env_rng = rand_pcg::Pcg64Mcg::new(0);
-                        let program = Program {
-                            ops: vec![Op::Const(x), Op::Const(y), Op::Bin(*op)],
-                            spans: vec![span.clone(); 3],
-                            span: span.clone(),
-                            random: false,
-                            stack_depth: 2,
-                        };
-                        let mut env = Env {
-                            slots: &[],
-                            num_it: 0.0,
-                            max_it: 0.0,
-                            vars: &mut [],
-                            fresh_vars: true,
-                            var_programs: &[],
-                            rng: &mut env_rng,
-                        };
-                        if let Ok(v) = program.eval(&mut env) {
-                            self.ops.truncate(start);
-                            self.spans.truncate(start);
-                            self.emit(Op::Const(v), span.clone());
-                            return Ok(());
-                        }
-                    }
-                }
-                self.emit(Op::Bin(*op), span.clone());
-            }
+            ExprSyntax::Unary(op, x, span) => self.unary(*op, x, span, inner)?,
+            // a && b  =>  a ? truth(b) : 0
+            ExprSyntax::Binary(BinaryOp::And, a, b, span) => self.conditional(
+                a,
+                span,
+                inner,
+                |c| c.truth(b, span, inner),
+                |c| c.constant(0.0, span),
+            )?,
+            // a || b  =>  a ? 1 : truth(b)
+            ExprSyntax::Binary(BinaryOp::Or, a, b, span) => self.conditional(
+                a,
+                span,
+                inner,
+                |c| c.constant(1.0, span),
+                |c| c.truth(b, span, inner),
+            )?,
+            ExprSyntax::Binary(op, a, b, span) => self.binary(*op, a, b, span, inner)?,
             ExprSyntax::Conditional(c, a, b, span) => {
-                self.expr(c, depth + 1)?;
-                let jump_false = self.emit(Op::JumpIfFalse(0), span.clone());
-                self.expr(a, depth + 1)?;
-                let jump_end = self.emit(Op::Jump(0), span.clone());
-                self.patch(jump_false);
-                self.expr(b, depth + 1)?;
-                self.patch(jump_end);
+                self.conditional(c, span, inner, |s| s.expr(a, inner), |s| s.expr(b, inner))?
             }
             ExprSyntax::Call(name, name_span, args, span) => {
-                let Some(info) = function_named(name) else {
-                    let is_value = value_named(name).is_some()
-                        || self.scope.slot(name).is_some()
-                        || self.scope.define(name).is_some()
-                        || self.scope.random_var(name).is_some();
-                    if is_value {
-                        return Err(Diagnostic::error(
-                            "E0506",
-                            name_span.clone(),
-                            format!(
-                                "'{name}' is a value, not a function: write it without parentheses"
-                            ),
-                        ));
-                    }
-                    return Err(Diagnostic::error(
-                        "E0501",
-                        name_span.clone(),
-                        format!("unknown function '{name}'"),
-                    ));
-                };
-                let (arity, f) = (info.arity(), info.function);
-                if args.len() != arity {
-                    return Err(Diagnostic::error(
-                        "E0502",
-                        span.clone(),
-                        format!(
-                            "{name} takes {arity} argument{}, not {}",
-                            if arity == 1 { "" } else { "s" },
-                            args.len()
-                        ),
-                    ));
-                }
-                for a in args {
-                    self.expr(a, depth + 1)?;
-                }
-                if info.random {
-                    self.random = true;
-                }
-                self.emit(Op::Call(f), span.clone());
+                self.call(name, name_span, args, span, inner)?
             }
         }
         Ok(())
+    }
+
+    /// `-x` or `!x`, folded when `x` is a constant. `depth` is that of `x`.
+    fn unary(
+        &mut self,
+        op: UnaryOp,
+        x: &ExprSyntax,
+        span: &Span,
+        depth: usize,
+    ) -> Result<(), Diagnostic> {
+        let start = self.ops.len();
+        self.expr(x, depth)?;
+        if let [Op::Const(v)] = self.ops[start..] {
+            let folded = match op {
+                UnaryOp::Neg => -v,
+                UnaryOp::Not => truth(v == 0.0),
+            };
+            *self.ops.last_mut().expect("just pushed") = Op::Const(folded);
+            return Ok(());
+        }
+        let op = match op {
+            UnaryOp::Neg => Op::Neg,
+            UnaryOp::Not => Op::Not,
+        };
+        self.emit(op, span.clone());
+        Ok(())
+    }
+
+    /// `condition ? then : otherwise`, the branches compiled by `then` and `otherwise`: a jump
+    /// past `then` when the condition is false, and one past `otherwise` after `then`. `depth`
+    /// is that of the condition.
+    fn conditional(
+        &mut self,
+        condition: &ExprSyntax,
+        span: &Span,
+        depth: usize,
+        then: impl FnOnce(&mut Self) -> Result<(), Diagnostic>,
+        otherwise: impl FnOnce(&mut Self) -> Result<(), Diagnostic>,
+    ) -> Result<(), Diagnostic> {
+        self.expr(condition, depth)?;
+        let jump_false = self.emit(Op::JumpIfFalse(0), span.clone());
+        then(self)?;
+        let jump_end = self.emit(Op::Jump(0), span.clone());
+        self.patch(jump_false);
+        otherwise(self)?;
+        self.patch(jump_end);
+        Ok(())
+    }
+
+    /// `truth(x)`: 1 when `x` is not zero, else 0.
+    fn truth(&mut self, x: &ExprSyntax, span: &Span, depth: usize) -> Result<(), Diagnostic> {
+        self.expr(x, depth)?;
+        self.emit(Op::Truth, span.clone());
+        Ok(())
+    }
+
+    /// A constant `v`.
+    fn constant(&mut self, v: f64, span: &Span) -> Result<(), Diagnostic> {
+        self.emit(Op::Const(v), span.clone());
+        Ok(())
+    }
+
+    /// `a op b` for an operator other than `&&` and `||`, folded when both operands are
+    /// constants (not a division by zero, nor a result that is not finite: those stay runtime
+    /// errors). `depth` is that of the operands.
+    fn binary(
+        &mut self,
+        op: BinaryOp,
+        a: &ExprSyntax,
+        b: &ExprSyntax,
+        span: &Span,
+        depth: usize,
+    ) -> Result<(), Diagnostic> {
+        let start = self.ops.len();
+        self.expr(a, depth)?;
+        self.expr(b, depth)?;
+        if let [Op::Const(x), Op::Const(y)] = self.ops[start..] {
+            if let Some(v) = evaluate_binary(op, x, y).filter(|v| v.is_finite()) {
+                self.ops.truncate(start);
+                self.spans.truncate(start);
+                self.emit(Op::Const(v), span.clone());
+                return Ok(());
+            }
+        }
+        self.emit(Op::Bin(op), span.clone());
+        Ok(())
+    }
+
+    /// A call of the function `name` with `args`, each compiled at `depth`.
+    fn call(
+        &mut self,
+        name: &str,
+        name_span: &Span,
+        args: &[ExprSyntax],
+        span: &Span,
+        depth: usize,
+    ) -> Result<(), Diagnostic> {
+        let Some(info) = function_named(name) else {
+            return Err(self.not_a_function(name, name_span));
+        };
+        let (arity, f) = (info.arity(), info.function);
+        if args.len() != arity {
+            return Err(Diagnostic::error(
+                "E0502",
+                span.clone(),
+                format!(
+                    "{name} takes {arity} argument{}, not {}",
+                    if arity == 1 { "" } else { "s" },
+                    args.len()
+                ),
+            ));
+        }
+        for a in args {
+            self.expr(a, depth)?;
+        }
+        if info.random {
+            self.random = true;
+        }
+        self.emit(Op::Call(f), span.clone());
+        Ok(())
+    }
+
+    /// Why a call of `name`, which names no function, is an error: it names a value, or nothing.
+    fn not_a_function(&self, name: &str, name_span: &Span) -> Diagnostic {
+        let is_value = value_named(name).is_some()
+            || self.scope.slot(name).is_some()
+            || self.scope.define(name).is_some()
+            || self.scope.random_var(name).is_some();
+        if is_value {
+            return Diagnostic::error(
+                "E0506",
+                name_span.clone(),
+                format!("'{name}' is a value, not a function: write it without parentheses"),
+            );
+        }
+        Diagnostic::error(
+            "E0501",
+            name_span.clone(),
+            format!("unknown function '{name}'"),
+        )
     }
 
     fn name(&mut self, name: &str, span: &Span, depth: usize) -> Result<(), Diagnostic> {

@@ -1,0 +1,221 @@
+//! Tubes: an axis of the skeleton (a chain of segments that continue each other) becomes a ring
+//! of `sides + 1` vertices at each sample along it, quads between the rings and a flat cap at
+//! each end. A smooth axis is sampled along Bézier pieces through its joints; a straight one at
+//! its joints, each ring across the bisector of the segments it joins.
+
+use super::{curve, Builder, MATERIAL_BARK};
+use crate::turtle::{Segment, Skeleton};
+use glam::DVec3;
+
+/// A point on a tube's axis where a ring of vertices goes.
+#[derive(Clone, Copy, Debug)]
+struct AxisSample {
+    point: DVec3,
+    tangent: DVec3,
+    /// The tube's width there, in width units.
+    width: f64,
+    /// The index in the chain of the segment that starts here (the last one at the end).
+    segment: usize,
+}
+
+impl Builder<'_> {
+    /// The tube of `chain` (segment indices, each continuing the one before), capped at its end
+    /// and, when `start_cap`, at its start.
+    pub(super) fn tube(&mut self, skeleton: &Skeleton, chain: &[u32], start_cap: bool) {
+        let segments: Vec<&Segment> = chain
+            .iter()
+            .map(|&i| &skeleton.segments[i as usize])
+            .collect();
+        let samples = self.axis_samples(&segments);
+        if samples.len() < 2 {
+            return;
+        }
+        let rings = self.rings(skeleton, &segments, &samples);
+        self.tube_triangles(skeleton, chain, &segments, &samples, &rings, start_cap);
+    }
+
+    /// Where the rings of the tube through `segments` go: along the curve through the joints when
+    /// the axis is smooth, else at the joints. Samples that are not finite or repeat the one
+    /// before are dropped.
+    fn axis_samples(&self, segments: &[&Segment]) -> Vec<AxisSample> {
+        let mut points: Vec<DVec3> = vec![segments[0].start];
+        points.extend(segments.iter().map(|s| s.end));
+        // The width at each joint: a segment's width at its start; the last keeps its own.
+        let mut widths: Vec<f64> = segments.iter().map(|s| s.width).collect();
+        widths.push(segments[segments.len() - 1].width);
+        let smooth = self.options.smooth_all || segments[0].smooth;
+        let mut samples = if smooth && points.len() > 2 {
+            self.curve_samples(&points, &widths)
+        } else {
+            joint_samples(&points, &widths)
+        };
+        samples.retain(|s| s.point.is_finite() && s.tangent.is_finite());
+        samples.dedup_by(|b, a| (b.point - a.point).length() < 1e-12);
+        samples
+    }
+
+    /// `smooth_samples` samples per segment along the Bézier curve through the joints `points`,
+    /// the width interpolated between the joints' `widths`.
+    fn curve_samples(&self, points: &[DVec3], widths: &[f64]) -> Vec<AxisSample> {
+        let last_segment = points.len() - 2;
+        let pieces = curve::bezier_through(points);
+        let per = self.options.smooth_samples.max(1);
+        let mut samples = Vec::new();
+        for (k, piece) in pieces.iter().enumerate() {
+            let first = if k == 0 { 0 } else { 1 };
+            for j in first..=per {
+                let t = j as f64 / per as f64;
+                let (point, tangent) = curve::evaluate(piece, t);
+                samples.push(AxisSample {
+                    point,
+                    tangent,
+                    width: widths[k] + (widths[k + 1] - widths[k]) * t,
+                    segment: k.min(last_segment),
+                });
+            }
+        }
+        samples
+    }
+
+    /// The ring vertices of each sample, its colour that of the segment it starts; returns the
+    /// first vertex of each ring. u runs once around each ring (its last vertex repeats the first
+    /// at u = 1); v is the distance along the axis in circumferences of the tube (the mean of the
+    /// two rings' circumferences over each step), so a texture tile is as long as the tube is round.
+    fn rings(
+        &mut self,
+        skeleton: &Skeleton,
+        segments: &[&Segment],
+        samples: &[AxisSample],
+    ) -> Vec<u32> {
+        let frame_input: Vec<(DVec3, DVec3)> =
+            samples.iter().map(|s| (s.point, s.tangent)).collect();
+        let normals = curve::rotation_minimizing_normals(&frame_input, segments[0].left);
+        let sides = self.sides;
+        let mut rings: Vec<u32> = Vec::with_capacity(samples.len());
+        let unit = self.unit;
+        let circumference = |w: f64| (std::f64::consts::PI * w * unit).max(1e-12);
+        let mut v = 0.0f64;
+        for (k, sample) in samples.iter().enumerate() {
+            if k > 0 {
+                let before = samples[k - 1];
+                v += (sample.point - before.point).length()
+                    / (0.5 * (circumference(before.width) + circumference(sample.width)));
+            }
+            let n = normals[k];
+            let b = sample.tangent.cross(n);
+            let radius = 0.5 * sample.width * self.unit;
+            let c = skeleton.color(segments[sample.segment].color);
+            let first = self.mesh.vertex_count() as u32;
+            for j in 0..=sides {
+                let (sin, cos) = self.ring[j % sides];
+                let radial = n * cos + b * sin;
+                let u = j as f32 / sides as f32;
+                self.vertex(sample.point + radial * radius, radial, c, [u, v as f32]);
+            }
+            rings.push(first);
+        }
+        rings
+    }
+
+    /// The triangles of the tube: the start cap (when `start_cap`), a quad between each pair of
+    /// consecutive `rings` (their ranges naming the segment each starts at) and the end cap.
+    fn tube_triangles(
+        &mut self,
+        skeleton: &Skeleton,
+        chain: &[u32],
+        segments: &[&Segment],
+        samples: &[AxisSample],
+        rings: &[u32],
+        start_cap: bool,
+    ) {
+        let n = self.sides as u32;
+        // Start cap, facing back along the axis.
+        self.element = chain[0];
+        self.material = MATERIAL_BARK;
+        self.range(segments[0].module, segments[0].color);
+        if start_cap {
+            self.cap(
+                samples[0].point,
+                -samples[0].tangent,
+                rings[0],
+                skeleton.color(segments[0].color),
+                true,
+            );
+        }
+        for k in 0..rings.len() - 1 {
+            let segment = segments[samples[k].segment];
+            self.element = chain[samples[k].segment];
+            self.range(segment.module, segment.color);
+            let (a0, b0) = (rings[k], rings[k + 1]);
+            for j in 0..n {
+                let next = j + 1;
+                let (a, b, c, d) = (a0 + j, a0 + next, b0 + j, b0 + next);
+                self.mesh.indices.extend([a, b, c, b, d, c]);
+            }
+        }
+        let last = samples.len() - 1;
+        let end = segments[segments.len() - 1];
+        self.element = chain[chain.len() - 1];
+        self.range(end.module, end.color);
+        let c = skeleton.color(end.color);
+        self.cap(
+            samples[last].point,
+            samples[last].tangent,
+            rings[last],
+            c,
+            false,
+        );
+    }
+
+    /// A flat disk closing a tube: a fan around a centre vertex facing `normal`. The ring's order
+    /// runs counter-clockwise around the axis, so the start cap reverses it.
+    fn cap(&mut self, center: DVec3, normal: DVec3, ring: u32, c: [f32; 3], reverse: bool) {
+        let n = self.sides as u32;
+        let first = self.mesh.vertex_count() as u32;
+        for j in 0..n {
+            let i = (ring + j) as usize * 3;
+            let p = DVec3::new(
+                self.mesh.positions[i] as f64,
+                self.mesh.positions[i + 1] as f64,
+                self.mesh.positions[i + 2] as f64,
+            );
+            let (sin, cos) = self.ring[j as usize];
+            let u = 0.5 + 0.5 * cos as f32;
+            let v = 0.5 + if reverse { -0.5 } else { 0.5 } * sin as f32;
+            self.vertex(p, normal, c, [u, v]);
+        }
+        let middle = self.vertex(center, normal, c, [0.5, 0.5]);
+        for j in 0..n {
+            let (a, b) = (first + j, first + (j + 1) % n);
+            if reverse {
+                self.mesh.indices.extend([middle, b, a]);
+            } else {
+                self.mesh.indices.extend([middle, a, b]);
+            }
+        }
+    }
+}
+
+/// A sample at each joint `points`, its tangent along the segment it ends or starts (the
+/// bisector of both inside the chain).
+fn joint_samples(points: &[DVec3], widths: &[f64]) -> Vec<AxisSample> {
+    let last_segment = points.len() - 2;
+    let direction = |i: usize| (points[i + 1] - points[i]).normalize();
+    let mut samples = Vec::with_capacity(points.len());
+    for i in 0..points.len() {
+        let tangent = if i == 0 {
+            direction(0)
+        } else if i == points.len() - 1 {
+            direction(i - 1)
+        } else {
+            (direction(i - 1) + direction(i)).normalize()
+        };
+        samples.push(AxisSample {
+            point: points[i],
+            tangent,
+            width: widths[i],
+            segment: i.min(last_segment),
+        });
+    }
+    samples
+}
