@@ -88,20 +88,9 @@ impl Recorder for Vec<u32> {
     }
 }
 
-/// Matches a left context ending just before module `i`, binding its formal parameters.
-pub fn match_left(
-    model: &Model,
-    s: &LString,
-    partner: &[u32],
-    i: usize,
-    pattern: &[PatternModule],
-    slots: &mut [f64],
-) -> bool {
-    match_left_recording(model, s, partner, i, pattern, slots, &mut ())
-}
-
-/// [`match_left`], recording the indices of the context modules it matched.
-pub fn match_left_recording<R: Recorder>(
+/// Matches a left context ending just before module `i`, binding its formal parameters and telling
+/// `recorder` the indices of the context modules it matched (`&mut ()` records nothing).
+pub fn match_left<R: Recorder>(
     model: &Model,
     s: &LString,
     partner: &[u32],
@@ -127,20 +116,9 @@ pub fn match_left_recording<R: Recorder>(
     true
 }
 
-/// Matches a right context starting at module `pos`, binding its formal parameters.
-pub fn match_right(
-    model: &Model,
-    s: &LString,
-    partner: &[u32],
-    pos: usize,
-    pattern: &[PatternItem],
-    slots: &mut [f64],
-) -> bool {
-    match_right_recording(model, s, partner, pos, pattern, slots, &mut ())
-}
-
-/// [`match_right`], recording the indices of the context modules it matched.
-pub fn match_right_recording<R: Recorder>(
+/// Matches a right context starting at module `pos`, binding its formal parameters and telling
+/// `recorder` the indices of the context modules it matched (`&mut ()` records nothing).
+pub fn match_right<R: Recorder>(
     model: &Model,
     s: &LString,
     partner: &[u32],
@@ -178,7 +156,7 @@ impl RightContext<'_> {
     /// Matches the rest of the pattern from `pos`.
     #[inline]
     fn rest<R: Recorder>(&self, pos: usize, slots: &mut [f64], recorder: &mut R) -> bool {
-        match_right_recording(
+        match_right(
             self.model,
             self.s,
             self.partner,

@@ -230,20 +230,12 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         self.slots[first..first + params.len()].copy_from_slice(params);
         let model = self.model;
         if !p.left.is_empty()
-            && !context::match_left_recording(
-                model,
-                src,
-                &self.partner,
-                i,
-                &p.left,
-                &mut self.slots,
-                left,
-            )
+            && !context::match_left(model, src, &self.partner, i, &p.left, &mut self.slots, left)
         {
             return Ok((false, false));
         }
         if !p.right.is_empty()
-            && !context::match_right_recording(
+            && !context::match_right(
                 model,
                 src,
                 &self.partner,
