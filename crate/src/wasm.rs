@@ -431,9 +431,10 @@ impl PlantBuild {
         js_sys::Uint32Array::from(&self.build.derivation.origin[..])
     }
 
-    /// The productions of the productions section, as JSON `[{index, from, to, label, context}]`:
-    /// `from`/`to` are the UTF-8 byte range of the production in the source, `context` whether it
-    /// has a left or right context. The index is what `origins()` and `explain` use.
+    /// The productions of the productions section, as JSON `[{index, from, to, label, context,
+    /// condition}]`: `from`/`to` are the UTF-8 byte range of the production in the source,
+    /// `context` whether it has a left or right context, `condition` the byte range of its
+    /// condition or null. The index is what `origins()` and `explain` use.
     pub fn productions(&self) -> String {
         #[derive(serde::Serialize)]
         struct Row<'a> {
@@ -442,6 +443,7 @@ impl PlantBuild {
             to: usize,
             label: Option<&'a str>,
             context: bool,
+            condition: Option<[usize; 2]>,
         }
         let rows: Vec<Row> = self.build.model.as_ref().map_or_else(Vec::new, |m| {
             m.productions
@@ -454,6 +456,7 @@ impl PlantBuild {
                     to: p.span.end,
                     label: p.label.as_deref(),
                     context: p.has_context(),
+                    condition: p.condition.as_ref().map(|c| [c.span.start, c.span.end]),
                 })
                 .collect()
         });
@@ -520,6 +523,64 @@ impl PlantInspector {
         serde_json::to_string(&texts).unwrap_or_else(|_| "[]".into())
     }
 
+    /// Why production `production` did or did not rewrite the module that module `module` of the
+    /// derived string comes from, as JSON (`MatchReport`: `{production, module, moduleText,
+    /// predecessor, left, right, condition, rewrittenBy}`, contexts as `{matched, modules,
+    /// expected, found, foundText}`; module indices name the string the last step read);
+    /// `undefined` before the first step.
+    #[wasm_bindgen(js_name = matchReport)]
+    pub fn match_report(&self, production: u32, module: usize) -> Option<String> {
+        let report = self.build.inspector()?.match_report(production, module)?.ok()?;
+        serde_json::to_string(&report).ok()
+    }
+
+    /// The whole derivation, step 0 to the last, as JSON `[{texts, parent, origin}]` (each step's
+    /// modules as written, and for each the module of the step before it comes from and the
+    /// production that wrote it), when all the steps' strings hold `max_modules` modules or fewer
+    /// together; `undefined` when they do not.
+    pub fn sequence(&self, max_modules: usize) -> Option<String> {
+        #[derive(serde::Serialize)]
+        struct Step<'a> {
+            texts: Vec<String>,
+            parent: &'a [u32],
+            origin: &'a [u32],
+        }
+        let inspector = self.build.inspector()?;
+        let traced = inspector.sequence(max_modules)?.ok()?;
+        let steps: Vec<Step> = traced
+            .iter()
+            .map(|s| Step {
+                texts: inspector.texts_of(&s.string),
+                parent: &s.parent,
+                origin: &s.origin,
+            })
+            .collect();
+        serde_json::to_string(&steps).ok()
+    }
+
+    /// The text of modules `start .. start + count` of the string the last step read (JSON array).
+    #[wasm_bindgen(js_name = previousTexts)]
+    pub fn previous_texts(&self, start: usize, count: usize) -> String {
+        let texts = self
+            .build
+            .inspector()
+            .map(|i| i.previous_texts(start, count))
+            .unwrap_or_default();
+        serde_json::to_string(&texts).unwrap_or_else(|_| "[]".into())
+    }
+
+    /// Modules in the string the last step read (0 after 0 steps).
+    #[wasm_bindgen(getter, js_name = previousCount)]
+    pub fn previous_count(&self) -> usize {
+        self.build.derivation.previous.len()
+    }
+
+    /// For each module of the derived string, the module of the string the last step read it
+    /// comes from (empty after 0 steps).
+    pub fn parents(&self) -> js_sys::Uint32Array {
+        js_sys::Uint32Array::from(&self.build.derivation.parent[..])
+    }
+
     /// A fingerprint of the derived string (16 hex digits): equal for equal derivations.
     #[wasm_bindgen(js_name = derivedHash)]
     pub fn derived_hash(&self) -> String {
@@ -544,10 +605,11 @@ impl Explanation {
         self.inner.explanation.production
     }
 
-    /// Modules the production rewrote.
+    /// Modules the production rewrote in the last step (in the whole string, also when the
+    /// explanation is of one module).
     #[wasm_bindgen(getter)]
     pub fn fired(&self) -> u32 {
-        self.inner.explanation.rewritten.len() as u32
+        self.inner.explanation.fired
     }
 
     /// Modules whose predecessor and contexts matched it.

@@ -161,3 +161,96 @@ fn the_fingerprint_tells_derivations_apart_and_repeats_for_equal_ones() {
     // Interning order does not: the same string from differently ordered grammars.
     assert_eq!(run("axiom: AB", 1), run("#module B\naxiom: AB", 1));
 }
+
+fn built(source: &str, n: u32) -> meristem::Build {
+    let b = build(
+        source,
+        &BuildOptions {
+            iterations: Some(n),
+            ..BuildOptions::default()
+        },
+    );
+    assert!(b.ok(), "{:?}", b.diagnostics);
+    b
+}
+
+#[test]
+fn the_derivation_of_eq_1_7_is_the_sequence_of_fig_1_34() {
+    let source = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../public/examples/abop-eq-1.7.lsys"
+    ))
+    .unwrap();
+    let b = built(&source, 4);
+    let inspector = b.inspector().expect("model");
+    let steps = inspector.sequence(1_000).expect("short").expect("derives");
+    let texts: Vec<String> = steps
+        .iter()
+        .map(|s| inspector.texts_of(&s.string).concat())
+        .collect();
+    assert_eq!(
+        texts,
+        [
+            "B(2)A(4,4)",
+            "B(1)B(4)A(1,0)",
+            "B(0)B(3)A(2,1)",
+            "CB(2)A(4,3)",
+            "CB(1)A(8,7)"
+        ]
+    );
+    // Step 1: B(2) became B(1) by its fourth production; A(4,4) became B(4)A(1,0) by the second.
+    assert_eq!(steps[1].parent, [0, 1, 1]);
+    assert_eq!(steps[1].origin, [3, 1, 1]);
+    // Step 3: B(0) became C (the third production); the axiom has no parents.
+    assert_eq!(steps[3].origin[0], 2);
+    assert!(steps[0].parent.is_empty());
+    // The last step is the build's.
+    assert_eq!(steps[4].string, b.derivation.string);
+    // Too long for the limit: no sequence.
+    assert!(inspector.sequence(10).is_none());
+}
+
+#[test]
+fn a_match_report_says_which_part_of_a_production_failed() {
+    // Step 1 reads `b a a c a`: the signal b passes to the a after it, not to the others.
+    let source = "axiom: baaca\nb < a > a -> b\na -> a\n";
+    let b = built(source, 1);
+    let inspector = b.inspector().expect("model");
+    // Module 1 of the derived string came from module 1 (the first a): both contexts match.
+    let fired = inspector.match_report(0, 1).expect("a step").expect("no error");
+    assert!(fired.predecessor && fired.left.matched && fired.right.matched);
+    assert_eq!((fired.left.modules.clone(), fired.right.modules.clone()), (vec![0], vec![2]));
+    assert_eq!(fired.rewritten_by, Some(0));
+    // Module 2 (the second a): its left neighbour is an a, not the b the production wants.
+    let left = inspector.match_report(0, 2).expect("a step").expect("no error");
+    assert!(!left.left.matched);
+    assert_eq!(left.left.expected.as_deref(), Some("b"));
+    assert_eq!((left.left.found, left.left.found_text.as_deref()), (Some(1), Some("a")));
+    assert_eq!(left.rewritten_by, Some(1));
+    // Module 4 (the last a): no right neighbour at all.
+    let right = inspector.match_report(0, 4).expect("a step").expect("no error");
+    assert!(!right.left.matched || !right.right.matched);
+    // Module 3 (c) is not the predecessor.
+    let other = inspector.match_report(0, 3).expect("a step").expect("no error");
+    assert!(!other.predecessor);
+    assert_eq!(other.module_text, "c");
+}
+
+#[test]
+fn a_module_explanation_counts_every_rewriting_of_its_production() {
+    // Clicking one F of 1.24d reports how often F -> FF fired, not 1 (issue 17, problem 4).
+    let source = "axiom: X\nX -> F[+X]F[-X]+X\nF -> FF\n";
+    let b = built(source, 3);
+    let inspector = b.inspector().expect("model");
+    let whole = inspector.explain(1).expect("a step").expect("no error");
+    let f = b
+        .derivation
+        .origin
+        .iter()
+        .position(|&o| o == 1)
+        .expect("an F written by F -> FF");
+    let one = inspector.explain_module(f).expect("a step").expect("no error");
+    assert_eq!(one.explanation.fired, whole.explanation.fired);
+    assert!(whole.explanation.fired > 1);
+    assert_eq!(one.explanation.rewritten.len(), 1);
+}

@@ -28,7 +28,7 @@ pub fn bracket_partners(model: &Model, s: &LString, partner: &mut Vec<u32>) {
 }
 
 /// The module before `j` on the path to the root, skipping branches and ignored modules.
-fn previous(model: &Model, s: &LString, partner: &[u32], mut j: usize) -> Option<usize> {
+pub(super) fn previous(model: &Model, s: &LString, partner: &[u32], mut j: usize) -> Option<usize> {
     while j > 0 {
         j -= 1;
         let id = s.ids[j];

@@ -23,7 +23,7 @@ mod groups;
 mod plan;
 mod rewriter;
 
-pub use explain::{explain, Explanation};
+pub use explain::{explain, match_report, ContextCheck, Explanation, LastStep, MatchReport};
 
 use crate::diagnostics::Diagnostic;
 use crate::model::{LString, Model};
@@ -67,6 +67,19 @@ pub struct Derivation {
 
 /// In [`Derivation::origin`]: no production made this module in the last step.
 pub const NOT_REWRITTEN: u32 = u32::MAX;
+
+/// One step of a derivation as [`derive_traced`] records it: the derivation as a sequence, for the
+/// studio's derivation view.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct TracedStep {
+    /// The string after the step (step 0: the axiom, decomposed).
+    pub string: LString,
+    /// For each module, the production that wrote it in this step ([`NOT_REWRITTEN`] when it was
+    /// copied; all of them at step 0).
+    pub origin: Vec<u32>,
+    /// For each module, the module of the previous step's string it comes from (empty at step 0).
+    pub parent: Vec<u32>,
+}
 
 impl Derivation {
     /// The string the turtle reads.
@@ -160,6 +173,23 @@ pub fn derive_tracked(
     run(model, options.steps, &mut rng, true, observer)
 }
 
+/// Like [`derive_tracked`], and also records every step ([`TracedStep`]: the string, and where
+/// each of its modules comes from). Meant for short derivations: it keeps every string.
+pub fn derive_traced(
+    model: &Model,
+    options: &DeriveOptions,
+    observer: &mut dyn Observer,
+) -> Result<(Derivation, Vec<TracedStep>), Diagnostic> {
+    let mut rng = Generator::seed_from_u64(options.seed.unwrap_or(model.settings.seed));
+    let mut run = Run::start(model, options.steps, &mut rng, observer)?;
+    run.trace = Some(vec![run.traced_axiom()]);
+    for step in 1..=options.steps {
+        run.step(step, true)?;
+    }
+    let trace = run.trace.take().unwrap_or_default();
+    Ok((run.finish(options.steps, true)?, trace))
+}
+
 /// Sets each query module's three parameters to the value the observer reads there.
 fn apply_queries(model: &Model, s: &mut LString, observer: &mut dyn Observer) {
     let is_query = |id| {
@@ -229,6 +259,8 @@ struct Run<'m, 'o, R: rand::Rng> {
     origin: Vec<u32>,
     parent: Vec<u32>,
     previous: LString,
+    /// Every step so far, when the derivation is traced.
+    trace: Option<Vec<TracedStep>>,
 }
 
 impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
@@ -265,7 +297,17 @@ impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
             origin: Vec::new(),
             parent: Vec::new(),
             previous: LString::default(),
+            trace: None,
         })
+    }
+
+    /// Step 0 as a traced step: the axiom, no module rewritten.
+    fn traced_axiom(&self) -> TracedStep {
+        TracedStep {
+            string: self.current.clone(),
+            origin: vec![NOT_REWRITTEN; self.current.len()],
+            parent: Vec::new(),
+        }
     }
 
     /// One step: the productions pass, decomposition, cut, queries. `tracked`: record where each
@@ -292,6 +334,13 @@ impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
         }
         self.observer.stepped(step);
         apply_queries(model, &mut self.current, self.observer);
+        if let Some(trace) = self.trace.as_mut() {
+            trace.push(TracedStep {
+                string: self.current.clone(),
+                origin: self.origin.clone(),
+                parent: self.parent.clone(),
+            });
+        }
         Ok(())
     }
 

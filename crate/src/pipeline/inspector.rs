@@ -1,16 +1,16 @@
 //! Questions about a build's derivation: why a production fired in the last step (the studio's
 //! context-sensitivity view), and the derived string's text, module by module.
 
-use crate::derive::{self, Derivation, NOT_REWRITTEN};
+use crate::derive::{self, DeriveOptions, Derivation, LastStep, MatchReport, TracedStep, NOT_REWRITTEN};
 use crate::diagnostics::Diagnostic;
-use crate::model::Model;
+use crate::model::{LString, Model};
 
 /// A build's model and derivation, read-only.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 pub struct Inspector<'b> {
     model: &'b Model,
     derivation: &'b Derivation,
-    steps: u32,
+    options: DeriveOptions,
 }
 
 /// [`derive::Explanation`] in terms of the derived string: which of its modules production `p`
@@ -27,12 +27,37 @@ pub struct Explained {
 }
 
 impl<'b> Inspector<'b> {
-    pub fn new(model: &'b Model, derivation: &'b Derivation, steps: u32) -> Self {
+    pub fn new(model: &'b Model, derivation: &'b Derivation, options: DeriveOptions) -> Self {
         Inspector {
             model,
             derivation,
-            steps,
+            options,
         }
+    }
+
+    /// The whole derivation, step 0 (the axiom) to the last, when the strings of all its steps
+    /// hold `max_modules` modules or fewer together; `None` when they do not (or without steps to
+    /// show). It derives again, recording every step.
+    pub fn sequence(&self, max_modules: usize) -> Option<Result<Vec<TracedStep>, Diagnostic>> {
+        if self.derivation.string.len() > max_modules {
+            return None;
+        }
+        let traced = match super::trace(self.model, &self.options) {
+            Ok(steps) => steps,
+            Err(e) => return Some(Err(e)),
+        };
+        let total: usize = traced.iter().map(|s| s.string.len()).sum();
+        (total <= max_modules).then_some(Ok(traced))
+    }
+
+    /// The text of modules `start .. start + count` of the string the last step read (clamped).
+    pub fn previous_texts(&self, start: usize, count: usize) -> Vec<String> {
+        texts(self.model, &self.derivation.previous, start, count)
+    }
+
+    /// The text of each module of `string` (a string of this grammar, e.g. a traced step's).
+    pub fn texts_of(&self, string: &LString) -> Vec<String> {
+        texts(self.model, string, 0, string.len())
     }
 
     /// Modules in the derived string.
@@ -42,11 +67,7 @@ impl<'b> Inspector<'b> {
 
     /// The text of modules `start .. start + count` of the derived string (clamped).
     pub fn module_texts(&self, start: usize, count: usize) -> Vec<String> {
-        let s = &self.derivation.string;
-        let end = start.saturating_add(count).min(s.len());
-        (start.min(end)..end)
-            .map(|i| s.module_text(&self.model.alphabet, i))
-            .collect()
+        texts(self.model, &self.derivation.string, start, count)
     }
 
     /// The derived string, cut after `max_chars` characters with `…` appended when longer.
@@ -88,6 +109,25 @@ impl<'b> Inspector<'b> {
         Some(explained)
     }
 
+    /// The last step, as the explanations read it.
+    fn last_step(&self) -> LastStep<'b> {
+        let d = self.derivation;
+        LastStep {
+            model: self.model,
+            previous: &d.previous,
+            origin: &d.origin,
+            parent: &d.parent,
+            steps: self.options.steps,
+        }
+    }
+
+    /// Why production `production` did or did not rewrite the module of the last step's string
+    /// that module `module` of the derived string comes from. `None` before any step.
+    pub fn match_report(&self, production: u32, module: usize) -> Option<Result<MatchReport, Diagnostic>> {
+        let source = *self.derivation.parent.get(module)? as usize;
+        Some(derive::match_report(self.last_step(), production, source))
+    }
+
     fn explain_where(
         &self,
         production: u32,
@@ -97,15 +137,7 @@ impl<'b> Inspector<'b> {
         if d.parent.is_empty() {
             return None;
         }
-        let explanation = derive::explain(
-            self.model,
-            &d.previous,
-            &d.origin,
-            &d.parent,
-            self.steps,
-            production,
-            only,
-        );
+        let explanation = derive::explain(self.last_step(), production, only);
         Some(explanation.map(|e| self.in_derived_string(e)))
     }
 
@@ -138,4 +170,12 @@ impl<'b> Inspector<'b> {
         explained.explanation = explanation;
         explained
     }
+}
+
+/// The text of modules `start .. start + count` of `s` (clamped).
+fn texts(model: &Model, s: &LString, start: usize, count: usize) -> Vec<String> {
+    let end = start.saturating_add(count).min(s.len());
+    (start.min(end)..end)
+        .map(|i| s.module_text(&model.alphabet, i))
+        .collect()
 }

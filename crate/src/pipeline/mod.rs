@@ -143,6 +143,8 @@ pub struct Build {
     pub derivation: Derivation,
     /// Derivation steps run.
     pub steps: u32,
+    /// The seed that overrode `#seed`, if any.
+    pub seed: Option<u64>,
     /// With growth attributes (`#lifetime`, `#shape`, `#sun`, …): each module's growth state and
     /// what every step did (apices growing and stopped per third, rewritings).
     pub growth: Option<GrowthRecord>,
@@ -189,11 +191,11 @@ impl Build {
 
     /// Questions about the derivation, when there is a model.
     pub fn inspector(&self) -> Option<Inspector<'_>> {
-        Some(Inspector::new(
-            self.model.as_ref()?,
-            &self.derivation,
-            self.steps,
-        ))
+        let options = DeriveOptions {
+            steps: self.steps,
+            seed: self.seed,
+        };
+        Some(Inspector::new(self.model.as_ref()?, &self.derivation, options))
     }
 
     /// Meshes the plant again with other mesh options (a view option such as the number of sides
@@ -262,6 +264,7 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Watch<'_, '_>) -
         watch.timings.interpret = watch.lap();
         watch.start(Stage::Mesh);
         result.steps = steps;
+        result.seed = options.seed;
         result.plant = Plant::new(skeleton, &options.mesh, &result.derivation, steps);
         watch.timings.mesh = watch.lap();
     }
@@ -298,6 +301,16 @@ fn derive_stage(
             None
         }
     }
+}
+
+/// Derives again, recording every step (the derivation as a sequence), with growth following as in
+/// a build.
+fn trace(model: &Model, options: &DeriveOptions) -> Result<Vec<derive::TracedStep>, Diagnostic> {
+    let mut observer = StageObserver {
+        model,
+        growth: GrowthTracker::new(model, options.steps),
+    };
+    derive::derive_traced(model, options, &mut observer).map(|(_, steps)| steps)
 }
 
 /// What the stages after derive do while it derives: growth follows every module and plans each

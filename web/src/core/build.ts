@@ -13,7 +13,10 @@ import {
   DERIVED_PREVIEW_CHARS,
   type BuildOptions,
   type Diagnostic,
+  type DerivationStep,
   type Explanation,
+  type LastStepLinks,
+  type MatchReport,
   type MeshBuffers,
   type PlantBuild,
   type PlantInspector,
@@ -133,6 +136,7 @@ interface RawProduction {
   to: number;
   label: string | null;
   context: boolean;
+  condition: [number, number] | null;
 }
 
 /** Copies a wasm build into plain data (for this folder's facades; the caller frees the build). */
@@ -151,6 +155,7 @@ export function plainBuild(source: string, result: WasmPlantBuild): PlantBuild {
         to: byteOffsetToUtf16(source, p.to),
         label: p.label,
         context: p.context,
+        condition: p.condition && { from: byteOffsetToUtf16(source, p.condition[0]), to: byteOffsetToUtf16(source, p.condition[1]) },
       }),
     ),
     origins: ownedArray(result.origins()),
@@ -226,6 +231,32 @@ class LiveInspector implements PlantInspector {
 
   derivedHash(): Promise<string> {
     return Promise.resolve(guarded(() => this.result?.derivedHash()) ?? '');
+  }
+
+  matchReport(production: number, module: number): Promise<MatchReport | null> {
+    if (!Number.isInteger(module) || module < 0) return Promise.resolve(null);
+    const json = guarded(() => this.result?.matchReport(production, module));
+    return Promise.resolve(json ? (JSON.parse(json) as MatchReport) : null);
+  }
+
+  sequence(maxModules: number): Promise<DerivationStep[] | null> {
+    const json = guarded(() => this.result?.sequence(maxModules));
+    return Promise.resolve(json ? (JSON.parse(json) as DerivationStep[]) : null);
+  }
+
+  previousTexts(start: number, count: number): Promise<string[]> {
+    const result = this.result;
+    if (!result) return Promise.resolve([]);
+    const total = result.previousCount;
+    const from = Math.max(0, Math.min(start, total));
+    const n = Math.max(0, Math.min(count, total - from));
+    return Promise.resolve(JSON.parse(guarded(() => result.previousTexts(from, n))) as string[]);
+  }
+
+  lastStep(): Promise<LastStepLinks> {
+    const result = this.result;
+    if (!result) return Promise.resolve({ parents: new Uint32Array(0), previousCount: 0 });
+    return Promise.resolve(guarded(() => ({ parents: ownedArray(result.parents()), previousCount: result.previousCount })));
   }
 
   free(): void {

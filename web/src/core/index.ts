@@ -48,6 +48,10 @@ export {
 export {
   NOT_REWRITTEN,
   type Bounds,
+  type ContextCheck,
+  type DerivationStep,
+  type LastStepLinks,
+  type MatchReport,
   type Explanation,
   type PlantInspector,
   type ProductionInfo,

@@ -132,6 +132,8 @@ export interface ProductionInfo {
   label: string | null;
   /** Whether it has a left or right context. */
   context: boolean;
+  /** UTF-16 range of its condition in the source text, or null. */
+  condition: { from: number; to: number } | null;
 }
 
 /** Why and where one production fired in the last step (module indices of the derived string). */
@@ -150,6 +152,54 @@ export interface Explanation {
   rightContext: Uint32Array;
 }
 
+/** How one context of a production met the string around a module (see {@link MatchReport}). */
+export interface ContextCheck {
+  /** The whole context matched (also when the production has none). */
+  matched: boolean;
+  /** The modules that matched it (indices of the string the last step read). */
+  modules: number[];
+  /** Where it did not match: the element the production expected (`C`, `[`, `]`)… */
+  expected: string | null;
+  /** …and the module found there instead, with its text. */
+  found: number | null;
+  foundText: string | null;
+}
+
+/**
+ * Why a production did or did not rewrite a module in the last step: each part of the production
+ * checked against the module of the string that step read (`module`, an index of that string).
+ */
+export interface MatchReport {
+  production: number;
+  module: number;
+  moduleText: string;
+  /** The module is the production's predecessor (name and number of parameters). */
+  predecessor: boolean;
+  left: ContextCheck;
+  right: ContextCheck;
+  /** The condition's value when there is one and the predecessor and contexts matched. */
+  condition: boolean | null;
+  /** The production that did rewrite the module in the last step (null: it was copied). */
+  rewrittenBy: number | null;
+}
+
+/** One step of the derivation as a sequence: its string, and where each module comes from. */
+export interface DerivationStep {
+  /** Each module as written. */
+  texts: string[];
+  /** For each module, the module of the step before it comes from (empty at step 0). */
+  parent: number[];
+  /** For each module, the production that wrote it in this step ({@link NOT_REWRITTEN}: copied). */
+  origin: number[];
+}
+
+/** The last step's links: for each module of the derived string, the module of the string before. */
+export interface LastStepLinks {
+  parents: Uint32Array;
+  /** Modules in the string the last step read. */
+  previousCount: number;
+}
+
 /** Questions about one build that need the core's full derivation (kept alive until `free`). */
 export interface PlantInspector {
   /** Explains a production on the last step; null before the first step. */
@@ -163,6 +213,17 @@ export interface PlantInspector {
   moduleTexts(start: number, count: number): Promise<string[]>;
   /** A fingerprint of the derived string (16 hex digits; '' once freed): equal for equal derivations. */
   derivedHash(): Promise<string>;
+  /**
+   * Why production `production` did or did not rewrite the module that module `module` of the
+   * derived string comes from; null before the first step.
+   */
+  matchReport(production: number, module: number): Promise<MatchReport | null>;
+  /** Every step of the derivation when all their strings hold `maxModules` modules or fewer together; else null. */
+  sequence(maxModules: number): Promise<DerivationStep[] | null>;
+  /** The text of modules `start .. start + count` of the string the last step read. */
+  previousTexts(start: number, count: number): Promise<string[]>;
+  /** Where each module of the derived string comes from in the string before. */
+  lastStep(): Promise<LastStepLinks>;
   /** Releases the core's memory; later questions answer null / []. */
   free(): void;
 }

@@ -6,7 +6,7 @@
 // iterations shows which production rewrote what from step k to k + 1.
 import { NOT_REWRITTEN, type Explanation, type PlantBuild, type PlantInspector, type ProductionInfo } from '../core';
 import type { GrammarEditor } from '../editor';
-import { HIGHLIGHT, PRODUCTION_COLOURS, type Rgb } from '../view/highlight';
+import { cssColour, HIGHLIGHT, PRODUCTION_COLOURS, type Rgb } from '../view/highlight';
 import type { PlantView } from '../view';
 import { StringPanel, type ModuleRole } from './string-panel';
 import type { ViewOptions } from './view-options';
@@ -27,12 +27,6 @@ type Focus = { kind: 'production'; index: number } | { kind: 'module'; index: nu
 const ROLE_CODE: Record<ModuleRole, number> = { produced: 1, left: 2, right: 3, selected: 4 };
 const CODE_ROLE: (ModuleRole | null)[] = [null, 'produced', 'left', 'right', 'selected'];
 const ROLE_RGB: (Rgb | null)[] = [null, HIGHLIGHT.produced, HIGHLIGHT.left, HIGHLIGHT.right, HIGHLIGHT.selected];
-
-/** CSS colour of linear RGB (the view's vertex colours are linear; CSS is sRGB). */
-export function cssColour(rgb: Rgb): string {
-  const encode = (c: number) => Math.round(255 * (c <= 0.0031308 ? 12.92 * c : 1.055 * c ** (1 / 2.4) - 0.055));
-  return `rgb(${encode(rgb[0])}, ${encode(rgb[1])}, ${encode(rgb[2])})`;
-}
 
 /** The 1-based line of a UTF-16 offset. */
 function lineOf(source: string, offset: number): number {

@@ -1,6 +1,6 @@
 // The page's side of the build worker: one request at a time, the newest waiting request only,
 // stale answers never delivered, and a worker stuck on an outdated build replaced.
-import type { BuildOptions, Explanation, PlantBuild, PlantInspector, PlantSketch } from '../core';
+import type { BuildOptions, DerivationStep, Explanation, LastStepLinks, MatchReport, PlantBuild, PlantInspector, PlantSketch } from '../core';
 import type { GpuArrays } from '../view/gpu-arrays';
 import type { BuildResponse, InspectAnswer, InspectQuestion, WorkerRequest, WorkerResponse } from './worker-protocol';
 
@@ -265,6 +265,23 @@ class RemoteInspector implements PlantInspector {
 
   derivedHash(): Promise<string> {
     return this.freed ? Promise.resolve('') : this.client.ask<string>(this.worker, this.build, 'derivedHash', [], '');
+  }
+
+  matchReport(production: number, module: number): Promise<MatchReport | null> {
+    return this.freed ? Promise.resolve(null) : this.client.ask<MatchReport | null>(this.worker, this.build, 'matchReport', [production, module], null);
+  }
+
+  sequence(maxModules: number): Promise<DerivationStep[] | null> {
+    return this.freed ? Promise.resolve(null) : this.client.ask<DerivationStep[] | null>(this.worker, this.build, 'sequence', [maxModules], null);
+  }
+
+  previousTexts(start: number, count: number): Promise<string[]> {
+    return this.freed ? Promise.resolve([]) : this.client.ask<string[]>(this.worker, this.build, 'previousTexts', [start, count], []);
+  }
+
+  lastStep(): Promise<LastStepLinks> {
+    const none = { parents: new Uint32Array(0), previousCount: 0 };
+    return this.freed ? Promise.resolve(none) : this.client.ask<LastStepLinks>(this.worker, this.build, 'lastStep', [], none);
   }
 
   free(): void {

@@ -1,10 +1,10 @@
 // The messages between the page and the build worker (worker.ts), and the transfer lists that move
 // typed arrays out of the worker without copying them.
-import type { BuildOptions, Explanation, PlantBuild, PlantSketch } from '../core';
+import type { BuildOptions, PlantBuild, PlantInspector, PlantSketch } from '../core';
 import type { GpuArrays } from '../view/gpu-arrays';
 
-/** The questions a kept build answers (the methods of `PlantInspector`). */
-export type InspectQuestion = 'explain' | 'explainModule' | 'moduleTexts' | 'derivedHash';
+/** The questions a kept build answers: the methods of `PlantInspector`, asked by name. */
+export type InspectQuestion = Exclude<keyof PlantInspector, 'free'>;
 
 /** Page → worker. */
 export type WorkerRequest =
@@ -18,8 +18,8 @@ export type WorkerRequest =
 /** The build request alone. */
 export type BuildRequest = Extract<WorkerRequest, { kind: 'build' }>;
 
-/** What an inspect question answers. */
-export type InspectAnswer = Explanation | null | string[] | string;
+/** What an inspect question answers (what the `PlantInspector` method returns). */
+export type InspectAnswer = Awaited<ReturnType<PlantInspector[InspectQuestion]>>;
 
 /** Plants of at least this many segments are first sent as a sketch (lines), then meshed. */
 export const SKETCH_MIN_SEGMENTS = 20_000;
@@ -66,9 +66,8 @@ export function transferablesOf(build: PlantBuild, gpu?: GpuArrays): ArrayBuffer
   return buffersOf([...Object.values(build.mesh), build.origins, ...(gpu ? [gpu.normals, gpu.colors] : [])]);
 }
 
-/** The buffers of an inspect answer (an explanation's module lists), for its transfer list. */
+/** The buffers of an inspect answer (the typed arrays among its fields), for its transfer list. */
 export function answerTransferables(answer: InspectAnswer): ArrayBuffer[] {
-  return answer !== null && typeof answer === 'object' && !Array.isArray(answer)
-    ? buffersOf([answer.produced, answer.leftContext, answer.rightContext])
-    : [];
+  if (answer === null || typeof answer !== 'object' || Array.isArray(answer)) return [];
+  return buffersOf(Object.values(answer).filter((v): v is Uint32Array => v instanceof Uint32Array));
 }

@@ -6,7 +6,15 @@
 // (worker-client.ts). A big plant is first sent as a sketch (its segments as lines), then built.
 import { CoreCrashed, initCore, inspectPlant, type PlantInspector } from '../core';
 import { packForGpu } from '../view/gpu-arrays';
-import { answerTransferables, SKETCH_MIN_SEGMENTS, transferablesOf, type InspectAnswer, type WorkerRequest, type WorkerResponse } from './worker-protocol';
+import {
+  answerTransferables,
+  SKETCH_MIN_SEGMENTS,
+  transferablesOf,
+  type InspectAnswer,
+  type InspectQuestion,
+  type WorkerRequest,
+  type WorkerResponse,
+} from './worker-protocol';
 
 /** Kept builds at most: the page frees what it does not show, this only bounds a leak. */
 const MAX_KEPT = 4;
@@ -27,17 +35,23 @@ function keep(id: number, inspector: PlantInspector): void {
   }
 }
 
-async function answer(inspector: PlantInspector | undefined, question: string, args: number[]): Promise<InspectAnswer> {
-  switch (question) {
-    case 'explain':
-      return inspector ? inspector.explain(args[0]) : null;
-    case 'explainModule':
-      return inspector ? inspector.explainModule(args[0]) : null;
-    case 'moduleTexts':
-      return inspector ? inspector.moduleTexts(args[0], args[1]) : [];
-    default:
-      return inspector ? inspector.derivedHash() : '';
-  }
+/** What a question answers when its build is gone (freed, or never kept). */
+const UNANSWERED: { [Q in InspectQuestion]: Awaited<ReturnType<PlantInspector[Q]>> } = {
+  explain: null,
+  explainModule: null,
+  moduleTexts: [],
+  derivedHash: '',
+  matchReport: null,
+  sequence: null,
+  previousTexts: [],
+  lastStep: { parents: new Uint32Array(0), previousCount: 0 },
+};
+
+/** Asks `inspector` the question by its method's name. */
+function answer(inspector: PlantInspector | undefined, question: InspectQuestion, args: number[]): Promise<InspectAnswer> {
+  if (!inspector || !(question in UNANSWERED)) return Promise.resolve(UNANSWERED[question] ?? null);
+  const method = inspector[question] as (...args: number[]) => Promise<InspectAnswer>;
+  return method.apply(inspector, args);
 }
 
 addEventListener('message', async (event: MessageEvent<WorkerRequest>) => {
@@ -54,7 +68,7 @@ addEventListener('message', async (event: MessageEvent<WorkerRequest>) => {
     return;
   }
   if (request.kind === 'inspect') {
-    let result: InspectAnswer = request.question === 'moduleTexts' ? [] : request.question === 'derivedHash' ? '' : null;
+    let result: InspectAnswer = UNANSWERED[request.question] ?? null;
     try {
       result = await answer(kept.get(request.build), request.question, request.args);
     } catch (error) {

@@ -83,3 +83,9 @@ export function highlightOverlay(mesh: MeshBuffers, colourOf: (module: number) =
   }
   return { positions, normals, colors };
 }
+
+/** CSS colour of linear RGB (the view's vertex colours are linear; CSS is sRGB). */
+export function cssColour(rgb: Rgb): string {
+  const encode = (c: number) => Math.round(255 * (c <= 0.0031308 ? 12.92 * c : 1.055 * c ** (1 / 2.4) - 0.055));
+  return `rgb(${encode(rgb[0])}, ${encode(rgb[1])}, ${encode(rgb[2])})`;
+}
