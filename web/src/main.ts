@@ -8,7 +8,7 @@ import { PlantView } from './view';
 import {
   Autosave, BranchEditSession, BuildClient, ContextView, DerivationControls, GalleryDialog, GalleryThumbnails, GrowthPanel,
   LibraryDialog, LinkState, LivePreview, Notice, ShareDialog, SliderPanel, TextOpening, ViewOptions, ViewTools,
-  attachSplitter, browserStorage, connectTestHook, createBuildWorker, emptyTestHook, fetchExample, installDownloads, installDrop,
+  ViewFollowing, attachSplitter, browserStorage, connectTestHook, createBuildWorker, emptyTestHook, fetchExample, installDownloads, installDrop,
   installFileMenu, installShareButton, installShortcuts, openPastedLinks, renderShortcutHelp, reportCoreCrashes, showStatus, sidesChoices,
   startingText, studioElements, type ShortcutAction, type StudioElements, type StudioTestHook,
 } from './studio';
@@ -79,7 +79,11 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   derivation.onChange(() => preview.rebuild());
   const viewTools = new ViewTools(els.viewTools, viewOptions, view);
   viewOptions.onChange((_, changed) => (changed.has('sides') || changed.has('smoothAll')) && preview.rebuild());
+  // The view follows the plant; Play shows the growth in one frame (or frames every step).
+  const following = new ViewFollowing(els.following, view, () => preview.lastGood);
+  following.follow(derivation.playback);
   preview.onDelivered((result) => {
+    following.delivered(result);
     derivation.buildShown(result.build.grammarIterations);
     viewTools.showProjection();
   });
@@ -116,6 +120,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     },
     tell: (kind, message, items) => (message === null ? notice.hide() : notice.show(kind, message, items)),
     modeChanged: (on) => {
+      following.editing(on);
       contexts.picking = !on;
       if (on) contexts.pickModule(null);
     },

@@ -26,6 +26,7 @@ export { GrowthPanel, type GrowthEditor } from './growth-panel';
 export { byId, studioElements, type StudioElements } from './page-elements';
 export { ViewOptions, DEFAULT_VIEW_OPTIONS, type SharedViewOptions, type ViewOption, type ViewOptionValues, type ViewOptionsListener } from './view-options';
 export { ViewTools, sidesChoices, type ViewToolElements } from './view-tools';
+export { ViewFollowing, growthKey, isLastStep, type PlayFraming, type ViewFollowingElements } from './view-following';
 export { DerivationControls, type DerivationElements, type SharedDerivation } from './derivation-controls';
 export { TextOpening, type OpenedText, type TextOpeningParts } from './text-opening';
 export { openLink, openPastedLinks, startingText, type PastedLinkParts, type StartingText } from './link-opening';

@@ -35,6 +35,10 @@ export function studioElements() {
       byProduction: byId('by-production', HTMLInputElement),
     },
     staleBadge: byId('stale-badge', HTMLElement),
+    following: {
+      refit: byId('refit', HTMLButtonElement),
+      playFraming: [...document.querySelectorAll<HTMLInputElement>('input[name=play-framing]')],
+    },
     sliders: byId('sliders', HTMLElement),
     constantsCount: byId('constants-count', HTMLElement),
     constantsEmpty: byId('constants-empty', HTMLElement),

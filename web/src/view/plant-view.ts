@@ -24,7 +24,7 @@ import {
   type Camera,
 } from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
-import type { MeshBuffers } from '../core';
+import type { Bounds, MeshBuffers } from '../core';
 import { flatPose, framePose } from './framing';
 import { scenePalette } from './palette';
 import { plantGeometry, pointsBox } from './plant-geometry';
@@ -58,10 +58,12 @@ interface CameraRig<C extends PerspectiveCamera | OrthographicCamera> {
 }
 
 /**
- * Shows one plant at a time in a container element. Each camera is framed on the first plant it
- * shows, after {@link PlantView.frameNextPlant}, and on {@link PlantView.frame}; otherwise it
- * stays where the user put it, across edits. Every new plant replaces (and disposes) the previous
- * geometry. The canvas keeps its drawing buffer so tests can read it.
+ * Shows one plant at a time in a container element. The view follows the plant: each new plant is
+ * framed, unless the user has moved the camera since the last fit (then {@link onRefitHint}'s
+ * listeners hear that the plant may have left the frame) or the frame is held
+ * ({@link holdFrame}: while branches are edited, while Play shows the growth in one frame).
+ * {@link frame} fits the plant on screen and follows again. Every new plant replaces (and
+ * disposes) the previous geometry. The canvas keeps its drawing buffer so tests can read it.
  *
  * The container gets `data-projection` (`perspective` | `orthographic`) for styling and tests.
  */
@@ -110,8 +112,14 @@ export class PlantView {
   private mode: ProjectionMode = 'auto';
   /** The plant on screen lies in the plane z = 0. */
   private flat = false;
-  /** Frame the next plant shown (a new grammar was opened). */
+  /** Frame the next plant shown, even if the camera was moved (a new grammar was opened). */
   private frameNext = false;
+  /** The user orbited, panned or zoomed since the last fit: new plants keep the camera. */
+  private moved = false;
+  /** Who holds the frame now (e.g. `editing`, `play`): while anyone does, new plants keep it. */
+  private readonly holders = new Set<string>();
+  private refitHinted = false;
+  private readonly refitListeners = new Set<(shown: boolean) => void>();
   private renderQueued = false;
   private readonly darkScheme = window.matchMedia(DARK_SCHEME);
   private readonly resizeObserver: ResizeObserver;
@@ -144,6 +152,8 @@ export class PlantView {
     const controls = new OrbitControls(camera, this.renderer.domElement);
     controls.enabled = false;
     controls.addEventListener('change', () => this.requestRender());
+    // 'start' is the user's gesture beginning (never a change made in code).
+    controls.addEventListener('start', () => (this.moved = true));
     return { camera, controls, framed: false };
   }
 
@@ -165,8 +175,8 @@ export class PlantView {
 
   /**
    * Replaces the plant; `flat` says it lies in the plane z = 0 (in `auto` mode it is then shown
-   * face-on in 2D). A camera is framed on its first plant (and after {@link frameNextPlant});
-   * later plants keep the camera where it is.
+   * face-on in 2D). The plant is framed (see the class comment) unless the user moved the camera
+   * or the frame is held; a camera's first plant, and the one after {@link frameNextPlant}, always.
    * `gpu`, when given, holds the normals and colours packed smaller for the GPU (from
    * {@link packForGpu}, done in the worker): a big plant reaches the GPU in less time.
    */
@@ -194,8 +204,45 @@ export class PlantView {
     }
     this.flat = flat;
     this.useProjection(this.wantedProjection(), hasGeometry);
-    if (hasGeometry && !this.active.framed) this.frame();
+    if (hasGeometry) this.follow();
     this.requestRender();
+  }
+
+  /** Frames the new plant on screen, or keeps the camera (and hints at a refit if the user moved it). */
+  private follow(): void {
+    if (!this.active.framed) this.frame();
+    else if (this.holders.size > 0) return;
+    else if (!this.moved) this.frame();
+    else this.hintRefit(true);
+  }
+
+  /**
+   * Holds the frame for `holder` (`on`) or lets it go: while anyone holds it, new plants keep the
+   * camera where it is and no refit is hinted.
+   */
+  holdFrame(holder: string, on: boolean): void {
+    if (on) this.holders.add(holder);
+    else this.holders.delete(holder);
+  }
+
+  /** Follows the plant again from the next one, as if the user had not moved the camera. */
+  followAgain(): void {
+    this.moved = false;
+  }
+
+  /**
+   * Calls `listener` with `true` when a new plant was not framed because the user had moved the
+   * camera (a "Refit" hint is due), and with `false` once the view is framed again.
+   */
+  onRefitHint(listener: (shown: boolean) => void): () => void {
+    this.refitListeners.add(listener);
+    return () => this.refitListeners.delete(listener);
+  }
+
+  private hintRefit(shown: boolean): void {
+    if (shown === this.refitHinted) return;
+    this.refitHinted = shown;
+    for (const listener of this.refitListeners) listener(shown);
   }
 
   /**
@@ -346,6 +393,7 @@ export class PlantView {
     camera.updateProjectionMatrix();
     controls.update();
     this.active.framed = true;
+    this.moved = true; // the link's camera stays, as if the user had put it there
     this.requestRender();
   }
 
@@ -385,9 +433,13 @@ export class PlantView {
     this.requestRender();
   }
 
-  /** Points the camera at the whole plant and fits the ground grid under (or behind) it. */
-  frame(): void {
-    const box = this.visibleBox();
+  /**
+   * Points the camera at the whole plant, or at `bounds` (e.g. the last step's plant, so Play
+   * shows the growth in one frame), fits the ground grid under (or behind) it, and follows the
+   * plant again.
+   */
+  frame(bounds?: Bounds): void {
+    const box = bounds ? new Box3(new Vector3(...bounds[0]), new Vector3(...bounds[1])) : this.visibleBox();
     if (this.active === this.orthographic) {
       const { camera, controls } = this.orthographic;
       const pose = flatPose(box, this.aspect());
@@ -412,6 +464,8 @@ export class PlantView {
       controls.update();
     }
     if (!box.isEmpty()) this.active.framed = true;
+    this.moved = false;
+    this.hintRefit(false);
     this.placeGrid(box);
     this.requestRender();
   }
