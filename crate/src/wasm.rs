@@ -411,6 +411,14 @@ impl PlantBuild {
             .map_or(0, |m| m.settings.iterations)
     }
 
+    /// The seed the derivation used: the `seed` option, or the grammar's `#seed` (0 when the
+    /// grammar could not be resolved).
+    #[wasm_bindgen(getter)]
+    pub fn seed(&self) -> f64 {
+        let grammar = self.build.model.as_ref().map_or(0, |m| m.settings.seed);
+        self.build.seed.unwrap_or(grammar) as f64
+    }
+
     /// Modules in the derived string.
     #[wasm_bindgen(getter, js_name = moduleCount)]
     pub fn module_count(&self) -> usize {

@@ -7,6 +7,7 @@ import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { chromium, type Browser, type Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
 import { colourShare, decodePng, type Picture } from './pictures';
+import { findPixel as findPagePixel, HIGHLIGHT_PIXELS } from './studio-page';
 
 const RESULTS = new URL('../../test-results/', import.meta.url);
 const SIGNAL = readFileSync(new URL('../../public/examples/abop-sec-1.8-signal.lsys', import.meta.url), 'utf8');
@@ -54,31 +55,8 @@ async function canvas(name: string): Promise<{ picture: Picture; png: Buffer }> 
   return { picture: decodePng(png), png };
 }
 
-/** Pixels of a highlight colour (sRGB of view/highlight.ts's HIGHLIGHT, shaded by the lights). */
-const magenta = (r: number, g: number, b: number) => r > 150 && b > 110 && g < 0.6 * r && g < 0.7 * b;
-const blue = (r: number, g: number, b: number) => b > 150 && r < 0.55 * b && g < 0.9 * b;
-const yellow = (r: number, g: number, b: number) => r > 150 && g > 130 && b < 0.45 * g;
-
-/**
- * The first pixel (in page coordinates, scanning the canvas) that passes `test` with all its eight
- * neighbours: inside the shape, not on an antialiased edge that the pick's ray might miss.
- */
-async function findPixel(test: (r: number, g: number, b: number) => boolean): Promise<{ x: number; y: number } | null> {
-  const { picture } = await canvas('context-find.png');
-  const box = (await page.locator('[data-testid=viewport] canvas').boundingBox())!;
-  const scale = picture.width / box.width;
-  const passes = (x: number, y: number) => {
-    const i = 4 * (y * picture.width + x);
-    return test(picture.data[i], picture.data[i + 1], picture.data[i + 2]);
-  };
-  for (let y = 1; y < picture.height - 1; y += 1)
-    for (let x = 1; x < picture.width - 1; x += 1) {
-      let inside = true;
-      for (let dy = -1; dy <= 1 && inside; dy++) for (let dx = -1; dx <= 1 && inside; dx++) inside = passes(x + dx, y + dy);
-      if (inside) return { x: box.x + x / scale, y: box.y + y / scale };
-    }
-  return null;
-}
+const { produced: magenta, left: blue, selected: yellow } = HIGHLIGHT_PIXELS;
+const findPixel = (test: (r: number, g: number, b: number) => boolean) => findPagePixel(page, test);
 
 beforeAll(async () => {
   mkdirSync(RESULTS, { recursive: true });
@@ -134,7 +112,7 @@ describe('context sensitivity', () => {
     await cursorOn('axiom');
     await page.mouse.click(spot.x, spot.y);
     const summary = page.getByTestId('explain-summary');
-    await expect.poll(() => summary.textContent()).toMatch(/^Module 4 was written by production 1/);
+    await expect.poll(() => summary.textContent()).toMatch(/^This b \(module 4 of the derived string\) was written by rule 1 \(line \d+: b < a -> b\) from a \(module 4 of the step before\): left context matched at 3\./);
     await expect.poll(() => page.locator('.cm-picked-production').textContent()).toBe('b < a -> b');
     const panel = page.getByTestId('string-panel');
     expect(await panel.locator('.m-selected').getAttribute('data-i')).toBe('4');
@@ -142,6 +120,14 @@ describe('context sensitivity', () => {
     const picked = await canvas('context-signal-picked.png');
     expect(colourShare(picked.picture, yellow), 'the picked segment').toBeGreaterThan(0.03);
     expect(colourShare(picked.picture, blue), 'its context').toBeGreaterThan(0.03);
+    // With a module picked, the cursor on another production says why it did not fire there.
+    await cursorOn('b -> a');
+    await expect.poll(() => summary.textContent()).toMatch(/^rule 2 \(line \d+: b -> a\) fired 1 time.* cannot rewrite a \(module 4 of the string before the last step\): it is not the production's predecessor\.$/);
+    expect(await panel.locator('.m-selected').getAttribute('data-i'), 'the pick stays').toBe('4');
+    await page.getByTestId('string-panel').locator('.m[data-i="6"]').click();
+    await cursorOn('b < a');
+    await expect.poll(() => summary.textContent()).toMatch(/at a \(module 6 of the string before the last step\): left context b expected, found a at 5 — so it did not fire there\.$/);
+    await cursorOn('axiom');
     // A click on the background clears the pick.
     const box = (await page.locator('[data-testid=viewport] canvas').boundingBox())!;
     await page.mouse.click(box.x + 5, box.y + 5);

@@ -8,6 +8,7 @@ import { chromium, type Browser, type Download, type Page } from 'playwright-cor
 import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
 import { exportWithCli, galleryDir, removeScratch, scratchDir } from '../export/tools';
 import { decodePng, foregroundShare } from './pictures';
+import { openTubesMenu } from './studio-page';
 
 const RESULTS = new URL('../../test-results/', import.meta.url);
 /** A grammar with several colour indices and polygon leaves, at fewer iterations than its own. */
@@ -81,9 +82,11 @@ beforeAll(async () => {
   await page.getByTestId('iterations').fill(ITERATIONS);
   expect(await nextBuild(before)).toBe('ok');
   before = await generation();
+  await openTubesMenu(page);
   await page.getByTestId('sides').selectOption(SIDES);
   expect(await nextBuild(before)).toBe('ok');
   before = await generation();
+  await openTubesMenu(page);
   await page.getByTestId('smooth-all').check();
   expect(await nextBuild(before)).toBe('ok');
   await openMenu();
@@ -182,6 +185,7 @@ describe('the Download menu', () => {
     await page.keyboard.press('Control+A');
     await page.keyboard.insertText(source);
     await page.getByTestId('iterations').fill('10');
+    await openTubesMenu(page);
     await page.getByTestId('smooth-all').uncheck();
     expect(await nextBuild(before)).toBe('ok');
     before = await generation();

@@ -8,7 +8,7 @@ import { deflateRawSync } from 'node:zlib';
 import { chromium, type Browser, type BrowserContext, type Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
 import { decodeState, MAX_FRAGMENT, type SharedState } from '../../web/src/share/codec';
-import { editorText, example, generation, nextBuild, openFromGallery, openStudio, savePage, twoFrames } from './studio-page';
+import { editorText, example, generation, nextBuild, openFromGallery, openStudio, openTubesMenu, savePage, twoFrames } from './studio-page';
 
 let browser: Browser;
 
@@ -63,6 +63,7 @@ describe('share links', () => {
     await page.getByTestId('seed').fill('77');
     await nextBuild(page, before);
     before = await generation(page);
+    await openTubesMenu(page);
     await page.getByTestId('sides').selectOption('8');
     await nextBuild(page, before);
     await page.getByTestId('grid').click();

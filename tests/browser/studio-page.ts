@@ -79,6 +79,34 @@ export async function canvasPicture(page: Page, name: string): Promise<Picture> 
   return decodePng(png);
 }
 
+/** Pixels of the highlight colours (sRGB of view/highlight.ts's HIGHLIGHT, shaded by the lights). */
+export const HIGHLIGHT_PIXELS = {
+  produced: (r: number, g: number, b: number) => r > 150 && b > 110 && g < 0.6 * r && g < 0.7 * b,
+  left: (r: number, g: number, b: number) => b > 150 && r < 0.55 * b && g < 0.9 * b,
+  selected: (r: number, g: number, b: number) => r > 150 && g > 130 && b < 0.45 * g,
+};
+
+/**
+ * The first pixel of the 3D view (in page coordinates, scanning the canvas) that passes `test`
+ * with all its eight neighbours: inside the shape, not on an antialiased edge a pick's ray might miss.
+ */
+export async function findPixel(page: Page, test: (r: number, g: number, b: number) => boolean): Promise<{ x: number; y: number } | null> {
+  const picture = await canvasPicture(page, 'find-pixel.png');
+  const box = (await page.locator('[data-testid=viewport] canvas').boundingBox())!;
+  const scale = picture.width / box.width;
+  const passes = (x: number, y: number) => {
+    const i = 4 * (y * picture.width + x);
+    return test(picture.data[i], picture.data[i + 1], picture.data[i + 2]);
+  };
+  for (let y = 1; y < picture.height - 1; y += 1)
+    for (let x = 1; x < picture.width - 1; x += 1) {
+      let inside = true;
+      for (let dy = -1; dy <= 1 && inside; dy++) for (let dx = -1; dx <= 1 && inside; dx++) inside = passes(x + dx, y + dy);
+      if (inside) return { x: box.x + x / scale, y: box.y + y / scale };
+    }
+  return null;
+}
+
 /** Saves a screenshot of the whole page to test-results/. */
 export async function savePage(page: Page, name: string): Promise<void> {
   writeFileSync(new URL(name, RESULTS), await page.screenshot());
@@ -87,6 +115,12 @@ export async function savePage(page: Page, name: string): Promise<void> {
 /** Stats of the plant on screen. */
 export function shownStats(page: Page): Promise<{ segments: number; iterations: number; vertices: number } | null> {
   return page.evaluate(() => window.__meristem?.lastStats ?? null);
+}
+
+/** Opens the view toolbar's Tubes menu (sides, smooth axes), if it is not open. */
+export async function openTubesMenu(page: Page): Promise<void> {
+  const menu = page.getByTestId('tubes-menu');
+  if ((await menu.getAttribute('open')) === null) await menu.locator('summary').click();
 }
 
 /** Opens `file` through the gallery dialog (mouse), answering the confirm dialog with `answer` if it asks. */

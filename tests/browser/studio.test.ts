@@ -4,6 +4,7 @@ import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { chromium, type Browser, type Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
 import { changedShare, decodePng, distinctColours, foregroundExtent, foregroundOverlap, foregroundShare, type Picture } from './pictures';
+import { openTubesMenu } from './studio-page';
 
 const RESULTS = new URL('../../test-results/', import.meta.url);
 const EXAMPLE = readFileSync(new URL('../../public/examples/abop-1.24d.lsys', import.meta.url), 'utf8');
@@ -220,6 +221,7 @@ describe('the studio', () => {
       (await page.evaluate(() => window.__meristem?.lastStats ?? null)) as { vertices: number; segments: number };
     const six = await vertices();
     let before = await generation();
+    await openTubesMenu(page);
     await page.getByTestId('sides').selectOption('12');
     expect(await nextBuild(before)).toBe('ok');
     const twelve = await vertices();
@@ -227,6 +229,7 @@ describe('the studio', () => {
     expect(twelve.vertices, 'twice the sides, about twice the vertices').toBeGreaterThan(1.8 * six.vertices);
 
     before = await generation();
+    await openTubesMenu(page);
     await page.getByTestId('smooth-all').check();
     expect(await nextBuild(before)).toBe('ok');
     const smooth = await vertices();
@@ -235,6 +238,7 @@ describe('the studio', () => {
     await canvasPicture('studio-smooth-all-canvas.png');
 
     before = await generation();
+    await openTubesMenu(page);
     await page.getByTestId('smooth-all').uncheck();
     await page.getByTestId('sides').selectOption('6');
     await nextBuild(before);

@@ -8,7 +8,7 @@ import { PlantView } from './view';
 import {
   Autosave, BranchEditSession, BuildClient, ContextView, DerivationControls, GalleryDialog, GalleryThumbnails, GrowthPanel,
   LibraryDialog, LinkState, LivePreview, Notice, ShareDialog, SliderPanel, TextOpening, ViewOptions, ViewTools,
-  ViewFollowing, attachSplitter, browserStorage, connectTestHook, createBuildWorker, emptyTestHook, fetchExample, installDownloads, installDrop,
+  DerivationView, StagesMode, ViewFollowing, installInspectorTabs, attachSplitter, figureName, browserStorage, connectTestHook, createBuildWorker, emptyTestHook, fetchExample, installDownloads, installDrop,
   installFileMenu, installShareButton, installShortcuts, openPastedLinks, renderShortcutHelp, reportCoreCrashes, showStatus, sidesChoices,
   startingText, studioElements, type ShortcutAction, type StudioElements, type StudioTestHook,
 } from './studio';
@@ -34,6 +34,14 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   let editor: GrammarEditor | undefined;
   const currentText = () => editor?.text() ?? start.text;
   const contexts = new ContextView(els.contexts, view, () => editor, viewOptions);
+  // The derivation, step by step: its hover lights up the plant through the context view.
+  const derivationView = new DerivationView(els.derivationPanel, {
+    preview: (modules, production) => contexts.showPreview(modules, production),
+    pick: (module) => contexts.pickModule(module),
+    describeProduction: (index) => contexts.describeProduction(index),
+    conditionOf: (index) => contexts.conditionOf(index),
+  });
+  installInspectorTabs(els.inspectorTabs, (tab) => derivationView.setShown(tab === 'tab-derivation'));
   const preview = new LivePreview({
     client: new BuildClient(createBuildWorker),
     view,
@@ -44,6 +52,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     diagnosticsChanged: () => editor?.refreshDiagnostics(),
     adopt: (result) => {
       contexts.setBuild(result.build, result.inspector, result.source);
+      derivationView.setBuild(result.build, result.inspector);
       if (editor) contexts.cursorAt(editor.view.state.selection.main.head);
     },
     crashed: reportCoreCrashes(notice),
@@ -82,8 +91,18 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   // The view follows the plant; Play shows the growth in one frame (or frames every step).
   const following = new ViewFollowing(els.following, view, () => preview.lastGood);
   following.follow(derivation.playback);
+  // Stages: the iterations side by side, grown in a worker of their own.
+  const stages = new StagesMode(els.stages, {
+    shown: () => preview.lastGood,
+    createClient: () => new BuildClient(createBuildWorker),
+    lighting: () => viewOptions.values.lighting,
+    fileName: () => figureName(opening.currentFile),
+    toggled: (on) => viewTools.pauseForStages(on),
+  });
+  viewOptions.onChange((values, changed) => changed.has('lighting') && stages.setLighting(values.lighting));
   preview.onDelivered((result) => {
     following.delivered(result);
+    stages.delivered(result);
     derivation.buildShown(result.build.grammarIterations);
     viewTools.showProjection();
   });
@@ -149,6 +168,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     gallery: openGallery,
     frame: () => view.frame(),
     projection: () => viewTools.toggleProjection(),
+    stages: () => (stages.open ? stages.close() : stages.show()),
   };
   installShortcuts(window, (action) => actions[action]());
   renderShortcutHelp(els.shortcutList);

@@ -162,6 +162,7 @@ export function plainBuild(source: string, result: WasmPlantBuild): PlantBuild {
     timings: withMeshTime((JSON.parse(result.timings()) as StageTimings | null) ?? NO_TIMINGS, meshMillis.get(result)),
     flat: result.flat,
     grammarIterations: result.grammarIterations,
+    seed: result.seed,
   }));
 }
 

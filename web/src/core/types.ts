@@ -108,6 +108,8 @@ export interface PlantBuild {
   flat: boolean;
   /** The grammar's own `#iterations` (0 when it has none), whatever `BuildOptions.iterations` asked. */
   grammarIterations: number;
+  /** The seed the derivation used: `BuildOptions.seed`, or the grammar's `#seed`. */
+  seed: number;
   /** Modules in the derived string. */
   moduleCount: number;
   /** The productions of the productions section, in source order (indices as in `origins`). */

@@ -4,13 +4,13 @@
 // and the production that made it is marked in the editor, with the contexts of that rewriting.
 // "Colour by production" paints every module by the production that wrote it, so stepping the
 // iterations shows which production rewrote what from step k to k + 1.
-import { NOT_REWRITTEN, type Explanation, type PlantBuild, type PlantInspector, type ProductionInfo } from '../core';
+import { NOT_REWRITTEN, type Explanation, type MatchReport, type PlantBuild, type PlantInspector } from '../core';
 import type { GrammarEditor } from '../editor';
 import { cssColour, HIGHLIGHT, PRODUCTION_COLOURS, type Rgb } from '../view/highlight';
 import type { PlantView } from '../view';
 import { StringPanel, type ModuleRole } from './string-panel';
 import type { ViewOptions } from './view-options';
-import { plural } from './status';
+import { conditionText, countsInWords, describeProduction, madeInWords, reportInWords } from './explain-words';
 
 /** The page elements of the view. */
 export interface ContextViewElements {
@@ -20,19 +20,18 @@ export interface ContextViewElements {
   summary: HTMLElement;
   /** The legend of "colour by production". */
   legend: HTMLElement;
+  /** The legend of the highlight colours (written, left and right context, picked), shown with a highlight. */
+  highlightLegend: HTMLElement;
 }
-
-type Focus = { kind: 'production'; index: number } | { kind: 'module'; index: number } | null;
 
 const ROLE_CODE: Record<ModuleRole, number> = { produced: 1, left: 2, right: 3, selected: 4 };
 const CODE_ROLE: (ModuleRole | null)[] = [null, 'produced', 'left', 'right', 'selected'];
 const ROLE_RGB: (Rgb | null)[] = [null, HIGHLIGHT.produced, HIGHLIGHT.left, HIGHLIGHT.right, HIGHLIGHT.selected];
 
-/** The 1-based line of a UTF-16 offset. */
-function lineOf(source: string, offset: number): number {
-  let line = 1;
-  for (let i = 0; i < offset && i < source.length; i++) if (source.charCodeAt(i) === 10) line++;
-  return line;
+/** What the view explains: the production under the cursor, the module picked, or both. */
+interface Focus {
+  production: number | null;
+  module: number | null;
 }
 
 export class ContextView {
@@ -40,7 +39,9 @@ export class ContextView {
   private build: PlantBuild | undefined;
   private inspector: PlantInspector | undefined;
   private source = '';
-  private focus: Focus = null;
+  private focus: Focus = { production: null, module: null };
+  /** A module lit up from elsewhere (the derivation view's hover), over the focus's highlight. */
+  private preview: { modules: Set<number>; production: number | null } | null = null;
   /** Bumped by every change of focus or build, so late answers are dropped. */
   private ticket = 0;
 
@@ -82,69 +83,108 @@ export class ContextView {
     this.inspector = inspector;
     this.source = source;
     this.panel.show(build.moduleCount, inspector);
-    if (this.focus?.kind === 'module') this.focus = null; // module indices belong to the old string
+    this.focus = { ...this.focus, module: null }; // module indices belong to the old string
+    this.preview = null;
     this.renderLegend();
     this.refresh();
   }
 
-  /** The editor's cursor moved to `pos`: focus the production there (or nothing). */
+  /** The editor's cursor moved to `pos`: focus the production there (or none); a picked module stays. */
   cursorAt(pos: number): void {
     const editor = this.editor();
     if (!this.build || !editor || editor.text() !== this.source) return;
-    const production = this.build.productions.find((p) => p.from <= pos && pos <= p.to);
-    if (production === undefined) {
-      if (this.focus?.kind === 'production') this.setFocus(null);
-      return;
-    }
-    if (this.focus?.kind === 'production' && this.focus.index === production.index) return;
-    this.editor()?.markProduction(null);
-    this.setFocus({ kind: 'production', index: production.index });
+    const production = this.build.productions.find((p) => p.from <= pos && pos <= p.to)?.index ?? null;
+    if (production === this.focus.production) return;
+    editor.markProduction(null);
+    this.setFocus({ ...this.focus, production });
   }
 
   /** A module picked in the 3D view or the panel (null: a click on nothing clears the pick). */
   pickModule(module: number | null): void {
-    this.setFocus(module === null ? null : { kind: 'module', index: module });
+    // A pick speaks for itself: the cursor's production is set aside until the cursor moves again.
+    this.setFocus({ production: null, module });
     if (module !== null) this.panel.scrollToModule(module);
+  }
+
+  /**
+   * Lights up `modules` of the derived string and marks production `production` in the editor
+   * (from the derivation view's hover), or restores the focus's own highlight (`null`).
+   */
+  showPreview(modules: Iterable<number> | null, production: number | null): void {
+    this.preview = modules === null ? null : { modules: new Set(modules), production };
+    const p = production === null ? undefined : this.build?.productions[production];
+    // The preview's production is marked while it lasts; the focus's own mark comes back after.
+    this.editor()?.markProduction(modules !== null && p ? { from: p.from, to: p.to } : null);
+    this.refresh();
+  }
+
+  /** A production as the user knows it (`rule 2 (line 8: F -> FF)`). */
+  describeProduction(index: number): string {
+    const p = this.build?.productions[index];
+    return p ? describeProduction(this.source, p) : `rule ${index + 1}`;
+  }
+
+  /** A production's condition as written, or null. */
+  conditionOf(index: number): string | null {
+    const p = this.build?.productions[index];
+    return p ? conditionText(this.source, p) : null;
   }
 
   private setFocus(focus: Focus): void {
     this.focus = focus;
-    if (!focus) this.editor()?.markProduction(null);
+    if (focus.module === null) this.editor()?.markProduction(null);
     this.refresh();
   }
 
-  /** Recomputes the highlight for the current build, focus and mode. */
+  /** Recomputes the highlight and the words for the current build, focus and mode. */
   private refresh(): void {
     const ticket = ++this.ticket;
     const build = this.build;
+    const inspector = this.inspector;
     const focus = this.focus;
     if (!build) return;
-    const explain = !this.inspector || !focus
-      ? Promise.resolve(null)
-      : focus.kind === 'production'
-        ? this.inspector.explain(focus.index)
-        : this.inspector.explainModule(focus.index);
-    void explain.then((explanation) => {
+    void this.ask(inspector, focus).then(({ explanation, report, text }) => {
       if (ticket !== this.ticket) return;
       this.apply(build, focus, explanation);
+      this.describe(build, focus, explanation, report, text);
     });
+  }
+
+  /**
+   * The core's answers for `focus`: the production's explanation (the cursor's, or the one that
+   * wrote the picked module), and with a picked module its text and the match report of that
+   * production at the module it came from.
+   */
+  private async ask(inspector: PlantInspector | undefined, { production, module }: Focus) {
+    if (!inspector || (production === null && module === null)) return { explanation: null, report: null, text: '' };
+    const [explanation, text] = await Promise.all([
+      production !== null ? inspector.explain(production) : inspector.explainModule(module!),
+      module !== null ? inspector.moduleTexts(module, 1) : Promise.resolve(['']),
+    ]);
+    const asked = production ?? explanation?.production;
+    const report = module !== null && asked !== undefined ? await inspector.matchReport(asked, module) : null;
+    return { explanation, report, text: text[0] ?? '' };
   }
 
   private apply(build: PlantBuild, focus: Focus, explanation: Explanation | null): void {
     const roles = new Uint8Array(build.moduleCount);
-    const mark = (list: Uint32Array, role: ModuleRole) => list.forEach((i) => (roles[i] = ROLE_CODE[role]));
-    if (explanation) {
+    const mark = (list: Iterable<number>, role: ModuleRole) => {
+      for (const i of list) if (i < roles.length) roles[i] = ROLE_CODE[role];
+    };
+    const preview = this.preview;
+    if (preview) mark(preview.modules, 'produced');
+    else if (explanation) {
       mark(explanation.produced, 'produced');
       mark(explanation.leftContext, 'left');
       mark(explanation.rightContext, 'right');
     }
-    if (focus?.kind === 'module' && focus.index < roles.length) roles[focus.index] = ROLE_CODE.selected;
+    if (!preview && focus.module !== null && focus.module < roles.length) roles[focus.module] = ROLE_CODE.selected;
     const byProduction = this.viewOptions.values.byProduction;
     const productionRgb = (module: number): Rgb | null => {
       const origin = build.origins[module];
       return origin === undefined || origin === NOT_REWRITTEN ? null : PRODUCTION_COLOURS[origin % PRODUCTION_COLOURS.length];
     };
-    const highlighted = explanation !== null || focus?.kind === 'module';
+    const highlighted = preview !== null || explanation !== null || focus.module !== null;
     if (highlighted || byProduction) {
       this.view.colourModules((m) => ROLE_RGB[roles[m]] ?? (byProduction ? productionRgb(m) : null));
     } else {
@@ -154,47 +194,43 @@ export class ContextView {
       (m) => CODE_ROLE[roles[m]] ?? null,
       byProduction ? (m) => { const rgb = productionRgb(m); return rgb ? cssColour(rgb) : null; } : null,
     );
-    this.describe(build, focus, explanation);
+    this.els.highlightLegend.hidden = !highlighted;
   }
 
-  private describe(build: PlantBuild, focus: Focus, explanation: Explanation | null): void {
+  /** The summary: what the focus is, in words, with the counts as data attributes for tests. */
+  private describe(build: PlantBuild, focus: Focus, explanation: Explanation | null, report: MatchReport | null, moduleText: string): void {
     const summary = this.els.summary;
-    const production = explanation ? build.productions[explanation.production] : undefined;
     delete summary.dataset.fired;
     delete summary.dataset.contextMatched;
     delete summary.dataset.conditionFailed;
-    if (!focus) {
+    if (focus.production === null && focus.module === null) {
       summary.textContent =
         build.stats.iterations === 0
           ? 'Step 0: the axiom. Put the cursor on a production after a step to see where it fired.'
-          : 'Put the cursor on a production to see where it fired in the last step, or click the plant.';
+          : 'Put the cursor on a production to see where it fired in the last step, or click the plant to ask how a part of it was made.';
+      return;
+    }
+    const production = explanation ? build.productions[explanation.production] : undefined;
+    if (explanation && production) {
+      summary.dataset.fired = String(explanation.fired);
+      summary.dataset.contextMatched = String(explanation.contextMatched);
+      summary.dataset.conditionFailed = String(explanation.conditionFailed);
+    }
+    const picked = `This ${moduleText} (module ${focus.module} of the derived string)`;
+    if (focus.production !== null) {
+      // The cursor's production; with a picked module, why it did or did not rewrite that one.
+      const counts = production && explanation ? countsInWords(this.source, production, explanation) : `${this.describeProduction(focus.production)} has nothing to show before the first step.`;
+      const p = build.productions[focus.production];
+      const why = report && p ? ' ' + reportInWords(this.source, p, report, report.rewrittenBy === null ? undefined : build.productions[report.rewrittenBy]) : '';
+      summary.textContent = counts + why;
       return;
     }
     if (!explanation || !production) {
-      summary.textContent =
-        focus.kind === 'module'
-          ? `Module ${focus.index} was copied: no production rewrote it in the last step.`
-          : 'This production has nothing to show before the first step.';
+      summary.textContent = `${picked} was copied: no production rewrote it in the last step.`;
       return;
     }
-    const name = this.productionName(production);
-    // A context-free production has no context to match: say what its count means there.
-    const matched = production.context ? 'contexts matched' : 'predecessor matched';
-    const counts = `fired ${plural(explanation.fired, 'time')} · ${matched} ${explanation.contextMatched} · condition failed ${explanation.conditionFailed}`;
-    summary.dataset.fired = String(explanation.fired);
-    summary.dataset.contextMatched = String(explanation.contextMatched);
-    summary.dataset.conditionFailed = String(explanation.conditionFailed);
-    if (focus.kind === 'module') {
-      this.editor()?.markProduction({ from: production.from, to: production.to });
-      summary.textContent = `Module ${focus.index} was written by ${name} — that production ${counts}`;
-    } else {
-      summary.textContent = `${name}: ${counts}`;
-    }
-  }
-
-  private productionName(p: ProductionInfo): string {
-    const text = this.source.slice(p.from, p.to).trim();
-    return `${p.label ?? `production ${p.index + 1}`} (line ${lineOf(this.source, p.from)}: ${text})`;
+    this.editor()?.markProduction({ from: production.from, to: production.to });
+    summary.textContent = madeInWords(this.source, production, explanation, report, focus.module!, moduleText);
   }
 
   private renderLegend(): void {

@@ -3,7 +3,7 @@
 // digit opens browser menus or tabs on some systems), and work wherever the focus is.
 
 /** What a shortcut does. */
-export type ShortcutAction = 'stepBack' | 'stepForward' | 'playPause' | 'reroll' | 'gallery' | 'frame' | 'projection';
+export type ShortcutAction = 'stepBack' | 'stepForward' | 'playPause' | 'reroll' | 'gallery' | 'frame' | 'projection' | 'stages';
 
 /** One shortcut: the key (`KeyboardEvent.code`, with Alt), how it is written, what it does. */
 export interface Shortcut {
@@ -21,6 +21,7 @@ export const SHORTCUTS: readonly Shortcut[] = [
   { code: 'KeyG', keys: 'Alt+G', action: 'gallery', description: 'Open the gallery' },
   { code: 'KeyK', keys: 'Alt+K', action: 'frame', description: 'Frame the plant' },
   { code: 'KeyO', keys: 'Alt+O', action: 'projection', description: 'Switch between the 2D and the 3D view' },
+  { code: 'KeyA', keys: 'Alt+A', action: 'stages', description: 'Stages: the iterations side by side' },
 ];
 
 /** The action of a key event, if it is one of the shortcuts (Alt alone as modifier). */

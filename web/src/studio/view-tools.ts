@@ -2,6 +2,7 @@
 // of the view options. They change the ViewOptions and render from it: a toggle's `aria-pressed`,
 // a field's value are its output, never read back as state. The 3D view follows the options here.
 import type { PlantView } from '../view';
+import { closeLikeAMenu } from './menus';
 import type { ViewOption, ViewOptions, ViewOptionValues } from './view-options';
 
 /** The controls (see index.html). */
@@ -15,6 +16,10 @@ export interface ViewToolElements {
   sides: HTMLSelectElement;
   smoothAll: HTMLInputElement;
   byProduction: HTMLInputElement;
+  /** The toolbar's menus (framing, tubes): they close like menus. */
+  menus: HTMLDetailsElement[];
+  /** The tools of the 3D view of one plant (framing, 2D, grid, textures, branch editing): paused during Stages. */
+  plantOnly: HTMLElement[];
 }
 
 /** The toggle buttons, by the option each one switches. */
@@ -34,6 +39,7 @@ export class ViewTools {
     private readonly view: PlantView,
   ) {
     els.frame.addEventListener('click', () => view.frame());
+    els.menus.forEach(closeLikeAMenu);
     els.projection.addEventListener('click', () => this.toggleProjection());
     for (const option of TOGGLES) els[option].addEventListener('click', () => options.set({ [option]: !options.values[option] }));
     els.sides.addEventListener('change', () => options.set({ sides: Number(els.sides.value) }));
@@ -46,6 +52,14 @@ export class ViewTools {
   /** Switches between 2D and 3D: the projection other than the one on screen, fixed. */
   toggleProjection(): void {
     this.options.set({ projection: this.view.projection === 'orthographic' ? 'perspective' : 'orthographic' });
+  }
+
+  /** Stages covers the 3D view (`on`) or not: the tools that act on it pause meanwhile. */
+  pauseForStages(on: boolean): void {
+    for (const tool of this.els.plantOnly) {
+      tool.inert = on;
+      tool.classList.toggle('paused', on);
+    }
   }
 
   /** Shows the projection in use on the 2D toggle (call after each plant: `auto` follows it). */

@@ -61,6 +61,8 @@ interface Entry {
   sentAt?: number;
   /** Takes the sketch of a big plant, before its build. */
   onSketch?: (sketch: PlantSketch) => void;
+  /** Plants of this many segments or more are sketched (the worker's default when absent). */
+  sketchFrom?: number;
 }
 
 /** Starts the real build worker (vite bundles worker.ts as a module worker next to the page). */
@@ -99,11 +101,12 @@ export class BuildClient {
 
   /**
    * Builds `source` with `options`; settles with the build, or says why there is none. A big
-   * plant's sketch goes to `onSketch` first, unless the request is superseded by then.
+   * plant's sketch (of `sketchFrom` segments or more, when given) goes to `onSketch` first, unless
+   * the request is superseded by then.
    */
-  request(source: string, options: BuildOptions, onSketch?: (sketch: PlantSketch) => void): Promise<BuildOutcome> {
+  request(source: string, options: BuildOptions, onSketch?: (sketch: PlantSketch) => void, sketchFrom?: number): Promise<BuildOutcome> {
     return new Promise((resolve) => {
-      const entry: Entry = { id: this.nextId++, source, options, requestedAt: this.now(), resolve, settled: false, onSketch };
+      const entry: Entry = { id: this.nextId++, source, options, requestedAt: this.now(), resolve, settled: false, onSketch, sketchFrom };
       if (this.waiting) this.settle(this.waiting, { kind: 'superseded' });
       this.waiting = entry;
       if (this.running) {
@@ -188,7 +191,7 @@ export class BuildClient {
     this.waiting = undefined;
     entry.sentAt = this.now();
     this.running = entry;
-    this.ensureWorker().postMessage({ kind: 'build', id: entry.id, source: entry.source, options: entry.options });
+    this.ensureWorker().postMessage({ kind: 'build', id: entry.id, source: entry.source, options: entry.options, sketchFrom: entry.sketchFrom });
   }
 
   private answer(response: BuildResponse): void {

@@ -8,8 +8,11 @@ export type InspectQuestion = Exclude<keyof PlantInspector, 'free'>;
 
 /** Page → worker. */
 export type WorkerRequest =
-  /** Build `source` with `options`; `id` ties the answer to the request and names the kept build. */
-  | { kind: 'build'; id: number; source: string; options: BuildOptions }
+  /**
+   * Build `source` with `options`; `id` ties the answer to the request and names the kept build.
+   * A plant of `sketchFrom` segments or more (default {@link SKETCH_MIN_SEGMENTS}) is sent as a sketch first.
+   */
+  | { kind: 'build'; id: number; source: string; options: BuildOptions; sketchFrom?: number }
   /** Ask kept build `build` a question; `id` ties the answer to it. */
   | { kind: 'inspect'; id: number; build: number; question: InspectQuestion; args: number[] }
   /** Release kept build `build`. */
@@ -26,7 +29,7 @@ export const SKETCH_MIN_SEGMENTS = 20_000;
 
 /** Worker → page. */
 export type WorkerResponse =
-  /** Build `id`'s plant as lines, before its tubes (only for big plants; the build follows). */
+  /** Build `id`'s plant as lines, before its tubes (only for big plants, see `sketchFrom`; the build follows). */
   | { kind: 'sketch'; id: number; sketch: PlantSketch }
   | {
       kind: 'built';

@@ -77,12 +77,12 @@ addEventListener('message', async (event: MessageEvent<WorkerRequest>) => {
     reply({ kind: 'inspected', id: request.id, answer: result }, answerTransferables(result));
     return;
   }
-  const { id, source, options } = request;
+  const { id, source, options, sketchFrom = SKETCH_MIN_SEGMENTS } = request;
   try {
     const start = performance.now();
     // A big plant goes to the page as lines first: on screen while its tubes are meshed.
     const { build, inspector } = inspectPlant(source, options, {
-      minSegments: SKETCH_MIN_SEGMENTS,
+      minSegments: sketchFrom,
       show: (sketch) => reply({ kind: 'sketch', id, sketch }, [sketch.lines.buffer as ArrayBuffer, sketch.lineColors.buffer as ArrayBuffer]),
     });
     keep(id, inspector);

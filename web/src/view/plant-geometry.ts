@@ -43,10 +43,10 @@ function setBounds(geometry: BufferGeometry, points: Float32Array): void {
 }
 
 /**
- * The fallback for models too large to mesh: the core's line ends and their colours, for a
- * `LineSegments` object.
+ * The fallback for models too large to mesh (and a sketch's segments): the core's line ends and
+ * their colours, for a `LineSegments` object.
  */
-export function lineGeometry(mesh: MeshBuffers): BufferGeometry {
+export function lineGeometry(mesh: Pick<MeshBuffers, 'lines' | 'lineColors'>): BufferGeometry {
   const geometry = new BufferGeometry();
   geometry.setAttribute('position', new BufferAttribute(mesh.lines, 3));
   geometry.setAttribute('color', new BufferAttribute(mesh.lineColors, 3));

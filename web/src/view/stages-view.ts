@@ -1,0 +1,267 @@
+// Stages: several plants side by side in one picture (iterations a … b of a grammar, and rows of
+// specimens grown with different seeds), each drawn by an orthographic camera looking the same way,
+// at one scale (or each fitted to its tile), standing on a common baseline, with a caption under each (see
+// stages-layout.ts). Flat plants are seen face-on; 3D plants a little from the side and above,
+// like the studio's first view of them. Drawn on demand into its own canvas; a picture of any size
+// comes out as a PNG with the captions.
+import { Box3, Group, LineBasicMaterial, LineSegments, Mesh, OrthographicCamera, Scene, Vector3, WebGLRenderer, type BufferGeometry, type Object3D } from 'three';
+import type { Bounds, MeshBuffers } from '../core';
+import { scenePalette } from './palette';
+import { lineGeometry, plantGeometry } from './plant-geometry';
+import { addHeadlight, addSkyLight, litPlantMaterial, unlitPlantMaterial } from './scene-setup';
+import { captionHeight, stageTiles, type StageScale, type StageTile, type ViewExtent } from './stages-layout';
+
+const DARK_SCHEME = '(prefers-color-scheme: dark)';
+
+/** One plant of the figure. */
+export interface StagePlant {
+  /** Its mesh; `null` when there is nothing to draw (the caption says why). */
+  mesh: MeshBuffers | null;
+  /**
+   * Its segments as lines, drawn inside the tubes: a plant drawn small keeps its branches a pixel
+   * wide where its tubes would be thinner than a pixel (and vanish).
+   */
+  lines: { lines: Float32Array; lineColors: Float32Array } | null;
+  flat: boolean;
+  bounds: Bounds;
+  /** The caption under it, e.g. `n = 3`. */
+  caption: string;
+}
+
+/** The figure's layout: how many plants across and down (the plants are given row by row), and their scale. */
+export interface StagesGrid {
+  columns: number;
+  rows: number;
+  scale: StageScale;
+}
+
+export class StagesView {
+  private readonly renderer: WebGLRenderer;
+  private readonly scene = new Scene();
+  private readonly camera = new OrthographicCamera(-1, 1, 1, -1, 0.01, 1000);
+  private readonly lit = litPlantMaterial();
+  private readonly unlit = unlitPlantMaterial();
+  private readonly lineMaterial = new LineBasicMaterial({ vertexColors: true });
+  private plants: { object: Object3D | null; extent: ViewExtent | null; caption: string }[] = [];
+  private grid: StagesGrid = { columns: 1, rows: 1, scale: 'one' };
+  private lighting = true;
+  private renderQueued = false;
+  private readonly captions: HTMLElement;
+  private readonly darkScheme = window.matchMedia(DARK_SCHEME);
+  private readonly resizeObserver: ResizeObserver;
+
+  constructor(private readonly container: HTMLElement) {
+    this.renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
+    this.renderer.domElement.setAttribute('aria-hidden', 'true');
+    this.captions = document.createElement('div');
+    this.captions.className = 'stage-captions';
+    container.append(this.renderer.domElement, this.captions);
+    addSkyLight(this.scene);
+    addHeadlight(this.camera);
+    this.scene.add(this.camera);
+    this.darkScheme.addEventListener('change', this.requestRender);
+    this.resizeObserver = new ResizeObserver(() => this.resize());
+    this.resizeObserver.observe(container);
+    this.resize();
+  }
+
+  /** Shows `plants` (row by row) in a `grid`; replaces (and disposes) what was shown. */
+  show(plants: readonly StagePlant[], grid: StagesGrid): void {
+    this.clear();
+    this.grid = grid;
+    const flat = plants.every((p) => p.flat || !p.mesh);
+    this.aimCamera(plants, flat);
+    this.plants = plants.map((plant) => {
+      if (!plant.mesh) return { object: null, extent: null, caption: plant.caption };
+      const geometry = plantGeometry(plant.mesh);
+      const asLines = plant.mesh.indices.length === 0 && plant.mesh.lines.length > 0;
+      const object = new Group();
+      object.add(asLines ? new LineSegments(geometry, this.lineMaterial) : new Mesh(geometry, this.material()));
+      if (!asLines && plant.lines && plant.lines.lines.length > 0) object.add(new LineSegments(lineGeometry(plant.lines), this.lineMaterial));
+      object.visible = false;
+      this.scene.add(object);
+      return { object, extent: this.extent(plant.bounds), caption: plant.caption };
+    });
+    this.showCaptions();
+    this.requestRender();
+  }
+
+  /** Shades the plants (on) or shows the palette's colours as they are (off), like the 3D view. */
+  setLighting(lit: boolean): void {
+    this.lighting = lit;
+    for (const { object } of this.plants) object?.traverse((part) => part instanceof Mesh && (part.material = this.material()));
+    this.requestRender();
+  }
+
+  /**
+   * The figure as a PNG of `width` × `height` pixels, captions included: the same tiles and
+   * background as on screen, laid out for that size.
+   */
+  async picture(width: number, height: number): Promise<Blob> {
+    const pixelRatio = this.renderer.getPixelRatio();
+    const canvas = document.createElement('canvas');
+    canvas.width = width;
+    canvas.height = height;
+    const context = canvas.getContext('2d');
+    if (!context) throw new Error('the browser has no 2D canvas to draw the picture on');
+    try {
+      this.renderer.setPixelRatio(1);
+      this.renderer.setSize(width, height, false);
+      const tiles = this.draw(width, height);
+      context.drawImage(this.renderer.domElement, 0, 0);
+      const size = captionHeight(height, this.grid.rows) * 0.55;
+      context.font = `${Math.round(size)}px system-ui, sans-serif`;
+      context.textAlign = 'center';
+      context.fillStyle = this.darkScheme.matches ? '#e6edf3' : '#1f2328';
+      tiles.forEach((tile, i) => context.fillText(this.plants[i].caption, tile.caption.x, tile.caption.y));
+    } finally {
+      this.renderer.setPixelRatio(pixelRatio);
+      this.resize();
+    }
+    const png = await new Promise<Blob | null>((resolve) => canvas.toBlob(resolve, 'image/png'));
+    if (!png) throw new Error(`the browser could not encode a ${width} × ${height} PNG`);
+    return png;
+  }
+
+  /** The canvas on the page (its pixels are the figure, without the captions, which are HTML). */
+  get canvas(): HTMLCanvasElement {
+    return this.renderer.domElement;
+  }
+
+  /** Releases the GPU context and the plants. */
+  dispose(): void {
+    this.clear();
+    this.resizeObserver.disconnect();
+    this.darkScheme.removeEventListener('change', this.requestRender);
+    this.lit.dispose();
+    this.unlit.dispose();
+    this.lineMaterial.dispose();
+    this.renderer.dispose();
+    this.renderer.forceContextLoss();
+    this.renderer.domElement.remove();
+    this.captions.remove();
+  }
+
+  private material() {
+    return this.lighting ? this.lit : this.unlit;
+  }
+
+  private clear(): void {
+    for (const { object } of this.plants) {
+      if (!object) continue;
+      this.scene.remove(object);
+      object.traverse((part) => (part instanceof Mesh || part instanceof LineSegments) && (part.geometry as BufferGeometry).dispose());
+    }
+    this.plants = [];
+  }
+
+  /**
+   * Points the camera the way every tile is seen: face-on for flat plants; for 3D ones across
+   * the thinner horizontal side of all the plants together, a little from the side and above.
+   */
+  private aimCamera(plants: readonly StagePlant[], flat: boolean): void {
+    const all = new Box3();
+    for (const p of plants) if (p.mesh) all.union(new Box3(new Vector3(...p.bounds[0]), new Vector3(...p.bounds[1])));
+    const size = all.isEmpty() ? new Vector3(1, 1, 1) : all.getSize(new Vector3());
+    const centre = all.isEmpty() ? new Vector3() : all.getCenter(new Vector3());
+    const radius = Math.max(size.length() / 2, 1e-6);
+    const across = flat ? new Vector3(0, 0, 1) : size.z <= size.x ? new Vector3(0.25, 0.18, 1) : new Vector3(1, 0.18, -0.25);
+    this.camera.position.copy(centre).addScaledVector(across.normalize(), radius * 3);
+    this.camera.up.set(0, 1, 0);
+    this.camera.lookAt(centre);
+    this.camera.near = radius * 0.5;
+    this.camera.far = radius * 6;
+    this.camera.updateMatrixWorld();
+  }
+
+  /** A box's extent in the camera's view plane. */
+  private extent(bounds: Bounds): ViewExtent {
+    const extent = { minX: Infinity, maxX: -Infinity, minY: Infinity, maxY: -Infinity };
+    const corner = new Vector3();
+    for (let c = 0; c < 8; c++) {
+      corner.set(bounds[c & 1][0], bounds[(c >> 1) & 1][1], bounds[(c >> 2) & 1][2]).applyMatrix4(this.camera.matrixWorldInverse);
+      extent.minX = Math.min(extent.minX, corner.x);
+      extent.maxX = Math.max(extent.maxX, corner.x);
+      extent.minY = Math.min(extent.minY, corner.y);
+      extent.maxY = Math.max(extent.maxY, corner.y);
+    }
+    return extent;
+  }
+
+  /** Draws every tile into the renderer's canvas of `width` × `height` pixels; returns the tiles. */
+  private draw(width: number, height: number): StageTile[] {
+    const { columns, rows, scale } = this.grid;
+    const tiles = stageTiles(this.plants.map((p) => p.extent), columns, rows, width, height, scale);
+    const renderer = this.renderer;
+    this.scene.background = null;
+    renderer.setScissorTest(false);
+    renderer.setClearColor(scenePalette(this.darkScheme.matches).background, 1);
+    renderer.clear();
+    renderer.setScissorTest(true);
+    tiles.forEach((tile, i) => {
+      const { object } = this.plants[i];
+      if (!object) return;
+      // WebGL counts viewport rows from the bottom.
+      const { x, y, width: w, height: h } = tile.viewport;
+      const bottom = height - y - h;
+      renderer.setViewport(x, bottom, w, h);
+      renderer.setScissor(x, bottom, w, h);
+      Object.assign(this.camera, tile.frustum);
+      this.camera.updateProjectionMatrix();
+      object.visible = true;
+      renderer.autoClear = false;
+      renderer.render(this.scene, this.camera);
+      renderer.autoClear = true;
+      object.visible = false;
+    });
+    renderer.setScissorTest(false);
+    renderer.setViewport(0, 0, width, height);
+    return tiles;
+  }
+
+  /** The captions as HTML over the canvas, where the tiles put them on screen. */
+  private showCaptions(): void {
+    this.captions.replaceChildren(
+      ...this.plants.map(({ caption }) => {
+        const label = document.createElement('span');
+        label.className = 'stage-caption';
+        label.textContent = caption;
+        return label;
+      }),
+    );
+    this.placeCaptions();
+  }
+
+  private placeCaptions(): void {
+    const width = Math.max(1, this.container.clientWidth);
+    const height = Math.max(1, this.container.clientHeight);
+    const { columns, rows, scale } = this.grid;
+    const tiles = stageTiles(this.plants.map((p) => p.extent), columns, rows, width, height, scale);
+    const font = captionHeight(height, rows) * 0.55;
+    [...this.captions.children].forEach((label, i) => {
+      const style = (label as HTMLElement).style;
+      style.left = `${tiles[i].caption.x}px`;
+      style.top = `${tiles[i].caption.y}px`;
+      style.fontSize = `${font}px`;
+    });
+  }
+
+  private resize(): void {
+    const width = Math.max(1, this.container.clientWidth);
+    const height = Math.max(1, this.container.clientHeight);
+    this.renderer.setSize(width, height, false);
+    this.placeCaptions();
+    this.requestRender();
+  }
+
+  private readonly requestRender = (): void => {
+    if (this.renderQueued) return;
+    this.renderQueued = true;
+    requestAnimationFrame(() => {
+      this.renderQueued = false;
+      const canvas = this.renderer.domElement;
+      this.draw(canvas.width, canvas.height);
+    });
+  };
+}
