@@ -5,7 +5,7 @@
 // An example starts with comment lines: the title on line 1, then `// Source: …` (one line), then
 // the description (any further comment lines up to the first line that is not a comment). The
 // gallery groups examples by where they come from, read off the source (see `exampleGroup`).
-import { abopChapterHeading } from './chapters';
+import { abopChapterHeading } from './chapters.ts'; // with its extension: the vite config's plugins load this file in node
 
 /** One example of the gallery. */
 export interface GalleryEntry {

@@ -2,7 +2,7 @@
 // public/lessons/*.md and the Learn panel fetches it: `lessons/index.json` lists the lessons,
 // `lessons/SLUG.json` holds one. Defined once, here, for both sides; the page trusts nothing it
 // fetched, hence the checks below.
-import { abopChapterHeading } from './chapters';
+import { abopChapterHeading } from './chapters.ts'; // with its extension: the vite config's plugins load this file in node
 
 /** One lesson in the list. */
 export interface LessonSummary {
