@@ -12,6 +12,9 @@ import { GalleryThumbnails } from './thumbnails';
 /** The list of lessons, relative to the page (built by scripts/lessons-plugin.ts). */
 const INDEX_URL = 'lessons/index.json';
 
+/** How long Check waits for a build on its way before it checks the plant on screen. */
+const CHECK_WAIT_MS = 10_000;
+
 /** The panel's fixed elements in index.html. */
 export function learnElements() {
   return {
@@ -72,7 +75,7 @@ export class LearnPanel {
   private index: LessonSummary[] | undefined;
   private current: Lesson | undefined;
   private readonly lessons = new Map<string, Promise<Lesson>>();
-  /** Grammar texts of the lesson shown, by picture key (`lesson/SLUG/g0`, `lesson/SLUG/s0`). */
+  /** Grammar texts of the lessons shown, by picture key (`lesson/SLUG/g0`, `lesson/SLUG/s0`). */
   private readonly texts = new Map<string, string>();
   private readonly images = new Map<string, HTMLImageElement>();
   private readonly thumbnails = new GalleryThumbnails(async (key) => this.texts.get(key) ?? '');
@@ -199,8 +202,7 @@ export class LearnPanel {
     // Our own lesson files, rendered from Markdown at build time (scripts/lesson-files.ts): trusted
     // HTML, so innerHTML. Everything else in the panel is set as text.
     body.innerHTML = lesson.html;
-    this.texts.clear();
-    this.images.clear();
+    this.images.clear(); // the texts stay: a picture still being drawn may be of an earlier lesson
     const keys: string[] = [];
     lesson.grammars.forEach((grammar, n) => {
       const key = `lesson/${lesson.slug}/g${n}`;
@@ -286,7 +288,8 @@ export class LearnPanel {
     if (!parsed.ok) return say('fail', `This task's check cannot be read: ${parsed.error.message}.`);
     say('busy', 'Checking the plant on screen…');
     const { preview } = this.host;
-    if (!preview.settled) await preview.nextDelivery();
+    // The build of the text now, if one is on its way (a crashed build is never delivered: not for ever).
+    if (!preview.settled) await Promise.race([preview.nextDelivery(), new Promise((done) => setTimeout(done, CHECK_WAIT_MS))]);
     const last = preview.lastResult;
     if (!last) return say('fail', 'Not yet: there is no plant on screen.');
     if (!last.build.ok) return say('fail', 'Not yet: the grammar has errors (marked in the editor); the plant on screen is an older one. Fix them, then check again.');

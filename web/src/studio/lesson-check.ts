@@ -116,6 +116,10 @@ function tokenize(source: string): Token[] {
   return tokens;
 }
 
+function arithmetic(op: string, left: NumberNode, right: NumberNode, text: string): NumberNode {
+  return { kind: 'arithmetic', op: op as Arithmetic, left, right, text };
+}
+
 /** Recursive descent over the tokens; each node keeps the text it was read from. */
 class Parser {
   private at = 0;
@@ -161,27 +165,26 @@ class Parser {
     return this.source.slice(offset, end.offset + end.text.length).trim();
   }
 
-  /** `a or b`, `a and b` (and binds tighter), `not a`. */
-  private bool(): CheckNode {
+  /** One level of left-associative binary operators, `next (op next)*`; `operator` names the `op` ahead, if any. */
+  private leftAssociative<N>(next: () => N, operator: () => string | undefined, join: (op: string, left: N, right: N, text: string) => N): N {
     const start = this.peek().offset;
-    let left = this.conjunction();
-    while (this.isWord('or')) {
+    let left = next();
+    for (let op = operator(); op !== undefined; op = operator()) {
       this.take();
-      const right = this.conjunction();
-      left = { kind: 'or', left, right, text: this.textFrom(start) };
+      left = join(op, left, next(), this.textFrom(start));
     }
     return left;
   }
 
+  /** `a or b`, `a and b` (and binds tighter), `not a`. */
+  private bool(): CheckNode {
+    const or = () => (this.isWord('or') ? 'or' : undefined);
+    return this.leftAssociative(() => this.conjunction(), or, (_, left, right, text): CheckNode => ({ kind: 'or', left, right, text }));
+  }
+
   private conjunction(): CheckNode {
-    const start = this.peek().offset;
-    let left = this.negation();
-    while (this.isWord('and')) {
-      this.take();
-      const right = this.negation();
-      left = { kind: 'and', left, right, text: this.textFrom(start) };
-    }
-    return left;
+    const and = () => (this.isWord('and') ? 'and' : undefined);
+    return this.leftAssociative(() => this.negation(), and, (_, left, right, text): CheckNode => ({ kind: 'and', left, right, text }));
   }
 
   private negation(): CheckNode {
@@ -231,25 +234,15 @@ class Parser {
   }
 
   private sum(): NumberNode {
-    const start = this.peek().offset;
-    let left = this.product();
-    while (this.isOp('+', '-')) {
-      const op = this.take().text as Arithmetic;
-      const right = this.product();
-      left = { kind: 'arithmetic', op, left, right, text: this.textFrom(start) };
-    }
-    return left;
+    return this.leftAssociative(() => this.product(), () => this.arithmeticAhead('+', '-'), arithmetic);
   }
 
   private product(): NumberNode {
-    const start = this.peek().offset;
-    let left = this.unary();
-    while (this.isOp('*', '/')) {
-      const op = this.take().text as Arithmetic;
-      const right = this.unary();
-      left = { kind: 'arithmetic', op, left, right, text: this.textFrom(start) };
-    }
-    return left;
+    return this.leftAssociative(() => this.unary(), () => this.arithmeticAhead('*', '/'), arithmetic);
+  }
+
+  private arithmeticAhead(...ops: Arithmetic[]): Arithmetic | undefined {
+    return this.isOp(...ops) ? (this.peek().text as Arithmetic) : undefined;
   }
 
   private unary(): NumberNode {

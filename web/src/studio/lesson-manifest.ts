@@ -75,12 +75,13 @@ export function isLessonIndex(value: unknown): value is LessonSummary[] {
 
 /** Checks that fetched JSON is one lesson. */
 export function isLesson(value: unknown): value is Lesson {
+  if (!isSummary(value)) return false;
+  const { html, grammars, tasks } = value as Partial<Lesson>;
   return (
-    isSummary(value) &&
-    typeof (value as unknown as Lesson).html === 'string' &&
-    Array.isArray((value as unknown as Lesson).grammars) &&
-    (value as unknown as Lesson).grammars.every((g) => isRecord(g) && hasStrings(g, ['title', 'text'])) &&
-    Array.isArray((value as unknown as Lesson).tasks) &&
-    (value as unknown as Lesson).tasks.every((t) => isRecord(t) && hasStrings(t, ['html', 'check', 'hint', 'solution']) && typeof t.start === 'number')
+    typeof html === 'string' &&
+    Array.isArray(grammars) &&
+    grammars.every((g) => isRecord(g) && hasStrings(g, ['title', 'text'])) &&
+    Array.isArray(tasks) &&
+    tasks.every((t) => isRecord(t) && hasStrings(t, ['html', 'check', 'hint', 'solution']) && typeof t.start === 'number' && t.start >= 0 && t.start < grammars.length)
   );
 }
