@@ -7,8 +7,9 @@ import { GrammarStore } from './share/storage';
 import { PlantView } from './view';
 import {
   Autosave, BranchEditSession, BuildClient, ContextView, DerivationControls, GalleryDialog, GalleryThumbnails, GrowthPanel,
-  LibraryDialog, LinkState, LivePreview, Notice, ShareDialog, SliderPanel, TextOpening, ViewOptions, ViewTools,
-  DerivationView, StagesMode, ViewFollowing, installInspectorTabs, attachSplitter, figureName, browserStorage, connectTestHook, createBuildWorker, emptyTestHook, fetchExample, installDownloads, installDrop,
+  DerivationView, LearnPanel, LibraryDialog, LinkState, LivePreview, Notice, ShareDialog, SliderPanel, StagesMode, TextOpening, ViewFollowing,
+  ViewOptions, ViewTools, attachSplitter, browserStorage, connectTestHook, createBuildWorker, emptyTestHook, fetchExample, figureName,
+  installDownloads, installDrop, installInspectorTabs, learnElements,
   installFileMenu, installShareButton, installShortcuts, openPastedLinks, renderShortcutHelp, reportCoreCrashes, showStatus, sidesChoices,
   startingText, studioElements, type ShortcutAction, type StudioElements, type StudioTestHook,
 } from './studio';
@@ -126,6 +127,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   const gallery = new GalleryDialog(els.gallery, els.galleryList, new GalleryThumbnails(fetchExample), (entry) => opening.openExample(entry), () => opening.currentFile);
   const openGallery = () => void gallery.open().catch((error: unknown) => console.error('Could not open the gallery:', error));
   els.openGallery.addEventListener('click', openGallery);
+  new LearnPanel(learnElements(), { preview, open: (text, title, key) => opening.replace(text, title, key) }); // lessons (issue 17)
   if (start.from === 'link') autosave.save(start.text); // the link's text is now the work in progress
   const library = new LibraryDialog(els.library, store, { text: () => grammarEditor.text(), open: (entry) => opening.openSaved(entry) });
   installFileMenu(els.fileMenu, { openFile: (file) => opening.openFile(file), text: () => grammarEditor.text(), openLibrary: () => library.open() });

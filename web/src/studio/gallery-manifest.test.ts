@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { readdirSync, readFileSync } from 'node:fs';
-import { galleryManifest, isGalleryManifest, parseExampleHeader } from './gallery-manifest';
+import { exampleGroup, galleryManifest, isGalleryManifest, parseExampleHeader } from './gallery-manifest';
 
 describe('parseExampleHeader', () => {
   it('reads the title, the source and the description lines', () => {
@@ -10,12 +10,29 @@ describe('parseExampleHeader', () => {
       title: 'ABOP Fig 1.24d: a plant',
       source: 'The Book, Fig. 1.24d.',
       description: 'The apex X makes two branches.',
+      group: 'Other',
     });
   });
 
   it('copes with a missing source, a missing header and CRLF', () => {
     expect(parseExampleHeader('a.lsys', '// Title\r\n// Just words.\r\naxiom: F')).toMatchObject({ title: 'Title', source: '', description: 'Just words.' });
-    expect(parseExampleHeader('bare.lsys', 'axiom: F')).toEqual({ file: 'bare.lsys', title: 'bare', source: '', description: '' });
+    expect(parseExampleHeader('bare.lsys', 'axiom: F')).toEqual({ file: 'bare.lsys', title: 'bare', source: '', description: '', group: 'Other' });
+  });
+});
+
+describe('exampleGroup', () => {
+  it.each([
+    ['Prusinkiewicz & Lindenmayer, The Algorithmic Beauty of Plants (1990), Fig. 1.24d.', 'ABOP chapter 1: graphical modeling using L-systems'],
+    ['Prusinkiewicz & Lindenmayer, The Algorithmic Beauty of Plants (1990), eq. 1.7 and Fig. 1.34.', 'ABOP chapter 1: graphical modeling using L-systems'],
+    ['Prusinkiewicz & Lindenmayer, The Algorithmic Beauty of Plants (1990), section 1.10.2.', 'ABOP chapter 1: graphical modeling using L-systems'],
+    ['Prusinkiewicz & Lindenmayer, The Algorithmic Beauty of Plants (1990), Fig. 2.6a (after Honda 1971).', 'ABOP chapter 2: modeling of trees'],
+    ['Lluch, Vicent, Vivó, Quirós, "Green: a tool for modelling natural elements" (seed 000), Fig. 1.', "Green's RL-systems"],
+    ['Jou, Park, Bahng, "L-system tree with particle attributes" (shared/seeds/002), Fig 2 and Table 1.', 'Jou, Park and Bahng: particle attributes'],
+    ["Laurens Lapré's Lparser examples, fern-plant.ls", 'Lparser'],
+    ['Rathod, Tyagi, "L-systems based 3D tree modeling" (shared/seeds/003).', 'Other'],
+    ['', 'Other'],
+  ])('%s is in %s', (source, group) => {
+    expect(exampleGroup(source)).toBe(group);
   });
 });
 
@@ -37,6 +54,16 @@ describe('galleryManifest', () => {
     const files = readdirSync(dir).filter((f) => f.endsWith('.lsys'));
     const manifest = galleryManifest(files.map((f) => [f, readFileSync(new URL(f, dir), 'utf8')] as const));
     expect(manifest).toHaveLength(files.length);
+    // In the gallery's order: ABOP chapter 1 first, then chapter 2, Green, Jou, Lparser, Other.
+    expect([...new Set(manifest.map((e) => e.group))]).toEqual([
+      'ABOP chapter 1: graphical modeling using L-systems',
+      'ABOP chapter 2: modeling of trees',
+      "Green's RL-systems",
+      'Jou, Park and Bahng: particle attributes',
+      'Lparser',
+      'Other',
+    ]);
+    for (const entry of manifest) expect(entry.group.startsWith('ABOP'), entry.file).toBe(entry.file.startsWith('abop-'));
     for (const entry of manifest) {
       expect(entry.title, entry.file).not.toBe(entry.file.replace(/\.lsys$/, ''));
       expect(entry.source, entry.file).not.toBe('');

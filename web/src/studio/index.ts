@@ -13,6 +13,10 @@ export { installShortcuts, renderShortcutHelp, shortcutFor, SHORTCUTS, type Shor
 export { GalleryDialog, fetchExample, fetchManifest } from './gallery';
 export { GalleryThumbnails } from './thumbnails';
 export { galleryManifest, parseExampleHeader, isGalleryManifest, type GalleryEntry } from './gallery-manifest';
+export { ABOP_CHAPTERS, abopChapterHeading } from './chapters';
+export { LearnPanel, learnElements, type LearnElements, type LearnHost } from './learn-panel';
+export { chapterHeading, compareLessons, isLesson, isLessonIndex, type Lesson, type LessonGrammar, type LessonSummary, type LessonTask } from './lesson-manifest';
+export { CHECK_FACTS, CHECK_FUNCTIONS, evaluateCheck, needsDerivedString, parseCheck, plantFacts, spokenAnswer, MAX_CHECKED_MODULES, type CheckAnswer, type CheckNode, type PlantFacts } from './lesson-check';
 export { askToReplace } from './confirm';
 export { ContextView, type ContextViewElements } from './context-view';
 export { DerivationView, descendants, firstChildren, originInWords, SEQUENCE_MAX_MODULES, TREE_MAX_MODULES, type DerivationViewHost } from './derivation-view';

@@ -29,10 +29,11 @@ export interface OpenedText {
 
 /**
  * Where a file name says a text came from: a gallery example is its own name (`abop-1.24d.lsys`),
- * others have a kind in front (`file/NAME`, `saved/ID`).
+ * others have a kind in front (`file/NAME`, `saved/ID`, `lesson/SLUG/g0`). Examples and the
+ * grammars of lessons are ours: left unchanged, they are replaced without asking.
  */
 function isExample(file: string): boolean {
-  return file.endsWith('.lsys') && !file.includes('/');
+  return (file.endsWith('.lsys') && !file.includes('/')) || file.startsWith('lesson/');
 }
 
 /** Opens texts over the editor's, asking first when the user's text would be lost. */

@@ -1,0 +1,107 @@
+// The course (public/lessons/*.md) against the real core: every lesson file reads, every grammar
+// builds without a diagnostic, and every task's check fails on the grammar it starts from and passes
+// on its solution, evaluated as the Learn panel does (lesson-check.ts on the build's stats and module
+// texts). So no lesson can ship broken. Also: the lesson files' format, and its errors with the line.
+import { fileURLToPath } from 'node:url';
+import { describe, expect, it } from 'vitest';
+import { LessonFileError, lessonIndex, readLesson, readLessons } from '../../scripts/lesson-files';
+import { lessonAssets } from '../../scripts/lessons-plugin';
+import { inspectPlant } from '../../web/src/core';
+import { evaluateCheck, parseCheck, plantFacts, spokenAnswer } from '../../web/src/studio/lesson-check';
+import { isLesson, isLessonIndex } from '../../web/src/studio/lesson-manifest';
+
+const LESSONS_DIR = fileURLToPath(new URL('../../public/lessons', import.meta.url));
+const lessons = readLessons(LESSONS_DIR);
+
+/** The check's answer on `source`, as the Learn panel says it. */
+async function answer(check: string, source: string): Promise<{ pass: boolean; said: string }> {
+  const parsed = parseCheck(check);
+  if (!parsed.ok) throw new Error(parsed.error.message);
+  const { build, inspector } = inspectPlant(source);
+  try {
+    expect(build.diagnostics, source).toEqual([]);
+    const facts = await plantFacts(parsed.check, build, inspector);
+    if (!facts.ok) throw new Error(facts.reason);
+    const result = evaluateCheck(parsed.check, facts.facts);
+    return { pass: result.pass, said: spokenAnswer(result) };
+  } finally {
+    inspector.free();
+  }
+}
+
+describe('the course', () => {
+  it('follows ABOP chapter 1 in at least 8 lessons, in order, each with a grammar and a task', () => {
+    expect(lessons.length).toBeGreaterThanOrEqual(8);
+    expect(lessons.every((l) => l.chapter === '1')).toBe(true);
+    expect(lessons.map((l) => l.order)).toEqual([...lessons.map((l) => l.order)].sort((a, b) => a - b));
+    for (const lesson of lessons) {
+      expect(lesson.grammars.length, lesson.slug).toBeGreaterThan(0);
+      expect(lesson.tasks.length, lesson.slug).toBeGreaterThan(0);
+      expect(isLesson(JSON.parse(JSON.stringify(lesson))), lesson.slug).toBe(true);
+    }
+    expect(isLessonIndex(JSON.parse(JSON.stringify(lessonIndex(lessons))))).toBe(true);
+  });
+
+  it('emits the list and one file per lesson, with relative paths', () => {
+    const assets = lessonAssets(LESSONS_DIR);
+    expect([...assets.keys()].sort()).toEqual(['lessons/index.json', ...lessons.map((l) => `lessons/${l.slug}.json`)].sort());
+  });
+
+  describe.each(lessons.map((l) => [l.slug, l] as const))('%s', (_, lesson) => {
+    it.each(lesson.grammars.map((g) => [g.title, g.text]))('builds %s without a diagnostic', (_title, text) => {
+      const { build, inspector } = inspectPlant(text);
+      inspector.free();
+      expect(build.diagnostics).toEqual([]);
+      expect(build.stats.segments).toBeGreaterThan(0);
+    });
+
+    it.each(lesson.tasks.map((t, i) => [i + 1, t] as const))('task %i fails on its starting grammar and passes on its solution', async (_n, task) => {
+      const start = await answer(task.check, lesson.grammars[task.start].text);
+      expect(start.pass, start.said).toBe(false);
+      expect(start.said).toMatch(/^Not yet: /);
+      const solution = await answer(task.check, task.solution);
+      expect(solution.pass, solution.said).toBe(true);
+    });
+  });
+});
+
+describe('a lesson file', () => {
+  const good = ['---', 'title: T', 'chapter: 1', 'order: 2', '---', '', '# Head', '', 'Text [a](pic.png) ![b](img/x.png) [c](https://example.org/)', '', '```lsys', '// My grammar', 'axiom: F', '```', '', '```task', 'Do *this*.', 'check: segments > 1', 'hint: more', 'solution:', 'axiom: FF', '```', ''];
+
+  function problem(lines: string[]): string {
+    try {
+      readLesson('public/lessons/t.md', lines.join('\n'));
+    } catch (error) {
+      if (error instanceof LessonFileError) return error.message;
+      throw error;
+    }
+    return 'no error';
+  }
+
+  it('is read into HTML with placeholders, grammars and tasks', () => {
+    const lesson = readLesson('public/lessons/t.md', good.join('\n'));
+    expect(lesson).toMatchObject({ slug: 't', title: 'T', chapter: '1', order: 2, section: '' });
+    expect(lesson.html).toContain('<h3>Head</h3>');
+    expect(lesson.html).toContain('<div class="lesson-grammar" data-grammar="0"></div>');
+    expect(lesson.html).toContain('<div class="lesson-task" data-task="0"></div>');
+    expect(lesson.html).toContain('href="lessons/pic.png"');
+    expect(lesson.html).toContain('src="lessons/img/x.png"');
+    expect(lesson.html).toContain('href="https://example.org/"');
+    expect(lesson.grammars).toEqual([{ title: 'My grammar', text: '// My grammar\naxiom: F\n' }]);
+    expect(lesson.tasks).toEqual([{ html: '<p>Do <em>this</em>.</p>\n', check: 'segments > 1', hint: 'more', solution: 'axiom: FF\n', start: 0 }]);
+  });
+
+  it.each([
+    ['no front matter', good.slice(5), 'public/lessons/t.md:1: a lesson starts with front matter'],
+    ['a missing title', good.filter((l) => !l.startsWith('title')), 'public/lessons/t.md:1: the front matter needs title:'],
+    ['an unknown key', good.map((l) => (l === 'order: 2' ? 'ordre: 2' : l)), 'public/lessons/t.md:4: unknown front matter key "ordre"'],
+    ['a malformed check', good.map((l) => (l.startsWith('check') ? 'check: segmnts > 1' : l)), 'public/lessons/t.md:18: check: "segmnts" is not a fact'],
+    ['a check that is no comparison', good.map((l) => (l.startsWith('check') ? 'check: count("F")' : l)), 'public/lessons/t.md:18: check: count("F") is a number: compare it'],
+    ['no check', good.filter((l) => !l.startsWith('check')), 'public/lessons/t.md:16: a task needs a check: line'],
+    ['no solution', good.filter((l) => !l.startsWith('solution')), 'public/lessons/t.md:16: a task needs a solution:'],
+    ['no grammar before the task', good.slice(0, 10).concat(good.slice(14)), 'public/lessons/t.md:12: a task starts from a grammar'],
+    ['a grammar inside a list', good.slice(0, 10).concat(['- item', '', '  ```lsys', '  axiom: F', '  ```']), 'stand on their own'],
+  ])('with %s fails with its line', (_, lines, message) => {
+    expect(problem(lines)).toContain(message);
+  });
+});
