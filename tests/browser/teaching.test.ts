@@ -5,9 +5,9 @@
 // the cursor on its production report the same count. Pixels are read from the real canvas.
 import { readFileSync, writeFileSync } from 'node:fs';
 import type { Page } from 'playwright-core';
-import { describe, expect, it } from 'vitest';
-import { colourShare, decodePng, foregroundExtent, foregroundShare, type Picture } from './pictures';
-import { page, problems, useStudio } from './session';
+import { describe, expect, inject, it } from 'vitest';
+import { colourShare, decodePng, foregroundExtent, foregroundMask, foregroundShare, type Picture } from './pictures';
+import { browser, page, problems, useStudio } from './session';
 import { canvasPicture, findPixel, RESULTS, generation, HIGHLIGHT_PIXELS, nextBuild, openExample, savePage, twoFrames } from './studio-page';
 
 useStudio();
@@ -277,6 +277,33 @@ describe('Stages', () => {
     await page.getByTestId('stages-toggle').click();
     expect(await page.getByTestId('stages').isHidden()).toBe(true);
     expect(problems).toEqual([]);
+  });
+});
+
+describe('Stages on a phone', () => {
+  it('lays out the tiles in CSS pixels on a dense screen', async () => {
+    const phone = await browser.newPage({ viewport: { width: 390, height: 844 }, deviceScaleFactor: 3 });
+    await phone.goto(inject('studioUrl'));
+    await phone.waitForFunction(() => (window.__meristem?.lastStats?.segments ?? 0) > 0);
+    await phone.getByTestId('stages-toggle').click();
+    await expect.poll(() => phone.getByTestId('stages-status').getAttribute('data-state'), { timeout: 60_000 }).toBe('done');
+    await twoFrames(phone);
+    const figure = phone.getByTestId('stages-figure');
+    const png = await figure.locator('canvas').screenshot();
+    writeFileSync(new URL('stages-phone.png', RESULTS), png);
+    const picture = decodePng(png);
+    const columns = await figure.locator('.stage-caption').count();
+    expect(columns).toBe(5);
+    for (let c = 0; c < columns; c++) {
+      const column = crop(picture, Math.round((c * picture.width) / columns), Math.floor(picture.width / columns), Math.round(picture.height * 0.9));
+      const mask = foregroundMask(column);
+      const xs = [...mask.keys()].filter((p) => mask[p]).map((p) => p % column.width);
+      expect(xs.length, `column ${c + 1} holds a plant`).toBeGreaterThan(10);
+      const centre = (Math.min(...xs) + Math.max(...xs)) / 2 / column.width;
+      expect(centre, `the plant of column ${c + 1} stands in its middle`).toBeGreaterThan(0.35);
+      expect(centre).toBeLessThan(0.65);
+    }
+    await phone.close();
   });
 });
 

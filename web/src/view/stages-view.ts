@@ -4,7 +4,7 @@
 // stages-layout.ts). Flat plants are seen face-on; 3D plants a little from the side and above,
 // like the studio's first view of them. Drawn on demand into its own canvas; a picture of any size
 // comes out as a PNG with the captions.
-import { Box3, Group, LineBasicMaterial, LineSegments, Mesh, OrthographicCamera, Scene, Vector3, WebGLRenderer, type BufferGeometry, type Object3D } from 'three';
+import { Box3, Group, LineBasicMaterial, LineSegments, Mesh, OrthographicCamera, Scene, Vector2, Vector3, WebGLRenderer, type BufferGeometry, type Object3D } from 'three';
 import type { Bounds, MeshBuffers } from '../core';
 import { scenePalette } from './palette';
 import { lineGeometry, plantGeometry } from './plant-geometry';
@@ -189,7 +189,7 @@ export class StagesView {
     return extent;
   }
 
-  /** Draws every tile into the renderer's canvas of `width` × `height` pixels; returns the tiles. */
+  /** Draws every tile into the renderer's canvas of `width` × `height` CSS pixels; returns the tiles. */
   private draw(width: number, height: number): StageTile[] {
     const { columns, rows, scale } = this.grid;
     const tiles = stageTiles(this.plants.map((p) => p.extent), columns, rows, width, height, scale);
@@ -260,8 +260,9 @@ export class StagesView {
     this.renderQueued = true;
     requestAnimationFrame(() => {
       this.renderQueued = false;
-      const canvas = this.renderer.domElement;
-      this.draw(canvas.width, canvas.height);
+      // In CSS pixels, as the renderer's viewports are (it scales them by its pixel ratio).
+      const size = this.renderer.getSize(new Vector2());
+      this.draw(size.x, size.y);
     });
   };
 }
