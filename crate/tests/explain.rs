@@ -6,15 +6,8 @@ use meristem::{build, BuildOptions};
 /// Explains production `p` of `source` after `n` steps: (produced, left, right, rewritten, left
 /// and right in the previous string, context matched, condition failed).
 fn explain(source: &str, n: u32, p: u32) -> meristem::pipeline::Explained {
-    let b = build(
-        source,
-        &BuildOptions {
-            iterations: Some(n),
-            ..BuildOptions::default()
-        },
-    );
-    assert!(b.ok(), "{:?}", b.diagnostics);
-    b.inspector()
+    built(source, n)
+        .inspector()
         .expect("model")
         .explain(p)
         .expect("a step was taken")
@@ -162,6 +155,7 @@ fn the_fingerprint_tells_derivations_apart_and_repeats_for_equal_ones() {
     assert_eq!(run("axiom: AB", 1), run("#module B\naxiom: AB", 1));
 }
 
+/// `source` built after `n` steps, without errors.
 fn built(source: &str, n: u32) -> meristem::Build {
     let b = build(
         source,

@@ -75,6 +75,13 @@ async function recordFrames(p: Page): Promise<() => Promise<{ iterations: number
     });
 }
 
+/** Chooses in the framing menu how Play frames the plant. */
+async function choosePlayFraming(kind: 'each' | 'last'): Promise<void> {
+  await page.getByTestId('framing-menu').locator('summary').click();
+  await page.getByTestId(`play-framing-${kind}`).check();
+  await page.keyboard.press('Escape');
+}
+
 /** Plays the derivation to its end. */
 async function play(): Promise<void> {
   await page.getByTestId('play').click();
@@ -106,9 +113,7 @@ describe('the view follows the plant', () => {
   });
 
   it('frames every step during Play when asked to', async () => {
-    await page.getByTestId('framing-menu').locator('summary').click();
-    await page.getByTestId('play-framing-each').check();
-    await page.keyboard.press('Escape');
+    await choosePlayFraming('each');
     const before = await generation(page);
     await page.getByTestId('iterations').fill(''); // the grammar's 7: Play starts from 0
     await nextBuild(page, before);
@@ -124,9 +129,7 @@ describe('the view follows the plant', () => {
   });
 
   it("shows the growth in the last step's frame during Play, by default", async () => {
-    await page.getByTestId('framing-menu').locator('summary').click();
-    await page.getByTestId('play-framing-last').check();
-    await page.keyboard.press('Escape');
+    await choosePlayFraming('last');
     const stop = await recordFrames(page);
     await play();
     const frames = await stop();
