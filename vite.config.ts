@@ -2,13 +2,15 @@
 // - vite: the page lives in web/, the example gallery in public/ (served as-is), the site is built to dist/
 //   with relative URLs (`base: './'`) so it works from any sub-path. The build worker (web/src/studio/
 //   worker.ts) is bundled as an ES module worker. The gallery manifest (examples/index.json) comes
-//   from a plugin (scripts/gallery-plugin.ts), served in dev and emitted in the build.
+//   from a plugin (scripts/gallery-plugin.ts), served in dev and emitted in the build; so is the
+//   language reference, docs/LANGUAGE.md rendered to HTML (scripts/reference-plugin.ts).
 // - vitest (`npx vitest run`): unit tests next to the code in web/src and the cross-boundary tests in
-//   tests/core, all in node against the real WebAssembly core. The browser suite has its own config
+//   tests/core (and the plugins' in scripts), all in node against the real WebAssembly core. The browser suite has its own config
 //   (tests/browser/vitest.config.ts).
 import { fileURLToPath } from 'node:url';
 import { defineConfig } from 'vitest/config';
 import { galleryManifestPlugin } from './scripts/gallery-plugin.ts';
+import { referencePlugin } from './scripts/reference-plugin.ts';
 
 const repoRoot = fileURLToPath(new URL('.', import.meta.url));
 
@@ -16,7 +18,7 @@ export default defineConfig({
   root: 'web',
   base: './',
   publicDir: '../public',
-  plugins: [galleryManifestPlugin(`${repoRoot}public/examples`)],
+  plugins: [galleryManifestPlugin(`${repoRoot}public/examples`), referencePlugin(`${repoRoot}docs/LANGUAGE.md`)],
   worker: { format: 'es' },
   build: {
     outDir: '../dist',
@@ -27,7 +29,7 @@ export default defineConfig({
   test: {
     root: repoRoot,
     environment: 'node',
-    include: ['web/src/**/*.test.ts', 'tests/core/**/*.test.ts'],
+    include: ['web/src/**/*.test.ts', 'tests/core/**/*.test.ts', 'scripts/**/*.test.ts'],
     setupFiles: ['tests/unit-setup.ts'],
   },
 });
