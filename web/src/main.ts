@@ -7,7 +7,7 @@ import { GrammarStore } from './share/storage';
 import { PlantView } from './view';
 import {
   Autosave, BranchEditSession, BuildClient, ContextView, DerivationControls, GalleryDialog, GalleryThumbnails, GrowthPanel,
-  LibraryDialog, LinkState, LivePreview, Notice, ShareDialog, SliderPanel, TextOpening, ViewOptions, ViewTools,
+  HelpPanel, LibraryDialog, LinkState, LivePreview, Notice, ShareDialog, SliderPanel, TextOpening, ViewOptions, ViewTools,
   attachSplitter, browserStorage, connectTestHook, createBuildWorker, emptyTestHook, fetchExample, installDownloads, installDrop,
   installFileMenu, installShareButton, installShortcuts, openPastedLinks, renderShortcutHelp, reportCoreCrashes, showStatus, sidesChoices,
   startingText, studioElements, type ShortcutAction, type StudioElements, type StudioTestHook,
@@ -52,6 +52,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     replaceRange: (from, to, insert, history) => editor?.replaceRange(from, to, insert, history),
   });
   const vocabulary = languageVocabulary();
+  const help = new HelpPanel(els.help);
   const growth = new GrowthPanel(
     els.growthRows,
     els.growthCount,
@@ -70,6 +71,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     diagnose: (text) => preview.feed.diagnose(text),
     vocabulary,
     onCursor: (pos) => contexts.cursorAt(pos),
+    openReference: (anchor) => void help.open(anchor),
   });
   editor = grammarEditor;
   sliders.update(start.text);
@@ -144,6 +146,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     gallery: openGallery,
     frame: () => view.frame(),
     projection: () => viewTools.toggleProjection(),
+    help: () => void help.open(),
   };
   installShortcuts(window, (action) => actions[action]());
   renderShortcutHelp(els.shortcutList);

@@ -25,6 +25,8 @@ export interface GrammarEditorOptions {
   vocabulary: Vocabulary;
   /** Called with the cursor's position (UTF-16) whenever it moves or the text changes. */
   onCursor?: (pos: number) => void;
+  /** Opens the language reference at a row (`referenceAnchor`): hover docs link to it. */
+  openReference?: (anchor: string) => void;
 }
 
 /** Sets (or clears, with null) the marked production range. */
@@ -78,7 +80,7 @@ export function createGrammarEditor(options: GrammarEditorOptions): GrammarEdito
     extensions: [
       basicSetup,
       grammarSupport(options.vocabulary),
-      commandHover(options.vocabulary),
+      commandHover(options.vocabulary, options.openReference),
       grammarCompletion(options.vocabulary),
       grammarLinting(options.diagnose),
       studioEditorTheme,

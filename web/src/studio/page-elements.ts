@@ -49,6 +49,12 @@ export function studioElements() {
       example: byId('confirm-example', HTMLElement),
     },
     shortcutList: byId('shortcut-list', HTMLElement),
+    help: {
+      opener: byId('open-help', HTMLButtonElement),
+      panel: byId('help-panel', HTMLDialogElement),
+      content: byId('help-content', HTMLElement),
+      close: byId('help-close', HTMLButtonElement),
+    },
     contexts: {
       panel: byId('string-panel', HTMLElement),
       summary: byId('explain-summary', HTMLElement),
