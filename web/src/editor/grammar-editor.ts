@@ -8,7 +8,7 @@ import type { Vocabulary } from '../core';
 import { grammarCompletion } from './completion';
 import { grammarSupport } from './language';
 import { commandHover } from './hover';
-import { grammarLinting, type Diagnose } from './diagnostics';
+import { grammarLinting, relint, type Diagnose } from './diagnostics';
 import { studioEditorTheme } from './theme';
 
 /** What {@link createGrammarEditor} needs. */
@@ -96,7 +96,10 @@ export function createGrammarEditor(options: GrammarEditorOptions): GrammarEdito
   return {
     view,
     text: () => view.state.doc.toString(),
-    refreshDiagnostics: () => forceLinting(view),
+    refreshDiagnostics: () => {
+      view.dispatch({ effects: relint.of(null) });
+      forceLinting(view);
+    },
     replaceText: (text) =>
       view.dispatch({
         changes: { from: 0, to: view.state.doc.length, insert: text },
