@@ -28,7 +28,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   const view = new PlantView(els.viewport);
   const viewOptions = new ViewOptions(sidesChoices(els.viewTools.sides));
   viewOptions.applyShared(start.state?.view); // a link's, before anything follows the options
-  const derivation = new DerivationControls(els.derivation);
+  const derivation = new DerivationControls(els.derivation, notice);
   const autosave = new Autosave(store, notice);
   // The editor and the pieces around it need each other: they reach it once it is made (below).
   let editor: GrammarEditor | undefined;
@@ -65,6 +65,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     onChange: (text) => {
       sliders.update(text);
       growth.update(text);
+      derivation.textChanged(text);
       preview.rebuild();
       autosave.changed(text);
     },
@@ -76,13 +77,14 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   editor = grammarEditor;
   sliders.update(start.text);
   growth.update(start.text);
+  derivation.textChanged(start.text);
 
   // Options: the derivation's and the view's; a change of either asks for a build (meshing ones).
   derivation.onChange(() => preview.rebuild());
   const viewTools = new ViewTools(els.viewTools, viewOptions, view);
   viewOptions.onChange((_, changed) => (changed.has('sides') || changed.has('smoothAll')) && preview.rebuild());
   preview.onDelivered((result) => {
-    derivation.buildShown(result.build.grammarIterations);
+    derivation.buildShown(result.build);
     viewTools.showProjection();
   });
 

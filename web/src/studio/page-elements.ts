@@ -18,6 +18,9 @@ export function studioElements() {
     version: byId('core-version', HTMLElement),
     derivation: {
       iterations: byId('iterations', HTMLInputElement),
+      iterationsBox: byId('iterations-box', HTMLElement),
+      iterationsTag: byId('iterations-tag', HTMLElement),
+      iterationsReset: byId('iterations-reset', HTMLButtonElement),
       stepBack: byId('step-back', HTMLButtonElement),
       stepForward: byId('step-forward', HTMLButtonElement),
       play: byId('play', HTMLButtonElement),
