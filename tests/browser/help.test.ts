@@ -93,6 +93,8 @@ describe('the Help panel', () => {
     await expect.poll(() => markedRow(page)).toEqual({ first: 'F', inView: true, focused: true });
     expect(await page.locator('[data-testid=help-content] .reference-target').count(), 'one row marked').toBe(1);
     await page.keyboard.press('Escape');
+    await page.getByTestId('help-panel').waitFor({ state: 'hidden' });
+    expect(await page.evaluate(() => document.activeElement?.closest('[data-testid=editor]') !== null), 'back in the editor').toBe(true);
     expect(problems).toEqual([]);
   });
 
@@ -113,7 +115,7 @@ describe('the Help panel', () => {
       const scroll = await small.page.getByTestId('help-content').evaluate((c) => ({ scrollable: c.scrollHeight > c.clientHeight, wide: c.scrollWidth > c.clientWidth + 1 }));
       expect(scroll, name).toEqual({ scrollable: true, wide: false });
       await small.page.keyboard.press('PageDown');
-      expect(await small.page.getByTestId('help-content').evaluate((c) => c.scrollTop), name).toBeGreaterThan(0);
+      await expect.poll(() => small.page.getByTestId('help-content').evaluate((c) => c.scrollTop), name).toBeGreaterThan(0);
       await savePage(small.page, `help-panel-${name}.png`);
       await small.page.keyboard.press('Escape');
       await small.page.getByTestId('help-panel').waitFor({ state: 'hidden' });

@@ -57,6 +57,7 @@ export function commandHover(vocabulary: Vocabulary, openReference?: (anchor: st
           link.title = 'Open this row of the language reference (Help)';
           link.dataset.testid = 'hover-reference';
           link.addEventListener('click', () => {
+            view.focus(); // where the focus returns when the reference closes
             view.dispatch({ effects: closeHoverTooltips });
             openReference(anchor);
           });
