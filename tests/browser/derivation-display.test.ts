@@ -4,7 +4,7 @@
 // errors its number causes are told in the notice bar; the derived string shows numbers with 6
 // significant digits, the exact text in the module's tooltip.
 import { describe, expect, it } from 'vitest';
-import { generation, nextBuild, openExample, savePage, shownStats } from './studio-page';
+import { generation, nextBuild, openFromGallery, savePage, shownStats } from './studio-page';
 import { page, problems, useStudio } from './session';
 
 useStudio();
@@ -69,7 +69,10 @@ describe('the Iterations box', () => {
 
   it('is cleared when another example is opened', async () => {
     expect(await fillBox('2')).toBe('ok');
-    expect(await openExample(page, 'abop-2.06a-monopodial.lsys')).toBe('ok');
+    const before = await generation(page);
+    await openFromGallery(page, 'abop-2.06a-monopodial.lsys');
+    await page.getByTestId('confirm-replace-button').click(); // the text was edited: the studio asks first
+    expect(await nextBuild(page, before)).toBe('ok');
     expect(await iterationsBox()).toEqual({ value: '', placeholder: 'grammar: 10', mark: null });
     expect((await shownStats(page))?.iterations).toBe(10);
     expect(problems).toEqual([]);

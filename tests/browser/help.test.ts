@@ -115,7 +115,7 @@ describe('the Help panel', () => {
       const scroll = await small.page.getByTestId('help-content').evaluate((c) => ({ scrollable: c.scrollHeight > c.clientHeight, wide: c.scrollWidth > c.clientWidth + 1 }));
       expect(scroll, name).toEqual({ scrollable: true, wide: false });
       await small.page.keyboard.press('PageDown');
-      await expect.poll(() => small.page.getByTestId('help-content').evaluate((c) => c.scrollTop), name).toBeGreaterThan(0);
+      await expect.poll(() => small.page.getByTestId('help-content').evaluate((c) => c.scrollTop), { message: name }).toBeGreaterThan(0);
       await savePage(small.page, `help-panel-${name}.png`);
       await small.page.keyboard.press('Escape');
       await small.page.getByTestId('help-panel').waitFor({ state: 'hidden' });

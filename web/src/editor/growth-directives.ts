@@ -54,8 +54,8 @@ function fieldKind(param: Param): GrowthField['kind'] {
 /** A field's tooltip: `MB: How many … at least. Default 0.6.` (with the unit, if any). */
 function fieldTitle(param: Param): string {
   const unit = param.unit ? ` ${param.unit}` : '';
-  const fallback = param.default === undefined ? '' : ` Default ${param.default}${unit}.`;
-  return `${param.name}: ${param.doc}${fallback}`;
+  const byDefault = param.default === undefined ? '' : ` Default ${param.default}${unit}.`;
+  return `${param.name}: ${param.doc}${byDefault}`;
 }
 
 /**
