@@ -3,14 +3,16 @@
 //   with relative URLs (`base: './'`) so it works from any sub-path. The build worker (web/src/studio/
 //   worker.ts) is bundled as an ES module worker. The gallery manifest (examples/index.json) comes
 //   from a plugin (scripts/gallery-plugin.ts), served in dev and emitted in the build; so does the
-//   course (lessons/index.json and lessons/SLUG.json, from public/lessons/*.md: scripts/lessons-plugin.ts).
+//   course (lessons/index.json and lessons/SLUG.json, from public/lessons/*.md: scripts/lessons-plugin.ts),
+//   and the language reference, docs/LANGUAGE.md rendered to HTML (scripts/reference-plugin.ts).
 // - vitest (`npx vitest run`): unit tests next to the code in web/src and the cross-boundary tests in
-//   tests/core, all in node against the real WebAssembly core. The browser suite has its own config
+//   tests/core (and the plugins' in scripts), all in node against the real WebAssembly core. The browser suite has its own config
 //   (tests/browser/vitest.config.ts).
 import { fileURLToPath } from 'node:url';
 import { defineConfig } from 'vitest/config';
 import { galleryManifestPlugin } from './scripts/gallery-plugin.ts';
 import { lessonsPlugin } from './scripts/lessons-plugin.ts';
+import { referencePlugin } from './scripts/reference-plugin.ts';
 
 const repoRoot = fileURLToPath(new URL('.', import.meta.url));
 
@@ -18,7 +20,11 @@ export default defineConfig({
   root: 'web',
   base: './',
   publicDir: '../public',
-  plugins: [galleryManifestPlugin(`${repoRoot}public/examples`), lessonsPlugin(`${repoRoot}public/lessons`)],
+  plugins: [
+    galleryManifestPlugin(`${repoRoot}public/examples`),
+    lessonsPlugin(`${repoRoot}public/lessons`),
+    referencePlugin(`${repoRoot}docs/LANGUAGE.md`),
+  ],
   worker: { format: 'es' },
   build: {
     outDir: '../dist',
@@ -29,7 +35,7 @@ export default defineConfig({
   test: {
     root: repoRoot,
     environment: 'node',
-    include: ['web/src/**/*.test.ts', 'tests/core/**/*.test.ts'],
+    include: ['web/src/**/*.test.ts', 'tests/core/**/*.test.ts', 'scripts/**/*.test.ts'],
     setupFiles: ['tests/unit-setup.ts'],
   },
 });

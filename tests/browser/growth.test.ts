@@ -61,4 +61,32 @@ describe('the Growth panel', () => {
     await expect.poll(() => page.getByTestId('growth-gravity-variation').inputValue()).toBe('30');
     expect(problems).toEqual([]);
   });
+
+  it('labels each field in plain words beside the paper’s name, and says in a sentence what each switch and field does', async () => {
+    // The field's <label>: its words and the paper's name, its tooltip.
+    const field = (testid: string) =>
+      page.getByTestId(testid).evaluate((input) => {
+        const label = input.closest('label');
+        return { text: label?.querySelector('.growth-field-label')?.textContent, title: label?.title ?? '' };
+      });
+    expect(await field('growth-lifetime-mb')).toEqual({ text: 'at least MB', title: expect.stringMatching(/^MB: How many branch tips keep growing at each step, at least/) });
+    expect((await field('growth-lifetime-vb')).text).toBe('+ random VB');
+    expect((await field('growth-lifetime-pu')).text).toBe('upper third pu');
+    expect(await field('growth-speed-pfu')).toEqual({ text: 'upper third PFu', title: expect.stringMatching(/positional factor\)\. Default 2\.$/) });
+    expect((await field('growth-speed-sm')).text).toBe('extra rewritings SM');
+    expect((await field('growth-shape-vr')).text).toBe('± random VR');
+    expect((await field('growth-sun-season')).text).toBe('season');
+    expect(await page.getByTestId('growth-lifetime-mb').getAttribute('aria-label')).toBe('Lifetime of tips: at least (MB)');
+    const toggle = page.getByTestId('growth-lifetime');
+    expect(await toggle.getAttribute('title')).toMatch(/^#lifetime MB VB \[pu pm pl\] — Growth: only some branch tips/);
+    // Every switch and every field says what it does, in a sentence.
+    const titles = await page.getByTestId('growth-rows').evaluate((rows) =>
+      [...rows.querySelectorAll<HTMLElement>('.growth-toggle, .growth-field')].map((element) => element.title),
+    );
+    expect(titles.length).toBeGreaterThan(25);
+    expect(titles.filter((title) => !/^\S.{20,}[.)]$/.test(title))).toEqual([]);
+    await page.getByTestId('growth-rows').scrollIntoViewIfNeeded();
+    await savePage(page, 'growth-labels.png');
+    expect(problems).toEqual([]);
+  });
 });

@@ -7,9 +7,9 @@ import { GrammarStore } from './share/storage';
 import { PlantView } from './view';
 import {
   Autosave, BranchEditSession, BuildClient, ContextView, DerivationControls, GalleryDialog, GalleryThumbnails, GrowthPanel,
-  DerivationView, LearnPanel, LibraryDialog, LinkState, LivePreview, Notice, ShareDialog, SliderPanel, StagesMode, TextOpening, ViewFollowing,
-  ViewOptions, ViewTools, attachSplitter, browserStorage, connectTestHook, createBuildWorker, emptyTestHook, fetchExample, figureName,
-  installDownloads, installDrop, installInspectorTabs, learnElements,
+  DerivationView, HelpPanel, LearnPanel, LibraryDialog, LinkState, LivePreview, Notice, ShareDialog, SliderPanel, StagesMode, TextOpening,
+  ViewFollowing, ViewOptions, ViewTools, attachSplitter, browserStorage, connectTestHook, createBuildWorker, emptyTestHook, fetchExample,
+  figureName, installDownloads, installDrop, installInspectorTabs, learnElements,
   installFileMenu, installShareButton, installShortcuts, openPastedLinks, renderShortcutHelp, reportCoreCrashes, showStatus, sidesChoices,
   startingText, studioElements, type ShortcutAction, type StudioElements, type StudioTestHook,
 } from './studio';
@@ -29,7 +29,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   const view = new PlantView(els.viewport);
   const viewOptions = new ViewOptions(sidesChoices(els.viewTools.sides));
   viewOptions.applyShared(start.state?.view); // a link's, before anything follows the options
-  const derivation = new DerivationControls(els.derivation);
+  const derivation = new DerivationControls(els.derivation, notice);
   const autosave = new Autosave(store, notice);
   // The editor and the pieces around it need each other: they reach it once it is made (below).
   let editor: GrammarEditor | undefined;
@@ -62,6 +62,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     replaceRange: (from, to, insert, history) => editor?.replaceRange(from, to, insert, history),
   });
   const vocabulary = languageVocabulary();
+  const help = new HelpPanel(els.help);
   const growth = new GrowthPanel(
     els.growthRows,
     els.growthCount,
@@ -74,16 +75,19 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     onChange: (text) => {
       sliders.update(text);
       growth.update(text);
+      derivation.textChanged(text);
       preview.rebuild();
       autosave.changed(text);
     },
     diagnose: (text) => preview.feed.diagnose(text),
     vocabulary,
     onCursor: (pos) => contexts.cursorAt(pos),
+    openReference: (anchor) => void help.open(anchor),
   });
   editor = grammarEditor;
   sliders.update(start.text);
   growth.update(start.text);
+  derivation.textChanged(start.text);
 
   // Options: the derivation's and the view's; a change of either asks for a build (meshing ones).
   derivation.onChange(() => preview.rebuild());
@@ -104,7 +108,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   preview.onDelivered((result) => {
     following.delivered(result);
     stages.delivered(result);
-    derivation.buildShown(result.build.grammarIterations);
+    derivation.buildShown(result.build);
     viewTools.showProjection();
   });
 
@@ -171,6 +175,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     frame: () => view.frame(),
     projection: () => viewTools.toggleProjection(),
     stages: () => (stages.open ? stages.close() : stages.show()),
+    help: () => void help.open(),
   };
   installShortcuts(window, (action) => actions[action]());
   renderShortcutHelp(els.shortcutList);

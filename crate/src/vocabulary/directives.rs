@@ -215,39 +215,82 @@ const RANDOM: &[&[Param]] = &[&[
 const DEPTH: &[&[Param]] = &[&[Param::whole("n", 0.0, 10_000.0, "the depth").default(16.0)]];
 const U32_MAX: f64 = u32::MAX as f64;
 
-// Shared parameters of the growth directives.
-const PF_SPEED: [Param; 3] = [
-    Param::number("PFu", "positional factor of the upper third").default(2.0),
-    Param::number("PFm", "positional factor of the middle third").default(1.0),
-    Param::number("PFl", "positional factor of the lower third").default(1.0),
-];
-const PF_WIDTH: [Param; 3] = [
-    Param::number("PFu", "positional factor of the upper third").default(2.0),
-    Param::number("PFm", "positional factor of the middle third").default(1.0),
-    Param::number("PFl", "positional factor of the lower third").default(0.0),
-];
+// Parameters of the growth directives: the paper's names (`MB`, `PFu`) with a label and a doc a
+// student reads in the Growth panel.
+const fn thirds(what: &'static [&'static str; 3], defaults: [f64; 3]) -> [Param; 3] {
+    [
+        Param::number("PFu", what[0])
+            .label("upper third")
+            .default(defaults[0]),
+        Param::number("PFm", what[1])
+            .label("middle third")
+            .default(defaults[1]),
+        Param::number("PFl", what[2])
+            .label("lower third")
+            .default(defaults[2]),
+    ]
+}
+const PF_SPEED: [Param; 3] = thirds(
+    &[
+        "The rewritings per step of a growing tip in the upper third of the plant, before SM and VR (its positional factor).",
+        "The rewritings per step of a growing tip in the middle third, before SM and VR (its positional factor).",
+        "The rewritings per step of a growing tip in the lower third, before SM and VR (its positional factor).",
+    ],
+    [2.0, 1.0, 1.0],
+);
+const PF_WIDTH: [Param; 3] = thirds(
+    &[
+        "Added to the age of a segment in the upper third to give how many times as wide it is.",
+        "Added to the age of a segment in the middle third to give how many times as wide it is.",
+        "Added to the age of a segment in the lower third to give how many times as wide it is.",
+    ],
+    [2.0, 1.0, 0.0],
+);
+/// A random addition, `Round(Rand() × name)`.
+const fn random_more(name: &'static str, doc: &'static str) -> Param {
+    Param::new(name, ParamKind::StepExpression, doc).label("+ random")
+}
 const LIFETIME: [Param; 5] = [
     Param::new(
         "MB",
         ParamKind::StepExpression,
-        "apices that keep growing at each step, at least",
-    ),
-    Param::new(
+        "How many branch tips keep growing at each step, at least; the others stop for good.",
+    )
+    .label("at least"),
+    random_more(
         "VB",
-        ParamKind::StepExpression,
-        "plus Round(Rand() × VB) more",
+        "Up to this many more tips keep growing, drawn at random at each step: Round(Rand() × VB).",
     ),
-    Param::number("pu", "share of the upper third").default(0.6),
-    Param::number("pm", "share of the middle third").default(0.3),
-    Param::number("pl", "share of the lower third").default(0.1),
+    Param::number(
+        "pu",
+        "The share of the growing tips that are in the upper third of the plant's height.",
+    )
+    .label("upper third")
+    .default(0.6),
+    Param::number(
+        "pm",
+        "The share of the growing tips that are in the middle third.",
+    )
+    .label("middle third")
+    .default(0.3),
+    Param::number(
+        "pl",
+        "The share of the growing tips that are in the lower third.",
+    )
+    .label("lower third")
+    .default(0.1),
 ];
 const SPEED: [Param; 5] = [
     Param::new(
         "SM",
         ParamKind::StepExpression,
-        "rewritings per step added to the positional factor",
+        "Rewritings per step added for every growing tip, on top of its third's factor (negative: slower).",
+    )
+    .label("extra rewritings"),
+    random_more(
+        "VR",
+        "Up to this many more rewritings, drawn at random for each tip at each step: Round(Rand() × VR).",
     ),
-    Param::new("VR", ParamKind::StepExpression, "plus Round(Rand() × VR)"),
     PF_SPEED[0],
     PF_SPEED[1],
     PF_SPEED[2],
@@ -255,47 +298,91 @@ const SPEED: [Param; 5] = [
 const SHAPE: [Param; 3] = [
     Param::number(
         "GR",
-        "growth rate: a segment of age i is GR^i long up to maturity",
-    ),
-    Param::whole("m", 0.0, 1_000.0, "maturity, then logarithmic growth").unit("steps"),
-    Param::number("VR", "random variation, ± Round(Rand() × VR)").default(0.0),
+        "How fast young segments lengthen: a segment of age i is GR^i times as long (above 0, not 1).",
+    )
+    .label("growth rate"),
+    Param::whole(
+        "m",
+        0.0,
+        1_000.0,
+        "The age from which segments only lengthen slowly (logarithmically).",
+    )
+    .label("mature at")
+    .unit("steps"),
+    Param::number(
+        "VR",
+        "Each segment's length differs by up to this much, either way, drawn at random: ± Round(Rand() × VR).",
+    )
+    .label("± random")
+    .default(0.0),
 ];
 const SHAPE_WIDTH: [Param; 4] = [
-    Param::number("VR", "random variation, Round(Rand() × VR)").default(0.0),
+    Param::number(
+        "VR",
+        "Each segment is up to this much wider, drawn at random: Round(Rand() × VR).",
+    )
+    .label("+ random")
+    .default(0.0),
     PF_WIDTH[0],
     PF_WIDTH[1],
     PF_WIDTH[2],
 ];
 const SUN: [Param; 3] = [
-    Param::number("latitude", "latitude (negative: south)")
-        .range(-90.0, 90.0)
-        .unit("degrees"),
+    Param::number(
+        "latitude",
+        "Where the plant grows, in degrees north (negative: south): how high the noon sun stands.",
+    )
+    .label("latitude")
+    .range(-90.0, 90.0)
+    .unit("degrees"),
     Param::new(
         "season",
         ParamKind::Season,
-        "the season: the sun's noon altitude",
+        "The season: the noon sun stands 23.5° higher in summer and 23.5° lower in winter than at the equinoxes.",
     )
+    .label("season")
     .choices(&["summer", "spring", "autumn", "winter", "fall", "equinox"]),
     Param::number(
         "angle",
-        "turn of the upper and middle segments towards the sun per step",
+        "How many degrees the upper and middle segments turn towards the sun at each step.",
     )
+    .label("turn per step")
     .unit("degrees"),
 ];
+/// The random part of a bend, `Round(Rand() × variation)` degrees, drawn for each segment.
+const BEND_VARIATION: Param = Param::number(
+    "variation",
+    "Up to this many more degrees, drawn at random for each segment: Round(Rand() × variation).",
+)
+.label("+ random")
+.default(0.0)
+.unit("degrees");
 const GRAVITY: [Param; 2] = [
-    Param::number("angle", "turn of every segment downwards per step").unit("degrees"),
-    Param::number("variation", "plus Round(Rand() × variation)")
-        .default(0.0)
-        .unit("degrees"),
+    Param::number(
+        "angle",
+        "How many degrees every segment turns down at each step.",
+    )
+    .label("turn per step")
+    .unit("degrees"),
+    BEND_VARIATION,
 ];
 const WIND: [Param; 4] = [
-    Param::number("x", "wind direction, x"),
-    Param::number("z", "wind direction, z"),
-    Param::number("angle", "turn of every segment with the wind per step").unit("degrees"),
-    Param::number("variation", "plus Round(Rand() × variation)")
-        .default(0.0)
-        .unit("degrees"),
+    Param::number("x", "The wind blows towards (x, 0, z): its x part.").label("towards x"),
+    Param::number("z", "The wind blows towards (x, 0, z): its z part.").label("towards z"),
+    Param::number(
+        "angle",
+        "How many degrees every segment turns with the wind at each step.",
+    )
+    .label("turn per step")
+    .unit("degrees"),
+    BEND_VARIATION,
 ];
+const APICES: &[&[Param]] = &[&[Param::new(
+    "modules",
+    ParamKind::Modules,
+    "The modules that are branch tips (apices), separated by spaces.",
+)
+.label("tip modules")]];
 const COLOR: &[&[Param]] = &[
     &[
         Param::number("index", "the palette entry (a whole number)").range(0.0, 255.0),
@@ -375,20 +462,20 @@ pub const DIRECTIVES: &[DirectiveInfo] = &[
         "The maximum depth of homomorphism rules (default 16)."),
     row("decomposition_depth", D::DecompositionDepth, "Decomposition depth", DEPTH, G::Limits,
         "The maximum depth of decomposition rules (default 16)."),
-    row("lifetime", D::Lifetime, "Lifetime", &[&[LIFETIME[0], LIFETIME[1]], &LIFETIME], G::Growth,
-        "Growth: MB + Round(Rand()·VB) apices keep growing each step, shared by the upper, middle and lower thirds (default 0.6 0.3 0.1); the others stop.")
+    row("lifetime", D::Lifetime, "Lifetime of tips", &[&[LIFETIME[0], LIFETIME[1]], &LIFETIME], G::Growth,
+        "Growth: only some branch tips (apices) keep growing at each step, MB + Round(Rand()·VB) of them, shared by the upper, middle and lower thirds (default 0.6 0.3 0.1); the others stop for good.")
         .usage("E0209", "(the mean and variance of the surviving branches, then the shares of the upper, middle and lower thirds)")
         .enable(&["34", "32"]),
-    row("speed", D::Speed, "Speed", &[&[SPEED[0], SPEED[1]], &SPEED], G::Growth,
-        "Growth: each apex is rewritten PF + SM + Round(Rand()·VR) times per step (PF default 2 1 1).")
+    row("speed", D::Speed, "Growth speed", &[&[SPEED[0], SPEED[1]], &SPEED], G::Growth,
+        "Growth: each growing tip is rewritten PF + SM + Round(Rand()·VR) times per step, PF by the third it is in (default 2 1 1: the top grows fastest).")
         .usage("E0209", "(the seasonal mean and variance of the rewritings, then the positional factors of the thirds)")
         .enable(&["0", "1"]),
     row("shape", D::Shape, "Length by age", &[&[SHAPE[0], SHAPE[1]], &SHAPE], G::Growth,
-        "Growth: a segment of age i is GR^i times as long up to maturity m, then log_GR(i) − log_GR(m) + GR^m, ± Round(Rand()·VR).")
+        "Growth: segments lengthen with age, GR^i times as long at age i up to maturity m, then slowly: log_GR(i) − log_GR(m) + GR^m, ± Round(Rand()·VR).")
         .usage("E0209", ": a growth rate above 0 other than 1, a maturity from 1 and the variance of the length")
         .enable(&["1.5", "3"]),
     row("shape_width", D::ShapeWidth, "Width by age", &[&[], &[SHAPE_WIDTH[0]], &SHAPE_WIDTH], G::Growth,
-        "Growth: a segment of age i is i + PF + Round(Rand()·VR) times as wide (PF default 2 1 0).")
+        "Growth: segments thicken with age, i + PF + Round(Rand()·VR) times as wide at age i, PF by the third they are in (default 2 1 0).")
         .usage("E0209", "(the variance of the width, then the positional factors of the thirds)")
         .enable(&["1"]),
     row("sun", D::Sun, "Sun", &[&SUN], G::Growth,
@@ -396,15 +483,15 @@ pub const DIRECTIVES: &[DirectiveInfo] = &[
         .usage("E0209", ": a latitude from -90 to 90, a season (summer, winter, spring, autumn, fall or equinox) and the degrees per step")
         .enable(&["38", "summer", "2"]),
     row("gravity", D::Gravity, "Gravity", &[&[GRAVITY[0]], &GRAVITY], G::Growth,
-        "Growth: every segment turns down by angle + Round(Rand()·variation) degrees per step.")
+        "Growth: every segment bends down by angle + Round(Rand()·variation) degrees per step.")
         .usage("E0209", ": the degrees per step")
         .enable(&["5", "3"]),
     row("wind", D::Wind, "Wind", &[&[WIND[0], WIND[1], WIND[2]], &WIND], G::Growth,
-        "Growth: every segment turns towards the horizontal direction (x, 0, z) by angle + Round(Rand()·variation) degrees per step.")
+        "Growth: every segment bends towards the horizontal direction (x, 0, z) by angle + Round(Rand()·variation) degrees per step.")
         .usage("E0209", ": a horizontal direction other than 0 0, and the degrees per step")
         .enable(&["1", "0", "2"]),
-    row("apex", D::Apex, "Apices", MODULE_LIST, G::Growth,
-        "Growth: the modules that are branch apices (default: modules with productions that are not turtle commands).")
+    row("apex", D::Apex, "Branch tips", APICES, G::Growth,
+        "Growth: the modules that are branch tips, the apices that lifetime and speed act on (default: modules with productions that are not turtle commands).")
         .repeatable().enable(&["A"]),
 ];
 
@@ -455,6 +542,19 @@ mod tests {
         let choices = DirectiveKind::Sun.info().params()[1].choices;
         assert!(choices.iter().all(|c| Season::named(c).is_some()));
         assert_eq!(choices.len(), SEASONS.len());
+    }
+
+    #[test]
+    fn every_field_of_the_growth_panel_has_a_label_and_a_sentence() {
+        for d in DIRECTIVES
+            .iter()
+            .filter(|d| d.group == DirectiveGroup::Growth)
+        {
+            for p in d.params() {
+                assert!(!p.label.is_empty(), "#{} {}", d.name, p.name);
+                assert!(p.doc.ends_with('.'), "#{} {}: a sentence", d.name, p.name);
+            }
+        }
     }
 
     #[test]

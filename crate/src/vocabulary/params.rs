@@ -58,7 +58,10 @@ pub struct Param {
     /// `degrees`, `steps`, … (empty for plain numbers).
     #[serde(skip_serializing_if = "str::is_empty")]
     pub unit: &'static str,
-    /// What it is, in a few plain words (hover docs, the studio's field titles).
+    /// A few plain words for the studio's field (`at least` for `MB`); empty: the name says it.
+    #[serde(skip_serializing_if = "str::is_empty")]
+    pub label: &'static str,
+    /// What it is or does, in plain words (hover docs, the studio's field tooltips).
     pub doc: &'static str,
     /// For [`ParamKind::Season`]: the names it accepts.
     #[serde(skip_serializing_if = "<[_]>::is_empty")]
@@ -74,6 +77,7 @@ impl Param {
             default: None,
             range: None,
             unit: "",
+            label: "",
             doc,
             choices: &[],
         }
@@ -107,6 +111,11 @@ impl Param {
 
     pub const fn unit(mut self, unit: &'static str) -> Param {
         self.unit = unit;
+        self
+    }
+
+    pub const fn label(mut self, label: &'static str) -> Param {
+        self.label = label;
         self
     }
 

@@ -19,7 +19,9 @@ export interface Param {
   range?: [number, number];
   /** `degrees`, `steps`, … */
   unit?: string;
-  /** What it is, in a few plain words. */
+  /** A few plain words for a field (`at least` for `MB`); absent: the name says it. */
+  label?: string;
+  /** What it is or does, in plain words. */
   doc: string;
   /** For a season: the names it accepts. */
   choices?: string[];

@@ -1,6 +1,6 @@
 // Core diagnostics shown in the editor: exact ranges, a gutter marker, hover text.
 import { linter, lintGutter, type Diagnostic as EditorDiagnostic } from '@codemirror/lint';
-import type { Extension } from '@codemirror/state';
+import { StateEffect, type Extension } from '@codemirror/state';
 import { byteOffsetToUtf16, type Diagnostic } from '../core';
 
 /**
@@ -26,6 +26,12 @@ export type Diagnose = (text: string) => readonly Diagnostic[] | Promise<readonl
 /** How long the editor waits after the last edit before showing diagnostics, in ms. */
 export const LINT_DELAY_MS = 400;
 
+/**
+ * Asks the linter to run again on the same text, e.g. when a build option (the iterations box)
+ * changed its diagnostics; CodeMirror's `forceLinting` alone only hurries a run a change scheduled.
+ */
+export const relint = StateEffect.define<null>();
+
 /** The lint extensions: underline + tooltip at each span, and markers in a gutter. */
 export function grammarLinting(diagnose: Diagnose): Extension {
   return [
@@ -34,7 +40,7 @@ export function grammarLinting(diagnose: Diagnose): Extension {
         const text = view.state.doc.toString();
         return toEditorDiagnostics(text, await diagnose(text));
       },
-      { delay: LINT_DELAY_MS },
+      { delay: LINT_DELAY_MS, needsRefresh: (update) => update.transactions.some((t) => t.effects.some((e) => e.is(relint))) },
     ),
     lintGutter(),
   ];

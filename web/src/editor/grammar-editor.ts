@@ -8,7 +8,7 @@ import type { Vocabulary } from '../core';
 import { grammarCompletion } from './completion';
 import { grammarSupport } from './language';
 import { commandHover } from './hover';
-import { grammarLinting, type Diagnose } from './diagnostics';
+import { grammarLinting, relint, type Diagnose } from './diagnostics';
 import { studioEditorTheme } from './theme';
 
 /** What {@link createGrammarEditor} needs. */
@@ -25,6 +25,8 @@ export interface GrammarEditorOptions {
   vocabulary: Vocabulary;
   /** Called with the cursor's position (UTF-16) whenever it moves or the text changes. */
   onCursor?: (pos: number) => void;
+  /** Opens the language reference at a row (`referenceAnchor`): hover docs link to it. */
+  openReference?: (anchor: string) => void;
 }
 
 /** Sets (or clears, with null) the marked production range. */
@@ -78,7 +80,7 @@ export function createGrammarEditor(options: GrammarEditorOptions): GrammarEdito
     extensions: [
       basicSetup,
       grammarSupport(options.vocabulary),
-      commandHover(options.vocabulary),
+      commandHover(options.vocabulary, options.openReference),
       grammarCompletion(options.vocabulary),
       grammarLinting(options.diagnose),
       studioEditorTheme,
@@ -94,7 +96,10 @@ export function createGrammarEditor(options: GrammarEditorOptions): GrammarEdito
   return {
     view,
     text: () => view.state.doc.toString(),
-    refreshDiagnostics: () => forceLinting(view),
+    refreshDiagnostics: () => {
+      view.dispatch({ effects: relint.of(null) });
+      forceLinting(view);
+    },
     replaceText: (text) =>
       view.dispatch({
         changes: { from: 0, to: view.state.doc.length, insert: text },

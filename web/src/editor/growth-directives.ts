@@ -3,16 +3,21 @@
 // per line, its arguments separated by spaces (expressions are written without spaces), a `//`
 // comment after them kept. Their arguments, defaults and labels come from the core's vocabulary.
 import { languageVocabulary, type Param, type Vocabulary } from '../core';
+import { directiveHoverText } from './hover';
 
 /** One argument of a directive, as the panel edits it. */
 export interface GrowthField {
+  /** The paper's name (`MB`, `PFu`). */
   name: string;
+  /** A few plain words for it (`at least`, `upper third`). */
+  label: string;
   /** `number`: a number; `expression`: a number or an expression of NumIt, MaxIt and #defines; `season`; `names`: module names. */
   kind: 'number' | 'expression' | 'season' | 'names';
   /** Omitted arguments at the end take the core's defaults (shown as placeholders). */
   optional?: boolean;
   /** The core's default, for an optional argument. */
   placeholder?: string;
+  /** What it does, in a sentence (the field's tooltip). */
   title: string;
   /** For a season: the names the core accepts. */
   choices?: string[];
@@ -23,6 +28,8 @@ export interface GrowthAttribute {
   /** The directive's name (without `#`). */
   directive: string;
   label: string;
+  /** What switching it on does, in a sentence (the switch's tooltip). */
+  title: string;
   fields: GrowthField[];
   /** The arguments written when the attribute is switched on. */
   defaults: string[];
@@ -44,6 +51,13 @@ function fieldKind(param: Param): GrowthField['kind'] {
   }
 }
 
+/** A field's tooltip: `MB: How many … at least. Default 0.6.` (with the unit, if any). */
+function fieldTitle(param: Param): string {
+  const unit = param.unit ? ` ${param.unit}` : '';
+  const byDefault = param.default === undefined ? '' : ` Default ${param.default}${unit}.`;
+  return `${param.name}: ${param.doc}${byDefault}`;
+}
+
 /**
  * The growth attributes, read off the core's vocabulary: its directives of the growth group, each
  * with the fields of its longest form (those beyond its shortest form optional, with the core's
@@ -58,13 +72,15 @@ export function growthAttributes(vocabulary: Vocabulary): GrowthAttribute[] {
       return {
         directive: d.name,
         label: d.label,
+        title: directiveHoverText(d),
         defaults: d.enable ?? [],
         fields: longest.map((p, k) => ({
           name: p.name,
+          label: p.label ?? p.name,
           kind: fieldKind(p),
           optional: k >= shortest || undefined,
           placeholder: p.default === undefined ? undefined : String(p.default),
-          title: p.doc.charAt(0).toUpperCase() + p.doc.slice(1),
+          title: fieldTitle(p),
           choices: p.choices,
         })),
       };

@@ -1,9 +1,10 @@
 // Hover docs: pointing at a module with a meaning or a directive shows its row of the core's
-// vocabulary.
+// vocabulary, with a link to its row of the language reference (the studio's Help panel).
 import { syntaxTree } from '@codemirror/language';
 import type { Extension } from '@codemirror/state';
-import { hoverTooltip } from '@codemirror/view';
+import { closeHoverTooltips, hoverTooltip } from '@codemirror/view';
 import { argumentsText, paramsText, writtenDirective, type DirectiveInfo, type ModuleInfo, type Vocabulary } from '../core';
+import { referenceAnchor } from './reference';
 
 /** Text of the hover for a module, e.g. `F(l = #step) — Move forward by l and draw a segment.` */
 export function commandHoverText(module: Pick<ModuleInfo, 'name' | 'params' | 'doc'>): string {
@@ -27,8 +28,11 @@ export function tokenClass(nodeName: string): string {
   return nodeName.split('_')[0];
 }
 
-/** A tooltip with the doc of the turtle command or directive under the pointer (not in comments, arrows, …). */
-export function commandHover(vocabulary: Vocabulary): Extension {
+/**
+ * A tooltip with the doc of the turtle command or directive under the pointer (not in comments,
+ * arrows, …); with `openReference`, a "Reference" link calls it with the anchor of the name's row.
+ */
+export function commandHover(vocabulary: Vocabulary, openReference?: (anchor: string) => void): Extension {
   const byName = new Map(vocabulary.modules.map((c) => [c.name, c]));
   const directiveByName = new Map(vocabulary.directives.map((d) => [writtenDirective(d), d]));
   return hoverTooltip((view, pos, side) => {
@@ -39,14 +43,26 @@ export function commandHover(vocabulary: Vocabulary): Extension {
     const command = COMMAND_NODES.has(kind) ? byName.get(word) : undefined;
     const text = directive ? directiveHoverText(directive) : command ? commandHoverText(command) : null;
     if (text === null) return null;
+    const anchor = referenceAnchor(directive ? writtenDirective(directive) : word);
     return {
       pos: node.from,
       end: node.to,
       above: true,
-      create: () => {
+      create: (view) => {
         const dom = document.createElement('div');
         dom.className = 'cm-command-doc';
         dom.textContent = text;
+        if (openReference) {
+          const link = Object.assign(document.createElement('button'), { type: 'button', className: 'cm-reference-link', textContent: 'Reference' });
+          link.title = 'Open this row of the language reference (Help)';
+          link.dataset.testid = 'hover-reference';
+          link.addEventListener('click', () => {
+            view.focus(); // where the focus returns when the reference closes
+            view.dispatch({ effects: closeHoverTooltips });
+            openReference(anchor);
+          });
+          dom.append(' ', link);
+        }
         return { dom };
       },
     };

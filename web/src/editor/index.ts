@@ -8,3 +8,4 @@ export { toEditorDiagnostics, grammarLinting, LINT_DELAY_MS, type Diagnose } fro
 export { studioEditorTheme } from './theme';
 export { defineConstants, defineNames, defaultRange, defaultStep, formatNumber, type DefineConstant, type DefineName } from './defines';
 export { growthAttributes, type GrowthAttribute, type GrowthField } from './growth-directives';
+export { REFERENCE_PATH, referenceAnchor } from './reference';

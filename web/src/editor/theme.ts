@@ -31,6 +31,15 @@ export const studioEditorTheme = EditorView.theme({
     fontFamily: 'system-ui, sans-serif',
     fontSize: '13px',
   },
+  '.cm-reference-link': {
+    padding: '0',
+    border: 'none',
+    background: 'none',
+    color: 'var(--focus)',
+    fontWeight: '600',
+    textDecoration: 'underline',
+    cursor: 'pointer',
+  },
   '.cm-tooltip': {
     backgroundColor: 'var(--panel)',
     color: 'var(--text)',

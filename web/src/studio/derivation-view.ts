@@ -7,6 +7,7 @@
 // plant that grew from it and in the editor the production.
 import { NOT_REWRITTEN, type DerivationStep, type PlantBuild, type PlantInspector } from '../core';
 import { cssColour, PRODUCTION_COLOURS } from '../view/highlight';
+import { shortModuleText } from './module-text';
 import { plural } from './status';
 
 /** The whole derivation is shown when its steps hold this many modules or fewer together. */
@@ -39,10 +40,10 @@ export function originInWords(
   module: number,
   host: Pick<DerivationViewHost, 'describeProduction' | 'conditionOf'>,
 ): string {
-  const text = steps[step].texts[module];
+  const text = shortModuleText(steps[step].texts[module]);
   if (step === 0) return `${text} is part of the axiom (step 0).`;
   const parent = steps[step].parent[module];
-  const from = steps[step - 1].texts[parent];
+  const from = shortModuleText(steps[step - 1].texts[parent]);
   const origin = steps[step].origin[module];
   if (origin === NOT_REWRITTEN) return `Step ${step}: ${text} is ${from} of step ${step - 1}, copied (no production rewrote it).`;
   const siblings = steps[step].parent.filter((p) => p === parent).length;
@@ -174,7 +175,7 @@ export class DerivationView {
         else group.classList.add('dv-copy');
         row.append(group);
       }
-      const chip = element('span', 'dv-m', text);
+      const chip = moduleChip(text);
       chip.dataset.step = String(k);
       chip.dataset.i = String(i);
       group.append(chip);
@@ -206,8 +207,10 @@ export class DerivationView {
       const band = element('span', 'dv-group');
       if (origin !== NOT_REWRITTEN) band.style.setProperty('--band', cssColour(PRODUCTION_COLOURS[origin % PRODUCTION_COLOURS.length]));
       else band.classList.add('dv-copy');
-      band.textContent = after.slice(from - childFrom, to - childFrom).join('') || 'ε';
-      pair.append(element('span', 'dv-index', String(j)), element('span', 'dv-m', before[j - first] ?? ''), element('span', 'dv-arrow', '⇒'), band);
+      const became = after.slice(from - childFrom, to - childFrom);
+      band.textContent = became.map(shortModuleText).join('') || 'ε';
+      band.title = became.join('');
+      pair.append(element('span', 'dv-index', String(j)), moduleChip(before[j - first] ?? ''), element('span', 'dv-arrow', '⇒'), band);
       window.append(pair);
     }
     const sizer = this.body.firstChild as HTMLElement;
@@ -267,6 +270,13 @@ export class DerivationView {
   }
 }
 
+/** A module as the string panel writes it (numbers to 6 significant digits), the exact text in its tooltip. */
+function moduleChip(text: string): HTMLElement {
+  const chip = element('span', 'dv-m', shortModuleText(text));
+  if (chip.textContent !== text) chip.title = text;
+  return chip;
+}
+
 function element(tag: string, className: string, text?: string): HTMLElement {
   const e = document.createElement(tag);
   e.className = className;
@@ -283,7 +293,7 @@ const SVG = 'http://www.w3.org/2000/svg';
  */
 function derivationTree(steps: readonly DerivationStep[]): SVGSVGElement {
   // The last step's modules side by side: room for the longest text (about 7.5 px a character).
-  const longest = Math.max(...steps[steps.length - 1].texts.map((t) => t.length));
+  const longest = Math.max(...steps[steps.length - 1].texts.map((t) => shortModuleText(t).length));
   const dx = Math.max(28, longest * 7.5 + 10);
   const dy = 34;
   const last = steps.length - 1;
@@ -329,7 +339,7 @@ function derivationTree(steps: readonly DerivationStep[]): SVGSVGElement {
       label.setAttribute('class', 'dv-m');
       label.dataset.step = String(k);
       label.dataset.i = String(i);
-      label.textContent = text;
+      label.textContent = shortModuleText(text);
       svg.append(label);
     }),
   );

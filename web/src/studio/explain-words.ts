@@ -1,7 +1,9 @@
 // The context view's explanations in words, for a student: which rule a production is, what it did
 // in the last step, and why it did or did not rewrite one module ("left context b expected at 3,
 // found a"). Pure functions of the core's answers and the source text, tested without a page.
+// Modules are written as the string panel writes them (numbers to 6 significant digits).
 import type { Explanation, MatchReport, ProductionInfo } from '../core';
+import { shortModuleText } from './module-text';
 import { plural } from './status';
 
 /** The 1-based line of a UTF-16 offset. */
@@ -41,8 +43,8 @@ export function countsInWords(source: string, p: ProductionInfo, e: Explanation)
  * rewrote the module of the step before that `report` checked, with the contexts it matched.
  */
 export function madeInWords(source: string, p: ProductionInfo, e: Explanation, report: MatchReport | null, module: number, text: string): string {
-  const made = `This ${text} (module ${module} of the derived string) was written by ${describeProduction(source, p)}`;
-  const from = report ? ` from ${report.moduleText} (module ${report.module} of the step before)` : '';
+  const made = `This ${shortModuleText(text)} (module ${module} of the derived string) was written by ${describeProduction(source, p)}`;
+  const from = report ? ` from ${shortModuleText(report.moduleText)} (module ${report.module} of the step before)` : '';
   const parts = report ? [contextInWords('left', report.left), contextInWords('right', report.right)].filter((s): s is string => s !== null) : [];
   const condition = conditionText(source, p);
   if (condition !== null) parts.push(`${condition} held`);
@@ -53,7 +55,7 @@ export function madeInWords(source: string, p: ProductionInfo, e: Explanation, r
 /** Where a context check stood, in words (`left context b matched at 3`). */
 function contextInWords(side: 'left' | 'right', check: MatchReport['left']): string | null {
   if (check.matched) return check.modules.length > 0 ? `${side} context matched at ${check.modules.join(', ')}` : null;
-  const found = check.found === null ? `found the ${side === 'left' ? 'start' : 'end'} of the string` : `found ${check.foundText} at ${check.found}`;
+  const found = check.found === null ? `found the ${side === 'left' ? 'start' : 'end'} of the string` : `found ${shortModuleText(check.foundText ?? '')} at ${check.found}`;
   return `${side} context ${check.expected ?? ''} expected, ${found}`.replace('  ', ' ');
 }
 
@@ -64,7 +66,7 @@ function contextInWords(side: 'left' | 'right', check: MatchReport['left']): str
  */
 export function reportInWords(source: string, p: ProductionInfo, report: MatchReport, rewriter?: ProductionInfo): string {
   const name = describeProduction(source, p);
-  const at = `${report.moduleText} (module ${report.module} of the string before the last step)`;
+  const at = `${shortModuleText(report.moduleText)} (module ${report.module} of the string before the last step)`;
   if (!report.predecessor) return `${name} cannot rewrite ${at}: it is not the production's predecessor.`;
   const parts = [contextInWords('left', report.left), contextInWords('right', report.right)].filter((s): s is string => s !== null);
   const condition = conditionText(source, p);

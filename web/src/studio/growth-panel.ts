@@ -41,14 +41,19 @@ export class GrowthPanel {
         row.dataset.directive = r.attribute.directive;
         const label = document.createElement('label');
         label.className = 'growth-toggle';
+        label.title = r.attribute.title;
         label.append(r.toggle, ` ${r.attribute.label}`);
         const fields = document.createElement('span');
         fields.className = 'growth-fields';
         r.inputs.forEach((input, i) => {
           const field = document.createElement('label');
           field.className = 'growth-field';
-          field.title = r.attribute.fields[i].title;
-          field.append(Object.assign(document.createElement('span'), { textContent: r.attribute.fields[i].name }), input);
+          const { title, label, name } = r.attribute.fields[i];
+          field.title = title;
+          // The plain words, and the paper's name beside them (`at least MB`).
+          const words = Object.assign(document.createElement('span'), { className: 'growth-field-label', textContent: label });
+          if (label !== name) words.append(' ', Object.assign(document.createElement('span'), { className: 'growth-abbr', textContent: name }));
+          field.append(words, input);
           fields.append(field);
         });
         row.append(label, fields);
@@ -60,7 +65,7 @@ export class GrowthPanel {
   private row(attribute: GrowthAttribute): Row {
     const toggle = Object.assign(document.createElement('input'), { type: 'checkbox' });
     toggle.dataset.testid = `growth-${attribute.directive}`;
-    toggle.title = `#${attribute.directive}`;
+    toggle.title = attribute.title;
     const inputs = attribute.fields.map((field) => {
       let input: HTMLInputElement | HTMLSelectElement;
       if (field.kind === 'season') {
@@ -73,7 +78,7 @@ export class GrowthPanel {
         input.size = field.kind === 'names' ? 10 : 5;
       }
       input.dataset.testid = `growth-${attribute.directive}-${field.name.replace(/\s+/g, '-').toLowerCase()}`;
-      input.setAttribute('aria-label', `${attribute.label}: ${field.name}`);
+      input.setAttribute('aria-label', `${attribute.label}: ${field.label === field.name ? field.name : `${field.label} (${field.name})`}`);
       return input;
     });
     const row: Row = { attribute, toggle, inputs };

@@ -13,13 +13,20 @@ export interface NoticeElements {
 export type NoticeKind = 'error' | 'info';
 
 export class Notice {
+  /** What the notice shown is about, if its teller said (see `hide`). */
+  private topic: string | undefined;
+
   constructor(private readonly els: NoticeElements) {
     els.close.addEventListener('click', () => this.hide());
   }
 
-  /** Shows `message` (and `items`, one list entry each), replacing any notice shown. */
-  show(kind: NoticeKind, message: string, items: readonly string[] = []): void {
+  /**
+   * Shows `message` (and `items`, one list entry each), replacing any notice shown; `topic` names
+   * what it is about, so that its teller can take it back without hiding someone else's.
+   */
+  show(kind: NoticeKind, message: string, items: readonly string[] = [], topic?: string): void {
     const { root, text, list } = this.els;
+    this.topic = topic;
     root.dataset.kind = kind;
     root.setAttribute('role', kind === 'error' ? 'alert' : 'status');
     text.textContent = message;
@@ -28,7 +35,9 @@ export class Notice {
     root.hidden = false;
   }
 
-  hide(): void {
+  /** Hides the notice; with `topic`, only a notice shown about it. */
+  hide(topic?: string): void {
+    if (topic !== undefined && topic !== this.topic) return;
     this.els.root.hidden = true;
   }
 

@@ -18,6 +18,9 @@ export function studioElements() {
     version: byId('core-version', HTMLElement),
     derivation: {
       iterations: byId('iterations', HTMLInputElement),
+      iterationsBox: byId('iterations-box', HTMLElement),
+      iterationsTag: byId('iterations-tag', HTMLElement),
+      iterationsReset: byId('iterations-reset', HTMLButtonElement),
       stepBack: byId('step-back', HTMLButtonElement),
       stepForward: byId('step-forward', HTMLButtonElement),
       play: byId('play', HTMLButtonElement),
@@ -67,6 +70,12 @@ export function studioElements() {
       example: byId('confirm-example', HTMLElement),
     },
     shortcutList: byId('shortcut-list', HTMLElement),
+    help: {
+      opener: byId('open-help', HTMLButtonElement),
+      panel: byId('help-panel', HTMLDialogElement),
+      content: byId('help-content', HTMLElement),
+      close: byId('help-close', HTMLButtonElement),
+    },
     contexts: {
       panel: byId('string-panel', HTMLElement),
       summary: byId('explain-summary', HTMLElement),

@@ -12,6 +12,12 @@ describe('shortcuts', () => {
     expect(shortcutFor(key('KeyQ'))).toBeUndefined();
   });
 
+  it('opens the help with F1 alone', () => {
+    expect(shortcutFor(key('F1', { altKey: false }))?.action).toBe('help');
+    expect(shortcutFor(key('F1'))).toBeUndefined();
+    expect(shortcutFor(key('F1', { altKey: false, ctrlKey: true }))).toBeUndefined();
+  });
+
   it('has one key per action and keeps off keys browsers use with Alt', () => {
     expect(new Set(SHORTCUTS.map((s) => s.code)).size).toBe(SHORTCUTS.length);
     expect(new Set(SHORTCUTS.map((s) => s.action)).size).toBe(SHORTCUTS.length);

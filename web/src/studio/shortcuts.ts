@@ -1,13 +1,16 @@
 // The studio's keyboard shortcuts: one table, which drives both the key handler and the help.
-// All use Alt with a key the editor and browsers leave free (Alt with F, E, D, V, S, B, T, H or a
-// digit opens browser menus or tabs on some systems), and work wherever the focus is.
+// All but F1 (help, as everywhere) use Alt with a key the editor and browsers leave free (Alt with
+// F, E, D, V, S, B, T, H or a digit opens browser menus or tabs on some systems), and work wherever
+// the focus is.
 
 /** What a shortcut does. */
-export type ShortcutAction = 'stepBack' | 'stepForward' | 'playPause' | 'reroll' | 'gallery' | 'frame' | 'projection' | 'stages';
+export type ShortcutAction = 'stepBack' | 'stepForward' | 'playPause' | 'reroll' | 'gallery' | 'frame' | 'projection' | 'stages' | 'help';
 
-/** One shortcut: the key (`KeyboardEvent.code`, with Alt), how it is written, what it does. */
+/** One shortcut: the key (`KeyboardEvent.code`, with Alt unless `plain`), how it is written, what it does. */
 export interface Shortcut {
   code: string;
+  /** The key alone, without Alt (F1). */
+  plain?: true;
   keys: string;
   action: ShortcutAction;
   description: string;
@@ -22,12 +25,13 @@ export const SHORTCUTS: readonly Shortcut[] = [
   { code: 'KeyK', keys: 'Alt+K', action: 'frame', description: 'Frame the plant' },
   { code: 'KeyO', keys: 'Alt+O', action: 'projection', description: 'Switch between the 2D and the 3D view' },
   { code: 'KeyA', keys: 'Alt+A', action: 'stages', description: 'Stages: the iterations side by side' },
+  { code: 'F1', plain: true, keys: 'F1', action: 'help', description: 'The language reference (Help)' },
 ];
 
-/** The action of a key event, if it is one of the shortcuts (Alt alone as modifier). */
+/** The action of a key event, if it is one of the shortcuts (Alt alone as modifier, or no modifier for a plain one). */
 export function shortcutFor(event: Pick<KeyboardEvent, 'code' | 'altKey' | 'ctrlKey' | 'metaKey' | 'shiftKey'>): Shortcut | undefined {
-  if (!event.altKey || event.ctrlKey || event.metaKey || event.shiftKey) return undefined;
-  return SHORTCUTS.find((s) => s.code === event.code);
+  if (event.ctrlKey || event.metaKey || event.shiftKey) return undefined;
+  return SHORTCUTS.find((s) => s.code === event.code && event.altKey !== (s.plain === true));
 }
 
 /** Runs the actions on their keys anywhere on the page (before the editor sees them). */

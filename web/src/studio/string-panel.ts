@@ -1,6 +1,8 @@
 // The derived-string panel: the string of the last step, virtualised (only the rows in view exist
 // in the page, so a million modules scroll freely), with the context-sensitivity highlights.
+// Numbers show 6 significant digits, the exact text in the module's tooltip (module-text.ts).
 import type { PlantInspector } from '../core';
+import { shortModuleText } from './module-text';
 
 /** Modules per row of the panel. */
 export const MODULES_PER_ROW = 40;
@@ -113,7 +115,8 @@ export class StringPanel {
         const span = document.createElement('span');
         span.className = 'm';
         span.dataset.i = String(i);
-        span.textContent = text;
+        span.textContent = shortModuleText(text);
+        if (span.textContent !== text) span.title = text;
         const role = this.roleOf(i);
         if (role) span.classList.add(`m-${role}`);
         const colour = this.colourOf?.(i);
