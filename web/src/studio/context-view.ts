@@ -10,7 +10,7 @@ import { cssColour, HIGHLIGHT, PRODUCTION_COLOURS, type Rgb } from '../view/high
 import type { PlantView } from '../view';
 import { StringPanel, type ModuleRole } from './string-panel';
 import type { ViewOptions } from './view-options';
-import { conditionText, countsInWords, describeProduction, madeInWords, reportInWords } from './explain-words';
+import { conditionText, copiedInWords, countsInWords, describeProduction, madeInWords, reportInWords } from './explain-words';
 
 /** The page elements of the view. */
 export interface ContextViewElements {
@@ -40,8 +40,8 @@ export class ContextView {
   private inspector: PlantInspector | undefined;
   private source = '';
   private focus: Focus = { production: null, module: null };
-  /** A module lit up from elsewhere (the derivation view's hover), over the focus's highlight. */
-  private preview: { modules: Set<number>; production: number | null } | null = null;
+  /** Modules lit up from elsewhere (the derivation view's hover), instead of the focus's highlight. */
+  private preview: Set<number> | null = null;
   /** Bumped by every change of focus or build, so late answers are dropped. */
   private ticket = 0;
 
@@ -111,7 +111,7 @@ export class ContextView {
    * (from the derivation view's hover), or restores the focus's own highlight (`null`).
    */
   showPreview(modules: Iterable<number> | null, production: number | null): void {
-    this.preview = modules === null ? null : { modules: new Set(modules), production };
+    this.preview = modules === null ? null : new Set(modules);
     const p = production === null ? undefined : this.build?.productions[production];
     // The preview's production is marked while it lasts; the focus's own mark comes back after.
     this.editor()?.markProduction(modules !== null && p ? { from: p.from, to: p.to } : null);
@@ -172,7 +172,7 @@ export class ContextView {
       for (const i of list) if (i < roles.length) roles[i] = ROLE_CODE[role];
     };
     const preview = this.preview;
-    if (preview) mark(preview.modules, 'produced');
+    if (preview) mark(preview, 'produced');
     else if (explanation) {
       mark(explanation.produced, 'produced');
       mark(explanation.leftContext, 'left');
@@ -216,7 +216,6 @@ export class ContextView {
       summary.dataset.contextMatched = String(explanation.contextMatched);
       summary.dataset.conditionFailed = String(explanation.conditionFailed);
     }
-    const picked = `This ${moduleText} (module ${focus.module} of the derived string)`;
     if (focus.production !== null) {
       // The cursor's production; with a picked module, why it did or did not rewrite that one.
       const counts = production && explanation ? countsInWords(this.source, production, explanation) : `${this.describeProduction(focus.production)} has nothing to show before the first step.`;
@@ -226,7 +225,7 @@ export class ContextView {
       return;
     }
     if (!explanation || !production) {
-      summary.textContent = `${picked} was copied: no production rewrote it in the last step.`;
+      summary.textContent = copiedInWords(focus.module!, moduleText);
       return;
     }
     this.editor()?.markProduction({ from: production.from, to: production.to });

@@ -2,7 +2,7 @@
 import { afterAll, describe, expect, it } from 'vitest';
 import { inspectPlant, type PlantInspector } from '../core';
 import { descendants, firstChildren, originInWords } from './derivation-view';
-import { countsInWords, describeProduction, lineOf, madeInWords, reportInWords } from './explain-words';
+import { copiedInWords, countsInWords, describeProduction, lineOf, madeInWords, reportInWords } from './explain-words';
 
 const SIGNAL = '#iterations 4\naxiom: baaaaaaaa\nb < a -> b\nb -> a\n';
 const EQ_1_7 = [
@@ -61,6 +61,10 @@ describe('why a production fired or not at a module', () => {
     expect(madeInWords(SIGNAL, build.productions[0], explanation, report, 4, 'b')).toBe(
       'This b (module 4 of the derived string) was written by rule 1 (line 3: b < a -> b) from a (module 4 of the step before): left context matched at 3. That production fired 1 time in the last step.',
     );
+  });
+
+  it('says when a module was copied, its numbers as the string panel writes them', () => {
+    expect(copiedInWords(3, 'F(0.016796159999999997)')).toBe('This F(0.0167962) (module 3 of the derived string) was copied: no production rewrote it in the last step.');
   });
 
   it('says when the module is not the predecessor, and when another production won', async () => {

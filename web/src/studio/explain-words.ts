@@ -52,6 +52,11 @@ export function madeInWords(source: string, p: ProductionInfo, e: Explanation, r
   return `${made}${from}${why}. That production fired ${plural(e.fired, 'time')} in the last step.`;
 }
 
+/** Module `module` of the derived string (written `text`), which no production rewrote in the last step. */
+export function copiedInWords(module: number, text: string): string {
+  return `This ${shortModuleText(text)} (module ${module} of the derived string) was copied: no production rewrote it in the last step.`;
+}
+
 /** Where a context check stood, in words (`left context b matched at 3`). */
 function contextInWords(side: 'left' | 'right', check: MatchReport['left']): string | null {
   if (check.matched) return check.modules.length > 0 ? `${side} context matched at ${check.modules.join(', ')}` : null;
