@@ -538,7 +538,11 @@ impl PlantInspector {
     /// `undefined` before the first step.
     #[wasm_bindgen(js_name = matchReport)]
     pub fn match_report(&self, production: u32, module: usize) -> Option<String> {
-        let report = self.build.inspector()?.match_report(production, module)?.ok()?;
+        let report = self
+            .build
+            .inspector()?
+            .match_report(production, module)?
+            .ok()?;
         serde_json::to_string(&report).ok()
     }
 

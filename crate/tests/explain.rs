@@ -211,21 +211,39 @@ fn a_match_report_says_which_part_of_a_production_failed() {
     let b = built(source, 1);
     let inspector = b.inspector().expect("model");
     // Module 1 of the derived string came from module 1 (the first a): both contexts match.
-    let fired = inspector.match_report(0, 1).expect("a step").expect("no error");
+    let fired = inspector
+        .match_report(0, 1)
+        .expect("a step")
+        .expect("no error");
     assert!(fired.predecessor && fired.left.matched && fired.right.matched);
-    assert_eq!((fired.left.modules.clone(), fired.right.modules.clone()), (vec![0], vec![2]));
+    assert_eq!(
+        (fired.left.modules.clone(), fired.right.modules.clone()),
+        (vec![0], vec![2])
+    );
     assert_eq!(fired.rewritten_by, Some(0));
     // Module 2 (the second a): its left neighbour is an a, not the b the production wants.
-    let left = inspector.match_report(0, 2).expect("a step").expect("no error");
+    let left = inspector
+        .match_report(0, 2)
+        .expect("a step")
+        .expect("no error");
     assert!(!left.left.matched);
     assert_eq!(left.left.expected.as_deref(), Some("b"));
-    assert_eq!((left.left.found, left.left.found_text.as_deref()), (Some(1), Some("a")));
+    assert_eq!(
+        (left.left.found, left.left.found_text.as_deref()),
+        (Some(1), Some("a"))
+    );
     assert_eq!(left.rewritten_by, Some(1));
     // Module 4 (the last a): no right neighbour at all.
-    let right = inspector.match_report(0, 4).expect("a step").expect("no error");
+    let right = inspector
+        .match_report(0, 4)
+        .expect("a step")
+        .expect("no error");
     assert!(!right.left.matched || !right.right.matched);
     // Module 3 (c) is not the predecessor.
-    let other = inspector.match_report(0, 3).expect("a step").expect("no error");
+    let other = inspector
+        .match_report(0, 3)
+        .expect("a step")
+        .expect("no error");
     assert!(!other.predecessor);
     assert_eq!(other.module_text, "c");
 }
@@ -243,7 +261,10 @@ fn a_module_explanation_counts_every_rewriting_of_its_production() {
         .iter()
         .position(|&o| o == 1)
         .expect("an F written by F -> FF");
-    let one = inspector.explain_module(f).expect("a step").expect("no error");
+    let one = inspector
+        .explain_module(f)
+        .expect("a step")
+        .expect("no error");
     assert_eq!(one.explanation.fired, whole.explanation.fired);
     assert!(whole.explanation.fired > 1);
     assert_eq!(one.explanation.rewritten.len(), 1);

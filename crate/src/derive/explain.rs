@@ -205,7 +205,8 @@ pub fn match_report(
             .map(|f| previous.module_text(&model.alphabet, f as usize));
     }
     if report.left.matched && report.right.matched {
-        let (_, condition) = rewriter.matches_recording(p, previous, module, steps, &mut (), &mut ())?;
+        let (_, condition) =
+            rewriter.matches_recording(p, previous, module, steps, &mut (), &mut ())?;
         report.condition = p.condition.as_ref().map(|_| condition);
     }
     Ok(report)
@@ -238,7 +239,15 @@ impl<R: rand::Rng> Rewriter<'_, R> {
         for k in 1..=n {
             let mut matched = Vec::new();
             let pattern = &p.left[n - k..];
-            if context::match_left(model, src, &self.partner, i, pattern, &mut self.slots, &mut matched) {
+            if context::match_left(
+                model,
+                src,
+                &self.partner,
+                i,
+                pattern,
+                &mut self.slots,
+                &mut matched,
+            ) {
                 check.modules = matched;
                 continue;
             }
@@ -261,7 +270,15 @@ impl<R: rand::Rng> Rewriter<'_, R> {
         for k in 1..=p.right.len() {
             let mut matched = Vec::new();
             let pattern = &p.right[..k];
-            if context::match_right(model, src, &self.partner, i + 1, pattern, &mut self.slots, &mut matched) {
+            if context::match_right(
+                model,
+                src,
+                &self.partner,
+                i + 1,
+                pattern,
+                &mut self.slots,
+                &mut matched,
+            ) {
                 check.modules = matched;
                 continue;
             }

@@ -1,7 +1,9 @@
 //! Questions about a build's derivation: why a production fired in the last step (the studio's
 //! context-sensitivity view), and the derived string's text, module by module.
 
-use crate::derive::{self, DeriveOptions, Derivation, LastStep, MatchReport, TracedStep, NOT_REWRITTEN};
+use crate::derive::{
+    self, Derivation, DeriveOptions, LastStep, MatchReport, TracedStep, NOT_REWRITTEN,
+};
 use crate::diagnostics::Diagnostic;
 use crate::model::{LString, Model};
 
@@ -123,7 +125,11 @@ impl<'b> Inspector<'b> {
 
     /// Why production `production` did or did not rewrite the module of the last step's string
     /// that module `module` of the derived string comes from. `None` before any step.
-    pub fn match_report(&self, production: u32, module: usize) -> Option<Result<MatchReport, Diagnostic>> {
+    pub fn match_report(
+        &self,
+        production: u32,
+        module: usize,
+    ) -> Option<Result<MatchReport, Diagnostic>> {
         let source = *self.derivation.parent.get(module)? as usize;
         Some(derive::match_report(self.last_step(), production, source))
     }

@@ -195,7 +195,11 @@ impl Build {
             steps: self.steps,
             seed: self.seed,
         };
-        Some(Inspector::new(self.model.as_ref()?, &self.derivation, options))
+        Some(Inspector::new(
+            self.model.as_ref()?,
+            &self.derivation,
+            options,
+        ))
     }
 
     /// Meshes the plant again with other mesh options (a view option such as the number of sides
