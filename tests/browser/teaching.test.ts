@@ -39,7 +39,8 @@ async function recordFrames(p: Page): Promise<() => Promise<{ iterations: number
     const tick = () => {
       const hook = window.__meristem!;
       const rendered = hook.rendered;
-      if (rendered && rendered.generation !== seen && hook.preview?.settled && hook.lastStats) {
+      // The first frame drawn after a delivery shows that build (Play may already have asked for the next).
+      if (rendered && rendered.generation !== seen && hook.lastStats) {
         seen = rendered.generation;
         scratch.width = Math.floor(canvas.width / 2);
         scratch.height = Math.floor(canvas.height / 2);

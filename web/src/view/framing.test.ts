@@ -39,6 +39,20 @@ describe('framePose', () => {
     expect(top - bottom).toBeGreaterThan(0.6);
   });
 
+  it('fills the width with a wide, low plant (the box, not its bounding sphere, is fitted)', () => {
+    const box = new Box3(new Vector3(-10, 0, -3), new Vector3(10, 4, 3));
+    const camera = cameraAt(box, 1.6);
+    expect(cornersVisible(box, camera)).toBe(true);
+    let [left, right] = [Infinity, -Infinity];
+    for (const x of [box.min.x, box.max.x])
+      for (const y of [box.min.y, box.max.y])
+        for (const z of [box.min.z, box.max.z]) {
+          const p = new Vector3(x, y, z).project(camera);
+          [left, right] = [Math.min(left, p.x), Math.max(right, p.x)];
+        }
+    expect((right - left) / 2, 'the box spans most of the view').toBeGreaterThan(0.85);
+  });
+
   it('looks at a plant in the YZ plane face-on, not edge-on', () => {
     const box = new Box3(new Vector3(-0.1, 0, -5), new Vector3(0.1, 10, 5));
     const pose = framePose(box, 40, 1);

@@ -1,5 +1,5 @@
 // Where to put the camera so a box fills the view.
-import { Box3, MathUtils, Sphere, Vector3 } from 'three';
+import { Box3, MathUtils, Vector3 } from 'three';
 
 /** A camera placement: eye position, point looked at, and clip planes that suit the distance. */
 export interface CameraPose {
@@ -9,29 +9,38 @@ export interface CameraPose {
   far: number;
 }
 
+/** Share of the view the plant may fill: a margin of a few per cent all round. */
+const FILL = 0.94;
+
 /**
  * The pose that shows all of `box` for a perspective camera with vertical field of view `fovDeg`
  * and aspect ratio `aspect`. It looks across the box's thinner horizontal axis (a planar plant is
- * seen face-on, never edge-on), a little from the side and from above. An empty or degenerate box
- * is treated as a unit box around its centre.
+ * seen face-on, never edge-on), a little from the side and from above, from as near as keeps every
+ * corner of the box in view (a wide, flat plant fills the width; a tall one the height). An empty
+ * or degenerate box is treated as a unit box around its centre.
  */
 export function framePose(box: Box3, fovDeg: number, aspect: number): CameraPose {
-  const sphere = box.isEmpty() ? new Sphere(new Vector3(), 1) : box.getBoundingSphere(new Sphere());
-  const radius = sphere.radius > 1e-6 ? sphere.radius : 1;
-  const vertical = MathUtils.degToRad(fovDeg);
-  const horizontal = 2 * Math.atan(Math.tan(vertical / 2) * aspect);
-  // The bounding sphere just fits: a tall thin plant touches the top and bottom, never leaves them.
-  const distance = radius / Math.sin(Math.min(vertical, horizontal) / 2);
-
-  const size = box.isEmpty() ? new Vector3(1, 1, 1) : box.getSize(new Vector3());
-  const across = size.z <= size.x ? new Vector3(0.25, 0.18, 1) : new Vector3(1, 0.18, -0.25);
-  const position = sphere.center.clone().addScaledVector(across.normalize(), distance);
-  return {
-    position,
-    target: sphere.center.clone(),
-    near: distance / 100,
-    far: distance * 100,
-  };
+  const empty = box.isEmpty();
+  const center = empty ? new Vector3() : box.getCenter(new Vector3());
+  const size = empty ? new Vector3(1, 1, 1) : box.getSize(new Vector3());
+  const across = (size.z <= size.x ? new Vector3(0.25, 0.18, 1) : new Vector3(1, 0.18, -0.25)).normalize();
+  // The camera's own axes: `across` points from the target to the eye.
+  const right = new Vector3(0, 1, 0).cross(across).normalize();
+  const up = across.clone().cross(right);
+  const tanV = Math.tan(MathUtils.degToRad(fovDeg) / 2) * FILL;
+  const tanH = tanV * aspect;
+  const half = size.clone().multiplyScalar(0.5).max(new Vector3(1e-6, 1e-6, 1e-6));
+  if (half.length() < 1e-5) half.set(0.5, 0.5, 0.5);
+  // Each corner in view: its sideways and upward offsets within the frustum at its depth.
+  let distance = 0;
+  const corner = new Vector3();
+  for (let c = 0; c < 8; c++) {
+    corner.set(c & 1 ? half.x : -half.x, c & 2 ? half.y : -half.y, c & 4 ? half.z : -half.z);
+    const towards = corner.dot(across);
+    distance = Math.max(distance, towards + Math.abs(corner.dot(right)) / tanH, towards + Math.abs(corner.dot(up)) / tanV);
+  }
+  const position = center.clone().addScaledVector(across, distance);
+  return { position, target: center, near: distance / 100, far: (distance + half.length()) * 100 };
 }
 
 /** An orthographic camera placement looking down −Z at the XY plane (a flat plant, face-on). */
