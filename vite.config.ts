@@ -1,6 +1,7 @@
 // Build and unit-test configuration of the studio.
-// - vite: the page lives in web/, the example gallery in public/ (served as-is), the site is built to dist/
-//   with relative URLs (`base: './'`) so it works from any sub-path. The build worker (web/src/studio/
+// - vite: the page lives in web/ (with embed.html and the <meristem-plant> element, web/src/embed/), the
+//   example gallery in public/ (served as-is), the site is built to dist/ with relative URLs (`base: './'`)
+//   so it works from any sub-path. The build worker (web/src/studio/
 //   worker.ts) is bundled as an ES module worker. The gallery manifest (examples/index.json) comes
 //   from a plugin (scripts/gallery-plugin.ts), served in dev and emitted in the build; so does the
 //   course (lessons/index.json and lessons/SLUG.json, from public/lessons/*.md: scripts/lessons-plugin.ts),
@@ -29,6 +30,18 @@ export default defineConfig({
   build: {
     outDir: '../dist',
     emptyOutDir: true,
+    // Three ways in: the studio, the view-only page for iframes (embed.html#s=…), and the
+    // <meristem-plant> element for course pages, at a stable address (meristem-plant.js).
+    rollupOptions: {
+      input: {
+        index: `${repoRoot}web/index.html`,
+        embed: `${repoRoot}web/embed.html`,
+        'meristem-plant': `${repoRoot}web/src/embed/element.ts`,
+      },
+      output: {
+        entryFileNames: (chunk) => (chunk.name === 'meristem-plant' ? 'meristem-plant.js' : 'assets/[name]-[hash].js'),
+      },
+    },
     // three.js + CodeMirror are one ~1 MB chunk by nature; there is nothing to split off yet.
     chunkSizeWarningLimit: 1500,
   },

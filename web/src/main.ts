@@ -7,9 +7,9 @@ import { GrammarStore } from './share/storage';
 import { PlantView } from './view';
 import {
   Autosave, BranchEditSession, BuildClient, ContextView, DerivationControls, GalleryDialog, GalleryThumbnails, GrowthPanel,
-  DerivationView, HelpPanel, LearnPanel, LibraryDialog, LinkState, LivePreview, Notice, ShareDialog, SliderPanel, StagesMode, TextOpening,
+  DerivationView, EmbedSnippets, HelpPanel, LearnPanel, LibraryDialog, LinkState, LivePreview, Notice, ShareDialog, SliderPanel, StagesMode, TextOpening,
   ViewFollowing, ViewOptions, ViewTools, attachSplitter, browserStorage, connectTestHook, createBuildWorker, emptyTestHook, fetchExample,
-  figureName, installDownloads, installDrop, installInspectorTabs, learnElements,
+  figureName, installDownloads, installDrop, installInspectorTabs, learnElements, LayoutModes,
   installFileMenu, installShareButton, installShortcuts, openPastedLinks, renderShortcutHelp, reportCoreCrashes, showStatus, sidesChoices,
   startingText, studioElements, type ShortcutAction, type StudioElements, type StudioTestHook,
 } from './studio';
@@ -85,6 +85,8 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     openReference: (anchor) => void help.open(anchor),
   });
   editor = grammarEditor;
+  // The layout for the room: narrow screens, Large for a projector, fullscreen.
+  const layout = new LayoutModes(els.layout, { remeasureEditor: () => grammarEditor.view.requestMeasure() }, browserStorage());
   sliders.update(start.text);
   growth.update(start.text);
   derivation.textChanged(start.text);
@@ -154,7 +156,8 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   // Share links: the whole state in the link's fragment; the page's own link, and pasted ones.
   const link = new LinkState({ editor: grammarEditor, derivation, sliders, viewOptions, view, branchEdits, preview });
   if (start.state) link.restore(start.state); // iterations, seed, edits, camera (its view options apply already)
-  installShareButton(els.share, new ShareDialog(els.shareDialog), () => link.capture(), notice);
+  const snippets = new EmbedSnippets(els.embedSnippets, new URL('./', location.href).href);
+  installShareButton(els.share, new ShareDialog(els.shareDialog), () => link.capture(), notice, (state, fragment) => snippets.show(state, fragment));
   openPastedLinks({ store, notice, autosave, opening, link, buildNow: () => preview.rebuild(true) });
 
   preview.onDelivered((result) => {
@@ -175,6 +178,8 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     frame: () => view.frame(),
     projection: () => viewTools.toggleProjection(),
     stages: () => (stages.open ? stages.close() : stages.show()),
+    fullscreen: () => layout.toggleViewOnly(),
+    large: () => layout.setLarge(!layout.large),
     help: () => void help.open(),
   };
   installShortcuts(window, (action) => actions[action]());

@@ -5,7 +5,7 @@ import { EditorView } from '@codemirror/view';
 export const studioEditorTheme = EditorView.theme({
   '&': {
     height: '100%',
-    fontSize: '14px',
+    fontSize: 'var(--editor-font-size, 14px)',
     color: 'var(--text)',
     backgroundColor: 'var(--editor-bg)',
   },

@@ -40,6 +40,14 @@ export function studioElements() {
       plantOnly: [...document.querySelectorAll<HTMLElement>('.view-tools .plant-only')],
     },
     staleBadge: byId('stale-badge', HTMLElement),
+    layout: {
+      paneToggle: byId('pane-toggle', HTMLButtonElement),
+      fullscreen: byId('fullscreen', HTMLButtonElement),
+      exitViewOnly: byId('exit-view-only', HTMLButtonElement),
+      large: byId('large', HTMLButtonElement),
+      inspector: byId('inspector', HTMLElement),
+      inspectorToggle: byId('inspector-toggle', HTMLButtonElement),
+    },
     stages: {
       toggle: byId('stages-toggle', HTMLButtonElement),
       panel: byId('stages', HTMLElement),
@@ -120,6 +128,15 @@ export function studioElements() {
       copy: byId('share-copy', HTMLButtonElement),
       status: byId('share-status', HTMLElement),
       size: byId('share-size', HTMLElement),
+    },
+    embedSnippets: {
+      iterations: byId('embed-iterations', HTMLInputElement),
+      sliders: byId('embed-sliders', HTMLInputElement),
+      frame: byId('embed-frame', HTMLTextAreaElement),
+      element: byId('embed-element', HTMLTextAreaElement),
+      copyFrame: byId('embed-frame-copy', HTMLButtonElement),
+      copyElement: byId('embed-element-copy', HTMLButtonElement),
+      status: byId('embed-status', HTMLElement),
     },
     library: {
       dialog: byId('library', HTMLDialogElement),

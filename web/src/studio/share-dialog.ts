@@ -46,11 +46,24 @@ export class ShareDialog {
   }
 }
 
-/** The Share button: the studio's state now, `state()`, as a link in the dialog (a failure in the notice). */
-export function installShareButton(button: HTMLButtonElement, dialog: ShareDialog, state: () => SharedState, notice: Notice): void {
+/**
+ * The Share button: the studio's state now, `state()`, as a link in the dialog (a failure in the
+ * notice); `shared` hears the state and its fragment too (the embed snippets).
+ */
+export function installShareButton(
+  button: HTMLButtonElement,
+  dialog: ShareDialog,
+  state: () => SharedState,
+  notice: Notice,
+  shared?: (state: SharedState, fragment: string) => void,
+): void {
   button.addEventListener('click', () => {
-    void encodeState(state())
-      .then((fragment) => dialog.open(linkWithFragment(location, fragment)))
+    const now = state();
+    void encodeState(now)
+      .then((fragment) => {
+        shared?.(now, fragment);
+        return dialog.open(linkWithFragment(location, fragment));
+      })
       .catch((error: unknown) => notice.show('error', `Could not make a link: ${String(error)}`));
   });
 }

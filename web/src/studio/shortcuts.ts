@@ -4,7 +4,7 @@
 // the focus is.
 
 /** What a shortcut does. */
-export type ShortcutAction = 'stepBack' | 'stepForward' | 'playPause' | 'reroll' | 'gallery' | 'frame' | 'projection' | 'stages' | 'help';
+export type ShortcutAction = 'stepBack' | 'stepForward' | 'playPause' | 'reroll' | 'gallery' | 'frame' | 'projection' | 'stages' | 'help' | 'fullscreen' | 'large';
 
 /** One shortcut: the key (`KeyboardEvent.code`, with Alt unless `plain`), how it is written, what it does. */
 export interface Shortcut {
@@ -25,6 +25,8 @@ export const SHORTCUTS: readonly Shortcut[] = [
   { code: 'KeyK', keys: 'Alt+K', action: 'frame', description: 'Frame the plant' },
   { code: 'KeyO', keys: 'Alt+O', action: 'projection', description: 'Switch between the 2D and the 3D view' },
   { code: 'KeyA', keys: 'Alt+A', action: 'stages', description: 'Stages: the iterations side by side' },
+  { code: 'Enter', keys: 'Alt+Enter', action: 'fullscreen', description: 'Fullscreen: the plant alone (Escape returns)' },
+  { code: 'KeyL', keys: 'Alt+L', action: 'large', description: 'Large: for a projector' },
   { code: 'F1', plain: true, keys: 'F1', action: 'help', description: 'The language reference (Help)' },
 ];
 

@@ -3,6 +3,7 @@
 import type { BuildOptions, DerivationStep, Explanation, LastStepLinks, MatchReport, PlantBuild, PlantInspector, PlantSketch } from '../core';
 import type { GpuArrays } from '../view/gpu-arrays';
 import type { BuildResponse, InspectAnswer, InspectQuestion, WorkerRequest, WorkerResponse } from './worker-protocol';
+import workerUrl from './worker.ts?worker&url';
 
 /** What the client needs of a Worker (a fake one in unit tests). */
 export interface WorkerLike {
@@ -65,9 +66,17 @@ interface Entry {
   sketchFrom?: number;
 }
 
-/** Starts the real build worker (vite bundles worker.ts as a module worker next to the page). */
+/**
+ * Starts the real build worker (vite bundles worker.ts as a module worker next to the page). A
+ * page of another site (a plant embedded in a course page) may not start a worker from Meristem's
+ * address: it starts one of its own that imports Meristem's (which the site must serve with CORS).
+ */
 export function createBuildWorker(): Worker {
-  return new Worker(new URL('./worker.ts', import.meta.url), { type: 'module', name: 'meristem-build' });
+  const url = new URL(workerUrl, import.meta.url);
+  const options: WorkerOptions = { type: 'module', name: 'meristem-build' };
+  if (url.origin === location.origin) return new Worker(url, options);
+  const loader = new Blob([`import ${JSON.stringify(url.href)};`], { type: 'text/javascript' });
+  return new Worker(URL.createObjectURL(loader), options);
 }
 
 /**

@@ -18,6 +18,8 @@ import {
   Raycaster,
   Scene,
   Sphere,
+  Spherical,
+  MathUtils,
   Vector3,
   Vector2,
   WebGLRenderer,
@@ -29,7 +31,7 @@ import { flatPose, framePose } from './framing';
 import { scenePalette } from './palette';
 import { plantGeometry, pointsBox } from './plant-geometry';
 import type { GpuArrays } from './gpu-arrays';
-import { loadTexture, texturedMaterials } from './textures';
+import { loadTexture, texturedMaterials, type TexturedMaterials } from './textures';
 import { addHeadlight, addSkyLight, litPlantMaterial, unlitPlantMaterial } from './scene-setup';
 import { highlightOverlay, moduleOfTriangle, type Rgb } from './highlight';
 import { BezierHandles } from './handles';
@@ -76,12 +78,7 @@ export class PlantView {
   private readonly lit = litPlantMaterial();
   private readonly unlit = unlitPlantMaterial();
   /** Bark and leaf textured materials ([bark, leaf, plain], by the mesh's material groups). */
-  private readonly textured = texturedMaterials(
-    loadTexture('bark', () => this.textureLoaded(), (message) => this.texturesFailed(message)),
-    loadTexture('leaf', () => this.textureLoaded(), (message) => this.texturesFailed(message)),
-    this.lit,
-    this.unlit,
-  );
+  private readonly textured: TexturedMaterials;
   private lighting = true;
   private texturing = true;
   /** Images loaded so far (of 2): the plant shows untextured until both are there. */
@@ -125,11 +122,20 @@ export class PlantView {
   private readonly resizeObserver: ResizeObserver;
   private readonly renderListeners = new Set<() => void>();
 
-  constructor(private readonly container: HTMLElement) {
+  /** `assetBase`: the site's root, where the textures are (default: the page's address). */
+  constructor(
+    private readonly container: HTMLElement,
+    { assetBase }: { assetBase?: string } = {},
+  ) {
+    const texture = (name: 'bark' | 'leaf') => loadTexture(name, () => this.textureLoaded(), (message) => this.texturesFailed(message), assetBase);
+    this.textured = texturedMaterials(texture('bark'), texture('leaf'), this.lit, this.unlit);
     this.renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
     this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
-    this.renderer.domElement.setAttribute('aria-label', '3D view of the plant; drag to orbit, scroll to zoom');
-    container.append(this.renderer.domElement);
+    const canvas = this.renderer.domElement;
+    canvas.setAttribute('aria-label', '3D view of the plant; drag or the arrow keys to orbit, scroll or + and − to zoom, Home to fit');
+    canvas.tabIndex = 0;
+    canvas.addEventListener('keydown', (event) => this.onKey(event));
+    container.append(canvas);
 
     addSkyLight(this.scene);
     this.perspective = this.rig(new PerspectiveCamera(40, 1, 0.01, 1000));
@@ -394,6 +400,62 @@ export class PlantView {
     controls.update();
     this.active.framed = true;
     this.moved = true; // the link's camera stays, as if the user had put it there
+    this.requestRender();
+  }
+
+  /**
+   * Keys on the focused view: the arrows orbit (in 2D they pan), + and − zoom, Home fits the plant;
+   * Shift makes the steps finer. Other keys (Ctrl+Z for branch edits) pass.
+   */
+  private onKey(event: KeyboardEvent): void {
+    if (event.altKey || event.ctrlKey || event.metaKey) return;
+    const step = event.shiftKey ? 1 : 5;
+    const moves: Record<string, () => void> = {
+      ArrowLeft: () => this.orbit(-step, 0),
+      ArrowRight: () => this.orbit(step, 0),
+      ArrowUp: () => this.orbit(0, -step),
+      ArrowDown: () => this.orbit(0, step),
+      '+': () => this.zoomBy(1 / (1 + step / 40)),
+      '=': () => this.zoomBy(1 / (1 + step / 40)),
+      '-': () => this.zoomBy(1 + step / 40),
+      Home: () => this.frame(),
+    };
+    const move = moves[event.key];
+    if (!move) return;
+    event.preventDefault();
+    move();
+    if (event.key !== 'Home') this.moved = true;
+  }
+
+  /** Turns the camera about its target by `right` and `down` degrees (in 2D: pans by that share of the view, in tenths). */
+  private orbit(right: number, down: number): void {
+    const { camera, controls } = this.active;
+    if (camera instanceof OrthographicCamera) {
+      const height = (camera.top - camera.bottom) / camera.zoom;
+      const shift = new Vector3(right, -down, 0).multiplyScalar(height / 50);
+      camera.position.add(shift);
+      controls.target.add(shift);
+    } else {
+      const offset = camera.position.clone().sub(controls.target);
+      const spherical = new Spherical().setFromVector3(offset);
+      spherical.theta -= MathUtils.degToRad(right);
+      spherical.phi = MathUtils.clamp(spherical.phi + MathUtils.degToRad(down), 0.01, Math.PI - 0.01);
+      camera.position.copy(controls.target).add(offset.setFromSpherical(spherical));
+    }
+    controls.update();
+    this.requestRender();
+  }
+
+  /** Moves the camera `factor` times as far from its target (below 1: nearer). */
+  private zoomBy(factor: number): void {
+    const { camera, controls } = this.active;
+    if (camera instanceof OrthographicCamera) {
+      camera.zoom /= factor;
+      camera.updateProjectionMatrix();
+    } else {
+      camera.position.sub(controls.target).multiplyScalar(factor).add(controls.target);
+    }
+    controls.update();
     this.requestRender();
   }
 

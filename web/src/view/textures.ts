@@ -1,19 +1,20 @@
 // Bark and leaf textures for the plant view: the images shipped in public/textures/, loaded
-// relative to the page (the site may be served from any sub-path), and the lit and unlit material
+// relative to the site's root (the site may be served from any sub-path, a plant embedded in
+// another site's page loads them from Meristem's), and the lit and unlit material
 // triples (bark, leaf, plain) indexed by the mesh's material kinds (see addMaterialGroups).
 import { DoubleSide, type Material, MeshBasicMaterial, MeshStandardMaterial, RepeatWrapping, SRGBColorSpace, type Texture, TextureLoader } from 'three';
 
-/** Where a shipped texture is, relative to the page. */
-export function textureUrl(name: 'bark' | 'leaf'): string {
-  return new URL(`textures/${name}.png`, document.baseURI).href;
+/** Where a shipped texture is: under `base`, the site's root (the page's own address by default). */
+export function textureUrl(name: 'bark' | 'leaf', base: string = document.baseURI): string {
+  return new URL(`textures/${name}.png`, base).href;
 }
 
 /**
  * Loads a texture; `onLoad` runs when its image arrived (to render again). The image rows run
  * top-down from v = 0, as in glTF (`flipY` off), and it repeats both ways.
  */
-export function loadTexture(name: 'bark' | 'leaf', onLoad: () => void, onError: (message: string) => void): Texture {
-  const texture = new TextureLoader().load(textureUrl(name), onLoad, undefined, () => onError(`The ${name} texture could not be loaded.`));
+export function loadTexture(name: 'bark' | 'leaf', onLoad: () => void, onError: (message: string) => void, base?: string): Texture {
+  const texture = new TextureLoader().load(textureUrl(name, base), onLoad, undefined, () => onError(`The ${name} texture could not be loaded.`));
   texture.flipY = false;
   texture.wrapS = RepeatWrapping;
   texture.wrapT = RepeatWrapping;

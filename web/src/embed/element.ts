@@ -1,0 +1,100 @@
+// <meristem-plant>: a live plant for a course page, loaded with one script from the deployed site:
+//
+//   <script type="module" src="https://…/meristem-plant.js"></script>
+//   <meristem-plant src="fern.lsys" iterations="5" controls="iterations, sliders"></meristem-plant>
+//
+// The grammar is the file at `src` (relative to the page) or, without `src`, the element's own
+// text. `iterations` and `seed` override the grammar's; `controls` lists the controls shown
+// (`iterations`: − n + and Play; `sliders`: one per `#define`). Every plant of the page builds in
+// one shared worker; the textures and the studio link point at the site this script came from.
+import { initCore } from '../core';
+import { EmbedPlant, parseControls } from './embed-plant';
+import { EMBED_CSS } from './embed-style';
+import { sharedBuilds } from './shared-builds';
+
+/** Where this script (and the studio) is: the site's root. */
+const SITE_ROOT = new URL('./', import.meta.url).href;
+
+/** A whole number attribute, or undefined. */
+function wholeNumber(value: string | null): number | undefined {
+  const n = value === null || value.trim() === '' ? NaN : Number(value);
+  return Number.isInteger(n) && n >= 0 ? n : undefined;
+}
+
+export class MeristemPlantElement extends HTMLElement {
+  static readonly observedAttributes = ['src', 'iterations', 'seed', 'controls'];
+  private plant: EmbedPlant | undefined;
+  /** Bumped on every (re)load, so a slow fetch of an old `src` is dropped. */
+  private loads = 0;
+
+  connectedCallback(): void {
+    if (!this.shadowRoot) {
+      const shadow = this.attachShadow({ mode: 'open' });
+      const style = document.createElement('style');
+      style.textContent = EMBED_CSS;
+      shadow.append(style);
+    }
+    void this.load();
+  }
+
+  disconnectedCallback(): void {
+    this.loads++;
+    this.plant?.dispose();
+    this.plant = undefined;
+  }
+
+  attributeChangedCallback(): void {
+    if (this.isConnected && this.shadowRoot) void this.load();
+  }
+
+  /** The grammar: the file at `src`, or the element's text. */
+  private async grammar(): Promise<string> {
+    const src = this.getAttribute('src');
+    if (!src) return this.textContent?.trim() ?? '';
+    const response = await fetch(new URL(src, document.baseURI));
+    if (!response.ok) throw new Error(`${src}: HTTP ${response.status}`);
+    return response.text();
+  }
+
+  private async load(): Promise<void> {
+    const load = ++this.loads;
+    const controls = parseControls(this.getAttribute('controls'));
+    let source: string;
+    try {
+      [source] = await Promise.all([this.grammar(), controls.has('sliders') ? initCore() : Promise.resolve()]);
+    } catch (error) {
+      if (load === this.loads) this.fail(`Could not load the plant: ${error instanceof Error ? error.message : String(error)}`);
+      return;
+    }
+    if (load !== this.loads || !this.shadowRoot) return;
+    this.plant?.dispose();
+    this.shadowRoot.querySelector('.mp-failed')?.remove();
+    this.plant = new EmbedPlant(this.shadowRoot, {
+      source,
+      iterations: wholeNumber(this.getAttribute('iterations')),
+      seed: wholeNumber(this.getAttribute('seed')),
+      controls,
+      siteRoot: SITE_ROOT,
+      builds: sharedBuilds(),
+    });
+  }
+
+  private fail(message: string): void {
+    this.plant?.dispose();
+    this.plant = undefined;
+    const note = document.createElement('p');
+    note.className = 'mp-failed';
+    note.setAttribute('role', 'status');
+    note.textContent = message;
+    this.shadowRoot?.querySelector('.mp-failed')?.remove();
+    this.shadowRoot?.append(note);
+  }
+}
+
+if (!customElements.get('meristem-plant')) customElements.define('meristem-plant', MeristemPlantElement);
+
+declare global {
+  interface HTMLElementTagNameMap {
+    'meristem-plant': MeristemPlantElement;
+  }
+}

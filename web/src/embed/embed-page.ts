@@ -1,0 +1,30 @@
+// embed.html: one plant for an <iframe>, from a share link's state in the fragment
+// (`embed.html#s=…`, what the studio's Share dialog gives) and the controls in the query
+// (`?controls=iterations,sliders`). Nothing but the plant, its controls and "Open in Meristem".
+import { initCore } from '../core';
+import { decodeState, hasSharedState } from '../share/codec';
+import { EmbedPlant, parseControls } from './embed-plant';
+import { EMBED_CSS } from './embed-style';
+import { sharedBuilds } from './shared-builds';
+
+async function start(): Promise<void> {
+  const style = document.createElement('style');
+  style.textContent = EMBED_CSS.replace(':host', '.mp-host');
+  document.head.append(style);
+  const host = document.getElementById('plant')!;
+  const controls = parseControls(new URLSearchParams(location.search).get('controls'));
+  const decoded = hasSharedState(location.hash) ? await decodeState(location.hash) : { ok: false as const, error: 'no plant in the address (embed.html#s=…, from the studio’s Share dialog)' };
+  if (!decoded.ok) {
+    const note = document.createElement('p');
+    note.className = 'mp-failed';
+    note.setAttribute('role', 'status');
+    note.textContent = `This embedded plant could not be shown: ${decoded.error}.`;
+    host.append(note);
+    return;
+  }
+  if (controls.has('sliders')) await initCore();
+  const { text, iterations, seed } = decoded.state;
+  new EmbedPlant(host, { source: text, iterations, seed, controls, siteRoot: new URL('./', location.href).href, builds: sharedBuilds() });
+}
+
+void start();
