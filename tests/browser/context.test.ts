@@ -7,7 +7,7 @@ import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { chromium, type Browser, type Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
 import { colourShare, decodePng, type Picture } from './pictures';
-import { findPixel as findPagePixel, HIGHLIGHT_PIXELS } from './studio-page';
+import { findPixel as findPagePixel, HIGHLIGHT_PIXELS, PLANT_ONLY } from './studio-page';
 
 const RESULTS = new URL('../../test-results/', import.meta.url);
 const SIGNAL = readFileSync(new URL('../../public/examples/abop-sec-1.8-signal.lsys', import.meta.url), 'utf8');
@@ -50,7 +50,7 @@ async function canvas(name: string): Promise<{ picture: Picture; png: Buffer }> 
   await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
   const png = await page
     .locator('[data-testid=viewport] canvas')
-    .screenshot({ style: '[data-testid=viewport] > :not(canvas) { visibility: hidden !important; }' });
+    .screenshot({ style: PLANT_ONLY });
   writeFileSync(new URL(name, RESULTS), png);
   return { picture: decodePng(png), png };
 }

@@ -6,7 +6,7 @@ import { chromium, type Browser, type Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
 import { changedShare, colourShare, decodePng, foregroundExtent, foregroundShare, type Picture } from './pictures';
 
-const RESULTS = new URL('../../test-results/', import.meta.url);
+import { PLANT_ONLY, RESULTS } from './studio-page';
 
 let browser: Browser;
 let page: Page;
@@ -34,7 +34,7 @@ async function show(source: string, picture: string): Promise<{ state: string | 
   await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
   const png = await page
     .locator('[data-testid=viewport] canvas')
-    .screenshot({ style: '[data-testid=viewport] > :not(canvas) { visibility: hidden !important; }' });
+    .screenshot({ style: PLANT_ONLY });
   writeFileSync(new URL(picture, RESULTS), png);
   return { state, shot: decodePng(png) };
 }

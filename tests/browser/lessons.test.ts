@@ -96,9 +96,9 @@ describe('the Learn panel', () => {
     const panel = page.getByTestId('learn-lesson');
     await panel.getByRole('button', { name: /^Next lesson: / }).focus();
     await page.keyboard.press('Enter');
-    await panel.locator('.lesson-title').waitFor();
+    // The next lesson is fetched: wait for it rather than the title still shown.
+    await expect.poll(() => panel.locator('.lesson-meta').textContent()).toContain('lesson 5 of');
     expect(await page.evaluate(() => document.activeElement?.classList.contains('lesson-title'))).toBe(true);
-    expect(await panel.locator('.lesson-meta').textContent()).toContain('lesson 5 of');
     await panel.getByRole('button', { name: /^Previous lesson: / }).focus();
     await page.keyboard.press('Enter');
     await panel.getByRole('heading', { name: lesson.title, level: 2 }).waitFor();

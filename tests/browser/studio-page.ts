@@ -71,10 +71,16 @@ export function twoFrames(page: Page): Promise<unknown> {
   return page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
 }
 
+/**
+ * The screenshot style that leaves the plant alone: the overlays on the view hidden, and no
+ * keyboard focus ring on the canvas (a key pressed after a click shows it).
+ */
+export const PLANT_ONLY = '[data-testid=viewport] > :not(canvas) { visibility: hidden !important; } [data-testid=viewport] canvas { outline: none !important; }';
+
 /** Screenshots the 3D canvas (saved as `name` in test-results/) and decodes it. */
 export async function canvasPicture(page: Page, name: string): Promise<Picture> {
   await twoFrames(page);
-  const png = await page.locator('[data-testid=viewport] canvas').screenshot({ style: '[data-testid=viewport] > :not(canvas) { visibility: hidden !important; }' });
+  const png = await page.locator('[data-testid=viewport] canvas').screenshot({ style: PLANT_ONLY });
   writeFileSync(new URL(name, RESULTS), png);
   return decodePng(png);
 }
