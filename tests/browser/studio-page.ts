@@ -25,8 +25,12 @@ export interface StudioPage {
 
 /** Opens the studio in a new page and waits for the first plant. */
 export async function openStudio(browser: Browser, colorScheme: 'light' | 'dark' = 'light', viewport = { width: 1280, height: 800 }): Promise<StudioPage> {
+  return studioIn(await browser.newPage({ viewport, colorScheme }));
+}
+
+/** Opens the studio in `page` (of a context the caller made) and waits for the first plant. */
+export async function studioIn(page: Page): Promise<StudioPage> {
   mkdirSync(RESULTS, { recursive: true });
-  const page = await browser.newPage({ viewport, colorScheme });
   const problems: string[] = [];
   page.on('console', (message) => {
     if (message.type() === 'error') problems.push(`console error: ${message.text()}`);

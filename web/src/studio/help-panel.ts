@@ -3,6 +3,7 @@
 // loaded when it first opens; the toolbar's Help button and F1 open it, hover docs open it at the
 // row of a module or directive, Escape or Close closes it and gives the focus back.
 import { REFERENCE_PATH } from '../editor/reference';
+import { focusableCode } from './focusable-code';
 
 /** The panel's elements (see index.html). */
 export interface HelpPanelElements {
@@ -80,6 +81,7 @@ export class HelpPanel {
         // Our own document, rendered from docs/LANGUAGE.md when the site was built (the plugin
         // escapes any raw HTML in it): nothing from users, links or files ever goes in this way.
         this.els.content.innerHTML = html;
+        focusableCode(this.els.content);
         return true;
       },
       (error: unknown) => {

@@ -6,6 +6,7 @@
 import type { PlantBuild, PlantInspector } from '../core';
 import { chapterHeading, isLesson, isLessonIndex, type Lesson, type LessonGrammar, type LessonSummary, type LessonTask } from './lesson-manifest';
 import { evaluateCheck, parseCheck, plantFacts, spokenAnswer } from './lesson-check';
+import { focusableCode } from './focusable-code';
 import { byId } from './page-elements';
 import { GalleryThumbnails } from './thumbnails';
 
@@ -214,6 +215,7 @@ export class LearnPanel {
       keys.push(key);
       body.querySelector(`.lesson-task[data-task="${n}"]`)?.replaceChildren(this.task(lesson, task, n, key));
     });
+    focusableCode(body);
     this.els.lesson.replaceChildren(
       button('All lessons', 'All lessons', () => this.showContents(), 'quiet learn-back'),
       element('p', 'lesson-meta', meta),
@@ -238,6 +240,7 @@ export class LearnPanel {
     if (known !== undefined) image.dataset.state = known ? 'ready' : 'failed';
     this.images.set(key, image);
     const code = element('pre', 'lesson-code');
+    code.tabIndex = 0; // it scrolls sideways: see focusableCode
     code.append(element('code', '', grammar.text));
     const open = button(action, `${action}: ${grammar.title}`, () => void this.host.open(grammar.text, grammar.title, key).then((done) => done && this.openedOnNarrowScreen()), 'primary');
     open.dataset.testid = 'lesson-open';
