@@ -10,12 +10,51 @@
 //   tests/core (and the plugins' in scripts), all in node against the real WebAssembly core. The browser suite has its own config
 //   (tests/browser/vitest.config.ts).
 import { fileURLToPath } from 'node:url';
+import { VitePWA } from 'vite-plugin-pwa';
 import { defineConfig } from 'vitest/config';
 import { galleryManifestPlugin } from './scripts/gallery-plugin.ts';
 import { lessonsPlugin } from './scripts/lessons-plugin.ts';
 import { referencePlugin } from './scripts/reference-plugin.ts';
 
 const repoRoot = fileURLToPath(new URL('.', import.meta.url));
+
+/**
+ * Offline and installable (issue 22): a service worker (workbox, generated at build time) precaches
+ * everything the built site holds — the page, the workers, the core's wasm, the gallery, the
+ * lessons, the reference, the textures — and a web app manifest with the icons of public/icons
+ * (scripts/make-icons.mjs). `prompt`: a new version waits until the user reloads from the studio's
+ * "A new version is ready" bar (web/src/studio/app-update.ts registers it). Every URL is relative,
+ * so it works from any sub-path; query strings (embed.html?controls=…) are ignored when matching.
+ */
+function offlineApp() {
+  return VitePWA({
+    registerType: 'prompt',
+    injectRegister: false,
+    includeAssets: [],
+    manifest: {
+      name: 'Meristem — L-system studio',
+      short_name: 'Meristem',
+      description: 'Write an L-system grammar, see the plant grow in 3D.',
+      start_url: './',
+      scope: './',
+      display: 'standalone',
+      background_color: '#f6f7f9',
+      theme_color: '#2e7d32',
+      icons: [
+        { src: 'icons/icon-192.png', sizes: '192x192', type: 'image/png' },
+        { src: 'icons/icon-512.png', sizes: '512x512', type: 'image/png' },
+        { src: 'icons/maskable-512.png', sizes: '512x512', type: 'image/png', purpose: 'maskable' },
+        { src: 'icons/icon.svg', sizes: 'any', type: 'image/svg+xml' },
+      ],
+    },
+    workbox: {
+      globPatterns: ['**/*.{html,js,css,wasm,json,lsys,png,svg,webmanifest}'],
+      maximumFileSizeToCacheInBytes: 8 * 1024 * 1024,
+      ignoreURLParametersMatching: [/.*/],
+      navigateFallback: null,
+    },
+  });
+}
 
 export default defineConfig({
   root: 'web',
@@ -25,6 +64,7 @@ export default defineConfig({
     galleryManifestPlugin(`${repoRoot}public/examples`),
     lessonsPlugin(`${repoRoot}public/lessons`),
     referencePlugin(`${repoRoot}docs/LANGUAGE.md`),
+    offlineApp(),
   ],
   worker: { format: 'es' },
   build: {

@@ -1,57 +1,27 @@
 // Deployment: the built site (dist/) served by a plain static file server from a sub-path, as any
 // static host would, must load everything (gallery, wasm) with relative URLs, obey its own
 // Content-Security-Policy (no inline script, no eval beyond wasm) and draw the plant.
-import { createReadStream, existsSync, statSync } from 'node:fs';
-import { createServer, type Server } from 'node:http';
-import { extname, join, normalize } from 'node:path';
-import { fileURLToPath } from 'node:url';
 import { chromium, type Browser } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { encodeState } from '../../web/src/share/codec';
 import { decodePng, foregroundShare } from './pictures';
+import { serveStatic, type StaticSite } from './static-server';
 
-const DIST = fileURLToPath(new URL('../../dist/', import.meta.url));
 const SUB_PATH = '/courses/botany/meristem/';
-const TYPES: Record<string, string> = {
-  '.html': 'text/html; charset=utf-8',
-  '.js': 'text/javascript',
-  '.css': 'text/css',
-  '.wasm': 'application/wasm',
-  '.lsys': 'text/plain; charset=utf-8',
-  '.json': 'application/json',
-  '.png': 'image/png',
-};
 
-let server: Server;
+let site: StaticSite;
 let base: string;
 let browser: Browser;
 
-/** A static server that knows nothing of the app: files under SUB_PATH, 404 for everything else. */
-function serve(): Promise<Server> {
-  const s = createServer((request, response) => {
-    const path = decodeURIComponent(new URL(request.url ?? '/', 'http://x').pathname);
-    if (!path.startsWith(SUB_PATH)) return void response.writeHead(404).end('not found');
-    let file = normalize(join(DIST, path.slice(SUB_PATH.length)));
-    if (!file.startsWith(DIST)) return void response.writeHead(403).end();
-    if (existsSync(file) && statSync(file).isDirectory()) file = join(file, 'index.html');
-    if (!existsSync(file)) return void response.writeHead(404).end('not found');
-    response.writeHead(200, { 'Content-Type': TYPES[extname(file)] ?? 'application/octet-stream' });
-    createReadStream(file).pipe(response);
-  });
-  return new Promise((done) => s.listen(0, '127.0.0.1', () => done(s)));
-}
-
 beforeAll(async () => {
-  server = await serve();
-  const address = server.address();
-  if (!address || typeof address === 'string') throw new Error('no address');
-  base = `http://127.0.0.1:${address.port}${SUB_PATH}`;
+  site = await serveStatic(SUB_PATH);
+  base = site.base;
   browser = await chromium.launch({ executablePath: '/usr/bin/chromium' });
 });
 
 afterAll(async () => {
   await browser?.close();
-  await new Promise((done) => server?.close(done));
+  await site?.close();
 });
 
 describe('deployment from a sub-path of a static host', () => {

@@ -1,6 +1,7 @@
 // The studio page: creates the pieces of ./studio, ./editor and ./view and connects them, each
 // piece after those it needs (see index.html for the page, ARCHITECTURE.md for the pieces).
 import './style.css';
+import { registerSW } from 'virtual:pwa-register';
 import { coreVersion, initCore, languageVocabulary } from './core';
 import { createGrammarEditor, growthAttributes, type GrammarEditor } from './editor';
 import { GrammarStore } from './share/storage';
@@ -11,7 +12,7 @@ import {
   ViewFollowing, ViewOptions, ViewTools, attachSplitter, browserStorage, connectTestHook, createBuildWorker, emptyTestHook, fetchExample,
   figureName, installDownloads, installDrop, installInspectorTabs, learnElements, LayoutModes,
   installFileMenu, installShareButton, installShortcuts, openPastedLinks, renderShortcutHelp, reportCoreCrashes, showStatus, sidesChoices,
-  startingText, studioElements, type ShortcutAction, type StudioElements, type StudioTestHook,
+  startingText, studioElements, installAppUpdates, type ShortcutAction, type StudioElements, type StudioTestHook,
 } from './studio';
 
 /** The example shown at start (in public/examples). */
@@ -199,3 +200,4 @@ hook.ready.catch((error: unknown) => {
   showStatus(els.status, { state: 'crashed', text: `Could not start: ${String(error)}` });
 });
 window.__meristem = hook;
+installAppUpdates(registerSW); // offline use, and "a new version is ready" (issue 22)

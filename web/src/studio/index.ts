@@ -50,4 +50,5 @@ export { closeLikeAMenu } from './menus';
 export { installDownloads, showExportStatus, type DownloadedPlant, type DownloadMenuElements, type ExportState } from './download-menu';
 export { connectTestHook, emptyTestHook, type StudioTestHook, type TestedStudio } from './test-hook';
 export { reportCoreCrashes } from './core-crashes';
+export { installAppUpdates, type RegisterServiceWorker } from './app-update';
 export { HelpPanel, fetchReference, type HelpPanelElements } from './help-panel';
