@@ -1,16 +1,25 @@
 #!/usr/bin/env bash
-# Builds the core to WebAssembly and generates the JS glue into crate/pkg (git-ignored).
-#   scripts/build-wasm.sh        release build, optimised with wasm-opt from npm's binaryen
-#   scripts/build-wasm.sh --dev  release build without wasm-opt (faster, for `npm start`)
-# Never use Debian's binaryen: its wasm-opt 108 breaks wasm-bindgen output (see docs/TOOLCHAIN notes).
+# Builds the core to WebAssembly with wasm-pack (installed by scripts/setup.sh), twice, into two npm
+# packages (git-ignored), each with its package.json, JS glue and TypeScript types:
+#   crate/pkg-core  meristem_core: without the importers and exporters (`--no-default-features`,
+#                   see the `io` feature in crate/Cargo.toml): what the page and the build workers
+#                   load for the first plant
+#   crate/pkg       meristem: the whole boundary, for the export worker and for importing files
+#   scripts/build-wasm.sh        release builds, optimised with wasm-opt from npm's binaryen
+#   scripts/build-wasm.sh --dev  release builds without wasm-opt (faster, for `npm start`)
+# wasm-pack runs the pinned wasm-bindgen CLI it finds on PATH and wasm-opt from node_modules/.bin
+# (first on PATH here): never Debian's binaryen, whose wasm-opt 108 breaks wasm-bindgen output.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 [ -f "$HOME/.cargo/env" ] && . "$HOME/.cargo/env"
+export PATH="$PWD/node_modules/.bin:$PATH"
 
-cargo build --quiet --manifest-path crate/Cargo.toml --lib --release --target wasm32-unknown-unknown
-wasm-bindgen --target web --out-dir crate/pkg crate/target/wasm32-unknown-unknown/release/meristem.wasm
-if [ "${1:-}" != "--dev" ]; then
-  node_modules/.bin/wasm-opt -Oz --enable-reference-types --enable-bulk-memory --enable-nontrapping-float-to-int \
-    --enable-sign-ext --enable-mutable-globals --enable-multivalue \
-    crate/pkg/meristem_bg.wasm -o crate/pkg/meristem_bg.wasm
-fi
+opt=()
+[ "${1:-}" = "--dev" ] && opt=(--no-opt)
+# pack OUT_DIR NAME [-- CARGO_ARGS...]: one package (package.json, glue, types, the .wasm)
+pack() {
+  local out=$1 name=$2; shift 2
+  wasm-pack --quiet --log-level warn build crate --target web --release "${opt[@]}" --no-gitignore --out-dir "$out" --out-name "$name" "$@"
+}
+pack pkg-core meristem_core -- --no-default-features
+pack pkg meristem

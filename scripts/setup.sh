@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs what npm cannot: the Rust wasm32 target and lint components, the wasm-bindgen CLI pinned
-# to the crate's wasm-bindgen version, with --browser Debian's Chromium for the browser tests, and
+# to the crate's wasm-bindgen version (with its wasm-bindgen-test-runner), wasm-pack, with --browser Debian's Chromium for the browser tests, and
 # with --consumers the programs the export tests feed the exported files to (POV-Ray, tovrmlx3d and
 # view3dscene under Xvfb, Open Inventor's ivcat). Every step is guarded by a version or `command -v`
 # check, so a warm machine skips it in well under a second. Usage: setup.sh [--browser] [--consumers]
@@ -8,6 +8,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 WASM_BINDGEN_VERSION=0.2.106   # must equal the `wasm-bindgen = "=..."` pin in crate/Cargo.toml
+WASM_PACK_VERSION=0.15.1       # builds the core (scripts/build-wasm.sh) and runs its wasm32 tests
 
 if ! command -v cargo >/dev/null 2>&1; then
   [ -f "$HOME/.cargo/env" ] && . "$HOME/.cargo/env"
@@ -23,6 +24,12 @@ done
 if ! wasm-bindgen --version 2>/dev/null | grep -qx "wasm-bindgen $WASM_BINDGEN_VERSION"; then
   echo "setup: installing wasm-bindgen-cli $WASM_BINDGEN_VERSION (about 5 minutes on 2 cores, once per machine)"
   cargo install wasm-bindgen-cli --version "$WASM_BINDGEN_VERSION" --locked
+fi
+# From the crates registry (the npm package `wasm-pack` downloads its binary in postinstall, which
+# fails offline). wasm-pack then uses the wasm-bindgen above and npm's wasm-opt: it downloads nothing.
+if ! wasm-pack --version 2>/dev/null | grep -qx "wasm-pack $WASM_PACK_VERSION"; then
+  echo "setup: installing wasm-pack $WASM_PACK_VERSION (about 4 minutes on 2 cores, once per machine)"
+  cargo install wasm-pack --version "$WASM_PACK_VERSION" --locked
 fi
 
 browser=false

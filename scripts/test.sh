@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The one test command (`npm test`): installs the tools npm cannot, then runs every gate and suite
-# (lint, cargo test, vitest with the real wasm, the export files read by their real consumers,
+# (lint, cargo test, the boundary tests under wasm32, vitest with the real wasm, the export files read by their real consumers,
 # browser tests in headless Chromium) even when an earlier one fails, and ends with one line
 # `N passed, N failed` counting them all.
 # Artefacts (screenshots, JSON reports) go to test-results/.
@@ -43,6 +43,13 @@ passed=$((passed + p)); failed=$((failed + f))
 if [ "$cargo_status" -ne 0 ] && [ "$f" -eq 0 ]; then echo "FAILED: cargo test did not run to the end"; failed=$((failed + 1)); fi
 
 gate "build wasm" bash scripts/build-wasm.sh
+echo "::: wasm32 boundary tests (wasm-pack test --node, the core compiled to WebAssembly)"
+wasm-pack --log-level warn test --node crate --test wasm_boundary 2>&1 | tee test-results/wasm32.txt
+wasm32_status=${PIPESTATUS[0]}
+read -r p f < <(grep -E '^test result:' test-results/wasm32.txt | sed -E 's/.* ([0-9]+) passed; ([0-9]+) failed.*/\1 \2/' | awk '{p+=$1; f+=$2} END {print p+0, f+0}')
+passed=$((passed + p)); failed=$((failed + f))
+if [ "$wasm32_status" -ne 0 ] && [ "$f" -eq 0 ]; then echo "FAILED: the wasm32 tests did not run to the end"; failed=$((failed + 1)); fi
+if [ "$p" -eq 0 ] && [ "$wasm32_status" -eq 0 ]; then echo "FAILED: no wasm32 test ran"; failed=$((failed + 1)); fi
 # tsc needs the generated crate/pkg/meristem.d.ts, so it runs after the wasm build.
 gate "tsc --noEmit" tsc --noEmit -p tsconfig.json
 echo "::: vitest (unit and cross-boundary, real wasm in node)"

@@ -1,6 +1,8 @@
-// Every unit test file starts with the real WebAssembly core loaded (crate/pkg, built by
-// `npm run build:wasm`), so modules that read the core's vocabulary work as they do on the page.
+// Every unit test file starts with the real WebAssembly core loaded (crate/pkg-core, and crate/pkg
+// for the importers and exporters, built by `npm run build:wasm`), so modules that read the core's
+// vocabulary work as they do on the page.
 import { readFileSync } from 'node:fs';
-import { initCore } from '../web/src/core';
+import { initCore, initIo } from '../web/src/core';
 
-await initCore(readFileSync(new URL('../crate/pkg/meristem_bg.wasm', import.meta.url)));
+await initCore(readFileSync(new URL('../crate/pkg-core/meristem_core_bg.wasm', import.meta.url)));
+await initIo(readFileSync(new URL('../crate/pkg/meristem_bg.wasm', import.meta.url)));

@@ -18,6 +18,6 @@ pub mod pipeline;
 pub mod syntax;
 pub mod turtle;
 pub mod vocabulary;
-mod wasm;
+pub mod wasm; // public for the wasm32 boundary tests (tests/wasm_boundary.rs)
 
 pub use pipeline::{build, Build, BuildOptions};

@@ -12,9 +12,12 @@
 #![deny(clippy::unwrap_used)]
 
 use crate::branches::{parse_edits, write_edits, NO_BRANCH};
+#[cfg(feature = "io")]
 use crate::export::{self, Format};
 use crate::mesh::MeshOptions;
-use crate::pipeline::{self, BuildOptions, Hooks, Stage};
+#[cfg(feature = "io")]
+use crate::pipeline::Stage;
+use crate::pipeline::{self, BuildOptions, Hooks};
 use serde::Deserialize;
 use std::cell::RefCell;
 use wasm_bindgen::prelude::*;
@@ -74,6 +77,7 @@ struct BuildOptionsFields {
 }
 
 /// [`ExportOptionsObject`] as read.
+#[cfg(feature = "io")]
 #[derive(Deserialize)]
 #[serde(rename_all = "camelCase")]
 struct ExportOptionsFields {
@@ -217,6 +221,7 @@ fn build_reading(
 /// the same grammar and options. `progress(stage, index, count)` is told each stage as it starts
 /// (`parsing`, `deriving`, `interpreting`, `meshing`, `applying edits`, `writing`). Throws when
 /// the format is unknown, the edits are malformed or the grammar has errors.
+#[cfg(feature = "io")]
 #[wasm_bindgen(js_name = exportModel)]
 pub fn export_model(
     source: &str,
@@ -269,11 +274,13 @@ pub fn export_model(
 }
 
 /// One file to download. Free it with `.free()` once its bytes are copied.
+#[cfg(feature = "io")]
 #[wasm_bindgen]
 pub struct ExportedModel {
     file: export::ExportedFile,
 }
 
+#[cfg(feature = "io")]
 #[wasm_bindgen]
 impl ExportedModel {
     /// File name with extension: `plant.glb`, or `plant.zip` for several files.
@@ -867,6 +874,7 @@ impl Grammar {
 /// name, whose extension or content then tells the dialect. Returns JSON
 /// `{text, notes: [{line, message}], dialect}`: `line` is 1-based in `text` (0 for the whole
 /// file); when the dialect cannot be told, `text` is empty, `dialect` null and one note says why.
+#[cfg(feature = "io")]
 #[wasm_bindgen(js_name = importGrammar)]
 pub fn import_grammar(text: &str, dialect_or_file_name: &str) -> String {
     use crate::import::{self, Dialect, Import, ImportNote};

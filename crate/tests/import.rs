@@ -728,8 +728,11 @@ fn cpfg_and_lpy_translations_derive_the_strings_their_rules_give() {
 // ------------------------------------------------------------------------------------------------
 // No input makes an importer panic, and what it gives either resolves or has nothing to derive.
 
+// Native only: proptest is not a wasm32 dependency (tests/wasm_boundary.rs has the wasm32 tests).
+#[cfg(not(target_arch = "wasm32"))]
 use proptest::prelude::*;
 
+#[cfg(not(target_arch = "wasm32"))]
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(200))]
     #[test]

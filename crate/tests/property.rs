@@ -1,6 +1,8 @@
 //! Property: for random bracketed D0L grammars, the engine derives exactly what a naive
 //! string-replacement implementation written here derives, on both of its paths (the flat D0L
 //! table and the general matcher, forced by adding a production that never applies).
+//! Native only: proptest is not a wasm32 dependency (see tests/wasm_boundary.rs for the wasm32 tests).
+#![cfg(not(target_arch = "wasm32"))]
 
 use meristem::derive::{derive, DeriveOptions};
 use meristem::model::resolve;

@@ -8,7 +8,7 @@ import { AxeBuilder } from '@axe-core/playwright';
 import { chromium, type Browser, type Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
 import { encodeState } from '../../web/src/share/codec';
-import { example, generation, nextBuild, savePage, studioIn, type StudioPage } from './studio-page';
+import { example, pasteText, savePage, studioIn, type StudioPage } from './studio-page';
 
 /** The rules that say "every control has an accessible name": any violation of them fails. */
 const NAMING_RULES = ['aria-command-name', 'aria-input-field-name', 'aria-toggle-field-name', 'button-name', 'input-button-name', 'label', 'link-name', 'select-name', 'summary-name', 'aria-dialog-name', 'frame-title'];
@@ -51,15 +51,6 @@ async function audit(page: Page, include?: string): Promise<Audit> {
     .flatMap((v) => v.nodes.map((n) => `${v.id} (${v.impact}): ${n.target.join(' ')} — ${n.failureSummary?.replace(/\s+/g, ' ')}`));
   const contrastPasses = results.passes.filter((p) => p.id === 'color-contrast').flatMap((p) => p.nodes.map((n) => n.target.join(' ')));
   return { failures, contrastPasses };
-}
-
-/** Replaces the grammar and waits for its build. */
-async function paste(page: Page, text: string): Promise<void> {
-  const before = await generation(page);
-  await page.getByTestId('editor').locator('.cm-content').click();
-  await page.keyboard.press('Control+A');
-  await page.keyboard.insertText(text);
-  await nextBuild(page, before);
 }
 
 describe.each(['light', 'dark'] as const)('the %s theme', (scheme) => {
@@ -118,7 +109,7 @@ describe.each(['light', 'dark'] as const)('the %s theme', (scheme) => {
     await page.keyboard.press('Escape');
 
     // The confirm dialog: the text is the user's, and another example is opened.
-    await paste(page, `${example('abop-1.24d.lsys')}\n// mine`);
+    await pasteText(page, `${example('abop-1.24d.lsys')}\n// mine`);
     await page.getByTestId('open-gallery').click();
     await page.locator('[data-testid=gallery-list] button[data-file]').nth(2).click();
     await page.getByTestId('confirm-replace').waitFor({ state: 'visible' });
@@ -130,7 +121,7 @@ describe.each(['light', 'dark'] as const)('the %s theme', (scheme) => {
 
   it('the context highlighting in the string and derivation panels meets WCAG AA contrast', async () => {
     const { page, problems } = await openStudio(scheme);
-    await paste(page, CONTEXTS);
+    await pasteText(page, CONTEXTS);
     await page.getByTestId('editor').locator('.cm-line', { hasText: /^a < b/ }).click();
     const panel = page.getByTestId('string-panel');
     await expect.poll(() => panel.locator('.m-produced').count()).toBeGreaterThan(0);

@@ -9,7 +9,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { decodePng } from './pictures';
-import { generation, nextBuild, RESULTS } from './studio-page';
+import { generation, nextBuild, pasteText, RESULTS } from './studio-page';
 import { serveStatic, type StaticSite } from './static-server';
 
 const SUB_PATH = '/school/meristem/';
@@ -57,11 +57,7 @@ describe('offline', () => {
     expect(await page.evaluate(() => navigator.serviceWorker.controller !== null), 'the service worker serves the page').toBe(true);
 
     // A grammar of the user's: built by the worker's wasm, from the cache.
-    const before = await generation(page);
-    await page.getByTestId('editor').locator('.cm-content').click();
-    await page.keyboard.press('Control+A');
-    await page.keyboard.insertText('// Offline\n#angle 22.5\n#iterations 4\naxiom: F\nF -> FF-[-F+F+F]+[+F-F-F]');
-    expect(await nextBuild(page, before)).toBe('ok');
+    expect(await pasteText(page, '// Offline\n#angle 22.5\n#iterations 4\naxiom: F\nF -> FF-[-F+F+F]+[+F-F-F]')).toBe('ok');
     expect(await page.evaluate(() => window.__meristem!.lastStats)).toMatchObject({ iterations: 4, segments: 8 ** 4 });
     const png = await page.locator('[data-testid=viewport] canvas').screenshot();
     writeFileSync(new URL('offline-plant.png', RESULTS), png);

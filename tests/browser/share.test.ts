@@ -8,7 +8,7 @@ import { deflateRawSync } from 'node:zlib';
 import { chromium, type Browser, type BrowserContext, type Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
 import { decodeState, MAX_FRAGMENT, type SharedState } from '../../web/src/share/codec';
-import { editorText, example, generation, nextBuild, openFromGallery, openStudio, openTubesMenu, savePage, twoFrames } from './studio-page';
+import { editorText, example, generation, nextBuild, openFromGallery, openStudio, openTubesMenu, pasteText, savePage, twoFrames } from './studio-page';
 
 let browser: Browser;
 
@@ -40,11 +40,7 @@ const cameraPose = (page: Page) => page.evaluate(() => window.__meristem!.camera
 
 /** Replaces the editor's text by typing it in as a paste. */
 async function typeText(page: Page, text: string): Promise<void> {
-  const before = await generation(page);
-  await page.getByTestId('editor').locator('.cm-content').click();
-  await page.keyboard.press('Control+A');
-  await page.keyboard.insertText(text);
-  await nextBuild(page, before);
+  await pasteText(page, text);
 }
 
 /** A fragment holding `payload` compressed as the studio compresses. */

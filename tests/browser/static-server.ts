@@ -4,6 +4,7 @@ import { createReadStream, existsSync, statSync } from 'node:fs';
 import { createServer, type Server } from 'node:http';
 import { extname, join, normalize } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { createGzip } from 'node:zlib';
 
 const DIST = fileURLToPath(new URL('../../dist/', import.meta.url));
 const TYPES: Record<string, string> = {
@@ -28,8 +29,11 @@ export interface StaticSite {
   close(): Promise<void>;
 }
 
-/** Serves dist/ under `subPath` (`/a/b/`) on a free loopback port. */
-export async function serveStatic(subPath: string): Promise<StaticSite> {
+/** What a host compresses when the browser accepts gzip (`gzip: true`). */
+const COMPRESSED = new Set(['.html', '.js', '.css', '.wasm', '.json', '.lsys', '.svg', '.webmanifest']);
+
+/** Serves dist/ under `subPath` (`/a/b/`) on a free loopback port; with `gzip`, compressed as hosts do. */
+export async function serveStatic(subPath: string, { gzip = false } = {}): Promise<StaticSite> {
   const replaced = new Map<string, string>();
   let requests = 0;
   const server: Server = createServer((request, response) => {
@@ -41,10 +45,12 @@ export async function serveStatic(subPath: string): Promise<StaticSite> {
     if (!file.startsWith(DIST)) return void response.writeHead(403).end();
     if (existsSync(file) && statSync(file).isDirectory()) file = join(file, 'index.html');
     if (!existsSync(file)) return void response.writeHead(404).end('not found');
-    response.writeHead(200, { 'Content-Type': TYPES[extname(file)] ?? 'application/octet-stream' });
+    const compress = gzip && COMPRESSED.has(extname(file)) && /\bgzip\b/.test(String(request.headers['accept-encoding']));
+    response.writeHead(200, { 'Content-Type': TYPES[extname(file)] ?? 'application/octet-stream', ...(compress ? { 'Content-Encoding': 'gzip' } : {}) });
     const replacement = replaced.get(relative);
     if (replacement !== undefined) return void response.end(replacement);
-    createReadStream(file).pipe(response);
+    if (compress) createReadStream(file).pipe(createGzip({ level: 9 })).pipe(response);
+    else createReadStream(file).pipe(response);
   });
   await new Promise<void>((done) => server.listen(0, '127.0.0.1', done));
   const address = server.address();

@@ -65,6 +65,15 @@ export async function nextBuild(page: Page, previous: number, timeout = 30_000):
   return page.getByTestId('status').getAttribute('data-state');
 }
 
+/** Replaces the editor's text as a paste would, and waits for its build; returns the status state. */
+export async function pasteText(page: Page, text: string): Promise<string | null> {
+  const before = await generation(page);
+  await page.getByTestId('editor').locator('.cm-content').click();
+  await page.keyboard.press('Control+A');
+  await page.keyboard.insertText(text);
+  return nextBuild(page, before);
+}
+
 /** The editor's text, line by line as CodeMirror shows it. */
 export function editorText(page: Page): Promise<string> {
   return page.evaluate(() => [...document.querySelectorAll('[data-testid=editor] .cm-line')].map((l) => l.textContent ?? '').join('\n'));

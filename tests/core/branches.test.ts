@@ -26,7 +26,7 @@ const GAME_TREE = readFileSync(new URL('../../public/examples/game-tree.lsys', i
 const LEAFY = '#angle 22.5\n#width 3\naxiom: A\nA -> !(2)F[&(30)FL@O(0.05)A]/(137)[&(30)F{.+f.-f.-f.}A]F/(90)A\nL -> ~l(0.4)';
 
 beforeAll(async () => {
-  await initCore(readFileSync(new URL('../../crate/pkg/meristem_bg.wasm', import.meta.url)));
+  await initCore(readFileSync(new URL('../../crate/pkg-core/meristem_core_bg.wasm', import.meta.url)));
 });
 
 function point(array: Float32Array, k: number): Vec3 {

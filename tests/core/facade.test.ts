@@ -19,7 +19,7 @@ interface CliStats {
 }
 
 beforeAll(async () => {
-  await initCore(readFileSync(new URL('../../crate/pkg/meristem_bg.wasm', import.meta.url)));
+  await initCore(readFileSync(new URL('../../crate/pkg-core/meristem_core_bg.wasm', import.meta.url)));
 });
 
 function expectFinite(name: string, values: Float32Array): void {

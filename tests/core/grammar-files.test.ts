@@ -6,7 +6,7 @@ import { decodeText, lsysFileName, MAX_FILE_BYTES, openGrammarBytes } from '../.
 import { linkWithFragment } from '../../web/src/studio/share-dialog';
 
 beforeAll(async () => {
-  await initCore(readFileSync(new URL('../../crate/pkg/meristem_bg.wasm', import.meta.url)));
+  await initCore(readFileSync(new URL('../../crate/pkg-core/meristem_core_bg.wasm', import.meta.url)));
 });
 
 const file = (path: string) => new Uint8Array(readFileSync(new URL(`../../crate/tests/import/${path}`, import.meta.url)));

@@ -10,7 +10,7 @@ const repoRoot = fileURLToPath(new URL('../..', import.meta.url));
 const input = (relative: string) => `crate/tests/import/${relative}`;
 
 beforeAll(async () => {
-  await initCore(readFileSync(new URL('../../crate/pkg/meristem_bg.wasm', import.meta.url)));
+  await initCore(readFileSync(new URL('../../crate/pkg-core/meristem_core_bg.wasm', import.meta.url)));
 });
 
 /** What `meristem import FILE` prints: the text on stdout, the notes as `FILE:LINE: note: …` on stderr. */

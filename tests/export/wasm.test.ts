@@ -6,14 +6,14 @@ import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { unzipSync } from 'fflate';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { exportModel, initCore, MODEL_FORMATS, type ModelFormat } from '../../web/src/core';
+import { exportModel, initIo, MODEL_FORMATS, type ModelFormat } from '../../web/src/core';
 import { exportWithCli, galleryDir, repoRoot, removeScratch, scratchDir } from './tools';
 
 const dir = scratchDir('wasm');
 afterAll(() => removeScratch(dir));
 
 beforeAll(async () => {
-  await initCore(readFileSync(join(repoRoot, 'crate/pkg/meristem_bg.wasm')));
+  await initIo(readFileSync(join(repoRoot, 'crate/pkg/meristem_bg.wasm')));
 });
 
 /** Grammars and the options both sides get. */

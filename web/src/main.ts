@@ -8,9 +8,9 @@ import { GrammarStore } from './share/storage';
 import { PlantView } from './view';
 import {
   Autosave, BranchEditSession, BuildClient, ContextView, DerivationControls, GalleryDialog, GalleryThumbnails, GrowthPanel,
-  DerivationView, EmbedSnippets, HelpPanel, LearnPanel, LibraryDialog, LinkState, LivePreview, Notice, ShareDialog, SliderPanel, StagesMode, TextOpening,
+  DerivationView, EmbedSnippets, HelpPanel, installLearnPanel, LibraryDialog, LinkState, LivePreview, Notice, ShareDialog, SliderPanel, StagesMode, TextOpening,
   ViewFollowing, ViewOptions, ViewTools, attachSplitter, browserStorage, connectTestHook, createBuildWorker, emptyTestHook, fetchExample,
-  figureName, installDownloads, installDrop, installInspectorTabs, learnElements, LayoutModes,
+  figureName, installDownloads, installDrop, installInspectorTabs, LayoutModes,
   installFileMenu, installShareButton, installShortcuts, openPastedLinks, renderShortcutHelp, reportCoreCrashes, showStatus, sidesChoices,
   startingText, studioElements, installAppUpdates, type ShortcutAction, type StudioElements, type StudioTestHook,
 } from './studio';
@@ -22,8 +22,8 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   showStatus(els.status, { state: 'loading', text: 'Loading…' });
   const notice = new Notice(els.notice);
   const store = new GrammarStore(browserStorage());
-  // The page's own core instance serves the tables (commands, directives, version) and the
-  // importers of opened files; builds run in the worker's.
+  // The page's own core instance serves the tables (commands, directives, version); builds run in
+  // the worker's; the importers load with the first imported file (core/io.ts).
   const [start] = await Promise.all([startingText(store, notice, INITIAL_EXAMPLE), initCore()]);
   els.version.textContent = `core ${coreVersion()}`;
 
@@ -134,7 +134,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   const gallery = new GalleryDialog(els.gallery, els.galleryList, new GalleryThumbnails(fetchExample), (entry) => opening.openExample(entry), () => opening.currentFile);
   const openGallery = () => void gallery.open().catch((error: unknown) => console.error('Could not open the gallery:', error));
   els.openGallery.addEventListener('click', openGallery);
-  new LearnPanel(learnElements(), { preview, open: (text, title, key) => opening.replace(text, title, key) }); // lessons (issue 17)
+  installLearnPanel({ preview, open: (text, title, key) => opening.replace(text, title, key) }); // lessons (issue 17), loaded on first use
   if (start.from === 'link') autosave.save(start.text); // the link's text is now the work in progress
   const library = new LibraryDialog(els.library, store, { text: () => grammarEditor.text(), open: (entry) => opening.openSaved(entry) });
   installFileMenu(els.fileMenu, { openFile: (file) => opening.openFile(file), text: () => grammarEditor.text(), openLibrary: () => library.open() });

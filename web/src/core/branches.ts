@@ -1,7 +1,7 @@
 // Editing a plant's branches by their Bézier handles (issue 8): the facade over the core's branch
 // editor (crate/src/branches). A branch is a run of segments along one axis between branching
 // points; its path is its root's index, then child indices (docs/LANGUAGE.md, "Branches").
-import { type PlantEditor as WasmPlantEditor } from '../../../crate/pkg/meristem.js';
+import { type PlantEditor as WasmPlantEditor } from '../../../crate/pkg-core/meristem_core.js';
 import { copyMesh, plainBuild, runBuild } from './build';
 import { guarded, ownedArray } from './init';
 import type { BuildOptions, MeshBuffers, PlantBuild, PlantStats } from './types';

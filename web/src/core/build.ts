@@ -6,7 +6,7 @@ import {
   type PlantBuild as WasmPlantBuild,
   type PlantEditor as WasmPlantEditor,
   type PlantInspector as WasmPlantInspector,
-} from '../../../crate/pkg/meristem.js';
+} from '../../../crate/pkg-core/meristem_core.js';
 import { byteOffsetToUtf16 } from './offsets';
 import { assertReady, guarded, ownedArray } from './init';
 import {

@@ -1,7 +1,8 @@
 // The facade over the core's file writers: one call, the file's bytes out, the wasm object freed.
 import { exportModel as coreExportModel, type ExportedModel } from '../../../crate/pkg/meristem.js';
 import type { EditsDocument } from './branches';
-import { assertReady, guarded } from './init';
+import { guarded } from './init';
+import { assertIoReady } from './io';
 import type { BuildOptions } from './types';
 
 /** A model format the core writes, named by its file extension. */
@@ -54,7 +55,7 @@ function coreOptions(format: ModelFormat, options: ExportOptions) {
 
 /** Runs the core's export, telling `onProgress` each stage when given. */
 function runExport(source: string, format: ModelFormat, options: ExportOptions, onProgress?: (progress: ExportProgress) => void): ModelFile {
-  assertReady();
+  assertIoReady();
   const progress = onProgress && ((stage: ExportStage, index: number, count: number) => onProgress({ stage, index, count }));
   return takeFile(guarded(() => coreExportModel(source, coreOptions(format, options), progress)));
 }

@@ -1,7 +1,8 @@
 // The facade over the core's importers (`crate/src/import`): another dialect's text in, Meristem
 // text and notes out. The studio's file opening (studio/grammar-files.ts) calls this.
 import { importGrammar as coreImportGrammar } from '../../../crate/pkg/meristem.js';
-import { assertReady, guarded } from './init';
+import { guarded } from './init';
+import { assertIoReady } from './io';
 
 /** The notations the core imports: Green's RL-systems, Lparser `.ls`, cpfg `.l`, L-Py `.lpy`. */
 export type Dialect = 'green' | 'lparser' | 'cpfg' | 'lpy';
@@ -27,9 +28,9 @@ export interface ImportedGrammar {
  * Translates a file written in another L-system dialect into Meristem's language. `fileName`
  * (e.g. `tree.ls`) tells the dialect by its extension, else the content does; a dialect name
  * (`lparser`, …) may be given instead to force one. Never throws on odd input: what cannot be
- * translated comes back as notes. Requires {@link initCore} to have finished.
+ * translated comes back as notes. Requires {@link initIo} to have finished.
  */
 export function importGrammar(text: string, fileName: string): ImportedGrammar {
-  assertReady();
+  assertIoReady();
   return JSON.parse(guarded(() => coreImportGrammar(text, fileName))) as ImportedGrammar;
 }

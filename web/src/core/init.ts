@@ -1,7 +1,9 @@
 // Loading the WebAssembly core, and what happens when it fails. This folder is the only
-// TypeScript that imports crate/pkg.
-import init, { initSync, onPanic, version } from '../../../crate/pkg/meristem.js';
-import wasmUrl from '../../../crate/pkg/meristem_bg.wasm?url';
+// TypeScript that imports crate/pkg-core (the core without importers and exporters, all the first
+// plant needs) and crate/pkg (the whole boundary: ./io.ts loads it when a file is imported or
+// exported).
+import init, { initSync, onPanic, version } from '../../../crate/pkg-core/meristem_core.js';
+import wasmUrl from '../../../crate/pkg-core/meristem_core_bg.wasm?url';
 
 let memory: WebAssembly.Memory | undefined;
 let loading: Promise<void> | undefined;
@@ -22,12 +24,12 @@ export class CoreCrashed extends Error {
  *
  * - In the browser call it without arguments: the `.wasm` file is fetched from the URL vite
  *   gives it (a hashed asset next to the page).
- * - In node (vitest, scripts) pass the bytes of `crate/pkg/meristem_bg.wasm`, e.g. from
+ * - In node (vitest, scripts) pass the bytes of `crate/pkg-core/meristem_core_bg.wasm`, e.g. from
  *   `readFileSync`: they are compiled synchronously (node cannot `fetch` a `file:` URL).
  */
 export function initCore(wasm?: BufferSource): Promise<void> {
   if (loading) return loading;
-  const listen = () => onPanic((message: string) => (panicMessage = message));
+  const listen = () => onPanic(notePanic);
   if (wasm !== undefined) {
     memory = initSync({ module: wasm }).memory;
     listen();
@@ -39,6 +41,11 @@ export function initCore(wasm?: BufferSource): Promise<void> {
     });
   }
   return loading;
+}
+
+/** Keeps the message of a panic of either core module for {@link guarded}. */
+export function notePanic(message: string): void {
+  panicMessage = message;
 }
 
 /** The core's version (the crate version), for the about line and bug reports. */

@@ -1,7 +1,7 @@
 // The plain data that crosses from the core into the studio. Nothing here refers to WebAssembly
 // (the options type is the core's declaration, a type only): the rest of the front end programs
 // against these types only.
-import type { BuildOptions as CoreBuildOptions } from '../../../crate/pkg/meristem.js';
+import type { BuildOptions as CoreBuildOptions } from '../../../crate/pkg-core/meristem_core.js';
 
 /** How bad a diagnostic is; an `error` means the build produced no geometry. */
 export type Severity = 'error' | 'warning';

@@ -2,7 +2,7 @@
 // names of modules, directives, keywords, functions and values, with their typed parameters, for
 // highlighting, completion, hover docs and the Growth panel. Code refers to a row by its `kind`
 // (the core's identifier, e.g. `Define`), never by its spelling, so a name lives in one place.
-import { vocabulary } from '../../../crate/pkg/meristem.js';
+import { vocabulary } from '../../../crate/pkg-core/meristem_core.js';
 import { assertReady, guarded } from './init';
 
 /** What a parameter holds. */

@@ -2,7 +2,7 @@
 // → mesh → edits → write, in the core), telling the page each stage as it starts, then sends the
 // file's bytes in a transfer list. The page starts one worker per export and terminates it after
 // (or to cancel): a big export grows a WebAssembly memory, which never shrinks, so it dies with it.
-import { CoreCrashed, exportModelWithProgress, initCore } from '../core';
+import { CoreCrashed, exportModelWithProgress, initIo } from '../core';
 import type { ExportRequest, ExportResponse } from './export-client';
 
 function reply(response: ExportResponse, transfer: Transferable[] = []): void {
@@ -12,7 +12,7 @@ function reply(response: ExportResponse, transfer: Transferable[] = []): void {
 addEventListener('message', async (event: MessageEvent<ExportRequest>) => {
   const { source, format, options } = event.data;
   try {
-    await initCore();
+    await initIo(); // the core with its file writers (the first plant's core has none)
   } catch (error) {
     reply({ kind: 'failed', message: `the core could not start: ${String(error)}`, crashed: true });
     return;

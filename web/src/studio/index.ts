@@ -14,7 +14,8 @@ export { GalleryDialog, fetchExample, fetchManifest } from './gallery';
 export { GalleryThumbnails } from './thumbnails';
 export { galleryManifest, parseExampleHeader, isGalleryManifest, type GalleryEntry } from './gallery-manifest';
 export { ABOP_CHAPTERS, abopChapterHeading } from './chapters';
-export { LearnPanel, learnElements, type LearnElements, type LearnHost } from './learn-panel';
+export type { LearnElements, LearnHost } from './learn-panel'; // the panel itself loads on first use (learn-loader.ts)
+export { installLearnPanel } from './learn-loader';
 export { chapterHeading, compareLessons, isLesson, isLessonIndex, type Lesson, type LessonGrammar, type LessonSummary, type LessonTask } from './lesson-manifest';
 export { CHECK_FACTS, CHECK_FUNCTIONS, evaluateCheck, needsDerivedString, parseCheck, plantFacts, spokenAnswer, MAX_CHECKED_MODULES, type CheckAnswer, type CheckNode, type PlantFacts } from './lesson-check';
 export { askToReplace } from './confirm';

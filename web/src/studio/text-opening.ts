@@ -3,6 +3,7 @@
 // and opening something else asks first (and stays undoable in the editor).
 import type { StoredGrammar } from '../share/storage';
 import type { GrammarEditor } from '../editor';
+import { initIo } from '../core';
 import { askToReplace } from './confirm';
 import { fetchExample } from './gallery';
 import type { GalleryEntry } from './gallery-manifest';
@@ -96,7 +97,9 @@ export class TextOpening {
 
   private async readFile(file: File): Promise<void> {
     const { notice } = this.parts;
-    const opened = openGrammarBytes(file.name, new Uint8Array(await file.arrayBuffer()));
+    const bytes = new Uint8Array(await file.arrayBuffer());
+    if (!/\.lsys$/i.test(file.name)) await initIo(); // the importers, on the first import
+    const opened = openGrammarBytes(file.name, bytes);
     if (!opened.ok) {
       notice.show('error', `Could not open ${file.name}: ${opened.error}.`);
       return;

@@ -4,7 +4,7 @@ import { buildPlant, initCore } from '../core';
 import { packForGpu } from '../view/gpu-arrays';
 import { answerTransferables, transferablesOf } from './worker-protocol';
 
-await initCore(readFileSync(new URL('../../../crate/pkg/meristem_bg.wasm', import.meta.url)));
+await initCore(readFileSync(new URL('../../../crate/pkg-core/meristem_core_bg.wasm', import.meta.url)));
 
 describe('transferablesOf', () => {
   it('lists the buffer of every array of a build once, and moving them leaves nothing behind', () => {

@@ -1,0 +1,134 @@
+//! The same plants built by the native core (`cargo test`) and by the core compiled to WebAssembly
+//! through its JavaScript boundary (`wasm-pack test --node crate --test wasm_boundary`, part of
+//! `npm test`), each checked against one set of expected values: a difference between the native
+//! and the wasm core (floating point, memory, the boundary's conversions) fails one of them.
+//! The expected values were taken from the native build; the derived strings must match exactly,
+//! the geometry to within float rounding.
+
+/// A deterministic plant (ABOP fig. 1.24d) and a stochastic one (fig. 1.27, its random choices from
+/// one seeded generator), with the iterations and the seed each build uses.
+const PLANTS: [(&str, &str, u32, u64); 2] = [
+    (
+        "1.24d",
+        include_str!("../../public/examples/abop-1.24d.lsys"),
+        6,
+        1,
+    ),
+    (
+        "1.27",
+        include_str!("../../public/examples/abop-1.27-stochastic.lsys"),
+        5,
+        42,
+    ),
+];
+
+/// What a build gave: the derived string's fingerprint, the vertex count and the sum of the
+/// absolute coordinates of every vertex.
+#[derive(Debug)]
+struct Built {
+    hash: String,
+    vertices: usize,
+    extent: f64,
+}
+
+/// The expected builds of [`PLANTS`], in order.
+const EXPECTED: [(&str, usize, f64); 2] = [
+    ("da7d5a827a04c582", 12719, 1374466.684262421),
+    ("6b509c2c41fbe6cc", 8904, 459515.4311069399),
+];
+
+fn extent(positions: &[f32]) -> f64 {
+    positions.iter().map(|p| f64::from(p.abs())).sum()
+}
+
+fn check(name: &str, built: &Built, expected: (&str, usize, f64)) {
+    assert_eq!(built.hash, expected.0, "{name}: derived string");
+    assert_eq!(built.vertices, expected.1, "{name}: vertices");
+    let relative = (built.extent - expected.2).abs() / expected.2.max(1.0);
+    assert!(
+        relative < 1e-6,
+        "{name}: geometry {} vs {}",
+        built.extent,
+        expected.2
+    );
+}
+
+#[cfg(not(target_arch = "wasm32"))]
+mod native {
+    use super::*;
+    use meristem::mesh::MeshOptions;
+    use meristem::{build, BuildOptions};
+
+    #[test]
+    fn the_native_core_builds_the_expected_plants() {
+        for ((name, source, iterations, seed), expected) in PLANTS.iter().zip(EXPECTED) {
+            let options = BuildOptions {
+                iterations: Some(*iterations),
+                seed: Some(*seed),
+                mesh: MeshOptions::view(None, None),
+            };
+            let b = build(source, &options);
+            assert!(b.ok(), "{name}: {:?}", b.diagnostics);
+            let built = Built {
+                hash: b.inspector().map(|i| i.derived_hash()).unwrap_or_default(),
+                vertices: b.plant.mesh.positions.len() / 3,
+                extent: extent(&b.plant.mesh.positions),
+            };
+            eprintln!("{name}: {built:?}");
+            check(name, &built, expected);
+        }
+    }
+}
+
+#[cfg(target_arch = "wasm32")]
+mod wasm {
+    use super::*;
+    use meristem::wasm::{build, version, vocabulary, BuildOptionsObject};
+    use wasm_bindgen::{JsCast, JsValue};
+    use wasm_bindgen_test::wasm_bindgen_test;
+
+    /// `{ iterations, seed }` as JavaScript passes it.
+    fn options(iterations: u32, seed: u64) -> BuildOptionsObject {
+        let object = js_sys::Object::new();
+        js_sys::Reflect::set(&object, &"iterations".into(), &JsValue::from(iterations)).unwrap();
+        js_sys::Reflect::set(&object, &"seed".into(), &JsValue::from(seed as f64)).unwrap();
+        object.unchecked_into()
+    }
+
+    #[wasm_bindgen_test]
+    fn the_wasm_core_builds_the_expected_plants_through_its_boundary() {
+        for ((name, source, iterations, seed), expected) in PLANTS.iter().zip(EXPECTED) {
+            let b = build(source, &options(*iterations, *seed), None)
+                .unwrap_or_else(|_| panic!("{name}: build threw"));
+            assert!(b.ok(), "{name}: {}", b.diagnostics());
+            let positions = b.positions().to_vec();
+            let built = Built {
+                hash: b.into_inspector().derived_hash(),
+                vertices: positions.len() / 3,
+                extent: extent(&positions),
+            };
+            check(name, &built, expected);
+        }
+    }
+
+    #[wasm_bindgen_test]
+    fn bad_options_and_bad_grammars_come_back_as_errors_not_crashes() {
+        let not_options: BuildOptionsObject = JsValue::from_str("seven").unchecked_into();
+        assert!(build("axiom: F", &not_options, None).is_err());
+        let b = build("axiom: F\nF -> F[", &options(3, 1), None).unwrap();
+        assert!(!b.ok());
+        assert!(b.diagnostics().contains("error"), "{}", b.diagnostics());
+    }
+
+    #[wasm_bindgen_test]
+    fn the_tables_cross_the_boundary() {
+        assert_eq!(version(), env!("CARGO_PKG_VERSION"));
+        let vocabulary: serde_json::Value = serde_json::from_str(&vocabulary()).unwrap();
+        assert!(
+            vocabulary["modules"]
+                .as_array()
+                .is_some_and(|m| m.len() > 20),
+            "{vocabulary}"
+        );
+    }
+}
