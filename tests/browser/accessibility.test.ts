@@ -6,7 +6,7 @@
 // picked) readable: axe's WCAG AA colour-contrast check must pass on those very elements.
 import { AxeBuilder } from '@axe-core/playwright';
 import { chromium, type Browser, type Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
+import { afterAll, beforeAll, describe, expect, inject, it, vi } from 'vitest';
 import { encodeState } from '../../web/src/share/codec';
 import { example, pasteText, savePage, studioIn, type StudioPage } from './studio-page';
 
@@ -14,6 +14,9 @@ import { example, pasteText, savePage, studioIn, type StudioPage } from './studi
 const NAMING_RULES = ['aria-command-name', 'aria-input-field-name', 'aria-toggle-field-name', 'button-name', 'input-button-name', 'label', 'link-name', 'select-name', 'summary-name', 'aria-dialog-name', 'frame-title'];
 /** A context-sensitive production with both contexts: `a < b > c -> b` fires on the b of `abc`. */
 const CONTEXTS = '// Both contexts\n#angle 30\n#iterations 1\naxiom: abcabc\na < b > c -> b\nhomomorphism:\na -> F\nb -> F+F\nc -> F-F';
+
+// Each audit takes seconds on a loaded 2-core machine, and a test runs up to seven of them.
+vi.setConfig({ testTimeout: 150_000 });
 
 let browser: Browser;
 
