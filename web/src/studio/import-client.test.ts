@@ -1,28 +1,8 @@
 import { describe, expect, it } from 'vitest';
-import { runImport, type ImportRequest, type ImportResponse, type ImportWorkerLike } from './import-client';
+import { FakeJobWorker } from './fake-job-worker';
+import { runImport, type ImportRequest, type ImportResponse } from './import-client';
 
-/** A worker that records what it is sent and answers when the test says so. */
-class FakeImportWorker implements ImportWorkerLike {
-  requests: ImportRequest[] = [];
-  terminated = false;
-  onMessage: ((event: MessageEvent<ImportResponse>) => void) | undefined;
-  onError: ((event: ErrorEvent) => void) | undefined;
-  postMessage(message: ImportRequest): void {
-    this.requests.push(message);
-  }
-  terminate(): void {
-    this.terminated = true;
-  }
-  addEventListener(type: 'message', listener: (event: MessageEvent<ImportResponse>) => void): void;
-  addEventListener(type: 'error', listener: (event: ErrorEvent) => void): void;
-  addEventListener(type: 'message' | 'error', listener: ((event: MessageEvent<ImportResponse>) => void) | ((event: ErrorEvent) => void)): void {
-    if (type === 'message') this.onMessage = listener as (event: MessageEvent<ImportResponse>) => void;
-    else this.onError = listener as (event: ErrorEvent) => void;
-  }
-  send(response: ImportResponse): void {
-    this.onMessage?.({ data: response } as MessageEvent<ImportResponse>);
-  }
-}
+class FakeImportWorker extends FakeJobWorker<ImportRequest, ImportResponse> {}
 
 const request: ImportRequest = { name: 'tree.l', bytes: new TextEncoder().encode('Lsystem: 1\nAxiom: F\nendlsystem\n') };
 
@@ -60,7 +40,7 @@ describe('runImport', () => {
     expect(await a.done).toEqual({ kind: 'failed', message: 'the importer failed (a bug): unreachable' });
     const broken = new FakeImportWorker();
     const b = runImport(() => broken, request);
-    broken.onError?.({ message: '', preventDefault() {} } as ErrorEvent);
+    broken.fail();
     expect(await b.done).toEqual({ kind: 'failed', message: 'the import worker failed: it could not start' });
     expect(broken.terminated).toBe(true);
   });

@@ -1,22 +1,11 @@
 import 'fake-indexeddb/auto';
 import { describe, expect, it } from 'vitest';
 import { indexedDatabase, KeptTexts, type KeyValueDatabase } from '../share/kept-texts';
-import { GrammarStore, type KeyValueStorage } from '../share/storage';
+import { memoryStorage } from '../share/memory-storage';
+import { GrammarStore } from '../share/storage';
 import { keptSentence, restoreAutosave, TextKeeper } from './keeping';
 
-/** An in-memory localStorage that can be made full. */
-function memory(): KeyValueStorage & { full: boolean } {
-  const data = new Map<string, string>();
-  return {
-    full: false,
-    getItem: (k) => data.get(k) ?? null,
-    setItem(k, v) {
-      if (this.full) throw new DOMException('quota', 'QuotaExceededError');
-      data.set(k, v);
-    },
-    removeItem: (k) => void data.delete(k),
-  };
-}
+const memory = memoryStorage;
 
 /** A database that refuses every write, or never answers. */
 function broken(how: 'refuses' | 'hangs'): KeyValueDatabase {

@@ -132,15 +132,12 @@ export class TextOpening {
       return;
     }
     const tell = (kept: string) => {
-      const first = kept ? `${kept} ` : '';
+      const after = kept ? ` ${kept}` : '';
       if (opened.dialect) {
-        const what = `${first}Imported ${file.name} from ${dialectName(opened.dialect)}`;
-        notice.show(
-          'info',
-          opened.notes.length === 0 ? `${what}: everything was translated.` : `${what}. Not translated, or only approximately (${opened.notes.length}):`,
-          opened.notes,
-        );
-      } else if (opened.notes.length > 0 || kept) notice.show('info', `${first}Opened ${file.name}.`, opened.notes);
+        const what = `Imported ${file.name} from ${dialectName(opened.dialect)}`;
+        const n = opened.notes.length;
+        notice.show('info', n === 0 ? `${what}: everything was translated.${after}` : `${what}.${after} Not translated, or only approximately (${n}):`, opened.notes);
+      } else if (opened.notes.length > 0 || kept) notice.show('info', `Opened ${file.name}.${after}`, opened.notes);
       else notice.hide();
     };
     await this.replace(opened.text, file.name, `file/${file.name}`, { tell });
