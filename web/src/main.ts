@@ -91,6 +91,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     openReference: (anchor) => void help.open(anchor),
   });
   editor = grammarEditor;
+  els.stopBuild.addEventListener('click', () => grammarEditor.view.focus()); // the text stays, to edit on
   sliders.update(start.text);
   growth.update(start.text);
   derivation.textChanged(start.text);
