@@ -120,7 +120,9 @@ function readAttributes(attributes: string): string {
  * is just text.
  */
 export function executableHtml(text: string): string | null {
-  if (/<script\b[^<>]*>[^]*?<\/script\s*>/i.test(text)) return 'a script element';
+  // A script start tag with an end tag after it (found in one pass each: no backtracking on hostile text).
+  const start = text.search(/<script\b[^<>]*>/i);
+  if (start >= 0 && /<\/script\s*>/i.test(text.slice(start))) return 'a script element';
   for (const [, name, attributes = ''] of text.matchAll(TAG)) {
     const tag = name.toLowerCase();
     const read = readAttributes(attributes);
