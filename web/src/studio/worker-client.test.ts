@@ -229,9 +229,11 @@ describe('BuildClient', () => {
     expect(await b).toEqual({ kind: 'stopped' });
     expect(workers[0].terminated).toBe(true);
     expect(client.busy).toBe(false);
+    expect(workers, 'a fresh worker is started at once').toHaveLength(2);
     workers[0].answer(1); // a late answer of the terminated worker changes nothing
     const next = client.request('next', {});
     expect(workers).toHaveLength(2);
+    expect(workers[1].requests.map((r) => r.source)).toEqual(['next']);
     latest().answer();
     expect(source(await next)).toBe('next');
   });

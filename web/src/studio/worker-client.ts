@@ -128,8 +128,8 @@ export class BuildClient {
   }
 
   /**
-   * Stops the build under way and any waiting one at once: the worker is terminated (the next
-   * request starts a fresh one) and those still wanted settle as `stopped`. True when one was.
+   * Stops the build under way and any waiting one at once: the worker is terminated and a fresh
+   * one started for the next request, and those still wanted settle as `stopped`. True when one was.
    */
   stop(): boolean {
     const open = [this.running, this.waiting].filter((e): e is Entry => e !== undefined);
@@ -137,7 +137,10 @@ export class BuildClient {
     this.running = undefined;
     this.waiting = undefined;
     for (const entry of open) this.settle(entry, { kind: 'stopped' });
-    if (open.length > 0) this.stopWorker();
+    if (open.length > 0) {
+      this.stopWorker();
+      this.ensureWorker(); // started now, so the next build does not wait for it to load
+    }
     return wanted;
   }
 
