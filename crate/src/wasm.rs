@@ -14,7 +14,7 @@
 use crate::branches::{parse_edits, write_edits, NO_BRANCH};
 use crate::export::{self, Format};
 use crate::mesh::MeshOptions;
-use crate::pipeline::{self, BuildOptions, Hooks, Stage};
+use crate::pipeline::{self, BuildOptions, Hooks, Progress, Stage};
 use serde::Deserialize;
 use std::cell::RefCell;
 use wasm_bindgen::prelude::*;
@@ -169,14 +169,23 @@ pub fn vocabulary() -> String {
 
 /// Runs the whole pipeline on `source`. `clock`, when given, is read between the stages
 /// (JavaScript's `() => performance.now()`): their times come back in `timings()`.
+/// `progress(stage, step, steps)`, when given, is told each stage as it starts (`parsing`,
+/// `deriving`, `interpreting`, `meshing`; step and steps 0) and, while deriving, each step done
+/// (`deriving`, k, n, from 0 of n). A progress callback that throws changes nothing.
 #[wasm_bindgen]
 pub fn build(
     source: &str,
     options: &BuildOptionsObject,
     clock: Option<js_sys::Function>,
+    progress: Option<js_sys::Function>,
 ) -> Result<PlantBuild, JsError> {
     let options = read::<BuildOptionsFields>(options)?.options();
-    Ok(build_reading(source, &options, clock.as_ref()))
+    Ok(build_reading(
+        source,
+        &options,
+        clock.as_ref(),
+        progress.as_ref(),
+    ))
 }
 
 /// `build(source, { iterations, sketch: true })`: the entry point of the shared benchmark
@@ -188,13 +197,14 @@ pub fn build_sketch(source: &str, iterations: Option<u32>) -> PlantBuild {
         sketch: Some(true),
         ..BuildOptionsFields::default()
     };
-    build_reading(source, &options.options(), None)
+    build_reading(source, &options.options(), None, None)
 }
 
 fn build_reading(
     source: &str,
     options: &BuildOptions,
     clock: Option<&js_sys::Function>,
+    progress: Option<&js_sys::Function>,
 ) -> PlantBuild {
     let mut now = || {
         clock
@@ -202,9 +212,23 @@ fn build_reading(
             .and_then(|t| t.as_f64())
             .unwrap_or(0.0)
     };
+    let mut tell = |p: Progress| {
+        let (stage, step, steps) = match p {
+            Progress::Started(stage) => (stage, 0, 0),
+            Progress::Derived { step, steps } => (Stage::Derive, step, steps),
+        };
+        if let Some(f) = progress {
+            let _ = f.call3(
+                &JsValue::NULL,
+                &JsValue::from_str(stage.label()),
+                &JsValue::from_f64(step.into()),
+                &JsValue::from_f64(steps.into()),
+            );
+        }
+    };
     let mut hooks = Hooks {
         clock: clock.map(|_| &mut now as &mut dyn FnMut() -> f64),
-        progress: None,
+        progress: progress.map(|_| &mut tell as &mut dyn FnMut(Progress)),
     };
     let build = pipeline::build_with(source, options, &mut hooks);
     let diagnostics =
@@ -245,7 +269,9 @@ pub fn export_model(
         stem: stem.clone(),
         edits,
     };
-    let mut tell = |stage: Stage| {
+    let mut tell = |p: Progress| {
+        // Stage starts only: an export's progress is its stages.
+        let Progress::Started(stage) = p else { return };
         if let Some(f) = &progress {
             let index = Stage::ALL.iter().position(|s| *s == stage).unwrap_or(0);
             // A progress callback that throws changes nothing: the export goes on.

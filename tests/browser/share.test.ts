@@ -322,7 +322,8 @@ describe('grammar files', () => {
     await page.getByTestId('confirm-replace-button').click();
     expect(await nextBuild(page, before)).toBe('ok');
     expect(await editorText(page)).toBe(mine);
-    expect(await page.getByTestId('notice').isHidden()).toBe(true);
+    // The text it replaced was the user's: kept first, and said so.
+    expect(await page.getByTestId('notice-text').textContent()).toBe('Opened tiny-fern.lsys. Your previous text is kept in My grammars as “Before “tiny-fern.lsys”: Untitled grammar”.');
     // A file that is not text is refused with a message; the text stays.
     await page.getByTestId('file-input').setInputFiles({ name: 'photo.lsys', mimeType: 'image/png', buffer: Buffer.from([0x89, 0x50, 0x4e, 0x47, 0, 0, 0]) });
     await expect.poll(() => page.getByTestId('notice-text').textContent()).toBe('Could not open photo.lsys: photo.lsys is not a text file.');

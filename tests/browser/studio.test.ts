@@ -179,7 +179,7 @@ describe('the studio', () => {
     await page.keyboard.press('Control+End');
     await page.keyboard.insertText('\nY -> F[+Y');
     expect(await nextBuild(before)).toBe('stale');
-    await expect(page.getByTestId('status').textContent()).resolves.toMatch(/^1 error — showing last good plant$/);
+    await expect(page.getByTestId('status').textContent()).resolves.toMatch(/^1 error — showing last good plant · line \d+: .+/);
 
     const mark = page.getByTestId('editor').locator('.cm-lintRange-error');
     await mark.first().waitFor({ state: 'visible' });

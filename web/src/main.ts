@@ -3,14 +3,15 @@
 import './style.css';
 import { coreVersion, initCore, languageVocabulary } from './core';
 import { createGrammarEditor, growthAttributes, type GrammarEditor } from './editor';
+import { KeptTexts } from './share/kept-texts';
 import { GrammarStore } from './share/storage';
 import { PlantView } from './view';
 import {
   Autosave, BranchEditSession, BuildClient, ContextView, DerivationControls, GalleryDialog, GalleryThumbnails, GrowthPanel,
   DerivationView, EmbedSnippets, HelpPanel, LearnPanel, LibraryDialog, LinkState, LivePreview, Notice, ShareDialog, SliderPanel, StagesMode, TextOpening,
-  ViewFollowing, ViewOptions, ViewTools, attachSplitter, browserStorage, connectTestHook, createBuildWorker, emptyTestHook, fetchExample,
+  TextKeeper, ViewFollowing, ViewOptions, ViewTools, attachSplitter, browserDatabase, browserStorage, createImportWorker, connectTestHook, createBuildWorker, emptyTestHook, fetchExample,
   figureName, installDownloads, installDrop, installInspectorTabs, learnElements, LayoutModes,
-  installFileMenu, installShareButton, installShortcuts, openPastedLinks, renderShortcutHelp, reportCoreCrashes, showStatus, sidesChoices,
+  installFileMenu, installShareButton, installShortcuts, openPastedLinks, readGrammarFile, renderShortcutHelp, reportCoreCrashes, showStatus, sidesChoices,
   startingText, studioElements, type ShortcutAction, type StudioElements, type StudioTestHook,
 } from './studio';
 
@@ -20,17 +21,21 @@ const INITIAL_EXAMPLE = 'abop-1.24d.lsys';
 async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<void> {
   showStatus(els.status, { state: 'loading', text: 'Loading…' });
   const notice = new Notice(els.notice);
+  // The user's work: localStorage, else (when that is full) IndexedDB; kept before anything replaces it.
   const store = new GrammarStore(browserStorage());
-  // The page's own core instance serves the tables (commands, directives, version) and the
-  // importers of opened files; builds run in the worker's.
-  const [start] = await Promise.all([startingText(store, notice, INITIAL_EXAMPLE), initCore()]);
+  const kept = new KeptTexts(browserDatabase());
+  const keeper = new TextKeeper(store, kept);
+  // The page's own core instance serves the tables (commands, directives, version); builds run in
+  // the build worker's, imports of opened files in an import worker's.
+  const starting = { store, kept, keeper, notice, cannotKeep: els.cannotKeep };
+  const [start] = await Promise.all([startingText(starting, INITIAL_EXAMPLE), initCore()]);
   els.version.textContent = `core ${coreVersion()}`;
 
   const view = new PlantView(els.viewport);
   const viewOptions = new ViewOptions(sidesChoices(els.viewTools.sides));
   viewOptions.applyShared(start.state?.view); // a link's, before anything follows the options
   const derivation = new DerivationControls(els.derivation, notice);
-  const autosave = new Autosave(store, notice);
+  const autosave = new Autosave(store, kept, notice);
   // The editor and the pieces around it need each other: they reach it once it is made (below).
   let editor: GrammarEditor | undefined;
   const currentText = () => editor?.text() ?? start.text;
@@ -47,6 +52,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     client: new BuildClient(createBuildWorker),
     view,
     status: els.status,
+    stop: els.stopBuild,
     staleBadge: els.staleBadge,
     text: currentText,
     options: () => ({ iterations: derivation.iterations(), seed: derivation.seed(), sides: viewOptions.values.sides, smoothAll: viewOptions.values.smoothAll }),
@@ -87,6 +93,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   editor = grammarEditor;
   // The layout for the room: narrow screens, Large for a projector, fullscreen.
   const layout = new LayoutModes(els.layout, { remeasureEditor: () => grammarEditor.view.requestMeasure() }, browserStorage());
+  els.stopBuild.addEventListener('click', () => grammarEditor.view.focus()); // the text stays, to edit on
   sliders.update(start.text);
   growth.update(start.text);
   derivation.textChanged(start.text);
@@ -119,6 +126,9 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     {
       editor: grammarEditor,
       confirm: els.confirm,
+      cannotKeep: els.cannotKeep,
+      keeper,
+      readFile: (file) => readGrammarFile(file, { createWorker: createImportWorker, notice }),
       notice,
       forgetText: () => {
         derivation.clear();
@@ -134,8 +144,8 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   const openGallery = () => void gallery.open().catch((error: unknown) => console.error('Could not open the gallery:', error));
   els.openGallery.addEventListener('click', openGallery);
   new LearnPanel(learnElements(), { preview, open: (text, title, key) => opening.replace(text, title, key) }); // lessons (issue 17)
-  if (start.from === 'link') autosave.save(start.text); // the link's text is now the work in progress
-  const library = new LibraryDialog(els.library, store, { text: () => grammarEditor.text(), open: (entry) => opening.openSaved(entry) });
+  if (start.from === 'link') void autosave.save(start.text); // the link's text is now the work in progress
+  const library = new LibraryDialog(els.library, store, kept, { text: () => grammarEditor.text(), open: (entry, key) => opening.openSaved(entry, key) });
   installFileMenu(els.fileMenu, { openFile: (file) => opening.openFile(file), text: () => grammarEditor.text(), openLibrary: () => library.open() });
   installDrop(els.studio, (file) => opening.openFile(file));
 
@@ -158,7 +168,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   if (start.state) link.restore(start.state); // iterations, seed, edits, camera (its view options apply already)
   const snippets = new EmbedSnippets(els.embedSnippets, new URL('./', location.href).href);
   installShareButton(els.share, new ShareDialog(els.shareDialog), () => link.capture(), notice, (state, fragment) => snippets.show(state, fragment));
-  openPastedLinks({ store, notice, autosave, opening, link, buildNow: () => preview.rebuild(true) });
+  openPastedLinks({ notice, opening, link, buildNow: () => preview.rebuild(true) });
 
   preview.onDelivered((result) => {
     if (result.build.ok) branchEdits.plantShown();

@@ -56,6 +56,8 @@ export {
   type PlantInspector,
   type ProductionInfo,
   type BuildOptions,
+  type BuildProgress,
+  type BuildStage,
   type Diagnostic,
   type MeshBuffers,
   type PlantBuild,

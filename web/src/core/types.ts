@@ -77,6 +77,19 @@ export interface MeshBuffers {
  */
 export type BuildOptions = Omit<CoreBuildOptions, 'sketch'>;
 
+/** A stage of a build, as the core reports it (in this order). */
+export type BuildStage = 'parsing' | 'deriving' | 'interpreting' | 'meshing';
+
+/**
+ * Where a build is: the stage that just started, and while deriving, `step` of the `steps`
+ * derivation steps done (told from 0 of n, then after each step; both 0 in the other stages).
+ */
+export interface BuildProgress {
+  stage: BuildStage;
+  step: number;
+  steps: number;
+}
+
 /**
  * How long each stage of one build took, in milliseconds, measured with `performance.now()` read
  * by the core between its stages (the core has no clock of its own). A stage that did not run

@@ -1,8 +1,6 @@
 // The File menu: open a grammar file (the picker, or Ctrl+O), save the text as a `.lsys` file
 // (Ctrl+S), and My grammars.
-import { titleOf } from '../share/storage';
-import { saveFile } from './downloads';
-import { lsysFileName } from './grammar-files';
+import { saveGrammarFile } from './grammar-files';
 import { closeLikeAMenu } from './menus';
 
 /** The menu and its file picker (see index.html). */
@@ -34,8 +32,7 @@ export function installFileMenu(els: FileMenuElements, actions: FileMenuActions)
   };
   const saveAsFile = () => {
     els.menu.open = false;
-    const text = actions.text();
-    saveFile(new TextEncoder().encode(text), lsysFileName(titleOf(text)), 'text/plain');
+    saveGrammarFile(actions.text());
   };
   els.openFile.addEventListener('click', pickFile);
   els.fileInput.addEventListener('change', () => {

@@ -2,6 +2,8 @@
 // cpfg `.l` and L-Py `.lpy` through the core's importers, with their notes; text that is not UTF-8
 // (old Lparser files) read as Windows-1252. Saving writes the editor's text as `NAME.lsys`.
 import { importGrammar, type Dialect } from '../core';
+import { titleOf } from '../share/storage';
+import { saveFile } from './downloads';
 
 /** Largest grammar file opened (bytes). */
 export const MAX_FILE_BYTES = 1_000_000;
@@ -35,19 +37,38 @@ export function decodeText(bytes: Uint8Array): { text: string; utf8: boolean } {
   }
 }
 
-/**
- * Reads a grammar file: `.lsys` (and any file the importers do not recognise) as Meristem's
- * language; other dialects, told by extension or content, translated with notes. Requires the
- * core (for the importers).
- */
-export function openGrammarBytes(name: string, bytes: Uint8Array): OpenedFile {
+/** A grammar file's bytes checked and decoded, before any import. */
+export type CheckedFile =
+  | {
+      ok: true;
+      text: string;
+      /** Meristem's own language (`.lsys`): nothing to import. */
+      lsys: boolean;
+      /** A note about the encoding, when the file is not UTF-8. */
+      notes: string[];
+    }
+  | { ok: false; error: string };
+
+/** Checks a grammar file's size and that it is text, and decodes it (quick: the page does this itself). */
+export function checkGrammarBytes(name: string, bytes: Uint8Array): CheckedFile {
   if (bytes.length > MAX_FILE_BYTES) {
     return { ok: false, error: `${name} is too large for a grammar (${bytes.length.toLocaleString('en-US')} bytes; at most ${MAX_FILE_BYTES.toLocaleString('en-US')})` };
   }
   if (bytes.includes(0)) return { ok: false, error: `${name} is not a text file` };
   const { text, utf8 } = decodeText(bytes);
-  const encoding = utf8 ? [] : ['The file is not UTF-8; it was read as Windows-1252.'];
-  if (/\.lsys$/i.test(name)) return { ok: true, text, dialect: null, notes: encoding };
+  return { ok: true, text, lsys: /\.lsys$/i.test(name), notes: utf8 ? [] : ['The file is not UTF-8; it was read as Windows-1252.'] };
+}
+
+/**
+ * Reads a grammar file: `.lsys` (and any file the importers do not recognise) as Meristem's
+ * language; other dialects, told by extension or content, translated with notes. Requires the
+ * core (for the importers): the studio calls it in the import worker.
+ */
+export function openGrammarBytes(name: string, bytes: Uint8Array): OpenedFile {
+  const checked = checkGrammarBytes(name, bytes);
+  if (!checked.ok) return checked;
+  const { text, notes: encoding } = checked;
+  if (checked.lsys) return { ok: true, text, dialect: null, notes: encoding };
   const imported = importGrammar(text, name);
   if (imported.dialect === null) return { ok: true, text, dialect: null, notes: encoding };
   const notes = imported.notes.map((n) => (n.line > 0 ? `line ${n.line}: ${n.message}` : n.message));
@@ -66,4 +87,11 @@ export function lsysFileName(title: string): string {
     .replace(/^-|-$/g, '')
     .toLowerCase();
   return `${stem || 'grammar'}.lsys`;
+}
+
+/** Downloads `text` as a `.lsys` file named after its title; returns the file name. */
+export function saveGrammarFile(text: string): string {
+  const name = lsysFileName(titleOf(text));
+  saveFile(new TextEncoder().encode(text), name, 'text/plain');
+  return name;
 }

@@ -15,6 +15,7 @@ export function studioElements() {
     editor: byId('editor', HTMLElement),
     viewport: byId('viewport', HTMLElement),
     status: byId('status', HTMLElement),
+    stopBuild: byId('build-stop', HTMLButtonElement),
     version: byId('core-version', HTMLElement),
     derivation: {
       iterations: byId('iterations', HTMLInputElement),
@@ -73,6 +74,10 @@ export function studioElements() {
     openGallery: byId('open-gallery', HTMLButtonElement),
     gallery: byId('gallery', HTMLDialogElement),
     galleryList: byId('gallery-list', HTMLElement),
+    cannotKeep: {
+      dialog: byId('cannot-keep', HTMLDialogElement),
+      example: byId('cannot-keep-what', HTMLElement),
+    },
     confirm: {
       dialog: byId('confirm-replace', HTMLDialogElement),
       example: byId('confirm-example', HTMLElement),
@@ -128,6 +133,11 @@ export function studioElements() {
       copy: byId('share-copy', HTMLButtonElement),
       status: byId('share-status', HTMLElement),
       size: byId('share-size', HTMLElement),
+      linkRow: byId('share-row', HTMLElement),
+      statusLine: byId('share-status-line', HTMLElement),
+      tooLong: byId('share-too-long', HTMLElement),
+      tooLongText: byId('share-too-long-text', HTMLElement),
+      download: byId('share-download', HTMLButtonElement),
     },
     embedSnippets: {
       iterations: byId('embed-iterations', HTMLInputElement),

@@ -200,7 +200,7 @@ export class StagesMode {
       // The sketch (the segments as lines) of every stage: drawn with the tubes, it keeps the early,
       // small stages visible where their tubes are thinner than a pixel.
       let sketch: PlantSketch | null = null;
-      const outcome = await client.request(source, { ...options, iterations: stage.iterations, seed: stage.seed }, (s) => (sketch = s), 0);
+      const outcome = await client.request(source, { ...options, iterations: stage.iterations, seed: stage.seed }, { onSketch: (s) => (sketch = s), sketchFrom: 0 });
       if (ticket !== this.ticket) {
         if (outcome.kind === 'built') outcome.result.inspector.free();
         return;
@@ -214,9 +214,9 @@ export class StagesMode {
     this.say('done', missing === 0 ? scaled : `${scaled}; ${missing} drew nothing`);
   }
 
-  private plantOf(stage: Stage, result: BuildResult | 'superseded' | 'crashed', sketch: PlantSketch | null): StagePlant {
+  private plantOf(stage: Stage, result: BuildResult | 'superseded' | 'crashed' | 'stopped', sketch: PlantSketch | null): StagePlant {
     const empty: StagePlant = { mesh: null, lines: null, flat: true, bounds: [[0, 0, 0], [0, 0, 0]], caption: stage.caption };
-    if (result === 'superseded') return { ...empty, caption: `${stage.caption}: not grown` };
+    if (result === 'superseded' || result === 'stopped') return { ...empty, caption: `${stage.caption}: not grown` };
     if (result === 'crashed') return { ...empty, caption: `${stage.caption}: the core crashed` };
     result.inspector.free();
     const { build } = result;
