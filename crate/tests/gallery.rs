@@ -223,3 +223,24 @@ fn greens_random_l_systems_grow_individuals_of_one_species() {
     assert_eq!(stems.len(), 4, "{text}");
     assert!(stems.iter().any(|&n| n != stems[0]), "{stems:?}");
 }
+
+#[test]
+fn sierpinski_and_the_row_of_trees_lie_as_in_the_book() {
+    // ABOP 1.10b stands on a horizontal base and 1.37a's row runs left to right with the trees
+    // above it: both are wider than tall, start at the origin and grow up (+Y) from their base.
+    for name in ["abop-1.10b-sierpinski.lsys", "abop-1.37a-row-of-trees.lsys"] {
+        let result = build(&example(name), &BuildOptions::default());
+        let [min, max] = result.plant.stats.bounds;
+        let (width, height) = (max[0] - min[0], max[1] - min[1]);
+        assert!(width > 1.1 * height, "{name}: {width} wide, {height} tall");
+        let thickness = max[2] - min[2];
+        assert!(
+            min[0].abs() < thickness && min[1].abs() < thickness,
+            "{name}: starts at {min:?}"
+        );
+        assert!(
+            max[1] > 0.4 * width,
+            "{name}: grows below its base ({min:?}..{max:?})"
+        );
+    }
+}

@@ -11,6 +11,8 @@ use glam::DVec3;
 pub struct Settings {
     /// `#angle`: the default turn angle δ in degrees.
     pub angle: f64,
+    /// `#heading`: the turn of the turtle's starting frame about U, in degrees (as `+` turns).
+    pub heading: f64,
     /// `#iterations` / `derivation length:`: the default number of derivation steps.
     pub iterations: u32,
     /// `#seed`: the seed of the random generator.
@@ -64,6 +66,7 @@ impl Settings {
     pub fn value(&self, directive: DirectiveKind) -> f64 {
         match directive {
             DirectiveKind::Angle => self.angle,
+            DirectiveKind::Heading => self.heading,
             DirectiveKind::Step => self.step,
             DirectiveKind::Width => self.width,
             DirectiveKind::WidthStep => self.width_step,
@@ -96,6 +99,7 @@ impl Default for Settings {
         let tropism = |k| directive_default(DirectiveKind::Tropism, k);
         Settings {
             angle: default_of(DirectiveKind::Angle),
+            heading: default_of(DirectiveKind::Heading),
             iterations: default_of(DirectiveKind::Iterations) as u32,
             seed: default_of(DirectiveKind::Seed) as u64,
             step: default_of(DirectiveKind::Step),

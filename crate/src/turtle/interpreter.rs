@@ -50,22 +50,27 @@ impl<'a> Interpreter<'a> {
             .map(|m| m.and_then(|info| Some((info.command()?, first_default(info, settings)))))
             .collect();
         let (tropism, susceptibility) = settings.tropism;
+        let mut start = TurtleState {
+            position: DVec3::ZERO,
+            heading: DVec3::Y,
+            left: DVec3::NEG_X,
+            up: DVec3::Z,
+            width: settings.width,
+            color: 0,
+            tropism,
+            susceptibility,
+            smooth: false,
+            last_segment: None,
+            anchor: None,
+        };
+        // `#heading`: the start turned as `+` would turn it.
+        if settings.heading != 0.0 {
+            start.yaw(settings.heading.to_radians());
+        }
         Interpreter {
             settings,
             actions,
-            turtle: TurtleState {
-                position: DVec3::ZERO,
-                heading: DVec3::Y,
-                left: DVec3::NEG_X,
-                up: DVec3::Z,
-                width: settings.width,
-                color: 0,
-                tropism,
-                susceptibility,
-                smooth: false,
-                last_segment: None,
-                anchor: None,
-            },
+            turtle: start,
             stack: Vec::new(),
             open_polygons: Vec::new(),
             skeleton: Skeleton {
