@@ -361,6 +361,28 @@ macro_rules! mesh_getters {
                 js_sys::Float32Array::from(&$get.mesh.line_colors[..])
             }
 
+            /// Every segment as a line, whatever the mesh (the studio's Lines mode): two ends
+            /// (x, y, z each) per segment.
+            #[wasm_bindgen(js_name = segmentEnds)]
+            pub fn segment_ends(&self) -> js_sys::Float32Array {
+                let $plant = self;
+                js_sys::Float32Array::from(&$get.segment_lines().ends[..])
+            }
+
+            /// A colour (r, g, b) per end of `segmentEnds`.
+            #[wasm_bindgen(js_name = segmentColors)]
+            pub fn segment_colors(&self) -> js_sys::Float32Array {
+                let $plant = self;
+                js_sys::Float32Array::from(&$get.segment_lines().colors[..])
+            }
+
+            /// The module of the derived string that drew each segment of `segmentEnds`.
+            #[wasm_bindgen(js_name = segmentModules)]
+            pub fn segment_modules(&self) -> js_sys::Uint32Array {
+                let $plant = self;
+                js_sys::Uint32Array::from(&$get.segment_lines().modules[..])
+            }
+
             /// True when everything drawn lies in the plane z = 0.
             #[wasm_bindgen(getter)]
             pub fn flat(&self) -> bool {

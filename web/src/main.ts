@@ -121,7 +121,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
       forgetText: () => {
         derivation.clear();
         sliders.reset();
-        viewOptions.set({ projection: 'auto' });
+        viewOptions.set({ projection: 'auto', render: 'auto' });
         view.frameNextPlant();
       },
       buildNow: () => preview.rebuild(true),
@@ -146,6 +146,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     tell: (kind, message, items) => (message === null ? notice.hide() : notice.show(kind, message, items)),
     modeChanged: (on) => {
       following.editing(on);
+      viewTools.showProjection();
       contexts.picking = !on;
       if (on) contexts.pickModule(null);
     },

@@ -7,6 +7,7 @@
 //! ten times thicker.
 
 pub mod curve;
+mod lines;
 pub mod parts;
 pub mod polygon;
 pub mod sphere;
@@ -15,6 +16,7 @@ mod tube;
 
 use crate::turtle::Skeleton;
 use glam::DVec3;
+pub use lines::{segment_lines, SegmentLines};
 pub use parts::{ChainPart, MeshParts, Part};
 
 /// The mesh as four flat arrays. **This is the one place the layout is defined**; the wasm
@@ -616,14 +618,9 @@ impl<'a> Builder<'a> {
 
     /// The fallback for models too large to mesh: each segment as a coloured line.
     fn lines(&mut self, skeleton: &Skeleton) {
-        self.mesh.lines.reserve(6 * skeleton.segments.len());
-        self.mesh.line_colors.reserve(6 * skeleton.segments.len());
-        for s in &skeleton.segments {
-            for p in [s.start, s.end] {
-                self.mesh.lines.extend([p.x as f32, p.y as f32, p.z as f32]);
-                self.mesh.line_colors.extend(skeleton.color(s.color));
-            }
-        }
+        let lines = segment_lines(skeleton);
+        self.mesh.lines = lines.ends;
+        self.mesh.line_colors = lines.colors;
     }
 }
 
