@@ -146,7 +146,7 @@ describe('the Download menu', () => {
     const picture = decodePng(bytes);
     expect([picture.width, picture.height]).toEqual([640, 360]);
     expect(foregroundShare(picture), 'share of the picture covered by the plant').toBeGreaterThan(0.01);
-    await expect.poll(() => page.getByTestId('export-status').textContent()).toMatch(/^Saved plant\.png · 640 × 360 · /);
+    await expect.poll(() => page.getByTestId('export-status').textContent()).toMatch(/^Saved plant\.png · 640 × 360 at 150 DPI · /);
     // The view on the page is back to its own size.
     const canvas = await page.locator('[data-testid=viewport] canvas').boundingBox();
     const viewport = await page.getByTestId('viewport').boundingBox();

@@ -1,11 +1,12 @@
 // End-to-end: figures as in the book. Plants drawn in one plane show as lines of constant width
 // (the Lines mode, a toggle in the view toolbar with a width in pixels), 3D plants as tubes;
 // highlighting and picking work on lines. Screenshots land in test-results/.
+import { readFileSync, writeFileSync } from 'node:fs';
 import type { Browser, Page } from 'playwright-core';
 import { chromium } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { changedShare, strokeWidth } from './pictures';
-import { canvasPicture, example, generation, nextBuild, openStudio, type StudioPage } from './studio-page';
+import { backgroundColour, changedShare, decodePng, foregroundShare, strokeWidth } from './pictures';
+import { RESULTS, canvasPicture, example, generation, nextBuild, openStudio, type StudioPage } from './studio-page';
 
 let browser: Browser;
 let studio: StudioPage;
@@ -84,6 +85,43 @@ describe('the Lines mode', () => {
     await page.getByTestId('line-width').press('Enter');
     await page.getByTestId('lines-menu').locator('summary').click();
     await page.getByTestId('grid').click();
+    expect(studio.problems).toEqual([]);
+  });
+});
+
+describe('pictures for print', () => {
+  it('downloads ABOP 1.24a at 300 DPI on A5: white, no grid, lines of the width chosen', async () => {
+    await paste(example('abop-1.24a.lsys') + '\n');
+    expect(await renderMode()).toBe('lines');
+    const menu = page.getByTestId('downloads');
+    if (!(await menu.evaluate((m) => (m as HTMLDetailsElement).open))) await menu.locator('summary').click();
+    await page.getByTestId('png-dpi').selectOption('300');
+    await page.getByTestId('png-paper').selectOption('a5-portrait');
+    expect([await page.getByTestId('png-width').inputValue(), await page.getByTestId('png-height').inputValue()]).toEqual(['1748', '2480']);
+    await page.getByTestId('png-background').selectOption('white');
+    await page.getByTestId('png-line-width').fill('5');
+    const [download] = await Promise.all([page.waitForEvent('download'), page.getByTestId('download-png').click()]);
+    const bytes = readFileSync((await download.path())!);
+    writeFileSync(new URL('figures-1.24a-300dpi.png', RESULTS), bytes);
+    const picture = decodePng(bytes);
+    expect([picture.width, picture.height]).toEqual([1748, 2480]);
+    // 300 DPI recorded: 11811 pixels per metre.
+    const phys = bytes.indexOf('pHYs');
+    expect([bytes.readUInt32BE(phys + 4), bytes.readUInt32BE(phys + 8), bytes[phys + 12]]).toEqual([11811, 11811, 1]);
+    expect(backgroundColour(picture), 'a white background').toEqual([255, 255, 255]);
+    // No grid: every pixel is white or the plant's brown (antialiased towards white).
+    const [r, g, b] = [...picture.data.subarray(0, 4)];
+    expect([r, g, b]).toEqual([255, 255, 255]);
+    let grey = 0;
+    for (let i = 0; i < picture.data.length; i += 4) {
+      const [pr, pg, pb] = [picture.data[i], picture.data[i + 1], picture.data[i + 2]];
+      if (pr < 255 && Math.abs(pr - pg) < 4 && Math.abs(pg - pb) < 4) grey++; // grid lines are grey
+    }
+    expect(grey / (picture.width * picture.height), 'no grey grid lines').toBeLessThan(0.001);
+    expect(foregroundShare(picture)).toBeGreaterThan(0.005);
+    const measured = strokeWidth(picture);
+    expect(Math.abs(measured - 5), `stroke width measured ${measured}`).toBeLessThanOrEqual(1);
+    await expect.poll(() => page.getByTestId('export-status').textContent()).toMatch(/ · 1748 × 2480 at 300 DPI · /);
     expect(studio.problems).toEqual([]);
   });
 });

@@ -4,6 +4,7 @@ import {
   Box3,
   BufferAttribute,
   BufferGeometry,
+  Color,
   DoubleSide,
   GridHelper,
   LineBasicMaterial,
@@ -49,6 +50,13 @@ export type ProjectionMode = 'auto' | Projection;
  * of the grammar's widths, or `auto`: lines for plants drawn in one plane, tubes for 3D ones.
  */
 export type RenderMode = 'auto' | 'lines' | 'tubes';
+
+/** A picture's look: its background (the view's, white or none), and the lines' width in its pixels. */
+export interface PictureLook {
+  background: 'view' | 'white' | 'transparent';
+  /** The Lines mode's width in the picture's pixels (default: the view's, in CSS pixels). */
+  lineWidth?: number;
+}
 
 /** A camera's place: eye, the point it looks at (the orbit's centre), and the orthographic zoom. */
 export interface ViewPose {
@@ -142,7 +150,8 @@ export class PlantView {
   private readonly renderListeners = new Set<() => void>();
 
   constructor(private readonly container: HTMLElement) {
-    this.renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    // alpha: a picture may have a transparent background (the view's own is always opaque).
+    this.renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true, alpha: true });
     this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
     this.renderer.domElement.setAttribute('aria-label', '3D view of the plant; drag to orbit, scroll to zoom');
     container.append(this.renderer.domElement);
@@ -495,17 +504,26 @@ export class PlantView {
   }
 
   /**
-   * A PNG of the current view at `width` × `height` pixels: the same camera, lights and
-   * background, the aspect ratio of the picture (the vertical field of view, or the orthographic
-   * height, is kept). The canvas is drawn at that size for one frame and restored before the page
-   * paints again.
+   * A PNG of the current view at `width` × `height` pixels: the same camera and lights, the
+   * aspect ratio of the picture (the vertical field of view, or the orthographic height, is kept).
+   * With `look.background` white or transparent the picture has that background and no grid; the
+   * lines are `look.lineWidth` of its pixels wide. The canvas is drawn at that size for one frame
+   * and restored before the page paints again.
    */
-  async snapshot(width: number, height: number): Promise<Blob> {
+  async snapshot(width: number, height: number, look: PictureLook = { background: 'view' }): Promise<Blob> {
     const canvas = this.renderer.domElement;
     const pixelRatio = this.renderer.getPixelRatio();
     const camera = this.active.camera;
+    const background = this.scene.background;
+    const lineWidth = this.segmentLines.lineWidth;
     let blob: Promise<Blob | null>;
     try {
+      if (look.background !== 'view') {
+        this.scene.background = look.background === 'white' ? new Color('#ffffff') : null;
+        if (this.grid) this.grid.visible = false;
+      }
+      this.renderer.setClearColor(0xffffff, look.background === 'transparent' ? 0 : 1);
+      this.segmentLines.lineWidth = look.lineWidth ?? lineWidth;
       this.renderer.setPixelRatio(1);
       this.renderer.setSize(width, height, false);
       if (camera instanceof PerspectiveCamera) camera.aspect = width / height;
@@ -515,6 +533,9 @@ export class PlantView {
       // toBlob copies the bitmap now (preserveDrawingBuffer keeps it); encoding finishes later.
       blob = new Promise((resolve) => canvas.toBlob(resolve, 'image/png'));
     } finally {
+      this.scene.background = background;
+      if (this.grid) this.grid.visible = this.gridVisible;
+      this.segmentLines.lineWidth = lineWidth;
       this.renderer.setPixelRatio(pixelRatio);
       this.resize();
       this.renderer.render(this.scene, camera);
