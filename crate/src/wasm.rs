@@ -43,7 +43,7 @@ export interface ViewOptions {
 export interface ExportOptions extends BuildOptions {
   /** `wrl`, `glb`, `pov`, `obj`, `iv` or `svg`. */
   format: string;
-  /** File name without extension; default `plant`. */
+  /** File name without extension; default `plant`. A zip of several files is `NAME-FORMAT.zip`. */
   name?: string;
   /** An edits document (JSON text) to apply first. */
   edits?: string;
@@ -263,7 +263,8 @@ pub fn export_model(
     };
     let exported = pipeline::export(source, &options, &mut hooks)
         .map_err(|_| JsError::new("the grammar has errors: nothing to export"))?;
-    let file = export::bundle(exported.files, &stem)
+    // Several files go in one zip named after the format too: `fern-pov.zip`, `fern-obj.zip`.
+    let file = export::bundle(exported.files, &format!("{stem}-{}", format.extension()))
         .ok_or_else(|| JsError::new("the export is larger than 4 GiB"))?;
     Ok(ExportedModel { file })
 }

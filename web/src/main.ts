@@ -101,7 +101,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     shown: () => preview.lastGood,
     createClient: () => new BuildClient(createBuildWorker),
     lighting: () => viewOptions.values.lighting,
-    fileName: () => figureName(opening.currentFile),
+    fileName: () => figureName(opening.currentFile, preview.lastGood?.source),
     toggled: (on) => viewTools.pauseForStages(on),
   });
   viewOptions.onChange((values, changed) => changed.has('lighting') && stages.setLighting(values.lighting));
@@ -164,7 +164,10 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   connectTestHook(hook, { preview, view, branchEdits });
 
   // Downloads: the plant on screen (the last good build's text and options, with the edits).
-  installDownloads(els.downloads, view, () => preview.lastGood && { source: preview.lastGood.source, options: { ...preview.lastGood.options, edits: branchEdits.document() } });
+  installDownloads(els.downloads, view, () => {
+    const good = preview.lastGood;
+    return good && { source: good.source, options: { ...good.options, edits: branchEdits.document() }, name: figureName(opening.currentFile, good.source) };
+  });
 
   // Keyboard: shortcuts anywhere, their help, the splitter.
   const actions: Record<ShortcutAction, () => void> = {

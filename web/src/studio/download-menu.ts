@@ -30,6 +30,8 @@ export interface DownloadMenuElements {
 export interface DownloadedPlant {
   source: string;
   options: ExportOptions;
+  /** The name its files are saved under, without extension (see `figureName`). */
+  name: string;
 }
 
 /** The state of the last download. */
@@ -73,7 +75,8 @@ export function installDownloads(els: DownloadMenuElements, view: PlantView, sho
     download(label, async () => {
       const plant = shown();
       if (!plant) throw new Error('no plant yet');
-      const running = runExport(createExportWorker, { source: plant.source, format, options: plant.options }, (progress) => {
+      const options = { ...plant.options, name: plant.name };
+      const running = runExport(createExportWorker, { source: plant.source, format, options }, (progress) => {
         els.exportProgress.max = progress.count;
         els.exportProgress.value = progress.index + 1;
         showExportStatus(els.exportStatus, 'busy', describeProgress(label, progress));
@@ -107,13 +110,14 @@ export function installDownloads(els: DownloadMenuElements, view: PlantView, sho
     }
     const dpi = Number(els.pngDpi.value);
     const look: PictureLook = { background: els.pngBackground.value as PictureLook['background'], lineWidth };
+    const name = `${shown()?.name ?? 'plant'}.png`;
     // The picture is drawn by the page's WebGL context: it cannot move to a worker (it is one draw).
     void download(`PNG ${size.width} × ${size.height}`, async () => {
       await afterPaint(); // the status shows before the draw
       const drawn = await view.snapshot(size.width, size.height, look);
       const png = withResolution(new Uint8Array(await drawn.arrayBuffer()), dpi);
-      saveFile(png, 'plant.png', 'image/png');
-      return `Saved plant.png · ${size.width} × ${size.height} at ${dpi} DPI · ${fileSize(png.length)}`;
+      saveFile(png, name, 'image/png');
+      return `Saved ${name} · ${size.width} × ${size.height} at ${dpi} DPI · ${fileSize(png.length)}`;
     });
   });
 }

@@ -1,5 +1,31 @@
 // Downloads: handing a file to the browser, and the small parsing and wording around it.
 
+/** Words of a title that name no figure in particular (`ABOP Fig. 1.24d` is saved as `abop-1.24d`). */
+const FIGURE_WORDS = /^(fig\.?|figure)$/i;
+
+/**
+ * The name files of a grammar are saved under: its title (the first line of its opening `//`
+ * comment, up to a colon: `// ABOP Fig 1.24d: …` gives `abop-1.24d`, `// Barnsley fern` gives
+ * `barnsley-fern`), else the name of the file it was opened as (an example, `file/NAME`; not a
+ * saved grammar's `saved/ID`), else `plant`.
+ */
+export function figureName(file: string, source = ''): string {
+  const title = /^\s*\/\/(.*)/.exec(source)?.[1].split(':')[0] ?? '';
+  const words = title.split(/\s+/).filter((w) => w !== '' && !FIGURE_WORDS.test(w));
+  const fromTitle = slug(words.join('-')).slice(0, 48).replace(/-+$/, '');
+  if (fromTitle !== '') return fromTitle;
+  const name = slug(file.replace(/^(file|saved)\//, '').replace(/\.[A-Za-z0-9]+$/, ''));
+  return name === '' || file.startsWith('saved/') ? 'plant' : name;
+}
+
+/** Lower case, runs of anything but letters, digits, `.` and `_` as one `-`, none at the ends. */
+function slug(text: string): string {
+  return text
+    .toLowerCase()
+    .replace(/[^\p{L}\p{N}._]+/gu, '-')
+    .replace(/^[-.]+|[-.]+$/g, '');
+}
+
 /** The smallest and (unless the GPU allows less) largest side of a PNG picture, in pixels. */
 export const PICTURE_MIN = 16;
 export const PICTURE_MAX = 8192;
