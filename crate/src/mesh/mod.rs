@@ -235,10 +235,45 @@ impl MeshBuffers {
 /// How a width value becomes a diameter in model units.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum WidthUnit {
-    /// One width unit is this fraction of the skeleton's bounding-box diagonal.
+    /// One width unit is this fraction of the skeleton's bounding-box diagonal; but when the
+    /// grammar sets no width (`Skeleton::widths_set`), at most [`DEFAULT_WIDTH_PER_LENGTH`] of its
+    /// internodes' median length, so that a plant of many short internodes (ABOP 1.24a) is drawn
+    /// thin, as in the book, not as beads as thick as they are long.
     Relative(f64),
     /// One width unit is this many model units.
     Absolute(f64),
+}
+
+/// The default width of an internode, where the grammar sets none, as a share of the internodes'
+/// median length (see [`WidthUnit::Relative`]).
+pub const DEFAULT_WIDTH_PER_LENGTH: f64 = 0.1;
+
+/// Model units per width unit for `skeleton` (see [`WidthUnit`]).
+pub fn resolve_width_unit(skeleton: &Skeleton, unit: WidthUnit) -> f64 {
+    match unit {
+        WidthUnit::Absolute(u) => u,
+        WidthUnit::Relative(fraction) => {
+            let relative = fraction * skeleton_diagonal(skeleton);
+            if skeleton.widths_set {
+                return relative;
+            }
+            let mut lengths: Vec<f64> = skeleton
+                .segments
+                .iter()
+                .map(|s| s.start.distance(s.end))
+                .collect();
+            if lengths.is_empty() {
+                return relative;
+            }
+            let middle = lengths.len() / 2;
+            let (_, median, _) = lengths.select_nth_unstable_by(middle, f64::total_cmp);
+            if *median > 0.0 && median.is_finite() {
+                relative.min(DEFAULT_WIDTH_PER_LENGTH * *median)
+            } else {
+                relative
+            }
+        }
+    }
 }
 
 /// Options of the mesh stage.
@@ -301,10 +336,7 @@ pub fn build_mesh_with_parts(
     skeleton: &Skeleton,
     options: &MeshOptions,
 ) -> (MeshBuffers, MeshParts) {
-    let unit = match options.width_unit {
-        WidthUnit::Absolute(u) => u,
-        WidthUnit::Relative(fraction) => fraction * skeleton_diagonal(skeleton),
-    };
+    let unit = resolve_width_unit(skeleton, options.width_unit);
     let mut builder = Builder::new(options, unit);
     let mut parts = MeshParts {
         segment_chain: vec![parts::NO_CHAIN; skeleton.segments.len()],

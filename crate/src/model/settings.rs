@@ -11,6 +11,8 @@ use glam::DVec3;
 pub struct Settings {
     /// `#angle`: the default turn angle δ in degrees.
     pub angle: f64,
+    /// The grammar has a `#width` directive.
+    pub width_given: bool,
     /// `#heading`: the turn of the turtle's starting frame about U, in degrees (as `+` turns).
     pub heading: f64,
     /// `#iterations` / `derivation length:`: the default number of derivation steps.
@@ -99,6 +101,7 @@ impl Default for Settings {
         let tropism = |k| directive_default(DirectiveKind::Tropism, k);
         Settings {
             angle: default_of(DirectiveKind::Angle),
+            width_given: false,
             heading: default_of(DirectiveKind::Heading),
             iterations: default_of(DirectiveKind::Iterations) as u32,
             seed: default_of(DirectiveKind::Seed) as u64,

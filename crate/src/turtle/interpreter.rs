@@ -75,6 +75,7 @@ impl<'a> Interpreter<'a> {
             open_polygons: Vec::new(),
             skeleton: Skeleton {
                 palette: settings.palette.clone(),
+                widths_set: settings.width_given || adjustments.is_some(),
                 ..Skeleton::default()
             },
             adjustments: adjustments.filter(|a| a.modules.len() == string.len()),
@@ -202,6 +203,7 @@ impl<'a> Interpreter<'a> {
         let t = &mut self.turtle;
         match command {
             Command::Width => {
+                self.skeleton.widths_set = true;
                 t.width = match first {
                     Some(w) => w.max(0.0),
                     None => (t.width - self.settings.width_step).max(0.0),
