@@ -355,10 +355,12 @@ pub fn build_mesh_with_parts(
     builder.mesh.uvs.reserve(2 * estimate);
     builder.mesh.indices.reserve(6 * estimate);
     let joints = parts::joint_keys(skeleton);
+    let starts = parts::start_keys(skeleton);
     for chain in chains(skeleton, unit) {
         let start_cap = parts::start_cap(&joints, skeleton, &chain);
+        let end_dome = parts::end_dome(&starts, skeleton, &chain);
         let before = builder.mark();
-        builder.tube(skeleton, &chain, start_cap);
+        builder.tube(skeleton, &chain, start_cap, end_dome);
         let part = builder.part_since(before);
         let ranges = builder.element_ranges_since(&before);
         for &s in &chain {
@@ -368,6 +370,7 @@ pub fn build_mesh_with_parts(
             part,
             segments: chain,
             start_cap,
+            end_dome,
             ranges,
         });
     }
@@ -558,7 +561,8 @@ impl<'a> Builder<'a> {
             } else {
                 1
             };
-        let tubes = skeleton.segments.len() * (rings_per_segment + 2) * (self.sides + 1);
+        // Each segment's rings, and at most one start cap and one rounded end (about 3 rings).
+        let tubes = skeleton.segments.len() * (rings_per_segment + 4) * (self.sides + 1);
         let flats: usize = skeleton
             .polygons
             .iter()
@@ -744,6 +748,9 @@ pub(crate) fn skeleton_diagonal(skeleton: &Skeleton) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Vertices of a rounded tube end with 8 sides: 3 rings of 8 and the apex.
+    const DOME: usize = 3 * 8 + 1;
     use crate::turtle::{Polygon, Segment, Sphere};
 
     fn segment(start: DVec3, end: DVec3, previous: Option<u32>) -> Segment {
@@ -919,7 +926,9 @@ mod tests {
             ..Skeleton::default()
         };
         let mesh = checked_mesh(&skeleton);
-        assert_eq!(mesh.vertex_count(), (18 + 18) + (18 + 9));
+        // The first tube's end, where the branch leaves it, is rounded (DOME: 3 rings of 8 and
+        // the apex), not a flat stump; the branch's own tip is a flat cap.
+        assert_eq!(mesh.vertex_count(), (18 + 9 + DOME) + (18 + 9));
     }
 
     #[test]
