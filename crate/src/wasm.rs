@@ -43,7 +43,7 @@ export interface ViewOptions {
 export interface ExportOptions extends BuildOptions {
   /** `wrl`, `glb`, `pov`, `obj`, `iv` or `svg`. */
   format: string;
-  /** File name without extension; default `plant`. */
+  /** File name without extension; default `plant`. A zip of several files is `NAME-FORMAT.zip`. */
   name?: string;
   /** An edits document (JSON text) to apply first. */
   edits?: string;
@@ -289,7 +289,8 @@ pub fn export_model(
     };
     let exported = pipeline::export(source, &options, &mut hooks)
         .map_err(|_| JsError::new("the grammar has errors: nothing to export"))?;
-    let file = export::bundle(exported.files, &stem)
+    // Several files go in one zip named after the format too: `fern-pov.zip`, `fern-obj.zip`.
+    let file = export::bundle(exported.files, &format!("{stem}-{}", format.extension()))
         .ok_or_else(|| JsError::new("the export is larger than 4 GiB"))?;
     Ok(ExportedModel { file })
 }
@@ -385,6 +386,28 @@ macro_rules! mesh_getters {
             pub fn line_colors(&self) -> js_sys::Float32Array {
                 let $plant = self;
                 js_sys::Float32Array::from(&$get.mesh.line_colors[..])
+            }
+
+            /// Every segment as a line, whatever the mesh (the studio's Lines mode): two ends
+            /// (x, y, z each) per segment.
+            #[wasm_bindgen(js_name = segmentEnds)]
+            pub fn segment_ends(&self) -> js_sys::Float32Array {
+                let $plant = self;
+                js_sys::Float32Array::from(&$get.segment_lines().ends[..])
+            }
+
+            /// A colour (r, g, b) per end of `segmentEnds`.
+            #[wasm_bindgen(js_name = segmentColors)]
+            pub fn segment_colors(&self) -> js_sys::Float32Array {
+                let $plant = self;
+                js_sys::Float32Array::from(&$get.segment_lines().colors[..])
+            }
+
+            /// The module of the derived string that drew each segment of `segmentEnds`.
+            #[wasm_bindgen(js_name = segmentModules)]
+            pub fn segment_modules(&self) -> js_sys::Uint32Array {
+                let $plant = self;
+                js_sys::Uint32Array::from(&$get.segment_lines().modules[..])
             }
 
             /// True when everything drawn lies in the plane z = 0.

@@ -139,7 +139,7 @@ describe('share links', () => {
 });
 
 describe('view options in links', () => {
-  const view: NonNullable<SharedState['view']> = { sides: 12, smoothAll: true, byProduction: true, grid: false, lighting: false, projection: 'orthographic' };
+  const view: NonNullable<SharedState['view']> = { sides: 12, smoothAll: true, byProduction: true, grid: false, lighting: false, projection: 'orthographic', render: 'tubes', lineWidth: 3 };
   const fragment = fragmentOf(JSON.stringify({ v: 1, text: '// from a link\n#angle 20\naxiom: F\nF -> F[+F]F[-F]F', iterations: 2, seed: 5, view }));
 
   /** Checks that the controls show the link's options (and Textures, which links do not hold, as it was). */
@@ -152,6 +152,9 @@ describe('view options in links', () => {
     expect(await page.getByTestId('textures').getAttribute('aria-pressed')).toBe('true');
     expect(await page.getByTestId('projection').getAttribute('aria-pressed')).toBe('true');
     expect(await page.getByTestId('viewport').getAttribute('data-projection')).toBe('orthographic');
+    expect(await page.getByTestId('render-lines').getAttribute('aria-pressed'), 'tubes, though the plant is flat').toBe('false');
+    expect(await page.getByTestId('viewport').getAttribute('data-render')).toBe('tubes');
+    expect(await page.getByTestId('line-width').inputValue()).toBe('3');
     expect(await page.getByTestId('iterations').inputValue()).toBe('2');
     expect(await page.getByTestId('seed').inputValue()).toBe('5');
     expect(new URL(page.url()).hash).toBe('');

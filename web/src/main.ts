@@ -110,7 +110,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     shown: () => preview.lastGood,
     createClient: () => new BuildClient(createBuildWorker),
     lighting: () => viewOptions.values.lighting,
-    fileName: () => figureName(opening.currentFile),
+    fileName: () => figureName(opening.currentFile, preview.lastGood?.source),
     toggled: (on) => viewTools.pauseForStages(on),
   });
   viewOptions.onChange((values, changed) => changed.has('lighting') && stages.setLighting(values.lighting));
@@ -133,7 +133,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
       forgetText: () => {
         derivation.clear();
         sliders.reset();
-        viewOptions.set({ projection: 'auto' });
+        viewOptions.set({ projection: 'auto', render: 'auto' });
         view.frameNextPlant();
       },
       buildNow: () => preview.rebuild(true),
@@ -158,6 +158,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     tell: (kind, message, items) => (message === null ? notice.hide() : notice.show(kind, message, items)),
     modeChanged: (on) => {
       following.editing(on);
+      viewTools.showProjection();
       contexts.picking = !on;
       if (on) contexts.pickModule(null);
     },
@@ -176,7 +177,10 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   connectTestHook(hook, { preview, view, branchEdits });
 
   // Downloads: the plant on screen (the last good build's text and options, with the edits).
-  installDownloads(els.downloads, view, () => preview.lastGood && { source: preview.lastGood.source, options: { ...preview.lastGood.options, edits: branchEdits.document() } });
+  installDownloads(els.downloads, view, () => {
+    const good = preview.lastGood;
+    return good && { source: good.source, options: { ...good.options, edits: branchEdits.document() }, name: figureName(opening.currentFile, good.source) };
+  });
 
   // Keyboard: shortcuts anywhere, their help, the splitter.
   const actions: Record<ShortcutAction, () => void> = {

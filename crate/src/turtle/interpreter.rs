@@ -50,26 +50,32 @@ impl<'a> Interpreter<'a> {
             .map(|m| m.and_then(|info| Some((info.command()?, first_default(info, settings)))))
             .collect();
         let (tropism, susceptibility) = settings.tropism;
+        let mut start = TurtleState {
+            position: DVec3::ZERO,
+            heading: DVec3::Y,
+            left: DVec3::NEG_X,
+            up: DVec3::Z,
+            width: settings.width,
+            color: 0,
+            tropism,
+            susceptibility,
+            smooth: false,
+            last_segment: None,
+            anchor: None,
+        };
+        // `#heading`: the start turned as `+` would turn it.
+        if settings.heading != 0.0 {
+            start.yaw(settings.heading.to_radians());
+        }
         Interpreter {
             settings,
             actions,
-            turtle: TurtleState {
-                position: DVec3::ZERO,
-                heading: DVec3::Y,
-                left: DVec3::NEG_X,
-                up: DVec3::Z,
-                width: settings.width,
-                color: 0,
-                tropism,
-                susceptibility,
-                smooth: false,
-                last_segment: None,
-                anchor: None,
-            },
+            turtle: start,
             stack: Vec::new(),
             open_polygons: Vec::new(),
             skeleton: Skeleton {
                 palette: settings.palette.clone(),
+                widths_set: settings.width_given || adjustments.is_some(),
                 ..Skeleton::default()
             },
             adjustments: adjustments.filter(|a| a.modules.len() == string.len()),
@@ -197,6 +203,7 @@ impl<'a> Interpreter<'a> {
         let t = &mut self.turtle;
         match command {
             Command::Width => {
+                self.skeleton.widths_set = true;
                 t.width = match first {
                     Some(w) => w.max(0.0),
                     None => (t.width - self.settings.width_step).max(0.0),

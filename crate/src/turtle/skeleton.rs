@@ -93,6 +93,10 @@ pub struct Skeleton {
     /// The colours of the colour indices (the grammar's palette); empty means
     /// [`crate::model::DEFAULT_PALETTE`].
     pub palette: Vec<[f32; 3]>,
+    /// The grammar set widths (`#width`, `!`, or growth's width factors): the mesh draws them in its
+    /// width unit as they are. When false, every segment has the default width and the mesh ties
+    /// it to the internodes' length instead (see `mesh::WidthUnit`).
+    pub widths_set: bool,
 }
 
 impl Skeleton {

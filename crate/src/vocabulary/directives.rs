@@ -7,6 +7,7 @@ use serde::{Serialize, Serializer};
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum DirectiveKind {
     Angle,
+    Heading,
     Iterations,
     Step,
     Width,
@@ -419,6 +420,8 @@ use DirectiveKind as D;
 pub const DIRECTIVES: &[DirectiveInfo] = &[
     row("angle", D::Angle, "Angle", &[&[Param::number("degrees", "the turn angle δ").default(90.0).unit("degrees")]], G::Turtle,
         "The default turn angle δ of + - & ^ \\ / (default 90)."),
+    row("heading", D::Heading, "Heading", &[&[Param::number("degrees", "the turn of the starting heading").default(0.0).unit("degrees")]], G::Turtle,
+        "Turns the turtle's starting heading by this many degrees, as + would: 90 starts to the left, -90 to the right (default 0: up)."),
     row("iterations", D::Iterations, "Iterations", &[&[Param::whole("n", 0.0, U32_MAX, "derivation steps").default(0.0)]], G::Derivation,
         "The number of derivation steps (default 0)."),
     row("step", D::Step, "Step", &[&[Param::number("length", "the length of F, f, G and g").default(1.0).unit("units")]], G::Turtle,

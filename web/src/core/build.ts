@@ -192,6 +192,9 @@ export function copyMesh(result: MeshHolder): MeshBuffers {
     materialRanges: ownedArray(result.materialRanges()),
     lines: ownedArray(result.lines()),
     lineColors: ownedArray(result.lineColors()),
+    segmentEnds: ownedArray(result.segmentEnds()),
+    segmentColors: ownedArray(result.segmentColors()),
+    segmentModules: ownedArray(result.segmentModules()),
   }));
 }
 

@@ -58,6 +58,8 @@ export interface PlantStats {
  * 3-float ends per segment, only when the model was too large to mesh (the triangles are then empty);
  * `uvs` holds 2 floats (texture coordinates) per vertex and `materialRanges` (first triangle,
  * material kind) pairs: 0 bark (tubes), 1 leaf (leaves, petals, polygons), 2 plain (spheres).
+ * `segmentEnds`/`segmentColors` hold every segment as a line (two 3-float ends each) whatever the
+ * mesh, and `segmentModules` the derived-string module that drew each: the view's Lines mode.
  */
 export interface MeshBuffers {
   positions: Float32Array;
@@ -69,6 +71,9 @@ export interface MeshBuffers {
   materialRanges: Uint32Array;
   lines: Float32Array;
   lineColors: Float32Array;
+  segmentEnds: Float32Array;
+  segmentColors: Float32Array;
+  segmentModules: Uint32Array;
 }
 
 /**

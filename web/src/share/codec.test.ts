@@ -17,7 +17,7 @@ describe('share links', () => {
       iterations: 7,
       seed: 2 ** 40,
       sliders: { r: 0.75, theta: 22.5 },
-      view: { sides: 12, smoothAll: true, byProduction: false, grid: true, lighting: false, projection: 'orthographic' },
+      view: { sides: 12, smoothAll: true, byProduction: false, grid: true, lighting: false, projection: 'orthographic', render: 'lines', lineWidth: 1.5 },
       camera: { position: [1.5, 2, -3], target: [0, 1, 0], zoom: 2.5 },
       edits: { version: 1, edits: [{ path: [0, 2, 1], handles: [[0, 0.1, 0], [0, 0, 0], [0.2, -0.1, 0.05]] }] },
     };
@@ -65,6 +65,8 @@ describe('share links', () => {
     ['an infinite camera', () => fragmentOf('{"text":"axiom: F","camera":{"position":[1e400,0,0],"target":[0,0,0]}}'), /camera/],
     ['a thousand sides', () => fragmentOf(JSON.stringify({ text: 'axiom: F', view: { sides: 1000 } })), /sides/],
     ['an unknown projection', () => fragmentOf(JSON.stringify({ text: 'axiom: F', view: { projection: 'fisheye' } })), /projection/],
+    ['an unknown render mode', () => fragmentOf(JSON.stringify({ text: 'axiom: F', view: { render: 'dots' } })), /render mode/],
+    ['a line width out of range', () => fragmentOf(JSON.stringify({ text: 'axiom: F', view: { lineWidth: 1e9 } })), /line width/],
     ['a zero zoom', () => fragmentOf(JSON.stringify({ text: 'axiom: F', camera: { position: [0, 0, 1], target: [0, 0, 0], zoom: 0 } })), /zoom/],
     ['branch edits without a version', () => fragmentOf(JSON.stringify({ text: 'axiom: F', edits: { edits: [] } })), /branch edits/],
     ['branch edits with a path of text', () => fragmentOf(JSON.stringify({ text: 'axiom: F', edits: { version: 1, edits: [{ path: ['x'], handles: [[0, 0, 0], [0, 0, 0], [0, 0, 0]] }] } })), /branch edits/],

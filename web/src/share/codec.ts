@@ -43,6 +43,10 @@ export interface SharedState {
     lighting?: boolean;
     /** The 2D/3D choice: `auto` (2D for flat plants) or fixed. */
     projection?: 'auto' | 'perspective' | 'orthographic';
+    /** Branches as lines, tubes, or `auto` (lines for flat plants). */
+    render?: 'auto' | 'lines' | 'tubes';
+    /** The lines' width in CSS pixels (0.5 to 20). */
+    lineWidth?: number;
   };
   /** The camera in use: eye position, the point looked at, and the orthographic zoom. */
   camera?: { position: [number, number, number]; target: [number, number, number]; zoom?: number };
@@ -209,6 +213,14 @@ export function validate(json: unknown): Decoded {
         return fail('the link’s projection is not auto, perspective or orthographic');
       }
       clean.projection = view.projection;
+    }
+    if (view.render !== undefined) {
+      if (view.render !== 'auto' && view.render !== 'lines' && view.render !== 'tubes') return fail('the link’s render mode is not auto, lines or tubes');
+      clean.render = view.render;
+    }
+    if (view.lineWidth !== undefined) {
+      if (typeof view.lineWidth !== 'number' || !(view.lineWidth >= 0.5 && view.lineWidth <= 20)) return fail('the link’s line width is not from 0.5 to 20 pixels');
+      clean.lineWidth = view.lineWidth;
     }
     state.view = clean;
   }

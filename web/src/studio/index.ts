@@ -23,7 +23,7 @@ export { DerivationView, descendants, firstChildren, originInWords, SEQUENCE_MAX
 export { countsInWords, describeProduction, madeInWords, reportInWords, lineOf } from './explain-words';
 export { installInspectorTabs } from './inspector-tabs';
 export { LayoutModes, type LayoutElements, type LayoutHost } from './layout-modes';
-export { afterPaint, fileSize, pictureSize, saveFile, PICTURE_MAX, PICTURE_MIN, type PictureSize } from './downloads';
+export { afterPaint, figureName, fileSize, pictureSize, saveFile, PICTURE_MAX, PICTURE_MIN, type PictureSize } from './downloads';
 export { createExportWorker, describeProgress, runExport, type ExportOutcome, type ExportRequest, type ExportResponse, type RunningExport } from './export-client';
 export { Notice, type NoticeElements, type NoticeKind } from './notice';
 export { EmbedSnippets, elementSnippet, frameSnippet, type EmbedSnippetElements, type SnippetControls } from './embed-snippets';
@@ -35,7 +35,7 @@ export { GrowthPanel, type GrowthEditor } from './growth-panel';
 export { byId, studioElements, type StudioElements } from './page-elements';
 export { ViewOptions, DEFAULT_VIEW_OPTIONS, type SharedViewOptions, type ViewOption, type ViewOptionValues, type ViewOptionsListener } from './view-options';
 export { ViewTools, sidesChoices, type ViewToolElements } from './view-tools';
-export { StagesMode, figureName, stagesOf, MAX_STAGE_COLUMNS, MAX_STAGE_SEEDS, type StagesElements, type StagesHost } from './stages';
+export { StagesMode, stagesOf, MAX_STAGE_COLUMNS, MAX_STAGE_SEEDS, type StagesElements, type StagesHost } from './stages';
 export { stagesSvg, parseStageSvg, type StageDrawing } from './stages-svg';
 export { ViewFollowing, growthKey, isLastStep, type PlayFraming, type ViewFollowingElements } from './view-following';
 export { DerivationControls, type DerivationElements, type SharedDerivation } from './derivation-controls';

@@ -164,7 +164,7 @@ export class LivePreview {
     if (key !== this.requestedKey) return;
     const empty = new Float32Array(0);
     this.parts.view.showPlant(
-      { positions: empty, normals: empty, colors: empty, indices: new Uint32Array(0), ranges: new Uint32Array(0), uvs: empty, materialRanges: new Uint32Array(0), lines: sketch.lines, lineColors: sketch.lineColors },
+      { positions: empty, normals: empty, colors: empty, indices: new Uint32Array(0), ranges: new Uint32Array(0), uvs: empty, materialRanges: new Uint32Array(0), lines: sketch.lines, lineColors: sketch.lineColors, segmentEnds: empty, segmentColors: empty, segmentModules: new Uint32Array(0) },
       sketch.flat,
     );
     this.parts.view.setStale(false);

@@ -73,12 +73,6 @@ export function stagesOf(from: number, to: number, seeds: readonly (number | und
   return { stages, grid };
 }
 
-/** The name a figure of the grammar opened as `file` (an example, `file/NAME`, `saved/ID`) is saved under. */
-export function figureName(file: string): string {
-  const name = file.replace(/^(file|saved)\//, '').replace(/\.[A-Za-z0-9]+$/, '').replace(/[^\w.-]+/g, '-');
-  return name === '' || file.startsWith('saved/') ? 'plant' : name;
-}
-
 function wholeNumber(input: HTMLInputElement): number | undefined {
   const value = input.valueAsNumber;
   return Number.isFinite(value) ? Math.floor(value) : undefined;

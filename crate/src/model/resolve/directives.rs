@@ -152,8 +152,12 @@ impl Resolver {
             |kind: DirectiveKind| kind.info().params()[0].range.map_or(0, |r| r.1 as u64);
         match kind {
             K::Angle => s.angle = self.number(d).unwrap_or(s.angle),
+            K::Heading => s.heading = self.number(d).unwrap_or(s.heading),
             K::Step => s.step = self.number(d).unwrap_or(s.step),
-            K::Width => s.width = self.number(d).unwrap_or(s.width),
+            K::Width => {
+                s.width = self.number(d).unwrap_or(s.width);
+                s.width_given = true;
+            }
             K::WidthStep => s.width_step = self.number(d).unwrap_or(s.width_step),
             K::Tropism => {
                 if let Some(a) = self.arguments(d) {
