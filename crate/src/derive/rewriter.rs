@@ -36,7 +36,6 @@ pub(super) struct Rewriter<'m, R: rand::Rng> {
     pub slots: Vec<f64>,
     /// The deviates of the `#random` variables for the module being matched.
     pub vars: Vec<Option<f64>>,
-    var_programs: Vec<Program>,
     /// For each bracket of the string being rewritten, its partner (for contexts).
     pub partner: Vec<u32>,
     /// Matching weighted productions of the current module: (production, weight, bound slots).
@@ -65,11 +64,6 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
             max_it: steps as f64,
             slots: vec![0.0; max_slots],
             vars: vec![None; model.random_variables.len()],
-            var_programs: model
-                .random_variables
-                .iter()
-                .map(|v| v.distribution.clone())
-                .collect(),
             partner: Vec::new(),
             weighted: Vec::new(),
             tracker: None,
@@ -90,7 +84,7 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
             max_it: self.max_it,
             vars: &mut self.vars,
             fresh_vars,
-            var_programs: &self.var_programs,
+            variables: &self.model.random_variables,
             rng: &mut *self.rng,
         };
         program

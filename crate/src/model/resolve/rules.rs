@@ -1,6 +1,7 @@
 //! Productions and module strings: formal parameters bound to slots, expressions compiled,
 //! arities checked, and each section indexed by predecessor.
 
+use super::definitions::MAX_NAMES;
 use super::scope::Slots;
 use super::Resolver;
 use crate::diagnostics::{Diagnostic, Severity};
@@ -48,7 +49,14 @@ impl Resolver {
 
     /// A predecessor or context module: its parameters must be names, bound to new slots.
     fn pattern(&mut self, m: &ModuleSyntax, slots: &mut Slots) -> PatternModule {
-        let first_slot = slots.names.len() as u16;
+        let first_slot = slots.names.len().min(MAX_NAMES) as u16;
+        if slots.names.len() + m.params.len() > MAX_NAMES {
+            self.diagnostics.push(Diagnostic::error(
+                "E0515",
+                m.span.clone(),
+                format!("more than {MAX_NAMES} formal parameters in one production"),
+            ));
+        }
         for p in &m.params {
             match p {
                 ExprSyntax::Name(name, span) => {
