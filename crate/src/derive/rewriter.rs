@@ -45,6 +45,10 @@ pub(super) struct Rewriter<'m, R: rand::Rng> {
     /// During a step's productions pass, when the observer planned it: how many times each module
     /// of the string is rewritten (0: not at all, 1: as usual, more: repeatedly).
     pub plan: Option<Vec<u32>>,
+    /// How many control module groups the range being rewritten is inside.
+    pub group_depth: usize,
+    /// The `@Repeat` rewritings run so far in this derivation, against [`Rewriter::repeat_budget`].
+    pub repeat_passes: u64,
 }
 
 impl<'m, R: rand::Rng> Rewriter<'m, R> {
@@ -68,6 +72,8 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
             weighted: Vec::new(),
             tracker: None,
             plan: None,
+            group_depth: 0,
+            repeat_passes: 0,
         }
     }
 
@@ -120,6 +126,9 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
                         Some(k) => self.eval(k, slots, num_it, true)?.round().max(0.0),
                         None => 0.0,
                     };
+                    if s.id == model.groups.repeat {
+                        self.check_repeat_count(value, s)?;
+                    }
                     dst.params.push(value);
                 } else {
                     for a in &s.args {
