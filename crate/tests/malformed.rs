@@ -109,6 +109,7 @@ const CASES: &[Case] = &[
     ("repeat_count_above_the_step_limit", "axiom: @Repeat(1e9, A)", "E0405", 1, 16),
     ("repeat_count_above_a_lowered_step_limit", "#max_steps 10\naxiom: @Repeat(11, A)", "E0405", 2, 16),
     ("nested_repeats_over_the_budget", "#iterations 1\naxiom: @Repeat(10000, @Repeat(10000, @Repeat(10000, A)))\nA -> A", "E0405", 2, 8),
+    ("module_limit_beyond_memory", "#max_modules 4000000000\n#iterations 40\naxiom: F\nF -> FFFFFFFFFFFFFFFF", "E0401", 2, 1),
     ("random_reads_itself", "#random p = uniform(0, p)\naxiom: F(p)", "E0507", 1, 24),
     ("random_variables_read_each_other", "#random p = uniform(0, q)\n#random q = normal(p, 1)\naxiom: F(p)", "E0507", 2, 20),
     ("random_cycle_through_a_define", "#define d q\n#random p = uniform(0, d)\n#random q = normal(p, 1)\naxiom: F(p)", "E0507", 3, 20),

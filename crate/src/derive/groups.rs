@@ -203,7 +203,8 @@ impl<R: rand::Rng> Rewriter<'_, R> {
         for j in group.members[0].clone() {
             enclosed.push(src.ids[j], src.params_of(j));
         }
-        let derived = self.derive_apart(rules, enclosed, times, num_it, 0)?;
+        let derived =
+            self.derive_apart(rules, enclosed, times, num_it, (dst.len(), dst.bytes()))?;
         dst.extend_from(&derived);
         self.note(dst.len(), i, NOT_REWRITTEN);
         Ok(())

@@ -2,7 +2,7 @@
 //! contexts, compiled conditions, weighted (stochastic) choice and Green's random variables.
 
 use super::context::{self, Recorder};
-use super::{limit_error, Observer, NOT_REWRITTEN};
+use super::{check_size, Observer, NOT_REWRITTEN};
 use crate::diagnostics::Diagnostic;
 use crate::model::{Env, LString, Model, Production, Program, RuleSet, SuccessorModule};
 use crate::syntax::Span;
@@ -375,9 +375,7 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         } else {
             self.emit(&p.successor, p.slots, num_it, dst)?;
         }
-        if dst.len() > model.settings.max_modules {
-            return Err(limit_error(model, num_it, dst.len()));
-        }
+        check_size(model, num_it, dst.len(), dst.bytes())?;
         Ok(Some(index))
     }
 
