@@ -40,12 +40,16 @@ pub fn triangulate(points: &[DVec3]) -> Triangulation {
     let normal = newell.normalize();
     let triangles = if points.len() <= CLIP_EARS_UP_TO {
         Outline::new(points, normal, size).clip_ears()
-    } else if let Some(fan) = convex_fan(points, normal, EPSILON * size * size) {
-        fan
-    } else if points.len() <= EARCUT_UP_TO {
-        earcut(points, normal)
     } else {
-        fan_from_first(points.len())
+        let tolerance = EPSILON * size * size;
+        let triangles = if let Some(fan) = convex_fan(points, normal, tolerance) {
+            fan
+        } else if points.len() <= EARCUT_UP_TO {
+            earcut(points, normal)
+        } else {
+            fan_from_first(points.len())
+        };
+        keep_counter_clockwise(points, normal, triangles, tolerance)
     };
     Triangulation { normal, triangles }
 }
@@ -85,9 +89,24 @@ fn convex_fan(points: &[DVec3], normal: DVec3, tolerance: f64) -> Option<Vec<[u3
 
 /// The most points of a concave polygon `earcut` is given: on outlines close to a circle its ears
 /// grow long and its cost goes with the square of the points (20,000 points: under a second). A
-/// larger concave polygon is drawn as a fan from its first point, which covers the outline (and
-/// may fold over its notches) in linear time.
+/// larger concave polygon is drawn as a fan from its first point, in linear time, without the
+/// fan's triangles that would fold back over a notch (so a notch may leave a gap).
 const EARCUT_UP_TO: usize = 20_000;
+
+/// The triangles that turn counter-clockwise about `normal` with more than `tolerance` (twice
+/// their area): earcut's slivers between collinear points and a fan's folds over a notch go.
+fn keep_counter_clockwise(
+    points: &[DVec3],
+    normal: DVec3,
+    mut triangles: Vec<[u32; 3]>,
+    tolerance: f64,
+) -> Vec<[u32; 3]> {
+    triangles.retain(|t| {
+        let [a, b, c] = t.map(|i| points[i as usize]);
+        (b - a).cross(c - a).dot(normal) > tolerance
+    });
+    triangles
+}
 
 /// Triangles `0 i i+1` over a loop of `n` points.
 fn fan_from_first(n: usize) -> Vec<[u32; 3]> {
