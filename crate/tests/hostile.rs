@@ -146,27 +146,35 @@ fn check(name: &str, text: &str, expected: Option<&str>) -> Option<String> {
     }
 }
 
-#[test]
-fn every_hostile_grammar_gives_its_result_or_its_diagnostic() {
-    let cases = corpus();
-    // Four threads (each with the test harness's stack size), each taking every fourth case.
-    let failures: Vec<String> = std::thread::scope(|scope| {
+/// `work(k)` for k in 0..4, each on its own thread (with the test harness's stack size), and every
+/// failure they found.
+fn on_four_threads(work: impl Fn(usize) -> Vec<String> + Sync) -> Vec<String> {
+    std::thread::scope(|scope| {
         let workers: Vec<_> = (0..4)
             .map(|k| {
-                let cases = &cases;
-                scope.spawn(move || {
-                    cases
-                        .iter()
-                        .skip(k)
-                        .step_by(4)
-                        .filter_map(|(name, text)| check(name, text, Some(expectation(text))))
-                        .collect::<Vec<_>>()
+                scope.spawn({
+                    let work = &work;
+                    move || work(k)
                 })
             })
             .collect();
         workers
             .into_iter()
             .flat_map(|w| w.join().expect("a worker panicked"))
+            .collect()
+    })
+}
+
+#[test]
+fn every_hostile_grammar_gives_its_result_or_its_diagnostic() {
+    let cases = corpus();
+    // Each thread takes every fourth case.
+    let failures = on_four_threads(|k| {
+        cases
+            .iter()
+            .skip(k)
+            .step_by(4)
+            .filter_map(|(name, text)| check(name, text, Some(expectation(text))))
             .collect()
     });
     assert!(failures.is_empty(), "{}", failures.join("\n"));
@@ -291,18 +299,7 @@ fn mutated_grammars_never_panic_and_write_finite_files() {
     let seeds = seeds();
     // Four threads, each with its own seed, so a failing case is found again from its thread's
     // seed and its number.
-    let failures: Vec<String> = std::thread::scope(|scope| {
-        let workers: Vec<_> = (0..4u64)
-            .map(|k| {
-                let seeds = &seeds;
-                scope.spawn(move || fuzz(seeds, 19 + k, 100))
-            })
-            .collect();
-        workers
-            .into_iter()
-            .flat_map(|w| w.join().expect("a worker panicked"))
-            .collect()
-    });
+    let failures = on_four_threads(|k| fuzz(&seeds, 19 + k as u64, 100));
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 

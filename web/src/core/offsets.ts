@@ -7,8 +7,11 @@
  * counts as 3 bytes, the size of the U+FFFD that replaces it when the text is encoded for the core.
  */
 export function byteOffsetToUtf16(text: string, byteOffset: number): number {
-  let bytes = 0;
-  let index = 0;
+  return scanTo(text, 0, 0, byteOffset);
+}
+
+/** From unit `index` of `text`, which is at byte `bytes`, on to the unit of `byteOffset`. */
+function scanTo(text: string, bytes: number, index: number, byteOffset: number): number {
   while (index < text.length) {
     const codePoint = text.codePointAt(index) as number;
     const width = utf8Width(codePoint);
@@ -49,15 +52,8 @@ export function utf16Offsets(text: string): (byteOffset: number) => number {
       if (marks[middle][0] <= byteOffset) low = middle;
       else high = middle - 1;
     }
-    let [at, i] = marks[low] ?? [0, 0];
-    while (i < text.length) {
-      const codePoint = text.codePointAt(i) as number;
-      const width = utf8Width(codePoint);
-      if (at + width > byteOffset) return i;
-      at += width;
-      i += codePoint > 0xffff ? 2 : 1;
-    }
-    return text.length;
+    const [at, i] = marks[low] ?? [0, 0];
+    return scanTo(text, at, i, byteOffset);
   };
 }
 
