@@ -2,7 +2,7 @@
 //! parameters, contexts, conditions or weights. The next length is computed before writing, and
 //! nothing is allocated per module.
 
-use super::{limit_error, NOT_REWRITTEN};
+use super::{check_size, memory_error, NOT_REWRITTEN};
 use crate::diagnostics::Diagnostic;
 use crate::model::{LString, Model, ModuleId};
 
@@ -91,11 +91,11 @@ impl D0lTable {
                 None => 1,
             })
             .sum();
-        if len > model.settings.max_modules {
-            return Err(limit_error(model, step, len));
-        }
+        check_size(model, step, len, len.saturating_mul(size_of::<ModuleId>()))?;
         dst.clear(false);
-        dst.ids.reserve(len);
+        if dst.ids.try_reserve_exact(len).is_err() {
+            return Err(memory_error(model, step, len, len * size_of::<ModuleId>()));
+        }
         for &id in &src.ids {
             match self.rule_of[id.index()] {
                 Some((start, end)) => dst

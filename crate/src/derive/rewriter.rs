@@ -2,7 +2,7 @@
 //! contexts, compiled conditions, weighted (stochastic) choice and Green's random variables.
 
 use super::context::{self, Recorder};
-use super::{limit_error, Observer, NOT_REWRITTEN};
+use super::{check_size, Observer, NOT_REWRITTEN};
 use crate::diagnostics::Diagnostic;
 use crate::model::{Env, LString, Model, Production, Program, RuleSet, SuccessorModule};
 use crate::syntax::Span;
@@ -36,7 +36,6 @@ pub(super) struct Rewriter<'m, R: rand::Rng> {
     pub slots: Vec<f64>,
     /// The deviates of the `#random` variables for the module being matched.
     pub vars: Vec<Option<f64>>,
-    var_programs: Vec<Program>,
     /// For each bracket of the string being rewritten, its partner (for contexts).
     pub partner: Vec<u32>,
     /// Matching weighted productions of the current module: (production, weight, bound slots).
@@ -46,6 +45,10 @@ pub(super) struct Rewriter<'m, R: rand::Rng> {
     /// During a step's productions pass, when the observer planned it: how many times each module
     /// of the string is rewritten (0: not at all, 1: as usual, more: repeatedly).
     pub plan: Option<Vec<u32>>,
+    /// How many control module groups the range being rewritten is inside.
+    pub group_depth: usize,
+    /// The `@Repeat` rewritings run so far in this derivation, against [`Rewriter::repeat_budget`].
+    pub repeat_passes: u64,
 }
 
 impl<'m, R: rand::Rng> Rewriter<'m, R> {
@@ -65,15 +68,12 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
             max_it: steps as f64,
             slots: vec![0.0; max_slots],
             vars: vec![None; model.random_variables.len()],
-            var_programs: model
-                .random_variables
-                .iter()
-                .map(|v| v.distribution.clone())
-                .collect(),
             partner: Vec::new(),
             weighted: Vec::new(),
             tracker: None,
             plan: None,
+            group_depth: 0,
+            repeat_passes: 0,
         }
     }
 
@@ -90,7 +90,7 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
             max_it: self.max_it,
             vars: &mut self.vars,
             fresh_vars,
-            var_programs: &self.var_programs,
+            variables: &self.model.random_variables,
             rng: &mut *self.rng,
         };
         program
@@ -126,6 +126,9 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
                         Some(k) => self.eval(k, slots, num_it, true)?.round().max(0.0),
                         None => 0.0,
                     };
+                    if s.id == model.groups.repeat {
+                        self.check_repeat_count(value, s)?;
+                    }
                     dst.params.push(value);
                 } else {
                     for a in &s.args {
@@ -372,9 +375,7 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         } else {
             self.emit(&p.successor, p.slots, num_it, dst)?;
         }
-        if dst.len() > model.settings.max_modules {
-            return Err(limit_error(model, num_it, dst.len()));
-        }
+        check_size(model, num_it, dst.len(), dst.bytes())?;
         Ok(Some(index))
     }
 

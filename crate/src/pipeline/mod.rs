@@ -283,6 +283,11 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Watch<'_, '_>) -
             adjustments.as_ref(),
         );
         watch.timings.interpret = watch.lap();
+        if let Some(module) = skeleton.clamped {
+            result
+                .diagnostics
+                .push(clamped_warning(&model, &result.derivation, module));
+        }
         watch.start(Stage::Mesh);
         result.steps = steps;
         result.seed = options.seed;
@@ -291,6 +296,36 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Watch<'_, '_>) -
     }
     result.model = Some(model);
     result
+}
+
+/// `E0406`: the module at `module` of the turtle's string drew past the skeleton's bounds; at
+/// the production that wrote it in the last step (else the axiom).
+fn clamped_warning(model: &Model, derivation: &Derivation, module: u32) -> Diagnostic {
+    let turtle = derivation.turtle_string();
+    let name = turtle
+        .ids
+        .get(module as usize)
+        .map_or("?", |&id| model.alphabet.name(id));
+    let in_string = derivation
+        .turtle_origin
+        .get(module as usize)
+        .copied()
+        .unwrap_or(module);
+    let span = derivation
+        .origin
+        .get(in_string as usize)
+        .and_then(|&p| model.productions.productions.get(p as usize))
+        .map_or_else(|| model.axiom_span.clone(), |p| p.span.clone());
+    Diagnostic::warning(
+        "E0406",
+        span,
+        format!(
+            "'{name}' (module {} of the string) draws past ±{:e} or with a number that is not \
+             finite; its geometry is clamped so that the view and every file stay valid",
+            module as u64 + 1,
+            crate::turtle::MAX_COORDINATE
+        ),
+    )
 }
 
 /// Derives (with growth following, when the grammar has growth attributes) into `result`,

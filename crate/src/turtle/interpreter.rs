@@ -384,6 +384,7 @@ impl<'a> Interpreter<'a> {
             }
         }
         self.skeleton.end = self.turtle.position;
+        self.skeleton.clamp_to_finite();
         self.skeleton
     }
 }

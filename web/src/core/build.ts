@@ -7,7 +7,7 @@ import {
   type PlantEditor as WasmPlantEditor,
   type PlantInspector as WasmPlantInspector,
 } from '../../../crate/pkg/meristem.js';
-import { byteOffsetToUtf16 } from './offsets';
+import { utf16Offsets } from './offsets';
 import { assertReady, guarded, ownedArray } from './init';
 import {
   DERIVED_PREVIEW_CHARS,
@@ -148,6 +148,7 @@ interface RawProduction {
 
 /** Copies a wasm build into plain data (for this folder's facades; the caller frees the build). */
 export function plainBuild(source: string, result: WasmPlantBuild): PlantBuild {
+  const toUtf16 = utf16Offsets(source);
   return guarded(() => ({
     ok: result.ok,
     diagnostics: (JSON.parse(result.diagnostics()) as RawDiagnostic[]).map(toDiagnostic),
@@ -158,11 +159,11 @@ export function plainBuild(source: string, result: WasmPlantBuild): PlantBuild {
     productions: (JSON.parse(result.productions()) as RawProduction[]).map(
       (p): ProductionInfo => ({
         index: p.index,
-        from: byteOffsetToUtf16(source, p.from),
-        to: byteOffsetToUtf16(source, p.to),
+        from: toUtf16(p.from),
+        to: toUtf16(p.to),
         label: p.label,
         context: p.context,
-        condition: p.condition && { from: byteOffsetToUtf16(source, p.condition[0]), to: byteOffsetToUtf16(source, p.condition[1]) },
+        condition: p.condition && { from: toUtf16(p.condition[0]), to: toUtf16(p.condition[1]) },
       }),
     ),
     origins: ownedArray(result.origins()),

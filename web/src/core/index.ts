@@ -29,7 +29,7 @@ export {
   type ValueInfo,
   type Vocabulary,
 } from './vocabulary';
-export { byteOffsetToUtf16 } from './offsets';
+export { byteOffsetToUtf16, utf16Offsets } from './offsets';
 export { importGrammar, type Dialect, type ImportedGrammar, type ImportNote } from './import';
 export {
   applyMeshUpdate,

@@ -467,7 +467,7 @@ impl Resolver {
             max_it: 0.0,
             vars: &mut [],
             fresh_vars: true,
-            var_programs: &[],
+            variables: &[],
             rng: &mut rng,
         };
         program.eval(&mut env).map_err(|e| e.message)

@@ -16,6 +16,7 @@ pub(super) struct Slots {
 struct ScopeView<'a> {
     slots: &'a Slots,
     defines: &'a HashMap<String, ExprSyntax>,
+    define_values: &'a HashMap<String, f64>,
     random_names: &'a [String],
 }
 
@@ -29,6 +30,9 @@ impl Scope for ScopeView<'_> {
     }
     fn define(&self, name: &str) -> Option<&ExprSyntax> {
         self.defines.get(name)
+    }
+    fn define_value(&self, name: &str) -> Option<f64> {
+        self.define_values.get(name).copied()
     }
     fn random_var(&self, name: &str) -> Option<u16> {
         self.random_names
@@ -44,6 +48,7 @@ impl Resolver {
         let scope = ScopeView {
             slots,
             defines: &self.defines,
+            define_values: &self.define_values,
             random_names: &self.random_names,
         };
         match Program::compile(expr, &scope) {
@@ -61,6 +66,7 @@ impl Resolver {
         let scope = ScopeView {
             slots: &Slots::default(),
             defines: &self.defines,
+            define_values: &self.define_values,
             random_names: &[],
         };
         Program::compile(expr, &scope)
