@@ -92,7 +92,11 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   });
   editor = grammarEditor;
   // The layout for the room: narrow screens, Large for a projector, fullscreen.
-  const layout = new LayoutModes(els.layout, { remeasureEditor: () => grammarEditor.view.requestMeasure() }, browserStorage());
+  const layout = new LayoutModes(
+    els.layout,
+    { remeasureEditor: () => grammarEditor.view.requestMeasure(), largeChanged: (large) => view.setLineScale(large ? 2 : 1) },
+    browserStorage(),
+  );
   els.stopBuild.addEventListener('click', () => grammarEditor.view.focus()); // the text stays, to edit on
   sliders.update(start.text);
   growth.update(start.text);

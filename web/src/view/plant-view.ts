@@ -35,7 +35,7 @@ import type { GpuArrays } from './gpu-arrays';
 import { loadTexture, texturedMaterials, type TexturedMaterials } from './textures';
 import { addHeadlight, addSkyLight, litPlantMaterial, unlitPlantMaterial } from './scene-setup';
 import { MATERIAL_BARK, highlightOverlay, highlightSegments, moduleOfTriangle, type Rgb } from './highlight';
-import { SegmentLines } from './segment-lines';
+import { DEFAULT_LINE_WIDTH, SegmentLines } from './segment-lines';
 import { BezierHandles } from './handles';
 
 const DARK_SCHEME = '(prefers-color-scheme: dark)';
@@ -121,6 +121,8 @@ export class PlantView {
   );
   /** The Lines mode's segments (hidden while tubes are drawn). */
   private readonly segmentLines = new SegmentLines();
+  private lineWidthChosen = DEFAULT_LINE_WIDTH;
+  private lineScale = 1;
   /** Stands in for the tubes' material in the Lines mode: their triangles are not drawn. */
   private readonly hiddenTubes = new MeshBasicMaterial({ visible: false });
   private renderMode: RenderMode = 'auto';
@@ -659,10 +661,17 @@ export class PlantView {
     return this.renderMode;
   }
 
-  /** The width of the Lines mode's lines, in CSS pixels. */
+  /** The width of the Lines mode's lines, in CSS pixels (times the line scale). */
   setLineWidth(pixels: number): void {
-    this.segmentLines.lineWidth = pixels;
+    this.lineWidthChosen = pixels;
+    this.segmentLines.lineWidth = pixels * this.lineScale;
     this.requestRender();
+  }
+
+  /** Draws the lines `scale` times the width chosen (2 in Large mode: a projector's lines). */
+  setLineScale(scale: number): void {
+    this.lineScale = scale;
+    this.setLineWidth(this.lineWidthChosen);
   }
 
   /**
