@@ -15,6 +15,7 @@
 //! derives (the turtle answering query modules, growth following every module and planning each
 //! step) comes in through an [`Observer`], which the pipeline implements.
 
+mod classes;
 pub mod context;
 mod cut;
 mod d0l;

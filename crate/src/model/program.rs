@@ -186,8 +186,18 @@ impl Program {
     /// results that are not finite numbers are errors, never silent NaNs.
     #[inline]
     pub fn eval<R: rand::Rng + ?Sized>(&self, env: &mut Env<'_, R>) -> Result<f64, EvalError> {
-        if let [Op::Const(v)] = self.ops.as_slice() {
-            return Ok(*v);
+        // The commonest shapes (a constant, a parameter, a parameter and a constant) without the
+        // interpreter loop; a value that is not finite takes the loop, which reports it.
+        let slot = |s: &u16| env.slots.get(*s as usize).copied().unwrap_or(0.0);
+        let quick = match self.ops.as_slice() {
+            [Op::Const(v)] => return Ok(*v),
+            [Op::Slot(s)] => Some(slot(s)),
+            [Op::Slot(s), Op::Const(c), Op::Bin(op)] => quick_binary(*op, slot(s), *c),
+            [Op::Const(c), Op::Slot(s), Op::Bin(op)] => quick_binary(*op, *c, slot(s)),
+            _ => None,
+        };
+        if let Some(v) = quick.filter(|v| v.is_finite()) {
+            return Ok(v);
         }
         // Most expressions need a few slots: a small stack is cheaper to set up.
         if self.stack_depth <= 8 {
@@ -378,6 +388,17 @@ fn evaluate_binary(op: BinaryOp, a: f64, b: f64) -> Option<f64> {
         BinaryOp::Ne => truth(a != b),
         BinaryOp::And | BinaryOp::Or => unreachable_logic(a, b, op),
     })
+}
+
+/// `a op b` for the operators that cannot fail (before the finite check), as the loop computes it.
+#[inline(always)]
+fn quick_binary(op: BinaryOp, a: f64, b: f64) -> Option<f64> {
+    match op {
+        BinaryOp::Add => Some(a + b),
+        BinaryOp::Sub => Some(a - b),
+        BinaryOp::Mul => Some(a * b),
+        _ => None,
+    }
 }
 
 /// `&&` and `||` compile to jumps, so they never reach `Op::Bin`; this keeps the match total.
