@@ -13,6 +13,11 @@
 //! production per branch, in order: Meristem applies the first that matches, as L-Py does).
 //! Anything else is reported and left out.
 
+mod cpp;
+mod globals;
+mod view;
+
+use super::vlab::View;
 use super::{Import, Output};
 use crate::vocabulary::{module_named, name_of, Command, DirectiveKind, KeywordKind, Meaning};
 use std::collections::HashMap;
@@ -69,6 +74,17 @@ const LPY_NAMES: &[(&str, Meaning)] = &[
 ];
 
 pub(super) fn import(text: &str, flavour: Flavour) -> Import {
+    import_with(text, flavour, None, &|_| None)
+}
+
+/// Imports `text` with what the rest of its vlab object says (`view`: `None` for a file alone),
+/// reading `#include`d files through `include`.
+pub(super) fn import_with(
+    text: &str,
+    flavour: Flavour,
+    view: Option<&View>,
+    include: &dyn Fn(&str) -> Option<String>,
+) -> Import {
     let mut importer = Importer {
         flavour,
         out: Output::default(),
@@ -76,8 +92,12 @@ pub(super) fn import(text: &str, flavour: Flavour) -> Import {
         unknown_names: Vec::new(),
         noted: Vec::new(),
         axiom: false,
+        view: view.cloned(),
+        bare_turn: false,
+        colour: false,
+        globals: globals::Globals::default(),
     };
-    importer.run(text);
+    importer.run(text, include);
     importer.out.finish()
 }
 
@@ -90,6 +110,14 @@ struct Importer {
     unknown_names: Vec<String>,
     noted: Vec<String>,
     axiom: bool,
+    /// The vlab object's view and colours (cpfg, opened with its object).
+    view: Option<View>,
+    /// A turn without an angle was written (it turns by the view's angle increment).
+    bare_turn: bool,
+    /// A colour module was written.
+    colour: bool,
+    /// cpfg's global variables, arrays and `Start:`… blocks.
+    globals: globals::Globals,
 }
 
 /// Splits the text into lines without comments: cpfg's `/* … */` and `//`, L-Py's `#`.
@@ -186,6 +214,64 @@ fn join_blocks(lines: Vec<Line>, flavour: Flavour) -> Vec<Line> {
     joined
 }
 
+/// The functions a cpfg `#define` value may call and stay a number expression: Meristem's and
+/// cpfg's own.
+fn cpp_functions() -> Vec<String> {
+    crate::vocabulary::FUNCTIONS
+        .iter()
+        .map(|f| f.name.to_string())
+        .chain(
+            ["func", "tfunc", "ran", "nran", "trunc", "fabs", "pow"]
+                .iter()
+                .map(|s| s.to_string()),
+        )
+        .collect()
+}
+
+/// True when a line starts with one of the notation's keywords (it is no part of a production).
+fn starts_with_keyword(code: &str) -> bool {
+    let lower = code.to_ascii_lowercase();
+    let compact: String = lower.chars().filter(|c| !c.is_whitespace()).collect();
+    code.starts_with('#')
+        || section(&lower).is_some()
+        // dialect: cpfg's keywords, without their spaces
+        || "axiom: derivationlength ignore: consider: maximumdepth lsystem: endlsystem start: starteach: end: endeach: define: seed:"
+            .split(' ')
+        .any(|k| compact.starts_with(k))
+}
+
+/// cpfg productions written over two lines: `pred : cond` then `--> succ` on the next line, or
+/// `pred -->` then the successor (at any indentation) on the next.
+fn join_two_line_productions(mut lines: Vec<Line>) -> Vec<Line> {
+    let mut i = 0;
+    while i < lines.len() {
+        let next = (i + 1..lines.len()).find(|&j| !lines[j].code.is_empty());
+        let Some(j) = next else { break };
+        let (a, b) = (&lines[i].code, &lines[j].code);
+        let arrow_next = b.starts_with("-->") || b.starts_with("->");
+        let open_arrow =
+            arrow(a).is_some_and(|(_, end)| a[end..].trim().is_empty()) && arrow(b).is_none();
+        let joins = !a.is_empty()
+            && !starts_with_keyword(a)
+            && !starts_with_keyword(b)
+            && ((arrow_next && arrow(a).is_none()) || open_arrow);
+        if joins {
+            // The joined line goes, so that the successor's own continuation lines (indented,
+            // see `production_lines`) follow the production directly.
+            let joined = lines.remove(j);
+            lines[i].code = format!("{} {}", lines[i].code, joined.code);
+            if !joined.comment.is_empty() {
+                let comment = format!("{} {}", lines[i].comment, joined.comment);
+                lines[i].comment = comment.trim().to_string();
+            }
+            // `pred : cond` + `-->` alone may now be an open arrow: look again.
+            continue;
+        }
+        i += 1;
+    }
+    lines
+}
+
 /// The byte index of the first `token` outside brackets, braces and parentheses.
 fn top_level(text: &str, token: &str) -> Option<usize> {
     let mut depth = 0i32;
@@ -235,8 +321,21 @@ impl Importer {
         }
     }
 
-    fn run(&mut self, text: &str) {
-        let all = join_blocks(lines(text, self.flavour), self.flavour);
+    /// The file's lines ready to translate: comments split off, cpfg's preprocessor run, blocks
+    /// and productions over several lines joined, globals and L-Py's module declarations read.
+    fn prepare(&mut self, text: &str, include: &dyn Fn(&str) -> Option<String>) -> Vec<Line> {
+        let mut all = lines(text, self.flavour);
+        if self.flavour == Flavour::Cpfg {
+            let functions = cpp_functions();
+            let names: Vec<&str> = functions.iter().map(String::as_str).collect();
+            let mut pre = cpp::Preprocessor::new(include, &names);
+            all = pre.run(all, 0);
+            for (n, message) in pre.notes {
+                self.note(n, message);
+            }
+            all = join_two_line_productions(join_blocks(all, self.flavour));
+            self.globals = globals::Globals::scan(&all);
+        }
         // L-Py's `module` declarations change how strings split into modules: read them first.
         if self.flavour == Flavour::Lpy {
             for line in &all {
@@ -250,12 +349,18 @@ impl Importer {
                 }
             }
         }
+        all
+    }
+
+    fn run(&mut self, text: &str, include: &dyn Fn(&str) -> Option<String>) {
+        let all = self.prepare(text, include);
         self.out.comment(
             &format!("Imported from {} by meristem import.", self.flavour.tool()),
             0,
         );
         let module_line = self.out.len();
         self.out.line("", 0);
+        self.view_lines();
         let mut ended = false;
         let mut i = 0;
         while i < all.len() {
@@ -305,6 +410,7 @@ impl Importer {
         if !self.axiom {
             self.note(0, "no Axiom: line");
         }
+        self.unknown_view();
     }
 
     /// Translates one statement (a line, or a production with the lines it takes); returns the
@@ -357,6 +463,9 @@ impl Importer {
         let code = line.code.as_str();
         let lower = code.to_ascii_lowercase();
         if keyword(&lower, code, "lsystem:").is_some() {
+            return true;
+        }
+        if self.flavour == Flavour::Cpfg && self.global_block(code, line.n) {
             return true;
         }
         // dialect: cpfg's keyword
@@ -417,6 +526,7 @@ impl Importer {
         match self.modules(rest, &Env::new(), n) {
             Ok(m) => {
                 self.axiom = true;
+                let m = format!("{}{m}", self.initial_colour());
                 self.out.line(
                     format!("{} {}", KeywordKind::Axiom.written(), separate(&m)),
                     n,
@@ -429,7 +539,11 @@ impl Importer {
     /// `ignore: modules` or `consider: modules` (the keyword `kw`, then `rest`) as Meristem's
     /// `directive` with the modules' names.
     fn module_list(&mut self, kw: &str, directive: &str, rest: &str, n: usize) {
-        match self.modules(rest, &Env::new(), n) {
+        // The names listed draw nothing: a `+` here is no turn by the view's angle.
+        let (bare_turn, colour) = (self.bare_turn, self.colour);
+        let modules = self.modules(rest, &Env::new(), n);
+        (self.bare_turn, self.colour) = (bare_turn, colour);
+        match modules {
             Ok(m) => {
                 let names = module_names(&m);
                 if !names.is_empty() {
@@ -575,7 +689,7 @@ impl Importer {
             Some(i) => (left[..i].trim(), left[i + 1..].trim()),
             None => (left, ""),
         };
-        let (env, condition) = self.guard(guard)?;
+        let (env, condition) = self.guard(guard, n)?;
         // cpfg's probability after the successor: `--> succ : 0.3`.
         let (right, weight) = match top_level(right, ":") {
             Some(i) => {
@@ -611,7 +725,7 @@ impl Importer {
     /// A production's guard (what stands between `:` and the arrow): statement blocks `{…}`
     /// before and after a condition. Returns the names the blocks bind and the condition in
     /// Meristem's terms (`None` when there is none or it is `*`).
-    fn guard(&mut self, guard: &str) -> Result<(Env, Option<String>), String> {
+    fn guard(&mut self, guard: &str, n: usize) -> Result<(Env, Option<String>), String> {
         let mut env = Env::new();
         let mut condition = String::new();
         let mut rest = guard;
@@ -621,7 +735,7 @@ impl Importer {
                 let close = inner.find('}').ok_or("a '{' block is never closed")?;
                 let block = &inner[..close];
                 if condition.trim().is_empty() {
-                    self.block(block, &mut env)?;
+                    self.block(block, &mut env, n)?;
                 } else {
                     post = Some(block.to_string());
                 }
@@ -642,7 +756,7 @@ impl Importer {
             Some(translated)
         };
         if let Some(block) = post {
-            self.block(&block, &mut env)?;
+            self.block(&block, &mut env, n)?;
         }
         Ok((env, condition))
     }
@@ -690,8 +804,17 @@ impl Importer {
     }
 
     /// A statement block: assignments `x = e;` (also `+=` …), in order.
-    fn block(&mut self, block: &str, env: &mut Env) -> Result<(), String> {
+    fn block(&mut self, block: &str, env: &mut Env, n: usize) -> Result<(), String> {
         for statement in block.split(';').map(str::trim).filter(|s| !s.is_empty()) {
+            if statement
+                .chars()
+                .filter(|c| !c.is_whitespace())
+                .collect::<String>()
+                .ends_with("++")
+            {
+                self.note(n, format!("the statement '{statement}' changes a variable cpfg keeps from module to module; Meristem has no variables: dropped"));
+                continue;
+            }
             let (target, op, value) = ["+=", "-=", "*=", "/=", "="]
                 .iter()
                 .find_map(|op| {
@@ -702,6 +825,10 @@ impl Importer {
                 .ok_or_else(|| format!("the statement '{statement}' is not an assignment"))?;
             if !is_identifier(target) || value.starts_with('=') {
                 return Err(format!("the statement '{statement}' is not an assignment"));
+            }
+            if self.globals.is_global(target) && !env.contains_key(target) {
+                self.note(n, format!("the statement '{statement}' changes cpfg's global variable {target} during the derivation; Meristem has no variables, so it is dropped and {target} keeps its start value"));
+                continue;
             }
             let value = self.expression(value, env)?;
             let value = match op {
@@ -864,6 +991,20 @@ impl Importer {
         while j < chars.len() && chars[j] == ' ' {
             j += 1;
         }
+        if chars.get(j) == Some(&'[') && self.flavour == Flavour::Cpfg {
+            let close = chars[j..]
+                .iter()
+                .position(|&c| c == ']')
+                .map(|k| j + k)
+                .ok_or("a '[' is never closed")?;
+            let inner: String = chars[j + 1..close].iter().collect();
+            let index = self.expression(&inner, env)?;
+            let value = self.array_value(&word, &index).ok_or_else(|| {
+                format!("'{word}[…]' reads an array that cpfg's Start: or Define: block does not give as one list of values")
+            })?;
+            out.push_str(&value);
+            return Ok(close + 1);
+        }
         if chars.get(j) == Some(&'(') {
             let close = matching(chars, j).ok_or("a '(' is never closed")?;
             let inner: String = chars[j + 1..close].iter().collect();
@@ -942,10 +1083,11 @@ impl Importer {
                 format!("(({0})<0?ceil({0}):floor({0}))", a(0))
             }
             (Flavour::Lpy, "pow") => format!("(({})^({}))", a(0), a(1)),
-            (Flavour::Cpfg, "func" | "tfunc") => {
-                return Err(format!(
-                    "cpfg's {name}(…) reads a function from the model's function file, which is not part of the L-system"
-                ))
+            (Flavour::Cpfg, "func") => return self.func(args),
+            (Flavour::Cpfg, "tfunc") => {
+                return Err(
+                    "cpfg's tfunc(…) (a function of time from the animation's function file) is not translated".into(),
+                )
             }
             (Flavour::Cpfg, "ran") => format!("uniform(0,{})", a(0)),
             (Flavour::Cpfg, "nran") => format!("normal({all})"),
@@ -1066,6 +1208,9 @@ impl Importer {
                 format!("{tool}'s '{width}' without a value widens by the width increment; Meristem has no such command; dropped"),
             );
             return String::new();
+        }
+        if let Some(text) = self.view_module(name, &params, has_params, n) {
+            return text;
         }
         if name == "," {
             return if has_params {
@@ -1324,7 +1469,9 @@ mod tests {
                 "endlsystem",
             ]
         );
-        assert!(import.notes.is_empty(), "{:?}", import.notes);
+        // `F[+F]F` turns by the view file's angle, which a `.l` alone does not give.
+        assert_eq!(import.notes.len(), 1, "{:?}", import.notes);
+        assert!(import.notes[0].line == 0 && import.notes[0].message.contains("angle increment"));
     }
 
     #[test]
@@ -1371,7 +1518,8 @@ mod tests {
         );
         resolves(&import);
         let lines: Vec<usize> = import.notes.iter().map(|n| n.line).collect();
-        assert_eq!(lines, [1, 2, 4, 5, 5, 5, 7], "{:?}", import.notes);
+        // `#define f(x) x` is expanded where it is used (line 2 needs no note).
+        assert_eq!(lines, [1, 4, 5, 5, 5, 7], "{:?}", import.notes);
         assert!(import
             .text
             .contains("// not imported: A(t) -> @c(1)~k(2)F(frob(1,t))"));

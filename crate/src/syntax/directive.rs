@@ -42,9 +42,12 @@ pub(super) fn parse_directive(
         target: None,
         expr: None,
         modules: Vec::new(),
+        points: Vec::new(),
     };
     let first = info.and_then(|i| i.params().first()).map(|p| p.kind);
+    let points = info.and_then(|i| i.params().get(1)).map(|p| p.kind) == Some(ParamKind::Points);
     let kept = match first {
+        Some(ParamKind::Name) if points => curve_definition(&mut directive, diagnostics),
         Some(ParamKind::Name) => definition(&mut directive, diagnostics),
         Some(ParamKind::Modules) => module_list(&mut directive, scanner, diagnostics),
         _ => true,
@@ -97,6 +100,46 @@ fn definition(d: &mut Directive, diagnostics: &mut Vec<Diagnostic>) -> bool {
             false
         }
     }
+}
+
+/// `#curve NAME x y x y …`, `#table NAME x y …`: a name, then numbers separated by spaces or
+/// commas. False when the line is not kept.
+fn curve_definition(d: &mut Directive, diagnostics: &mut Vec<Diagnostic>) -> bool {
+    let args = d.args.as_str();
+    let args_at = d.args_span.start;
+    let ident_len = args
+        .find(|c: char| !(c.is_alphanumeric() || c == '_'))
+        .unwrap_or(args.len());
+    if ident_len == 0 || args.starts_with(|c: char| c.is_ascii_digit()) {
+        diagnostics.push(Diagnostic::error(
+            "E0113",
+            d.name_span.clone(),
+            format!("{} needs a name, then points x y", d.written),
+        ));
+        return false;
+    }
+    let rest = &args[ident_len..];
+    let mut points = Vec::new();
+    for word in rest.split(|c: char| c.is_whitespace() || c == ',') {
+        if word.is_empty() {
+            continue;
+        }
+        match word.parse::<f64>() {
+            Ok(v) if v.is_finite() => points.push(v),
+            _ => {
+                let at = args_at + (word.as_ptr() as usize - args.as_ptr() as usize);
+                diagnostics.push(Diagnostic::error(
+                    "E0137",
+                    at..at + word.len(),
+                    format!("'{word}' is not a number: {} takes numbers x y", d.written),
+                ));
+                return false;
+            }
+        }
+    }
+    d.target = Some((args[..ident_len].to_string(), args_at..args_at + ident_len));
+    d.points = points;
+    true
 }
 
 /// `#ignore`, `#consider`, `#draw`, `#apex`, `#module`: module names. False when the line is not

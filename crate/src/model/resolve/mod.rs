@@ -7,7 +7,9 @@ mod directives;
 mod rules;
 mod scope;
 
-use super::{Alphabet, GroupIds, Model, ModuleId, RandomVariable, RuleSet, SuccessorModule};
+use super::{
+    Alphabet, Curve, CurveKind, GroupIds, Model, ModuleId, RandomVariable, RuleSet, SuccessorModule,
+};
 use crate::diagnostics::Diagnostic;
 use crate::syntax::{Directive, ExprSyntax, Section, SourceFile};
 use crate::vocabulary::{
@@ -17,6 +19,7 @@ use crate::vocabulary::{
 use directives::DirectiveValues;
 use scope::Slots;
 use std::collections::HashMap;
+use std::sync::Arc;
 
 /// Resolves a parsed file. Returns `None` for the model when there is nothing to derive (no
 /// axiom); otherwise a model plus every diagnostic, even when some are errors.
@@ -94,6 +97,8 @@ struct Resolver {
     defines: HashMap<String, ExprSyntax>,
     /// `#random` names, in order (a variable's index is its position).
     random_names: Vec<String>,
+    /// `#curve` and `#table` functions by name.
+    curves: HashMap<String, Arc<Curve>>,
 }
 
 /// The ids every model has, interned first and always in this order.
@@ -111,6 +116,7 @@ impl Resolver {
             alphabet: Alphabet::default(),
             defines: HashMap::new(),
             random_names: Vec::new(),
+            curves: HashMap::new(),
         }
     }
 
@@ -150,13 +156,23 @@ impl Resolver {
     fn definitions<'f>(&mut self, file: &'f SourceFile) -> Vec<&'f Directive> {
         let mut randoms = Vec::new();
         for d in &file.directives {
-            let (Some((name, span)), Some(expr)) = (&d.target, &d.expr) else {
+            let Some((name, span)) = &d.target else {
                 continue;
             };
             let taken = self.defines.contains_key(name)
                 || self.random_names.iter().any(|n| n == name)
+                || self.curves.contains_key(name)
                 || value_named(name).is_some()
                 || function_named(name).is_some();
+            if !taken {
+                if let Some(kind) = curve_kind(d.kind) {
+                    self.curve(name, kind, d);
+                    continue;
+                }
+            }
+            let Some(expr) = &d.expr else {
+                continue;
+            };
             if taken {
                 self.diagnostics.push(Diagnostic::error(
                     "E0205",
@@ -173,6 +189,20 @@ impl Resolver {
             }
         }
         randoms
+    }
+
+    /// A `#curve` or `#table` named `name`.
+    fn curve(&mut self, name: &str, kind: CurveKind, d: &Directive) {
+        match Curve::new(kind, &d.points) {
+            Ok(curve) => {
+                self.curves.insert(name.to_string(), Arc::new(curve));
+            }
+            Err(why) => self.diagnostics.push(Diagnostic::error(
+                "E0210",
+                d.args_span.clone(),
+                format!("{} {name}: {why}", d.written),
+            )),
+        }
     }
 
     /// The `#random` variables, compiled in the order of their names.
@@ -206,6 +236,15 @@ impl Resolver {
             }
         }
         sets
+    }
+}
+
+/// The kind of curve a directive defines, if it defines one.
+fn curve_kind(kind: Option<DirectiveKind>) -> Option<CurveKind> {
+    match kind? {
+        DirectiveKind::Curve => Some(CurveKind::Spline),
+        DirectiveKind::Table => Some(CurveKind::Table),
+        _ => None,
     }
 }
 

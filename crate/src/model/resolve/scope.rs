@@ -3,9 +3,10 @@
 
 use super::Resolver;
 use crate::diagnostics::Diagnostic;
-use crate::model::{Program, Scope};
+use crate::model::{Curve, Program, Scope};
 use crate::syntax::ExprSyntax;
 use std::collections::HashMap;
+use std::sync::Arc;
 
 /// The formal parameters of one production: name -> slot.
 #[derive(Default)]
@@ -17,6 +18,7 @@ struct ScopeView<'a> {
     slots: &'a Slots,
     defines: &'a HashMap<String, ExprSyntax>,
     random_names: &'a [String],
+    curves: &'a HashMap<String, Arc<Curve>>,
 }
 
 impl Scope for ScopeView<'_> {
@@ -36,6 +38,9 @@ impl Scope for ScopeView<'_> {
             .position(|n| n == name)
             .map(|i| i as u16)
     }
+    fn curve(&self, name: &str) -> Option<Arc<Curve>> {
+        self.curves.get(name).cloned()
+    }
 }
 
 impl Resolver {
@@ -45,6 +50,7 @@ impl Resolver {
             slots,
             defines: &self.defines,
             random_names: &self.random_names,
+            curves: &self.curves,
         };
         match Program::compile(expr, &scope) {
             Ok(p) => Some(p),
@@ -62,6 +68,7 @@ impl Resolver {
             slots: &Slots::default(),
             defines: &self.defines,
             random_names: &[],
+            curves: &self.curves,
         };
         Program::compile(expr, &scope)
     }
