@@ -124,7 +124,18 @@ struct Importer {
 fn lines(text: &str, flavour: Flavour) -> Vec<Line> {
     let mut result = Vec::new();
     let mut in_block = false;
+    // L-Py: the triple quote of a Python string that runs over several lines.
+    let mut in_string: Option<&str> = None;
     for (index, raw) in text.lines().enumerate() {
+        if flavour == Flavour::Lpy {
+            if let Some(line) = python_string_line(raw, &mut in_string) {
+                result.push(Line {
+                    n: index + 1,
+                    ..line
+                });
+                continue;
+            }
+        }
         let mut code = String::new();
         let mut comment = String::new();
         let chars: Vec<char> = raw.chars().collect();
@@ -184,6 +195,47 @@ fn lines(text: &str, flavour: Flavour) -> Vec<Line> {
         });
     }
     result
+}
+
+/// A line of L-Py text that a Python string over several lines (`"""…"""`, a docstring)
+/// opens, continues or closes: the string's text becomes a comment, and the line that opens it
+/// keeps its code with the string closed there. `None` for any other line.
+fn python_string_line<'a>(raw: &str, in_string: &mut Option<&'a str>) -> Option<Line> {
+    if let Some(quote) = *in_string {
+        let (text, code) = match raw.find(quote) {
+            Some(end) => {
+                *in_string = None;
+                (&raw[..end], raw[end + quote.len()..].trim())
+            }
+            None => (raw, ""),
+        };
+        return Some(Line {
+            n: 0,
+            code: code.to_string(),
+            comment: text.trim().to_string(),
+            indent: raw.len() - raw.trim_start().len(),
+        });
+    }
+    let quote: &'a str = ["\"\"\"", "'''"]
+        .into_iter()
+        .find(|q| raw.matches(q).count() % 2 == 1)?;
+    let open = raw.find(quote)?;
+    *in_string = Some(quote);
+    let code = raw[..open].trim();
+    let text = raw[open + quote.len()..].trim();
+    // An assignment of the string (`__description__ = """…`) keeps it, closed on its first
+    // line; a docstring is a comment.
+    let (code, comment) = if code.ends_with('=') {
+        (format!("{code} {quote}{text}{quote}"), String::new())
+    } else {
+        (code.to_string(), text.to_string())
+    };
+    Some(Line {
+        n: 0,
+        code,
+        comment,
+        indent: raw.len() - raw.trim_start().len(),
+    })
 }
 
 /// cpfg's statement blocks `{ … }` may span lines: a line whose braces are not closed takes the
@@ -476,6 +528,16 @@ impl Importer {
                     line.n,
                 ),
                 Err(why) => self.note(line.n, format!("derivation length: {why}")),
+            }
+            return true;
+        }
+        // dialect: cpfg's keyword (the random generator's seed)
+        if let Some(rest) = keyword(&lower, code, "seed:") {
+            match self.expression(rest, &Env::new()) {
+                Ok(e) => self
+                    .out
+                    .line(format!("{} {e}", DirectiveKind::Seed.written()), line.n),
+                Err(why) => self.note(line.n, format!("seed: {why}")),
             }
             return true;
         }

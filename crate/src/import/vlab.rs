@@ -26,6 +26,9 @@ pub(super) struct View {
     pub width_step: Option<f64>,
     pub color: Option<f64>,
     pub color_increment: Option<f64>,
+    /// `tropism direction: x,y,z` and `initial elasticity: e` (or `tropism: T: x,y,z E: e`).
+    pub tropism: Option<[f64; 3]>,
+    pub elasticity: Option<f64>,
     /// The functions `func(k, x)` reads, k from 1: each a name and the lines that define it.
     pub functions: Vec<Option<CurveFunction>>,
     /// `#color` lines from the colour map or materials.
@@ -218,6 +221,26 @@ fn read_view(text: &str, all: &Files, view: &mut View) {
             "line width increment" => view.width_step = first,
             "initial color" => view.color = first,
             "color increment" => view.color_increment = first,
+            "tropism direction" => view.tropism = vector(value),
+            "initial elasticity" => view.elasticity = first,
+            "tropism" => {
+                // The newer form: `tropism: T: x,y,z E: e` (one tropism of several).
+                let (t, e) = value.split_once("E:").unwrap_or((value, ""));
+                view.tropism = vector(t.trim().trim_start_matches("T:"));
+                view.elasticity = e.split_whitespace().next().and_then(|w| w.parse().ok());
+            }
+            "elasticity increment" if first.is_some_and(|e| e != 0.0) => view.notes.push(format!(
+                "the view file's elasticity increment ({}) is not translated: Meristem's tropism keeps one susceptibility",
+                value.trim()
+            )),
+            "surface" => {
+                let mut words = value.split_whitespace();
+                let (name, file) = (words.next().unwrap_or(""), words.next().unwrap_or(""));
+                view.notes.push(format!(
+                    "the view file's surface {name} is read from {file}, which Meristem does not read: ~{name} draws Meristem's own {}",
+                    if name == "p" { "petal" } else { "leaf" }
+                ));
+            }
             "function" => {
                 let mut words = value.split_whitespace();
                 let file = words.next().unwrap_or("").to_string();
@@ -245,6 +268,16 @@ fn read_view(text: &str, all: &Files, view: &mut View) {
             _ => {}
         }
     }
+}
+
+/// Three numbers separated by commas or spaces.
+fn vector(text: &str) -> Option<[f64; 3]> {
+    let v: Vec<f64> = text
+        .split([',', ' ', '\t'])
+        .filter(|w| !w.is_empty())
+        .map(|w| w.parse::<f64>().ok().filter(|v| v.is_finite()))
+        .collect::<Option<_>>()?;
+    v.try_into().ok()
 }
 
 /// A `.fset`: `funcgalleryver 1 1`, `items: n`, then n functions of the `.func` format.

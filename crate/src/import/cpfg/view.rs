@@ -27,6 +27,13 @@ impl Importer {
                     .line(format!("{} {}", kind.written(), number(v)), 0);
             }
         }
+        if let (Some([x, y, z]), Some(e)) = (view.tropism, view.elasticity) {
+            if e != 0.0 {
+                let values = [x, y, z, e].map(number).join(" ");
+                self.out
+                    .line(format!("{} {values}", DirectiveKind::Tropism.written()), 0);
+            }
+        }
         for line in &view.palette {
             self.out.line(line.clone(), 0);
         }
