@@ -516,7 +516,7 @@ fn import_object(args: &Args) -> ExitCode {
             }
         }
     };
-    write_import(args, &import::import_object(&files))
+    write_import(args, &import::import_files(&files).0)
 }
 
 /// Writes an import's text (stdout or `-o`) and its notes (stderr).

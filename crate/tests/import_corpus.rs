@@ -483,3 +483,77 @@ fn an_object_gives_its_view_and_functions_and_the_l_alone_says_what_it_lacks() {
         "{said:?}"
     );
 }
+
+#[test]
+fn a_zipped_object_imports_as_its_folder_does() {
+    let dir = root().join("vlab/09-monopodial-spiral");
+    let files = object(&dir);
+    let entries: Vec<(String, &[u8])> = files
+        .iter()
+        .map(|f| {
+            (
+                format!("09-monopodial-spiral/{}", f.name),
+                f.bytes.as_slice(),
+            )
+        })
+        .collect();
+    let entries: Vec<(&str, &[u8])> = entries.iter().map(|(n, b)| (n.as_str(), *b)).collect();
+    let zip = meristem::export::zip::stored(&entries).expect("zip");
+    let (zipped, dialect) = import::import_files(&[ObjectFile {
+        name: "spiral.zip".into(),
+        bytes: zip,
+    }]);
+    assert_eq!(dialect, Some(Dialect::Cpfg));
+    assert_eq!(zipped, import::import_object(&files));
+    let (broken, dialect) = import::import_files(&[ObjectFile {
+        name: "spiral.zip".into(),
+        bytes: b"PK\x03\x04 not really".to_vec(),
+    }]);
+    assert_eq!(dialect, None);
+    assert!(broken.text.is_empty());
+    assert!(broken.notes[0]
+        .message
+        .starts_with("spiral.zip: not a zip archive"));
+}
+
+/// Any bytes in any file of an object (the archive, the view file, a function file, the colour
+/// map, the L-system) give a translation that resolves, or notes: never a panic or a hang.
+#[test]
+fn any_bytes_in_an_object_give_a_translation_or_a_note() {
+    use proptest::prelude::*;
+    use proptest::test_runner::{Config, TestRunner};
+    let base = object(&root().join("vlab/08-leaf-pos"));
+    let mut runner = TestRunner::new(Config {
+        cases: 64,
+        ..Config::default()
+    });
+    let strategy = (
+        0..base.len() + 1,
+        proptest::collection::vec(any::<u8>(), 0..400),
+        any::<u16>(),
+    );
+    runner
+        .run(&strategy, |(which, noise, at)| {
+            let mut files = base.clone();
+            match files.get_mut(which) {
+                // Overwrite part of one file with noise.
+                Some(f) => {
+                    let at = at as usize % (f.bytes.len() + 1);
+                    let end = (at + noise.len()).min(f.bytes.len());
+                    f.bytes.splice(at..end, noise.iter().copied());
+                }
+                None => files.push(ObjectFile {
+                    name: "noise.zip".into(),
+                    bytes: noise,
+                }),
+            }
+            let (result, _) = import::import_files(&files);
+            if !result.is_empty() {
+                let (file, mut d) = meristem::syntax::parse(&result.text);
+                d.extend(meristem::model::resolve(&file).1);
+                prop_assert!(!meristem::diagnostics::has_errors(&d), "{}", result.text);
+            }
+            Ok(())
+        })
+        .expect("no input breaks the importer");
+}

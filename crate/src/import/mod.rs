@@ -14,7 +14,7 @@ mod lparser;
 mod vlab;
 mod zip;
 
-pub use vlab::{import_object, ObjectFile};
+pub use vlab::{import_files, import_object, ObjectFile};
 pub use zip::unzip;
 
 use crate::diagnostics::{has_errors, LineIndex, Severity};

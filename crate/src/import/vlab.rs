@@ -141,6 +141,51 @@ fn pick<'a>(names: &[&'a str], stem: &str) -> Option<&'a str> {
         .copied()
 }
 
+/// Imports what was opened together (a folder's files, several files, a `.zip`): any `.zip`
+/// among them is unpacked, then the whole is imported as one object. A broken archive gives a
+/// note and nothing else. With the dialect read (`None` when nothing was).
+pub fn import_files(files: &[ObjectFile]) -> (Import, Option<Dialect>) {
+    let mut all = Vec::new();
+    for f in files {
+        if !f.name.to_ascii_lowercase().ends_with(".zip") {
+            all.push(f.clone());
+            continue;
+        }
+        match super::unzip(&f.bytes) {
+            Ok(inner) => all.extend(inner),
+            Err(why) => {
+                let mut import = Import::default();
+                import.notes.push(super::ImportNote {
+                    line: 0,
+                    message: format!("{}: {why}", base(&f.name)),
+                });
+                return (import, None);
+            }
+        }
+    }
+    let import = import_object(&all);
+    let dialect = (!import.is_empty()).then(|| object_dialect(&all)).flatten();
+    (import, dialect)
+}
+
+/// The dialect [`import_object`] reads the files in: cpfg when there is a `.l`, else L-Py's
+/// `.lpy`, else Lparser's `.ls`.
+fn object_dialect(files: &[ObjectFile]) -> Option<Dialect> {
+    let has = |ext: &str| {
+        files
+            .iter()
+            .any(|f| f.name.to_ascii_lowercase().ends_with(ext))
+    };
+    [
+        (".l", Dialect::Cpfg),
+        (".lpy", Dialect::Lpy),
+        (".ls", Dialect::Lparser),
+    ]
+    .into_iter()
+    .find(|(ext, _)| has(ext))
+    .map(|(_, d)| d)
+}
+
 /// Imports a vlab object (or any folder holding one L-system file).
 pub fn import_object(files: &[ObjectFile]) -> Import {
     let all = Files::new(files);
