@@ -55,11 +55,10 @@ pub(super) fn parse_directive(
     kept.then_some(directive)
 }
 
-/// `#define NAME expr`, `#random NAME = expr` (the `=` is optional for both). False when the line
-/// is not kept.
-fn definition(d: &mut Directive, diagnostics: &mut Vec<Diagnostic>) -> bool {
+/// The length of the name a defining directive starts with; `None` (and error E0113, saying
+/// that `then` follows the name) when it has none.
+fn leading_name(d: &Directive, then: &str, diagnostics: &mut Vec<Diagnostic>) -> Option<usize> {
     let args = d.args.as_str();
-    let args_at = d.args_span.start;
     let ident_len = args
         .find(|c: char| !(c.is_alphanumeric() || c == '_'))
         .unwrap_or(args.len());
@@ -67,10 +66,21 @@ fn definition(d: &mut Directive, diagnostics: &mut Vec<Diagnostic>) -> bool {
         diagnostics.push(Diagnostic::error(
             "E0113",
             d.name_span.clone(),
-            format!("{} needs a name, then an expression", d.written),
+            format!("{} needs a name, then {then}", d.written),
         ));
-        return false;
+        return None;
     }
+    Some(ident_len)
+}
+
+/// `#define NAME expr`, `#random NAME = expr` (the `=` is optional for both). False when the line
+/// is not kept.
+fn definition(d: &mut Directive, diagnostics: &mut Vec<Diagnostic>) -> bool {
+    let Some(ident_len) = leading_name(d, "an expression", diagnostics) else {
+        return false;
+    };
+    let args = d.args.as_str();
+    let args_at = d.args_span.start;
     let target = (args[..ident_len].to_string(), args_at..args_at + ident_len);
     let mut expr_text = &args[ident_len..];
     let mut expr_at = args_at + ident_len;
@@ -105,19 +115,11 @@ fn definition(d: &mut Directive, diagnostics: &mut Vec<Diagnostic>) -> bool {
 /// `#curve NAME x y x y …`, `#table NAME x y …`: a name, then numbers separated by spaces or
 /// commas. False when the line is not kept.
 fn curve_definition(d: &mut Directive, diagnostics: &mut Vec<Diagnostic>) -> bool {
+    let Some(ident_len) = leading_name(d, "points x y", diagnostics) else {
+        return false;
+    };
     let args = d.args.as_str();
     let args_at = d.args_span.start;
-    let ident_len = args
-        .find(|c: char| !(c.is_alphanumeric() || c == '_'))
-        .unwrap_or(args.len());
-    if ident_len == 0 || args.starts_with(|c: char| c.is_ascii_digit()) {
-        diagnostics.push(Diagnostic::error(
-            "E0113",
-            d.name_span.clone(),
-            format!("{} needs a name, then points x y", d.written),
-        ));
-        return false;
-    }
     let rest = &args[ident_len..];
     let mut points = Vec::new();
     for word in rest.split(|c: char| c.is_whitespace() || c == ',') {

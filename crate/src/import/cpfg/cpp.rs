@@ -321,9 +321,7 @@ impl<'a> Preprocessor<'a> {
             let c = bytes[i];
             if c.is_ascii_alphabetic() || c == b'_' {
                 let start = i;
-                while i < bytes.len() && (bytes[i].is_ascii_alphanumeric() || bytes[i] == b'_') {
-                    i += 1;
-                }
+                i = word_end(bytes, i);
                 let word = &text[start..i];
                 let found = self
                     .macros
@@ -355,6 +353,14 @@ impl<'a> Preprocessor<'a> {
         }
         None
     }
+}
+
+/// The end of the identifier that starts at byte `i`.
+fn word_end(bytes: &[u8], mut i: usize) -> usize {
+    while i < bytes.len() && (bytes[i].is_ascii_alphanumeric() || bytes[i] == b'_') {
+        i += 1;
+    }
+    i
 }
 
 /// Joins lines that end with `\` to the next.
@@ -421,9 +427,7 @@ fn substitute(body: &str, params: &[String], args: &[String]) -> String {
         let c = bytes[i];
         if c.is_ascii_alphabetic() || c == b'_' {
             let start = i;
-            while i < bytes.len() && (bytes[i].is_ascii_alphanumeric() || bytes[i] == b'_') {
-                i += 1;
-            }
+            i = word_end(bytes, i);
             let word = &body[start..i];
             match params.iter().position(|p| p == word) {
                 Some(k) => out.push_str(args.get(k).map_or("", String::as_str)),
