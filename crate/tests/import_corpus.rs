@@ -283,6 +283,18 @@ const CORPUS: &[Entry] = &[
     ("lpy/03-koch-curve.lpy", 2390, 1024, &[]),
     ("lpy/04-sierpinski.lpy", 728, 0, &[]),
     (
+        "lpy/05-simple-sympodial-plant.lpy",
+        694,
+        126,
+        &[
+            (15, "L-Py's @o is not a Meristem command"),
+            (
+                20,
+                "the Python function '__initialiseContext__' is not translated",
+            ),
+        ],
+    ),
+    (
         "lpy/07-continuous-growth.lpy",
         8,
         7,

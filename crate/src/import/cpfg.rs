@@ -93,6 +93,7 @@ pub(super) fn import_with(
         noted: Vec::new(),
         axiom: false,
         view: view.cloned(),
+        helpers: Vec::new(),
         bare_turn: false,
         colour: false,
         globals: globals::Globals::default(),
@@ -112,6 +113,9 @@ struct Importer {
     axiom: bool,
     /// The vlab object's view and colours (cpfg, opened with its object).
     view: Option<View>,
+    /// L-Py helper functions that return one expression: name, parameters, the expression
+    /// (translated), inlined where they are called.
+    helpers: Vec<(String, Vec<String>, String)>,
     /// A turn without an angle was written (it turns by the view's angle increment).
     bare_turn: bool,
     /// A colour module was written.
@@ -692,6 +696,9 @@ impl Importer {
     /// statements are reported (a block with its indented lines). Returns where to go on.
     fn python(&mut self, line: &Line, block: &[Line], block_end: usize, next: usize) -> usize {
         let code = line.code.as_str();
+        if self.tuple_assignment(code, line.n) || self.helper(code, block, line.n) {
+            return if block.is_empty() { next } else { block_end };
+        }
         if let Some((name, value)) = code.split_once('=') {
             let name = name.trim();
             let value = value.trim();
@@ -732,6 +739,91 @@ impl Importer {
         } else {
             block_end
         }
+    }
+
+    /// A Python function that returns one expression (`def long(x): return 1`, the `return` on
+    /// its line or alone in its body): kept to be inlined where it is called. False for any
+    /// other line.
+    fn helper(&mut self, code: &str, block: &[Line], n: usize) -> bool {
+        let Some(rest) = code.strip_prefix("def ") else {
+            return false;
+        };
+        let Some((head, inline)) = rest.split_once(':') else {
+            return false;
+        };
+        let Some((name, params)) = head
+            .trim()
+            .strip_suffix(')')
+            .and_then(|h| h.split_once('('))
+        else {
+            return false;
+        };
+        let body: Vec<&str> = std::iter::once(inline.trim())
+            .chain(block.iter().map(|l| l.code.as_str()))
+            .filter(|c| !c.is_empty())
+            .collect();
+        let Some(value) = (match body.as_slice() {
+            [only] => only.strip_prefix("return "),
+            _ => None,
+        }) else {
+            return false;
+        };
+        let params: Vec<String> = params
+            .split(',')
+            .map(|p| p.trim().to_string())
+            .filter(|p| !p.is_empty())
+            .collect();
+        if !is_identifier(name.trim()) || !params.iter().all(|p| is_identifier(p)) {
+            return false;
+        }
+        let name = name.trim().to_string();
+        match self.expression(value.trim(), &Env::new()) {
+            Ok(e) => {
+                let comment = format!(
+                    "L-Py's function {name}({}) = {e}, inlined where it is called",
+                    params.join(", ")
+                );
+                self.out.comment(&comment, n);
+                self.helpers.push((name.clone(), params, e));
+            }
+            Err(why) => self.note(
+                n,
+                format!(
+                    "the Python function '{}' returns {}: {why}; not translated",
+                    name.trim(),
+                    value.trim()
+                ),
+            ),
+        }
+        true
+    }
+
+    /// Python's `a, b = 1, 2`: one `#define` each. False for any other line.
+    fn tuple_assignment(&mut self, code: &str, n: usize) -> bool {
+        let Some((names, values)) = code.split_once('=') else {
+            return false;
+        };
+        let names: Vec<&str> = names.split(',').map(str::trim).collect();
+        let values = split_top(values.trim(), ',');
+        let assigns = names.len() > 1
+            && names.len() == values.len()
+            && names.iter().all(|name| is_identifier(name))
+            && !values[0].trim_start().starts_with('=');
+        if !assigns {
+            return false;
+        }
+        for (name, value) in names.iter().zip(values) {
+            match self.expression(value.trim(), &Env::new()) {
+                Ok(e) => self
+                    .out
+                    .line(format!("{} {name} {e}", DirectiveKind::Define.written()), n),
+                Err(why) => self.note(
+                    n,
+                    format!("{name} = {}: {why}; not translated", value.trim()),
+                ),
+            }
+        }
+        true
     }
 
     /// `pred : {pre} cond {post} --> succ : probability` in Meristem's notation.
@@ -917,8 +1009,9 @@ impl Importer {
             let code = line.code.as_str();
             let (head, tail) = match code.find(':') {
                 Some(i)
-                    if code.starts_with("if ")
-                        || code.starts_with("elif ")
+                    if ["if ", "if(", "elif ", "elif("]
+                        .iter()
+                        .any(|k| code.starts_with(k))
                         || code.starts_with("else") =>
                 {
                     (&code[..i], code[i + 1..].trim())
@@ -929,9 +1022,10 @@ impl Importer {
                 let condition = if head.trim() == "else" {
                     None
                 } else {
+                    // `if(z == 1)` as well as `if z == 1`.
                     let c = head
-                        .trim_start_matches("elif ")
-                        .trim_start_matches("if ")
+                        .trim_start_matches("elif")
+                        .trim_start_matches("if")
                         .trim();
                     match self.expression(c, &Env::new()) {
                         Ok(c) => Some(c),
@@ -1127,6 +1221,17 @@ impl Importer {
 
     /// A function call in Meristem's terms.
     fn call(&mut self, name: &str, args: &[String]) -> Result<String, String> {
+        if let Some((_, params, body)) = self.helpers.iter().find(|(h, _, _)| h == name) {
+            if params.len() != args.len() {
+                return Err(format!(
+                    "{name}(…) takes {} arguments, not {}",
+                    params.len(),
+                    args.len()
+                ));
+            }
+            let args: Vec<String> = args.iter().map(|a| format!("({a})")).collect();
+            return Ok(format!("({})", cpp::substitute(body, params, &args)));
+        }
         let a = |k: usize| args.get(k).cloned().unwrap_or_default();
         let all = args.join(",");
         Ok(match (self.flavour, name) {
@@ -1137,6 +1242,8 @@ impl Importer {
             (Flavour::Lpy, "radians") => format!("(({})/{DEGREES})", a(0)),
             (Flavour::Lpy, "degrees") => format!("(({})*{DEGREES})", a(0)),
             (Flavour::Lpy, "random") if args.is_empty() => "uniform(0,1)".into(),
+            // L-Py counts the steps from 0; Meristem's NumIt from 1.
+            (Flavour::Lpy, "getIterationNb") if args.is_empty() => "(NumIt-1)".into(),
             (Flavour::Lpy, "randint") => format!("uniform_int({all})"),
             (Flavour::Lpy, "gauss" | "normalvariate") => format!("normal({all})"),
             (Flavour::Lpy, "expovariate") => format!("exponential({all})"),
@@ -1585,6 +1692,32 @@ mod tests {
         assert!(import
             .text
             .contains("// not imported: A(t) -> @c(1)~k(2)F(frob(1,t))"));
+    }
+
+    #[test]
+    fn lpy_helpers_tuples_and_the_iteration_number_are_translated() {
+        let import = import(
+            "def long(x):\n  return 2*x\ndef alpha(x): return 30\nTOP, dr = 10, 0.02\nAxiom: A(1)\nderivation length: 3\nproduction:\nA(n) :\n  if(n < TOP): produce F(long(n))+(alpha(n))A(n+dr)\nB(n) --> B(getIterationNb())\nendlsystem\n",
+            Flavour::Lpy,
+        );
+        resolves(&import);
+        assert_eq!(
+            body(&import),
+            [
+                "#define TOP 10",
+                "#define dr 0.02",
+                "axiom: A(1)",
+                "derivation length: 3",
+                "productions:",
+                "A(n) : (n < TOP) -> F((2*(n)))+((30))A(n+dr)",
+                "B(n) -> B((NumIt-1))",
+                "endlsystem",
+            ]
+        );
+        assert!(import.notes.is_empty(), "{:?}", import.notes);
+        assert!(import
+            .text
+            .contains("// L-Py's function long(x) = 2*x, inlined where it is called"));
     }
 
     #[test]

@@ -419,7 +419,7 @@ fn arguments(text: &str, at: usize) -> Option<(Vec<String>, usize)> {
 }
 
 /// The body with each parameter (a whole word) replaced by its argument.
-fn substitute(body: &str, params: &[String], args: &[String]) -> String {
+pub(super) fn substitute(body: &str, params: &[String], args: &[String]) -> String {
     let mut out = String::new();
     let bytes = body.as_bytes();
     let mut i = 0;
