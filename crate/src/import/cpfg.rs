@@ -345,6 +345,39 @@ fn top_level(text: &str, token: &str) -> Option<usize> {
     None
 }
 
+/// L-Py's literal values in a predecessor (`D(20, k)`): each becomes a parameter `v_litK`, with
+/// the condition `v_litK == 20`. Returns the pattern so rewritten and the conditions.
+fn literal_parameters(pattern: &str) -> (String, Vec<String>) {
+    let mut out = String::new();
+    let mut conditions = Vec::new();
+    let mut rest = pattern;
+    while let Some(open) = rest.find('(') {
+        out.push_str(&rest[..=open]);
+        let chars: Vec<char> = rest[open..].chars().collect();
+        let Some(close) = matching(&chars, 0) else {
+            break;
+        };
+        let inner: String = chars[1..close].iter().collect();
+        let params: Vec<String> = split_top(&inner, ',')
+            .into_iter()
+            .map(|p| match p.trim().parse::<f64>() {
+                Ok(v) if v.is_finite() => {
+                    let name = format!("v_lit{}", conditions.len() + 1);
+                    conditions.push(format!("{name} == {}", super::number(v)));
+                    name
+                }
+                _ => p.to_string(),
+            })
+            .collect();
+        out.push_str(&params.join(","));
+        out.push(')');
+        let consumed: usize = chars[..=close].iter().map(|c| c.len_utf8()).sum();
+        rest = &rest[open + consumed..];
+    }
+    out.push_str(rest);
+    (out, conditions)
+}
+
 /// The production arrow: `-->` or `->` outside parentheses; (start, end).
 fn arrow(code: &str) -> Option<(usize, usize)> {
     if let Some(i) = top_level(code, "-->") {
@@ -843,7 +876,21 @@ impl Importer {
             Some(i) => (left[..i].trim(), left[i + 1..].trim()),
             None => (left, ""),
         };
+        let (pattern, literals) = match self.flavour {
+            Flavour::Lpy => literal_parameters(pattern),
+            Flavour::Cpfg => (pattern.to_string(), Vec::new()),
+        };
+        let pattern = pattern.as_str();
         let (env, condition) = self.guard(guard, n)?;
+        // L-Py's `D(20, k)` matches a D whose first parameter is 20: a condition.
+        let condition = if literals.is_empty() {
+            condition
+        } else {
+            literals
+                .into_iter()
+                .chain(condition.map(|c| format!("({c})")))
+                .reduce(|a, b| format!("{a} && {b}"))
+        };
         // cpfg's probability after the successor: `--> succ : 0.3`.
         let (right, weight) = match top_level(right, ":") {
             Some(i) => {
@@ -1718,6 +1765,18 @@ mod tests {
         assert!(import
             .text
             .contains("// L-Py's function long(x) = 2*x, inlined where it is called"));
+        let literal = super::import(
+            "Axiom: D(20,1)\nderivation length: 2\nproduction:\nD(20,k) : k > 0 --> D(20,k+1)F\nD(x,k) --> D(x,k)\nendlsystem\n",
+            Flavour::Lpy,
+        );
+        resolves(&literal);
+        assert!(
+            literal
+                .text
+                .contains("D(v_lit1,k) : v_lit1 == 20 && (k > 0) -> D(20,k+1)F"),
+            "{}",
+            literal.text
+        );
     }
 
     #[test]
