@@ -911,6 +911,33 @@ impl Grammar {
     }
 }
 
+/// Imports files opened together, a vlab object (its `.l`, view file, functions and colours, as a
+/// folder, several files or a `.zip`) or an L-Py model: `names[k]` is the k-th file's name (a path
+/// inside the folder), its bytes are the next `lengths[k]` bytes of `bytes`. Returns the JSON of
+/// [`import_grammar`] (`dialect` is null when nothing could be imported).
+#[wasm_bindgen(js_name = importObject)]
+pub fn import_object(names: Vec<String>, bytes: &[u8], lengths: &[u32]) -> String {
+    use crate::import::{self, Dialect, Import, ObjectFile};
+    #[derive(serde::Serialize)]
+    struct Imported {
+        #[serde(flatten)]
+        import: Import,
+        dialect: Option<Dialect>,
+    }
+    let mut files = Vec::new();
+    let mut at = 0usize;
+    for (name, &len) in names.into_iter().zip(lengths) {
+        let end = at.saturating_add(len as usize).min(bytes.len());
+        files.push(ObjectFile {
+            name,
+            bytes: bytes[at.min(end)..end].to_vec(),
+        });
+        at = end;
+    }
+    let (import, dialect) = import::import_files(&files);
+    serde_json::to_string(&Imported { import, dialect }).unwrap_or_else(|_| "{}".into())
+}
+
 /// Translates `text`, written in another L-system dialect, into Meristem's language.
 /// `dialect_or_file_name` is a dialect name (`green`, `lparser`, `cpfg`, `lpy`) or the file's
 /// name, whose extension or content then tells the dialect. Returns JSON

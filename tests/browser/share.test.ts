@@ -3,7 +3,7 @@
 // derived string, by its fingerprint) and the view (options and camera); hostile links are refused
 // with a message while the studio opens as usual; the user's text survives a reload and the
 // opening of a link; other dialects are imported with their notes, from the picker and by drop.
-import { readFileSync } from 'node:fs';
+import { readdirSync, readFileSync } from 'node:fs';
 import { deflateRawSync } from 'node:zlib';
 import { chromium, type Browser, type BrowserContext, type Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
@@ -307,6 +307,21 @@ describe('grammar files', () => {
     expect(text).not.toContain('Lsystem:');
     expect(await page.getByTestId('notice-text').textContent()).toMatch(/^Imported monopodial\.l from cpfg/);
     expect(await page.locator('#studio').getAttribute('class')).not.toContain('drop-target');
+    expect(problems).toEqual([]);
+    await page.close();
+  });
+
+  it("imports a vlab object's files picked together: the view file's angle, the functions, the notes", async () => {
+    const { page, problems } = await openAt(inject('studioUrl'));
+    const dir = new URL('../../crate/tests/import-corpus/vlab/05-monopodial/', import.meta.url);
+    const before = await generation(page);
+    await page.getByTestId('file-input').setInputFiles(readdirSync(dir).map((f) => new URL(f, dir).pathname));
+    expect(await nextBuild(page, before)).toBe('ok');
+    const text = await editorText(page);
+    expect(text).toMatch(/^#angle 9$/m);
+    expect(text).toMatch(/^#table internode /m);
+    expect(await page.getByTestId('notice-text').textContent()).toBe('Imported leaf from cpfg. Not translated, or only approximately (1):');
+    await savePage(page, 'imported-vlab-object.png');
     expect(problems).toEqual([]);
     await page.close();
   });

@@ -150,8 +150,8 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   new LearnPanel(learnElements(), { preview, open: (text, title, key) => opening.replace(text, title, key) }); // lessons (issue 17)
   if (start.from === 'link') void autosave.save(start.text); // the link's text is now the work in progress
   const library = new LibraryDialog(els.library, store, kept, { text: () => grammarEditor.text(), open: (entry, key) => opening.openSaved(entry, key) });
-  installFileMenu(els.fileMenu, { openFile: (file) => opening.openFile(file), text: () => grammarEditor.text(), openLibrary: () => library.open() });
-  installDrop(els.studio, (file) => opening.openFile(file));
+  installFileMenu(els.fileMenu, { openFiles: (files) => opening.openPicked(files), text: () => grammarEditor.text(), openLibrary: () => library.open() });
+  installDrop(els.studio, (files, name) => opening.openFiles(files, name));
 
   // Branch editing (issue 8): the plant on screen with its edits, handles in Edit mode.
   const branchEdits = new BranchEditSession(els.branchEditing, view, {

@@ -3,12 +3,14 @@
 //! at text or re-check anything.
 
 mod alphabet;
+mod curve;
 mod lstring;
 mod program;
 mod resolve;
 mod settings;
 
 pub use alphabet::{Alphabet, ModuleId};
+pub use curve::{Curve, CurveKind};
 pub use lstring::LString;
 pub use program::{Env, EvalError, Program, RandomVariable, Scope, MAX_OPS, MAX_STACK};
 pub use resolve::resolve;

@@ -2,11 +2,13 @@
 //! resolved when compiling (formal parameters become slots, `#define` constants are inlined), so
 //! evaluation never looks at text.
 
+use super::curve::Curve;
 use crate::diagnostics::Diagnostic;
 use crate::syntax::{BinaryOp, ExprSyntax, Span, UnaryOp};
 use crate::vocabulary::{function_named, value_named, Function, Value};
 use rand::RngExt;
 use rand_distr::{Binomial, Distribution, Exp, Normal, Poisson};
+use std::sync::Arc;
 
 /// Deepest evaluation stack a compiled expression may need.
 pub const MAX_STACK: usize = 64;
@@ -34,6 +36,8 @@ enum Op {
     Truth,
     Bin(BinaryOp),
     Call(Function),
+    /// A `#curve` or `#table` function of the top of the stack: an index into `Program::curves`.
+    Curve(u16),
     /// Jump to the op index when the popped value is false (zero).
     JumpIfFalse(u32),
     Jump(u32),
@@ -51,6 +55,8 @@ pub struct Program {
     pub random: bool,
     /// The deepest the evaluation stack gets.
     stack_depth: usize,
+    /// The `#curve` and `#table` functions the expression calls.
+    curves: Vec<Arc<Curve>>,
 }
 
 /// What names mean while compiling one expression.
@@ -66,6 +72,10 @@ pub trait Scope {
     }
     /// The index of a `#random` variable.
     fn random_var(&self, name: &str) -> Option<u16>;
+    /// A `#curve` or `#table` function.
+    fn curve(&self, _name: &str) -> Option<Arc<Curve>> {
+        None
+    }
 }
 
 /// Why an evaluation failed; turned into a diagnostic at the op's span.
@@ -116,6 +126,7 @@ impl Program {
             expanding: Vec::new(),
             random: false,
             root: expr.span(),
+            curves: Vec::new(),
         };
         c.expr(expr, 0)?;
         c.check_size()?;
@@ -125,6 +136,7 @@ impl Program {
             span: expr.span(),
             random: c.random,
             stack_depth: 0,
+            curves: c.curves,
         };
         program.stack_depth = program.max_stack();
         if program.stack_depth > MAX_STACK {
@@ -145,6 +157,7 @@ impl Program {
             span,
             random: false,
             stack_depth: 1,
+            curves: Vec::new(),
         }
     }
 
@@ -173,7 +186,7 @@ impl Program {
         for op in &self.ops {
             depth += match op {
                 Op::Const(_) | Op::Slot(_) | Op::NumIt | Op::MaxIt | Op::Var(_) => 1,
-                Op::Neg | Op::Not | Op::Truth | Op::Jump(_) => 0,
+                Op::Neg | Op::Not | Op::Truth | Op::Jump(_) | Op::Curve(_) => 0,
                 Op::Bin(_) | Op::JumpIfFalse(_) => -1,
                 Op::Call(f) => 1 - f.info().arity() as isize,
             };
@@ -255,6 +268,7 @@ impl Program {
                     stack[sp] = value;
                     sp += 1;
                 }
+                Op::Curve(k) => stack[sp - 1] = self.curves[k as usize].value(stack[sp - 1]),
                 Op::JumpIfFalse(target) => {
                     sp -= 1;
                     if stack[sp] == 0.0 {
@@ -498,6 +512,7 @@ struct Compiler<'a> {
     random: bool,
     /// The whole expression's span, where `E0128` points.
     root: Span,
+    curves: Vec<Arc<Curve>>,
 }
 
 impl Compiler<'_> {
@@ -719,6 +734,9 @@ impl Compiler<'_> {
         depth: usize,
     ) -> Result<(), Diagnostic> {
         let Some(info) = function_named(name) else {
+            if let Some(curve) = self.scope.curve(name) {
+                return self.curve_call(name, curve, args, span, depth);
+            }
             return Err(self.not_a_function(name, name_span));
         };
         let (arity, f) = (info.arity(), info.function);
@@ -740,6 +758,39 @@ impl Compiler<'_> {
             self.random = true;
         }
         self.emit(Op::Call(f), span.clone());
+        Ok(())
+    }
+
+    /// A call of a `#curve` or `#table` function: one argument, folded when it is a constant.
+    fn curve_call(
+        &mut self,
+        name: &str,
+        curve: Arc<Curve>,
+        args: &[ExprSyntax],
+        span: &Span,
+        depth: usize,
+    ) -> Result<(), Diagnostic> {
+        let [arg] = args else {
+            return Err(Diagnostic::error(
+                "E0502",
+                span.clone(),
+                format!("{name} takes 1 argument, not {}", args.len()),
+            ));
+        };
+        let start = self.ops.len();
+        self.expr(arg, depth)?;
+        if let [Op::Const(x)] = self.ops[start..] {
+            self.ops[start] = Op::Const(curve.value(x));
+            return Ok(());
+        }
+        let index = match self.curves.iter().position(|c| Arc::ptr_eq(c, &curve)) {
+            Some(i) => i,
+            None => {
+                self.curves.push(curve);
+                self.curves.len() - 1
+            }
+        };
+        self.emit(Op::Curve(index as u16), span.clone());
         Ok(())
     }
 
@@ -793,7 +844,7 @@ impl Compiler<'_> {
             self.expanding.push(name.to_string());
             self.expr(definition, depth + 1)?;
             self.expanding.pop();
-        } else if function_named(name).is_some() {
+        } else if function_named(name).is_some() || self.scope.curve(name).is_some() {
             return Err(Diagnostic::error(
                 "E0504",
                 span.clone(),

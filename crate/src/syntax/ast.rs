@@ -35,6 +35,8 @@ pub struct Directive {
     pub expr: Option<ExprSyntax>,
     /// For `#ignore`, `#consider`, `#draw`, `#apex`: the modules listed.
     pub modules: Vec<ModuleSyntax>,
+    /// For `#curve` and `#table`: the numbers after the name (pairs x y).
+    pub points: Vec<f64>,
 }
 
 /// One module occurrence: a name such as `F`, `F_a`, `@O`, `?P`, with its parameters.

@@ -17,6 +17,8 @@ pub enum DirectiveKind {
     Seed,
     Define,
     Random,
+    Curve,
+    Table,
     Ignore,
     Consider,
     Module,
@@ -211,6 +213,22 @@ const RANDOM: &[&[Param]] = &[&[
         "distribution",
         ParamKind::Expression,
         "a random function such as uniform(0, 1)",
+    ),
+]];
+const CURVE: &[&[Param]] = &[&[
+    Param::new("name", ParamKind::Name, "the function's name"),
+    Param::new(
+        "points",
+        ParamKind::Points,
+        "control points x y, at least 4, x from the first to the last",
+    ),
+]];
+const TABLE: &[&[Param]] = &[&[
+    Param::new("name", ParamKind::Name, "the function's name"),
+    Param::new(
+        "points",
+        ParamKind::Points,
+        "points x y, at least 2, x increasing",
     ),
 ]];
 const DEPTH: &[&[Param]] = &[&[Param::whole("n", 0.0, 10_000.0, "the depth").default(16.0)]];
@@ -449,6 +467,10 @@ pub const DIRECTIVES: &[DirectiveInfo] = &[
         "A named constant or expression, inlined where it is used.").repeatable(),
     row("random", D::Random, "Random variable", RANDOM, G::Names,
         "A random variable (Green): one deviate per module while matching.").repeatable(),
+    row("curve", D::Curve, "Curve function", CURVE, G::Names,
+        "A function of one variable, name(x): the smooth curve of these control points (cpfg's function: a cubic B-spline), read at x.").repeatable(),
+    row("table", D::Table, "Table function", TABLE, G::Names,
+        "A function of one variable, name(x): straight lines between these points, level beyond the first and the last.").repeatable(),
     row("ignore", D::Ignore, "Ignored modules", MODULE_LIST, G::Derivation,
         "Modules that context matching skips.").repeatable(),
     row("consider", D::Consider, "Considered modules", MODULE_LIST, G::Derivation,

@@ -30,7 +30,7 @@ export {
   type Vocabulary,
 } from './vocabulary';
 export { byteOffsetToUtf16, utf16Offsets } from './offsets';
-export { importGrammar, type Dialect, type ImportedGrammar, type ImportNote } from './import';
+export { importGrammar, importObject, type Dialect, type ImportedGrammar, type ImportNote, type ObjectFile } from './import';
 export {
   applyMeshUpdate,
   editPlant,

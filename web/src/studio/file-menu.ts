@@ -15,8 +15,8 @@ export interface FileMenuElements {
 
 /** What the menu's items do. */
 export interface FileMenuActions {
-  /** Opens a file the user picked. */
-  openFile(file: File): void;
+  /** Opens the files the user picked (one grammar, or a vlab object's files together). */
+  openFiles(files: File[]): void;
   /** The grammar text to save. */
   text(): string;
   /** Opens My grammars. */
@@ -36,8 +36,8 @@ export function installFileMenu(els: FileMenuElements, actions: FileMenuActions)
   };
   els.openFile.addEventListener('click', pickFile);
   els.fileInput.addEventListener('change', () => {
-    const file = els.fileInput.files?.[0];
-    if (file) actions.openFile(file);
+    const files = Array.from(els.fileInput.files ?? []);
+    if (files.length > 0) actions.openFiles(files);
   });
   els.saveFile.addEventListener('click', saveAsFile);
   window.addEventListener(

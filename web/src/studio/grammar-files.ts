@@ -1,7 +1,7 @@
 // Opening and saving grammar files: `.lsys` (Meristem's language) as it is, Green, Lparser `.ls`,
 // cpfg `.l` and L-Py `.lpy` through the core's importers, with their notes; text that is not UTF-8
 // (old Lparser files) read as Windows-1252. Saving writes the editor's text as `NAME.lsys`.
-import { importGrammar, type Dialect } from '../core';
+import { importGrammar, importObject, type Dialect, type ObjectFile } from '../core';
 import { titleOf } from '../share/storage';
 import { saveFile } from './downloads';
 
@@ -73,6 +73,26 @@ export function openGrammarBytes(name: string, bytes: Uint8Array): OpenedFile {
   if (imported.dialect === null) return { ok: true, text, dialect: null, notes: encoding };
   const notes = imported.notes.map((n) => (n.line > 0 ? `line ${n.line}: ${n.message}` : n.message));
   return { ok: true, text: imported.text, dialect: imported.dialect, notes: [...encoding, ...notes] };
+}
+
+/** Largest total of files opened together (bytes): a vlab object is far smaller. */
+export const MAX_OBJECT_BYTES = 32_000_000;
+
+/**
+ * Reads files opened together (a dropped folder, several files, a `.zip`): one grammar file
+ * alone as {@link openGrammarBytes} does; otherwise a vlab object (its `.l` with its view file,
+ * functions and colours) or an L-Py model, imported whole with its notes.
+ */
+export function openObjectBytes(files: ObjectFile[]): OpenedFile {
+  if (files.length === 1 && !/\.zip$/i.test(files[0].name)) return openGrammarBytes(files[0].name, files[0].bytes);
+  const total = files.reduce((n, f) => n + f.bytes.length, 0);
+  if (total > MAX_OBJECT_BYTES) {
+    return { ok: false, error: `the files are too large for a model (${total.toLocaleString('en-US')} bytes; at most ${MAX_OBJECT_BYTES.toLocaleString('en-US')})` };
+  }
+  const imported = importObject(files);
+  const notes = imported.notes.map((n) => (n.line > 0 ? `line ${n.line}: ${n.message}` : n.message));
+  if (imported.dialect === null) return { ok: false, error: notes.join(' ') || 'no L-system file among them' };
+  return { ok: true, text: imported.text, dialect: imported.dialect, notes };
 }
 
 /** A file name for a grammar titled `title`: letters, digits, `-` and `_`, then `.lsys`. */

@@ -8,7 +8,7 @@ import type { GrammarEditor } from '../editor';
 import { askToDownload, askToReplace, type QuestionDialog } from './confirm';
 import { fetchExample } from './gallery';
 import type { GalleryEntry } from './gallery-manifest';
-import { dialectName, saveGrammarFile, type OpenedFile } from './grammar-files';
+import { dialectName, openObjectBytes, saveGrammarFile, type OpenedFile } from './grammar-files';
 import { keptSentence, type TextKeeper } from './keeping';
 import type { Notice } from './notice';
 
@@ -124,23 +124,47 @@ export class TextOpening {
     this.readFile(file).catch((error: unknown) => this.parts.notice.show('error', `Could not open ${file.name}: ${String(error)}`));
   }
 
+  /**
+   * Opens files given together (a dropped folder, several files, a `.zip`): a vlab object or an
+   * L-Py model imported whole; `name` is what they are called in the notice (the folder's name).
+   */
+  openFiles(files: { name: string; file: File }[], name: string): void {
+    if (files.length === 1 && !/\.zip$/i.test(files[0].name)) return this.openFile(files[0].file);
+    const read = async () => {
+      const all = await Promise.all(files.map(async (f) => ({ name: f.name, bytes: new Uint8Array(await f.file.arrayBuffer()) })));
+      await this.show(openObjectBytes(all), name);
+    };
+    read().catch((error: unknown) => this.parts.notice.show('error', `Could not open ${name}: ${String(error)}`));
+  }
+
+  /** Opens the files picked in the file dialog, named after the L-system among them. */
+  openPicked(files: File[]): void {
+    const main = files.find((f) => /\.(l|lpy|zip)$/i.test(f.name)) ?? files[0];
+    const name = files.length === 1 ? main.name : main.name.replace(/\.[^.]*$/, '');
+    this.openFiles(files.map((file) => ({ name: file.name, file })), name);
+  }
+
   private async readFile(file: File): Promise<void> {
+    await this.show(await this.parts.readFile(file), file.name);
+  }
+
+  /** Puts what was opened in the editor and says in the notice what was not translated. */
+  private async show(opened: OpenedFile, name: string): Promise<void> {
     const { notice } = this.parts;
-    const opened = await this.parts.readFile(file);
     if (!opened.ok) {
-      notice.show('error', `Could not open ${file.name}: ${opened.error}.`);
+      notice.show('error', `Could not open ${name}: ${opened.error}.`);
       return;
     }
     const tell = (kept: string) => {
       const after = kept ? ` ${kept}` : '';
       if (opened.dialect) {
-        const what = `Imported ${file.name} from ${dialectName(opened.dialect)}`;
+        const what = `Imported ${name} from ${dialectName(opened.dialect)}`;
         const n = opened.notes.length;
         notice.show('info', n === 0 ? `${what}: everything was translated.${after}` : `${what}.${after} Not translated, or only approximately (${n}):`, opened.notes);
-      } else if (opened.notes.length > 0 || kept) notice.show('info', `Opened ${file.name}.${after}`, opened.notes);
+      } else if (opened.notes.length > 0 || kept) notice.show('info', `Opened ${name}.${after}`, opened.notes);
       else notice.hide();
     };
-    await this.replace(opened.text, file.name, `file/${file.name}`, { tell });
+    await this.replace(opened.text, name, `file/${name}`, { tell });
   }
 }
 

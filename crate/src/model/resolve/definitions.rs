@@ -5,10 +5,11 @@
 use super::scope::Slots;
 use super::Resolver;
 use crate::diagnostics::Diagnostic;
-use crate::model::{Program, RandomVariable};
+use crate::model::{Curve, CurveKind, Program, RandomVariable};
 use crate::syntax::{Directive, ExprSyntax, SourceFile, Span};
 use crate::vocabulary::{function_named, value_named, DirectiveKind};
 use std::collections::HashMap;
+use std::sync::Arc;
 
 /// Most `#random` variables one variable may depend on, directly or through others (`E0508`).
 pub const MAX_RANDOM_DEPENDENCIES: usize = 256;
@@ -22,13 +23,23 @@ impl Resolver {
     pub(super) fn definitions<'f>(&mut self, file: &'f SourceFile) -> Vec<&'f Directive> {
         let mut randoms = Vec::new();
         for d in &file.directives {
-            let (Some((name, span)), Some(expr)) = (&d.target, &d.expr) else {
+            let Some((name, span)) = &d.target else {
                 continue;
             };
             let taken = self.defines.contains_key(name)
                 || self.random_names.iter().any(|n| n == name)
+                || self.curves.contains_key(name)
                 || value_named(name).is_some()
                 || function_named(name).is_some();
+            if !taken {
+                if let Some(kind) = curve_kind(d.kind) {
+                    self.curve(name, kind, d);
+                    continue;
+                }
+            }
+            let Some(expr) = &d.expr else {
+                continue;
+            };
             if taken {
                 self.diagnostics.push(Diagnostic::error(
                     "E0205",
@@ -53,6 +64,20 @@ impl Resolver {
         }
         self.define_values();
         randoms
+    }
+
+    /// A `#curve` or `#table` named `name`.
+    fn curve(&mut self, name: &str, kind: CurveKind, d: &Directive) {
+        match Curve::new(kind, &d.points) {
+            Ok(curve) => {
+                self.curves.insert(name.to_string(), Arc::new(curve));
+            }
+            Err(why) => self.diagnostics.push(Diagnostic::error(
+                "E0210",
+                d.args_span.clone(),
+                format!("{} {name}: {why}", d.written),
+            )),
+        }
     }
 
     /// Evaluates every `#define` whose expression is a constant, once, each after the names it
@@ -271,5 +296,14 @@ fn names_in(expr: &ExprSyntax, names: &mut Vec<String>) {
             names_in(b, names);
         }
         ExprSyntax::Call(_, _, args, _) => args.iter().for_each(|x| names_in(x, names)),
+    }
+}
+
+/// The function kind a `#curve` or `#table` directive defines.
+fn curve_kind(kind: Option<DirectiveKind>) -> Option<CurveKind> {
+    match kind? {
+        DirectiveKind::Curve => Some(CurveKind::Spline),
+        DirectiveKind::Table => Some(CurveKind::Table),
+        _ => None,
     }
 }

@@ -193,7 +193,7 @@ impl Resolver {
                     .whole(d, whole_max(kind))
                     .map_or(v.decomposition_depth, |n| n as u32)
             }
-            K::Module | K::Define | K::Random => {}
+            K::Module | K::Define | K::Random | K::Curve | K::Table => {}
             K::Draw => s.draw.extend(self.module_ids(d)),
             K::Ignore => v.ignore.extend(self.module_ids(d)),
             K::Apex => v.apex.extend(self.module_ids(d)),
@@ -245,7 +245,10 @@ impl Resolver {
                         None
                     }
                 },
-                ParamKind::Expression | ParamKind::Name | ParamKind::Modules => None,
+                ParamKind::Expression
+                | ParamKind::Name
+                | ParamKind::Modules
+                | ParamKind::Points => None,
             };
             match arg {
                 Some(arg) => args.push(arg),

@@ -8,13 +8,14 @@ mod directives;
 mod rules;
 mod scope;
 
-use super::{Alphabet, GroupIds, Model, ModuleId, RuleSet, SuccessorModule};
+use super::{Alphabet, Curve, GroupIds, Model, ModuleId, RuleSet, SuccessorModule};
 use crate::diagnostics::Diagnostic;
 use crate::syntax::{ExprSyntax, Section, SourceFile};
 use crate::vocabulary::{module_named, name_of, Command, GroupKind, Meaning, ModuleInfo, MODULES};
 use directives::DirectiveValues;
 use scope::Slots;
 use std::collections::HashMap;
+use std::sync::Arc;
 
 /// Resolves a parsed file. Returns `None` for the model when there is nothing to derive (no
 /// axiom); otherwise a model plus every diagnostic, even when some are errors.
@@ -96,6 +97,8 @@ struct Resolver {
     define_values: HashMap<String, f64>,
     /// `#random` names, in order (a variable's index is its position).
     random_names: Vec<String>,
+    /// `#curve` and `#table` functions by name.
+    curves: HashMap<String, Arc<Curve>>,
 }
 
 /// The ids every model has, interned first and always in this order.
@@ -115,6 +118,7 @@ impl Resolver {
             define_order: Vec::new(),
             define_values: HashMap::new(),
             random_names: Vec::new(),
+            curves: HashMap::new(),
         }
     }
 

@@ -3,9 +3,10 @@
 
 use super::Resolver;
 use crate::diagnostics::Diagnostic;
-use crate::model::{Program, Scope};
+use crate::model::{Curve, Program, Scope};
 use crate::syntax::ExprSyntax;
 use std::collections::HashMap;
+use std::sync::Arc;
 
 /// The formal parameters of one production: name -> slot.
 #[derive(Default)]
@@ -18,6 +19,7 @@ struct ScopeView<'a> {
     defines: &'a HashMap<String, ExprSyntax>,
     define_values: &'a HashMap<String, f64>,
     random_names: &'a [String],
+    curves: &'a HashMap<String, Arc<Curve>>,
 }
 
 impl Scope for ScopeView<'_> {
@@ -40,6 +42,9 @@ impl Scope for ScopeView<'_> {
             .position(|n| n == name)
             .map(|i| i as u16)
     }
+    fn curve(&self, name: &str) -> Option<Arc<Curve>> {
+        self.curves.get(name).cloned()
+    }
 }
 
 impl Resolver {
@@ -50,6 +55,7 @@ impl Resolver {
             defines: &self.defines,
             define_values: &self.define_values,
             random_names: &self.random_names,
+            curves: &self.curves,
         };
         match Program::compile(expr, &scope) {
             Ok(p) => Some(p),
@@ -68,6 +74,7 @@ impl Resolver {
             defines: &self.defines,
             define_values: &self.define_values,
             random_names: &[],
+            curves: &self.curves,
         };
         Program::compile(expr, &scope)
     }
