@@ -9,6 +9,7 @@
 //! meristem export FILE -o OUT.EXT [--format EXT] [--iterations N] [--seed S] [--sides N] [--smooth-all]
 //!                 [--edits EDITS.json]              the model as OUT.wrl, .glb, .pov, .obj (+ .mtl), .iv or .svg
 //! meristem import FILE [--from D] [-o OUT.lsys]      another dialect translated; notes on stderr
+//!                                                   (FILE may be a vlab object's folder or .zip)
 //! meristem help [modules|directives]                the language's modules or directives, from
 //!                                                   the vocabulary the core reads
 //! ```
@@ -39,6 +40,7 @@ const USAGE: &str = "usage:
       --sides N (3 to 64, default 6) and --smooth-all are the studio's view options
       --edits EDITS.json: branch edits made in the studio (its edits document), applied first
   meristem import FILE [--from green|lparser|cpfg|lpy] [-o OUT.lsys]
+      FILE may be a vlab object's folder or .zip: its .l with its view file, functions and colours
   meristem help [modules|directives]     the language's modules and directives
   meristem --version";
 
@@ -213,6 +215,9 @@ fn main() -> ExitCode {
     } else {
         None
     };
+    if args.verb == "import" && is_object(&args.file) {
+        return import_object(&args);
+    }
     let source = match read_source(&args) {
         Ok(source) => source,
         Err(code) => return code,
@@ -456,7 +461,66 @@ fn import_file(args: &Args, source: &str) -> ExitCode {
             }
         },
     };
-    let result = import::import(source, dialect);
+    write_import(args, &import::import(source, dialect))
+}
+
+/// True when `meristem import` is given a whole vlab object: a folder or a `.zip`.
+fn is_object(file: &str) -> bool {
+    let path = std::path::Path::new(file);
+    path.is_dir() || file.to_ascii_lowercase().ends_with(".zip")
+}
+
+/// `meristem import FOLDER` or `OBJECT.zip`: the L-system with its view, functions and colours.
+fn import_object(args: &Args) -> ExitCode {
+    let path = std::path::Path::new(&args.file);
+    let files = if path.is_dir() {
+        let mut files = Vec::new();
+        let mut folders = vec![path.to_path_buf()];
+        // The folder and the folders in it, one level deep (an object's files are at its top).
+        for depth in 0..2 {
+            for folder in std::mem::take(&mut folders) {
+                let Ok(entries) = std::fs::read_dir(&folder) else {
+                    continue;
+                };
+                for entry in entries.flatten() {
+                    let p = entry.path();
+                    if p.is_dir() {
+                        if depth == 0 {
+                            folders.push(p);
+                        }
+                    } else if let Ok(bytes) = std::fs::read(&p) {
+                        let name = p
+                            .strip_prefix(path)
+                            .unwrap_or(&p)
+                            .to_string_lossy()
+                            .into_owned();
+                        files.push(import::ObjectFile { name, bytes });
+                    }
+                }
+            }
+        }
+        files
+    } else {
+        let bytes = match std::fs::read(path) {
+            Ok(b) => b,
+            Err(e) => {
+                eprintln!("meristem: cannot read {}: {e}", args.file);
+                return ExitCode::from(2);
+            }
+        };
+        match import::unzip(&bytes) {
+            Ok(files) => files,
+            Err(e) => {
+                eprintln!("meristem: {}: {e}", args.file);
+                return ExitCode::from(1);
+            }
+        }
+    };
+    write_import(args, &import::import_files(&files).0)
+}
+
+/// Writes an import's text (stdout or `-o`) and its notes (stderr).
+fn write_import(args: &Args, result: &import::Import) -> ExitCode {
     for note in &result.notes {
         if note.line == 0 {
             eprintln!("{}: note: {}", args.file, note.message);

@@ -15,9 +15,7 @@ use crate::branches::{parse_edits, write_edits, NO_BRANCH};
 #[cfg(feature = "io")]
 use crate::export::{self, Format};
 use crate::mesh::MeshOptions;
-#[cfg(feature = "io")]
-use crate::pipeline::Stage;
-use crate::pipeline::{self, BuildOptions, Hooks};
+use crate::pipeline::{self, BuildOptions, Hooks, Progress, Stage};
 use serde::Deserialize;
 use std::cell::RefCell;
 use wasm_bindgen::prelude::*;
@@ -46,7 +44,7 @@ export interface ViewOptions {
 export interface ExportOptions extends BuildOptions {
   /** `wrl`, `glb`, `pov`, `obj`, `iv` or `svg`. */
   format: string;
-  /** File name without extension; default `plant`. */
+  /** File name without extension; default `plant`. A zip of several files is `NAME-FORMAT.zip`. */
   name?: string;
   /** An edits document (JSON text) to apply first. */
   edits?: string;
@@ -173,14 +171,23 @@ pub fn vocabulary() -> String {
 
 /// Runs the whole pipeline on `source`. `clock`, when given, is read between the stages
 /// (JavaScript's `() => performance.now()`): their times come back in `timings()`.
+/// `progress(stage, step, steps)`, when given, is told each stage as it starts (`parsing`,
+/// `deriving`, `interpreting`, `meshing`; step and steps 0) and, while deriving, each step done
+/// (`deriving`, k, n, from 0 of n). A progress callback that throws changes nothing.
 #[wasm_bindgen]
 pub fn build(
     source: &str,
     options: &BuildOptionsObject,
     clock: Option<js_sys::Function>,
+    progress: Option<js_sys::Function>,
 ) -> Result<PlantBuild, JsError> {
     let options = read::<BuildOptionsFields>(options)?.options();
-    Ok(build_reading(source, &options, clock.as_ref()))
+    Ok(build_reading(
+        source,
+        &options,
+        clock.as_ref(),
+        progress.as_ref(),
+    ))
 }
 
 /// `build(source, { iterations, sketch: true })`: the entry point of the shared benchmark
@@ -192,13 +199,14 @@ pub fn build_sketch(source: &str, iterations: Option<u32>) -> PlantBuild {
         sketch: Some(true),
         ..BuildOptionsFields::default()
     };
-    build_reading(source, &options.options(), None)
+    build_reading(source, &options.options(), None, None)
 }
 
 fn build_reading(
     source: &str,
     options: &BuildOptions,
     clock: Option<&js_sys::Function>,
+    progress: Option<&js_sys::Function>,
 ) -> PlantBuild {
     let mut now = || {
         clock
@@ -206,9 +214,23 @@ fn build_reading(
             .and_then(|t| t.as_f64())
             .unwrap_or(0.0)
     };
+    let mut tell = |p: Progress| {
+        let (stage, step, steps) = match p {
+            Progress::Started(stage) => (stage, 0, 0),
+            Progress::Derived { step, steps } => (Stage::Derive, step, steps),
+        };
+        if let Some(f) = progress {
+            let _ = f.call3(
+                &JsValue::NULL,
+                &JsValue::from_str(stage.label()),
+                &JsValue::from_f64(step.into()),
+                &JsValue::from_f64(steps.into()),
+            );
+        }
+    };
     let mut hooks = Hooks {
         clock: clock.map(|_| &mut now as &mut dyn FnMut() -> f64),
-        progress: None,
+        progress: progress.map(|_| &mut tell as &mut dyn FnMut(Progress)),
     };
     let build = pipeline::build_with(source, options, &mut hooks);
     let diagnostics =
@@ -250,7 +272,9 @@ pub fn export_model(
         stem: stem.clone(),
         edits,
     };
-    let mut tell = |stage: Stage| {
+    let mut tell = |p: Progress| {
+        // Stage starts only: an export's progress is its stages.
+        let Progress::Started(stage) = p else { return };
         if let Some(f) = &progress {
             let index = Stage::ALL.iter().position(|s| *s == stage).unwrap_or(0);
             // A progress callback that throws changes nothing: the export goes on.
@@ -268,7 +292,8 @@ pub fn export_model(
     };
     let exported = pipeline::export(source, &options, &mut hooks)
         .map_err(|_| JsError::new("the grammar has errors: nothing to export"))?;
-    let file = export::bundle(exported.files, &stem)
+    // Several files go in one zip named after the format too: `fern-pov.zip`, `fern-obj.zip`.
+    let file = export::bundle(exported.files, &format!("{stem}-{}", format.extension()))
         .ok_or_else(|| JsError::new("the export is larger than 4 GiB"))?;
     Ok(ExportedModel { file })
 }
@@ -366,6 +391,28 @@ macro_rules! mesh_getters {
             pub fn line_colors(&self) -> js_sys::Float32Array {
                 let $plant = self;
                 js_sys::Float32Array::from(&$get.mesh.line_colors[..])
+            }
+
+            /// Every segment as a line, whatever the mesh (the studio's Lines mode): two ends
+            /// (x, y, z each) per segment.
+            #[wasm_bindgen(js_name = segmentEnds)]
+            pub fn segment_ends(&self) -> js_sys::Float32Array {
+                let $plant = self;
+                js_sys::Float32Array::from(&$get.segment_lines().ends[..])
+            }
+
+            /// A colour (r, g, b) per end of `segmentEnds`.
+            #[wasm_bindgen(js_name = segmentColors)]
+            pub fn segment_colors(&self) -> js_sys::Float32Array {
+                let $plant = self;
+                js_sys::Float32Array::from(&$get.segment_lines().colors[..])
+            }
+
+            /// The module of the derived string that drew each segment of `segmentEnds`.
+            #[wasm_bindgen(js_name = segmentModules)]
+            pub fn segment_modules(&self) -> js_sys::Uint32Array {
+                let $plant = self;
+                js_sys::Uint32Array::from(&$get.segment_lines().modules[..])
             }
 
             /// True when everything drawn lies in the plane z = 0.
@@ -867,6 +914,34 @@ impl Grammar {
             Err(_) => -1.0,
         }
     }
+}
+
+/// Imports files opened together, a vlab object (its `.l`, view file, functions and colours, as a
+/// folder, several files or a `.zip`) or an L-Py model: `names[k]` is the k-th file's name (a path
+/// inside the folder), its bytes are the next `lengths[k]` bytes of `bytes`. Returns the JSON of
+/// [`import_grammar`] (`dialect` is null when nothing could be imported).
+#[cfg(feature = "io")]
+#[wasm_bindgen(js_name = importObject)]
+pub fn import_object(names: Vec<String>, bytes: &[u8], lengths: &[u32]) -> String {
+    use crate::import::{self, Dialect, Import, ObjectFile};
+    #[derive(serde::Serialize)]
+    struct Imported {
+        #[serde(flatten)]
+        import: Import,
+        dialect: Option<Dialect>,
+    }
+    let mut files = Vec::new();
+    let mut at = 0usize;
+    for (name, &len) in names.into_iter().zip(lengths) {
+        let end = at.saturating_add(len as usize).min(bytes.len());
+        files.push(ObjectFile {
+            name,
+            bytes: bytes[at.min(end)..end].to_vec(),
+        });
+        at = end;
+    }
+    let (import, dialect) = import::import_files(&files);
+    serde_json::to_string(&Imported { import, dialect }).unwrap_or_else(|_| "{}".into())
 }
 
 /// Translates `text`, written in another L-system dialect, into Meristem's language.

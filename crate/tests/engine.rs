@@ -212,6 +212,38 @@ fn a_random_variable_is_drawn_afresh_at_each_use_in_the_successor() {
 }
 
 #[test]
+fn a_random_variable_may_read_another_and_sees_the_same_deviate_as_the_conditions() {
+    // q is drawn below p; if q's p were drawn apart from the conditions' p, q <= p would fail for
+    // about half the modules. The lines are in either order.
+    for head in [
+        "#random p = uniform(0,1)\n#random q = uniform(0, p)",
+        "#random q = uniform(0, p)\n#random p = uniform(0,1)",
+    ] {
+        let src = format!("{head}\naxiom: {}\nA: q <= p -> Y\nA -> N", "A".repeat(500));
+        let s = derived_seed(&src, 1, 11);
+        assert_eq!(s, "Y".repeat(500), "{head}");
+    }
+    // In a successor each use draws afresh, its dependencies with it: q is still within [0, 1).
+    let s = derived_seed(
+        "#random p = uniform(0,1)\n#random q = uniform(0, p)\naxiom: A\nA -> B(q)",
+        1,
+        5,
+    );
+    let q: f64 = s[2..s.len() - 1].parse().unwrap();
+    assert!((0.0..1.0).contains(&q), "{s}");
+}
+
+#[test]
+fn a_chain_of_doubling_defines_is_computed_once_per_link() {
+    let mut src = String::from("#define d0 1\n");
+    for i in 1..=60 {
+        src.push_str(&format!("#define d{i} d{} + d{}\n", i - 1, i - 1));
+    }
+    src.push_str("axiom: A(d60)");
+    assert_eq!(derived(&src, 0), format!("A({})", 2f64.powi(60)));
+}
+
+#[test]
 fn fig_1_27_weights_are_respected_over_10000_draws() {
     let src = format!(
         "axiom: {}\nA -> (0.33) X\nA -> (0.33) Y\nA -> (0.34) Z",

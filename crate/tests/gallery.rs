@@ -223,3 +223,41 @@ fn greens_random_l_systems_grow_individuals_of_one_species() {
     assert_eq!(stems.len(), 4, "{text}");
     assert!(stems.iter().any(|&n| n != stems[0]), "{stems:?}");
 }
+
+#[test]
+fn sierpinski_and_the_row_of_trees_lie_as_in_the_book() {
+    // ABOP 1.10b stands on a horizontal base and 1.37a's row runs left to right with the trees
+    // above it: both are wider than tall, start at the origin and grow up (+Y) from their base.
+    for name in ["abop-1.10b-sierpinski.lsys", "abop-1.37a-row-of-trees.lsys"] {
+        let result = build(&example(name), &BuildOptions::default());
+        let [min, max] = result.plant.stats.bounds;
+        let (width, height) = (max[0] - min[0], max[1] - min[1]);
+        assert!(width > 1.1 * height, "{name}: {width} wide, {height} tall");
+        let thickness = max[2] - min[2];
+        assert!(
+            min[0].abs() < thickness && min[1].abs() < thickness,
+            "{name}: starts at {min:?}"
+        );
+        assert!(
+            max[1] > 0.4 * width,
+            "{name}: grows below its base ({min:?}..{max:?})"
+        );
+    }
+}
+
+#[test]
+fn internodes_of_a_grammar_without_widths_are_a_tenth_as_wide_as_long() {
+    // ABOP 1.24a sets no width: its internodes (length 1) were as thick as long (beads) when the
+    // width followed the plant's size alone; now at most a tenth of the median internode.
+    let depth = |text: &str| {
+        let [min, max] = build(text, &BuildOptions::default()).plant.stats.bounds;
+        max[2] - min[2] // a flat plant's depth is its tubes' width (times cos 30° for 6 sides)
+    };
+    let a = depth(&example("abop-1.24a.lsys"));
+    assert!(a <= 0.1 + 1e-6 && a > 0.05, "1.24a's tubes are {a} across");
+    // A grammar that sets widths keeps the width unit of the plant's size (1/300 of its diagonal).
+    let set = depth(&format!("#width 1\n{}", example("abop-1.24a.lsys")));
+    assert!(set > 3.0 * a, "with #width 1: {set}");
+    let bang = depth(&example("abop-1.24a.lsys").replace("axiom: F", "axiom: !(1)F"));
+    assert!((bang - set).abs() < 1e-9, "with !(1): {bang}");
+}

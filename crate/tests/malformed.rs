@@ -104,6 +104,16 @@ const CASES: &[Case] = &[
     ("multibyte_comment_before_error_in_a_production", "axiom: F\n/*ωωω*/ F -> F + ]", "E0108", 2, 18),
     ("multibyte_comment_before_run_time_error", "#iterations 1\naxiom: A(0)\n/*ωω*/ A(x) -> A(1/x)", "E0500", 3, 18),
     ("multibyte_module_before_error", "axiom: ωF]", "E0108", 1, 10),
+    ("repeat_writes_itself", "#iterations 2\naxiom: A\nA -> @Repeat(2, A)", "E0404", 3, 6),
+    ("pendulum_nests_at_every_step", "#iterations 100\naxiom: A\nA -> @Pendulum(A)", "E0404", 3, 6),
+    ("repeat_count_above_the_step_limit", "axiom: @Repeat(1e9, A)", "E0405", 1, 16),
+    ("repeat_count_above_a_lowered_step_limit", "#max_steps 10\naxiom: @Repeat(11, A)", "E0405", 2, 16),
+    ("nested_repeats_over_the_budget", "#iterations 1\naxiom: @Repeat(10000, @Repeat(10000, @Repeat(10000, A)))\nA -> A", "E0405", 2, 8),
+    ("module_limit_beyond_memory", "#max_modules 4000000000\n#iterations 40\naxiom: F\nF -> FFFFFFFFFFFFFFFF", "E0401", 2, 1),
+    ("random_reads_itself", "#random p = uniform(0, p)\naxiom: F(p)", "E0507", 1, 24),
+    ("random_variables_read_each_other", "#random p = uniform(0, q)\n#random q = normal(p, 1)\naxiom: F(p)", "E0507", 2, 20),
+    ("random_cycle_through_a_define", "#define d q\n#random p = uniform(0, d)\n#random q = normal(p, 1)\naxiom: F(p)", "E0507", 3, 20),
+    ("define_chain_too_large_once_expanded", "#define d0 x\n#define d1 d0+d0\n#define d2 d1+d1\n#define d3 d2+d2\n#define d4 d3+d3\n#define d5 d4+d4\n#define d6 d5+d5\n#define d7 d6+d6\n#define d8 d7+d7\n#define d9 d8+d8\n#define d10 d9+d9\n#define d11 d10+d10\n#define d12 d11+d11\n#define d13 d12+d12\naxiom: A(1)\nA(x) -> F(d13)", "E0128", 16, 11),
 ];
 
 /// Builds one case; returns a description of what went wrong, if anything.

@@ -85,3 +85,60 @@ proptest! {
         prop_assert_eq!(engine(&general, steps), expected, "general path, grammar:\n{}", general);
     }
 }
+
+/// The derived text of `source` after `steps` steps with `seed`, or the error's code.
+fn derived(source: &str, steps: u32, seed: u64) -> String {
+    let (file, diags) = parse(source);
+    assert!(diags.is_empty(), "{source}\n{diags:?}");
+    let (model, _) = resolve(&file);
+    let model = model.expect("model");
+    match derive(
+        &model,
+        &DeriveOptions {
+            steps,
+            seed: Some(seed),
+        },
+    ) {
+        Ok(d) => d.string.to_text(&model.alphabet),
+        Err(e) => e.code.to_string(),
+    }
+}
+
+/// One production: predecessor, left and right context (`None`: none), weight, successor.
+type Rule = (usize, Option<usize>, Option<usize>, Option<u8>, Vec<u8>);
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 300, ..ProptestConfig::default() })]
+
+    /// Contexts of one module and constant weights take the per-module classes; the same grammar
+    /// with a condition that always holds on every production takes the general matcher. Both
+    /// derive the same string with the same seed, brackets, `#ignore` and all.
+    #[test]
+    fn per_module_classes_match_the_general_matcher(
+        axiom in prop::collection::vec(any::<u8>(), 1..10),
+        rules in prop::collection::vec((0usize..4, prop::option::of(0usize..6), prop::option::of(0usize..6), prop::option::of(0u8..4), prop::collection::vec(any::<u8>(), 0..5)), 0..7),
+        ignore in any::<bool>(),
+        steps in 0u32..5,
+        seed in any::<u64>(),
+    ) {
+        let mut head = format!("#max_modules 5000\naxiom: {}\n", bracketed(&axiom));
+        if ignore {
+            head.push_str("#ignore + -\n");
+        }
+        let (mut plain, mut conditioned) = (head.clone(), head);
+        for (predecessor, left, right, weight, successor) in &rules as &[Rule] {
+            let left = left.map_or(String::new(), |l| format!("{} < ", LETTERS[l]));
+            let right = right.map_or(String::new(), |r| format!(" > {}", LETTERS[r]));
+            let weight = weight.map_or(String::new(), |w| format!("({w}) "));
+            let lhs = format!("{left}{}{right}", LETTERS[*predecessor]);
+            let rhs = format!("-> {weight}{}\n", bracketed(successor));
+            plain.push_str(&format!("{lhs} {rhs}"));
+            conditioned.push_str(&format!("{lhs} : 1 {rhs}"));
+        }
+        prop_assert_eq!(
+            derived(&plain, steps, seed),
+            derived(&conditioned, steps, seed),
+            "grammars:\n{}\n{}", plain, conditioned
+        );
+    }
+}

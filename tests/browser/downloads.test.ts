@@ -13,6 +13,8 @@ import { openTubesMenu } from './studio-page';
 const RESULTS = new URL('../../test-results/', import.meta.url);
 /** A grammar with several colour indices and polygon leaves, at fewer iterations than its own. */
 const EXAMPLE = 'abop-1.25-bush.lsys';
+/** The name its downloads get: its title's (`// ABOP Fig 1.25: …`). */
+const NAME = 'abop-1.25';
 const ITERATIONS = '4';
 /** The toolbar's view options, and the command-line tool's for the same mesh. */
 const SIDES = '8';
@@ -101,35 +103,35 @@ afterAll(async () => {
 describe('the Download menu', () => {
   it.each(['wrl', 'glb', 'iv', 'svg'])('%s: the bytes of meristem export', async (format) => {
     const download = await clickDownload(`download-${format}`);
-    expect(download.suggestedFilename()).toBe(`plant.${format}`);
+    expect(download.suggestedFilename()).toBe(`${NAME}.${format}`);
     const bytes = await downloadedBytes(download);
-    const cli = exportWithCli(grammarFile, join(dir, `plant.${format}`), CLI_OPTIONS);
+    const cli = exportWithCli(grammarFile, join(dir, `${NAME}.${format}`), CLI_OPTIONS);
     expect(bytes.length).toBe(cli.length);
-    expect(bytes.equals(cli), `plant.${format} differs from the command-line tool's`).toBe(true);
-    await expect.poll(() => page.getByTestId('export-status').textContent()).toMatch(new RegExp(`^Saved plant\\.${format} · `));
+    expect(bytes.equals(cli), `${NAME}.${format} differs from the command-line tool's`).toBe(true);
+    await expect.poll(() => page.getByTestId('export-status').textContent()).toMatch(new RegExp(`^Saved ${NAME.replace('.', '\\.')}\\.${format} · `));
     expect(problems).toEqual([]);
   });
 
   it('obj: a zip of the OBJ and MTL that meristem export writes', async () => {
     const download = await clickDownload('download-obj');
-    expect(download.suggestedFilename()).toBe('plant.zip');
+    expect(download.suggestedFilename()).toBe(`${NAME}-obj.zip`);
     const entries = unzipSync(new Uint8Array(await downloadedBytes(download)));
-    expect(Object.keys(entries)).toEqual(['plant.obj', 'plant.mtl']);
-    const obj = exportWithCli(grammarFile, join(dir, 'plant.obj'), CLI_OPTIONS);
-    expect(Buffer.from(entries['plant.obj']).equals(obj)).toBe(true);
-    expect(Buffer.from(entries['plant.mtl']).equals(readFileSync(join(dir, 'plant.mtl')))).toBe(true);
+    expect(Object.keys(entries)).toEqual([`${NAME}.obj`, `${NAME}.mtl`]);
+    const obj = exportWithCli(grammarFile, join(dir, `${NAME}.obj`), CLI_OPTIONS);
+    expect(Buffer.from(entries[`${NAME}.obj`]).equals(obj)).toBe(true);
+    expect(Buffer.from(entries[`${NAME}.mtl`]).equals(readFileSync(join(dir, `${NAME}.mtl`)))).toBe(true);
     expect(problems).toEqual([]);
   });
 
   it('pov: a zip of the scene and the texture images that meristem export writes beside it', async () => {
     const download = await clickDownload('download-pov');
-    expect(download.suggestedFilename()).toBe('plant.zip');
+    expect(download.suggestedFilename()).toBe(`${NAME}-pov.zip`);
     const entries = unzipSync(new Uint8Array(await downloadedBytes(download)));
     const names = Object.keys(entries);
-    expect(names[0]).toBe('plant.pov');
+    expect(names[0]).toBe(`${NAME}.pov`);
     expect(names.slice(1).every((n) => n === 'bark.png' || n === 'leaf.png') && names.length > 1).toBe(true);
-    const pov = exportWithCli(grammarFile, join(dir, 'plant.pov'), CLI_OPTIONS);
-    expect(Buffer.from(entries['plant.pov']).equals(pov)).toBe(true);
+    const pov = exportWithCli(grammarFile, join(dir, `${NAME}.pov`), CLI_OPTIONS);
+    expect(Buffer.from(entries[`${NAME}.pov`]).equals(pov)).toBe(true);
     for (const name of names.slice(1)) expect(Buffer.from(entries[name]).equals(readFileSync(join(dir, name)))).toBe(true);
     expect(problems).toEqual([]);
   });
@@ -140,13 +142,13 @@ describe('the Download menu', () => {
     await page.getByTestId('png-width').fill('640');
     await page.getByTestId('png-height').fill('360');
     const download = await clickDownload('download-png');
-    expect(download.suggestedFilename()).toBe('plant.png');
+    expect(download.suggestedFilename()).toBe(`${NAME}.png`);
     const bytes = await downloadedBytes(download);
     writeFileSync(new URL('downloaded-view.png', RESULTS), bytes);
     const picture = decodePng(bytes);
     expect([picture.width, picture.height]).toEqual([640, 360]);
     expect(foregroundShare(picture), 'share of the picture covered by the plant').toBeGreaterThan(0.01);
-    await expect.poll(() => page.getByTestId('export-status').textContent()).toMatch(/^Saved plant\.png · 640 × 360 · /);
+    await expect.poll(() => page.getByTestId('export-status').textContent()).toMatch(/^Saved abop-1\.25\.png · 640 × 360 at 150 DPI · /);
     // The view on the page is back to its own size.
     const canvas = await page.locator('[data-testid=viewport] canvas').boundingBox();
     const viewport = await page.getByTestId('viewport').boundingBox();
@@ -206,7 +208,7 @@ describe('the Download menu', () => {
     for (const stage of ['parsing (1 of 6)', 'deriving (2 of 6)', 'interpreting (3 of 6)', 'meshing (4 of 6)', 'writing (6 of 6)']) {
       expect(texts, `the status said "${stage}"`).toContain(`Exporting glTF 2.0 binary: ${stage}…`);
     }
-    expect(texts.at(-1)).toMatch(/^Saved plant\.glb · \d+(\.\d)? MB$/);
+    expect(texts.at(-1)).toMatch(/^Saved abop-1\.24d\.glb · \d+(\.\d)? MB$/);
     expect(exportWorkers.length, 'the file was written by an export worker').toBe(1);
     expect(bytes.subarray(0, 4).toString('latin1')).toBe('glTF');
     expect(await page.getByTestId('export-progress').isHidden()).toBe(true);

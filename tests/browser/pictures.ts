@@ -129,3 +129,55 @@ export function differingShare(a: Picture, b: Picture, threshold = 0): number {
   for (let i = 0; i < a.data.length; i += 4) if (distance(a.data, i, b.data, i) > threshold) differing++;
   return differing / (a.width * a.height);
 }
+
+/**
+ * The width, in pixels, of the strokes of a line drawing in one colour on a plain
+ * background, measured where strokes are straight and alone. Each pixel's coverage is its distance
+ * from the background over the ink's (the farthest pixel's); a run of covered pixels across a row
+ * is a stroke's section, its length the coverage summed (antialiased edges count in part). Where
+ * the rows `k` above and below cross the same stroke with sections of the same length, the stroke
+ * is straight there: its slope s comes from the sections' centres, and its width is the section's
+ * length × 1/√(1 + s²). Joints, crossings and tips, where sections differ, are left out, and the
+ * most common width is the answer.
+ */
+export function strokeWidth(picture: Picture, background = backgroundColour(picture), k = 2): number {
+  const { width, height, data } = picture;
+  let ink = 0;
+  for (let p = 0; p < width * height; p++) ink = Math.max(ink, distance(data, 4 * p, background, 0));
+  /** Each row's sections: (start, end, length by coverage, centre by coverage). */
+  const rows: { start: number; end: number; length: number; centre: number }[][] = [];
+  for (let y = 0; y < height; y++) {
+    const sections: (typeof rows)[number] = [];
+    let start = -1;
+    let length = 0;
+    let moment = 0;
+    for (let x = 0; x <= width; x++) {
+      const c = x < width ? Math.min(1, distance(data, 4 * (y * width + x), background, 0) / Math.max(1, ink)) : 0;
+      if (c >= 0.08) {
+        if (start < 0) [start, length, moment] = [x, 0, 0];
+        length += c;
+        moment += c * x;
+      } else if (start >= 0) {
+        sections.push({ start, end: x, length, centre: moment / length });
+        start = -1;
+      }
+    }
+    rows.push(sections);
+  }
+  const overlapping = (y: number, s: { start: number; end: number }) => rows[y].filter((o) => o.start < s.end + k * 2 && o.end > s.start - k * 2);
+  const widths: number[] = [];
+  for (let y = k; y < height - k; y++) {
+    for (const section of rows[y]) {
+      const [above, below] = [overlapping(y - k, section), overlapping(y + k, section)];
+      if (above.length !== 1 || below.length !== 1) continue;
+      if (Math.abs(above[0].length - section.length) > 0.75 || Math.abs(below[0].length - section.length) > 0.75) continue;
+      const slope = (below[0].centre - above[0].centre) / (2 * k);
+      widths.push(section.length / Math.sqrt(1 + slope * slope));
+    }
+  }
+  // The most common width (to a quarter pixel): sections of merged strokes spread over many widths.
+  const bins = new Map<number, number>();
+  for (const w of widths) bins.set(Math.round(4 * w), (bins.get(Math.round(4 * w)) ?? 0) + 1);
+  const [bin] = [...bins.entries()].sort((a, b) => b[1] - a[1])[0] ?? [0];
+  return bin / 4;
+}

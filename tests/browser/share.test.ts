@@ -3,7 +3,7 @@
 // derived string, by its fingerprint) and the view (options and camera); hostile links are refused
 // with a message while the studio opens as usual; the user's text survives a reload and the
 // opening of a link; other dialects are imported with their notes, from the picker and by drop.
-import { readFileSync } from 'node:fs';
+import { readdirSync, readFileSync } from 'node:fs';
 import { deflateRawSync } from 'node:zlib';
 import { chromium, type Browser, type BrowserContext, type Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
@@ -135,7 +135,7 @@ describe('share links', () => {
 });
 
 describe('view options in links', () => {
-  const view: NonNullable<SharedState['view']> = { sides: 12, smoothAll: true, byProduction: true, grid: false, lighting: false, projection: 'orthographic' };
+  const view: NonNullable<SharedState['view']> = { sides: 12, smoothAll: true, byProduction: true, grid: false, lighting: false, projection: 'orthographic', render: 'tubes', lineWidth: 3 };
   const fragment = fragmentOf(JSON.stringify({ v: 1, text: '// from a link\n#angle 20\naxiom: F\nF -> F[+F]F[-F]F', iterations: 2, seed: 5, view }));
 
   /** Checks that the controls show the link's options (and Textures, which links do not hold, as it was). */
@@ -148,6 +148,9 @@ describe('view options in links', () => {
     expect(await page.getByTestId('textures').getAttribute('aria-pressed')).toBe('true');
     expect(await page.getByTestId('projection').getAttribute('aria-pressed')).toBe('true');
     expect(await page.getByTestId('viewport').getAttribute('data-projection')).toBe('orthographic');
+    expect(await page.getByTestId('render-lines').getAttribute('aria-pressed'), 'tubes, though the plant is flat').toBe('false');
+    expect(await page.getByTestId('viewport').getAttribute('data-render')).toBe('tubes');
+    expect(await page.getByTestId('line-width').inputValue()).toBe('3');
     expect(await page.getByTestId('iterations').inputValue()).toBe('2');
     expect(await page.getByTestId('seed').inputValue()).toBe('5');
     expect(new URL(page.url()).hash).toBe('');
@@ -304,6 +307,21 @@ describe('grammar files', () => {
     await page.close();
   });
 
+  it("imports a vlab object's files picked together: the view file's angle, the functions, the notes", async () => {
+    const { page, problems } = await openAt(inject('studioUrl'));
+    const dir = new URL('../../crate/tests/import-corpus/vlab/05-monopodial/', import.meta.url);
+    const before = await generation(page);
+    await page.getByTestId('file-input').setInputFiles(readdirSync(dir).map((f) => new URL(f, dir).pathname));
+    expect(await nextBuild(page, before)).toBe('ok');
+    const text = await editorText(page);
+    expect(text).toMatch(/^#angle 9$/m);
+    expect(text).toMatch(/^#table internode /m);
+    expect(await page.getByTestId('notice-text').textContent()).toBe('Imported leaf from cpfg. Not translated, or only approximately (1):');
+    await savePage(page, 'imported-vlab-object.png');
+    expect(problems).toEqual([]);
+    await page.close();
+  });
+
   it('saves the grammar as a .lsys file (Ctrl+S), and opens it back as it is', async () => {
     const { page, problems } = await openAt(inject('studioUrl'));
     const mine = '// Tiny fern\n#angle 25\naxiom: X\nX -> F[+X]F[-X]+X\nF -> FF';
@@ -318,7 +336,8 @@ describe('grammar files', () => {
     await page.getByTestId('confirm-replace-button').click();
     expect(await nextBuild(page, before)).toBe('ok');
     expect(await editorText(page)).toBe(mine);
-    expect(await page.getByTestId('notice').isHidden()).toBe(true);
+    // The text it replaced was the user's: kept first, and said so.
+    expect(await page.getByTestId('notice-text').textContent()).toBe('Opened tiny-fern.lsys. Your previous text is kept in My grammars as “Before “tiny-fern.lsys”: Untitled grammar”.');
     // A file that is not text is refused with a message; the text stays.
     await page.getByTestId('file-input').setInputFiles({ name: 'photo.lsys', mimeType: 'image/png', buffer: Buffer.from([0x89, 0x50, 0x4e, 0x47, 0, 0, 0]) });
     await expect.poll(() => page.getByTestId('notice-text').textContent()).toBe('Could not open photo.lsys: photo.lsys is not a text file.');

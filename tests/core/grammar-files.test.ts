@@ -1,8 +1,8 @@
 // Opening grammar files through the real core's importers (web/src/studio/grammar-files.ts).
-import { readFileSync } from 'node:fs';
+import { readdirSync, readFileSync } from 'node:fs';
 import { beforeAll, describe, expect, it } from 'vitest';
 import { initCore } from '../../web/src/core';
-import { decodeText, lsysFileName, MAX_FILE_BYTES, openGrammarBytes } from '../../web/src/studio/grammar-files';
+import { decodeText, lsysFileName, MAX_FILE_BYTES, openGrammarBytes, openObjectBytes } from '../../web/src/studio/grammar-files';
 import { linkWithFragment } from '../../web/src/studio/share-dialog';
 
 beforeAll(async () => {
@@ -47,6 +47,31 @@ describe('openGrammarBytes', () => {
   it('reads a text the importers do not recognise as Meristem text', () => {
     const text = 'axiom: F\nF -> FF';
     expect(openGrammarBytes('notes.txt', new TextEncoder().encode(text))).toEqual({ ok: true, text, dialect: null, notes: [] });
+  });
+});
+
+describe('openObjectBytes', () => {
+  const folder = (name: string) => {
+    const dir = new URL(`../../crate/tests/import-corpus/vlab/${name}/`, import.meta.url);
+    return readdirSync(dir).map((file) => ({ name: `${name}/${file}`, bytes: new Uint8Array(readFileSync(new URL(file, dir))) }));
+  };
+
+  it("imports a vlab object's folder with its view file's angle and its functions", () => {
+    const opened = openObjectBytes(folder('05-monopodial'));
+    expect(opened.ok).toBe(true);
+    if (!opened.ok) return;
+    expect(opened.dialect).toBe('cpfg');
+    expect(opened.text).toMatch(/^#angle 9$/m);
+    expect(opened.text).toMatch(/^#table internode /m);
+    expect(opened.notes).toEqual([expect.stringMatching(/^the materials of material.mat become their diffuse colours/)]);
+  });
+
+  it('opens one grammar file as openGrammarBytes does, and says why a broken archive cannot be opened', () => {
+    expect(openObjectBytes([{ name: 'a.lsys', bytes: new TextEncoder().encode('axiom: F') }])).toEqual({ ok: true, text: 'axiom: F', dialect: null, notes: [] });
+    expect(openObjectBytes([{ name: 'plant.zip', bytes: new TextEncoder().encode('PK not a zip') }])).toEqual({
+      ok: false,
+      error: 'plant.zip: not a zip archive (no end of central directory)',
+    });
   });
 });
 

@@ -37,14 +37,14 @@ describe('exportModel (wasm) against meristem export (native)', () => {
       const file = exportModel(readFileSync(grammar, 'utf8'), format, { name: 'plant', iterations, seed, sides, smoothAll });
       const cli = exportWithCli(grammar, join(dir, `plant.${format}`), cliOptions);
       if (format === 'obj') {
-        expect([file.fileName, file.mimeType]).toEqual(['plant.zip', 'application/zip']);
+        expect([file.fileName, file.mimeType]).toEqual(['plant-obj.zip', 'application/zip']);
         const entries = unzipSync(file.bytes);
         expect(Object.keys(entries)).toEqual(['plant.obj', 'plant.mtl']);
         expect(Buffer.from(entries['plant.obj']).equals(cli)).toBe(true);
         expect(Buffer.from(entries['plant.mtl']).equals(readFileSync(join(dir, 'plant.mtl')))).toBe(true);
       } else if (format === 'pov') {
         // The scene and the texture images it names, written by the CLI beside it.
-        expect([file.fileName, file.mimeType]).toEqual(['plant.zip', 'application/zip']);
+        expect([file.fileName, file.mimeType]).toEqual(['plant-pov.zip', 'application/zip']);
         const entries = unzipSync(file.bytes);
         const names = Object.keys(entries);
         expect(names[0]).toBe('plant.pov');

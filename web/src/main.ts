@@ -4,14 +4,15 @@ import './style.css';
 import { registerSW } from 'virtual:pwa-register';
 import { coreVersion, initCore, languageVocabulary } from './core';
 import { createGrammarEditor, growthAttributes, type GrammarEditor } from './editor';
+import { KeptTexts } from './share/kept-texts';
 import { GrammarStore } from './share/storage';
 import { PlantView } from './view';
 import {
   Autosave, BranchEditSession, BuildClient, ContextView, DerivationControls, GalleryDialog, GalleryThumbnails, GrowthPanel,
   DerivationView, EmbedSnippets, HelpPanel, installLearnPanel, LibraryDialog, LinkState, LivePreview, Notice, ShareDialog, SliderPanel, StagesMode, TextOpening,
-  ViewFollowing, ViewOptions, ViewTools, attachSplitter, browserStorage, connectTestHook, createBuildWorker, emptyTestHook, fetchExample,
+  TextKeeper, ViewFollowing, ViewOptions, ViewTools, attachSplitter, browserDatabase, browserStorage, createImportWorker, connectTestHook, createBuildWorker, emptyTestHook, fetchExample,
   figureName, installDownloads, installDrop, installInspectorTabs, LayoutModes,
-  installFileMenu, installShareButton, installShortcuts, openPastedLinks, renderShortcutHelp, reportCoreCrashes, showStatus, sidesChoices,
+  installFileMenu, installShareButton, installShortcuts, openPastedLinks, readGrammarFile, renderShortcutHelp, reportCoreCrashes, showStatus, sidesChoices,
   startingText, studioElements, installAppUpdates, type ShortcutAction, type StudioElements, type StudioTestHook,
 } from './studio';
 
@@ -21,17 +22,21 @@ const INITIAL_EXAMPLE = 'abop-1.24d.lsys';
 async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<void> {
   showStatus(els.status, { state: 'loading', text: 'Loading…' });
   const notice = new Notice(els.notice);
+  // The user's work: localStorage, else (when that is full) IndexedDB; kept before anything replaces it.
   const store = new GrammarStore(browserStorage());
+  const kept = new KeptTexts(browserDatabase());
+  const keeper = new TextKeeper(store, kept);
   // The page's own core instance serves the tables (commands, directives, version); builds run in
-  // the worker's; the importers load with the first imported file (core/io.ts).
-  const [start] = await Promise.all([startingText(store, notice, INITIAL_EXAMPLE), initCore()]);
+  // the build worker's, imports of opened files in an import worker's (with the importers: core/io.ts).
+  const starting = { store, kept, keeper, notice, cannotKeep: els.cannotKeep };
+  const [start] = await Promise.all([startingText(starting, INITIAL_EXAMPLE), initCore()]);
   els.version.textContent = `core ${coreVersion()}`;
 
   const view = new PlantView(els.viewport);
   const viewOptions = new ViewOptions(sidesChoices(els.viewTools.sides));
   viewOptions.applyShared(start.state?.view); // a link's, before anything follows the options
   const derivation = new DerivationControls(els.derivation, notice);
-  const autosave = new Autosave(store, notice);
+  const autosave = new Autosave(store, kept, notice);
   // The editor and the pieces around it need each other: they reach it once it is made (below).
   let editor: GrammarEditor | undefined;
   const currentText = () => editor?.text() ?? start.text;
@@ -48,6 +53,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     client: new BuildClient(createBuildWorker),
     view,
     status: els.status,
+    stop: els.stopBuild,
     staleBadge: els.staleBadge,
     text: currentText,
     options: () => ({ iterations: derivation.iterations(), seed: derivation.seed(), sides: viewOptions.values.sides, smoothAll: viewOptions.values.smoothAll }),
@@ -87,7 +93,12 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   });
   editor = grammarEditor;
   // The layout for the room: narrow screens, Large for a projector, fullscreen.
-  const layout = new LayoutModes(els.layout, { remeasureEditor: () => grammarEditor.view.requestMeasure() }, browserStorage());
+  const layout = new LayoutModes(
+    els.layout,
+    { remeasureEditor: () => grammarEditor.view.requestMeasure(), largeChanged: (large) => view.setLineScale(large ? 2 : 1) },
+    browserStorage(),
+  );
+  els.stopBuild.addEventListener('click', () => grammarEditor.view.focus()); // the text stays, to edit on
   sliders.update(start.text);
   growth.update(start.text);
   derivation.textChanged(start.text);
@@ -104,7 +115,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     shown: () => preview.lastGood,
     createClient: () => new BuildClient(createBuildWorker),
     lighting: () => viewOptions.values.lighting,
-    fileName: () => figureName(opening.currentFile),
+    fileName: () => figureName(opening.currentFile, preview.lastGood?.source),
     toggled: (on) => viewTools.pauseForStages(on),
   });
   viewOptions.onChange((values, changed) => changed.has('lighting') && stages.setLighting(values.lighting));
@@ -120,11 +131,14 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     {
       editor: grammarEditor,
       confirm: els.confirm,
+      cannotKeep: els.cannotKeep,
+      keeper,
+      readFile: (file) => readGrammarFile(file, { createWorker: createImportWorker, notice }),
       notice,
       forgetText: () => {
         derivation.clear();
         sliders.reset();
-        viewOptions.set({ projection: 'auto' });
+        viewOptions.set({ projection: 'auto', render: 'auto' });
         view.frameNextPlant();
       },
       buildNow: () => preview.rebuild(true),
@@ -135,10 +149,10 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   const openGallery = () => void gallery.open().catch((error: unknown) => console.error('Could not open the gallery:', error));
   els.openGallery.addEventListener('click', openGallery);
   installLearnPanel({ preview, open: (text, title, key) => opening.replace(text, title, key) }); // lessons (issue 17), loaded on first use
-  if (start.from === 'link') autosave.save(start.text); // the link's text is now the work in progress
-  const library = new LibraryDialog(els.library, store, { text: () => grammarEditor.text(), open: (entry) => opening.openSaved(entry) });
-  installFileMenu(els.fileMenu, { openFile: (file) => opening.openFile(file), text: () => grammarEditor.text(), openLibrary: () => library.open() });
-  installDrop(els.studio, (file) => opening.openFile(file));
+  if (start.from === 'link') void autosave.save(start.text); // the link's text is now the work in progress
+  const library = new LibraryDialog(els.library, store, kept, { text: () => grammarEditor.text(), open: (entry, key) => opening.openSaved(entry, key) });
+  installFileMenu(els.fileMenu, { openFiles: (files) => opening.openPicked(files), text: () => grammarEditor.text(), openLibrary: () => library.open() });
+  installDrop(els.studio, (files, name) => opening.openFiles(files, name));
 
   // Branch editing (issue 8): the plant on screen with its edits, handles in Edit mode.
   const branchEdits = new BranchEditSession(els.branchEditing, view, {
@@ -149,6 +163,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     tell: (kind, message, items) => (message === null ? notice.hide() : notice.show(kind, message, items)),
     modeChanged: (on) => {
       following.editing(on);
+      viewTools.showProjection();
       contexts.picking = !on;
       if (on) contexts.pickModule(null);
     },
@@ -159,7 +174,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   if (start.state) link.restore(start.state); // iterations, seed, edits, camera (its view options apply already)
   const snippets = new EmbedSnippets(els.embedSnippets, new URL('./', location.href).href);
   installShareButton(els.share, new ShareDialog(els.shareDialog), () => link.capture(), notice, (state, fragment) => snippets.show(state, fragment));
-  openPastedLinks({ store, notice, autosave, opening, link, buildNow: () => preview.rebuild(true) });
+  openPastedLinks({ notice, opening, link, buildNow: () => preview.rebuild(true) });
 
   preview.onDelivered((result) => {
     if (result.build.ok) branchEdits.plantShown();
@@ -167,7 +182,10 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   connectTestHook(hook, { preview, view, branchEdits });
 
   // Downloads: the plant on screen (the last good build's text and options, with the edits).
-  installDownloads(els.downloads, view, () => preview.lastGood && { source: preview.lastGood.source, options: { ...preview.lastGood.options, edits: branchEdits.document() } });
+  installDownloads(els.downloads, view, () => {
+    const good = preview.lastGood;
+    return good && { source: good.source, options: { ...good.options, edits: branchEdits.document() }, name: figureName(opening.currentFile, good.source) };
+  });
 
   // Keyboard: shortcuts anywhere, their help, the splitter.
   const actions: Record<ShortcutAction, () => void> = {

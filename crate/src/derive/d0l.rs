@@ -2,12 +2,14 @@
 //! parameters, contexts, conditions or weights. The next length is computed before writing, and
 //! nothing is allocated per module.
 
-use super::{limit_error, NOT_REWRITTEN};
+use super::classes::{put, PAD};
+use super::{check_size, memory_error, NOT_REWRITTEN};
 use crate::diagnostics::Diagnostic;
 use crate::model::{LString, Model, ModuleId};
 
 /// The D0L path: usable when no production has parameters, contexts, conditions or weights.
 pub(super) struct D0lTable {
+    /// Every successor's ids, back to back, then [`PAD`] ids of padding for [`put`].
     successors: Vec<ModuleId>,
     rule_of: Vec<Option<(u32, u32)>>,
     /// For each module id, the production that rewrites it ([`NOT_REWRITTEN`] if none).
@@ -37,6 +39,7 @@ impl D0lTable {
                 })
             })
             .collect();
+        successors.extend(std::iter::repeat_n(ModuleId(0), PAD));
         let production_of = rules
             .by_predecessor
             .iter()
@@ -91,16 +94,24 @@ impl D0lTable {
                 None => 1,
             })
             .sum();
-        if len > model.settings.max_modules {
-            return Err(limit_error(model, step, len));
-        }
+        check_size(model, step, len, len.saturating_mul(size_of::<ModuleId>()))?;
         dst.clear(false);
-        dst.ids.reserve(len);
+        if dst.ids.capacity() < len + PAD {
+            // A new buffer: growing the old one would copy what it held.
+            let mut fresh = Vec::new();
+            if fresh.try_reserve_exact(len + PAD).is_err() {
+                return Err(memory_error(model, step, len, len * size_of::<ModuleId>()));
+            }
+            dst.ids = fresh;
+        }
         for &id in &src.ids {
             match self.rule_of[id.index()] {
-                Some((start, end)) => dst
-                    .ids
-                    .extend_from_slice(&self.successors[start as usize..end as usize]),
+                Some((start, end)) => put(
+                    &mut dst.ids,
+                    &self.successors,
+                    start as usize,
+                    (end - start) as usize,
+                ),
                 None => dst.ids.push(id),
             }
         }

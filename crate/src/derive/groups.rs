@@ -4,8 +4,13 @@
 use super::rewriter::Rewriter;
 use super::NOT_REWRITTEN;
 use crate::diagnostics::Diagnostic;
-use crate::model::{LString, RuleSet};
+use crate::model::{LString, Model, RuleSet, SuccessorModule};
+use crate::syntax::{Span, MAX_GROUP_DEPTH};
 use std::ops::Range;
+
+/// How many `@Repeat` rewritings a derivation may run for each step `#max_steps` allows: the
+/// derivation stops with `E0405` past `#max_steps` × this (a million by default).
+pub const REPEATS_PER_STEP: u64 = 100;
 
 /// A control module group in the string being rewritten.
 struct Group {
@@ -53,6 +58,32 @@ impl<R: rand::Rng> Rewriter<'_, R> {
     /// Derives the control module group whose header is at `i` (LANGUAGE.md section 7) and returns
     /// the index just after its closing marker.
     pub(super) fn rewrite_group(
+        &mut self,
+        rules: &RuleSet,
+        src: &LString,
+        i: usize,
+        dst: &mut LString,
+        num_it: u32,
+    ) -> Result<usize, Diagnostic> {
+        if self.group_depth >= MAX_GROUP_DEPTH {
+            return Err(Diagnostic::error(
+                "E0404",
+                group_span(self.model, |_| true),
+                format!(
+                    "control modules nested more than {MAX_GROUP_DEPTH} deep at step {num_it}: the \
+                     productions write groups inside groups (one whose members write it again \
+                     never ends)"
+                ),
+            ));
+        }
+        self.group_depth += 1;
+        let end = self.rewrite_group_members(rules, src, i, dst, num_it);
+        self.group_depth -= 1;
+        end
+    }
+
+    /// [`Rewriter::rewrite_group`] one level down.
+    fn rewrite_group_members(
         &mut self,
         rules: &RuleSet,
         src: &LString,
@@ -151,15 +182,71 @@ impl<R: rand::Rng> Rewriter<'_, R> {
     ) -> Result<(), Diagnostic> {
         let i = group.at;
         let times = group.header.max(0.0) as u32;
+        self.repeat_passes += u64::from(times);
+        let budget = u64::from(self.model.settings.max_steps) * REPEATS_PER_STEP;
+        if self.repeat_passes > budget {
+            let repeat = self.model.groups.repeat;
+            return Err(Diagnostic::error(
+                "E0405",
+                group_span(self.model, |s| s.id == repeat),
+                format!(
+                    "@Repeat groups asked for more than {budget} rewritings by step {num_it} \
+                     ({REPEATS_PER_STEP} for each of '#max_steps {}'); use smaller counts, fewer \
+                     iterations, or raise #max_steps",
+                    self.model.settings.max_steps
+                ),
+            ));
+        }
         self.open_group(src, i, group.header, dst);
         let mut enclosed = LString::default();
         enclosed.clear(src.is_parametric());
         for j in group.members[0].clone() {
             enclosed.push(src.ids[j], src.params_of(j));
         }
-        let derived = self.derive_apart(rules, enclosed, times, num_it, 0)?;
+        let derived =
+            self.derive_apart(rules, enclosed, times, num_it, (dst.len(), dst.bytes()))?;
         dst.extend_from(&derived);
         self.note(dst.len(), i, NOT_REWRITTEN);
         Ok(())
     }
+}
+
+impl<R: rand::Rng> Rewriter<'_, R> {
+    /// `E0405` for a `@Repeat` count above `#max_steps`, at the count.
+    pub(super) fn check_repeat_count(
+        &self,
+        count: f64,
+        module: &SuccessorModule,
+    ) -> Result<(), Diagnostic> {
+        let max = self.model.settings.max_steps;
+        if count <= f64::from(max) {
+            return Ok(());
+        }
+        let span = module
+            .args
+            .first()
+            .map_or_else(|| module.span.clone(), |k| k.span.clone());
+        Err(Diagnostic::error(
+            "E0405",
+            span,
+            format!(
+                "@Repeat count {count} is above the step limit {max}; use a smaller count or \
+                 raise '#max_steps N'"
+            ),
+        ))
+    }
+}
+
+/// Where the first control module `wanted` accepts is written (in a production, else the axiom):
+/// where an error of the groups while deriving points.
+fn group_span(model: &Model, wanted: impl Fn(&SuccessorModule) -> bool) -> Span {
+    let is_group = |s: &&SuccessorModule| s.group.is_some() && wanted(s);
+    model
+        .productions
+        .productions
+        .iter()
+        .flat_map(|p| p.successor.iter())
+        .chain(model.axiom.iter())
+        .find(is_group)
+        .map_or_else(|| model.axiom_span.clone(), |s| s.span.clone())
 }

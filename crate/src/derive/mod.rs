@@ -15,6 +15,7 @@
 //! derives (the turtle answering query modules, growth following every module and planning each
 //! step) comes in through an [`Observer`], which the pipeline implements.
 
+mod classes;
 pub mod context;
 mod cut;
 mod d0l;
@@ -209,14 +210,61 @@ fn apply_queries(model: &Model, s: &mut LString, observer: &mut dyn Observer) {
     }
 }
 
-/// `E0400`: the string would grow past `#max_modules` at `step` (0: the axiom).
-fn limit_error(model: &Model, step: u32, len: usize) -> Diagnostic {
-    let max = model.settings.max_modules;
-    let span = model
+/// Most bytes one derived string may take (`E0401`): a module's id, its parameters' offset when
+/// the grammar has parameters, and 8 bytes per parameter ([`LString::bytes`]). A derivation holds
+/// two strings (three when the last step is tracked) and their buffers may double, so this keeps
+/// the derivation well inside wasm32's 4 GiB, and the CLI gives the same answer as the studio.
+pub const MAX_STRING_BYTES: usize = 256 << 20;
+
+/// `E0400` when a string of `len` modules passes `#max_modules`, `E0401` when its `bytes` pass
+/// [`MAX_STRING_BYTES`], at `step` (0: the axiom).
+#[inline]
+fn check_size(model: &Model, step: u32, len: usize, bytes: usize) -> Result<(), Diagnostic> {
+    if len > model.settings.max_modules {
+        return Err(limit_error(model, step, len));
+    }
+    if bytes > MAX_STRING_BYTES {
+        return Err(memory_error(model, step, len, bytes));
+    }
+    Ok(())
+}
+
+/// `E0401`: the string at `step` would take more than [`MAX_STRING_BYTES`].
+#[cold]
+fn memory_error(model: &Model, step: u32, len: usize, bytes: usize) -> Diagnostic {
+    let mb = |b: usize| b.div_ceil(1 << 20);
+    let when = if step == 0 {
+        "the axiom has".to_string()
+    } else {
+        format!("step {step} would make a string of")
+    };
+    Diagnostic::error(
+        "E0401",
+        size_span(model),
+        format!(
+            "{when} {len} modules or more taking {} MB, above the memory budget of {} MB for \
+             one string (4 bytes a module, 4 more with parameters, 8 a parameter); use fewer \
+             iterations or fewer parameters per module",
+            mb(bytes),
+            mb(MAX_STRING_BYTES)
+        ),
+    )
+}
+
+/// Where a size error points: `#iterations`, else the axiom.
+fn size_span(model: &Model) -> crate::syntax::Span {
+    model
         .settings
         .iterations_span
         .clone()
-        .unwrap_or_else(|| model.axiom_span.clone());
+        .unwrap_or_else(|| model.axiom_span.clone())
+}
+
+/// `E0400`: the string would grow past `#max_modules` at `step` (0: the axiom).
+#[cold]
+fn limit_error(model: &Model, step: u32, len: usize) -> Diagnostic {
+    let max = model.settings.max_modules;
+    let span = size_span(model);
     let when = if step == 0 {
         "the axiom has".to_string()
     } else {
@@ -274,9 +322,7 @@ impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
         let follows = observer.follows_modules();
         let mut rewriter = Rewriter::new(model, steps, rng);
         let mut current = rewriter.axiom()?;
-        if current.len() > model.settings.max_modules {
-            return Err(limit_error(model, 0, current.len()));
-        }
+        check_size(model, 0, current.len(), current.bytes())?;
         let mut next = LString::default();
         observer.axiom(&current, &mut *rewriter.rng);
         if !model.decomposition.is_empty() {

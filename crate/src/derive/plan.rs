@@ -2,7 +2,7 @@
 //! and how often each grows), each module is rewritten as many times as the plan says.
 
 use super::rewriter::Rewriter;
-use super::{context, limit_error};
+use super::{check_size, context};
 use crate::diagnostics::Diagnostic;
 use crate::model::{LString, RuleSet};
 
@@ -48,7 +48,8 @@ impl<R: rand::Rng> Rewriter<'_, R> {
         current.clear(self.model.parametric);
         let applied = self.rewrite_module(rules, src, i, &mut current, num_it)?;
         if applied.is_some() && times > 1 {
-            current = self.derive_apart(rules, current, times - 1, num_it, dst.len())?;
+            current =
+                self.derive_apart(rules, current, times - 1, num_it, (dst.len(), dst.bytes()))?;
         }
         dst.extend_from(&current);
         Ok(applied)
@@ -56,14 +57,14 @@ impl<R: rand::Rng> Rewriter<'_, R> {
 
     /// Derives `current` `times` more times on its own within step `num_it`: its contexts are its
     /// own, and the step's tracking and plan do not reach inside (what `@Repeat` and repeated
-    /// rewritings do). `outside` modules already written count against the module limit.
+    /// rewritings do). `outside`: the modules and bytes already written, which count against the limits.
     pub(super) fn derive_apart(
         &mut self,
         rules: &RuleSet,
         mut current: LString,
         times: u32,
         num_it: u32,
-        outside: usize,
+        outside: (usize, usize),
     ) -> Result<LString, Diagnostic> {
         let model = self.model;
         let plan = self.plan.take();
@@ -78,9 +79,12 @@ impl<R: rand::Rng> Rewriter<'_, R> {
             let len = current.len();
             self.rewrite_range(rules, &current, 0..len, &mut next, num_it)?;
             std::mem::swap(&mut current, &mut next);
-            if outside + current.len() > model.settings.max_modules {
-                return Err(limit_error(model, num_it, outside + current.len()));
-            }
+            check_size(
+                model,
+                num_it,
+                outside.0 + current.len(),
+                outside.1 + current.bytes(),
+            )?;
         }
         self.partner = saved;
         self.tracker = tracker;

@@ -1,12 +1,14 @@
 //! The general path: productions tried in source order for each module, with bracket-aware
 //! contexts, compiled conditions, weighted (stochastic) choice and Green's random variables.
 
+use super::classes::{self, Classes, Kind};
 use super::context::{self, Recorder};
-use super::{limit_error, Observer, NOT_REWRITTEN};
+use super::{check_size, Observer, MAX_STRING_BYTES, NOT_REWRITTEN};
 use crate::diagnostics::Diagnostic;
-use crate::model::{Env, LString, Model, Production, Program, RuleSet, SuccessorModule};
+use crate::model::{Env, LString, Model, ModuleId, Production, Program, RuleSet, SuccessorModule};
 use crate::syntax::Span;
 use rand::RngExt;
+use std::mem::take;
 
 /// Where each module written by a tracked pass comes from.
 #[derive(Default)]
@@ -36,7 +38,6 @@ pub(super) struct Rewriter<'m, R: rand::Rng> {
     pub slots: Vec<f64>,
     /// The deviates of the `#random` variables for the module being matched.
     pub vars: Vec<Option<f64>>,
-    var_programs: Vec<Program>,
     /// For each bracket of the string being rewritten, its partner (for contexts).
     pub partner: Vec<u32>,
     /// Matching weighted productions of the current module: (production, weight, bound slots).
@@ -46,6 +47,15 @@ pub(super) struct Rewriter<'m, R: rand::Rng> {
     /// During a step's productions pass, when the observer planned it: how many times each module
     /// of the string is rewritten (0: not at all, 1: as usual, more: repeatedly).
     pub plan: Option<Vec<u32>>,
+    /// How many control module groups the range being rewritten is inside.
+    pub group_depth: usize,
+    /// The `@Repeat` rewritings run so far in this derivation, against [`Rewriter::repeat_budget`].
+    pub repeat_passes: u64,
+    /// The productions' classes, for strings without parameters.
+    classes: Option<Classes>,
+    /// Scratch of a classes pass: each module's right neighbour, and a stack of neighbours.
+    right: Vec<u32>,
+    stack: Vec<u32>,
 }
 
 impl<'m, R: rand::Rng> Rewriter<'m, R> {
@@ -65,15 +75,15 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
             max_it: steps as f64,
             slots: vec![0.0; max_slots],
             vars: vec![None; model.random_variables.len()],
-            var_programs: model
-                .random_variables
-                .iter()
-                .map(|v| v.distribution.clone())
-                .collect(),
             partner: Vec::new(),
             weighted: Vec::new(),
             tracker: None,
             plan: None,
+            group_depth: 0,
+            repeat_passes: 0,
+            classes: Classes::new(model),
+            right: Vec::new(),
+            stack: Vec::new(),
         }
     }
 
@@ -90,7 +100,7 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
             max_it: self.max_it,
             vars: &mut self.vars,
             fresh_vars,
-            var_programs: &self.var_programs,
+            variables: &self.model.random_variables,
             rng: &mut *self.rng,
         };
         program
@@ -126,6 +136,9 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
                         Some(k) => self.eval(k, slots, num_it, true)?.round().max(0.0),
                         None => 0.0,
                     };
+                    if s.id == model.groups.repeat {
+                        self.check_repeat_count(value, s)?;
+                    }
                     dst.params.push(value);
                 } else {
                     for a in &s.args {
@@ -264,7 +277,13 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         num_it: u32,
     ) -> Result<bool, Diagnostic> {
         let model = self.model;
-        if rules.has_contexts() {
+        let by_class = self.plan.is_none() && std::ptr::eq(rules, &model.productions);
+        let classes = if by_class { self.classes.take() } else { None };
+        let partners = match &classes {
+            Some(c) => c.general_contexts,
+            None => rules.has_contexts(),
+        };
+        if partners {
             context::bracket_partners(model, src, &mut self.partner);
         }
         dst.clear(model.parametric);
@@ -272,7 +291,97 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
             t.parent.clear();
             t.origin.clear();
         }
-        self.rewrite_range(rules, src, 0..src.len(), dst, num_it)
+        match classes {
+            Some(c) => {
+                let (mut right, mut stack) = (take(&mut self.right), take(&mut self.stack));
+                let scratch = (&mut right, &mut stack);
+                let changed = self.rewrite_by_class(&c, rules, src, dst, num_it, scratch);
+                (self.classes, self.right, self.stack) = (Some(c), right, stack);
+                changed
+            }
+            None => self.rewrite_range(rules, src, 0..src.len(), dst, num_it),
+        }
+    }
+
+    /// [`Rewriter::rewrite_range`] over the whole string, each module as its class says: the
+    /// productions section of a grammar without parameters or control modules, unplanned.
+    /// `scratch`: the right neighbours and a stack.
+    fn rewrite_by_class(
+        &mut self,
+        c: &Classes,
+        rules: &RuleSet,
+        src: &LString,
+        dst: &mut LString,
+        num_it: u32,
+        (right, stack): (&mut Vec<u32>, &mut Vec<u32>),
+    ) -> Result<bool, Diagnostic> {
+        let model = self.model;
+        // Past either limit, check_size says which (a string without parameters: 4 bytes a module).
+        let max = (model.settings.max_modules).min(MAX_STRING_BYTES / size_of::<ModuleId>());
+        let tracking = self.tracker.is_some();
+        let nested = c.neighbours && classes::right_neighbours(&c.classes, src, right, stack);
+        stack.clear();
+        let mut last = context::NONE;
+        let mut changed = false;
+        for (i, &id) in src.ids.iter().enumerate() {
+            let class = &c.classes[id.index()];
+            let production = match class.kind {
+                Kind::Fixed => {
+                    classes::put(
+                        &mut dst.ids,
+                        &c.successors,
+                        class.start as usize,
+                        class.len as usize,
+                    );
+                    class.production
+                }
+                Kind::Choice => {
+                    let a = c.choose(class, self.rng.random::<f64>());
+                    classes::put(
+                        &mut dst.ids,
+                        &c.successors,
+                        a.start as usize,
+                        a.len as usize,
+                    );
+                    a.production
+                }
+                Kind::Neighbours => {
+                    match c.neighbours_match(class, last, next_to(src, right, i, nested)) {
+                        Some(a) => {
+                            classes::put(
+                                &mut dst.ids,
+                                &c.successors,
+                                a.start as usize,
+                                a.len as usize,
+                            );
+                            a.production
+                        }
+                        None => {
+                            dst.ids.push(id);
+                            NOT_REWRITTEN
+                        }
+                    }
+                }
+                Kind::General => self
+                    .rewrite_module(rules, src, i, dst, num_it)?
+                    .unwrap_or(NOT_REWRITTEN),
+            };
+            if production != NOT_REWRITTEN {
+                changed = true;
+                if dst.len() > max {
+                    check_size(model, num_it, dst.len(), dst.bytes())?;
+                }
+            }
+            if tracking {
+                self.note(dst.len(), i, production);
+            }
+            if nested {
+                last = classes::step_left(class.role, id, last, stack);
+            } else {
+                last = id.0;
+            }
+        }
+        Ok(changed)
     }
 
     /// Rewrites modules `range` of `src` onto the end of `dst`. Control module groups act only in
@@ -372,9 +481,7 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         } else {
             self.emit(&p.successor, p.slots, num_it, dst)?;
         }
-        if dst.len() > model.settings.max_modules {
-            return Err(limit_error(model, num_it, dst.len()));
-        }
+        check_size(model, num_it, dst.len(), dst.bytes())?;
         Ok(Some(index))
     }
 
@@ -416,6 +523,17 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         let (index, _, slots) = &self.weighted[pick];
         self.slots[..slots.len()].copy_from_slice(slots);
         Ok(*index)
+    }
+}
+
+/// The right neighbour of module `i`: from `right` when the string is `nested`, else the next
+/// module.
+#[inline(always)]
+fn next_to(src: &LString, right: &[u32], i: usize, nested: bool) -> u32 {
+    if nested {
+        right[i]
+    } else {
+        src.ids.get(i + 1).map_or(context::NONE, |id| id.0)
     }
 }
 

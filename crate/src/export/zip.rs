@@ -3,7 +3,7 @@
 //! at most 4 GiB in all, far more than a browser can hand over.
 
 /// CRC-32 (IEEE 802.3, reflected, as zip uses), table-driven.
-fn crc32(bytes: &[u8]) -> u32 {
+pub(crate) fn crc32(bytes: &[u8]) -> u32 {
     const TABLE: [u32; 256] = {
         let mut table = [0u32; 256];
         let mut n = 0;

@@ -189,7 +189,7 @@ impl<'m> GrowthTracker<'m> {
             max_it: self.steps as f64,
             vars: &mut [],
             fresh_vars: false,
-            var_programs: &[],
+            variables: &[],
             rng,
         };
         program

@@ -13,6 +13,11 @@
 //! production per branch, in order: Meristem applies the first that matches, as L-Py does).
 //! Anything else is reported and left out.
 
+mod cpp;
+mod globals;
+mod view;
+
+use super::vlab::View;
 use super::{Import, Output};
 use crate::vocabulary::{module_named, name_of, Command, DirectiveKind, KeywordKind, Meaning};
 use std::collections::HashMap;
@@ -69,6 +74,17 @@ const LPY_NAMES: &[(&str, Meaning)] = &[
 ];
 
 pub(super) fn import(text: &str, flavour: Flavour) -> Import {
+    import_with(text, flavour, None, &|_| None)
+}
+
+/// Imports `text` with what the rest of its vlab object says (`view`: `None` for a file alone),
+/// reading `#include`d files through `include`.
+pub(super) fn import_with(
+    text: &str,
+    flavour: Flavour,
+    view: Option<&View>,
+    include: &dyn Fn(&str) -> Option<String>,
+) -> Import {
     let mut importer = Importer {
         flavour,
         out: Output::default(),
@@ -76,8 +92,13 @@ pub(super) fn import(text: &str, flavour: Flavour) -> Import {
         unknown_names: Vec::new(),
         noted: Vec::new(),
         axiom: false,
+        view: view.cloned(),
+        helpers: Vec::new(),
+        bare_turn: false,
+        colour: false,
+        globals: globals::Globals::default(),
     };
-    importer.run(text);
+    importer.run(text, include);
     importer.out.finish()
 }
 
@@ -90,13 +111,35 @@ struct Importer {
     unknown_names: Vec<String>,
     noted: Vec<String>,
     axiom: bool,
+    /// The vlab object's view and colours (cpfg, opened with its object).
+    view: Option<View>,
+    /// L-Py helper functions that return one expression: name, parameters, the expression
+    /// (translated), inlined where they are called.
+    helpers: Vec<(String, Vec<String>, String)>,
+    /// A turn without an angle was written (it turns by the view's angle increment).
+    bare_turn: bool,
+    /// A colour module was written.
+    colour: bool,
+    /// cpfg's global variables, arrays and `Start:`… blocks.
+    globals: globals::Globals,
 }
 
 /// Splits the text into lines without comments: cpfg's `/* … */` and `//`, L-Py's `#`.
 fn lines(text: &str, flavour: Flavour) -> Vec<Line> {
     let mut result = Vec::new();
     let mut in_block = false;
+    // L-Py: the triple quote of a Python string that runs over several lines.
+    let mut in_string: Option<&str> = None;
     for (index, raw) in text.lines().enumerate() {
+        if flavour == Flavour::Lpy {
+            if let Some(line) = python_string_line(raw, &mut in_string) {
+                result.push(Line {
+                    n: index + 1,
+                    ..line
+                });
+                continue;
+            }
+        }
         let mut code = String::new();
         let mut comment = String::new();
         let chars: Vec<char> = raw.chars().collect();
@@ -158,6 +201,47 @@ fn lines(text: &str, flavour: Flavour) -> Vec<Line> {
     result
 }
 
+/// A line of L-Py text that a Python string over several lines (`"""…"""`, a docstring)
+/// opens, continues or closes: the string's text becomes a comment, and the line that opens it
+/// keeps its code with the string closed there. `None` for any other line.
+fn python_string_line<'a>(raw: &str, in_string: &mut Option<&'a str>) -> Option<Line> {
+    if let Some(quote) = *in_string {
+        let (text, code) = match raw.find(quote) {
+            Some(end) => {
+                *in_string = None;
+                (&raw[..end], raw[end + quote.len()..].trim())
+            }
+            None => (raw, ""),
+        };
+        return Some(Line {
+            n: 0,
+            code: code.to_string(),
+            comment: text.trim().to_string(),
+            indent: raw.len() - raw.trim_start().len(),
+        });
+    }
+    let quote: &'a str = ["\"\"\"", "'''"]
+        .into_iter()
+        .find(|q| raw.matches(q).count() % 2 == 1)?;
+    let open = raw.find(quote)?;
+    *in_string = Some(quote);
+    let code = raw[..open].trim();
+    let text = raw[open + quote.len()..].trim();
+    // An assignment of the string (`__description__ = """…`) keeps it, closed on its first
+    // line; a docstring is a comment.
+    let (code, comment) = if code.ends_with('=') {
+        (format!("{code} {quote}{text}{quote}"), String::new())
+    } else {
+        (code.to_string(), text.to_string())
+    };
+    Some(Line {
+        n: 0,
+        code,
+        comment,
+        indent: raw.len() - raw.trim_start().len(),
+    })
+}
+
 /// cpfg's statement blocks `{ … }` may span lines: a line whose braces are not closed takes the
 /// lines after it until they are.
 fn join_blocks(lines: Vec<Line>, flavour: Flavour) -> Vec<Line> {
@@ -186,6 +270,64 @@ fn join_blocks(lines: Vec<Line>, flavour: Flavour) -> Vec<Line> {
     joined
 }
 
+/// The functions a cpfg `#define` value may call and stay a number expression: Meristem's and
+/// cpfg's own.
+fn cpp_functions() -> Vec<String> {
+    crate::vocabulary::FUNCTIONS
+        .iter()
+        .map(|f| f.name.to_string())
+        .chain(
+            ["func", "tfunc", "ran", "nran", "trunc", "fabs", "pow"]
+                .iter()
+                .map(|s| s.to_string()),
+        )
+        .collect()
+}
+
+/// True when a line starts with one of the notation's keywords (it is no part of a production).
+fn starts_with_keyword(code: &str) -> bool {
+    let lower = code.to_ascii_lowercase();
+    let compact: String = lower.chars().filter(|c| !c.is_whitespace()).collect();
+    code.starts_with('#')
+        || section(&lower).is_some()
+        // dialect: cpfg's keywords, without their spaces
+        || "axiom: derivationlength ignore: consider: maximumdepth lsystem: endlsystem start: starteach: end: endeach: define: seed:"
+            .split(' ')
+        .any(|k| compact.starts_with(k))
+}
+
+/// cpfg productions written over two lines: `pred : cond` then `--> succ` on the next line, or
+/// `pred -->` then the successor (at any indentation) on the next.
+fn join_two_line_productions(mut lines: Vec<Line>) -> Vec<Line> {
+    let mut i = 0;
+    while i < lines.len() {
+        let next = (i + 1..lines.len()).find(|&j| !lines[j].code.is_empty());
+        let Some(j) = next else { break };
+        let (a, b) = (&lines[i].code, &lines[j].code);
+        let arrow_next = b.starts_with("-->") || b.starts_with("->");
+        let open_arrow =
+            arrow(a).is_some_and(|(_, end)| a[end..].trim().is_empty()) && arrow(b).is_none();
+        let joins = !a.is_empty()
+            && !starts_with_keyword(a)
+            && !starts_with_keyword(b)
+            && ((arrow_next && arrow(a).is_none()) || open_arrow);
+        if joins {
+            // The joined line goes, so that the successor's own continuation lines (indented,
+            // see `production_lines`) follow the production directly.
+            let joined = lines.remove(j);
+            lines[i].code = format!("{} {}", lines[i].code, joined.code);
+            if !joined.comment.is_empty() {
+                let comment = format!("{} {}", lines[i].comment, joined.comment);
+                lines[i].comment = comment.trim().to_string();
+            }
+            // `pred : cond` + `-->` alone may now be an open arrow: look again.
+            continue;
+        }
+        i += 1;
+    }
+    lines
+}
+
 /// The byte index of the first `token` outside brackets, braces and parentheses.
 fn top_level(text: &str, token: &str) -> Option<usize> {
     let mut depth = 0i32;
@@ -201,6 +343,39 @@ fn top_level(text: &str, token: &str) -> Option<usize> {
         }
     }
     None
+}
+
+/// L-Py's literal values in a predecessor (`D(20, k)`): each becomes a parameter `v_litK`, with
+/// the condition `v_litK == 20`. Returns the pattern so rewritten and the conditions.
+fn literal_parameters(pattern: &str) -> (String, Vec<String>) {
+    let mut out = String::new();
+    let mut conditions = Vec::new();
+    let mut rest = pattern;
+    while let Some(open) = rest.find('(') {
+        out.push_str(&rest[..=open]);
+        let chars: Vec<char> = rest[open..].chars().collect();
+        let Some(close) = matching(&chars, 0) else {
+            break;
+        };
+        let inner: String = chars[1..close].iter().collect();
+        let params: Vec<String> = split_top(&inner, ',')
+            .into_iter()
+            .map(|p| match p.trim().parse::<f64>() {
+                Ok(v) if v.is_finite() => {
+                    let name = format!("v_lit{}", conditions.len() + 1);
+                    conditions.push(format!("{name} == {}", super::number(v)));
+                    name
+                }
+                _ => p.to_string(),
+            })
+            .collect();
+        out.push_str(&params.join(","));
+        out.push(')');
+        let consumed: usize = chars[..=close].iter().map(|c| c.len_utf8()).sum();
+        rest = &rest[open + consumed..];
+    }
+    out.push_str(rest);
+    (out, conditions)
 }
 
 /// The production arrow: `-->` or `->` outside parentheses; (start, end).
@@ -235,8 +410,21 @@ impl Importer {
         }
     }
 
-    fn run(&mut self, text: &str) {
-        let all = join_blocks(lines(text, self.flavour), self.flavour);
+    /// The file's lines ready to translate: comments split off, cpfg's preprocessor run, blocks
+    /// and productions over several lines joined, globals and L-Py's module declarations read.
+    fn prepare(&mut self, text: &str, include: &dyn Fn(&str) -> Option<String>) -> Vec<Line> {
+        let mut all = lines(text, self.flavour);
+        if self.flavour == Flavour::Cpfg {
+            let functions = cpp_functions();
+            let names: Vec<&str> = functions.iter().map(String::as_str).collect();
+            let mut pre = cpp::Preprocessor::new(include, &names);
+            all = pre.run(all, 0);
+            for (n, message) in pre.notes {
+                self.note(n, message);
+            }
+            all = join_two_line_productions(join_blocks(all, self.flavour));
+            self.globals = globals::Globals::scan(&all);
+        }
         // L-Py's `module` declarations change how strings split into modules: read them first.
         if self.flavour == Flavour::Lpy {
             for line in &all {
@@ -250,12 +438,18 @@ impl Importer {
                 }
             }
         }
+        all
+    }
+
+    fn run(&mut self, text: &str, include: &dyn Fn(&str) -> Option<String>) {
+        let all = self.prepare(text, include);
         self.out.comment(
             &format!("Imported from {} by meristem import.", self.flavour.tool()),
             0,
         );
         let module_line = self.out.len();
         self.out.line("", 0);
+        self.view_lines();
         let mut ended = false;
         let mut i = 0;
         while i < all.len() {
@@ -305,6 +499,7 @@ impl Importer {
         if !self.axiom {
             self.note(0, "no Axiom: line");
         }
+        self.unknown_view();
     }
 
     /// Translates one statement (a line, or a production with the lines it takes); returns the
@@ -359,6 +554,9 @@ impl Importer {
         if keyword(&lower, code, "lsystem:").is_some() {
             return true;
         }
+        if self.flavour == Flavour::Cpfg && self.global_block(code, line.n) {
+            return true;
+        }
         // dialect: cpfg's keyword
         if let Some(rest) = keyword(&lower, code, "derivation length:") {
             match self.expression(rest, &Env::new()) {
@@ -367,6 +565,16 @@ impl Importer {
                     line.n,
                 ),
                 Err(why) => self.note(line.n, format!("derivation length: {why}")),
+            }
+            return true;
+        }
+        // dialect: cpfg's keyword (the random generator's seed)
+        if let Some(rest) = keyword(&lower, code, "seed:") {
+            match self.expression(rest, &Env::new()) {
+                Ok(e) => self
+                    .out
+                    .line(format!("{} {e}", DirectiveKind::Seed.written()), line.n),
+                Err(why) => self.note(line.n, format!("seed: {why}")),
             }
             return true;
         }
@@ -417,6 +625,7 @@ impl Importer {
         match self.modules(rest, &Env::new(), n) {
             Ok(m) => {
                 self.axiom = true;
+                let m = format!("{}{m}", self.initial_colour());
                 self.out.line(
                     format!("{} {}", KeywordKind::Axiom.written(), separate(&m)),
                     n,
@@ -429,7 +638,11 @@ impl Importer {
     /// `ignore: modules` or `consider: modules` (the keyword `kw`, then `rest`) as Meristem's
     /// `directive` with the modules' names.
     fn module_list(&mut self, kw: &str, directive: &str, rest: &str, n: usize) {
-        match self.modules(rest, &Env::new(), n) {
+        // The names listed draw nothing: a `+` here is no turn by the view's angle.
+        let (bare_turn, colour) = (self.bare_turn, self.colour);
+        let modules = self.modules(rest, &Env::new(), n);
+        (self.bare_turn, self.colour) = (bare_turn, colour);
+        match modules {
             Ok(m) => {
                 let names = module_names(&m);
                 if !names.is_empty() {
@@ -516,6 +729,9 @@ impl Importer {
     /// statements are reported (a block with its indented lines). Returns where to go on.
     fn python(&mut self, line: &Line, block: &[Line], block_end: usize, next: usize) -> usize {
         let code = line.code.as_str();
+        if self.tuple_assignment(code, line.n) || self.helper(code, block, line.n) {
+            return if block.is_empty() { next } else { block_end };
+        }
         if let Some((name, value)) = code.split_once('=') {
             let name = name.trim();
             let value = value.trim();
@@ -558,6 +774,91 @@ impl Importer {
         }
     }
 
+    /// A Python function that returns one expression (`def long(x): return 1`, the `return` on
+    /// its line or alone in its body): kept to be inlined where it is called. False for any
+    /// other line.
+    fn helper(&mut self, code: &str, block: &[Line], n: usize) -> bool {
+        let Some(rest) = code.strip_prefix("def ") else {
+            return false;
+        };
+        let Some((head, inline)) = rest.split_once(':') else {
+            return false;
+        };
+        let Some((name, params)) = head
+            .trim()
+            .strip_suffix(')')
+            .and_then(|h| h.split_once('('))
+        else {
+            return false;
+        };
+        let body: Vec<&str> = std::iter::once(inline.trim())
+            .chain(block.iter().map(|l| l.code.as_str()))
+            .filter(|c| !c.is_empty())
+            .collect();
+        let Some(value) = (match body.as_slice() {
+            [only] => only.strip_prefix("return "),
+            _ => None,
+        }) else {
+            return false;
+        };
+        let params: Vec<String> = params
+            .split(',')
+            .map(|p| p.trim().to_string())
+            .filter(|p| !p.is_empty())
+            .collect();
+        if !is_identifier(name.trim()) || !params.iter().all(|p| is_identifier(p)) {
+            return false;
+        }
+        let name = name.trim().to_string();
+        match self.expression(value.trim(), &Env::new()) {
+            Ok(e) => {
+                let comment = format!(
+                    "L-Py's function {name}({}) = {e}, inlined where it is called",
+                    params.join(", ")
+                );
+                self.out.comment(&comment, n);
+                self.helpers.push((name.clone(), params, e));
+            }
+            Err(why) => self.note(
+                n,
+                format!(
+                    "the Python function '{}' returns {}: {why}; not translated",
+                    name.trim(),
+                    value.trim()
+                ),
+            ),
+        }
+        true
+    }
+
+    /// Python's `a, b = 1, 2`: one `#define` each. False for any other line.
+    fn tuple_assignment(&mut self, code: &str, n: usize) -> bool {
+        let Some((names, values)) = code.split_once('=') else {
+            return false;
+        };
+        let names: Vec<&str> = names.split(',').map(str::trim).collect();
+        let values = split_top(values.trim(), ',');
+        let assigns = names.len() > 1
+            && names.len() == values.len()
+            && names.iter().all(|name| is_identifier(name))
+            && !values[0].trim_start().starts_with('=');
+        if !assigns {
+            return false;
+        }
+        for (name, value) in names.iter().zip(values) {
+            match self.expression(value.trim(), &Env::new()) {
+                Ok(e) => self
+                    .out
+                    .line(format!("{} {name} {e}", DirectiveKind::Define.written()), n),
+                Err(why) => self.note(
+                    n,
+                    format!("{name} = {}: {why}; not translated", value.trim()),
+                ),
+            }
+        }
+        true
+    }
+
     /// `pred : {pre} cond {post} --> succ : probability` in Meristem's notation.
     fn production(&mut self, code: &str, n: usize) {
         let Some((start, end)) = arrow(code) else {
@@ -575,7 +876,21 @@ impl Importer {
             Some(i) => (left[..i].trim(), left[i + 1..].trim()),
             None => (left, ""),
         };
-        let (env, condition) = self.guard(guard)?;
+        let (pattern, literals) = match self.flavour {
+            Flavour::Lpy => literal_parameters(pattern),
+            Flavour::Cpfg => (pattern.to_string(), Vec::new()),
+        };
+        let pattern = pattern.as_str();
+        let (env, condition) = self.guard(guard, n)?;
+        // L-Py's `D(20, k)` matches a D whose first parameter is 20: a condition.
+        let condition = if literals.is_empty() {
+            condition
+        } else {
+            literals
+                .into_iter()
+                .chain(condition.map(|c| format!("({c})")))
+                .reduce(|a, b| format!("{a} && {b}"))
+        };
         // cpfg's probability after the successor: `--> succ : 0.3`.
         let (right, weight) = match top_level(right, ":") {
             Some(i) => {
@@ -611,7 +926,7 @@ impl Importer {
     /// A production's guard (what stands between `:` and the arrow): statement blocks `{…}`
     /// before and after a condition. Returns the names the blocks bind and the condition in
     /// Meristem's terms (`None` when there is none or it is `*`).
-    fn guard(&mut self, guard: &str) -> Result<(Env, Option<String>), String> {
+    fn guard(&mut self, guard: &str, n: usize) -> Result<(Env, Option<String>), String> {
         let mut env = Env::new();
         let mut condition = String::new();
         let mut rest = guard;
@@ -621,7 +936,7 @@ impl Importer {
                 let close = inner.find('}').ok_or("a '{' block is never closed")?;
                 let block = &inner[..close];
                 if condition.trim().is_empty() {
-                    self.block(block, &mut env)?;
+                    self.block(block, &mut env, n)?;
                 } else {
                     post = Some(block.to_string());
                 }
@@ -642,7 +957,7 @@ impl Importer {
             Some(translated)
         };
         if let Some(block) = post {
-            self.block(&block, &mut env)?;
+            self.block(&block, &mut env, n)?;
         }
         Ok((env, condition))
     }
@@ -690,8 +1005,17 @@ impl Importer {
     }
 
     /// A statement block: assignments `x = e;` (also `+=` …), in order.
-    fn block(&mut self, block: &str, env: &mut Env) -> Result<(), String> {
+    fn block(&mut self, block: &str, env: &mut Env, n: usize) -> Result<(), String> {
         for statement in block.split(';').map(str::trim).filter(|s| !s.is_empty()) {
+            if statement
+                .chars()
+                .filter(|c| !c.is_whitespace())
+                .collect::<String>()
+                .ends_with("++")
+            {
+                self.note(n, format!("the statement '{statement}' changes a variable cpfg keeps from module to module; Meristem has no variables: dropped"));
+                continue;
+            }
             let (target, op, value) = ["+=", "-=", "*=", "/=", "="]
                 .iter()
                 .find_map(|op| {
@@ -702,6 +1026,10 @@ impl Importer {
                 .ok_or_else(|| format!("the statement '{statement}' is not an assignment"))?;
             if !is_identifier(target) || value.starts_with('=') {
                 return Err(format!("the statement '{statement}' is not an assignment"));
+            }
+            if self.globals.is_global(target) && !env.contains_key(target) {
+                self.note(n, format!("the statement '{statement}' changes cpfg's global variable {target} during the derivation; Meristem has no variables, so it is dropped and {target} keeps its start value"));
+                continue;
             }
             let value = self.expression(value, env)?;
             let value = match op {
@@ -728,8 +1056,9 @@ impl Importer {
             let code = line.code.as_str();
             let (head, tail) = match code.find(':') {
                 Some(i)
-                    if code.starts_with("if ")
-                        || code.starts_with("elif ")
+                    if ["if ", "if(", "elif ", "elif("]
+                        .iter()
+                        .any(|k| code.starts_with(k))
                         || code.starts_with("else") =>
                 {
                     (&code[..i], code[i + 1..].trim())
@@ -740,9 +1069,10 @@ impl Importer {
                 let condition = if head.trim() == "else" {
                     None
                 } else {
+                    // `if(z == 1)` as well as `if z == 1`.
                     let c = head
-                        .trim_start_matches("elif ")
-                        .trim_start_matches("if ")
+                        .trim_start_matches("elif")
+                        .trim_start_matches("if")
                         .trim();
                     match self.expression(c, &Env::new()) {
                         Ok(c) => Some(c),
@@ -864,6 +1194,20 @@ impl Importer {
         while j < chars.len() && chars[j] == ' ' {
             j += 1;
         }
+        if chars.get(j) == Some(&'[') && self.flavour == Flavour::Cpfg {
+            let close = chars[j..]
+                .iter()
+                .position(|&c| c == ']')
+                .map(|k| j + k)
+                .ok_or("a '[' is never closed")?;
+            let inner: String = chars[j + 1..close].iter().collect();
+            let index = self.expression(&inner, env)?;
+            let value = self.array_value(&word, &index).ok_or_else(|| {
+                format!("'{word}[…]' reads an array that cpfg's Start: or Define: block does not give as one list of values")
+            })?;
+            out.push_str(&value);
+            return Ok(close + 1);
+        }
         if chars.get(j) == Some(&'(') {
             let close = matching(chars, j).ok_or("a '(' is never closed")?;
             let inner: String = chars[j + 1..close].iter().collect();
@@ -924,6 +1268,17 @@ impl Importer {
 
     /// A function call in Meristem's terms.
     fn call(&mut self, name: &str, args: &[String]) -> Result<String, String> {
+        if let Some((_, params, body)) = self.helpers.iter().find(|(h, _, _)| h == name) {
+            if params.len() != args.len() {
+                return Err(format!(
+                    "{name}(…) takes {} arguments, not {}",
+                    params.len(),
+                    args.len()
+                ));
+            }
+            let args: Vec<String> = args.iter().map(|a| format!("({a})")).collect();
+            return Ok(format!("({})", cpp::substitute(body, params, &args)));
+        }
         let a = |k: usize| args.get(k).cloned().unwrap_or_default();
         let all = args.join(",");
         Ok(match (self.flavour, name) {
@@ -934,6 +1289,8 @@ impl Importer {
             (Flavour::Lpy, "radians") => format!("(({})/{DEGREES})", a(0)),
             (Flavour::Lpy, "degrees") => format!("(({})*{DEGREES})", a(0)),
             (Flavour::Lpy, "random") if args.is_empty() => "uniform(0,1)".into(),
+            // L-Py counts the steps from 0; Meristem's NumIt from 1.
+            (Flavour::Lpy, "getIterationNb") if args.is_empty() => "(NumIt-1)".into(),
             (Flavour::Lpy, "randint") => format!("uniform_int({all})"),
             (Flavour::Lpy, "gauss" | "normalvariate") => format!("normal({all})"),
             (Flavour::Lpy, "expovariate") => format!("exponential({all})"),
@@ -942,10 +1299,11 @@ impl Importer {
                 format!("(({0})<0?ceil({0}):floor({0}))", a(0))
             }
             (Flavour::Lpy, "pow") => format!("(({})^({}))", a(0), a(1)),
-            (Flavour::Cpfg, "func" | "tfunc") => {
-                return Err(format!(
-                    "cpfg's {name}(…) reads a function from the model's function file, which is not part of the L-system"
-                ))
+            (Flavour::Cpfg, "func") => return self.func(args),
+            (Flavour::Cpfg, "tfunc") => {
+                return Err(
+                    "cpfg's tfunc(…) (a function of time from the animation's function file) is not translated".into(),
+                )
             }
             (Flavour::Cpfg, "ran") => format!("uniform(0,{})", a(0)),
             (Flavour::Cpfg, "nran") => format!("normal({all})"),
@@ -1066,6 +1424,9 @@ impl Importer {
                 format!("{tool}'s '{width}' without a value widens by the width increment; Meristem has no such command; dropped"),
             );
             return String::new();
+        }
+        if let Some(text) = self.view_module(name, &params, has_params, n) {
+            return text;
         }
         if name == "," {
             return if has_params {
@@ -1324,7 +1685,9 @@ mod tests {
                 "endlsystem",
             ]
         );
-        assert!(import.notes.is_empty(), "{:?}", import.notes);
+        // `F[+F]F` turns by the view file's angle, which a `.l` alone does not give.
+        assert_eq!(import.notes.len(), 1, "{:?}", import.notes);
+        assert!(import.notes[0].line == 0 && import.notes[0].message.contains("angle increment"));
     }
 
     #[test]
@@ -1371,10 +1734,49 @@ mod tests {
         );
         resolves(&import);
         let lines: Vec<usize> = import.notes.iter().map(|n| n.line).collect();
-        assert_eq!(lines, [1, 2, 4, 5, 5, 5, 7], "{:?}", import.notes);
+        // `#define f(x) x` is expanded where it is used (line 2 needs no note).
+        assert_eq!(lines, [1, 4, 5, 5, 5, 7], "{:?}", import.notes);
         assert!(import
             .text
             .contains("// not imported: A(t) -> @c(1)~k(2)F(frob(1,t))"));
+    }
+
+    #[test]
+    fn lpy_helpers_tuples_and_the_iteration_number_are_translated() {
+        let import = import(
+            "def long(x):\n  return 2*x\ndef alpha(x): return 30\nTOP, dr = 10, 0.02\nAxiom: A(1)\nderivation length: 3\nproduction:\nA(n) :\n  if(n < TOP): produce F(long(n))+(alpha(n))A(n+dr)\nB(n) --> B(getIterationNb())\nendlsystem\n",
+            Flavour::Lpy,
+        );
+        resolves(&import);
+        assert_eq!(
+            body(&import),
+            [
+                "#define TOP 10",
+                "#define dr 0.02",
+                "axiom: A(1)",
+                "derivation length: 3",
+                "productions:",
+                "A(n) : (n < TOP) -> F((2*(n)))+((30))A(n+dr)",
+                "B(n) -> B((NumIt-1))",
+                "endlsystem",
+            ]
+        );
+        assert!(import.notes.is_empty(), "{:?}", import.notes);
+        assert!(import
+            .text
+            .contains("// L-Py's function long(x) = 2*x, inlined where it is called"));
+        let literal = super::import(
+            "Axiom: D(20,1)\nderivation length: 2\nproduction:\nD(20,k) : k > 0 --> D(20,k+1)F\nD(x,k) --> D(x,k)\nendlsystem\n",
+            Flavour::Lpy,
+        );
+        resolves(&literal);
+        assert!(
+            literal
+                .text
+                .contains("D(v_lit1,k) : v_lit1 == 20 && (k > 0) -> D(20,k+1)F"),
+            "{}",
+            literal.text
+        );
     }
 
     #[test]

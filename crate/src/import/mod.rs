@@ -11,6 +11,11 @@
 mod cpfg;
 mod green;
 mod lparser;
+mod vlab;
+mod zip;
+
+pub use vlab::{import_files, import_object, ObjectFile};
+pub use zip::unzip;
 
 use crate::diagnostics::{has_errors, LineIndex, Severity};
 use serde::Serialize;

@@ -7,6 +7,7 @@
 //! ten times thicker.
 
 pub mod curve;
+mod lines;
 pub mod parts;
 pub mod polygon;
 pub mod sphere;
@@ -15,6 +16,7 @@ mod tube;
 
 use crate::turtle::Skeleton;
 use glam::DVec3;
+pub use lines::{segment_lines, SegmentLines};
 pub use parts::{ChainPart, MeshParts, Part};
 
 /// The mesh as four flat arrays. **This is the one place the layout is defined**; the wasm
@@ -233,10 +235,45 @@ impl MeshBuffers {
 /// How a width value becomes a diameter in model units.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum WidthUnit {
-    /// One width unit is this fraction of the skeleton's bounding-box diagonal.
+    /// One width unit is this fraction of the skeleton's bounding-box diagonal; but when the
+    /// grammar sets no width (`Skeleton::widths_set`), at most [`DEFAULT_WIDTH_PER_LENGTH`] of its
+    /// internodes' median length, so that a plant of many short internodes (ABOP 1.24a) is drawn
+    /// thin, as in the book, not as beads as thick as they are long.
     Relative(f64),
     /// One width unit is this many model units.
     Absolute(f64),
+}
+
+/// The default width of an internode, where the grammar sets none, as a share of the internodes'
+/// median length (see [`WidthUnit::Relative`]).
+pub const DEFAULT_WIDTH_PER_LENGTH: f64 = 0.1;
+
+/// Model units per width unit for `skeleton` (see [`WidthUnit`]).
+pub fn resolve_width_unit(skeleton: &Skeleton, unit: WidthUnit) -> f64 {
+    match unit {
+        WidthUnit::Absolute(u) => u,
+        WidthUnit::Relative(fraction) => {
+            let relative = fraction * skeleton_diagonal(skeleton);
+            if skeleton.widths_set {
+                return relative;
+            }
+            let mut lengths: Vec<f64> = skeleton
+                .segments
+                .iter()
+                .map(|s| s.start.distance(s.end))
+                .collect();
+            if lengths.is_empty() {
+                return relative;
+            }
+            let middle = lengths.len() / 2;
+            let (_, median, _) = lengths.select_nth_unstable_by(middle, f64::total_cmp);
+            if *median > 0.0 && median.is_finite() {
+                relative.min(DEFAULT_WIDTH_PER_LENGTH * *median)
+            } else {
+                relative
+            }
+        }
+    }
 }
 
 /// Options of the mesh stage.
@@ -299,10 +336,7 @@ pub fn build_mesh_with_parts(
     skeleton: &Skeleton,
     options: &MeshOptions,
 ) -> (MeshBuffers, MeshParts) {
-    let unit = match options.width_unit {
-        WidthUnit::Absolute(u) => u,
-        WidthUnit::Relative(fraction) => fraction * skeleton_diagonal(skeleton),
-    };
+    let unit = resolve_width_unit(skeleton, options.width_unit);
     let mut builder = Builder::new(options, unit);
     let mut parts = MeshParts {
         segment_chain: vec![parts::NO_CHAIN; skeleton.segments.len()],
@@ -321,10 +355,12 @@ pub fn build_mesh_with_parts(
     builder.mesh.uvs.reserve(2 * estimate);
     builder.mesh.indices.reserve(6 * estimate);
     let joints = parts::joint_keys(skeleton);
+    let starts = parts::start_keys(skeleton);
     for chain in chains(skeleton, unit) {
         let start_cap = parts::start_cap(&joints, skeleton, &chain);
+        let end_dome = parts::end_dome(&starts, skeleton, &chain);
         let before = builder.mark();
-        builder.tube(skeleton, &chain, start_cap);
+        builder.tube(skeleton, &chain, start_cap, end_dome);
         let part = builder.part_since(before);
         let ranges = builder.element_ranges_since(&before);
         for &s in &chain {
@@ -334,6 +370,7 @@ pub fn build_mesh_with_parts(
             part,
             segments: chain,
             start_cap,
+            end_dome,
             ranges,
         });
     }
@@ -524,7 +561,8 @@ impl<'a> Builder<'a> {
             } else {
                 1
             };
-        let tubes = skeleton.segments.len() * (rings_per_segment + 2) * (self.sides + 1);
+        // Each segment's rings, and at most one start cap and one rounded end (about 3 rings).
+        let tubes = skeleton.segments.len() * (rings_per_segment + 4) * (self.sides + 1);
         let flats: usize = skeleton
             .polygons
             .iter()
@@ -616,14 +654,9 @@ impl<'a> Builder<'a> {
 
     /// The fallback for models too large to mesh: each segment as a coloured line.
     fn lines(&mut self, skeleton: &Skeleton) {
-        self.mesh.lines.reserve(6 * skeleton.segments.len());
-        self.mesh.line_colors.reserve(6 * skeleton.segments.len());
-        for s in &skeleton.segments {
-            for p in [s.start, s.end] {
-                self.mesh.lines.extend([p.x as f32, p.y as f32, p.z as f32]);
-                self.mesh.line_colors.extend(skeleton.color(s.color));
-            }
-        }
+        let lines = segment_lines(skeleton);
+        self.mesh.lines = lines.ends;
+        self.mesh.line_colors = lines.colors;
     }
 }
 
@@ -715,6 +748,9 @@ pub(crate) fn skeleton_diagonal(skeleton: &Skeleton) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Vertices of a rounded tube end with 8 sides: 3 rings of 8 and the apex.
+    const DOME: usize = 3 * 8 + 1;
     use crate::turtle::{Polygon, Segment, Sphere};
 
     fn segment(start: DVec3, end: DVec3, previous: Option<u32>) -> Segment {
@@ -890,7 +926,9 @@ mod tests {
             ..Skeleton::default()
         };
         let mesh = checked_mesh(&skeleton);
-        assert_eq!(mesh.vertex_count(), (18 + 18) + (18 + 9));
+        // The first tube's end, where the branch leaves it, is rounded (DOME: 3 rings of 8 and
+        // the apex), not a flat stump; the branch's own tip is a flat cap.
+        assert_eq!(mesh.vertex_count(), (18 + 9 + DOME) + (18 + 9));
     }
 
     #[test]

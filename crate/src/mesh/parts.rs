@@ -33,6 +33,8 @@ pub struct ChainPart {
     pub segments: Vec<u32>,
     /// Whether its start is capped (it does not start at another segment's end).
     pub start_cap: bool,
+    /// Whether its end is rounded (another segment starts there: a branch leaves it).
+    pub end_dome: bool,
     /// (first triangle counted from the part's first, segment) pairs: the segment that drew
     /// each of its triangles (which gives their module and colour index).
     pub ranges: Vec<u32>,
@@ -64,6 +66,24 @@ pub fn joint_keys(skeleton: &Skeleton) -> Vec<[u64; 3]> {
     joints
 }
 
+/// The start point of every segment as an exact key, sorted: where a chain's end is rounded.
+pub fn start_keys(skeleton: &Skeleton) -> Vec<[u64; 3]> {
+    let mut starts: Vec<[u64; 3]> = skeleton
+        .segments
+        .iter()
+        .map(|s| super::key(s.start))
+        .collect();
+    starts.sort_unstable();
+    starts
+}
+
+/// Whether a chain's tube ends in a rounded dome rather than a flat cap: where another segment
+/// starts at its end (branches leave it there), so they grow out of a round joint, not a stump.
+pub fn end_dome(starts: &[[u64; 3]], skeleton: &Skeleton, chain: &[u32]) -> bool {
+    let end = super::key(skeleton.segments[chain[chain.len() - 1] as usize].end);
+    starts.binary_search(&end).is_ok()
+}
+
 /// Whether a chain's tube gets a start cap: not when it starts where a segment ends (a branch
 /// growing out of a joint starts inside its parent's tube).
 pub fn start_cap(joints: &[[u64; 3]], skeleton: &Skeleton, chain: &[u32]) -> bool {
@@ -91,9 +111,10 @@ pub fn chain_mesh(
     unit: f64,
     chain: &[u32],
     start_cap: bool,
+    end_dome: bool,
 ) -> (MeshBuffers, Vec<u32>) {
     let mut builder = Builder::new(options, unit);
-    builder.tube(skeleton, chain, start_cap);
+    builder.tube(skeleton, chain, start_cap, end_dome);
     let ranges = builder.element_ranges_since(&[0, 0, 0]);
     (builder.mesh, ranges)
 }
@@ -207,6 +228,7 @@ mod tests {
                 unit,
                 &c.segments,
                 c.start_cap,
+                c.end_dome,
             );
             assert_eq!(ranges, c.ranges);
             assert!(write_part(&mut copy, &c.part, &alone, true));
@@ -243,6 +265,7 @@ mod tests {
             unit,
             &parts.chains[0].segments,
             true,
+            false,
         );
         let small = Part {
             vertices: 3,

@@ -38,8 +38,105 @@ pub fn triangulate(points: &[DVec3]) -> Triangulation {
         return empty;
     }
     let normal = newell.normalize();
-    let triangles = Outline::new(points, normal, size).clip_ears();
+    let triangles = if points.len() <= CLIP_EARS_UP_TO {
+        Outline::new(points, normal, size).clip_ears()
+    } else {
+        let tolerance = EPSILON * size * size;
+        let triangles = if let Some(fan) = convex_fan(points, normal, tolerance) {
+            fan
+        } else if points.len() <= EARCUT_UP_TO {
+            earcut(points, normal)
+        } else {
+            fan_from_first(points.len())
+        };
+        keep_counter_clockwise(points, normal, triangles, tolerance)
+    };
     Triangulation { normal, triangles }
+}
+
+/// The most points a polygon may have for our own ear clipping, whose cost grows with the square
+/// of the points (or worse). Larger ones are a fan when convex (linear), else go to the `earcut`
+/// crate, which indexes the points by z-order (up to [`EARCUT_UP_TO`] points).
+const CLIP_EARS_UP_TO: usize = 256;
+
+/// A fan from the first point, when the polygon turns left (or runs straight) at every point and
+/// goes round once (`tolerance`: twice an area that counts as none): the common large polygon (a disc, a round leaf of many points), for which
+/// earcut's thin ears cost it the square of the points.
+fn convex_fan(points: &[DVec3], normal: DVec3, tolerance: f64) -> Option<Vec<[u32; 3]>> {
+    let (u, v) = plane_basis(normal);
+    let flat: Vec<DVec2> = points
+        .iter()
+        .map(|p| DVec2::new(p.dot(u), p.dot(v)))
+        .collect();
+    let n = flat.len();
+    let mut winding = 0.0;
+    for i in 0..n {
+        let (a, b, c) = (flat[i], flat[(i + 1) % n], flat[(i + 2) % n]);
+        if cross(a, b, c) < -tolerance {
+            return None;
+        }
+        let (d, e) = (b - a, c - b);
+        if d != DVec2::ZERO && e != DVec2::ZERO {
+            winding += d.angle_to(e);
+        }
+    }
+    // Once round, not a loop that winds twice over itself.
+    if (winding - std::f64::consts::TAU).abs() > 0.1 {
+        return None;
+    }
+    Some(fan_from_first(n))
+}
+
+/// The most points of a concave polygon `earcut` is given: on outlines close to a circle its ears
+/// grow long and its cost goes with the square of the points (20,000 points: under a second). A
+/// larger concave polygon is drawn as a fan from its first point, in linear time, without the
+/// fan's triangles that would fold back over a notch (so a notch may leave a gap).
+const EARCUT_UP_TO: usize = 20_000;
+
+/// The triangles that turn counter-clockwise about `normal` with more than `tolerance` (twice
+/// their area): earcut's slivers between collinear points and a fan's folds over a notch go.
+fn keep_counter_clockwise(
+    points: &[DVec3],
+    normal: DVec3,
+    mut triangles: Vec<[u32; 3]>,
+    tolerance: f64,
+) -> Vec<[u32; 3]> {
+    triangles.retain(|t| {
+        let [a, b, c] = t.map(|i| points[i as usize]);
+        (b - a).cross(c - a).dot(normal) > tolerance
+    });
+    triangles
+}
+
+/// Triangles `0 i i+1` over a loop of `n` points.
+fn fan_from_first(n: usize) -> Vec<[u32; 3]> {
+    (1..n as u32 - 1).map(|i| [0, i, i + 1]).collect()
+}
+
+/// Triangles of a large polygon by `earcut`, counter-clockwise about `normal`.
+fn earcut(points: &[DVec3], normal: DVec3) -> Vec<[u32; 3]> {
+    let (u, v) = plane_basis(normal);
+    let flat: Vec<[f64; 2]> = points.iter().map(|p| [p.dot(u), p.dot(v)]).collect();
+    let mut indices: Vec<u32> = Vec::new();
+    earcut::Earcut::new().earcut(flat.iter().copied(), &[], &mut indices);
+    indices
+        .chunks_exact(3)
+        .map(|t| {
+            let [a, b, c] = [t[0], t[1], t[2]].map(|i| DVec2::from(flat[i as usize]));
+            if cross(a, b, c) < 0.0 {
+                [t[0], t[2], t[1]]
+            } else {
+                [t[0], t[1], t[2]]
+            }
+        })
+        .collect()
+}
+
+/// A right-handed basis of the plane facing `normal`, so counter-clockwise about `normal` is
+/// counter-clockwise in 2-D.
+fn plane_basis(normal: DVec3) -> (DVec3, DVec3) {
+    let u = normal.any_orthonormal_vector();
+    (u, normal.cross(u))
 }
 
 /// Newell's normal of a closed loop, not normalized: twice its area along its normal.
@@ -76,9 +173,7 @@ impl Outline {
     /// `points` projected onto the plane through the origin facing `normal`, without repeated
     /// points (including the last equal to the first). `size` is the polygon's extent.
     fn new(points: &[DVec3], normal: DVec3, size: f64) -> Outline {
-        // A right-handed basis of the plane, so counter-clockwise about `normal` is counter-clockwise in 2D.
-        let u = normal.any_orthonormal_vector();
-        let v = normal.cross(u);
+        let (u, v) = plane_basis(normal);
         let flat: Vec<DVec2> = points
             .iter()
             .map(|p| DVec2::new(p.dot(u), p.dot(v)))
@@ -209,6 +304,37 @@ mod tests {
         assert!((area(&square, &t) - 1.0).abs() < 1e-12);
         let reversed: Vec<DVec3> = square.iter().rev().copied().collect();
         assert_eq!(triangulate(&reversed).normal, -DVec3::Z);
+    }
+
+    #[test]
+    fn a_large_polygon_is_cut_by_earcut_with_its_whole_area_facing_its_winding() {
+        // A star of 4,000 points (concave everywhere), far above what ear clipping is given.
+        let n = 4000;
+        let star: Vec<DVec3> = (0..n)
+            .map(|i| {
+                let a = std::f64::consts::TAU * i as f64 / n as f64;
+                let r = if i % 2 == 0 { 1.0 } else { 0.8 };
+                DVec3::new(r * a.cos(), r * a.sin(), 0.0)
+            })
+            .collect();
+        let t = triangulate(&star);
+        assert_eq!(t.normal, DVec3::Z);
+        assert_eq!(t.triangles.len(), n - 2);
+        let shoelace: f64 = (0..n)
+            .map(|i| {
+                let (a, b) = (star[i], star[(i + 1) % n]);
+                0.5 * (a.x * b.y - b.x * a.y)
+            })
+            .sum();
+        assert!(
+            (area(&star, &t) - shoelace).abs() < 1e-9,
+            "{}",
+            area(&star, &t)
+        );
+        for &[a, b, c] in &t.triangles {
+            let (a, b, c) = (star[a as usize], star[b as usize], star[c as usize]);
+            assert!((b - a).cross(c - a).z >= 0.0);
+        }
     }
 
     #[test]

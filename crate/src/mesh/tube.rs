@@ -1,11 +1,15 @@
 //! Tubes: an axis of the skeleton (a chain of segments that continue each other) becomes a ring
-//! of `sides + 1` vertices at each sample along it, quads between the rings and a flat cap at
-//! each end. A smooth axis is sampled along Bézier pieces through its joints; a straight one at
+//! of `sides + 1` vertices at each sample along it, quads between the rings, a flat cap at its
+//! start (where it does not grow out of a joint) and at its end, rounded where branches leave it. A smooth axis is sampled along Bézier pieces through its joints; a straight one at
 //! its joints, each ring across the bisector of the segments it joins.
 
 use super::{curve, Builder, MATERIAL_BARK};
 use crate::turtle::{Segment, Skeleton};
 use glam::DVec3;
+
+/// Rings of a tube's rounded end below its apex (the first is the tube's last ring, with the
+/// dome's normals).
+const DOME_STEPS: usize = 3;
 
 /// A point on a tube's axis where a ring of vertices goes.
 #[derive(Clone, Copy, Debug)]
@@ -19,9 +23,15 @@ struct AxisSample {
 }
 
 impl Builder<'_> {
-    /// The tube of `chain` (segment indices, each continuing the one before), capped at its end
-    /// and, when `start_cap`, at its start.
-    pub(super) fn tube(&mut self, skeleton: &Skeleton, chain: &[u32], start_cap: bool) {
+    /// The tube of `chain` (segment indices, each continuing the one before), capped at its start
+    /// when `start_cap`, and at its end by a dome when `end_dome` (branches leave there), else flat.
+    pub(super) fn tube(
+        &mut self,
+        skeleton: &Skeleton,
+        chain: &[u32],
+        start_cap: bool,
+        end_dome: bool,
+    ) {
         let segments: Vec<&Segment> = chain
             .iter()
             .map(|&i| &skeleton.segments[i as usize])
@@ -31,7 +41,14 @@ impl Builder<'_> {
             return;
         }
         let rings = self.rings(skeleton, &segments, &samples);
-        self.tube_triangles(skeleton, chain, &segments, &samples, &rings, start_cap);
+        self.tube_triangles(
+            skeleton,
+            chain,
+            &segments,
+            &samples,
+            &rings,
+            [start_cap, end_dome],
+        );
     }
 
     /// Where the rings of the tube through `segments` go: along the curve through the joints when
@@ -126,7 +143,7 @@ impl Builder<'_> {
         segments: &[&Segment],
         samples: &[AxisSample],
         rings: &[u32],
-        start_cap: bool,
+        [start_cap, end_dome]: [bool; 2],
     ) {
         let n = self.sides as u32;
         // Start cap, facing back along the axis.
@@ -158,13 +175,55 @@ impl Builder<'_> {
         self.element = chain[chain.len() - 1];
         self.range(end.module, end.color);
         let c = skeleton.color(end.color);
-        self.cap(
-            samples[last].point,
-            samples[last].tangent,
-            rings[last],
-            c,
-            false,
-        );
+        let (point, tangent) = (samples[last].point, samples[last].tangent);
+        if end_dome {
+            self.dome(point, tangent, rings[last], c);
+        } else {
+            self.cap(point, tangent, rings[last], c, false);
+        }
+    }
+
+    /// A rounded end closing a tube: a quarter circle of rings from the last ring to a point on
+    /// the axis half a width beyond it, facing `normal` (the axis's direction). Where branches
+    /// leave the end of an axis, they grow out of this dome, not out of a flat, faceted stump; a
+    /// tip is rounded as a line's end is.
+    fn dome(&mut self, center: DVec3, normal: DVec3, ring: u32, c: [f32; 3]) {
+        let n = self.sides as u32;
+        let read = |array: &[f32], j: u32| {
+            let i = (ring + j) as usize * 3;
+            DVec3::new(array[i] as f64, array[i + 1] as f64, array[i + 2] as f64)
+        };
+        let offsets: Vec<DVec3> = (0..n)
+            .map(|j| read(&self.mesh.positions, j) - center)
+            .collect();
+        // The ring's own normals point out of the tube (as the full mesh and a partial one agree).
+        let outs: Vec<DVec3> = (0..n).map(|j| read(&self.mesh.normals, j)).collect();
+        let radius = offsets.iter().map(|o| o.length()).sum::<f64>() / n as f64;
+        let mut rings = Vec::with_capacity(DOME_STEPS);
+        for step in 0..DOME_STEPS {
+            let angle = std::f64::consts::FRAC_PI_2 * step as f64 / DOME_STEPS as f64;
+            let (sin, cos) = angle.sin_cos();
+            let first = self.mesh.vertex_count() as u32;
+            for (j, (offset, out)) in offsets.iter().zip(&outs).enumerate() {
+                let (u, v) = (j as f32 / n as f32, 0.5 + 0.5 * sin as f32);
+                let position = center + *offset * cos + normal * (radius * sin);
+                self.vertex(position, (*out * cos + normal * sin).normalize(), c, [u, v]);
+            }
+            rings.push(first);
+        }
+        let apex = self.vertex(center + normal * radius, normal, c, [0.5, 1.0]);
+        for pair in rings.windows(2) {
+            let (a0, b0) = (pair[0], pair[1]);
+            for j in 0..n {
+                let next = (j + 1) % n;
+                let (a, b, c, d) = (a0 + j, a0 + next, b0 + j, b0 + next);
+                self.mesh.indices.extend([a, b, c, b, d, c]);
+            }
+        }
+        let top = rings[rings.len() - 1];
+        for j in 0..n {
+            self.mesh.indices.extend([apex, top + j, top + (j + 1) % n]);
+        }
     }
 
     /// A flat disk closing a tube: a fan around a centre vertex facing `normal`. The ring's order

@@ -24,6 +24,14 @@ impl LString {
         self.ids.is_empty()
     }
 
+    /// The bytes the string's modules take: ids, offsets and parameters (not spare capacity).
+    #[inline]
+    pub fn bytes(&self) -> usize {
+        self.ids.len() * size_of::<ModuleId>()
+            + self.offsets.len() * size_of::<u32>()
+            + self.params.len() * size_of::<f64>()
+    }
+
     /// True when the string stores parameters (`offsets` is filled).
     pub fn is_parametric(&self) -> bool {
         !self.offsets.is_empty()

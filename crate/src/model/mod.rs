@@ -3,14 +3,16 @@
 //! at text or re-check anything.
 
 mod alphabet;
+mod curve;
 mod lstring;
 mod program;
 mod resolve;
 mod settings;
 
 pub use alphabet::{Alphabet, ModuleId};
+pub use curve::{Curve, CurveKind};
 pub use lstring::LString;
-pub use program::{Env, EvalError, Program, Scope, MAX_STACK};
+pub use program::{Env, EvalError, Program, RandomVariable, Scope, MAX_OPS, MAX_STACK};
 pub use resolve::resolve;
 pub use settings::{
     directive_default, Bend, GrowthAttributes, Lifetime, Settings, Shape, ShapeWidth, Speed, Sun,
@@ -123,13 +125,6 @@ impl RuleSet {
     pub fn has_contexts(&self) -> bool {
         self.productions.iter().any(Production::has_context)
     }
-}
-
-/// A `#random` variable: a name and the distribution each deviate is drawn from.
-#[derive(Clone, Debug, PartialEq)]
-pub struct RandomVariable {
-    pub name: String,
-    pub distribution: Program,
 }
 
 /// A validated grammar: everything later stages need, nothing they must check again.

@@ -2,14 +2,25 @@
 //! resolved when compiling (formal parameters become slots, `#define` constants are inlined), so
 //! evaluation never looks at text.
 
+use super::curve::Curve;
 use crate::diagnostics::Diagnostic;
 use crate::syntax::{BinaryOp, ExprSyntax, Span, UnaryOp};
 use crate::vocabulary::{function_named, value_named, Function, Value};
 use rand::RngExt;
 use rand_distr::{Binomial, Distribution, Exp, Normal, Poisson};
+use std::sync::Arc;
 
 /// Deepest evaluation stack a compiled expression may need.
 pub const MAX_STACK: usize = 64;
+
+/// Most operations one compiled expression may have, `#define` names expanded (`E0128`): an
+/// expression is evaluated for every module it rewrites, so its size multiplies every step's cost.
+pub const MAX_OPS: usize = 10_000;
+
+/// Deepest the compiler recurses into one expression, `#define` names expanded (`E0121`). The
+/// parser bounds nesting to [`crate::syntax::MAX_EXPRESSION_DEPTH`] levels, each of which makes at
+/// most eight nodes, one inside the other.
+const MAX_COMPILE_DEPTH: usize = 8 * crate::syntax::MAX_EXPRESSION_DEPTH;
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Op {
@@ -25,6 +36,8 @@ enum Op {
     Truth,
     Bin(BinaryOp),
     Call(Function),
+    /// A `#curve` or `#table` function of the top of the stack: an index into `Program::curves`.
+    Curve(u16),
     /// Jump to the op index when the popped value is false (zero).
     JumpIfFalse(u32),
     Jump(u32),
@@ -42,6 +55,8 @@ pub struct Program {
     pub random: bool,
     /// The deepest the evaluation stack gets.
     stack_depth: usize,
+    /// The `#curve` and `#table` functions the expression calls.
+    curves: Vec<Arc<Curve>>,
 }
 
 /// What names mean while compiling one expression.
@@ -50,8 +65,17 @@ pub trait Scope {
     fn slot(&self, name: &str) -> Option<u16>;
     /// The expression of a `#define` constant.
     fn define(&self, name: &str) -> Option<&ExprSyntax>;
+    /// The value of a `#define` whose expression is a constant, computed once when the grammar
+    /// is read (`None` for one that must be expanded where it is used).
+    fn define_value(&self, _name: &str) -> Option<f64> {
+        None
+    }
     /// The index of a `#random` variable.
     fn random_var(&self, name: &str) -> Option<u16>;
+    /// A `#curve` or `#table` function.
+    fn curve(&self, _name: &str) -> Option<Arc<Curve>> {
+        None
+    }
 }
 
 /// Why an evaluation failed; turned into a diagnostic at the op's span.
@@ -76,9 +100,20 @@ pub struct Env<'a, R: rand::Rng + ?Sized> {
     /// `fresh_vars` is true every use draws anew instead.
     pub vars: &'a mut [Option<f64>],
     pub fresh_vars: bool,
-    /// The distributions of the `#random` variables.
-    pub var_programs: &'a [Program],
+    /// The `#random` variables: their distributions and what each depends on.
+    pub variables: &'a [RandomVariable],
     pub rng: &'a mut R,
+}
+
+/// A `#random` variable: a name, the distribution each deviate is drawn from, and the variables
+/// that distribution reads (directly or through others), in the order they must be drawn.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RandomVariable {
+    pub name: String,
+    pub distribution: Program,
+    /// Every variable the distribution depends on, directly or not, each before those that read
+    /// it; empty for a variable that reads no other (the usual case).
+    pub depends_on: Vec<u16>,
 }
 
 impl Program {
@@ -90,14 +125,18 @@ impl Program {
             scope,
             expanding: Vec::new(),
             random: false,
+            root: expr.span(),
+            curves: Vec::new(),
         };
         c.expr(expr, 0)?;
+        c.check_size()?;
         let mut program = Program {
             ops: c.ops,
             spans: c.spans,
             span: expr.span(),
             random: c.random,
             stack_depth: 0,
+            curves: c.curves,
         };
         program.stack_depth = program.max_stack();
         if program.stack_depth > MAX_STACK {
@@ -108,6 +147,29 @@ impl Program {
             ));
         }
         Ok(program)
+    }
+
+    /// A program that gives `value`, written at `span`.
+    pub fn constant_at(value: f64, span: Span) -> Program {
+        Program {
+            ops: vec![Op::Const(value)],
+            spans: vec![span.clone()],
+            span,
+            random: false,
+            stack_depth: 1,
+            curves: Vec::new(),
+        }
+    }
+
+    /// The `#random` variables the expression reads, each with where it is written.
+    pub fn variables(&self) -> impl Iterator<Item = (u16, &Span)> + '_ {
+        self.ops
+            .iter()
+            .zip(&self.spans)
+            .filter_map(|(op, span)| match op {
+                Op::Var(k) => Some((*k, span)),
+                _ => None,
+            })
     }
 
     /// The constant value, when the expression has no names and draws nothing.
@@ -124,7 +186,7 @@ impl Program {
         for op in &self.ops {
             depth += match op {
                 Op::Const(_) | Op::Slot(_) | Op::NumIt | Op::MaxIt | Op::Var(_) => 1,
-                Op::Neg | Op::Not | Op::Truth | Op::Jump(_) => 0,
+                Op::Neg | Op::Not | Op::Truth | Op::Jump(_) | Op::Curve(_) => 0,
                 Op::Bin(_) | Op::JumpIfFalse(_) => -1,
                 Op::Call(f) => 1 - f.info().arity() as isize,
             };
@@ -137,8 +199,18 @@ impl Program {
     /// results that are not finite numbers are errors, never silent NaNs.
     #[inline]
     pub fn eval<R: rand::Rng + ?Sized>(&self, env: &mut Env<'_, R>) -> Result<f64, EvalError> {
-        if let [Op::Const(v)] = self.ops.as_slice() {
-            return Ok(*v);
+        // The commonest shapes (a constant, a parameter, a parameter and a constant) without the
+        // interpreter loop; a value that is not finite takes the loop, which reports it.
+        let slot = |s: &u16| env.slots.get(*s as usize).copied().unwrap_or(0.0);
+        let quick = match self.ops.as_slice() {
+            [Op::Const(v)] => return Ok(*v),
+            [Op::Slot(s)] => Some(slot(s)),
+            [Op::Slot(s), Op::Const(c), Op::Bin(op)] => quick_binary(*op, slot(s), *c),
+            [Op::Const(c), Op::Slot(s), Op::Bin(op)] => quick_binary(*op, *c, slot(s)),
+            _ => None,
+        };
+        if let Some(v) = quick.filter(|v| v.is_finite()) {
+            return Ok(v);
         }
         // Most expressions need a few slots: a small stack is cheaper to set up.
         if self.stack_depth <= 8 {
@@ -196,6 +268,7 @@ impl Program {
                     stack[sp] = value;
                     sp += 1;
                 }
+                Op::Curve(k) => stack[sp - 1] = self.curves[k as usize].value(stack[sp - 1]),
                 Op::JumpIfFalse(target) => {
                     sp -= 1;
                     if stack[sp] == 0.0 {
@@ -228,31 +301,86 @@ impl Program {
 }
 
 /// The value of random variable `k` (`#random`): the module's deviate, drawn on first use, or a
-/// fresh one when `env.fresh_vars`.
+/// fresh one when `env.fresh_vars`. A variable that reads others has them drawn first, in the order
+/// [`RandomVariable::depends_on`] gives (the module's deviates, or fresh ones with it), so nothing
+/// here recurses deeper than one variable.
 #[inline]
 fn deviate<R: rand::Rng + ?Sized>(env: &mut Env<'_, R>, k: usize) -> Result<f64, EvalError> {
-    if let Some(v) = env.vars.get(k).copied().flatten() {
-        if !env.fresh_vars {
+    if !env.fresh_vars {
+        if let Some(v) = env.vars.get(k).copied().flatten() {
             return Ok(v);
         }
     }
-    let program = &env.var_programs[k];
-    let mut inner = Env {
-        slots: &[],
-        num_it: env.num_it,
-        max_it: env.max_it,
-        vars: &mut [],
-        fresh_vars: true,
-        var_programs: &[],
-        rng: &mut *env.rng,
+    let Some(variable) = env.variables.get(k) else {
+        return Err(EvalError {
+            message: "a #random variable that was never defined".into(),
+            span: 0..0,
+        });
     };
-    let v = program.eval(&mut inner)?;
-    if !env.fresh_vars {
-        if let Some(slot) = env.vars.get_mut(k) {
-            *slot = Some(v);
+    let variables = env.variables;
+    if variable.depends_on.is_empty() {
+        let v = draw(
+            variable,
+            variables,
+            &mut [],
+            env.num_it,
+            env.max_it,
+            env.rng,
+        )?;
+        if !env.fresh_vars {
+            if let Some(slot) = env.vars.get_mut(k) {
+                *slot = Some(v);
+            }
+        }
+        return Ok(v);
+    }
+    let mut fresh = Vec::new();
+    let drawn: &mut [Option<f64>] = if env.fresh_vars {
+        fresh.resize(variables.len(), None);
+        &mut fresh
+    } else {
+        &mut *env.vars
+    };
+    for &j in &variable.depends_on {
+        let j = j as usize;
+        if drawn.get(j).copied().flatten().is_none() {
+            let v = draw(
+                &variables[j],
+                variables,
+                drawn,
+                env.num_it,
+                env.max_it,
+                env.rng,
+            )?;
+            drawn[j] = Some(v);
         }
     }
+    let v = draw(variable, variables, drawn, env.num_it, env.max_it, env.rng)?;
+    if let Some(slot) = drawn.get_mut(k) {
+        *slot = Some(v);
+    }
     Ok(v)
+}
+
+/// One deviate of `variable`, the variables it reads taken from `drawn`.
+fn draw<R: rand::Rng + ?Sized>(
+    variable: &RandomVariable,
+    variables: &[RandomVariable],
+    drawn: &mut [Option<f64>],
+    num_it: f64,
+    max_it: f64,
+    rng: &mut R,
+) -> Result<f64, EvalError> {
+    let mut inner = Env {
+        slots: &[],
+        num_it,
+        max_it,
+        vars: drawn,
+        fresh_vars: false,
+        variables,
+        rng,
+    };
+    variable.distribution.eval(&mut inner)
 }
 
 /// `a op b`, or `None` for a division (or remainder) by zero.
@@ -274,6 +402,17 @@ fn evaluate_binary(op: BinaryOp, a: f64, b: f64) -> Option<f64> {
         BinaryOp::Ne => truth(a != b),
         BinaryOp::And | BinaryOp::Or => unreachable_logic(a, b, op),
     })
+}
+
+/// `a op b` for the operators that cannot fail (before the finite check), as the loop computes it.
+#[inline(always)]
+fn quick_binary(op: BinaryOp, a: f64, b: f64) -> Option<f64> {
+    match op {
+        BinaryOp::Add => Some(a + b),
+        BinaryOp::Sub => Some(a - b),
+        BinaryOp::Mul => Some(a * b),
+        _ => None,
+    }
 }
 
 /// `&&` and `||` compile to jumps, so they never reach `Op::Bin`; this keeps the match total.
@@ -371,6 +510,9 @@ struct Compiler<'a> {
     /// `#define` names being expanded, to catch cycles.
     expanding: Vec<String>,
     random: bool,
+    /// The whole expression's span, where `E0128` points.
+    root: Span,
+    curves: Vec<Arc<Curve>>,
 }
 
 impl Compiler<'_> {
@@ -388,14 +530,53 @@ impl Compiler<'_> {
         }
     }
 
-    fn expr(&mut self, e: &ExprSyntax, depth: usize) -> Result<(), Diagnostic> {
-        if depth > 4 * crate::syntax::MAX_EXPRESSION_DEPTH {
-            return Err(Diagnostic::error(
-                "E0121",
-                e.span(),
-                "expression nested too deeply (through #define)",
-            ));
+    /// The `#define` names being expanded, `a -> b -> c` (the middle of a long chain left out).
+    fn expansion(&self) -> String {
+        let names = &self.expanding;
+        if names.len() <= 4 {
+            return names.join(" -> ");
         }
+        format!(
+            "{} -> {} -> … -> {}",
+            names[0],
+            names[1],
+            names[names.len() - 1]
+        )
+    }
+
+    /// `E0128` once the expression has more than [`MAX_OPS`] operations.
+    fn check_size(&self) -> Result<(), Diagnostic> {
+        if self.ops.len() <= MAX_OPS {
+            return Ok(());
+        }
+        let through = if self.expanding.is_empty() {
+            String::new()
+        } else {
+            format!(" once #define {} is expanded", self.expansion())
+        };
+        Err(Diagnostic::error(
+            "E0128",
+            self.root.clone(),
+            format!(
+                "expression too large: it needs more than {MAX_OPS} operations{through}; \
+                 split it into smaller expressions or use fewer terms"
+            ),
+        ))
+    }
+
+    fn expr(&mut self, e: &ExprSyntax, depth: usize) -> Result<(), Diagnostic> {
+        if depth > MAX_COMPILE_DEPTH {
+            let message = if self.expanding.is_empty() {
+                format!("expression nested more than {MAX_COMPILE_DEPTH} levels deep")
+            } else {
+                format!(
+                    "expression nested more than {MAX_COMPILE_DEPTH} levels deep once #define {} is expanded",
+                    self.expansion()
+                )
+            };
+            return Err(Diagnostic::error("E0121", e.span(), message));
+        }
+        self.check_size()?;
         // The depth of the operands.
         let inner = depth + 1;
         match e {
@@ -404,23 +585,19 @@ impl Compiler<'_> {
             }
             ExprSyntax::Name(name, span) => self.name(name, span, depth)?,
             ExprSyntax::Unary(op, x, span) => self.unary(*op, x, span, inner)?,
-            // a && b  =>  a ? truth(b) : 0
-            ExprSyntax::Binary(BinaryOp::And, a, b, span) => self.conditional(
-                a,
-                span,
-                inner,
-                |c| c.truth(b, span, inner),
-                |c| c.constant(0.0, span),
-            )?,
-            // a || b  =>  a ? 1 : truth(b)
-            ExprSyntax::Binary(BinaryOp::Or, a, b, span) => self.conditional(
-                a,
-                span,
-                inner,
-                |c| c.constant(1.0, span),
-                |c| c.truth(b, span, inner),
-            )?,
-            ExprSyntax::Binary(op, a, b, span) => self.binary(*op, a, b, span, inner)?,
+            ExprSyntax::Binary(op, a, b, span) => {
+                let start = self.ops.len();
+                self.expr(a, inner)?;
+                self.link(start, *op, b, span, inner)?;
+            }
+            ExprSyntax::Chain(first, links) => {
+                let start = self.ops.len();
+                self.expr(first, inner)?;
+                for (op, b, span) in links {
+                    self.check_size()?;
+                    self.link(start, *op, b, span, inner)?;
+                }
+            }
             ExprSyntax::Conditional(c, a, b, span) => {
                 self.conditional(c, span, inner, |s| s.expr(a, inner), |s| s.expr(b, inner))?
             }
@@ -429,6 +606,28 @@ impl Compiler<'_> {
             }
         }
         Ok(())
+    }
+
+    /// `left op b`, where the ops of `left` (already compiled) start at `start`.
+    fn link(
+        &mut self,
+        start: usize,
+        op: BinaryOp,
+        b: &ExprSyntax,
+        span: &Span,
+        depth: usize,
+    ) -> Result<(), Diagnostic> {
+        match op {
+            // a && b  =>  a ? truth(b) : 0
+            BinaryOp::And => {
+                self.branch(span, |c| c.truth(b, span, depth), |c| c.constant(0.0, span))
+            }
+            // a || b  =>  a ? 1 : truth(b)
+            BinaryOp::Or => {
+                self.branch(span, |c| c.constant(1.0, span), |c| c.truth(b, span, depth))
+            }
+            _ => self.binary(start, op, b, span, depth),
+        }
     }
 
     /// `-x` or `!x`, folded when `x` is a constant. `depth` is that of `x`.
@@ -457,8 +656,7 @@ impl Compiler<'_> {
         Ok(())
     }
 
-    /// `condition ? then : otherwise`, the branches compiled by `then` and `otherwise`: a jump
-    /// past `then` when the condition is false, and one past `otherwise` after `then`. `depth`
+    /// `condition ? then : otherwise`, the branches compiled by `then` and `otherwise`. `depth`
     /// is that of the condition.
     fn conditional(
         &mut self,
@@ -469,6 +667,17 @@ impl Compiler<'_> {
         otherwise: impl FnOnce(&mut Self) -> Result<(), Diagnostic>,
     ) -> Result<(), Diagnostic> {
         self.expr(condition, depth)?;
+        self.branch(span, then, otherwise)
+    }
+
+    /// With the condition's value on the stack: a jump past `then` when it is false, and one
+    /// past `otherwise` after `then`.
+    fn branch(
+        &mut self,
+        span: &Span,
+        then: impl FnOnce(&mut Self) -> Result<(), Diagnostic>,
+        otherwise: impl FnOnce(&mut Self) -> Result<(), Diagnostic>,
+    ) -> Result<(), Diagnostic> {
         let jump_false = self.emit(Op::JumpIfFalse(0), span.clone());
         then(self)?;
         let jump_end = self.emit(Op::Jump(0), span.clone());
@@ -491,19 +700,17 @@ impl Compiler<'_> {
         Ok(())
     }
 
-    /// `a op b` for an operator other than `&&` and `||`, folded when both operands are
-    /// constants (not a division by zero, nor a result that is not finite: those stay runtime
-    /// errors). `depth` is that of the operands.
+    /// `left op b` for an operator other than `&&` and `||`, where the ops of `left` start at
+    /// `start`; folded when both operands are constants (not a division by zero, nor a result
+    /// that is not finite: those stay runtime errors). `depth` is that of `b`.
     fn binary(
         &mut self,
+        start: usize,
         op: BinaryOp,
-        a: &ExprSyntax,
         b: &ExprSyntax,
         span: &Span,
         depth: usize,
     ) -> Result<(), Diagnostic> {
-        let start = self.ops.len();
-        self.expr(a, depth)?;
         self.expr(b, depth)?;
         if let [Op::Const(x), Op::Const(y)] = self.ops[start..] {
             if let Some(v) = evaluate_binary(op, x, y).filter(|v| v.is_finite()) {
@@ -527,6 +734,9 @@ impl Compiler<'_> {
         depth: usize,
     ) -> Result<(), Diagnostic> {
         let Some(info) = function_named(name) else {
+            if let Some(curve) = self.scope.curve(name) {
+                return self.curve_call(name, curve, args, span, depth);
+            }
             return Err(self.not_a_function(name, name_span));
         };
         let (arity, f) = (info.arity(), info.function);
@@ -548,6 +758,39 @@ impl Compiler<'_> {
             self.random = true;
         }
         self.emit(Op::Call(f), span.clone());
+        Ok(())
+    }
+
+    /// A call of a `#curve` or `#table` function: one argument, folded when it is a constant.
+    fn curve_call(
+        &mut self,
+        name: &str,
+        curve: Arc<Curve>,
+        args: &[ExprSyntax],
+        span: &Span,
+        depth: usize,
+    ) -> Result<(), Diagnostic> {
+        let [arg] = args else {
+            return Err(Diagnostic::error(
+                "E0502",
+                span.clone(),
+                format!("{name} takes 1 argument, not {}", args.len()),
+            ));
+        };
+        let start = self.ops.len();
+        self.expr(arg, depth)?;
+        if let [Op::Const(x)] = self.ops[start..] {
+            self.ops[start] = Op::Const(curve.value(x));
+            return Ok(());
+        }
+        let index = match self.curves.iter().position(|c| Arc::ptr_eq(c, &curve)) {
+            Some(i) => i,
+            None => {
+                self.curves.push(curve);
+                self.curves.len() - 1
+            }
+        };
+        self.emit(Op::Curve(index as u16), span.clone());
         Ok(())
     }
 
@@ -583,6 +826,8 @@ impl Compiler<'_> {
         } else if let Some(k) = self.scope.random_var(name) {
             self.random = true;
             self.emit(Op::Var(k), span.clone());
+        } else if let Some(value) = self.scope.define_value(name) {
+            self.emit(Op::Const(value), span.clone());
         } else if let Some(definition) = self.scope.define(name) {
             if self.expanding.iter().any(|n| n == name) {
                 return Err(Diagnostic::error(
@@ -597,10 +842,9 @@ impl Compiler<'_> {
                 ));
             }
             self.expanding.push(name.to_string());
-            let definition = definition.clone();
-            self.expr(&definition, depth + 1)?;
+            self.expr(definition, depth + 1)?;
             self.expanding.pop();
-        } else if function_named(name).is_some() {
+        } else if function_named(name).is_some() || self.scope.curve(name).is_some() {
             return Err(Diagnostic::error(
                 "E0504",
                 span.clone(),
@@ -648,7 +892,7 @@ mod tests {
             max_it: 5.0,
             vars: &mut [],
             fresh_vars: true,
-            var_programs: &[],
+            variables: &[],
             rng: &mut rng,
         };
         p.eval(&mut env).map_err(|e| e.message)

@@ -11,6 +11,10 @@ use glam::DVec3;
 pub struct Settings {
     /// `#angle`: the default turn angle δ in degrees.
     pub angle: f64,
+    /// The grammar has a `#width` directive.
+    pub width_given: bool,
+    /// `#heading`: the turn of the turtle's starting frame about U, in degrees (as `+` turns).
+    pub heading: f64,
     /// `#iterations` / `derivation length:`: the default number of derivation steps.
     pub iterations: u32,
     /// `#seed`: the seed of the random generator.
@@ -50,7 +54,7 @@ pub const DEFAULT_PALETTE: [[f32; 3]; 16] = [
     [0.48, 0.74, 0.28], // 7 light green
     [0.92, 0.80, 0.28], // 8 yellow
     [0.93, 0.55, 0.20], // 9 orange
-    [0.82, 0.22, 0.18], // 10 red
+    [0.90, 0.02, 0.02], // 10 signal red: saturated, far from every bark and leaf colour
     [0.90, 0.50, 0.65], // 11 pink
     [0.55, 0.28, 0.68], // 12 purple
     [0.30, 0.45, 0.85], // 13 blue
@@ -64,6 +68,7 @@ impl Settings {
     pub fn value(&self, directive: DirectiveKind) -> f64 {
         match directive {
             DirectiveKind::Angle => self.angle,
+            DirectiveKind::Heading => self.heading,
             DirectiveKind::Step => self.step,
             DirectiveKind::Width => self.width,
             DirectiveKind::WidthStep => self.width_step,
@@ -96,6 +101,8 @@ impl Default for Settings {
         let tropism = |k| directive_default(DirectiveKind::Tropism, k);
         Settings {
             angle: default_of(DirectiveKind::Angle),
+            width_given: false,
+            heading: default_of(DirectiveKind::Heading),
             iterations: default_of(DirectiveKind::Iterations) as u32,
             seed: default_of(DirectiveKind::Seed) as u64,
             step: default_of(DirectiveKind::Step),
@@ -203,5 +210,41 @@ impl GrowthAttributes {
 
     pub fn is_segment(&self, id: ModuleId) -> bool {
         self.segment.get(id.index()).copied().unwrap_or(false)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::DEFAULT_PALETTE;
+
+    /// sRGB (0..=255) of a linear colour, as the studio and the writers show it.
+    fn srgb(c: [f32; 3]) -> [f64; 3] {
+        c.map(|v| {
+            let v = f64::from(v);
+            255.0
+                * if v <= 0.003_130_8 {
+                    12.92 * v
+                } else {
+                    1.055 * v.powf(1.0 / 2.4) - 0.055
+                }
+        })
+    }
+
+    #[test]
+    fn the_signal_red_stands_out_from_the_barks_and_greens() {
+        // ABOP 1.30 draws its signal in colour 10 beside bark-brown internodes (colour 0).
+        let red = srgb(DEFAULT_PALETTE[10]);
+        assert!(
+            red[0] > 200.0 && red[1] < 0.3 * red[0] && red[2] < 0.3 * red[0],
+            "{red:?}"
+        );
+        for other in &DEFAULT_PALETTE[..8] {
+            let o = srgb(*other);
+            let distance: f64 = red.iter().zip(o).map(|(a, b)| (a - b).abs()).sum();
+            assert!(
+                distance > 180.0,
+                "{other:?} is {distance} from the signal red"
+            );
+        }
     }
 }

@@ -9,7 +9,8 @@
 //! - [`export`] builds and writes a model file, the same bytes for the CLI and the studio.
 //!
 //! The core reads no clock and knows nothing of progress bars: a caller lends [`Hooks`] (a clock
-//! read around each stage, a callback told each stage as it starts).
+//! read around each stage, a callback told each stage as it starts and each derivation step as it
+//! ends).
 
 mod editor;
 mod export;
@@ -77,21 +78,35 @@ impl Stage {
     }
 }
 
+/// Where a build or an export is, as its progress callback is told.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Progress {
+    /// A stage starts.
+    Started(Stage),
+    /// `step` of the derivation's `steps` steps are done: told with 0 as derivation starts, then
+    /// after each step, so a long derivation can say "step k of n".
+    Derived { step: u32, steps: u32 },
+}
+
 /// What a caller lends a build. Both are optional; neither changes the result.
 #[derive(Default)]
 pub struct Hooks<'a> {
     /// Any monotonic clock (the studio's and the CLI's are in milliseconds), read before and after
     /// each stage to fill [`Build::timings`].
     pub clock: Option<&'a mut dyn FnMut() -> f64>,
-    /// Told each stage as it starts.
-    pub progress: Option<&'a mut dyn FnMut(Stage)>,
+    /// Told each stage as it starts and each derivation step as it ends.
+    pub progress: Option<&'a mut dyn FnMut(Progress)>,
 }
 
 impl Hooks<'_> {
     /// Tells the progress callback that `stage` starts.
     pub fn start(&mut self, stage: Stage) {
-        if let Some(progress) = self.progress.as_mut() {
-            progress(stage);
+        self.tell(Progress::Started(stage));
+    }
+
+    fn tell(&mut self, progress: Progress) {
+        if let Some(callback) = self.progress.as_mut() {
+            callback(progress);
         }
     }
 }
@@ -256,7 +271,9 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Watch<'_, '_>) -
         return result;
     }
     watch.start(Stage::Derive);
-    let derived = derive_stage(&model, steps, options.seed, &mut result);
+    watch.hooks.tell(Progress::Derived { step: 0, steps });
+    let mut stepped = |step| watch.hooks.tell(Progress::Derived { step, steps });
+    let derived = derive_stage(&model, steps, options.seed, &mut result, &mut stepped);
     watch.timings.derive = watch.lap();
     if let Some(adjustments) = derived {
         watch.start(Stage::Interpret);
@@ -266,6 +283,11 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Watch<'_, '_>) -
             adjustments.as_ref(),
         );
         watch.timings.interpret = watch.lap();
+        if let Some(module) = skeleton.clamped {
+            result
+                .diagnostics
+                .push(clamped_warning(&model, &result.derivation, module));
+        }
         watch.start(Stage::Mesh);
         result.steps = steps;
         result.seed = options.seed;
@@ -276,17 +298,50 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Watch<'_, '_>) -
     result
 }
 
-/// Derives (with growth following, when the grammar has growth attributes) into `result`;
-/// returns the turtle's adjustments, or `None` when derivation failed.
+/// `E0406`: the module at `module` of the turtle's string drew past the skeleton's bounds; at
+/// the production that wrote it in the last step (else the axiom).
+fn clamped_warning(model: &Model, derivation: &Derivation, module: u32) -> Diagnostic {
+    let turtle = derivation.turtle_string();
+    let name = turtle
+        .ids
+        .get(module as usize)
+        .map_or("?", |&id| model.alphabet.name(id));
+    let in_string = derivation
+        .turtle_origin
+        .get(module as usize)
+        .copied()
+        .unwrap_or(module);
+    let span = derivation
+        .origin
+        .get(in_string as usize)
+        .and_then(|&p| model.productions.productions.get(p as usize))
+        .map_or_else(|| model.axiom_span.clone(), |p| p.span.clone());
+    Diagnostic::warning(
+        "E0406",
+        span,
+        format!(
+            "'{name}' (module {} of the string) draws past ±{:e} or with a number that is not \
+             finite; its geometry is clamped so that the view and every file stay valid",
+            module as u64 + 1,
+            crate::turtle::MAX_COORDINATE
+        ),
+    )
+}
+
+/// Derives (with growth following, when the grammar has growth attributes) into `result`,
+/// telling `stepped` each step done; returns the turtle's adjustments, or `None` when derivation
+/// failed.
 fn derive_stage(
     model: &Model,
     steps: u32,
     seed: Option<u64>,
     result: &mut Build,
+    stepped: &mut dyn FnMut(u32),
 ) -> Option<Option<Adjustments>> {
     let mut observer = StageObserver {
         model,
         growth: GrowthTracker::new(model, steps),
+        stepped: Some(stepped),
     };
     let options = DeriveOptions { steps, seed };
     match derive::derive_tracked(model, &options, &mut observer) {
@@ -313,19 +368,22 @@ fn trace(model: &Model, options: &DeriveOptions) -> Result<Vec<derive::TracedSte
     let mut observer = StageObserver {
         model,
         growth: GrowthTracker::new(model, options.steps),
+        stepped: None,
     };
     derive::derive_traced(model, options, &mut observer).map(|(_, steps)| steps)
 }
 
 /// What the stages after derive do while it derives: growth follows every module and plans each
 /// step (asking the turtle for heights), and the turtle answers query modules. Both read the
-/// derived string itself, not its homomorphism image.
-struct StageObserver<'m> {
+/// derived string itself, not its homomorphism image. The progress callback, if any, is told each
+/// step done.
+struct StageObserver<'m, 's> {
     model: &'m Model,
     growth: Option<GrowthTracker<'m>>,
+    stepped: Option<&'s mut dyn FnMut(u32)>,
 }
 
-impl derive::Observer for StageObserver<'_> {
+impl derive::Observer for StageObserver<'_, '_> {
     fn follows_modules(&self) -> bool {
         self.growth.is_some()
     }
@@ -372,6 +430,9 @@ impl derive::Observer for StageObserver<'_> {
     fn stepped(&mut self, step: u32) {
         if let Some(g) = &mut self.growth {
             g.stepped(step);
+        }
+        if let Some(stepped) = self.stepped.as_mut() {
+            stepped(step);
         }
     }
 
@@ -449,6 +510,53 @@ mod tests {
             (timings.derive, timings.interpret, timings.mesh),
             (0.0, 0.0, 0.0)
         );
+    }
+
+    /// What `progress` is told while `source` builds with `iterations`.
+    fn progress_of(source: &str, iterations: u32) -> Vec<Progress> {
+        let mut told = Vec::new();
+        let mut progress = |p| told.push(p);
+        let mut hooks = Hooks {
+            clock: None,
+            progress: Some(&mut progress),
+        };
+        let options = BuildOptions {
+            iterations: Some(iterations),
+            ..BuildOptions::default()
+        };
+        build_with(source, &options, &mut hooks);
+        told
+    }
+
+    #[test]
+    fn progress_tells_each_stage_and_each_derivation_step() {
+        use Progress::{Derived, Started};
+        let derived = |step| Derived { step, steps: 3 };
+        assert_eq!(
+            progress_of("axiom: F\nF -> F[+F]F", 3),
+            [
+                Started(Stage::Parse),
+                Started(Stage::Derive),
+                derived(0),
+                derived(1),
+                derived(2),
+                derived(3),
+                Started(Stage::Interpret),
+                Started(Stage::Mesh),
+            ]
+        );
+        // With growth attributes the derivation takes the general path: the same steps.
+        let growing = progress_of("#lifetime 60 40\naxiom: A\nA -> F[+A]A", 2);
+        let steps: Vec<_> = growing
+            .iter()
+            .filter_map(|p| match p {
+                Derived { step, steps } => Some((*step, *steps)),
+                _ => None,
+            })
+            .collect();
+        assert_eq!(steps, [(0, 2), (1, 2), (2, 2)]);
+        // Errors stop the progress where the build stops.
+        assert_eq!(progress_of("axiom: F[", 3), [Started(Stage::Parse)]);
     }
 
     #[test]

@@ -67,6 +67,22 @@ impl Plant {
         );
     }
 
+    /// Every segment as a line (the studio's Lines mode), its module in terms of the derived
+    /// string, as the mesh's provenance.
+    pub fn segment_lines(&self) -> mesh::SegmentLines {
+        let mut lines = mesh::segment_lines(&self.skeleton);
+        if !self.turtle_origin.is_empty() {
+            for module in &mut lines.modules {
+                *module = self
+                    .turtle_origin
+                    .get(*module as usize)
+                    .copied()
+                    .unwrap_or(*module);
+            }
+        }
+        lines
+    }
+
     /// True when everything drawn lies in the plane z = 0 ([`Skeleton::is_flat`]).
     pub fn is_flat(&self) -> bool {
         self.skeleton.is_flat()

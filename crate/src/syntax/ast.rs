@@ -35,6 +35,8 @@ pub struct Directive {
     pub expr: Option<ExprSyntax>,
     /// For `#ignore`, `#consider`, `#draw`, `#apex`: the modules listed.
     pub modules: Vec<ModuleSyntax>,
+    /// For `#curve` and `#table`: the numbers after the name (pairs x y).
+    pub points: Vec<f64>,
 }
 
 /// One module occurrence: a name such as `F`, `F_a`, `@O`, `?P`, with its parameters.
@@ -102,12 +104,22 @@ pub enum BinaryOp {
 }
 
 /// An arithmetic expression (LANGUAGE.md section 4).
+///
+/// Left-associative operators of one precedence level form a [`ExprSyntax::Chain`], not a tower of
+/// nested binary nodes, so the tree's depth follows the nesting the text writes (parentheses,
+/// operators of other levels), never the length of a sum: `1+1+…+1` with 100,000 terms is one
+/// node with a long list, and nothing that walks the tree recurses 100,000 deep.
 #[derive(Clone, Debug, PartialEq)]
 pub enum ExprSyntax {
     Number(f64, Span),
     Name(String, Span),
     Unary(UnaryOp, Box<ExprSyntax>, Span),
+    /// `a ^ b` (right-associative, so its depth is bounded by the parser's nesting limit).
     Binary(BinaryOp, Box<ExprSyntax>, Box<ExprSyntax>, Span),
+    /// `first op₁ x₁ op₂ x₂ …`, evaluated left to right: `((first op₁ x₁) op₂ x₂) …`. Each link's
+    /// span runs from the start of `first` to the end of its operand (what a binary node's span
+    /// would be).
+    Chain(Box<ExprSyntax>, Vec<(BinaryOp, ExprSyntax, Span)>),
     /// `c ? a : b`
     Conditional(Box<ExprSyntax>, Box<ExprSyntax>, Box<ExprSyntax>, Span),
     /// `name(args)`: the name's span, then the whole call's span.
@@ -123,6 +135,9 @@ impl ExprSyntax {
             | ExprSyntax::Binary(_, _, _, s)
             | ExprSyntax::Conditional(_, _, _, s)
             | ExprSyntax::Call(_, _, _, s) => s.clone(),
+            ExprSyntax::Chain(first, links) => {
+                links.last().map_or_else(|| first.span(), |l| l.2.clone())
+            }
         }
     }
 }

@@ -42,9 +42,12 @@ pub(super) fn parse_directive(
         target: None,
         expr: None,
         modules: Vec::new(),
+        points: Vec::new(),
     };
     let first = info.and_then(|i| i.params().first()).map(|p| p.kind);
+    let points = info.and_then(|i| i.params().get(1)).map(|p| p.kind) == Some(ParamKind::Points);
     let kept = match first {
+        Some(ParamKind::Name) if points => curve_definition(&mut directive, diagnostics),
         Some(ParamKind::Name) => definition(&mut directive, diagnostics),
         Some(ParamKind::Modules) => module_list(&mut directive, scanner, diagnostics),
         _ => true,
@@ -52,11 +55,10 @@ pub(super) fn parse_directive(
     kept.then_some(directive)
 }
 
-/// `#define NAME expr`, `#random NAME = expr` (the `=` is optional for both). False when the line
-/// is not kept.
-fn definition(d: &mut Directive, diagnostics: &mut Vec<Diagnostic>) -> bool {
+/// The length of the name a defining directive starts with; `None` (and error E0113, saying
+/// that `then` follows the name) when it has none.
+fn leading_name(d: &Directive, then: &str, diagnostics: &mut Vec<Diagnostic>) -> Option<usize> {
     let args = d.args.as_str();
-    let args_at = d.args_span.start;
     let ident_len = args
         .find(|c: char| !(c.is_alphanumeric() || c == '_'))
         .unwrap_or(args.len());
@@ -64,10 +66,21 @@ fn definition(d: &mut Directive, diagnostics: &mut Vec<Diagnostic>) -> bool {
         diagnostics.push(Diagnostic::error(
             "E0113",
             d.name_span.clone(),
-            format!("{} needs a name, then an expression", d.written),
+            format!("{} needs a name, then {then}", d.written),
         ));
-        return false;
+        return None;
     }
+    Some(ident_len)
+}
+
+/// `#define NAME expr`, `#random NAME = expr` (the `=` is optional for both). False when the line
+/// is not kept.
+fn definition(d: &mut Directive, diagnostics: &mut Vec<Diagnostic>) -> bool {
+    let Some(ident_len) = leading_name(d, "an expression", diagnostics) else {
+        return false;
+    };
+    let args = d.args.as_str();
+    let args_at = d.args_span.start;
     let target = (args[..ident_len].to_string(), args_at..args_at + ident_len);
     let mut expr_text = &args[ident_len..];
     let mut expr_at = args_at + ident_len;
@@ -97,6 +110,38 @@ fn definition(d: &mut Directive, diagnostics: &mut Vec<Diagnostic>) -> bool {
             false
         }
     }
+}
+
+/// `#curve NAME x y x y …`, `#table NAME x y …`: a name, then numbers separated by spaces or
+/// commas. False when the line is not kept.
+fn curve_definition(d: &mut Directive, diagnostics: &mut Vec<Diagnostic>) -> bool {
+    let Some(ident_len) = leading_name(d, "points x y", diagnostics) else {
+        return false;
+    };
+    let args = d.args.as_str();
+    let args_at = d.args_span.start;
+    let rest = &args[ident_len..];
+    let mut points = Vec::new();
+    for word in rest.split(|c: char| c.is_whitespace() || c == ',') {
+        if word.is_empty() {
+            continue;
+        }
+        match word.parse::<f64>() {
+            Ok(v) if v.is_finite() => points.push(v),
+            _ => {
+                let at = args_at + (word.as_ptr() as usize - args.as_ptr() as usize);
+                diagnostics.push(Diagnostic::error(
+                    "E0137",
+                    at..at + word.len(),
+                    format!("'{word}' is not a number: {} takes numbers x y", d.written),
+                ));
+                return false;
+            }
+        }
+    }
+    d.target = Some((args[..ident_len].to_string(), args_at..args_at + ident_len));
+    d.points = points;
+    true
 }
 
 /// `#ignore`, `#consider`, `#draw`, `#apex`, `#module`: module names. False when the line is not

@@ -155,18 +155,22 @@ impl ExprParser<'_> {
         }
         self.skip_ws();
         let start = self.pos;
-        let mut lhs = self.binary(level + 1)?;
+        let first = self.binary(level + 1)?;
+        let mut links = Vec::new();
         'outer: loop {
             for &(token, op) in LEVELS[level] {
                 if self.eat(token) {
                     let rhs = self.binary(level + 1)?;
-                    lhs =
-                        ExprSyntax::Binary(op, Box::new(lhs), Box::new(rhs), self.span_from(start));
+                    links.push((op, rhs, self.span_from(start)));
                     continue 'outer;
                 }
             }
-            return Ok(lhs);
+            break;
         }
+        if links.is_empty() {
+            return Ok(first);
+        }
+        Ok(ExprSyntax::Chain(Box::new(first), links))
     }
 
     fn unary(&mut self) -> Result<ExprSyntax, Diagnostic> {
@@ -323,6 +327,9 @@ mod tests {
             ExprSyntax::Name(n, _) => n.clone(),
             ExprSyntax::Unary(op, x, _) => format!("({op:?} {})", show(x)),
             ExprSyntax::Binary(op, a, b, _) => format!("({op:?} {} {})", show(a), show(b)),
+            ExprSyntax::Chain(first, links) => links.iter().fold(show(first), |a, (op, b, _)| {
+                format!("({op:?} {a} {})", show(b))
+            }),
             ExprSyntax::Conditional(c, a, b, _) => {
                 format!("(? {} {} {})", show(c), show(a), show(b))
             }

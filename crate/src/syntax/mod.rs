@@ -19,3 +19,4 @@ pub use ast::{
 pub use comments::blank_comments;
 pub use expr::{parse_expression, MAX_EXPRESSION_DEPTH};
 pub use parse::parse;
+pub use scanner::MAX_GROUP_DEPTH;

@@ -185,6 +185,7 @@ impl Parser<'_> {
             target: None,
             expr: None,
             modules: Vec::new(),
+            points: Vec::new(),
         });
     }
 }

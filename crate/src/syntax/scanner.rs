@@ -5,6 +5,11 @@ use super::ast::{ModuleSyntax, Span};
 use super::expr::{parse_expression, split_arguments};
 use crate::diagnostics::Diagnostic;
 use crate::vocabulary::{module_named, Command, GroupKind, Meaning, MODULES};
+use std::cell::Cell;
+
+/// Deepest control modules (`@Switch`, `@Pendulum`, `@Repeat`) may be written one inside another
+/// (`E0132`): the scanner, and later the derivation, follow a group's members one level at a time.
+pub const MAX_GROUP_DEPTH: usize = 64;
 
 /// Finds the first occurrence of `token` outside parentheses.
 pub(super) fn find_top_level(text: &str, token: char) -> Option<usize> {
@@ -84,6 +89,8 @@ pub(super) struct ModuleScanner<'a> {
     declared: &'a [String],
     /// The vocabulary's `@` names, longest first, so that `@GcF` is `@Gc F`.
     at_names: Vec<&'static str>,
+    /// How many control modules the text being scanned is inside.
+    depth: Cell<usize>,
 }
 
 impl<'a> ModuleScanner<'a> {
@@ -94,7 +101,11 @@ impl<'a> ModuleScanner<'a> {
             .filter(|n| n.starts_with('@'))
             .collect();
         at_names.sort_by_key(|n| std::cmp::Reverse(n.len()));
-        ModuleScanner { declared, at_names }
+        ModuleScanner {
+            declared,
+            at_names,
+            depth: Cell::new(0),
+        }
     }
 
     /// True for a name declared with `#module`.
@@ -210,7 +221,23 @@ impl<'a> ModuleScanner<'a> {
                 )),
             }
         }
+        let span = start..at + inner.len() + 1;
+        if self.depth.get() >= MAX_GROUP_DEPTH {
+            diagnostics.push(Diagnostic::error(
+                "E0132",
+                start..start + name.len(),
+                format!("control modules nested more than {MAX_GROUP_DEPTH} deep"),
+            ));
+            return ModuleSyntax {
+                name: name.to_string(),
+                span,
+                params,
+                group: Some(vec![Vec::new()]),
+            };
+        }
+        self.depth.set(self.depth.get() + 1);
         let modules = self.scan(body, body_at, diagnostics);
+        self.depth.set(self.depth.get() - 1);
         check_brackets(&modules, diagnostics);
         let members = if repeat {
             vec![modules]
@@ -235,13 +262,13 @@ impl<'a> ModuleScanner<'a> {
         if members.iter().all(Vec::is_empty) || members.is_empty() {
             diagnostics.push(Diagnostic::error(
                 "E0131",
-                start..at + inner.len() + 1,
+                span.clone(),
                 format!("{name}(…) needs at least one module"),
             ));
         }
         ModuleSyntax {
             name: name.to_string(),
-            span: start..at + inner.len() + 1,
+            span,
             params,
             group: Some(members),
         }

@@ -27,6 +27,9 @@ pub(super) struct Interpreter<'a> {
     high: f64,
     /// When asked, the turtle's Y at each module.
     heights: Option<&'a mut Heights>,
+    /// The last two angles turned by (their bits) with their sines and cosines: a grammar turns by
+    /// a few angles, over and over.
+    turns: [(u64, (f64, f64)); 2],
 }
 
 /// The first parameter's default of a module, reading directives' values from the settings.
@@ -50,36 +53,45 @@ impl<'a> Interpreter<'a> {
             .map(|m| m.and_then(|info| Some((info.command()?, first_default(info, settings)))))
             .collect();
         let (tropism, susceptibility) = settings.tropism;
+        let mut start = TurtleState {
+            position: DVec3::ZERO,
+            heading: DVec3::Y,
+            left: DVec3::NEG_X,
+            up: DVec3::Z,
+            width: settings.width,
+            color: 0,
+            tropism,
+            susceptibility,
+            smooth: false,
+            last_segment: None,
+            anchor: None,
+        };
+        // `#heading`: the start turned as `+` would turn it.
+        if settings.heading != 0.0 {
+            start.yaw(settings.heading.to_radians().sin_cos());
+        }
         Interpreter {
             settings,
             actions,
-            turtle: TurtleState {
-                position: DVec3::ZERO,
-                heading: DVec3::Y,
-                left: DVec3::NEG_X,
-                up: DVec3::Z,
-                width: settings.width,
-                color: 0,
-                tropism,
-                susceptibility,
-                smooth: false,
-                last_segment: None,
-                anchor: None,
-            },
+            turtle: start,
             stack: Vec::new(),
             open_polygons: Vec::new(),
             skeleton: Skeleton {
                 palette: settings.palette.clone(),
+                widths_set: settings.width_given || adjustments.is_some(),
                 ..Skeleton::default()
             },
             adjustments: adjustments.filter(|a| a.modules.len() == string.len()),
             low: 0.0,
             high: 0.0,
             heights,
+            turns: [(0f64.to_bits(), (0.0, 1.0)); 2],
         }
     }
 
     pub fn run(mut self, string: &LString) -> Skeleton {
+        // The extent is read by heights and by growth's widths by third only.
+        let extent = self.heights.is_some() || self.adjustments.is_some_and(|a| a.scales_width);
         for (index, id) in string.ids.iter().enumerate() {
             self.turn_by_growth(index);
             let before = self.turtle.position.y;
@@ -92,8 +104,10 @@ impl<'a> Interpreter<'a> {
                 }
                 None => false,
             };
-            let y = self.turtle.position.y;
-            self.note(y, if moved { (before + y) * 0.5 } else { y });
+            if extent {
+                let y = self.turtle.position.y;
+                self.note(y, if moved { (before + y) * 0.5 } else { y });
+            }
         }
         self.finish()
     }
@@ -179,17 +193,33 @@ impl<'a> Interpreter<'a> {
 
     /// The rotations, by `angle` radians where they take one.
     fn rotate(&mut self, command: Command, angle: f64) {
+        if command == Command::RollToVertical {
+            return self.turtle.roll_to_vertical();
+        }
+        let a = match command {
+            Command::TurnRight | Command::PitchUp | Command::RollLeft => -angle,
+            Command::TurnAround => std::f64::consts::PI,
+            _ => angle,
+        };
+        let turn = self.sin_cos(a);
         let t = &mut self.turtle;
         match command {
-            Command::TurnLeft => t.yaw(angle),
-            Command::TurnRight => t.yaw(-angle),
-            Command::PitchDown => t.pitch(angle),
-            Command::PitchUp => t.pitch(-angle),
-            Command::RollRight => t.roll(angle),
-            Command::RollLeft => t.roll(-angle),
-            Command::TurnAround => t.yaw(std::f64::consts::PI),
-            _ => t.roll_to_vertical(),
+            Command::TurnLeft | Command::TurnRight | Command::TurnAround => t.yaw(turn),
+            Command::PitchDown | Command::PitchUp => t.pitch(turn),
+            _ => t.roll(turn),
         }
+    }
+
+    /// `a.sin_cos()`, remembered for the last two angles.
+    #[inline]
+    fn sin_cos(&mut self, a: f64) -> (f64, f64) {
+        let bits = a.to_bits();
+        if let Some(&(_, turn)) = self.turns.iter().find(|(b, _)| *b == bits) {
+            return turn;
+        }
+        let turn = a.sin_cos();
+        self.turns = [self.turns[1], (bits, turn)];
+        turn
     }
 
     /// `!`, `'`, `;`: the width and the colour index.
@@ -197,6 +227,7 @@ impl<'a> Interpreter<'a> {
         let t = &mut self.turtle;
         match command {
             Command::Width => {
+                self.skeleton.widths_set = true;
                 t.width = match first {
                     Some(w) => w.max(0.0),
                     None => (t.width - self.settings.width_step).max(0.0),
@@ -377,6 +408,7 @@ impl<'a> Interpreter<'a> {
             }
         }
         self.skeleton.end = self.turtle.position;
+        self.skeleton.clamp_to_finite();
         self.skeleton
     }
 }

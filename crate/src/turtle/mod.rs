@@ -15,7 +15,9 @@ mod interpreter;
 mod skeleton;
 mod state;
 
-pub use skeleton::{Polygon, QueryValue, Segment, Skeleton, Sphere, Surface, SurfaceKind};
+pub use skeleton::{
+    Polygon, QueryValue, Segment, Skeleton, Sphere, Surface, SurfaceKind, MAX_COORDINATE,
+};
 
 use crate::growth::{Adjustments, Heights};
 use crate::model::{LString, Model};

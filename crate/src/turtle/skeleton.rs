@@ -93,9 +93,88 @@ pub struct Skeleton {
     /// The colours of the colour indices (the grammar's palette); empty means
     /// [`crate::model::DEFAULT_PALETTE`].
     pub palette: Vec<[f32; 3]>,
+    /// The grammar set widths (`#width`, `!`, or growth's width factors): the mesh draws them in its
+    /// width unit as they are. When false, every segment has the default width and the mesh ties
+    /// it to the internodes' length instead (see `mesh::WidthUnit`).
+    pub widths_set: bool,
+    /// The first module (index in the interpreted string) whose geometry went past
+    /// [`MAX_COORDINATE`] or was not a finite number, and was clamped ([`Skeleton::clamp_to_finite`]).
+    pub clamped: Option<u32>,
+}
+
+/// The largest coordinate, width or radius the skeleton keeps: well inside `f32` (about 3.4e38),
+/// which meshes and files store, with room for a tube's width around its axis.
+pub const MAX_COORDINATE: f64 = 1e30;
+
+/// `v` within ±[`MAX_COORDINATE`] (0 for NaN), and whether it had to change.
+fn clamp_number(v: &mut f64) -> bool {
+    let kept = if v.is_nan() {
+        0.0
+    } else {
+        v.clamp(-MAX_COORDINATE, MAX_COORDINATE)
+    };
+    let changed = kept != *v;
+    *v = kept;
+    changed
+}
+
+/// Each component of `v` clamped ([`clamp_number`]).
+fn clamp_point(v: &mut DVec3) -> bool {
+    let [mut x, mut y, mut z] = v.to_array();
+    let changed = clamp_number(&mut x) | clamp_number(&mut y) | clamp_number(&mut z);
+    *v = DVec3::new(x, y, z);
+    changed
+}
+
+/// A direction that is not finite replaced by `default`.
+fn clamp_direction(v: &mut DVec3, default: DVec3) -> bool {
+    let changed = !v.is_finite();
+    if changed {
+        *v = default;
+    }
+    changed
 }
 
 impl Skeleton {
+    /// Clamps every point, width and radius to ±[`MAX_COORDINATE`] (a number that is not finite
+    /// becomes 0, a direction that is not finite a default one) and records the first module
+    /// that needed it in [`Skeleton::clamped`]: every mesh and every file written from the
+    /// skeleton then holds finite numbers. Positions past that are far beyond any real plant.
+    pub fn clamp_to_finite(&mut self) {
+        let mut first: Option<u32> = None;
+        let mut note = |changed: bool, module: u32| {
+            if changed {
+                first = Some(first.map_or(module, |f| f.min(module)));
+            }
+        };
+        for s in &mut self.segments {
+            let changed = clamp_point(&mut s.start)
+                | clamp_point(&mut s.end)
+                | clamp_number(&mut s.width)
+                | clamp_direction(&mut s.left, DVec3::X)
+                | clamp_direction(&mut s.up, DVec3::Z);
+            note(changed, s.module);
+        }
+        for p in &mut self.polygons {
+            let changed = p.points.iter_mut().fold(false, |c, q| clamp_point(q) | c);
+            note(changed, p.module);
+        }
+        for s in &mut self.surfaces {
+            let changed = clamp_point(&mut s.origin)
+                | clamp_number(&mut s.scale)
+                | clamp_direction(&mut s.heading, DVec3::Y)
+                | clamp_direction(&mut s.left, DVec3::X);
+            note(changed, s.module);
+        }
+        for s in &mut self.spheres {
+            let width = s.radius_width.as_mut().is_some_and(clamp_number);
+            let changed = clamp_point(&mut s.center) | clamp_number(&mut s.radius) | width;
+            note(changed, s.module);
+        }
+        clamp_point(&mut self.end);
+        self.clamped = first;
+    }
+
     /// The colour of a colour index: the palette entry, wrapping modulo the palette's length.
     pub fn color(&self, index: u16) -> [f32; 3] {
         let palette: &[[f32; 3]] = if self.palette.is_empty() {

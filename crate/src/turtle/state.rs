@@ -24,24 +24,22 @@ pub(super) struct TurtleState {
 }
 
 impl TurtleState {
-    /// Right-handed rotation by `a` radians about U: H turns towards L.
-    pub fn yaw(&mut self, a: f64) {
-        let (s, c) = a.sin_cos();
+    /// Right-handed rotation about U by the angle whose sine and cosine are `(s, c)`: H turns
+    /// towards L.
+    pub fn yaw(&mut self, (s, c): (f64, f64)) {
         let h = self.heading * c + self.left * s;
         let l = self.left * c - self.heading * s;
         self.set_frame(h, l);
     }
 
-    /// Right-handed rotation by `a` radians about L: H turns away from U (down).
-    pub fn pitch(&mut self, a: f64) {
-        let (s, c) = a.sin_cos();
+    /// Right-handed rotation about L by the angle of `(s, c)`: H turns away from U (down).
+    pub fn pitch(&mut self, (s, c): (f64, f64)) {
         let h = self.heading * c - self.up * s;
         self.set_frame(h, self.left);
     }
 
-    /// Right-handed rotation by `a` radians about H: L turns towards U.
-    pub fn roll(&mut self, a: f64) {
-        let (s, c) = a.sin_cos();
+    /// Right-handed rotation about H by the angle of `(s, c)`: L turns towards U.
+    pub fn roll(&mut self, (s, c): (f64, f64)) {
         let l = self.left * c + self.up * s;
         self.set_frame(self.heading, l);
     }

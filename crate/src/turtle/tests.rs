@@ -111,6 +111,28 @@ fn fig_1_37a_row_of_trees_ends_on_its_baseline() {
 }
 
 #[test]
+fn heading_turns_the_start_as_plus_would() {
+    // `#heading 90` starts heading −X (left), as `+(90)` at the start would; −90 starts +X, and
+    // the frame turns with it (U stays +Z, so `+` still turns left and the plant stays flat).
+    let s = run("#angle 90\n#heading 90\naxiom: F+F");
+    assert!(
+        close(s.segments[0].end, DVec3::new(-1.0, 0.0, 0.0)),
+        "{}",
+        s.segments[0].end
+    );
+    assert!(close(s.end, DVec3::new(-1.0, -1.0, 0.0)), "{}", s.end);
+    assert_eq!(s.end, run("#angle 90\naxiom: +F+F").end);
+    let s = run("#heading -90\naxiom: F");
+    assert!(close(s.end, DVec3::X), "{}", s.end);
+    assert!(close(s.segments[0].up, DVec3::Z) && close(s.segments[0].left, DVec3::Y));
+    assert!(s.is_flat());
+    // The row of trees (ABOP 1.37a) heading right lies along +X, its trees above the line.
+    let row = run("#angle 86\n#heading -90\n#iterations 2\naxiom: F(1)\nF(x) -> F(x*0.3)+F(x*0.46)--F(x*0.46)+F(x*0.7)");
+    assert!(row.end.y.abs() < 1e-9 && row.end.x > 1.0, "{}", row.end);
+    assert!(row.segments.iter().all(|s| s.end.y > -1e-9));
+}
+
+#[test]
 fn tropism_bends_the_heading_towards_t_by_e_times_sin() {
     // H = +Y, T = +X, e = 0.5: |H × T| = 1, so after one F the heading turns 0.5 rad towards +X.
     let s = run("#tropism 1 0 0 0.5\naxiom: FF");

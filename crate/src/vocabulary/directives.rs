@@ -7,6 +7,7 @@ use serde::{Serialize, Serializer};
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum DirectiveKind {
     Angle,
+    Heading,
     Iterations,
     Step,
     Width,
@@ -16,6 +17,8 @@ pub enum DirectiveKind {
     Seed,
     Define,
     Random,
+    Curve,
+    Table,
     Ignore,
     Consider,
     Module,
@@ -210,6 +213,22 @@ const RANDOM: &[&[Param]] = &[&[
         "distribution",
         ParamKind::Expression,
         "a random function such as uniform(0, 1)",
+    ),
+]];
+const CURVE: &[&[Param]] = &[&[
+    Param::new("name", ParamKind::Name, "the function's name"),
+    Param::new(
+        "points",
+        ParamKind::Points,
+        "control points x y, at least 4, x from the first to the last",
+    ),
+]];
+const TABLE: &[&[Param]] = &[&[
+    Param::new("name", ParamKind::Name, "the function's name"),
+    Param::new(
+        "points",
+        ParamKind::Points,
+        "points x y, at least 2, x increasing",
     ),
 ]];
 const DEPTH: &[&[Param]] = &[&[Param::whole("n", 0.0, 10_000.0, "the depth").default(16.0)]];
@@ -419,6 +438,8 @@ use DirectiveKind as D;
 pub const DIRECTIVES: &[DirectiveInfo] = &[
     row("angle", D::Angle, "Angle", &[&[Param::number("degrees", "the turn angle δ").default(90.0).unit("degrees")]], G::Turtle,
         "The default turn angle δ of + - & ^ \\ / (default 90)."),
+    row("heading", D::Heading, "Heading", &[&[Param::number("degrees", "the turn of the starting heading").default(0.0).unit("degrees")]], G::Turtle,
+        "Turns the turtle's starting heading by this many degrees, as + would: 90 starts to the left, -90 to the right (default 0: up)."),
     row("iterations", D::Iterations, "Iterations", &[&[Param::whole("n", 0.0, U32_MAX, "derivation steps").default(0.0)]], G::Derivation,
         "The number of derivation steps (default 0)."),
     row("step", D::Step, "Step", &[&[Param::number("length", "the length of F, f, G and g").default(1.0).unit("units")]], G::Turtle,
@@ -446,6 +467,10 @@ pub const DIRECTIVES: &[DirectiveInfo] = &[
         "A named constant or expression, inlined where it is used.").repeatable(),
     row("random", D::Random, "Random variable", RANDOM, G::Names,
         "A random variable (Green): one deviate per module while matching.").repeatable(),
+    row("curve", D::Curve, "Curve function", CURVE, G::Names,
+        "A function of one variable, name(x): the smooth curve of these control points (cpfg's function: a cubic B-spline), read at x.").repeatable(),
+    row("table", D::Table, "Table function", TABLE, G::Names,
+        "A function of one variable, name(x): straight lines between these points, level beyond the first and the last.").repeatable(),
     row("ignore", D::Ignore, "Ignored modules", MODULE_LIST, G::Derivation,
         "Modules that context matching skips.").repeatable(),
     row("consider", D::Consider, "Considered modules", MODULE_LIST, G::Derivation,

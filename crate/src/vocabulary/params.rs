@@ -22,6 +22,8 @@ pub enum ParamKind {
     Name,
     /// A list of module names, without parameters.
     Modules,
+    /// Numbers in pairs `x y` (the points of `#curve` and `#table`).
+    Points,
 }
 
 /// The value a parameter takes when it is not written.

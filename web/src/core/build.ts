@@ -7,11 +7,13 @@ import {
   type PlantEditor as WasmPlantEditor,
   type PlantInspector as WasmPlantInspector,
 } from '../../../crate/pkg-core/meristem_core.js';
-import { byteOffsetToUtf16 } from './offsets';
+import { utf16Offsets } from './offsets';
 import { assertReady, guarded, ownedArray } from './init';
 import {
   DERIVED_PREVIEW_CHARS,
   type BuildOptions,
+  type BuildProgress,
+  type BuildStage,
   type Diagnostic,
   type DerivationStep,
   type Explanation,
@@ -58,14 +60,17 @@ export function buildPlant(source: string, options: BuildOptions = {}): PlantBui
 
 /**
  * Like {@link buildPlant}, and also keeps the core's derivation alive behind a
- * {@link PlantInspector} (explanations, module texts) until its `free` is called.
+ * {@link PlantInspector} (explanations, module texts) until its `free` is called. `onProgress`
+ * is told each stage as it starts and each derivation step as it ends (the core calls it while it
+ * works, so it can only post messages, not wait for an answer).
  */
 export function inspectPlant(
   source: string,
   options: BuildOptions = {},
   sketch?: SketchRequest,
+  onProgress?: (progress: BuildProgress) => void,
 ): { build: PlantBuild; inspector: PlantInspector } {
-  const result = sketch ? runSketched(source, options, sketch) : runBuild(source, options);
+  const result = sketch ? runSketched(source, options, sketch, onProgress) : runBuild(source, options, onProgress);
   let plain: PlantBuild;
   try {
     plain = plainBuild(source, result);
@@ -100,8 +105,8 @@ export interface SketchRequest {
  * sketch handed to `request.show` when the plant is big, then the tubes (`remesh` with the view
  * options, the very mesh a plain build makes). The mesh stage's time is the remesh's.
  */
-function runSketched(source: string, options: BuildOptions, request: SketchRequest): WasmPlantBuild {
-  const result = runBuild(source, { ...options, sketch: true });
+function runSketched(source: string, options: BuildOptions, request: SketchRequest, onProgress?: (progress: BuildProgress) => void): WasmPlantBuild {
+  const result = runBuild(source, { ...options, sketch: true }, onProgress);
   try {
     if (result.ok) {
       const segments = (JSON.parse(result.stats()) as PlantStats).segments;
@@ -109,6 +114,7 @@ function runSketched(source: string, options: BuildOptions, request: SketchReque
         request.show({ lines: ownedArray(result.lines()), lineColors: ownedArray(result.lineColors()), flat: result.flat, segments });
       }
     }
+    if (result.ok) onProgress?.({ stage: 'meshing', step: 0, steps: 0 });
     const start = performance.now();
     guarded(() => result.remesh({ sides: options.sides, smoothAll: options.smoothAll }));
     meshMillis.set(result, performance.now() - start);
@@ -123,11 +129,12 @@ function runSketched(source: string, options: BuildOptions, request: SketchReque
 const meshMillis = new WeakMap<WasmPlantBuild, number>();
 
 /** Runs the core's `build` (for this folder's facades; the caller frees the result). */
-export function runBuild(source: string, options: BuildOptions & { sketch?: boolean }): WasmPlantBuild {
+export function runBuild(source: string, options: BuildOptions & { sketch?: boolean }, onProgress?: (progress: BuildProgress) => void): WasmPlantBuild {
   assertReady();
   const { iterations, seed, sides, smoothAll, sketch } = options;
+  const progress = onProgress && ((stage: BuildStage, step: number, steps: number) => onProgress({ stage, step, steps }));
   // The core reads no clock: it reads ours between its stages.
-  return guarded(() => build(source, { iterations, seed, sides, smoothAll, sketch }, () => performance.now()));
+  return guarded(() => build(source, { iterations, seed, sides, smoothAll, sketch }, () => performance.now(), progress));
 }
 
 interface RawProduction {
@@ -141,6 +148,7 @@ interface RawProduction {
 
 /** Copies a wasm build into plain data (for this folder's facades; the caller frees the build). */
 export function plainBuild(source: string, result: WasmPlantBuild): PlantBuild {
+  const toUtf16 = utf16Offsets(source);
   return guarded(() => ({
     ok: result.ok,
     diagnostics: (JSON.parse(result.diagnostics()) as RawDiagnostic[]).map(toDiagnostic),
@@ -151,11 +159,11 @@ export function plainBuild(source: string, result: WasmPlantBuild): PlantBuild {
     productions: (JSON.parse(result.productions()) as RawProduction[]).map(
       (p): ProductionInfo => ({
         index: p.index,
-        from: byteOffsetToUtf16(source, p.from),
-        to: byteOffsetToUtf16(source, p.to),
+        from: toUtf16(p.from),
+        to: toUtf16(p.to),
         label: p.label,
         context: p.context,
-        condition: p.condition && { from: byteOffsetToUtf16(source, p.condition[0]), to: byteOffsetToUtf16(source, p.condition[1]) },
+        condition: p.condition && { from: toUtf16(p.condition[0]), to: toUtf16(p.condition[1]) },
       }),
     ),
     origins: ownedArray(result.origins()),
@@ -185,6 +193,9 @@ export function copyMesh(result: MeshHolder): MeshBuffers {
     materialRanges: ownedArray(result.materialRanges()),
     lines: ownedArray(result.lines()),
     lineColors: ownedArray(result.lineColors()),
+    segmentEnds: ownedArray(result.segmentEnds()),
+    segmentColors: ownedArray(result.segmentColors()),
+    segmentModules: ownedArray(result.segmentModules()),
   }));
 }
 

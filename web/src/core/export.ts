@@ -20,7 +20,7 @@ export const MODEL_FORMATS: readonly { format: ModelFormat; label: string; file:
 
 /** A file ready to download. */
 export interface ModelFile {
-  /** `plant.glb`, or `plant.zip` (OBJ and its MTL for `obj`; the scene and its texture images for `pov`). */
+  /** `plant.glb`, or `plant-obj.zip` (OBJ and its MTL) and `plant-pov.zip` (the scene and its texture images). */
   fileName: string;
   mimeType: string;
   /** The file's bytes, owned by JavaScript. */
@@ -29,7 +29,7 @@ export interface ModelFile {
 
 /** Options of {@link exportModel}: the build's, and the file name without extension. */
 export interface ExportOptions extends BuildOptions {
-  /** File name without extension; default `plant`. */
+  /** File name without extension; default `plant` (a zip of several files: `NAME-obj.zip`, `NAME-pov.zip`). */
   name?: string;
   /** Branch edits to apply first (the file is then `meristem export … --edits EDITS.json`'s). */
   edits?: EditsDocument;

@@ -1,6 +1,6 @@
 // The facade over the core's importers (`crate/src/import`): another dialect's text in, Meristem
 // text and notes out. The studio's file opening (studio/grammar-files.ts) calls this.
-import { importGrammar as coreImportGrammar } from '../../../crate/pkg/meristem.js';
+import { importGrammar as coreImportGrammar, importObject as coreImportObject } from '../../../crate/pkg/meristem.js';
 import { guarded } from './init';
 import { assertIoReady } from './io';
 
@@ -33,4 +33,29 @@ export interface ImportedGrammar {
 export function importGrammar(text: string, fileName: string): ImportedGrammar {
   assertIoReady();
   return JSON.parse(guarded(() => coreImportGrammar(text, fileName))) as ImportedGrammar;
+}
+
+/** One file of what is opened together: its name (a path inside the dropped folder) and bytes. */
+export interface ObjectFile {
+  name: string;
+  bytes: Uint8Array;
+}
+
+/**
+ * Imports files opened together as one model: a vlab object (its `.l` with the view file `.v`,
+ * function files `.func`/`.fset` and colour map `.map` or materials `.mat`), as a folder's files,
+ * several files or a `.zip`; or an L-Py model. Never throws: a broken archive or a folder without
+ * an L-system comes back as a note with `dialect` null. Requires {@link initIo} to have finished.
+ */
+export function importObject(files: ObjectFile[]): ImportedGrammar {
+  assertIoReady();
+  const bytes = new Uint8Array(files.reduce((n, f) => n + f.bytes.length, 0));
+  let at = 0;
+  for (const f of files) {
+    bytes.set(f.bytes, at);
+    at += f.bytes.length;
+  }
+  const names = files.map((f) => f.name);
+  const lengths = new Uint32Array(files.map((f) => f.bytes.length));
+  return JSON.parse(guarded(() => coreImportObject(names, bytes, lengths))) as ImportedGrammar;
 }

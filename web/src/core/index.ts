@@ -30,8 +30,8 @@ export {
   type ValueInfo,
   type Vocabulary,
 } from './vocabulary';
-export { byteOffsetToUtf16 } from './offsets';
-export { importGrammar, type Dialect, type ImportedGrammar, type ImportNote } from './import';
+export { byteOffsetToUtf16, utf16Offsets } from './offsets';
+export { importGrammar, importObject, type Dialect, type ImportedGrammar, type ImportNote, type ObjectFile } from './import';
 export {
   applyMeshUpdate,
   editPlant,
@@ -57,6 +57,8 @@ export {
   type PlantInspector,
   type ProductionInfo,
   type BuildOptions,
+  type BuildProgress,
+  type BuildStage,
   type Diagnostic,
   type MeshBuffers,
   type PlantBuild,

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { byteOffsetToUtf16 } from './offsets';
+import { byteOffsetToUtf16, utf16Offsets } from './offsets';
 
 /** Every char boundary of `text` as [utf8 byte offset, utf16 offset], computed with TextEncoder. */
 function boundaries(text: string): [number, number][] {
@@ -75,5 +75,20 @@ describe('byteOffsetToUtf16', () => {
     const text = 'p1: X → F[+X]é中🌿𝒳\n// ok';
     const slices = boundaries(text);
     for (const [bytes, units] of slices) expect(byteOffsetToUtf16(text, bytes)).toBe(units);
+  });
+});
+
+describe('utf16Offsets', () => {
+  it('agrees with byteOffsetToUtf16 at every byte of mixed text, in any order', () => {
+    const text = ('axiom: ωF é 😀 X\n'.repeat(60) + 'A -> B\n').repeat(3);
+    const convert = utf16Offsets(text);
+    const total = new TextEncoder().encode(text).length;
+    const offsets = [...Array(total + 3).keys()].map((i) => i - 1).reverse();
+    for (const b of offsets) expect(convert(b), `byte ${b}`).toBe(byteOffsetToUtf16(text, b));
+  });
+
+  it('is the identity (clamped) on ASCII', () => {
+    const convert = utf16Offsets('axiom: F');
+    expect([convert(-1), convert(0), convert(5), convert(8), convert(99)]).toEqual([0, 0, 5, 8, 8]);
   });
 });

@@ -58,6 +58,8 @@ export interface PlantStats {
  * 3-float ends per segment, only when the model was too large to mesh (the triangles are then empty);
  * `uvs` holds 2 floats (texture coordinates) per vertex and `materialRanges` (first triangle,
  * material kind) pairs: 0 bark (tubes), 1 leaf (leaves, petals, polygons), 2 plain (spheres).
+ * `segmentEnds`/`segmentColors` hold every segment as a line (two 3-float ends each) whatever the
+ * mesh, and `segmentModules` the derived-string module that drew each: the view's Lines mode.
  */
 export interface MeshBuffers {
   positions: Float32Array;
@@ -69,6 +71,9 @@ export interface MeshBuffers {
   materialRanges: Uint32Array;
   lines: Float32Array;
   lineColors: Float32Array;
+  segmentEnds: Float32Array;
+  segmentColors: Float32Array;
+  segmentModules: Uint32Array;
 }
 
 /**
@@ -76,6 +81,19 @@ export interface MeshBuffers {
  * in `crate/src/wasm.rs`) without `sketch`, which the facade sets itself.
  */
 export type BuildOptions = Omit<CoreBuildOptions, 'sketch'>;
+
+/** A stage of a build, as the core reports it (in this order). */
+export type BuildStage = 'parsing' | 'deriving' | 'interpreting' | 'meshing';
+
+/**
+ * Where a build is: the stage that just started, and while deriving, `step` of the `steps`
+ * derivation steps done (told from 0 of n, then after each step; both 0 in the other stages).
+ */
+export interface BuildProgress {
+  stage: BuildStage;
+  step: number;
+  steps: number;
+}
 
 /**
  * How long each stage of one build took, in milliseconds, measured with `performance.now()` read

@@ -1,7 +1,7 @@
 // Core diagnostics shown in the editor: exact ranges, a gutter marker, hover text.
 import { linter, lintGutter, type Diagnostic as EditorDiagnostic } from '@codemirror/lint';
 import { StateEffect, type Extension } from '@codemirror/state';
-import { byteOffsetToUtf16, type Diagnostic } from '../core';
+import { utf16Offsets, type Diagnostic } from '../core';
 
 /**
  * Converts the core's diagnostics for `text` (UTF-8 byte spans) into CodeMirror diagnostics
@@ -9,9 +9,10 @@ import { byteOffsetToUtf16, type Diagnostic } from '../core';
  * shown before the message.
  */
 export function toEditorDiagnostics(text: string, diagnostics: readonly Diagnostic[]): EditorDiagnostic[] {
+  const toUtf16 = utf16Offsets(text);
   return diagnostics.map((d) => {
-    const from = byteOffsetToUtf16(text, d.fromByte);
-    const to = Math.max(from, byteOffsetToUtf16(text, d.toByte));
+    const from = toUtf16(d.fromByte);
+    const to = Math.max(from, toUtf16(d.toByte));
     return { from, to, severity: d.severity, message: d.message, source: d.code };
   });
 }

@@ -152,7 +152,7 @@ export class EmbedPlant {
   }
 
   private async show(outcome: BuildOutcome, options: BuildOptions): Promise<void> {
-    if (outcome.kind === 'superseded') return;
+    if (outcome.kind === 'superseded' || outcome.kind === 'stopped') return;
     if (outcome.kind === 'crashed') {
       this.say('The plant could not be built (a bug of Meristem).');
       return;

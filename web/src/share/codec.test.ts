@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
+import { readdirSync, readFileSync } from 'node:fs';
 import { deflateRawSync } from 'node:zlib';
-import { decodeState, encodeState, hasSharedState, MAX_FRAGMENT, type SharedState } from './codec';
+import { decodeState, encodeState, executableHtml, hasSharedState, MAX_FRAGMENT, MAX_ITERATIONS, type SharedState } from './codec';
 
 const base64url = (bytes: Uint8Array) => Buffer.from(bytes).toString('base64url');
 /** A fragment carrying arbitrary bytes, compressed as the studio would. */
@@ -16,7 +17,7 @@ describe('share links', () => {
       iterations: 7,
       seed: 2 ** 40,
       sliders: { r: 0.75, theta: 22.5 },
-      view: { sides: 12, smoothAll: true, byProduction: false, grid: true, lighting: false, projection: 'orthographic' },
+      view: { sides: 12, smoothAll: true, byProduction: false, grid: true, lighting: false, projection: 'orthographic', render: 'lines', lineWidth: 1.5 },
       camera: { position: [1.5, 2, -3], target: [0, 1, 0], zoom: 2.5 },
       edits: { version: 1, edits: [{ path: [0, 2, 1], handles: [[0, 0.1, 0], [0, 0, 0], [0.2, -0.1, 0.05]] }] },
     };
@@ -54,16 +55,18 @@ describe('share links', () => {
     ['JSON that is not an object', () => fragmentOf('[1,2,3]'), /state object/],
     ['no grammar text', () => fragmentOf('{"v":1,"iterations":3}'), /no grammar text/],
     ['a grammar that is too long', () => fragmentOf(JSON.stringify({ text: 'F'.repeat(300_000) })), /too long/],
-    ['a script tag', () => fragmentOf(JSON.stringify({ text: 'axiom: F\n<script>alert(1)</script>' })), /HTML or script/],
-    ['an image with an onerror handler', () => fragmentOf(JSON.stringify({ text: '<img src=x onerror=alert(1)>' })), /HTML or script/],
-    ['a javascript: URL', () => fragmentOf(JSON.stringify({ text: 'axiom: F // javascript:alert(1)' })), /HTML or script/],
+    ['a script tag', () => fragmentOf(JSON.stringify({ text: 'axiom: F\n<script>alert(1)</script>' })), /executable HTML \(a script element\)/],
+    ['an image with an onerror handler', () => fragmentOf(JSON.stringify({ text: '<img src=x onerror=alert(1)>' })), /event handler in <img>/],
+    ['a javascript: URL in a link', () => fragmentOf(JSON.stringify({ text: 'axiom: F // <a href="javascript:alert(1)">x</a>' })), /script URL in <a>/],
     ['negative iterations', () => fragmentOf(JSON.stringify({ text: 'axiom: F', iterations: -1 })), /iterations/],
-    ['absurd iterations', () => fragmentOf(JSON.stringify({ text: 'axiom: F', iterations: 1e9 })), /iterations/],
+    ['absurd iterations', () => fragmentOf(JSON.stringify({ text: 'axiom: F', iterations: MAX_ITERATIONS + 1 })), /iterations/],
+    ['fractional iterations', () => fragmentOf(JSON.stringify({ text: 'axiom: F', iterations: 2.5 })), /iterations/],
     ['a seed that is text', () => fragmentOf(JSON.stringify({ text: 'axiom: F', seed: '42' })), /seed/],
     ['an infinite camera', () => fragmentOf('{"text":"axiom: F","camera":{"position":[1e400,0,0],"target":[0,0,0]}}'), /camera/],
-    ['a slider named __proto__', () => fragmentOf('{"text":"axiom: F","sliders":{"__proto__":1}}'), /sliders/],
     ['a thousand sides', () => fragmentOf(JSON.stringify({ text: 'axiom: F', view: { sides: 1000 } })), /sides/],
     ['an unknown projection', () => fragmentOf(JSON.stringify({ text: 'axiom: F', view: { projection: 'fisheye' } })), /projection/],
+    ['an unknown render mode', () => fragmentOf(JSON.stringify({ text: 'axiom: F', view: { render: 'dots' } })), /render mode/],
+    ['a line width out of range', () => fragmentOf(JSON.stringify({ text: 'axiom: F', view: { lineWidth: 1e9 } })), /line width/],
     ['a zero zoom', () => fragmentOf(JSON.stringify({ text: 'axiom: F', camera: { position: [0, 0, 1], target: [0, 0, 0], zoom: 0 } })), /zoom/],
     ['branch edits without a version', () => fragmentOf(JSON.stringify({ text: 'axiom: F', edits: { edits: [] } })), /branch edits/],
     ['branch edits with a path of text', () => fragmentOf(JSON.stringify({ text: 'axiom: F', edits: { version: 1, edits: [{ path: ['x'], handles: [[0, 0, 0], [0, 0, 0], [0, 0, 0]] }] } })), /branch edits/],
@@ -78,5 +81,92 @@ describe('share links', () => {
 
   it('has at least 15 hostile cases', () => {
     expect(hostile.length).toBeGreaterThanOrEqual(15);
+  });
+
+  it('drops slider values it cannot use (they are in the text), never reaching a prototype', async () => {
+    const decoded = await decodeState(fragmentOf('{"text":"axiom: F","sliders":{"__proto__":{"polluted":1},"constructor":2,"ok":0.5,"bad name":1,"nan":"x"}}'));
+    expect(decoded).toEqual({ ok: true, state: { text: 'axiom: F', sliders: { ok: 0.5 } } });
+    expect(({} as Record<string, unknown>).polluted).toBeUndefined();
+    const none = await decodeState(fragmentOf('{"text":"axiom: F","sliders":{"__proto__":1}}'));
+    expect(none).toEqual({ ok: true, state: { text: 'axiom: F' } });
+  });
+});
+
+/** Grammars (and grammar-like text) a link must carry: none is HTML that could run. */
+const LEGAL: [string, string][] = [
+  ['a #define named on…', '#define onset = 2\naxiom: F(onset)'],
+  ['#define onclick without spaces', '#define onclick=3\naxiom: A(onclick)\nA(x) -> F(x)'],
+  ['javascript: in a comment', 'axiom: F // see javascript:void(0) for nothing\nF -> FF'],
+  ['javascript: in a block comment', '/* javascript:alert(1) is text here */\naxiom: F'],
+  ['a #module span', '#module span\naxiom: span\nspan -> F span'],
+  ['#module script', '#module script iframe\naxiom: script iframe\nscript -> F script'],
+  ['a context b<a>a', '#angle 22.5\naxiom: b<a>a\nb < a -> b'],
+  ['contexts without spaces', 'axiom: ABC\nA<B>C -> D\nA<B -> E\nB>C -> F'],
+  ['a context of many modules', 'axiom: img\ni<m>g -> F'],
+  ['a one-letter context like a tag', 'axiom: a\nb<a>a -> F\nx<img>y -> G'],
+  ['an onerror-like define in a context line', '#define onerror = 1\naxiom: A\nB<A>C -> F(onerror)'],
+  ['on…= in a comment', '// onload = when it loads\naxiom: F'],
+  ['an unclosed script word in a comment', '// <script is just a word here\naxiom: F'],
+  ['a tag-like context across lines', 'axiom: b<a\n#define onset = 2\nA>B -> C'],
+  ['a script context without an end tag', 'axiom: X\nX<script>Y -> Z'],
+  ['HTML words in a comment', '// iframe, object, embed, svg, style, template\naxiom: F'],
+  ['an email-like and URL-like comment', '// mail me: <me@example.org> or https://example.org/?on=1\naxiom: F'],
+  ['a less-than in an expression', '#define n = 3\naxiom: A(1)\nA(x) : x<n -> A(x+1)F\nA(x) : x>=n -> F'],
+  ['comparisons around names', 'axiom: A(1,2)\nA(a,b) : a<b && b>a -> F(a)'],
+  ['unicode and emoji', '// 🌱 ünïcödé <α>\naxiom: F'],
+];
+
+/** Text holding HTML that would run if it were ever rendered as HTML: refused. */
+const EXECUTABLE: [string, string][] = [
+  ['a script element', '<script>alert(1)</script>'],
+  ['a script element across lines', 'axiom: F\n<script>\nalert(1)\n</script>'],
+  ['a script element in capitals', '<SCRIPT>alert(1)</SCRIPT >'],
+  ['a script with attributes', '<script type="module">import("x")</script>'],
+  ['a script with a source', '<script src="https://evil.example/x.js">'],
+  ['an image with onerror', '<img src=x onerror=alert(1)>'],
+  ['an image with onerror after a slash', '<img/src=x/onerror=alert(1)>'],
+  ['an svg with onload', 'axiom: F // <svg onload="alert(1)">'],
+  ['a body with onload', '<body onload=alert(1)>'],
+  ['a handler in capitals', '<IMG SRC=x OnError=alert(1)>'],
+  ['a javascript: link', '<a href="javascript:alert(1)">x</a>'],
+  ['a javascript: link with spaces', "<a href = ' javascript :alert(1)'>x</a>"],
+  ['a javascript: link with a tab', '<a href="java\tscript:alert(1)">x</a>'],
+  ['an entity-encoded javascript: link', '<a href="&#106;avascript&#58;alert(1)">x</a>'],
+  ['a hex-entity javascript: link', '<a href="&#x6A;avascript&colon;alert(1)">x</a>'],
+  ['a vbscript: link', '<a href="vbscript:msgbox(1)">x</a>'],
+  ['a data:text/html iframe', '<iframe src="data:text/html,<script>alert(1)</script>">'],
+  ['an iframe with a source', '<iframe src="https://evil.example">'],
+  ['an iframe with srcdoc', '<iframe srcdoc="&lt;script&gt;alert(1)&lt;/script&gt;">'],
+  ['an object with data', '<object data="evil.swf">'],
+  ['an embed with a source', '<embed src="evil.swf">'],
+  ['a form action in javascript:', '<form action="javascript:alert(1)"><button>go</button></form>'],
+  ['a math xlink', '<math><maction xlink:href="javascript:alert(1)">x</maction></math>'],
+  ['a handler hidden in a grammar', '#angle 20\naxiom: X\nX -> F[+X]F // <div onmouseover="alert(1)">hover</div>'],
+];
+
+describe('the executable-HTML filter', () => {
+  it.each(LEGAL)('opens a link with %s', async (_name, text) => {
+    expect(executableHtml(text)).toBeNull();
+    const decoded = await decodeState(await encodeState({ text }));
+    expect(decoded).toEqual({ ok: true, state: { text } });
+  });
+
+  it.each(EXECUTABLE)('refuses a link with %s', async (_name, text) => {
+    expect(executableHtml(text)).not.toBeNull();
+    const decoded = await decodeState(await encodeState({ text }));
+    expect(decoded.ok).toBe(false);
+    if (!decoded.ok) expect(decoded.error).toMatch(/executable HTML/);
+  });
+
+  it('opens the link of every gallery example', async () => {
+    const folder = new URL('../../../public/examples/', import.meta.url);
+    const names = readdirSync(folder).filter((name) => name.endsWith('.lsys'));
+    expect(names.length).toBeGreaterThan(20);
+    for (const name of names) {
+      const text = readFileSync(new URL(name, folder), 'utf8');
+      const fragment = await encodeState({ text, iterations: 5, seed: 1 });
+      expect(fragment.length, name).toBeLessThanOrEqual(MAX_FRAGMENT);
+      expect(await decodeState(fragment), name).toEqual({ ok: true, state: { text, iterations: 5, seed: 1 } });
+    }
   });
 });

@@ -1,7 +1,12 @@
 // Share links: the studio's whole state in the URL fragment, compressed (deflate-raw + base64url)
 // behind a format version, so a link made today still opens after the format grows. Decoding
-// treats every fragment as hostile: length, encoding, inflated size, JSON shape, value ranges and
-// HTML-looking text are all checked, and any failure is a message, never an exception.
+// treats every fragment as hostile: length, encoding, inflated size, JSON shape and value ranges
+// are all checked, and any failure is a message, never an exception. The grammar's text is shown
+// only as text (the editor, text nodes, escaped SVG), never as HTML, so nothing in it can run; as a
+// second line of defence, a link whose text holds executable HTML (a script element, an embedded
+// document, an event handler or a `javascript:` URL in a tag's attribute) is refused, and nothing
+// else is: `A<B>C` contexts, `#define onset 2`, `javascript:` in a comment and `#module span` are
+// grammar (`codec.test.ts` holds both directions).
 import { validateEdits, type EditsDocument } from '../core/branches';
 
 /** The fragment's key: `#s=<version>.<payload>`. */
@@ -14,6 +19,10 @@ export const MAX_FRAGMENT = 64 * 1024;
 export const MAX_INFLATED = 512 * 1024;
 /** Longest grammar text accepted (characters). */
 export const MAX_TEXT = 200_000;
+/** Most iterations a link may ask for: the core's own limit on steps (`#max_steps`) is a `u32`. */
+export const MAX_ITERATIONS = 2 ** 32 - 1;
+/** Most slider values a link keeps (they are in the text already: others are dropped, not refused). */
+export const MAX_SLIDERS = 200;
 
 /** Everything a link restores. */
 export interface SharedState {
@@ -34,6 +43,10 @@ export interface SharedState {
     lighting?: boolean;
     /** The 2D/3D choice: `auto` (2D for flat plants) or fixed. */
     projection?: 'auto' | 'perspective' | 'orthographic';
+    /** Branches as lines, tubes, or `auto` (lines for flat plants). */
+    render?: 'auto' | 'lines' | 'tubes';
+    /** The lines' width in CSS pixels (0.5 to 20). */
+    lineWidth?: number;
   };
   /** The camera in use: eye position, the point looked at, and the orthographic zoom. */
   camera?: { position: [number, number, number]; target: [number, number, number]; zoom?: number };
@@ -86,11 +99,46 @@ function fail(error: string): Decoded {
   return { ok: false, error };
 }
 
+/** A start tag on one line: its name and its attributes (`<b>` contexts are tags too, without attributes). */
+const TAG = /<([a-z][\w:-]*)([\s/][^<>\n]*)?>/gi;
+
+/** Elements that run or embed code when they have a source (`<object>` without one does nothing). */
+const EMBEDDING = new Set(['iframe', 'frame', 'object', 'embed', 'applet']);
+
+/** Attribute text with character references decoded and blanks dropped, as a browser would read a URL in it. */
+function readAttributes(attributes: string): string {
+  return attributes
+    .replace(/&#x([0-9a-f]+);?/gi, (_, hex: string) => String.fromCodePoint(Math.min(parseInt(hex, 16), 0x10ffff)))
+    .replace(/&#(\d+);?/g, (_, dec: string) => String.fromCodePoint(Math.min(parseInt(dec, 10), 0x10ffff)))
+    .replace(/&colon;/gi, ':')
+    .replace(/&(tab|newline);/gi, '')
+    .replace(/[\u0000-\u0020]+/g, ' ')
+    .toLowerCase();
+}
+
 /**
- * HTML that has no business in a grammar. `A<B>C` contexts are fine: only tag names of three letters
- * or more that carry active content count (`<a>` would be the context `b<a>a`).
+ * What executable HTML `text` holds, in words, or null: a `<script>` element (closed, or with a
+ * `src`), an embedded document with a source, or any tag with an `on…=` event handler or a
+ * `javascript:`/`vbscript:`/`data:text/html` URL in an attribute. Grammar never matches: contexts
+ * (`b<a>a`, `A < B > C`) are tags without attributes, and `onset =` or `javascript:` outside a tag
+ * is just text.
  */
-const HTML = /<\s*\/?\s*(script|iframe|img|svg|object|embed|style|link|meta|div|span|body|html|form|input|button|math|video|audio|base|frame|frameset|template)(\s|\/|>)|javascript:|\bon[a-z]+\s*=/i;
+export function executableHtml(text: string): string | null {
+  // A script start tag with an end tag after it (found in one pass each: no backtracking on hostile text).
+  const start = text.search(/<script\b[^<>]*>/i);
+  if (start >= 0 && /<\/script\s*>/i.test(text.slice(start))) return 'a script element';
+  for (const [, name, attributes = ''] of text.matchAll(TAG)) {
+    const tag = name.toLowerCase();
+    const read = readAttributes(attributes);
+    if (tag === 'script' && /(^|[\s/])src\s*=/.test(read)) return 'a script element';
+    if (EMBEDDING.has(tag) && /(^|[\s/])(src|srcdoc|data|code)\s*=/.test(read)) return `an embedded document (<${tag}>)`;
+    if (/(^|[\s/"'])on[a-z]+\s*=/.test(read)) return `an event handler in <${tag}>`;
+    if (/=\s*["']?\s*(javascript|vbscript|data\s*:\s*text\/html)/.test(read.replace(/\s*:\s*/g, ':').replace(/(java|vb)\s+script/g, '$1script'))) {
+      return `a script URL in <${tag}>`;
+    }
+  }
+  return null;
+}
 
 function isRecord(value: unknown): value is Record<string, unknown> {
   return typeof value === 'object' && value !== null && !Array.isArray(value);
@@ -100,8 +148,33 @@ function isWhole(value: unknown, max: number): value is number {
   return typeof value === 'number' && Number.isInteger(value) && value >= 0 && value <= max;
 }
 
+/** Largest coordinate a camera may have: the plant's own are `f32`. */
+const MAX_COORDINATE = 3.4e38;
+
 function isPoint(value: unknown): value is [number, number, number] {
-  return Array.isArray(value) && value.length === 3 && value.every((v) => typeof v === 'number' && Number.isFinite(v) && Math.abs(v) < 1e12);
+  return Array.isArray(value) && value.length === 3 && value.every((v) => typeof v === 'number' && Number.isFinite(v) && Math.abs(v) <= MAX_COORDINATE);
+}
+
+/** Names a slider may have in a link: a `#define` name, never one that would reach an object's prototype. */
+function isSliderName(name: string): boolean {
+  return /^[A-Za-z_]\w*$/.test(name) && name.length <= 256 && !['__proto__', 'constructor', 'prototype'].includes(name);
+}
+
+/**
+ * The slider values worth keeping: well-named finite numbers, at most {@link MAX_SLIDERS}. They
+ * repeat values the text holds, so anything else is dropped rather than the link refused.
+ */
+function cleanSliders(sliders: unknown): Record<string, number> | undefined {
+  if (!isRecord(sliders)) return undefined;
+  const clean: Record<string, number> = {};
+  let kept = 0;
+  for (const [name, value] of Object.entries(sliders)) {
+    if (kept === MAX_SLIDERS) break;
+    if (!isSliderName(name) || typeof value !== 'number' || !Number.isFinite(value)) continue;
+    clean[name] = value;
+    kept++;
+  }
+  return kept > 0 ? clean : undefined;
 }
 
 /** Checks the shape of a decoded state; copies only known fields. */
@@ -110,27 +183,19 @@ export function validate(json: unknown): Decoded {
   const { text, iterations, seed, sliders, view, camera, edits } = json;
   if (typeof text !== 'string') return fail('the link holds no grammar text');
   if (text.length > MAX_TEXT) return fail(`the grammar in the link is too long (${text.length} characters; at most ${MAX_TEXT})`);
-  if (HTML.test(text)) return fail('the grammar in the link looks like HTML or script, not an L-system');
+  const html = executableHtml(text);
+  if (html) return fail(`the grammar in the link holds executable HTML (${html}), which no grammar needs`);
   const state: SharedState = { text };
   if (iterations !== undefined) {
-    if (!isWhole(iterations, 10_000)) return fail('the link’s iterations are not a whole number from 0 to 10000');
+    if (!isWhole(iterations, MAX_ITERATIONS)) return fail(`the link’s iterations are not a whole number from 0 to ${MAX_ITERATIONS}`);
     state.iterations = iterations;
   }
   if (seed !== undefined) {
     if (!isWhole(seed, Number.MAX_SAFE_INTEGER)) return fail('the link’s seed is not a whole number');
     state.seed = seed;
   }
-  if (sliders !== undefined) {
-    if (!isRecord(sliders) || Object.keys(sliders).length > 200) return fail('the link’s sliders are malformed');
-    const clean: Record<string, number> = {};
-    for (const [name, value] of Object.entries(sliders)) {
-      if (!/^[A-Za-z_]\w{0,63}$/.test(name) || ['__proto__', 'constructor', 'prototype'].includes(name) || typeof value !== 'number' || !Number.isFinite(value)) {
-        return fail('the link’s sliders are malformed');
-      }
-      clean[name] = value;
-    }
-    state.sliders = clean;
-  }
+  const kept = cleanSliders(sliders);
+  if (kept) state.sliders = kept;
   if (view !== undefined) {
     if (!isRecord(view)) return fail('the link’s view options are malformed');
     const clean: NonNullable<SharedState['view']> = {};
@@ -148,6 +213,14 @@ export function validate(json: unknown): Decoded {
         return fail('the link’s projection is not auto, perspective or orthographic');
       }
       clean.projection = view.projection;
+    }
+    if (view.render !== undefined) {
+      if (view.render !== 'auto' && view.render !== 'lines' && view.render !== 'tubes') return fail('the link’s render mode is not auto, lines or tubes');
+      clean.render = view.render;
+    }
+    if (view.lineWidth !== undefined) {
+      if (typeof view.lineWidth !== 'number' || !(view.lineWidth >= 0.5 && view.lineWidth <= 20)) return fail('the link’s line width is not from 0.5 to 20 pixels');
+      clean.lineWidth = view.lineWidth;
     }
     state.view = clean;
   }

@@ -1,20 +1,8 @@
 import { describe, expect, it } from 'vitest';
-import { cleanName, GrammarStore, titleOf, type KeyValueStorage } from './storage';
+import { memoryStorage } from './memory-storage';
+import { cleanName, GrammarStore, titleOf } from './storage';
 
-/** An in-memory storage that can be made to fail like a full localStorage. */
-function memory(): KeyValueStorage & { full: boolean; data: Map<string, string> } {
-  const data = new Map<string, string>();
-  return {
-    data,
-    full: false,
-    getItem: (k) => data.get(k) ?? null,
-    setItem(k, v) {
-      if (this.full) throw new DOMException('quota', 'QuotaExceededError');
-      data.set(k, v);
-    },
-    removeItem: (k) => void data.delete(k),
-  };
-}
+const memory = memoryStorage;
 
 describe('autosave', () => {
   it('restores the last text', () => {

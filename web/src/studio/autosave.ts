@@ -1,5 +1,7 @@
 // Autosave: the editor's text is kept in the browser on every change, shortly after typing stops,
-// and at once when the page goes away; if it cannot be, the notice says so (once, until it can).
+// and at once when the page goes away: in localStorage, else (when that is full or switched off) in
+// IndexedDB; if neither can keep it, the notice says so (once, until one can).
+import type { KeptTexts } from '../share/kept-texts';
 import type { GrammarStore } from '../share/storage';
 import type { Notice } from './notice';
 
@@ -12,9 +14,12 @@ export class Autosave {
   /** The text of the last change, while its save waits for the timer. */
   private pending = '';
   private failed = false;
+  /** Counts saves, so that only the newest one's outcome is reported. */
+  private saves = 0;
 
   constructor(
     private readonly store: GrammarStore,
+    private readonly kept: KeptTexts,
     private readonly notice: Notice,
   ) {
     window.addEventListener('pagehide', () => this.flush());
@@ -25,22 +30,25 @@ export class Autosave {
   changed(text: string): void {
     clearTimeout(this.timer);
     this.pending = text;
-    this.timer = setTimeout(() => this.save(this.pending), AUTOSAVE_DELAY);
+    this.timer = setTimeout(() => void this.save(this.pending), AUTOSAVE_DELAY);
   }
 
-  /** Saves a change still waiting for its timer now (e.g. before a link may replace the text). */
+  /** Saves a change still waiting for its timer now (e.g. when the page goes away). */
   flush(): void {
-    if (this.timer !== undefined) this.save(this.pending);
+    if (this.timer !== undefined) void this.save(this.pending);
   }
 
-  /** Saves `text` now, as the work in progress. */
-  save(text: string): void {
+  /** Saves `text` now, as the work in progress; settles whether some storage kept it. */
+  async save(text: string): Promise<boolean> {
     clearTimeout(this.timer);
     this.timer = undefined;
-    const ok = this.store.autosave(text);
+    const save = ++this.saves;
+    const ok = this.store.autosave(text) || (await this.kept.autosave(text));
+    if (save !== this.saves) return ok; // a newer save reports
     if (!ok && !this.failed) {
       this.notice.show('error', 'Your text cannot be saved in this browser (its storage is full or switched off): save it as a file or share it.');
     }
     this.failed = !ok;
+    return ok;
   }
 }

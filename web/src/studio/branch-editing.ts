@@ -153,10 +153,16 @@ export class BranchEditSession {
     }
     this.editing = on;
     this.selected = null;
+    this.view.holdTubes('editing', on); // the handles reshape tubes
     this.view.showHandles(null);
     this.view.canvas.classList.toggle('editing-branches', on);
     if (on && !this.editor) this.attach();
     if (!on && this.doc.edits.length === 0) this.plantShown(); // back to the worker's plant
+    else if (!on && this.editor) {
+      // Drags patched the tubes alone: the segments (the Lines mode's) come with a whole copy.
+      this.mesh = this.editor.mesh();
+      this.view.showPlant(this.mesh, this.host.shown()?.flat ?? false);
+    }
     this.host.modeChanged(on);
     this.showButtons();
   }

@@ -2,8 +2,8 @@
 // a Cancel button on the status line (the page stays responsive), and the PNG of the view. One
 // download at a time: the menu is disabled meanwhile.
 import { MODEL_FORMATS, type ExportOptions, type ModelFormat } from '../core';
-import type { PlantView } from '../view';
-import { afterPaint, fileSize, pictureSize, saveFile } from './downloads';
+import type { PictureLook, PlantView } from '../view';
+import { afterPaint, fileSize, paperPixels, pictureSize, saveFile, withResolution, type PaperChoice } from './downloads';
 import { createExportWorker, describeProgress, runExport } from './export-client';
 import { closeLikeAMenu } from './menus';
 
@@ -15,6 +15,12 @@ export interface DownloadMenuElements {
   pngWidth: HTMLInputElement;
   pngHeight: HTMLInputElement;
   downloadPng: HTMLButtonElement;
+  /** A sheet of paper the picture fills (empty: the width and height typed). */
+  pngPaper: HTMLSelectElement;
+  pngDpi: HTMLSelectElement;
+  pngBackground: HTMLSelectElement;
+  /** The Lines mode's width in the picture, in its pixels. */
+  pngLineWidth: HTMLInputElement;
   exportStatus: HTMLElement;
   exportProgress: HTMLProgressElement;
   exportCancel: HTMLButtonElement;
@@ -24,6 +30,8 @@ export interface DownloadMenuElements {
 export interface DownloadedPlant {
   source: string;
   options: ExportOptions;
+  /** The name its files are saved under, without extension (see `figureName`). */
+  name: string;
 }
 
 /** The state of the last download. */
@@ -67,7 +75,8 @@ export function installDownloads(els: DownloadMenuElements, view: PlantView, sho
     download(label, async () => {
       const plant = shown();
       if (!plant) throw new Error('no plant yet');
-      const running = runExport(createExportWorker, { source: plant.source, format, options: plant.options }, (progress) => {
+      const options = { ...plant.options, name: plant.name };
+      const running = runExport(createExportWorker, { source: plant.source, format, options }, (progress) => {
         els.exportProgress.max = progress.count;
         els.exportProgress.value = progress.index + 1;
         showExportStatus(els.exportStatus, 'busy', describeProgress(label, progress));
@@ -91,18 +100,37 @@ export function installDownloads(els: DownloadMenuElements, view: PlantView, sho
     els.modelDownloads.append(button);
   }
   closeLikeAMenu(els.menu);
+  installPictureSize(els);
   els.downloadPng.addEventListener('click', () => {
     const size = pictureSize(els.pngWidth.value, els.pngHeight.value, view.maxPictureSide());
-    if (!size.ok) {
-      showExportStatus(els.exportStatus, 'error', size.message);
+    const lineWidth = Number(els.pngLineWidth.value);
+    if (!size.ok || !(lineWidth >= 0.5 && lineWidth <= 60)) {
+      showExportStatus(els.exportStatus, 'error', size.ok ? 'PNG lines: the width must be from 0.5 to 60 pixels' : size.message);
       return;
     }
+    const dpi = Number(els.pngDpi.value);
+    const look: PictureLook = { background: els.pngBackground.value as PictureLook['background'], lineWidth };
+    const name = `${shown()?.name ?? 'plant'}.png`;
     // The picture is drawn by the page's WebGL context: it cannot move to a worker (it is one draw).
     void download(`PNG ${size.width} × ${size.height}`, async () => {
       await afterPaint(); // the status shows before the draw
-      const png = await view.snapshot(size.width, size.height);
-      saveFile(png, 'plant.png', 'image/png');
-      return `Saved plant.png · ${size.width} × ${size.height} · ${fileSize(png.size)}`;
+      const drawn = await view.snapshot(size.width, size.height, look);
+      const png = withResolution(new Uint8Array(await drawn.arrayBuffer()), dpi);
+      saveFile(png, name, 'image/png');
+      return `Saved ${name} · ${size.width} × ${size.height} at ${dpi} DPI · ${fileSize(png.length)}`;
     });
   });
+}
+
+/** A paper (with the DPI) fills in the picture's size; a size typed by hand makes it Custom. */
+function installPictureSize(els: DownloadMenuElements): void {
+  const fill = () => {
+    if (els.pngPaper.value === '') return;
+    const { width, height } = paperPixels(els.pngPaper.value as PaperChoice, Number(els.pngDpi.value));
+    els.pngWidth.value = String(width);
+    els.pngHeight.value = String(height);
+  };
+  els.pngPaper.addEventListener('change', fill);
+  els.pngDpi.addEventListener('change', fill);
+  for (const input of [els.pngWidth, els.pngHeight]) input.addEventListener('input', () => (els.pngPaper.value = ''));
 }

@@ -1,5 +1,31 @@
 // Downloads: handing a file to the browser, and the small parsing and wording around it.
 
+/** Words of a title that name no figure in particular (`ABOP Fig. 1.24d` is saved as `abop-1.24d`). */
+const FIGURE_WORDS = /^(fig\.?|figure)$/i;
+
+/**
+ * The name files of a grammar are saved under: its title (the first line of its opening `//`
+ * comment, up to a colon: `// ABOP Fig 1.24d: …` gives `abop-1.24d`, `// Barnsley fern` gives
+ * `barnsley-fern`), else the name of the file it was opened as (an example, `file/NAME`; not a
+ * saved grammar's `saved/ID`), else `plant`.
+ */
+export function figureName(file: string, source = ''): string {
+  const title = /^\s*\/\/(.*)/.exec(source)?.[1].split(':')[0] ?? '';
+  const words = title.split(/\s+/).filter((w) => w !== '' && !FIGURE_WORDS.test(w));
+  const fromTitle = slug(words.join('-')).slice(0, 48).replace(/-+$/, '');
+  if (fromTitle !== '') return fromTitle;
+  const name = slug(file.replace(/^(file|saved)\//, '').replace(/\.[A-Za-z0-9]+$/, ''));
+  return name === '' || file.startsWith('saved/') ? 'plant' : name;
+}
+
+/** Lower case, runs of anything but letters, digits, `.` and `_` as one `-`, none at the ends. */
+function slug(text: string): string {
+  return text
+    .toLowerCase()
+    .replace(/[^\p{L}\p{N}._]+/gu, '-')
+    .replace(/^[-.]+|[-.]+$/g, '');
+}
+
 /** The smallest and (unless the GPU allows less) largest side of a PNG picture, in pixels. */
 export const PICTURE_MIN = 16;
 export const PICTURE_MAX = 8192;
@@ -53,4 +79,66 @@ export function saveFile(data: Blob | Uint8Array, fileName: string, mimeType: st
 /** Resolves after the browser has painted, so a status set before it is on screen during long work. */
 export function afterPaint(): Promise<void> {
   return new Promise((resolve) => requestAnimationFrame(() => setTimeout(resolve, 0)));
+}
+
+/** The resolutions a picture is offered at, in dots per inch. */
+export const PICTURE_DPIS = [72, 150, 300] as const;
+
+/** Paper a picture can fill (ISO sizes, portrait), in millimetres. */
+export const PAPERS = { a5: { label: 'A5', width: 148, height: 210 }, a4: { label: 'A4', width: 210, height: 297 } } as const;
+
+/** A paper and its orientation, as the menu offers them: `a5-portrait`, `a4-landscape`. */
+export type PaperChoice = `${keyof typeof PAPERS}-${'portrait' | 'landscape'}`;
+
+/** The pixels of a whole sheet of `paper` at `dpi` (rounded to whole pixels). */
+export function paperPixels(paper: PaperChoice, dpi: number): { width: number; height: number } {
+  const [name, orientation] = paper.split('-') as [keyof typeof PAPERS, string];
+  const { width, height } = PAPERS[name];
+  const px = (mm: number) => Math.round((mm / 25.4) * dpi);
+  return orientation === 'landscape' ? { width: px(height), height: px(width) } : { width: px(width), height: px(height) };
+}
+
+const CRC_TABLE = Uint32Array.from({ length: 256 }, (_, n) => {
+  let c = n;
+  for (let k = 0; k < 8; k++) c = c & 1 ? 0xedb88320 ^ (c >>> 1) : c >>> 1;
+  return c >>> 0;
+});
+
+/** The CRC-32 of PNG chunks (ISO 3309). */
+function crc32(bytes: Uint8Array): number {
+  let c = 0xffffffff;
+  for (const byte of bytes) c = CRC_TABLE[(c ^ byte) & 0xff] ^ (c >>> 8);
+  return (c ^ 0xffffffff) >>> 0;
+}
+
+/**
+ * `png` with its resolution recorded (a `pHYs` chunk right after the header, replacing any the
+ * encoder wrote), so that it prints at `dpi`: 300 DPI and 1748 pixels wide is an A5 page's width.
+ */
+export function withResolution(png: Uint8Array, dpi: number): Uint8Array {
+  const view = new DataView(png.buffer, png.byteOffset, png.byteLength);
+  const chunks: Uint8Array[] = [png.subarray(0, 8)];
+  for (let at = 8; at + 12 <= png.length; ) {
+    const length = view.getUint32(at);
+    const type = String.fromCharCode(...png.subarray(at + 4, at + 8));
+    const end = at + 12 + length;
+    if (type !== 'pHYs') chunks.push(png.subarray(at, end));
+    if (type === 'IHDR') {
+      const chunk = new Uint8Array(21);
+      const data = new DataView(chunk.buffer);
+      const perMetre = Math.round(dpi / 0.0254);
+      data.setUint32(0, 9);
+      chunk.set([0x70, 0x48, 0x59, 0x73], 4); // pHYs
+      data.setUint32(8, perMetre);
+      data.setUint32(12, perMetre);
+      chunk[16] = 1; // the unit is the metre
+      data.setUint32(17, crc32(chunk.subarray(4, 17)));
+      chunks.push(chunk);
+    }
+    at = end;
+  }
+  const out = new Uint8Array(chunks.reduce((n, c) => n + c.length, 0));
+  let offset = 0;
+  for (const chunk of chunks) (out.set(chunk, offset), (offset += chunk.length));
+  return out;
 }

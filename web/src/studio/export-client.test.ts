@@ -1,29 +1,9 @@
 import { describe, expect, it } from 'vitest';
+import { FakeJobWorker } from './fake-job-worker';
 import type { ExportProgress, ModelFile } from '../core';
-import { describeProgress, runExport, type ExportRequest, type ExportResponse, type ExportWorkerLike } from './export-client';
+import { describeProgress, runExport, type ExportRequest, type ExportResponse } from './export-client';
 
-/** A worker that records what it is sent and answers when the test says so. */
-class FakeExportWorker implements ExportWorkerLike {
-  requests: ExportRequest[] = [];
-  terminated = false;
-  onMessage: ((event: MessageEvent<ExportResponse>) => void) | undefined;
-  onError: ((event: ErrorEvent) => void) | undefined;
-  postMessage(message: ExportRequest): void {
-    this.requests.push(message);
-  }
-  terminate(): void {
-    this.terminated = true;
-  }
-  addEventListener(type: 'message', listener: (event: MessageEvent<ExportResponse>) => void): void;
-  addEventListener(type: 'error', listener: (event: ErrorEvent) => void): void;
-  addEventListener(type: 'message' | 'error', listener: ((event: MessageEvent<ExportResponse>) => void) | ((event: ErrorEvent) => void)): void {
-    if (type === 'message') this.onMessage = listener as (event: MessageEvent<ExportResponse>) => void;
-    else this.onError = listener as (event: ErrorEvent) => void;
-  }
-  send(response: ExportResponse): void {
-    this.onMessage?.({ data: response } as MessageEvent<ExportResponse>);
-  }
-}
+class FakeExportWorker extends FakeJobWorker<ExportRequest, ExportResponse> {}
 
 const request: ExportRequest = { source: 'axiom: F', format: 'glb', options: { iterations: 2 } };
 const file: ModelFile = { fileName: 'plant.glb', mimeType: 'model/gltf-binary', bytes: new Uint8Array([1, 2, 3]) };
@@ -51,7 +31,7 @@ describe('runExport', () => {
     expect(await a.done).toEqual({ kind: 'failed', message: 'the grammar has errors: nothing to export', crashed: false });
     const broken = new FakeExportWorker();
     const b = runExport(() => broken, request, () => {});
-    broken.onError?.({ message: '', preventDefault() {} } as ErrorEvent);
+    broken.fail();
     expect(await b.done).toEqual({ kind: 'failed', message: 'the export worker failed: it could not start', crashed: true });
     expect(broken.terminated).toBe(true);
   });

@@ -2,6 +2,7 @@
 // forwarded, cancellation by terminating it. Exports never run on the page's thread, so a model of
 // millions of vertices is written while the page stays responsive.
 import type { ExportOptions, ExportProgress, ModelFile, ModelFormat } from '../core';
+import { runWorkerJob, type JobWorkerLike, type WorkerJob } from './worker-job';
 
 /** Page → export worker: the one request a worker gets. */
 export interface ExportRequest {
@@ -24,25 +25,15 @@ export type ExportOutcome =
   | { kind: 'cancelled' };
 
 /** What the client needs of a Worker (a fake one in unit tests). */
-export interface ExportWorkerLike {
-  postMessage(message: ExportRequest): void;
-  terminate(): void;
-  addEventListener(type: 'message', listener: (event: MessageEvent<ExportResponse>) => void): void;
-  addEventListener(type: 'error', listener: (event: ErrorEvent) => void): void;
-}
+export type ExportWorkerLike = JobWorkerLike<ExportRequest, ExportResponse>;
 
 /** Starts a real export worker (vite bundles export-worker.ts as a module worker). */
 export function createExportWorker(): Worker {
   return new Worker(new URL('./export-worker.ts', import.meta.url), { type: 'module', name: 'meristem-export' });
 }
 
-/** An export under way. */
-export interface RunningExport {
-  /** Settles once: with the file, the core's reason, or `cancelled`. */
-  readonly done: Promise<ExportOutcome>;
-  /** Stops the export (its worker is terminated); `done` settles as `cancelled`. */
-  cancel(): void;
-}
+/** An export under way: `done` settles once, with the file, the core's reason, or `cancelled`. */
+export type RunningExport = WorkerJob<ExportOutcome>;
 
 /**
  * Exports `source` in `format` with `options` in a fresh worker from `createWorker`, calling
@@ -53,29 +44,14 @@ export function runExport(
   request: ExportRequest,
   onProgress: (progress: ExportProgress) => void,
 ): RunningExport {
-  let finish: (outcome: ExportOutcome) => void = () => {};
-  let settled = false;
-  const done = new Promise<ExportOutcome>((resolve) => (finish = resolve));
-  const worker = createWorker();
-  const end = (outcome: ExportOutcome) => {
-    if (settled) return;
-    settled = true;
-    worker.terminate();
-    finish(outcome);
-  };
-  worker.addEventListener('message', (event) => {
-    if (settled) return;
-    const response = event.data;
-    if (response.kind === 'progress') onProgress(response.progress);
-    else if (response.kind === 'done') end({ kind: 'done', file: response.file });
-    else end({ kind: 'failed', message: response.message, crashed: response.crashed });
+  return runWorkerJob<ExportRequest, ExportResponse, ExportOutcome>(createWorker, request, {
+    answer: (response) => {
+      if (response.kind === 'progress') return void onProgress(response.progress);
+      return response.kind === 'done' ? { kind: 'done', file: response.file } : { kind: 'failed', message: response.message, crashed: response.crashed };
+    },
+    failed: (message) => ({ kind: 'failed', message: `the export worker failed: ${message}`, crashed: true }),
+    cancelled: { kind: 'cancelled' },
   });
-  worker.addEventListener('error', (event) => {
-    event.preventDefault?.();
-    end({ kind: 'failed', message: `the export worker failed: ${event.message || 'it could not start'}`, crashed: true });
-  });
-  worker.postMessage(request);
-  return { done, cancel: () => end({ kind: 'cancelled' }) };
 }
 
 /** `Exporting glTF 2.0 binary: meshing (4 of 6)…` */

@@ -1,8 +1,6 @@
 // The File menu: open a grammar file (the picker, or Ctrl+O), save the text as a `.lsys` file
 // (Ctrl+S), and My grammars.
-import { titleOf } from '../share/storage';
-import { saveFile } from './downloads';
-import { lsysFileName } from './grammar-files';
+import { saveGrammarFile } from './grammar-files';
 import { closeLikeAMenu } from './menus';
 
 /** The menu and its file picker (see index.html). */
@@ -17,8 +15,8 @@ export interface FileMenuElements {
 
 /** What the menu's items do. */
 export interface FileMenuActions {
-  /** Opens a file the user picked. */
-  openFile(file: File): void;
+  /** Opens the files the user picked (one grammar, or a vlab object's files together). */
+  openFiles(files: File[]): void;
   /** The grammar text to save. */
   text(): string;
   /** Opens My grammars. */
@@ -34,13 +32,12 @@ export function installFileMenu(els: FileMenuElements, actions: FileMenuActions)
   };
   const saveAsFile = () => {
     els.menu.open = false;
-    const text = actions.text();
-    saveFile(new TextEncoder().encode(text), lsysFileName(titleOf(text)), 'text/plain');
+    saveGrammarFile(actions.text());
   };
   els.openFile.addEventListener('click', pickFile);
   els.fileInput.addEventListener('change', () => {
-    const file = els.fileInput.files?.[0];
-    if (file) actions.openFile(file);
+    const files = Array.from(els.fileInput.files ?? []);
+    if (files.length > 0) actions.openFiles(files);
   });
   els.saveFile.addEventListener('click', saveAsFile);
   window.addEventListener(

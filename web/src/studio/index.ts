@@ -1,11 +1,11 @@
 // The studio page's own logic: building in a worker on edit, the status line, the panels and
 // controls around the editor and the view, the context-sensitivity view, downloads, and the page
 // around them (its elements, opening texts and links, autosave, the menus, the test hook).
-export { reportPlant, reportErrors, plural, millis, type StatusReport } from './status';
+export { reportBuilding, reportPlant, reportErrors, plural, millis, type StatusReport } from './status';
 export { BuildClient, createBuildWorker, type BuildOutcome, type BuildResult, type WorkerLike } from './worker-client';
 export { transferablesOf, type BuildRequest, type BuildResponse } from './worker-protocol';
 export { DiagnosticsFeed } from './diagnostics-feed';
-export { LivePreview, showStatus, type LivePreviewParts } from './live-preview';
+export { BUILDING_AFTER, LivePreview, showStatus, type LivePreviewParts } from './live-preview';
 export { SliderPanel, sliderRanges, type SliderRange, type SliderEditor } from './sliders';
 export { Playback, type PlaybackHost, type PlaybackOptions } from './playback';
 export { attachSplitter, clampShare, shareAfterKey } from './splitter';
@@ -18,33 +18,36 @@ export type { LearnElements, LearnHost } from './learn-panel'; // the panel itse
 export { installLearnPanel } from './learn-loader';
 export { chapterHeading, compareLessons, isLesson, isLessonIndex, type Lesson, type LessonGrammar, type LessonSummary, type LessonTask } from './lesson-manifest';
 export { CHECK_FACTS, CHECK_FUNCTIONS, evaluateCheck, needsDerivedString, parseCheck, plantFacts, spokenAnswer, MAX_CHECKED_MODULES, type CheckAnswer, type CheckNode, type PlantFacts } from './lesson-check';
-export { askToReplace } from './confirm';
+export { askToDownload, askToReplace, type QuestionDialog } from './confirm';
 export { ContextView, type ContextViewElements } from './context-view';
 export { DerivationView, descendants, firstChildren, originInWords, SEQUENCE_MAX_MODULES, TREE_MAX_MODULES, type DerivationViewHost } from './derivation-view';
 export { countsInWords, describeProduction, madeInWords, reportInWords, lineOf } from './explain-words';
 export { installInspectorTabs } from './inspector-tabs';
 export { LayoutModes, type LayoutElements, type LayoutHost } from './layout-modes';
-export { afterPaint, fileSize, pictureSize, saveFile, PICTURE_MAX, PICTURE_MIN, type PictureSize } from './downloads';
+export { afterPaint, figureName, fileSize, pictureSize, saveFile, PICTURE_MAX, PICTURE_MIN, type PictureSize } from './downloads';
 export { createExportWorker, describeProgress, runExport, type ExportOutcome, type ExportRequest, type ExportResponse, type RunningExport } from './export-client';
 export { Notice, type NoticeElements, type NoticeKind } from './notice';
 export { EmbedSnippets, elementSnippet, frameSnippet, type EmbedSnippetElements, type SnippetControls } from './embed-snippets';
 export { ShareDialog, installShareButton, linkWithFragment, type ShareDialogElements } from './share-dialog';
 export { LibraryDialog, type LibraryElements, type LibraryHost } from './library-dialog';
-export { openGrammarBytes, decodeText, dialectName, lsysFileName, MAX_FILE_BYTES, type OpenedFile } from './grammar-files';
+export { checkGrammarBytes, openGrammarBytes, saveGrammarFile, decodeText, dialectName, lsysFileName, MAX_FILE_BYTES, type OpenedFile } from './grammar-files';
 export { BranchEditSession, MAX_EDITABLE_SEGMENTS, pathText, staleEditsMessage, type BranchEditingElements, type BranchEditingHost } from './branch-editing';
 export { GrowthPanel, type GrowthEditor } from './growth-panel';
 export { byId, studioElements, type StudioElements } from './page-elements';
 export { ViewOptions, DEFAULT_VIEW_OPTIONS, type SharedViewOptions, type ViewOption, type ViewOptionValues, type ViewOptionsListener } from './view-options';
 export { ViewTools, sidesChoices, type ViewToolElements } from './view-tools';
-export { StagesMode, figureName, stagesOf, MAX_STAGE_COLUMNS, MAX_STAGE_SEEDS, type StagesElements, type StagesHost } from './stages';
+export { StagesMode, stagesOf, MAX_STAGE_COLUMNS, MAX_STAGE_SEEDS, type StagesElements, type StagesHost } from './stages';
 export { stagesSvg, parseStageSvg, type StageDrawing } from './stages-svg';
 export { ViewFollowing, growthKey, isLastStep, type PlayFraming, type ViewFollowingElements } from './view-following';
 export { DerivationControls, type DerivationElements, type SharedDerivation } from './derivation-controls';
 export { TextOpening, type OpenedText, type TextOpeningParts } from './text-opening';
-export { openLink, openPastedLinks, startingText, type PastedLinkParts, type StartingText } from './link-opening';
+export { openPastedLinks, startingText, type PastedLinkParts, type StartingParts, type StartingText } from './link-opening';
+export { TextKeeper, keptSentence, restoreAutosave, type KeptPlace, type Keeping } from './keeping';
+export { createImportWorker, readGrammarFile, runImport, IMPORT_TIME_LIMIT, type ImportOutcome, type ImportRequest, type ImportResponse } from './import-client';
+export { runWorkerJob, type JobWorkerLike, type WorkerJob } from './worker-job';
 export { LinkState, type LinkStateParts } from './link-state';
 export { Autosave, AUTOSAVE_DELAY } from './autosave';
-export { browserStorage } from './browser-storage';
+export { browserDatabase, browserStorage } from './browser-storage';
 export { installFileMenu, type FileMenuActions, type FileMenuElements } from './file-menu';
 export { installDrop } from './file-drop';
 export { closeLikeAMenu } from './menus';

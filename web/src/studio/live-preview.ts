@@ -1,11 +1,15 @@
 // The live preview: every change of the text or of a build option sends a build to the worker;
 // only the newest one is shown. A grammar with errors keeps the last good plant on screen, marked
-// stale. The editor's linter gets its diagnostics from the same builds (DiagnosticsFeed).
-import type { BuildOptions, PlantSketch } from '../core';
+// stale. A build that takes a while says so ("Building… step k of n") with a Stop button. The
+// editor's linter gets its diagnostics from the same builds (DiagnosticsFeed).
+import type { BuildOptions, BuildProgress, PlantSketch } from '../core';
 import type { PlantView } from '../view';
 import { DiagnosticsFeed } from './diagnostics-feed';
-import { reportErrors, reportPlant, type StatusReport } from './status';
+import { reportBuilding, reportErrors, reportPlant, type StatusReport } from './status';
 import type { BuildClient, BuildOutcome, BuildResult } from './worker-client';
+
+/** A build not delivered after this long (ms) is shown as under way, with its Stop button. */
+export const BUILDING_AFTER = 300;
 
 /** What the preview reads and writes on the page. */
 export interface LivePreviewParts {
@@ -13,6 +17,8 @@ export interface LivePreviewParts {
   view: PlantView;
   /** The status line: its text, `data-state` and `data-generation` (a counter of delivered builds). */
   status: HTMLElement;
+  /** Stops the build under way (shown while one takes longer than {@link BUILDING_AFTER}). */
+  stop?: HTMLButtonElement;
   staleBadge: HTMLElement;
   /** The grammar text now. */
   text: () => string;
@@ -30,7 +36,7 @@ export interface LivePreviewParts {
 }
 
 /** A status line state beyond a build's own. */
-type PageStatus = StatusReport | { state: 'loading' | 'crashed'; text: string };
+type PageStatus = StatusReport | { state: 'loading' | 'crashed' | 'building' | 'stopped'; text: string };
 
 /** Shows a report in the status line: its text, and its state as `data-state` (for CSS and tests). */
 export function showStatus(status: HTMLElement, report: PageStatus): void {
@@ -52,8 +58,26 @@ export class LivePreview {
   private deliveredKey: string | undefined;
   private readonly listeners = new Set<(result: BuildResult) => void>();
   private readonly sketchListeners = new Set<(sketch: PlantSketch) => void>();
+  /** When the oldest request not yet delivered was made (undefined: none waits). */
+  private pendingSince: number | undefined;
+  /** The newest request's progress, as its worker tells it. */
+  private progress: BuildProgress | undefined;
+  /** Shows the build as under way, {@link BUILDING_AFTER} after it was asked for, then every second. */
+  private buildingTimer: ReturnType<typeof setTimeout> | undefined;
+  /** True while the status line says "Building…". */
+  private building = false;
 
-  constructor(private readonly parts: LivePreviewParts) {}
+  constructor(private readonly parts: LivePreviewParts) {
+    parts.stop?.addEventListener('click', () => this.stop());
+  }
+
+  /**
+   * Stops the build under way (its worker is terminated; the text stays as it is): the plant on
+   * screen, if any, is marked as being of an earlier text, and the next change builds again.
+   */
+  stop(): void {
+    this.parts.client.stop();
+  }
 
   /** Calls `listener` after every delivered build has been applied to the page. */
   onDelivered(listener: (result: BuildResult) => void): () => void {
@@ -81,7 +105,48 @@ export class LivePreview {
     const key = JSON.stringify(options) + '\n' + source;
     if (key === this.requestedKey && !force) return;
     this.requestedKey = key;
-    void this.parts.client.request(source, options, (sketch) => this.sketch(sketch, key)).then((outcome) => this.deliver(outcome, key));
+    this.progress = undefined;
+    if (this.pendingSince === undefined) {
+      this.pendingSince = performance.now();
+      this.buildingTimer = setTimeout(() => this.showBuilding(), BUILDING_AFTER);
+    } else if (this.building) this.showBuilding();
+    void this.parts.client
+      .request(source, options, {
+        onSketch: (sketch) => this.sketch(sketch, key),
+        onProgress: (progress) => {
+          if (key !== this.requestedKey) return;
+          this.progress = progress;
+          if (this.building) this.showBuilding();
+        },
+      })
+      .then((outcome) => this.deliver(outcome, key));
+  }
+
+  /** Says the build is under way (stage or step, time so far) and offers Stop; again each second. */
+  private showBuilding(): void {
+    if (this.pendingSince === undefined) return;
+    clearTimeout(this.buildingTimer);
+    const elapsed = performance.now() - this.pendingSince;
+    showStatus(this.parts.status, reportBuilding(this.progress, elapsed));
+    if (this.parts.stop) this.parts.stop.hidden = false;
+    this.building = true;
+    this.buildingTimer = setTimeout(() => this.showBuilding(), 1000 - (elapsed % 1000));
+  }
+
+  /** The newest request was delivered (or stopped, or crashed): nothing is under way any more. */
+  private doneBuilding(): void {
+    clearTimeout(this.buildingTimer);
+    this.buildingTimer = undefined;
+    this.pendingSince = undefined;
+    this.building = false;
+    if (this.parts.stop) this.parts.stop.hidden = true;
+  }
+
+  /** Marks the plant on screen (if any) as not of the text now, saying `why` on the view. */
+  private markStale(stale: boolean, why: string): void {
+    this.parts.view.setStale(stale);
+    this.parts.staleBadge.textContent = `Stale — ${why}`;
+    this.parts.staleBadge.hidden = !stale;
   }
 
   /** Calls `listener` after each sketch (a big plant as lines, its tubes to follow) is on screen. */
@@ -99,7 +164,7 @@ export class LivePreview {
     if (key !== this.requestedKey) return;
     const empty = new Float32Array(0);
     this.parts.view.showPlant(
-      { positions: empty, normals: empty, colors: empty, indices: new Uint32Array(0), ranges: new Uint32Array(0), uvs: empty, materialRanges: new Uint32Array(0), lines: sketch.lines, lineColors: sketch.lineColors },
+      { positions: empty, normals: empty, colors: empty, indices: new Uint32Array(0), ranges: new Uint32Array(0), uvs: empty, materialRanges: new Uint32Array(0), lines: sketch.lines, lineColors: sketch.lineColors, segmentEnds: empty, segmentColors: empty, segmentModules: new Uint32Array(0) },
       sketch.flat,
     );
     this.parts.view.setStale(false);
@@ -116,13 +181,24 @@ export class LivePreview {
 
   private deliver(outcome: BuildOutcome, key: string): void {
     if (outcome.kind === 'superseded') return;
-    const { view, status, staleBadge } = this.parts;
-    if (outcome.kind === 'crashed') {
-      console.error('Meristem core crashed:', outcome.message);
-      this.parts.crashed?.(outcome.message);
+    this.doneBuilding();
+    const { view, status } = this.parts;
+    if (outcome.kind === 'crashed' || outcome.kind === 'stopped') {
+      if (outcome.kind === 'crashed') {
+        console.error('Meristem core crashed:', outcome.message);
+        this.parts.crashed?.(outcome.message);
+      }
       this.requestedKey = undefined; // the same text may be tried again, on a fresh worker
       this.feed.delivered(this.parts.text(), []);
-      showStatus(status, { state: 'crashed', text: 'The core crashed on this grammar (a bug); edit to try again' });
+      const shown = this.lastGood !== undefined;
+      if (outcome.kind === 'crashed') {
+        showStatus(status, { state: 'crashed', text: 'The core crashed on this grammar (a bug); edit to try again' });
+        this.markStale(shown, 'the core crashed on this text');
+      } else {
+        const plant = shown ? 'the plant shown is of an earlier text' : 'no plant yet';
+        showStatus(status, { state: 'stopped', text: `Build stopped — ${plant}; change the text or an option to build again` });
+        this.markStale(shown, 'the build was stopped');
+      }
       status.dataset.generation = String(++this.generation);
       return;
     }
@@ -139,9 +215,7 @@ export class LivePreview {
       result.inspector.free(); // not shown: the plant on screen stays the last good one
       showStatus(status, reportErrors(build.diagnostics, this.lastGood !== undefined));
     }
-    const stale = !build.ok && this.lastGood !== undefined;
-    view.setStale(stale);
-    staleBadge.hidden = !stale;
+    this.markStale(!build.ok && this.lastGood !== undefined, 'the grammar has errors');
     this.lastResult = result;
     this.feed.delivered(result.source, build.diagnostics);
     if (sameText) this.parts.diagnosticsChanged();

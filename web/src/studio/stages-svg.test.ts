@@ -1,7 +1,8 @@
 import { describe, expect, it } from 'vitest';
 import { exportModel } from '../core';
 import { parseStageSvg, stagesSvg } from './stages-svg';
-import { figureName, stagesOf } from './stages';
+import { figureName } from './downloads';
+import { stagesOf } from './stages';
 
 const PLANT = '#angle 20\naxiom: X\nX -> F[+X]F[-X]+X\nF -> FF\n';
 const svgOf = (iterations: number) => new TextDecoder().decode(exportModel(PLANT, 'svg', { iterations }).bytes);
@@ -97,5 +98,16 @@ describe('the stages a range asks for', () => {
     expect(figureName('file/my tree.ls')).toBe('my-tree');
     expect(figureName('saved/123')).toBe('plant');
     expect(figureName('')).toBe('plant');
+  });
+
+  it('names the files after the grammar’s title first', () => {
+    expect(figureName('abop-1.24d.lsys', '// ABOP Fig 1.24d: a plant by node rewriting\naxiom: X')).toBe('abop-1.24d');
+    expect(figureName('saved/7', '// Barnsley fern\n#angle 25')).toBe('barnsley-fern');
+    expect(figureName('saved/7', '// ABOP Fig. 1.10b: Sierpinski gasket')).toBe('abop-1.10b');
+    expect(figureName('file/x.lsys', '  // Mon arbre préféré!  \naxiom: F')).toBe('mon-arbre-préféré');
+    expect(figureName('file/x.lsys', '//  :\naxiom: F'), 'an empty title: the file').toBe('x');
+    expect(figureName('file/x.lsys', 'axiom: F\n// later'), 'a comment not at the top is no title').toBe('x');
+    expect(figureName('saved/1', '// ../../etc/passwd')).toBe('etc-passwd');
+    expect(figureName('saved/1', '// ' + 'a'.repeat(100)).length).toBe(48);
   });
 });

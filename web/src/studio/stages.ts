@@ -73,12 +73,6 @@ export function stagesOf(from: number, to: number, seeds: readonly (number | und
   return { stages, grid };
 }
 
-/** The name a figure of the grammar opened as `file` (an example, `file/NAME`, `saved/ID`) is saved under. */
-export function figureName(file: string): string {
-  const name = file.replace(/^(file|saved)\//, '').replace(/\.[A-Za-z0-9]+$/, '').replace(/[^\w.-]+/g, '-');
-  return name === '' || file.startsWith('saved/') ? 'plant' : name;
-}
-
 function wholeNumber(input: HTMLInputElement): number | undefined {
   const value = input.valueAsNumber;
   return Number.isFinite(value) ? Math.floor(value) : undefined;
@@ -200,7 +194,7 @@ export class StagesMode {
       // The sketch (the segments as lines) of every stage: drawn with the tubes, it keeps the early,
       // small stages visible where their tubes are thinner than a pixel.
       let sketch: PlantSketch | null = null;
-      const outcome = await client.request(source, { ...options, iterations: stage.iterations, seed: stage.seed }, (s) => (sketch = s), 0);
+      const outcome = await client.request(source, { ...options, iterations: stage.iterations, seed: stage.seed }, { onSketch: (s) => (sketch = s), sketchFrom: 0 });
       if (ticket !== this.ticket) {
         if (outcome.kind === 'built') outcome.result.inspector.free();
         return;
@@ -214,9 +208,9 @@ export class StagesMode {
     this.say('done', missing === 0 ? scaled : `${scaled}; ${missing} drew nothing`);
   }
 
-  private plantOf(stage: Stage, result: BuildResult | 'superseded' | 'crashed', sketch: PlantSketch | null): StagePlant {
+  private plantOf(stage: Stage, result: BuildResult | 'superseded' | 'crashed' | 'stopped', sketch: PlantSketch | null): StagePlant {
     const empty: StagePlant = { mesh: null, lines: null, flat: true, bounds: [[0, 0, 0], [0, 0, 0]], caption: stage.caption };
-    if (result === 'superseded') return { ...empty, caption: `${stage.caption}: not grown` };
+    if (result === 'superseded' || result === 'stopped') return { ...empty, caption: `${stage.caption}: not grown` };
     if (result === 'crashed') return { ...empty, caption: `${stage.caption}: the core crashed` };
     result.inspector.free();
     const { build } = result;

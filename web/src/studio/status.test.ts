@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import type { Diagnostic, PlantStats } from '../core';
-import { plural, reportErrors, reportPlant } from './status';
+import { plural, reportBuilding, reportErrors, reportPlant } from './status';
 
 const stats: PlantStats = {
   modules: 12345,
@@ -43,9 +43,21 @@ describe('status line', () => {
     expect(reportPlant(huge, [], timings, 900).text).toMatch(/· too large to mesh: 2,000,000 segments drawn as lines$/);
   });
 
-  it('reports errors and whether the last good plant is still shown', () => {
-    const twoErrors = [diagnostic('error'), diagnostic('warning'), diagnostic('error')];
-    expect(reportErrors(twoErrors, true)).toEqual({ state: 'stale', text: '2 errors — showing last good plant' });
-    expect(reportErrors([diagnostic('error')], false)).toEqual({ state: 'error', text: '1 error — no plant yet' });
+  it('reports errors, whether the last good plant is still shown, and the first error in words', () => {
+    const twoErrors = [diagnostic('warning'), diagnostic('error'), diagnostic('error')];
+    twoErrors[1] = { ...twoErrors[1], line: 3, message: 'the derivation needs 9 GiB; lower #max_modules' };
+    expect(reportErrors(twoErrors, true)).toEqual({
+      state: 'stale',
+      text: '2 errors — showing last good plant · line 3: the derivation needs 9 GiB; lower #max_modules',
+    });
+    expect(reportErrors([diagnostic('error')], false)).toEqual({ state: 'error', text: '1 error — no plant yet · line 1: m' });
+  });
+
+  it('says what a build is doing, never a plant’s figures', () => {
+    expect(reportBuilding(undefined, 300)).toEqual({ state: 'building', text: 'Building…' });
+    expect(reportBuilding({ stage: 'parsing', step: 0, steps: 0 }, 400).text).toBe('Building… reading the grammar');
+    expect(reportBuilding({ stage: 'deriving', step: 0, steps: 0 }, 400).text).toBe('Building… deriving');
+    expect(reportBuilding({ stage: 'deriving', step: 1234, steps: 5000 }, 2500).text).toBe('Building… step 1,234 of 5,000 · 2 s');
+    expect(reportBuilding({ stage: 'meshing', step: 0, steps: 0 }, 61_000).text).toBe('Building… meshing · 61 s');
   });
 });

@@ -1,5 +1,5 @@
 // The status line's text, as pure functions of a build (tested without a page).
-import type { Diagnostic, PlantStats, StageTimings } from '../core';
+import type { BuildProgress, Diagnostic, PlantStats, StageTimings } from '../core';
 
 /** What the status line shows after a build. */
 export interface StatusReport {
@@ -45,10 +45,37 @@ export function reportPlant(
   return { state: 'ok', text: parts.join(' · ') };
 }
 
-/** The status after a build with errors; `hasPlant` tells whether an older plant is still shown. */
+/**
+ * The status after a build with errors; `hasPlant` tells whether an older plant is still shown.
+ * The first error follows in words (with its line): when a limit was hit (steps, modules, memory)
+ * the core's message says what to change, and it is said where the user is looking.
+ */
 export function reportErrors(diagnostics: readonly Diagnostic[], hasPlant: boolean): StatusReport {
-  const errors = plural(diagnostics.filter((d) => d.severity === 'error').length, 'error');
+  const all = diagnostics.filter((d) => d.severity === 'error');
+  const errors = plural(all.length, 'error');
+  const first = all[0] ? ` · line ${all[0].line}: ${all[0].message}` : '';
   return hasPlant
-    ? { state: 'stale', text: `${errors} — showing last good plant` }
-    : { state: 'error', text: `${errors} — no plant yet` };
+    ? { state: 'stale', text: `${errors} — showing last good plant${first}` }
+    : { state: 'error', text: `${errors} — no plant yet${first}` };
+}
+
+/** What each stage of a build is doing, for the status line. */
+const BUILDING: Record<BuildProgress['stage'], string> = {
+  parsing: 'reading the grammar',
+  deriving: 'deriving',
+  interpreting: 'drawing the turtle’s path',
+  meshing: 'meshing',
+};
+
+/**
+ * The status while a build runs: `Building… step 12 of 40 · 3 s` (the stage, or the derivation
+ * step it has reached, and after a second the time so far). Never a plant's figures: the plant on
+ * screen may be of an older text.
+ */
+export function reportBuilding(progress: BuildProgress | undefined, elapsedMs: number): { state: 'building'; text: string } {
+  let doing = '';
+  if (progress?.stage === 'deriving' && progress.steps > 0) doing = ` step ${count.format(progress.step)} of ${count.format(progress.steps)}`;
+  else if (progress) doing = ` ${BUILDING[progress.stage]}`;
+  const time = elapsedMs >= 1000 ? ` · ${Math.floor(elapsedMs / 1000)} s` : '';
+  return { state: 'building', text: `Building…${doing}${time}` };
 }

@@ -1,20 +1,28 @@
-// Opening another text in the editor: an example, a file, a saved grammar, a shared link. The text
-// the user started from, if it was an example left unchanged, is pristine; anything else is theirs,
-// and opening something else asks first (and stays undoable in the editor).
+// Opening another text in the editor: an example, a file, a saved grammar, a lesson's grammar, a
+// shared link. The text the user started from, if it was an example left unchanged, is pristine;
+// anything else is theirs: opening something else asks first, keeps their text (in My grammars, or
+// this browser's database), or when nothing can keep it has them download it first; and it stays
+// undoable in the editor. Files in other dialects are imported off the page's thread.
 import type { StoredGrammar } from '../share/storage';
 import type { GrammarEditor } from '../editor';
 import { initIo } from '../core';
-import { askToReplace } from './confirm';
+import { askToDownload, askToReplace, type QuestionDialog } from './confirm';
 import { fetchExample } from './gallery';
 import type { GalleryEntry } from './gallery-manifest';
-import { dialectName, openGrammarBytes } from './grammar-files';
+import { dialectName, openObjectBytes, saveGrammarFile, type OpenedFile } from './grammar-files';
+import { keptSentence, type TextKeeper } from './keeping';
 import type { Notice } from './notice';
 
 /** What opening a text reads and changes on the page. */
 export interface TextOpeningParts {
   editor: GrammarEditor;
   /** The question asked before replacing the user's text (index.html `#confirm-replace`). */
-  confirm: { dialog: HTMLDialogElement; example: HTMLElement };
+  confirm: QuestionDialog;
+  /** The question asked when the user's text cannot be kept before it is replaced (`#cannot-keep`). */
+  cannotKeep: QuestionDialog;
+  keeper: TextKeeper;
+  /** Reads a file the user opened (other dialects imported, in a worker, with Cancel and a time limit). */
+  readFile(file: File): Promise<OpenedFile>;
   notice: Notice;
   /** Forgets what belonged to the text being replaced (its iterations, seed, sliders, projection, framing). */
   forgetText(): void;
@@ -57,13 +65,22 @@ export class TextOpening {
   }
 
   /**
-   * Replaces the editor's text by `text` (titled `title` in the question), unless the user's own
-   * text would be lost and they choose to keep it; settles whether it was replaced.
+   * Replaces the editor's text by `text` (titled `title` in the questions), unless the user's own
+   * text would be lost and they choose to keep it; settles whether it was replaced. Their text is
+   * kept first, named after `what` replaced it (default: the title, quoted); `tell` is given the
+   * sentence that says where ('' when nothing needed keeping) for the notice (default: it says so,
+   * or hides the notice).
    */
-  async replace(text: string, title: string, file = ''): Promise<boolean> {
-    const { editor, confirm } = this.parts;
+  async replace(text: string, title: string, file = '', how: ReplaceOptions = {}): Promise<boolean> {
+    const { editor, confirm, notice } = this.parts;
     const mine = editor.text();
-    if (mine !== this.pristine && mine !== text && !(await askToReplace(confirm.dialog, confirm.example, title))) {
+    const theirs = mine !== this.pristine && mine !== text;
+    if (theirs && !(await askToReplace(confirm.dialog, confirm.example, title))) {
+      editor.view.focus();
+      return false;
+    }
+    const kept = theirs ? await this.keep(mine, title, how.what ?? `“${title}”`) : '';
+    if (kept === null) {
       editor.view.focus();
       return false;
     }
@@ -73,21 +90,34 @@ export class TextOpening {
     editor.replaceText(text);
     editor.view.focus();
     this.parts.buildNow();
+    (how.tell ?? ((said) => (said ? notice.show('info', `Opened ${title}. ${said}`) : notice.hide())))(kept);
     return true;
+  }
+
+  /**
+   * Keeps the user's text `mine` before `title` replaces it: the sentence that says where, or
+   * null when it could be kept nowhere and the user declined to download it.
+   */
+  private async keep(mine: string, title: string, what: string): Promise<string | null> {
+    const kept = await this.parts.keeper.keep(mine, what);
+    if (kept === 'safe') return '';
+    if (kept) return keptSentence(kept);
+    if (!(await askToDownload(this.parts.cannotKeep, title))) return null;
+    return `Your previous text was downloaded as ${saveGrammarFile(mine)}: this browser’s storage could not keep it.`;
   }
 
   /** Opens a gallery example. */
   openExample(entry: GalleryEntry): void {
     const open = async () => {
       const text = await fetchExample(entry.file);
-      if (await this.replace(text, entry.title, entry.file)) this.parts.notice.hide();
+      await this.replace(text, entry.title, entry.file);
     };
     open().catch((error: unknown) => console.error('Could not open the example:', error));
   }
 
-  /** Opens a grammar saved in My grammars. */
-  openSaved(entry: StoredGrammar): void {
-    void this.replace(entry.text, entry.name, `saved/${entry.id}`).then((done) => done && this.parts.notice.hide());
+  /** Opens a grammar saved in My grammars (or kept in this browser's database: `kept/ID`). */
+  openSaved(entry: StoredGrammar, key = `saved/${entry.id}`): void {
+    void this.replace(entry.text, entry.name, key);
   }
 
   /** Opens a file: `.lsys` as it is, another dialect imported, its notes in the notice. */
@@ -95,24 +125,55 @@ export class TextOpening {
     this.readFile(file).catch((error: unknown) => this.parts.notice.show('error', `Could not open ${file.name}: ${String(error)}`));
   }
 
+  /**
+   * Opens files given together (a dropped folder, several files, a `.zip`): a vlab object or an
+   * L-Py model imported whole; `name` is what they are called in the notice (the folder's name).
+   */
+  openFiles(files: { name: string; file: File }[], name: string): void {
+    if (files.length === 1 && !/\.zip$/i.test(files[0].name)) return this.openFile(files[0].file);
+    const read = async () => {
+      const all = await Promise.all(files.map(async (f) => ({ name: f.name, bytes: new Uint8Array(await f.file.arrayBuffer()) })));
+      await initIo(); // the importers, on the first import
+      await this.show(openObjectBytes(all), name);
+    };
+    read().catch((error: unknown) => this.parts.notice.show('error', `Could not open ${name}: ${String(error)}`));
+  }
+
+  /** Opens the files picked in the file dialog, named after the L-system among them. */
+  openPicked(files: File[]): void {
+    const main = files.find((f) => /\.(l|lpy|zip)$/i.test(f.name)) ?? files[0];
+    const name = files.length === 1 ? main.name : main.name.replace(/\.[^.]*$/, '');
+    this.openFiles(files.map((file) => ({ name: file.name, file })), name);
+  }
+
   private async readFile(file: File): Promise<void> {
+    await this.show(await this.parts.readFile(file), file.name);
+  }
+
+  /** Puts what was opened in the editor and says in the notice what was not translated. */
+  private async show(opened: OpenedFile, name: string): Promise<void> {
     const { notice } = this.parts;
-    const bytes = new Uint8Array(await file.arrayBuffer());
-    if (!/\.lsys$/i.test(file.name)) await initIo(); // the importers, on the first import
-    const opened = openGrammarBytes(file.name, bytes);
     if (!opened.ok) {
-      notice.show('error', `Could not open ${file.name}: ${opened.error}.`);
+      notice.show('error', `Could not open ${name}: ${opened.error}.`);
       return;
     }
-    if (!(await this.replace(opened.text, file.name, `file/${file.name}`))) return;
-    if (opened.dialect) {
-      const what = `Imported ${file.name} from ${dialectName(opened.dialect)}`;
-      notice.show(
-        'info',
-        opened.notes.length === 0 ? `${what}: everything was translated.` : `${what}. Not translated, or only approximately (${opened.notes.length}):`,
-        opened.notes,
-      );
-    } else if (opened.notes.length > 0) notice.show('info', `Opened ${file.name}.`, opened.notes);
-    else notice.hide();
+    const tell = (kept: string) => {
+      const after = kept ? ` ${kept}` : '';
+      if (opened.dialect) {
+        const what = `Imported ${name} from ${dialectName(opened.dialect)}`;
+        const n = opened.notes.length;
+        notice.show('info', n === 0 ? `${what}: everything was translated.${after}` : `${what}.${after} Not translated, or only approximately (${n}):`, opened.notes);
+      } else if (opened.notes.length > 0 || kept) notice.show('info', `Opened ${name}.${after}`, opened.notes);
+      else notice.hide();
+    };
+    await this.replace(opened.text, name, `file/${name}`, { tell });
   }
+}
+
+/** How {@link TextOpening.replace} names the kept text and tells where it went. */
+export interface ReplaceOptions {
+  /** What replaces the text, in the kept text's name (`Before WHAT: …`); default the title, quoted. */
+  what?: string;
+  /** Told where the user's text was kept ('' when nothing needed keeping), once the new text is in. */
+  tell?: (kept: string) => void;
 }

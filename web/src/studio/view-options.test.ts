@@ -19,7 +19,7 @@ describe('view options', () => {
 
   it('survive a share link: serialised, encoded, decoded and applied to fresh options', async () => {
     const { options } = watched();
-    const chosen: Omit<ViewOptionValues, 'textures'> = { sides: 12, smoothAll: true, byProduction: true, grid: false, lighting: false, projection: 'orthographic' };
+    const chosen: Omit<ViewOptionValues, 'textures'> = { sides: 12, smoothAll: true, byProduction: true, grid: false, lighting: false, projection: 'orthographic', render: 'tubes', lineWidth: 3.5 };
     options.set(chosen);
     const decoded = await decodeState(await encodeState({ text: 'axiom: F', view: options.toShared() }));
     if (!decoded.ok) throw new Error(decoded.error);
@@ -29,7 +29,7 @@ describe('view options', () => {
   });
 
   it('write the link fields in the order links have always had, and no textures', () => {
-    expect(Object.keys(new ViewOptions(SIDES).toShared())).toEqual(['sides', 'smoothAll', 'byProduction', 'grid', 'lighting', 'projection']);
+    expect(Object.keys(new ViewOptions(SIDES).toShared())).toEqual(['sides', 'smoothAll', 'byProduction', 'grid', 'lighting', 'projection', 'render', 'lineWidth']);
   });
 
   it('apply a link’s partial options and keep the others', () => {
@@ -46,7 +46,8 @@ describe('view options', () => {
 
   it('ignore invalid values (and keep the valid ones of the same change)', () => {
     const { options, heard } = watched();
-    options.applyShared({ sides: 7, smoothAll: 'yes' as unknown as boolean, projection: 'fisheye' as 'auto', lighting: false });
+    options.applyShared({ sides: 7, smoothAll: 'yes' as unknown as boolean, projection: 'fisheye' as 'auto', lighting: false, render: 'dots' as 'auto', lineWidth: 0.1 });
+    options.set({ lineWidth: 21 });
     options.set({ grid: 1 as unknown as boolean, sides: Number.NaN, textures: null as unknown as boolean });
     options.set({ colour: true } as unknown as Partial<ViewOptionValues>);
     expect(options.values).toEqual({ ...DEFAULT_VIEW_OPTIONS, lighting: false });

@@ -2,7 +2,7 @@
 // textures, projection, colour by production). One object holds them; the view tools render from
 // it, the view, the preview and the context view follow it, and a share link carries it.
 import type { SharedState } from '../share/codec';
-import type { ProjectionMode } from '../view';
+import { DEFAULT_LINE_WIDTH, LINE_WIDTH_MAX, LINE_WIDTH_MIN, type ProjectionMode, type RenderMode } from '../view';
 
 /** Every view option's value. */
 export interface ViewOptionValues {
@@ -20,6 +20,10 @@ export interface ViewOptionValues {
   projection: ProjectionMode;
   /** Every module coloured by the production that wrote it. */
   byProduction: boolean;
+  /** How branches are drawn: lines, tubes, or from the plant (`auto`: lines for flat plants). */
+  render: RenderMode;
+  /** The width of the lines in the Lines mode, in CSS pixels. */
+  lineWidth: number;
 }
 
 /** The name of one view option. */
@@ -37,9 +41,12 @@ export const DEFAULT_VIEW_OPTIONS: Readonly<ViewOptionValues> = {
   textures: true,
   projection: 'auto',
   byProduction: false,
+  render: 'auto',
+  lineWidth: DEFAULT_LINE_WIDTH,
 };
 
 const PROJECTION_MODES: readonly unknown[] = ['auto', 'perspective', 'orthographic'] satisfies ProjectionMode[];
+const RENDER_MODES: readonly unknown[] = ['auto', 'lines', 'tubes'] satisfies RenderMode[];
 
 /** Called after options changed, with all the values and the names of those that changed. */
 export type ViewOptionsListener = (values: Readonly<ViewOptionValues>, changed: ReadonlySet<ViewOption>) => void;
@@ -82,14 +89,14 @@ export class ViewOptions {
 
   /** The options as a share link holds them (textures are not part of a link). */
   toShared(): SharedViewOptions {
-    const { sides, smoothAll, byProduction, grid, lighting, projection } = this.current;
-    return { sides, smoothAll, byProduction, grid, lighting, projection };
+    const { sides, smoothAll, byProduction, grid, lighting, projection, render, lineWidth } = this.current;
+    return { sides, smoothAll, byProduction, grid, lighting, projection, render, lineWidth };
   }
 
   /** Applies a link's options: those it gives and that are valid; the others stay as they are. */
   applyShared(view: SharedState['view']): void {
-    const { sides, smoothAll, byProduction, grid, lighting, projection } = view ?? {};
-    this.set({ sides, smoothAll, byProduction, grid, lighting, projection }); // absent ones are ignored
+    const { sides, smoothAll, byProduction, grid, lighting, projection, render, lineWidth } = view ?? {};
+    this.set({ sides, smoothAll, byProduction, grid, lighting, projection, render, lineWidth }); // absent ones are ignored
   }
 
   private accepts(name: ViewOption, value: unknown): boolean {
@@ -98,6 +105,10 @@ export class ViewOptions {
         return this.sidesChoices.includes(value as number);
       case 'projection':
         return PROJECTION_MODES.includes(value);
+      case 'render':
+        return RENDER_MODES.includes(value);
+      case 'lineWidth':
+        return typeof value === 'number' && value >= LINE_WIDTH_MIN && value <= LINE_WIDTH_MAX;
       case 'smoothAll':
       case 'grid':
       case 'lighting':

@@ -1,7 +1,7 @@
 // The view tools (index.html, above the 3D view, and the "Colour by production" switch): controls
 // of the view options. They change the ViewOptions and render from it: a toggle's `aria-pressed`,
 // a field's value are its output, never read back as state. The 3D view follows the options here.
-import type { PlantView } from '../view';
+import { lineWidthOf, type PlantView } from '../view';
 import { closeLikeAMenu } from './menus';
 import type { ViewOption, ViewOptions, ViewOptionValues } from './view-options';
 
@@ -10,6 +10,10 @@ export interface ViewToolElements {
   frame: HTMLButtonElement;
   /** The 2D toggle: pressed while the view is orthographic (chosen, or automatic for a flat plant). */
   projection: HTMLButtonElement;
+  /** The Lines toggle: pressed while branches are lines (chosen, or automatic for a flat plant). */
+  renderLines: HTMLButtonElement;
+  /** The lines' width in pixels. */
+  lineWidth: HTMLInputElement;
   grid: HTMLButtonElement;
   lighting: HTMLButtonElement;
   textures: HTMLButtonElement;
@@ -41,6 +45,12 @@ export class ViewTools {
     els.frame.addEventListener('click', () => view.frame());
     els.menus.forEach(closeLikeAMenu);
     els.projection.addEventListener('click', () => this.toggleProjection());
+    els.renderLines.addEventListener('click', () => this.toggleLines());
+    els.lineWidth.addEventListener('change', () => {
+      const width = lineWidthOf(els.lineWidth.value);
+      if (width === null) els.lineWidth.value = String(options.values.lineWidth); // refused: back to the one in force
+      else options.set({ lineWidth: width });
+    });
     for (const option of TOGGLES) els[option].addEventListener('click', () => options.set({ [option]: !options.values[option] }));
     els.sides.addEventListener('change', () => options.set({ sides: Number(els.sides.value) }));
     els.smoothAll.addEventListener('change', () => options.set({ smoothAll: els.smoothAll.checked }));
@@ -54,6 +64,11 @@ export class ViewTools {
     this.options.set({ projection: this.view.projection === 'orthographic' ? 'perspective' : 'orthographic' });
   }
 
+  /** Switches between lines and tubes: the mode other than the one on screen, fixed. */
+  toggleLines(): void {
+    this.options.set({ render: this.view.usesLines ? 'tubes' : 'lines' });
+  }
+
   /** Stages covers the 3D view (`on`) or not: the tools that act on it pause meanwhile. */
   pauseForStages(on: boolean): void {
     for (const tool of this.els.plantOnly) {
@@ -65,6 +80,7 @@ export class ViewTools {
   /** Shows the projection in use on the 2D toggle (call after each plant: `auto` follows it). */
   showProjection(): void {
     this.els.projection.setAttribute('aria-pressed', String(this.view.projection === 'orthographic'));
+    this.els.renderLines.setAttribute('aria-pressed', String(this.view.usesLines));
   }
 
   /** Brings the view and the controls in step with the options that changed. */
@@ -74,6 +90,9 @@ export class ViewTools {
     if (changed.has('lighting')) view.setLighting(values.lighting);
     if (changed.has('textures')) view.setTextures(values.textures);
     if (changed.has('projection')) view.setProjectionMode(values.projection);
+    if (changed.has('render')) view.setRenderMode(values.render);
+    if (changed.has('lineWidth')) view.setLineWidth(values.lineWidth);
+    els.lineWidth.value = String(values.lineWidth);
     for (const option of TOGGLES) els[option].setAttribute('aria-pressed', String(values[option]));
     els.sides.value = String(values.sides);
     els.smoothAll.checked = values.smoothAll;

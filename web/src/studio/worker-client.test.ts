@@ -45,6 +45,10 @@ class FakeWorker implements WorkerLike {
     const sketch = { lines: new Float32Array(6), lineColors: new Float32Array(6), flat: false, segments: 1 };
     this.onMessage?.({ data: { kind: 'sketch', id, sketch } } as MessageEvent<WorkerResponse>);
   }
+  /** Tells request `id`'s progress (default: the last one's). */
+  progress(step: number, steps: number, id = this.requests.at(-1)!.id): void {
+    this.onMessage?.({ data: { kind: 'progress', id, progress: { stage: 'deriving', step, steps } } } as MessageEvent<WorkerResponse>);
+  }
   fail(): void {
     this.onError?.({ message: 'no module', preventDefault() {} } as ErrorEvent);
   }
@@ -89,10 +93,10 @@ describe('BuildClient', () => {
 
   it("hands a big plant's sketch to the running request before its build, and drops a superseded one's", async () => {
     const sketched: string[] = [];
-    const a = client.request('A', {}, () => sketched.push('A'));
+    const a = client.request('A', {}, { onSketch: () => sketched.push('A') });
     latest().sketch(1);
     expect(sketched).toEqual(['A']);
-    const b = client.request('B', {}, () => sketched.push('B'));
+    const b = client.request('B', {}, { onSketch: () => sketched.push('B') });
     latest().sketch(1); // A is superseded: its sketch is not shown
     expect(sketched).toEqual(['A']);
     expect(source(await a)).toBe('superseded');
@@ -200,6 +204,38 @@ describe('BuildClient', () => {
     latest().crash();
     expect(await open).toBeNull();
     expect(await result.result.inspector.moduleTexts(0, 5)).toEqual([]);
+  });
+
+  it("forwards the running request's progress while it is wanted", async () => {
+    const told: string[] = [];
+    const watch = (name: string) => ({ onProgress: (p: { step: number; steps: number }) => told.push(`${name} ${p.step}/${p.steps}`) });
+    const a = client.request('A', {}, watch('A'));
+    latest().progress(1, 4);
+    void client.request('B', {}, watch('B'));
+    latest().progress(2, 4, 1); // A is superseded: its progress is not shown
+    expect(source(await a)).toBe('superseded');
+    latest().answer(1);
+    latest().progress(3, 9);
+    expect(told).toEqual(['A 1/4', 'B 3/9']);
+  });
+
+  it('stops a running build and a waiting one: the worker is terminated, the next request gets a fresh one', async () => {
+    expect(client.stop(), 'nothing to stop').toBe(false);
+    const a = client.request('slow', {});
+    const b = client.request('newer', {});
+    expect(client.busy).toBe(true);
+    expect(client.stop()).toBe(true);
+    expect(source(await a)).toBe('superseded');
+    expect(await b).toEqual({ kind: 'stopped' });
+    expect(workers[0].terminated).toBe(true);
+    expect(client.busy).toBe(false);
+    expect(workers, 'a fresh worker is started at once').toHaveLength(2);
+    workers[0].answer(1); // a late answer of the terminated worker changes nothing
+    const next = client.request('next', {});
+    expect(workers).toHaveLength(2);
+    expect(workers[1].requests.map((r) => r.source)).toEqual(['next']);
+    latest().answer();
+    expect(source(await next)).toBe('next');
   });
 
   it('reports a worker that fails to start', async () => {

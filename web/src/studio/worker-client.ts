@@ -1,6 +1,6 @@
 // The page's side of the build worker: one request at a time, the newest waiting request only,
 // stale answers never delivered, and a worker stuck on an outdated build replaced.
-import type { BuildOptions, DerivationStep, Explanation, LastStepLinks, MatchReport, PlantBuild, PlantInspector, PlantSketch } from '../core';
+import type { BuildOptions, BuildProgress, DerivationStep, Explanation, LastStepLinks, MatchReport, PlantBuild, PlantInspector, PlantSketch } from '../core';
 import type { GpuArrays } from '../view/gpu-arrays';
 import type { BuildResponse, InspectAnswer, InspectQuestion, WorkerRequest, WorkerResponse } from './worker-protocol';
 import workerUrl from './worker.ts?worker&url';
@@ -37,7 +37,19 @@ export type BuildOutcome =
   /** A newer request replaced this one: its build, if it ran, is not delivered. */
   | { kind: 'superseded' }
   /** The core crashed (or the worker failed to start) on this request. */
-  | { kind: 'crashed'; message: string };
+  | { kind: 'crashed'; message: string }
+  /** {@link BuildClient.stop} ended it: its worker was terminated. */
+  | { kind: 'stopped' };
+
+/** What a request's caller follows while it is built. */
+export interface RequestWatch {
+  /** Takes the sketch of a big plant, before its build. */
+  onSketch?: (sketch: PlantSketch) => void;
+  /** Plants of this many segments or more are sketched (the worker's default when absent). */
+  sketchFrom?: number;
+  /** Told the stage and derivation step the build is at, while the request is the one wanted. */
+  onProgress?: (progress: BuildProgress) => void;
+}
 
 /** Options of {@link BuildClient}. */
 export interface BuildClientOptions {
@@ -60,10 +72,7 @@ interface Entry {
   settled: boolean;
   /** When it was posted to the worker. */
   sentAt?: number;
-  /** Takes the sketch of a big plant, before its build. */
-  onSketch?: (sketch: PlantSketch) => void;
-  /** Plants of this many segments or more are sketched (the worker's default when absent). */
-  sketchFrom?: number;
+  watch: RequestWatch;
 }
 
 /**
@@ -110,12 +119,12 @@ export class BuildClient {
 
   /**
    * Builds `source` with `options`; settles with the build, or says why there is none. A big
-   * plant's sketch (of `sketchFrom` segments or more, when given) goes to `onSketch` first, unless
-   * the request is superseded by then.
+   * plant's sketch (of `watch.sketchFrom` segments or more, when given) goes to `watch.onSketch`
+   * first, and the build's progress to `watch.onProgress`, unless the request is superseded by then.
    */
-  request(source: string, options: BuildOptions, onSketch?: (sketch: PlantSketch) => void, sketchFrom?: number): Promise<BuildOutcome> {
+  request(source: string, options: BuildOptions, watch: RequestWatch = {}): Promise<BuildOutcome> {
     return new Promise((resolve) => {
-      const entry: Entry = { id: this.nextId++, source, options, requestedAt: this.now(), resolve, settled: false, onSketch, sketchFrom };
+      const entry: Entry = { id: this.nextId++, source, options, requestedAt: this.now(), resolve, settled: false, watch };
       if (this.waiting) this.settle(this.waiting, { kind: 'superseded' });
       this.waiting = entry;
       if (this.running) {
@@ -125,6 +134,28 @@ export class BuildClient {
         this.sendWaiting();
       }
     });
+  }
+
+  /**
+   * Stops the build under way and any waiting one at once: the worker is terminated and a fresh
+   * one started for the next request, and those still wanted settle as `stopped`. True when one was.
+   */
+  stop(): boolean {
+    const open = [this.running, this.waiting].filter((e): e is Entry => e !== undefined);
+    const wanted = open.some((e) => !e.settled);
+    this.running = undefined;
+    this.waiting = undefined;
+    for (const entry of open) this.settle(entry, { kind: 'stopped' });
+    if (open.length > 0) {
+      this.stopWorker();
+      this.ensureWorker(); // started now, so the next build does not wait for it to load
+    }
+    return wanted;
+  }
+
+  /** True while a build runs or waits. */
+  get busy(): boolean {
+    return this.running !== undefined || this.waiting !== undefined;
   }
 
   /** Stops the worker; requests still open settle as superseded. */
@@ -152,10 +183,12 @@ export class BuildClient {
       if (response.kind === 'inspected') {
         this.questions.get(response.id)?.settle(response.answer);
         this.questions.delete(response.id);
-      } else if (response.kind === 'sketch') {
+      } else if (response.kind === 'sketch' || response.kind === 'progress') {
         // Only the running request's, and only while it is still wanted.
         const running = this.running;
-        if (running && running.id === response.id && !running.settled) running.onSketch?.(response.sketch);
+        if (!running || running.id !== response.id || running.settled) return;
+        if (response.kind === 'sketch') running.watch.onSketch?.(response.sketch);
+        else running.watch.onProgress?.(response.progress);
       } else {
         this.answer(response);
       }
@@ -200,7 +233,7 @@ export class BuildClient {
     this.waiting = undefined;
     entry.sentAt = this.now();
     this.running = entry;
-    this.ensureWorker().postMessage({ kind: 'build', id: entry.id, source: entry.source, options: entry.options, sketchFrom: entry.sketchFrom });
+    this.ensureWorker().postMessage({ kind: 'build', id: entry.id, source: entry.source, options: entry.options, sketchFrom: entry.watch.sketchFrom });
   }
 
   private answer(response: BuildResponse): void {

@@ -1,6 +1,6 @@
 // The messages between the page and the build worker (worker.ts), and the transfer lists that move
 // typed arrays out of the worker without copying them.
-import type { BuildOptions, PlantBuild, PlantInspector, PlantSketch } from '../core';
+import type { BuildOptions, BuildProgress, PlantBuild, PlantInspector, PlantSketch } from '../core';
 import type { GpuArrays } from '../view/gpu-arrays';
 
 /** The questions a kept build answers: the methods of `PlantInspector`, asked by name. */
@@ -27,8 +27,13 @@ export type InspectAnswer = Awaited<ReturnType<PlantInspector[InspectQuestion]>>
 /** Plants of at least this many segments are first sent as a sketch (lines), then meshed. */
 export const SKETCH_MIN_SEGMENTS = 20_000;
 
+/** The shortest time between two progress messages of one build (ms): a stage's start always goes. */
+export const PROGRESS_INTERVAL = 50;
+
 /** Worker → page. */
 export type WorkerResponse =
+  /** Build `id` is at this stage or derivation step (at most one per {@link PROGRESS_INTERVAL}, besides stage starts). */
+  | { kind: 'progress'; id: number; progress: BuildProgress }
   /** Build `id`'s plant as lines, before its tubes (only for big plants, see `sketchFrom`; the build follows). */
   | { kind: 'sketch'; id: number; sketch: PlantSketch }
   | {

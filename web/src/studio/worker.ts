@@ -4,10 +4,11 @@
 // list, and questions about a kept build (the context-sensitivity view's explanations and the
 // derived-string panel's module texts), until the page frees it. Started by createBuildWorker
 // (worker-client.ts). A big plant is first sent as a sketch (its segments as lines), then built.
-import { CoreCrashed, initCore, inspectPlant, type PlantInspector } from '../core';
+import { CoreCrashed, initCore, inspectPlant, type BuildProgress, type PlantInspector } from '../core';
 import { packForGpu } from '../view/gpu-arrays';
 import {
   answerTransferables,
+  PROGRESS_INTERVAL,
   SKETCH_MIN_SEGMENTS,
   transferablesOf,
   type InspectAnswer,
@@ -54,6 +55,19 @@ function answer(inspector: PlantInspector | undefined, question: InspectQuestion
   return method.apply(inspector, args);
 }
 
+/** Tells the page build `id`'s progress: every stage start, derivation steps at most every {@link PROGRESS_INTERVAL} ms. */
+function progressTeller(id: number): (progress: BuildProgress) => void {
+  let last = -Infinity;
+  let stage = '';
+  return (progress) => {
+    const now = performance.now();
+    if (progress.stage === stage && now - last < PROGRESS_INTERVAL) return;
+    stage = progress.stage;
+    last = now;
+    reply({ kind: 'progress', id, progress });
+  };
+}
+
 addEventListener('message', async (event: MessageEvent<WorkerRequest>) => {
   const request = event.data;
   try {
@@ -81,10 +95,15 @@ addEventListener('message', async (event: MessageEvent<WorkerRequest>) => {
   try {
     const start = performance.now();
     // A big plant goes to the page as lines first: on screen while its tubes are meshed.
-    const { build, inspector } = inspectPlant(source, options, {
-      minSegments: sketchFrom,
-      show: (sketch) => reply({ kind: 'sketch', id, sketch }, [sketch.lines.buffer as ArrayBuffer, sketch.lineColors.buffer as ArrayBuffer]),
-    });
+    const { build, inspector } = inspectPlant(
+      source,
+      options,
+      {
+        minSegments: sketchFrom,
+        show: (sketch) => reply({ kind: 'sketch', id, sketch }, [sketch.lines.buffer as ArrayBuffer, sketch.lineColors.buffer as ArrayBuffer]),
+      },
+      progressTeller(id),
+    );
     keep(id, inspector);
     const gpu = packForGpu(build.mesh);
     reply({ kind: 'built', id, build, gpu, workerMillis: performance.now() - start }, transferablesOf(build, gpu));

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import type { MeshBuffers } from '../core';
-import { highlightOverlay, moduleOfTriangle } from './highlight';
+import { highlightOverlay, highlightSegments, moduleOfTriangle } from './highlight';
 
 /** Three triangles over five vertices: triangles 0-1 from module 7, triangle 2 from module 9. */
 function mesh(): MeshBuffers {
@@ -14,6 +14,9 @@ function mesh(): MeshBuffers {
     lineColors: new Float32Array(0),
     uvs: new Float32Array(0),
     materialRanges: new Uint32Array(0),
+    segmentEnds: Float32Array.from({ length: 12 }, (_, i) => i),
+    segmentColors: new Float32Array(12),
+    segmentModules: new Uint32Array([7, 9]),
   };
 }
 
@@ -39,5 +42,24 @@ describe('highlightOverlay', () => {
     expect(Array.from(both.colors.slice(0, 3))).toEqual([0, 1, 0]);
     expect(Array.from(both.colors.slice(18, 21))).toEqual([0, 0, 1]);
     expect(highlightOverlay(m, () => null).positions.length).toBe(0);
+  });
+});
+
+describe('highlightOverlay without tubes', () => {
+  it('leaves out the triangles of modules that drew tubes (kind 0) and keeps the others', () => {
+    const m = mesh();
+    m.materialRanges = new Uint32Array([0, 0, 2, 1]); // triangles 0-1 bark (module 7), triangle 2 leaf (module 9)
+    expect(highlightOverlay(m, () => [1, 0, 0], false).positions.length).toBe(9);
+    expect(highlightOverlay(m, (module) => (module === 7 ? [1, 0, 0] : null), false).positions.length).toBe(0);
+    expect(highlightOverlay(m, () => [1, 0, 0]).positions.length).toBe(27);
+  });
+});
+
+describe('highlightSegments', () => {
+  it('copies the lines of the chosen modules with their colour at both ends', () => {
+    const overlay = highlightSegments(mesh(), (module) => (module === 9 ? [0, 1, 0] : null));
+    expect(Array.from(overlay.ends)).toEqual([6, 7, 8, 9, 10, 11]);
+    expect(Array.from(overlay.colors)).toEqual([0, 1, 0, 0, 1, 0]);
+    expect(highlightSegments(mesh(), () => null).ends.length).toBe(0);
   });
 });

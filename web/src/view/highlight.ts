@@ -50,11 +50,15 @@ export interface Overlay {
   colors: Float32Array;
 }
 
+/** The material kind of tubes in `materialRanges` (the core's `MATERIAL_BARK`). */
+export const MATERIAL_BARK = 0;
+
 /**
  * The triangles of every module `colourOf` names, copied (not indexed, so neighbouring modules that
- * share a joint ring keep crisp colours) and painted in that module's colour.
+ * share a joint ring keep crisp colours) and painted in that module's colour. `withTubes: false`
+ * leaves out the tubes' triangles (the Lines mode draws segments as lines instead).
  */
-export function highlightOverlay(mesh: MeshBuffers, colourOf: (module: number) => Rgb | null): Overlay {
+export function highlightOverlay(mesh: MeshBuffers, colourOf: (module: number) => Rgb | null, withTubes = true): Overlay {
   const triangles = mesh.indices.length / 3;
   const ranges = mesh.ranges;
   const picked: { first: number; end: number; colour: Rgb }[] = [];
@@ -62,6 +66,8 @@ export function highlightOverlay(mesh: MeshBuffers, colourOf: (module: number) =
   for (let r = 0; r < ranges.length; r += 2) {
     const colour = colourOf(ranges[r + 1]);
     if (!colour) continue;
+    // One module draws one thing: its first triangle's kind is the kind of all of them.
+    if (!withTubes && moduleOfTriangle(mesh.materialRanges, ranges[r]) === MATERIAL_BARK) continue;
     const end = r + 2 < ranges.length ? ranges[r + 2] : triangles;
     picked.push({ first: ranges[r], end, colour });
     count += end - ranges[r];
@@ -82,6 +88,29 @@ export function highlightOverlay(mesh: MeshBuffers, colourOf: (module: number) =
     }
   }
   return { positions, normals, colors };
+}
+
+/** Segments as lines (two 3-float ends each) with a colour per end. */
+export interface LineOverlay {
+  ends: Float32Array;
+  colors: Float32Array;
+}
+
+/** The segments (lines) of every module `colourOf` names, painted in that module's colour. */
+export function highlightSegments(mesh: MeshBuffers, colourOf: (module: number) => Rgb | null): LineOverlay {
+  const picked: { segment: number; colour: Rgb }[] = [];
+  mesh.segmentModules.forEach((module, segment) => {
+    const colour = colourOf(module);
+    if (colour) picked.push({ segment, colour });
+  });
+  const ends = new Float32Array(picked.length * 6);
+  const colors = new Float32Array(picked.length * 6);
+  picked.forEach(({ segment, colour }, k) => {
+    ends.set(mesh.segmentEnds.subarray(6 * segment, 6 * segment + 6), 6 * k);
+    colors.set(colour, 6 * k);
+    colors.set(colour, 6 * k + 3);
+  });
+  return { ends, colors };
 }
 
 /** CSS colour of linear RGB (the view's vertex colours are linear; CSS is sRGB). */

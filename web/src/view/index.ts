@@ -1,6 +1,7 @@
 // The 3D view (three.js): the plant mesh, lights, camera framing and orbit controls, and the
 // gallery's thumbnails drawn the same way.
-export { PlantView, type Projection, type ProjectionMode, type ViewPose } from './plant-view';
+export { PlantView, type PictureLook, type Projection, type ProjectionMode, type RenderMode, type ViewPose } from './plant-view';
+export { DEFAULT_LINE_WIDTH, LINE_WIDTH_MAX, LINE_WIDTH_MIN, lineWidthOf } from './segment-lines';
 export { ThumbnailRenderer } from './thumbnail';
 export { plantGeometry, lineGeometry, pointsBox } from './plant-geometry';
 export { packForGpu, type GpuArrays } from './gpu-arrays';

@@ -11,7 +11,7 @@ function strip(quads: number): MeshBuffers {
   const indices = new Uint32Array(6 * quads);
   for (let q = 0; q < quads; q++) indices.set([2 * q, 2 * q + 2, 2 * q + 1, 2 * q + 1, 2 * q + 2, 2 * q + 3], 6 * q);
   const empty = new Float32Array(0);
-  return { positions, normals: positions.slice(), colors: positions.slice(), indices, ranges: new Uint32Array(0), uvs: new Float32Array(0), materialRanges: new Uint32Array(0), lines: empty, lineColors: empty };
+  return { positions, normals: positions.slice(), colors: positions.slice(), indices, ranges: new Uint32Array(0), uvs: new Float32Array(0), materialRanges: new Uint32Array(0), lines: empty, lineColors: empty, segmentEnds: empty, segmentColors: empty, segmentModules: new Uint32Array(0) };
 }
 
 describe('plantGeometry', () => {

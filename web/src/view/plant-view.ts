@@ -4,6 +4,7 @@ import {
   Box3,
   BufferAttribute,
   BufferGeometry,
+  Color,
   DoubleSide,
   GridHelper,
   LineBasicMaterial,
@@ -33,7 +34,8 @@ import { plantGeometry, pointsBox } from './plant-geometry';
 import type { GpuArrays } from './gpu-arrays';
 import { loadTexture, texturedMaterials, type TexturedMaterials } from './textures';
 import { addHeadlight, addSkyLight, litPlantMaterial, unlitPlantMaterial } from './scene-setup';
-import { highlightOverlay, moduleOfTriangle, type Rgb } from './highlight';
+import { MATERIAL_BARK, highlightOverlay, highlightSegments, moduleOfTriangle, type Rgb } from './highlight';
+import { DEFAULT_LINE_WIDTH, SegmentLines } from './segment-lines';
 import { BezierHandles } from './handles';
 
 const DARK_SCHEME = '(prefers-color-scheme: dark)';
@@ -44,6 +46,19 @@ export type Projection = 'perspective' | 'orthographic';
 
 /** How the projection is chosen: from the plant (`auto`: flat plants in 2D), or fixed by the user. */
 export type ProjectionMode = 'auto' | Projection;
+
+/**
+ * How branches are drawn: `lines` of constant width in pixels (as the book's 2D figures), `tubes`
+ * of the grammar's widths, or `auto`: lines for plants drawn in one plane, tubes for 3D ones.
+ */
+export type RenderMode = 'auto' | 'lines' | 'tubes';
+
+/** A picture's look: its background (the view's, white or none), and the lines' width in its pixels. */
+export interface PictureLook {
+  background: 'view' | 'white' | 'transparent';
+  /** The Lines mode's width in the picture's pixels (default: the view's, in CSS pixels). */
+  lineWidth?: number;
+}
 
 /** A camera's place: eye, the point it looks at (the orbit's centre), and the orthographic zoom. */
 export interface ViewPose {
@@ -104,6 +119,17 @@ export class PlantView {
       polygonOffsetUnits: -1,
     }),
   );
+  /** The Lines mode's segments (hidden while tubes are drawn). */
+  private readonly segmentLines = new SegmentLines();
+  private lineWidthChosen = DEFAULT_LINE_WIDTH;
+  private lineScale = 1;
+  /** Stands in for the tubes' material in the Lines mode: their triangles are not drawn. */
+  private readonly hiddenTubes = new MeshBasicMaterial({ visible: false });
+  private renderMode: RenderMode = 'auto';
+  /** Who needs tubes now whatever the mode (branch editing reshapes tubes). */
+  private readonly tubeHolders = new Set<string>();
+  /** The last highlight asked for, redrawn when the render mode changes. */
+  private colourOf: ((module: number) => Rgb | null) | null = null;
   /** The selected branch's Bézier handles (branch editing). */
   private readonly handles = new BezierHandles();
   private mode: ProjectionMode = 'auto';
@@ -129,7 +155,7 @@ export class PlantView {
   ) {
     const texture = (name: 'bark' | 'leaf') => loadTexture(name, () => this.textureLoaded(), (message) => this.texturesFailed(message), assetBase);
     this.textured = texturedMaterials(texture('bark'), texture('leaf'), this.lit, this.unlit);
-    this.renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    this.renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true, alpha: true });
     this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
     const canvas = this.renderer.domElement;
     canvas.setAttribute('aria-label', '3D view of the plant; drag or the arrow keys to orbit, scroll or + and − to zoom, Home to fit');
@@ -143,7 +169,7 @@ export class PlantView {
     this.orthographic.controls.enableRotate = false; // a 2D view pans and zooms
     this.active = this.perspective;
     this.perspective.controls.enabled = true;
-    this.scene.add(this.perspective.camera, this.plant, this.lines, this.overlay, this.handles.group);
+    this.scene.add(this.perspective.camera, this.plant, this.lines, this.segmentLines.group, this.overlay, this.handles.group);
     this.container.dataset.projection = 'perspective';
 
     this.applyPalette();
@@ -201,6 +227,9 @@ export class PlantView {
     this.lines.geometry = asLines ? plantGeometry(mesh) : new BufferGeometry();
     oldMesh.dispose();
     oldLines.dispose();
+    this.segmentLines.show(asLines ? null : mesh);
+    this.flat = flat;
+    this.applyMaterial();
     this.colourModules(null);
     const hasGeometry = mesh.indices.length > 0 || asLines;
     if (hasGeometry && this.frameNext) {
@@ -208,7 +237,6 @@ export class PlantView {
       this.perspective.framed = false;
       this.orthographic.framed = false;
     }
-    this.flat = flat;
     this.useProjection(this.wantedProjection(), hasGeometry);
     if (hasGeometry) this.follow();
     this.requestRender();
@@ -256,13 +284,16 @@ export class PlantView {
    * restores the plant's own colours. (The line fallback of huge models is not highlighted.)
    */
   colourModules(colourOf: ((module: number) => Rgb | null) | null): void {
+    this.colourOf = colourOf;
     const mesh = this.mesh;
     const old = this.overlay.geometry;
     this.overlay.geometry = new BufferGeometry();
     old.dispose();
     let dim = 1;
+    const lines = this.usesLines;
+    this.segmentLines.highlight(mesh && colourOf && lines ? highlightSegments(mesh, colourOf) : null, mesh && colourOf ? 0.55 : 1);
     if (mesh && colourOf) {
-      const overlay = highlightOverlay(mesh, colourOf);
+      const overlay = highlightOverlay(mesh, colourOf, !lines);
       const geometry = this.overlay.geometry;
       geometry.setAttribute('position', new BufferAttribute(overlay.positions, 3));
       geometry.setAttribute('normal', new BufferAttribute(overlay.normals, 3));
@@ -280,12 +311,15 @@ export class PlantView {
   pickModule(clientX: number, clientY: number): number | null {
     const mesh = this.mesh;
     if (!mesh) return null;
-    const rect = this.renderer.domElement.getBoundingClientRect();
-    const ndc = new Vector2(((clientX - rect.left) / rect.width) * 2 - 1, -((clientY - rect.top) / rect.height) * 2 + 1);
-    this.raycaster.setFromCamera(ndc, this.active.camera);
-    const hit = this.raycaster.intersectObject(this.plant, false)[0];
-    if (!hit || hit.faceIndex == null) return null;
-    return moduleOfTriangle(mesh.ranges, hit.faceIndex);
+    this.aim(clientX, clientY);
+    const lines = this.usesLines;
+    // In the Lines mode the tubes' triangles are not drawn: only leaves, polygons and spheres count.
+    const hit = this.raycaster
+      .intersectObject(this.plant, false)
+      .find((h) => h.faceIndex != null && (!lines || moduleOfTriangle(mesh.materialRanges, h.faceIndex) !== MATERIAL_BARK));
+    const line = lines ? this.segmentLines.pick(this.raycaster) : null;
+    if (line && (!hit || line.distance <= hit.distance)) return line.module;
+    return hit?.faceIndex != null ? moduleOfTriangle(mesh.ranges, hit.faceIndex) : null;
   }
 
   /** The page point as normalised device coordinates of the canvas, set on the raycaster. */
@@ -533,17 +567,26 @@ export class PlantView {
   }
 
   /**
-   * A PNG of the current view at `width` × `height` pixels: the same camera, lights and
-   * background, the aspect ratio of the picture (the vertical field of view, or the orthographic
-   * height, is kept). The canvas is drawn at that size for one frame and restored before the page
-   * paints again.
+   * A PNG of the current view at `width` × `height` pixels: the same camera and lights, the
+   * aspect ratio of the picture (the vertical field of view, or the orthographic height, is kept).
+   * With `look.background` white or transparent the picture has that background and no grid; the
+   * lines are `look.lineWidth` of its pixels wide. The canvas is drawn at that size for one frame
+   * and restored before the page paints again.
    */
-  async snapshot(width: number, height: number): Promise<Blob> {
+  async snapshot(width: number, height: number, look: PictureLook = { background: 'view' }): Promise<Blob> {
     const canvas = this.renderer.domElement;
     const pixelRatio = this.renderer.getPixelRatio();
     const camera = this.active.camera;
+    const background = this.scene.background;
+    const lineWidth = this.segmentLines.lineWidth;
     let blob: Promise<Blob | null>;
     try {
+      if (look.background !== 'view') {
+        this.scene.background = look.background === 'white' ? new Color('#ffffff') : null;
+        if (this.grid) this.grid.visible = false;
+      }
+      this.renderer.setClearColor(0xffffff, look.background === 'transparent' ? 0 : 1);
+      this.segmentLines.lineWidth = look.lineWidth ?? lineWidth;
       this.renderer.setPixelRatio(1);
       this.renderer.setSize(width, height, false);
       if (camera instanceof PerspectiveCamera) camera.aspect = width / height;
@@ -553,6 +596,9 @@ export class PlantView {
       // toBlob copies the bitmap now (preserveDrawingBuffer keeps it); encoding finishes later.
       blob = new Promise((resolve) => canvas.toBlob(resolve, 'image/png'));
     } finally {
+      this.scene.background = background;
+      if (this.grid) this.grid.visible = this.gridVisible;
+      this.segmentLines.lineWidth = lineWidth;
       this.renderer.setPixelRatio(pixelRatio);
       this.resize();
       this.renderer.render(this.scene, camera);
@@ -592,9 +638,57 @@ export class PlantView {
   private applyMaterial(): void {
     const textured = this.lighting ? this.textured.lit : this.textured.unlit;
     const on = this.texturing && this.texturesLoaded === 2;
-    this.plant.material = on ? textured : this.lighting ? this.lit : this.unlit;
+    const material = on ? textured : this.lighting ? this.lit : this.unlit;
+    const lines = this.usesLines;
+    // By material kind (bark, leaf, plain): in the Lines mode the tubes give way to the lines.
+    const kinds = Array.isArray(material) ? material : [material, material, material];
+    this.plant.material = lines ? [this.hiddenTubes, kinds[1], kinds[2]] : material;
+    this.segmentLines.visible = lines;
+    this.container.dataset.render = lines ? 'lines' : 'tubes';
     this.container.dataset.textures = String(on);
     this.requestRender();
+  }
+
+  /** Chooses how branches are drawn: lines, tubes, or `auto` (lines for flat plants). */
+  setRenderMode(mode: RenderMode): void {
+    this.renderMode = mode;
+    this.applyMaterial();
+    this.colourModules(this.colourOf);
+  }
+
+  /** The render mode last set. */
+  get renderModeChosen(): RenderMode {
+    return this.renderMode;
+  }
+
+  /** The width of the Lines mode's lines, in CSS pixels (times the line scale). */
+  setLineWidth(pixels: number): void {
+    this.lineWidthChosen = pixels;
+    this.segmentLines.lineWidth = pixels * this.lineScale;
+    this.requestRender();
+  }
+
+  /** Draws the lines `scale` times the width chosen (2 in Large mode: a projector's lines). */
+  setLineScale(scale: number): void {
+    this.lineScale = scale;
+    this.setLineWidth(this.lineWidthChosen);
+  }
+
+  /**
+   * Draws tubes for `holder` whatever the mode (`on`), or lets go (branch editing reshapes the
+   * tubes and their handles).
+   */
+  holdTubes(holder: string, on: boolean): void {
+    if (on) this.tubeHolders.add(holder);
+    else this.tubeHolders.delete(holder);
+    this.applyMaterial();
+    this.colourModules(this.colourOf);
+  }
+
+  /** True while the plant's segments are drawn as lines (the mode chosen, or `auto` and flat). */
+  get usesLines(): boolean {
+    if (!this.mesh || this.mesh.segmentModules.length === 0 || this.tubeHolders.size > 0) return false;
+    return this.renderMode === 'lines' || (this.renderMode === 'auto' && this.flat);
   }
 
   /** An image arrived; with both, the plant is drawn textured (if the toggle is on). */
@@ -631,6 +725,8 @@ export class PlantView {
     this.overlay.material.dispose();
     this.lines.geometry.dispose();
     this.lines.material.dispose();
+    this.segmentLines.dispose();
+    this.hiddenTubes.dispose();
     this.lit.dispose();
     this.unlit.dispose();
     this.textured.dispose();

@@ -176,6 +176,7 @@ impl BranchEditor {
         };
         self.check_joints(branch, skeleton)?;
         self.check_start_caps(session, skeleton)?;
+        self.check_end_domes(skeleton)?;
         self.rebuild_chains(session, skeleton, mesh)?;
         let end = joints
             .last()
@@ -245,6 +246,18 @@ impl BranchEditor {
         Ok(())
     }
 
+    /// Fails when a tube's end gained or lost the branch that starts there (its rounded end would
+    /// become a flat cap, or the other way round).
+    fn check_end_domes(&self, skeleton: &Skeleton) -> Result<(), String> {
+        let starts = parts::start_keys(skeleton);
+        for c in &self.parts.chains {
+            if parts::end_dome(&starts, skeleton, &c.segments) != c.end_dome {
+                return Err("a tube's rounded end appeared or vanished".into());
+            }
+        }
+        Ok(())
+    }
+
     /// Rebuilds the tubes of the chains holding the dragged branch's segments in place; fails
     /// when one no longer has the same layout.
     fn rebuild_chains(
@@ -261,6 +274,7 @@ impl BranchEditor {
                 self.unit,
                 &chain.segments,
                 chain.start_cap,
+                chain.end_dome,
             );
             if ranges != chain.ranges || !parts::write_part(mesh, &chain.part, &alone, false) {
                 return Err("a rebuilt tube has another number of rings".into());

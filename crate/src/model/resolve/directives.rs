@@ -152,8 +152,12 @@ impl Resolver {
             |kind: DirectiveKind| kind.info().params()[0].range.map_or(0, |r| r.1 as u64);
         match kind {
             K::Angle => s.angle = self.number(d).unwrap_or(s.angle),
+            K::Heading => s.heading = self.number(d).unwrap_or(s.heading),
             K::Step => s.step = self.number(d).unwrap_or(s.step),
-            K::Width => s.width = self.number(d).unwrap_or(s.width),
+            K::Width => {
+                s.width = self.number(d).unwrap_or(s.width);
+                s.width_given = true;
+            }
             K::WidthStep => s.width_step = self.number(d).unwrap_or(s.width_step),
             K::Tropism => {
                 if let Some(a) = self.arguments(d) {
@@ -189,7 +193,7 @@ impl Resolver {
                     .whole(d, whole_max(kind))
                     .map_or(v.decomposition_depth, |n| n as u32)
             }
-            K::Module | K::Define | K::Random => {}
+            K::Module | K::Define | K::Random | K::Curve | K::Table => {}
             K::Draw => s.draw.extend(self.module_ids(d)),
             K::Ignore => v.ignore.extend(self.module_ids(d)),
             K::Apex => v.apex.extend(self.module_ids(d)),
@@ -241,7 +245,10 @@ impl Resolver {
                         None
                     }
                 },
-                ParamKind::Expression | ParamKind::Name | ParamKind::Modules => None,
+                ParamKind::Expression
+                | ParamKind::Name
+                | ParamKind::Modules
+                | ParamKind::Points => None,
             };
             match arg {
                 Some(arg) => args.push(arg),
@@ -463,7 +470,7 @@ impl Resolver {
             max_it: 0.0,
             vars: &mut [],
             fresh_vars: true,
-            var_programs: &[],
+            variables: &[],
             rng: &mut rng,
         };
         program.eval(&mut env).map_err(|e| e.message)

@@ -3,20 +3,19 @@
 //! ([`directives`]), binds formal parameters to slots and compiles every expression
 //! ([`rules`]), checks arities, and indexes productions by predecessor.
 
+mod definitions;
 mod directives;
 mod rules;
 mod scope;
 
-use super::{Alphabet, GroupIds, Model, ModuleId, RandomVariable, RuleSet, SuccessorModule};
+use super::{Alphabet, Curve, GroupIds, Model, ModuleId, RuleSet, SuccessorModule};
 use crate::diagnostics::Diagnostic;
-use crate::syntax::{Directive, ExprSyntax, Section, SourceFile};
-use crate::vocabulary::{
-    function_named, module_named, name_of, value_named, Command, DirectiveKind, GroupKind, Meaning,
-    ModuleInfo, MODULES,
-};
+use crate::syntax::{ExprSyntax, Section, SourceFile};
+use crate::vocabulary::{module_named, name_of, Command, GroupKind, Meaning, ModuleInfo, MODULES};
 use directives::DirectiveValues;
 use scope::Slots;
 use std::collections::HashMap;
+use std::sync::Arc;
 
 /// Resolves a parsed file. Returns `None` for the model when there is nothing to derive (no
 /// axiom); otherwise a model plus every diagnostic, even when some are errors.
@@ -92,8 +91,14 @@ struct Resolver {
     alphabet: Alphabet,
     /// `#define` names and their expressions (inlined where they are used).
     defines: HashMap<String, ExprSyntax>,
+    /// The `#define` names in source order.
+    define_order: Vec<String>,
+    /// The value of each `#define` whose expression is a constant, computed once.
+    define_values: HashMap<String, f64>,
     /// `#random` names, in order (a variable's index is its position).
     random_names: Vec<String>,
+    /// `#curve` and `#table` functions by name.
+    curves: HashMap<String, Arc<Curve>>,
 }
 
 /// The ids every model has, interned first and always in this order.
@@ -110,7 +115,10 @@ impl Resolver {
             diagnostics: Vec::new(),
             alphabet: Alphabet::default(),
             defines: HashMap::new(),
+            define_order: Vec::new(),
+            define_values: HashMap::new(),
             random_names: Vec::new(),
+            curves: HashMap::new(),
         }
     }
 
@@ -143,53 +151,6 @@ impl Resolver {
                 close: close_marker,
             },
         }
-    }
-
-    /// Collects `#define` and `#random` names first: expressions anywhere may use them. Returns
-    /// the `#random` directives whose names were taken.
-    fn definitions<'f>(&mut self, file: &'f SourceFile) -> Vec<&'f Directive> {
-        let mut randoms = Vec::new();
-        for d in &file.directives {
-            let (Some((name, span)), Some(expr)) = (&d.target, &d.expr) else {
-                continue;
-            };
-            let taken = self.defines.contains_key(name)
-                || self.random_names.iter().any(|n| n == name)
-                || value_named(name).is_some()
-                || function_named(name).is_some();
-            if taken {
-                self.diagnostics.push(Diagnostic::error(
-                    "E0205",
-                    span.clone(),
-                    format!("'{name}' is already defined"),
-                ));
-                continue;
-            }
-            if d.kind == Some(DirectiveKind::Define) {
-                self.defines.insert(name.clone(), expr.clone());
-            } else {
-                self.random_names.push(name.clone());
-                randoms.push(d);
-            }
-        }
-        randoms
-    }
-
-    /// The `#random` variables, compiled in the order of their names.
-    fn random_variables(&mut self, randoms: &[&Directive]) -> Vec<RandomVariable> {
-        let mut variables = Vec::new();
-        for d in randoms {
-            let (Some((name, _)), Some(expr)) = (&d.target, &d.expr) else {
-                continue;
-            };
-            if let Some(distribution) = self.compile(expr, &Slots::default()) {
-                variables.push(RandomVariable {
-                    name: name.clone(),
-                    distribution,
-                });
-            }
-        }
-        variables
     }
 
     /// The productions of each section, resolved.

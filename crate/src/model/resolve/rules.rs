@@ -1,6 +1,7 @@
 //! Productions and module strings: formal parameters bound to slots, expressions compiled,
 //! arities checked, and each section indexed by predecessor.
 
+use super::definitions::MAX_NAMES;
 use super::scope::Slots;
 use super::Resolver;
 use crate::diagnostics::{Diagnostic, Severity};
@@ -48,7 +49,14 @@ impl Resolver {
 
     /// A predecessor or context module: its parameters must be names, bound to new slots.
     fn pattern(&mut self, m: &ModuleSyntax, slots: &mut Slots) -> PatternModule {
-        let first_slot = slots.names.len() as u16;
+        let first_slot = slots.names.len().min(MAX_NAMES) as u16;
+        if slots.names.len() + m.params.len() > MAX_NAMES {
+            self.diagnostics.push(Diagnostic::error(
+                "E0515",
+                m.span.clone(),
+                format!("more than {MAX_NAMES} formal parameters in one production"),
+            ));
+        }
         for p in &m.params {
             match p {
                 ExprSyntax::Name(name, span) => {
@@ -254,20 +262,32 @@ fn collect_uses(modules: &[SuccessorModule], written: &mut Uses) {
     }
 }
 
-/// Warns about productions that an earlier, unconditional one always pre-empts.
+/// Warns about productions that an earlier, unconditional one always pre-empts. One pass per
+/// predecessor: for each arity, the first unconditional production without a weight (it blocks
+/// every later one) and the first with a weight (it blocks later ones without).
 fn unreachable_warnings(set: &RuleSet, alphabet: &Alphabet, diagnostics: &mut Vec<Diagnostic>) {
     for candidates in &set.by_predecessor {
-        for (k, &q) in candidates.iter().enumerate() {
+        // arity -> (first unweighted blocker, first weighted blocker)
+        let mut blockers: HashMap<usize, (Option<&Production>, Option<&Production>)> =
+            HashMap::new();
+        for &q in candidates {
             let q = &set.productions[q as usize];
-            let blocker = candidates[..k]
-                .iter()
-                .map(|&p| &set.productions[p as usize])
-                .find(|p| {
-                    p.predecessor.arity == q.predecessor.arity
-                        && !p.has_context()
-                        && p.condition.is_none()
-                        && (p.weight.is_none() || q.weight.is_none())
-                });
+            let arity = q.predecessor.arity;
+            let (unweighted, weighted) = blockers.get(&arity).copied().unwrap_or_default();
+            let weighted = weighted.filter(|_| q.weight.is_none());
+            let blocker = match (unweighted, weighted) {
+                (Some(a), Some(b)) => Some(if a.span.start <= b.span.start { a } else { b }),
+                (a, b) => a.or(b),
+            };
+            if !q.has_context() && q.condition.is_none() {
+                let entry = blockers.entry(arity).or_default();
+                let slot = if q.weight.is_none() {
+                    &mut entry.0
+                } else {
+                    &mut entry.1
+                };
+                slot.get_or_insert(q);
+            }
             if let Some(p) = blocker {
                 diagnostics.push(Diagnostic::warning(
                     "E0301",

@@ -3,9 +3,10 @@
 
 use super::Resolver;
 use crate::diagnostics::Diagnostic;
-use crate::model::{Program, Scope};
+use crate::model::{Curve, Program, Scope};
 use crate::syntax::ExprSyntax;
 use std::collections::HashMap;
+use std::sync::Arc;
 
 /// The formal parameters of one production: name -> slot.
 #[derive(Default)]
@@ -16,7 +17,9 @@ pub(super) struct Slots {
 struct ScopeView<'a> {
     slots: &'a Slots,
     defines: &'a HashMap<String, ExprSyntax>,
+    define_values: &'a HashMap<String, f64>,
     random_names: &'a [String],
+    curves: &'a HashMap<String, Arc<Curve>>,
 }
 
 impl Scope for ScopeView<'_> {
@@ -30,11 +33,17 @@ impl Scope for ScopeView<'_> {
     fn define(&self, name: &str) -> Option<&ExprSyntax> {
         self.defines.get(name)
     }
+    fn define_value(&self, name: &str) -> Option<f64> {
+        self.define_values.get(name).copied()
+    }
     fn random_var(&self, name: &str) -> Option<u16> {
         self.random_names
             .iter()
             .position(|n| n == name)
             .map(|i| i as u16)
+    }
+    fn curve(&self, name: &str) -> Option<Arc<Curve>> {
+        self.curves.get(name).cloned()
     }
 }
 
@@ -44,7 +53,9 @@ impl Resolver {
         let scope = ScopeView {
             slots,
             defines: &self.defines,
+            define_values: &self.define_values,
             random_names: &self.random_names,
+            curves: &self.curves,
         };
         match Program::compile(expr, &scope) {
             Ok(p) => Some(p),
@@ -61,7 +72,9 @@ impl Resolver {
         let scope = ScopeView {
             slots: &Slots::default(),
             defines: &self.defines,
+            define_values: &self.define_values,
             random_names: &[],
+            curves: &self.curves,
         };
         Program::compile(expr, &scope)
     }

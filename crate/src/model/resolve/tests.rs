@@ -14,6 +14,7 @@ fn valid_arguments(kind: DirectiveKind) -> String {
             ParamKind::Name => "k".to_string(),
             ParamKind::Expression => "uniform(0, 1)".to_string(),
             ParamKind::Modules => "A".to_string(),
+            ParamKind::Points => "0 0 0.3 0.2 0.6 0.9 1 1".to_string(),
             ParamKind::Season => p.choices[0].to_string(),
             _ => {
                 let v = p

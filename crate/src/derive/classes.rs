@@ -1,0 +1,357 @@
+//! Per-module production classes: the general path's table for strings without parameters.
+//!
+//! For each module id, what its productions need at run time, decided once per derivation:
+//! - [`Kind::Fixed`]: the first production always applies (no context, condition or weight), or
+//!   there is none (the module is copied): a table copy, as on the D0L path;
+//! - [`Kind::Choice`]: weighted productions with constant weights and nothing else to match: one
+//!   draw, the same draw and the same arithmetic as [`super::rewriter`]'s weighted choice;
+//! - [`Kind::Neighbours`]: productions whose contexts are one module each side (or none): the
+//!   pass compares the module's neighbours (the previous module on the path to the root, the next
+//!   one on its branch, as [`super::context`] finds them) with the productions' contexts;
+//! - [`Kind::General`]: anything else (conditions, longer or branching contexts, weights mixed
+//!   with contexts, control modules), matched by the general path module by module.
+//!
+//! So a stochastic or context-sensitive grammar still rewrites its plain modules (`F -> FF`) by
+//! table, and a grammar mixing every feature pays for them only where they are.
+
+use super::context::NONE;
+use super::NOT_REWRITTEN;
+use crate::model::{LString, Model, ModuleId, PatternItem, PatternModule, Production, RuleSet};
+
+/// Ids of padding after the last successor, so that [`put`] may copy a fixed 16 ids.
+pub(super) const PAD: usize = 16;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Kind {
+    Fixed,
+    Choice,
+    Neighbours,
+    General,
+}
+
+/// What a module is to context matching: a bracket, skipped, or a context.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Role {
+    Context,
+    Open,
+    Close,
+    Ignored,
+}
+
+/// One module id's class.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Class {
+    pub kind: Kind,
+    pub role: Role,
+    /// Fixed: the production applied ([`NOT_REWRITTEN`] for a copy).
+    pub production: u32,
+    /// Fixed: the successor in [`Classes::successors`]; Choice and Neighbours: the alternatives
+    /// in [`Classes::alternatives`].
+    pub start: u32,
+    pub len: u32,
+    /// Choice: the sum of the weights, in source order.
+    pub total: f64,
+}
+
+/// One production of a Choice or Neighbours class.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Alternative {
+    pub production: u32,
+    pub weight: f64,
+    /// The left and right context ids ([`NONE`]: no context).
+    pub left: u32,
+    pub right: u32,
+    pub start: u32,
+    pub len: u32,
+}
+
+/// The classes of the productions section of a grammar without parameters.
+pub(super) struct Classes {
+    pub classes: Vec<Class>,
+    pub alternatives: Vec<Alternative>,
+    /// Every successor's ids, back to back, then [`PAD`] ids of padding.
+    pub successors: Vec<ModuleId>,
+    /// True when some class compares neighbours: the pass finds each module's neighbours.
+    pub neighbours: bool,
+    /// True when some general class has contexts: the pass pairs the brackets for them.
+    pub general_contexts: bool,
+}
+
+impl Classes {
+    /// The classes of `model`'s productions, when its strings have no parameters and no control
+    /// module groups (whose members the general path rewrites on its own).
+    pub fn new(model: &Model) -> Option<Classes> {
+        if model.parametric || model.has_groups {
+            return None;
+        }
+        let rules = &model.productions;
+        let mut classes = Classes {
+            classes: Vec::with_capacity(model.alphabet.len()),
+            alternatives: Vec::new(),
+            successors: Vec::new(),
+            neighbours: false,
+            general_contexts: false,
+        };
+        for index in 0..model.alphabet.len() {
+            let id = ModuleId(index as u32);
+            let candidates = rules
+                .by_predecessor
+                .get(index)
+                .map_or(&[][..], Vec::as_slice);
+            let mut class = classes.classify(rules, id, candidates);
+            class.role = role(model, id);
+            classes.classes.push(class);
+        }
+        classes
+            .successors
+            .extend(std::iter::repeat_n(ModuleId(0), PAD));
+        Some(classes)
+    }
+
+    /// Appends a successor's ids; returns (start, len).
+    fn successor(&mut self, ids: impl Iterator<Item = ModuleId>) -> (u32, u32) {
+        let start = self.successors.len();
+        self.successors.extend(ids);
+        (start as u32, (self.successors.len() - start) as u32)
+    }
+
+    fn classify(&mut self, rules: &RuleSet, id: ModuleId, candidates: &[u32]) -> Class {
+        let mut class = Class {
+            kind: Kind::Fixed,
+            role: Role::Context,
+            production: NOT_REWRITTEN,
+            start: 0,
+            len: 0,
+            total: 0.0,
+        };
+        let Some(&first) = candidates.first() else {
+            (class.start, class.len) = self.successor(std::iter::once(id));
+            return class;
+        };
+        let plain = |p: &Production| {
+            p.predecessor.arity == 0
+                && p.condition.is_none()
+                && p.successor
+                    .iter()
+                    .all(|s| s.group.is_none() && s.args.is_empty())
+        };
+        if !candidates
+            .iter()
+            .all(|&k| plain(&rules.productions[k as usize]))
+        {
+            self.general_contexts |= candidates
+                .iter()
+                .any(|&k| rules.productions[k as usize].has_context());
+            class.kind = Kind::General;
+            return class;
+        }
+        let p = &rules.productions[first as usize];
+        let kind = match (p.has_context(), p.weight.is_some()) {
+            (false, false) => {
+                class.production = first;
+                (class.start, class.len) = self.successor(p.successor.iter().map(|s| s.id));
+                return class;
+            }
+            (false, true) => self.choice(rules, candidates, &mut class),
+            (true, _) => self.neighbours(rules, candidates, &mut class),
+        };
+        if kind == Kind::General {
+            self.general_contexts |= candidates
+                .iter()
+                .any(|&k| rules.productions[k as usize].has_context());
+        }
+        self.neighbours |= kind == Kind::Neighbours;
+        class.kind = kind;
+        class
+    }
+
+    /// The weighted productions among `candidates` (the first of which is weighted and always
+    /// matches), when none has a context and every weight is a constant at least 0.
+    fn choice(&mut self, rules: &RuleSet, candidates: &[u32], class: &mut Class) -> Kind {
+        let start = self.alternatives.len();
+        for &k in candidates {
+            let p = &rules.productions[k as usize];
+            let Some(weight) = &p.weight else { continue };
+            let Some(w) = weight.constant().filter(|w| *w >= 0.0) else {
+                return self.give_up(start);
+            };
+            if p.has_context() {
+                return self.give_up(start);
+            }
+            class.total += w;
+            let (s, len) = self.successor(p.successor.iter().map(|m| m.id));
+            self.alternatives.push(Alternative {
+                production: k,
+                weight: w,
+                left: NONE,
+                right: NONE,
+                start: s,
+                len,
+            });
+        }
+        class.start = start as u32;
+        class.len = (self.alternatives.len() - start) as u32;
+        Kind::Choice
+    }
+
+    /// The productions among `candidates` up to the first without a context, when each has no
+    /// weight and at most one module of context each side.
+    fn neighbours(&mut self, rules: &RuleSet, candidates: &[u32], class: &mut Class) -> Kind {
+        let start = self.alternatives.len();
+        for &k in candidates {
+            let p = &rules.productions[k as usize];
+            let single = |m: &PatternModule| (m.arity == 0).then_some(m.id.0);
+            let left = match p.left.as_slice() {
+                [] => Some(NONE),
+                [m] => single(m),
+                _ => None,
+            };
+            let right = match p.right.as_slice() {
+                [] => Some(NONE),
+                [PatternItem::Module(m)] => single(m),
+                _ => None,
+            };
+            let (Some(left), Some(right), None) = (left, right, &p.weight) else {
+                return self.give_up(start);
+            };
+            let (s, len) = self.successor(p.successor.iter().map(|m| m.id));
+            self.alternatives.push(Alternative {
+                production: k,
+                weight: 0.0,
+                left,
+                right,
+                start: s,
+                len,
+            });
+            if !p.has_context() {
+                break; // it always applies: the productions after it never do
+            }
+        }
+        class.start = start as u32;
+        class.len = (self.alternatives.len() - start) as u32;
+        Kind::Neighbours
+    }
+
+    /// The alternative of a Choice class that the uniform draw `u` (in [0, 1)) picks: the weighted
+    /// choice of the general path, with the same arithmetic.
+    #[inline]
+    pub fn choose(&self, class: &Class, u: f64) -> &Alternative {
+        let alternatives = &self.alternatives[class.start as usize..][..class.len as usize];
+        let mut r = u * class.total;
+        let mut pick = alternatives.len() - 1;
+        for (k, a) in alternatives.iter().enumerate() {
+            if r < a.weight {
+                pick = k;
+                break;
+            }
+            r -= a.weight;
+        }
+        &alternatives[pick]
+    }
+
+    /// The first alternative of a Neighbours class whose contexts are `left` and `right`.
+    #[inline]
+    pub fn neighbours_match(&self, class: &Class, left: u32, right: u32) -> Option<&Alternative> {
+        self.alternatives[class.start as usize..][..class.len as usize]
+            .iter()
+            .find(|a| (a.left == NONE || a.left == left) && (a.right == NONE || a.right == right))
+    }
+
+    fn give_up(&mut self, start: usize) -> Kind {
+        self.alternatives.truncate(start);
+        Kind::General
+    }
+}
+
+fn role(model: &Model, id: ModuleId) -> Role {
+    if id == model.open {
+        Role::Open
+    } else if id == model.close {
+        Role::Close
+    } else if model.ignored.get(id.index()).copied().unwrap_or(false) {
+        Role::Ignored
+    } else {
+        Role::Context
+    }
+}
+
+/// For each module of `s`, the id of its right neighbour for context matching ([`NONE`] when it
+/// has none): the next module on its branch, skipping ignored modules and whole branches; a `]`
+/// or an unbalanced `[` ends the search ([`super::context::match_right`] for one module).
+/// Returns false, leaving `right` empty, when `s` is flat (no brackets, nothing ignored): each
+/// module's neighbours are then the modules next to it.
+pub(super) fn right_neighbours(
+    classes: &[Class],
+    s: &LString,
+    right: &mut Vec<u32>,
+    stack: &mut Vec<u32>,
+) -> bool {
+    right.clear();
+    if s.ids
+        .iter()
+        .all(|id| classes[id.index()].role == Role::Context)
+    {
+        return false;
+    }
+    right.resize(s.len(), NONE);
+    stack.clear();
+    // `next`: what a search starting at module i + 1 finds.
+    let mut next = NONE;
+    for (i, &id) in s.ids.iter().enumerate().rev() {
+        right[i] = next;
+        match classes[id.index()].role {
+            Role::Close => {
+                stack.push(next);
+                next = NONE;
+            }
+            // The top of the stack is the search from past this bracket's partner; none when the
+            // bracket is unbalanced.
+            Role::Open => next = stack.pop().unwrap_or(NONE),
+            Role::Ignored => {}
+            Role::Context => next = id.0,
+        }
+    }
+    true
+}
+
+/// After module `id`: the left neighbour of the next module, `last` being this module's (the
+/// previous module on the path to the root, skipping ignored modules and whole branches;
+/// [`super::context::match_left`] for one module).
+#[inline(always)]
+pub(super) fn step_left(role: Role, id: ModuleId, last: u32, stack: &mut Vec<u32>) -> u32 {
+    match role {
+        Role::Context => id.0,
+        Role::Ignored => last,
+        Role::Open => {
+            stack.push(last);
+            last
+        }
+        // An unbalanced `]` has no partner: nothing before it is on the path to the root.
+        Role::Close => stack.pop().unwrap_or(NONE),
+    }
+}
+
+/// Appends `succ[start..start + len]` to `out`. A successor of at most 16 ids is copied as a fixed
+/// 4 or 16 ids (what lies past `len` is overwritten by the next module): wide stores of a known
+/// size instead of a copy of a variable length.
+#[inline(always)]
+pub(super) fn put(out: &mut Vec<ModuleId>, succ: &[ModuleId], start: usize, len: usize) {
+    if len > PAD {
+        out.extend_from_slice(&succ[start..start + len]);
+        return;
+    }
+    out.reserve(PAD);
+    let from = &succ[start..start + PAD];
+    let at = out.len();
+    // SAFETY: `reserve` leaves room for PAD more ids after `at`; `from` holds PAD initialised
+    // ids; the first `len` ids written are the successor, so the new length covers only them.
+    unsafe {
+        let to = out.as_mut_ptr().add(at);
+        if len <= 4 {
+            std::ptr::copy_nonoverlapping(from.as_ptr(), to, 4);
+        } else {
+            std::ptr::copy_nonoverlapping(from.as_ptr(), to, PAD);
+        }
+        out.set_len(at + len);
+    }
+}

@@ -1,0 +1,492 @@
+//! cpfg's C preprocessor, as far as L-system files use it: `#define` with and without arguments,
+//! `#undef`, `#if`/`#ifdef`/`#ifndef`/`#elif`/`#else`/`#endif`, `#include` of the object's own
+//! files, and lines continued by `\`.
+//!
+//! A macro whose value is a number expression stays a Meristem `#define` (the line is kept for
+//! the importer, so the studio shows it as a slider); every other macro (with arguments, or whose
+//! value is modules) is expanded where it is used, as cpp does.
+
+use super::Line;
+
+/// A `#define`.
+#[derive(Clone, Debug)]
+struct Macro {
+    name: String,
+    /// `None` for an object-like macro.
+    params: Option<Vec<String>>,
+    body: String,
+    /// Kept as a Meristem `#define` (not expanded).
+    kept: bool,
+}
+
+/// How deep `#include` may nest, and how many expansions one line may take (a macro that grows
+/// without end stops here).
+const MAX_INCLUDE_DEPTH: usize = 8;
+const MAX_EXPANSIONS: usize = 2_000;
+const MAX_LINE: usize = 100_000;
+
+/// The preprocessor's state.
+pub(super) struct Preprocessor<'a> {
+    macros: Vec<Macro>,
+    /// The object's other files by name (for `#include "file"`).
+    include: &'a dyn Fn(&str) -> Option<String>,
+    pub notes: Vec<(usize, String)>,
+    /// Functions the importer translates (their names are never taken for module text).
+    functions: &'a [&'a str],
+}
+
+/// One level of `#if`: is this branch taken, was one taken already, was the enclosing one active.
+struct Condition {
+    active: bool,
+    taken: bool,
+    outer: bool,
+}
+
+impl<'a> Preprocessor<'a> {
+    pub fn new(include: &'a dyn Fn(&str) -> Option<String>, functions: &'a [&'a str]) -> Self {
+        Preprocessor {
+            macros: Vec::new(),
+            include,
+            notes: Vec::new(),
+            functions,
+        }
+    }
+
+    /// The lines after preprocessing: directives it handled are gone (a kept `#define` stays),
+    /// lines of a branch not taken are empty, macros are expanded.
+    pub fn run(&mut self, lines: Vec<Line>, depth: usize) -> Vec<Line> {
+        let mut out = Vec::new();
+        let mut stack: Vec<Condition> = Vec::new();
+        for mut line in continued(lines) {
+            let active = stack.last().is_none_or(|c| c.active);
+            if let Some(directive) = line.code.strip_prefix('#') {
+                let directive = directive.trim_start().to_string();
+                let word: String = directive
+                    .chars()
+                    .take_while(char::is_ascii_alphabetic)
+                    .collect();
+                let rest = directive[word.len()..].trim().to_string();
+                if self.conditional(&word, &rest, active, &mut stack, line.n) {
+                    continue;
+                }
+                if !active {
+                    continue;
+                }
+                match word.as_str() {
+                    "define" => {
+                        if let Some(kept) = self.define(&rest) {
+                            line.code = kept;
+                            out.push(line);
+                        }
+                    }
+                    "undef" => self.macros.retain(|m| m.name != rest.trim()),
+                    "include" => out.extend(self.include_file(&rest, line.n, depth)),
+                    _ => {
+                        // Left to the importer, which notes it.
+                        out.push(line);
+                    }
+                }
+                continue;
+            }
+            if !active {
+                continue;
+            }
+            line.code = self.expand(&line.code, line.n);
+            out.push(line);
+        }
+        out
+    }
+
+    /// `#if`, `#ifdef`, `#ifndef`, `#elif`, `#else`, `#endif`; false for another word.
+    fn conditional(
+        &mut self,
+        word: &str,
+        rest: &str,
+        active: bool,
+        stack: &mut Vec<Condition>,
+        n: usize,
+    ) -> bool {
+        match word {
+            "if" | "ifdef" | "ifndef" => {
+                let value = active
+                    && match word {
+                        "ifdef" => self.defined(rest),
+                        "ifndef" => !self.defined(rest),
+                        _ => self.truth(rest, n),
+                    };
+                stack.push(Condition {
+                    active: value,
+                    taken: value,
+                    outer: active,
+                });
+            }
+            "elif" | "else" => {
+                if let Some(c) = stack.last_mut() {
+                    let value = c.outer && !c.taken && (word == "else" || self.truth(rest, n));
+                    c.active = value;
+                    c.taken |= value;
+                }
+            }
+            "endif" => {
+                stack.pop();
+            }
+            _ => return false,
+        }
+        true
+    }
+
+    fn defined(&self, name: &str) -> bool {
+        let name = name.trim();
+        self.macros.iter().any(|m| m.name == name)
+    }
+
+    /// The value of an `#if` condition: macros expanded, `defined(X)` read, other names 0 (as
+    /// cpp does); a condition that is not a constant expression is false, and noted.
+    fn truth(&mut self, condition: &str, n: usize) -> bool {
+        let mut text = condition.to_string();
+        // `defined(X)` and `defined X`.
+        while let Some(i) = find_word(&text, "defined") {
+            let after = text[i + 7..].trim_start();
+            let (name, len) = if let Some(inner) = after.strip_prefix('(') {
+                let close = inner.find(')').unwrap_or(inner.len());
+                (inner[..close].trim().to_string(), close + 2)
+            } else {
+                let end = after
+                    .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+                    .unwrap_or(after.len());
+                (after[..end].to_string(), end)
+            };
+            let skipped = text[i + 7..].len() - after.len();
+            let value = if self.defined(&name) { "1" } else { "0" };
+            let end = (i + 7 + skipped + len).min(text.len());
+            text.replace_range(i..end, value);
+        }
+        let expanded = self.expand_all(&text, n);
+        let zeroed = words_to_zero(&expanded);
+        let value = crate::syntax::parse_expression(&zeroed, 0)
+            .ok()
+            .and_then(|e| crate::model::Program::compile(&e, &NoNames).ok())
+            .and_then(|p| p.constant());
+        match value {
+            Some(v) => v != 0.0,
+            None => {
+                self.notes.push((
+                    n,
+                    format!("the condition of #if {condition} is not a constant Meristem can work out: its lines are left out"),
+                ));
+                false
+            }
+        }
+    }
+
+    /// Records `#define …` (the text after `define`); returns the line to keep when the macro
+    /// stays a Meristem `#define`.
+    fn define(&mut self, rest: &str) -> Option<String> {
+        let end = rest
+            .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+            .unwrap_or(rest.len());
+        let name = rest[..end].to_string();
+        if name.is_empty() {
+            return Some(format!("#define {rest}"));
+        }
+        let after = &rest[end..];
+        let (params, body) = match after.strip_prefix('(') {
+            Some(inner) => {
+                let close = inner.find(')')?;
+                let params = inner[..close]
+                    .split(',')
+                    .map(|p| p.trim().to_string())
+                    .filter(|p| !p.is_empty())
+                    .collect();
+                (Some(params), inner[close + 1..].trim().to_string())
+            }
+            None => (None, after.trim().to_string()),
+        };
+        let body = self.expand_all(&body, 0);
+        let kept = params.is_none() && !body.is_empty() && self.is_expression(&body);
+        self.macros.retain(|m| m.name != name);
+        self.macros.push(Macro {
+            name: name.clone(),
+            params,
+            body: body.clone(),
+            kept,
+        });
+        kept.then(|| format!("#define {name} {body}"))
+    }
+
+    /// True when `body` is a number expression: numbers, operators, kept macros and calls of
+    /// functions (a name followed by `(` that is no module: the translated functions).
+    fn is_expression(&self, body: &str) -> bool {
+        let chars: Vec<char> = body.chars().collect();
+        let mut i = 0;
+        let mut any = false;
+        while i < chars.len() {
+            let c = chars[i];
+            if c.is_ascii_alphabetic() || c == '_' {
+                let start = i;
+                while i < chars.len() && (chars[i].is_ascii_alphanumeric() || chars[i] == '_') {
+                    i += 1;
+                }
+                let word: String = chars[start..i].iter().collect();
+                let call = chars[i..].iter().find(|c| !c.is_whitespace()) == Some(&'(');
+                let known = if call {
+                    self.functions.contains(&word.as_str())
+                } else {
+                    self.macros.iter().any(|m| m.kept && m.name == word)
+                };
+                if !known {
+                    return false;
+                }
+                any = true;
+                continue;
+            }
+            if c.is_ascii_digit() || c == '.' {
+                any = true;
+            } else if !(c.is_whitespace() || "+-*/%^()<>=!&|?:,".contains(c)) {
+                return false;
+            }
+            i += 1;
+        }
+        any
+    }
+
+    /// `#include "file"`: the file's lines, preprocessed, at the line of the `#include`.
+    fn include_file(&mut self, rest: &str, n: usize, depth: usize) -> Vec<Line> {
+        let name = rest.trim_matches(|c: char| c == '"' || c == '<' || c == '>' || c == ' ');
+        if rest.starts_with('<') {
+            // A C library header (<math.h>): cpfg's expressions have its functions anyway.
+            return Vec::new();
+        }
+        if depth >= MAX_INCLUDE_DEPTH {
+            self.notes
+                .push((n, format!("#include \"{name}\" nests too deep; left out")));
+            return Vec::new();
+        }
+        match (self.include)(name) {
+            Some(text) => {
+                let included = super::lines(&text, super::Flavour::Cpfg)
+                    .into_iter()
+                    .map(|l| Line { n, ..l })
+                    .collect();
+                self.run(included, depth + 1)
+            }
+            None => {
+                self.notes.push((
+                    n,
+                    format!("#include \"{name}\": the file was not opened with this one, so what it holds (productions, definitions) is missing"),
+                ));
+                Vec::new()
+            }
+        }
+    }
+
+    /// Expands the macros that are not kept as `#define`s.
+    fn expand(&mut self, text: &str, n: usize) -> String {
+        self.expansion(text, n, false)
+    }
+
+    /// Expands every macro (for `#if` and the values of other macros).
+    fn expand_all(&mut self, text: &str, n: usize) -> String {
+        self.expansion(text, n, true)
+    }
+
+    fn expansion(&mut self, text: &str, n: usize, all: bool) -> String {
+        let mut text = text.to_string();
+        let mut count = 0;
+        let mut from = 0;
+        loop {
+            let Some((start, end, replacement)) = self.next_macro(&text, from, all) else {
+                return text;
+            };
+            count += 1;
+            if count > MAX_EXPANSIONS || text.len() > MAX_LINE {
+                self.notes.push((
+                    n,
+                    "a macro here expands without end; the line is left as it is".into(),
+                ));
+                return text;
+            }
+            text.replace_range(start..end, &replacement);
+            // Rescan the replacement (nested macros), but a macro met again at the same place
+            // is cpp's recursion, which stops; MAX_EXPANSIONS bounds it here.
+            from = start;
+        }
+    }
+
+    /// The first macro use at or after byte `from`: its span and its replacement.
+    fn next_macro(&self, text: &str, from: usize, all: bool) -> Option<(usize, usize, String)> {
+        let bytes = text.as_bytes();
+        let mut i = from;
+        while i < bytes.len() {
+            let c = bytes[i];
+            if c.is_ascii_alphabetic() || c == b'_' {
+                let start = i;
+                i = word_end(bytes, i);
+                let word = &text[start..i];
+                let found = self
+                    .macros
+                    .iter()
+                    .rev()
+                    .find(|m| m.name == word && (all || !m.kept));
+                if let Some(m) = found {
+                    match &m.params {
+                        None => return Some((start, i, m.body.clone())),
+                        Some(params) => {
+                            let rest = &text[i..];
+                            let open = rest.len() - rest.trim_start().len();
+                            if rest[open..].starts_with('(') {
+                                let args_at = i + open + 1;
+                                if let Some((args, close)) = arguments(text, args_at) {
+                                    return Some((
+                                        start,
+                                        close + 1,
+                                        substitute(&m.body, params, &args),
+                                    ));
+                                }
+                            }
+                        }
+                    }
+                }
+                continue;
+            }
+            i += 1;
+        }
+        None
+    }
+}
+
+/// The end of the identifier that starts at byte `i`.
+fn word_end(bytes: &[u8], mut i: usize) -> usize {
+    while i < bytes.len() && (bytes[i].is_ascii_alphanumeric() || bytes[i] == b'_') {
+        i += 1;
+    }
+    i
+}
+
+/// Joins lines that end with `\` to the next.
+fn continued(lines: Vec<Line>) -> Vec<Line> {
+    let mut out: Vec<Line> = Vec::new();
+    let mut open = false;
+    for line in lines {
+        if open {
+            if let Some(last) = out.last_mut() {
+                last.code.push(' ');
+                last.code.push_str(&line.code);
+                open = last.code.ends_with('\\');
+                if open {
+                    last.code.pop();
+                }
+                out.push(Line {
+                    code: String::new(),
+                    ..line
+                });
+                continue;
+            }
+        }
+        let mut line = line;
+        open = line.code.ends_with('\\');
+        if open {
+            line.code.pop();
+        }
+        out.push(line);
+    }
+    out
+}
+
+/// The arguments of a macro call whose first argument starts at byte `at` (after `(`): split at
+/// top-level commas; with the index of the closing `)`.
+fn arguments(text: &str, at: usize) -> Option<(Vec<String>, usize)> {
+    let mut depth = 0i32;
+    let mut args = Vec::new();
+    let mut start = at;
+    for (k, c) in text[at..].char_indices() {
+        let i = at + k;
+        match c {
+            '(' | '[' | '{' => depth += 1,
+            ')' if depth == 0 => {
+                args.push(text[start..i].trim().to_string());
+                return Some((args, i));
+            }
+            ')' | ']' | '}' => depth -= 1,
+            ',' if depth == 0 => {
+                args.push(text[start..i].trim().to_string());
+                start = i + 1;
+            }
+            _ => {}
+        }
+    }
+    None
+}
+
+/// The body with each parameter (a whole word) replaced by its argument.
+pub(super) fn substitute(body: &str, params: &[String], args: &[String]) -> String {
+    let mut out = String::new();
+    let bytes = body.as_bytes();
+    let mut i = 0;
+    while i < bytes.len() {
+        let c = bytes[i];
+        if c.is_ascii_alphabetic() || c == b'_' {
+            let start = i;
+            i = word_end(bytes, i);
+            let word = &body[start..i];
+            match params.iter().position(|p| p == word) {
+                Some(k) => out.push_str(args.get(k).map_or("", String::as_str)),
+                None => out.push_str(word),
+            }
+            continue;
+        }
+        let len = body[i..].chars().next().map_or(1, char::len_utf8);
+        out.push_str(&body[i..i + len]);
+        i += len;
+    }
+    out
+}
+
+/// Every name left in an `#if` condition becomes 0 (cpp's rule for undefined names).
+fn words_to_zero(text: &str) -> String {
+    let mut out = String::new();
+    let mut word = String::new();
+    for c in text.chars().chain(std::iter::once(' ')) {
+        if c.is_ascii_alphanumeric() || c == '_' {
+            word.push(c);
+            continue;
+        }
+        if !word.is_empty() {
+            if word.starts_with(|c: char| c.is_ascii_digit()) {
+                out.push_str(&word);
+            } else {
+                out.push('0');
+            }
+            word.clear();
+        }
+        out.push(c);
+    }
+    out.trim_end().to_string()
+}
+
+/// The byte index of `word` standing alone.
+fn find_word(text: &str, word: &str) -> Option<usize> {
+    let bytes = text.as_bytes();
+    text.match_indices(word).map(|(i, _)| i).find(|&i| {
+        let before = i == 0 || !(bytes[i - 1].is_ascii_alphanumeric() || bytes[i - 1] == b'_');
+        let end = i + word.len();
+        let after =
+            end >= bytes.len() || !(bytes[end].is_ascii_alphanumeric() || bytes[end] == b'_');
+        before && after
+    })
+}
+
+/// A scope with no names: `#if` conditions are constants once macros are expanded.
+struct NoNames;
+
+impl crate::model::Scope for NoNames {
+    fn slot(&self, _: &str) -> Option<u16> {
+        None
+    }
+    fn define(&self, _: &str) -> Option<&crate::syntax::ExprSyntax> {
+        None
+    }
+    fn random_var(&self, _: &str) -> Option<u16> {
+        None
+    }
+}

@@ -1,0 +1,322 @@
+//! cpfg's global statements: the blocks `Start:`, `StartEach:`, `EndEach:`, `End:` and `Define:`
+//! (`Start: {srand(5); n = 0;}`), their variables and arrays (`array turn[3] = {0, 45, -45};`).
+//!
+//! Meristem has no variables, so a variable becomes a `#define` of its start value; one that a
+//! `StartEach:` or `EndEach:` block steps by a constant becomes a `#define` over `NumIt` (the
+//! step's number), which is exactly its value during that step; any other change is noted. An
+//! array becomes a choice by index, written where the array is read.
+
+use super::{Env, Importer, Line};
+use crate::import::number;
+use crate::vocabulary::DirectiveKind;
+
+/// Which block a statement is in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum BlockKind {
+    Start,
+    StartEach,
+    EndEach,
+    End,
+    Define,
+}
+
+impl BlockKind {
+    fn named(keyword: &str) -> Option<BlockKind> {
+        Some(match keyword {
+            "start" => BlockKind::Start,
+            "starteach" => BlockKind::StartEach,
+            "endeach" => BlockKind::EndEach,
+            "end" => BlockKind::End,
+            "define" => BlockKind::Define,
+            _ => return None,
+        })
+    }
+
+    fn written(self) -> &'static str {
+        match self {
+            BlockKind::Start => "Start:",
+            BlockKind::StartEach => "StartEach:",
+            BlockKind::EndEach => "EndEach:",
+            BlockKind::End => "End:",
+            BlockKind::Define => "Define:",
+        }
+    }
+}
+
+/// What the global blocks of a file say, read before the file is translated.
+#[derive(Clone, Debug, Default)]
+pub(super) struct Globals {
+    /// Variables a `StartEach:`/`EndEach:` block steps by a constant: name, step, and whether
+    /// after the step (`EndEach:`).
+    steps: Vec<(String, String, bool)>,
+    /// Variables assigned by any statement other than their start value or such a step.
+    changed: Vec<String>,
+    /// Every variable assigned in a block.
+    pub names: Vec<String>,
+    /// Arrays: name and their values (translated when their block is).
+    pub arrays: Vec<(String, Vec<String>)>,
+}
+
+/// `Start: {…}` → the block kind and the statements inside the braces.
+pub(super) fn block(code: &str) -> Option<(BlockKind, Vec<String>)> {
+    let colon = code.find(':')?;
+    let keyword: String = code[..colon]
+        .chars()
+        .filter(|c| !c.is_whitespace())
+        .collect::<String>()
+        .to_ascii_lowercase();
+    let kind = BlockKind::named(&keyword)?;
+    let body = code[colon + 1..].trim();
+    let body = body.strip_prefix('{').unwrap_or(body);
+    let body = body.strip_suffix('}').unwrap_or(body);
+    Some((kind, statements(body)))
+}
+
+/// Statements split at `;` outside braces.
+fn statements(body: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut depth = 0i32;
+    let mut current = String::new();
+    for c in body.chars() {
+        match c {
+            '{' => depth += 1,
+            '}' => depth -= 1,
+            ';' if depth <= 0 => {
+                out.push(std::mem::take(&mut current).trim().to_string());
+                continue;
+            }
+            _ => {}
+        }
+        current.push(c);
+    }
+    out.push(current.trim().to_string());
+    out.retain(|s| !s.is_empty());
+    out
+}
+
+/// `x = x + 0.5`, `x += 0.5`, `x++` (and `-`) → (x, the step as an expression).
+fn step(statement: &str) -> Option<(String, String)> {
+    let s: String = statement.chars().filter(|c| !c.is_whitespace()).collect();
+    if let Some(name) = s.strip_suffix("++") {
+        return Some((name.to_string(), "1".into()));
+    }
+    if let Some(name) = s.strip_suffix("--") {
+        return Some((name.to_string(), "-1".into()));
+    }
+    for (op, sign) in [("+=", ""), ("-=", "-")] {
+        if let Some((name, d)) = s.split_once(op) {
+            return constant(d).then(|| (name.to_string(), format!("{sign}{d}")));
+        }
+    }
+    let (name, value) = s.split_once('=')?;
+    for (op, sign) in [('+', ""), ('-', "-")] {
+        if let Some(d) = value.strip_prefix(&format!("{name}{op}")) {
+            return constant(d).then(|| (name.to_string(), format!("{sign}{d}")));
+        }
+    }
+    None
+}
+
+/// A number, written as such.
+fn constant(text: &str) -> bool {
+    text.parse::<f64>().is_ok_and(f64::is_finite)
+}
+
+/// The variable an assignment statement sets (`x = …`, `x += …`, `x++`).
+fn assigned(statement: &str) -> Option<String> {
+    let s = statement.trim();
+    let end = s
+        .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+        .unwrap_or(s.len());
+    let (name, rest) = (&s[..end], s[end..].trim_start());
+    let assigns = (rest.starts_with('=') && !rest.starts_with("=="))
+        || ["+=", "-=", "*=", "/=", "++", "--"]
+            .iter()
+            .any(|op| rest.starts_with(op));
+    (!name.is_empty() && assigns && name != "array").then(|| name.to_string())
+}
+
+impl Globals {
+    /// Reads the global blocks of the whole file.
+    pub fn scan(lines: &[Line]) -> Globals {
+        let mut g = Globals::default();
+        for line in lines {
+            let Some((kind, statements)) = block(&line.code) else {
+                continue;
+            };
+            for s in &statements {
+                if let Some(rest) = s.strip_prefix("array") {
+                    let name: String = rest
+                        .trim_start()
+                        .chars()
+                        .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
+                        .collect();
+                    g.names.push(name);
+                    continue;
+                }
+                let Some(name) = assigned(s) else { continue };
+                if !g.names.contains(&name) {
+                    g.names.push(name.clone());
+                }
+                let stepped = matches!(kind, BlockKind::StartEach | BlockKind::EndEach)
+                    .then(|| step(s))
+                    .flatten();
+                match (kind, stepped) {
+                    (BlockKind::Start | BlockKind::Define, _) => {}
+                    (_, Some((n, d))) if !g.steps.iter().any(|(x, _, _)| *x == n) => {
+                        g.steps.push((n, d, kind == BlockKind::EndEach))
+                    }
+                    _ => g.changed.push(name),
+                }
+            }
+        }
+        g
+    }
+
+    /// True for a variable of the global blocks.
+    pub fn is_global(&self, name: &str) -> bool {
+        self.names.iter().any(|n| n == name)
+    }
+}
+
+impl Importer {
+    /// Translates a global block at line `n`; false when the line is none.
+    pub(super) fn global_block(&mut self, code: &str, n: usize) -> bool {
+        let Some((kind, statements)) = block(code) else {
+            return false;
+        };
+        for s in statements {
+            if let Err(why) = self.global_statement(kind, &s, n) {
+                self.note(n, why);
+            }
+        }
+        true
+    }
+
+    fn global_statement(&mut self, kind: BlockKind, s: &str, n: usize) -> Result<(), String> {
+        let compact: String = s.chars().filter(|c| !c.is_whitespace()).collect();
+        if let Some(seed) = compact
+            .strip_prefix("srand(")
+            .and_then(|r| r.strip_suffix(')'))
+        {
+            let value = self.expression(seed, &Env::new())?;
+            self.out
+                .line(format!("{} {value}", DirectiveKind::Seed.written()), n);
+            return Ok(());
+        }
+        if compact.starts_with("printf(") {
+            self.note_once(
+                "printf",
+                n,
+                "cpfg's printf prints to the console; it is not translated (the plant is the same)",
+            );
+            return Ok(());
+        }
+        if let Some(rest) = s.strip_prefix("array") {
+            return self.array(rest);
+        }
+        let Some(name) = assigned(s) else {
+            return Err(format!(
+                "cpfg's {} statement '{s}' is not translated: Meristem has no statements, so what it does is missing",
+                kind.written()
+            ));
+        };
+        match kind {
+            BlockKind::Start | BlockKind::Define => self.start_value(&name, s, n),
+            _ if self.globals.steps.iter().any(|(x, _, _)| *x == name)
+                && !self.globals.changed.contains(&name) =>
+            {
+                Ok(())
+            }
+            _ => Err(format!(
+                "cpfg's {} statement '{s}' changes the variable {name} during the derivation; Meristem has no variables, so {name} keeps its start value",
+                kind.written()
+            )),
+        }
+    }
+
+    /// `name = value` in `Start:`: a `#define` of the start value, or of its value at each step
+    /// when a `StartEach:`/`EndEach:` block steps it by a constant.
+    fn start_value(&mut self, name: &str, s: &str, n: usize) -> Result<(), String> {
+        let Some((_, value)) = s.split_once('=') else {
+            return Err(format!("'{s}' is not translated"));
+        };
+        let value = self.expression(value, &Env::new())?;
+        let step = self
+            .globals
+            .steps
+            .iter()
+            .find(|(x, _, _)| x == name)
+            .cloned();
+        let text = match step {
+            Some((_, d, after)) if !self.globals.changed.iter().any(|c| c == name) => {
+                let steps = if after { "(NumIt-1)" } else { "NumIt" };
+                format!("({value})+({d})*{steps}")
+            }
+            _ => value,
+        };
+        self.out.line(
+            format!("{} {name} {text}", DirectiveKind::Define.written()),
+            n,
+        );
+        Ok(())
+    }
+
+    /// `array name[k] = {a, b, …}` (after `array`).
+    fn array(&mut self, rest: &str) -> Result<(), String> {
+        let rest = rest.trim();
+        let name: String = rest
+            .chars()
+            .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
+            .collect();
+        let after = &rest[name.len()..];
+        if after.matches('[').count() != 1 {
+            return Err(format!(
+                "cpfg's array {name} has more than one dimension; Meristem has no arrays, so expressions that read it are not translated"
+            ));
+        }
+        let open = after
+            .find('{')
+            .ok_or(format!("array {name} has no values"))?;
+        let close = after.rfind('}').unwrap_or(after.len());
+        let mut values = Vec::new();
+        for v in super::split_top(&after[open + 1..close.max(open + 1)], ',') {
+            if !v.trim().is_empty() {
+                values.push(self.expression(v, &Env::new())?);
+            }
+        }
+        if values.is_empty() {
+            return Err(format!("array {name} has no values"));
+        }
+        self.globals.arrays.push((name, values));
+        Ok(())
+    }
+
+    /// `name[index]` read from an array: the value at the index (truncated, as C does; the last
+    /// value past the end).
+    pub(super) fn array_value(&self, name: &str, index: &str) -> Option<String> {
+        let (_, values) = self.globals.arrays.iter().find(|(a, _)| a == name)?;
+        let mut text = values.last()?.clone();
+        for (k, v) in values.iter().enumerate().rev().skip(1) {
+            text = format!("(({index})<{}?{v}:{text})", number(k as f64 + 1.0));
+        }
+        Some(format!("({text})"))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn blocks_and_steps_are_read() {
+        let (kind, s) = block("Start: {srand(5); n = 0; array a[2] = {1, 2};}").expect("block");
+        assert_eq!(kind, BlockKind::Start);
+        assert_eq!(s, ["srand(5)", "n = 0", "array a[2] = {1, 2}"]);
+        assert_eq!(step("n = n + 1"), Some(("n".into(), "1".into())));
+        assert_eq!(step("T += 0.5"), Some(("T".into(), "0.5".into())));
+        assert_eq!(step("n = n * 2"), None);
+        assert_eq!(assigned("x == 1"), None);
+        assert_eq!(assigned("x += 1").as_deref(), Some("x"));
+    }
+}

@@ -1,0 +1,158 @@
+//! What a cpfg L-system takes from the rest of its vlab object: the view file's angle increment,
+//! widths and colours, its functions (`func(k, x)`), its colour map; and the notes a `.l` opened
+//! alone needs when it relies on them.
+
+use super::{Flavour, Importer};
+use crate::import::number;
+use crate::vocabulary::{name_of, Command, DirectiveKind, Meaning};
+
+impl Importer {
+    /// The directives the view and colour files give, after the header.
+    pub(super) fn view_lines(&mut self) {
+        let Some(view) = self.view.clone() else {
+            return;
+        };
+        self.out.comment(
+            &format!("From the vlab object's {}.", view.sources.join(", ")),
+            0,
+        );
+        let settings = [
+            (DirectiveKind::Angle, view.angle),
+            (DirectiveKind::Width, view.width),
+            (DirectiveKind::WidthStep, view.width_step),
+        ];
+        for (kind, value) in settings {
+            if let Some(v) = value {
+                self.out
+                    .line(format!("{} {}", kind.written(), number(v)), 0);
+            }
+        }
+        if let (Some([x, y, z]), Some(e)) = (view.tropism, view.elasticity) {
+            if e != 0.0 {
+                let values = [x, y, z, e].map(number).join(" ");
+                self.out
+                    .line(format!("{} {values}", DirectiveKind::Tropism.written()), 0);
+            }
+        }
+        for line in &view.palette {
+            self.out.line(line.clone(), 0);
+        }
+        for f in view.functions.iter().flatten() {
+            for line in &f.lines {
+                self.out.line(line.clone(), 0);
+            }
+        }
+        for note in &view.notes {
+            self.note(0, note.clone());
+        }
+    }
+
+    /// The axiom's start: the view's initial colour.
+    pub(super) fn initial_colour(&self) -> String {
+        match self.view.as_ref().and_then(|v| v.color) {
+            Some(c) => format!(
+                "{}({})",
+                name_of(Meaning::Turtle(Command::SetColor)),
+                number(c)
+            ),
+            None => String::new(),
+        }
+    }
+
+    /// Notes for a `.l` opened alone: what its view file would have said.
+    pub(super) fn unknown_view(&mut self) {
+        if self.flavour != Flavour::Cpfg {
+            return;
+        }
+        let no_angle = self.view.as_ref().is_none_or(|v| v.angle.is_none());
+        if self.bare_turn && no_angle {
+            let why = if self.view.is_some() {
+                "the view file gives no angle increment"
+            } else {
+                "the angle increment is in the object's view file (.v), which was not opened with this file"
+            };
+            self.note(0, format!("{why}: turns without an angle use Meristem's default of 90° (open the object's folder or .zip to use its own)"));
+        }
+        if self.colour && self.view.is_none() {
+            self.note(0, "the colours are in the object's view file and colour map, which were not opened with this file: Meristem's palette is used (open the object's folder or .zip to use its own)");
+        }
+    }
+
+    /// A module whose meaning depends on the view (turns without an angle, colours) or that cpfg
+    /// spells differently (`@Gs`, `@Gc`, `@Ge`); `None` for the others.
+    pub(super) fn view_module(
+        &mut self,
+        name: &str,
+        params: &[String],
+        has_params: bool,
+        n: usize,
+    ) -> Option<String> {
+        if ["+", "-", "&", "^", "/", "\\"].contains(&name) && !has_params {
+            self.bare_turn = true;
+            return None;
+        }
+        if self.flavour != Flavour::Cpfg {
+            return None;
+        }
+        // dialect: cpfg's module names
+        match name {
+            ";" | "," => {
+                self.colour = true;
+                let step = self.view.as_ref().and_then(|v| v.color_increment)?;
+                if has_params || step == 1.0 {
+                    return None;
+                }
+                let sign = if name == "," { -step } else { step };
+                Some(format!("'({})", number(sign)))
+            }
+            "@Gs" => Some(name_of(Meaning::Turtle(Command::StartSmooth)).to_string()),
+            // dialect: cpfg's end of a generalized cylinder
+            "@Ge" => Some(name_of(Meaning::Turtle(Command::EndSmooth)).to_string()),
+            // dialect: cpfg's control point
+            "@Gc" => {
+                let _ = params;
+                self.note_once(
+                    "control point",
+                    n,
+                    // dialect: cpfg's @Gc, Meristem's smooth axis
+                    "cpfg's @Gc marks a control point of a generalized cylinder; Meristem's smooth axis (@Gc … @Ge) passes through every point the turtle reaches, so it is dropped and the cylinder follows the segments rather than only the control points",
+                );
+                Some(String::new())
+            }
+            _ => None,
+        }
+    }
+
+    /// cpfg's `func(k, x)`: function k of the view file, as the `#curve`/`#table` it became.
+    pub(super) fn func(&self, args: &[String]) -> Result<String, String> {
+        let [k, x] = args else {
+            return Err("cpfg's func(…) takes a function's number and a value".into());
+        };
+        let Some(view) = &self.view else {
+            return Err(format!(
+                "cpfg's func({k}, …) reads function {k} of the object's view file (.v), which was not opened with this file (open the object's folder or .zip)"
+            ));
+        };
+        // With a function set (`.fset`), cpfg names each function: `func(BR_ANGLE, x)`.
+        let named = view
+            .functions
+            .iter()
+            .flatten()
+            .find(|f| f.source == k.trim() || f.name == k.trim());
+        if let Some(f) = named {
+            return Ok(format!("{}({x})", f.name));
+        }
+        let index = k
+            .trim()
+            .parse::<f64>()
+            .ok()
+            .filter(|v| v.fract() == 0.0 && *v >= 1.0)
+            .ok_or_else(|| format!("cpfg's func({k}, …) chooses its function by an expression; Meristem names each function, so it is not translated"))?;
+        match view.functions.get(index as usize - 1) {
+            Some(Some(f)) => Ok(format!("{}({x})", f.name)),
+            _ => Err(format!(
+                "cpfg's func({k}, …): the view file lists no function {k} that could be read"
+            )),
+        }
+    }
+}

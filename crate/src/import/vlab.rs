@@ -1,0 +1,573 @@
+//! A Virtual Laboratory object opened whole: the L-system (`plant.l`), its view file (`.v`: the
+//! angle increment, widths, colours, the function files), function files (`.func`, a function set
+//! `.fset`), and its colour map (`.map`) or materials (`.mat`). Which files belong together is read
+//! from the object's `specifications` (the `cpfg …` command line), else guessed from the names.
+//! An object without a `.l` but with an L-Py `.lpy` is imported as L-Py.
+
+use super::cpfg::{self, Flavour};
+use super::{number, Dialect, Import};
+use crate::model::{Curve, CurveKind};
+use crate::vocabulary::{function_named, DirectiveKind};
+
+/// One file of an object: its name (a path inside the folder or zip; only the last part counts)
+/// and its bytes.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ObjectFile {
+    pub name: String,
+    pub bytes: Vec<u8>,
+}
+
+/// What the view file and the colour files say, in Meristem's terms.
+#[derive(Clone, Debug, Default)]
+pub(super) struct View {
+    /// `angle factor: n` (360/n) or `angle increment: d`.
+    pub angle: Option<f64>,
+    pub width: Option<f64>,
+    pub width_step: Option<f64>,
+    pub color: Option<f64>,
+    pub color_increment: Option<f64>,
+    /// `tropism direction: x,y,z` and `initial elasticity: e` (or `tropism: T: x,y,z E: e`).
+    pub tropism: Option<[f64; 3]>,
+    pub elasticity: Option<f64>,
+    /// The functions `func(k, x)` reads, k from 1: each a name and the lines that define it.
+    pub functions: Vec<Option<CurveFunction>>,
+    /// `#color` lines from the colour map or materials.
+    pub palette: Vec<String>,
+    /// Notes about the view and colour files (line 0).
+    pub notes: Vec<String>,
+    /// The file names, for the header.
+    pub sources: Vec<String>,
+}
+
+/// A cpfg function as a Meristem `#curve` or `#table`.
+#[derive(Clone, Debug)]
+pub(super) struct CurveFunction {
+    /// The Meristem name, and the name the function file gives (what `func(NAME, x)` says).
+    pub name: String,
+    pub source: String,
+    pub lines: Vec<String>,
+}
+
+/// The last part of a path.
+fn base(name: &str) -> &str {
+    name.rsplit(['/', '\\']).next().unwrap_or(name)
+}
+
+/// The files of an object by base name (the shallowest when two share one).
+struct Files<'a> {
+    files: Vec<(&'a str, &'a [u8])>,
+}
+
+impl<'a> Files<'a> {
+    fn new(files: &'a [ObjectFile]) -> Self {
+        let mut sorted: Vec<&ObjectFile> = files.iter().collect();
+        sorted.sort_by_key(|f| f.name.matches(['/', '\\']).count());
+        let mut list: Vec<(&str, &[u8])> = Vec::new();
+        for f in sorted {
+            let b = base(&f.name);
+            if !b.is_empty() && !list.iter().any(|(n, _)| *n == b) {
+                list.push((b, &f.bytes));
+            }
+        }
+        Files { files: list }
+    }
+
+    fn get(&self, name: &str) -> Option<&'a [u8]> {
+        let name = base(name.trim());
+        self.files.iter().find(|(n, _)| *n == name).map(|(_, b)| *b)
+    }
+
+    fn text(&self, name: &str) -> Option<String> {
+        self.get(name)
+            .map(|b| String::from_utf8_lossy(b).into_owned())
+    }
+
+    /// The names ending with `.ext`, in order.
+    fn with(&self, ext: &str) -> Vec<&'a str> {
+        self.files
+            .iter()
+            .map(|(n, _)| *n)
+            .filter(|n| n.to_ascii_lowercase().ends_with(ext))
+            .collect()
+    }
+}
+
+/// The files cpfg is started with: from the `cpfg …` line of `specifications`.
+#[derive(Default, Debug)]
+struct Command {
+    lsystem: Option<String>,
+    view: Option<String>,
+    colormap: Option<String>,
+    materials: Option<String>,
+}
+
+fn command(specifications: &str) -> Option<Command> {
+    let line = specifications.lines().find(|l| {
+        let mut words = l.split_whitespace();
+        words.next() == Some("cpfg")
+    })?;
+    let words: Vec<&str> = line.split_whitespace().skip(1).collect();
+    let mut c = Command::default();
+    let mut i = 0;
+    while i < words.len() {
+        let w = words[i];
+        let next = words.get(i + 1).map(|s| s.to_string());
+        match w {
+            "-m" | "-m1" => {
+                c.colormap = next;
+                i += 1;
+            }
+            "-M" | "-M1" => {
+                c.materials = next;
+                i += 1;
+            }
+            "-w" | "-wp" | "-wr" => i += 2,
+            "-e" | "-m2" | "-m3" | "-M2" | "-M3" | "-a" | "-s" | "-str" | "-o" | "-g" => i += 1,
+            w if w.ends_with(".l") => c.lsystem = Some(w.to_string()),
+            w if w.ends_with(".v") => c.view = Some(w.to_string()),
+            _ => {}
+        }
+        i += 1;
+    }
+    Some(c)
+}
+
+/// The file among `names` with the stem `stem`, else the only one, else the first.
+fn pick<'a>(names: &[&'a str], stem: &str) -> Option<&'a str> {
+    names
+        .iter()
+        .find(|n| n.rsplit_once('.').map(|(s, _)| s) == Some(stem))
+        .or_else(|| names.first())
+        .copied()
+}
+
+/// Imports what was opened together (a folder's files, several files, a `.zip`): any `.zip`
+/// among them is unpacked, then the whole is imported as one object. A broken archive gives a
+/// note and nothing else. With the dialect read (`None` when nothing was).
+pub fn import_files(files: &[ObjectFile]) -> (Import, Option<Dialect>) {
+    let mut all = Vec::new();
+    for f in files {
+        if !f.name.to_ascii_lowercase().ends_with(".zip") {
+            all.push(f.clone());
+            continue;
+        }
+        match super::unzip(&f.bytes) {
+            Ok(inner) => all.extend(inner),
+            Err(why) => {
+                let mut import = Import::default();
+                import.notes.push(super::ImportNote {
+                    line: 0,
+                    message: format!("{}: {why}", base(&f.name)),
+                });
+                return (import, None);
+            }
+        }
+    }
+    let import = import_object(&all);
+    let dialect = (!import.is_empty()).then(|| object_dialect(&all)).flatten();
+    (import, dialect)
+}
+
+/// The dialect [`import_object`] reads the files in: cpfg when there is a `.l`, else L-Py's
+/// `.lpy`, else Lparser's `.ls`.
+fn object_dialect(files: &[ObjectFile]) -> Option<Dialect> {
+    let has = |ext: &str| {
+        files
+            .iter()
+            .any(|f| f.name.to_ascii_lowercase().ends_with(ext))
+    };
+    [
+        (".l", Dialect::Cpfg),
+        (".lpy", Dialect::Lpy),
+        (".ls", Dialect::Lparser),
+    ]
+    .into_iter()
+    .find(|(ext, _)| has(ext))
+    .map(|(_, d)| d)
+}
+
+/// Imports a vlab object (or any folder holding one L-system file).
+pub fn import_object(files: &[ObjectFile]) -> Import {
+    let all = Files::new(files);
+    let spec = all
+        .text("specifications")
+        .and_then(|s| command(&s))
+        .unwrap_or_default();
+    let ls = all.with(".l");
+    let lsystem = spec
+        .lsystem
+        .clone()
+        .filter(|l| all.get(l).is_some())
+        .or_else(|| {
+            ["plant.l", "lsystem.l"]
+                .iter()
+                .find(|n| all.get(n).is_some())
+                .map(|s| s.to_string())
+        })
+        .or_else(|| ls.first().map(|s| s.to_string()));
+    let Some(lsystem) = lsystem else {
+        return other_dialect(&all);
+    };
+    let stem = lsystem.trim_end_matches(".l").to_string();
+    let text = all.text(&lsystem).unwrap_or_default();
+    let views = all.with(".v");
+    let view_name = spec
+        .view
+        .clone()
+        .filter(|v| all.get(v).is_some())
+        .or_else(|| pick(&views, &stem).map(str::to_string));
+    let mut view = View::default();
+    view.sources.push(lsystem.clone());
+    match &view_name {
+        Some(name) => {
+            view.sources.push(name.clone());
+            read_view(&all.text(name).unwrap_or_default(), &all, &mut view);
+        }
+        None => view.notes.push(
+            "the object has no view file (.v): the angle increment, widths and colours are not known, so Meristem's defaults are used (90°, width 1, its palette)".into(),
+        ),
+    }
+    colours(&all, &spec, &stem, &mut view);
+    let include = |name: &str| all.text(name);
+    cpfg::import_with(&text, Flavour::Cpfg, Some(&view), &include)
+}
+
+/// A folder without a cpfg `.l`: its L-Py `.lpy`, Lparser `.ls` or Meristem `.lsys`.
+fn other_dialect(all: &Files) -> Import {
+    for (ext, dialect) in [(".lpy", Dialect::Lpy), (".ls", Dialect::Lparser)] {
+        if let Some(name) = all.with(ext).first() {
+            return super::import(&all.text(name).unwrap_or_default(), dialect);
+        }
+    }
+    let mut import = Import::default();
+    import.notes.push(super::ImportNote {
+        line: 0,
+        message: "no L-system file in what was opened: a vlab object has a .l file (cpfg), an L-Py model a .lpy file".into(),
+    });
+    import
+}
+
+/// Reads the view file's lines that shape the plant.
+fn read_view(text: &str, all: &Files, view: &mut View) {
+    for line in text.lines() {
+        let Some((key, value)) = line.split_once(':') else {
+            continue;
+        };
+        let key = key.trim().to_ascii_lowercase();
+        let first = value
+            .split_whitespace()
+            .next()
+            .and_then(|w| w.parse::<f64>().ok())
+            .filter(|v| v.is_finite());
+        match key.as_str() {
+            "angle factor" => view.angle = first.filter(|v| *v != 0.0).map(|v| 360.0 / v),
+            "angle increment" => view.angle = first,
+            "initial line width" => view.width = first,
+            "line width increment" => view.width_step = first,
+            "initial color" => view.color = first,
+            "color increment" => view.color_increment = first,
+            "tropism direction" => view.tropism = vector(value),
+            "initial elasticity" => view.elasticity = first,
+            "tropism" => {
+                // The newer form: `tropism: T: x,y,z E: e` (one tropism of several).
+                let (t, e) = value.split_once("E:").unwrap_or((value, ""));
+                view.tropism = vector(t.trim().trim_start_matches("T:"));
+                view.elasticity = e.split_whitespace().next().and_then(|w| w.parse().ok());
+            }
+            "elasticity increment" if first.is_some_and(|e| e != 0.0) => view.notes.push(format!(
+                "the view file's elasticity increment ({}) is not translated: Meristem's tropism keeps one susceptibility",
+                value.trim()
+            )),
+            "surface" => {
+                let mut words = value.split_whitespace();
+                let (name, file) = (words.next().unwrap_or(""), words.next().unwrap_or(""));
+                view.notes.push(format!(
+                    "the view file's surface {name} is read from {file}, which Meristem does not read: ~{name} draws Meristem's own {}",
+                    if name == "p" { "petal" } else { "leaf" }
+                ));
+            }
+            "function" => {
+                let mut words = value.split_whitespace();
+                let file = words.next().unwrap_or("").to_string();
+                let samples = words.next().and_then(|w| w.parse::<usize>().ok());
+                let function = all
+                    .text(&file)
+                    .and_then(|t| function(&t, samples, &file, view));
+                if function.is_none() {
+                    view.notes.push(format!(
+                        "the function file {file} could not be read: func({}, …) is not translated",
+                        view.functions.len() + 1
+                    ));
+                }
+                view.functions.push(function);
+            }
+            "function set" => {
+                let file = value.trim().to_string();
+                match all.text(&file) {
+                    Some(t) => function_set(&t, &file, view),
+                    None => view.notes.push(format!(
+                        "the function set {file} was not opened with the object: its functions are not translated"
+                    )),
+                }
+            }
+            _ => {}
+        }
+    }
+}
+
+/// Three numbers separated by commas or spaces.
+fn vector(text: &str) -> Option<[f64; 3]> {
+    let v: Vec<f64> = text
+        .split([',', ' ', '\t'])
+        .filter(|w| !w.is_empty())
+        .map(|w| w.parse::<f64>().ok().filter(|v| v.is_finite()))
+        .collect::<Option<_>>()?;
+    v.try_into().ok()
+}
+
+/// A `.fset`: `funcgalleryver 1 1`, `items: n`, then n functions of the `.func` format.
+fn function_set(text: &str, file: &str, view: &mut View) {
+    let starts: Vec<usize> = text
+        .match_indices("fver")
+        .map(|(i, _)| i)
+        .filter(|&i| i == 0 || text.as_bytes()[i - 1] == b'\n')
+        .collect();
+    for (k, &start) in starts.iter().enumerate() {
+        let end = starts.get(k + 1).copied().unwrap_or(text.len());
+        let f = function(&text[start..end], None, file, view);
+        view.functions.push(f);
+    }
+}
+
+/// One function file (`fver 1 1` with `name:`, `samples:`, `points:`, points `x y [multiplicity]`;
+/// or the old `range: … points: n`). cpfg reads a function through `samples` values of its spline
+/// joined by straight lines when samples > 2 (a `#table` of those values), else the spline itself
+/// (a `#curve`).
+fn function(text: &str, samples: Option<usize>, file: &str, view: &View) -> Option<CurveFunction> {
+    let mut name = base(file).trim_end_matches(".func").to_string();
+    let mut own_samples = None;
+    let mut numbers = Vec::new();
+    let mut reading = false;
+    for line in text.lines() {
+        let line = line.trim();
+        if let Some(v) = line.strip_prefix("name:") {
+            name = v.trim().to_string();
+        } else if let Some(v) = line.strip_prefix("samples:") {
+            own_samples = v.trim().parse::<usize>().ok();
+        } else if line.starts_with("points:") {
+            reading = true;
+        } else if reading {
+            let values: Vec<f64> = line
+                .split_whitespace()
+                .filter_map(|w| w.parse().ok())
+                .collect();
+            if let [x, y, rest @ ..] = values.as_slice() {
+                let times = rest.first().map_or(1, |m| (*m as usize).clamp(1, 16));
+                for _ in 0..times {
+                    numbers.extend([*x, *y]);
+                }
+            }
+        }
+    }
+    // fver 1.1 files carry their own sample count; the old format takes the view file's.
+    let samples = if text.starts_with("fver") {
+        own_samples
+    } else {
+        samples
+    }
+    .unwrap_or(0);
+    let curve = Curve::new(CurveKind::Spline, &numbers).ok()?;
+    let source = name.clone();
+    let name = identifier(&name, view);
+    let points: Vec<String> = numbers.iter().map(|v| number(*v)).collect();
+    let mut lines = Vec::new();
+    if samples > 2 {
+        let samples = samples.min(1000);
+        let values: Vec<String> = (0..samples)
+            .map(|i| {
+                let x = i as f64 / (samples - 1) as f64;
+                format!("{} {}", number(x), short(curve.value(x)))
+            })
+            .collect();
+        lines.push(format!(
+            "// {name}: the function of {file}, control points {}; cpfg reads it through {samples} samples, as here",
+            points.join(" ")
+        ));
+        lines.push(format!(
+            "{} {name} {}",
+            DirectiveKind::Table.written(),
+            values.join(" ")
+        ));
+    } else {
+        lines.push(format!("// {name}: the function of {file}"));
+        lines.push(format!(
+            "{} {name} {}",
+            DirectiveKind::Curve.written(),
+            points.join(" ")
+        ));
+    }
+    Some(CurveFunction {
+        name,
+        source,
+        lines,
+    })
+}
+
+/// A value with 7 significant digits (cpfg's floats).
+fn short(v: f64) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return "0".into();
+    }
+    let digits = (6 - v.abs().log10().floor() as i32).clamp(0, 12) as usize;
+    let text = format!("{v:.digits$}");
+    let text = if text.contains('.') {
+        text.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        text
+    };
+    if text == "-0" {
+        "0".into()
+    } else {
+        text
+    }
+}
+
+/// A Meristem name for a function: letters, digits and `_`, not a built-in function's nor one
+/// already taken.
+fn identifier(name: &str, view: &View) -> String {
+    let mut id: String = name
+        .chars()
+        .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
+        .collect();
+    if !id.starts_with(|c: char| c.is_ascii_alphabetic()) {
+        id.insert_str(0, "f_");
+    }
+    let taken = |id: &str| {
+        function_named(id).is_some()
+            || id == "func"
+            || view.functions.iter().flatten().any(|f| f.name == id)
+    };
+    while taken(&id) {
+        id.push_str("_f");
+    }
+    id
+}
+
+/// The colour map (`.map`: 256 × red, green, blue bytes) or materials (`.mat`: records of an
+/// index and 14 bytes: transparency, ambient, diffuse, emissive, specular, shininess) as `#color`
+/// ramps.
+fn colours(all: &Files, spec: &Command, stem: &str, view: &mut View) {
+    let maps = all.with(".map");
+    let mats = all.with(".mat");
+    let (map, mat) = if spec.colormap.is_some() || spec.materials.is_some() {
+        (spec.colormap.clone(), spec.materials.clone())
+    } else {
+        (
+            pick(&maps, stem).map(str::to_string),
+            pick(&mats, stem).map(str::to_string),
+        )
+    };
+    let mut entries: Vec<Option<[u8; 3]>> = vec![None; 256];
+    if let Some(bytes) = map.as_deref().and_then(|m| all.get(m)) {
+        for (i, rgb) in bytes.chunks_exact(3).take(256).enumerate() {
+            entries[i] = Some([rgb[0], rgb[1], rgb[2]]);
+        }
+        view.sources.push(map.clone().unwrap_or_default());
+    } else if let Some(bytes) = mat.as_deref().and_then(|m| all.get(m)) {
+        for record in bytes.chunks_exact(15) {
+            entries[record[0] as usize] = Some([record[5], record[6], record[7]]);
+        }
+        view.sources.push(mat.clone().unwrap_or_default());
+        view.notes.push(format!(
+            "the materials of {} become their diffuse colours: their ambient, emissive and specular light, shininess and transparency are not kept",
+            mat.clone().unwrap_or_default()
+        ));
+    } else {
+        view.notes.push(
+            "the object has no colour map (.map) or materials (.mat): Meristem's palette is used"
+                .into(),
+        );
+        return;
+    }
+    view.palette = ramps(&entries);
+}
+
+/// `#color` lines for the entries: runs that change linearly become one ramp.
+fn ramps(entries: &[Option<[u8; 3]>]) -> Vec<String> {
+    let color = DirectiveKind::Color.written();
+    let mut lines = Vec::new();
+    let mut i = 0;
+    while i < entries.len() {
+        let Some(a) = entries[i] else {
+            i += 1;
+            continue;
+        };
+        // The longest run from i whose entries lie on the line from a to its last entry.
+        let mut end = i;
+        for j in i + 1..entries.len() {
+            let Some(b) = entries[j] else { break };
+            let linear = (i + 1..j).all(|k| {
+                entries[k].is_some_and(|c| {
+                    (0..3).all(|ch| {
+                        let t = (k - i) as f64 / (j - i) as f64;
+                        let v = a[ch] as f64 + (b[ch] as f64 - a[ch] as f64) * t;
+                        (c[ch] as f64 - v).abs() <= 1.0
+                    })
+                })
+            });
+            if !linear {
+                break;
+            }
+            end = j;
+        }
+        if end > i + 1 {
+            let b = entries[end].unwrap_or(a);
+            lines.push(format!(
+                "{color} {i} {end} {} {} {} {} {} {}",
+                a[0], a[1], a[2], b[0], b[1], b[2]
+            ));
+            i = end + 1;
+        } else {
+            lines.push(format!("{color} {i} {} {} {}", a[0], a[1], a[2]));
+            i += 1;
+        }
+    }
+    lines
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_cpfg_command_line_names_the_files() {
+        let c = command(
+            "model:\n\tgenerate:\n\t\tcpfg -M material.mat -w 300 500 leaf.l leaf.v leaf.a\n",
+        )
+        .expect("command");
+        assert_eq!(c.lsystem.as_deref(), Some("leaf.l"));
+        assert_eq!(c.view.as_deref(), Some("leaf.v"));
+        assert_eq!(c.materials.as_deref(), Some("material.mat"));
+        assert_eq!(c.colormap, None);
+    }
+
+    #[test]
+    fn a_linear_colour_map_is_one_ramp() {
+        let entries: Vec<Option<[u8; 3]>> = (0..256)
+            .map(|i| Some([i as u8, 0, (255 - i) as u8]))
+            .collect();
+        assert_eq!(ramps(&entries), ["#color 0 255 0 0 255 255 0 0"]);
+        let mut two = vec![None; 256];
+        two[3] = Some([1, 2, 3]);
+        two[4] = Some([9, 9, 9]);
+        assert_eq!(ramps(&two), ["#color 3 1 2 3", "#color 4 9 9 9"]);
+    }
+
+    #[test]
+    fn short_numbers_keep_seven_digits() {
+        assert_eq!(short(0.0045550001), "0.004555");
+        assert_eq!(short(1.0031760), "1.003176");
+        assert_eq!(short(-0.0), "0");
+        assert_eq!(short(123456.789), "123456.8");
+    }
+}

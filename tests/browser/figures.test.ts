@@ -1,0 +1,127 @@
+// End-to-end: figures as in the book. Plants drawn in one plane show as lines of constant width
+// (the Lines mode, a toggle in the view toolbar with a width in pixels), 3D plants as tubes;
+// highlighting and picking work on lines. Screenshots land in test-results/.
+import { readFileSync, writeFileSync } from 'node:fs';
+import type { Browser, Page } from 'playwright-core';
+import { chromium } from 'playwright-core';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { backgroundColour, changedShare, decodePng, foregroundShare, strokeWidth } from './pictures';
+import { RESULTS, canvasPicture, example, generation, nextBuild, openStudio, type StudioPage } from './studio-page';
+
+let browser: Browser;
+let studio: StudioPage;
+let page: Page;
+
+/** Replaces the grammar as a paste would and frames the new plant. */
+async function paste(source: string): Promise<void> {
+  const before = await generation(page);
+  await page.getByTestId('editor').locator('.cm-content').click();
+  await page.keyboard.press('Control+A');
+  await page.keyboard.insertText(source);
+  expect(await nextBuild(page, before)).toBe('ok');
+  await page.getByTestId('frame').click();
+}
+
+function renderMode(): Promise<string | null> {
+  return page.getByTestId('viewport').getAttribute('data-render');
+}
+
+beforeAll(async () => {
+  browser = await chromium.launch({ executablePath: '/usr/bin/chromium' });
+  studio = await openStudio(browser);
+  page = studio.page;
+});
+
+afterAll(async () => {
+  await browser?.close();
+});
+
+describe('the Lines mode', () => {
+  it('is the default for flat plants, tubes for 3D ones, and the toolbar toggle switches them', async () => {
+    const toggle = page.getByRole('toolbar', { name: 'View' }).getByRole('button', { name: 'Lines' });
+    await paste(example('abop-1.24a.lsys'));
+    expect(await renderMode()).toBe('lines');
+    expect(await toggle.getAttribute('aria-pressed')).toBe('true');
+    const lines = await canvasPicture(page, 'figures-1.24a-lines.png');
+    await toggle.click();
+    await expect.poll(renderMode).toBe('tubes');
+    expect(await toggle.getAttribute('aria-pressed')).toBe('false');
+    const tubes = await canvasPicture(page, 'figures-1.24a-tubes.png');
+    expect(changedShare(lines, tubes), 'the tubes replace the lines').toBeGreaterThan(0.005);
+    await toggle.click();
+    await expect.poll(renderMode).toBe('lines');
+    // A 3D plant, on a page where the choice is still automatic, is drawn as tubes.
+    const fresh = await openStudio(browser);
+    await fresh.page.getByTestId('editor').locator('.cm-content').click();
+    const before = await generation(fresh.page);
+    await fresh.page.keyboard.press('Control+A');
+    await fresh.page.keyboard.insertText(example('abop-1.25-bush.lsys'));
+    expect(await nextBuild(fresh.page, before)).toBe('ok');
+    expect(await fresh.page.getByTestId('viewport').getAttribute('data-render')).toBe('tubes');
+    expect(fresh.problems).toEqual([]);
+    await fresh.page.close();
+    expect(studio.problems).toEqual([]);
+  });
+
+  it('draws every line with the width chosen, in pixels', async () => {
+    await page.getByTestId('grid').click(); // a plain background
+    await paste('#angle 35\naxiom: F[+F][-F]F[++F]\n');
+    for (const width of [2, 6, 12]) {
+      await page.getByTestId('lines-menu').locator('summary').click();
+      await page.getByTestId('line-width').fill(String(width));
+      await page.getByTestId('line-width').press('Enter');
+      await page.getByTestId('lines-menu').locator('summary').click();
+      const picture = await canvasPicture(page, `figures-width-${width}.png`);
+      const scale = picture.width / (await page.locator('[data-testid=viewport] canvas').boundingBox())!.width;
+      const measured = strokeWidth(picture) / scale;
+      expect(Math.abs(measured - width), `width ${width}: measured ${measured}`).toBeLessThanOrEqual(1);
+    }
+    // A width out of range is refused and the field shows the one in force.
+    await page.getByTestId('lines-menu').locator('summary').click();
+    await page.getByTestId('line-width').fill('500');
+    await page.getByTestId('line-width').press('Enter');
+    expect(await page.getByTestId('line-width').inputValue()).toBe('12');
+    await page.getByTestId('line-width').fill('2');
+    await page.getByTestId('line-width').press('Enter');
+    await page.getByTestId('lines-menu').locator('summary').click();
+    await page.getByTestId('grid').click();
+    expect(studio.problems).toEqual([]);
+  });
+});
+
+describe('pictures for print', () => {
+  it('downloads ABOP 1.24a at 300 DPI on A5: white, no grid, lines of the width chosen', async () => {
+    await paste(example('abop-1.24a.lsys') + '\n');
+    expect(await renderMode()).toBe('lines');
+    const menu = page.getByTestId('downloads');
+    if (!(await menu.evaluate((m) => (m as HTMLDetailsElement).open))) await menu.locator('summary').click();
+    await page.getByTestId('png-dpi').selectOption('300');
+    await page.getByTestId('png-paper').selectOption('a5-portrait');
+    expect([await page.getByTestId('png-width').inputValue(), await page.getByTestId('png-height').inputValue()]).toEqual(['1748', '2480']);
+    await page.getByTestId('png-background').selectOption('white');
+    await page.getByTestId('png-line-width').fill('5');
+    const [download] = await Promise.all([page.waitForEvent('download'), page.getByTestId('download-png').click()]);
+    const bytes = readFileSync((await download.path())!);
+    writeFileSync(new URL('figures-1.24a-300dpi.png', RESULTS), bytes);
+    const picture = decodePng(bytes);
+    expect([picture.width, picture.height]).toEqual([1748, 2480]);
+    // 300 DPI recorded: 11811 pixels per metre.
+    const phys = bytes.indexOf('pHYs');
+    expect([bytes.readUInt32BE(phys + 4), bytes.readUInt32BE(phys + 8), bytes[phys + 12]]).toEqual([11811, 11811, 1]);
+    expect(backgroundColour(picture), 'a white background').toEqual([255, 255, 255]);
+    // No grid: every pixel is white or the plant's brown (antialiased towards white).
+    const [r, g, b] = [...picture.data.subarray(0, 4)];
+    expect([r, g, b]).toEqual([255, 255, 255]);
+    let grey = 0;
+    for (let i = 0; i < picture.data.length; i += 4) {
+      const [pr, pg, pb] = [picture.data[i], picture.data[i + 1], picture.data[i + 2]];
+      if (pr < 255 && Math.abs(pr - pg) < 4 && Math.abs(pg - pb) < 4) grey++; // grid lines are grey
+    }
+    expect(grey / (picture.width * picture.height), 'no grey grid lines').toBeLessThan(0.001);
+    expect(foregroundShare(picture)).toBeGreaterThan(0.005);
+    const measured = strokeWidth(picture);
+    expect(Math.abs(measured - 5), `stroke width measured ${measured}`).toBeLessThanOrEqual(1);
+    await expect.poll(() => page.getByTestId('export-status').textContent()).toMatch(/ · 1748 × 2480 at 300 DPI · /);
+    expect(studio.problems).toEqual([]);
+  });
+});
