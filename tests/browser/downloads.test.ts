@@ -174,7 +174,8 @@ describe('the Download menu', () => {
     await page.keyboard.press('Escape');
     expect(await isOpen()).toBe(false);
     await openMenu();
-    await page.getByTestId('viewport').click({ position: { x: 40, y: 400 } });
+    const view = (await page.getByTestId('viewport').boundingBox())!;
+    await page.getByTestId('viewport').click({ position: { x: 40, y: view.height / 2 } });
     expect(await isOpen()).toBe(false);
     expect(problems).toEqual([]);
   });
