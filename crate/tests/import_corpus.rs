@@ -7,6 +7,8 @@
 //! The sizes are those of a reference run of this translation (two checked against the source:
 //! SOURCES.md says which); neither cpfg nor L-Py runs on this machine, so the others
 //! guard the translation against regressions rather than prove it equal to the source tool's.
+//! Native only: it reads the corpus from disk, and proptest is not a wasm32 dependency.
+#![cfg(not(target_arch = "wasm32"))]
 
 use meristem::import::{self, Dialect, Import, ObjectFile};
 use meristem::pipeline::{build, BuildOptions};

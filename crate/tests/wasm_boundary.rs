@@ -98,7 +98,7 @@ mod wasm {
     #[wasm_bindgen_test]
     fn the_wasm_core_builds_the_expected_plants_through_its_boundary() {
         for ((name, source, iterations, seed), expected) in PLANTS.iter().zip(EXPECTED) {
-            let b = build(source, &options(*iterations, *seed), None)
+            let b = build(source, &options(*iterations, *seed), None, None)
                 .unwrap_or_else(|_| panic!("{name}: build threw"));
             assert!(b.ok(), "{name}: {}", b.diagnostics());
             let positions = b.positions().to_vec();
@@ -114,8 +114,8 @@ mod wasm {
     #[wasm_bindgen_test]
     fn bad_options_and_bad_grammars_come_back_as_errors_not_crashes() {
         let not_options: BuildOptionsObject = JsValue::from_str("seven").unchecked_into();
-        assert!(build("axiom: F", &not_options, None).is_err());
-        let b = build("axiom: F\nF -> F[", &options(3, 1), None).unwrap();
+        assert!(build("axiom: F", &not_options, None, None).is_err());
+        let b = build("axiom: F\nF -> F[", &options(3, 1), None, None).unwrap();
         assert!(!b.ok());
         assert!(b.diagnostics().contains("error"), "{}", b.diagnostics());
     }
