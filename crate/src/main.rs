@@ -8,6 +8,8 @@
 //! meristem check FILE                               diagnostics as FILE:LINE:COL: severity: message
 //! meristem export FILE -o OUT.EXT [--format EXT] [--iterations N] [--seed S] [--sides N] [--smooth-all]
 //!                 [--edits EDITS.json]              the model as OUT.wrl, .glb, .pov, .obj (+ .mtl), .iv or .svg
+//!                 [--background C] [--line-width PX] [--size WxH] [--dpi D]
+//!                                                   an SVG's picture settings (the studio's)
 //! meristem import FILE [--from D] [-o OUT.lsys]      another dialect translated; notes on stderr
 //!                                                   (FILE may be a vlab object's folder or .zip)
 //! meristem help [modules|directives]                the language's modules or directives, from
@@ -19,7 +21,7 @@
 
 use meristem::branches::{parse_edits, BranchEdit, EditReport};
 use meristem::diagnostics::{locate_all, LocatedDiagnostic, Severity};
-use meristem::export::{self, Format};
+use meristem::export::{self, svg, Format};
 use meristem::import::{self, Dialect};
 use meristem::mesh::MeshOptions;
 use meristem::pipeline::{
@@ -34,11 +36,15 @@ const USAGE: &str = "usage:
   meristem derive FILE [--iterations N] [--seed S] [--stats | --growth] [--time] [--edits EDITS.json]
   meristem check FILE
   meristem export FILE -o OUT.EXT [--format EXT] [--iterations N] [--seed S] [--sides N] [--smooth-all]
-                  [--edits EDITS.json]
+                  [--edits EDITS.json] [--background C] [--line-width PX] [--size WxH] [--dpi D]
       EXT: wrl (VRML 2.0), glb (glTF 2.0), pov (POV-Ray 3.7), obj (OBJ, writes OUT.mtl too),
            iv (OpenInventor 2.1), svg (SVG); --format overrides the extension
       --sides N (3 to 64, default 6) and --smooth-all are the studio's view options
       --edits EDITS.json: branch edits made in the studio (its edits document), applied first
+      SVG only, the studio's picture settings:
+      --background white|none|#rrggbb (default none: transparent), --line-width PX (0.5 to 60:
+      every line this wide in the picture's pixels, the Lines mode), --size WxH (16 to 8192
+      pixels), --dpi D (10 to 2400: width and height in millimetres, e.g. 1748x2480 at 300 is A5)
   meristem import FILE [--from green|lparser|cpfg|lpy] [-o OUT.lsys]
       FILE may be a vlab object's folder or .zip: its .l with its view file, functions and colours
   meristem help [modules|directives]     the language's modules and directives
@@ -58,6 +64,10 @@ struct Args {
     sides: Option<u32>,
     smooth_all: bool,
     edits: Option<PathBuf>,
+    background: Option<String>,
+    line_width: Option<f64>,
+    size: Option<String>,
+    dpi: Option<f64>,
 }
 
 fn parse_args() -> Result<Args, lexopt::Error> {
@@ -76,6 +86,10 @@ fn parse_args() -> Result<Args, lexopt::Error> {
     let mut sides = None;
     let mut smooth_all = false;
     let mut edits = None;
+    let mut background = None;
+    let mut line_width = None;
+    let mut size = None;
+    let mut dpi = None;
     while let Some(arg) = parser.next()? {
         match arg {
             Long("iterations") | Short('n') => iterations = Some(parser.value()?.parse()?),
@@ -89,6 +103,10 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             Long("sides") => sides = Some(parser.value()?.parse()?),
             Long("smooth-all") => smooth_all = true,
             Long("edits") => edits = Some(PathBuf::from(parser.value()?)),
+            Long("background") => background = Some(parser.value()?.string()?),
+            Long("line-width") => line_width = Some(parser.value()?.parse()?),
+            Long("size") => size = Some(parser.value()?.string()?),
+            Long("dpi") => dpi = Some(parser.value()?.parse()?),
             Long("version") | Short('V') => {
                 println!("meristem {}", env!("CARGO_PKG_VERSION"));
                 std::process::exit(0);
@@ -122,12 +140,61 @@ fn parse_args() -> Result<Args, lexopt::Error> {
         sides,
         smooth_all,
         edits,
+        background,
+        line_width,
+        size,
+        dpi,
     })
+}
+
+/// An SVG's picture settings from `--background`, `--line-width`, `--size` and `--dpi`, checked;
+/// refused for the other formats.
+fn svg_look(args: &Args, format: Format) -> Result<svg::Look, String> {
+    let given = args.background.is_some()
+        || args.line_width.is_some()
+        || args.size.is_some()
+        || args.dpi.is_some();
+    if given && format != Format::Svg {
+        return Err(format!(
+            "--background, --line-width, --size and --dpi are an SVG's picture settings, not {}'s",
+            format.extension()
+        ));
+    }
+    let background = match &args.background {
+        Some(text) => svg::Look::parse_background(text)?,
+        None => None,
+    };
+    let size = match &args.size {
+        Some(text) => {
+            let parsed = text
+                .split_once(['x', 'X', '×'])
+                .and_then(|(w, h)| Some((w.trim().parse().ok()?, h.trim().parse().ok()?)));
+            Some(
+                parsed
+                    .ok_or_else(|| format!("--size takes WIDTHxHEIGHT in pixels, not '{text}'"))?,
+            )
+        }
+        None => None,
+    };
+    svg::Look {
+        background,
+        line_width: args.line_width,
+        size,
+        dpi: args.dpi,
+    }
+    .checked()
+}
+
+/// Where `export` writes, in which format, and an SVG's look.
+struct ExportTarget {
+    output: PathBuf,
+    format: Format,
+    look: svg::Look,
 }
 
 /// Where `export` writes and in which format: `-o` is required; the format is `--format`, else
 /// the output's extension.
-fn export_target(args: &Args) -> Result<(PathBuf, Format), String> {
+fn export_target(args: &Args) -> Result<ExportTarget, String> {
     let output = args
         .output
         .clone()
@@ -153,7 +220,12 @@ fn export_target(args: &Args) -> Result<(PathBuf, Format), String> {
             Format::names()
         )
     })?;
-    Ok((output, format))
+    let look = svg_look(args, format)?;
+    Ok(ExportTarget {
+        output,
+        format,
+        look,
+    })
 }
 
 /// Writes the files of an export: the first at `output`, any others (OBJ's MTL) beside it with
@@ -243,9 +315,7 @@ fn main() -> ExitCode {
         mesh: MeshOptions::view(args.sides, Some(args.smooth_all)),
     };
     match export_target {
-        Some((output, format)) => {
-            export_file(&args, &source, options, edits, &output, format, &mut hooks)
-        }
+        Some(target) => export_file(&args, &source, options, edits, target, &mut hooks),
         None => derive_or_check(&args, &source, &options, edits, &mut hooks),
     }
 }
@@ -364,10 +434,14 @@ fn export_file(
     source: &str,
     build: BuildOptions,
     edits: Option<Vec<BranchEdit>>,
-    output: &Path,
-    format: Format,
+    target: ExportTarget,
     hooks: &mut Hooks,
 ) -> ExitCode {
+    let ExportTarget {
+        output,
+        format,
+        look,
+    } = target;
     // The stem names the MTL file inside the OBJ, so it is the output's own stem.
     let stem = output
         .file_stem()
@@ -378,6 +452,7 @@ fn export_file(
         format,
         stem,
         edits,
+        look,
     };
     let exported = match pipeline::export(source, &options, hooks) {
         Ok(exported) => exported,
@@ -392,7 +467,7 @@ fn export_file(
     if let Some(report) = &exported.edits {
         print_edit_report(args, report);
     }
-    match write_export(output, &exported.files) {
+    match write_export(&output, &exported.files) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("meristem: {e}");

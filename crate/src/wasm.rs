@@ -48,6 +48,20 @@ export interface ExportOptions extends BuildOptions {
   name?: string;
   /** An edits document (JSON text) to apply first. */
   edits?: string;
+  /** An SVG's picture settings (refused for the other formats). */
+  svg?: SvgLook;
+}
+/** An SVG's picture settings: the CLI's `--background`, `--line-width`, `--size` and `--dpi`. */
+export interface SvgLook {
+  /** `white`, `none` (transparent, the default) or `#rrggbb`. */
+  background?: string;
+  /** Every line this wide in the picture's pixels, 0.5 to 60 (the Lines mode). */
+  lineWidth?: number;
+  /** The picture's width and height in pixels, 16 to 8192 (both or neither). */
+  width?: number;
+  height?: number;
+  /** Dots per inch, 10 to 2400: the width and height are then written in millimetres. */
+  dpi?: number;
 }
 "#;
 
@@ -84,6 +98,42 @@ struct ExportOptionsFields {
     format: String,
     name: Option<String>,
     edits: Option<String>,
+    svg: Option<SvgLookFields>,
+}
+
+/// An `SvgLook` as read.
+#[cfg(feature = "io")]
+#[derive(Deserialize)]
+#[serde(rename_all = "camelCase")]
+struct SvgLookFields {
+    background: Option<String>,
+    line_width: Option<f64>,
+    width: Option<u32>,
+    height: Option<u32>,
+    dpi: Option<f64>,
+}
+
+#[cfg(feature = "io")]
+impl SvgLookFields {
+    /// The look, checked.
+    fn look(&self) -> Result<export::svg::Look, String> {
+        let background = match &self.background {
+            Some(text) => export::svg::Look::parse_background(text)?,
+            None => None,
+        };
+        let size = match (self.width, self.height) {
+            (Some(w), Some(h)) => Some((w, h)),
+            (None, None) => None,
+            _ => return Err("an SVG's size needs both its width and its height".into()),
+        };
+        export::svg::Look {
+            background,
+            line_width: self.line_width,
+            size,
+            dpi: self.dpi,
+        }
+        .checked()
+    }
 }
 
 impl BuildOptionsFields {
@@ -265,12 +315,20 @@ pub fn export_model(
         .map(parse_edits)
         .transpose()
         .map_err(|e| JsError::new(&e))?;
+    let look = match &fields.svg {
+        Some(_) if format != Format::Svg => {
+            return Err(JsError::new("picture settings are for an SVG only"))
+        }
+        Some(svg) => svg.look().map_err(|e| JsError::new(&e))?,
+        None => export::svg::Look::default(),
+    };
     let stem = fields.name.unwrap_or_else(|| "plant".into());
     let options = pipeline::ExportOptions {
         build: fields.build.options(),
         format,
         stem: stem.clone(),
         edits,
+        look,
     };
     let mut tell = |p: Progress| {
         // Stage starts only: an export's progress is its stages.

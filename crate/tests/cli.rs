@@ -333,3 +333,65 @@ fn export_refuses_unknown_formats_and_reports_grammar_errors() {
     assert!(!out.exists(), "no file for a grammar with errors");
     std::fs::remove_dir_all(dir).ok();
 }
+
+#[test]
+fn export_takes_an_svgs_look_and_refuses_it_for_other_formats() {
+    let dir = temp_dir("export-look");
+    let source = example("abop-1.24a.lsys");
+    let out = dir.join("figure.svg");
+    let out = out.to_str().expect("UTF-8 path");
+    let (code, _, err) = meristem(&[
+        "export",
+        &source,
+        "-o",
+        out,
+        "-n",
+        "2",
+        "--background",
+        "white",
+        "--line-width",
+        "5",
+        "--size",
+        "1748x2480",
+        "--dpi",
+        "300",
+    ]);
+    assert_eq!((code, err.as_str()), (0, ""));
+    let svg = std::fs::read_to_string(out).expect("written");
+    assert!(
+        svg.contains(" width=\"148mm\" height=\"209.97mm\""),
+        "{svg}"
+    );
+    assert!(svg.contains(" fill=\"#ffffff\"/>"), "{svg}");
+    // Out of range, malformed, or for a format that has no look: exit 2 with the reason.
+    for (args, reason) in [
+        (
+            &["--line-width", "0"][..],
+            "line width must be from 0.5 to 60",
+        ),
+        (&["--size", "100"], "--size takes WIDTHxHEIGHT"),
+        (&["--size", "9000x100"], "from 16 to 8192 pixels"),
+        (&["--dpi", "0"], "DPI must be from 10 to 2400"),
+        (&["--background", "red"], "unknown background 'red'"),
+    ] {
+        let (code, _, err) = meristem(&[&["export", &source, "-o", out][..], args].concat());
+        assert_eq!(code, 2, "{args:?}");
+        assert!(err.contains(reason), "{args:?}: {err}");
+    }
+    let glb = dir.join("plant.glb");
+    let (code, _, err) = meristem(&[
+        "export",
+        &source,
+        "-o",
+        glb.to_str().expect("UTF-8 path"),
+        "--background",
+        "white",
+    ]);
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("an SVG's picture settings, not glb's"),
+        "{err}"
+    );
+    assert!(!glb.exists());
+    std::fs::remove_dir_all(dir).ok();
+}

@@ -94,6 +94,17 @@ pub fn export(
     skeleton: &Skeleton,
     stem: &str,
 ) -> Vec<ExportedFile> {
+    export_with(format, mesh, skeleton, stem, &svg::Look::default())
+}
+
+/// [`export`], an SVG drawn in `look` (the other formats have no look).
+pub fn export_with(
+    format: Format,
+    mesh: &MeshBuffers,
+    skeleton: &Skeleton,
+    stem: &str,
+    look: &svg::Look,
+) -> Vec<ExportedFile> {
     let scene = Scene::new(mesh, skeleton);
     let file = |extension: &str, bytes: Vec<u8>, mime: &'static str| ExportedFile {
         name: format!("{stem}.{extension}"),
@@ -139,7 +150,7 @@ pub fn export(
         )],
         Format::Svg => vec![file(
             "svg",
-            svg::write(mesh, skeleton).into_bytes(),
+            svg::write_with(mesh, skeleton, look).into_bytes(),
             "image/svg+xml",
         )],
     }

@@ -7,6 +7,12 @@
 //! it (by module), so later shapes cover earlier ones. The `viewBox` fits the drawing with a 2 %
 //! margin; the picture is 800 px on its longer side. Zero-width segments are not drawn, as in
 //! the mesh.
+//!
+//! A [`Look`] sets the picture as the studio's Picture settings do for a PNG: a background (a
+//! rectangle over the whole picture; none by default, so the drawing is transparent), lines of
+//! one width in the picture's pixels (the Lines mode) instead of the model's widths, the
+//! picture's size in pixels (the drawing centred in it with the same margin), and a DPI that
+//! gives the size in millimetres, so a 1748 × 2480 picture at 300 DPI prints as A5.
 
 use super::scene::{decimals_for, number, srgb};
 use crate::mesh::{polygon, surfaces, MeshBuffers};
@@ -16,6 +22,143 @@ use std::fmt::Write;
 
 /// Longer side of the picture, in CSS pixels.
 const PICTURE_SIZE: f64 = 800.0;
+
+/// How the picture looks: the studio's Picture settings. The default is the plain drawing.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Look {
+    /// The background's sRGB colour; `None` leaves the picture transparent.
+    pub background: Option<[u8; 3]>,
+    /// Every segment this wide, in pixels of the picture (the Lines mode); `None`: the model's
+    /// widths.
+    pub line_width: Option<f64>,
+    /// The picture's width and height in pixels; `None`: 800 on the drawing's longer side.
+    pub size: Option<(u32, u32)>,
+    /// Dots per inch: the picture's `width` and `height` are then in millimetres.
+    pub dpi: Option<f64>,
+}
+
+impl Look {
+    /// The ranges the studio's Picture settings allow.
+    pub const LINE_WIDTH: (f64, f64) = (0.5, 60.0);
+    pub const SIDE: (u32, u32) = (16, 8192);
+    pub const DPI: (f64, f64) = (10.0, 2400.0);
+
+    /// The look, or a message naming the value out of range.
+    pub fn checked(self) -> Result<Look, String> {
+        let within = |v: f64, (lo, hi): (f64, f64)| v.is_finite() && v >= lo && v <= hi;
+        if let Some(w) = self.line_width {
+            if !within(w, Self::LINE_WIDTH) {
+                return Err(format!(
+                    "the line width must be from {} to {} pixels, not {w}",
+                    Self::LINE_WIDTH.0,
+                    Self::LINE_WIDTH.1
+                ));
+            }
+        }
+        if let Some((w, h)) = self.size {
+            let (lo, hi) = Self::SIDE;
+            if !(lo..=hi).contains(&w) || !(lo..=hi).contains(&h) {
+                return Err(format!(
+                    "the picture's width and height must be from {lo} to {hi} pixels, not {w} × {h}"
+                ));
+            }
+        }
+        if let Some(dpi) = self.dpi {
+            if !within(dpi, Self::DPI) {
+                return Err(format!(
+                    "the DPI must be from {} to {}, not {dpi}",
+                    Self::DPI.0,
+                    Self::DPI.1
+                ));
+            }
+        }
+        Ok(self)
+    }
+
+    /// A background by name: `#rrggbb`, `white`, or `none` / `transparent` (no background).
+    pub fn parse_background(text: &str) -> Result<Option<[u8; 3]>, String> {
+        let text = text.trim();
+        match text.to_ascii_lowercase().as_str() {
+            "none" | "transparent" => return Ok(None),
+            "white" => return Ok(Some([255; 3])),
+            _ => {}
+        }
+        let hex = text
+            .strip_prefix('#')
+            .filter(|h| h.len() == 6 && h.is_ascii());
+        let channel =
+            |k: usize| hex.and_then(|h| u8::from_str_radix(&h[2 * k..2 * k + 2], 16).ok());
+        match (channel(0), channel(1), channel(2)) {
+            (Some(r), Some(g), Some(b)) => Ok(Some([r, g, b])),
+            _ => Err(format!(
+                "unknown background '{text}'; give #rrggbb, white, or none"
+            )),
+        }
+    }
+}
+
+/// Where the drawing sits: the `viewBox` (model units, y down) and the `width` and `height`
+/// attributes.
+struct Frame {
+    min: DVec2,
+    size: DVec2,
+    width: String,
+    height: String,
+    /// A segment's stroke in model units when the look fixes it in pixels.
+    line_width: Option<f64>,
+}
+
+impl Frame {
+    /// The frame of `shapes` in `look`; with a line width in pixels, the lines' own widths are
+    /// left out of the extent (their stroke is added as pixels).
+    fn new(shapes: &[Shape], look: &Look) -> Frame {
+        let (min, max) =
+            extent_of(shapes, look.line_width.is_none()).unwrap_or((DVec2::ZERO, DVec2::ONE));
+        let content = (max - min).max(DVec2::splat(1e-9));
+        if look.size.is_none() && look.line_width.is_none() {
+            // The plain drawing: a 2 % margin, 800 px on the longer side.
+            let margin = content.max_element() * 0.02;
+            let size = content + DVec2::splat(2.0 * margin);
+            let pixels = size * (PICTURE_SIZE / size.max_element());
+            return Frame {
+                min: min - DVec2::splat(margin),
+                size,
+                width: length(pixels.x, look.dpi),
+                height: length(pixels.y, look.dpi),
+                line_width: None,
+            };
+        }
+        // In pixels: the picture, and a margin of 2 % of its longer side plus half a line.
+        let pixels = match look.size {
+            Some((w, h)) => DVec2::new(w as f64, h as f64),
+            None => content * (PICTURE_SIZE / content.max_element()),
+        };
+        let margin = 0.02 * pixels.max_element() + look.line_width.unwrap_or(0.0) * 0.5;
+        let room = (pixels - DVec2::splat(2.0 * margin)).max(DVec2::splat(1.0));
+        let scale = (room / content).min_element(); // pixels per model unit
+        let size = pixels / scale;
+        Frame {
+            min: (min + max) * 0.5 - size * 0.5,
+            size,
+            width: length(pixels.x, look.dpi),
+            height: length(pixels.y, look.dpi),
+            line_width: look.line_width.map(|w| w / scale),
+        }
+    }
+}
+
+/// A picture's side: pixels, or millimetres at `dpi`.
+fn length(pixels: f64, dpi: Option<f64>) -> String {
+    let mut out = String::new();
+    match dpi {
+        Some(dpi) => {
+            number(&mut out, pixels / dpi * 25.4, 2);
+            out.push_str("mm");
+        }
+        None => number(&mut out, pixels, 1),
+    }
+    out
+}
 
 /// One thing to draw, in model units.
 enum Shape {
@@ -74,8 +217,9 @@ fn shapes(skeleton: &Skeleton, unit: f64) -> Vec<Shape> {
     keyed.into_iter().map(|(_, shape)| shape).collect()
 }
 
-/// The box around the shapes, strokes and circles included: (min, max).
-fn extent_of(shapes: &[Shape]) -> Option<(DVec2, DVec2)> {
+/// The box around the shapes, circles included, and the lines' strokes when `strokes`:
+/// (min, max).
+fn extent_of(shapes: &[Shape], strokes: bool) -> Option<(DVec2, DVec2)> {
     let mut min = DVec2::INFINITY;
     let mut max = DVec2::NEG_INFINITY;
     let mut grow = |p: DVec2, r: f64| {
@@ -85,8 +229,9 @@ fn extent_of(shapes: &[Shape]) -> Option<(DVec2, DVec2)> {
     for shape in shapes {
         match shape {
             Shape::Line(a, b, w, _) => {
-                grow(*a, w * 0.5);
-                grow(*b, w * 0.5);
+                let half = if strokes { w * 0.5 } else { 0.0 };
+                grow(*a, half);
+                grow(*b, half);
             }
             Shape::Fill(points, _) => points.iter().for_each(|p| grow(*p, 0.0)),
             Shape::Circle(c, r, _) => grow(*c, *r),
@@ -101,20 +246,42 @@ fn hex(skeleton: &Skeleton, index: u16) -> String {
     format!("#{r:02x}{g:02x}{b:02x}")
 }
 
-/// The SVG text of the skeleton (the mesh gives the width unit).
+/// The SVG text of the skeleton (the mesh gives the width unit): the plain drawing.
 pub fn write(mesh: &MeshBuffers, skeleton: &Skeleton) -> String {
-    let shapes = shapes(skeleton, mesh.width_unit);
-    let (min, max) = extent_of(&shapes).unwrap_or((DVec2::ZERO, DVec2::ONE));
-    let size = (max - min).max(DVec2::splat(1e-9));
-    let margin = size.max_element() * 0.02;
-    let (min, size) = (
-        min - DVec2::splat(margin),
-        size + DVec2::splat(2.0 * margin),
-    );
-    let decimals = decimals_for(size.max_element()).saturating_sub(2);
+    write_with(mesh, skeleton, &Look::default())
+}
+
+/// The SVG text of the skeleton in `look` (checked by [`Look::checked`]).
+pub fn write_with(mesh: &MeshBuffers, skeleton: &Skeleton, look: &Look) -> String {
+    let mut shapes = shapes(skeleton, mesh.width_unit);
+    let frame = Frame::new(&shapes, look);
+    if let Some(width) = frame.line_width {
+        for shape in &mut shapes {
+            if let Shape::Line(_, _, w, _) = shape {
+                *w = width;
+            }
+        }
+    }
+    let decimals = decimals_for(frame.size.max_element()).saturating_sub(2);
 
     let mut out = String::with_capacity(256 + shapes.len() * 48);
-    header(&mut out, min, size, decimals);
+    header(&mut out, &frame, decimals);
+    if let Some([r, g, b]) = look.background {
+        // A rectangle over the whole viewBox, under the drawing.
+        out.push_str("<rect");
+        let (min, size) = (frame.min, frame.size);
+        for (name, v) in [
+            ("x", min.x),
+            ("y", min.y),
+            ("width", size.x),
+            ("height", size.y),
+        ] {
+            write!(out, " {name}=\"").ok();
+            number(&mut out, v, decimals);
+            out.push('"');
+        }
+        writeln!(out, " fill=\"#{r:02x}{g:02x}{b:02x}\"/>").ok();
+    }
     out.push_str("<g stroke-linecap=\"round\" stroke-linejoin=\"round\">\n");
     let mut k = 0;
     while k < shapes.len() {
@@ -146,23 +313,25 @@ pub fn write(mesh: &MeshBuffers, skeleton: &Skeleton) -> String {
     out
 }
 
-/// The XML declaration, the `svg` element (its `viewBox` from `min` over `size`, the picture
-/// [`PICTURE_SIZE`] on its longer side), its title and description.
-fn header(out: &mut String, min: DVec2, size: DVec2, decimals: usize) {
-    let scale = PICTURE_SIZE / size.max_element();
+/// The XML declaration, the `svg` element (its `viewBox` and size from `frame`), its title and
+/// description.
+fn header(out: &mut String, frame: &Frame, decimals: usize) {
     out.push_str("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
     out.push_str("<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"");
+    let (min, size) = (frame.min, frame.size);
     for (k, v) in [min.x, min.y, size.x, size.y].into_iter().enumerate() {
         if k > 0 {
             out.push(' ');
         }
         number(out, v, decimals);
     }
-    out.push_str("\" width=\"");
-    number(out, size.x * scale, 1);
-    out.push_str("\" height=\"");
-    number(out, size.y * scale, 1);
-    out.push_str("\">\n<title>Meristem plant</title>\n");
+    write!(
+        out,
+        "\" width=\"{}\" height=\"{}\"",
+        frame.width, frame.height
+    )
+    .ok();
+    out.push_str(">\n<title>Meristem plant</title>\n");
     writeln!(
         out,
         "<desc>Made with Meristem {}: the plant projected onto the X-Y plane, Y up.</desc>",
@@ -259,5 +428,140 @@ mod tests {
             "{fields:?}"
         );
         assert!(fields[1] <= -1.0 - half_width && fields[1] + fields[3] >= half_width);
+    }
+
+    /// The `viewBox` and the `width` and `height` attributes of an SVG's text.
+    fn frame_of(text: &str) -> ([f64; 4], String, String) {
+        let attribute = |name: &str| {
+            let start = text
+                .find(&format!(" {name}=\""))
+                .map(|i| i + name.len() + 3);
+            text[start.unwrap_or(0)..]
+                .split('"')
+                .next()
+                .unwrap_or("")
+                .to_string()
+        };
+        let fields: Vec<f64> = attribute("viewBox")
+            .split(' ')
+            .map(|v| v.parse().unwrap_or(f64::NAN))
+            .collect();
+        (
+            [fields[0], fields[1], fields[2], fields[3]],
+            attribute("width"),
+            attribute("height"),
+        )
+    }
+
+    #[test]
+    fn a_background_covers_the_whole_picture_under_the_drawing() {
+        let (mesh, skeleton) = built("#angle 90\naxiom: F+F\n");
+        let look = Look {
+            background: Some([255, 255, 255]),
+            ..Look::default()
+        };
+        let text = write_with(&mesh, &skeleton, &look);
+        let ([x, y, w, h], ..) = frame_of(&text);
+        let rect =
+            format!("<rect x=\"{x}\" y=\"{y}\" width=\"{w}\" height=\"{h}\" fill=\"#ffffff\"/>");
+        assert!(text.contains(&rect), "{text}");
+        assert!(text.find("<rect").unwrap() < text.find("<path").unwrap());
+        // The plain drawing has none, and is otherwise the same.
+        let plain = write(&mesh, &skeleton);
+        assert!(!plain.contains("<rect"));
+        assert_eq!(text.replace(&format!("{rect}\n"), ""), plain);
+    }
+
+    #[test]
+    fn lines_of_a_width_in_pixels_fill_a_picture_of_a_size() {
+        // A 1 × 1 square outline (its own widths 30 units) in a 100 × 200 picture with 5 px lines.
+        let (mesh, skeleton) = built("#angle 90\n#width 30\naxiom: F+F+F+F\n");
+        let look = Look {
+            line_width: Some(5.0),
+            size: Some((100, 200)),
+            ..Look::default()
+        };
+        let text = write_with(&mesh, &skeleton, &look);
+        let ([x, y, w, h], width, height) = frame_of(&text);
+        assert_eq!((width.as_str(), height.as_str()), ("100", "200"));
+        assert!(
+            (h / w - 2.0).abs() < 1e-3,
+            "the picture's aspect: {w} × {h}"
+        );
+        // The square is centred, with a margin of 2 % of 200 px plus half a line on each side.
+        let per_pixel = w / 100.0;
+        assert!((w - (1.0 + 2.0 * 6.5 * per_pixel)).abs() < 1e-3, "{text}");
+        assert!((x + w / 2.0 + 0.5).abs() < 1e-3 && (y + h / 2.0 + 0.5).abs() < 1e-3);
+        let stroke = text
+            .split("stroke-width=\"")
+            .nth(1)
+            .unwrap()
+            .split('"')
+            .next()
+            .unwrap();
+        let stroke: f64 = stroke.parse().unwrap();
+        assert!(
+            (stroke / per_pixel - 5.0).abs() < 0.05,
+            "{stroke} units = {} px",
+            stroke / per_pixel
+        );
+    }
+
+    #[test]
+    fn a_dpi_gives_the_size_in_millimetres() {
+        let (mesh, skeleton) = built("axiom: F\n");
+        let look = Look {
+            size: Some((1748, 2480)),
+            dpi: Some(300.0),
+            ..Look::default()
+        };
+        let (_, width, height) = frame_of(&write_with(&mesh, &skeleton, &look));
+        assert_eq!(
+            (width.as_str(), height.as_str()),
+            ("148mm", "209.97mm"),
+            "A5 at 300 DPI"
+        );
+    }
+
+    #[test]
+    fn a_look_out_of_range_is_refused_by_name() {
+        let refused = |look: Look| look.checked().unwrap_err();
+        assert!(refused(Look {
+            line_width: Some(0.0),
+            ..Look::default()
+        })
+        .contains("line width"));
+        assert!(refused(Look {
+            line_width: Some(f64::NAN),
+            ..Look::default()
+        })
+        .contains("line width"));
+        assert!(refused(Look {
+            size: Some((10, 300)),
+            ..Look::default()
+        })
+        .contains("10 × 300"));
+        assert!(refused(Look {
+            dpi: Some(1e9),
+            ..Look::default()
+        })
+        .contains("DPI"));
+        assert!(Look {
+            line_width: Some(60.0),
+            size: Some((8192, 16)),
+            dpi: Some(10.0),
+            ..Look::default()
+        }
+        .checked()
+        .is_ok());
+        assert_eq!(Look::parse_background("white"), Ok(Some([255; 3])));
+        assert_eq!(Look::parse_background("None"), Ok(None));
+        assert_eq!(
+            Look::parse_background("#1A2b3c"),
+            Ok(Some([0x1a, 0x2b, 0x3c]))
+        );
+        for bad in ["#12345", "#12345g", "red", "#ééé", ""] {
+            assert!(Look::parse_background(bad).is_err(), "{bad}");
+        }
     }
 }

@@ -16,6 +16,8 @@ pub struct ExportOptions {
     pub stem: String,
     /// Branch edits to apply first (`None`: the plant as it grew).
     pub edits: Option<Vec<BranchEdit>>,
+    /// An SVG's picture settings (the default for the other formats).
+    pub look: export::svg::Look,
 }
 
 /// An export's files and what happened on the way.
@@ -62,7 +64,13 @@ pub fn export(
         None => (build.plant, None),
     };
     hooks.start(Stage::Write);
-    let files = export::export(options.format, &plant.mesh, &plant.skeleton, &options.stem);
+    let files = export::export_with(
+        options.format,
+        &plant.mesh,
+        &plant.skeleton,
+        &options.stem,
+        &options.look,
+    );
     Ok(Exported {
         files,
         diagnostics,
