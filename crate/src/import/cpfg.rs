@@ -964,6 +964,8 @@ impl Importer {
 
     /// A production's left side: contexts and predecessor (formal parameters are names).
     fn pattern(&mut self, pattern: &str, n: usize) -> Result<String, String> {
+        let new_contexts = self.new_contexts(pattern, n);
+        let pattern = new_contexts.as_str();
         let strict = {
             let after = top_level(pattern, "<").map_or(pattern, |i| &pattern[i + 1..]);
             top_level(after, ">").map_or(after, |i| &after[..i]).trim()
@@ -1002,6 +1004,30 @@ impl Importer {
             .map(|p| if p.is_empty() { "*".to_string() } else { p })
             .collect::<Vec<_>>()
             .join(" "))
+    }
+
+    /// The pattern with the new contexts `<<` and `>>` read as the ordinary `<` and `>`, with a
+    /// note on what changes: the tool matches a new context on the string being produced (the
+    /// neighbour already rewritten in this step, so a signal can cross the whole plant in one
+    /// step); Meristem matches on the string of the step before, so a signal moves one module a
+    /// step.
+    fn new_contexts(&mut self, pattern: &str, n: usize) -> String {
+        let mut out = pattern.to_string();
+        for (new, old, side) in [("<<", "<", "left"), (">>", ">", "right")] {
+            if top_level(&out, new).is_some() {
+                self.note(
+                    n,
+                    format!(
+                        "{}'s new {side} context '{new}' (matched on the string being produced in this step) becomes an ordinary {side} context '{old}' (matched on the string of the step before): a signal it carries moves one module a step instead of along the whole axis in one step, so the plant may differ",
+                        self.flavour.tool()
+                    ),
+                );
+                while let Some(i) = top_level(&out, new) {
+                    out.replace_range(i..i + 2, old);
+                }
+            }
+        }
+        out
     }
 
     /// A statement block: assignments `x = e;` (also `+=` …), in order.
@@ -1657,6 +1683,35 @@ mod tests {
             "{}\n{d:?}{r:?}",
             import.text
         );
+    }
+
+    #[test]
+    fn new_contexts_become_ordinary_contexts_with_a_note_that_says_what_changes() {
+        for flavour in [Flavour::Lpy, Flavour::Cpfg] {
+            let import = import(
+                "Axiom: A B B\nderivation length: 2\nproduction:\nA << B --> A\nB >> A --> C\nA < B --> B\nendlsystem\n",
+                flavour,
+            );
+            resolves(&import);
+            let body = body(&import);
+            assert!(body.contains(&"A < B -> A"), "{body:?}");
+            assert!(body.contains(&"B > A -> C"), "{body:?}");
+            let notes: Vec<&str> = import.notes.iter().map(|n| n.message.as_str()).collect();
+            let new_context = |side: &str| {
+                notes
+                    .iter()
+                    .filter(|m| {
+                        m.contains(&format!("new {side} context"))
+                            && m.contains("one module a step")
+                    })
+                    .count()
+            };
+            assert_eq!(
+                (new_context("left"), new_context("right")),
+                (1, 1),
+                "{notes:?}"
+            );
+        }
     }
 
     #[test]
