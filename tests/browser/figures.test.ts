@@ -2,10 +2,12 @@
 // (the Lines mode, a toggle in the view toolbar with a width in pixels), 3D plants as tubes;
 // highlighting and picking work on lines. Screenshots land in test-results/.
 import { readFileSync, writeFileSync } from 'node:fs';
+import { join } from 'node:path';
 import type { Browser, Page } from 'playwright-core';
 import { chromium } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { backgroundColour, changedShare, decodePng, foregroundShare, strokeWidth } from './pictures';
+import { exportWithCli, removeScratch, scratchDir } from '../export/tools';
 import { RESULTS, canvasPicture, example, generation, nextBuild, openStudio, type StudioPage } from './studio-page';
 
 let browser: Browser;
@@ -34,7 +36,10 @@ beforeAll(async () => {
 
 afterAll(async () => {
   await browser?.close();
+  removeScratch(scratch);
 });
+
+const scratch = scratchDir('figures');
 
 describe('the Lines mode', () => {
   it('is the default for flat plants, tubes for 3D ones, and the toolbar toggle switches them', async () => {
@@ -122,6 +127,41 @@ describe('pictures for print', () => {
     const measured = strokeWidth(picture);
     expect(Math.abs(measured - 5), `stroke width measured ${measured}`).toBeLessThanOrEqual(1);
     await expect.poll(() => page.getByTestId('export-status').textContent()).toMatch(/ · 1748 × 2480 at 300 DPI · /);
+    expect(studio.problems).toEqual([]);
+  });
+
+  it('downloads ABOP 1.24a as an SVG drawing on A5 at 300 DPI: the same settings, the bytes of meristem export', async () => {
+    // The settings of the PNG above (A5 at 300 DPI, white, 5 px lines) are still chosen.
+    const source = example('abop-1.24a.lsys') + '\n';
+    const menu = page.getByTestId('downloads');
+    if (!(await menu.evaluate((m) => (m as HTMLDetailsElement).open))) await menu.locator('summary').click();
+    expect(await page.getByTestId('png-line-width').inputValue()).toBe('5');
+    const [download] = await Promise.all([page.waitForEvent('download'), page.getByTestId('download-svg').click()]);
+    expect(download.suggestedFilename()).toBe('abop-1.24a.svg');
+    const bytes = readFileSync((await download.path())!);
+    writeFileSync(new URL('figures-1.24a-300dpi.svg', RESULTS), bytes);
+    const grammar = join(scratch, 'abop-1.24a.lsys');
+    writeFileSync(grammar, source);
+    const look = ['--background', 'white', '--line-width', '5', '--size', '1748x2480', '--dpi', '300'];
+    const cli = exportWithCli(grammar, join(scratch, 'abop-1.24a.svg'), look);
+    expect(bytes.equals(cli), 'the download is meristem export with the same picture settings').toBe(true);
+    const text = bytes.toString('utf8');
+    expect(text).toContain(' width="148mm" height="209.97mm"');
+    // Drawn by Chromium at its size in pixels: white, no grid, lines 5 px wide.
+    const drawing = await browser.newPage({ viewport: { width: 1748, height: 2480 }, deviceScaleFactor: 1 });
+    await drawing.setContent(
+      `<body style="margin:0"><img width="1748" height="2480" style="display:block" src="data:image/svg+xml;base64,${bytes.toString('base64')}"></body>`,
+    );
+    await drawing.waitForFunction(() => document.querySelector('img')?.complete === true);
+    const shot = await drawing.screenshot();
+    await drawing.close();
+    writeFileSync(new URL('figures-1.24a-300dpi-svg.png', RESULTS), shot);
+    const picture = decodePng(shot);
+    expect(backgroundColour(picture)).toEqual([255, 255, 255]);
+    expect(foregroundShare(picture)).toBeGreaterThan(0.005);
+    const measured = strokeWidth(picture);
+    expect(Math.abs(measured - 5), `stroke width measured ${measured}`).toBeLessThanOrEqual(1);
+    await expect.poll(() => page.getByTestId('export-status').textContent()).toMatch(/^Saved abop-1\.24a\.svg · /);
     expect(studio.problems).toEqual([]);
   });
 });

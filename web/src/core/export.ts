@@ -8,7 +8,7 @@ import type { BuildOptions } from './types';
 /** A model format the core writes, named by its file extension. */
 export type ModelFormat = 'wrl' | 'glb' | 'pov' | 'obj' | 'iv' | 'svg';
 
-/** The formats in menu order, with what a user sees for each. */
+/** The formats in menu order, with what a user sees for each (the Download menu puts SVG with the PNG, under the picture settings). */
 export const MODEL_FORMATS: readonly { format: ModelFormat; label: string; file: string }[] = [
   { format: 'wrl', label: 'VRML 2.0', file: '.wrl' },
   { format: 'glb', label: 'glTF 2.0 binary', file: '.glb' },
@@ -33,6 +33,21 @@ export interface ExportOptions extends BuildOptions {
   name?: string;
   /** Branch edits to apply first (the file is then `meristem export … --edits EDITS.json`'s). */
   edits?: EditsDocument;
+  /** An SVG's picture settings (the CLI's `--background`, `--line-width`, `--size`, `--dpi`); SVG only. */
+  svg?: SvgLook;
+}
+
+/** An SVG's picture settings; see the core's `SvgLook`. */
+export interface SvgLook {
+  /** `white`, `none` (transparent, the default) or `#rrggbb`. */
+  background?: string;
+  /** Every line this wide in the picture's pixels, 0.5 to 60 (the Lines mode); else the model's widths. */
+  lineWidth?: number;
+  /** The picture's size in pixels, 16 to 8192 (both or neither). */
+  width?: number;
+  height?: number;
+  /** Dots per inch (10 to 2400): the size is then written in millimetres. */
+  dpi?: number;
 }
 
 /**
@@ -49,8 +64,8 @@ export function exportModel(source: string, format: ModelFormat, options: Export
 
 /** The core's export options for `format` and `options`. */
 function coreOptions(format: ModelFormat, options: ExportOptions) {
-  const { iterations, seed, sides, smoothAll, name, edits } = options;
-  return { format, name, iterations, seed, sides, smoothAll, edits: edits ? JSON.stringify(edits) : undefined };
+  const { iterations, seed, sides, smoothAll, name, edits, svg } = options;
+  return { format, name, iterations, seed, sides, smoothAll, edits: edits ? JSON.stringify(edits) : undefined, svg };
 }
 
 /** Runs the core's export, telling `onProgress` each stage when given. */

@@ -12,6 +12,7 @@ export {
   type ExportStage,
   type ModelFile,
   type ModelFormat,
+  type SvgLook,
 } from './export';
 export {
   argumentsText,

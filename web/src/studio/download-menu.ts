@@ -1,7 +1,8 @@
 // The Download menu: a button per model format, written in an export worker with its progress and
-// a Cancel button on the status line (the page stays responsive), and the PNG of the view. One
-// download at a time: the menu is disabled meanwhile.
-import { MODEL_FORMATS, type ExportOptions, type ModelFormat } from '../core';
+// a Cancel button on the status line (the page stays responsive), and the picture settings with
+// the PNG of the view and the SVG drawing (written by the export worker too). One download at a
+// time: the menu is disabled meanwhile.
+import { MODEL_FORMATS, type ExportOptions, type ModelFormat, type SvgLook } from '../core';
 import type { PictureLook, PlantView } from '../view';
 import { afterPaint, fileSize, paperPixels, pictureSize, saveFile, withResolution, type PaperChoice } from './downloads';
 import { createExportWorker, describeProgress, runExport } from './export-client';
@@ -15,6 +16,8 @@ export interface DownloadMenuElements {
   pngWidth: HTMLInputElement;
   pngHeight: HTMLInputElement;
   downloadPng: HTMLButtonElement;
+  /** The SVG drawing, in the picture settings (the model formats' loop leaves SVG out). */
+  downloadSvg: HTMLButtonElement;
   /** A sheet of paper the picture fills (empty: the width and height typed). */
   pngPaper: HTMLSelectElement;
   pngDpi: HTMLSelectElement;
@@ -71,11 +74,11 @@ export function installDownloads(els: DownloadMenuElements, view: PlantView, sho
       busy(false);
     }
   };
-  const downloadModel = (format: ModelFormat, label: string): Promise<void> =>
+  const downloadModel = (format: ModelFormat, label: string, svg?: SvgLook): Promise<void> =>
     download(label, async () => {
       const plant = shown();
       if (!plant) throw new Error('no plant yet');
-      const options = { ...plant.options, name: plant.name };
+      const options = { ...plant.options, name: plant.name, svg };
       const running = runExport(createExportWorker, { source: plant.source, format, options }, (progress) => {
         els.exportProgress.max = progress.count;
         els.exportProgress.value = progress.index + 1;
@@ -91,6 +94,7 @@ export function installDownloads(els: DownloadMenuElements, view: PlantView, sho
       return `Saved ${outcome.file.fileName} · ${fileSize(outcome.file.bytes.length)}`;
     });
   for (const { format, label, file } of MODEL_FORMATS) {
+    if (format === 'svg') continue; // under the picture settings
     const button = document.createElement('button');
     button.type = 'button';
     button.className = 'menu-item';
@@ -102,14 +106,13 @@ export function installDownloads(els: DownloadMenuElements, view: PlantView, sho
   closeLikeAMenu(els.menu);
   installPictureSize(els);
   els.downloadPng.addEventListener('click', () => {
-    const size = pictureSize(els.pngWidth.value, els.pngHeight.value, view.maxPictureSide());
-    const lineWidth = Number(els.pngLineWidth.value);
-    if (!size.ok || !(lineWidth >= 0.5 && lineWidth <= 60)) {
-      showExportStatus(els.exportStatus, 'error', size.ok ? 'PNG lines: the width must be from 0.5 to 60 pixels' : size.message);
+    const settings = pictureSettings(els, 'PNG', view.maxPictureSide());
+    if (!settings.ok) {
+      showExportStatus(els.exportStatus, 'error', settings.message);
       return;
     }
-    const dpi = Number(els.pngDpi.value);
-    const look: PictureLook = { background: els.pngBackground.value as PictureLook['background'], lineWidth };
+    const { size, dpi, lineWidth, background } = settings;
+    const look: PictureLook = { background, lineWidth };
     const name = `${shown()?.name ?? 'plant'}.png`;
     // The picture is drawn by the page's WebGL context: it cannot move to a worker (it is one draw).
     void download(`PNG ${size.width} × ${size.height}`, async () => {
@@ -120,6 +123,38 @@ export function installDownloads(els: DownloadMenuElements, view: PlantView, sho
       return `Saved ${name} · ${size.width} × ${size.height} at ${dpi} DPI · ${fileSize(png.length)}`;
     });
   });
+  els.downloadSvg.addEventListener('click', () => {
+    const settings = pictureSettings(els, 'SVG');
+    if (!settings.ok) {
+      showExportStatus(els.exportStatus, 'error', settings.message);
+      return;
+    }
+    const { size, dpi, lineWidth, background } = settings;
+    const svg: SvgLook = {
+      background: background === 'view' ? view.backgroundHex() : background === 'white' ? 'white' : 'none',
+      // Lines of one width as the view draws them in the Lines mode; tubes keep the model's widths.
+      lineWidth: view.usesLines ? lineWidth : undefined,
+      width: size.width,
+      height: size.height,
+      dpi,
+    };
+    void downloadModel('svg', 'SVG drawing', svg);
+  });
+}
+
+/** The picture settings read, or the reason they do not make a picture. */
+type PictureSettings =
+  | { ok: true; size: { width: number; height: number }; dpi: number; lineWidth: number; background: PictureLook['background'] }
+  | { ok: false; message: string };
+
+/** Reads the picture settings for a `what` (PNG or SVG) at most `maxSide` pixels on a side. */
+function pictureSettings(els: DownloadMenuElements, what: string, maxSide?: number): PictureSettings {
+  const size = pictureSize(els.pngWidth.value, els.pngHeight.value, maxSide, what);
+  if (!size.ok) return size;
+  const lineWidth = Number(els.pngLineWidth.value);
+  if (!(lineWidth >= 0.5 && lineWidth <= 60)) return { ok: false, message: `${what} lines: the width must be from 0.5 to 60 pixels` };
+  const background = els.pngBackground.value as PictureLook['background'];
+  return { ok: true, size: { width: size.width, height: size.height }, dpi: Number(els.pngDpi.value), lineWidth, background };
 }
 
 /** A paper (with the DPI) fills in the picture's size; a size typed by hand makes it Custom. */

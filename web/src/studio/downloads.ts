@@ -34,10 +34,10 @@ export const PICTURE_MAX = 8192;
 export type PictureSize = { ok: true; width: number; height: number } | { ok: false; message: string };
 
 /**
- * Reads the PNG width and height inputs: whole numbers from {@link PICTURE_MIN} to `max` (the
- * GPU's limit, at most {@link PICTURE_MAX}).
+ * Reads the picture's width and height inputs: whole numbers from {@link PICTURE_MIN} to `max`
+ * (for a PNG the GPU's limit, at most {@link PICTURE_MAX}); `what` names the picture in the message.
  */
-export function pictureSize(width: string, height: string, max = PICTURE_MAX): PictureSize {
+export function pictureSize(width: string, height: string, max = PICTURE_MAX, what = 'PNG'): PictureSize {
   const limit = Math.min(max, PICTURE_MAX);
   const read = (text: string): number | undefined => {
     const value = Number(text.trim());
@@ -46,7 +46,7 @@ export function pictureSize(width: string, height: string, max = PICTURE_MAX): P
   const w = read(width);
   const h = read(height);
   if (w === undefined || h === undefined) {
-    return { ok: false, message: `PNG size: width and height must be whole numbers from ${PICTURE_MIN} to ${limit}` };
+    return { ok: false, message: `${what} size: width and height must be whole numbers from ${PICTURE_MIN} to ${limit}` };
   }
   return { ok: true, width: w, height: h };
 }

@@ -105,6 +105,7 @@ export function studioElements() {
       pngWidth: byId('png-width', HTMLInputElement),
       pngHeight: byId('png-height', HTMLInputElement),
       downloadPng: byId('download-png', HTMLButtonElement),
+      downloadSvg: byId('download-svg', HTMLButtonElement),
       pngPaper: byId('png-paper', HTMLSelectElement),
       pngDpi: byId('png-dpi', HTMLSelectElement),
       pngBackground: byId('png-background', HTMLSelectElement),

@@ -685,6 +685,11 @@ export class PlantView {
     this.colourModules(this.colourOf);
   }
 
+  /** The view's background as `#rrggbb` (a drawing "as the view" has it, without the grid). */
+  backgroundHex(): string {
+    return `#${scenePalette(this.darkScheme.matches).background.getHexString()}`;
+  }
+
   /** True while the plant's segments are drawn as lines (the mode chosen, or `auto` and flat). */
   get usesLines(): boolean {
     if (!this.mesh || this.mesh.segmentModules.length === 0 || this.tubeHolders.size > 0) return false;
