@@ -92,6 +92,32 @@ describe('the Lines mode', () => {
     await page.getByTestId('grid').click();
     expect(studio.problems).toEqual([]);
   });
+
+  it('draws the lines twice as wide in the Large mode (a projector)', async () => {
+    await page.getByTestId('grid').click(); // a plain background
+    await paste('#angle 30\naxiom: F[+F][-F]F[++F]\n');
+    /** The lines' width on screen, in CSS pixels. */
+    const measuredWidth = async (name: string) => {
+      const picture = await canvasPicture(page, name);
+      const scale = picture.width / (await page.locator('[data-testid=viewport] canvas').boundingBox())!.width;
+      return strokeWidth(picture) / scale;
+    };
+    await page.getByTestId('lines-menu').locator('summary').click();
+    await page.getByTestId('line-width').fill('3');
+    await page.getByTestId('line-width').press('Enter');
+    await page.getByTestId('lines-menu').locator('summary').click();
+    const normal = await measuredWidth('figures-width-3.png');
+    expect(Math.abs(normal - 3), `measured ${normal}`).toBeLessThanOrEqual(1);
+    await page.getByTestId('large').click();
+    await expect.poll(() => page.evaluate(() => document.body.classList.contains('large'))).toBe(true);
+    await page.getByTestId('frame').click();
+    const large = await measuredWidth('figures-width-3-large.png');
+    expect(Math.abs(large - 6), `measured ${large} in the Large mode`).toBeLessThanOrEqual(1);
+    await page.getByTestId('large').click();
+    await expect.poll(() => page.evaluate(() => document.body.classList.contains('large'))).toBe(false);
+    await page.getByTestId('grid').click();
+    expect(studio.problems).toEqual([]);
+  });
 });
 
 describe('pictures for print', () => {
