@@ -1,9 +1,12 @@
 // The facade over the core's file writers: one call, the file's bytes out, the wasm object freed.
-import { exportModel as coreExportModel, type ExportedModel } from '../../../crate/pkg/meristem.js';
+import { exportModel as coreExportModel, type ExportedModel, type SvgLook } from '../../../crate/pkg/meristem.js';
 import type { EditsDocument } from './branches';
 import { guarded } from './init';
 import { assertIoReady } from './io';
 import type { BuildOptions } from './types';
+
+/** An SVG's picture settings (background, line width, size, DPI): the core's, as `meristem export` takes them. */
+export type { SvgLook };
 
 /** A model format the core writes, named by its file extension. */
 export type ModelFormat = 'wrl' | 'glb' | 'pov' | 'obj' | 'iv' | 'svg';
@@ -35,19 +38,6 @@ export interface ExportOptions extends BuildOptions {
   edits?: EditsDocument;
   /** An SVG's picture settings (the CLI's `--background`, `--line-width`, `--size`, `--dpi`); SVG only. */
   svg?: SvgLook;
-}
-
-/** An SVG's picture settings; see the core's `SvgLook`. */
-export interface SvgLook {
-  /** `white`, `none` (transparent, the default) or `#rrggbb`. */
-  background?: string;
-  /** Every line this wide in the picture's pixels, 0.5 to 60 (the Lines mode); else the model's widths. */
-  lineWidth?: number;
-  /** The picture's size in pixels, 16 to 8192 (both or neither). */
-  width?: number;
-  height?: number;
-  /** Dots per inch (10 to 2400): the size is then written in millimetres. */
-  dpi?: number;
 }
 
 /**
