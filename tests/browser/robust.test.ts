@@ -228,6 +228,54 @@ describe('a long build', () => {
     await context.close();
   });
 
+  it('leaves the String and Derivation panels showing the plant on screen after Stop, marked as of an earlier text', async () => {
+    const context = await newContext();
+    const { page, problems } = await openAt(inject('studioUrl'), context);
+    const shown = '// shown\n#iterations 5\n#angle 25\naxiom: A\nA -> F[+A][-A]FA';
+    await typeText(page, shown);
+    const modules = page.getByTestId('string-panel').locator('.m');
+    await expect.poll(() => modules.count()).toBeGreaterThan(40);
+    const stringBefore = await modules.allTextContents();
+    await page.getByTestId('tab-derivation').click();
+    const rows = page.getByTestId('derivation').locator('.dv-row');
+    await expect.poll(() => rows.count()).toBe(6); // steps 0 to 5
+    const derivationBefore = await page.getByTestId('derivation').textContent();
+    await page.getByTestId('tab-string').click();
+    expect(await page.getByTestId('inspector-stale').isHidden()).toBe(true);
+
+    await typeText(page, SLOW, false);
+    await stepShown(page);
+    await page.getByTestId('build-stop').click();
+    await expect.poll(() => status(page).getAttribute('data-state')).toBe('stopped');
+    // Marked as the view is, and still the plant on screen: the string, also once scrolled away and
+    // back (rows asked for anew, after the worker that kept the plant was terminated)…
+    expect(await page.getByTestId('inspector-stale').isVisible()).toBe(true);
+    expect(await page.getByTestId('inspector-stale').textContent()).toBe('Of the plant shown (an earlier text)');
+    expect(await page.locator('#stale-badge').isVisible()).toBe(true);
+    await expect.poll(() => modules.allTextContents()).toEqual(stringBefore);
+    const scroller = page.getByTestId('string-panel');
+    await scroller.evaluate((el) => (el.scrollTop = el.scrollHeight));
+    await expect.poll(() => modules.first().getAttribute('data-i')).not.toBe('0');
+    expect(await modules.count()).toBeGreaterThan(0);
+    await scroller.evaluate((el) => (el.scrollTop = 0));
+    await expect.poll(() => modules.allTextContents()).toEqual(stringBefore);
+    // …and the derivation, shown after the Stop.
+    await page.getByTestId('tab-derivation').click();
+    await expect.poll(() => page.getByTestId('derivation').textContent()).toBe(derivationBefore);
+    expect(await rows.count()).toBe(6);
+    // A module picked in the panel is still explained by the plant shown.
+    await page.getByTestId('tab-string').click();
+    await modules.nth(3).click();
+    await expect.poll(() => page.getByTestId('explain-summary').textContent()).not.toBe('');
+    expect(await editorText(page)).toBe(SLOW);
+
+    // The next build is of the text now: the mark goes.
+    await typeText(page, 'axiom: F+F+F');
+    expect(await page.getByTestId('inspector-stale').isHidden()).toBe(true);
+    expect(problems).toEqual([]);
+    await context.close();
+  });
+
   it('opened from a link, and after a reload, says it is building, not "Loading…"', async () => {
     const context = await newContext();
     const { page, problems } = await openAt(inject('studioUrl') + linkOf(SLOW, 200_000), context, false);
