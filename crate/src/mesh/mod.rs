@@ -8,6 +8,7 @@
 
 pub mod curve;
 mod lines;
+mod monotone;
 pub mod parts;
 pub mod polygon;
 pub mod sphere;
