@@ -151,6 +151,7 @@ describe('a grammar with HTML in its comments', () => {
     '   <iframe srcdoc="<script>parent.__pwned = \'iframe\'</script>"></iframe> */',
     '#define growth = 2 // <b onmouseover="window.__pwned = \'define\'">slider</b>',
     '#angle 22.5',
+    '#iterations 3',
     'axiom: X',
     'X -> F[+X]F[-X]+X',
     'F -> FF',
