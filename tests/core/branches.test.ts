@@ -299,6 +299,24 @@ describe('exportModelWithProgress (the export worker\'s call)', () => {
 });
 
 describe('drag targets and the edits document (issue 19)', () => {
+  it('a wrong document is refused in the same words by the page’s check and by the core', () => {
+    const { editor } = editPlant(LEAFY, { iterations: 2 });
+    const ok = [[0, 0, 0], [0, 0, 0], [0, 0, 0]];
+    const cases: [unknown, string][] = [
+      [{ version: 1, edits: [{ path: [0], handles: [...ok, [0, 0, 0]] }] }, 'edit 0: "handles" must hold 3 points (P1, P2, P3), not 4'],
+      [{ version: 1, edits: [{ path: [0], handles: [[0, 0, 0], [0, 0], [0, 0, 0]] }] }, 'edit 0: handle P2 must be 3 numbers (heading, left, up), not 2 numbers'],
+      [{ version: 1, edits: [{ path: [0], handles: ok }, { path: [-1], handles: ok }] }, 'edit 1: index 0 of "path" must be a whole number from 0 to 4294967295, not -1'],
+      [{ version: 1, edits: [{ path: [0], handles: ok, x: 1 }] }, 'edit 0: unknown field "x" (an edit holds only "path" and "handles")'],
+      [{ version: 1, edits: [], extra: true }, 'the edits document has an unknown field "extra" (it holds only "version" and "edits")'],
+      [{ version: 1, edits: {} }, '"edits" must be a list of edits, not an object'],
+    ];
+    for (const [document, words] of cases) {
+      expect(validateEdits(document)).toEqual({ ok: false, error: words });
+      expect(() => editor.applyEdits(document as EditsDocument)).toThrow(words);
+    }
+    editor.free();
+  });
+
   it('whatever a drag accepts, the edits it leaves are a document the same core reads back; the rest is refused, changing nothing', () => {
     // xorshift32: deterministic, so a failure repeats.
     let state = 0x2545f491;
