@@ -69,7 +69,7 @@ pub fn triangulate(points: &[DVec2], tolerance: f64) -> Option<Vec<[u32; 3]>> {
     let scale = points
         .iter()
         .fold(0.0f64, |m, p| m.max((*p - points[0]).length_squared()));
-    if (sum - twice_area).abs() > 1e-9 * scale * n as f64 + tolerance {
+    if !sum.is_finite() || (sum - twice_area).abs() > 1e-9 * scale * n as f64 + tolerance {
         return None;
     }
     Some(triangles)
