@@ -23,7 +23,7 @@ use meristem::branches::{parse_edits, BranchEdit, EditReport};
 use meristem::diagnostics::{locate_all, LocatedDiagnostic, Severity};
 use meristem::export::{self, svg, Format};
 use meristem::import::{self, Dialect};
-use meristem::mesh::MeshOptions;
+use meristem::mesh::{MeshOptions, MAX_SIDES, MIN_SIDES};
 use meristem::pipeline::{
     self, Build, ExportError, ExportOptions, Hooks, PlantEditor, StageTimings,
 };
@@ -100,7 +100,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             Long("growth") => growth = true,
             Long("output") | Short('o') => output = Some(PathBuf::from(parser.value()?)),
             Long("format") | Short('f') => format = Some(parser.value()?.string()?),
-            Long("sides") => sides = Some(parser.value()?.parse()?),
+            Long("sides") => sides = Some(parser.value()?.string()?),
             Long("smooth-all") => smooth_all = true,
             Long("edits") => edits = Some(PathBuf::from(parser.value()?)),
             Long("background") => background = Some(parser.value()?.string()?),
@@ -120,6 +120,19 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             _ => return Err(arg.unexpected()),
         }
     }
+    // Refused, not clamped: an export with other sides than asked for would be a silent surprise.
+    let sides = match sides {
+        None => None,
+        Some(text) => match text.trim().parse::<u32>() {
+            Ok(n) if (MIN_SIDES..=MAX_SIDES).contains(&n) => Some(n),
+            _ => {
+                return Err(format!(
+                    "--sides {text} is out of range: a branch tube has {MIN_SIDES} to {MAX_SIDES} sides (a whole number)"
+                )
+                .into())
+            }
+        },
+    };
     let verb = verb.ok_or("missing verb")?;
     let file = match (verb.as_str(), file) {
         ("help", topic) => topic.unwrap_or_default(),

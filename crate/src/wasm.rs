@@ -11,7 +11,7 @@
 //! before the call traps, so the studio can say what failed and start a fresh core.
 #![deny(clippy::unwrap_used)]
 
-use crate::branches::{parse_edits, write_edits, NO_BRANCH};
+use crate::branches::{parse_edits, write_edits, DragError, NO_BRANCH};
 #[cfg(feature = "io")]
 use crate::export::{self, Format};
 use crate::mesh::MeshOptions;
@@ -864,7 +864,9 @@ impl PlantEditor {
     /// changes and only what moved is re-meshed. Returns true when the whole mesh was rebuilt
     /// (read every array again; `changeReason()` says why); otherwise read only the changed
     /// vertices (`changedRanges`, `changedPositions`, `changedNormals`, `changedUvs`). Throws on a
-    /// bad branch, handle or position.
+    /// bad branch, handle or position; throws an error named `DragRefused` (and changes nothing)
+    /// for a target whose edit an edits document could not hold, so `edits()` always writes a
+    /// document `applyEdits` accepts.
     pub fn drag(
         &mut self,
         branch: u32,
@@ -872,11 +874,17 @@ impl PlantEditor {
         x: f64,
         y: f64,
         z: f64,
-    ) -> Result<bool, JsError> {
+    ) -> Result<bool, JsValue> {
         self.editor
             .drag(branch, handle as usize, glam::DVec3::new(x, y, z))
             .map(|change| change.full)
-            .map_err(|e| JsError::new(&e))
+            .map_err(|e| {
+                let error = js_sys::Error::new(&e.to_string());
+                if let DragError::OutOfReach(_) = e {
+                    error.set_name("DragRefused");
+                }
+                error.into()
+            })
     }
 
     /// Why the last edit rebuilt the whole mesh; `undefined` when it did not.

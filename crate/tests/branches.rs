@@ -286,3 +286,141 @@ fn the_command_line_applies_an_edits_file() {
     assert!(err.contains("newer Meristem"), "{err}");
     std::fs::remove_dir_all(dir).ok();
 }
+
+#[test]
+fn an_edits_file_with_a_byte_order_mark_applies_and_a_wrong_one_says_what_is_wrong() {
+    let dir = std::env::temp_dir().join(format!("meristem-edits-bom-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let grammar = dir.join("leafy.lsys");
+    std::fs::write(&grammar, LEAFY).unwrap();
+    let grammar = grammar.to_str().unwrap();
+    let edits = vec![BranchEdit {
+        path: vec![0, 0],
+        handles: [DVec3::ZERO, DVec3::ZERO, DVec3::new(0.0, 0.4, 0.0)],
+    }];
+    let stats_with = |name: &str, bytes: Vec<u8>| {
+        let file = dir.join(name);
+        std::fs::write(&file, bytes).unwrap();
+        meristem(&[
+            "derive",
+            grammar,
+            "-n",
+            "3",
+            "--stats",
+            "--edits",
+            file.to_str().unwrap(),
+        ])
+    };
+    let plain = stats_with("plain.json", write_edits(&edits).into_bytes());
+    assert_eq!(plain.0, 0, "{}", plain.2);
+    // As Notepad writes UTF-8: a byte order mark first, CRLF at the end.
+    let with_bom = stats_with(
+        "bom.json",
+        [
+            &b"\xef\xbb\xbf"[..],
+            write_edits(&edits).as_bytes(),
+            b"\r\n",
+        ]
+        .concat(),
+    );
+    assert_eq!(with_bom, plain, "the same plant, no message");
+    let unedited = meristem(&["derive", grammar, "-n", "3", "--stats"]);
+    assert_ne!(plain.1, unedited.1, "the edit did apply");
+    // Four handles: said in words, naming the edit.
+    let (code, _, err) = stats_with(
+        "four.json",
+        br#"{"version": 1, "edits": [{"path": [0, 0], "handles": [[0,0,0],[0,0,0],[0,0,0],[0,0,0]]}]}"#.to_vec(),
+    );
+    assert_eq!(code, 2);
+    assert!(
+        err.ends_with("four.json: edit 0: \"handles\" must hold 3 points (P1, P2, P3), not 4\n"),
+        "{err}"
+    );
+    let (code, _, err) = stats_with(
+        "short.json",
+        br#"{"version": 1, "edits": [{"path": [0, 0], "handles": [[0,0,0],[0,0,0],[1,2]]}]}"#
+            .to_vec(),
+    );
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("edit 0: handle P3 must be 3 numbers (heading, left, up), not 2 numbers"),
+        "{err}"
+    );
+    std::fs::remove_dir_all(dir).ok();
+}
+
+/// A small deterministic generator (xorshift64*), so the property test needs no crate and
+/// repeats exactly.
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        self.0.wrapping_mul(0x2545_f491_4f6c_dd1d)
+    }
+    /// Uniform in [-1, 1).
+    fn unit(&mut self) -> f64 {
+        (self.next() >> 11) as f64 / (1u64 << 52) as f64 - 1.0
+    }
+}
+
+#[test]
+fn whatever_a_drag_accepts_the_edits_document_holds_and_the_core_reads_back() {
+    // Plants with branches of ordinary, tiny and huge lengths: the same world distance is a
+    // different number of branch lengths on each.
+    let grammars = [
+        LEAFY,
+        "#angle 30\naxiom: F(1e-9)[+F(1e-9)]F(1e-9)[-F(5)]F(1e-300)",
+        "#angle 25\naxiom: F(1e6)[+F(1e-6)[-F(1)]F(1e6)]F(3)",
+    ];
+    let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
+    let (mut accepted, mut refused) = (0, 0);
+    for grammar in grammars {
+        let built = build(
+            grammar,
+            &BuildOptions {
+                iterations: Some(2),
+                ..BuildOptions::default()
+            },
+        );
+        let mut b = edit(built.plant.clone());
+        let info = b.branches();
+        assert!(!info.is_empty(), "{grammar}");
+        for _ in 0..300 {
+            let branch = (rng.next() % info.len() as u64) as u32;
+            let handle = 1 + (rng.next() % 3) as usize;
+            let at = b.control_points(branch)[handle];
+            // Targets from a hair to 1e12 away, in random directions.
+            let scale = 10f64.powf(-8.0 + 20.0 * (rng.unit() + 1.0) / 2.0);
+            let target = at + DVec3::new(rng.unit(), rng.unit(), rng.unit()) * scale;
+            let before = b.edits();
+            match b.drag(branch, handle, target) {
+                Ok(_) => accepted += 1,
+                Err(e) => {
+                    refused += 1;
+                    assert!(
+                        matches!(e, meristem::branches::DragError::OutOfReach(_)),
+                        "{e}"
+                    );
+                    assert_eq!(b.edits(), before, "a refused drag changes nothing");
+                }
+            }
+            // Every document the editor writes is one the same core reads back, unchanged, and
+            // applies whole to a fresh editor of the same plant.
+            let document = write_edits(&b.edits());
+            let read = parse_edits(&document)
+                .unwrap_or_else(|e| panic!("{grammar}: a drag made an unreadable document: {e}"));
+            assert_eq!(read, b.edits());
+            let mut fresh = edit(built.plant.clone());
+            let report = fresh.apply_edits(&read);
+            assert!(report.not_applied.is_empty(), "{report:?}");
+            assert_eq!(fresh.edits(), read);
+        }
+    }
+    assert!(
+        accepted > 300 && refused > 100,
+        "both kinds of target were tried: {accepted} accepted, {refused} refused"
+    );
+}

@@ -305,6 +305,49 @@ fn export_takes_the_studio_view_options() {
 }
 
 #[test]
+fn sides_out_of_range_are_refused_not_clamped() {
+    let dir = temp_dir("export-sides");
+    let source = example("abop-1.24a.lsys");
+    let out = dir.join("plant.obj");
+    let out = out.to_str().expect("UTF-8 path");
+    for sides in [
+        "0",
+        "1",
+        "2",
+        "65",
+        "1000000",
+        "99999999999",
+        "-1",
+        "six",
+        "3.5",
+        "",
+    ] {
+        let (code, stdout, err) = meristem(&["export", &source, "-o", out, "--sides", sides]);
+        assert_eq!(code, 2, "--sides {sides}: {err}");
+        assert!(
+            err.starts_with(&format!(
+                "meristem: --sides {sides} is out of range: a branch tube has 3 to 64 sides (a whole number)\n"
+            )),
+            "--sides {sides}: {err}"
+        );
+        assert_eq!(stdout, "");
+        assert!(
+            !std::path::Path::new(out).exists(),
+            "nothing written for --sides {sides}"
+        );
+    }
+    // The ends of the range are accepted (derive takes the option too).
+    for sides in ["3", "64"] {
+        let (code, _, err) = meristem(&["export", &source, "-o", out, "--sides", sides]);
+        assert_eq!((code, err.as_str()), (0, ""), "--sides {sides}");
+    }
+    let (code, _, err) = meristem(&["derive", &source, "--sides", "0"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("--sides 0 is out of range"), "{err}");
+    std::fs::remove_dir_all(dir).ok();
+}
+
+#[test]
 fn export_refuses_unknown_formats_and_reports_grammar_errors() {
     let dir = temp_dir("export-errors");
     let source = example("abop-1.24a.lsys");

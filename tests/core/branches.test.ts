@@ -9,6 +9,7 @@ import { fileURLToPath } from 'node:url';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import {
   applyMeshUpdate,
+  DragRefused,
   editPlant,
   exportModel,
   exportModelWithProgress,
@@ -294,5 +295,72 @@ describe('exportModelWithProgress (the export worker\'s call)', () => {
     const stages: string[] = [];
     expect(() => exportModelWithProgress('axiom: F[', 'obj', {}, (p) => stages.push(p.stage))).toThrow(/errors/);
     expect(stages[0]).toBe('parsing');
+  });
+});
+
+describe('drag targets and the edits document (issue 19)', () => {
+  it('a wrong document is refused in the same words by the page’s check and by the core', () => {
+    const { editor } = editPlant(LEAFY, { iterations: 2 });
+    const ok = [[0, 0, 0], [0, 0, 0], [0, 0, 0]];
+    const cases: [unknown, string][] = [
+      [{ version: 1, edits: [{ path: [0], handles: [...ok, [0, 0, 0]] }] }, 'edit 0: "handles" must hold 3 points (P1, P2, P3), not 4'],
+      [{ version: 1, edits: [{ path: [0], handles: [[0, 0, 0], [0, 0], [0, 0, 0]] }] }, 'edit 0: handle P2 must be 3 numbers (heading, left, up), not 2 numbers'],
+      [{ version: 1, edits: [{ path: [0], handles: ok }, { path: [-1], handles: ok }] }, 'edit 1: index 0 of "path" must be a whole number from 0 to 4294967295, not -1'],
+      [{ version: 1, edits: [{ path: [0], handles: ok, x: 1 }] }, 'edit 0: unknown field "x" (an edit holds only "path" and "handles")'],
+      [{ version: 1, edits: [], extra: true }, 'the edits document has an unknown field "extra" (it holds only "version" and "edits")'],
+      [{ version: 1, edits: {} }, '"edits" must be a list of edits, not an object'],
+    ];
+    for (const [document, words] of cases) {
+      expect(validateEdits(document)).toEqual({ ok: false, error: words });
+      expect(() => editor.applyEdits(document as EditsDocument)).toThrow(words);
+    }
+    editor.free();
+  });
+
+  it('whatever a drag accepts, the edits it leaves are a document the same core reads back; the rest is refused, changing nothing', () => {
+    // xorshift32: deterministic, so a failure repeats.
+    let state = 0x2545f491;
+    const random = () => {
+      state ^= state << 13;
+      state ^= state >>> 17;
+      state ^= state << 5;
+      return (state >>> 0) / 2 ** 32;
+    };
+    const grammars = [LEAFY, '#angle 30\naxiom: F(1e-9)[+F(1e-9)]F(1e-9)[-F(5)]F', '#angle 25\naxiom: F(1e6)[+F(1e-6)[-F(1)]F(1e6)]F(3)'];
+    let accepted = 0;
+    let refused = 0;
+    for (const grammar of grammars) {
+      const { editor } = editPlant(grammar, { iterations: 2 });
+      const { editor: fresh } = editPlant(grammar, { iterations: 2 });
+      const branches = editor.branches().length;
+      expect(branches).toBeGreaterThan(0);
+      for (let k = 0; k < 200; k++) {
+        const branch = Math.floor(random() * branches);
+        const handle = (1 + Math.floor(random() * 3)) as 1 | 2 | 3;
+        const at = point(editor.controlPoints(), 4 * branch + handle);
+        const scale = 10 ** (-8 + 20 * random());
+        const target: Vec3 = [at[0] + scale * (2 * random() - 1), at[1] + scale * (2 * random() - 1), at[2] + scale * (2 * random() - 1)];
+        const before = JSON.stringify(editor.edits());
+        try {
+          editor.drag(branch, handle, target);
+          accepted++;
+        } catch (error) {
+          expect(error).toBeInstanceOf(DragRefused);
+          expect((error as Error).message).toMatch(/branch lengths|no length/);
+          expect(JSON.stringify(editor.edits()), 'a refused drag changes nothing').toBe(before);
+          refused++;
+        }
+        // Fed back: the page's own check and the core accept it, and every edit applies.
+        const document = editor.edits();
+        expect(validateEdits(JSON.parse(JSON.stringify(document)))).toEqual({ ok: true, document });
+        const { report } = fresh.applyEdits(document);
+        expect(report.notApplied).toEqual([]);
+        expect(fresh.edits()).toEqual(document);
+      }
+      editor.free();
+      fresh.free();
+    }
+    expect(accepted).toBeGreaterThan(200);
+    expect(refused).toBeGreaterThan(50);
   });
 });

@@ -55,6 +55,11 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     status: els.status,
     stop: els.stopBuild,
     staleBadge: els.staleBadge,
+    inspectorStale: els.inspectorStale,
+    workerReplaced: () => {
+      contexts.reload();
+      derivationView.reload();
+    },
     text: currentText,
     options: () => ({ iterations: derivation.iterations(), seed: derivation.seed(), sides: viewOptions.values.sides, smoothAll: viewOptions.values.smoothAll }),
     diagnosticsChanged: () => editor?.refreshDiagnostics(),

@@ -20,13 +20,38 @@
 mod drag;
 
 use super::deform::{self, Rigid};
-use super::edits::{BranchEdit, EditReport, NotApplied};
+use super::edits::{check_edit, BranchEdit, EditReport, NotApplied, MAX_EDITS, MAX_OFFSET};
 use super::{BranchTree, Item, NO_BRANCH};
 use crate::mesh::parts::MeshParts;
 use crate::mesh::{self, MeshBuffers, MeshOptions, WidthUnit};
 use crate::turtle::Skeleton;
 use drag::DragSession;
 use glam::DVec3;
+
+/// Why [`BranchEditor::drag`] refused, changing nothing.
+#[derive(Clone, Debug, PartialEq)]
+pub enum DragError {
+    /// A caller's mistake: no such branch or handle, or a position that is not finite.
+    Invalid(String),
+    /// A target the edits document could not hold (a handle moved more than
+    /// [`MAX_OFFSET`] branch lengths, a branch of no length, a path or an edit count past the
+    /// document's limits): a user's drag too far, to be ignored, not a bug.
+    OutOfReach(String),
+}
+
+impl std::fmt::Display for DragError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            DragError::Invalid(message) | DragError::OutOfReach(message) => f.write_str(message),
+        }
+    }
+}
+
+impl From<DragError> for String {
+    fn from(error: DragError) -> String {
+        error.to_string()
+    }
+}
 
 /// Which vertices a change touched.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -228,7 +253,10 @@ impl BranchEditor {
     /// Moves handle `handle` (1, 2 or 3: P1, P2, P3) of `branch` to `position` (world
     /// coordinates), updating that branch's edit, re-placing it and its descendants in
     /// `skeleton`, and re-meshing only what changed in `mesh` (or all of it, see
-    /// [`MeshChange::full`]). Errors name a bad branch, handle or position.
+    /// [`MeshChange::full`]). Errors name a bad branch, handle or position ([`DragError::Invalid`])
+    /// or a target whose edit the edits document could not hold ([`DragError::OutOfReach`]); either
+    /// way nothing changes, so every edit a drag makes is one [`parse_edits`](super::parse_edits)
+    /// accepts.
     pub fn drag(
         &mut self,
         branch: u32,
@@ -236,20 +264,20 @@ impl BranchEditor {
         position: DVec3,
         skeleton: &mut Skeleton,
         mesh: &mut MeshBuffers,
-    ) -> Result<&MeshChange, String> {
+    ) -> Result<&MeshChange, DragError> {
         if branch as usize >= self.tree.len() {
-            return Err(format!(
+            return Err(DragError::Invalid(format!(
                 "no branch {branch}: the plant has {} branches",
                 self.tree.len()
-            ));
+            )));
         }
         if !(1..=3).contains(&handle) {
-            return Err(format!(
+            return Err(DragError::Invalid(format!(
                 "handle {handle}: the handles are 1, 2 and 3 (P1, P2, P3)"
-            ));
+            )));
         }
         if !position.is_finite() {
-            return Err("the position is not finite".into());
+            return Err(DragError::Invalid("the position is not finite".into()));
         }
         let b = &self.tree.branches[branch as usize];
         let inherited = self.inherited[branch as usize];
@@ -260,11 +288,37 @@ impl BranchEditor {
             offset.dot(frame[1]),
             offset.dot(frame[2]),
         ) / b.length;
+        // Refused here, before anything changes, when the edit would be one the edits document
+        // cannot hold: whatever a drag makes, `edits()` writes and `parse_edits` reads back.
+        let mut handles = self.edits[branch as usize].unwrap_or([DVec3::ZERO; 3]);
+        handles[handle - 1] = local;
+        if !local.is_finite() {
+            return Err(DragError::OutOfReach(
+                "the branch has no length, so its handles cannot be placed in branch lengths"
+                    .into(),
+            ));
+        }
+        if local.abs().max_element() > MAX_OFFSET {
+            return Err(DragError::OutOfReach(format!(
+                "the target is {:.0} branch lengths from the handle's place; an edit moves a handle at most {MAX_OFFSET} branch lengths",
+                local.abs().max_element()
+            )));
+        }
+        if let Err(e) = check_edit(b.path.len(), &handles) {
+            return Err(DragError::OutOfReach(format!(
+                "the edit could not be kept: {e}"
+            )));
+        }
+        if self.edits[branch as usize].is_none()
+            && self.edits.iter().filter(|e| e.is_some()).count() >= MAX_EDITS
+        {
+            return Err(DragError::OutOfReach(format!(
+                "the plant already has {MAX_EDITS} edited branches, the most an edits document holds"
+            )));
+        }
         if self.session.as_ref().is_none_or(|s| s.branch != branch) {
             self.session = self.start_session(branch, skeleton, mesh);
         }
-        let mut handles = self.edits[branch as usize].unwrap_or([DVec3::ZERO; 3]);
-        handles[handle - 1] = local;
         self.edits[branch as usize] = Some(handles);
         let joints = deform::place_subtree(
             &self.original,

@@ -13,7 +13,7 @@
 //! re-derivation makes it longer or shorter.
 
 use glam::DVec3;
-use serde::{Deserialize, Serialize};
+use serde::Serialize;
 
 /// The version of the edits document this core writes and reads.
 pub const EDITS_VERSION: u32 = 1;
@@ -56,30 +56,75 @@ impl EditReport {
     }
 }
 
-#[derive(Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
+#[derive(Serialize)]
 struct Document {
     version: u32,
     edits: Vec<EditJson>,
 }
 
-#[derive(Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
+#[derive(Serialize)]
 struct EditJson {
     path: Vec<u32>,
     handles: [[f64; 3]; 3],
 }
 
-/// Reads an edits document. Errors say what is wrong in words (the text may come from a link).
-pub fn parse_edits(json: &str) -> Result<Vec<BranchEdit>, String> {
-    #[derive(Deserialize)]
-    struct Version {
-        version: Option<serde_json::Value>,
+/// Checks one edit against the document's limits: what [`parse_edits`] refuses, and what the
+/// branch editor checks before a drag makes an edit (so every document it writes reads back).
+pub fn check_edit(path_len: usize, handles: &[DVec3; 3]) -> Result<(), String> {
+    if path_len == 0 || path_len > MAX_PATH {
+        return Err(format!(
+            "a path has 1 to {MAX_PATH} indices, not {path_len}"
+        ));
     }
+    if handles
+        .iter()
+        .any(|h| !h.is_finite() || h.abs().max_element() > MAX_OFFSET)
+    {
+        return Err(format!(
+            "handle offsets must be finite numbers of at most {MAX_OFFSET} branch lengths"
+        ));
+    }
+    Ok(())
+}
+
+/// What a JSON value is, in words.
+fn kind(value: &serde_json::Value) -> &'static str {
+    match value {
+        serde_json::Value::Null => "null",
+        serde_json::Value::Bool(_) => "true or false",
+        serde_json::Value::Number(_) => "a number",
+        serde_json::Value::String(_) => "a string",
+        serde_json::Value::Array(_) => "a list",
+        serde_json::Value::Object(_) => "an object",
+    }
+}
+
+/// The one field of `object` not in `known`, if any.
+fn unknown_field<'a>(
+    object: &'a serde_json::Map<String, serde_json::Value>,
+    known: &[&str],
+) -> Option<&'a str> {
+    object
+        .keys()
+        .map(String::as_str)
+        .find(|k| !known.contains(k))
+}
+
+/// Reads an edits document. Errors say what is wrong in words, naming the edit and the field
+/// (the text may come from a link or a file written by hand); a leading byte order mark, as some
+/// editors write, is ignored.
+pub fn parse_edits(json: &str) -> Result<Vec<BranchEdit>, String> {
+    let json = json.strip_prefix('\u{feff}').unwrap_or(json);
+    let value: serde_json::Value =
+        serde_json::from_str(json).map_err(|e| format!("the edits are not valid JSON: {e}"))?;
+    let Some(document) = value.as_object() else {
+        return Err(format!(
+            "the edits are not a JSON object (the document is {})",
+            kind(&value)
+        ));
+    };
     // The version first, so a newer document says so instead of failing on a new field.
-    let version: Version =
-        serde_json::from_str(json).map_err(|e| format!("the edits are not a JSON object: {e}"))?;
-    match version.version {
+    match document.get("version") {
         Some(serde_json::Value::Number(n)) if n.as_u64() == Some(EDITS_VERSION as u64) => {}
         Some(serde_json::Value::Number(n)) if n.as_u64().is_some_and(|v| v > 1) => {
             return Err(format!(
@@ -88,37 +133,113 @@ pub fn parse_edits(json: &str) -> Result<Vec<BranchEdit>, String> {
         }
         _ => return Err(format!("the edits have no \"version\": {EDITS_VERSION}")),
     }
-    let document: Document =
-        serde_json::from_str(json).map_err(|e| format!("the edits are malformed: {e}"))?;
-    if document.edits.len() > MAX_EDITS {
+    if let Some(field) = unknown_field(document, &["version", "edits"]) {
+        return Err(format!(
+            "the edits document has an unknown field \"{field}\" (it holds only \"version\" and \"edits\")"
+        ));
+    }
+    let edits = match document.get("edits") {
+        Some(serde_json::Value::Array(edits)) => edits,
+        Some(other) => {
+            return Err(format!(
+                "\"edits\" must be a list of edits, not {}",
+                kind(other)
+            ))
+        }
+        None => return Err("the edits document has no \"edits\" list".into()),
+    };
+    if edits.len() > MAX_EDITS {
         return Err(format!("more than {MAX_EDITS} edits"));
     }
-    document
-        .edits
-        .into_iter()
+    edits
+        .iter()
         .enumerate()
-        .map(|(k, e)| {
-            if e.path.is_empty() || e.path.len() > MAX_PATH {
-                return Err(format!(
-                    "edit {k}: a path has 1 to {MAX_PATH} indices, not {}",
-                    e.path.len()
-                ));
-            }
-            let handles = e.handles.map(DVec3::from_array);
-            if handles
-                .iter()
-                .any(|h| !h.is_finite() || h.abs().max_element() > MAX_OFFSET)
-            {
-                return Err(format!(
-                    "edit {k}: handle offsets must be finite numbers of at most {MAX_OFFSET} branch lengths"
-                ));
-            }
-            Ok(BranchEdit {
-                path: e.path,
-                handles,
-            })
-        })
+        .map(|(k, edit)| read_edit(edit).map_err(|e| format!("edit {k}: {e}")))
         .collect()
+}
+
+/// One edit of the document: `{"path": [...], "handles": [[h, l, u], [h, l, u], [h, l, u]]}`.
+fn read_edit(edit: &serde_json::Value) -> Result<BranchEdit, String> {
+    let Some(edit) = edit.as_object() else {
+        return Err(format!(
+            "an edit is an object with \"path\" and \"handles\", not {}",
+            kind(edit)
+        ));
+    };
+    if let Some(field) = unknown_field(edit, &["path", "handles"]) {
+        return Err(format!(
+            "unknown field \"{field}\" (an edit holds only \"path\" and \"handles\")"
+        ));
+    }
+    let path = match edit.get("path") {
+        Some(serde_json::Value::Array(path)) => path,
+        Some(other) => {
+            return Err(format!(
+                "\"path\" must be a list of branch indices, not {}",
+                kind(other)
+            ))
+        }
+        None => return Err("no \"path\"".into()),
+    };
+    let path = path
+        .iter()
+        .enumerate()
+        .map(|(i, index)| {
+            index
+                .as_u64()
+                .and_then(|index| u32::try_from(index).ok())
+                .ok_or_else(|| {
+                    format!(
+                        "index {i} of \"path\" must be a whole number from 0 to {}, not {index}",
+                        u32::MAX
+                    )
+                })
+        })
+        .collect::<Result<Vec<u32>, String>>()?;
+    let handles = match edit.get("handles") {
+        Some(serde_json::Value::Array(handles)) => handles,
+        Some(other) => {
+            return Err(format!(
+                "\"handles\" must be a list of 3 points (P1, P2, P3), not {}",
+                kind(other)
+            ))
+        }
+        None => return Err("no \"handles\"".into()),
+    };
+    if handles.len() != 3 {
+        return Err(format!(
+            "\"handles\" must hold 3 points (P1, P2, P3), not {}",
+            handles.len()
+        ));
+    }
+    let mut points = [DVec3::ZERO; 3];
+    for (n, handle) in handles.iter().enumerate() {
+        let numbers = handle.as_array().filter(|h| h.len() == 3).ok_or_else(|| {
+            let what = match handle.as_array() {
+                Some(h) => format!("{} numbers", h.len()),
+                None => kind(handle).to_string(),
+            };
+            format!(
+                "handle P{} must be 3 numbers (heading, left, up), not {what}",
+                n + 1
+            )
+        })?;
+        for (c, number) in numbers.iter().enumerate() {
+            points[n][c] = number.as_f64().ok_or_else(|| {
+                format!(
+                    "handle P{} must be 3 numbers (heading, left, up), but its number {} is {}",
+                    n + 1,
+                    c + 1,
+                    kind(number)
+                )
+            })?;
+        }
+    }
+    check_edit(path.len(), &points)?;
+    Ok(BranchEdit {
+        path,
+        handles: points,
+    })
 }
 
 /// Writes an edits document (numbers in shortest round-trip form).
@@ -167,22 +288,49 @@ mod tests {
     #[test]
     fn bad_documents_say_what_is_wrong() {
         let cases = [
-            ("[]", "not a JSON object"),
+            ("[]", "not a JSON object (the document is a list)"),
+            ("{\"version\": 1,", "not valid JSON"),
             ("{\"edits\": []}", "no \"version\""),
             ("{\"version\": 2, \"edits\": []}", "newer Meristem"),
-            ("{\"version\": 1}", "malformed"),
-            ("{\"version\": 1, \"edits\": [], \"x\": 1}", "malformed"),
+            ("{\"version\": 1}", "no \"edits\" list"),
+            ("{\"version\": 1, \"edits\": {}}", "\"edits\" must be a list of edits, not an object"),
+            ("{\"version\": 1, \"edits\": [], \"x\": 1}", "unknown field \"x\""),
+            ("{\"version\": 1, \"edits\": [3]}", "edit 0: an edit is an object"),
             (
                 "{\"version\": 1, \"edits\": [{\"path\": [], \"handles\": [[0,0,0],[0,0,0],[0,0,0]]}]}",
                 "edit 0: a path",
             ),
             (
                 "{\"version\": 1, \"edits\": [{\"path\": [-1], \"handles\": [[0,0,0],[0,0,0],[0,0,0]]}]}",
-                "malformed",
+                "edit 0: index 0 of \"path\" must be a whole number from 0 to 4294967295, not -1",
+            ),
+            (
+                "{\"version\": 1, \"edits\": [{\"path\": [0, 1.5], \"handles\": [[0,0,0],[0,0,0],[0,0,0]]}]}",
+                "edit 0: index 1 of \"path\"",
             ),
             (
                 "{\"version\": 1, \"edits\": [{\"path\": [0], \"handles\": [[0,0,0],[0,0]]}]}",
-                "malformed",
+                "edit 0: \"handles\" must hold 3 points (P1, P2, P3), not 2",
+            ),
+            (
+                "{\"version\": 1, \"edits\": [{\"path\": [0], \"handles\": [[0,0,0],[0,0,0],[0,0,0],[0,0,0]]}]}",
+                "edit 0: \"handles\" must hold 3 points (P1, P2, P3), not 4",
+            ),
+            (
+                "{\"version\": 1, \"edits\": [{\"path\": [0], \"handles\": [[0,0,0],[0,0],[0,0,0]]}]}",
+                "edit 0: handle P2 must be 3 numbers (heading, left, up), not 2 numbers",
+            ),
+            (
+                "{\"version\": 1, \"edits\": [{\"path\": [0], \"handles\": [[0,0,0],[0,0,0],[0,\"1\",0]]}]}",
+                "edit 0: handle P3 must be 3 numbers (heading, left, up), but its number 2 is a string",
+            ),
+            (
+                "{\"version\": 1, \"edits\": [{\"path\": [0], \"handles\": [[0,0,0],[0,0,0],[0,0,0]], \"x\": 1}]}",
+                "edit 0: unknown field \"x\"",
+            ),
+            (
+                "{\"version\": 1, \"edits\": [{\"handles\": [[0,0,0],[0,0,0],[0,0,0]]}]}",
+                "edit 0: no \"path\"",
             ),
             (
                 "{\"version\": 1, \"edits\": [{\"path\": [0], \"handles\": [[0,0,0],[0,0,0],[0,0,1e9]]}]}",
@@ -194,5 +342,22 @@ mod tests {
             assert!(error.contains(expected), "{json}: {error}");
         }
         assert_eq!(parse_edits("{\"version\": 1, \"edits\": []}"), Ok(vec![]));
+    }
+
+    #[test]
+    fn a_byte_order_mark_is_ignored() {
+        let edits = vec![BranchEdit {
+            path: vec![0, 1],
+            handles: [
+                DVec3::new(0.0, 0.25, 0.0),
+                DVec3::ZERO,
+                DVec3::new(-1.0, 0.0, 2.0),
+            ],
+        }];
+        let json = write_edits(&edits);
+        assert_eq!(parse_edits(&format!("\u{feff}{json}")), Ok(edits.clone()));
+        assert_eq!(parse_edits(&format!("\u{feff}  {json}\r\n")), Ok(edits));
+        // Only at the start: a mark inside is not JSON.
+        assert!(parse_edits(&format!("{json}\u{feff}")).is_err());
     }
 }

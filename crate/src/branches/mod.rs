@@ -29,8 +29,11 @@ pub mod edits;
 pub mod fit;
 
 pub use deform::Rigid;
-pub use editor::{BranchEditor, MeshChange};
-pub use edits::{parse_edits, write_edits, BranchEdit, EditReport, NotApplied, EDITS_VERSION};
+pub use editor::{BranchEditor, DragError, MeshChange};
+pub use edits::{
+    check_edit, parse_edits, write_edits, BranchEdit, EditReport, NotApplied, EDITS_VERSION,
+    MAX_EDITS, MAX_OFFSET, MAX_PATH,
+};
 
 use crate::turtle::{Segment, Skeleton};
 use glam::DVec3;

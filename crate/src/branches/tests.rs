@@ -500,14 +500,17 @@ fn bad_drags_are_errors_not_panics() {
     assert!(b
         .drag(3, 1, glam::DVec3::ZERO)
         .unwrap_err()
+        .to_string()
         .contains("no branch 3"));
     assert!(b
         .drag(0, 0, glam::DVec3::ZERO)
         .unwrap_err()
+        .to_string()
         .contains("handles are 1, 2 and 3"));
     assert!(b
         .drag(0, 1, glam::DVec3::NAN)
         .unwrap_err()
+        .to_string()
         .contains("not finite"));
     // A plant with no segment has no branch.
     let mut empty = built("axiom: +");

@@ -1667,6 +1667,62 @@ fn separate(s: &str) -> String {
 mod tests {
     use super::*;
 
+    /// 200 chained `#define`s, each using the one before twice (through a macro with an
+    /// argument, which is expanded), an `#if` on the last, and an axiom drawing it.
+    fn define_chain(links: usize) -> String {
+        let mut text = String::from("#define HALF(x) (x)/2\n#define C0 1\n");
+        for i in 1..=links {
+            text += &format!("#define C{i} HALF(C{} + C{})\n", i - 1, i - 1);
+        }
+        text += &format!(
+            "Lsystem: 1\nderivation length: 1\nAxiom: A\n#if C{links} > 0.5\nA --> F(C{links})\n#else\nA --> F(7)\n#endif\nendlsystem\n"
+        );
+        text
+    }
+
+    #[test]
+    fn chained_defines_are_expanded_once_each_not_as_doubling_text() {
+        let links = 200;
+        let text = define_chain(links);
+        // The preprocessor alone: one expansion a link (HALF), none of a kept macro.
+        let functions = cpp_functions();
+        let names: Vec<&str> = functions.iter().map(String::as_str).collect();
+        let none = |_: &str| None;
+        let mut pre = cpp::Preprocessor::new(&none, &names);
+        let out = pre.run(lines(&text, Flavour::Cpfg), 0);
+        assert_eq!(pre.expansions, links, "{:?}", pre.notes);
+        assert!(pre.notes.is_empty(), "{:?}", pre.notes);
+        let kept: Vec<&str> = out
+            .iter()
+            .map(|l| l.code.as_str())
+            .filter(|c| c.starts_with("#define"))
+            .collect();
+        assert_eq!(kept.len(), links + 1);
+        assert_eq!(
+            kept[links],
+            format!("#define C{links} (C{} + C{})/2", links - 1, links - 1)
+        );
+        // The `#if` read C200's number (1), so the first production is the one kept.
+        assert!(out
+            .iter()
+            .any(|l| l.code.trim() == format!("A --> F(C{links})")));
+        assert!(!out.iter().any(|l| l.code.contains("F(7)")));
+
+        // The whole import: linear in size, and the plant it gives draws F(1).
+        let import = import(&text, Flavour::Cpfg);
+        assert!(import.notes.is_empty(), "{:?}", import.notes);
+        assert!(
+            import.text.len() < 60 * links,
+            "{} bytes for {links} links",
+            import.text.len()
+        );
+        let built = crate::pipeline::build(&import.text, &crate::BuildOptions::default());
+        let segments = &built.plant.skeleton.segments;
+        assert_eq!(segments.len(), 1, "{}", import.text);
+        let length = (segments[0].end - segments[0].start).length();
+        assert!((length - 1.0).abs() < 1e-9, "{length}");
+    }
+
     fn body(import: &Import) -> Vec<&str> {
         import
             .text

@@ -8,6 +8,7 @@
 
 pub mod curve;
 mod lines;
+mod monotone;
 pub mod parts;
 pub mod polygon;
 pub mod sphere;
@@ -276,6 +277,11 @@ pub fn resolve_width_unit(skeleton: &Skeleton, unit: WidthUnit) -> f64 {
     }
 }
 
+/// Fewest sides a tube may have in the view options (the studio's, links', the CLI's `--sides`).
+pub const MIN_SIDES: u32 = 3;
+/// Most sides a tube may have in the view options.
+pub const MAX_SIDES: u32 = 64;
+
 /// Options of the mesh stage.
 #[derive(Clone, Debug, PartialEq)]
 pub struct MeshOptions {
@@ -306,13 +312,15 @@ impl Default for MeshOptions {
 }
 
 impl MeshOptions {
-    /// The default options with the studio's view options: `sides` (clamped to 3..=64, default
-    /// 6) and `smooth_all` (default false). The wasm boundary and the CLI's `--sides` and
-    /// `--smooth-all` both build their meshes with these, so a download is the mesh on screen.
+    /// The default options with the studio's view options: `sides` (clamped to
+    /// [`MIN_SIDES`]..=[`MAX_SIDES`], default 6; the CLI refuses `--sides` out of that range
+    /// before it gets here) and `smooth_all` (default false). The wasm boundary and the CLI's
+    /// `--sides` and `--smooth-all` both build their meshes with these, so a download is the mesh
+    /// on screen.
     pub fn view(sides: Option<u32>, smooth_all: Option<bool>) -> MeshOptions {
         let defaults = MeshOptions::default();
         MeshOptions {
-            sides: sides.map_or(defaults.sides, |s| s.clamp(3, 64)),
+            sides: sides.map_or(defaults.sides, |s| s.clamp(MIN_SIDES, MAX_SIDES)),
             smooth_all: smooth_all.unwrap_or(defaults.smooth_all),
             ..defaults
         }

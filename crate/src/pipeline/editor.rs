@@ -2,7 +2,7 @@
 //! edits applied, meshed whole or, while a handle is dragged, only where it moved.
 
 use super::Plant;
-use crate::branches::{BranchEdit, BranchEditor, BranchTree, EditReport, MeshChange};
+use crate::branches::{BranchEdit, BranchEditor, BranchTree, DragError, EditReport, MeshChange};
 use crate::mesh::MeshOptions;
 use glam::DVec3;
 
@@ -116,13 +116,14 @@ impl PlantEditor {
     /// Drags handle `handle` (1, 2, 3 for P1, P2, P3) of branch `branch` to `position`: the
     /// branch's edit changes, it and its descendants move, and only the changed part of the mesh
     /// is rebuilt (see [`MeshChange`]). The stats' bounds follow. Errors name a bad branch,
-    /// handle or position.
+    /// handle or position, or a target too far for the edits document ([`DragError`]); then
+    /// nothing changed.
     pub fn drag(
         &mut self,
         branch: u32,
         handle: usize,
         position: DVec3,
-    ) -> Result<MeshChange, String> {
+    ) -> Result<MeshChange, DragError> {
         let plant = &mut self.plant;
         let change = self.editor.drag(
             branch,

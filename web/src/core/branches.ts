@@ -6,6 +6,15 @@ import { copyMesh, plainBuild, runBuild } from './build';
 import { guarded, ownedArray } from './init';
 import type { BuildOptions, MeshBuffers, PlantBuild, PlantStats } from './types';
 
+/**
+ * A drag the core refused, changing nothing: its target is further from the handle's place than
+ * an edits document can hold (1,000 branch lengths), or the branch has no length. A user's drag
+ * past the reach, not a bug: the handle stays where it last was.
+ */
+export class DragRefused extends Error {
+  override name = 'DragRefused';
+}
+
 /** A point or an offset: x, y, z. */
 export type Vec3 = [number, number, number];
 
@@ -87,7 +96,9 @@ export interface PlantEditor {
   /**
    * Moves handle `handle` of `branch` to `position` (world coordinates): the branch's edit
    * changes, it and its descendants move, and only what moved is re-meshed. Throws on a bad
-   * branch, handle or position (a caller's bug, not a user's).
+   * branch, handle or position (a caller's bug, not a user's), and {@link DragRefused} for a
+   * target whose edit an edits document could not hold (nothing changes): so `edits()` always
+   * gives a document `applyEdits` and {@link validateEdits} accept.
    */
   drag(branch: number, handle: Handle, position: Vec3): MeshUpdate;
   /** Replaces every edit by `document`'s (rebuilding the whole mesh); throws when malformed. */
@@ -152,8 +163,44 @@ function isRecord(value: unknown): value is Record<string, unknown> {
   return typeof value === 'object' && value !== null && !Array.isArray(value);
 }
 
-function hasOnly(value: Record<string, unknown>, keys: string[]): boolean {
-  return Object.keys(value).every((k) => keys.includes(k));
+/** What a JSON value is, in words (as the core says it). */
+function kind(value: unknown): string {
+  if (value === null) return 'null';
+  if (Array.isArray(value)) return 'a list';
+  switch (typeof value) {
+    case 'boolean':
+      return 'true or false';
+    case 'number':
+      return 'a number';
+    case 'string':
+      return 'a string';
+    default:
+      return 'an object';
+  }
+}
+
+/** What is wrong with one edit of a document, in the core's words (crate/src/branches/edits.rs), or null. */
+function editProblem(edit: unknown): string | null {
+  if (!isRecord(edit)) return `an edit is an object with "path" and "handles", not ${kind(edit)}`;
+  const extra = Object.keys(edit).find((k) => k !== 'path' && k !== 'handles');
+  if (extra !== undefined) return `unknown field "${extra}" (an edit holds only "path" and "handles")`;
+  const { path, handles } = edit;
+  if (path === undefined) return 'no "path"';
+  if (!Array.isArray(path)) return `"path" must be a list of branch indices, not ${kind(path)}`;
+  const bad = path.findIndex((i) => !(typeof i === 'number' && Number.isInteger(i) && i >= 0 && i <= 0xffffffff));
+  if (bad >= 0) return `index ${bad} of "path" must be a whole number from 0 to ${0xffffffff}, not ${JSON.stringify(path[bad])}`;
+  if (handles === undefined) return 'no "handles"';
+  if (!Array.isArray(handles)) return `"handles" must be a list of 3 points (P1, P2, P3), not ${kind(handles)}`;
+  if (handles.length !== 3) return `"handles" must hold 3 points (P1, P2, P3), not ${handles.length}`;
+  for (const [n, h] of handles.entries()) {
+    if (!Array.isArray(h) || h.length !== 3) return `handle P${n + 1} must be 3 numbers (heading, left, up), not ${Array.isArray(h) ? `${h.length} numbers` : kind(h)}`;
+    const c = h.findIndex((v) => typeof v !== 'number');
+    if (c >= 0) return `handle P${n + 1} must be 3 numbers (heading, left, up), but its number ${c + 1} is ${kind(h[c])}`;
+  }
+  if (path.length === 0 || path.length > MAX_PATH) return `a path has 1 to ${MAX_PATH} indices, not ${path.length}`;
+  if (!(handles as number[][]).every((h) => h.every((v) => Number.isFinite(v) && Math.abs(v) <= MAX_OFFSET)))
+    return `handle offsets must be finite numbers of at most ${MAX_OFFSET} branch lengths`;
+  return null;
 }
 
 /**
@@ -169,21 +216,16 @@ export function validateEdits(value: unknown): { ok: true; document: EditsDocume
   if (typeof version === 'number' && Number.isInteger(version) && version > EDITS_VERSION)
     return fail(`the edits were written by a newer Meristem (version ${version}); this one reads version ${EDITS_VERSION}`);
   if (version !== EDITS_VERSION) return fail(`the edits have no "version": ${EDITS_VERSION}`);
-  if (!hasOnly(value, ['version', 'edits']) || !Array.isArray(edits)) return fail('the edits are malformed');
+  const extra = Object.keys(value).find((k) => k !== 'version' && k !== 'edits');
+  if (extra !== undefined) return fail(`the edits document has an unknown field "${extra}" (it holds only "version" and "edits")`);
+  if (!Array.isArray(edits)) return fail(edits === undefined ? 'the edits document has no "edits" list' : `"edits" must be a list of edits, not ${kind(edits)}`);
   if (edits.length > MAX_EDITS) return fail(`more than ${MAX_EDITS} edits`);
   const clean: BranchEdit[] = [];
   for (const [k, edit] of edits.entries()) {
-    if (!isRecord(edit) || !hasOnly(edit, ['path', 'handles']) || !Array.isArray(edit.path) || !Array.isArray(edit.handles))
-      return fail('the edits are malformed');
-    const { path, handles } = edit;
-    if (!path.every((i) => typeof i === 'number' && Number.isInteger(i) && i >= 0 && i <= 0xffffffff)) return fail('the edits are malformed');
-    if (handles.length !== 3 || !handles.every((h) => Array.isArray(h) && h.length === 3 && h.every((v) => typeof v === 'number')))
-      return fail('the edits are malformed');
-    if (path.length === 0 || path.length > MAX_PATH) return fail(`edit ${k}: a path has 1 to ${MAX_PATH} indices, not ${path.length}`);
-    const triples = handles as number[][];
-    if (!triples.every((h) => h.every((v) => Number.isFinite(v) && Math.abs(v) <= MAX_OFFSET)))
-      return fail(`edit ${k}: handle offsets must be finite numbers of at most ${MAX_OFFSET} branch lengths`);
-    clean.push({ path: [...(path as number[])], handles: triples.map((h) => [h[0], h[1], h[2]]) as [Vec3, Vec3, Vec3] });
+    const problem = editProblem(edit);
+    if (problem) return fail(`edit ${k}: ${problem}`);
+    const { path, handles } = edit as { path: number[]; handles: number[][] };
+    clean.push({ path: [...path], handles: handles.map((h) => [h[0], h[1], h[2]]) as [Vec3, Vec3, Vec3] });
   }
   return { ok: true, document: { version: EDITS_VERSION, edits: clean } };
 }
@@ -251,7 +293,13 @@ class LiveEditor implements PlantEditor {
   }
 
   drag(branch: number, handle: Handle, position: Vec3): MeshUpdate {
-    const full = guarded(() => this.core.drag(branch, handle, position[0], position[1], position[2]));
+    let full: boolean;
+    try {
+      full = guarded(() => this.core.drag(branch, handle, position[0], position[1], position[2]));
+    } catch (error) {
+      if (error instanceof Error && error.name === 'DragRefused') throw new DragRefused(error.message);
+      throw error;
+    }
     return this.update(full);
   }
 

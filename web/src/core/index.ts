@@ -35,6 +35,7 @@ export { byteOffsetToUtf16, utf16Offsets } from './offsets';
 export { importGrammar, importObject, type Dialect, type ImportedGrammar, type ImportNote, type ObjectFile } from './import';
 export {
   applyMeshUpdate,
+  DragRefused,
   editPlant,
   noEdits,
   validateEdits,

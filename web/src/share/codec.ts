@@ -1,12 +1,11 @@
 // Share links: the studio's whole state in the URL fragment, compressed (deflate-raw + base64url)
 // behind a format version, so a link made today still opens after the format grows. Decoding
 // treats every fragment as hostile: length, encoding, inflated size, JSON shape and value ranges
-// are all checked, and any failure is a message, never an exception. The grammar's text is shown
-// only as text (the editor, text nodes, escaped SVG), never as HTML, so nothing in it can run; as a
-// second line of defence, a link whose text holds executable HTML (a script element, an embedded
-// document, an event handler or a `javascript:` URL in a tag's attribute) is refused, and nothing
-// else is: `A<B>C` contexts, `#define onset 2`, `javascript:` in a comment and `#module span` are
-// grammar (`codec.test.ts` holds both directions).
+// are all checked, and any failure is a message, never an exception. The grammar's text is never
+// judged by what it says: it is only ever shown as text (the editor, text nodes, escaped SVG and
+// snippets; nothing in `web/src` puts user text into innerHTML), so a comment holding
+// `<script>…</script>` or `<img onerror=…>` is just a comment, and every legal grammar opens
+// (`codec.test.ts`; the studio end to end in `tests/browser/share.test.ts`).
 import { validateEdits, type EditsDocument } from '../core/branches';
 
 /** The fragment's key: `#s=<version>.<payload>`. */
@@ -99,47 +98,6 @@ function fail(error: string): Decoded {
   return { ok: false, error };
 }
 
-/** A start tag on one line: its name and its attributes (`<b>` contexts are tags too, without attributes). */
-const TAG = /<([a-z][\w:-]*)([\s/][^<>\n]*)?>/gi;
-
-/** Elements that run or embed code when they have a source (`<object>` without one does nothing). */
-const EMBEDDING = new Set(['iframe', 'frame', 'object', 'embed', 'applet']);
-
-/** Attribute text with character references decoded and blanks dropped, as a browser would read a URL in it. */
-function readAttributes(attributes: string): string {
-  return attributes
-    .replace(/&#x([0-9a-f]+);?/gi, (_, hex: string) => String.fromCodePoint(Math.min(parseInt(hex, 16), 0x10ffff)))
-    .replace(/&#(\d+);?/g, (_, dec: string) => String.fromCodePoint(Math.min(parseInt(dec, 10), 0x10ffff)))
-    .replace(/&colon;/gi, ':')
-    .replace(/&(tab|newline);/gi, '')
-    .replace(/[\u0000-\u0020]+/g, ' ')
-    .toLowerCase();
-}
-
-/**
- * What executable HTML `text` holds, in words, or null: a `<script>` element (closed, or with a
- * `src`), an embedded document with a source, or any tag with an `on…=` event handler or a
- * `javascript:`/`vbscript:`/`data:text/html` URL in an attribute. Grammar never matches: contexts
- * (`b<a>a`, `A < B > C`) are tags without attributes, and `onset =` or `javascript:` outside a tag
- * is just text.
- */
-export function executableHtml(text: string): string | null {
-  // A script start tag with an end tag after it (found in one pass each: no backtracking on hostile text).
-  const start = text.search(/<script\b[^<>]*>/i);
-  if (start >= 0 && /<\/script\s*>/i.test(text.slice(start))) return 'a script element';
-  for (const [, name, attributes = ''] of text.matchAll(TAG)) {
-    const tag = name.toLowerCase();
-    const read = readAttributes(attributes);
-    if (tag === 'script' && /(^|[\s/])src\s*=/.test(read)) return 'a script element';
-    if (EMBEDDING.has(tag) && /(^|[\s/])(src|srcdoc|data|code)\s*=/.test(read)) return `an embedded document (<${tag}>)`;
-    if (/(^|[\s/"'])on[a-z]+\s*=/.test(read)) return `an event handler in <${tag}>`;
-    if (/=\s*["']?\s*(javascript|vbscript|data\s*:\s*text\/html)/.test(read.replace(/\s*:\s*/g, ':').replace(/(java|vb)\s+script/g, '$1script'))) {
-      return `a script URL in <${tag}>`;
-    }
-  }
-  return null;
-}
-
 function isRecord(value: unknown): value is Record<string, unknown> {
   return typeof value === 'object' && value !== null && !Array.isArray(value);
 }
@@ -183,8 +141,6 @@ export function validate(json: unknown): Decoded {
   const { text, iterations, seed, sliders, view, camera, edits } = json;
   if (typeof text !== 'string') return fail('the link holds no grammar text');
   if (text.length > MAX_TEXT) return fail(`the grammar in the link is too long (${text.length} characters; at most ${MAX_TEXT})`);
-  const html = executableHtml(text);
-  if (html) return fail(`the grammar in the link holds executable HTML (${html}), which no grammar needs`);
   const state: SharedState = { text };
   if (iterations !== undefined) {
     if (!isWhole(iterations, MAX_ITERATIONS)) return fail(`the link’s iterations are not a whole number from 0 to ${MAX_ITERATIONS}`);

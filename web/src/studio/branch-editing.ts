@@ -7,6 +7,7 @@
 // its descendants, and only the vertices that moved are uploaded.
 import {
   applyMeshUpdate,
+  DragRefused,
   editPlant,
   noEdits,
   type BuildOptions,
@@ -14,6 +15,7 @@ import {
   type EditsDocument,
   type Handle,
   type MeshBuffers,
+  type MeshUpdate,
   type PlantEditor,
 } from '../core';
 import type { PlantView } from '../view';
@@ -233,7 +235,14 @@ export class BranchEditSession {
     const at = 12 * this.selected + 3 * drag.handle;
     const target = this.view.dragTarget(event.clientX, event.clientY, [points[at], points[at + 1], points[at + 2]]);
     if (!target) return;
-    const update = this.editor.drag(this.selected, drag.handle, target);
+    let update: MeshUpdate;
+    try {
+      update = this.editor.drag(this.selected, drag.handle, target);
+    } catch (error) {
+      // Past the reach of an edit (the pointer near the horizon): the handle stays where it was.
+      if (error instanceof DragRefused) return;
+      throw error;
+    }
     if (update.full && update.mesh) {
       this.mesh = update.mesh;
       this.view.showPlant(this.mesh, this.host.shown()?.flat ?? false);

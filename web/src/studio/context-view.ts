@@ -136,6 +136,15 @@ export class ContextView {
     this.refresh();
   }
 
+  /**
+   * Asks the build on screen again for everything shown (the string's rows, the highlight and its
+   * words): after its worker was replaced, answers lost with that worker come back.
+   */
+  reload(): void {
+    this.panel.reload();
+    this.refresh();
+  }
+
   /** Recomputes the highlight and the words for the current build, focus and mode. */
   private refresh(): void {
     const ticket = ++this.ticket;

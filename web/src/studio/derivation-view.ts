@@ -116,6 +116,15 @@ export class DerivationView {
     if (this.shown) void this.load();
   }
 
+  /**
+   * Asks the build again (when shown; else when next shown): after its worker was replaced, a
+   * derivation lost with that worker comes back.
+   */
+  reload(): void {
+    this.stale = true;
+    if (this.shown) void this.load();
+  }
+
   /** The view's tab was shown or hidden: it computes only while shown. */
   setShown(shown: boolean): void {
     this.shown = shown;

@@ -20,6 +20,16 @@ export interface LivePreviewParts {
   /** Stops the build under way (shown while one takes longer than {@link BUILDING_AFTER}). */
   stop?: HTMLButtonElement;
   staleBadge: HTMLElement;
+  /**
+   * The String and Derivation panels' mark, shown with the view's stale badge: the panels go on
+   * showing the plant on screen, which is then of an earlier text.
+   */
+  inspectorStale?: HTMLElement;
+  /**
+   * Called after a build was stopped or crashed (its worker replaced): the panels ask the plant on
+   * screen again (its build is kept anew by the next worker), so nothing they lost stays empty.
+   */
+  workerReplaced?: () => void;
   /** The grammar text now. */
   text: () => string;
   /** The build options now (iterations, seed, view options). */
@@ -147,6 +157,11 @@ export class LivePreview {
     this.parts.view.setStale(stale);
     this.parts.staleBadge.textContent = `Stale — ${why}`;
     this.parts.staleBadge.hidden = !stale;
+    const mark = this.parts.inspectorStale;
+    if (mark) {
+      mark.hidden = !stale;
+      mark.title = `The string and the derivation are of the plant shown: stale — ${why}`;
+    }
   }
 
   /** Calls `listener` after each sketch (a big plant as lines, its tubes to follow) is on screen. */
@@ -167,8 +182,7 @@ export class LivePreview {
       { positions: empty, normals: empty, colors: empty, indices: new Uint32Array(0), ranges: new Uint32Array(0), uvs: empty, materialRanges: new Uint32Array(0), lines: sketch.lines, lineColors: sketch.lineColors, segmentEnds: empty, segmentColors: empty, segmentModules: new Uint32Array(0) },
       sketch.flat,
     );
-    this.parts.view.setStale(false);
-    this.parts.staleBadge.hidden = true;
+    this.markStale(false, '');
     // The status line keeps the last report until the build: a second text change per keystroke
     // costs a compositor pass that, without a GPU, delays the tubes' frame by a second.
     for (const listener of this.sketchListeners) listener(sketch);
@@ -199,6 +213,7 @@ export class LivePreview {
         showStatus(status, { state: 'stopped', text: `Build stopped — ${plant}; change the text or an option to build again` });
         this.markStale(shown, 'the build was stopped');
       }
+      if (shown) this.parts.workerReplaced?.();
       status.dataset.generation = String(++this.generation);
       return;
     }

@@ -43,6 +43,7 @@ export function studioElements() {
       plantOnly: [...document.querySelectorAll<HTMLElement>('.view-tools .plant-only')],
     },
     staleBadge: byId('stale-badge', HTMLElement),
+    inspectorStale: byId('inspector-stale', HTMLElement),
     layout: {
       paneToggle: byId('pane-toggle', HTMLButtonElement),
       fullscreen: byId('fullscreen', HTMLButtonElement),

@@ -67,6 +67,11 @@ export class StringPanel {
     this.queueRender();
   }
 
+  /** Renders the rows in view again, asking the inspector anew. */
+  reload(): void {
+    this.queueRender();
+  }
+
   /** Sets the highlight: each module's role, and optionally a colour per module (colour by production). */
   highlight(roleOf: (module: number) => ModuleRole | null, colourOf: ((module: number) => string | null) | null = null): void {
     this.roleOf = roleOf;

@@ -194,8 +194,11 @@ describe('BuildClient', () => {
     expect(latest().messages).toContainEqual({ kind: 'free', build: 1 });
   });
 
-  it('answers questions with empty answers once the worker that kept the build is gone', async () => {
-    const outcome = client.request('A', {});
+  // Was: "answers questions with empty answers once the worker that kept the build is gone". The
+  // plant stays on the page after its worker goes, so its panels must go on answering (issue 19):
+  // only a question the worker took with it gets the empty answer.
+  it('answers a question the worker took with it empty; later ones from a fresh worker that keeps the build again', async () => {
+    const outcome = client.request('A', { iterations: 3 });
     latest().answer();
     const result = await outcome;
     if (result.kind !== 'built') throw new Error('not built');
@@ -203,7 +206,44 @@ describe('BuildClient', () => {
     void client.request('B', {});
     latest().crash();
     expect(await open).toBeNull();
-    expect(await result.result.inspector.moduleTexts(0, 5)).toEqual([]);
+    expect(workers).toHaveLength(1);
+    const texts = result.result.inspector.moduleTexts(0, 5);
+    expect(workers, 'a fresh worker').toHaveLength(2);
+    expect(latest().messages).toEqual([
+      { kind: 'keep', build: 3, source: 'A', options: { iterations: 3 } },
+      { kind: 'inspect', id: 2, build: 3, question: 'moduleTexts', args: [0, 5] },
+    ]);
+    latest().reply(['F', '[']);
+    expect(await texts).toEqual(['F', '[']);
+    expect(client.rekept).toBe(1);
+  });
+
+  it('keeps the plant on screen answering after Stop: built again once by the new worker, freed there', async () => {
+    const shown = client.request('shown', { seed: 7 });
+    latest().answer();
+    const result = await shown;
+    if (result.kind !== 'built') throw new Error('not built');
+    const slow = client.request('slow', {});
+    expect(client.stop()).toBe(true);
+    expect(await slow).toEqual({ kind: 'stopped' });
+    const fresh = latest();
+    expect(fresh).not.toBe(workers[0]);
+    const sequence = result.result.inspector.sequence(100);
+    const hash = result.result.inspector.derivedHash();
+    expect(fresh.messages.filter((m) => m.kind === 'keep'), 'built again once').toEqual([{ kind: 'keep', build: 3, source: 'shown', options: { seed: 7 } }]);
+    expect(fresh.messages.filter((m) => m.kind === 'inspect').map((m) => m.kind === 'inspect' && m.build)).toEqual([3, 3]);
+    fresh.reply('0123456789abcdef');
+    expect(await hash).toBe('0123456789abcdef');
+    const answered = fresh.messages.filter((m) => m.kind === 'inspect')[0];
+    // The first question is answered too (the fake replies to the last one asked only).
+    (fresh as unknown as { onMessage: (e: { data: WorkerResponse }) => void }).onMessage({ data: { kind: 'inspected', id: answered.kind === 'inspect' ? answered.id : 0, answer: [] } });
+    expect(await sequence).toEqual([]);
+    // A build after it is asked of the same worker, after the kept one.
+    void client.request('next', {});
+    expect(fresh.messages.at(-1)).toMatchObject({ kind: 'build', source: 'next' });
+    result.result.inspector.free();
+    expect(fresh.messages.at(-1)).toEqual({ kind: 'free', build: 3 });
+    expect(workers[0].messages.filter((m) => m.kind === 'free'), 'nothing sent to the dead worker').toEqual([]);
   });
 
   it("forwards the running request's progress while it is wanted", async () => {

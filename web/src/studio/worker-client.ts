@@ -108,6 +108,8 @@ export class BuildClient {
   private readonly now: () => number;
   /** Workers started so far (the first one included): more than one means a restart. */
   workersStarted = 0;
+  /** Kept builds built again by a new worker so far (see {@link ask}). */
+  rekept = 0;
 
   constructor(
     private readonly createWorker: () => WorkerLike,
@@ -212,19 +214,29 @@ export class BuildClient {
     this.questions.clear();
   }
 
-  /** Asks `worker`'s kept build `build` a question; the fallback if that worker is gone. */
-  ask<T extends InspectAnswer>(worker: WorkerLike, build: number, question: InspectQuestion, args: number[], fallback: T): Promise<T> {
-    if (worker !== this.worker) return Promise.resolve(fallback);
+  /**
+   * Asks kept build `kept` a question. When the worker that kept it was replaced (Stop, a crash, an
+   * abandoned build) the current one builds it again first, once, from its text and options, so a
+   * plant still on the page goes on answering; the fallback only if the worker goes while asked.
+   */
+  ask<T extends InspectAnswer>(kept: KeptBuild, question: InspectQuestion, args: number[], fallback: T): Promise<T> {
+    const worker = this.ensureWorker();
+    if (kept.worker !== worker) {
+      kept.worker = worker;
+      kept.build = this.nextId++; // never a build request's id: the worker keeps both by id
+      this.rekept++;
+      worker.postMessage({ kind: 'keep', build: kept.build, source: kept.source, options: kept.options });
+    }
     const id = this.nextQuestion++;
     return new Promise<T>((resolve) => {
       this.questions.set(id, { settle: (answer) => resolve(answer as T), fallback });
-      worker.postMessage({ kind: 'inspect', id, build, question, args });
+      worker.postMessage({ kind: 'inspect', id, build: kept.build, question, args });
     });
   }
 
-  /** Lets `worker` free its kept build `build` (nothing to do if that worker is gone). */
-  release(worker: WorkerLike, build: number): void {
-    if (worker === this.worker) worker.postMessage({ kind: 'free', build });
+  /** Lets the worker free kept build `kept` (nothing to do if its worker is gone). */
+  release(kept: KeptBuild): void {
+    if (kept.worker === this.worker) kept.worker.postMessage({ kind: 'free', build: kept.build });
   }
 
   private sendWaiting(): void {
@@ -245,14 +257,14 @@ export class BuildClient {
     if (response.kind === 'built') {
       const worker = this.worker!;
       if (running.settled) {
-        this.release(worker, response.id); // superseded: nobody will ask it anything
+        this.release({ worker, build: response.id, source: running.source, options: running.options }); // superseded: nobody will ask it anything
       } else {
         const result: BuildResult = {
           source: running.source,
           options: running.options,
           build: response.build,
           gpu: response.gpu,
-          inspector: new RemoteInspector(this, worker, response.id),
+          inspector: new RemoteInspector(this, { worker, build: response.id, source: running.source, options: running.options }),
           workerMillis: response.workerMillis,
           roundTripMillis: this.now() - running.requestedAt,
         };
@@ -286,52 +298,66 @@ export class BuildClient {
   }
 }
 
-/** A {@link PlantInspector} whose build is kept by the worker: each question is a message. */
+/** Where a build is kept: its worker and its id there, and what builds it again in another worker. */
+export interface KeptBuild {
+  worker: WorkerLike;
+  build: number;
+  readonly source: string;
+  readonly options: BuildOptions;
+}
+
+/**
+ * A {@link PlantInspector} whose build is kept by the worker: each question is a message. It
+ * outlives its worker: after a Stop, a crash or an abandoned build the next worker builds the same
+ * plant again when first asked (see {@link BuildClient.ask}).
+ */
 class RemoteInspector implements PlantInspector {
   private freed = false;
 
   constructor(
     private readonly client: BuildClient,
-    private readonly worker: WorkerLike,
-    private readonly build: number,
+    private readonly kept: KeptBuild,
   ) {}
 
+  private ask<T extends InspectAnswer>(question: InspectQuestion, args: number[], fallback: T): Promise<T> {
+    return this.freed ? Promise.resolve(fallback) : this.client.ask<T>(this.kept, question, args, fallback);
+  }
+
   explain(production: number): Promise<Explanation | null> {
-    return this.freed ? Promise.resolve(null) : this.client.ask<Explanation | null>(this.worker, this.build, 'explain', [production], null);
+    return this.ask<Explanation | null>('explain', [production], null);
   }
 
   explainModule(module: number): Promise<Explanation | null> {
-    return this.freed ? Promise.resolve(null) : this.client.ask<Explanation | null>(this.worker, this.build, 'explainModule', [module], null);
+    return this.ask<Explanation | null>('explainModule', [module], null);
   }
 
   moduleTexts(start: number, count: number): Promise<string[]> {
-    return this.freed ? Promise.resolve([]) : this.client.ask<string[]>(this.worker, this.build, 'moduleTexts', [start, count], []);
+    return this.ask<string[]>('moduleTexts', [start, count], []);
   }
 
   derivedHash(): Promise<string> {
-    return this.freed ? Promise.resolve('') : this.client.ask<string>(this.worker, this.build, 'derivedHash', [], '');
+    return this.ask<string>('derivedHash', [], '');
   }
 
   matchReport(production: number, module: number): Promise<MatchReport | null> {
-    return this.freed ? Promise.resolve(null) : this.client.ask<MatchReport | null>(this.worker, this.build, 'matchReport', [production, module], null);
+    return this.ask<MatchReport | null>('matchReport', [production, module], null);
   }
 
   sequence(maxModules: number): Promise<DerivationStep[] | null> {
-    return this.freed ? Promise.resolve(null) : this.client.ask<DerivationStep[] | null>(this.worker, this.build, 'sequence', [maxModules], null);
+    return this.ask<DerivationStep[] | null>('sequence', [maxModules], null);
   }
 
   previousTexts(start: number, count: number): Promise<string[]> {
-    return this.freed ? Promise.resolve([]) : this.client.ask<string[]>(this.worker, this.build, 'previousTexts', [start, count], []);
+    return this.ask<string[]>('previousTexts', [start, count], []);
   }
 
   lastStep(): Promise<LastStepLinks> {
-    const none = { parents: new Uint32Array(0), previousCount: 0 };
-    return this.freed ? Promise.resolve(none) : this.client.ask<LastStepLinks>(this.worker, this.build, 'lastStep', [], none);
+    return this.ask<LastStepLinks>('lastStep', [], { parents: new Uint32Array(0), previousCount: 0 });
   }
 
   free(): void {
     if (this.freed) return;
     this.freed = true;
-    this.client.release(this.worker, this.build);
+    this.client.release(this.kept);
   }
 }

@@ -13,6 +13,12 @@ export type WorkerRequest =
    * A plant of `sketchFrom` segments or more (default {@link SKETCH_MIN_SEGMENTS}) is sent as a sketch first.
    */
   | { kind: 'build'; id: number; source: string; options: BuildOptions; sketchFrom?: number }
+  /**
+   * Build `source` with `options` again and keep it as `build`, answering nothing: a plant still on
+   * the page whose worker was replaced (Stop, a crash, an abandoned build) is kept by the new one,
+   * so its panels go on answering. Questions posted after it are answered from it.
+   */
+  | { kind: 'keep'; build: number; source: string; options: BuildOptions }
   /** Ask kept build `build` a question; `id` ties the answer to it. */
   | { kind: 'inspect'; id: number; build: number; question: InspectQuestion; args: number[] }
   /** Release kept build `build`. */

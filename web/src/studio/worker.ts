@@ -2,7 +2,8 @@
 // main thread, so typing never waits for a big plant. It initialises its own WebAssembly
 // instance and answers each request in order: builds, whose typed arrays go back in a transfer
 // list, and questions about a kept build (the context-sensitivity view's explanations and the
-// derived-string panel's module texts), until the page frees it. Started by createBuildWorker
+// derived-string panel's module texts), until the page frees it; a plant the page still shows
+// after its worker was replaced is built again and kept (`keep`). Started by createBuildWorker
 // (worker-client.ts). A big plant is first sent as a sketch (its segments as lines), then built.
 import { CoreCrashed, initCore, inspectPlant, type BuildProgress, type PlantInspector } from '../core';
 import { packForGpu } from '../view/gpu-arrays';
@@ -79,6 +80,15 @@ addEventListener('message', async (event: MessageEvent<WorkerRequest>) => {
   if (request.kind === 'free') {
     kept.get(request.build)?.free();
     kept.delete(request.build);
+    return;
+  }
+  if (request.kind === 'keep') {
+    try {
+      keep(request.build, inspectPlant(request.source, request.options).inspector);
+    } catch (error) {
+      // It built before, so this is a bug; its questions get the empty answers.
+      console.error('Meristem core failed to build a kept plant again', error);
+    }
     return;
   }
   if (request.kind === 'inspect') {

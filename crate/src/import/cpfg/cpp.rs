@@ -5,18 +5,25 @@
 //! A macro whose value is a number expression stays a Meristem `#define` (the line is kept for
 //! the importer, so the studio shows it as a slider); every other macro (with arguments, or whose
 //! value is modules) is expanded where it is used, as cpp does.
+//!
+//! A kept macro is never expanded as text, not even in another macro's value or an `#if`: a value
+//! names the kept macros it uses (Meristem's `#define`s refer to each other), and an `#if` reads
+//! each one's number, worked out once when it was defined. So a chain of macros that each use the
+//! one before twice costs one expansion a link, not a doubling text (issue 19).
 
 use super::Line;
 
 /// A `#define`.
 #[derive(Clone, Debug)]
 struct Macro {
-    name: String,
     /// `None` for an object-like macro.
     params: Option<Vec<String>>,
     body: String,
     /// Kept as a Meristem `#define` (not expanded).
     kept: bool,
+    /// A kept macro's number (for `#if`), worked out once when it is defined; `None` when it is
+    /// not a constant Meristem can work out.
+    value: Option<f64>,
 }
 
 /// How deep `#include` may nest, and how many expansions one line may take (a macro that grows
@@ -27,7 +34,10 @@ const MAX_LINE: usize = 100_000;
 
 /// The preprocessor's state.
 pub(super) struct Preprocessor<'a> {
-    macros: Vec<Macro>,
+    /// The macros defined now, by name (a new `#define` of a name replaces the old one).
+    macros: std::collections::HashMap<String, Macro>,
+    /// Macro uses replaced by text so far (a measure of the work done: linear in the input).
+    pub expansions: usize,
     /// The object's other files by name (for `#include "file"`).
     include: &'a dyn Fn(&str) -> Option<String>,
     pub notes: Vec<(usize, String)>,
@@ -45,7 +55,8 @@ struct Condition {
 impl<'a> Preprocessor<'a> {
     pub fn new(include: &'a dyn Fn(&str) -> Option<String>, functions: &'a [&'a str]) -> Self {
         Preprocessor {
-            macros: Vec::new(),
+            macros: std::collections::HashMap::new(),
+            expansions: 0,
             include,
             notes: Vec::new(),
             functions,
@@ -79,7 +90,9 @@ impl<'a> Preprocessor<'a> {
                             out.push(line);
                         }
                     }
-                    "undef" => self.macros.retain(|m| m.name != rest.trim()),
+                    "undef" => {
+                        self.macros.remove(rest.trim());
+                    }
                     "include" => out.extend(self.include_file(&rest, line.n, depth)),
                     _ => {
                         // Left to the importer, which notes it.
@@ -136,8 +149,7 @@ impl<'a> Preprocessor<'a> {
     }
 
     fn defined(&self, name: &str) -> bool {
-        let name = name.trim();
-        self.macros.iter().any(|m| m.name == name)
+        self.macros.contains_key(name.trim())
     }
 
     /// The value of an `#if` condition: macros expanded, `defined(X)` read, other names 0 (as
@@ -161,12 +173,8 @@ impl<'a> Preprocessor<'a> {
             let end = (i + 7 + skipped + len).min(text.len());
             text.replace_range(i..end, value);
         }
-        let expanded = self.expand_all(&text, n);
-        let zeroed = words_to_zero(&expanded);
-        let value = crate::syntax::parse_expression(&zeroed, 0)
-            .ok()
-            .and_then(|e| crate::model::Program::compile(&e, &NoNames).ok())
-            .and_then(|p| p.constant());
+        let expanded = self.expand(&text, n);
+        let value = self.constant(&expanded);
         match value {
             Some(v) => v != 0.0,
             None => {
@@ -177,6 +185,56 @@ impl<'a> Preprocessor<'a> {
                 false
             }
         }
+    }
+
+    /// The number `text` works out to, with each kept macro read as its number (worked out when
+    /// it was defined) and any other name as 0 (cpp's rule for `#if`); `None` when it is not a
+    /// constant.
+    fn constant(&self, text: &str) -> Option<f64> {
+        let mut numbers = String::with_capacity(text.len());
+        let bytes = text.as_bytes();
+        let mut i = 0;
+        while i < bytes.len() {
+            let c = bytes[i];
+            if c.is_ascii_alphabetic() || c == b'_' {
+                let start = i;
+                i = word_end(bytes, i);
+                let word = &text[start..i];
+                let call = text[i..].trim_start().starts_with('(');
+                match self.macros.get(word) {
+                    Some(m) if m.kept => match m.value {
+                        Some(v) => numbers.push_str(&format!("({v:?})")),
+                        None => return None,
+                    },
+                    // A function the importer translates (sin, …) stays for the compiler.
+                    _ if call && self.functions.contains(&word) => numbers.push_str(word),
+                    _ => numbers.push('0'),
+                }
+                continue;
+            }
+            if c.is_ascii_digit() || c == b'.' {
+                // A number: its digits, exponent and all, as they are.
+                let start = i;
+                while i < bytes.len()
+                    && (bytes[i].is_ascii_alphanumeric()
+                        || bytes[i] == b'.'
+                        || ((bytes[i] == b'+' || bytes[i] == b'-')
+                            && matches!(bytes[i - 1], b'e' | b'E')))
+                {
+                    i += 1;
+                }
+                numbers.push_str(&text[start..i]);
+                continue;
+            }
+            let len = text[i..].chars().next().map_or(1, char::len_utf8);
+            numbers.push_str(&text[i..i + len]);
+            i += len;
+        }
+        let value = crate::syntax::parse_expression(&numbers, 0)
+            .ok()
+            .and_then(|e| crate::model::Program::compile(&e, &NoNames).ok())
+            .and_then(|p| p.constant());
+        value.filter(|v| v.is_finite())
     }
 
     /// Records `#define …` (the text after `define`); returns the line to keep when the macro
@@ -202,15 +260,19 @@ impl<'a> Preprocessor<'a> {
             }
             None => (None, after.trim().to_string()),
         };
-        let body = self.expand_all(&body, 0);
+        // The macros that are not kept are expanded; the kept ones stay names (see the module).
+        let body = self.expand(&body, 0);
         let kept = params.is_none() && !body.is_empty() && self.is_expression(&body);
-        self.macros.retain(|m| m.name != name);
-        self.macros.push(Macro {
-            name: name.clone(),
-            params,
-            body: body.clone(),
-            kept,
-        });
+        let value = if kept { self.constant(&body) } else { None };
+        self.macros.insert(
+            name.clone(),
+            Macro {
+                params,
+                body: body.clone(),
+                kept,
+                value,
+            },
+        );
         kept.then(|| format!("#define {name} {body}"))
     }
 
@@ -232,7 +294,7 @@ impl<'a> Preprocessor<'a> {
                 let known = if call {
                     self.functions.contains(&word.as_str())
                 } else {
-                    self.macros.iter().any(|m| m.kept && m.name == word)
+                    self.macros.get(&word).is_some_and(|m| m.kept)
                 };
                 if !known {
                     return false;
@@ -282,23 +344,15 @@ impl<'a> Preprocessor<'a> {
 
     /// Expands the macros that are not kept as `#define`s.
     fn expand(&mut self, text: &str, n: usize) -> String {
-        self.expansion(text, n, false)
-    }
-
-    /// Expands every macro (for `#if` and the values of other macros).
-    fn expand_all(&mut self, text: &str, n: usize) -> String {
-        self.expansion(text, n, true)
-    }
-
-    fn expansion(&mut self, text: &str, n: usize, all: bool) -> String {
         let mut text = text.to_string();
         let mut count = 0;
         let mut from = 0;
         loop {
-            let Some((start, end, replacement)) = self.next_macro(&text, from, all) else {
+            let Some((start, end, replacement)) = self.next_macro(&text, from) else {
                 return text;
             };
             count += 1;
+            self.expansions += 1;
             if count > MAX_EXPANSIONS || text.len() > MAX_LINE {
                 self.notes.push((
                     n,
@@ -314,7 +368,7 @@ impl<'a> Preprocessor<'a> {
     }
 
     /// The first macro use at or after byte `from`: its span and its replacement.
-    fn next_macro(&self, text: &str, from: usize, all: bool) -> Option<(usize, usize, String)> {
+    fn next_macro(&self, text: &str, from: usize) -> Option<(usize, usize, String)> {
         let bytes = text.as_bytes();
         let mut i = from;
         while i < bytes.len() {
@@ -323,11 +377,7 @@ impl<'a> Preprocessor<'a> {
                 let start = i;
                 i = word_end(bytes, i);
                 let word = &text[start..i];
-                let found = self
-                    .macros
-                    .iter()
-                    .rev()
-                    .find(|m| m.name == word && (all || !m.kept));
+                let found = self.macros.get(word).filter(|m| !m.kept);
                 if let Some(m) = found {
                     match &m.params {
                         None => return Some((start, i, m.body.clone())),
@@ -440,28 +490,6 @@ pub(super) fn substitute(body: &str, params: &[String], args: &[String]) -> Stri
         i += len;
     }
     out
-}
-
-/// Every name left in an `#if` condition becomes 0 (cpp's rule for undefined names).
-fn words_to_zero(text: &str) -> String {
-    let mut out = String::new();
-    let mut word = String::new();
-    for c in text.chars().chain(std::iter::once(' ')) {
-        if c.is_ascii_alphanumeric() || c == '_' {
-            word.push(c);
-            continue;
-        }
-        if !word.is_empty() {
-            if word.starts_with(|c: char| c.is_ascii_digit()) {
-                out.push_str(&word);
-            } else {
-                out.push('0');
-            }
-            word.clear();
-        }
-        out.push(c);
-    }
-    out.trim_end().to_string()
 }
 
 /// The byte index of `word` standing alone.
