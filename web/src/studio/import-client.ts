@@ -80,7 +80,7 @@ export async function readGrammarFile(file: File, parts: FileReadingParts): Prom
     case 'timeout':
       return {
         ok: false,
-        error: `importing it took longer than ${limitMs / 1000} s, so it was stopped (the file may have more than the importer can translate in time, such as definitions built on each other many levels deep); your text is as it was`,
+        error: `importing it took longer than ${limitMs / 1000} s, so it was stopped (the file may have more than the importer can translate in time, such as macros that expand into themselves on many lines); your text is as it was`,
       };
   }
 }
