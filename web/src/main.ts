@@ -3,7 +3,8 @@
 import './style.css';
 import { registerSW } from 'virtual:pwa-register';
 import { coreVersion, initCore, languageVocabulary } from './core';
-import { createGrammarEditor, growthAttributes, type GrammarEditor } from './editor';
+import { createLazyGrammarEditor, type GrammarEditor } from './editor/grammar-text';
+import { growthAttributes } from './editor/growth-directives';
 import { KeptTexts } from './share/kept-texts';
 import { GrammarStore } from './share/storage';
 import { PlantView } from './view';
@@ -61,7 +62,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     adopt: (result) => {
       contexts.setBuild(result.build, result.inspector, result.source);
       derivationView.setBuild(result.build, result.inspector);
-      if (editor) contexts.cursorAt(editor.view.state.selection.main.head);
+      if (editor) contexts.cursorAt(editor.cursor());
     },
     crashed: reportCoreCrashes(notice),
   });
@@ -76,29 +77,33 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     { text: currentText, replaceRange: (from, to, insert) => editor?.replaceRange(from, to, insert) },
     growthAttributes(vocabulary),
   );
-  const grammarEditor = createGrammarEditor({
-    parent: els.editor,
-    doc: start.text,
-    onChange: (text) => {
-      sliders.update(text);
-      growth.update(text);
-      derivation.textChanged(text);
-      preview.rebuild();
-      autosave.changed(text);
+  // The grammar in a plain textarea until CodeMirror arrives, after the first plant (below).
+  const grammarEditor = createLazyGrammarEditor(
+    {
+      parent: els.editor,
+      doc: start.text,
+      onChange: (text) => {
+        sliders.update(text);
+        growth.update(text);
+        derivation.textChanged(text);
+        preview.rebuild();
+        autosave.changed(text);
+      },
+      diagnose: (text) => preview.feed.diagnose(text),
+      vocabulary,
+      onCursor: (pos) => contexts.cursorAt(pos),
+      openReference: (anchor) => void help.open(anchor),
     },
-    diagnose: (text) => preview.feed.diagnose(text),
-    vocabulary,
-    onCursor: (pos) => contexts.cursorAt(pos),
-    openReference: (anchor) => void help.open(anchor),
-  });
+    () => import('./editor/grammar-editor'),
+  );
   editor = grammarEditor;
   // The layout for the room: narrow screens, Large for a projector, fullscreen.
   const layout = new LayoutModes(
     els.layout,
-    { remeasureEditor: () => grammarEditor.view.requestMeasure(), largeChanged: (large) => view.setLineScale(large ? 2 : 1) },
+    { remeasureEditor: () => grammarEditor.requestMeasure(), largeChanged: (large) => view.setLineScale(large ? 2 : 1) },
     browserStorage(),
   );
-  els.stopBuild.addEventListener('click', () => grammarEditor.view.focus()); // the text stays, to edit on
+  els.stopBuild.addEventListener('click', () => grammarEditor.focus()); // the text stays, to edit on
   sliders.update(start.text);
   growth.update(start.text);
   derivation.textChanged(start.text);
@@ -208,6 +213,18 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   const firstBuild = preview.nextDelivery();
   preview.rebuild();
   await firstBuild;
+  // The first plant is on screen (after its frame): now the editor (issue 22, the first load); the
+  // studio is ready with it.
+  await nextFrame();
+  await grammarEditor.loaded;
+}
+
+/** Settles after the next frame is drawn, or after 200 ms in a page that draws none (hidden). */
+function nextFrame(): Promise<void> {
+  return new Promise((resolve) => {
+    requestAnimationFrame(() => setTimeout(resolve));
+    setTimeout(resolve, 200);
+  });
 }
 
 const els = studioElements();
