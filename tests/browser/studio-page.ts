@@ -28,7 +28,7 @@ export async function openStudio(browser: Browser, colorScheme: 'light' | 'dark'
   return studioIn(await browser.newPage({ viewport, colorScheme }));
 }
 
-/** Opens the studio in `page` (of a context the caller made) and waits for the first plant. */
+/** Opens the studio in `page` (of a context the caller made) and waits for the first plant and the editor. */
 export async function studioIn(page: Page): Promise<StudioPage> {
   mkdirSync(RESULTS, { recursive: true });
   const problems: string[] = [];
@@ -42,6 +42,7 @@ export async function studioIn(page: Page): Promise<StudioPage> {
   });
   await page.goto(inject('studioUrl'));
   await page.waitForFunction(() => (window.__meristem?.lastStats?.segments ?? 0) > 0);
+  await page.evaluate(() => window.__meristem?.ready); // and the editor, which loads after the first plant
   return { page, problems };
 }
 
