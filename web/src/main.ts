@@ -10,7 +10,7 @@ import { GrammarStore } from './share/storage';
 import { PlantView } from './view';
 import {
   Autosave, BranchEditSession, BuildClient, ContextView, DerivationControls, GalleryDialog, GalleryThumbnails, GrowthPanel,
-  DerivationView, EmbedSnippets, HelpPanel, installLearnPanel, LibraryDialog, LinkState, LivePreview, Notice, ShareDialog, SliderPanel, StagesMode, TextOpening,
+  LazyDerivationView, EmbedSnippets, HelpPanel, installLearnPanel, LibraryDialog, LinkState, LivePreview, Notice, ShareDialog, SliderPanel, StagesMode, TextOpening,
   TextKeeper, ViewFollowing, ViewOptions, ViewTools, attachSplitter, browserDatabase, browserStorage, createImportWorker, connectTestHook, createBuildWorker, emptyTestHook, fetchExample,
   figureName, installDownloads, installDrop, installInspectorTabs, LayoutModes,
   installFileMenu, installShareButton, installShortcuts, openPastedLinks, readGrammarFile, renderShortcutHelp, reportCoreCrashes, showStatus, sidesChoices,
@@ -42,8 +42,8 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   let editor: GrammarEditor | undefined;
   const currentText = () => editor?.text() ?? start.text;
   const contexts = new ContextView(els.contexts, view, () => editor, viewOptions);
-  // The derivation, step by step: its hover lights up the plant through the context view.
-  const derivationView = new DerivationView(els.derivationPanel, {
+  // The derivation, step by step (loaded with its tab): its hover lights up the plant through the context view.
+  const derivationView = new LazyDerivationView(els.derivationPanel, {
     preview: (modules, production) => contexts.showPreview(modules, production),
     pick: (module) => contexts.pickModule(module),
     describeProduction: (index) => contexts.describeProduction(index),
@@ -235,4 +235,6 @@ hook.ready.catch((error: unknown) => {
   showStatus(els.status, { state: 'crashed', text: `Could not start: ${String(error)}` });
 });
 window.__meristem = hook;
-installAppUpdates(registerSW); // offline use, and "a new version is ready" (issue 22)
+// Offline use, and "a new version is ready" (issue 22): registered once the studio is up, so the
+// service worker's precaching (the whole site, a few MB) never competes with the first plant's downloads.
+void hook.ready.catch(() => undefined).then(() => installAppUpdates(registerSW));

@@ -20,6 +20,7 @@ export { chapterHeading, compareLessons, isLesson, isLessonIndex, type Lesson, t
 export { CHECK_FACTS, CHECK_FUNCTIONS, evaluateCheck, needsDerivedString, parseCheck, plantFacts, spokenAnswer, MAX_CHECKED_MODULES, type CheckAnswer, type CheckNode, type PlantFacts } from './lesson-check';
 export { askToDownload, askToReplace, type QuestionDialog } from './confirm';
 export { ContextView, type ContextViewElements } from './context-view';
+export { LazyDerivationView } from './derivation-loader';
 export { DerivationView, descendants, firstChildren, originInWords, SEQUENCE_MAX_MODULES, TREE_MAX_MODULES, type DerivationViewHost } from './derivation-view';
 export { countsInWords, describeProduction, madeInWords, reportInWords, lineOf } from './explain-words';
 export { installInspectorTabs } from './inspector-tabs';
