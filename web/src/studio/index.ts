@@ -21,7 +21,7 @@ export { CHECK_FACTS, CHECK_FUNCTIONS, evaluateCheck, needsDerivedString, parseC
 export { askToDownload, askToReplace, type QuestionDialog } from './confirm';
 export { ContextView, type ContextViewElements } from './context-view';
 export { LazyDerivationView } from './derivation-loader';
-export { DerivationView, descendants, firstChildren, originInWords, SEQUENCE_MAX_MODULES, TREE_MAX_MODULES, type DerivationViewHost } from './derivation-view';
+// derivation-view (the Derivation tab) is not re-exported: it loads with the tab (derivation-loader).
 export { countsInWords, describeProduction, madeInWords, reportInWords, lineOf } from './explain-words';
 export { installInspectorTabs } from './inspector-tabs';
 export { LayoutModes, type LayoutElements, type LayoutHost } from './layout-modes';
