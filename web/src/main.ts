@@ -30,6 +30,9 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   // The page's own core instance serves the tables (commands, directives, version); builds run in
   // the build worker's, imports of opened files in an import worker's (with the importers: core/io.ts).
   const starting = { store, kept, keeper, notice, cannotKeep: els.cannotKeep };
+  // The build worker starts at once: its script loads while the page's core does (issue 22).
+  const buildClient = new BuildClient(createBuildWorker);
+  buildClient.warmUp();
   const [start] = await Promise.all([startingText(starting, INITIAL_EXAMPLE), initCore()]);
   els.version.textContent = `core ${coreVersion()}`;
 
@@ -51,7 +54,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   });
   installInspectorTabs(els.inspectorTabs, (tab) => derivationView.setShown(tab === 'tab-derivation'));
   const preview = new LivePreview({
-    client: new BuildClient(createBuildWorker),
+    client: buildClient,
     view,
     status: els.status,
     stop: els.stopBuild,

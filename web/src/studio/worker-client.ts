@@ -182,6 +182,11 @@ export class BuildClient {
     entry.resolve(outcome);
   }
 
+  /** Starts the worker now (its script and core load meanwhile), before the first request. */
+  warmUp(): void {
+    this.ensureWorker();
+  }
+
   private ensureWorker(): WorkerLike {
     if (this.worker) return this.worker;
     const worker = this.createWorker();
