@@ -75,8 +75,9 @@ export async function pasteText(page: Page, text: string): Promise<string | null
   return nextBuild(page, before);
 }
 
-/** The editor's text, line by line as CodeMirror shows it. */
-export function editorText(page: Page): Promise<string> {
+/** The editor's text, line by line as CodeMirror shows it (once it has loaded, after the first plant). */
+export async function editorText(page: Page): Promise<string> {
+  await page.locator('[data-testid=editor] .cm-content').waitFor();
   return page.evaluate(() => [...document.querySelectorAll('[data-testid=editor] .cm-line')].map((l) => l.textContent ?? '').join('\n'));
 }
 
