@@ -214,12 +214,21 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   attachSplitter(els.splitter, els.studio);
 
   const firstBuild = preview.nextDelivery();
+  const underWay = preview.nextProgress();
   preview.rebuild();
-  await firstBuild;
-  // The first plant is on screen (after its frame): now the editor (issue 22, the first load); the
-  // studio is ready with it.
+  // The editor (issue 22, the first load) loads after the first plant's frame; or, when that build
+  // takes long (or is stopped), a second after the worker started it: every download of the first
+  // plant is done by then. The studio is ready with the plant and the editor.
+  await Promise.race([firstBuild, underWay.then(() => delay(1000))]);
   await nextFrame();
-  await grammarEditor.loaded;
+  const editorLoaded = grammarEditor.loaded;
+  await firstBuild;
+  await editorLoaded;
+}
+
+/** Settles after `ms` milliseconds. */
+function delay(ms: number): Promise<void> {
+  return new Promise((resolve) => setTimeout(resolve, ms));
 }
 
 /** Settles after the next frame is drawn, or after 200 ms in a page that draws none (hidden). */
