@@ -20,7 +20,8 @@ import {
 /** The example shown at start (in public/examples). */
 const INITIAL_EXAMPLE = 'abop-1.24d.lsys';
 
-async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<void> {
+/** `firstLoadDone` is called when what the first plant downloads has arrived (the rest may load then). */
+async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadDone: () => void): Promise<void> {
   showStatus(els.status, { state: 'loading', text: 'Loading…' });
   const notice = new Notice(els.notice);
   // The user's work: localStorage, else (when that is full) IndexedDB; kept before anything replaces it.
@@ -221,6 +222,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   // plant is done by then. The studio is ready with the plant and the editor.
   await Promise.race([firstBuild, underWay.then(() => delay(1000))]);
   await nextFrame();
+  firstLoadDone();
   const editorLoaded = grammarEditor.loaded;
   await firstBuild;
   await editorLoaded;
@@ -241,12 +243,16 @@ function nextFrame(): Promise<void> {
 
 const els = studioElements();
 const hook = emptyTestHook();
-hook.ready = startStudio(els, hook);
+let firstLoadDone!: () => void;
+const firstLoad = new Promise<void>((resolve) => (firstLoadDone = resolve));
+hook.ready = startStudio(els, hook, firstLoadDone);
 hook.ready.catch((error: unknown) => {
   console.error('Meristem could not start:', error);
   showStatus(els.status, { state: 'crashed', text: `Could not start: ${String(error)}` });
 });
 window.__meristem = hook;
-// Offline use, and "a new version is ready" (issue 22): registered once the studio is up, so the
-// service worker's precaching (the whole site, a few MB) never competes with the first plant's downloads.
-void hook.ready.catch(() => undefined).then(() => installAppUpdates(registerSW));
+// Offline use, and "a new version is ready" (issue 22): registered once the first plant's downloads
+// are done (or the studio could not start), so the service worker's precaching (the whole site, a
+// few MB) never competes with them.
+hook.ready.catch(() => firstLoadDone());
+void firstLoad.then(() => installAppUpdates(registerSW));
