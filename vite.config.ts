@@ -11,6 +11,7 @@
 //   (tests/browser/vitest.config.ts).
 import { fileURLToPath } from 'node:url';
 import { VitePWA } from 'vite-plugin-pwa';
+import type { Plugin } from 'vite';
 import { defineConfig } from 'vitest/config';
 import { galleryManifestPlugin } from './scripts/gallery-plugin.ts';
 import { lessonsPlugin } from './scripts/lessons-plugin.ts';
@@ -56,6 +57,25 @@ function offlineApp() {
   });
 }
 
+/**
+ * The first load (issue 22): index.html and embed.html ask for the core's wasm at once (a preload,
+ * fetched with the page's script rather than after it has run), the fetch `coreModule()` makes.
+ */
+function preloadCore(): Plugin {
+  return {
+    name: 'meristem-preload-core',
+    apply: 'build',
+    transformIndexHtml: {
+      order: 'post',
+      handler(_html, context) {
+        const wasm = Object.keys(context.bundle ?? {}).find((file) => /meristem_core_bg-[^/]*\.wasm$/.test(file));
+        if (!wasm) return [];
+        return [{ tag: 'link', attrs: { rel: 'preload', href: `./${wasm}`, as: 'fetch', type: 'application/wasm', crossorigin: '' }, injectTo: 'head' }];
+      },
+    },
+  };
+}
+
 export default defineConfig({
   root: 'web',
   base: './',
@@ -64,6 +84,7 @@ export default defineConfig({
     galleryManifestPlugin(`${repoRoot}public/examples`),
     lessonsPlugin(`${repoRoot}public/lessons`),
     referencePlugin(`${repoRoot}docs/LANGUAGE.md`),
+    preloadCore(),
     offlineApp(),
   ],
   worker: { format: 'es' },

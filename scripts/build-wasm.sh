@@ -16,6 +16,13 @@ export PATH="$PWD/node_modules/.bin:$PATH"
 
 opt=()
 [ "${1:-}" = "--dev" ] && opt=(--no-opt)
+# Size a little over speed for what the browser downloads (issue 22, the first load): opt-level "s".
+# Measured 2026-11-25 (README "The first load"): "s" makes crate/pkg-core about 6% smaller gzipped
+# than "3" and derives 5-25% slower; "z" saves 10% but derives 2-4x slower (npm run bench), so no.
+# Only here: native builds, `cargo test` and the criterion benches keep the release profile's 3.
+# (panic = "abort" would change nothing: wasm32-unknown-unknown aborts on a panic already, after
+# the panic hook of src/wasm.rs has reported it.)
+export CARGO_PROFILE_RELEASE_OPT_LEVEL=s
 # pack OUT_DIR NAME [-- CARGO_ARGS...]: one package (package.json, glue, types, the .wasm)
 pack() {
   local out=$1 name=$2; shift 2

@@ -70,6 +70,7 @@ describe('deployment from a sub-path of a static host', () => {
     await page.waitForFunction(() => (window.__meristem?.lastStats?.segments ?? 0) > 0, undefined, { timeout: 30_000 });
     expect(await page.evaluate(() => window.__meristem!.lastStats!.iterations)).toBe(5);
     expect(await page.getByTestId('iterations').inputValue()).toBe('5');
+    await page.evaluate(() => window.__meristem?.ready); // the editor loads after the first plant
     const lines = await page.evaluate(() => [...document.querySelectorAll('[data-testid=editor] .cm-line')].map((l) => l.textContent).join('\n'));
     expect(lines).toBe(text);
     expect(page.url()).toBe(base); // the fragment is consumed; the page stays under the sub-path

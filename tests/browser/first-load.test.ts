@@ -1,7 +1,8 @@
 // The first load (issue 22): what the studio downloads until the first plant is on screen, gzipped
 // as a static host serves it, against the budget; and the time to that first plant on a slow
 // network (Chromium's DevTools "Fast 3G": 562.5 ms round trip, 1.6 Mbit/s down, 750 kbit/s up),
-// recorded in test-results/first-load.json for the README (a measurement, not a timed test).
+// recorded in test-results/first-load.json for the README (a measurement, with a loose guard
+// against regressions, not issue 22's 4 s target).
 import { readFileSync, writeFileSync } from 'node:fs';
 import { gzipSync } from 'node:zlib';
 import { chromium, type Browser } from 'playwright-core';
@@ -10,12 +11,15 @@ import { RESULTS } from './studio-page';
 import { serveStatic, type StaticSite } from './static-server';
 
 /**
- * Script + wasm + styles of the first paint of a plant, gzipped (bytes). Issue 22 asks for 400 KB;
- * this guards what the studio reaches now (635 KB: 285 KB of wasm without the importers and
- * exporters, 343 KB of script, three.js and CodeMirror most of it), a ratchet to lower, never to
- * raise without a reason. README "Performance" says what remains.
+ * Script + wasm + styles of the first paint of a plant, gzipped (bytes). Issue 22 asks for 400 KB
+ * and the studio does not reach it yet: 486 KB on 2026-11-25 (three.js 146 KB and the core's wasm
+ * 267 KB are 413 KB on their own; README "The first load" says what is left to do). This guards
+ * what it reaches, a ratchet to lower towards 400 KB, never to raise without a reason. The editor
+ * (CodeMirror) loads after the first plant and is not part of it.
  */
-const BUDGET = 640 * 1024;
+const BUDGET = 490_000;
+/** Time to the first plant on "Fast 3G": issue 22 asks for 4 s; 4.5 s measured (README). A guard against a regression (the core downloaded twice, a blocking fetch), not the target. */
+const FAST_3G_GUARD_MS = 7_000;
 const SUB_PATH = '/first/load/';
 const DIST = new URL('../../dist/', import.meta.url);
 const FAST_3G = { offline: false, latency: 562.5, downloadThroughput: (1.6 * 1024 * 1024 * 0.9) / 8, uploadThroughput: (750 * 1024 * 0.9) / 8 };
@@ -33,24 +37,28 @@ afterAll(async () => {
   await site?.close();
 });
 
-/** Opens the studio in a fresh context (no cache, no service worker); returns the site files it fetched until the first plant. */
+/**
+ * Opens the studio in a fresh context (no cache, no service worker); returns the site files it
+ * (the page and its workers) asked for before the first plant arrived, and the time to that plant.
+ */
 async function firstPlant(throttle: boolean): Promise<{ files: string[]; millis: number }> {
   const context = await browser.newContext({ viewport: { width: 1280, height: 800 }, serviceWorkers: 'block' });
   const page = await context.newPage();
-  const files = new Set<string>();
-  let done = false;
+  const requests: { file: string; at: number }[] = [];
   context.on('request', (request) => {
     const url = new URL(request.url());
-    if (!done && url.pathname.startsWith(SUB_PATH)) files.add(url.pathname.slice(SUB_PATH.length) || 'index.html');
+    if (url.pathname.startsWith(SUB_PATH)) requests.push({ file: url.pathname.slice(SUB_PATH.length) || 'index.html', at: Date.now() });
   });
   if (throttle) await (await context.newCDPSession(page)).send('Network.emulateNetworkConditions', FAST_3G);
   const start = Date.now();
   await page.goto(site.base);
   await page.waitForFunction(() => (window.__meristem?.lastStats?.segments ?? 0) > 0, undefined, { timeout: 60_000, polling: 50 });
   const millis = Date.now() - start;
-  done = true;
+  // The page's clock (the same wall clock) at the first plant's arrival: what was asked for later
+  // (the editor, after the first frame) is not part of the first load, however slow the poll above.
+  const at = (await page.evaluate(() => window.__meristem?.firstPlantAt)) ?? start + millis;
   await context.close();
-  return { files: [...files].sort(), millis };
+  return { files: [...new Set(requests.filter((r) => r.at <= at).map((r) => r.file))].sort(), millis };
 }
 
 /** The gzipped size of a file of dist/. */
@@ -59,7 +67,7 @@ function gzipped(file: string): number {
 }
 
 describe('the first load', () => {
-  it(`needs at most ${BUDGET / 1024} KB of script, wasm and styles (gzipped) for the first plant`, async () => {
+  it(`needs at most ${BUDGET / 1000} KB of script, wasm and styles (gzipped) for the first plant`, async () => {
     const { files } = await firstPlant(false);
     const counted = files.filter((f) => /\.(js|mjs|wasm|css)$/.test(f));
     const sizes = Object.fromEntries(counted.map((f) => [f, gzipped(f)]));
@@ -73,5 +81,51 @@ describe('the first load', () => {
     const { millis } = await firstPlant(true);
     writeFileSync(new URL('first-load.json', RESULTS), JSON.stringify({ network: 'Fast 3G (DevTools preset)', ...FAST_3G, firstPlantMillis: millis }, null, 2));
     expect(millis).toBeGreaterThan(FAST_3G.latency); // throttled: at least one round trip
+    expect(millis).toBeLessThanOrEqual(FAST_3G_GUARD_MS);
+  });
+});
+
+describe('the grammar before the editor has loaded', () => {
+  it('is a plain textarea that builds what is typed, and the editor takes over its text, cursor and focus', async () => {
+    const context = await browser.newContext({ viewport: { width: 1280, height: 800 }, serviceWorkers: 'block' });
+    const page = await context.newPage();
+    let release!: () => void;
+    const released = new Promise<void>((resolve) => (release = resolve));
+    // Hold the editor's chunk back: the studio must work without it meanwhile.
+    await page.route(/\/assets\/grammar-editor-[^/]*\.js$/, async (route) => {
+      await released;
+      await route.continue();
+    });
+    await page.goto(site.base);
+    await page.waitForFunction(() => (window.__meristem?.lastStats?.segments ?? 0) > 0, undefined, { timeout: 30_000 });
+    const area = page.getByTestId('grammar-placeholder');
+    const first = await area.inputValue();
+    expect(first).toContain('->');
+    expect(await page.locator('[data-testid=editor] .cm-editor').count()).toBe(0);
+    expect(await area.getAttribute('aria-label')).toBe('L-system grammar');
+
+    // Typed early: built at once, as the editor's changes are.
+    const before = Number((await page.getByTestId('status').getAttribute('data-generation')) ?? '0');
+    await area.focus();
+    await area.press('Control+End');
+    await page.keyboard.type('\n// typed before the editor');
+    await page.waitForFunction(
+      (b) => Number(document.querySelector('[data-testid=status]')?.getAttribute('data-generation') ?? 0) > b && window.__meristem?.preview?.settled === true,
+      before,
+    );
+    expect(await page.evaluate(() => window.__meristem!.preview!.lastGood!.source)).toContain('// typed before the editor');
+
+    release();
+    await page.locator('[data-testid=editor] .cm-content').waitFor();
+    await page.evaluate(() => window.__meristem?.ready);
+    expect(await area.count()).toBe(0);
+    const lines = await page.evaluate(() => [...document.querySelectorAll('[data-testid=editor] .cm-line')].map((l) => l.textContent ?? '').join('\n'));
+    expect(lines).toBe(`${first}\n// typed before the editor`);
+    // The focus and the cursor (at the end) went over: typing goes on where it stopped.
+    await page.keyboard.type('!');
+    await expect.poll(() => page.evaluate(() => [...document.querySelectorAll('[data-testid=editor] .cm-line')].map((l) => l.textContent ?? '').join('\n'))).toBe(
+      `${first}\n// typed before the editor!`,
+    );
+    await context.close();
   });
 });

@@ -28,7 +28,7 @@ export async function openStudio(browser: Browser, colorScheme: 'light' | 'dark'
   return studioIn(await browser.newPage({ viewport, colorScheme }));
 }
 
-/** Opens the studio in `page` (of a context the caller made) and waits for the first plant. */
+/** Opens the studio in `page` (of a context the caller made) and waits for the first plant and the editor. */
 export async function studioIn(page: Page): Promise<StudioPage> {
   mkdirSync(RESULTS, { recursive: true });
   const problems: string[] = [];
@@ -42,6 +42,7 @@ export async function studioIn(page: Page): Promise<StudioPage> {
   });
   await page.goto(inject('studioUrl'));
   await page.waitForFunction(() => (window.__meristem?.lastStats?.segments ?? 0) > 0);
+  await page.evaluate(() => window.__meristem?.ready); // and the editor, which loads after the first plant
   return { page, problems };
 }
 
@@ -74,8 +75,9 @@ export async function pasteText(page: Page, text: string): Promise<string | null
   return nextBuild(page, before);
 }
 
-/** The editor's text, line by line as CodeMirror shows it. */
-export function editorText(page: Page): Promise<string> {
+/** The editor's text, line by line as CodeMirror shows it (once it has loaded, after the first plant). */
+export async function editorText(page: Page): Promise<string> {
+  await page.locator('[data-testid=editor] .cm-content').waitFor();
   return page.evaluate(() => [...document.querySelectorAll('[data-testid=editor] .cm-line')].map((l) => l.textContent ?? '').join('\n'));
 }
 

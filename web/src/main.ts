@@ -3,13 +3,14 @@
 import './style.css';
 import { registerSW } from 'virtual:pwa-register';
 import { coreVersion, initCore, languageVocabulary } from './core';
-import { createGrammarEditor, growthAttributes, type GrammarEditor } from './editor';
+import { createLazyGrammarEditor, type GrammarEditor } from './editor/grammar-text';
+import { growthAttributes } from './editor/growth-directives';
 import { KeptTexts } from './share/kept-texts';
 import { GrammarStore } from './share/storage';
 import { PlantView } from './view';
 import {
   Autosave, BranchEditSession, BuildClient, ContextView, DerivationControls, GalleryDialog, GalleryThumbnails, GrowthPanel,
-  DerivationView, EmbedSnippets, HelpPanel, installLearnPanel, LibraryDialog, LinkState, LivePreview, Notice, ShareDialog, SliderPanel, StagesMode, TextOpening,
+  LazyDerivationView, EmbedSnippets, HelpPanel, installLearnPanel, LibraryDialog, LinkState, LivePreview, Notice, ShareDialog, SliderPanel, StagesMode, TextOpening,
   TextKeeper, ViewFollowing, ViewOptions, ViewTools, attachSplitter, browserDatabase, browserStorage, createImportWorker, connectTestHook, createBuildWorker, emptyTestHook, fetchExample,
   figureName, installDownloads, installDrop, installInspectorTabs, LayoutModes,
   installFileMenu, installShareButton, installShortcuts, openPastedLinks, readGrammarFile, renderShortcutHelp, reportCoreCrashes, showStatus, sidesChoices,
@@ -19,7 +20,8 @@ import {
 /** The example shown at start (in public/examples). */
 const INITIAL_EXAMPLE = 'abop-1.24d.lsys';
 
-async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<void> {
+/** `firstLoadDone` is called when what the first plant downloads has arrived (the rest may load then). */
+async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadDone: () => void): Promise<void> {
   showStatus(els.status, { state: 'loading', text: 'Loading…' });
   const notice = new Notice(els.notice);
   // The user's work: localStorage, else (when that is full) IndexedDB; kept before anything replaces it.
@@ -29,6 +31,9 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   // The page's own core instance serves the tables (commands, directives, version); builds run in
   // the build worker's, imports of opened files in an import worker's (with the importers: core/io.ts).
   const starting = { store, kept, keeper, notice, cannotKeep: els.cannotKeep };
+  // The build worker starts at once: its script loads while the page's core does (issue 22).
+  const buildClient = new BuildClient(createBuildWorker);
+  buildClient.warmUp();
   const [start] = await Promise.all([startingText(starting, INITIAL_EXAMPLE), initCore()]);
   els.version.textContent = `core ${coreVersion()}`;
 
@@ -41,8 +46,8 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   let editor: GrammarEditor | undefined;
   const currentText = () => editor?.text() ?? start.text;
   const contexts = new ContextView(els.contexts, view, () => editor, viewOptions);
-  // The derivation, step by step: its hover lights up the plant through the context view.
-  const derivationView = new DerivationView(els.derivationPanel, {
+  // The derivation, step by step (loaded with its tab): its hover lights up the plant through the context view.
+  const derivationView = new LazyDerivationView(els.derivationPanel, {
     preview: (modules, production) => contexts.showPreview(modules, production),
     pick: (module) => contexts.pickModule(module),
     describeProduction: (index) => contexts.describeProduction(index),
@@ -50,7 +55,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   });
   installInspectorTabs(els.inspectorTabs, (tab) => derivationView.setShown(tab === 'tab-derivation'));
   const preview = new LivePreview({
-    client: new BuildClient(createBuildWorker),
+    client: buildClient,
     view,
     status: els.status,
     stop: els.stopBuild,
@@ -66,7 +71,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     adopt: (result) => {
       contexts.setBuild(result.build, result.inspector, result.source);
       derivationView.setBuild(result.build, result.inspector);
-      if (editor) contexts.cursorAt(editor.view.state.selection.main.head);
+      if (editor) contexts.cursorAt(editor.cursor());
     },
     crashed: reportCoreCrashes(notice),
   });
@@ -81,29 +86,33 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
     { text: currentText, replaceRange: (from, to, insert) => editor?.replaceRange(from, to, insert) },
     growthAttributes(vocabulary),
   );
-  const grammarEditor = createGrammarEditor({
-    parent: els.editor,
-    doc: start.text,
-    onChange: (text) => {
-      sliders.update(text);
-      growth.update(text);
-      derivation.textChanged(text);
-      preview.rebuild();
-      autosave.changed(text);
+  // The grammar in a plain textarea until CodeMirror arrives, after the first plant (below).
+  const grammarEditor = createLazyGrammarEditor(
+    {
+      parent: els.editor,
+      doc: start.text,
+      onChange: (text) => {
+        sliders.update(text);
+        growth.update(text);
+        derivation.textChanged(text);
+        preview.rebuild();
+        autosave.changed(text);
+      },
+      diagnose: (text) => preview.feed.diagnose(text),
+      vocabulary,
+      onCursor: (pos) => contexts.cursorAt(pos),
+      openReference: (anchor) => void help.open(anchor),
     },
-    diagnose: (text) => preview.feed.diagnose(text),
-    vocabulary,
-    onCursor: (pos) => contexts.cursorAt(pos),
-    openReference: (anchor) => void help.open(anchor),
-  });
+    () => import('./editor/grammar-editor'),
+  );
   editor = grammarEditor;
   // The layout for the room: narrow screens, Large for a projector, fullscreen.
   const layout = new LayoutModes(
     els.layout,
-    { remeasureEditor: () => grammarEditor.view.requestMeasure(), largeChanged: (large) => view.setLineScale(large ? 2 : 1) },
+    { remeasureEditor: () => grammarEditor.requestMeasure(), largeChanged: (large) => view.setLineScale(large ? 2 : 1) },
     browserStorage(),
   );
-  els.stopBuild.addEventListener('click', () => grammarEditor.view.focus()); // the text stays, to edit on
+  els.stopBuild.addEventListener('click', () => grammarEditor.focus()); // the text stays, to edit on
   sliders.update(start.text);
   growth.update(start.text);
   derivation.textChanged(start.text);
@@ -211,16 +220,44 @@ async function startStudio(els: StudioElements, hook: StudioTestHook): Promise<v
   attachSplitter(els.splitter, els.studio);
 
   const firstBuild = preview.nextDelivery();
+  const underWay = preview.nextProgress();
   preview.rebuild();
+  // The editor (issue 22, the first load) loads after the first plant's frame; or, when that build
+  // takes long (or is stopped), a second after the worker started it: every download of the first
+  // plant is done by then. The studio is ready with the plant and the editor.
+  await Promise.race([firstBuild, underWay.then(() => delay(1000))]);
+  await nextFrame();
+  firstLoadDone();
+  const editorLoaded = grammarEditor.loaded;
   await firstBuild;
+  await editorLoaded;
+}
+
+/** Settles after `ms` milliseconds. */
+function delay(ms: number): Promise<void> {
+  return new Promise((resolve) => setTimeout(resolve, ms));
+}
+
+/** Settles after the next frame is drawn, or after 200 ms in a page that draws none (hidden). */
+function nextFrame(): Promise<void> {
+  return new Promise((resolve) => {
+    requestAnimationFrame(() => setTimeout(resolve));
+    setTimeout(resolve, 200);
+  });
 }
 
 const els = studioElements();
 const hook = emptyTestHook();
-hook.ready = startStudio(els, hook);
+let firstLoadDone!: () => void;
+const firstLoad = new Promise<void>((resolve) => (firstLoadDone = resolve));
+hook.ready = startStudio(els, hook, firstLoadDone);
 hook.ready.catch((error: unknown) => {
   console.error('Meristem could not start:', error);
   showStatus(els.status, { state: 'crashed', text: `Could not start: ${String(error)}` });
 });
 window.__meristem = hook;
-installAppUpdates(registerSW); // offline use, and "a new version is ready" (issue 22)
+// Offline use, and "a new version is ready" (issue 22): registered once the first plant's downloads
+// are done (or the studio could not start), so the service worker's precaching (the whole site, a
+// few MB) never competes with them.
+hook.ready.catch(() => firstLoadDone());
+void firstLoad.then(() => installAppUpdates(registerSW));

@@ -1,6 +1,6 @@
 // The core: the Rust/WebAssembly pipeline behind an idiomatic TypeScript facade.
 // Invariant: no other TypeScript imports crate/pkg; everything else uses these names.
-export { initCore, coreVersion, CoreCrashed } from './init';
+export { initCore, coreModule, coreVersion, CoreCrashed } from './init';
 export { initIo } from './io';
 export { buildPlant, inspectPlant, type PlantSketch, type SketchRequest } from './build';
 export {

@@ -19,26 +19,48 @@ export class CoreCrashed extends Error {
   override name = 'CoreCrashed';
 }
 
+let compiled: Promise<WebAssembly.Module> | undefined;
+
+/**
+ * The core's compiled module, fetched and compiled once (browser only). The page instantiates it,
+ * and hands it to its build workers (createBuildWorker), so the first plant downloads the core
+ * once, whatever the host's caching (issue 22, the first load).
+ */
+export function coreModule(): Promise<WebAssembly.Module> {
+  return (compiled ??= compileCore());
+}
+
+async function compileCore(): Promise<WebAssembly.Module> {
+  const response = await fetch(wasmUrl);
+  if (!response.ok) throw new Error(`the core could not be fetched: HTTP ${response.status}`);
+  // Streaming needs `application/wasm`; a host that says otherwise gets the bytes compiled whole.
+  if (response.headers.get('Content-Type')?.startsWith('application/wasm')) return WebAssembly.compileStreaming(response);
+  return WebAssembly.compile(await response.arrayBuffer());
+}
+
 /**
  * Instantiates the core once; later calls return the same promise.
  *
  * - In the browser call it without arguments: the `.wasm` file is fetched from the URL vite
- *   gives it (a hashed asset next to the page).
+ *   gives it (a hashed asset next to the page) and compiled ({@link coreModule}); a worker passes
+ *   the module the page compiled.
  * - In node (vitest, scripts) pass the bytes of `crate/pkg-core/meristem_core_bg.wasm`, e.g. from
  *   `readFileSync`: they are compiled synchronously (node cannot `fetch` a `file:` URL).
  */
-export function initCore(wasm?: BufferSource): Promise<void> {
+export function initCore(wasm?: BufferSource | WebAssembly.Module): Promise<void> {
   if (loading) return loading;
   const listen = () => onPanic(notePanic);
-  if (wasm !== undefined) {
+  if (wasm !== undefined && !(wasm instanceof WebAssembly.Module)) {
     memory = initSync({ module: wasm }).memory;
     listen();
     loading = Promise.resolve();
   } else {
-    loading = init({ module_or_path: wasmUrl }).then((output) => {
-      memory = output.memory;
-      listen();
-    });
+    loading = (wasm ? Promise.resolve(wasm) : coreModule())
+      .then((module) => init({ module_or_path: module }))
+      .then((output) => {
+        memory = output.memory;
+        listen();
+      });
   }
   return loading;
 }

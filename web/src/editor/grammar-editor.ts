@@ -4,30 +4,14 @@ import { Decoration, EditorView, type DecorationSet } from '@codemirror/view';
 import { StateEffect, StateField, Transaction } from '@codemirror/state';
 import { forceLinting } from '@codemirror/lint';
 import { isolateHistory } from '@codemirror/commands';
-import type { Vocabulary } from '../core';
 import { grammarCompletion } from './completion';
 import { grammarSupport } from './language';
 import { commandHover } from './hover';
-import { grammarLinting, relint, type Diagnose } from './diagnostics';
+import { grammarLinting, relint } from './diagnostics';
 import { studioEditorTheme } from './theme';
+import type { GrammarEditor, GrammarEditorOptions } from './grammar-text';
 
-/** What {@link createGrammarEditor} needs. */
-export interface GrammarEditorOptions {
-  /** Element the editor is appended to. */
-  parent: HTMLElement;
-  /** Initial grammar text. */
-  doc: string;
-  /** Called with the new text after every change of the document. */
-  onChange: (text: string) => void;
-  /** Supplies the diagnostics shown for a text. */
-  diagnose: Diagnose;
-  /** The core's vocabulary: drives highlighting, completion and hover docs. */
-  vocabulary: Vocabulary;
-  /** Called with the cursor's position (UTF-16) whenever it moves or the text changes. */
-  onCursor?: (pos: number) => void;
-  /** Opens the language reference at a row (`referenceAnchor`): hover docs link to it. */
-  openReference?: (anchor: string) => void;
-}
+export type { GrammarEditor, GrammarEditorOptions };
 
 /** Sets (or clears, with null) the marked production range. */
 const markProductionEffect = StateEffect.define<{ from: number; to: number } | null>();
@@ -50,33 +34,21 @@ const markedProduction = StateField.define<DecorationSet>({
   provide: (field) => EditorView.decorations.from(field),
 });
 
-/** A grammar editor on the page. */
-export interface GrammarEditor {
-  /** The CodeMirror view (for focus, tests, and future commands). */
+/** The grammar editor once CodeMirror has loaded: the page's {@link GrammarEditor} and its view. */
+export interface CodeMirrorGrammarEditor extends GrammarEditor {
+  /** The CodeMirror view (for tests and future commands). */
   readonly view: EditorView;
-  /** The current grammar text. */
-  text(): string;
-  /** Re-runs the diagnostics now, e.g. after an option that changes the build changed. */
-  refreshDiagnostics(): void;
-  /**
-   * Replaces the whole text in one undoable transaction (Ctrl+Z brings the old text back), e.g.
-   * when an example is opened; the cursor goes to the start.
-   */
-  replaceText(text: string): void;
-  /**
-   * Replaces `from`..`to` (UTF-16 offsets) with `insert`: an undoable step, or with `history:
-   * false` a change undo skips (the steps of a slider drag, made one undo step at its end).
-   */
-  replaceRange(from: number, to: number, insert: string, options?: { history?: boolean }): void;
-  /** Marks a range (a production picked elsewhere) and scrolls it into view; null clears the mark. */
-  markProduction(range: { from: number; to: number } | null): void;
 }
 
-/** Creates the editor in `options.parent`. */
-export function createGrammarEditor(options: GrammarEditorOptions): GrammarEditor {
+/**
+ * Creates the editor in `options.parent`, with the text `options.doc` and, if given, `selection`
+ * (UTF-16 offsets, e.g. where the cursor stood in the placeholder it replaces).
+ */
+export function createGrammarEditor(options: GrammarEditorOptions, selection?: { anchor: number; head: number }): CodeMirrorGrammarEditor {
   const view = new EditorView({
     parent: options.parent,
     doc: options.doc,
+    selection,
     extensions: [
       basicSetup,
       grammarSupport(options.vocabulary),
@@ -96,6 +68,10 @@ export function createGrammarEditor(options: GrammarEditorOptions): GrammarEdito
   return {
     view,
     text: () => view.state.doc.toString(),
+    cursor: () => view.state.selection.main.head,
+    focus: () => view.focus(),
+    requestMeasure: () => view.requestMeasure(),
+    loaded: Promise.resolve(),
     refreshDiagnostics: () => {
       view.dispatch({ effects: relint.of(null) });
       forceLinting(view);

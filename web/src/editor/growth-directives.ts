@@ -3,7 +3,7 @@
 // per line, its arguments separated by spaces (expressions are written without spaces), a `//`
 // comment after them kept. Their arguments, defaults and labels come from the core's vocabulary.
 import { languageVocabulary, type Param, type Vocabulary } from '../core';
-import { directiveHoverText } from './hover';
+import { directiveHoverText } from './hover-text';
 
 /** One argument of a directive, as the panel edits it. */
 export interface GrowthField {

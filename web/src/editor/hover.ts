@@ -3,19 +3,11 @@
 import { syntaxTree } from '@codemirror/language';
 import type { Extension } from '@codemirror/state';
 import { closeHoverTooltips, hoverTooltip } from '@codemirror/view';
-import { argumentsText, paramsText, writtenDirective, type DirectiveInfo, type ModuleInfo, type Vocabulary } from '../core';
+import { writtenDirective, type Vocabulary } from '../core';
+import { commandHoverText, directiveHoverText } from './hover-text';
 import { referenceAnchor } from './reference';
 
-/** Text of the hover for a module, e.g. `F(l = #step) — Move forward by l and draw a segment.` */
-export function commandHoverText(module: Pick<ModuleInfo, 'name' | 'params' | 'doc'>): string {
-  const params = module.params.length > 0 ? `(${paramsText(module.params)})` : '';
-  return `${module.name}${params} — ${module.doc}`;
-}
-
-/** Text of the hover for a directive, e.g. `#tropism x y z e — The tropism vector…`. */
-export function directiveHoverText(directive: DirectiveInfo): string {
-  return `${writtenDirective(directive)} ${argumentsText(directive)} — ${directive.doc}`;
-}
+export { commandHoverText, directiveHoverText };
 
 /** Syntax node names (token names of the grammar language) that stand for a turtle command. */
 const COMMAND_NODES = new Set(['turtleCommand', 'squareBracket']);

@@ -20,7 +20,8 @@ export { chapterHeading, compareLessons, isLesson, isLessonIndex, type Lesson, t
 export { CHECK_FACTS, CHECK_FUNCTIONS, evaluateCheck, needsDerivedString, parseCheck, plantFacts, spokenAnswer, MAX_CHECKED_MODULES, type CheckAnswer, type CheckNode, type PlantFacts } from './lesson-check';
 export { askToDownload, askToReplace, type QuestionDialog } from './confirm';
 export { ContextView, type ContextViewElements } from './context-view';
-export { DerivationView, descendants, firstChildren, originInWords, SEQUENCE_MAX_MODULES, TREE_MAX_MODULES, type DerivationViewHost } from './derivation-view';
+export { LazyDerivationView } from './derivation-loader';
+// derivation-view (the Derivation tab) is not re-exported: it loads with the tab (derivation-loader).
 export { countsInWords, describeProduction, madeInWords, reportInWords, lineOf } from './explain-words';
 export { installInspectorTabs } from './inspector-tabs';
 export { LayoutModes, type LayoutElements, type LayoutHost } from './layout-modes';

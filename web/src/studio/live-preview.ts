@@ -68,6 +68,7 @@ export class LivePreview {
   private deliveredKey: string | undefined;
   private readonly listeners = new Set<(result: BuildResult) => void>();
   private readonly sketchListeners = new Set<(sketch: PlantSketch) => void>();
+  private readonly progressWaiters: (() => void)[] = [];
   /** When the oldest request not yet delivered was made (undefined: none waits). */
   private pendingSince: number | undefined;
   /** The newest request's progress, as its worker tells it. */
@@ -105,6 +106,11 @@ export class LivePreview {
     });
   }
 
+  /** Settles at the next progress report of a build: the worker is at work (its core has loaded). */
+  nextProgress(): Promise<void> {
+    return new Promise((resolve) => this.progressWaiters.push(resolve));
+  }
+
   /**
    * Builds the current text with the current options, unless that is what was asked last (or
    * `force`: e.g. an example opened again must be framed again).
@@ -124,6 +130,7 @@ export class LivePreview {
       .request(source, options, {
         onSketch: (sketch) => this.sketch(sketch, key),
         onProgress: (progress) => {
+          for (const resolve of this.progressWaiters.splice(0)) resolve();
           if (key !== this.requestedKey) return;
           this.progress = progress;
           if (this.building) this.showBuilding();

@@ -11,6 +11,8 @@ export interface StudioTestHook {
   ready: Promise<void>;
   /** Stats of the plant on screen. */
   lastStats: PlantStats | null;
+  /** `Date.now()` when the first plant (a build with segments) arrived: the first-load test's end. */
+  firstPlantAt?: number;
   /** The live preview (last builds, delivery events). */
   preview?: LivePreview;
   /** The last frame drawn: the delivered-build counter at the time, and `performance.now()`. */
@@ -51,6 +53,7 @@ export interface TestedStudio {
 export function connectTestHook(hook: StudioTestHook, { preview, view, branchEdits }: TestedStudio): void {
   preview.onDelivered((result) => {
     if (result.build.ok) hook.lastStats = result.build.stats;
+    if (result.build.ok && result.build.stats.segments > 0) hook.firstPlantAt ??= Date.now();
   });
   let sketchPending = false;
   preview.onSketched(() => (sketchPending = true));

@@ -76,19 +76,19 @@ export class TextOpening {
     const mine = editor.text();
     const theirs = mine !== this.pristine && mine !== text;
     if (theirs && !(await askToReplace(confirm.dialog, confirm.example, title))) {
-      editor.view.focus();
+      editor.focus();
       return false;
     }
     const kept = theirs ? await this.keep(mine, title, how.what ?? `“${title}”`) : '';
     if (kept === null) {
-      editor.view.focus();
+      editor.focus();
       return false;
     }
     this.parts.forgetText();
     this.pristine = isExample(file) ? text : undefined;
     this.file = file;
     editor.replaceText(text);
-    editor.view.focus();
+    editor.focus();
     this.parts.buildNow();
     (how.tell ?? ((said) => (said ? notice.show('info', `Opened ${title}. ${said}`) : notice.hide())))(kept);
     return true;

@@ -1,8 +1,8 @@
 // The page's side of the build worker: one request at a time, the newest waiting request only,
 // stale answers never delivered, and a worker stuck on an outdated build replaced.
-import type { BuildOptions, BuildProgress, DerivationStep, Explanation, LastStepLinks, MatchReport, PlantBuild, PlantInspector, PlantSketch } from '../core';
+import { coreModule, type BuildOptions, type BuildProgress, type DerivationStep, type Explanation, type LastStepLinks, type MatchReport, type PlantBuild, type PlantInspector, type PlantSketch } from '../core';
 import type { GpuArrays } from '../view/gpu-arrays';
-import type { BuildResponse, InspectAnswer, InspectQuestion, WorkerRequest, WorkerResponse } from './worker-protocol';
+import type { BuildResponse, CoreMessage, InspectAnswer, InspectQuestion, WorkerRequest, WorkerResponse } from './worker-protocol';
 import workerUrl from './worker.ts?worker&url';
 
 /** What the client needs of a Worker (a fake one in unit tests). */
@@ -83,9 +83,18 @@ interface Entry {
 export function createBuildWorker(): Worker {
   const url = new URL(workerUrl, import.meta.url);
   const options: WorkerOptions = { type: 'module', name: 'meristem-build' };
-  if (url.origin === location.origin) return new Worker(url, options);
-  const loader = new Blob([`import ${JSON.stringify(url.href)};`], { type: 'text/javascript' });
-  return new Worker(URL.createObjectURL(loader), options);
+  let worker: Worker;
+  if (url.origin === location.origin) worker = new Worker(url, options);
+  else {
+    const loader = new Blob([`import ${JSON.stringify(url.href)};`], { type: 'text/javascript' });
+    worker = new Worker(URL.createObjectURL(loader), options);
+  }
+  // Its first message: the core the page compiled (or null: the worker then fetches its own).
+  coreModule().then(
+    (module) => worker.postMessage({ kind: 'core', module } satisfies CoreMessage),
+    () => worker.postMessage({ kind: 'core', module: null } satisfies CoreMessage),
+  );
+  return worker;
 }
 
 /**
@@ -173,6 +182,11 @@ export class BuildClient {
     if (entry.settled) return;
     entry.settled = true;
     entry.resolve(outcome);
+  }
+
+  /** Starts the worker now (its script and core load meanwhile), before the first request. */
+  warmUp(): void {
+    this.ensureWorker();
   }
 
   private ensureWorker(): WorkerLike {

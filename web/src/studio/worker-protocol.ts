@@ -6,6 +6,15 @@ import type { GpuArrays } from '../view/gpu-arrays';
 /** The questions a kept build answers: the methods of `PlantInspector`, asked by name. */
 export type InspectQuestion = Exclude<keyof PlantInspector, 'free'>;
 
+/**
+ * The page's first message to a build worker: the core's compiled module (`coreModule()`), so the
+ * worker does not download it again; null when the page could not compile it (the worker fetches it).
+ */
+export interface CoreMessage {
+  kind: 'core';
+  module: WebAssembly.Module | null;
+}
+
 /** Page → worker. */
 export type WorkerRequest =
   /**

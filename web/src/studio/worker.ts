@@ -1,14 +1,16 @@
 // The build worker: runs the core (parse → resolve → derive → interpret → mesh) off the page's
-// main thread, so typing never waits for a big plant. It initialises its own WebAssembly
-// instance and answers each request in order: builds, whose typed arrays go back in a transfer
-// list, and questions about a kept build (the context-sensitivity view's explanations and the
-// derived-string panel's module texts), until the page frees it; a plant the page still shows
-// after its worker was replaced is built again and kept (`keep`). Started by createBuildWorker
+// main thread, so typing never waits for a big plant. It instantiates its own WebAssembly
+// instance (of the module the page compiled and sends first) and answers each request in order:
+// builds, whose typed arrays go back in a transfer list, and questions about a kept build (the
+// context-sensitivity view's explanations and the derived-string panel's module texts), until the
+// page frees it; a plant the page still shows after its worker was replaced is built again and
+// kept (`keep`). Started by createBuildWorker
 // (worker-client.ts). A big plant is first sent as a sketch (its segments as lines), then built.
 import { CoreCrashed, initCore, inspectPlant, type BuildProgress, type PlantInspector } from '../core';
 import { packForGpu } from '../view/gpu-arrays';
 import {
   answerTransferables,
+  type CoreMessage,
   PROGRESS_INTERVAL,
   SKETCH_MIN_SEGMENTS,
   transferablesOf,
@@ -21,7 +23,15 @@ import {
 /** Kept builds at most: the page frees what it does not show, this only bounds a leak. */
 const MAX_KEPT = 4;
 
-const ready = initCore();
+/** The core: the module the page compiled and sent first (createBuildWorker), else fetched here. */
+const ready = new Promise<WebAssembly.Module | null>((resolve) => {
+  const first = (event: MessageEvent<CoreMessage | WorkerRequest>) => {
+    if (event.data.kind !== 'core') return;
+    removeEventListener('message', first);
+    resolve(event.data.module);
+  };
+  addEventListener('message', first);
+}).then((module) => initCore(module ?? undefined));
 const kept = new Map<number, PlantInspector>();
 
 function reply(response: WorkerResponse, transfer: Transferable[] = []): void {
@@ -69,8 +79,9 @@ function progressTeller(id: number): (progress: BuildProgress) => void {
   };
 }
 
-addEventListener('message', async (event: MessageEvent<WorkerRequest>) => {
+addEventListener('message', async (event: MessageEvent<WorkerRequest | CoreMessage>) => {
   const request = event.data;
+  if (request.kind === 'core') return;
   try {
     await ready;
   } catch (error) {

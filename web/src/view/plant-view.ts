@@ -147,13 +147,24 @@ export class PlantView {
   private readonly darkScheme = window.matchMedia(DARK_SCHEME);
   private readonly resizeObserver: ResizeObserver;
   private readonly renderListeners = new Set<() => void>();
+  /** A plant was given to {@link showPlant} (the textures load after its first frame). */
+  private plantShown = false;
 
   /** `assetBase`: the site's root, where the textures are (default: the page's address). */
   constructor(
     private readonly container: HTMLElement,
     { assetBase }: { assetBase?: string } = {},
   ) {
-    const texture = (name: 'bark' | 'leaf') => loadTexture(name, () => this.textureLoaded(), (message) => this.texturesFailed(message), assetBase);
+    // The images (150 KB, not part of any plant's first frame: it shows untextured until they are
+    // there) load after the first frame that drew a plant, not beside the core and the script.
+    const plantDrawn = new Promise<void>((resolve) => {
+      const stop = this.onRender(() => {
+        if (!this.plantShown) return;
+        stop();
+        resolve();
+      });
+    });
+    const texture = (name: 'bark' | 'leaf') => loadTexture(name, () => this.textureLoaded(), (message) => this.texturesFailed(message), assetBase, plantDrawn);
     this.textured = texturedMaterials(texture('bark'), texture('leaf'), this.lit, this.unlit);
     this.renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true, alpha: true });
     this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
@@ -220,6 +231,7 @@ export class PlantView {
 
   /** Puts `mesh` (its `geometry`, or its lines) on screen in place of the old plant. */
   private swapIn(mesh: MeshBuffers, flat: boolean, geometry: BufferGeometry | undefined): void {
+    this.plantShown = true;
     const asLines = geometry === undefined;
     const oldMesh = this.plant.geometry;
     const oldLines = this.lines.geometry;

@@ -2,7 +2,7 @@
 // relative to the site's root (the site may be served from any sub-path, a plant embedded in
 // another site's page loads them from Meristem's), and the lit and unlit material
 // triples (bark, leaf, plain) indexed by the mesh's material kinds (see addMaterialGroups).
-import { DoubleSide, type Material, MeshBasicMaterial, MeshStandardMaterial, RepeatWrapping, SRGBColorSpace, type Texture, TextureLoader } from 'three';
+import { DoubleSide, ImageLoader, type Material, MeshBasicMaterial, MeshStandardMaterial, RepeatWrapping, SRGBColorSpace, Texture } from 'three';
 
 /** Where a shipped texture is: under `base`, the site's root (the page's own address by default). */
 export function textureUrl(name: 'bark' | 'leaf', base: string = document.baseURI): string {
@@ -10,15 +10,29 @@ export function textureUrl(name: 'bark' | 'leaf', base: string = document.baseUR
 }
 
 /**
- * Loads a texture; `onLoad` runs when its image arrived (to render again). The image rows run
- * top-down from v = 0, as in glTF (`flipY` off), and it repeats both ways.
+ * A texture whose image loads once `after` settles (at once by default); `onLoad` runs when it
+ * arrived (to render again). The image rows run top-down from v = 0, as in glTF (`flipY` off), and
+ * it repeats both ways.
  */
-export function loadTexture(name: 'bark' | 'leaf', onLoad: () => void, onError: (message: string) => void, base?: string): Texture {
-  const texture = new TextureLoader().load(textureUrl(name, base), onLoad, undefined, () => onError(`The ${name} texture could not be loaded.`));
+export function loadTexture(name: 'bark' | 'leaf', onLoad: () => void, onError: (message: string) => void, base?: string, after: Promise<void> = Promise.resolve()): Texture {
+  const texture = new Texture();
   texture.flipY = false;
   texture.wrapS = RepeatWrapping;
   texture.wrapT = RepeatWrapping;
   texture.colorSpace = SRGBColorSpace;
+  const url = textureUrl(name, base);
+  void after.then(() =>
+    new ImageLoader().load(
+      url,
+      (image) => {
+        texture.image = image;
+        texture.needsUpdate = true;
+        onLoad();
+      },
+      undefined,
+      () => onError(`The ${name} texture could not be loaded.`),
+    ),
+  );
   return texture;
 }
 

@@ -1,0 +1,129 @@
+// The grammar text on the page before and after CodeMirror (issue 22): the studio draws its first
+// plant with a plain <textarea> holding the grammar, and the editor (CodeMirror, its language,
+// completion, hover docs and linting: about a third of the page's script) loads after that first
+// frame, or as soon as the user reaches for the text. What the user typed or selected meanwhile
+// goes over into the editor; nothing typed early is lost or ignored (it builds as it does later).
+// Invariant: nothing here imports CodeMirror; `./grammar-editor` arrives by a dynamic import.
+import type { Vocabulary } from '../core';
+import type { Diagnose } from './diagnostics';
+
+/** What the grammar editor needs. */
+export interface GrammarEditorOptions {
+  /** Element the editor is appended to. */
+  parent: HTMLElement;
+  /** Initial grammar text. */
+  doc: string;
+  /** Called with the new text after every change of the document. */
+  onChange: (text: string) => void;
+  /** Supplies the diagnostics shown for a text. */
+  diagnose: Diagnose;
+  /** The core's vocabulary: drives highlighting, completion and hover docs. */
+  vocabulary: Vocabulary;
+  /** Called with the cursor's position (UTF-16) whenever it moves or the text changes. */
+  onCursor?: (pos: number) => void;
+  /** Opens the language reference at a row (`referenceAnchor`): hover docs link to it. */
+  openReference?: (anchor: string) => void;
+}
+
+/** The grammar text on the page: the placeholder's until the editor has loaded, then the editor's. */
+export interface GrammarEditor {
+  /** The current grammar text. */
+  text(): string;
+  /** The cursor's position (UTF-16 offset). */
+  cursor(): number;
+  /** Moves the keyboard focus to the text. */
+  focus(): void;
+  /** Measures the layout again (after the pane changed size). */
+  requestMeasure(): void;
+  /** Re-runs the diagnostics now, e.g. after an option that changes the build changed. */
+  refreshDiagnostics(): void;
+  /**
+   * Replaces the whole text in one undoable transaction (Ctrl+Z brings the old text back), e.g.
+   * when an example is opened; the cursor goes to the start.
+   */
+  replaceText(text: string): void;
+  /**
+   * Replaces `from`..`to` (UTF-16 offsets) with `insert`: an undoable step, or with `history:
+   * false` a change undo skips (the steps of a slider drag, made one undo step at its end).
+   */
+  replaceRange(from: number, to: number, insert: string, options?: { history?: boolean }): void;
+  /** Marks a range (a production picked elsewhere) and scrolls it into view; null clears the mark. */
+  markProduction(range: { from: number; to: number } | null): void;
+  /**
+   * Settles when the full editor is on the page, or when it could not load (the text then stays a
+   * plain textarea, still built on every change); reading it starts the loading.
+   */
+  readonly loaded: Promise<void>;
+}
+
+/** The module with the full editor (CodeMirror), loaded on demand. */
+export type EditorModule = Pick<typeof import('./grammar-editor'), 'createGrammarEditor'>;
+
+/**
+ * A grammar text in a plain <textarea> in `options.parent` at once, replaced by the full editor
+ * from `load()` when {@link GrammarEditor.loaded} is first read or the user focuses the textarea,
+ * with the text and the selection the textarea held then (and the focus, if it had it). Until then
+ * every change, typed or made through the methods, calls `options.onChange` as the editor's do;
+ * marks and diagnostics wait for the editor.
+ */
+export function createLazyGrammarEditor(options: GrammarEditorOptions, load: () => Promise<EditorModule>): GrammarEditor {
+  const area = document.createElement('textarea');
+  area.className = 'grammar-placeholder';
+  area.dataset.testid = 'grammar-placeholder';
+  area.value = options.doc;
+  area.spellcheck = false;
+  area.setAttribute('aria-label', 'L-system grammar');
+  area.setAttribute('autocapitalize', 'off');
+  area.setAttribute('autocomplete', 'off');
+  options.parent.append(area);
+  area.addEventListener('input', () => {
+    options.onChange(area.value);
+    options.onCursor?.(area.selectionStart);
+  });
+
+  let full: GrammarEditor | undefined;
+  let loading: Promise<void> | undefined;
+  const upgrade = (): Promise<void> =>
+    (loading ??= load().then((module) => {
+      const hadFocus = document.activeElement === area;
+      const [start, end] = [area.selectionStart, area.selectionEnd];
+      const selection = area.selectionDirection === 'backward' ? { anchor: end, head: start } : { anchor: start, head: end };
+      const clamp = (n: number) => Math.min(n, area.value.length);
+      full = module.createGrammarEditor({ ...options, doc: area.value }, { anchor: clamp(selection.anchor), head: clamp(selection.head) });
+      area.remove();
+      if (hadFocus) full.focus();
+    }, reportLoadError));
+  area.addEventListener('focus', () => void upgrade(), { once: true });
+
+  const changed = () => {
+    options.onChange(area.value);
+    options.onCursor?.(area.selectionStart);
+  };
+  return {
+    text: () => full?.text() ?? area.value,
+    cursor: () => full?.cursor() ?? area.selectionStart,
+    focus: () => (full ? full.focus() : area.focus()),
+    requestMeasure: () => full?.requestMeasure(),
+    refreshDiagnostics: () => full?.refreshDiagnostics(),
+    replaceText: (text) => {
+      if (full) return full.replaceText(text);
+      area.value = text;
+      area.setSelectionRange(0, 0);
+      area.scrollTop = 0;
+      changed();
+    },
+    replaceRange: (from, to, insert, history) => {
+      if (full) return full.replaceRange(from, to, insert, history);
+      area.setRangeText(insert, from, to, 'preserve');
+      changed();
+    },
+    markProduction: (range) => full?.markProduction(range),
+    get loaded() {
+      return upgrade();
+    },
+  };
+}
+
+function reportLoadError(error: unknown): void {
+  console.error('The grammar editor could not load (the text stays editable as plain text):', error);
+}
