@@ -13,11 +13,14 @@ import { serveStatic, type StaticSite } from './static-server';
 /**
  * Script + wasm + styles of the first paint of a plant, gzipped (bytes). Issue 22 asks for 400 KB
  * and the studio does not reach it yet: 486 KB on 2026-11-25 (three.js 146 KB and the core's wasm
- * 267 KB are 413 KB on their own; README "The first load" says what is left to do). This guards
- * what it reaches, a ratchet to lower towards 400 KB, never to raise without a reason. The editor
+ * 267 KB are 413 KB on their own; README "The first load" says what is left to do), then 506 KB
+ * once issue 19's robustness work merged into the core (serde_json's float_roundtrip, 10 KB: an
+ * edits document reads back exactly the numbers it was written with; the monotone sweep for big
+ * polygons and the drag checks). This guards what it reaches, a ratchet to lower towards 400 KB,
+ * never to raise without a reason. The editor
  * (CodeMirror) loads after the first plant and is not part of it.
  */
-const BUDGET = 490_000;
+const BUDGET = 510_000;
 /** Time to the first plant on "Fast 3G": issue 22 asks for 4 s; 4.5 s measured (README). A guard against a regression (the core downloaded twice, a blocking fetch), not the target. */
 const FAST_3G_GUARD_MS = 7_000;
 const SUB_PATH = '/first/load/';
