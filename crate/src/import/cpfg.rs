@@ -73,6 +73,74 @@ const LPY_NAMES: &[(&str, Meaning)] = &[
     ("GetLeft", Meaning::Turtle(Command::QueryLeft)),
 ];
 
+/// L-Py's other predefined modules with names longer than a letter (its `predefinedmodules.cpp`):
+/// a word among them is one module even undeclared; any other undeclared word is read letter by
+/// letter, as L-Py reads it (`IB(1-x)` is `I` then `B(1-x)`).
+const LPY_PREDEFINED: &[&str] = &[
+    "GetRight",
+    "GetFrame",
+    "BP",
+    "EP",
+    "PP",
+    "MoveRel",
+    "LineTo",
+    "OLineTo",
+    "Pinpoint",
+    "LineRel",
+    "OLineRel",
+    "PinpointRel",
+    "SetHead",
+    "EulerAngles",
+    "Left",
+    "Right",
+    "Up",
+    "Down",
+    "RollL",
+    "RollR",
+    "iRollL",
+    "iRollR",
+    "RollToHorizontal",
+    "Box",
+    "Quad",
+    "Circle",
+    "Label",
+    "IncWidth",
+    "DecWidth",
+    "DecColor",
+    "InterpolateColors",
+    "TextureBaseColor",
+    "InterpolateTextureBaseColors",
+    "DivScale",
+    "MultScale",
+    "SetScale",
+    "surface",
+    "PglShape",
+    "Frame",
+    "Arrow",
+    "Elasticity",
+    "Tropism",
+    "SetContour",
+    "SectionResolution",
+    "SetGuide",
+    "EndGuide",
+    "Sweep",
+    "PositionOnGuide",
+    "TextureScale",
+    "TextureUScale",
+    "TextureVScale",
+    "TextureVCoeff",
+    "TextureTranslation",
+    "TextureRotation",
+    "TextureTransformation",
+    "LeftReflection",
+    "UpReflection",
+    "HeadingReflection",
+    "StartScreenProjection",
+    "EndScreenProjection",
+    "MouseIns",
+    "newmodule",
+];
+
 pub(super) fn import(text: &str, flavour: Flavour) -> Import {
     import_with(text, flavour, None, &|_| None)
 }
@@ -296,9 +364,64 @@ fn starts_with_keyword(code: &str) -> bool {
         .any(|k| compact.starts_with(k))
 }
 
+/// cpfg productions whose head (predecessor, condition, statement block) spans lines: a line at
+/// the margin without an arrow, then indented lines (or lines opening with `{`, `:` or the
+/// arrow) up to the one with the arrow, as vlab objects write them:
+/// `N(k) < I(b,m,v,c) : b==0 && m==2` / `\t{flux=…;} -->` / `\tI(b,1,flux,c)`.
+fn join_production_heads(mut lines: Vec<Line>) -> Vec<Line> {
+    let mut i = 0;
+    while i < lines.len() {
+        let a = &lines[i];
+        if a.indent > 0
+            || a.code.is_empty()
+            || arrow(&a.code).is_some()
+            || starts_with_keyword(&a.code)
+        {
+            i += 1;
+            continue;
+        }
+        let mut run = Vec::new();
+        let mut found = false;
+        for (j, b) in lines.iter().enumerate().skip(i + 1) {
+            if b.code.is_empty() {
+                if b.comment.is_empty() {
+                    break;
+                }
+                continue;
+            }
+            let continues = b.indent > 0
+                || ["{", ":", "-->", "->"]
+                    .iter()
+                    .any(|t| b.code.starts_with(t));
+            if starts_with_keyword(&b.code) || !continues || run.len() == 6 {
+                break;
+            }
+            run.push(j);
+            if arrow(&b.code).is_some() {
+                found = true;
+                break;
+            }
+        }
+        if found {
+            let taken: Vec<Line> = run.iter().rev().map(|&j| lines.remove(j)).collect();
+            for b in taken.into_iter().rev() {
+                let code = format!("{} {}", lines[i].code, b.code);
+                lines[i].code = code;
+                if !b.comment.is_empty() {
+                    let comment = format!("{} {}", lines[i].comment, b.comment);
+                    lines[i].comment = comment.trim().to_string();
+                }
+            }
+        }
+        i += 1;
+    }
+    lines
+}
+
 /// cpfg productions written over two lines: `pred : cond` then `--> succ` on the next line, or
 /// `pred -->` then the successor (at any indentation) on the next.
-fn join_two_line_productions(mut lines: Vec<Line>) -> Vec<Line> {
+fn join_two_line_productions(lines: Vec<Line>) -> Vec<Line> {
+    let mut lines = join_production_heads(lines);
     let mut i = 0;
     while i < lines.len() {
         let next = (i + 1..lines.len()).find(|&j| !lines[j].code.is_empty());
@@ -1349,6 +1472,15 @@ impl Importer {
                 i += 1;
                 continue;
             }
+            // cpfg's `=` in a right context skips the rest of the branch up to its `]`
+            // (`[I(b)=]`): what Meristem's `]` in a pattern does.
+            if c == '='
+                && self.flavour == Flavour::Cpfg
+                && chars[i + 1..].iter().find(|c| !c.is_whitespace()) == Some(&']')
+            {
+                i += 1;
+                continue;
+            }
             let (name, after) = if c == '@' || c == '~' || c == '?' {
                 symbol_name(&chars, i)
             } else if c.is_ascii_alphabetic() && self.flavour == Flavour::Lpy {
@@ -1367,6 +1499,17 @@ impl Importer {
             if chars.get(j) == Some(&'(') {
                 let close = matching(&chars, j).ok_or("a '(' is never closed")?;
                 let inner: String = chars[j + 1..close].iter().collect();
+                if name == "@L" {
+                    // A text label (`@L("%.f", c)`): Meristem draws no text.
+                    let tool = self.flavour.tool();
+                    self.note_once(
+                        "@L",
+                        n,
+                        format!("{tool}'s @L draws a text label; Meristem draws no text, so the label is dropped"),
+                    );
+                    i = close + 1;
+                    continue;
+                }
                 has_params = true;
                 for arg in split_top(&inner, ',') {
                     params.push(self.expression(arg, env)?);
@@ -1379,7 +1522,7 @@ impl Importer {
     }
 
     /// The L-Py module name at `chars[start]`: the longest declared or predefined long name
-    /// there, an undeclared longer word before `(` (declared now, and reported once), or one
+    /// there, another predefined L-Py word before `(` (declared now, and reported once), or one
     /// letter. Returns it and the index after it.
     fn lpy_name(&mut self, chars: &[char], start: usize, n: usize) -> (String, usize) {
         let rest: String = chars[start..].iter().collect();
@@ -1405,10 +1548,10 @@ impl Importer {
                 let end = start + name.chars().count();
                 (name, end)
             }
-            // A longer word followed by '(' is one module in L-Py (an undeclared name).
+            // One of L-Py's other predefined modules followed by '(' (Meristem lacks it).
             None if word_len > 1
                 && rest[word_len..].trim_start().starts_with('(')
-                && rest[..word_len].chars().all(|c| c.is_ascii_alphabetic()) =>
+                && LPY_PREDEFINED.contains(&&rest[..word_len]) =>
             {
                 let word = rest[..word_len].to_string();
                 if !self.unknown_names.contains(&word) {
