@@ -29,8 +29,8 @@ type Failure = (&'static str, Entry);
 /// The share of the corpus that must build its plant (issue 21: 95 %).
 const GOAL: f64 = 0.95;
 
-/// The share reached so far (63 of 82 files): it may only rise, towards [`GOAL`].
-const FLOOR: f64 = 0.768;
+/// The share reached so far (64 of 82 files): it may only rise, towards [`GOAL`].
+const FLOOR: f64 = 0.78;
 
 const CORPUS: &[Entry] = &[
     (
@@ -349,27 +349,9 @@ const CORPUS: &[Entry] = &[
         ],
     ),
     ("lpy/13-branched-signal.lpy", 16, 7, &[]),
-    (
-        "lpy/17-open-lsystem-simple-growth.lpy",
-        1368,
-        576,
-        &[(
-            13,
-            "the condition 4*y*y +(z-10)^2 > 100: Python's ^ is a bitwise or, not a p",
-        )],
-    ),
     ("lpy/Frame.lpy", 5, 1, &[]),
     ("lpy/branching.lpy", 6, 3, &[]),
     ("lpy/combined.lpy", 37, 7, &[]),
-    (
-        "lpy/ex_lsystem2.lpy",
-        1368,
-        576,
-        &[(
-            13,
-            "the condition 4*y*y +(z-10)^2 > 100: Python's ^ is a bitwise or, not a p",
-        )],
-    ),
     ("lpy/ex_lsystem3.lpy", 134, 48, &[]),
     ("lpy/filledPolygons.lpy", 20, 1, &[]),
     ("lpy/generalizedCylinders.lpy", 12, 6, &[]),
@@ -406,6 +388,23 @@ const CORPUS: &[Entry] = &[
     ("lpy/visualize.lpy", 10, 7, &[]),
     ("lpy/width.lpy", 7, 4, &[]),
     (
+        "lpy/10-random-tree.lpy",
+        11072,
+        1472,
+        &[
+            (2, "Python imports are not translated"),
+            (10, "the Python function 'Start' is not translated"),
+            (
+                14,
+                "L-Py's @GsG is not a Meristem command; kept as a module the turtle ignor",
+            ),
+            (
+                47,
+                "the Python code 'd = 0.05+0.25* ((x/k)+(1-x)/(k-1))' is not translated (",
+            ),
+        ],
+    ),
+    (
         "lpy/11a-markov-1stem.lpy",
         221,
         139,
@@ -429,16 +428,12 @@ const CORPUS: &[Entry] = &[
             ),
         ],
     ),
+    ("lpy/17-open-lsystem-simple-growth.lpy", 33, 9, &[]),
+    ("lpy/ex_lsystem2.lpy", 33, 9, &[]),
 ];
 
 /// The files that do not yet build the plant their source implies, each with the reason.
 const FAILURES: &[Failure] = &[
-("its apex's productions compute Python values in their bodies (p1 = min(…), d = 1) before producing; Meristem imports bodies of if/elif/else and produce only, so they are skipped and no tree grows", ("lpy/10-random-tree.lpy", 3, 0, &[(
-2, "Python imports are not translated"),(
-10, "the Python function 'Start' is not translated"),(
-14, "L-Py's @GsG is not a Meristem command; kept as a module the turtle ignor"),(
-20, "the Python code 'p1 = min(1,(2*k+1)/k**2)' is not translated (Meristem i"),(
-45, "the Python code 'd = 1' is not translated (Meristem imports bodies made "),])),
 ("the production that ends the stem sets the global m (global m; m = 1) that the lateral productions test; Meristem has no variables, so that production is skipped and no lateral stem starts", ("lpy/11b-markov-nstems.lpy", 10, 0, &[(
 1, "Python imports are not translated"),(
 13, "the Python function 'Start' is not translated"),(
@@ -449,18 +444,18 @@ const FAILURES: &[Failure] = &[
 12, "the Python function 'txt' returns str(round(val,2))[:5]: '[' in an expre"),(
 15, "the Python function 'Start' is not translated"),(
 44, "the Python code 'global sumauxin' is not translated (Meristem imports bo"),(
-52, "the Python code 'col = int(10*(a-min_level)/(max_level-min_level))' is n"),(
+53, "the Python code 'a += 0.1' is not translated (Meristem imports bodies ma"),(
 56, "L-Py's @L draws a text label; Meristem draws no text, so the label is dr"),(
 63, "the Python function '__initialiseContext__' is not translated"),])),
 ("the productions compute auxin and colours in Python statements (auxin = max_level, col = int(…)); they are skipped and the stem does not grow", ("lpy/13b-flow1stem-diffusecontinuouslyfromroot.lpy", 2, 0, &[(
 8, "the Python function 'txt' returns str(round(val,2))[:5]: '[' in an expre"),(
 34, "the Python code 'auxin = max_level' is not translated (Meristem imports "),(
-42, "the Python code 'col = int(10*(a-min_level)/(max_level-min_level))' is n"),(
+43, "the Python code 'a += 0.1' is not translated (Meristem imports bodies ma"),(
 49, "the Python function '__initialiseContext__' is not translated"),])),
 ("the productions compute auxin and colours in Python statements (auxin = max_level, col = int(…)); they are skipped and the stem does not grow", ("lpy/13c-flow1stem-diffusecontfromapexwithdeg.lpy", 2, 0, &[(
 11, "the Python function 'txt' returns str(round(val,2))[:5]: '[' in an expre"),(
 39, "the Python code 'auxin = max_level' is not translated (Meristem imports "),(
-47, "the Python code 'col = int(10*(a-min_level)/(max_level-min_level))' is n"),(
+48, "L-Py's @L draws a text label; Meristem draws no text, so the label is dr"),(
 54, "the Python function '__initialiseContext__' is not translated"),])),
 ("modules carry Python objects (T(SegmentData())) and the bending is computed with PlantGL vectors in Python; nothing of it is expressible, not even the axiom", ("lpy/16a-branch-bending.lpy", 0, 0, &[(
 0, "nothing to derive: no axiom could be imported"),(
@@ -485,8 +480,8 @@ const FAILURES: &[Failure] = &[
 139, "the Python code 'print (\"GROWTH ------------------ GROWTH\")' is not tran"),(
 147, "Meristem rejects the translation `B(n) : n>0 -> S(SegmentData())B(n-1)`:"),(
 153, "Meristem rejects the translation `T(c) -> !(S_DIAM*1.4)F(S_LEN*12)`: 'T'"),(
-156, "the Python code 'alpha = degrees(angle(Vector3(0,1,0),a.H,(1,0,0)))' is "),(
-160, "the Python code 'alpha = degrees(angle(c.H,a.H,(1,0,0)))' is not transla"),(
+157, "'a.H' is Python, not a number expression; the production is skipped"),(
+161, "'c.H' is Python, not a number expression; the production is skipped"),(
 167, "the Python function '__initialiseContext__' is not translated"),])),
 ("modules carry Python objects (SegmentData()) and the bending is computed with PlantGL vectors in Python; nothing of it is expressible, not even the axiom", ("lpy/16b-branching-system-bending.lpy", 0, 0, &[(
 0, "nothing to derive: no axiom could be imported"),(
@@ -513,9 +508,9 @@ const FAILURES: &[Failure] = &[
 161, "the Python code 'print (\"GROWTH ------------------ GROWTH\")' is not tran"),(
 169, "Meristem rejects the translation `B(n) : n>0 -> S(SegmentData())B(n-1)`:"),(
 174, "Meristem rejects the translation `T(c) -> !(S_DIAM*1.4)F(S_LEN*12)`: 'T'"),(
-177, "the Python code 'alpha = degrees(angle(Vector3(0,1,0),a.H,(1,0,0)))' is "),(
-181, "the Python code 'alpha = degrees(angle(c.H,a.H,(1,0,0)))' is not transla"),(
-185, "the Python code 'alpha = degrees(angle(c.H,a.H,(1,0,0)))' is not transla"),(
+178, "'a.H' is Python, not a number expression; the production is skipped"),(
+182, "'c.H' is Python, not a number expression; the production is skipped"),(
+186, "'c.H' is Python, not a number expression; the production is skipped"),(
 192, "the Python function '__initialiseContext__' is not translated"),])),
 ("the leaf is a generalized cylinder (@Gs … @Gc … @Ge) swept along invisible f moves in a recursive homomorphism; Meristem's smooth axis follows drawn segments only, so nothing is drawn", ("vlab/01-herb-lily", 5, 0, &[(
 0, "the materials of plant.mat become their diffuse colours: their ambient, "),(
@@ -544,6 +539,20 @@ const FAILURES: &[Failure] = &[
 43, "cpfg's @Gt is not a Meristem command; kept as a module the turtle ignore"),(
 43, "cpfg's @Gr is not a Meristem command; kept as a module the turtle ignore"),(
 51, "cpfg's @Gc marks a control point of a generalized cylinder; Meristem's s"),])),
+("the axiom uses f(l,t) with two parameters and multi-module predecessors (1 < aF > *); the axiom is rejected, so nothing is derived", ("vlab/22-insect-realistic", 0, 0, &[(
+0, "nothing to derive: no axiom could be imported"),(
+19, "cpfg's StartEach: statement 's=0' changes the variable s during the deri"),(
+19, "cpfg's printf prints to the console; it is not translated (the plant is "),(
+20, "cpfg's EndEach: statement 's=1' changes the variable s during the deriva"),(
+26, "Meristem rejects the translation `axiom: ;(1)[!(1);(48)+(90)f(GL)[-(180)"),(
+27, "'[-(90)f(1)-(90)f(0.5,0)/(70)h]]SM' is not part of the notation Meristem"),(
+29, "Meristem rejects the translation `f(l,t)/(n)h : l >=GL-0.5 -> ε`: the pr"),(
+42, "Meristem rejects the translation `1 < aF > * -> f`: the predecessor must"),(
+43, "the statement 'c=c+SINC' changes cpfg's global variable c during the der"),(
+47, "Meristem rejects the translation `3 < bF > * -> f`: the predecessor must"),(
+49, "Meristem rejects the translation `* < 4 > F]g -> 5`: ']' has no matching"),(
+73, "Meristem rejects the translation `A(n,m)B : n == 0 && m == 0 -> I(PL,INR"),(
+89, "~b names a surface from a file; Meristem draws only ~l and ~p, so it is "),])),
 ("the trees grow from environmental queries (?E) of a light model and productions over several modules with statement blocks; most productions are rejected", ("vlab/12-two-trees", 4, 0, &[(
 0, "the materials of tree.mat become their diffuse colours: their ambient, e"),(
 49, "cpfg's printf prints to the console; it is not translated (the plant is "),(
@@ -587,20 +596,26 @@ const FAILURES: &[Failure] = &[
 213, "' G(SLi*vig)~m(((Ls*vig*0.5)*0.9 + ran(0.1*(Ls*vig*0.5))))' is not part "),(
 270, "cpfg's @Tf is not a Meristem command; kept as a module the turtle ignore"),(
 270, "~m names a surface from a file; Meristem draws only ~l and ~p, so it is "),])),
-("the axiom uses f(l,t) with two parameters and multi-module predecessors (1 < aF > *); the axiom is rejected, so nothing is derived", ("vlab/22-insect-realistic", 0, 0, &[(
+("derivation length 1 (STEPS) draws only the seed; the flux productions need nested statement blocks (if … { printf … }) in their conditions and global variables (go, shoot, root), which are dropped", ("vlab/ShootRoot", 11, 4, &[(
+47, "the statement 'go=1' changes cpfg's global variable go during the deriva"),(
+47, "the statement 'shoot = cs' changes cpfg's global variable shoot during t"),(
+47, "the statement 'root=cr' changes cpfg's global variable root during the d"),(
+47, "the statement 'printf(\"shoot = %lf, root = %lf\\n\", shoot, root)' is not "),(
+59, "the statement 'go=0' changes cpfg's global variable go during the deriva"),(
+64, "Meristem rejects the translation `XI(b,m,v,c,s,w) -> I(b,2,0,0,s,0)D%`: "),(
+98, "the condition ml==1 && b==1 && c>0 && cl !=c }: '}' in an expression; th"),(
+106, "the condition ml==1 && b==2 && c>0 && cl !=c }: '}' in an expression; th"),(
+119, "the condition m==0 && m1==2&&m2==2 }: '}' in an expression; the producti"),(
+145, "cpfg's @c is not a Meristem command; kept as a module the turtle ignores"),(
+147, "cpfg's @R is not a Meristem command; kept as a module the turtle ignores"),(
+147, "cpfg's @L draws a text label; Meristem draws no text, so the label is dr"),])),
+("the pruning box is a #define continued over three lines, and the pruning uses a multi-module predecessor with a position query (F(n)A > ?P(x,y,z)); the axiom is rejected", ("vlab/topiary", 0, 0, &[(
 0, "nothing to derive: no axiom could be imported"),(
-19, "cpfg's StartEach: statement 's=0' changes the variable s during the deri"),(
-19, "cpfg's printf prints to the console; it is not translated (the plant is "),(
-20, "cpfg's EndEach: statement 's=1' changes the variable s during the deriva"),(
-26, "Meristem rejects the translation `axiom: ;(1)[!(1);(48)+(90)f(GL)[-(180)"),(
-27, "'[-(90)f(1)-(90)f(0.5,0)/(70)h]]SM' is not part of the notation Meristem"),(
-29, "Meristem rejects the translation `f(l,t)/(n)h : l >=GL-0.5 -> ε`: the pr"),(
-42, "Meristem rejects the translation `1 < aF > * -> f`: the predecessor must"),(
-43, "the statement 'c=c+SINC' changes cpfg's global variable c during the der"),(
-47, "Meristem rejects the translation `3 < bF > * -> f`: the predecessor must"),(
-49, "Meristem rejects the translation `* < 4 > F]g -> 5`: ']' has no matching"),(
-73, "Meristem rejects the translation `A(n,m)B : n == 0 && m == 0 -> I(PL,INR"),(
-89, "~b names a surface from a file; Meristem draws only ~l and ~p, so it is "),])),
+9, "' -F(2*SIZE)[F(SM)]-F(SIZE)]' is not part of the notation Meristem impor"),(
+29, "Meristem rejects the translation `axiom: ;(127)[;(5)^(90)f(1)&(90)+(90)F"),(
+37, "Meristem rejects the translation `F(n)A > ?P(x,y,z) : ((y<0)||(y>2.6*2)|"),(
+53, "cpfg's @R is not a Meristem command; kept as a module the turtle ignores"),(
+53, "cpfg's @c is not a Meristem command; kept as a module the turtle ignores"),])),
 ("the inflorescence reads two-dimensional arrays (array len[M][N]); Meristem has no arrays, so every internode length is unknown", ("vlab/Lilac", 11, 2, &[(
 0, "the view file's surface p is read from petal.s, which Meristem does not "),(
 0, "the view file's surface c is read from calyx.s, which Meristem does not "),(
@@ -610,6 +625,9 @@ const FAILURES: &[Failure] = &[
 89, "'cnt[…]' reads an array that cpfg's Start: or Define: block does not giv"),(
 100, "'len[…]' reads an array that cpfg's Start: or Define: block does not giv"),(
 102, "~c names a surface from a file; Meristem draws only ~l and ~p, so it is "),])),
+("the spiral's only production is guarded by a statement block of local variables and a curve function (curveY) in its condition; it is skipped", ("vlab/Ridley", 2, 0, &[(
+0, "the materials of material.mat become their diffuse colours: their ambien"),(
+14, "the condition s<L a = a-rho_square; y = curveY(1,s/L); no_poly = 6 + 300"),])),
 ("the leaf is a generalized cylinder (@Gs … @Gc … @Ge) swept along invisible f moves in a recursive homomorphism; Meristem's smooth axis follows drawn segments only, so nothing is drawn", ("vlab/LilyLeaf", 5, 0, &[(
 0, "the materials of plant.mat become their diffuse colours: their ambient, "),(
 12, "cpfg's @# is not a Meristem command; dropped"),(
@@ -631,29 +649,6 @@ const FAILURES: &[Failure] = &[
 40, "'I(t): { produce F(MAX_INT_LEN*func(internode_length, t/15)); }' is not "),(
 42, "'L(t):' is not part of the notation Meristem imports; skipped"),(
 43, "'{ float length = func(leaf_length, t/10); float width = func(leaf_width"),])),
-("the spiral's only production is guarded by a statement block of local variables and a curve function (curveY) in its condition; it is skipped", ("vlab/Ridley", 2, 0, &[(
-0, "the materials of material.mat become their diffuse colours: their ambien"),(
-14, "the condition s<L a = a-rho_square; y = curveY(1,s/L); no_poly = 6 + 300"),])),
-("derivation length 1 (STEPS) draws only the seed; the flux productions need nested statement blocks (if … { printf … }) in their conditions and global variables (go, shoot, root), which are dropped", ("vlab/ShootRoot", 11, 4, &[(
-47, "the statement 'go=1' changes cpfg's global variable go during the deriva"),(
-47, "the statement 'shoot = cs' changes cpfg's global variable shoot during t"),(
-47, "the statement 'root=cr' changes cpfg's global variable root during the d"),(
-47, "the statement 'printf(\"shoot = %lf, root = %lf\\n\", shoot, root)' is not "),(
-59, "the statement 'go=0' changes cpfg's global variable go during the deriva"),(
-64, "Meristem rejects the translation `XI(b,m,v,c,s,w) -> I(b,2,0,0,s,0)D%`: "),(
-98, "the condition ml==1 && b==1 && c>0 && cl !=c }: '}' in an expression; th"),(
-106, "the condition ml==1 && b==2 && c>0 && cl !=c }: '}' in an expression; th"),(
-119, "the condition m==0 && m1==2&&m2==2 }: '}' in an expression; the producti"),(
-145, "cpfg's @c is not a Meristem command; kept as a module the turtle ignores"),(
-147, "cpfg's @R is not a Meristem command; kept as a module the turtle ignores"),(
-147, "cpfg's @L draws a text label; Meristem draws no text, so the label is dr"),])),
-("the pruning box is a #define continued over three lines, and the pruning uses a multi-module predecessor with a position query (F(n)A > ?P(x,y,z)); the axiom is rejected", ("vlab/topiary", 0, 0, &[(
-0, "nothing to derive: no axiom could be imported"),(
-9, "' -F(2*SIZE)[F(SM)]-F(SIZE)]' is not part of the notation Meristem impor"),(
-29, "Meristem rejects the translation `axiom: ;(127)[;(5)^(90)f(1)&(90)+(90)F"),(
-37, "Meristem rejects the translation `F(n)A > ?P(x,y,z) : ((y<0)||(y>2.6*2)|"),(
-53, "cpfg's @R is not a Meristem command; kept as a module the turtle ignores"),(
-53, "cpfg's @c is not a Meristem command; kept as a module the turtle ignores"),])),
 ];
 
 /// A vlab object folder as the CLI and the studio hand it over: every file with its bytes.
@@ -722,7 +717,7 @@ fn the_share_of_the_whole_corpus_that_builds_its_plant_does_not_fall() {
 }
 
 #[test]
-#[ignore = "issue 21's goal is not reached yet: 63 of 82 files (76.8 %); FAILURES says why each other fails"]
+#[ignore = "issue 21's goal is not reached yet: 64 of 82 files (78.0 %); FAILURES says why each other fails"]
 fn at_least_95_percent_of_the_whole_corpus_builds_its_plant() {
     assert!(
         share() >= GOAL,

@@ -1199,10 +1199,60 @@ impl Importer {
     /// L-Py: a production with a Python body of `if`/`elif`/`else` and `produce`.
     fn python_production(&mut self, pattern: &str, body: &[Line], n: usize) {
         let mut branches: Vec<(Option<String>, String, usize)> = Vec::new();
-        let mut pending: Option<(Option<String>, usize)> = None;
-        let lines: Vec<&Line> = body.iter().filter(|l| !l.code.is_empty()).collect();
+        // The `if`/`elif`/`else:` headers the current line is nested in: their indentation and
+        // condition (`None` for `else`, which the order of the productions already says).
+        let mut open: Vec<(usize, Option<String>)> = Vec::new();
+        let mut lines: Vec<&Line> = body.iter().filter(|l| !l.code.is_empty()).collect();
+        // Local assignments before the first `if` or `produce` (`p1 = min(1,(2*k+1)/k**2)`):
+        // their values are put where the names are used, as cpfg's statement blocks are.
+        let mut names: Vec<String> = Vec::new();
+        let mut values: Vec<String> = Vec::new();
+        while let Some(line) = lines.first() {
+            let Some((name, value)) = python_local(&line.code) else {
+                break;
+            };
+            let value = format!("({})", cpp::substitute(value, &names, &values));
+            let rest: String = lines[1..].iter().map(|l| format!("{}\n", l.code)).collect();
+            let uses = rest.match_indices(name).filter(|(i, _)| {
+                let before = rest[..*i].chars().next_back();
+                let after = rest[i + name.len()..].chars().next();
+                !before.is_some_and(|c| c.is_ascii_alphanumeric() || c == '_')
+                    && !after.is_some_and(|c| c.is_ascii_alphanumeric() || c == '_')
+            });
+            let random = ["random", "uniform", "gauss", "randint", "normal"]
+                .iter()
+                .any(|r| value.contains(r));
+            if random && uses.count() > 1 {
+                // Put in each place it is used, a random draw would be drawn again each time.
+                break;
+            }
+            names.push(name.to_string());
+            values.push(value);
+            lines.remove(0);
+        }
+        let local = |text: &str| in_parentheses(text, &names, &values);
+        let all = |open: &[(usize, Option<String>)], own: Option<String>| {
+            let parts: Vec<String> = open
+                .iter()
+                .filter_map(|(_, c)| c.clone())
+                .chain(own)
+                .map(|c| format!("({c})"))
+                .collect();
+            match parts.len() {
+                0 => None,
+                1 => Some(parts[0][1..parts[0].len() - 1].to_string()),
+                _ => Some(parts.join(" && ")),
+            }
+        };
         for line in lines {
-            let code = line.code.as_str();
+            while open
+                .last()
+                .is_some_and(|(indent, _)| *indent >= line.indent)
+            {
+                open.pop();
+            }
+            let code = &local(&line.code);
+            let code = code.as_str();
             let (head, tail) = match code.find(':') {
                 Some(i)
                     if ["if ", "if(", "elif ", "elif("]
@@ -1223,8 +1273,11 @@ impl Importer {
                         .trim_start_matches("elif")
                         .trim_start_matches("if")
                         .trim();
+                    let c = &cpp::substitute(c, &names, &values);
+                    // Checked here, translated with the production (translating it twice would
+                    // read the `^` that Python's `**` becomes as Python's bitwise or).
                     match self.expression(c, &Env::new()) {
-                        Ok(c) => Some(c),
+                        Ok(_) => Some(c.to_string()),
                         Err(why) => {
                             self.note(
                                 line.n,
@@ -1235,11 +1288,11 @@ impl Importer {
                     }
                 };
                 if tail.is_empty() {
-                    pending = Some((condition, line.n));
+                    open.push((line.indent, condition));
                     continue;
                 }
                 match produce(tail) {
-                    Some(s) => branches.push((condition, s.to_string(), line.n)),
+                    Some(s) => branches.push((all(&open, condition), s.to_string(), line.n)),
                     None => {
                         self.note(line.n, format!("the Python code '{tail}' is not translated; the production is skipped"));
                         return;
@@ -1248,10 +1301,7 @@ impl Importer {
                 continue;
             }
             match produce(code) {
-                Some(s) => {
-                    let condition = pending.take().and_then(|(c, _)| c);
-                    branches.push((condition, s.to_string(), line.n));
-                }
+                Some(s) => branches.push((all(&open, None), s.to_string(), line.n)),
                 None => {
                     self.note(line.n, format!("the Python code '{code}' is not translated (Meristem imports bodies made of if, elif, else and produce); the production is skipped"));
                     return;
@@ -1765,6 +1815,56 @@ fn split_top(text: &str, sep: char) -> Vec<&str> {
     parts
 }
 
+/// A Python local assignment `name = value` (not `==`, nor `+=` and the like): the name and the
+/// value.
+fn python_local(code: &str) -> Option<(&str, &str)> {
+    let (name, value) = code.split_once('=')?;
+    let name = name.trim();
+    let value = value.trim();
+    (is_identifier(name)
+        && !value.is_empty()
+        && !value.starts_with('=')
+        && !["global", "produce", "nproduce", "return"].contains(&name))
+    .then_some((name, value))
+}
+
+/// `text` (a successor) with each name replaced by its value inside parentheses (the modules'
+/// parameters), never in the module names themselves.
+fn in_parentheses(text: &str, names: &[String], values: &[String]) -> String {
+    if names.is_empty() {
+        return text.to_string();
+    }
+    let mut out = String::new();
+    let mut depth = 0usize;
+    let mut inside = String::new();
+    for c in text.chars() {
+        match c {
+            '(' => {
+                if depth == 0 {
+                    out.push('(');
+                } else {
+                    inside.push('(');
+                }
+                depth += 1;
+            }
+            ')' if depth > 0 => {
+                depth -= 1;
+                if depth == 0 {
+                    out.push_str(&cpp::substitute(&inside, names, values));
+                    inside.clear();
+                    out.push(')');
+                } else {
+                    inside.push(')');
+                }
+            }
+            _ if depth > 0 => inside.push(c),
+            _ => out.push(c),
+        }
+    }
+    out.push_str(&inside);
+    out
+}
+
 /// The byte index of `word` standing alone (not part of a longer name), outside parentheses.
 fn find_word(text: &str, word: &str) -> Option<usize> {
     let bytes = text.as_bytes();
@@ -1826,6 +1926,55 @@ mod tests {
             "{}\n{d:?}{r:?}",
             import.text
         );
+    }
+
+    #[test]
+    fn lpy_reads_undeclared_words_letter_by_letter_and_nests_its_ifs_and_locals() {
+        let import = import(
+            "Axiom: A(1)\nderivation length: 2\nproduction:\nA(x) :\n    p = min(1, x**2)\n    r = random()\n    if r <= p:\n        produce IB(1-x)\n    else:\n        produce A(x+p)\nB(x) :\n    if x >= 1:\n        if x < 3:\n            produce F(x)\n        else:\n            produce F(1)\n    else:\n        produce B(x+1)\nendlsystem\n",
+            Flavour::Lpy,
+        );
+        resolves(&import);
+        assert_eq!(
+            body(&import)[3..],
+            [
+                // IB is I then B: Meristem reads undeclared letters one by one too.
+                "A(x) : (uniform(0,1)) <= (min(1,x^2)) -> IB(1-x)",
+                "A(x) -> A(x+(min(1,x^2)))",
+                "B(x) : (x >= 1) && (x < 3) -> F(x)",
+                "B(x) : x >= 1 -> F(1)",
+                "B(x) -> B(x+1)",
+                "endlsystem",
+            ]
+        );
+        assert!(import.notes.is_empty(), "{:?}", import.notes);
+        // A random draw used twice would be drawn again in each place: not translated.
+        let twice = super::import(
+            "Axiom: A\nderivation length: 2\nproduction:\nA :\n    r = random()\n    if r < 0.3: produce B\n    elif r < 0.6: produce C\nendlsystem\n",
+            Flavour::Lpy,
+        );
+        assert!(twice.notes[0]
+            .message
+            .contains("'r = random()' is not translated"));
+    }
+
+    #[test]
+    fn cpfg_heads_over_several_lines_whole_branch_contexts_and_labels() {
+        let import = import(
+            "Lsystem: 1\nderivation length: 2\nAxiom: N(1)I(0)[I(2)A]I(3)\nN(k) < I(b) : b==0\n\t{f=k*2;} -->\n\tI(f)\nI(b) > [I(c)=]I(d) : b==0 --> I(c+d)@L(\" %.f\", b)\nendlsystem\n",
+            Flavour::Cpfg,
+        );
+        resolves(&import);
+        assert_eq!(
+            body(&import)[2..],
+            [
+                "N(k) < I(b) : b==0 -> I((k*2))",
+                "I(b) > [I(c)]I(d) : b==0 -> I(c+d)",
+                "endlsystem"
+            ]
+        );
+        assert_eq!(import.notes.len(), 1, "{:?}", import.notes);
+        assert!(import.notes[0].message.contains("@L draws a text label"));
     }
 
     #[test]
@@ -1984,8 +2133,10 @@ mod tests {
             Flavour::Lpy,
         );
         resolves(&import);
-        assert_eq!(body(&import), ["axiom: A(0)"]);
-        assert_eq!(import.notes.len(), 2);
+        // A local assignment before `produce` is put where it is used; `nproduce` is skipped.
+        assert_eq!(body(&import), ["axiom: A(0)", "A(t) -> A((t + 1))"]);
+        assert_eq!(import.notes.len(), 1, "{:?}", import.notes);
+        assert!(import.notes[0].message.contains("nproduce B"));
     }
 
     #[test]
