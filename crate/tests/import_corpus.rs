@@ -428,8 +428,24 @@ const CORPUS: &[Entry] = &[
             ),
         ],
     ),
-    ("lpy/17-open-lsystem-simple-growth.lpy", 33, 9, &[]),
-    ("lpy/ex_lsystem2.lpy", 33, 9, &[]),
+    (
+        "lpy/17-open-lsystem-simple-growth.lpy",
+        861,
+        313,
+        &[(
+            6,
+            "L-Py's turtle grows along +Z and turns towards Y, Meristem's grows along",
+        )],
+    ),
+    (
+        "lpy/ex_lsystem2.lpy",
+        861,
+        313,
+        &[(
+            6,
+            "L-Py's turtle grows along +Z and turns towards Y, Meristem's grows along",
+        )],
+    ),
 ];
 
 /// The files that do not yet build the plant their source implies, each with the reason.

@@ -1647,6 +1647,18 @@ impl Importer {
         if let Some(text) = self.view_module(name, &params, has_params, n) {
             return text;
         }
+        if self.flavour == Flavour::Lpy && name == "?P" && params.len() == 3 {
+            // L-Py's turtle starts heading up along +Z and turns (`+`) in the Y-Z plane;
+            // Meristem's heads along +Y and turns in the X-Y plane: L-Py's z is Meristem's y,
+            // its y is Meristem's x, its x Meristem's z.
+            self.note_once(
+                "?P",
+                n,
+                "L-Py's turtle grows along +Z and turns towards Y, Meristem's grows along +Y and turns towards X: ?P(x,y,z) becomes ?P(y,z,x), so that each name reads the same axis of the plant; signs along the horizontal axes may differ",
+            );
+            let params = vec![params[1].clone(), params[2].clone(), params[0].clone()];
+            return with("?P", &params);
+        }
         if name == "," {
             return if has_params {
                 with(";", &params)
