@@ -127,6 +127,10 @@ const CORPUS: &[Entry] = &[
         &[
             (
                 0,
+                "cpfg draws its random numbers with another generator than Meristem's",
+            ),
+            (
+                0,
                 "the view file's surface l is read from leaf.s, which Meristem does not r",
             ),
             (
@@ -142,6 +146,10 @@ const CORPUS: &[Entry] = &[
         140,
         16,
         &[
+            (
+                0,
+                "cpfg draws its random numbers with another generator than Meristem's",
+            ),
             (
                 0,
                 "the view file's surface l is read from leaf.s, which Meristem does not r",
@@ -266,7 +274,15 @@ const CORPUS: &[Entry] = &[
             ),
         ],
     ),
-    ("vlab/RandomMoss", 2445, 699, &[]),
+    (
+        "vlab/RandomMoss",
+        2445,
+        699,
+        &[(
+            0,
+            "cpfg draws its random numbers with another generator than Meristem's",
+        )],
+    ),
     (
         "vlab/Ring",
         32,
@@ -332,6 +348,10 @@ const CORPUS: &[Entry] = &[
         598,
         149,
         &[
+            (
+                0,
+                "L-Py draws its random numbers with another generator than Meristem's",
+            ),
             (1, "Python imports are not translated"),
             (27, "the Python function 'Start' is not translated"),
             (
@@ -392,6 +412,10 @@ const CORPUS: &[Entry] = &[
         11072,
         1472,
         &[
+            (
+                0,
+                "L-Py draws its random numbers with another generator than Meristem's",
+            ),
             (2, "Python imports are not translated"),
             (10, "the Python function 'Start' is not translated"),
             (
@@ -409,6 +433,10 @@ const CORPUS: &[Entry] = &[
         221,
         139,
         &[
+            (
+                0,
+                "L-Py draws its random numbers with another generator than Meristem's",
+            ),
             (1, "Python imports are not translated"),
             (13, "the Python function 'Start' is not translated"),
         ],
@@ -450,16 +478,22 @@ const CORPUS: &[Entry] = &[
         "vlab/02-Borchert-Slade",
         14296,
         673,
-        &[(
-            41,
-            "Meristem rejects the translation `L(age);(c,b)!(r,a,d,f) : age == 0 -> ;",
-        )],
+        &[
+            (
+                0,
+                "cpfg draws its random numbers with another generator than Meristem's",
+            ),
+            (
+                41,
+                "Meristem rejects the translation `L(age);(c,b)!(r,a,d,f) : age == 0 -> ;",
+            ),
+        ],
     ),
 ];
 
 /// The files that do not yet build the plant their source implies, each with the reason.
 const FAILURES: &[Failure] = &[
-("the production that ends the stem sets the global m (global m; m = 1) that the lateral productions test; Meristem has no variables, so that production is skipped and no lateral stem starts", ("lpy/11b-markov-nstems.lpy", 10, 0, &[(
+("the production that ends the stem sets the global m (global m; m = 1) that the lateral productions test; Meristem has no variables, so that production is skipped and no lateral stem starts", ("lpy/11b-markov-nstems.lpy", 10, 0, &[(0, "L-Py draws its random numbers with another generator than Meristem's"),(
 1, "Python imports are not translated"),(
 13, "the Python function 'Start' is not translated"),(
 22, "the Python code 'global m' is not translated (Meristem imports bodies ma"),(
@@ -542,7 +576,7 @@ const FAILURES: &[Failure] = &[
 12, "cpfg's @# is not a Meristem command; dropped"),(
 17, "cpfg's @Gc marks a control point of a generalized cylinder; Meristem's s"),])),
 
-("the leaflet productions keep their state in a statement block with srand and local variables over several lines; the block is not translated, so the leaf is not built", ("vlab/03-pallaea", 5, 0, &[(
+("the leaflet productions keep their state in a statement block with srand and local variables over several lines; the block is not translated, so the leaf is not built", ("vlab/03-pallaea", 5, 0, &[(0, "cpfg draws its random numbers with another generator than Meristem's"),(
 0, "the materials of plant.mat become their diffuse colours: their ambient, "),(
 34, "the statement 'srand(1)' is not an assignment; the production is skipped"),(
 36, "the condition xl<xr && x+xl<x_max bang = ANG*func(6,x_rel); }: ';' in an"),(
@@ -551,7 +585,7 @@ const FAILURES: &[Failure] = &[
 75, "cpfg's @Gt is not a Meristem command; kept as a module the turtle ignore"),(
 75, "cpfg's @Gr is not a Meristem command; kept as a module the turtle ignore"),(
 79, "cpfg's @Gc marks a control point of a generalized cylinder; Meristem's s"),])),
-("the leaf productions keep their state in a statement block with srand and local variables over several lines; the block is not translated, so the leaf is not built", ("vlab/04-paintbrush", 3, 0, &[(
+("the leaf productions keep their state in a statement block with srand and local variables over several lines; the block is not translated, so the leaf is not built", ("vlab/04-paintbrush", 3, 0, &[(0, "cpfg draws its random numbers with another generator than Meristem's"),(
 0, "the materials of plant.mat become their diffuse colours: their ambient, "),(
 25, "the statement 'srand(1)' is not an assignment; the production is skipped"),(
 27, "the condition x + dx < x_max }: '}' in an expression; the production is "),(
@@ -573,7 +607,7 @@ const FAILURES: &[Failure] = &[
 49, "Meristem rejects the translation `* < 4 > F]g -> 5`: ']' has no matching"),(
 73, "Meristem rejects the translation `A(n,m)B : n == 0 && m == 0 -> I(PL,INR"),(
 89, "~b names a surface from a file; Meristem draws only ~l and ~p, so it is "),])),
-("the trees grow from environmental queries (?E) of a light model and productions over several modules with statement blocks; most productions are rejected", ("vlab/12-two-trees", 4, 0, &[(
+("the trees grow from environmental queries (?E) of a light model and productions over several modules with statement blocks; most productions are rejected", ("vlab/12-two-trees", 4, 0, &[(0, "cpfg draws its random numbers with another generator than Meristem's"),(
 0, "the materials of tree.mat become their diffuse colours: their ambient, e"),(
 49, "cpfg's printf prints to the console; it is not translated (the plant is "),(
 49, "cpfg's StartEach: statement 'if(d==0){DEL=DEL+1;d=DEL+1;printf(\"Year %.0"),(

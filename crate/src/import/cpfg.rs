@@ -167,7 +167,43 @@ pub(super) fn import_with(
         globals: globals::Globals::default(),
     };
     importer.run(text, include);
-    importer.out.finish()
+    let mut import = importer.out.finish();
+    if uses_randomness(&import.text) {
+        let tool = flavour.tool();
+        let at = import.notes.iter().take_while(|n| n.line == 0).count();
+        import.notes.insert(
+            at,
+            super::ImportNote {
+                line: 0,
+                message: format!("{tool} draws its random numbers with another generator than Meristem's: the same seed gives a different plant than in {tool} (the distribution of plants is the same)"),
+            },
+        );
+    }
+    import
+}
+
+/// True when a translation draws random numbers: a random function (`uniform(…)`, `normal(…)`,
+/// …) or a stochastic production (`-> (0.3) succ`) on a line that is not a comment.
+fn uses_randomness(text: &str) -> bool {
+    let random: Vec<&str> = crate::vocabulary::FUNCTIONS
+        .iter()
+        .filter(|f| f.random)
+        .map(|f| f.name)
+        .collect();
+    text.lines()
+        .map(|l| l.split("//").next().unwrap_or(""))
+        .any(|code| {
+            let weighted = code
+                .match_indices("->")
+                .any(|(i, _)| code[i + 2..].trim_start().starts_with('('));
+            weighted
+                || random.iter().any(|name| {
+                    code.match_indices(name).any(|(i, _)| {
+                        code[i + name.len()..].starts_with('(')
+                            && !code[..i].ends_with(|c: char| c.is_ascii_alphanumeric() || c == '_')
+                    })
+                })
+        })
 }
 
 struct Importer {
@@ -1959,7 +1995,14 @@ mod tests {
                 "endlsystem",
             ]
         );
-        assert!(import.notes.is_empty(), "{:?}", import.notes);
+        // It draws random numbers: one note says that the same seed gives another plant.
+        assert_eq!(import.notes.len(), 1, "{:?}", import.notes);
+        assert!(
+            import.notes[0].line == 0
+                && import.notes[0]
+                    .message
+                    .starts_with("L-Py draws its random numbers with another generator")
+        );
         // A random draw used twice would be drawn again in each place: not translated.
         let twice = super::import(
             "Axiom: A\nderivation length: 2\nproduction:\nA :\n    r = random()\n    if r < 0.3: produce B\n    elif r < 0.6: produce C\nendlsystem\n",
@@ -2044,9 +2087,14 @@ mod tests {
                 "endlsystem",
             ]
         );
-        // `F[+F]F` turns by the view file's angle, which a `.l` alone does not give.
-        assert_eq!(import.notes.len(), 1, "{:?}", import.notes);
+        // `F[+F]F` turns by the view file's angle, which a `.l` alone does not give; its
+        // probability draws random numbers, with another generator than cpfg's.
+        assert_eq!(import.notes.len(), 2, "{:?}", import.notes);
         assert!(import.notes[0].line == 0 && import.notes[0].message.contains("angle increment"));
+        assert_eq!(
+            import.notes[1].message,
+            "cpfg draws its random numbers with another generator than Meristem's: the same seed gives a different plant than in cpfg (the distribution of plants is the same)"
+        );
     }
 
     #[test]
