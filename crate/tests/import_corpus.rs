@@ -29,8 +29,8 @@ type Failure = (&'static str, Entry);
 /// The share of the corpus that must build its plant (issue 21: 95 %).
 const GOAL: f64 = 0.95;
 
-/// The share reached so far (65 of 82 files): it may only rise, towards [`GOAL`].
-const FLOOR: f64 = 0.79;
+/// The share reached so far (66 of 82 files): it may only rise, towards [`GOAL`].
+const FLOOR: f64 = 0.80;
 
 const CORPUS: &[Entry] = &[
     (
@@ -489,6 +489,25 @@ const CORPUS: &[Entry] = &[
             ),
         ],
     ),
+    (
+        "vlab/topiary",
+        34,
+        10,
+        &[
+            (
+                37,
+                "Meristem rejects the translation `F(n)A > ?P(x,y,z) : ((y<0)||(y>2.6*2)|",
+            ),
+            (
+                53,
+                "cpfg's @R is not a Meristem command; kept as a module the turtle ignores",
+            ),
+            (
+                53,
+                "cpfg's @c is not a Meristem command; kept as a module the turtle ignores",
+            ),
+        ],
+    ),
 ];
 
 /// The files that do not yet build the plant their source implies, each with the reason.
@@ -607,49 +626,7 @@ const FAILURES: &[Failure] = &[
 49, "Meristem rejects the translation `* < 4 > F]g -> 5`: ']' has no matching"),(
 73, "Meristem rejects the translation `A(n,m)B : n == 0 && m == 0 -> I(PL,INR"),(
 89, "~b names a surface from a file; Meristem draws only ~l and ~p, so it is "),])),
-("the trees grow from environmental queries (?E) of a light model and productions over several modules with statement blocks; most productions are rejected", ("vlab/12-two-trees", 4, 0, &[(0, "cpfg draws its random numbers with another generator than Meristem's"),(
-0, "the materials of tree.mat become their diffuse colours: their ambient, e"),(
-49, "cpfg's printf prints to the console; it is not translated (the plant is "),(
-49, "cpfg's StartEach: statement 'if(d==0){DEL=DEL+1;d=DEL+1;printf(\"Year %.0"),(
-53, "cpfg's EndEach: statement 'if(d==1){stop(1);}' is not translated: Merist"),(
-57, "'[[,(6)@M(-6,0,-15)&(90)+(180){f(30)+(90)f(6)+(90)f(30)+(90)f(6)}] @M(-2"),(
-58, "'[[,(6)@M(6,0,-15)^(90){f(30)+(90)f(6)+(90)f(30)+(90)f(6)}] @M(2,0,0)!(W"),(
-62, "Meristem rejects the translation `L(f,age,del,vig) : (n >= WHENMOVE)&&(a"),(
-63, "Meristem rejects the translation `L(f,age,del,vig) : (n >= WHENMOVE) -> "),(
-73, "Meristem rejects the translation `L(f,age,del,vig) : (age>0)&&(del>1) ->"),(
-74, "Meristem rejects the translation `L(f,age,del,vig) : (age>0)&&(del==1) -"),(
-77, "Meristem rejects the translation `?E(r) < A(dir,del,vig,n) : (r*LP-LM)>P"),(
-86, "Meristem rejects the translation `?E(r) < A(dir,del,vig,n) : (r*LP-LM)>P"),(
-93, "Meristem rejects the translation `-(a) > [!(w1,n1,f1)L : (n < WHENMOVE)&"),(
-100, "Meristem rejects the translation `-(a) > !(w1,n1,f1)L : (n < WHENMOVE)&&"),(
-107, "Meristem rejects the translation `L(f,age,del,vig) : age ==0 -> L(0,0,0,"),(
-108, "Meristem rejects the translation `L(f,age,del,vig) > ?E(r) : (r*LP<LM) -"),(
-111, "Meristem rejects the translation `L(f,age,del,vig) > ?E(r) : age>0 -> L("),(
-115, "Meristem rejects the translation `!(w0,n0,f0) > L(fl,age,del,vig)[!(w1,n"),(
-120, "Meristem rejects the translation `!(w0,n0,f0) > L(fl,age,del,vig)[!(w1,n"),(
-125, "Meristem rejects the translation `!(w0,n0,f0) > L(fl,age,del,vig)[!(w1,n"),(
-128, "a production for cpfg's '#' becomes one for Meristem's '!', which also s"),(
-128, "Meristem rejects the translation `* < !(w0) > L(fl,age,del,vig)[!(w1,n1,"),(
-133, "a production for cpfg's ',' becomes one for Meristem's ';', which also s"),(
-153, "the statement 'srand(SEED)' is not an assignment; the production is skip"),(
-154, "cpfg's @Tx is not a Meristem command; kept as a module the turtle ignore"),(
-160, "cpfg's @G is not a Meristem command; kept as a module the turtle ignores"),(
-166, "cpfg's @Gsf is not a Meristem command; kept as a module the turtle ignor"),(
-166, "cpfg's @Gc marks a control point of a generalized cylinder; Meristem's s"),(
-171, "Meristem rejects the translation `F(vig,n)!(w) : n==GEN_CYL_LEVEL-1 -> f"),(
-172, "Meristem rejects the translation `F(vig,n)!(w) -> F(vig)!(w)@O`: the pre"),(
-176, "Meristem rejects the translation `F(vig,n)!(w) : n==GEN_CYL_LEVEL-1 -> f"),(
-199, "' G(SLi*5*vig)[+(90)~m(((Ls*vig*0.5)*0.9 + ran(0.1*(Ls*vig*0.5))))][-(90"),(
-200, "' G(SLi*vig)~m(((Ls*vig*0.5)*0.9 + ran(0.1*(Ls*vig*0.5))))' is not part "),(
-204, "' G(SLi*5*vig)[+(90)~m(((Ls*vig*0.5)*0.9 + ran(0.1*(Ls*vig*0.5))))][-(90"),(
-205, "' G(SLi*5*vig)[+(90)~m(((Ls*vig*0.5)*0.9 + ran(0.1*(Ls*vig*0.5))))][-(90"),(
-206, "' G(SLi*vig)~m(((Ls*vig*0.5)*0.9 + ran(0.1*(Ls*vig*0.5))))' is not part "),(
-210, "' G(SLi*5*vig)[+(90)~m(((Ls*vig*0.5)*0.9 + ran(0.1*(Ls*vig*0.5))))][-(90"),(
-211, "' G(SLi*5*vig)[+(90)~m(((Ls*vig*0.5)*0.9 + ran(0.1*(Ls*vig*0.5))))][-(90"),(
-212, "' G(SLi*5*vig)[+(90)~m(((Ls*vig*0.5)*0.9 + ran(0.1*(Ls*vig*0.5))))][-(90"),(
-213, "' G(SLi*vig)~m(((Ls*vig*0.5)*0.9 + ran(0.1*(Ls*vig*0.5))))' is not part "),(
-270, "cpfg's @Tf is not a Meristem command; kept as a module the turtle ignore"),(
-270, "~m names a surface from a file; Meristem draws only ~l and ~p, so it is "),])),
+("the trees grow from environmental queries (?E) of a light model and productions over several modules with statement blocks; most productions are rejected", ("vlab/12-two-trees", 4, 0, &[(0, "the materials of tree.mat become their diffuse colours: their ambient, e"),(0, "cpfg draws its random numbers with another generator than Meristem's: th"),(49, "cpfg's printf prints to the console; it is not translated (the plant is "),(49, "cpfg's StartEach: statement 'if(d==0){DEL=DEL+1;d=DEL+1;printf(\"Year %.0"),(53, "cpfg's EndEach: statement 'if(d==1){stop(1);}' is not translated: Merist"),(57, "'[[,(6)@M(-6,0,-15)&(90)+(180){f(30)+(90)f(6)+(90)f(30)+(90)f(6)}] @M(-2"),(58, "'[[,(6)@M(6,0,-15)^(90){f(30)+(90)f(6)+(90)f(30)+(90)f(6)}] @M(2,0,0)!(W"),(62, "Meristem rejects the translation `L(f,age,del,vig) : (n >= WHENMOVE)&&(a"),(63, "Meristem rejects the translation `L(f,age,del,vig) : (n >= WHENMOVE) -> "),(73, "Meristem rejects the translation `L(f,age,del,vig) : (age>0)&&(del>1) ->"),(74, "Meristem rejects the translation `L(f,age,del,vig) : (age>0)&&(del==1) -"),(77, "Meristem rejects the translation `?E(r) < A(dir,del,vig,n) : (r*LP-LM)>P"),(86, "Meristem rejects the translation `?E(r) < A(dir,del,vig,n) : (r*LP-LM)>P"),(93, "Meristem rejects the translation `-(a) > [!(w1,n1,f1)L : (n < WHENMOVE)&"),(100, "Meristem rejects the translation `-(a) > !(w1,n1,f1)L : (n < WHENMOVE)&&"),(107, "Meristem rejects the translation `L(f,age,del,vig) : age ==0 -> L(0,0,0,"),(108, "Meristem rejects the translation `L(f,age,del,vig) > ?E(r) : (r*LP<LM) -"),(111, "Meristem rejects the translation `L(f,age,del,vig) > ?E(r) : age>0 -> L("),(115, "Meristem rejects the translation `!(w0,n0,f0) > L(fl,age,del,vig)[!(w1,n"),(120, "Meristem rejects the translation `!(w0,n0,f0) > L(fl,age,del,vig)[!(w1,n"),(125, "Meristem rejects the translation `!(w0,n0,f0) > L(fl,age,del,vig)[!(w1,n"),(128, "a production for cpfg's '#' becomes one for Meristem's '!', which also s"),(128, "Meristem rejects the translation `* < !(w0) > L(fl,age,del,vig)[!(w1,n1,"),(133, "a production for cpfg's ',' becomes one for Meristem's ';', which also s"),(153, "the statement 'srand(SEED)' is not an assignment; the production is skip"),(154, "cpfg's @Tx is not a Meristem command; kept as a module the turtle ignore"),(160, "cpfg's @G is not a Meristem command; kept as a module the turtle ignores"),(166, "cpfg's @Gsf is not a Meristem command; kept as a module the turtle ignor"),(166, "cpfg's @Gc marks a control point of a generalized cylinder; Meristem's s"),(171, "Meristem rejects the translation `F(vig,n)!(w) : n==GEN_CYL_LEVEL-1 -> f"),(172, "Meristem rejects the translation `F(vig,n)!(w) -> F(vig)!(w)@O`: the pre"),(176, "Meristem rejects the translation `F(vig,n)!(w) : n==GEN_CYL_LEVEL-1 -> f"),(270, "cpfg's @Tf is not a Meristem command; kept as a module the turtle ignore"),(270, "~m names a surface from a file; Meristem draws only ~l and ~p, so it is "),])),
 ("derivation length 1 (STEPS) draws only the seed; the flux productions need nested statement blocks (if … { printf … }) in their conditions and global variables (go, shoot, root), which are dropped", ("vlab/ShootRoot", 11, 4, &[(
 47, "the statement 'go=1' changes cpfg's global variable go during the deriva"),(
 47, "the statement 'shoot = cs' changes cpfg's global variable shoot during t"),(
@@ -663,13 +640,7 @@ const FAILURES: &[Failure] = &[
 145, "cpfg's @c is not a Meristem command; kept as a module the turtle ignores"),(
 147, "cpfg's @R is not a Meristem command; kept as a module the turtle ignores"),(
 147, "cpfg's @L draws a text label; Meristem draws no text, so the label is dr"),])),
-("the pruning box is a #define continued over three lines, and the pruning uses a multi-module predecessor with a position query (F(n)A > ?P(x,y,z)); the axiom is rejected", ("vlab/topiary", 0, 0, &[(
-0, "nothing to derive: no axiom could be imported"),(
-9, "' -F(2*SIZE)[F(SM)]-F(SIZE)]' is not part of the notation Meristem impor"),(
-29, "Meristem rejects the translation `axiom: ;(127)[;(5)^(90)f(1)&(90)+(90)F"),(
-37, "Meristem rejects the translation `F(n)A > ?P(x,y,z) : ((y<0)||(y>2.6*2)|"),(
-53, "cpfg's @R is not a Meristem command; kept as a module the turtle ignores"),(
-53, "cpfg's @c is not a Meristem command; kept as a module the turtle ignores"),])),
+
 ("the inflorescence reads two-dimensional arrays (array len[M][N]); Meristem has no arrays, so every internode length is unknown", ("vlab/Lilac", 11, 2, &[(
 0, "the view file's surface p is read from petal.s, which Meristem does not "),(
 0, "the view file's surface c is read from calyx.s, which Meristem does not "),(
@@ -771,7 +742,7 @@ fn the_share_of_the_whole_corpus_that_builds_its_plant_does_not_fall() {
 }
 
 #[test]
-#[ignore = "issue 21's goal is not reached yet: 65 of 82 files (79.3 %); FAILURES says why each other fails"]
+#[ignore = "issue 21's goal is not reached yet: 66 of 82 files (80.5 %); FAILURES says why each other fails"]
 fn at_least_95_percent_of_the_whole_corpus_builds_its_plant() {
     assert!(
         share() >= GOAL,

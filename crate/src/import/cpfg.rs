@@ -2014,6 +2014,21 @@ mod tests {
     }
 
     #[test]
+    fn a_cpfg_define_continues_over_any_number_of_lines() {
+        let import = import(
+            "#define BOX [F(1) \\\n\t+(90)F(2) \\\n\t+(90)F(3)]\nLsystem: 1\nderivation length: 1\nAxiom: BOX A\nA --> FA\nendlsystem\n",
+            Flavour::Cpfg,
+        );
+        resolves(&import);
+        assert!(import.notes.is_empty(), "{:?}", import.notes);
+        assert!(
+            import.text.contains("axiom: [F(1)+(90)F(2)+(90)F(3)]A"),
+            "{}",
+            import.text
+        );
+    }
+
+    #[test]
     fn cpfg_heads_over_several_lines_whole_branch_contexts_and_labels() {
         let import = import(
             "Lsystem: 1\nderivation length: 2\nAxiom: N(1)I(0)[I(2)A]I(3)\nN(k) < I(b) : b==0\n\t{f=k*2;} -->\n\tI(f)\nI(b) > [I(c)=]I(d) : b==0 --> I(c+d)@L(\" %.f\", b)\nendlsystem\n",
