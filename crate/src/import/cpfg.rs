@@ -1232,6 +1232,38 @@ impl Importer {
         Ok(())
     }
 
+    /// The condition of an `if c`/`elif c` header with the body's locals put in (`None` for
+    /// `else`); a condition that cannot be translated is noted (the production is skipped).
+    fn python_condition(
+        &mut self,
+        head: &str,
+        names: &[String],
+        values: &[String],
+        n: usize,
+    ) -> Result<Option<String>, ()> {
+        if head.trim() == "else" {
+            return Ok(None);
+        }
+        // `if(z == 1)` as well as `if z == 1`.
+        let c = head
+            .trim_start_matches("elif")
+            .trim_start_matches("if")
+            .trim();
+        let c = cpp::substitute(c, names, values);
+        // Checked here, translated with the production (translating it twice would read the
+        // `^` that Python's `**` becomes as Python's bitwise or).
+        match self.expression(&c, &Env::new()) {
+            Ok(_) => Ok(Some(c)),
+            Err(why) => {
+                self.note(
+                    n,
+                    format!("the condition {c}: {why}; the production is skipped"),
+                );
+                Err(())
+            }
+        }
+    }
+
     /// L-Py: a production with a Python body of `if`/`elif`/`else` and `produce`.
     fn python_production(&mut self, pattern: &str, body: &[Line], n: usize) {
         let mut branches: Vec<(Option<String>, String, usize)> = Vec::new();
@@ -1239,47 +1271,8 @@ impl Importer {
         // condition (`None` for `else`, which the order of the productions already says).
         let mut open: Vec<(usize, Option<String>)> = Vec::new();
         let mut lines: Vec<&Line> = body.iter().filter(|l| !l.code.is_empty()).collect();
-        // Local assignments before the first `if` or `produce` (`p1 = min(1,(2*k+1)/k**2)`):
-        // their values are put where the names are used, as cpfg's statement blocks are.
-        let mut names: Vec<String> = Vec::new();
-        let mut values: Vec<String> = Vec::new();
-        while let Some(line) = lines.first() {
-            let Some((name, value)) = python_local(&line.code) else {
-                break;
-            };
-            let value = format!("({})", cpp::substitute(value, &names, &values));
-            let rest: String = lines[1..].iter().map(|l| format!("{}\n", l.code)).collect();
-            let uses = rest.match_indices(name).filter(|(i, _)| {
-                let before = rest[..*i].chars().next_back();
-                let after = rest[i + name.len()..].chars().next();
-                !before.is_some_and(|c| c.is_ascii_alphanumeric() || c == '_')
-                    && !after.is_some_and(|c| c.is_ascii_alphanumeric() || c == '_')
-            });
-            let random = ["random", "uniform", "gauss", "randint", "normal"]
-                .iter()
-                .any(|r| value.contains(r));
-            if random && uses.count() > 1 {
-                // Put in each place it is used, a random draw would be drawn again each time.
-                break;
-            }
-            names.push(name.to_string());
-            values.push(value);
-            lines.remove(0);
-        }
+        let (names, values) = python_locals(&mut lines);
         let local = |text: &str| in_parentheses(text, &names, &values);
-        let all = |open: &[(usize, Option<String>)], own: Option<String>| {
-            let parts: Vec<String> = open
-                .iter()
-                .filter_map(|(_, c)| c.clone())
-                .chain(own)
-                .map(|c| format!("({c})"))
-                .collect();
-            match parts.len() {
-                0 => None,
-                1 => Some(parts[0][1..parts[0].len() - 1].to_string()),
-                _ => Some(parts.join(" && ")),
-            }
-        };
         for line in lines {
             while open
                 .last()
@@ -1301,34 +1294,15 @@ impl Importer {
                 _ => ("", code),
             };
             if !head.is_empty() {
-                let condition = if head.trim() == "else" {
-                    None
-                } else {
-                    // `if(z == 1)` as well as `if z == 1`.
-                    let c = head
-                        .trim_start_matches("elif")
-                        .trim_start_matches("if")
-                        .trim();
-                    let c = &cpp::substitute(c, &names, &values);
-                    // Checked here, translated with the production (translating it twice would
-                    // read the `^` that Python's `**` becomes as Python's bitwise or).
-                    match self.expression(c, &Env::new()) {
-                        Ok(_) => Some(c.to_string()),
-                        Err(why) => {
-                            self.note(
-                                line.n,
-                                format!("the condition {c}: {why}; the production is skipped"),
-                            );
-                            return;
-                        }
-                    }
+                let Ok(condition) = self.python_condition(head, &names, &values, line.n) else {
+                    return;
                 };
                 if tail.is_empty() {
                     open.push((line.indent, condition));
                     continue;
                 }
                 match produce(tail) {
-                    Some(s) => branches.push((all(&open, condition), s.to_string(), line.n)),
+                    Some(s) => branches.push((nested(&open, condition), s.to_string(), line.n)),
                     None => {
                         self.note(line.n, format!("the Python code '{tail}' is not translated; the production is skipped"));
                         return;
@@ -1337,7 +1311,7 @@ impl Importer {
                 continue;
             }
             match produce(code) {
-                Some(s) => branches.push((all(&open, None), s.to_string(), line.n)),
+                Some(s) => branches.push((nested(&open, None), s.to_string(), line.n)),
                 None => {
                     self.note(line.n, format!("the Python code '{code}' is not translated (Meristem imports bodies made of if, elif, else and produce); the production is skipped"));
                     return;
@@ -1683,17 +1657,18 @@ impl Importer {
         if let Some(text) = self.view_module(name, &params, has_params, n) {
             return text;
         }
-        if self.flavour == Flavour::Lpy && name == "?P" && params.len() == 3 {
+        let query = name_of(Meaning::Turtle(Command::QueryPosition));
+        if self.flavour == Flavour::Lpy && name == query && params.len() == 3 {
             // L-Py's turtle starts heading up along +Z and turns (`+`) in the Y-Z plane;
             // Meristem's heads along +Y and turns in the X-Y plane: L-Py's z is Meristem's y,
             // its y is Meristem's x, its x Meristem's z.
             self.note_once(
-                "?P",
+                query,
                 n,
                 "L-Py's turtle grows along +Z and turns towards Y, Meristem's grows along +Y and turns towards X: ?P(x,y,z) becomes ?P(y,z,x), so that each name reads the same axis of the plant; signs along the horizontal axes may differ",
             );
             let params = vec![params[1].clone(), params[2].clone(), params[0].clone()];
-            return with("?P", &params);
+            return with(query, &params);
         }
         if name == "," {
             return if has_params {
@@ -1861,6 +1836,60 @@ fn split_top(text: &str, sep: char) -> Vec<&str> {
     }
     parts.push(&text[start..]);
     parts
+}
+
+/// The condition of a branch nested in the `if` headers `open` (with its own, if any): the
+/// conditions joined by `&&`.
+fn nested(open: &[(usize, Option<String>)], own: Option<String>) -> Option<String> {
+    let parts: Vec<String> = open
+        .iter()
+        .filter_map(|(_, c)| c.clone())
+        .chain(own)
+        .collect();
+    match parts.len() {
+        0 => None,
+        1 => parts.into_iter().next(),
+        _ => Some(
+            parts
+                .iter()
+                .map(|c| format!("({c})"))
+                .collect::<Vec<_>>()
+                .join(" && "),
+        ),
+    }
+}
+
+/// The local assignments that open an L-Py body, before its first `if` or `produce`
+/// (`p1 = min(1,(2*k+1)/k**2)`), taken from `lines`: their names and values, which are put where
+/// the names are used, as cpfg's statement blocks are. A random draw used in more than one place
+/// stays (it would be drawn again in each), and the body is then skipped with its note.
+fn python_locals(lines: &mut Vec<&Line>) -> (Vec<String>, Vec<String>) {
+    let mut names: Vec<String> = Vec::new();
+    let mut values: Vec<String> = Vec::new();
+    while let Some(line) = lines.first() {
+        let Some((name, value)) = python_local(&line.code) else {
+            break;
+        };
+        let value = format!("({})", cpp::substitute(value, &names, &values));
+        let rest: String = lines[1..].iter().map(|l| format!("{}\n", l.code)).collect();
+        let uses = rest.match_indices(name).filter(|(i, _)| {
+            let before = rest[..*i].chars().next_back();
+            let after = rest[i + name.len()..].chars().next();
+            !before.is_some_and(|c| c.is_ascii_alphanumeric() || c == '_')
+                && !after.is_some_and(|c| c.is_ascii_alphanumeric() || c == '_')
+        });
+        let random = ["random", "uniform", "gauss", "randint", "normal"]
+            .iter()
+            .any(|r| value.contains(r));
+        if random && uses.count() > 1 {
+            // Put in each place it is used, a random draw would be drawn again each time.
+            break;
+        }
+        names.push(name.to_string());
+        values.push(value);
+        lines.remove(0);
+    }
+    (names, values)
 }
 
 /// A Python local assignment `name = value` (not `==`, nor `+=` and the like): the name and the
