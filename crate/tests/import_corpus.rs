@@ -29,14 +29,14 @@ type Failure = (&'static str, Entry);
 /// The share of the corpus that must build its plant (issue 21: 95 %).
 const GOAL: f64 = 0.95;
 
-/// The share reached so far (66 of 82 files): it may only rise, towards [`GOAL`].
-const FLOOR: f64 = 0.80;
+/// The share reached so far (68 of 82 files): it may only rise, towards [`GOAL`].
+const FLOOR: f64 = 0.82;
 
 const CORPUS: &[Entry] = &[
     (
         "vlab/01-Lychnis",
         1370,
-        1985,
+        5235,
         &[
             (
                 0,
@@ -52,6 +52,10 @@ const CORPUS: &[Entry] = &[
             ),
             (76, "cpfg's @! is not a Meristem command; dropped"),
             (76, "cpfg's @# is not a Meristem command; dropped"),
+            (
+                81,
+                "cpfg's f before a control point of a generalized cylinder moves along th",
+            ),
             (
                 81,
                 "cpfg's @Gc marks a control point of a generalized cylinder; Meristem's s",
@@ -508,6 +512,46 @@ const CORPUS: &[Entry] = &[
             ),
         ],
     ),
+    (
+        "vlab/01-herb-lily",
+        5,
+        50,
+        &[
+            (
+                0,
+                "the materials of plant.mat become their diffuse colours: their ambient, ",
+            ),
+            (12, "cpfg's @# is not a Meristem command; dropped"),
+            (
+                17,
+                "cpfg's f before a control point of a generalized cylinder moves along th",
+            ),
+            (
+                17,
+                "cpfg's @Gc marks a control point of a generalized cylinder; Meristem's s",
+            ),
+        ],
+    ),
+    (
+        "vlab/LilyLeaf",
+        5,
+        50,
+        &[
+            (
+                0,
+                "the materials of plant.mat become their diffuse colours: their ambient, ",
+            ),
+            (12, "cpfg's @# is not a Meristem command; dropped"),
+            (
+                17,
+                "cpfg's f before a control point of a generalized cylinder moves along th",
+            ),
+            (
+                17,
+                "cpfg's @Gc marks a control point of a generalized cylinder; Meristem's s",
+            ),
+        ],
+    ),
 ];
 
 /// The files that do not yet build the plant their source implies, each with the reason.
@@ -590,28 +634,10 @@ const FAILURES: &[Failure] = &[
 182, "'c.H' is Python, not a number expression; the production is skipped"),(
 186, "'c.H' is Python, not a number expression; the production is skipped"),(
 192, "the Python function '__initialiseContext__' is not translated"),])),
-("the leaf is a generalized cylinder (@Gs … @Gc … @Ge) swept along invisible f moves in a recursive homomorphism; Meristem's smooth axis follows drawn segments only, so nothing is drawn", ("vlab/01-herb-lily", 5, 0, &[(
-0, "the materials of plant.mat become their diffuse colours: their ambient, "),(
-12, "cpfg's @# is not a Meristem command; dropped"),(
-17, "cpfg's @Gc marks a control point of a generalized cylinder; Meristem's s"),])),
 
-("the leaflet productions keep their state in a statement block with srand and local variables over several lines; the block is not translated, so the leaf is not built", ("vlab/03-pallaea", 5, 0, &[(0, "cpfg draws its random numbers with another generator than Meristem's"),(
-0, "the materials of plant.mat become their diffuse colours: their ambient, "),(
-34, "the statement 'srand(1)' is not an assignment; the production is skipped"),(
-36, "the condition xl<xr && x+xl<x_max bang = ANG*func(6,x_rel); }: ';' in an"),(
-52, "the condition xr<=xl && x+xr<x_max bang = ANG*func(6,x_rel); }: ';' in a"),(
-75, "cpfg's @# is not a Meristem command; dropped"),(
-75, "cpfg's @Gt is not a Meristem command; kept as a module the turtle ignore"),(
-75, "cpfg's @Gr is not a Meristem command; kept as a module the turtle ignore"),(
-79, "cpfg's @Gc marks a control point of a generalized cylinder; Meristem's s"),])),
-("the leaf productions keep their state in a statement block with srand and local variables over several lines; the block is not translated, so the leaf is not built", ("vlab/04-paintbrush", 3, 0, &[(0, "cpfg draws its random numbers with another generator than Meristem's"),(
-0, "the materials of plant.mat become their diffuse colours: their ambient, "),(
-25, "the statement 'srand(1)' is not an assignment; the production is skipped"),(
-27, "the condition x + dx < x_max }: '}' in an expression; the production is "),(
-43, "cpfg's @# is not a Meristem command; dropped"),(
-43, "cpfg's @Gt is not a Meristem command; kept as a module the turtle ignore"),(
-43, "cpfg's @Gr is not a Meristem command; kept as a module the turtle ignore"),(
-51, "cpfg's @Gc marks a control point of a generalized cylinder; Meristem's s"),])),
+
+("the leaflet productions keep their state in a statement block with srand and local variables over several lines; the block is not translated, so the leaf is not built", ("vlab/03-pallaea", 5, 0, &[(0, "the materials of plant.mat become their diffuse colours: their ambient, "),(0, "cpfg draws its random numbers with another generator than Meristem's: th"),(34, "the statement 'srand(1)' is not an assignment; the production is skipped"),(36, "the condition xl<xr && x+xl<x_max bang = ANG*func(6,x_rel); }: ';' in an"),(52, "the condition xr<=xl && x+xr<x_max bang = ANG*func(6,x_rel); }: ';' in a"),(75, "cpfg's @# is not a Meristem command; dropped"),(75, "cpfg's @Gt is not a Meristem command; kept as a module the turtle ignore"),(75, "cpfg's @Gr is not a Meristem command; kept as a module the turtle ignore"),(79, "cpfg's f before a control point of a generalized cylinder moves along th"),(79, "cpfg's @Gc marks a control point of a generalized cylinder; Meristem's s"),])),
+("the leaf productions keep their state in a statement block with srand and local variables over several lines; the block is not translated, so the leaf is not built", ("vlab/04-paintbrush", 3, 0, &[(0, "the materials of plant.mat become their diffuse colours: their ambient, "),(0, "cpfg draws its random numbers with another generator than Meristem's: th"),(25, "the statement 'srand(1)' is not an assignment; the production is skipped"),(27, "the condition x + dx < x_max }: '}' in an expression; the production is "),(43, "cpfg's @# is not a Meristem command; dropped"),(43, "cpfg's @Gt is not a Meristem command; kept as a module the turtle ignore"),(43, "cpfg's @Gr is not a Meristem command; kept as a module the turtle ignore"),(51, "cpfg's f before a control point of a generalized cylinder moves along th"),(51, "cpfg's @Gc marks a control point of a generalized cylinder; Meristem's s"),])),
 ("the axiom uses f(l,t) with two parameters and multi-module predecessors (1 < aF > *); the axiom is rejected, so nothing is derived", ("vlab/22-insect-realistic", 0, 0, &[(
 0, "nothing to derive: no axiom could be imported"),(
 19, "cpfg's StartEach: statement 's=0' changes the variable s during the deri"),(
@@ -626,7 +652,7 @@ const FAILURES: &[Failure] = &[
 49, "Meristem rejects the translation `* < 4 > F]g -> 5`: ']' has no matching"),(
 73, "Meristem rejects the translation `A(n,m)B : n == 0 && m == 0 -> I(PL,INR"),(
 89, "~b names a surface from a file; Meristem draws only ~l and ~p, so it is "),])),
-("the trees grow from environmental queries (?E) of a light model and productions over several modules with statement blocks; most productions are rejected", ("vlab/12-two-trees", 4, 0, &[(0, "the materials of tree.mat become their diffuse colours: their ambient, e"),(0, "cpfg draws its random numbers with another generator than Meristem's: th"),(49, "cpfg's printf prints to the console; it is not translated (the plant is "),(49, "cpfg's StartEach: statement 'if(d==0){DEL=DEL+1;d=DEL+1;printf(\"Year %.0"),(53, "cpfg's EndEach: statement 'if(d==1){stop(1);}' is not translated: Merist"),(57, "'[[,(6)@M(-6,0,-15)&(90)+(180){f(30)+(90)f(6)+(90)f(30)+(90)f(6)}] @M(-2"),(58, "'[[,(6)@M(6,0,-15)^(90){f(30)+(90)f(6)+(90)f(30)+(90)f(6)}] @M(2,0,0)!(W"),(62, "Meristem rejects the translation `L(f,age,del,vig) : (n >= WHENMOVE)&&(a"),(63, "Meristem rejects the translation `L(f,age,del,vig) : (n >= WHENMOVE) -> "),(73, "Meristem rejects the translation `L(f,age,del,vig) : (age>0)&&(del>1) ->"),(74, "Meristem rejects the translation `L(f,age,del,vig) : (age>0)&&(del==1) -"),(77, "Meristem rejects the translation `?E(r) < A(dir,del,vig,n) : (r*LP-LM)>P"),(86, "Meristem rejects the translation `?E(r) < A(dir,del,vig,n) : (r*LP-LM)>P"),(93, "Meristem rejects the translation `-(a) > [!(w1,n1,f1)L : (n < WHENMOVE)&"),(100, "Meristem rejects the translation `-(a) > !(w1,n1,f1)L : (n < WHENMOVE)&&"),(107, "Meristem rejects the translation `L(f,age,del,vig) : age ==0 -> L(0,0,0,"),(108, "Meristem rejects the translation `L(f,age,del,vig) > ?E(r) : (r*LP<LM) -"),(111, "Meristem rejects the translation `L(f,age,del,vig) > ?E(r) : age>0 -> L("),(115, "Meristem rejects the translation `!(w0,n0,f0) > L(fl,age,del,vig)[!(w1,n"),(120, "Meristem rejects the translation `!(w0,n0,f0) > L(fl,age,del,vig)[!(w1,n"),(125, "Meristem rejects the translation `!(w0,n0,f0) > L(fl,age,del,vig)[!(w1,n"),(128, "a production for cpfg's '#' becomes one for Meristem's '!', which also s"),(128, "Meristem rejects the translation `* < !(w0) > L(fl,age,del,vig)[!(w1,n1,"),(133, "a production for cpfg's ',' becomes one for Meristem's ';', which also s"),(153, "the statement 'srand(SEED)' is not an assignment; the production is skip"),(154, "cpfg's @Tx is not a Meristem command; kept as a module the turtle ignore"),(160, "cpfg's @G is not a Meristem command; kept as a module the turtle ignores"),(166, "cpfg's @Gsf is not a Meristem command; kept as a module the turtle ignor"),(166, "cpfg's @Gc marks a control point of a generalized cylinder; Meristem's s"),(171, "Meristem rejects the translation `F(vig,n)!(w) : n==GEN_CYL_LEVEL-1 -> f"),(172, "Meristem rejects the translation `F(vig,n)!(w) -> F(vig)!(w)@O`: the pre"),(176, "Meristem rejects the translation `F(vig,n)!(w) : n==GEN_CYL_LEVEL-1 -> f"),(270, "cpfg's @Tf is not a Meristem command; kept as a module the turtle ignore"),(270, "~m names a surface from a file; Meristem draws only ~l and ~p, so it is "),])),
+("the trees grow from environmental queries (?E) of a light model and productions over several modules with statement blocks; most productions are rejected", ("vlab/12-two-trees", 4, 0, &[(0, "the materials of tree.mat become their diffuse colours: their ambient, e"),(0, "cpfg draws its random numbers with another generator than Meristem's: th"),(49, "cpfg's printf prints to the console; it is not translated (the plant is "),(49, "cpfg's StartEach: statement 'if(d==0){DEL=DEL+1;d=DEL+1;printf(\"Year %.0"),(53, "cpfg's EndEach: statement 'if(d==1){stop(1);}' is not translated: Merist"),(57, "'[[,(6)@M(-6,0,-15)&(90)+(180){f(30)+(90)f(6)+(90)f(30)+(90)f(6)}] @M(-2"),(58, "'[[,(6)@M(6,0,-15)^(90){f(30)+(90)f(6)+(90)f(30)+(90)f(6)}] @M(2,0,0)!(W"),(62, "Meristem rejects the translation `L(f,age,del,vig) : (n >= WHENMOVE)&&(a"),(63, "Meristem rejects the translation `L(f,age,del,vig) : (n >= WHENMOVE) -> "),(73, "Meristem rejects the translation `L(f,age,del,vig) : (age>0)&&(del>1) ->"),(74, "Meristem rejects the translation `L(f,age,del,vig) : (age>0)&&(del==1) -"),(77, "Meristem rejects the translation `?E(r) < A(dir,del,vig,n) : (r*LP-LM)>P"),(86, "Meristem rejects the translation `?E(r) < A(dir,del,vig,n) : (r*LP-LM)>P"),(93, "Meristem rejects the translation `-(a) > [!(w1,n1,f1)L : (n < WHENMOVE)&"),(100, "Meristem rejects the translation `-(a) > !(w1,n1,f1)L : (n < WHENMOVE)&&"),(107, "Meristem rejects the translation `L(f,age,del,vig) : age ==0 -> L(0,0,0,"),(108, "Meristem rejects the translation `L(f,age,del,vig) > ?E(r) : (r*LP<LM) -"),(111, "Meristem rejects the translation `L(f,age,del,vig) > ?E(r) : age>0 -> L("),(115, "Meristem rejects the translation `!(w0,n0,f0) > L(fl,age,del,vig)[!(w1,n"),(120, "Meristem rejects the translation `!(w0,n0,f0) > L(fl,age,del,vig)[!(w1,n"),(125, "Meristem rejects the translation `!(w0,n0,f0) > L(fl,age,del,vig)[!(w1,n"),(128, "a production for cpfg's '#' becomes one for Meristem's '!', which also s"),(128, "Meristem rejects the translation `* < !(w0) > L(fl,age,del,vig)[!(w1,n1,"),(133, "a production for cpfg's ',' becomes one for Meristem's ';', which also s"),(153, "the statement 'srand(SEED)' is not an assignment; the production is skip"),(154, "cpfg's @Tx is not a Meristem command; kept as a module the turtle ignore"),(160, "cpfg's @G is not a Meristem command; kept as a module the turtle ignores"),(166, "cpfg's @Gsf is not a Meristem command; kept as a module the turtle ignor"),(166, "cpfg's @Gc marks a control point of a generalized cylinder; Meristem's s"),(166, "Meristem rejects the translation `F(vig,n) : (n==0)&&(GEN_CYL_LEVEL > 0)"),(167, "cpfg's f before a control point of a generalized cylinder moves along th"),(167, "Meristem rejects the translation `F(vig,n) : n < GEN_CYL_LEVEL-1 -> F(vi"),(171, "Meristem rejects the translation `F(vig,n)!(w) : n==GEN_CYL_LEVEL-1 -> F"),(172, "Meristem rejects the translation `F(vig,n)!(w) -> F(vig)!(w)@O`: the pre"),(176, "Meristem rejects the translation `F(vig,n)!(w) : n==GEN_CYL_LEVEL-1 -> F"),(270, "cpfg's @Tf is not a Meristem command; kept as a module the turtle ignore"),(270, "~m names a surface from a file; Meristem draws only ~l and ~p, so it is "),])),
 ("derivation length 1 (STEPS) draws only the seed; the flux productions need nested statement blocks (if … { printf … }) in their conditions and global variables (go, shoot, root), which are dropped", ("vlab/ShootRoot", 11, 4, &[(
 47, "the statement 'go=1' changes cpfg's global variable go during the deriva"),(
 47, "the statement 'shoot = cs' changes cpfg's global variable shoot during t"),(
@@ -653,10 +679,7 @@ const FAILURES: &[Failure] = &[
 ("the spiral's only production is guarded by a statement block of local variables and a curve function (curveY) in its condition; it is skipped", ("vlab/Ridley", 2, 0, &[(
 0, "the materials of material.mat become their diffuse colours: their ambien"),(
 14, "the condition s<L a = a-rho_square; y = curveY(1,s/L); no_poly = 6 + 300"),])),
-("the leaf is a generalized cylinder (@Gs … @Gc … @Ge) swept along invisible f moves in a recursive homomorphism; Meristem's smooth axis follows drawn segments only, so nothing is drawn", ("vlab/LilyLeaf", 5, 0, &[(
-0, "the materials of plant.mat become their diffuse colours: their ambient, "),(
-12, "cpfg's @# is not a Meristem command; dropped"),(
-17, "cpfg's @Gc marks a control point of a generalized cylinder; Meristem's s"),])),
+
 ("it is an L+C (lpfg) model: module declarations, produce statements in C blocks; it is not cpfg, so nothing is imported", ("vlab/MonopodialSpiral", 0, 0, &[(
 0, "the view file's surface leaf.s is read from , which Meristem does not re"),(
 0, "the materials of material.mat become their diffuse colours: their ambien"),(
@@ -742,7 +765,7 @@ fn the_share_of_the_whole_corpus_that_builds_its_plant_does_not_fall() {
 }
 
 #[test]
-#[ignore = "issue 21's goal is not reached yet: 66 of 82 files (80.5 %); FAILURES says why each other fails"]
+#[ignore = "issue 21's goal is not reached yet: 68 of 82 files (82.9 %); FAILURES says why each other fails"]
 fn at_least_95_percent_of_the_whole_corpus_builds_its_plant() {
     assert!(
         share() >= GOAL,

@@ -1526,6 +1526,19 @@ impl Importer {
         let chars: Vec<char> = text.chars().collect();
         let mut out = String::new();
         let mut i = 0;
+        // cpfg draws a generalized cylinder through the points where the turtle puts its
+        // control points (@Gc, @Ge), moved there by f as well as F: an f before them in the
+        // same successor moves along the cylinder, which Meristem's smooth axis draws only
+        // along segments.
+        let cylinder_end = (self.flavour == Flavour::Cpfg)
+            .then(|| {
+                ["@Gc", "@Ge"]
+                    .iter()
+                    .filter_map(|g| text.rfind(g))
+                    .max()
+                    .map(|b| text[..b].chars().count())
+            })
+            .flatten();
         while i < chars.len() {
             let c = chars[i];
             if c.is_whitespace() {
@@ -1547,6 +1560,16 @@ impl Importer {
                 self.lpy_name(&chars, i, n)
             } else {
                 (c.to_string(), i + 1)
+            };
+            let name = if name == "f" && cylinder_end.is_some_and(|end| i < end) {
+                self.note_once(
+                    "f@G",
+                    n,
+                    "cpfg's f before a control point of a generalized cylinder moves along the cylinder cpfg draws; Meristem's smooth axis follows segments only, so it becomes F",
+                );
+                "F".to_string()
+            } else {
+                name
             };
             i = after;
             // Parameters.
