@@ -129,6 +129,10 @@ const EXPECTED: &[(&str, Dialect, Notes)] = &[
             (58, "of the object's view file (.v), which was not opened"),
             (66, "of the object's view file (.v), which was not opened"),
             (71, "of the object's view file (.v), which was not opened"),
+            (
+                71,
+                "cpfg's f before a control point of a generalized cylinder",
+            ),
             (76, "of the object's view file (.v), which was not opened"),
             (83, "of the object's view file (.v), which was not opened"),
         ],

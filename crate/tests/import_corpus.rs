@@ -22,11 +22,21 @@ fn root() -> PathBuf {
 /// (line, a piece of the message), exactly.
 type Entry = (&'static str, usize, usize, &'static [(usize, &'static str)]);
 
+/// A file that does not yet build the plant its source implies: why, then what it gives now (an
+/// [`Entry`]; 0 and 0 when the translation does not build at all), so that any change is seen.
+type Failure = (&'static str, Entry);
+
+/// The share of the corpus that must build its plant (issue 21: 95 %).
+const GOAL: f64 = 0.95;
+
+/// The share reached so far (68 of 82 files): it may only rise, towards [`GOAL`].
+const FLOOR: f64 = 0.82;
+
 const CORPUS: &[Entry] = &[
     (
         "vlab/01-Lychnis",
         1370,
-        1985,
+        5235,
         &[
             (
                 0,
@@ -42,6 +52,10 @@ const CORPUS: &[Entry] = &[
             ),
             (76, "cpfg's @! is not a Meristem command; dropped"),
             (76, "cpfg's @# is not a Meristem command; dropped"),
+            (
+                81,
+                "cpfg's f before a control point of a generalized cylinder moves along th",
+            ),
             (
                 81,
                 "cpfg's @Gc marks a control point of a generalized cylinder; Meristem's s",
@@ -117,6 +131,10 @@ const CORPUS: &[Entry] = &[
         &[
             (
                 0,
+                "cpfg draws its random numbers with another generator than Meristem's",
+            ),
+            (
+                0,
                 "the view file's surface l is read from leaf.s, which Meristem does not r",
             ),
             (
@@ -132,6 +150,10 @@ const CORPUS: &[Entry] = &[
         140,
         16,
         &[
+            (
+                0,
+                "cpfg draws its random numbers with another generator than Meristem's",
+            ),
             (
                 0,
                 "the view file's surface l is read from leaf.s, which Meristem does not r",
@@ -256,7 +278,15 @@ const CORPUS: &[Entry] = &[
             ),
         ],
     ),
-    ("vlab/RandomMoss", 2445, 699, &[]),
+    (
+        "vlab/RandomMoss",
+        2445,
+        699,
+        &[(
+            0,
+            "cpfg draws its random numbers with another generator than Meristem's",
+        )],
+    ),
     (
         "vlab/Ring",
         32,
@@ -322,6 +352,10 @@ const CORPUS: &[Entry] = &[
         598,
         149,
         &[
+            (
+                0,
+                "L-Py draws its random numbers with another generator than Meristem's",
+            ),
             (1, "Python imports are not translated"),
             (27, "the Python function 'Start' is not translated"),
             (
@@ -339,27 +373,9 @@ const CORPUS: &[Entry] = &[
         ],
     ),
     ("lpy/13-branched-signal.lpy", 16, 7, &[]),
-    (
-        "lpy/17-open-lsystem-simple-growth.lpy",
-        1368,
-        576,
-        &[(
-            13,
-            "the condition 4*y*y +(z-10)^2 > 100: Python's ^ is a bitwise or, not a p",
-        )],
-    ),
     ("lpy/Frame.lpy", 5, 1, &[]),
     ("lpy/branching.lpy", 6, 3, &[]),
     ("lpy/combined.lpy", 37, 7, &[]),
-    (
-        "lpy/ex_lsystem2.lpy",
-        1368,
-        576,
-        &[(
-            13,
-            "the condition 4*y*y +(z-10)^2 > 100: Python's ^ is a bitwise or, not a p",
-        )],
-    ),
     ("lpy/ex_lsystem3.lpy", 134, 48, &[]),
     ("lpy/filledPolygons.lpy", 20, 1, &[]),
     ("lpy/generalizedCylinders.lpy", 12, 6, &[]),
@@ -395,6 +411,292 @@ const CORPUS: &[Entry] = &[
     ("lpy/scale.lpy", 13, 7, &[]),
     ("lpy/visualize.lpy", 10, 7, &[]),
     ("lpy/width.lpy", 7, 4, &[]),
+    (
+        "lpy/10-random-tree.lpy",
+        11072,
+        1472,
+        &[
+            (
+                0,
+                "L-Py draws its random numbers with another generator than Meristem's",
+            ),
+            (2, "Python imports are not translated"),
+            (10, "the Python function 'Start' is not translated"),
+            (
+                14,
+                "L-Py's @GsG is not a Meristem command; kept as a module the turtle ignor",
+            ),
+            (
+                47,
+                "the Python code 'd = 0.05+0.25* ((x/k)+(1-x)/(k-1))' is not translated (",
+            ),
+        ],
+    ),
+    (
+        "lpy/11a-markov-1stem.lpy",
+        221,
+        139,
+        &[
+            (
+                0,
+                "L-Py draws its random numbers with another generator than Meristem's",
+            ),
+            (1, "Python imports are not translated"),
+            (13, "the Python function 'Start' is not translated"),
+        ],
+    ),
+    (
+        "vlab/03-Borcher-Honda",
+        182,
+        45,
+        &[
+            (
+                66,
+                "cpfg's @c is not a Meristem command; kept as a module the turtle ignores",
+            ),
+            (
+                66,
+                "cpfg's @L draws a text label; Meristem draws no text, so the label is dr",
+            ),
+        ],
+    ),
+    (
+        "lpy/17-open-lsystem-simple-growth.lpy",
+        861,
+        313,
+        &[(
+            6,
+            "L-Py's turtle grows along +Z and turns towards Y, Meristem's grows along",
+        )],
+    ),
+    (
+        "lpy/ex_lsystem2.lpy",
+        861,
+        313,
+        &[(
+            6,
+            "L-Py's turtle grows along +Z and turns towards Y, Meristem's grows along",
+        )],
+    ),
+    (
+        "vlab/02-Borchert-Slade",
+        14296,
+        673,
+        &[
+            (
+                0,
+                "cpfg draws its random numbers with another generator than Meristem's",
+            ),
+            (
+                41,
+                "Meristem rejects the translation `L(age);(c,b)!(r,a,d,f) : age == 0 -> ;",
+            ),
+        ],
+    ),
+    (
+        "vlab/topiary",
+        34,
+        10,
+        &[
+            (
+                37,
+                "Meristem rejects the translation `F(n)A > ?P(x,y,z) : ((y<0)||(y>2.6*2)|",
+            ),
+            (
+                53,
+                "cpfg's @R is not a Meristem command; kept as a module the turtle ignores",
+            ),
+            (
+                53,
+                "cpfg's @c is not a Meristem command; kept as a module the turtle ignores",
+            ),
+        ],
+    ),
+    (
+        "vlab/01-herb-lily",
+        5,
+        50,
+        &[
+            (
+                0,
+                "the materials of plant.mat become their diffuse colours: their ambient, ",
+            ),
+            (12, "cpfg's @# is not a Meristem command; dropped"),
+            (
+                17,
+                "cpfg's f before a control point of a generalized cylinder moves along th",
+            ),
+            (
+                17,
+                "cpfg's @Gc marks a control point of a generalized cylinder; Meristem's s",
+            ),
+        ],
+    ),
+    (
+        "vlab/LilyLeaf",
+        5,
+        50,
+        &[
+            (
+                0,
+                "the materials of plant.mat become their diffuse colours: their ambient, ",
+            ),
+            (12, "cpfg's @# is not a Meristem command; dropped"),
+            (
+                17,
+                "cpfg's f before a control point of a generalized cylinder moves along th",
+            ),
+            (
+                17,
+                "cpfg's @Gc marks a control point of a generalized cylinder; Meristem's s",
+            ),
+        ],
+    ),
+];
+
+/// The files that do not yet build the plant their source implies, each with the reason.
+const FAILURES: &[Failure] = &[
+("the production that ends the stem sets the global m (global m; m = 1) that the lateral productions test; Meristem has no variables, so that production is skipped and no lateral stem starts", ("lpy/11b-markov-nstems.lpy", 10, 0, &[(0, "L-Py draws its random numbers with another generator than Meristem's"),(
+1, "Python imports are not translated"),(
+13, "the Python function 'Start' is not translated"),(
+22, "the Python code 'global m' is not translated (Meristem imports bodies ma"),(
+44, "L-Py's @c is not a Meristem command; kept as a module the turtle ignores"),])),
+("the productions move auxin through Python globals and local variables (global sumauxin, col = int(…)); Meristem has no variables, so they are skipped and the stem does not grow", ("lpy/13a-flow1stem-random.lpy", 2, 0, &[(
+1, "Python imports are not translated"),(
+12, "the Python function 'txt' returns str(round(val,2))[:5]: '[' in an expre"),(
+15, "the Python function 'Start' is not translated"),(
+44, "the Python code 'global sumauxin' is not translated (Meristem imports bo"),(
+53, "the Python code 'a += 0.1' is not translated (Meristem imports bodies ma"),(
+56, "L-Py's @L draws a text label; Meristem draws no text, so the label is dr"),(
+63, "the Python function '__initialiseContext__' is not translated"),])),
+("the productions compute auxin and colours in Python statements (auxin = max_level, col = int(…)); they are skipped and the stem does not grow", ("lpy/13b-flow1stem-diffusecontinuouslyfromroot.lpy", 2, 0, &[(
+8, "the Python function 'txt' returns str(round(val,2))[:5]: '[' in an expre"),(
+34, "the Python code 'auxin = max_level' is not translated (Meristem imports "),(
+43, "the Python code 'a += 0.1' is not translated (Meristem imports bodies ma"),(
+49, "the Python function '__initialiseContext__' is not translated"),])),
+("the productions compute auxin and colours in Python statements (auxin = max_level, col = int(…)); they are skipped and the stem does not grow", ("lpy/13c-flow1stem-diffusecontfromapexwithdeg.lpy", 2, 0, &[(
+11, "the Python function 'txt' returns str(round(val,2))[:5]: '[' in an expre"),(
+39, "the Python code 'auxin = max_level' is not translated (Meristem imports "),(
+48, "L-Py's @L draws a text label; Meristem draws no text, so the label is dr"),(
+54, "the Python function '__initialiseContext__' is not translated"),])),
+("modules carry Python objects (T(SegmentData())) and the bending is computed with PlantGL vectors in Python; nothing of it is expressible, not even the axiom", ("lpy/16a-branch-bending.lpy", 0, 0, &[(
+0, "nothing to derive: no axiom could be imported"),(
+1, "Python imports are not translated"),(
+2, "Python imports are not translated"),(
+3, "Python imports are not translated"),(
+14, "the Python statement 'Forward,Backward,Growth=range(3)' is not translate"),(
+20, "the Python statement 'class SegmentData:' is not translated"),(
+42, "the Python function 'setMode' is not translated"),(
+51, "the Python function 'isFORWARD' is not translated"),(
+54, "the Python function 'isBACKWARD' is not translated"),(
+57, "the Python function 'isGROWTH' is not translated"),(
+61, "the Python function 'Start' is not translated"),(
+66, "the Python function 'StartEach' is not translated"),(
+73, "the Python function 'EndEach' is not translated"),(
+86, "Meristem rejects the translation `axiom: T(SegmentData())B(N)`: unknown "),(
+93, "the Python code 'a.cummass = a.mass + b.cummass' is not translated (Meri"),(
+101, "the Python code 'a.cummass = a.mass + b.cummass' is not translated (Meri"),(
+109, "the Python code 'a.cummass = a.mass' is not translated (Meristem imports"),(
+115, "the Python code 'global error' is not translated (Meristem imports bodie"),(
+127, "the Python code 'global error' is not translated (Meristem imports bodie"),(
+139, "the Python code 'print (\"GROWTH ------------------ GROWTH\")' is not tran"),(
+147, "Meristem rejects the translation `B(n) : n>0 -> S(SegmentData())B(n-1)`:"),(
+153, "Meristem rejects the translation `T(c) -> !(S_DIAM*1.4)F(S_LEN*12)`: 'T'"),(
+157, "'a.H' is Python, not a number expression; the production is skipped"),(
+161, "'c.H' is Python, not a number expression; the production is skipped"),(
+167, "the Python function '__initialiseContext__' is not translated"),])),
+("modules carry Python objects (SegmentData()) and the bending is computed with PlantGL vectors in Python; nothing of it is expressible, not even the axiom", ("lpy/16b-branching-system-bending.lpy", 0, 0, &[(
+0, "nothing to derive: no axiom could be imported"),(
+1, "Python imports are not translated"),(
+2, "Python imports are not translated"),(
+3, "Python imports are not translated"),(
+15, "the Python statement 'Forward,Backward,Growth=range(3)' is not translate"),(
+22, "the Python statement 'class SegmentData:' is not translated"),(
+46, "the Python function 'setMode' is not translated"),(
+55, "the Python function 'isFORWARD' is not translated"),(
+58, "the Python function 'isBACKWARD' is not translated"),(
+61, "the Python function 'isGROWTH' is not translated"),(
+65, "the Python function 'Start' is not translated"),(
+68, "the Python function 'StartEach' is not translated"),(
+73, "the Python function 'EndEach' is not translated"),(
+86, "Meristem rejects the translation `axiom: T(SegmentData())B(N)[+(30)B(N)["),(
+93, "the Python code 'a.cummass = a.mass + b.cummass' is not translated (Meri"),(
+101, "the Python code 'a.cummass = a.mass + b.cummass + c.cummass' is not tran"),(
+111, "the Python code 'a.cummass = a.mass + b.cummass' is not translated (Meri"),(
+119, "the Python code 'a.cummass = a.mass' is not translated (Meristem imports"),(
+125, "the Python code 'global error' is not translated (Meristem imports bodie"),(
+137, "the Python code 'global error' is not translated (Meristem imports bodie"),(
+149, "the Python code 'global error' is not translated (Meristem imports bodie"),(
+161, "the Python code 'print (\"GROWTH ------------------ GROWTH\")' is not tran"),(
+169, "Meristem rejects the translation `B(n) : n>0 -> S(SegmentData())B(n-1)`:"),(
+174, "Meristem rejects the translation `T(c) -> !(S_DIAM*1.4)F(S_LEN*12)`: 'T'"),(
+178, "'a.H' is Python, not a number expression; the production is skipped"),(
+182, "'c.H' is Python, not a number expression; the production is skipped"),(
+186, "'c.H' is Python, not a number expression; the production is skipped"),(
+192, "the Python function '__initialiseContext__' is not translated"),])),
+
+
+("the leaflet productions keep their state in a statement block with srand and local variables over several lines; the block is not translated, so the leaf is not built", ("vlab/03-pallaea", 5, 0, &[(0, "the materials of plant.mat become their diffuse colours: their ambient, "),(0, "cpfg draws its random numbers with another generator than Meristem's: th"),(34, "the statement 'srand(1)' is not an assignment; the production is skipped"),(36, "the condition xl<xr && x+xl<x_max bang = ANG*func(6,x_rel); }: ';' in an"),(52, "the condition xr<=xl && x+xr<x_max bang = ANG*func(6,x_rel); }: ';' in a"),(75, "cpfg's @# is not a Meristem command; dropped"),(75, "cpfg's @Gt is not a Meristem command; kept as a module the turtle ignore"),(75, "cpfg's @Gr is not a Meristem command; kept as a module the turtle ignore"),(79, "cpfg's f before a control point of a generalized cylinder moves along th"),(79, "cpfg's @Gc marks a control point of a generalized cylinder; Meristem's s"),])),
+("the leaf productions keep their state in a statement block with srand and local variables over several lines; the block is not translated, so the leaf is not built", ("vlab/04-paintbrush", 3, 0, &[(0, "the materials of plant.mat become their diffuse colours: their ambient, "),(0, "cpfg draws its random numbers with another generator than Meristem's: th"),(25, "the statement 'srand(1)' is not an assignment; the production is skipped"),(27, "the condition x + dx < x_max }: '}' in an expression; the production is "),(43, "cpfg's @# is not a Meristem command; dropped"),(43, "cpfg's @Gt is not a Meristem command; kept as a module the turtle ignore"),(43, "cpfg's @Gr is not a Meristem command; kept as a module the turtle ignore"),(51, "cpfg's f before a control point of a generalized cylinder moves along th"),(51, "cpfg's @Gc marks a control point of a generalized cylinder; Meristem's s"),])),
+("the axiom uses f(l,t) with two parameters and multi-module predecessors (1 < aF > *); the axiom is rejected, so nothing is derived", ("vlab/22-insect-realistic", 0, 0, &[(
+0, "nothing to derive: no axiom could be imported"),(
+19, "cpfg's StartEach: statement 's=0' changes the variable s during the deri"),(
+19, "cpfg's printf prints to the console; it is not translated (the plant is "),(
+20, "cpfg's EndEach: statement 's=1' changes the variable s during the deriva"),(
+26, "Meristem rejects the translation `axiom: ;(1)[!(1);(48)+(90)f(GL)[-(180)"),(
+27, "'[-(90)f(1)-(90)f(0.5,0)/(70)h]]SM' is not part of the notation Meristem"),(
+29, "Meristem rejects the translation `f(l,t)/(n)h : l >=GL-0.5 -> ε`: the pr"),(
+42, "Meristem rejects the translation `1 < aF > * -> f`: the predecessor must"),(
+43, "the statement 'c=c+SINC' changes cpfg's global variable c during the der"),(
+47, "Meristem rejects the translation `3 < bF > * -> f`: the predecessor must"),(
+49, "Meristem rejects the translation `* < 4 > F]g -> 5`: ']' has no matching"),(
+73, "Meristem rejects the translation `A(n,m)B : n == 0 && m == 0 -> I(PL,INR"),(
+89, "~b names a surface from a file; Meristem draws only ~l and ~p, so it is "),])),
+("the trees grow from environmental queries (?E) of a light model and productions over several modules with statement blocks; most productions are rejected", ("vlab/12-two-trees", 4, 0, &[(0, "the materials of tree.mat become their diffuse colours: their ambient, e"),(0, "cpfg draws its random numbers with another generator than Meristem's: th"),(49, "cpfg's printf prints to the console; it is not translated (the plant is "),(49, "cpfg's StartEach: statement 'if(d==0){DEL=DEL+1;d=DEL+1;printf(\"Year %.0"),(53, "cpfg's EndEach: statement 'if(d==1){stop(1);}' is not translated: Merist"),(57, "'[[,(6)@M(-6,0,-15)&(90)+(180){f(30)+(90)f(6)+(90)f(30)+(90)f(6)}] @M(-2"),(58, "'[[,(6)@M(6,0,-15)^(90){f(30)+(90)f(6)+(90)f(30)+(90)f(6)}] @M(2,0,0)!(W"),(62, "Meristem rejects the translation `L(f,age,del,vig) : (n >= WHENMOVE)&&(a"),(63, "Meristem rejects the translation `L(f,age,del,vig) : (n >= WHENMOVE) -> "),(73, "Meristem rejects the translation `L(f,age,del,vig) : (age>0)&&(del>1) ->"),(74, "Meristem rejects the translation `L(f,age,del,vig) : (age>0)&&(del==1) -"),(77, "Meristem rejects the translation `?E(r) < A(dir,del,vig,n) : (r*LP-LM)>P"),(86, "Meristem rejects the translation `?E(r) < A(dir,del,vig,n) : (r*LP-LM)>P"),(93, "Meristem rejects the translation `-(a) > [!(w1,n1,f1)L : (n < WHENMOVE)&"),(100, "Meristem rejects the translation `-(a) > !(w1,n1,f1)L : (n < WHENMOVE)&&"),(107, "Meristem rejects the translation `L(f,age,del,vig) : age ==0 -> L(0,0,0,"),(108, "Meristem rejects the translation `L(f,age,del,vig) > ?E(r) : (r*LP<LM) -"),(111, "Meristem rejects the translation `L(f,age,del,vig) > ?E(r) : age>0 -> L("),(115, "Meristem rejects the translation `!(w0,n0,f0) > L(fl,age,del,vig)[!(w1,n"),(120, "Meristem rejects the translation `!(w0,n0,f0) > L(fl,age,del,vig)[!(w1,n"),(125, "Meristem rejects the translation `!(w0,n0,f0) > L(fl,age,del,vig)[!(w1,n"),(128, "a production for cpfg's '#' becomes one for Meristem's '!', which also s"),(128, "Meristem rejects the translation `* < !(w0) > L(fl,age,del,vig)[!(w1,n1,"),(133, "a production for cpfg's ',' becomes one for Meristem's ';', which also s"),(153, "the statement 'srand(SEED)' is not an assignment; the production is skip"),(154, "cpfg's @Tx is not a Meristem command; kept as a module the turtle ignore"),(160, "cpfg's @G is not a Meristem command; kept as a module the turtle ignores"),(166, "cpfg's @Gsf is not a Meristem command; kept as a module the turtle ignor"),(166, "cpfg's @Gc marks a control point of a generalized cylinder; Meristem's s"),(166, "Meristem rejects the translation `F(vig,n) : (n==0)&&(GEN_CYL_LEVEL > 0)"),(167, "cpfg's f before a control point of a generalized cylinder moves along th"),(167, "Meristem rejects the translation `F(vig,n) : n < GEN_CYL_LEVEL-1 -> F(vi"),(171, "Meristem rejects the translation `F(vig,n)!(w) : n==GEN_CYL_LEVEL-1 -> F"),(172, "Meristem rejects the translation `F(vig,n)!(w) -> F(vig)!(w)@O`: the pre"),(176, "Meristem rejects the translation `F(vig,n)!(w) : n==GEN_CYL_LEVEL-1 -> F"),(270, "cpfg's @Tf is not a Meristem command; kept as a module the turtle ignore"),(270, "~m names a surface from a file; Meristem draws only ~l and ~p, so it is "),])),
+("derivation length 1 (STEPS) draws only the seed; the flux productions need nested statement blocks (if … { printf … }) in their conditions and global variables (go, shoot, root), which are dropped", ("vlab/ShootRoot", 11, 4, &[(
+47, "the statement 'go=1' changes cpfg's global variable go during the deriva"),(
+47, "the statement 'shoot = cs' changes cpfg's global variable shoot during t"),(
+47, "the statement 'root=cr' changes cpfg's global variable root during the d"),(
+47, "the statement 'printf(\"shoot = %lf, root = %lf\\n\", shoot, root)' is not "),(
+59, "the statement 'go=0' changes cpfg's global variable go during the deriva"),(
+64, "Meristem rejects the translation `XI(b,m,v,c,s,w) -> I(b,2,0,0,s,0)D%`: "),(
+98, "the condition ml==1 && b==1 && c>0 && cl !=c }: '}' in an expression; th"),(
+106, "the condition ml==1 && b==2 && c>0 && cl !=c }: '}' in an expression; th"),(
+119, "the condition m==0 && m1==2&&m2==2 }: '}' in an expression; the producti"),(
+145, "cpfg's @c is not a Meristem command; kept as a module the turtle ignores"),(
+147, "cpfg's @R is not a Meristem command; kept as a module the turtle ignores"),(
+147, "cpfg's @L draws a text label; Meristem draws no text, so the label is dr"),])),
+
+("the inflorescence reads two-dimensional arrays (array len[M][N]); Meristem has no arrays, so every internode length is unknown", ("vlab/Lilac", 11, 2, &[(
+0, "the view file's surface p is read from petal.s, which Meristem does not "),(
+0, "the view file's surface c is read from calyx.s, which Meristem does not "),(
+0, "the materials of materials.mat become their diffuse colours: their ambie"),(
+38, "cpfg's array len has more than one dimension; Meristem has no arrays, so"),(
+38, "cpfg's array cnt has more than one dimension; Meristem has no arrays, so"),(
+89, "'cnt[…]' reads an array that cpfg's Start: or Define: block does not giv"),(
+100, "'len[…]' reads an array that cpfg's Start: or Define: block does not giv"),(
+102, "~c names a surface from a file; Meristem draws only ~l and ~p, so it is "),])),
+("the spiral's only production is guarded by a statement block of local variables and a curve function (curveY) in its condition; it is skipped", ("vlab/Ridley", 2, 0, &[(
+0, "the materials of material.mat become their diffuse colours: their ambien"),(
+14, "the condition s<L a = a-rho_square; y = curveY(1,s/L); no_poly = 6 + 300"),])),
+
+("it is an L+C (lpfg) model: module declarations, produce statements in C blocks; it is not cpfg, so nothing is imported", ("vlab/MonopodialSpiral", 0, 0, &[(
+0, "the view file's surface leaf.s is read from , which Meristem does not re"),(
+0, "the materials of material.mat become their diffuse colours: their ambien"),(
+0, "nothing to derive: no axiom could be imported"),(
+10, "derivation length: ';' in an expression"),(
+12, "'module A(float);' is not part of the notation Meristem imports; skipped"),(
+13, "'module I(float);' is not part of the notation Meristem imports; skipped"),(
+14, "'module L(float);' is not part of the notation Meristem imports; skipped"),(
+16, "Meristem rejects the translation `axiom: Right(5)SetWidth(0.15)A(0);`: '"),(
+20, "'A(t):{ produce A(t+dt); }' is not part of the notation Meristem imports"),(
+21, "'I(t):{ produce I(t+dt); }' is not part of the notation Meristem imports"),(
+22, "'L(t):{ produce L(t+dt); }' is not part of the notation Meristem imports"),(
+26, "'A(t):' is not part of the notation Meristem imports; skipped"),(
+27, "'{ t = t - PL; if(t>0) produce I(t) SB() L(t) EB() RollL(137.5) A(t); }'"),(
+40, "'I(t): { produce F(MAX_INT_LEN*func(internode_length, t/15)); }' is not "),(
+42, "'L(t):' is not part of the notation Meristem imports; skipped"),(
+43, "'{ float length = func(leaf_length, t/10); float width = func(leaf_width"),])),
 ];
 
 /// A vlab object folder as the CLI and the studio hand it over: every file with its bytes.
@@ -434,44 +736,98 @@ fn the_corpus_holds_every_file_it_lists_and_no_other() {
         }
     }
     listed.sort();
-    let mut expected: Vec<String> = CORPUS.iter().map(|e| e.0.to_string()).collect();
+    let mut expected: Vec<String> = CORPUS
+        .iter()
+        .chain(FAILURES.iter().map(|f| &f.1))
+        .map(|e| e.0.to_string())
+        .collect();
     expected.sort();
     assert_eq!(listed, expected);
     assert!(CORPUS.len() >= 40);
 }
 
+/// The share of the whole corpus (the files that build their plant and those that do not yet)
+/// that builds its plant.
+fn share() -> f64 {
+    CORPUS.len() as f64 / (CORPUS.len() + FAILURES.len()) as f64
+}
+
+#[test]
+fn the_share_of_the_whole_corpus_that_builds_its_plant_does_not_fall() {
+    assert!(
+        share() >= FLOOR,
+        "{} of {} files ({:.1} %) build their plant, fewer than before ({:.1} %)",
+        CORPUS.len(),
+        CORPUS.len() + FAILURES.len(),
+        100.0 * share(),
+        100.0 * FLOOR
+    );
+}
+
+#[test]
+#[ignore = "issue 21's goal is not reached yet: 68 of 82 files (82.9 %); FAILURES says why each other fails"]
+fn at_least_95_percent_of_the_whole_corpus_builds_its_plant() {
+    assert!(
+        share() >= GOAL,
+        "{} of {} files ({:.1} %) build their plant; the goal is {:.0} %",
+        CORPUS.len(),
+        CORPUS.len() + FAILURES.len(),
+        100.0 * share(),
+        100.0 * GOAL
+    );
+}
+
+#[test]
+fn every_failure_still_imports_as_recorded_with_its_reason() {
+    let mut wrong = Vec::new();
+    for (why, entry) in FAILURES {
+        assert!(!why.is_empty(), "{}", entry.0);
+        check(entry, &mut wrong);
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}
+
+/// Imports one entry and says in `wrong` where its notes or its plant differ from the record.
+fn check(&(path, modules, segments, notes): &Entry, wrong: &mut Vec<String>) {
+    let result = import_entry(path);
+    let mut unmatched: Vec<&(usize, &str)> = notes.iter().collect();
+    for note in &result.notes {
+        match unmatched
+            .iter()
+            .position(|(line, piece)| *line == note.line && note.message.contains(piece))
+        {
+            Some(i) => {
+                unmatched.remove(i);
+            }
+            None => wrong.push(format!("{path}: unexpected note {note:?}")),
+        }
+    }
+    if !unmatched.is_empty() {
+        wrong.push(format!("{path}: missing notes {unmatched:?}"));
+    }
+    let b = build(&result.text, &BuildOptions::default());
+    let size = if b.ok() {
+        (b.plant.stats.modules, b.plant.stats.segments)
+    } else {
+        (0, 0)
+    };
+    if size != (modules, segments) {
+        wrong.push(format!(
+            "{path}: {size:?} modules and segments, not {:?} {:?}",
+            (modules, segments),
+            b.diagnostics
+        ));
+    }
+}
+
 #[test]
 fn every_corpus_file_imports_with_exactly_its_notes_and_builds_its_plant() {
     let mut wrong = Vec::new();
-    for &(path, modules, segments, notes) in CORPUS {
-        let result = import_entry(path);
-        let mut unmatched: Vec<&(usize, &str)> = notes.iter().collect();
-        for note in &result.notes {
-            match unmatched
-                .iter()
-                .position(|(line, piece)| *line == note.line && note.message.contains(piece))
-            {
-                Some(i) => {
-                    unmatched.remove(i);
-                }
-                None => wrong.push(format!("{path}: unexpected note {note:?}")),
-            }
+    for entry in CORPUS {
+        if entry.1 + entry.2 == 0 {
+            wrong.push(format!("{}: a corpus entry must build a plant", entry.0));
         }
-        if !unmatched.is_empty() {
-            wrong.push(format!("{path}: missing notes {unmatched:?}"));
-        }
-        let b = build(&result.text, &BuildOptions::default());
-        if !b.ok() {
-            wrong.push(format!("{path}: {:?}", b.diagnostics));
-            continue;
-        }
-        let size = (b.plant.stats.modules, b.plant.stats.segments);
-        if size != (modules, segments) {
-            wrong.push(format!(
-                "{path}: {size:?} modules and segments, not {:?}",
-                (modules, segments)
-            ));
-        }
+        check(entry, &mut wrong);
     }
     assert!(wrong.is_empty(), "{}", wrong.join("\n"));
 }

@@ -73,6 +73,74 @@ const LPY_NAMES: &[(&str, Meaning)] = &[
     ("GetLeft", Meaning::Turtle(Command::QueryLeft)),
 ];
 
+/// L-Py's other predefined modules with names longer than a letter (its `predefinedmodules.cpp`):
+/// a word among them is one module even undeclared; any other undeclared word is read letter by
+/// letter, as L-Py reads it (`IB(1-x)` is `I` then `B(1-x)`).
+const LPY_PREDEFINED: &[&str] = &[
+    "GetRight",
+    "GetFrame",
+    "BP",
+    "EP",
+    "PP",
+    "MoveRel",
+    "LineTo",
+    "OLineTo",
+    "Pinpoint",
+    "LineRel",
+    "OLineRel",
+    "PinpointRel",
+    "SetHead",
+    "EulerAngles",
+    "Left",
+    "Right",
+    "Up",
+    "Down",
+    "RollL",
+    "RollR",
+    "iRollL",
+    "iRollR",
+    "RollToHorizontal",
+    "Box",
+    "Quad",
+    "Circle",
+    "Label",
+    "IncWidth",
+    "DecWidth",
+    "DecColor",
+    "InterpolateColors",
+    "TextureBaseColor",
+    "InterpolateTextureBaseColors",
+    "DivScale",
+    "MultScale",
+    "SetScale",
+    "surface",
+    "PglShape",
+    "Frame",
+    "Arrow",
+    "Elasticity",
+    "Tropism",
+    "SetContour",
+    "SectionResolution",
+    "SetGuide",
+    "EndGuide",
+    "Sweep",
+    "PositionOnGuide",
+    "TextureScale",
+    "TextureUScale",
+    "TextureVScale",
+    "TextureVCoeff",
+    "TextureTranslation",
+    "TextureRotation",
+    "TextureTransformation",
+    "LeftReflection",
+    "UpReflection",
+    "HeadingReflection",
+    "StartScreenProjection",
+    "EndScreenProjection",
+    "MouseIns",
+    "newmodule",
+];
+
 pub(super) fn import(text: &str, flavour: Flavour) -> Import {
     import_with(text, flavour, None, &|_| None)
 }
@@ -99,7 +167,43 @@ pub(super) fn import_with(
         globals: globals::Globals::default(),
     };
     importer.run(text, include);
-    importer.out.finish()
+    let mut import = importer.out.finish();
+    if uses_randomness(&import.text) {
+        let tool = flavour.tool();
+        let at = import.notes.iter().take_while(|n| n.line == 0).count();
+        import.notes.insert(
+            at,
+            super::ImportNote {
+                line: 0,
+                message: format!("{tool} draws its random numbers with another generator than Meristem's: the same seed gives a different plant than in {tool} (the distribution of plants is the same)"),
+            },
+        );
+    }
+    import
+}
+
+/// True when a translation draws random numbers: a random function (`uniform(…)`, `normal(…)`,
+/// …) or a stochastic production (`-> (0.3) succ`) on a line that is not a comment.
+fn uses_randomness(text: &str) -> bool {
+    let random: Vec<&str> = crate::vocabulary::FUNCTIONS
+        .iter()
+        .filter(|f| f.random)
+        .map(|f| f.name)
+        .collect();
+    text.lines()
+        .map(|l| l.split("//").next().unwrap_or(""))
+        .any(|code| {
+            let weighted = code
+                .match_indices("->")
+                .any(|(i, _)| code[i + 2..].trim_start().starts_with('('));
+            weighted
+                || random.iter().any(|name| {
+                    code.match_indices(name).any(|(i, _)| {
+                        code[i + name.len()..].starts_with('(')
+                            && !code[..i].ends_with(|c: char| c.is_ascii_alphanumeric() || c == '_')
+                    })
+                })
+        })
 }
 
 struct Importer {
@@ -296,9 +400,64 @@ fn starts_with_keyword(code: &str) -> bool {
         .any(|k| compact.starts_with(k))
 }
 
+/// cpfg productions whose head (predecessor, condition, statement block) spans lines: a line at
+/// the margin without an arrow, then indented lines (or lines opening with `{`, `:` or the
+/// arrow) up to the one with the arrow, as vlab objects write them:
+/// `N(k) < I(b,m,v,c) : b==0 && m==2` / `\t{flux=…;} -->` / `\tI(b,1,flux,c)`.
+fn join_production_heads(mut lines: Vec<Line>) -> Vec<Line> {
+    let mut i = 0;
+    while i < lines.len() {
+        let a = &lines[i];
+        if a.indent > 0
+            || a.code.is_empty()
+            || arrow(&a.code).is_some()
+            || starts_with_keyword(&a.code)
+        {
+            i += 1;
+            continue;
+        }
+        let mut run = Vec::new();
+        let mut found = false;
+        for (j, b) in lines.iter().enumerate().skip(i + 1) {
+            if b.code.is_empty() {
+                if b.comment.is_empty() {
+                    break;
+                }
+                continue;
+            }
+            let continues = b.indent > 0
+                || ["{", ":", "-->", "->"]
+                    .iter()
+                    .any(|t| b.code.starts_with(t));
+            if starts_with_keyword(&b.code) || !continues || run.len() == 6 {
+                break;
+            }
+            run.push(j);
+            if arrow(&b.code).is_some() {
+                found = true;
+                break;
+            }
+        }
+        if found {
+            let taken: Vec<Line> = run.iter().rev().map(|&j| lines.remove(j)).collect();
+            for b in taken.into_iter().rev() {
+                let code = format!("{} {}", lines[i].code, b.code);
+                lines[i].code = code;
+                if !b.comment.is_empty() {
+                    let comment = format!("{} {}", lines[i].comment, b.comment);
+                    lines[i].comment = comment.trim().to_string();
+                }
+            }
+        }
+        i += 1;
+    }
+    lines
+}
+
 /// cpfg productions written over two lines: `pred : cond` then `--> succ` on the next line, or
 /// `pred -->` then the successor (at any indentation) on the next.
-fn join_two_line_productions(mut lines: Vec<Line>) -> Vec<Line> {
+fn join_two_line_productions(lines: Vec<Line>) -> Vec<Line> {
+    let mut lines = join_production_heads(lines);
     let mut i = 0;
     while i < lines.len() {
         let next = (i + 1..lines.len()).find(|&j| !lines[j].code.is_empty());
@@ -1073,13 +1232,56 @@ impl Importer {
         Ok(())
     }
 
+    /// The condition of an `if c`/`elif c` header with the body's locals put in (`None` for
+    /// `else`); a condition that cannot be translated is noted (the production is skipped).
+    fn python_condition(
+        &mut self,
+        head: &str,
+        names: &[String],
+        values: &[String],
+        n: usize,
+    ) -> Result<Option<String>, ()> {
+        if head.trim() == "else" {
+            return Ok(None);
+        }
+        // `if(z == 1)` as well as `if z == 1`.
+        let c = head
+            .trim_start_matches("elif")
+            .trim_start_matches("if")
+            .trim();
+        let c = cpp::substitute(c, names, values);
+        // Checked here, translated with the production (translating it twice would read the
+        // `^` that Python's `**` becomes as Python's bitwise or).
+        match self.expression(&c, &Env::new()) {
+            Ok(_) => Ok(Some(c)),
+            Err(why) => {
+                self.note(
+                    n,
+                    format!("the condition {c}: {why}; the production is skipped"),
+                );
+                Err(())
+            }
+        }
+    }
+
     /// L-Py: a production with a Python body of `if`/`elif`/`else` and `produce`.
     fn python_production(&mut self, pattern: &str, body: &[Line], n: usize) {
         let mut branches: Vec<(Option<String>, String, usize)> = Vec::new();
-        let mut pending: Option<(Option<String>, usize)> = None;
-        let lines: Vec<&Line> = body.iter().filter(|l| !l.code.is_empty()).collect();
+        // The `if`/`elif`/`else:` headers the current line is nested in: their indentation and
+        // condition (`None` for `else`, which the order of the productions already says).
+        let mut open: Vec<(usize, Option<String>)> = Vec::new();
+        let mut lines: Vec<&Line> = body.iter().filter(|l| !l.code.is_empty()).collect();
+        let (names, values) = python_locals(&mut lines);
+        let local = |text: &str| in_parentheses(text, &names, &values);
         for line in lines {
-            let code = line.code.as_str();
+            while open
+                .last()
+                .is_some_and(|(indent, _)| *indent >= line.indent)
+            {
+                open.pop();
+            }
+            let code = &local(&line.code);
+            let code = code.as_str();
             let (head, tail) = match code.find(':') {
                 Some(i)
                     if ["if ", "if(", "elif ", "elif("]
@@ -1092,31 +1294,15 @@ impl Importer {
                 _ => ("", code),
             };
             if !head.is_empty() {
-                let condition = if head.trim() == "else" {
-                    None
-                } else {
-                    // `if(z == 1)` as well as `if z == 1`.
-                    let c = head
-                        .trim_start_matches("elif")
-                        .trim_start_matches("if")
-                        .trim();
-                    match self.expression(c, &Env::new()) {
-                        Ok(c) => Some(c),
-                        Err(why) => {
-                            self.note(
-                                line.n,
-                                format!("the condition {c}: {why}; the production is skipped"),
-                            );
-                            return;
-                        }
-                    }
+                let Ok(condition) = self.python_condition(head, &names, &values, line.n) else {
+                    return;
                 };
                 if tail.is_empty() {
-                    pending = Some((condition, line.n));
+                    open.push((line.indent, condition));
                     continue;
                 }
                 match produce(tail) {
-                    Some(s) => branches.push((condition, s.to_string(), line.n)),
+                    Some(s) => branches.push((nested(&open, condition), s.to_string(), line.n)),
                     None => {
                         self.note(line.n, format!("the Python code '{tail}' is not translated; the production is skipped"));
                         return;
@@ -1125,10 +1311,7 @@ impl Importer {
                 continue;
             }
             match produce(code) {
-                Some(s) => {
-                    let condition = pending.take().and_then(|(c, _)| c);
-                    branches.push((condition, s.to_string(), line.n));
-                }
+                Some(s) => branches.push((nested(&open, None), s.to_string(), line.n)),
                 None => {
                     self.note(line.n, format!("the Python code '{code}' is not translated (Meristem imports bodies made of if, elif, else and produce); the production is skipped"));
                     return;
@@ -1343,9 +1526,31 @@ impl Importer {
         let chars: Vec<char> = text.chars().collect();
         let mut out = String::new();
         let mut i = 0;
+        // cpfg draws a generalized cylinder through the points where the turtle puts its
+        // control points (@Gc, @Ge), moved there by f as well as F: an f before them in the
+        // same successor moves along the cylinder, which Meristem's smooth axis draws only
+        // along segments.
+        let cylinder_end = (self.flavour == Flavour::Cpfg)
+            .then(|| {
+                ["@Gc", "@Ge"]
+                    .iter()
+                    .filter_map(|g| text.rfind(g))
+                    .max()
+                    .map(|b| text[..b].chars().count())
+            })
+            .flatten();
         while i < chars.len() {
             let c = chars[i];
             if c.is_whitespace() {
+                i += 1;
+                continue;
+            }
+            // cpfg's `=` in a right context skips the rest of the branch up to its `]`
+            // (`[I(b)=]`): what Meristem's `]` in a pattern does.
+            if c == '='
+                && self.flavour == Flavour::Cpfg
+                && chars[i + 1..].iter().find(|c| !c.is_whitespace()) == Some(&']')
+            {
                 i += 1;
                 continue;
             }
@@ -1355,6 +1560,16 @@ impl Importer {
                 self.lpy_name(&chars, i, n)
             } else {
                 (c.to_string(), i + 1)
+            };
+            let name = if name == "f" && cylinder_end.is_some_and(|end| i < end) {
+                self.note_once(
+                    "f@G",
+                    n,
+                    "cpfg's f before a control point of a generalized cylinder moves along the cylinder cpfg draws; Meristem's smooth axis follows segments only, so it becomes F",
+                );
+                "F".to_string()
+            } else {
+                name
             };
             i = after;
             // Parameters.
@@ -1367,6 +1582,17 @@ impl Importer {
             if chars.get(j) == Some(&'(') {
                 let close = matching(&chars, j).ok_or("a '(' is never closed")?;
                 let inner: String = chars[j + 1..close].iter().collect();
+                if name == "@L" {
+                    // A text label (`@L("%.f", c)`): Meristem draws no text.
+                    let tool = self.flavour.tool();
+                    self.note_once(
+                        "@L",
+                        n,
+                        format!("{tool}'s @L draws a text label; Meristem draws no text, so the label is dropped"),
+                    );
+                    i = close + 1;
+                    continue;
+                }
                 has_params = true;
                 for arg in split_top(&inner, ',') {
                     params.push(self.expression(arg, env)?);
@@ -1379,7 +1605,7 @@ impl Importer {
     }
 
     /// The L-Py module name at `chars[start]`: the longest declared or predefined long name
-    /// there, an undeclared longer word before `(` (declared now, and reported once), or one
+    /// there, another predefined L-Py word before `(` (declared now, and reported once), or one
     /// letter. Returns it and the index after it.
     fn lpy_name(&mut self, chars: &[char], start: usize, n: usize) -> (String, usize) {
         let rest: String = chars[start..].iter().collect();
@@ -1405,10 +1631,10 @@ impl Importer {
                 let end = start + name.chars().count();
                 (name, end)
             }
-            // A longer word followed by '(' is one module in L-Py (an undeclared name).
+            // One of L-Py's other predefined modules followed by '(' (Meristem lacks it).
             None if word_len > 1
                 && rest[word_len..].trim_start().starts_with('(')
-                && rest[..word_len].chars().all(|c| c.is_ascii_alphabetic()) =>
+                && LPY_PREDEFINED.contains(&&rest[..word_len]) =>
             {
                 let word = rest[..word_len].to_string();
                 if !self.unknown_names.contains(&word) {
@@ -1453,6 +1679,19 @@ impl Importer {
         }
         if let Some(text) = self.view_module(name, &params, has_params, n) {
             return text;
+        }
+        let query = name_of(Meaning::Turtle(Command::QueryPosition));
+        if self.flavour == Flavour::Lpy && name == query && params.len() == 3 {
+            // L-Py's turtle starts heading up along +Z and turns (`+`) in the Y-Z plane;
+            // Meristem's heads along +Y and turns in the X-Y plane: L-Py's z is Meristem's y,
+            // its y is Meristem's x, its x Meristem's z.
+            self.note_once(
+                query,
+                n,
+                "L-Py's turtle grows along +Z and turns towards Y, Meristem's grows along +Y and turns towards X: ?P(x,y,z) becomes ?P(y,z,x), so that each name reads the same axis of the plant; signs along the horizontal axes may differ",
+            );
+            let params = vec![params[1].clone(), params[2].clone(), params[0].clone()];
+            return with(query, &params);
         }
         if name == "," {
             return if has_params {
@@ -1622,6 +1861,110 @@ fn split_top(text: &str, sep: char) -> Vec<&str> {
     parts
 }
 
+/// The condition of a branch nested in the `if` headers `open` (with its own, if any): the
+/// conditions joined by `&&`.
+fn nested(open: &[(usize, Option<String>)], own: Option<String>) -> Option<String> {
+    let parts: Vec<String> = open
+        .iter()
+        .filter_map(|(_, c)| c.clone())
+        .chain(own)
+        .collect();
+    match parts.len() {
+        0 => None,
+        1 => parts.into_iter().next(),
+        _ => Some(
+            parts
+                .iter()
+                .map(|c| format!("({c})"))
+                .collect::<Vec<_>>()
+                .join(" && "),
+        ),
+    }
+}
+
+/// The local assignments that open an L-Py body, before its first `if` or `produce`
+/// (`p1 = min(1,(2*k+1)/k**2)`), taken from `lines`: their names and values, which are put where
+/// the names are used, as cpfg's statement blocks are. A random draw used in more than one place
+/// stays (it would be drawn again in each), and the body is then skipped with its note.
+fn python_locals(lines: &mut Vec<&Line>) -> (Vec<String>, Vec<String>) {
+    let mut names: Vec<String> = Vec::new();
+    let mut values: Vec<String> = Vec::new();
+    while let Some(line) = lines.first() {
+        let Some((name, value)) = python_local(&line.code) else {
+            break;
+        };
+        let value = format!("({})", cpp::substitute(value, &names, &values));
+        let rest: String = lines[1..].iter().map(|l| format!("{}\n", l.code)).collect();
+        let uses = rest.match_indices(name).filter(|(i, _)| {
+            let before = rest[..*i].chars().next_back();
+            let after = rest[i + name.len()..].chars().next();
+            !before.is_some_and(|c| c.is_ascii_alphanumeric() || c == '_')
+                && !after.is_some_and(|c| c.is_ascii_alphanumeric() || c == '_')
+        });
+        let random = ["random", "uniform", "gauss", "randint", "normal"]
+            .iter()
+            .any(|r| value.contains(r));
+        if random && uses.count() > 1 {
+            // Put in each place it is used, a random draw would be drawn again each time.
+            break;
+        }
+        names.push(name.to_string());
+        values.push(value);
+        lines.remove(0);
+    }
+    (names, values)
+}
+
+/// A Python local assignment `name = value` (not `==`, nor `+=` and the like): the name and the
+/// value.
+fn python_local(code: &str) -> Option<(&str, &str)> {
+    let (name, value) = code.split_once('=')?;
+    let name = name.trim();
+    let value = value.trim();
+    (is_identifier(name)
+        && !value.is_empty()
+        && !value.starts_with('=')
+        && !["global", "produce", "nproduce", "return"].contains(&name))
+    .then_some((name, value))
+}
+
+/// `text` (a successor) with each name replaced by its value inside parentheses (the modules'
+/// parameters), never in the module names themselves.
+fn in_parentheses(text: &str, names: &[String], values: &[String]) -> String {
+    if names.is_empty() {
+        return text.to_string();
+    }
+    let mut out = String::new();
+    let mut depth = 0usize;
+    let mut inside = String::new();
+    for c in text.chars() {
+        match c {
+            '(' => {
+                if depth == 0 {
+                    out.push('(');
+                } else {
+                    inside.push('(');
+                }
+                depth += 1;
+            }
+            ')' if depth > 0 => {
+                depth -= 1;
+                if depth == 0 {
+                    out.push_str(&cpp::substitute(&inside, names, values));
+                    inside.clear();
+                    out.push(')');
+                } else {
+                    inside.push(')');
+                }
+            }
+            _ if depth > 0 => inside.push(c),
+            _ => out.push(c),
+        }
+    }
+    out.push_str(&inside);
+    out
+}
+
 /// The byte index of `word` standing alone (not part of a longer name), outside parentheses.
 fn find_word(text: &str, word: &str) -> Option<usize> {
     let bytes = text.as_bytes();
@@ -1742,6 +2085,77 @@ mod tests {
     }
 
     #[test]
+    fn lpy_reads_undeclared_words_letter_by_letter_and_nests_its_ifs_and_locals() {
+        let import = import(
+            "Axiom: A(1)\nderivation length: 2\nproduction:\nA(x) :\n    p = min(1, x**2)\n    r = random()\n    if r <= p:\n        produce IB(1-x)\n    else:\n        produce A(x+p)\nB(x) :\n    if x >= 1:\n        if x < 3:\n            produce F(x)\n        else:\n            produce F(1)\n    else:\n        produce B(x+1)\nendlsystem\n",
+            Flavour::Lpy,
+        );
+        resolves(&import);
+        assert_eq!(
+            body(&import)[3..],
+            [
+                // IB is I then B: Meristem reads undeclared letters one by one too.
+                "A(x) : (uniform(0,1)) <= (min(1,x^2)) -> IB(1-x)",
+                "A(x) -> A(x+(min(1,x^2)))",
+                "B(x) : (x >= 1) && (x < 3) -> F(x)",
+                "B(x) : x >= 1 -> F(1)",
+                "B(x) -> B(x+1)",
+                "endlsystem",
+            ]
+        );
+        // It draws random numbers: one note says that the same seed gives another plant.
+        assert_eq!(import.notes.len(), 1, "{:?}", import.notes);
+        assert!(
+            import.notes[0].line == 0
+                && import.notes[0]
+                    .message
+                    .starts_with("L-Py draws its random numbers with another generator")
+        );
+        // A random draw used twice would be drawn again in each place: not translated.
+        let twice = super::import(
+            "Axiom: A\nderivation length: 2\nproduction:\nA :\n    r = random()\n    if r < 0.3: produce B\n    elif r < 0.6: produce C\nendlsystem\n",
+            Flavour::Lpy,
+        );
+        assert!(twice.notes[0]
+            .message
+            .contains("'r = random()' is not translated"));
+    }
+
+    #[test]
+    fn a_cpfg_define_continues_over_any_number_of_lines() {
+        let import = import(
+            "#define BOX [F(1) \\\n\t+(90)F(2) \\\n\t+(90)F(3)]\nLsystem: 1\nderivation length: 1\nAxiom: BOX A\nA --> FA\nendlsystem\n",
+            Flavour::Cpfg,
+        );
+        resolves(&import);
+        assert!(import.notes.is_empty(), "{:?}", import.notes);
+        assert!(
+            import.text.contains("axiom: [F(1)+(90)F(2)+(90)F(3)]A"),
+            "{}",
+            import.text
+        );
+    }
+
+    #[test]
+    fn cpfg_heads_over_several_lines_whole_branch_contexts_and_labels() {
+        let import = import(
+            "Lsystem: 1\nderivation length: 2\nAxiom: N(1)I(0)[I(2)A]I(3)\nN(k) < I(b) : b==0\n\t{f=k*2;} -->\n\tI(f)\nI(b) > [I(c)=]I(d) : b==0 --> I(c+d)@L(\" %.f\", b)\nendlsystem\n",
+            Flavour::Cpfg,
+        );
+        resolves(&import);
+        assert_eq!(
+            body(&import)[2..],
+            [
+                "N(k) < I(b) : b==0 -> I((k*2))",
+                "I(b) > [I(c)]I(d) : b==0 -> I(c+d)",
+                "endlsystem"
+            ]
+        );
+        assert_eq!(import.notes.len(), 1, "{:?}", import.notes);
+        assert!(import.notes[0].message.contains("@L draws a text label"));
+    }
+
+    #[test]
     fn new_contexts_become_ordinary_contexts_with_a_note_that_says_what_changes() {
         for flavour in [Flavour::Lpy, Flavour::Cpfg] {
             let import = import(
@@ -1796,9 +2210,14 @@ mod tests {
                 "endlsystem",
             ]
         );
-        // `F[+F]F` turns by the view file's angle, which a `.l` alone does not give.
-        assert_eq!(import.notes.len(), 1, "{:?}", import.notes);
+        // `F[+F]F` turns by the view file's angle, which a `.l` alone does not give; its
+        // probability draws random numbers, with another generator than cpfg's.
+        assert_eq!(import.notes.len(), 2, "{:?}", import.notes);
         assert!(import.notes[0].line == 0 && import.notes[0].message.contains("angle increment"));
+        assert_eq!(
+            import.notes[1].message,
+            "cpfg draws its random numbers with another generator than Meristem's: the same seed gives a different plant than in cpfg (the distribution of plants is the same)"
+        );
     }
 
     #[test]
@@ -1897,8 +2316,10 @@ mod tests {
             Flavour::Lpy,
         );
         resolves(&import);
-        assert_eq!(body(&import), ["axiom: A(0)"]);
-        assert_eq!(import.notes.len(), 2);
+        // A local assignment before `produce` is put where it is used; `nproduce` is skipped.
+        assert_eq!(body(&import), ["axiom: A(0)", "A(t) -> A((t + 1))"]);
+        assert_eq!(import.notes.len(), 1, "{:?}", import.notes);
+        assert!(import.notes[0].message.contains("nproduce B"));
     }
 
     #[test]

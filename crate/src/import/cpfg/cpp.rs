@@ -417,9 +417,11 @@ fn word_end(bytes: &[u8], mut i: usize) -> usize {
 fn continued(lines: Vec<Line>) -> Vec<Line> {
     let mut out: Vec<Line> = Vec::new();
     let mut open = false;
+    // The line being continued (the lines joined to it stay, empty, for the line numbers).
+    let mut head = 0;
     for line in lines {
         if open {
-            if let Some(last) = out.last_mut() {
+            if let Some(last) = out.get_mut(head) {
                 last.code.push(' ');
                 last.code.push_str(&line.code);
                 open = last.code.ends_with('\\');
@@ -438,6 +440,7 @@ fn continued(lines: Vec<Line>) -> Vec<Line> {
         if open {
             line.code.pop();
         }
+        head = out.len();
         out.push(line);
     }
     out

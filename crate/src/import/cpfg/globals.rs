@@ -51,6 +51,9 @@ pub(super) struct Globals {
     steps: Vec<(String, String, bool)>,
     /// Variables assigned by any statement other than their start value or such a step.
     changed: Vec<String>,
+    /// Variables a `StartEach:` block sets from other variables alone (`p = (2*n+1.0)/(n*n)`,
+    /// where `n` is stepped): their value during each step is a `#define` of that expression.
+    derived: Vec<(String, String)>,
     /// Every variable assigned in a block.
     pub names: Vec<String>,
     /// Arrays: name and their values (translated when their block is).
@@ -117,9 +120,31 @@ fn step(statement: &str) -> Option<(String, String)> {
     None
 }
 
-/// A number, written as such.
+/// A number, or an expression of numbers and names (`1/DEL`): names that are variables of the
+/// global blocks are ruled out after the scan ([`Globals::scan`]).
 fn constant(text: &str) -> bool {
     text.parse::<f64>().is_ok_and(f64::is_finite)
+        || (!text.is_empty()
+            && text
+                .chars()
+                .all(|c| c.is_ascii_alphanumeric() || "_.+-*/() ".contains(c)))
+}
+
+/// The names (words that start with a letter or `_`) in an expression.
+fn words(text: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut word = String::new();
+    for c in text.chars().chain(std::iter::once(' ')) {
+        if c.is_ascii_alphanumeric() || c == '_' {
+            word.push(c);
+        } else if !word.is_empty() {
+            if !word.starts_with(|c: char| c.is_ascii_digit()) {
+                out.push(std::mem::take(&mut word));
+            }
+            word.clear();
+        }
+    }
+    out
 }
 
 /// The variable an assignment statement sets (`x = …`, `x += …`, `x++`).
@@ -161,13 +186,59 @@ impl Globals {
                 let stepped = matches!(kind, BlockKind::StartEach | BlockKind::EndEach)
                     .then(|| step(s))
                     .flatten();
+                let plain = s
+                    .split_once('=')
+                    .filter(|(t, v)| t.trim() == name && !v.starts_with('='))
+                    .map(|(_, v)| v.trim().to_string());
+                let assigned_before = g.steps.iter().any(|(x, _, _)| *x == name)
+                    || g.derived.iter().any(|(x, _)| *x == name);
                 match (kind, stepped) {
                     (BlockKind::Start | BlockKind::Define, _) => {}
-                    (_, Some((n, d))) if !g.steps.iter().any(|(x, _, _)| *x == n) => {
+                    (_, Some((n, d))) if !assigned_before => {
                         g.steps.push((n, d, kind == BlockKind::EndEach))
+                    }
+                    (BlockKind::StartEach, None)
+                        if !assigned_before
+                            && plain.as_ref().is_some_and(|v| !words(v).contains(&name)) =>
+                    {
+                        g.derived.push((name, plain.unwrap_or_default()))
                     }
                     _ => g.changed.push(name),
                 }
+            }
+        }
+        // A step or a derived value that reads a variable that changes otherwise is no constant.
+        loop {
+            // Variables set only at the start are constants; stepped ones are not for a step.
+            let unsteady = |e: &str, g: &Globals| words(e).iter().any(|w| g.changed.contains(w));
+            let before = g.changed.len();
+            let steps = std::mem::take(&mut g.steps);
+            for (x, d, after) in steps {
+                let moving = |w: &String| {
+                    g.changed.contains(w)
+                        || g.steps.iter().any(|(y, _, _)| y == w)
+                        || g.derived.iter().any(|(y, _)| y == w)
+                        || *w == x
+                };
+                if words(&d).iter().any(moving) {
+                    g.changed.push(x);
+                } else {
+                    g.steps.push((x, d, after));
+                }
+            }
+            let derived = std::mem::take(&mut g.derived);
+            for (x, v) in derived {
+                if g.changed.contains(&x) {
+                    continue;
+                }
+                if unsteady(&v, &g) {
+                    g.changed.push(x);
+                } else {
+                    g.derived.push((x, v));
+                }
+            }
+            if g.changed.len() == before {
+                break;
             }
         }
         g
@@ -221,6 +292,26 @@ impl Importer {
                 kind.written()
             ));
         };
+        if let Some((_, value)) = self
+            .globals
+            .derived
+            .iter()
+            .find(|(x, _)| *x == name)
+            .cloned()
+        {
+            return match kind {
+                // The start value is never read: each step sets it first.
+                BlockKind::Start | BlockKind::Define => Ok(()),
+                _ => {
+                    let value = self.expression(&value, &Env::new())?;
+                    self.out.line(
+                        format!("{} {name} ({value})", DirectiveKind::Define.written()),
+                        n,
+                    );
+                    Ok(())
+                }
+            };
+        }
         match kind {
             BlockKind::Start | BlockKind::Define => self.start_value(&name, s, n),
             _ if self.globals.steps.iter().any(|(x, _, _)| *x == name)
@@ -318,5 +409,42 @@ mod tests {
         assert_eq!(step("n = n * 2"), None);
         assert_eq!(assigned("x == 1"), None);
         assert_eq!(assigned("x += 1").as_deref(), Some("x"));
+        assert_eq!(step("n=n+1/DEL"), Some(("n".into(), "1/DEL".into())));
+    }
+
+    #[test]
+    fn a_start_each_value_of_stepped_variables_is_a_define_over_the_step() {
+        let text = "#define DEL 16\nLsystem: 1\nStart: {n=1; c=2;}\nStartEach: {p=(2*n+1.0)/(n*n); q=1-p; r=c*2;}\nEndEach: {n=n+1/DEL; s=s*2;}\nStartEach: {t=s;}\nderivation length: 3\nAxiom: A\nA : ran(1) < p --> FA\nendlsystem\n";
+        let import = crate::import::import(text, crate::import::Dialect::Cpfg);
+        let defines: Vec<&str> = import
+            .text
+            .lines()
+            .filter(|l| l.starts_with("#define"))
+            .collect();
+        assert_eq!(
+            defines,
+            [
+                "#define DEL 16",
+                "#define n (1)+(1/DEL)*(NumIt-1)",
+                "#define c 2",
+                "#define p ((2*n+1.0)/(n*n))",
+                "#define q (1-p)",
+                "#define r (c*2)",
+            ]
+        );
+        // s doubles (no step by a constant), so t, set from it, changes too: both noted.
+        let noted: Vec<&str> = import.notes.iter().map(|n| n.message.as_str()).collect();
+        assert!(
+            noted
+                .iter()
+                .any(|m| m.contains("'s=s*2' changes the variable s")),
+            "{noted:?}"
+        );
+        assert!(
+            noted
+                .iter()
+                .any(|m| m.contains("'t=s' changes the variable t")),
+            "{noted:?}"
+        );
     }
 }
