@@ -42,7 +42,7 @@ const USAGE: &str = "usage:
       --sides N (3 to 64, default 6) and --smooth-all are the studio's view options
       --edits EDITS.json: branch edits made in the studio (its edits document), applied first
       SVG only, the studio's picture settings:
-      --background white|none|#rrggbb (default none: transparent), --line-width PX (0.5 to 60:
+      --background white, none (the default: transparent) or a hex colour ('#' and six digits), --line-width PX (0.5 to 60:
       every line this wide in the picture's pixels, the Lines mode), --size WxH (16 to 8192
       pixels), --dpi D (10 to 2400: width and height in millimetres, e.g. 1748x2480 at 300 is A5)
   meristem import FILE [--from green|lparser|cpfg|lpy] [-o OUT.lsys]
@@ -70,6 +70,8 @@ struct Args {
     dpi: Option<f64>,
 }
 
+/// The command line. Long because it is the list of flags, one arm and one variable each: split,
+/// it would only scatter that list.
 fn parse_args() -> Result<Args, lexopt::Error> {
     use lexopt::prelude::*;
     let mut parser = lexopt::Parser::from_env();

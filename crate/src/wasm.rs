@@ -53,7 +53,7 @@ export interface ExportOptions extends BuildOptions {
 }
 /** An SVG's picture settings: the CLI's `--background`, `--line-width`, `--size` and `--dpi`. */
 export interface SvgLook {
-  /** `white`, `none` (transparent, the default) or `#rrggbb`. */
+  /** `white`, `none` (transparent, the default) or a hex colour: `#` and six hex digits. */
   background?: string;
   /** Every line this wide in the picture's pixels, 0.5 to 60 (the Lines mode). */
   lineWidth?: number;

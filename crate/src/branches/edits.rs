@@ -159,6 +159,7 @@ pub fn parse_edits(json: &str) -> Result<Vec<BranchEdit>, String> {
 }
 
 /// One edit of the document: `{"path": [...], "handles": [[h, l, u], [h, l, u], [h, l, u]]}`.
+/// Long because each field it checks has its own message in words (what is wrong, where).
 fn read_edit(edit: &serde_json::Value) -> Result<BranchEdit, String> {
     let Some(edit) = edit.as_object() else {
         return Err(format!(

@@ -1521,7 +1521,8 @@ impl Importer {
         })
     }
 
-    /// Translates a module string; modules are written without spaces.
+    /// Translates a module string; modules are written without spaces. Long because it is one
+    /// scanner over the successor's characters, each kind of character an arm of it.
     fn modules(&mut self, text: &str, env: &Env, n: usize) -> Result<String, String> {
         let chars: Vec<char> = text.chars().collect();
         let mut out = String::new();
@@ -1532,6 +1533,7 @@ impl Importer {
         // along segments.
         let cylinder_end = (self.flavour == Flavour::Cpfg)
             .then(|| {
+                // dialect: cpfg's control point and end of a generalized cylinder.
                 ["@Gc", "@Ge"]
                     .iter()
                     .filter_map(|g| text.rfind(g))

@@ -76,6 +76,8 @@ pub fn triangulate(points: &[DVec2], tolerance: f64) -> Option<Vec<[u32; 3]>> {
 }
 
 /// The diagonals that split the polygon into y-monotone pieces (pairs of point indices).
+/// Long because it is the sweep itself: the five kinds of vertex (start, end, split, merge,
+/// regular) share its status of edges and helpers, each a short arm of one match.
 fn monotone_diagonals(p: &[DVec2]) -> Vec<(u32, u32)> {
     let n = p.len();
     let prev = |i: usize| if i == 0 { n - 1 } else { i - 1 };
