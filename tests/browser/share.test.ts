@@ -378,8 +378,12 @@ describe('grammar files', () => {
     const { page, problems } = await openAt(inject('studioUrl'));
     const dir = new URL('../../crate/tests/import-corpus/vlab/05-monopodial/', import.meta.url);
     const before = await generation(page);
+    // Imported off the page's thread, in an import worker, as a single file is.
+    const workers: string[] = [];
+    page.on('worker', (worker) => workers.push(worker.url()));
     await page.getByTestId('file-input').setInputFiles(readdirSync(dir).map((f) => new URL(f, dir).pathname));
     expect(await nextBuild(page, before)).toBe('ok');
+    expect(workers.filter((url) => /import-worker/.test(url)), `workers started: ${workers.join(', ')}`).toHaveLength(1);
     const text = await editorText(page);
     expect(text).toMatch(/^#angle 9$/m);
     expect(text).toMatch(/^#table internode /m);

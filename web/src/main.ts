@@ -13,7 +13,7 @@ import {
   LazyDerivationView, EmbedSnippets, HelpPanel, installLearnPanel, LibraryDialog, LinkState, LivePreview, Notice, ShareDialog, SliderPanel, StagesMode, TextOpening,
   TextKeeper, ViewFollowing, ViewOptions, ViewTools, attachSplitter, browserDatabase, browserStorage, createImportWorker, connectTestHook, createBuildWorker, emptyTestHook, fetchExample,
   figureName, installDownloads, installDrop, installInspectorTabs, LayoutModes,
-  installFileMenu, installShareButton, installShortcuts, openPastedLinks, readGrammarFile, renderShortcutHelp, reportCoreCrashes, showStatus, sidesChoices,
+  installFileMenu, installShareButton, installShortcuts, openPastedLinks, readGrammarFile, readObjectFiles, renderShortcutHelp, reportCoreCrashes, showStatus, sidesChoices,
   startingText, studioElements, installAppUpdates, type ShortcutAction, type StudioElements, type StudioTestHook,
 } from './studio';
 
@@ -148,6 +148,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
       cannotKeep: els.cannotKeep,
       keeper,
       readFile: (file) => readGrammarFile(file, { createWorker: createImportWorker, notice }),
+      readFiles: (files, name) => readObjectFiles(files, name, { createWorker: createImportWorker, notice }),
       notice,
       forgetText: () => {
         derivation.clear();

@@ -4,7 +4,7 @@ import { runImport, type ImportRequest, type ImportResponse } from './import-cli
 
 class FakeImportWorker extends FakeJobWorker<ImportRequest, ImportResponse> {}
 
-const request: ImportRequest = { name: 'tree.l', bytes: new TextEncoder().encode('Lsystem: 1\nAxiom: F\nendlsystem\n') };
+const request: ImportRequest = { files: [{ name: 'tree.l', bytes: new TextEncoder().encode('Lsystem: 1\nAxiom: F\nendlsystem\n') }] };
 
 describe('runImport', () => {
   it('imports in the worker, settles with its text and ends the worker', async () => {

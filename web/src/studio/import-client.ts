@@ -1,15 +1,15 @@
-// The page's side of the import worker (import-worker.ts): a grammar file of another dialect is
-// imported in a worker of its own, with a Cancel button in the notice and a time limit, so the page
-// stays responsive however long an importer takes. `.lsys` files need no import: the page reads
-// them itself.
+// The page's side of the import worker (import-worker.ts): a grammar file of another dialect, or
+// files opened together (a vlab object, an L-Py model, a .zip), is imported in a worker of its own,
+// with a Cancel button in the notice and a time limit, so the page stays responsive however long
+// an importer takes. `.lsys` files need no import: the page reads them itself.
+import type { ObjectFile } from '../core';
 import { checkGrammarBytes, type OpenedFile } from './grammar-files';
 import type { Notice } from './notice';
 import { runWorkerJob, type JobWorkerLike, type WorkerJob } from './worker-job';
 
-/** Page → import worker: the one file a worker imports. */
+/** Page → import worker: the files a worker imports (one grammar file, or an object's files). */
 export interface ImportRequest {
-  name: string;
-  bytes: Uint8Array;
+  files: ObjectFile[];
 }
 
 /** Import worker → page. */
@@ -32,7 +32,7 @@ export function createImportWorker(): Worker {
   return new Worker(new URL('./import-worker.ts', import.meta.url), { type: 'module', name: 'meristem-import' });
 }
 
-/** Imports one file in a fresh worker from `createWorker`, stopped after `limitMs`. */
+/** Imports the request's files in a fresh worker from `createWorker`, stopped after `limitMs`. */
 export function runImport(createWorker: () => ImportWorkerLike, request: ImportRequest, limitMs = IMPORT_TIME_LIMIT): WorkerJob<ImportOutcome> {
   return runWorkerJob<ImportRequest, ImportResponse, ImportOutcome>(createWorker, request, {
     answer: (response) => (response.kind === 'done' ? { kind: 'done', opened: response.opened } : { kind: 'failed', message: `the importer failed (a bug): ${response.message}` }),
@@ -62,10 +62,24 @@ export async function readGrammarFile(file: File, parts: FileReadingParts): Prom
   const checked = checkGrammarBytes(file.name, bytes);
   if (!checked.ok) return checked;
   if (checked.lsys) return { ok: true, text: checked.text, dialect: null, notes: checked.notes };
+  return importInWorker([{ name: file.name, bytes }], file.name, parts);
+}
+
+/**
+ * Reads files opened together (a dropped folder, several picked files, a `.zip`), called `name`
+ * in the notice: a vlab object or an L-Py model imported whole in a worker, as
+ * {@link readGrammarFile} imports one file.
+ */
+export function readObjectFiles(files: ObjectFile[], name: string, parts: FileReadingParts): Promise<OpenedFile> {
+  return importInWorker(files, name, parts);
+}
+
+/** Imports `files` in a worker, the notice saying so (with Cancel) once it takes a while. */
+async function importInWorker(files: ObjectFile[], name: string, parts: FileReadingParts): Promise<OpenedFile> {
   const limitMs = parts.limitMs ?? IMPORT_TIME_LIMIT;
-  const job = runImport(parts.createWorker, { name: file.name, bytes }, limitMs);
+  const job = runImport(parts.createWorker, { files }, limitMs);
   const shown = setTimeout(() => {
-    parts.notice.show('info', `Importing ${file.name}…`, [], IMPORTING, [{ label: 'Cancel', testid: 'import-cancel', run: () => job.cancel() }]);
+    parts.notice.show('info', `Importing ${name}…`, [], IMPORTING, [{ label: 'Cancel', testid: 'import-cancel', run: () => job.cancel() }]);
   }, IMPORT_NOTICE_AFTER);
   const outcome = await job.done;
   clearTimeout(shown);

@@ -1,9 +1,10 @@
-// The import worker: reads one grammar file of another dialect (cpfg, L-Py, Lparser, Green) through
-// the core's importers, off the page's main thread, and sends back the Meristem text with its notes.
+// The import worker: reads a grammar file of another dialect (cpfg, L-Py, Lparser, Green), or files
+// opened together (a vlab object, an L-Py model, a .zip), through the core's importers, off the
+// page's main thread, and sends back the Meristem text with its notes.
 // The page starts one worker per file and terminates it after, or to cancel, or when the import
 // runs past its time limit (import-client.ts): an importer that takes minutes never freezes the page.
 import { initIo } from '../core';
-import { openGrammarBytes } from './grammar-files';
+import { openObjectBytes } from './grammar-files';
 import type { ImportRequest, ImportResponse } from './import-client';
 
 function reply(response: ImportResponse): void {
@@ -11,7 +12,7 @@ function reply(response: ImportResponse): void {
 }
 
 addEventListener('message', async (event: MessageEvent<ImportRequest>) => {
-  const { name, bytes } = event.data;
+  const { files } = event.data;
   try {
     await initIo(); // the core with its importers (the first plant's core has none)
   } catch (error) {
@@ -19,7 +20,7 @@ addEventListener('message', async (event: MessageEvent<ImportRequest>) => {
     return;
   }
   try {
-    reply({ kind: 'done', opened: openGrammarBytes(name, bytes) });
+    reply({ kind: 'done', opened: openObjectBytes(files) });
   } catch (error) {
     // A panic of the core (a bug), said in its message.
     reply({ kind: 'failed', message: error instanceof Error ? error.message : String(error) });

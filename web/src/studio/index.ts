@@ -44,7 +44,7 @@ export { DerivationControls, type DerivationElements, type SharedDerivation } fr
 export { TextOpening, type OpenedText, type TextOpeningParts } from './text-opening';
 export { openPastedLinks, startingText, type PastedLinkParts, type StartingParts, type StartingText } from './link-opening';
 export { TextKeeper, keptSentence, restoreAutosave, type KeptPlace, type Keeping } from './keeping';
-export { createImportWorker, readGrammarFile, runImport, IMPORT_TIME_LIMIT, type ImportOutcome, type ImportRequest, type ImportResponse } from './import-client';
+export { createImportWorker, readGrammarFile, readObjectFiles, runImport, IMPORT_TIME_LIMIT, type ImportOutcome, type ImportRequest, type ImportResponse } from './import-client';
 export { runWorkerJob, type JobWorkerLike, type WorkerJob } from './worker-job';
 export { LinkState, type LinkStateParts } from './link-state';
 export { Autosave, AUTOSAVE_DELAY } from './autosave';

@@ -5,11 +5,11 @@
 // undoable in the editor. Files in other dialects are imported off the page's thread.
 import type { StoredGrammar } from '../share/storage';
 import type { GrammarEditor } from '../editor';
-import { initIo } from '../core';
+import type { ObjectFile } from '../core';
 import { askToDownload, askToReplace, type QuestionDialog } from './confirm';
 import { fetchExample } from './gallery';
 import type { GalleryEntry } from './gallery-manifest';
-import { dialectName, openObjectBytes, saveGrammarFile, type OpenedFile } from './grammar-files';
+import { dialectName, saveGrammarFile, type OpenedFile } from './grammar-files';
 import { keptSentence, type TextKeeper } from './keeping';
 import type { Notice } from './notice';
 
@@ -23,6 +23,8 @@ export interface TextOpeningParts {
   keeper: TextKeeper;
   /** Reads a file the user opened (other dialects imported, in a worker, with Cancel and a time limit). */
   readFile(file: File): Promise<OpenedFile>;
+  /** Reads files opened together, called `name` (imported whole in a worker, as `readFile`). */
+  readFiles(files: ObjectFile[], name: string): Promise<OpenedFile>;
   notice: Notice;
   /** Forgets what belonged to the text being replaced (its iterations, seed, sliders, projection, framing). */
   forgetText(): void;
@@ -133,8 +135,7 @@ export class TextOpening {
     if (files.length === 1 && !/\.zip$/i.test(files[0].name)) return this.openFile(files[0].file);
     const read = async () => {
       const all = await Promise.all(files.map(async (f) => ({ name: f.name, bytes: new Uint8Array(await f.file.arrayBuffer()) })));
-      await initIo(); // the importers, on the first import
-      await this.show(openObjectBytes(all), name);
+      await this.show(await this.parts.readFiles(all, name), name);
     };
     read().catch((error: unknown) => this.parts.notice.show('error', `Could not open ${name}: ${String(error)}`));
   }
