@@ -500,7 +500,7 @@ const CORPUS: &[Entry] = &[
         &[
             (
                 37,
-                "Meristem rejects the translation `F(n)A > ?P(x,y,z) : ((y<0)||(y>2.6*2)|",
+                "Meristem rejects the translation `F(n)A > ?P(x,y,z) : ((y<0)||(y>SIZE*2)",
             ),
             (
                 53,
