@@ -175,10 +175,6 @@ fn svg_look(args: &Args, format: Format) -> Result<svg::Look, String> {
             format.extension()
         ));
     }
-    let background = match &args.background {
-        Some(text) => svg::Look::parse_background(text)?,
-        None => None,
-    };
     let size = match &args.size {
         Some(text) => {
             let parsed = text
@@ -191,13 +187,7 @@ fn svg_look(args: &Args, format: Format) -> Result<svg::Look, String> {
         }
         None => None,
     };
-    svg::Look {
-        background,
-        line_width: args.line_width,
-        size,
-        dpi: args.dpi,
-    }
-    .checked()
+    svg::Look::read(args.background.as_deref(), args.line_width, size, args.dpi)
 }
 
 /// Where `export` writes, in which format, and an SVG's look.

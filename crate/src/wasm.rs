@@ -117,22 +117,12 @@ struct SvgLookFields {
 impl SvgLookFields {
     /// The look, checked.
     fn look(&self) -> Result<export::svg::Look, String> {
-        let background = match &self.background {
-            Some(text) => export::svg::Look::parse_background(text)?,
-            None => None,
-        };
         let size = match (self.width, self.height) {
             (Some(w), Some(h)) => Some((w, h)),
             (None, None) => None,
             _ => return Err("an SVG's size needs both its width and its height".into()),
         };
-        export::svg::Look {
-            background,
-            line_width: self.line_width,
-            size,
-            dpi: self.dpi,
-        }
-        .checked()
+        export::svg::Look::read(self.background.as_deref(), self.line_width, size, self.dpi)
     }
 }
 

@@ -75,6 +75,27 @@ impl Look {
         Ok(self)
     }
 
+    /// The look of the settings as given (the CLI's flags, the boundary's `SvgLook`): the
+    /// background by name ([`Look::parse_background`]), checked ([`Look::checked`]).
+    pub fn read(
+        background: Option<&str>,
+        line_width: Option<f64>,
+        size: Option<(u32, u32)>,
+        dpi: Option<f64>,
+    ) -> Result<Look, String> {
+        let background = match background {
+            Some(text) => Look::parse_background(text)?,
+            None => None,
+        };
+        Look {
+            background,
+            line_width,
+            size,
+            dpi,
+        }
+        .checked()
+    }
+
     /// A background by name: `#rrggbb`, `white`, or `none` / `transparent` (no background).
     pub fn parse_background(text: &str) -> Result<Option<[u8; 3]>, String> {
         let text = text.trim();

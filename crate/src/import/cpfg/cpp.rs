@@ -191,45 +191,17 @@ impl<'a> Preprocessor<'a> {
     /// it was defined) and any other name as 0 (cpp's rule for `#if`); `None` when it is not a
     /// constant.
     fn constant(&self, text: &str) -> Option<f64> {
-        let mut numbers = String::with_capacity(text.len());
-        let bytes = text.as_bytes();
-        let mut i = 0;
-        while i < bytes.len() {
-            let c = bytes[i];
-            if c.is_ascii_alphabetic() || c == b'_' {
-                let start = i;
-                i = word_end(bytes, i);
-                let word = &text[start..i];
-                let call = text[i..].trim_start().starts_with('(');
-                match self.macros.get(word) {
-                    Some(m) if m.kept => match m.value {
-                        Some(v) => numbers.push_str(&format!("({v:?})")),
-                        None => return None,
-                    },
-                    // A function the importer translates (sin, …) stays for the compiler.
-                    _ if call && self.functions.contains(&word) => numbers.push_str(word),
-                    _ => numbers.push('0'),
+        let numbers = map_words(text, |word, rest, out| {
+            match self.macros.get(word) {
+                Some(m) if m.kept => out.push_str(&format!("({:?})", m.value?)),
+                // A function the importer translates (sin, …) stays for the compiler.
+                _ if rest.trim_start().starts_with('(') && self.functions.contains(&word) => {
+                    out.push_str(word)
                 }
-                continue;
+                _ => out.push('0'),
             }
-            if c.is_ascii_digit() || c == b'.' {
-                // A number: its digits, exponent and all, as they are.
-                let start = i;
-                while i < bytes.len()
-                    && (bytes[i].is_ascii_alphanumeric()
-                        || bytes[i] == b'.'
-                        || ((bytes[i] == b'+' || bytes[i] == b'-')
-                            && matches!(bytes[i - 1], b'e' | b'E')))
-                {
-                    i += 1;
-                }
-                numbers.push_str(&text[start..i]);
-                continue;
-            }
-            let len = text[i..].chars().next().map_or(1, char::len_utf8);
-            numbers.push_str(&text[i..i + len]);
-            i += len;
-        }
+            Some(())
+        })?;
         let value = crate::syntax::parse_expression(&numbers, 0)
             .ok()
             .and_then(|e| crate::model::Program::compile(&e, &NoNames).ok())
@@ -473,26 +445,50 @@ fn arguments(text: &str, at: usize) -> Option<(Vec<String>, usize)> {
 
 /// The body with each parameter (a whole word) replaced by its argument.
 pub(super) fn substitute(body: &str, params: &[String], args: &[String]) -> String {
-    let mut out = String::new();
-    let bytes = body.as_bytes();
+    map_words(body, |word, _, out| {
+        match params.iter().position(|p| p == word) {
+            Some(k) => out.push_str(args.get(k).map_or("", String::as_str)),
+            None => out.push_str(word),
+        }
+        Some(())
+    })
+    .unwrap_or_default()
+}
+
+/// `text` with each identifier written by `word(name, the text after it, out)`, everything else
+/// copied; a number (`1e5`, `2.5E-3`) is copied whole, so its exponent is never read as a name.
+/// `None` from `word` gives `None`.
+fn map_words(
+    text: &str,
+    mut word: impl FnMut(&str, &str, &mut String) -> Option<()>,
+) -> Option<String> {
+    let mut out = String::with_capacity(text.len());
+    let bytes = text.as_bytes();
     let mut i = 0;
     while i < bytes.len() {
         let c = bytes[i];
+        let start = i;
         if c.is_ascii_alphabetic() || c == b'_' {
-            let start = i;
             i = word_end(bytes, i);
-            let word = &body[start..i];
-            match params.iter().position(|p| p == word) {
-                Some(k) => out.push_str(args.get(k).map_or("", String::as_str)),
-                None => out.push_str(word),
+            word(&text[start..i], &text[i..], &mut out)?;
+        } else if c.is_ascii_digit() || c == b'.' {
+            // A number: its digits, exponent and all, as they are.
+            i += 1;
+            while i < bytes.len()
+                && (bytes[i].is_ascii_alphanumeric()
+                    || bytes[i] == b'.'
+                    || ((bytes[i] == b'+' || bytes[i] == b'-')
+                        && matches!(bytes[i - 1], b'e' | b'E')))
+            {
+                i += 1;
             }
-            continue;
+            out.push_str(&text[start..i]);
+        } else {
+            i += text[i..].chars().next().map_or(1, char::len_utf8);
+            out.push_str(&text[start..i]);
         }
-        let len = body[i..].chars().next().map_or(1, char::len_utf8);
-        out.push_str(&body[i..i + len]);
-        i += len;
     }
-    out
+    Some(out)
 }
 
 /// The byte index of `word` standing alone.
@@ -519,5 +515,20 @@ impl crate::model::Scope for NoNames {
     }
     fn random_var(&self, _: &str) -> Option<u16> {
         None
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::substitute;
+
+    #[test]
+    fn a_parameter_is_replaced_as_a_whole_word_never_inside_a_number() {
+        let params = ["e5".to_string(), "x".to_string()];
+        let args = ["A".to_string(), "(1+2)".to_string()];
+        assert_eq!(
+            substitute("x*1e5+e5-x2+2.5E-3", &params, &args),
+            "(1+2)*1e5+A-x2+2.5E-3"
+        );
     }
 }
