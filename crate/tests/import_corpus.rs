@@ -29,8 +29,8 @@ type Failure = (&'static str, Entry);
 /// The share of the corpus that must build its plant (issue 21: 95 %).
 const GOAL: f64 = 0.95;
 
-/// The share reached so far (68 of 82 files): it may only rise, towards [`GOAL`].
-const FLOOR: f64 = 0.82;
+/// The share reached so far (75 of 82 files): it may only rise, towards [`GOAL`].
+const FLOOR: f64 = 0.91;
 
 const CORPUS: &[Entry] = &[
     (
@@ -49,6 +49,10 @@ const CORPUS: &[Entry] = &[
             (
                 0,
                 "the materials of material.mat become their diffuse colours: their ambien",
+            ),
+            (
+                29,
+                "cpfg's _ is not a Meristem command; kept as a module the turtle ignores",
             ),
             (76, "cpfg's @! is not a Meristem command; dropped"),
             (76, "cpfg's @# is not a Meristem command; dropped"),
@@ -258,23 +262,23 @@ const CORPUS: &[Entry] = &[
     (
         "vlab/HilbertPanels",
         214,
-        129,
+        385,
         &[
             (
                 27,
-                "Meristem rejects the translation `Sl : GRID -> ['(-1)'(-1)'(-1)!(GW)|f(a",
+                "cpfg's predecessor Sl is 2 modules (S l); Meristem's predecessor is one ",
             ),
             (
                 28,
-                "Meristem rejects the translation `Sr : GRID -> ['(-1)'(-1)'(-1)!(GW)|f(a",
+                "cpfg's predecessor Sr is 2 modules (S r); Meristem's predecessor is one ",
             ),
             (
                 30,
-                "Meristem rejects the translation `Tl : TILE -> ['(-1){f(c)+f(c)+f(c)+f(c",
+                "cpfg's predecessor Tl is 2 modules (T l); Meristem's predecessor is one ",
             ),
             (
                 31,
-                "Meristem rejects the translation `Tr : TILE -> ['(-1)'(-1){f(c)-f(c)-f(c",
+                "cpfg's predecessor Tr is 2 modules (T r); Meristem's predecessor is one ",
             ),
         ],
     ),
@@ -418,17 +422,13 @@ const CORPUS: &[Entry] = &[
         &[
             (
                 0,
-                "L-Py draws its random numbers with another generator than Meristem's",
+                "L-Py draws its random numbers with another generator than Meristem's: th",
             ),
             (2, "Python imports are not translated"),
             (10, "the Python function 'Start' is not translated"),
             (
                 14,
                 "L-Py's @GsG is not a Meristem command; kept as a module the turtle ignor",
-            ),
-            (
-                47,
-                "the Python code 'd = 0.05+0.25* ((x/k)+(1-x)/(k-1))' is not translated (",
             ),
         ],
     ),
@@ -552,6 +552,235 @@ const CORPUS: &[Entry] = &[
             ),
         ],
     ),
+    (
+        "lpy/13a-flow1stem-random.lpy",
+        12,
+        30,
+        &[
+            (
+                0,
+                "L-Py draws its random numbers with another generator than Meristem's: th",
+            ),
+            (1, "Python imports are not translated"),
+            (
+                12,
+                "the Python function 'txt' returns str(round(val,2))[:5]: '[' in an expre",
+            ),
+            (15, "the Python function 'Start' is not translated"),
+            (
+                44,
+                "the Python code 'global sumauxin' changes the global sumauxin, which not",
+            ),
+            (
+                46,
+                "the Python code 'sumauxin += auxin' changes the global sumauxin, which n",
+            ),
+            (
+                54,
+                "L-Py's @L draws a text label; Meristem draws no text, so the label is dr",
+            ),
+            (
+                63,
+                "the Python function '__initialiseContext__' is not translated",
+            ),
+        ],
+    ),
+    (
+        "lpy/13b-flow1stem-diffusecontinuouslyfromroot.lpy",
+        11,
+        30,
+        &[
+            (
+                8,
+                "the Python function 'txt' returns str(round(val,2))[:5]: '[' in an expre",
+            ),
+            (
+                44,
+                "L-Py's @L draws a text label; Meristem draws no text, so the label is dr",
+            ),
+            (
+                49,
+                "the Python function '__initialiseContext__' is not translated",
+            ),
+        ],
+    ),
+    (
+        "lpy/13c-flow1stem-diffusecontfromapexwithdeg.lpy",
+        21,
+        60,
+        &[
+            (
+                11,
+                "the Python function 'txt' returns str(round(val,2))[:5]: '[' in an expre",
+            ),
+            (
+                48,
+                "L-Py's @L draws a text label; Meristem draws no text, so the label is dr",
+            ),
+            (
+                54,
+                "the Python function '__initialiseContext__' is not translated",
+            ),
+        ],
+    ),
+    (
+        "vlab/03-pallaea",
+        5,
+        2171,
+        &[
+            (
+                0,
+                "the materials of plant.mat become their diffuse colours: their ambient, ",
+            ),
+            (
+                0,
+                "cpfg draws its random numbers with another generator than Meristem's: th",
+            ),
+            (
+                34,
+                "the statement 'srand(1)' restarts cpfg's random generator when the produ",
+            ),
+            (75, "cpfg's @# is not a Meristem command; dropped"),
+            (
+                75,
+                "cpfg's @Gt is not a Meristem command; kept as a module the turtle ignore",
+            ),
+            (
+                75,
+                "cpfg's @Gr is not a Meristem command; kept as a module the turtle ignore",
+            ),
+            (
+                79,
+                "cpfg's f before a control point of a generalized cylinder moves along th",
+            ),
+            (
+                79,
+                "cpfg's @Gc marks a control point of a generalized cylinder; Meristem's s",
+            ),
+        ],
+    ),
+    (
+        "vlab/04-paintbrush",
+        3,
+        1859,
+        &[
+            (
+                0,
+                "the materials of plant.mat become their diffuse colours: their ambient, ",
+            ),
+            (
+                0,
+                "cpfg draws its random numbers with another generator than Meristem's: th",
+            ),
+            (
+                25,
+                "the statement 'srand(1)' restarts cpfg's random generator when the produ",
+            ),
+            (
+                27,
+                "the statement 'roll - roll/L0' assigns nothing (it has no effect in cpfg",
+            ),
+            (43, "cpfg's @# is not a Meristem command; dropped"),
+            (
+                43,
+                "cpfg's @Gt is not a Meristem command; kept as a module the turtle ignore",
+            ),
+            (
+                43,
+                "cpfg's @Gr is not a Meristem command; kept as a module the turtle ignore",
+            ),
+            (
+                51,
+                "cpfg's f before a control point of a generalized cylinder moves along th",
+            ),
+            (
+                51,
+                "cpfg's @Gc marks a control point of a generalized cylinder; Meristem's s",
+            ),
+        ],
+    ),
+    (
+        "vlab/ShootRoot",
+        11,
+        4,
+        &[
+            (
+                47,
+                "the statement 'go=1' changes cpfg's global variable go during the deriva",
+            ),
+            (
+                47,
+                "the statement 'shoot = cs' changes cpfg's global variable shoot during t",
+            ),
+            (
+                47,
+                "the statement 'root=cr' changes cpfg's global variable root during the d",
+            ),
+            (
+                47,
+                "cpfg's printf prints to the console; it is not translated (the plant is ",
+            ),
+            (
+                59,
+                "the statement 'go=0' changes cpfg's global variable go during the deriva",
+            ),
+            (
+                64,
+                "Meristem rejects the translation `XI(b,m,v,c,s,w) -> I(b,2,0,0,s,0)D%`: ",
+            ),
+            (
+                98,
+                "cpfg's printf prints to the console; it is not translated (the plant is ",
+            ),
+            (
+                106,
+                "cpfg's printf prints to the console; it is not translated (the plant is ",
+            ),
+            (
+                145,
+                "cpfg's @c is not a Meristem command; kept as a module the turtle ignores",
+            ),
+            (
+                147,
+                "cpfg's @R is not a Meristem command; kept as a module the turtle ignores",
+            ),
+            (
+                147,
+                "cpfg's @L draws a text label; Meristem draws no text, so the label is dr",
+            ),
+        ],
+    ),
+    (
+        "vlab/Lilac",
+        4333,
+        2160,
+        &[
+            (
+                0,
+                "the view file's surface p is read from petal.s, which Meristem does not ",
+            ),
+            (
+                0,
+                "the view file's surface c is read from calyx.s, which Meristem does not ",
+            ),
+            (
+                0,
+                "the materials of materials.mat become their diffuse colours: their ambie",
+            ),
+            (
+                72,
+                "cpfg's predecessor AXIOM is 5 modules (A X I O M); Meristem's predecesso",
+            ),
+            (
+                100,
+                "cpfg's _ is not a Meristem command; kept as a module the turtle ignores",
+            ),
+            (
+                102,
+                "~c names a surface from a file; Meristem draws only ~l and ~p, so it is ",
+            ),
+        ],
+    ),
 ];
 
 /// The files that do not yet build the plant their source implies, each with the reason.
@@ -561,24 +790,6 @@ const FAILURES: &[Failure] = &[
 13, "the Python function 'Start' is not translated"),(
 22, "the Python code 'global m' is not translated (Meristem imports bodies ma"),(
 44, "L-Py's @c is not a Meristem command; kept as a module the turtle ignores"),])),
-("the productions move auxin through Python globals and local variables (global sumauxin, col = int(…)); Meristem has no variables, so they are skipped and the stem does not grow", ("lpy/13a-flow1stem-random.lpy", 2, 0, &[(
-1, "Python imports are not translated"),(
-12, "the Python function 'txt' returns str(round(val,2))[:5]: '[' in an expre"),(
-15, "the Python function 'Start' is not translated"),(
-44, "the Python code 'global sumauxin' is not translated (Meristem imports bo"),(
-53, "the Python code 'a += 0.1' is not translated (Meristem imports bodies ma"),(
-56, "L-Py's @L draws a text label; Meristem draws no text, so the label is dr"),(
-63, "the Python function '__initialiseContext__' is not translated"),])),
-("the productions compute auxin and colours in Python statements (auxin = max_level, col = int(…)); they are skipped and the stem does not grow", ("lpy/13b-flow1stem-diffusecontinuouslyfromroot.lpy", 2, 0, &[(
-8, "the Python function 'txt' returns str(round(val,2))[:5]: '[' in an expre"),(
-34, "the Python code 'auxin = max_level' is not translated (Meristem imports "),(
-43, "the Python code 'a += 0.1' is not translated (Meristem imports bodies ma"),(
-49, "the Python function '__initialiseContext__' is not translated"),])),
-("the productions compute auxin and colours in Python statements (auxin = max_level, col = int(…)); they are skipped and the stem does not grow", ("lpy/13c-flow1stem-diffusecontfromapexwithdeg.lpy", 2, 0, &[(
-11, "the Python function 'txt' returns str(round(val,2))[:5]: '[' in an expre"),(
-39, "the Python code 'auxin = max_level' is not translated (Meristem imports "),(
-48, "L-Py's @L draws a text label; Meristem draws no text, so the label is dr"),(
-54, "the Python function '__initialiseContext__' is not translated"),])),
 ("modules carry Python objects (T(SegmentData())) and the bending is computed with PlantGL vectors in Python; nothing of it is expressible, not even the axiom", ("lpy/16a-branch-bending.lpy", 0, 0, &[(
 0, "nothing to derive: no axiom could be imported"),(
 1, "Python imports are not translated"),(
@@ -636,49 +847,87 @@ const FAILURES: &[Failure] = &[
 192, "the Python function '__initialiseContext__' is not translated"),])),
 
 
-("the leaflet productions keep their state in a statement block with srand and local variables over several lines; the block is not translated, so the leaf is not built", ("vlab/03-pallaea", 5, 0, &[(0, "the materials of plant.mat become their diffuse colours: their ambient, "),(0, "cpfg draws its random numbers with another generator than Meristem's: th"),(34, "the statement 'srand(1)' is not an assignment; the production is skipped"),(36, "the condition xl<xr && x+xl<x_max bang = ANG*func(6,x_rel); }: ';' in an"),(52, "the condition xr<=xl && x+xr<x_max bang = ANG*func(6,x_rel); }: ';' in a"),(75, "cpfg's @# is not a Meristem command; dropped"),(75, "cpfg's @Gt is not a Meristem command; kept as a module the turtle ignore"),(75, "cpfg's @Gr is not a Meristem command; kept as a module the turtle ignore"),(79, "cpfg's f before a control point of a generalized cylinder moves along th"),(79, "cpfg's @Gc marks a control point of a generalized cylinder; Meristem's s"),])),
-("the leaf productions keep their state in a statement block with srand and local variables over several lines; the block is not translated, so the leaf is not built", ("vlab/04-paintbrush", 3, 0, &[(0, "the materials of plant.mat become their diffuse colours: their ambient, "),(0, "cpfg draws its random numbers with another generator than Meristem's: th"),(25, "the statement 'srand(1)' is not an assignment; the production is skipped"),(27, "the condition x + dx < x_max }: '}' in an expression; the production is "),(43, "cpfg's @# is not a Meristem command; dropped"),(43, "cpfg's @Gt is not a Meristem command; kept as a module the turtle ignore"),(43, "cpfg's @Gr is not a Meristem command; kept as a module the turtle ignore"),(51, "cpfg's f before a control point of a generalized cylinder moves along th"),(51, "cpfg's @Gc marks a control point of a generalized cylinder; Meristem's s"),])),
-("the axiom uses f(l,t) with two parameters and multi-module predecessors (1 < aF > *); the axiom is rejected, so nothing is derived", ("vlab/22-insect-realistic", 0, 0, &[(
-0, "nothing to derive: no axiom could be imported"),(
-19, "cpfg's StartEach: statement 's=0' changes the variable s during the deri"),(
-19, "cpfg's printf prints to the console; it is not translated (the plant is "),(
-20, "cpfg's EndEach: statement 's=1' changes the variable s during the deriva"),(
-26, "Meristem rejects the translation `axiom: ;(1)[!(1);(48)+(90)f(GL)[-(180)"),(
-27, "'[-(90)f(1)-(90)f(0.5,0)/(70)h]]SM' is not part of the notation Meristem"),(
-29, "Meristem rejects the translation `f(l,t)/(n)h : l >=GL-0.5 -> ε`: the pr"),(
-42, "Meristem rejects the translation `1 < aF > * -> f`: the predecessor must"),(
-43, "the statement 'c=c+SINC' changes cpfg's global variable c during the der"),(
-47, "Meristem rejects the translation `3 < bF > * -> f`: the predecessor must"),(
-49, "Meristem rejects the translation `* < 4 > F]g -> 5`: ']' has no matching"),(
-73, "Meristem rejects the translation `A(n,m)B : n == 0 && m == 0 -> I(PL,INR"),(
-89, "~b names a surface from a file; Meristem draws only ~l and ~p, so it is "),])),
-("the trees grow from environmental queries (?E) of a light model and productions over several modules with statement blocks; most productions are rejected", ("vlab/12-two-trees", 4, 0, &[(0, "the materials of tree.mat become their diffuse colours: their ambient, e"),(0, "cpfg draws its random numbers with another generator than Meristem's: th"),(49, "cpfg's printf prints to the console; it is not translated (the plant is "),(49, "cpfg's StartEach: statement 'if(d==0){DEL=DEL+1;d=DEL+1;printf(\"Year %.0"),(53, "cpfg's EndEach: statement 'if(d==1){stop(1);}' is not translated: Merist"),(57, "'[[,(6)@M(-6,0,-15)&(90)+(180){f(30)+(90)f(6)+(90)f(30)+(90)f(6)}] @M(-2"),(58, "'[[,(6)@M(6,0,-15)^(90){f(30)+(90)f(6)+(90)f(30)+(90)f(6)}] @M(2,0,0)!(W"),(62, "Meristem rejects the translation `L(f,age,del,vig) : (n >= WHENMOVE)&&(a"),(63, "Meristem rejects the translation `L(f,age,del,vig) : (n >= WHENMOVE) -> "),(73, "Meristem rejects the translation `L(f,age,del,vig) : (age>0)&&(del>1) ->"),(74, "Meristem rejects the translation `L(f,age,del,vig) : (age>0)&&(del==1) -"),(77, "Meristem rejects the translation `?E(r) < A(dir,del,vig,n) : (r*LP-LM)>P"),(86, "Meristem rejects the translation `?E(r) < A(dir,del,vig,n) : (r*LP-LM)>P"),(93, "Meristem rejects the translation `-(a) > [!(w1,n1,f1)L : (n < WHENMOVE)&"),(100, "Meristem rejects the translation `-(a) > !(w1,n1,f1)L : (n < WHENMOVE)&&"),(107, "Meristem rejects the translation `L(f,age,del,vig) : age ==0 -> L(0,0,0,"),(108, "Meristem rejects the translation `L(f,age,del,vig) > ?E(r) : (r*LP<LM) -"),(111, "Meristem rejects the translation `L(f,age,del,vig) > ?E(r) : age>0 -> L("),(115, "Meristem rejects the translation `!(w0,n0,f0) > L(fl,age,del,vig)[!(w1,n"),(120, "Meristem rejects the translation `!(w0,n0,f0) > L(fl,age,del,vig)[!(w1,n"),(125, "Meristem rejects the translation `!(w0,n0,f0) > L(fl,age,del,vig)[!(w1,n"),(128, "a production for cpfg's '#' becomes one for Meristem's '!', which also s"),(128, "Meristem rejects the translation `* < !(w0) > L(fl,age,del,vig)[!(w1,n1,"),(133, "a production for cpfg's ',' becomes one for Meristem's ';', which also s"),(153, "the statement 'srand(SEED)' is not an assignment; the production is skip"),(154, "cpfg's @Tx is not a Meristem command; kept as a module the turtle ignore"),(160, "cpfg's @G is not a Meristem command; kept as a module the turtle ignores"),(166, "cpfg's @Gsf is not a Meristem command; kept as a module the turtle ignor"),(166, "cpfg's @Gc marks a control point of a generalized cylinder; Meristem's s"),(166, "Meristem rejects the translation `F(vig,n) : (n==0)&&(GEN_CYL_LEVEL > 0)"),(167, "cpfg's f before a control point of a generalized cylinder moves along th"),(167, "Meristem rejects the translation `F(vig,n) : n < GEN_CYL_LEVEL-1 -> F(vi"),(171, "Meristem rejects the translation `F(vig,n)!(w) : n==GEN_CYL_LEVEL-1 -> F"),(172, "Meristem rejects the translation `F(vig,n)!(w) -> F(vig)!(w)@O`: the pre"),(176, "Meristem rejects the translation `F(vig,n)!(w) : n==GEN_CYL_LEVEL-1 -> F"),(270, "cpfg's @Tf is not a Meristem command; kept as a module the turtle ignore"),(270, "~m names a surface from a file; Meristem draws only ~l and ~p, so it is "),])),
-("derivation length 1 (STEPS) draws only the seed; the flux productions need nested statement blocks (if … { printf … }) in their conditions and global variables (go, shoot, root), which are dropped", ("vlab/ShootRoot", 11, 4, &[(
-47, "the statement 'go=1' changes cpfg's global variable go during the deriva"),(
-47, "the statement 'shoot = cs' changes cpfg's global variable shoot during t"),(
-47, "the statement 'root=cr' changes cpfg's global variable root during the d"),(
-47, "the statement 'printf(\"shoot = %lf, root = %lf\\n\", shoot, root)' is not "),(
-59, "the statement 'go=0' changes cpfg's global variable go during the deriva"),(
-64, "Meristem rejects the translation `XI(b,m,v,c,s,w) -> I(b,2,0,0,s,0)D%`: "),(
-98, "the condition ml==1 && b==1 && c>0 && cl !=c }: '}' in an expression; th"),(
-106, "the condition ml==1 && b==2 && c>0 && cl !=c }: '}' in an expression; th"),(
-119, "the condition m==0 && m1==2&&m2==2 }: '}' in an expression; the producti"),(
-145, "cpfg's @c is not a Meristem command; kept as a module the turtle ignores"),(
-147, "cpfg's @R is not a Meristem command; kept as a module the turtle ignores"),(
-147, "cpfg's @L draws a text label; Meristem draws no text, so the label is dr"),])),
+(
+"the axiom uses f(l,t) with two parameters and multi-module predecessors (1 < aF > *); the axiom is rejected, so nothing is derived",
+(
+        "vlab/22-insect-realistic",
+        0,
+        0,
+        &[
+            (0, "nothing to derive: no axiom could be imported"),
+            (19, "cpfg's StartEach: statement 's=0' changes the variable s during the deri"),
+            (19, "cpfg's printf prints to the console; it is not translated (the plant is "),
+            (20, "cpfg's EndEach: statement 's=1' changes the variable s during the deriva"),
+            (24, "cpfg's _ is not a Meristem command; kept as a module the turtle ignores"),
+            (26, "Meristem rejects the translation `axiom: ;(1)[!(1);(48)+(90)f(GL)[-(180)"),
+            (27, "'[-(90)f(1)-(90)f(0.5,0)/(70)h]]SM' is not part of the notation Meristem"),
+            (29, "Meristem rejects the translation `f(l,t)/(n)h : l >=GL-0.5 -> ε`: the pr"),
+            (42, "cpfg's predecessor aF is 2 modules (a F); Meristem's predecessor is one "),
+            (43, "the statement 'c=c+SINC' changes cpfg's global variable c during the der"),
+            (47, "cpfg's predecessor bF is 2 modules (b F); Meristem's predecessor is one "),
+            (49, "Meristem rejects the translation `* < 4 > F]g -> 5`: ']' has no matching"),
+            (73, "Meristem rejects the translation `A(n,m)B : n == 0 && m == 0 -> I(PL,INR"),
+            (89, "~b names a surface from a file; Meristem draws only ~l and ~p, so it is "),
+        ],
+    )),
+(
+"the trees grow from environmental queries (?E) of a light model and productions over several modules with statement blocks; most productions are rejected",
+(
+        "vlab/12-two-trees",
+        4,
+        0,
+        &[
+            (0, "the materials of tree.mat become their diffuse colours: their ambient, e"),
+            (0, "cpfg draws its random numbers with another generator than Meristem's: th"),
+            (49, "cpfg's printf prints to the console; it is not translated (the plant is "),
+            (49, "cpfg's StartEach: statement 'if(d==0){DEL=DEL+1;d=DEL+1;printf(\"Year %.0"),
+            (53, "cpfg's EndEach: statement 'if(d==1){stop(1);}' is not translated: Merist"),
+            (57, "'[[,(6)@M(-6,0,-15)&(90)+(180){f(30)+(90)f(6)+(90)f(30)+(90)f(6)}] @M(-2"),
+            (58, "'[[,(6)@M(6,0,-15)^(90){f(30)+(90)f(6)+(90)f(30)+(90)f(6)}] @M(2,0,0)!(W"),
+            (62, "Meristem rejects the translation `L(f,age,del,vig) : (n >= WHENMOVE)&&(a"),
+            (63, "Meristem rejects the translation `L(f,age,del,vig) : (n >= WHENMOVE) -> "),
+            (73, "Meristem rejects the translation `L(f,age,del,vig) : (age>0)&&(del>1) ->"),
+            (74, "Meristem rejects the translation `L(f,age,del,vig) : (age>0)&&(del==1) -"),
+            (77, "Meristem rejects the translation `?E(r) < A(dir,del,vig,n) : (r*LP-LM)>P"),
+            (86, "Meristem rejects the translation `?E(r) < A(dir,del,vig,n) : (r*LP-LM)>P"),
+            (93, "Meristem rejects the translation `-(a) > [!(w1,n1,f1)L : (n < WHENMOVE)&"),
+            (100, "Meristem rejects the translation `-(a) > !(w1,n1,f1)L : (n < WHENMOVE)&&"),
+            (107, "Meristem rejects the translation `L(f,age,del,vig) : age ==0 -> L(0,0,0,"),
+            (108, "Meristem rejects the translation `L(f,age,del,vig) > ?E(r) : (r*LP<LM) -"),
+            (111, "Meristem rejects the translation `L(f,age,del,vig) > ?E(r) : age>0 -> L("),
+            (115, "Meristem rejects the translation `!(w0,n0,f0) > L(fl,age,del,vig)[!(w1,n"),
+            (120, "Meristem rejects the translation `!(w0,n0,f0) > L(fl,age,del,vig)[!(w1,n"),
+            (125, "Meristem rejects the translation `!(w0,n0,f0) > L(fl,age,del,vig)[!(w1,n"),
+            (128, "a production for cpfg's '#' becomes one for Meristem's '!', which also s"),
+            (128, "Meristem rejects the translation `* < !(w0) > L(fl,age,del,vig)[!(w1,n1,"),
+            (133, "a production for cpfg's ',' becomes one for Meristem's ';', which also s"),
+            (153, "the statement 'srand(SEED)' restarts cpfg's random generator when the pr"),
+            (153, "cpfg's @Tx is not a Meristem command; kept as a module the turtle ignore"),
+            (160, "cpfg's @G is not a Meristem command; kept as a module the turtle ignores"),
+            (166, "cpfg's @Gsf is not a Meristem command; kept as a module the turtle ignor"),
+            (166, "cpfg's @Gc marks a control point of a generalized cylinder; Meristem's s"),
+            (166, "Meristem rejects the translation `F(vig,n) : (n==0)&&(GEN_CYL_LEVEL > 0)"),
+            (167, "cpfg's f before a control point of a generalized cylinder moves along th"),
+            (167, "Meristem rejects the translation `F(vig,n) : n < GEN_CYL_LEVEL-1 -> F(vi"),
+            (171, "Meristem rejects the translation `F(vig,n)!(w) : n==GEN_CYL_LEVEL-1 -> F"),
+            (172, "Meristem rejects the translation `F(vig,n)!(w) -> F(vig)!(w)@O`: the pre"),
+            (176, "Meristem rejects the translation `F(vig,n)!(w) : n==GEN_CYL_LEVEL-1 -> F"),
+            (270, "cpfg's @Tf is not a Meristem command; kept as a module the turtle ignore"),
+            (270, "~m names a surface from a file; Meristem draws only ~l and ~p, so it is "),
+        ],
+    )),
 
-("the inflorescence reads two-dimensional arrays (array len[M][N]); Meristem has no arrays, so every internode length is unknown", ("vlab/Lilac", 11, 2, &[(
-0, "the view file's surface p is read from petal.s, which Meristem does not "),(
-0, "the view file's surface c is read from calyx.s, which Meristem does not "),(
-0, "the materials of materials.mat become their diffuse colours: their ambie"),(
-38, "cpfg's array len has more than one dimension; Meristem has no arrays, so"),(
-38, "cpfg's array cnt has more than one dimension; Meristem has no arrays, so"),(
-89, "'cnt[…]' reads an array that cpfg's Start: or Define: block does not giv"),(
-100, "'len[…]' reads an array that cpfg's Start: or Define: block does not giv"),(
-102, "~c names a surface from a file; Meristem draws only ~l and ~p, so it is "),])),
-("the spiral's only production is guarded by a statement block of local variables and a curve function (curveY) in its condition; it is skipped", ("vlab/Ridley", 2, 0, &[(
-0, "the materials of material.mat become their diffuse colours: their ambien"),(
-14, "the condition s<L a = a-rho_square; y = curveY(1,s/L); no_poly = 6 + 300"),])),
+(
+"the spiral's only production computes its primordia in a while loop over its parameters and the contour curve (curveX, curveY, curveGAL of profile.con, a file the object does not hold); Meristem has no loops, so it is skipped",
+(
+        "vlab/Ridley",
+        2,
+        0,
+        &[
+            (0, "the materials of material.mat become their diffuse colours: their ambien"),
+            (14, "the statement 'while (a<rho_square && s<L) { x = curveX(1,s/L); a = a + "),
+        ],
+    )),
 
 ("it is an L+C (lpfg) model: module declarations, produce statements in C blocks; it is not cpfg, so nothing is imported", ("vlab/MonopodialSpiral", 0, 0, &[(
 0, "the view file's surface leaf.s is read from , which Meristem does not re"),(
@@ -765,7 +1014,7 @@ fn the_share_of_the_whole_corpus_that_builds_its_plant_does_not_fall() {
 }
 
 #[test]
-#[ignore = "issue 21's goal is not reached yet: 68 of 82 files (82.9 %); FAILURES says why each other fails"]
+#[ignore = "issue 21's goal is not reached yet: 75 of 82 files (91.5 %); FAILURES says why each other fails"]
 fn at_least_95_percent_of_the_whole_corpus_builds_its_plant() {
     assert!(
         share() >= GOAL,

@@ -157,6 +157,8 @@ pub(super) fn import_with(
         flavour,
         out: Output::default(),
         declared: Vec::new(),
+        words: Vec::new(),
+        write_only: Vec::new(),
         unknown_names: Vec::new(),
         noted: Vec::new(),
         axiom: false,
@@ -211,6 +213,12 @@ struct Importer {
     out: Output,
     /// Multi-letter module names (L-Py `module` declarations and names met in strings).
     declared: Vec<String>,
+    /// cpfg predecessors of several letter modules (`AXIOM --> …`): the letters as written and
+    /// the one Meristem module they become, longest first.
+    words: Vec<(String, String)>,
+    /// L-Py globals that nothing reads but text labels (`@L`, dropped): their `global`
+    /// statements and the assignments to them in production bodies can be dropped.
+    write_only: Vec<String>,
     /// Long names that are neither declared nor L-Py's (written as modules, reported once).
     unknown_names: Vec<String>,
     noted: Vec<String>,
@@ -583,9 +591,11 @@ impl Importer {
             }
             all = join_two_line_productions(join_blocks(all, self.flavour));
             self.globals = globals::Globals::scan(&all);
+            self.words(&all);
         }
         // L-Py's `module` declarations change how strings split into modules: read them first.
         if self.flavour == Flavour::Lpy {
+            self.write_only = write_only_globals(&all);
             for line in &all {
                 if let Some(rest) = line.code.strip_prefix("module ") {
                     for item in rest.split(',') {
@@ -598,6 +608,49 @@ impl Importer {
             }
         }
         all
+    }
+
+    /// cpfg's predecessors made of several modules that are letters without parameters
+    /// (`AXIOM : c --> …`, five modules A X I O M): Meristem's predecessor is one module, so the
+    /// letters written together become one declared module, with a note at the first
+    /// production.
+    fn words(&mut self, all: &[Line]) {
+        for line in all {
+            let Some((arrow_at, _)) = arrow(&line.code) else {
+                continue;
+            };
+            let left = &line.code[..arrow_at];
+            let left = top_level(left, ":").map_or(left, |i| &left[..i]);
+            let strict = top_level(left, "<").map_or(left, |i| &left[i + 1..]);
+            let strict = top_level(strict, ">")
+                .map_or(strict, |i| &strict[..i])
+                .trim();
+            if strict.len() < 2
+                || strict.len() > 32
+                || !strict.chars().all(|c| c.is_ascii_alphabetic())
+                || self.words.iter().any(|(w, _)| w == strict)
+            {
+                continue;
+            }
+            // Meristem reads a line that starts with `axiom :` as its axiom.
+            let name = if strict.eq_ignore_ascii_case("axiom") {
+                format!("{strict}_")
+            } else {
+                strict.to_string()
+            };
+            let letters: Vec<String> = strict.chars().map(String::from).collect();
+            self.note(
+                line.n,
+                format!(
+                    "cpfg's predecessor {strict} is {} modules ({}); Meristem's predecessor is one module, so {strict} written together (here, in the axiom and in successors) becomes one module {name} (#module): where no production for it applies, cpfg would rewrite the letters one by one, Meristem keeps it whole",
+                    letters.len(),
+                    letters.join(" ")
+                ),
+            );
+            self.declared.push(name.clone());
+            self.words.push((strict.to_string(), name));
+        }
+        self.words.sort_by(|a, b| b.0.len().cmp(&a.0.len()));
     }
 
     fn run(&mut self, text: &str, include: &dyn Fn(&str) -> Option<String>) {
@@ -738,7 +791,8 @@ impl Importer {
             return true;
         }
         // dialect: cpfg's keyword
-        if let Some(rest) = keyword(&lower, code, "axiom:") {
+        // (`AXIOM : c --> …` is a production for a module named AXIOM.)
+        if let Some(rest) = keyword(&lower, code, "axiom:").filter(|_| arrow(code).is_none()) {
             self.axiom(rest, line.n);
             return true;
         }
@@ -1092,7 +1146,7 @@ impl Importer {
         let mut post = None;
         while !rest.is_empty() {
             if let Some(inner) = rest.strip_prefix('{') {
-                let close = inner.find('}').ok_or("a '{' block is never closed")?;
+                let close = closing(rest, 0).ok_or("a '{' block is never closed")? - 1;
                 let block = &inner[..close];
                 if condition.trim().is_empty() {
                     self.block(block, &mut env, n)?;
@@ -1189,46 +1243,147 @@ impl Importer {
         out
     }
 
-    /// A statement block: assignments `x = e;` (also `+=` …), in order.
+    /// A statement block, in order: assignments `x = e;` (also `+=` …), which bind `x` for what
+    /// follows; `if (c) … else …` over assignments, which binds each variable a branch assigns to
+    /// a conditional expression `((c)?then:else)`; `{…}` groups; `printf` (dropped with a note);
+    /// a statement that assigns nothing (no effect in cpfg either: dropped with a note). A loop,
+    /// or anything else, is an error (the production is skipped).
     fn block(&mut self, block: &str, env: &mut Env, n: usize) -> Result<(), String> {
-        for statement in block.split(';').map(str::trim).filter(|s| !s.is_empty()) {
-            if statement
-                .chars()
-                .filter(|c| !c.is_whitespace())
-                .collect::<String>()
-                .ends_with("++")
-            {
-                self.note(n, format!("the statement '{statement}' changes a variable cpfg keeps from module to module; Meristem has no variables: dropped"));
-                continue;
-            }
-            let (target, op, value) = ["+=", "-=", "*=", "/=", "="]
-                .iter()
-                .find_map(|op| {
-                    statement
-                        .split_once(op)
-                        .map(|(t, v)| (t.trim(), *op, v.trim()))
-                })
-                .ok_or_else(|| format!("the statement '{statement}' is not an assignment"))?;
-            if !is_identifier(target) || value.starts_with('=') {
-                return Err(format!("the statement '{statement}' is not an assignment"));
-            }
-            if self.globals.is_global(target) && !env.contains_key(target) {
-                self.note(n, format!("the statement '{statement}' changes cpfg's global variable {target} during the derivation; Meristem has no variables, so it is dropped and {target} keeps its start value"));
-                continue;
-            }
-            let value = self.expression(value, env)?;
-            let value = match op {
-                "=" => value,
-                _ => {
-                    let old = env
-                        .get(target)
-                        .cloned()
-                        .unwrap_or_else(|| target.to_string());
-                    format!("{old}{}({value})", &op[..1])
-                }
-            };
-            env.insert(target.to_string(), format!("({value})"));
+        self.statements(block, env, n, 0)
+    }
+
+    /// The statements of `text` (see [`Importer::block`]); `depth` bounds the nesting of braces
+    /// and `if`s, so that no input exhausts the stack.
+    fn statements(
+        &mut self,
+        text: &str,
+        env: &mut Env,
+        n: usize,
+        depth: usize,
+    ) -> Result<(), String> {
+        if depth > 16 {
+            return Err("statement blocks nest more than 16 deep".into());
         }
+        let mut rest = text.trim_start();
+        while !rest.is_empty() {
+            let (statement, after) = next_statement(rest, 0)?;
+            rest = after.trim_start();
+            let statement = match statement {
+                Statement::Group(inner) => {
+                    self.statements(inner, env, n, depth + 1)?;
+                    continue;
+                }
+                Statement::If(condition, then, otherwise) => {
+                    self.if_statement(condition, then, otherwise, env, n, depth)?;
+                    continue;
+                }
+                Statement::Simple(s) => s.trim(),
+            };
+            if statement.is_empty() {
+                continue;
+            }
+            let word: String = statement
+                .chars()
+                .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
+                .collect();
+            if ["while", "for", "do"].contains(&word.as_str()) {
+                return Err(format!(
+                    "the statement '{}' is a loop; Meristem has no statements",
+                    one_line(statement)
+                ));
+            }
+            self.simple_statement(statement, env, n)?;
+        }
+        Ok(())
+    }
+
+    /// `if (condition) then else otherwise`: each variable a branch assigns is bound to
+    /// `((condition)?then:else)`, the other branch's value being the one before the `if` (or the
+    /// name itself: a parameter or a constant).
+    fn if_statement(
+        &mut self,
+        condition: &str,
+        then: &str,
+        otherwise: Option<&str>,
+        env: &mut Env,
+        n: usize,
+        depth: usize,
+    ) -> Result<(), String> {
+        let c = self
+            .expression(condition, env)
+            .map_err(|why| format!("the condition of 'if ({})': {why}", one_line(condition)))?;
+        let mut yes = env.clone();
+        self.statements(then, &mut yes, n, depth + 1)?;
+        let mut no = env.clone();
+        if let Some(otherwise) = otherwise {
+            self.statements(otherwise, &mut no, n, depth + 1)?;
+        }
+        let mut names: Vec<String> = yes.keys().chain(no.keys()).cloned().collect();
+        names.sort();
+        names.dedup();
+        for name in names {
+            let before = env.get(&name).cloned();
+            let pick = |side: &Env| {
+                side.get(&name)
+                    .cloned()
+                    .or_else(|| before.clone())
+                    .unwrap_or_else(|| name.clone())
+            };
+            let (a, b) = (pick(&yes), pick(&no));
+            if a != b {
+                env.insert(name, format!("(({c})?{a}:{b})"));
+            }
+        }
+        Ok(())
+    }
+
+    /// One statement without braces: an assignment, `x++`, `printf(…)`, `srand(…)` or an
+    /// expression that assigns nothing.
+    fn simple_statement(&mut self, statement: &str, env: &mut Env, n: usize) -> Result<(), String> {
+        let compact: String = statement.chars().filter(|c| !c.is_whitespace()).collect();
+        if compact.ends_with("++") || compact.ends_with("--") {
+            self.note(n, format!("the statement '{statement}' changes a variable cpfg keeps from module to module; Meristem has no variables: dropped"));
+            return Ok(());
+        }
+        if compact.starts_with("printf(") {
+            self.note(n, format!("cpfg's printf prints to the console; it is not translated (the plant is the same): '{}' dropped", one_line(statement)));
+            return Ok(());
+        }
+        if compact.starts_with("srand(") {
+            self.note(n, format!("the statement '{statement}' restarts cpfg's random generator when the production is applied; Meristem draws from its own generator, seeded once (#seed), so it is dropped"));
+            return Ok(());
+        }
+        let Some((target, op, value)) = ["+=", "-=", "*=", "/=", "="].iter().find_map(|op| {
+            statement
+                .split_once(op)
+                .map(|(t, v)| (t.trim(), *op, v.trim()))
+        }) else {
+            // An expression statement (`roll - roll/L0;`): C computes it and throws it away.
+            if self.expression(statement, env).is_ok() {
+                self.note(n, format!("the statement '{statement}' assigns nothing (it has no effect in cpfg either); dropped"));
+                return Ok(());
+            }
+            return Err(format!("the statement '{statement}' is not an assignment"));
+        };
+        if !is_identifier(target) || value.starts_with('=') {
+            return Err(format!("the statement '{statement}' is not an assignment"));
+        }
+        if self.globals.is_global(target) && !env.contains_key(target) {
+            self.note(n, format!("the statement '{statement}' changes cpfg's global variable {target} during the derivation; Meristem has no variables, so it is dropped and {target} keeps its start value"));
+            return Ok(());
+        }
+        let value = self.expression(value, env)?;
+        let value = match op {
+            "=" => value,
+            _ => {
+                let old = env
+                    .get(target)
+                    .cloned()
+                    .unwrap_or_else(|| target.to_string());
+                format!("{old}{}({value})", &op[..1])
+            }
+        };
+        env.insert(target.to_string(), format!("({value})"));
         Ok(())
     }
 
@@ -1271,6 +1426,15 @@ impl Importer {
         // condition (`None` for `else`, which the order of the productions already says).
         let mut open: Vec<(usize, Option<String>)> = Vec::new();
         let mut lines: Vec<&Line> = body.iter().filter(|l| !l.code.is_empty()).collect();
+        // `global g` and assignments to g, when nothing but a dropped label reads g.
+        lines.retain(|line| {
+            let dropped = global_write(&line.code, &self.write_only);
+            if let Some(g) = &dropped {
+                let code = line.code.clone();
+                self.note(line.n, format!("the Python code '{code}' changes the global {g}, which nothing but text labels (@L, dropped) reads; dropped"));
+            }
+            dropped.is_none()
+        });
         let (names, values) = python_locals(&mut lines);
         let local = |text: &str| in_parentheses(text, &names, &values);
         for line in lines {
@@ -1404,18 +1568,28 @@ impl Importer {
             j += 1;
         }
         if chars.get(j) == Some(&'[') && self.flavour == Flavour::Cpfg {
-            let close = chars[j..]
-                .iter()
-                .position(|&c| c == ']')
-                .map(|k| j + k)
-                .ok_or("a '[' is never closed")?;
-            let inner: String = chars[j + 1..close].iter().collect();
-            let index = self.expression(&inner, env)?;
-            let value = self.array_value(&word, &index).ok_or_else(|| {
+            // `name[i]`, `name[i][j]`…: as many indices as the array has dimensions.
+            let wanted = self.array_dimensions(&word).unwrap_or(1);
+            let mut indices = Vec::new();
+            let mut at = j;
+            while indices.len() < wanted && chars.get(at) == Some(&'[') {
+                let close = chars[at..]
+                    .iter()
+                    .position(|&c| c == ']')
+                    .map(|k| at + k)
+                    .ok_or("a '[' is never closed")?;
+                let inner: String = chars[at + 1..close].iter().collect();
+                indices.push(self.expression(&inner, env)?);
+                at = close + 1;
+                while chars.get(at) == Some(&' ') && indices.len() < wanted {
+                    at += 1;
+                }
+            }
+            let value = self.array_value(&word, &indices).ok_or_else(|| {
                 format!("'{word}[…]' reads an array that cpfg's Start: or Define: block does not give as one list of values")
             })?;
             out.push_str(&value);
-            return Ok(close + 1);
+            return Ok(at);
         }
         if chars.get(j) == Some(&'(') {
             let close = matching(chars, j).ok_or("a '(' is never closed")?;
@@ -1560,6 +1734,12 @@ impl Importer {
                 symbol_name(&chars, i)
             } else if c.is_ascii_alphabetic() && self.flavour == Flavour::Lpy {
                 self.lpy_name(&chars, i, n)
+            } else if let Some((word, name)) = self
+                .words
+                .iter()
+                .find(|(w, _)| chars[i..].iter().take(w.len()).copied().eq(w.chars()))
+            {
+                (name.clone(), i + word.len())
             } else {
                 (c.to_string(), i + 1)
             };
@@ -1720,6 +1900,13 @@ impl Importer {
                 format!("{tool}'s {name} is not a Meristem command; kept as a module the turtle ignores"),
             );
         }
+        if name == "_" && self.flavour == Flavour::Cpfg {
+            self.note_once(
+                name,
+                n,
+                "cpfg's _ is not a Meristem command; kept as a module the turtle ignores",
+            );
+        }
         if name.starts_with('~') && module_named(name).is_none() {
             self.note_once(
                 name,
@@ -1825,6 +2012,99 @@ fn symbol_name(chars: &[char], start: usize) -> (String, usize) {
     (chars[start..i].iter().collect(), i)
 }
 
+/// A statement of a cpfg block, as [`next_statement`] reads it.
+#[derive(Debug, PartialEq)]
+enum Statement<'a> {
+    /// `{ … }`: the text inside the braces.
+    Group(&'a str),
+    /// `if (condition) then [else otherwise]`.
+    If(&'a str, &'a str, Option<&'a str>),
+    /// Anything else, up to its `;`.
+    Simple(&'a str),
+}
+
+/// The byte index of the bracket that closes the one at `open` (`(` or `{`, nesting both).
+fn closing(text: &str, open: usize) -> Option<usize> {
+    let mut depth = 0i32;
+    for (i, c) in text.char_indices().skip_while(|(i, _)| *i < open) {
+        match c {
+            '(' | '{' => depth += 1,
+            ')' | '}' => {
+                depth -= 1;
+                if depth == 0 {
+                    return Some(i);
+                }
+            }
+            _ => {}
+        }
+    }
+    None
+}
+
+/// Whether `text` starts with the keyword `word` (not a longer name).
+fn starts_with_word(text: &str, word: &str) -> bool {
+    text.starts_with(word)
+        && !text[word.len()..]
+            .chars()
+            .next()
+            .is_some_and(|c| c.is_ascii_alphanumeric() || c == '_')
+}
+
+/// The first statement of `text` (which starts with no space) and the text after it.
+fn next_statement(text: &str, depth: usize) -> Result<(Statement<'_>, &str), String> {
+    if depth > 16 {
+        return Err("statements nest more than 16 deep".into());
+    }
+    if text.starts_with('{') {
+        let close = closing(text, 0).ok_or("a '{' block is never closed")?;
+        return Ok((Statement::Group(&text[1..close]), &text[close + 1..]));
+    }
+    if starts_with_word(text, "if") {
+        let open = text.find(|c: char| !c.is_whitespace() && c != 'i' && c != 'f');
+        let open = open
+            .filter(|&o| text[o..].starts_with('('))
+            .ok_or("'if' without '('")?;
+        let close = closing(text, open).ok_or("a '(' is never closed")?;
+        let condition = &text[open + 1..close];
+        let after = text[close + 1..].trim_start();
+        let (then, rest) = next_statement(after, depth + 1)?;
+        let then_text = &after[..after.len() - rest.len()];
+        let then_text = match then {
+            Statement::Group(inner) => inner,
+            _ => then_text,
+        };
+        let rest = rest.trim_start();
+        if starts_with_word(rest, "else") {
+            let after = rest[4..].trim_start();
+            let (otherwise, rest) = next_statement(after, depth + 1)?;
+            let otherwise_text = match otherwise {
+                Statement::Group(inner) => inner,
+                _ => &after[..after.len() - rest.len()],
+            };
+            return Ok((
+                Statement::If(condition, then_text, Some(otherwise_text)),
+                rest,
+            ));
+        }
+        return Ok((Statement::If(condition, then_text, None), rest));
+    }
+    let mut depth = 0i32;
+    for (i, c) in text.char_indices() {
+        match c {
+            '(' | '{' => depth += 1,
+            ')' | '}' => depth -= 1,
+            ';' if depth <= 0 => return Ok((Statement::Simple(&text[..i]), &text[i + 1..])),
+            _ => {}
+        }
+    }
+    Ok((Statement::Simple(text), ""))
+}
+
+/// `text` on one line, its runs of white space one space.
+fn one_line(text: &str) -> String {
+    text.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
 /// The index of the ')' that closes the '(' at `open`.
 fn matching(chars: &[char], open: usize) -> Option<usize> {
     let mut depth = 0;
@@ -1885,19 +2165,29 @@ fn nested(open: &[(usize, Option<String>)], own: Option<String>) -> Option<Strin
 }
 
 /// The local assignments that open an L-Py body, before its first `if` or `produce`
-/// (`p1 = min(1,(2*k+1)/k**2)`), taken from `lines`: their names and values, which are put where
-/// the names are used, as cpfg's statement blocks are. A random draw used in more than one place
-/// stays (it would be drawn again in each), and the body is then skipped with its note.
+/// (`p1 = min(1,(2*k+1)/k**2)`, `a += 0.1`), taken from `lines`: their names and values, which
+/// are put where the names are used, as cpfg's statement blocks are. An `if`/`elif`/`else` whose
+/// branches only assign (`if x == 1:` / `auxin = max_level` / `else:` / `auxin = min_level`)
+/// gives each name it assigns a conditional value, `((c)?(a):(b))`. A random draw used in more
+/// than one place stays (it would be drawn again in each), and the body is then skipped with its
+/// note.
 fn python_locals(lines: &mut Vec<&Line>) -> (Vec<String>, Vec<String>) {
     let mut names: Vec<String> = Vec::new();
     let mut values: Vec<String> = Vec::new();
     while let Some(line) = lines.first() {
+        if let Some((taken, assigned)) = python_if_assignments(lines, &names, &values) {
+            for (name, value) in assigned {
+                bind(&mut names, &mut values, name, value);
+            }
+            lines.drain(..taken);
+            continue;
+        }
         let Some((name, value)) = python_local(&line.code) else {
             break;
         };
-        let value = format!("({})", cpp::substitute(value, &names, &values));
+        let value = format!("({})", cpp::substitute(&value, &names, &values));
         let rest: String = lines[1..].iter().map(|l| format!("{}\n", l.code)).collect();
-        let uses = rest.match_indices(name).filter(|(i, _)| {
+        let uses = rest.match_indices(&name).filter(|(i, _)| {
             let before = rest[..*i].chars().next_back();
             let after = rest[i + name.len()..].chars().next();
             !before.is_some_and(|c| c.is_ascii_alphanumeric() || c == '_')
@@ -1910,24 +2200,196 @@ fn python_locals(lines: &mut Vec<&Line>) -> (Vec<String>, Vec<String>) {
             // Put in each place it is used, a random draw would be drawn again each time.
             break;
         }
-        names.push(name.to_string());
-        values.push(value);
+        bind(&mut names, &mut values, name, value);
         lines.remove(0);
     }
     (names, values)
 }
 
-/// A Python local assignment `name = value` (not `==`, nor `+=` and the like): the name and the
-/// value.
-fn python_local(code: &str) -> Option<(&str, &str)> {
+/// Binds `name` to `value` (already in terms of the earlier names): a name bound again takes
+/// the new value in its place.
+fn bind(names: &mut Vec<String>, values: &mut Vec<String>, name: String, value: String) {
+    match names.iter().position(|n| *n == name) {
+        Some(k) => values[k] = value,
+        None => {
+            names.push(name);
+            values.push(value);
+        }
+    }
+}
+
+/// An `if c:` at `lines[0]` followed by `elif c:`/`else:` at the same indentation, whose
+/// branches hold only local assignments: how many lines it takes, and each name it assigns with
+/// its conditional value (the value before the `if`, or the name itself, where a branch does not
+/// assign it). `None` when `lines[0]` opens no such `if`.
+fn python_if_assignments(
+    lines: &[&Line],
+    names: &[String],
+    values: &[String],
+) -> Option<(usize, Vec<(String, String)>)> {
+    let head = lines.first()?;
+    let indent = head.indent;
+    let mut branches: Vec<(Option<String>, Vec<(String, String)>)> = Vec::new();
+    let mut k = 0;
+    while let Some(line) = lines.get(k) {
+        let code = line.code.as_str();
+        let condition = if k == 0 {
+            ["if ", "if("]
+                .iter()
+                .any(|p| code.starts_with(p))
+                .then(|| &code[2..])?
+        } else if line.indent == indent && (code.starts_with("elif ") || code.starts_with("elif("))
+        {
+            &code[4..]
+        } else if line.indent == indent && code.starts_with("else") {
+            &code[4..]
+        } else {
+            break;
+        };
+        let condition = condition.trim().strip_suffix(':')?.trim();
+        if branches.last().is_some_and(|(c, _)| c.is_none()) {
+            break;
+        }
+        let mut assigned = Vec::new();
+        k += 1;
+        while let Some(inner) = lines.get(k).filter(|l| l.indent > indent) {
+            let (name, value) = python_local(&inner.code)?;
+            let earlier: Vec<String> = assigned
+                .iter()
+                .map(|(n, _): &(String, String)| n.clone())
+                .collect();
+            let earlier_values: Vec<String> = assigned.iter().map(|(_, v)| v.clone()).collect();
+            let value = cpp::substitute(
+                &cpp::substitute(&value, &earlier, &earlier_values),
+                names,
+                values,
+            );
+            assigned.push((name, format!("({value})")));
+            k += 1;
+        }
+        if assigned.is_empty() {
+            return None;
+        }
+        let condition = (!condition.is_empty())
+            .then(|| format!("({})", cpp::substitute(condition, names, values)));
+        branches.push((condition, assigned));
+    }
+    let mut all: Vec<String> = branches
+        .iter()
+        .flat_map(|(_, a)| a.iter().map(|(n, _)| n.clone()))
+        .collect();
+    all.sort();
+    all.dedup();
+    let result = all
+        .into_iter()
+        .map(|name| {
+            let before = names
+                .iter()
+                .position(|n| *n == name)
+                .map_or_else(|| name.clone(), |k| values[k].clone());
+            let mut value = before.clone();
+            for (condition, assigned) in branches.iter().rev() {
+                let own = assigned
+                    .iter()
+                    .rev()
+                    .find(|(n, _)| *n == name)
+                    .map_or_else(|| before.clone(), |(_, v)| v.clone());
+                value = match condition {
+                    Some(c) => format!("({c}?{own}:{value})"),
+                    None => own,
+                };
+            }
+            (name, value)
+        })
+        .collect();
+    Some((k, result))
+}
+
+/// A Python local assignment `name = value` or `name += value` (and `-=`, `*=`, `/=`; not `==`):
+/// the name and the value (`name + (value)` for `+=`).
+fn python_local(code: &str) -> Option<(String, String)> {
     let (name, value) = code.split_once('=')?;
-    let name = name.trim();
     let value = value.trim();
-    (is_identifier(name)
-        && !value.is_empty()
-        && !value.starts_with('=')
-        && !["global", "produce", "nproduce", "return"].contains(&name))
-    .then_some((name, value))
+    let (name, op) = match name.trim_end().strip_suffix(['+', '-', '*', '/']) {
+        Some(n) => (n.trim(), name.trim_end().chars().last()),
+        None => (name.trim(), None),
+    };
+    if !is_identifier(name)
+        || value.is_empty()
+        || value.starts_with('=')
+        || ["global", "produce", "nproduce", "return"].contains(&name)
+    {
+        return None;
+    }
+    Some(match op {
+        Some(op) => (name.to_string(), format!("{name} {op} ({value})")),
+        None => (name.to_string(), value.to_string()),
+    })
+}
+
+/// The globals of an L-Py file (assigned at the top level or named by `global`) that nothing
+/// reads: every use is a `global` statement, an assignment to it, or inside a text label `@L(…)`,
+/// which is dropped.
+fn write_only_globals(all: &[Line]) -> Vec<String> {
+    let mut candidates: Vec<String> = Vec::new();
+    for line in all {
+        if let Some(rest) = line.code.strip_prefix("global ") {
+            candidates.extend(rest.split(',').map(|g| g.trim().to_string()));
+        }
+    }
+    candidates.retain(|g| is_identifier(g));
+    candidates.sort();
+    candidates.dedup();
+    candidates.retain(|g| {
+        all.iter().all(|line| {
+            let code = line.code.as_str();
+            if code.starts_with("global ") || global_write(code, std::slice::from_ref(g)).is_some()
+            {
+                return true;
+            }
+            !has_word(&without_labels(code), g)
+        })
+    });
+    candidates
+}
+
+/// Whether `word` stands alone (not part of a longer name) anywhere in `text`.
+fn has_word(text: &str, word: &str) -> bool {
+    let b = text.as_bytes();
+    text.match_indices(word).any(|(i, _)| {
+        let end = i + word.len();
+        (i == 0 || !(b[i - 1].is_ascii_alphanumeric() || b[i - 1] == b'_'))
+            && (end >= b.len() || !(b[end].is_ascii_alphanumeric() || b[end] == b'_'))
+    })
+}
+
+/// `code` without its text labels `@L(…)`.
+fn without_labels(code: &str) -> String {
+    let mut out = code.to_string();
+    while let Some(at) = out.find("@L(") {
+        let chars: Vec<char> = out.chars().collect();
+        let open = out[..at + 2].chars().count();
+        let Some(close) = matching(&chars, open) else {
+            break;
+        };
+        let end: usize = chars[..=close].iter().map(|c| c.len_utf8()).sum();
+        out.replace_range(at..end, "");
+    }
+    out
+}
+
+/// The global of `globals` that `code` is about, when it is `global g` naming only such globals
+/// or an assignment to one (`g = …`, `g += …`).
+fn global_write(code: &str, globals: &[String]) -> Option<String> {
+    if let Some(rest) = code.strip_prefix("global ") {
+        let names: Vec<&str> = rest.split(',').map(str::trim).collect();
+        return names
+            .iter()
+            .all(|g| globals.iter().any(|w| w == g))
+            .then(|| names.join(", "));
+    }
+    let (name, _) = python_local(code)?;
+    globals.contains(&name).then_some(name)
 }
 
 /// `text` (a successor) with each name replaced by its value inside parentheses (the modules'
@@ -2223,6 +2685,78 @@ mod tests {
     }
 
     #[test]
+    fn cpfg_if_blocks_become_conditional_values_and_printf_is_noted() {
+        let import = import(
+            "#define REL 1\nderivation length: 2\nAxiom: A(1,4)\nE : 1 {srand(1);} --> *\nA(x,w) : x<3\n\t{t = 2*x;\n\tif (REL) {t = t/2; w = 0;} else t = t+1;\n\tif (w<t) {w = t;}\n\tprintf(\"%f\", t);\n\tt - 1;\n\t} --> F(t)A(x+1,w)\nendlsystem\n",
+            Flavour::Cpfg,
+        );
+        resolves(&import);
+        assert!(
+            import.text.contains(
+                "A(x,w) : x<3 -> F(((REL)?((2*x)/2):((2*x)+1)))A(x+1,((((REL)?(0):w)<((REL)?((2*x)/2):((2*x)+1)))?(((REL)?((2*x)/2):((2*x)+1))):((REL)?(0):w)))"
+            ),
+            "{}",
+            import.text
+        );
+        let said: Vec<(usize, &str)> = import
+            .notes
+            .iter()
+            .map(|n| (n.line, n.message.as_str()))
+            .collect();
+        assert!(
+            said.iter()
+                .any(|(l, m)| *l == 4 && m.contains("'srand(1)' restarts")),
+            "{said:?}"
+        );
+        assert!(
+            said.iter()
+                .any(|(l, m)| *l == 5 && m.starts_with("cpfg's printf")),
+            "{said:?}"
+        );
+        assert!(
+            said.iter()
+                .any(|(l, m)| *l == 5 && m.contains("'t - 1' assigns nothing")),
+            "{said:?}"
+        );
+        let b = crate::pipeline::build(&import.text, &crate::pipeline::BuildOptions::default());
+        assert!(b.ok(), "{:?}", b.diagnostics);
+        // A(1,4) → F(1)A(2,0) → F(1)F(2)A(3,0): two segments.
+        assert_eq!(b.plant.stats.segments, 2);
+        // A loop is not translated: the production is skipped with a note.
+        let looped = super::import(
+            "Axiom: A(1)\nA(x) : {while (x < 3) {x = x + 1;}} --> F(x)\n",
+            Flavour::Cpfg,
+        );
+        assert!(
+            looped
+                .notes
+                .iter()
+                .any(|n| n.line == 2 && n.message.contains("is a loop")),
+            "{:?}",
+            looped.notes
+        );
+    }
+
+    #[test]
+    fn cpfg_arrays_of_two_dimensions_and_predecessors_of_several_letters() {
+        let import = import(
+            "#define N 3\nLsystem: 1\nDefine: { array len[2][N] = {1, 2, 3, 4, 5, 6}; }\nderivation length: 1\nAxiom: AXIOM\nAXIOM : 1 --> F(len[0][2])F(len[1][0])F(len[1][ 2 ])F(len[5][5])\nendlsystem\n",
+            Flavour::Cpfg,
+        );
+        resolves(&import);
+        assert!(import.text.contains("#module AXIOM_"), "{}", import.text);
+        assert!(import.text.contains("axiom: AXIOM_"), "{}", import.text);
+        assert_eq!(import.notes.len(), 1, "{:?}", import.notes);
+        assert!(import.notes[0]
+            .message
+            .contains("becomes one module AXIOM_"));
+        let b = crate::pipeline::build(&import.text, &crate::pipeline::BuildOptions::default());
+        assert!(b.ok(), "{:?}", b.diagnostics);
+        // len[0][2] = 3, len[1][0] = 4, len[1][2] = 6, and past the end the last value, 6.
+        assert_eq!(b.derived_text(), "F(3)F(4)F(6)F(6)", "{}", import.text);
+    }
+
+    #[test]
     fn lpy_python_becomes_defines_and_conditional_productions() {
         let import = import(
             "import math\nR = 1.456\nh = (0.3*0.7) ** 0.5\n__authors__ = 'C. Godin'\n\nAxiom: _(0.01) ,(2) A(1)\nderivation length: 3\nproduction:\nA(s) --> F(s)[+(85)A(s/R)][-(85)A(s/R)]\nB(t) :\n    if t < 2 and not t == 1: produce B(t+1)\n    elif t == 2:\n        produce C(t if t > 1 else 0)\n    else: produce *\nF(x) : produce F(x/3.)+(60)F(x/3.)\ninterpretation:\nC(t) --> F(sin(t))\nendlsystem\ndef End():\n    print('x')\n",
@@ -2261,7 +2795,7 @@ mod tests {
     #[test]
     fn what_cannot_be_translated_is_reported_at_its_line() {
         let import = import(
-            "#include \"x.h\"\n#define f(x) x\nAxiom: A(1)\nA(t) : {if (t>1) t=2;} t>0 --> B\nA(t) --> @c(1)~k(2)F(frob(1,t))\nendlsystem\nLsystem: 2\n",
+            "#include \"x.h\"\n#define f(x) x\nAxiom: A(1)\nA(t) : {while (t>1) t=t-1;} t>0 --> B\nA(t) --> @c(1)~k(2)F(frob(1,t))\nendlsystem\nLsystem: 2\n",
             Flavour::Cpfg,
         );
         resolves(&import);

@@ -56,8 +56,9 @@ pub(super) struct Globals {
     derived: Vec<(String, String)>,
     /// Every variable assigned in a block.
     pub names: Vec<String>,
-    /// Arrays: name and their values (translated when their block is).
-    pub arrays: Vec<(String, Vec<String>)>,
+    /// Arrays: name, the sizes of their dimensions after the first, and their values (translated
+    /// when their block is).
+    pub arrays: Vec<(String, Vec<String>, Vec<String>)>,
 }
 
 /// `Start: {…}` → the block kind and the statements inside the braces.
@@ -353,7 +354,8 @@ impl Importer {
         Ok(())
     }
 
-    /// `array name[k] = {a, b, …}` (after `array`).
+    /// `array name[k] = {a, b, …}` (after `array`); with more dimensions, `array name[k][m] =
+    /// {…}` lists the values row after row, as C does.
     fn array(&mut self, rest: &str) -> Result<(), String> {
         let rest = rest.trim();
         let name: String = rest
@@ -361,14 +363,21 @@ impl Importer {
             .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
             .collect();
         let after = &rest[name.len()..];
-        if after.matches('[').count() != 1 {
-            return Err(format!(
-                "cpfg's array {name} has more than one dimension; Meristem has no arrays, so expressions that read it are not translated"
-            ));
-        }
         let open = after
             .find('{')
             .ok_or(format!("array {name} has no values"))?;
+        let mut sizes = Vec::new();
+        let mut dims = after[..open].trim();
+        while let Some(inner) = dims.strip_prefix('[') {
+            let close = inner
+                .find(']')
+                .ok_or(format!("array {name}: a '[' is never closed"))?;
+            sizes.push(self.expression(&inner[..close], &Env::new())?);
+            dims = inner[close + 1..].trim_start();
+        }
+        if sizes.is_empty() {
+            return Err(format!("array {name} has no size"));
+        }
         let close = after.rfind('}').unwrap_or(after.len());
         let mut values = Vec::new();
         for v in super::split_top(&after[open + 1..close.max(open + 1)], ',') {
@@ -379,19 +388,49 @@ impl Importer {
         if values.is_empty() {
             return Err(format!("array {name} has no values"));
         }
-        self.globals.arrays.push((name, values));
+        // The sizes of the dimensions after the first: what one step of each index skips.
+        sizes.remove(0);
+        self.globals.arrays.push((name, sizes, values));
         Ok(())
     }
 
-    /// `name[index]` read from an array: the value at the index (truncated, as C does; the last
-    /// value past the end).
-    pub(super) fn array_value(&self, name: &str, index: &str) -> Option<String> {
-        let (_, values) = self.globals.arrays.iter().find(|(a, _)| a == name)?;
-        let mut text = values.last()?.clone();
-        for (k, v) in values.iter().enumerate().rev().skip(1) {
-            text = format!("(({index})<{}?{v}:{text})", number(k as f64 + 1.0));
+    /// How many indices the array `name` takes, if it is an array.
+    pub(super) fn array_dimensions(&self, name: &str) -> Option<usize> {
+        let (_, sizes, _) = self.globals.arrays.iter().find(|(a, _, _)| a == name)?;
+        Some(sizes.len() + 1)
+    }
+
+    /// `name[i][j]…` read from an array: the value at the index (truncated, as C does; the last
+    /// value past the end, the first before it). The indices of an array of several dimensions
+    /// give one index into its values, row after row, as C lays them out. The value is chosen by
+    /// halving the range of indices, so that the choice nests as deep as the logarithm of the
+    /// number of values.
+    pub(super) fn array_value(&self, name: &str, indices: &[String]) -> Option<String> {
+        let (_, sizes, values) = self.globals.arrays.iter().find(|(a, _, _)| a == name)?;
+        if indices.len() != sizes.len() + 1 || values.is_empty() {
+            return None;
         }
-        Some(format!("({text})"))
+        let mut index = String::new();
+        for (k, i) in indices.iter().enumerate() {
+            if k + 1 < indices.len() {
+                index = format!("({index}floor({i}))*({})+", sizes[k]);
+            } else {
+                index.push_str(&format!("({i})"));
+            }
+        }
+        fn pick(values: &[String], lo: usize, hi: usize, index: &str) -> String {
+            if hi - lo == 1 {
+                return values[lo].clone();
+            }
+            let mid = (lo + hi) / 2;
+            format!(
+                "(({index})<{}?{}:{})",
+                number(mid as f64),
+                pick(values, lo, mid, index),
+                pick(values, mid, hi, index)
+            )
+        }
+        Some(format!("({})", pick(values, 0, values.len(), &index)))
     }
 }
 
