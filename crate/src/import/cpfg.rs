@@ -159,6 +159,9 @@ pub(super) fn import_with(
         declared: Vec::new(),
         words: Vec::new(),
         write_only: Vec::new(),
+        lpfg: false,
+        produced: None,
+        path: Vec::new(),
         unknown_names: Vec::new(),
         noted: Vec::new(),
         axiom: false,
@@ -219,6 +222,13 @@ struct Importer {
     /// L-Py globals that nothing reads but text labels (`@L`, dropped): their `global`
     /// statements and the assignments to them in production bodies can be dropped.
     write_only: Vec<String>,
+    /// Whether the `.l` is an L+C (lpfg) file: `module` declarations, `produce` in C blocks.
+    lpfg: bool,
+    /// While an lpfg production's block is read: the successors it produces, each with the
+    /// condition of the path to its `produce`.
+    produced: Option<Vec<(Option<String>, String)>>,
+    /// The conditions of the `if`s the statement being read is in (lpfg).
+    path: Vec<String>,
     /// Long names that are neither declared nor L-Py's (written as modules, reported once).
     unknown_names: Vec<String>,
     noted: Vec<String>,
@@ -589,7 +599,11 @@ impl Importer {
             for (n, message) in pre.notes {
                 self.note(n, message);
             }
-            all = join_two_line_productions(join_blocks(all, self.flavour));
+            all = join_blocks(all, self.flavour);
+            if is_lpfg(&all) {
+                all = self.lpfg_lines(all);
+            }
+            all = join_two_line_productions(all);
             self.globals = globals::Globals::scan(&all);
             self.words(&all);
         }
@@ -743,6 +757,12 @@ impl Importer {
         if self.keyword_statement(line, ended) {
             return i;
         }
+        if self.lpfg {
+            if let Some((pattern, body)) = lpfg_production_parts(code) {
+                self.lpfg_production(pattern, body, line.n);
+                return i;
+            }
+        }
         if arrow(code).is_some() {
             return self.production_lines(line, all, i);
         }
@@ -835,6 +855,21 @@ impl Importer {
 
     /// `Axiom: modules` (the text after the colon is `rest`).
     fn axiom(&mut self, rest: &str, n: usize) {
+        let lpfg;
+        let rest = if self.lpfg {
+            match self.lpfg_symbols(rest, n) {
+                Ok(text) => {
+                    lpfg = text;
+                    lpfg.as_str()
+                }
+                Err(why) => {
+                    self.note(n, format!("the axiom: {why}"));
+                    return;
+                }
+            }
+        } else {
+            rest
+        };
         match self.modules(rest, &Env::new(), n) {
             Ok(m) => {
                 self.axiom = true;
@@ -1249,18 +1284,19 @@ impl Importer {
     /// a statement that assigns nothing (no effect in cpfg either: dropped with a note). A loop,
     /// or anything else, is an error (the production is skipped).
     fn block(&mut self, block: &str, env: &mut Env, n: usize) -> Result<(), String> {
-        self.statements(block, env, n, 0)
+        self.statements(block, env, n, 0).map(|_| ())
     }
 
     /// The statements of `text` (see [`Importer::block`]); `depth` bounds the nesting of braces
     /// and `if`s, so that no input exhausts the stack.
+    /// Returns whether every path through them ends at lpfg's `produce`.
     fn statements(
         &mut self,
         text: &str,
         env: &mut Env,
         n: usize,
         depth: usize,
-    ) -> Result<(), String> {
+    ) -> Result<bool, String> {
         if depth > 16 {
             return Err("statement blocks nest more than 16 deep".into());
         }
@@ -1270,17 +1306,43 @@ impl Importer {
             rest = after.trim_start();
             let statement = match statement {
                 Statement::Group(inner) => {
-                    self.statements(inner, env, n, depth + 1)?;
+                    if self.statements(inner, env, n, depth + 1)? {
+                        return Ok(true);
+                    }
                     continue;
                 }
                 Statement::If(condition, then, otherwise) => {
-                    self.if_statement(condition, then, otherwise, env, n, depth)?;
+                    if self.if_statement(condition, then, otherwise, env, n, depth)? {
+                        return Ok(true);
+                    }
                     continue;
                 }
                 Statement::Simple(s) => s.trim(),
             };
             if statement.is_empty() {
                 continue;
+            }
+            if let Some(successor) = statement.strip_prefix("produce") {
+                if self.produced.is_some()
+                    && !successor.starts_with(|c: char| c.is_ascii_alphanumeric() || c == '_')
+                {
+                    let successor = self.lpfg_modules(successor, env, n)?;
+                    let condition = match self.path.len() {
+                        0 => None,
+                        1 => Some(self.path[0].clone()),
+                        _ => Some(
+                            self.path
+                                .iter()
+                                .map(|c| format!("({c})"))
+                                .collect::<Vec<_>>()
+                                .join(" && "),
+                        ),
+                    };
+                    if let Some(produced) = &mut self.produced {
+                        produced.push((condition, successor));
+                    }
+                    return Ok(true);
+                }
             }
             let word: String = statement
                 .chars()
@@ -1294,7 +1356,173 @@ impl Importer {
             }
             self.simple_statement(statement, env, n)?;
         }
-        Ok(())
+        Ok(false)
+    }
+
+    /// The lines of an L+C (lpfg) file in cpfg's terms: `module` declarations are read (a name
+    /// of several letters is declared) and dropped, the `;` that ends lpfg's `Axiom:` and
+    /// `derivation length:` lines is dropped, and a production's head `A(t):` joins the `{…}`
+    /// block on the lines after it.
+    fn lpfg_lines(&mut self, all: Vec<Line>) -> Vec<Line> {
+        self.lpfg = true;
+        let mut out: Vec<Line> = Vec::new();
+        for mut line in all {
+            if let Some(rest) = line.code.strip_prefix("module ") {
+                for item in rest.trim_end_matches(';').split(';') {
+                    let name = item.split('(').next().unwrap_or("").trim();
+                    if is_identifier(name)
+                        && name.len() > 1
+                        && !self.declared.iter().any(|d| d == name)
+                    {
+                        self.declared.push(name.to_string());
+                        self.words.push((name.to_string(), name.to_string()));
+                    }
+                }
+                continue;
+            }
+            if !line.code.contains('{') {
+                if let Some(code) = line.code.strip_suffix(';') {
+                    line.code = code.trim_end().to_string();
+                }
+            }
+            if line.code.starts_with('{') {
+                if let Some(head) = out.last_mut().filter(|h| h.code.ends_with(':')) {
+                    head.code = format!("{} {}", head.code, line.code);
+                    continue;
+                }
+            }
+            out.push(line);
+        }
+        self.words.sort_by(|a, b| b.0.len().cmp(&a.0.len()));
+        out
+    }
+
+    /// An lpfg production `pattern: { statements }`: the block is read as cpfg's statement
+    /// blocks are, and each `produce` on its way gives a production whose condition is the path
+    /// to it (lpfg leaves a module that produces nothing as it is, as Meristem does when no
+    /// production applies).
+    fn lpfg_production(&mut self, pattern: &str, body: &str, n: usize) {
+        self.produced = Some(Vec::new());
+        self.path.clear();
+        let mut env = Env::new();
+        let result = self.statements(body, &mut env, n, 0);
+        let produced = self.produced.take().unwrap_or_default();
+        self.path.clear();
+        if let Err(why) = result {
+            self.note(n, format!("{why}; the production is skipped"));
+            return;
+        }
+        let pattern = match self.pattern(pattern, n) {
+            Ok(p) => p,
+            Err(why) => {
+                self.note(n, format!("{why}; the production is skipped"));
+                return;
+            }
+        };
+        for (condition, successor) in produced {
+            let mut text = pattern.clone();
+            if let Some(c) = condition {
+                text.push_str(&format!(" : {c}"));
+            }
+            text.push_str(" -> ");
+            text.push_str(if successor.is_empty() {
+                "ε"
+            } else {
+                &successor
+            });
+            self.out.line(text, n);
+        }
+    }
+
+    /// An lpfg module string (what `produce` and `Axiom:` write) in Meristem's notation: lpfg's
+    /// long names (`SB()`, `Left(a)`, `SetWidth(w)`, …) become the symbols they stand for.
+    fn lpfg_modules(&mut self, text: &str, env: &Env, n: usize) -> Result<String, String> {
+        let cpfg = self.lpfg_symbols(text, n)?;
+        self.modules(&cpfg, env, n).map(|m| separate(&m))
+    }
+
+    /// lpfg's long names in `text` replaced by cpfg's symbols; a long name Meristem has no
+    /// command for is dropped with a note.
+    fn lpfg_symbols(&mut self, text: &str, n: usize) -> Result<String, String> {
+        let chars: Vec<char> = text.chars().collect();
+        let mut out = String::new();
+        let mut i = 0;
+        while i < chars.len() {
+            let c = chars[i];
+            if !(c.is_ascii_alphabetic() || c == '_') {
+                out.push(c);
+                i += 1;
+                continue;
+            }
+            let start = i;
+            while i < chars.len() && (chars[i].is_ascii_alphanumeric() || chars[i] == '_') {
+                i += 1;
+            }
+            let word: String = chars[start..i].iter().collect();
+            let mut j = i;
+            while chars.get(j) == Some(&' ') {
+                j += 1;
+            }
+            let (args, after) = if chars.get(j) == Some(&'(') {
+                let close = matching(&chars, j).ok_or("a '(' is never closed")?;
+                (
+                    Some(chars[j + 1..close].iter().collect::<String>()),
+                    close + 1,
+                )
+            } else {
+                (None, i)
+            };
+            i = after;
+            if word.len() == 1 || self.words.iter().any(|(w, _)| *w == word) {
+                out.push_str(&word);
+                if let Some(a) = &args {
+                    out.push_str(&format!("({a})"));
+                }
+                continue;
+            }
+            let a = args.unwrap_or_default();
+            let parts: Vec<&str> = split_top(&a, ',');
+            let symbol = match word.as_str() {
+                "SB" => "[".to_string(),
+                "EB" => "]".to_string(),
+                "Left" => format!("+({a})"),
+                "Right" => format!("-({a})"),
+                "Up" => format!("^({a})"),
+                "Down" => format!("&({a})"),
+                "RollL" => format!("\\({a})"),
+                "RollR" => format!("/({a})"),
+                "TurnAround" => "|".to_string(),
+                "SetWidth" => format!("#({a})"),
+                "SetColor" => format!(";({a})"),
+                "Sphere" => format!("@O({a})"),
+                "Surface3" if parts.len() == 4 => {
+                    self.note_once(
+                        "Surface3",
+                        n,
+                        "lpfg's Surface3(id, x, y, z) draws the view file's surface id (a .s file Meristem does not read) scaled by x, y and z; Meristem draws its own leaf ~l(y), y long, as wide as its own shape makes it: the scale x and the surface's shape are not kept",
+                    );
+                    format!("~l({})", parts[2].trim())
+                }
+                "Surface" if parts.len() == 2 => {
+                    self.note_once(
+                        "Surface",
+                        n,
+                        "lpfg's Surface(id, s) draws the view file's surface id (a .s file Meristem does not read) scaled by s; Meristem draws its own leaf ~l(s) instead",
+                    );
+                    format!("~l({})", parts[1].trim())
+                }
+                _ => {
+                    self.note_once(
+                        &format!("lpfg {word}"),
+                        n,
+                        format!("lpfg's {word} is not a Meristem command; dropped"),
+                    );
+                    String::new()
+                }
+            };
+            out.push_str(&symbol);
+        }
+        Ok(out)
     }
 
     /// `if (condition) then else otherwise`: each variable a branch assigns is bound to
@@ -1308,15 +1536,36 @@ impl Importer {
         env: &mut Env,
         n: usize,
         depth: usize,
-    ) -> Result<(), String> {
+    ) -> Result<bool, String> {
         let c = self
             .expression(condition, env)
             .map_err(|why| format!("the condition of 'if ({})': {why}", one_line(condition)))?;
+        let depth_before = self.path.len();
         let mut yes = env.clone();
-        self.statements(then, &mut yes, n, depth + 1)?;
+        self.path.push(c.clone());
+        let yes_ends = self.statements(then, &mut yes, n, depth + 1)?;
+        self.path.truncate(depth_before);
         let mut no = env.clone();
-        if let Some(otherwise) = otherwise {
-            self.statements(otherwise, &mut no, n, depth + 1)?;
+        self.path.push(format!("!({c})"));
+        let no_ends = match otherwise {
+            Some(otherwise) => self.statements(otherwise, &mut no, n, depth + 1)?,
+            None => false,
+        };
+        self.path.truncate(depth_before);
+        // lpfg: a branch that produced ends the production; what follows runs on the other.
+        match (yes_ends, no_ends) {
+            (true, true) => return Ok(true),
+            (true, false) => {
+                self.path.push(format!("!({c})"));
+                *env = no;
+                return Ok(false);
+            }
+            (false, true) => {
+                self.path.push(c);
+                *env = yes;
+                return Ok(false);
+            }
+            (false, false) => {}
         }
         let mut names: Vec<String> = yes.keys().chain(no.keys()).cloned().collect();
         names.sort();
@@ -1334,12 +1583,18 @@ impl Importer {
                 env.insert(name, format!("(({c})?{a}:{b})"));
             }
         }
-        Ok(())
+        Ok(false)
     }
 
     /// One statement without braces: an assignment, `x++`, `printf(…)`, `srand(…)` or an
     /// expression that assigns nothing.
     fn simple_statement(&mut self, statement: &str, env: &mut Env, n: usize) -> Result<(), String> {
+        // A C declaration with its value (`float length = …`, lpfg): an assignment.
+        let statement = ["const ", "float ", "double ", "int "]
+            .iter()
+            .fold(statement, |s, t| {
+                s.strip_prefix(t).map_or(s, str::trim_start)
+            });
         let compact: String = statement.chars().filter(|c| !c.is_whitespace()).collect();
         if compact.ends_with("++") || compact.ends_with("--") {
             self.note(n, format!("the statement '{statement}' changes a variable cpfg keeps from module to module; Meristem has no variables: dropped"));
@@ -2010,6 +2265,26 @@ fn symbol_name(chars: &[char], start: usize) -> (String, usize) {
         i += 1;
     }
     (chars[start..i].iter().collect(), i)
+}
+
+/// Whether the lines are an L+C (lpfg) file: `module X(…);` declarations or `produce` in a block.
+fn is_lpfg(all: &[Line]) -> bool {
+    all.iter().any(|l| {
+        (l.code.starts_with("module ") && l.code.ends_with(';'))
+            || (l.code.contains('{') && l.code.contains("produce "))
+    })
+}
+
+/// An lpfg production `pattern: { … }` (or `pattern : { … }`): its pattern and the text inside
+/// the braces.
+fn lpfg_production_parts(code: &str) -> Option<(&str, &str)> {
+    let open = code.find('{')?;
+    let head = code[..open].trim_end().strip_suffix(':')?.trim();
+    let close = closing(code, open)?;
+    if head.is_empty() || !code[close + 1..].trim().is_empty() {
+        return None;
+    }
+    Some((head, &code[open + 1..close]))
 }
 
 /// A statement of a cpfg block, as [`next_statement`] reads it.
@@ -2754,6 +3029,38 @@ mod tests {
         assert!(b.ok(), "{:?}", b.diagnostics);
         // len[0][2] = 3, len[1][0] = 4, len[1][2] = 6, and past the end the last value, 6.
         assert_eq!(b.derived_text(), "F(3)F(4)F(6)F(6)", "{}", import.text);
+    }
+
+    #[test]
+    fn lpfg_blocks_produce_conditional_productions() {
+        let import = import(
+            "#include <lpfgall.h>\n#define PL 0.5\nderivation length: 3;\nmodule A(float);\nmodule Apex(float);\nAxiom: Right(5) SetWidth(0.15) A(1.2) Apex(0);\nproduction:\nApex(t):{ produce Apex(t+1); }\ndecomposition:\nA(t):\n{\n\tt = t - PL;\n\tif(t>0)\n\t\tproduce F(t) SB() Left(30) F(1) EB() A(t);\n\tfloat w = 2*t;\n\tproduce Sphere(w) Frobnicate(1);\n}\n",
+            Flavour::Cpfg,
+        );
+        resolves(&import);
+        let body = body(&import);
+        assert!(body.contains(&"#module Apex"), "{body:?}");
+        assert!(
+            body.contains(&"axiom: -(5)!(0.15)A(1.2)Apex(0)"),
+            "{body:?}"
+        );
+        assert!(body.contains(&"Apex(t) -> Apex(t+1)"), "{body:?}");
+        assert!(
+            body.contains(&"A(t) : (t - PL)>0 -> F((t - PL))[+(30)F(1)]A((t - PL))"),
+            "{body:?}"
+        );
+        assert!(
+            body.contains(&"A(t) : !((t - PL)>0) -> @O((2*(t - PL)))"),
+            "{body:?}"
+        );
+        assert_eq!(import.notes.len(), 1, "{:?}", import.notes);
+        assert!(import.notes[0]
+            .message
+            .contains("Frobnicate is not a Meristem command"));
+        let b = crate::pipeline::build(&import.text, &crate::pipeline::BuildOptions::default());
+        assert!(b.ok(), "{:?}", b.diagnostics);
+        // A(1.2) → F(0.7)[+F]A(0.7) → F(0.7)[+F]F(0.2)[+F]A(0.2) → … @O(-0.6): four segments.
+        assert_eq!(b.plant.stats.segments, 4, "{}", b.derived_text());
     }
 
     #[test]

@@ -99,13 +99,16 @@ struct Command {
     view: Option<String>,
     colormap: Option<String>,
     materials: Option<String>,
+    /// Function sets (`.fset`) lpfg is started with.
+    function_sets: Vec<String>,
 }
 
 fn command(specifications: &str) -> Option<Command> {
     let line = specifications.lines().find(|l| {
         let mut words = l.split_whitespace();
-        words.next() == Some("cpfg")
+        matches!(words.next(), Some("cpfg" | "lpfg"))
     })?;
+    let lpfg = line.split_whitespace().next() == Some("lpfg");
     let words: Vec<&str> = line.split_whitespace().skip(1).collect();
     let mut c = Command::default();
     let mut i = 0;
@@ -125,6 +128,10 @@ fn command(specifications: &str) -> Option<Command> {
             "-e" | "-m2" | "-m3" | "-M2" | "-M3" | "-a" | "-s" | "-str" | "-o" | "-g" => i += 1,
             w if w.ends_with(".l") => c.lsystem = Some(w.to_string()),
             w if w.ends_with(".v") => c.view = Some(w.to_string()),
+            // lpfg names its files without options.
+            w if lpfg && w.ends_with(".mat") => c.materials = Some(w.to_string()),
+            w if lpfg && w.ends_with(".map") => c.colormap = Some(w.to_string()),
+            w if lpfg && w.ends_with(".fset") => c.function_sets.push(w.to_string()),
             _ => {}
         }
         i += 1;
@@ -227,6 +234,14 @@ pub fn import_object(files: &[ObjectFile]) -> Import {
             "the object has no view file (.v): the angle increment, widths and colours are not known, so Meristem's defaults are used (90°, width 1, its palette)".into(),
         ),
     }
+    for file in &spec.function_sets {
+        match all.text(file) {
+            Some(t) => function_set(&t, file, &mut view),
+            None => view.notes.push(format!(
+                "the function set {file} was not opened with the object: its functions are not translated"
+            )),
+        }
+    }
     colours(&all, &spec, &stem, &mut view);
     let include = |name: &str| all.text(name);
     cpfg::import_with(&text, Flavour::Cpfg, Some(&view), &include)
@@ -281,6 +296,13 @@ fn read_view(text: &str, all: &Files, view: &mut View) {
             "surface" => {
                 let mut words = value.split_whitespace();
                 let (name, file) = (words.next().unwrap_or(""), words.next().unwrap_or(""));
+                if file.is_empty() {
+                    // lpfg's form: the file alone, its surfaces numbered in order.
+                    view.notes.push(format!(
+                        "the view file's surface file {name} is not read by Meristem: what draws its surfaces draws Meristem's own leaf"
+                    ));
+                    continue;
+                }
                 view.notes.push(format!(
                     "the view file's surface {name} is read from {file}, which Meristem does not read: ~{name} draws Meristem's own {}",
                     if name == "p" { "petal" } else { "leaf" }
@@ -301,6 +323,11 @@ fn read_view(text: &str, all: &Files, view: &mut View) {
                 }
                 view.functions.push(function);
             }
+            // lpfg's tropism: `stropism: x y z, e`.
+            "stropism" => view.notes.push(format!(
+                "the view file's {key} line ({}) is not translated: the plant does not bend by it",
+                value.trim()
+            )),
             "function set" => {
                 let file = value.trim().to_string();
                 match all.text(&file) {
