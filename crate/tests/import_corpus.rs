@@ -29,8 +29,8 @@ type Failure = (&'static str, Entry);
 /// The share of the corpus that must build its plant (issue 21: 95 %).
 const GOAL: f64 = 0.95;
 
-/// The share reached so far (76 of 82 files): it may only rise, towards [`GOAL`].
-const FLOOR: f64 = 0.92;
+/// The share reached so far (77 of 82 files): it may only rise, towards [`GOAL`].
+const FLOOR: f64 = 0.93;
 
 const CORPUS: &[Entry] = &[
     (
@@ -485,11 +485,11 @@ const CORPUS: &[Entry] = &[
         &[
             (
                 0,
-                "cpfg draws its random numbers with another generator than Meristem's",
+                "cpfg draws its random numbers with another generator than Meristem's: th",
             ),
             (
                 41,
-                "Meristem rejects the translation `L(age);(c,b)!(r,a,d,f) : age == 0 -> ;",
+                "cpfg's predecessor L(age);(c,b)!(r,a,d,f) is 3 modules; Meristem's prede",
             ),
         ],
     ),
@@ -500,7 +500,7 @@ const CORPUS: &[Entry] = &[
         &[
             (
                 37,
-                "Meristem rejects the translation `F(n)A > ?P(x,y,z) : ((y<0)||(y>SIZE*2)",
+                "cpfg's predecessor F(n) A is 2 modules; Meristem's predecessor is one mo",
             ),
             (
                 53,
@@ -726,7 +726,7 @@ const CORPUS: &[Entry] = &[
             ),
             (
                 64,
-                "Meristem rejects the translation `XI(b,m,v,c,s,w) -> I(b,2,0,0,s,0)D%`: ",
+                "cpfg's predecessor XI(b,m,v,c,s,w) is 2 modules; Meristem's predecessor ",
             ),
             (
                 98,
@@ -804,6 +804,121 @@ const CORPUS: &[Entry] = &[
             ),
         ],
     ),
+    (
+        "vlab/12-two-trees",
+        61,
+        2,
+        &[
+            (
+                0,
+                "the materials of tree.mat become their diffuse colours: their ambient, e",
+            ),
+            (
+                49,
+                "cpfg's printf prints to the console; it is not translated (the plant is ",
+            ),
+            (
+                49,
+                "cpfg's StartEach: statement 'if(d==0){DEL=DEL+1;d=DEL+1;printf(\"Year %.0",
+            ),
+            (
+                53,
+                "cpfg's EndEach: statement 'if(d==1){stop(1);}' is not translated: Merist",
+            ),
+            (
+                55,
+                "cpfg's ?E(…) asks the environment program (a light or space model run be",
+            ),
+            (
+                56,
+                "cpfg's f before a control point of a generalized cylinder moves along th",
+            ),
+            (
+                62,
+                "Meristem rejects the translation `L(f,age,del,vig) : (n >= WHENMOVE)&&(a",
+            ),
+            (
+                93,
+                "Meristem rejects the translation `-(a) > [!(w1,n1,f1)L : (n < WHENMOVE)&",
+            ),
+            (
+                100,
+                "Meristem rejects the translation `-(a) > !(w1,n1,f1)L : (n < WHENMOVE)&&",
+            ),
+            (
+                125,
+                "Meristem rejects the translation `!(w0,n0,f0) > L(fl,age,del,vig)[!(w1,n",
+            ),
+            (
+                128,
+                "a production for cpfg's '#' becomes one for Meristem's '!', which also s",
+            ),
+            (
+                133,
+                "a production for cpfg's ',' becomes one for Meristem's ';', which also s",
+            ),
+            (
+                153,
+                "the statement 'srand(SEED)' restarts cpfg's random generator when the pr",
+            ),
+            (
+                153,
+                "cpfg's @Tx is not a Meristem command; kept as a module the turtle ignore",
+            ),
+            (
+                160,
+                "cpfg's @G is not a Meristem command; kept as a module the turtle ignores",
+            ),
+            (
+                166,
+                "cpfg's @Gc marks a control point of a generalized cylinder; Meristem's s",
+            ),
+            (
+                171,
+                "cpfg's predecessor F(vig,n)#(w) is 2 modules; Meristem's predecessor is ",
+            ),
+            (
+                171,
+                "a production for cpfg's '#' becomes one for Meristem's '!', which also s",
+            ),
+            (
+                172,
+                "cpfg's predecessor F(vig,n)#(w) is 2 modules; Meristem's predecessor is ",
+            ),
+            (
+                172,
+                "a production for cpfg's '#' becomes one for Meristem's '!', which also s",
+            ),
+            (
+                176,
+                "cpfg's predecessor F(vig,n)#(w) is 2 modules; Meristem's predecessor is ",
+            ),
+            (
+                176,
+                "a production for cpfg's '#' becomes one for Meristem's '!', which also s",
+            ),
+            (
+                270,
+                "cpfg's @Tf is not a Meristem command; kept as a module the turtle ignore",
+            ),
+            (
+                270,
+                "~m names a surface from a file; Meristem draws only ~l and ~p, so it is ",
+            ),
+            (
+                270,
+                "Meristem rejects the translation `L(del,vig) : (n > WHENMOVE+NUMSTEPS+1)",
+            ),
+            (
+                277,
+                "Meristem rejects the translation `L(del,vig) : (n > WHENMOVE+NUMSTEPS+1)",
+            ),
+            (
+                284,
+                "Meristem rejects the translation `L(del,vig) : n > WHENMOVE+NUMSTEPS+1 -",
+            ),
+        ],
+    ),
 ];
 
 /// The files that do not yet build the plant their source implies, each with the reason.
@@ -871,72 +986,23 @@ const FAILURES: &[Failure] = &[
 
 
 (
-"the axiom uses f(l,t) with two parameters and multi-module predecessors (1 < aF > *); the axiom is rejected, so nothing is derived",
+"the insect's productions need a right context that skips the rest of a branch and goes on after it (* < 4 > F=]g), which Meristem's patterns cannot say, a global counter (c=c+SINC) and an ignore list that names '[', which Meristem never ignores; the plant it builds is not the one cpfg draws",
 (
         "vlab/22-insect-realistic",
-        0,
-        0,
+        30,
+        66,
         &[
-            (0, "nothing to derive: no axiom could be imported"),
             (19, "cpfg's StartEach: statement 's=0' changes the variable s during the deri"),
             (19, "cpfg's printf prints to the console; it is not translated (the plant is "),
             (20, "cpfg's EndEach: statement 's=1' changes the variable s during the deriva"),
             (24, "cpfg's _ is not a Meristem command; kept as a module the turtle ignores"),
-            (26, "Meristem rejects the translation `axiom: ;(1)[!(1);(48)+(90)f(GL)[-(180)"),
-            (27, "'[-(90)f(1)-(90)f(0.5,0)/(70)h]]SM' is not part of the notation Meristem"),
-            (29, "Meristem rejects the translation `f(l,t)/(n)h : l >=GL-0.5 -> ε`: the pr"),
+            (29, "cpfg's predecessor f(l,t)/(n)h is 3 modules; Meristem's predecessor is o"),
             (42, "cpfg's predecessor aF is 2 modules (a F); Meristem's predecessor is one "),
             (43, "the statement 'c=c+SINC' changes cpfg's global variable c during the der"),
             (47, "cpfg's predecessor bF is 2 modules (b F); Meristem's predecessor is one "),
             (49, "Meristem rejects the translation `* < 4 > F]g -> 5`: ']' has no matching"),
-            (73, "Meristem rejects the translation `A(n,m)B : n == 0 && m == 0 -> I(PL,INR"),
+            (73, "cpfg's predecessor A(n,m)B is 2 modules; Meristem's predecessor is one m"),
             (89, "~b names a surface from a file; Meristem draws only ~l and ~p, so it is "),
-        ],
-    )),
-(
-"the trees grow from environmental queries (?E) of a light model and productions over several modules with statement blocks; most productions are rejected",
-(
-        "vlab/12-two-trees",
-        4,
-        0,
-        &[
-            (0, "the materials of tree.mat become their diffuse colours: their ambient, e"),
-            (0, "cpfg draws its random numbers with another generator than Meristem's: th"),
-            (49, "cpfg's printf prints to the console; it is not translated (the plant is "),
-            (49, "cpfg's StartEach: statement 'if(d==0){DEL=DEL+1;d=DEL+1;printf(\"Year %.0"),
-            (53, "cpfg's EndEach: statement 'if(d==1){stop(1);}' is not translated: Merist"),
-            (57, "'[[,(6)@M(-6,0,-15)&(90)+(180){f(30)+(90)f(6)+(90)f(30)+(90)f(6)}] @M(-2"),
-            (58, "'[[,(6)@M(6,0,-15)^(90){f(30)+(90)f(6)+(90)f(30)+(90)f(6)}] @M(2,0,0)!(W"),
-            (62, "Meristem rejects the translation `L(f,age,del,vig) : (n >= WHENMOVE)&&(a"),
-            (63, "Meristem rejects the translation `L(f,age,del,vig) : (n >= WHENMOVE) -> "),
-            (73, "Meristem rejects the translation `L(f,age,del,vig) : (age>0)&&(del>1) ->"),
-            (74, "Meristem rejects the translation `L(f,age,del,vig) : (age>0)&&(del==1) -"),
-            (77, "Meristem rejects the translation `?E(r) < A(dir,del,vig,n) : (r*LP-LM)>P"),
-            (86, "Meristem rejects the translation `?E(r) < A(dir,del,vig,n) : (r*LP-LM)>P"),
-            (93, "Meristem rejects the translation `-(a) > [!(w1,n1,f1)L : (n < WHENMOVE)&"),
-            (100, "Meristem rejects the translation `-(a) > !(w1,n1,f1)L : (n < WHENMOVE)&&"),
-            (107, "Meristem rejects the translation `L(f,age,del,vig) : age ==0 -> L(0,0,0,"),
-            (108, "Meristem rejects the translation `L(f,age,del,vig) > ?E(r) : (r*LP<LM) -"),
-            (111, "Meristem rejects the translation `L(f,age,del,vig) > ?E(r) : age>0 -> L("),
-            (115, "Meristem rejects the translation `!(w0,n0,f0) > L(fl,age,del,vig)[!(w1,n"),
-            (120, "Meristem rejects the translation `!(w0,n0,f0) > L(fl,age,del,vig)[!(w1,n"),
-            (125, "Meristem rejects the translation `!(w0,n0,f0) > L(fl,age,del,vig)[!(w1,n"),
-            (128, "a production for cpfg's '#' becomes one for Meristem's '!', which also s"),
-            (128, "Meristem rejects the translation `* < !(w0) > L(fl,age,del,vig)[!(w1,n1,"),
-            (133, "a production for cpfg's ',' becomes one for Meristem's ';', which also s"),
-            (153, "the statement 'srand(SEED)' restarts cpfg's random generator when the pr"),
-            (153, "cpfg's @Tx is not a Meristem command; kept as a module the turtle ignore"),
-            (160, "cpfg's @G is not a Meristem command; kept as a module the turtle ignores"),
-            (166, "cpfg's @Gsf is not a Meristem command; kept as a module the turtle ignor"),
-            (166, "cpfg's @Gc marks a control point of a generalized cylinder; Meristem's s"),
-            (166, "Meristem rejects the translation `F(vig,n) : (n==0)&&(GEN_CYL_LEVEL > 0)"),
-            (167, "cpfg's f before a control point of a generalized cylinder moves along th"),
-            (167, "Meristem rejects the translation `F(vig,n) : n < GEN_CYL_LEVEL-1 -> F(vi"),
-            (171, "Meristem rejects the translation `F(vig,n)!(w) : n==GEN_CYL_LEVEL-1 -> F"),
-            (172, "Meristem rejects the translation `F(vig,n)!(w) -> F(vig)!(w)@O`: the pre"),
-            (176, "Meristem rejects the translation `F(vig,n)!(w) : n==GEN_CYL_LEVEL-1 -> F"),
-            (270, "cpfg's @Tf is not a Meristem command; kept as a module the turtle ignore"),
-            (270, "~m names a surface from a file; Meristem draws only ~l and ~p, so it is "),
         ],
     )),
 
@@ -1020,7 +1086,7 @@ fn the_share_of_the_whole_corpus_that_builds_its_plant_does_not_fall() {
 }
 
 #[test]
-#[ignore = "issue 21's goal is not reached yet: 76 of 82 files (92.7 %); FAILURES says why each other fails"]
+#[ignore = "issue 21's goal is not reached yet: 77 of 82 files (93.9 %); FAILURES says why each other fails"]
 fn at_least_95_percent_of_the_whole_corpus_builds_its_plant() {
     assert!(
         share() >= GOAL,

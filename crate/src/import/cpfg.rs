@@ -472,6 +472,33 @@ fn join_production_heads(mut lines: Vec<Line>) -> Vec<Line> {
     lines
 }
 
+/// cpfg's axiom continued on the lines after `Axiom:` that are indented more than it (and are
+/// no production): one line.
+fn join_axiom_lines(mut lines: Vec<Line>) -> Vec<Line> {
+    let mut i = 0;
+    while i < lines.len() {
+        let compact: String = lines[i]
+            .code
+            .chars()
+            .filter(|c| !c.is_whitespace())
+            .collect::<String>()
+            .to_ascii_lowercase();
+        if compact.starts_with("axiom:") && arrow(&lines[i].code).is_none() {
+            while i + 1 < lines.len()
+                && !lines[i + 1].code.is_empty()
+                && lines[i + 1].indent > lines[i].indent
+                && arrow(&lines[i + 1].code).is_none()
+                && !starts_with_keyword(&lines[i + 1].code)
+            {
+                let next = lines.remove(i + 1);
+                lines[i].code = format!("{} {}", lines[i].code, next.code);
+            }
+        }
+        i += 1;
+    }
+    lines
+}
+
 /// cpfg productions written over two lines: `pred : cond` then `--> succ` on the next line, or
 /// `pred -->` then the successor (at any indentation) on the next.
 fn join_two_line_productions(lines: Vec<Line>) -> Vec<Line> {
@@ -603,7 +630,7 @@ impl Importer {
             if is_lpfg(&all) {
                 all = self.lpfg_lines(all);
             }
-            all = join_two_line_productions(all);
+            all = join_axiom_lines(join_two_line_productions(all));
             self.globals = globals::Globals::scan(&all);
             self.words(&all);
         }
@@ -1112,10 +1139,146 @@ impl Importer {
         let Some((start, end)) = arrow(code) else {
             return;
         };
-        match self.production_text(code[..start].trim(), code[end..].trim(), n) {
+        let (left, right) = (code[..start].trim(), code[end..].trim());
+        if let Some(parts) = self.several_modules(left, right, n) {
+            let mut texts = Vec::new();
+            for (left, right) in parts {
+                match self.production_text(&left, &right, n) {
+                    Ok(text) => texts.push(text),
+                    Err(why) => {
+                        self.note(n, format!("{why}; the production is skipped"));
+                        return;
+                    }
+                }
+            }
+            for text in texts {
+                self.out.line(text, n);
+            }
+            return;
+        }
+        match self.production_text(left, right, n) {
             Ok(text) => self.out.line(text, n),
             Err(why) => self.note(n, format!("{why}; the production is skipped")),
         }
+    }
+
+    /// cpfg's predecessor of several modules (`F(v,n)#(w) --> F(v)#(w)@O`): Meristem's
+    /// predecessor is one module, so it becomes one production per module, each with the others
+    /// as context: the first gives the successor, the others erase their module (`F(v,n) >
+    /// #(w) -> F(v)#(w)@O` and `F(v,n) < #(w) -> ε`), with a note. `None` when the predecessor
+    /// is one module, or when the production draws a random number (its probability or a random
+    /// condition would be drawn apart for each module).
+    fn several_modules(
+        &mut self,
+        left: &str,
+        right: &str,
+        n: usize,
+    ) -> Option<Vec<(String, String)>> {
+        if self.flavour != Flavour::Cpfg {
+            return None;
+        }
+        let (pattern, guard) = match top_level(left, ":") {
+            Some(i) => (left[..i].trim(), Some(left[i + 1..].trim())),
+            None => (left, None),
+        };
+        // The new contexts `<<`, `>>` are read with the pattern (see `new_contexts`).
+        if pattern.contains("<<") || pattern.contains(">>") {
+            return None;
+        }
+        let (before, rest) = match top_level(pattern, "<") {
+            Some(i) => (pattern[..i].trim(), &pattern[i + 1..]),
+            None => ("", pattern),
+        };
+        let (strict, after) = match top_level(rest, ">") {
+            Some(i) => (rest[..i].trim(), rest[i + 1..].trim()),
+            None => (rest.trim(), ""),
+        };
+        let modules = self.source_modules(strict)?;
+        if modules.len() < 2
+            || top_level(right, ":").is_some()
+            || ["ran(", "nran("].iter().any(|r| left.contains(r))
+        {
+            return None;
+        }
+        let before = if before == "*" { "" } else { before };
+        let after = if after == "*" { "" } else { after };
+        self.note(
+            n,
+            format!(
+                "cpfg's predecessor {strict} is {} modules; Meristem's predecessor is one module, so it becomes a production for {} with the others as its context and one for each other module that erases it there: the same unless two matches overlap or modules cpfg ignores stand between them",
+                modules.len(),
+                modules[0]
+            ),
+        );
+        let parts = (0..modules.len())
+            .map(|i| {
+                let lc = format!("{before}{}", modules[..i].concat());
+                let rc = format!("{}{after}", modules[i + 1..].concat());
+                let mut head = String::new();
+                if !lc.trim().is_empty() {
+                    head.push_str(&format!("{lc} < "));
+                }
+                head.push_str(&modules[i]);
+                if !rc.trim().is_empty() {
+                    head.push_str(&format!(" > {rc}"));
+                }
+                if let Some(g) = guard {
+                    head.push_str(&format!(" : {g}"));
+                }
+                let successor = if i == 0 {
+                    right.to_string()
+                } else {
+                    "*".to_string()
+                };
+                (head, successor)
+            })
+            .collect();
+        Some(parts)
+    }
+
+    /// The modules of a cpfg module string as written (`F(v,n)#(w)` → `F(v,n)`, `#(w)`); `None`
+    /// when it holds a bracket or a parenthesis that is never closed.
+    fn source_modules(&self, text: &str) -> Option<Vec<String>> {
+        let chars: Vec<char> = text.chars().collect();
+        let mut out = Vec::new();
+        let mut i = 0;
+        while i < chars.len() {
+            let c = chars[i];
+            if c.is_whitespace() {
+                i += 1;
+                continue;
+            }
+            if "[]{}<>".contains(c) {
+                return None;
+            }
+            let start = i;
+            i = if c == '@' || c == '~' || c == '?' {
+                cpfg_symbol(&chars, i).1
+            } else if let Some((word, _)) = self
+                .words
+                .iter()
+                .find(|(w, _)| chars[i..].iter().take(w.len()).copied().eq(w.chars()))
+            {
+                i + word.chars().count()
+            } else {
+                i + 1
+            };
+            let mut j = i;
+            while chars.get(j) == Some(&' ') {
+                j += 1;
+            }
+            if chars.get(j) == Some(&'(') {
+                i = matching(&chars, j)? + 1;
+            }
+            out.push(
+                chars[start..i]
+                    .iter()
+                    .collect::<String>()
+                    .trim()
+                    .to_string(),
+            );
+        }
+        Some(out)
     }
 
     /// The Meristem production of `left --> right`, or why it has none.
@@ -1985,19 +2148,22 @@ impl Importer {
                 i += 1;
                 continue;
             }
-            let (name, after) = if c == '@' || c == '~' || c == '?' {
-                symbol_name(&chars, i)
-            } else if c.is_ascii_alphabetic() && self.flavour == Flavour::Lpy {
-                self.lpy_name(&chars, i, n)
-            } else if let Some((word, name)) = self
-                .words
-                .iter()
-                .find(|(w, _)| chars[i..].iter().take(w.len()).copied().eq(w.chars()))
-            {
-                (name.clone(), i + word.len())
-            } else {
-                (c.to_string(), i + 1)
-            };
+            let (name, after) =
+                if (c == '@' || c == '~' || c == '?') && self.flavour == Flavour::Cpfg {
+                    cpfg_symbol(&chars, i)
+                } else if c == '@' || c == '~' || c == '?' {
+                    symbol_name(&chars, i)
+                } else if c.is_ascii_alphabetic() && self.flavour == Flavour::Lpy {
+                    self.lpy_name(&chars, i, n)
+                } else if let Some((word, name)) = self
+                    .words
+                    .iter()
+                    .find(|(w, _)| chars[i..].iter().take(w.len()).copied().eq(w.chars()))
+                {
+                    (name.clone(), i + word.len())
+                } else {
+                    (c.to_string(), i + 1)
+                };
             let name = if name == "f" && cylinder_end.is_some_and(|end| i < end) {
                 self.note_once(
                     "f@G",
@@ -2155,6 +2321,13 @@ impl Importer {
                 format!("{tool}'s {name} is not a Meristem command; kept as a module the turtle ignores"),
             );
         }
+        if name == "?E" && self.flavour == Flavour::Cpfg {
+            self.note_once(
+                name,
+                n,
+                "cpfg's ?E(…) asks the environment program (a light or space model run beside cpfg) for values; Meristem runs no environment program, so ?E is kept as a module whose parameters stay as the L-system writes them, and productions that read it see those values",
+            );
+        }
         if name == "_" && self.flavour == Flavour::Cpfg {
             self.note_once(
                 name,
@@ -2285,6 +2458,19 @@ fn lpfg_production_parts(code: &str) -> Option<(&str, &str)> {
         return None;
     }
     Some((head, &code[open + 1..close]))
+}
+
+/// cpfg's `@`, `~` or `?` name at `chars[start]`, as [`symbol_name`] reads it, except that
+/// cpfg's names of the generalized cylinder and texture (`@Gs`, `@Ge`, `@Gc`, `@Gt`, `@Gr`,
+/// `@Tx`, `@Tf`) end after their two letters (`@GsF` is `@Gs` then `F`).
+fn cpfg_symbol(chars: &[char], start: usize) -> (String, usize) {
+    let (name, end) = symbol_name(chars, start);
+    for short in ["@Gs", "@Ge", "@Gc", "@Gt", "@Gr", "@Tx", "@Tf"] {
+        if name.len() > short.len() && name.starts_with(short) {
+            return (short.to_string(), start + short.len());
+        }
+    }
+    (name, end)
 }
 
 /// A statement of a cpfg block, as [`next_statement`] reads it.
@@ -3029,6 +3215,36 @@ mod tests {
         assert!(b.ok(), "{:?}", b.diagnostics);
         // len[0][2] = 3, len[1][0] = 4, len[1][2] = 6, and past the end the last value, 6.
         assert_eq!(b.derived_text(), "F(3)F(4)F(6)F(6)", "{}", import.text);
+    }
+
+    #[test]
+    fn cpfg_predecessors_of_several_modules_become_contexts_and_axioms_continue() {
+        let import = import(
+            "derivation length: 1\nAxiom: [F(2,0)#(1)]\n\t[F(3,1)#(2)]\nF(v,n)#(w) : n == 0 --> F(v)#(w)@O\n",
+            Flavour::Cpfg,
+        );
+        resolves(&import);
+        let body = body(&import);
+        assert!(
+            body.contains(&"axiom: [F(2,0)!(1)][F(3,1)!(2)]"),
+            "{body:?}"
+        );
+        assert!(
+            body.contains(&"F(v,n) > !(w) : n == 0 -> F(v)!(w)@O"),
+            "{body:?}"
+        );
+        assert!(body.contains(&"F(v,n) < !(w) : n == 0 -> ε"), "{body:?}");
+        assert!(
+            import
+                .notes
+                .iter()
+                .any(|n| n.line == 4 && n.message.contains("is 2 modules")),
+            "{:?}",
+            import.notes
+        );
+        let b = crate::pipeline::build(&import.text, &crate::pipeline::BuildOptions::default());
+        assert!(b.ok(), "{:?}", b.diagnostics);
+        assert_eq!(b.derived_text(), "[F(2)!(1)@O][F(3,1)!(2)]");
     }
 
     #[test]
