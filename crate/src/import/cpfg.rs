@@ -160,6 +160,7 @@ pub(super) fn import_with(
         words: Vec::new(),
         write_only: Vec::new(),
         lpfg: false,
+        default_depth: Vec::new(),
         produced: None,
         path: Vec::new(),
         unknown_names: Vec::new(),
@@ -222,6 +223,9 @@ struct Importer {
     /// L-Py globals that nothing reads but text labels (`@L`, dropped): their `global`
     /// statements and the assignments to them in production bodies can be dropped.
     write_only: Vec<String>,
+    /// The lines of cpfg's `homomorphism` and `decomposition` sections that do not set their
+    /// `maximum depth:` (cpfg's default is 1).
+    default_depth: Vec<usize>,
     /// Whether the `.l` is an L+C (lpfg) file: `module` declarations, `produce` in C blocks.
     lpfg: bool,
     /// While an lpfg production's block is read: the successors it produces, each with the
@@ -472,6 +476,31 @@ fn join_production_heads(mut lines: Vec<Line>) -> Vec<Line> {
     lines
 }
 
+/// The lines that open a cpfg `homomorphism` or `decomposition` section with no `maximum
+/// depth:` line before the next section.
+fn sections_without_depth(all: &[Line]) -> Vec<usize> {
+    let mut out = Vec::new();
+    let mut open: Option<usize> = None;
+    for line in all {
+        let lower = line.code.to_ascii_lowercase();
+        if let Some(s) = section(&lower) {
+            out.extend(open.take());
+            let word = lower.split(':').next().unwrap_or("").trim().to_string();
+            if s == KeywordKind::Homomorphism.written() && word == "homomorphism"
+                || s == KeywordKind::Decomposition.written()
+            {
+                open = Some(line.n);
+            }
+        } else if keyword(&lower, &line.code, "maximum depth:").is_some() {
+            open = None;
+        } else if lower.trim() == KeywordKind::EndLSystem.written() {
+            out.extend(open.take());
+        }
+    }
+    out.extend(open);
+    out
+}
+
 /// cpfg's axiom continued on the lines after `Axiom:` that are indented more than it (and are
 /// no production): one line.
 fn join_axiom_lines(mut lines: Vec<Line>) -> Vec<Line> {
@@ -631,6 +660,9 @@ impl Importer {
                 all = self.lpfg_lines(all);
             }
             all = join_axiom_lines(join_two_line_productions(all));
+            if !self.lpfg {
+                self.default_depth = sections_without_depth(&all);
+            }
             self.globals = globals::Globals::scan(&all);
             self.words(&all);
         }
@@ -860,7 +892,13 @@ impl Importer {
             return true;
         }
         if let Some(section) = section(&lower) {
-            self.out.line(section, line.n);
+            self.out.line(section.clone(), line.n);
+            // cpfg rewrites its homomorphism and decomposition to depth 1 unless the section
+            // says `maximum depth:` (its parser's default); Meristem's default is deeper.
+            if self.default_depth.contains(&line.n) {
+                self.out
+                    .line(format!("{} 1", KeywordKind::MaximumDepth.written()), line.n);
+            }
             return true;
         }
         let end = KeywordKind::EndLSystem.written();
@@ -3131,6 +3169,8 @@ mod tests {
                 "decomposition:",
                 "maximum depth: 2",
                 "homomorphism:",
+                // cpfg's default depth, which the section does not change.
+                "maximum depth: 1",
                 "I(x) -> F(x)",
                 "endlsystem",
             ]
@@ -3245,6 +3285,35 @@ mod tests {
         let b = crate::pipeline::build(&import.text, &crate::pipeline::BuildOptions::default());
         assert!(b.ok(), "{:?}", b.diagnostics);
         assert_eq!(b.derived_text(), "[F(2)!(1)@O][F(3,1)!(2)]");
+    }
+
+    #[test]
+    fn cpfg_sections_without_a_depth_get_cpfgs_default_depth_one() {
+        let import = import(
+            "derivation length: 0\nAxiom: h\nhomomorphism\nh --> [F]f\nf --> [F]f\nendlsystem\n",
+            Flavour::Cpfg,
+        );
+        resolves(&import);
+        assert_eq!(
+            body(&import),
+            [
+                "derivation length: 0",
+                "axiom: h",
+                "homomorphism:",
+                "maximum depth: 1",
+                "h -> [F]f",
+                "f -> [F]f",
+                "endlsystem"
+            ]
+        );
+        let b = crate::pipeline::build(&import.text, &crate::pipeline::BuildOptions::default());
+        // h is drawn once: its f is not rewritten again, as in cpfg.
+        assert_eq!(b.plant.stats.segments, 1);
+        let deeper = super::import(
+            "Axiom: h\nhomomorphism\nmaximum depth: 3\nh --> [F]f\nendlsystem\n",
+            Flavour::Cpfg,
+        );
+        assert!(!deeper.text.contains("maximum depth: 1"), "{}", deeper.text);
     }
 
     #[test]
