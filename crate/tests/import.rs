@@ -791,8 +791,16 @@ proptest! {
             "recursion 3\nangle 20\naxiom A\nrule A = ",
             "#define N 3\nLsystem: 1\nderivation length: 2\nAxiom: A(1)\n",
             "k = 2\nAxiom: A(1)\nproduction:\nA(t) :\n    if ",
+            // cpfg statement blocks with if/else and loops, arrays of two dimensions, a
+            // predecessor of several modules, L+C's produce blocks, L-Py globals and
+            // assignments in if branches (issue 21).
+            "Lsystem: 1\nderivation length: 1\nAxiom: A(1)\nA(t) : {if (t>1) {t = t/2;} else ",
+            "Define: { array a[2][2] = {1,2,3,4}; }\nAxiom: A(1)\nA(t) --> F(a[1][",
+            "Axiom: F(1,0)#(1)\n\tAXIOM\nAXIOM : 1 --> B\nF(v,n)#(w) : ",
+            "#include <lpfgall.h>\nmodule A(float);\nAxiom: A(1);\nA(t):{ ",
+            "g = 0\nAxiom: A(1)\nproduction:\nA(t) :\n    global g\n    g += 1\n    if t > 1:\n        x = ",
         ]),
-        body in "[-+&^<>|%$~!?:;'\"cFfgZzt\\[\\]{}.()0-9ABCabpx=@#*/, \n]{0,80}",
+        body in "[-+&^<>|%$~!?:;'\"cFfgZzt\\[\\]{}.()0-9ABCabpxiewhlrodu=@#*/, \n]{0,80}",
     ) {
         let text = format!("{prefix}{body}");
         for dialect in Dialect::ALL {

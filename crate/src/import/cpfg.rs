@@ -1781,7 +1781,11 @@ impl Importer {
             };
             let (a, b) = (pick(&yes), pick(&no));
             if a != b {
-                env.insert(name, format!("(({c})?{a}:{b})"));
+                let value = format!("(({c})?{a}:{b})");
+                if value.len() > MAX_VALUE {
+                    return Err(too_long());
+                }
+                env.insert(name, value);
             }
         }
         Ok(false)
@@ -1839,6 +1843,9 @@ impl Importer {
                 format!("{old}{}({value})", &op[..1])
             }
         };
+        if value.len() > MAX_VALUE {
+            return Err(too_long());
+        }
         env.insert(target.to_string(), format!("({value})"));
         Ok(())
     }
@@ -2511,6 +2518,14 @@ fn cpfg_symbol(chars: &[char], start: usize) -> (String, usize) {
     (name, end)
 }
 
+/// The longest value a statement block may give a variable: each use of a variable copies its
+/// value, so `x = x*x;` repeated would double it each time.
+const MAX_VALUE: usize = 20_000;
+
+fn too_long() -> String {
+    format!("the statement block's values grow longer than {MAX_VALUE} characters")
+}
+
 /// A statement of a cpfg block, as [`next_statement`] reads it.
 #[derive(Debug, PartialEq)]
 enum Statement<'a> {
@@ -2675,6 +2690,10 @@ fn python_locals(lines: &mut Vec<&Line>) -> (Vec<String>, Vec<String>) {
     let mut values: Vec<String> = Vec::new();
     while let Some(line) = lines.first() {
         if let Some((taken, assigned)) = python_if_assignments(lines, &names, &values) {
+            // Each use copies a value: a value that grows too long is not taken (see MAX_VALUE).
+            if assigned.iter().any(|(_, v)| v.len() > MAX_VALUE) {
+                break;
+            }
             for (name, value) in assigned {
                 bind(&mut names, &mut values, name, value);
             }
@@ -2695,7 +2714,7 @@ fn python_locals(lines: &mut Vec<&Line>) -> (Vec<String>, Vec<String>) {
         let random = ["random", "uniform", "gauss", "randint", "normal"]
             .iter()
             .any(|r| value.contains(r));
-        if random && uses.count() > 1 {
+        if random && uses.count() > 1 || value.len() > MAX_VALUE {
             // Put in each place it is used, a random draw would be drawn again each time.
             break;
         }
