@@ -723,7 +723,7 @@ impl Importer {
             self.declared.push(name.clone());
             self.words.push((strict.to_string(), name));
         }
-        self.words.sort_by(|a, b| b.0.len().cmp(&a.0.len()));
+        self.words.sort_by_key(|w| std::cmp::Reverse(w.0.len()));
     }
 
     fn run(&mut self, text: &str, include: &dyn Fn(&str) -> Option<String>) {
@@ -1594,7 +1594,7 @@ impl Importer {
             }
             out.push(line);
         }
-        self.words.sort_by(|a, b| b.0.len().cmp(&a.0.len()));
+        self.words.sort_by_key(|w| std::cmp::Reverse(w.0.len()));
         out
     }
 
@@ -2747,7 +2747,9 @@ fn python_if_assignments(
 ) -> Option<(usize, Vec<(String, String)>)> {
     let head = lines.first()?;
     let indent = head.indent;
-    let mut branches: Vec<(Option<String>, Vec<(String, String)>)> = Vec::new();
+    // Each branch: its condition (`None` for else) and what it assigns.
+    type Branch = (Option<String>, Vec<(String, String)>);
+    let mut branches: Vec<Branch> = Vec::new();
     let mut k = 0;
     while let Some(line) = lines.get(k) {
         let code = line.code.as_str();
@@ -2756,10 +2758,12 @@ fn python_if_assignments(
                 .iter()
                 .any(|p| code.starts_with(p))
                 .then(|| &code[2..])?
-        } else if line.indent == indent && (code.starts_with("elif ") || code.starts_with("elif("))
+        } else if line.indent == indent
+            && ["elif ", "elif(", "else"]
+                .iter()
+                .any(|p| code.starts_with(p))
         {
-            &code[4..]
-        } else if line.indent == indent && code.starts_with("else") {
+            // `elif c:` and `else:` alike: four letters, then the condition (none for else).
             &code[4..]
         } else {
             break;
