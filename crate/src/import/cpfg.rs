@@ -491,6 +491,7 @@ fn sections_without_depth(all: &[Line]) -> Vec<usize> {
             {
                 open = Some(line.n);
             }
+        // dialect: cpfg's keyword
         } else if keyword(&lower, &line.code, "maximum depth:").is_some() {
             open = None;
         } else if lower.trim() == KeywordKind::EndLSystem.written() {
@@ -512,6 +513,7 @@ fn join_axiom_lines(mut lines: Vec<Line>) -> Vec<Line> {
             .filter(|c| !c.is_whitespace())
             .collect::<String>()
             .to_ascii_lowercase();
+        // dialect: cpfg's keyword
         if compact.starts_with("axiom:") && arrow(&lines[i].code).is_none() {
             while i + 1 < lines.len()
                 && !lines[i + 1].code.is_empty()
@@ -870,7 +872,7 @@ impl Importer {
             return true;
         }
         // dialect: cpfg's keyword
-        // (`AXIOM : c --> …` is a production for a module named AXIOM.)
+        // dialect: cpfg's keyword (`AXIOM : c --> …` is a production for a module AXIOM)
         if let Some(rest) = keyword(&lower, code, "axiom:").filter(|_| arrow(code).is_none()) {
             self.axiom(rest, line.n);
             return true;
@@ -1681,49 +1683,54 @@ impl Importer {
                 }
                 continue;
             }
-            let a = args.unwrap_or_default();
-            let parts: Vec<&str> = split_top(&a, ',');
-            let symbol = match word.as_str() {
-                "SB" => "[".to_string(),
-                "EB" => "]".to_string(),
-                "Left" => format!("+({a})"),
-                "Right" => format!("-({a})"),
-                "Up" => format!("^({a})"),
-                "Down" => format!("&({a})"),
-                "RollL" => format!("\\({a})"),
-                "RollR" => format!("/({a})"),
-                "TurnAround" => "|".to_string(),
-                "SetWidth" => format!("#({a})"),
-                "SetColor" => format!(";({a})"),
-                "Sphere" => format!("@O({a})"),
-                "Surface3" if parts.len() == 4 => {
-                    self.note_once(
-                        "Surface3",
-                        n,
-                        "lpfg's Surface3(id, x, y, z) draws the view file's surface id (a .s file Meristem does not read) scaled by x, y and z; Meristem draws its own leaf ~l(y), y long, as wide as its own shape makes it: the scale x and the surface's shape are not kept",
-                    );
-                    format!("~l({})", parts[2].trim())
-                }
-                "Surface" if parts.len() == 2 => {
-                    self.note_once(
-                        "Surface",
-                        n,
-                        "lpfg's Surface(id, s) draws the view file's surface id (a .s file Meristem does not read) scaled by s; Meristem draws its own leaf ~l(s) instead",
-                    );
-                    format!("~l({})", parts[1].trim())
-                }
-                _ => {
-                    self.note_once(
-                        &format!("lpfg {word}"),
-                        n,
-                        format!("lpfg's {word} is not a Meristem command; dropped"),
-                    );
-                    String::new()
-                }
-            };
+            let symbol = self.lpfg_symbol(&word, &args.unwrap_or_default(), n);
             out.push_str(&symbol);
         }
         Ok(out)
+    }
+
+    /// The cpfg symbols of one lpfg long name `word` with its arguments `a`; empty (with a
+    /// note) for a name Meristem has no command for.
+    fn lpfg_symbol(&mut self, word: &str, a: &str, n: usize) -> String {
+        let parts: Vec<&str> = split_top(a, ',');
+        match word {
+            "SB" => "[".to_string(),
+            "EB" => "]".to_string(),
+            "Left" => format!("+({a})"),
+            "Right" => format!("-({a})"),
+            "Up" => format!("^({a})"),
+            "Down" => format!("&({a})"),
+            "RollL" => format!("\\({a})"),
+            "RollR" => format!("/({a})"),
+            "TurnAround" => "|".to_string(),
+            "SetWidth" => format!("#({a})"),
+            "SetColor" => format!(";({a})"),
+            "Sphere" => format!("@O({a})"),
+            "Surface3" if parts.len() == 4 => {
+                self.note_once(
+                    "Surface3",
+                    n,
+                    "lpfg's Surface3(id, x, y, z) draws the view file's surface id (a .s file Meristem does not read) scaled by x, y and z; Meristem draws its own leaf ~l(y), y long, as wide as its own shape makes it: the scale x and the surface's shape are not kept",
+                );
+                format!("~l({})", parts[2].trim())
+            }
+            "Surface" if parts.len() == 2 => {
+                self.note_once(
+                    "Surface",
+                    n,
+                    "lpfg's Surface(id, s) draws the view file's surface id (a .s file Meristem does not read) scaled by s; Meristem draws its own leaf ~l(s) instead",
+                );
+                format!("~l({})", parts[1].trim())
+            }
+            _ => {
+                self.note_once(
+                    &format!("lpfg {word}"),
+                    n,
+                    format!("lpfg's {word} is not a Meristem command; dropped"),
+                );
+                String::new()
+            }
+        }
     }
 
     /// `if (condition) then else otherwise`: each variable a branch assigns is bound to
@@ -2031,28 +2038,7 @@ impl Importer {
             j += 1;
         }
         if chars.get(j) == Some(&'[') && self.flavour == Flavour::Cpfg {
-            // `name[i]`, `name[i][j]`…: as many indices as the array has dimensions.
-            let wanted = self.array_dimensions(&word).unwrap_or(1);
-            let mut indices = Vec::new();
-            let mut at = j;
-            while indices.len() < wanted && chars.get(at) == Some(&'[') {
-                let close = chars[at..]
-                    .iter()
-                    .position(|&c| c == ']')
-                    .map(|k| at + k)
-                    .ok_or("a '[' is never closed")?;
-                let inner: String = chars[at + 1..close].iter().collect();
-                indices.push(self.expression(&inner, env)?);
-                at = close + 1;
-                while chars.get(at) == Some(&' ') && indices.len() < wanted {
-                    at += 1;
-                }
-            }
-            let value = self.array_value(&word, &indices).ok_or_else(|| {
-                format!("'{word}[…]' reads an array that cpfg's Start: or Define: block does not give as one list of values")
-            })?;
-            out.push_str(&value);
-            return Ok(at);
+            return self.array_read(chars, j, &word, env, out);
         }
         if chars.get(j) == Some(&'(') {
             let close = matching(chars, j).ok_or("a '(' is never closed")?;
@@ -2088,6 +2074,39 @@ impl Importer {
         }
         out.push_str(&replacement);
         Ok(i)
+    }
+
+    /// cpfg's `name[i]`, `name[i][j]`… at `chars[j]` (the first `[`), with as many indices as
+    /// the array has dimensions, into `out`. Returns the index after it.
+    fn array_read(
+        &mut self,
+        chars: &[char],
+        j: usize,
+        word: &str,
+        env: &Env,
+        out: &mut String,
+    ) -> Result<usize, String> {
+        let wanted = self.array_dimensions(word).unwrap_or(1);
+        let mut indices = Vec::new();
+        let mut at = j;
+        while indices.len() < wanted && chars.get(at) == Some(&'[') {
+            let close = chars[at..]
+                .iter()
+                .position(|&c| c == ']')
+                .map(|k| at + k)
+                .ok_or("a '[' is never closed")?;
+            let inner: String = chars[at + 1..close].iter().collect();
+            indices.push(self.expression(&inner, env)?);
+            at = close + 1;
+            while chars.get(at) == Some(&' ') && indices.len() < wanted {
+                at += 1;
+            }
+        }
+        let value = self.array_value(word, &indices).ok_or_else(|| {
+            format!("'{word}[…]' reads an array that cpfg's Start: or Define: block does not give as one list of values")
+        })?;
+        out.push_str(&value);
+        Ok(at)
     }
 
     /// Translates the operator or punctuation at `chars[i]` into `out` (Python's `**` is `^`;
@@ -2247,9 +2266,28 @@ impl Importer {
                 }
                 i = close + 1;
             }
+            self.cpfg_module_notes(&name, n);
             out.push_str(&self.module(&name, params, has_params, n));
         }
         Ok(out)
+    }
+
+    /// The notes for cpfg's `?E` and `_`, which are kept as modules the turtle ignores.
+    fn cpfg_module_notes(&mut self, name: &str, n: usize) {
+        if name == "?E" && self.flavour == Flavour::Cpfg {
+            self.note_once(
+                name,
+                n,
+                "cpfg's ?E(…) asks the environment program (a light or space model run beside cpfg) for values; Meristem runs no environment program, so ?E is kept as a module whose parameters stay as the L-system writes them, and productions that read it see those values",
+            );
+        }
+        if name == "_" && self.flavour == Flavour::Cpfg {
+            self.note_once(
+                name,
+                n,
+                "cpfg's _ is not a Meristem command; kept as a module the turtle ignores",
+            );
+        }
     }
 
     /// The L-Py module name at `chars[start]`: the longest declared or predefined long name
@@ -2364,20 +2402,6 @@ impl Importer {
                 name,
                 n,
                 format!("{tool}'s {name} is not a Meristem command; kept as a module the turtle ignores"),
-            );
-        }
-        if name == "?E" && self.flavour == Flavour::Cpfg {
-            self.note_once(
-                name,
-                n,
-                "cpfg's ?E(…) asks the environment program (a light or space model run beside cpfg) for values; Meristem runs no environment program, so ?E is kept as a module whose parameters stay as the L-system writes them, and productions that read it see those values",
-            );
-        }
-        if name == "_" && self.flavour == Flavour::Cpfg {
-            self.note_once(
-                name,
-                n,
-                "cpfg's _ is not a Meristem command; kept as a module the turtle ignores",
             );
         }
         if name.starts_with('~') && module_named(name).is_none() {
@@ -2510,6 +2534,7 @@ fn lpfg_production_parts(code: &str) -> Option<(&str, &str)> {
 /// `@Tx`, `@Tf`) end after their two letters (`@GsF` is `@Gs` then `F`).
 fn cpfg_symbol(chars: &[char], start: usize) -> (String, usize) {
     let (name, end) = symbol_name(chars, start);
+    // dialect: cpfg's names
     for short in ["@Gs", "@Ge", "@Gc", "@Gt", "@Gr", "@Tx", "@Tf"] {
         if name.len() > short.len() && name.starts_with(short) {
             return (short.to_string(), start + short.len());
@@ -2736,6 +2761,9 @@ fn bind(names: &mut Vec<String>, values: &mut Vec<String>, name: String, value: 
     }
 }
 
+/// A branch of an L-Py `if`: its condition (`None` for else) and what it assigns.
+type Branch = (Option<String>, Vec<(String, String)>);
+
 /// An `if c:` at `lines[0]` followed by `elif c:`/`else:` at the same indentation, whose
 /// branches hold only local assignments: how many lines it takes, and each name it assigns with
 /// its conditional value (the value before the `if`, or the name itself, where a branch does not
@@ -2747,8 +2775,6 @@ fn python_if_assignments(
 ) -> Option<(usize, Vec<(String, String)>)> {
     let head = lines.first()?;
     let indent = head.indent;
-    // Each branch: its condition (`None` for else) and what it assigns.
-    type Branch = (Option<String>, Vec<(String, String)>);
     let mut branches: Vec<Branch> = Vec::new();
     let mut k = 0;
     while let Some(line) = lines.get(k) {
@@ -2796,14 +2822,23 @@ fn python_if_assignments(
             .then(|| format!("({})", cpp::substitute(condition, names, values)));
         branches.push((condition, assigned));
     }
+    Some((k, conditional_values(&branches, names, values)))
+}
+
+/// Each name the branches of an `if` assign, with its conditional value: `((c)?(own):(rest))`,
+/// a branch that does not assign it taking the value before the `if` (or the name itself).
+fn conditional_values(
+    branches: &[Branch],
+    names: &[String],
+    values: &[String],
+) -> Vec<(String, String)> {
     let mut all: Vec<String> = branches
         .iter()
         .flat_map(|(_, a)| a.iter().map(|(n, _)| n.clone()))
         .collect();
     all.sort();
     all.dedup();
-    let result = all
-        .into_iter()
+    all.into_iter()
         .map(|name| {
             let before = names
                 .iter()
@@ -2823,8 +2858,7 @@ fn python_if_assignments(
             }
             (name, value)
         })
-        .collect();
-    Some((k, result))
+        .collect()
 }
 
 /// A Python local assignment `name = value` or `name += value` (and `-=`, `*=`, `/=`; not `==`):
