@@ -198,10 +198,15 @@ impl Output {
 
     /// Records a note at source line `line`.
     pub fn note(&mut self, line: usize, message: impl Into<String>) {
-        self.notes.push(ImportNote {
+        let note = ImportNote {
             line,
             message: message.into(),
-        });
+        };
+        // One source line translated into several productions says each thing once (the notes
+        // of one line are written together: the last few are enough to look at).
+        if !self.notes.iter().rev().take(16).any(|n| *n == note) {
+            self.notes.push(note);
+        }
     }
 
     /// Checks the text with Meristem's parser and resolver; every line holding an error is

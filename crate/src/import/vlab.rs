@@ -234,7 +234,15 @@ pub fn import_object(files: &[ObjectFile]) -> Import {
             "the object has no view file (.v): the angle increment, widths and colours are not known, so Meristem's defaults are used (90°, width 1, its palette)".into(),
         ),
     }
+    // lpfg's function sets, unless the view file already read them (`function set:`).
+    let view_text = view_name
+        .as_ref()
+        .and_then(|v| all.text(v))
+        .unwrap_or_default();
     for file in &spec.function_sets {
+        if view_text.contains(file.as_str()) {
+            continue;
+        }
         match all.text(file) {
             Some(t) => function_set(&t, file, &mut view),
             None => view.notes.push(format!(
