@@ -29,8 +29,8 @@ type Failure = (&'static str, Entry);
 /// The share of the corpus that must build its plant (issue 21: 95 %).
 const GOAL: f64 = 0.95;
 
-/// The share reached so far (78 of 82 files, 95.1 %): it may only rise.
-const FLOOR: f64 = 0.95;
+/// The share reached so far (79 of 82 files, 96.3 %): it may only rise.
+const FLOOR: f64 = 0.96;
 
 const CORPUS: &[Entry] = &[
     (
@@ -970,15 +970,31 @@ const CORPUS: &[Entry] = &[
             ),
         ],
     ),
+    (
+        "lpy/11b-markov-nstems.lpy",
+        3125,
+        1651,
+        &[
+            (
+                0,
+                "L-Py draws its random numbers with another generator than Meristem's: th",
+            ),
+            (1, "Python imports are not translated"),
+            (13, "the Python function 'Start' is not translated"),
+            (
+                23,
+                "the Python code 'm = 1' sets the global m, which productions read; Meris",
+            ),
+            (
+                44,
+                "L-Py's @c is not a Meristem command; kept as a module the turtle ignores",
+            ),
+        ],
+    ),
 ];
 
 /// The files that do not yet build the plant their source implies, each with the reason.
 const FAILURES: &[Failure] = &[
-("the production that ends the stem sets the global m (global m; m = 1) that the lateral productions test; Meristem has no variables, so that production is skipped and no lateral stem starts", ("lpy/11b-markov-nstems.lpy", 10, 0, &[(0, "L-Py draws its random numbers with another generator than Meristem's"),(
-1, "Python imports are not translated"),(
-13, "the Python function 'Start' is not translated"),(
-22, "the Python code 'global m' is not translated (Meristem imports bodies ma"),(
-44, "L-Py's @c is not a Meristem command; kept as a module the turtle ignores"),])),
 ("modules carry Python objects (T(SegmentData())) and the bending is computed with PlantGL vectors in Python; nothing of it is expressible, not even the axiom", ("lpy/16a-branch-bending.lpy", 0, 0, &[(
 0, "nothing to derive: no axiom could be imported"),(
 1, "Python imports are not translated"),(

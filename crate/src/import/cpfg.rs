@@ -14,12 +14,14 @@
 //! Anything else is reported and left out.
 
 mod cpp;
+mod flags;
 mod globals;
 mod view;
 
 use super::vlab::View;
 use super::{Import, Output};
 use crate::vocabulary::{module_named, name_of, Command, DirectiveKind, KeywordKind, Meaning};
+use flags::Flag;
 use std::collections::HashMap;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -153,7 +155,12 @@ pub(super) fn import_with(
     view: Option<&View>,
     include: &dyn Fn(&str) -> Option<String>,
 ) -> Import {
-    let mut importer = Importer {
+    let new = |probe: bool, flag_steps: Vec<(String, Option<u32>)>| Importer {
+        flags: Vec::new(),
+        probe,
+        flags_written: Vec::new(),
+        flag_steps,
+        in_productions: true,
         flavour,
         out: Output::default(),
         declared: Vec::new(),
@@ -172,7 +179,23 @@ pub(super) fn import_with(
         colour: false,
         globals: globals::Globals::default(),
     };
+    // L-Py flags (see `flags.rs`): a first run marks where they are set; when it found any, the
+    // model is derived to find when, and imported again with that.
+    let mut importer = new(flavour == Flavour::Lpy, Vec::new());
     importer.run(text, include);
+    if !importer.flags_written.is_empty() {
+        let probe = importer.out.finish().text;
+        let steps = importer
+            .flags_written
+            .iter()
+            .filter_map(|&k| {
+                let step = flags::first_step(&probe, &flags::marker(k))?;
+                Some((importer.flags[k].name.clone(), step))
+            })
+            .collect();
+        importer = new(false, steps);
+        importer.run(text, include);
+    }
     let mut import = importer.out.finish();
     if uses_randomness(&import.text) {
         let tool = flavour.tool();
@@ -226,6 +249,17 @@ struct Importer {
     /// The lines of cpfg's `homomorphism` and `decomposition` sections that do not set their
     /// `maximum depth:` (cpfg's default is 1).
     default_depth: Vec<usize>,
+    /// L-Py globals that may be flags (see `flags.rs`).
+    flags: Vec<flags::Flag>,
+    /// Whether this run is the probe that finds when flags change (markers in the successors).
+    probe: bool,
+    /// The flags (indices into `flags`) whose setting the probe marked.
+    flags_written: Vec<usize>,
+    /// After the probe: each flag's name and the first step its setting production applies in
+    /// (`None`: never within the derivation length).
+    flag_steps: Vec<(String, Option<u32>)>,
+    /// Whether the section being read is the productions (not decomposition or homomorphism).
+    in_productions: bool,
     /// Whether the `.l` is an L+C (lpfg) file: `module` declarations, `produce` in C blocks.
     lpfg: bool,
     /// While an lpfg production's block is read: the successors it produces, each with the
@@ -671,6 +705,7 @@ impl Importer {
         // L-Py's `module` declarations change how strings split into modules: read them first.
         if self.flavour == Flavour::Lpy {
             self.write_only = write_only_globals(&all);
+            self.flags = flags::candidates(&all);
             for line in &all {
                 if let Some(rest) = line.code.strip_prefix("module ") {
                     for item in rest.split(',') {
@@ -894,6 +929,7 @@ impl Importer {
             return true;
         }
         if let Some(section) = section(&lower) {
+            self.in_productions = section == KeywordKind::Productions.written();
             self.out.line(section.clone(), line.n);
             // cpfg rewrites its homomorphism and decomposition to depth 1 unless the section
             // says `maximum depth:` (its parser's default); Meristem's default is deeper.
@@ -1055,6 +1091,23 @@ impl Importer {
                 let text = value.trim_matches(|c| c == '\'' || c == '"');
                 self.out
                     .comment(&format!("{}: {text}", name.trim_matches('_')), line.n);
+                return next;
+            }
+            let flag = self.flag_steps.iter().find(|(f, _)| f == name).cloned();
+            if let (true, Some((_, step))) = (assignment, flag) {
+                let set = self
+                    .flags
+                    .iter()
+                    .find(|f| f.name == name)
+                    .map(|f| f.set.clone());
+                let text = match (step, set) {
+                    (Some(s), Some(set)) => format!("(NumIt > {s} ? {set} : {value})"),
+                    _ => value.to_string(),
+                };
+                self.out.line(
+                    format!("{} {name} {text}", DirectiveKind::Define.written()),
+                    line.n,
+                );
                 return next;
             }
             if assignment {
@@ -1895,16 +1948,9 @@ impl Importer {
         // The `if`/`elif`/`else:` headers the current line is nested in: their indentation and
         // condition (`None` for `else`, which the order of the productions already says).
         let mut open: Vec<(usize, Option<String>)> = Vec::new();
-        let mut lines: Vec<&Line> = body.iter().filter(|l| !l.code.is_empty()).collect();
-        // `global g` and assignments to g, when nothing but a dropped label reads g.
-        lines.retain(|line| {
-            let dropped = global_write(&line.code, &self.write_only);
-            if let Some(g) = &dropped {
-                let code = line.code.clone();
-                self.note(line.n, format!("the Python code '{code}' changes the global {g}, which nothing but text labels (@L, dropped) reads; dropped"));
-            }
-            dropped.is_none()
-        });
+        let marked = self.flags_written.len();
+        let owned = self.body_lines(body);
+        let mut lines: Vec<&Line> = owned.iter().collect();
         let (names, values) = python_locals(&mut lines);
         let local = |text: &str| in_parentheses(text, &names, &values);
         for line in lines {
@@ -1968,6 +2014,100 @@ impl Importer {
             };
             self.production(&text, line);
         }
+        // The probe's markers count the steps since they were written.
+        for &k in &self.flags_written[marked..] {
+            let m = flags::marker(k);
+            self.out.line(format!("{m}(c) -> {m}(c+1)"), n);
+        }
+    }
+
+    /// The lines of an L-Py body without its blank lines, without `global g` and assignments
+    /// to g when nothing but a dropped label reads g (noted), and with a flag's setting taken out
+    /// (see [`Importer::flag_lines`]).
+    fn body_lines(&mut self, body: &[Line]) -> Vec<Line> {
+        let mut lines: Vec<&Line> = body.iter().filter(|l| !l.code.is_empty()).collect();
+        lines.retain(|line| {
+            let dropped = global_write(&line.code, &self.write_only);
+            if let Some(g) = &dropped {
+                let code = line.code.clone();
+                self.note(line.n, format!("the Python code '{code}' changes the global {g}, which nothing but text labels (@L, dropped) reads; dropped"));
+            }
+            dropped.is_none()
+        });
+        match self.flag_lines(&lines) {
+            Some(owned) => owned,
+            None => lines.into_iter().cloned().collect(),
+        }
+    }
+
+    /// The lines of an L-Py body with the setting of a flag (`global m`, `m = 1`) taken out, and
+    /// in the probe a marker put in the `produce` that follows it; `None` when the body sets no
+    /// flag, or sets one this run cannot translate (the body is then read as it is).
+    fn flag_lines(&mut self, lines: &[&Line]) -> Option<Vec<Line>> {
+        let flags = self.flags.clone();
+        let flag_of = |name: &str| flags.iter().position(|f| f.name == name);
+        let mut out: Vec<Line> = Vec::new();
+        let mut pending: Option<(usize, usize)> = None;
+        let mut any = false;
+        for line in lines {
+            let code = line.code.as_str();
+            if let Some(rest) = code.strip_prefix("global ") {
+                if rest.split(',').all(|g| flag_of(g.trim()).is_some()) {
+                    continue;
+                }
+            }
+            if let Some((k, set)) = code.split_once('=').and_then(|(name, value)| {
+                let k = flag_of(name.trim())?;
+                (value.trim() == flags[k].set && !value.starts_with('=')).then_some((k, line))
+            }) {
+                if !self.probe && !self.flag_steps.iter().any(|(f, _)| *f == flags[k].name) {
+                    return None;
+                }
+                pending = Some((k, set.indent));
+                any = true;
+                self.flag_note(k, set);
+                continue;
+            }
+            let mut line = (*line).clone();
+            if let Some((k, indent)) = pending.take() {
+                let successor = line
+                    .code
+                    .strip_prefix("produce")
+                    .filter(|_| line.indent == indent)?;
+                if !self.in_productions {
+                    return None;
+                }
+                if self.probe {
+                    let m = flags::marker(k);
+                    if !self.declared.contains(&m) {
+                        self.declared.push(m.clone());
+                    }
+                    let successor = successor.trim();
+                    let successor = if successor == "*" { "" } else { successor };
+                    line.code = format!("produce {m}(0) {successor}");
+                    self.flags_written.push(k);
+                }
+            }
+            out.push(line);
+        }
+        (any && pending.is_none()).then_some(out)
+    }
+
+    /// The note for the setting of flag `k` at `line` (after the probe).
+    fn flag_note(&mut self, k: usize, line: &Line) {
+        let Flag { name, initial, set } = self.flags[k].clone();
+        let Some((_, step)) = self.flag_steps.iter().find(|(f, _)| *f == name).cloned() else {
+            return;
+        };
+        let code = &line.code;
+        let when = match step {
+            Some(s) => format!("deriving the model at import time (seeds 1 and 2 agree) shows that this branch first applies in step {s}, so {name} is {initial} up to that step and {set} after it; in that step itself, modules to the right of this one see {initial} here where L-Py gives them {set}"),
+            None => format!("deriving the model at import time (seeds 1 and 2 agree) shows that this branch never applies within the derivation length, so {name} stays {initial}"),
+        };
+        self.note(
+            line.n,
+            format!("the Python code '{code}' sets the global {name}, which productions read; Meristem has no variables: {when}"),
+        );
     }
 
     /// Translates an expression (cpfg's C, L-Py's Python) with `env`'s names substituted.
@@ -3371,6 +3511,37 @@ mod tests {
             Flavour::Cpfg,
         );
         assert!(!deeper.text.contains("maximum depth: 1"), "{}", deeper.text);
+    }
+
+    #[test]
+    fn lpy_flags_set_by_a_production_become_defines_over_the_step() {
+        let text = "m = 0\nAxiom: P(0)G\nderivation length: 6\nproduction:\nP(t) :\n    if t < 3: produce P(t+1)\n    else:\n        global m\n        m = 1\n        produce *\nG :\n    if m == 1: produce FG\nendlsystem\n";
+        let import = import(text, Flavour::Lpy);
+        resolves(&import);
+        // P(0) → P(1) → P(2) → P(3) in three steps; the fourth erases it and sets m: from the
+        // fifth step on, G grows an F a step (steps 5 and 6).
+        assert!(
+            import.text.contains("#define m (NumIt > 4 ? 1 : 0)"),
+            "{}",
+            import.text
+        );
+        assert!(!import.text.contains("ProbeMark"), "{}", import.text);
+        assert_eq!(import.notes.len(), 1, "{:?}", import.notes);
+        assert!(import.notes[0].message.contains("first applies in step 4"));
+        let b = crate::pipeline::build(&import.text, &crate::pipeline::BuildOptions::default());
+        assert_eq!(b.derived_text(), "FFG");
+        // A flag set to two different values is not one: the body is skipped as before.
+        let two = text.replace("    if m == 1", "    global m\n    m = 2\n    if m == 1");
+        let import = super::import(&two, Flavour::Lpy);
+        assert!(!import.text.contains("NumIt >"), "{}", import.text);
+        assert!(
+            import
+                .notes
+                .iter()
+                .any(|n| n.message.contains("'global m' is not translated")),
+            "{:?}",
+            import.notes
+        );
     }
 
     #[test]
