@@ -799,6 +799,7 @@ proptest! {
             "Axiom: F(1,0)#(1)\n\tAXIOM\nAXIOM : 1 --> B\nF(v,n)#(w) : ",
             "#include <lpfgall.h>\nmodule A(float);\nAxiom: A(1);\nA(t):{ ",
             "g = 0\nAxiom: A(1)\nproduction:\nA(t) :\n    global g\n    g += 1\n    if t > 1:\n        x = ",
+            "m = 0\nderivation length: 9\nAxiom: P(0)G\nproduction:\nP(t) :\n    if t < 3: produce P(t+1)\n    else:\n        global m\n        m = 1\n        produce ",
         ]),
         body in "[-+&^<>|%$~!?:;'\"cFfgZzt\\[\\]{}.()0-9ABCabpxiewhlrodu=@#*/, \n]{0,80}",
     ) {
