@@ -1,0 +1,203 @@
+//! L+C (lpfg) files read as cpfg: `module` declarations, the `;` that ends lpfg's lines, blocks
+//! with `produce` (each path to a `produce` a conditional production) and lpfg's long turtle
+//! names.
+
+use super::{closing, is_identifier, matching, separate, split_top, Env, Importer, Line};
+
+impl Importer {
+    /// The lines of an L+C (lpfg) file in cpfg's terms: `module` declarations are read (a name
+    /// of several letters is declared) and dropped, the `;` that ends lpfg's `Axiom:` and
+    /// `derivation length:` lines is dropped, and a production's head `A(t):` joins the `{…}`
+    /// block on the lines after it.
+    pub(super) fn lpfg_lines(&mut self, all: Vec<Line>) -> Vec<Line> {
+        self.lpfg = true;
+        let mut out: Vec<Line> = Vec::new();
+        for mut line in all {
+            if let Some(rest) = line.code.strip_prefix("module ") {
+                for item in rest.trim_end_matches(';').split(';') {
+                    let name = item.split('(').next().unwrap_or("").trim();
+                    if is_identifier(name)
+                        && name.len() > 1
+                        && !self.declared.iter().any(|d| d == name)
+                    {
+                        self.declared.push(name.to_string());
+                        self.words.push((name.to_string(), name.to_string()));
+                    }
+                }
+                continue;
+            }
+            if !line.code.contains('{') {
+                if let Some(code) = line.code.strip_suffix(';') {
+                    line.code = code.trim_end().to_string();
+                }
+            }
+            if line.code.starts_with('{') {
+                if let Some(head) = out.last_mut().filter(|h| h.code.ends_with(':')) {
+                    head.code = format!("{} {}", head.code, line.code);
+                    continue;
+                }
+            }
+            out.push(line);
+        }
+        self.words.sort_by_key(|w| std::cmp::Reverse(w.0.len()));
+        out
+    }
+
+    /// An lpfg production `pattern: { statements }`: the block is read as cpfg's statement
+    /// blocks are, and each `produce` on its way gives a production whose condition is the path
+    /// to it (lpfg leaves a module that produces nothing as it is, as Meristem does when no
+    /// production applies).
+    pub(super) fn lpfg_production(&mut self, pattern: &str, body: &str, n: usize) {
+        self.produced = Some(Vec::new());
+        self.path.clear();
+        let mut env = Env::new();
+        let result = self.statements(body, &mut env, n, 0);
+        let produced = self.produced.take().unwrap_or_default();
+        self.path.clear();
+        if let Err(why) = result {
+            self.note(n, format!("{why}; the production is skipped"));
+            return;
+        }
+        let pattern = match self.pattern(pattern, n) {
+            Ok(p) => p,
+            Err(why) => {
+                self.note(n, format!("{why}; the production is skipped"));
+                return;
+            }
+        };
+        for (condition, successor) in produced {
+            let mut text = pattern.clone();
+            if let Some(c) = condition {
+                text.push_str(&format!(" : {c}"));
+            }
+            text.push_str(" -> ");
+            text.push_str(if successor.is_empty() {
+                "ε"
+            } else {
+                &successor
+            });
+            self.out.line(text, n);
+        }
+    }
+
+    /// An lpfg module string (what `produce` and `Axiom:` write) in Meristem's notation: lpfg's
+    /// long names (`SB()`, `Left(a)`, `SetWidth(w)`, …) become the symbols they stand for.
+    pub(super) fn lpfg_modules(
+        &mut self,
+        text: &str,
+        env: &Env,
+        n: usize,
+    ) -> Result<String, String> {
+        let cpfg = self.lpfg_symbols(text, n)?;
+        self.modules(&cpfg, env, n).map(|m| separate(&m))
+    }
+
+    /// lpfg's long names in `text` replaced by cpfg's symbols; a long name Meristem has no
+    /// command for is dropped with a note.
+    pub(super) fn lpfg_symbols(&mut self, text: &str, n: usize) -> Result<String, String> {
+        let chars: Vec<char> = text.chars().collect();
+        let mut out = String::new();
+        let mut i = 0;
+        while i < chars.len() {
+            let c = chars[i];
+            if !(c.is_ascii_alphabetic() || c == '_') {
+                out.push(c);
+                i += 1;
+                continue;
+            }
+            let start = i;
+            while i < chars.len() && (chars[i].is_ascii_alphanumeric() || chars[i] == '_') {
+                i += 1;
+            }
+            let word: String = chars[start..i].iter().collect();
+            let mut j = i;
+            while chars.get(j) == Some(&' ') {
+                j += 1;
+            }
+            let (args, after) = if chars.get(j) == Some(&'(') {
+                let close = matching(&chars, j).ok_or("a '(' is never closed")?;
+                (
+                    Some(chars[j + 1..close].iter().collect::<String>()),
+                    close + 1,
+                )
+            } else {
+                (None, i)
+            };
+            i = after;
+            if word.len() == 1 || self.words.iter().any(|(w, _)| *w == word) {
+                out.push_str(&word);
+                if let Some(a) = &args {
+                    out.push_str(&format!("({a})"));
+                }
+                continue;
+            }
+            let symbol = self.lpfg_symbol(&word, &args.unwrap_or_default(), n);
+            out.push_str(&symbol);
+        }
+        Ok(out)
+    }
+
+    /// The cpfg symbols of one lpfg long name `word` with its arguments `a`; empty (with a
+    /// note) for a name Meristem has no command for.
+    fn lpfg_symbol(&mut self, word: &str, a: &str, n: usize) -> String {
+        let parts: Vec<&str> = split_top(a, ',');
+        match word {
+            "SB" => "[".to_string(),
+            "EB" => "]".to_string(),
+            "Left" => format!("+({a})"),
+            "Right" => format!("-({a})"),
+            "Up" => format!("^({a})"),
+            "Down" => format!("&({a})"),
+            "RollL" => format!("\\({a})"),
+            "RollR" => format!("/({a})"),
+            "TurnAround" => "|".to_string(),
+            "SetWidth" => format!("#({a})"),
+            "SetColor" => format!(";({a})"),
+            "Sphere" => format!("@O({a})"),
+            "Surface3" if parts.len() == 4 => {
+                self.note_once(
+                    "Surface3",
+                    n,
+                    "lpfg's Surface3(id, x, y, z) draws the view file's surface id (a .s file Meristem does not read) scaled by x, y and z; Meristem draws its own leaf ~l(y), y long, as wide as its own shape makes it: the scale x and the surface's shape are not kept",
+                );
+                format!("~l({})", parts[2].trim())
+            }
+            "Surface" if parts.len() == 2 => {
+                self.note_once(
+                    "Surface",
+                    n,
+                    "lpfg's Surface(id, s) draws the view file's surface id (a .s file Meristem does not read) scaled by s; Meristem draws its own leaf ~l(s) instead",
+                );
+                format!("~l({})", parts[1].trim())
+            }
+            _ => {
+                self.note_once(
+                    &format!("lpfg {word}"),
+                    n,
+                    format!("lpfg's {word} is not a Meristem command; dropped"),
+                );
+                String::new()
+            }
+        }
+    }
+}
+
+/// Whether the lines are an L+C (lpfg) file: `module X(…);` declarations or `produce` in a block.
+pub(super) fn is_lpfg(all: &[Line]) -> bool {
+    all.iter().any(|l| {
+        (l.code.starts_with("module ") && l.code.ends_with(';'))
+            || (l.code.contains('{') && l.code.contains("produce "))
+    })
+}
+
+/// An lpfg production `pattern: { … }` (or `pattern : { … }`): its pattern and the text inside
+/// the braces.
+pub(super) fn lpfg_production_parts(code: &str) -> Option<(&str, &str)> {
+    let open = code.find('{')?;
+    let head = code[..open].trim_end().strip_suffix(':')?.trim();
+    let close = closing(code, open)?;
+    if head.is_empty() || !code[close + 1..].trim().is_empty() {
+        return None;
+    }
+    Some((head, &code[open + 1..close]))
+}
