@@ -11,6 +11,7 @@
 //! before the call traps, so the studio can say what failed and start a fresh core.
 #![deny(clippy::unwrap_used)]
 
+#[cfg(feature = "studio-extras")]
 use crate::branches::{parse_edits, write_edits, DragError, NO_BRANCH};
 #[cfg(feature = "io")]
 use crate::export::{self, Format};
@@ -590,6 +591,7 @@ impl PlantBuild {
     }
 
     /// Starts editing the plant's branches (the plant is meshed once more to record its layout).
+    #[cfg(feature = "studio-extras")]
     #[wasm_bindgen(js_name = intoEditor)]
     pub fn into_editor(self) -> PlantEditor {
         PlantEditor {
@@ -757,13 +759,16 @@ impl Explanation {
 }
 
 /// A plant whose branches are being edited (see `crate::branches`).
+#[cfg(feature = "studio-extras")]
 #[wasm_bindgen]
 pub struct PlantEditor {
     editor: pipeline::PlantEditor,
 }
 
+#[cfg(feature = "studio-extras")]
 mesh_getters!(PlantEditor, this => this.editor.plant());
 
+#[cfg(feature = "studio-extras")]
 #[wasm_bindgen]
 impl PlantEditor {
     /// The path of each branch, as JSON: `[[0], [0, 0], [0, 1], …]` (branch `i` is entry `i`).
@@ -922,6 +927,7 @@ impl PlantEditor {
     }
 }
 
+#[cfg(feature = "studio-extras")]
 impl PlantEditor {
     /// The values of the changed vertices in `array` (`width` floats per vertex), range after
     /// range.

@@ -1,9 +1,12 @@
 // Editing a plant's branches by their Bézier handles (issue 8): the facade over the core's branch
 // editor (crate/src/branches). A branch is a run of segments along one axis between branching
 // points; its path is its root's index, then child indices (docs/LANGUAGE.md, "Branches").
-import { type PlantEditor as WasmPlantEditor } from '../../../crate/pkg-core/meristem_core.js';
-import { copyMesh, plainBuild, runBuild } from './build';
+// Branch editing is in the whole boundary's module (crate/pkg, feature `studio-extras`), not in the
+// first plant's (issue 22's first-load budget): the page loads it (`initIo`) before its first edit.
+import { build as buildWithExtras, type PlantEditor as WasmPlantEditor } from '../../../crate/pkg/meristem.js';
+import { copyMesh, plainBuild, runBuildWith } from './build';
 import { guarded, ownedArray } from './init';
+import { assertIoReady } from './io';
 import type { BuildOptions, MeshBuffers, PlantBuild, PlantStats } from './types';
 
 /**
@@ -114,10 +117,11 @@ export interface PlantEditor {
 /**
  * Builds `source` like `buildPlant` and keeps the build alive behind a {@link PlantEditor}.
  * Starting to edit meshes the plant once more (to record where each part lies), so the first
- * editor call costs about one mesh stage. Requires `initCore`.
+ * editor call costs about one mesh stage. Requires `initIo` (the module with branch editing).
  */
 export function editPlant(source: string, options: BuildOptions = {}): { build: PlantBuild; editor: PlantEditor } {
-  const result = runBuild(source, options);
+  assertIoReady();
+  const result = runBuildWith(buildWithExtras, source, options);
   let plain: PlantBuild;
   try {
     plain = plainBuild(source, result);

@@ -4,9 +4,9 @@ import {
   build,
   type Explanation as WasmExplanation,
   type PlantBuild as WasmPlantBuild,
-  type PlantEditor as WasmPlantEditor,
   type PlantInspector as WasmPlantInspector,
 } from '../../../crate/pkg-core/meristem_core.js';
+import type { PlantEditor as WasmPlantEditor } from '../../../crate/pkg/meristem.js';
 import { utf16Offsets } from './offsets';
 import { assertReady, guarded, ownedArray } from './init';
 import {
@@ -131,10 +131,18 @@ const meshMillis = new WeakMap<WasmPlantBuild, number>();
 /** Runs the core's `build` (for this folder's facades; the caller frees the result). */
 export function runBuild(source: string, options: BuildOptions & { sketch?: boolean }, onProgress?: (progress: BuildProgress) => void): WasmPlantBuild {
   assertReady();
+  return runBuildWith(build, source, options, onProgress);
+}
+
+/**
+ * Runs `core`, the `build` of either core module (the first plant's, or the whole boundary's for
+ * what only it has: branch editing, ./branches.ts). The caller frees the result.
+ */
+export function runBuildWith<B>(core: typeof build extends (...args: infer A) => unknown ? (...args: A) => B : never, source: string, options: BuildOptions & { sketch?: boolean }, onProgress?: (progress: BuildProgress) => void): B {
   const { iterations, seed, sides, smoothAll, sketch } = options;
   const progress = onProgress && ((stage: BuildStage, step: number, steps: number) => onProgress({ stage, step, steps }));
   // The core reads no clock: it reads ours between its stages.
-  return guarded(() => build(source, { iterations, seed, sides, smoothAll, sketch }, () => performance.now(), progress));
+  return guarded(() => core(source, { iterations, seed, sides, smoothAll, sketch }, () => performance.now(), progress));
 }
 
 interface RawProduction {

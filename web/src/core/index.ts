@@ -1,7 +1,7 @@
 // The core: the Rust/WebAssembly pipeline behind an idiomatic TypeScript facade.
 // Invariant: no other TypeScript imports crate/pkg; everything else uses these names.
 export { initCore, coreModule, coreVersion, CoreCrashed } from './init';
-export { initIo } from './io';
+export { initIo, ioReady } from './io';
 export { buildPlant, inspectPlant, type PlantSketch, type SketchRequest } from './build';
 export {
   exportModel,
