@@ -1,7 +1,8 @@
 // The core: the Rust/WebAssembly pipeline behind an idiomatic TypeScript facade.
 // Invariant: no other TypeScript imports crate/pkg; everything else uses these names.
 export { initCore, coreModule, coreVersion, CoreCrashed } from './init';
-export { initIo, ioReady } from './io';
+export { initIo } from './io';
+export { loadBranchEditing, type EditPlant } from './editing';
 export { buildPlant, inspectPlant, type PlantSketch, type SketchRequest } from './build';
 export {
   exportModel,
@@ -36,7 +37,6 @@ export { importGrammar, importObject, type Dialect, type ImportedGrammar, type I
 export {
   applyMeshUpdate,
   DragRefused,
-  editPlant,
   noEdits,
   validateEdits,
   type BranchEdit,

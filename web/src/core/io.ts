@@ -34,11 +34,6 @@ export function initIo(wasm?: BufferSource): Promise<void> {
   return loading;
 }
 
-/** Whether {@link initIo} has finished (what needs it can be called at once). */
-export function ioReady(): boolean {
-  return ready;
-}
-
 /** Throws a clear error when an importer, an exporter or branch editing is used before {@link initIo} finished. */
 export function assertIoReady(): void {
   if (!ready) throw new Error('Meristem importers, exporters and branch editing used before initIo() finished');

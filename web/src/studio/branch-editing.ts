@@ -8,11 +8,10 @@
 import {
   applyMeshUpdate,
   DragRefused,
-  editPlant,
-  initIo,
-  ioReady,
+  loadBranchEditing,
   noEdits,
   type BuildOptions,
+  type EditPlant,
   type EditReport,
   type EditsDocument,
   type Handle,
@@ -79,6 +78,8 @@ export class BranchEditSession {
   private stale = '';
   /** Counts attaches and drops: an attach that waited for the core goes on only if it is the last. */
   private attachments = 0;
+  /** Branch editing's `editPlant`, once loaded (its core module is not the first plant's). */
+  private editPlant: EditPlant | undefined;
 
   constructor(
     private readonly els: BranchEditingElements,
@@ -188,10 +189,12 @@ export class BranchEditSession {
       this.showButtons();
       return;
     }
-    if (!ioReady()) {
+    const editPlant = this.editPlant;
+    if (!editPlant) {
       const waiting = ++this.attachments;
-      initIo().then(
-        () => {
+      loadBranchEditing().then(
+        (loaded) => {
+          this.editPlant = loaded;
           if (waiting === this.attachments && !this.editor && (this.editing || this.doc.edits.length > 0)) this.attach();
         },
         (error: unknown) => this.host.tell('error', `Branch editing could not be loaded: ${String(error)}`),
