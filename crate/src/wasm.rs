@@ -17,6 +17,7 @@ use crate::branches::{parse_edits, write_edits, DragError, NO_BRANCH};
 use crate::export::{self, Format};
 use crate::mesh::MeshOptions;
 use crate::pipeline::{self, BuildOptions, Hooks, Progress, Stage};
+#[cfg(feature = "io")]
 use serde::Deserialize;
 use std::cell::RefCell;
 use wasm_bindgen::prelude::*;
@@ -78,9 +79,11 @@ extern "C" {
     fn console_error(message: &str);
 }
 
-/// [`BuildOptionsObject`] as read.
-#[derive(Default, Deserialize)]
-#[serde(rename_all = "camelCase")]
+/// [`BuildOptionsObject`] as read (serde's `Deserialize` only for the `exportModel` options that
+/// flatten it in).
+#[derive(Default)]
+#[cfg_attr(feature = "io", derive(Deserialize))]
+#[cfg_attr(feature = "io", serde(rename_all = "camelCase"))]
 struct BuildOptionsFields {
     iterations: Option<u32>,
     seed: Option<f64>,
@@ -145,20 +148,93 @@ impl BuildOptionsFields {
     }
 }
 
-/// Reads an options object (`undefined` and `null` are no options).
-fn read<T: for<'de> Deserialize<'de> + Default>(value: &JsValue) -> Result<T, JsError> {
-    if value.is_undefined() || value.is_null() {
-        return Ok(T::default());
-    }
-    serde_wasm_bindgen::from_value(value.clone())
-        .map_err(|e| JsError::new(&format!("bad options: {e}")))
-}
-
-#[derive(Default, Deserialize)]
-#[serde(rename_all = "camelCase")]
+/// [`ViewOptionsObject`] as read.
+#[derive(Default)]
 struct ViewOptionsFields {
     sides: Option<u32>,
     smooth_all: Option<bool>,
+}
+
+impl BuildOptionsFields {
+    /// Reads a `BuildOptions` object (`undefined` and `null` are no options).
+    fn read(value: &JsValue) -> Result<Self, JsError> {
+        let Some(object) = OptionsObject::of(value) else {
+            return Ok(Self::default());
+        };
+        Ok(Self {
+            iterations: object.whole("iterations")?,
+            seed: object.number("seed")?,
+            sides: object.whole("sides")?,
+            smooth_all: object.flag("smoothAll")?,
+            sketch: object.flag("sketch")?,
+        })
+    }
+}
+
+impl ViewOptionsFields {
+    /// Reads a `ViewOptions` object (`undefined` and `null` are no options).
+    fn read(value: &JsValue) -> Result<Self, JsError> {
+        let Some(object) = OptionsObject::of(value) else {
+            return Ok(Self::default());
+        };
+        Ok(Self {
+            sides: object.whole("sides")?,
+            smooth_all: object.flag("smoothAll")?,
+        })
+    }
+}
+
+/// An options object of the first plant's calls (`build`, `remesh`), read field by field with
+/// `Reflect.get` rather than serde (issue 22, the first load: serde's deserializer and its error
+/// messages were KBs of the first plant's wasm). A field that is `undefined` or `null` is not
+/// given; other fields are ignored.
+struct OptionsObject<'a>(&'a JsValue);
+
+impl<'a> OptionsObject<'a> {
+    /// `None` for `undefined` and `null`: no options.
+    fn of(value: &'a JsValue) -> Option<Self> {
+        (!value.is_undefined() && !value.is_null()).then_some(Self(value))
+    }
+
+    fn field(&self, name: &str) -> Result<Option<JsValue>, JsError> {
+        let value = js_sys::Reflect::get(self.0, &JsValue::from_str(name))
+            .map_err(|_| JsError::new("bad options: not an object"))?;
+        Ok((!value.is_undefined() && !value.is_null()).then_some(value))
+    }
+
+    fn number(&self, name: &str) -> Result<Option<f64>, JsError> {
+        self.field(name)?
+            .map(|v| {
+                v.as_f64()
+                    .ok_or_else(|| JsError::new(&format!("bad options: {name} must be a number")))
+            })
+            .transpose()
+    }
+
+    fn whole(&self, name: &str) -> Result<Option<u32>, JsError> {
+        self.number(name)?
+            .map(|x| {
+                if x.fract() == 0.0 && (0.0..=f64::from(u32::MAX)).contains(&x) {
+                    Ok(x as u32)
+                } else {
+                    Err(JsError::new(&format!(
+                        "bad options: {name} must be a whole number from 0 to {}",
+                        u32::MAX
+                    )))
+                }
+            })
+            .transpose()
+    }
+
+    fn flag(&self, name: &str) -> Result<Option<bool>, JsError> {
+        self.field(name)?
+            .map(|v| {
+                v.as_bool().ok_or_else(|| {
+                    JsError::new(&format!("bad options: {name} must be true or false"))
+                })
+            })
+            .transpose()
+    }
 }
 
 thread_local! {
@@ -222,7 +298,7 @@ pub fn build(
     clock: Option<js_sys::Function>,
     progress: Option<js_sys::Function>,
 ) -> Result<PlantBuild, JsError> {
-    let options = read::<BuildOptionsFields>(options)?.options();
+    let options = BuildOptionsFields::read(options)?.options();
     Ok(build_reading(
         source,
         &options,
@@ -577,7 +653,7 @@ impl PlantBuild {
     /// Meshes the plant again with other view options (no new derivation); the arrays and stats
     /// change.
     pub fn remesh(&mut self, options: &ViewOptionsObject) -> Result<(), JsError> {
-        let view = read::<ViewOptionsFields>(options)?;
+        let view = ViewOptionsFields::read(options)?;
         self.build
             .remesh(&MeshOptions::view(view.sides, view.smooth_all));
         Ok(())
@@ -920,7 +996,7 @@ impl PlantEditor {
 
     /// Meshes the edited plant again with other view options.
     pub fn remesh(&mut self, options: &ViewOptionsObject) -> Result<(), JsError> {
-        let view = read::<ViewOptionsFields>(options)?;
+        let view = ViewOptionsFields::read(options)?;
         self.editor
             .remesh(&MeshOptions::view(view.sides, view.smooth_all));
         Ok(())
