@@ -232,6 +232,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   const editorLoaded = grammarEditor.loaded;
   await firstBuild;
   await editorLoaded;
+  await view.controlsReady; // the mouse moves the camera (the OrbitControls load after the first plant's frame)
 }
 
 /** Settles after `ms` milliseconds. */
