@@ -307,6 +307,7 @@ pub fn build(
     ))
 }
 
+#[cfg(feature = "studio-extras")]
 /// `build(source, { iterations, sketch: true })`: the entry point of the shared benchmark
 /// harness's turtle workload (`../shared/bench/js/meristem-peer.mjs`).
 #[wasm_bindgen(js_name = buildSketch)]
@@ -684,6 +685,7 @@ pub struct PlantInspector {
 
 #[wasm_bindgen]
 impl PlantInspector {
+    #[cfg(feature = "studio-extras")]
     /// Explains production `production` on the last step; `undefined` before the first step, for
     /// an unknown index, or on a runtime error.
     pub fn explain(&self, production: u32) -> Option<Explanation> {
@@ -691,6 +693,7 @@ impl PlantInspector {
         Some(Explanation { inner: explained })
     }
 
+    #[cfg(feature = "studio-extras")]
     /// Explains how module `module` of the derived string was made (the production that wrote it,
     /// the contexts of that rewriting); `undefined` when it was copied or before the first step.
     #[wasm_bindgen(js_name = explainModule)]
@@ -711,6 +714,7 @@ impl PlantInspector {
         serde_json::to_string(&texts).unwrap_or_else(|_| "[]".into())
     }
 
+    #[cfg(feature = "studio-extras")]
     /// Why production `production` did or did not rewrite the module that module `module` of the
     /// derived string comes from, as JSON (`MatchReport`: `{production, module, moduleText,
     /// predecessor, left, right, condition, rewrittenBy}`, contexts as `{matched, modules,
@@ -726,6 +730,7 @@ impl PlantInspector {
         serde_json::to_string(&report).ok()
     }
 
+    #[cfg(feature = "studio-extras")]
     /// The whole derivation, step 0 to the last, as JSON `[{texts, parent, origin}]` (each step's
     /// modules as written, and for each the module of the step before it comes from and the
     /// production that wrote it), when all the steps' strings hold `max_modules` modules or fewer
@@ -783,12 +788,14 @@ impl PlantInspector {
     }
 }
 
+#[cfg(feature = "studio-extras")]
 /// Why and where one production fired in the last step. Module indices name the derived string.
 #[wasm_bindgen]
 pub struct Explanation {
     inner: pipeline::Explained,
 }
 
+#[cfg(feature = "studio-extras")]
 #[wasm_bindgen]
 impl Explanation {
     /// The production explained (an index into `productions()`).
@@ -1019,6 +1026,7 @@ impl PlantEditor {
     }
 }
 
+#[cfg(feature = "studio-extras")]
 /// A parsed and resolved grammar derived many times, without the turtle and mesh stages: the
 /// benchmarks' entry point (`npm run bench`, `../shared/bench/js/meristem-peer.mjs`).
 #[wasm_bindgen]
@@ -1026,6 +1034,7 @@ pub struct Grammar {
     model: crate::model::Model,
 }
 
+#[cfg(feature = "studio-extras")]
 #[wasm_bindgen]
 impl Grammar {
     /// Parses and resolves `source`; `undefined` when it has errors (use [`build`] to see them).
