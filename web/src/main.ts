@@ -10,7 +10,7 @@ import { GrammarStore } from './share/storage';
 import { PlantView } from './view';
 import {
   Autosave, BranchEditSession, BuildClient, ContextView, DerivationControls, GalleryDialog, GalleryThumbnails, GrowthPanel,
-  LazyDerivationView, EmbedSnippets, HelpPanel, installLearnPanel, LibraryDialog, LinkState, LivePreview, Notice, ShareDialog, SliderPanel, StagesMode, TextOpening,
+  LazyDerivationView, EmbedSnippets, HelpPanel, installLearnPanel, LibraryDialog, LinkState, LivePreview, Notice, ShareDialog, SliderPanel, LazyStagesMode, TextOpening,
   TextKeeper, ViewFollowing, ViewOptions, ViewTools, attachSplitter, browserDatabase, browserStorage, createImportWorker, connectTestHook, createBuildWorker, emptyTestHook, fetchExample,
   figureName, installDownloads, installDrop, installInspectorTabs, LayoutModes,
   installFileMenu, installShareButton, installShortcuts, openPastedLinks, readGrammarFile, readObjectFiles, renderShortcutHelp, reportCoreCrashes, showStatus, sidesChoices,
@@ -124,8 +124,8 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   // The view follows the plant; Play shows the growth in one frame (or frames every step).
   const following = new ViewFollowing(els.following, view, () => preview.lastGood);
   following.follow(derivation.playback);
-  // Stages: the iterations side by side, grown in a worker of their own.
-  const stages = new StagesMode(els.stages, {
+  // Stages: the iterations side by side, grown in a worker of their own (loaded when first turned on).
+  const stages = new LazyStagesMode(els.stages, {
     shown: () => preview.lastGood,
     createClient: () => new BuildClient(createBuildWorker),
     lighting: () => viewOptions.values.lighting,

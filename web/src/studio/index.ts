@@ -37,7 +37,9 @@ export { GrowthPanel, type GrowthEditor } from './growth-panel';
 export { byId, studioElements, type StudioElements } from './page-elements';
 export { ViewOptions, DEFAULT_VIEW_OPTIONS, type SharedViewOptions, type ViewOption, type ViewOptionValues, type ViewOptionsListener } from './view-options';
 export { ViewTools, sidesChoices, type ViewToolElements } from './view-tools';
-export { StagesMode, stagesOf, MAX_STAGE_COLUMNS, MAX_STAGE_SEEDS, type StagesElements, type StagesHost } from './stages';
+// stages (the Stages mode) is not re-exported: it loads when first turned on (stages-loader).
+export { LazyStagesMode } from './stages-loader';
+export type { StagesElements, StagesHost } from './stages';
 export { stagesSvg, parseStageSvg, type StageDrawing } from './stages-svg';
 export { ViewFollowing, growthKey, isLastStep, type PlayFraming, type ViewFollowingElements } from './view-following';
 export { DerivationControls, type DerivationElements, type SharedDerivation } from './derivation-controls';
