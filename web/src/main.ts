@@ -9,8 +9,8 @@ import { KeptTexts } from './share/kept-texts';
 import { GrammarStore } from './share/storage';
 import { PlantView } from './view';
 import {
-  Autosave, BranchEditSession, BuildClient, ContextView, DerivationControls, GalleryDialog, GalleryThumbnails, GrowthPanel,
-  LazyDerivationView, EmbedSnippets, HelpPanel, installLearnPanel, LibraryDialog, LinkState, LivePreview, Notice, ShareDialog, SliderPanel, LazyStagesMode, TextOpening,
+  Autosave, BranchEditSession, BuildClient, ContextView, DerivationControls, GrowthPanel,
+  LazyDerivationView, HelpPanel, installLearnPanel, LinkState, LivePreview, Notice, SliderPanel, LazyStagesMode, TextOpening,
   TextKeeper, ViewFollowing, ViewOptions, ViewTools, attachSplitter, browserDatabase, browserStorage, createImportWorker, connectTestHook, createBuildWorker, emptyTestHook, fetchExample,
   figureName, installDownloads, installDrop, installInspectorTabs, LayoutModes,
   installFileMenu, installShareButton, installShortcuts, openPastedLinks, readGrammarFile, readObjectFiles, renderShortcutHelp, reportCoreCrashes, showStatus, sidesChoices,
@@ -160,13 +160,21 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
     },
     start,
   );
-  const gallery = new GalleryDialog(els.gallery, els.galleryList, new GalleryThumbnails(fetchExample), (entry) => opening.openExample(entry), () => opening.currentFile);
-  const openGallery = () => void gallery.open().catch((error: unknown) => console.error('Could not open the gallery:', error));
+  // The gallery and My grammars load when first opened (issue 22: the first plant needs neither).
+  const gallery = onDemand(async () => {
+    const [{ GalleryDialog }, { GalleryThumbnails }] = await Promise.all([import('./studio/gallery-dialog'), import('./studio/thumbnails')]);
+    return new GalleryDialog(els.gallery, els.galleryList, new GalleryThumbnails(fetchExample), (entry) => opening.openExample(entry), () => opening.currentFile);
+  });
+  const openGallery = () => void gallery().then((dialog) => dialog.open()).catch((error: unknown) => console.error('Could not open the gallery:', error));
   els.openGallery.addEventListener('click', openGallery);
   installLearnPanel({ preview, open: (text, title, key) => opening.replace(text, title, key) }); // lessons (issue 17), loaded on first use
   if (start.from === 'link') void autosave.save(start.text); // the link's text is now the work in progress
-  const library = new LibraryDialog(els.library, store, kept, { text: () => grammarEditor.text(), open: (entry, key) => opening.openSaved(entry, key) });
-  installFileMenu(els.fileMenu, { openFiles: (files) => opening.openPicked(files), text: () => grammarEditor.text(), openLibrary: () => library.open() });
+  const library = onDemand(async () => {
+    const { LibraryDialog } = await import('./studio/library-dialog');
+    return new LibraryDialog(els.library, store, kept, { text: () => grammarEditor.text(), open: (entry, key) => opening.openSaved(entry, key) });
+  });
+  const openLibrary = () => void library().then((dialog) => dialog.open()).catch((error: unknown) => console.error('Could not open My grammars:', error));
+  installFileMenu(els.fileMenu, { openFiles: (files) => opening.openPicked(files), text: () => grammarEditor.text(), openLibrary });
   installDrop(els.studio, (files, name) => opening.openFiles(files, name));
 
   // Branch editing (issue 8): the plant on screen with its edits, handles in Edit mode.
@@ -187,8 +195,18 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   // Share links: the whole state in the link's fragment; the page's own link, and pasted ones.
   const link = new LinkState({ editor: grammarEditor, derivation, sliders, viewOptions, view, branchEdits, preview });
   if (start.state) link.restore(start.state); // iterations, seed, edits, camera (its view options apply already)
-  const snippets = new EmbedSnippets(els.embedSnippets, new URL('./', location.href).href);
-  installShareButton(els.share, new ShareDialog(els.shareDialog), () => link.capture(), notice, (state, fragment) => snippets.show(state, fragment));
+  // The Share dialog and its embed snippets load with the first share (issue 22).
+  const shareDialog = onDemand(async () => {
+    const [{ ShareDialog }, { EmbedSnippets }] = await Promise.all([import('./studio/share-dialog'), import('./studio/embed-snippets')]);
+    return { dialog: new ShareDialog(els.shareDialog), snippets: new EmbedSnippets(els.embedSnippets, new URL('./', location.href).href) };
+  });
+  installShareButton(
+    els.share,
+    () => shareDialog().then((made) => made.dialog),
+    () => link.capture(),
+    notice,
+    (state, fragment) => void shareDialog().then((made) => made.snippets.show(state, fragment)),
+  );
   openPastedLinks({ notice, opening, link, buildNow: () => preview.rebuild(true) });
 
   preview.onDelivered((result) => {
@@ -233,6 +251,16 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   await firstBuild;
   await editorLoaded;
   await view.controlsReady; // the mouse moves the camera (the OrbitControls load after the first plant's frame)
+}
+
+/** `make`, called on the first use and kept (a failure is tried again on the next use). */
+function onDemand<T>(make: () => Promise<T>): () => Promise<T> {
+  let made: Promise<T> | undefined;
+  return () =>
+    (made ??= make().catch((error: unknown) => {
+      made = undefined;
+      throw error;
+    }));
 }
 
 /** Settles after `ms` milliseconds. */
