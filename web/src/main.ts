@@ -10,9 +10,9 @@ import { GrammarStore } from './share/storage';
 import { PlantView } from './view';
 import {
   Autosave, BranchEditSession, BuildClient, ContextView, DerivationControls, GrowthPanel,
-  LazyDerivationView, HelpPanel, installLearnPanel, LinkState, LivePreview, Notice, SliderPanel, LazyStagesMode, TextOpening,
+  LazyDerivationView, installLearnPanel, LinkState, LivePreview, Notice, SliderPanel, LazyStagesMode, TextOpening,
   TextKeeper, ViewFollowing, ViewOptions, ViewTools, attachSplitter, browserDatabase, browserStorage, createImportWorker, connectTestHook, createBuildWorker, emptyTestHook, fetchExample,
-  figureName, installDownloads, installDrop, installInspectorTabs, LayoutModes,
+  figureName, installDrop, installInspectorTabs, LayoutModes,
   installFileMenu, installShareButton, installShortcuts, openPastedLinks, readGrammarFile, readObjectFiles, renderShortcutHelp, reportCoreCrashes, showStatus, sidesChoices,
   startingText, studioElements, installAppUpdates, type ShortcutAction, type StudioElements, type StudioTestHook,
 } from './studio';
@@ -79,7 +79,15 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
     replaceRange: (from, to, insert, history) => editor?.replaceRange(from, to, insert, history),
   });
   const vocabulary = languageVocabulary();
-  const help = new HelpPanel(els.help);
+  // The Help panel (the language reference) loads when first opened (issue 22).
+  const openHelpFirst = () => void openHelp();
+  const help = onDemand(async () => {
+    const { HelpPanel } = await import('./studio/help-panel');
+    els.help.opener.removeEventListener('click', openHelpFirst); // the panel listens to its button now
+    return new HelpPanel(els.help);
+  });
+  const openHelp = (anchor?: string) => help().then((panel) => panel.open(anchor)).catch((error: unknown) => console.error('Could not open the help:', error));
+  els.help.opener.addEventListener('click', openHelpFirst);
   const growth = new GrowthPanel(
     els.growthRows,
     els.growthCount,
@@ -101,7 +109,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
       diagnose: (text) => preview.feed.diagnose(text),
       vocabulary,
       onCursor: (pos) => contexts.cursorAt(pos),
-      openReference: (anchor) => void help.open(anchor),
+      openReference: (anchor) => void openHelp(anchor),
     },
     () => import('./editor/grammar-editor'),
   );
@@ -214,11 +222,6 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   });
   connectTestHook(hook, { preview, view, branchEdits });
 
-  // Downloads: the plant on screen (the last good build's text and options, with the edits).
-  installDownloads(els.downloads, view, () => {
-    const good = preview.lastGood;
-    return good && { source: good.source, options: { ...good.options, edits: branchEdits.document() }, name: figureName(opening.currentFile, good.source) };
-  });
 
   // Keyboard: shortcuts anywhere, their help, the splitter.
   const actions: Record<ShortcutAction, () => void> = {
@@ -232,7 +235,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
     stages: () => (stages.open ? stages.close() : stages.show()),
     fullscreen: () => layout.toggleViewOnly(),
     large: () => layout.setLarge(!layout.large),
-    help: () => void help.open(),
+    help: () => void openHelp(),
   };
   installShortcuts(window, (action) => actions[action]());
   renderShortcutHelp(els.shortcutList);
@@ -247,10 +250,19 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   await Promise.race([firstBuild, underWay.then(() => delay(1000))]);
   await nextFrame();
   firstLoadDone();
+  // Downloads: the plant on screen (the last good build's text and options, with the edits); the
+  // menu's code loads after the first plant (issue 22).
+  const downloadsInstalled = import('./studio/download-menu').then(({ installDownloads }) =>
+    installDownloads(els.downloads, view, () => {
+      const good = preview.lastGood;
+      return good && { source: good.source, options: { ...good.options, edits: branchEdits.document() }, name: figureName(opening.currentFile, good.source) };
+    }),
+  );
   const editorLoaded = grammarEditor.loaded;
   await firstBuild;
   await editorLoaded;
   await view.controlsReady; // the mouse moves the camera (the OrbitControls load after the first plant's frame)
+  await downloadsInstalled;
 }
 
 /** `make`, called on the first use and kept (a failure is tried again on the next use). */

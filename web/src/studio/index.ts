@@ -56,8 +56,10 @@ export { browserDatabase, browserStorage } from './browser-storage';
 export { installFileMenu, type FileMenuActions, type FileMenuElements } from './file-menu';
 export { installDrop } from './file-drop';
 export { closeLikeAMenu } from './menus';
-export { installDownloads, showExportStatus, type DownloadedPlant, type DownloadMenuElements, type ExportState } from './download-menu';
+// download-menu is not re-exported: main.ts loads it after the first plant.
+export type { DownloadedPlant, DownloadMenuElements, ExportState } from './download-menu';
 export { connectTestHook, emptyTestHook, type StudioTestHook, type TestedStudio } from './test-hook';
 export { reportCoreCrashes } from './core-crashes';
 export { installAppUpdates, type RegisterServiceWorker } from './app-update';
-export { HelpPanel, fetchReference, type HelpPanelElements } from './help-panel';
+// help-panel is not re-exported: main.ts loads it when the Help panel is first opened.
+export type { HelpPanelElements } from './help-panel';
