@@ -5,6 +5,7 @@ import { registerSW } from 'virtual:pwa-register';
 import { coreVersion, initCore, languageVocabulary } from './core';
 import { createLazyGrammarEditor, type GrammarEditor } from './editor/grammar-text';
 import { growthAttributes } from './editor/growth-directives';
+import { INITIAL_EXAMPLE } from './studio/initial-example';
 import { KeptTexts } from './share/kept-texts';
 import { GrammarStore } from './share/storage';
 import { PlantView } from './view';
@@ -17,8 +18,6 @@ import {
   startingText, studioElements, installAppUpdates, type ShortcutAction, type StudioElements, type StudioTestHook,
 } from './studio';
 
-/** The example shown at start (in public/examples). */
-const INITIAL_EXAMPLE = 'abop-1.24d.lsys';
 
 /** `firstLoadDone` is called when what the first plant downloads has arrived (the rest may load then). */
 async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadDone: () => void): Promise<void> {
