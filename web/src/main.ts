@@ -262,6 +262,9 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   await editorLoaded;
   await view.controlsReady; // the mouse moves the camera (the OrbitControls load after the first plant's frame)
   await downloadsInstalled;
+  // The dialogs load now, in the background, so that the first click opens one at once (a failure
+  // here is tried again by that click).
+  await Promise.all([gallery(), library(), shareDialog(), help()].map((made) => made.catch(() => undefined)));
 }
 
 /** `make`, called on the first use and kept (a failure is tried again on the next use). */

@@ -7,6 +7,8 @@ import type { CoreMessage } from './worker-protocol';
 import workerUrl from './worker.ts?worker&url';
 
 let early: Worker | undefined;
+/** The studio asked for its first worker: a boot script that runs later starts none. */
+let asked = false;
 
 /**
  * Starts the real build worker (vite bundles worker.ts as a module worker next to the page). A
@@ -30,13 +32,18 @@ export function startBuildWorker(): Worker {
   return worker;
 }
 
-/** Starts the build worker early (the boot script); the studio adopts it with {@link takeEarlyBuildWorker}. */
+/**
+ * Starts the build worker early (the boot script); the studio adopts it with
+ * {@link takeEarlyBuildWorker}. Nothing when the studio has already started its own (its script
+ * ran first: no network to wait for).
+ */
 export function startEarlyBuildWorker(): void {
-  early ??= startBuildWorker();
+  if (!asked) early ??= startBuildWorker();
 }
 
 /** The worker {@link startEarlyBuildWorker} started, once (later calls: undefined). */
 export function takeEarlyBuildWorker(): Worker | undefined {
+  asked = true;
   const worker = early;
   early = undefined;
   return worker;
