@@ -11,11 +11,12 @@
 //   (tests/browser/vitest.config.ts).
 import { fileURLToPath } from 'node:url';
 import { VitePWA } from 'vite-plugin-pwa';
-import type { Plugin } from 'vite';
+import type { HtmlTagDescriptor, Plugin } from 'vite';
 import { defineConfig } from 'vitest/config';
 import { galleryManifestPlugin } from './scripts/gallery-plugin.ts';
 import { lessonsPlugin } from './scripts/lessons-plugin.ts';
 import { referencePlugin } from './scripts/reference-plugin.ts';
+import { INITIAL_EXAMPLE } from './web/src/studio/initial-example.ts';
 
 const repoRoot = fileURLToPath(new URL('.', import.meta.url));
 
@@ -59,7 +60,10 @@ function offlineApp() {
 
 /**
  * The first load (issue 22): index.html and embed.html ask for the core's wasm at once (a preload,
- * fetched with the page's script rather than after it has run), the fetch `coreModule()` makes.
+ * fetched with the page's script rather than after it has run), the fetch `coreModule()` makes;
+ * index.html also runs the boot script (web/src/boot.ts: the core compiles and the build worker
+ * starts while the studio's script still downloads) and preloads the example the studio opens
+ * with (`INITIAL_EXAMPLE` of web/src/main.ts), which it fetches when there is no text to restore.
  */
 function preloadCore(): Plugin {
   return {
@@ -68,9 +72,17 @@ function preloadCore(): Plugin {
     transformIndexHtml: {
       order: 'post',
       handler(_html, context) {
-        const wasm = Object.keys(context.bundle ?? {}).find((file) => /meristem_core_bg-[^/]*\.wasm$/.test(file));
+        const files = Object.keys(context.bundle ?? {});
+        const wasm = files.find((file) => /meristem_core_bg-[^/]*\.wasm$/.test(file));
         if (!wasm) return [];
-        return [{ tag: 'link', attrs: { rel: 'preload', href: `./${wasm}`, as: 'fetch', type: 'application/wasm', crossorigin: '' }, injectTo: 'head' }];
+        const tags: HtmlTagDescriptor[] = [{ tag: 'link', attrs: { rel: 'preload', href: `./${wasm}`, as: 'fetch', type: 'application/wasm', crossorigin: '' }, injectTo: 'head' }];
+        const boot = files.find((file) => /^assets\/boot-[^/]*\.js$/.test(file));
+        if (context.filename.endsWith('index.html') && boot) {
+          // async: it runs once it has arrived, not after the studio's script (module scripts run in order).
+          tags.push({ tag: 'script', attrs: { type: 'module', async: true, src: `./${boot}` }, injectTo: 'head' });
+          tags.push({ tag: 'link', attrs: { rel: 'preload', href: `examples/${INITIAL_EXAMPLE}`, as: 'fetch', crossorigin: '' }, injectTo: 'head' });
+        }
+        return tags;
       },
     },
   };
@@ -98,6 +110,8 @@ export default defineConfig({
         index: `${repoRoot}web/index.html`,
         embed: `${repoRoot}web/embed.html`,
         'meristem-plant': `${repoRoot}web/src/embed/element.ts`,
+        // The studio page's boot script (issue 22): preloadCore puts it in index.html.
+        boot: `${repoRoot}web/src/boot.ts`,
       },
       output: {
         entryFileNames: (chunk) => (chunk.name === 'meristem-plant' ? 'meristem-plant.js' : 'assets/[name]-[hash].js'),
@@ -105,6 +119,9 @@ export default defineConfig({
     },
     // three.js + CodeMirror are one ~1 MB chunk by nature; there is nothing to split off yet.
     chunkSizeWarningLimit: 1500,
+    // Every browser the studio runs in (WebAssembly, module workers) knows modulepreload: no
+    // polyfill, one request fewer before the first plant (issue 22).
+    modulePreload: { polyfill: false },
   },
   test: {
     root: repoRoot,

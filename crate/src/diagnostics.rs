@@ -104,7 +104,7 @@ impl<'a> LineIndex<'a> {
 pub fn locate_all(source: &str, diagnostics: &[Diagnostic]) -> Vec<LocatedDiagnostic> {
     let index = LineIndex::new(source);
     let mut located: Vec<_> = diagnostics.iter().map(|d| index.locate(d)).collect();
-    located.sort_by_key(|d| (d.from, d.to));
+    crate::sort::sort_by_key(&mut located, |d| (d.from, d.to));
     located
 }
 

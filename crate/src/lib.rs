@@ -15,6 +15,7 @@ pub mod import;
 pub mod mesh;
 pub mod model;
 pub mod pipeline;
+pub mod sort;
 pub mod syntax;
 pub mod turtle;
 pub mod vocabulary;

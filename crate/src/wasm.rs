@@ -11,11 +11,13 @@
 //! before the call traps, so the studio can say what failed and start a fresh core.
 #![deny(clippy::unwrap_used)]
 
+#[cfg(feature = "studio-extras")]
 use crate::branches::{parse_edits, write_edits, DragError, NO_BRANCH};
 #[cfg(feature = "io")]
 use crate::export::{self, Format};
 use crate::mesh::MeshOptions;
 use crate::pipeline::{self, BuildOptions, Hooks, Progress, Stage};
+#[cfg(feature = "io")]
 use serde::Deserialize;
 use std::cell::RefCell;
 use wasm_bindgen::prelude::*;
@@ -77,9 +79,11 @@ extern "C" {
     fn console_error(message: &str);
 }
 
-/// [`BuildOptionsObject`] as read.
-#[derive(Default, Deserialize)]
-#[serde(rename_all = "camelCase")]
+/// [`BuildOptionsObject`] as read (serde's `Deserialize` only for the `exportModel` options that
+/// flatten it in).
+#[derive(Default)]
+#[cfg_attr(feature = "io", derive(Deserialize))]
+#[cfg_attr(feature = "io", serde(rename_all = "camelCase"))]
 struct BuildOptionsFields {
     iterations: Option<u32>,
     seed: Option<f64>,
@@ -144,20 +148,93 @@ impl BuildOptionsFields {
     }
 }
 
-/// Reads an options object (`undefined` and `null` are no options).
-fn read<T: for<'de> Deserialize<'de> + Default>(value: &JsValue) -> Result<T, JsError> {
-    if value.is_undefined() || value.is_null() {
-        return Ok(T::default());
-    }
-    serde_wasm_bindgen::from_value(value.clone())
-        .map_err(|e| JsError::new(&format!("bad options: {e}")))
-}
-
-#[derive(Default, Deserialize)]
-#[serde(rename_all = "camelCase")]
+/// [`ViewOptionsObject`] as read.
+#[derive(Default)]
 struct ViewOptionsFields {
     sides: Option<u32>,
     smooth_all: Option<bool>,
+}
+
+impl BuildOptionsFields {
+    /// Reads a `BuildOptions` object (`undefined` and `null` are no options).
+    fn read(value: &JsValue) -> Result<Self, JsError> {
+        let Some(object) = OptionsObject::of(value) else {
+            return Ok(Self::default());
+        };
+        Ok(Self {
+            iterations: object.whole("iterations")?,
+            seed: object.number("seed")?,
+            sides: object.whole("sides")?,
+            smooth_all: object.flag("smoothAll")?,
+            sketch: object.flag("sketch")?,
+        })
+    }
+}
+
+impl ViewOptionsFields {
+    /// Reads a `ViewOptions` object (`undefined` and `null` are no options).
+    fn read(value: &JsValue) -> Result<Self, JsError> {
+        let Some(object) = OptionsObject::of(value) else {
+            return Ok(Self::default());
+        };
+        Ok(Self {
+            sides: object.whole("sides")?,
+            smooth_all: object.flag("smoothAll")?,
+        })
+    }
+}
+
+/// An options object of the first plant's calls (`build`, `remesh`), read field by field with
+/// `Reflect.get` rather than serde (issue 22, the first load: serde's deserializer and its error
+/// messages were KBs of the first plant's wasm). A field that is `undefined` or `null` is not
+/// given; other fields are ignored.
+struct OptionsObject<'a>(&'a JsValue);
+
+impl<'a> OptionsObject<'a> {
+    /// `None` for `undefined` and `null`: no options.
+    fn of(value: &'a JsValue) -> Option<Self> {
+        (!value.is_undefined() && !value.is_null()).then_some(Self(value))
+    }
+
+    fn field(&self, name: &str) -> Result<Option<JsValue>, JsError> {
+        let value = js_sys::Reflect::get(self.0, &JsValue::from_str(name))
+            .map_err(|_| JsError::new("bad options: not an object"))?;
+        Ok((!value.is_undefined() && !value.is_null()).then_some(value))
+    }
+
+    fn number(&self, name: &str) -> Result<Option<f64>, JsError> {
+        self.field(name)?
+            .map(|v| {
+                v.as_f64()
+                    .ok_or_else(|| JsError::new(&format!("bad options: {name} must be a number")))
+            })
+            .transpose()
+    }
+
+    fn whole(&self, name: &str) -> Result<Option<u32>, JsError> {
+        self.number(name)?
+            .map(|x| {
+                if x.fract() == 0.0 && (0.0..=f64::from(u32::MAX)).contains(&x) {
+                    Ok(x as u32)
+                } else {
+                    Err(JsError::new(&format!(
+                        "bad options: {name} must be a whole number from 0 to {}",
+                        u32::MAX
+                    )))
+                }
+            })
+            .transpose()
+    }
+
+    fn flag(&self, name: &str) -> Result<Option<bool>, JsError> {
+        self.field(name)?
+            .map(|v| {
+                v.as_bool().ok_or_else(|| {
+                    JsError::new(&format!("bad options: {name} must be true or false"))
+                })
+            })
+            .transpose()
+    }
 }
 
 thread_local! {
@@ -221,7 +298,7 @@ pub fn build(
     clock: Option<js_sys::Function>,
     progress: Option<js_sys::Function>,
 ) -> Result<PlantBuild, JsError> {
-    let options = read::<BuildOptionsFields>(options)?.options();
+    let options = BuildOptionsFields::read(options)?.options();
     Ok(build_reading(
         source,
         &options,
@@ -230,6 +307,7 @@ pub fn build(
     ))
 }
 
+#[cfg(feature = "studio-extras")]
 /// `build(source, { iterations, sketch: true })`: the entry point of the shared benchmark
 /// harness's turtle workload (`../shared/bench/js/meristem-peer.mjs`).
 #[wasm_bindgen(js_name = buildSketch)]
@@ -576,7 +654,7 @@ impl PlantBuild {
     /// Meshes the plant again with other view options (no new derivation); the arrays and stats
     /// change.
     pub fn remesh(&mut self, options: &ViewOptionsObject) -> Result<(), JsError> {
-        let view = read::<ViewOptionsFields>(options)?;
+        let view = ViewOptionsFields::read(options)?;
         self.build
             .remesh(&MeshOptions::view(view.sides, view.smooth_all));
         Ok(())
@@ -590,6 +668,7 @@ impl PlantBuild {
     }
 
     /// Starts editing the plant's branches (the plant is meshed once more to record its layout).
+    #[cfg(feature = "studio-extras")]
     #[wasm_bindgen(js_name = intoEditor)]
     pub fn into_editor(self) -> PlantEditor {
         PlantEditor {
@@ -606,6 +685,7 @@ pub struct PlantInspector {
 
 #[wasm_bindgen]
 impl PlantInspector {
+    #[cfg(feature = "studio-extras")]
     /// Explains production `production` on the last step; `undefined` before the first step, for
     /// an unknown index, or on a runtime error.
     pub fn explain(&self, production: u32) -> Option<Explanation> {
@@ -613,6 +693,7 @@ impl PlantInspector {
         Some(Explanation { inner: explained })
     }
 
+    #[cfg(feature = "studio-extras")]
     /// Explains how module `module` of the derived string was made (the production that wrote it,
     /// the contexts of that rewriting); `undefined` when it was copied or before the first step.
     #[wasm_bindgen(js_name = explainModule)]
@@ -633,6 +714,7 @@ impl PlantInspector {
         serde_json::to_string(&texts).unwrap_or_else(|_| "[]".into())
     }
 
+    #[cfg(feature = "studio-extras")]
     /// Why production `production` did or did not rewrite the module that module `module` of the
     /// derived string comes from, as JSON (`MatchReport`: `{production, module, moduleText,
     /// predecessor, left, right, condition, rewrittenBy}`, contexts as `{matched, modules,
@@ -648,6 +730,7 @@ impl PlantInspector {
         serde_json::to_string(&report).ok()
     }
 
+    #[cfg(feature = "studio-extras")]
     /// The whole derivation, step 0 to the last, as JSON `[{texts, parent, origin}]` (each step's
     /// modules as written, and for each the module of the step before it comes from and the
     /// production that wrote it), when all the steps' strings hold `max_modules` modules or fewer
@@ -705,12 +788,14 @@ impl PlantInspector {
     }
 }
 
+#[cfg(feature = "studio-extras")]
 /// Why and where one production fired in the last step. Module indices name the derived string.
 #[wasm_bindgen]
 pub struct Explanation {
     inner: pipeline::Explained,
 }
 
+#[cfg(feature = "studio-extras")]
 #[wasm_bindgen]
 impl Explanation {
     /// The production explained (an index into `productions()`).
@@ -757,13 +842,16 @@ impl Explanation {
 }
 
 /// A plant whose branches are being edited (see `crate::branches`).
+#[cfg(feature = "studio-extras")]
 #[wasm_bindgen]
 pub struct PlantEditor {
     editor: pipeline::PlantEditor,
 }
 
+#[cfg(feature = "studio-extras")]
 mesh_getters!(PlantEditor, this => this.editor.plant());
 
+#[cfg(feature = "studio-extras")]
 #[wasm_bindgen]
 impl PlantEditor {
     /// The path of each branch, as JSON: `[[0], [0, 0], [0, 1], …]` (branch `i` is entry `i`).
@@ -915,13 +1003,14 @@ impl PlantEditor {
 
     /// Meshes the edited plant again with other view options.
     pub fn remesh(&mut self, options: &ViewOptionsObject) -> Result<(), JsError> {
-        let view = read::<ViewOptionsFields>(options)?;
+        let view = ViewOptionsFields::read(options)?;
         self.editor
             .remesh(&MeshOptions::view(view.sides, view.smooth_all));
         Ok(())
     }
 }
 
+#[cfg(feature = "studio-extras")]
 impl PlantEditor {
     /// The values of the changed vertices in `array` (`width` floats per vertex), range after
     /// range.
@@ -937,6 +1026,7 @@ impl PlantEditor {
     }
 }
 
+#[cfg(feature = "studio-extras")]
 /// A parsed and resolved grammar derived many times, without the turtle and mesh stages: the
 /// benchmarks' entry point (`npm run bench`, `../shared/bench/js/meristem-peer.mjs`).
 #[wasm_bindgen]
@@ -944,6 +1034,7 @@ pub struct Grammar {
     model: crate::model::Model,
 }
 
+#[cfg(feature = "studio-extras")]
 #[wasm_bindgen]
 impl Grammar {
     /// Parses and resolves `source`; `undefined` when it has errors (use [`build`] to see them).

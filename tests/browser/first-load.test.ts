@@ -1,8 +1,8 @@
 // The first load (issue 22): what the studio downloads until the first plant is on screen, gzipped
 // as a static host serves it, against the budget; and the time to that first plant on a slow
 // network (Chromium's DevTools "Fast 3G": 562.5 ms round trip, 1.6 Mbit/s down, 750 kbit/s up),
-// recorded in test-results/first-load.json for the README (a measurement, with a loose guard
-// against regressions, not issue 22's 4 s target).
+// recorded in test-results/first-load.json for the README (a measurement, with a guard against
+// regressions: issue 22's 4 s is met on a quiet machine, not reliably on a loaded one).
 import { readFileSync, writeFileSync } from 'node:fs';
 import { gzipSync } from 'node:zlib';
 import { chromium, type Browser } from 'playwright-core';
@@ -11,18 +11,18 @@ import { RESULTS } from './studio-page';
 import { serveStatic, type StaticSite } from './static-server';
 
 /**
- * Script + wasm + styles of the first paint of a plant, gzipped (bytes). Issue 22 asks for 400 KB
- * and the studio does not reach it yet: 486 KB on 2026-11-25 (three.js 146 KB and the core's wasm
- * 267 KB are 413 KB on their own; README "The first load" says what is left to do), then 506 KB
- * once issue 19's robustness work merged into the core (serde_json's float_roundtrip, 10 KB: an
- * edits document reads back exactly the numbers it was written with; the monotone sweep for big
- * polygons and the drag checks). This guards what it reaches, a ratchet to lower towards 400 KB,
- * never to raise without a reason. The editor
- * (CodeMirror) loads after the first plant and is not part of it.
+ * Script + wasm + styles of the first paint of a plant, gzipped (bytes): issue 22's 400 KB. 399 KB
+ * on 2026-11-26 (README "The first load": the first plant's core 201 KB, three.js and the view 156
+ * KB, the studio and the core's glue 30 KB, the build worker 6 KB, styles 6 KB). What the first plant does without
+ * loads on demand or after its frame; a change that needs more here takes it from elsewhere.
  */
-const BUDGET = 510_000;
-/** Time to the first plant on "Fast 3G": issue 22 asks for 4 s; 4.5 s measured (README). A guard against a regression (the core downloaded twice, a blocking fetch), not the target. */
-const FAST_3G_GUARD_MS = 7_000;
+const BUDGET = 400_000;
+/**
+ * Time to the first plant on "Fast 3G": issue 22 asks for 4 s; 3.7 to 4.6 s measured on the shared
+ * 2-core machine (README, median 4.1 s), so not a stable bound there. A guard against a regression (the core
+ * downloaded twice, a blocking fetch, the worker started late), not the target.
+ */
+const FAST_3G_GUARD_MS = 5_500;
 const SUB_PATH = '/first/load/';
 const DIST = new URL('../../dist/', import.meta.url);
 const FAST_3G = { offline: false, latency: 562.5, downloadThroughput: (1.6 * 1024 * 1024 * 0.9) / 8, uploadThroughput: (750 * 1024 * 0.9) / 8 };
@@ -42,9 +42,10 @@ afterAll(async () => {
 
 /**
  * Opens the studio in a fresh context (no cache, no service worker); returns the site files it
- * (the page and its workers) asked for before the first plant arrived, and the time to that plant.
+ * (the page and its workers) asked for before the first plant arrived, those it asked for more than
+ * once, and the time to that plant.
  */
-async function firstPlant(throttle: boolean): Promise<{ files: string[]; millis: number }> {
+async function firstPlant(throttle: boolean): Promise<{ files: string[]; twice: string[]; millis: number }> {
   const context = await browser.newContext({ viewport: { width: 1280, height: 800 }, serviceWorkers: 'block' });
   const page = await context.newPage();
   const requests: { file: string; at: number }[] = [];
@@ -61,7 +62,9 @@ async function firstPlant(throttle: boolean): Promise<{ files: string[]; millis:
   // (the editor, after the first frame) is not part of the first load, however slow the poll above.
   const at = (await page.evaluate(() => window.__meristem?.firstPlantAt)) ?? start + millis;
   await context.close();
-  return { files: [...new Set(requests.filter((r) => r.at <= at).map((r) => r.file))].sort(), millis };
+  const asked = requests.filter((r) => r.at <= at).map((r) => r.file);
+  const twice = asked.filter((file, k) => asked.indexOf(file) !== k);
+  return { files: [...new Set(asked)].sort(), twice, millis };
 }
 
 /** The gzipped size of a file of dist/. */
@@ -71,7 +74,9 @@ function gzipped(file: string): number {
 
 describe('the first load', () => {
   it(`needs at most ${BUDGET / 1000} KB of script, wasm and styles (gzipped) for the first plant`, async () => {
-    const { files } = await firstPlant(false);
+    const { files, twice } = await firstPlant(false);
+    // The preloads (the core, the opening example) and the boot script's worker are used, not fetched again.
+    expect(twice, 'asked for twice').toEqual([]);
     const counted = files.filter((f) => /\.(js|mjs|wasm|css)$/.test(f));
     const sizes = Object.fromEntries(counted.map((f) => [f, gzipped(f)]));
     const total = Object.values(sizes).reduce((a, b) => a + b, 0);

@@ -10,7 +10,6 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import {
   applyMeshUpdate,
   DragRefused,
-  editPlant,
   exportModel,
   exportModelWithProgress,
   initCore,
@@ -21,6 +20,8 @@ import {
   type PlantEditor,
   type Vec3,
 } from '../../web/src/core';
+// Not in the core's index: the page loads it on the first edit (loadBranchEditing, issue 22).
+import { editPlant } from '../../web/src/core/branch-editor';
 
 const repoRoot = fileURLToPath(new URL('../..', import.meta.url));
 const GAME_TREE = readFileSync(new URL('../../public/examples/game-tree.lsys', import.meta.url), 'utf8');

@@ -3,7 +3,7 @@ import { readdirSync, readFileSync } from 'node:fs';
 import { beforeAll, describe, expect, it } from 'vitest';
 import { initCore } from '../../web/src/core';
 import { decodeText, lsysFileName, MAX_FILE_BYTES, openGrammarBytes, openObjectBytes } from '../../web/src/studio/grammar-files';
-import { linkWithFragment } from '../../web/src/studio/share-dialog';
+import { linkWithFragment } from '../../web/src/studio/share-button';
 
 beforeAll(async () => {
   await initCore(readFileSync(new URL('../../crate/pkg-core/meristem_core_bg.wasm', import.meta.url)));

@@ -5,20 +5,19 @@ import { registerSW } from 'virtual:pwa-register';
 import { coreVersion, initCore, languageVocabulary } from './core';
 import { createLazyGrammarEditor, type GrammarEditor } from './editor/grammar-text';
 import { growthAttributes } from './editor/growth-directives';
+import { INITIAL_EXAMPLE } from './studio/initial-example';
 import { KeptTexts } from './share/kept-texts';
 import { GrammarStore } from './share/storage';
 import { PlantView } from './view';
 import {
-  Autosave, BranchEditSession, BuildClient, ContextView, DerivationControls, GalleryDialog, GalleryThumbnails, GrowthPanel,
-  LazyDerivationView, EmbedSnippets, HelpPanel, installLearnPanel, LibraryDialog, LinkState, LivePreview, Notice, ShareDialog, SliderPanel, StagesMode, TextOpening,
+  Autosave, BranchEditSession, BuildClient, ContextView, DerivationControls, GrowthPanel,
+  LazyDerivationView, installLearnPanel, LinkState, LivePreview, Notice, SliderPanel, LazyStagesMode, TextOpening,
   TextKeeper, ViewFollowing, ViewOptions, ViewTools, attachSplitter, browserDatabase, browserStorage, createImportWorker, connectTestHook, createBuildWorker, emptyTestHook, fetchExample,
-  figureName, installDownloads, installDrop, installInspectorTabs, LayoutModes,
+  figureName, installDrop, installInspectorTabs, LayoutModes,
   installFileMenu, installShareButton, installShortcuts, openPastedLinks, readGrammarFile, readObjectFiles, renderShortcutHelp, reportCoreCrashes, showStatus, sidesChoices,
   startingText, studioElements, installAppUpdates, type ShortcutAction, type StudioElements, type StudioTestHook,
 } from './studio';
 
-/** The example shown at start (in public/examples). */
-const INITIAL_EXAMPLE = 'abop-1.24d.lsys';
 
 /** `firstLoadDone` is called when what the first plant downloads has arrived (the rest may load then). */
 async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadDone: () => void): Promise<void> {
@@ -79,7 +78,15 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
     replaceRange: (from, to, insert, history) => editor?.replaceRange(from, to, insert, history),
   });
   const vocabulary = languageVocabulary();
-  const help = new HelpPanel(els.help);
+  // The Help panel (the language reference) loads when first opened (issue 22).
+  const openHelpFirst = () => void openHelp();
+  const help = onDemand(async () => {
+    const { HelpPanel } = await import('./studio/help-panel');
+    els.help.opener.removeEventListener('click', openHelpFirst); // the panel listens to its button now
+    return new HelpPanel(els.help);
+  });
+  const openHelp = (anchor?: string) => help().then((panel) => panel.open(anchor)).catch((error: unknown) => console.error('Could not open the help:', error));
+  els.help.opener.addEventListener('click', openHelpFirst);
   const growth = new GrowthPanel(
     els.growthRows,
     els.growthCount,
@@ -101,7 +108,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
       diagnose: (text) => preview.feed.diagnose(text),
       vocabulary,
       onCursor: (pos) => contexts.cursorAt(pos),
-      openReference: (anchor) => void help.open(anchor),
+      openReference: (anchor) => void openHelp(anchor),
     },
     () => import('./editor/grammar-editor'),
   );
@@ -124,8 +131,8 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   // The view follows the plant; Play shows the growth in one frame (or frames every step).
   const following = new ViewFollowing(els.following, view, () => preview.lastGood);
   following.follow(derivation.playback);
-  // Stages: the iterations side by side, grown in a worker of their own.
-  const stages = new StagesMode(els.stages, {
+  // Stages: the iterations side by side, grown in a worker of their own (loaded when first turned on).
+  const stages = new LazyStagesMode(els.stages, {
     shown: () => preview.lastGood,
     createClient: () => new BuildClient(createBuildWorker),
     lighting: () => viewOptions.values.lighting,
@@ -160,13 +167,21 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
     },
     start,
   );
-  const gallery = new GalleryDialog(els.gallery, els.galleryList, new GalleryThumbnails(fetchExample), (entry) => opening.openExample(entry), () => opening.currentFile);
-  const openGallery = () => void gallery.open().catch((error: unknown) => console.error('Could not open the gallery:', error));
+  // The gallery and My grammars load when first opened (issue 22: the first plant needs neither).
+  const gallery = onDemand(async () => {
+    const [{ GalleryDialog }, { GalleryThumbnails }] = await Promise.all([import('./studio/gallery-dialog'), import('./studio/thumbnails')]);
+    return new GalleryDialog(els.gallery, els.galleryList, new GalleryThumbnails(fetchExample), (entry) => opening.openExample(entry), () => opening.currentFile);
+  });
+  const openGallery = () => void gallery().then((dialog) => dialog.open()).catch((error: unknown) => console.error('Could not open the gallery:', error));
   els.openGallery.addEventListener('click', openGallery);
   installLearnPanel({ preview, open: (text, title, key) => opening.replace(text, title, key) }); // lessons (issue 17), loaded on first use
   if (start.from === 'link') void autosave.save(start.text); // the link's text is now the work in progress
-  const library = new LibraryDialog(els.library, store, kept, { text: () => grammarEditor.text(), open: (entry, key) => opening.openSaved(entry, key) });
-  installFileMenu(els.fileMenu, { openFiles: (files) => opening.openPicked(files), text: () => grammarEditor.text(), openLibrary: () => library.open() });
+  const library = onDemand(async () => {
+    const { LibraryDialog } = await import('./studio/library-dialog');
+    return new LibraryDialog(els.library, store, kept, { text: () => grammarEditor.text(), open: (entry, key) => opening.openSaved(entry, key) });
+  });
+  const openLibrary = () => void library().then((dialog) => dialog.open()).catch((error: unknown) => console.error('Could not open My grammars:', error));
+  installFileMenu(els.fileMenu, { openFiles: (files) => opening.openPicked(files), text: () => grammarEditor.text(), openLibrary });
   installDrop(els.studio, (files, name) => opening.openFiles(files, name));
 
   // Branch editing (issue 8): the plant on screen with its edits, handles in Edit mode.
@@ -187,8 +202,18 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   // Share links: the whole state in the link's fragment; the page's own link, and pasted ones.
   const link = new LinkState({ editor: grammarEditor, derivation, sliders, viewOptions, view, branchEdits, preview });
   if (start.state) link.restore(start.state); // iterations, seed, edits, camera (its view options apply already)
-  const snippets = new EmbedSnippets(els.embedSnippets, new URL('./', location.href).href);
-  installShareButton(els.share, new ShareDialog(els.shareDialog), () => link.capture(), notice, (state, fragment) => snippets.show(state, fragment));
+  // The Share dialog and its embed snippets load with the first share (issue 22).
+  const shareDialog = onDemand(async () => {
+    const [{ ShareDialog }, { EmbedSnippets }] = await Promise.all([import('./studio/share-dialog'), import('./studio/embed-snippets')]);
+    return { dialog: new ShareDialog(els.shareDialog), snippets: new EmbedSnippets(els.embedSnippets, new URL('./', location.href).href) };
+  });
+  installShareButton(
+    els.share,
+    () => shareDialog().then((made) => made.dialog),
+    () => link.capture(),
+    notice,
+    (state, fragment) => void shareDialog().then((made) => made.snippets.show(state, fragment)),
+  );
   openPastedLinks({ notice, opening, link, buildNow: () => preview.rebuild(true) });
 
   preview.onDelivered((result) => {
@@ -196,11 +221,6 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   });
   connectTestHook(hook, { preview, view, branchEdits });
 
-  // Downloads: the plant on screen (the last good build's text and options, with the edits).
-  installDownloads(els.downloads, view, () => {
-    const good = preview.lastGood;
-    return good && { source: good.source, options: { ...good.options, edits: branchEdits.document() }, name: figureName(opening.currentFile, good.source) };
-  });
 
   // Keyboard: shortcuts anywhere, their help, the splitter.
   const actions: Record<ShortcutAction, () => void> = {
@@ -214,7 +234,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
     stages: () => (stages.open ? stages.close() : stages.show()),
     fullscreen: () => layout.toggleViewOnly(),
     large: () => layout.setLarge(!layout.large),
-    help: () => void help.open(),
+    help: () => void openHelp(),
   };
   installShortcuts(window, (action) => actions[action]());
   renderShortcutHelp(els.shortcutList);
@@ -229,9 +249,32 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   await Promise.race([firstBuild, underWay.then(() => delay(1000))]);
   await nextFrame();
   firstLoadDone();
+  // Downloads: the plant on screen (the last good build's text and options, with the edits); the
+  // menu's code loads after the first plant (issue 22).
+  const downloadsInstalled = import('./studio/download-menu').then(({ installDownloads }) =>
+    installDownloads(els.downloads, view, () => {
+      const good = preview.lastGood;
+      return good && { source: good.source, options: { ...good.options, edits: branchEdits.document() }, name: figureName(opening.currentFile, good.source) };
+    }),
+  );
   const editorLoaded = grammarEditor.loaded;
   await firstBuild;
   await editorLoaded;
+  await view.controlsReady; // the mouse moves the camera (the OrbitControls load after the first plant's frame)
+  await downloadsInstalled;
+  // The dialogs load now, in the background, so that the first click opens one at once (a failure
+  // here is tried again by that click).
+  await Promise.all([gallery(), library(), shareDialog(), help()].map((made) => made.catch(() => undefined)));
+}
+
+/** `make`, called on the first use and kept (a failure is tried again on the next use). */
+function onDemand<T>(make: () => Promise<T>): () => Promise<T> {
+  let made: Promise<T> | undefined;
+  return () =>
+    (made ??= make().catch((error: unknown) => {
+      made = undefined;
+      throw error;
+    }));
 }
 
 /** Settles after `ms` milliseconds. */

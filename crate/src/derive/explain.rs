@@ -120,7 +120,7 @@ pub fn explain(
         }
     }
     for list in [&mut explanation.left, &mut explanation.right] {
-        list.sort_unstable();
+        crate::sort::sort(list);
         list.dedup();
     }
     Ok(explanation)

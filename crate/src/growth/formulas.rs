@@ -83,7 +83,7 @@ pub fn share_survivors(survivors: u32, probabilities: [f64; 3], counts: [u32; 3]
     let mut share = ideal.map(|x| x.floor() as u32);
     let mut left = n.saturating_sub(share.iter().sum());
     let mut by_remainder = [0usize, 1, 2];
-    by_remainder.sort_by(|&a, &b| {
+    crate::sort::sort_by(&mut by_remainder, |&a, &b| {
         let (ra, rb) = (ideal[a] - ideal[a].floor(), ideal[b] - ideal[b].floor());
         rb.total_cmp(&ra).then(a.cmp(&b))
     });
@@ -102,7 +102,9 @@ pub fn share_survivors(survivors: u32, probabilities: [f64; 3], counts: [u32; 3]
         }
     }
     let mut by_probability = [0usize, 1, 2];
-    by_probability.sort_by(|&a, &b| p[b].total_cmp(&p[a]).then(a.cmp(&b)));
+    crate::sort::sort_by(&mut by_probability, |&a, &b| {
+        p[b].total_cmp(&p[a]).then(a.cmp(&b))
+    });
     for k in by_probability {
         let give = (counts[k] - share[k]).min(excess);
         share[k] += give;

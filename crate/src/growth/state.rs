@@ -224,11 +224,11 @@ pub fn plan<R: rand::Rng + ?Sized>(
                 report.stopped[k] += 1;
             }
             apices.truncate(keep);
-            apices.sort_unstable();
+            crate::sort::sort(apices);
         }
     }
     let mut growing: Vec<usize> = live.iter().flatten().copied().collect();
-    growing.sort_unstable();
+    crate::sort::sort(&mut growing);
     for i in growing {
         if let (Some(speed), Some((mean, variance))) = (&attributes.speed, values.speed) {
             times[i] = rewritings(

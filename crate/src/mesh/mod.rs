@@ -267,9 +267,11 @@ pub fn resolve_width_unit(skeleton: &Skeleton, unit: WidthUnit) -> f64 {
                 return relative;
             }
             let middle = lengths.len() / 2;
-            let (_, median, _) = lengths.select_nth_unstable_by(middle, f64::total_cmp);
-            if *median > 0.0 && median.is_finite() {
-                relative.min(DEFAULT_WIDTH_PER_LENGTH * *median)
+            // Sorted whole (crate::sort, no second sort algorithm in the wasm), then the middle.
+            crate::sort::sort_by(&mut lengths, f64::total_cmp);
+            let median = lengths[middle];
+            if median > 0.0 && median.is_finite() {
+                relative.min(DEFAULT_WIDTH_PER_LENGTH * median)
             } else {
                 relative
             }

@@ -95,7 +95,7 @@ fn monotone_diagonals(p: &[DVec2]) -> Vec<(u32, u32)> {
     };
     let kinds: Vec<Kind> = (0..n).map(kind).collect();
     let mut order: Vec<u32> = (0..n as u32).collect();
-    order.sort_unstable_by(|&a, &b| {
+    crate::sort::sort_by(&mut order, |&a, &b| {
         let (a, b) = (p[a as usize], p[b as usize]);
         b.y.total_cmp(&a.y).then(a.x.total_cmp(&b.x))
     });
@@ -217,7 +217,7 @@ fn faces(p: &[DVec2], diagonals: &[(u32, u32)]) -> Option<Vec<Vec<u32>>> {
     for (i, list) in around.iter_mut().enumerate() {
         if list.len() > 2 {
             let c = p[i];
-            list.sort_by(|x, y| {
+            crate::sort::sort_by(list, |x, y| {
                 let (dx, dy) = (p[x.0 as usize] - c, p[y.0 as usize] - c);
                 dx.y.atan2(dx.x).total_cmp(&dy.y.atan2(dy.x))
             });
@@ -283,7 +283,7 @@ fn triangulate_monotone(p: &[DVec2], face: &[u32], out: &mut Vec<[u32; 3]>) {
         k = (k + 1) % m;
     }
     let mut order: Vec<usize> = (0..m).collect();
-    order.sort_unstable_by(|&a, &b| {
+    crate::sort::sort_by(&mut order, |&a, &b| {
         let (a, b) = (pt(a), pt(b));
         b.y.total_cmp(&a.y).then(a.x.total_cmp(&b.x))
     });

@@ -62,7 +62,7 @@ pub fn joint_keys(skeleton: &Skeleton) -> Vec<[u64; 3]> {
         .iter()
         .map(|s| super::key(s.end))
         .collect();
-    joints.sort_unstable();
+    crate::sort::sort(&mut joints);
     joints
 }
 
@@ -73,7 +73,7 @@ pub fn start_keys(skeleton: &Skeleton) -> Vec<[u64; 3]> {
         .iter()
         .map(|s| super::key(s.start))
         .collect();
-    starts.sort_unstable();
+    crate::sort::sort(&mut starts);
     starts
 }
 

@@ -49,7 +49,7 @@ fn declared_modules(lines: &[(usize, &str)]) -> Vec<String> {
             }
         }
     }
-    declared.sort_by_key(|name| std::cmp::Reverse(name.len()));
+    crate::sort::sort_by_key(&mut declared, |name| std::cmp::Reverse(name.len()));
     declared
 }
 

@@ -100,7 +100,7 @@ impl<'a> ModuleScanner<'a> {
             .map(|m| m.name)
             .filter(|n| n.starts_with('@'))
             .collect();
-        at_names.sort_by_key(|n| std::cmp::Reverse(n.len()));
+        crate::sort::sort_by_key(&mut at_names, |n| std::cmp::Reverse(n.len()));
         ModuleScanner {
             declared,
             at_names,

@@ -1,10 +1,8 @@
 // Editing a plant's branches by their Bézier handles (issue 8): the facade over the core's branch
 // editor (crate/src/branches). A branch is a run of segments along one axis between branching
 // points; its path is its root's index, then child indices (docs/LANGUAGE.md, "Branches").
-import { type PlantEditor as WasmPlantEditor } from '../../../crate/pkg-core/meristem_core.js';
-import { copyMesh, plainBuild, runBuild } from './build';
-import { guarded, ownedArray } from './init';
-import type { BuildOptions, MeshBuffers, PlantBuild, PlantStats } from './types';
+// The editor itself (`editPlant`) is in ./branch-editor.ts, loaded on the first edit.
+import type { MeshBuffers, PlantStats } from './types';
 
 /**
  * A drag the core refused, changing nothing: its target is further from the handle's place than
@@ -111,23 +109,6 @@ export interface PlantEditor {
   free(): void;
 }
 
-/**
- * Builds `source` like `buildPlant` and keeps the build alive behind a {@link PlantEditor}.
- * Starting to edit meshes the plant once more (to record where each part lies), so the first
- * editor call costs about one mesh stage. Requires `initCore`.
- */
-export function editPlant(source: string, options: BuildOptions = {}): { build: PlantBuild; editor: PlantEditor } {
-  const result = runBuild(source, options);
-  let plain: PlantBuild;
-  try {
-    plain = plainBuild(source, result);
-  } catch (error) {
-    result.free();
-    throw error;
-  }
-  return { build: plain, editor: new LiveEditor(guarded(() => result.intoEditor())) };
-}
-
 /** The empty edits document. */
 export function noEdits(): EditsDocument {
   return { version: EDITS_VERSION, edits: [] };
@@ -228,124 +209,4 @@ export function validateEdits(value: unknown): { ok: true; document: EditsDocume
     clean.push({ path: [...path], handles: handles.map((h) => [h[0], h[1], h[2]]) as [Vec3, Vec3, Vec3] });
   }
   return { ok: true, document: { version: EDITS_VERSION, edits: clean } };
-}
-
-/** A {@link PlantEditor} over the core's `PlantEditor` on this thread. */
-class LiveEditor implements PlantEditor {
-  private tree: BranchInfo[] | undefined;
-  private byPath: Map<string, number> | undefined;
-  private triangleRanges: Uint32Array | undefined;
-  private triangles = 0;
-
-  constructor(private core: WasmPlantEditor) {}
-
-  branches(): BranchInfo[] {
-    if (!this.tree) {
-      const paths = JSON.parse(guarded(() => this.core.branchPaths())) as number[][];
-      const parents = guarded(() => this.core.branchParents());
-      const tree: BranchInfo[] = paths.map((path, index) => ({
-        index,
-        path,
-        parent: parents[index] === 0xffffffff ? null : parents[index],
-        children: [],
-      }));
-      for (const b of tree) if (b.parent !== null) tree[b.parent].children.push(b.index);
-      this.tree = tree;
-      this.byPath = new Map(tree.map((b) => [b.path.join(','), b.index]));
-    }
-    return this.tree;
-  }
-
-  findBranch(path: readonly number[]): number | null {
-    this.branches();
-    return this.byPath?.get(path.join(',')) ?? null;
-  }
-
-  controlPoints(): Float32Array {
-    return ownedArray(guarded(() => this.core.branchControlPoints()));
-  }
-
-  joints(branch: number): Float32Array {
-    return ownedArray(guarded(() => this.core.branchJoints(branch)));
-  }
-
-  parameters(branch: number): Float32Array {
-    return ownedArray(guarded(() => this.core.branchParameters(branch)));
-  }
-
-  branchAt(triangle: number): number | null {
-    if (!this.triangleRanges) {
-      this.triangleRanges = ownedArray(guarded(() => this.core.branchRanges()));
-      this.triangles = (JSON.parse(guarded(() => this.core.stats())) as PlantStats).triangles;
-    }
-    const r = this.triangleRanges;
-    // The last range whose first triangle is at or before `triangle`.
-    let lo = 0;
-    let hi = r.length / 2 - 1;
-    if (hi < 0 || !Number.isInteger(triangle) || triangle < r[0] || triangle >= this.triangles) return null;
-    while (lo < hi) {
-      const mid = (lo + hi + 1) >> 1;
-      if (r[2 * mid] <= triangle) lo = mid;
-      else hi = mid - 1;
-    }
-    const branch = r[2 * lo + 1];
-    return branch === 0xffffffff ? null : branch;
-  }
-
-  drag(branch: number, handle: Handle, position: Vec3): MeshUpdate {
-    let full: boolean;
-    try {
-      full = guarded(() => this.core.drag(branch, handle, position[0], position[1], position[2]));
-    } catch (error) {
-      if (error instanceof Error && error.name === 'DragRefused') throw new DragRefused(error.message);
-      throw error;
-    }
-    return this.update(full);
-  }
-
-  applyEdits(document: EditsDocument): { report: EditReport; update: MeshUpdate } {
-    const report = JSON.parse(guarded(() => this.core.applyEdits(JSON.stringify(document)))) as EditReport;
-    return { report, update: this.update(true) };
-  }
-
-  edits(): EditsDocument {
-    return JSON.parse(guarded(() => this.core.edits())) as EditsDocument;
-  }
-
-  mesh(): MeshBuffers {
-    return copyMesh(this.core);
-  }
-
-  free(): void {
-    this.core.free();
-  }
-
-  private update(full: boolean): MeshUpdate {
-    const core = this.core;
-    const stats = JSON.parse(guarded(() => core.stats())) as PlantStats;
-    if (full) {
-      this.triangleRanges = undefined;
-      const mesh = copyMesh(core);
-      return {
-        full,
-        reason: guarded(() => core.changeReason()) ?? null,
-        ranges: Uint32Array.of(0, mesh.positions.length / 3),
-        positions: mesh.positions,
-        normals: mesh.normals,
-        uvs: mesh.uvs,
-        mesh,
-        stats,
-      };
-    }
-    return guarded(() => ({
-      full,
-      reason: null,
-      ranges: ownedArray(core.changedRanges()),
-      positions: ownedArray(core.changedPositions()),
-      normals: ownedArray(core.changedNormals()),
-      uvs: ownedArray(core.changedUvs()),
-      mesh: null,
-      stats,
-    }));
-  }
 }

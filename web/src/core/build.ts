@@ -1,12 +1,12 @@
 // The facade over the core's `build`: one call, plain data out, the wasm object freed (or turned
 // into the inspector or the editor that mirror it).
-import {
-  build,
-  type Explanation as WasmExplanation,
-  type PlantBuild as WasmPlantBuild,
-  type PlantEditor as WasmPlantEditor,
-  type PlantInspector as WasmPlantInspector,
-} from '../../../crate/pkg-core/meristem_core.js';
+import { build, type PlantBuild as WasmPlantBuild, type PlantInspector as WasmPlantInspector } from '../../../crate/pkg-core/meristem_core.js';
+import type {
+  build as studioBuildType,
+  Explanation as WasmExplanation,
+  PlantEditor as WasmPlantEditor,
+  PlantInspector as StudioPlantInspector,
+} from '../../../crate/pkg/meristem.js';
 import { utf16Offsets } from './offsets';
 import { assertReady, guarded, ownedArray } from './init';
 import {
@@ -58,11 +58,31 @@ export function buildPlant(source: string, options: BuildOptions = {}): PlantBui
   }
 }
 
+/** The studio core's `build` (crate/pkg), once {@link useStudioCore} gave it. */
+let studioBuild: typeof studioBuildType | undefined;
+
+/**
+ * Makes {@link inspectPlant} build with the whole boundary's module (crate/pkg, already
+ * instantiated), whose inspectors also explain, report matches and trace the derivation: what
+ * the first plant's core leaves out (issue 22). Called by ./studio-core.ts.
+ */
+export function useStudioCore(core: typeof studioBuildType): void {
+  studioBuild = core;
+}
+
+/** Whether {@link inspectPlant}'s inspectors answer every question (the studio core is in use). */
+export function studioCoreInUse(): boolean {
+  return studioBuild !== undefined;
+}
+
 /**
  * Like {@link buildPlant}, and also keeps the core's derivation alive behind a
  * {@link PlantInspector} (explanations, module texts) until its `free` is called. `onProgress`
  * is told each stage as it starts and each derivation step as it ends (the core calls it while it
- * works, so it can only post messages, not wait for an answer).
+ * works, so it can only post messages, not wait for an answer). Built by the first plant's core,
+ * the inspector gives module texts and the last step's links, and throws on the questions only
+ * the studio core answers (`explain`, `explainModule`, `matchReport`, `sequence`): after
+ * `loadStudioCore`, every inspector answers them all.
  */
 export function inspectPlant(
   source: string,
@@ -70,7 +90,8 @@ export function inspectPlant(
   sketch?: SketchRequest,
   onProgress?: (progress: BuildProgress) => void,
 ): { build: PlantBuild; inspector: PlantInspector } {
-  const result = sketch ? runSketched(source, options, sketch, onProgress) : runBuild(source, options, onProgress);
+  const core: (...args: Parameters<typeof build>) => WasmPlantBuild = studioBuild ?? build;
+  const result = sketch ? runSketched(core, source, options, sketch, onProgress) : runBuildWith(core, source, options, onProgress);
   let plain: PlantBuild;
   try {
     plain = plainBuild(source, result);
@@ -105,8 +126,14 @@ export interface SketchRequest {
  * sketch handed to `request.show` when the plant is big, then the tubes (`remesh` with the view
  * options, the very mesh a plain build makes). The mesh stage's time is the remesh's.
  */
-function runSketched(source: string, options: BuildOptions, request: SketchRequest, onProgress?: (progress: BuildProgress) => void): WasmPlantBuild {
-  const result = runBuild(source, { ...options, sketch: true }, onProgress);
+function runSketched(
+  core: (...args: Parameters<typeof build>) => WasmPlantBuild,
+  source: string,
+  options: BuildOptions,
+  request: SketchRequest,
+  onProgress?: (progress: BuildProgress) => void,
+): WasmPlantBuild {
+  const result = runBuildWith(core, source, { ...options, sketch: true }, onProgress);
   try {
     if (result.ok) {
       const segments = (JSON.parse(result.stats()) as PlantStats).segments;
@@ -130,11 +157,19 @@ const meshMillis = new WeakMap<WasmPlantBuild, number>();
 
 /** Runs the core's `build` (for this folder's facades; the caller frees the result). */
 export function runBuild(source: string, options: BuildOptions & { sketch?: boolean }, onProgress?: (progress: BuildProgress) => void): WasmPlantBuild {
+  return runBuildWith(build, source, options, onProgress);
+}
+
+/**
+ * Runs `core`, the `build` of either core module (the first plant's, or the whole boundary's for
+ * what only it has: branch editing, ./branches.ts). The caller frees the result.
+ */
+export function runBuildWith<B>(core: (...args: Parameters<typeof build>) => B, source: string, options: BuildOptions & { sketch?: boolean }, onProgress?: (progress: BuildProgress) => void): B {
   assertReady();
   const { iterations, seed, sides, smoothAll, sketch } = options;
   const progress = onProgress && ((stage: BuildStage, step: number, steps: number) => onProgress({ stage, step, steps }));
   // The core reads no clock: it reads ours between its stages.
-  return guarded(() => build(source, { iterations, seed, sides, smoothAll, sketch }, () => performance.now(), progress));
+  return guarded(() => core(source, { iterations, seed, sides, smoothAll, sketch }, () => performance.now(), progress));
 }
 
 interface RawProduction {
@@ -217,20 +252,35 @@ function toExplanation(explained: WasmExplanation | undefined): Explanation | nu
   }
 }
 
+/** The questions only the studio core's inspector answers (feature `studio-extras`). */
+type StudioQuestions = Pick<StudioPlantInspector, 'explain' | 'explainModule' | 'matchReport' | 'sequence'>;
+
+/** An inspector of either core module: the first plant's has none of {@link StudioQuestions}. */
+type AnyWasmInspector = WasmPlantInspector & Partial<StudioQuestions>;
+
 /** A {@link PlantInspector} over the core's `PlantInspector` on this thread. */
 class LiveInspector implements PlantInspector {
   constructor(
-    private result: WasmPlantInspector | undefined,
+    private result: AnyWasmInspector | undefined,
     private readonly moduleCount: number,
   ) {}
 
+  /** The core's inspector for a studio question; throws when it was built by the first plant's core. */
+  private studio(): Partial<StudioQuestions> {
+    const result = this.result;
+    if (result && !result.explain) throw new Error('this plant was built by the first plant\'s core: load the studio core (loadStudioCore) and build it again');
+    return result ?? {};
+  }
+
   explain(production: number): Promise<Explanation | null> {
-    return Promise.resolve(toExplanation(guarded(() => this.result?.explain(production))));
+    const core = this.studio();
+    return Promise.resolve(toExplanation(guarded(() => core.explain?.(production))));
   }
 
   explainModule(module: number): Promise<Explanation | null> {
     if (!Number.isInteger(module) || module < 0) return Promise.resolve(null);
-    return Promise.resolve(toExplanation(guarded(() => this.result?.explainModule(module))));
+    const core = this.studio();
+    return Promise.resolve(toExplanation(guarded(() => core.explainModule?.(module))));
   }
 
   moduleTexts(start: number, count: number): Promise<string[]> {
@@ -247,12 +297,14 @@ class LiveInspector implements PlantInspector {
 
   matchReport(production: number, module: number): Promise<MatchReport | null> {
     if (!Number.isInteger(module) || module < 0) return Promise.resolve(null);
-    const json = guarded(() => this.result?.matchReport(production, module));
+    const core = this.studio();
+    const json = guarded(() => core.matchReport?.(production, module));
     return Promise.resolve(json ? (JSON.parse(json) as MatchReport) : null);
   }
 
   sequence(maxModules: number): Promise<DerivationStep[] | null> {
-    const json = guarded(() => this.result?.sequence(maxModules));
+    const core = this.studio();
+    const json = guarded(() => core.sequence?.(maxModules));
     return Promise.resolve(json ? (JSON.parse(json) as DerivationStep[]) : null);
   }
 

@@ -2,7 +2,9 @@
 // Invariant: no other TypeScript imports crate/pkg; everything else uses these names.
 export { initCore, coreModule, coreVersion, CoreCrashed } from './init';
 export { initIo } from './io';
-export { buildPlant, inspectPlant, type PlantSketch, type SketchRequest } from './build';
+export { loadBranchEditing, type EditPlant } from './editing';
+export { buildPlant, inspectPlant, studioCoreInUse, type PlantSketch, type SketchRequest } from './build';
+export { loadStudioCore } from './studio-core-loader';
 export {
   exportModel,
   exportModelWithProgress,
@@ -36,7 +38,6 @@ export { importGrammar, importObject, type Dialect, type ImportedGrammar, type I
 export {
   applyMeshUpdate,
   DragRefused,
-  editPlant,
   noEdits,
   validateEdits,
   type BranchEdit,

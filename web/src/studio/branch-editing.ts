@@ -8,9 +8,10 @@
 import {
   applyMeshUpdate,
   DragRefused,
-  editPlant,
+  loadBranchEditing,
   noEdits,
   type BuildOptions,
+  type EditPlant,
   type EditReport,
   type EditsDocument,
   type Handle,
@@ -75,6 +76,10 @@ export class BranchEditSession {
   private press = { x: 0, y: 0, handle: false };
   /** The last report of edits that do not apply (shown in the notice). */
   private stale = '';
+  /** Counts attaches and drops: an attach that waited for the core goes on only if it is the last. */
+  private attachments = 0;
+  /** Branch editing's `editPlant`, once loaded (its core module is not the first plant's). */
+  private editPlant: EditPlant | undefined;
 
   constructor(
     private readonly els: BranchEditingElements,
@@ -169,7 +174,11 @@ export class BranchEditSession {
     this.showButtons();
   }
 
-  /** Builds the editor for the plant on screen and shows it with the edits applied. */
+  /**
+   * Builds the editor for the plant on screen and shows it with the edits applied. Branch editing
+   * is in the core module with the importers and exporters, which the first plant does without:
+   * the first call loads it, then attaches unless the plant or the mode changed meanwhile.
+   */
   private attach(): void {
     const shown = this.host.shown();
     if (!shown || shown.segments > MAX_EDITABLE_SEGMENTS) {
@@ -178,6 +187,18 @@ export class BranchEditSession {
       }
       this.editing = false;
       this.showButtons();
+      return;
+    }
+    const editPlant = this.editPlant;
+    if (!editPlant) {
+      const waiting = ++this.attachments;
+      loadBranchEditing().then(
+        (loaded) => {
+          this.editPlant = loaded;
+          if (waiting === this.attachments && !this.editor && (this.editing || this.doc.edits.length > 0)) this.attach();
+        },
+        (error: unknown) => this.host.tell('error', `Branch editing could not be loaded: ${String(error)}`),
+      );
       return;
     }
     const { editor } = editPlant(shown.source, shown.options);
@@ -191,6 +212,7 @@ export class BranchEditSession {
   }
 
   private dropEditor(): void {
+    this.attachments++; // an attach still loading the core is for a plant no longer shown
     this.editor?.free();
     this.editor = undefined;
     this.mesh = undefined;

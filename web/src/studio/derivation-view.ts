@@ -5,6 +5,7 @@
 // module of step n − 1 beside the substring of step n it became, virtualised. Hovering a module
 // says where it came from and which rule wrote it, and lights up in the 3D view the part of the
 // plant that grew from it and in the editor the production.
+import './derivation-view.css';
 import { NOT_REWRITTEN, type DerivationStep, type PlantBuild, type PlantInspector } from '../core';
 import { cssColour, PRODUCTION_COLOURS } from '../view/highlight';
 import { shortModuleText } from './module-text';

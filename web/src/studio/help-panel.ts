@@ -2,6 +2,7 @@
 // built) in a side panel beside the studio, so the grammar stays editable while it is open. It is
 // loaded when it first opens; the toolbar's Help button and F1 open it, hover docs open it at the
 // row of a module or directive, Escape or Close closes it and gives the focus back.
+import './help-panel.css';
 import { REFERENCE_PATH } from '../editor/reference';
 import { focusableCode } from './focusable-code';
 

@@ -10,8 +10,8 @@ export { SliderPanel, sliderRanges, type SliderRange, type SliderEditor } from '
 export { Playback, type PlaybackHost, type PlaybackOptions } from './playback';
 export { attachSplitter, clampShare, shareAfterKey } from './splitter';
 export { installShortcuts, renderShortcutHelp, shortcutFor, SHORTCUTS, type Shortcut, type ShortcutAction } from './shortcuts';
-export { GalleryDialog, fetchExample, fetchManifest } from './gallery';
-export { GalleryThumbnails } from './thumbnails';
+export { fetchExample, fetchManifest } from './gallery';
+// gallery-dialog and library-dialog are not re-exported: main.ts loads them when first opened.
 export { galleryManifest, parseExampleHeader, isGalleryManifest, type GalleryEntry } from './gallery-manifest';
 export { ABOP_CHAPTERS, abopChapterHeading } from './chapters';
 export type { LearnElements, LearnHost } from './learn-panel'; // the panel itself loads on first use (learn-loader.ts)
@@ -28,16 +28,20 @@ export { LayoutModes, type LayoutElements, type LayoutHost } from './layout-mode
 export { afterPaint, figureName, fileSize, pictureSize, saveFile, PICTURE_MAX, PICTURE_MIN, type PictureSize } from './downloads';
 export { createExportWorker, describeProgress, runExport, type ExportOutcome, type ExportRequest, type ExportResponse, type RunningExport } from './export-client';
 export { Notice, type NoticeElements, type NoticeKind } from './notice';
-export { EmbedSnippets, elementSnippet, frameSnippet, type EmbedSnippetElements, type SnippetControls } from './embed-snippets';
-export { ShareDialog, installShareButton, linkWithFragment, type ShareDialogElements } from './share-dialog';
-export { LibraryDialog, type LibraryElements, type LibraryHost } from './library-dialog';
+export type { EmbedSnippetElements, SnippetControls } from './embed-snippets';
+export { installShareButton, linkWithFragment } from './share-button';
+// share-dialog and embed-snippets are not re-exported: main.ts loads them with the first share.
+export type { ShareDialogElements } from './share-dialog';
+export type { LibraryElements, LibraryHost } from './library-dialog';
 export { checkGrammarBytes, openGrammarBytes, saveGrammarFile, decodeText, dialectName, lsysFileName, MAX_FILE_BYTES, type OpenedFile } from './grammar-files';
 export { BranchEditSession, MAX_EDITABLE_SEGMENTS, pathText, staleEditsMessage, type BranchEditingElements, type BranchEditingHost } from './branch-editing';
 export { GrowthPanel, type GrowthEditor } from './growth-panel';
 export { byId, studioElements, type StudioElements } from './page-elements';
 export { ViewOptions, DEFAULT_VIEW_OPTIONS, type SharedViewOptions, type ViewOption, type ViewOptionValues, type ViewOptionsListener } from './view-options';
 export { ViewTools, sidesChoices, type ViewToolElements } from './view-tools';
-export { StagesMode, stagesOf, MAX_STAGE_COLUMNS, MAX_STAGE_SEEDS, type StagesElements, type StagesHost } from './stages';
+// stages (the Stages mode) is not re-exported: it loads when first turned on (stages-loader).
+export { LazyStagesMode } from './stages-loader';
+export type { StagesElements, StagesHost } from './stages';
 export { stagesSvg, parseStageSvg, type StageDrawing } from './stages-svg';
 export { ViewFollowing, growthKey, isLastStep, type PlayFraming, type ViewFollowingElements } from './view-following';
 export { DerivationControls, type DerivationElements, type SharedDerivation } from './derivation-controls';
@@ -52,8 +56,10 @@ export { browserDatabase, browserStorage } from './browser-storage';
 export { installFileMenu, type FileMenuActions, type FileMenuElements } from './file-menu';
 export { installDrop } from './file-drop';
 export { closeLikeAMenu } from './menus';
-export { installDownloads, showExportStatus, type DownloadedPlant, type DownloadMenuElements, type ExportState } from './download-menu';
+// download-menu is not re-exported: main.ts loads it after the first plant.
+export type { DownloadedPlant, DownloadMenuElements, ExportState } from './download-menu';
 export { connectTestHook, emptyTestHook, type StudioTestHook, type TestedStudio } from './test-hook';
 export { reportCoreCrashes } from './core-crashes';
 export { installAppUpdates, type RegisterServiceWorker } from './app-update';
-export { HelpPanel, fetchReference, type HelpPanelElements } from './help-panel';
+// help-panel is not re-exported: main.ts loads it when the Help panel is first opened.
+export type { HelpPanelElements } from './help-panel';

@@ -3,6 +3,7 @@
 // with a Check of the plant on screen and a hidden solution; previous and next lesson. A side
 // column beside the studio on wide screens, over it on narrow ones (style.css); not modal, so the
 // editor and the plant stay in reach while a task is worked on. Escape closes it.
+import './learn-panel.css';
 import type { PlantBuild, PlantInspector } from '../core';
 import { chapterHeading, isLesson, isLessonIndex, type Lesson, type LessonGrammar, type LessonSummary, type LessonTask } from './lesson-manifest';
 import { evaluateCheck, parseCheck, plantFacts, spokenAnswer } from './lesson-check';

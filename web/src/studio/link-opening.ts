@@ -10,7 +10,7 @@ import { saveGrammarFile } from './grammar-files';
 import { keptSentence, restoreAutosave, type TextKeeper } from './keeping';
 import type { LinkState } from './link-state';
 import type { Notice } from './notice';
-import { linkWithFragment } from './share-dialog';
+import { linkWithFragment } from './share-button';
 import type { OpenedText, TextOpening } from './text-opening';
 
 /** Where the editor's first text comes from. */

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { decodeState, MAX_FRAGMENT, MAX_TEXT } from '../share/codec';
-import { shareableLink } from './share-dialog';
+import { shareableLink } from './share-button';
 
 /** Text that deflate cannot shrink much: `n` characters of a seeded pseudo-random grammar comment. */
 function incompressible(n: number): string {

@@ -2,10 +2,9 @@
 // hand, and a Copy button that puts it on the clipboard (or says how to copy it where the clipboard
 // is denied). Every link is first opened here with the very decoder that opens it elsewhere: one
 // that would be refused (too long for a link, most often) is never offered; the dialog says why
-// and offers the grammar as a file instead.
-import { decodeState, encodeState, MAX_FRAGMENT, type SharedState } from '../share/codec';
+// and offers the grammar as a file instead. The dialog loads with the first share (issue 22: the
+// first plant needs none of it); the button, and making the link, are ./share-button.ts.
 import { saveGrammarFile } from './grammar-files';
-import type { Notice } from './notice';
 
 /** The dialog's elements (see index.html). */
 export interface ShareDialogElements {
@@ -82,47 +81,4 @@ export class ShareDialog {
     status.dataset.state = copied ? 'copied' : 'manual';
     status.textContent = copied ? 'Link copied to the clipboard.' : 'Select the link and copy it (Ctrl+C).';
   }
-}
-
-/**
- * Makes a link of `state` and opens it as a receiver would: the fragment, or the receiver's reason
- * to refuse it (its grammar is then the thing to share).
- */
-export async function shareableLink(state: SharedState): Promise<{ ok: true; fragment: string } | { ok: false; why: string }> {
-  const fragment = await encodeState(state);
-  const length = fragment.length - 1; // without its '#', as the decoder counts
-  if (length > MAX_FRAGMENT) {
-    return { ok: false, why: `the link would be ${count.format(length)} characters long, and a link holds at most ${count.format(MAX_FRAGMENT)}` };
-  }
-  const decoded = await decodeState(fragment);
-  return decoded.ok ? { ok: true, fragment } : { ok: false, why: decoded.error };
-}
-
-/**
- * The Share button: the studio's state now, `state()`, as a link in the dialog (a failure in the
- * notice); `shared` hears the state and its fragment too (the embed snippets).
- */
-export function installShareButton(
-  button: HTMLButtonElement,
-  dialog: ShareDialog,
-  state: () => SharedState,
-  notice: Notice,
-  shared?: (state: SharedState, fragment: string) => void,
-): void {
-  button.addEventListener('click', () => {
-    const now = state();
-    void shareableLink(now)
-      .then((link) => {
-        if (!link.ok) return dialog.refuse(link.why, now.text);
-        shared?.(now, link.fragment);
-        return dialog.open(linkWithFragment(location, link.fragment));
-      })
-      .catch((error: unknown) => notice.show('error', `Could not make a link: ${String(error)}`));
-  });
-}
-
-/** The studio's address without any fragment, then `fragment`: a link that opens this state. */
-export function linkWithFragment(location: Pick<Location, 'href' | 'hash'>, fragment: string): string {
-  const base = location.hash ? location.href.slice(0, location.href.length - location.hash.length) : location.href.replace(/#$/, '');
-  return base + fragment;
 }

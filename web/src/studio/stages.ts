@@ -3,6 +3,7 @@
 // the figure downloads as one PNG and one SVG. The plants are grown in a build worker of their own
 // (the live preview's keeps serving the editor), one after the other; a change of the grammar, the
 // options or the range starts again and drops what was under way.
+import './stages.css';
 import type { BuildOptions, PlantSketch } from '../core';
 import type { StageScale } from '../view/stages-layout';
 import { StagesView, type StagePlant, type StagesGrid } from '../view/stages-view';

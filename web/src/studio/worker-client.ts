@@ -1,9 +1,9 @@
 // The page's side of the build worker: one request at a time, the newest waiting request only,
 // stale answers never delivered, and a worker stuck on an outdated build replaced.
-import { coreModule, type BuildOptions, type BuildProgress, type DerivationStep, type Explanation, type LastStepLinks, type MatchReport, type PlantBuild, type PlantInspector, type PlantSketch } from '../core';
+import { type BuildOptions, type BuildProgress, type DerivationStep, type Explanation, type LastStepLinks, type MatchReport, type PlantBuild, type PlantInspector, type PlantSketch } from '../core';
 import type { GpuArrays } from '../view/gpu-arrays';
-import type { BuildResponse, CoreMessage, InspectAnswer, InspectQuestion, WorkerRequest, WorkerResponse } from './worker-protocol';
-import workerUrl from './worker.ts?worker&url';
+import type { BuildResponse, InspectAnswer, InspectQuestion, WorkerRequest, WorkerResponse } from './worker-protocol';
+import { startBuildWorker, takeEarlyBuildWorker } from './build-worker-start';
 
 /** What the client needs of a Worker (a fake one in unit tests). */
 export interface WorkerLike {
@@ -76,25 +76,11 @@ interface Entry {
 }
 
 /**
- * Starts the real build worker (vite bundles worker.ts as a module worker next to the page). A
- * page of another site (a plant embedded in a course page) may not start a worker from Meristem's
- * address: it starts one of its own that imports Meristem's (which the site must serve with CORS).
+ * Starts the real build worker (./build-worker-start.ts), or adopts the one the page's boot script
+ * started before the studio's script had arrived (the first call on the studio page: issue 22).
  */
 export function createBuildWorker(): Worker {
-  const url = new URL(workerUrl, import.meta.url);
-  const options: WorkerOptions = { type: 'module', name: 'meristem-build' };
-  let worker: Worker;
-  if (url.origin === location.origin) worker = new Worker(url, options);
-  else {
-    const loader = new Blob([`import ${JSON.stringify(url.href)};`], { type: 'text/javascript' });
-    worker = new Worker(URL.createObjectURL(loader), options);
-  }
-  // Its first message: the core the page compiled (or null: the worker then fetches its own).
-  coreModule().then(
-    (module) => worker.postMessage({ kind: 'core', module } satisfies CoreMessage),
-    () => worker.postMessage({ kind: 'core', module: null } satisfies CoreMessage),
-  );
-  return worker;
+  return takeEarlyBuildWorker() ?? startBuildWorker();
 }
 
 /**

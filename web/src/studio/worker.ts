@@ -6,7 +6,7 @@
 // page frees it; a plant the page still shows after its worker was replaced is built again and
 // kept (`keep`). Started by createBuildWorker
 // (worker-client.ts). A big plant is first sent as a sketch (its segments as lines), then built.
-import { CoreCrashed, initCore, inspectPlant, type BuildProgress, type PlantInspector } from '../core';
+import { CoreCrashed, initCore, inspectPlant, loadStudioCore, studioCoreInUse, type BuildOptions, type BuildProgress, type PlantInspector } from '../core';
 import { packForGpu } from '../view/gpu-arrays';
 import {
   answerTransferables,
@@ -32,19 +32,46 @@ const ready = new Promise<WebAssembly.Module | null>((resolve) => {
   };
   addEventListener('message', first);
 }).then((module) => initCore(module ?? undefined));
-const kept = new Map<number, PlantInspector>();
+/** A kept build: its inspector, what it was built from, and whether the studio core built it. */
+interface Kept {
+  inspector: PlantInspector;
+  source: string;
+  options: BuildOptions;
+  studio: boolean;
+}
+const kept = new Map<number, Kept>();
+
+/**
+ * The questions only the studio core answers (crate/pkg: explanations, match reports, the traced
+ * derivation), which the first plant's core leaves out (issue 22, the first load). The first one
+ * loads the studio core; a build the first plant's core kept is built again with it (the same
+ * text and options give the same derivation), and later builds are made with it.
+ */
+const STUDIO_QUESTIONS: ReadonlySet<InspectQuestion> = new Set<InspectQuestion>(['explain', 'explainModule', 'matchReport', 'sequence']);
 
 function reply(response: WorkerResponse, transfer: Transferable[] = []): void {
   postMessage(response, { transfer });
 }
 
-function keep(id: number, inspector: PlantInspector): void {
-  kept.set(id, inspector);
+function keep(id: number, inspector: PlantInspector, source: string, options: BuildOptions): void {
+  kept.get(id)?.inspector.free();
+  kept.set(id, { inspector, source, options, studio: studioCoreInUse() });
   for (const [oldest, old] of kept) {
     if (kept.size <= MAX_KEPT) break;
-    old.free();
+    old.inspector.free();
     kept.delete(oldest);
   }
+}
+
+/** The inspector of kept build `id` that answers `question`: built again by the studio core if need be. */
+async function inspectorFor(id: number, question: InspectQuestion): Promise<PlantInspector | undefined> {
+  const entry = kept.get(id);
+  if (!entry || entry.studio || !STUDIO_QUESTIONS.has(question)) return entry?.inspector;
+  await loadStudioCore();
+  const again = kept.get(id);
+  if (!again) return undefined; // freed meanwhile
+  if (!again.studio) keep(id, inspectPlant(again.source, again.options).inspector, again.source, again.options);
+  return kept.get(id)?.inspector;
 }
 
 /** What a question answers when its build is gone (freed, or never kept). */
@@ -89,13 +116,13 @@ addEventListener('message', async (event: MessageEvent<WorkerRequest | CoreMessa
     return;
   }
   if (request.kind === 'free') {
-    kept.get(request.build)?.free();
+    kept.get(request.build)?.inspector.free();
     kept.delete(request.build);
     return;
   }
   if (request.kind === 'keep') {
     try {
-      keep(request.build, inspectPlant(request.source, request.options).inspector);
+      keep(request.build, inspectPlant(request.source, request.options).inspector, request.source, request.options);
     } catch (error) {
       // It built before, so this is a bug; its questions get the empty answers.
       console.error('Meristem core failed to build a kept plant again', error);
@@ -105,7 +132,7 @@ addEventListener('message', async (event: MessageEvent<WorkerRequest | CoreMessa
   if (request.kind === 'inspect') {
     let result: InspectAnswer = UNANSWERED[request.question] ?? null;
     try {
-      result = await answer(kept.get(request.build), request.question, request.args);
+      result = await answer(await inspectorFor(request.build, request.question), request.question, request.args);
     } catch (error) {
       console.error('Meristem core failed to answer', request.question, error);
     }
@@ -125,7 +152,7 @@ addEventListener('message', async (event: MessageEvent<WorkerRequest | CoreMessa
       },
       progressTeller(id),
     );
-    keep(id, inspector);
+    keep(id, inspector, source, options);
     const gpu = packForGpu(build.mesh);
     reply({ kind: 'built', id, build, gpu, workerMillis: performance.now() - start }, transferablesOf(build, gpu));
   } catch (error) {

@@ -26,8 +26,8 @@ import {
   WebGLRenderer,
   type Camera,
 } from 'three';
-import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import type { Bounds, MeshBuffers } from '../core';
+import { CameraControls, loadOrbitControls } from './camera-controls';
 import { flatPose, framePose } from './framing';
 import { scenePalette } from './palette';
 import { plantGeometry, pointsBox } from './plant-geometry';
@@ -70,7 +70,7 @@ export interface ViewPose {
 /** One of the two cameras with its controls and whether it has been framed on a plant yet. */
 interface CameraRig<C extends PerspectiveCamera | OrthographicCamera> {
   camera: C;
-  controls: OrbitControls;
+  controls: CameraControls;
   framed: boolean;
 }
 
@@ -149,6 +149,8 @@ export class PlantView {
   private readonly renderListeners = new Set<() => void>();
   /** A plant was given to {@link showPlant} (the textures load after its first frame). */
   private plantShown = false;
+  /** Settles when the OrbitControls are attached (see {@link controlsReady}). */
+  private readonly controlsLoaded: Promise<void>;
 
   /** `assetBase`: the site's root, where the textures are (default: the page's address). */
   constructor(
@@ -180,6 +182,13 @@ export class PlantView {
     this.orthographic.controls.enableRotate = false; // a 2D view pans and zooms
     this.active = this.perspective;
     this.perspective.controls.enabled = true;
+    this.controlsLoaded = plantDrawn.then(loadOrbitControls).then(
+      (Controls) => {
+        this.perspective.controls.attach(Controls);
+        this.orthographic.controls.attach(Controls);
+      },
+      (error: unknown) => console.error('The camera controls could not load:', error),
+    );
     this.scene.add(this.perspective.camera, this.plant, this.lines, this.segmentLines.group, this.overlay, this.handles.group);
     this.container.dataset.projection = 'perspective';
 
@@ -192,12 +201,19 @@ export class PlantView {
 
   private rig<C extends PerspectiveCamera | OrthographicCamera>(camera: C): CameraRig<C> {
     addHeadlight(camera);
-    const controls = new OrbitControls(camera, this.renderer.domElement);
-    controls.enabled = false;
-    controls.addEventListener('change', () => this.requestRender());
-    // 'start' is the user's gesture beginning (never a change made in code).
-    controls.addEventListener('start', () => (this.moved = true));
+    const controls = new CameraControls(camera, this.renderer.domElement, {
+      change: () => this.requestRender(),
+      start: () => (this.moved = true),
+    });
     return { camera, controls, framed: false };
+  }
+
+  /**
+   * Settles when the mouse and touch can move the camera: three's OrbitControls load after the
+   * first frame that drew a plant (issue 22, the first load); the keys work before.
+   */
+  get controlsReady(): Promise<void> {
+    return this.controlsLoaded;
   }
 
   /** The projection in use. */

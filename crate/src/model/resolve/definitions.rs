@@ -199,7 +199,7 @@ fn closure(k: usize, reads: &[Vec<(usize, Span)>], rank: &[usize]) -> Option<Vec
         }
     }
     seen.remove(0);
-    seen.sort_by_key(|&j| rank[j]);
+    crate::sort::sort_by_key(&mut seen, |&j| rank[j]);
     Some(seen.into_iter().map(|j| j as u16).collect())
 }
 

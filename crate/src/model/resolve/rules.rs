@@ -178,7 +178,7 @@ impl Resolver {
                 inconsistent.push((id, *arity, first, span.clone()));
             }
         }
-        inconsistent.sort_by_key(|(_, _, _, span)| span.start);
+        crate::sort::sort_by_key(&mut inconsistent, |(_, _, _, span)| span.start);
         for (id, arity, first, span) in inconsistent {
             self.diagnostics.push(Diagnostic::error(
                 "E0514",

@@ -1,0 +1,13 @@
+// The studio core: the whole boundary's module (crate/pkg) put to use for inspecting builds, so
+// their inspectors explain productions, report matches and trace the derivation (feature
+// `studio-extras`, which the first plant's core leaves out: issue 22). The build worker loads this
+// file on the first such question (`loadStudioCore`); unit tests import it after `initIo`.
+import { build as studioBuild } from '../../../crate/pkg/meristem.js';
+import { useStudioCore } from './build';
+import { initIo } from './io';
+
+/** Instantiates crate/pkg (once, see `initIo`) and makes `inspectPlant` build with it. */
+export async function startStudioCore(): Promise<void> {
+  await initIo();
+  useStudioCore(studioBuild);
+}
