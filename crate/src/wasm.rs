@@ -140,6 +140,7 @@ impl BuildOptionsFields {
             iterations: self.iterations,
             seed: seed.map(|s| s as u64),
             mesh,
+            sketch: self.sketch == Some(true),
         }
     }
 }
@@ -591,7 +592,8 @@ impl PlantBuild {
 
     /// Starts editing the plant's branches (the plant is meshed once more to record its layout).
     #[wasm_bindgen(js_name = intoEditor)]
-    pub fn into_editor(self) -> PlantEditor {
+    pub fn into_editor(mut self) -> PlantEditor {
+        self.build.ensure_skeleton();
         PlantEditor {
             editor: pipeline::PlantEditor::new(self.build.plant),
         }

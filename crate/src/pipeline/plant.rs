@@ -3,7 +3,7 @@
 use crate::derive::Derivation;
 use crate::export::Stats;
 use crate::mesh::{self, MeshBuffers, MeshOptions};
-use crate::turtle::Skeleton;
+use crate::turtle::{Skeleton, Sketch};
 
 /// The geometry of one build.
 #[derive(Clone, Debug, Default)]
@@ -19,6 +19,9 @@ pub struct Plant {
     /// For each module of the string the turtle read, the module of the derived string it came
     /// from (empty when they are the same string): the mesh's provenance names derived modules.
     turtle_origin: Vec<u32>,
+    /// A sketch's plant ([`Plant::sketched`]): the skeleton is not drawn yet, the mesh holds the
+    /// segments as lines; these are the lines' modules and whether the drawing is flat.
+    sketch: Option<(Vec<u32>, bool)>,
 }
 
 impl Plant {
@@ -40,7 +43,50 @@ impl Plant {
         plant
     }
 
-    /// Meshes the skeleton again with other options (the stats follow).
+    /// The plant of a sketch (`BuildOptions::sketch`): its segments as lines in the mesh's line
+    /// arrays, as the lines fallback has them, and no skeleton until
+    /// [`crate::pipeline::Build::ensure_skeleton`] draws it.
+    pub fn sketched(
+        sketch: Sketch,
+        options: &MeshOptions,
+        derivation: &Derivation,
+        steps: u32,
+    ) -> Plant {
+        let flat = sketch.is_flat();
+        let segments = sketch.segments();
+        let lines = sketch.lines;
+        let mesh = MeshBuffers {
+            lines: lines.ends,
+            line_colors: lines.colors,
+            ..MeshBuffers::default()
+        };
+        let modules = derivation.string.len();
+        Plant {
+            stats: Stats::new(modules, segments, steps, &mesh),
+            skeleton: Skeleton::default(),
+            mesh,
+            mesh_options: options.clone(),
+            modules,
+            steps,
+            turtle_origin: derivation.turtle_origin.clone(),
+            sketch: Some((lines.modules, flat)),
+        }
+    }
+
+    /// True for the plant of a sketch whose skeleton is not drawn yet.
+    pub fn is_sketch(&self) -> bool {
+        self.sketch.is_some()
+    }
+
+    /// The skeleton of a sketch's plant, drawn now: the plant is a plain one from here on (its
+    /// mesh is still the sketch's lines until [`Plant::remesh`]).
+    pub(super) fn set_skeleton(&mut self, skeleton: Skeleton) {
+        self.skeleton = skeleton;
+        self.sketch = None;
+    }
+
+    /// Meshes the skeleton again with other options (the stats follow). The skeleton of a
+    /// sketch's plant must be drawn first ([`crate::pipeline::Build::remesh`] does).
     pub fn remesh(&mut self, options: &MeshOptions) {
         self.mesh_options = options.clone();
         self.mesh = mesh::build_mesh(&self.skeleton, options);
@@ -70,7 +116,14 @@ impl Plant {
     /// Every segment as a line (the studio's Lines mode), its module in terms of the derived
     /// string, as the mesh's provenance.
     pub fn segment_lines(&self) -> mesh::SegmentLines {
-        let mut lines = mesh::segment_lines(&self.skeleton);
+        let mut lines = match &self.sketch {
+            Some((modules, _)) => mesh::SegmentLines {
+                ends: self.mesh.lines.clone(),
+                colors: self.mesh.line_colors.clone(),
+                modules: modules.clone(),
+            },
+            None => mesh::segment_lines(&self.skeleton),
+        };
         if !self.turtle_origin.is_empty() {
             for module in &mut lines.modules {
                 *module = self
@@ -85,6 +138,9 @@ impl Plant {
 
     /// True when everything drawn lies in the plane z = 0 ([`Skeleton::is_flat`]).
     pub fn is_flat(&self) -> bool {
-        self.skeleton.is_flat()
+        match &self.sketch {
+            Some((_, flat)) => *flat,
+            None => self.skeleton.is_flat(),
+        }
     }
 }
