@@ -39,6 +39,8 @@ export interface BuildOptions {
 export interface ViewOptions {
   sides?: number;
   smoothAll?: boolean;
+  /** False: no tubes, only leaves, polygons and spheres (the Lines mode draws the segments as lines). */
+  tubes?: boolean;
 }
 /** Options of `exportModel`: the build's, and what to write. */
 export interface ExportOptions extends BuildOptions {
@@ -159,6 +161,17 @@ fn read<T: for<'de> Deserialize<'de> + Default>(value: &JsValue) -> Result<T, Js
 struct ViewOptionsFields {
     sides: Option<u32>,
     smooth_all: Option<bool>,
+    tubes: Option<bool>,
+}
+
+impl ViewOptionsFields {
+    /// The mesh options of a remesh.
+    fn mesh(&self) -> MeshOptions {
+        MeshOptions {
+            tubes: self.tubes.unwrap_or(true),
+            ..MeshOptions::view(self.sides, self.smooth_all)
+        }
+    }
 }
 
 thread_local! {
@@ -578,8 +591,7 @@ impl PlantBuild {
     /// change.
     pub fn remesh(&mut self, options: &ViewOptionsObject) -> Result<(), JsError> {
         let view = read::<ViewOptionsFields>(options)?;
-        self.build
-            .remesh(&MeshOptions::view(view.sides, view.smooth_all));
+        self.build.remesh(&view.mesh());
         Ok(())
     }
 
@@ -918,8 +930,7 @@ impl PlantEditor {
     /// Meshes the edited plant again with other view options.
     pub fn remesh(&mut self, options: &ViewOptionsObject) -> Result<(), JsError> {
         let view = read::<ViewOptionsFields>(options)?;
-        self.editor
-            .remesh(&MeshOptions::view(view.sides, view.smooth_all));
+        self.editor.remesh(&view.mesh());
         Ok(())
     }
 }

@@ -54,6 +54,7 @@ impl Plant {
     ) -> Plant {
         let flat = sketch.is_flat();
         let segments = sketch.segments();
+        let bounds = sketch.line_bounds();
         let lines = sketch.lines;
         let mesh = MeshBuffers {
             lines: lines.ends,
@@ -62,7 +63,15 @@ impl Plant {
         };
         let modules = derivation.string.len();
         Plant {
-            stats: Stats::new(modules, segments, steps, &mesh),
+            stats: Stats {
+                modules,
+                segments,
+                vertices: 0,
+                triangles: 0,
+                lines: segments,
+                iterations: steps,
+                bounds,
+            },
             skeleton: Skeleton::default(),
             mesh,
             mesh_options: options.clone(),

@@ -65,6 +65,18 @@ impl Sketch {
         extent.is_flat()
     }
 
+    /// `[[min x, y, z], [max x, y, z]]` of the lines' ends as stored (`f32`), as
+    /// [`crate::mesh::MeshBuffers::bounds`] finds them (all zeros without a line), without reading
+    /// them again: rounding to `f32` keeps the order, so the box of the rounded ends is the rounded
+    /// box.
+    pub fn line_bounds(&self) -> [[f64; 3]; 2] {
+        if self.lines.ends.is_empty() {
+            return [[0.0; 3]; 2];
+        }
+        let round = |v: DVec3| [v.x as f32 as f64, v.y as f32 as f64, v.z as f32 as f64];
+        [round(self.extent.min), round(self.extent.max)]
+    }
+
     /// As [`Skeleton::clamped`] of the skeleton the same string draws.
     pub fn clamped(&self) -> Option<u32> {
         match (self.clamped, self.others.clamped) {

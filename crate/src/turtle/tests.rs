@@ -367,6 +367,11 @@ fn assert_sketch_draws_the_skeleton(src: &str, tolerance: f32) {
     }
     assert_eq!(sketch.is_flat(), skeleton.is_flat(), "{src}");
     assert_eq!(sketch.clamped(), skeleton.clamped, "{src}");
+    let lines = crate::mesh::MeshBuffers {
+        lines: sketch.lines.ends.clone(),
+        ..Default::default()
+    };
+    assert_eq!(sketch.line_bounds(), lines.bounds(), "{src}");
 }
 
 #[test]
