@@ -339,7 +339,7 @@ const MAX_JOINT_ANGLE_COS: f64 = -0.2;
 /// joint rings, ends are capped), smooth axes as generalized cylinders through their joints,
 /// polygons and predefined surfaces two-sided, spheres. Above `max_vertices` it returns lines.
 pub fn build_mesh(skeleton: &Skeleton, options: &MeshOptions) -> MeshBuffers {
-    build_mesh_with_parts(skeleton, options).0
+    mesh_of(skeleton, options, false).0
 }
 
 /// [`build_mesh`], and where each element of the skeleton landed in the mesh ([`MeshParts`]):
@@ -348,10 +348,24 @@ pub fn build_mesh_with_parts(
     skeleton: &Skeleton,
     options: &MeshOptions,
 ) -> (MeshBuffers, MeshParts) {
+    mesh_of(skeleton, options, true)
+}
+
+/// The mesh, and its parts when `with_parts` (else empty parts: the same mesh, without the
+/// bookkeeping).
+fn mesh_of(
+    skeleton: &Skeleton,
+    options: &MeshOptions,
+    with_parts: bool,
+) -> (MeshBuffers, MeshParts) {
     let unit = resolve_width_unit(skeleton, options.width_unit);
     let mut builder = Builder::new(options, unit);
     let mut parts = MeshParts {
-        segment_chain: vec![parts::NO_CHAIN; skeleton.segments.len()],
+        segment_chain: if with_parts {
+            vec![parts::NO_CHAIN; skeleton.segments.len()]
+        } else {
+            Vec::new()
+        },
         ..MeshParts::default()
     };
     let estimate = builder.estimate(skeleton);
@@ -372,7 +386,8 @@ pub fn build_mesh_with_parts(
         Vec::new()
     };
     let (joints, starts) = if tubes.is_empty() {
-        (Vec::new(), Vec::new())
+        let none = parts::joint_keys(&Skeleton::default());
+        (none, parts::start_keys(&Skeleton::default()))
     } else {
         (parts::joint_keys(skeleton), parts::start_keys(skeleton))
     };
@@ -381,6 +396,9 @@ pub fn build_mesh_with_parts(
         let end_dome = parts::end_dome(&starts, skeleton, &chain);
         let before = builder.mark();
         builder.tube(skeleton, &chain, start_cap, end_dome);
+        if !with_parts {
+            continue;
+        }
         let part = builder.part_since(before);
         let ranges = builder.element_ranges_since(&before);
         for &s in &chain {

@@ -669,4 +669,28 @@ mod tests {
         assert!(!sketch.plant.is_sketch());
         assert!(!sketch.plant.skeleton.segments.is_empty());
     }
+
+    #[test]
+    fn without_tubes_the_bounds_are_the_segments() {
+        let source = "#angle 25\naxiom: X\nX -> F[+X]F[-X]+X\nF -> FF";
+        let options = BuildOptions {
+            iterations: Some(3),
+            ..BuildOptions::default()
+        };
+        let mut result = build(source, &options);
+        let with_tubes = result.plant.stats.clone();
+        result.remesh(&MeshOptions {
+            tubes: false,
+            ..options.mesh.clone()
+        });
+        let stats = &result.plant.stats;
+        assert_eq!((stats.vertices, stats.triangles), (0, 0));
+        assert_eq!(stats.segments, with_tubes.segments);
+        let lines = crate::mesh::MeshBuffers {
+            lines: result.plant.segment_lines().ends,
+            ..Default::default()
+        };
+        assert_eq!(stats.bounds, lines.bounds());
+        assert_ne!(stats.bounds, [[0.0; 3]; 2]);
+    }
 }

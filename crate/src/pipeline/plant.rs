@@ -120,6 +120,32 @@ impl Plant {
             self.steps,
             &self.mesh,
         );
+        if !self.mesh_options.tubes {
+            self.stats.bounds = self.bounds_with_segments();
+        }
+    }
+
+    /// The bounds of the mesh and of the segments as lines (as `f32`, as the lines are drawn):
+    /// what a mesh without tubes shows, with the segments drawn as lines over it.
+    fn bounds_with_segments(&self) -> [[f64; 3]; 2] {
+        let mut min = [f64::INFINITY; 3];
+        let mut max = [f64::NEG_INFINITY; 3];
+        if !self.mesh.positions.is_empty() || !self.mesh.lines.is_empty() {
+            [min, max] = self.stats.bounds;
+        }
+        for s in &self.skeleton.segments {
+            for p in [s.start, s.end] {
+                for (k, v) in p.to_array().into_iter().enumerate() {
+                    let v = v as f32 as f64;
+                    min[k] = min[k].min(v);
+                    max[k] = max[k].max(v);
+                }
+            }
+        }
+        if min[0] > max[0] {
+            return [[0.0; 3]; 2];
+        }
+        [min, max]
     }
 
     /// Every segment as a line (the studio's Lines mode), its module in terms of the derived

@@ -35,7 +35,7 @@ export { checkGrammarBytes, openGrammarBytes, saveGrammarFile, decodeText, diale
 export { BranchEditSession, MAX_EDITABLE_SEGMENTS, pathText, staleEditsMessage, type BranchEditingElements, type BranchEditingHost } from './branch-editing';
 export { GrowthPanel, type GrowthEditor } from './growth-panel';
 export { byId, studioElements, type StudioElements } from './page-elements';
-export { ViewOptions, DEFAULT_VIEW_OPTIONS, type SharedViewOptions, type ViewOption, type ViewOptionValues, type ViewOptionsListener } from './view-options';
+export { ViewOptions, DEFAULT_VIEW_OPTIONS, tubesFor, type SharedViewOptions, type ViewOption, type ViewOptionValues, type ViewOptionsListener } from './view-options';
 export { ViewTools, sidesChoices, type ViewToolElements } from './view-tools';
 export { StagesMode, stagesOf, MAX_STAGE_COLUMNS, MAX_STAGE_SEEDS, type StagesElements, type StagesHost } from './stages';
 export { stagesSvg, parseStageSvg, type StageDrawing } from './stages-svg';
