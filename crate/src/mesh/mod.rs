@@ -386,8 +386,7 @@ fn mesh_of(
         Vec::new()
     };
     let (joints, starts) = if tubes.is_empty() {
-        let none = parts::joint_keys(&Skeleton::default());
-        (none, parts::start_keys(&Skeleton::default()))
+        (Vec::new(), Vec::new())
     } else {
         (parts::joint_keys(skeleton), parts::start_keys(skeleton))
     };
@@ -512,6 +511,7 @@ pub(crate) struct Builder<'a> {
     element: u32,
     /// The material kind the next `range` call stands for.
     material: u32,
+    scratch: tube::TubeScratch,
 }
 
 impl<'a> Builder<'a> {
@@ -531,6 +531,7 @@ impl<'a> Builder<'a> {
             element_ranges: Vec::new(),
             element: parts::NO_CHAIN,
             material: MATERIAL_BARK,
+            scratch: tube::TubeScratch::default(),
         }
     }
 

@@ -55,102 +55,40 @@ pub struct MeshParts {
     pub lines: bool,
 }
 
-/// A set of points as exact keys ([`super::joint_key`]): open addressing with a multiplicative
-/// hash, built in one pass (a sort of a hundred thousand keys took a tenth of the mesh stage).
-pub struct PointSet {
-    /// Power-of-two table; `EMPTY` marks a free slot.
-    slots: Vec<[u64; 3]>,
-    /// Whether the `EMPTY` key itself is in the set.
-    has_empty: bool,
+/// The end joint of every segment as an exact key, sorted: where a chain may start hidden.
+pub fn joint_keys(skeleton: &Skeleton) -> Vec<[u64; 3]> {
+    let mut joints: Vec<[u64; 3]> = skeleton
+        .segments
+        .iter()
+        .map(|s| super::key(s.end))
+        .collect();
+    joints.sort_unstable();
+    joints
 }
 
-impl PointSet {
-    /// A key no finite point has (a NaN pattern): the free slot.
-    const EMPTY: [u64; 3] = [u64::MAX; 3];
-
-    fn new(keys: impl ExactSizeIterator<Item = [u64; 3]>) -> PointSet {
-        let size = (2 * keys.len()).next_power_of_two().max(16);
-        let mut set = PointSet {
-            slots: vec![Self::EMPTY; size],
-            has_empty: false,
-        };
-        for key in keys {
-            set.insert(key);
-        }
-        set
-    }
-
-    #[inline]
-    fn slot(&self, key: &[u64; 3]) -> usize {
-        let h = (key[0].wrapping_mul(0x9E37_79B9_7F4A_7C15)
-            ^ key[1].wrapping_mul(0xC2B2_AE3D_27D4_EB4F)
-            ^ key[2].wrapping_mul(0x1656_67B1_9E37_79F9))
-        .rotate_left(29)
-        .wrapping_mul(0x9E37_79B9_7F4A_7C15);
-        (h >> 32) as usize & (self.slots.len() - 1)
-    }
-
-    fn insert(&mut self, key: [u64; 3]) {
-        if key == Self::EMPTY {
-            self.has_empty = true;
-            return;
-        }
-        let mask = self.slots.len() - 1;
-        let mut i = self.slot(&key);
-        loop {
-            let slot = &mut self.slots[i];
-            if *slot == key {
-                return;
-            }
-            if *slot == Self::EMPTY {
-                *slot = key;
-                return;
-            }
-            i = (i + 1) & mask;
-        }
-    }
-
-    pub fn contains(&self, key: &[u64; 3]) -> bool {
-        if *key == Self::EMPTY {
-            return self.has_empty;
-        }
-        let mask = self.slots.len() - 1;
-        let mut i = self.slot(key);
-        loop {
-            let slot = &self.slots[i];
-            if slot == key {
-                return true;
-            }
-            if *slot == Self::EMPTY {
-                return false;
-            }
-            i = (i + 1) & mask;
-        }
-    }
-}
-
-/// The end joint of every segment as an exact key: where a chain may start hidden.
-pub fn joint_keys(skeleton: &Skeleton) -> PointSet {
-    PointSet::new(skeleton.segments.iter().map(|s| super::key(s.end)))
-}
-
-/// The start point of every segment as an exact key: where a chain's end is rounded.
-pub fn start_keys(skeleton: &Skeleton) -> PointSet {
-    PointSet::new(skeleton.segments.iter().map(|s| super::key(s.start)))
+/// The start point of every segment as an exact key, sorted: where a chain's end is rounded.
+pub fn start_keys(skeleton: &Skeleton) -> Vec<[u64; 3]> {
+    let mut starts: Vec<[u64; 3]> = skeleton
+        .segments
+        .iter()
+        .map(|s| super::key(s.start))
+        .collect();
+    starts.sort_unstable();
+    starts
 }
 
 /// Whether a chain's tube ends in a rounded dome rather than a flat cap: where another segment
 /// starts at its end (branches leave it there), so they grow out of a round joint, not a stump.
-pub fn end_dome(starts: &PointSet, skeleton: &Skeleton, chain: &[u32]) -> bool {
+pub fn end_dome(starts: &[[u64; 3]], skeleton: &Skeleton, chain: &[u32]) -> bool {
     let end = super::key(skeleton.segments[chain[chain.len() - 1] as usize].end);
-    starts.contains(&end)
+    starts.binary_search(&end).is_ok()
 }
 
 /// Whether a chain's tube gets a start cap: not when it starts where a segment ends (a branch
 /// growing out of a joint starts inside its parent's tube).
-pub fn start_cap(joints: &PointSet, skeleton: &Skeleton, chain: &[u32]) -> bool {
+pub fn start_cap(joints: &[[u64; 3]], skeleton: &Skeleton, chain: &[u32]) -> bool {
     let start = super::key(skeleton.segments[chain[0] as usize].start);
-    !joints.contains(&start)
+    joints.binary_search(&start).is_err()
 }
 
 /// The chains (axes cut where widths are zero, joints sharp, smoothness changes or a wide ring

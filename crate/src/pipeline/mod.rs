@@ -233,8 +233,11 @@ impl Build {
         if !self.plant.is_sketch() {
             return;
         }
+        let segments = self.plant.stats.segments;
         let skeleton = match &self.model {
-            Some(model) => turtle::interpret(model, self.derivation.turtle_string()),
+            Some(model) => {
+                turtle::interpret_sized(model, self.derivation.turtle_string(), segments)
+            }
             None => Default::default(),
         };
         self.plant.set_skeleton(skeleton);

@@ -41,6 +41,14 @@ pub fn interpret_adjusted(
     Interpreter::new(model, string, adjustments, None, canvas).run(string)
 }
 
+/// [`interpret`], with room for `segments` segments (a sketch of the same string counted them):
+/// the skeleton's array grows once.
+pub fn interpret_sized(model: &Model, string: &LString, segments: usize) -> Skeleton {
+    let mut canvas = empty_skeleton(&model.settings, false);
+    canvas.segments.reserve_exact(segments);
+    Interpreter::new(model, string, None, None, canvas).run(string)
+}
+
 /// Runs the turtle over `string` drawing only its segments, as lines ([`Sketch`]): line `i` is
 /// segment `i` of [`interpret`]'s skeleton.
 pub fn sketch(model: &Model, string: &LString) -> Sketch {
