@@ -58,10 +58,8 @@ impl Builder<'_> {
                 skeleton,
                 chain,
                 &segments,
-                &scratch.samples,
-                &scratch.rings,
+                &mut scratch,
                 [start_cap, end_dome],
-                (&mut scratch.offsets, &mut scratch.outs),
             );
         }
         self.scratch = scratch;
@@ -166,11 +164,16 @@ impl Builder<'_> {
         skeleton: &Skeleton,
         chain: &[u32],
         segments: &[&Segment],
-        samples: &[AxisSample],
-        rings: &[u32],
+        scratch: &mut TubeScratch,
         [start_cap, end_dome]: [bool; 2],
-        dome_scratch: (&mut Vec<DVec3>, &mut Vec<DVec3>),
     ) {
+        let TubeScratch {
+            samples,
+            rings,
+            offsets,
+            outs,
+            ..
+        } = scratch;
         let n = self.sides as u32;
         // Start cap, facing back along the axis.
         self.element = chain[0];
@@ -203,7 +206,7 @@ impl Builder<'_> {
         let c = skeleton.color(end.color);
         let (point, tangent) = (samples[last].point, samples[last].tangent);
         if end_dome {
-            self.dome(point, tangent, rings[last], c, dome_scratch);
+            self.dome(point, tangent, rings[last], c, (offsets, outs));
         } else {
             self.cap(point, tangent, rings[last], c, false);
         }

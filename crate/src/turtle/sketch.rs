@@ -314,7 +314,7 @@ pub(super) fn plain_sketch(model: &Model, string: &LString, others: Skeleton) ->
                     let b = t.p;
                     // What the skeleton would clamp is left to the interpreter.
                     let big = a.abs().max(b.abs()).max_element().max(t.width);
-                    if !(big <= super::MAX_COORDINATE) {
+                    if !(a.is_finite() && b.is_finite()) || big > super::MAX_COORDINATE {
                         return None;
                     }
                     extent_min = extent_min.min(a).min(b);
