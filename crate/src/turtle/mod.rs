@@ -19,7 +19,7 @@ mod state;
 pub use skeleton::{
     Extent, Polygon, QueryValue, Segment, Skeleton, Sphere, Surface, SurfaceKind, MAX_COORDINATE,
 };
-pub use sketch::Sketch;
+pub use sketch::{SegmentLines, Sketch};
 
 use crate::growth::{Adjustments, Heights};
 use crate::model::{LString, Model};

@@ -14,10 +14,22 @@ use super::skeleton::{
 };
 use super::state::TurtleState;
 use crate::growth::Adjustments;
-use crate::mesh::SegmentLines;
 use crate::model::{LString, Model};
 use crate::vocabulary::Command;
 use glam::DVec3;
+
+/// The segments of a skeleton as lines, in `Skeleton::segments` order: line `i` is segment `i`
+/// (a [`Sketch`]'s, and `crate::mesh::segment_lines`'s of a skeleton).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct SegmentLines {
+    /// `f32` × 3 per line end, two ends per segment (start, end).
+    pub ends: Vec<f32>,
+    /// Linear RGB, `f32` × 3 per line end: the segment's colour at both ends.
+    pub colors: Vec<f32>,
+    /// The module that drew each segment (one per line), as `Segment::module`: an index into the
+    /// string the turtle read.
+    pub modules: Vec<u32>,
+}
 
 /// The segments as lines, with what the sketch needs to say about the rest of the drawing.
 #[derive(Clone, Debug, PartialEq)]
@@ -238,6 +250,10 @@ struct Plain {
 /// the arrays sized by `segments` (an upper bound). `None` when the string has a module the plain
 /// loop leaves to the interpreter, when the grammar bends by tropism, or when a point would be
 /// clamped: [`super::sketch`] then draws with the interpreter.
+///
+/// Long because it is the loop itself, one arm per operation with the frame, the stack and the
+/// output arrays in locals: split into functions, each would take the whole turtle by reference,
+/// which is what this loop exists to avoid.
 pub(super) fn plain_sketch(model: &Model, string: &LString, others: Skeleton) -> Option<Sketch> {
     let settings = &model.settings;
     if settings.tropism.1 != 0.0 {
