@@ -328,14 +328,27 @@ pub(super) fn plain_sketch(model: &Model, string: &LString, others: Skeleton) ->
                 t.p += t.h * length;
                 if draws && length != 0.0 {
                     let b = t.p;
-                    // What the skeleton would clamp is left to the interpreter.
-                    let big = a.abs().max(b.abs()).max_element().max(t.width);
-                    if !(a.is_finite() && b.is_finite()) || big > super::MAX_COORDINATE {
+                    // What the skeleton would clamp (a coordinate or width past MAX_COORDINATE,
+                    // or not a number) is left to the interpreter. Comparisons, not min and max:
+                    // those pay for NaN semantics on every call, and no NaN gets past here.
+                    let limit = DVec3::splat(super::MAX_COORDINATE);
+                    let within = a.abs().cmple(limit) & b.abs().cmple(limit);
+                    if !within.all() || t.width > super::MAX_COORDINATE {
                         return None;
                     }
-                    extent_min = extent_min.min(a).min(b);
-                    extent_max = extent_max.max(a).max(b);
-                    max_abs_z = max_abs_z.max(a.z.abs()).max(b.z.abs());
+                    for p in [a, b] {
+                        for k in 0..3 {
+                            if p[k] < extent_min[k] {
+                                extent_min[k] = p[k];
+                            }
+                            if p[k] > extent_max[k] {
+                                extent_max[k] = p[k];
+                            }
+                        }
+                        if p.z.abs() > max_abs_z {
+                            max_abs_z = p.z.abs();
+                        }
+                    }
                     if t.color != color_index {
                         color_index = t.color;
                         color = sketch.others.color(color_index);
