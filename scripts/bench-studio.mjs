@@ -13,9 +13,12 @@ import { chromium } from 'playwright-core';
 import { preview } from 'vite';
 
 const KEYSTROKES = 16;
+// The flat example is drawn as lines (`auto`), which mesh no tubes: the tube frame is measured with
+// the Tubes mode chosen (the Lines toggle), and the Lines mode as the studio opens.
 const WORKLOADS = [
-  { name: 'ABOP 1.24d, n = 10 (116,050 segments)', iterations: '10' },
-  { name: 'ABOP 1.24d, n = 7 (4,118 segments)', iterations: '' },
+  { name: 'ABOP 1.24d, n = 10 (116,050 segments), Tubes mode', iterations: '10', tubes: true },
+  { name: 'ABOP 1.24d, n = 10, Lines mode (auto, flat)', iterations: '10', tubes: false },
+  { name: 'ABOP 1.24d, n = 7 (4,118 segments), Tubes mode', iterations: '', tubes: true },
 ];
 const SETUPS = {
   'GPU compositing (SwiftShader)': ['--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
@@ -41,6 +44,10 @@ try {
       if (workload.iterations) {
         await page.getByTestId('iterations').fill(workload.iterations);
         await page.waitForFunction((n) => window.__meristem?.lastStats?.iterations === n, Number(workload.iterations), { timeout: 60_000 });
+      }
+      if (workload.tubes) {
+        await page.getByTestId('render-lines').click();
+        await page.waitForFunction(() => (window.__meristem?.lastStats?.vertices ?? 0) > 0, null, { timeout: 60_000 });
       }
       await page.getByTestId('frame').click();
       const stats = await page.evaluate(() => window.__meristem.lastStats);

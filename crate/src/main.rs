@@ -318,6 +318,7 @@ fn main() -> ExitCode {
         iterations: args.iterations,
         seed: args.seed,
         mesh: MeshOptions::view(args.sides, Some(args.smooth_all)),
+        sketch: false,
     };
     match export_target {
         Some(target) => export_file(&args, &source, options, edits, target, &mut hooks),

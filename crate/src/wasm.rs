@@ -41,6 +41,8 @@ export interface BuildOptions {
 export interface ViewOptions {
   sides?: number;
   smoothAll?: boolean;
+  /** False: no tubes, only leaves, polygons and spheres (the Lines mode draws the segments as lines). */
+  tubes?: boolean;
 }
 /** Options of `exportModel`: the build's, and what to write. */
 export interface ExportOptions extends BuildOptions {
@@ -144,6 +146,7 @@ impl BuildOptionsFields {
             iterations: self.iterations,
             seed: seed.map(|s| s as u64),
             mesh,
+            sketch: self.sketch == Some(true),
         }
     }
 }
@@ -153,6 +156,17 @@ impl BuildOptionsFields {
 struct ViewOptionsFields {
     sides: Option<u32>,
     smooth_all: Option<bool>,
+    tubes: Option<bool>,
+}
+
+impl ViewOptionsFields {
+    /// The mesh options of a remesh.
+    fn mesh(&self) -> MeshOptions {
+        MeshOptions {
+            tubes: self.tubes.unwrap_or(true),
+            ..MeshOptions::view(self.sides, self.smooth_all)
+        }
+    }
 }
 
 impl BuildOptionsFields {
@@ -180,6 +194,7 @@ impl ViewOptionsFields {
         Ok(Self {
             sides: object.whole("sides")?,
             smooth_all: object.flag("smoothAll")?,
+            tubes: object.flag("tubes")?,
         })
     }
 }
@@ -655,8 +670,7 @@ impl PlantBuild {
     /// change.
     pub fn remesh(&mut self, options: &ViewOptionsObject) -> Result<(), JsError> {
         let view = ViewOptionsFields::read(options)?;
-        self.build
-            .remesh(&MeshOptions::view(view.sides, view.smooth_all));
+        self.build.remesh(&view.mesh());
         Ok(())
     }
 
@@ -670,7 +684,8 @@ impl PlantBuild {
     /// Starts editing the plant's branches (the plant is meshed once more to record its layout).
     #[cfg(feature = "studio-extras")]
     #[wasm_bindgen(js_name = intoEditor)]
-    pub fn into_editor(self) -> PlantEditor {
+    pub fn into_editor(mut self) -> PlantEditor {
+        self.build.ensure_skeleton();
         PlantEditor {
             editor: pipeline::PlantEditor::new(self.build.plant),
         }
@@ -1004,8 +1019,7 @@ impl PlantEditor {
     /// Meshes the edited plant again with other view options.
     pub fn remesh(&mut self, options: &ViewOptionsObject) -> Result<(), JsError> {
         let view = ViewOptionsFields::read(options)?;
-        self.editor
-            .remesh(&MeshOptions::view(view.sides, view.smooth_all));
+        self.editor.remesh(&view.mesh());
         Ok(())
     }
 }

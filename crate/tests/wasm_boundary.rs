@@ -66,6 +66,7 @@ mod native {
                 iterations: Some(*iterations),
                 seed: Some(*seed),
                 mesh: MeshOptions::view(None, None),
+                sketch: false,
             };
             let b = build(source, &options);
             assert!(b.ok(), "{name}: {:?}", b.diagnostics);

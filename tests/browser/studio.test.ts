@@ -218,11 +218,39 @@ describe('the studio', () => {
     expect(problems).toEqual([]);
   });
 
+  it('meshes no tubes in the Lines mode, and builds them when the Tubes mode is chosen', async () => {
+    const stats = async () =>
+      (await page.evaluate(() => window.__meristem?.lastStats ?? null)) as { vertices: number; triangles: number; segments: number };
+    // The flat example is drawn as lines (auto): its tubes are not meshed (it has no leaves).
+    expect(await page.getByTestId('viewport').getAttribute('data-render')).toBe('lines');
+    const lines = await stats();
+    expect(lines.segments).toBeGreaterThan(0);
+    expect([lines.vertices, lines.triangles], 'no tube meshed in the Lines mode').toEqual([0, 0]);
+    let before = await generation();
+    await page.getByTestId('render-lines').click();
+    expect(await nextBuild(before)).toBe('ok');
+    expect(await page.getByTestId('viewport').getAttribute('data-render')).toBe('tubes');
+    const tubes = await stats();
+    expect(tubes.segments).toBe(lines.segments);
+    expect(tubes.vertices, 'the tubes, meshed when they are shown').toBeGreaterThan(10 * tubes.segments);
+    await canvasPicture('studio-tubes-canvas.png');
+    before = await generation();
+    await page.getByTestId('render-lines').click();
+    expect(await nextBuild(before)).toBe('ok');
+    expect(await page.getByTestId('viewport').getAttribute('data-render')).toBe('lines');
+    expect((await stats()).vertices, 'back to lines: no tubes').toBe(0);
+    expect(problems).toEqual([]);
+  });
+
   it('re-meshes with the view options: sides and smooth axes', async () => {
     const vertices = async () =>
       (await page.evaluate(() => window.__meristem?.lastStats ?? null)) as { vertices: number; segments: number };
-    const six = await vertices();
+    // In the Tubes mode: the Lines mode (the flat example's) meshes no tubes.
     let before = await generation();
+    await page.getByTestId('render-lines').click();
+    expect(await nextBuild(before)).toBe('ok');
+    const six = await vertices();
+    before = await generation();
     await openTubesMenu(page);
     await page.getByTestId('sides').selectOption('12');
     expect(await nextBuild(before)).toBe('ok');
@@ -245,6 +273,11 @@ describe('the studio', () => {
     await page.getByTestId('sides').selectOption('6');
     await nextBuild(before);
     await page.waitForFunction((v) => window.__meristem?.lastStats?.vertices === v, six.vertices);
+    // Back to the Lines mode the example was shown in.
+    before = await generation();
+    await page.getByTestId('render-lines').click();
+    expect(await nextBuild(before)).toBe('ok');
+    expect(await page.getByTestId('viewport').getAttribute('data-render')).toBe('lines');
     expect(problems).toEqual([]);
   });
 

@@ -12,7 +12,7 @@ import { PlantView } from './view';
 import {
   Autosave, BranchEditSession, BuildClient, ContextView, DerivationControls, GrowthPanel,
   LazyDerivationView, installLearnPanel, LinkState, LivePreview, Notice, SliderPanel, LazyStagesMode, TextOpening,
-  TextKeeper, ViewFollowing, ViewOptions, ViewTools, attachSplitter, browserDatabase, browserStorage, createImportWorker, connectTestHook, createBuildWorker, emptyTestHook, fetchExample,
+  TextKeeper, ViewFollowing, ViewOptions, ViewTools, tubesFor, attachSplitter, browserDatabase, browserStorage, createImportWorker, connectTestHook, createBuildWorker, emptyTestHook, fetchExample,
   figureName, installDrop, installInspectorTabs, LayoutModes,
   installFileMenu, installShareButton, installShortcuts, openPastedLinks, readGrammarFile, readObjectFiles, renderShortcutHelp, reportCoreCrashes, showStatus, sidesChoices,
   startingText, studioElements, installAppUpdates, type ShortcutAction, type StudioElements, type StudioTestHook,
@@ -65,7 +65,14 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
       derivationView.reload();
     },
     text: currentText,
-    options: () => ({ iterations: derivation.iterations(), seed: derivation.seed(), sides: viewOptions.values.sides, smoothAll: viewOptions.values.smoothAll }),
+    options: () => ({
+      iterations: derivation.iterations(),
+      seed: derivation.seed(),
+      sides: viewOptions.values.sides,
+      smoothAll: viewOptions.values.smoothAll,
+      // The Lines mode (and `auto` for a flat plant) draws no tubes: they are not meshed.
+      tubes: tubesFor(viewOptions.values.render),
+    }),
     diagnosticsChanged: () => editor?.refreshDiagnostics(),
     adopt: (result) => {
       contexts.setBuild(result.build, result.inspector, result.source);
@@ -127,7 +134,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   // Options: the derivation's and the view's; a change of either asks for a build (meshing ones).
   derivation.onChange(() => preview.rebuild());
   const viewTools = new ViewTools(els.viewTools, viewOptions, view);
-  viewOptions.onChange((_, changed) => (changed.has('sides') || changed.has('smoothAll')) && preview.rebuild());
+  viewOptions.onChange((_, changed) => (changed.has('sides') || changed.has('smoothAll') || changed.has('render')) && preview.rebuild());
   // The view follows the plant; Play shows the growth in one frame (or frames every step).
   const following = new ViewFollowing(els.following, view, () => preview.lastGood);
   following.follow(derivation.playback);

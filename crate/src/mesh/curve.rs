@@ -53,8 +53,19 @@ pub fn evaluate(piece: &Piece, t: f64) -> (DVec3, DVec3) {
 /// perpendicular to its tangent.
 pub fn rotation_minimizing_normals(samples: &[(DVec3, DVec3)], initial: DVec3) -> Vec<DVec3> {
     let mut normals = Vec::with_capacity(samples.len());
+    rotation_minimizing_normals_into(samples, initial, &mut normals);
+    normals
+}
+
+/// [`rotation_minimizing_normals`] into `normals` (emptied first).
+pub fn rotation_minimizing_normals_into(
+    samples: &[(DVec3, DVec3)],
+    initial: DVec3,
+    normals: &mut Vec<DVec3>,
+) {
+    normals.clear();
     let Some(&(_, t0)) = samples.first() else {
-        return normals;
+        return;
     };
     let mut r = (initial - t0 * initial.dot(t0))
         .try_normalize()
@@ -85,7 +96,6 @@ pub fn rotation_minimizing_normals(samples: &[(DVec3, DVec3)], initial: DVec3) -
             .unwrap_or_else(|| t1.any_orthonormal_vector());
         normals.push(r);
     }
-    normals
 }
 
 #[cfg(test)]

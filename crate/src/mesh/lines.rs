@@ -2,19 +2,8 @@
 //! (constant-width lines, as the book's two-dimensional figures are drawn) and the fallback of
 //! models too large to mesh.
 
+pub use crate::turtle::SegmentLines;
 use crate::turtle::Skeleton;
-
-/// The segments of a skeleton as lines, in `Skeleton::segments` order: line `i` is segment `i`.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct SegmentLines {
-    /// `f32` × 3 per line end, two ends per segment (start, end).
-    pub ends: Vec<f32>,
-    /// Linear RGB, `f32` × 3 per line end: the segment's colour at both ends.
-    pub colors: Vec<f32>,
-    /// The module that drew each segment (one per line), as `Segment::module`: an index into the
-    /// string the turtle read.
-    pub modules: Vec<u32>,
-}
 
 /// The segments of `skeleton` as lines with their colours and modules.
 pub fn segment_lines(skeleton: &Skeleton) -> SegmentLines {

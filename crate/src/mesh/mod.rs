@@ -298,6 +298,9 @@ pub struct MeshOptions {
     pub sphere_segments: u32,
     /// Above this many vertices the mesh falls back to lines (`MeshBuffers::lines`).
     pub max_vertices: usize,
+    /// Mesh the segments as tubes (true), or leave them out: the studio's Lines mode draws the
+    /// segments as lines and needs the mesh only for leaves, polygons and spheres.
+    pub tubes: bool,
 }
 
 impl Default for MeshOptions {
@@ -309,6 +312,7 @@ impl Default for MeshOptions {
             smooth_samples: 4,
             sphere_segments: 12,
             max_vertices: 4_000_000,
+            tubes: true,
         }
     }
 }
@@ -337,7 +341,7 @@ const MAX_JOINT_ANGLE_COS: f64 = -0.2;
 /// joint rings, ends are capped), smooth axes as generalized cylinders through their joints,
 /// polygons and predefined surfaces two-sided, spheres. Above `max_vertices` it returns lines.
 pub fn build_mesh(skeleton: &Skeleton, options: &MeshOptions) -> MeshBuffers {
-    build_mesh_with_parts(skeleton, options).0
+    mesh_of(skeleton, options, false).0
 }
 
 /// [`build_mesh`], and where each element of the skeleton landed in the mesh ([`MeshParts`]):
@@ -346,10 +350,24 @@ pub fn build_mesh_with_parts(
     skeleton: &Skeleton,
     options: &MeshOptions,
 ) -> (MeshBuffers, MeshParts) {
+    mesh_of(skeleton, options, true)
+}
+
+/// The mesh, and its parts when `with_parts` (else empty parts: the same mesh, without the
+/// bookkeeping).
+fn mesh_of(
+    skeleton: &Skeleton,
+    options: &MeshOptions,
+    with_parts: bool,
+) -> (MeshBuffers, MeshParts) {
     let unit = resolve_width_unit(skeleton, options.width_unit);
     let mut builder = Builder::new(options, unit);
     let mut parts = MeshParts {
-        segment_chain: vec![parts::NO_CHAIN; skeleton.segments.len()],
+        segment_chain: if with_parts {
+            vec![parts::NO_CHAIN; skeleton.segments.len()]
+        } else {
+            Vec::new()
+        },
         ..MeshParts::default()
     };
     let estimate = builder.estimate(skeleton);
@@ -364,13 +382,24 @@ pub fn build_mesh_with_parts(
     builder.mesh.colors.reserve(3 * estimate);
     builder.mesh.uvs.reserve(2 * estimate);
     builder.mesh.indices.reserve(6 * estimate);
-    let joints = parts::joint_keys(skeleton);
-    let starts = parts::start_keys(skeleton);
-    for chain in chains(skeleton, unit) {
+    let tubes = if options.tubes {
+        chains(skeleton, unit)
+    } else {
+        Vec::new()
+    };
+    let (joints, starts) = if tubes.is_empty() {
+        (Vec::new(), Vec::new())
+    } else {
+        (parts::joint_keys(skeleton), parts::start_keys(skeleton))
+    };
+    for chain in tubes {
         let start_cap = parts::start_cap(&joints, skeleton, &chain);
         let end_dome = parts::end_dome(&starts, skeleton, &chain);
         let before = builder.mark();
         builder.tube(skeleton, &chain, start_cap, end_dome);
+        if !with_parts {
+            continue;
+        }
         let part = builder.part_since(before);
         let ranges = builder.element_ranges_since(&before);
         for &s in &chain {
@@ -484,6 +513,7 @@ pub(crate) struct Builder<'a> {
     element: u32,
     /// The material kind the next `range` call stands for.
     material: u32,
+    scratch: tube::TubeScratch,
 }
 
 impl<'a> Builder<'a> {
@@ -503,6 +533,7 @@ impl<'a> Builder<'a> {
             element_ranges: Vec::new(),
             element: parts::NO_CHAIN,
             material: MATERIAL_BARK,
+            scratch: tube::TubeScratch::default(),
         }
     }
 
@@ -575,7 +606,11 @@ impl<'a> Builder<'a> {
         // close only axes that branch at their end, a few of the segments: counting one for every
         // segment would send ABOP 1.24d at n = 7 (116,050 segments, 1.3 M vertices meshed) to the
         // lines fallback. The arrays grow past this when a plant needs it.
-        let tubes = skeleton.segments.len() * (rings_per_segment + 2) * (self.sides + 1);
+        let tubes = if self.options.tubes {
+            skeleton.segments.len() * (rings_per_segment + 2) * (self.sides + 1)
+        } else {
+            0
+        };
         let flats: usize = skeleton
             .polygons
             .iter()
@@ -927,6 +962,35 @@ mod tests {
         // The polygon's tip (farthest from its first point) is at v = 1, its base at v = 0.
         assert_eq!(mesh.uvs[1], 0.0);
         assert_eq!(mesh.uvs[5], 1.0);
+    }
+
+    #[test]
+    fn without_tubes_only_leaves_polygons_and_spheres_are_meshed() {
+        let mut skeleton = Skeleton {
+            segments: vec![
+                segment(DVec3::ZERO, DVec3::Y, None),
+                segment(DVec3::Y, DVec3::new(0.0, 2.0, 0.0), Some(0)),
+            ],
+            polygons: vec![polygon(
+                vec![DVec3::ZERO, DVec3::X, DVec3::new(0.5, 2.0, 0.0)],
+                0,
+                5,
+            )],
+            spheres: vec![unit_sphere(0, 6)],
+            ..Skeleton::default()
+        };
+        let no_tubes = MeshOptions {
+            tubes: false,
+            ..absolute(0.1)
+        };
+        let mesh = build_mesh(&skeleton, &no_tubes);
+        mesh.check().expect("a valid mesh");
+        assert!(!mesh.triangle_materials().contains(&(MATERIAL_BARK as u8)));
+        // The very triangles of the polygon and the sphere of the whole mesh, without the tubes.
+        let whole = build_mesh(&skeleton, &absolute(0.1));
+        assert!(whole.triangle_materials().contains(&(MATERIAL_BARK as u8)));
+        skeleton.segments.clear();
+        assert_eq!(mesh, build_mesh(&skeleton, &absolute(0.1)));
     }
 
     #[test]

@@ -11,6 +11,20 @@ use glam::DVec3;
 /// dome's normals).
 const DOME_STEPS: usize = 3;
 
+/// The arrays a tube is built with, kept by the builder from tube to tube: a plant has tens of
+/// thousands of axes, and allocating them for each cost a good part of the mesh stage in wasm.
+#[derive(Default)]
+pub(super) struct TubeScratch {
+    points: Vec<DVec3>,
+    widths: Vec<f64>,
+    samples: Vec<AxisSample>,
+    frame: Vec<(DVec3, DVec3)>,
+    normals: Vec<DVec3>,
+    rings: Vec<u32>,
+    offsets: Vec<DVec3>,
+    outs: Vec<DVec3>,
+}
+
 /// A point on a tube's axis where a ring of vertices goes.
 #[derive(Clone, Copy, Debug)]
 struct AxisSample {
@@ -36,39 +50,44 @@ impl Builder<'_> {
             .iter()
             .map(|&i| &skeleton.segments[i as usize])
             .collect();
-        let samples = self.axis_samples(&segments);
-        if samples.len() < 2 {
-            return;
+        let mut scratch = std::mem::take(&mut self.scratch);
+        self.axis_samples(&segments, &mut scratch);
+        if scratch.samples.len() >= 2 {
+            self.rings(skeleton, &segments, &mut scratch);
+            self.tube_triangles(
+                skeleton,
+                chain,
+                &segments,
+                &mut scratch,
+                [start_cap, end_dome],
+            );
         }
-        let rings = self.rings(skeleton, &segments, &samples);
-        self.tube_triangles(
-            skeleton,
-            chain,
-            &segments,
-            &samples,
-            &rings,
-            [start_cap, end_dome],
-        );
+        self.scratch = scratch;
     }
 
     /// Where the rings of the tube through `segments` go: along the curve through the joints when
     /// the axis is smooth, else at the joints. Samples that are not finite or repeat the one
     /// before are dropped.
-    fn axis_samples(&self, segments: &[&Segment]) -> Vec<AxisSample> {
-        let mut points: Vec<DVec3> = vec![segments[0].start];
+    /// The samples go to `scratch.samples`.
+    fn axis_samples(&self, segments: &[&Segment], scratch: &mut TubeScratch) {
+        let points = &mut scratch.points;
+        points.clear();
+        points.push(segments[0].start);
         points.extend(segments.iter().map(|s| s.end));
         // The width at each joint: a segment's width at its start; the last keeps its own.
-        let mut widths: Vec<f64> = segments.iter().map(|s| s.width).collect();
+        let widths = &mut scratch.widths;
+        widths.clear();
+        widths.extend(segments.iter().map(|s| s.width));
         widths.push(segments[segments.len() - 1].width);
         let smooth = self.options.smooth_all || segments[0].smooth;
-        let mut samples = if smooth && points.len() > 2 {
-            self.curve_samples(&points, &widths)
+        let samples = &mut scratch.samples;
+        if smooth && points.len() > 2 {
+            *samples = self.curve_samples(points, widths);
         } else {
-            joint_samples(&points, &widths)
-        };
+            joint_samples(points, widths, samples);
+        }
         samples.retain(|s| s.point.is_finite() && s.tangent.is_finite());
         samples.dedup_by(|b, a| (b.point - a.point).length() < 1e-12);
-        samples
     }
 
     /// `smooth_samples` samples per segment along the Bézier curve through the joints `points`,
@@ -98,17 +117,22 @@ impl Builder<'_> {
     /// first vertex of each ring. u runs once around each ring (its last vertex repeats the first
     /// at u = 1); v is the distance along the axis in circumferences of the tube (the mean of the
     /// two rings' circumferences over each step), so a texture tile is as long as the tube is round.
-    fn rings(
-        &mut self,
-        skeleton: &Skeleton,
-        segments: &[&Segment],
-        samples: &[AxisSample],
-    ) -> Vec<u32> {
-        let frame_input: Vec<(DVec3, DVec3)> =
-            samples.iter().map(|s| (s.point, s.tangent)).collect();
-        let normals = curve::rotation_minimizing_normals(&frame_input, segments[0].left);
+    /// The first vertices go to `scratch.rings`.
+    fn rings(&mut self, skeleton: &Skeleton, segments: &[&Segment], scratch: &mut TubeScratch) {
+        let samples = &scratch.samples;
+        scratch.frame.clear();
+        scratch
+            .frame
+            .extend(samples.iter().map(|s| (s.point, s.tangent)));
+        curve::rotation_minimizing_normals_into(
+            &scratch.frame,
+            segments[0].left,
+            &mut scratch.normals,
+        );
+        let normals = &scratch.normals;
         let sides = self.sides;
-        let mut rings: Vec<u32> = Vec::with_capacity(samples.len());
+        let rings = &mut scratch.rings;
+        rings.clear();
         let unit = self.unit;
         let circumference = |w: f64| (std::f64::consts::PI * w * unit).max(1e-12);
         let mut v = 0.0f64;
@@ -131,7 +155,6 @@ impl Builder<'_> {
             }
             rings.push(first);
         }
-        rings
     }
 
     /// The triangles of the tube: the start cap (when `start_cap`), a quad between each pair of
@@ -141,10 +164,16 @@ impl Builder<'_> {
         skeleton: &Skeleton,
         chain: &[u32],
         segments: &[&Segment],
-        samples: &[AxisSample],
-        rings: &[u32],
+        scratch: &mut TubeScratch,
         [start_cap, end_dome]: [bool; 2],
     ) {
+        let TubeScratch {
+            samples,
+            rings,
+            offsets,
+            outs,
+            ..
+        } = scratch;
         let n = self.sides as u32;
         // Start cap, facing back along the axis.
         self.element = chain[0];
@@ -177,7 +206,7 @@ impl Builder<'_> {
         let c = skeleton.color(end.color);
         let (point, tangent) = (samples[last].point, samples[last].tangent);
         if end_dome {
-            self.dome(point, tangent, rings[last], c);
+            self.dome(point, tangent, rings[last], c, (offsets, outs));
         } else {
             self.cap(point, tangent, rings[last], c, false);
         }
@@ -187,29 +216,36 @@ impl Builder<'_> {
     /// the axis half a width beyond it, facing `normal` (the axis's direction). Where branches
     /// leave the end of an axis, they grow out of this dome, not out of a flat, faceted stump; a
     /// tip is rounded as a line's end is.
-    fn dome(&mut self, center: DVec3, normal: DVec3, ring: u32, c: [f32; 3]) {
+    fn dome(
+        &mut self,
+        center: DVec3,
+        normal: DVec3,
+        ring: u32,
+        c: [f32; 3],
+        (offsets, outs): (&mut Vec<DVec3>, &mut Vec<DVec3>),
+    ) {
         let n = self.sides as u32;
         let read = |array: &[f32], j: u32| {
             let i = (ring + j) as usize * 3;
             DVec3::new(array[i] as f64, array[i + 1] as f64, array[i + 2] as f64)
         };
-        let offsets: Vec<DVec3> = (0..n)
-            .map(|j| read(&self.mesh.positions, j) - center)
-            .collect();
+        offsets.clear();
+        offsets.extend((0..n).map(|j| read(&self.mesh.positions, j) - center));
         // The ring's own normals point out of the tube (as the full mesh and a partial one agree).
-        let outs: Vec<DVec3> = (0..n).map(|j| read(&self.mesh.normals, j)).collect();
+        outs.clear();
+        outs.extend((0..n).map(|j| read(&self.mesh.normals, j)));
         let radius = offsets.iter().map(|o| o.length()).sum::<f64>() / n as f64;
-        let mut rings = Vec::with_capacity(DOME_STEPS);
-        for step in 0..DOME_STEPS {
+        let mut rings = [0u32; DOME_STEPS];
+        for (step, first_of_step) in rings.iter_mut().enumerate() {
             let angle = std::f64::consts::FRAC_PI_2 * step as f64 / DOME_STEPS as f64;
             let (sin, cos) = angle.sin_cos();
             let first = self.mesh.vertex_count() as u32;
-            for (j, (offset, out)) in offsets.iter().zip(&outs).enumerate() {
+            for (j, (offset, out)) in offsets.iter().zip(outs.iter()).enumerate() {
                 let (u, v) = (j as f32 / n as f32, 0.5 + 0.5 * sin as f32);
                 let position = center + *offset * cos + normal * (radius * sin);
                 self.vertex(position, (*out * cos + normal * sin).normalize(), c, [u, v]);
             }
-            rings.push(first);
+            *first_of_step = first;
         }
         let apex = self.vertex(center + normal * radius, normal, c, [0.5, 1.0]);
         for pair in rings.windows(2) {
@@ -257,10 +293,10 @@ impl Builder<'_> {
 
 /// A sample at each joint `points`, its tangent along the segment it ends or starts (the
 /// bisector of both inside the chain).
-fn joint_samples(points: &[DVec3], widths: &[f64]) -> Vec<AxisSample> {
+fn joint_samples(points: &[DVec3], widths: &[f64], samples: &mut Vec<AxisSample>) {
     let last_segment = points.len() - 2;
     let direction = |i: usize| (points[i + 1] - points[i]).normalize();
-    let mut samples = Vec::with_capacity(points.len());
+    samples.clear();
     for i in 0..points.len() {
         let tangent = if i == 0 {
             direction(0)
@@ -276,5 +312,4 @@ fn joint_samples(points: &[DVec3], widths: &[f64]) -> Vec<AxisSample> {
             segment: i.min(last_segment),
         });
     }
-    samples
 }

@@ -39,6 +39,10 @@ pub struct BuildOptions {
     /// Overrides `#seed`.
     pub seed: Option<u64>,
     pub mesh: MeshOptions,
+    /// Draw the segments as lines only (a sketch, [`turtle::Sketch`]): no skeleton and no mesh
+    /// until [`Build::remesh`] (or [`Build::ensure_skeleton`]) asks for them. Grammars with growth
+    /// attributes draw their skeleton at once and mesh it with `mesh` as usual.
+    pub sketch: bool,
 }
 
 /// A stage of a build or an export, in order.
@@ -220,7 +224,23 @@ impl Build {
     /// Meshes the plant again with other mesh options (a view option such as the number of sides
     /// or smooth axes needs no new derivation).
     pub fn remesh(&mut self, options: &MeshOptions) {
+        self.ensure_skeleton();
         self.plant.remesh(options);
+    }
+
+    /// Draws the skeleton of a sketch's plant ([`BuildOptions::sketch`]), once; nothing otherwise.
+    pub fn ensure_skeleton(&mut self) {
+        if !self.plant.is_sketch() {
+            return;
+        }
+        let segments = self.plant.stats.segments;
+        let skeleton = match &self.model {
+            Some(model) => {
+                turtle::interpret_sized(model, self.derivation.turtle_string(), segments)
+            }
+            None => Default::default(),
+        };
+        self.plant.set_skeleton(skeleton);
     }
 
     /// Diagnostics with line and column, in source order.
@@ -275,7 +295,21 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Watch<'_, '_>) -
     let mut stepped = |step| watch.hooks.tell(Progress::Derived { step, steps });
     let derived = derive_stage(&model, steps, options.seed, &mut result, &mut stepped);
     watch.timings.derive = watch.lap();
-    if let Some(adjustments) = derived {
+    if let Some(None) = derived.as_ref().filter(|_| options.sketch) {
+        watch.start(Stage::Interpret);
+        let sketch = turtle::sketch(&model, result.derivation.turtle_string());
+        watch.timings.interpret = watch.lap();
+        if let Some(module) = sketch.clamped() {
+            result
+                .diagnostics
+                .push(clamped_warning(&model, &result.derivation, module));
+        }
+        watch.start(Stage::Mesh);
+        result.steps = steps;
+        result.seed = options.seed;
+        result.plant = Plant::sketched(sketch, &options.mesh, &result.derivation, steps);
+        watch.timings.mesh = watch.lap();
+    } else if let Some(adjustments) = derived {
         watch.start(Stage::Interpret);
         let skeleton = turtle::interpret_adjusted(
             &model,
@@ -571,5 +605,95 @@ mod tests {
         let timed = build_with(source, &options, &mut timed(&mut clock));
         assert_eq!(plain.plant.stats, timed.plant.stats);
         assert_eq!(plain.plant.mesh.positions, timed.plant.mesh.positions);
+    }
+
+    #[test]
+    fn a_sketch_draws_lines_and_its_remesh_is_the_plain_build() {
+        let source = "#angle 25\naxiom: X\nX -> F[+X]F[-X]+X\nF -> FF";
+        let options = BuildOptions {
+            iterations: Some(4),
+            ..BuildOptions::default()
+        };
+        let plain = build(source, &options);
+        let mut sketch = build(
+            source,
+            &BuildOptions {
+                sketch: true,
+                ..options.clone()
+            },
+        );
+        // Lines only: no skeleton, no triangles; the stats count the segments as lines.
+        assert!(sketch.plant.is_sketch());
+        assert!(sketch.plant.skeleton.segments.is_empty());
+        assert_eq!(sketch.plant.mesh.triangle_count(), 0);
+        let segments = plain.plant.skeleton.segments.len();
+        assert_eq!(sketch.plant.stats.segments, segments);
+        assert_eq!(sketch.plant.stats.lines, segments);
+        assert_eq!(sketch.plant.is_flat(), plain.plant.is_flat());
+        let lines = plain.plant.segment_lines();
+        let sketched = sketch.plant.segment_lines();
+        assert_eq!(sketched.modules, lines.modules);
+        assert_eq!(sketched.colors, lines.colors);
+        for (a, b) in sketched.ends.iter().zip(&lines.ends) {
+            assert!((a - b).abs() < 1e-5, "{a} against {b}");
+        }
+        for k in 0..3 {
+            for side in 0..2 {
+                let (a, b) = (
+                    sketch.plant.stats.bounds[side][k],
+                    crate::mesh::MeshBuffers {
+                        lines: sketched.ends.clone(),
+                        ..Default::default()
+                    }
+                    .bounds()[side][k],
+                );
+                assert_eq!(a, b, "the sketch's bounds are its lines'");
+            }
+        }
+        // The tubes on demand: the very mesh and stats of the plain build.
+        sketch.remesh(&options.mesh);
+        assert!(!sketch.plant.is_sketch());
+        assert_eq!(sketch.plant.skeleton, plain.plant.skeleton);
+        assert_eq!(sketch.plant.mesh, plain.plant.mesh);
+        assert_eq!(sketch.plant.stats, plain.plant.stats);
+    }
+
+    #[test]
+    fn a_sketch_with_growth_draws_its_skeleton_at_once() {
+        let source = "#lifetime 60 40\naxiom: A\nA -> F[+A]A";
+        let sketch = build(
+            source,
+            &BuildOptions {
+                iterations: Some(3),
+                sketch: true,
+                ..BuildOptions::default()
+            },
+        );
+        assert!(!sketch.plant.is_sketch());
+        assert!(!sketch.plant.skeleton.segments.is_empty());
+    }
+
+    #[test]
+    fn without_tubes_the_bounds_are_the_segments() {
+        let source = "#angle 25\naxiom: X\nX -> F[+X]F[-X]+X\nF -> FF";
+        let options = BuildOptions {
+            iterations: Some(3),
+            ..BuildOptions::default()
+        };
+        let mut result = build(source, &options);
+        let with_tubes = result.plant.stats.clone();
+        result.remesh(&MeshOptions {
+            tubes: false,
+            ..options.mesh.clone()
+        });
+        let stats = &result.plant.stats;
+        assert_eq!((stats.vertices, stats.triangles), (0, 0));
+        assert_eq!(stats.segments, with_tubes.segments);
+        let lines = crate::mesh::MeshBuffers {
+            lines: result.plant.segment_lines().ends,
+            ..Default::default()
+        };
+        assert_eq!(stats.bounds, lines.bounds());
+        assert_ne!(stats.bounds, [[0.0; 3]; 2]);
     }
 }

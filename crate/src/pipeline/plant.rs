@@ -3,7 +3,7 @@
 use crate::derive::Derivation;
 use crate::export::Stats;
 use crate::mesh::{self, MeshBuffers, MeshOptions};
-use crate::turtle::Skeleton;
+use crate::turtle::{Skeleton, Sketch};
 
 /// The geometry of one build.
 #[derive(Clone, Debug, Default)]
@@ -19,6 +19,9 @@ pub struct Plant {
     /// For each module of the string the turtle read, the module of the derived string it came
     /// from (empty when they are the same string): the mesh's provenance names derived modules.
     turtle_origin: Vec<u32>,
+    /// A sketch's plant ([`Plant::sketched`]): the skeleton is not drawn yet, the mesh holds the
+    /// segments as lines; these are the lines' modules and whether the drawing is flat.
+    sketch: Option<(Vec<u32>, bool)>,
 }
 
 impl Plant {
@@ -40,7 +43,59 @@ impl Plant {
         plant
     }
 
-    /// Meshes the skeleton again with other options (the stats follow).
+    /// The plant of a sketch (`BuildOptions::sketch`): its segments as lines in the mesh's line
+    /// arrays, as the lines fallback has them, and no skeleton until
+    /// [`crate::pipeline::Build::ensure_skeleton`] draws it.
+    pub fn sketched(
+        sketch: Sketch,
+        options: &MeshOptions,
+        derivation: &Derivation,
+        steps: u32,
+    ) -> Plant {
+        let flat = sketch.is_flat();
+        let segments = sketch.segments();
+        let bounds = sketch.line_bounds();
+        let lines = sketch.lines;
+        let mesh = MeshBuffers {
+            lines: lines.ends,
+            line_colors: lines.colors,
+            ..MeshBuffers::default()
+        };
+        let modules = derivation.string.len();
+        Plant {
+            stats: Stats {
+                modules,
+                segments,
+                vertices: 0,
+                triangles: 0,
+                lines: segments,
+                iterations: steps,
+                bounds,
+            },
+            skeleton: Skeleton::default(),
+            mesh,
+            mesh_options: options.clone(),
+            modules,
+            steps,
+            turtle_origin: derivation.turtle_origin.clone(),
+            sketch: Some((lines.modules, flat)),
+        }
+    }
+
+    /// True for the plant of a sketch whose skeleton is not drawn yet.
+    pub fn is_sketch(&self) -> bool {
+        self.sketch.is_some()
+    }
+
+    /// The skeleton of a sketch's plant, drawn now: the plant is a plain one from here on (its
+    /// mesh is still the sketch's lines until [`Plant::remesh`]).
+    pub(super) fn set_skeleton(&mut self, skeleton: Skeleton) {
+        self.skeleton = skeleton;
+        self.sketch = None;
+    }
+
+    /// Meshes the skeleton again with other options (the stats follow). The skeleton of a
+    /// sketch's plant must be drawn first ([`crate::pipeline::Build::remesh`] does).
     pub fn remesh(&mut self, options: &MeshOptions) {
         self.mesh_options = options.clone();
         self.mesh = mesh::build_mesh(&self.skeleton, options);
@@ -65,12 +120,45 @@ impl Plant {
             self.steps,
             &self.mesh,
         );
+        if !self.mesh_options.tubes {
+            self.stats.bounds = self.bounds_with_segments();
+        }
+    }
+
+    /// The bounds of the mesh and of the segments as lines (as `f32`, as the lines are drawn):
+    /// what a mesh without tubes shows, with the segments drawn as lines over it.
+    fn bounds_with_segments(&self) -> [[f64; 3]; 2] {
+        let mut min = [f64::INFINITY; 3];
+        let mut max = [f64::NEG_INFINITY; 3];
+        if !self.mesh.positions.is_empty() || !self.mesh.lines.is_empty() {
+            [min, max] = self.stats.bounds;
+        }
+        for s in &self.skeleton.segments {
+            for p in [s.start, s.end] {
+                for (k, v) in p.to_array().into_iter().enumerate() {
+                    let v = v as f32 as f64;
+                    min[k] = min[k].min(v);
+                    max[k] = max[k].max(v);
+                }
+            }
+        }
+        if min[0] > max[0] {
+            return [[0.0; 3]; 2];
+        }
+        [min, max]
     }
 
     /// Every segment as a line (the studio's Lines mode), its module in terms of the derived
     /// string, as the mesh's provenance.
     pub fn segment_lines(&self) -> mesh::SegmentLines {
-        let mut lines = mesh::segment_lines(&self.skeleton);
+        let mut lines = match &self.sketch {
+            Some((modules, _)) => mesh::SegmentLines {
+                ends: self.mesh.lines.clone(),
+                colors: self.mesh.line_colors.clone(),
+                modules: modules.clone(),
+            },
+            None => mesh::segment_lines(&self.skeleton),
+        };
         if !self.turtle_origin.is_empty() {
             for module in &mut lines.modules {
                 *module = self
@@ -85,6 +173,9 @@ impl Plant {
 
     /// True when everything drawn lies in the plane z = 0 ([`Skeleton::is_flat`]).
     pub fn is_flat(&self) -> bool {
-        self.skeleton.is_flat()
+        match &self.sketch {
+            Some((_, flat)) => *flat,
+            None => self.skeleton.is_flat(),
+        }
     }
 }

@@ -13,14 +13,93 @@ type OpenPolygon = (Vec<DVec3>, u16, u32, Option<u32>);
 /// What the turtle does with one module id: the command, and its first parameter's default.
 type Action = (Command, Option<f64>);
 
-pub(super) struct Interpreter<'a> {
+/// Where the turtle draws: the whole [`Skeleton`], or only what a sketch shows
+/// (`super::sketch::Sketch`: the segments as lines, written straight into flat arrays). One
+/// interpreter serves both, so a sketch's lines are the skeleton's segments exactly.
+pub(super) trait Canvas {
+    /// A segment from `start` to the turtle's position, drawn by module `index` of the string; the
+    /// turtle's `last_segment` is the segment it may continue. Returns the new segment's index.
+    fn segment(&mut self, start: DVec3, t: &TurtleState, index: u32) -> u32;
+    fn polygon(&mut self, polygon: Polygon);
+    fn surface(&mut self, surface: Surface);
+    fn sphere(&mut self, sphere: Sphere);
+    /// Whether the canvas keeps query values (a sketch does not).
+    fn wants_queries(&self) -> bool;
+    fn query(&mut self, query: QueryValue);
+    /// The grammar set a width (`!`).
+    fn widths_set(&mut self);
+    /// The string is read: the turtle ended at `end`; `widths` are growth's width factors by third
+    /// with the extent `low..high` of the turtle's heights, when growth scales widths.
+    fn finish(&mut self, end: DVec3, widths: Option<(&Adjustments, f64, f64)>);
+}
+
+impl Canvas for Skeleton {
+    #[inline]
+    fn segment(&mut self, start: DVec3, t: &TurtleState, index: u32) -> u32 {
+        let segments = &mut self.segments;
+        let previous = t
+            .last_segment
+            .filter(|&s| segments[s as usize].end == start);
+        segments.push(Segment {
+            start,
+            end: t.position,
+            left: t.left,
+            up: t.up,
+            width: t.width,
+            color: t.color,
+            module: index,
+            previous,
+            smooth: t.smooth,
+            anchor: t.anchor,
+        });
+        segments.len() as u32 - 1
+    }
+
+    fn polygon(&mut self, polygon: Polygon) {
+        self.polygons.push(polygon);
+    }
+
+    fn surface(&mut self, surface: Surface) {
+        self.surfaces.push(surface);
+    }
+
+    fn sphere(&mut self, sphere: Sphere) {
+        self.spheres.push(sphere);
+    }
+
+    fn wants_queries(&self) -> bool {
+        true
+    }
+
+    fn query(&mut self, query: QueryValue) {
+        self.queries.push(query);
+    }
+
+    fn widths_set(&mut self) {
+        self.widths_set = true;
+    }
+
+    fn finish(&mut self, end: DVec3, widths: Option<(&Adjustments, f64, f64)>) {
+        if let Some((a, low, high)) = widths {
+            for segment in &mut self.segments {
+                let middle = (segment.start.y + segment.end.y) * 0.5;
+                let third = Third::of(middle, low, high);
+                segment.width *= a.modules[segment.module as usize].width[third as usize];
+            }
+        }
+        self.end = end;
+        self.clamp_to_finite();
+    }
+}
+
+pub(super) struct Interpreter<'a, C: Canvas> {
     settings: &'a Settings,
     /// For each module id, what the turtle does with it.
     actions: Vec<Option<Action>>,
     turtle: TurtleState,
     stack: Vec<TurtleState>,
     open_polygons: Vec<OpenPolygon>,
-    skeleton: Skeleton,
+    canvas: C,
     adjustments: Option<&'a Adjustments>,
     /// The lowest and highest Y the turtle reaches.
     low: f64,
@@ -39,12 +118,22 @@ fn first_default(info: &ModuleInfo, settings: &Settings) -> Option<f64> {
         .default_value(|directive| settings.value(directive))
 }
 
-impl<'a> Interpreter<'a> {
+/// The skeleton a turtle with `settings` starts drawing (its palette, whether widths are set).
+pub(super) fn empty_skeleton(settings: &Settings, adjustments: bool) -> Skeleton {
+    Skeleton {
+        palette: settings.palette.clone(),
+        widths_set: settings.width_given || adjustments,
+        ..Skeleton::default()
+    }
+}
+
+impl<'a, C: Canvas> Interpreter<'a, C> {
     pub fn new(
         model: &'a Model,
         string: &LString,
         adjustments: Option<&'a Adjustments>,
         heights: Option<&'a mut Heights>,
+        canvas: C,
     ) -> Self {
         let settings = &model.settings;
         let actions = model
@@ -52,35 +141,14 @@ impl<'a> Interpreter<'a> {
             .iter()
             .map(|m| m.and_then(|info| Some((info.command()?, first_default(info, settings)))))
             .collect();
-        let (tropism, susceptibility) = settings.tropism;
-        let mut start = TurtleState {
-            position: DVec3::ZERO,
-            heading: DVec3::Y,
-            left: DVec3::NEG_X,
-            up: DVec3::Z,
-            width: settings.width,
-            color: 0,
-            tropism,
-            susceptibility,
-            smooth: false,
-            last_segment: None,
-            anchor: None,
-        };
-        // `#heading`: the start turned as `+` would turn it.
-        if settings.heading != 0.0 {
-            start.yaw(settings.heading.to_radians().sin_cos());
-        }
+        let start = TurtleState::start(settings);
         Interpreter {
             settings,
             actions,
             turtle: start,
             stack: Vec::new(),
             open_polygons: Vec::new(),
-            skeleton: Skeleton {
-                palette: settings.palette.clone(),
-                widths_set: settings.width_given || adjustments.is_some(),
-                ..Skeleton::default()
-            },
+            canvas,
             adjustments: adjustments.filter(|a| a.modules.len() == string.len()),
             low: 0.0,
             high: 0.0,
@@ -89,7 +157,7 @@ impl<'a> Interpreter<'a> {
         }
     }
 
-    pub fn run(mut self, string: &LString) -> Skeleton {
+    pub fn run(mut self, string: &LString) -> C {
         // The extent is read by heights and by growth's widths by third only.
         let extent = self.heights.is_some() || self.adjustments.is_some_and(|a| a.scales_width);
         for (index, id) in string.ids.iter().enumerate() {
@@ -227,7 +295,7 @@ impl<'a> Interpreter<'a> {
         let t = &mut self.turtle;
         match command {
             Command::Width => {
-                self.skeleton.widths_set = true;
+                self.canvas.widths_set();
                 t.width = match first {
                     Some(w) => w.max(0.0),
                     None => (t.width - self.settings.width_step).max(0.0),
@@ -276,7 +344,7 @@ impl<'a> Interpreter<'a> {
     /// `@O`: a sphere of radius `first`, or as wide as the turtle without one.
     fn sphere(&mut self, first: Option<f64>, index: u32) {
         let t = &self.turtle;
-        self.skeleton.spheres.push(Sphere {
+        self.canvas.sphere(Sphere {
             center: t.position,
             radius: first.unwrap_or(0.0).max(0.0),
             radius_width: first.is_none().then_some(t.width * 0.5),
@@ -305,23 +373,8 @@ impl<'a> Interpreter<'a> {
             }
             t.last_segment = None;
         } else if draws && length != 0.0 {
-            let segments = &mut self.skeleton.segments;
-            let previous = t
-                .last_segment
-                .filter(|&s| segments[s as usize].end == start);
-            segments.push(Segment {
-                start,
-                end: t.position,
-                left: t.left,
-                up: t.up,
-                width: t.width,
-                color: t.color,
-                module: index,
-                previous,
-                smooth: t.smooth,
-                anchor: t.anchor,
-            });
-            t.last_segment = Some(segments.len() as u32 - 1);
+            let segment = self.canvas.segment(start, t, index);
+            t.last_segment = Some(segment);
             t.anchor = t.last_segment;
         } else {
             t.last_segment = None;
@@ -346,7 +399,7 @@ impl<'a> Interpreter<'a> {
             }
             _ => {
                 if let Some((points, color, module, anchor)) = self.open_polygons.pop() {
-                    self.skeleton.polygons.push(Polygon {
+                    self.canvas.polygon(Polygon {
                         points,
                         color,
                         module,
@@ -363,7 +416,7 @@ impl<'a> Interpreter<'a> {
             return;
         }
         let t = &self.turtle;
-        self.skeleton.surfaces.push(Surface {
+        self.canvas.surface(Surface {
             kind: if command == Command::Leaf {
                 SurfaceKind::Leaf
             } else {
@@ -381,6 +434,9 @@ impl<'a> Interpreter<'a> {
 
     /// `?P ?H ?U ?L`: what the turtle reads here.
     fn query(&mut self, command: Command, index: u32) {
+        if !self.canvas.wants_queries() {
+            return;
+        }
         let t = &self.turtle;
         let v = match command {
             Command::QueryPosition => t.position,
@@ -388,28 +444,24 @@ impl<'a> Interpreter<'a> {
             Command::QueryUp => t.up,
             _ => t.left,
         };
-        self.skeleton.queries.push(QueryValue {
+        self.canvas.query(QueryValue {
             module: index,
             value: [v.x, v.y, v.z],
         });
     }
 
     /// The extent for heights, growth's widths by third, and where the turtle ended.
-    fn finish(mut self) -> Skeleton {
+    fn finish(mut self) -> C {
         if let Some(h) = self.heights.take() {
             h.low = self.low;
             h.high = self.high;
         }
-        if let Some(a) = self.adjustments.filter(|a| a.scales_width) {
-            for segment in &mut self.skeleton.segments {
-                let middle = (segment.start.y + segment.end.y) * 0.5;
-                let third = Third::of(middle, self.low, self.high);
-                segment.width *= a.modules[segment.module as usize].width[third as usize];
-            }
-        }
-        self.skeleton.end = self.turtle.position;
-        self.skeleton.clamp_to_finite();
-        self.skeleton
+        let widths = self
+            .adjustments
+            .filter(|a| a.scales_width)
+            .map(|a| (a, self.low, self.high));
+        self.canvas.finish(self.turtle.position, widths);
+        self.canvas
     }
 }
 

@@ -13,15 +13,17 @@
 
 mod interpreter;
 mod skeleton;
+mod sketch;
 mod state;
 
 pub use skeleton::{
-    Polygon, QueryValue, Segment, Skeleton, Sphere, Surface, SurfaceKind, MAX_COORDINATE,
+    Extent, Polygon, QueryValue, Segment, Skeleton, Sphere, Surface, SurfaceKind, MAX_COORDINATE,
 };
+pub use sketch::{SegmentLines, Sketch};
 
 use crate::growth::{Adjustments, Heights};
 use crate::model::{LString, Model};
-use interpreter::Interpreter;
+use interpreter::{empty_skeleton, Interpreter};
 
 /// Runs the turtle over `string`.
 pub fn interpret(model: &Model, string: &LString) -> Skeleton {
@@ -35,7 +37,26 @@ pub fn interpret_adjusted(
     string: &LString,
     adjustments: Option<&Adjustments>,
 ) -> Skeleton {
-    Interpreter::new(model, string, adjustments, None).run(string)
+    let canvas = empty_skeleton(&model.settings, adjustments.is_some());
+    Interpreter::new(model, string, adjustments, None, canvas).run(string)
+}
+
+/// [`interpret`], with room for `segments` segments (a sketch of the same string counted them):
+/// the skeleton's array grows once.
+pub fn interpret_sized(model: &Model, string: &LString, segments: usize) -> Skeleton {
+    let mut canvas = empty_skeleton(&model.settings, false);
+    canvas.segments.reserve_exact(segments);
+    Interpreter::new(model, string, None, None, canvas).run(string)
+}
+
+/// Runs the turtle over `string` drawing only its segments, as lines ([`Sketch`]): line `i` is
+/// segment `i` of [`interpret`]'s skeleton.
+pub fn sketch(model: &Model, string: &LString) -> Sketch {
+    let others = empty_skeleton(&model.settings, false);
+    if let Some(sketch) = sketch::plain_sketch(model, string, others.clone()) {
+        return sketch;
+    }
+    Interpreter::new(model, string, None, None, Sketch::new(others, 0)).run(string)
 }
 
 /// The height (Y) of the turtle at every module of `string` (the middle of the move for
@@ -43,7 +64,8 @@ pub fn interpret_adjusted(
 /// attributes divide into thirds.
 pub fn heights(model: &Model, string: &LString, adjustments: Option<&Adjustments>) -> Heights {
     let mut heights = Heights::default();
-    Interpreter::new(model, string, adjustments, Some(&mut heights)).run(string);
+    let canvas = empty_skeleton(&model.settings, adjustments.is_some());
+    Interpreter::new(model, string, adjustments, Some(&mut heights), canvas).run(string);
     heights
 }
 

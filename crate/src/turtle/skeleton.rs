@@ -106,8 +106,43 @@ pub struct Skeleton {
 /// which meshes and files store, with room for a tube's width around its axis.
 pub const MAX_COORDINATE: f64 = 1e30;
 
+/// The box around points and the largest |z| among them: whether a drawing is flat
+/// ([`Skeleton::is_flat`]), gathered point by point.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Extent {
+    pub min: DVec3,
+    pub max: DVec3,
+    pub max_abs_z: f64,
+}
+
+impl Extent {
+    /// No point yet.
+    pub const EMPTY: Extent = Extent {
+        min: DVec3::INFINITY,
+        max: DVec3::NEG_INFINITY,
+        max_abs_z: 0.0,
+    };
+
+    #[inline]
+    pub fn add(&mut self, p: DVec3) {
+        self.min = self.min.min(p);
+        self.max = self.max.max(p);
+        self.max_abs_z = self.max_abs_z.max(p.z.abs());
+    }
+
+    /// True when there is a point and every point lies in the plane z = 0 up to a millionth of
+    /// the box's size.
+    pub fn is_flat(&self) -> bool {
+        if self.min.x > self.max.x {
+            return false;
+        }
+        let size = (self.max - self.min).max_element();
+        self.max_abs_z <= 1e-6 * size.max(1e-12)
+    }
+}
+
 /// `v` within ±[`MAX_COORDINATE`] (0 for NaN), and whether it had to change.
-fn clamp_number(v: &mut f64) -> bool {
+pub(super) fn clamp_number(v: &mut f64) -> bool {
     let kept = if v.is_nan() {
         0.0
     } else {
@@ -119,7 +154,7 @@ fn clamp_number(v: &mut f64) -> bool {
 }
 
 /// Each component of `v` clamped ([`clamp_number`]).
-fn clamp_point(v: &mut DVec3) -> bool {
+pub(super) fn clamp_point(v: &mut DVec3) -> bool {
     let [mut x, mut y, mut z] = v.to_array();
     let changed = clamp_number(&mut x) | clamp_number(&mut y) | clamp_number(&mut z);
     *v = DVec3::new(x, y, z);
@@ -127,7 +162,7 @@ fn clamp_point(v: &mut DVec3) -> bool {
 }
 
 /// A direction that is not finite replaced by `default`.
-fn clamp_direction(v: &mut DVec3, default: DVec3) -> bool {
+pub(super) fn clamp_direction(v: &mut DVec3, default: DVec3) -> bool {
     let changed = !v.is_finite();
     if changed {
         *v = default;
@@ -190,23 +225,17 @@ impl Skeleton {
     /// studio then shows it face-on in an orthographic view. Widths do not count (tubes always
     /// have thickness); spheres count by their centres.
     pub fn is_flat(&self) -> bool {
-        // Two passes over the points without collecting them (a big plant has millions).
-        let mut bounds: Option<(DVec3, DVec3)> = None;
+        let mut extent = Extent::EMPTY;
         self.for_each_point(&mut |p| {
-            bounds = Some(bounds.map_or((p, p), |(lo, hi)| (lo.min(p), hi.max(p))));
+            extent.add(p);
             true
         });
-        let Some((min, max)) = bounds else {
-            return false;
-        };
-        let size = (max - min).max_element();
-        let tolerance = 1e-6 * size.max(1e-12);
-        self.for_each_point(&mut |p| p.z.abs() <= tolerance)
+        extent.is_flat()
     }
 
     /// Calls `f` on every point that counts for [`Skeleton::is_flat`] until it returns false;
     /// returns whether it never did.
-    fn for_each_point(&self, f: &mut dyn FnMut(DVec3) -> bool) -> bool {
+    pub(crate) fn for_each_point(&self, f: &mut dyn FnMut(DVec3) -> bool) -> bool {
         self.segments.iter().all(|s| f(s.start) && f(s.end))
             && self.polygons.iter().all(|p| p.points.iter().all(|&q| f(q)))
             // A surface's outline spans heading and left from the origin.

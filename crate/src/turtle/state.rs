@@ -1,5 +1,6 @@
 //! The turtle's state and its rotations (docs/LANGUAGE.md, "Turtle").
 
+use crate::model::Settings;
 use glam::DVec3;
 
 /// The world's up direction, for `$` (ABOP's V).
@@ -24,6 +25,29 @@ pub(super) struct TurtleState {
 }
 
 impl TurtleState {
+    /// Where every reading of a string starts: at the origin, H = +Y, L = −X, U = +Z, turned by
+    /// `#heading` as `+` would turn it.
+    pub fn start(settings: &Settings) -> TurtleState {
+        let (tropism, susceptibility) = settings.tropism;
+        let mut start = TurtleState {
+            position: DVec3::ZERO,
+            heading: DVec3::Y,
+            left: DVec3::NEG_X,
+            up: DVec3::Z,
+            width: settings.width,
+            color: 0,
+            tropism,
+            susceptibility,
+            smooth: false,
+            last_segment: None,
+            anchor: None,
+        };
+        if settings.heading != 0.0 {
+            start.yaw(settings.heading.to_radians().sin_cos());
+        }
+        start
+    }
+
     /// Right-handed rotation about U by the angle whose sine and cosine are `(s, c)`: H turns
     /// towards L.
     pub fn yaw(&mut self, (s, c): (f64, f64)) {

@@ -316,3 +316,115 @@ fn anchors_name_the_segment_a_state_grew_from() {
     assert_eq!(s.segments[1].anchor, Some(0));
     assert_eq!(s.segments[2].anchor, Some(0));
 }
+
+/// The model and the derived string of `src`.
+fn model_and_string(src: &str) -> (crate::model::Model, crate::model::LString) {
+    let (file, diags) = syntax::parse(src);
+    assert!(diags.is_empty(), "{diags:?}");
+    let (model, diags) = model::resolve(&file);
+    assert!(diags.is_empty(), "{diags:?}");
+    let model = model.expect("model");
+    let steps = model.settings.iterations;
+    let derivation =
+        derive::derive(&model, &derive::DeriveOptions { steps, seed: None }).expect("derives");
+    (model, derivation.string)
+}
+
+/// Grammars the plain sketch loop draws: turns about every axis, `$`, `|`, colours, widths,
+/// parameters, `#heading`, moves without drawing, zero-length steps.
+const PLAIN_SKETCHES: &[&str] = &[
+    "#angle 20\n#iterations 6\naxiom: X\nX -> F[+X]F[-X]+X\nF -> FF\n",
+    "#angle 22.5\n#iterations 4\naxiom: A\nA -> [&FL!A]/////'[&FL!A]///////'[&FL!A]\nF -> S/////F\nS -> F L\nL -> ['''^^F]\n",
+    "#angle 30\n#heading 15\n#iterations 3\naxiom: F\nF -> F[&F]f[^F]G[\\F]g[/F]|F$F;F;(3)F'(2)F\n",
+    "#iterations 5\naxiom: A(1,10)\nA(l,w) -> !(w)F(l)[&(45)B(l*0.6,w*0.7)]/(137.5)A(l*0.9,w*0.7)\nB(l,w) -> !(w)F(l)[-(45)$C(l*0.6,w*0.7)]C(l*0.9,w*0.7)\nC(l,w) -> !(w)F(l)[+(45)$B(l*0.6,w*0.7)]B(l*0.9,w*0.7)\n",
+    "#angle 90\naxiom: F(0)F(1)+(30)F(2)-F(-1);(5)F\n",
+];
+
+/// Grammars the plain loop leaves to the interpreter: polygons, leaves, spheres, tropism, `@M`.
+const INTERPRETED_SKETCHES: &[&str] = &[
+    "#angle 30\naxiom: F[+F{.-F.+F.}]F[~l]F@O(0.5)F\n",
+    "#angle 30\n#tropism 0 -1 0 0.2\n#iterations 3\naxiom: X\nX -> F[+X][-X]FX\n",
+    "#angle 30\naxiom: F@M(1,2,3)F+F\n",
+];
+
+/// The sketch's lines against the skeleton's segments: the same modules and colours, ends equal
+/// up to `tolerance` (0: bit for bit).
+fn assert_sketch_draws_the_skeleton(src: &str, tolerance: f32) {
+    let (model, string) = model_and_string(src);
+    let skeleton = interpret(&model, &string);
+    let expected = crate::mesh::segment_lines(&skeleton);
+    let sketch = sketch(&model, &string);
+    assert_eq!(sketch.segments(), skeleton.segments.len(), "{src}");
+    assert_eq!(sketch.lines.modules, expected.modules, "{src}");
+    assert_eq!(sketch.lines.colors, expected.colors, "{src}");
+    assert_eq!(sketch.lines.ends.len(), expected.ends.len(), "{src}");
+    let size = expected.ends.iter().fold(1f32, |m, v| m.max(v.abs()));
+    for (i, (a, b)) in sketch.lines.ends.iter().zip(&expected.ends).enumerate() {
+        assert!(
+            (a - b).abs() <= tolerance * size,
+            "{src}: end value {i}: {a} against {b}"
+        );
+    }
+    assert_eq!(sketch.is_flat(), skeleton.is_flat(), "{src}");
+    assert_eq!(sketch.clamped(), skeleton.clamped, "{src}");
+    let lines = crate::mesh::MeshBuffers {
+        lines: sketch.lines.ends.clone(),
+        ..Default::default()
+    };
+    assert_eq!(sketch.line_bounds(), lines.bounds(), "{src}");
+}
+
+#[test]
+fn the_plain_sketch_loop_draws_the_skeletons_segments() {
+    for src in PLAIN_SKETCHES {
+        let (model, string) = model_and_string(src);
+        let others = interpreter::empty_skeleton(&model.settings, false);
+        assert!(
+            sketch::plain_sketch(&model, &string, others).is_some(),
+            "the plain loop should draw {src}"
+        );
+        // Frames are not re-orthonormalised after each turn: far below a pixel.
+        assert_sketch_draws_the_skeleton(src, 1e-6);
+    }
+}
+
+#[test]
+fn other_sketches_are_drawn_by_the_interpreter_exactly() {
+    for src in INTERPRETED_SKETCHES {
+        let (model, string) = model_and_string(src);
+        let others = interpreter::empty_skeleton(&model.settings, false);
+        assert!(
+            sketch::plain_sketch(&model, &string, others).is_none(),
+            "the plain loop should leave {src} to the interpreter"
+        );
+        assert_sketch_draws_the_skeleton(src, 0.0);
+    }
+}
+
+#[test]
+fn a_sketch_clamps_as_the_skeleton_does() {
+    // Far past MAX_COORDINATE: the interpreter draws it, and the first clamped module agrees.
+    for src in [
+        "axiom: F(1)F(1e31)F(1)\n",
+        "axiom: F!(1e40)F\n",
+        "#angle 90\naxiom: F+F(1e300)F(1e300)F\n",
+    ] {
+        let (model, string) = model_and_string(src);
+        let skeleton = interpret(&model, &string);
+        assert!(skeleton.clamped.is_some(), "{src}");
+        assert_sketch_draws_the_skeleton(src, 0.0);
+    }
+}
+
+#[test]
+fn a_flat_sketch_and_a_solid_one() {
+    let (model, string) = model_and_string(PLAIN_SKETCHES[0]);
+    assert!(sketch(&model, &string).is_flat());
+    let (model, string) = model_and_string(PLAIN_SKETCHES[1]);
+    assert!(!sketch(&model, &string).is_flat());
+    let (model, string) = model_and_string("axiom: A\n");
+    assert!(
+        !sketch(&model, &string).is_flat(),
+        "nothing drawn is not flat"
+    );
+}

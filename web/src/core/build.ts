@@ -122,9 +122,11 @@ export interface SketchRequest {
 }
 
 /**
- * The pipeline in two steps: up to the turtle with segments as lines (a `sketch` build), the
- * sketch handed to `request.show` when the plant is big, then the tubes (`remesh` with the view
- * options, the very mesh a plain build makes). The mesh stage's time is the remesh's.
+ * The pipeline in two steps: up to the turtle with segments as lines (a `sketch` build: the core
+ * draws the lines straight from the string, without the skeleton), the sketch handed to
+ * `request.show` when the plant is big, then the mesh (`remesh` with the view options: the
+ * skeleton, and the very mesh a plain build makes; without the tubes when `options.tubes` says
+ * so). The mesh stage's time is the remesh's.
  */
 function runSketched(
   core: (...args: Parameters<typeof build>) => WasmPlantBuild,
@@ -143,7 +145,8 @@ function runSketched(
     }
     if (result.ok) onProgress?.({ stage: 'meshing', step: 0, steps: 0 });
     const start = performance.now();
-    guarded(() => result.remesh({ sides: options.sides, smoothAll: options.smoothAll }));
+    const tubes = options.tubes === 'unlessFlat' ? !result.flat : options.tubes !== false;
+    guarded(() => result.remesh({ sides: options.sides, smoothAll: options.smoothAll, tubes }));
     meshMillis.set(result, performance.now() - start);
     return result;
   } catch (error) {

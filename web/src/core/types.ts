@@ -78,9 +78,14 @@ export interface MeshBuffers {
 
 /**
  * Options of {@link buildPlant}: the core's own `BuildOptions` (declared once, beside the boundary
- * in `crate/src/wasm.rs`) without `sketch`, which the facade sets itself.
+ * in `crate/src/wasm.rs`) without `sketch`, which the facade sets itself, and `tubes`: whether a
+ * sketched build ({@link inspectPlant} with a sketch request, the studio's worker) meshes the
+ * segments as tubes. `false` leaves them out (the Lines mode draws the segments as lines: the mesh
+ * holds only leaves, polygons and spheres); `'unlessFlat'` leaves them out of flat plants (the
+ * `auto` render mode draws those as lines); `true` or absent meshes them. Builds without a sketch
+ * and exports always mesh them.
  */
-export type BuildOptions = Omit<CoreBuildOptions, 'sketch'>;
+export type BuildOptions = Omit<CoreBuildOptions, 'sketch'> & { tubes?: boolean | 'unlessFlat' };
 
 /** A stage of a build, as the core reports it (in this order). */
 export type BuildStage = 'parsing' | 'deriving' | 'interpreting' | 'meshing';

@@ -195,7 +195,8 @@ export class StagesMode {
       // The sketch (the segments as lines) of every stage: drawn with the tubes, it keeps the early,
       // small stages visible where their tubes are thinner than a pixel.
       let sketch: PlantSketch | null = null;
-      const outcome = await client.request(source, { ...options, iterations: stage.iterations, seed: stage.seed }, { onSketch: (s) => (sketch = s), sketchFrom: 0 });
+      // Tubes whatever the view's render mode: the figure draws every stage with its tubes.
+      const outcome = await client.request(source, { ...options, tubes: true, iterations: stage.iterations, seed: stage.seed }, { onSketch: (s) => (sketch = s), sketchFrom: 0 });
       if (ticket !== this.ticket) {
         if (outcome.kind === 'built') outcome.result.inspector.free();
         return;

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { decodeState, encodeState } from '../share/codec';
-import { DEFAULT_VIEW_OPTIONS, ViewOptions, type ViewOption, type ViewOptionValues } from './view-options';
+import { DEFAULT_VIEW_OPTIONS, ViewOptions, tubesFor, type ViewOption, type ViewOptionValues } from './view-options';
 
 const SIDES = [3, 4, 5, 6, 8, 12, 16, 24, 32];
 
@@ -63,5 +63,13 @@ describe('view options', () => {
     stop();
     options.set({ grid: true });
     expect(seen).toEqual([{ ...DEFAULT_VIEW_OPTIONS, grid: false }]);
+  });
+});
+
+describe('tubesFor', () => {
+  it('asks for no tubes in the Lines mode, none for flat plants in auto, and tubes in the Tubes mode', () => {
+    expect(tubesFor('lines')).toBe(false);
+    expect(tubesFor('auto')).toBe('unlessFlat');
+    expect(tubesFor('tubes')).toBe(true);
   });
 });

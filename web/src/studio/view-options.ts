@@ -48,6 +48,15 @@ export const DEFAULT_VIEW_OPTIONS: Readonly<ViewOptionValues> = {
 const PROJECTION_MODES: readonly unknown[] = ['auto', 'perspective', 'orthographic'] satisfies ProjectionMode[];
 const RENDER_MODES: readonly unknown[] = ['auto', 'lines', 'tubes'] satisfies RenderMode[];
 
+/**
+ * What a build for the render mode `render` asks of the mesh's tubes (`BuildOptions.tubes`): none
+ * in the Lines mode, none for a flat plant in `auto` (drawn as lines), and tubes in the Tubes mode.
+ * Switching to a mode that shows tubes builds them (the options change).
+ */
+export function tubesFor(render: RenderMode): boolean | 'unlessFlat' {
+  return render === 'lines' ? false : render === 'auto' ? 'unlessFlat' : true;
+}
+
 /** Called after options changed, with all the values and the names of those that changed. */
 export type ViewOptionsListener = (values: Readonly<ViewOptionValues>, changed: ReadonlySet<ViewOption>) => void;
 

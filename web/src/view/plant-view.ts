@@ -86,6 +86,8 @@ interface CameraRig<C extends PerspectiveCamera | OrthographicCamera> {
  */
 export class PlantView {
   private readonly renderer: WebGLRenderer;
+  /** The box of the plant's segments (drawn as lines in the Lines mode), once asked for. */
+  private segmentsBox: Box3 | undefined;
   private readonly scene = new Scene();
   private readonly perspective: CameraRig<PerspectiveCamera>;
   private readonly orthographic: CameraRig<OrthographicCamera>;
@@ -229,7 +231,11 @@ export class PlantView {
   /** The bounding box of what is shown: the mesh, or the lines of the fallback. */
   private visibleBox(): Box3 {
     const geometry = this.plant.geometry.getAttribute('position') ? this.plant.geometry : this.lines.geometry;
-    return geometry.boundingBox ?? new Box3();
+    const box = geometry.boundingBox ?? new Box3();
+    // In the Lines mode the segments are drawn as lines, and the mesh has no tubes (maybe nothing).
+    if (!this.usesLines || !this.mesh) return box;
+    this.segmentsBox ??= pointsBox(this.mesh.segmentEnds);
+    return box.clone().union(this.segmentsBox);
   }
 
   /**
@@ -256,10 +262,12 @@ export class PlantView {
     oldMesh.dispose();
     oldLines.dispose();
     this.segmentLines.show(asLines ? null : mesh);
+    this.segmentsBox = undefined;
     this.flat = flat;
     this.applyMaterial();
     this.colourModules(null);
-    const hasGeometry = mesh.indices.length > 0 || asLines;
+    // A mesh without tubes (the Lines mode's) may hold no triangle: its segments are drawn.
+    const hasGeometry = mesh.indices.length > 0 || asLines || (mesh.segmentEnds.length > 0 && this.usesLines);
     if (hasGeometry && this.frameNext) {
       this.frameNext = false;
       this.perspective.framed = false;

@@ -1,0 +1,447 @@
+//! A sketch: what the turtle draws as lines only, written straight into the flat arrays the view
+//! and the benchmark read (no [`Segment`](super::Segment) records, no mesh stage). The studio
+//! shows a big plant's sketch while its tubes are meshed; a build asked for a sketch draws the
+//! full skeleton only when something needs it (`pipeline::Build::ensure_skeleton`).
+//!
+//! The same interpreter draws a sketch and a skeleton ([`super::interpreter::Canvas`]), so line
+//! `i` of a sketch is exactly segment `i` of the skeleton as [`crate::mesh::segment_lines`] writes
+//! it, clamped as [`Skeleton::clamp_to_finite`] clamps it.
+
+use super::interpreter::Canvas;
+use super::skeleton::{
+    clamp_direction, clamp_number, clamp_point, Extent, Polygon, QueryValue, Skeleton, Sphere,
+    Surface,
+};
+use super::state::TurtleState;
+use crate::growth::Adjustments;
+use crate::model::{LString, Model};
+use crate::vocabulary::Command;
+use glam::DVec3;
+
+/// The segments of a skeleton as lines, in `Skeleton::segments` order: line `i` is segment `i`
+/// (a [`Sketch`]'s, and `crate::mesh::segment_lines`'s of a skeleton).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct SegmentLines {
+    /// `f32` × 3 per line end, two ends per segment (start, end).
+    pub ends: Vec<f32>,
+    /// Linear RGB, `f32` × 3 per line end: the segment's colour at both ends.
+    pub colors: Vec<f32>,
+    /// The module that drew each segment (one per line), as `Segment::module`: an index into the
+    /// string the turtle read.
+    pub modules: Vec<u32>,
+}
+
+/// The segments as lines, with what the sketch needs to say about the rest of the drawing.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Sketch {
+    /// Line `i` is the skeleton's segment `i`: its ends, colour and module.
+    pub lines: SegmentLines,
+    /// Polygons, surfaces and spheres (few; no segments): they count for flatness and clamping.
+    others: Skeleton,
+    /// The segments' ends (clamped).
+    extent: Extent,
+    /// The first module whose segment was clamped.
+    clamped: Option<u32>,
+    /// The colour index last drawn with, and its colour.
+    color: Option<(u16, [f32; 3])>,
+}
+
+impl Sketch {
+    /// An empty sketch in the palette of `others` (an empty skeleton), with room for `segments`.
+    pub(super) fn new(others: Skeleton, segments: usize) -> Sketch {
+        Sketch {
+            lines: SegmentLines {
+                ends: Vec::with_capacity(6 * segments),
+                colors: Vec::with_capacity(6 * segments),
+                modules: Vec::with_capacity(segments),
+            },
+            others,
+            extent: Extent::EMPTY,
+            clamped: None,
+            color: None,
+        }
+    }
+
+    /// Segments drawn.
+    pub fn segments(&self) -> usize {
+        self.lines.modules.len()
+    }
+
+    /// As [`Skeleton::is_flat`] of the skeleton the same string draws.
+    pub fn is_flat(&self) -> bool {
+        let mut extent = self.extent;
+        self.others.for_each_point(&mut |p| {
+            extent.add(p);
+            true
+        });
+        extent.is_flat()
+    }
+
+    /// `[[min x, y, z], [max x, y, z]]` of the lines' ends as stored (`f32`), as
+    /// [`crate::mesh::MeshBuffers::bounds`] finds them (all zeros without a line), without reading
+    /// them again: rounding to `f32` keeps the order, so the box of the rounded ends is the rounded
+    /// box.
+    pub fn line_bounds(&self) -> [[f64; 3]; 2] {
+        if self.lines.ends.is_empty() {
+            return [[0.0; 3]; 2];
+        }
+        let round = |v: DVec3| [v.x as f32 as f64, v.y as f32 as f64, v.z as f32 as f64];
+        [round(self.extent.min), round(self.extent.max)]
+    }
+
+    /// As [`Skeleton::clamped`] of the skeleton the same string draws.
+    pub fn clamped(&self) -> Option<u32> {
+        match (self.clamped, self.others.clamped) {
+            (Some(a), Some(b)) => Some(a.min(b)),
+            (a, b) => a.or(b),
+        }
+    }
+
+    #[inline]
+    fn color_of(&mut self, index: u16) -> [f32; 3] {
+        match self.color {
+            Some((i, c)) if i == index => c,
+            _ => {
+                let c = self.others.color(index);
+                self.color = Some((index, c));
+                c
+            }
+        }
+    }
+}
+
+impl Canvas for Sketch {
+    #[inline]
+    fn segment(&mut self, start: DVec3, t: &TurtleState, index: u32) -> u32 {
+        let (mut a, mut b) = (start, t.position);
+        // What the skeleton clamps, so that the first clamped module is the same.
+        let (mut width, mut left, mut up) = (t.width, t.left, t.up);
+        let changed = clamp_point(&mut a)
+            | clamp_point(&mut b)
+            | clamp_number(&mut width)
+            | clamp_direction(&mut left, DVec3::X)
+            | clamp_direction(&mut up, DVec3::Z);
+        if changed && self.clamped.is_none() {
+            self.clamped = Some(index);
+        }
+        self.extent.add(a);
+        self.extent.add(b);
+        let c = self.color_of(t.color);
+        let lines = &mut self.lines;
+        lines.ends.extend_from_slice(&[
+            a.x as f32, a.y as f32, a.z as f32, b.x as f32, b.y as f32, b.z as f32,
+        ]);
+        lines
+            .colors
+            .extend_from_slice(&[c[0], c[1], c[2], c[0], c[1], c[2]]);
+        lines.modules.push(index);
+        lines.modules.len() as u32 - 1
+    }
+
+    fn polygon(&mut self, polygon: Polygon) {
+        self.others.polygons.push(polygon);
+    }
+
+    fn surface(&mut self, surface: Surface) {
+        self.others.surfaces.push(surface);
+    }
+
+    fn sphere(&mut self, sphere: Sphere) {
+        self.others.spheres.push(sphere);
+    }
+
+    fn wants_queries(&self) -> bool {
+        false
+    }
+
+    fn query(&mut self, _query: QueryValue) {}
+
+    fn widths_set(&mut self) {}
+
+    fn finish(&mut self, end: DVec3, _widths: Option<(&Adjustments, f64, f64)>) {
+        // Widths are not drawn; the rest is clamped as the skeleton's is.
+        self.others.end = end;
+        self.others.clamp_to_finite();
+    }
+}
+
+/// What the plain sketch loop does with a module id.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Op {
+    /// Nothing a sketch shows changes (`@Gc`, queries, letters without a command, …).
+    Nothing,
+    /// `F`, `G` (`true`: draws) and `f`, `g`, by a length.
+    Forward(bool),
+    /// A rotation about U, L or H; its sign (−1 for `-`, `^`, `/`…), the axis.
+    Turn(Axis, f64),
+    TurnAround,
+    RollToVertical,
+    Push,
+    Pop,
+    /// `!`: only whether the skeleton would clamp a width.
+    Width,
+    NextColor,
+    SetColor,
+    /// Something the plain loop leaves to the interpreter (polygons, surfaces, spheres, tropism,
+    /// `@M`).
+    Other,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Axis {
+    Up,
+    Left,
+    Heading,
+}
+
+fn op_of(command: Option<Command>) -> Op {
+    use Command as C;
+    let Some(command) = command else {
+        return Op::Nothing;
+    };
+    match command {
+        C::Forward | C::ForwardNoVertex => Op::Forward(true),
+        C::Move | C::MoveNoVertex => Op::Forward(false),
+        C::TurnLeft => Op::Turn(Axis::Up, 1.0),
+        C::TurnRight => Op::Turn(Axis::Up, -1.0),
+        C::PitchDown => Op::Turn(Axis::Left, 1.0),
+        C::PitchUp => Op::Turn(Axis::Left, -1.0),
+        C::RollRight => Op::Turn(Axis::Heading, 1.0),
+        C::RollLeft => Op::Turn(Axis::Heading, -1.0),
+        C::TurnAround => Op::TurnAround,
+        C::RollToVertical => Op::RollToVertical,
+        C::Push => Op::Push,
+        C::Pop => Op::Pop,
+        C::NextColor => Op::NextColor,
+        C::SetColor => Op::SetColor,
+        C::Width => Op::Width,
+        C::StartSmooth
+        | C::EndSmooth
+        | C::QueryPosition
+        | C::QueryHeading
+        | C::QueryUp
+        | C::QueryLeft => Op::Nothing,
+        C::StartPolygon
+        | C::PolygonVertex
+        | C::EndPolygon
+        | C::Leaf
+        | C::Petal
+        | C::Sphere
+        | C::MoveTo
+        | C::TropismVector
+        | C::TropismStrength => Op::Other,
+    }
+}
+
+/// The plain turtle of a sketch: position and frame, and the colour index.
+#[derive(Clone, Copy)]
+struct Plain {
+    p: DVec3,
+    h: DVec3,
+    l: DVec3,
+    u: DVec3,
+    width: f64,
+    color: u16,
+}
+
+/// The sketch of `string` by the plain loop: one table lookup per module, frames rotated without
+/// re-orthonormalising (the interpreter's skeleton does; the lines agree with its segments to
+/// far below a pixel: about 1e-13 of the plant's size per rotation), ends written straight into
+/// the arrays sized by `segments` (an upper bound). `None` when the string has a module the plain
+/// loop leaves to the interpreter, when the grammar bends by tropism, or when a point would be
+/// clamped: [`super::sketch`] then draws with the interpreter.
+///
+/// Long because it is the loop itself, one arm per operation with the frame, the stack and the
+/// output arrays in locals: split into functions, each would take the whole turtle by reference,
+/// which is what this loop exists to avoid.
+pub(super) fn plain_sketch(model: &Model, string: &LString, others: Skeleton) -> Option<Sketch> {
+    let settings = &model.settings;
+    if settings.tropism.1 != 0.0 {
+        return None;
+    }
+    // Each id's operation, its parameter's default value (NaN: none) and, for a rotation, the
+    // sine and cosine of its default angle.
+    let ops: Vec<(Op, f64, (f64, f64))> = (0..model.meanings.len())
+        .map(|i| {
+            let Some(info) = model.meanings[i] else {
+                return (Op::Nothing, f64::NAN, (0.0, 1.0));
+            };
+            let op = op_of(info.command());
+            let default = info
+                .params
+                .first()
+                .and_then(|p| p.default_value(|d| settings.value(d)))
+                .unwrap_or(f64::NAN);
+            let turn = match op {
+                Op::Turn(_, sign) => turn_of(sign, default),
+                _ => (0.0, 1.0),
+            };
+            (op, default, turn)
+        })
+        .collect();
+    let mut segments = 0usize;
+    for id in &string.ids {
+        match ops.get(id.index()).map_or(Op::Other, |o| o.0) {
+            Op::Forward(true) => segments += 1,
+            Op::Other => return None,
+            _ => {}
+        }
+    }
+    let mut sketch = Sketch::new(others, segments);
+    // The start as the interpreter's (`#heading` turns it).
+    let start = TurtleState::start(settings);
+    let mut t = Plain {
+        p: start.position,
+        h: start.heading,
+        l: start.left,
+        u: start.up,
+        width: start.width,
+        color: 0,
+    };
+    let mut stack: Vec<Plain> = Vec::new();
+    let parametric = string.is_parametric();
+    let lines = &mut sketch.lines;
+    let (mut extent_min, mut extent_max, mut max_abs_z) =
+        (DVec3::INFINITY, DVec3::NEG_INFINITY, 0.0f64);
+    let mut color = sketch.others.color(0);
+    let mut color_index = 0u16;
+    for (index, id) in string.ids.iter().enumerate() {
+        let (op, default, default_turn) = ops[id.index()];
+        if op == Op::Nothing {
+            continue;
+        }
+        // A first parameter replaces the default length or angle: `F(l)`, `+(a)`.
+        let first = if parametric {
+            string
+                .params_of(index)
+                .first()
+                .copied()
+                .filter(|v| v.is_finite())
+        } else {
+            None
+        };
+        let value = first.unwrap_or(default);
+        match op {
+            Op::Forward(draws) => {
+                let length = if value.is_nan() { 0.0 } else { value };
+                let a = t.p;
+                t.p += t.h * length;
+                if draws && length != 0.0 {
+                    let b = t.p;
+                    // What the skeleton would clamp (a coordinate or width past MAX_COORDINATE,
+                    // or not a number) is left to the interpreter. Comparisons, not min and max:
+                    // those pay for NaN semantics on every call, and no NaN gets past here.
+                    let limit = DVec3::splat(super::MAX_COORDINATE);
+                    let within = a.abs().cmple(limit) & b.abs().cmple(limit);
+                    if !within.all() || t.width > super::MAX_COORDINATE {
+                        return None;
+                    }
+                    for p in [a, b] {
+                        for k in 0..3 {
+                            if p[k] < extent_min[k] {
+                                extent_min[k] = p[k];
+                            }
+                            if p[k] > extent_max[k] {
+                                extent_max[k] = p[k];
+                            }
+                        }
+                        if p.z.abs() > max_abs_z {
+                            max_abs_z = p.z.abs();
+                        }
+                    }
+                    if t.color != color_index {
+                        color_index = t.color;
+                        color = sketch.others.color(color_index);
+                    }
+                    let c = color;
+                    lines.ends.extend_from_slice(&[
+                        a.x as f32, a.y as f32, a.z as f32, b.x as f32, b.y as f32, b.z as f32,
+                    ]);
+                    lines
+                        .colors
+                        .extend_from_slice(&[c[0], c[1], c[2], c[0], c[1], c[2]]);
+                    lines.modules.push(index as u32);
+                }
+            }
+            Op::Turn(axis, sign) => {
+                let (s, c) = match first {
+                    Some(angle) => turn_of(sign, angle),
+                    None => default_turn,
+                };
+                match axis {
+                    Axis::Up => yaw(&mut t, s, c),
+                    Axis::Left => {
+                        let h = t.h * c - t.u * s;
+                        t.u = t.h * s + t.u * c;
+                        t.h = h;
+                    }
+                    Axis::Heading => {
+                        let l = t.l * c + t.u * s;
+                        t.u = t.u * c - t.l * s;
+                        t.l = l;
+                    }
+                }
+            }
+            Op::TurnAround => {
+                let (s, c) = std::f64::consts::PI.sin_cos();
+                yaw(&mut t, s, c);
+            }
+            Op::RollToVertical => {
+                let l = DVec3::Y.cross(t.h);
+                if l.length() > 1e-9 {
+                    t.l = l.normalize();
+                    t.u = t.h.cross(t.l);
+                }
+            }
+            Op::Push => stack.push(t),
+            Op::Pop => {
+                if let Some(saved) = stack.pop() {
+                    t = saved;
+                }
+            }
+            Op::Width => {
+                t.width = match first {
+                    Some(w) => w.max(0.0),
+                    None => (t.width - settings.width_step).max(0.0),
+                }
+            }
+            Op::NextColor => {
+                let step = if value.is_nan() {
+                    1
+                } else {
+                    value.round().clamp(-1000.0, 1000.0) as i32
+                };
+                t.color = (t.color as i32 + step).clamp(0, u16::MAX as i32) as u16;
+            }
+            Op::SetColor => {
+                t.color = match first {
+                    Some(c) => c.round().clamp(0.0, u16::MAX as f64) as u16,
+                    None => t.color.saturating_add(1),
+                }
+            }
+            Op::Nothing | Op::Other => {}
+        }
+    }
+    sketch.extent = Extent {
+        min: extent_min,
+        max: extent_max,
+        max_abs_z,
+    };
+    sketch.others.end = t.p;
+    Some(sketch)
+}
+
+/// The sine and cosine of a turn by `angle` degrees (none for NaN) in the direction `sign`, as
+/// the interpreter computes them.
+fn turn_of(sign: f64, angle: f64) -> (f64, f64) {
+    let angle = if angle.is_nan() { 0.0 } else { angle };
+    (sign * angle.to_radians()).sin_cos()
+}
+
+/// Rotation about U: H turns towards L.
+#[inline]
+fn yaw(t: &mut Plain, s: f64, c: f64) {
+    let h = t.h * c + t.l * s;
+    t.l = t.l * c - t.h * s;
+    t.h = h;
+}
