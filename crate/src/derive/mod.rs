@@ -21,6 +21,7 @@ mod cut;
 mod d0l;
 mod explain;
 mod groups;
+mod parametric;
 mod plan;
 mod rewriter;
 

@@ -3,6 +3,7 @@
 
 use super::classes::{self, Classes, Kind};
 use super::context::{self, Recorder};
+use super::parametric;
 use super::{check_size, Observer, MAX_STRING_BYTES, NOT_REWRITTEN};
 use crate::diagnostics::Diagnostic;
 use crate::model::{Env, LString, Model, ModuleId, Production, Program, RuleSet, SuccessorModule};
@@ -53,6 +54,8 @@ pub(super) struct Rewriter<'m, R: rand::Rng> {
     pub repeat_passes: u64,
     /// The productions' classes, for strings without parameters.
     classes: Option<Classes>,
+    /// The productions' classes, for strings with parameters.
+    parametric: Option<parametric::Classes>,
     /// Scratch of a classes pass: each module's right neighbour, and a stack of neighbours.
     right: Vec<u32>,
     stack: Vec<u32>,
@@ -82,6 +85,7 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
             group_depth: 0,
             repeat_passes: 0,
             classes: Classes::new(model),
+            parametric: parametric::Classes::new(model),
             right: Vec::new(),
             stack: Vec::new(),
         }
@@ -279,6 +283,11 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         let model = self.model;
         let by_class = self.plan.is_none() && std::ptr::eq(rules, &model.productions);
         let classes = if by_class { self.classes.take() } else { None };
+        let parametric = if by_class {
+            self.parametric.take()
+        } else {
+            None
+        };
         let partners = match &classes {
             Some(c) => c.general_contexts,
             None => rules.has_contexts(),
@@ -299,7 +308,14 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
                 (self.classes, self.right, self.stack) = (Some(c), right, stack);
                 changed
             }
-            None => self.rewrite_range(rules, src, 0..src.len(), dst, num_it),
+            None => match parametric {
+                Some(c) => {
+                    let changed = self.rewrite_parametric(&c, rules, src, dst, num_it);
+                    self.parametric = Some(c);
+                    changed
+                }
+                None => self.rewrite_range(rules, src, 0..src.len(), dst, num_it),
+            },
         }
     }
 

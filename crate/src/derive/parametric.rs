@@ -1,0 +1,318 @@
+//! Per-module classes for strings with parameters: the general path's table for parametric
+//! grammars, decided once per derivation.
+//!
+//! For each module id:
+//! - [`Kind::Copy`]: no production: the module is copied, parameters and all;
+//! - [`Kind::Template`]: its first production has no context, condition or weight, and its
+//!   successor no control module: when the module has the predecessor's arity, it always applies,
+//!   and its successor is a template: the ids and the offsets are copied, each argument is written
+//!   straight into the parameters, the simple ones ([`Simple`]: a constant, a parameter, one
+//!   operator) without the interpreter;
+//! - [`Kind::General`]: anything else, matched by the general path module by module.
+//!
+//! The output is sized before the step when no module is general, so the buffers never grow.
+
+use super::classes::{put, PAD};
+use super::rewriter::Rewriter;
+use super::{check_size, NOT_REWRITTEN};
+use crate::diagnostics::Diagnostic;
+use crate::model::{LString, Model, ModuleId, Program, RuleSet, Simple};
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Kind {
+    Copy,
+    Template,
+    General,
+}
+
+/// One module id's class.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Class {
+    pub kind: Kind,
+    /// Template: the predecessor's arity; the module matches when it has that many parameters.
+    pub arity: u32,
+    /// Template: its index in [`Classes::templates`].
+    pub template: u32,
+}
+
+/// One argument of a template's successor.
+#[derive(Clone, Debug)]
+pub(super) enum Arg {
+    /// Evaluated without the interpreter (when its value is finite).
+    Simple(Simple, u32),
+    /// Evaluated by the interpreter: the index of the program in [`Template::programs`].
+    Program(u32),
+}
+
+/// A production's successor, ready to be written.
+#[derive(Clone, Debug)]
+pub(super) struct Template {
+    pub production: u32,
+    /// The first slot of the predecessor's parameters, and how many slots the production binds.
+    pub first_slot: usize,
+    pub slots: usize,
+    pub ids: Vec<ModuleId>,
+    /// The same ids in [`Classes::successors`], from `start`.
+    pub start: u32,
+    /// For each successor module, the parameters written up to and including it.
+    pub ends: Vec<u32>,
+    pub args: Vec<Arg>,
+    pub programs: Vec<Program>,
+}
+
+/// The classes of the productions section of a parametric grammar.
+pub(super) struct Classes {
+    pub classes: Vec<Class>,
+    pub templates: Vec<Template>,
+    /// Every template's ids, back to back, then [`PAD`] ids of padding for [`put`].
+    pub successors: Vec<ModuleId>,
+    /// True when some class is general: the output's size is not known before the step.
+    pub general: bool,
+}
+
+impl Classes {
+    /// The classes of `model`'s productions, when its strings have parameters and no control
+    /// module groups.
+    pub fn new(model: &Model) -> Option<Classes> {
+        if !model.parametric || model.has_groups {
+            return None;
+        }
+        let rules = &model.productions;
+        let mut classes = Classes {
+            classes: Vec::with_capacity(model.alphabet.len()),
+            templates: Vec::new(),
+            successors: Vec::new(),
+            general: false,
+        };
+        for index in 0..model.alphabet.len() {
+            let candidates = rules
+                .by_predecessor
+                .get(index)
+                .map_or(&[][..], Vec::as_slice);
+            let class = classes.classify(rules, candidates);
+            classes.general |= class.kind == Kind::General;
+            classes.classes.push(class);
+        }
+        classes
+            .successors
+            .extend(std::iter::repeat_n(ModuleId(0), PAD));
+        Some(classes)
+    }
+
+    fn classify(&mut self, rules: &RuleSet, candidates: &[u32]) -> Class {
+        let general = Class {
+            kind: Kind::General,
+            arity: 0,
+            template: 0,
+        };
+        let Some(&first) = candidates.first() else {
+            return Class {
+                kind: Kind::Copy,
+                ..general
+            };
+        };
+        let p = &rules.productions[first as usize];
+        // With one production, a module of another arity matches none and is copied; with more,
+        // a later one may match it: the general path tries them.
+        if candidates.len() > 1
+            || p.has_context()
+            || p.condition.is_some()
+            || p.weight.is_some()
+            || p.successor.iter().any(|s| s.group.is_some())
+        {
+            return general;
+        }
+        let mut template = Template {
+            production: first,
+            first_slot: p.predecessor.first_slot as usize,
+            slots: p.slots,
+            ids: Vec::with_capacity(p.successor.len()),
+            start: self.successors.len() as u32,
+            ends: Vec::with_capacity(p.successor.len()),
+            args: Vec::new(),
+            programs: Vec::new(),
+        };
+        for s in &p.successor {
+            template.ids.push(s.id);
+            for a in &s.args {
+                let simple = a
+                    .simple()
+                    .filter(|e| e.max_slot().is_none_or(|k| (k as usize) < p.slots));
+                let program = template.programs.len() as u32;
+                template.programs.push(a.clone());
+                template.args.push(match simple {
+                    Some(e) => Arg::Simple(e, program),
+                    None => Arg::Program(program),
+                });
+            }
+            template.ends.push(template.args.len() as u32);
+        }
+        self.successors.extend_from_slice(&template.ids);
+        self.templates.push(template);
+        Class {
+            kind: Kind::Template,
+            arity: p.predecessor.arity as u32,
+            template: (self.templates.len() - 1) as u32,
+        }
+    }
+
+    /// The length and the parameter count of the string the step makes from `src`, when no
+    /// module is general (every module then rewrites as its class says).
+    fn output_size(&self, src: &LString) -> Option<(usize, usize)> {
+        if self.general {
+            return None;
+        }
+        let (mut len, mut params) = (0usize, 0usize);
+        for (i, &id) in src.ids.iter().enumerate() {
+            let class = &self.classes[id.index()];
+            let own = (src.offsets[i + 1] - src.offsets[i]) as usize;
+            if class.kind == Kind::Template && own == class.arity as usize {
+                let t = &self.templates[class.template as usize];
+                len += t.ids.len();
+                params += t.args.len();
+            } else {
+                len += 1;
+                params += own;
+            }
+        }
+        Some((len, params))
+    }
+}
+
+impl<R: rand::Rng> Rewriter<'_, R> {
+    /// [`Rewriter::rewrite_range`] over the whole string, each module as its class says: the
+    /// productions section of a parametric grammar without control modules, unplanned.
+    pub(super) fn rewrite_parametric(
+        &mut self,
+        c: &Classes,
+        rules: &RuleSet,
+        src: &LString,
+        dst: &mut LString,
+        num_it: u32,
+    ) -> Result<bool, Diagnostic> {
+        let model = self.model;
+        if let Some((len, params)) = c.output_size(src) {
+            // As LString::bytes counts them: an id and an offset a module, one offset more.
+            let bytes = len * 8 + 4 + params * size_of::<f64>();
+            if check_size(model, num_it, len, bytes).is_err() {
+                // Past a limit: the general path says where, as it always has.
+                return self.rewrite_range(rules, src, 0..src.len(), dst, num_it);
+            }
+            reserve(&mut dst.ids, len + PAD);
+            reserve(&mut dst.offsets, len + 1);
+            reserve(&mut dst.params, params);
+        }
+        let tracking = self.tracker.is_some();
+        let random_vars = !self.vars.is_empty();
+        let mut changed = false;
+        for (i, &id) in src.ids.iter().enumerate() {
+            let class = &c.classes[id.index()];
+            let (from, to) = (src.offsets[i] as usize, src.offsets[i + 1] as usize);
+            let production = match class.kind {
+                Kind::Template if to - from == class.arity as usize => {
+                    let t = &c.templates[class.template as usize];
+                    if random_vars {
+                        self.vars.iter_mut().for_each(|v| *v = None);
+                    }
+                    self.slots[t.first_slot..t.first_slot + (to - from)]
+                        .copy_from_slice(&src.params[from..to]);
+                    self.write_template(c, t, dst, num_it)?;
+                    check_size(model, num_it, dst.len(), dst.bytes())?;
+                    changed = true;
+                    t.production
+                }
+                Kind::Copy => {
+                    copy(src, i, dst);
+                    NOT_REWRITTEN
+                }
+                Kind::Template => {
+                    copy(src, i, dst);
+                    NOT_REWRITTEN
+                }
+                Kind::General => {
+                    let applied = self.rewrite_module(rules, src, i, dst, num_it)?;
+                    changed |= applied.is_some();
+                    applied.unwrap_or(NOT_REWRITTEN)
+                }
+            };
+            if tracking {
+                self.note(dst.len(), i, production);
+            }
+        }
+        Ok(changed)
+    }
+
+    /// Writes template `t`'s successor onto `dst`, the production's slots bound.
+    #[inline]
+    fn write_template(
+        &mut self,
+        c: &Classes,
+        t: &Template,
+        dst: &mut LString,
+        num_it: u32,
+    ) -> Result<(), Diagnostic> {
+        put(&mut dst.ids, &c.successors, t.start as usize, t.ids.len());
+        let base = dst.params.len() as u32;
+        dst.offsets.extend(t.ends.iter().map(|&e| base + e));
+        let at = dst.params.len();
+        dst.params.resize(at + t.args.len(), 0.0);
+        let slots = &self.slots[..t.slots];
+        let mut retry = false;
+        for (out, arg) in dst.params[at..].iter_mut().zip(&t.args) {
+            match arg {
+                Arg::Simple(e, _) => {
+                    *out = e.eval(slots);
+                    retry |= !out.is_finite();
+                }
+                Arg::Program(_) => retry = true,
+            }
+        }
+        if retry {
+            // Arguments the interpreter evaluates (and those that were not finite, which it
+            // reports), in order: a random argument draws as it always has.
+            for (k, arg) in t.args.iter().enumerate() {
+                let value = match arg {
+                    Arg::Simple(_, p) if !dst.params[at + k].is_finite() => {
+                        self.eval(&t.programs[*p as usize], t.slots, num_it, true)?
+                    }
+                    Arg::Simple(..) => continue,
+                    Arg::Program(p) => {
+                        self.eval(&t.programs[*p as usize], t.slots, num_it, true)?
+                    }
+                };
+                dst.params[at + k] = value;
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Copies module `i` of `src` onto `dst`, parameters and all.
+#[inline(always)]
+fn copy(src: &LString, i: usize, dst: &mut LString) {
+    dst.ids.push(src.ids[i]);
+    let (from, to) = (src.offsets[i] as usize, src.offsets[i + 1] as usize);
+    // Most modules have a parameter or two: no call to a copy of any length for them.
+    match &src.params[from..to] {
+        [] => {}
+        [a] => dst.params.push(*a),
+        [a, b] => {
+            dst.params.push(*a);
+            dst.params.push(*b);
+        }
+        more => dst.params.extend_from_slice(more),
+    }
+    dst.offsets.push(dst.params.len() as u32);
+}
+
+/// Makes room for `len` items in the empty `v`: a new buffer when it lacks room (growing the old
+/// one would copy what it held).
+fn reserve<T>(v: &mut Vec<T>, len: usize) {
+    if v.capacity() < len {
+        let mut fresh = Vec::new();
+        fresh.reserve_exact(len);
+        // Keep what was written (the first offset of a cleared parametric string).
+        fresh.extend(v.drain(..));
+        *v = fresh;
+    }
+}
