@@ -12,7 +12,7 @@
 //!
 //! The output is sized before the step when no module is general, so the buffers never grow.
 
-use super::classes::{put, PAD};
+use super::classes::{put, put_wide, width, PAD};
 use super::rewriter::Rewriter;
 use super::{check_size, NOT_REWRITTEN};
 use crate::diagnostics::Diagnostic;
@@ -68,6 +68,8 @@ pub(super) struct Classes {
     pub successors: Vec<ModuleId>,
     /// True when some class is general: the output's size is not known before the step.
     pub general: bool,
+    /// The copy width for the templates' ids ([`width`]).
+    pub width: usize,
 }
 
 impl Classes {
@@ -83,6 +85,7 @@ impl Classes {
             templates: Vec::new(),
             successors: Vec::new(),
             general: false,
+            width: 0,
         };
         for index in 0..model.alphabet.len() {
             let candidates = rules
@@ -93,6 +96,8 @@ impl Classes {
             classes.general |= class.kind == Kind::General;
             classes.classes.push(class);
         }
+        let longest = classes.templates.iter().map(|t| t.ids.len()).max();
+        classes.width = width(longest.unwrap_or(0));
         classes
             .successors
             .extend(std::iter::repeat_n(ModuleId(0), PAD));
@@ -190,7 +195,27 @@ impl<R: rand::Rng> Rewriter<'_, R> {
         dst: &mut LString,
         num_it: u32,
     ) -> Result<bool, Diagnostic> {
+        match c.width {
+            4 => self.rewrite_parametric_as::<4>(c, rules, src, dst, num_it),
+            8 => self.rewrite_parametric_as::<8>(c, rules, src, dst, num_it),
+            PAD => self.rewrite_parametric_as::<PAD>(c, rules, src, dst, num_it),
+            _ => self.rewrite_parametric_as::<0>(c, rules, src, dst, num_it),
+        }
+    }
+
+    /// [`Rewriter::rewrite_parametric`], each template's ids copied as `W` ids ([`put_wide`]; 0:
+    /// as many as it has).
+    fn rewrite_parametric_as<const W: usize>(
+        &mut self,
+        c: &Classes,
+        rules: &RuleSet,
+        src: &LString,
+        dst: &mut LString,
+        num_it: u32,
+    ) -> Result<bool, Diagnostic> {
         let model = self.model;
+        // Sized before the step: no module can pass a limit on the way.
+        let mut sized = false;
         if let Some((len, params)) = c.output_size(src) {
             // As LString::bytes counts them: an id and an offset a module, one offset more.
             let bytes = len * 8 + 4 + params * size_of::<f64>();
@@ -201,6 +226,7 @@ impl<R: rand::Rng> Rewriter<'_, R> {
             reserve(&mut dst.ids, len + PAD);
             reserve(&mut dst.offsets, len + 1);
             reserve(&mut dst.params, params);
+            sized = true;
         }
         let tracking = self.tracker.is_some();
         let random_vars = !self.vars.is_empty();
@@ -216,8 +242,10 @@ impl<R: rand::Rng> Rewriter<'_, R> {
                     }
                     self.slots[t.first_slot..t.first_slot + (to - from)]
                         .copy_from_slice(&src.params[from..to]);
-                    self.write_template(c, t, dst, num_it)?;
-                    check_size(model, num_it, dst.len(), dst.bytes())?;
+                    self.write_template::<W>(c, t, dst, num_it)?;
+                    if !sized {
+                        check_size(model, num_it, dst.len(), dst.bytes())?;
+                    }
                     changed = true;
                     t.production
                 }
@@ -244,14 +272,18 @@ impl<R: rand::Rng> Rewriter<'_, R> {
 
     /// Writes template `t`'s successor onto `dst`, the production's slots bound.
     #[inline]
-    fn write_template(
+    fn write_template<const W: usize>(
         &mut self,
         c: &Classes,
         t: &Template,
         dst: &mut LString,
         num_it: u32,
     ) -> Result<(), Diagnostic> {
-        put(&mut dst.ids, &c.successors, t.start as usize, t.ids.len());
+        if W == 0 {
+            put(&mut dst.ids, &c.successors, t.start as usize, t.ids.len());
+        } else {
+            put_wide::<W>(&mut dst.ids, &c.successors, t.start as usize, t.ids.len());
+        }
         let base = dst.params.len() as u32;
         dst.offsets.extend(t.ends.iter().map(|&e| base + e));
         let at = dst.params.len();

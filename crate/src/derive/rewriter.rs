@@ -336,6 +336,11 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         let max = (model.settings.max_modules).min(MAX_STRING_BYTES / size_of::<ModuleId>());
         let tracking = self.tracker.is_some();
         let nested = c.neighbours && classes::right_neighbours(&c.classes, src, right, stack);
+        if c.sized && !tracking && !nested {
+            if let Some(changed) = self.rewrite_sized(c, src, dst, num_it) {
+                return Ok(changed);
+            }
+        }
         stack.clear();
         let mut last = context::NONE;
         let mut changed = false;
@@ -398,6 +403,75 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
             }
         }
         Ok(changed)
+    }
+
+    /// [`Rewriter::rewrite_by_class`] when every class writes a known number of modules, the
+    /// string's neighbours are the modules next to each other (no brackets or ignored modules
+    /// between them, or no class compares neighbours) and nothing is tracked: the next length is
+    /// known first, so the output is allocated once and every module is one copy of a successor.
+    /// `None` when the next string passes a limit: the caller's loop says where.
+    fn rewrite_sized(
+        &mut self,
+        c: &Classes,
+        src: &LString,
+        dst: &mut LString,
+        num_it: u32,
+    ) -> Option<bool> {
+        Some(match c.width {
+            4 => self.rewrite_sized_as::<4>(c, src, dst, num_it)?,
+            8 => self.rewrite_sized_as::<8>(c, src, dst, num_it)?,
+            classes::PAD => self.rewrite_sized_as::<{ classes::PAD }>(c, src, dst, num_it)?,
+            _ => return None,
+        })
+    }
+
+    /// [`Rewriter::rewrite_sized`], each successor copied as `W` ids.
+    fn rewrite_sized_as<const W: usize>(
+        &mut self,
+        c: &Classes,
+        src: &LString,
+        dst: &mut LString,
+        num_it: u32,
+    ) -> Option<bool> {
+        let len: usize = src
+            .ids
+            .iter()
+            .map(|id| c.classes[id.index()].out as usize)
+            .sum();
+        if check_size(self.model, num_it, len, len * size_of::<ModuleId>()).is_err() {
+            return None;
+        }
+        if dst.ids.capacity() < len + classes::PAD {
+            // A new buffer: growing the old one would copy what it held.
+            dst.ids = Vec::with_capacity(len + classes::PAD);
+        }
+        let ids = &src.ids;
+        let mut last = context::NONE;
+        let mut changed = false;
+        for (i, &id) in ids.iter().enumerate() {
+            let class = &c.classes[id.index()];
+            let (start, n, production) = match class.kind {
+                Kind::Fixed => (class.start, class.len, class.production),
+                Kind::Choice => {
+                    let a = c.choose(class, self.rng.random::<f64>());
+                    (a.start, a.len, a.production)
+                }
+                Kind::Neighbours => {
+                    let right = ids.get(i + 1).map_or(context::NONE, |r| r.0);
+                    match c.neighbours_match(class, last, right) {
+                        Some(a) => (a.start, a.len, a.production),
+                        None => (class.own, 1, NOT_REWRITTEN),
+                    }
+                }
+                // A general class writes an unknown number of modules: never here.
+                Kind::General => (class.own, 1, NOT_REWRITTEN),
+            };
+            classes::put_wide::<W>(&mut dst.ids, &c.successors, start as usize, n as usize);
+            changed |= production != NOT_REWRITTEN;
+            last = id.0;
+        }
+        debug_assert_eq!(dst.len(), len);
+        Some(changed)
     }
 
     /// Rewrites modules `range` of `src` onto the end of `dst`. Control module groups act only in
