@@ -88,6 +88,12 @@ pub(super) struct Classes {
     pub sized: bool,
     /// The copy width for these successors ([`width`]).
     pub width: usize,
+    /// True when every class writes one module.
+    pub unit: bool,
+    /// For each module id, whether it is hot: a production may rewrite it whatever its
+    /// neighbours, or it is the context of some neighbours class. A module that is not, between
+    /// two that are not, is copied as it is.
+    pub hot: Vec<bool>,
 }
 
 impl Classes {
@@ -106,6 +112,8 @@ impl Classes {
             general_contexts: false,
             sized: true,
             width: 0,
+            unit: true,
+            hot: Vec::new(),
         };
         for index in 0..model.alphabet.len() {
             let id = ModuleId(index as u32);
@@ -127,6 +135,19 @@ impl Classes {
             .map(|a| a.len)
             .fold(longest.max(1), u32::max);
         classes.width = width(longest as usize);
+        classes.unit = classes.classes.iter().all(|c| c.out == 1);
+        classes.hot = classes
+            .classes
+            .iter()
+            .map(|class| !classes.cold(class))
+            .collect();
+        for a in &classes.alternatives {
+            for context in [a.left, a.right] {
+                if let Some(h) = classes.hot.get_mut(context as usize) {
+                    *h = true;
+                }
+            }
+        }
         classes
             .successors
             .extend(std::iter::repeat_n(ModuleId(0), PAD));
@@ -257,6 +278,18 @@ impl Classes {
         class.start = start as u32;
         class.len = (self.alternatives.len() - start) as u32;
         Kind::Neighbours
+    }
+
+    /// True when `class` copies its module unless a neighbour is the context of one of its
+    /// productions: no production, or every one has a context.
+    fn cold(&self, class: &Class) -> bool {
+        match class.kind {
+            Kind::Fixed => class.production == NOT_REWRITTEN,
+            Kind::Neighbours => self.alternatives[class.start as usize..][..class.len as usize]
+                .iter()
+                .all(|a| a.left != NONE || a.right != NONE),
+            Kind::Choice | Kind::General => false,
+        }
     }
 
     /// How many modules `class` writes whatever happens, or [`VARIES`].

@@ -433,11 +433,14 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         dst: &mut LString,
         num_it: u32,
     ) -> Option<bool> {
-        let len: usize = src
-            .ids
-            .iter()
-            .map(|id| c.classes[id.index()].out as usize)
-            .sum();
+        let len: usize = if c.unit {
+            src.len()
+        } else {
+            src.ids
+                .iter()
+                .map(|id| c.classes[id.index()].out as usize)
+                .sum()
+        };
         if check_size(self.model, num_it, len, len * size_of::<ModuleId>()).is_err() {
             return None;
         }
@@ -446,32 +449,74 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
             dst.ids = Vec::with_capacity(len + classes::PAD);
         }
         let ids = &src.ids;
-        let mut last = context::NONE;
+        let n = ids.len();
         let mut changed = false;
-        for (i, &id) in ids.iter().enumerate() {
-            let class = &c.classes[id.index()];
-            let (start, n, production) = match class.kind {
-                Kind::Fixed => (class.start, class.len, class.production),
-                Kind::Choice => {
-                    let a = c.choose(class, self.rng.random::<f64>());
-                    (a.start, a.len, a.production)
-                }
-                Kind::Neighbours => {
-                    let right = ids.get(i + 1).map_or(context::NONE, |r| r.0);
-                    match c.neighbours_match(class, last, right) {
-                        Some(a) => (a.start, a.len, a.production),
-                        None => (class.own, 1, NOT_REWRITTEN),
-                    }
-                }
-                // A general class writes an unknown number of modules: never here.
-                Kind::General => (class.own, 1, NOT_REWRITTEN),
+        if !c.neighbours {
+            for i in 0..n {
+                changed |= self.rewrite_sized_one::<W>(c, ids, i, dst);
+            }
+            return Some(changed);
+        }
+        // A flat string whose modules compare neighbours: a module that is cold (no production
+        // rewrites it unless a neighbour is a context) between cold neighbours is copied as it
+        // is, in bulk; the others one by one.
+        let hot = |k: usize| c.hot[ids[k].index()];
+        let mut i = 0;
+        while i < n {
+            let mut h = i;
+            while h < n && !hot(h) {
+                h += 1;
+            }
+            let a = if i > 0 && hot(i - 1) { i + 1 } else { i };
+            let b = if h < n {
+                h.saturating_sub(1).max(a)
+            } else {
+                n.max(a)
             };
-            classes::put_wide::<W>(&mut dst.ids, &c.successors, start as usize, n as usize);
-            changed |= production != NOT_REWRITTEN;
-            last = id.0;
+            let stop = (h + 2).min(n).max(b);
+            for k in i..a {
+                changed |= self.rewrite_sized_one::<W>(c, ids, k, dst);
+            }
+            dst.ids.extend_from_slice(&ids[a..b]);
+            for k in b..stop {
+                changed |= self.rewrite_sized_one::<W>(c, ids, k, dst);
+            }
+            i = stop;
         }
         debug_assert_eq!(dst.len(), len);
         Some(changed)
+    }
+
+    /// Writes module `i` of `ids` as its class says, its neighbours being the modules next to
+    /// it; returns whether a production applied.
+    #[inline(always)]
+    fn rewrite_sized_one<const W: usize>(
+        &mut self,
+        c: &Classes,
+        ids: &[ModuleId],
+        i: usize,
+        dst: &mut LString,
+    ) -> bool {
+        let class = &c.classes[ids[i].index()];
+        let (start, n, production) = match class.kind {
+            Kind::Fixed => (class.start, class.len, class.production),
+            Kind::Choice => {
+                let a = c.choose(class, self.rng.random::<f64>());
+                (a.start, a.len, a.production)
+            }
+            Kind::Neighbours => {
+                let left = if i > 0 { ids[i - 1].0 } else { context::NONE };
+                let right = ids.get(i + 1).map_or(context::NONE, |r| r.0);
+                match c.neighbours_match(class, left, right) {
+                    Some(a) => (a.start, a.len, a.production),
+                    None => (class.own, 1, NOT_REWRITTEN),
+                }
+            }
+            // A general class writes an unknown number of modules: never here.
+            Kind::General => (class.own, 1, NOT_REWRITTEN),
+        };
+        classes::put_wide::<W>(&mut dst.ids, &c.successors, start as usize, n as usize);
+        production != NOT_REWRITTEN
     }
 
     /// Rewrites modules `range` of `src` onto the end of `dst`. Control module groups act only in
