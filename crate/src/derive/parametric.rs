@@ -227,6 +227,9 @@ impl<R: rand::Rng> Rewriter<'_, R> {
             reserve(&mut dst.offsets, len + 1);
             reserve(&mut dst.params, params);
             sized = true;
+            if self.tracker.is_none() {
+                return self.rewrite_parametric_sized::<W>(c, src, dst, num_it, (len, params));
+            }
         }
         let tracking = self.tracker.is_some();
         let random_vars = !self.vars.is_empty();
@@ -270,6 +273,104 @@ impl<R: rand::Rng> Rewriter<'_, R> {
         Ok(changed)
     }
 
+    /// [`Rewriter::rewrite_parametric_as`] when the output's `size` (modules, parameters) is known
+    /// and nothing is tracked: the output is laid out first, then every module written in place.
+    fn rewrite_parametric_sized<const W: usize>(
+        &mut self,
+        c: &Classes,
+        src: &LString,
+        dst: &mut LString,
+        num_it: u32,
+        (len, params): (usize, usize),
+    ) -> Result<bool, Diagnostic> {
+        // Room for the over-copy of W ids past the last module ([`put_wide`]); cut off below.
+        dst.ids.resize(len + PAD, ModuleId(0));
+        dst.offsets.resize(len + 1, 0);
+        dst.params.resize(params, 0.0);
+        let (ids, offsets, values) = (&mut dst.ids, &mut dst.offsets, &mut dst.params);
+        let random_vars = !self.vars.is_empty();
+        let (mut o, mut p) = (0usize, 0usize);
+        let mut changed = false;
+        for (i, &id) in src.ids.iter().enumerate() {
+            let class = &c.classes[id.index()];
+            let (from, to) = (src.offsets[i] as usize, src.offsets[i + 1] as usize);
+            let own = &src.params[from..to];
+            if class.kind != Kind::Template || own.len() != class.arity as usize {
+                // Copied (a template of another arity matches nothing).
+                ids[o] = id;
+                match own {
+                    [] => {}
+                    [a] => values[p] = *a,
+                    [a, b] => {
+                        values[p] = *a;
+                        values[p + 1] = *b;
+                    }
+                    more => values[p..p + more.len()].copy_from_slice(more),
+                }
+                p += own.len();
+                o += 1;
+                offsets[o] = p as u32;
+                continue;
+            }
+            let t = &c.templates[class.template as usize];
+            if random_vars {
+                self.vars.iter_mut().for_each(|v| *v = None);
+            }
+            self.slots[t.first_slot..t.first_slot + own.len()].copy_from_slice(own);
+            let n = t.ids.len();
+            let start = t.start as usize;
+            if W == 0 {
+                ids[o..o + n].copy_from_slice(&c.successors[start..start + n]);
+            } else {
+                ids[o..o + W].copy_from_slice(&c.successors[start..start + W]);
+            }
+            for (out, &end) in offsets[o + 1..o + 1 + n].iter_mut().zip(&t.ends) {
+                *out = p as u32 + end;
+            }
+            let written = &mut values[p..p + t.args.len()];
+            let slots = &self.slots[..t.slots];
+            let mut retry = false;
+            for (out, arg) in written.iter_mut().zip(&t.args) {
+                match arg {
+                    Arg::Simple(e, _) => {
+                        *out = e.eval(slots);
+                        retry |= !out.is_finite();
+                    }
+                    Arg::Program(_) => retry = true,
+                }
+            }
+            if retry {
+                self.evaluate_again(t, written, num_it)?;
+            }
+            o += n;
+            p += t.args.len();
+            changed = true;
+        }
+        debug_assert_eq!((o, p), (len, params));
+        ids.truncate(len);
+        Ok(changed)
+    }
+
+    /// Evaluates with the interpreter, in order, the arguments of template `t` that it must
+    /// evaluate (the programs, and the simple ones that were not finite, which it reports):
+    /// a random argument draws as it always has.
+    fn evaluate_again(
+        &mut self,
+        t: &Template,
+        written: &mut [f64],
+        num_it: u32,
+    ) -> Result<(), Diagnostic> {
+        for (k, arg) in t.args.iter().enumerate() {
+            let program = match arg {
+                Arg::Simple(_, p) if !written[k].is_finite() => p,
+                Arg::Simple(..) => continue,
+                Arg::Program(p) => p,
+            };
+            written[k] = self.eval(&t.programs[*program as usize], t.slots, num_it, true)?;
+        }
+        Ok(())
+    }
+
     /// Writes template `t`'s successor onto `dst`, the production's slots bound.
     #[inline]
     fn write_template<const W: usize>(
@@ -300,20 +401,7 @@ impl<R: rand::Rng> Rewriter<'_, R> {
             }
         }
         if retry {
-            // Arguments the interpreter evaluates (and those that were not finite, which it
-            // reports), in order: a random argument draws as it always has.
-            for (k, arg) in t.args.iter().enumerate() {
-                let value = match arg {
-                    Arg::Simple(_, p) if !dst.params[at + k].is_finite() => {
-                        self.eval(&t.programs[*p as usize], t.slots, num_it, true)?
-                    }
-                    Arg::Simple(..) => continue,
-                    Arg::Program(p) => {
-                        self.eval(&t.programs[*p as usize], t.slots, num_it, true)?
-                    }
-                };
-                dst.params[at + k] = value;
-            }
+            self.evaluate_again(t, &mut dst.params[at..], num_it)?;
         }
         Ok(())
     }
