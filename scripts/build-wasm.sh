@@ -21,7 +21,9 @@ opt=()
 # crate/Cargo.toml). Measured 2026-11-25 (README "The first load"): "s" makes it about 6% smaller
 # gzipped than "3" and derives 5-25% slower; "z" saves 10% but derives 2-4x slower, so no.
 # crate/pkg (the export worker, imports, `npm run bench` and ../shared/bench/ratio.sh) loads after
-# the first plant, so it is built for speed (issue 20): opt-level 3, then wasm-opt -O3.
+# the first plant, so it is built for speed (issue 20): opt-level 3 with WebAssembly SIMD
+# (+simd128, which every current browser runs: the derivation copies successors 16 bytes at a
+# time), then wasm-opt -O3; in its own target folder, so the two builds do not rebuild each other.
 # Native builds, `cargo test` and the criterion benches keep the release profile's 3.
 # (panic = "abort" would change nothing: wasm32-unknown-unknown aborts on a panic already, after
 # the panic hook of src/wasm.rs has reported it.)
@@ -32,10 +34,11 @@ pack() {
   wasm-pack --quiet --log-level warn build --target web --release --no-gitignore --out-dir "$out" --out-name "$name" "$@"
 }
 CARGO_PROFILE_RELEASE_OPT_LEVEL=s pack pkg-core meristem_core "${opt[@]}" crate -- --no-default-features
-CARGO_PROFILE_RELEASE_OPT_LEVEL=3 pack pkg meristem --no-opt crate
+CARGO_PROFILE_RELEASE_OPT_LEVEL=3 RUSTFLAGS="${RUSTFLAGS:-} -C target-feature=+simd128" \
+  CARGO_TARGET_DIR="$PWD/crate/target/wasm-speed" pack pkg meristem --no-opt crate
 if [ ${#opt[@]} -eq 0 ]; then
-  # The same features as Cargo.toml's wasm-opt line, optimised for speed.
+  # The same features as Cargo.toml's wasm-opt line, and SIMD, optimised for speed.
   wasm-opt crate/pkg/meristem_bg.wasm -o crate/pkg/meristem_bg.wasm -O3 --enable-reference-types \
     --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext \
-    --enable-mutable-globals --enable-multivalue
+    --enable-mutable-globals --enable-multivalue --enable-simd
 fi

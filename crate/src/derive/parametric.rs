@@ -70,6 +70,8 @@ pub(super) struct Classes {
     pub general: bool,
     /// The copy width for the templates' ids ([`width`]).
     pub width: usize,
+    /// The most arguments a template's successor has.
+    pub most_args: usize,
 }
 
 impl Classes {
@@ -86,6 +88,7 @@ impl Classes {
             successors: Vec::new(),
             general: false,
             width: 0,
+            most_args: 0,
         };
         for index in 0..model.alphabet.len() {
             let candidates = rules
@@ -98,6 +101,12 @@ impl Classes {
         }
         let longest = classes.templates.iter().map(|t| t.ids.len()).max();
         classes.width = width(longest.unwrap_or(0));
+        classes.most_args = classes
+            .templates
+            .iter()
+            .map(|t| t.args.len())
+            .max()
+            .unwrap_or(0);
         classes
             .successors
             .extend(std::iter::repeat_n(ModuleId(0), PAD));
@@ -283,11 +292,15 @@ impl<R: rand::Rng> Rewriter<'_, R> {
         num_it: u32,
         (len, params): (usize, usize),
     ) -> Result<bool, Diagnostic> {
-        // Room for the over-copy of W ids past the last module ([`put_wide`]); cut off below.
-        dst.ids.resize(len + PAD, ModuleId(0));
-        dst.offsets.resize(len + 1, 0);
-        dst.params.resize(params, 0.0);
-        let (ids, offsets, values) = (&mut dst.ids, &mut dst.offsets, &mut dst.params);
+        // Written in place into the buffers' spare room (reserved by the caller, with room for
+        // the over-copy of W ids past the last module), then the lengths set once all is written:
+        // no zeroing first, no capacity check per module.
+        debug_assert!(dst.ids.is_empty() && dst.offsets.len() == 1 && dst.params.is_empty());
+        let mut buffer = vec![0.0; c.most_args];
+        let ids = &mut dst.ids.spare_capacity_mut()[..len + PAD];
+        // offsets[k]: the offset after module k (the first, 0, is already there).
+        let offsets = &mut dst.offsets.spare_capacity_mut()[..len];
+        let values = &mut dst.params.spare_capacity_mut()[..params];
         let random_vars = !self.vars.is_empty();
         let (mut o, mut p) = (0usize, 0usize);
         let mut changed = false;
@@ -297,19 +310,25 @@ impl<R: rand::Rng> Rewriter<'_, R> {
             let own = &src.params[from..to];
             if class.kind != Kind::Template || own.len() != class.arity as usize {
                 // Copied (a template of another arity matches nothing).
-                ids[o] = id;
+                ids[o].write(id);
                 match own {
                     [] => {}
-                    [a] => values[p] = *a,
-                    [a, b] => {
-                        values[p] = *a;
-                        values[p + 1] = *b;
+                    [a] => {
+                        values[p].write(*a);
                     }
-                    more => values[p..p + more.len()].copy_from_slice(more),
+                    [a, b] => {
+                        values[p].write(*a);
+                        values[p + 1].write(*b);
+                    }
+                    more => {
+                        for (out, v) in values[p..p + more.len()].iter_mut().zip(more) {
+                            out.write(*v);
+                        }
+                    }
                 }
                 p += own.len();
+                offsets[o].write(p as u32);
                 o += 1;
-                offsets[o] = p as u32;
                 continue;
             }
             let t = &c.templates[class.template as usize];
@@ -319,18 +338,20 @@ impl<R: rand::Rng> Rewriter<'_, R> {
             self.slots[t.first_slot..t.first_slot + own.len()].copy_from_slice(own);
             let n = t.ids.len();
             let start = t.start as usize;
-            if W == 0 {
-                ids[o..o + n].copy_from_slice(&c.successors[start..start + n]);
-            } else {
-                ids[o..o + W].copy_from_slice(&c.successors[start..start + W]);
+            let wide = if W == 0 { n } else { W };
+            for (out, s) in ids[o..o + wide]
+                .iter_mut()
+                .zip(&c.successors[start..start + wide])
+            {
+                out.write(*s);
             }
-            for (out, &end) in offsets[o + 1..o + 1 + n].iter_mut().zip(&t.ends) {
-                *out = p as u32 + end;
+            for (out, &end) in offsets[o..o + n].iter_mut().zip(&t.ends) {
+                out.write(p as u32 + end);
             }
-            let written = &mut values[p..p + t.args.len()];
+            let evaluated = &mut buffer[..t.args.len()];
             let slots = &self.slots[..t.slots];
             let mut retry = false;
-            for (out, arg) in written.iter_mut().zip(&t.args) {
+            for (out, arg) in evaluated.iter_mut().zip(&t.args) {
                 match arg {
                     Arg::Simple(e, _) => {
                         *out = e.eval(slots);
@@ -340,14 +361,23 @@ impl<R: rand::Rng> Rewriter<'_, R> {
                 }
             }
             if retry {
-                self.evaluate_again(t, written, num_it)?;
+                self.evaluate_again(t, evaluated, num_it)?;
+            }
+            for (out, v) in values[p..p + evaluated.len()].iter_mut().zip(&*evaluated) {
+                out.write(*v);
             }
             o += n;
             p += t.args.len();
             changed = true;
         }
-        debug_assert_eq!((o, p), (len, params));
-        ids.truncate(len);
+        assert_eq!((o, p), (len, params), "the step's size was computed before");
+        // SAFETY: modules 0..len, offsets 1..=len and parameters 0..params were all written
+        // above, in order (o and p count what was written); the capacities hold them.
+        unsafe {
+            dst.ids.set_len(len);
+            dst.offsets.set_len(len + 1);
+            dst.params.set_len(params);
+        }
         Ok(changed)
     }
 
