@@ -126,6 +126,7 @@ impl D0lTable {
     }
 
     /// Writes every module's successor as `W` ids ([`put_wide`]).
+    #[inline(never)]
     fn write<const W: usize>(&self, src: &LString, dst: &mut LString) {
         for &id in &src.ids {
             let (start, n) = self.slot[id.index()];

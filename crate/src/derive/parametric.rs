@@ -214,6 +214,7 @@ impl<R: rand::Rng> Rewriter<'_, R> {
 
     /// [`Rewriter::rewrite_parametric`], each template's ids copied as `W` ids ([`put_wide`]; 0:
     /// as many as it has).
+    #[inline(never)]
     fn rewrite_parametric_as<const W: usize>(
         &mut self,
         c: &Classes,
@@ -284,6 +285,7 @@ impl<R: rand::Rng> Rewriter<'_, R> {
 
     /// [`Rewriter::rewrite_parametric_as`] when the output's `size` (modules, parameters) is known
     /// and nothing is tracked: the output is laid out first, then every module written in place.
+    #[inline(never)]
     fn rewrite_parametric_sized<const W: usize>(
         &mut self,
         c: &Classes,

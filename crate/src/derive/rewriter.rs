@@ -322,6 +322,7 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
     /// [`Rewriter::rewrite_range`] over the whole string, each module as its class says: the
     /// productions section of a grammar without parameters or control modules, unplanned.
     /// `scratch`: the right neighbours and a stack.
+    #[inline(never)]
     fn rewrite_by_class(
         &mut self,
         c: &Classes,
@@ -426,6 +427,7 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
     }
 
     /// [`Rewriter::rewrite_sized`], each successor copied as `W` ids.
+    #[inline(never)]
     fn rewrite_sized_as<const W: usize>(
         &mut self,
         c: &Classes,
