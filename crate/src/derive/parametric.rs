@@ -464,7 +464,7 @@ fn reserve<T>(v: &mut Vec<T>, len: usize) {
         let mut fresh = Vec::new();
         fresh.reserve_exact(len);
         // Keep what was written (the first offset of a cleared parametric string).
-        fresh.extend(v.drain(..));
+        fresh.append(v);
         *v = fresh;
     }
 }
