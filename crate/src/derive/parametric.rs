@@ -17,6 +17,7 @@ use super::rewriter::Rewriter;
 use super::{check_size, NOT_REWRITTEN};
 use crate::diagnostics::Diagnostic;
 use crate::model::{LString, Model, ModuleId, Program, RuleSet, Simple};
+use std::mem::MaybeUninit;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(super) enum Kind {
@@ -313,22 +314,7 @@ impl<R: rand::Rng> Rewriter<'_, R> {
             if class.kind != Kind::Template || own.len() != class.arity as usize {
                 // Copied (a template of another arity matches nothing).
                 ids[o].write(id);
-                match own {
-                    [] => {}
-                    [a] => {
-                        values[p].write(*a);
-                    }
-                    [a, b] => {
-                        values[p].write(*a);
-                        values[p + 1].write(*b);
-                    }
-                    more => {
-                        for (out, v) in values[p..p + more.len()].iter_mut().zip(more) {
-                            out.write(*v);
-                        }
-                    }
-                }
-                p += own.len();
+                p = copy_values(own, values, p);
                 offsets[o].write(p as u32);
                 o += 1;
                 continue;
@@ -437,6 +423,28 @@ impl<R: rand::Rng> Rewriter<'_, R> {
         }
         Ok(())
     }
+}
+
+/// Writes the parameters `own` into `values` from `p`; returns where they end.
+#[inline(always)]
+fn copy_values(own: &[f64], values: &mut [MaybeUninit<f64>], p: usize) -> usize {
+    // Most modules have a parameter or two: no call to a copy of any length for them.
+    match own {
+        [] => {}
+        [a] => {
+            values[p].write(*a);
+        }
+        [a, b] => {
+            values[p].write(*a);
+            values[p + 1].write(*b);
+        }
+        more => {
+            for (out, v) in values[p..p + more.len()].iter_mut().zip(more) {
+                out.write(*v);
+            }
+        }
+    }
+    p + own.len()
 }
 
 /// Copies module `i` of `src` onto `dst`, parameters and all.
