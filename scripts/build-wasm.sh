@@ -16,17 +16,29 @@ export PATH="$PWD/node_modules/.bin:$PATH"
 
 opt=()
 [ "${1:-}" = "--dev" ] && opt=(--no-opt)
-# Size a little over speed for what the browser downloads (issue 22, the first load): opt-level "s".
-# Measured 2026-11-25 (README "The first load"): "s" makes crate/pkg-core about 6% smaller gzipped
-# than "3" and derives 5-25% slower; "z" saves 10% but derives 2-4x slower (npm run bench), so no.
-# Only here: native builds, `cargo test` and the criterion benches keep the release profile's 3.
+# crate/pkg-core, what the browser downloads for the first plant (issue 22, the first load), is
+# built for size a little over speed: opt-level "s", then wasm-opt -Oz (the flags in
+# crate/Cargo.toml). Measured 2026-11-25 (README "The first load"): "s" makes it about 6% smaller
+# gzipped than "3" and derives 5-25% slower; "z" saves 10% but derives 2-4x slower, so no.
+# crate/pkg (the export worker, imports, `npm run bench` and ../shared/bench/ratio.sh) loads after
+# the first plant, so it is built for speed (issue 20): opt-level 3 with WebAssembly SIMD
+# (+simd128, which every current browser runs: the derivation copies successors 16 bytes at a
+# time), then wasm-opt -O3; in its own target folder, so the two builds do not rebuild each other.
+# Native builds, `cargo test` and the criterion benches keep the release profile's 3.
 # (panic = "abort" would change nothing: wasm32-unknown-unknown aborts on a panic already, after
 # the panic hook of src/wasm.rs has reported it.)
-export CARGO_PROFILE_RELEASE_OPT_LEVEL=s
-# pack OUT_DIR NAME [-- CARGO_ARGS...]: one package (package.json, glue, types, the .wasm)
+# pack OUT_DIR NAME [WASM_PACK_ARGS...] [-- CARGO_ARGS...]: one package (package.json, glue,
+# types, the .wasm)
 pack() {
   local out=$1 name=$2; shift 2
-  wasm-pack --quiet --log-level warn build crate --target web --release "${opt[@]}" --no-gitignore --out-dir "$out" --out-name "$name" "$@"
+  wasm-pack --quiet --log-level warn build --target web --release --no-gitignore --out-dir "$out" --out-name "$name" "$@"
 }
-pack pkg-core meristem_core -- --no-default-features
-pack pkg meristem
+CARGO_PROFILE_RELEASE_OPT_LEVEL=s pack pkg-core meristem_core "${opt[@]}" crate -- --no-default-features
+CARGO_PROFILE_RELEASE_OPT_LEVEL=3 RUSTFLAGS="${RUSTFLAGS:-} -C target-feature=+simd128" \
+  CARGO_TARGET_DIR="$PWD/crate/target/wasm-speed" pack pkg meristem --no-opt crate
+if [ ${#opt[@]} -eq 0 ]; then
+  # The same features as Cargo.toml's wasm-opt line, and SIMD, optimised for speed.
+  wasm-opt crate/pkg/meristem_bg.wasm -o crate/pkg/meristem_bg.wasm -O3 --enable-reference-types \
+    --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext \
+    --enable-mutable-globals --enable-multivalue --enable-simd
+fi

@@ -70,6 +70,27 @@ fn section_1_8_the_signal_moves_one_module_per_step() {
     }
 }
 
+/// Several signals on a long flat string, two of them side by side, so that modules no production
+/// touches are copied in bulk between modules rewritten one by one (right after a pair of signals,
+/// before one, at the ends).
+#[test]
+fn signals_on_a_flat_string_move_together() {
+    let start = "bbaaaaaabaaaaaaaaaaaaaabbbaaaaab";
+    let src = format!("axiom: {start}\nb < a -> b\nb -> a");
+    let mut expected: Vec<char> = start.chars().collect();
+    for n in 1..=12 {
+        expected = (0..expected.len())
+            .map(|i| match expected[i] {
+                'b' => 'a',
+                _ if i > 0 && expected[i - 1] == 'b' => 'b',
+                c => c,
+            })
+            .collect();
+        let want: String = expected.iter().collect();
+        assert_eq!(derived(&src, n), want, "step {n}");
+    }
+}
+
 #[test]
 fn fig_1_30a_acropetal_signal_enters_every_branch_in_bracket_order() {
     let src = "#ignore + -\naxiom: F_b[+F_a]F_a[-F_a]F_a[+F_a]F_a\nF_b < F_a -> F_b";

@@ -51,7 +51,15 @@ pub(super) struct Class {
     pub len: u32,
     /// Choice: the sum of the weights, in source order.
     pub total: f64,
+    /// The module id alone in [`Classes::successors`] (what a copy writes).
+    pub own: u32,
+    /// How many modules the class writes, whatever the draw or the neighbours ([`VARIES`] when
+    /// that depends on them, or the class is general).
+    pub out: u32,
 }
+
+/// In [`Class::out`]: the length written depends on the module's draw or neighbours.
+pub(super) const VARIES: u32 = u32::MAX;
 
 /// One production of a Choice or Neighbours class.
 #[derive(Clone, Copy, Debug)]
@@ -75,6 +83,17 @@ pub(super) struct Classes {
     pub neighbours: bool,
     /// True when some general class has contexts: the pass pairs the brackets for them.
     pub general_contexts: bool,
+    /// True when every class writes a known number of modules ([`Class::out`]): the length of
+    /// the next string is then known before the step.
+    pub sized: bool,
+    /// The copy width for these successors ([`width`]).
+    pub width: usize,
+    /// True when every class writes one module.
+    pub unit: bool,
+    /// For each module id, whether it is hot: a production may rewrite it whatever its
+    /// neighbours, or it is the context of some neighbours class. A module that is not, between
+    /// two that are not, is copied as it is.
+    pub hot: Vec<bool>,
 }
 
 impl Classes {
@@ -91,6 +110,10 @@ impl Classes {
             successors: Vec::new(),
             neighbours: false,
             general_contexts: false,
+            sized: true,
+            width: 0,
+            unit: true,
+            hot: Vec::new(),
         };
         for index in 0..model.alphabet.len() {
             let id = ModuleId(index as u32);
@@ -100,7 +123,30 @@ impl Classes {
                 .map_or(&[][..], Vec::as_slice);
             let mut class = classes.classify(rules, id, candidates);
             class.role = role(model, id);
+            (class.own, _) = classes.successor(std::iter::once(id));
+            class.out = classes.out(&class);
+            classes.sized &= class.out != VARIES;
             classes.classes.push(class);
+        }
+        let longest = classes.classes.iter().map(|c| c.len).max().unwrap_or(1);
+        let longest = classes
+            .alternatives
+            .iter()
+            .map(|a| a.len)
+            .fold(longest.max(1), u32::max);
+        classes.width = width(longest as usize);
+        classes.unit = classes.classes.iter().all(|c| c.out == 1);
+        classes.hot = classes
+            .classes
+            .iter()
+            .map(|class| !classes.cold(class))
+            .collect();
+        for a in &classes.alternatives {
+            for context in [a.left, a.right] {
+                if let Some(h) = classes.hot.get_mut(context as usize) {
+                    *h = true;
+                }
+            }
         }
         classes
             .successors
@@ -123,6 +169,8 @@ impl Classes {
             start: 0,
             len: 0,
             total: 0.0,
+            own: 0,
+            out: VARIES,
         };
         let Some(&first) = candidates.first() else {
             (class.start, class.len) = self.successor(std::iter::once(id));
@@ -230,6 +278,39 @@ impl Classes {
         class.start = start as u32;
         class.len = (self.alternatives.len() - start) as u32;
         Kind::Neighbours
+    }
+
+    /// True when `class` copies its module unless a neighbour is the context of one of its
+    /// productions: no production, or every one has a context.
+    fn cold(&self, class: &Class) -> bool {
+        match class.kind {
+            Kind::Fixed => class.production == NOT_REWRITTEN,
+            Kind::Neighbours => self.alternatives[class.start as usize..][..class.len as usize]
+                .iter()
+                .all(|a| a.left != NONE || a.right != NONE),
+            Kind::Choice | Kind::General => false,
+        }
+    }
+
+    /// How many modules `class` writes whatever happens, or [`VARIES`].
+    fn out(&self, class: &Class) -> u32 {
+        let alternatives = || &self.alternatives[class.start as usize..][..class.len as usize];
+        match class.kind {
+            Kind::Fixed => class.len,
+            Kind::General => VARIES,
+            Kind::Choice => match alternatives() {
+                [first, rest @ ..] if rest.iter().all(|a| a.len == first.len) => first.len,
+                _ => VARIES,
+            },
+            // Matching nothing copies the module: one.
+            Kind::Neighbours => {
+                if alternatives().iter().all(|a| a.len == 1) {
+                    1
+                } else {
+                    VARIES
+                }
+            }
+        }
     }
 
     /// The alternative of a Choice class that the uniform draw `u` (in [0, 1)) picks: the weighted
@@ -352,6 +433,45 @@ pub(super) fn put(out: &mut Vec<ModuleId>, succ: &[ModuleId], start: usize, len:
         } else {
             std::ptr::copy_nonoverlapping(from.as_ptr(), to, PAD);
         }
+        out.set_len(at + len);
+    }
+}
+
+/// The copy width for successors of at most `longest` ids: 4, 8 or 16 ids, each module's
+/// successor then copied as that many ids whatever its length (no branch on the length, which
+/// varies from module to module); 0 when a successor is longer than [`PAD`].
+pub(super) fn width(longest: usize) -> usize {
+    match longest {
+        0..=4 => 4,
+        5..=8 => 8,
+        9..=PAD => PAD,
+        _ => 0,
+    }
+}
+
+/// Appends `succ[start..start + len]` to `out` by copying a fixed `W` ids (what lies past `len`
+/// is overwritten by the next module): `len` is at most `W`, and `succ` holds `W` ids from
+/// `start` (its padding).
+#[inline(always)]
+pub(super) fn put_wide<const W: usize>(
+    out: &mut Vec<ModuleId>,
+    succ: &[ModuleId],
+    start: usize,
+    len: usize,
+) {
+    if len > W {
+        // Never taken when `W` is the table's width.
+        out.extend_from_slice(&succ[start..start + len]);
+        return;
+    }
+    out.reserve(W);
+    let from = &succ[start..start + W];
+    let at = out.len();
+    // SAFETY: `reserve` leaves room for W more ids after `at`; `from` holds W initialised ids;
+    // the first `len` (at most W) ids written are the successor, so the new length covers only
+    // them.
+    unsafe {
+        std::ptr::copy_nonoverlapping(from.as_ptr(), out.as_mut_ptr().add(at), W);
         out.set_len(at + len);
     }
 }

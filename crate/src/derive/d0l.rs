@@ -1,19 +1,37 @@
 //! The D0L path: a flat table from module id to successor, for grammars whose productions have no
-//! parameters, contexts, conditions or weights. The next length is computed before writing, and
+//! parameters, contexts, conditions or weights. The next length is known before writing, and
 //! nothing is allocated per module.
+//!
+//! Every id has a successor in the table (a module without production: itself), so the step is
+//! one copy per module with no branch. The length of the next string comes from how many times
+//! each id occurs, carried from step to step (the counts of the next string are the counts of this
+//! one through the successors), so the string is read once per step, not twice; when decomposition
+//! or cut change the string between steps, the ids are counted again.
 
-use super::classes::{put, PAD};
-use super::{check_size, memory_error, NOT_REWRITTEN};
+use super::classes::{put, put_wide, width, PAD};
+use super::{check_size, cut, memory_error, NOT_REWRITTEN};
 use crate::diagnostics::Diagnostic;
 use crate::model::{LString, Model, ModuleId};
 
 /// The D0L path: usable when no production has parameters, contexts, conditions or weights.
 pub(super) struct D0lTable {
-    /// Every successor's ids, back to back, then [`PAD`] ids of padding for [`put`].
+    /// Every successor's ids, back to back (a module without production: itself), then [`PAD`]
+    /// ids of padding for [`put`].
     successors: Vec<ModuleId>,
-    rule_of: Vec<Option<(u32, u32)>>,
+    /// For each module id, its successor in `successors`: start and length.
+    slot: Vec<(u32, u32)>,
+    /// The copy width of [`put_wide`] for these successors (0: some is longer than [`PAD`]).
+    width: usize,
     /// For each module id, the production that rewrites it ([`NOT_REWRITTEN`] if none).
     production_of: Vec<u32>,
+    /// True when nothing changes the string between steps (no decomposition, no cut), so the
+    /// counts of one step's output are those of the next step's input.
+    carried: bool,
+    /// How many times each id occurs in the string the last step wrote, and that string's length.
+    counts: Vec<u64>,
+    counted_len: Option<usize>,
+    /// Scratch for the next counts.
+    next_counts: Vec<u64>,
 }
 
 impl D0lTable {
@@ -28,33 +46,44 @@ impl D0lTable {
             return None;
         }
         let mut successors = Vec::new();
-        let rule_of = rules
-            .by_predecessor
-            .iter()
-            .map(|candidates| {
-                candidates.first().map(|&p| {
-                    let start = successors.len() as u32;
-                    successors.extend(rules.productions[p as usize].successor.iter().map(|s| s.id));
-                    (start, successors.len() as u32)
-                })
+        let ids = model.alphabet.len().max(rules.by_predecessor.len());
+        let slot: Vec<(u32, u32)> = (0..ids)
+            .map(|index| {
+                let start = successors.len() as u32;
+                match rules.by_predecessor.get(index).and_then(|c| c.first()) {
+                    Some(&p) => successors
+                        .extend(rules.productions[p as usize].successor.iter().map(|s| s.id)),
+                    None => successors.push(ModuleId(index as u32)),
+                }
+                (start, successors.len() as u32 - start)
             })
             .collect();
         successors.extend(std::iter::repeat_n(ModuleId(0), PAD));
-        let production_of = rules
-            .by_predecessor
-            .iter()
-            .map(|c| c.first().copied().unwrap_or(NOT_REWRITTEN))
+        let longest = slot.iter().map(|&(_, n)| n as usize).max().unwrap_or(0);
+        let production_of = (0..ids)
+            .map(|index| {
+                rules
+                    .by_predecessor
+                    .get(index)
+                    .and_then(|c| c.first().copied())
+                    .unwrap_or(NOT_REWRITTEN)
+            })
             .collect();
         Some(D0lTable {
+            width: width(longest),
             successors,
-            rule_of,
+            slot,
             production_of,
+            carried: model.decomposition.is_empty() && !cut::contains_cut(model),
+            counts: vec![0; ids],
+            counted_len: None,
+            next_counts: vec![0; ids],
         })
     }
 
     /// [`D0lTable::step`], returning for each written module the production that made it.
     pub(super) fn step_tracked(
-        &self,
+        &mut self,
         model: &Model,
         src: &LString,
         dst: &mut LString,
@@ -64,36 +93,56 @@ impl D0lTable {
         let mut origin = Vec::with_capacity(dst.len());
         let mut parent = Vec::with_capacity(dst.len());
         for (i, &id) in src.ids.iter().enumerate() {
-            match self.rule_of[id.index()] {
-                Some((start, end)) => {
-                    let production = self.production_of[id.index()];
-                    origin.extend(std::iter::repeat_n(production, (end - start) as usize));
-                    parent.extend(std::iter::repeat_n(i as u32, (end - start) as usize));
-                }
-                None => {
-                    origin.push(NOT_REWRITTEN);
-                    parent.push(i as u32);
-                }
-            }
+            let (_, len) = self.slot[id.index()];
+            let production = self.production_of[id.index()];
+            origin.extend(std::iter::repeat_n(production, len as usize));
+            parent.extend(std::iter::repeat_n(i as u32, len as usize));
         }
         Ok((origin, parent))
     }
 
+    /// The length of the string one step makes from `src`, the counts of its ids in
+    /// `next_counts`.
+    fn next_len(&mut self, src: &LString) -> usize {
+        if !(self.carried && self.counted_len == Some(src.len())) {
+            self.counts.iter_mut().for_each(|c| *c = 0);
+            for &id in &src.ids {
+                self.counts[id.index()] += 1;
+            }
+        }
+        self.next_counts.iter_mut().for_each(|c| *c = 0);
+        let mut len = 0u64;
+        for (index, &count) in self.counts.iter().enumerate() {
+            if count == 0 {
+                continue;
+            }
+            let (start, n) = self.slot[index];
+            len = len.saturating_add(count.saturating_mul(n as u64));
+            for id in &self.successors[start as usize..(start + n) as usize] {
+                self.next_counts[id.index()] += count;
+            }
+        }
+        usize::try_from(len).unwrap_or(usize::MAX)
+    }
+
+    /// Writes every module's successor as `W` ids ([`put_wide`]).
+    #[inline(never)]
+    fn write<const W: usize>(&self, src: &LString, dst: &mut LString) {
+        for &id in &src.ids {
+            let (start, n) = self.slot[id.index()];
+            put_wide::<W>(&mut dst.ids, &self.successors, start as usize, n as usize);
+        }
+    }
+
     pub(super) fn step(
-        &self,
+        &mut self,
         model: &Model,
         src: &LString,
         dst: &mut LString,
         step: u32,
     ) -> Result<(), Diagnostic> {
-        let len: usize = src
-            .ids
-            .iter()
-            .map(|id| match self.rule_of[id.index()] {
-                Some((start, end)) => (end - start) as usize,
-                None => 1,
-            })
-            .sum();
+        let len = self.next_len(src);
+        self.counted_len = None;
         check_size(model, step, len, len.saturating_mul(size_of::<ModuleId>()))?;
         dst.clear(false);
         if dst.ids.capacity() < len + PAD {
@@ -104,17 +153,20 @@ impl D0lTable {
             }
             dst.ids = fresh;
         }
-        for &id in &src.ids {
-            match self.rule_of[id.index()] {
-                Some((start, end)) => put(
-                    &mut dst.ids,
-                    &self.successors,
-                    start as usize,
-                    (end - start) as usize,
-                ),
-                None => dst.ids.push(id),
+        match self.width {
+            4 => self.write::<4>(src, dst),
+            8 => self.write::<8>(src, dst),
+            PAD => self.write::<PAD>(src, dst),
+            _ => {
+                for &id in &src.ids {
+                    let (start, n) = self.slot[id.index()];
+                    put(&mut dst.ids, &self.successors, start as usize, n as usize);
+                }
             }
         }
+        debug_assert_eq!(dst.len(), len);
+        std::mem::swap(&mut self.counts, &mut self.next_counts);
+        self.counted_len = Some(len);
         Ok(())
     }
 }

@@ -21,6 +21,7 @@ mod cut;
 mod d0l;
 mod explain;
 mod groups;
+mod parametric;
 mod plan;
 mod rewriter;
 
@@ -393,7 +394,7 @@ impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
     /// The productions pass, from `current` into `next`.
     fn rewrite(&mut self, step: u32, tracked: bool) -> Result<(), Diagnostic> {
         let model = self.rewriter.model;
-        match &self.d0l {
+        match &mut self.d0l {
             Some(table) if tracked => {
                 (self.origin, self.parent) =
                     table.step_tracked(model, &self.current, &mut self.next, step)?

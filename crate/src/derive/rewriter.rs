@@ -3,6 +3,7 @@
 
 use super::classes::{self, Classes, Kind};
 use super::context::{self, Recorder};
+use super::parametric;
 use super::{check_size, Observer, MAX_STRING_BYTES, NOT_REWRITTEN};
 use crate::diagnostics::Diagnostic;
 use crate::model::{Env, LString, Model, ModuleId, Production, Program, RuleSet, SuccessorModule};
@@ -53,6 +54,8 @@ pub(super) struct Rewriter<'m, R: rand::Rng> {
     pub repeat_passes: u64,
     /// The productions' classes, for strings without parameters.
     classes: Option<Classes>,
+    /// The productions' classes, for strings with parameters.
+    parametric: Option<parametric::Classes>,
     /// Scratch of a classes pass: each module's right neighbour, and a stack of neighbours.
     right: Vec<u32>,
     stack: Vec<u32>,
@@ -82,6 +85,7 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
             group_depth: 0,
             repeat_passes: 0,
             classes: Classes::new(model),
+            parametric: parametric::Classes::new(model),
             right: Vec::new(),
             stack: Vec::new(),
         }
@@ -279,6 +283,11 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         let model = self.model;
         let by_class = self.plan.is_none() && std::ptr::eq(rules, &model.productions);
         let classes = if by_class { self.classes.take() } else { None };
+        let parametric = if by_class {
+            self.parametric.take()
+        } else {
+            None
+        };
         let partners = match &classes {
             Some(c) => c.general_contexts,
             None => rules.has_contexts(),
@@ -299,13 +308,21 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
                 (self.classes, self.right, self.stack) = (Some(c), right, stack);
                 changed
             }
-            None => self.rewrite_range(rules, src, 0..src.len(), dst, num_it),
+            None => match parametric {
+                Some(c) => {
+                    let changed = self.rewrite_parametric(&c, rules, src, dst, num_it);
+                    self.parametric = Some(c);
+                    changed
+                }
+                None => self.rewrite_range(rules, src, 0..src.len(), dst, num_it),
+            },
         }
     }
 
     /// [`Rewriter::rewrite_range`] over the whole string, each module as its class says: the
     /// productions section of a grammar without parameters or control modules, unplanned.
     /// `scratch`: the right neighbours and a stack.
+    #[inline(never)]
     fn rewrite_by_class(
         &mut self,
         c: &Classes,
@@ -320,6 +337,11 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         let max = (model.settings.max_modules).min(MAX_STRING_BYTES / size_of::<ModuleId>());
         let tracking = self.tracker.is_some();
         let nested = c.neighbours && classes::right_neighbours(&c.classes, src, right, stack);
+        if c.sized && !tracking && !nested {
+            if let Some(changed) = self.rewrite_sized(c, src, dst, num_it) {
+                return Ok(changed);
+            }
+        }
         stack.clear();
         let mut last = context::NONE;
         let mut changed = false;
@@ -382,6 +404,121 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
             }
         }
         Ok(changed)
+    }
+
+    /// [`Rewriter::rewrite_by_class`] when every class writes a known number of modules, the
+    /// string's neighbours are the modules next to each other (no brackets or ignored modules
+    /// between them, or no class compares neighbours) and nothing is tracked: the next length is
+    /// known first, so the output is allocated once and every module is one copy of a successor.
+    /// `None` when the next string passes a limit: the caller's loop says where.
+    fn rewrite_sized(
+        &mut self,
+        c: &Classes,
+        src: &LString,
+        dst: &mut LString,
+        num_it: u32,
+    ) -> Option<bool> {
+        Some(match c.width {
+            4 => self.rewrite_sized_as::<4>(c, src, dst, num_it)?,
+            8 => self.rewrite_sized_as::<8>(c, src, dst, num_it)?,
+            classes::PAD => self.rewrite_sized_as::<{ classes::PAD }>(c, src, dst, num_it)?,
+            _ => return None,
+        })
+    }
+
+    /// [`Rewriter::rewrite_sized`], each successor copied as `W` ids.
+    #[inline(never)]
+    fn rewrite_sized_as<const W: usize>(
+        &mut self,
+        c: &Classes,
+        src: &LString,
+        dst: &mut LString,
+        num_it: u32,
+    ) -> Option<bool> {
+        let len: usize = if c.unit {
+            src.len()
+        } else {
+            src.ids
+                .iter()
+                .map(|id| c.classes[id.index()].out as usize)
+                .sum()
+        };
+        if check_size(self.model, num_it, len, len * size_of::<ModuleId>()).is_err() {
+            return None;
+        }
+        if dst.ids.capacity() < len + classes::PAD {
+            // A new buffer: growing the old one would copy what it held.
+            dst.ids = Vec::with_capacity(len + classes::PAD);
+        }
+        let ids = &src.ids;
+        let n = ids.len();
+        let mut changed = false;
+        if !c.neighbours {
+            for i in 0..n {
+                changed |= self.rewrite_sized_one::<W>(c, ids, i, dst);
+            }
+            return Some(changed);
+        }
+        // A flat string whose modules compare neighbours: a module that is cold (no production
+        // rewrites it unless a neighbour is a context) between cold neighbours is copied as it
+        // is, in bulk; the others one by one.
+        let hot = |k: usize| c.hot[ids[k].index()];
+        let mut i = 0;
+        while i < n {
+            let mut h = i;
+            while h < n && !hot(h) {
+                h += 1;
+            }
+            let a = if i > 0 && hot(i - 1) { i + 1 } else { i };
+            let b = if h < n {
+                h.saturating_sub(1).max(a)
+            } else {
+                n.max(a)
+            };
+            let stop = (h + 2).min(n).max(b);
+            for k in i..a {
+                changed |= self.rewrite_sized_one::<W>(c, ids, k, dst);
+            }
+            dst.ids.extend_from_slice(&ids[a..b]);
+            for k in b..stop {
+                changed |= self.rewrite_sized_one::<W>(c, ids, k, dst);
+            }
+            i = stop;
+        }
+        debug_assert_eq!(dst.len(), len);
+        Some(changed)
+    }
+
+    /// Writes module `i` of `ids` as its class says, its neighbours being the modules next to
+    /// it; returns whether a production applied.
+    #[inline(always)]
+    fn rewrite_sized_one<const W: usize>(
+        &mut self,
+        c: &Classes,
+        ids: &[ModuleId],
+        i: usize,
+        dst: &mut LString,
+    ) -> bool {
+        let class = &c.classes[ids[i].index()];
+        let (start, n, production) = match class.kind {
+            Kind::Fixed => (class.start, class.len, class.production),
+            Kind::Choice => {
+                let a = c.choose(class, self.rng.random::<f64>());
+                (a.start, a.len, a.production)
+            }
+            Kind::Neighbours => {
+                let left = if i > 0 { ids[i - 1].0 } else { context::NONE };
+                let right = ids.get(i + 1).map_or(context::NONE, |r| r.0);
+                match c.neighbours_match(class, left, right) {
+                    Some(a) => (a.start, a.len, a.production),
+                    None => (class.own, 1, NOT_REWRITTEN),
+                }
+            }
+            // A general class writes an unknown number of modules: never here.
+            Kind::General => (class.own, 1, NOT_REWRITTEN),
+        };
+        classes::put_wide::<W>(&mut dst.ids, &c.successors, start as usize, n as usize);
+        production != NOT_REWRITTEN
     }
 
     /// Rewrites modules `range` of `src` onto the end of `dst`. Control module groups act only in

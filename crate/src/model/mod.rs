@@ -12,7 +12,7 @@ mod settings;
 pub use alphabet::{Alphabet, ModuleId};
 pub use curve::{Curve, CurveKind};
 pub use lstring::LString;
-pub use program::{Env, EvalError, Program, RandomVariable, Scope, MAX_OPS, MAX_STACK};
+pub use program::{Env, EvalError, Program, RandomVariable, Scope, Simple, MAX_OPS, MAX_STACK};
 pub use resolve::resolve;
 pub use settings::{
     directive_default, Bend, GrowthAttributes, Lifetime, Settings, Shape, ShapeWidth, Speed, Sun,

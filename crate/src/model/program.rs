@@ -180,6 +180,31 @@ impl Program {
         }
     }
 
+    /// The expression as one of the shapes a template evaluates without the interpreter (a
+    /// constant, a parameter, or one arithmetic operator on two of them), when it is one.
+    pub fn simple(&self) -> Option<Simple> {
+        let arithmetic = |op: &BinaryOp| {
+            matches!(
+                op,
+                BinaryOp::Add | BinaryOp::Sub | BinaryOp::Mul | BinaryOp::Div
+            )
+        };
+        Some(match self.ops.as_slice() {
+            [Op::Const(v)] => Simple::Const(*v),
+            [Op::Slot(s)] => Simple::Slot(*s),
+            [Op::Slot(s), Op::Const(c), Op::Bin(op)] if arithmetic(op) => {
+                Simple::SlotConst(*op, *s, *c)
+            }
+            [Op::Const(c), Op::Slot(s), Op::Bin(op)] if arithmetic(op) => {
+                Simple::ConstSlot(*op, *c, *s)
+            }
+            [Op::Slot(a), Op::Slot(b), Op::Bin(op)] if arithmetic(op) => {
+                Simple::SlotSlot(*op, *a, *b)
+            }
+            _ => return None,
+        })
+    }
+
     fn max_stack(&self) -> usize {
         let mut depth: isize = 0;
         let mut max = 0;
@@ -296,6 +321,52 @@ impl Program {
                 .get(op)
                 .cloned()
                 .unwrap_or_else(|| self.span.clone()),
+        }
+    }
+}
+
+/// A compiled expression simple enough to evaluate without the interpreter ([`Program::simple`]):
+/// its value is the interpreter's, bit for bit, whenever that is a finite number.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Simple {
+    Const(f64),
+    Slot(u16),
+    /// `slot op constant` (`+ - * /`).
+    SlotConst(BinaryOp, u16, f64),
+    ConstSlot(BinaryOp, f64, u16),
+    SlotSlot(BinaryOp, u16, u16),
+}
+
+impl Simple {
+    /// The highest slot the expression reads, if any.
+    pub fn max_slot(self) -> Option<u16> {
+        match self {
+            Simple::Const(_) => None,
+            Simple::Slot(s) | Simple::SlotConst(_, s, _) | Simple::ConstSlot(_, _, s) => Some(s),
+            Simple::SlotSlot(_, a, b) => Some(a.max(b)),
+        }
+    }
+
+    /// The value with `slots` bound (every slot read must be in `slots`). Not checked: a result
+    /// that is not finite (a division by zero, an overflow) must be evaluated again by
+    /// [`Program::eval`], which reports it.
+    #[inline(always)]
+    pub fn eval(self, slots: &[f64]) -> f64 {
+        #[inline(always)]
+        fn apply(op: BinaryOp, a: f64, b: f64) -> f64 {
+            match op {
+                BinaryOp::Add => a + b,
+                BinaryOp::Sub => a - b,
+                BinaryOp::Mul => a * b,
+                _ => a / b,
+            }
+        }
+        match self {
+            Simple::Const(v) => v,
+            Simple::Slot(s) => slots[s as usize],
+            Simple::SlotConst(op, s, c) => apply(op, slots[s as usize], c),
+            Simple::ConstSlot(op, c, s) => apply(op, c, slots[s as usize]),
+            Simple::SlotSlot(op, a, b) => apply(op, slots[a as usize], slots[b as usize]),
         }
     }
 }
