@@ -38,6 +38,13 @@ describe('status line', () => {
     expect(reportPlant(stats, [diagnostic('warning')], timings, 4.24).text).toMatch(/· 4\.2 ms round trip · 1 warning$/);
   });
 
+  it('says "drawn as lines" for a plant with segments and no mesh (the Lines mode), not "0 vertices"', () => {
+    const lines = { ...stats, vertices: 0, triangles: 0, lines: 0 };
+    expect(reportPlant(lines, [], timings, 9).text).toMatch(/^12,345 modules · 1 segment · drawn as lines · parse\+resolve /);
+    const empty = { ...stats, segments: 0, vertices: 0, triangles: 0, lines: 0 };
+    expect(reportPlant(empty, [], timings, 9).text).toMatch(/· 0 segments · 0 vertices · 0 triangles ·/);
+  });
+
   it('says when a model too large to mesh is drawn as lines', () => {
     const huge = { ...stats, vertices: 0, triangles: 0, lines: 2000000 };
     expect(reportPlant(huge, [], timings, 900).text).toMatch(/· too large to mesh: 2,000,000 segments drawn as lines$/);

@@ -34,8 +34,11 @@ export function reportPlant(
   const parts = [
     plural(stats.modules, 'module'),
     plural(stats.segments, 'segment'),
-    plural(stats.vertices, 'vertex', 'vertices'),
-    plural(stats.triangles, 'triangle'),
+    // A plant the Lines mode draws without tubes (and without leaves or polygons) has no mesh: say
+    // how it is drawn rather than "0 vertices", which reads as nothing drawn.
+    ...(stats.vertices === 0 && stats.segments > 0 && stats.lines === 0
+      ? ['drawn as lines']
+      : [plural(stats.vertices, 'vertex', 'vertices'), plural(stats.triangles, 'triangle')]),
     `parse+resolve ${millis(timings.parseResolve)} · derive ${millis(timings.derive)} · interpret ${millis(timings.interpret)} · mesh ${millis(timings.mesh)} ms`,
     `${millis(totalMillis)} ms round trip`,
   ];
