@@ -21,20 +21,22 @@ use std::path::{Path, PathBuf};
 
 /// The stages in dependency order: a module may use only modules of a lower rank.
 const RANKS: &[(&str, u32)] = &[
-    ("vocabulary", 0),
-    ("diagnostics", 0),
-    ("syntax", 1),
-    ("model", 2),
-    ("derive", 3),
-    ("growth", 4),
-    ("turtle", 5),
-    ("mesh", 6),
-    ("branches", 7),
-    ("export", 8),
-    ("import", 9),
-    ("pipeline", 10),
-    ("wasm", 11),
-    ("main", 12),
+    // `sort`: one small sort for every stage (src/sort.rs, for the first load's size), below them all.
+    ("sort", 0),
+    ("vocabulary", 1),
+    ("diagnostics", 1),
+    ("syntax", 2),
+    ("model", 3),
+    ("derive", 4),
+    ("growth", 5),
+    ("turtle", 6),
+    ("mesh", 7),
+    ("branches", 8),
+    ("export", 9),
+    ("import", 10),
+    ("pipeline", 11),
+    ("wasm", 12),
+    ("main", 13),
 ];
 
 /// The longest a function body may be without a written reason.
