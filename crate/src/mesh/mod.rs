@@ -388,7 +388,7 @@ fn mesh_of(
         Vec::new()
     };
     let (joints, starts) = if tubes.is_empty() {
-        (Vec::new(), Vec::new())
+        (parts::PointSet::default(), parts::PointSet::default())
     } else {
         (parts::joint_keys(skeleton), parts::start_keys(skeleton))
     };

@@ -147,11 +147,29 @@ impl Builder<'_> {
             let radius = 0.5 * sample.width * self.unit;
             let c = skeleton.color(segments[sample.segment].color);
             let first = self.mesh.vertex_count() as u32;
-            for j in 0..=sides {
+            // The ring's vertices written in place, all arrays grown once per ring (as `vertex`
+            // writes them, in the same arithmetic: four `extend`s a vertex cost more in wasm).
+            let mesh = &mut self.mesh;
+            let count = sides + 1;
+            let at = mesh.positions.len();
+            mesh.positions.resize(at + 3 * count, 0.0);
+            mesh.normals.resize(at + 3 * count, 0.0);
+            mesh.colors.resize(at + 3 * count, 0.0);
+            let at_uv = mesh.uvs.len();
+            mesh.uvs.resize(at_uv + 2 * count, 0.0);
+            let vertices = mesh.positions[at..]
+                .chunks_exact_mut(3)
+                .zip(mesh.normals[at..].chunks_exact_mut(3))
+                .zip(mesh.colors[at..].chunks_exact_mut(3))
+                .zip(mesh.uvs[at_uv..].chunks_exact_mut(2));
+            for (j, (((position, normal), color), uv)) in vertices.enumerate() {
                 let (sin, cos) = self.ring[j % sides];
                 let radial = n * cos + b * sin;
-                let u = j as f32 / sides as f32;
-                self.vertex(sample.point + radial * radius, radial, c, [u, v as f32]);
+                let p = sample.point + radial * radius;
+                position.copy_from_slice(&[p.x as f32, p.y as f32, p.z as f32]);
+                normal.copy_from_slice(&[radial.x as f32, radial.y as f32, radial.z as f32]);
+                color.copy_from_slice(&c);
+                uv.copy_from_slice(&[j as f32 / sides as f32, v as f32]);
             }
             rings.push(first);
         }
