@@ -172,6 +172,11 @@ pub struct Build {
     pub timings: Option<StageTimings>,
 }
 
+/// [`crate::turtle::MAX_COORDINATE`] as `{:e}` writes it, for the clamping warning: a constant
+/// text, so that the first plant's core carries no float-to-exponent formatting (issue 22; a test
+/// checks it against the number).
+const MAX_COORDINATE_TEXT: &str = "1e30";
+
 /// Wall-clock time of each stage of one build, in the unit of the caller's clock (milliseconds
 /// for the studio and the CLI). A stage that did not run (after an error) took 0.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
@@ -189,8 +194,28 @@ pub struct StageTimings {
 
 impl StageTimings {
     /// One JSON object, e.g. `{"parseResolve":0.1,"derive":0.4,"interpret":0.9,"mesh":2.5}`.
+    /// Written by hand with `Display` (which the module texts need anyway), not serde_json: its
+    /// float writer would be one more in the first plant's core (issue 22). The text is serde_json's
+    /// for every time a clock gives (a whole number keeps its `.0`; only below 1e-5 or from 1e16
+    /// up would serde_json write an exponent, the same number); a time that is not finite is
+    /// `null`, as serde_json writes it.
     pub fn to_json(&self) -> String {
-        serde_json::to_string(self).unwrap_or_else(|_| "{}".into())
+        let number = |v: f64| {
+            if !v.is_finite() {
+                "null".to_string()
+            } else if v.fract() == 0.0 {
+                format!("{v}.0")
+            } else {
+                format!("{v}")
+            }
+        };
+        format!(
+            "{{\"parseResolve\":{},\"derive\":{},\"interpret\":{},\"mesh\":{}}}",
+            number(self.parse_resolve),
+            number(self.derive),
+            number(self.interpret),
+            number(self.mesh)
+        )
     }
 }
 
@@ -354,10 +379,10 @@ fn clamped_warning(model: &Model, derivation: &Derivation, module: u32) -> Diagn
         "E0406",
         span,
         format!(
-            "'{name}' (module {} of the string) draws past ±{:e} or with a number that is not \
-             finite; its geometry is clamped so that the view and every file stay valid",
+            "'{name}' (module {} of the string) draws past ±{MAX_COORDINATE_TEXT} or with a \
+             number that is not finite; its geometry is clamped so that the view and every file \
+             stay valid",
             module as u64 + 1,
-            crate::turtle::MAX_COORDINATE
         ),
     )
 }
@@ -526,6 +551,40 @@ mod tests {
         assert_eq!(
             timings.to_json(),
             r#"{"parseResolve":1.0,"derive":1.0,"interpret":1.0,"mesh":1.0}"#
+        );
+    }
+
+    #[test]
+    fn timings_json_is_what_serde_json_writes() {
+        for times in [
+            [0.25, 12.5, 0.1 + 0.2, 1234.0],
+            [-0.0, 3.0e-3, 99999.875, 1.0 / 3.0],
+        ] {
+            let timings = StageTimings {
+                parse_resolve: times[0],
+                derive: times[1],
+                interpret: times[2],
+                mesh: times[3],
+            };
+            let by_serde = serde_json::to_string(&timings).unwrap();
+            assert_eq!(timings.to_json(), by_serde);
+        }
+        let broken = StageTimings {
+            derive: f64::NAN,
+            mesh: f64::INFINITY,
+            ..StageTimings::default()
+        };
+        assert_eq!(
+            broken.to_json(),
+            r#"{"parseResolve":0.0,"derive":null,"interpret":0.0,"mesh":null}"#
+        );
+    }
+
+    #[test]
+    fn the_clamping_warning_writes_max_coordinate_as_its_exponent_form() {
+        assert_eq!(
+            MAX_COORDINATE_TEXT,
+            format!("{:e}", crate::turtle::MAX_COORDINATE)
         );
     }
 
