@@ -11,7 +11,7 @@
 //   (tests/browser/vitest.config.ts).
 import { fileURLToPath } from 'node:url';
 import { VitePWA } from 'vite-plugin-pwa';
-import type { Plugin } from 'vite';
+import type { HtmlTagDescriptor, Plugin } from 'vite';
 import { defineConfig } from 'vitest/config';
 import { galleryManifestPlugin } from './scripts/gallery-plugin.ts';
 import { lessonsPlugin } from './scripts/lessons-plugin.ts';
@@ -62,12 +62,8 @@ function offlineApp() {
  * The first load (issue 22): index.html and embed.html ask for the core's wasm at once (a preload,
  * fetched with the page's script rather than after it has run), the fetch `coreModule()` makes;
  * index.html also runs the boot script (web/src/boot.ts: the core compiles and the build worker
- * starts while the studio's script still downloads), with a modulepreload of what it imports, and
- * preloads the example the studio opens with (`INITIAL_EXAMPLE` of web/src/main.ts), which it
- * fetches when there is no text to restore. These come first in the head, before the studio's
- * script and its modulepreloads: over HTTP/1.1 a browser opens six connections to a host, and the
- * files found first get them, so the boot script (and through it the build worker's script) no
- * longer waits a round trip behind three.js (README "The first load": the waterfall).
+ * starts while the studio's script still downloads) and preloads the example the studio opens
+ * with (`INITIAL_EXAMPLE` of web/src/main.ts), which it fetches when there is no text to restore.
  */
 function preloadCore(): Plugin {
   return {
@@ -75,27 +71,18 @@ function preloadCore(): Plugin {
     apply: 'build',
     transformIndexHtml: {
       order: 'post',
-      handler(html, context) {
-        const bundle = context.bundle ?? {};
-        const files = Object.keys(bundle);
+      handler(_html, context) {
+        const files = Object.keys(context.bundle ?? {});
         const wasm = files.find((file) => /meristem_core_bg-[^/]*\.wasm$/.test(file));
-        if (!wasm) return html;
-        const tags = [`<link rel="preload" href="./${wasm}" as="fetch" type="application/wasm" crossorigin="">`];
+        if (!wasm) return [];
+        const tags: HtmlTagDescriptor[] = [{ tag: 'link', attrs: { rel: 'preload', href: `./${wasm}`, as: 'fetch', type: 'application/wasm', crossorigin: '' }, injectTo: 'head' }];
         const boot = files.find((file) => /^assets\/boot-[^/]*\.js$/.test(file));
-        let page = html;
         if (context.filename.endsWith('index.html') && boot) {
-          const chunk = bundle[boot];
-          for (const dependency of chunk.type === 'chunk' ? chunk.imports : []) {
-            page = page.replace(new RegExp(`\\s*<link rel="modulepreload" crossorigin href="\\./${dependency.replace(/[.*+?^${}()|[\]\\]/g, '\\$&')}">`), '');
-            tags.push(`<link rel="modulepreload" crossorigin href="./${dependency}">`);
-          }
           // async: it runs once it has arrived, not after the studio's script (module scripts run in order).
-          tags.push(`<script type="module" async src="./${boot}"></script>`);
-          tags.push(`<link rel="preload" href="examples/${INITIAL_EXAMPLE}" as="fetch" crossorigin="">`);
+          tags.push({ tag: 'script', attrs: { type: 'module', async: true, src: `./${boot}` }, injectTo: 'head' });
+          tags.push({ tag: 'link', attrs: { rel: 'preload', href: `examples/${INITIAL_EXAMPLE}`, as: 'fetch', crossorigin: '' }, injectTo: 'head' });
         }
-        const at = page.indexOf('<script type="module"');
-        if (at < 0) throw new Error(`${context.filename}: no module script to put the first load's preloads before`);
-        return `${page.slice(0, at)}${tags.join('\n    ')}\n    ${page.slice(at)}`;
+        return tags;
       },
     },
   };
