@@ -42,3 +42,5 @@ if [ ${#opt[@]} -eq 0 ]; then
     --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext \
     --enable-mutable-globals --enable-multivalue --enable-simd
 fi
+# The vocabulary, which crate/pkg-core leaves out, as a file for the studio (issue 22).
+node scripts/vocabulary-json.mjs

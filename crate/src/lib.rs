@@ -14,6 +14,7 @@ pub mod growth;
 pub mod import;
 pub mod mesh;
 pub mod model;
+pub mod number;
 pub mod pipeline;
 pub mod sort;
 pub mod syntax;

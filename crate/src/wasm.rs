@@ -296,6 +296,7 @@ pub fn version() -> String {
 
 /// The language's vocabulary as JSON (`crate::vocabulary::vocabulary_json`): modules, directives,
 /// keywords, functions and values, each with typed parameters.
+#[cfg(feature = "studio-extras")]
 #[wasm_bindgen]
 pub fn vocabulary() -> String {
     crate::vocabulary::vocabulary_json()

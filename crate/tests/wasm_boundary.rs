@@ -53,6 +53,70 @@ fn check(name: &str, built: &Built, expected: (&str, usize, f64)) {
     );
 }
 
+/// Number texts as grammars hold them and as they must not: `meristem::number::parse_f64` reads
+/// them as `str::parse::<f64>` does, bit for bit (under wasm32 it lets JavaScript's parseFloat
+/// convert the digits it has checked).
+fn parse_f64_is_str_parse() {
+    const TEXTS: &[&str] = &[
+        "0",
+        "1",
+        "-1",
+        "+1",
+        "1.",
+        ".5",
+        "-.5",
+        "1.5e3",
+        "1E-3",
+        "2.5e+10",
+        "007",
+        "0.1",
+        "22.5",
+        "1e400",
+        "-1e400",
+        "1e-400",
+        "-0",
+        "inf",
+        "-Infinity",
+        "NaN",
+        "+nan",
+        "-nan",
+        "",
+        ".",
+        "-",
+        "+",
+        "e5",
+        "1e",
+        "1e+",
+        "1.2.3",
+        "1 ",
+        " 1",
+        "0x10",
+        "1_000",
+        "∞",
+        "1,5",
+        "infinit",
+        "..5",
+        "1e5.5",
+        "9007199254740993",
+        "2.2250738585072011e-308",
+        "4.9e-324",
+        "2.4703282292062328e-324",
+        "1.7976931348623157e308",
+        "1.7976931348623159e308",
+        "0.30000000000000004",
+        "123456789012345678901234567890",
+        "1.00000000000000011102230246251565404236316680908203125",
+        "0.000000000000000000000000000000000000000000001e+30",
+    ];
+    for text in TEXTS {
+        assert_eq!(
+            meristem::number::parse_f64(text).map(f64::to_bits),
+            text.parse::<f64>().ok().map(f64::to_bits),
+            "{text:?}"
+        );
+    }
+}
+
 #[cfg(not(target_arch = "wasm32"))]
 mod native {
     use super::*;
@@ -78,6 +142,11 @@ mod native {
             eprintln!("{name}: {built:?}");
             check(name, &built, expected);
         }
+    }
+
+    #[test]
+    fn numbers_are_read_as_str_parse_reads_them() {
+        parse_f64_is_str_parse();
     }
 }
 
@@ -110,6 +179,11 @@ mod wasm {
             };
             check(name, &built, expected);
         }
+    }
+
+    #[wasm_bindgen_test]
+    fn numbers_are_read_as_str_parse_reads_them() {
+        parse_f64_is_str_parse();
     }
 
     #[wasm_bindgen_test]

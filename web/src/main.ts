@@ -2,7 +2,7 @@
 // piece after those it needs (see index.html for the page, ARCHITECTURE.md for the pieces).
 import './style.css';
 import { registerSW } from 'virtual:pwa-register';
-import { coreVersion, initCore, languageVocabulary } from './core';
+import { coreVersion, initCore, loadVocabulary, type Vocabulary } from './core';
 import { createLazyGrammarEditor, type GrammarEditor } from './editor/grammar-text';
 import { growthAttributes } from './editor/growth-directives';
 import { INITIAL_EXAMPLE } from './studio/initial-example';
@@ -84,7 +84,6 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   const sliders = new SliderPanel(els.sliders, els.constantsCount, els.constantsEmpty, {
     replaceRange: (from, to, insert, history) => editor?.replaceRange(from, to, insert, history),
   });
-  const vocabulary = languageVocabulary();
   // The Help panel (the language reference) loads when first opened (issue 22).
   const openHelpFirst = () => void openHelp();
   const help = onDemand(async () => {
@@ -94,26 +93,29 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   });
   const openHelp = (anchor?: string) => help().then((panel) => panel.open(anchor)).catch((error: unknown) => console.error('Could not open the help:', error));
   els.help.opener.addEventListener('click', openHelpFirst);
-  const growth = new GrowthPanel(
-    els.growthRows,
-    els.growthCount,
-    { text: currentText, replaceRange: (from, to, insert) => editor?.replaceRange(from, to, insert) },
-    growthAttributes(vocabulary),
-  );
+  // What reads the text with the language's vocabulary (the sliders, the Growth panel, the
+  // iterations line) starts once it has arrived, after the first plant (issue 22, the first load:
+  // core/vocabulary.ts); the text is built meanwhile.
+  let growth: GrowthPanel | undefined;
+  let vocabulary: Vocabulary | undefined;
+  const readText = (text: string) => {
+    if (!vocabulary) return;
+    sliders.update(text);
+    growth?.update(text);
+    derivation.textChanged(text);
+  };
   // The grammar in a plain textarea until CodeMirror arrives, after the first plant (below).
   const grammarEditor = createLazyGrammarEditor(
     {
       parent: els.editor,
       doc: start.text,
       onChange: (text) => {
-        sliders.update(text);
-        growth.update(text);
-        derivation.textChanged(text);
+        readText(text);
         preview.rebuild();
         autosave.changed(text);
       },
       diagnose: (text) => preview.feed.diagnose(text),
-      vocabulary,
+      vocabulary: loadVocabulary,
       onCursor: (pos) => contexts.cursorAt(pos),
       openReference: (anchor) => void openHelp(anchor),
     },
@@ -127,9 +129,6 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
     browserStorage(),
   );
   els.stopBuild.addEventListener('click', () => grammarEditor.focus()); // the text stays, to edit on
-  sliders.update(start.text);
-  growth.update(start.text);
-  derivation.textChanged(start.text);
 
   // Options: the derivation's and the view's; a change of either asks for a build (meshing ones).
   derivation.onChange(() => preview.rebuild());
@@ -256,6 +255,16 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   await Promise.race([firstBuild, underWay.then(() => delay(1000))]);
   await nextFrame();
   firstLoadDone();
+  const vocabularyRead = loadVocabulary().then((arrived) => {
+    vocabulary = arrived;
+    growth = new GrowthPanel(
+      els.growthRows,
+      els.growthCount,
+      { text: currentText, replaceRange: (from, to, insert) => editor?.replaceRange(from, to, insert) },
+      growthAttributes(arrived),
+    );
+    readText(currentText());
+  });
   // Downloads: the plant on screen (the last good build's text and options, with the edits); the
   // menu's code loads after the first plant (issue 22).
   const downloadsInstalled = import('./studio/download-menu').then(({ installDownloads }) =>
@@ -266,6 +275,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   );
   const editorLoaded = grammarEditor.loaded;
   await firstBuild;
+  await vocabularyRead;
   await editorLoaded;
   await view.controlsReady; // the mouse moves the camera (the OrbitControls load after the first plant's frame)
   await downloadsInstalled;

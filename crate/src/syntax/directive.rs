@@ -126,8 +126,8 @@ fn curve_definition(d: &mut Directive, diagnostics: &mut Vec<Diagnostic>) -> boo
         if word.is_empty() {
             continue;
         }
-        match word.parse::<f64>() {
-            Ok(v) if v.is_finite() => points.push(v),
+        match crate::number::parse_f64(word) {
+            Some(v) if v.is_finite() => points.push(v),
             _ => {
                 let at = args_at + (word.as_ptr() as usize - args.as_ptr() as usize);
                 diagnostics.push(Diagnostic::error(

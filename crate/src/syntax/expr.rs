@@ -243,7 +243,7 @@ impl ExprParser<'_> {
             let len = number_length(rest);
             let literal = &rest[..len];
             self.pos += len;
-            let value: f64 = literal.parse().map_err(|_| {
+            let value = crate::number::parse_f64(literal).ok_or_else(|| {
                 Diagnostic::error(
                     "E0125",
                     self.span_from(start),

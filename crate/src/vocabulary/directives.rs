@@ -1,6 +1,6 @@
 //! The directives: `#name arguments` lines, each with the forms its arguments may take.
 
-use super::params::{Param, ParamKind};
+use super::params::{text, Param, ParamKind};
 use serde::{Serialize, Serializer};
 
 /// Every directive. `#colour` is another spelling of [`DirectiveKind::Color`].
@@ -173,14 +173,14 @@ const fn row(
     DirectiveInfo {
         name,
         kind,
-        label,
+        label: text(label),
         forms,
         usage: "",
         count_code: "E0209",
         repeatable: false,
         group,
         enable: &[],
-        doc,
+        doc: text(doc),
     }
 }
 

@@ -1,6 +1,7 @@
 //! What expressions may call and read: functions (LANGUAGE.md sections 4 and 5) and the values
 //! `NumIt` and `MaxIt`.
 
+use super::params::text;
 use serde::Serialize;
 
 /// A function of expressions (trigonometry in degrees).
@@ -70,7 +71,7 @@ const fn f(
         function,
         params,
         random: false,
-        doc,
+        doc: text(doc),
     }
 }
 
@@ -147,12 +148,12 @@ pub const VALUES: &[ValueInfo] = &[
     ValueInfo {
         name: "NumIt",
         value: Value::NumIt,
-        doc: "The step being derived: 1 in the first step (0 in the axiom).",
+        doc: text("The step being derived: 1 in the first step (0 in the axiom)."),
     },
     ValueInfo {
         name: "MaxIt",
         value: Value::MaxIt,
-        doc: "The number of steps of this derivation.",
+        doc: text("The number of steps of this derivation."),
     },
 ];
 

@@ -1,6 +1,7 @@
 //! The words that open a line of their own: the axiom, the sections, and cpfg's spellings of
 //! directives.
 
+use super::params::text;
 use serde::Serialize;
 
 /// What a keyword line says (serialized as the variant's identifier, `Axiom`).
@@ -55,7 +56,7 @@ const fn kw(name: &'static str, kind: KeywordKind, doc: &'static str) -> Keyword
         kind,
         aliases: &[],
         colon: true,
-        doc,
+        doc: text(doc),
     }
 }
 

@@ -1,6 +1,6 @@
 //! The modules with a meaning: turtle commands, cut and Green's control modules.
 
-use super::params::{Param, ParamKind};
+use super::params::{text, Param, ParamKind};
 use super::DirectiveKind;
 use serde::{Serialize, Serializer};
 
@@ -145,7 +145,7 @@ const fn row(
         name,
         meaning,
         params,
-        doc,
+        doc: text(doc),
         category,
     }
 }

@@ -70,6 +70,18 @@ pub struct Param {
     pub choices: &'static [&'static str],
 }
 
+/// The vocabulary's texts for people (docs and labels), as the rows give them; empty in
+/// `crate/pkg-core` (wasm32 without `studio-extras`), where nothing reads them: the studio reads
+/// them from `vocabulary.json`, written from `crate/pkg` at build time (issue 22, the first load:
+/// 11 KB of text). The row still compiles its text, which a build without it leaves out.
+pub(crate) const fn text(text: &'static str) -> &'static str {
+    if cfg!(any(feature = "studio-extras", not(target_arch = "wasm32"))) {
+        text
+    } else {
+        ""
+    }
+}
+
 impl Param {
     /// A parameter of `kind` with nothing else said.
     pub const fn new(name: &'static str, kind: ParamKind, doc: &'static str) -> Param {
@@ -80,7 +92,7 @@ impl Param {
             range: None,
             unit: "",
             label: "",
-            doc,
+            doc: text(doc),
             choices: &[],
         }
     }
@@ -117,7 +129,7 @@ impl Param {
     }
 
     pub const fn label(mut self, label: &'static str) -> Param {
-        self.label = label;
+        self.label = text(label);
         self
     }
 

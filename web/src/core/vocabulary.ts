@@ -2,8 +2,10 @@
 // names of modules, directives, keywords, functions and values, with their typed parameters, for
 // highlighting, completion, hover docs and the Growth panel. Code refers to a row by its `kind`
 // (the core's identifier, e.g. `Define`), never by its spelling, so a name lives in one place.
-import { vocabulary } from '../../../crate/pkg-core/meristem_core.js';
-import { assertReady, guarded } from './init';
+// It comes as a JSON file the build writes from the whole core (scripts/vocabulary-json.mjs,
+// `vocabulary()` of crate/pkg): the first plant's core leaves it and its texts out (issue 22, the
+// first load), and the studio loads it after the first plant (`loadVocabulary`).
+import vocabularyUrl from '../../../crate/pkg-core/vocabulary.json?url';
 
 /** What a parameter holds. */
 export type ParamKind = 'number' | 'whole' | 'stepExpression' | 'expression' | 'season' | 'name' | 'modules';
@@ -95,11 +97,36 @@ export interface Vocabulary {
 }
 
 let cached: Vocabulary | undefined;
+let loading: Promise<Vocabulary> | undefined;
 
-/** The language's vocabulary, read from the core once. Requires `initCore`. */
+/** The language's vocabulary, fetched once (browser); later calls return the same promise. */
+export function loadVocabulary(): Promise<Vocabulary> {
+  return (loading ??= fetch(vocabularyUrl)
+    .then((response) => {
+      if (!response.ok) throw new Error(`the vocabulary could not be fetched: HTTP ${response.status}`);
+      return response.json() as Promise<Vocabulary>;
+    })
+    .then((vocabulary) => (cached = vocabulary))
+    .catch((error: unknown) => {
+      loading = undefined; // tried again on the next call
+      throw error;
+    }));
+}
+
+/** Sets the vocabulary without fetching it (node: tests and scripts read it from crate/pkg). */
+export function useVocabulary(vocabulary: Vocabulary): void {
+  cached = vocabulary;
+  loading = Promise.resolve(vocabulary);
+}
+
+/** The vocabulary if it has arrived ({@link loadVocabulary}), else undefined. */
+export function vocabularyIfLoaded(): Vocabulary | undefined {
+  return cached;
+}
+
+/** The language's vocabulary. Requires {@link loadVocabulary} (or {@link useVocabulary}) to have finished. */
 export function languageVocabulary(): Vocabulary {
-  assertReady();
-  cached ??= guarded(() => JSON.parse(vocabulary()) as Vocabulary);
+  if (!cached) throw new Error('the vocabulary is used before loadVocabulary() finished');
   return cached;
 }
 

@@ -59,6 +59,9 @@ export interface GrammarEditor {
 /** The module with the full editor (CodeMirror), loaded on demand. */
 export type EditorModule = Pick<typeof import('./grammar-editor'), 'createGrammarEditor'>;
 
+/** The lazy editor's options: the vocabulary arrives with the editor (`core/vocabulary.ts`: after the first plant). */
+export type LazyGrammarEditorOptions = Omit<GrammarEditorOptions, 'vocabulary'> & { vocabulary: () => Promise<Vocabulary> };
+
 /**
  * A grammar text in a plain <textarea> in `options.parent` at once, replaced by the full editor
  * from `load()` when {@link GrammarEditor.loaded} is first read or the user focuses the textarea,
@@ -66,7 +69,7 @@ export type EditorModule = Pick<typeof import('./grammar-editor'), 'createGramma
  * every change, typed or made through the methods, calls `options.onChange` as the editor's do;
  * marks and diagnostics wait for the editor.
  */
-export function createLazyGrammarEditor(options: GrammarEditorOptions, load: () => Promise<EditorModule>): GrammarEditor {
+export function createLazyGrammarEditor(options: LazyGrammarEditorOptions, load: () => Promise<EditorModule>): GrammarEditor {
   const area = document.createElement('textarea');
   area.className = 'grammar-placeholder';
   area.dataset.testid = 'grammar-placeholder';
@@ -84,12 +87,12 @@ export function createLazyGrammarEditor(options: GrammarEditorOptions, load: () 
   let full: GrammarEditor | undefined;
   let loading: Promise<void> | undefined;
   const upgrade = (): Promise<void> =>
-    (loading ??= load().then((module) => {
+    (loading ??= Promise.all([load(), options.vocabulary()]).then(([module, vocabulary]) => {
       const hadFocus = document.activeElement === area;
       const [start, end] = [area.selectionStart, area.selectionEnd];
       const selection = area.selectionDirection === 'backward' ? { anchor: end, head: start } : { anchor: start, head: end };
       const clamp = (n: number) => Math.min(n, area.value.length);
-      full = module.createGrammarEditor({ ...options, doc: area.value }, { anchor: clamp(selection.anchor), head: clamp(selection.head) });
+      full = module.createGrammarEditor({ ...options, vocabulary, doc: area.value }, { anchor: clamp(selection.anchor), head: clamp(selection.head) });
       area.remove();
       if (hadFocus) full.focus();
     }, reportLoadError));

@@ -7,7 +7,7 @@
 // text. `iterations` and `seed` override the grammar's; `controls` lists the controls shown
 // (`iterations`: − n + and Play; `sliders`: one per `#define`). Every plant of the page builds in
 // one shared worker; the textures and the studio link point at the site this script came from.
-import { initCore } from '../core';
+import { loadVocabulary } from '../core';
 import { EmbedPlant, parseControls } from './embed-plant';
 import { EMBED_CSS } from './embed-style';
 import { sharedBuilds } from './shared-builds';
@@ -61,7 +61,7 @@ export class MeristemPlantElement extends HTMLElement {
     const controls = parseControls(this.getAttribute('controls'));
     let source: string;
     try {
-      [source] = await Promise.all([this.grammar(), controls.has('sliders') ? initCore() : Promise.resolve()]);
+      [source] = await Promise.all([this.grammar(), controls.has('sliders') ? loadVocabulary() : Promise.resolve()]);
     } catch (error) {
       if (load === this.loads) this.fail(`Could not load the plant: ${error instanceof Error ? error.message : String(error)}`);
       return;

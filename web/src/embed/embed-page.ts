@@ -1,7 +1,7 @@
 // embed.html: one plant for an <iframe>, from a share link's state in the fragment
 // (`embed.html#s=…`, what the studio's Share dialog gives) and the controls in the query
 // (`?controls=iterations,sliders`). Nothing but the plant, its controls and "Open in Meristem".
-import { initCore } from '../core';
+import { loadVocabulary } from '../core';
 import { decodeState, hasSharedState } from '../share/codec';
 import { EmbedPlant, parseControls } from './embed-plant';
 import { EMBED_CSS } from './embed-style';
@@ -22,7 +22,7 @@ async function start(): Promise<void> {
     host.append(note);
     return;
   }
-  if (controls.has('sliders')) await initCore();
+  if (controls.has('sliders')) await loadVocabulary(); // the sliders read the text with it
   const { text, iterations, seed } = decoded.state;
   new EmbedPlant(host, { source: text, iterations, seed, controls, siteRoot: new URL('./', location.href).href, builds: sharedBuilds() });
 }

@@ -447,7 +447,7 @@ impl Resolver {
         if d.args.is_empty() {
             return Err("nothing".into());
         }
-        if let Ok(v) = d.args.parse::<f64>() {
+        if let Some(v) = crate::number::parse_f64(&d.args) {
             return if v.is_finite() {
                 Ok(v)
             } else {

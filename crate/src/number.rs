@@ -1,0 +1,156 @@
+//! Reading decimal numbers from grammar text: [`parse_f64`], what `str::parse::<f64>` does.
+//!
+//! Natively it is `str::parse`. Under wasm32 it checks the syntax here and lets JavaScript's
+//! `parseFloat` convert the digits: both round correctly (to the nearest `f64`, ties to even), so
+//! the value is the same bit for bit, and the core leaves out Rust's decimal-to-float code, whose
+//! table of powers of five alone is 10 KB of incompressible bytes (issue 22, the first load:
+//! about 12 KB gzipped of `crate/pkg-core`). A grammar's numbers are read once per build, so
+//! the crossing into JavaScript costs nothing the preview notices. `tests/wasm_boundary.rs`
+//! checks under wasm32 that both agree.
+
+/// `text` as an `f64`, exactly as `text.parse::<f64>().ok()`: an optional sign, then digits with
+/// an optional `.` and fraction (at least one digit in all) and an optional exponent
+/// (`e`/`E`, optional sign, digits), or `inf`, `infinity` or `nan` in any case; nothing else, no
+/// spaces.
+pub fn parse_f64(text: &str) -> Option<f64> {
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        text.parse().ok()
+    }
+    #[cfg(target_arch = "wasm32")]
+    {
+        let (negative, unsigned) = match text.as_bytes().first() {
+            Some(b'-') => (true, &text[1..]),
+            Some(b'+') => (false, &text[1..]),
+            _ => (false, text),
+        };
+        let special =
+            if unsigned.eq_ignore_ascii_case("inf") || unsigned.eq_ignore_ascii_case("infinity") {
+                Some(f64::INFINITY)
+            } else if unsigned.eq_ignore_ascii_case("nan") {
+                Some(f64::NAN)
+            } else {
+                None
+            };
+        if let Some(v) = special {
+            return Some(if negative { -v } else { v });
+        }
+        // JavaScript's parseFloat reads the longest prefix that is a number; the whole text must be one.
+        decimal_syntax(unsigned.as_bytes()).then(|| js_sys::parse_float(text))
+    }
+}
+
+/// Digits, an optional `.` and digits (at least one digit in all), then an optional exponent.
+#[cfg_attr(not(target_arch = "wasm32"), allow(dead_code))]
+fn decimal_syntax(bytes: &[u8]) -> bool {
+    let digits = |from: usize| {
+        bytes[from..]
+            .iter()
+            .take_while(|b| b.is_ascii_digit())
+            .count()
+    };
+    let whole = digits(0);
+    let mut at = whole;
+    let mut fraction = 0;
+    if bytes.get(at) == Some(&b'.') {
+        fraction = digits(at + 1);
+        at += 1 + fraction;
+    }
+    if whole + fraction == 0 {
+        return false;
+    }
+    if matches!(bytes.get(at), Some(b'e' | b'E')) {
+        at += 1;
+        if matches!(bytes.get(at), Some(b'+' | b'-')) {
+            at += 1;
+        }
+        let exponent = digits(at);
+        if exponent == 0 {
+            return false;
+        }
+        at += exponent;
+    }
+    at == bytes.len()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Texts `str::parse::<f64>` reads and rejects; the wasm32 test in tests/wasm_boundary.rs runs
+    /// the same list through JavaScript.
+    pub const SAMPLES: &[&str] = &[
+        "0",
+        "1",
+        "-1",
+        "+1",
+        "1.",
+        ".5",
+        "-.5",
+        "1.5e3",
+        "1E-3",
+        "2.5e+10",
+        "007",
+        "0.1",
+        "1e400",
+        "-1e400",
+        "1e-400",
+        "-0",
+        "inf",
+        "-Infinity",
+        "NaN",
+        "+nan",
+        "",
+        ".",
+        "-",
+        "+",
+        "e5",
+        "1e",
+        "1e+",
+        "1.2.3",
+        "1 ",
+        " 1",
+        "0x10",
+        "1_000",
+        "∞",
+        "1,5",
+        "infinit",
+        "in",
+        "..5",
+        "1e5.5",
+        "9007199254740993",
+        "2.2250738585072011e-308",
+        "4.9e-324",
+        "1.7976931348623157e308",
+        "1.7976931348623159e308",
+        "0.30000000000000004",
+        "123456789012345678901234567890",
+        "1.00000000000000011102230246251565404236316680908203125",
+    ];
+
+    #[test]
+    fn the_syntax_is_what_str_parse_accepts() {
+        for text in SAMPLES {
+            let special = ["inf", "infinity", "nan"]
+                .iter()
+                .any(|s| text.trim_start_matches(['+', '-']).eq_ignore_ascii_case(s));
+            let body = text.strip_prefix(['+', '-']).unwrap_or(text);
+            assert_eq!(
+                special || decimal_syntax(body.as_bytes()),
+                text.parse::<f64>().is_ok(),
+                "{text:?}"
+            );
+        }
+    }
+
+    #[test]
+    fn parse_f64_is_str_parse() {
+        for text in SAMPLES {
+            assert_eq!(
+                parse_f64(text).map(f64::to_bits),
+                text.parse::<f64>().ok().map(f64::to_bits),
+                "{text:?}"
+            );
+        }
+    }
+}
