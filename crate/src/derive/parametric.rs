@@ -364,7 +364,8 @@ impl<R: rand::Rng> Rewriter<'_, R> {
             }
             reserve(&mut dst.ids, len + PAD);
             reserve(&mut dst.offsets, len + 1);
-            reserve(&mut dst.params, params);
+            // Two more: the sized path copies parameters two at a time.
+            reserve(&mut dst.params, params + 2);
             sized = true;
             if self.tracker.is_none() {
                 let (changed, next) =
@@ -438,24 +439,36 @@ impl<R: rand::Rng> Rewriter<'_, R> {
         let ids = &mut dst.ids.spare_capacity_mut()[..len + PAD];
         // offsets[k]: the offset after module k (the first, 0, is already there).
         let offsets = &mut dst.offsets.spare_capacity_mut()[..len];
-        let values = &mut dst.params.spare_capacity_mut()[..params];
+        let values = &mut dst.params.spare_capacity_mut()[..params + 2];
         let (mut o, mut p) = (0usize, 0usize);
-        let (mut next_len, mut next_params) = (0usize, 0usize);
+        // The size of the step after: this one's, each applied template's successor counted as
+        // it will be rewritten (wrapping: a successor may shrink).
+        let (mut next_len, mut next_params) = (len, params);
         let mut changed = false;
         let mut from = src.offsets[0] as usize;
         for (&id, &to) in src.ids.iter().zip(&src.offsets[1..]) {
-            let to = to as usize;
+            let (from_own, to) = (from, to as usize);
             let own = &src.params[from..to];
             from = to;
             if c.matches[id.index()] != own.len() as u32 {
                 // Copied (a template of another arity matches nothing), and copied again in the
-                // step after (no class is general here).
+                // step after (no class is general here): its size there is its size here.
                 ids[o].write(id);
-                p = copy_values(own, values, p);
+                // Most modules have two parameters or fewer: two are copied, in one move, when
+                // there is room on both sides (the second one is overwritten next).
+                match (
+                    src.params.get(from_own..from_own + 2),
+                    values.get_mut(p..p + 2),
+                ) {
+                    (Some(&[a, b]), Some([x, y])) if own.len() <= 2 => {
+                        x.write(a);
+                        y.write(b);
+                    }
+                    _ => copy_rest(own, values, p),
+                }
+                p += own.len();
                 offsets[o].write(p as u32);
                 o += 1;
-                next_len += 1;
-                next_params += own.len();
                 continue;
             }
             let t = &c.templates[c.classes[id.index()].template as usize];
@@ -485,8 +498,9 @@ impl<R: rand::Rng> Rewriter<'_, R> {
             }
             o += n;
             p += m;
-            next_len += t.next_len;
-            next_params += t.next_params;
+            // The step after: this successor's size there instead of its size here.
+            next_len = next_len.wrapping_add(t.next_len.wrapping_sub(n));
+            next_params = next_params.wrapping_add(t.next_params.wrapping_sub(m));
             changed = true;
         }
         assert_eq!((o, p), (len, params), "the step's size was computed before");
@@ -502,7 +516,8 @@ impl<R: rand::Rng> Rewriter<'_, R> {
 
     /// Evaluates template `t`'s arguments into `evaluated`, the predecessor's parameters `own`
     /// bound: the simple ones without the interpreter, the others (and the simple ones that were
-    /// not finite) with it.
+    /// not finite) with it. Out of line: the sized loop keeps its registers.
+    #[inline(never)]
     fn evaluate_template(
         &mut self,
         t: &Template,
@@ -606,6 +621,14 @@ fn write_affine(affine: &[Affine], own: &[f64], out: &mut [MaybeUninit<f64>]) ->
         out.write(v);
     }
     finite
+}
+
+/// [`copy_values`] out of line: the sized loop's rare case (the last module, or more than two
+/// parameters).
+#[inline(never)]
+#[cold]
+fn copy_rest(own: &[f64], values: &mut [MaybeUninit<f64>], p: usize) {
+    copy_values(own, values, p);
 }
 
 /// Writes the parameters `own` into `values` from `p`; returns where they end.
