@@ -273,7 +273,7 @@ impl Classes {
             }
             template.ends.push(template.args.len() as u32);
         }
-        let arity = p.predecessor.arity as usize;
+        let arity = p.predecessor.arity;
         template.affine = template
             .args
             .iter()
