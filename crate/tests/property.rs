@@ -213,7 +213,7 @@ fn successor_module(names: &[&str], c: u8, a: u8, b: u8) -> String {
         5 => format!("F({p})"),
         6 => format!("[+({q})B({p},{q})]"),
         // A cut: a step's output is not the next step's input, its size not carried.
-        7 if a % 4 == 0 => "[%C]".to_string(),
+        7 if a.is_multiple_of(4) => "[%C]".to_string(),
         _ => "!".to_string(),
     }
 }
