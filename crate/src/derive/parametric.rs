@@ -7,10 +7,14 @@
 //!   successor no control module: when the module has the predecessor's arity, it always applies,
 //!   and its successor is a template: the ids and the offsets are copied, each argument is written
 //!   straight into the parameters, the simple ones ([`Simple`]: a constant, a parameter, one
-//!   operator) without the interpreter;
+//!   operator) without the interpreter, those of the form parameter `*` or `+` constant
+//!   ([`Affine`], `#define` constants folded) without reading the slots;
 //! - [`Kind::General`]: anything else, matched by the general path module by module.
 //!
-//! The output is sized before the step when no module is general, so the buffers never grow.
+//! The output is sized before the step when no module is general, so the buffers never grow:
+//! counted in a pass of its own on the first step, then carried (each step counts the size of the
+//! next while writing) as long as nothing rewrites the string between steps (no decomposition,
+//! no cut).
 
 use super::classes::{put, put_wide, width, PAD};
 use super::rewriter::Rewriter;
