@@ -1,5 +1,8 @@
 //! The shared bench's workload C (the parametric Honda tree, n = 17, 917,498 modules) derived
 //! natively: the minimum of repeated derivations. `cargo run --release --example param_time [n]`.
+//! Each derivation allocates its strings afresh; to time the derivation rather than the kernel's
+//! page faults (WebAssembly keeps its memory), let glibc keep what is freed:
+//! `GLIBC_TUNABLES=glibc.malloc.mmap_threshold=33554432:glibc.malloc.trim_threshold=4000000000`.
 
 use meristem::derive::{derive, DeriveOptions};
 use meristem::model::resolve;
