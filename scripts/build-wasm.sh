@@ -38,9 +38,17 @@ CARGO_PROFILE_RELEASE_OPT_LEVEL=3 RUSTFLAGS="${RUSTFLAGS:-} -C target-feature=+s
   CARGO_TARGET_DIR="$PWD/crate/target/wasm-speed" pack pkg meristem --no-opt crate
 if [ ${#opt[@]} -eq 0 ]; then
   # The same features as Cargo.toml's wasm-opt line, and SIMD, optimised for speed.
+  # --one-caller-inline-max-function-size: binaryen inlines every function that has one caller,
+  # whatever its size (default -1), which undoes rustc's #[inline(never)] and merged the whole
+  # derivation (each path's hot loop, its set-up and its cold error paths) into one function of
+  # ~30,000 lines, which V8's TurboFan compiles with its loop values spilled to the stack: C (the
+  # parametric tree) ran 1.6x slower than with the limit (measured 2026-11-26, CPU time per
+  # derivation 15 -> 9 ms; 50, 200 and 1000 alike). The unexplained fast build of 2026-11-26 01:40
+  # (README, issue 20) was most likely a tree whose hot loops had two callers.
   wasm-opt crate/pkg/meristem_bg.wasm -o crate/pkg/meristem_bg.wasm -O3 --enable-reference-types \
     --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext \
-    --enable-mutable-globals --enable-multivalue --enable-simd
+    --enable-mutable-globals --enable-multivalue --enable-simd \
+    --one-caller-inline-max-function-size 200
 fi
 # The vocabulary, which crate/pkg-core leaves out, as a file for the studio (issue 22).
 node scripts/vocabulary-json.mjs

@@ -447,3 +447,13 @@ fn groups_can_be_made_by_productions_and_the_turtle_reads_their_members() {
     let skeleton = meristem::turtle::interpret(&m, &d.string);
     assert_eq!(skeleton.segments.len(), 4);
 }
+
+#[test]
+fn a_parametric_step_after_decomposition_is_sized_from_the_decomposed_string() {
+    // B(x) decomposes into A(x * 2), of the same size: the step after rewrites both modules,
+    // which the size of that step counted while writing B(1)A(2) does not know.
+    let src = "axiom: A(1)\nA(x) -> B(x)A(x+1)\ndecomposition:\nB(x) -> A(x*2)";
+    assert_eq!(derived(src, 1), "A(2)A(2)");
+    assert_eq!(derived(src, 2), "A(4)A(3)A(4)A(3)");
+    assert_eq!(derived(src, 3).matches('A').count(), 8);
+}

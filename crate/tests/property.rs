@@ -180,7 +180,7 @@ fn argument(names: &[&str], k: u8) -> String {
         return ["2", "0.5", "uniform(0, 1)", "1 / 0"][k as usize % 4].to_string();
     };
     let y = names.last().unwrap();
-    match k % 10 {
+    match k % 16 {
         0 => x.to_string(),
         1 => format!("{x} * 0.9"),
         2 => format!("2 - {x}"),
@@ -190,7 +190,14 @@ fn argument(names: &[&str], k: u8) -> String {
         6 => format!("{x} ^ 2"),
         7 => format!("{x} + uniform(0, 1)"),
         8 => "137.5".to_string(),
-        _ => format!("{y} * {x} * 3"),
+        9 => format!("{y} * {x} * 3"),
+        // The affine shapes (a parameter times or plus a constant), with signed zeros.
+        10 => format!("0.5 * {x}"),
+        11 => format!("{x} - 0.25"),
+        12 => format!("0 - {x}"),
+        13 => format!("{x} * 0"),
+        14 => format!("{x} + 0"),
+        _ => format!("3 + {y}"),
     }
 }
 
@@ -205,6 +212,8 @@ fn successor_module(names: &[&str], c: u8, a: u8, b: u8) -> String {
         4 => "C".to_string(),
         5 => format!("F({p})"),
         6 => format!("[+({q})B({p},{q})]"),
+        // A cut: a step's output is not the next step's input, its size not carried.
+        7 if a.is_multiple_of(4) => "[%C]".to_string(),
         _ => "!".to_string(),
     }
 }
@@ -215,8 +224,8 @@ proptest! {
     /// Parametric productions without context, condition or weight take the per-module classes
     /// (templates, simple arguments outside the interpreter, copies); the same grammar with a
     /// condition that always holds takes the general matcher. Both derive the same string (the
-    /// same numbers, the same random draws) or fail with the same error, arities that do not
-    /// match, divisions by zero, `#max_modules` and all.
+    /// same numbers, signed zeros included, the same random draws) or fail with the same error,
+    /// arities that do not match, divisions by zero, cuts, `#max_modules` and all.
     #[test]
     fn parametric_classes_match_the_general_matcher(
         rules in prop::collection::vec((0usize..5, prop::collection::vec((any::<u8>(), any::<u8>(), any::<u8>()), 0..6)), 0..6),

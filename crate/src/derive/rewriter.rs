@@ -309,8 +309,8 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
                 changed
             }
             None => match parametric {
-                Some(c) => {
-                    let changed = self.rewrite_parametric(&c, rules, src, dst, num_it);
+                Some(mut c) => {
+                    let changed = self.rewrite_parametric(&mut c, rules, src, dst, num_it);
                     self.parametric = Some(c);
                     changed
                 }
