@@ -48,6 +48,18 @@ fn main() {
             *b = b.min(v);
         }
     }
+    // The sketch turtle alone, on the derived string.
+    let built = meristem::build(&text, &options);
+    let model = built.model.as_ref().unwrap();
+    let string = built.derivation.turtle_string();
+    let mut turtle = f64::MAX;
+    for _ in 0..30 {
+        let t = Instant::now();
+        let sketch = meristem::turtle::sketch(model, string);
+        turtle = turtle.min(t.elapsed().as_secs_f64() * 1e3);
+        std::hint::black_box(sketch);
+    }
+    println!("turtle::sketch alone {turtle:.3} ms");
     println!("{segments} segments (n = {iterations}), minimum of 30 builds, ms:");
     for (name, v) in ["parse", "derive", "sketch", "drop", "whole"]
         .iter()

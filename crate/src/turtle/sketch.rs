@@ -483,15 +483,22 @@ fn plain_loop<const PARAMETRIC: bool>(
             }
         }
     }
-    // The colours, one run at a time.
+    // The colours, one run at a time, each run's first line's by copies of what is written
+    // already, doubling (bulk copies, not a store per float).
     let lines = modules.len();
     let mut colors: Vec<f32> = Vec::with_capacity(6 * lines);
     for (k, &(from, index)) in runs.iter().enumerate() {
         let to = runs.get(k + 1).map_or(lines, |r| r.0);
+        if to == from {
+            continue;
+        }
         let c = others.color(index);
-        let end = [c[0], c[1], c[2], c[0], c[1], c[2]];
-        for _ in from..to {
-            colors.extend_from_slice(&end);
+        let start = colors.len();
+        let end = start + 6 * (to - from);
+        colors.extend_from_slice(&[c[0], c[1], c[2], c[0], c[1], c[2]]);
+        while colors.len() < end {
+            let more = (colors.len() - start).min(end - colors.len());
+            colors.extend_from_within(start..start + more);
         }
     }
     let mut sketch = Sketch::new(others, 0);
