@@ -351,7 +351,7 @@ fn plain_loop<const PARAMETRIC: bool>(
     // semantics on every call, and no NaN gets past here.
     const LIMIT: f64 = super::MAX_COORDINATE;
     let inside = |p: DVec3| p.abs().cmple(DVec3::splat(LIMIT)).all();
-    if !inside(t.p) || !(t.width <= LIMIT) {
+    if !inside(t.p) || t.width.is_nan() || t.width > LIMIT {
         return None;
     }
     let mut stack: Vec<Plain> = Vec::new();
