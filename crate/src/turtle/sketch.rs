@@ -357,6 +357,11 @@ fn plain_loop<const PARAMETRIC: bool>(
     let mut stack: Vec<Plain> = Vec::new();
     let mut ends: Vec<[f32; 6]> = Vec::with_capacity(segments);
     let mut modules: Vec<u32> = Vec::with_capacity(segments);
+    // Written through their spare room, the lengths set once after the loop: no length stored
+    // per line (in WebAssembly a `Vec`'s length lives in memory, not in a local).
+    let ends_out = &mut ends.spare_capacity_mut()[..segments];
+    let modules_out = &mut modules.spare_capacity_mut()[..segments];
+    let mut drawn = 0usize;
     // (first line, colour index) for each run of lines of one colour.
     let mut runs: Vec<(usize, u16)> = vec![(0, 0)];
     let mut color_index = 0u16;
@@ -414,12 +419,13 @@ fn plain_loop<const PARAMETRIC: bool>(
                 t.seen = true;
                 if t.color != color_index {
                     color_index = t.color;
-                    runs.push((modules.len(), color_index));
+                    runs.push((drawn, color_index));
                 }
-                ends.push([
+                ends_out[drawn].write([
                     a.x as f32, a.y as f32, a.z as f32, b.x as f32, b.y as f32, b.z as f32,
                 ]);
-                modules.push(index as u32);
+                modules_out[drawn].write(index as u32);
+                drawn += 1;
             }
             Op::TurnUp | Op::TurnLeft | Op::TurnHeading => {
                 let (s, c) = match first(index) {
@@ -485,7 +491,13 @@ fn plain_loop<const PARAMETRIC: bool>(
     }
     // The colours, one run at a time, each run's first line's by copies of what is written
     // already, doubling (bulk copies, not a store per float).
-    let lines = modules.len();
+    // SAFETY: the loop wrote the first `drawn` elements of both arrays (one per line drawn, at
+    // most `segments`, the room they were given), and nothing else.
+    unsafe {
+        ends.set_len(drawn);
+        modules.set_len(drawn);
+    }
+    let lines = drawn;
     let mut colors: Vec<f32> = Vec::with_capacity(6 * lines);
     for (k, &(from, index)) in runs.iter().enumerate() {
         let to = runs.get(k + 1).map_or(lines, |r| r.0);
