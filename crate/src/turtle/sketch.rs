@@ -165,15 +165,21 @@ impl Canvas for Sketch {
     }
 }
 
-/// What the plain sketch loop does with a module id.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// What the plain sketch loop does with a module id: one byte, so that the loop dispatches on a
+/// small table (the ids of a grammar are few).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[repr(u8)]
 enum Op {
     /// Nothing a sketch shows changes (`@Gc`, queries, letters without a command, …).
     Nothing,
-    /// `F`, `G` (`true`: draws) and `f`, `g`, by a length.
-    Forward(bool),
-    /// A rotation about U, L or H; its sign (−1 for `-`, `^`, `/`…), the axis.
-    Turn(Axis, f64),
+    /// `F`, `G`: a move that draws, by a length.
+    Draw,
+    /// `f`, `g`: a move without drawing.
+    Move,
+    /// A rotation about U (`+ -`), L (`& ^`) or H (`/ \`) in the direction of [`Step::sign`].
+    TurnUp,
+    TurnLeft,
+    TurnHeading,
     TurnAround,
     RollToVertical,
     Push,
@@ -187,40 +193,43 @@ enum Op {
     Other,
 }
 
-#[derive(Clone, Copy, Debug, PartialEq)]
-enum Axis {
-    Up,
-    Left,
-    Heading,
+/// A module id's operation in the plain loop, with its parameter's default value (NaN: none) and,
+/// for a rotation, its sign (−1 for `-`, `^`, `\`) and the sine and cosine of its default angle.
+#[derive(Clone, Copy, Debug)]
+struct Step {
+    op: Op,
+    default: f64,
+    sign: f64,
+    turn: (f64, f64),
 }
 
-fn op_of(command: Option<Command>) -> Op {
+fn op_of(command: Option<Command>) -> (Op, f64) {
     use Command as C;
     let Some(command) = command else {
-        return Op::Nothing;
+        return (Op::Nothing, 1.0);
     };
     match command {
-        C::Forward | C::ForwardNoVertex => Op::Forward(true),
-        C::Move | C::MoveNoVertex => Op::Forward(false),
-        C::TurnLeft => Op::Turn(Axis::Up, 1.0),
-        C::TurnRight => Op::Turn(Axis::Up, -1.0),
-        C::PitchDown => Op::Turn(Axis::Left, 1.0),
-        C::PitchUp => Op::Turn(Axis::Left, -1.0),
-        C::RollRight => Op::Turn(Axis::Heading, 1.0),
-        C::RollLeft => Op::Turn(Axis::Heading, -1.0),
-        C::TurnAround => Op::TurnAround,
-        C::RollToVertical => Op::RollToVertical,
-        C::Push => Op::Push,
-        C::Pop => Op::Pop,
-        C::NextColor => Op::NextColor,
-        C::SetColor => Op::SetColor,
-        C::Width => Op::Width,
+        C::Forward | C::ForwardNoVertex => (Op::Draw, 1.0),
+        C::Move | C::MoveNoVertex => (Op::Move, 1.0),
+        C::TurnLeft => (Op::TurnUp, 1.0),
+        C::TurnRight => (Op::TurnUp, -1.0),
+        C::PitchDown => (Op::TurnLeft, 1.0),
+        C::PitchUp => (Op::TurnLeft, -1.0),
+        C::RollRight => (Op::TurnHeading, 1.0),
+        C::RollLeft => (Op::TurnHeading, -1.0),
+        C::TurnAround => (Op::TurnAround, 1.0),
+        C::RollToVertical => (Op::RollToVertical, 1.0),
+        C::Push => (Op::Push, 1.0),
+        C::Pop => (Op::Pop, 1.0),
+        C::NextColor => (Op::NextColor, 1.0),
+        C::SetColor => (Op::SetColor, 1.0),
+        C::Width => (Op::Width, 1.0),
         C::StartSmooth
         | C::EndSmooth
         | C::QueryPosition
         | C::QueryHeading
         | C::QueryUp
-        | C::QueryLeft => Op::Nothing,
+        | C::QueryLeft => (Op::Nothing, 1.0),
         C::StartPolygon
         | C::PolygonVertex
         | C::EndPolygon
@@ -229,11 +238,12 @@ fn op_of(command: Option<Command>) -> Op {
         | C::Sphere
         | C::MoveTo
         | C::TropismVector
-        | C::TropismStrength => Op::Other,
+        | C::TropismStrength => (Op::Other, 1.0),
     }
 }
 
-/// The plain turtle of a sketch: position and frame, and the colour index.
+/// The plain turtle of a sketch: position and frame, width and colour index, and whether the
+/// position is in the sketch's extent already (it is the end of a line drawn).
 #[derive(Clone, Copy)]
 struct Plain {
     p: DVec3,
@@ -242,52 +252,89 @@ struct Plain {
     u: DVec3,
     width: f64,
     color: u16,
+    seen: bool,
 }
 
-/// The sketch of `string` by the plain loop: one table lookup per module, frames rotated without
+/// The sketch of `string` by the plain loop: one byte dispatch per module, frames rotated without
 /// re-orthonormalising (the interpreter's skeleton does; the lines agree with its segments to
 /// far below a pixel: about 1e-13 of the plant's size per rotation), ends written straight into
-/// the arrays sized by `segments` (an upper bound). `None` when the string has a module the plain
-/// loop leaves to the interpreter, when the grammar bends by tropism, or when a point would be
-/// clamped: [`super::sketch`] then draws with the interpreter.
-///
-/// Long because it is the loop itself, one arm per operation with the frame, the stack and the
-/// output arrays in locals: split into functions, each would take the whole turtle by reference,
-/// which is what this loop exists to avoid.
+/// an array sized by `segments` (an upper bound), colours as runs of one colour index, spread
+/// into the per-end array once at the end. `None` when the string has a module the plain loop
+/// leaves to the interpreter, when the grammar bends by tropism, or when a position or width
+/// would be clamped (the check is on every position and width, drawn or not: what the plain loop
+/// refuses, the interpreter draws the same): [`super::sketch`] then draws with the interpreter.
 pub(super) fn plain_sketch(model: &Model, string: &LString, others: Skeleton) -> Option<Sketch> {
     let settings = &model.settings;
     if settings.tropism.1 != 0.0 {
         return None;
     }
-    // Each id's operation, its parameter's default value (NaN: none) and, for a rotation, the
-    // sine and cosine of its default angle.
-    let ops: Vec<(Op, f64, (f64, f64))> = (0..model.meanings.len())
+    let steps: Vec<Step> = (0..model.meanings.len())
         .map(|i| {
             let Some(info) = model.meanings[i] else {
-                return (Op::Nothing, f64::NAN, (0.0, 1.0));
+                return Step {
+                    op: Op::Nothing,
+                    default: f64::NAN,
+                    sign: 1.0,
+                    turn: (0.0, 1.0),
+                };
             };
-            let op = op_of(info.command());
+            let (op, sign) = op_of(info.command());
             let default = info
                 .params
                 .first()
                 .and_then(|p| p.default_value(|d| settings.value(d)))
                 .unwrap_or(f64::NAN);
             let turn = match op {
-                Op::Turn(_, sign) => turn_of(sign, default),
+                Op::TurnUp | Op::TurnLeft | Op::TurnHeading => turn_of(sign, default),
                 _ => (0.0, 1.0),
             };
-            (op, default, turn)
+            Step {
+                op,
+                default,
+                sign,
+                turn,
+            }
         })
         .collect();
-    let mut segments = 0usize;
+    // One pass to size the lines: bit 0 draws, bit 1 is left to the interpreter.
+    let kinds: Vec<u8> = steps
+        .iter()
+        .map(|s| match s.op {
+            Op::Draw => 1,
+            Op::Other => 2,
+            _ => 0,
+        })
+        .collect();
+    let (mut segments, mut other) = (0usize, 0u8);
     for id in &string.ids {
-        match ops.get(id.index()).map_or(Op::Other, |o| o.0) {
-            Op::Forward(true) => segments += 1,
-            Op::Other => return None,
-            _ => {}
-        }
+        let kind = kinds.get(id.index()).copied().unwrap_or(2);
+        segments += (kind & 1) as usize;
+        other |= kind;
     }
-    let mut sketch = Sketch::new(others, segments);
+    if other & 2 != 0 {
+        return None;
+    }
+    if string.is_parametric() {
+        plain_loop::<true>(settings, &steps, string, others, segments)
+    } else {
+        plain_loop::<false>(settings, &steps, string, others, segments)
+    }
+}
+
+/// The loop of [`plain_sketch`], once for strings with parameters (`PARAMETRIC`: a first
+/// parameter replaces the default length or angle, `F(l)`, `+(a)`) and once without (no
+/// parameter is read).
+///
+/// Long because it is the loop itself, one arm per operation with the frame, the stack and the
+/// output arrays in locals: split into functions, each would take the whole turtle by reference,
+/// which is what this loop exists to avoid.
+fn plain_loop<const PARAMETRIC: bool>(
+    settings: &crate::model::Settings,
+    steps: &[Step],
+    string: &LString,
+    others: Skeleton,
+    segments: usize,
+) -> Option<Sketch> {
     // The start as the interpreter's (`#heading` turns it).
     let start = TurtleState::start(settings);
     let mut t = Plain {
@@ -297,21 +344,44 @@ pub(super) fn plain_sketch(model: &Model, string: &LString, others: Skeleton) ->
         u: start.up,
         width: start.width,
         color: 0,
+        seen: false,
     };
+    // What the skeleton would clamp (a coordinate or width past MAX_COORDINATE, or not a
+    // number) is left to the interpreter. Comparisons, not min and max: those pay for NaN
+    // semantics on every call, and no NaN gets past here.
+    const LIMIT: f64 = super::MAX_COORDINATE;
+    let inside = |p: DVec3| p.abs().cmple(DVec3::splat(LIMIT)).all();
+    if !inside(t.p) || t.width.is_nan() || t.width > LIMIT {
+        return None;
+    }
     let mut stack: Vec<Plain> = Vec::new();
-    let parametric = string.is_parametric();
-    let lines = &mut sketch.lines;
+    let mut ends: Vec<[f32; 6]> = Vec::with_capacity(segments);
+    let mut modules: Vec<u32> = Vec::with_capacity(segments);
+    // Written through their spare room, the lengths set once after the loop: no length stored
+    // per line (in WebAssembly a `Vec`'s length lives in memory, not in a local).
+    let ends_out = &mut ends.spare_capacity_mut()[..segments];
+    let modules_out = &mut modules.spare_capacity_mut()[..segments];
+    let mut drawn = 0usize;
+    // (first line, colour index) for each run of lines of one colour.
+    let mut runs: Vec<(usize, u16)> = vec![(0, 0)];
+    let mut color_index = 0u16;
     let (mut extent_min, mut extent_max, mut max_abs_z) =
         (DVec3::INFINITY, DVec3::NEG_INFINITY, 0.0f64);
-    let mut color = sketch.others.color(0);
-    let mut color_index = 0u16;
-    for (index, id) in string.ids.iter().enumerate() {
-        let (op, default, default_turn) = ops[id.index()];
-        if op == Op::Nothing {
-            continue;
+    let mut grow = |p: DVec3| {
+        for k in 0..3 {
+            if p[k] < extent_min[k] {
+                extent_min[k] = p[k];
+            }
+            if p[k] > extent_max[k] {
+                extent_max[k] = p[k];
+            }
         }
-        // A first parameter replaces the default length or angle: `F(l)`, `+(a)`.
-        let first = if parametric {
+        if p.z.abs() > max_abs_z {
+            max_abs_z = p.z.abs();
+        }
+    };
+    let first = |index: usize| -> Option<f64> {
+        if PARAMETRIC {
             string
                 .params_of(index)
                 .first()
@@ -319,63 +389,57 @@ pub(super) fn plain_sketch(model: &Model, string: &LString, others: Skeleton) ->
                 .filter(|v| v.is_finite())
         } else {
             None
-        };
-        let value = first.unwrap_or(default);
-        match op {
-            Op::Forward(draws) => {
-                let length = if value.is_nan() { 0.0 } else { value };
+        }
+    };
+    for (index, id) in string.ids.iter().enumerate() {
+        let step = &steps[id.index()];
+        match step.op {
+            Op::Nothing | Op::Other => {}
+            Op::Draw | Op::Move => {
+                let length = first(index).unwrap_or(step.default);
+                let length = if length.is_nan() { 0.0 } else { length };
                 let a = t.p;
                 t.p += t.h * length;
-                if draws && length != 0.0 {
-                    let b = t.p;
-                    // What the skeleton would clamp (a coordinate or width past MAX_COORDINATE,
-                    // or not a number) is left to the interpreter. Comparisons, not min and max:
-                    // those pay for NaN semantics on every call, and no NaN gets past here.
-                    let limit = DVec3::splat(super::MAX_COORDINATE);
-                    let within = a.abs().cmple(limit) & b.abs().cmple(limit);
-                    if !within.all() || t.width > super::MAX_COORDINATE {
-                        return None;
-                    }
-                    for p in [a, b] {
-                        for k in 0..3 {
-                            if p[k] < extent_min[k] {
-                                extent_min[k] = p[k];
-                            }
-                            if p[k] > extent_max[k] {
-                                extent_max[k] = p[k];
-                            }
-                        }
-                        if p.z.abs() > max_abs_z {
-                            max_abs_z = p.z.abs();
-                        }
-                    }
-                    if t.color != color_index {
-                        color_index = t.color;
-                        color = sketch.others.color(color_index);
-                    }
-                    let c = color;
-                    lines.ends.extend_from_slice(&[
-                        a.x as f32, a.y as f32, a.z as f32, b.x as f32, b.y as f32, b.z as f32,
-                    ]);
-                    lines
-                        .colors
-                        .extend_from_slice(&[c[0], c[1], c[2], c[0], c[1], c[2]]);
-                    lines.modules.push(index as u32);
+                if length == 0.0 {
+                    // Where the turtle is (up to the sign of a zero): nothing drawn.
+                    continue;
                 }
+                let b = t.p;
+                if !inside(b) {
+                    return None;
+                }
+                if step.op == Op::Move {
+                    t.seen = false;
+                    continue;
+                }
+                if !t.seen {
+                    grow(a);
+                }
+                grow(b);
+                t.seen = true;
+                if t.color != color_index {
+                    color_index = t.color;
+                    runs.push((drawn, color_index));
+                }
+                ends_out[drawn].write([
+                    a.x as f32, a.y as f32, a.z as f32, b.x as f32, b.y as f32, b.z as f32,
+                ]);
+                modules_out[drawn].write(index as u32);
+                drawn += 1;
             }
-            Op::Turn(axis, sign) => {
-                let (s, c) = match first {
-                    Some(angle) => turn_of(sign, angle),
-                    None => default_turn,
+            Op::TurnUp | Op::TurnLeft | Op::TurnHeading => {
+                let (s, c) = match first(index) {
+                    Some(angle) => turn_of(step.sign, angle),
+                    None => step.turn,
                 };
-                match axis {
-                    Axis::Up => yaw(&mut t, s, c),
-                    Axis::Left => {
+                match step.op {
+                    Op::TurnUp => yaw(&mut t, s, c),
+                    Op::TurnLeft => {
                         let h = t.h * c - t.u * s;
                         t.u = t.h * s + t.u * c;
                         t.h = h;
                     }
-                    Axis::Heading => {
+                    _ => {
                         let l = t.l * c + t.u * s;
                         t.u = t.u * c - t.l * s;
                         t.l = l;
@@ -400,12 +464,16 @@ pub(super) fn plain_sketch(model: &Model, string: &LString, others: Skeleton) ->
                 }
             }
             Op::Width => {
-                t.width = match first {
+                t.width = match first(index) {
                     Some(w) => w.max(0.0),
                     None => (t.width - settings.width_step).max(0.0),
+                };
+                if t.width > LIMIT {
+                    return None;
                 }
             }
             Op::NextColor => {
+                let value = first(index).unwrap_or(step.default);
                 let step = if value.is_nan() {
                     1
                 } else {
@@ -414,14 +482,43 @@ pub(super) fn plain_sketch(model: &Model, string: &LString, others: Skeleton) ->
                 t.color = (t.color as i32 + step).clamp(0, u16::MAX as i32) as u16;
             }
             Op::SetColor => {
-                t.color = match first {
+                t.color = match first(index) {
                     Some(c) => c.round().clamp(0.0, u16::MAX as f64) as u16,
                     None => t.color.saturating_add(1),
                 }
             }
-            Op::Nothing | Op::Other => {}
         }
     }
+    // The colours, one run at a time, each run's first line's by copies of what is written
+    // already, doubling (bulk copies, not a store per float).
+    // SAFETY: the loop wrote the first `drawn` elements of both arrays (one per line drawn, at
+    // most `segments`, the room they were given), and nothing else.
+    unsafe {
+        ends.set_len(drawn);
+        modules.set_len(drawn);
+    }
+    let lines = drawn;
+    let mut colors: Vec<f32> = Vec::with_capacity(6 * lines);
+    for (k, &(from, index)) in runs.iter().enumerate() {
+        let to = runs.get(k + 1).map_or(lines, |r| r.0);
+        if to == from {
+            continue;
+        }
+        let c = others.color(index);
+        let start = colors.len();
+        let end = start + 6 * (to - from);
+        colors.extend_from_slice(&[c[0], c[1], c[2], c[0], c[1], c[2]]);
+        while colors.len() < end {
+            let more = (colors.len() - start).min(end - colors.len());
+            colors.extend_from_within(start..start + more);
+        }
+    }
+    let mut sketch = Sketch::new(others, 0);
+    sketch.lines = SegmentLines {
+        ends: ends.into_flattened(),
+        colors,
+        modules,
+    };
     sketch.extent = Extent {
         min: extent_min,
         max: extent_max,
