@@ -16,7 +16,9 @@
 
 use super::context::NONE;
 use super::NOT_REWRITTEN;
-use crate::model::{LString, Model, ModuleId, PatternItem, PatternModule, Production, RuleSet};
+use crate::model::{
+    LString, Model, ModuleId, PatternItem, PatternModule, Production, RuleSet, SuccessorModule,
+};
 
 /// Ids of padding after the last successor, so that [`put`] may copy a fixed 16 ids.
 pub(super) const PAD: usize = 16;
@@ -94,7 +96,26 @@ pub(super) struct Classes {
     /// neighbours, or it is the context of some neighbours class. A module that is not, between
     /// two that are not, is copied as it is.
     pub hot: Vec<bool>,
+    /// The hot ids when there are at most four (repeated to fill four): a run of modules that
+    /// are not hot is then found by comparing 16 ids at a time with them, like `memchr`.
+    pub hot_ids: Option<[u32; 4]>,
+    /// True when no string of the derivation can hold a bracket or an ignored module (none is in
+    /// the axiom or a successor of the productions or of decomposition): each module's neighbours
+    /// are then the modules next to it, without a pass over the string to find out.
+    pub flat: bool,
+    /// For each module id, its successor in [`Classes::successors`] (start, length) when its
+    /// class is Fixed; the length is [`SPECIAL`] for a class of another kind, and has
+    /// [`REWRITES`] set when a production applies. One small entry a module for the hot loop.
+    pub entry: Vec<(u32, u32)>,
+    /// For each module id, [`Class::out`]: what the sizing pass reads.
+    pub outs: Vec<u32>,
 }
+
+/// In [`Classes::entry`]'s length: the class is not Fixed (look at [`Classes::classes`]).
+pub(super) const SPECIAL: u32 = 1 << 31;
+/// In [`Classes::entry`]'s length: a production rewrites the module (Fixed with a production, or
+/// Choice).
+pub(super) const REWRITES: u32 = 1 << 30;
 
 impl Classes {
     /// The classes of `model`'s productions, when its strings have no parameters and no control
@@ -114,6 +135,10 @@ impl Classes {
             width: 0,
             unit: true,
             hot: Vec::new(),
+            hot_ids: None,
+            flat: flat(model),
+            entry: Vec::new(),
+            outs: Vec::new(),
         };
         for index in 0..model.alphabet.len() {
             let id = ModuleId(index as u32);
@@ -148,6 +173,29 @@ impl Classes {
                 }
             }
         }
+        let hot: Vec<u32> = (0..classes.hot.len() as u32)
+            .filter(|&id| classes.hot[id as usize])
+            .collect();
+        classes.hot_ids = match hot.as_slice() {
+            [] => Some([NONE; 4]),
+            [a, rest @ ..] if rest.len() < 4 => {
+                let mut ids = [*a; 4];
+                ids[1..=rest.len()].copy_from_slice(rest);
+                Some(ids)
+            }
+            _ => None,
+        };
+        classes.outs = classes.classes.iter().map(|c| c.out).collect();
+        classes.entry = classes
+            .classes
+            .iter()
+            .map(|class| match class.kind {
+                Kind::Fixed if class.production == NOT_REWRITTEN => (class.start, class.len),
+                Kind::Fixed => (class.start, class.len | REWRITES),
+                Kind::Choice => (class.start, SPECIAL | REWRITES),
+                Kind::Neighbours | Kind::General => (class.start, SPECIAL),
+            })
+            .collect();
         classes
             .successors
             .extend(std::iter::repeat_n(ModuleId(0), PAD));
@@ -341,6 +389,51 @@ impl Classes {
     fn give_up(&mut self, start: usize) -> Kind {
         self.alternatives.truncate(start);
         Kind::General
+    }
+}
+
+/// True when no module of the axiom or of a successor of the productions or of decomposition is
+/// a bracket or ignored: no string derived from them holds one.
+fn flat(model: &Model) -> bool {
+    let plain = |modules: &[SuccessorModule]| {
+        modules.iter().all(|m| {
+            m.group.is_none() && role(model, m.id) == Role::Context
+        })
+    };
+    let axiom_plain = (0..model.alphabet.len()).all(|index| {
+        let id = ModuleId(index as u32);
+        !model.in_axiom[index] || role(model, id) == Role::Context
+    });
+    axiom_plain
+        && [&model.productions, &model.decomposition]
+            .iter()
+            .all(|rules| rules.productions.iter().all(|p| plain(&p.successor)))
+}
+
+impl Classes {
+    /// The index of the first hot module of `ids` from `from` (`ids.len()` when there is none).
+    #[inline]
+    pub fn next_hot(&self, ids: &[ModuleId], from: usize) -> usize {
+        const CHUNK: usize = 16;
+        let mut i = from;
+        if let Some(h) = self.hot_ids {
+            while let Some(chunk) = ids.get(i..i + CHUNK) {
+                // No branch inside the chunk: the compares vectorise (4 ids to a SIMD compare).
+                let mut any = 0u32;
+                for id in chunk {
+                    let v = id.0;
+                    any |= ((v == h[0]) | (v == h[1]) | (v == h[2]) | (v == h[3])) as u32;
+                }
+                if any != 0 {
+                    break;
+                }
+                i += CHUNK;
+            }
+        }
+        while i < ids.len() && !self.hot[ids[i].index()] {
+            i += 1;
+        }
+        i
     }
 }
 

@@ -114,8 +114,13 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
 
     pub fn axiom(&mut self) -> Result<LString, Diagnostic> {
         let mut s = LString::default();
-        s.clear(self.model.parametric);
         let model = self.model;
+        if !model.parametric {
+            // No parameters, so no control modules: the axiom's ids are its string.
+            s.ids = model.axiom_ids.clone();
+            return Ok(s);
+        }
+        s.clear(true);
         self.emit(&model.axiom, 0, 0, &mut s)?;
         Ok(s)
     }
@@ -336,7 +341,8 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         // Past either limit, check_size says which (a string without parameters: 4 bytes a module).
         let max = (model.settings.max_modules).min(MAX_STRING_BYTES / size_of::<ModuleId>());
         let tracking = self.tracker.is_some();
-        let nested = c.neighbours && classes::right_neighbours(&c.classes, src, right, stack);
+        let nested =
+            c.neighbours && !c.flat && classes::right_neighbours(&c.classes, src, right, stack);
         if c.sized && !tracking && !nested {
             if let Some(changed) = self.rewrite_sized(c, src, dst, num_it) {
                 return Ok(changed);
@@ -438,10 +444,7 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         let len: usize = if c.unit {
             src.len()
         } else {
-            src.ids
-                .iter()
-                .map(|id| c.classes[id.index()].out as usize)
-                .sum()
+            src.ids.iter().map(|id| c.outs[id.index()] as usize).sum()
         };
         if check_size(self.model, num_it, len, len * size_of::<ModuleId>()).is_err() {
             return None;
@@ -454,10 +457,20 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         let n = ids.len();
         let mut changed = false;
         if !c.neighbours {
-            for i in 0..n {
-                changed |= self.rewrite_sized_one::<W>(c, ids, i, dst);
+            // Fixed and Choice classes only: one small entry a module, the class looked at only
+            // for a draw.
+            let mut rewrites = 0;
+            for &id in ids {
+                let (mut start, mut len) = c.entry[id.index()];
+                if len & classes::SPECIAL != 0 {
+                    let a = c.choose(&c.classes[id.index()], self.rng.random::<f64>());
+                    (start, len) = (a.start, a.len | classes::REWRITES);
+                }
+                rewrites |= len;
+                let len = len & !(classes::SPECIAL | classes::REWRITES);
+                classes::put_wide::<W>(&mut dst.ids, &c.successors, start as usize, len as usize);
             }
-            return Some(changed);
+            return Some(rewrites & classes::REWRITES != 0);
         }
         // A flat string whose modules compare neighbours: a module that is cold (no production
         // rewrites it unless a neighbour is a context) between cold neighbours is copied as it
@@ -465,10 +478,7 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         let hot = |k: usize| c.hot[ids[k].index()];
         let mut i = 0;
         while i < n {
-            let mut h = i;
-            while h < n && !hot(h) {
-                h += 1;
-            }
+            let h = c.next_hot(ids, i);
             let a = if i > 0 && hot(i - 1) { i + 1 } else { i };
             let b = if h < n {
                 h.saturating_sub(1).max(a)
