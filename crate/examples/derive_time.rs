@@ -53,6 +53,11 @@ fn main() {
         time("D2 n=30", d2, 30, None);
         time("D2 n=50", d2, 50, None);
     }
+    if on("DR") {
+        let x = "X".repeat(100_000);
+        time("DR", &format!("axiom: {x}\nX -> (0.5) X\nX -> (0.5) X\n"), 10, Some(7));
+        time("NODR", &format!("axiom: {x}\nX -> X\nZ -> (1) Z\n"), 10, Some(7));
+    }
     if on("E") {
         let e = "axiom: X\nX -> (0.5) F[+X]F[-X]+X\nX -> (0.5) F[-X]F[+X]-X\nF -> FF\n";
         time("E n=11", e, 11, Some(7));

@@ -15,6 +15,7 @@
 //! table, and a grammar mixing every feature pays for them only where they are.
 
 use super::context::NONE;
+use rand::RngExt;
 use super::NOT_REWRITTEN;
 use crate::model::{
     LString, Model, ModuleId, PatternItem, PatternModule, Production, RuleSet, SuccessorModule,
@@ -109,6 +110,19 @@ pub(super) struct Classes {
     pub entry: Vec<(u32, u32)>,
     /// For each module id, [`Class::out`]: what the sizing pass reads.
     pub outs: Vec<u32>,
+}
+
+/// How many times each module id occurs in the string a Fixed/Choice pass wrote, carried to the
+/// next step as the D0L path does, so that the next length is known without reading the string.
+#[derive(Default)]
+pub(super) struct Counts {
+    pub ids: Vec<u64>,
+    /// The length of the string counted; `None` when the counts are not those of the string the
+    /// last pass wrote.
+    pub len: Option<usize>,
+    next: Vec<u64>,
+    /// For each alternative of a Choice class, how many times the pass drew it.
+    pub picks: Vec<u64>,
 }
 
 /// In [`Classes::entry`]'s length: the class is not Fixed (look at [`Classes::classes`]).
@@ -365,17 +379,26 @@ impl Classes {
     /// choice of the general path, with the same arithmetic.
     #[inline]
     pub fn choose(&self, class: &Class, u: f64) -> &Alternative {
+        &self.alternatives[class.start as usize + self.choose_index(class, u)]
+    }
+
+    /// The index among its class's alternatives of the one [`Classes::choose`] picks. Without a
+    /// branch on the draw (which goes either way at random): every alternative is looked at,
+    /// and `r` stops changing at the first whose weight it is below, so the arithmetic up to it
+    /// is the general path's.
+    #[inline]
+    pub fn choose_index(&self, class: &Class, u: f64) -> usize {
         let alternatives = &self.alternatives[class.start as usize..][..class.len as usize];
         let mut r = u * class.total;
-        let mut pick = alternatives.len() - 1;
+        let mut pick = alternatives.len().saturating_sub(1);
+        let mut found = false;
         for (k, a) in alternatives.iter().enumerate() {
-            if r < a.weight {
-                pick = k;
-                break;
-            }
-            r -= a.weight;
+            let hit = !found & (r < a.weight);
+            pick = if hit { k } else { pick };
+            found |= hit;
+            r = if found { r } else { r - a.weight };
         }
-        &alternatives[pick]
+        pick
     }
 
     /// The first alternative of a Neighbours class whose contexts are `left` and `right`.
@@ -411,6 +434,110 @@ fn flat(model: &Model) -> bool {
 }
 
 impl Classes {
+    /// Writes the successor of every module of `ids`, each copied as [`Classes::width`] ids,
+    /// when every class is Fixed or Choice; returns whether a production applied. A small
+    /// function of its own, called from each width's sized pass (so `wasm-opt` does not inline
+    /// it into one of them: V8 then allocates registers for this loop alone): one 8-byte entry a
+    /// module, the class looked at only for a draw ([`Classes::draw`]), the same draws in the
+    /// same order as the general path.
+    #[inline(never)]
+    pub fn write_fixed<R: rand::Rng>(
+        &self,
+        ids: &[ModuleId],
+        out: &mut Vec<ModuleId>,
+        rng: &mut R,
+        picks: &mut [u64],
+    ) -> bool {
+        match self.width {
+            4 => self.write_fixed_as::<4, R>(ids, out, rng, picks),
+            8 => self.write_fixed_as::<8, R>(ids, out, rng, picks),
+            _ => self.write_fixed_as::<PAD, R>(ids, out, rng, picks),
+        }
+    }
+
+    #[inline(always)]
+    fn write_fixed_as<const W: usize, R: rand::Rng>(
+        &self,
+        ids: &[ModuleId],
+        out: &mut Vec<ModuleId>,
+        rng: &mut R,
+        picks: &mut [u64],
+    ) -> bool {
+        let mut rewrites = 0;
+        for &id in ids {
+            let (mut start, mut len) = self.entry[id.index()];
+            if len & SPECIAL != 0 {
+                (start, len) = self.draw(id, rng, picks);
+            }
+            rewrites |= len;
+            put_wide::<W>(
+                out,
+                &self.successors,
+                start as usize,
+                (len & !(SPECIAL | REWRITES)) as usize,
+            );
+        }
+        rewrites & REWRITES != 0
+    }
+
+    /// The successor a Choice module `id` draws (start, length with [`REWRITES`]), out of the
+    /// copy loop; counts the draw in `picks` (by alternative).
+    #[inline(never)]
+    fn draw<R: rand::Rng>(&self, id: ModuleId, rng: &mut R, picks: &mut [u64]) -> (u32, u32) {
+        let class = &self.classes[id.index()];
+        let k = self.choose_index(class, rng.random::<f64>());
+        picks[class.start as usize + k] += 1;
+        let a = &self.alternatives[class.start as usize + k];
+        (a.start, a.len | REWRITES)
+    }
+
+    /// The length of the string a Fixed/Choice pass writes from `ids`, from how many times each
+    /// id occurs in it: `counts.ids` when they are those of `ids` (`carried`: the last pass wrote
+    /// `ids` and nothing changed it since), else counted now.
+    pub fn fixed_len(&self, ids: &[ModuleId], counts: &mut Counts, carried: bool) -> usize {
+        counts.ids.resize(self.classes.len(), 0);
+        if !carried {
+            counts.ids.iter_mut().for_each(|c| *c = 0);
+            for id in ids {
+                counts.ids[id.index()] += 1;
+            }
+        }
+        let len = counts
+            .ids
+            .iter()
+            .zip(&self.outs)
+            .fold(0u64, |len, (&count, &out)| {
+                len.saturating_add(count.saturating_mul(out as u64))
+            });
+        usize::try_from(len).unwrap_or(usize::MAX)
+    }
+
+    /// After a Fixed/Choice pass: `counts.ids` become the counts of the string it wrote, from
+    /// those of the string it read and the draws (`counts.picks`).
+    pub fn carry(&self, counts: &mut Counts) {
+        let Counts {
+            ids, next, picks, ..
+        } = counts;
+        next.clear();
+        next.resize(ids.len(), 0);
+        let mut add = |start: u32, len: u32, count: u64| {
+            for s in &self.successors[start as usize..][..len as usize] {
+                next[s.index()] += count;
+            }
+        };
+        for (class, &count) in self.classes.iter().zip(ids.iter()) {
+            if count != 0 && class.kind == Kind::Fixed {
+                add(class.start, class.len, count);
+            }
+        }
+        for (a, &count) in self.alternatives.iter().zip(picks.iter()) {
+            if count != 0 {
+                add(a.start, a.len, count);
+            }
+        }
+        std::mem::swap(ids, next);
+    }
+
     /// The index of the first hot module of `ids` from `from` (`ids.len()` when there is none).
     #[inline]
     pub fn next_hot(&self, ids: &[ModuleId], from: usize) -> usize {

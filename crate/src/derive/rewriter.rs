@@ -59,6 +59,11 @@ pub(super) struct Rewriter<'m, R: rand::Rng> {
     /// Scratch of a classes pass: each module's right neighbour, and a stack of neighbours.
     right: Vec<u32>,
     stack: Vec<u32>,
+    /// The id counts of the string the last Fixed/Choice pass wrote ([`classes::Counts`]).
+    counts: classes::Counts,
+    /// True when nothing changes the string between steps (no decomposition, no cut), so the
+    /// counts of one pass's output are those of the next pass's input.
+    carried: bool,
 }
 
 impl<'m, R: rand::Rng> Rewriter<'m, R> {
@@ -88,6 +93,8 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
             parametric: parametric::Classes::new(model),
             right: Vec::new(),
             stack: Vec::new(),
+            counts: classes::Counts::default(),
+            carried: model.decomposition.is_empty() && !super::cut::contains_cut(model),
         }
     }
 
@@ -286,6 +293,8 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         num_it: u32,
     ) -> Result<bool, Diagnostic> {
         let model = self.model;
+        // Whatever this pass does, the counts describe its input only if the last pass wrote it.
+        let counted = self.counts.len.take();
         let by_class = self.plan.is_none() && std::ptr::eq(rules, &model.productions);
         let classes = if by_class { self.classes.take() } else { None };
         let parametric = if by_class {
@@ -309,7 +318,9 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
             Some(c) => {
                 let (mut right, mut stack) = (take(&mut self.right), take(&mut self.stack));
                 let scratch = (&mut right, &mut stack);
-                let changed = self.rewrite_by_class(&c, rules, src, dst, num_it, scratch);
+                let carried = self.carried && counted == Some(src.len());
+                let changed =
+                    self.rewrite_by_class(&c, rules, src, dst, num_it, scratch, carried);
                 (self.classes, self.right, self.stack) = (Some(c), right, stack);
                 changed
             }
@@ -336,6 +347,7 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         dst: &mut LString,
         num_it: u32,
         (right, stack): (&mut Vec<u32>, &mut Vec<u32>),
+        carried: bool,
     ) -> Result<bool, Diagnostic> {
         let model = self.model;
         // Past either limit, check_size says which (a string without parameters: 4 bytes a module).
@@ -343,7 +355,11 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         let tracking = self.tracker.is_some();
         let nested =
             c.neighbours && !c.flat && classes::right_neighbours(&c.classes, src, right, stack);
-        if c.sized && !tracking && !nested {
+        if c.sized && !tracking && !c.neighbours {
+            if let Some(changed) = self.rewrite_fixed(c, src, dst, num_it, carried) {
+                return Ok(changed);
+            }
+        } else if c.sized && !tracking && !nested {
             if let Some(changed) = self.rewrite_sized(c, src, dst, num_it) {
                 return Ok(changed);
             }
@@ -432,6 +448,38 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         })
     }
 
+    /// [`Rewriter::rewrite_by_class`] when every class is Fixed or Choice of a known length and
+    /// nothing is tracked: the next length comes from the id counts ([`classes::Counts`]; carried
+    /// from the last pass when `carried`), the output is allocated once and every module is one
+    /// copy of a successor. `None` when the next string passes a limit: the caller's loop says
+    /// where.
+    fn rewrite_fixed(
+        &mut self,
+        c: &Classes,
+        src: &LString,
+        dst: &mut LString,
+        num_it: u32,
+        carried: bool,
+    ) -> Option<bool> {
+        let len = c.fixed_len(&src.ids, &mut self.counts, carried);
+        if check_size(self.model, num_it, len, len.saturating_mul(size_of::<ModuleId>())).is_err()
+        {
+            return None;
+        }
+        if dst.ids.capacity() < len + classes::PAD {
+            // A new buffer: growing the old one would copy what it held.
+            dst.ids = Vec::with_capacity(len + classes::PAD);
+        }
+        let picks = &mut self.counts.picks;
+        picks.clear();
+        picks.resize(c.alternatives.len(), 0);
+        let changed = c.write_fixed(&src.ids, &mut dst.ids, &mut *self.rng, picks);
+        debug_assert_eq!(dst.len(), len);
+        c.carry(&mut self.counts);
+        self.counts.len = Some(len);
+        Some(changed)
+    }
+
     /// [`Rewriter::rewrite_sized`], each successor copied as `W` ids.
     #[inline(never)]
     fn rewrite_sized_as<const W: usize>(
@@ -456,22 +504,6 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         let ids = &src.ids;
         let n = ids.len();
         let mut changed = false;
-        if !c.neighbours {
-            // Fixed and Choice classes only: one small entry a module, the class looked at only
-            // for a draw.
-            let mut rewrites = 0;
-            for &id in ids {
-                let (mut start, mut len) = c.entry[id.index()];
-                if len & classes::SPECIAL != 0 {
-                    let a = c.choose(&c.classes[id.index()], self.rng.random::<f64>());
-                    (start, len) = (a.start, a.len | classes::REWRITES);
-                }
-                rewrites |= len;
-                let len = len & !(classes::SPECIAL | classes::REWRITES);
-                classes::put_wide::<W>(&mut dst.ids, &c.successors, start as usize, len as usize);
-            }
-            return Some(rewrites & classes::REWRITES != 0);
-        }
         // A flat string whose modules compare neighbours: a module that is cold (no production
         // rewrites it unless a neighbour is a context) between cold neighbours is copied as it
         // is, in bulk; the others one by one.
