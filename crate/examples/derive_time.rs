@@ -9,7 +9,10 @@ use std::time::Instant;
 fn model(text: &str) -> Model {
     let (syntax, _) = parse(text);
     let (model, diagnostics) = resolve(&syntax);
-    assert!(!meristem::diagnostics::has_errors(&diagnostics), "{diagnostics:?}");
+    assert!(
+        !meristem::diagnostics::has_errors(&diagnostics),
+        "{diagnostics:?}"
+    );
     model.expect("model")
 }
 
@@ -55,8 +58,18 @@ fn main() {
     }
     if on("DR") {
         let x = "X".repeat(100_000);
-        time("DR", &format!("axiom: {x}\nX -> (0.5) X\nX -> (0.5) X\n"), 10, Some(7));
-        time("NODR", &format!("axiom: {x}\nX -> X\nZ -> (1) Z\n"), 10, Some(7));
+        time(
+            "DR",
+            &format!("axiom: {x}\nX -> (0.5) X\nX -> (0.5) X\n"),
+            10,
+            Some(7),
+        );
+        time(
+            "NODR",
+            &format!("axiom: {x}\nX -> X\nZ -> (1) Z\n"),
+            10,
+            Some(7),
+        );
     }
     if on("E") {
         let e = "axiom: X\nX -> (0.5) F[+X]F[-X]+X\nX -> (0.5) F[-X]F[+X]-X\nF -> FF\n";

@@ -15,11 +15,11 @@
 //! table, and a grammar mixing every feature pays for them only where they are.
 
 use super::context::NONE;
-use rand::RngExt;
 use super::NOT_REWRITTEN;
 use crate::model::{
     LString, Model, ModuleId, PatternItem, PatternModule, Production, RuleSet, SuccessorModule,
 };
+use rand::RngExt;
 
 /// Ids of padding after the last successor, so that [`put`] may copy a fixed 16 ids.
 pub(super) const PAD: usize = 16;
@@ -419,9 +419,9 @@ impl Classes {
 /// a bracket or ignored: no string derived from them holds one.
 fn flat(model: &Model) -> bool {
     let plain = |modules: &[SuccessorModule]| {
-        modules.iter().all(|m| {
-            m.group.is_none() && role(model, m.id) == Role::Context
-        })
+        modules
+            .iter()
+            .all(|m| m.group.is_none() && role(model, m.id) == Role::Context)
     };
     let axiom_plain = (0..model.alphabet.len()).all(|index| {
         let id = ModuleId(index as u32);

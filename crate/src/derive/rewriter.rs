@@ -319,8 +319,7 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
                 let (mut right, mut stack) = (take(&mut self.right), take(&mut self.stack));
                 let scratch = (&mut right, &mut stack);
                 let carried = self.carried && counted == Some(src.len());
-                let changed =
-                    self.rewrite_by_class(&c, rules, src, dst, num_it, scratch, carried);
+                let changed = self.rewrite_by_class(&c, rules, src, dst, num_it, scratch, carried);
                 (self.classes, self.right, self.stack) = (Some(c), right, stack);
                 changed
             }
@@ -462,7 +461,13 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         carried: bool,
     ) -> Option<bool> {
         let len = c.fixed_len(&src.ids, &mut self.counts, carried);
-        if check_size(self.model, num_it, len, len.saturating_mul(size_of::<ModuleId>())).is_err()
+        if check_size(
+            self.model,
+            num_it,
+            len,
+            len.saturating_mul(size_of::<ModuleId>()),
+        )
+        .is_err()
         {
             return None;
         }
