@@ -120,6 +120,8 @@ pub(super) struct Counts {
     /// The length of the string counted; `None` when the counts are not those of the string the
     /// last pass wrote.
     pub len: Option<usize>,
+    /// Set by each pass: true when `ids` are the counts of the string it reads.
+    pub carried: bool,
     next: Vec<u64>,
     /// For each alternative of a Choice class, how many times the pass drew it.
     pub picks: Vec<u64>,

@@ -295,6 +295,7 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         let model = self.model;
         // Whatever this pass does, the counts describe its input only if the last pass wrote it.
         let counted = self.counts.len.take();
+        self.counts.carried = self.carried && counted == Some(src.len());
         let by_class = self.plan.is_none() && std::ptr::eq(rules, &model.productions);
         let classes = if by_class { self.classes.take() } else { None };
         let parametric = if by_class {
@@ -318,8 +319,7 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
             Some(c) => {
                 let (mut right, mut stack) = (take(&mut self.right), take(&mut self.stack));
                 let scratch = (&mut right, &mut stack);
-                let carried = self.carried && counted == Some(src.len());
-                let changed = self.rewrite_by_class(&c, rules, src, dst, num_it, scratch, carried);
+                let changed = self.rewrite_by_class(&c, rules, src, dst, num_it, scratch);
                 (self.classes, self.right, self.stack) = (Some(c), right, stack);
                 changed
             }
@@ -346,7 +346,6 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         dst: &mut LString,
         num_it: u32,
         (right, stack): (&mut Vec<u32>, &mut Vec<u32>),
-        carried: bool,
     ) -> Result<bool, Diagnostic> {
         let model = self.model;
         // Past either limit, check_size says which (a string without parameters: 4 bytes a module).
@@ -355,7 +354,7 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         let nested =
             c.neighbours && !c.flat && classes::right_neighbours(&c.classes, src, right, stack);
         if c.sized && !tracking && !c.neighbours {
-            if let Some(changed) = self.rewrite_fixed(c, src, dst, num_it, carried) {
+            if let Some(changed) = self.rewrite_fixed(c, src, dst, num_it) {
                 return Ok(changed);
             }
         } else if c.sized && !tracking && !nested {
@@ -448,8 +447,8 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
     }
 
     /// [`Rewriter::rewrite_by_class`] when every class is Fixed or Choice of a known length and
-    /// nothing is tracked: the next length comes from the id counts ([`classes::Counts`]; carried
-    /// from the last pass when `carried`), the output is allocated once and every module is one
+    /// nothing is tracked: the next length comes from the id counts ([`classes::Counts`], carried
+    /// from the last pass when it wrote `src`), the output is allocated once and every module is one
     /// copy of a successor. `None` when the next string passes a limit: the caller's loop says
     /// where.
     fn rewrite_fixed(
@@ -458,8 +457,8 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         src: &LString,
         dst: &mut LString,
         num_it: u32,
-        carried: bool,
     ) -> Option<bool> {
+        let carried = self.counts.carried;
         let len = c.fixed_len(&src.ids, &mut self.counts, carried);
         if check_size(
             self.model,
