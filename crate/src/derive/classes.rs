@@ -189,10 +189,20 @@ impl Classes {
                 }
             }
         }
-        let hot: Vec<u32> = (0..classes.hot.len() as u32)
-            .filter(|&id| classes.hot[id as usize])
+        classes.loop_tables();
+        classes
+            .successors
+            .extend(std::iter::repeat_n(ModuleId(0), PAD));
+        Some(classes)
+    }
+
+    /// The tables the hot loops read: the hot ids for the 16-at-a-time search, each class's
+    /// 8-byte entry and length written.
+    fn loop_tables(&mut self) {
+        let hot: Vec<u32> = (0..self.hot.len() as u32)
+            .filter(|&id| self.hot[id as usize])
             .collect();
-        classes.hot_ids = match hot.as_slice() {
+        self.hot_ids = match hot.as_slice() {
             [] => Some([NONE; 4]),
             [a, rest @ ..] if rest.len() < 4 => {
                 let mut ids = [*a; 4];
@@ -201,8 +211,8 @@ impl Classes {
             }
             _ => None,
         };
-        classes.outs = classes.classes.iter().map(|c| c.out).collect();
-        classes.entry = classes
+        self.outs = self.classes.iter().map(|c| c.out).collect();
+        self.entry = self
             .classes
             .iter()
             .map(|class| match class.kind {
@@ -212,10 +222,6 @@ impl Classes {
                 Kind::Neighbours | Kind::General => (class.start, SPECIAL),
             })
             .collect();
-        classes
-            .successors
-            .extend(std::iter::repeat_n(ModuleId(0), PAD));
-        Some(classes)
     }
 
     /// Appends a successor's ids; returns (start, len).
