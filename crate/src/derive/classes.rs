@@ -125,6 +125,31 @@ pub(super) struct Counts {
     next: Vec<u64>,
     /// For each alternative of a Choice class, how many times the pass drew it.
     pub picks: Vec<u64>,
+    /// Scratch: a block of draws.
+    us: Vec<f64>,
+}
+
+/// The draws of a Fixed/Choice pass, made a block at a time: exactly as many in all as the pass
+/// has Choice modules (`left` still to make), so the generator ends where the general path leaves
+/// it.
+struct Draws<'r, R: rand::Rng> {
+    rng: &'r mut R,
+    left: u64,
+    us: Vec<f64>,
+    at: usize,
+}
+
+impl<R: rand::Rng> Draws<'_, R> {
+    /// The next block of at most 4096 draws.
+    #[inline(never)]
+    fn refill(&mut self) {
+        let n = self.left.min(4096);
+        self.left -= n;
+        self.us.clear();
+        let rng = &mut *self.rng;
+        self.us.extend((0..n).map(|_| rng.random::<f64>()));
+        self.at = 0;
+    }
 }
 
 /// In [`Classes::entry`]'s length: the class is not Fixed (look at [`Classes::classes`]).
@@ -446,7 +471,7 @@ impl Classes {
     /// when every class is Fixed or Choice; returns whether a production applied. A small
     /// function of its own, called from each width's sized pass (so `wasm-opt` does not inline
     /// it into one of them: V8 then allocates registers for this loop alone): one 8-byte entry a
-    /// module, the class looked at only for a draw ([`Classes::draw`]), the same draws in the
+    /// module, the class looked at only for a draw ([`Classes::pick`]), the same draws in the
     /// same order as the general path.
     #[inline(never)]
     pub fn write_fixed<R: rand::Rng>(
@@ -454,13 +479,32 @@ impl Classes {
         ids: &[ModuleId],
         out: &mut Vec<ModuleId>,
         rng: &mut R,
-        picks: &mut [u64],
+        counts: &mut Counts,
     ) -> bool {
-        match self.width {
-            4 => self.write_fixed_as::<4, R>(ids, out, rng, picks),
-            8 => self.write_fixed_as::<8, R>(ids, out, rng, picks),
-            _ => self.write_fixed_as::<PAD, R>(ids, out, rng, picks),
-        }
+        // How many draws the pass makes: its Choice modules. They are made in blocks, ahead of
+        // the modules that use them and in the same order, so the copy loop calls nothing but
+        // the choice between alternatives.
+        let draws = self
+            .classes
+            .iter()
+            .zip(&counts.ids)
+            .filter(|(class, _)| class.kind == Kind::Choice)
+            .map(|(_, &count)| count)
+            .sum();
+        let mut draw = Draws {
+            rng,
+            left: draws,
+            us: std::mem::take(&mut counts.us),
+            at: 0,
+        };
+        let picks = &mut counts.picks;
+        let changed = match self.width {
+            4 => self.write_fixed_as::<4, R>(ids, out, &mut draw, picks),
+            8 => self.write_fixed_as::<8, R>(ids, out, &mut draw, picks),
+            _ => self.write_fixed_as::<PAD, R>(ids, out, &mut draw, picks),
+        };
+        counts.us = draw.us;
+        changed
     }
 
     #[inline(always)]
@@ -468,14 +512,19 @@ impl Classes {
         &self,
         ids: &[ModuleId],
         out: &mut Vec<ModuleId>,
-        rng: &mut R,
+        draw: &mut Draws<'_, R>,
         picks: &mut [u64],
     ) -> bool {
         let mut rewrites = 0;
         for &id in ids {
             let (mut start, mut len) = self.entry[id.index()];
             if len & SPECIAL != 0 {
-                (start, len) = self.draw(id, rng, picks);
+                if draw.at == draw.us.len() {
+                    draw.refill();
+                }
+                let u = draw.us[draw.at];
+                draw.at += 1;
+                (start, len) = self.pick(id, u, picks);
             }
             rewrites |= len;
             put_wide::<W>(
@@ -488,12 +537,12 @@ impl Classes {
         rewrites & REWRITES != 0
     }
 
-    /// The successor a Choice module `id` draws (start, length with [`REWRITES`]), out of the
-    /// copy loop; counts the draw in `picks` (by alternative).
+    /// The successor the draw `u` picks for a Choice module `id` (start, length with
+    /// [`REWRITES`]), out of the copy loop; counts the pick in `picks` (by alternative).
     #[inline(never)]
-    fn draw<R: rand::Rng>(&self, id: ModuleId, rng: &mut R, picks: &mut [u64]) -> (u32, u32) {
+    fn pick(&self, id: ModuleId, u: f64, picks: &mut [u64]) -> (u32, u32) {
         let class = &self.classes[id.index()];
-        let k = self.choose_index(class, rng.random::<f64>());
+        let k = self.choose_index(class, u);
         picks[class.start as usize + k] += 1;
         let a = &self.alternatives[class.start as usize + k];
         (a.start, a.len | REWRITES)

@@ -477,7 +477,7 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         let picks = &mut self.counts.picks;
         picks.clear();
         picks.resize(c.alternatives.len(), 0);
-        let changed = c.write_fixed(&src.ids, &mut dst.ids, &mut *self.rng, picks);
+        let changed = c.write_fixed(&src.ids, &mut dst.ids, &mut *self.rng, &mut self.counts);
         debug_assert_eq!(dst.len(), len);
         c.carry(&mut self.counts);
         self.counts.len = Some(len);
