@@ -42,10 +42,14 @@ if [ ${#opt[@]} -eq 0 ]; then
   # whatever its size (default -1), which undoes rustc's #[inline(never)] and merged the whole
   # derivation (each path's hot loop, its set-up and its cold error paths) into one function of
   # ~30,000 lines, which V8's TurboFan compiles with its loop values spilled to the stack: C (the
-  # parametric tree) ran 1.6x slower than with the limit (measured 2026-11-26, CPU time per
+  # parametric tree) ran 1.6x slower than with the cap (measured 2026-11-26, CPU time per
   # derivation 15 -> 9 ms; 50, 200 and 1000 alike). The unexplained fast build of 2026-11-26 01:40
   # (README, issue 20) was most likely a tree whose hot loops had two callers.
-  wasm-opt crate/pkg/meristem_bg.wasm -o crate/pkg/meristem_bg.wasm -O3 --enable-reference-types \
+  # --no-inline also names the Fixed/Choice copy loop (derive/classes.rs, `write_fixed`) as one
+  # never to inline (before -O3, while the names are still there), whatever its size: E n = 11 and a
+  # classes-path 1.24d ran about 1.1-1.5x slower with it inlined (measured 2026-11-26).
+  wasm-opt crate/pkg/meristem_bg.wasm -o crate/pkg/meristem_bg.wasm \
+    --no-inline='*classes*Classes*write_fixed*' -O3 --enable-reference-types \
     --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext \
     --enable-mutable-globals --enable-multivalue --enable-simd \
     --one-caller-inline-max-function-size 200

@@ -16,7 +16,10 @@
 
 use super::context::NONE;
 use super::NOT_REWRITTEN;
-use crate::model::{LString, Model, ModuleId, PatternItem, PatternModule, Production, RuleSet};
+use crate::model::{
+    LString, Model, ModuleId, PatternItem, PatternModule, Production, RuleSet, SuccessorModule,
+};
+use rand::RngExt;
 
 /// Ids of padding after the last successor, so that [`put`] may copy a fixed 16 ids.
 pub(super) const PAD: usize = 16;
@@ -94,7 +97,66 @@ pub(super) struct Classes {
     /// neighbours, or it is the context of some neighbours class. A module that is not, between
     /// two that are not, is copied as it is.
     pub hot: Vec<bool>,
+    /// The hot ids when there are at most four (repeated to fill four): a run of modules that
+    /// are not hot is then found by comparing 16 ids at a time with them, like `memchr`.
+    pub hot_ids: Option<[u32; 4]>,
+    /// True when no string of the derivation can hold a bracket or an ignored module (none is in
+    /// the axiom or a successor of the productions or of decomposition): each module's neighbours
+    /// are then the modules next to it, without a pass over the string to find out.
+    pub flat: bool,
+    /// For each module id, its successor in [`Classes::successors`] (start, length) when its
+    /// class is Fixed; the length is [`SPECIAL`] for a class of another kind, and has
+    /// [`REWRITES`] set when a production applies. One small entry a module for the hot loop.
+    pub entry: Vec<(u32, u32)>,
+    /// For each module id, [`Class::out`]: what the sizing pass reads.
+    pub outs: Vec<u32>,
 }
+
+/// How many times each module id occurs in the string a Fixed/Choice pass wrote, carried to the
+/// next step as the D0L path does, so that the next length is known without reading the string.
+#[derive(Default)]
+pub(super) struct Counts {
+    pub ids: Vec<u64>,
+    /// The length of the string counted; `None` when the counts are not those of the string the
+    /// last pass wrote.
+    pub len: Option<usize>,
+    /// Set by each pass: true when `ids` are the counts of the string it reads.
+    pub carried: bool,
+    next: Vec<u64>,
+    /// For each alternative of a Choice class, how many times the pass drew it.
+    pub picks: Vec<u64>,
+    /// Scratch: a block of draws.
+    us: Vec<f64>,
+}
+
+/// The draws of a Fixed/Choice pass, made a block at a time: exactly as many in all as the pass
+/// has Choice modules (`left` still to make), so the generator ends where the general path leaves
+/// it.
+struct Draws<'r, R: rand::Rng> {
+    rng: &'r mut R,
+    left: u64,
+    us: Vec<f64>,
+    at: usize,
+}
+
+impl<R: rand::Rng> Draws<'_, R> {
+    /// The next block of at most 4096 draws.
+    #[inline(never)]
+    fn refill(&mut self) {
+        let n = self.left.min(4096);
+        self.left -= n;
+        self.us.clear();
+        let rng = &mut *self.rng;
+        self.us.extend((0..n).map(|_| rng.random::<f64>()));
+        self.at = 0;
+    }
+}
+
+/// In [`Classes::entry`]'s length: the class is not Fixed (look at [`Classes::classes`]).
+pub(super) const SPECIAL: u32 = 1 << 31;
+/// In [`Classes::entry`]'s length: a production rewrites the module (Fixed with a production, or
+/// Choice).
+pub(super) const REWRITES: u32 = 1 << 30;
 
 impl Classes {
     /// The classes of `model`'s productions, when its strings have no parameters and no control
@@ -114,6 +176,10 @@ impl Classes {
             width: 0,
             unit: true,
             hot: Vec::new(),
+            hot_ids: None,
+            flat: flat(model),
+            entry: Vec::new(),
+            outs: Vec::new(),
         };
         for index in 0..model.alphabet.len() {
             let id = ModuleId(index as u32);
@@ -148,10 +214,39 @@ impl Classes {
                 }
             }
         }
+        classes.loop_tables();
         classes
             .successors
             .extend(std::iter::repeat_n(ModuleId(0), PAD));
         Some(classes)
+    }
+
+    /// The tables the hot loops read: the hot ids for the 16-at-a-time search, each class's
+    /// 8-byte entry and length written.
+    fn loop_tables(&mut self) {
+        let hot: Vec<u32> = (0..self.hot.len() as u32)
+            .filter(|&id| self.hot[id as usize])
+            .collect();
+        self.hot_ids = match hot.as_slice() {
+            [] => Some([NONE; 4]),
+            [a, rest @ ..] if rest.len() < 4 => {
+                let mut ids = [*a; 4];
+                ids[1..=rest.len()].copy_from_slice(rest);
+                Some(ids)
+            }
+            _ => None,
+        };
+        self.outs = self.classes.iter().map(|c| c.out).collect();
+        self.entry = self
+            .classes
+            .iter()
+            .map(|class| match class.kind {
+                Kind::Fixed if class.production == NOT_REWRITTEN => (class.start, class.len),
+                Kind::Fixed => (class.start, class.len | REWRITES),
+                Kind::Choice => (class.start, SPECIAL | REWRITES),
+                Kind::Neighbours | Kind::General => (class.start, SPECIAL),
+            })
+            .collect();
     }
 
     /// Appends a successor's ids; returns (start, len).
@@ -317,17 +412,26 @@ impl Classes {
     /// choice of the general path, with the same arithmetic.
     #[inline]
     pub fn choose(&self, class: &Class, u: f64) -> &Alternative {
+        &self.alternatives[class.start as usize + self.choose_index(class, u)]
+    }
+
+    /// The index among its class's alternatives of the one [`Classes::choose`] picks. Without a
+    /// branch on the draw (which goes either way at random): every alternative is looked at,
+    /// and `r` stops changing at the first whose weight it is below, so the arithmetic up to it
+    /// is the general path's.
+    #[inline]
+    pub fn choose_index(&self, class: &Class, u: f64) -> usize {
         let alternatives = &self.alternatives[class.start as usize..][..class.len as usize];
         let mut r = u * class.total;
-        let mut pick = alternatives.len() - 1;
+        let mut pick = alternatives.len().saturating_sub(1);
+        let mut found = false;
         for (k, a) in alternatives.iter().enumerate() {
-            if r < a.weight {
-                pick = k;
-                break;
-            }
-            r -= a.weight;
+            let hit = !found & (r < a.weight);
+            pick = if hit { k } else { pick };
+            found |= hit;
+            r = if found { r } else { r - a.weight };
         }
-        &alternatives[pick]
+        pick
     }
 
     /// The first alternative of a Neighbours class whose contexts are `left` and `right`.
@@ -341,6 +445,179 @@ impl Classes {
     fn give_up(&mut self, start: usize) -> Kind {
         self.alternatives.truncate(start);
         Kind::General
+    }
+}
+
+/// True when no module of the axiom or of a successor of the productions or of decomposition is
+/// a bracket or ignored: no string derived from them holds one.
+fn flat(model: &Model) -> bool {
+    let plain = |modules: &[SuccessorModule]| {
+        modules
+            .iter()
+            .all(|m| m.group.is_none() && role(model, m.id) == Role::Context)
+    };
+    let axiom_plain = (0..model.alphabet.len()).all(|index| {
+        let id = ModuleId(index as u32);
+        !model.in_axiom[index] || role(model, id) == Role::Context
+    });
+    axiom_plain
+        && [&model.productions, &model.decomposition]
+            .iter()
+            .all(|rules| rules.productions.iter().all(|p| plain(&p.successor)))
+}
+
+impl Classes {
+    /// Writes the successor of every module of `ids`, each copied as [`Classes::width`] ids,
+    /// when every class is Fixed or Choice; returns whether a production applied. A small
+    /// function of its own, called from each width's sized pass (so `wasm-opt` does not inline
+    /// it into one of them: V8 then allocates registers for this loop alone): one 8-byte entry a
+    /// module, the class looked at only for a draw ([`Classes::pick`]), the same draws in the
+    /// same order as the general path.
+    #[inline(never)]
+    pub fn write_fixed<R: rand::Rng>(
+        &self,
+        ids: &[ModuleId],
+        out: &mut Vec<ModuleId>,
+        rng: &mut R,
+        counts: &mut Counts,
+    ) -> bool {
+        // How many draws the pass makes: its Choice modules. They are made in blocks, ahead of
+        // the modules that use them and in the same order, so the copy loop calls nothing but
+        // the choice between alternatives.
+        let draws = self
+            .classes
+            .iter()
+            .zip(&counts.ids)
+            .filter(|(class, _)| class.kind == Kind::Choice)
+            .map(|(_, &count)| count)
+            .sum();
+        let mut draw = Draws {
+            rng,
+            left: draws,
+            us: std::mem::take(&mut counts.us),
+            at: 0,
+        };
+        let picks = &mut counts.picks;
+        let changed = match self.width {
+            4 => self.write_fixed_as::<4, R>(ids, out, &mut draw, picks),
+            8 => self.write_fixed_as::<8, R>(ids, out, &mut draw, picks),
+            _ => self.write_fixed_as::<PAD, R>(ids, out, &mut draw, picks),
+        };
+        counts.us = draw.us;
+        changed
+    }
+
+    #[inline(always)]
+    fn write_fixed_as<const W: usize, R: rand::Rng>(
+        &self,
+        ids: &[ModuleId],
+        out: &mut Vec<ModuleId>,
+        draw: &mut Draws<'_, R>,
+        picks: &mut [u64],
+    ) -> bool {
+        let mut rewrites = 0;
+        for &id in ids {
+            let (mut start, mut len) = self.entry[id.index()];
+            if len & SPECIAL != 0 {
+                if draw.at == draw.us.len() {
+                    draw.refill();
+                }
+                let u = draw.us[draw.at];
+                draw.at += 1;
+                (start, len) = self.pick(id, u, picks);
+            }
+            rewrites |= len;
+            put_wide::<W>(
+                out,
+                &self.successors,
+                start as usize,
+                (len & !(SPECIAL | REWRITES)) as usize,
+            );
+        }
+        rewrites & REWRITES != 0
+    }
+
+    /// The successor the draw `u` picks for a Choice module `id` (start, length with
+    /// [`REWRITES`]), out of the copy loop; counts the pick in `picks` (by alternative).
+    #[inline(never)]
+    fn pick(&self, id: ModuleId, u: f64, picks: &mut [u64]) -> (u32, u32) {
+        let class = &self.classes[id.index()];
+        let k = self.choose_index(class, u);
+        picks[class.start as usize + k] += 1;
+        let a = &self.alternatives[class.start as usize + k];
+        (a.start, a.len | REWRITES)
+    }
+
+    /// The length of the string a Fixed/Choice pass writes from `ids`, from how many times each
+    /// id occurs in it: `counts.ids` when they are those of `ids` (`carried`: the last pass wrote
+    /// `ids` and nothing changed it since), else counted now.
+    pub fn fixed_len(&self, ids: &[ModuleId], counts: &mut Counts, carried: bool) -> usize {
+        counts.ids.resize(self.classes.len(), 0);
+        if !carried {
+            counts.ids.iter_mut().for_each(|c| *c = 0);
+            for id in ids {
+                counts.ids[id.index()] += 1;
+            }
+        }
+        let len = counts
+            .ids
+            .iter()
+            .zip(&self.outs)
+            .fold(0u64, |len, (&count, &out)| {
+                len.saturating_add(count.saturating_mul(out as u64))
+            });
+        usize::try_from(len).unwrap_or(usize::MAX)
+    }
+
+    /// After a Fixed/Choice pass: `counts.ids` become the counts of the string it wrote, from
+    /// those of the string it read and the draws (`counts.picks`).
+    pub fn carry(&self, counts: &mut Counts) {
+        let Counts {
+            ids, next, picks, ..
+        } = counts;
+        next.clear();
+        next.resize(ids.len(), 0);
+        let mut add = |start: u32, len: u32, count: u64| {
+            for s in &self.successors[start as usize..][..len as usize] {
+                next[s.index()] += count;
+            }
+        };
+        for (class, &count) in self.classes.iter().zip(ids.iter()) {
+            if count != 0 && class.kind == Kind::Fixed {
+                add(class.start, class.len, count);
+            }
+        }
+        for (a, &count) in self.alternatives.iter().zip(picks.iter()) {
+            if count != 0 {
+                add(a.start, a.len, count);
+            }
+        }
+        std::mem::swap(ids, next);
+    }
+
+    /// The index of the first hot module of `ids` from `from` (`ids.len()` when there is none).
+    #[inline]
+    pub fn next_hot(&self, ids: &[ModuleId], from: usize) -> usize {
+        const CHUNK: usize = 16;
+        let mut i = from;
+        if let Some(h) = self.hot_ids {
+            while let Some(chunk) = ids.get(i..i + CHUNK) {
+                // No branch inside the chunk: the compares vectorise (4 ids to a SIMD compare).
+                let mut any = 0u32;
+                for id in chunk {
+                    let v = id.0;
+                    any |= ((v == h[0]) | (v == h[1]) | (v == h[2]) | (v == h[3])) as u32;
+                }
+                if any != 0 {
+                    break;
+                }
+                i += CHUNK;
+            }
+        }
+        while i < ids.len() && !self.hot[ids[i].index()] {
+            i += 1;
+        }
+        i
     }
 }
 

@@ -5,7 +5,8 @@ use crate::model::{LString, Model, SuccessorModule};
 /// True when the axiom or a successor writes a cut module.
 pub(super) fn contains_cut(model: &Model) -> bool {
     let is_cut = |s: &SuccessorModule| model.cut.contains(&s.id);
-    model.axiom.iter().any(is_cut)
+    let in_axiom = |id: &crate::model::ModuleId| model.in_axiom.get(id.index()) == Some(&true);
+    model.cut.iter().any(in_axiom)
         || [&model.productions, &model.decomposition]
             .iter()
             .any(|set| {

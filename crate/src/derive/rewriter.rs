@@ -59,6 +59,11 @@ pub(super) struct Rewriter<'m, R: rand::Rng> {
     /// Scratch of a classes pass: each module's right neighbour, and a stack of neighbours.
     right: Vec<u32>,
     stack: Vec<u32>,
+    /// The id counts of the string the last Fixed/Choice pass wrote ([`classes::Counts`]).
+    counts: classes::Counts,
+    /// True when nothing changes the string between steps (no decomposition, no cut), so the
+    /// counts of one pass's output are those of the next pass's input.
+    carried: bool,
 }
 
 impl<'m, R: rand::Rng> Rewriter<'m, R> {
@@ -88,6 +93,8 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
             parametric: parametric::Classes::new(model),
             right: Vec::new(),
             stack: Vec::new(),
+            counts: classes::Counts::default(),
+            carried: model.decomposition.is_empty() && !super::cut::contains_cut(model),
         }
     }
 
@@ -114,8 +121,13 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
 
     pub fn axiom(&mut self) -> Result<LString, Diagnostic> {
         let mut s = LString::default();
-        s.clear(self.model.parametric);
         let model = self.model;
+        if !model.parametric {
+            // No parameters, so no control modules: the axiom's ids are its string.
+            s.ids = model.axiom_ids.clone();
+            return Ok(s);
+        }
+        s.clear(true);
         self.emit(&model.axiom, 0, 0, &mut s)?;
         Ok(s)
     }
@@ -281,6 +293,9 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         num_it: u32,
     ) -> Result<bool, Diagnostic> {
         let model = self.model;
+        // Whatever this pass does, the counts describe its input only if the last pass wrote it.
+        let counted = self.counts.len.take();
+        self.counts.carried = self.carried && counted == Some(src.len());
         let by_class = self.plan.is_none() && std::ptr::eq(rules, &model.productions);
         let classes = if by_class { self.classes.take() } else { None };
         let parametric = if by_class {
@@ -336,8 +351,13 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         // Past either limit, check_size says which (a string without parameters: 4 bytes a module).
         let max = (model.settings.max_modules).min(MAX_STRING_BYTES / size_of::<ModuleId>());
         let tracking = self.tracker.is_some();
-        let nested = c.neighbours && classes::right_neighbours(&c.classes, src, right, stack);
-        if c.sized && !tracking && !nested {
+        let nested =
+            c.neighbours && !c.flat && classes::right_neighbours(&c.classes, src, right, stack);
+        if c.sized && !tracking && !c.neighbours {
+            if let Some(changed) = self.rewrite_fixed(c, src, dst, num_it) {
+                return Ok(changed);
+            }
+        } else if c.sized && !tracking && !nested {
             if let Some(changed) = self.rewrite_sized(c, src, dst, num_it) {
                 return Ok(changed);
             }
@@ -426,6 +446,44 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         })
     }
 
+    /// [`Rewriter::rewrite_by_class`] when every class is Fixed or Choice of a known length and
+    /// nothing is tracked: the next length comes from the id counts ([`classes::Counts`], carried
+    /// from the last pass when it wrote `src`), the output is allocated once and every module is one
+    /// copy of a successor. `None` when the next string passes a limit: the caller's loop says
+    /// where.
+    fn rewrite_fixed(
+        &mut self,
+        c: &Classes,
+        src: &LString,
+        dst: &mut LString,
+        num_it: u32,
+    ) -> Option<bool> {
+        let carried = self.counts.carried;
+        let len = c.fixed_len(&src.ids, &mut self.counts, carried);
+        if check_size(
+            self.model,
+            num_it,
+            len,
+            len.saturating_mul(size_of::<ModuleId>()),
+        )
+        .is_err()
+        {
+            return None;
+        }
+        if dst.ids.capacity() < len + classes::PAD {
+            // A new buffer: growing the old one would copy what it held.
+            dst.ids = Vec::with_capacity(len + classes::PAD);
+        }
+        let picks = &mut self.counts.picks;
+        picks.clear();
+        picks.resize(c.alternatives.len(), 0);
+        let changed = c.write_fixed(&src.ids, &mut dst.ids, &mut *self.rng, &mut self.counts);
+        debug_assert_eq!(dst.len(), len);
+        c.carry(&mut self.counts);
+        self.counts.len = Some(len);
+        Some(changed)
+    }
+
     /// [`Rewriter::rewrite_sized`], each successor copied as `W` ids.
     #[inline(never)]
     fn rewrite_sized_as<const W: usize>(
@@ -438,10 +496,7 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         let len: usize = if c.unit {
             src.len()
         } else {
-            src.ids
-                .iter()
-                .map(|id| c.classes[id.index()].out as usize)
-                .sum()
+            src.ids.iter().map(|id| c.outs[id.index()] as usize).sum()
         };
         if check_size(self.model, num_it, len, len * size_of::<ModuleId>()).is_err() {
             return None;
@@ -453,22 +508,13 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         let ids = &src.ids;
         let n = ids.len();
         let mut changed = false;
-        if !c.neighbours {
-            for i in 0..n {
-                changed |= self.rewrite_sized_one::<W>(c, ids, i, dst);
-            }
-            return Some(changed);
-        }
         // A flat string whose modules compare neighbours: a module that is cold (no production
         // rewrites it unless a neighbour is a context) between cold neighbours is copied as it
         // is, in bulk; the others one by one.
         let hot = |k: usize| c.hot[ids[k].index()];
         let mut i = 0;
         while i < n {
-            let mut h = i;
-            while h < n && !hot(h) {
-                h += 1;
-            }
+            let h = c.next_hot(ids, i);
             let a = if i > 0 && hot(i - 1) { i + 1 } else { i };
             let b = if h < n {
                 h.saturating_sub(1).max(a)

@@ -135,6 +135,11 @@ pub struct Model {
     pub axiom: Vec<SuccessorModule>,
     /// Span of the `axiom:` line.
     pub axiom_span: Span,
+    /// The ids of the axiom's modules (of a control module, its header): without parameters, the
+    /// axiom's string, which derivation then copies instead of walking [`Model::axiom`].
+    pub axiom_ids: Vec<ModuleId>,
+    /// For each module id, whether the axiom writes it (in a control module's members too).
+    pub in_axiom: Vec<bool>,
     pub productions: RuleSet,
     pub homomorphism: RuleSet,
     pub decomposition: RuleSet,

@@ -63,7 +63,11 @@ pub fn resolve(file: &SourceFile) -> (Option<Model>, Vec<Diagnostic>) {
         &values.apex,
     );
 
+    let mut in_axiom = vec![false; r.alphabet.len()];
+    mark_modules(&axiom, &mut in_axiom);
     let model = Model {
+        axiom_ids: axiom.iter().map(|m| m.id).collect(),
+        in_axiom,
         alphabet: r.alphabet,
         axiom,
         axiom_span: axiom_span.clone(),
@@ -208,6 +212,16 @@ fn ignored(alphabet: &Alphabet, values: &DirectiveValues, fixed: &FixedIds) -> V
 }
 
 /// True when `f` holds for a module of `modules` or of a control module's members.
+/// Sets `used[id]` for every module of `modules`, the members of control modules too.
+fn mark_modules(modules: &[SuccessorModule], used: &mut [bool]) {
+    for m in modules {
+        used[m.id.index()] = true;
+        for member in m.group.iter().flatten() {
+            mark_modules(member, used);
+        }
+    }
+}
+
 fn any_module(modules: &[SuccessorModule], f: &dyn Fn(&SuccessorModule) -> bool) -> bool {
     modules
         .iter()
