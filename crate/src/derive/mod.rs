@@ -20,6 +20,7 @@ pub mod context;
 mod cut;
 mod d0l;
 mod explain;
+mod generator;
 mod groups;
 mod parametric;
 mod plan;
@@ -33,8 +34,7 @@ use d0l::D0lTable;
 use rand::SeedableRng;
 use rewriter::{Rewriter, Tracker};
 
-/// The named generator behind every random choice: PCG-64 (MCG variant), seeded from `#seed`.
-pub type Generator = rand_pcg::Pcg64Mcg;
+pub use generator::Generator;
 
 /// What one derivation does.
 #[derive(Clone, Debug)]
