@@ -267,9 +267,9 @@ pub fn resolve_width_unit(skeleton: &Skeleton, unit: WidthUnit) -> f64 {
                 return relative;
             }
             let middle = lengths.len() / 2;
-            // Sorted whole (crate::sort, no second sort algorithm in the wasm), then the middle.
-            crate::sort::sort_by(&mut lengths, f64::total_cmp);
-            let median = lengths[middle];
+            // The element a sort would put in the middle, selected without sorting: sorting the
+            // 116,050 lengths of ABOP 1.24d n = 10 was 7% of its mesh stage (issue 20).
+            let median = crate::sort::select_nth_by(&mut lengths, middle, f64::total_cmp);
             if median > 0.0 && median.is_finite() {
                 relative.min(DEFAULT_WIDTH_PER_LENGTH * median)
             } else {
