@@ -1,5 +1,7 @@
 //! The mesh stage of ABOP 1.24d at n = 10 (116,050 segments), natively: minimum of repeated
 //! remeshes, and the exact-point lookups alone. `cargo run --release --example mesh_time`.
+//! `-- N R`: ABOP 1.24d at n = N; with R, only R remeshes and nothing timed, for counting the
+//! instructions of one remesh on a busy machine (valgrind's cachegrind, R = 4 against R = 0).
 
 use meristem::mesh::{parts, MeshOptions};
 use meristem::{build, BuildOptions};
@@ -19,6 +21,14 @@ fn main() {
             ..BuildOptions::default()
         },
     );
+    if let Some(remeshes) = std::env::args().nth(2) {
+        let options = MeshOptions::default();
+        for _ in 0..remeshes.parse::<u32>().unwrap() {
+            built.remesh(&options);
+        }
+        println!("{} vertices", built.plant.mesh.vertex_count());
+        return;
+    }
     let skeleton = &built.plant.skeleton;
     println!(
         "{} segments, {} vertices",

@@ -28,6 +28,61 @@ pub fn sort<T: Ord>(v: &mut [T]) {
     sort_by(v, T::cmp);
 }
 
+/// Puts in `v[k]` the element a sort by `compare` would put there, smaller or equal ones before
+/// it and greater or equal ones after (as `slice::select_nth_unstable_by`), and returns it: a
+/// quickselect with three-way partitions (a slice of equal elements is one pass), pivots the
+/// median of three, and after 2·log₂ n + 4 rounds without converging the rest sorted by
+/// [`sort_by`] (no quadratic worst case). O(n) on average, no extra memory. Panics when `k` is
+/// out of range.
+pub fn select_nth_by<T: Copy>(
+    v: &mut [T],
+    k: usize,
+    mut compare: impl FnMut(&T, &T) -> Ordering,
+) -> T {
+    assert!(k < v.len(), "select_nth_by: index {k} of {}", v.len());
+    let (mut lo, mut hi) = (0, v.len());
+    let mut rounds = 2 * (usize::BITS - v.len().leading_zeros()) + 4;
+    while hi - lo > 1 {
+        if rounds == 0 {
+            sort_by(&mut v[lo..hi], &mut compare);
+            break;
+        }
+        rounds -= 1;
+        let (a, b, c) = (v[lo], v[lo + (hi - lo) / 2], v[hi - 1]);
+        let pivot = if (compare(&a, &b) == Ordering::Less) == (compare(&b, &c) == Ordering::Less) {
+            b
+        } else if (compare(&b, &a) == Ordering::Less) == (compare(&a, &c) == Ordering::Less) {
+            a
+        } else {
+            c
+        };
+        // v[lo..less] < pivot, v[less..i] == pivot, v[greater..hi] > pivot.
+        let (mut less, mut i, mut greater) = (lo, lo, hi);
+        while i < greater {
+            match compare(&v[i], &pivot) {
+                Ordering::Less => {
+                    v.swap(less, i);
+                    less += 1;
+                    i += 1;
+                }
+                Ordering::Greater => {
+                    greater -= 1;
+                    v.swap(i, greater);
+                }
+                Ordering::Equal => i += 1,
+            }
+        }
+        if k < less {
+            hi = less;
+        } else if k >= greater {
+            lo = greater;
+        } else {
+            break;
+        }
+    }
+    v[k]
+}
+
 /// Runs of this many indices are sorted by insertion before the merges.
 const RUN: usize = 16;
 
@@ -130,6 +185,50 @@ mod tests {
         let mut floats = vec![2.5f32, -1.0, f32::NAN, 0.0, -0.0];
         sort_by(&mut floats, |a, b| a.total_cmp(b));
         assert_eq!(format!("{floats:?}"), "[-1.0, -0.0, 0.0, 2.5, NaN]");
+    }
+
+    #[test]
+    fn selects_the_element_a_sort_puts_at_each_place() {
+        let mut rng = rand_pcg::Pcg64Mcg::seed_from_u64(20);
+        for n in [1, 2, 3, 7, 16, 100, 1000] {
+            for keys in [1, 2, 10, 1_000_000] {
+                let v: Vec<u32> = (0..n).map(|_| rng.random_range(0..keys)).collect();
+                let mut sorted = v.clone();
+                sorted.sort();
+                for k in [0, n / 3, n / 2, n - 1] {
+                    let mut w = v.clone();
+                    assert_eq!(
+                        select_nth_by(&mut w, k, u32::cmp),
+                        sorted[k],
+                        "n {n} keys {keys} k {k}"
+                    );
+                    assert!(w[..k].iter().all(|x| *x <= w[k]) && w[k..].iter().all(|x| *x >= w[k]));
+                    let mut both = w.clone();
+                    both.sort();
+                    assert_eq!(both, sorted, "a permutation");
+                }
+            }
+        }
+        // Sorted, reversed and organ-pipe inputs; floats by their total order.
+        let n = 10_001;
+        for v in [
+            (0..n).collect::<Vec<u32>>(),
+            (0..n).rev().collect(),
+            (0..n).map(|i| i.min(n - i)).collect(),
+        ] {
+            let mut sorted = v.clone();
+            sorted.sort();
+            assert_eq!(
+                select_nth_by(&mut v.clone(), n as usize / 2, u32::cmp),
+                sorted[n as usize / 2]
+            );
+        }
+        let mut floats = vec![2.5f64, -1.0, f64::NAN, 0.0, -0.0];
+        assert_eq!(
+            select_nth_by(&mut floats, 1, f64::total_cmp).to_bits(),
+            (-0.0f64).to_bits()
+        );
+        assert!(select_nth_by(&mut floats, 4, f64::total_cmp).is_nan());
     }
 
     #[test]

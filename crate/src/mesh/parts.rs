@@ -137,16 +137,26 @@ pub fn start_keys(skeleton: &Skeleton) -> PointSet {
 
 /// Whether a chain's tube ends in a rounded dome rather than a flat cap: where another segment
 /// starts at its end (branches leave it there), so they grow out of a round joint, not a stump.
+///
+/// The segment drawn next usually starts there (a branch's first, or the axis's next when it
+/// could not join): that exact point answers without the set's two cache misses.
 pub fn end_dome(starts: &PointSet, skeleton: &Skeleton, chain: &[u32]) -> bool {
-    let end = super::key(skeleton.segments[chain[chain.len() - 1] as usize].end);
-    starts.contains(&end)
+    let last = chain[chain.len() - 1] as usize;
+    let end = super::key(skeleton.segments[last].end);
+    let next = skeleton.segments.get(last + 1);
+    next.is_some_and(|s| super::key(s.start) == end) || starts.contains(&end)
 }
 
 /// Whether a chain's tube gets a start cap: not when it starts where a segment ends (a branch
 /// growing out of a joint starts inside its parent's tube).
+///
+/// The segment it grows from (`Segment::anchor`) usually ends there: that exact point answers
+/// without the set's two cache misses.
 pub fn start_cap(joints: &PointSet, skeleton: &Skeleton, chain: &[u32]) -> bool {
-    let start = super::key(skeleton.segments[chain[0] as usize].start);
-    !joints.contains(&start)
+    let first = &skeleton.segments[chain[0] as usize];
+    let start = super::key(first.start);
+    let anchor = first.anchor.and_then(|a| skeleton.segments.get(a as usize));
+    !(anchor.is_some_and(|a| super::key(a.end) == start) || joints.contains(&start))
 }
 
 /// The chains (axes cut where widths are zero, joints sharp, smoothness changes or a wide ring

@@ -148,7 +148,8 @@ impl Builder<'_> {
             let c = skeleton.color(segments[sample.segment].color);
             let first = self.mesh.vertex_count() as u32;
             // The ring's vertices written in place, all arrays grown once per ring (as `vertex`
-            // writes them, in the same arithmetic: four `extend`s a vertex cost more in wasm).
+            // writes them, in the same arithmetic: four `extend`s a vertex cost more in wasm), one
+            // per side from the builder's sin/cos table, then the seam's copy of the first at u = 1.
             let mesh = &mut self.mesh;
             let count = sides + 1;
             let at = mesh.positions.len();
@@ -157,19 +158,28 @@ impl Builder<'_> {
             mesh.colors.resize(at + 3 * count, 0.0);
             let at_uv = mesh.uvs.len();
             mesh.uvs.resize(at_uv + 2 * count, 0.0);
-            let vertices = mesh.positions[at..]
+            let positions = &mut mesh.positions[at..];
+            let normals_out = &mut mesh.normals[at..];
+            let colors = &mut mesh.colors[at..];
+            let uvs = &mut mesh.uvs[at_uv..];
+            let (v32, sides32) = (v as f32, sides as f32);
+            let vertices = positions
                 .chunks_exact_mut(3)
-                .zip(mesh.normals[at..].chunks_exact_mut(3))
-                .zip(mesh.colors[at..].chunks_exact_mut(3))
-                .zip(mesh.uvs[at_uv..].chunks_exact_mut(2));
-            for (j, (((position, normal), color), uv)) in vertices.enumerate() {
-                let (sin, cos) = self.ring[j % sides];
+                .zip(normals_out.chunks_exact_mut(3))
+                .zip(uvs.chunks_exact_mut(2))
+                .zip(&self.ring);
+            for (j, (((position, normal), uv), &(sin, cos))) in vertices.enumerate() {
                 let radial = n * cos + b * sin;
                 let p = sample.point + radial * radius;
                 position.copy_from_slice(&[p.x as f32, p.y as f32, p.z as f32]);
                 normal.copy_from_slice(&[radial.x as f32, radial.y as f32, radial.z as f32]);
+                uv.copy_from_slice(&[j as f32 / sides32, v32]);
+            }
+            positions.copy_within(0..3, 3 * sides);
+            normals_out.copy_within(0..3, 3 * sides);
+            uvs[2 * sides..].copy_from_slice(&[1.0, v32]);
+            for color in colors.chunks_exact_mut(3) {
                 color.copy_from_slice(&c);
-                uv.copy_from_slice(&[j as f32 / sides as f32, v as f32]);
             }
             rings.push(first);
         }

@@ -45,6 +45,25 @@ describe('packForGpu', () => {
     for (let i = 0; i < 9; i++) expect(Math.abs(gpu.normals[i] / 32767 - mesh.normals[i])).toBeLessThan(1e-4);
   });
 
+  it('gives every value Math.round of the clamped, scaled value, colours changing from vertex to vertex', () => {
+    const count = 3000;
+    const mesh = strip(count / 2);
+    let seed = 20;
+    const random = () => ((seed = (seed * 1103515245 + 12345) % 2147483648) / 2147483648) * 2.4 - 1.2;
+    // Runs of one colour (as a tube's rings), then a change every vertex; rounding ties and
+    // out-of-range values included.
+    for (let i = 0; i < mesh.normals.length; i++) mesh.normals[i] = random();
+    for (let v = 0; v < count; v++) {
+      const run = v < count / 2 ? Math.floor(v / 7) : v;
+      for (let k = 0; k < 3; k++) mesh.colors[3 * v + k] = ((run * 3 + k) * 0.37) % 1.3 - 0.1;
+    }
+    mesh.normals.set([0.5 / 32767, -0.5 / 32767, 1.5 / 32767, -1.5 / 32767, NaN, -0, 1, -1, 2]);
+    mesh.colors.set([0.5 / 255, 1.5 / 255, 254.5 / 255, NaN, -0, 1, 0.2, 0.2, 0.2]);
+    const gpu = packForGpu(mesh);
+    mesh.normals.forEach((n, i) => expect(gpu.normals[i], `normal ${i}`).toBe(Math.round(Math.max(-1, Math.min(1, n)) * 32767) || 0));
+    mesh.colors.forEach((c, i) => expect(gpu.colors[i], `colour ${i}`).toBe(Math.round(Math.max(0, Math.min(1, c)) * 255) || 0));
+  });
+
   it('gives plantGeometry normalized attributes', () => {
     const mesh = strip(2);
     const geometry = plantGeometry(mesh, packForGpu(mesh));
