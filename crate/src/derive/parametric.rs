@@ -458,18 +458,7 @@ impl<R: rand::Rng> Rewriter<'_, R> {
                 // Copied (a template of another arity matches nothing), and copied again in the
                 // step after (no class is general here): its size there is its size here.
                 ids[o].write(id);
-                // Most modules have two parameters or fewer: two are copied, in one move, when
-                // there is room on both sides (the second one is overwritten next).
-                match (
-                    src.params.get(from_own..from_own + 2),
-                    values.get_mut(p..p + 2),
-                ) {
-                    (Some(&[a, b]), Some([x, y])) if own.len() <= 2 => {
-                        x.write(a);
-                        y.write(b);
-                    }
-                    _ => copy_rest(own, values, p),
-                }
+                copy_params(&src.params, from_own, own, values, p);
                 p += own.len();
                 offsets[o].write(p as u32);
                 o += 1;
@@ -625,6 +614,26 @@ fn write_affine(affine: &[Affine], own: &[f64], out: &mut [MaybeUninit<f64>]) ->
         out.write(v);
     }
     finite
+}
+
+/// Writes a copied module's parameters `own` (at `from` in `params`) to `values` at `p`. Most
+/// modules have two parameters or fewer: two are copied, in one move, when there is room on both
+/// sides (the second one is overwritten next).
+#[inline(always)]
+fn copy_params(
+    params: &[f64],
+    from: usize,
+    own: &[f64],
+    values: &mut [MaybeUninit<f64>],
+    p: usize,
+) {
+    match (params.get(from..from + 2), values.get_mut(p..p + 2)) {
+        (Some(&[a, b]), Some([x, y])) if own.len() <= 2 => {
+            x.write(a);
+            y.write(b);
+        }
+        _ => copy_rest(own, values, p),
+    }
 }
 
 /// [`copy_values`] out of line: the sized loop's rare case (the last module, or more than two
