@@ -5,15 +5,8 @@ use crate::{derive, model, syntax};
 use glam::DVec3;
 
 fn run(src: &str) -> Skeleton {
-    let (file, diags) = syntax::parse(src);
-    assert!(diags.is_empty(), "{diags:?}");
-    let (model, diags) = model::resolve(&file);
-    assert!(diags.is_empty(), "{diags:?}");
-    let model = model.expect("model");
-    let steps = model.settings.iterations;
-    let derivation =
-        derive::derive(&model, &derive::DeriveOptions { steps, seed: None }).expect("derives");
-    interpret(&model, &derivation.string)
+    let (model, string) = model_and_string(src);
+    interpret(&model, &string)
 }
 
 fn close(a: DVec3, b: DVec3) -> bool {
