@@ -12,8 +12,10 @@ fn main() {
         "{}/../public/examples/abop-1.24d.lsys",
         env!("CARGO_MANIFEST_DIR")
     );
-    let text = std::fs::read_to_string(path).unwrap();
-    let iterations: u32 = std::env::args().nth(1).map_or(10, |a| a.parse().unwrap());
+    let text = std::fs::read_to_string(path).expect("public/examples/abop-1.24d.lsys");
+    let iterations: u32 = std::env::args()
+        .nth(1)
+        .map_or(10, |a| a.parse().expect("N: a number of steps"));
     let mut built = build(
         &text,
         &BuildOptions {
@@ -23,7 +25,7 @@ fn main() {
     );
     if let Some(remeshes) = std::env::args().nth(2) {
         let options = MeshOptions::default();
-        for _ in 0..remeshes.parse::<u32>().unwrap() {
+        for _ in 0..remeshes.parse::<u32>().expect("R: a number of remeshes") {
             built.remesh(&options);
         }
         println!("{} vertices", built.plant.mesh.vertex_count());

@@ -22,8 +22,12 @@ C(l,w) -> !(w)F(l)[+(a2)$B(l*r2,w*wr)]B(l*r1,w*wr)
 ";
 
 fn main() {
-    let steps: u32 = std::env::args().nth(1).map_or(17, |a| a.parse().unwrap());
-    let rounds: usize = std::env::args().nth(2).map_or(30, |a| a.parse().unwrap());
+    let steps: u32 = std::env::args()
+        .nth(1)
+        .map_or(17, |a| a.parse().expect("a number of steps"));
+    let rounds: usize = std::env::args()
+        .nth(2)
+        .map_or(30, |a| a.parse().expect("a number of rounds"));
     let (syntax, _) = parse(C);
     let (model, _) = resolve(&syntax);
     let model = model.expect("model");

@@ -11,8 +11,10 @@ fn main() {
         "{}/../public/examples/abop-1.24d.lsys",
         env!("CARGO_MANIFEST_DIR")
     );
-    let text = std::fs::read_to_string(path).unwrap();
-    let iterations: u32 = std::env::args().nth(1).map_or(10, |a| a.parse().unwrap());
+    let text = std::fs::read_to_string(path).expect("public/examples/abop-1.24d.lsys");
+    let iterations: u32 = std::env::args()
+        .nth(1)
+        .map_or(10, |a| a.parse().expect("n: a number of steps"));
     let options = BuildOptions {
         iterations: Some(iterations),
         sketch: true,
@@ -34,7 +36,7 @@ fn main() {
         );
         let whole = t.elapsed().as_secs_f64() * 1e3;
         segments = built.plant.stats.segments;
-        let s = built.timings.unwrap();
+        let s = built.timings.expect("timings: the build had a clock");
         let t = Instant::now();
         drop(built);
         let dropped = t.elapsed().as_secs_f64() * 1e3;
@@ -50,7 +52,7 @@ fn main() {
     }
     // The sketch turtle alone, on the derived string.
     let built = meristem::build(&text, &options);
-    let model = built.model.as_ref().unwrap();
+    let model = built.model.as_ref().expect("1.24d resolves");
     let string = built.derivation.turtle_string();
     let mut turtle = f64::MAX;
     for _ in 0..30 {
