@@ -419,3 +419,28 @@ describe('sharing', () => {
     await context.close();
   });
 });
+
+describe('the vocabulary (loaded after the first plant)', () => {
+  it('when its fetch fails, the studio still starts, and the next edit fetches it for the sliders', async () => {
+    const context = await browser.newContext({ viewport: { width: 1280, height: 800 }, serviceWorkers: 'block' });
+    let asked = 0;
+    await context.route(/\/vocabulary[^/]*\.json$/, (route) => (++asked === 1 ? route.abort() : route.continue()));
+    const { page, problems } = await openAt(inject('studioUrl'), context);
+    await page.evaluate(() => window.__meristem?.ready); // resolves without the vocabulary
+    expect(asked).toBe(1);
+    expect(await page.getByTestId('growth-lifetime').count(), 'no Growth panel without the vocabulary').toBe(0);
+    // The text is there and editable (the editor stays the plain text box it started as).
+    const box = page.getByTestId('editor').locator('textarea');
+    const before = await generation(page);
+    await box.click();
+    await page.keyboard.press('Control+End');
+    await page.keyboard.type('\n#define k 2\n');
+    expect(await nextBuild(page, before)).toBe('ok');
+    await expect.poll(() => page.getByTestId('growth-lifetime').count()).toBe(1);
+    expect(asked).toBe(2);
+    expect(await box.inputValue()).toContain('#define k 2');
+    // Said in the console: the failed fetch, for the panels and for the editor.
+    expect(problems.filter((p) => !/vocabulary|grammar editor could not load|ERR_FAILED/.test(p))).toEqual([]);
+    await context.close();
+  });
+});

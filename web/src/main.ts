@@ -99,10 +99,37 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   let growth: GrowthPanel | undefined;
   let vocabulary: Vocabulary | undefined;
   const readText = (text: string) => {
-    if (!vocabulary) return;
+    if (!vocabulary) {
+      if (vocabularyFailed) void readVocabulary(); // after a failed fetch, each edit tries again
+      return;
+    }
     sliders.update(text);
     growth?.update(text);
     derivation.textChanged(text);
+  };
+  // Once: the panels that need the vocabulary. A failed fetch (the network gone between the first
+  // plant and it) is logged, the studio goes on without them, and the next edit tries again.
+  let vocabularyAsked = false;
+  let vocabularyFailed = false;
+  const readVocabulary = async () => {
+    if (vocabularyAsked) return;
+    vocabularyAsked = true;
+    vocabularyFailed = false;
+    try {
+      const arrived = await loadVocabulary();
+      vocabulary = arrived;
+      growth = new GrowthPanel(
+        els.growthRows,
+        els.growthCount,
+        { text: currentText, replaceRange: (from, to, insert) => editor?.replaceRange(from, to, insert) },
+        growthAttributes(arrived),
+      );
+      readText(currentText());
+    } catch (error) {
+      vocabularyAsked = false;
+      vocabularyFailed = true;
+      console.error('Could not load the language vocabulary (sliders, Growth panel):', error);
+    }
   };
   // The grammar in a plain textarea until CodeMirror arrives, after the first plant (below).
   const grammarEditor = createLazyGrammarEditor(
@@ -255,16 +282,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   await Promise.race([firstBuild, underWay.then(() => delay(1000))]);
   await nextFrame();
   firstLoadDone();
-  const vocabularyRead = loadVocabulary().then((arrived) => {
-    vocabulary = arrived;
-    growth = new GrowthPanel(
-      els.growthRows,
-      els.growthCount,
-      { text: currentText, replaceRange: (from, to, insert) => editor?.replaceRange(from, to, insert) },
-      growthAttributes(arrived),
-    );
-    readText(currentText());
-  });
+  const vocabularyRead = readVocabulary();
   // Downloads: the plant on screen (the last good build's text and options, with the edits); the
   // menu's code loads after the first plant (issue 22).
   const downloadsInstalled = import('./studio/download-menu').then(({ installDownloads }) =>
