@@ -7,12 +7,14 @@
 // SwiftShader (as on a machine with a GPU) and Chromium's default without a GPU (software
 // compositing: every WebGL frame is read back on the main thread, waiting for the rasterizer).
 // Medians go to test-results/bench-studio.json. Not part of `npm test`.
+// While working on one stage: BENCH_SETUP=software (or gpu) and BENCH_WORKLOAD=0 (an index of
+// WORKLOADS) run one of each, and KEYSTROKES=N types fewer keys; the file is then not written.
 import { mkdirSync, writeFileSync } from 'node:fs';
 import os from 'node:os';
 import { chromium } from 'playwright-core';
 import { preview } from 'vite';
 
-const KEYSTROKES = 16;
+const KEYSTROKES = Number(process.env.KEYSTROKES ?? 16);
 // The flat example is drawn as lines (`auto`), which mesh no tubes: the tube frame is measured with
 // the Tubes mode chosen (the Lines toggle), and the Lines mode as the studio opens.
 const WORKLOADS = [
@@ -25,6 +27,11 @@ const SETUPS = {
   'software compositing (Chromium default without a GPU)': [],
 };
 
+const only = (entries, chosen, matches) => (chosen === undefined ? entries : entries.filter((entry, i) => matches(entry, i, chosen)));
+const setups = only(Object.entries(SETUPS), process.env.BENCH_SETUP, ([name], _, chosen) => name.toLowerCase().startsWith(chosen));
+const workloads = only(WORKLOADS, process.env.BENCH_WORKLOAD, (_, i, chosen) => i === Number(chosen));
+const partial = setups.length < Object.keys(SETUPS).length || workloads.length < WORKLOADS.length || KEYSTROKES !== 16;
+
 const median = (values) => {
   const s = [...values].sort((a, b) => a - b);
   return s.length === 0 ? NaN : s[Math.floor(s.length / 2)];
@@ -35,9 +42,9 @@ const server = await preview({ configFile: new URL('../vite.config.ts', import.m
 const url = `http://127.0.0.1:${server.httpServer.address().port}/`;
 const results = [];
 try {
-  for (const [setup, args] of Object.entries(SETUPS)) {
+  for (const [setup, args] of setups) {
     const browser = await chromium.launch({ executablePath: '/usr/bin/chromium', args });
-    for (const workload of WORKLOADS) {
+    for (const workload of workloads) {
       const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
       await page.goto(url);
       await page.waitForFunction(() => (window.__meristem?.lastStats?.segments ?? 0) > 0);
@@ -57,7 +64,7 @@ try {
         w.__bench = { keydown: 0, deliveries: [] };
         addEventListener('keydown', (e) => (w.__bench.keydown = e.timeStamp), { capture: true });
         w.__meristem.preview.onDelivered((r) =>
-          w.__bench.deliveries.push({ source: r.source, at: performance.now(), generation: w.__meristem.preview.generation, roundTrip: r.roundTripMillis, timings: r.build.timings }),
+          w.__bench.deliveries.push({ source: r.source, at: performance.now(), generation: w.__meristem.preview.generation, roundTrip: r.roundTripMillis, worker: r.workerMillis, timings: r.build.timings }),
         );
       });
       await page.locator('[data-testid=editor] .cm-line', { hasText: '#angle' }).click();
@@ -83,6 +90,7 @@ try {
                       sketched: sketched !== null && sketched > b.keydown && sketched <= r.at ? sketched : null,
                       nextFrame: performance.now(),
                       roundTrip: d.roundTrip,
+                      worker: d.worker,
                       timings: d.timings,
                     });
                   });
@@ -109,6 +117,7 @@ try {
         keystrokeToDrawnMs: pick((s) => s.rendered - s.keydown),
         keystrokeToNextFrameMs: pick((s) => s.nextFrame - s.keydown),
         roundTripMs: pick((s) => s.roundTrip),
+        workerMs: pick((s) => s.worker),
         coreMs: pick((s) => s.timings.parseResolve + s.timings.derive + s.timings.interpret + s.timings.mesh),
         meshMs: pick((s) => s.timings.mesh),
         deliveredToDrawnMs: pick((s) => s.rendered - s.delivered),
@@ -122,14 +131,16 @@ try {
 } finally {
   await server.close();
 }
-mkdirSync(new URL('../test-results/', import.meta.url), { recursive: true });
-writeFileSync(
-  new URL('../test-results/bench-studio.json', import.meta.url),
-  `${JSON.stringify({ date: new Date().toISOString(), cpu: os.cpus()[0]?.model, cores: os.cpus().length, keystrokes: KEYSTROKES, results }, null, 1)}\n`,
-);
-console.log('\n| setup | workload | keystroke → first frame of the new plant | → tubes drawn | → next frame | round trip (request → build on the page) | core stages | of which mesh | build on the page → drawn |');
-console.log('| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |');
+if (!partial) {
+  mkdirSync(new URL('../test-results/', import.meta.url), { recursive: true });
+  writeFileSync(
+    new URL('../test-results/bench-studio.json', import.meta.url),
+    `${JSON.stringify({ date: new Date().toISOString(), cpu: os.cpus()[0]?.model, cores: os.cpus().length, keystrokes: KEYSTROKES, results }, null, 1)}\n`,
+  );
+}
+console.log('\n| setup | workload | keystroke → first frame of the new plant | → tubes drawn | → next frame | round trip (request → build on the page) | in the worker | core stages | of which mesh | build on the page → drawn |');
+console.log('| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |');
 for (const r of results)
   console.log(
-    `| ${r.setup} | ${r.workload} | ${r.keystrokeToFirstFrameMs} ms${r.sketched ? ' (sketch)' : ''} | ${r.keystrokeToDrawnMs} ms | ${r.keystrokeToNextFrameMs} ms | ${r.roundTripMs} ms | ${r.coreMs} ms | ${r.meshMs} ms | ${r.deliveredToDrawnMs} ms |`,
+    `| ${r.setup} | ${r.workload} | ${r.keystrokeToFirstFrameMs} ms${r.sketched ? ' (sketch)' : ''} | ${r.keystrokeToDrawnMs} ms | ${r.keystrokeToNextFrameMs} ms | ${r.roundTripMs} ms | ${r.workerMs} ms | ${r.coreMs} ms | ${r.meshMs} ms | ${r.deliveredToDrawnMs} ms |`,
   );
