@@ -15,7 +15,7 @@
 use crate::branches::{parse_edits, write_edits, DragError, NO_BRANCH};
 #[cfg(feature = "io")]
 use crate::export::{self, Format};
-use crate::mesh::MeshOptions;
+use crate::mesh::{self, MeshOptions};
 use crate::pipeline::{self, BuildOptions, Hooks, Progress, Stage};
 #[cfg(feature = "io")]
 use serde::Deserialize;
@@ -497,6 +497,20 @@ macro_rules! mesh_getters {
                 js_sys::Float32Array::from(&$get.mesh.colors[..])
             }
 
+            /// `normals` packed for the GPU: 16-bit normalized (`mesh::pack_normals`).
+            #[wasm_bindgen(js_name = packedNormals)]
+            pub fn packed_normals(&self) -> js_sys::Int16Array {
+                let $plant = self;
+                js_sys::Int16Array::from(&mesh::pack_normals(&$get.mesh.normals)[..])
+            }
+
+            /// `colors` packed for the GPU: 8-bit normalized (`mesh::pack_colors`).
+            #[wasm_bindgen(js_name = packedColors)]
+            pub fn packed_colors(&self) -> js_sys::Uint8Array {
+                let $plant = self;
+                js_sys::Uint8Array::from(&mesh::pack_colors(&$get.mesh.colors)[..])
+            }
+
             /// 3 vertex indices per triangle.
             pub fn indices(&self) -> js_sys::Uint32Array {
                 let $plant = self;
@@ -540,21 +554,21 @@ macro_rules! mesh_getters {
             #[wasm_bindgen(js_name = segmentEnds)]
             pub fn segment_ends(&self) -> js_sys::Float32Array {
                 let $plant = self;
-                js_sys::Float32Array::from(&$get.segment_lines().ends[..])
+                js_sys::Float32Array::from(&$get.segment_ends()[..])
             }
 
             /// A colour (r, g, b) per end of `segmentEnds`.
             #[wasm_bindgen(js_name = segmentColors)]
             pub fn segment_colors(&self) -> js_sys::Float32Array {
                 let $plant = self;
-                js_sys::Float32Array::from(&$get.segment_lines().colors[..])
+                js_sys::Float32Array::from(&$get.segment_colors()[..])
             }
 
             /// The module of the derived string that drew each segment of `segmentEnds`.
             #[wasm_bindgen(js_name = segmentModules)]
             pub fn segment_modules(&self) -> js_sys::Uint32Array {
                 let $plant = self;
-                js_sys::Uint32Array::from(&$get.segment_lines().modules[..])
+                js_sys::Uint32Array::from(&$get.segment_modules()[..])
             }
 
             /// True when everything drawn lies in the plane z = 0.

@@ -7,21 +7,45 @@ use crate::turtle::Skeleton;
 
 /// The segments of `skeleton` as lines with their colours and modules.
 pub fn segment_lines(skeleton: &Skeleton) -> SegmentLines {
-    let count = skeleton.segments.len();
-    let mut lines = SegmentLines {
-        ends: Vec::with_capacity(6 * count),
-        colors: Vec::with_capacity(6 * count),
-        modules: Vec::with_capacity(count),
-    };
-    for s in &skeleton.segments {
-        let color = skeleton.color(s.color);
-        for p in [s.start, s.end] {
-            lines.ends.extend([p.x as f32, p.y as f32, p.z as f32]);
-            lines.colors.extend(color);
-        }
-        lines.modules.push(s.module);
+    SegmentLines {
+        ends: segment_ends(skeleton),
+        colors: segment_colors(skeleton),
+        modules: segment_modules(skeleton),
     }
-    lines
+}
+
+/// Each segment's two ends, x, y, z each (as `f32`): [`SegmentLines::ends`].
+pub fn segment_ends(skeleton: &Skeleton) -> Vec<f32> {
+    let mut ends = Vec::with_capacity(6 * skeleton.segments.len());
+    for s in &skeleton.segments {
+        let (a, b) = (s.start.as_vec3(), s.end.as_vec3());
+        ends.extend_from_slice(&[a.x, a.y, a.z, b.x, b.y, b.z]);
+    }
+    ends
+}
+
+/// Each segment's colour, once per end: [`SegmentLines::colors`]. The palette is looked up once
+/// per run of segments of one colour.
+pub fn segment_colors(skeleton: &Skeleton) -> Vec<f32> {
+    let mut colors = Vec::with_capacity(6 * skeleton.segments.len());
+    let mut run: Option<(u16, [f32; 3])> = None;
+    for s in &skeleton.segments {
+        let [r, g, b] = match run {
+            Some((index, color)) if index == s.color => color,
+            _ => {
+                let color = skeleton.color(s.color);
+                run = Some((s.color, color));
+                color
+            }
+        };
+        colors.extend_from_slice(&[r, g, b, r, g, b]);
+    }
+    colors
+}
+
+/// The module that drew each segment: [`SegmentLines::modules`].
+pub fn segment_modules(skeleton: &Skeleton) -> Vec<u32> {
+    skeleton.segments.iter().map(|s| s.module).collect()
 }
 
 #[cfg(test)]

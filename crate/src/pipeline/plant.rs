@@ -4,6 +4,7 @@ use crate::derive::Derivation;
 use crate::export::Stats;
 use crate::mesh::{self, MeshBuffers, MeshOptions};
 use crate::turtle::{Skeleton, Sketch};
+use std::borrow::Cow;
 
 /// The geometry of one build.
 #[derive(Clone, Debug, Default)]
@@ -151,16 +152,38 @@ impl Plant {
     /// Every segment as a line (the studio's Lines mode), its module in terms of the derived
     /// string, as the mesh's provenance.
     pub fn segment_lines(&self) -> mesh::SegmentLines {
-        let mut lines = match &self.sketch {
-            Some((modules, _)) => mesh::SegmentLines {
-                ends: self.mesh.lines.clone(),
-                colors: self.mesh.line_colors.clone(),
-                modules: modules.clone(),
-            },
-            None => mesh::segment_lines(&self.skeleton),
+        mesh::SegmentLines {
+            ends: self.segment_ends().into_owned(),
+            colors: self.segment_colors().into_owned(),
+            modules: self.segment_modules(),
+        }
+    }
+
+    /// [`Plant::segment_lines`]'s ends alone (a sketch's are its lines already): each of the three
+    /// is made on its own, so that asking for all three draws the segments once.
+    pub fn segment_ends(&self) -> Cow<'_, [f32]> {
+        match &self.sketch {
+            Some(_) => Cow::Borrowed(&self.mesh.lines),
+            None => Cow::Owned(mesh::segment_ends(&self.skeleton)),
+        }
+    }
+
+    /// [`Plant::segment_lines`]'s colours alone.
+    pub fn segment_colors(&self) -> Cow<'_, [f32]> {
+        match &self.sketch {
+            Some(_) => Cow::Borrowed(&self.mesh.line_colors),
+            None => Cow::Owned(mesh::segment_colors(&self.skeleton)),
+        }
+    }
+
+    /// [`Plant::segment_lines`]'s modules alone, in terms of the derived string.
+    pub fn segment_modules(&self) -> Vec<u32> {
+        let mut modules = match &self.sketch {
+            Some((modules, _)) => modules.clone(),
+            None => mesh::segment_modules(&self.skeleton),
         };
         if !self.turtle_origin.is_empty() {
-            for module in &mut lines.modules {
+            for module in &mut modules {
                 *module = self
                     .turtle_origin
                     .get(*module as usize)
@@ -168,7 +191,7 @@ impl Plant {
                     .unwrap_or(*module);
             }
         }
-        lines
+        modules
     }
 
     /// True when everything drawn lies in the plane z = 0 ([`Skeleton::is_flat`]).
