@@ -145,6 +145,24 @@ describe('inspectPlant with a sketch (the live preview of big plants)', () => {
   });
 });
 
+describe('inspectPlant for the GPU (what the build worker sends the view)', () => {
+  it('packs the normals and colours in the core: Math.round of the clamped, scaled floats', () => {
+    // Leaves (colour and normals of their own), tubes of two colours and a sphere.
+    const source = '#angle 30\naxiom: A\nA -> F[+A][-{.f.-f.-f.}]\'F@O(1)A';
+    const { build, inspector, gpu } = inspectPlant(source, { iterations: 3 }, undefined, undefined, true);
+    inspector.free();
+    const plain = buildPlant(source, { iterations: 3 });
+    expect(build.mesh.normals.length).toBe(0);
+    expect(build.mesh.colors.length).toBe(0);
+    expect(build.mesh.positions).toEqual(plain.mesh.positions);
+    expect(gpu.normals.length).toBe(plain.mesh.normals.length);
+    expect(gpu.colors.length).toBe(plain.mesh.colors.length);
+    expect(new Set(plain.mesh.colors).size).toBeGreaterThan(2);
+    plain.mesh.normals.forEach((n, i) => expect(gpu.normals[i], `normal ${i}`).toBe(Math.round(Math.max(-1, Math.min(1, n)) * 32767) || 0));
+    plain.mesh.colors.forEach((c, i) => expect(gpu.colors[i], `colour ${i}`).toBe(Math.round(Math.max(0, Math.min(1, c)) * 255) || 0));
+  });
+});
+
 describe('what buildPlant reports beyond the mesh', () => {
   it('times each stage with the page’s clock', () => {
     const plant = buildPlant(readFileSync(new URL(`../../${EXAMPLE}`, import.meta.url), 'utf8'));

@@ -17,6 +17,7 @@ import {
   type Diagnostic,
   type DerivationStep,
   type Explanation,
+  type GpuArrays,
   type LastStepLinks,
   type MatchReport,
   type MeshBuffers,
@@ -82,25 +83,43 @@ export function studioCoreInUse(): boolean {
  * works, so it can only post messages, not wait for an answer). Built by the first plant's core,
  * the inspector gives module texts and the last step's links, and throws on the questions only
  * the studio core answers (`explain`, `explainModule`, `matchReport`, `sequence`): after
- * `loadStudioCore`, every inspector answers them all.
+ * `loadStudioCore`, every inspector answers them all. With `forGpu`, the mesh's normals and
+ * colours come packed for the GPU (`gpu`) in place of `build.mesh.normals` and `.colors` (then
+ * empty): what the build worker sends the view.
  */
+export function inspectPlant(
+  source: string,
+  options?: BuildOptions,
+  sketch?: SketchRequest,
+  onProgress?: (progress: BuildProgress) => void,
+): { build: PlantBuild; inspector: PlantInspector };
+export function inspectPlant(
+  source: string,
+  options: BuildOptions,
+  sketch: SketchRequest | undefined,
+  onProgress: ((progress: BuildProgress) => void) | undefined,
+  forGpu: true,
+): { build: PlantBuild; inspector: PlantInspector; gpu: GpuArrays };
 export function inspectPlant(
   source: string,
   options: BuildOptions = {},
   sketch?: SketchRequest,
   onProgress?: (progress: BuildProgress) => void,
-): { build: PlantBuild; inspector: PlantInspector } {
+  forGpu = false,
+): { build: PlantBuild; inspector: PlantInspector; gpu?: GpuArrays } {
   const core: (...args: Parameters<typeof build>) => WasmPlantBuild = studioBuild ?? build;
   const result = sketch ? runSketched(core, source, options, sketch, onProgress) : runBuildWith(core, source, options, onProgress);
   let plain: PlantBuild;
+  let gpu: GpuArrays | undefined;
   try {
-    plain = plainBuild(source, result);
+    plain = plainBuild(source, result, forGpu);
+    if (forGpu) gpu = guarded(() => ({ normals: ownedArray(result.packedNormals()), colors: ownedArray(result.packedColors()) }));
   } catch (error) {
     result.free();
     throw error;
   }
   const moduleCount = plain.moduleCount;
-  return { build: plain, inspector: new LiveInspector(guarded(() => result.intoInspector()), moduleCount) };
+  return { build: plain, inspector: new LiveInspector(guarded(() => result.intoInspector()), moduleCount), gpu };
 }
 
 /** A big plant's skeleton as lines, shown while its tubes are meshed (see {@link inspectPlant}). */
@@ -184,14 +203,18 @@ interface RawProduction {
   condition: [number, number] | null;
 }
 
-/** Copies a wasm build into plain data (for this folder's facades; the caller frees the build). */
-export function plainBuild(source: string, result: WasmPlantBuild): PlantBuild {
+/**
+ * Copies a wasm build into plain data (for this folder's facades; the caller frees the build).
+ * `forGpu`: without the mesh's float normals and colours (empty arrays), which the caller takes
+ * packed for the GPU instead.
+ */
+export function plainBuild(source: string, result: WasmPlantBuild, forGpu = false): PlantBuild {
   const toUtf16 = utf16Offsets(source);
   return guarded(() => ({
     ok: result.ok,
     diagnostics: (JSON.parse(result.diagnostics()) as RawDiagnostic[]).map(toDiagnostic),
     stats: JSON.parse(result.stats()) as PlantStats,
-    mesh: copyMesh(result),
+    mesh: copyMesh(result, forGpu),
     derived: result.derived(DERIVED_PREVIEW_CHARS),
     moduleCount: result.moduleCount,
     productions: (JSON.parse(result.productions()) as RawProduction[]).map(
@@ -219,12 +242,12 @@ function withMeshTime(timings: StageTimings, mesh: number | undefined): StageTim
 /** The core's classes that hold a plant's mesh: a build and an editor. */
 type MeshHolder = WasmPlantBuild | WasmPlantEditor;
 
-/** Copies every mesh array of a wasm build or editor out of wasm memory. */
-export function copyMesh(result: MeshHolder): MeshBuffers {
+/** Copies every mesh array of a wasm build or editor out of wasm memory (`forGpu`: see {@link plainBuild}). */
+export function copyMesh(result: MeshHolder, forGpu = false): MeshBuffers {
   return guarded(() => ({
     positions: ownedArray(result.positions()),
-    normals: ownedArray(result.normals()),
-    colors: ownedArray(result.colors()),
+    normals: forGpu ? new Float32Array(0) : ownedArray(result.normals()),
+    colors: forGpu ? new Float32Array(0) : ownedArray(result.colors()),
     indices: ownedArray(result.indices()),
     ranges: ownedArray(result.ranges()),
     uvs: ownedArray(result.uvs()),

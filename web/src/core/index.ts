@@ -66,6 +66,7 @@ export {
   type BuildProgress,
   type BuildStage,
   type Diagnostic,
+  type GpuArrays,
   type MeshBuffers,
   type PlantBuild,
   type PlantStats,

@@ -102,6 +102,6 @@ export function guarded<T>(call: () => T): T {
  * a view into wasm memory (which dies when that memory grows). Either way the data is copied
  * exactly once.
  */
-export function ownedArray<T extends Float32Array | Uint32Array>(array: T): T {
+export function ownedArray<T extends Float32Array | Uint32Array | Int16Array | Uint8Array>(array: T): T {
   return array.buffer === memory?.buffer ? (array.slice() as T) : array;
 }

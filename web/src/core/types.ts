@@ -77,6 +77,16 @@ export interface MeshBuffers {
 }
 
 /**
+ * A mesh's normals and colours packed for the GPU by the core (`crate/src/mesh/pack.rs`): normals
+ * as 16-bit and colours as 8-bit normalized integers, 6 and 3 bytes a vertex instead of 12 and 12.
+ * What the build worker sends the view in place of the floats (`inspectPlant`'s `forGpu`).
+ */
+export interface GpuArrays {
+  normals: Int16Array;
+  colors: Uint8Array;
+}
+
+/**
  * Options of {@link buildPlant}: the core's own `BuildOptions` (declared once, beside the boundary
  * in `crate/src/wasm.rs`) without `sketch`, which the facade sets itself, and `tubes`: whether a
  * sketched build ({@link inspectPlant} with a sketch request, the studio's worker) meshes the

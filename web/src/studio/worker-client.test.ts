@@ -30,7 +30,7 @@ class FakeWorker implements WorkerLike {
   answer(id = this.requests.at(-1)!.id): void {
     const request = this.requests.find((r) => r.id === id)!;
     const build = { ok: true, derived: request.source } as unknown as PlantBuild;
-    this.onMessage?.({ data: { kind: 'built', id, build, workerMillis: 1 } } as MessageEvent<WorkerResponse>);
+    this.onMessage?.({ data: { kind: 'built', id, build, workerMillis: 1, studioCore: false } } as MessageEvent<WorkerResponse>);
   }
   crash(id = this.requests.at(-1)!.id): void {
     this.onMessage?.({ data: { kind: 'crashed', id, message: 'RuntimeError: unreachable' } } as MessageEvent<WorkerResponse>);
@@ -166,6 +166,21 @@ describe('BuildClient', () => {
     expect(workers).toHaveLength(2);
     latest().answer();
     expect(source(await next)).toBe('fine');
+  });
+
+  it('has the worker load the studio core once asked, and every worker that replaces it', async () => {
+    const first = client.request('A', {});
+    expect(latest().messages.filter((m) => m.kind === 'studio-core')).toHaveLength(0);
+    client.useStudioCore();
+    client.useStudioCore(); // once is enough
+    expect(latest().messages.filter((m) => m.kind === 'studio-core')).toHaveLength(1);
+    latest().crash();
+    await first;
+    const second = client.request('B', {});
+    expect(workers).toHaveLength(2);
+    expect(latest().messages.map((m) => m.kind)).toEqual(['studio-core', 'build']);
+    latest().answer();
+    expect(source(await second)).toBe('B');
   });
 
   it('asks the worker about a kept build, and frees it once', async () => {

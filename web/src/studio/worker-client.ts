@@ -1,7 +1,6 @@
 // The page's side of the build worker: one request at a time, the newest waiting request only,
 // stale answers never delivered, and a worker stuck on an outdated build replaced.
-import { type BuildOptions, type BuildProgress, type DerivationStep, type Explanation, type LastStepLinks, type MatchReport, type PlantBuild, type PlantInspector, type PlantSketch } from '../core';
-import type { GpuArrays } from '../view/gpu-arrays';
+import { type BuildOptions, type BuildProgress, type DerivationStep, type Explanation, type GpuArrays, type LastStepLinks, type MatchReport, type PlantBuild, type PlantInspector, type PlantSketch } from '../core';
 import type { BuildResponse, InspectAnswer, InspectQuestion, WorkerRequest, WorkerResponse } from './worker-protocol';
 import { startBuildWorker, takeEarlyBuildWorker } from './build-worker-start';
 
@@ -27,6 +26,8 @@ export interface BuildResult {
   inspector: PlantInspector;
   /** Time of the core call in the worker (its stages are in `build.timings`). */
   workerMillis: number;
+  /** Whether the studio core built it (after {@link BuildClient.useStudioCore}), rather than the first plant's. */
+  studioCore: boolean;
   /** From the request to the answer on the page: waiting, building and transferring. */
   roundTripMillis: number;
 }
@@ -101,6 +102,8 @@ export class BuildClient {
   private nextQuestion = 1;
   private readonly abandonAfterMs: number;
   private readonly now: () => number;
+  /** Whether each worker is to load the studio core ({@link useStudioCore}). */
+  private studioCoreWanted = false;
   /** Workers started so far (the first one included): more than one means a restart. */
   workersStarted = 0;
   /** Kept builds built again by a new worker so far (see {@link ask}). */
@@ -175,10 +178,22 @@ export class BuildClient {
     this.ensureWorker();
   }
 
+  /**
+   * Has the worker load the studio core (crate/pkg) in the background, and every worker that
+   * replaces it: the builds after it are faster (the core built for speed, not size) and their
+   * inspectors answer every question. For after the first load: the first plant never waits for it.
+   */
+  useStudioCore(): void {
+    if (this.studioCoreWanted) return;
+    this.studioCoreWanted = true;
+    this.worker?.postMessage({ kind: 'studio-core' });
+  }
+
   private ensureWorker(): WorkerLike {
     if (this.worker) return this.worker;
     const worker = this.createWorker();
     this.workersStarted++;
+    if (this.studioCoreWanted) worker.postMessage({ kind: 'studio-core' });
     worker.addEventListener('message', (event) => {
       if (worker !== this.worker) return;
       const response = event.data;
@@ -266,6 +281,7 @@ export class BuildClient {
           gpu: response.gpu,
           inspector: new RemoteInspector(this, { worker, build: response.id, source: running.source, options: running.options }),
           workerMillis: response.workerMillis,
+          studioCore: response.studioCore,
           roundTripMillis: this.now() - running.requestedAt,
         };
         this.settle(running, { kind: 'built', result });

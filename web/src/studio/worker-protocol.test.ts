@@ -1,15 +1,14 @@
 import { describe, expect, it } from 'vitest';
 import { readFileSync } from 'node:fs';
-import { buildPlant, initCore } from '../core';
-import { packForGpu } from '../view/gpu-arrays';
+import { initCore, inspectPlant } from '../core';
 import { answerTransferables, transferablesOf } from './worker-protocol';
 
 await initCore(readFileSync(new URL('../../../crate/pkg-core/meristem_core_bg.wasm', import.meta.url)));
 
 describe('transferablesOf', () => {
   it('lists the buffer of every array of a build once, and moving them leaves nothing behind', () => {
-    const build = buildPlant('#iterations 2\naxiom: X\nX -> F[+X]F[-X]+X\nF -> FF');
-    const gpu = packForGpu(build.mesh);
+    const { build, inspector, gpu } = inspectPlant('#iterations 2\naxiom: X\nX -> F[+X]F[-X]+X\nF -> FF', {}, undefined, undefined, true);
+    inspector.free();
     const buffers = transferablesOf(build, gpu);
     const arrays = [...Object.values(build.mesh), build.origins, gpu.normals, gpu.colors].filter((a) => a.byteLength > 0);
     expect(arrays.length).toBeGreaterThanOrEqual(6);

@@ -1,7 +1,6 @@
 // The messages between the page and the build worker (worker.ts), and the transfer lists that move
 // typed arrays out of the worker without copying them.
-import type { BuildOptions, BuildProgress, PlantBuild, PlantInspector, PlantSketch } from '../core';
-import type { GpuArrays } from '../view/gpu-arrays';
+import type { BuildOptions, BuildProgress, GpuArrays, PlantBuild, PlantInspector, PlantSketch } from '../core';
 
 /** The questions a kept build answers: the methods of `PlantInspector`, asked by name. */
 export type InspectQuestion = Exclude<keyof PlantInspector, 'free'>;
@@ -31,7 +30,13 @@ export type WorkerRequest =
   /** Ask kept build `build` a question; `id` ties the answer to it. */
   | { kind: 'inspect'; id: number; build: number; question: InspectQuestion; args: number[] }
   /** Release kept build `build`. */
-  | { kind: 'free'; build: number };
+  | { kind: 'free'; build: number }
+  /**
+   * Load the studio core (crate/pkg, built for speed) in the background: builds made once it has
+   * loaded use it, and their inspectors answer every question (the page asks once its first load is
+   * done; a failed load is logged and the first plant's core goes on building).
+   */
+  | { kind: 'studio-core' };
 
 /** The build request alone. */
 export type BuildRequest = Extract<WorkerRequest, { kind: 'build' }>;
@@ -59,6 +64,8 @@ export type WorkerResponse =
       gpu: GpuArrays;
       /** Time of the core call inside the worker, copying the arrays out of wasm memory included. */
       workerMillis: number;
+      /** Whether the studio core (crate/pkg) built it, rather than the first plant's. */
+      studioCore: boolean;
     }
   | {
       /** The core threw (a panic is a bug); the worker's wasm instance is no longer trusted. */

@@ -45,6 +45,18 @@ describe('highlightOverlay', () => {
   });
 });
 
+describe('highlightOverlay with packed normals', () => {
+  it('reads the normals the GPU has: floats, or 16-bit normalized integers', () => {
+    const m = mesh();
+    m.normals = Float32Array.from({ length: 15 }, (_, i) => (i % 3 === 1 ? -0.6 : 0.8));
+    const packed = Int16Array.from(m.normals, (n) => Math.round(n * 32767));
+    m.normals = new Float32Array(0); // what the build worker sends with packed normals
+    const overlay = highlightOverlay(m, (module) => (module === 9 ? [1, 0, 0] : null), true, packed);
+    const expected = [0.8, -0.6, 0.8, 0.8, -0.6, 0.8, 0.8, -0.6, 0.8];
+    overlay.normals.forEach((n, i) => expect(n).toBeCloseTo(expected[i], 4));
+  });
+});
+
 describe('highlightOverlay without tubes', () => {
   it('leaves out the triangles of modules that drew tubes (kind 0) and keeps the others', () => {
     const m = mesh();

@@ -56,9 +56,10 @@ export const MATERIAL_BARK = 0;
 /**
  * The triangles of every module `colourOf` names, copied (not indexed, so neighbouring modules that
  * share a joint ring keep crisp colours) and painted in that module's colour. `withTubes: false`
- * leaves out the tubes' triangles (the Lines mode draws segments as lines instead).
+ * leaves out the tubes' triangles (the Lines mode draws segments as lines instead). `normals` are
+ * the mesh's, as floats or packed for the GPU (16-bit normalized, `GpuArrays`).
  */
-export function highlightOverlay(mesh: MeshBuffers, colourOf: (module: number) => Rgb | null, withTubes = true): Overlay {
+export function highlightOverlay(mesh: MeshBuffers, colourOf: (module: number) => Rgb | null, withTubes = true, normals: Float32Array | Int16Array = mesh.normals): Overlay {
   const triangles = mesh.indices.length / 3;
   const ranges = mesh.ranges;
   const picked: { first: number; end: number; colour: Rgb }[] = [];
@@ -73,21 +74,22 @@ export function highlightOverlay(mesh: MeshBuffers, colourOf: (module: number) =
     count += end - ranges[r];
   }
   const positions = new Float32Array(count * 9);
-  const normals = new Float32Array(count * 9);
+  const overlayNormals = new Float32Array(count * 9);
   const colors = new Float32Array(count * 9);
+  const scale = normals instanceof Int16Array ? 1 / 32767 : 1;
   let o = 0;
   for (const { first, end, colour } of picked) {
     for (let t = first; t < end; t++) {
       for (let k = 0; k < 3; k++) {
         const v = mesh.indices[3 * t + k] * 3;
         positions.set(mesh.positions.subarray(v, v + 3), o);
-        normals.set(mesh.normals.subarray(v, v + 3), o);
+        for (let c = 0; c < 3; c++) overlayNormals[o + c] = normals[v + c] * scale;
         colors.set(colour, o);
         o += 3;
       }
     }
   }
-  return { positions, normals, colors };
+  return { positions, normals: overlayNormals, colors };
 }
 
 /** Segments as lines (two 3-float ends each) with a colour per end. */

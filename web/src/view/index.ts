@@ -4,6 +4,5 @@ export { PlantView, type PictureLook, type Projection, type ProjectionMode, type
 export { DEFAULT_LINE_WIDTH, LINE_WIDTH_MAX, LINE_WIDTH_MIN, lineWidthOf } from './segment-lines';
 export { ThumbnailRenderer } from './thumbnail';
 export { plantGeometry, lineGeometry, pointsBox } from './plant-geometry';
-export { packForGpu, type GpuArrays } from './gpu-arrays';
 export { framePose, flatPose, type CameraPose, type FlatPose } from './framing';
 export { scenePalette, type ScenePalette } from './palette';

@@ -1,7 +1,6 @@
 // The plant's triangle mesh as three.js BufferGeometries.
 import { Box3, BufferAttribute, BufferGeometry, Sphere, Vector3 } from 'three';
-import type { MeshBuffers } from '../core';
-import type { GpuArrays } from './gpu-arrays';
+import type { GpuArrays, MeshBuffers } from '../core';
 
 /**
  * Wraps the core's mesh arrays (no copy: they are JavaScript-owned already) in a BufferGeometry

@@ -26,12 +26,11 @@ import {
   WebGLRenderer,
   type Camera,
 } from 'three';
-import type { Bounds, MeshBuffers } from '../core';
+import type { Bounds, GpuArrays, MeshBuffers } from '../core';
 import { CameraControls, loadOrbitControls } from './camera-controls';
 import { flatPose, framePose } from './framing';
 import { scenePalette } from './palette';
 import { plantGeometry, pointsBox } from './plant-geometry';
-import type { GpuArrays } from './gpu-arrays';
 import { loadTexture, texturedMaterials, type TexturedMaterials } from './textures';
 import { addHeadlight, addSkyLight, litPlantMaterial, unlitPlantMaterial } from './scene-setup';
 import { MATERIAL_BARK, highlightOverlay, highlightSegments, moduleOfTriangle, type Rgb } from './highlight';
@@ -329,7 +328,9 @@ export class PlantView {
     const lines = this.usesLines;
     this.segmentLines.highlight(mesh && colourOf && lines ? highlightSegments(mesh, colourOf) : null, mesh && colourOf ? 0.55 : 1);
     if (mesh && colourOf) {
-      const overlay = highlightOverlay(mesh, colourOf, !lines);
+      // The normals on the GPU: the mesh's floats, or the worker's packed ones (its floats are then empty).
+      const normals = this.plant.geometry.getAttribute('normal')?.array as Float32Array | Int16Array | undefined;
+      const overlay = highlightOverlay(mesh, colourOf, !lines, normals ?? mesh.normals);
       const geometry = this.overlay.geometry;
       geometry.setAttribute('position', new BufferAttribute(overlay.positions, 3));
       geometry.setAttribute('normal', new BufferAttribute(overlay.normals, 3));
