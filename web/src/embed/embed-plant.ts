@@ -161,7 +161,7 @@ export class EmbedPlant {
     inspector.free();
     this.grammarIterations = build.grammarIterations;
     if (build.ok) {
-      this.view.showPlant(build.mesh, build.flat, outcome.result.gpu);
+      this.view.showPlant(build.mesh, build.flat, outcome.result.gpu, build.stats.bounds);
       this.say('');
     } else {
       const first = build.diagnostics.find((d) => d.severity === 'error');

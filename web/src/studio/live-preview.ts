@@ -228,7 +228,7 @@ export class LivePreview {
     const { build } = result;
     const sameText = this.lastResult?.source === result.source;
     if (build.ok) {
-      view.showPlant(build.mesh, build.flat, result.gpu);
+      view.showPlant(build.mesh, build.flat, result.gpu, build.stats.bounds);
       this.lastGood = result;
       if (this.parts.adopt) this.parts.adopt(result);
       else result.inspector.free();

@@ -23,6 +23,17 @@ describe('plantGeometry', () => {
   });
 });
 
+describe('plantGeometry with the core\'s bounds', () => {
+  it('takes the box it is given instead of measuring the points, and measures them without one', () => {
+    const mesh = strip(10);
+    const given = plantGeometry(mesh, undefined, [[-1, -2, -3], [11, 2, 3]]);
+    expect(given.boundingBox!.min.toArray()).toEqual([-1, -2, -3]);
+    expect(given.boundingBox!.max.toArray()).toEqual([11, 2, 3]);
+    expect(given.boundingSphere!.radius).toBeCloseTo(Math.hypot(6, 2, 3));
+    expect(plantGeometry(mesh).boundingBox!.max.toArray()).toEqual([10, 1, 0]);
+  });
+});
+
 describe('pointsBox', () => {
   it('bounds the points, and is empty without any', () => {
     const box = pointsBox(new Float32Array([1, 2, 3, -1, 5, 0]));

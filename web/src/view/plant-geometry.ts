@@ -1,14 +1,15 @@
 // The plant's triangle mesh as three.js BufferGeometries.
 import { Box3, BufferAttribute, BufferGeometry, Sphere, Vector3 } from 'three';
-import type { GpuArrays, MeshBuffers } from '../core';
+import type { Bounds, GpuArrays, MeshBuffers } from '../core';
 
 /**
  * Wraps the core's mesh arrays (no copy: they are JavaScript-owned already) in a BufferGeometry
  * with `position`, `normal`, `color` (linear RGB) attributes and an index, bounds computed (the
  * sphere from the box: one pass over a million vertices instead of three). With `gpu`, its packed
- * normals and colours are used instead of the mesh's floats.
+ * normals and colours are used instead of the mesh's floats. `bounds`, when given, is a box around
+ * every position (a build's `stats.bounds`, which the core computed), and no pass is made.
  */
-export function plantGeometry(mesh: MeshBuffers, gpu?: GpuArrays): BufferGeometry {
+export function plantGeometry(mesh: MeshBuffers, gpu?: GpuArrays, bounds?: Bounds): BufferGeometry {
   const geometry = new BufferGeometry();
   if (mesh.indices.length === 0 && mesh.lines.length > 0) return lineGeometry(mesh);
   geometry.setAttribute('position', new BufferAttribute(mesh.positions, 3));
@@ -17,7 +18,10 @@ export function plantGeometry(mesh: MeshBuffers, gpu?: GpuArrays): BufferGeometr
   geometry.setIndex(new BufferAttribute(mesh.indices, 1));
   if (mesh.uvs.length === (mesh.positions.length / 3) * 2) geometry.setAttribute('uv', new BufferAttribute(mesh.uvs, 2));
   addMaterialGroups(geometry, mesh);
-  setBounds(geometry, mesh.positions);
+  if (bounds && mesh.positions.length > 0) {
+    geometry.boundingBox = new Box3(new Vector3(...bounds[0]), new Vector3(...bounds[1]));
+    geometry.boundingSphere = geometry.boundingBox.getBoundingSphere(new Sphere());
+  } else setBounds(geometry, mesh.positions);
   return geometry;
 }
 

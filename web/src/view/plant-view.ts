@@ -241,13 +241,14 @@ export class PlantView {
    * Replaces the plant; `flat` says it lies in the plane z = 0 (in `auto` mode it is then shown
    * face-on in 2D). The plant is framed (see the class comment) unless the user moved the camera
    * or the frame is held; a camera's first plant, and the one after {@link frameNextPlant}, always.
-   * `gpu`, when given, holds the normals and colours packed smaller for the GPU (from
-   * {@link packForGpu}, done in the worker): a big plant reaches the GPU in less time.
+   * `gpu`, when given, holds the normals and colours packed smaller for the GPU (by the core, for
+   * the build worker): a big plant reaches the GPU in less time. `bounds`: the build's
+   * `stats.bounds`, which spare a pass over the mesh (see {@link plantGeometry}).
    */
-  showPlant(mesh: MeshBuffers, flat = false, gpu?: GpuArrays): void {
+  showPlant(mesh: MeshBuffers, flat = false, gpu?: GpuArrays, bounds?: Bounds): void {
     const asLines = mesh.indices.length === 0 && mesh.lines.length > 0;
     this.mesh = asLines ? undefined : mesh;
-    this.swapIn(mesh, flat, asLines ? undefined : plantGeometry(mesh, gpu));
+    this.swapIn(mesh, flat, asLines ? undefined : plantGeometry(mesh, gpu, bounds));
   }
 
   /** Puts `mesh` (its `geometry`, or its lines) on screen in place of the old plant. */

@@ -50,6 +50,11 @@ export class SegmentLines {
   private readonly overlay: LineSegments2;
   private modules: Uint32Array = new Uint32Array(0);
   private width = DEFAULT_LINE_WIDTH;
+  /**
+   * Segments given to {@link show} while the lines were hidden: their geometry is made when the
+   * lines are first shown (a big plant's takes tens of milliseconds, wasted in the Tubes mode).
+   */
+  private unmade: Pick<MeshBuffers, 'segmentEnds' | 'segmentColors'> | null = null;
 
   constructor() {
     this.plant = lineSegments(this.width);
@@ -61,12 +66,21 @@ export class SegmentLines {
     this.show(null);
   }
 
-  /** Shows `mesh`'s segments (null: none), without highlight. */
+  /** Shows `mesh`'s segments (null: none), without highlight; while the lines are hidden, once they are shown. */
   show(mesh: Pick<MeshBuffers, 'segmentEnds' | 'segmentColors' | 'segmentModules'> | null): void {
     const empty = new Float32Array(0);
-    setLines(this.plant, mesh?.segmentEnds ?? empty, mesh?.segmentColors ?? empty);
+    this.unmade = { segmentEnds: mesh?.segmentEnds ?? empty, segmentColors: mesh?.segmentColors ?? empty };
+    if (this.group.visible) this.make();
+    else setLines(this.plant, empty, empty); // the old plant's lines go now
     this.modules = mesh?.segmentModules ?? new Uint32Array(0);
     this.highlight(null, 1);
+  }
+
+  /** Makes the geometry of the segments {@link show} was last given. */
+  private make(): void {
+    if (!this.unmade) return;
+    setLines(this.plant, this.unmade.segmentEnds, this.unmade.segmentColors);
+    this.unmade = null;
   }
 
   /** Draws `overlay`'s lines over the plant (null: none) and the plant's own at brightness `dim`. */
@@ -90,6 +104,7 @@ export class SegmentLines {
   /** Whether the lines are drawn. */
   set visible(on: boolean) {
     this.group.visible = on;
+    if (on) this.make();
   }
 
   get visible(): boolean {
