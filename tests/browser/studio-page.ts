@@ -34,6 +34,8 @@ export async function studioIn(page: Page): Promise<StudioPage> {
   const problems: string[] = [];
   page.on('console', (message) => {
     if (message.type() === 'error') problems.push(`console error: ${message.text()}`);
+    // WebGL's errors come as warnings (a draw call refused: e.g. an attribute shorter than the mesh).
+    else if (/GL_INVALID_/.test(message.text())) problems.push(`WebGL error: ${message.text()}`);
   });
   page.on('pageerror', (error) => problems.push(`page error: ${error.message}`));
   page.on('requestfailed', (request) => problems.push(`request failed: ${request.url()} ${request.failure()?.errorText}`));

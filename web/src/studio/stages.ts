@@ -219,7 +219,7 @@ export class StagesMode {
     if (!build.ok) return { ...empty, caption: `${stage.caption}: ${build.diagnostics.find((d) => d.severity === 'error')?.message ?? 'errors'}` };
     const drawn = build.mesh.indices.length > 0 || build.mesh.lines.length > 0;
     if (!drawn) return { ...empty, caption: `${stage.caption} (nothing drawn)` };
-    return { mesh: build.mesh, lines: sketch, flat: build.flat, bounds: build.stats.bounds, caption: stage.caption };
+    return { mesh: build.mesh, gpu: result.gpu, lines: sketch, flat: build.flat, bounds: build.stats.bounds, caption: stage.caption };
   }
 
   private async downloadPng(): Promise<void> {

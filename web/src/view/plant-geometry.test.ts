@@ -53,4 +53,9 @@ describe('plantGeometry with packed normals and colours', () => {
     expect(geometry.getAttribute('color').normalized).toBe(true);
     expect(geometry.getAttribute('color').array).toBeInstanceOf(Uint8Array);
   });
+
+  it('refuses a mesh without its float normals unless the packed ones come with it', () => {
+    const mesh = { ...strip(2), normals: new Float32Array(0), colors: new Float32Array(0) };
+    expect(() => plantGeometry(mesh)).toThrow(/packed/);
+  });
 });

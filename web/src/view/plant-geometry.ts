@@ -12,6 +12,8 @@ import type { Bounds, GpuArrays, MeshBuffers } from '../core';
 export function plantGeometry(mesh: MeshBuffers, gpu?: GpuArrays, bounds?: Bounds): BufferGeometry {
   const geometry = new BufferGeometry();
   if (mesh.indices.length === 0 && mesh.lines.length > 0) return lineGeometry(mesh);
+  // A build worker's mesh has no float normals and colours: they come packed, as `gpu`.
+  if (!gpu && mesh.normals.length !== mesh.positions.length) throw new Error('plantGeometry: a mesh without its normals needs its packed GpuArrays');
   geometry.setAttribute('position', new BufferAttribute(mesh.positions, 3));
   geometry.setAttribute('normal', gpu ? new BufferAttribute(gpu.normals, 3, true) : new BufferAttribute(mesh.normals, 3));
   geometry.setAttribute('color', gpu ? new BufferAttribute(gpu.colors, 3, true) : new BufferAttribute(mesh.colors, 3));

@@ -5,7 +5,7 @@
 // like the studio's first view of them. Drawn on demand into its own canvas; a picture of any size
 // comes out as a PNG with the captions.
 import { Box3, Group, LineBasicMaterial, LineSegments, Mesh, OrthographicCamera, Scene, Vector2, Vector3, WebGLRenderer, type BufferGeometry, type Object3D } from 'three';
-import type { Bounds, MeshBuffers } from '../core';
+import type { Bounds, GpuArrays, MeshBuffers } from '../core';
 import { scenePalette } from './palette';
 import { lineGeometry, plantGeometry } from './plant-geometry';
 import { addHeadlight, addSkyLight, litPlantMaterial, unlitPlantMaterial } from './scene-setup';
@@ -17,6 +17,8 @@ const DARK_SCHEME = '(prefers-color-scheme: dark)';
 export interface StagePlant {
   /** Its mesh; `null` when there is nothing to draw (the caption says why). */
   mesh: MeshBuffers | null;
+  /** Its normals and colours packed for the GPU, when the mesh comes without them (from the build worker). */
+  gpu?: GpuArrays;
   /**
    * Its segments as lines, drawn inside the tubes: a plant drawn small keeps its branches a pixel
    * wide where its tubes would be thinner than a pixel (and vanish).
@@ -74,7 +76,7 @@ export class StagesView {
     this.aimCamera(plants, flat);
     this.plants = plants.map((plant) => {
       if (!plant.mesh) return { object: null, extent: null, caption: plant.caption };
-      const geometry = plantGeometry(plant.mesh);
+      const geometry = plantGeometry(plant.mesh, plant.gpu, plant.bounds);
       const asLines = plant.mesh.indices.length === 0 && plant.mesh.lines.length > 0;
       const object = new Group();
       object.add(asLines ? new LineSegments(geometry, this.lineMaterial) : new Mesh(geometry, this.material()));
