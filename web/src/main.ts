@@ -27,14 +27,17 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   const store = new GrammarStore(browserStorage());
   const kept = new KeptTexts(browserDatabase());
   const keeper = new TextKeeper(store, kept);
-  // The page's own core instance serves the tables (commands, directives, version); builds run in
-  // the build worker's, imports of opened files in an import worker's (with the importers: core/io.ts).
+  // The page compiles the core and hands it to the build worker (builds run there, imports of
+  // opened files in an import worker's, with the importers: core/io.ts); the page's own instance
+  // only says the version. The build worker starts at once, and the studio is set up (the view's
+  // WebGL context, the panels) while the core still downloads: the first build is asked for as
+  // soon as it has arrived (issue 22).
   const starting = { store, kept, keeper, notice, cannotKeep: els.cannotKeep };
-  // The build worker starts at once: its script loads while the page's core does (issue 22).
   const buildClient = new BuildClient(createBuildWorker);
   buildClient.warmUp();
-  const [start] = await Promise.all([startingText(starting, INITIAL_EXAMPLE), initCore()]);
-  els.version.textContent = `core ${coreVersion()}`;
+  const coreStarted = initCore();
+  coreStarted.catch(() => undefined); // awaited below, before the first build: a failure is reported there
+  const start = await startingText(starting, INITIAL_EXAMPLE);
 
   const view = new PlantView(els.viewport);
   const viewOptions = new ViewOptions(sidesChoices(els.viewTools.sides));
@@ -273,6 +276,8 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   renderShortcutHelp(els.shortcutList);
   attachSplitter(els.splitter, els.studio);
 
+  await coreStarted;
+  els.version.textContent = `core ${coreVersion()}`;
   const firstBuild = preview.nextDelivery();
   const underWay = preview.nextProgress();
   preview.rebuild();
