@@ -362,9 +362,6 @@ impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
     fn step(&mut self, step: u32, tracked: bool) -> Result<(), Diagnostic> {
         let model = self.rewriter.model;
         let follows = self.observer.follows_modules();
-        if tracked {
-            self.previous = self.current.clone();
-        }
         if tracked || follows {
             self.rewriter.tracker = Some(Tracker::default());
         }
@@ -373,6 +370,11 @@ impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
             .plan(step, &self.current, &mut *self.rewriter.rng)?;
         self.rewrite(step, tracked)?;
         std::mem::swap(&mut self.current, &mut self.next);
+        if tracked {
+            // The string before the step, kept instead of copied (decomposition takes a new
+            // scratch string).
+            self.previous = std::mem::take(&mut self.next);
+        }
         if !model.decomposition.is_empty() {
             self.decompose(step, tracked)?;
         }
