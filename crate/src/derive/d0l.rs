@@ -147,6 +147,16 @@ impl D0lTable {
         }
     }
 
+    /// How many times each id occurs in the string of `len` modules the last step wrote, when
+    /// nothing changed it since (no decomposition, no cut) and `len` is its length.
+    pub(super) fn take_counts(&mut self, len: usize) -> Option<Vec<u64>> {
+        if !(self.carried && self.counted_len == Some(len)) {
+            return None;
+        }
+        self.counted_len = None;
+        Some(std::mem::take(&mut self.counts))
+    }
+
     /// The length of the string one step makes from `src`, the counts of its ids in
     /// `next_counts`.
     fn next_len(&mut self, src: &LString) -> usize {

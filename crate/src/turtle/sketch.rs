@@ -263,7 +263,12 @@ struct Plain {
 /// leaves to the interpreter, when the grammar bends by tropism, or when a position or width
 /// would be clamped (the check is on every position and width, drawn or not: what the plain loop
 /// refuses, the interpreter draws the same): [`super::sketch`] then draws with the interpreter.
-pub(super) fn plain_sketch(model: &Model, string: &LString, others: Skeleton) -> Option<Sketch> {
+pub(super) fn plain_sketch(
+    model: &Model,
+    string: &LString,
+    id_counts: &[u64],
+    others: Skeleton,
+) -> Option<Sketch> {
     let settings = &model.settings;
     if settings.tropism.1 != 0.0 {
         return None;
@@ -305,12 +310,31 @@ pub(super) fn plain_sketch(model: &Model, string: &LString, others: Skeleton) ->
             _ => 0,
         })
         .collect();
-    let (mut segments, mut other) = (0usize, 0u8);
-    for id in &string.ids {
-        let kind = kinds.get(id.index()).copied().unwrap_or(2);
-        segments += (kind & 1) as usize;
-        other |= kind;
-    }
+    let count = || {
+        let (mut segments, mut other) = (0usize, 0u8);
+        for id in &string.ids {
+            let kind = kinds.get(id.index()).copied().unwrap_or(2);
+            segments += (kind & 1) as usize;
+            other |= kind;
+        }
+        (segments, other)
+    };
+    let (segments, other) = if id_counts.is_empty() {
+        count()
+    } else {
+        // The same sums from the counts of each id, without reading the string.
+        let (mut segments, mut other) = (0u64, 0u8);
+        for (index, &n) in id_counts.iter().enumerate() {
+            if n > 0 {
+                let kind = kinds.get(index).copied().unwrap_or(2);
+                segments += n * (kind & 1) as u64;
+                other |= kind;
+            }
+        }
+        let counted = (usize::try_from(segments).ok()?, other);
+        debug_assert_eq!(counted, count(), "the id counts are the string's");
+        counted
+    };
     if other & 2 != 0 {
         return None;
     }
