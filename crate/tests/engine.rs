@@ -486,6 +486,9 @@ fn id_counts_are_the_turtle_strings_or_empty() {
         "axiom: X\nX -> F[+X]X\nhomomorphism:\nF -> GG\n",
         4
     ));
-    assert!(!counted("axiom: X\nX -> A[+X]X\ndecomposition:\nA -> FF\n", 4));
+    assert!(!counted(
+        "axiom: X\nX -> A[+X]X\ndecomposition:\nA -> FF\n",
+        4
+    ));
     assert!(!counted("axiom: A(1)\nA(x) -> F(x)[+A(x/2)]A(x)\n", 4));
 }
