@@ -94,10 +94,10 @@ impl D0lTable {
         let len = self.prepare(model, src, dst, step)?;
         let mut origin = Vec::with_capacity(len + PAD);
         let mut parent = Vec::with_capacity(len + PAD);
+        // One width for every table whose successors fit [`PAD`] (one step of a derivation is
+        // tracked; one copy of the loop keeps the first plant's core small).
         match self.width {
-            4 => self.write_tracked::<4>(src, dst, &mut origin, &mut parent),
-            8 => self.write_tracked::<8>(src, dst, &mut origin, &mut parent),
-            PAD => self.write_tracked::<PAD>(src, dst, &mut origin, &mut parent),
+            4 | 8 | PAD => self.write_tracked::<PAD>(src, dst, &mut origin, &mut parent),
             _ => {
                 for (i, &id) in src.ids.iter().enumerate() {
                     let (start, n) = self.slot[id.index()];
