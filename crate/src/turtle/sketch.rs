@@ -301,7 +301,7 @@ pub(super) fn plain_sketch(
             }
         })
         .collect();
-    // One pass to size the lines: bit 0 draws, bit 1 is left to the interpreter.
+    // Each id's kind: bit 0 draws, bit 1 is left to the interpreter.
     let kinds: Vec<u8> = steps
         .iter()
         .map(|s| match s.op {
@@ -310,6 +310,21 @@ pub(super) fn plain_sketch(
             _ => 0,
         })
         .collect();
+    let (segments, other) = sizes(&kinds, string, id_counts)?;
+    if other & 2 != 0 {
+        return None;
+    }
+    if string.is_parametric() {
+        plain_loop::<true>(settings, &steps, string, others, segments)
+    } else {
+        plain_loop::<false>(settings, &steps, string, others, segments)
+    }
+}
+
+/// How many lines the string draws at most, and the kinds of its modules or-ed together (bit 0
+/// draws, bit 1 is left to the interpreter), from `kinds` (one per id) and the counts of each id
+/// when known (`id_counts`), else from a pass over the string.
+fn sizes(kinds: &[u8], string: &LString, id_counts: &[u64]) -> Option<(usize, u8)> {
     let count = || {
         let (mut segments, mut other) = (0usize, 0u8);
         for id in &string.ids {
@@ -319,30 +334,21 @@ pub(super) fn plain_sketch(
         }
         (segments, other)
     };
-    let (segments, other) = if id_counts.is_empty() {
-        count()
-    } else {
-        // The same sums from the counts of each id, without reading the string.
-        let (mut segments, mut other) = (0u64, 0u8);
-        for (index, &n) in id_counts.iter().enumerate() {
-            if n > 0 {
-                let kind = kinds.get(index).copied().unwrap_or(2);
-                segments += n * (kind & 1) as u64;
-                other |= kind;
-            }
+    if id_counts.is_empty() {
+        return Some(count());
+    }
+    // The same sums from the counts of each id, without reading the string.
+    let (mut segments, mut other) = (0u64, 0u8);
+    for (index, &n) in id_counts.iter().enumerate() {
+        if n > 0 {
+            let kind = kinds.get(index).copied().unwrap_or(2);
+            segments += n * (kind & 1) as u64;
+            other |= kind;
         }
-        let counted = (usize::try_from(segments).ok()?, other);
-        debug_assert_eq!(counted, count(), "the id counts are the string's");
-        counted
-    };
-    if other & 2 != 0 {
-        return None;
     }
-    if string.is_parametric() {
-        plain_loop::<true>(settings, &steps, string, others, segments)
-    } else {
-        plain_loop::<false>(settings, &steps, string, others, segments)
-    }
+    let counted = (usize::try_from(segments).ok()?, other);
+    debug_assert_eq!(counted, count(), "the id counts are the string's");
+    Some(counted)
 }
 
 /// The loop of [`plain_sketch`], once for strings with parameters (`PARAMETRIC`: a first
