@@ -457,3 +457,38 @@ fn a_parametric_step_after_decomposition_is_sized_from_the_decomposed_string() {
     assert_eq!(derived(src, 2), "A(4)A(3)A(4)A(3)");
     assert_eq!(derived(src, 3).matches('A').count(), 8);
 }
+
+/// The counts of each id in the string the turtle reads, as the derivation gives them without
+/// reading it: exactly the string's on the D0L path, nothing where the string read changed after
+/// the counting (homomorphism, decomposition) or was not counted (parameters, 0 steps).
+#[test]
+fn id_counts_are_the_turtle_strings_or_empty() {
+    let counted = |src: &str, steps: u32| {
+        let m = model(src);
+        let d = derive(&m, &DeriveOptions { steps, seed: None })
+            .unwrap_or_else(|e| panic!("{}", e.message));
+        let string = d.turtle_string();
+        if d.id_counts.is_empty() {
+            return false;
+        }
+        let mut expected = vec![0u64; d.id_counts.len()];
+        for id in &string.ids {
+            expected[id.index()] += 1;
+        }
+        assert_eq!(d.id_counts, expected, "{src}");
+        true
+    };
+    assert!(counted("axiom: X\nX -> F[+X]F[-X]+X\nF -> FF\n", 6));
+    assert!(counted("axiom: X\nX -> F[+X]F[-X]+X\nF -> FF\n", 1));
+    assert!(counted("axiom: FX\nX -> X+YF+\nY -> -FX-Y\n", 9));
+    assert!(!counted("axiom: X\nX -> F[+X]F[-X]+X\nF -> FF\n", 0));
+    assert!(!counted(
+        "axiom: X\nX -> F[+X]X\nhomomorphism:\nF -> GG\n",
+        4
+    ));
+    assert!(!counted(
+        "axiom: X\nX -> A[+X]X\ndecomposition:\nA -> FF\n",
+        4
+    ));
+    assert!(!counted("axiom: A(1)\nA(x) -> F(x)[+A(x/2)]A(x)\n", 4));
+}

@@ -81,7 +81,9 @@ impl D0lTable {
         })
     }
 
-    /// [`D0lTable::step`], returning for each written module the production that made it.
+    /// [`D0lTable::step`], returning for each written module the production that made it and
+    /// the index in `src` of the module it was rewritten from: the three arrays written in one
+    /// pass, each module's share as one store of the copy width.
     pub(super) fn step_tracked(
         &mut self,
         model: &Model,
@@ -89,16 +91,70 @@ impl D0lTable {
         dst: &mut LString,
         step: u32,
     ) -> Result<(Vec<u32>, Vec<u32>), Diagnostic> {
-        self.step(model, src, dst, step)?;
-        let mut origin = Vec::with_capacity(dst.len());
-        let mut parent = Vec::with_capacity(dst.len());
-        for (i, &id) in src.ids.iter().enumerate() {
-            let (_, len) = self.slot[id.index()];
-            let production = self.production_of[id.index()];
-            origin.extend(std::iter::repeat_n(production, len as usize));
-            parent.extend(std::iter::repeat_n(i as u32, len as usize));
+        let len = self.prepare(model, src, dst, step)?;
+        let mut origin = Vec::with_capacity(len + PAD);
+        let mut parent = Vec::with_capacity(len + PAD);
+        // One width for every table whose successors fit [`PAD`] (one step of a derivation is
+        // tracked; one copy of the loop keeps the first plant's core small).
+        match self.width {
+            4 | 8 | PAD => self.write_tracked::<PAD>(src, dst, &mut origin, &mut parent),
+            _ => {
+                for (i, &id) in src.ids.iter().enumerate() {
+                    let (start, n) = self.slot[id.index()];
+                    put(&mut dst.ids, &self.successors, start as usize, n as usize);
+                    let production = self.production_of[id.index()];
+                    origin.extend(std::iter::repeat_n(production, n as usize));
+                    parent.extend(std::iter::repeat_n(i as u32, n as usize));
+                }
+            }
         }
+        self.finish(dst, len);
         Ok((origin, parent))
+    }
+
+    /// [`D0lTable::write`] with provenance: each module's successor, its production and its
+    /// index, each as `W` values stored at once into the arrays' spare room (what lies past a
+    /// successor's length is overwritten by the next module), the lengths set once at the end.
+    /// The room is checked per module (a slice index), so wrong counts could not write past it.
+    #[inline(never)]
+    fn write_tracked<const W: usize>(
+        &self,
+        src: &LString,
+        dst: &mut LString,
+        origin: &mut Vec<u32>,
+        parent: &mut Vec<u32>,
+    ) {
+        let ids_out = dst.ids.spare_capacity_mut();
+        let origin_out = origin.spare_capacity_mut();
+        let parent_out = parent.spare_capacity_mut();
+        let mut at = 0usize;
+        for (i, &id) in src.ids.iter().enumerate() {
+            let (start, n) = self.slot[id.index()];
+            let (start, n) = (start as usize, n as usize);
+            let production = self.production_of[id.index()];
+            let mut successor = [ModuleId(0); W];
+            successor.copy_from_slice(&self.successors[start..start + W]);
+            store(&mut ids_out[at..at + W], successor);
+            fill::<W>(&mut origin_out[at..at + W], production);
+            fill::<W>(&mut parent_out[at..at + W], i as u32);
+            at += n.min(W);
+        }
+        // SAFETY: the loop initialised the first `at` elements of all three arrays.
+        unsafe {
+            dst.ids.set_len(at);
+            origin.set_len(at);
+            parent.set_len(at);
+        }
+    }
+
+    /// How many times each id occurs in the string of `len` modules the last step wrote, when
+    /// nothing changed it since (no decomposition, no cut) and `len` is its length.
+    pub(super) fn take_counts(&mut self, len: usize) -> Option<Vec<u64>> {
+        if !(self.carried && self.counted_len == Some(len)) {
+            return None;
+        }
+        self.counted_len = None;
+        Some(std::mem::take(&mut self.counts))
     }
 
     /// The length of the string one step makes from `src`, the counts of its ids in
@@ -141,6 +197,31 @@ impl D0lTable {
         dst: &mut LString,
         step: u32,
     ) -> Result<(), Diagnostic> {
+        let len = self.prepare(model, src, dst, step)?;
+        match self.width {
+            4 => self.write::<4>(src, dst),
+            8 => self.write::<8>(src, dst),
+            PAD => self.write::<PAD>(src, dst),
+            _ => {
+                for &id in &src.ids {
+                    let (start, n) = self.slot[id.index()];
+                    put(&mut dst.ids, &self.successors, start as usize, n as usize);
+                }
+            }
+        }
+        self.finish(dst, len);
+        Ok(())
+    }
+
+    /// The length of the next string, checked, with `dst` emptied and room for it and the copy
+    /// width's overhang.
+    fn prepare(
+        &mut self,
+        model: &Model,
+        src: &LString,
+        dst: &mut LString,
+        step: u32,
+    ) -> Result<usize, Diagnostic> {
         let len = self.next_len(src);
         self.counted_len = None;
         check_size(model, step, len, len.saturating_mul(size_of::<ModuleId>()))?;
@@ -153,20 +234,40 @@ impl D0lTable {
             }
             dst.ids = fresh;
         }
-        match self.width {
-            4 => self.write::<4>(src, dst),
-            8 => self.write::<8>(src, dst),
-            PAD => self.write::<PAD>(src, dst),
-            _ => {
-                for &id in &src.ids {
-                    let (start, n) = self.slot[id.index()];
-                    put(&mut dst.ids, &self.successors, start as usize, n as usize);
-                }
-            }
-        }
+        Ok(len)
+    }
+
+    /// After a step wrote `dst`, `len` modules: its counts are the next step's.
+    fn finish(&mut self, dst: &LString, len: usize) {
         debug_assert_eq!(dst.len(), len);
         std::mem::swap(&mut self.counts, &mut self.next_counts);
-        self.counted_len = Some(len);
-        Ok(())
+        self.counted_len = (dst.len() == len).then_some(len);
     }
+}
+
+/// Stores `values` into `slot` (exactly `W` elements) at once.
+#[inline(always)]
+fn store<T: Copy, const W: usize>(slot: &mut [std::mem::MaybeUninit<T>], values: [T; W]) {
+    assert_eq!(slot.len(), W);
+    // SAFETY: `slot` is `W` elements of `T`, as `values` is; `MaybeUninit<T>` has `T`'s layout.
+    unsafe { (slot.as_mut_ptr() as *mut [T; W]).write_unaligned(values) }
+}
+
+/// Stores `W` (a multiple of 4) copies of `value` into `slot` (exactly `W` elements): with
+/// WebAssembly SIMD, as 4 at a time (rustc writes `[value; W]` as `W` stores of one).
+#[inline(always)]
+fn fill<const W: usize>(slot: &mut [std::mem::MaybeUninit<u32>], value: u32) {
+    assert_eq!(slot.len(), W);
+    #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+    {
+        use core::arch::wasm32::{u32x4_splat, v128};
+        let four = u32x4_splat(value);
+        let at = slot.as_mut_ptr() as *mut v128;
+        for k in 0..W / 4 {
+            // SAFETY: `slot` holds `W` u32s, 16 bytes for each k < W / 4.
+            unsafe { at.add(k).write_unaligned(four) }
+        }
+    }
+    #[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
+    store(slot, [value; W]);
 }

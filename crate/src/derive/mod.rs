@@ -65,6 +65,10 @@ pub struct Derivation {
     /// Filled by [`derive_tracked`]: for each module of `string`, the index in `previous` of the
     /// module it was rewritten or copied from (empty after 0 steps).
     pub parent: Vec<u32>,
+    /// How many times each module id occurs in the string the turtle reads, indexed by id, when
+    /// the derivation knows it without reading that string (the D0L path counts ids to size its
+    /// steps); empty otherwise. The sketch turtle sizes its lines with it.
+    pub id_counts: Vec<u64>,
 }
 
 /// In [`Derivation::origin`]: no production made this module in the last step.
@@ -362,9 +366,6 @@ impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
     fn step(&mut self, step: u32, tracked: bool) -> Result<(), Diagnostic> {
         let model = self.rewriter.model;
         let follows = self.observer.follows_modules();
-        if tracked {
-            self.previous = self.current.clone();
-        }
         if tracked || follows {
             self.rewriter.tracker = Some(Tracker::default());
         }
@@ -373,6 +374,11 @@ impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
             .plan(step, &self.current, &mut *self.rewriter.rng)?;
         self.rewrite(step, tracked)?;
         std::mem::swap(&mut self.current, &mut self.next);
+        if tracked {
+            // The string before the step, kept instead of copied (decomposition takes a new
+            // scratch string).
+            self.previous = std::mem::take(&mut self.next);
+        }
         if !model.decomposition.is_empty() {
             self.decompose(step, tracked)?;
         }
@@ -448,7 +454,12 @@ impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
 
     /// The derivation, its provenance complete (or empty when the last step recorded none), and
     /// the string the turtle reads.
-    fn finish(self, steps: u32, track: bool) -> Result<Derivation, Diagnostic> {
+    fn finish(mut self, steps: u32, track: bool) -> Result<Derivation, Diagnostic> {
+        let id_counts = self
+            .d0l
+            .as_mut()
+            .and_then(|table| table.take_counts(self.current.len()))
+            .unwrap_or_default();
         let Run {
             mut rewriter,
             current,
@@ -472,6 +483,7 @@ impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
             turtle_origin: Vec::new(),
             previous,
             parent,
+            id_counts,
         };
         homomorphism(&mut rewriter, steps, &mut derivation, track)?;
         Ok(derivation)
@@ -532,5 +544,7 @@ fn homomorphism<R: rand::Rng>(
     }
     derivation.interpreted = Some(shown);
     derivation.turtle_origin = turtle_origin;
+    // The turtle reads another string than the one counted.
+    derivation.id_counts = Vec::new();
     Ok(())
 }

@@ -322,7 +322,9 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Watch<'_, '_>) -
     watch.timings.derive = watch.lap();
     if let Some(None) = derived.as_ref().filter(|_| options.sketch) {
         watch.start(Stage::Interpret);
-        let sketch = turtle::sketch(&model, result.derivation.turtle_string());
+        let derivation = &result.derivation;
+        let sketch =
+            turtle::sketch_counted(&model, derivation.turtle_string(), &derivation.id_counts);
         watch.timings.interpret = watch.lap();
         if let Some(module) = sketch.clamped() {
             result

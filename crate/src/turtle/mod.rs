@@ -52,8 +52,15 @@ pub fn interpret_sized(model: &Model, string: &LString, segments: usize) -> Skel
 /// Runs the turtle over `string` drawing only its segments, as lines ([`Sketch`]): line `i` is
 /// segment `i` of [`interpret`]'s skeleton.
 pub fn sketch(model: &Model, string: &LString) -> Sketch {
+    sketch_counted(model, string, &[])
+}
+
+/// [`sketch`], with how many times each module id occurs in `string` (indexed by id, as
+/// [`crate::derive::Derivation::id_counts`]; empty: not known), which spares the turtle a pass
+/// over the string to size its lines.
+pub fn sketch_counted(model: &Model, string: &LString, id_counts: &[u64]) -> Sketch {
     let others = empty_skeleton(&model.settings, false);
-    if let Some(sketch) = sketch::plain_sketch(model, string, others.clone()) {
+    if let Some(sketch) = sketch::plain_sketch(model, string, id_counts, others.clone()) {
         return sketch;
     }
     Interpreter::new(model, string, None, None, Sketch::new(others, 0)).run(string)

@@ -263,7 +263,12 @@ struct Plain {
 /// leaves to the interpreter, when the grammar bends by tropism, or when a position or width
 /// would be clamped (the check is on every position and width, drawn or not: what the plain loop
 /// refuses, the interpreter draws the same): [`super::sketch`] then draws with the interpreter.
-pub(super) fn plain_sketch(model: &Model, string: &LString, others: Skeleton) -> Option<Sketch> {
+pub(super) fn plain_sketch(
+    model: &Model,
+    string: &LString,
+    id_counts: &[u64],
+    others: Skeleton,
+) -> Option<Sketch> {
     let settings = &model.settings;
     if settings.tropism.1 != 0.0 {
         return None;
@@ -296,7 +301,7 @@ pub(super) fn plain_sketch(model: &Model, string: &LString, others: Skeleton) ->
             }
         })
         .collect();
-    // One pass to size the lines: bit 0 draws, bit 1 is left to the interpreter.
+    // Each id's kind: bit 0 draws, bit 1 is left to the interpreter.
     let kinds: Vec<u8> = steps
         .iter()
         .map(|s| match s.op {
@@ -305,12 +310,7 @@ pub(super) fn plain_sketch(model: &Model, string: &LString, others: Skeleton) ->
             _ => 0,
         })
         .collect();
-    let (mut segments, mut other) = (0usize, 0u8);
-    for id in &string.ids {
-        let kind = kinds.get(id.index()).copied().unwrap_or(2);
-        segments += (kind & 1) as usize;
-        other |= kind;
-    }
+    let (segments, other) = sizes(&kinds, string, id_counts)?;
     if other & 2 != 0 {
         return None;
     }
@@ -319,6 +319,36 @@ pub(super) fn plain_sketch(model: &Model, string: &LString, others: Skeleton) ->
     } else {
         plain_loop::<false>(settings, &steps, string, others, segments)
     }
+}
+
+/// How many lines the string draws at most, and the kinds of its modules or-ed together (bit 0
+/// draws, bit 1 is left to the interpreter), from `kinds` (one per id) and the counts of each id
+/// when known (`id_counts`), else from a pass over the string.
+fn sizes(kinds: &[u8], string: &LString, id_counts: &[u64]) -> Option<(usize, u8)> {
+    let count = || {
+        let (mut segments, mut other) = (0usize, 0u8);
+        for id in &string.ids {
+            let kind = kinds.get(id.index()).copied().unwrap_or(2);
+            segments += (kind & 1) as usize;
+            other |= kind;
+        }
+        (segments, other)
+    };
+    if id_counts.is_empty() {
+        return Some(count());
+    }
+    // The same sums from the counts of each id, without reading the string.
+    let (mut segments, mut other) = (0u64, 0u8);
+    for (index, &n) in id_counts.iter().enumerate() {
+        if n > 0 {
+            let kind = kinds.get(index).copied().unwrap_or(2);
+            segments += n * (kind & 1) as u64;
+            other |= kind;
+        }
+    }
+    let counted = (usize::try_from(segments).ok()?, other);
+    debug_assert_eq!(counted, count(), "the id counts are the string's");
+    Some(counted)
 }
 
 /// The loop of [`plain_sketch`], once for strings with parameters (`PARAMETRIC`: a first
@@ -365,21 +395,8 @@ fn plain_loop<const PARAMETRIC: bool>(
     // (first line, colour index) for each run of lines of one colour.
     let mut runs: Vec<(usize, u16)> = vec![(0, 0)];
     let mut color_index = 0u16;
-    let (mut extent_min, mut extent_max, mut max_abs_z) =
-        (DVec3::INFINITY, DVec3::NEG_INFINITY, 0.0f64);
-    let mut grow = |p: DVec3| {
-        for k in 0..3 {
-            if p[k] < extent_min[k] {
-                extent_min[k] = p[k];
-            }
-            if p[k] > extent_max[k] {
-                extent_max[k] = p[k];
-            }
-        }
-        if p.z.abs() > max_abs_z {
-            max_abs_z = p.z.abs();
-        }
-    };
+    let mut bounds = Bounds::new();
+    let mut grow = |p: DVec3| bounds.add(p);
     let first = |index: usize| -> Option<f64> {
         if PARAMETRIC {
             string
@@ -519,13 +536,86 @@ fn plain_loop<const PARAMETRIC: bool>(
         colors,
         modules,
     };
-    sketch.extent = Extent {
-        min: extent_min,
-        max: extent_max,
-        max_abs_z,
-    };
+    sketch.extent = bounds.extent();
     sketch.others.end = t.p;
     Some(sketch)
+}
+
+/// The box around the ends of the lines as the plain loop grows it, and their largest |z|: an
+/// [`Extent`] gathered by comparisons (`min` and `max` pay for NaN semantics on every call).
+/// With WebAssembly SIMD, x and y side by side: `pmin` and `pmax` are those comparisons, two
+/// lanes at a time.
+#[derive(Clone, Copy)]
+struct Bounds {
+    #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+    xy: (core::arch::wasm32::v128, core::arch::wasm32::v128),
+    min: DVec3,
+    max: DVec3,
+    max_abs_z: f64,
+}
+
+impl Bounds {
+    fn new() -> Bounds {
+        Bounds {
+            #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+            xy: (
+                core::arch::wasm32::f64x2_splat(f64::INFINITY),
+                core::arch::wasm32::f64x2_splat(f64::NEG_INFINITY),
+            ),
+            min: DVec3::INFINITY,
+            max: DVec3::NEG_INFINITY,
+            max_abs_z: 0.0,
+        }
+    }
+
+    /// `p` in the box: each bound replaced where `p` passes it.
+    #[inline(always)]
+    fn add(&mut self, p: DVec3) {
+        #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+        {
+            use core::arch::wasm32::{f64x2, f64x2_pmax, f64x2_pmin};
+            let xy = f64x2(p.x, p.y);
+            // pmin(a, b) is `b < a ? b : a`, pmax(a, b) `a < b ? b : a`.
+            self.xy = (f64x2_pmin(self.xy.0, xy), f64x2_pmax(self.xy.1, xy));
+        }
+        #[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
+        for k in 0..2 {
+            if p[k] < self.min[k] {
+                self.min[k] = p[k];
+            }
+            if p[k] > self.max[k] {
+                self.max[k] = p[k];
+            }
+        }
+        if p.z < self.min.z {
+            self.min.z = p.z;
+        }
+        if p.z > self.max.z {
+            self.max.z = p.z;
+        }
+        if p.z.abs() > self.max_abs_z {
+            self.max_abs_z = p.z.abs();
+        }
+    }
+
+    fn extent(&self) -> Extent {
+        #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+        let (min, max) = {
+            use core::arch::wasm32::f64x2_extract_lane as lane;
+            let (min, max) = self.xy;
+            (
+                DVec3::new(lane::<0>(min), lane::<1>(min), self.min.z),
+                DVec3::new(lane::<0>(max), lane::<1>(max), self.max.z),
+            )
+        };
+        #[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
+        let (min, max) = (self.min, self.max);
+        Extent {
+            min,
+            max,
+            max_abs_z: self.max_abs_z,
+        }
+    }
 }
 
 /// The sine and cosine of a turn by `angle` degrees (none for NaN) in the direction `sign`, as

@@ -373,7 +373,7 @@ fn the_plain_sketch_loop_draws_the_skeletons_segments() {
         let (model, string) = model_and_string(src);
         let others = interpreter::empty_skeleton(&model.settings, false);
         assert!(
-            sketch::plain_sketch(&model, &string, others).is_some(),
+            sketch::plain_sketch(&model, &string, &[], others).is_some(),
             "the plain loop should draw {src}"
         );
         // Frames are not re-orthonormalised after each turn: far below a pixel.
@@ -387,7 +387,7 @@ fn other_sketches_are_drawn_by_the_interpreter_exactly() {
         let (model, string) = model_and_string(src);
         let others = interpreter::empty_skeleton(&model.settings, false);
         assert!(
-            sketch::plain_sketch(&model, &string, others).is_none(),
+            sketch::plain_sketch(&model, &string, &[], others).is_none(),
             "the plain loop should leave {src} to the interpreter"
         );
         assert_sketch_draws_the_skeleton(src, 0.0);
