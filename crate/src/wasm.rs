@@ -499,16 +499,16 @@ macro_rules! mesh_getters {
 
             /// `normals` packed for the GPU: 16-bit normalized (`mesh::pack_normals`).
             #[wasm_bindgen(js_name = packedNormals)]
-            pub fn packed_normals(&self) -> js_sys::Int16Array {
+            pub fn packed_normals(&self) -> Vec<i16> {
                 let $plant = self;
-                js_sys::Int16Array::from(&mesh::pack_normals(&$get.mesh.normals)[..])
+                mesh::pack_normals(&$get.mesh.normals)
             }
 
             /// `colors` packed for the GPU: 8-bit normalized (`mesh::pack_colors`).
             #[wasm_bindgen(js_name = packedColors)]
-            pub fn packed_colors(&self) -> js_sys::Uint8Array {
+            pub fn packed_colors(&self) -> Vec<u8> {
                 let $plant = self;
-                js_sys::Uint8Array::from(&mesh::pack_colors(&$get.mesh.colors)[..])
+                mesh::pack_colors(&$get.mesh.colors)
             }
 
             /// 3 vertex indices per triangle.
