@@ -145,6 +145,8 @@ export class PlantView {
   private refitHinted = false;
   private readonly refitListeners = new Set<(shown: boolean) => void>();
   private renderQueued = false;
+  /** The fence after the last frame drawn, until the GPU has passed it ({@link renderWhenDrawn}). */
+  private drawn: WebGLSync | null = null;
   private readonly darkScheme = window.matchMedia(DARK_SCHEME);
   private readonly resizeObserver: ResizeObserver;
   private readonly renderListeners = new Set<() => void>();
@@ -845,10 +847,29 @@ export class PlantView {
   private requestRender(): void {
     if (this.renderQueued) return;
     this.renderQueued = true;
-    requestAnimationFrame(() => {
-      this.renderQueued = false;
-      this.renderer.render(this.scene, this.active.camera);
-      for (const listener of this.renderListeners) listener();
-    });
+    requestAnimationFrame(() => this.renderWhenDrawn());
+  }
+
+  /**
+   * Renders at an animation frame once the GPU has finished the frame before (a fence after each):
+   * a frame of a million-vertex plant can keep a software GPU busy for up to a second, and a new
+   * plant's upload made meanwhile held the page's thread until then (long tasks of 0.3 to 3 s while
+   * typing into that tree, `tests/browser/responsiveness.test.ts`). A GPU is done long before the
+   * next frame, and nothing waits.
+   */
+  private renderWhenDrawn(): void {
+    const gl = this.renderer.getContext();
+    if (this.drawn && gl instanceof WebGL2RenderingContext) {
+      if (gl.clientWaitSync(this.drawn, 0, 0) === gl.TIMEOUT_EXPIRED) {
+        requestAnimationFrame(() => this.renderWhenDrawn());
+        return;
+      }
+      gl.deleteSync(this.drawn);
+    }
+    this.drawn = null;
+    this.renderQueued = false;
+    this.renderer.render(this.scene, this.active.camera);
+    if (gl instanceof WebGL2RenderingContext) this.drawn = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
+    for (const listener of this.renderListeners) listener();
   }
 }
