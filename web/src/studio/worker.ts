@@ -5,8 +5,9 @@
 // context-sensitivity view's explanations and the derived-string panel's module texts), until the
 // page frees it; a plant the page still shows after its worker was replaced is built again and
 // kept (`keep`). Once the page's first load is done it asks for the studio core (`studio-core`),
-// which later builds use: built for speed, it meshes a big plant in about half the time. Started by createBuildWorker
-// (worker-client.ts). A big plant is first sent as a sketch (its segments as lines), then built.
+// which later builds use: built for speed, it meshes a big plant in about two thirds of the time.
+// Started by createBuildWorker (worker-client.ts). A big plant is first sent as a sketch (its
+// segments as lines), then built.
 import { CoreCrashed, initCore, inspectPlant, loadStudioCore, studioCoreInUse, type BuildOptions, type BuildProgress, type PlantInspector } from '../core';
 import {
   answerTransferables,
