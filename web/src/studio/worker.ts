@@ -69,10 +69,14 @@ async function inspectorFor(id: number, question: InspectQuestion): Promise<Plan
   const entry = kept.get(id);
   if (!entry || entry.studio || !STUDIO_QUESTIONS.has(question)) return entry?.inspector;
   await loadStudioCore();
-  const again = kept.get(id);
-  if (!again) return undefined; // freed meanwhile
-  if (!again.studio) keep(id, inspectPlant(again.source, again.options).inspector, again.source, again.options);
+  buildAgainWithStudioCore(id); // nothing if it was freed meanwhile
   return kept.get(id)?.inspector;
+}
+
+/** Kept build `id`, built by the first plant's core, is built again by the studio core (the same text and options give the same derivation). */
+function buildAgainWithStudioCore(id: number): void {
+  const entry = kept.get(id);
+  if (entry && !entry.studio) keep(id, inspectPlant(entry.source, entry.options).inspector, entry.source, entry.options);
 }
 
 /**
@@ -83,11 +87,10 @@ async function inspectorFor(id: number, question: InspectQuestion): Promise<Plan
  * first edits of a big tree meshed about half as fast without this).
  */
 function warmStudioCore(): void {
-  const newest = [...kept].at(-1);
-  if (!newest || newest[1].studio) return;
-  const [id, { source, options }] = newest;
+  const newest = [...kept.keys()].at(-1);
+  if (newest === undefined) return;
   try {
-    keep(id, inspectPlant(source, options).inspector, source, options);
+    buildAgainWithStudioCore(newest);
   } catch (error) {
     console.error('Meristem: the studio core failed to build the plant shown again', error); // it built before: a bug
   }

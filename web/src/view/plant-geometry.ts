@@ -20,10 +20,7 @@ export function plantGeometry(mesh: MeshBuffers, gpu?: GpuArrays, bounds?: Bound
   geometry.setIndex(new BufferAttribute(mesh.indices, 1));
   if (mesh.uvs.length === (mesh.positions.length / 3) * 2) geometry.setAttribute('uv', new BufferAttribute(mesh.uvs, 2));
   addMaterialGroups(geometry, mesh);
-  if (bounds && mesh.positions.length > 0) {
-    geometry.boundingBox = new Box3(new Vector3(...bounds[0]), new Vector3(...bounds[1]));
-    geometry.boundingSphere = geometry.boundingBox.getBoundingSphere(new Sphere());
-  } else setBounds(geometry, mesh.positions);
+  setBox(geometry, bounds && mesh.positions.length > 0 ? new Box3(new Vector3(...bounds[0]), new Vector3(...bounds[1])) : pointsBox(mesh.positions));
   return geometry;
 }
 
@@ -41,10 +38,10 @@ export function addMaterialGroups(geometry: BufferGeometry, mesh: MeshBuffers): 
   }
 }
 
-/** Sets a geometry's bounding box from its points and its bounding sphere around that box. */
-function setBounds(geometry: BufferGeometry, points: Float32Array): void {
-  geometry.boundingBox = pointsBox(points);
-  geometry.boundingSphere = geometry.boundingBox.getBoundingSphere(new Sphere());
+/** Sets a geometry's bounding box and its bounding sphere around that box. */
+function setBox(geometry: BufferGeometry, box: Box3): void {
+  geometry.boundingBox = box;
+  geometry.boundingSphere = box.getBoundingSphere(new Sphere());
 }
 
 /**
@@ -55,7 +52,7 @@ export function lineGeometry(mesh: Pick<MeshBuffers, 'lines' | 'lineColors'>): B
   const geometry = new BufferGeometry();
   geometry.setAttribute('position', new BufferAttribute(mesh.lines, 3));
   geometry.setAttribute('color', new BufferAttribute(mesh.lineColors, 3));
-  setBounds(geometry, mesh.lines);
+  setBox(geometry, pointsBox(mesh.lines));
   return geometry;
 }
 
