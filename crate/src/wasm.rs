@@ -646,7 +646,7 @@ impl PlantBuild {
     /// For each module of the derived string, the index of the production that made it in the
     /// last step, or 4294967295 (u32::MAX) when it was copied.
     pub fn origins(&self) -> js_sys::Uint32Array {
-        js_sys::Uint32Array::from(&self.build.derivation.origin[..])
+        js_sys::Uint32Array::from(self.build.derivation.origin())
     }
 
     /// The productions of the productions section, as JSON `[{index, from, to, label, context,
@@ -805,7 +805,7 @@ impl PlantInspector {
     /// For each module of the derived string, the module of the string the last step read it
     /// comes from (empty after 0 steps).
     pub fn parents(&self) -> js_sys::Uint32Array {
-        js_sys::Uint32Array::from(&self.build.derivation.parent[..])
+        js_sys::Uint32Array::from(self.build.derivation.parent())
     }
 
     /// A fingerprint of the derived string (16 hex digits): equal for equal derivations.

@@ -257,7 +257,7 @@ fn a_module_explanation_counts_every_rewriting_of_its_production() {
     let whole = inspector.explain(1).expect("a step").expect("no error");
     let f = b
         .derivation
-        .origin
+        .origin()
         .iter()
         .position(|&o| o == 1)
         .expect("an F written by F -> FF");
@@ -268,4 +268,33 @@ fn a_module_explanation_counts_every_rewriting_of_its_production() {
     assert_eq!(one.explanation.fired, whole.explanation.fired);
     assert!(whole.explanation.fired > 1);
     assert_eq!(one.explanation.rewritten.len(), 1);
+}
+
+#[test]
+fn a_d0l_derivation_writes_its_provenance_when_asked_as_the_traced_derivation_records_it() {
+    // The D0L path leaves the last step's provenance to be written when first read (origin and
+    // parent); the traced derivation records it as the step runs. They agree module for module,
+    // with modules no production rewrites (the brackets, `+`), erased ones and an empty
+    // successor among them, after 0, 1 and several steps.
+    let sources = [
+        "axiom: X\nX -> F[+X]F[-X]+X\nF -> FF\n",
+        "axiom: ABA\nA -> AB\nB -> \n",
+        "axiom: F-F-F-F\nF -> FF-F-F-F-FF\n",
+    ];
+    for source in sources {
+        let b = built(source, 1);
+        let model = b.model.as_ref().expect("model");
+        for steps in [0, 1, 4] {
+            let options = meristem::derive::DeriveOptions { steps, seed: None };
+            let mut none = meristem::derive::Unobserved;
+            let lazy = meristem::derive::derive_tracked(model, &options, &mut none).unwrap();
+            let (traced, trace) =
+                meristem::derive::derive_traced(model, &options, &mut none).unwrap();
+            let last = trace.last().expect("the axiom at least");
+            assert_eq!(lazy.origin(), last.origin, "{source} after {steps}");
+            assert_eq!(lazy.parent(), last.parent, "{source} after {steps}");
+            assert_eq!(lazy, traced, "{source} after {steps}");
+            assert_eq!(lazy.origin().len(), lazy.string.len());
+        }
+    }
 }

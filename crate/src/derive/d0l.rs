@@ -81,6 +81,14 @@ impl D0lTable {
         })
     }
 
+    /// What the provenance of a step left untracked follows from, besides the string it read.
+    pub(super) fn successors(&self) -> Successors {
+        Successors {
+            lengths: self.slot.iter().map(|&(_, n)| n).collect(),
+            productions: self.production_of.clone(),
+        }
+    }
+
     /// [`D0lTable::step`], returning for each written module the production that made it and
     /// the index in `src` of the module it was rewritten from: the three arrays written in one
     /// pass, each module's share as one store of the copy width.
@@ -270,4 +278,28 @@ fn fill<const W: usize>(slot: &mut [std::mem::MaybeUninit<u32>], value: u32) {
     }
     #[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
     store(slot, [value; W]);
+}
+
+/// For each module id, the length of its successor and the production that writes it
+/// ([`NOT_REWRITTEN`] if none): with the string a D0L step read, where each module it wrote
+/// comes from, as [`D0lTable::step_tracked`] records it.
+#[derive(Clone, Debug)]
+pub(super) struct Successors {
+    lengths: Vec<u32>,
+    productions: Vec<u32>,
+}
+
+impl Successors {
+    /// (origin, parent) of the `len` modules the step wrote from `read`.
+    pub(super) fn provenance(&self, read: &LString, len: usize) -> (Vec<u32>, Vec<u32>) {
+        let mut origin = Vec::with_capacity(len);
+        let mut parent = Vec::with_capacity(len);
+        for (i, &id) in read.ids.iter().enumerate() {
+            let n = self.lengths[id.index()] as usize;
+            origin.extend(std::iter::repeat_n(self.productions[id.index()], n));
+            parent.extend(std::iter::repeat_n(i as u32, n));
+        }
+        debug_assert_eq!(origin.len(), len, "the successors are the step's");
+        (origin, parent)
+    }
 }

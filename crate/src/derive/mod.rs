@@ -45,7 +45,7 @@ pub struct DeriveOptions {
 }
 
 /// The result of a derivation.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default)]
 pub struct Derivation {
     /// The derived string after the last step (the L-system's state).
     pub string: LString,
@@ -53,18 +53,14 @@ pub struct Derivation {
     pub interpreted: Option<LString>,
     /// Warnings met on the way (a homomorphism that hit its maximum depth).
     pub warnings: Vec<Diagnostic>,
-    /// Provenance, filled by [`derive_tracked`] only: for each module of `string`, the index in
-    /// `model.productions` of the production that made it in the last step ([`NOT_REWRITTEN`]
-    /// when it was copied, or comes from the axiom).
-    pub origin: Vec<u32>,
+    /// Provenance, recorded by [`derive_tracked`] only ([`Derivation::origin`],
+    /// [`Derivation::parent`]).
+    provenance: Provenance,
     /// Filled by [`derive_tracked`] when there is a homomorphism: for each module of the string
     /// the turtle reads, the index of the module of `string` it comes from.
     pub turtle_origin: Vec<u32>,
     /// Filled by [`derive_tracked`]: the string before the last step (empty after 0 steps).
     pub previous: LString,
-    /// Filled by [`derive_tracked`]: for each module of `string`, the index in `previous` of the
-    /// module it was rewritten or copied from (empty after 0 steps).
-    pub parent: Vec<u32>,
     /// How many times each module id occurs in the string the turtle reads, indexed by id, when
     /// the derivation knows it without reading that string (the D0L path counts ids to size its
     /// steps); empty otherwise. The sketch turtle sizes its lines with it.
@@ -92,6 +88,61 @@ impl Derivation {
     pub fn turtle_string(&self) -> &LString {
         self.interpreted.as_ref().unwrap_or(&self.string)
     }
+
+    /// Filled by [`derive_tracked`] only: for each module of `string`, the index in
+    /// `model.productions` of the production that made it in the last step ([`NOT_REWRITTEN`]
+    /// when it was copied, or comes from the axiom).
+    pub fn origin(&self) -> &[u32] {
+        &self.provenance().0
+    }
+
+    /// Filled by [`derive_tracked`]: for each module of `string`, the index in `previous` of the
+    /// module it was rewritten or copied from (empty after 0 steps).
+    pub fn parent(&self) -> &[u32] {
+        &self.provenance().1
+    }
+
+    /// (origin, parent), written out on the first call when the last step left them to be.
+    fn provenance(&self) -> &(Vec<u32>, Vec<u32>) {
+        let p = &self.provenance;
+        p.written.get_or_init(|| match &p.pending {
+            Some(successors) => successors.provenance(&self.previous, self.string.len()),
+            None => Default::default(),
+        })
+    }
+}
+
+impl PartialEq for Derivation {
+    /// Equal strings, warnings and provenance, whether the provenance is written out yet or not.
+    fn eq(&self, other: &Self) -> bool {
+        let Derivation {
+            string,
+            interpreted,
+            warnings,
+            provenance: _,
+            turtle_origin,
+            previous,
+            id_counts,
+        } = self;
+        *string == other.string
+            && *interpreted == other.interpreted
+            && *warnings == other.warnings
+            && self.provenance() == other.provenance()
+            && *turtle_origin == other.turtle_origin
+            && *previous == other.previous
+            && *id_counts == other.id_counts
+    }
+}
+
+/// Where each module of the derived string comes from in the last step ([`Derivation::origin`]
+/// and [`Derivation::parent`]). A step of the general path writes it as it rewrites. A D0L step
+/// leaves it `pending`: it follows from the string the step read ([`Derivation::previous`]) and
+/// each id's successor, and is written out when first asked for, so a build that never asks (a
+/// sketch for the benchmark, the CLI) does not pay for it, and the studio pays the same once.
+#[derive(Clone, Debug, Default)]
+struct Provenance {
+    written: std::cell::OnceCell<(Vec<u32>, Vec<u32>)>,
+    pending: Option<d0l::Successors>,
 }
 
 /// What the stages after derive take part in while it derives. Every method has a default that
@@ -146,7 +197,7 @@ pub trait Observer {
 }
 
 /// The observer of a derivation nobody watches.
-struct Unobserved;
+pub struct Unobserved;
 
 impl Observer for Unobserved {}
 
@@ -311,6 +362,8 @@ struct Run<'m, 'o, R: rand::Rng> {
     next: LString,
     origin: Vec<u32>,
     parent: Vec<u32>,
+    /// A D0L last step's successors, when its provenance is left to be written when asked for.
+    pending: Option<d0l::Successors>,
     previous: LString,
     /// Every step so far, when the derivation is traced.
     trace: Option<Vec<TracedStep>>,
@@ -347,6 +400,7 @@ impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
             next,
             origin: Vec::new(),
             parent: Vec::new(),
+            pending: None,
             previous: LString::default(),
             trace: None,
         })
@@ -400,7 +454,14 @@ impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
     /// The productions pass, from `current` into `next`.
     fn rewrite(&mut self, step: u32, tracked: bool) -> Result<(), Diagnostic> {
         let model = self.rewriter.model;
+        // A D0L step's provenance is written when asked for, unless decomposition or cut would
+        // have to carry it along now, or the derivation is traced (every step recorded).
+        let later = model.decomposition.is_empty() && !self.has_cut && self.trace.is_none();
         match &mut self.d0l {
+            Some(table) if tracked && later => {
+                table.step(model, &self.current, &mut self.next, step)?;
+                self.pending = Some(table.successors());
+            }
             Some(table) if tracked => {
                 (self.origin, self.parent) =
                     table.step_tracked(model, &self.current, &mut self.next, step)?
@@ -465,24 +526,36 @@ impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
             current,
             mut origin,
             mut parent,
+            pending,
             mut previous,
             ..
         } = self;
-        if track && origin.len() != current.len() {
-            origin = vec![NOT_REWRITTEN; current.len()];
-        }
-        if parent.len() != current.len() {
-            parent.clear();
-            previous = LString::default();
-        }
+        let provenance = match pending {
+            Some(successors) => Provenance {
+                written: Default::default(),
+                pending: Some(successors),
+            },
+            None => {
+                if track && origin.len() != current.len() {
+                    origin = vec![NOT_REWRITTEN; current.len()];
+                }
+                if parent.len() != current.len() {
+                    parent.clear();
+                    previous = LString::default();
+                }
+                Provenance {
+                    written: (origin, parent).into(),
+                    pending: None,
+                }
+            }
+        };
         let mut derivation = Derivation {
             string: current,
             interpreted: None,
             warnings: Vec::new(),
-            origin,
+            provenance,
             turtle_origin: Vec::new(),
             previous,
-            parent,
             id_counts,
         };
         homomorphism(&mut rewriter, steps, &mut derivation, track)?;

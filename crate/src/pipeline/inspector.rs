@@ -98,15 +98,15 @@ impl<'b> Inspector<'b> {
     /// wrote). `None` when it was copied or before any step.
     pub fn explain_module(&self, module: usize) -> Option<Result<Explained, Diagnostic>> {
         let d = self.derivation;
-        let production = *d.origin.get(module)?;
+        let production = *d.origin().get(module)?;
         if production == NOT_REWRITTEN {
             return None;
         }
-        let source = *d.parent.get(module)? as usize;
+        let source = *d.parent().get(module)? as usize;
         let mut explained = self.explain_where(production, Some(source))?;
         if let Ok(e) = &mut explained {
             e.produced
-                .retain(|&j| d.parent[j as usize] as usize == source);
+                .retain(|&j| d.parent()[j as usize] as usize == source);
         }
         Some(explained)
     }
@@ -117,8 +117,8 @@ impl<'b> Inspector<'b> {
         LastStep {
             model: self.model,
             previous: &d.previous,
-            origin: &d.origin,
-            parent: &d.parent,
+            origin: d.origin(),
+            parent: d.parent(),
             steps: self.options.steps,
         }
     }
@@ -130,7 +130,7 @@ impl<'b> Inspector<'b> {
         production: u32,
         module: usize,
     ) -> Option<Result<MatchReport, Diagnostic>> {
-        let source = *self.derivation.parent.get(module)? as usize;
+        let source = *self.derivation.parent().get(module)? as usize;
         Some(derive::match_report(self.last_step(), production, source))
     }
 
@@ -140,7 +140,7 @@ impl<'b> Inspector<'b> {
         only: Option<usize>,
     ) -> Option<Result<Explained, Diagnostic>> {
         let d = self.derivation;
-        if d.parent.is_empty() {
+        if d.parent().is_empty() {
             return None;
         }
         let explanation = derive::explain(self.last_step(), production, only);
@@ -162,7 +162,7 @@ impl<'b> Inspector<'b> {
             .iter()
             .for_each(|&i| is_right[i as usize] = true);
         let mut explained = Explained::default();
-        for (j, (&o, &p)) in d.origin.iter().zip(&d.parent).enumerate() {
+        for (j, (&o, &p)) in d.origin().iter().zip(d.parent()).enumerate() {
             if o == explanation.production {
                 explained.produced.push(j as u32);
             }

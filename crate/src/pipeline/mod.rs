@@ -373,7 +373,7 @@ fn clamped_warning(model: &Model, derivation: &Derivation, module: u32) -> Diagn
         .copied()
         .unwrap_or(module);
     let span = derivation
-        .origin
+        .origin()
         .get(in_string as usize)
         .and_then(|&p| model.productions.productions.get(p as usize))
         .map_or_else(|| model.axiom_span.clone(), |p| p.span.clone());
