@@ -103,6 +103,11 @@ export class PlantView {
   /** The fallback for models too large to mesh: one coloured line per segment. */
   private readonly lines = new LineSegments(new BufferGeometry(), new LineBasicMaterial({ vertexColors: true }));
   private grid: GridHelper | undefined;
+  /**
+   * The material of every grid (GridHelper's own, kept): a new plant gets a new grid, and a new
+   * material would make WebGL link its program again, 5-10 ms of the first frame of each edit.
+   */
+  private readonly gridMaterial = new LineBasicMaterial({ vertexColors: true, toneMapped: false });
   private gridVisible = true;
   /** The mesh on screen (its own colours and provenance ranges), for highlighting and picking. */
   private mesh: MeshBuffers | undefined;
@@ -776,6 +781,7 @@ export class PlantView {
     this.unlit.dispose();
     this.textured.dispose();
     this.removeGrid();
+    this.gridMaterial.dispose();
     this.renderer.dispose();
     this.renderer.domElement.remove();
   }
@@ -796,6 +802,8 @@ export class PlantView {
     const step = 10 ** Math.floor(Math.log10(span / 4 || 1));
     const size = Math.ceil((span * 1.6) / step) * step;
     this.grid = new GridHelper(size, Math.round(size / step), palette.gridCenter, palette.grid);
+    (this.grid.material as Material).dispose(); // never drawn: no program to release
+    this.grid.material = this.gridMaterial;
     if (flat) {
       this.grid.rotation.x = Math.PI / 2;
       const depth = Math.max(box.max.z - box.min.z, span * 1e-3);
@@ -810,7 +818,7 @@ export class PlantView {
   private removeGrid(): void {
     if (!this.grid) return;
     this.scene.remove(this.grid);
-    this.grid.dispose();
+    this.grid.geometry.dispose(); // its material is kept for the next grid
     this.grid = undefined;
   }
 

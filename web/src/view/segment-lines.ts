@@ -1,12 +1,13 @@
 // The Lines mode: every segment of the plant drawn as a line of constant width in pixels (three.js
 // fat lines: each segment a screen-facing quad), as the book draws its two-dimensional figures;
 // an overlay of highlighted segments, and picking by the segment under the pointer.
-import { Group, type Raycaster } from 'three';
+import { Group, InstancedInterleavedBuffer, InterleavedBufferAttribute, type Raycaster, Sphere } from 'three';
 import { LineMaterial } from 'three/examples/jsm/lines/LineMaterial.js';
 import { LineSegments2 } from 'three/examples/jsm/lines/LineSegments2.js';
 import { LineSegmentsGeometry } from 'three/examples/jsm/lines/LineSegmentsGeometry.js';
 import type { MeshBuffers } from '../core';
 import type { LineOverlay } from './highlight';
+import { pointsBox } from './plant-geometry';
 
 /** The width of the lines a studio opens with, in CSS pixels. */
 export const DEFAULT_LINE_WIDTH = 2;
@@ -33,11 +34,25 @@ function setLines(lines: LineSegments2, ends: Float32Array, colors: Float32Array
   lines.geometry.dispose();
   const geometry = new LineSegmentsGeometry();
   if (ends.length >= 6) {
-    geometry.setPositions(ends);
+    setEnds(geometry, ends);
     geometry.setColors(colors);
   }
   lines.geometry = geometry;
   lines.visible = ends.length >= 6;
+}
+
+/**
+ * `geometry.setPositions(ends)`, with the bounds from one pass over the ends (a box, and the sphere
+ * around it) instead of its two (an exact box, then an exact sphere): 116,050 segments took 14 ms
+ * of the page's thread that way. The sphere only has to hold every segment (culling, picking).
+ */
+function setEnds(geometry: LineSegmentsGeometry, ends: Float32Array): void {
+  const instances = new InstancedInterleavedBuffer(ends, 6, 1); // start xyz, end xyz
+  geometry.setAttribute('instanceStart', new InterleavedBufferAttribute(instances, 3, 0));
+  geometry.setAttribute('instanceEnd', new InterleavedBufferAttribute(instances, 3, 3));
+  geometry.instanceCount = ends.length / 6;
+  geometry.boundingBox = pointsBox(ends);
+  geometry.boundingSphere = geometry.boundingBox.getBoundingSphere(new Sphere());
 }
 
 /**
