@@ -115,5 +115,30 @@ describe('typing while a 100,000-segment tree rebuilds', () => {
     expect(sketched!).toBeLessThan(rendered);
     expect(problems).toEqual([]);
   }, 120_000);
+
+  it('compiles no shader program for an edit: its frames reuse the programs on the GPU', async () => {
+    // A program linked during an edit blocks the page's thread on the GPU's compiler at its first
+    // use (5-10 ms on SwiftShader, in the frame of the edited plant). The ground grid made a new
+    // material for each plant, which did that twice per keystroke.
+    await page.evaluate(() => {
+      const w = window as unknown as { __links: number };
+      w.__links = 0;
+      const link = WebGL2RenderingContext.prototype.linkProgram;
+      WebGL2RenderingContext.prototype.linkProgram = function (program: WebGLProgram) {
+        w.__links++;
+        link.call(this, program);
+      };
+    });
+    await page.locator('[data-testid=editor] .cm-line', { hasText: '#angle' }).click();
+    await page.keyboard.press('End');
+    for (const key of ['Backspace', '2']) {
+      const before = await generation(page);
+      await page.keyboard.press(key);
+      expect(await nextBuild(page, before, 60_000)).toBe('ok');
+      await twoFrames(page);
+    }
+    expect(await page.evaluate(() => (window as unknown as { __links: number }).__links)).toBe(0);
+    expect(problems).toEqual([]);
+  }, 120_000);
 });
 
