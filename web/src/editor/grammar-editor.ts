@@ -1,7 +1,7 @@
 // The grammar editor: CodeMirror 6 with the grammar language and the core's diagnostics.
 import { basicSetup } from 'codemirror';
 import { Decoration, EditorView, type DecorationSet } from '@codemirror/view';
-import { StateEffect, StateField, Transaction } from '@codemirror/state';
+import { type EditorState, StateEffect, StateField, Transaction } from '@codemirror/state';
 import { forceLinting } from '@codemirror/lint';
 import { isolateHistory } from '@codemirror/commands';
 import { grammarCompletion } from './completion';
@@ -45,10 +45,26 @@ export interface CodeMirrorGrammarEditor extends GrammarEditor {
  * (UTF-16 offsets, e.g. where the cursor stood in the placeholder it replaces).
  */
 export function createGrammarEditor(options: GrammarEditorOptions, selection?: { anchor: number; head: number }): CodeMirrorGrammarEditor {
+  // The state an edit is about to give the view, while the page hears of its text: `text()` and
+  // `cursor()` answer from it.
+  let upcoming: EditorState | undefined;
   const view = new EditorView({
     parent: options.parent,
     doc: options.doc,
     selection,
+    // The page hears of a new text before CodeMirror redraws for it, so the build worker starts on
+    // it while the editor updates its lines (a few milliseconds of each keystroke's first frame).
+    dispatchTransactions: (transactions, target) => {
+      if (transactions.some((t) => t.docChanged)) {
+        upcoming = transactions[transactions.length - 1].state;
+        try {
+          options.onChange(upcoming.doc.toString());
+        } finally {
+          upcoming = undefined;
+          target.update(transactions);
+        }
+      } else target.update(transactions);
+    },
     extensions: [
       basicSetup,
       grammarSupport(options.vocabulary),
@@ -60,15 +76,14 @@ export function createGrammarEditor(options: GrammarEditorOptions, selection?: {
       EditorView.contentAttributes.of({ 'aria-label': 'L-system grammar' }),
       markedProduction,
       EditorView.updateListener.of((update) => {
-        if (update.docChanged) options.onChange(update.state.doc.toString());
         if (update.docChanged || update.selectionSet) options.onCursor?.(update.state.selection.main.head);
       }),
     ],
   });
   return {
     view,
-    text: () => view.state.doc.toString(),
-    cursor: () => view.state.selection.main.head,
+    text: () => (upcoming ?? view.state).doc.toString(),
+    cursor: () => (upcoming ?? view.state).selection.main.head,
     focus: () => view.focus(),
     requestMeasure: () => view.requestMeasure(),
     loaded: Promise.resolve(),
