@@ -40,6 +40,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   const start = await startingText(starting, INITIAL_EXAMPLE);
 
   const view = new PlantView(els.viewport);
+  void view.compileShaders(); // while the core downloads: its first frame then compiles nothing
   const viewOptions = new ViewOptions(sidesChoices(els.viewTools.sides));
   viewOptions.applyShared(start.state?.view); // a link's, before anything follows the options
   const derivation = new DerivationControls(els.derivation, notice);
