@@ -52,9 +52,19 @@ afterAll(async () => {
  * (the page and its workers) asked for before the first plant arrived, those it asked for more than
  * once, and the time to that plant.
  */
-async function firstPlant(throttle: boolean): Promise<{ files: string[]; twice: string[]; millis: number; waterfall: Waterfall }> {
+async function firstPlant(throttle: boolean): Promise<{ files: string[]; twice: string[]; millis: number; waterfall: Waterfall; linkedAfter: number }> {
   const context = await browser.newContext({ viewport: { width: 1280, height: 800 }, serviceWorkers: 'block' });
   const page = await context.newPage();
+  // When each WebGL program is linked (the wall clock): the first plant's frame should link none.
+  await page.addInitScript(() => {
+    const w = window as unknown as { __linkedAt: number[] };
+    w.__linkedAt = [];
+    const link = WebGL2RenderingContext.prototype.linkProgram;
+    WebGL2RenderingContext.prototype.linkProgram = function (program: WebGLProgram) {
+      w.__linkedAt.push(Date.now());
+      link.call(this, program);
+    };
+  });
   const requests: { file: string; at: number }[] = [];
   const fileOf = (address: string) => new URL(address).pathname.slice(SUB_PATH.length) || 'index.html';
   context.on('request', (request) => {
@@ -83,11 +93,14 @@ async function firstPlant(throttle: boolean): Promise<{ files: string[]; twice: 
   // The page's clock (the same wall clock) at the first plant's arrival: what was asked for later
   // (the editor, after the first frame) is not part of the first load, however slow the poll above.
   const at = (await page.evaluate(() => window.__meristem?.firstPlantAt)) ?? start + millis;
+  await page.waitForFunction(() => window.__meristem?.rendered, undefined, { timeout: 60_000 });
+  const linkedAt = await page.evaluate(() => (window as unknown as { __linkedAt: number[] }).__linkedAt);
+  const linkedAfter = linkedAt.filter((t) => t >= at).length;
   const waterfall = (await Promise.all(finished)).filter((r) => r !== undefined && r.start <= at - start).sort((a, b) => a!.start - b!.start) as Waterfall;
   await context.close();
   const asked = requests.filter((r) => r.at <= at).map((r) => r.file);
   const twice = asked.filter((file, k) => asked.indexOf(file) !== k);
-  return { files: [...new Set(asked)].sort(), twice, millis, waterfall };
+  return { files: [...new Set(asked)].sort(), twice, millis, waterfall, linkedAfter };
 }
 
 /** The requests made before the first plant: file, first and last byte's times after the navigation started (ms). */
@@ -100,9 +113,12 @@ function gzipped(file: string): number {
 
 describe('the first load', () => {
   it(`needs at most ${BUDGET / 1000} KB of script, wasm and styles (gzipped) for the first plant`, async () => {
-    const { files, twice } = await firstPlant(false);
+    const { files, twice, linkedAfter } = await firstPlant(false);
     // The preloads (the core, the opening example) and the boot script's worker are used, not fetched again.
     expect(twice, 'asked for twice').toEqual([]);
+    // The shaders were compiled while the core downloaded (PlantView.compileShaders): the first
+    // plant's frame waits for no compiler.
+    expect(linkedAfter, 'WebGL programs linked after the first plant arrived').toBe(0);
     const counted = files.filter((f) => /\.(js|mjs|wasm|css)$/.test(f));
     const sizes = Object.fromEntries(counted.map((f) => [f, gzipped(f)]));
     const total = Object.values(sizes).reduce((a, b) => a + b, 0);
