@@ -243,7 +243,8 @@ export class PlantView {
     for (const material of [this.lit, this.unlit, ...this.textured.lit, ...this.textured.unlit]) standIns.add(new Mesh(mesh, material));
     const lines = triangle('position', 'color');
     standIns.add(new LineSegments(lines, this.lines.material), new LineSegments(lines, this.gridMaterial));
-    // And the scene as it is: the objects with no plant yet are drawn so (attributes and all).
+    // And the scene's own objects as they are now: the first plant's frame still draws some of them
+    // without attributes (the sketch's lines when there is no sketch), which takes other programs.
     const camera = this.active.camera;
     return Promise.all([this.renderer.compileAsync(standIns, camera, this.scene), this.renderer.compileAsync(this.scene, camera)]);
   }
