@@ -491,10 +491,14 @@ impl Classes {
             .filter(|(class, _)| class.kind == Kind::Choice)
             .map(|(_, &count)| count)
             .sum();
+        // The buffer is the last pass's, kept for its room: emptied, so that the first Choice
+        // module draws a new block instead of reading the last pass's draws again.
+        let mut us = std::mem::take(&mut counts.us);
+        us.clear();
         let mut draw = Draws {
             rng,
             left: draws,
-            us: std::mem::take(&mut counts.us),
+            us,
             at: 0,
         };
         let picks = &mut counts.picks;
