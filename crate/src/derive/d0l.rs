@@ -89,72 +89,6 @@ impl D0lTable {
         }
     }
 
-    /// [`D0lTable::step`], returning for each written module the production that made it and
-    /// the index in `src` of the module it was rewritten from: the three arrays written in one
-    /// pass, each module's share as one store of the copy width.
-    pub(super) fn step_tracked(
-        &mut self,
-        model: &Model,
-        src: &LString,
-        dst: &mut LString,
-        step: u32,
-    ) -> Result<(Vec<u32>, Vec<u32>), Diagnostic> {
-        let len = self.prepare(model, src, dst, step)?;
-        let mut origin = Vec::with_capacity(len + PAD);
-        let mut parent = Vec::with_capacity(len + PAD);
-        // One width for every table whose successors fit [`PAD`] (one step of a derivation is
-        // tracked; one copy of the loop keeps the first plant's core small).
-        match self.width {
-            4 | 8 | PAD => self.write_tracked::<PAD>(src, dst, &mut origin, &mut parent),
-            _ => {
-                for (i, &id) in src.ids.iter().enumerate() {
-                    let (start, n) = self.slot[id.index()];
-                    put(&mut dst.ids, &self.successors, start as usize, n as usize);
-                    let production = self.production_of[id.index()];
-                    origin.extend(std::iter::repeat_n(production, n as usize));
-                    parent.extend(std::iter::repeat_n(i as u32, n as usize));
-                }
-            }
-        }
-        self.finish(dst, len);
-        Ok((origin, parent))
-    }
-
-    /// [`D0lTable::write`] with provenance: each module's successor, its production and its
-    /// index, each as `W` values stored at once into the arrays' spare room (what lies past a
-    /// successor's length is overwritten by the next module), the lengths set once at the end.
-    /// The room is checked per module (a slice index), so wrong counts could not write past it.
-    #[inline(never)]
-    fn write_tracked<const W: usize>(
-        &self,
-        src: &LString,
-        dst: &mut LString,
-        origin: &mut Vec<u32>,
-        parent: &mut Vec<u32>,
-    ) {
-        let ids_out = dst.ids.spare_capacity_mut();
-        let origin_out = origin.spare_capacity_mut();
-        let parent_out = parent.spare_capacity_mut();
-        let mut at = 0usize;
-        for (i, &id) in src.ids.iter().enumerate() {
-            let (start, n) = self.slot[id.index()];
-            let (start, n) = (start as usize, n as usize);
-            let production = self.production_of[id.index()];
-            let mut successor = [ModuleId(0); W];
-            successor.copy_from_slice(&self.successors[start..start + W]);
-            store(&mut ids_out[at..at + W], successor);
-            fill::<W>(&mut origin_out[at..at + W], production);
-            fill::<W>(&mut parent_out[at..at + W], i as u32);
-            at += n.min(W);
-        }
-        // SAFETY: the loop initialised the first `at` elements of all three arrays.
-        unsafe {
-            dst.ids.set_len(at);
-            origin.set_len(at);
-            parent.set_len(at);
-        }
-    }
-
     /// How many times each id occurs in the string of `len` modules the last step wrote, when
     /// nothing changed it since (no decomposition, no cut) and `len` is its length.
     pub(super) fn take_counts(&mut self, len: usize) -> Option<Vec<u64>> {
@@ -253,14 +187,6 @@ impl D0lTable {
     }
 }
 
-/// Stores `values` into `slot` (exactly `W` elements) at once.
-#[inline(always)]
-fn store<T: Copy, const W: usize>(slot: &mut [std::mem::MaybeUninit<T>], values: [T; W]) {
-    assert_eq!(slot.len(), W);
-    // SAFETY: `slot` is `W` elements of `T`, as `values` is; `MaybeUninit<T>` has `T`'s layout.
-    unsafe { (slot.as_mut_ptr() as *mut [T; W]).write_unaligned(values) }
-}
-
 /// Stores `W` (a multiple of 4) copies of `value` into `slot` (exactly `W` elements): with
 /// WebAssembly SIMD, as 4 at a time (rustc writes `[value; W]` as `W` stores of one).
 #[inline(always)]
@@ -277,12 +203,14 @@ fn fill<const W: usize>(slot: &mut [std::mem::MaybeUninit<u32>], value: u32) {
         }
     }
     #[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
-    store(slot, [value; W]);
+    for v in slot {
+        v.write(value);
+    }
 }
 
 /// For each module id, the length of its successor and the production that writes it
 /// ([`NOT_REWRITTEN`] if none): with the string a D0L step read, where each module it wrote
-/// comes from, as [`D0lTable::step_tracked`] records it.
+/// comes from ([`super::Derivation::origin`] and [`super::Derivation::parent`]).
 #[derive(Clone, Debug)]
 pub(super) struct Successors {
     lengths: Vec<u32>,
@@ -290,16 +218,38 @@ pub(super) struct Successors {
 }
 
 impl Successors {
-    /// (origin, parent) of the `len` modules the step wrote from `read`.
+    /// (origin, parent) of the `len` modules the step wrote from `read`: each module's share as
+    /// [`PAD`] values stored at once into the arrays' spare room (what lies past a successor's
+    /// length is overwritten by the next module), the lengths set once at the end. The room is
+    /// checked per module (a slice index), so wrong lengths could not write past it.
     pub(super) fn provenance(&self, read: &LString, len: usize) -> (Vec<u32>, Vec<u32>) {
-        let mut origin = Vec::with_capacity(len);
-        let mut parent = Vec::with_capacity(len);
+        let mut origin = Vec::with_capacity(len + PAD);
+        let mut parent = Vec::with_capacity(len + PAD);
+        let origin_out = origin.spare_capacity_mut();
+        let parent_out = parent.spare_capacity_mut();
+        let mut at = 0usize;
         for (i, &id) in read.ids.iter().enumerate() {
             let n = self.lengths[id.index()] as usize;
-            origin.extend(std::iter::repeat_n(self.productions[id.index()], n));
-            parent.extend(std::iter::repeat_n(i as u32, n));
+            let production = self.productions[id.index()];
+            if n <= PAD {
+                fill::<PAD>(&mut origin_out[at..at + PAD], production);
+                fill::<PAD>(&mut parent_out[at..at + PAD], i as u32);
+            } else {
+                origin_out[at..at + n].iter_mut().for_each(|o| {
+                    o.write(production);
+                });
+                parent_out[at..at + n].iter_mut().for_each(|p| {
+                    p.write(i as u32);
+                });
+            }
+            at += n;
         }
-        debug_assert_eq!(origin.len(), len, "the successors are the step's");
+        debug_assert_eq!(at, len, "the successors are the step's");
+        // SAFETY: the loop initialised the first `at` elements of both arrays.
+        unsafe {
+            origin.set_len(at);
+            parent.set_len(at);
+        }
         (origin, parent)
     }
 }

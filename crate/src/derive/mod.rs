@@ -454,17 +454,19 @@ impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
     /// The productions pass, from `current` into `next`.
     fn rewrite(&mut self, step: u32, tracked: bool) -> Result<(), Diagnostic> {
         let model = self.rewriter.model;
-        // A D0L step's provenance is written when asked for, unless decomposition or cut would
-        // have to carry it along now, or the derivation is traced (every step recorded).
-        let later = model.decomposition.is_empty() && !self.has_cut && self.trace.is_none();
         match &mut self.d0l {
-            Some(table) if tracked && later => {
-                table.step(model, &self.current, &mut self.next, step)?;
-                self.pending = Some(table.successors());
-            }
             Some(table) if tracked => {
-                (self.origin, self.parent) =
-                    table.step_tracked(model, &self.current, &mut self.next, step)?
+                table.step(model, &self.current, &mut self.next, step)?;
+                // Its provenance follows from the string read and the successors: written when
+                // asked for, unless decomposition or cut must carry it along now, or the
+                // derivation is traced (every step recorded).
+                let successors = table.successors();
+                if model.decomposition.is_empty() && !self.has_cut && self.trace.is_none() {
+                    self.pending = Some(successors);
+                } else {
+                    (self.origin, self.parent) =
+                        successors.provenance(&self.current, self.next.len());
+                }
             }
             Some(table) => table.step(model, &self.current, &mut self.next, step)?,
             None => {

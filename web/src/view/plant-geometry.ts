@@ -39,7 +39,7 @@ export function addMaterialGroups(geometry: BufferGeometry, mesh: MeshBuffers): 
 }
 
 /** Sets a geometry's bounding box and its bounding sphere around that box. */
-function setBox(geometry: BufferGeometry, box: Box3): void {
+export function setBox(geometry: BufferGeometry, box: Box3): void {
   geometry.boundingBox = box;
   geometry.boundingSphere = box.getBoundingSphere(new Sphere());
 }

@@ -1,13 +1,13 @@
 // The Lines mode: every segment of the plant drawn as a line of constant width in pixels (three.js
 // fat lines: each segment a screen-facing quad), as the book draws its two-dimensional figures;
 // an overlay of highlighted segments, and picking by the segment under the pointer.
-import { Group, InstancedInterleavedBuffer, InterleavedBufferAttribute, type Raycaster, Sphere } from 'three';
+import { Group, InstancedInterleavedBuffer, InterleavedBufferAttribute, type Raycaster } from 'three';
 import { LineMaterial } from 'three/examples/jsm/lines/LineMaterial.js';
 import { LineSegments2 } from 'three/examples/jsm/lines/LineSegments2.js';
 import { LineSegmentsGeometry } from 'three/examples/jsm/lines/LineSegmentsGeometry.js';
 import type { MeshBuffers } from '../core';
 import type { LineOverlay } from './highlight';
-import { pointsBox } from './plant-geometry';
+import { pointsBox, setBox } from './plant-geometry';
 
 /** The width of the lines a studio opens with, in CSS pixels. */
 export const DEFAULT_LINE_WIDTH = 2;
@@ -51,8 +51,7 @@ function setEnds(geometry: LineSegmentsGeometry, ends: Float32Array): void {
   geometry.setAttribute('instanceStart', new InterleavedBufferAttribute(instances, 3, 0));
   geometry.setAttribute('instanceEnd', new InterleavedBufferAttribute(instances, 3, 3));
   geometry.instanceCount = ends.length / 6;
-  geometry.boundingBox = pointsBox(ends);
-  geometry.boundingSphere = geometry.boundingBox.getBoundingSphere(new Sphere());
+  setBox(geometry, pointsBox(ends));
 }
 
 /**
