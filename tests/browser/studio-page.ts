@@ -61,7 +61,8 @@ export async function nextBuild(page: Page, previous: number, timeout = 30_000):
   await page.waitForFunction(
     (before) =>
       Number(document.querySelector('[data-testid=status]')?.getAttribute('data-generation') ?? 0) > before &&
-      window.__meristem?.preview?.settled === true,
+      window.__meristem?.preview?.settled === true &&
+      window.__meristem.uploading?.() !== true,
     previous,
     { timeout },
   );

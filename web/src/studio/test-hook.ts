@@ -15,8 +15,13 @@ export interface StudioTestHook {
   firstPlantAt?: number;
   /** The live preview (last builds, delivery events). */
   preview?: LivePreview;
-  /** The last frame drawn: the delivered-build counter at the time, and `performance.now()`. */
+  /**
+   * The last frame that drew the plant last given to the view: the delivered-build counter at the
+   * time, and `performance.now()` (frames drawn while a big plant uploads show the one before).
+   */
   rendered: { generation: number; at: number } | null;
+  /** A big plant is on its way to the GPU: the plant on screen is the one before. */
+  uploading?: () => boolean;
   /** `performance.now()` at the end of the first frame that drew the last sketch (a big plant as lines). */
   sketched: number | null;
   /** The derived string's fingerprint of the plant on screen (share links must reproduce it). */
@@ -58,10 +63,12 @@ export function connectTestHook(hook: StudioTestHook, { preview, view, branchEdi
   let sketchPending = false;
   preview.onSketched(() => (sketchPending = true));
   view.onRender(() => {
-    hook.rendered = { generation: preview.generation, at: performance.now() };
-    if (sketchPending) hook.sketched = hook.rendered.at;
+    const at = performance.now();
+    if (sketchPending) hook.sketched = at;
     sketchPending = false;
+    if (!view.uploading) hook.rendered = { generation: preview.generation, at };
   });
+  hook.uploading = () => view.uploading;
   hook.branches = {
     handlesOnPage: () => branchEdits.handlesOnPage(),
     selectedPath: () => branchEdits.selectedPath(),

@@ -19,7 +19,6 @@ import {
   Plane,
   Raycaster,
   Scene,
-  Sphere,
   Spherical,
   MathUtils,
   Vector3,
@@ -31,7 +30,8 @@ import type { Bounds, GpuArrays, MeshBuffers } from '../core';
 import { CameraControls, loadOrbitControls } from './camera-controls';
 import { flatPose, framePose } from './framing';
 import { scenePalette } from './palette';
-import { plantGeometry, pointsBox } from './plant-geometry';
+import { plantGeometry, pointsBox, setBox } from './plant-geometry';
+import { GpuGeometry } from './gpu-geometry';
 import { loadTexture, texturedMaterials, type TexturedMaterials } from './textures';
 import { addHeadlight, addSkyLight, litPlantMaterial, unlitPlantMaterial } from './scene-setup';
 import { MATERIAL_BARK, highlightOverlay, highlightSegments, moduleOfTriangle, type Rgb } from './highlight';
@@ -67,6 +67,42 @@ export interface ViewPose {
   zoom: number;
 }
 
+/**
+ * A new plant goes to the GPU (see {@link GpuGeometry}) in slices of this many bytes, as many per
+ * task as fit in {@link UPLOAD_TASK_MS}. A slice takes under 1 ms of the page's thread when the GPU
+ * keeps up, and tens of ms when it does not (software GPU on a loaded machine, traced): small
+ * slices keep such a wait short. A plant of at most
+ * {@link UPLOAD_AT_ONCE_BYTES} goes up whole and is shown at once.
+ */
+const UPLOAD_SLICE_BYTES = 2 << 20;
+const UPLOAD_TASK_MS = 8;
+const UPLOAD_AT_ONCE_BYTES = 8 << 20;
+
+/** A plant for the screen: its mesh and, unless drawn as lines, its geometry (plain and on the GPU). */
+interface IncomingPlant {
+  mesh: MeshBuffers;
+  flat: boolean;
+  source?: BufferGeometry;
+  onGpu?: GpuGeometry;
+  /** The highlight asked for meanwhile ({@link PlantView.colourModules}), painted when it is shown. */
+  colourOf: ((module: number) => Rgb | null) | null;
+}
+
+/** Runs `task` in a task of its own, at once (a `setTimeout` chain waits 4 ms per call after five). */
+function nextTask(task: () => void): void {
+  const scheduler = (globalThis as { scheduler?: { postTask?: (task: () => void, options: { priority: string }) => Promise<unknown> } }).scheduler;
+  if (scheduler?.postTask) {
+    void scheduler.postTask(task, { priority: 'user-blocking' });
+    return;
+  }
+  const channel = new MessageChannel();
+  channel.port1.onmessage = () => {
+    channel.port1.close();
+    task();
+  };
+  channel.port2.postMessage(null);
+}
+
 /** One of the two cameras with its controls and whether it has been framed on a plant yet. */
 interface CameraRig<C extends PerspectiveCamera | OrthographicCamera> {
   camera: C;
@@ -100,7 +136,17 @@ export class PlantView {
   private texturing = true;
   /** Images loaded so far (of 2): the plant shows untextured until both are there. */
   private texturesLoaded = 0;
+  /** The plant drawn: its geometry is a {@link GpuGeometry}'s (or empty). */
   private readonly plant = new Mesh<BufferGeometry, Material | Material[]>(new BufferGeometry(), this.lit);
+  /** The buffers {@link plant} draws from. */
+  private plantOnGpu: GpuGeometry | undefined;
+  /**
+   * The plant drawn, as plain arrays: what raycasting reads (three.js cannot read the GPU's
+   * buffers back). Never drawn, not in the scene; its material is the plant's (for the groups).
+   */
+  private readonly pickable = new Mesh<BufferGeometry, Material | Material[]>(new BufferGeometry(), this.lit);
+  /** A plant on its way to the GPU; the one on screen stays until its last slice is there. */
+  private incoming: IncomingPlant | undefined;
   /** The fallback for models too large to mesh: one coloured line per segment. */
   private readonly lines = new LineSegments(new BufferGeometry(), new LineBasicMaterial({ vertexColors: true }));
   private grid: GridHelper | undefined;
@@ -151,6 +197,8 @@ export class PlantView {
   private refitHinted = false;
   private readonly refitListeners = new Set<(shown: boolean) => void>();
   private renderQueued = false;
+  /** The container's size changed since the drawing buffer was sized ({@link resize} is due). */
+  private sizeStale = false;
   /** The fence after the last frame drawn, until the GPU has passed it ({@link renderWhenDrawn}). */
   private drawn: WebGLSync | null = null;
   private readonly darkScheme = window.matchMedia(DARK_SCHEME);
@@ -203,7 +251,13 @@ export class PlantView {
 
     this.applyPalette();
     this.darkScheme.addEventListener('change', this.applyPalette);
-    this.resizeObserver = new ResizeObserver(() => this.resize());
+    // The drawing buffer is resized with the next frame, once the GPU is idle: resizing it while a
+    // software GPU still draws the frame before waits for that frame (290 ms of the page's thread
+    // for the big tree, when the status line's wrapping moved the view while typing).
+    this.resizeObserver = new ResizeObserver(() => {
+      this.sizeStale = true;
+      this.requestRender();
+    });
     this.resizeObserver.observe(container);
     this.resize();
   }
@@ -275,29 +329,81 @@ export class PlantView {
    * or the frame is held; a camera's first plant, and the one after {@link frameNextPlant}, always.
    * `gpu`, when given, holds the normals and colours packed smaller for the GPU (by the core, for
    * the build worker): a big plant reaches the GPU in less time. `bounds`: the build's
-   * `stats.bounds`, which spare a pass over the mesh (see {@link plantGeometry}).
+   * `stats.bounds`, which spare a pass over the mesh (see {@link plantGeometry}). A plant of more
+   * than {@link UPLOAD_AT_ONCE_BYTES} goes to the GPU over several tasks while the one before stays
+   * on screen ({@link uploading}).
    */
   showPlant(mesh: MeshBuffers, flat = false, gpu?: GpuArrays, bounds?: Bounds): void {
-    const asLines = mesh.indices.length === 0 && mesh.lines.length > 0;
-    this.mesh = asLines ? undefined : mesh;
-    this.swapIn(mesh, flat, asLines ? undefined : plantGeometry(mesh, gpu, bounds));
+    this.incoming?.onGpu?.dispose();
+    this.incoming = undefined;
+    if (mesh.indices.length === 0 && mesh.lines.length > 0) {
+      this.swapIn({ mesh, flat, colourOf: null });
+      return;
+    }
+    const source = plantGeometry(mesh, gpu, bounds);
+    const onGpu = new GpuGeometry(this.renderer.getContext() as WebGL2RenderingContext, source);
+    const incoming: IncomingPlant = { mesh, flat, source, onGpu, colourOf: null };
+    this.incoming = incoming;
+    if (onGpu.remaining <= UPLOAD_AT_ONCE_BYTES) {
+      this.finishUpload();
+      return;
+    }
+    // A big plant: slices for a few milliseconds per task, once the GPU has drawn the frame before
+    // (a frame of the sketch on a software GPU takes up to 300 ms, and an upload meanwhile waits).
+    const next = () => {
+      if (this.incoming !== incoming) return; // replaced by a newer plant, and disposed
+      if (!this.gpuIdle()) {
+        setTimeout(next, 2);
+        return;
+      }
+      const start = performance.now();
+      let done = onGpu.upload(UPLOAD_SLICE_BYTES);
+      while (!done && performance.now() - start < UPLOAD_TASK_MS) done = onGpu.upload(UPLOAD_SLICE_BYTES);
+      if (!done) nextTask(next);
+      else this.finishUpload();
+    };
+    next();
   }
 
-  /** Puts `mesh` (its `geometry`, or its lines) on screen in place of the old plant. */
-  private swapIn(mesh: MeshBuffers, flat: boolean, geometry: BufferGeometry | undefined): void {
+  /** Uploads what is left of the incoming plant at once, and puts it on screen. */
+  private finishUpload(): void {
+    const incoming = this.incoming;
+    if (!incoming) return;
+    incoming.onGpu?.upload(Infinity);
+    this.incoming = undefined;
+    this.swapIn(incoming);
+  }
+
+  /**
+   * A plant given to {@link showPlant} is still on its way to the GPU (the one before is on
+   * screen meanwhile, and picking finds nothing).
+   */
+  get uploading(): boolean {
+    return this.incoming !== undefined;
+  }
+
+  /** Puts a plant (its geometry on the GPU, or its lines) on screen in place of the old one. */
+  private swapIn({ mesh, flat, source, onGpu, colourOf }: IncomingPlant): void {
     this.plantShown = true;
-    const asLines = geometry === undefined;
+    const asLines = onGpu === undefined;
+    this.mesh = asLines ? undefined : mesh;
     const oldMesh = this.plant.geometry;
+    const oldOnGpu = this.plantOnGpu;
+    const oldPickable = this.pickable.geometry;
     const oldLines = this.lines.geometry;
-    this.plant.geometry = geometry ?? new BufferGeometry();
+    this.plant.geometry = onGpu?.geometry ?? new BufferGeometry();
+    this.plantOnGpu = onGpu;
+    this.pickable.geometry = source ?? new BufferGeometry();
     this.lines.geometry = asLines ? plantGeometry(mesh) : new BufferGeometry();
-    oldMesh.dispose();
+    if (oldOnGpu) oldOnGpu.dispose();
+    else oldMesh.dispose();
+    oldPickable.dispose();
     oldLines.dispose();
     this.segmentLines.show(asLines ? null : mesh);
     this.segmentsBox = undefined;
     this.flat = flat;
     this.applyMaterial();
-    this.colourModules(null);
+    this.colourModules(colourOf);
     // A mesh without tubes (the Lines mode's) may hold no triangle: its segments are drawn.
     const hasGeometry = mesh.indices.length > 0 || asLines || (mesh.segmentEnds.length > 0 && this.usesLines);
     if (hasGeometry && this.frameNext) {
@@ -352,6 +458,11 @@ export class PlantView {
    * restores the plant's own colours. (The line fallback of huge models is not highlighted.)
    */
   colourModules(colourOf: ((module: number) => Rgb | null) | null): void {
+    // The modules are the incoming plant's: they are painted when it is on screen.
+    if (this.incoming) {
+      this.incoming.colourOf = colourOf;
+      return;
+    }
     this.colourOf = colourOf;
     const mesh = this.mesh;
     const old = this.overlay.geometry;
@@ -362,7 +473,7 @@ export class PlantView {
     this.segmentLines.highlight(mesh && colourOf && lines ? highlightSegments(mesh, colourOf) : null, mesh && colourOf ? 0.55 : 1);
     if (mesh && colourOf) {
       // The normals on the GPU: the mesh's floats, or the worker's packed ones (its floats are then empty).
-      const normals = this.plant.geometry.getAttribute('normal')?.array as Float32Array | Int16Array | undefined;
+      const normals = this.pickable.geometry.getAttribute('normal')?.array as Float32Array | Int16Array | undefined;
       const overlay = highlightOverlay(mesh, colourOf, !lines, normals ?? mesh.normals);
       const geometry = this.overlay.geometry;
       geometry.setAttribute('position', new BufferAttribute(overlay.positions, 3));
@@ -380,12 +491,12 @@ export class PlantView {
   /** The module of the derived string drawn at a point of the page, or null (nothing there). */
   pickModule(clientX: number, clientY: number): number | null {
     const mesh = this.mesh;
-    if (!mesh) return null;
+    if (!mesh || this.incoming) return null;
     this.aim(clientX, clientY);
     const lines = this.usesLines;
     // In the Lines mode the tubes' triangles are not drawn: only leaves, polygons and spheres count.
     const hit = this.raycaster
-      .intersectObject(this.plant, false)
+      .intersectObject(this.pickable, false)
       .find((h) => h.faceIndex != null && (!lines || moduleOfTriangle(mesh.materialRanges, h.faceIndex) !== MATERIAL_BARK));
     const line = lines ? this.segmentLines.pick(this.raycaster) : null;
     if (line && (!hit || line.distance <= hit.distance)) return line.module;
@@ -401,9 +512,9 @@ export class PlantView {
 
   /** The triangle of the mesh on screen at a point of the page, or null. */
   pickTriangle(clientX: number, clientY: number): number | null {
-    if (!this.mesh) return null;
+    if (!this.mesh || this.incoming) return null;
     this.aim(clientX, clientY);
-    const hit = this.raycaster.intersectObject(this.plant, false)[0];
+    const hit = this.raycaster.intersectObject(this.pickable, false)[0];
     return hit && hit.faceIndex != null ? hit.faceIndex : null;
   }
 
@@ -412,27 +523,28 @@ export class PlantView {
    * uploads only `ranges` ((first vertex, count) pairs) and updates the bounds.
    */
   patchVertices(ranges: Uint32Array): void {
-    const mesh = this.mesh;
-    if (!mesh) return;
-    const geometry = this.plant.geometry;
+    // The mesh last given: the one on its way to the GPU, if any, else the one on screen.
+    const { mesh, source, onGpu } = this.incoming ?? { mesh: this.mesh, source: this.pickable.geometry, onGpu: this.plantOnGpu };
+    if (!mesh || !source || !onGpu) return;
     for (const [name, array, size] of [
       ['position', mesh.positions, 3],
       ['normal', mesh.normals, 3],
       ['uv', mesh.uvs, 2],
     ] as const) {
-      const attribute = geometry.getAttribute(name) as BufferAttribute | undefined;
-      if (!attribute || attribute.array !== array) continue;
-      attribute.clearUpdateRanges();
-      for (let k = 0; k + 1 < ranges.length; k += 2) attribute.addUpdateRange(size * ranges[k], size * ranges[k + 1]);
-      attribute.needsUpdate = true;
+      // (Packed normals are not the mesh's: a mesh with them is not edited.)
+      if (source.getAttribute(name)?.array !== array) continue;
+      for (let k = 0; k + 1 < ranges.length; k += 2) onGpu.patch(name, size * ranges[k], size * ranges[k + 1]);
     }
-    geometry.boundingBox = pointsBox(mesh.positions);
-    geometry.boundingSphere = geometry.boundingBox.getBoundingSphere(new Sphere());
+    setBox(source, pointsBox(mesh.positions));
+    setBox(onGpu.geometry, source.boundingBox!);
     this.requestRender();
   }
 
   /** Shows a branch's handles at `points` (P0..P3, 12 floats), or hides them (null). */
   showHandles(points: Float32Array | null): void {
+    // Hidden already (each new plant hides them): no frame. A frame of a big plant keeps a software
+    // GPU busy for 200 ms, and a plant on its way to the GPU waits for it.
+    if (!points && !this.handles.group.visible) return;
     const box = this.visibleBox();
     const size = box.isEmpty() ? 1 : box.getSize(new Vector3()).length();
     this.handles.show(points, size * 0.012);
@@ -644,6 +756,7 @@ export class PlantView {
    * and restored before the page paints again.
    */
   async snapshot(width: number, height: number, look: PictureLook = { background: 'view' }): Promise<Blob> {
+    this.finishUpload(); // the picture is of the plant last given
     const canvas = this.renderer.domElement;
     const pixelRatio = this.renderer.getPixelRatio();
     const camera = this.active.camera;
@@ -713,6 +826,7 @@ export class PlantView {
     // By material kind (bark, leaf, plain): in the Lines mode the tubes give way to the lines.
     const kinds = Array.isArray(material) ? material : [material, material, material];
     this.plant.material = lines ? [this.hiddenTubes, kinds[1], kinds[2]] : material;
+    this.pickable.material = this.plant.material;
     this.segmentLines.visible = lines;
     this.container.dataset.render = lines ? 'lines' : 'tubes';
     this.container.dataset.textures = String(on);
@@ -795,7 +909,11 @@ export class PlantView {
     this.darkScheme.removeEventListener('change', this.applyPalette);
     this.perspective.controls.dispose();
     this.orthographic.controls.dispose();
+    this.incoming?.onGpu?.dispose();
+    this.incoming = undefined;
+    this.plantOnGpu?.dispose();
     this.plant.geometry.dispose();
+    this.pickable.geometry.dispose();
     this.overlay.geometry.dispose();
     this.overlay.material.dispose();
     this.lines.geometry.dispose();
@@ -868,6 +986,7 @@ export class PlantView {
   }
 
   private resize(): void {
+    this.sizeStale = false;
     const width = Math.max(1, this.container.clientWidth);
     const height = Math.max(1, this.container.clientHeight);
     this.renderer.setSize(width, height, false);
@@ -891,18 +1010,25 @@ export class PlantView {
    * next frame, and nothing waits.
    */
   private renderWhenDrawn(): void {
-    const gl = this.renderer.getContext();
-    if (this.drawn && gl instanceof WebGL2RenderingContext) {
-      if (gl.clientWaitSync(this.drawn, 0, 0) === gl.TIMEOUT_EXPIRED) {
-        requestAnimationFrame(() => this.renderWhenDrawn());
-        return;
-      }
-      gl.deleteSync(this.drawn);
+    if (!this.gpuIdle()) {
+      requestAnimationFrame(() => this.renderWhenDrawn());
+      return;
     }
-    this.drawn = null;
+    const gl = this.renderer.getContext();
+    if (this.sizeStale) this.resize(); // (while this frame is still queued: no other is asked for)
     this.renderQueued = false;
     this.renderer.render(this.scene, this.active.camera);
     if (gl instanceof WebGL2RenderingContext) this.drawn = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
     for (const listener of this.renderListeners) listener();
+  }
+
+  /** The GPU has finished the last frame drawn (its fence has passed). */
+  private gpuIdle(): boolean {
+    const gl = this.renderer.getContext();
+    if (!this.drawn || !(gl instanceof WebGL2RenderingContext)) return true;
+    if (gl.clientWaitSync(this.drawn, 0, 0) === gl.TIMEOUT_EXPIRED) return false;
+    gl.deleteSync(this.drawn);
+    this.drawn = null;
+    return true;
   }
 }
