@@ -51,6 +51,7 @@ type PageStatus = StatusReport | { state: 'loading' | 'crashed' | 'building' | '
 /** Shows a report in the status line: its text, and its state as `data-state` (for CSS and tests). */
 export function showStatus(status: HTMLElement, report: PageStatus): void {
   status.textContent = report.text;
+  status.title = report.text; // the line is cut to one line on screen
   status.dataset.state = report.state;
 }
 
