@@ -153,7 +153,7 @@ describe('typing while a 100,000-segment tree rebuilds', () => {
     expect(problems).toEqual([]);
   }, 120_000);
 
-  it('uploads the tubes a slice per task, draws them, and picks a module in them', async () => {
+  it('uploads the tubes in slices, draws them, and picks a module in them', async () => {
     // three.js uploaded each array whole in the frame that first drew it: 57 MB in one task (up to
     // 250 ms of the page's thread on a software GPU, the test above failing one run in four). Every
     // upload of data (not the allocations, which carry a size) is recorded, in bytes.
