@@ -7,11 +7,11 @@
 // those buffers (`GLBufferAttribute`). When to call `upload` is the view's business.
 import { BufferGeometry, GLBufferAttribute, type BufferAttribute } from 'three';
 
-type Array = BufferAttribute['array'];
+type TypedArray = BufferAttribute['array'];
 
 /** One array on its way to its WebGL buffer. */
 interface Part {
-  array: Array;
+  array: TypedArray;
   buffer: WebGLBuffer;
   /** Elements uploaded so far (from the start). */
   uploaded: number;
@@ -117,7 +117,7 @@ export class GpuGeometry {
 }
 
 /** The WebGL type of an array's elements. */
-function glType(gl: WebGL2RenderingContext, array: Array): number {
+function glType(gl: WebGL2RenderingContext, array: TypedArray): number {
   if (array instanceof Float32Array) return gl.FLOAT;
   if (array instanceof Uint32Array) return gl.UNSIGNED_INT;
   if (array instanceof Uint16Array) return gl.UNSIGNED_SHORT;
