@@ -71,8 +71,8 @@ export interface ViewPose {
  * A new plant goes to the GPU (see {@link GpuGeometry}) in slices of this many bytes, as many per
  * task as fit in {@link UPLOAD_TASK_MS}. A slice takes under 1 ms of the page's thread when the GPU
  * keeps up, and tens of ms when it does not (software GPU on a loaded machine, traced): small
- * slices keep such a wait short. A plant of at most
- * {@link UPLOAD_AT_ONCE_BYTES} goes up whole and is shown at once.
+ * slices keep such a wait short. A plant of at most {@link UPLOAD_AT_ONCE_BYTES} goes up whole and
+ * is shown at once.
  */
 const UPLOAD_SLICE_BYTES = 2 << 20;
 const UPLOAD_TASK_MS = 8;
@@ -88,7 +88,11 @@ interface IncomingPlant {
   colourOf: ((module: number) => Rgb | null) | null;
 }
 
-/** Runs `task` in a task of its own, at once (a `setTimeout` chain waits 4 ms per call after five). */
+/**
+ * Runs `task` in a task of its own, at once: ahead of other tasks where `scheduler.postTask` exists
+ * (the user is waiting for the plant), else by a message (a `setTimeout` chain waits 4 ms a call
+ * after five).
+ */
 function nextTask(task: () => void): void {
   const scheduler = (globalThis as { scheduler?: { postTask?: (task: () => void, options: { priority: string }) => Promise<unknown> } }).scheduler;
   if (scheduler?.postTask) {
