@@ -84,8 +84,6 @@ interface IncomingPlant {
   flat: boolean;
   source?: BufferGeometry;
   onGpu?: GpuGeometry;
-  /** The highlight asked for meanwhile ({@link PlantView.colourModules}), painted when it is shown. */
-  colourOf: ((module: number) => Rgb | null) | null;
 }
 
 /**
@@ -185,7 +183,10 @@ export class PlantView {
   private renderMode: RenderMode = 'auto';
   /** Who needs tubes now whatever the mode (branch editing reshapes tubes). */
   private readonly tubeHolders = new Set<string>();
-  /** The last highlight asked for, redrawn when the render mode changes. */
+  /**
+   * The last highlight asked for (of the plant last given: a new plant clears it), redrawn when
+   * the render mode changes and when a plant that was uploading comes on screen.
+   */
   private colourOf: ((module: number) => Rgb | null) | null = null;
   /** The selected branch's Bézier handles (branch editing). */
   private readonly handles = new BezierHandles();
@@ -340,13 +341,14 @@ export class PlantView {
   showPlant(mesh: MeshBuffers, flat = false, gpu?: GpuArrays, bounds?: Bounds): void {
     this.incoming?.onGpu?.dispose();
     this.incoming = undefined;
+    this.colourOf = null; // a highlight names modules of the plant it was asked for
     if (mesh.indices.length === 0 && mesh.lines.length > 0) {
-      this.swapIn({ mesh, flat, colourOf: null });
+      this.swapIn({ mesh, flat });
       return;
     }
     const source = plantGeometry(mesh, gpu, bounds);
     const onGpu = new GpuGeometry(this.renderer.getContext() as WebGL2RenderingContext, source);
-    const incoming: IncomingPlant = { mesh, flat, source, onGpu, colourOf: null };
+    const incoming: IncomingPlant = { mesh, flat, source, onGpu };
     this.incoming = incoming;
     if (onGpu.remaining <= UPLOAD_AT_ONCE_BYTES) {
       this.finishUpload();
@@ -387,7 +389,7 @@ export class PlantView {
   }
 
   /** Puts a plant (its geometry on the GPU, or its lines) on screen in place of the old one. */
-  private swapIn({ mesh, flat, source, onGpu, colourOf }: IncomingPlant): void {
+  private swapIn({ mesh, flat, source, onGpu }: IncomingPlant): void {
     this.plantShown = true;
     const asLines = onGpu === undefined;
     this.mesh = asLines ? undefined : mesh;
@@ -407,7 +409,7 @@ export class PlantView {
     this.segmentsBox = undefined;
     this.flat = flat;
     this.applyMaterial();
-    this.colourModules(colourOf);
+    this.colourModules(this.colourOf); // what was asked for while it uploaded, if anything
     // A mesh without tubes (the Lines mode's) may hold no triangle: its segments are drawn.
     const hasGeometry = mesh.indices.length > 0 || asLines || (mesh.segmentEnds.length > 0 && this.usesLines);
     if (hasGeometry && this.frameNext) {
@@ -462,12 +464,9 @@ export class PlantView {
    * restores the plant's own colours. (The line fallback of huge models is not highlighted.)
    */
   colourModules(colourOf: ((module: number) => Rgb | null) | null): void {
-    // The modules are the incoming plant's: they are painted when it is on screen.
-    if (this.incoming) {
-      this.incoming.colourOf = colourOf;
-      return;
-    }
     this.colourOf = colourOf;
+    // The modules are then the incoming plant's: they are painted when it is on screen.
+    if (this.incoming) return;
     const mesh = this.mesh;
     const old = this.overlay.geometry;
     this.overlay.geometry = new BufferGeometry();
