@@ -11,7 +11,7 @@
 // all). `npm run bench:studio` reports both setups.
 import { writeFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
-import { colourShare } from './pictures';
+import { colourShare, foregroundShare } from './pictures';
 import { RESULTS, canvasPicture, findPixel, generation, nextBuild, savePage, twoFrames } from './studio-page';
 import { page, problems, useStudio } from './session';
 
@@ -150,6 +150,26 @@ describe('typing while a 100,000-segment tree rebuilds', () => {
       await twoFrames(page);
     }
     expect(await page.evaluate(() => (window as unknown as { __links: number }).__links)).toBe(0);
+    expect(problems).toEqual([]);
+  }, 120_000);
+
+  it('draws tubes thinner than a pixel unbroken, as the Lines mode draws their axes', async () => {
+    // Without a width the tree's tubes are a tenth of an internode across: under a pixel with the
+    // whole tree in view. Drawn as they are, they fall between the multisamples as scattered specks
+    // (about a tenth of what the lines cover); each surface is drawn at least a pixel wide.
+    await page.getByTestId('frame').click();
+    expect(await page.getByTestId('viewport').getAttribute('data-render')).toBe('tubes');
+    const tubes = foregroundShare(await canvasPicture(page, 'thin-tubes.png'));
+    let before = await generation(page);
+    await page.getByTestId('render-lines').click();
+    expect(await nextBuild(page, before, 60_000)).toBe('ok');
+    expect(await page.getByTestId('viewport').getAttribute('data-render')).toBe('lines');
+    const lines = foregroundShare(await canvasPicture(page, 'thin-tubes-as-lines.png'));
+    expect(lines, 'the lines are drawn').toBeGreaterThan(0.01);
+    expect(tubes / lines, 'what the tubes cover of what the lines cover').toBeGreaterThan(0.6);
+    before = await generation(page);
+    await page.getByTestId('render-lines').click(); // back to the Tubes mode, for the next test
+    expect(await nextBuild(page, before, 60_000)).toBe('ok');
     expect(problems).toEqual([]);
   }, 120_000);
 

@@ -33,7 +33,7 @@ import { scenePalette } from './palette';
 import { plantGeometry, pointsBox, setBox } from './plant-geometry';
 import { GpuGeometry } from './gpu-geometry';
 import { loadTexture, texturedMaterials, type TexturedMaterials } from './textures';
-import { addHeadlight, addSkyLight, litPlantMaterial, unlitPlantMaterial } from './scene-setup';
+import { addHeadlight, addSkyLight, atLeastAPixelWide, litPlantMaterial, unlitPlantMaterial } from './scene-setup';
 import { MATERIAL_BARK, highlightOverlay, highlightSegments, moduleOfTriangle, type Rgb } from './highlight';
 import { DEFAULT_LINE_WIDTH, SegmentLines } from './segment-lines';
 import { BezierHandles } from './handles';
@@ -164,15 +164,17 @@ export class PlantView {
   /** Highlighted modules, drawn over the plant (which is dimmed meanwhile). */
   private readonly overlay = new Mesh(
     new BufferGeometry(),
-    new MeshStandardMaterial({
-      vertexColors: true,
-      side: DoubleSide,
-      roughness: 0.7,
-      metalness: 0,
-      polygonOffset: true,
-      polygonOffsetFactor: -1,
-      polygonOffsetUnits: -1,
-    }),
+    atLeastAPixelWide(
+      new MeshStandardMaterial({
+        vertexColors: true,
+        side: DoubleSide,
+        roughness: 0.7,
+        metalness: 0,
+        polygonOffset: true,
+        polygonOffsetFactor: -1,
+        polygonOffsetUnits: -1,
+      }),
+    ),
   );
   /** The Lines mode's segments (hidden while tubes are drawn). */
   private readonly segmentLines = new SegmentLines();

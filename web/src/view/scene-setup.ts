@@ -5,19 +5,60 @@ import {
   DirectionalLight,
   DoubleSide,
   HemisphereLight,
+  type Material,
   MeshBasicMaterial,
   MeshStandardMaterial,
   Scene,
+  Vector4,
 } from 'three';
 
 /** The plant's lit material: vertex colours (the core's palette), both faces, matte. */
 export function litPlantMaterial(): MeshStandardMaterial {
-  return new MeshStandardMaterial({ vertexColors: true, side: DoubleSide, roughness: 0.85, metalness: 0 });
+  return atLeastAPixelWide(new MeshStandardMaterial({ vertexColors: true, side: DoubleSide, roughness: 0.85, metalness: 0 }));
 }
 
 /** The unlit material (lighting off): the palette's colours as they are, no shading. */
 export function unlitPlantMaterial(): MeshBasicMaterial {
-  return new MeshBasicMaterial({ vertexColors: true, side: DoubleSide });
+  return atLeastAPixelWide(new MeshBasicMaterial({ vertexColors: true, side: DoubleSide }));
+}
+
+/**
+ * The end of the vertex shader's `main` (after three.js's chunks have placed the vertex): the vertex
+ * moves half a pixel outwards along its normal, in view space, and is projected again. One pixel's
+ * size at the vertex's depth is 2·w / (P[1][1] · height in pixels): w is the depth for a
+ * perspective camera and 1 for an orthographic one. Lighting and fog keep the vertex's own place
+ * (three.js computed them from `mvPosition` before this).
+ */
+const HALF_A_PIXEL_OUT = `
+  vec3 outwards = normalMatrix * normal;
+  float outwardsLength = length(outwards);
+  if (outwardsLength > 0.0) {
+    float pixel = 2.0 * gl_Position.w / (projectionMatrix[1][1] * meristemPixelsHigh);
+    mvPosition.xyz += outwards * (0.5 * pixel / outwardsLength);
+    gl_Position = projectionMatrix * mvPosition;
+  }
+}`;
+
+const viewport = new Vector4();
+
+/**
+ * Makes `material` draw every surface at least about a pixel across: each vertex is moved half a
+ * pixel (of whatever is drawn into: the canvas, a thumbnail, a snapshot) outwards along its
+ * normal. A tube thinner than a pixel, as the twigs of a big tree seen whole are, is then drawn a
+ * pixel wide and unbroken, as a line would be, instead of falling between the multisamples as
+ * scattered specks; everything else grows by half a pixel a side, which cannot be seen. Only the
+ * picture changes: picking reads the mesh as it is, and the files written keep their sizes.
+ */
+export function atLeastAPixelWide<M extends Material>(material: M): M {
+  const pixelsHigh = { value: 1 };
+  material.onBeforeCompile = (shader) => {
+    shader.uniforms.meristemPixelsHigh = pixelsHigh;
+    shader.vertexShader = `uniform float meristemPixelsHigh;\n${shader.vertexShader.replace(/\}\s*$/, HALF_A_PIXEL_OUT)}`;
+  };
+  material.onBeforeRender = (renderer) => {
+    pixelsHigh.value = Math.max(1, renderer.getCurrentViewport(viewport).w);
+  };
+  return material;
 }
 
 /** A sky/ground light for the scene. */

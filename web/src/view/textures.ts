@@ -3,6 +3,7 @@
 // another site's page loads them from Meristem's), and the lit and unlit material
 // triples (bark, leaf, plain) indexed by the mesh's material kinds (see addMaterialGroups).
 import { DoubleSide, ImageLoader, type Material, MeshBasicMaterial, MeshStandardMaterial, RepeatWrapping, SRGBColorSpace, Texture } from 'three';
+import { atLeastAPixelWide } from './scene-setup';
 
 /** Where a shipped texture is: under `base`, the site's root (the page's own address by default). */
 export function textureUrl(name: 'bark' | 'leaf', base: string = document.baseURI): string {
@@ -50,10 +51,10 @@ export interface TexturedMaterials {
  */
 export function texturedMaterials(bark: Texture, leaf: Texture, plainLit: Material, plainUnlit: Material): TexturedMaterials {
   const lit = { vertexColors: true, side: DoubleSide, roughness: 0.85, metalness: 0 } as const;
-  const barkLit = new MeshStandardMaterial({ ...lit, map: bark });
-  const leafLit = new MeshStandardMaterial({ ...lit, map: leaf, alphaTest: 0.5 });
-  const barkUnlit = new MeshBasicMaterial({ vertexColors: true, side: DoubleSide, map: bark });
-  const leafUnlit = new MeshBasicMaterial({ vertexColors: true, side: DoubleSide, map: leaf, alphaTest: 0.5 });
+  const barkLit = atLeastAPixelWide(new MeshStandardMaterial({ ...lit, map: bark }));
+  const leafLit = atLeastAPixelWide(new MeshStandardMaterial({ ...lit, map: leaf, alphaTest: 0.5 }));
+  const barkUnlit = atLeastAPixelWide(new MeshBasicMaterial({ vertexColors: true, side: DoubleSide, map: bark }));
+  const leafUnlit = atLeastAPixelWide(new MeshBasicMaterial({ vertexColors: true, side: DoubleSide, map: leaf, alphaTest: 0.5 }));
   return {
     lit: [barkLit, leafLit, plainLit],
     unlit: [barkUnlit, leafUnlit, plainUnlit],
