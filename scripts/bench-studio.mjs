@@ -2,8 +2,9 @@
 // site (dist/). For each workload the grammar is opened, then one key at a time is typed into the
 // `#angle` line (Backspace makes `#angle 2`, `0` makes `#angle 20` again: every keystroke gives a
 // new valid grammar); each keystroke is timed from its keydown event to the end of the frame that
-// draws its plant, and to the next animation frame after it. Each key waits until the previous
-// key's frames are done, so each is measured alone. Two Chromium setups: GPU compositing on
+// draws its plant (its JavaScript: the frame is then handed to the GPU), to the next animation
+// frame after it, and to the GPU's end of that frame (a fence). Each key waits until the previous
+// key's frames are done on the GPU, so each is measured alone. Two Chromium setups: GPU compositing on
 // SwiftShader (as on a machine with a GPU) and Chromium's default without a GPU (software
 // compositing: every WebGL frame is read back on the main thread, waiting for the rasterizer).
 // Medians go to test-results/bench-studio.json. Not part of `npm test`.
@@ -81,19 +82,30 @@ try {
                 const d = b.deliveries.at(-1);
                 const r = window.__meristem.rendered;
                 if (d && d.source.includes(text) && r && r.generation >= d.generation) {
-                  requestAnimationFrame(() => {
+                  // The GPU done with that frame: a fence after it (the frame is only handed to
+                  // the GPU when its JavaScript ends; a software GPU rasterizes it afterwards).
+                  const gl = document.querySelector('[data-testid=viewport] canvas').getContext('webgl2');
+                  const fence = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
+                  gl.flush();
+                  let nextFrame = null;
+                  requestAnimationFrame(() => (nextFrame = performance.now()));
+                  const done = () => {
+                    if (nextFrame === null || gl.getSyncParameter(fence, gl.SYNC_STATUS) !== gl.SIGNALED) return void setTimeout(done, 1);
+                    gl.deleteSync(fence);
                     const sketched = window.__meristem.sketched;
                     resolve({
                       keydown: b.keydown,
                       delivered: d.at,
                       rendered: r.at,
+                      gpuDone: performance.now(),
                       sketched: sketched !== null && sketched > b.keydown && sketched <= r.at ? sketched : null,
-                      nextFrame: performance.now(),
+                      nextFrame,
                       roundTrip: d.roundTrip,
                       worker: d.worker,
                       timings: d.timings,
                     });
-                  });
+                  };
+                  done();
                 } else setTimeout(poll, 1);
               };
               poll();
@@ -116,6 +128,7 @@ try {
         sketched: samples.filter((s) => s.sketched !== null).length,
         keystrokeToDrawnMs: pick((s) => s.rendered - s.keydown),
         keystrokeToNextFrameMs: pick((s) => s.nextFrame - s.keydown),
+        keystrokeToGpuDoneMs: pick((s) => s.gpuDone - s.keydown),
         roundTripMs: pick((s) => s.roundTrip),
         workerMs: pick((s) => s.worker),
         coreMs: pick((s) => s.timings.parseResolve + s.timings.derive + s.timings.interpret + s.timings.mesh),
@@ -138,9 +151,9 @@ if (!partial) {
     `${JSON.stringify({ date: new Date().toISOString(), cpu: os.cpus()[0]?.model, cores: os.cpus().length, keystrokes: KEYSTROKES, results }, null, 1)}\n`,
   );
 }
-console.log('\n| setup | workload | keystroke → first frame of the new plant | → tubes drawn | → next frame | round trip (request → build on the page) | in the worker | core stages | of which mesh | build on the page → drawn |');
-console.log('| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |');
+console.log('\n| setup | workload | keystroke → first frame of the new plant | → tubes drawn | → next frame | → GPU done | round trip (request → build on the page) | in the worker | core stages | of which mesh | build on the page → drawn |');
+console.log('| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |');
 for (const r of results)
   console.log(
-    `| ${r.setup} | ${r.workload} | ${r.keystrokeToFirstFrameMs} ms${r.sketched ? ' (sketch)' : ''} | ${r.keystrokeToDrawnMs} ms | ${r.keystrokeToNextFrameMs} ms | ${r.roundTripMs} ms | ${r.workerMs} ms | ${r.coreMs} ms | ${r.meshMs} ms | ${r.deliveredToDrawnMs} ms |`,
+    `| ${r.setup} | ${r.workload} | ${r.keystrokeToFirstFrameMs} ms${r.sketched ? ' (sketch)' : ''} | ${r.keystrokeToDrawnMs} ms | ${r.keystrokeToNextFrameMs} ms | ${r.keystrokeToGpuDoneMs} ms | ${r.roundTripMs} ms | ${r.workerMs} ms | ${r.coreMs} ms | ${r.meshMs} ms | ${r.deliveredToDrawnMs} ms |`,
   );
