@@ -358,6 +358,15 @@ fn sizes(kinds: &[u8], string: &LString, id_counts: &[u64]) -> Option<(usize, u8
 /// Long because it is the loop itself, one arm per operation with the frame, the stack and the
 /// output arrays in locals: split into functions, each would take the whole turtle by reference,
 /// which is what this loop exists to avoid.
+///
+/// Out of line (`inline(never)`), so that it is a function of its own in WebAssembly: V8 first runs
+/// every function in its baseline compiler and optimises one once it has run a while, in the
+/// background, in time that grows with the function's size. Inlined into `sketch_counted` (with
+/// the interpreter's fallback and both variants) it took TurboFan 112 ms to compile on the
+/// project's machine (sketch builds of 1.24d n = 7 take 2-3 times as long while their functions
+/// run the baseline code); alone, 4 ms, and `sketch_counted` 22 ms. Once optimised, the same speed
+/// (Node, the two builds alternating).
+#[inline(never)]
 fn plain_loop<const PARAMETRIC: bool>(
     settings: &crate::model::Settings,
     steps: &[Step],
