@@ -47,7 +47,9 @@ const viewport = new Vector4();
  * normal. A tube thinner than a pixel, as the twigs of a big tree seen whole are, is then drawn a
  * pixel wide and unbroken, as a line would be, instead of falling between the multisamples as
  * scattered specks; everything else grows by half a pixel a side, which cannot be seen. Only the
- * picture changes: picking reads the mesh as it is, and the files written keep their sizes.
+ * picture changes: picking reads the mesh as it is, and the files written keep their sizes. Takes
+ * the material's `onBeforeCompile` and `onBeforeRender` (the height of the target drawn into is
+ * read before each draw).
  */
 export function atLeastAPixelWide<M extends Material>(material: M): M {
   const pixelsHigh = { value: 1 };
