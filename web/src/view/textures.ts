@@ -2,8 +2,8 @@
 // relative to the site's root (the site may be served from any sub-path, a plant embedded in
 // another site's page loads them from Meristem's), and the lit and unlit material
 // triples (bark, leaf, plain) indexed by the mesh's material kinds (see addMaterialGroups).
-import { DoubleSide, ImageLoader, type Material, MeshBasicMaterial, MeshStandardMaterial, RepeatWrapping, SRGBColorSpace, Texture } from 'three';
-import { atLeastAPixelWide } from './scene-setup';
+import { ImageLoader, type Material, RepeatWrapping, SRGBColorSpace, Texture } from 'three';
+import { litPlantMaterial, unlitPlantMaterial } from './scene-setup';
 
 /** Where a shipped texture is: under `base`, the site's root (the page's own address by default). */
 export function textureUrl(name: 'bark' | 'leaf', base: string = document.baseURI): string {
@@ -50,11 +50,12 @@ export interface TexturedMaterials {
  * `plainLit` / `plainUnlit`, the untextured materials.
  */
 export function texturedMaterials(bark: Texture, leaf: Texture, plainLit: Material, plainUnlit: Material): TexturedMaterials {
-  const lit = { vertexColors: true, side: DoubleSide, roughness: 0.85, metalness: 0 } as const;
-  const barkLit = atLeastAPixelWide(new MeshStandardMaterial({ ...lit, map: bark }));
-  const leafLit = atLeastAPixelWide(new MeshStandardMaterial({ ...lit, map: leaf, alphaTest: 0.5 }));
-  const barkUnlit = atLeastAPixelWide(new MeshBasicMaterial({ vertexColors: true, side: DoubleSide, map: bark }));
-  const leafUnlit = atLeastAPixelWide(new MeshBasicMaterial({ vertexColors: true, side: DoubleSide, map: leaf, alphaTest: 0.5 }));
+  // The plant's own materials (scene-setup.ts), with a texture: set before their first use, when
+  // three.js compiles their program.
+  const barkLit = Object.assign(litPlantMaterial(), { map: bark });
+  const leafLit = Object.assign(litPlantMaterial(), { map: leaf, alphaTest: 0.5 });
+  const barkUnlit = Object.assign(unlitPlantMaterial(), { map: bark });
+  const leafUnlit = Object.assign(unlitPlantMaterial(), { map: leaf, alphaTest: 0.5 });
   return {
     lit: [barkLit, leafLit, plainLit],
     unlit: [barkUnlit, leafUnlit, plainUnlit],
