@@ -1,5 +1,6 @@
 //! The mesh stage of ABOP 1.24d at n = 10 (116,050 segments), natively: minimum of repeated
-//! remeshes, and the exact-point lookups alone. `cargo run --release --example mesh_time`.
+//! remeshes; the chains, their caps and rounded ends, and packing normals and colours for the GPU,
+//! alone. `cargo run --release --example mesh_time`.
 //! `-- N R`: ABOP 1.24d at n = N; with R, only R remeshes and nothing timed, for counting the
 //! instructions of one remesh on a busy machine (valgrind's cachegrind, R = 4 against R = 0).
 
@@ -37,44 +38,44 @@ fn main() {
         skeleton.segments.len(),
         built.plant.mesh.vertex_count()
     );
-    let mut best = f64::MAX;
-    for _ in 0..5 {
-        let t = Instant::now();
-        let j = parts::joint_keys(&built.plant.skeleton);
-        let s = parts::start_keys(&built.plant.skeleton);
-        best = best.min(t.elapsed().as_secs_f64());
-        std::hint::black_box((j, s));
-    }
-    println!("joint + start keys: {:.2} ms", best * 1e3);
-    // What they replaced: both key lists sorted through crate::sort.
-    let mut best = f64::MAX;
-    for _ in 0..5 {
-        let t = Instant::now();
-        for points in [0, 1] {
-            let mut keys: Vec<[u64; 3]> = built
-                .plant
-                .skeleton
-                .segments
-                .iter()
-                .map(|s| meristem::mesh::joint_key(if points == 0 { s.end } else { s.start }))
-                .collect();
-            meristem::sort::sort(&mut keys);
-            std::hint::black_box(keys);
-        }
-        best = best.min(t.elapsed().as_secs_f64());
-    }
-    println!("(both keys sorted as before: {:.2} ms)", best * 1e3);
+    let unit = meristem::mesh::resolve_width_unit(skeleton, MeshOptions::default().width_unit);
+    let ms = fastest(5, || {
+        std::hint::black_box(parts::chains(skeleton, unit));
+    });
+    println!("chains: {ms:.2} ms");
+    let chains = parts::chains(skeleton, unit);
+    let ms = fastest(5, || {
+        std::hint::black_box(parts::chain_ends(skeleton, &chains));
+    });
+    println!(
+        "caps and rounded ends of {} chains: {ms:.2} ms",
+        chains.len()
+    );
+    let mesh = &built.plant.mesh;
+    let ms = fastest(10, || {
+        std::hint::black_box(meristem::mesh::pack_normals(&mesh.normals));
+    });
+    println!("normals packed for the GPU: {ms:.2} ms");
+    let ms = fastest(10, || {
+        std::hint::black_box(meristem::mesh::pack_colors(&mesh.colors));
+    });
+    println!("colours packed for the GPU: {ms:.2} ms");
     let options = MeshOptions::default();
-    let mut best = f64::MAX;
-    for _ in 0..10 {
-        let t = Instant::now();
-        built.remesh(&options);
-        best = best.min(t.elapsed().as_secs_f64());
-    }
+    let ms = fastest(10, || built.remesh(&options));
     let v = built.plant.mesh.vertex_count() as f64;
     println!(
-        "mesh stage: {:.2} ms, {:.2} ms per million vertices",
-        best * 1e3,
-        best * 1e3 / (v / 1e6)
+        "mesh stage: {ms:.2} ms, {:.2} ms per million vertices",
+        ms / (v / 1e6)
     );
+}
+
+/// The shortest of `runs` runs of `f`, in milliseconds.
+fn fastest(runs: u32, mut f: impl FnMut()) -> f64 {
+    let mut best = f64::MAX;
+    for _ in 0..runs {
+        let t = Instant::now();
+        f();
+        best = best.min(t.elapsed().as_secs_f64());
+    }
+    best * 1e3
 }

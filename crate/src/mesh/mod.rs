@@ -396,14 +396,8 @@ fn mesh_of(
     } else {
         Vec::new()
     };
-    let (joints, starts) = if tubes.is_empty() {
-        (parts::PointSet::default(), parts::PointSet::default())
-    } else {
-        (parts::joint_keys(skeleton), parts::start_keys(skeleton))
-    };
-    for chain in tubes {
-        let start_cap = parts::start_cap(&joints, skeleton, &chain);
-        let end_dome = parts::end_dome(&starts, skeleton, &chain);
+    let ends = parts::chain_ends(skeleton, &tubes);
+    for (chain, (start_cap, end_dome)) in tubes.into_iter().zip(ends) {
         let before = builder.mark();
         builder.tube(skeleton, &chain, start_cap, end_dome);
         if !with_parts {
@@ -456,21 +450,21 @@ fn key(p: DVec3) -> [u64; 3] {
 /// joint's ring does not reach past the middle of either segment (a tube much wider than a short
 /// segment at a bend: its rings would cross and the tube turn inside out). `unit` is the width unit.
 pub(crate) fn joins(skeleton: &Skeleton, p: usize, i: usize, unit: f64) -> bool {
-    let segments = &skeleton.segments;
-    let direction = |i: usize| (segments[i].end - segments[i].start).normalize();
-    let length = |i: usize| (segments[i].end - segments[i].start).length();
+    let (before, after) = (&skeleton.segments[p], &skeleton.segments[i]);
+    if !(after.width > 0.0 && before.width > 0.0 && before.smooth == after.smooth) {
+        return false;
+    }
+    let (along_before, along_after) = (before.end - before.start, after.end - after.start);
+    let cos = along_before.normalize().dot(along_after.normalize());
+    // A zero-length segment has no direction (NaN): it joins nothing.
+    if cos.is_nan() || cos <= MAX_JOINT_ANGLE_COS {
+        return false;
+    }
     // The joint ring lies across the bisector, tilted by half the bend from each segment's
     // cross-section: it reaches radius × sin(bend / 2) along each of them.
-    let overruns = || {
-        let cos = direction(p).dot(direction(i)).clamp(-1.0, 1.0);
-        let reach = 0.5 * segments[i].width * unit * ((1.0 - cos) * 0.5).sqrt();
-        reach >= 0.5 * length(p).min(length(i))
-    };
-    segments[i].width > 0.0
-        && segments[p].width > 0.0
-        && segments[p].smooth == segments[i].smooth
-        && direction(p).dot(direction(i)) > MAX_JOINT_ANGLE_COS
-        && !overruns()
+    let reach = 0.5 * after.width * unit * ((1.0 - cos.clamp(-1.0, 1.0)) * 0.5).sqrt();
+    let overruns = reach >= 0.5 * along_before.length().min(along_after.length());
+    !overruns
 }
 
 /// The axes of the skeleton as lists of segment indices, each continuing the one before. A chain

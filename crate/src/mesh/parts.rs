@@ -61,8 +61,9 @@ pub struct MeshParts {
 /// order). It replaced sorting the keys of every segment and searching them (issue 20): the two
 /// sorts of 116,050 three-word keys through `crate::sort` were about a quarter of the mesh stage
 /// of ABOP 1.24d n = 10 natively. The table's size matters more than its probing: a table of
-/// whole keys (24 bytes a slot) spent its time in cache misses. The standard library's hash set
-/// was measured slower (its hasher).
+/// whole keys (24 bytes a slot) spent its time in cache misses, and so the mesh stage holds the
+/// few points it asks about in one ([`chain_ends`]) rather than every segment's. The standard
+/// library's hash set was measured slower (its hasher).
 #[derive(Clone, Debug, Default)]
 pub struct PointSet {
     keys: Vec<[u64; 3]>,
@@ -107,27 +108,28 @@ impl PointSet {
 
     /// Whether the point with this exact key is in the set.
     pub fn contains(&self, key: &[u64; 3]) -> bool {
+        self.index_of(key).is_some()
+    }
+
+    /// The index of the first point with this exact key, if any.
+    fn index_of(&self, key: &[u64; 3]) -> Option<usize> {
         if self.slots.is_empty() {
-            return false;
+            return None;
         }
         let mask = self.slots.len() - 1;
         let (mut i, tag) = self.slot(key);
         loop {
             let slot = self.slots[i];
             if slot == 0 {
-                return false;
+                return None;
             }
-            if slot >> 32 == tag >> 32 && self.keys[(slot as u32 - 1) as usize] == *key {
-                return true;
+            let index = (slot as u32 - 1) as usize;
+            if slot >> 32 == tag >> 32 && self.keys[index] == *key {
+                return Some(index);
             }
             i = (i + 1) & mask;
         }
     }
-}
-
-/// The end joint of every segment as an exact key: where a chain may start hidden.
-pub fn joint_keys(skeleton: &Skeleton) -> PointSet {
-    PointSet::with_points(skeleton.segments.iter().map(|s| s.end))
 }
 
 /// The start point of every segment as an exact key: where a chain's end is rounded.
@@ -137,26 +139,104 @@ pub fn start_keys(skeleton: &Skeleton) -> PointSet {
 
 /// Whether a chain's tube ends in a rounded dome rather than a flat cap: where another segment
 /// starts at its end (branches leave it there), so they grow out of a round joint, not a stump.
-///
-/// The segment drawn next usually starts there (a branch's first, or the axis's next when it
-/// could not join): that exact point answers without the set's two cache misses.
+/// `starts`: [`start_keys`]. [`chain_ends`] answers this for every chain at once.
 pub fn end_dome(starts: &PointSet, skeleton: &Skeleton, chain: &[u32]) -> bool {
+    next_starts_at_end(skeleton, chain) || starts.contains(&super::key(end_of(skeleton, chain)))
+}
+
+/// Whether each chain's tube gets a start cap (it does not start where a segment ends: a branch
+/// growing out of a joint starts inside its parent's tube) and a rounded end ([`end_dome`]), as
+/// `(start_cap, end_dome)`.
+///
+/// Two exact points answer most chains: the segment a chain grows from (`Segment::anchor`)
+/// usually ends at its start, and the segment drawn after its last usually starts at its end when
+/// one does. The points they leave open are put in a set and every segment's end (or start)
+/// looked up in it: a set of the few points asked stays in the cache, where sets of all the
+/// segments' ends and starts, asked about each open point, spent a sixth of the mesh stage of
+/// ABOP 1.24d n = 10 in cache misses (whose 19,683 chain ends are all open: tips, flat caps).
+pub fn chain_ends(skeleton: &Skeleton, chains: &[Vec<u32>]) -> Vec<(bool, bool)> {
+    let segments = &skeleton.segments;
+    let mut ends = Vec::with_capacity(chains.len());
+    let (mut open_starts, mut open_ends) = (Vec::new(), Vec::new());
+    for (c, chain) in chains.iter().enumerate() {
+        let first = &segments[chain[0] as usize];
+        let anchor = first.anchor.and_then(|a| segments.get(a as usize));
+        let hidden = anchor.is_some_and(|a| super::key(a.end) == super::key(first.start));
+        if !hidden {
+            open_starts.push(c);
+        }
+        let dome = next_starts_at_end(skeleton, chain);
+        if !dome {
+            open_ends.push(c);
+        }
+        ends.push((!hidden, dome));
+    }
+    // One pass over the segments (136 bytes each) for both questions.
+    let starts = open_starts
+        .iter()
+        .map(|&c| segments[chains[c][0] as usize].start);
+    let mut joints = Asked::new(starts);
+    let mut branchings = Asked::new(open_ends.iter().map(|&c| end_of(skeleton, &chains[c])));
+    if !joints.is_empty() || !branchings.is_empty() {
+        for s in segments {
+            joints.look_for(s.end);
+            branchings.look_for(s.start);
+        }
+    }
+    for (&c, met) in open_starts.iter().zip(joints.answers()) {
+        ends[c].0 = !met;
+    }
+    for (&c, met) in open_ends.iter().zip(branchings.answers()) {
+        ends[c].1 = met;
+    }
+    ends
+}
+
+/// The end point of a chain.
+fn end_of(skeleton: &Skeleton, chain: &[u32]) -> glam::DVec3 {
+    skeleton.segments[chain[chain.len() - 1] as usize].end
+}
+
+/// Whether the segment drawn after the chain's last starts at the chain's end (a branch's first,
+/// or the axis's next when it could not join): the usual way a rounded end is found.
+fn next_starts_at_end(skeleton: &Skeleton, chain: &[u32]) -> bool {
     let last = chain[chain.len() - 1] as usize;
     let end = super::key(skeleton.segments[last].end);
     let next = skeleton.segments.get(last + 1);
-    next.is_some_and(|s| super::key(s.start) == end) || starts.contains(&end)
+    next.is_some_and(|s| super::key(s.start) == end)
 }
 
-/// Whether a chain's tube gets a start cap: not when it starts where a segment ends (a branch
-/// growing out of a joint starts inside its parent's tube).
-///
-/// The segment it grows from (`Segment::anchor`) usually ends there: that exact point answers
-/// without the set's two cache misses.
-pub fn start_cap(joints: &PointSet, skeleton: &Skeleton, chain: &[u32]) -> bool {
-    let first = &skeleton.segments[chain[0] as usize];
-    let start = super::key(first.start);
-    let anchor = first.anchor.and_then(|a| skeleton.segments.get(a as usize));
-    !(anchor.is_some_and(|a| super::key(a.end) == start) || joints.contains(&start))
+/// Points asked about: whether each is exactly one of the points looked for.
+struct Asked {
+    set: PointSet,
+    /// Per key's first point (where the set's slot points).
+    met: Vec<bool>,
+}
+
+impl Asked {
+    fn new(asked: impl ExactSizeIterator<Item = glam::DVec3>) -> Asked {
+        let set = PointSet::with_points(asked);
+        let met = vec![false; set.keys.len()];
+        Asked { set, met }
+    }
+
+    fn is_empty(&self) -> bool {
+        self.met.is_empty()
+    }
+
+    fn look_for(&mut self, p: glam::DVec3) {
+        if let Some(i) = self.set.index_of(&super::key(p)) {
+            self.met[i] = true;
+        }
+    }
+
+    /// For each point asked, in order, whether it was met.
+    fn answers(&self) -> impl Iterator<Item = bool> + '_ {
+        let set = &self.set;
+        set.keys
+            .iter()
+            .map(|k| set.index_of(k).is_some_and(|i| self.met[i]))
+    }
 }
 
 /// The chains (axes cut where widths are zero, joints sharp, smoothness changes or a wide ring

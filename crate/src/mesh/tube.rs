@@ -25,6 +25,33 @@ pub(super) struct TubeScratch {
     outs: Vec<DVec3>,
 }
 
+/// The segments of a chain, in order (indices into the skeleton's, not a list of their own: a
+/// plant has tens of thousands of chains).
+#[derive(Clone, Copy)]
+struct Chain<'a> {
+    skeleton: &'a Skeleton,
+    chain: &'a [u32],
+}
+
+impl<'a> Chain<'a> {
+    fn nth(&self, k: usize) -> &'a Segment {
+        &self.skeleton.segments[self.chain[k] as usize]
+    }
+
+    fn first(&self) -> &'a Segment {
+        self.nth(0)
+    }
+
+    fn last(&self) -> &'a Segment {
+        self.nth(self.chain.len() - 1)
+    }
+
+    fn iter(&self) -> impl Iterator<Item = &'a Segment> + 'a {
+        let segments = &self.skeleton.segments;
+        self.chain.iter().map(move |&i| &segments[i as usize])
+    }
+}
+
 /// A point on a tube's axis where a ring of vertices goes.
 #[derive(Clone, Copy, Debug)]
 struct AxisSample {
@@ -46,21 +73,12 @@ impl Builder<'_> {
         start_cap: bool,
         end_dome: bool,
     ) {
-        let segments: Vec<&Segment> = chain
-            .iter()
-            .map(|&i| &skeleton.segments[i as usize])
-            .collect();
+        let segments = Chain { skeleton, chain };
         let mut scratch = std::mem::take(&mut self.scratch);
         self.axis_samples(&segments, &mut scratch);
         if scratch.samples.len() >= 2 {
-            self.rings(skeleton, &segments, &mut scratch);
-            self.tube_triangles(
-                skeleton,
-                chain,
-                &segments,
-                &mut scratch,
-                [start_cap, end_dome],
-            );
+            self.rings(&segments, &mut scratch);
+            self.tube_triangles(&segments, &mut scratch, [start_cap, end_dome]);
         }
         self.scratch = scratch;
     }
@@ -69,17 +87,17 @@ impl Builder<'_> {
     /// the axis is smooth, else at the joints. Samples that are not finite or repeat the one
     /// before are dropped.
     /// The samples go to `scratch.samples`.
-    fn axis_samples(&self, segments: &[&Segment], scratch: &mut TubeScratch) {
+    fn axis_samples(&self, segments: &Chain, scratch: &mut TubeScratch) {
         let points = &mut scratch.points;
         points.clear();
-        points.push(segments[0].start);
+        points.push(segments.first().start);
         points.extend(segments.iter().map(|s| s.end));
         // The width at each joint: a segment's width at its start; the last keeps its own.
         let widths = &mut scratch.widths;
         widths.clear();
         widths.extend(segments.iter().map(|s| s.width));
-        widths.push(segments[segments.len() - 1].width);
-        let smooth = self.options.smooth_all || segments[0].smooth;
+        widths.push(segments.last().width);
+        let smooth = self.options.smooth_all || segments.first().smooth;
         let samples = &mut scratch.samples;
         if smooth && points.len() > 2 {
             *samples = self.curve_samples(points, widths);
@@ -118,7 +136,7 @@ impl Builder<'_> {
     /// at u = 1); v is the distance along the axis in circumferences of the tube (the mean of the
     /// two rings' circumferences over each step), so a texture tile is as long as the tube is round.
     /// The first vertices go to `scratch.rings`.
-    fn rings(&mut self, skeleton: &Skeleton, segments: &[&Segment], scratch: &mut TubeScratch) {
+    fn rings(&mut self, segments: &Chain, scratch: &mut TubeScratch) {
         let samples = &scratch.samples;
         scratch.frame.clear();
         scratch
@@ -126,7 +144,7 @@ impl Builder<'_> {
             .extend(samples.iter().map(|s| (s.point, s.tangent)));
         curve::rotation_minimizing_normals_into(
             &scratch.frame,
-            segments[0].left,
+            segments.first().left,
             &mut scratch.normals,
         );
         let normals = &scratch.normals;
@@ -145,7 +163,7 @@ impl Builder<'_> {
             let n = normals[k];
             let b = sample.tangent.cross(n);
             let radius = 0.5 * sample.width * self.unit;
-            let c = skeleton.color(segments[sample.segment].color);
+            let c = segments.skeleton.color(segments.nth(sample.segment).color);
             let first = self.mesh.vertex_count() as u32;
             // The ring's vertices written in place, all arrays grown once per ring (as `vertex`
             // writes them, in the same arithmetic: four `extend`s a vertex cost more in wasm), one
@@ -163,24 +181,22 @@ impl Builder<'_> {
             let colors = &mut mesh.colors[at..];
             let uvs = &mut mesh.uvs[at_uv..];
             let (v32, sides32) = (v as f32, sides as f32);
-            let vertices = positions
-                .chunks_exact_mut(3)
-                .zip(normals_out.chunks_exact_mut(3))
-                .zip(uvs.chunks_exact_mut(2))
-                .zip(&self.ring);
-            for (j, (((position, normal), uv), &(sin, cos))) in vertices.enumerate() {
+            for (j, &(sin, cos)) in self.ring.iter().enumerate().take(sides) {
                 let radial = n * cos + b * sin;
                 let p = sample.point + radial * radius;
-                position.copy_from_slice(&[p.x as f32, p.y as f32, p.z as f32]);
-                normal.copy_from_slice(&[radial.x as f32, radial.y as f32, radial.z as f32]);
-                uv.copy_from_slice(&[j as f32 / sides32, v32]);
+                positions[3 * j..3 * j + 3].copy_from_slice(&[p.x as f32, p.y as f32, p.z as f32]);
+                normals_out[3 * j..3 * j + 3].copy_from_slice(&[
+                    radial.x as f32,
+                    radial.y as f32,
+                    radial.z as f32,
+                ]);
+                uvs[2 * j..2 * j + 2].copy_from_slice(&[j as f32 / sides32, v32]);
+                colors[3 * j..3 * j + 3].copy_from_slice(&c);
             }
             positions.copy_within(0..3, 3 * sides);
             normals_out.copy_within(0..3, 3 * sides);
             uvs[2 * sides..].copy_from_slice(&[1.0, v32]);
-            for color in colors.chunks_exact_mut(3) {
-                color.copy_from_slice(&c);
-            }
+            colors[3 * sides..].copy_from_slice(&c);
             rings.push(first);
         }
     }
@@ -189,12 +205,11 @@ impl Builder<'_> {
     /// consecutive `rings` (their ranges naming the segment each starts at) and the end cap.
     fn tube_triangles(
         &mut self,
-        skeleton: &Skeleton,
-        chain: &[u32],
-        segments: &[&Segment],
+        segments: &Chain,
         scratch: &mut TubeScratch,
         [start_cap, end_dome]: [bool; 2],
     ) {
+        let Chain { skeleton, chain } = *segments;
         let TubeScratch {
             samples,
             rings,
@@ -206,18 +221,19 @@ impl Builder<'_> {
         // Start cap, facing back along the axis.
         self.element = chain[0];
         self.material = MATERIAL_BARK;
-        self.range(segments[0].module, segments[0].color);
+        let first = segments.first();
+        self.range(first.module, first.color);
         if start_cap {
             self.cap(
                 samples[0].point,
                 -samples[0].tangent,
                 rings[0],
-                skeleton.color(segments[0].color),
+                skeleton.color(first.color),
                 true,
             );
         }
         for k in 0..rings.len() - 1 {
-            let segment = segments[samples[k].segment];
+            let segment = segments.nth(samples[k].segment);
             self.element = chain[samples[k].segment];
             self.range(segment.module, segment.color);
             let (a0, b0) = (rings[k], rings[k + 1]);
@@ -228,7 +244,7 @@ impl Builder<'_> {
             }
         }
         let last = samples.len() - 1;
-        let end = segments[segments.len() - 1];
+        let end = segments.last();
         self.element = chain[chain.len() - 1];
         self.range(end.module, end.color);
         let c = skeleton.color(end.color);
