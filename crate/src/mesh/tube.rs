@@ -181,22 +181,24 @@ impl Builder<'_> {
             let colors = &mut mesh.colors[at..];
             let uvs = &mut mesh.uvs[at_uv..];
             let (v32, sides32) = (v as f32, sides as f32);
-            for (j, &(sin, cos)) in self.ring.iter().enumerate().take(sides) {
+            let vertices = positions
+                .chunks_exact_mut(3)
+                .zip(normals_out.chunks_exact_mut(3))
+                .zip(uvs.chunks_exact_mut(2))
+                .zip(&self.ring);
+            for (j, (((position, normal), uv), &(sin, cos))) in vertices.enumerate() {
                 let radial = n * cos + b * sin;
                 let p = sample.point + radial * radius;
-                positions[3 * j..3 * j + 3].copy_from_slice(&[p.x as f32, p.y as f32, p.z as f32]);
-                normals_out[3 * j..3 * j + 3].copy_from_slice(&[
-                    radial.x as f32,
-                    radial.y as f32,
-                    radial.z as f32,
-                ]);
-                uvs[2 * j..2 * j + 2].copy_from_slice(&[j as f32 / sides32, v32]);
-                colors[3 * j..3 * j + 3].copy_from_slice(&c);
+                position.copy_from_slice(&[p.x as f32, p.y as f32, p.z as f32]);
+                normal.copy_from_slice(&[radial.x as f32, radial.y as f32, radial.z as f32]);
+                uv.copy_from_slice(&[j as f32 / sides32, v32]);
             }
             positions.copy_within(0..3, 3 * sides);
             normals_out.copy_within(0..3, 3 * sides);
             uvs[2 * sides..].copy_from_slice(&[1.0, v32]);
-            colors[3 * sides..].copy_from_slice(&c);
+            for color in colors.chunks_exact_mut(3) {
+                color.copy_from_slice(&c);
+            }
             rings.push(first);
         }
     }
