@@ -153,6 +153,9 @@ pub fn end_dome(starts: &PointSet, skeleton: &Skeleton, chain: &[u32]) -> bool {
 /// segments' ends and starts, asked about each chain, spent about a sixth of the mesh stage of
 /// ABOP 1.24d n = 10 (19,683 chains, 116,050 segments) in cache misses.
 pub fn chain_ends(skeleton: &Skeleton, chains: &[Vec<u32>]) -> Vec<(bool, bool)> {
+    if chains.is_empty() {
+        return Vec::new(); // no tubes (the Lines mode): no pass over the segments
+    }
     let segments = &skeleton.segments;
     let mut joints = Asked::new(chains.iter().map(|c| segments[c[0] as usize].start));
     let mut branchings = Asked::new(chains.iter().map(|c| end_of(skeleton, c)));
