@@ -45,7 +45,10 @@ fn main() {
     println!("chains: {ms:.2} ms");
     let chains = parts::chains(skeleton, unit);
     let ms = fastest(5, || {
-        std::hint::black_box(parts::chain_ends(skeleton, &chains));
+        std::hint::black_box(parts::chain_ends(
+            skeleton,
+            chains.iter().map(Vec::as_slice),
+        ));
     });
     println!(
         "caps and rounded ends of {} chains: {ms:.2} ms",

@@ -396,7 +396,7 @@ fn mesh_of(
     } else {
         Vec::new()
     };
-    let ends = parts::chain_ends(skeleton, &tubes);
+    let ends = parts::chain_ends(skeleton, tubes.iter().map(Vec::as_slice));
     for (chain, (start_cap, end_dome)) in tubes.into_iter().zip(ends) {
         let before = builder.mark();
         builder.tube(skeleton, &chain, start_cap, end_dome);

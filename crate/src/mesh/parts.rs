@@ -65,7 +65,7 @@ pub struct MeshParts {
 /// few points it asks about in one ([`chain_ends`]) rather than every segment's. The standard
 /// library's hash set was measured slower (its hasher).
 #[derive(Clone, Debug, Default)]
-pub struct PointSet {
+struct PointSet {
     keys: Vec<[u64; 3]>,
     /// `hash << 32 | (index + 1)` (the hash's low half: its high bits pick the slot), 0 where a slot is free; a power of two long.
     slots: Vec<u64>,
@@ -107,7 +107,8 @@ impl PointSet {
     }
 
     /// Whether the point with this exact key is in the set.
-    pub fn contains(&self, key: &[u64; 3]) -> bool {
+    #[cfg(test)]
+    fn contains(&self, key: &[u64; 3]) -> bool {
         self.index_of(key).is_some()
     }
 
@@ -132,33 +133,26 @@ impl PointSet {
     }
 }
 
-/// The start point of every segment as an exact key: where a chain's end is rounded.
-pub fn start_keys(skeleton: &Skeleton) -> PointSet {
-    PointSet::with_points(skeleton.segments.iter().map(|s| s.start))
-}
-
-/// Whether a chain's tube ends in a rounded dome rather than a flat cap: where another segment
-/// starts at its end (branches leave it there), so they grow out of a round joint, not a stump.
-/// `starts`: [`start_keys`]. [`chain_ends`] answers this for every chain at once.
-pub fn end_dome(starts: &PointSet, skeleton: &Skeleton, chain: &[u32]) -> bool {
-    starts.contains(&super::key(end_of(skeleton, chain)))
-}
-
-/// Whether each chain's tube gets a start cap (it does not start where a segment ends: a branch
-/// growing out of a joint starts inside its parent's tube) and a rounded end ([`end_dome`]), as
-/// `(start_cap, end_dome)`.
+/// Whether each chain's tube (its segments, in order) gets a start cap (it does not start where a
+/// segment ends: a branch growing out of a joint starts inside its parent's tube) and a rounded
+/// end (a segment starts at its end: branches leave there, and grow out of a round joint, not a
+/// stump), as `(start_cap, end_dome)`: what `build_mesh` asks of every chain, and the branch
+/// editor of the chains it keeps.
 ///
 /// The chains' starts and ends are put in two sets and every segment's end and start looked up
 /// in them, in one pass. Sets of the points asked stay in the cache, where sets of all the
 /// segments' ends and starts, asked about each chain, spent about a sixth of the mesh stage of
 /// ABOP 1.24d n = 10 (19,683 chains, 116,050 segments) in cache misses.
-pub fn chain_ends(skeleton: &Skeleton, chains: &[Vec<u32>]) -> Vec<(bool, bool)> {
-    if chains.is_empty() {
+pub fn chain_ends<'c>(
+    skeleton: &Skeleton,
+    chains: impl ExactSizeIterator<Item = &'c [u32]> + Clone,
+) -> Vec<(bool, bool)> {
+    if chains.len() == 0 {
         return Vec::new(); // no tubes (the Lines mode): no pass over the segments
     }
     let segments = &skeleton.segments;
-    let mut joints = Asked::new(chains.iter().map(|c| segments[c[0] as usize].start));
-    let mut branchings = Asked::new(chains.iter().map(|c| end_of(skeleton, c)));
+    let mut joints = Asked::new(chains.clone().map(|c| segments[c[0] as usize].start));
+    let mut branchings = Asked::new(chains.map(|c| end_of(skeleton, c)));
     // One pass over the segments (136 bytes each) for both questions.
     for s in segments {
         joints.look_for(s.end);

@@ -249,9 +249,10 @@ impl BranchEditor {
     /// Fails when a tube's end gained or lost the branch that starts there (its rounded end would
     /// become a flat cap, or the other way round).
     fn check_end_domes(&self, skeleton: &Skeleton) -> Result<(), String> {
-        let starts = parts::start_keys(skeleton);
-        for c in &self.parts.chains {
-            if parts::end_dome(&starts, skeleton, &c.segments) != c.end_dome {
+        let chains = self.parts.chains.iter();
+        let ends = parts::chain_ends(skeleton, chains.clone().map(|c| &c.segments[..]));
+        for (c, (_, end_dome)) in chains.zip(ends) {
+            if end_dome != c.end_dome {
                 return Err("a tube's rounded end appeared or vanished".into());
             }
         }
