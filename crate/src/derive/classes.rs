@@ -519,6 +519,19 @@ impl Classes {
         draw: &mut Draws<'_, R>,
         picks: &mut [u64],
     ) -> bool {
+        Room::fill(out, |room| {
+            self.write_fixed_into::<W, R>(ids, room, draw, picks)
+        })
+    }
+
+    #[inline(always)]
+    fn write_fixed_into<const W: usize, R: rand::Rng>(
+        &self,
+        ids: &[ModuleId],
+        out: &mut Room<'_>,
+        draw: &mut Draws<'_, R>,
+        picks: &mut [u64],
+    ) -> bool {
         let mut rewrites = 0;
         for &id in ids {
             let (mut start, mut len) = self.entry[id.index()];
@@ -531,8 +544,7 @@ impl Classes {
                 (start, len) = self.pick(id, u, picks);
             }
             rewrites |= len;
-            put_wide::<W>(
-                out,
+            out.put::<W>(
                 &self.successors,
                 start as usize,
                 (len & !(SPECIAL | REWRITES)) as usize,
@@ -715,6 +727,55 @@ pub(super) fn put(out: &mut Vec<ModuleId>, succ: &[ModuleId], start: usize, len:
             std::ptr::copy_nonoverlapping(from.as_ptr(), to, PAD);
         }
         out.set_len(at + len);
+    }
+}
+
+/// The spare room of an id buffer that a pass writes a successor at a time, each as a fixed `W`
+/// ids ([`Room::put`]), for passes that know the next length and made room for it and [`PAD`]
+/// more before the loop: what [`put_wide`] does without the `Vec`'s length and capacity, which in
+/// WebAssembly live in memory, loaded and stored for every module.
+pub(super) struct Room<'a> {
+    room: &'a mut [std::mem::MaybeUninit<ModuleId>],
+    at: usize,
+}
+
+impl Room<'_> {
+    /// Runs `write` on the spare room of `out`, then extends `out` by what it put.
+    pub(super) fn fill<T>(out: &mut Vec<ModuleId>, write: impl FnOnce(&mut Room<'_>) -> T) -> T {
+        let len = out.len();
+        let mut room = Room {
+            room: out.spare_capacity_mut(),
+            at: 0,
+        };
+        let result = write(&mut room);
+        let at = room.at;
+        // SAFETY: `put` writes every id below `at` before moving it (at least the `n` it moves
+        // by), within the spare room (checked slices), so the first `at` spare ids are written.
+        unsafe { out.set_len(len + at) };
+        result
+    }
+
+    /// Appends `succ[start..start + n]` by copying a fixed `W` ids (what lies past `n` is
+    /// overwritten by the next module): `succ` holds `W` ids from `start` (its padding). Panics
+    /// when the room is short, which the passes' lengths rule out.
+    #[inline(always)]
+    pub(super) fn put<const W: usize>(&mut self, succ: &[ModuleId], start: usize, n: usize) {
+        let at = self.at;
+        if n <= W {
+            let from: &[ModuleId; W] = succ[start..start + W].try_into().unwrap();
+            let to: &mut [_; W] = (&mut self.room[at..at + W]).try_into().unwrap();
+            // A copy of a constant size: wide stores, no call.
+            *to = from.map(std::mem::MaybeUninit::new);
+        } else {
+            // Never taken when `W` is the table's width.
+            for (to, &from) in self.room[at..at + n]
+                .iter_mut()
+                .zip(&succ[start..start + n])
+            {
+                to.write(from);
+            }
+        }
+        self.at = at + n;
     }
 }
 

@@ -8,7 +8,7 @@
 //! one through the successors), so the string is read once per step, not twice; when decomposition
 //! or cut change the string between steps, the ids are counted again.
 
-use super::classes::{put, put_wide, width, PAD};
+use super::classes::{put, width, Room, PAD};
 use super::{check_size, cut, memory_error, NOT_REWRITTEN};
 use crate::diagnostics::Diagnostic;
 use crate::model::{LString, Model, ModuleId};
@@ -20,7 +20,7 @@ pub(super) struct D0lTable {
     successors: Vec<ModuleId>,
     /// For each module id, its successor in `successors`: start and length.
     slot: Vec<(u32, u32)>,
-    /// The copy width of [`put_wide`] for these successors (0: some is longer than [`PAD`]).
+    /// The copy width of [`Room::put`] for these successors (0: some is longer than [`PAD`]).
     width: usize,
     /// For each module id, the production that rewrites it ([`NOT_REWRITTEN`] if none).
     production_of: Vec<u32>,
@@ -123,13 +123,15 @@ impl D0lTable {
         usize::try_from(len).unwrap_or(usize::MAX)
     }
 
-    /// Writes every module's successor as `W` ids ([`put_wide`]).
+    /// Writes every module's successor as `W` ids ([`Room::put`]).
     #[inline(never)]
     fn write<const W: usize>(&self, src: &LString, dst: &mut LString) {
-        for &id in &src.ids {
-            let (start, n) = self.slot[id.index()];
-            put_wide::<W>(&mut dst.ids, &self.successors, start as usize, n as usize);
-        }
+        Room::fill(&mut dst.ids, |room| {
+            for &id in &src.ids {
+                let (start, n) = self.slot[id.index()];
+                room.put::<W>(&self.successors, start as usize, n as usize);
+            }
+        })
     }
 
     pub(super) fn step(
