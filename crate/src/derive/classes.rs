@@ -423,6 +423,12 @@ impl Classes {
     pub fn choose_index(&self, class: &Class, u: f64) -> usize {
         let alternatives = &self.alternatives[class.start as usize..][..class.len as usize];
         let mut r = u * class.total;
+        if let [first, _] = alternatives {
+            // Two alternatives, the usual stochastic production: what the loop below picks (the
+            // second unless `r` is below the first's weight, NaN included) without its chain of
+            // dependent selects.
+            return usize::from(!(r < first.weight));
+        }
         let mut pick = alternatives.len().saturating_sub(1);
         let mut found = false;
         for (k, a) in alternatives.iter().enumerate() {
