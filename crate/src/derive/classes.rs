@@ -427,7 +427,10 @@ impl Classes {
             // Two alternatives, the usual stochastic production: what the loop below picks (the
             // second unless `r` is below the first's weight, NaN included) without its chain of
             // dependent selects.
-            return usize::from(!(r < first.weight));
+            return match r.partial_cmp(&first.weight) {
+                Some(std::cmp::Ordering::Less) => 0,
+                _ => 1,
+            };
         }
         let mut pick = alternatives.len().saturating_sub(1);
         let mut found = false;
