@@ -141,6 +141,86 @@ impl Extent {
     }
 }
 
+impl Extent {
+    /// The extent of points stored as x, y, z `f32`s (a sketch's line ends, in the order drawn):
+    /// [`Extent::EMPTY`] without a point. By comparisons, a NaN skipped, a zero bound +0 (ties
+    /// between -0 and +0 go either way with WebAssembly SIMD, so neither is kept).
+    pub fn of_f32_points(points: &[f32]) -> Extent {
+        if points.len() < 3 {
+            return Extent::EMPTY;
+        }
+        let (min, max) = f32_box(points);
+        // + 0.0 turns -0 into +0 and changes nothing else.
+        let bound = |v: [f32; 3]| DVec3::from_array(v.map(|c| f64::from(c) + 0.0));
+        let (min, max) = (bound(min), bound(max));
+        Extent {
+            min,
+            max,
+            // The largest |z| is the largest z or the smallest z negated.
+            max_abs_z: if max.z > -min.z { max.z } else { -min.z + 0.0 },
+        }
+    }
+}
+
+/// The smallest and the largest of each coordinate of `points` (x, y, z `f32`s), a NaN skipped.
+#[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
+fn f32_box(points: &[f32]) -> ([f32; 3], [f32; 3]) {
+    let mut min = [f32::INFINITY; 3];
+    let mut max = [f32::NEG_INFINITY; 3];
+    take_points(points, &mut min, &mut max);
+    (min, max)
+}
+
+/// [`f32_box`] with WebAssembly SIMD: four points (twelve values, three vectors) at a time, each
+/// lane its own bound of the coordinate it holds (the lanes' coordinates repeat every three
+/// vectors), the lanes' bounds and the last points folded together at the end.
+#[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+fn f32_box(points: &[f32]) -> ([f32; 3], [f32; 3]) {
+    use core::arch::wasm32::{f32x4_pmax, f32x4_pmin, f32x4_splat, v128, v128_load, v128_store};
+    let mut low = [f32x4_splat(f32::INFINITY); 3];
+    let mut high = [f32x4_splat(f32::NEG_INFINITY); 3];
+    let mut fours = points.chunks_exact(12);
+    for four in &mut fours {
+        for k in 0..3 {
+            // SAFETY: `four` holds 12 values, so 4 from 4k (`v128_load` needs no alignment).
+            let v = unsafe { v128_load(four.as_ptr().add(4 * k) as *const v128) };
+            // pmin(a, b) is `b < a ? b : a` and pmax(a, b) `a < b ? b : a`: the comparisons of
+            // `take_points`, a NaN skipped.
+            low[k] = f32x4_pmin(low[k], v);
+            high[k] = f32x4_pmax(high[k], v);
+        }
+    }
+    let lanes = |v: [v128; 3]| {
+        let mut out = [0f32; 12];
+        for (k, v) in v.into_iter().enumerate() {
+            // SAFETY: `out` has room for 4 values from 4k.
+            unsafe { v128_store(out.as_mut_ptr().add(4 * k) as *mut v128, v) };
+        }
+        out
+    };
+    let mut min = [f32::INFINITY; 3];
+    let mut max = [f32::NEG_INFINITY; 3];
+    take_points(&lanes(low), &mut min, &mut [f32::NEG_INFINITY; 3]);
+    take_points(&lanes(high), &mut [f32::INFINITY; 3], &mut max);
+    take_points(fours.remainder(), &mut min, &mut max);
+    (min, max)
+}
+
+/// Lowers `min` and raises `max` to the coordinates of `points` (x, y, z `f32`s): by
+/// comparisons, so a NaN changes nothing.
+fn take_points(points: &[f32], min: &mut [f32; 3], max: &mut [f32; 3]) {
+    for p in points.chunks_exact(3) {
+        for k in 0..3 {
+            if p[k] < min[k] {
+                min[k] = p[k];
+            }
+            if p[k] > max[k] {
+                max[k] = p[k];
+            }
+        }
+    }
+}
+
 /// `v` within ±[`MAX_COORDINATE`] (0 for NaN), and whether it had to change.
 pub(super) fn clamp_number(v: &mut f64) -> bool {
     let kept = if v.is_nan() {
