@@ -56,6 +56,9 @@ pub(super) struct Rewriter<'m, R: rand::Rng> {
     classes: Option<Classes>,
     /// The productions' classes, for strings with parameters.
     parametric: Option<parametric::Classes>,
+    /// Whether `classes` and `parametric` are built: on the first productions pass, so that a
+    /// derivation the D0L path runs alone (`super::d0l`) never builds them.
+    classes_built: bool,
     /// Scratch of a classes pass: each module's right neighbour, and a stack of neighbours.
     right: Vec<u32>,
     stack: Vec<u32>,
@@ -89,8 +92,9 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
             plan: None,
             group_depth: 0,
             repeat_passes: 0,
-            classes: Classes::new(model),
-            parametric: parametric::Classes::new(model),
+            classes: None,
+            parametric: None,
+            classes_built: false,
             right: Vec::new(),
             stack: Vec::new(),
             counts: classes::Counts::default(),
@@ -297,6 +301,11 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         let counted = self.counts.len.take();
         self.counts.carried = self.carried && counted == Some(src.len());
         let by_class = self.plan.is_none() && std::ptr::eq(rules, &model.productions);
+        if by_class && !self.classes_built {
+            self.classes = Classes::new(model);
+            self.parametric = parametric::Classes::new(model);
+            self.classes_built = true;
+        }
         let classes = if by_class { self.classes.take() } else { None };
         let parametric = if by_class {
             self.parametric.take()
