@@ -139,9 +139,7 @@ impl Extent {
         let size = (self.max - self.min).max_element();
         self.max_abs_z <= 1e-6 * size.max(1e-12)
     }
-}
 
-impl Extent {
     /// The extent of points stored as x, y, z `f32`s (a sketch's line ends, in the order drawn):
     /// [`Extent::EMPTY`] without a point. By comparisons, a NaN skipped, a zero bound +0 (ties
     /// between -0 and +0 go either way with WebAssembly SIMD, so neither is kept).
@@ -207,8 +205,9 @@ fn f32_box(points: &[f32]) -> ([f32; 3], [f32; 3]) {
 }
 
 /// Lowers `min` and raises `max` to the coordinates of `points` (x, y, z `f32`s): by
-/// comparisons, so a NaN changes nothing.
-fn take_points(points: &[f32], min: &mut [f32; 3], max: &mut [f32; 3]) {
+/// comparisons, so a NaN changes nothing (as `f64::min` skips it), the first of equal values kept.
+/// Also the mesh's bounds ([`crate::mesh::MeshBuffers::bounds`]).
+pub(crate) fn take_points(points: &[f32], min: &mut [f32; 3], max: &mut [f32; 3]) {
     for p in points.chunks_exact(3) {
         for k in 0..3 {
             if p[k] < min[k] {
