@@ -743,6 +743,8 @@ pub(super) fn put(out: &mut Vec<ModuleId>, succ: &[ModuleId], start: usize, len:
 /// ids ([`Room::put`]), for passes that know the next length and made room for it and [`PAD`]
 /// more before the loop: what [`put_wide`] does without the `Vec`'s length and capacity, which in
 /// WebAssembly live in memory, loaded and stored for every module.
+/// [`put_wide`] stays for the passes that also extend the `Vec` in bulk (the neighbours pass
+/// copies runs of quiet modules) or write parameters beside each successor (the parametric pass).
 pub(super) struct Room<'a> {
     room: &'a mut [std::mem::MaybeUninit<ModuleId>],
     at: usize,
@@ -798,10 +800,11 @@ impl Room<'_> {
     fn put_fixed<const C: usize>(&mut self, succ: &[ModuleId], start: usize, n: usize) {
         debug_assert!(n <= C);
         let at = self.at;
-        let from: &[ModuleId; C] = succ[start..start + C].try_into().unwrap();
-        let to: &mut [_; C] = (&mut self.room[at..at + C]).try_into().unwrap();
-        // A copy of a constant size: wide stores, no call.
-        *to = from.map(std::mem::MaybeUninit::new);
+        let from = &succ[start..start + C];
+        let to = &mut self.room[at..at + C];
+        // SAFETY: `from` and `to` are checked slices of `C` ids (an id is `Copy`): a copy of a
+        // constant size, wide stores, no call.
+        unsafe { std::ptr::copy_nonoverlapping(from.as_ptr(), to.as_mut_ptr().cast(), C) };
         self.at = at + n;
     }
 }
