@@ -3,7 +3,7 @@
 //! start (where it does not grow out of a joint) and at its end, rounded where branches leave it. A smooth axis is sampled along Bézier pieces through its joints; a straight one at
 //! its joints, each ring across the bisector of the segments it joins.
 
-use super::{curve, Builder, MATERIAL_BARK};
+use super::{curve, grow, push, Builder, MATERIAL_BARK};
 use crate::turtle::{Segment, Skeleton};
 use glam::DVec3;
 
@@ -91,11 +91,13 @@ impl Builder<'_> {
         let points = &mut scratch.points;
         points.clear();
         points.push(segments.first().start);
-        points.extend(segments.iter().map(|s| s.end));
         // The width at each joint: a segment's width at its start; the last keeps its own.
         let widths = &mut scratch.widths;
         widths.clear();
-        widths.extend(segments.iter().map(|s| s.width));
+        for s in segments.iter() {
+            points.push(s.end);
+            widths.push(s.width);
+        }
         widths.push(segments.last().width);
         let smooth = self.options.smooth_all || segments.first().smooth;
         let samples = &mut scratch.samples;
@@ -139,9 +141,9 @@ impl Builder<'_> {
     fn rings(&mut self, segments: &Chain, scratch: &mut TubeScratch) {
         let samples = &scratch.samples;
         scratch.frame.clear();
-        scratch
-            .frame
-            .extend(samples.iter().map(|s| (s.point, s.tangent)));
+        for s in samples {
+            scratch.frame.push((s.point, s.tangent));
+        }
         curve::rotation_minimizing_normals_into(
             &scratch.frame,
             segments.first().left,
@@ -165,38 +167,34 @@ impl Builder<'_> {
             let radius = 0.5 * sample.width * self.unit;
             let c = segments.skeleton.color(segments.nth(sample.segment).color);
             let first = self.mesh.vertex_count() as u32;
-            // The ring's vertices written in place, all arrays grown once per ring (as `vertex`
-            // writes them, in the same arithmetic: four `extend`s a vertex cost more in wasm), one
-            // per side from the builder's sin/cos table, then the seam's copy of the first at u = 1.
+            // The ring's vertices written in place, each array grown once per ring (as `vertex`
+            // writes them, in the same arithmetic: a call per vertex and array costs more in
+            // wasm), one per side from the builder's sin/cos table, then the seam's copy of the
+            // first at u = 1.
             let mesh = &mut self.mesh;
             let count = sides + 1;
-            let at = mesh.positions.len();
-            mesh.positions.resize(at + 3 * count, 0.0);
-            mesh.normals.resize(at + 3 * count, 0.0);
-            mesh.colors.resize(at + 3 * count, 0.0);
-            let at_uv = mesh.uvs.len();
-            mesh.uvs.resize(at_uv + 2 * count, 0.0);
-            let positions = &mut mesh.positions[at..];
-            let normals_out = &mut mesh.normals[at..];
-            let colors = &mut mesh.colors[at..];
-            let uvs = &mut mesh.uvs[at_uv..];
+            let positions = grow(&mut mesh.positions, 3 * count, 0.0);
+            let normals_out = grow(&mut mesh.normals, 3 * count, 0.0);
+            let uvs = grow(&mut mesh.uvs, 2 * count, 0.0);
             let (v32, sides32) = (v as f32, sides as f32);
-            let vertices = positions
-                .chunks_exact_mut(3)
-                .zip(normals_out.chunks_exact_mut(3))
-                .zip(uvs.chunks_exact_mut(2))
-                .zip(&self.ring);
-            for (j, (((position, normal), uv), &(sin, cos))) in vertices.enumerate() {
+            for (j, position) in positions.chunks_exact_mut(3).enumerate() {
+                let (side, u) = if j < sides {
+                    (j, j as f32 / sides32)
+                } else {
+                    (0, 1.0)
+                };
+                let (sin, cos) = self.ring[side];
                 let radial = n * cos + b * sin;
                 let p = sample.point + radial * radius;
                 position.copy_from_slice(&[p.x as f32, p.y as f32, p.z as f32]);
-                normal.copy_from_slice(&[radial.x as f32, radial.y as f32, radial.z as f32]);
-                uv.copy_from_slice(&[j as f32 / sides32, v32]);
+                normals_out[3 * j..3 * j + 3].copy_from_slice(&[
+                    radial.x as f32,
+                    radial.y as f32,
+                    radial.z as f32,
+                ]);
+                uvs[2 * j..2 * j + 2].copy_from_slice(&[u, v32]);
             }
-            positions.copy_within(0..3, 3 * sides);
-            normals_out.copy_within(0..3, 3 * sides);
-            uvs[2 * sides..].copy_from_slice(&[1.0, v32]);
-            for color in colors.chunks_exact_mut(3) {
+            for color in grow(&mut mesh.colors, 3 * count, 0.0).chunks_exact_mut(3) {
                 color.copy_from_slice(&c);
             }
             rings.push(first);
@@ -239,10 +237,11 @@ impl Builder<'_> {
             self.element = chain[samples[k].segment];
             self.range(segment.module, segment.color);
             let (a0, b0) = (rings[k], rings[k + 1]);
-            for j in 0..n {
-                let next = j + 1;
+            let quads = grow(&mut self.mesh.indices, 6 * n as usize, 0);
+            for (j, quad) in quads.chunks_exact_mut(6).enumerate() {
+                let (j, next) = (j as u32, j as u32 + 1);
                 let (a, b, c, d) = (a0 + j, a0 + next, b0 + j, b0 + next);
-                self.mesh.indices.extend([a, b, c, b, d, c]);
+                quad.copy_from_slice(&[a, b, c, b, d, c]);
             }
         }
         let last = samples.len() - 1;
@@ -276,10 +275,12 @@ impl Builder<'_> {
             DVec3::new(array[i] as f64, array[i + 1] as f64, array[i + 2] as f64)
         };
         offsets.clear();
-        offsets.extend((0..n).map(|j| read(&self.mesh.positions, j) - center));
         // The ring's own normals point out of the tube (as the full mesh and a partial one agree).
         outs.clear();
-        outs.extend((0..n).map(|j| read(&self.mesh.normals, j)));
+        for j in 0..n {
+            offsets.push(read(&self.mesh.positions, j) - center);
+            outs.push(read(&self.mesh.normals, j));
+        }
         let radius = offsets.iter().map(|o| o.length()).sum::<f64>() / n as f64;
         let mut rings = [0u32; DOME_STEPS];
         for (step, first_of_step) in rings.iter_mut().enumerate() {
@@ -299,12 +300,12 @@ impl Builder<'_> {
             for j in 0..n {
                 let next = (j + 1) % n;
                 let (a, b, c, d) = (a0 + j, a0 + next, b0 + j, b0 + next);
-                self.mesh.indices.extend([a, b, c, b, d, c]);
+                push(&mut self.mesh.indices, [a, b, c, b, d, c]);
             }
         }
         let top = rings[rings.len() - 1];
         for j in 0..n {
-            self.mesh.indices.extend([apex, top + j, top + (j + 1) % n]);
+            push(&mut self.mesh.indices, [apex, top + j, top + (j + 1) % n]);
         }
     }
 
@@ -329,9 +330,9 @@ impl Builder<'_> {
         for j in 0..n {
             let (a, b) = (first + j, first + (j + 1) % n);
             if reverse {
-                self.mesh.indices.extend([middle, b, a]);
+                push(&mut self.mesh.indices, [middle, b, a]);
             } else {
-                self.mesh.indices.extend([middle, a, b]);
+                push(&mut self.mesh.indices, [middle, a, b]);
             }
         }
     }

@@ -208,16 +208,31 @@ fn f32_box(points: &[f32]) -> ([f32; 3], [f32; 3]) {
 /// comparisons, so a NaN changes nothing (as `f64::min` skips it), the first of equal values kept.
 /// Also the mesh's bounds ([`crate::mesh::MeshBuffers::bounds`]).
 pub(crate) fn take_points(points: &[f32], min: &mut [f32; 3], max: &mut [f32; 3]) {
+    // In locals, one comparison each spelled out: the studio's core (opt-level "s") neither
+    // unrolls the loop over x, y, z nor keeps the arrays behind the references in registers.
+    let ([mut x0, mut y0, mut z0], [mut x1, mut y1, mut z1]) = (*min, *max);
     for p in points.chunks_exact(3) {
-        for k in 0..3 {
-            if p[k] < min[k] {
-                min[k] = p[k];
-            }
-            if p[k] > max[k] {
-                max[k] = p[k];
-            }
+        let (x, y, z) = (p[0], p[1], p[2]);
+        if x < x0 {
+            x0 = x;
+        }
+        if x > x1 {
+            x1 = x;
+        }
+        if y < y0 {
+            y0 = y;
+        }
+        if y > y1 {
+            y1 = y;
+        }
+        if z < z0 {
+            z0 = z;
+        }
+        if z > z1 {
+            z1 = z;
         }
     }
+    (*min, *max) = ([x0, y0, z0], [x1, y1, z1]);
 }
 
 /// `v` within ±[`MAX_COORDINATE`] (0 for NaN), and whether it had to change.
