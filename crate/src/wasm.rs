@@ -336,18 +336,22 @@ pub fn build_sketch(source: &str, iterations: Option<u32>) -> PlantBuild {
     build_reading(source, &options.options(), None, None)
 }
 
+/// The time `clock` (JavaScript's `() => performance.now()`) tells; 0 without one or when it
+/// throws.
+fn read_clock(clock: Option<&js_sys::Function>) -> f64 {
+    clock
+        .and_then(|c| c.call0(&JsValue::NULL).ok())
+        .and_then(|t| t.as_f64())
+        .unwrap_or(0.0)
+}
+
 fn build_reading(
     source: &str,
     options: &BuildOptions,
     clock: Option<&js_sys::Function>,
     progress: Option<&js_sys::Function>,
 ) -> PlantBuild {
-    let mut now = || {
-        clock
-            .and_then(|c| c.call0(&JsValue::NULL).ok())
-            .and_then(|t| t.as_f64())
-            .unwrap_or(0.0)
-    };
+    let mut now = || read_clock(clock);
     let mut tell = |p: Progress| {
         let (stage, step, steps) = match p {
             Progress::Started(stage) => (stage, 0, 0),
@@ -682,10 +686,20 @@ impl PlantBuild {
     }
 
     /// Meshes the plant again with other view options (no new derivation); the arrays and stats
-    /// change.
-    pub fn remesh(&mut self, options: &ViewOptionsObject) -> Result<(), JsError> {
+    /// change. `clock`, as `build`'s: when both were given, `timings()` adds the time this took
+    /// (a sketch's skeleton to `interpret`, the mesh to `mesh`).
+    pub fn remesh(
+        &mut self,
+        options: &ViewOptionsObject,
+        clock: Option<js_sys::Function>,
+    ) -> Result<(), JsError> {
         let view = ViewOptionsFields::read(options)?;
-        self.build.remesh(&view.mesh());
+        let mut now = || read_clock(clock.as_ref());
+        let mut hooks = Hooks {
+            clock: clock.as_ref().map(|_| &mut now as &mut dyn FnMut() -> f64),
+            progress: None,
+        };
+        self.build.remesh_with(&view.mesh(), &mut hooks);
         Ok(())
     }
 

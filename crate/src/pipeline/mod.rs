@@ -249,8 +249,22 @@ impl Build {
     /// Meshes the plant again with other mesh options (a view option such as the number of sides
     /// or smooth axes needs no new derivation).
     pub fn remesh(&mut self, options: &MeshOptions) {
+        self.remesh_with(options, &mut Hooks::default());
+    }
+
+    /// [`Build::remesh`], timed with the caller's clock when the build was: drawing a sketch's
+    /// skeleton adds to [`StageTimings::interpret`], meshing to [`StageTimings::mesh`] (a
+    /// sketched build's mesh stage is then the tubes', not only its lines').
+    pub fn remesh_with(&mut self, options: &MeshOptions, hooks: &mut Hooks) {
+        let mut watch = Watch::new(hooks);
         self.ensure_skeleton();
+        let interpret = watch.lap();
         self.plant.remesh(options);
+        let mesh = watch.lap();
+        if let Some(timings) = self.timings.as_mut() {
+            timings.interpret += interpret;
+            timings.mesh += mesh;
+        }
     }
 
     /// Draws the skeleton of a sketch's plant ([`BuildOptions::sketch`]), once; nothing otherwise.
@@ -554,6 +568,25 @@ mod tests {
             timings.to_json(),
             r#"{"parseResolve":1.0,"derive":1.0,"interpret":1.0,"mesh":1.0}"#
         );
+    }
+
+    #[test]
+    fn a_timed_remesh_of_a_sketch_adds_its_skeleton_to_interpret_and_its_tubes_to_mesh() {
+        let mut clock = ticking();
+        let options = BuildOptions {
+            sketch: true,
+            ..BuildOptions::default()
+        };
+        let mut result = build_with("axiom: F\nF -> FF", &options, &mut timed(&mut clock));
+        result.remesh_with(&options.mesh, &mut timed(&mut clock));
+        let timings = result.timings.expect("timings");
+        assert_eq!((timings.interpret, timings.mesh), (2.0, 2.0));
+        // Without a clock, or on a build made without one, nothing is timed.
+        result.remesh(&options.mesh);
+        assert_eq!(result.timings, Some(timings));
+        let mut untimed = build("axiom: F", &options);
+        untimed.remesh_with(&options.mesh, &mut timed(&mut clock));
+        assert_eq!(untimed.timings, None);
     }
 
     #[test]

@@ -145,7 +145,8 @@ export interface SketchRequest {
  * draws the lines straight from the string, without the skeleton), the sketch handed to
  * `request.show` when the plant is big, then the mesh (`remesh` with the view options: the
  * skeleton, and the very mesh a plain build makes; without the tubes when `options.tubes` says
- * so). The mesh stage's time is the remesh's.
+ * so). The remesh is timed with the build's clock: the skeleton's time adds to the interpret
+ * stage's, the tubes' to the mesh stage's.
  */
 function runSketched(
   core: (...args: Parameters<typeof build>) => WasmPlantBuild,
@@ -163,19 +164,14 @@ function runSketched(
       }
     }
     if (result.ok) onProgress?.({ stage: 'meshing', step: 0, steps: 0 });
-    const start = performance.now();
     const tubes = options.tubes === 'unlessFlat' ? !result.flat : options.tubes !== false;
-    guarded(() => result.remesh({ sides: options.sides, smoothAll: options.smoothAll, tubes }));
-    meshMillis.set(result, performance.now() - start);
+    guarded(() => result.remesh({ sides: options.sides, smoothAll: options.smoothAll, tubes }, () => performance.now()));
     return result;
   } catch (error) {
     result.free();
     throw error;
   }
 }
-
-/** The remesh time of sketched builds (their own timings hold the line fallback's). */
-const meshMillis = new WeakMap<WasmPlantBuild, number>();
 
 /** Runs the core's `build` (for this folder's facades; the caller frees the result). */
 export function runBuild(source: string, options: BuildOptions & { sketch?: boolean }, onProgress?: (progress: BuildProgress) => void): WasmPlantBuild {
@@ -228,15 +224,11 @@ export function plainBuild(source: string, result: WasmPlantBuild, forGpu = fals
       }),
     ),
     origins: ownedArray(result.origins()),
-    timings: withMeshTime((JSON.parse(result.timings()) as StageTimings | null) ?? NO_TIMINGS, meshMillis.get(result)),
+    timings: (JSON.parse(result.timings()) as StageTimings | null) ?? NO_TIMINGS,
     flat: result.flat,
     grammarIterations: result.grammarIterations,
     seed: result.seed,
   }));
-}
-
-function withMeshTime(timings: StageTimings, mesh: number | undefined): StageTimings {
-  return mesh === undefined ? timings : { ...timings, mesh: timings.mesh + mesh };
 }
 
 /** The core's classes that hold a plant's mesh: a build and an editor. */
