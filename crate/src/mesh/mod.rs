@@ -765,10 +765,11 @@ fn push_range(ranges: &mut Vec<u32>, first: u32, value: u32) {
     push(ranges, [first, value]);
 }
 
-// The mesh's arrays grow through `grow` and `push`, not `Vec::resize` and `Vec::extend`: the
-// studio's core is built for size (opt-level "s", scripts/build-wasm.sh), which leaves those as
-// calls that write one element at a time, and they took half of the mesh stage (ABOP 1.24d n = 10,
-// 1.09 M vertices: 76 ms against 41 at opt-level 3, measured in Node 2026-11-27).
+// The mesh's arrays grow through `grow` and `push`, not `Vec::resize` and `Vec::extend`: the first
+// plant's core (crate/pkg-core, which the studio builds with until its studio core has loaded) is
+// built for size (opt-level "s", scripts/build-wasm.sh), which leaves those as calls that write one
+// element at a time, and they took a third of the mesh stage (ABOP 1.24d n = 10, 1.09 M vertices:
+// 69 ms against 47, and 41 at opt-level 3; measured in Node 2026-11-27).
 
 /// Appends `n` copies of `value` to `v` and returns them, to be written over.
 #[inline(always)]

@@ -208,7 +208,7 @@ fn f32_box(points: &[f32]) -> ([f32; 3], [f32; 3]) {
 /// comparisons, so a NaN changes nothing (as `f64::min` skips it), the first of equal values kept.
 /// Also the mesh's bounds ([`crate::mesh::MeshBuffers::bounds`]).
 pub(crate) fn take_points(points: &[f32], min: &mut [f32; 3], max: &mut [f32; 3]) {
-    // In locals, one comparison each spelled out: the studio's core (opt-level "s") neither
+    // In locals, one comparison each spelled out: the first plant's core (opt-level "s") neither
     // unrolls the loop over x, y, z nor keeps the arrays behind the references in registers.
     let ([mut x0, mut y0, mut z0], [mut x1, mut y1, mut z1]) = (*min, *max);
     for p in points.chunks_exact(3) {
