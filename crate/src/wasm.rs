@@ -472,6 +472,18 @@ impl ExportedModel {
     }
 }
 
+/// An error unless a mesh array of `len` values fits a typed array of `out` values exactly.
+#[cfg(feature = "studio-extras")]
+fn same_length(len: usize, out: u32) -> Result<(), JsError> {
+    if len == out as usize {
+        Ok(())
+    } else {
+        Err(JsError::new(&format!(
+            "the array has {len} values, the typed array to copy them into {out}"
+        )))
+    }
+}
+
 /// The typed-array getters of a plant's mesh, for [`PlantBuild`] and [`PlantEditor`] alike.
 macro_rules! mesh_getters {
     ($class:ident, $plant:ident => $get:expr) => {
@@ -525,6 +537,63 @@ macro_rules! mesh_getters {
             pub fn uvs(&self) -> js_sys::Float32Array {
                 let $plant = self;
                 js_sys::Float32Array::from(&$get.mesh.uvs[..])
+            }
+
+            /// `positions` copied into `out` (a `Float32Array` of that length): the studio's build
+            /// worker copies a big mesh into buffers it made ahead (`web/src/core/spare-buffers.ts`)
+            /// rather than into new ones. Throws when the lengths differ; so do the four below.
+            #[cfg(feature = "studio-extras")]
+            #[wasm_bindgen(js_name = positionsInto)]
+            pub fn positions_into(&self, out: &js_sys::Float32Array) -> Result<(), JsError> {
+                let $plant = self;
+                let values = &$get.mesh.positions;
+                same_length(values.len(), out.length())?;
+                out.copy_from(values);
+                Ok(())
+            }
+
+            /// `indices` copied into `out`, as [`Self::positions_into`].
+            #[cfg(feature = "studio-extras")]
+            #[wasm_bindgen(js_name = indicesInto)]
+            pub fn indices_into(&self, out: &js_sys::Uint32Array) -> Result<(), JsError> {
+                let $plant = self;
+                let values = &$get.mesh.indices;
+                same_length(values.len(), out.length())?;
+                out.copy_from(values);
+                Ok(())
+            }
+
+            /// `uvs` copied into `out`, as [`Self::positions_into`].
+            #[cfg(feature = "studio-extras")]
+            #[wasm_bindgen(js_name = uvsInto)]
+            pub fn uvs_into(&self, out: &js_sys::Float32Array) -> Result<(), JsError> {
+                let $plant = self;
+                let values = &$get.mesh.uvs;
+                same_length(values.len(), out.length())?;
+                out.copy_from(values);
+                Ok(())
+            }
+
+            /// `packedNormals` written into `out`, as [`Self::positions_into`].
+            #[cfg(feature = "studio-extras")]
+            #[wasm_bindgen(js_name = packedNormalsInto)]
+            pub fn packed_normals_into(&self, out: &js_sys::Int16Array) -> Result<(), JsError> {
+                let $plant = self;
+                let values = mesh::pack_normals(&$get.mesh.normals);
+                same_length(values.len(), out.length())?;
+                out.copy_from(&values);
+                Ok(())
+            }
+
+            /// `packedColors` written into `out`, as [`Self::positions_into`].
+            #[cfg(feature = "studio-extras")]
+            #[wasm_bindgen(js_name = packedColorsInto)]
+            pub fn packed_colors_into(&self, out: &js_sys::Uint8Array) -> Result<(), JsError> {
+                let $plant = self;
+                let values = mesh::pack_colors(&$get.mesh.colors);
+                same_length(values.len(), out.length())?;
+                out.copy_from(&values);
+                Ok(())
             }
 
             /// Material kinds: (first triangle, kind) pairs, 0 bark, 1 leaf, 2 plain.

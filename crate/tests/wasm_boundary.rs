@@ -145,6 +145,29 @@ mod wasm {
     }
 
     #[wasm_bindgen_test]
+    fn mesh_arrays_copy_into_typed_arrays_of_their_length_only() {
+        let b = build("axiom: F+F", &options(0, 1), None, None).unwrap();
+        let positions = b.positions().to_vec();
+        let out = js_sys::Float32Array::new_with_length(positions.len() as u32);
+        b.positions_into(&out).unwrap();
+        assert_eq!(out.to_vec(), positions);
+        let indices = b.indices().to_vec();
+        let out = js_sys::Uint32Array::new_with_length(indices.len() as u32);
+        b.indices_into(&out).unwrap();
+        assert_eq!(out.to_vec(), indices);
+        let normals = b.packed_normals();
+        let out = js_sys::Int16Array::new_with_length(normals.len() as u32);
+        b.packed_normals_into(&out).unwrap();
+        assert_eq!(out.to_vec(), normals);
+        let short = js_sys::Float32Array::new_with_length(positions.len() as u32 - 1);
+        assert!(b.positions_into(&short).is_err());
+        assert!(b.uvs_into(&short).is_err());
+        assert!(b
+            .packed_colors_into(&js_sys::Uint8Array::new_with_length(1))
+            .is_err());
+    }
+
+    #[wasm_bindgen_test]
     fn the_tables_cross_the_boundary() {
         assert_eq!(version(), env!("CARGO_PKG_VERSION"));
         let vocabulary: serde_json::Value = serde_json::from_str(&vocabulary()).unwrap();

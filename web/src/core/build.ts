@@ -4,11 +4,13 @@ import { build, type PlantBuild as WasmPlantBuild, type PlantInspector as WasmPl
 import type {
   build as studioBuildType,
   Explanation as WasmExplanation,
+  PlantBuild as StudioPlantBuild,
   PlantEditor as WasmPlantEditor,
   PlantInspector as StudioPlantInspector,
 } from '../../../crate/pkg/meristem.js';
 import { utf16Offsets } from './offsets';
 import { assertReady, guarded, ownedArray } from './init';
+import type { SpareBuffers } from './spare-buffers';
 import {
   DERIVED_PREVIEW_CHARS,
   type BuildOptions,
@@ -99,6 +101,7 @@ export function inspectPlant(
   sketch: SketchRequest | undefined,
   onProgress: ((progress: BuildProgress) => void) | undefined,
   forGpu: true,
+  spares?: SpareBuffers,
 ): { build: PlantBuild; inspector: PlantInspector; gpu: GpuArrays };
 export function inspectPlant(
   source: string,
@@ -106,14 +109,22 @@ export function inspectPlant(
   sketch?: SketchRequest,
   onProgress?: (progress: BuildProgress) => void,
   forGpu = false,
+  spares?: SpareBuffers,
 ): { build: PlantBuild; inspector: PlantInspector; gpu?: GpuArrays } {
   const core: (...args: Parameters<typeof build>) => WasmPlantBuild = studioBuild ?? build;
   const result = sketch ? runSketched(core, source, options, sketch, onProgress) : runBuildWith(core, source, options, onProgress);
   let plain: PlantBuild;
   let gpu: GpuArrays | undefined;
   try {
-    plain = plainBuild(source, result, forGpu);
-    if (forGpu) gpu = guarded(() => ({ normals: ownedArray(result.packedNormals()), colors: ownedArray(result.packedColors()) }));
+    plain = plainBuild(source, result, forGpu, spares);
+    if (forGpu) {
+      const into = copiesInto(result);
+      const values = 3 * plain.stats.vertices;
+      gpu = guarded(() => ({
+        normals: copied(Int16Array, values, spares, into?.packedNormalsInto.bind(into), () => result.packedNormals()),
+        colors: copied(Uint8Array, values, spares, into?.packedColorsInto.bind(into), () => result.packedColors()),
+      }));
+    }
   } catch (error) {
     result.free();
     throw error;
@@ -202,15 +213,15 @@ interface RawProduction {
 /**
  * Copies a wasm build into plain data (for this folder's facades; the caller frees the build).
  * `forGpu`: without the mesh's float normals and colours (empty arrays), which the caller takes
- * packed for the GPU instead.
+ * packed for the GPU instead. `spares`: see {@link copyMesh}.
  */
-export function plainBuild(source: string, result: WasmPlantBuild, forGpu = false): PlantBuild {
+export function plainBuild(source: string, result: WasmPlantBuild, forGpu = false, spares?: SpareBuffers): PlantBuild {
   const toUtf16 = utf16Offsets(source);
   return guarded(() => ({
     ok: result.ok,
     diagnostics: (JSON.parse(result.diagnostics()) as RawDiagnostic[]).map(toDiagnostic),
     stats: JSON.parse(result.stats()) as PlantStats,
-    mesh: copyMesh(result, forGpu),
+    mesh: copyMesh(result, forGpu, spares),
     derived: result.derived(DERIVED_PREVIEW_CHARS),
     moduleCount: result.moduleCount,
     productions: (JSON.parse(result.productions()) as RawProduction[]).map(
@@ -234,15 +245,21 @@ export function plainBuild(source: string, result: WasmPlantBuild, forGpu = fals
 /** The core's classes that hold a plant's mesh: a build and an editor. */
 type MeshHolder = WasmPlantBuild | WasmPlantEditor;
 
-/** Copies every mesh array of a wasm build or editor out of wasm memory (`forGpu`: see {@link plainBuild}). */
-export function copyMesh(result: MeshHolder, forGpu = false): MeshBuffers {
+/**
+ * Copies every mesh array of a wasm build or editor out of wasm memory (`forGpu`: see
+ * {@link plainBuild}). With `spares`, a build of the studio core copies its biggest arrays into
+ * spare buffers of their size where there are some (./spare-buffers.ts).
+ */
+export function copyMesh(result: MeshHolder, forGpu = false, spares?: SpareBuffers): MeshBuffers {
+  const into = spares && copiesInto(result);
+  const { vertices, triangles } = into ? (JSON.parse(result.stats()) as PlantStats) : { vertices: 0, triangles: 0 };
   return guarded(() => ({
-    positions: ownedArray(result.positions()),
+    positions: copied(Float32Array, 3 * vertices, spares, into?.positionsInto.bind(into), () => result.positions()),
     normals: forGpu ? new Float32Array(0) : ownedArray(result.normals()),
     colors: forGpu ? new Float32Array(0) : ownedArray(result.colors()),
-    indices: ownedArray(result.indices()),
+    indices: copied(Uint32Array, 3 * triangles, spares, into?.indicesInto.bind(into), () => result.indices()),
     ranges: ownedArray(result.ranges()),
-    uvs: ownedArray(result.uvs()),
+    uvs: copied(Float32Array, 2 * vertices, spares, into?.uvsInto.bind(into), () => result.uvs()),
     materialRanges: ownedArray(result.materialRanges()),
     lines: ownedArray(result.lines()),
     lineColors: ownedArray(result.lineColors()),
@@ -250,6 +267,34 @@ export function copyMesh(result: MeshHolder, forGpu = false): MeshBuffers {
     segmentColors: ownedArray(result.segmentColors()),
     segmentModules: ownedArray(result.segmentModules()),
   }));
+}
+
+/** The studio core's methods that copy a build's big arrays into given ones (crate/pkg only). */
+type CopiesInto = Pick<StudioPlantBuild, 'positionsInto' | 'indicesInto' | 'uvsInto' | 'packedNormalsInto' | 'packedColorsInto'>;
+
+/** `result` as a {@link CopiesInto} when the studio core made it, else `undefined`. */
+function copiesInto(result: object): CopiesInto | undefined {
+  return 'positionsInto' in result ? (result as unknown as CopiesInto) : undefined;
+}
+
+type CopiedArray = Float32Array | Uint32Array | Int16Array | Uint8Array;
+
+/**
+ * `length` values out of the core: written by `into` into a spare buffer when `spares` has one of
+ * that size, else the core's own new array (`fresh`).
+ */
+function copied<T extends CopiedArray>(
+  Kind: { new (buffer: ArrayBuffer, offset: number, length: number): T; BYTES_PER_ELEMENT: number },
+  length: number,
+  spares: SpareBuffers | undefined,
+  into: ((out: T) => void) | undefined,
+  fresh: () => T,
+): T {
+  const spare = into && spares?.take(length * Kind.BYTES_PER_ELEMENT);
+  if (!spare) return ownedArray(fresh());
+  const out = new Kind(spare, 0, length);
+  into(out);
+  return out;
 }
 
 /** Copies a wasm explanation into plain data and frees it. */

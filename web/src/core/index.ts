@@ -5,6 +5,7 @@ export { initIo } from './io';
 export { loadBranchEditing, type EditPlant } from './editing';
 export { buildPlant, inspectPlant, studioCoreInUse, type PlantSketch, type SketchRequest } from './build';
 export { loadStudioCore } from './studio-core-loader';
+export { SpareBuffers } from './spare-buffers';
 export {
   exportModel,
   exportModelWithProgress,
