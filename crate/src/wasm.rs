@@ -472,16 +472,17 @@ impl ExportedModel {
     }
 }
 
-/// An error unless a mesh array of `len` values fits a typed array of `out` values exactly.
+/// `copy(values)` when a typed array of `out` values fits `values` exactly, else an error.
 #[cfg(feature = "studio-extras")]
-fn same_length(len: usize, out: u32) -> Result<(), JsError> {
-    if len == out as usize {
-        Ok(())
-    } else {
-        Err(JsError::new(&format!(
-            "the array has {len} values, the typed array to copy them into {out}"
-        )))
+fn copy_into<T>(values: &[T], out: u32, copy: impl FnOnce(&[T])) -> Result<(), JsError> {
+    if values.len() != out as usize {
+        return Err(JsError::new(&format!(
+            "the array has {} values, the typed array to copy them into {out}",
+            values.len()
+        )));
     }
+    copy(values);
+    Ok(())
 }
 
 /// The typed-array getters of a plant's mesh, for [`PlantBuild`] and [`PlantEditor`] alike.
@@ -546,10 +547,9 @@ macro_rules! mesh_getters {
             #[wasm_bindgen(js_name = positionsInto)]
             pub fn positions_into(&self, out: &js_sys::Float32Array) -> Result<(), JsError> {
                 let $plant = self;
-                let values = &$get.mesh.positions;
-                same_length(values.len(), out.length())?;
-                out.copy_from(values);
-                Ok(())
+                copy_into(&$get.mesh.positions, out.length(), |values| {
+                    out.copy_from(values)
+                })
             }
 
             /// `indices` copied into `out`, as [`Self::positions_into`].
@@ -557,10 +557,9 @@ macro_rules! mesh_getters {
             #[wasm_bindgen(js_name = indicesInto)]
             pub fn indices_into(&self, out: &js_sys::Uint32Array) -> Result<(), JsError> {
                 let $plant = self;
-                let values = &$get.mesh.indices;
-                same_length(values.len(), out.length())?;
-                out.copy_from(values);
-                Ok(())
+                copy_into(&$get.mesh.indices, out.length(), |values| {
+                    out.copy_from(values)
+                })
             }
 
             /// `uvs` copied into `out`, as [`Self::positions_into`].
@@ -568,10 +567,7 @@ macro_rules! mesh_getters {
             #[wasm_bindgen(js_name = uvsInto)]
             pub fn uvs_into(&self, out: &js_sys::Float32Array) -> Result<(), JsError> {
                 let $plant = self;
-                let values = &$get.mesh.uvs;
-                same_length(values.len(), out.length())?;
-                out.copy_from(values);
-                Ok(())
+                copy_into(&$get.mesh.uvs, out.length(), |values| out.copy_from(values))
             }
 
             /// `packedNormals` written into `out`, as [`Self::positions_into`].
@@ -579,10 +575,11 @@ macro_rules! mesh_getters {
             #[wasm_bindgen(js_name = packedNormalsInto)]
             pub fn packed_normals_into(&self, out: &js_sys::Int16Array) -> Result<(), JsError> {
                 let $plant = self;
-                let values = mesh::pack_normals(&$get.mesh.normals);
-                same_length(values.len(), out.length())?;
-                out.copy_from(&values);
-                Ok(())
+                copy_into(
+                    &mesh::pack_normals(&$get.mesh.normals),
+                    out.length(),
+                    |values| out.copy_from(values),
+                )
             }
 
             /// `packedColors` written into `out`, as [`Self::positions_into`].
@@ -590,10 +587,11 @@ macro_rules! mesh_getters {
             #[wasm_bindgen(js_name = packedColorsInto)]
             pub fn packed_colors_into(&self, out: &js_sys::Uint8Array) -> Result<(), JsError> {
                 let $plant = self;
-                let values = mesh::pack_colors(&$get.mesh.colors);
-                same_length(values.len(), out.length())?;
-                out.copy_from(&values);
-                Ok(())
+                copy_into(
+                    &mesh::pack_colors(&$get.mesh.colors),
+                    out.length(),
+                    |values| out.copy_from(values),
+                )
             }
 
             /// Material kinds: (first triangle, kind) pairs, 0 bark, 1 leaf, 2 plain.

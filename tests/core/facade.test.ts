@@ -4,7 +4,7 @@ import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { beforeAll, describe, expect, it } from 'vitest';
-import { buildPlant, byteOffsetToUtf16, initCore, inspectPlant, NOT_REWRITTEN, SpareBuffers, type Bounds, type PlantBuild } from '../../web/src/core';
+import { buildPlant, byteOffsetToUtf16, initCore, inspectPlant, NOT_REWRITTEN, prepareSpares, type Bounds, type PlantBuild } from '../../web/src/core';
 
 const repoRoot = fileURLToPath(new URL('../..', import.meta.url));
 const EXAMPLE = 'public/examples/abop-1.24d.lsys';
@@ -162,7 +162,7 @@ describe('inspectPlant for the GPU (what the build worker sends the view)', () =
     plain.mesh.colors.forEach((c, i) => expect(gpu.colors[i], `colour ${i}`).toBe(Math.round(Math.max(0, Math.min(1, c)) * 255) || 0));
   });
 
-  it('copies a big plant’s biggest arrays into spare buffers of their sizes: the same values', () => {
+  it('copies a big plant’s biggest arrays into the spare buffers prepared for them: the same values', () => {
     // 1.24d at n = 9: 360,000 vertices, every one of the five arrays over a megabyte.
     const source = readFileSync(new URL(`../../${EXAMPLE}`, import.meta.url), 'utf8');
     const first = inspectPlant(source, { iterations: 9 }, undefined, undefined, true);
@@ -170,13 +170,20 @@ describe('inspectPlant for the GPU (what the build worker sends the view)', () =
     const big = (b: PlantBuild, g: typeof first.gpu) => [b.mesh.positions, b.mesh.indices, b.mesh.uvs, g.normals, g.colors];
     const sizes = big(first.build, first.gpu).map((array) => array.byteLength);
     expect(Math.min(...sizes)).toBeGreaterThanOrEqual(1 << 20);
-    const spares = new SpareBuffers();
-    spares.prepare(sizes);
-    const again = inspectPlant(source, { iterations: 9 }, undefined, undefined, true, spares);
+    // Spares a quarter bigger than the arrays (within what is taken), so that they show.
+    const spareSizes = sizes.map((bytes) => Math.round(1.25 * bytes));
+    prepareSpares(spareSizes);
+    const again = inspectPlant(source, { iterations: 9 }, undefined, undefined, true);
     again.inspector.free();
-    expect(spares.bytes).toBe(0); // all five taken
     const arrays = big(again.build, again.gpu);
-    arrays.forEach((array, k) => expect(array.buffer.byteLength).toBe(sizes[k]));
+    arrays.forEach((array, k) => {
+      expect(array.byteLength, `array ${k}`).toBe(sizes[k]);
+      expect(array.buffer.byteLength, `array ${k}'s buffer`).toBe(spareSizes[k]);
+    });
+    // The spares are taken once: the next build gets new arrays.
+    const third = inspectPlant(source, { iterations: 9 }, undefined, undefined, true);
+    third.inspector.free();
+    big(third.build, third.gpu).forEach((array, k) => expect(array.buffer.byteLength, `array ${k}'s buffer`).toBe(sizes[k]));
     const before = big(first.build, first.gpu);
     // Byte for byte (toEqual on millions of values takes seconds).
     const bytes = (array: ArrayBufferView) => Buffer.from(array.buffer, array.byteOffset, array.byteLength);

@@ -4,13 +4,12 @@ import { build, type PlantBuild as WasmPlantBuild, type PlantInspector as WasmPl
 import type {
   build as studioBuildType,
   Explanation as WasmExplanation,
-  PlantBuild as StudioPlantBuild,
   PlantEditor as WasmPlantEditor,
   PlantInspector as StudioPlantInspector,
 } from '../../../crate/pkg/meristem.js';
 import { utf16Offsets } from './offsets';
 import { assertReady, guarded, ownedArray } from './init';
-import type { SpareBuffers } from './spare-buffers';
+import type { SpareArrays, SpareCopies } from './spare-copies';
 import {
   DERIVED_PREVIEW_CHARS,
   type BuildOptions,
@@ -64,13 +63,27 @@ export function buildPlant(source: string, options: BuildOptions = {}): PlantBui
 /** The studio core's `build` (crate/pkg), once {@link useStudioCore} gave it. */
 let studioBuild: typeof studioBuildType | undefined;
 
+/** Its copies of a big build into spare buffers (./spare-copies.ts), given with it. */
+let spareCopies: SpareCopies | undefined;
+
 /**
  * Makes {@link inspectPlant} build with the whole boundary's module (crate/pkg, already
  * instantiated), whose inspectors also explain, report matches and trace the derivation: what
- * the first plant's core leaves out (issue 22). Called by ./studio-core.ts.
+ * the first plant's core leaves out (issue 22), and copy a big plant for the GPU into `copies`'s
+ * spare buffers where it has some. Called by ./studio-core.ts.
  */
-export function useStudioCore(core: typeof studioBuildType): void {
+export function useStudioCore(core: typeof studioBuildType, copies?: SpareCopies): void {
   studioBuild = core;
+  spareCopies = copies;
+}
+
+/**
+ * Spare buffers of these sizes (bytes) for the next build for the GPU's biggest arrays, their
+ * pages touched while the build worker waits (./spare-buffers.ts); nothing until the studio core
+ * is in use.
+ */
+export function prepareSpares(sizes: readonly number[]): void {
+  spareCopies?.prepare(sizes);
 }
 
 /** Whether {@link inspectPlant}'s inspectors answer every question (the studio core is in use). */
@@ -101,7 +114,6 @@ export function inspectPlant(
   sketch: SketchRequest | undefined,
   onProgress: ((progress: BuildProgress) => void) | undefined,
   forGpu: true,
-  spares?: SpareBuffers,
 ): { build: PlantBuild; inspector: PlantInspector; gpu: GpuArrays };
 export function inspectPlant(
   source: string,
@@ -109,20 +121,19 @@ export function inspectPlant(
   sketch?: SketchRequest,
   onProgress?: (progress: BuildProgress) => void,
   forGpu = false,
-  spares?: SpareBuffers,
 ): { build: PlantBuild; inspector: PlantInspector; gpu?: GpuArrays } {
   const core: (...args: Parameters<typeof build>) => WasmPlantBuild = studioBuild ?? build;
   const result = sketch ? runSketched(core, source, options, sketch, onProgress) : runBuildWith(core, source, options, onProgress);
   let plain: PlantBuild;
   let gpu: GpuArrays | undefined;
   try {
+    // For the GPU (the build worker): the biggest arrays into spare buffers where there are some.
+    const spares = forGpu ? guarded(() => spareArrays(result)) : {};
     plain = plainBuild(source, result, forGpu, spares);
     if (forGpu) {
-      const into = copiesInto(result);
-      const values = 3 * plain.stats.vertices;
       gpu = guarded(() => ({
-        normals: copied(Int16Array, values, spares, into?.packedNormalsInto.bind(into), () => result.packedNormals()),
-        colors: copied(Uint8Array, values, spares, into?.packedColorsInto.bind(into), () => result.packedColors()),
+        normals: spares.normals ?? ownedArray(result.packedNormals()),
+        colors: spares.colors ?? ownedArray(result.packedColors()),
       }));
     }
   } catch (error) {
@@ -213,9 +224,9 @@ interface RawProduction {
 /**
  * Copies a wasm build into plain data (for this folder's facades; the caller frees the build).
  * `forGpu`: without the mesh's float normals and colours (empty arrays), which the caller takes
- * packed for the GPU instead. `spares`: see {@link copyMesh}.
+ * packed for the GPU instead. `spares`: arrays already copied ({@link copyMesh}).
  */
-export function plainBuild(source: string, result: WasmPlantBuild, forGpu = false, spares?: SpareBuffers): PlantBuild {
+export function plainBuild(source: string, result: WasmPlantBuild, forGpu = false, spares: SpareArrays = {}): PlantBuild {
   const toUtf16 = utf16Offsets(source);
   return guarded(() => ({
     ok: result.ok,
@@ -247,19 +258,16 @@ type MeshHolder = WasmPlantBuild | WasmPlantEditor;
 
 /**
  * Copies every mesh array of a wasm build or editor out of wasm memory (`forGpu`: see
- * {@link plainBuild}). With `spares`, a build of the studio core copies its biggest arrays into
- * spare buffers of their size where there are some (./spare-buffers.ts).
+ * {@link plainBuild}), but those already in `spares`.
  */
-export function copyMesh(result: MeshHolder, forGpu = false, spares?: SpareBuffers): MeshBuffers {
-  const into = spares && copiesInto(result);
-  const { vertices, triangles } = into ? (JSON.parse(result.stats()) as PlantStats) : { vertices: 0, triangles: 0 };
+export function copyMesh(result: MeshHolder, forGpu = false, spares: SpareArrays = {}): MeshBuffers {
   return guarded(() => ({
-    positions: copied(Float32Array, 3 * vertices, spares, into?.positionsInto.bind(into), () => result.positions()),
+    positions: spares.positions ?? ownedArray(result.positions()),
     normals: forGpu ? new Float32Array(0) : ownedArray(result.normals()),
     colors: forGpu ? new Float32Array(0) : ownedArray(result.colors()),
-    indices: copied(Uint32Array, 3 * triangles, spares, into?.indicesInto.bind(into), () => result.indices()),
+    indices: spares.indices ?? ownedArray(result.indices()),
     ranges: ownedArray(result.ranges()),
-    uvs: copied(Float32Array, 2 * vertices, spares, into?.uvsInto.bind(into), () => result.uvs()),
+    uvs: spares.uvs ?? ownedArray(result.uvs()),
     materialRanges: ownedArray(result.materialRanges()),
     lines: ownedArray(result.lines()),
     lineColors: ownedArray(result.lineColors()),
@@ -269,32 +277,11 @@ export function copyMesh(result: MeshHolder, forGpu = false, spares?: SpareBuffe
   }));
 }
 
-/** The studio core's methods that copy a build's big arrays into given ones (crate/pkg only). */
-type CopiesInto = Pick<StudioPlantBuild, 'positionsInto' | 'indicesInto' | 'uvsInto' | 'packedNormalsInto' | 'packedColorsInto'>;
-
-/** `result` as a {@link CopiesInto} when the studio core made it, else `undefined`. */
-function copiesInto(result: object): CopiesInto | undefined {
-  return 'positionsInto' in result ? (result as unknown as CopiesInto) : undefined;
-}
-
-type CopiedArray = Float32Array | Uint32Array | Int16Array | Uint8Array;
-
-/**
- * `length` values out of the core: written by `into` into a spare buffer when `spares` has one of
- * that size, else the core's own new array (`fresh`).
- */
-function copied<T extends CopiedArray>(
-  Kind: { new (buffer: ArrayBuffer, offset: number, length: number): T; BYTES_PER_ELEMENT: number },
-  length: number,
-  spares: SpareBuffers | undefined,
-  into: ((out: T) => void) | undefined,
-  fresh: () => T,
-): T {
-  const spare = into && spares?.take(length * Kind.BYTES_PER_ELEMENT);
-  if (!spare) return ownedArray(fresh());
-  const out = new Kind(spare, 0, length);
-  into(out);
-  return out;
+/** The arrays of `result` that went into spare buffers (none before the studio core is in use). */
+function spareArrays(result: WasmPlantBuild): SpareArrays {
+  if (!spareCopies) return {};
+  const { vertices, triangles } = JSON.parse(result.stats()) as PlantStats;
+  return spareCopies.copy(result, vertices, triangles);
 }
 
 /** Copies a wasm explanation into plain data and frees it. */

@@ -3,9 +3,8 @@
 export { initCore, coreModule, coreVersion, CoreCrashed } from './init';
 export { initIo } from './io';
 export { loadBranchEditing, type EditPlant } from './editing';
-export { buildPlant, inspectPlant, studioCoreInUse, type PlantSketch, type SketchRequest } from './build';
+export { buildPlant, inspectPlant, prepareSpares, studioCoreInUse, type PlantSketch, type SketchRequest } from './build';
 export { loadStudioCore } from './studio-core-loader';
-export { SpareBuffers } from './spare-buffers';
 export {
   exportModel,
   exportModelWithProgress,

@@ -5,9 +5,13 @@
 import { build as studioBuild } from '../../../crate/pkg/meristem.js';
 import { useStudioCore } from './build';
 import { initIo } from './io';
+import { SpareCopies } from './spare-copies';
 
-/** Instantiates crate/pkg (once, see `initIo`) and makes `inspectPlant` build with it. */
+/**
+ * Instantiates crate/pkg (once, see `initIo`) and makes `inspectPlant` build with it, copying big
+ * plants for the GPU into spare buffers (`prepareSpares`).
+ */
 export async function startStudioCore(): Promise<void> {
   await initIo();
-  useStudioCore(studioBuild);
+  useStudioCore(studioBuild, new SpareCopies());
 }

@@ -7,9 +7,9 @@
 // kept (`keep`). Once the page's first load is done it asks for the studio core (`studio-core`),
 // which later builds use: built for speed, it meshes a big plant in about two thirds of the time.
 // Started by createBuildWorker (worker-client.ts). A big plant is first sent as a sketch (its
-// segments as lines), then built; its biggest arrays are copied into buffers made while the worker
-// waited (../core/spare-buffers.ts), sized as the last build's.
-import { CoreCrashed, initCore, inspectPlant, loadStudioCore, SpareBuffers, studioCoreInUse, type BuildOptions, type BuildProgress, type PlantInspector } from '../core';
+// segments as lines), then built; once the studio core is in use, its biggest arrays are copied
+// into buffers made while the worker waited, sized as the last build's (`prepareSpares`).
+import { CoreCrashed, initCore, inspectPlant, loadStudioCore, prepareSpares, studioCoreInUse, type BuildOptions, type BuildProgress, type PlantInspector } from '../core';
 import {
   answerTransferables,
   type CoreMessage,
@@ -24,9 +24,6 @@ import {
 
 /** Kept builds at most: the page frees what it does not show, this only bounds a leak. */
 const MAX_KEPT = 4;
-
-/** Buffers for the next build's biggest arrays, their pages touched while the worker waits. */
-const spares = new SpareBuffers();
 
 /** The core: the module the page compiled and sent first (createBuildWorker), else fetched here. */
 const ready = new Promise<WebAssembly.Module | null>((resolve) => {
@@ -182,14 +179,13 @@ addEventListener('message', async (event: MessageEvent<WorkerRequest | CoreMessa
       },
       progressTeller(id),
       true, // the normals and colours packed for the GPU, not as floats
-      spares,
     );
     keep(id, inspector, source, options);
     const { positions, indices, uvs } = build.mesh;
     const sizes = [positions, indices, uvs, gpu.normals, gpu.colors].map((array) => array.byteLength);
     reply({ kind: 'built', id, build, gpu, workerMillis: performance.now() - start, studioCore: studioCoreInUse() }, transferablesOf(build, gpu));
     // While the page draws it and the user edits: buffers for the next build of this size.
-    spares.prepare(sizes);
+    prepareSpares(sizes);
   } catch (error) {
     // A panic carries the core's own message; anything else thrown here is a bug of this file.
     const message = error instanceof CoreCrashed ? error.message : error instanceof Error ? `${error.name}: ${error.message}` : String(error);
