@@ -169,8 +169,8 @@ impl Builder<'_> {
             let first = self.mesh.vertex_count() as u32;
             // The ring's vertices written in place, each array grown once per ring (as `vertex`
             // writes them, in the same arithmetic: a call per vertex and array costs more in
-            // wasm), one per side from the builder's sin/cos table, then the seam's copy of the
-            // first at u = 1.
+            // wasm), one per side from the builder's sin/cos table, and the seam: side 0 again,
+            // at u = 1.
             let mesh = &mut self.mesh;
             let count = sides + 1;
             let positions = grow(&mut mesh.positions, 3 * count, 0.0);
