@@ -3,7 +3,7 @@
 //! start (where it does not grow out of a joint) and at its end, rounded where branches leave it. A smooth axis is sampled along Bézier pieces through its joints; a straight one at
 //! its joints, each ring across the bisector of the segments it joins.
 
-use super::{curve, grow, push, Builder, MATERIAL_BARK};
+use super::{append, curve, push, Builder, MATERIAL_BARK};
 use crate::turtle::{Segment, Skeleton};
 use glam::DVec3;
 
@@ -20,6 +20,8 @@ pub(super) struct TubeScratch {
     samples: Vec<AxisSample>,
     frame: Vec<(DVec3, DVec3)>,
     normals: Vec<DVec3>,
+    /// One ring's directions from the axis, a side each and the seam's (side 0 again).
+    radials: Vec<DVec3>,
     rings: Vec<u32>,
     offsets: Vec<DVec3>,
     outs: Vec<DVec3>,
@@ -167,36 +169,30 @@ impl Builder<'_> {
             let radius = 0.5 * sample.width * self.unit;
             let c = segments.skeleton.color(segments.nth(sample.segment).color);
             let first = self.mesh.vertex_count() as u32;
-            // The ring's vertices written in place, each array grown once per ring (as `vertex`
-            // writes them, in the same arithmetic: a call per vertex and array costs more in
-            // wasm), one per side from the builder's sin/cos table, and the seam: side 0 again,
-            // at u = 1.
+            // The ring's vertices: each array grown once per ring (as `vertex` writes them, in
+            // the same arithmetic: a call per vertex and array costs more in wasm), one per side
+            // from the builder's sin/cos table, and the seam: side 0 again, at u = 1.
+            let radials = &mut scratch.radials;
+            radials.clear();
+            for j in 0..=sides {
+                let (sin, cos) = self.ring[if j < sides { j } else { 0 }];
+                radials.push(n * cos + b * sin);
+            }
             let mesh = &mut self.mesh;
             let count = sides + 1;
-            let positions = grow(&mut mesh.positions, 3 * count, 0.0);
-            let normals_out = grow(&mut mesh.normals, 3 * count, 0.0);
-            let uvs = grow(&mut mesh.uvs, 2 * count, 0.0);
+            append(&mut mesh.positions, count, |j| {
+                let p = sample.point + radials[j] * radius;
+                [p.x as f32, p.y as f32, p.z as f32]
+            });
+            append(&mut mesh.normals, count, |j| {
+                let r = radials[j];
+                [r.x as f32, r.y as f32, r.z as f32]
+            });
             let (v32, sides32) = (v as f32, sides as f32);
-            for (j, position) in positions.chunks_exact_mut(3).enumerate() {
-                let (side, u) = if j < sides {
-                    (j, j as f32 / sides32)
-                } else {
-                    (0, 1.0)
-                };
-                let (sin, cos) = self.ring[side];
-                let radial = n * cos + b * sin;
-                let p = sample.point + radial * radius;
-                position.copy_from_slice(&[p.x as f32, p.y as f32, p.z as f32]);
-                normals_out[3 * j..3 * j + 3].copy_from_slice(&[
-                    radial.x as f32,
-                    radial.y as f32,
-                    radial.z as f32,
-                ]);
-                uvs[2 * j..2 * j + 2].copy_from_slice(&[u, v32]);
-            }
-            for color in grow(&mut mesh.colors, 3 * count, 0.0).chunks_exact_mut(3) {
-                color.copy_from_slice(&c);
-            }
+            append(&mut mesh.uvs, count, |j| {
+                [if j < sides { j as f32 / sides32 } else { 1.0 }, v32]
+            });
+            append(&mut mesh.colors, count, |_| c);
             rings.push(first);
         }
     }
@@ -237,12 +233,11 @@ impl Builder<'_> {
             self.element = chain[samples[k].segment];
             self.range(segment.module, segment.color);
             let (a0, b0) = (rings[k], rings[k + 1]);
-            let quads = grow(&mut self.mesh.indices, 6 * n as usize, 0);
-            for (j, quad) in quads.chunks_exact_mut(6).enumerate() {
+            append(&mut self.mesh.indices, n as usize, |j| {
                 let (j, next) = (j as u32, j as u32 + 1);
                 let (a, b, c, d) = (a0 + j, a0 + next, b0 + j, b0 + next);
-                quad.copy_from_slice(&[a, b, c, b, d, c]);
-            }
+                [a, b, c, b, d, c]
+            });
         }
         let last = samples.len() - 1;
         let end = segments.last();
