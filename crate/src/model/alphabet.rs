@@ -13,37 +13,93 @@ impl ModuleId {
 }
 
 /// The interned module names of one grammar.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Alphabet {
-    names: Vec<String>,
+    /// Every name, one after the other: name `i` ends at `ends[i]` (one allocation for all).
+    text: String,
+    ends: Vec<u32>,
+    /// 1 + the id of each one-byte name (0: not interned). Most names are one byte (`F`, `+`,
+    /// `[`), and every build interns or looks up each module it reads: these need no hashing.
+    single: [u32; 128],
+    /// The ids of the longer names.
     ids: HashMap<String, ModuleId>,
+}
+
+impl Default for Alphabet {
+    fn default() -> Self {
+        Alphabet {
+            text: String::new(),
+            ends: Vec::new(),
+            single: [0; 128],
+            ids: HashMap::new(),
+        }
+    }
 }
 
 impl Alphabet {
     /// The id of `name`, adding it when new.
     pub fn intern(&mut self, name: &str) -> ModuleId {
-        if let Some(&id) = self.ids.get(name) {
+        if let Some(id) = self.get(name) {
             return id;
         }
-        let id = ModuleId(self.names.len() as u32);
-        self.names.push(name.to_string());
-        self.ids.insert(name.to_string(), id);
+        let id = ModuleId(self.ends.len() as u32);
+        self.text.push_str(name);
+        self.ends.push(self.text.len() as u32);
+        match single_byte(name) {
+            Some(byte) => self.single[byte] = id.0 + 1,
+            None => {
+                self.ids.insert(name.to_string(), id);
+            }
+        }
         id
     }
 
     pub fn get(&self, name: &str) -> Option<ModuleId> {
-        self.ids.get(name).copied()
+        match single_byte(name) {
+            Some(byte) => self.single[byte].checked_sub(1).map(ModuleId),
+            None => self.ids.get(name).copied(),
+        }
     }
 
     pub fn name(&self, id: ModuleId) -> &str {
-        &self.names[id.index()]
+        let i = id.index();
+        let start = if i == 0 { 0 } else { self.ends[i - 1] };
+        &self.text[start as usize..self.ends[i] as usize]
     }
 
     pub fn len(&self) -> usize {
-        self.names.len()
+        self.ends.len()
     }
 
     pub fn is_empty(&self) -> bool {
-        self.names.is_empty()
+        self.ends.is_empty()
+    }
+}
+
+/// The byte of a one-byte (ASCII) name, as an index into [`Alphabet::single`].
+fn single_byte(name: &str) -> Option<usize> {
+    match *name.as_bytes() {
+        [byte] if byte.is_ascii() => Some(usize::from(byte)),
+        _ => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn one_byte_and_longer_names_get_dense_ids_once() {
+        let mut a = Alphabet::default();
+        let names = ["F", "A_1", "+", "@Gc", "F", "\\u{7f}", "A_1", "\\0", "é"];
+        let ids: Vec<u32> = names.iter().map(|n| a.intern(n).0).collect();
+        assert_eq!(ids, [0, 1, 2, 3, 0, 4, 1, 5, 6]);
+        assert_eq!(a.len(), 7);
+        for (name, id) in names.iter().zip(ids) {
+            assert_eq!(a.get(name), Some(ModuleId(id)));
+            assert_eq!(a.name(ModuleId(id)), *name);
+        }
+        assert_eq!(a.get("X"), None);
+        assert_eq!(a.get("FF"), None);
     }
 }

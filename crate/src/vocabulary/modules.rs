@@ -237,9 +237,51 @@ pub const MODULES: &[ModuleInfo] = &[
         "@Repeat(k, A B): the string inside is derived k times per step.", K::Derivation),
 ];
 
-/// The row of a module name, if the name has a meaning.
+/// The row of a module name, if the name has a meaning. Every grammar's parse and resolve ask
+/// this of each module they read, so single-byte names (most of them) are found by one table
+/// look-up and longer names are compared only when their first byte starts a longer row's name.
 pub fn module_named(name: &str) -> Option<&'static ModuleInfo> {
-    MODULES.iter().find(|m| m.name == name)
+    let row = match *name.as_bytes() {
+        [byte] => LOOKUP.single.get(usize::from(byte)).copied()?,
+        [first, _, ..] if LOOKUP.longer_first.get(usize::from(first)) == Some(&true) => {
+            return MODULES.iter().find(|m| m.name == name);
+        }
+        _ => return None,
+    };
+    row.checked_sub(1).map(|i| &MODULES[usize::from(i)])
+}
+
+/// [`module_named`]'s tables, made from [`MODULES`] when compiling.
+struct Lookup {
+    /// For each ASCII byte, 1 + the index of the first row with that one-byte name (0: none).
+    single: [u8; 128],
+    /// For each ASCII byte, whether a row's name of two bytes or more starts with it.
+    longer_first: [bool; 128],
+}
+
+const LOOKUP: Lookup = lookup();
+
+const fn lookup() -> Lookup {
+    assert!(MODULES.len() < 255, "row indices fit in a byte");
+    let mut t = Lookup {
+        single: [0; 128],
+        longer_first: [false; 128],
+    };
+    let mut i = 0;
+    while i < MODULES.len() {
+        let name = MODULES[i].name.as_bytes();
+        let first = name[0] as usize;
+        assert!(first < 128, "module names start with an ASCII byte");
+        if name.len() == 1 {
+            if t.single[first] == 0 {
+                t.single[first] = i as u8 + 1;
+            }
+        } else {
+            t.longer_first[first] = true;
+        }
+        i += 1;
+    }
+    t
 }
 
 /// Every name with `meaning`, in table order (`%` and `@Prune` for cut).
@@ -261,6 +303,18 @@ pub fn name_of(meaning: Meaning) -> &'static str {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn module_named_finds_each_name_s_first_row_and_nothing_else() {
+        for row in MODULES {
+            let first = MODULES.iter().find(|m| m.name == row.name).unwrap();
+            assert!(std::ptr::eq(module_named(row.name).unwrap(), first));
+        }
+        let others = "X A FF @ @m @Prunes ~ ~x ? ?p é \u{1F331} 1";
+        for name in others.split(' ').chain([""]) {
+            assert!(module_named(name).is_none(), "{name:?}");
+        }
+    }
 
     #[test]
     fn every_meaning_has_a_name() {
