@@ -15,9 +15,7 @@ impl ModuleId {
 /// The interned module names of one grammar.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Alphabet {
-    /// Every name, one after the other: name `i` ends at `ends[i]` (one allocation for all).
-    text: String,
-    ends: Vec<u32>,
+    names: Vec<String>,
     /// 1 + the id of each one-byte name (0: not interned). Most names are one byte (`F`, `+`,
     /// `[`), and every build interns or looks up each module it reads: these need no hashing.
     single: [u32; 128],
@@ -28,8 +26,7 @@ pub struct Alphabet {
 impl Default for Alphabet {
     fn default() -> Self {
         Alphabet {
-            text: String::new(),
-            ends: Vec::new(),
+            names: Vec::new(),
             single: [0; 128],
             ids: HashMap::new(),
         }
@@ -42,9 +39,8 @@ impl Alphabet {
         if let Some(id) = self.get(name) {
             return id;
         }
-        let id = ModuleId(self.ends.len() as u32);
-        self.text.push_str(name);
-        self.ends.push(self.text.len() as u32);
+        let id = ModuleId(self.names.len() as u32);
+        self.names.push(name.to_string());
         match single_byte(name) {
             Some(byte) => self.single[byte] = id.0 + 1,
             None => {
@@ -62,17 +58,15 @@ impl Alphabet {
     }
 
     pub fn name(&self, id: ModuleId) -> &str {
-        let i = id.index();
-        let start = if i == 0 { 0 } else { self.ends[i - 1] };
-        &self.text[start as usize..self.ends[i] as usize]
+        &self.names[id.index()]
     }
 
     pub fn len(&self) -> usize {
-        self.ends.len()
+        self.names.len()
     }
 
     pub fn is_empty(&self) -> bool {
-        self.ends.is_empty()
+        self.names.is_empty()
     }
 }
 

@@ -259,7 +259,7 @@ struct Lookup {
     longer_first: [bool; 128],
 }
 
-const LOOKUP: Lookup = lookup();
+static LOOKUP: Lookup = lookup();
 
 const fn lookup() -> Lookup {
     assert!(MODULES.len() < 255, "row indices fit in a byte");
