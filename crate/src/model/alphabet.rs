@@ -85,7 +85,7 @@ mod tests {
     #[test]
     fn one_byte_and_longer_names_get_dense_ids_once() {
         let mut a = Alphabet::default();
-        let names = ["F", "A_1", "+", "@Gc", "F", "\\u{7f}", "A_1", "\\0", "é"];
+        let names = ["F", "A_1", "+", "@Gc", "F", "\u{7f}", "A_1", "\0", "é"];
         let ids: Vec<u32> = names.iter().map(|n| a.intern(n).0).collect();
         assert_eq!(ids, [0, 1, 2, 3, 0, 4, 1, 5, 6]);
         assert_eq!(a.len(), 7);
