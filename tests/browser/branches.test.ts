@@ -8,7 +8,7 @@ import { join } from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { exportWithCli, removeScratch, scratchDir } from '../export/tools';
 import { colourShare, differingShare, foregroundMask, type Picture } from './pictures';
-import { canvasPicture, editorText, generation, nextBuild, openFromGallery, savePage, twoFrames } from './studio-page';
+import { canvasPicture, editorText, generation, nextBuild, openExample, savePage, twoFrames } from './studio-page';
 import { browser, page, problems, useStudio } from './session';
 
 const dir = scratchDir('branches');
@@ -16,7 +16,8 @@ const dir = scratchDir('branches');
 useStudio();
 
 beforeAll(async () => {
-  await openFromGallery(page, 'game-tree.lsys');
+  // The example's own build: the first plant's (4,118 segments) would pass the wait below.
+  expect(await openExample(page, 'game-tree.lsys')).toBe('ok');
   await page.waitForFunction(() => window.__meristem?.preview?.settled === true && (window.__meristem.lastStats?.segments ?? 0) > 1000);
   await page.getByTestId('grid').click(); // only the plant differs from the background
   await twoFrames(page);

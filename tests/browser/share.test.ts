@@ -8,7 +8,7 @@ import { deflateRawSync } from 'node:zlib';
 import { chromium, type Browser, type BrowserContext, type Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
 import { decodeState, MAX_FRAGMENT, type SharedState } from '../../web/src/share/codec';
-import { editorText, example, generation, nextBuild, openFromGallery, openStudio, openTubesMenu, pasteText, savePage, twoFrames } from './studio-page';
+import { editorText, example, generation, nextBuild, openExample, openStudio, openTubesMenu, pasteText, savePage, twoFrames } from './studio-page';
 
 let browser: Browser;
 
@@ -50,7 +50,9 @@ const fragmentOf = (payload: string | Uint8Array, version = 1) =>
 describe('share links', () => {
   it('reproduce the plant (same derived string), its options and the camera, from a fresh browser', async () => {
     const { page, problems } = await openStudio(browser);
-    await openFromGallery(page, 'abop-1.27-stochastic.lsys');
+    // Waits for the example's own build: the first plant's also has segments, and an example that
+    // arrives after the options below are set empties them (opening a text forgets its options).
+    expect(await openExample(page, 'abop-1.27-stochastic.lsys')).toBe('ok');
     await page.waitForFunction(() => window.__meristem?.preview?.settled === true && (window.__meristem.lastStats?.segments ?? 0) > 0);
     let before = await generation(page);
     await page.getByTestId('iterations').fill('4');
