@@ -66,16 +66,16 @@ pub struct MeshParts {
 /// library's hash set was measured slower (its hasher).
 ///
 /// Most points asked about are not in the set (a segment's end is seldom where a chain starts):
-/// a bit per hash value's top bits, eight bits for each point, answers most of them from a table
-/// of 32 KB for 1.24d n = 10 instead of the slots' 512 KB, which the pass over the segments keeps
-/// out of the cache (half of `index_of`'s time was that load).
+/// a bit per hash value's top bits, four for each slot (so at least eight for each point), answers
+/// most of them from a table of 32 KB for 1.24d n = 10 instead of the slots' 512 KB, which the pass
+/// over the segments keeps out of the cache (half of `index_of`'s time was that load).
 #[derive(Clone, Debug, Default)]
 struct PointSet {
     keys: Vec<[u64; 3]>,
     /// `hash << 32 | (index + 1)` (the hash's low half: its high bits pick the slot), 0 where a slot is free; a power of two long.
     slots: Vec<u64>,
-    /// Bit `h >> (64 - log2(8 × len))` set for each key's hash `h` (a power of two bits long):
-    /// a clear bit means the key is not in the set.
+    /// The bit numbered by the top bits of each key's hash (two more than pick its slot), four
+    /// bits a slot: a clear bit means the key is not in the set.
     filter: Vec<u64>,
 }
 
