@@ -43,8 +43,8 @@ passed=$((passed + p)); failed=$((failed + f))
 if [ "$cargo_status" -ne 0 ] && [ "$f" -eq 0 ]; then echo "FAILED: cargo test did not run to the end"; failed=$((failed + 1)); fi
 
 gate "build wasm" bash scripts/build-wasm.sh
-echo "::: wasm32 boundary tests (wasm-pack test --node, the core compiled to WebAssembly)"
-wasm-pack --log-level warn test --node crate --test wasm_boundary 2>&1 | tee test-results/wasm32.txt
+echo "::: wasm32 boundary tests (wasm-pack test --node, the core compiled to WebAssembly with SIMD, as crate/pkg is)"
+RUSTFLAGS="${RUSTFLAGS:-} -C target-feature=+simd128" wasm-pack --log-level warn test --node crate --test wasm_boundary 2>&1 | tee test-results/wasm32.txt
 wasm32_status=${PIPESTATUS[0]}
 read -r p f < <(grep -E '^test result:' test-results/wasm32.txt | sed -E 's/.* ([0-9]+) passed; ([0-9]+) failed.*/\1 \2/' | awk '{p+=$1; f+=$2} END {print p+0, f+0}')
 passed=$((passed + p)); failed=$((failed + f))

@@ -167,6 +167,22 @@ mod wasm {
             .is_err());
     }
 
+    /// The packed normals are what the page once computed, `Math.round` of the clamped, scaled
+    /// value stored in an `Int16Array` (NaN as 0): through the SIMD path when these tests are
+    /// built with `+simd128`, as `npm test` builds them (the studio core ships it), through the
+    /// scalar one natively (`mesh::pack`'s own tests).
+    #[wasm_bindgen_test]
+    fn packed_normals_are_math_round_of_the_clamped_scaled_values() {
+        let normals = meristem::mesh::normal_samples();
+        let packed = meristem::mesh::pack_normals(&normals);
+        assert_eq!(packed.len(), normals.len());
+        for (&v, &p) in normals.iter().zip(&packed) {
+            let want = js_sys::Math::round(f64::from(v).clamp(-1.0, 1.0) * 32767.0);
+            let want = if want.is_nan() { 0.0 } else { want };
+            assert_eq!(f64::from(p), want, "normal {v}");
+        }
+    }
+
     #[wasm_bindgen_test]
     fn the_tables_cross_the_boundary() {
         assert_eq!(version(), env!("CARGO_PKG_VERSION"));

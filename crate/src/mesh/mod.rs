@@ -19,7 +19,7 @@ mod tube;
 use crate::turtle::Skeleton;
 use glam::DVec3;
 pub use lines::{segment_colors, segment_ends, segment_lines, segment_modules, SegmentLines};
-pub use pack::{pack_colors, pack_normals};
+pub use pack::{normal_samples, pack_colors, pack_normals};
 pub use parts::{ChainPart, MeshParts, Part};
 
 /// The mesh as four flat arrays. **This is the one place the layout is defined**; the wasm

