@@ -150,6 +150,17 @@ describe('pictures for print', () => {
     }
     expect(grey / (picture.width * picture.height), 'no grey grid lines').toBeLessThan(0.001);
     expect(foregroundShare(picture)).toBeGreaterThan(0.005);
+    // Smooth edges: the lines' edge pixels blend the brown into the white, also where the view
+    // draws without multisampling (a software rasterizer, as here: the picture is drawn at twice
+    // its size and scaled down).
+    const counts = new Map<number, number>();
+    for (let i = 0; i < picture.data.length; i += 4) {
+      const key = (picture.data[i] << 16) | (picture.data[i + 1] << 8) | picture.data[i + 2];
+      counts.set(key, (counts.get(key) ?? 0) + 1);
+    }
+    const [white, brown, ...blends] = [...counts.values()].sort((a, b) => b - a);
+    const blended = blends.reduce((sum, n) => sum + n, 0);
+    expect(blended / (brown + blended), `edge pixels among the plant's (white ${white})`).toBeGreaterThan(0.05);
     const measured = strokeWidth(picture);
     expect(Math.abs(measured - 5), `stroke width measured ${measured}`).toBeLessThanOrEqual(1);
     await expect.poll(() => page.getByTestId('export-status').textContent()).toMatch(/ · 1748 × 2480 at 300 DPI · /);
