@@ -5,6 +5,7 @@ import { chromium, type Browser, type Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
 import { changedShare, decodePng, distinctColours, foregroundExtent, foregroundOverlap, foregroundShare, type Picture } from './pictures';
 import { openTubesMenu, PLANT_ONLY } from './studio-page';
+import { isSoftwareRendererName } from '../../web/src/view/rasterizer';
 
 const RESULTS = new URL('../../test-results/', import.meta.url);
 const EXAMPLE = readFileSync(new URL('../../public/examples/abop-1.24d.lsys', import.meta.url), 'utf8');
@@ -99,11 +100,11 @@ describe('the studio', () => {
     // Multisampled where a GPU draws; not on a software rasterizer (as here), where it would double
     // every frame's cost (`viewRenderer` in web/src/view/plant-view.ts).
     const { multisampled, renderer } = await page.evaluate(() => {
-      const gl = document.querySelector('[data-testid=viewport] canvas')!.getContext('webgl2')!;
+      const gl = document.querySelector<HTMLCanvasElement>('[data-testid=viewport] canvas')!.getContext('webgl2')!;
       const debug = gl.getExtension('WEBGL_debug_renderer_info');
       return { multisampled: gl.getContextAttributes()?.antialias, renderer: String(debug && gl.getParameter(debug.UNMASKED_RENDERER_WEBGL)) };
     });
-    expect(multisampled, renderer).toBe(!/swiftshader|llvmpipe|softpipe/i.test(renderer));
+    expect(multisampled, renderer).toBe(!isSoftwareRendererName(renderer));
     expect(distinctColours(firstPicture), 'lines over the grid').toBeGreaterThan(multisampled ? 10 : 3);
     expect(foregroundExtent(firstPicture).height, 'the framed plant spans most of the view').toBeGreaterThan(0.6);
     expect(problems).toEqual([]);

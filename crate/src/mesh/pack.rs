@@ -93,7 +93,8 @@ fn color_byte(v: f32) -> u8 {
 
 /// Normal components to pack in the tests (natively here, and under wasm32 with SIMD in
 /// `tests/wasm_boundary.rs`, against JavaScript's `Math.round`): the bounds and beyond, NaN, -0,
-/// ties (x.5 after scaling) and pseudo-random values, 3,015 of them (not a multiple of eight).
+/// halves (x.5 after scaling, as near as `f32` holds them) and pseudo-random values, 3,015 of them
+/// (not a multiple of eight: the last seven take the scalar path).
 pub fn normal_samples() -> Vec<f32> {
     let ties = [0.5f32, -0.5, 1.5, -1.5, 2.5, -2.5, 32766.5, -32766.5].map(|t| t / 32767.0);
     let mut normals = vec![0.0, 1.0, -1.0, 0.6, -0.8, 2.0, -2.0, f32::NAN, -0.0];
