@@ -208,7 +208,7 @@ export class PlantView {
     ),
   );
   /** The Lines mode's segments (hidden while tubes are drawn). */
-  private readonly segmentLines = new SegmentLines();
+  private readonly segmentLines: SegmentLines;
   private lineWidthChosen = DEFAULT_LINE_WIDTH;
   private lineScale = 1;
   /** Stands in for the tubes' material in the Lines mode: their triangles are not drawn. */
@@ -264,6 +264,7 @@ export class PlantView {
     const texture = (name: 'bark' | 'leaf') => loadTexture(name, () => this.textureLoaded(), (message) => this.texturesFailed(message), assetBase, plantDrawn);
     this.textured = texturedMaterials(texture('bark'), texture('leaf'), this.lit, this.unlit);
     this.renderer = viewRenderer();
+    this.segmentLines = new SegmentLines(this.renderer.capabilities.maxTextureSize);
     this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
     const canvas = this.renderer.domElement;
     canvas.setAttribute('aria-label', '3D view of the plant; drag or the arrow keys to orbit, scroll or + and − to zoom, Home to fit');

@@ -1,13 +1,14 @@
 // The Lines mode: every segment of the plant drawn as a line of constant width in pixels (three.js
-// fat lines: each segment a screen-facing quad), as the book draws its two-dimensional figures;
-// an overlay of highlighted segments, and picking by the segment under the pointer.
-import { Group, InstancedInterleavedBuffer, InterleavedBufferAttribute, type Raycaster } from 'three';
+// fat lines, `LineMaterial`: each segment a screen-facing quad with round ends, drawn without
+// instancing by ./texel-lines.ts), as the book draws its two-dimensional figures; an overlay of
+// highlighted segments, and picking by the segment under the pointer (./segment-pick.ts).
+import { BufferAttribute, BufferGeometry, Group, LineBasicMaterial, LineSegments, type OrthographicCamera, type PerspectiveCamera, type Raycaster } from 'three';
 import { LineMaterial } from 'three/examples/jsm/lines/LineMaterial.js';
-import { LineSegments2 } from 'three/examples/jsm/lines/LineSegments2.js';
-import { LineSegmentsGeometry } from 'three/examples/jsm/lines/LineSegmentsGeometry.js';
 import type { MeshBuffers } from '../core';
 import type { LineOverlay } from './highlight';
 import { pointsBox, setBox } from './plant-geometry';
+import { pickSegment } from './segment-pick';
+import { TexelLines } from './texel-lines';
 
 /** The width of the lines a studio opens with, in CSS pixels. */
 export const DEFAULT_LINE_WIDTH = 2;
@@ -24,44 +25,24 @@ export function lineWidthOf(text: string): number | null {
 /** How much wider than the plant's lines the highlighted ones are drawn, in pixels. */
 const HIGHLIGHT_EXTRA = 1.5;
 
-function lineSegments(width: number): LineSegments2 {
-  const material = new LineMaterial({ vertexColors: true, linewidth: width, worldUnits: false });
-  return new LineSegments2(new LineSegmentsGeometry(), material);
-}
-
-/** Sets `ends` and `colors` (two 3-float ends per segment) as the lines' geometry, replacing the old. */
-function setLines(lines: LineSegments2, ends: Float32Array, colors: Float32Array): void {
-  lines.geometry.dispose();
-  const geometry = new LineSegmentsGeometry();
-  if (ends.length >= 6) {
-    setEnds(geometry, ends);
-    geometry.setColors(colors);
-  }
-  lines.geometry = geometry;
-  lines.visible = ends.length >= 6;
-}
-
-/**
- * `geometry.setPositions(ends)`, with the bounds from one pass over the ends (a box, and the sphere
- * around it) instead of its two (an exact box, then an exact sphere): 116,050 segments took 14 ms
- * of the page's thread that way. The sphere only has to hold every segment (culling, picking).
- */
-function setEnds(geometry: LineSegmentsGeometry, ends: Float32Array): void {
-  const instances = new InstancedInterleavedBuffer(ends, 6, 1); // start xyz, end xyz
-  geometry.setAttribute('instanceStart', new InterleavedBufferAttribute(instances, 3, 0));
-  geometry.setAttribute('instanceEnd', new InterleavedBufferAttribute(instances, 3, 3));
-  geometry.instanceCount = ends.length / 6;
-  setBox(geometry, pointsBox(ends));
+function lineMaterial(width: number): LineMaterial {
+  return new LineMaterial({ vertexColors: true, linewidth: width, worldUnits: false });
 }
 
 /**
  * The plant's segments as lines, and the highlighted ones over them. Add {@link group} to the
- * scene; it shows nothing until {@link show} is given a mesh with segments.
+ * scene; it shows nothing until {@link show} is given a mesh with segments. `maxTextureSize`: the
+ * GPU's, which bounds the segments {@link TexelLines} can draw (two million or more); a plant of
+ * more is drawn with lines one pixel wide.
  */
 export class SegmentLines {
   readonly group = new Group();
-  private readonly plant: LineSegments2;
-  private readonly overlay: LineSegments2;
+  private readonly plant: TexelLines;
+  private readonly overlay: TexelLines;
+  /** The plant's segments when {@link plant} cannot hold them: one pixel wide. */
+  private readonly thin = new LineSegments(new BufferGeometry(), new LineBasicMaterial({ vertexColors: true }));
+  /** The segments drawn (start xyz, end xyz each), for picking. */
+  private ends: Float32Array = new Float32Array(0);
   private modules: Uint32Array = new Uint32Array(0);
   private width = DEFAULT_LINE_WIDTH;
   /**
@@ -70,13 +51,15 @@ export class SegmentLines {
    */
   private unmade: Pick<MeshBuffers, 'segmentEnds' | 'segmentColors'> | null = null;
 
-  constructor() {
-    this.plant = lineSegments(this.width);
-    this.overlay = lineSegments(this.width + HIGHLIGHT_EXTRA);
+  constructor(maxTextureSize?: number) {
+    this.plant = new TexelLines(lineMaterial(this.width), maxTextureSize);
+    this.overlay = new TexelLines(lineMaterial(this.width + HIGHLIGHT_EXTRA), maxTextureSize);
     // Over the plant's lines whatever their depth: a highlight is never hidden behind them.
-    this.overlay.material.depthTest = false;
-    this.overlay.renderOrder = 1;
-    this.group.add(this.plant, this.overlay);
+    this.overlay.mesh.material.depthTest = false;
+    this.overlay.mesh.renderOrder = 1;
+    // The viewport's size (for picking) is taken when either is drawn.
+    this.thin.onBeforeRender = this.plant.mesh.onBeforeRender;
+    this.group.add(this.plant.mesh, this.thin, this.overlay.mesh);
     this.show(null);
   }
 
@@ -85,7 +68,7 @@ export class SegmentLines {
     const empty = new Float32Array(0);
     this.unmade = { segmentEnds: mesh?.segmentEnds ?? empty, segmentColors: mesh?.segmentColors ?? empty };
     if (this.group.visible) this.make();
-    else setLines(this.plant, empty, empty); // the old plant's lines go now
+    else this.setPlant(empty, empty); // the old plant's lines go now
     this.modules = mesh?.segmentModules ?? new Uint32Array(0);
     this.highlight(null, 1);
   }
@@ -93,15 +76,39 @@ export class SegmentLines {
   /** Makes the geometry of the segments {@link show} was last given. */
   private make(): void {
     if (!this.unmade) return;
-    setLines(this.plant, this.unmade.segmentEnds, this.unmade.segmentColors);
+    this.setPlant(this.unmade.segmentEnds, this.unmade.segmentColors);
     this.unmade = null;
   }
 
-  /** Draws `overlay`'s lines over the plant (null: none) and the plant's own at brightness `dim`. */
+  /**
+   * `ends` and `colors` (two 3-float ends per segment) as the plant's lines, with bounds from one
+   * pass over the ends (a box, and the sphere around it; an exact box, then an exact sphere took
+   * 14 ms of the page's thread for 116,050 segments): the sphere only has to hold every segment.
+   */
+  private setPlant(ends: Float32Array, colors: Float32Array): void {
+    const box = pointsBox(ends);
+    const fits = this.plant.fits(ends.length / 6);
+    this.plant.setSegments(fits ? ends : new Float32Array(0), colors, box);
+    this.thin.geometry.dispose();
+    this.thin.geometry = new BufferGeometry();
+    if (!fits) {
+      this.thin.geometry.setAttribute('position', new BufferAttribute(ends, 3));
+      this.thin.geometry.setAttribute('color', new BufferAttribute(colors, 3));
+      setBox(this.thin.geometry, box);
+    }
+    this.thin.visible = !fits;
+    this.ends = ends;
+  }
+
+  /**
+   * Draws `overlay`'s lines over the plant (null: none; nor one of more segments than a texture
+   * holds, see {@link TexelLines.fits}) and the plant's own at brightness `dim`.
+   */
   highlight(overlay: LineOverlay | null, dim: number): void {
-    const empty = new Float32Array(0);
-    setLines(this.overlay, overlay?.ends ?? empty, overlay?.colors ?? empty);
-    this.plant.material.color.setScalar(dim);
+    const ends = overlay && this.overlay.fits(overlay.ends.length / 6) ? overlay.ends : new Float32Array(0);
+    this.overlay.setSegments(ends, overlay?.colors ?? new Float32Array(0), pointsBox(ends));
+    this.plant.mesh.material.color.setScalar(dim);
+    this.thin.material.color.setScalar(dim);
   }
 
   /** The lines' width in pixels (CSS pixels on screen; picture pixels in a snapshot). */
@@ -111,8 +118,8 @@ export class SegmentLines {
 
   set lineWidth(width: number) {
     this.width = width;
-    this.plant.material.linewidth = width;
-    this.overlay.material.linewidth = width + HIGHLIGHT_EXTRA;
+    this.plant.mesh.material.linewidth = width;
+    this.overlay.mesh.material.linewidth = width + HIGHLIGHT_EXTRA;
   }
 
   /** Whether the lines are drawn. */
@@ -127,19 +134,22 @@ export class SegmentLines {
 
   /**
    * The module of the segment `raycaster` (set from a camera) meets within the line's width, and
-   * the hit's distance from the eye; null when it meets none or the lines are hidden.
+   * the hit's distance from the eye; null when it meets none or the lines are hidden. (The group
+   * is never moved: the segments' coordinates are the world's.)
    */
   pick(raycaster: Raycaster): { module: number; distance: number } | null {
-    if (!this.group.visible || !this.plant.visible) return null;
-    const hit = raycaster.intersectObject(this.plant, false)[0];
-    if (!hit || hit.faceIndex == null || hit.faceIndex >= this.modules.length) return null;
-    return { module: this.modules[hit.faceIndex], distance: hit.distance };
+    const camera = raycaster.camera as PerspectiveCamera | OrthographicCamera | null;
+    if (!this.group.visible || !camera || this.modules.length === 0) return null;
+    const width = this.thin.visible ? 1 : this.width;
+    const hit = pickSegment(this.ends, camera, raycaster.ray, width, this.plant.mesh.material.resolution);
+    if (!hit || hit.segment >= this.modules.length) return null;
+    return { module: this.modules[hit.segment], distance: hit.distance };
   }
 
   dispose(): void {
-    for (const lines of [this.plant, this.overlay]) {
-      lines.geometry.dispose();
-      lines.material.dispose();
-    }
+    this.plant.dispose();
+    this.overlay.dispose();
+    this.thin.geometry.dispose();
+    for (const material of [this.plant.mesh.material, this.overlay.mesh.material, this.thin.material]) material.dispose();
   }
 }
