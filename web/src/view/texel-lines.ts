@@ -1,11 +1,11 @@
 // Wide lines (three.js's `LineMaterial`, the look of `LineSegments2`) drawn without instancing:
-// each segment's ends and end colours are two texels of two float textures (the arrays as the core
-// gives them), which the vertex shader reads by `gl_VertexID` (eight vertices a segment, the
-// corners of `LineSegmentsGeometry`'s box).
-// SwiftShader, Chromium's WebGL on a machine without a usable GPU, pays about 10 µs per instance:
-// 116,050 segments as `LineSegments2` (an instance each) took 1.2–2.6 s a frame there. The upload
-// stays 48 bytes a segment (the core's two arrays, each copied whole into its texture's rows); the index buffer (18 indices a segment) is one for every plant, grown
-// when a plant needs more, so it is uploaded only then.
+// each segment's ends and end colours are two texels of two float textures, which the vertex
+// shader reads by `gl_VertexID` (eight vertices a segment, the corners of `LineSegmentsGeometry`'s
+// box). SwiftShader, Chromium's WebGL on a machine without a usable GPU, pays about 10 µs per
+// instance: 116,050 segments as `LineSegments2` (an instance each) took 1.2–2.6 s a frame there.
+// The upload stays 48 bytes a segment (the core's two arrays, each copied whole into its
+// texture's rows); the index buffer (18 indices a segment) is one for every plant, grown when a
+// plant needs more, so it is uploaded only then.
 import { Box3, BufferAttribute, BufferGeometry, DataTexture, FloatType, Mesh, NearestFilter, RGBFormat, type WebGLRenderer, Vector4 } from 'three';
 import type { LineMaterial } from 'three/examples/jsm/lines/LineMaterial.js';
 import { setBox } from './plant-geometry';
