@@ -34,7 +34,7 @@ import { scenePalette } from './palette';
 import { plantGeometry, pointsBox, setBox } from './plant-geometry';
 import { GpuGeometry } from './gpu-geometry';
 import { loadTexture, texturedMaterials, type TexturedMaterials } from './textures';
-import { addHeadlight, addSkyLight, atLeastAPixelWide, litPlantMaterial, unlitPlantMaterial } from './scene-setup';
+import { addHeadlight, addSkyLight, atLeastAPixelWide, drawnSupersampled, litPlantMaterial, unlitPlantMaterial } from './scene-setup';
 import { MATERIAL_BARK, highlightOverlay, highlightSegments, moduleOfTriangle, type Rgb } from './highlight';
 import { DEFAULT_LINE_WIDTH, SegmentLines } from './segment-lines';
 import { BezierHandles } from './handles';
@@ -114,7 +114,9 @@ function nextTask(task: () => void): void {
  * 276–368 ms → 212–235 ms (the upload waits for the sketch's frame; `npm run bench:studio`).
  * Its tubes still draw at least a pixel wide (`atLeastAPixelWide`), and pictures are drawn at
  * twice their size and scaled down ({@link PlantView.snapshot}). On such a machine the context is
- * made twice: the first tells the rasterizer.
+ * made twice: the first tells the rasterizer. The Stages view and the gallery's thumbnails keep
+ * multisampling everywhere: they draw few, small plants, mostly as lines one pixel wide, which a
+ * picture scaled down would fade.
  */
 function viewRenderer(): WebGLRenderer {
   const options = { preserveDrawingBuffer: true, alpha: true };
@@ -798,7 +800,9 @@ export class PlantView {
     this.finishUpload(); // the picture is of the plant last given
     const canvas = this.renderer.domElement;
     const multisampled = this.renderer.getContext().getContextAttributes()?.antialias === true;
-    const scale = multisampled || 2 * Math.max(width, height) > this.maxPictureSide() ? 1 : 2;
+    // Not a plant drawn as lines one pixel wide (too large to mesh): scaled down, they would fade.
+    const thinLines = this.lines.geometry.getAttribute('position') !== undefined;
+    const scale = multisampled || thinLines || 2 * Math.max(width, height) > this.maxPictureSide() ? 1 : 2;
     const pixelRatio = this.renderer.getPixelRatio();
     const camera = this.active.camera;
     const background = this.scene.background;
@@ -816,7 +820,7 @@ export class PlantView {
       if (camera instanceof PerspectiveCamera) camera.aspect = width / height;
       else [camera.left, camera.right] = [-camera.top * (width / height), camera.top * (width / height)];
       camera.updateProjectionMatrix();
-      this.renderer.render(this.scene, camera);
+      drawnSupersampled(scale, () => this.renderer.render(this.scene, camera));
       // toBlob copies the bitmap now (preserveDrawingBuffer keeps it); encoding finishes later.
       const picture = scale === 1 ? canvas : scaledDown(canvas, width, height);
       blob = new Promise((resolve) => picture.toBlob(resolve, 'image/png'));

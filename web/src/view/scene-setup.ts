@@ -42,9 +42,28 @@ const HALF_A_PIXEL_OUT = `
 const viewport = new Vector4();
 
 /**
+ * Pixels of the target drawn into for each pixel of the picture: 2 while a picture is drawn at
+ * twice its size to be scaled down ({@link drawnSupersampled}), else 1.
+ */
+let supersampling = 1;
+
+/**
+ * Runs `draw` (a render into a target `scale` times the picture's size, which is then scaled down)
+ * with {@link atLeastAPixelWide}'s pixel the picture's: a pixel of the picture, not of the target.
+ */
+export function drawnSupersampled<T>(scale: number, draw: () => T): T {
+  supersampling = scale;
+  try {
+    return draw();
+  } finally {
+    supersampling = 1;
+  }
+}
+
+/**
  * Makes `material` draw every surface at least about a pixel across: each vertex is moved half a
  * pixel (of whatever is drawn into: the canvas, a thumbnail, a snapshot) outwards along its
- * normal. A tube thinner than a pixel, as the twigs of a big tree seen whole are, is then drawn a
+ * normal (a picture's pixel while it is {@link drawnSupersampled}). A tube thinner than a pixel, as the twigs of a big tree seen whole are, is then drawn a
  * pixel wide and unbroken, as a line would be, instead of falling between the multisamples as
  * scattered specks; everything else grows by half a pixel a side, which cannot be seen. Only the
  * picture changes: picking reads the mesh as it is, and the files written keep their sizes. Takes
@@ -58,7 +77,7 @@ export function atLeastAPixelWide<M extends Material>(material: M): M {
     shader.vertexShader = `uniform float meristemPixelsHigh;\n${shader.vertexShader.replace(/\}\s*$/, HALF_A_PIXEL_OUT)}`;
   };
   material.onBeforeRender = (renderer) => {
-    pixelsHigh.value = Math.max(1, renderer.getCurrentViewport(viewport).w);
+    pixelsHigh.value = Math.max(1, renderer.getCurrentViewport(viewport).w / supersampling);
   };
   return material;
 }

@@ -89,8 +89,10 @@ export class SegmentLines {
     const box = pointsBox(ends);
     const fits = this.plant.fits(ends.length / 6);
     this.plant.setSegments(fits ? ends : new Float32Array(0), colors, box);
-    this.thin.geometry.dispose();
-    this.thin.geometry = new BufferGeometry();
+    if (!fits || this.thin.visible) {
+      this.thin.geometry.dispose();
+      this.thin.geometry = new BufferGeometry();
+    }
     if (!fits) {
       this.thin.geometry.setAttribute('position', new BufferAttribute(ends, 3));
       this.thin.geometry.setAttribute('color', new BufferAttribute(colors, 3));

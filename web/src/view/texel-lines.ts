@@ -122,6 +122,7 @@ export class TexelLines {
    */
   setSegments(ends: Float32Array, colors: Float32Array, box: Box3): void {
     const segments = this.fits(ends.length / 6) ? Math.floor(ends.length / 6) : 0;
+    // None: no textures (a plant's show clears the highlight, each edit: no empty rows to upload).
     this.uniforms.lineEnds.value = this.texture(this.uniforms.lineEnds.value, ends.subarray(0, 6 * segments));
     this.uniforms.lineColors.value = this.texture(this.uniforms.lineColors.value, colors.subarray(0, 6 * segments));
     this.uniforms.lineSegmentsPerRow.value = this.perRow;
@@ -137,9 +138,10 @@ export class TexelLines {
     this.mesh.visible = segments > 0;
   }
 
-  /** A texture of `values`' rows (see {@link segmentRows}), `old` disposed of. */
-  private texture(old: DataTexture | null, values: Float32Array): DataTexture {
+  /** A texture of `values`' rows (see {@link segmentRows}), or none for no values; `old` disposed of. */
+  private texture(old: DataTexture | null, values: Float32Array): DataTexture | null {
     old?.dispose();
+    if (values.length === 0) return null;
     const { data, width, height } = segmentRows(values, this.perRow);
     const texture = new DataTexture(data, width, height, RGBFormat, FloatType);
     texture.internalFormat = 'RGB32F'; // three.js names no sized format for RGB floats itself
