@@ -9,7 +9,7 @@ describe('atLeastAPixelWide', () => {
     const shader = { uniforms: {} as Record<string, { value: number }>, vertexShader: 'void main() {\n}' };
     material.onBeforeCompile(shader as never, undefined as never);
     const renderer = { getCurrentViewport: (v: Vector4) => v.set(0, 0, 2 * height, height) } as unknown as WebGLRenderer;
-    material.onBeforeRender(renderer, undefined as never, undefined as never, undefined as never, material, null);
+    material.onBeforeRender(renderer, undefined as never, undefined as never, undefined as never, undefined as never, null as never);
     return shader.uniforms.meristemPixelsHigh.value;
   }
 
