@@ -185,11 +185,7 @@ export class LivePreview {
    */
   private sketch(sketch: PlantSketch, key: string): void {
     if (key !== this.requestedKey) return;
-    const empty = new Float32Array(0);
-    this.parts.view.showPlant(
-      { positions: empty, normals: empty, colors: empty, indices: new Uint32Array(0), ranges: new Uint32Array(0), uvs: empty, materialRanges: new Uint32Array(0), lines: sketch.lines, lineColors: sketch.lineColors, segmentEnds: empty, segmentColors: empty, segmentModules: new Uint32Array(0) },
-      sketch.flat,
-    );
+    this.parts.view.showSketch(sketch.lines, sketch.lineColors, sketch.flat);
     this.markStale(false, '');
     // The status line keeps the last report until the build: a second text change per keystroke
     // costs a compositor pass that, without a GPU, delays the tubes' frame by a second.

@@ -38,6 +38,7 @@ import { addHeadlight, addSkyLight, atLeastAPixelWide, drawnSupersampled, litPla
 import { MATERIAL_BARK, highlightOverlay, highlightSegments, moduleOfTriangle, type Rgb } from './highlight';
 import { DEFAULT_LINE_WIDTH, SegmentLines } from './segment-lines';
 import { BezierHandles } from './handles';
+import { SketchCanvas } from './sketch-canvas';
 
 const DARK_SCHEME = '(prefers-color-scheme: dark)';
 
@@ -182,8 +183,11 @@ export class PlantView {
   private readonly pickable = new Mesh<BufferGeometry, Material | Material[]>(new BufferGeometry(), this.lit);
   /** A plant on its way to the GPU; the one on screen stays until its last slice is there. */
   private incoming: IncomingPlant | undefined;
-  /** The fallback for models too large to mesh: one coloured line per segment. */
+  /** The fallback for models too large to mesh, and sketches: one coloured line per segment. */
   private readonly lines = new LineSegments(new BufferGeometry(), new LineBasicMaterial({ vertexColors: true }));
+  /** Where a software rasterizer draws the view: the sketch, drawn in 2D over it ({@link showSketch}). */
+  private readonly sketchCanvas: SketchCanvas | undefined;
+  private readonly drawingBufferSize = new Vector2();
   private grid: GridHelper | undefined;
   /**
    * The material of every grid (GridHelper's own, kept): a new plant gets a new grid, and a new
@@ -273,6 +277,7 @@ export class PlantView {
     canvas.tabIndex = 0;
     canvas.addEventListener('keydown', (event) => this.onKey(event));
     container.append(canvas);
+    if (drawnBySoftware(this.renderer.getContext())) this.sketchCanvas = new SketchCanvas(container);
 
     addSkyLight(this.scene);
     this.perspective = this.rig(new PerspectiveCamera(40, 1, 0.01, 1000));
@@ -407,6 +412,36 @@ export class PlantView {
     next();
   }
 
+  /**
+   * A big plant's sketch (its segments as `lines` in the linear RGB `lineColors`, as the core's
+   * sketch gives them), shown as a plant drawn as lines until the next plant replaces it. Where a
+   * software rasterizer draws the view they are drawn in 2D over it instead (./sketch-canvas.ts):
+   * the WebGL frame, drawn without them, costs that rasterizer next to nothing.
+   */
+  showSketch(lines: Float32Array, lineColors: Float32Array, flat: boolean): void {
+    const empty = new Float32Array(0);
+    const none = new Uint32Array(0);
+    this.showPlant(
+      { positions: empty, normals: empty, colors: empty, indices: none, ranges: none, uvs: empty, materialRanges: none, lines, lineColors, segmentEnds: empty, segmentColors: empty, segmentModules: none },
+      flat,
+    );
+    if (!this.sketchCanvas || lines.length === 0) return;
+    this.sketchCanvas.show(lines, lineColors);
+    this.lines.visible = false;
+    // Drawn now, with the camera framed on it, not in the frame: the WebGL frame comes on
+    // screen no later for it (the frame redraws it only if the camera or size changed meanwhile).
+    this.drawSketch();
+  }
+
+  /** The sketch drawn in 2D ({@link showSketch}) as the camera sees it now. */
+  private drawSketch(): void {
+    if (!this.sketchCanvas?.active) return;
+    const camera = this.active.camera;
+    camera.updateMatrixWorld();
+    const { x, y } = this.renderer.getDrawingBufferSize(this.drawingBufferSize);
+    this.sketchCanvas.draw(camera, x, y);
+  }
+
   /** Uploads what is left of the incoming plant at once, and puts it on screen. */
   private finishUpload(): void {
     const incoming = this.incoming;
@@ -427,6 +462,8 @@ export class PlantView {
   /** Puts a plant (its geometry on the GPU, or its lines) on screen in place of the old one. */
   private swapIn({ mesh, flat, source, onGpu }: IncomingPlant): void {
     this.plantShown = true;
+    this.sketchCanvas?.clear();
+    this.lines.visible = true;
     const asLines = onGpu === undefined;
     this.mesh = asLines ? undefined : mesh;
     const oldMesh = this.plant.geometry;
@@ -808,6 +845,7 @@ export class PlantView {
     const background = this.scene.background;
     const lineWidth = this.segmentLines.lineWidth;
     let blob: Promise<Blob | null>;
+    this.lines.visible = true; // a sketch drawn in 2D (showSketch) is drawn into the picture
     try {
       if (look.background !== 'view') {
         this.scene.background = look.background === 'white' ? new Color('#ffffff') : null;
@@ -825,6 +863,7 @@ export class PlantView {
       const picture = scale === 1 ? canvas : scaledDown(canvas, width, height);
       blob = new Promise((resolve) => picture.toBlob(resolve, 'image/png'));
     } finally {
+      this.lines.visible = !this.sketchCanvas?.active;
       this.scene.background = background;
       if (this.grid) this.grid.visible = this.gridVisible;
       this.segmentLines.lineWidth = lineWidth;
@@ -973,6 +1012,7 @@ export class PlantView {
     this.gridMaterial.dispose();
     this.renderer.dispose();
     this.renderer.domElement.remove();
+    this.sketchCanvas?.clear();
   }
 
   /**
@@ -1065,6 +1105,7 @@ export class PlantView {
     this.renderQueued = false;
     this.renderer.render(this.scene, this.active.camera);
     if (gl instanceof WebGL2RenderingContext) this.drawn = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
+    this.drawSketch();
     for (const listener of this.renderListeners) listener();
   }
 

@@ -1,0 +1,199 @@
+// A big plant's sketch (its segments as one-pixel lines, on screen while the build worker meshes
+// its tubes) drawn with the 2D canvas, over the WebGL view, where a software rasterizer draws that
+// view (./rasterizer.ts). SwiftShader spent 50 to 80 ms rasterizing the 116,050 lines of ABOP
+// 1.24d at n = 10 as a WebGL frame, and the page's thread waited for it (Chromium reads each WebGL
+// frame back without a GPU) or the tubes' upload did (with GPU compositing): the tubes came on
+// screen 30 to 70 ms later than with no sketch at all (`npm run bench:studio`, 2026-11-27). The
+// CPU draws the same hairlines into a 2D canvas in 5 to 15 ms, the projection included. The WebGL
+// view meanwhile draws its frame without them; the next plant shown replaces the sketch.
+import type { Camera } from 'three';
+import { Color, LinearSRGBColorSpace, Matrix4 } from 'three';
+
+/**
+ * The segments `ends` (x, y, z for each end, two ends a segment) as seen through `viewProjection`
+ * (a camera's projection matrix times its inverse world matrix, column-major) on a canvas of
+ * `width` × `height` pixels: x, y for each end written to `out` (four numbers a segment, y down),
+ * and for each segment in `shown` whether any of it is in front of the camera's near plane (the
+ * part behind it is cut off, as WebGL clips). Returns the number of segments shown.
+ */
+export function projectSegments(ends: Float32Array, viewProjection: ArrayLike<number>, width: number, height: number, out: Float32Array, shown: Uint8Array): number {
+  const m = viewProjection;
+  let count = 0;
+  const clip = new Float64Array(8); // x, y, z, w of both ends
+  const last = new Float64Array(4); // the last end, unclipped
+  for (let s = 0; s < ends.length / 6; s++) {
+    const o = 6 * s;
+    if (s > 0 && ends[o] === ends[o - 3] && ends[o + 1] === ends[o - 2] && ends[o + 2] === ends[o - 1]) {
+      // It starts where the segment before ended (a branch goes on): that end, seen already.
+      for (let k = 0; k < 4; k++) clip[k] = last[k];
+    } else {
+      project(ends, o, m, clip, 0);
+    }
+    project(ends, o + 3, m, clip, 4);
+    for (let k = 0; k < 4; k++) last[k] = clip[4 + k];
+    // Signed distance from the near plane (z = -w in clip space): positive in front of it.
+    const near0 = clip[2] + clip[3];
+    const near1 = clip[6] + clip[7];
+    shown[s] = near0 >= 0 || near1 >= 0 ? 1 : 0;
+    if (!shown[s]) continue;
+    count++;
+    if (near0 < 0 || near1 < 0) {
+      // One end behind the plane: moved onto it.
+      const t = near0 / (near0 - near1);
+      const behind = near0 < 0 ? 0 : 4;
+      for (let k = 0; k < 4; k++) clip[behind + k] = clip[k] + t * (clip[4 + k] - clip[k]);
+    }
+    for (let e = 0; e < 2; e++) {
+      const w = clip[4 * e + 3];
+      out[4 * s + 2 * e] = ((clip[4 * e] / w + 1) / 2) * width;
+      out[4 * s + 2 * e + 1] = ((1 - clip[4 * e + 1] / w) / 2) * height;
+    }
+  }
+  return count;
+}
+
+/** Point `at` of `points` (x, y, z) in clip space by the column-major `m`: x, y, z, w into `out` from `to`. */
+function project(points: Float32Array, at: number, m: ArrayLike<number>, out: Float64Array, to: number): void {
+  const x = points[at];
+  const y = points[at + 1];
+  const z = points[at + 2];
+  for (let row = 0; row < 4; row++) out[to + row] = m[row] * x + m[row + 4] * y + m[row + 8] * z + m[row + 12];
+}
+
+/** The 2D canvas over the view that shows a sketch: in the page only while there is one. */
+export class SketchCanvas {
+  readonly canvas = document.createElement('canvas');
+  private ends: Float32Array | undefined;
+  private colors: Float32Array | undefined;
+  private screen = new Float32Array(0);
+  private shown = new Uint8Array(0);
+  private readonly matrix = new Matrix4();
+  /** What the canvas shows, when `drawn`: the sketch through this matrix. */
+  private readonly drawnWith = new Matrix4();
+  private drawn = false;
+  private readonly color = new Color();
+
+  /** `container`: the view's, where the canvas goes after the view's own (over it). */
+  constructor(private readonly container: HTMLElement) {
+    this.canvas.className = 'sketch-canvas';
+    this.canvas.setAttribute('aria-hidden', 'true');
+  }
+
+  /** Whether a sketch is shown. */
+  get active(): boolean {
+    return this.ends !== undefined;
+  }
+
+  /** Shows the segments `ends` in the linear RGB `colors` (both as the core's `lines`, `lineColors`) from the next {@link draw}. */
+  show(ends: Float32Array, colors: Float32Array): void {
+    this.ends = ends;
+    this.colors = colors;
+    this.drawn = false;
+  }
+
+  /** Takes the sketch away. */
+  clear(): void {
+    this.ends = this.colors = undefined;
+    this.drawn = false;
+    this.canvas.remove();
+  }
+
+  /**
+   * Draws the sketch as `camera` (its matrices up to date) sees it on a drawing buffer of
+   * `width` × `height` pixels, unless the canvas shows just that already.
+   */
+  draw(camera: Camera, width: number, height: number): void {
+    const { ends, colors, canvas } = this;
+    if (!ends || !colors) return;
+    this.matrix.multiplyMatrices(camera.projectionMatrix, camera.matrixWorldInverse);
+    if (this.drawn && this.matrix.equals(this.drawnWith) && canvas.width === width && canvas.height === height) return;
+    this.drawnWith.copy(this.matrix);
+    this.drawn = true;
+    if (canvas.width !== width || canvas.height !== height) [canvas.width, canvas.height] = [width, height];
+    // Drawn by the CPU (`willReadFrequently`): a 2D canvas drawn by the GPU is drawn by the same
+    // software rasterizer (with GPU compositing the tubes then came 1.7 s after the keystroke).
+    const context = canvas.getContext('2d', { willReadFrequently: true });
+    if (!context) return;
+    const segments = ends.length / 6;
+    if (this.shown.length < segments) [this.screen, this.shown] = [new Float32Array(4 * segments), new Uint8Array(segments)];
+    projectSegments(ends, this.matrix.elements, width, height, this.screen, this.shown);
+    context.clearRect(0, 0, width, height);
+    context.lineWidth = 1;
+    const { screen, shown } = this;
+    // One path for each run of segments of one colour (a sketch has few colours, in long runs).
+    for (let start = 0; start < segments; ) {
+      let end = start + 1;
+      while (end < segments && sameColor(colors, start, end)) end++;
+      context.beginPath();
+      tracePolylines(context, screen, shown, start, end);
+      context.strokeStyle = this.color.setRGB(colors[6 * start], colors[6 * start + 1], colors[6 * start + 2], LinearSRGBColorSpace).getStyle();
+      context.stroke();
+      start = end;
+    }
+    if (!canvas.isConnected) this.container.append(canvas);
+  }
+}
+
+/** What {@link tracePolylines} draws on: a 2D canvas context, or a `Path2D`. */
+export interface PathSink {
+  moveTo(x: number, y: number): void;
+  lineTo(x: number, y: number): void;
+}
+
+/**
+ * Segments `from` to `to` (those `shown`) of `screen` (x, y for each end, as {@link projectSegments}
+ * writes them) traced into `path` as polylines: one goes on where a segment starts at the end of
+ * the one before (a branch's segments), and leaves out the points where it goes straight on: each
+ * line drawn runs from a corner along the direction of the segment that left it, and ends before
+ * the first point more than half a pixel off that line (or going back), so every point left out is
+ * within a pixel of it. Fewer calls to the canvas, the same pixels give or take one at an edge.
+ */
+export function tracePolylines(path: PathSink, screen: Float32Array, shown: Uint8Array, from: number, to: number): void {
+  // The polyline's end (NaN: no polyline yet), its last corner and the unit direction it left it in.
+  let lastX = NaN;
+  let lastY = NaN;
+  let cornerX = 0;
+  let cornerY = 0;
+  let dirX = 0;
+  let dirY = 0;
+  for (let s = from; s < to; s++) {
+    if (!shown[s]) continue;
+    const o = 4 * s;
+    const ax = screen[o];
+    const ay = screen[o + 1];
+    const bx = screen[o + 2];
+    const by = screen[o + 3];
+    const goesOn = ax === lastX && ay === lastY;
+    if (!goesOn) {
+      if (lastX === lastX) path.lineTo(lastX, lastY);
+      path.moveTo(ax, ay);
+    }
+    if (!goesOn || !alongLine(cornerX, cornerY, dirX, dirY, ax, ay, bx, by)) {
+      if (goesOn) path.lineTo(ax, ay);
+      const length = Math.hypot(bx - ax, by - ay);
+      cornerX = ax;
+      cornerY = ay;
+      dirX = length > 0 ? (bx - ax) / length : 0;
+      dirY = length > 0 ? (by - ay) / length : 0;
+    }
+    lastX = bx;
+    lastY = by;
+  }
+  if (lastX === lastX) path.lineTo(lastX, lastY);
+}
+
+/**
+ * Whether (bx, by) is within half a pixel of the line from the corner (cx, cy) in the unit
+ * direction (dx, dy) (none: zero), and no nearer the corner along it than (ax, ay).
+ */
+function alongLine(cx: number, cy: number, dx: number, dy: number, ax: number, ay: number, bx: number, by: number): boolean {
+  if (dx === 0 && dy === 0) return false;
+  const across = dx * (by - cy) - dy * (bx - cx);
+  const along = dx * (bx - cx) + dy * (by - cy);
+  return Math.abs(across) <= 0.5 && along >= dx * (ax - cx) + dy * (ay - cy);
+}
+
+/** Segments `a` and `b` start in the same colour. */
+function sameColor(colors: Float32Array, a: number, b: number): boolean {
+  return colors[6 * a] === colors[6 * b] && colors[6 * a + 1] === colors[6 * b + 1] && colors[6 * a + 2] === colors[6 * b + 2];
+}
