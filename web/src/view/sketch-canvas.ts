@@ -17,47 +17,71 @@ import { Color, LinearSRGBColorSpace, Matrix4 } from 'three';
  * part behind it is cut off, as WebGL clips). Returns the number of segments shown.
  */
 export function projectSegments(ends: Float32Array, viewProjection: ArrayLike<number>, width: number, height: number, out: Float32Array, shown: Uint8Array): number {
-  const m = viewProjection;
+  const m = Float64Array.from(viewProjection);
+  const halfWidth = width / 2;
+  const halfHeight = height / 2;
   let count = 0;
-  const clip = new Float64Array(8); // x, y, z, w of both ends
-  const last = new Float64Array(4); // the last end, unclipped
-  for (let s = 0; s < ends.length / 6; s++) {
-    const o = 6 * s;
+  // Each end in clip space (x, y, z, w); the first carried over from the last segment's second
+  // where a segment starts where the one before ended (a branch goes on).
+  let x0 = 0;
+  let y0 = 0;
+  let z0 = 0;
+  let w0 = 0;
+  let x1 = 0;
+  let y1 = 0;
+  let z1 = 0;
+  let w1 = 0;
+  for (let s = 0, o = 0; o < ends.length; s++, o += 6) {
     if (s > 0 && ends[o] === ends[o - 3] && ends[o + 1] === ends[o - 2] && ends[o + 2] === ends[o - 1]) {
-      // It starts where the segment before ended (a branch goes on): that end, seen already.
-      for (let k = 0; k < 4; k++) clip[k] = last[k];
+      x0 = x1;
+      y0 = y1;
+      z0 = z1;
+      w0 = w1;
     } else {
-      project(ends, o, m, clip, 0);
+      const x = ends[o];
+      const y = ends[o + 1];
+      const z = ends[o + 2];
+      x0 = m[0] * x + m[4] * y + m[8] * z + m[12];
+      y0 = m[1] * x + m[5] * y + m[9] * z + m[13];
+      z0 = m[2] * x + m[6] * y + m[10] * z + m[14];
+      w0 = m[3] * x + m[7] * y + m[11] * z + m[15];
     }
-    project(ends, o + 3, m, clip, 4);
-    for (let k = 0; k < 4; k++) last[k] = clip[4 + k];
+    const x = ends[o + 3];
+    const y = ends[o + 4];
+    const z = ends[o + 5];
+    x1 = m[0] * x + m[4] * y + m[8] * z + m[12];
+    y1 = m[1] * x + m[5] * y + m[9] * z + m[13];
+    z1 = m[2] * x + m[6] * y + m[10] * z + m[14];
+    w1 = m[3] * x + m[7] * y + m[11] * z + m[15];
     // Signed distance from the near plane (z = -w in clip space): positive in front of it.
-    const near0 = clip[2] + clip[3];
-    const near1 = clip[6] + clip[7];
-    shown[s] = near0 >= 0 || near1 >= 0 ? 1 : 0;
-    if (!shown[s]) continue;
+    const near0 = z0 + w0;
+    const near1 = z1 + w1;
+    if (near0 < 0 && near1 < 0) {
+      shown[s] = 0;
+      continue;
+    }
+    shown[s] = 1;
     count++;
-    if (near0 < 0 || near1 < 0) {
-      // One end behind the plane: moved onto it.
-      const t = near0 / (near0 - near1);
-      const behind = near0 < 0 ? 0 : 4;
-      for (let k = 0; k < 4; k++) clip[behind + k] = clip[k] + t * (clip[4 + k] - clip[k]);
+    const k = 4 * s;
+    if (near0 >= 0 && near1 >= 0) {
+      out[k] = (x0 / w0 + 1) * halfWidth;
+      out[k + 1] = (1 - y0 / w0) * halfHeight;
+      out[k + 2] = (x1 / w1 + 1) * halfWidth;
+      out[k + 3] = (1 - y1 / w1) * halfHeight;
+      continue;
     }
-    for (let e = 0; e < 2; e++) {
-      const w = clip[4 * e + 3];
-      out[4 * s + 2 * e] = ((clip[4 * e] / w + 1) / 2) * width;
-      out[4 * s + 2 * e + 1] = ((1 - clip[4 * e + 1] / w) / 2) * height;
-    }
+    // One end behind the plane: that end moved onto it.
+    const t = near0 / (near0 - near1);
+    const px = x0 + t * (x1 - x0);
+    const py = y0 + t * (y1 - y0);
+    const pw = w0 + t * (w1 - w0);
+    const front = near0 >= 0;
+    out[k] = ((front ? x0 / w0 : px / pw) + 1) * halfWidth;
+    out[k + 1] = (1 - (front ? y0 / w0 : py / pw)) * halfHeight;
+    out[k + 2] = ((front ? px / pw : x1 / w1) + 1) * halfWidth;
+    out[k + 3] = (1 - (front ? py / pw : y1 / w1)) * halfHeight;
   }
   return count;
-}
-
-/** Point `at` of `points` (x, y, z) in clip space by the column-major `m`: x, y, z, w into `out` from `to`. */
-function project(points: Float32Array, at: number, m: ArrayLike<number>, out: Float64Array, to: number): void {
-  const x = points[at];
-  const y = points[at + 1];
-  const z = points[at + 2];
-  for (let row = 0; row < 4; row++) out[to + row] = m[row] * x + m[row + 4] * y + m[row + 8] * z + m[row + 12];
 }
 
 /** The 2D canvas over the view that shows a sketch: in the page only while there is one. */
