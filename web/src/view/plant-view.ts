@@ -117,15 +117,16 @@ function nextTask(task: () => void): void {
  * twice their size and scaled down ({@link PlantView.snapshot}). On such a machine the context is
  * made twice: the first tells the rasterizer. The Stages view and the gallery's thumbnails keep
  * multisampling everywhere: they draw few, small plants, mostly as lines one pixel wide, which a
- * picture scaled down would fade.
+ * picture scaled down would fade. `software` says which it is (the view draws its sketches in 2D
+ * there: {@link PlantView.showSketch}).
  */
-function viewRenderer(): WebGLRenderer {
+function viewRenderer(): { renderer: WebGLRenderer; software: boolean } {
   const options = { preserveDrawingBuffer: true, alpha: true };
   const renderer = new WebGLRenderer({ ...options, antialias: true });
-  if (!drawnBySoftware(renderer.getContext())) return renderer;
+  if (!drawnBySoftware(renderer.getContext())) return { renderer, software: false };
   renderer.dispose();
   renderer.forceContextLoss();
-  return new WebGLRenderer({ ...options, antialias: false });
+  return { renderer: new WebGLRenderer({ ...options, antialias: false }), software: true };
 }
 
 /** `source` drawn into a new canvas of `width` × `height` (smoothed: a 2:1 scale averages each 2 × 2 pixels). */
@@ -269,7 +270,8 @@ export class PlantView {
     });
     const texture = (name: 'bark' | 'leaf') => loadTexture(name, () => this.textureLoaded(), (message) => this.texturesFailed(message), assetBase, plantDrawn);
     this.textured = texturedMaterials(texture('bark'), texture('leaf'), this.lit, this.unlit);
-    this.renderer = viewRenderer();
+    const { renderer, software } = viewRenderer();
+    this.renderer = renderer;
     this.segmentLines = new SegmentLines(this.renderer.capabilities.maxTextureSize);
     this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
     const canvas = this.renderer.domElement;
@@ -277,7 +279,7 @@ export class PlantView {
     canvas.tabIndex = 0;
     canvas.addEventListener('keydown', (event) => this.onKey(event));
     container.append(canvas);
-    if (drawnBySoftware(this.renderer.getContext())) this.sketchCanvas = new SketchCanvas(container);
+    if (software) this.sketchCanvas = new SketchCanvas(container);
 
     addSkyLight(this.scene);
     this.perspective = this.rig(new PerspectiveCamera(40, 1, 0.01, 1000));

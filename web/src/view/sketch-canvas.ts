@@ -31,6 +31,9 @@ export function projectSegments(ends: Float32Array, viewProjection: ArrayLike<nu
   let y1 = 0;
   let z1 = 0;
   let w1 = 0;
+  // The sixteen products are written out for each end, with the ends in locals: through a helper
+  // and an array of clip coordinates the projection took twice as long (4.5 against 2.1 ms for the
+  // big tree in Node).
   for (let s = 0, o = 0; o < ends.length; s++, o += 6) {
     if (s > 0 && ends[o] === ends[o - 3] && ends[o + 1] === ends[o - 2] && ends[o + 2] === ends[o - 1]) {
       x0 = x1;
