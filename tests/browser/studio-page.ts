@@ -160,9 +160,18 @@ export async function openFromGallery(page: Page, file: string): Promise<void> {
  * its build: returns the build's status (`ok` when the plant is shown).
  */
 export async function openExample(page: Page, file: string): Promise<string | null> {
+  const text = await page.evaluate((name) => fetch(`examples/${encodeURIComponent(name)}`).then((r) => r.text()), file);
   const before = await generation(page);
   await openFromGallery(page, file);
+  // The studio fetches the example before it asks, so the question may come a moment after the
+  // click; and a build of the text replaced may still be on its way. Answer the question whenever
+  // it shows, until the build delivered is the example's.
   const replace = page.getByTestId('confirm-replace-button');
-  if (await replace.isVisible()) await replace.click();
+  const built = (source: string) => window.__meristem?.preview?.lastResult?.source === source;
+  for (let tries = 0; !(await page.evaluate(built, text)); tries++) {
+    if (tries > 600) throw new Error(`${file} was not built within 30 s of opening it`);
+    if (await replace.isVisible()) await replace.click();
+    await page.waitForTimeout(50);
+  }
   return nextBuild(page, before);
 }
