@@ -75,6 +75,8 @@ export async function pasteText(page: Page, text: string): Promise<string | null
   await page.getByTestId('editor').locator('.cm-content').click();
   await page.keyboard.press('Control+A');
   await page.keyboard.insertText(text);
+  // A build of the text replaced may still be on its way: wait for the pasted text's own.
+  await page.waitForFunction((source) => window.__meristem?.preview?.lastResult?.source === source, text.replace(/\r\n?/g, '\n'), { timeout: 30_000 });
   return nextBuild(page, before);
 }
 
