@@ -8,7 +8,7 @@ import { join } from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { exportWithCli, removeScratch, scratchDir } from '../export/tools';
 import { colourShare, differingShare, foregroundMask, type Picture } from './pictures';
-import { canvasPicture, editorText, generation, nextBuild, openExample, savePage, twoFrames } from './studio-page';
+import { canvasPicture, editorText, generation, nextBuild, openExample, savePage, twoFrames, VIEW_CANVAS } from './studio-page';
 import { browser, page, problems, useStudio } from './session';
 
 const dir = scratchDir('branches');
@@ -56,7 +56,7 @@ describe('editing a branch by its Bézier handles', () => {
     before = await canvasPicture(page, 'branches-before.png');
     await page.getByTestId('edit-branches').click();
     expect(await page.getByTestId('edit-branches').getAttribute('aria-pressed')).toBe('true');
-    const canvas = (await page.locator('[data-testid=viewport] canvas').boundingBox())!;
+    const canvas = (await page.locator(VIEW_CANVAS).boundingBox())!;
     const point = trunkPoint(before);
     await page.mouse.click(canvas.x + point.x, canvas.y + point.y);
     await twoFrames(page);

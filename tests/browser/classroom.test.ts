@@ -5,7 +5,7 @@
 import { chromium, type Browser, type Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
 import { decodePng, foregroundShare } from './pictures';
-import { RESULTS, example } from './studio-page';
+import { RESULTS, example, VIEW_CANVAS } from './studio-page';
 import { encodeState } from '../../web/src/share/codec';
 import { writeFileSync } from 'node:fs';
 
@@ -50,7 +50,7 @@ describe('a projector at 200 % zoom (1280 × 800 shown as 640 × 400)', () => {
     await page.waitForTimeout(300);
     expect((await viewBox(page)).height, 'Large').toBeGreaterThanOrEqual(0.6 * 400);
     writeFileSync(new URL('classroom-large-200.png', RESULTS), await page.screenshot());
-    expect(await drawnShare(page, '[data-testid=viewport] canvas', 'classroom-large-200-canvas.png')).toBeGreaterThan(0.01);
+    expect(await drawnShare(page, VIEW_CANVAS, 'classroom-large-200-canvas.png')).toBeGreaterThan(0.01);
 
     await page.getByTestId('fullscreen').click();
     await expect.poll(() => page.evaluate(() => document.body.classList.contains('view-only'))).toBe(true);
@@ -78,7 +78,7 @@ describe('a phone (390 × 844)', () => {
     expect(box.y + box.height, 'the whole view is on screen').toBeLessThanOrEqual(844);
     expect(box.height).toBeGreaterThan(300);
     expect(await page.evaluate(() => document.scrollingElement!.scrollHeight <= innerHeight + 1), 'no page scrolling').toBe(true);
-    expect(await drawnShare(page, '[data-testid=viewport] canvas', 'classroom-phone-canvas.png')).toBeGreaterThan(0.01);
+    expect(await drawnShare(page, VIEW_CANVAS, 'classroom-phone-canvas.png')).toBeGreaterThan(0.01);
     expect(await page.getByTestId('step-forward').isVisible(), 'the iterations are at hand').toBe(true);
     writeFileSync(new URL('classroom-phone.png', RESULTS), await page.screenshot());
     await page.getByTestId('pane-toggle').click();
@@ -97,7 +97,7 @@ describe('the view from the keyboard', () => {
     // A 3D plant, so the arrows orbit (in 2D they pan).
     await page.getByTestId('projection').click();
     const pose = () => page.evaluate(() => window.__meristem!.cameraPose!());
-    const canvas = page.locator('[data-testid=viewport] canvas');
+    const canvas = page.locator(VIEW_CANVAS);
     await canvas.focus();
     expect(await canvas.evaluate((c) => c === document.activeElement)).toBe(true);
     const start = await pose();

@@ -7,7 +7,7 @@ import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { chromium, type Browser, type Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
 import { colourShare, decodePng, type Picture } from './pictures';
-import { findPixel as findPagePixel, HIGHLIGHT_PIXELS, PLANT_ONLY } from './studio-page';
+import { findPixel as findPagePixel, HIGHLIGHT_PIXELS, PLANT_ONLY, VIEW_CANVAS } from './studio-page';
 
 const RESULTS = new URL('../../test-results/', import.meta.url);
 const SIGNAL = readFileSync(new URL('../../public/examples/abop-sec-1.8-signal.lsys', import.meta.url), 'utf8');
@@ -49,7 +49,7 @@ async function cursorOn(start: string): Promise<void> {
 async function canvas(name: string): Promise<{ picture: Picture; png: Buffer }> {
   await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
   const png = await page
-    .locator('[data-testid=viewport] canvas')
+    .locator(VIEW_CANVAS)
     .screenshot({ style: PLANT_ONLY });
   writeFileSync(new URL(name, RESULTS), png);
   return { picture: decodePng(png), png };
@@ -129,7 +129,7 @@ describe('context sensitivity', () => {
     await expect.poll(() => summary.textContent()).toMatch(/at a \(module 6 of the string before the last step\): left context b expected, found a at 5 — so it did not fire there\.$/);
     await cursorOn('axiom');
     // A click on the background clears the pick.
-    const box = (await page.locator('[data-testid=viewport] canvas').boundingBox())!;
+    const box = (await page.locator(VIEW_CANVAS).boundingBox())!;
     await page.mouse.click(box.x + 5, box.y + 5);
     await expect.poll(() => page.locator('.cm-picked-production').count()).toBe(0);
     expect(problems).toEqual([]);

@@ -12,6 +12,7 @@ import {
   savePage,
   shownStats,
   twoFrames,
+  VIEW_CANVAS,
 } from './studio-page';
 import { page, problems, useStudio } from './session';
 
@@ -202,7 +203,7 @@ describe('the view', () => {
   });
 
   it('keeps the camera where the user put it across edits', async () => {
-    const canvas = page.locator('[data-testid=viewport] canvas');
+    const canvas = page.locator(VIEW_CANVAS);
     const box = (await canvas.boundingBox())!;
     await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
     await page.mouse.down();

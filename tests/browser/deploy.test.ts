@@ -1,3 +1,4 @@
+import { VIEW_CANVAS } from './studio-page';
 // Deployment: the built site (dist/) served by a plain static file server from a sub-path, as any
 // static host would, must load everything (gallery, wasm) with relative URLs, obey its own
 // Content-Security-Policy (no inline script, no eval beyond wasm) and draw the plant.
@@ -40,7 +41,7 @@ describe('deployment from a sub-path of a static host', () => {
     expect(csp).toContain("script-src 'self' 'wasm-unsafe-eval'");
     expect(csp).not.toContain("'unsafe-eval'");
     await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
-    const shot = decodePng(await page.locator('[data-testid=viewport] canvas').screenshot());
+    const shot = decodePng(await page.locator(VIEW_CANVAS).screenshot());
     expect(foregroundShare(shot), 'the plant is drawn').toBeGreaterThan(0.003);
     // The gallery file came from the sub-path.
     expect(await page.evaluate(() => performance.getEntriesByType('resource').map((e) => e.name).filter((n) => n.endsWith('.lsys'))))

@@ -8,7 +8,7 @@ import { chromium, type Browser, type Download, type Page } from 'playwright-cor
 import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
 import { exportWithCli, galleryDir, removeScratch, scratchDir } from '../export/tools';
 import { decodePng, foregroundShare } from './pictures';
-import { openTubesMenu } from './studio-page';
+import { openTubesMenu, VIEW_CANVAS } from './studio-page';
 
 const RESULTS = new URL('../../test-results/', import.meta.url);
 /** A grammar with several colour indices and polygon leaves, at fewer iterations than its own. */
@@ -152,7 +152,7 @@ describe('the Download menu', () => {
     expect(foregroundShare(picture), 'share of the picture covered by the plant').toBeGreaterThan(0.01);
     await expect.poll(() => page.getByTestId('export-status').textContent()).toMatch(/^Saved abop-1\.25\.png · 640 × 360 at 150 DPI · /);
     // The view on the page is back to its own size.
-    const canvas = await page.locator('[data-testid=viewport] canvas').boundingBox();
+    const canvas = await page.locator(VIEW_CANVAS).boundingBox();
     const viewport = await page.getByTestId('viewport').boundingBox();
     expect(Math.round(canvas!.width)).toBe(Math.round(viewport!.width));
     expect(problems).toEqual([]);

@@ -6,9 +6,9 @@ import { join } from 'node:path';
 import type { Browser, Page } from 'playwright-core';
 import { chromium } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { backgroundColour, changedShare, decodePng, foregroundShare, strokeWidth } from './pictures';
+import { backgroundColour, changedShare, decodePng, foregroundShare, strokeWidth, type Picture } from './pictures';
 import { exportWithCli, removeScratch, scratchDir } from '../export/tools';
-import { RESULTS, canvasPicture, example, generation, nextBuild, openStudio, type StudioPage } from './studio-page';
+import { HIGHLIGHT_PIXELS, RESULTS, canvasPicture, example, findPixel, generation, nextBuild, openStudio, type StudioPage, VIEW_CANVAS } from './studio-page';
 
 let browser: Browser;
 let studio: StudioPage;
@@ -77,7 +77,7 @@ describe('the Lines mode', () => {
       await page.getByTestId('line-width').press('Enter');
       await page.getByTestId('lines-menu').locator('summary').click();
       const picture = await canvasPicture(page, `figures-width-${width}.png`);
-      const scale = picture.width / (await page.locator('[data-testid=viewport] canvas').boundingBox())!.width;
+      const scale = picture.width / (await page.locator(VIEW_CANVAS).boundingBox())!.width;
       const measured = strokeWidth(picture) / scale;
       expect(Math.abs(measured - width), `width ${width}: measured ${measured}`).toBeLessThanOrEqual(1);
     }
@@ -99,7 +99,7 @@ describe('the Lines mode', () => {
     /** The lines' width on screen, in CSS pixels. */
     const measuredWidth = async (name: string) => {
       const picture = await canvasPicture(page, name);
-      const scale = picture.width / (await page.locator('[data-testid=viewport] canvas').boundingBox())!.width;
+      const scale = picture.width / (await page.locator(VIEW_CANVAS).boundingBox())!.width;
       return strokeWidth(picture) / scale;
     };
     await page.getByTestId('lines-menu').locator('summary').click();
@@ -115,6 +115,87 @@ describe('the Lines mode', () => {
     expect(Math.abs(large - 6), `measured ${large} in the Large mode`).toBeLessThanOrEqual(1);
     await page.getByTestId('large').click();
     await expect.poll(() => page.evaluate(() => document.body.classList.contains('large'))).toBe(false);
+    await page.getByTestId('grid').click();
+    expect(studio.problems).toEqual([]);
+  });
+});
+
+/** Sets the Lines mode's width (CSS pixels) in its menu. */
+async function setLineWidth(width: number): Promise<void> {
+  await page.getByTestId('lines-menu').locator('summary').click();
+  await page.getByTestId('line-width').fill(String(width));
+  await page.getByTestId('line-width').press('Enter');
+  await page.getByTestId('lines-menu').locator('summary').click();
+}
+
+/** Pixels with anything drawn on the 2D canvas over the view (web/src/view/sketch-canvas.ts); null without one. */
+function pixelsDrawnIn2D(): Promise<number | null> {
+  return page.evaluate(() => {
+    const canvas = document.querySelector<HTMLCanvasElement>('[data-testid=viewport] canvas.sketch-canvas');
+    const data = canvas?.getContext('2d', { willReadFrequently: true })?.getImageData(0, 0, canvas.width, canvas.height).data;
+    if (!data) return null;
+    let drawn = 0;
+    for (let i = 3; i < data.length; i += 4) if (data[i] > 0) drawn++;
+    return drawn;
+  });
+}
+
+describe('the Lines mode without a GPU', () => {
+  it('draws a big plant in 2D: in the width chosen, dimmed and highlighted as WebGL draws them, and tubes take it away', async () => {
+    // These browsers draw WebGL with SwiftShader, where each frame of WebGL lines costs about 3 µs
+    // a segment; from 50,000 segments the view draws them on a 2D canvas over it. Five straight
+    // lines of 16,384 segments each (81,920), the width test's plant, the last one of H.
+    await page.getByTestId('grid').click(); // a plain background
+    await paste('#angle 35\n#iterations 14\n#draw F H\naxiom: F[+F][-F]F[++H]\nF -> FF\nH -> HH\n');
+    expect(await renderMode()).toBe('lines');
+    expect(await pixelsDrawnIn2D(), 'the lines are on the 2D canvas').toBeGreaterThan(1000);
+    for (const width of [2, 6]) {
+      await setLineWidth(width);
+      const picture = await canvasPicture(page, `figures-2d-width-${width}.png`);
+      const scale = picture.width / (await page.locator(VIEW_CANVAS).boundingBox())!.width;
+      const measured = strokeWidth(picture) / scale;
+      expect(Math.abs(measured - width), `width ${width}: measured ${measured}`).toBeLessThanOrEqual(1);
+    }
+    // The cursor on `F -> FF`: the F segments in the highlight colour, the H line dimmed.
+    const magenta = (picture: Picture) => {
+      let count = 0;
+      for (let i = 0; i < picture.data.length; i += 4) if (HIGHLIGHT_PIXELS.produced(picture.data[i], picture.data[i + 1], picture.data[i + 2])) count++;
+      return count;
+    };
+    /** The brightness (r + g + b) of the darkest pixel that is neither background nor highlight. */
+    const darkestInk = (picture: Picture) => {
+      let darkest = Infinity;
+      for (let i = 0; i < picture.data.length; i += 4) {
+        const [r, g, b] = [picture.data[i], picture.data[i + 1], picture.data[i + 2]];
+        if (!HIGHLIGHT_PIXELS.produced(r, g, b)) darkest = Math.min(darkest, r + g + b);
+      }
+      return darkest;
+    };
+    const plain = await canvasPicture(page, 'figures-2d-plain.png');
+    expect(magenta(plain), 'no highlight yet').toBe(0);
+    await page.getByTestId('editor').locator('.cm-line', { hasText: /^F -> FF/ }).click();
+    await expect.poll(async () => magenta(await canvasPicture(page, 'figures-2d-highlight.png')), { message: 'the highlight, drawn in 2D' }).toBeGreaterThan(500);
+    const lit = await canvasPicture(page, 'figures-2d-highlight.png');
+    expect(darkestInk(lit), 'the H line dimmed').toBeLessThan(0.8 * darkestInk(plain));
+    // A click on a line drawn in 2D picks its segment (the view's canvas under it takes the click).
+    const spot = (await findPixel(page, HIGHLIGHT_PIXELS.produced))!;
+    await page.getByTestId('editor').locator('.cm-line', { hasText: /^axiom/ }).click();
+    await expect.poll(async () => magenta(await canvasPicture(page, 'figures-2d-plain.png'))).toBe(0);
+    await page.mouse.click(spot.x, spot.y);
+    await expect.poll(() => page.getByTestId('explain-summary').textContent()).toMatch(/^This F \(module \d+ of the derived string\) was written by rule 1/);
+    // Tubes: WebGL draws them once built (their sketch meanwhile in 2D), and the 2D canvas leaves the page.
+    const toggle = page.getByRole('toolbar', { name: 'View' }).getByRole('button', { name: 'Lines' });
+    let before = await generation(page);
+    await toggle.click();
+    expect(await nextBuild(page, before)).toBe('ok');
+    expect(await renderMode()).toBe('tubes');
+    expect(await pixelsDrawnIn2D()).toBeNull();
+    before = await generation(page);
+    await toggle.click();
+    expect(await nextBuild(page, before)).toBe('ok');
+    expect(await renderMode()).toBe('lines');
+    expect(await pixelsDrawnIn2D()).toBeGreaterThan(1000);
+    await setLineWidth(2);
     await page.getByTestId('grid').click();
     expect(studio.problems).toEqual([]);
   });

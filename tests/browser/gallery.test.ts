@@ -6,7 +6,7 @@ import { chromium, type Browser, type Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
 import { changedShare, colourShare, decodePng, foregroundExtent, foregroundShare, type Picture } from './pictures';
 
-import { PLANT_ONLY, RESULTS } from './studio-page';
+import { PLANT_ONLY, RESULTS, VIEW_CANVAS } from './studio-page';
 
 let browser: Browser;
 let page: Page;
@@ -33,7 +33,7 @@ async function show(source: string, picture: string): Promise<{ state: string | 
   await page.getByTestId('frame').click();
   await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
   const png = await page
-    .locator('[data-testid=viewport] canvas')
+    .locator(VIEW_CANVAS)
     .screenshot({ style: PLANT_ONLY });
   writeFileSync(new URL(picture, RESULTS), png);
   return { state, shot: decodePng(png) };

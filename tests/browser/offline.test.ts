@@ -9,7 +9,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { decodePng } from './pictures';
-import { generation, nextBuild, pasteText, RESULTS } from './studio-page';
+import { generation, nextBuild, pasteText, RESULTS, VIEW_CANVAS } from './studio-page';
 import { serveStatic, type StaticSite } from './static-server';
 
 const SUB_PATH = '/school/meristem/';
@@ -59,7 +59,7 @@ describe('offline', () => {
     // A grammar of the user's: built by the worker's wasm, from the cache.
     expect(await pasteText(page, '// Offline\n#angle 22.5\n#iterations 4\naxiom: F\nF -> FF-[-F+F+F]+[+F-F-F]')).toBe('ok');
     expect(await page.evaluate(() => window.__meristem!.lastStats)).toMatchObject({ iterations: 4, segments: 8 ** 4 });
-    const png = await page.locator('[data-testid=viewport] canvas').screenshot();
+    const png = await page.locator(VIEW_CANVAS).screenshot();
     writeFileSync(new URL('offline-plant.png', RESULTS), png);
     expect(decodePng(png).width).toBeGreaterThan(0);
 

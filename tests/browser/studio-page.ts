@@ -95,12 +95,19 @@ export function twoFrames(page: Page): Promise<unknown> {
  * The screenshot style that leaves the plant alone: the overlays on the view hidden, and no
  * keyboard focus ring on the canvas (a key pressed after a click shows it).
  */
+/**
+ * The view's WebGL canvas. Where a software rasterizer draws the view (here, SwiftShader) a 2D
+ * canvas may lie over it (web/src/view/sketch-canvas.ts: a sketch, or a big plant's lines in the
+ * Lines mode); a screenshot of the WebGL canvas's box shows both.
+ */
+export const VIEW_CANVAS = '[data-testid=viewport] canvas:not(.sketch-canvas)';
+
 export const PLANT_ONLY = '[data-testid=viewport] > :not(canvas) { visibility: hidden !important; } [data-testid=viewport] canvas { outline: none !important; }';
 
 /** Screenshots the 3D canvas (saved as `name` in test-results/) and decodes it. */
 export async function canvasPicture(page: Page, name: string): Promise<Picture> {
   await twoFrames(page);
-  const png = await page.locator('[data-testid=viewport] canvas').screenshot({ style: PLANT_ONLY });
+  const png = await page.locator(VIEW_CANVAS).screenshot({ style: PLANT_ONLY });
   writeFileSync(new URL(name, RESULTS), png);
   return decodePng(png);
 }
@@ -118,7 +125,7 @@ export const HIGHLIGHT_PIXELS = {
  */
 export async function findPixel(page: Page, test: (r: number, g: number, b: number) => boolean): Promise<{ x: number; y: number } | null> {
   const picture = await canvasPicture(page, 'find-pixel.png');
-  const box = (await page.locator('[data-testid=viewport] canvas').boundingBox())!;
+  const box = (await page.locator(VIEW_CANVAS).boundingBox())!;
   const scale = picture.width / box.width;
   const passes = (x: number, y: number) => {
     const i = 4 * (y * picture.width + x);

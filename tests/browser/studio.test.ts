@@ -4,7 +4,7 @@ import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { chromium, type Browser, type Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
 import { changedShare, decodePng, distinctColours, foregroundExtent, foregroundOverlap, foregroundShare, type Picture } from './pictures';
-import { openTubesMenu, PLANT_ONLY } from './studio-page';
+import { openTubesMenu, PLANT_ONLY, VIEW_CANVAS } from './studio-page';
 import { isSoftwareRendererName } from '../../web/src/view/rasterizer';
 
 const RESULTS = new URL('../../test-results/', import.meta.url);
@@ -23,7 +23,7 @@ function save(name: string, png: Buffer): void {
 async function canvasPicture(name: string): Promise<Picture> {
   await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
   const png = await page
-    .locator('[data-testid=viewport] canvas')
+    .locator(VIEW_CANVAS)
     .screenshot({ style: PLANT_ONLY });
   save(name, png);
   return decodePng(png);

@@ -35,8 +35,8 @@ import { plantGeometry, pointsBox, setBox } from './plant-geometry';
 import { GpuGeometry } from './gpu-geometry';
 import { loadTexture, texturedMaterials, type TexturedMaterials } from './textures';
 import { addHeadlight, addSkyLight, atLeastAPixelWide, drawnSupersampled, litPlantMaterial, unlitPlantMaterial } from './scene-setup';
-import { MATERIAL_BARK, highlightOverlay, highlightSegments, moduleOfTriangle, type Rgb } from './highlight';
-import { DEFAULT_LINE_WIDTH, SegmentLines } from './segment-lines';
+import { MATERIAL_BARK, highlightOverlay, highlightSegments, moduleOfTriangle, type LineOverlay, type Rgb } from './highlight';
+import { DEFAULT_LINE_WIDTH, HIGHLIGHT_EXTRA, SegmentLines } from './segment-lines';
 import { BezierHandles } from './handles';
 import { SketchCanvas } from './sketch-canvas';
 
@@ -79,6 +79,14 @@ export interface ViewPose {
 const UPLOAD_SLICE_BYTES = 2 << 20;
 const UPLOAD_TASK_MS = 8;
 const UPLOAD_AT_ONCE_BYTES = 8 << 20;
+
+/**
+ * Segments from which, where a software rasterizer draws the view, the Lines mode draws a plant in
+ * 2D over it (./sketch-canvas.ts): SwiftShader takes about 3 µs a segment every frame for the
+ * WebGL lines (ABOP 1.24d at n = 10, 116,050 segments: about 0.35 s a frame, each time the camera
+ * moves), the 2D canvas a tenth of that or less. Smaller plants are WebGL's, as on a GPU.
+ */
+const LINES_IN_2D_FROM = 50_000;
 
 /** A plant for the screen: its mesh and, unless drawn as lines, its geometry (plain and on the GPU). */
 interface IncomingPlant {
@@ -186,8 +194,15 @@ export class PlantView {
   private incoming: IncomingPlant | undefined;
   /** The fallback for models too large to mesh, and sketches: one coloured line per segment. */
   private readonly lines = new LineSegments(new BufferGeometry(), new LineBasicMaterial({ vertexColors: true }));
-  /** Where a software rasterizer draws the view: the sketch, drawn in 2D over it ({@link showSketch}). */
+  /**
+   * Where a software rasterizer draws the view: what is drawn in 2D over it, a sketch
+   * ({@link showSketch}) or a big plant's lines in the Lines mode ({@link placeLines}).
+   */
   private readonly sketchCanvas: SketchCanvas | undefined;
+  /** The Lines mode's segments are drawn on {@link sketchCanvas}, not by WebGL ({@link placeLines}). */
+  private linesIn2D = false;
+  /** The Lines mode's highlighted segments (drawn over the others) and the others' brightness. */
+  private segmentHighlight: { over: LineOverlay | null; dim: number } = { over: null, dim: 1 };
   private readonly drawingBufferSize = new Vector2();
   private grid: GridHelper | undefined;
   /**
@@ -432,16 +447,47 @@ export class PlantView {
     this.lines.visible = false;
     // Drawn now, with the camera framed on it, not in the frame: the WebGL frame comes on
     // screen no later for it (the frame redraws it only if the camera or size changed meanwhile).
-    this.drawSketch();
+    this.draw2D();
   }
 
-  /** The sketch drawn in 2D ({@link showSketch}) as the camera sees it now. */
-  private drawSketch(): void {
+  /** What is drawn in 2D (a sketch, or the Lines mode's segments) as the camera sees it now. */
+  private draw2D(): void {
     if (!this.sketchCanvas?.active) return;
     const camera = this.active.camera;
     camera.updateMatrixWorld();
     const { x, y } = this.renderer.getDrawingBufferSize(this.drawingBufferSize);
     this.sketchCanvas.draw(camera, x, y);
+    if (this.linesIn2D) this.segmentLines.setViewport(this.renderer.domElement.clientWidth, this.renderer.domElement.clientHeight);
+  }
+
+  /**
+   * Draws the Lines mode's segments of the plant on screen in 2D ({@link sketchCanvas}), in their
+   * width, brightness and highlight, where a software rasterizer draws the view and the plant has
+   * {@link LINES_IN_2D_FROM} segments or more; else leaves them to WebGL. Called when the plant,
+   * the mode, the width or the highlight changes.
+   */
+  private placeLines(): void {
+    const canvas = this.sketchCanvas;
+    const mesh = this.mesh;
+    const in2D = canvas !== undefined && mesh !== undefined && this.usesLines && mesh.segmentEnds.length >= 6 * LINES_IN_2D_FROM;
+    this.segmentLines.drawn = !in2D;
+    if (!in2D) {
+      if (this.linesIn2D) canvas?.clear();
+      this.linesIn2D = false;
+      return;
+    }
+    // The canvas's pixels are the drawing buffer's; the widths are in CSS pixels.
+    const ratio = this.renderer.getPixelRatio();
+    const width = this.segmentLines.lineWidth;
+    const { over, dim } = this.segmentHighlight;
+    // Round ends and corners as WebGL draws them, where they show: for lines of a few pixels
+    // Skia's round joins cost more than the difference (1,048,576 segments 2 pixels wide: 733
+    // against 511 ms a frame without a GPU).
+    const style = { width: width * ratio, round: width * ratio > 4, dim };
+    if (!this.linesIn2D) canvas.show(mesh.segmentEnds, mesh.segmentColors, style);
+    canvas.restyle(style, over && { ends: over.ends, colors: over.colors, width: (width + HIGHLIGHT_EXTRA) * ratio });
+    this.linesIn2D = true;
+    this.requestRender();
   }
 
   /** Uploads what is left of the incoming plant at once, and puts it on screen. */
@@ -465,6 +511,7 @@ export class PlantView {
   private swapIn({ mesh, flat, source, onGpu }: IncomingPlant): void {
     this.plantShown = true;
     this.sketchCanvas?.clear();
+    this.linesIn2D = false; // drawn again by colourModules below, if they are to be
     this.lines.visible = true;
     const asLines = onGpu === undefined;
     this.mesh = asLines ? undefined : mesh;
@@ -548,7 +595,9 @@ export class PlantView {
     old.dispose();
     let dim = 1;
     const lines = this.usesLines;
-    this.segmentLines.highlight(mesh && colourOf && lines ? highlightSegments(mesh, colourOf) : null, mesh && colourOf ? 0.55 : 1);
+    this.segmentHighlight = { over: mesh && colourOf && lines ? highlightSegments(mesh, colourOf) : null, dim: mesh && colourOf ? 0.55 : 1 };
+    this.segmentLines.highlight(this.segmentHighlight.over, this.segmentHighlight.dim);
+    this.placeLines();
     if (mesh && colourOf) {
       // The normals on the GPU: the mesh's floats, or the worker's packed ones (its floats are then empty).
       const normals = this.pickable.geometry.getAttribute('normal')?.array as Float32Array | Int16Array | undefined;
@@ -847,7 +896,9 @@ export class PlantView {
     const background = this.scene.background;
     const lineWidth = this.segmentLines.lineWidth;
     let blob: Promise<Blob | null>;
-    this.lines.visible = true; // a sketch drawn in 2D (showSketch) is drawn into the picture
+    // What is drawn in 2D (a sketch, the Lines mode's segments of a big plant) is drawn into the picture.
+    this.lines.visible = true;
+    this.segmentLines.drawn = true;
     try {
       if (look.background !== 'view') {
         this.scene.background = look.background === 'white' ? new Color('#ffffff') : null;
@@ -866,6 +917,7 @@ export class PlantView {
       blob = new Promise((resolve) => picture.toBlob(resolve, 'image/png'));
     } finally {
       this.lines.visible = !this.sketchCanvas?.active;
+      this.segmentLines.drawn = !this.linesIn2D;
       this.scene.background = background;
       if (this.grid) this.grid.visible = this.gridVisible;
       this.segmentLines.lineWidth = lineWidth;
@@ -936,6 +988,7 @@ export class PlantView {
   setLineWidth(pixels: number): void {
     this.lineWidthChosen = pixels;
     this.segmentLines.lineWidth = pixels * this.lineScale;
+    this.placeLines();
     this.requestRender();
   }
 
@@ -1107,7 +1160,7 @@ export class PlantView {
     this.renderQueued = false;
     this.renderer.render(this.scene, this.active.camera);
     if (gl instanceof WebGL2RenderingContext) this.drawn = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
-    this.drawSketch();
+    this.draw2D();
     for (const listener of this.renderListeners) listener();
   }
 

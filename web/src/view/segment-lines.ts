@@ -23,7 +23,7 @@ export function lineWidthOf(text: string): number | null {
 }
 
 /** How much wider than the plant's lines the highlighted ones are drawn, in pixels. */
-const HIGHLIGHT_EXTRA = 1.5;
+export const HIGHLIGHT_EXTRA = 1.5;
 
 function lineMaterial(width: number): LineMaterial {
   return new LineMaterial({ vertexColors: true, linewidth: width, worldUnits: false });
@@ -37,6 +37,8 @@ function lineMaterial(width: number): LineMaterial {
  */
 export class SegmentLines {
   readonly group = new Group();
+  /** What WebGL draws of them (see {@link drawn}). */
+  private readonly drawables = new Group();
   private readonly plant: TexelLines;
   private readonly overlay: TexelLines;
   /** The plant's segments when {@link plant} cannot hold them: one pixel wide. */
@@ -59,8 +61,22 @@ export class SegmentLines {
     this.overlay.mesh.renderOrder = 1;
     // The viewport's size (for picking) is taken when either is drawn.
     this.thin.onBeforeRender = this.plant.mesh.onBeforeRender;
-    this.group.add(this.plant.mesh, this.thin, this.overlay.mesh);
+    this.drawables.add(this.plant.mesh, this.thin, this.overlay.mesh);
+    this.group.add(this.drawables);
     this.show(null);
+  }
+
+  /**
+   * Whether WebGL draws the lines (false: the view draws them otherwise, ./sketch-canvas.ts, with
+   * {@link setViewport} told the viewport's size; they are still picked).
+   */
+  set drawn(on: boolean) {
+    this.drawables.visible = on;
+  }
+
+  /** The viewport's size in CSS pixels, for picking while the lines are not {@link drawn} (a frame that draws them sets it). */
+  setViewport(width: number, height: number): void {
+    this.plant.mesh.material.resolution.set(width, height);
   }
 
   /** Shows `mesh`'s segments (null: none), without highlight; while the lines are hidden, once they are shown. */

@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { Matrix4, OrthographicCamera, PerspectiveCamera, Vector3, type Camera } from 'three';
-import { projectSegments, tracePolylines, type PathSink } from './sketch-canvas';
+import { Color, LinearSRGBColorSpace } from 'three';
+import { HAIRLINE, projectSegments, strokeSegments, tracePolylines, type PathSink, type StrokeSink } from './sketch-canvas';
 
 const [WIDTH, HEIGHT] = [200, 100];
 
@@ -118,5 +119,47 @@ describe('tracePolylines', () => {
     const screen = [0, 0, 10, 0, 50, 50, 60, 50, 60, 50, 70, 60];
     expect(traced(screen)).toEqual(['M 0 0', 'L 10 0', 'M 50 50', 'L 60 50', 'L 70 60']);
     expect(traced(screen, [1, 0, 1])).toEqual(['M 0 0', 'L 10 0', 'M 60 50', 'L 70 60']);
+  });
+});
+
+/** The strokes a 2D context receives from {@link strokeSegments}: each path's style and points. */
+function stroked(screen: number[], colors: number[], style = HAIRLINE): string[] {
+  const strokes: string[] = [];
+  let path: string[] = [];
+  const sink: StrokeSink = {
+    lineWidth: 0,
+    lineCap: 'butt',
+    lineJoin: 'miter',
+    strokeStyle: '',
+    beginPath: () => (path = []),
+    moveTo: (x, y) => path.push(`M ${x} ${y}`),
+    lineTo: (x, y) => path.push(`L ${x} ${y}`),
+    stroke() {
+      strokes.push(`${String(this.strokeStyle)} ${this.lineWidth} ${this.lineCap} ${this.lineJoin}: ${path.join(' ')}`);
+    },
+  };
+  strokeSegments(sink, new Float32Array(screen), new Uint8Array(screen.length / 4).fill(1), new Float32Array(colors), style);
+  return strokes;
+}
+
+/** The CSS colour of linear RGB (r, g, b). */
+function css(r: number, g: number, b: number): string {
+  return new Color().setRGB(r, g, b, LinearSRGBColorSpace).getStyle();
+}
+
+describe('strokeSegments', () => {
+  const screen = [0, 0, 10, 0, 10, 0, 10, 10, 10, 10, 20, 10];
+  const red = [0.8, 0.1, 0.1, 0.8, 0.1, 0.1];
+  const green = [0.1, 0.6, 0.2, 0.1, 0.6, 0.2];
+
+  it('strokes each run of one colour as one path, in sRGB, a pixel wide with plain ends for a sketch', () => {
+    expect(stroked(screen, [...red, ...red, ...green])).toEqual([
+      `${css(0.8, 0.1, 0.1)} 1 butt miter: M 0 0 L 10 0 L 10 10`,
+      `${css(0.1, 0.6, 0.2)} 1 butt miter: M 10 10 L 20 10`,
+    ]);
+  });
+
+  it('strokes the Lines mode in its width with round ends and corners, the colours dimmed', () => {
+    expect(stroked(screen, [...red, ...red, ...red], { width: 3, round: true, dim: 0.5 })).toEqual([`${css(0.4, 0.05, 0.05)} 3 round round: M 0 0 L 10 0 L 10 10 L 20 10`]);
   });
 });

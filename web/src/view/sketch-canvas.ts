@@ -1,11 +1,14 @@
-// A big plant's sketch (its segments as one-pixel lines, on screen while the build worker meshes
-// its tubes) drawn with the 2D canvas, over the WebGL view, where a software rasterizer draws that
-// view (./rasterizer.ts). SwiftShader spent 50 to 80 ms rasterizing the 116,050 lines of ABOP
-// 1.24d at n = 10 as a WebGL frame, and the page's thread waited for it (Chromium reads each WebGL
-// frame back without a GPU) or the tubes' upload did (with GPU compositing): the tubes came on
-// screen 30 to 70 ms later than with no sketch at all (`npm run bench:studio`, 2026-11-27). The
-// CPU draws the same hairlines into a 2D canvas in 5 to 15 ms, the projection included. The WebGL
-// view meanwhile draws its frame without them; the next plant shown replaces the sketch.
+// A plant's segments drawn with the 2D canvas, over the WebGL view, where a software rasterizer
+// draws that view (./rasterizer.ts): a big plant's sketch (one-pixel lines, on screen while the
+// build worker meshes its tubes), and in the Lines mode a big plant's lines themselves.
+// SwiftShader spent 50 to 80 ms rasterizing the 116,050 lines of ABOP 1.24d at n = 10 as a WebGL
+// frame, and the page's thread waited for it (Chromium reads each WebGL frame back without a GPU)
+// or the tubes' upload did (with GPU compositing): the tubes came on screen 30 to 70 ms later than
+// with no sketch at all (`npm run bench:studio`, 2026-11-27). The CPU draws the same hairlines
+// into a 2D canvas in 5 to 15 ms, the projection included. The Lines mode's wide lines with round
+// ends cost SwiftShader about 3 µs a segment every frame (a 1,048,576-segment dragon curve: 3 s a
+// frame); the 2D canvas draws them in a tenth of that or less. The WebGL view meanwhile draws its
+// frame without them.
 import type { Camera } from 'three';
 import { Color, LinearSRGBColorSpace, Matrix4 } from 'three';
 
@@ -87,18 +90,89 @@ export function projectSegments(ends: Float32Array, viewProjection: ArrayLike<nu
   return count;
 }
 
-/** The 2D canvas over the view that shows a sketch: in the page only while there is one. */
+/** How {@link SketchCanvas} strokes segments: widths in pixels of the canvas. */
+export interface LineStyle {
+  /** The lines' width. */
+  width: number;
+  /** Round ends and corners (the Lines mode's), or the canvas's plain ones (a sketch's hairlines). */
+  round: boolean;
+  /** The brightness of the segments' colours (1: as they are; less while some are highlighted). */
+  dim: number;
+}
+
+/** A sketch's lines: a pixel wide, plain ends. */
+export const HAIRLINE: LineStyle = { width: 1, round: false, dim: 1 };
+
+/** Segments drawn over the others, `width` pixels of the canvas wide (highlighted ones). */
+export interface OverSegments {
+  ends: Float32Array;
+  colors: Float32Array;
+  width: number;
+}
+
+/** What {@link strokeSegments} draws on: a 2D canvas context, or a recorder in tests. */
+export interface StrokeSink extends PathSink {
+  lineWidth: number;
+  lineCap: CanvasLineCap;
+  lineJoin: CanvasLineJoin;
+  strokeStyle: string | CanvasGradient | CanvasPattern;
+  beginPath(): void;
+  stroke(): void;
+}
+
+/**
+ * Strokes the segments `shown` of `screen` (as {@link projectSegments} writes them) onto `sink`
+ * in `style`, each in its colour of `colors` (linear RGB, three numbers an end, as the core's line
+ * colours; the first end's is the segment's) times `style.dim`: one path for each run of segments
+ * of one colour (a plant has few colours, in long runs).
+ */
+export function strokeSegments(sink: StrokeSink, screen: Float32Array, shown: Uint8Array, colors: Float32Array, style: LineStyle): void {
+  const segments = shown.length;
+  const color = new Color();
+  sink.lineWidth = style.width;
+  sink.lineCap = style.round ? 'round' : 'butt';
+  sink.lineJoin = style.round ? 'round' : 'miter';
+  for (let start = 0; start < segments; ) {
+    let end = start + 1;
+    while (end < segments && sameColor(colors, start, end)) end++;
+    sink.beginPath();
+    tracePolylines(sink, screen, shown, start, end);
+    const [r, g, b] = [colors[6 * start], colors[6 * start + 1], colors[6 * start + 2]];
+    sink.strokeStyle = color.setRGB(r * style.dim, g * style.dim, b * style.dim, LinearSRGBColorSpace).getStyle();
+    sink.stroke();
+    start = end;
+  }
+}
+
+/** Segments and where they are on the canvas (reused from one drawing to the next). */
+class Projected {
+  screen = new Float32Array(0);
+  shown = new Uint8Array(0);
+
+  /** `ends` as `viewProjection` puts them on a canvas of `width` × `height`. */
+  project(ends: Float32Array, viewProjection: ArrayLike<number>, width: number, height: number): void {
+    const segments = ends.length / 6;
+    if (this.screen.length < 4 * segments) [this.screen, this.shown] = [new Float32Array(4 * segments), new Uint8Array(segments)];
+    projectSegments(ends, viewProjection, width, height, this.screen, this.shown);
+  }
+}
+
+/**
+ * The 2D canvas over the view that shows segments (a sketch, or the Lines mode's lines): in the
+ * page only while it shows some.
+ */
 export class SketchCanvas {
   readonly canvas = document.createElement('canvas');
   private ends: Float32Array | undefined;
   private colors: Float32Array | undefined;
-  private screen = new Float32Array(0);
-  private shown = new Uint8Array(0);
+  private style = HAIRLINE;
+  private over: OverSegments | null = null;
+  private readonly segments = new Projected();
+  private readonly overSegments = new Projected();
   private readonly matrix = new Matrix4();
-  /** What the canvas shows, when `drawn`: the sketch through this matrix. */
+  /** What the canvas shows, when `drawn`: the segments through this matrix. */
   private readonly drawnWith = new Matrix4();
   private drawn = false;
-  private readonly color = new Color();
 
   /** `container`: the view's, where the canvas goes after the view's own (over it). */
   constructor(private readonly container: HTMLElement) {
@@ -106,27 +180,40 @@ export class SketchCanvas {
     this.canvas.setAttribute('aria-hidden', 'true');
   }
 
-  /** Whether a sketch is shown. */
+  /** Whether segments are shown. */
   get active(): boolean {
     return this.ends !== undefined;
   }
 
-  /** Shows the segments `ends` in the linear RGB `colors` (both as the core's `lines`, `lineColors`) from the next {@link draw}. */
-  show(ends: Float32Array, colors: Float32Array): void {
+  /**
+   * Shows the segments `ends` in the linear RGB `colors` (both as the core's `lines`, `lineColors`)
+   * in `style`, from the next {@link draw}, with nothing over them.
+   */
+  show(ends: Float32Array, colors: Float32Array, style: LineStyle = HAIRLINE): void {
     this.ends = ends;
     this.colors = colors;
+    this.style = style;
+    this.over = null;
     this.drawn = false;
   }
 
-  /** Takes the sketch away. */
+  /** Draws the segments shown in `style` from the next {@link draw}, with `over` over them (null: none). */
+  restyle(style: LineStyle, over: OverSegments | null): void {
+    this.style = style;
+    this.over = over;
+    this.drawn = false;
+  }
+
+  /** Takes the segments away. */
   clear(): void {
     this.ends = this.colors = undefined;
+    this.over = null;
     this.drawn = false;
     this.canvas.remove();
   }
 
   /**
-   * Draws the sketch as `camera` (its matrices up to date) sees it on a drawing buffer of
+   * Draws the segments as `camera` (its matrices up to date) sees them on a drawing buffer of
    * `width` × `height` pixels, unless the canvas shows just that already.
    */
   draw(camera: Camera, width: number, height: number): void {
@@ -141,21 +228,13 @@ export class SketchCanvas {
     // software rasterizer (with GPU compositing the tubes then came 1.7 s after the keystroke).
     const context = canvas.getContext('2d', { willReadFrequently: true });
     if (!context) return;
-    const segments = ends.length / 6;
-    if (this.shown.length < segments) [this.screen, this.shown] = [new Float32Array(4 * segments), new Uint8Array(segments)];
-    projectSegments(ends, this.matrix.elements, width, height, this.screen, this.shown);
     context.clearRect(0, 0, width, height);
-    context.lineWidth = 1;
-    const { screen, shown } = this;
-    // One path for each run of segments of one colour (a sketch has few colours, in long runs).
-    for (let start = 0; start < segments; ) {
-      let end = start + 1;
-      while (end < segments && sameColor(colors, start, end)) end++;
-      context.beginPath();
-      tracePolylines(context, screen, shown, start, end);
-      context.strokeStyle = this.color.setRGB(colors[6 * start], colors[6 * start + 1], colors[6 * start + 2], LinearSRGBColorSpace).getStyle();
-      context.stroke();
-      start = end;
+    this.segments.project(ends, this.matrix.elements, width, height);
+    strokeSegments(context, this.segments.screen, this.segments.shown.subarray(0, ends.length / 6), colors, this.style);
+    const over = this.over;
+    if (over && over.ends.length > 0) {
+      this.overSegments.project(over.ends, this.matrix.elements, width, height);
+      strokeSegments(context, this.overSegments.screen, this.overSegments.shown.subarray(0, over.ends.length / 6), over.colors, { width: over.width, round: true, dim: 1 });
     }
     if (!canvas.isConnected) this.container.append(canvas);
   }
