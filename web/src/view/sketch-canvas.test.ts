@@ -154,8 +154,8 @@ describe('strokeSegments', () => {
 
   it('strokes each run of one colour as one path, in sRGB, a pixel wide with plain ends for a sketch', () => {
     expect(stroked(screen, [...red, ...red, ...green])).toEqual([
-      `${css(0.8, 0.1, 0.1)} 1 butt miter: M 0 0 L 10 0 L 10 10`,
-      `${css(0.1, 0.6, 0.2)} 1 butt miter: M 10 10 L 20 10`,
+      `${css(0.8, 0.1, 0.1)} 1 butt bevel: M 0 0 L 10 0 L 10 10`,
+      `${css(0.1, 0.6, 0.2)} 1 butt bevel: M 10 10 L 20 10`,
     ]);
   });
 

@@ -94,7 +94,7 @@ export function projectSegments(ends: Float32Array, viewProjection: ArrayLike<nu
 export interface LineStyle {
   /** The lines' width. */
   width: number;
-  /** Round ends and corners (the Lines mode's), or the canvas's plain ones (a sketch's hairlines). */
+  /** Round ends and corners (the Lines mode's), or plain ends and bevelled corners (a sketch's hairlines, thin lines). */
   round: boolean;
   /** The brightness of the segments' colours (1: as they are; less while some are highlighted). */
   dim: number;
@@ -131,7 +131,7 @@ export function strokeSegments(sink: StrokeSink, screen: Float32Array, shown: Ui
   const color = new Color();
   sink.lineWidth = style.width;
   sink.lineCap = style.round ? 'round' : 'butt';
-  sink.lineJoin = style.round ? 'round' : 'miter';
+  sink.lineJoin = style.round ? 'round' : 'bevel'; // no miter's spike where a line turns back
   for (let start = 0; start < segments; ) {
     let end = start + 1;
     while (end < segments && sameColor(colors, start, end)) end++;
