@@ -201,6 +201,27 @@ describe('the Lines mode without a GPU', () => {
   });
 });
 
+describe('a plant too large to mesh without a GPU', () => {
+  it('is drawn as one-pixel lines in 2D', async () => {
+    // In the Tubes mode ABOP 1.24d at n = 11 (464,090 segments) would take more than the mesh's
+    // 4 million vertices: it comes as lines, which SwiftShader would rasterize at every frame.
+    const toggle = page.getByRole('toolbar', { name: 'View' }).getByRole('button', { name: 'Lines' });
+    let before = await generation(page);
+    await toggle.click();
+    expect(await nextBuild(page, before)).toBe('ok');
+    expect(await renderMode()).toBe('tubes');
+    await paste(example('abop-1.24d.lsys').replace('#iterations 7', '#iterations 11'));
+    await expect.poll(() => page.getByTestId('status').textContent()).toContain('too large to mesh');
+    expect(await pixelsDrawnIn2D(), 'the lines are on the 2D canvas').toBeGreaterThan(1000);
+    expect(foregroundShare(await canvasPicture(page, 'figures-too-large-2d.png')), 'and on screen').toBeGreaterThan(0.01);
+    before = await generation(page);
+    await toggle.click();
+    expect(await nextBuild(page, before)).toBe('ok');
+    expect(await renderMode()).toBe('lines');
+    expect(studio.problems).toEqual([]);
+  }, 60_000);
+});
+
 describe('pictures for print', () => {
   it('downloads ABOP 1.24a at 300 DPI on A5: white, no grid, lines of the width chosen', async () => {
     await paste(example('abop-1.24a.lsys') + '\n');

@@ -431,9 +431,8 @@ export class PlantView {
 
   /**
    * A big plant's sketch (its segments as `lines` in the linear RGB `lineColors`, as the core's
-   * sketch gives them), shown as a plant drawn as lines until the next plant replaces it. Where a
-   * software rasterizer draws the view they are drawn in 2D over it instead (./sketch-canvas.ts):
-   * the WebGL frame, drawn without them, costs that rasterizer next to nothing.
+   * sketch gives them), shown as a plant drawn as lines until the next plant replaces it (in 2D
+   * where a software rasterizer draws the view, see {@link swapIn}).
    */
   showSketch(lines: Float32Array, lineColors: Float32Array, flat: boolean): void {
     const empty = new Float32Array(0);
@@ -442,12 +441,6 @@ export class PlantView {
       { positions: empty, normals: empty, colors: empty, indices: none, ranges: none, uvs: empty, materialRanges: none, lines, lineColors, segmentEnds: empty, segmentColors: empty, segmentModules: none },
       flat,
     );
-    if (!this.sketchCanvas || lines.length === 0) return;
-    this.sketchCanvas.show(lines, lineColors);
-    this.lines.visible = false;
-    // Drawn now, with the camera framed on it, not in the frame: the WebGL frame comes on
-    // screen no later for it (the frame redraws it only if the camera or size changed meanwhile).
-    this.draw2D();
   }
 
   /** What is drawn in 2D (a sketch, or the Lines mode's segments) as the camera sees it now. */
@@ -512,8 +505,13 @@ export class PlantView {
     this.plantShown = true;
     this.sketchCanvas?.clear();
     this.linesIn2D = false; // drawn again by colourModules below, if they are to be
-    this.lines.visible = true;
     const asLines = onGpu === undefined;
+    // One-pixel lines (a sketch, a plant too large to mesh) where a software rasterizer draws the
+    // view: in 2D over it (./sketch-canvas.ts); the WebGL frame, drawn without them, costs that
+    // rasterizer next to nothing.
+    const lines2D = asLines && mesh.lines.length > 0 && this.sketchCanvas !== undefined;
+    if (lines2D) this.sketchCanvas?.show(mesh.lines, mesh.lineColors);
+    this.lines.visible = !lines2D;
     this.mesh = asLines ? undefined : mesh;
     const oldMesh = this.plant.geometry;
     const oldOnGpu = this.plantOnGpu;
@@ -542,6 +540,9 @@ export class PlantView {
     this.useProjection(this.wantedProjection(), hasGeometry);
     if (hasGeometry) this.follow();
     this.requestRender();
+    // What is drawn in 2D, drawn now with the camera framed on it, not in the frame: the WebGL
+    // frame comes on screen no later for it (the frame redraws it only if the camera or size changed).
+    this.draw2D();
   }
 
   /** Frames the new plant on screen, or keeps the camera (and hints at a refit if the user moved it). */

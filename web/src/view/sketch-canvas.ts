@@ -1,6 +1,7 @@
 // A plant's segments drawn with the 2D canvas, over the WebGL view, where a software rasterizer
-// draws that view (./rasterizer.ts): a big plant's sketch (one-pixel lines, on screen while the
-// build worker meshes its tubes), and in the Lines mode a big plant's lines themselves.
+// draws that view (./rasterizer.ts): one-pixel lines (a big plant's sketch, on screen while the
+// build worker meshes its tubes; a plant too large to mesh), and in the Lines mode a big plant's
+// lines themselves.
 // SwiftShader spent 50 to 80 ms rasterizing the 116,050 lines of ABOP 1.24d at n = 10 as a WebGL
 // frame, and the page's thread waited for it (Chromium reads each WebGL frame back without a GPU)
 // or the tubes' upload did (with GPU compositing): the tubes came on screen 30 to 70 ms later than
