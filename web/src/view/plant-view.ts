@@ -83,8 +83,8 @@ const UPLOAD_AT_ONCE_BYTES = 8 << 20;
 /**
  * Segments from which, where a software rasterizer draws the view, the Lines mode draws a plant in
  * 2D over it (./sketch-canvas.ts): SwiftShader takes about 3 µs a segment every frame for the
- * WebGL lines (ABOP 1.24d at n = 10, 116,050 segments: about 0.35 s a frame, each time the camera
- * moves), the 2D canvas a tenth of that or less. Smaller plants are WebGL's, as on a GPU.
+ * WebGL lines (ABOP 1.24d at n = 10, 116,050 segments: about 0.3 s a frame, each time the camera
+ * moves), the 2D canvas a fifth of that or less. Smaller plants are WebGL's, as on a GPU.
  */
 const LINES_IN_2D_FROM = 50_000;
 

@@ -8,7 +8,7 @@
 // with no sketch at all (`npm run bench:studio`, 2026-11-27). The CPU draws the same hairlines
 // into a 2D canvas in 5 to 15 ms, the projection included. The Lines mode's wide lines with round
 // ends cost SwiftShader about 3 µs a segment every frame (a 1,048,576-segment dragon curve: 3 s a
-// frame); the 2D canvas draws them in a tenth of that or less. The WebGL view meanwhile draws its
+// frame); the 2D canvas draws them in a fifth of that or less. The WebGL view meanwhile draws its
 // frame without them.
 import type { Camera } from 'three';
 import { Color, LinearSRGBColorSpace, Matrix4 } from 'three';
