@@ -179,6 +179,8 @@ export class SketchCanvas {
   constructor(private readonly container: HTMLElement) {
     this.canvas.className = 'sketch-canvas';
     this.canvas.setAttribute('aria-hidden', 'true');
+    // The view's canvas below takes the pointer (orbit, picking), in the studio and in an embed.
+    this.canvas.style.pointerEvents = 'none';
   }
 
   /** Whether segments are shown. */
