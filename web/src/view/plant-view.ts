@@ -198,8 +198,8 @@ export class PlantView {
    * Where a software rasterizer draws the view: what is drawn in 2D over it, a sketch
    * ({@link showSketch}) or a big plant's lines in the Lines mode ({@link placeLines}).
    */
-  private readonly sketchCanvas: SketchCanvas | undefined;
-  /** The Lines mode's segments are drawn on {@link sketchCanvas}, not by WebGL ({@link placeLines}). */
+  private readonly canvas2D: SketchCanvas | undefined;
+  /** The Lines mode's segments are drawn on {@link canvas2D}, not by WebGL ({@link placeLines}). */
   private linesIn2D = false;
   /** The Lines mode's highlighted segments (drawn over the others) and the others' brightness. */
   private segmentHighlight: { over: LineOverlay | null; dim: number } = { over: null, dim: 1 };
@@ -294,7 +294,7 @@ export class PlantView {
     canvas.tabIndex = 0;
     canvas.addEventListener('keydown', (event) => this.onKey(event));
     container.append(canvas);
-    if (software) this.sketchCanvas = new SketchCanvas(container);
+    if (software) this.canvas2D = new SketchCanvas(container);
 
     addSkyLight(this.scene);
     this.perspective = this.rig(new PerspectiveCamera(40, 1, 0.01, 1000));
@@ -445,22 +445,22 @@ export class PlantView {
 
   /** What is drawn in 2D (a sketch, or the Lines mode's segments) as the camera sees it now. */
   private draw2D(): void {
-    if (!this.sketchCanvas?.active) return;
+    if (!this.canvas2D?.active) return;
     const camera = this.active.camera;
     camera.updateMatrixWorld();
     const { x, y } = this.renderer.getDrawingBufferSize(this.drawingBufferSize);
-    this.sketchCanvas.draw(camera, x, y);
+    this.canvas2D.draw(camera, x, y);
     if (this.linesIn2D) this.segmentLines.setViewport(this.renderer.domElement.clientWidth, this.renderer.domElement.clientHeight);
   }
 
   /**
-   * Draws the Lines mode's segments of the plant on screen in 2D ({@link sketchCanvas}), in their
+   * Draws the Lines mode's segments of the plant on screen in 2D ({@link canvas2D}), in their
    * width, brightness and highlight, where a software rasterizer draws the view and the plant has
    * {@link LINES_IN_2D_FROM} segments or more; else leaves them to WebGL. Called when the plant,
    * the mode, the width or the highlight changes.
    */
   private placeLines(): void {
-    const canvas = this.sketchCanvas;
+    const canvas = this.canvas2D;
     const mesh = this.mesh;
     const in2D = canvas !== undefined && mesh !== undefined && this.usesLines && mesh.segmentEnds.length >= 6 * LINES_IN_2D_FROM;
     this.segmentLines.drawn = !in2D;
@@ -503,14 +503,14 @@ export class PlantView {
   /** Puts a plant (its geometry on the GPU, or its lines) on screen in place of the old one. */
   private swapIn({ mesh, flat, source, onGpu }: IncomingPlant): void {
     this.plantShown = true;
-    this.sketchCanvas?.clear();
+    this.canvas2D?.clear();
     this.linesIn2D = false; // drawn again by colourModules below, if they are to be
     const asLines = onGpu === undefined;
     // One-pixel lines (a sketch, a plant too large to mesh) where a software rasterizer draws the
     // view: in 2D over it (./sketch-canvas.ts); the WebGL frame, drawn without them, costs that
     // rasterizer next to nothing.
-    const lines2D = asLines && mesh.lines.length > 0 && this.sketchCanvas !== undefined;
-    if (lines2D) this.sketchCanvas?.show(mesh.lines, mesh.lineColors);
+    const lines2D = asLines && mesh.lines.length > 0 && this.canvas2D !== undefined;
+    if (lines2D) this.canvas2D?.show(mesh.lines, mesh.lineColors);
     this.lines.visible = !lines2D;
     this.mesh = asLines ? undefined : mesh;
     const oldMesh = this.plant.geometry;
@@ -917,7 +917,7 @@ export class PlantView {
       const picture = scale === 1 ? canvas : scaledDown(canvas, width, height);
       blob = new Promise((resolve) => picture.toBlob(resolve, 'image/png'));
     } finally {
-      this.lines.visible = !this.sketchCanvas?.active;
+      this.lines.visible = !this.canvas2D?.active;
       this.segmentLines.drawn = !this.linesIn2D;
       this.scene.background = background;
       if (this.grid) this.grid.visible = this.gridVisible;
@@ -1068,7 +1068,7 @@ export class PlantView {
     this.gridMaterial.dispose();
     this.renderer.dispose();
     this.renderer.domElement.remove();
-    this.sketchCanvas?.clear();
+    this.canvas2D?.clear();
   }
 
   /**
