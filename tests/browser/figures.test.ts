@@ -41,6 +41,14 @@ afterAll(async () => {
 
 const scratch = scratchDir('figures');
 
+/** Sets the Lines mode's width (CSS pixels) in its menu. */
+async function setLineWidth(width: number): Promise<void> {
+  await page.getByTestId('lines-menu').locator('summary').click();
+  await page.getByTestId('line-width').fill(String(width));
+  await page.getByTestId('line-width').press('Enter');
+  await page.getByTestId('lines-menu').locator('summary').click();
+}
+
 describe('the Lines mode', () => {
   it('is the default for flat plants, tubes for 3D ones, and the toolbar toggle switches them', async () => {
     const toggle = page.getByRole('toolbar', { name: 'View' }).getByRole('button', { name: 'Lines' });
@@ -72,10 +80,7 @@ describe('the Lines mode', () => {
     await page.getByTestId('grid').click(); // a plain background
     await paste('#angle 35\naxiom: F[+F][-F]F[++F]\n');
     for (const width of [2, 6, 12]) {
-      await page.getByTestId('lines-menu').locator('summary').click();
-      await page.getByTestId('line-width').fill(String(width));
-      await page.getByTestId('line-width').press('Enter');
-      await page.getByTestId('lines-menu').locator('summary').click();
+      await setLineWidth(width);
       const picture = await canvasPicture(page, `figures-width-${width}.png`);
       const scale = picture.width / (await page.locator(VIEW_CANVAS).boundingBox())!.width;
       const measured = strokeWidth(picture) / scale;
@@ -102,10 +107,7 @@ describe('the Lines mode', () => {
       const scale = picture.width / (await page.locator(VIEW_CANVAS).boundingBox())!.width;
       return strokeWidth(picture) / scale;
     };
-    await page.getByTestId('lines-menu').locator('summary').click();
-    await page.getByTestId('line-width').fill('3');
-    await page.getByTestId('line-width').press('Enter');
-    await page.getByTestId('lines-menu').locator('summary').click();
+    await setLineWidth(3);
     const normal = await measuredWidth('figures-width-3.png');
     expect(Math.abs(normal - 3), `measured ${normal}`).toBeLessThanOrEqual(1);
     await page.getByTestId('large').click();
@@ -119,14 +121,6 @@ describe('the Lines mode', () => {
     expect(studio.problems).toEqual([]);
   });
 });
-
-/** Sets the Lines mode's width (CSS pixels) in its menu. */
-async function setLineWidth(width: number): Promise<void> {
-  await page.getByTestId('lines-menu').locator('summary').click();
-  await page.getByTestId('line-width').fill(String(width));
-  await page.getByTestId('line-width').press('Enter');
-  await page.getByTestId('lines-menu').locator('summary').click();
-}
 
 /** Pixels with anything drawn on the 2D canvas over the view (web/src/view/sketch-canvas.ts); null without one. */
 function pixelsDrawnIn2D(): Promise<number | null> {
@@ -162,7 +156,7 @@ describe('the Lines mode without a GPU', () => {
       for (let i = 0; i < picture.data.length; i += 4) if (HIGHLIGHT_PIXELS.produced(picture.data[i], picture.data[i + 1], picture.data[i + 2])) count++;
       return count;
     };
-    /** The brightness (r + g + b) of the darkest pixel that is neither background nor highlight. */
+    /** The brightness (r + g + b) of the darkest pixel outside the highlight (the background is lighter than any line). */
     const darkestInk = (picture: Picture) => {
       let darkest = Infinity;
       for (let i = 0; i < picture.data.length; i += 4) {
