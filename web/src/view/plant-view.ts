@@ -462,9 +462,9 @@ export class PlantView {
   private placeLines(): void {
     const canvas = this.canvas2D;
     const mesh = this.mesh;
-    const in2D = canvas !== undefined && mesh !== undefined && this.usesLines && mesh.segmentEnds.length >= 6 * LINES_IN_2D_FROM;
+    const in2D = this.segmentsIn2D;
     this.segmentLines.drawn = !in2D;
-    if (!in2D) {
+    if (!canvas || !mesh || !in2D) {
       if (this.linesIn2D) canvas?.clear();
       this.linesIn2D = false;
       return;
@@ -481,6 +481,11 @@ export class PlantView {
     canvas.restyle(style, over && { ends: over.ends, colors: over.colors, width: (width + HIGHLIGHT_EXTRA) * ratio });
     this.linesIn2D = true;
     this.requestRender();
+  }
+
+  /** Whether the Lines mode's segments of the plant on screen are to be drawn in 2D ({@link placeLines}). */
+  private get segmentsIn2D(): boolean {
+    return this.canvas2D !== undefined && this.usesLines && (this.mesh?.segmentEnds.length ?? 0) >= 6 * LINES_IN_2D_FROM;
   }
 
   /** Uploads what is left of the incoming plant at once, and puts it on screen. */
@@ -525,9 +530,10 @@ export class PlantView {
     else oldMesh.dispose();
     oldPickable.dispose();
     oldLines.dispose();
-    this.segmentLines.show(asLines ? null : mesh);
-    this.segmentsBox = undefined;
     this.flat = flat;
+    // Whether WebGL draws them, said with them: its geometry of segments drawn in 2D is not made.
+    this.segmentLines.show(asLines ? null : mesh, !this.segmentsIn2D);
+    this.segmentsBox = undefined;
     this.applyMaterial();
     this.colourModules(this.colourOf); // what was asked for while it uploaded, if anything
     // A mesh without tubes (the Lines mode's) may hold no triangle: its segments are drawn.

@@ -48,10 +48,13 @@ export class SegmentLines {
   private modules: Uint32Array = new Uint32Array(0);
   private width = DEFAULT_LINE_WIDTH;
   /**
-   * Segments given to {@link show} while the lines were hidden: their geometry is made when the
-   * lines are first shown (a big plant's takes tens of milliseconds, wasted in the Tubes mode).
+   * Segments given to {@link show} while WebGL did not draw the lines (hidden, or not {@link drawn}):
+   * their geometry is made when it first does (a big plant's takes tens of milliseconds, wasted in
+   * the Tubes mode, or while the view draws the lines in 2D).
    */
   private unmade: Pick<MeshBuffers, 'segmentEnds' | 'segmentColors'> | null = null;
+  /** The highlight given to {@link highlight} while WebGL did not draw the lines, drawn as {@link unmade} is. */
+  private unmadeOverlay: { overlay: LineOverlay | null } | null = null;
 
   constructor(maxTextureSize?: number) {
     this.plant = new TexelLines(lineMaterial(this.width), maxTextureSize);
@@ -72,6 +75,12 @@ export class SegmentLines {
    */
   set drawn(on: boolean) {
     this.drawables.visible = on;
+    this.make();
+  }
+
+  /** Whether WebGL draws the lines now: they are shown and {@link drawn}. */
+  private get drawnByWebGl(): boolean {
+    return this.group.visible && this.drawables.visible;
   }
 
   /** The viewport's size in CSS pixels, for picking while the lines are not {@link drawn} (a frame that draws them sets it). */
@@ -79,21 +88,27 @@ export class SegmentLines {
     this.plant.mesh.material.resolution.set(width, height);
   }
 
-  /** Shows `mesh`'s segments (null: none), without highlight; while the lines are hidden, once they are shown. */
-  show(mesh: Pick<MeshBuffers, 'segmentEnds' | 'segmentColors' | 'segmentModules'> | null): void {
+  /**
+   * Shows `mesh`'s segments (null: none), without highlight, {@link drawn} by WebGL or not; while
+   * the lines are hidden, once they are shown.
+   */
+  show(mesh: Pick<MeshBuffers, 'segmentEnds' | 'segmentColors' | 'segmentModules'> | null, drawn = this.drawables.visible): void {
     const empty = new Float32Array(0);
-    this.unmade = { segmentEnds: mesh?.segmentEnds ?? empty, segmentColors: mesh?.segmentColors ?? empty };
-    if (this.group.visible) this.make();
+    this.drawables.visible = drawn;
+    this.ends = mesh?.segmentEnds ?? empty; // picked, whoever draws them
+    this.unmade = { segmentEnds: this.ends, segmentColors: mesh?.segmentColors ?? empty };
+    if (this.drawnByWebGl) this.make();
     else this.setPlant(empty, empty); // the old plant's lines go now
     this.modules = mesh?.segmentModules ?? new Uint32Array(0);
     this.highlight(null, 1);
   }
 
-  /** Makes the geometry of the segments {@link show} was last given. */
+  /** Makes the geometry of the segments and highlight last given, if WebGL draws them now. */
   private make(): void {
-    if (!this.unmade) return;
-    this.setPlant(this.unmade.segmentEnds, this.unmade.segmentColors);
-    this.unmade = null;
+    if (!this.drawnByWebGl) return;
+    if (this.unmade) this.setPlant(this.unmade.segmentEnds, this.unmade.segmentColors);
+    if (this.unmadeOverlay) this.setOverlay(this.unmadeOverlay.overlay);
+    this.unmade = this.unmadeOverlay = null;
   }
 
   /**
@@ -115,7 +130,6 @@ export class SegmentLines {
       setBox(this.thin.geometry, box);
     }
     this.thin.visible = !fits;
-    this.ends = ends;
   }
 
   /**
@@ -123,10 +137,16 @@ export class SegmentLines {
    * holds, see {@link TexelLines.fits}) and the plant's own at brightness `dim`.
    */
   highlight(overlay: LineOverlay | null, dim: number): void {
-    const ends = overlay && this.overlay.fits(overlay.ends.length / 6) ? overlay.ends : new Float32Array(0);
-    this.overlay.setSegments(ends, overlay?.colors ?? new Float32Array(0), pointsBox(ends));
+    this.unmadeOverlay = { overlay };
+    if (this.drawnByWebGl) this.make();
+    else this.setOverlay(null); // the old highlight goes now
     this.plant.mesh.material.color.setScalar(dim);
     this.thin.material.color.setScalar(dim);
+  }
+
+  private setOverlay(overlay: LineOverlay | null): void {
+    const ends = overlay && this.overlay.fits(overlay.ends.length / 6) ? overlay.ends : new Float32Array(0);
+    this.overlay.setSegments(ends, overlay?.colors ?? new Float32Array(0), pointsBox(ends));
   }
 
   /** The lines' width in pixels (CSS pixels on screen; picture pixels in a snapshot). */
@@ -143,7 +163,7 @@ export class SegmentLines {
   /** Whether the lines are drawn. */
   set visible(on: boolean) {
     this.group.visible = on;
-    if (on) this.make();
+    this.make();
   }
 
   get visible(): boolean {
@@ -158,7 +178,8 @@ export class SegmentLines {
   pick(raycaster: Raycaster): { module: number; distance: number } | null {
     const camera = raycaster.camera as PerspectiveCamera | OrthographicCamera | null;
     if (!this.group.visible || !camera || this.modules.length === 0) return null;
-    const width = this.thin.visible ? 1 : this.width;
+    // One pixel wide where WebGL draws them with `thin`; as wide as chosen otherwise (2D draws that width).
+    const width = this.thin.visible && this.drawables.visible ? 1 : this.width;
     const hit = pickSegment(this.ends, camera, raycaster.ray, width, this.plant.mesh.material.resolution);
     if (!hit || hit.segment >= this.modules.length) return null;
     return { module: this.modules[hit.segment], distance: hit.distance };
