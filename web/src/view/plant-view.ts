@@ -545,7 +545,10 @@ export class PlantView {
     }
     this.useProjection(this.wantedProjection(), hasGeometry);
     if (hasGeometry) this.follow();
-    this.requestRender(); // which draws what is drawn in 2D too: once, as that frame's camera sees it
+    this.requestRender();
+    // What is drawn in 2D, drawn now with the camera framed on it, not in the frame: the WebGL
+    // frame comes on screen no later for it (the frame redraws it only if the camera or size changed).
+    this.draw2D();
   }
 
   /** Frames the new plant on screen, or keeps the camera (and hints at a refit if the user moved it). */
