@@ -200,8 +200,14 @@ export class SketchCanvas {
     this.drawn = false;
   }
 
-  /** Draws the segments shown in `style` from the next {@link draw}, with `over` over them (null: none). */
+  /**
+   * Draws the segments shown in `style` from the next {@link draw}, with `over` over them (null:
+   * none); nothing to draw again when they are as drawn already (the view restyles after each
+   * build, mostly to the same).
+   */
   restyle(style: LineStyle, over: OverSegments | null): void {
+    const same = (a: OverSegments | null, b: OverSegments | null) => a === b || (a !== null && b !== null && a.ends === b.ends && a.colors === b.colors && a.width === b.width);
+    if (style.width === this.style.width && style.round === this.style.round && style.dim === this.style.dim && same(over, this.over)) return;
     this.style = style;
     this.over = over;
     this.drawn = false;
