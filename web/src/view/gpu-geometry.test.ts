@@ -1,6 +1,6 @@
 import { BufferAttribute, BufferGeometry } from 'three';
 import { describe, expect, it } from 'vitest';
-import { GpuGeometry } from './gpu-geometry';
+import { BufferPool, GpuGeometry } from './gpu-geometry';
 
 /** A WebGL 2 context that keeps each buffer's bytes, and which buffer was first bound as an index. */
 function fakeGl() {
@@ -22,7 +22,9 @@ function fakeGl() {
     BYTE: 5120,
     INT: 5124,
     uploads: [] as number[],
-    createBuffer: () => ({}),
+    made: 0,
+    createBuffer: () => (gl.made++, {}),
+    boundTo: (target: number) => bound.get(target),
     deleteBuffer: (buffer: object) => contents.delete(buffer),
     getParameter: () => vertexArray,
     bindVertexArray: (array: object | null) => (vertexArray = array),
@@ -60,7 +62,7 @@ describe('GpuGeometry', () => {
     const { gl, contents, indexBuffers, vertexArray } = fakeGl();
     const source = plant();
     const before = vertexArray();
-    const onGpu = new GpuGeometry(gl as unknown as WebGL2RenderingContext, source);
+    const onGpu = new GpuGeometry(new BufferPool(gl as unknown as WebGL2RenderingContext), source);
     expect(vertexArray(), "three.js's vertex array is bound again").toBe(before);
     expect(onGpu.remaining).toBe(1200 + 300 + 2400);
     let calls = 0;
@@ -85,7 +87,7 @@ describe('GpuGeometry', () => {
   it('patches only what is on the GPU already; the rest goes up with the next slices', () => {
     const { gl, contents } = fakeGl();
     const source = plant();
-    const onGpu = new GpuGeometry(gl as unknown as WebGL2RenderingContext, source);
+    const onGpu = new GpuGeometry(new BufferPool(gl as unknown as WebGL2RenderingContext), source);
     onGpu.upload(400); // the first 100 floats of the positions
     const positions = source.getAttribute('position').array as Float32Array;
     positions.fill(-1, 90, 120); // 10 on the GPU, 20 not yet
@@ -97,11 +99,55 @@ describe('GpuGeometry', () => {
     expect(new Float32Array(contents.get(buffer)!.buffer)).toEqual(positions);
   });
 
-  it('frees its buffers', () => {
-    const { gl, contents } = fakeGl();
-    const onGpu = new GpuGeometry(gl as unknown as WebGL2RenderingContext, plant());
-    expect(contents.size).toBe(3);
-    onGpu.dispose();
+  it('gives its buffers back to the pool, which the next plant of the same size fills again', () => {
+    const { gl, contents, indexBuffers } = fakeGl();
+    const pool = new BufferPool(gl as unknown as WebGL2RenderingContext);
+    const first = new GpuGeometry(pool, plant());
+    while (!first.upload(Infinity));
+    const buffers = new Set(contents.keys());
+    first.dispose();
+    expect(contents.size, 'kept, not deleted').toBe(3);
+    const made = gl.made;
+    const next = plant();
+    (next.getAttribute('position').array as Float32Array).fill(7);
+    const second = new GpuGeometry(pool, next);
+    while (!second.upload(Infinity));
+    expect(gl.made, 'no buffer made').toBe(made);
+    const position = (second.geometry.getAttribute('position') as unknown as { buffer: object }).buffer;
+    expect(buffers.has(position)).toBe(true);
+    expect(new Float32Array(contents.get(position)!.buffer)).toEqual(next.getAttribute('position').array);
+    const index = (second.geometry.index as unknown as { buffer: object }).buffer;
+    expect(indexBuffers.has(index), 'the indices went into the index buffer').toBe(true);
+    pool.clear();
+    expect(contents.size, 'the second plant\'s buffers are its own').toBe(3);
+    second.dispose();
+    pool.clear();
     expect(contents.size).toBe(0);
+  });
+
+  it('takes a kept buffer only for an array of its kind that fills half of it or more', () => {
+    const { gl, indexBuffers } = fakeGl();
+    const pool = new BufferPool(gl as unknown as WebGL2RenderingContext);
+    const index = pool.take(1000, true);
+    const vertices = pool.take(1000, false);
+    pool.give(index, true);
+    pool.give(vertices, false);
+    expect(pool.take(400, false).buffer, 'too small an array: a new buffer').not.toBe(vertices.buffer);
+    expect(pool.take(600, false).buffer).toBe(vertices.buffer);
+    const forIndices = pool.take(600, true);
+    expect(forIndices.buffer).toBe(index.buffer);
+    expect(indexBuffers.has(forIndices.buffer)).toBe(true);
+    expect(pool.take(1001, true).buffer, 'too big: a new one').not.toBe(index.buffer);
+  });
+
+  it('keeps at most 128 MB of buffers, deleting the oldest first', () => {
+    const { gl, contents } = fakeGl();
+    gl.bufferData = (target: number, size: number) => void contents.set(gl.boundTo(target)!, new Uint8Array(0 * size));
+    const pool = new BufferPool(gl as unknown as WebGL2RenderingContext);
+    const mb = 1 << 20;
+    const [a, b, c] = [pool.take(60 * mb, false), pool.take(60 * mb, false), pool.take(20 * mb, false)];
+    for (const buffer of [a, b, c]) pool.give(buffer, false);
+    expect(contents.has(a.buffer), 'the oldest deleted').toBe(false);
+    expect([contents.has(b.buffer), contents.has(c.buffer)]).toEqual([true, true]);
   });
 });

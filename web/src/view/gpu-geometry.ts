@@ -3,16 +3,84 @@
 // inside the first frame that draws it: for ABOP 1.24d at n = 10 that is 57 MB in one task, which
 // held the page's thread 100 to 250 ms on a software GPU (profiled while typing,
 // `tests/browser/responsiveness.test.ts`). Here the arrays go into WebGL buffers of the view's own,
-// allocated at once and filled by `upload(bytes)` calls, and the geometry three.js draws refers to
-// those buffers (`GLBufferAttribute`). When to call `upload` is the view's business.
+// taken from a {@link BufferPool} and filled by `upload(bytes)` calls, and the geometry three.js
+// draws refers to those buffers (`GLBufferAttribute`). When to call `upload` is the view's business.
 import { BufferGeometry, GLBufferAttribute, type BufferAttribute } from 'three';
 
 type TypedArray = BufferAttribute['array'];
 
+/** At most this many bytes of buffers are kept for later plants (the oldest go first). */
+const POOL_BYTES = 128 << 20;
+
+/** A WebGL buffer and the bytes it holds room for. */
+interface PooledBuffer {
+  buffer: WebGLBuffer;
+  bytes: number;
+}
+
+/**
+ * The WebGL buffers of plants no longer drawn, kept for the next plants. Filling a new buffer costs
+ * a software GPU far more than filling one filled before: ABOP 1.24d at n = 10's 50 MB took 40–90
+ * ms of `bufferSubData` into new buffers and 11–18 ms into the ones of the plant before (SwiftShader,
+ * both Chromium setups, 2026-11-27). An edit's plant is as big as the one before, so each of its
+ * arrays finds a buffer. A buffer is used again for an array that fills at least half of it, and
+ * an index buffer only for indices (WebGL 2 §5.1: a buffer's first binding fixes whether it can
+ * hold indices).
+ */
+export class BufferPool {
+  private readonly kept: (PooledBuffer & { index: boolean })[] = [];
+
+  constructor(readonly gl: WebGL2RenderingContext) {}
+
+  /** A buffer with room for `bytes`, for indices when `index`: a kept one (the smallest that will do) or a new one. */
+  take(bytes: number, index: boolean): PooledBuffer {
+    let best = -1;
+    this.kept.forEach((k, i) => {
+      if (k.index === index && k.bytes >= bytes && k.bytes <= 2 * bytes && (best < 0 || k.bytes < this.kept[best].bytes)) best = i;
+    });
+    if (best >= 0) {
+      const [kept] = this.kept.splice(best, 1);
+      return { buffer: kept.buffer, bytes: kept.bytes };
+    }
+    const gl = this.gl;
+    const buffer = gl.createBuffer();
+    if (index) {
+      // Binding an index buffer changes the vertex array object bound: none is bound meanwhile,
+      // and three.js's is bound again after.
+      const vertexArray = gl.getParameter(gl.VERTEX_ARRAY_BINDING) as WebGLVertexArrayObject | null;
+      gl.bindVertexArray(null);
+      gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, buffer);
+      gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, bytes, gl.STATIC_DRAW);
+      gl.bindVertexArray(vertexArray);
+    } else {
+      // The copy target is bound by no three.js state: nothing of its drawing is disturbed.
+      gl.bindBuffer(gl.COPY_WRITE_BUFFER, buffer);
+      gl.bufferData(gl.COPY_WRITE_BUFFER, bytes, gl.STATIC_DRAW);
+    }
+    return { buffer, bytes };
+  }
+
+  /** Keeps `buffer` for a later {@link take}; deletes the oldest kept beyond {@link POOL_BYTES}. */
+  give(buffer: PooledBuffer, index: boolean): void {
+    this.kept.push({ ...buffer, index });
+    let total = this.kept.reduce((sum, k) => sum + k.bytes, 0);
+    while (total > POOL_BYTES) {
+      const oldest = this.kept.shift()!;
+      this.gl.deleteBuffer(oldest.buffer);
+      total -= oldest.bytes;
+    }
+  }
+
+  /** Deletes every buffer kept. */
+  clear(): void {
+    for (const { buffer } of this.kept.splice(0)) this.gl.deleteBuffer(buffer);
+  }
+}
+
 /** One array on its way to its WebGL buffer. */
 interface Part {
   array: TypedArray;
-  buffer: WebGLBuffer;
+  buffer: PooledBuffer;
   /** Elements uploaded so far (from the start). */
   uploaded: number;
 }
@@ -27,10 +95,13 @@ export class GpuGeometry {
   private readonly parts = new Map<string | null, Part>();
   private readonly queue: Part[] = [];
 
+  private readonly gl: WebGL2RenderingContext;
+
   constructor(
-    private readonly gl: WebGL2RenderingContext,
+    private readonly pool: BufferPool,
     source: BufferGeometry,
   ) {
+    this.gl = pool.gl;
     for (const [name, attribute] of Object.entries(source.attributes)) this.add(name, attribute as BufferAttribute);
     if (source.index) this.add(null, source.index);
     for (const { start, count, materialIndex } of source.groups) this.geometry.addGroup(start, count, materialIndex);
@@ -40,25 +111,10 @@ export class GpuGeometry {
 
   /** `name` null: the index. */
   private add(name: string | null, attribute: BufferAttribute): void {
-    const gl = this.gl;
     const array = attribute.array;
-    const buffer = gl.createBuffer();
-    if (name === null) {
-      // A buffer's first binding fixes whether it can hold indices (WebGL 2, §5.1), and binding an
-      // index buffer changes the vertex array object bound: none is bound meanwhile, and three.js's
-      // is bound again after.
-      const vertexArray = gl.getParameter(gl.VERTEX_ARRAY_BINDING) as WebGLVertexArrayObject | null;
-      gl.bindVertexArray(null);
-      gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, buffer);
-      gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, array.byteLength, gl.STATIC_DRAW);
-      gl.bindVertexArray(vertexArray);
-    } else {
-      // The copy target is bound by no three.js state: nothing of its drawing is disturbed.
-      gl.bindBuffer(gl.COPY_WRITE_BUFFER, buffer);
-      gl.bufferData(gl.COPY_WRITE_BUFFER, array.byteLength, gl.STATIC_DRAW);
-    }
+    const buffer = this.pool.take(array.byteLength, name === null);
     const bytes = array.BYTES_PER_ELEMENT as 1 | 2 | 4;
-    const drawn = new GLBufferAttribute(buffer, glType(gl, array), attribute.itemSize, bytes, attribute.count, attribute.normalized);
+    const drawn = new GLBufferAttribute(buffer.buffer, glType(this.gl, array), attribute.itemSize, bytes, attribute.count, attribute.normalized);
     // three.js draws an index held in a GLBufferAttribute (its count, type and buffer are all it reads).
     if (name === null) this.geometry.index = drawn as unknown as BufferAttribute;
     else this.geometry.setAttribute(name, drawn as unknown as BufferAttribute);
@@ -83,7 +139,7 @@ export class GpuGeometry {
       const { array } = part;
       const count = Math.min(array.length - part.uploaded, Math.max(1, Math.floor(left / array.BYTES_PER_ELEMENT)));
       if (count > 0) {
-        gl.bindBuffer(gl.COPY_WRITE_BUFFER, part.buffer);
+        gl.bindBuffer(gl.COPY_WRITE_BUFFER, part.buffer.buffer);
         gl.bufferSubData(gl.COPY_WRITE_BUFFER, part.uploaded * array.BYTES_PER_ELEMENT, array, part.uploaded, count);
         part.uploaded += count;
         left -= count * array.BYTES_PER_ELEMENT;
@@ -103,14 +159,17 @@ export class GpuGeometry {
     const end = Math.min(first + count, part.uploaded);
     if (end <= first) return;
     const gl = this.gl;
-    gl.bindBuffer(gl.COPY_WRITE_BUFFER, part.buffer);
+    gl.bindBuffer(gl.COPY_WRITE_BUFFER, part.buffer.buffer);
     gl.bufferSubData(gl.COPY_WRITE_BUFFER, first * part.array.BYTES_PER_ELEMENT, part.array, first, end - first);
   }
 
-  /** Frees the buffers (and whatever three.js made to draw the geometry). */
+  /** Gives the buffers back to the pool, and frees whatever three.js made to draw the geometry. */
   dispose(): void {
+    // three.js deletes the buffers of the attributes a disposed geometry still has: not these.
+    for (const name of Object.keys(this.geometry.attributes)) this.geometry.deleteAttribute(name);
+    this.geometry.setIndex(null);
     this.geometry.dispose();
-    for (const { buffer } of this.parts.values()) this.gl.deleteBuffer(buffer);
+    for (const [name, { buffer }] of this.parts) this.pool.give(buffer, name === null);
     this.parts.clear();
     this.queue.length = 0;
   }

@@ -32,7 +32,7 @@ import { drawnBySoftware } from './rasterizer';
 import { flatPose, framePose } from './framing';
 import { scenePalette } from './palette';
 import { plantGeometry, pointsBox, setBox } from './plant-geometry';
-import { GpuGeometry } from './gpu-geometry';
+import { BufferPool, GpuGeometry } from './gpu-geometry';
 import { loadTexture, texturedMaterials, type TexturedMaterials } from './textures';
 import { addHeadlight, addSkyLight, atLeastAPixelWide, drawnSupersampled, litPlantMaterial, unlitPlantMaterial } from './scene-setup';
 import { MATERIAL_BARK, highlightOverlay, highlightSegments, moduleOfTriangle, type LineOverlay, type Rgb } from './highlight';
@@ -185,6 +185,8 @@ export class PlantView {
   private readonly plant = new Mesh<BufferGeometry, Material | Material[]>(new BufferGeometry(), this.lit);
   /** The buffers {@link plant} draws from. */
   private plantOnGpu: GpuGeometry | undefined;
+  /** WebGL buffers of plants replaced, for the next plants' arrays. */
+  private readonly gpuBuffers: BufferPool;
   /**
    * The plant drawn, as plain arrays: what raycasting reads (three.js cannot read the GPU's
    * buffers back). Never drawn, not in the scene; its material is the plant's (for the groups).
@@ -287,6 +289,7 @@ export class PlantView {
     this.textured = texturedMaterials(texture('bark'), texture('leaf'), this.lit, this.unlit);
     const { renderer, software } = viewRenderer();
     this.renderer = renderer;
+    this.gpuBuffers = new BufferPool(renderer.getContext() as WebGL2RenderingContext);
     this.segmentLines = new SegmentLines(this.renderer.capabilities.maxTextureSize);
     this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
     const canvas = this.renderer.domElement;
@@ -405,7 +408,7 @@ export class PlantView {
       return;
     }
     const source = plantGeometry(mesh, gpu, bounds);
-    const onGpu = new GpuGeometry(this.renderer.getContext() as WebGL2RenderingContext, source);
+    const onGpu = new GpuGeometry(this.gpuBuffers, source);
     const incoming: IncomingPlant = { mesh, flat, source, onGpu };
     this.incoming = incoming;
     if (onGpu.remaining <= UPLOAD_AT_ONCE_BYTES) {
@@ -1059,6 +1062,7 @@ export class PlantView {
     this.incoming?.onGpu?.dispose();
     this.incoming = undefined;
     this.plantOnGpu?.dispose();
+    this.gpuBuffers.clear();
     this.plant.geometry.dispose();
     this.pickable.geometry.dispose();
     this.overlay.geometry.dispose();
