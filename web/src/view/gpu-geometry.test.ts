@@ -130,8 +130,7 @@ describe('GpuGeometry', () => {
     const pool = new BufferPool(gl as unknown as WebGL2RenderingContext);
     const index = pool.take(1000, true);
     const vertices = pool.take(1000, false);
-    pool.give(index, true);
-    pool.give(vertices, false);
+    pool.give([{ ...index, index: true }, { ...vertices, index: false }]);
     expect(pool.take(400, false).buffer, 'too small an array: a new buffer').not.toBe(vertices.buffer);
     expect(pool.take(600, false).buffer).toBe(vertices.buffer);
     const forIndices = pool.take(600, true);
@@ -140,14 +139,16 @@ describe('GpuGeometry', () => {
     expect(pool.take(1001, true).buffer, 'too big: a new one').not.toBe(index.buffer);
   });
 
-  it('keeps at most 128 MB of buffers, deleting the oldest first', () => {
+  it('keeps the buffers of the last plant given back only, at most 128 MB of them', () => {
     const { gl, contents } = fakeGl();
     gl.bufferData = (target: number, size: number) => void contents.set(gl.boundTo(target)!, new Uint8Array(0 * size));
     const pool = new BufferPool(gl as unknown as WebGL2RenderingContext);
     const mb = 1 << 20;
-    const [a, b, c] = [pool.take(60 * mb, false), pool.take(60 * mb, false), pool.take(20 * mb, false)];
-    for (const buffer of [a, b, c]) pool.give(buffer, false);
-    expect(contents.has(a.buffer), 'the oldest deleted').toBe(false);
-    expect([contents.has(b.buffer), contents.has(c.buffer)]).toEqual([true, true]);
+    const [a, b, c, d] = [pool.take(60 * mb, false), pool.take(60 * mb, false), pool.take(20 * mb, true), pool.take(1 * mb, false)];
+    pool.give([{ ...d, index: false }]);
+    pool.give([a, b, c].map((buffer, k) => ({ ...buffer, index: k === 2 })));
+    expect(contents.has(d.buffer), 'the plant given back before: deleted').toBe(false);
+    expect([a, b, c].map((buffer) => contents.has(buffer.buffer)), 'beyond 128 MB: deleted').toEqual([true, true, false]);
+    expect(pool.take(50 * mb, false).buffer).toBe(a.buffer);
   });
 });

@@ -9,7 +9,7 @@ import { BufferGeometry, GLBufferAttribute, type BufferAttribute } from 'three';
 
 type TypedArray = BufferAttribute['array'];
 
-/** At most this many bytes of buffers are kept for later plants (the oldest go first). */
+/** At most this many bytes of a replaced plant's buffers are kept for the next plants. */
 const POOL_BYTES = 128 << 20;
 
 /** A WebGL buffer and the bytes it holds room for. */
@@ -18,17 +18,22 @@ interface PooledBuffer {
   bytes: number;
 }
 
+/** A buffer given back, and whether it holds indices. */
+interface GivenBuffer extends PooledBuffer {
+  index: boolean;
+}
+
 /**
  * The WebGL buffers of plants no longer drawn, kept for the next plants. Filling a new buffer costs
  * a software GPU far more than filling one filled before: ABOP 1.24d at n = 10's 50 MB took 40–90
  * ms of `bufferSubData` into new buffers and 11–18 ms into the ones of the plant before (SwiftShader,
  * both Chromium setups, 2026-11-27). An edit's plant is as big as the one before, so each of its
- * arrays finds a buffer. A buffer is used again for an array that fills at least half of it, and
- * an index buffer only for indices (WebGL 2 §5.1: a buffer's first binding fixes whether it can
- * hold indices).
+ * arrays finds a buffer of the plant it replaces. A buffer is used again for an array that fills
+ * at least half of it, and an index buffer only for indices (WebGL 2 §5.1: a buffer's first
+ * binding fixes whether it can hold indices).
  */
 export class BufferPool {
-  private readonly kept: (PooledBuffer & { index: boolean })[] = [];
+  private readonly kept: GivenBuffer[] = [];
 
   constructor(readonly gl: WebGL2RenderingContext) {}
 
@@ -60,14 +65,18 @@ export class BufferPool {
     return { buffer, bytes };
   }
 
-  /** Keeps `buffer` for a later {@link take}; deletes the oldest kept beyond {@link POOL_BYTES}. */
-  give(buffer: PooledBuffer, index: boolean): void {
-    this.kept.push({ ...buffer, index });
-    let total = this.kept.reduce((sum, k) => sum + k.bytes, 0);
-    while (total > POOL_BYTES) {
-      const oldest = this.kept.shift()!;
-      this.gl.deleteBuffer(oldest.buffer);
-      total -= oldest.bytes;
+  /**
+   * Keeps the buffers of a plant replaced (`index`: which hold indices) for later {@link take}s,
+   * as many as fit in {@link POOL_BYTES}, and deletes those kept before: the next plant is most
+   * likely the size of this one, and a view keeps no more than one plant's worth of spares.
+   */
+  give(buffers: readonly GivenBuffer[]): void {
+    this.clear();
+    let total = 0;
+    for (const buffer of buffers) {
+      total += buffer.bytes;
+      if (total <= POOL_BYTES) this.kept.push({ buffer: buffer.buffer, bytes: buffer.bytes, index: buffer.index });
+      else this.gl.deleteBuffer(buffer.buffer);
     }
   }
 
@@ -169,7 +178,7 @@ export class GpuGeometry {
     for (const name of Object.keys(this.geometry.attributes)) this.geometry.deleteAttribute(name);
     this.geometry.setIndex(null);
     this.geometry.dispose();
-    for (const [name, { buffer }] of this.parts) this.pool.give(buffer, name === null);
+    this.pool.give([...this.parts].map(([name, { buffer }]) => ({ ...buffer, index: name === null })));
     this.parts.clear();
     this.queue.length = 0;
   }
