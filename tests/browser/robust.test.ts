@@ -3,12 +3,14 @@
 // keeps the earlier text in IndexedDB, or, when nothing can keep it, asks to download it first; a
 // long build says "Building… step k of n" (never an older plant's figures, never "Loading…" for
 // ever) and Stop ends it with the text intact; a pathological file of another dialect is imported
-// in a worker, with Cancel and a time limit, while the page answers.
+// in a worker, with Cancel and a time limit, while the page answers. A WebGL context the browser
+// takes away and gives back (a phone's browser sent to the background) shows the plant again.
 import { readFileSync } from 'node:fs';
 import { deflateRawSync } from 'node:zlib';
 import { chromium, type Browser, type BrowserContext, type Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
-import { editorText, generation, nextBuild } from './studio-page';
+import { foregroundOverlap, foregroundShare } from './pictures';
+import { canvasPicture, editorText, generation, nextBuild, pasteText, VIEW_CANVAS } from './studio-page';
 
 let browser: Browser;
 
@@ -444,6 +446,37 @@ describe('the vocabulary (loaded after the first plant)', () => {
     expect(await box.inputValue()).toContain('#define k 2');
     // Said in the console: the failed fetch, for the panels and for the editor.
     expect(problems.filter((p) => !/vocabulary|grammar editor could not load|ERR_FAILED/.test(p))).toEqual([]);
+    await context.close();
+  });
+});
+
+describe('the view', () => {
+  it('draws the plant again when the browser takes its WebGL context away and gives it back', async () => {
+    const context = await newContext();
+    const { page, problems } = await openAt(inject('studioUrl'), context);
+    // The Tubes mode: the plant's buffers are the view's own, which three.js does not make again.
+    const before = await generation(page);
+    await page.getByTestId('render-lines').click();
+    expect(await nextBuild(page, before)).toBe('ok');
+    const shown = await canvasPicture(page, 'context-before-loss.png');
+    await page.evaluate(async (selector) => {
+      const gl = document.querySelector<HTMLCanvasElement>(selector)!.getContext('webgl2')!;
+      const lose = gl.getExtension('WEBGL_lose_context')!;
+      lose.loseContext();
+      await new Promise((done) => setTimeout(done, 200));
+      lose.restoreContext();
+      await new Promise((done) => setTimeout(done, 200));
+    }, VIEW_CANVAS);
+    const restored = await canvasPicture(page, 'context-restored.png');
+    expect(foregroundShare(shown)).toBeGreaterThan(0.01);
+    expect(foregroundOverlap(shown, restored), 'the same plant, drawn again').toBeGreaterThan(0.9);
+    // The next plant goes to the restored context as well.
+    await page.getByTestId('editor').locator('.cm-content').waitFor();
+    expect(await pasteText(page, (await editorText(page)).replace('#angle 20', '#angle 30'))).toBe('ok');
+    const edited = await canvasPicture(page, 'context-restored-edited.png');
+    expect(foregroundShare(edited)).toBeGreaterThan(0.01);
+    expect(foregroundOverlap(shown, edited), 'the edited plant').toBeLessThan(0.9);
+    expect(problems).toEqual([]);
     await context.close();
   });
 });

@@ -37,16 +37,14 @@ export class BufferPool {
 
   constructor(readonly gl: WebGL2RenderingContext) {}
 
-  /** A buffer with room for `bytes`, for indices when `index`: a kept one (the smallest that will do) or a new one. */
+  /**
+   * A buffer with room for `bytes`, for indices when `index`: the first kept one that will do (the
+   * arrays of a plant of the same size take the buffers of their own kind in the order given) or a
+   * new one.
+   */
   take(bytes: number, index: boolean): PooledBuffer {
-    let best = -1;
-    this.kept.forEach((k, i) => {
-      if (k.index === index && k.bytes >= bytes && k.bytes <= 2 * bytes && (best < 0 || k.bytes < this.kept[best].bytes)) best = i;
-    });
-    if (best >= 0) {
-      const [kept] = this.kept.splice(best, 1);
-      return { buffer: kept.buffer, bytes: kept.bytes };
-    }
+    const k = this.kept.findIndex((kept) => kept.index === index && kept.bytes >= bytes && kept.bytes <= 2 * bytes);
+    if (k >= 0) return this.kept.splice(k, 1)[0];
     const gl = this.gl;
     const buffer = gl.createBuffer();
     if (index) {
@@ -80,9 +78,9 @@ export class BufferPool {
     }
   }
 
-  /** Deletes every buffer kept. */
-  clear(): void {
-    for (const { buffer } of this.kept.splice(0)) this.gl.deleteBuffer(buffer);
+  /** Deletes every buffer kept; lets go of them only when the context was `lost` (they went with it). */
+  clear(lost = false): void {
+    for (const { buffer } of this.kept.splice(0)) if (!lost) this.gl.deleteBuffer(buffer);
   }
 }
 
@@ -172,13 +170,16 @@ export class GpuGeometry {
     gl.bufferSubData(gl.COPY_WRITE_BUFFER, first * part.array.BYTES_PER_ELEMENT, part.array, first, end - first);
   }
 
-  /** Gives the buffers back to the pool, and frees whatever three.js made to draw the geometry. */
-  dispose(): void {
+  /**
+   * Gives the buffers back to the pool (not when the context was `lost`, and they with it), and
+   * frees whatever three.js made to draw the geometry.
+   */
+  dispose(lost = false): void {
     // three.js deletes the buffers of the attributes a disposed geometry still has: not these.
     for (const name of Object.keys(this.geometry.attributes)) this.geometry.deleteAttribute(name);
     this.geometry.setIndex(null);
     this.geometry.dispose();
-    this.pool.give([...this.parts].map(([name, { buffer }]) => ({ ...buffer, index: name === null })));
+    if (!lost) this.pool.give([...this.parts].map(([name, { buffer }]) => ({ ...buffer, index: name === null })));
     this.parts.clear();
     this.queue.length = 0;
   }
@@ -193,5 +194,5 @@ function glType(gl: WebGL2RenderingContext, array: TypedArray): number {
   if (array instanceof Uint8Array) return gl.UNSIGNED_BYTE;
   if (array instanceof Int8Array) return gl.BYTE;
   if (array instanceof Int32Array) return gl.INT;
-  throw new Error(`GpuGeometry: no WebGL type for ${array.constructor.name}`);
+  throw new Error(`no WebGL type for ${array.constructor.name}`);
 }

@@ -296,6 +296,8 @@ export class PlantView {
     canvas.setAttribute('aria-label', '3D view of the plant; drag or the arrow keys to orbit, scroll or + and − to zoom, Home to fit');
     canvas.tabIndex = 0;
     canvas.addEventListener('keydown', (event) => this.onKey(event));
+    canvas.addEventListener('webglcontextlost', () => this.contextLost());
+    canvas.addEventListener('webglcontextrestored', () => this.contextRestored());
     container.append(canvas);
     if (software) this.canvas2D = new SketchCanvas(container);
 
@@ -1145,6 +1147,41 @@ export class PlantView {
     this.perspective.camera.aspect = width / height;
     this.perspective.camera.updateProjectionMatrix();
     this.fitOrthographic();
+    this.requestRender();
+  }
+
+  /**
+   * The browser took the view's WebGL context away (a phone's browser sent to the background, a
+   * GPU reset): every buffer and fence of it went too. three.js makes its own again when the
+   * context comes back; the plant's are the view's own ({@link GpuGeometry}): see
+   * {@link contextRestored}.
+   */
+  private contextLost(): void {
+    this.drawn = null;
+    this.gpuBuffers.clear(true);
+  }
+
+  /**
+   * The context is back (three.js has made its state again, its listener being first): the plant
+   * on screen, and one on its way, go to the GPU again from their arrays, and the view draws.
+   */
+  private contextRestored(): void {
+    this.contextLost(); // and any buffers given back while it was
+    const again = (onGpu: GpuGeometry, source: BufferGeometry) => {
+      onGpu.dispose(true);
+      const fresh = new GpuGeometry(this.gpuBuffers, source);
+      fresh.upload(Infinity);
+      return fresh;
+    };
+    if (this.plantOnGpu) {
+      this.plantOnGpu = again(this.plantOnGpu, this.pickable.geometry);
+      this.plant.geometry = this.plantOnGpu.geometry;
+    }
+    const incoming = this.incoming;
+    if (incoming?.onGpu && incoming.source) {
+      incoming.onGpu = again(incoming.onGpu, incoming.source);
+      this.finishUpload();
+    }
     this.requestRender();
   }
 
