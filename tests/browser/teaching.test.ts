@@ -6,7 +6,7 @@
 import { readFileSync, writeFileSync } from 'node:fs';
 import type { Page } from 'playwright-core';
 import { describe, expect, inject, it } from 'vitest';
-import { colourShare, decodePng, foregroundExtent, foregroundMask, foregroundShare, type Picture } from './pictures';
+import { colourShare, decodePng, foregroundExtent, foregroundMask, foregroundOverlap, foregroundShare, type Picture } from './pictures';
 import { browser, page, problems, useStudio } from './session';
 import { canvasPicture, findPixel, RESULTS, generation, HIGHLIGHT_PIXELS, nextBuild, openExample, savePage, twoFrames } from './studio-page';
 
@@ -274,6 +274,19 @@ describe('Stages', () => {
     expect(svg.match(/<g transform="translate/g)).toHaveLength(5);
     expect([...svg.matchAll(/<text [^>]*>([^<]*)<\/text>/g)].map((m) => m[1])).toEqual(['n = 1', 'n = 2', 'n = 3', 'n = 4', 'n = 5']);
     expect(await status.textContent()).toBe('Saved the figure as an SVG');
+
+    // The browser takes the figure's WebGL context away and gives it back: the plants come back.
+    const figureCanvas = page.getByTestId('stages-figure').locator('canvas');
+    const shown = decodePng(await figureCanvas.screenshot());
+    await figureCanvas.evaluate(async (canvas: HTMLCanvasElement) => {
+      const lose = canvas.getContext('webgl2')!.getExtension('WEBGL_lose_context')!;
+      lose.loseContext();
+      await new Promise((done) => setTimeout(done, 200));
+      lose.restoreContext();
+      await new Promise((done) => setTimeout(done, 300));
+    });
+    const restored = decodePng(await figureCanvas.screenshot());
+    expect(foregroundOverlap(shown, restored), 'the stages drawn again').toBeGreaterThan(0.9);
 
     // A range too wide is refused in words; closing Stages brings the 3D view back.
     await page.getByTestId('stages-to').fill('20');

@@ -63,6 +63,8 @@ export class StagesView {
     addHeadlight(this.camera);
     this.scene.add(this.camera);
     this.darkScheme.addEventListener('change', this.requestRender);
+    // A context the browser took away and gave back: three.js has made its state again; draw.
+    this.renderer.domElement.addEventListener('webglcontextrestored', this.requestRender);
     this.resizeObserver = new ResizeObserver(() => this.resize());
     this.resizeObserver.observe(container);
     this.resize();
