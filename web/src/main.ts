@@ -10,7 +10,7 @@ import { KeptTexts } from './share/kept-texts';
 import { GrammarStore } from './share/storage';
 import { PlantView } from './view';
 import {
-  Autosave, BranchEditSession, BuildClient, ContextView, DerivationControls, GrowthPanel,
+  Autosave, LazyBranchEditing, BuildClient, ContextView, DerivationControls, GrowthPanel,
   LazyDerivationView, installLearnPanel, LinkState, LivePreview, Notice, SliderPanel, LazyStagesMode, TextOpening,
   TextKeeper, ViewFollowing, ViewOptions, ViewTools, tubesFor, attachSplitter, browserDatabase, browserStorage, createImportWorker, connectTestHook, createBuildWorker, emptyTestHook, fetchExample,
   figureName, installDrop, installInspectorTabs, LayoutModes,
@@ -221,8 +221,8 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   installFileMenu(els.fileMenu, { openFiles: (files) => opening.openPicked(files), text: () => grammarEditor.text(), openLibrary });
   installDrop(els.studio, (files, name) => opening.openFiles(files, name));
 
-  // Branch editing (issue 8): the plant on screen with its edits, handles in Edit mode.
-  const branchEdits = new BranchEditSession(els.branchEditing, view, {
+  // Branch editing (issue 8): the plant on screen with its edits, handles in Edit mode (loaded on first use).
+  const branchEdits = new LazyBranchEditing(els.branchEditing, view, {
     shown: () => {
       const good = preview.lastGood;
       return good && { source: good.source, options: good.options, segments: good.build.stats.segments, flat: good.build.flat };

@@ -34,7 +34,9 @@ export { installShareButton, linkWithFragment } from './share-button';
 export type { ShareDialogElements } from './share-dialog';
 export type { LibraryElements, LibraryHost } from './library-dialog';
 export { checkGrammarBytes, openGrammarBytes, saveGrammarFile, decodeText, dialectName, lsysFileName, MAX_FILE_BYTES, type OpenedFile } from './grammar-files';
-export { BranchEditSession, MAX_EDITABLE_SEGMENTS, pathText, staleEditsMessage, type BranchEditingElements, type BranchEditingHost } from './branch-editing';
+// branch-editing is not re-exported as code: the studio loads it on first use (branch-editing-loader).
+export type { BranchEditSession, BranchEditingElements, BranchEditingHost } from './branch-editing';
+export { LazyBranchEditing, type BranchEdits } from './branch-editing-loader';
 export { GrowthPanel, type GrowthEditor } from './growth-panel';
 export { byId, studioElements, type StudioElements } from './page-elements';
 export { ViewOptions, DEFAULT_VIEW_OPTIONS, tubesFor, type SharedViewOptions, type ViewOption, type ViewOptionValues, type ViewOptionsListener } from './view-options';

@@ -3,7 +3,7 @@
 import type { SharedState } from '../share/codec';
 import type { GrammarEditor } from '../editor';
 import type { PlantView } from '../view';
-import type { BranchEditSession } from './branch-editing';
+import type { BranchEdits } from './branch-editing-loader';
 import type { DerivationControls } from './derivation-controls';
 import type { LivePreview } from './live-preview';
 import type { SliderPanel } from './sliders';
@@ -16,7 +16,7 @@ export interface LinkStateParts {
   sliders: SliderPanel;
   viewOptions: ViewOptions;
   view: PlantView;
-  branchEdits: BranchEditSession;
+  branchEdits: BranchEdits;
   /** Its builds: a link's camera is set once the link's plant is on screen. */
   preview: LivePreview;
 }

@@ -2,7 +2,7 @@
 // else is global). The browser tests read this shape: change it only with them.
 import type { PlantStats } from '../core';
 import type { PlantView } from '../view';
-import type { BranchEditSession } from './branch-editing';
+import type { BranchEdits } from './branch-editing-loader';
 import type { LivePreview } from './live-preview';
 
 /** The studio as its tests see it. */
@@ -51,7 +51,7 @@ export function emptyTestHook(): StudioTestHook {
 export interface TestedStudio {
   preview: LivePreview;
   view: PlantView;
-  branchEdits: BranchEditSession;
+  branchEdits: BranchEdits;
 }
 
 /** Fills `hook` from the studio's pieces and keeps it current as builds arrive and frames are drawn. */
