@@ -13,7 +13,7 @@ import {
   Autosave, LazyBranchEditing, BuildClient, ContextView, DerivationControls, GrowthPanel,
   LazyDerivationView, installLearnPanel, LinkState, LivePreview, Notice, SliderPanel, LazyStagesMode, TextOpening,
   TextKeeper, ViewFollowing, ViewOptions, ViewTools, tubesFor, attachSplitter, browserDatabase, browserStorage, createImportWorker, connectTestHook, createBuildWorker, emptyTestHook, fetchExample,
-  figureName, installDrop, installInspectorTabs, LayoutModes,
+  figureName, installDrop, onDemand, installInspectorTabs, LayoutModes,
   installFileMenu, installShareButton, installShortcuts, openPastedLinks, readGrammarFile, readObjectFiles, renderShortcutHelp, reportCoreCrashes, showStatus, sidesChoices,
   startingText, studioElements, installAppUpdates, type ShortcutAction, type StudioElements, type StudioTestHook,
 } from './studio';
@@ -309,16 +309,6 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   // The dialogs load now, in the background, so that the first click opens one at once (a failure
   // here is tried again by that click).
   await Promise.all([gallery(), library(), shareDialog(), help()].map((made) => made.catch(() => undefined)));
-}
-
-/** `make`, called on the first use and kept (a failure is tried again on the next use). */
-function onDemand<T>(make: () => Promise<T>): () => Promise<T> {
-  let made: Promise<T> | undefined;
-  return () =>
-    (made ??= make().catch((error: unknown) => {
-      made = undefined;
-      throw error;
-    }));
 }
 
 /** Settles after `ms` milliseconds. */

@@ -1,9 +1,10 @@
 // Branch editing (./branch-editing.ts), loaded when it is first wanted: the Reshape button pressed,
-// or a shared link's edits to show (issue 22: the first plant needs none of it, and the first
-// load has no room to spare). Until then there are no edits, and only the button listens.
+// or a shared link's edits to show (issue 22: the first plant needs none of it). Until then there
+// are no edits, and only the button listens.
 import type { EditsDocument } from '../core';
 import type { PlantView } from '../view';
 import type { BranchEditingElements, BranchEditingHost, BranchEditSession } from './branch-editing';
+import { onDemand } from './on-demand';
 
 /** What the studio asks of branch editing (the link, downloads, each build, the tests). */
 export type BranchEdits = Pick<BranchEditSession, 'document' | 'restore' | 'plantShown' | 'handlesOnPage' | 'selectedPath'>;
@@ -11,7 +12,6 @@ export type BranchEdits = Pick<BranchEditSession, 'document' | 'restore' | 'plan
 /** A {@link BranchEditSession} on `els` that loads with its first use. */
 export class LazyBranchEditing implements BranchEdits {
   private session: BranchEditSession | undefined;
-  private loading: Promise<BranchEditSession | undefined> | undefined;
   /** A link's edits, restored before the session has loaded. */
   private pending: EditsDocument | undefined;
   private readonly toggled = () => void this.load().then((session) => session && this.els.toggle.click());
@@ -52,24 +52,23 @@ export class LazyBranchEditing implements BranchEdits {
     return this.session?.selectedPath() ?? null;
   }
 
+  private readonly loaded = onDemand(async () => {
+    const { BranchEditSession } = await import('./branch-editing');
+    this.els.toggle.removeEventListener('click', this.toggled); // the session listens to its button now
+    const session = new BranchEditSession(this.els, this.view, this.host);
+    this.session = session;
+    if (this.pending) {
+      session.restore(this.pending);
+      this.pending = undefined;
+    }
+    return session;
+  });
+
+  /** The session, loaded (undefined, told, when it could not load: the next use tries again). */
   private load(): Promise<BranchEditSession | undefined> {
-    this.loading ??= import('./branch-editing').then(
-      ({ BranchEditSession }) => {
-        this.els.toggle.removeEventListener('click', this.toggled); // the session listens to its button now
-        const session = new BranchEditSession(this.els, this.view, this.host);
-        this.session = session;
-        if (this.pending) {
-          session.restore(this.pending);
-          this.pending = undefined;
-        }
-        return session;
-      },
-      (error: unknown) => {
-        this.loading = undefined; // the next use tries again
-        this.host.tell('error', `Branch editing could not be loaded: ${String(error)}`);
-        return undefined;
-      },
-    );
-    return this.loading;
+    return this.loaded().catch((error: unknown) => {
+      this.host.tell('error', `Branch editing could not be loaded: ${String(error)}`);
+      return undefined;
+    });
   }
 }

@@ -37,6 +37,7 @@ export { checkGrammarBytes, openGrammarBytes, saveGrammarFile, decodeText, diale
 // branch-editing is not re-exported as code: the studio loads it on first use (branch-editing-loader).
 export type { BranchEditSession, BranchEditingElements, BranchEditingHost } from './branch-editing';
 export { LazyBranchEditing, type BranchEdits } from './branch-editing-loader';
+export { onDemand } from './on-demand';
 export { GrowthPanel, type GrowthEditor } from './growth-panel';
 export { byId, studioElements, type StudioElements } from './page-elements';
 export { ViewOptions, DEFAULT_VIEW_OPTIONS, tubesFor, type SharedViewOptions, type ViewOption, type ViewOptionValues, type ViewOptionsListener } from './view-options';

@@ -2,11 +2,11 @@
 // first plant needs none of it). Until then only its button listens.
 import type { StagesElements, StagesHost, StagesMode } from './stages';
 import type { BuildResult } from './worker-client';
+import { onDemand } from './on-demand';
 
 /** A {@link StagesMode} on `els` that loads with its first showing. */
 export class LazyStagesMode {
   private mode: StagesMode | undefined;
-  private loading: Promise<StagesMode | undefined> | undefined;
   private readonly toggled = () => this.show();
 
   constructor(
@@ -42,19 +42,18 @@ export class LazyStagesMode {
     this.mode?.setLighting(lit);
   }
 
+  private readonly loaded = onDemand(async () => {
+    const { StagesMode } = await import('./stages');
+    this.els.toggle.removeEventListener('click', this.toggled); // Stages listens to its button now
+    this.mode = new StagesMode(this.els, this.host);
+    return this.mode;
+  });
+
+  /** Stages, loaded (undefined, said in the console, when it could not load: the next click tries again). */
   private load(): Promise<StagesMode | undefined> {
-    this.loading ??= import('./stages').then(
-      ({ StagesMode }) => {
-        this.els.toggle.removeEventListener('click', this.toggled); // Stages listens to its button now
-        this.mode = new StagesMode(this.els, this.host);
-        return this.mode;
-      },
-      (error: unknown) => {
-        this.loading = undefined; // the next click tries again
-        console.error('Stages could not load:', error);
-        return undefined;
-      },
-    );
-    return this.loading;
+    return this.loaded().catch((error: unknown) => {
+      console.error('Stages could not load:', error);
+      return undefined;
+    });
   }
 }
