@@ -41,6 +41,13 @@ afterAll(async () => {
 
 const scratch = scratchDir('figures');
 
+/** The width of the lines on screen, in CSS pixels, measured on a picture of the view saved as `name`. */
+async function measuredLineWidth(name: string): Promise<number> {
+  const picture = await canvasPicture(page, name);
+  const scale = picture.width / (await page.locator(VIEW_CANVAS).boundingBox())!.width;
+  return strokeWidth(picture) / scale;
+}
+
 /** Sets the Lines mode's width (CSS pixels) in its menu. */
 async function setLineWidth(width: number): Promise<void> {
   await page.getByTestId('lines-menu').locator('summary').click();
@@ -81,9 +88,7 @@ describe('the Lines mode', () => {
     await paste('#angle 35\naxiom: F[+F][-F]F[++F]\n');
     for (const width of [2, 6, 12]) {
       await setLineWidth(width);
-      const picture = await canvasPicture(page, `figures-width-${width}.png`);
-      const scale = picture.width / (await page.locator(VIEW_CANVAS).boundingBox())!.width;
-      const measured = strokeWidth(picture) / scale;
+      const measured = await measuredLineWidth(`figures-width-${width}.png`);
       expect(Math.abs(measured - width), `width ${width}: measured ${measured}`).toBeLessThanOrEqual(1);
     }
     // A width out of range is refused and the field shows the one in force.
@@ -101,19 +106,13 @@ describe('the Lines mode', () => {
   it('draws the lines twice as wide in the Large mode (a projector)', async () => {
     await page.getByTestId('grid').click(); // a plain background
     await paste('#angle 30\naxiom: F[+F][-F]F[++F]\n');
-    /** The lines' width on screen, in CSS pixels. */
-    const measuredWidth = async (name: string) => {
-      const picture = await canvasPicture(page, name);
-      const scale = picture.width / (await page.locator(VIEW_CANVAS).boundingBox())!.width;
-      return strokeWidth(picture) / scale;
-    };
     await setLineWidth(3);
-    const normal = await measuredWidth('figures-width-3.png');
+    const normal = await measuredLineWidth('figures-width-3.png');
     expect(Math.abs(normal - 3), `measured ${normal}`).toBeLessThanOrEqual(1);
     await page.getByTestId('large').click();
     await expect.poll(() => page.evaluate(() => document.body.classList.contains('large'))).toBe(true);
     await page.getByTestId('frame').click();
-    const large = await measuredWidth('figures-width-3-large.png');
+    const large = await measuredLineWidth('figures-width-3-large.png');
     expect(Math.abs(large - 6), `measured ${large} in the Large mode`).toBeLessThanOrEqual(1);
     await page.getByTestId('large').click();
     await expect.poll(() => page.evaluate(() => document.body.classList.contains('large'))).toBe(false);
@@ -145,9 +144,7 @@ describe('the Lines mode without a GPU', () => {
     expect(await pixelsDrawnIn2D(), 'the lines are on the 2D canvas').toBeGreaterThan(1000);
     for (const width of [2, 6]) {
       await setLineWidth(width);
-      const picture = await canvasPicture(page, `figures-2d-width-${width}.png`);
-      const scale = picture.width / (await page.locator(VIEW_CANVAS).boundingBox())!.width;
-      const measured = strokeWidth(picture) / scale;
+      const measured = await measuredLineWidth(`figures-2d-width-${width}.png`);
       expect(Math.abs(measured - width), `width ${width}: measured ${measured}`).toBeLessThanOrEqual(1);
     }
     // The cursor on `F -> FF`: the F segments in the highlight colour, the H line dimmed.

@@ -10,7 +10,7 @@ import { deflateRawSync } from 'node:zlib';
 import { chromium, type Browser, type BrowserContext, type Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
 import { foregroundOverlap, foregroundShare } from './pictures';
-import { canvasPicture, editorText, generation, nextBuild, pasteText, VIEW_CANVAS } from './studio-page';
+import { canvasPicture, editorText, generation, loseAndRestoreContext, nextBuild, pasteText, VIEW_CANVAS } from './studio-page';
 
 let browser: Browser;
 
@@ -459,14 +459,7 @@ describe('the view', () => {
     await page.getByTestId('render-lines').click();
     expect(await nextBuild(page, before)).toBe('ok');
     const shown = await canvasPicture(page, 'context-before-loss.png');
-    await page.evaluate(async (selector) => {
-      const gl = document.querySelector<HTMLCanvasElement>(selector)!.getContext('webgl2')!;
-      const lose = gl.getExtension('WEBGL_lose_context')!;
-      lose.loseContext();
-      await new Promise((done) => setTimeout(done, 200));
-      lose.restoreContext();
-      await new Promise((done) => setTimeout(done, 200));
-    }, VIEW_CANVAS);
+    await loseAndRestoreContext(page.locator(VIEW_CANVAS));
     const restored = await canvasPicture(page, 'context-restored.png');
     expect(foregroundShare(shown)).toBeGreaterThan(0.01);
     expect(foregroundOverlap(shown, restored), 'the same plant, drawn again').toBeGreaterThan(0.9);

@@ -1,7 +1,7 @@
 // Helpers for the browser tests that drive the studio's controls: open the page, collect every
 // problem it reports, wait for builds, read the canvas.
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
-import type { Browser, Page } from 'playwright-core';
+import type { Browser, Locator, Page } from 'playwright-core';
 import { inject } from 'vitest';
 import { decodePng, type Picture } from './pictures';
 
@@ -92,16 +92,16 @@ export function twoFrames(page: Page): Promise<unknown> {
 }
 
 /**
- * The screenshot style that leaves the plant alone: the overlays on the view hidden, and no
- * keyboard focus ring on the canvas (a key pressed after a click shows it).
- */
-/**
  * The view's WebGL canvas. Where a software rasterizer draws the view (here, SwiftShader) a 2D
  * canvas may lie over it (web/src/view/sketch-canvas.ts: a sketch, or a big plant's lines in the
  * Lines mode); a screenshot of the WebGL canvas's box shows both.
  */
 export const VIEW_CANVAS = '[data-testid=viewport] canvas:not(.sketch-canvas)';
 
+/**
+ * The screenshot style that leaves the plant alone: the overlays on the view hidden, and no
+ * keyboard focus ring on the canvas (a key pressed after a click shows it).
+ */
 export const PLANT_ONLY = '[data-testid=viewport] > :not(canvas) { visibility: hidden !important; } [data-testid=viewport] canvas { outline: none !important; }';
 
 /** Screenshots the 3D canvas (saved as `name` in test-results/) and decodes it. */
@@ -183,4 +183,18 @@ export async function openExample(page: Page, file: string): Promise<string | nu
     await page.waitForTimeout(50);
   }
   return nextBuild(page, before);
+}
+
+/**
+ * Has the browser take the WebGL context of `canvas` away and give it back (`WEBGL_lose_context`),
+ * as a phone's browser does to a page sent to the background.
+ */
+export async function loseAndRestoreContext(canvas: Locator): Promise<void> {
+  await canvas.evaluate(async (element: HTMLCanvasElement) => {
+    const lose = element.getContext('webgl2')!.getExtension('WEBGL_lose_context')!;
+    lose.loseContext();
+    await new Promise((done) => setTimeout(done, 200));
+    lose.restoreContext();
+    await new Promise((done) => setTimeout(done, 300));
+  });
 }

@@ -8,7 +8,7 @@ import type { Page } from 'playwright-core';
 import { describe, expect, inject, it } from 'vitest';
 import { colourShare, decodePng, foregroundExtent, foregroundMask, foregroundOverlap, foregroundShare, type Picture } from './pictures';
 import { browser, page, problems, useStudio } from './session';
-import { canvasPicture, findPixel, RESULTS, generation, HIGHLIGHT_PIXELS, nextBuild, openExample, savePage, twoFrames } from './studio-page';
+import { canvasPicture, findPixel, RESULTS, generation, HIGHLIGHT_PIXELS, loseAndRestoreContext, nextBuild, openExample, savePage, twoFrames } from './studio-page';
 
 useStudio();
 
@@ -278,13 +278,7 @@ describe('Stages', () => {
     // The browser takes the figure's WebGL context away and gives it back: the plants come back.
     const figureCanvas = page.getByTestId('stages-figure').locator('canvas');
     const shown = decodePng(await figureCanvas.screenshot());
-    await figureCanvas.evaluate(async (canvas: HTMLCanvasElement) => {
-      const lose = canvas.getContext('webgl2')!.getExtension('WEBGL_lose_context')!;
-      lose.loseContext();
-      await new Promise((done) => setTimeout(done, 200));
-      lose.restoreContext();
-      await new Promise((done) => setTimeout(done, 300));
-    });
+    await loseAndRestoreContext(figureCanvas);
     const restored = decodePng(await figureCanvas.screenshot());
     expect(foregroundOverlap(shown, restored), 'the stages drawn again').toBeGreaterThan(0.9);
 
