@@ -1,4 +1,3 @@
-import { VIEW_CANVAS } from './studio-page';
 // Deployment: the built site (dist/) served by a plain static file server from a sub-path, as any
 // static host would, must load everything (gallery, wasm) with relative URLs, obey its own
 // Content-Security-Policy (no inline script, no eval beyond wasm) and draw the plant.
@@ -7,6 +6,7 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { encodeState } from '../../web/src/share/codec';
 import { decodePng, foregroundShare } from './pictures';
 import { serveStatic, type StaticSite } from './static-server';
+import { VIEW_CANVAS } from './studio-page';
 
 const SUB_PATH = '/courses/botany/meristem/';
 
