@@ -306,9 +306,9 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   // The first load is done: the build worker loads the studio core (crate/pkg, built for speed:
   // a big plant's tubes in about half the time) for the builds after it.
   buildClient.useStudioCore();
-  // The dialogs load now, in the background, so that the first click opens one at once (a failure
-  // here is tried again by that click).
-  await Promise.all([gallery(), library(), shareDialog(), help()].map((made) => made.catch(() => undefined)));
+  // The dialogs and branch editing load now, in the background, so that the first click opens one
+  // at once (a failure here is tried again by that click).
+  await Promise.all([...[gallery(), library(), shareDialog(), help()].map((made) => made.catch(() => undefined)), branchEdits.preload()]);
 }
 
 /** Settles after `ms` milliseconds. */

@@ -14,7 +14,11 @@ export class LazyBranchEditing implements BranchEdits {
   private session: BranchEditSession | undefined;
   /** A link's edits, restored before the session has loaded. */
   private pending: EditsDocument | undefined;
-  private readonly toggled = () => void this.load().then((session) => session && this.els.toggle.click());
+  /** The first press: shown pressed at once; the session, once loaded, takes the press. */
+  private readonly toggled = () => {
+    this.els.toggle.setAttribute('aria-pressed', 'true');
+    void this.load().then((session) => (session ? this.els.toggle.click() : this.els.toggle.setAttribute('aria-pressed', 'false')));
+  };
 
   constructor(
     private readonly els: BranchEditingElements,
@@ -22,6 +26,11 @@ export class LazyBranchEditing implements BranchEdits {
     private readonly host: BranchEditingHost,
   ) {
     els.toggle.addEventListener('click', this.toggled);
+  }
+
+  /** Loads branch editing in the background (a failure is tried again by the first use). */
+  preload(): Promise<unknown> {
+    return this.loaded().catch(() => undefined);
   }
 
   /** As {@link BranchEditSession.document}. */
