@@ -74,6 +74,8 @@ export class BranchEditSession {
   private drag: { handle: Handle; before: EditsDocument; pointer: number } | undefined;
   /** Where the last press was, and whether it dragged a handle: the click after either is no pick. */
   private press = { x: 0, y: 0, handle: false };
+  /** A click on the plant before the editor was there (its core still loading): picked once it is. */
+  private pendingPick: { x: number; y: number } | undefined;
   /** The last report of edits that do not apply (shown in the notice). */
   private stale = '';
   /** Counts attaches and drops: an attach that waited for the core goes on only if it is the last. */
@@ -96,6 +98,7 @@ export class BranchEditSession {
     canvas.addEventListener('pointerup', (event) => this.pointerUp(event));
     canvas.addEventListener('pointercancel', (event) => this.pointerUp(event));
     canvas.addEventListener('click', (event) => this.click(event));
+    view.onRender(() => this.pickPending());
     window.addEventListener('keydown', (event) => {
       if (!this.editing) return;
       if (event.key === 'Escape' && !document.querySelector('dialog[open]')) this.setMode(false);
@@ -160,6 +163,7 @@ export class BranchEditSession {
     }
     this.editing = on;
     this.selected = null;
+    this.pendingPick = undefined;
     this.view.holdTubes('editing', on); // the handles reshape tubes
     this.view.showHandles(null);
     this.view.canvas.classList.toggle('editing-branches', on);
@@ -209,6 +213,7 @@ export class BranchEditSession {
     this.tellStale(report);
     if (this.selected !== null && this.selected >= editor.branches().length) this.selected = null;
     this.showSelection();
+    this.pickPending();
   }
 
   private dropEditor(): void {
@@ -217,6 +222,7 @@ export class BranchEditSession {
     this.editor = undefined;
     this.mesh = undefined;
     this.selected = null;
+    this.pendingPick = undefined; // a click on a plant no longer shown
     this.view.showHandles(null);
   }
 
@@ -302,10 +308,23 @@ export class BranchEditSession {
   }
 
   private click(event: MouseEvent): void {
-    if (!this.editing || !this.editor || event.detail === 0) return;
+    if (!this.editing || event.detail === 0) return;
     // Not the end of a handle drag, nor of an orbit.
     if (this.press.handle || Math.hypot(event.clientX - this.press.x, event.clientY - this.press.y) > 4) return;
-    const triangle = this.view.pickTriangle(event.clientX, event.clientY);
+    this.pendingPick = { x: event.clientX, y: event.clientY };
+    this.pickPending();
+  }
+
+  /**
+   * Selects the branch under the click kept in {@link pendingPick}, once the editor's plant is on
+   * screen: at once, or (Edit mode pressed and the plant clicked while the core loads, or the
+   * editor's plant on its way to the GPU) after the frame that shows it.
+   */
+  private pickPending(): void {
+    const at = this.pendingPick;
+    if (!at || !this.editor || this.view.uploading) return;
+    this.pendingPick = undefined;
+    const triangle = this.view.pickTriangle(at.x, at.y);
     this.selected = triangle === null ? null : this.editor.branchAt(triangle);
     this.showSelection();
   }
