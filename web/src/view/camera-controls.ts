@@ -71,6 +71,9 @@ export class CameraControls {
     orbit.addEventListener('change', () => this.events.change());
     orbit.addEventListener('start', () => this.events.start());
     orbit.update();
+    // OrbitControls write `cursor: auto` on the element as they connect: the stylesheet's
+    // cursors (Reshape's crosshair) would never show.
+    this.element.style.removeProperty('cursor');
     this.orbit = orbit;
   }
 
