@@ -64,9 +64,14 @@ describe('editing a branch by its Bézier handles', () => {
     expect(await page.getByTestId('edit-branches').getAttribute('aria-pressed')).toBe('true');
     const canvas = (await page.locator(VIEW_CANVAS).boundingBox())!;
     const point = trunkPoint(before);
+    const view = page.locator(VIEW_CANVAS);
+    expect(await view.getAttribute('aria-busy'), 'busy while the core loads').toBe('true');
+    expect(await view.evaluate((element) => getComputedStyle(element).cursor)).toBe('progress');
     await page.mouse.click(canvas.x + point.x, canvas.y + point.y);
-    // The click may come before branch editing's core has loaded: it is picked once it has.
+    // The click came before branch editing's core had loaded: it is picked once it has.
     await expect.poll(() => page.evaluate(() => window.__meristem!.branches!.selectedPath()), { message: 'a branch is selected', timeout: 20_000 }).not.toBeNull();
+    expect(await view.getAttribute('aria-busy')).toBeNull();
+    expect(await view.evaluate((element) => getComputedStyle(element).cursor)).toBe('crosshair');
     await twoFrames(page);
     expect((await handles()).length).toBe(4);
     const shown = await canvasPicture(page, 'branches-handles.png');

@@ -196,13 +196,18 @@ export class BranchEditSession {
     const editPlant = this.editPlant;
     if (!editPlant) {
       const waiting = ++this.attachments;
-      loadBranchEditing().then(
-        (loaded) => {
-          this.editPlant = loaded;
-          if (waiting === this.attachments && !this.editor && (this.editing || this.doc.edits.length > 0)) this.attach();
-        },
-        (error: unknown) => this.host.tell('error', `Branch editing could not be loaded: ${String(error)}`),
-      );
+      // Busy (the pointer says so) until the core has loaded: a click meanwhile waits for it.
+      const canvas = this.view.canvas;
+      canvas.setAttribute('aria-busy', 'true');
+      loadBranchEditing()
+        .then(
+          (loaded) => {
+            this.editPlant = loaded;
+            if (waiting === this.attachments && !this.editor && (this.editing || this.doc.edits.length > 0)) this.attach();
+          },
+          (error: unknown) => this.host.tell('error', `Branch editing could not be loaded: ${String(error)}`),
+        )
+        .finally(() => canvas.removeAttribute('aria-busy'));
       return;
     }
     const { editor } = editPlant(shown.source, shown.options);
