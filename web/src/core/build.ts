@@ -271,8 +271,8 @@ export function copyMesh(result: MeshHolder, forGpu = false, spares: SpareArrays
     materialRanges: ownedArray(result.materialRanges()),
     lines: ownedArray(result.lines()),
     lineColors: ownedArray(result.lineColors()),
-    segmentEnds: ownedArray(result.segmentEnds()),
-    segmentColors: ownedArray(result.segmentColors()),
+    segmentEnds: spares.segmentEnds ?? ownedArray(result.segmentEnds()),
+    segmentColors: spares.segmentColors ?? ownedArray(result.segmentColors()),
     segmentModules: ownedArray(result.segmentModules()),
   }));
 }
@@ -280,8 +280,7 @@ export function copyMesh(result: MeshHolder, forGpu = false, spares: SpareArrays
 /** The arrays of `result` that went into spare buffers (none before the studio core is in use). */
 function spareArrays(result: WasmPlantBuild): SpareArrays {
   if (!spareCopies) return {};
-  const { vertices, triangles } = JSON.parse(result.stats()) as PlantStats;
-  return spareCopies.copy(result, vertices, triangles);
+  return spareCopies.copy(result, JSON.parse(result.stats()) as PlantStats);
 }
 
 /** Copies a wasm explanation into plain data and frees it. */

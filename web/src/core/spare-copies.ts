@@ -5,7 +5,7 @@ import type { PlantBuild as StudioPlantBuild } from '../../../crate/pkg/meristem
 import { SpareBuffers } from './spare-buffers';
 
 /** A studio-core build's methods that copy its big arrays into given ones. */
-type CopiesInto = Pick<StudioPlantBuild, 'positionsInto' | 'indicesInto' | 'uvsInto' | 'packedNormalsInto' | 'packedColorsInto'>;
+type CopiesInto = Pick<StudioPlantBuild, 'positionsInto' | 'indicesInto' | 'uvsInto' | 'packedNormalsInto' | 'packedColorsInto' | 'segmentEndsInto' | 'segmentColorsInto'>;
 
 type TypedArrayKind<T> = { new (buffer: ArrayBuffer, offset: number, length: number): T; BYTES_PER_ELEMENT: number };
 
@@ -16,17 +16,19 @@ export interface SpareArrays {
   uvs?: Float32Array;
   normals?: Int16Array;
   colors?: Uint8Array;
+  segmentEnds?: Float32Array;
+  segmentColors?: Float32Array;
 }
 
 export class SpareCopies {
   constructor(private readonly spares = new SpareBuffers()) {}
 
   /**
-   * The positions, indices, texture coordinates and packed normals and colours of `result` (with
-   * `vertices` and `triangles`) that fit a spare, copied into it; `result` is a build of the
-   * studio core (else nothing is copied).
+   * The positions, indices, texture coordinates, packed normals and colours and the segments' ends
+   * and colours of `result` (with `vertices`, `triangles` and `segments`) that fit a spare, copied
+   * into it; `result` is a build of the studio core (else nothing is copied).
    */
-  copy(result: object, vertices: number, triangles: number): SpareArrays {
+  copy(result: object, { vertices, triangles, segments }: { vertices: number; triangles: number; segments: number }): SpareArrays {
     if (!('positionsInto' in result)) return {};
     const core = result as unknown as CopiesInto;
     return {
@@ -35,6 +37,8 @@ export class SpareCopies {
       uvs: this.into(Float32Array, 2 * vertices, (out) => core.uvsInto(out)),
       normals: this.into(Int16Array, 3 * vertices, (out) => core.packedNormalsInto(out)),
       colors: this.into(Uint8Array, 3 * vertices, (out) => core.packedColorsInto(out)),
+      segmentEnds: this.into(Float32Array, 6 * segments, (out) => core.segmentEndsInto(out)),
+      segmentColors: this.into(Float32Array, 6 * segments, (out) => core.segmentColorsInto(out)),
     };
   }
 

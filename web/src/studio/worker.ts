@@ -181,8 +181,8 @@ addEventListener('message', async (event: MessageEvent<WorkerRequest | CoreMessa
       true, // the normals and colours packed for the GPU, not as floats
     );
     keep(id, inspector, source, options);
-    const { positions, indices, uvs } = build.mesh;
-    const sizes = [positions, indices, uvs, gpu.normals, gpu.colors].map((array) => array.byteLength);
+    const { positions, indices, uvs, segmentEnds, segmentColors } = build.mesh;
+    const sizes = [positions, indices, uvs, gpu.normals, gpu.colors, segmentEnds, segmentColors].map((array) => array.byteLength);
     reply({ kind: 'built', id, build, gpu, workerMillis: performance.now() - start, studioCore: studioCoreInUse() }, transferablesOf(build, gpu));
     // While the page draws it and the user edits: buffers for the next build of this size.
     prepareSpares(sizes);
