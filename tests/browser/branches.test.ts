@@ -62,9 +62,9 @@ describe('editing a branch by its Bézier handles', () => {
     });
     await page.getByTestId('edit-branches').click();
     expect(await page.getByTestId('edit-branches').getAttribute('aria-pressed')).toBe('true');
-    const canvas = (await page.locator(VIEW_CANVAS).boundingBox())!;
-    const point = trunkPoint(before);
     const view = page.locator(VIEW_CANVAS);
+    const canvas = (await view.boundingBox())!;
+    const point = trunkPoint(before);
     expect(await view.getAttribute('aria-busy'), 'busy while the core loads').toBe('true');
     expect(await view.evaluate((element) => getComputedStyle(element).cursor)).toBe('progress');
     await page.mouse.click(canvas.x + point.x, canvas.y + point.y);
