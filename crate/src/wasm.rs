@@ -640,7 +640,9 @@ macro_rules! mesh_getters {
             #[wasm_bindgen(js_name = segmentEndsInto)]
             pub fn segment_ends_into(&self, out: &js_sys::Float32Array) -> Result<(), JsError> {
                 let $plant = self;
-                copy_into(&$get.segment_ends(), out.length(), |values| out.copy_from(values))
+                copy_into(&$get.segment_ends(), out.length(), |values| {
+                    out.copy_from(values)
+                })
             }
 
             /// `segmentColors` copied into `out`, as [`Self::positions_into`].
@@ -648,7 +650,9 @@ macro_rules! mesh_getters {
             #[wasm_bindgen(js_name = segmentColorsInto)]
             pub fn segment_colors_into(&self, out: &js_sys::Float32Array) -> Result<(), JsError> {
                 let $plant = self;
-                copy_into(&$get.segment_colors(), out.length(), |values| out.copy_from(values))
+                copy_into(&$get.segment_colors(), out.length(), |values| {
+                    out.copy_from(values)
+                })
             }
 
             /// The module of the derived string that drew each segment of `segmentEnds`.
