@@ -78,11 +78,11 @@ export function useStudioCore(core: typeof studioBuildType, copies?: SpareCopies
 }
 
 /**
- * Spare buffers of these sizes (bytes) for the next build for the GPU's biggest arrays, their
- * pages touched while the build worker waits (./spare-buffers.ts); nothing until the studio core
- * is in use.
+ * Spare buffers of these sizes (bytes; by default the sizes of the last build's arrays that go
+ * into spares) for the next build for the GPU's biggest arrays, their pages touched while the
+ * build worker waits (./spare-buffers.ts); nothing until the studio core is in use.
  */
-export function prepareSpares(sizes: readonly number[]): void {
+export function prepareSpares(sizes?: readonly number[]): void {
   spareCopies?.prepare(sizes);
 }
 

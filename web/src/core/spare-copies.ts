@@ -21,6 +21,9 @@ export interface SpareArrays {
 }
 
 export class SpareCopies {
+  /** The bytes of each array the last {@link copy} was given, taken or not: the next build's likely sizes. */
+  private copied: number[] = [];
+
   constructor(private readonly spares = new SpareBuffers()) {}
 
   /**
@@ -29,6 +32,7 @@ export class SpareCopies {
    * into it; `result` is a build of the studio core (else nothing is copied).
    */
   copy(result: object, { vertices, triangles, segments }: { vertices: number; triangles: number; segments: number }): SpareArrays {
+    this.copied = [];
     if (!('positionsInto' in result)) return {};
     const core = result as unknown as CopiesInto;
     return {
@@ -42,14 +46,19 @@ export class SpareCopies {
     };
   }
 
-  /** Spares of these sizes (bytes) for the next build: see {@link SpareBuffers.prepare}. */
-  prepare(sizes: readonly number[]): void {
+  /**
+   * Spares of these sizes (bytes) for the next build, by default those of the arrays of the last
+   * {@link copy} (an edit of a big plant seldom changes them): see {@link SpareBuffers.prepare}.
+   */
+  prepare(sizes: readonly number[] = this.copied): void {
     this.spares.prepare(sizes);
   }
 
   /** `length` values written by `write` into a spare of their size, or `undefined` when there is none. */
   private into<T>(Kind: TypedArrayKind<T>, length: number, write: (out: T) => void): T | undefined {
-    const spare = this.spares.take(length * Kind.BYTES_PER_ELEMENT);
+    const bytes = length * Kind.BYTES_PER_ELEMENT;
+    this.copied.push(bytes);
+    const spare = this.spares.take(bytes);
     if (!spare) return undefined;
     const out = new Kind(spare, 0, length);
     write(out);

@@ -181,11 +181,9 @@ addEventListener('message', async (event: MessageEvent<WorkerRequest | CoreMessa
       true, // the normals and colours packed for the GPU, not as floats
     );
     keep(id, inspector, source, options);
-    const { positions, indices, uvs, segmentEnds, segmentColors } = build.mesh;
-    const sizes = [positions, indices, uvs, gpu.normals, gpu.colors, segmentEnds, segmentColors].map((array) => array.byteLength);
     reply({ kind: 'built', id, build, gpu, workerMillis: performance.now() - start, studioCore: studioCoreInUse() }, transferablesOf(build, gpu));
     // While the page draws it and the user edits: buffers for the next build of this size.
-    prepareSpares(sizes);
+    prepareSpares();
   } catch (error) {
     // A panic carries the core's own message; anything else thrown here is a bug of this file.
     const message = error instanceof CoreCrashed ? error.message : error instanceof Error ? `${error.name}: ${error.message}` : String(error);
