@@ -45,10 +45,7 @@ fn main() {
     println!("chains: {ms:.2} ms");
     let chains = parts::chains(skeleton, unit);
     let ms = fastest(5, || {
-        std::hint::black_box(parts::chain_ends(
-            skeleton,
-            chains.iter().map(Vec::as_slice),
-        ));
+        std::hint::black_box(parts::chain_ends(skeleton, chains.iter()));
     });
     println!(
         "caps and rounded ends of {} chains: {ms:.2} ms",

@@ -230,7 +230,7 @@ impl Asked {
 /// The chains (axes cut where widths are zero, joints sharp, smoothness changes or a wide ring
 /// would overrun a short segment), as
 /// [`super::build_mesh`] cuts them.
-pub fn chains(skeleton: &Skeleton, unit: f64) -> Vec<Vec<u32>> {
+pub fn chains(skeleton: &Skeleton, unit: f64) -> super::Chains {
     super::chains(skeleton, unit)
 }
 
