@@ -247,6 +247,19 @@ pub(super) fn clamp_number(v: &mut f64) -> bool {
     changed
 }
 
+/// Whether a segment from `start` drawn by the turtle `t` holds only what [`clamp_number`] and
+/// [`clamp_direction`] keep as it is: its ends and width within ±[`MAX_COORDINATE`] (not NaN), its
+/// frame finite.
+#[inline]
+pub(super) fn segment_within_bounds(start: DVec3, t: &super::state::TurtleState) -> bool {
+    let limit = DVec3::splat(MAX_COORDINATE);
+    start.abs().cmple(limit).all()
+        & t.position.abs().cmple(limit).all()
+        & (t.width.abs() <= MAX_COORDINATE)
+        & t.left.is_finite()
+        & t.up.is_finite()
+}
+
 /// Each component of `v` clamped ([`clamp_number`]).
 pub(super) fn clamp_point(v: &mut DVec3) -> bool {
     let [mut x, mut y, mut z] = v.to_array();
@@ -270,13 +283,24 @@ impl Skeleton {
     /// that needed it in [`Skeleton::clamped`]: every mesh and every file written from the
     /// skeleton then holds finite numbers. Positions past that are far beyond any real plant.
     pub fn clamp_to_finite(&mut self) {
+        self.clamp(true);
+    }
+
+    /// [`Self::clamp_to_finite`], the segments only when `segments` (false: the caller knows that
+    /// none needs it, see [`segment_within_bounds`]).
+    pub(super) fn clamp(&mut self, segments: bool) {
         let mut first: Option<u32> = None;
         let mut note = |changed: bool, module: u32| {
             if changed {
                 first = Some(first.map_or(module, |f| f.min(module)));
             }
         };
-        for s in &mut self.segments {
+        let checked: &mut [Segment] = if segments {
+            &mut self.segments
+        } else {
+            &mut []
+        };
+        for s in checked {
             let changed = clamp_point(&mut s.start)
                 | clamp_point(&mut s.end)
                 | clamp_number(&mut s.width)

@@ -158,7 +158,7 @@ impl Canvas for Sketch {
 
     fn widths_set(&mut self) {}
 
-    fn finish(&mut self, end: DVec3, _widths: Option<(&Adjustments, f64, f64)>) {
+    fn finish(&mut self, end: DVec3, _widths: Option<(&Adjustments, f64, f64)>, _: bool) {
         // Widths are not drawn; the rest is clamped as the skeleton's is.
         self.others.end = end;
         self.others.clamp_to_finite();

@@ -410,6 +410,32 @@ fn a_sketch_clamps_as_the_skeleton_does() {
 }
 
 #[test]
+fn the_skeleton_clamps_what_was_drawn_past_the_bounds_and_only_that() {
+    // The interpreter checks each segment as it draws it and the skeleton clamps its segments
+    // only when one needs it; polygons are clamped in any case. (source, first clamped module)
+    for (src, first) in [
+        ("axiom: F(1)F(2)\n", None),
+        ("axiom: f(1e31)F(1)\n", Some(1)),
+        ("axiom: F!(1e40)F\n", Some(2)),
+        ("axiom: F(1){.f(1e31).}\n", Some(1)),
+    ] {
+        let (model, string) = model_and_string(src);
+        let skeleton = interpret(&model, &string);
+        assert_eq!(skeleton.clamped, first, "{src}");
+        let mut again = skeleton.clone();
+        again.clamp_to_finite();
+        assert_eq!(
+            again.segments, skeleton.segments,
+            "{src}: nothing left to clamp"
+        );
+        assert_eq!(
+            again.polygons, skeleton.polygons,
+            "{src}: nothing left to clamp"
+        );
+    }
+}
+
+#[test]
 fn a_flat_sketch_and_a_solid_one() {
     let (model, string) = model_and_string(PLAIN_SKETCHES[0]);
     assert!(sketch(&model, &string).is_flat());
