@@ -183,6 +183,78 @@ mod wasm {
         }
     }
 
+    /// A mesh's bounds are the box of its positions, each bound the first of its equal values met
+    /// in order (a zero's sign): through the SIMD path under wasm32 with `+simd128`, whose lanes
+    /// meet the points in another order.
+    #[wasm_bindgen_test]
+    fn mesh_bounds_are_the_box_of_the_positions_in_order() {
+        let box_of = |positions: &[f32]| {
+            let (mut min, mut max) = ([f32::INFINITY; 3], [f32::NEG_INFINITY; 3]);
+            for p in positions.chunks_exact(3) {
+                for k in 0..3 {
+                    if p[k] < min[k] {
+                        min[k] = p[k];
+                    }
+                    if p[k] > max[k] {
+                        max[k] = p[k];
+                    }
+                }
+            }
+            [min.map(f64::from), max.map(f64::from)]
+        };
+        // Bounds of zero reached by zeros of both signs (the first zero met is the bound), with
+        // negative values and a NaN: seven points (a group of four and three left over); eight
+        // (two groups) whose greatest x is -0 in the first group and +0 in the second, in the
+        // lane that the lanes are folded from first; and 13.
+        let seven = [
+            -0.0,
+            1.0,
+            -2.0, //
+            0.0,
+            0.0,
+            -3.0, //
+            -2.5,
+            -0.0,
+            0.0, //
+            -3.0,
+            4.0,
+            -0.0, //
+            -1.0,
+            0.0,
+            -5.0, //
+            0.0,
+            2.0,
+            f32::NAN, //
+            -0.0,
+            0.0,
+            -1.5,
+        ];
+        let eight = [
+            -1.0, 1.0, 1.0, //
+            -0.0, 1.0, 1.0, //
+            -2.0, 1.0, 1.0, //
+            -3.0, 1.0, 1.0, //
+            0.0, 1.0, 1.0, //
+            -4.0, 1.0, 1.0, //
+            -5.0, 1.0, 1.0, //
+            -6.0, 1.0, 1.0,
+        ];
+        let thirteen = [&seven[..], &[0.5, -0.0, 0.0, -0.0, 6.0, -5.0].repeat(3)].concat();
+        for positions in [&seven[..], &eight, &thirteen] {
+            let mesh = meristem::mesh::MeshBuffers {
+                positions: positions.to_vec(),
+                ..Default::default()
+            };
+            let (got, want) = (mesh.bounds(), box_of(positions));
+            let bits = |b: [[f64; 3]; 2]| b.map(|v| v.map(f64::to_bits));
+            assert_eq!(
+                bits(got),
+                bits(want),
+                "{positions:?}: {got:?} against {want:?}"
+            );
+        }
+    }
+
     #[wasm_bindgen_test]
     fn the_tables_cross_the_boundary() {
         assert_eq!(version(), env!("CARGO_PKG_VERSION"));

@@ -225,10 +225,15 @@ impl MeshBuffers {
         }
         // In f32 by comparisons: converting every coordinate and `f64::min`'s NaN handling were
         // about a tenth of the whole mesh stage (the stats ask for these bounds after every
-        // mesh). Exact: f32 to f64 is.
-        let mut min = [f32::INFINITY; 3];
-        let mut max = [f32::NEG_INFINITY; 3];
-        crate::turtle::take_points(points, &mut min, &mut max);
+        // mesh). Exact: f32 to f64 is. Four points at a time with WebAssembly SIMD (`f32_box`:
+        // 1.24d n = 10's mesh stage about 1.3 ms faster), whose lanes meet equal values in
+        // another order: a bound of zero is found again in order, as the sign of the first zero
+        // met (`take_points` keeps the first of equal values).
+        let (mut min, mut max) = crate::turtle::f32_box(points);
+        if min.iter().chain(&max).any(|&v| v == 0.0) {
+            (min, max) = ([f32::INFINITY; 3], [f32::NEG_INFINITY; 3]);
+            crate::turtle::take_points(points, &mut min, &mut max);
+        }
         [min.map(f64::from), max.map(f64::from)]
     }
 }

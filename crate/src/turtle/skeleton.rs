@@ -160,9 +160,10 @@ impl Extent {
     }
 }
 
-/// The smallest and the largest of each coordinate of `points` (x, y, z `f32`s), a NaN skipped.
+/// The smallest and the largest of each coordinate of `points` (x, y, z `f32`s), a NaN skipped;
+/// where a bound is zero, its sign may be another zero's than [`take_points`] gives.
 #[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
-fn f32_box(points: &[f32]) -> ([f32; 3], [f32; 3]) {
+pub(crate) fn f32_box(points: &[f32]) -> ([f32; 3], [f32; 3]) {
     let mut min = [f32::INFINITY; 3];
     let mut max = [f32::NEG_INFINITY; 3];
     take_points(points, &mut min, &mut max);
@@ -173,7 +174,7 @@ fn f32_box(points: &[f32]) -> ([f32; 3], [f32; 3]) {
 /// lane its own bound of the coordinate it holds (the lanes' coordinates repeat every three
 /// vectors), the lanes' bounds and the last points folded together at the end.
 #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
-fn f32_box(points: &[f32]) -> ([f32; 3], [f32; 3]) {
+pub(crate) fn f32_box(points: &[f32]) -> ([f32; 3], [f32; 3]) {
     use core::arch::wasm32::{f32x4_pmax, f32x4_pmin, f32x4_splat, v128, v128_load, v128_store};
     let mut low = [f32x4_splat(f32::INFINITY); 3];
     let mut high = [f32x4_splat(f32::NEG_INFINITY); 3];
