@@ -479,6 +479,7 @@ impl Chains {
         self.ends.len()
     }
 
+    /// No chain at all (no tubes).
     pub fn is_empty(&self) -> bool {
         self.ends.is_empty()
     }
@@ -911,11 +912,12 @@ mod tests {
         }
     }
 
-    /// The mesh of `skeleton` with 8 sides and widths in units of 0.1, checked for consistency.
+    /// The chains of `skeleton` as a list of lists, to compare.
     fn chain_lists(skeleton: &Skeleton, unit: f64) -> Vec<Vec<u32>> {
         chains(skeleton, unit).iter().map(<[u32]>::to_vec).collect()
     }
 
+    /// The mesh of `skeleton` with 8 sides and widths in units of 0.1, checked for consistency.
     fn checked_mesh(skeleton: &Skeleton) -> MeshBuffers {
         let mesh = build_mesh(skeleton, &absolute(0.1));
         assert_eq!(mesh.check(), Ok(()));
