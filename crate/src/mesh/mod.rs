@@ -227,12 +227,17 @@ impl MeshBuffers {
         // about a tenth of the whole mesh stage (the stats ask for these bounds after every
         // mesh). Exact: f32 to f64 is. Four points at a time with WebAssembly SIMD (`f32_box`:
         // 1.24d n = 10's mesh stage about 1.3 ms faster), whose lanes meet equal values in
-        // another order: a bound of zero is found again in order, as the sign of the first zero
-        // met (`take_points` keeps the first of equal values).
+        // another order. That matters for a bound of zero only: `take_points` keeps the first
+        // of equal values, so its sign is the first zero's of that coordinate, looked up from the
+        // start (a plant's base is often at 0, and its first vertex too: 1.24d's is).
         let (mut min, mut max) = crate::turtle::f32_box(points);
-        if min.iter().chain(&max).any(|&v| v == 0.0) {
-            (min, max) = ([f32::INFINITY; 3], [f32::NEG_INFINITY; 3]);
-            crate::turtle::take_points(points, &mut min, &mut max);
+        for k in 0..3 {
+            for bound in [&mut min[k], &mut max[k]] {
+                if *bound == 0.0 {
+                    let mut values = points.chunks_exact(3).map(|p| p[k]);
+                    *bound = values.find(|&v| v == 0.0).unwrap_or(*bound);
+                }
+            }
         }
         [min.map(f64::from), max.map(f64::from)]
     }

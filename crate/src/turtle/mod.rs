@@ -16,7 +16,7 @@ mod skeleton;
 mod sketch;
 mod state;
 
-pub(crate) use skeleton::{f32_box, take_points};
+pub(crate) use skeleton::f32_box;
 pub use skeleton::{
     Extent, Polygon, QueryValue, Segment, Skeleton, Sphere, Surface, SurfaceKind, MAX_COORDINATE,
 };

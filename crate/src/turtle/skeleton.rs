@@ -207,8 +207,9 @@ pub(crate) fn f32_box(points: &[f32]) -> ([f32; 3], [f32; 3]) {
 
 /// Lowers `min` and raises `max` to the coordinates of `points` (x, y, z `f32`s): by
 /// comparisons, so a NaN changes nothing (as `f64::min` skips it), the first of equal values kept.
-/// Also the mesh's bounds ([`crate::mesh::MeshBuffers::bounds`]).
-pub(crate) fn take_points(points: &[f32], min: &mut [f32; 3], max: &mut [f32; 3]) {
+/// What [`f32_box`] computes without SIMD, and the order the mesh's bounds keep
+/// ([`crate::mesh::MeshBuffers::bounds`]).
+fn take_points(points: &[f32], min: &mut [f32; 3], max: &mut [f32; 3]) {
     // In locals, one comparison each spelled out: the first plant's core (opt-level "s") neither
     // unrolls the loop over x, y, z nor keeps the arrays behind the references in registers.
     let ([mut x0, mut y0, mut z0], [mut x1, mut y1, mut z1]) = (*min, *max);
