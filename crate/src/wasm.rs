@@ -542,7 +542,8 @@ macro_rules! mesh_getters {
 
             /// `positions` copied into `out` (a `Float32Array` of that length): the studio's build
             /// worker copies a big mesh into buffers it made ahead (`web/src/core/spare-buffers.ts`)
-            /// rather than into new ones. Throws when the lengths differ; so do the four below.
+            /// rather than into new ones. Throws when the lengths differ, as the other `…Into`
+            /// getters do.
             #[cfg(feature = "studio-extras")]
             #[wasm_bindgen(js_name = positionsInto)]
             pub fn positions_into(&self, out: &js_sys::Float32Array) -> Result<(), JsError> {
@@ -618,6 +619,27 @@ macro_rules! mesh_getters {
             pub fn line_colors(&self) -> js_sys::Float32Array {
                 let $plant = self;
                 js_sys::Float32Array::from(&$get.mesh.line_colors[..])
+            }
+
+            /// `lines` copied into `out`, as [`Self::positions_into`]: the build worker's sketch of
+            /// a big plant, the first thing on screen after an edit.
+            #[cfg(feature = "studio-extras")]
+            #[wasm_bindgen(js_name = linesInto)]
+            pub fn lines_into(&self, out: &js_sys::Float32Array) -> Result<(), JsError> {
+                let $plant = self;
+                copy_into(&$get.mesh.lines, out.length(), |values| {
+                    out.copy_from(values)
+                })
+            }
+
+            /// `lineColors` copied into `out`, as [`Self::positions_into`].
+            #[cfg(feature = "studio-extras")]
+            #[wasm_bindgen(js_name = lineColorsInto)]
+            pub fn line_colors_into(&self, out: &js_sys::Float32Array) -> Result<(), JsError> {
+                let $plant = self;
+                copy_into(&$get.mesh.line_colors, out.length(), |values| {
+                    out.copy_from(values)
+                })
             }
 
             /// Every segment as a line, whatever the mesh (the studio's Lines mode): two ends

@@ -102,7 +102,7 @@ mod native {
 #[cfg(target_arch = "wasm32")]
 mod wasm {
     use super::*;
-    use meristem::wasm::{build, version, vocabulary, BuildOptionsObject};
+    use meristem::wasm::{build, build_sketch, version, vocabulary, BuildOptionsObject};
     use wasm_bindgen::{JsCast, JsValue};
     use wasm_bindgen_test::wasm_bindgen_test;
 
@@ -165,6 +165,17 @@ mod wasm {
         assert!(b
             .packed_colors_into(&js_sys::Uint8Array::new_with_length(1))
             .is_err());
+        // A sketch's lines and their colours, the same way.
+        let sketch = build_sketch("#angle 90\naxiom: F+F", None);
+        let lines = sketch.lines().to_vec();
+        assert_eq!(lines.len(), 12);
+        let out = js_sys::Float32Array::new_with_length(12);
+        sketch.lines_into(&out).unwrap();
+        assert_eq!(out.to_vec(), lines);
+        sketch.line_colors_into(&out).unwrap();
+        assert_eq!(out.to_vec(), sketch.line_colors().to_vec());
+        assert!(sketch.lines_into(&short).is_err());
+        assert!(sketch.line_colors_into(&short).is_err());
     }
 
     /// The packed normals are what the page once computed, `Math.round` of the clamped, scaled

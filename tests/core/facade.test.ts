@@ -4,7 +4,7 @@ import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { beforeAll, describe, expect, it } from 'vitest';
-import { buildPlant, byteOffsetToUtf16, initCore, inspectPlant, NOT_REWRITTEN, prepareSpares, type Bounds, type PlantBuild } from '../../web/src/core';
+import { buildPlant, byteOffsetToUtf16, initCore, inspectPlant, NOT_REWRITTEN, prepareSpares, type Bounds, type PlantBuild, type PlantSketch } from '../../web/src/core';
 
 const repoRoot = fileURLToPath(new URL('../..', import.meta.url));
 const EXAMPLE = 'public/examples/abop-1.24d.lsys';
@@ -190,6 +190,27 @@ describe('inspectPlant for the GPU (what the build worker sends the view)', () =
     const bytes = (array: ArrayBufferView) => Buffer.from(array.buffer, array.byteOffset, array.byteLength);
     arrays.forEach((array, k) => expect(bytes(array).equals(bytes(before[k])), `array ${k}`).toBe(true));
     expect(again.build.mesh.ranges).toEqual(first.build.mesh.ranges);
+  });
+
+  it('copies a big plant’s sketch into the spare buffers prepared for it: the same lines', () => {
+    // 1.24d at n = 10: 116,050 lines, their ends and their colours 2.8 MB each.
+    const source = readFileSync(new URL(`../../${EXAMPLE}`, import.meta.url), 'utf8');
+    const sketchOf = () => {
+      const sketches: PlantSketch[] = [];
+      inspectPlant(source, { iterations: 10 }, { minSegments: 1, show: (s) => sketches.push(s) }, undefined, true).inspector.free();
+      expect(sketches).toHaveLength(1);
+      return [sketches[0].lines, sketches[0].lineColors];
+    };
+    const first = sketchOf();
+    const sizes = first.map((array) => array.byteLength);
+    expect(sizes).toEqual([2_785_200, 2_785_200]);
+    const spareSizes = sizes.map((bytes) => Math.round(1.125 * bytes));
+    prepareSpares(spareSizes);
+    const again = sketchOf();
+    again.forEach((array, k) => {
+      expect(array.buffer.byteLength, `array ${k}'s buffer`).toBe(spareSizes[k]);
+      expect(Buffer.from(array.buffer, 0, array.byteLength).equals(Buffer.from(first[k].buffer)), `array ${k}`).toBe(true);
+    });
   });
 });
 

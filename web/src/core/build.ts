@@ -180,9 +180,16 @@ function runSketched(
   const result = runBuildWith(core, source, { ...options, sketch: true }, onProgress);
   try {
     if (result.ok) {
-      const segments = (JSON.parse(result.stats()) as PlantStats).segments;
+      const { segments, lines } = JSON.parse(result.stats()) as PlantStats;
       if (segments >= request.minSegments) {
-        request.show({ lines: ownedArray(result.lines()), lineColors: ownedArray(result.lineColors()), flat: result.flat, segments });
+        // Into spare buffers where there are some (the build worker's): the first frame waits for these.
+        const spares = guarded(() => spareCopies?.copySketch(result, lines) ?? {});
+        request.show({
+          lines: spares.lines ?? ownedArray(result.lines()),
+          lineColors: spares.lineColors ?? ownedArray(result.lineColors()),
+          flat: result.flat,
+          segments,
+        });
       }
     }
     if (result.ok) onProgress?.({ stage: 'meshing', step: 0, steps: 0 });

@@ -11,8 +11,8 @@ export const MIN_SPARE_BYTES = 1 << 20;
 
 /**
  * At most this many bytes of spares are held: enough for a plant of about a million vertices (1.24d
- * at n = 10 needs 55 MB, its segments' ends and colours included), where the pages cost 25 ms;
- * bigger plants get some of theirs.
+ * at n = 10 needs 61 MB, its segments' ends and colours and its sketch's lines included), where the
+ * pages cost 25 ms; bigger plants get some of theirs.
  */
 export const MAX_SPARE_BYTES = 64 << 20;
 
