@@ -137,6 +137,47 @@ describe('typing while a 100,000-segment tree rebuilds', () => {
     expect(problems).toEqual([]);
   }, 120_000);
 
+  it('gives each sketch a frame of its own in the Lines mode too, where the build follows it closely', async () => {
+    // Without tubes the build comes a few milliseconds after its sketch; applied before the
+    // sketch's frame, it took that frame, and nothing new showed until the build was drawn (in
+    // about half the keystrokes, measured 2026-11-28).
+    let before = await generation(page);
+    await page.getByTestId('render-lines').click();
+    expect(await nextBuild(page, before, 60_000)).toBe('ok');
+    try {
+      expect(await page.getByTestId('viewport').getAttribute('data-render')).toBe('lines');
+      await twoFrames(page);
+      await page.locator('[data-testid=editor] .cm-line', { hasText: '#angle' }).click();
+      await page.keyboard.press('End');
+      const frames: { sketched: number | null; rendered: number; keydown: number }[] = [];
+      for (const key of ['Backspace', '0', 'Backspace', '5', 'Backspace', '0', 'Backspace', '5']) {
+        await page.evaluate(() => addEventListener('keydown', (e) => ((window as unknown as { __keydown: number }).__keydown = e.timeStamp), { capture: true, once: true }));
+        before = await generation(page);
+        await page.keyboard.press(key);
+        expect(await nextBuild(page, before, 60_000)).toBe('ok');
+        await twoFrames(page);
+        frames.push(
+          await page.evaluate(() => ({
+            sketched: window.__meristem!.sketched,
+            rendered: window.__meristem!.rendered!.at,
+            keydown: (window as unknown as { __keydown: number }).__keydown,
+          })),
+        );
+      }
+      for (const { sketched, rendered, keydown } of frames) {
+        expect(sketched, 'the sketch was drawn after the keystroke').toBeGreaterThan(keydown);
+        expect(sketched!, 'in a frame before the build’s').toBeLessThan(rendered);
+      }
+    } finally {
+      // Back to the Tubes mode, which the tests below are about.
+      before = await generation(page);
+      await page.getByTestId('render-lines').click();
+      expect(await nextBuild(page, before, 60_000)).toBe('ok');
+    }
+    expect(await page.getByTestId('viewport').getAttribute('data-render')).toBe('tubes');
+    expect(problems).toEqual([]);
+  }, 120_000);
+
   it('compiles no shader program for an edit: its frames reuse the programs on the GPU', async () => {
     // A program linked during an edit blocks the page's thread on the GPU's compiler at its first
     // use (5-10 ms on SwiftShader, in the frame of the edited plant). The ground grid made a new

@@ -11,6 +11,9 @@ import type { BuildClient, BuildOutcome, BuildResult } from './worker-client';
 /** A build not delivered after this long (ms) is shown as under way, with its Stop button. */
 export const BUILDING_AFTER = 300;
 
+/** At most this long (ms), a build waits for the frame of its sketch (see `LivePreview.sketchFrame`). */
+const SKETCH_FRAME_WAIT = 250;
+
 /** What the preview reads and writes on the page. */
 export interface LivePreviewParts {
   client: BuildClient;
@@ -78,6 +81,14 @@ export class LivePreview {
   private buildingTimer: ReturnType<typeof setTimeout> | undefined;
   /** True while the status line says "Building…". */
   private building = false;
+  /**
+   * Settles once the sketch shown last has had a frame of its own; undefined when it has. A build
+   * that arrives before that frame (the Lines mode's can, a few milliseconds after its sketch)
+   * waits for it: applied at once, it took the frame, and nothing new showed until the build was
+   * drawn (`npm run bench:studio`, the Lines mode: the first frame 61-70 ms after the keystroke,
+   * 33-38 with the wait).
+   */
+  private sketchFrame: Promise<void> | undefined;
 
   constructor(private readonly parts: LivePreviewParts) {
     parts.stop?.addEventListener('click', () => this.stop());
@@ -137,7 +148,15 @@ export class LivePreview {
           if (this.building) this.showBuilding();
         },
       })
-      .then((outcome) => this.deliver(outcome, key));
+      .then(async (outcome) => {
+        // A build that arrives before its sketch had a frame waits for that frame ({@link
+        // sketchFrame}); if the text changed meanwhile, it is not shown (as if superseded).
+        if (this.sketchFrame && outcome.kind === 'built') {
+          await this.sketchFrame;
+          if (key !== this.requestedKey) return void outcome.result.inspector.free();
+        }
+        this.deliver(outcome, key);
+      });
   }
 
   /** Says the build is under way (stage or step, time so far) and offers Stop; again each second. */
@@ -186,6 +205,21 @@ export class LivePreview {
   private sketch(sketch: PlantSketch, key: string): void {
     if (key !== this.requestedKey) return;
     this.parts.view.showSketch(sketch.lines, sketch.lineColors, sketch.flat);
+    const frame = new Promise<void>((resolve) => {
+      const done = () => {
+        clearTimeout(timer);
+        stop();
+        resolve();
+      };
+      // A task after the frame's own (what that task does goes into the frame), or at the latest
+      // after SKETCH_FRAME_WAIT: a hidden page draws no frames, and its builds go on arriving.
+      const stop = this.parts.view.onRender(() => setTimeout(done, 0));
+      const timer = setTimeout(done, SKETCH_FRAME_WAIT);
+    });
+    this.sketchFrame = frame;
+    void frame.then(() => {
+      if (this.sketchFrame === frame) this.sketchFrame = undefined;
+    });
     this.markStale(false, '');
     // The status line keeps the last report until the build: a second text change per keystroke
     // costs a compositor pass that, without a GPU, delays the tubes' frame by a second.
