@@ -182,7 +182,7 @@ function runSketched(
     if (result.ok) {
       const { segments, lines } = JSON.parse(result.stats()) as PlantStats;
       if (segments >= request.minSegments) {
-        // Into spare buffers where there are some (the build worker's): the first frame waits for these.
+        // Into spare buffers where there are some (the build worker's): the sketch leaves once they are copied.
         const spares = guarded(() => spareCopies?.copySketch(result, lines) ?? {});
         request.show({
           lines: spares.lines ?? ownedArray(result.lines()),

@@ -205,10 +205,11 @@ export class LivePreview {
   private sketch(sketch: PlantSketch, key: string): void {
     if (key !== this.requestedKey) return;
     this.parts.view.showSketch(sketch.lines, sketch.lineColors, sketch.flat);
-    const frame = new Promise<void>((resolve) => {
+    const frame: Promise<void> = new Promise((resolve) => {
       const done = () => {
         clearTimeout(timer);
         stop();
+        if (this.sketchFrame === frame) this.sketchFrame = undefined;
         resolve();
       };
       // A task after the frame's own (what that task does goes into the frame), or at the latest
@@ -217,9 +218,6 @@ export class LivePreview {
       const timer = setTimeout(done, SKETCH_FRAME_WAIT);
     });
     this.sketchFrame = frame;
-    void frame.then(() => {
-      if (this.sketchFrame === frame) this.sketchFrame = undefined;
-    });
     this.markStale(false, '');
     // The status line keeps the last report until the build: a second text change per keystroke
     // costs a compositor pass that, without a GPU, delays the tubes' frame by a second.
