@@ -473,3 +473,49 @@ describe('the view', () => {
     await context.close();
   });
 });
+
+describe('a grammar error on a phone', () => {
+  it('is read in full through Problems: a touch screen has no hover for the underline’s tooltip, and the status line has room for a few words', async () => {
+    const context = await browser.newContext({ viewport: { width: 390, height: 844 }, deviceScaleFactor: 2, isMobile: true, hasTouch: true });
+    const { page, problems } = await openAt(inject('studioUrl'), context);
+    await page.evaluate(() => window.__meristem?.ready);
+    const showProblems = page.getByTestId('show-problems');
+    expect(await showProblems.isVisible(), 'no problems with the example').toBe(false);
+    // Two errors, typed in the grammar's pane; then back to the plant's.
+    await page.getByTestId('pane-toggle').tap();
+    const before = await generation(page);
+    await page.getByTestId('editor').locator('.cm-content').tap();
+    await page.keyboard.press('Control+A');
+    await page.keyboard.insertText('#angle 25\naxiom: X\nX -> F[+X]F[-X+X\nF -> F(F\n');
+    expect(await nextBuild(page, before)).toBe('stale');
+    const status = page.getByTestId('status');
+    expect(await status.evaluate((s) => s.scrollWidth > s.clientWidth), 'the status line cuts its message short').toBe(true);
+    await page.getByTestId('pane-toggle').tap();
+    expect(await page.getByTestId('editor').isVisible()).toBe(false);
+    // Problems: the grammar's pane again, with every message in full under the text.
+    await showProblems.tap();
+    const list = page.locator('[data-testid=editor] .cm-panel-lint');
+    await list.waitFor();
+    const items = list.locator('li');
+    await expect.poll(() => items.count()).toBe(2);
+    expect(await items.allTextContents()).toEqual(["'[' is never closed by a ']'E0109", "'(' is never closed by a ')'E0116"]);
+    for (const item of await items.all()) {
+      const box = (await item.boundingBox())!;
+      // (CodeMirror sets the coloured left border a pixel out.)
+      expect(box.x >= -1 && box.x + box.width <= 390 && box.y >= 0 && box.y + box.height <= 844, `on screen: ${JSON.stringify(box)}`).toBe(true);
+    }
+    // Choosing one goes to it in the text.
+    await items.nth(1).tap();
+    const cursorLine = () => page.evaluate(() => document.querySelector('[data-testid=editor] .cm-activeLine')?.textContent);
+    await expect.poll(cursorLine).toBe('F -> F(F');
+    // Mended, the button goes.
+    const mended = await generation(page);
+    await page.getByTestId('editor').locator('.cm-content').tap();
+    await page.keyboard.press('Control+A');
+    await page.keyboard.insertText('#angle 25\naxiom: X\nX -> F[+X]F[-X]+X\nF -> FF\n');
+    expect(await nextBuild(page, mended)).toBe('ok');
+    expect(await showProblems.isVisible()).toBe(false);
+    expect(problems).toEqual([]);
+    await context.close();
+  });
+});

@@ -62,6 +62,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
     view,
     status: els.status,
     stop: els.stopBuild,
+    problems: els.showProblems,
     staleBadge: els.staleBadge,
     inspectorStale: els.inspectorStale,
     workerReplaced: () => {
@@ -160,6 +161,10 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
     browserStorage(),
   );
   els.stopBuild.addEventListener('click', () => grammarEditor.focus()); // the text stays, to edit on
+  els.showProblems.addEventListener('click', () => {
+    layout.showPane('grammar'); // on a narrow screen the list is under the text, in the grammar's pane
+    grammarEditor.showProblems();
+  });
 
   // Options: the derivation's and the view's; a change of either asks for a build (meshing ones).
   derivation.onChange(() => preview.rebuild());

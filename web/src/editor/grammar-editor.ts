@@ -2,7 +2,7 @@
 import { basicSetup } from 'codemirror';
 import { Decoration, EditorView, type DecorationSet } from '@codemirror/view';
 import { type EditorState, StateEffect, StateField, Transaction } from '@codemirror/state';
-import { forceLinting } from '@codemirror/lint';
+import { forceLinting, openLintPanel } from '@codemirror/lint';
 import { isolateHistory } from '@codemirror/commands';
 import { grammarCompletion } from './completion';
 import { grammarSupport } from './language';
@@ -86,6 +86,7 @@ export function createGrammarEditor(options: GrammarEditorOptions, selection?: {
     cursor: () => (upcoming ?? view.state).selection.main.head,
     focus: () => view.focus(),
     requestMeasure: () => view.requestMeasure(),
+    showProblems: () => openLintPanel(view),
     loaded: Promise.resolve(),
     refreshDiagnostics: () => {
       view.dispatch({ effects: relint.of(null) });

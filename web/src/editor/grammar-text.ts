@@ -50,6 +50,12 @@ export interface GrammarEditor {
   /** Marks a range (a production picked elsewhere) and scrolls it into view; null clears the mark. */
   markProduction(range: { from: number; to: number } | null): void;
   /**
+   * Opens the list of the text's errors and warnings under it (CodeMirror's lint panel: each in
+   * full; choosing one moves the cursor to it) with the keyboard focus in it: what a touch screen,
+   * which has no hover for the underlines' tooltips, reads them by. Loads the editor if need be.
+   */
+  showProblems(): void;
+  /**
    * Settles when the full editor is on the page, or when it could not load (the text then stays a
    * plain textarea, still built on every change); reading it starts the loading.
    */
@@ -121,6 +127,7 @@ export function createLazyGrammarEditor(options: LazyGrammarEditorOptions, load:
       changed();
     },
     markProduction: (range) => full?.markProduction(range),
+    showProblems: () => void upgrade().then(() => full?.showProblems()),
     get loaded() {
       return upgrade();
     },

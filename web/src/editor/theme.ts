@@ -45,4 +45,8 @@ export const studioEditorTheme = EditorView.theme({
     color: 'var(--text)',
     border: '1px solid var(--border)',
   },
+  // The list of problems (the status bar's Problems, Ctrl+Shift+M): messages clear of its close
+  // button, which is big enough for a finger.
+  '.cm-panel.cm-panel-lint ul': { paddingRight: '2em' },
+  '.cm-panel.cm-panel-lint [name=close]': { fontSize: '22px', padding: '0 8px' },
 });

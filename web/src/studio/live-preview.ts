@@ -22,6 +22,11 @@ export interface LivePreviewParts {
   status: HTMLElement;
   /** Stops the build under way (shown while one takes longer than {@link BUILDING_AFTER}). */
   stop?: HTMLButtonElement;
+  /**
+   * Lists the text's errors and warnings in full (the status line has room for one, cut to its
+   * width: on a phone, a few words): shown while the last build delivered has any.
+   */
+  problems?: HTMLButtonElement;
   staleBadge: HTMLElement;
   /**
    * The String and Derivation panels' mark, shown with the view's stale badge: the panels go on
@@ -250,6 +255,7 @@ export class LivePreview {
         this.markStale(shown, 'the build was stopped');
       }
       if (shown) this.parts.workerReplaced?.();
+      if (this.parts.problems) this.parts.problems.hidden = true;
       status.dataset.generation = String(++this.generation);
       return;
     }
@@ -267,6 +273,7 @@ export class LivePreview {
       showStatus(status, reportErrors(build.diagnostics, this.lastGood !== undefined));
     }
     this.markStale(!build.ok && this.lastGood !== undefined, 'the grammar has errors');
+    if (this.parts.problems) this.parts.problems.hidden = build.diagnostics.length === 0;
     this.lastResult = result;
     this.feed.delivered(result.source, build.diagnostics);
     if (sameText) this.parts.diagnosticsChanged();

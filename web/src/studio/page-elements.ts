@@ -16,6 +16,7 @@ export function studioElements() {
     viewport: byId('viewport', HTMLElement),
     status: byId('status', HTMLElement),
     stopBuild: byId('build-stop', HTMLButtonElement),
+    showProblems: byId('show-problems', HTMLButtonElement),
     version: byId('core-version', HTMLElement),
     derivation: {
       iterations: byId('iterations', HTMLInputElement),
