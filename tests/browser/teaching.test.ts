@@ -222,6 +222,39 @@ describe('the derivation view', () => {
   });
 });
 
+describe('the derivation view on a touch screen', () => {
+  it('keeps a tapped module lit up in the plant once the finger is lifted (touch has no hover to keep)', async () => {
+    const context = await browser.newContext({ viewport: { width: 390, height: 844 }, deviceScaleFactor: 2, isMobile: true, hasTouch: true });
+    const phone = await context.newPage();
+    const phoneProblems: string[] = [];
+    phone.on('pageerror', (e) => phoneProblems.push(`page error: ${e.message}`));
+    phone.on('console', (m) => m.type() === 'error' && phoneProblems.push(`console error: ${m.text()}`));
+    await phone.goto(inject('studioUrl'));
+    await phone.waitForFunction(() => (window.__meristem?.lastStats?.segments ?? 0) > 0);
+    await phone.evaluate(() => window.__meristem?.ready);
+    // Eq. 1.7, typed in the grammar's pane; then the plant's, with the Derivation tab under it.
+    await phone.getByTestId('pane-toggle').tap();
+    const before = await generation(phone);
+    await phone.getByTestId('editor').locator('.cm-content').tap();
+    await phone.keyboard.press('Control+A');
+    await phone.keyboard.insertText(readFileSync(new URL('../../public/examples/abop-eq-1.7.lsys', import.meta.url), 'utf8'));
+    expect(await nextBuild(phone, before)).toBe('ok');
+    await phone.getByTestId('pane-toggle').tap();
+    await phone.getByTestId('tab-derivation').tap();
+    const view = phone.getByTestId('derivation');
+    const chip = view.locator('.dv-row .dv-m[data-step="1"][data-i="1"]');
+    await chip.scrollIntoViewIfNeeded();
+    const box = (await chip.boundingBox())!;
+    await phone.touchscreen.tap(box.x + box.width / 2, box.y + box.height / 2);
+    await expect.poll(() => phone.getByTestId('derivation-status').textContent()).toMatch(/^Step 1: B\(4\) is one of the 2 modules A\(4,4\) became/);
+    expect(await chip.getAttribute('class'), 'still marked after the tap').toContain('dv-hover');
+    const lit = await canvasPicture(phone, 'derivation-tap-phone.png');
+    expect(colourShare(lit, HIGHLIGHT_PIXELS.produced), 'what grew from B(4) stays lit up in the plant').toBeGreaterThan(0.02);
+    expect(phoneProblems).toEqual([]);
+    await context.close();
+  });
+});
+
 describe('the context panel', () => {
   it("reports the same count for a click on one of 1.24d's F segments as for the cursor on F -> FF", async () => {
     const before = await generation(page);

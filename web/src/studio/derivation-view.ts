@@ -104,7 +104,9 @@ export class DerivationView {
     this.body.dataset.testid = 'derivation';
     root.append(this.caption, this.body, this.status);
     this.body.addEventListener('pointerover', (event) => this.hover(event.target as HTMLElement));
-    this.body.addEventListener('pointerleave', () => this.hover(null));
+    // A finger leaves as it lifts: what it tapped stays lit up until the next tap (on a module, or
+    // beside the modules to clear it), as a mouse's hover stays while the mouse does.
+    this.body.addEventListener('pointerleave', (event) => event.pointerType !== 'touch' && this.hover(null));
     this.body.addEventListener('click', (event) => this.click(event.target as HTMLElement));
     this.body.addEventListener('scroll', () => this.pairs && this.renderPairs());
   }
@@ -149,7 +151,7 @@ export class DerivationView {
     const last = await inspector.lastStep();
     if (ticket !== this.ticket) return;
     this.pairs = { first: firstChildren(last.parents, last.previousCount), count: last.previousCount, origins: build.origins };
-    this.caption.textContent = `Step ${build.stats.iterations - 1} → step ${build.stats.iterations}: each module of the string before the last step, and what it became (${plural(last.previousCount, 'module')} → ${plural(build.moduleCount, 'module')}). Hover one to see it in the plant.`;
+    this.caption.textContent = `Step ${build.stats.iterations - 1} → step ${build.stats.iterations}: each module of the string before the last step, and what it became (${plural(last.previousCount, 'module')} → ${plural(build.moduleCount, 'module')}). Hover one (tap it, on a touch screen) to see it in the plant.`;
     this.body.replaceChildren(element('div', 'dv-sizer'));
     (this.body.firstChild as HTMLElement).style.height = `${last.previousCount * PAIR_HEIGHT}px`;
     this.body.classList.add('dv-long');
