@@ -183,6 +183,24 @@ describe('the Download menu', () => {
     expect(problems).toEqual([]);
   });
 
+  it('fits a phone’s width: every setting of the picture inside the menu, none cut off', async () => {
+    const size = page.viewportSize()!;
+    await page.setViewportSize({ width: 390, height: 844 });
+    try {
+      await openMenu();
+      const menu = (await page.getByTestId('downloads').locator('.download-menu').boundingBox())!;
+      expect(menu.x >= 0 && menu.x + menu.width <= 390, 'the menu is on screen').toBe(true);
+      for (const id of ['png-width', 'png-height', 'png-paper', 'png-dpi', 'png-background', 'png-line-width']) {
+        const box = (await page.getByTestId(id).boundingBox())!;
+        expect(box.x + box.width, `${id} ends inside the menu`).toBeLessThanOrEqual(menu.x + menu.width);
+      }
+      await page.keyboard.press('Escape');
+    } finally {
+      await page.setViewportSize(size!);
+    }
+    expect(problems).toEqual([]);
+  });
+
   it('writes a big model in an export worker, showing each stage, and Cancel stops one', async () => {
     // ABOP 1.24d at 10 iterations: 116,050 segments, about 950,000 vertices.
     const source = readFileSync(join(galleryDir, 'abop-1.24d.lsys'), 'utf8');
