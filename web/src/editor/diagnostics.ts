@@ -1,6 +1,7 @@
 // Core diagnostics shown in the editor: exact ranges, a gutter marker, hover text.
-import { linter, lintGutter, type Diagnostic as EditorDiagnostic } from '@codemirror/lint';
+import { linter, lintGutter, openLintPanel, type Diagnostic as EditorDiagnostic } from '@codemirror/lint';
 import { StateEffect, type Extension } from '@codemirror/state';
+import { keymap } from '@codemirror/view';
 import { utf16Offsets, type Diagnostic } from '../core';
 
 /**
@@ -33,7 +34,11 @@ export const LINT_DELAY_MS = 400;
  */
 export const relint = StateEffect.define<null>();
 
-/** The lint extensions: underline + tooltip at each span, and markers in a gutter. */
+/**
+ * The lint extensions: underline + tooltip at each span, markers in a gutter, and Ctrl+Shift+M for
+ * the list of them on every platform (basicSetup's Mod-Shift-m is Cmd+Shift+M on a Mac, which
+ * Chrome keeps for its profile menu).
+ */
 export function grammarLinting(diagnose: Diagnose): Extension {
   return [
     linter(
@@ -44,5 +49,6 @@ export function grammarLinting(diagnose: Diagnose): Extension {
       { delay: LINT_DELAY_MS, needsRefresh: (update) => update.transactions.some((t) => t.effects.some((e) => e.is(relint))) },
     ),
     lintGutter(),
+    keymap.of([{ key: 'Ctrl-Shift-m', run: openLintPanel, preventDefault: true }]),
   ];
 }

@@ -58,6 +58,7 @@ export function renderShortcutHelp(list: HTMLElement): void {
     ['Ctrl+O', 'Open a grammar file (or drop one on the page)'],
     ['Ctrl+S', 'Save the grammar as a .lsys file'],
     ['Ctrl+Space', 'Complete a directive, command or #define name'],
+    ['Ctrl+Shift+M', 'List every error and warning in full, under the text (Problems)'],
     ['Ctrl+Z', 'Undo, also an example, file or saved grammar opened over your text'],
     ['← → on the divider', 'Resize the editor and the view'],
   ];
