@@ -1,6 +1,7 @@
 // Accessibility audit (issue 22): axe-core run in Chromium on the built studio, in the light and the
 // dark theme, on the page itself, the gallery, every dialog (share, my grammars, help, confirm), the
-// download and file menus, the Learn panel and the embed page (embed.html#s=…). No serious or
+// download and file menus, the Learn panel, the list of a grammar's problems and the embed page
+// (embed.html#s=…). No serious or
 // critical violation anywhere, every control named (those rules fail at any impact), and the
 // context highlighting of the string and derivation panels (written, left context, right context,
 // picked) readable: axe's WCAG AA colour-contrast check must pass on those very elements.
@@ -81,6 +82,21 @@ describe.each(['light', 'dark'] as const)('the %s theme', (scheme) => {
     expect((await audit(page, '[data-testid=learn]')).failures, 'the Learn panel, a lesson').toEqual([]);
     await savePage(page, `a11y-${scheme}-learn.png`);
     await page.getByTestId('learn-close').click();
+    expect(problems).toEqual([]);
+    await page.context().close();
+  });
+
+  it('a grammar with errors: the status bar and the list of problems have no serious violations', async () => {
+    const { page, problems } = await openStudio(scheme);
+    expect(await pasteText(page, '#angle 25\naxiom: X\nX -> F[+X]F[-X+X\nF -> F(F\n')).toBe('stale');
+    expect((await audit(page, '.statusbar')).failures, 'the status bar, with Problems').toEqual([]);
+    await page.getByTestId('show-problems').click();
+    const list = page.getByTestId('editor').locator('.cm-panels');
+    await list.locator('li').nth(1).waitFor();
+    const { failures, contrastPasses } = await audit(page, '[data-testid=editor] .cm-panels');
+    expect(failures, 'the list of problems').toEqual([]);
+    expect(contrastPasses.length, 'its messages were checked for contrast').toBeGreaterThan(0);
+    await savePage(page, `a11y-${scheme}-problems.png`);
     expect(problems).toEqual([]);
     await page.context().close();
   });
