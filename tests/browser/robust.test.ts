@@ -4,7 +4,8 @@
 // long build says "Building… step k of n" (never an older plant's figures, never "Loading…" for
 // ever) and Stop ends it with the text intact; a pathological file of another dialect is imported
 // in a worker, with Cancel and a time limit, while the page answers. A WebGL context the browser
-// takes away and gives back (a phone's browser sent to the background) shows the plant again.
+// takes away and gives back (a phone's browser sent to the background) shows the plant again. On a
+// phone, a grammar's errors are read in full (Problems), not cut to the status line's width.
 import { readFileSync } from 'node:fs';
 import { deflateRawSync } from 'node:zlib';
 import { chromium, type Browser, type BrowserContext, type Page } from 'playwright-core';
