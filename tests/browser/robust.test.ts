@@ -11,7 +11,7 @@ import { deflateRawSync } from 'node:zlib';
 import { chromium, type Browser, type BrowserContext, type Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
 import { foregroundOverlap, foregroundShare } from './pictures';
-import { canvasPicture, editorText, generation, loseAndRestoreContext, nextBuild, pasteText, VIEW_CANVAS } from './studio-page';
+import { canvasPicture, editorText, generation, loseAndRestoreContext, nextBuild, pasteText, PHONE, replaceTextByTouch, VIEW_CANVAS } from './studio-page';
 
 let browser: Browser;
 
@@ -477,18 +477,14 @@ describe('the view', () => {
 
 describe('a grammar error on a phone', () => {
   it('is read in full through Problems: a touch screen has no hover for the underline’s tooltip, and the status line has room for a few words', async () => {
-    const context = await browser.newContext({ viewport: { width: 390, height: 844 }, deviceScaleFactor: 2, isMobile: true, hasTouch: true });
+    const context = await browser.newContext(PHONE);
     const { page, problems } = await openAt(inject('studioUrl'), context);
     await page.evaluate(() => window.__meristem?.ready);
     const showProblems = page.getByTestId('show-problems');
     expect(await showProblems.isVisible(), 'no problems with the example').toBe(false);
     // Two errors, typed in the grammar's pane; then back to the plant's.
     await page.getByTestId('pane-toggle').tap();
-    const before = await generation(page);
-    await page.getByTestId('editor').locator('.cm-content').tap();
-    await page.keyboard.press('Control+A');
-    await page.keyboard.insertText('#angle 25\naxiom: X\nX -> F[+X]F[-X+X\nF -> F(F\n');
-    expect(await nextBuild(page, before)).toBe('stale');
+    expect(await replaceTextByTouch(page, '#angle 25\naxiom: X\nX -> F[+X]F[-X+X\nF -> F(F\n')).toBe('stale');
     const status = page.getByTestId('status');
     expect(await status.evaluate((s) => s.scrollWidth > s.clientWidth), 'the status line cuts its message short').toBe(true);
     await page.getByTestId('pane-toggle').tap();
@@ -510,11 +506,7 @@ describe('a grammar error on a phone', () => {
     const cursorLine = () => page.evaluate(() => document.querySelector('[data-testid=editor] .cm-activeLine')?.textContent);
     await expect.poll(cursorLine).toBe('F -> F(F');
     // Mended, the button goes.
-    const mended = await generation(page);
-    await page.getByTestId('editor').locator('.cm-content').tap();
-    await page.keyboard.press('Control+A');
-    await page.keyboard.insertText('#angle 25\naxiom: X\nX -> F[+X]F[-X]+X\nF -> FF\n');
-    expect(await nextBuild(page, mended)).toBe('ok');
+    expect(await replaceTextByTouch(page, '#angle 25\naxiom: X\nX -> F[+X]F[-X]+X\nF -> FF\n')).toBe('ok');
     expect(await showProblems.isVisible()).toBe(false);
     expect(problems).toEqual([]);
     await context.close();

@@ -69,6 +69,21 @@ export async function nextBuild(page: Page, previous: number, timeout = 30_000):
   return page.getByTestId('status').getAttribute('data-state');
 }
 
+/** A phone's browser context: 390 × 844 CSS pixels, touch (taps, no hover). */
+export const PHONE = { viewport: { width: 390, height: 844 }, deviceScaleFactor: 2, isMobile: true, hasTouch: true };
+
+/**
+ * On a touch page with the grammar's pane shown: replaces the editor's text as a finger would
+ * (a tap in the text, select all, the new text) and waits for its build; returns the status state.
+ */
+export async function replaceTextByTouch(page: Page, text: string): Promise<string | null> {
+  const before = await generation(page);
+  await page.getByTestId('editor').locator('.cm-content').tap();
+  await page.keyboard.press('Control+A');
+  await page.keyboard.insertText(text);
+  return nextBuild(page, before);
+}
+
 /** Replaces the editor's text as a paste would, and waits for its build; returns the status state. */
 export async function pasteText(page: Page, text: string): Promise<string | null> {
   const before = await generation(page);

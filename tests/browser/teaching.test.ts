@@ -8,7 +8,7 @@ import type { Page } from 'playwright-core';
 import { describe, expect, inject, it } from 'vitest';
 import { colourShare, decodePng, foregroundExtent, foregroundMask, foregroundOverlap, foregroundShare, type Picture } from './pictures';
 import { browser, page, problems, useStudio } from './session';
-import { canvasPicture, findPixel, RESULTS, generation, HIGHLIGHT_PIXELS, loseAndRestoreContext, nextBuild, openExample, savePage, twoFrames } from './studio-page';
+import { canvasPicture, findPixel, RESULTS, generation, HIGHLIGHT_PIXELS, loseAndRestoreContext, nextBuild, openExample, PHONE, replaceTextByTouch, savePage, twoFrames } from './studio-page';
 
 useStudio();
 
@@ -224,7 +224,7 @@ describe('the derivation view', () => {
 
 describe('the derivation view on a touch screen', () => {
   it('keeps a tapped module lit up in the plant once the finger is lifted (touch has no hover to keep)', async () => {
-    const context = await browser.newContext({ viewport: { width: 390, height: 844 }, deviceScaleFactor: 2, isMobile: true, hasTouch: true });
+    const context = await browser.newContext(PHONE);
     const phone = await context.newPage();
     const phoneProblems: string[] = [];
     phone.on('pageerror', (e) => phoneProblems.push(`page error: ${e.message}`));
@@ -234,11 +234,7 @@ describe('the derivation view on a touch screen', () => {
     await phone.evaluate(() => window.__meristem?.ready);
     // Eq. 1.7, typed in the grammar's pane; then the plant's, with the Derivation tab under it.
     await phone.getByTestId('pane-toggle').tap();
-    const before = await generation(phone);
-    await phone.getByTestId('editor').locator('.cm-content').tap();
-    await phone.keyboard.press('Control+A');
-    await phone.keyboard.insertText(readFileSync(new URL('../../public/examples/abop-eq-1.7.lsys', import.meta.url), 'utf8'));
-    expect(await nextBuild(phone, before)).toBe('ok');
+    expect(await replaceTextByTouch(phone, readFileSync(new URL('../../public/examples/abop-eq-1.7.lsys', import.meta.url), 'utf8'))).toBe('ok');
     await phone.getByTestId('pane-toggle').tap();
     await phone.getByTestId('tab-derivation').tap();
     const view = phone.getByTestId('derivation');
