@@ -18,7 +18,7 @@ opt=()
 [ "${1:-}" = "--dev" ] && opt=(--no-opt)
 # crate/pkg-core, what the browser downloads for the first plant (issue 22, the first load), is
 # built for size a little over speed: opt-level "s", then wasm-opt -Oz (the flags in
-# crate/Cargo.toml). Measured 2026-11-25 (docs/PERFORMANCE.md, "The first load"): "s" makes it about 6% smaller
+# crate/Cargo.toml). Measured 2026-11-25 (docs/notes/performance-history.md, "The first load"): "s" makes it about 6% smaller
 # gzipped than "3" and derives 5-25% slower; "z" saves 10% but derives 2-4x slower, so no.
 # crate/pkg (the export worker, imports, `npm run bench` and ../shared/bench/ratio.sh) loads after
 # the first plant, so it is built for speed (issue 20): opt-level 3 with WebAssembly SIMD
@@ -44,7 +44,7 @@ if [ ${#opt[@]} -eq 0 ]; then
   # ~30,000 lines, which V8's TurboFan compiles with its loop values spilled to the stack: C (the
   # parametric tree) ran 1.6x slower than with the cap (measured 2026-11-26, CPU time per
   # derivation 15 -> 9 ms; 50, 200 and 1000 alike). The unexplained fast build of 2026-11-26 01:40
-  # (docs/PERFORMANCE.md, issue 20) was most likely a tree whose hot loops had two callers.
+  # (docs/notes/performance-history.md, issue 20) was most likely a tree whose hot loops had two callers.
   # --no-inline also names the Fixed/Choice copy loop (derive/classes.rs, `write_fixed`) as one
   # never to inline (before -O3, while the names are still there), whatever its size: E n = 11 and a
   # classes-path 1.24d ran about 1.1-1.5x slower with it inlined (measured 2026-11-26).

@@ -4,7 +4,7 @@
 //     scripts/remesh.mjs [pkg/meristem | pkg-core/meristem_core] N
 // run for N = 1 and N = 4; a third of the difference of the two "I refs" is one remesh (the
 // x86 instructions V8's optimising compiler made of the wasm, the same on a busy machine).
-// Not part of `npm test` or `npm run bench` (docs/PERFORMANCE.md, "The studio: keystroke to frame").
+// Not part of `npm test` or `npm run bench` (docs/notes/performance-history.md, "The studio: keystroke to frame").
 import { readFileSync } from 'node:fs';
 
 const [pkg = 'pkg/meristem', n = '1'] = process.argv.slice(2);

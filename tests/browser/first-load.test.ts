@@ -14,7 +14,7 @@ import { serveStatic, type StaticSite } from './static-server';
  * Script + wasm + styles of the first paint of a plant, gzipped (bytes): issue 22's 400 KB. The
  * first-load work reached 399 KB on 2026-11-26, issue 20's engine work then took it to 415 KB
  * (its per-module classes, sized passes and sketch turtle are in the first plant's core), and two
- * changes to that core brought it to 393 KB the same day (docs/PERFORMANCE.md, "The first load": numbers read
+ * changes to that core brought it to 393 KB the same day (docs/notes/performance-history.md, "The first load": numbers read
  * with JavaScript's parseFloat, the vocabulary fetched after the first plant): the first plant's
  * core 196 KB, three.js and the view 156 KB, the studio and the core's glue 30 KB, the build worker
  * 6 KB, styles 6 KB. The 7 KB under the bound are for the engine work landing in the same core; a
@@ -25,7 +25,7 @@ import { serveStatic, type StaticSite } from './static-server';
 const BUDGET = 400_000;
 /**
  * Time to the first plant on "Fast 3G": issue 22 asks for 4 s; 3.6 to 4.9 s measured on the shared
- * 2-core machine at 393 KB (docs/PERFORMANCE.md, median 4.6 s at load 7 to 10; 3.7 to 4.6 s, median 4.1 s, at
+ * 2-core machine at 393 KB (docs/notes/performance-history.md, median 4.6 s at load 7 to 10; 3.7 to 4.6 s, median 4.1 s, at
  * 399 KB and load 5 to 9), so not a stable bound there. A guard against a regression (the core
  * downloaded twice, a blocking fetch, the worker started late), not the target.
  */
