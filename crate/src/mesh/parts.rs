@@ -263,9 +263,7 @@ pub fn polygon_mesh(
     unit: f64,
     i: usize,
 ) -> MeshBuffers {
-    let mut builder = Builder::new(options, unit);
-    builder.polygon(skeleton, i);
-    builder.mesh
+    alone(options, unit, |builder| builder.polygon(skeleton, i))
 }
 
 /// One leaf or petal alone.
@@ -275,15 +273,18 @@ pub fn surface_mesh(
     unit: f64,
     i: usize,
 ) -> MeshBuffers {
-    let mut builder = Builder::new(options, unit);
-    builder.surface(skeleton, i);
-    builder.mesh
+    alone(options, unit, |builder| builder.surface(skeleton, i))
 }
 
 /// One sphere alone.
 pub fn sphere_mesh(skeleton: &Skeleton, options: &MeshOptions, unit: f64, i: usize) -> MeshBuffers {
+    alone(options, unit, |builder| builder.sphere_of(skeleton, i))
+}
+
+/// The mesh `draw` writes into a new builder: one element meshed alone.
+fn alone(options: &MeshOptions, unit: f64, draw: impl FnOnce(&mut Builder)) -> MeshBuffers {
     let mut builder = Builder::new(options, unit);
-    builder.sphere_of(skeleton, i);
+    draw(&mut builder);
     builder.mesh
 }
 

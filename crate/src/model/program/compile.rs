@@ -186,7 +186,11 @@ impl Compiler<'_> {
             BinaryOp::Or => {
                 self.branch(span, |c| c.constant(1.0, span), |c| c.truth(b, span, depth))
             }
-            _ => self.binary(start, op, b, span, depth),
+            _ => {
+                self.expr(b, depth)?;
+                self.binary(start, op, span);
+                Ok(())
+            }
         }
     }
 
@@ -260,28 +264,19 @@ impl Compiler<'_> {
         Ok(())
     }
 
-    /// `left op b` for an operator other than `&&` and `||`, where the ops of `left` start at
-    /// `start`; folded when both operands are constants (not a division by zero, nor a result
-    /// that is not finite: those stay runtime errors). `depth` is that of `b`.
-    fn binary(
-        &mut self,
-        start: usize,
-        op: BinaryOp,
-        b: &ExprSyntax,
-        span: &Span,
-        depth: usize,
-    ) -> Result<(), Diagnostic> {
-        self.expr(b, depth)?;
+    /// `left op right` for an operator other than `&&` and `||`, both operands compiled, the ops
+    /// of `left` starting at `start`; folded when both are constants (not a division by zero, nor
+    /// a result that is not finite: those stay runtime errors).
+    fn binary(&mut self, start: usize, op: BinaryOp, span: &Span) {
         if let [Op::Const(x), Op::Const(y)] = self.ops[start..] {
             if let Some(v) = evaluate_binary(op, x, y).filter(|v| v.is_finite()) {
                 self.ops.truncate(start);
                 self.spans.truncate(start);
                 self.emit(Op::Const(v), span.clone());
-                return Ok(());
+                return;
             }
         }
         self.emit(Op::Bin(op), span.clone());
-        Ok(())
     }
 
     /// A call of the function `name` with `args`, each compiled at `depth`.
