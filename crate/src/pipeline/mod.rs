@@ -1,18 +1,19 @@
 //! The whole pipeline, parse -> resolve -> derive -> (growth) -> interpret -> mesh, as one call
 //! shared by the command-line tool and the wasm boundary, and what a caller does with its result.
 //!
-//! - [`build`] runs every stage and returns a [`Build`]: the diagnostics, the model, the
-//!   [`Derivation`], the growth record and the [`Plant`] (skeleton, mesh, stats);
+//! - [`build()`] runs every stage and returns a [`Build`]: the diagnostics, the model, the
+//!   [`Derivation`](crate::derive::Derivation), the growth record and the [`Plant`] (skeleton,
+//!   mesh, stats);
 //! - [`Build::inspector`] answers questions about the derivation ([`Inspector`]: why a production
 //!   fired, the text of the derived string);
 //! - [`PlantEditor`] edits the plant's branches by their Bézier handles;
-//! - [`export`] builds and writes a model file, the same bytes for the CLI and the studio.
+//! - [`export()`] builds and writes a model file, the same bytes for the CLI and the studio.
 //!
 //! The core reads no clock and knows nothing of progress bars: a caller lends [`Hooks`] (a clock
 //! read around each stage, a callback told each stage as it starts and each derivation step as it
 //! ends).
 //!
-//! The files: `build.rs` ([`build`], [`Build`], [`BuildOptions`]), `hooks.rs` ([`Hooks`],
+//! The files: `build.rs` ([`build()`], [`Build`], [`BuildOptions`]), `hooks.rs` ([`Hooks`],
 //! [`Stage`], [`Progress`], [`StageTimings`]), `observer.rs` (growth and the turtle following a
 //! derivation), `plant.rs`, `inspector.rs`, `editor.rs`, `export.rs`.
 
