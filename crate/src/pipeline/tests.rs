@@ -12,6 +12,14 @@ fn timed<'a>(clock: &'a mut dyn FnMut() -> f64) -> Hooks<'a> {
     }
 }
 
+/// The default build options with `n` iterations.
+fn with_iterations(n: u32) -> BuildOptions {
+    BuildOptions {
+        iterations: Some(n),
+        ..BuildOptions::default()
+    }
+}
+
 /// A clock that advances by one unit each time it is read.
 fn ticking() -> impl FnMut() -> f64 {
     let mut t = 0.0;
@@ -128,10 +136,7 @@ fn progress_of(source: &str, iterations: u32) -> Vec<Progress> {
         clock: None,
         progress: Some(&mut progress),
     };
-    let options = BuildOptions {
-        iterations: Some(iterations),
-        ..BuildOptions::default()
-    };
+    let options = with_iterations(iterations);
     build_with(source, &options, &mut hooks);
     told
 }
@@ -170,10 +175,7 @@ fn progress_tells_each_stage_and_each_derivation_step() {
 #[test]
 fn a_clock_changes_nothing_else() {
     let source = "#angle 30\naxiom: X\nX -> F[+X]F[-X]+X\nF -> FF";
-    let options = BuildOptions {
-        iterations: Some(3),
-        ..BuildOptions::default()
-    };
+    let options = with_iterations(3);
     let plain = build(source, &options);
     let mut clock = ticking();
     let timed = build_with(source, &options, &mut timed(&mut clock));
@@ -184,10 +186,7 @@ fn a_clock_changes_nothing_else() {
 #[test]
 fn a_sketch_draws_lines_and_its_remesh_is_the_plain_build() {
     let source = "#angle 25\naxiom: X\nX -> F[+X]F[-X]+X\nF -> FF";
-    let options = BuildOptions {
-        iterations: Some(4),
-        ..BuildOptions::default()
-    };
+    let options = with_iterations(4);
     let plain = build(source, &options);
     let mut sketch = build(
         source,
@@ -250,10 +249,7 @@ fn a_sketch_with_growth_draws_its_skeleton_at_once() {
 #[test]
 fn without_tubes_the_bounds_are_the_segments() {
     let source = "#angle 25\naxiom: X\nX -> F[+X]F[-X]+X\nF -> FF";
-    let options = BuildOptions {
-        iterations: Some(3),
-        ..BuildOptions::default()
-    };
+    let options = with_iterations(3);
     let mut result = build(source, &options);
     let with_tubes = result.plant.stats.clone();
     result.remesh(&MeshOptions {
