@@ -7,6 +7,12 @@
 //! about 12 KB gzipped of `crate/pkg-core`). A grammar's numbers are read once per build, so
 //! the crossing into JavaScript costs nothing the preview notices. `tests/wasm_boundary.rs`
 //! checks under wasm32 that both agree.
+//!
+//! The one place outside the boundaries (`main.rs`, `wasm.rs`) that calls JavaScript, and only
+//! this function: `tests/architecture.rs` (`the_core_does_no_io_and_knows_nothing_of_the_browser`)
+//! allows `js_sys` in this file by name and nowhere else. Behind the boundary it would cost a
+//! callback threaded through the parser and the resolver (every number of the grammar is read
+//! there), for no gain in size or speed.
 
 /// `text` as an `f64`, exactly as `text.parse::<f64>().ok()`: an optional sign, then digits with
 /// an optional `.` and fraction (at least one digit in all) and an optional exponent

@@ -6,6 +6,12 @@
 //! stable merge sort of indices through a `dyn` comparison, compiled once; a call site adds only
 //! its comparison and a permutation of its slice. O(n log n) comparisons, O(n) extra indices,
 //! stable (so it also stands in for `sort_unstable*`: equal elements keep their order).
+//!
+//! Every sort of the first plant's core (`crate/pkg-core`: parse, resolve, derive, growth, turtle,
+//! mesh) goes through here. Code that only `crate/pkg` links keeps the standard library's sorts,
+//! faster and costing nothing in the first load: the importers (`import/`), the SVG writer
+//! (`export/svg.rs`), both behind the feature `io`, and branch editing (`branches/`, behind
+//! `studio-extras`); so do tests.
 
 use std::cmp::Ordering;
 

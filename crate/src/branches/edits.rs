@@ -110,6 +110,24 @@ fn unknown_field<'a>(
         .find(|k| !known.contains(k))
 }
 
+/// The list in the field `field` of `object`; else an error saying it must be a list of `what`,
+/// or `missing` when there is no such field.
+fn list<'a>(
+    object: &'a serde_json::Map<String, serde_json::Value>,
+    field: &str,
+    what: &str,
+    missing: &str,
+) -> Result<&'a Vec<serde_json::Value>, String> {
+    match object.get(field) {
+        Some(serde_json::Value::Array(list)) => Ok(list),
+        Some(other) => Err(format!(
+            "\"{field}\" must be a list of {what}, not {}",
+            kind(other)
+        )),
+        None => Err(missing.into()),
+    }
+}
+
 /// Reads an edits document. Errors say what is wrong in words, naming the edit and the field
 /// (the text may come from a link or a file written by hand); a leading byte order mark, as some
 /// editors write, is ignored.
@@ -138,16 +156,12 @@ pub fn parse_edits(json: &str) -> Result<Vec<BranchEdit>, String> {
             "the edits document has an unknown field \"{field}\" (it holds only \"version\" and \"edits\")"
         ));
     }
-    let edits = match document.get("edits") {
-        Some(serde_json::Value::Array(edits)) => edits,
-        Some(other) => {
-            return Err(format!(
-                "\"edits\" must be a list of edits, not {}",
-                kind(other)
-            ))
-        }
-        None => return Err("the edits document has no \"edits\" list".into()),
-    };
+    let edits = list(
+        document,
+        "edits",
+        "edits",
+        "the edits document has no \"edits\" list",
+    )?;
     if edits.len() > MAX_EDITS {
         return Err(format!("more than {MAX_EDITS} edits"));
     }
@@ -172,16 +186,7 @@ fn read_edit(edit: &serde_json::Value) -> Result<BranchEdit, String> {
             "unknown field \"{field}\" (an edit holds only \"path\" and \"handles\")"
         ));
     }
-    let path = match edit.get("path") {
-        Some(serde_json::Value::Array(path)) => path,
-        Some(other) => {
-            return Err(format!(
-                "\"path\" must be a list of branch indices, not {}",
-                kind(other)
-            ))
-        }
-        None => return Err("no \"path\"".into()),
-    };
+    let path = list(edit, "path", "branch indices", "no \"path\"")?;
     let path = path
         .iter()
         .enumerate()
@@ -197,16 +202,7 @@ fn read_edit(edit: &serde_json::Value) -> Result<BranchEdit, String> {
                 })
         })
         .collect::<Result<Vec<u32>, String>>()?;
-    let handles = match edit.get("handles") {
-        Some(serde_json::Value::Array(handles)) => handles,
-        Some(other) => {
-            return Err(format!(
-                "\"handles\" must be a list of 3 points (P1, P2, P3), not {}",
-                kind(other)
-            ))
-        }
-        None => return Err("no \"handles\"".into()),
-    };
+    let handles = list(edit, "handles", "3 points (P1, P2, P3)", "no \"handles\"")?;
     if handles.len() != 3 {
         return Err(format!(
             "\"handles\" must hold 3 points (P1, P2, P3), not {}",

@@ -141,19 +141,31 @@ mod tests {
         }
     }
 
+    /// Each of `packed` is `Math.round` of its value clamped to `lo..=1` and scaled by `scale`
+    /// (0 for NaN).
+    fn assert_rounded<P: Copy + Into<f64>>(
+        values: &[f32],
+        packed: &[P],
+        lo: f64,
+        scale: f64,
+        what: &str,
+    ) {
+        assert_eq!(packed.len(), values.len());
+        for (&v, &p) in values.iter().zip(packed) {
+            let want = if v.is_nan() {
+                0.0
+            } else {
+                js_round(f64::from(v).clamp(lo, 1.0) * scale)
+            };
+            assert_eq!(p.into(), want, "{what} {v}");
+        }
+    }
+
     #[test]
     fn normals_and_colours_are_math_round_of_the_clamped_scaled_values() {
         let normals = normal_samples();
         let packed = pack_normals(&normals);
-        assert_eq!(packed.len(), normals.len());
-        for (&v, &p) in normals.iter().zip(&packed) {
-            let want = if v.is_nan() {
-                0.0
-            } else {
-                js_round(f64::from(v).clamp(-1.0, 1.0) * 32767.0)
-            };
-            assert_eq!(f64::from(p), want, "normal {v}");
-        }
+        assert_rounded(&normals, &packed, -1.0, 32767.0, "normal");
         assert_eq!(packed[..5], [0, 32767, -32767, 19660, -26214]);
     }
 
@@ -168,15 +180,7 @@ mod tests {
             }
         }
         let packed = pack_colors(&colors);
-        assert_eq!(packed.len(), colors.len());
-        for (&v, &p) in colors.iter().zip(&packed) {
-            let want = if v.is_nan() {
-                0.0
-            } else {
-                js_round(f64::from(v).clamp(0.0, 1.0) * 255.0)
-            };
-            assert_eq!(f64::from(p), want, "colour {v}");
-        }
+        assert_rounded(&colors, &packed, 0.0, 255.0, "colour");
         assert_eq!(packed[..6], [128, 64, 255, 0, 1, 255]);
     }
 }

@@ -10,7 +10,8 @@
 //! colour ranges stay true as long as each triangle comes from the same segment as before
 //! ([`ChainPart::ranges`]).
 
-use super::{Builder, MeshBuffers, MeshOptions};
+use super::build::Builder;
+use super::{MeshBuffers, MeshOptions};
 use crate::turtle::Skeleton;
 
 /// Not in a chain (a segment of zero width), or not a segment (in element ranges).
@@ -83,7 +84,7 @@ impl PointSet {
     fn with_points(points: impl ExactSizeIterator<Item = glam::DVec3>) -> PointSet {
         let capacity = (2 * points.len()).max(16).next_power_of_two();
         let mut set = PointSet {
-            keys: points.map(super::key).collect(),
+            keys: points.map(super::chains::key).collect(),
             slots: vec![0; capacity],
             // Four times the slots: 64 bits a word.
             filter: vec![0; capacity / 16],
@@ -213,7 +214,7 @@ impl Asked {
     }
 
     fn look_for(&mut self, p: glam::DVec3) {
-        if let Some(i) = self.set.index_of(&super::key(p)) {
+        if let Some(i) = self.set.index_of(&super::chains::key(p)) {
             self.met[i] = true;
         }
     }
@@ -231,13 +232,13 @@ impl Asked {
 /// would overrun a short segment), as
 /// [`super::build_mesh`] cuts them.
 pub fn chains(skeleton: &Skeleton, unit: f64) -> super::Chains {
-    super::chains(skeleton, unit)
+    super::chains::chains(skeleton, unit)
 }
 
 /// Whether segment `i` continues segment `p` in one tube (given that it continues it on the
 /// axis and is the first to).
 pub fn joins(skeleton: &Skeleton, p: u32, i: u32, unit: f64) -> bool {
-    super::joins(skeleton, p as usize, i as usize, unit)
+    super::chains::joins(skeleton, p as usize, i as usize, unit)
 }
 
 /// The tube of one chain alone, as `build_mesh` writes it, and its element ranges.
@@ -262,9 +263,7 @@ pub fn polygon_mesh(
     unit: f64,
     i: usize,
 ) -> MeshBuffers {
-    let mut builder = Builder::new(options, unit);
-    builder.polygon(skeleton, i);
-    builder.mesh
+    alone(options, unit, |builder| builder.polygon(skeleton, i))
 }
 
 /// One leaf or petal alone.
@@ -274,15 +273,18 @@ pub fn surface_mesh(
     unit: f64,
     i: usize,
 ) -> MeshBuffers {
-    let mut builder = Builder::new(options, unit);
-    builder.surface(skeleton, i);
-    builder.mesh
+    alone(options, unit, |builder| builder.surface(skeleton, i))
 }
 
 /// One sphere alone.
 pub fn sphere_mesh(skeleton: &Skeleton, options: &MeshOptions, unit: f64, i: usize) -> MeshBuffers {
+    alone(options, unit, |builder| builder.sphere_of(skeleton, i))
+}
+
+/// The mesh `draw` writes into a new builder: one element meshed alone.
+fn alone(options: &MeshOptions, unit: f64, draw: impl FnOnce(&mut Builder)) -> MeshBuffers {
     let mut builder = Builder::new(options, unit);
-    builder.sphere_of(skeleton, i);
+    draw(&mut builder);
     builder.mesh
 }
 
@@ -421,7 +423,7 @@ mod tests {
             .collect();
         let set = PointSet::with_points(points.iter().copied());
         for p in &points {
-            assert!(set.contains(&super::super::key(*p)), "{p}");
+            assert!(set.contains(&super::super::chains::key(*p)), "{p}");
         }
         for p in [
             DVec3::new(0.05, 0.0, 0.0),
@@ -429,9 +431,9 @@ mod tests {
             DVec3::new(0.1 + f64::EPSILON, 0.0, 0.0),
             DVec3::new(7.0, 0.0, 0.0),
         ] {
-            assert!(!set.contains(&super::super::key(p)), "{p}");
+            assert!(!set.contains(&super::super::chains::key(p)), "{p}");
         }
-        assert!(set.contains(&super::super::key(DVec3::new(0.0, -0.0, -0.0))));
-        assert!(!PointSet::default().contains(&super::super::key(DVec3::ZERO)));
+        assert!(set.contains(&super::super::chains::key(DVec3::new(0.0, -0.0, -0.0))));
+        assert!(!PointSet::default().contains(&super::super::chains::key(DVec3::ZERO)));
     }
 }

@@ -3,7 +3,9 @@
 //! start (where it does not grow out of a joint) and at its end, rounded where branches leave it. A smooth axis is sampled along Bézier pieces through its joints; a straight one at
 //! its joints, each ring across the bisector of the segments it joins.
 
-use super::{append, curve, push, Builder, MATERIAL_BARK};
+use super::build::Builder;
+use super::grow::{append, push};
+use super::{curve, MATERIAL_BARK};
 use crate::turtle::{Segment, Skeleton};
 use glam::DVec3;
 

@@ -113,19 +113,25 @@ impl LString {
 
     /// The text of module `i` alone, as [`LString::to_text`] writes it.
     pub fn module_text(&self, alphabet: &Alphabet, i: usize) -> String {
-        let mut module = String::from(alphabet.name(self.ids[i]));
+        let mut module = String::new();
+        self.write_module(alphabet, i, &mut module);
+        module
+    }
+
+    /// Appends the text of module `i` to `out`: its name, and its parameters in parentheses.
+    fn write_module(&self, alphabet: &Alphabet, i: usize, out: &mut String) {
+        out.push_str(alphabet.name(self.ids[i]));
         let params = self.params_of(i);
         if !params.is_empty() {
-            module.push('(');
+            out.push('(');
             for (k, p) in params.iter().enumerate() {
                 if k > 0 {
-                    module.push(',');
+                    out.push(',');
                 }
-                let _ = write!(module, "{p}");
+                let _ = write!(out, "{p}");
             }
-            module.push(')');
+            out.push(')');
         }
-        module
     }
 
     /// Like [`LString::to_text`] but stops before passing `max_chars` characters, appending `…`
@@ -136,18 +142,7 @@ impl LString {
         let mut chars = 0usize;
         for i in 0..self.ids.len() {
             module.clear();
-            module.push_str(alphabet.name(self.ids[i]));
-            let params = self.params_of(i);
-            if !params.is_empty() {
-                module.push('(');
-                for (k, p) in params.iter().enumerate() {
-                    if k > 0 {
-                        module.push(',');
-                    }
-                    let _ = write!(module, "{p}");
-                }
-                module.push(')');
-            }
+            self.write_module(alphabet, i, &mut module);
             let n = module.chars().count();
             if chars.saturating_add(n) > max_chars {
                 out.push('…');

@@ -44,7 +44,7 @@ impl<'b> Inspector<'b> {
         if self.derivation.string.len() > max_modules {
             return None;
         }
-        let traced = match super::trace(self.model, &self.options) {
+        let traced = match super::observer::trace(self.model, &self.options) {
             Ok(steps) => steps,
             Err(e) => return Some(Err(e)),
         };

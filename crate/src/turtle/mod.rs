@@ -1,4 +1,4 @@
-//! Stage 5, `turtle`: the derived string becomes a [`Skeleton`] in 3D: segments, polygons,
+//! Stage 4, `turtle`: the derived string becomes a [`Skeleton`] in 3D: segments, polygons,
 //! predefined surfaces and spheres, plus the values of query modules.
 //!
 //! Frame conventions (docs/LANGUAGE.md, "Turtle"): the turtle starts at the origin with heading

@@ -1,0 +1,236 @@
+//! [`build`]: every stage run on a grammar's text, into a [`Build`] (the diagnostics, the model,
+//! the derivation, the growth record, the plant), and what a caller asks of a build afterwards.
+
+use super::hooks::Watch;
+use super::observer::derive_stage;
+use super::{Hooks, Inspector, Plant, Progress, Stage, StageTimings};
+use crate::derive::{Derivation, DeriveOptions};
+use crate::diagnostics::{has_errors, locate_all, Diagnostic, LocatedDiagnostic};
+use crate::growth::GrowthRecord;
+use crate::mesh::MeshOptions;
+use crate::model::{self, Model};
+use crate::syntax;
+use crate::turtle;
+
+/// Options of one build; `None` fields take the grammar's own settings.
+#[derive(Clone, Debug, Default)]
+pub struct BuildOptions {
+    /// Overrides `#iterations`.
+    pub iterations: Option<u32>,
+    /// Overrides `#seed`.
+    pub seed: Option<u64>,
+    pub mesh: MeshOptions,
+    /// Draw the segments as lines only (a sketch, [`turtle::Sketch`]): no skeleton and no mesh
+    /// until [`Build::remesh`] (or [`Build::ensure_skeleton`]) asks for them. Grammars with growth
+    /// attributes draw their skeleton at once and mesh it with `mesh` as usual.
+    pub sketch: bool,
+}
+
+/// Everything one build produced. When `diagnostics` has an error, the stages after the failing
+/// one did not run and what they make is empty.
+#[derive(Clone, Debug, Default)]
+pub struct Build {
+    pub diagnostics: Vec<Diagnostic>,
+    pub model: Option<Model>,
+    /// The derived string and where its modules come from.
+    pub derivation: Derivation,
+    /// Derivation steps run.
+    pub steps: u32,
+    /// The seed that overrode `#seed`, if any.
+    pub seed: Option<u64>,
+    /// With growth attributes (`#lifetime`, `#shape`, `#sun`, …): each module's growth state and
+    /// what every step did (apices growing and stopped per third, rewritings).
+    pub growth: Option<GrowthRecord>,
+    pub plant: Plant,
+    /// How long each stage took, when the caller lent a clock.
+    pub timings: Option<StageTimings>,
+}
+
+/// [`crate::turtle::MAX_COORDINATE`] as `{:e}` writes it, for the clamping warning: a constant
+/// text, so that the first plant's core carries no float-to-exponent formatting (issue 22; a test
+/// checks it against the number).
+pub(super) const MAX_COORDINATE_TEXT: &str = "1e30";
+
+impl Build {
+    /// True when no diagnostic is an error (the geometry is complete).
+    pub fn ok(&self) -> bool {
+        !has_errors(&self.diagnostics)
+    }
+
+    /// The derived string in canonical text form.
+    pub fn derived_text(&self) -> String {
+        self.model
+            .as_ref()
+            .map(|m| self.derivation.string.to_text(&m.alphabet))
+            .unwrap_or_default()
+    }
+
+    /// Questions about the derivation, when there is a model.
+    pub fn inspector(&self) -> Option<Inspector<'_>> {
+        let options = DeriveOptions {
+            steps: self.steps,
+            seed: self.seed,
+        };
+        Some(Inspector::new(
+            self.model.as_ref()?,
+            &self.derivation,
+            options,
+        ))
+    }
+
+    /// Meshes the plant again with other mesh options (a view option such as the number of sides
+    /// or smooth axes needs no new derivation).
+    pub fn remesh(&mut self, options: &MeshOptions) {
+        self.remesh_with(options, &mut Hooks::default());
+    }
+
+    /// [`Build::remesh`], timed with the caller's clock when the build was: drawing a sketch's
+    /// skeleton adds to [`StageTimings::interpret`], meshing to [`StageTimings::mesh`] (a
+    /// sketched build's mesh stage is then the tubes', not only its lines').
+    pub fn remesh_with(&mut self, options: &MeshOptions, hooks: &mut Hooks) {
+        let mut watch = Watch::new(hooks);
+        self.ensure_skeleton();
+        let interpret = watch.lap();
+        self.plant.remesh(options);
+        let mesh = watch.lap();
+        if let Some(timings) = self.timings.as_mut() {
+            timings.interpret += interpret;
+            timings.mesh += mesh;
+        }
+    }
+
+    /// Draws the skeleton of a sketch's plant ([`BuildOptions::sketch`]), once; nothing otherwise.
+    pub fn ensure_skeleton(&mut self) {
+        if !self.plant.is_sketch() {
+            return;
+        }
+        let segments = self.plant.stats.segments;
+        let skeleton = match &self.model {
+            Some(model) => {
+                turtle::interpret_sized(model, self.derivation.turtle_string(), segments)
+            }
+            None => Default::default(),
+        };
+        self.plant.set_skeleton(skeleton);
+    }
+
+    /// Diagnostics with line and column, in source order.
+    pub fn located_diagnostics(&self, source: &str) -> Vec<LocatedDiagnostic> {
+        locate_all(source, &self.diagnostics)
+    }
+}
+
+/// Runs every stage on `source`.
+pub fn build(source: &str, options: &BuildOptions) -> Build {
+    build_with(source, options, &mut Hooks::default())
+}
+
+/// Runs every stage on `source`, with the caller's clock and progress callback.
+pub fn build_with(source: &str, options: &BuildOptions, hooks: &mut Hooks) -> Build {
+    let mut watch = Watch::new(hooks);
+    let mut result = run_stages(source, options, &mut watch);
+    result.timings = watch.timings();
+    result
+}
+
+/// The stages, each timed; a stage that fails leaves the later ones out.
+fn run_stages(source: &str, options: &BuildOptions, watch: &mut Watch<'_, '_>) -> Build {
+    let mut result = Build::default();
+    watch.start(Stage::Parse);
+    let (file, diagnostics) = syntax::parse(source);
+    result.diagnostics = diagnostics;
+    let (model, diagnostics) = model::resolve(&file);
+    result.diagnostics.extend(diagnostics);
+    watch.timings.parse_resolve = watch.lap();
+    let Some(model) = model else { return result };
+    if !result.ok() {
+        result.model = Some(model);
+        return result;
+    }
+    let steps = options.iterations.unwrap_or(model.settings.iterations);
+    if steps > model.settings.max_steps {
+        result.diagnostics.push(Diagnostic::error(
+            "E0202",
+            model.settings.iterations_span.clone().unwrap_or(0..0),
+            format!(
+                "{steps} iterations are more than the step limit {}; raise it with '{} {steps}'",
+                model.settings.max_steps,
+                crate::vocabulary::DirectiveKind::MaxSteps.written(),
+            ),
+        ));
+        result.model = Some(model);
+        return result;
+    }
+    watch.start(Stage::Derive);
+    watch.hooks.tell(Progress::Derived { step: 0, steps });
+    let mut stepped = |step| watch.hooks.tell(Progress::Derived { step, steps });
+    let derived = derive_stage(&model, steps, options.seed, &mut result, &mut stepped);
+    watch.timings.derive = watch.lap();
+    if let Some(None) = derived.as_ref().filter(|_| options.sketch) {
+        watch.start(Stage::Interpret);
+        let derivation = &result.derivation;
+        let sketch =
+            turtle::sketch_counted(&model, derivation.turtle_string(), &derivation.id_counts);
+        watch.timings.interpret = watch.lap();
+        if let Some(module) = sketch.clamped() {
+            result
+                .diagnostics
+                .push(clamped_warning(&model, &result.derivation, module));
+        }
+        watch.start(Stage::Mesh);
+        result.steps = steps;
+        result.seed = options.seed;
+        result.plant = Plant::sketched(sketch, &options.mesh, &result.derivation, steps);
+        watch.timings.mesh = watch.lap();
+    } else if let Some(adjustments) = derived {
+        watch.start(Stage::Interpret);
+        let skeleton = turtle::interpret_adjusted(
+            &model,
+            result.derivation.turtle_string(),
+            adjustments.as_ref(),
+        );
+        watch.timings.interpret = watch.lap();
+        if let Some(module) = skeleton.clamped {
+            result
+                .diagnostics
+                .push(clamped_warning(&model, &result.derivation, module));
+        }
+        watch.start(Stage::Mesh);
+        result.steps = steps;
+        result.seed = options.seed;
+        result.plant = Plant::new(skeleton, &options.mesh, &result.derivation, steps);
+        watch.timings.mesh = watch.lap();
+    }
+    result.model = Some(model);
+    result
+}
+
+/// `E0406`: the module at `module` of the turtle's string drew past the skeleton's bounds; at
+/// the production that wrote it in the last step (else the axiom).
+fn clamped_warning(model: &Model, derivation: &Derivation, module: u32) -> Diagnostic {
+    let turtle = derivation.turtle_string();
+    let name = turtle
+        .ids
+        .get(module as usize)
+        .map_or("?", |&id| model.alphabet.name(id));
+    let in_string = derivation
+        .turtle_origin
+        .get(module as usize)
+        .copied()
+        .unwrap_or(module);
+    let span = derivation
+        .origin()
+        .get(in_string as usize)
+        .and_then(|&p| model.productions.productions.get(p as usize))
+        .map_or_else(|| model.axiom_span.clone(), |p| p.span.clone());
+    Diagnostic::warning(
+        "E0406",
+        span,
+        format!(
+            "'{name}' (module {} of the string) draws past ±{MAX_COORDINATE_TEXT} or with a \
+             number that is not finite; its geometry is clamped so that the view and every file \
+             stay valid",
+            module as u64 + 1,
+        ),
+    )
+}

@@ -1,0 +1,131 @@
+//! What the stages after derive do while it derives ([`derive::Observer`]): growth follows the
+//! string and the turtle answers query modules, for a build ([`derive_stage`]) and for the traced
+//! derivation ([`trace`]).
+
+use super::Build;
+use crate::derive::{self, DeriveOptions};
+use crate::diagnostics::Diagnostic;
+use crate::growth::{Adjustments, GrowthTracker};
+use crate::model::{LString, Model};
+use crate::turtle;
+
+/// Derives (with growth following, when the grammar has growth attributes) into `result`,
+/// telling `stepped` each step done; returns the turtle's adjustments, or `None` when derivation
+/// failed.
+pub(super) fn derive_stage(
+    model: &Model,
+    steps: u32,
+    seed: Option<u64>,
+    result: &mut Build,
+    stepped: &mut dyn FnMut(u32),
+) -> Option<Option<Adjustments>> {
+    let mut observer = StageObserver {
+        model,
+        growth: GrowthTracker::new(model, steps),
+        stepped: Some(stepped),
+    };
+    let options = DeriveOptions { steps, seed };
+    match derive::derive_tracked(model, &options, &mut observer) {
+        Ok(mut derivation) => {
+            result.diagnostics.append(&mut derivation.warnings);
+            let adjustments = observer
+                .growth
+                .as_ref()
+                .map(|g| g.adjustments(&derivation.turtle_origin));
+            result.growth = observer.growth.map(GrowthTracker::finish);
+            result.derivation = derivation;
+            Some(adjustments)
+        }
+        Err(diagnostic) => {
+            result.diagnostics.push(diagnostic);
+            None
+        }
+    }
+}
+
+/// Derives again, recording every step (the derivation as a sequence), with growth following as in
+/// a build.
+pub(super) fn trace(
+    model: &Model,
+    options: &DeriveOptions,
+) -> Result<Vec<derive::TracedStep>, Diagnostic> {
+    let mut observer = StageObserver {
+        model,
+        growth: GrowthTracker::new(model, options.steps),
+        stepped: None,
+    };
+    derive::derive_traced(model, options, &mut observer).map(|(_, steps)| steps)
+}
+
+/// What the stages after derive do while it derives: growth follows every module and plans each
+/// step (asking the turtle for heights), and the turtle answers query modules. Both read the
+/// derived string itself, not its homomorphism image. The progress callback, if any, is told each
+/// step done.
+struct StageObserver<'m, 's> {
+    model: &'m Model,
+    growth: Option<GrowthTracker<'m>>,
+    stepped: Option<&'s mut dyn FnMut(u32)>,
+}
+
+impl derive::Observer for StageObserver<'_, '_> {
+    fn follows_modules(&self) -> bool {
+        self.growth.is_some()
+    }
+
+    fn axiom(&mut self, axiom: &LString, rng: &mut dyn rand::Rng) {
+        if let Some(g) = &mut self.growth {
+            g.axiom(axiom, rng);
+        }
+    }
+
+    fn plan(
+        &mut self,
+        step: u32,
+        s: &LString,
+        rng: &mut dyn rand::Rng,
+    ) -> Result<Option<Vec<u32>>, Diagnostic> {
+        let Some(g) = &mut self.growth else {
+            return Ok(None);
+        };
+        let model = self.model;
+        let mut heights = |s: &LString, a: &Adjustments| turtle::heights(model, s, Some(a));
+        g.plan(step, s, &mut heights, rng).map(Some)
+    }
+
+    fn followed(
+        &mut self,
+        written: &LString,
+        parent: &[u32],
+        origin: &[u32],
+        birth: Option<u32>,
+        rng: &mut dyn rand::Rng,
+    ) {
+        if let Some(g) = &mut self.growth {
+            g.follow(written, parent, origin, birth, rng);
+        }
+    }
+
+    fn cut(&mut self, kept: &[u32]) {
+        if let Some(g) = &mut self.growth {
+            g.cut(kept);
+        }
+    }
+
+    fn stepped(&mut self, step: u32) {
+        if let Some(g) = &mut self.growth {
+            g.stepped(step);
+        }
+        if let Some(stepped) = self.stepped.as_mut() {
+            stepped(step);
+        }
+    }
+
+    fn queries(&mut self, s: &LString) -> Vec<(u32, [f64; 3])> {
+        let adjustments = self.growth.as_ref().map(|g| g.adjustments(&[]));
+        turtle::interpret_adjusted(self.model, s, adjustments.as_ref())
+            .queries
+            .into_iter()
+            .map(|q| (q.module, q.value))
+            .collect()
+    }
+}
