@@ -5,6 +5,7 @@
 //! large to mesh is written as an `IndexedLineSet` per colour index (emissive colour).
 
 use super::scene::{coord_index, decimals_for, extent, number, srgb, Primitive, Scene, View};
+use super::text::{triple, triple_lines};
 
 /// The VRML text of `scene`.
 pub fn write(scene: &Scene) -> String {
@@ -81,21 +82,12 @@ pub fn write(scene: &Scene) -> String {
 
 /// `x y z` of a vector.
 fn vector(out: &mut String, v: [f64; 3], decimals: usize) {
-    for (k, c) in v.iter().enumerate() {
-        if k > 0 {
-            out.push(' ');
-        }
-        number(out, *c, decimals);
-    }
+    triple(out, v, decimals, " ");
 }
 
 /// One `x y z,` line per point of a flat `f32` × 3 array.
 fn points(out: &mut String, flat: &[f32], decimals: usize) {
-    for p in flat.chunks_exact(3) {
-        out.push_str("      ");
-        vector(out, [p[0] as f64, p[1] as f64, p[2] as f64], decimals);
-        out.push_str(",\n");
-    }
+    triple_lines(out, flat, "      ", |out, v| vector(out, v, decimals));
 }
 
 #[cfg(test)]
