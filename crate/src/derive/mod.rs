@@ -15,16 +15,20 @@
 //! derives (the turtle answering query modules, growth following every module and planning each
 //! step) comes in through an [`Observer`], which the pipeline implements.
 
-mod classes;
 pub mod context;
 mod cut;
 mod d0l;
 mod explain;
+mod fixed_pass;
 mod generator;
 mod groups;
-mod parametric;
+mod module_classes;
+mod module_pass;
+mod parametric_classes;
+mod parametric_pass;
 mod plan;
 mod rewriter;
+mod successors;
 
 pub use explain::{explain, match_report, ContextCheck, Explanation, LastStep, MatchReport};
 
