@@ -27,3 +27,14 @@ pub fn triple_lines(
         out.push_str(",\n");
     }
 }
+
+/// `x y z`: a vector as VRML and Inventor write it.
+pub fn xyz(out: &mut String, v: [f64; 3], decimals: usize) {
+    triple(out, v, decimals, " ");
+}
+
+/// One `x y z,` line per vector of a flat `f32` × 3 array: VRML's and Inventor's point and normal
+/// lists.
+pub fn xyz_lines(out: &mut String, flat: &[f32], decimals: usize) {
+    triple_lines(out, flat, "      ", |out, v| xyz(out, v, decimals));
+}
