@@ -15,7 +15,7 @@
 //! table, and a grammar mixing every feature pays for them only where they are.
 
 use super::context::NONE;
-use super::successors::{width, PAD};
+use super::successors::{put, width, PAD};
 use super::NOT_REWRITTEN;
 use crate::model::{
     LString, Model, ModuleId, PatternItem, PatternModule, Production, RuleSet, SuccessorModule,
@@ -374,6 +374,13 @@ impl ModuleClasses {
                 }
             }
         }
+    }
+
+    /// Appends the successor of `len` ids at `start` in [`ModuleClasses::successors`] to `out`
+    /// ([`put`]).
+    #[inline(always)]
+    pub fn put(&self, out: &mut Vec<ModuleId>, start: u32, len: u32) {
+        put(out, &self.successors, start as usize, len as usize);
     }
 
     /// The alternative of a Choice class that the uniform draw `u` (in [0, 1)) picks: the weighted

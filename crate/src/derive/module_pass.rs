@@ -4,11 +4,11 @@
 
 use super::context;
 use super::module_classes::{self, ModuleClasses, ModuleKind};
-use super::rewriter::Rewriter;
+use super::rewriter::{Pass, Rewriter};
 use super::successors::{self, PAD};
 use super::{check_size, MAX_STRING_BYTES, NOT_REWRITTEN};
 use crate::diagnostics::Diagnostic;
-use crate::model::{LString, ModuleId, RuleSet};
+use crate::model::{LString, ModuleId};
 use rand::RngExt;
 
 impl<R: rand::Rng> Rewriter<'_, R> {
@@ -19,12 +19,11 @@ impl<R: rand::Rng> Rewriter<'_, R> {
     pub(super) fn rewrite_by_class(
         &mut self,
         c: &ModuleClasses,
-        rules: &RuleSet,
-        src: &LString,
+        pass: &Pass<'_>,
         dst: &mut LString,
-        num_it: u32,
         (right, stack): (&mut Vec<u32>, &mut Vec<u32>),
     ) -> Result<bool, Diagnostic> {
+        let Pass { src, num_it, .. } = *pass;
         let model = self.model;
         // Past either limit, check_size says which (a string without parameters: 4 bytes a module).
         let max = (model.settings.max_modules).min(MAX_STRING_BYTES / size_of::<ModuleId>());
@@ -33,11 +32,11 @@ impl<R: rand::Rng> Rewriter<'_, R> {
             && !c.flat
             && module_classes::right_neighbours(&c.classes, src, right, stack);
         if c.sized && !tracking && !c.neighbours {
-            if let Some(changed) = self.rewrite_fixed(c, src, dst, num_it) {
+            if let Some(changed) = self.rewrite_fixed(c, pass, dst) {
                 return Ok(changed);
             }
         } else if c.sized && !tracking && !nested {
-            if let Some(changed) = self.rewrite_sized(c, src, dst, num_it) {
+            if let Some(changed) = self.rewrite_sized(c, pass, dst) {
                 return Ok(changed);
             }
         }
@@ -48,33 +47,18 @@ impl<R: rand::Rng> Rewriter<'_, R> {
             let class = &c.classes[id.index()];
             let production = match class.kind {
                 ModuleKind::Fixed => {
-                    successors::put(
-                        &mut dst.ids,
-                        &c.successors,
-                        class.start as usize,
-                        class.len as usize,
-                    );
+                    c.put(&mut dst.ids, class.start, class.len);
                     class.production
                 }
                 ModuleKind::Choice => {
                     let a = c.choose(class, self.rng.random::<f64>());
-                    successors::put(
-                        &mut dst.ids,
-                        &c.successors,
-                        a.start as usize,
-                        a.len as usize,
-                    );
+                    c.put(&mut dst.ids, a.start, a.len);
                     a.production
                 }
                 ModuleKind::Neighbours => {
                     match c.neighbours_match(class, last, next_to(src, right, i, nested)) {
                         Some(a) => {
-                            successors::put(
-                                &mut dst.ids,
-                                &c.successors,
-                                a.start as usize,
-                                a.len as usize,
-                            );
+                            c.put(&mut dst.ids, a.start, a.len);
                             a.production
                         }
                         None => {
@@ -83,9 +67,7 @@ impl<R: rand::Rng> Rewriter<'_, R> {
                         }
                     }
                 }
-                ModuleKind::General => self
-                    .rewrite_module(rules, src, i, dst, num_it)?
-                    .unwrap_or(NOT_REWRITTEN),
+                ModuleKind::General => self.rewrite_module(pass, i, dst)?.unwrap_or(NOT_REWRITTEN),
             };
             if production != NOT_REWRITTEN {
                 changed = true;
@@ -113,46 +95,32 @@ impl<R: rand::Rng> Rewriter<'_, R> {
     fn rewrite_sized(
         &mut self,
         c: &ModuleClasses,
-        src: &LString,
+        pass: &Pass<'_>,
         dst: &mut LString,
-        num_it: u32,
     ) -> Option<bool> {
         Some(match c.width {
-            4 => self.rewrite_sized_as::<4>(c, src, dst, num_it)?,
-            8 => self.rewrite_sized_as::<8>(c, src, dst, num_it)?,
-            PAD => self.rewrite_sized_as::<{ PAD }>(c, src, dst, num_it)?,
+            4 => self.rewrite_sized_as::<4>(c, pass, dst)?,
+            8 => self.rewrite_sized_as::<8>(c, pass, dst)?,
+            PAD => self.rewrite_sized_as::<{ PAD }>(c, pass, dst)?,
             _ => return None,
         })
     }
 
     /// [`Rewriter::rewrite_by_class`] when every class is Fixed or Choice of a known length and
-    /// nothing is tracked: the next length comes from the id counts ([`module_classes::Counts`], carried
-    /// from the last pass when it wrote `src`), the output is allocated once and every module is one
-    /// copy of a successor. `None` when the next string passes a limit: the caller's loop says
-    /// where.
+    /// nothing is tracked: the next length comes from the id counts ([`super::fixed_pass::Counts`],
+    /// carried from the last pass when it wrote `src`), the output is allocated once and every
+    /// module is one copy of a successor. `None` when the next string passes a limit: the caller's
+    /// loop says where.
     fn rewrite_fixed(
         &mut self,
         c: &ModuleClasses,
-        src: &LString,
+        pass: &Pass<'_>,
         dst: &mut LString,
-        num_it: u32,
     ) -> Option<bool> {
+        let Pass { src, num_it, .. } = *pass;
         let carried = self.counts.carried;
         let len = c.fixed_len(&src.ids, &mut self.counts, carried);
-        if check_size(
-            self.model,
-            num_it,
-            len,
-            len.saturating_mul(size_of::<ModuleId>()),
-        )
-        .is_err()
-        {
-            return None;
-        }
-        if dst.ids.capacity() < len + PAD {
-            // A new buffer: growing the old one would copy what it held.
-            dst.ids = Vec::with_capacity(len + PAD);
-        }
+        self.sized_room(num_it, dst, len, len.saturating_mul(size_of::<ModuleId>()))?;
         let picks = &mut self.counts.picks;
         picks.clear();
         picks.resize(c.alternatives.len(), 0);
@@ -163,27 +131,32 @@ impl<R: rand::Rng> Rewriter<'_, R> {
         Some(changed)
     }
 
+    /// Room in `dst` for the `len` ids (`bytes` bytes) a sized pass writes, and the [`PAD`] ids
+    /// its copies write past them; `None` when they pass a limit: the caller's loop says where.
+    fn sized_room(&self, num_it: u32, dst: &mut LString, len: usize, bytes: usize) -> Option<()> {
+        check_size(self.model, num_it, len, bytes).ok()?;
+        if dst.ids.capacity() < len + PAD {
+            // A new buffer: growing the old one would copy what it held.
+            dst.ids = Vec::with_capacity(len + PAD);
+        }
+        Some(())
+    }
+
     /// [`Rewriter::rewrite_sized`], each successor copied as `W` ids.
     #[inline(never)]
     fn rewrite_sized_as<const W: usize>(
         &mut self,
         c: &ModuleClasses,
-        src: &LString,
+        pass: &Pass<'_>,
         dst: &mut LString,
-        num_it: u32,
     ) -> Option<bool> {
+        let Pass { src, num_it, .. } = *pass;
         let len: usize = if c.unit {
             src.len()
         } else {
             src.ids.iter().map(|id| c.outs[id.index()] as usize).sum()
         };
-        if check_size(self.model, num_it, len, len * size_of::<ModuleId>()).is_err() {
-            return None;
-        }
-        if dst.ids.capacity() < len + PAD {
-            // A new buffer: growing the old one would copy what it held.
-            dst.ids = Vec::with_capacity(len + PAD);
-        }
+        self.sized_room(num_it, dst, len, len * size_of::<ModuleId>())?;
         let ids = &src.ids;
         let n = ids.len();
         let mut changed = false;

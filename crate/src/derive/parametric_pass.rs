@@ -3,11 +3,11 @@
 //! written straight into the output, sized before the step when no class is general.
 
 use super::parametric_classes::{write_affine, Arg, ParametricClasses, ParametricKind, Template};
-use super::rewriter::Rewriter;
+use super::rewriter::{Pass, Rewriter};
 use super::successors::{put, put_wide, PAD};
 use super::{check_size, NOT_REWRITTEN};
 use crate::diagnostics::Diagnostic;
-use crate::model::{LString, RuleSet};
+use crate::model::LString;
 use std::mem::MaybeUninit;
 
 impl<R: rand::Rng> Rewriter<'_, R> {
@@ -16,16 +16,14 @@ impl<R: rand::Rng> Rewriter<'_, R> {
     pub(super) fn rewrite_parametric(
         &mut self,
         c: &mut ParametricClasses,
-        rules: &RuleSet,
-        src: &LString,
+        pass: &Pass<'_>,
         dst: &mut LString,
-        num_it: u32,
     ) -> Result<bool, Diagnostic> {
         match c.width {
-            4 => self.rewrite_parametric_as::<4>(c, rules, src, dst, num_it),
-            8 => self.rewrite_parametric_as::<8>(c, rules, src, dst, num_it),
-            PAD => self.rewrite_parametric_as::<PAD>(c, rules, src, dst, num_it),
-            _ => self.rewrite_parametric_as::<0>(c, rules, src, dst, num_it),
+            4 => self.rewrite_parametric_as::<4>(c, pass, dst),
+            8 => self.rewrite_parametric_as::<8>(c, pass, dst),
+            PAD => self.rewrite_parametric_as::<PAD>(c, pass, dst),
+            _ => self.rewrite_parametric_as::<0>(c, pass, dst),
         }
     }
 
@@ -35,11 +33,10 @@ impl<R: rand::Rng> Rewriter<'_, R> {
     fn rewrite_parametric_as<const W: usize>(
         &mut self,
         c: &mut ParametricClasses,
-        rules: &RuleSet,
-        src: &LString,
+        pass: &Pass<'_>,
         dst: &mut LString,
-        num_it: u32,
     ) -> Result<bool, Diagnostic> {
+        let Pass { src, num_it, .. } = *pass;
         let model = self.model;
         // Sized before the step: no module can pass a limit on the way.
         let mut sized = false;
@@ -54,7 +51,7 @@ impl<R: rand::Rng> Rewriter<'_, R> {
             let bytes = len * 8 + 4 + params * size_of::<f64>();
             if check_size(model, num_it, len, bytes).is_err() {
                 // Past a limit: the general path says where, as it always has.
-                return self.rewrite_range(rules, src, 0..src.len(), dst, num_it);
+                return self.rewrite_range(pass, 0..src.len(), dst);
             }
             reserve(&mut dst.ids, len + PAD);
             reserve(&mut dst.offsets, len + 1);
@@ -63,7 +60,7 @@ impl<R: rand::Rng> Rewriter<'_, R> {
             sized = true;
             if self.tracker.is_none() {
                 let (changed, next) =
-                    self.rewrite_parametric_sized::<W>(c, src, dst, num_it, (len, params))?;
+                    self.rewrite_parametric_sized::<W>(c, pass, dst, (len, params))?;
                 if c.carries {
                     c.carried = Some([len, params, next.0, next.1]);
                 }
@@ -100,7 +97,7 @@ impl<R: rand::Rng> Rewriter<'_, R> {
                     NOT_REWRITTEN
                 }
                 ParametricKind::General => {
-                    let applied = self.rewrite_module(rules, src, i, dst, num_it)?;
+                    let applied = self.rewrite_module(pass, i, dst)?;
                     changed |= applied.is_some();
                     applied.unwrap_or(NOT_REWRITTEN)
                 }
@@ -120,11 +117,11 @@ impl<R: rand::Rng> Rewriter<'_, R> {
     fn rewrite_parametric_sized<const W: usize>(
         &mut self,
         c: &ParametricClasses,
-        src: &LString,
+        pass: &Pass<'_>,
         dst: &mut LString,
-        num_it: u32,
         (len, params): (usize, usize),
     ) -> Result<(bool, (usize, usize)), Diagnostic> {
+        let Pass { src, num_it, .. } = *pass;
         // Written in place into the buffers' spare room (reserved by the caller, with room for
         // the over-copy of W ids past the last module), then the lengths set once all is written:
         // no zeroing first, no capacity check per module.

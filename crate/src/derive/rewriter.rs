@@ -31,6 +31,16 @@ impl Tracker {
     }
 }
 
+/// What one parallel rewriting reads: the rules it applies, the string it rewrites and the step
+/// (`num_it`, the number the expressions see). The passes and their helpers take it by reference
+/// beside the module index and the output they write.
+#[derive(Clone, Copy)]
+pub(super) struct Pass<'a> {
+    pub rules: &'a RuleSet,
+    pub src: &'a LString,
+    pub num_it: u32,
+}
+
 /// The general path's working state, reused across modules and steps.
 pub(super) struct Rewriter<'m, R: rand::Rng> {
     pub model: &'m Model,
@@ -325,21 +335,22 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
             t.parent.clear();
             t.origin.clear();
         }
+        let pass = &Pass { rules, src, num_it };
         match classes {
             Some(c) => {
                 let (mut right, mut stack) = (take(&mut self.right), take(&mut self.stack));
                 let scratch = (&mut right, &mut stack);
-                let changed = self.rewrite_by_class(&c, rules, src, dst, num_it, scratch);
+                let changed = self.rewrite_by_class(&c, pass, dst, scratch);
                 (self.classes, self.right, self.stack) = (Some(c), right, stack);
                 changed
             }
             None => match parametric {
                 Some(mut c) => {
-                    let changed = self.rewrite_parametric(&mut c, rules, src, dst, num_it);
+                    let changed = self.rewrite_parametric(&mut c, pass, dst);
                     self.parametric = Some(c);
                     changed
                 }
-                None => self.rewrite_range(rules, src, 0..src.len(), dst, num_it),
+                None => self.rewrite_range(pass, 0..src.len(), dst),
             },
         }
     }
@@ -348,12 +359,11 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
     /// the productions section; elsewhere their members are rewritten like any module.
     pub fn rewrite_range(
         &mut self,
-        rules: &RuleSet,
-        src: &LString,
+        pass: &Pass<'_>,
         range: std::ops::Range<usize>,
         dst: &mut LString,
-        num_it: u32,
     ) -> Result<bool, Diagnostic> {
+        let Pass { rules, src, .. } = *pass;
         let model = self.model;
         let groups_act = model.has_groups && std::ptr::eq(rules, &model.productions);
         let planned = self.plan.is_some();
@@ -365,15 +375,15 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
                 && model.groups.is_group(id)
                 && src.ids.get(i + 1) == Some(&model.groups.open)
             {
-                i = self.rewrite_group(rules, src, i, dst, num_it)?;
+                i = self.rewrite_group(pass, i, dst)?;
                 self.note(dst.len(), i, NOT_REWRITTEN);
                 changed = true;
                 continue;
             }
             let applied = if planned {
-                self.rewrite_planned(rules, src, i, dst, num_it)?
+                self.rewrite_planned(pass, i, dst)?
             } else {
-                self.rewrite_module(rules, src, i, dst, num_it)?
+                self.rewrite_module(pass, i, dst)?
             };
             self.note(dst.len(), i, applied.unwrap_or(NOT_REWRITTEN));
             changed |= applied.is_some();
@@ -392,12 +402,11 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
     /// Rewrites module `i` of `src` onto `dst`; returns the production applied, if any.
     pub fn rewrite_module(
         &mut self,
-        rules: &RuleSet,
-        src: &LString,
+        pass: &Pass<'_>,
         i: usize,
         dst: &mut LString,
-        num_it: u32,
     ) -> Result<Option<u32>, Diagnostic> {
+        let Pass { rules, src, num_it } = *pass;
         let model = self.model;
         let id = src.ids[i];
         let candidates = rules
@@ -417,7 +426,7 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
             }
             chosen = Some(match &p.weight {
                 None => index,
-                Some(_) => self.choose_weighted(rules, &candidates[k..], src, i, num_it)?,
+                Some(_) => self.choose_weighted(pass, &candidates[k..], i)?,
             });
             break;
         }
@@ -449,12 +458,11 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
     /// already), in proportion to their weights; leaves the chosen one's slots bound.
     fn choose_weighted(
         &mut self,
-        rules: &RuleSet,
+        pass: &Pass<'_>,
         candidates: &[u32],
-        src: &LString,
         i: usize,
-        num_it: u32,
     ) -> Result<u32, Diagnostic> {
+        let Pass { rules, src, num_it } = *pass;
         self.weighted.clear();
         let mut total = 0.0;
         for (k, &index) in candidates.iter().enumerate() {
