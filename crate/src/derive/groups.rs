@@ -204,9 +204,7 @@ impl<R: rand::Rng> Rewriter<'_, R> {
         self.note(dst.len(), i, NOT_REWRITTEN);
         Ok(())
     }
-}
 
-impl<R: rand::Rng> Rewriter<'_, R> {
     /// `E0405` for a `@Repeat` count above `#max_steps`, at the count.
     pub(super) fn check_repeat_count(
         &self,

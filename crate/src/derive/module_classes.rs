@@ -1,15 +1,16 @@
 //! Per-module production classes: the general path's table for strings without parameters.
 //!
 //! For each module id, what its productions need at run time, decided once per derivation:
-//! - [`ModuleKind::Fixed`]: the first production always applies (no context, condition or weight), or
-//!   there is none (the module is copied): a table copy, as on the D0L path;
-//! - [`ModuleKind::Choice`]: weighted productions with constant weights and nothing else to match: one
-//!   draw, the same draw and the same arithmetic as [`super::rewriter`]'s weighted choice;
+//! - [`ModuleKind::Fixed`]: the first production always applies (no context, condition or
+//!   weight), or there is none (the module is copied): a table copy, as on the D0L path;
+//! - [`ModuleKind::Choice`]: weighted productions with constant weights and nothing else to
+//!   match: one draw, the same draw and the same arithmetic as [`super::rewriter`]'s weighted
+//!   choice;
 //! - [`ModuleKind::Neighbours`]: productions whose contexts are one module each side (or none): the
 //!   pass compares the module's neighbours (the previous module on the path to the root, the next
 //!   one on its branch, as [`super::context`] finds them) with the productions' contexts;
-//! - [`ModuleKind::General`]: anything else (conditions, longer or branching contexts, weights mixed
-//!   with contexts, control modules), matched by the general path module by module.
+//! - [`ModuleKind::General`]: anything else (conditions, longer or branching contexts, weights
+//!   mixed with contexts, control modules), matched by the general path module by module.
 //!
 //! So a stochastic or context-sensitive grammar still rewrites its plain modules (`F -> FF`) by
 //! table, and a grammar mixing every feature pays for them only where they are.
@@ -45,8 +46,8 @@ pub(super) struct ModuleClass {
     pub role: Role,
     /// Fixed: the production applied ([`NOT_REWRITTEN`] for a copy).
     pub production: u32,
-    /// Fixed: the successor in [`ModuleClasses::successors`]; Choice and Neighbours: the alternatives
-    /// in [`ModuleClasses::alternatives`].
+    /// Fixed: the successor in [`ModuleClasses::successors`]; Choice and Neighbours: the
+    /// alternatives in [`ModuleClasses::alternatives`].
     pub start: u32,
     pub len: u32,
     /// Choice: the sum of the weights, in source order.
@@ -109,10 +110,11 @@ pub(super) struct ModuleClasses {
     pub outs: Vec<u32>,
 }
 
-/// In [`ModuleClasses::entry`]'s length: the class is not Fixed (look at [`ModuleClasses::classes`]).
+/// In [`ModuleClasses::entry`]'s length: the class is not Fixed (look at
+/// [`ModuleClasses::classes`]).
 pub(super) const SPECIAL: u32 = 1 << 31;
-/// In [`ModuleClasses::entry`]'s length: a production rewrites the module (Fixed with a production, or
-/// Choice).
+/// In [`ModuleClasses::entry`]'s length: a production rewrites the module (Fixed with a
+/// production, or Choice).
 pub(super) const REWRITES: u32 = 1 << 30;
 
 impl ModuleClasses {
@@ -390,8 +392,8 @@ impl ModuleClasses {
         &self.alternatives[class.start as usize + self.choose_index(class, u)]
     }
 
-    /// The index among its class's alternatives of the one [`ModuleClasses::choose`] picks. Without a
-    /// branch on the draw (which goes either way at random): every alternative is looked at,
+    /// The index among its class's alternatives of the one [`ModuleClasses::choose`] picks.
+    /// Without a branch on the draw (which goes either way at random): every alternative is looked at,
     /// and `r` stops changing at the first whose weight it is below, so the arithmetic up to it
     /// is the general path's.
     #[inline]

@@ -3,12 +3,12 @@
 //!
 //! For each module id:
 //! - [`ParametricKind::Copy`]: no production: the module is copied, parameters and all;
-//! - [`ParametricKind::Template`]: its first production has no context, condition or weight, and its
-//!   successor no control module: when the module has the predecessor's arity, it always applies,
-//!   and its successor is a template: the ids and the offsets are copied, each argument is written
-//!   straight into the parameters, the simple ones ([`Simple`]: a constant, a parameter, one
-//!   operator) without the interpreter, those of the form parameter `*` or `+` constant
-//!   ([`Affine`], `#define` constants folded) without reading the slots;
+//! - [`ParametricKind::Template`]: its first production has no context, condition or weight, and
+//!   its successor no control module: when the module has the predecessor's arity, it always
+//!   applies, and its successor is a template: the ids and the offsets are copied, each argument
+//!   is written straight into the parameters, the simple ones ([`Simple`]: a constant, a
+//!   parameter, one operator) without the interpreter, those of the form parameter `*` or `+`
+//!   constant ([`Affine`], `#define` constants folded) without reading the slots;
 //! - [`ParametricKind::General`]: anything else, matched by the general path module by module.
 //!
 //! The output is sized before the step when no module is general, so the buffers never grow:
