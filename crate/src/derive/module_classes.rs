@@ -286,18 +286,9 @@ impl ModuleClasses {
                 return self.give_up(start);
             }
             class.total += w;
-            let (s, len) = self.successor(p.successor.iter().map(|m| m.id));
-            self.alternatives.push(Alternative {
-                production: k,
-                weight: w,
-                left: NONE,
-                right: NONE,
-                start: s,
-                len,
-            });
+            self.push_alternative(k, p, w, (NONE, NONE));
         }
-        class.start = start as u32;
-        class.len = (self.alternatives.len() - start) as u32;
+        self.set_alternatives(class, start);
         ModuleKind::Choice
     }
 
@@ -326,22 +317,33 @@ impl ModuleClasses {
             let (Some(left), Some(right), None) = (left, right, &p.weight) else {
                 return self.give_up(start);
             };
-            let (s, len) = self.successor(p.successor.iter().map(|m| m.id));
-            self.alternatives.push(Alternative {
-                production: k,
-                weight: 0.0,
-                left,
-                right,
-                start: s,
-                len,
-            });
+            self.push_alternative(k, p, 0.0, (left, right));
             if !p.has_context() {
                 break; // it always applies: the productions after it never do
             }
         }
+        self.set_alternatives(class, start);
+        ModuleKind::Neighbours
+    }
+
+    /// Appends production `k` (`p`) as an alternative of the class being built, with its weight
+    /// and its contexts (left, right).
+    fn push_alternative(&mut self, k: u32, p: &Production, weight: f64, (left, right): (u32, u32)) {
+        let (start, len) = self.successor(p.successor.iter().map(|m| m.id));
+        self.alternatives.push(Alternative {
+            production: k,
+            weight,
+            left,
+            right,
+            start,
+            len,
+        });
+    }
+
+    /// Makes `class`'s alternatives those pushed since `start`.
+    fn set_alternatives(&self, class: &mut ModuleClass, start: usize) {
         class.start = start as u32;
         class.len = (self.alternatives.len() - start) as u32;
-        ModuleKind::Neighbours
     }
 
     /// True when `class` copies its module unless a neighbour is the context of one of its
