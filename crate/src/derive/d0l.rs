@@ -8,7 +8,7 @@
 //! one through the successors), so the string is read once per step, not twice; when decomposition
 //! or cut change the string between steps, the ids are counted again.
 
-use super::classes::{put, width, Room, PAD};
+use super::successors::{put, width, Room, PAD};
 use super::{check_size, cut, memory_error, NOT_REWRITTEN};
 use crate::diagnostics::Diagnostic;
 use crate::model::{LString, Model, ModuleId};

@@ -231,65 +231,66 @@ impl<R: rand::Rng> Rewriter<'_, R> {
     /// The left context of `p` against module `i`, one element at a time from the predecessor out.
     fn check_left(&mut self, p: &Production, src: &LString, i: usize) -> ContextCheck {
         let model = self.model;
+        let (partner, slots) = (&self.partner, &mut self.slots);
         let n = p.left.len();
-        let mut check = ContextCheck {
-            matched: true,
-            ..ContextCheck::default()
-        };
-        for k in 1..=n {
-            let mut matched = Vec::new();
-            let pattern = &p.left[n - k..];
-            if context::match_left(
-                model,
-                src,
-                &self.partner,
-                i,
-                pattern,
-                &mut self.slots,
-                &mut matched,
-            ) {
-                check.modules = matched;
-                continue;
-            }
-            let from = check.modules.last().map_or(i, |&m| m as usize);
-            check.matched = false;
-            check.expected = Some(model.alphabet.name(pattern[0].id).to_string());
-            check.found = context::previous(model, src, &self.partner, from).map(|f| f as u32);
-            break;
-        }
-        check
+        check_context(
+            n,
+            i,
+            |k, matched| {
+                context::match_left(model, src, partner, i, &p.left[n - k..], slots, matched)
+            },
+            |k| model.alphabet.name(p.left[n - k].id).to_string(),
+            |from| context::previous(model, src, partner, from).map(|f| f as u32),
+        )
     }
 
     /// The right context of `p` against module `i`, one element at a time from the predecessor on.
     fn check_right(&mut self, p: &Production, src: &LString, i: usize) -> ContextCheck {
         let model = self.model;
-        let mut check = ContextCheck {
-            matched: true,
-            ..ContextCheck::default()
-        };
-        for k in 1..=p.right.len() {
-            let mut matched = Vec::new();
-            let pattern = &p.right[..k];
-            if context::match_right(
-                model,
-                src,
-                &self.partner,
-                i + 1,
-                pattern,
-                &mut self.slots,
-                &mut matched,
-            ) {
-                check.modules = matched;
-                continue;
-            }
-            let from = check.modules.last().map_or(i, |&m| m as usize);
-            check.matched = false;
-            check.expected = Some(element_name(model, &pattern[k - 1]));
-            check.found = (from + 1..src.len())
-                .find(|&j| !model.ignored[src.ids[j].index()])
-                .map(|j| j as u32);
-            break;
-        }
-        check
+        let (partner, slots) = (&self.partner, &mut self.slots);
+        check_context(
+            p.right.len(),
+            i,
+            |k, matched| {
+                context::match_right(model, src, partner, i + 1, &p.right[..k], slots, matched)
+            },
+            |k| element_name(model, &p.right[k - 1]),
+            |from| {
+                (from + 1..src.len())
+                    .find(|&j| !model.ignored[src.ids[j].index()])
+                    .map(|j| j as u32)
+            },
+        )
     }
+}
+
+/// A context of `n` elements checked against module `i` one element at a time, nearest the
+/// predecessor first: `matches(k, matched)` matches its `k` nearest elements, recording the modules
+/// they met in `matched`; at the first that fails, `expected(k)` names the element not met and
+/// `found(from)` is the module standing where it was expected, `from` being the last module met
+/// (or `i`).
+fn check_context(
+    n: usize,
+    i: usize,
+    mut matches: impl FnMut(usize, &mut Vec<u32>) -> bool,
+    expected: impl Fn(usize) -> String,
+    found: impl Fn(usize) -> Option<u32>,
+) -> ContextCheck {
+    let mut check = ContextCheck {
+        matched: true,
+        ..ContextCheck::default()
+    };
+    for k in 1..=n {
+        let mut matched = Vec::new();
+        if matches(k, &mut matched) {
+            check.modules = matched;
+            continue;
+        }
+        let from = check.modules.last().map_or(i, |&m| m as usize);
+        check.matched = false;
+        check.expected = Some(expected(k));
+        check.found = found(from);
+        break;
+    }
+    check
 }

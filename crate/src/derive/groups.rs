@@ -1,10 +1,10 @@
 //! Green's control modules (LANGUAGE.md section 7): `@Switch`, `@Pendulum` and `@Repeat` groups,
 //! which sit in the string as `header @< member @| member @>`.
 
-use super::rewriter::Rewriter;
+use super::rewriter::{Pass, Rewriter};
 use super::NOT_REWRITTEN;
 use crate::diagnostics::Diagnostic;
-use crate::model::{LString, Model, RuleSet, SuccessorModule};
+use crate::model::{LString, Model, SuccessorModule};
 use crate::syntax::{Span, MAX_GROUP_DEPTH};
 use std::ops::Range;
 
@@ -59,12 +59,11 @@ impl<R: rand::Rng> Rewriter<'_, R> {
     /// the index just after its closing marker.
     pub(super) fn rewrite_group(
         &mut self,
-        rules: &RuleSet,
-        src: &LString,
+        pass: &Pass<'_>,
         i: usize,
         dst: &mut LString,
-        num_it: u32,
     ) -> Result<usize, Diagnostic> {
+        let num_it = pass.num_it;
         if self.group_depth >= MAX_GROUP_DEPTH {
             return Err(Diagnostic::error(
                 "E0404",
@@ -77,7 +76,7 @@ impl<R: rand::Rng> Rewriter<'_, R> {
             ));
         }
         self.group_depth += 1;
-        let end = self.rewrite_group_members(rules, src, i, dst, num_it);
+        let end = self.rewrite_group_members(pass, i, dst);
         self.group_depth -= 1;
         end
     }
@@ -85,22 +84,21 @@ impl<R: rand::Rng> Rewriter<'_, R> {
     /// [`Rewriter::rewrite_group`] one level down.
     fn rewrite_group_members(
         &mut self,
-        rules: &RuleSet,
-        src: &LString,
+        pass: &Pass<'_>,
         i: usize,
         dst: &mut LString,
-        num_it: u32,
     ) -> Result<usize, Diagnostic> {
+        let src = pass.src;
         let g = self.model.groups;
         let group = group_at(src, i, &g);
         let end = group.end;
         let id = src.ids[i];
         if id == g.switch {
-            self.switch(rules, src, group, dst, num_it)?;
+            self.switch(pass, group, dst)?;
         } else if id == g.pendulum {
-            self.pendulum(rules, src, group, dst, num_it)?;
+            self.pendulum(pass, group, dst)?;
         } else {
-            self.repeat(rules, src, group, dst, num_it)?;
+            self.repeat(pass, group, dst)?;
         }
         dst.push(g.close, &[]);
         Ok((end + 1).min(src.len()))
@@ -124,19 +122,18 @@ impl<R: rand::Rng> Rewriter<'_, R> {
     /// `@Switch(A B C)`: only the member under the cursor is rewritten; the cursor moves on.
     fn switch(
         &mut self,
-        rules: &RuleSet,
-        src: &LString,
+        pass: &Pass<'_>,
         group: Group,
         dst: &mut LString,
-        num_it: u32,
     ) -> Result<(), Diagnostic> {
+        let src = pass.src;
         let (i, n) = (group.at, group.members.len());
         let cursor = (group.header.max(0.0) as usize) % n;
         self.open_group(src, i, ((cursor + 1) % n) as f64, dst);
         for (k, member) in group.members.into_iter().enumerate() {
             self.separate(k, i, dst);
             if k == cursor {
-                self.rewrite_range(rules, src, member, dst, num_it)?;
+                self.rewrite_range(pass, member, dst)?;
             } else {
                 for j in member {
                     dst.push(src.ids[j], src.params_of(j));
@@ -151,12 +148,11 @@ impl<R: rand::Rng> Rewriter<'_, R> {
     /// reversed on even ones.
     fn pendulum(
         &mut self,
-        rules: &RuleSet,
-        src: &LString,
+        pass: &Pass<'_>,
         group: Group,
         dst: &mut LString,
-        num_it: u32,
     ) -> Result<(), Diagnostic> {
+        let Pass { src, num_it, .. } = *pass;
         let (i, mut members) = (group.at, group.members);
         let reversed = if num_it.is_multiple_of(2) { 1.0 } else { 0.0 };
         if reversed != group.header {
@@ -165,7 +161,7 @@ impl<R: rand::Rng> Rewriter<'_, R> {
         self.open_group(src, i, reversed, dst);
         for (k, member) in members.into_iter().enumerate() {
             self.separate(k, i, dst);
-            self.rewrite_range(rules, src, member, dst, num_it)?;
+            self.rewrite_range(pass, member, dst)?;
         }
         Ok(())
     }
@@ -174,12 +170,11 @@ impl<R: rand::Rng> Rewriter<'_, R> {
     /// derivations are not tracked: their modules count as the group's.
     fn repeat(
         &mut self,
-        rules: &RuleSet,
-        src: &LString,
+        pass: &Pass<'_>,
         group: Group,
         dst: &mut LString,
-        num_it: u32,
     ) -> Result<(), Diagnostic> {
+        let Pass { rules, src, num_it } = *pass;
         let i = group.at;
         let times = group.header.max(0.0) as u32;
         self.repeat_passes += u64::from(times);
@@ -209,9 +204,7 @@ impl<R: rand::Rng> Rewriter<'_, R> {
         self.note(dst.len(), i, NOT_REWRITTEN);
         Ok(())
     }
-}
 
-impl<R: rand::Rng> Rewriter<'_, R> {
     /// `E0405` for a `@Repeat` count above `#max_steps`, at the count.
     pub(super) fn check_repeat_count(
         &self,

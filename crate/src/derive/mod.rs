@@ -6,7 +6,12 @@
 //!   module id to successor, the next length computed before writing;
 //! - [`rewriter`], the general path: productions tried in source order per module with
 //!   bracket-aware contexts ([`context`]), compiled conditions, weighted (stochastic) choice and
-//!   Green's random variables, control modules ([`groups`]) and planned steps ([`plan`]).
+//!   Green's random variables, control modules ([`groups`]) and planned steps ([`plan`]). Each
+//!   [`rewriter::Pass`] (rules, string, step) of its productions section first sorts every
+//!   module id into a class once per derivation, so that the common cases skip the general
+//!   matching: [`module_classes`] and its passes ([`module_pass`], [`fixed_pass`]) for strings
+//!   without parameters, [`parametric_classes`] and [`parametric_pass`] for strings with them;
+//!   both copy successors with [`successors`].
 //!
 //! After each step, decomposition rules are applied until nothing changes and cut modules
 //! ([`cut`]) remove the rest of their branch. Homomorphism rules make the string the turtle reads.
@@ -15,16 +20,20 @@
 //! derives (the turtle answering query modules, growth following every module and planning each
 //! step) comes in through an [`Observer`], which the pipeline implements.
 
-mod classes;
 pub mod context;
 mod cut;
 mod d0l;
 mod explain;
+mod fixed_pass;
 mod generator;
 mod groups;
-mod parametric;
+mod module_classes;
+mod module_pass;
+mod parametric_classes;
+mod parametric_pass;
 mod plan;
 mod rewriter;
+mod successors;
 
 pub use explain::{explain, match_report, ContextCheck, Explanation, LastStep, MatchReport};
 
@@ -289,11 +298,7 @@ fn check_size(model: &Model, step: u32, len: usize, bytes: usize) -> Result<(), 
 #[cold]
 fn memory_error(model: &Model, step: u32, len: usize, bytes: usize) -> Diagnostic {
     let mb = |b: usize| b.div_ceil(1 << 20);
-    let when = if step == 0 {
-        "the axiom has".to_string()
-    } else {
-        format!("step {step} would make a string of")
-    };
+    let when = size_when(step);
     Diagnostic::error(
         "E0401",
         size_span(model),
@@ -305,6 +310,15 @@ fn memory_error(model: &Model, step: u32, len: usize, bytes: usize) -> Diagnosti
             mb(MAX_STRING_BYTES)
         ),
     )
+}
+
+/// How a size error at `step` begins: what the axiom has (step 0), or what the step would make.
+fn size_when(step: u32) -> String {
+    if step == 0 {
+        "the axiom has".to_string()
+    } else {
+        format!("step {step} would make a string of")
+    }
 }
 
 /// Where a size error points: `#iterations`, else the axiom.
@@ -321,11 +335,7 @@ fn size_span(model: &Model) -> crate::syntax::Span {
 fn limit_error(model: &Model, step: u32, len: usize) -> Diagnostic {
     let max = model.settings.max_modules;
     let span = size_span(model);
-    let when = if step == 0 {
-        "the axiom has".to_string()
-    } else {
-        format!("step {step} would make a string of")
-    };
+    let when = size_when(step);
     Diagnostic::error(
         "E0400",
         span,

@@ -1,7 +1,7 @@
 //! Planned steps: when the observer plans a step (the growth attributes decide which apices stop
 //! and how often each grows), each module is rewritten as many times as the plan says.
 
-use super::rewriter::Rewriter;
+use super::rewriter::{Pass, Rewriter};
 use super::{check_size, context};
 use crate::diagnostics::Diagnostic;
 use crate::model::{LString, RuleSet};
@@ -11,12 +11,11 @@ impl<R: rand::Rng> Rewriter<'_, R> {
     /// apex), once, or several times (`#speed` of the growth attributes).
     pub(super) fn rewrite_planned(
         &mut self,
-        rules: &RuleSet,
-        src: &LString,
+        pass: &Pass<'_>,
         i: usize,
         dst: &mut LString,
-        num_it: u32,
     ) -> Result<Option<u32>, Diagnostic> {
+        let src = pass.src;
         let times = self
             .plan
             .as_ref()
@@ -26,8 +25,8 @@ impl<R: rand::Rng> Rewriter<'_, R> {
                 dst.push(src.ids[i], src.params_of(i));
                 Ok(None)
             }
-            1 => self.rewrite_module(rules, src, i, dst, num_it),
-            _ => self.rewrite_repeatedly(rules, src, i, dst, num_it, times),
+            1 => self.rewrite_module(pass, i, dst),
+            _ => self.rewrite_repeatedly(pass, i, dst, times),
         }
     }
 
@@ -37,16 +36,15 @@ impl<R: rand::Rng> Rewriter<'_, R> {
     /// production applies.
     fn rewrite_repeatedly(
         &mut self,
-        rules: &RuleSet,
-        src: &LString,
+        pass: &Pass<'_>,
         i: usize,
         dst: &mut LString,
-        num_it: u32,
         times: u32,
     ) -> Result<Option<u32>, Diagnostic> {
+        let Pass { rules, num_it, .. } = *pass;
         let mut current = LString::default();
         current.clear(self.model.parametric);
-        let applied = self.rewrite_module(rules, src, i, &mut current, num_it)?;
+        let applied = self.rewrite_module(pass, i, &mut current)?;
         if applied.is_some() && times > 1 {
             current =
                 self.derive_apart(rules, current, times - 1, num_it, (dst.len(), dst.bytes()))?;
@@ -77,7 +75,15 @@ impl<R: rand::Rng> Rewriter<'_, R> {
             }
             next.clear(model.parametric);
             let len = current.len();
-            self.rewrite_range(rules, &current, 0..len, &mut next, num_it)?;
+            self.rewrite_range(
+                &Pass {
+                    rules,
+                    src: &current,
+                    num_it,
+                },
+                0..len,
+                &mut next,
+            )?;
             std::mem::swap(&mut current, &mut next);
             check_size(
                 model,

@@ -1,12 +1,13 @@
 //! The general path: productions tried in source order for each module, with bracket-aware
 //! contexts, compiled conditions, weighted (stochastic) choice and Green's random variables.
 
-use super::classes::{self, Classes, Kind};
 use super::context::{self, Recorder};
-use super::parametric;
-use super::{check_size, Observer, MAX_STRING_BYTES, NOT_REWRITTEN};
+use super::fixed_pass::Counts;
+use super::module_classes::ModuleClasses;
+use super::parametric_classes::ParametricClasses;
+use super::{check_size, Observer, NOT_REWRITTEN};
 use crate::diagnostics::Diagnostic;
-use crate::model::{Env, LString, Model, ModuleId, Production, Program, RuleSet, SuccessorModule};
+use crate::model::{Env, LString, Model, Production, Program, RuleSet, SuccessorModule};
 use crate::syntax::Span;
 use rand::RngExt;
 use std::mem::take;
@@ -28,6 +29,16 @@ impl Tracker {
             self.origin.push(origin);
         }
     }
+}
+
+/// What one parallel rewriting reads: the rules it applies, the string it rewrites and the step
+/// (`num_it`, the number the expressions see). The passes and their helpers take it by reference
+/// beside the module index and the output they write.
+#[derive(Clone, Copy)]
+pub(super) struct Pass<'a> {
+    pub rules: &'a RuleSet,
+    pub src: &'a LString,
+    pub num_it: u32,
 }
 
 /// The general path's working state, reused across modules and steps.
@@ -53,17 +64,17 @@ pub(super) struct Rewriter<'m, R: rand::Rng> {
     /// The `@Repeat` rewritings run so far in this derivation, against [`Rewriter::repeat_budget`].
     pub repeat_passes: u64,
     /// The productions' classes, for strings without parameters.
-    classes: Option<Classes>,
+    classes: Option<ModuleClasses>,
     /// The productions' classes, for strings with parameters.
-    parametric: Option<parametric::Classes>,
+    parametric: Option<ParametricClasses>,
     /// Whether `classes` and `parametric` are built: on the first productions pass, so that a
     /// derivation the D0L path runs alone (`super::d0l`) never builds them.
     classes_built: bool,
     /// Scratch of a classes pass: each module's right neighbour, and a stack of neighbours.
     right: Vec<u32>,
     stack: Vec<u32>,
-    /// The id counts of the string the last Fixed/Choice pass wrote ([`classes::Counts`]).
-    counts: classes::Counts,
+    /// The id counts of the string the last Fixed/Choice pass wrote ([`Counts`]).
+    pub counts: Counts,
     /// True when nothing changes the string between steps (no decomposition, no cut), so the
     /// counts of one pass's output are those of the next pass's input.
     carried: bool,
@@ -97,7 +108,7 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
             classes_built: false,
             right: Vec::new(),
             stack: Vec::new(),
-            counts: classes::Counts::default(),
+            counts: Counts::default(),
             carried: model.decomposition.is_empty() && !super::cut::contains_cut(model),
         }
     }
@@ -302,8 +313,8 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         self.counts.carried = self.carried && counted == Some(src.len());
         let by_class = self.plan.is_none() && std::ptr::eq(rules, &model.productions);
         if by_class && !self.classes_built {
-            self.classes = Classes::new(model);
-            self.parametric = parametric::Classes::new(model);
+            self.classes = ModuleClasses::new(model);
+            self.parametric = ParametricClasses::new(model);
             self.classes_built = true;
         }
         let classes = if by_class { self.classes.take() } else { None };
@@ -324,268 +335,35 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
             t.parent.clear();
             t.origin.clear();
         }
+        let pass = &Pass { rules, src, num_it };
         match classes {
             Some(c) => {
                 let (mut right, mut stack) = (take(&mut self.right), take(&mut self.stack));
                 let scratch = (&mut right, &mut stack);
-                let changed = self.rewrite_by_class(&c, rules, src, dst, num_it, scratch);
+                let changed = self.rewrite_by_class(&c, pass, dst, scratch);
                 (self.classes, self.right, self.stack) = (Some(c), right, stack);
                 changed
             }
             None => match parametric {
                 Some(mut c) => {
-                    let changed = self.rewrite_parametric(&mut c, rules, src, dst, num_it);
+                    let changed = self.rewrite_parametric(&mut c, pass, dst);
                     self.parametric = Some(c);
                     changed
                 }
-                None => self.rewrite_range(rules, src, 0..src.len(), dst, num_it),
+                None => self.rewrite_range(pass, 0..src.len(), dst),
             },
         }
-    }
-
-    /// [`Rewriter::rewrite_range`] over the whole string, each module as its class says: the
-    /// productions section of a grammar without parameters or control modules, unplanned.
-    /// `scratch`: the right neighbours and a stack.
-    #[inline(never)]
-    fn rewrite_by_class(
-        &mut self,
-        c: &Classes,
-        rules: &RuleSet,
-        src: &LString,
-        dst: &mut LString,
-        num_it: u32,
-        (right, stack): (&mut Vec<u32>, &mut Vec<u32>),
-    ) -> Result<bool, Diagnostic> {
-        let model = self.model;
-        // Past either limit, check_size says which (a string without parameters: 4 bytes a module).
-        let max = (model.settings.max_modules).min(MAX_STRING_BYTES / size_of::<ModuleId>());
-        let tracking = self.tracker.is_some();
-        let nested =
-            c.neighbours && !c.flat && classes::right_neighbours(&c.classes, src, right, stack);
-        if c.sized && !tracking && !c.neighbours {
-            if let Some(changed) = self.rewrite_fixed(c, src, dst, num_it) {
-                return Ok(changed);
-            }
-        } else if c.sized && !tracking && !nested {
-            if let Some(changed) = self.rewrite_sized(c, src, dst, num_it) {
-                return Ok(changed);
-            }
-        }
-        stack.clear();
-        let mut last = context::NONE;
-        let mut changed = false;
-        for (i, &id) in src.ids.iter().enumerate() {
-            let class = &c.classes[id.index()];
-            let production = match class.kind {
-                Kind::Fixed => {
-                    classes::put(
-                        &mut dst.ids,
-                        &c.successors,
-                        class.start as usize,
-                        class.len as usize,
-                    );
-                    class.production
-                }
-                Kind::Choice => {
-                    let a = c.choose(class, self.rng.random::<f64>());
-                    classes::put(
-                        &mut dst.ids,
-                        &c.successors,
-                        a.start as usize,
-                        a.len as usize,
-                    );
-                    a.production
-                }
-                Kind::Neighbours => {
-                    match c.neighbours_match(class, last, next_to(src, right, i, nested)) {
-                        Some(a) => {
-                            classes::put(
-                                &mut dst.ids,
-                                &c.successors,
-                                a.start as usize,
-                                a.len as usize,
-                            );
-                            a.production
-                        }
-                        None => {
-                            dst.ids.push(id);
-                            NOT_REWRITTEN
-                        }
-                    }
-                }
-                Kind::General => self
-                    .rewrite_module(rules, src, i, dst, num_it)?
-                    .unwrap_or(NOT_REWRITTEN),
-            };
-            if production != NOT_REWRITTEN {
-                changed = true;
-                if dst.len() > max {
-                    check_size(model, num_it, dst.len(), dst.bytes())?;
-                }
-            }
-            if tracking {
-                self.note(dst.len(), i, production);
-            }
-            if nested {
-                last = classes::step_left(class.role, id, last, stack);
-            } else {
-                last = id.0;
-            }
-        }
-        Ok(changed)
-    }
-
-    /// [`Rewriter::rewrite_by_class`] when every class writes a known number of modules, the
-    /// string's neighbours are the modules next to each other (no brackets or ignored modules
-    /// between them, or no class compares neighbours) and nothing is tracked: the next length is
-    /// known first, so the output is allocated once and every module is one copy of a successor.
-    /// `None` when the next string passes a limit: the caller's loop says where.
-    fn rewrite_sized(
-        &mut self,
-        c: &Classes,
-        src: &LString,
-        dst: &mut LString,
-        num_it: u32,
-    ) -> Option<bool> {
-        Some(match c.width {
-            4 => self.rewrite_sized_as::<4>(c, src, dst, num_it)?,
-            8 => self.rewrite_sized_as::<8>(c, src, dst, num_it)?,
-            classes::PAD => self.rewrite_sized_as::<{ classes::PAD }>(c, src, dst, num_it)?,
-            _ => return None,
-        })
-    }
-
-    /// [`Rewriter::rewrite_by_class`] when every class is Fixed or Choice of a known length and
-    /// nothing is tracked: the next length comes from the id counts ([`classes::Counts`], carried
-    /// from the last pass when it wrote `src`), the output is allocated once and every module is one
-    /// copy of a successor. `None` when the next string passes a limit: the caller's loop says
-    /// where.
-    fn rewrite_fixed(
-        &mut self,
-        c: &Classes,
-        src: &LString,
-        dst: &mut LString,
-        num_it: u32,
-    ) -> Option<bool> {
-        let carried = self.counts.carried;
-        let len = c.fixed_len(&src.ids, &mut self.counts, carried);
-        if check_size(
-            self.model,
-            num_it,
-            len,
-            len.saturating_mul(size_of::<ModuleId>()),
-        )
-        .is_err()
-        {
-            return None;
-        }
-        if dst.ids.capacity() < len + classes::PAD {
-            // A new buffer: growing the old one would copy what it held.
-            dst.ids = Vec::with_capacity(len + classes::PAD);
-        }
-        let picks = &mut self.counts.picks;
-        picks.clear();
-        picks.resize(c.alternatives.len(), 0);
-        let changed = c.write_fixed(&src.ids, &mut dst.ids, &mut *self.rng, &mut self.counts);
-        debug_assert_eq!(dst.len(), len);
-        c.carry(&mut self.counts);
-        self.counts.len = Some(len);
-        Some(changed)
-    }
-
-    /// [`Rewriter::rewrite_sized`], each successor copied as `W` ids.
-    #[inline(never)]
-    fn rewrite_sized_as<const W: usize>(
-        &mut self,
-        c: &Classes,
-        src: &LString,
-        dst: &mut LString,
-        num_it: u32,
-    ) -> Option<bool> {
-        let len: usize = if c.unit {
-            src.len()
-        } else {
-            src.ids.iter().map(|id| c.outs[id.index()] as usize).sum()
-        };
-        if check_size(self.model, num_it, len, len * size_of::<ModuleId>()).is_err() {
-            return None;
-        }
-        if dst.ids.capacity() < len + classes::PAD {
-            // A new buffer: growing the old one would copy what it held.
-            dst.ids = Vec::with_capacity(len + classes::PAD);
-        }
-        let ids = &src.ids;
-        let n = ids.len();
-        let mut changed = false;
-        // A flat string whose modules compare neighbours: a module that is cold (no production
-        // rewrites it unless a neighbour is a context) between cold neighbours is copied as it
-        // is, in bulk; the others one by one.
-        let hot = |k: usize| c.hot[ids[k].index()];
-        let mut i = 0;
-        while i < n {
-            let h = c.next_hot(ids, i);
-            let a = if i > 0 && hot(i - 1) { i + 1 } else { i };
-            let b = if h < n {
-                h.saturating_sub(1).max(a)
-            } else {
-                n.max(a)
-            };
-            let stop = (h + 2).min(n).max(b);
-            for k in i..a {
-                changed |= self.rewrite_sized_one::<W>(c, ids, k, dst);
-            }
-            dst.ids.extend_from_slice(&ids[a..b]);
-            for k in b..stop {
-                changed |= self.rewrite_sized_one::<W>(c, ids, k, dst);
-            }
-            i = stop;
-        }
-        debug_assert_eq!(dst.len(), len);
-        Some(changed)
-    }
-
-    /// Writes module `i` of `ids` as its class says, its neighbours being the modules next to
-    /// it; returns whether a production applied.
-    #[inline(always)]
-    fn rewrite_sized_one<const W: usize>(
-        &mut self,
-        c: &Classes,
-        ids: &[ModuleId],
-        i: usize,
-        dst: &mut LString,
-    ) -> bool {
-        let class = &c.classes[ids[i].index()];
-        let (start, n, production) = match class.kind {
-            Kind::Fixed => (class.start, class.len, class.production),
-            Kind::Choice => {
-                let a = c.choose(class, self.rng.random::<f64>());
-                (a.start, a.len, a.production)
-            }
-            Kind::Neighbours => {
-                let left = if i > 0 { ids[i - 1].0 } else { context::NONE };
-                let right = ids.get(i + 1).map_or(context::NONE, |r| r.0);
-                match c.neighbours_match(class, left, right) {
-                    Some(a) => (a.start, a.len, a.production),
-                    None => (class.own, 1, NOT_REWRITTEN),
-                }
-            }
-            // A general class writes an unknown number of modules: never here.
-            Kind::General => (class.own, 1, NOT_REWRITTEN),
-        };
-        classes::put_wide::<W>(&mut dst.ids, &c.successors, start as usize, n as usize);
-        production != NOT_REWRITTEN
     }
 
     /// Rewrites modules `range` of `src` onto the end of `dst`. Control module groups act only in
     /// the productions section; elsewhere their members are rewritten like any module.
     pub fn rewrite_range(
         &mut self,
-        rules: &RuleSet,
-        src: &LString,
+        pass: &Pass<'_>,
         range: std::ops::Range<usize>,
         dst: &mut LString,
-        num_it: u32,
     ) -> Result<bool, Diagnostic> {
+        let Pass { rules, src, .. } = *pass;
         let model = self.model;
         let groups_act = model.has_groups && std::ptr::eq(rules, &model.productions);
         let planned = self.plan.is_some();
@@ -597,15 +375,15 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
                 && model.groups.is_group(id)
                 && src.ids.get(i + 1) == Some(&model.groups.open)
             {
-                i = self.rewrite_group(rules, src, i, dst, num_it)?;
+                i = self.rewrite_group(pass, i, dst)?;
                 self.note(dst.len(), i, NOT_REWRITTEN);
                 changed = true;
                 continue;
             }
             let applied = if planned {
-                self.rewrite_planned(rules, src, i, dst, num_it)?
+                self.rewrite_planned(pass, i, dst)?
             } else {
-                self.rewrite_module(rules, src, i, dst, num_it)?
+                self.rewrite_module(pass, i, dst)?
             };
             self.note(dst.len(), i, applied.unwrap_or(NOT_REWRITTEN));
             changed |= applied.is_some();
@@ -624,12 +402,11 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
     /// Rewrites module `i` of `src` onto `dst`; returns the production applied, if any.
     pub fn rewrite_module(
         &mut self,
-        rules: &RuleSet,
-        src: &LString,
+        pass: &Pass<'_>,
         i: usize,
         dst: &mut LString,
-        num_it: u32,
     ) -> Result<Option<u32>, Diagnostic> {
+        let Pass { rules, src, num_it } = *pass;
         let model = self.model;
         let id = src.ids[i];
         let candidates = rules
@@ -649,7 +426,7 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
             }
             chosen = Some(match &p.weight {
                 None => index,
-                Some(_) => self.choose_weighted(rules, &candidates[k..], src, i, num_it)?,
+                Some(_) => self.choose_weighted(pass, &candidates[k..], i)?,
             });
             break;
         }
@@ -681,12 +458,11 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
     /// already), in proportion to their weights; leaves the chosen one's slots bound.
     fn choose_weighted(
         &mut self,
-        rules: &RuleSet,
+        pass: &Pass<'_>,
         candidates: &[u32],
-        src: &LString,
         i: usize,
-        num_it: u32,
     ) -> Result<u32, Diagnostic> {
+        let Pass { rules, src, num_it } = *pass;
         self.weighted.clear();
         let mut total = 0.0;
         for (k, &index) in candidates.iter().enumerate() {
@@ -715,17 +491,6 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         let (index, _, slots) = &self.weighted[pick];
         self.slots[..slots.len()].copy_from_slice(slots);
         Ok(*index)
-    }
-}
-
-/// The right neighbour of module `i`: from `right` when the string is `nested`, else the next
-/// module.
-#[inline(always)]
-fn next_to(src: &LString, right: &[u32], i: usize, nested: bool) -> u32 {
-    if nested {
-        right[i]
-    } else {
-        src.ids.get(i + 1).map_or(context::NONE, |id| id.0)
     }
 }
 

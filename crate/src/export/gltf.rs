@@ -16,6 +16,7 @@
 //! no `FileReader`.
 
 use super::scene::{ColorGroup, Primitive, Scene};
+use super::textures::{BARK_PNG, LEAF_PNG};
 use crate::mesh::{MATERIAL_BARK, MATERIAL_LEAF, MATERIAL_PLAIN};
 use serde_json::{json, Value};
 
@@ -28,11 +29,6 @@ const LINES: u32 = 1;
 const LINEAR: u32 = 9729;
 const LINEAR_MIPMAP_LINEAR: u32 = 9987;
 const REPEAT: u32 = 10497;
-
-/// The bark texture (tileable, RGB), as shipped in `public/textures/`.
-pub const BARK_PNG: &[u8] = include_bytes!("../../../public/textures/bark.png");
-/// The leaf texture (RGBA, transparent around the leaf), as shipped in `public/textures/`.
-pub const LEAF_PNG: &[u8] = include_bytes!("../../../public/textures/leaf.png");
 
 /// The GLB bytes of `scene`.
 pub fn write(scene: &Scene) -> Vec<u8> {

@@ -8,6 +8,7 @@
 use super::scene::{
     coord_index, decimals_for, extent, number, srgb, ColorGroup, Primitive, Scene, View,
 };
+use super::text::{xyz, xyz_lines};
 use std::fmt::Write;
 
 /// The Inventor text of `scene`.
@@ -41,10 +42,10 @@ pub fn write(scene: &Scene) -> String {
 /// the view.
 fn camera_and_light(out: &mut String, view: &View, decimals: usize) {
     out.push_str("  PerspectiveCamera {\n    position ");
-    vector(out, view.eye.to_array(), decimals);
+    xyz(out, view.eye.to_array(), decimals);
     let (axis, angle) = view.orientation();
     out.push_str("\n    orientation ");
-    vector(out, axis.to_array(), 6);
+    xyz(out, axis.to_array(), 6);
     out.push(' ');
     number(out, angle, 6);
     out.push_str("\n    nearDistance ");
@@ -60,7 +61,7 @@ fn camera_and_light(out: &mut String, view: &View, decimals: usize) {
     out.push_str("\n    heightAngle ");
     number(out, view.fov, 6);
     out.push_str("\n  }\n  DirectionalLight {\n    direction ");
-    vector(out, view.direction().to_array(), 6);
+    xyz(out, view.direction().to_array(), 6);
     out.push_str("\n  }\n");
 }
 
@@ -77,11 +78,11 @@ fn shared_vertices(out: &mut String, scene: &Scene, decimals: usize) {
         Primitive::Lines => out.push_str("  LightModel {\n    model BASE_COLOR\n  }\n"),
     }
     out.push_str("  Coordinate3 {\n    point [\n");
-    triples(out, scene.points(), decimals);
+    xyz_lines(out, scene.points(), decimals);
     out.push_str("    ]\n  }\n");
     if primitive == Primitive::Triangles {
         out.push_str("  Normal {\n    vector [\n");
-        triples(out, &scene.mesh.normals, 4);
+        xyz_lines(out, &scene.mesh.normals, 4);
         out.push_str("    ]\n  }\n  NormalBinding {\n    value PER_VERTEX_INDEXED\n  }\n");
     }
 }
@@ -95,7 +96,7 @@ fn shape(out: &mut String, scene: &Scene, group: &ColorGroup) {
         group.index
     )
     .ok();
-    vector(out, [r as f64, g as f64, b as f64], 4);
+    xyz(out, [r as f64, g as f64, b as f64], 4);
     out.push_str("\n  }\n");
     match scene.primitive() {
         Primitive::Triangles => out.push_str("  IndexedFaceSet {\n    coordIndex [\n"),
@@ -103,23 +104,6 @@ fn shape(out: &mut String, scene: &Scene, group: &ColorGroup) {
     }
     coord_index(out, scene, &group.items, ",");
     out.push_str("    ]\n  }\n");
-}
-
-fn vector(out: &mut String, v: [f64; 3], decimals: usize) {
-    for (k, c) in v.iter().enumerate() {
-        if k > 0 {
-            out.push(' ');
-        }
-        number(out, *c, decimals);
-    }
-}
-
-fn triples(out: &mut String, flat: &[f32], decimals: usize) {
-    for p in flat.chunks_exact(3) {
-        out.push_str("      ");
-        vector(out, [p[0] as f64, p[1] as f64, p[2] as f64], decimals);
-        out.push_str(",\n");
-    }
 }
 
 #[cfg(test)]

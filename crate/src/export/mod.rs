@@ -20,6 +20,8 @@ pub mod obj;
 pub mod pov;
 pub mod scene;
 pub mod svg;
+pub mod text;
+pub mod textures;
 pub mod vrml;
 pub mod zip;
 
@@ -119,8 +121,8 @@ pub fn export_with(
             let kinds = mesh.triangle_materials();
             let mut files = vec![file("pov", pov::write(&scene).into_bytes(), "text/plain")];
             for (kind, name, png) in [
-                (crate::mesh::MATERIAL_BARK, "bark.png", gltf::BARK_PNG),
-                (crate::mesh::MATERIAL_LEAF, "leaf.png", gltf::LEAF_PNG),
+                (crate::mesh::MATERIAL_BARK, "bark.png", textures::BARK_PNG),
+                (crate::mesh::MATERIAL_LEAF, "leaf.png", textures::LEAF_PNG),
             ] {
                 if kinds.contains(&(kind as u8)) {
                     files.push(ExportedFile {

@@ -18,6 +18,7 @@
 //! POV-Ray's default I/O restrictions allow the current directory).
 
 use super::scene::{decimals_for, extent, number, Primitive, Scene, View};
+use super::text::{triple, triple_lines};
 use crate::mesh::{MATERIAL_BARK, MATERIAL_LEAF};
 use glam::DVec3;
 use std::fmt::Write;
@@ -204,34 +205,19 @@ fn cylinders(
 /// `<x, y, -z>`: a model point in POV-Ray's left-handed coordinates.
 fn point(out: &mut String, p: DVec3, decimals: usize) {
     out.push('<');
-    number(out, p.x, decimals);
-    out.push_str(", ");
-    number(out, p.y, decimals);
-    out.push_str(", ");
-    number(out, -p.z, decimals);
+    triple(out, [p.x, p.y, -p.z], decimals, ", ");
     out.push('>');
 }
 
 /// One `<x, y, -z>,` line per vector of a flat `f32` × 3 array.
 fn vectors(out: &mut String, flat: &[f32], decimals: usize) {
-    for v in flat.chunks_exact(3) {
-        out.push_str("    ");
-        point(
-            out,
-            DVec3::new(v[0] as f64, v[1] as f64, v[2] as f64),
-            decimals,
-        );
-        out.push_str(",\n");
-    }
+    triple_lines(out, flat, "    ", |out, [x, y, z]| {
+        point(out, DVec3::new(x, y, z), decimals)
+    });
 }
 
 fn rgb(out: &mut String, color: [f32; 3]) {
-    for (k, c) in color.iter().enumerate() {
-        if k > 0 {
-            out.push_str(", ");
-        }
-        number(out, *c as f64, 4);
-    }
+    triple(out, color.map(f64::from), 4, ", ");
 }
 
 #[cfg(test)]

@@ -45,16 +45,20 @@ impl Look {
 
     /// The look, or a message naming the value out of range.
     pub fn checked(self) -> Result<Look, String> {
-        let within = |v: f64, (lo, hi): (f64, f64)| v.is_finite() && v >= lo && v <= hi;
-        if let Some(w) = self.line_width {
-            if !within(w, Self::LINE_WIDTH) {
-                return Err(format!(
-                    "the line width must be from {} to {} pixels, not {w}",
-                    Self::LINE_WIDTH.0,
-                    Self::LINE_WIDTH.1
-                ));
+        // `what` must be within `(lo, hi)` (in `unit`, when it has one).
+        let within = |value: Option<f64>, (lo, hi): (f64, f64), what: &str, unit: &str| match value
+        {
+            Some(v) if !(v.is_finite() && v >= lo && v <= hi) => {
+                Err(format!("{what} must be from {lo} to {hi}{unit}, not {v}"))
             }
-        }
+            _ => Ok(()),
+        };
+        within(
+            self.line_width,
+            Self::LINE_WIDTH,
+            "the line width",
+            " pixels",
+        )?;
         if let Some((w, h)) = self.size {
             let (lo, hi) = Self::SIDE;
             if !(lo..=hi).contains(&w) || !(lo..=hi).contains(&h) {
@@ -63,15 +67,7 @@ impl Look {
                 ));
             }
         }
-        if let Some(dpi) = self.dpi {
-            if !within(dpi, Self::DPI) {
-                return Err(format!(
-                    "the DPI must be from {} to {}, not {dpi}",
-                    Self::DPI.0,
-                    Self::DPI.1
-                ));
-            }
-        }
+        within(self.dpi, Self::DPI, "the DPI", "")?;
         Ok(self)
     }
 

@@ -5,6 +5,7 @@
 //! large to mesh is written as an `IndexedLineSet` per colour index (emissive colour).
 
 use super::scene::{coord_index, decimals_for, extent, number, srgb, Primitive, Scene, View};
+use super::text::{xyz, xyz_lines};
 
 /// The VRML text of `scene`.
 pub fn write(scene: &Scene) -> String {
@@ -29,10 +30,10 @@ pub fn write(scene: &Scene) -> String {
     out.push_str("NavigationInfo { type [ \"EXAMINE\", \"ANY\" ] headlight TRUE }\n");
     out.push_str("Background { skyColor [ 1 1 1 ] }\n");
     out.push_str("Viewpoint {\n  position ");
-    vector(&mut out, view.eye.to_array(), decimals);
+    xyz(&mut out, view.eye.to_array(), decimals);
     out.push_str("\n  orientation ");
     let (axis, angle) = view.orientation();
-    vector(&mut out, axis.to_array(), 6);
+    xyz(&mut out, axis.to_array(), 6);
     out.push(' ');
     number(&mut out, angle, 6);
     out.push_str("\n  fieldOfView ");
@@ -51,7 +52,7 @@ pub fn write(scene: &Scene) -> String {
         };
         out.push_str(color_field);
         out.push(' ');
-        vector(&mut out, [r as f64, g as f64, b as f64], 4);
+        xyz(&mut out, [r as f64, g as f64, b as f64], 4);
         out.push_str(" }\n  }\n");
         match primitive {
             Primitive::Triangles => out.push_str("  geometry IndexedFaceSet {\n"),
@@ -59,11 +60,11 @@ pub fn write(scene: &Scene) -> String {
         }
         if k == 0 {
             out.push_str("    coord DEF Meristem_Points Coordinate { point [\n");
-            points(&mut out, scene.points(), decimals);
+            xyz_lines(&mut out, scene.points(), decimals);
             out.push_str("    ] }\n");
             if primitive == Primitive::Triangles {
                 out.push_str("    normal DEF Meristem_Normals Normal { vector [\n");
-                points(&mut out, &scene.mesh.normals, 4);
+                xyz_lines(&mut out, &scene.mesh.normals, 4);
                 out.push_str("    ] }\n");
             }
         } else {
@@ -77,25 +78,6 @@ pub fn write(scene: &Scene) -> String {
         out.push_str("    ]\n  }\n}\n");
     }
     out
-}
-
-/// `x y z` of a vector.
-fn vector(out: &mut String, v: [f64; 3], decimals: usize) {
-    for (k, c) in v.iter().enumerate() {
-        if k > 0 {
-            out.push(' ');
-        }
-        number(out, *c, decimals);
-    }
-}
-
-/// One `x y z,` line per point of a flat `f32` × 3 array.
-fn points(out: &mut String, flat: &[f32], decimals: usize) {
-    for p in flat.chunks_exact(3) {
-        out.push_str("      ");
-        vector(out, [p[0] as f64, p[1] as f64, p[2] as f64], decimals);
-        out.push_str(",\n");
-    }
 }
 
 #[cfg(test)]

@@ -46,33 +46,29 @@ pub fn stored(files: &[(&str, &[u8])]) -> Option<Vec<u8>> {
         let size = u32::try_from(data.len()).ok()?;
         let crc = crc32(data);
         let name_length = u16::try_from(name.len()).ok()?;
+        // What the local header and the central directory entry both say, from the version
+        // needed to the length of the extra field.
+        let fields = |v: &mut Vec<u8>| {
+            le16(v, VERSION);
+            le16(v, UTF8_NAMES);
+            le16(v, 0); // stored
+            le16(v, 0); // time
+            le16(v, DOS_DATE);
+            le32(v, crc);
+            le32(v, size);
+            le32(v, size);
+            le16(v, name_length);
+            le16(v, 0); // no extra field
+        };
         // Local file header.
         le32(&mut out, 0x0403_4b50);
-        le16(&mut out, VERSION);
-        le16(&mut out, UTF8_NAMES);
-        le16(&mut out, 0); // stored
-        le16(&mut out, 0); // time
-        le16(&mut out, DOS_DATE);
-        le32(&mut out, crc);
-        le32(&mut out, size);
-        le32(&mut out, size);
-        le16(&mut out, name_length);
-        le16(&mut out, 0); // no extra field
+        fields(&mut out);
         out.extend_from_slice(name.as_bytes());
         out.extend_from_slice(data);
         // Its central directory entry.
         le32(&mut central, 0x0201_4b50);
         le16(&mut central, VERSION); // made by: MS-DOS attributes, version 2.0
-        le16(&mut central, VERSION);
-        le16(&mut central, UTF8_NAMES);
-        le16(&mut central, 0);
-        le16(&mut central, 0);
-        le16(&mut central, DOS_DATE);
-        le32(&mut central, crc);
-        le32(&mut central, size);
-        le32(&mut central, size);
-        le16(&mut central, name_length);
-        le16(&mut central, 0); // extra
+        fields(&mut central);
         le16(&mut central, 0); // comment
         le16(&mut central, 0); // disk
         le16(&mut central, 0); // internal attributes

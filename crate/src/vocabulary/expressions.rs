@@ -58,6 +58,14 @@ impl FunctionInfo {
     pub fn arity(&self) -> usize {
         self.params.len()
     }
+
+    /// The function as a random one: a fresh deviate at each evaluation.
+    const fn random(self) -> FunctionInfo {
+        FunctionInfo {
+            random: true,
+            ..self
+        }
+    }
 }
 
 const fn f(
@@ -72,19 +80,6 @@ const fn f(
         params,
         random: false,
         doc: text(doc),
-    }
-}
-
-/// A random function: a fresh deviate at each evaluation.
-const fn random(
-    name: &'static str,
-    function: Function,
-    params: &'static [&'static str],
-    doc: &'static str,
-) -> FunctionInfo {
-    FunctionInfo {
-        random: true,
-        ..f(name, function, params, doc)
     }
 }
 
@@ -112,12 +107,12 @@ pub const FUNCTIONS: &[FunctionInfo] = &[
     f("max", F::Max, &["a", "b"], "The larger of a and b."),
     f("clamp", F::Clamp, &["x", "lo", "hi"], "x limited to lo … hi."),
     f("sign", F::Sign, &["x"], "−1, 0 or 1 by the sign of x."),
-    random("uniform", F::Uniform, &["a", "b"], "A random number from a (included) to b (excluded)."),
-    random("normal", F::Normal, &["mean", "sd"], "A random number of the normal distribution."),
-    random("exponential", F::Exponential, &["mean"], "A random number of the exponential distribution."),
-    random("uniform_int", F::UniformInt, &["a", "b"], "A random whole number from a to b, both included."),
-    random("binomial", F::Binomial, &["n", "p"], "A random number of successes in n trials of probability p."),
-    random("poisson", F::Poisson, &["mean"], "A random number of the Poisson distribution."),
+    f("uniform", F::Uniform, &["a", "b"], "A random number from a (included) to b (excluded).").random(),
+    f("normal", F::Normal, &["mean", "sd"], "A random number of the normal distribution.").random(),
+    f("exponential", F::Exponential, &["mean"], "A random number of the exponential distribution.").random(),
+    f("uniform_int", F::UniformInt, &["a", "b"], "A random whole number from a to b, both included.").random(),
+    f("binomial", F::Binomial, &["n", "p"], "A random number of successes in n trials of probability p.").random(),
+    f("poisson", F::Poisson, &["mean"], "A random number of the Poisson distribution.").random(),
     f("constant", F::Constant, &["x"], "x itself (Green's CONSTANT distribution)."),
 ];
 

@@ -102,22 +102,14 @@ mod tests {
     #[test]
     fn the_json_holds_every_table() {
         let json: serde_json::Value = serde_json::from_str(&vocabulary_json()).expect("json");
-        assert_eq!(
-            json["modules"].as_array().map(Vec::len),
-            Some(MODULES.len())
-        );
-        assert_eq!(
-            json["directives"].as_array().map(Vec::len),
-            Some(DIRECTIVES.len())
-        );
-        assert_eq!(
-            json["keywords"].as_array().map(Vec::len),
-            Some(KEYWORDS.len())
-        );
-        assert_eq!(
-            json["functions"].as_array().map(Vec::len),
-            Some(FUNCTIONS.len())
-        );
+        for (table, len) in [
+            ("modules", MODULES.len()),
+            ("directives", DIRECTIVES.len()),
+            ("keywords", KEYWORDS.len()),
+            ("functions", FUNCTIONS.len()),
+        ] {
+            assert_eq!(json[table].as_array().map(Vec::len), Some(len), "{table}");
+        }
         // A default that is another directive's value is written as that directive.
         assert_eq!(json["modules"][0]["params"][0]["default"], "#step");
         assert_eq!(json["directives"][0]["forms"][0][0]["default"], 90.0);
