@@ -95,10 +95,9 @@ macro_rules! plant_mesh_getters {
             /// Provenance: (first triangle, module of the derived string) pairs, sorted.
             ranges "ranges": Uint32Array = p.mesh.ranges;
             /// Line ends (x, y, z each) when the plant is drawn as lines; empty otherwise.
-            lines "lines" / lines_into "linesInto": Float32Array = p.mesh.lines;
+            lines "lines": Float32Array = p.mesh.lines;
             /// A colour (r, g, b) per line end.
-            line_colors "lineColors" / line_colors_into "lineColorsInto": Float32Array =
-                p.mesh.line_colors;
+            line_colors "lineColors": Float32Array = p.mesh.line_colors;
             /// Every segment as a line, whatever the mesh (the studio's Lines mode): two ends
             /// (x, y, z each) per segment.
             segment_ends "segmentEnds" / segment_ends_into "segmentEndsInto": Float32Array =
