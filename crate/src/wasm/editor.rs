@@ -45,23 +45,13 @@ impl PlantEditor {
     #[wasm_bindgen(js_name = branchControlPoints)]
     pub fn branch_control_points(&self) -> js_sys::Float32Array {
         let n = self.editor.tree().len() as u32;
-        let out: Vec<f32> = (0..n)
-            .flat_map(|b| self.editor.control_points(b))
-            .flat_map(|p| [p.x as f32, p.y as f32, p.z as f32])
-            .collect();
-        js_sys::Float32Array::from(&out[..])
+        float_triples((0..n).flat_map(|b| self.editor.control_points(b)))
     }
 
     /// The joints of branch `branch` where they are now (3 floats each); empty for no branch.
     #[wasm_bindgen(js_name = branchJoints)]
     pub fn branch_joints(&self, branch: u32) -> js_sys::Float32Array {
-        let flat: Vec<f32> = self
-            .editor
-            .joints(branch)
-            .iter()
-            .flat_map(|j| [j.x as f32, j.y as f32, j.z as f32])
-            .collect();
-        js_sys::Float32Array::from(&flat[..])
+        float_triples(self.editor.joints(branch))
     }
 
     /// The parameter of each joint of branch `branch` on its curve (0 to 1, by length).
@@ -195,4 +185,13 @@ impl PlantEditor {
         }
         js_sys::Float32Array::from(&out[..])
     }
+}
+
+/// Points as 3 floats each (x, y, z).
+fn float_triples(points: impl IntoIterator<Item = glam::DVec3>) -> js_sys::Float32Array {
+    let flat: Vec<f32> = points
+        .into_iter()
+        .flat_map(|p| [p.x as f32, p.y as f32, p.z as f32])
+        .collect();
+    js_sys::Float32Array::from(&flat[..])
 }

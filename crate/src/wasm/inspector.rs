@@ -14,6 +14,16 @@ impl PlantInspector {
     pub(super) fn new(build: pipeline::Build) -> Self {
         PlantInspector { build }
     }
+
+    /// The module texts `texts` picks, as a JSON array (empty without an inspector).
+    fn texts_json(&self, texts: impl FnOnce(&pipeline::Inspector) -> Vec<String>) -> String {
+        let texts = self
+            .build
+            .inspector()
+            .map(|i| texts(&i))
+            .unwrap_or_default();
+        serde_json::to_string(&texts).unwrap_or_else(|_| "[]".into())
+    }
 }
 
 #[wasm_bindgen]
@@ -39,12 +49,7 @@ impl PlantInspector {
     /// strings (one per module).
     #[wasm_bindgen(js_name = moduleTexts)]
     pub fn module_texts(&self, start: usize, count: usize) -> String {
-        let texts = self
-            .build
-            .inspector()
-            .map(|i| i.module_texts(start, count))
-            .unwrap_or_default();
-        serde_json::to_string(&texts).unwrap_or_else(|_| "[]".into())
+        self.texts_json(|i| i.module_texts(start, count))
     }
 
     #[cfg(feature = "studio-extras")]
@@ -91,12 +96,7 @@ impl PlantInspector {
     /// The text of modules `start .. start + count` of the string the last step read (JSON array).
     #[wasm_bindgen(js_name = previousTexts)]
     pub fn previous_texts(&self, start: usize, count: usize) -> String {
-        let texts = self
-            .build
-            .inspector()
-            .map(|i| i.previous_texts(start, count))
-            .unwrap_or_default();
-        serde_json::to_string(&texts).unwrap_or_else(|_| "[]".into())
+        self.texts_json(|i| i.previous_texts(start, count))
     }
 
     /// Modules in the string the last step read (0 after 0 steps).

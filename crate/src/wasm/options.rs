@@ -103,15 +103,17 @@ impl<'a> OptionsObject<'a> {
 
     /// Field `name`, `None` when it is `undefined` or `null`.
     fn get<T: FieldValue>(&self, name: &str) -> Result<Option<T>, JsError> {
+        self.field(name)?.map(|v| T::read(v, name)).transpose()
+    }
+
+    /// The value of field `name` (not generic, so the first load carries one copy of it).
+    fn field(&self, name: &str) -> Result<Option<JsValue>, JsError> {
         let Some(object) = self.0 else {
             return Ok(None);
         };
         let value = js_sys::Reflect::get(object, &JsValue::from_str(name))
             .map_err(|_| JsError::new("bad options: not an object"))?;
-        if value.is_undefined() || value.is_null() {
-            return Ok(None);
-        }
-        T::read(value, name).map(Some)
+        Ok((!value.is_undefined() && !value.is_null()).then_some(value))
     }
 
     /// Field `name`, which must be given.
