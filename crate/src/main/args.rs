@@ -1,6 +1,6 @@
 //! The command line read: its flags, and what `export` writes where.
 
-use crate::USAGE;
+use super::USAGE;
 use meristem::export::{svg, Format};
 use meristem::mesh::{MAX_SIDES, MIN_SIDES};
 use std::path::PathBuf;

@@ -1,6 +1,6 @@
 //! `meristem derive`, `check` and `export`: a build, and what is printed or written of it.
 
-use crate::args::{Args, ExportTarget};
+use super::args::{Args, ExportTarget};
 use meristem::branches::{BranchEdit, EditReport};
 use meristem::diagnostics::{locate_all, LocatedDiagnostic, Severity};
 use meristem::export;

@@ -1,6 +1,6 @@
 //! `meristem help`: the usage, or the language's vocabulary as a table.
 
-use crate::USAGE;
+use super::USAGE;
 use meristem::vocabulary::{Param, ParamDefault, DIRECTIVES, MODULES};
 use std::process::ExitCode;
 

@@ -1,6 +1,6 @@
 //! `meristem import`: another dialect's grammar or a vlab object translated.
 
-use crate::args::Args;
+use super::args::Args;
 use meristem::import::{self, Dialect};
 use std::process::ExitCode;
 

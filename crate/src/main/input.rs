@@ -1,6 +1,6 @@
 //! The files the command line names, read: the grammar and the edits document.
 
-use crate::args::Args;
+use super::args::Args;
 use meristem::branches::{parse_edits, BranchEdit};
 use std::process::ExitCode;
 
