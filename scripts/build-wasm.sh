@@ -26,7 +26,7 @@ opt=()
 # time), then wasm-opt -O3; in its own target folder, so the two builds do not rebuild each other.
 # Native builds, `cargo test` and the criterion benches keep the release profile's 3.
 # (panic = "abort" would change nothing: wasm32-unknown-unknown aborts on a panic already, after
-# the panic hook of src/wasm.rs has reported it.)
+# the panic hook of src/wasm/panic.rs has reported it.)
 # pack OUT_DIR NAME [WASM_PACK_ARGS...] [-- CARGO_ARGS...]: one package (package.json, glue,
 # types, the .wasm)
 pack() {

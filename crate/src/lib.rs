@@ -4,7 +4,9 @@
 //! [`syntax`] (text -> syntax tree) -> [`model`] (resolve: validated model) -> [`derive`]
 //! (rewriting) -> [`turtle`] (interpretation: skeleton) -> [`mesh`] (triangles) -> [`export`].
 //! [`pipeline::build`] runs them all. [`growth`] adds the particle attributes (lifetime, speed,
-//! shape, attractors) to derive and turtle. `wasm` is the only file that knows about JavaScript.
+//! shape, attractors) to derive and turtle. `wasm` (a folder, one file per class or concept of
+//! the boundary) is the only module that knows wasm-bindgen; `number` alone besides it calls
+//! JavaScript (its `parseFloat`, under wasm32: see its doc).
 
 pub mod branches;
 pub mod derive;

@@ -11,7 +11,7 @@
 //!   says it is another dialect's word (`// dialect: …`, in the importers); and every directive or
 //!   module name that a literal mentions exists in the vocabulary.
 //!
-//! - **No IO, no clock, no browser**: only `main.rs` (the CLI) and `wasm.rs` (the boundary) may
+//! - **No IO, no clock, no browser**: only `main.rs` (the CLI) and `wasm/` (the boundary) may
 //!   touch files, the environment, clocks, OS randomness or JavaScript; one exception, `number.rs`,
 //!   which under wasm32 lets JavaScript's `parseFloat` convert the digits of a number (the first
 //!   plant's core then leaves Rust's decimal-to-float code out: issue 22) and uses nothing else.

@@ -155,7 +155,7 @@ mod wasm {
         let out = js_sys::Uint32Array::new_with_length(indices.len() as u32);
         b.indices_into(&out).unwrap();
         assert_eq!(out.to_vec(), indices);
-        let normals = b.packed_normals();
+        let normals = b.packed_normals().to_vec();
         let out = js_sys::Int16Array::new_with_length(normals.len() as u32);
         b.packed_normals_into(&out).unwrap();
         assert_eq!(out.to_vec(), normals);
@@ -165,17 +165,38 @@ mod wasm {
         assert!(b
             .packed_colors_into(&js_sys::Uint8Array::new_with_length(1))
             .is_err());
-        // A sketch's lines and their colours, the same way.
-        let sketch = build_sketch("#angle 90\naxiom: F+F", None);
-        let lines = sketch.lines().to_vec();
-        assert_eq!(lines.len(), 12);
-        let out = js_sys::Float32Array::new_with_length(12);
-        sketch.lines_into(&out).unwrap();
-        assert_eq!(out.to_vec(), lines);
-        sketch.line_colors_into(&out).unwrap();
-        assert_eq!(out.to_vec(), sketch.line_colors().to_vec());
-        assert!(sketch.lines_into(&short).is_err());
-        assert!(sketch.line_colors_into(&short).is_err());
+    }
+
+    #[wasm_bindgen_test]
+    fn a_build_with_a_sketch_first_shows_the_sketch_then_meshes_in_the_same_call() {
+        use std::cell::RefCell;
+        use std::rc::Rc;
+        use wasm_bindgen::closure::Closure;
+        let source = "#angle 90\naxiom: F+F";
+        let sketch = build_sketch(source, None);
+        let shown: Rc<RefCell<Vec<(Vec<f32>, Vec<f32>, bool, f64)>>> = Rc::default();
+        let record = Rc::clone(&shown);
+        let show = Closure::<dyn FnMut(js_sys::Float32Array, js_sys::Float32Array, bool, f64)>::new(
+            move |lines: js_sys::Float32Array, colors: js_sys::Float32Array, flat, segments| {
+                record
+                    .borrow_mut()
+                    .push((lines.to_vec(), colors.to_vec(), flat, segments));
+            },
+        );
+        let first = js_sys::Object::new();
+        js_sys::Reflect::set(&first, &"minSegments".into(), &JsValue::from(1)).unwrap();
+        js_sys::Reflect::set(&first, &"show".into(), show.as_ref()).unwrap();
+        let options = js_sys::Object::new();
+        js_sys::Reflect::set(&options, &"sketchFirst".into(), &first).unwrap();
+        let b = build(source, &options.unchecked_into(), None, None).unwrap();
+        let plain = build(source, &JsValue::UNDEFINED.unchecked_into(), None, None).unwrap();
+        let shown = shown.borrow();
+        assert_eq!(shown.len(), 1);
+        assert_eq!(shown[0].0, sketch.lines().to_vec());
+        assert_eq!(shown[0].1, sketch.line_colors().to_vec());
+        assert_eq!((shown[0].2, shown[0].3), (true, 2.0));
+        assert_eq!(b.positions().to_vec(), plain.positions().to_vec());
+        assert_eq!(b.lines().length(), 0);
     }
 
     /// The packed normals are what the page once computed, `Math.round` of the clamped, scaled

@@ -15,7 +15,7 @@ describe('a panic of the core', () => {
     }
     expect(caught).toBeInstanceOf(CoreCrashed);
     const message = (caught as CoreCrashed).message;
-    expect(message).toMatch(/^the core crashed \(a bug\): panicked at .*wasm\.rs/);
+    expect(message).toMatch(/^the core crashed \(a bug\): panicked at .*wasm\/panic\.rs/);
     expect(message).toContain('the test asked for it');
   });
 

@@ -121,8 +121,7 @@ describe('inspectPlant with a sketch (the live preview of big plants)', () => {
   it('hands over the segments as lines first, then gives exactly the build of one call', () => {
     const sketches: { lines: number; segments: number }[] = [];
     const { build, inspector } = inspectPlant(TREE, { iterations: 4, sides: 5 }, {
-      minSegments: 100,
-      show: (s) => sketches.push({ lines: s.lines.length, segments: s.segments }),
+      sketch: { minSegments: 100, show: (s) => sketches.push({ lines: s.lines.length, segments: s.segments }) },
     });
     inspector.free();
     const plain = buildPlant(TREE, { iterations: 4, sides: 5 });
@@ -137,8 +136,8 @@ describe('inspectPlant with a sketch (the live preview of big plants)', () => {
   it('gives no sketch for a small plant or a grammar with errors', () => {
     const sketches: unknown[] = [];
     const show = (s: unknown) => sketches.push(s);
-    inspectPlant(TREE, { iterations: 1 }, { minSegments: 100, show }).inspector.free();
-    const broken = inspectPlant('axiom: F[', {}, { minSegments: 0, show });
+    inspectPlant(TREE, { iterations: 1 }, { sketch: { minSegments: 100, show } }).inspector.free();
+    const broken = inspectPlant('axiom: F[', {}, { sketch: { minSegments: 0, show } });
     broken.inspector.free();
     expect(broken.build.ok).toBe(false);
     expect(sketches).toEqual([]);
@@ -149,7 +148,7 @@ describe('inspectPlant for the GPU (what the build worker sends the view)', () =
   it('packs the normals and colours in the core: Math.round of the clamped, scaled floats', () => {
     // Leaves (colour and normals of their own), tubes of two colours and a sphere.
     const source = '#angle 30\naxiom: A\nA -> F[+A][-{.f.-f.-f.}]\'F@O(1)A';
-    const { build, inspector, gpu } = inspectPlant(source, { iterations: 3 }, undefined, undefined, true);
+    const { build, inspector, gpu } = inspectPlant(source, { iterations: 3 }, { forGpu: true });
     inspector.free();
     const plain = buildPlant(source, { iterations: 3 });
     expect(build.mesh.normals.length).toBe(0);
@@ -166,7 +165,7 @@ describe('inspectPlant for the GPU (what the build worker sends the view)', () =
     // 1.24d at n = 10: 1,087,919 vertices and 116,050 segments, every one of the seven arrays
     // over a megabyte.
     const source = readFileSync(new URL(`../../${EXAMPLE}`, import.meta.url), 'utf8');
-    const first = inspectPlant(source, { iterations: 10 }, undefined, undefined, true);
+    const first = inspectPlant(source, { iterations: 10 }, { forGpu: true });
     first.inspector.free();
     const big = (b: PlantBuild, g: typeof first.gpu) => [b.mesh.positions, b.mesh.indices, b.mesh.uvs, g.normals, g.colors, b.mesh.segmentEnds, b.mesh.segmentColors];
     const sizes = big(first.build, first.gpu).map((array) => array.byteLength);
@@ -174,7 +173,7 @@ describe('inspectPlant for the GPU (what the build worker sends the view)', () =
     // Spares an eighth bigger than the arrays (within what is taken and held), so that they show.
     const spareSizes = sizes.map((bytes) => Math.round(1.125 * bytes));
     prepareSpares(spareSizes);
-    const again = inspectPlant(source, { iterations: 10 }, undefined, undefined, true);
+    const again = inspectPlant(source, { iterations: 10 }, { forGpu: true });
     again.inspector.free();
     const arrays = big(again.build, again.gpu);
     arrays.forEach((array, k) => {
@@ -182,7 +181,7 @@ describe('inspectPlant for the GPU (what the build worker sends the view)', () =
       expect(array.buffer.byteLength, `array ${k}'s buffer`).toBe(spareSizes[k]);
     });
     // The spares are taken once: the next build gets new arrays.
-    const third = inspectPlant(source, { iterations: 10 }, undefined, undefined, true);
+    const third = inspectPlant(source, { iterations: 10 }, { forGpu: true });
     third.inspector.free();
     big(third.build, third.gpu).forEach((array, k) => expect(array.buffer.byteLength, `array ${k}'s buffer`).toBe(sizes[k]));
     const before = big(first.build, first.gpu);
@@ -197,7 +196,7 @@ describe('inspectPlant for the GPU (what the build worker sends the view)', () =
     const source = readFileSync(new URL(`../../${EXAMPLE}`, import.meta.url), 'utf8');
     const sketchOf = () => {
       const sketches: PlantSketch[] = [];
-      inspectPlant(source, { iterations: 10 }, { minSegments: 1, show: (s) => sketches.push(s) }, undefined, true).inspector.free();
+      inspectPlant(source, { iterations: 10 }, { sketch: { minSegments: 1, show: (s) => sketches.push(s) }, forGpu: true }).inspector.free();
       expect(sketches).toHaveLength(1);
       return [sketches[0].lines, sketches[0].lineColors];
     };

@@ -1,6 +1,12 @@
 // The facade over the core's `build`: one call, plain data out, the wasm object freed (or turned
 // into the inspector or the editor that mirror it).
-import { build, type PlantBuild as WasmPlantBuild, type PlantInspector as WasmPlantInspector } from '../../../crate/pkg-core/meristem_core.js';
+import {
+  build,
+  type BuildOptions as CoreBuildOptions,
+  type PlantBuild as WasmPlantBuild,
+  type PlantInspector as WasmPlantInspector,
+  type SketchFirst,
+} from '../../../crate/pkg-core/meristem_core.js';
 import type {
   build as studioBuildType,
   Explanation as WasmExplanation,
@@ -91,45 +97,43 @@ export function studioCoreInUse(): boolean {
   return studioBuild !== undefined;
 }
 
+/** How {@link inspectPlant} builds: a sketch first, progress, arrays for the GPU. */
+export interface InspectRequest {
+  /** A sketch of a big plant, shown while its tubes are meshed in the same call into the core. */
+  sketch?: SketchRequest;
+  /**
+   * Told each stage as it starts and each derivation step as it ends (the core calls it while it
+   * works, so it can only post messages, not wait for an answer).
+   */
+  onProgress?: (progress: BuildProgress) => void;
+  /**
+   * The mesh's normals and colours packed for the GPU (`gpu`) in place of `build.mesh.normals`
+   * and `.colors` (then empty): what the build worker sends the view.
+   */
+  forGpu?: boolean;
+}
+
 /**
  * Like {@link buildPlant}, and also keeps the core's derivation alive behind a
- * {@link PlantInspector} (explanations, module texts) until its `free` is called. `onProgress`
- * is told each stage as it starts and each derivation step as it ends (the core calls it while it
- * works, so it can only post messages, not wait for an answer). Built by the first plant's core,
- * the inspector gives module texts and the last step's links, and throws on the questions only
- * the studio core answers (`explain`, `explainModule`, `matchReport`, `sequence`): after
- * `loadStudioCore`, every inspector answers them all. With `forGpu`, the mesh's normals and
- * colours come packed for the GPU (`gpu`) in place of `build.mesh.normals` and `.colors` (then
- * empty): what the build worker sends the view.
+ * {@link PlantInspector} (explanations, module texts) until its `free` is called. One call into
+ * the core makes the plant (with `request.sketch`, its sketch first). Built by the first plant's
+ * core, the inspector gives module texts and the last step's links, and throws on the questions
+ * only the studio core answers (`explain`, `explainModule`, `matchReport`, `sequence`): after
+ * `loadStudioCore`, every inspector answers them all.
  */
-export function inspectPlant(
-  source: string,
-  options?: BuildOptions,
-  sketch?: SketchRequest,
-  onProgress?: (progress: BuildProgress) => void,
-): { build: PlantBuild; inspector: PlantInspector };
-export function inspectPlant(
-  source: string,
-  options: BuildOptions,
-  sketch: SketchRequest | undefined,
-  onProgress: ((progress: BuildProgress) => void) | undefined,
-  forGpu: true,
-): { build: PlantBuild; inspector: PlantInspector; gpu: GpuArrays };
-export function inspectPlant(
-  source: string,
-  options: BuildOptions = {},
-  sketch?: SketchRequest,
-  onProgress?: (progress: BuildProgress) => void,
-  forGpu = false,
-): { build: PlantBuild; inspector: PlantInspector; gpu?: GpuArrays } {
+export function inspectPlant(source: string, options?: BuildOptions, request?: InspectRequest & { forGpu?: false }): { build: PlantBuild; inspector: PlantInspector };
+export function inspectPlant(source: string, options: BuildOptions, request: InspectRequest & { forGpu: true }): { build: PlantBuild; inspector: PlantInspector; gpu: GpuArrays };
+export function inspectPlant(source: string, options: BuildOptions = {}, request: InspectRequest = {}): { build: PlantBuild; inspector: PlantInspector; gpu?: GpuArrays } {
+  const { sketch, onProgress, forGpu = false } = request;
   const core: (...args: Parameters<typeof build>) => WasmPlantBuild = studioBuild ?? build;
-  const result = sketch ? runSketched(core, source, options, sketch, onProgress) : runBuildWith(core, source, options, onProgress);
+  const result = runBuildWith(core, source, { ...options, sketchFirst: sketch && sketchFirst(sketch, options) }, onProgress);
   let plain: PlantBuild;
   let gpu: GpuArrays | undefined;
   try {
+    const stats = guarded(() => JSON.parse(result.stats()) as PlantStats);
     // For the GPU (the build worker): the biggest arrays into spare buffers where there are some.
-    const spares = forGpu ? guarded(() => spareArrays(result)) : {};
-    plain = plainBuild(source, result, forGpu, spares);
+    const spares = forGpu ? guarded(() => spareCopies?.copy(result, stats) ?? {}) : {};
+    plain = plainBuild(source, result, { forGpu, spares, stats });
     if (forGpu) {
       gpu = guarded(() => ({
         normals: spares.normals ?? ownedArray(result.packedNormals()),
@@ -163,47 +167,23 @@ export interface SketchRequest {
 }
 
 /**
- * The pipeline in two steps: up to the turtle with segments as lines (a `sketch` build: the core
- * draws the lines straight from the string, without the skeleton), the sketch handed to
- * `request.show` when the plant is big, then the mesh (`remesh` with the view options: the
- * skeleton, and the very mesh a plain build makes; without the tubes when `options.tubes` says
- * so). The remesh is timed with the build's clock: the skeleton's time adds to the interpret
- * stage's, the tubes' to the mesh stage's.
+ * The core's `sketchFirst` for `request`: the sketch's arrays, which the core lends as views of
+ * its memory, copied (into spare buffers where there are some: the build worker's) before
+ * `request.show` sees them; the mesh after it without the tubes when `options.tubes` says so.
  */
-function runSketched(
-  core: (...args: Parameters<typeof build>) => WasmPlantBuild,
-  source: string,
-  options: BuildOptions,
-  request: SketchRequest,
-  onProgress?: (progress: BuildProgress) => void,
-): WasmPlantBuild {
-  const result = runBuildWith(core, source, { ...options, sketch: true }, onProgress);
-  try {
-    if (result.ok) {
-      const { segments, lines } = JSON.parse(result.stats()) as PlantStats;
-      if (segments >= request.minSegments) {
-        // Into spare buffers where there are some (the build worker's): the sketch leaves once they are copied.
-        const spares = guarded(() => spareCopies?.copySketch(result, lines) ?? {});
-        request.show({
-          lines: spares.lines ?? ownedArray(result.lines()),
-          lineColors: spares.lineColors ?? ownedArray(result.lineColors()),
-          flat: result.flat,
-          segments,
-        });
-      }
-    }
-    if (result.ok) onProgress?.({ stage: 'meshing', step: 0, steps: 0 });
-    const tubes = options.tubes === 'unlessFlat' ? !result.flat : options.tubes !== false;
-    guarded(() => result.remesh({ sides: options.sides, smoothAll: options.smoothAll, tubes }, () => performance.now()));
-    return result;
-  } catch (error) {
-    result.free();
-    throw error;
-  }
+function sketchFirst(request: SketchRequest, options: BuildOptions): SketchFirst {
+  return {
+    minSegments: request.minSegments,
+    tubes: options.tubes,
+    show: (lines, lineColors, flat, segments) => {
+      const spares = spareCopies?.copySketch(lines, lineColors) ?? {};
+      request.show({ lines: spares.lines ?? lines.slice(), lineColors: spares.lineColors ?? lineColors.slice(), flat, segments });
+    },
+  };
 }
 
 /** Runs the core's `build` (for this folder's facades; the caller frees the result). */
-export function runBuild(source: string, options: BuildOptions & { sketch?: boolean }, onProgress?: (progress: BuildProgress) => void): WasmPlantBuild {
+export function runBuild(source: string, options: CoreBuildOptions, onProgress?: (progress: BuildProgress) => void): WasmPlantBuild {
   return runBuildWith(build, source, options, onProgress);
 }
 
@@ -211,12 +191,12 @@ export function runBuild(source: string, options: BuildOptions & { sketch?: bool
  * Runs `core`, the `build` of either core module (the first plant's, or the whole boundary's for
  * what only it has: branch editing, ./branches.ts). The caller frees the result.
  */
-export function runBuildWith<B>(core: (...args: Parameters<typeof build>) => B, source: string, options: BuildOptions & { sketch?: boolean }, onProgress?: (progress: BuildProgress) => void): B {
+export function runBuildWith<B>(core: (...args: Parameters<typeof build>) => B, source: string, options: CoreBuildOptions, onProgress?: (progress: BuildProgress) => void): B {
   assertReady();
-  const { iterations, seed, sides, smoothAll, sketch } = options;
+  const { iterations, seed, sides, smoothAll, sketch, sketchFirst } = options;
   const progress = onProgress && ((stage: BuildStage, step: number, steps: number) => onProgress({ stage, step, steps }));
   // The core reads no clock: it reads ours between its stages.
-  return guarded(() => core(source, { iterations, seed, sides, smoothAll, sketch }, () => performance.now(), progress));
+  return guarded(() => core(source, { iterations, seed, sides, smoothAll, sketch, sketchFirst }, () => performance.now(), progress));
 }
 
 interface RawProduction {
@@ -228,18 +208,24 @@ interface RawProduction {
   condition: [number, number] | null;
 }
 
-/**
- * Copies a wasm build into plain data (for this folder's facades; the caller frees the build).
- * `forGpu`: without the mesh's float normals and colours (empty arrays), which the caller takes
- * packed for the GPU instead. `spares`: arrays already copied ({@link copyMesh}).
- */
-export function plainBuild(source: string, result: WasmPlantBuild, forGpu = false, spares: SpareArrays = {}): PlantBuild {
+/** How {@link plainBuild} copies a build. */
+export interface PlainCopy {
+  /** Without the mesh's float normals and colours (empty arrays): the caller takes them packed for the GPU. */
+  forGpu?: boolean;
+  /** Arrays already copied ({@link copyMesh}). */
+  spares?: SpareArrays;
+  /** The build's stats, when the caller has already read them (they are read once a build). */
+  stats?: PlantStats;
+}
+
+/** Copies a wasm build into plain data (for this folder's facades; the caller frees the build). */
+export function plainBuild(source: string, result: WasmPlantBuild, { forGpu = false, spares = {}, stats }: PlainCopy = {}): PlantBuild {
   const toUtf16 = utf16Offsets(source);
   return guarded(() => ({
     ok: result.ok,
     diagnostics: (JSON.parse(result.diagnostics()) as RawDiagnostic[]).map(toDiagnostic),
-    stats: JSON.parse(result.stats()) as PlantStats,
-    mesh: copyMesh(result, forGpu, spares),
+    stats: stats ?? (JSON.parse(result.stats()) as PlantStats),
+    mesh: copyMesh(result, { forGpu, spares }),
     derived: result.derived(DERIVED_PREVIEW_CHARS),
     moduleCount: result.moduleCount,
     productions: (JSON.parse(result.productions()) as RawProduction[]).map(
@@ -265,9 +251,9 @@ type MeshHolder = WasmPlantBuild | WasmPlantEditor;
 
 /**
  * Copies every mesh array of a wasm build or editor out of wasm memory (`forGpu`: see
- * {@link plainBuild}), but those already in `spares`.
+ * {@link PlainCopy}), but those already in `spares`.
  */
-export function copyMesh(result: MeshHolder, forGpu = false, spares: SpareArrays = {}): MeshBuffers {
+export function copyMesh(result: MeshHolder, { forGpu = false, spares = {} }: Pick<PlainCopy, 'forGpu' | 'spares'> = {}): MeshBuffers {
   return guarded(() => ({
     positions: spares.positions ?? ownedArray(result.positions()),
     normals: forGpu ? new Float32Array(0) : ownedArray(result.normals()),
@@ -282,12 +268,6 @@ export function copyMesh(result: MeshHolder, forGpu = false, spares: SpareArrays
     segmentColors: spares.segmentColors ?? ownedArray(result.segmentColors()),
     segmentModules: ownedArray(result.segmentModules()),
   }));
-}
-
-/** The arrays of `result` that went into spare buffers (none before the studio core is in use). */
-function spareArrays(result: WasmPlantBuild): SpareArrays {
-  if (!spareCopies) return {};
-  return spareCopies.copy(result, JSON.parse(result.stats()) as PlantStats);
 }
 
 /** Copies a wasm explanation into plain data and frees it. */

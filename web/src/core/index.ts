@@ -3,7 +3,7 @@
 export { initCore, coreModule, coreVersion, CoreCrashed } from './init';
 export { initIo } from './io';
 export { loadBranchEditing, type EditPlant } from './editing';
-export { buildPlant, inspectPlant, prepareSpares, studioCoreInUse, type PlantSketch, type SketchRequest } from './build';
+export { buildPlant, inspectPlant, prepareSpares, studioCoreInUse, type InspectRequest, type PlantSketch, type SketchRequest } from './build';
 export { loadStudioCore } from './studio-core-loader';
 export {
   exportModel,

@@ -13,9 +13,12 @@ function build(value: number): object {
     packedColorsInto: fill,
     segmentEndsInto: fill,
     segmentColorsInto: fill,
-    linesInto: fill,
-    lineColorsInto: fill,
   };
+}
+
+/** A sketch of `lines` lines: its ends and their colours, every value `value`. */
+function sketchOf(value: number, lines: number): [Float32Array, Float32Array] {
+  return [new Float32Array(6 * lines).fill(value), new Float32Array(6 * lines).fill(value)];
 }
 
 /** Spares whose pages are never touched (no timers in these tests). */
@@ -59,13 +62,13 @@ describe('copies of a build into spare buffers', () => {
     // 100,000 lines: their ends and colours 2.4 MB each; a mesh of 100,000 vertices (1.2 MB of
     // positions) and no segments drawn as a mesh.
     const counts = { vertices: 100_000, triangles: 50_000, segments: 0 };
-    expect(copies.copySketch(build(1), 100_000)).toEqual({ lines: undefined, lineColors: undefined });
+    expect(copies.copySketch(...sketchOf(1, 100_000))).toEqual({ lines: undefined, lineColors: undefined });
     copies.copy(build(1), counts);
     // Room for two arrays only: the sketch's come first.
     spares.keep = 2;
     copies.prepare();
     expect(spares.prepared.slice(0, 3)).toEqual([2.4e6, 2.4e6, 1.2e6]);
-    const sketch = copies.copySketch(build(3), 100_000);
+    const sketch = copies.copySketch(...sketchOf(3, 100_000));
     expect(sketch.lines?.length).toBe(600_000);
     expect(sketch.lineColors?.every((v) => v === 3)).toBe(true);
     expect(spares.bytes).toBe(0);

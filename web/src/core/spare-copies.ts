@@ -7,7 +7,7 @@ import { SpareBuffers } from './spare-buffers';
 /** A studio-core build's methods that copy its big arrays into given ones. */
 type CopiesInto = Pick<
   StudioPlantBuild,
-  'positionsInto' | 'indicesInto' | 'uvsInto' | 'packedNormalsInto' | 'packedColorsInto' | 'segmentEndsInto' | 'segmentColorsInto' | 'linesInto' | 'lineColorsInto'
+  'positionsInto' | 'indicesInto' | 'uvsInto' | 'packedNormalsInto' | 'packedColorsInto' | 'segmentEndsInto' | 'segmentColorsInto'
 >;
 
 type TypedArrayKind<T> = { new (buffer: ArrayBuffer, offset: number, length: number): T; BYTES_PER_ELEMENT: number };
@@ -63,17 +63,15 @@ export class SpareCopies {
   }
 
   /**
-   * The lines of a sketch (`lines` of them, `result` a sketch build of the studio core) and their
-   * colours that fit a spare, copied into it: the worker sends them to the page before the build's
-   * {@link copy}, which then prepares their sizes too.
+   * The lines of a sketch and their colours (views of the core's memory, as the core's
+   * `sketchFirst.show` gives them) that fit a spare, copied into it: the worker sends them to the
+   * page before the build's {@link copy}, which then prepares their sizes too.
    */
-  copySketch(result: object, lines: number): SpareSketch {
+  copySketch(lines: Float32Array, lineColors: Float32Array): SpareSketch {
     const sizes = (this.sketched = []);
-    if (!('linesInto' in result)) return {};
-    const core = result as unknown as CopiesInto;
     return {
-      lines: this.into(sizes, Float32Array, 6 * lines, (out) => core.linesInto(out)),
-      lineColors: this.into(sizes, Float32Array, 6 * lines, (out) => core.lineColorsInto(out)),
+      lines: this.into(sizes, Float32Array, lines.length, (out) => out.set(lines)),
+      lineColors: this.into(sizes, Float32Array, lineColors.length, (out) => out.set(lineColors)),
     };
   }
 

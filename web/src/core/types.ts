@@ -79,7 +79,7 @@ export interface MeshBuffers {
 /**
  * A mesh's normals and colours packed for the GPU by the core (`crate/src/mesh/pack.rs`): normals
  * as 16-bit and colours as 8-bit normalized integers, 6 and 3 bytes a vertex instead of 12 and 12.
- * What the build worker sends the view in place of the floats (`inspectPlant`'s `forGpu`).
+ * What the build worker sends the view in place of the floats (`inspectPlant`'s `forGpu` request).
  */
 export interface GpuArrays {
   normals: Int16Array;
@@ -87,15 +87,16 @@ export interface GpuArrays {
 }
 
 /**
- * Options of {@link buildPlant}: the core's own `BuildOptions` (declared once, beside the boundary
- * in `crate/src/wasm.rs`) without `sketch`, which the facade sets itself, and `tubes`: whether a
- * sketched build ({@link inspectPlant} with a sketch request, the studio's worker) meshes the
+ * Options of {@link buildPlant}: the core's own `BuildOptions` (generated from the table of
+ * `crate/src/wasm/options.rs`) without `sketch` and `sketchFirst`, which the facade sets itself,
+ * and `tubes`: whether a sketched build ({@link inspectPlant} with a sketch request, the studio's
+ * worker) meshes the
  * segments as tubes. `false` leaves them out (the Lines mode draws the segments as lines: the mesh
  * holds only leaves, polygons and spheres); `'unlessFlat'` leaves them out of flat plants (the
  * `auto` render mode draws those as lines); `true` or absent meshes them. Builds without a sketch
  * and exports always mesh them.
  */
-export type BuildOptions = Omit<CoreBuildOptions, 'sketch'> & { tubes?: boolean | 'unlessFlat' };
+export type BuildOptions = Omit<CoreBuildOptions, 'sketch' | 'sketchFirst'> & { tubes?: boolean | 'unlessFlat' };
 
 /** A stage of a build, as the core reports it (in this order). */
 export type BuildStage = 'parsing' | 'deriving' | 'interpreting' | 'meshing';

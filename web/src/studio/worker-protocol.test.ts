@@ -7,7 +7,7 @@ await initCore(readFileSync(new URL('../../../crate/pkg-core/meristem_core_bg.wa
 
 describe('transferablesOf', () => {
   it('lists the buffer of every array of a build once, and moving them leaves nothing behind', () => {
-    const { build, inspector, gpu } = inspectPlant('#iterations 2\naxiom: X\nX -> F[+X]F[-X]+X\nF -> FF', {}, undefined, undefined, true);
+    const { build, inspector, gpu } = inspectPlant('#iterations 2\naxiom: X\nX -> F[+X]F[-X]+X\nF -> FF', {}, { forGpu: true });
     inspector.free();
     const buffers = transferablesOf(build, gpu);
     const arrays = [...Object.values(build.mesh), build.origins, gpu.normals, gpu.colors].filter((a) => a.byteLength > 0);

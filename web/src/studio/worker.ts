@@ -170,16 +170,14 @@ addEventListener('message', async (event: MessageEvent<WorkerRequest | CoreMessa
   try {
     const start = performance.now();
     // A big plant goes to the page as lines first: on screen while its tubes are meshed.
-    const { build, inspector, gpu } = inspectPlant(
-      source,
-      options,
-      {
+    const { build, inspector, gpu } = inspectPlant(source, options, {
+      sketch: {
         minSegments: sketchFrom,
         show: (sketch) => reply({ kind: 'sketch', id, sketch }, [sketch.lines.buffer as ArrayBuffer, sketch.lineColors.buffer as ArrayBuffer]),
       },
-      progressTeller(id),
-      true, // the normals and colours packed for the GPU, not as floats
-    );
+      onProgress: progressTeller(id),
+      forGpu: true, // the normals and colours packed for the GPU, not as floats
+    });
     keep(id, inspector, source, options);
     reply({ kind: 'built', id, build, gpu, workerMillis: performance.now() - start, studioCore: studioCoreInUse() }, transferablesOf(build, gpu));
     // While the page draws it and the user edits: buffers for the next build of this size.

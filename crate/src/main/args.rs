@@ -1,0 +1,189 @@
+//! The command line read: its flags, and what `export` writes where.
+
+use super::USAGE;
+use meristem::export::{svg, Format};
+use meristem::mesh::{MAX_SIDES, MIN_SIDES};
+use std::path::PathBuf;
+
+pub struct Args {
+    pub verb: String,
+    pub file: String,
+    pub iterations: Option<u32>,
+    pub seed: Option<u64>,
+    pub stats: bool,
+    pub time: bool,
+    pub from: Option<String>,
+    pub growth: bool,
+    pub output: Option<PathBuf>,
+    pub format: Option<String>,
+    pub sides: Option<u32>,
+    pub smooth_all: bool,
+    pub edits: Option<PathBuf>,
+    pub background: Option<String>,
+    pub line_width: Option<f64>,
+    pub size: Option<String>,
+    pub dpi: Option<f64>,
+}
+
+/// The command line. Long because it is the list of flags, one arm and one variable each: split,
+/// it would only scatter that list.
+pub fn parse_args() -> Result<Args, lexopt::Error> {
+    use lexopt::prelude::*;
+    let mut parser = lexopt::Parser::from_env();
+    let mut verb = None;
+    let mut file = None;
+    let mut iterations = None;
+    let mut seed = None;
+    let mut stats = false;
+    let mut time = false;
+    let mut from = None;
+    let mut growth = false;
+    let mut output = None;
+    let mut format = None;
+    let mut sides = None;
+    let mut smooth_all = false;
+    let mut edits = None;
+    let mut background = None;
+    let mut line_width = None;
+    let mut size = None;
+    let mut dpi = None;
+    while let Some(arg) = parser.next()? {
+        match arg {
+            Long("iterations") | Short('n') => iterations = Some(parser.value()?.parse()?),
+            Long("seed") | Short('s') => seed = Some(parser.value()?.parse()?),
+            Long("stats") => stats = true,
+            Long("time") => time = true,
+            Long("from") => from = Some(parser.value()?.string()?),
+            Long("growth") => growth = true,
+            Long("output") | Short('o') => output = Some(PathBuf::from(parser.value()?)),
+            Long("format") | Short('f') => format = Some(parser.value()?.string()?),
+            Long("sides") => sides = Some(parser.value()?.string()?),
+            Long("smooth-all") => smooth_all = true,
+            Long("edits") => edits = Some(PathBuf::from(parser.value()?)),
+            Long("background") => background = Some(parser.value()?.string()?),
+            Long("line-width") => line_width = Some(parser.value()?.parse()?),
+            Long("size") => size = Some(parser.value()?.string()?),
+            Long("dpi") => dpi = Some(parser.value()?.parse()?),
+            Long("version") | Short('V') => {
+                println!("meristem {}", env!("CARGO_PKG_VERSION"));
+                std::process::exit(0);
+            }
+            Long("help") | Short('h') => {
+                println!("{USAGE}");
+                std::process::exit(0);
+            }
+            Value(v) if verb.is_none() => verb = Some(v.string()?),
+            Value(v) if file.is_none() => file = Some(v.string()?),
+            _ => return Err(arg.unexpected()),
+        }
+    }
+    // Refused, not clamped: an export with other sides than asked for would be a silent surprise.
+    let sides = match sides {
+        None => None,
+        Some(text) => match text.trim().parse::<u32>() {
+            Ok(n) if (MIN_SIDES..=MAX_SIDES).contains(&n) => Some(n),
+            _ => {
+                return Err(format!(
+                    "--sides {text} is out of range: a branch tube has {MIN_SIDES} to {MAX_SIDES} sides (a whole number)"
+                )
+                .into())
+            }
+        },
+    };
+    let verb = verb.ok_or("missing verb")?;
+    let file = match (verb.as_str(), file) {
+        ("help", topic) => topic.unwrap_or_default(),
+        (_, Some(file)) => file,
+        (_, None) => return Err("missing FILE".into()),
+    };
+    Ok(Args {
+        verb,
+        file,
+        iterations,
+        seed,
+        stats,
+        time,
+        from,
+        growth,
+        output,
+        format,
+        sides,
+        smooth_all,
+        edits,
+        background,
+        line_width,
+        size,
+        dpi,
+    })
+}
+
+/// An SVG's picture settings from `--background`, `--line-width`, `--size` and `--dpi`, checked;
+/// refused for the other formats.
+pub fn svg_look(args: &Args, format: Format) -> Result<svg::Look, String> {
+    let given = args.background.is_some()
+        || args.line_width.is_some()
+        || args.size.is_some()
+        || args.dpi.is_some();
+    if given && format != Format::Svg {
+        return Err(format!(
+            "--background, --line-width, --size and --dpi are an SVG's picture settings, not {}'s",
+            format.extension()
+        ));
+    }
+    let size = match &args.size {
+        Some(text) => {
+            let parsed = text
+                .split_once(['x', 'X', '×'])
+                .and_then(|(w, h)| Some((w.trim().parse().ok()?, h.trim().parse().ok()?)));
+            Some(
+                parsed
+                    .ok_or_else(|| format!("--size takes WIDTHxHEIGHT in pixels, not '{text}'"))?,
+            )
+        }
+        None => None,
+    };
+    svg::Look::read(args.background.as_deref(), args.line_width, size, args.dpi)
+}
+
+/// Where `export` writes, in which format, and an SVG's look.
+pub struct ExportTarget {
+    pub output: PathBuf,
+    pub format: Format,
+    pub look: svg::Look,
+}
+
+/// Where `export` writes and in which format: `-o` is required; the format is `--format`, else
+/// the output's extension.
+pub fn export_target(args: &Args) -> Result<ExportTarget, String> {
+    let output = args
+        .output
+        .clone()
+        .ok_or("export needs an output file: -o OUT.EXT")?;
+    let name = match &args.format {
+        Some(name) => name.clone(),
+        None => output
+            .extension()
+            .and_then(|e| e.to_str())
+            .unwrap_or("")
+            .to_string(),
+    };
+    let format = Format::from_extension(&name).ok_or_else(|| {
+        let what = if args.format.is_some() {
+            format!("unknown format '{name}'")
+        } else if name.is_empty() {
+            format!("{} has no extension to tell the format", output.display())
+        } else {
+            format!("unknown extension '.{name}'")
+        };
+        format!(
+            "{what}; the formats are {} (PNG comes from the studio's renderer)",
+            Format::names()
+        )
+    })?;
+    let look = svg_look(args, format)?;
+    Ok(ExportTarget {
+        output,
+        format,
+        look,
+    })
+}

@@ -1,0 +1,158 @@
+//! `meristem derive`, `check` and `export`: a build, and what is printed or written of it.
+
+use super::args::{Args, ExportTarget};
+use meristem::branches::{BranchEdit, EditReport};
+use meristem::diagnostics::{locate_all, LocatedDiagnostic, Severity};
+use meristem::export;
+use meristem::pipeline::{
+    self, Build, ExportError, ExportOptions, Hooks, PlantEditor, StageTimings,
+};
+use meristem::BuildOptions;
+use std::path::Path;
+use std::process::ExitCode;
+
+/// Writes the files of an export: the first at `output`, any others (OBJ's MTL) beside it with
+/// their own extension, texture images (POV-Ray's) beside it with their own names.
+pub fn write_export(output: &Path, files: &[export::ExportedFile]) -> Result<(), String> {
+    for (k, file) in files.iter().enumerate() {
+        let path = if k == 0 {
+            output.to_path_buf()
+        } else if file.mime == "image/png" {
+            // A texture keeps its own name (`bark.png`): the scene refers to it by that name.
+            output.with_file_name(&file.name)
+        } else {
+            let extension = file.name.rsplit('.').next().unwrap_or("");
+            output.with_extension(extension)
+        };
+        std::fs::write(&path, &file.bytes)
+            .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+        println!("wrote {} ({} bytes)", path.display(), file.bytes.len());
+    }
+    Ok(())
+}
+
+pub fn print_diagnostics(file: &str, diagnostics: &[LocatedDiagnostic]) {
+    for d in diagnostics {
+        let severity = match d.severity {
+            Severity::Error => "error",
+            Severity::Warning => "warning",
+        };
+        eprintln!(
+            "{file}:{}:{}: {severity}: {} [{}]",
+            d.line, d.column, d.message, d.code
+        );
+    }
+}
+
+/// `--time`: each stage's time on stderr.
+pub fn print_timings(args: &Args, timings: Option<StageTimings>) {
+    if let (true, Some(t)) = (args.time, timings) {
+        eprintln!(
+            "parse+resolve {:.3} ms, derive {:.3} ms, interpret {:.3} ms, mesh {:.3} ms",
+            t.parse_resolve, t.derive, t.interpret, t.mesh
+        );
+    }
+}
+
+/// Warns about each edit whose branch no longer exists.
+pub fn print_edit_report(args: &Args, report: &EditReport) {
+    let Some(path) = &args.edits else {
+        return;
+    };
+    for skipped in &report.not_applied {
+        eprintln!(
+            "{}: warning: the edit of branch {:?} does not apply: {}",
+            path.display(),
+            skipped.path,
+            skipped.reason
+        );
+    }
+}
+
+/// `meristem derive` and `meristem check`.
+pub fn derive_or_check(
+    args: &Args,
+    source: &str,
+    options: &BuildOptions,
+    edits: Option<Vec<BranchEdit>>,
+    hooks: &mut Hooks,
+) -> ExitCode {
+    let mut build = pipeline::build_with(source, options, hooks);
+    print_timings(args, build.timings);
+    print_diagnostics(&args.file, &build.located_diagnostics(source));
+    if !build.ok() {
+        return ExitCode::from(1);
+    }
+    if let Some(edits) = edits {
+        let mut editor = PlantEditor::new(std::mem::take(&mut build.plant));
+        print_edit_report(args, &editor.apply_edits(&edits));
+        build.plant = editor.into_plant();
+    }
+    if args.verb == "derive" {
+        println!("{}", derived_output(args, &build));
+    }
+    ExitCode::SUCCESS
+}
+
+/// What `derive` prints: the growth report, the stats, or the derived string.
+pub fn derived_output(args: &Args, build: &Build) -> String {
+    if args.growth {
+        // One report per step; `[]` when the grammar sets no growth attribute.
+        build
+            .growth
+            .as_ref()
+            .map_or("[]".into(), |g| g.steps_json())
+    } else if args.stats {
+        build.plant.stats.to_json()
+    } else {
+        build.derived_text()
+    }
+}
+
+/// `meristem export`: the files of the format at `output` (and beside it).
+pub fn export_file(
+    args: &Args,
+    source: &str,
+    build: BuildOptions,
+    edits: Option<Vec<BranchEdit>>,
+    target: ExportTarget,
+    hooks: &mut Hooks,
+) -> ExitCode {
+    let ExportTarget {
+        output,
+        format,
+        look,
+    } = target;
+    // The stem names the MTL file inside the OBJ, so it is the output's own stem.
+    let stem = output
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_else(|| "plant".into());
+    let options = ExportOptions {
+        build,
+        format,
+        stem,
+        edits,
+        look,
+    };
+    let exported = match pipeline::export(source, &options, hooks) {
+        Ok(exported) => exported,
+        Err(ExportError::Grammar(build)) => {
+            print_timings(args, build.timings);
+            print_diagnostics(&args.file, &build.located_diagnostics(source));
+            return ExitCode::from(1);
+        }
+    };
+    print_timings(args, exported.timings);
+    print_diagnostics(&args.file, &locate_all(source, &exported.diagnostics));
+    if let Some(report) = &exported.edits {
+        print_edit_report(args, report);
+    }
+    match write_export(&output, &exported.files) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("meristem: {e}");
+            ExitCode::from(2)
+        }
+    }
+}

@@ -1,0 +1,117 @@
+//! `meristem`, the command-line tool: the same core as the studio, for scripts, tests and CI.
+//!
+//! ```text
+//! meristem derive FILE [--iterations N] [--seed S] [--stats | --growth] [--time] [--edits EDITS.json]
+//!                                                   the derived string, or stats as JSON;
+//!                                                   --time: each stage's time on stderr
+//! meristem derive FILE --growth                     what the growth attributes did, step by step (JSON)
+//! meristem check FILE                               diagnostics as FILE:LINE:COL: severity: message
+//! meristem export FILE -o OUT.EXT [--format EXT] [--iterations N] [--seed S] [--sides N] [--smooth-all]
+//!                 [--edits EDITS.json]              the model as OUT.wrl, .glb, .pov, .obj (+ .mtl), .iv or .svg
+//!                 [--background C] [--line-width PX] [--size WxH] [--dpi D]
+//!                                                   an SVG's picture settings (the studio's)
+//! meristem import FILE [--from D] [-o OUT.lsys]      another dialect translated; notes on stderr
+//!                                                   (FILE may be a vlab object's folder or .zip)
+//! meristem help [modules|directives]                the language's modules or directives, from
+//!                                                   the vocabulary the core reads
+//! ```
+//!
+//! `--edits` applies branch edits (the studio's edits document, docs/LANGUAGE.md) to the plant
+//! before its stats or its export; an edit whose branch no longer exists is a warning.
+//!
+//! The files: `args` (the flags read, and where `export` writes), `input` (the grammar and edits
+//! files read), `build` (`derive`, `check` and `export`), `import` and `help`; this one wires them.
+
+mod args;
+mod build;
+mod help;
+mod import;
+mod input;
+
+use args::{export_target, parse_args};
+use build::{derive_or_check, export_file};
+use help::help;
+use import::{import_file, import_object, is_object};
+use input::{read_edits, read_source};
+use meristem::mesh::MeshOptions;
+use meristem::pipeline::Hooks;
+use meristem::BuildOptions;
+use std::process::ExitCode;
+
+pub const USAGE: &str = "usage:
+  meristem derive FILE [--iterations N] [--seed S] [--stats | --growth] [--time] [--edits EDITS.json]
+  meristem check FILE
+  meristem export FILE -o OUT.EXT [--format EXT] [--iterations N] [--seed S] [--sides N] [--smooth-all]
+                  [--edits EDITS.json] [--background C] [--line-width PX] [--size WxH] [--dpi D]
+      EXT: wrl (VRML 2.0), glb (glTF 2.0), pov (POV-Ray 3.7), obj (OBJ, writes OUT.mtl too),
+           iv (OpenInventor 2.1), svg (SVG); --format overrides the extension
+      --sides N (3 to 64, default 6) and --smooth-all are the studio's view options
+      --edits EDITS.json: branch edits made in the studio (its edits document), applied first
+      SVG only, the studio's picture settings:
+      --background white, none (the default: transparent) or a hex colour ('#' and six digits), --line-width PX (0.5 to 60:
+      every line this wide in the picture's pixels, the Lines mode), --size WxH (16 to 8192
+      pixels), --dpi D (10 to 2400: width and height in millimetres, e.g. 1748x2480 at 300 is A5)
+  meristem import FILE [--from green|lparser|cpfg|lpy] [-o OUT.lsys]
+      FILE may be a vlab object's folder or .zip: its .l with its view file, functions and colours
+  meristem help [modules|directives]     the language's modules and directives
+  meristem --version";
+
+fn main() -> ExitCode {
+    let args = match parse_args() {
+        Ok(args) => args,
+        Err(e) => {
+            eprintln!("meristem: {e}\n{USAGE}");
+            return ExitCode::from(2);
+        }
+    };
+    if args.verb == "help" {
+        return help(&args.file);
+    }
+    if !["derive", "check", "export", "import"].contains(&args.verb.as_str()) {
+        eprintln!("meristem: unknown verb '{}'\n{USAGE}", args.verb);
+        return ExitCode::from(2);
+    }
+    let export_target = if args.verb == "export" {
+        match export_target(&args) {
+            Ok(target) => Some(target),
+            Err(e) => {
+                eprintln!("meristem: {e}\n{USAGE}");
+                return ExitCode::from(2);
+            }
+        }
+    } else {
+        None
+    };
+    if args.verb == "import" && is_object(&args.file) {
+        return import_object(&args);
+    }
+    let source = match read_source(&args) {
+        Ok(source) => source,
+        Err(code) => return code,
+    };
+    if args.verb == "import" {
+        return import_file(&args, &source);
+    }
+    // The edits document is read (and checked) before building, so a bad one fails fast.
+    let edits = match read_edits(&args) {
+        Ok(edits) => edits,
+        Err(code) => return code,
+    };
+    // The core reads no clock; this binary lends it one.
+    let start = std::time::Instant::now();
+    let mut clock = || start.elapsed().as_secs_f64() * 1000.0;
+    let mut hooks = Hooks {
+        clock: Some(&mut clock),
+        progress: None,
+    };
+    let options = BuildOptions {
+        iterations: args.iterations,
+        seed: args.seed,
+        mesh: MeshOptions::view(args.sides, Some(args.smooth_all)),
+        sketch: false,
+    };
+    match export_target {
+        Some(target) => export_file(&args, &source, options, edits, target, &mut hooks),
+        None => derive_or_check(&args, &source, &options, edits, &mut hooks),
+    }
+}
