@@ -2,19 +2,18 @@
 // one for flat plants, an optional ground grid; renders on demand. It composes the parts, each in
 // a file of its own: the renderer and its frames (./view-renderer.ts), the cameras
 // (./camera-rig.ts), the plant on screen (./shown-plant.ts) and on its way to the GPU
-// (./plant-upload.ts), its materials (./plant-materials.ts), the grid (./ground-grid.ts), picking
-// (./view-picking.ts), pictures (./snapshot.ts), and what is drawn in 2D over the view where a
-// software rasterizer draws it (./view-2d.ts).
+// (./plant-upload.ts), its materials (./plant-materials.ts), highlighted modules
+// (./module-overlay.ts), the grid (./ground-grid.ts), picking (./view-picking.ts), pictures
+// (./snapshot.ts), what is drawn in 2D over the view where a software rasterizer draws it
+// (./view-2d.ts), and whether new plants are framed (./frame-following.ts).
 import {
   Box3,
   BufferAttribute,
   BufferGeometry,
   Color,
-  DoubleSide,
   Group,
   LineSegments,
   Mesh,
-  MeshStandardMaterial,
   Scene,
   Vector3,
   type Camera,
@@ -23,15 +22,17 @@ import {
 import type { Bounds, GpuArrays, MeshBuffers } from '../core';
 import { CameraRig, type Projection, type ViewPose } from './camera-rig';
 import { loadOrbitControls } from './camera-controls';
+import { FrameFollowing } from './frame-following';
 import { GroundGrid } from './ground-grid';
 import { BezierHandles } from './handles';
-import { highlightOverlay, highlightSegments, type Rgb } from './highlight';
+import { highlightSegments, type Rgb } from './highlight';
 import { scenePalette } from './palette';
 import { PlantMaterials } from './plant-materials';
 import { PlantUpload, type IncomingPlant } from './plant-upload';
-import { addSkyLight, atLeastAPixelWide } from './scene-setup';
+import { addSkyLight } from './scene-setup';
 import { DEFAULT_LINE_WIDTH, SegmentLines } from './segment-lines';
 import { ShownPlant } from './shown-plant';
+import { ModuleOverlay } from './module-overlay';
 import { maxPictureSide, snapshot, type PictureLook } from './snapshot';
 import { View2D } from './view-2d';
 import { FrameLoop, viewRenderer } from './view-renderer';
@@ -69,20 +70,7 @@ export class PlantView {
   private readonly upload: PlantUpload;
   private readonly grid = new GroundGrid(this.scene);
   /** Highlighted modules, drawn over the plant (which is dimmed meanwhile). */
-  private readonly overlay = new Mesh(
-    new BufferGeometry(),
-    atLeastAPixelWide(
-      new MeshStandardMaterial({
-        vertexColors: true,
-        side: DoubleSide,
-        roughness: 0.7,
-        metalness: 0,
-        polygonOffset: true,
-        polygonOffsetFactor: -1,
-        polygonOffsetUnits: -1,
-      }),
-    ),
-  );
+  private readonly overlay = new ModuleOverlay();
   /** The selected branch's Bézier handles (branch editing). */
   private readonly handles = new BezierHandles();
   private readonly cameras: CameraRig;
@@ -102,12 +90,7 @@ export class PlantView {
    */
   private colourOf: ((module: number) => Rgb | null) | null = null;
   private mode: ProjectionMode = 'auto';
-  /** Frame the next plant shown, even if the camera was moved (a new grammar was opened). */
-  private frameNext = false;
-  /** Who holds the frame now (e.g. `editing`, `play`): while anyone does, new plants keep it. */
-  private readonly holders = new Set<string>();
-  private refitHinted = false;
-  private readonly refitListeners = new Set<(shown: boolean) => void>();
+  private readonly following = new FrameFollowing();
   /** The container's size changed since the drawing buffer was sized ({@link resize} is due). */
   private sizeStale = false;
   private readonly darkScheme = window.matchMedia(DARK_SCHEME);
@@ -163,7 +146,7 @@ export class PlantView {
       (Controls) => this.cameras.attach(Controls),
       (error: unknown) => console.error('The camera controls could not load:', error),
     );
-    this.scene.add(this.cameras.camera, this.shown.drawn, this.shown.lines, this.segmentLines.group, this.overlay, this.handles.group);
+    this.scene.add(this.cameras.camera, this.shown.drawn, this.shown.lines, this.segmentLines.group, this.overlay.drawn, this.handles.group);
     this.container.dataset.projection = 'perspective';
 
     this.applyPalette();
@@ -307,8 +290,8 @@ export class PlantView {
     this.colourModules(this.colourOf); // what was asked for while it uploaded, if anything
     // A mesh without tubes (the Lines mode's) may hold no triangle: its segments are drawn.
     const hasGeometry = mesh.indices.length > 0 || asLines || (mesh.segmentEnds.length > 0 && this.usesLines);
-    if (hasGeometry && this.frameNext) {
-      this.frameNext = false;
+    if (hasGeometry && this.following.frameNext) {
+      this.following.frameNext = false;
       this.cameras.unframe();
     }
     this.useProjection(this.wantedProjection(), hasGeometry);
@@ -322,9 +305,9 @@ export class PlantView {
   /** Frames the new plant on screen, or keeps the camera (and hints at a refit if the user moved it). */
   private follow(): void {
     if (!this.cameras.framed) this.frame();
-    else if (this.holders.size > 0) return;
+    else if (this.following.held) return;
     else if (!this.cameras.moved) this.frame();
-    else this.hintRefit(true);
+    else this.following.hintRefit(true);
   }
 
   /**
@@ -332,8 +315,7 @@ export class PlantView {
    * camera where it is and no refit is hinted.
    */
   holdFrame(holder: string, on: boolean): void {
-    if (on) this.holders.add(holder);
-    else this.holders.delete(holder);
+    this.following.hold(holder, on);
   }
 
   /** Follows the plant again from the next one, as if the user had not moved the camera. */
@@ -346,14 +328,7 @@ export class PlantView {
    * camera (a "Refit" hint is due), and with `false` once the view is framed again.
    */
   onRefitHint(listener: (shown: boolean) => void): () => void {
-    this.refitListeners.add(listener);
-    return () => this.refitListeners.delete(listener);
-  }
-
-  private hintRefit(shown: boolean): void {
-    if (shown === this.refitHinted) return;
-    this.refitHinted = shown;
-    for (const listener of this.refitListeners) listener(shown);
+    return this.following.onRefitHint(listener);
   }
 
   /**
@@ -365,25 +340,13 @@ export class PlantView {
     // The modules are then the incoming plant's: they are painted when it is on screen.
     if (this.upload.pending) return;
     const mesh = this.shown.mesh;
-    const old = this.overlay.geometry;
-    this.overlay.geometry = new BufferGeometry();
-    old.dispose();
-    let dim = 1;
     const lines = this.usesLines;
     const highlight = { over: mesh && colourOf && lines ? highlightSegments(mesh, colourOf) : null, dim: mesh && colourOf ? 0.55 : 1 };
     this.view2D?.highlight(highlight);
     this.segmentLines.highlight(highlight.over, highlight.dim);
     this.placeLines();
-    if (mesh && colourOf) {
-      const overlay = highlightOverlay(mesh, colourOf, !lines, this.shown.normalsOnGpu ?? mesh.normals);
-      const geometry = this.overlay.geometry;
-      geometry.setAttribute('position', new BufferAttribute(overlay.positions, 3));
-      geometry.setAttribute('normal', new BufferAttribute(overlay.normals, 3));
-      geometry.setAttribute('color', new BufferAttribute(overlay.colors, 3));
-      geometry.computeBoundingSphere();
-      dim = 0.55; // dim the rest
-    }
-    this.materials.dim(dim);
+    this.overlay.show(mesh, colourOf, !lines, this.shown.normalsOnGpu);
+    this.materials.dim(highlight.dim); // the rest dimmed while some modules are highlighted
     this.requestRender();
   }
 
@@ -464,7 +427,7 @@ export class PlantView {
 
   /** Frames the camera on the next plant shown (e.g. after another example was opened). */
   frameNextPlant(): void {
-    this.frameNext = true;
+    this.following.frameNext = true;
   }
 
   /** Chooses the projection: `auto` (2D for flat plants) or a fixed one. */
@@ -500,7 +463,7 @@ export class PlantView {
   frame(bounds?: Bounds): void {
     const box = bounds ? new Box3(new Vector3(...bounds[0]), new Vector3(...bounds[1])) : this.visibleBox();
     this.cameras.frame(box);
-    this.hintRefit(false);
+    this.following.hintRefit(false);
     this.placeGrid(box);
     this.requestRender();
   }
@@ -650,8 +613,7 @@ export class PlantView {
     this.shown.disposeOnGpu();
     this.upload.buffers.clear();
     this.shown.dispose();
-    this.overlay.geometry.dispose();
-    this.overlay.material.dispose();
+    this.overlay.dispose();
     this.segmentLines.dispose();
     this.materials.dispose();
     this.grid.dispose();
