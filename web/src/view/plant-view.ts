@@ -6,19 +6,7 @@
 // (./module-overlay.ts), the grid (./ground-grid.ts), picking (./view-picking.ts), pictures
 // (./snapshot.ts), what is drawn in 2D over the view where a software rasterizer draws it
 // (./view-2d.ts), and whether new plants are framed (./frame-following.ts).
-import {
-  Box3,
-  BufferAttribute,
-  BufferGeometry,
-  Color,
-  Group,
-  LineSegments,
-  Mesh,
-  Scene,
-  Vector3,
-  type Camera,
-  type WebGLRenderer,
-} from 'three';
+import { Box3, Color, Scene, Vector3, type Camera, type WebGLRenderer } from 'three';
 import type { Bounds, GpuArrays, MeshBuffers } from '../core';
 import { CameraRig, type Projection, type ViewPose } from './camera-rig';
 import { loadOrbitControls } from './camera-controls';
@@ -35,7 +23,7 @@ import { ShownPlant } from './shown-plant';
 import { ModuleOverlay } from './module-overlay';
 import { maxPictureSide, snapshot, type PictureLook } from './snapshot';
 import { View2D } from './view-2d';
-import { FrameLoop, viewRenderer } from './view-renderer';
+import { FrameLoop, compileAhead, viewRenderer } from './view-renderer';
 import { ViewPicking } from './view-picking';
 
 const DARK_SCHEME = '(prefers-color-scheme: dark)';
@@ -177,21 +165,8 @@ export class PlantView {
    * last frame on SwiftShader, traced). Settles when they are ready to draw with.
    */
   compileShaders(): Promise<unknown> {
-    // Stand-ins with the attributes a plant's geometries have: three.js keys a program by them too.
-    const triangle = (...names: string[]) => {
-      const geometry = new BufferGeometry();
-      for (const name of names) geometry.setAttribute(name, new BufferAttribute(new Float32Array(9), 3));
-      return geometry;
-    };
-    const standIns = new Group();
-    const mesh = triangle('position', 'normal', 'color');
-    for (const material of this.materials.all) standIns.add(new Mesh(mesh, material));
-    const lines = triangle('position', 'color');
-    standIns.add(new LineSegments(lines, this.shown.lines.material), new LineSegments(lines, this.grid.material));
-    // And the scene's own objects as they are now: the first plant's frame still draws some of them
-    // without attributes (the sketch's lines when there is no sketch), which takes other programs.
-    const camera = this.cameras.camera;
-    return Promise.all([this.renderer.compileAsync(standIns, camera, this.scene), this.renderer.compileAsync(this.scene, camera)]);
+    const materials = { meshes: this.materials.all, lines: [this.shown.lines.material, this.grid.material] };
+    return compileAhead(this.renderer, this.scene, this.cameras.camera, materials);
   }
 
   /** The projection in use. */

@@ -18,7 +18,7 @@ export class ShownPlant {
    */
   readonly pickable: Mesh<BufferGeometry, Material | Material[]>;
   /** The fallback for models too large to mesh, and sketches: one coloured line per segment. */
-  readonly lines = new LineSegments(new BufferGeometry(), new LineBasicMaterial({ vertexColors: true }));
+  readonly lines: LineSegments<BufferGeometry, LineBasicMaterial>;
   /** The mesh on screen (its own colours and provenance ranges), for highlighting and picking; none for lines. */
   mesh: MeshBuffers | undefined;
   /** The plant on screen lies in the plane z = 0. */
@@ -30,6 +30,7 @@ export class ShownPlant {
   constructor(material: Material) {
     this.drawn = new Mesh<BufferGeometry, Material | Material[]>(new BufferGeometry(), material);
     this.pickable = new Mesh<BufferGeometry, Material | Material[]>(new BufferGeometry(), material);
+    this.lines = new LineSegments(new BufferGeometry(), new LineBasicMaterial({ vertexColors: true }));
   }
 
   /** Draws the plant (and picks in it) with `material` (one, or one per material group). */

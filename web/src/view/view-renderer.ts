@@ -1,6 +1,6 @@
 // The view's WebGL renderer (multisampled where a GPU draws) and its frames: drawn on demand, at an
 // animation frame, once the GPU has finished the frame before.
-import { WebGLRenderer } from 'three';
+import { BufferAttribute, BufferGeometry, Group, LineSegments, Mesh, WebGLRenderer, type Camera, type Material, type Scene } from 'three';
 import { drawnBySoftware } from './rasterizer';
 
 /**
@@ -23,6 +23,28 @@ export function viewRenderer(): { renderer: WebGLRenderer; software: boolean } {
   renderer.dispose();
   renderer.forceContextLoss();
   return { renderer: new WebGLRenderer({ ...options, antialias: false }), software: true };
+}
+
+/**
+ * Compiles the programs of `materials` without drawing: `meshes`' for a plant's triangles,
+ * `lines`' for its lines, and those of `scene` as it is now, with `renderer`, as `camera` sees
+ * them. Settles when they are ready to draw with.
+ */
+export function compileAhead(renderer: WebGLRenderer, scene: Scene, camera: Camera, materials: { meshes: Material[]; lines: Material[] }): Promise<unknown> {
+  // Stand-ins with the attributes a plant's geometries have: three.js keys a program by them too.
+  const triangle = (...names: string[]) => {
+    const geometry = new BufferGeometry();
+    for (const name of names) geometry.setAttribute(name, new BufferAttribute(new Float32Array(9), 3));
+    return geometry;
+  };
+  const standIns = new Group();
+  const mesh = triangle('position', 'normal', 'color');
+  for (const material of materials.meshes) standIns.add(new Mesh(mesh, material));
+  const lines = triangle('position', 'color');
+  for (const material of materials.lines) standIns.add(new LineSegments(lines, material));
+  // And the scene's own objects as they are now: the first plant's frame still draws some of them
+  // without attributes (the sketch's lines when there is no sketch), which takes other programs.
+  return Promise.all([renderer.compileAsync(standIns, camera, scene), renderer.compileAsync(scene, camera)]);
 }
 
 /** What a frame of the view does, in order. */
