@@ -448,7 +448,7 @@ export class PlantView {
    * `look.background` white or transparent the picture has that background and no grid; the
    * lines are `look.lineWidth` of its pixels wide.
    */
-  snapshot(width: number, height: number, look: PictureLook = { background: 'view' }): Promise<Blob> {
+  async snapshot(width: number, height: number, look: PictureLook = { background: 'view' }): Promise<Blob> {
     this.upload.finish(); // the picture is of the plant last given
     const source = {
       renderer: this.renderer,
