@@ -1,6 +1,7 @@
 // The view's two cameras: an orbiting perspective one and a face-on orthographic one (for flat
 // plants, pan and zoom only), each with its controls and headlight; which is in use, framing one
-// on a box, its pose for a share link, and the keys that move it.
+// on a box, whether a new plant is framed (the holds on the frame, the "Refit" hint), its pose for
+// a share link, and the keys that move it.
 import { Box3, MathUtils, OrthographicCamera, PerspectiveCamera, Spherical, Vector3, type Scene } from 'three';
 import type { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { CameraControls } from './camera-controls';
@@ -35,7 +36,7 @@ export interface CameraRigEvents {
 /**
  * The perspective and the orthographic camera of a view in `container` (whose size gives the
  * aspect), moved by the user on `canvas`. {@link moved} says whether the user orbited, panned or
- * zoomed since the last fit.
+ * zoomed since the last fit; {@link follows} whether a new plant is to be framed.
  */
 export class CameraRig {
   private readonly perspective: RiggedCamera<PerspectiveCamera>;
@@ -43,6 +44,12 @@ export class CameraRig {
   private active: RiggedCamera<PerspectiveCamera> | RiggedCamera<OrthographicCamera>;
   /** The user orbited, panned or zoomed since the last fit: new plants keep the camera. */
   moved = false;
+  /** Frame the next plant shown, even if the camera was moved (a new grammar was opened). */
+  frameNext = false;
+  /** Who holds the frame now (e.g. `editing`, `play`): while anyone does, new plants keep it. */
+  private readonly holders = new Set<string>();
+  private refitHinted = false;
+  private readonly refitListeners = new Set<(shown: boolean) => void>();
 
   constructor(
     private readonly container: HTMLElement,
@@ -86,10 +93,43 @@ export class CameraRig {
     return this.active.framed;
   }
 
-  /** Both cameras are to be framed on the next plant, even if the user moved them. */
-  unframe(): void {
+  /** A plant came: if {@link frameNext} asked for it, both cameras are to be framed on it, moved or not. */
+  frameNextIfAsked(): void {
+    if (!this.frameNext) return;
+    this.frameNext = false;
     this.perspective.framed = false;
     this.orthographic.framed = false;
+  }
+
+  /**
+   * Whether a new plant is to be framed: always by a camera not framed yet; else not while the
+   * frame is held, nor once the user moved the camera (then a refit is hinted).
+   */
+  follows(): boolean {
+    if (!this.active.framed) return true;
+    else if (this.holders.size > 0) return false;
+    else if (!this.moved) return true;
+    this.hintRefit(true);
+    return false;
+  }
+
+  /** Holds the frame for `holder` (`on`) or lets it go. */
+  hold(holder: string, on: boolean): void {
+    if (on) this.holders.add(holder);
+    else this.holders.delete(holder);
+  }
+
+  /** Calls `listener` when the refit hint shows (`true`) or goes (`false`); returns the function that stops it. */
+  onRefitHint(listener: (shown: boolean) => void): () => void {
+    this.refitListeners.add(listener);
+    return () => this.refitListeners.delete(listener);
+  }
+
+  /** Shows the hint or takes it away (its listeners hear of a change only). */
+  private hintRefit(shown: boolean): void {
+    if (shown === this.refitHinted) return;
+    this.refitHinted = shown;
+    for (const listener of this.refitListeners) listener(shown);
   }
 
   /**
@@ -132,7 +172,7 @@ export class CameraRig {
     this.fitOrthographic();
   }
 
-  /** Points the camera in use at the whole of `box`, and follows the plant again. */
+  /** Points the camera in use at the whole of `box`, and follows the plant again (no refit hint). */
   frame(box: Box3): void {
     if (this.active === this.orthographic) {
       const { camera, controls } = this.orthographic;
@@ -159,6 +199,7 @@ export class CameraRig {
     }
     if (!box.isEmpty()) this.active.framed = true;
     this.moved = false;
+    this.hintRefit(false);
   }
 
   /**

@@ -53,20 +53,14 @@ export class GroundGrid {
     this.grid = undefined;
   }
 
-  /** Shows or hides the grid (now and for the next plants). */
+  /** Whether the grid is shown (now and for the next plants). */
+  get visible(): boolean {
+    return this.shown;
+  }
+
   set visible(visible: boolean) {
     this.shown = visible;
     if (this.grid) this.grid.visible = visible;
-  }
-
-  /** Hides the grid for a picture (until {@link afterPicture}). */
-  hideForPicture(): void {
-    if (this.grid) this.grid.visible = false;
-  }
-
-  /** Shows the grid again as chosen, after a picture. */
-  afterPicture(): void {
-    if (this.grid) this.grid.visible = this.shown;
   }
 
   dispose(): void {

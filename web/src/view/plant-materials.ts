@@ -4,14 +4,6 @@ import { MeshBasicMaterial, type Material } from 'three';
 import { litPlantMaterial, unlitPlantMaterial } from './scene-setup';
 import { loadTexture, texturedMaterials, type TexturedMaterials } from './textures';
 
-/** What the materials tell the view about their images. */
-export interface TextureEvents {
-  /** An image arrived (the plant may now be drawn textured). */
-  loaded(): void;
-  /** An image did not load. */
-  failed(message: string): void;
-}
-
 /** The plant's materials and the choice between them. */
 export class PlantMaterials {
   readonly lit = litPlantMaterial();
@@ -31,17 +23,19 @@ export class PlantMaterials {
 
   /**
    * Makes the textured materials (once, before any other use): their images load from
-   * `assetBase` (the site's root; default: the page's address) once `after` settles.
+   * `assetBase` (the site's root; default: the page's address) once `after` settles; `loaded`
+   * hears of each image that arrived (the plant may now be drawn textured), `failed` of one that
+   * did not load.
    */
-  loadTextures(assetBase: string | undefined, after: Promise<void>, events: TextureEvents): void {
+  loadTextures(assetBase: string | undefined, after: Promise<void>, loaded: () => void, failed: (message: string) => void): void {
     const texture = (name: 'bark' | 'leaf') =>
       loadTexture(
         name,
         () => {
           this.texturesLoaded++;
-          events.loaded();
+          loaded();
         },
-        (message) => events.failed(message),
+        failed,
         assetBase,
         after,
       );

@@ -5,25 +5,24 @@
 // (./plant-upload.ts), its materials (./plant-materials.ts), highlighted modules
 // (./module-overlay.ts), the grid (./ground-grid.ts), picking (./view-picking.ts), pictures
 // (./snapshot.ts), what is drawn in 2D over the view where a software rasterizer draws it
-// (./view-2d.ts), and whether new plants are framed (./frame-following.ts).
+// (./view-2d.ts).
 import { Box3, Color, Scene, Vector3, type Camera, type WebGLRenderer } from 'three';
 import type { Bounds, GpuArrays, MeshBuffers } from '../core';
 import { CameraRig, type Projection, type ViewPose } from './camera-rig';
 import { loadOrbitControls } from './camera-controls';
-import { FrameFollowing } from './frame-following';
 import { GroundGrid } from './ground-grid';
 import { BezierHandles } from './handles';
 import { highlightSegments, type Rgb } from './highlight';
 import { scenePalette } from './palette';
 import { PlantMaterials } from './plant-materials';
 import { PlantUpload, type IncomingPlant } from './plant-upload';
-import { addSkyLight } from './scene-setup';
+import { addSkyLight, drawnSupersampled } from './scene-setup';
 import { DEFAULT_LINE_WIDTH, SegmentLines } from './segment-lines';
 import { ShownPlant } from './shown-plant';
 import { ModuleOverlay } from './module-overlay';
-import { maxPictureSide, snapshot, type PictureLook } from './snapshot';
+import type { PictureLook } from './snapshot';
 import { View2D } from './view-2d';
-import { FrameLoop, compileAhead, viewRenderer } from './view-renderer';
+import { FrameLoop, compileAhead, maxPictureSide, viewRenderer } from './view-renderer';
 import { ViewPicking } from './view-picking';
 
 const DARK_SCHEME = '(prefers-color-scheme: dark)';
@@ -78,7 +77,6 @@ export class PlantView {
    */
   private colourOf: ((module: number) => Rgb | null) | null = null;
   private mode: ProjectionMode = 'auto';
-  private readonly following = new FrameFollowing();
   /** The container's size changed since the drawing buffer was sized ({@link resize} is due). */
   private sizeStale = false;
   private readonly darkScheme = window.matchMedia(DARK_SCHEME);
@@ -87,6 +85,8 @@ export class PlantView {
   private plantShown = false;
   /** Settles when the OrbitControls are attached (see {@link controlsReady}). */
   private readonly controlsLoaded: Promise<void>;
+  /** The pictures' code (./snapshot.ts), once asked for (see {@link pictures}). */
+  private picturesLoaded: Promise<typeof import('./snapshot')> | undefined;
 
   /** `assetBase`: the site's root, where the textures are (default: the page's address). */
   constructor(
@@ -111,10 +111,12 @@ export class PlantView {
         resolve();
       });
     });
-    this.materials.loadTextures(assetBase, plantDrawn, {
-      loaded: () => this.applyMaterial(),
-      failed: (message) => this.texturesFailed(message),
-    });
+    this.materials.loadTextures(
+      assetBase,
+      plantDrawn,
+      () => this.applyMaterial(),
+      (message) => this.texturesFailed(message),
+    );
     this.upload = new PlantUpload(renderer.getContext() as WebGL2RenderingContext, () => this.frames.gpuIdle(), (plant) => this.swapIn(plant));
     this.segmentLines = new SegmentLines(this.renderer.capabilities.maxTextureSize);
     this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
@@ -134,6 +136,7 @@ export class PlantView {
       (Controls) => this.cameras.attach(Controls),
       (error: unknown) => console.error('The camera controls could not load:', error),
     );
+    void plantDrawn.then(() => this.pictures()).catch(() => (this.picturesLoaded = undefined)); // (tried again by a picture)
     this.scene.add(this.cameras.camera, this.shown.drawn, this.shown.lines, this.segmentLines.group, this.overlay.drawn, this.handles.group);
     this.container.dataset.projection = 'perspective';
 
@@ -165,8 +168,7 @@ export class PlantView {
    * last frame on SwiftShader, traced). Settles when they are ready to draw with.
    */
   compileShaders(): Promise<unknown> {
-    const materials = { meshes: this.materials.all, lines: [this.shown.lines.material, this.grid.material] };
-    return compileAhead(this.renderer, this.scene, this.cameras.camera, materials);
+    return compileAhead(this.renderer, this.scene, this.cameras.camera, this.materials.all, [this.shown.lines.material, this.grid.material]);
   }
 
   /** The projection in use. */
@@ -265,10 +267,7 @@ export class PlantView {
     this.colourModules(this.colourOf); // what was asked for while it uploaded, if anything
     // A mesh without tubes (the Lines mode's) may hold no triangle: its segments are drawn.
     const hasGeometry = mesh.indices.length > 0 || asLines || (mesh.segmentEnds.length > 0 && this.usesLines);
-    if (hasGeometry && this.following.frameNext) {
-      this.following.frameNext = false;
-      this.cameras.unframe();
-    }
+    if (hasGeometry) this.cameras.frameNextIfAsked();
     this.useProjection(this.wantedProjection(), hasGeometry);
     if (hasGeometry) this.follow();
     this.requestRender();
@@ -279,10 +278,7 @@ export class PlantView {
 
   /** Frames the new plant on screen, or keeps the camera (and hints at a refit if the user moved it). */
   private follow(): void {
-    if (!this.cameras.framed) this.frame();
-    else if (this.following.held) return;
-    else if (!this.cameras.moved) this.frame();
-    else this.following.hintRefit(true);
+    if (this.cameras.follows()) this.frame();
   }
 
   /**
@@ -290,7 +286,7 @@ export class PlantView {
    * camera where it is and no refit is hinted.
    */
   holdFrame(holder: string, on: boolean): void {
-    this.following.hold(holder, on);
+    this.cameras.hold(holder, on);
   }
 
   /** Follows the plant again from the next one, as if the user had not moved the camera. */
@@ -303,7 +299,7 @@ export class PlantView {
    * camera (a "Refit" hint is due), and with `false` once the view is framed again.
    */
   onRefitHint(listener: (shown: boolean) => void): () => void {
-    return this.following.onRefitHint(listener);
+    return this.cameras.onRefitHint(listener);
   }
 
   /**
@@ -359,7 +355,7 @@ export class PlantView {
 
   /** The draggable handle (1, 2, 3) at a point of the page, or null. */
   handleAt(clientX: number, clientY: number): 1 | 2 | 3 | null {
-    return this.picking.handle(clientX, clientY, this.handles);
+    return this.handles.hit(this.picking.aim(clientX, clientY));
   }
 
   /** Where a point of the page meets the plane through `through` facing the camera (a drag's target). */
@@ -402,7 +398,7 @@ export class PlantView {
 
   /** Frames the camera on the next plant shown (e.g. after another example was opened). */
   frameNextPlant(): void {
-    this.following.frameNext = true;
+    this.cameras.frameNext = true;
   }
 
   /** Chooses the projection: `auto` (2D for flat plants) or a fixed one. */
@@ -438,7 +434,6 @@ export class PlantView {
   frame(bounds?: Bounds): void {
     const box = bounds ? new Box3(new Vector3(...bounds[0]), new Vector3(...bounds[1])) : this.visibleBox();
     this.cameras.frame(box);
-    this.following.hintRefit(false);
     this.placeGrid(box);
     this.requestRender();
   }
@@ -450,36 +445,33 @@ export class PlantView {
    */
   async snapshot(width: number, height: number, look: PictureLook = { background: 'view' }): Promise<Blob> {
     this.upload.finish(); // the picture is of the plant last given
+    const { snapshot } = await this.pictures();
+    this.upload.finish(); // (given while the code loaded, if it was not there yet)
+    const { renderer, scene, shown, grid, segmentLines, view2D } = this;
+    const camera = this.cameras.camera;
     const source = {
-      renderer: this.renderer,
-      scene: this.scene,
-      camera: this.cameras.camera,
-      thinLines: this.shown.asThinLines,
-      dress: (look: PictureLook, scale: number) => this.dressForPicture(look, scale),
+      renderer,
+      scene,
+      camera,
+      shown,
+      grid,
+      segmentLines,
+      view2D,
+      white: new Color('#ffffff'),
+      maxSide: maxPictureSide(renderer),
+      draw: (scale: number) => drawnSupersampled(scale, () => renderer.render(scene, camera)),
       resize: () => this.resize(),
     };
     return snapshot(source, width, height, look);
   }
 
-  /** Sets the view up for a picture (see `PictureSource.dress`); returns what sets it back. */
-  private dressForPicture(look: PictureLook, scale: number): () => void {
-    const background = this.scene.background;
-    const lineWidth = this.segmentLines.lineWidth;
-    // What is drawn in 2D (a sketch, the Lines mode's segments of a big plant) is drawn into the picture.
-    this.shown.lines.visible = true;
-    this.segmentLines.drawn = true;
-    if (look.background !== 'view') {
-      this.scene.background = look.background === 'white' ? new Color('#ffffff') : null;
-      this.grid.hideForPicture();
-    }
-    this.segmentLines.lineWidth = (look.lineWidth ?? lineWidth) * scale;
-    return () => {
-      this.shown.lines.visible = !this.view2D?.active;
-      this.segmentLines.drawn = !this.view2D?.linesIn2D;
-      this.scene.background = background;
-      this.grid.afterPicture();
-      this.segmentLines.lineWidth = lineWidth;
-    };
+  /**
+   * The pictures' code: a chunk of its own, which no first plant needs (the first load's budget,
+   * tests/browser/first-load.test.ts), loaded after the first plant was drawn (as the camera
+   * controls are) or by the first picture.
+   */
+  private pictures(): Promise<typeof import('./snapshot')> {
+    return (this.picturesLoaded ??= import('./snapshot'));
   }
 
   /** The largest picture side the GPU can draw (its renderbuffer and viewport limits). */
@@ -585,9 +577,7 @@ export class PlantView {
     this.darkScheme.removeEventListener('change', this.applyPalette);
     this.cameras.dispose();
     this.upload.cancel();
-    this.shown.disposeOnGpu();
-    this.upload.buffers.clear();
-    this.shown.dispose();
+    this.shown.dispose(this.upload.buffers);
     this.overlay.dispose();
     this.segmentLines.dispose();
     this.materials.dispose();

@@ -2,7 +2,7 @@
 // and the coloured lines of a plant drawn as lines (a sketch, a model too large to mesh).
 import { Box3, BufferGeometry, LineBasicMaterial, LineSegments, Mesh, type Material } from 'three';
 import type { MeshBuffers } from '../core';
-import type { GpuGeometry } from './gpu-geometry';
+import type { BufferPool, GpuGeometry } from './gpu-geometry';
 import { plantGeometry, pointsBox, setBox } from './plant-geometry';
 import type { IncomingPlant, PlantUpload } from './plant-upload';
 
@@ -37,10 +37,6 @@ export class ShownPlant {
   set material(material: Material | Material[]) {
     this.drawn.material = material;
     this.pickable.material = material;
-  }
-
-  get material(): Material | Material[] {
-    return this.drawn.material;
   }
 
   /** Puts a plant (its geometry on the GPU, or its lines) in place of the old one, and disposes the old one's. */
@@ -113,12 +109,10 @@ export class ShownPlant {
     this.drawn.geometry = this.onGpu.geometry;
   }
 
-  /** Gives the GPU's buffers back (to the pool, cleared after). */
-  disposeOnGpu(): void {
+  /** Gives the GPU's buffers back to `buffers` and clears it (the view is disposed), and disposes the rest. */
+  dispose(buffers: BufferPool): void {
     this.onGpu?.dispose();
-  }
-
-  dispose(): void {
+    buffers.clear();
     this.drawn.geometry.dispose();
     this.pickable.geometry.dispose();
     this.lines.geometry.dispose();

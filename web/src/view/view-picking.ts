@@ -1,7 +1,6 @@
 // Points of the page and the scene: what is drawn at a point (a module, a triangle, a handle),
 // where a drag goes, and where a model point is on the page.
 import { Plane, Raycaster, Vector2, Vector3, type Camera } from 'three';
-import type { BezierHandles } from './handles';
 import { MATERIAL_BARK, moduleOfTriangle } from './highlight';
 import type { SegmentLines } from './segment-lines';
 import type { ShownPlant } from './shown-plant';
@@ -16,7 +15,7 @@ export class ViewPicking {
   ) {}
 
   /** The page point as normalised device coordinates of the canvas, set on the raycaster. */
-  private aim(clientX: number, clientY: number): Raycaster {
+  aim(clientX: number, clientY: number): Raycaster {
     const rect = this.canvas.getBoundingClientRect();
     const ndc = new Vector2(((clientX - rect.left) / rect.width) * 2 - 1, -((clientY - rect.top) / rect.height) * 2 + 1);
     this.raycaster.setFromCamera(ndc, this.camera());
@@ -45,11 +44,6 @@ export class ViewPicking {
     if (!plant.mesh) return null;
     const hit = this.aim(clientX, clientY).intersectObject(plant.pickable, false)[0];
     return hit && hit.faceIndex != null ? hit.faceIndex : null;
-  }
-
-  /** The draggable handle (1, 2, 3) at a point of the page, or null. */
-  handle(clientX: number, clientY: number, handles: BezierHandles): 1 | 2 | 3 | null {
-    return handles.hit(this.aim(clientX, clientY));
   }
 
   /** Where a point of the page meets the plane through `through` facing the camera (a drag's target). */

@@ -26,11 +26,11 @@ export function viewRenderer(): { renderer: WebGLRenderer; software: boolean } {
 }
 
 /**
- * Compiles the programs of `materials` without drawing: `meshes`' for a plant's triangles,
- * `lines`' for its lines, and those of `scene` as it is now, with `renderer`, as `camera` sees
+ * Compiles without drawing the programs of the materials `meshes` for a plant's triangles and
+ * `lines` for its lines, and those of `scene` as it is now, with `renderer`, as `camera` sees
  * them. Settles when they are ready to draw with.
  */
-export function compileAhead(renderer: WebGLRenderer, scene: Scene, camera: Camera, materials: { meshes: Material[]; lines: Material[] }): Promise<unknown> {
+export function compileAhead(renderer: WebGLRenderer, scene: Scene, camera: Camera, meshes: Material[], lines: Material[]): Promise<unknown> {
   // Stand-ins with the attributes a plant's geometries have: three.js keys a program by them too.
   const triangle = (...names: string[]) => {
     const geometry = new BufferGeometry();
@@ -39,12 +39,20 @@ export function compileAhead(renderer: WebGLRenderer, scene: Scene, camera: Came
   };
   const standIns = new Group();
   const mesh = triangle('position', 'normal', 'color');
-  for (const material of materials.meshes) standIns.add(new Mesh(mesh, material));
-  const lines = triangle('position', 'color');
-  for (const material of materials.lines) standIns.add(new LineSegments(lines, material));
+  for (const material of meshes) standIns.add(new Mesh(mesh, material));
+  const line = triangle('position', 'color');
+  for (const material of lines) standIns.add(new LineSegments(line, material));
   // And the scene's own objects as they are now: the first plant's frame still draws some of them
   // without attributes (the sketch's lines when there is no sketch), which takes other programs.
   return Promise.all([renderer.compileAsync(standIns, camera, scene), renderer.compileAsync(scene, camera)]);
+}
+
+/** The largest picture side the GPU can draw (its renderbuffer and viewport limits). */
+export function maxPictureSide(renderer: WebGLRenderer): number {
+  const gl = renderer.getContext();
+  const viewport = gl.getParameter(gl.MAX_VIEWPORT_DIMS) as Int32Array;
+  const renderbuffer = gl.getParameter(gl.MAX_RENDERBUFFER_SIZE) as number;
+  return Math.min(viewport[0], viewport[1], renderbuffer);
 }
 
 /** What a frame of the view does, in order. */
