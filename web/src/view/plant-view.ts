@@ -578,10 +578,7 @@ export class PlantView {
     this.cameras.dispose();
     this.upload.cancel();
     this.shown.dispose(this.upload.buffers);
-    this.overlay.dispose();
-    this.segmentLines.dispose();
-    this.materials.dispose();
-    this.grid.dispose();
+    for (const part of [this.overlay, this.segmentLines, this.materials, this.grid]) part.dispose();
     this.renderer.dispose();
     this.renderer.domElement.remove();
     this.view2D?.clear();
