@@ -136,7 +136,6 @@ export class PlantView {
       (Controls) => this.cameras.attach(Controls),
       (error: unknown) => console.error('The camera controls could not load:', error),
     );
-    void plantDrawn.then(() => this.pictures()).catch(() => (this.picturesLoaded = undefined)); // (tried again by a picture)
     this.scene.add(this.cameras.camera, this.shown.drawn, this.shown.lines, this.segmentLines.group, this.overlay.drawn, this.handles.group);
     this.container.dataset.projection = 'perspective';
 
@@ -446,7 +445,7 @@ export class PlantView {
   async snapshot(width: number, height: number, look: PictureLook = { background: 'view' }): Promise<Blob> {
     this.upload.finish(); // the picture is of the plant last given
     const { snapshot } = await this.pictures();
-    this.upload.finish(); // (given while the code loaded, if it was not there yet)
+    this.upload.finish(); // (given while the code loaded, the first time)
     const { renderer, scene, shown, grid, segmentLines, view2D } = this;
     const camera = this.cameras.camera;
     const source = {
@@ -467,8 +466,7 @@ export class PlantView {
 
   /**
    * The pictures' code: a chunk of its own, which no first plant needs (the first load's budget,
-   * tests/browser/first-load.test.ts), loaded after the first plant was drawn (as the camera
-   * controls are) or by the first picture.
+   * tests/browser/first-load.test.ts), loaded by the first picture.
    */
   private pictures(): Promise<typeof import('./snapshot')> {
     return (this.picturesLoaded ??= import('./snapshot'));

@@ -1,7 +1,7 @@
 // Pictures of the view: a PNG of what the camera sees, at a size of the user's, drawn for one frame
 // on the view's own canvas. A chunk of its own, which the first plant does without: the view loads
-// it after its first plant was drawn, or for the first picture. (It imports nothing at run time:
-// what it needs of the view's modules comes in its `PictureSource`.)
+// it for the first picture. (It imports nothing at run time: what it needs of the view's modules
+// comes in its `PictureSource`.)
 import type { Color, OrthographicCamera, PerspectiveCamera, Scene, WebGLRenderer } from 'three';
 import type { GroundGrid } from './ground-grid';
 import type { SegmentLines } from './segment-lines';
