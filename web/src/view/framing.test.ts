@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { Box3, OrthographicCamera, PerspectiveCamera, Vector3 } from 'three';
-import { flatPose, framePose } from './framing';
+import { flatPose, framePose, orthographicCameraOn, perspectiveCameraOn } from './framing';
 
 /** True when every corner of `box` projects inside the camera's view. */
 function cornersVisible(box: Box3, camera: PerspectiveCamera): boolean {
@@ -14,13 +14,7 @@ function cornersVisible(box: Box3, camera: PerspectiveCamera): boolean {
 }
 
 function cameraAt(box: Box3, aspect: number): PerspectiveCamera {
-  const camera = new PerspectiveCamera(40, aspect);
-  const pose = framePose(box, camera.fov, aspect);
-  camera.position.copy(pose.position);
-  camera.near = pose.near;
-  camera.far = pose.far;
-  camera.lookAt(pose.target);
-  camera.updateProjectionMatrix();
+  const camera = perspectiveCameraOn(box, aspect);
   camera.updateMatrixWorld();
   return camera;
 }
@@ -69,11 +63,7 @@ describe('framePose', () => {
 
 describe('flatPose', () => {
   function orthoAt(box: Box3, aspect: number): OrthographicCamera {
-    const pose = flatPose(box, aspect);
-    const camera = new OrthographicCamera(-pose.halfHeight * aspect, pose.halfHeight * aspect, pose.halfHeight, -pose.halfHeight, pose.near, pose.far);
-    camera.position.copy(pose.position);
-    camera.lookAt(pose.target);
-    camera.updateProjectionMatrix();
+    const camera = orthographicCameraOn(box, aspect);
     camera.updateMatrixWorld();
     return camera;
   }

@@ -1,5 +1,5 @@
 // Where to put the camera so a box fills the view.
-import { Box3, MathUtils, Vector3 } from 'three';
+import { Box3, MathUtils, OrthographicCamera, PerspectiveCamera, Vector3 } from 'three';
 
 /** A camera placement: eye position, point looked at, and clip planes that suit the distance. */
 export interface CameraPose {
@@ -73,4 +73,33 @@ export function flatPose(box: Box3, aspect: number): FlatPose {
     near: depth * 0.01,
     far: depth * 4,
   };
+}
+
+/**
+ * A perspective camera (40° vertical field of view) of aspect ratio `aspect` placed by
+ * {@link framePose} to show all of `box`, its projection up to date.
+ */
+export function perspectiveCameraOn(box: Box3, aspect: number): PerspectiveCamera {
+  const camera = new PerspectiveCamera(40, aspect);
+  const pose = framePose(box, camera.fov, aspect);
+  camera.position.copy(pose.position);
+  camera.near = pose.near;
+  camera.far = pose.far;
+  camera.lookAt(pose.target);
+  camera.updateProjectionMatrix();
+  return camera;
+}
+
+/**
+ * An orthographic camera of aspect ratio `aspect` placed by {@link flatPose} to show `box` face-on,
+ * its projection up to date.
+ */
+export function orthographicCameraOn(box: Box3, aspect: number): OrthographicCamera {
+  const pose = flatPose(box, aspect);
+  const h = pose.halfHeight;
+  const camera = new OrthographicCamera(-h * aspect, h * aspect, h, -h, pose.near, pose.far);
+  camera.position.copy(pose.position);
+  camera.lookAt(pose.target);
+  camera.updateProjectionMatrix();
+  return camera;
 }

@@ -2,9 +2,9 @@
 // and framing; flat plants face-on) on a transparent background, so they suit light and dark.
 // It runs where a canvas is: in the thumbnail worker on an OffscreenCanvas (the page never waits
 // for a big plant to be drawn), or on a page's canvas.
-import { LineBasicMaterial, LineSegments, Mesh, OrthographicCamera, PerspectiveCamera, Scene, WebGLRenderer } from 'three';
+import { LineBasicMaterial, LineSegments, Mesh, Scene, WebGLRenderer } from 'three';
 import type { MeshBuffers } from '../core';
-import { flatPose, framePose } from './framing';
+import { orthographicCameraOn, perspectiveCameraOn } from './framing';
 import { plantGeometry } from './plant-geometry';
 import { addHeadlight, addSkyLight, litPlantMaterial } from './scene-setup';
 
@@ -35,23 +35,7 @@ export class ThumbnailRenderer {
     scene.add(asLines ? new LineSegments(geometry, this.lineMaterial) : new Mesh(geometry, this.material));
     const box = geometry.boundingBox!;
     const aspect = this.width / this.height;
-    let camera: PerspectiveCamera | OrthographicCamera;
-    if (flat) {
-      const pose = flatPose(box, aspect);
-      const h = pose.halfHeight;
-      camera = new OrthographicCamera(-h * aspect, h * aspect, h, -h, pose.near, pose.far);
-      camera.position.copy(pose.position);
-      camera.lookAt(pose.target);
-    } else {
-      const perspective = new PerspectiveCamera(40, aspect);
-      const pose = framePose(box, perspective.fov, aspect);
-      perspective.position.copy(pose.position);
-      perspective.near = pose.near;
-      perspective.far = pose.far;
-      perspective.lookAt(pose.target);
-      camera = perspective;
-    }
-    camera.updateProjectionMatrix();
+    const camera = flat ? orthographicCameraOn(box, aspect) : perspectiveCameraOn(box, aspect);
     addHeadlight(camera);
     scene.add(camera);
     this.renderer.render(scene, camera);
