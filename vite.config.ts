@@ -16,7 +16,7 @@ import { defineConfig } from 'vitest/config';
 import { galleryManifestPlugin } from './scripts/gallery-plugin.ts';
 import { lessonsPlugin } from './scripts/lessons-plugin.ts';
 import { referencePlugin } from './scripts/reference-plugin.ts';
-import { INITIAL_EXAMPLE } from './web/src/studio/initial-example.ts';
+import { INITIAL_EXAMPLE } from './web/src/studio/files/initial-example.ts';
 
 const repoRoot = fileURLToPath(new URL('.', import.meta.url));
 

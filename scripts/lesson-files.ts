@@ -5,9 +5,9 @@
 import { readdirSync, readFileSync } from 'node:fs';
 import { basename, join, relative } from 'node:path';
 import { Marked, type Token, type Tokens } from 'marked';
-import { parseExampleHeader } from '../web/src/studio/gallery-manifest.ts';
-import { parseCheck } from '../web/src/studio/lesson-check.ts';
-import { compareLessons, type Lesson, type LessonGrammar, type LessonSummary, type LessonTask } from '../web/src/studio/lesson-manifest.ts';
+import { parseExampleHeader } from '../web/src/studio/gallery/gallery-manifest.ts';
+import { parseCheck } from '../web/src/studio/learn/lesson-check.ts';
+import { compareLessons, type Lesson, type LessonGrammar, type LessonSummary, type LessonTask } from '../web/src/studio/learn/lesson-manifest.ts';
 
 /** A problem in a lesson file, located: its message reads `public/lessons/FILE.md:LINE: …`. */
 export class LessonFileError extends Error {

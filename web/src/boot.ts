@@ -4,7 +4,7 @@
 // gets the compiled core at once; the studio (main.ts) then finds both under way (`coreModule`
 // and `createBuildWorker` take them). vite.config.ts puts it in index.html's head.
 import { coreModule } from './core/init';
-import { startEarlyBuildWorker } from './studio/build-worker-start';
+import { startEarlyBuildWorker } from './build/build-worker-start';
 
 coreModule().catch(() => undefined); // a failure is the studio's to report, when it asks
 startEarlyBuildWorker();

@@ -5,7 +5,7 @@ import { registerSW } from 'virtual:pwa-register';
 import { coreVersion, initCore, loadVocabulary, type Vocabulary } from './core';
 import { createLazyGrammarEditor, type GrammarEditor } from './editor/grammar-text';
 import { growthAttributes } from './editor/growth-directives';
-import { INITIAL_EXAMPLE } from './studio/initial-example';
+import { INITIAL_EXAMPLE } from './studio/files/initial-example';
 import { KeptTexts } from './share/kept-texts';
 import { GrammarStore } from './share/storage';
 import { PlantView } from './view';
@@ -92,7 +92,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   // The Help panel (the language reference) loads when first opened (issue 22).
   const openHelpFirst = () => void openHelp();
   const help = onDemand(async () => {
-    const { HelpPanel } = await import('./studio/help-panel');
+    const { HelpPanel } = await import('./studio/page/help-panel');
     els.help.opener.removeEventListener('click', openHelpFirst); // the panel listens to its button now
     return new HelpPanel(els.help);
   });
@@ -211,7 +211,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   );
   // The gallery and My grammars load when first opened (issue 22: the first plant needs neither).
   const gallery = onDemand(async () => {
-    const [{ GalleryDialog }, { GalleryThumbnails }] = await Promise.all([import('./studio/gallery-dialog'), import('./studio/thumbnails')]);
+    const [{ GalleryDialog }, { GalleryThumbnails }] = await Promise.all([import('./studio/gallery/gallery-dialog'), import('./studio/gallery/thumbnails')]);
     return new GalleryDialog(els.gallery, els.galleryList, new GalleryThumbnails(fetchExample), (entry) => opening.openExample(entry), () => opening.currentFile);
   });
   const openGallery = () => void gallery().then((dialog) => dialog.open()).catch((error: unknown) => console.error('Could not open the gallery:', error));
@@ -219,7 +219,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   installLearnPanel({ preview, open: (text, title, key) => opening.replace(text, title, key) }); // lessons (issue 17), loaded on first use
   if (start.from === 'link') void autosave.save(start.text); // the link's text is now the work in progress
   const library = onDemand(async () => {
-    const { LibraryDialog } = await import('./studio/library-dialog');
+    const { LibraryDialog } = await import('./studio/files/library-dialog');
     return new LibraryDialog(els.library, store, kept, { text: () => grammarEditor.text(), open: (entry, key) => opening.openSaved(entry, key) });
   });
   const openLibrary = () => void library().then((dialog) => dialog.open()).catch((error: unknown) => console.error('Could not open My grammars:', error));
@@ -246,7 +246,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   if (start.state) link.restore(start.state); // iterations, seed, edits, camera (its view options apply already)
   // The Share dialog and its embed snippets load with the first share (issue 22).
   const shareDialog = onDemand(async () => {
-    const [{ ShareDialog }, { EmbedSnippets }] = await Promise.all([import('./studio/share-dialog'), import('./studio/embed-snippets')]);
+    const [{ ShareDialog }, { EmbedSnippets }] = await Promise.all([import('./studio/links/share-dialog'), import('./studio/links/embed-snippets')]);
     return { dialog: new ShareDialog(els.shareDialog), snippets: new EmbedSnippets(els.embedSnippets, new URL('./', location.href).href) };
   });
   installShareButton(
@@ -296,7 +296,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   const vocabularyRead = readVocabulary();
   // Downloads: the plant on screen (the last good build's text and options, with the edits); the
   // menu's code loads after the first plant (issue 22).
-  const downloadsInstalled = import('./studio/download-menu').then(({ installDownloads }) =>
+  const downloadsInstalled = import('./studio/downloads/download-menu').then(({ installDownloads }) =>
     installDownloads(els.downloads, view, () => {
       const good = preview.lastGood;
       return good && { source: good.source, options: { ...good.options, edits: branchEdits.document() }, name: figureName(opening.currentFile, good.source) };

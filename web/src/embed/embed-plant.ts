@@ -4,9 +4,9 @@
 // go to the page's one shared worker. Small enough for 320 × 240.
 import type { BuildOptions } from '../core';
 import { encodeState } from '../share/codec';
-import { Playback } from '../studio/playback';
-import { SliderPanel } from '../studio/sliders';
-import type { BuildOutcome } from '../studio/worker-client';
+import { Playback } from '../studio/controls/playback';
+import { SliderPanel } from '../studio/controls/sliders';
+import type { BuildOutcome } from '../build/worker-client';
 import { PlantView } from '../view';
 import type { SharedBuilds } from './shared-builds';
 
