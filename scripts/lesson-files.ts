@@ -1,5 +1,5 @@
 // Reads the course's lesson files (public/lessons/*.md; the format is in docs/LESSONS.md) into the
-// data the Learn panel shows (web/src/studio/lesson-manifest.ts). Runs in node, at build time: the
+// data the Learn panel shows (web/src/studio/learn/lesson-manifest.ts). Runs in node, at build time: the
 // Markdown is rendered to HTML here, with `marked`, so no Markdown library ships to the browser, and
 // every check is parsed here, so a malformed lesson fails the build with its file and line.
 import { readdirSync, readFileSync } from 'node:fs';

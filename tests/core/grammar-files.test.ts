@@ -1,4 +1,4 @@
-// Opening grammar files through the real core's importers (web/src/studio/grammar-files.ts).
+// Opening grammar files through the real core's importers (web/src/studio/files/grammar-files.ts).
 import { readdirSync, readFileSync } from 'node:fs';
 import { beforeAll, describe, expect, it } from 'vitest';
 import { initCore } from '../../web/src/core';

@@ -4,7 +4,7 @@
 import type { EditsDocument } from '../../core';
 import type { PlantView } from '../../view';
 import type { BranchEditingElements, BranchEditingHost, BranchEditSession } from './branch-editing';
-import { onDemand } from '../page/on-demand';
+import { onDemand } from '../page';
 
 /** What the studio asks of branch editing (the link, downloads, each build, the tests). */
 export type BranchEdits = Pick<BranchEditSession, 'document' | 'restore' | 'plantShown' | 'handlesOnPage' | 'selectedPath'>;

@@ -3,7 +3,7 @@
 // view most of the screen; Fullscreen shows the plant alone with the derivation's controls; the
 // panels under the view fold away. The modes are classes and data attributes on <body> and the
 // inspector (style.css does the layout); this file keeps them, their buttons and their keys.
-import type { KeyValueStorage } from '../../share/storage';
+import type { KeyValueStorage } from '../../share';
 
 /** The controls (see index.html). */
 export interface LayoutElements {

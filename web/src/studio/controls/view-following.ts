@@ -6,7 +6,7 @@
 import type { Bounds } from '../../core';
 import type { PlantView } from '../../view';
 import type { Playback } from './playback';
-import type { BuildResult } from '../../build/worker-client';
+import type { BuildResult } from '../../build';
 
 /** How Play frames the plant: `last`: in the last step's frame from the start; `each`: every step fitted. */
 export type PlayFraming = 'last' | 'each';

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { decodeState, encodeState } from '../../share/codec';
+import { decodeState, encodeState } from '../../share';
 import { DEFAULT_VIEW_OPTIONS, ViewOptions, tubesFor, type ViewOption, type ViewOptionValues } from './view-options';
 
 const SIDES = [3, 4, 5, 6, 8, 12, 16, 24, 32];

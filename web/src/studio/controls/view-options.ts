@@ -1,7 +1,7 @@
 // The view options: how the plant is meshed (sides, smooth all) and shown (grid, lighting,
 // textures, projection, colour by production). One object holds them; the view tools render from
 // it, the view, the preview and the context view follow it, and a share link carries it.
-import type { SharedState } from '../../share/codec';
+import type { SharedState } from '../../share';
 import { DEFAULT_LINE_WIDTH, LINE_WIDTH_MAX, LINE_WIDTH_MIN, type ProjectionMode, type RenderMode } from '../../view';
 
 /** Every view option's value. */

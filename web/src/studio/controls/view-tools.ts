@@ -2,7 +2,7 @@
 // of the view options. They change the ViewOptions and render from it: a toggle's `aria-pressed`,
 // a field's value are its output, never read back as state. The 3D view follows the options here.
 import { lineWidthOf, type PlantView } from '../../view';
-import { closeLikeAMenu } from '../page/menus';
+import { closeLikeAMenu } from '../page';
 import type { ViewOption, ViewOptions, ViewOptionValues } from './view-options';
 
 /** The controls (see index.html). */

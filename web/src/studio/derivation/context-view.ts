@@ -9,7 +9,7 @@ import type { GrammarEditor } from '../../editor';
 import { cssColour, HIGHLIGHT, PRODUCTION_COLOURS, type Rgb } from '../../view/highlight';
 import type { PlantView } from '../../view';
 import { StringPanel, type ModuleRole } from './string-panel';
-import type { ViewOptions } from '../controls/view-options';
+import type { ViewOptions } from '../controls';
 import { conditionText, copiedInWords, countsInWords, describeProduction, madeInWords, reportInWords } from './explain-words';
 
 /** The page elements of the view. */

@@ -6,9 +6,9 @@
 // step and module limits) are told in the notice bar, since the text has nothing to mark for them.
 import { directiveOfKind, languageVocabulary, type Diagnostic, type PlantBuild } from '../../core';
 import { findDirective } from '../../editor/growth-directives';
-import type { SharedState } from '../../share/codec';
-import type { Notice } from '../page/notice';
-import { Playback } from '../controls/playback';
+import type { SharedState } from '../../share';
+import type { Notice } from '../page';
+import { Playback } from '../controls';
 
 /** The controls (see index.html). */
 export interface DerivationElements {

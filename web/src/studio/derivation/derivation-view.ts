@@ -9,7 +9,7 @@ import './derivation-view.css';
 import { NOT_REWRITTEN, type DerivationStep, type PlantBuild, type PlantInspector } from '../../core';
 import { cssColour, PRODUCTION_COLOURS } from '../../view/highlight';
 import { shortModuleText } from './module-text';
-import { plural } from '../preview/status';
+import { plural } from '../preview';
 
 /** The whole derivation is shown when its steps hold this many modules or fewer together. */
 export const SEQUENCE_MAX_MODULES = 4_000;

@@ -4,7 +4,7 @@
 // Modules are written as the string panel writes them (numbers to 6 significant digits).
 import type { Explanation, MatchReport, ProductionInfo } from '../../core';
 import { shortModuleText } from './module-text';
-import { plural } from '../preview/status';
+import { plural } from '../preview';
 
 /** The 1-based line of a UTF-16 offset. */
 export function lineOf(source: string, offset: number): number {

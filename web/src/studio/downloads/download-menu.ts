@@ -6,7 +6,7 @@ import { MODEL_FORMATS, type ExportOptions, type ModelFormat, type SvgLook } fro
 import type { PictureLook, PlantView } from '../../view';
 import { afterPaint, fileSize, paperPixels, pictureSize, saveFile, withResolution, type PaperChoice } from './downloads';
 import { createExportWorker, describeProgress, runExport } from './export-client';
-import { closeLikeAMenu } from '../page/menus';
+import { closeLikeAMenu } from '../page';
 
 /** The menu and the export's status (see index.html). */
 export interface DownloadMenuElements {

@@ -2,7 +2,7 @@
 // forwarded, cancellation by terminating it. Exports never run on the page's thread, so a model of
 // millions of vertices is written while the page stays responsive.
 import type { ExportOptions, ExportProgress, ModelFile, ModelFormat } from '../../core';
-import { runWorkerJob, type JobWorkerLike, type WorkerJob } from '../../build/worker-job';
+import { runWorkerJob, type JobWorkerLike, type WorkerJob } from '../../build';
 
 /** Page → export worker: the one request a worker gets. */
 export interface ExportRequest {

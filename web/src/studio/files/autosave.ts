@@ -1,9 +1,8 @@
 // Autosave: the editor's text is kept in the browser on every change, shortly after typing stops,
 // and at once when the page goes away: in localStorage, else (when that is full or switched off) in
 // IndexedDB; if neither can keep it, the notice says so (once, until one can).
-import type { KeptTexts } from '../../share/kept-texts';
-import type { GrammarStore } from '../../share/storage';
-import type { Notice } from '../page/notice';
+import type { GrammarStore, KeptTexts } from '../../share';
+import type { Notice } from '../page';
 
 /** How long after the last change the text is saved (ms). */
 export const AUTOSAVE_DELAY = 300;

@@ -1,7 +1,6 @@
 // Where the studio keeps the user's work in this browser: localStorage (the autosave and My
 // grammars) and, when that is full or switched off, IndexedDB (KeptTexts).
-import { indexedDatabase, type KeyValueDatabase } from '../../share/kept-texts';
-import type { KeyValueStorage } from '../../share/storage';
+import { indexedDatabase, type KeyValueDatabase, type KeyValueStorage } from '../../share';
 
 /** `localStorage`, or nothing where the browser refuses it (private modes, sandboxed frames). */
 export function browserStorage(): KeyValueStorage | undefined {

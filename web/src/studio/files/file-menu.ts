@@ -1,7 +1,7 @@
 // The File menu: open a grammar file (the picker, or Ctrl+O), save the text as a `.lsys` file
 // (Ctrl+S), and My grammars.
 import { saveGrammarFile } from './grammar-files';
-import { closeLikeAMenu } from '../page/menus';
+import { closeLikeAMenu } from '../page';
 
 /** The menu and its file picker (see index.html). */
 export interface FileMenuElements {

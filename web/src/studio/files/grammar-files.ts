@@ -2,8 +2,8 @@
 // cpfg `.l` and L-Py `.lpy` through the core's importers, with their notes; text that is not UTF-8
 // (old Lparser files) read as Windows-1252. Saving writes the editor's text as `NAME.lsys`.
 import { importGrammar, importObject, type Dialect, type ObjectFile } from '../../core';
-import { titleOf } from '../../share/storage';
-import { saveFile } from '../downloads/downloads';
+import { titleOf } from '../../share';
+import { saveFile } from '../downloads';
 
 /** Largest grammar file opened (bytes). */
 export const MAX_FILE_BYTES = 1_000_000;

@@ -4,8 +4,8 @@
 // an importer takes. `.lsys` files need no import: the page reads them itself.
 import type { ObjectFile } from '../../core';
 import { checkGrammarBytes, type OpenedFile } from './grammar-files';
-import type { Notice } from '../page/notice';
-import { runWorkerJob, type JobWorkerLike, type WorkerJob } from '../../build/worker-job';
+import type { Notice } from '../page';
+import { runWorkerJob, type JobWorkerLike, type WorkerJob } from '../../build';
 
 /** Page → import worker: the files a worker imports (one grammar file, or an object's files). */
 export interface ImportRequest {

@@ -1,8 +1,6 @@
 import 'fake-indexeddb/auto';
 import { describe, expect, it } from 'vitest';
-import { indexedDatabase, KeptTexts, type KeyValueDatabase } from '../../share/kept-texts';
-import { memoryStorage } from '../../share/memory-storage';
-import { GrammarStore } from '../../share/storage';
+import { GrammarStore, indexedDatabase, KeptTexts, type KeyValueDatabase, memoryStorage } from '../../share';
 import { keptSentence, restoreAutosave, TextKeeper } from './keeping';
 
 const memory = memoryStorage;

@@ -2,8 +2,7 @@
 // grammar, a shared link): in My grammars (localStorage), else in this browser's database
 // (IndexedDB, when localStorage is full or switched off), which My grammars lists too. When neither
 // can keep it, the text is not replaced unless the user downloads it first (confirm.ts).
-import type { KeptTexts } from '../../share/kept-texts';
-import { cleanName, titleOf, type Autosave, type GrammarStore } from '../../share/storage';
+import { type Autosave, cleanName, type GrammarStore, type KeptTexts, titleOf } from '../../share';
 
 /** Where a text was kept: its name in My grammars, and which storage holds it. */
 export interface KeptPlace {

@@ -2,8 +2,7 @@
 // editor's text under a name, open, rename, duplicate and delete; with them, the texts kept in the
 // browser's database when its other storage was full (KeptTexts), to open, download and delete.
 // Names are shown as text only.
-import type { KeptText, KeptTexts } from '../../share/kept-texts';
-import { titleOf, type GrammarStore, type StoredGrammar } from '../../share/storage';
+import { type GrammarStore, type KeptText, type KeptTexts, type StoredGrammar, titleOf } from '../../share';
 import { saveGrammarFile } from './grammar-files';
 
 /** The dialog's elements (see index.html). */

@@ -3,15 +3,13 @@
 // anything else is theirs: opening something else asks first, keeps their text (in My grammars, or
 // this browser's database), or when nothing can keep it has them download it first; and it stays
 // undoable in the editor. Files in other dialects are imported off the page's thread.
-import type { StoredGrammar } from '../../share/storage';
+import type { StoredGrammar } from '../../share';
 import type { GrammarEditor } from '../../editor';
 import type { ObjectFile } from '../../core';
-import { askToDownload, askToReplace, type QuestionDialog } from '../page/confirm';
-import { fetchExample } from '../gallery/gallery';
-import type { GalleryEntry } from '../gallery/gallery-manifest';
+import { askToDownload, askToReplace, type Notice, type QuestionDialog } from '../page';
+import { fetchExample, type GalleryEntry } from '../gallery';
 import { dialectName, saveGrammarFile, type OpenedFile } from './grammar-files';
 import { keptSentence, type TextKeeper } from './keeping';
-import type { Notice } from '../page/notice';
 
 /** What opening a text reads and changes on the page. */
 export interface TextOpeningParts {

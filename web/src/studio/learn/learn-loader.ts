@@ -1,7 +1,7 @@
 // The Learn panel is loaded on the first click of its button (a dynamic import): its code and the
 // lessons' checks are not part of the first load of the studio (issue 22's budget).
 import type { LearnHost } from './learn-panel';
-import { byId } from '../page/page-elements';
+import { byId } from '../page';
 
 /** Makes the Learn button load the panel, then open it; the panel takes the button over. */
 export function installLearnPanel(host: LearnHost): void {

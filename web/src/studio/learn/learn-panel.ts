@@ -7,8 +7,8 @@ import './learn-panel.css';
 import type { PlantBuild, PlantInspector } from '../../core';
 import { chapterHeading, isLesson, isLessonIndex, type Lesson, type LessonGrammar, type LessonSummary, type LessonTask } from './lesson-manifest';
 import { evaluateCheck, parseCheck, plantFacts, spokenAnswer } from './lesson-check';
-import { focusableCode } from '../page/focusable-code';
-import { byId } from '../page/page-elements';
+import { byId, focusableCode } from '../page';
+// Deep: the thumbnails load with the panel, so the gallery's index does not re-export them.
 import { GalleryThumbnails } from '../gallery/thumbnails';
 
 /** The list of lessons, relative to the page (built by scripts/lessons-plugin.ts). */

@@ -2,7 +2,7 @@
 // another page, as an <iframe> of embed.html (the state in its fragment, as a share link) or as a
 // <meristem-plant> element with the grammar written in the page. The site's address is the
 // studio's own, so the snippets work wherever the studio is deployed.
-import type { SharedState } from '../../share/codec';
+import type { SharedState } from '../../share';
 
 /** Which controls the embedded plant shows (embed-plant.ts's names). */
 export interface SnippetControls {

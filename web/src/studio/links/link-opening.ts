@@ -1,17 +1,12 @@
 // Opening shared links: the one the page was opened with, and one pasted into the tab's address bar
 // later. Opening a link never loses the user's text: it is kept first (TextKeeper), and when this
 // browser cannot keep it anywhere the link is opened only after the user downloads it.
-import { decodeState, hasSharedState, type SharedState } from '../../share/codec';
-import type { KeptTexts } from '../../share/kept-texts';
-import type { GrammarStore } from '../../share/storage';
-import { askToDownload, type QuestionDialog } from '../page/confirm';
-import { fetchExample } from '../gallery/gallery';
-import { saveGrammarFile } from '../files/grammar-files';
-import { keptSentence, restoreAutosave, type TextKeeper } from '../files/keeping';
+import { decodeState, type GrammarStore, hasSharedState, type KeptTexts, type SharedState } from '../../share';
+import { askToDownload, type Notice, type QuestionDialog } from '../page';
+import { fetchExample } from '../gallery';
+import { keptSentence, type OpenedText, restoreAutosave, saveGrammarFile, type TextKeeper, type TextOpening } from '../files';
 import type { LinkState } from './link-state';
-import type { Notice } from '../page/notice';
 import { linkWithFragment } from './share-button';
-import type { OpenedText, TextOpening } from '../files/text-opening';
 
 /** Where the editor's first text comes from. */
 export interface StartingText extends OpenedText {

@@ -1,13 +1,12 @@
 // The studio's state as a share link holds it (`SharedState`): gathered from the pieces that keep
 // it, and given back to them when a link is opened.
-import type { SharedState } from '../../share/codec';
+import type { SharedState } from '../../share';
 import type { GrammarEditor } from '../../editor';
 import type { PlantView } from '../../view';
-import type { BranchEdits } from '../branches/branch-editing-loader';
-import type { DerivationControls } from '../derivation/derivation-controls';
-import type { LivePreview } from '../preview/live-preview';
-import type { SliderPanel } from '../controls/sliders';
-import type { ViewOptions } from '../controls/view-options';
+import type { BranchEdits } from '../branches';
+import type { DerivationControls } from '../derivation';
+import type { LivePreview } from '../preview';
+import type { SliderPanel, ViewOptions } from '../controls';
 
 /** The pieces that keep what a link holds. */
 export interface LinkStateParts {

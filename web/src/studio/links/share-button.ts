@@ -1,7 +1,7 @@
 // The Share button: the studio's state as a link, made and opened here first with the very decoder
 // that opens it elsewhere (./share-dialog.ts shows it, loaded with the first share).
-import { decodeState, encodeState, MAX_FRAGMENT, type SharedState } from '../../share/codec';
-import type { Notice } from '../page/notice';
+import { decodeState, encodeState, MAX_FRAGMENT, type SharedState } from '../../share';
+import type { Notice } from '../page';
 import type { ShareDialog } from './share-dialog';
 
 const count = new Intl.NumberFormat('en-US');

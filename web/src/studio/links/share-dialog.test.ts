@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { decodeState, MAX_FRAGMENT, MAX_TEXT } from '../../share/codec';
+import { decodeState, MAX_FRAGMENT, MAX_TEXT } from '../../share';
 import { shareableLink } from './share-button';
 
 /** Text that deflate cannot shrink much: `n` characters of a seeded pseudo-random grammar comment. */

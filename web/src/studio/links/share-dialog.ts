@@ -4,7 +4,7 @@
 // that would be refused (too long for a link, most often) is never offered; the dialog says why
 // and offers the grammar as a file instead. The dialog loads with the first share (issue 22: the
 // first plant needs none of it); the button, and making the link, are ./share-button.ts.
-import { saveGrammarFile } from '../files/grammar-files';
+import { saveGrammarFile } from '../files';
 
 /** The dialog's elements (see index.html). */
 export interface ShareDialogElements {

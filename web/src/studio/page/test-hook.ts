@@ -2,8 +2,8 @@
 // else is global). The browser tests read this shape: change it only with them.
 import type { PlantStats } from '../../core';
 import type { PlantView } from '../../view';
-import type { BranchEdits } from '../branches/branch-editing-loader';
-import type { LivePreview } from '../preview/live-preview';
+import type { BranchEdits } from '../branches';
+import type { LivePreview } from '../preview';
 
 /** The studio as its tests see it. */
 export interface StudioTestHook {

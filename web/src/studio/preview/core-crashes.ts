@@ -3,7 +3,7 @@
 // builds again); the page's own core instance (branch editing, imports) cannot be used again, so
 // the notice asks for a reload, the user's text being autosaved.
 import { CoreCrashed } from '../../core';
-import type { Notice } from '../page/notice';
+import type { Notice } from '../page';
 
 /**
  * Shows crashes of the page's own core (thrown from event handlers or promises) in `notice`, and

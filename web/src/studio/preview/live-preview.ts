@@ -6,7 +6,7 @@ import type { BuildOptions, BuildProgress, PlantSketch } from '../../core';
 import type { PlantView } from '../../view';
 import { DiagnosticsFeed } from './diagnostics-feed';
 import { reportBuilding, reportErrors, reportPlant, type StatusReport } from './status';
-import type { BuildClient, BuildOutcome, BuildResult } from '../../build/worker-client';
+import type { BuildClient, BuildOutcome, BuildResult } from '../../build';
 
 /** A build not delivered after this long (ms) is shown as under way, with its Stop button. */
 export const BUILDING_AFTER = 300;
@@ -38,7 +38,9 @@ export interface LivePreviewParts {
    * screen again (its build is kept anew by the next worker), so nothing they lost stays empty.
    */
   workerReplaced?: () => void;
-  /** The grammar text now. */
+  /** The diagnostics of delivered builds, for the editor's linter (made by the preview if not given). */
+  feed?: DiagnosticsFeed;
+  /** The grammar text now (read when a rebuild is not given the text). */
   text: () => string;
   /** The build options now (iterations, seed, view options). */
   options: () => BuildOptions;
@@ -66,7 +68,7 @@ export function showStatus(status: HTMLElement, report: PageStatus): void {
 /** Keeps the view in step with the text and options. */
 export class LivePreview {
   /** The diagnostics of delivered builds, for the editor's linter. */
-  readonly feed = new DiagnosticsFeed();
+  readonly feed: DiagnosticsFeed;
   /** The last build delivered (with or without errors). */
   lastResult: BuildResult | undefined;
   /** The last build without errors: the plant on screen. */
@@ -96,6 +98,7 @@ export class LivePreview {
   private sketchFrame: Promise<void> | undefined;
 
   constructor(private readonly parts: LivePreviewParts) {
+    this.feed = parts.feed ?? new DiagnosticsFeed();
     parts.stop?.addEventListener('click', () => this.stop());
   }
 
@@ -129,11 +132,11 @@ export class LivePreview {
   }
 
   /**
-   * Builds the current text with the current options, unless that is what was asked last (or
-   * `force`: e.g. an example opened again must be framed again).
+   * Builds `text` (the change's; by default the text now) with the current options, unless that
+   * is what was asked last (or `force`: e.g. an example opened again must be framed again).
    */
-  rebuild(force = false): void {
-    const source = this.parts.text();
+  rebuild({ text, force = false }: { text?: string; force?: boolean } = {}): void {
+    const source = text ?? this.parts.text();
     const options = this.parts.options();
     const key = JSON.stringify(options) + '\n' + source;
     if (key === this.requestedKey && !force) return;

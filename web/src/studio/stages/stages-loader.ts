@@ -1,8 +1,8 @@
 // Stages (./stages.ts, with its view and its SVG), loaded when it is first turned on (issue 22: the
 // first plant needs none of it). Until then only its button listens.
 import type { StagesElements, StagesHost, StagesMode } from './stages';
-import type { BuildResult } from '../../build/worker-client';
-import { onDemand } from '../page/on-demand';
+import type { BuildResult } from '../../build';
+import { onDemand } from '../page';
 
 /** A {@link StagesMode} on `els` that loads with its first showing. */
 export class LazyStagesMode {

@@ -7,11 +7,10 @@ import './stages.css';
 import type { BuildOptions, PlantSketch } from '../../core';
 import type { StageScale } from '../../view/stages-layout';
 import { StagesView, type StagePlant, type StagesGrid } from '../../view/stages-view';
-import { afterPaint, saveFile } from '../downloads/downloads';
-import { createExportWorker, runExport } from '../downloads/export-client';
+import { afterPaint, createExportWorker, runExport, saveFile } from '../downloads';
 import { stagesSvg, type StageDrawing } from './stages-svg';
-import { growthKey } from '../controls/view-following';
-import type { BuildClient, BuildResult } from '../../build/worker-client';
+import { growthKey } from '../controls';
+import type { BuildClient, BuildResult } from '../../build';
 
 /** Most iterations side by side, and most seeds, in one figure. */
 export const MAX_STAGE_COLUMNS = 10;
