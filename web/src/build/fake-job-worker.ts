@@ -1,14 +1,15 @@
-// A fake Worker for the unit tests of the clients that run one job in a worker (worker-job.ts): it
-// records what it is sent, answers when the test says so, and can fail to start.
+// A fake Worker for the unit tests of the clients of workers (worker-job.ts's, the build client):
+// it records what it is sent, answers when the test says so, and can fail to start.
 import type { JobWorkerLike } from './worker-job';
 
 export class FakeJobWorker<Request, Response> implements JobWorkerLike<Request, Response> {
-  requests: Request[] = [];
+  /** What it was sent, oldest first. */
+  messages: Request[] = [];
   terminated = false;
   onMessage: ((event: MessageEvent<Response>) => void) | undefined;
   onError: ((event: ErrorEvent) => void) | undefined;
   postMessage(message: Request): void {
-    this.requests.push(message);
+    this.messages.push(message);
   }
   terminate(): void {
     this.terminated = true;

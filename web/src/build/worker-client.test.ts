@@ -1,56 +1,40 @@
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
 import type { PlantBuild } from '../core';
+import { FakeJobWorker } from './fake-job-worker';
 import { BuildClient, type BuildOutcome, type WorkerLike } from './worker-client';
 import type { InspectAnswer, WorkerRequest, WorkerResponse } from './worker-protocol';
 
-/** A worker that records requests and answers when the test says so. */
-class FakeWorker implements WorkerLike {
-  messages: WorkerRequest[] = [];
-  terminated = false;
-  private onMessage: ((event: MessageEvent<WorkerResponse>) => void) | undefined;
-  private onError: ((event: ErrorEvent) => void) | undefined;
-
-  postMessage(message: WorkerRequest): void {
-    this.messages.push(message);
-  }
+/** A build worker that records requests and answers when the test says so. */
+class FakeWorker extends FakeJobWorker<WorkerRequest, WorkerResponse> implements WorkerLike {
   /** The build requests received. */
   get requests() {
     return this.messages.filter((m) => m.kind === 'build');
-  }
-  terminate(): void {
-    this.terminated = true;
-  }
-  addEventListener(type: 'message', listener: (event: MessageEvent<WorkerResponse>) => void): void;
-  addEventListener(type: 'error', listener: (event: ErrorEvent) => void): void;
-  addEventListener(type: 'message' | 'error', listener: ((event: MessageEvent<WorkerResponse>) => void) | ((event: ErrorEvent) => void)): void {
-    if (type === 'message') this.onMessage = listener as (event: MessageEvent<WorkerResponse>) => void;
-    else this.onError = listener as (event: ErrorEvent) => void;
   }
   /** Answers request `id` (default: the last one) with a build whose `derived` is its source. */
   answer(id = this.requests.at(-1)!.id): void {
     const request = this.requests.find((r) => r.id === id)!;
     const build = { ok: true, derived: request.source } as unknown as PlantBuild;
-    this.onMessage?.({ data: { kind: 'built', id, build, workerMillis: 1, studioCore: false } } as MessageEvent<WorkerResponse>);
+    this.send({ kind: 'built', id, build, workerMillis: 1, studioCore: false } as WorkerResponse);
   }
   crash(id = this.requests.at(-1)!.id): void {
-    this.onMessage?.({ data: { kind: 'crashed', id, message: 'RuntimeError: unreachable' } } as MessageEvent<WorkerResponse>);
+    this.send({ kind: 'crashed', id, message: 'RuntimeError: unreachable' });
   }
   /** Answers the last question asked. */
   reply(answer: InspectAnswer): void {
     const question = this.messages.filter((m) => m.kind === 'inspect').at(-1)!;
-    this.onMessage?.({ data: { kind: 'inspected', id: question.id, answer } } as MessageEvent<WorkerResponse>);
+    this.send({ kind: 'inspected', id: question.id, answer });
   }
   /** Sends the sketch of request `id` (default: the last one). */
   sketch(id = this.requests.at(-1)!.id): void {
     const sketch = { lines: new Float32Array(6), lineColors: new Float32Array(6), flat: false, segments: 1 };
-    this.onMessage?.({ data: { kind: 'sketch', id, sketch } } as MessageEvent<WorkerResponse>);
+    this.send({ kind: 'sketch', id, sketch });
   }
   /** Tells request `id`'s progress (default: the last one's). */
   progress(step: number, steps: number, id = this.requests.at(-1)!.id): void {
-    this.onMessage?.({ data: { kind: 'progress', id, progress: { stage: 'deriving', step, steps } } } as MessageEvent<WorkerResponse>);
+    this.send({ kind: 'progress', id, progress: { stage: 'deriving', step, steps } });
   }
-  fail(): void {
-    this.onError?.({ message: 'no module', preventDefault() {} } as ErrorEvent);
+  override fail(message = 'no module'): void {
+    super.fail(message);
   }
 }
 

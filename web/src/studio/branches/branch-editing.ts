@@ -343,18 +343,19 @@ export class BranchEditSession {
   }
 
   private undo(): void {
-    const previous = this.undoStack.pop();
-    if (!previous) return;
-    this.redoStack.push(this.doc);
-    this.doc = previous;
-    this.reapply();
+    this.step(this.undoStack, this.redoStack);
   }
 
   private redo(): void {
-    const next = this.redoStack.pop();
-    if (!next) return;
-    this.undoStack.push(this.doc);
-    this.doc = next;
+    this.step(this.redoStack, this.undoStack);
+  }
+
+  /** Undoes or redoes: the edits from the top of `from`, the edits now kept on `to`. */
+  private step(from: EditsDocument[], to: EditsDocument[]): void {
+    const doc = from.pop();
+    if (!doc) return;
+    to.push(this.doc);
+    this.doc = doc;
     this.reapply();
   }
 

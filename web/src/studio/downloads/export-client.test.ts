@@ -14,7 +14,7 @@ describe('runExport', () => {
     const worker = new FakeExportWorker();
     const seen: string[] = [];
     const running = runExport(() => worker, request, (p) => seen.push(p.stage));
-    expect(worker.requests).toEqual([request]);
+    expect(worker.messages).toEqual([request]);
     worker.send({ kind: 'progress', progress: stage(0, 'parsing') });
     worker.send({ kind: 'progress', progress: stage(3, 'meshing') });
     expect(worker.terminated).toBe(false);

@@ -10,7 +10,7 @@ describe('runImport', () => {
   it('imports in the worker, settles with its text and ends the worker', async () => {
     const worker = new FakeImportWorker();
     const job = runImport(() => worker, request);
-    expect(worker.requests).toEqual([request]);
+    expect(worker.messages).toEqual([request]);
     const opened = { ok: true as const, text: 'axiom: F', dialect: 'cpfg' as const, notes: [] };
     worker.send({ kind: 'done', opened });
     expect(await job.done).toEqual({ kind: 'done', opened });

@@ -72,13 +72,16 @@ describe('checks: facts and functions', () => {
 
 describe('checks: the answer in words', () => {
   it('says what is wrong and what the task wants', () => {
-    expect(check('count("[") == 8')).toBe('Not yet: count("[") is 4, the task wants 8.');
-    expect(check('segments >= 20 and whorl == 2')).toBe('Not yet: segments is 5, the task wants at least 20.');
-    expect(check('count("-") == count("+") + 1')).toBe('Not yet: count("-") is 2, the task wants count("+") + 1 (3).');
-    expect(check('contains("G[")')).toBe('Not yet: the derived string does not contain G[.');
-    expect(check('not contains("A(3)")')).toBe('Not yet: the derived string contains A(3), the task wants it not to.');
-    expect(check('segments < 2 or whorl > 2')).toBe('Not yet: segments is 5, the task wants less than 2, or whorl is 2, the task wants more than 2.');
-    expect(check('height / width > 3')).toBe('Not yet: height / width is 2, the task wants more than 3.');
+    const answers = [
+      ['count("[") == 8', 'Not yet: count("[") is 4, the task wants 8.'],
+      ['segments >= 20 and whorl == 2', 'Not yet: segments is 5, the task wants at least 20.'],
+      ['count("-") == count("+") + 1', 'Not yet: count("-") is 2, the task wants count("+") + 1 (3).'],
+      ['contains("G[")', 'Not yet: the derived string does not contain G[.'],
+      ['not contains("A(3)")', 'Not yet: the derived string contains A(3), the task wants it not to.'],
+      ['segments < 2 or whorl > 2', 'Not yet: segments is 5, the task wants less than 2, or whorl is 2, the task wants more than 2.'],
+      ['height / width > 3', 'Not yet: height / width is 2, the task wants more than 3.'],
+    ];
+    for (const [source, answer] of answers) expect(check(source), source).toBe(answer);
   });
 
   it('says the values that passed', () => {

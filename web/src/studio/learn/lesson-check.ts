@@ -188,13 +188,7 @@ class Parser {
   }
 
   private negation(): CheckNode {
-    const start = this.peek().offset;
-    if (this.isWord('not')) {
-      this.take();
-      const operand = this.negation();
-      return { kind: 'not', operand, text: this.textFrom(start) };
-    }
-    return this.truth();
+    return this.prefixed(() => this.isWord('not'), () => this.truth(), (operand, text) => ({ kind: 'not', operand, text }));
   }
 
   /** A comparison, `contains(…)`, or a parenthesised check. */
@@ -246,13 +240,18 @@ class Parser {
   }
 
   private unary(): NumberNode {
+    return this.prefixed(() => this.isOp('-'), () => this.atom(), (operand, text) => ({ kind: 'negate', operand, text }));
+  }
+
+  /**
+   * A prefix operator (`not`, `-`: `hasPrefix` says whether one is next) and its operand, made by
+   * `make` with the text of both; the operand may be prefixed again. Without one, `operand()`.
+   */
+  private prefixed<T>(hasPrefix: () => boolean, operand: () => T, make: (operand: T, text: string) => T): T {
     const start = this.peek().offset;
-    if (this.isOp('-')) {
-      this.take();
-      const operand = this.unary();
-      return { kind: 'negate', operand, text: this.textFrom(start) };
-    }
-    return this.atom();
+    if (!hasPrefix()) return operand();
+    this.take();
+    return make(this.prefixed(hasPrefix, operand, make), this.textFrom(start));
   }
 
   private atom(): NumberNode {
