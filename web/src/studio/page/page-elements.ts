@@ -10,6 +10,11 @@ export function byId<T extends HTMLElement>(id: string, type: new () => T): T {
 
 /** Looks up the page's fixed elements. */
 export function studioElements() {
+  return { ...pageFrame(), ...controlElements(), ...inspectorElements(), ...fileElements(), ...outElements() };
+}
+
+/** The page's frame: the editor, the view, the status line, the notice, the splitter. */
+function pageFrame() {
   return {
     studio: byId('studio', HTMLElement),
     editor: byId('editor', HTMLElement),
@@ -18,6 +23,22 @@ export function studioElements() {
     stopBuild: byId('build-stop', HTMLButtonElement),
     showProblems: byId('show-problems', HTMLButtonElement),
     version: byId('core-version', HTMLElement),
+    staleBadge: byId('stale-badge', HTMLElement),
+    inspectorStale: byId('inspector-stale', HTMLElement),
+    notice: {
+      root: byId('notice', HTMLElement),
+      text: byId('notice-text', HTMLElement),
+      list: byId('notice-list', HTMLElement),
+      close: byId('notice-close', HTMLButtonElement),
+    },
+    splitter: byId('splitter', HTMLElement),
+    shortcutList: byId('shortcut-list', HTMLElement),
+  };
+}
+
+/** The controls around the editor and the view. */
+function controlElements() {
+  return {
     derivation: {
       iterations: byId('iterations', HTMLInputElement),
       iterationsBox: byId('iterations-box', HTMLElement),
@@ -43,8 +64,6 @@ export function studioElements() {
       menus: [byId('framing-menu', HTMLDetailsElement), byId('tubes-menu', HTMLDetailsElement), byId('lines-menu', HTMLDetailsElement)],
       plantOnly: [...document.querySelectorAll<HTMLElement>('.view-tools .plant-only')],
     },
-    staleBadge: byId('stale-badge', HTMLElement),
-    inspectorStale: byId('inspector-stale', HTMLElement),
     layout: {
       paneToggle: byId('pane-toggle', HTMLButtonElement),
       fullscreen: byId('fullscreen', HTMLButtonElement),
@@ -74,7 +93,32 @@ export function studioElements() {
     constantsEmpty: byId('constants-empty', HTMLElement),
     growthRows: byId('growth-rows', HTMLElement),
     growthCount: byId('growth-count', HTMLElement),
-    splitter: byId('splitter', HTMLElement),
+  };
+}
+
+/** The inspector (the String and Derivation tabs) and branch editing. */
+function inspectorElements() {
+  return {
+    contexts: {
+      panel: byId('string-panel', HTMLElement),
+      summary: byId('explain-summary', HTMLElement),
+      legend: byId('production-legend', HTMLElement),
+      highlightLegend: byId('highlight-legend', HTMLElement),
+    },
+    inspectorTabs: [byId('tab-string', HTMLButtonElement), byId('tab-derivation', HTMLButtonElement)],
+    derivationPanel: byId('derivation-panel', HTMLElement),
+    branchEditing: {
+      toggle: byId('edit-branches', HTMLButtonElement),
+      undo: byId('edit-undo', HTMLButtonElement),
+      redo: byId('edit-redo', HTMLButtonElement),
+      reset: byId('edit-reset', HTMLButtonElement),
+    },
+  };
+}
+
+/** Opening and keeping texts: the gallery, My grammars, the File menu, the questions asked before replacing. */
+function fileElements() {
+  return {
     openGallery: byId('open-gallery', HTMLButtonElement),
     gallery: byId('gallery', HTMLDialogElement),
     galleryList: byId('gallery-list', HTMLElement),
@@ -86,21 +130,27 @@ export function studioElements() {
       dialog: byId('confirm-replace', HTMLDialogElement),
       example: byId('confirm-example', HTMLElement),
     },
-    shortcutList: byId('shortcut-list', HTMLElement),
-    help: {
-      opener: byId('open-help', HTMLButtonElement),
-      panel: byId('help-panel', HTMLDialogElement),
-      content: byId('help-content', HTMLElement),
-      close: byId('help-close', HTMLButtonElement),
+    fileMenu: {
+      menu: byId('file-menu', HTMLDetailsElement),
+      openFile: byId('open-file', HTMLButtonElement),
+      saveFile: byId('save-file', HTMLButtonElement),
+      openLibrary: byId('open-library', HTMLButtonElement),
+      fileInput: byId('file-input', HTMLInputElement),
     },
-    contexts: {
-      panel: byId('string-panel', HTMLElement),
-      summary: byId('explain-summary', HTMLElement),
-      legend: byId('production-legend', HTMLElement),
-      highlightLegend: byId('highlight-legend', HTMLElement),
+    library: {
+      dialog: byId('library', HTMLDialogElement),
+      name: byId('library-name', HTMLInputElement),
+      save: byId('library-save', HTMLButtonElement),
+      list: byId('library-list', HTMLElement),
+      empty: byId('library-empty', HTMLElement),
+      status: byId('library-status', HTMLElement),
     },
-    inspectorTabs: [byId('tab-string', HTMLButtonElement), byId('tab-derivation', HTMLButtonElement)],
-    derivationPanel: byId('derivation-panel', HTMLElement),
+  };
+}
+
+/** What goes out: downloads, the Share button and dialog, embed snippets; and the Help panel. */
+function outElements() {
+  return {
     downloads: {
       menu: byId('downloads', HTMLDetailsElement),
       modelDownloads: byId('model-downloads', HTMLElement),
@@ -116,26 +166,7 @@ export function studioElements() {
       exportProgress: byId('export-progress', HTMLProgressElement),
       exportCancel: byId('export-cancel', HTMLButtonElement),
     },
-    branchEditing: {
-      toggle: byId('edit-branches', HTMLButtonElement),
-      undo: byId('edit-undo', HTMLButtonElement),
-      redo: byId('edit-redo', HTMLButtonElement),
-      reset: byId('edit-reset', HTMLButtonElement),
-    },
-    fileMenu: {
-      menu: byId('file-menu', HTMLDetailsElement),
-      openFile: byId('open-file', HTMLButtonElement),
-      saveFile: byId('save-file', HTMLButtonElement),
-      openLibrary: byId('open-library', HTMLButtonElement),
-      fileInput: byId('file-input', HTMLInputElement),
-    },
     share: byId('share', HTMLButtonElement),
-    notice: {
-      root: byId('notice', HTMLElement),
-      text: byId('notice-text', HTMLElement),
-      list: byId('notice-list', HTMLElement),
-      close: byId('notice-close', HTMLButtonElement),
-    },
     shareDialog: {
       dialog: byId('share-dialog', HTMLDialogElement),
       link: byId('share-link', HTMLInputElement),
@@ -157,13 +188,11 @@ export function studioElements() {
       copyElement: byId('embed-element-copy', HTMLButtonElement),
       status: byId('embed-status', HTMLElement),
     },
-    library: {
-      dialog: byId('library', HTMLDialogElement),
-      name: byId('library-name', HTMLInputElement),
-      save: byId('library-save', HTMLButtonElement),
-      list: byId('library-list', HTMLElement),
-      empty: byId('library-empty', HTMLElement),
-      status: byId('library-status', HTMLElement),
+    help: {
+      opener: byId('open-help', HTMLButtonElement),
+      panel: byId('help-panel', HTMLDialogElement),
+      content: byId('help-content', HTMLElement),
+      close: byId('help-close', HTMLButtonElement),
     },
   };
 }
