@@ -50,7 +50,7 @@ describe('galleryManifest', () => {
   });
 
   it('gives every example of the real gallery a title, a source and a description', () => {
-    const dir = new URL('../../../public/examples/', import.meta.url);
+    const dir = new URL('../../../../public/examples/', import.meta.url);
     const files = readdirSync(dir).filter((f) => f.endsWith('.lsys'));
     const manifest = galleryManifest(files.map((f) => [f, readFileSync(new URL(f, dir), 'utf8')] as const));
     expect(manifest).toHaveLength(files.length);
