@@ -4,7 +4,7 @@
 // go to the page's one shared worker. Small enough for 320 × 240.
 import type { BuildOptions } from '../core';
 import { encodeState } from '../share';
-import { Playback, SliderPanel } from '../studio/controls';
+import { Playback, SliderPanel } from '../plant-controls';
 import type { BuildOutcome } from '../build';
 import { PlantView } from '../view';
 import type { SharedBuilds } from './shared-builds';

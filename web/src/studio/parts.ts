@@ -3,7 +3,8 @@
 import type { LazyGrammarEditor } from '../editor/grammar-text';
 import type { GrammarStore, KeptTexts } from '../share';
 import type { PlantView } from '../view';
-import type { SliderPanel, ViewOptions } from './controls';
+import type { SliderPanel } from '../plant-controls';
+import type { ViewOptions } from './controls';
 import type { ContextView, DerivationControls, LazyDerivationView } from './derivation';
 import type { TextKeeper, TextOpening } from './files';
 import type { HelpOpener, Notice, StudioElements } from './page';

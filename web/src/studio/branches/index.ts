@@ -1,3 +1,3 @@
 // Branch editing (issue 8): handles on the plant on screen; loaded on first use (branch-editing-loader.ts).
-export { LazyBranchEditing, type BranchEdits } from './branch-editing-loader';
+export type { BranchEdits } from './branch-editing-loader';
 export { wireBranchEditing } from './wire-branch-editing';

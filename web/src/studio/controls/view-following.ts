@@ -5,7 +5,7 @@
 // every step as it appears.
 import type { Bounds } from '../../core';
 import type { PlantView } from '../../view';
-import type { Playback } from './playback';
+import type { Playback } from '../../plant-controls';
 import type { BuildResult } from '../../build';
 
 /** How Play frames the plant: `last`: in the last step's frame from the start; `each`: every step fitted. */

@@ -7,7 +7,7 @@ import { growthAttributes } from '../../editor/growth-directives';
 import type { DerivationControls } from '../derivation';
 import type { StudioElements } from '../page';
 import { GrowthPanel } from './growth-panel';
-import type { SliderPanel } from './sliders';
+import type { SliderPanel } from '../../plant-controls';
 
 /** What the panels read and write. */
 export interface VocabularyPanelParts {

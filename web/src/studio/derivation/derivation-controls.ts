@@ -8,7 +8,7 @@ import { directiveOfKind, languageVocabulary, type Diagnostic, type PlantBuild }
 import { findDirective } from '../../editor/growth-directives';
 import type { SharedState } from '../../share';
 import type { Notice } from '../page';
-import { Playback } from '../controls';
+import { Playback } from '../../plant-controls';
 
 /** The controls (see index.html). */
 export interface DerivationElements {

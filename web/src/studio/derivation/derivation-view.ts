@@ -9,7 +9,9 @@ import './derivation-view.css';
 import { NOT_REWRITTEN, type DerivationStep, type PlantBuild, type PlantInspector } from '../../core';
 import { cssColour, PRODUCTION_COLOURS } from '../../view/highlight';
 import { shortModuleText } from './module-text';
-import { plural } from '../preview';
+// Loaded on demand: it imports other areas' files, not their indexes, which would bring their
+// wiring into its chunk's graph (and split the first load into more files).
+import { plural } from '../preview/status';
 
 /** The whole derivation is shown when its steps hold this many modules or fewer together. */
 export const SEQUENCE_MAX_MODULES = 4_000;

@@ -6,7 +6,9 @@ import { MODEL_FORMATS, type ExportOptions, type ModelFormat, type SvgLook } fro
 import type { PictureLook, PlantView } from '../../view';
 import { afterPaint, fileSize, paperPixels, pictureSize, saveFile, withResolution, type PaperChoice } from './downloads';
 import { createExportWorker, describeProgress, runExport } from './export-client';
-import { closeLikeAMenu } from '../page';
+// Loaded on demand: it imports other areas' files, not their indexes, which would bring their
+// wiring into its chunk's graph (and split the first load into more files).
+import { closeLikeAMenu } from '../page/menus';
 
 /** The menu and the export's status (see index.html). */
 export interface DownloadMenuElements {

@@ -7,4 +7,4 @@ export { browserStorage } from './browser-storage';
 export { INITIAL_EXAMPLE } from './initial-example';
 export { keptSentence, restoreAutosave, type TextKeeper } from './keeping';
 export type { OpenedText, TextOpening } from './text-opening';
-export { MAX_FILE_BYTES, decodeText, lsysFileName, saveGrammarFile } from './grammar-files';
+export { saveGrammarFile } from './grammar-files';

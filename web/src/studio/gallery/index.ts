@@ -2,4 +2,4 @@
 // with thumbnails (loaded when first opened: gallery-loader.ts).
 export { lazyGallery } from './gallery-loader';
 export { fetchExample } from './gallery';
-export { galleryManifest, parseExampleHeader, type GalleryEntry } from './gallery-manifest';
+export type { GalleryEntry } from './gallery-manifest';

@@ -7,8 +7,10 @@ import './learn-panel.css';
 import type { PlantBuild, PlantInspector } from '../../core';
 import { chapterHeading, isLesson, isLessonIndex, type Lesson, type LessonGrammar, type LessonSummary, type LessonTask } from './lesson-manifest';
 import { evaluateCheck, parseCheck, plantFacts, spokenAnswer } from './lesson-check';
-import { byId, focusableCode } from '../page';
-// Deep: the thumbnails load with the panel, so the gallery's index does not re-export them.
+// Loaded on demand: it imports other areas' files, not their indexes, which would bring their
+// wiring into its chunk's graph (and split the first load into more files).
+import { byId } from '../page/page-elements';
+import { focusableCode } from '../page/focusable-code';
 import { GalleryThumbnails } from '../gallery/thumbnails';
 
 /** The list of lessons, relative to the page (built by scripts/lessons-plugin.ts). */

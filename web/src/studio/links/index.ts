@@ -3,4 +3,3 @@
 // share-dialog and embed-snippets are not re-exported: they load with the first share.
 export { startingText, type StartingText } from './link-opening';
 export { wireLinks } from './wire-links';
-export { linkWithFragment } from './share-button';

@@ -6,7 +6,8 @@ import type { PlantView } from '../../view';
 import type { BranchEdits } from '../branches';
 import type { DerivationControls } from '../derivation';
 import type { LivePreview } from '../preview';
-import type { SliderPanel, ViewOptions } from '../controls';
+import type { SliderPanel } from '../../plant-controls';
+import type { ViewOptions } from '../controls';
 
 /** The pieces that keep what a link holds. */
 export interface LinkStateParts {

@@ -4,7 +4,9 @@
 // that would be refused (too long for a link, most often) is never offered; the dialog says why
 // and offers the grammar as a file instead. The dialog loads with the first share (issue 22: the
 // first plant needs none of it); the button, and making the link, are ./share-button.ts.
-import { saveGrammarFile } from '../files';
+// Loaded on demand: it imports other areas' files, not their indexes, which would bring their
+// wiring into its chunk's graph (and split the first load into more files).
+import { saveGrammarFile } from '../files/grammar-files';
 
 /** The dialog's elements (see index.html). */
 export interface ShareDialogElements {

@@ -2,10 +2,9 @@
 // loads on first use (dialogs, the Help panel), the test hook, "a new version is ready".
 // help-panel is not re-exported as code: it loads when first opened (help-loader.ts).
 export { byId, studioElements, type StudioElements } from './page-elements';
-export { Notice, type NoticeKind } from './notice';
+export { Notice } from './notice';
 export { askToDownload, askToReplace, type QuestionDialog } from './confirm';
 export { closeLikeAMenu } from './menus';
-export { focusableCode } from './focusable-code';
 export { lazyDialog, onDemand, type LazyDialog } from './on-demand';
 export { lazyHelp, type HelpOpener } from './help-loader';
 export { delay, nextFrame } from './frames';

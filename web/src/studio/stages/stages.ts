@@ -7,9 +7,12 @@ import './stages.css';
 import type { BuildOptions, PlantSketch } from '../../core';
 import type { StageScale } from '../../view/stages-layout';
 import { StagesView, type StagePlant, type StagesGrid } from '../../view/stages-view';
-import { afterPaint, createExportWorker, runExport, saveFile } from '../downloads';
+// Loaded on demand: it imports other areas' files, not their indexes, which would bring their
+// wiring into its chunk's graph (and split the first load into more files).
+import { afterPaint, saveFile } from '../downloads/downloads';
+import { createExportWorker, runExport } from '../downloads/export-client';
 import { stagesSvg, type StageDrawing } from './stages-svg';
-import { growthKey } from '../controls';
+import { growthKey } from '../controls/view-following';
 import type { BuildClient, BuildResult } from '../../build';
 
 /** Most iterations side by side, and most seeds, in one figure. */

@@ -2,7 +2,7 @@
 // dragging rewrites the number in the text (one undo step per drag) and the plant follows. The
 // range is the one in a `// [min, max]` comment, else the default of editor/defines.ts, which
 // stays put while the value moves inside it (so a drag does not rescale its own slider).
-import { defineConstants, formatNumber, type DefineConstant } from '../../editor/defines';
+import { defineConstants, formatNumber, type DefineConstant } from '../editor/defines';
 
 /** A slider's range and step. */
 export interface SliderRange {

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { defineConstants } from '../../editor/defines';
+import { defineConstants } from '../editor/defines';
 import { sliderRanges, type SliderRange } from './sliders';
 
 describe('sliderRanges', () => {
