@@ -2,7 +2,6 @@
 // wires each area to them by one call, then starts: the first plant, then what it did not need.
 // See index.html for the page, ARCHITECTURE.md for the areas.
 import './style.css';
-import { registerSW } from 'virtual:pwa-register';
 import { BuildClient, createBuildWorker } from './build';
 import { coreVersion, initCore, loadVocabulary } from './core';
 import { createLazyGrammarEditor } from './editor/grammar-text';
@@ -14,7 +13,7 @@ import { loadDownloads } from './studio/downloads';
 import { Autosave, browserKeeping, createOpening, INITIAL_EXAMPLE, wireFiles } from './studio/files';
 import { installLearnPanel } from './studio/learn';
 import { startingText, wireLinks } from './studio/links';
-import { connectTestHook, delay, emptyTestHook, installAppUpdates, lazyHelp, nextFrame, Notice, studioElements, type StudioElements, type StudioTestHook } from './studio/page';
+import { connectTestHook, delay, emptyTestHook, lazyHelp, loadAppUpdates, nextFrame, Notice, studioElements, type StudioElements, type StudioTestHook } from './studio/page';
 import type { StudioParts } from './studio/parts';
 import { createLivePreview, DiagnosticsFeed, showStatus } from './studio/preview';
 import { PlantView } from './view';
@@ -116,4 +115,4 @@ const firstLoad = new Promise<void>((firstLoadDone) => {
   hook.ready.catch(() => firstLoadDone());
 });
 window.__meristem = hook;
-void firstLoad.then(() => installAppUpdates(registerSW));
+void firstLoad.then(loadAppUpdates);

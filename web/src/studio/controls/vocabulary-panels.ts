@@ -1,12 +1,12 @@
 // What reads the text with the language's vocabulary (the sliders, the Growth panel, the
 // iterations line) starts once it has arrived, after the first plant (issue 22, the first load:
-// core/vocabulary.ts); the text is built meanwhile.
+// core/vocabulary.ts); the text is built meanwhile. The Growth panel's code arrives with it.
 import { loadVocabulary } from '../../core';
 import type { GrammarEditor } from '../../editor/grammar-text';
 import { growthAttributes } from '../../editor/growth-directives';
 import type { DerivationControls } from '../derivation';
 import type { StudioElements } from '../page';
-import { GrowthPanel } from './growth-panel';
+import type { GrowthPanel } from './growth-panel';
 import type { SliderPanel } from '../../plant-controls';
 
 /** What the panels read and write. */
@@ -46,7 +46,7 @@ export class VocabularyPanels {
     this.asked = true;
     this.failed = false;
     try {
-      const vocabulary = await loadVocabulary();
+      const [vocabulary, { GrowthPanel }] = await Promise.all([loadVocabulary(), import('./growth-panel')]);
       this.arrived = true;
       const { els, editor } = this.parts;
       this.growth = new GrowthPanel(

@@ -9,4 +9,4 @@ export { lazyDialog, onDemand, type LazyDialog } from './on-demand';
 export { lazyHelp, type HelpOpener } from './help-loader';
 export { delay, nextFrame } from './frames';
 export { connectTestHook, emptyTestHook, type StudioTestHook } from './test-hook';
-export { installAppUpdates } from './app-update';
+export { loadAppUpdates } from './app-update-loader';
