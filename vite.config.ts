@@ -1,7 +1,7 @@
 // Build and unit-test configuration of the studio.
 // - vite: the page lives in web/ (with embed.html and the <meristem-plant> element, web/src/embed/), the
 //   example gallery in public/ (served as-is), the site is built to dist/ with relative URLs (`base: './'`)
-//   so it works from any sub-path. The build worker (web/src/studio/
+//   so it works from any sub-path. The build worker (web/src/build/
 //   worker.ts) is bundled as an ES module worker. The gallery manifest (examples/index.json) comes
 //   from a plugin (scripts/gallery-plugin.ts), served in dev and emitted in the build; so does the
 //   course (lessons/index.json and lessons/SLUG.json, from public/lessons/*.md: scripts/lessons-plugin.ts),
@@ -16,7 +16,7 @@ import { defineConfig } from 'vitest/config';
 import { galleryManifestPlugin } from './scripts/gallery-plugin.ts';
 import { lessonsPlugin } from './scripts/lessons-plugin.ts';
 import { referencePlugin } from './scripts/reference-plugin.ts';
-import { INITIAL_EXAMPLE } from './web/src/studio/initial-example.ts';
+import { INITIAL_EXAMPLE } from './web/src/studio/files/initial-example.ts';
 
 const repoRoot = fileURLToPath(new URL('.', import.meta.url));
 
@@ -25,7 +25,7 @@ const repoRoot = fileURLToPath(new URL('.', import.meta.url));
  * everything the built site holds — the page, the workers, the core's wasm, the gallery, the
  * lessons, the reference, the textures — and a web app manifest with the icons of public/icons
  * (scripts/make-icons.mjs). `prompt`: a new version waits until the user reloads from the studio's
- * "A new version is ready" bar (web/src/studio/app-update.ts registers it). Every URL is relative,
+ * "A new version is ready" bar (web/src/studio/page/app-update.ts registers it). Every URL is relative,
  * so it works from any sub-path; query strings (embed.html?controls=…) are ignored when matching.
  */
 function offlineApp() {

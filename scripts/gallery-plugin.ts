@@ -5,7 +5,7 @@
 import { readdirSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import type { Plugin } from 'vite';
-import { galleryManifest } from '../web/src/studio/gallery-manifest.ts';
+import { galleryManifest } from '../web/src/studio/gallery/gallery-manifest.ts';
 
 /** Where the manifest is, relative to the page. */
 export const MANIFEST_PATH = 'examples/index.json';

@@ -1,13 +1,13 @@
 // Reads the course's lesson files (public/lessons/*.md; the format is in docs/LESSONS.md) into the
-// data the Learn panel shows (web/src/studio/lesson-manifest.ts). Runs in node, at build time: the
+// data the Learn panel shows (web/src/studio/learn/lesson-manifest.ts). Runs in node, at build time: the
 // Markdown is rendered to HTML here, with `marked`, so no Markdown library ships to the browser, and
 // every check is parsed here, so a malformed lesson fails the build with its file and line.
 import { readdirSync, readFileSync } from 'node:fs';
 import { basename, join, relative } from 'node:path';
 import { Marked, type Token, type Tokens } from 'marked';
-import { parseExampleHeader } from '../web/src/studio/gallery-manifest.ts';
-import { parseCheck } from '../web/src/studio/lesson-check.ts';
-import { compareLessons, type Lesson, type LessonGrammar, type LessonSummary, type LessonTask } from '../web/src/studio/lesson-manifest.ts';
+import { parseExampleHeader } from '../web/src/studio/gallery/gallery-manifest.ts';
+import { parseCheck } from '../web/src/studio/learn/lesson-check.ts';
+import { compareLessons, type Lesson, type LessonGrammar, type LessonSummary, type LessonTask } from '../web/src/studio/learn/lesson-manifest.ts';
 
 /** A problem in a lesson file, located: its message reads `public/lessons/FILE.md:LINE: …`. */
 export class LessonFileError extends Error {

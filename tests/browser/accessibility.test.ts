@@ -8,7 +8,7 @@
 import { AxeBuilder } from '@axe-core/playwright';
 import { chromium, type Browser, type Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, inject, it, vi } from 'vitest';
-import { encodeState } from '../../web/src/share/codec';
+import { encodeState } from '../../web/src/share';
 import { example, pasteText, savePage, studioIn, type StudioPage } from './studio-page';
 
 /** The rules that say "every control has an accessible name": any violation of them fails. */

@@ -6,7 +6,7 @@ import { chromium, type Browser, type Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
 import { decodePng, foregroundShare } from './pictures';
 import { RESULTS, example, VIEW_CANVAS } from './studio-page';
-import { encodeState } from '../../web/src/share/codec';
+import { encodeState } from '../../web/src/share';
 import { writeFileSync } from 'node:fs';
 
 let browser: Browser;

@@ -3,7 +3,7 @@
 // Content-Security-Policy (no inline script, no eval beyond wasm) and draw the plant.
 import { chromium, type Browser } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { encodeState } from '../../web/src/share/codec';
+import { encodeState } from '../../web/src/share';
 import { decodePng, foregroundShare } from './pictures';
 import { serveStatic, type StaticSite } from './static-server';
 import { VIEW_CANVAS } from './studio-page';

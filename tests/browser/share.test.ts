@@ -7,7 +7,7 @@ import { readdirSync, readFileSync } from 'node:fs';
 import { deflateRawSync } from 'node:zlib';
 import { chromium, type Browser, type BrowserContext, type Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
-import { decodeState, MAX_FRAGMENT, type SharedState } from '../../web/src/share/codec';
+import { decodeState, MAX_FRAGMENT, type SharedState } from '../../web/src/share';
 import { editorText, example, generation, nextBuild, openExample, openStudio, openTubesMenu, pasteText, savePage, twoFrames } from './studio-page';
 
 let browser: Browser;

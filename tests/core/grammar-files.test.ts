@@ -1,9 +1,9 @@
-// Opening grammar files through the real core's importers (web/src/studio/grammar-files.ts).
+// Opening grammar files through the real core's importers (web/src/studio/files/grammar-files.ts).
 import { readdirSync, readFileSync } from 'node:fs';
 import { beforeAll, describe, expect, it } from 'vitest';
 import { initCore } from '../../web/src/core';
-import { decodeText, lsysFileName, MAX_FILE_BYTES, openGrammarBytes, openObjectBytes } from '../../web/src/studio/grammar-files';
-import { linkWithFragment } from '../../web/src/studio/share-button';
+import { decodeText, lsysFileName, MAX_FILE_BYTES, openGrammarBytes, openObjectBytes } from '../../web/src/studio/files/grammar-files';
+import { linkWithFragment } from '../../web/src/studio/links/share-button';
 
 beforeAll(async () => {
   await initCore(readFileSync(new URL('../../crate/pkg-core/meristem_core_bg.wasm', import.meta.url)));

@@ -7,8 +7,8 @@ import { describe, expect, it } from 'vitest';
 import { LessonFileError, lessonIndex, readLesson, readLessons } from '../../scripts/lesson-files';
 import { lessonAssets } from '../../scripts/lessons-plugin';
 import { inspectPlant } from '../../web/src/core';
-import { evaluateCheck, parseCheck, plantFacts, spokenAnswer } from '../../web/src/studio/lesson-check';
-import { isLesson, isLessonIndex } from '../../web/src/studio/lesson-manifest';
+import { evaluateCheck, parseCheck, plantFacts, spokenAnswer } from '../../web/src/studio/learn/lesson-check';
+import { isLesson, isLessonIndex } from '../../web/src/studio/learn/lesson-manifest';
 
 const LESSONS_DIR = fileURLToPath(new URL('../../public/lessons', import.meta.url));
 const lessons = readLessons(LESSONS_DIR);

@@ -65,17 +65,33 @@ export interface GrammarEditor {
 /** The module with the full editor (CodeMirror), loaded on demand. */
 export type EditorModule = Pick<typeof import('./grammar-editor'), 'createGrammarEditor'>;
 
-/** The lazy editor's options: the vocabulary arrives with the editor (`core/vocabulary.ts`: after the first plant). */
-export type LazyGrammarEditorOptions = Omit<GrammarEditorOptions, 'vocabulary'> & { vocabulary: () => Promise<Vocabulary> };
+/**
+ * The lazy editor's options: the vocabulary arrives with the editor (`core/vocabulary.ts`: after
+ * the first plant); who hears of changes and of the cursor says so on the editor made
+ * ({@link LazyGrammarEditor.onChange}), so that it can be made before them.
+ */
+export type LazyGrammarEditorOptions = Omit<GrammarEditorOptions, 'vocabulary' | 'onChange' | 'onCursor'> & { vocabulary: () => Promise<Vocabulary> };
+
+/** The grammar text on the page, which tells its listeners of every change and cursor move. */
+export interface LazyGrammarEditor extends GrammarEditor {
+  /** Calls `listener` with the new text after every change of the document. */
+  onChange(listener: (text: string) => void): void;
+  /** Calls `listener` with the cursor's position (UTF-16) whenever it moves or the text changes. */
+  onCursor(listener: (pos: number) => void): void;
+}
 
 /**
  * A grammar text in a plain <textarea> in `options.parent` at once, replaced by the full editor
  * from `load()` when {@link GrammarEditor.loaded} is first read or the user focuses the textarea,
  * with the text and the selection the textarea held then (and the focus, if it had it). Until then
- * every change, typed or made through the methods, calls `options.onChange` as the editor's do;
+ * every change, typed or made through the methods, tells the change listeners as the editor's do;
  * marks and diagnostics wait for the editor.
  */
-export function createLazyGrammarEditor(options: LazyGrammarEditorOptions, load: () => Promise<EditorModule>): GrammarEditor {
+export function createLazyGrammarEditor(options: LazyGrammarEditorOptions, load: () => Promise<EditorModule>): LazyGrammarEditor {
+  const changeListeners: ((text: string) => void)[] = [];
+  const cursorListeners: ((pos: number) => void)[] = [];
+  const onChange = (text: string) => changeListeners.forEach((listener) => listener(text));
+  const onCursor = (pos: number) => cursorListeners.forEach((listener) => listener(pos));
   const area = document.createElement('textarea');
   area.className = 'grammar-placeholder';
   area.dataset.testid = 'grammar-placeholder';
@@ -85,10 +101,11 @@ export function createLazyGrammarEditor(options: LazyGrammarEditorOptions, load:
   area.setAttribute('autocapitalize', 'off');
   area.setAttribute('autocomplete', 'off');
   options.parent.append(area);
-  area.addEventListener('input', () => {
-    options.onChange(area.value);
-    options.onCursor?.(area.selectionStart);
-  });
+  const changed = () => {
+    onChange(area.value);
+    onCursor(area.selectionStart);
+  };
+  area.addEventListener('input', changed);
 
   let full: GrammarEditor | undefined;
   let loading: Promise<void> | undefined;
@@ -98,17 +115,15 @@ export function createLazyGrammarEditor(options: LazyGrammarEditorOptions, load:
       const [start, end] = [area.selectionStart, area.selectionEnd];
       const selection = area.selectionDirection === 'backward' ? { anchor: end, head: start } : { anchor: start, head: end };
       const clamp = (n: number) => Math.min(n, area.value.length);
-      full = module.createGrammarEditor({ ...options, vocabulary, doc: area.value }, { anchor: clamp(selection.anchor), head: clamp(selection.head) });
+      full = module.createGrammarEditor({ ...options, onChange, onCursor, vocabulary, doc: area.value }, { anchor: clamp(selection.anchor), head: clamp(selection.head) });
       area.remove();
       if (hadFocus) full.focus();
     }, reportLoadError));
   area.addEventListener('focus', () => void upgrade(), { once: true });
 
-  const changed = () => {
-    options.onChange(area.value);
-    options.onCursor?.(area.selectionStart);
-  };
   return {
+    onChange: (listener) => void changeListeners.push(listener),
+    onCursor: (listener) => void cursorListeners.push(listener),
     text: () => full?.text() ?? area.value,
     cursor: () => full?.cursor() ?? area.selectionStart,
     focus: () => (full ? full.focus() : area.focus()),

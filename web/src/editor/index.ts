@@ -1,7 +1,7 @@
 // The grammar editor (CodeMirror 6): highlighting of the grammar language, hover docs of turtle
 // commands, and the core's diagnostics. The studio imports `./grammar-text` (a textarea at first)
 // and loads `./grammar-editor` (CodeMirror) after its first plant: importing this index pulls in CodeMirror.
-export { createLazyGrammarEditor, type EditorModule, type GrammarEditor, type GrammarEditorOptions } from './grammar-text';
+export { createLazyGrammarEditor, type EditorModule, type GrammarEditor, type GrammarEditorOptions, type LazyGrammarEditor } from './grammar-text';
 export { createGrammarEditor, type CodeMirrorGrammarEditor } from './grammar-editor';
 export { grammarLanguage, grammarHighlightStyle, grammarTags, grammarSupport } from './language';
 export { commandHover, commandHoverText } from './hover';

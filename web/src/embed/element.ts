@@ -12,7 +12,10 @@ import { EmbedPlant, parseControls } from './embed-plant';
 import { EMBED_CSS } from './embed-style';
 import { sharedBuilds } from './shared-builds';
 
-/** Where this script (and the studio) is: the site's root. */
+/**
+ * Where this script (and the studio) is: the site's root. (So embed/ has no index.ts: vite would
+ * read `new URL('./', import.meta.url)` as that file and inline it.)
+ */
 const SITE_ROOT = new URL('./', import.meta.url).href;
 
 /** A whole number attribute, or undefined. */

@@ -2,7 +2,7 @@
 // (`embed.html#s=…`, what the studio's Share dialog gives) and the controls in the query
 // (`?controls=iterations,sliders`). Nothing but the plant, its controls and "Open in Meristem".
 import { loadVocabulary } from '../core';
-import { decodeState, hasSharedState } from '../share/codec';
+import { decodeState, hasSharedState } from '../share';
 import { EmbedPlant, parseControls } from './embed-plant';
 import { EMBED_CSS } from './embed-style';
 import { sharedBuilds } from './shared-builds';

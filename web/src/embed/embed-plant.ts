@@ -3,10 +3,9 @@
 // the studio. Used by the view-only page (embed.html) and the <meristem-plant> element; the builds
 // go to the page's one shared worker. Small enough for 320 × 240.
 import type { BuildOptions } from '../core';
-import { encodeState } from '../share/codec';
-import { Playback } from '../studio/playback';
-import { SliderPanel } from '../studio/sliders';
-import type { BuildOutcome } from '../studio/worker-client';
+import { encodeState } from '../share';
+import { Playback, SliderPanel } from '../plant-controls';
+import type { BuildOutcome } from '../build';
 import { PlantView } from '../view';
 import type { SharedBuilds } from './shared-builds';
 

@@ -2,7 +2,7 @@
 // Builds run one at a time, in the order they were asked for; a plant's newer request replaces its
 // own waiting one (a slider dragged fast costs at most two builds), never another plant's.
 import type { BuildOptions } from '../core';
-import { BuildClient, createBuildWorker, type BuildOutcome, type WorkerLike } from '../studio/worker-client';
+import { BuildClient, createBuildWorker, type BuildOutcome, type WorkerLike } from '../build';
 
 interface Waiting {
   owner: object;

@@ -1,0 +1,88 @@
+// The controls around the view, wired to the studio's parts: the derivation's and the view's
+// options (a change of either asks for a build, when it meshes), the view's tools, the view
+// following the plant, Stages; the layout for the room; the keyboard.
+import { figureName } from '../downloads';
+import { browserStorage } from '../files';
+import type { LazyDialog } from '../page';
+import type { StudioParts } from '../parts';
+import { LazyStagesMode } from '../stages';
+import { BuildClient, createBuildWorker } from '../../build';
+import { LayoutModes } from './layout-modes';
+import { installShortcuts, renderShortcutHelp, type ShortcutAction } from './shortcuts';
+import { attachSplitter } from './splitter';
+import { ViewFollowing } from './view-following';
+import { ViewTools } from './view-tools';
+
+/** The controls of the view that other areas reach. */
+export interface ViewControls {
+  viewTools: ViewTools;
+  following: ViewFollowing;
+  stages: LazyStagesMode;
+}
+
+/** Connects the options to the builds, and the view's tools, following and Stages to the plant on screen. */
+export function wireViewControls({ els, derivation, viewOptions, view, preview, opening }: StudioParts): ViewControls {
+  derivation.onChange(() => preview.rebuild());
+  const viewTools = new ViewTools(els.viewTools, viewOptions, view);
+  viewOptions.onChange((_, changed) => (changed.has('sides') || changed.has('smoothAll') || changed.has('render')) && preview.rebuild());
+  // The view follows the plant; Play shows the growth in one frame (or frames every step).
+  const following = new ViewFollowing(els.following, view, () => preview.lastGood);
+  following.follow(derivation.playback);
+  // Stages: the iterations side by side, grown in a worker of their own (loaded when first turned on).
+  const stages = new LazyStagesMode(els.stages, {
+    shown: () => preview.lastGood,
+    createClient: () => new BuildClient(createBuildWorker),
+    lighting: () => viewOptions.values.lighting,
+    fileName: () => figureName(opening.currentFile, preview.lastGood?.source),
+    toggled: (on) => viewTools.pauseForStages(on),
+  });
+  viewOptions.onChange((values, changed) => changed.has('lighting') && stages.setLighting(values.lighting));
+  preview.onDelivered((result) => {
+    following.delivered(result);
+    stages.delivered(result);
+    derivation.buildShown(result.build);
+    viewTools.showProjection();
+  });
+  return { viewTools, following, stages };
+}
+
+/** The layout for the room: narrow screens, Large for a projector, fullscreen. */
+export function wireLayout({ els, editor, view }: StudioParts): LayoutModes {
+  const layout = new LayoutModes(
+    els.layout,
+    { remeasureEditor: () => editor.requestMeasure(), largeChanged: (large) => view.setLineScale(large ? 2 : 1) },
+    browserStorage(),
+  );
+  els.stopBuild.addEventListener('click', () => editor.focus()); // the text stays, to edit on
+  els.showProblems.addEventListener('click', () => {
+    layout.showPane('grammar'); // on a narrow screen the list is under the text, in the grammar's pane
+    editor.showProblems();
+  });
+  return layout;
+}
+
+/** What the keyboard reaches beyond the parts. */
+export interface KeyboardTargets extends ViewControls {
+  layout: LayoutModes;
+  gallery: LazyDialog;
+}
+
+/** Keyboard: shortcuts anywhere, their help, the splitter. */
+export function wireKeyboard({ els, derivation, view, help }: StudioParts, { viewTools, stages, layout, gallery }: KeyboardTargets): void {
+  const actions: Record<ShortcutAction, () => void> = {
+    stepBack: () => derivation.playback.stepBy(-1),
+    stepForward: () => derivation.playback.stepBy(+1),
+    playPause: () => derivation.playback.toggle(),
+    reroll: () => derivation.reroll(),
+    gallery: () => gallery.open(),
+    frame: () => view.frame(),
+    projection: () => viewTools.toggleProjection(),
+    stages: () => (stages.open ? stages.close() : stages.show()),
+    fullscreen: () => layout.toggleViewOnly(),
+    large: () => layout.setLarge(!layout.large),
+    help: () => help.open(),
+  };
+  installShortcuts(window, (action) => actions[action]());
+  renderShortcutHelp(els.shortcutList);
+  attachSplitter(els.splitter, els.studio);
+}

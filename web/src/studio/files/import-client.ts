@@ -1,0 +1,100 @@
+// The page's side of the import worker (import-worker.ts): a grammar file of another dialect, or
+// files opened together (a vlab object, an L-Py model, a .zip), is imported in a worker of its own,
+// with a Cancel button in the notice and a time limit, so the page stays responsive however long
+// an importer takes. `.lsys` files need no import: the page reads them itself.
+import type { ObjectFile } from '../../core';
+import { checkGrammarBytes, type OpenedFile } from './grammar-files';
+import type { Notice } from '../page';
+import { runWorkerJob, type JobWorkerLike, type WorkerJob } from '../../build';
+
+/** Page → import worker: the files a worker imports (one grammar file, or an object's files). */
+export interface ImportRequest {
+  files: ObjectFile[];
+}
+
+/** Import worker → page. */
+export type ImportResponse = { kind: 'done'; opened: OpenedFile } | { kind: 'failed'; message: string };
+
+/** How an import ended. */
+export type ImportOutcome = { kind: 'done'; opened: OpenedFile } | { kind: 'failed'; message: string } | { kind: 'cancelled' } | { kind: 'timeout' };
+
+/** What the client needs of a Worker (a fake one in unit tests). */
+export type ImportWorkerLike = JobWorkerLike<ImportRequest, ImportResponse>;
+
+/** Longest an import may run (ms) before it is stopped and said to be too slow. */
+export const IMPORT_TIME_LIMIT = 10_000;
+
+/** An import taking longer than this (ms) shows its notice with Cancel. */
+export const IMPORT_NOTICE_AFTER = 300;
+
+/** Starts a real import worker (vite bundles import-worker.ts as a module worker). */
+export function createImportWorker(): Worker {
+  return new Worker(new URL('./import-worker.ts', import.meta.url), { type: 'module', name: 'meristem-import' });
+}
+
+/** Imports the request's files in a fresh worker from `createWorker`, stopped after `limitMs`. */
+export function runImport(createWorker: () => ImportWorkerLike, request: ImportRequest, limitMs = IMPORT_TIME_LIMIT): WorkerJob<ImportOutcome> {
+  return runWorkerJob<ImportRequest, ImportResponse, ImportOutcome>(createWorker, request, {
+    answer: (response) => (response.kind === 'done' ? { kind: 'done', opened: response.opened } : { kind: 'failed', message: `the importer failed (a bug): ${response.message}` }),
+    failed: (message) => ({ kind: 'failed', message: `the import worker failed: ${message}` }),
+    cancelled: { kind: 'cancelled' },
+    limit: { ms: limitMs, outcome: { kind: 'timeout' } },
+  });
+}
+
+/** What reading a file uses: the worker to import in, the notice that shows the import, its time limit. */
+export interface FileReadingParts {
+  createWorker: () => ImportWorkerLike;
+  notice: Notice;
+  limitMs?: number;
+}
+
+/** What the notice shows about an import (its topic, so that only its own notice is taken back). */
+const IMPORTING = 'importing';
+
+/**
+ * Reads a file the user opened: `.lsys` at once; another dialect imported in a worker, the notice
+ * saying so (with Cancel) once it takes longer than {@link IMPORT_NOTICE_AFTER}. Settles with the
+ * text, or why there is none: a cancelled or too slow import is an `ok: false` with its reason.
+ */
+export async function readGrammarFile(file: File, parts: FileReadingParts): Promise<OpenedFile> {
+  const bytes = new Uint8Array(await file.arrayBuffer());
+  const checked = checkGrammarBytes(file.name, bytes);
+  if (!checked.ok) return checked;
+  if (checked.lsys) return { ok: true, text: checked.text, dialect: null, notes: checked.notes };
+  return importInWorker([{ name: file.name, bytes }], file.name, parts);
+}
+
+/**
+ * Reads files opened together (a dropped folder, several picked files, a `.zip`), called `name`
+ * in the notice: a vlab object or an L-Py model imported whole in a worker, as
+ * {@link readGrammarFile} imports one file.
+ */
+export function readObjectFiles(files: ObjectFile[], name: string, parts: FileReadingParts): Promise<OpenedFile> {
+  return importInWorker(files, name, parts);
+}
+
+/** Imports `files` in a worker, the notice saying so (with Cancel) once it takes a while. */
+async function importInWorker(files: ObjectFile[], name: string, parts: FileReadingParts): Promise<OpenedFile> {
+  const limitMs = parts.limitMs ?? IMPORT_TIME_LIMIT;
+  const job = runImport(parts.createWorker, { files }, limitMs);
+  const shown = setTimeout(() => {
+    parts.notice.show('info', `Importing ${name}…`, [], IMPORTING, [{ label: 'Cancel', testid: 'import-cancel', run: () => job.cancel() }]);
+  }, IMPORT_NOTICE_AFTER);
+  const outcome = await job.done;
+  clearTimeout(shown);
+  parts.notice.hide(IMPORTING);
+  switch (outcome.kind) {
+    case 'done':
+      return outcome.opened;
+    case 'failed':
+      return { ok: false, error: outcome.message };
+    case 'cancelled':
+      return { ok: false, error: 'the import was cancelled; your text is as it was' };
+    case 'timeout':
+      return {
+        ok: false,
+        error: `importing it took longer than ${limitMs / 1000} s, so it was stopped (the file may have more than the importer can translate in time, such as macros that expand into themselves on many lines); your text is as it was`,
+      };
+  }
+}

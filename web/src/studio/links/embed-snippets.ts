@@ -1,0 +1,93 @@
+// The Share dialog's "Embed it in a course page": the HTML that puts the plant on screen into
+// another page, as an <iframe> of embed.html (the state in its fragment, as a share link) or as a
+// <meristem-plant> element with the grammar written in the page. The site's address is the
+// studio's own, so the snippets work wherever the studio is deployed.
+import type { SharedState } from '../../share';
+
+/** Which controls the embedded plant shows (embed-plant.ts's names). */
+export interface SnippetControls {
+  iterations: boolean;
+  sliders: boolean;
+}
+
+function controlList(controls: SnippetControls): string {
+  return [controls.iterations && 'iterations', controls.sliders && 'sliders'].filter(Boolean).join(',');
+}
+
+/** Text as HTML text (the grammar inside the element): `&`, `<`, `>` escaped. */
+function htmlText(text: string): string {
+  return text.replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;');
+}
+
+/** An attribute value in double quotes. */
+function attribute(value: string): string {
+  return `"${value.replace(/&/g, '&amp;').replace(/"/g, '&quot;')}"`;
+}
+
+/** An <iframe> of embed.html showing `fragment`'s state (`#s=…`), 640 × 480, fullscreen allowed. */
+export function frameSnippet(siteRoot: string, fragment: string, controls: SnippetControls): string {
+  const list = controlList(controls);
+  const src = new URL(`embed.html${list ? `?controls=${list}` : ''}${fragment}`, siteRoot).href;
+  return `<iframe src=${attribute(src)} width="640" height="480" style="border: 0; max-width: 100%" title="A plant made with Meristem" allowfullscreen loading="lazy"></iframe>`;
+}
+
+/** The script that defines <meristem-plant>, then one element with `state`'s grammar as its text. */
+export function elementSnippet(siteRoot: string, state: Pick<SharedState, 'text' | 'iterations' | 'seed'>, controls: SnippetControls): string {
+  const script = new URL('meristem-plant.js', siteRoot).href;
+  const list = controlList(controls);
+  const attributes = [
+    state.iterations === undefined ? '' : ` iterations="${state.iterations}"`,
+    state.seed === undefined ? '' : ` seed="${state.seed}"`,
+    list ? ` controls="${list}"` : '',
+  ].join('');
+  return `<script type="module" src=${attribute(script)}></script>\n<meristem-plant${attributes} style="height: 420px">\n${htmlText(state.text.trimEnd())}\n</meristem-plant>`;
+}
+
+/** The dialog's embed section (see index.html). */
+export interface EmbedSnippetElements {
+  iterations: HTMLInputElement;
+  sliders: HTMLInputElement;
+  frame: HTMLTextAreaElement;
+  element: HTMLTextAreaElement;
+  copyFrame: HTMLButtonElement;
+  copyElement: HTMLButtonElement;
+  status: HTMLElement;
+}
+
+export class EmbedSnippets {
+  private shown: { state: SharedState; fragment: string } | undefined;
+
+  constructor(
+    private readonly els: EmbedSnippetElements,
+    /** The studio's folder: where embed.html and meristem-plant.js are. */
+    private readonly siteRoot: string,
+  ) {
+    for (const box of [els.iterations, els.sliders]) box.addEventListener('change', () => this.render());
+    els.copyFrame.addEventListener('click', () => void this.copy(els.frame, 'The frame'));
+    els.copyElement.addEventListener('click', () => void this.copy(els.element, 'The element'));
+  }
+
+  /** Shows the snippets of `state` (`fragment`: its share link's `#s=…`). */
+  show(state: SharedState, fragment: string): void {
+    this.shown = { state, fragment };
+    this.els.status.textContent = '';
+    this.render();
+  }
+
+  private render(): void {
+    if (!this.shown) return;
+    const controls = { iterations: this.els.iterations.checked, sliders: this.els.sliders.checked };
+    this.els.frame.value = frameSnippet(this.siteRoot, this.shown.fragment, controls);
+    this.els.element.value = elementSnippet(this.siteRoot, this.shown.state, controls);
+  }
+
+  private async copy(area: HTMLTextAreaElement, what: string): Promise<void> {
+    area.select();
+    try {
+      await navigator.clipboard.writeText(area.value);
+      this.els.status.textContent = `${what} is on the clipboard.`;
+    } catch {
+      this.els.status.textContent = 'Select the text and copy it (Ctrl+C).';
+    }
+  }
+}

@@ -1,0 +1,80 @@
+// What the page exposes for its end-to-end tests and benchmarks, as `window.__meristem` (nothing
+// else is global). The browser tests read this shape: change it only with them.
+import type { PlantStats } from '../../core';
+import type { PlantView } from '../../view';
+import type { BranchEdits } from '../branches';
+import type { LivePreview } from '../preview';
+
+/** The studio as its tests see it. */
+export interface StudioTestHook {
+  /** Settles when the first build is on screen (rejects if the studio could not start). */
+  ready: Promise<void>;
+  /** Stats of the plant on screen. */
+  lastStats: PlantStats | null;
+  /** `Date.now()` when the first plant (a build with segments) arrived: the first-load test's end. */
+  firstPlantAt?: number;
+  /** The live preview (last builds, delivery events). */
+  preview?: LivePreview;
+  /**
+   * The last frame that drew the plant last given to the view: the delivered-build counter at the
+   * time, and `performance.now()` (frames drawn while a big plant uploads show the one before).
+   */
+  rendered: { generation: number; at: number } | null;
+  /** A big plant is on its way to the GPU: the plant on screen is the one before. */
+  uploading?: () => boolean;
+  /** `performance.now()` at the end of the first frame that drew the last sketch (a big plant as lines). */
+  sketched: number | null;
+  /** The derived string's fingerprint of the plant on screen (share links must reproduce it). */
+  derivedHash?: () => Promise<string>;
+  /** Where the camera in use stands. */
+  cameraPose?: () => { position: number[]; target: number[]; zoom: number };
+  /** Branch editing: the selected branch's handles on the page, its path, and the edits. */
+  branches?: {
+    handlesOnPage: () => { x: number; y: number }[];
+    selectedPath: () => number[] | null;
+    document: () => unknown;
+  };
+}
+
+declare global {
+  interface Window {
+    __meristem?: StudioTestHook;
+  }
+}
+
+/** The hook of a studio that shows nothing yet. */
+export function emptyTestHook(): StudioTestHook {
+  return { ready: Promise.resolve(), lastStats: null, rendered: null, sketched: null };
+}
+
+/** The pieces the hook reports on. */
+export interface TestedStudio {
+  preview: LivePreview;
+  view: PlantView;
+  branchEdits: BranchEdits;
+}
+
+/** Fills `hook` from the studio's pieces and keeps it current as builds arrive and frames are drawn. */
+export function connectTestHook(hook: StudioTestHook, { preview, view, branchEdits }: TestedStudio): void {
+  preview.onDelivered((result) => {
+    if (result.build.ok) hook.lastStats = result.build.stats;
+    if (result.build.ok && result.build.stats.segments > 0) hook.firstPlantAt ??= Date.now();
+  });
+  let sketchPending = false;
+  preview.onSketched(() => (sketchPending = true));
+  view.onRender(() => {
+    const at = performance.now();
+    if (sketchPending) hook.sketched = at;
+    sketchPending = false;
+    if (!view.uploading) hook.rendered = { generation: preview.generation, at };
+  });
+  hook.uploading = () => view.uploading;
+  hook.branches = {
+    handlesOnPage: () => branchEdits.handlesOnPage(),
+    selectedPath: () => branchEdits.selectedPath(),
+    document: () => branchEdits.document() ?? null,
+  };
+  hook.derivedHash = () => preview.lastGood?.inspector.derivedHash() ?? Promise.resolve('');
+  hook.cameraPose = () => view.cameraPose();
+  hook.preview = preview;
+}

@@ -1,0 +1,35 @@
+// The parts of the studio page that its areas share, made once by the composition root (main.ts)
+// and handed to each area's `wire…` call: the areas reach each other only through these.
+import type { LazyGrammarEditor } from '../editor/grammar-text';
+import type { GrammarStore, KeptTexts } from '../share';
+import type { PlantView } from '../view';
+import type { SliderPanel } from '../plant-controls';
+import type { ViewOptions } from './controls';
+import type { ContextView, DerivationControls, LazyDerivationView } from './derivation';
+import type { TextKeeper, TextOpening } from './files';
+import type { HelpOpener, Notice, StudioElements } from './page';
+import type { LivePreview } from './preview';
+
+/** The user's work: the grammars kept in the browser (localStorage, else IndexedDB). */
+export interface KeptWork {
+  store: GrammarStore;
+  kept: KeptTexts;
+  keeper: TextKeeper;
+}
+
+/** What every area of the studio may use. */
+export interface StudioParts extends KeptWork {
+  els: StudioElements;
+  notice: Notice;
+  view: PlantView;
+  viewOptions: ViewOptions;
+  /** The iterations, seed and playback. */
+  derivation: DerivationControls;
+  help: HelpOpener;
+  editor: LazyGrammarEditor;
+  sliders: SliderPanel;
+  contexts: ContextView;
+  derivationView: LazyDerivationView;
+  preview: LivePreview;
+  opening: TextOpening;
+}

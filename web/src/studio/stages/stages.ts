@@ -1,0 +1,274 @@
+// Stages: a view mode that draws iterations a … b of the grammar side by side (ABOP Figs 1.24,
+// 1.30), and with several seeds a row of specimens per seed (Fig. 1.27), every plant at one scale;
+// the figure downloads as one PNG and one SVG. The plants are grown in a build worker of their own
+// (the live preview's keeps serving the editor), one after the other; a change of the grammar, the
+// options or the range starts again and drops what was under way.
+import './stages.css';
+import type { BuildOptions, PlantSketch } from '../../core';
+import type { StageScale } from '../../view/stages-layout';
+import { StagesView, type StagePlant, type StagesGrid } from '../../view/stages-view';
+// Loaded on demand: it imports other areas' files, not their indexes, which would bring their
+// wiring into its chunk's graph (and split the first load into more files).
+import { afterPaint, saveFile } from '../downloads/downloads';
+import { createExportWorker, runExport } from '../downloads/export-client';
+import { stagesSvg, type StageDrawing } from './stages-svg';
+import { growthKey } from '../controls/view-following';
+import type { BuildClient, BuildResult } from '../../build';
+
+/** Most iterations side by side, and most seeds, in one figure. */
+export const MAX_STAGE_COLUMNS = 10;
+export const MAX_STAGE_SEEDS = 8;
+/** A tile of the downloaded PNG, in pixels. */
+const PNG_TILE = { width: 420, height: 560 };
+const PNG_MAX_SIDE = 8192;
+/** The pause after typing in the range before the figure is grown again. */
+const RANGE_TYPING_MS = 300;
+
+/** The controls (see index.html). */
+export interface StagesElements {
+  /** The view tool that turns Stages on and off. */
+  toggle: HTMLButtonElement;
+  /** The panel over the 3D view: the bar and the figure. */
+  panel: HTMLElement;
+  figure: HTMLElement;
+  from: HTMLInputElement;
+  to: HTMLInputElement;
+  seeds: HTMLInputElement;
+  /** `one` scale for all the plants, or `each` fitted to its tile. */
+  scale: HTMLSelectElement;
+  /** What is happening, with `data-state`: `growing`, `done` or `error`. */
+  status: HTMLElement;
+  png: HTMLButtonElement;
+  svg: HTMLButtonElement;
+}
+
+/** What Stages needs of the studio. */
+export interface StagesHost {
+  /** The plant on screen (the last good build): its text and options are the figure's. */
+  shown(): BuildResult | undefined;
+  /** A client of a build worker of its own (not the live preview's), made when Stages opens. */
+  createClient(): BuildClient;
+  /** Whether the plants are lit (the view's Light option). */
+  lighting(): boolean;
+  /** The file name the downloads start with (no extension). */
+  fileName(): string;
+  /** Stages turned on or off (the 3D view's own tools pause meanwhile). */
+  toggled(on: boolean): void;
+}
+
+/** One plant of the figure, as asked of the core. */
+interface Stage {
+  iterations: number;
+  seed: number | undefined;
+  caption: string;
+}
+
+/** The figure a range asks for: its stages (row by row) and grid. */
+export function stagesOf(from: number, to: number, seeds: readonly (number | undefined)[], scale: StageScale = 'one'): { stages: Stage[]; grid: StagesGrid } {
+  const stages: Stage[] = [];
+  const specimens = from === to && seeds.length > 1; // one row of specimens (ABOP Fig. 1.27)
+  for (const seed of seeds)
+    for (let n = from; n <= to; n++) {
+      const caption = specimens ? `seed ${seed}` : seeds.length > 1 ? `n = ${n}, seed ${seed}` : `n = ${n}`;
+      stages.push({ iterations: n, seed, caption });
+    }
+  const grid = specimens ? { columns: seeds.length, rows: 1, scale } : { columns: to - from + 1, rows: seeds.length, scale };
+  return { stages, grid };
+}
+
+function wholeNumber(input: HTMLInputElement): number | undefined {
+  const value = input.valueAsNumber;
+  return Number.isFinite(value) ? Math.floor(value) : undefined;
+}
+
+export class StagesMode {
+  private view: StagesView | undefined;
+  private client: BuildClient | undefined;
+  private ticket = 0;
+  /** What the figure on screen was grown from (a delivered build with another key grows it again). */
+  private key: string | undefined;
+  /** The figure on screen: the text and options, and its stages, for the SVG. */
+  private figure: { source: string; options: BuildOptions; stages: Stage[]; grid: StagesGrid; drawn: boolean[] } | undefined;
+
+  constructor(
+    private readonly els: StagesElements,
+    private readonly host: StagesHost,
+  ) {
+    els.toggle.addEventListener('click', () => (this.open ? this.close() : this.show()));
+    // The figure follows the range as it is typed (after a pause, so "12" is not grown as "1" first).
+    let typing: ReturnType<typeof setTimeout> | undefined;
+    els.scale.addEventListener('change', () => void this.grow());
+    for (const input of [els.from, els.to, els.seeds])
+      input.addEventListener('input', () => {
+        clearTimeout(typing);
+        this.ticket++; // what was being grown is for the old range
+        this.say('growing', 'Growing…');
+        typing = setTimeout(() => void this.grow(), RANGE_TYPING_MS);
+      });
+    els.png.addEventListener('click', () => void this.downloadPng());
+    els.svg.addEventListener('click', () => void this.downloadSvg());
+  }
+
+  get open(): boolean {
+    return this.view !== undefined;
+  }
+
+  /** Turns Stages on: iterations up to the one on screen, five at most, unless a range was set. */
+  show(): void {
+    if (this.open) return;
+    const shown = this.host.shown();
+    if (this.els.to.value === '' && shown) {
+      const n = shown.options.iterations ?? shown.build.grammarIterations;
+      this.els.to.value = String(n);
+      this.els.from.value = String(Math.max(n > 0 ? 1 : 0, n - 4));
+    }
+    if (this.els.seeds.value === '') this.els.seeds.value = '1';
+    this.els.panel.hidden = false;
+    this.els.toggle.setAttribute('aria-pressed', 'true');
+    this.view = new StagesView(this.els.figure);
+    this.client = this.host.createClient();
+    this.view.setLighting(this.host.lighting());
+    this.host.toggled(true);
+    void this.grow();
+  }
+
+  /** Turns Stages off: the 3D view of the plant is back. */
+  close(): void {
+    if (!this.view) return;
+    this.ticket++;
+    this.view.dispose();
+    this.view = undefined;
+    this.client?.dispose(); // its worker and the wasm memory of the stages go
+    this.client = undefined;
+    this.key = undefined;
+    this.figure = undefined;
+    this.els.panel.hidden = true;
+    this.els.toggle.setAttribute('aria-pressed', 'false');
+    this.host.toggled(false);
+  }
+
+  /** A build is on screen: a different text or options grow the figure again. */
+  delivered(result: BuildResult): void {
+    if (this.open && result.build.ok && growthKey(result) !== this.key) void this.grow();
+  }
+
+  /** The view's Light option changed. */
+  setLighting(lit: boolean): void {
+    this.view?.setLighting(lit);
+  }
+
+  private say(state: 'growing' | 'done' | 'error', text: string): void {
+    this.els.status.textContent = text;
+    this.els.status.dataset.state = state;
+  }
+
+  /** The range asked for, or why it cannot be drawn. */
+  private range(): { from: number; to: number; seeds: number } | string {
+    const from = wholeNumber(this.els.from);
+    const to = wholeNumber(this.els.to);
+    const seeds = wholeNumber(this.els.seeds) ?? 1;
+    if (from === undefined || to === undefined || from < 0 || to < 0) return 'Give the first and last iteration (0 or more).';
+    if (from > to) return `The first iteration (${from}) is after the last (${to}).`;
+    if (to - from + 1 > MAX_STAGE_COLUMNS) return `At most ${MAX_STAGE_COLUMNS} iterations side by side (${from} to ${to} is ${to - from + 1}).`;
+    if (seeds < 1 || seeds > MAX_STAGE_SEEDS) return `Seeds: 1 to ${MAX_STAGE_SEEDS}.`;
+    return { from, to, seeds };
+  }
+
+  /** Grows every stage of the range, one after the other, then shows the figure. */
+  private async grow(): Promise<void> {
+    const ticket = ++this.ticket;
+    const shown = this.host.shown();
+    const view = this.view;
+    const client = this.client;
+    if (!view || !client || !shown) return;
+    const range = this.range();
+    if (typeof range === 'string') {
+      this.say('error', range);
+      return;
+    }
+    this.key = growthKey(shown);
+    const { source, options } = shown;
+    const first = options.seed ?? shown.build.seed;
+    const seeds = range.seeds === 1 ? [options.seed] : Array.from({ length: range.seeds }, (_, i) => first + i);
+    const { stages, grid } = stagesOf(range.from, range.to, seeds, this.els.scale.value === 'each' ? 'each' : 'one');
+    const plants: StagePlant[] = [];
+    for (const [i, stage] of stages.entries()) {
+      this.say('growing', `Growing ${stage.caption} (${i + 1} of ${stages.length})…`);
+      // The sketch (the segments as lines) of every stage: drawn with the tubes, it keeps the early,
+      // small stages visible where their tubes are thinner than a pixel.
+      let sketch: PlantSketch | null = null;
+      // Tubes whatever the view's render mode: the figure draws every stage with its tubes.
+      const outcome = await client.request(source, { ...options, tubes: true, iterations: stage.iterations, seed: stage.seed }, { onSketch: (s) => (sketch = s), sketchFrom: 0 });
+      if (ticket !== this.ticket) {
+        if (outcome.kind === 'built') outcome.result.inspector.free();
+        return;
+      }
+      plants.push(this.plantOf(stage, outcome.kind === 'built' ? outcome.result : outcome.kind, sketch));
+    }
+    view.show(plants, grid);
+    this.figure = { source, options, stages, grid, drawn: plants.map((p) => p.mesh !== null) };
+    const missing = plants.filter((p) => !p.mesh).length;
+    const scaled = `${stages.length} plants ${grid.scale === 'one' ? 'at one scale' : 'each fitted to its tile'}`;
+    this.say('done', missing === 0 ? scaled : `${scaled}; ${missing} drew nothing`);
+  }
+
+  private plantOf(stage: Stage, result: BuildResult | 'superseded' | 'crashed' | 'stopped', sketch: PlantSketch | null): StagePlant {
+    const empty: StagePlant = { mesh: null, lines: null, flat: true, bounds: [[0, 0, 0], [0, 0, 0]], caption: stage.caption };
+    if (result === 'superseded' || result === 'stopped') return { ...empty, caption: `${stage.caption}: not grown` };
+    if (result === 'crashed') return { ...empty, caption: `${stage.caption}: the core crashed` };
+    result.inspector.free();
+    const { build } = result;
+    if (!build.ok) return { ...empty, caption: `${stage.caption}: ${build.diagnostics.find((d) => d.severity === 'error')?.message ?? 'errors'}` };
+    const drawn = build.mesh.indices.length > 0 || build.mesh.lines.length > 0;
+    if (!drawn) return { ...empty, caption: `${stage.caption} (nothing drawn)` };
+    return { mesh: build.mesh, gpu: result.gpu, lines: sketch, flat: build.flat, bounds: build.stats.bounds, caption: stage.caption };
+  }
+
+  private async downloadPng(): Promise<void> {
+    const view = this.view;
+    const figure = this.figure;
+    if (!view || !figure) return;
+    const scale = Math.min(1, PNG_MAX_SIDE / (figure.grid.columns * PNG_TILE.width), PNG_MAX_SIDE / (figure.grid.rows * PNG_TILE.height));
+    const width = Math.round(figure.grid.columns * PNG_TILE.width * scale);
+    const height = Math.round(figure.grid.rows * PNG_TILE.height * scale);
+    try {
+      const png = await view.picture(width, height);
+      saveFile(png, `${this.host.fileName()}-stages.png`, 'image/png');
+      this.say('done', `Saved the figure as a ${width} × ${height} PNG`);
+    } catch (error) {
+      this.say('error', `Could not draw the PNG: ${error instanceof Error ? error.message : String(error)}`);
+    }
+  }
+
+  /** Writes each plant's SVG in an export worker (as the Download menu's SVG), then the figure. */
+  private async downloadSvg(): Promise<void> {
+    const figure = this.figure;
+    if (!figure) return;
+    const ticket = this.ticket;
+    const drawings: StageDrawing[] = [];
+    this.els.svg.disabled = true;
+    try {
+      for (const [i, stage] of figure.stages.entries()) {
+        if (!figure.drawn[i]) {
+          drawings.push({ svg: null, caption: stage.caption });
+          continue;
+        }
+        this.say('growing', `Drawing the SVG of ${stage.caption} (${i + 1} of ${figure.stages.length})…`);
+        await afterPaint();
+        const options = { ...figure.options, iterations: stage.iterations, seed: stage.seed };
+        const outcome = await runExport(createExportWorker, { source: figure.source, format: 'svg', options }, () => {}).done;
+        if (ticket !== this.ticket) return;
+        if (outcome.kind !== 'done') throw new Error(outcome.kind === 'failed' ? outcome.message : 'cancelled');
+        drawings.push({ svg: new TextDecoder().decode(outcome.file.bytes), caption: stage.caption });
+      }
+      const name = this.host.fileName();
+      const svg = stagesSvg(drawings, figure.grid.columns, figure.grid.rows, `${name}: stages`, figure.grid.scale);
+      saveFile(new Blob([svg], { type: 'image/svg+xml' }), `${name}-stages.svg`, 'image/svg+xml');
+      this.say('done', `Saved the figure as an SVG`);
+    } catch (error) {
+      this.say('error', `Could not write the SVG: ${error instanceof Error ? error.message : String(error)}`);
+    } finally {
+      this.els.svg.disabled = false;
+    }
+  }
+}
