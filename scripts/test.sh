@@ -35,7 +35,7 @@ count_vitest() { # count_vitest REPORT.json: add a vitest JSON report's totals; 
 
 gate "cargo fmt --check" cargo fmt --manifest-path crate/Cargo.toml --check
 gate "cargo clippy -D warnings" cargo clippy --quiet --manifest-path crate/Cargo.toml --all-targets -- -D warnings
-gate "eslint" eslint web/src tests scripts
+gate "eslint" npm run --silent lint
 echo "::: cargo test"
 cargo test --manifest-path crate/Cargo.toml 2>&1 | tee test-results/cargo.txt
 cargo_status=${PIPESTATUS[0]}
