@@ -1,5 +1,6 @@
-// The TypeScript lint (`npm run lint`: eslint over web/src, tests and scripts; a gate of `npm test`): a small, strict
-// set of rules that keep the house in order, the front end's side of crate/tests/architecture.rs.
+// The TypeScript lint (`npm run lint`: eslint over web/src, tests and scripts; a gate of
+// `npm test`): a small, strict set of rules that keep the house in order, the front end's side of
+// crate/tests/architecture.rs.
 // - Short functions and files: a function over 120 lines (blank and comment lines not counted), a
 //   file over 800 lines, is a sign it holds more than one concept. One that must stay long says why
 //   on the line that lets it: `// eslint-disable-next-line max-lines-per-function -- Long because …`
