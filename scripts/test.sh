@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The one test command (`npm test`): installs the tools npm cannot, then runs every gate and suite
-# (lint, cargo test, the boundary tests under wasm32, vitest with the real wasm, the export files read by their real consumers,
+# (lint: cargo fmt, clippy, eslint; cargo test, the boundary tests under wasm32, vitest with the real wasm, the export files read by their real consumers,
 # browser tests in headless Chromium) even when an earlier one fails, and ends with one line
 # `N passed, N failed` counting them all.
 # Artefacts (screenshots, JSON reports) go to test-results/.
@@ -35,6 +35,7 @@ count_vitest() { # count_vitest REPORT.json: add a vitest JSON report's totals; 
 
 gate "cargo fmt --check" cargo fmt --manifest-path crate/Cargo.toml --check
 gate "cargo clippy -D warnings" cargo clippy --quiet --manifest-path crate/Cargo.toml --all-targets -- -D warnings
+gate "eslint" npm run --silent lint
 echo "::: cargo test"
 cargo test --manifest-path crate/Cargo.toml 2>&1 | tee test-results/cargo.txt
 cargo_status=${PIPESTATUS[0]}

@@ -6,6 +6,8 @@
 //!   `crate::pipeline`) fails the test with the file and line; so does any cycle.
 //! - **Short functions**: no function body is longer than [`MAX_FUNCTION_LINES`] lines unless the
 //!   comment above it says why (`Long because …`).
+//! - **Short files**: no file is longer than [`MAX_FILE_LINES`] lines unless its opening comment
+//!   says why (`Long because …`): a longer file is a sign it holds more than one concept.
 //! - **One vocabulary**: outside `src/vocabulary/`, no string literal is exactly a name of the
 //!   language (a `#directive`, an `@`, `?` or `~` module, a keyword as written), unless its line
 //!   says it is another dialect's word (`// dialect: …`, in the importers); and every directive or
@@ -45,6 +47,9 @@ const RANKS: &[(&str, u32)] = &[
 
 /// The longest a function body may be without a written reason.
 const MAX_FUNCTION_LINES: usize = 80;
+
+/// The longest a source file may be without a written reason.
+const MAX_FILE_LINES: usize = 800;
 
 fn rank(module: &str) -> Option<u32> {
     RANKS.iter().find(|(m, _)| *m == module).map(|&(_, r)| r)
@@ -313,7 +318,7 @@ fn the_dependency_check_finds_an_arrow_back_up() {
     assert_eq!(back_arrows(&source), [(3, "pipeline".to_string())]);
 }
 
-/// Functions longer than the limit: (file, line, name, lines).
+/// Functions longer than the limit: (line, name, lines).
 fn long_functions(source: &Source) -> Vec<(usize, String, usize)> {
     let mut found = Vec::new();
     let lines = &source.code;
@@ -336,44 +341,56 @@ fn long_functions(source: &Source) -> Vec<(usize, String, usize)> {
             .chars()
             .take_while(|c| c.is_alphanumeric() || *c == '_')
             .collect();
-        // The body: from the first `{` after the signature to its matching `}`.
-        let mut depth = 0i32;
-        let mut opened = None;
-        let mut end = None;
-        'scan: for (j, l) in lines.iter().enumerate().skip(k) {
-            for c in l.chars() {
-                match c {
-                    ';' if opened.is_none() => break 'scan,
-                    '{' => {
-                        depth += 1;
-                        opened.get_or_insert(j);
-                    }
-                    '}' => {
-                        depth -= 1;
-                        if depth == 0 && opened.is_some() {
-                            end = Some(j);
-                            break 'scan;
-                        }
-                    }
-                    _ => {}
-                }
-            }
-        }
-        if let (Some(start), Some(end)) = (opened, end) {
-            let length = end - start + 1;
-            let reason = (0..k)
-                .rev()
-                .take_while(|&j| {
-                    source.comments[j].trim_start().starts_with("//")
-                        || lines[j].trim().starts_with("#[")
-                })
-                .any(|j| source.comments[j].contains("Long because"));
-            if length > MAX_FUNCTION_LINES && !reason {
-                found.push((k + 1, name, length));
-            }
+        let Some((start, end)) = body_lines(lines, k) else {
+            continue;
+        };
+        let length = end - start + 1;
+        let reason = (0..k)
+            .rev()
+            .take_while(|&j| {
+                source.comments[j].trim_start().starts_with("//")
+                    || lines[j].trim().starts_with("#[")
+            })
+            .any(|j| source.comments[j].contains("Long because"));
+        if length > MAX_FUNCTION_LINES && !reason {
+            found.push((k + 1, name, length));
         }
     }
     found
+}
+
+/// The first and last line (0-based) of the body of the function whose `fn` is on line `k`, or
+/// `None` when it has none (a trait method's `fn f(&self);`). The signature ends at the first `{`
+/// or `;` outside brackets: the `;` of `[f32; 3]` and the `>` of `->` do not end it. The lines are
+/// code as [`split`] leaves it: comments removed, string and char literals blanked.
+fn body_lines(lines: &[String], k: usize) -> Option<(usize, usize)> {
+    let mut brackets = 0i32; // depth in (), [] and <> while in the signature
+    let mut braces = 0i32;
+    let mut opened = None;
+    for (j, l) in lines.iter().enumerate().skip(k) {
+        let mut previous = ' ';
+        for c in l.chars() {
+            match c {
+                '(' | '[' | '<' if opened.is_none() => brackets += 1,
+                '>' if opened.is_none() && previous == '-' => {}
+                ')' | ']' | '>' if opened.is_none() => brackets -= 1,
+                ';' if opened.is_none() && brackets == 0 => return None,
+                '{' if opened.is_some() || brackets == 0 => {
+                    braces += 1;
+                    opened.get_or_insert(j);
+                }
+                '}' if opened.is_some() => {
+                    braces -= 1;
+                    if braces == 0 {
+                        return opened.map(|start| (start, j));
+                    }
+                }
+                _ => {}
+            }
+            previous = c;
+        }
+    }
+    None
 }
 
 #[test]
@@ -391,6 +408,64 @@ fn functions_are_short_or_say_why_not() {
         problems.is_empty(),
         "functions over {MAX_FUNCTION_LINES} lines without a 'Long because' comment:\n{}",
         problems.join("\n")
+    );
+}
+
+/// The file's length in lines when it is over [`MAX_FILE_LINES`] and its opening comment (the
+/// comment lines before its first line of code) does not say `Long because`.
+fn too_long(source: &Source) -> Option<usize> {
+    let reason = source
+        .code
+        .iter()
+        .zip(&source.comments)
+        .take_while(|(code, _)| code.trim().is_empty())
+        .any(|(_, comment)| comment.contains("Long because"));
+    let length = source.code.len();
+    (length > MAX_FILE_LINES && !reason).then_some(length)
+}
+
+#[test]
+fn files_are_short_or_say_why_not() {
+    let problems: Vec<String> = sources()
+        .iter()
+        .filter_map(|source| {
+            let length = too_long(source)?;
+            Some(format!("{} is {length} lines", source.path.display()))
+        })
+        .collect();
+    assert!(
+        problems.is_empty(),
+        "files over {MAX_FILE_LINES} lines without a 'Long because' in their opening comment:\n{}",
+        problems.join("\n")
+    );
+}
+
+#[test]
+fn the_file_length_check_reads_the_opening_comment() {
+    let body = "fn f() {}\n".repeat(MAX_FILE_LINES);
+    let read = |text: &str| split(PathBuf::from("src/mesh/example.rs"), "mesh".into(), text);
+    assert_eq!(too_long(&read(&body)), None);
+    let long = format!("//! A module.\n{body}");
+    assert_eq!(too_long(&read(&long)), Some(MAX_FILE_LINES + 1));
+    let excused = format!("//! A module.\n//! Long because it is one table.\n\n{body}");
+    assert_eq!(too_long(&read(&excused)), None);
+    let late = format!("{body}// Long because it is too late to say so.\n");
+    assert_eq!(too_long(&read(&late)), Some(MAX_FILE_LINES + 1));
+}
+
+#[test]
+fn the_length_check_reads_signatures_with_arrays_and_arrows() {
+    let body = "    let _ = 1;\n".repeat(MAX_FUNCTION_LINES);
+    let text = format!(
+        "trait T {{\n    fn declared(&self, p: [f32; 3]) -> [f32; 3];\n}}\n\
+         pub fn long(p: [f32; 3], f: impl Fn(u8) -> Vec<u8>) -> [f32; 3] {{\n{body}    p\n}}\n\
+         // Long because the test says so.\nfn excused(p: [f32; 3]) {{\n{body}}}\n\
+         fn short(p: [f32; 3]) -> f32 {{\n    p[0]\n}}\n"
+    );
+    let source = split(PathBuf::from("src/mesh/example.rs"), "mesh".into(), &text);
+    assert_eq!(
+        long_functions(&source),
+        [(4, "long".to_string(), MAX_FUNCTION_LINES + 3)]
     );
 }
 

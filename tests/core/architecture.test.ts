@@ -1,5 +1,9 @@
 // The studio's side of crate/tests/architecture.rs: it reads every non-test file of web/src.
 // - One boundary: only web/src/core/ imports the generated package (crate/pkg).
+// - Areas point one way: each folder of web/src is an area that may import only the areas AREAS
+//   lets it (core ← editor, view, share ← studio, embed ← main.ts, boot.ts), another area only
+//   through its index.ts (a lazy `import()` may name the module it loads: that is where a chunk
+//   of the page starts), and no file imports itself back through a cycle of static imports.
 // - One vocabulary: the studio names no part of the language the core's vocabulary does not have,
 //   and spells none of them for its logic. In the files' literals (strings, templates, regular
 //   expressions; comments are skipped):
@@ -8,7 +12,7 @@
 // - no string literal is exactly a name (a directive, a module of two characters or more, a keyword
 //   as written), and no regular expression contains one: code reads names from the vocabulary.
 import { readdirSync, readFileSync, statSync } from 'node:fs';
-import { join, relative } from 'node:path';
+import { dirname, join, relative } from 'node:path';
 import { describe, expect, it } from 'vitest';
 import { languageVocabulary, writtenDirective, writtenKeyword } from '../../web/src/core';
 
@@ -143,5 +147,174 @@ describe('the studio and the vocabulary', () => {
     expect(spelled).toContain('#define');
     expect(mentioned('use @Foo and #angle, not #fff')).toEqual(['@Foo', '#angle']);
     expect(known.has('@Foo')).toBe(false);
+  });
+});
+
+/** The areas of web/src and the areas each may import (its own is always allowed). */
+const AREAS: Record<string, string[]> = {
+  core: [],
+  editor: ['core'],
+  view: ['core'],
+  share: ['core'],
+  studio: ['core', 'editor', 'view', 'share'],
+  embed: ['core', 'view', 'share'],
+  main: ['core', 'editor', 'view', 'share', 'studio', 'embed'],
+};
+
+/** The area of a file of web/src: its folder, or `main` for the files at the top (main.ts, boot.ts). */
+function areaOf(file: string): string {
+  return file.includes('/') ? file.slice(0, file.indexOf('/')) : 'main';
+}
+
+/** One import of a file: what it names, and how (a lazy `import()` or a worker's URL starts another chunk). */
+interface Import {
+  specifier: string;
+  line: number;
+  kind: 'static' | 'type' | 'lazy' | 'worker';
+}
+
+/** The imports of TypeScript source: `import … from`, `export … from`, bare `import '…'`, `import('…')` and `new Worker(new URL('…', import.meta.url))`. */
+export function imports(source: string): Import[] {
+  const patterns: [RegExp, (m: RegExpMatchArray) => Import['kind']][] = [
+    [/^[ \t]*(?:import|export)\s+(type\s+)?[^;'"]*?\bfrom\s*['"]([^'"]+)['"]/gm, (m) => (m[1] ? 'type' : 'static')],
+    [/^[ \t]*import\s*()['"]([^'"]+)['"]/gm, () => 'static'],
+    [/\bimport\(\s*()['"]([^'"]+)['"]\s*\)/g, () => 'lazy'],
+    [/\bnew\s+(?:Shared)?Worker\(\s*new\s+URL\(\s*()['"]([^'"]+)['"]\s*,\s*import\.meta\.url/g, () => 'worker'],
+  ];
+  return patterns
+    .flatMap(([pattern, kind]) =>
+      [...source.matchAll(pattern)].map((m) => ({
+        specifier: m[2],
+        line: source.slice(0, m.index).split('\n').length,
+        kind: kind(m),
+      })),
+    )
+    .sort((a, b) => a.line - b.line);
+}
+
+/** The file of web/src a relative specifier names (relative to web/src), or undefined for a package or a file elsewhere. */
+function resolve(from: string, specifier: string, known: Set<string>): string | undefined {
+  if (!specifier.startsWith('.')) return undefined;
+  const path = relative(root, join(root, dirname(from), specifier.replace(/\?.*$/, '')));
+  return [path, `${path}.ts`, `${path}/index.ts`].find((candidate) => known.has(candidate));
+}
+
+/** An arrow between two files of web/src. */
+interface Arrow {
+  from: string;
+  to: string;
+  line: number;
+  kind: Import['kind'];
+}
+
+/** Every import of every non-test file of web/src that names another file of web/src. */
+function arrows(sources: Map<string, string>): Arrow[] {
+  const known = new Set(sources.keys());
+  return [...sources].flatMap(([from, source]) =>
+    imports(source).flatMap(({ specifier, line, kind }) => {
+      const to = resolve(from, specifier, known);
+      return to === undefined ? [] : [{ from, to, line, kind }];
+    }),
+  );
+}
+
+/** The arrows that break the table: a forbidden area, or another area's module other than its index.ts. */
+function wrongArrows(all: Arrow[], allowed: Record<string, string[]>): string[] {
+  return all.flatMap(({ from, to, line, kind }) => {
+    const [source, target] = [areaOf(from), areaOf(to)];
+    if (source === target) return [];
+    if (!(source in allowed)) return [`${from}: area ${source} is not in AREAS`];
+    if (!allowed[source].includes(target)) return [`${from}:${line}: ${source} imports ${target} (${to})`];
+    const direct = kind === 'static' || kind === 'type';
+    if (direct && to !== `${target}/index.ts`) return [`${from}:${line}: imports ${to}, not ${target}/index.ts`];
+    return [];
+  });
+}
+
+/** The import cycles among the arrows (static and type imports), each as its files in order, the first repeated at the end. */
+function cycles(all: Arrow[]): string[][] {
+  const next = new Map<string, string[]>();
+  for (const { from, to, kind } of all) {
+    if (kind === 'static' || kind === 'type') next.set(from, [...(next.get(from) ?? []), to]);
+  }
+  // Tarjan's strongly connected components; every component of two files or more (or a file
+  // importing itself) holds a cycle, reported as one path through it.
+  const index = new Map<string, number>();
+  const low = new Map<string, number>();
+  const stack: string[] = [];
+  const found: string[][] = [];
+  const visit = (file: string): void => {
+    index.set(file, index.size);
+    low.set(file, index.get(file)!);
+    stack.push(file);
+    for (const to of next.get(file) ?? []) {
+      if (!index.has(to)) {
+        visit(to);
+        low.set(file, Math.min(low.get(file)!, low.get(to)!));
+      } else if (stack.includes(to)) {
+        low.set(file, Math.min(low.get(file)!, index.get(to)!));
+      }
+    }
+    if (low.get(file) !== index.get(file)) return;
+    const component = stack.splice(stack.indexOf(file));
+    if (component.length > 1 || (next.get(file) ?? []).includes(file)) found.push(cycleThrough(component, next));
+  };
+  for (const file of [...next.keys()].sort()) if (!index.has(file)) visit(file);
+  return found;
+}
+
+/** One cycle inside a strongly connected component: from its first file, breadth-first back to it. */
+function cycleThrough(component: string[], next: Map<string, string[]>): string[] {
+  const inside = new Set(component);
+  const start = [...component].sort()[0];
+  const paths = new Map<string, string[]>([[start, [start]]]);
+  const queue = [start];
+  while (queue.length > 0) {
+    const file = queue.shift()!;
+    for (const to of (next.get(file) ?? []).filter((f) => inside.has(f))) {
+      if (to === start) return [...paths.get(file)!, start];
+      if (!paths.has(to)) {
+        paths.set(to, [...paths.get(file)!, to]);
+        queue.push(to);
+      }
+    }
+  }
+  return [start, start];
+}
+
+describe('the import graph of web/src', () => {
+  const sources = new Map(files(root).map((file) => [relative(root, file), readFileSync(file, 'utf8')]));
+  const all = arrows(sources);
+
+  it('points one way, between areas through their index.ts', () => {
+    expect(wrongArrows(all, AREAS)).toEqual([]);
+  });
+
+  it('has no cycle', () => {
+    expect(cycles(all).map((cycle) => cycle.join(' → '))).toEqual([]);
+  });
+
+  it('finds a wrong arrow and a cycle', () => {
+    const found = imports("import type { A } from './a';\n// import { no } from './comment';\nexport { b } from '../view/b';\nconst c = await import('./c');\nnew Worker(new URL('./w.ts', import.meta.url));\nimport './side';");
+    expect(found.map((i) => [i.kind, i.specifier, i.line])).toEqual([
+      ['type', './a', 1],
+      ['static', '../view/b', 3],
+      ['lazy', './c', 4],
+      ['worker', './w.ts', 5],
+      ['static', './side', 6],
+    ]);
+    const example: Arrow[] = [
+      { from: 'core/a.ts', to: 'view/index.ts', line: 1, kind: 'static' },
+      { from: 'studio/a.ts', to: 'view/camera.ts', line: 2, kind: 'static' },
+      { from: 'studio/a.ts', to: 'view/lazy.ts', line: 3, kind: 'lazy' },
+      { from: 'view/index.ts', to: 'view/b.ts', line: 1, kind: 'static' },
+      { from: 'view/b.ts', to: 'view/c.ts', line: 1, kind: 'type' },
+      { from: 'view/c.ts', to: 'view/index.ts', line: 1, kind: 'static' },
+    ];
+    expect(wrongArrows(example, AREAS)).toEqual([
+      'core/a.ts:1: core imports view (view/index.ts)',
+      'studio/a.ts:2: imports view/camera.ts, not view/index.ts',
+    ]);
+    expect(cycles(example)).toEqual([['view/b.ts', 'view/c.ts', 'view/index.ts', 'view/b.ts']]);
   });
 });

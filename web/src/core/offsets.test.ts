@@ -20,40 +20,17 @@ describe('byteOffsetToUtf16', () => {
     for (let i = 0; i <= text.length; i++) expect(byteOffsetToUtf16(text, i)).toBe(i);
   });
 
-  it('counts 2-byte characters as one unit', () => {
+  // [what, text, [utf8 byte offset, utf16 offset] pairs]
+  it.each<[string, string, [number, number][]]>([
     // "é" is 2 bytes in UTF-8, 1 UTF-16 unit.
-    const text = 'é->F';
-    expect(byteOffsetToUtf16(text, 0)).toBe(0);
-    expect(byteOffsetToUtf16(text, 2)).toBe(1);
-    expect(byteOffsetToUtf16(text, 4)).toBe(3);
-    expect(byteOffsetToUtf16(text, 5)).toBe(4);
-  });
-
-  it('counts 3-byte characters as one unit', () => {
+    ['counts 2-byte characters as one unit', 'é->F', [[0, 0], [2, 1], [4, 3], [5, 4]]],
     // "→" (U+2192, the arrow the grammar accepts) is 3 bytes, 1 unit.
-    const text = 'X → FX';
-    expect(byteOffsetToUtf16(text, 2)).toBe(2);
-    expect(byteOffsetToUtf16(text, 5)).toBe(3);
-    expect(byteOffsetToUtf16(text, 6)).toBe(4);
-    expect(byteOffsetToUtf16(text, 8)).toBe(6);
-  });
-
-  it('counts 4-byte (astral) characters as two units', () => {
-    // "🌱" (U+1F331) is 4 bytes in UTF-8 and a surrogate pair in UTF-16.
-    const text = '// 🌱 sprout\nF';
-    expect(byteOffsetToUtf16(text, 3)).toBe(3);
-    expect(byteOffsetToUtf16(text, 7)).toBe(5);
-    expect(byteOffsetToUtf16(text, 8)).toBe(6);
-    const f = text.indexOf('F');
-    expect(byteOffsetToUtf16(text, new TextEncoder().encode(text).length - 1)).toBe(f);
-  });
-
-  it('maps an offset inside a character to the start of that character', () => {
-    const text = 'a🌱b';
-    expect(byteOffsetToUtf16(text, 2)).toBe(1);
-    expect(byteOffsetToUtf16(text, 3)).toBe(1);
-    expect(byteOffsetToUtf16(text, 4)).toBe(1);
-    expect(byteOffsetToUtf16(text, 5)).toBe(3);
+    ['counts 3-byte characters as one unit', 'X → FX', [[2, 2], [5, 3], [6, 4], [8, 6]]],
+    // "🌱" (U+1F331) is 4 bytes in UTF-8 and a surrogate pair in UTF-16; the last pair is the final F.
+    ['counts 4-byte (astral) characters as two units', '// 🌱 sprout\nF', [[3, 3], [7, 5], [8, 6], [15, 13]]],
+    ['maps an offset inside a character to the start of that character', 'a🌱b', [[2, 1], [3, 1], [4, 1], [5, 3]]],
+  ])('%s', (_, text, pairs) => {
+    expect(pairs.map(([bytes]) => byteOffsetToUtf16(text, bytes))).toEqual(pairs.map(([, units]) => units));
   });
 
   it('maps offsets at and past the end to the length', () => {

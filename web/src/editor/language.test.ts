@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { highlightTree, tagHighlighter, tags } from '@lezer/highlight';
+import { highlightTree, tagHighlighter, tags, type Highlighter } from '@lezer/highlight';
 import { languageVocabulary } from '../core';
 import { grammarLanguage, grammarTags, productionParts } from './language';
 
@@ -24,100 +24,47 @@ const names = tagHighlighter([
   { tag: grammarTags.weight, class: 'weight' },
 ]);
 
-/** The highlighted tokens of `text` as `class:text` strings, in order. */
-function tokens(text: string): string[] {
+/** The highlighted ranges of `text` under a highlighter, in order. */
+function spans(text: string, highlighter: Highlighter): { from: number; to: number; classes: string }[] {
   const tree = grammarLanguage(vocabulary).parser.parse(text);
-  const out: string[] = [];
-  highlightTree(tree, names, (from, to, classes) => out.push(`${classes}:${text.slice(from, to)}`));
+  const out: { from: number; to: number; classes: string }[] = [];
+  highlightTree(tree, highlighter, (from, to, classes) => out.push({ from, to, classes }));
   return out;
 }
 
+/** The highlighted tokens of `text` as `class:text` strings, in order. */
+function tokens(text: string): string[] {
+  return spans(text, names).map(({ from, to, classes }) => `${classes}:${text.slice(from, to)}`);
+}
+
 describe('grammar highlighting', () => {
-  it('classifies every part of a grammar', () => {
-    expect(tokens('// Fig 1.24d\n#angle 20\naxiom: X\np1: X -> F[+X]-X\nF --> FF\nA → B')).toEqual([
-      'comment:// Fig 1.24d',
-      'directive:#angle',
-      'number:20',
-      'keyword:axiom',
-      'module:X',
-      'label:p1',
-      'module:X',
-      'arrow:->',
-      'turtle:F',
-      'bracket:[',
-      'turtle:+',
-      'module:X',
-      'bracket:]',
-      'turtle:-',
-      'module:X',
-      'turtle:F',
-      'arrow:-->',
-      'turtle:FF', // adjacent tokens of one class form one highlighted range
-      'module:A',
-      'arrow:→',
-      'module:B',
-    ]);
-  });
-
-  it('tells turtle commands from other modules', () => {
-    expect(tokens('f & ^ \\ / | G A')).toEqual([
-      'turtle:f',
-      'turtle:&',
-      'turtle:^',
-      'turtle:\\',
-      'turtle:/',
-      'turtle:|',
-      'turtle:G',
-      'module:A',
-    ]);
-    expect(tokens('~l @O @Gc ?P X')).toEqual(['turtle:~l', 'turtle:@O', 'turtle:@Gc', 'turtle:?P', 'module:X']);
-  });
-
-  it('reads parameters, conditions and weights as expressions', () => {
-    expect(tokens('A(x,y) : x >= 2*y -> F(x*0.5)+(30)A(-x)')).toEqual([
-      'module:A',
-      'paren:(',
-      'var:x',
-      'op:,',
-      'var:y',
-      'paren:)',
-      'var:x',
-      'op:>=',
-      'number:2',
-      'op:*',
-      'var:y',
-      'arrow:->',
-      'turtle:F',
-      'paren:(',
-      'var:x',
-      'op:*',
-      'number:0.5',
-      'paren:)',
-      'turtle:+',
-      'paren:(',
-      'number:30',
-      'paren:)',
-      'module:A',
-      'paren:(',
-      'op:-',
-      'var:x',
-      'paren:)',
-    ]);
-    expect(tokens('F -> (0.25) F[+F]')).toEqual([
-      'turtle:F',
-      'arrow:->',
-      'paren weight:(',
-      'number weight:0.25',
-      'paren weight:)',
-      'turtle:F',
-      'bracket:[',
-      'turtle:+F',
-      'bracket:]',
-    ]);
-  });
-
-  it('ends a production at a trailing comment', () => {
-    expect(tokens('X -> F // grow')).toEqual(['module:X', 'arrow:->', 'turtle:F', 'comment:// grow']);
+  // [what, text, its tokens]
+  it.each<[string, string, string[]]>([
+    [
+      'classifies every part of a grammar',
+      '// Fig 1.24d\n#angle 20\naxiom: X\np1: X -> F[+X]-X\nF --> FF\nA → B',
+      // adjacent tokens of one class form one highlighted range: turtle:FF
+      ['comment:// Fig 1.24d', 'directive:#angle', 'number:20', 'keyword:axiom', 'module:X', 'label:p1', 'module:X', 'arrow:->', 'turtle:F', 'bracket:[', 'turtle:+', 'module:X', 'bracket:]', 'turtle:-', 'module:X', 'turtle:F', 'arrow:-->', 'turtle:FF', 'module:A', 'arrow:→', 'module:B'],
+    ],
+    [
+      'tells turtle commands from other modules',
+      'f & ^ \\ / | G A',
+      ['turtle:f', 'turtle:&', 'turtle:^', 'turtle:\\', 'turtle:/', 'turtle:|', 'turtle:G', 'module:A'],
+    ],
+    ['tells the turtle modules from the others', '~l @O @Gc ?P X', ['turtle:~l', 'turtle:@O', 'turtle:@Gc', 'turtle:?P', 'module:X']],
+    [
+      'reads parameters and conditions as expressions',
+      'A(x,y) : x >= 2*y -> F(x*0.5)+(30)A(-x)',
+      ['module:A', 'paren:(', 'var:x', 'op:,', 'var:y', 'paren:)', 'var:x', 'op:>=', 'number:2', 'op:*', 'var:y', 'arrow:->', 'turtle:F', 'paren:(', 'var:x', 'op:*', 'number:0.5', 'paren:)', 'turtle:+', 'paren:(', 'number:30', 'paren:)', 'module:A', 'paren:(', 'op:-', 'var:x', 'paren:)'],
+    ],
+    [
+      'reads a weight as an expression',
+      'F -> (0.25) F[+F]',
+      ['turtle:F', 'arrow:->', 'paren weight:(', 'number weight:0.25', 'paren weight:)', 'turtle:F', 'bracket:[', 'turtle:+F', 'bracket:]'],
+    ],
+    ['ends a production at a trailing comment', 'X -> F // grow', ['module:X', 'arrow:->', 'turtle:F', 'comment:// grow']],
+  ])('%s', (_, text, expected) => {
+    expect(tokens(text)).toEqual(expected);
   });
 });
 
@@ -129,16 +76,15 @@ const parts = tagHighlighter([
   { tag: grammarTags.condition, class: 'C' },
 ]);
 
+/** The production parts of `text` as `part:text` strings; adjacent tokens of one part are joined: the part is one highlighted run. */
 function partTokens(text: string): string[] {
-  const tree = grammarLanguage(vocabulary).parser.parse(text);
   const out: string[] = [];
-  // Adjacent tokens of one part are joined: the part is one highlighted run.
   let last = { classes: '', to: -1 };
-  highlightTree(tree, parts, (from, to, classes) => {
+  for (const { from, to, classes } of spans(text, parts)) {
     if (classes === last.classes && from === last.to) out[out.length - 1] += text.slice(from, to);
     else out.push(`${classes}:${text.slice(from, to)}`);
     last = { classes, to };
-  });
+  }
   return out;
 }
 

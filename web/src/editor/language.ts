@@ -1,6 +1,6 @@
 // Syntax highlighting of the grammar language as a CodeMirror StreamLanguage, driven by the core's
 // vocabulary (so a command added in Rust is highlighted without touching this file).
-import { HighlightStyle, StreamLanguage, syntaxHighlighting, type StringStream } from '@codemirror/language';
+import { HighlightStyle, StreamLanguage, syntaxHighlighting, type StringStream, type TagStyle } from '@codemirror/language';
 import type { Extension } from '@codemirror/state';
 import { Tag, tags } from '@lezer/highlight';
 import type { Vocabulary } from '../core';
@@ -208,26 +208,43 @@ export function grammarLanguage(vocabulary: Vocabulary): StreamLanguage<LineStat
   });
 }
 
+/** A token in its colour, the CSS variable `--tok-<colour>` (style.css), with any other style. */
+function coloured(tag: Tag, colour: string, style: Omit<TagStyle, 'tag'> = {}): TagStyle {
+  return { tag, color: `var(--tok-${colour})`, ...style };
+}
+
+/** A part of a context-sensitive production: a band of its side's highlight colour, underlined. */
+function contextBand(tag: Tag, side: 'left' | 'right'): TagStyle {
+  return {
+    tag,
+    backgroundColor: `color-mix(in srgb, var(--hl-${side}) 22%, transparent)`,
+    borderBottom: `2px solid var(--hl-${side})`,
+  };
+}
+
+const bold = { fontWeight: '600' };
+const italic = { fontStyle: 'italic' };
+
 /** Colours of the grammar's tokens; CSS variables (see style.css) so light and dark both work. */
 export const grammarHighlightStyle = HighlightStyle.define([
-  { tag: tags.comment, color: 'var(--tok-comment)', fontStyle: 'italic' },
-  { tag: grammarTags.directive, color: 'var(--tok-directive)', fontWeight: '600' },
-  { tag: tags.string, color: 'var(--tok-string)' },
-  { tag: tags.keyword, color: 'var(--tok-keyword)', fontWeight: '600' },
-  { tag: tags.labelName, color: 'var(--tok-label)' },
-  { tag: grammarTags.arrow, color: 'var(--tok-arrow)', fontWeight: '600' },
-  { tag: tags.number, color: 'var(--tok-number)' },
-  { tag: tags.squareBracket, color: 'var(--tok-bracket)', fontWeight: '600' },
-  { tag: grammarTags.turtleCommand, color: 'var(--tok-turtle)' },
-  { tag: grammarTags.module, color: 'var(--tok-module)', fontWeight: '600' },
+  coloured(tags.comment, 'comment', italic),
+  coloured(grammarTags.directive, 'directive', bold),
+  coloured(tags.string, 'string'),
+  coloured(tags.keyword, 'keyword', bold),
+  coloured(tags.labelName, 'label'),
+  coloured(grammarTags.arrow, 'arrow', bold),
+  coloured(tags.number, 'number'),
+  coloured(tags.squareBracket, 'bracket', bold),
+  coloured(grammarTags.turtleCommand, 'turtle'),
+  coloured(grammarTags.module, 'module', bold),
   // The parts of a context-sensitive production, in the colours the 3D view and the panel use.
-  { tag: grammarTags.leftContext, backgroundColor: 'color-mix(in srgb, var(--hl-left) 22%, transparent)', borderBottom: '2px solid var(--hl-left)' },
-  { tag: grammarTags.rightContext, backgroundColor: 'color-mix(in srgb, var(--hl-right) 22%, transparent)', borderBottom: '2px solid var(--hl-right)' },
+  contextBand(grammarTags.leftContext, 'left'),
+  contextBand(grammarTags.rightContext, 'right'),
   { tag: grammarTags.predecessor, textDecoration: 'underline 2px var(--hl-produced)' },
-  { tag: tags.variableName, color: 'var(--tok-variable)', fontStyle: 'italic' },
-  { tag: tags.operator, color: 'var(--tok-operator)' },
+  coloured(tags.variableName, 'variable', italic),
+  coloured(tags.operator, 'operator'),
   { tag: grammarTags.weight, backgroundColor: 'color-mix(in srgb, var(--tok-number) 14%, transparent)', borderRadius: '3px' },
-  { tag: grammarTags.condition, fontStyle: 'italic', backgroundColor: 'color-mix(in srgb, var(--muted) 12%, transparent)' },
+  { tag: grammarTags.condition, ...italic, backgroundColor: 'color-mix(in srgb, var(--muted) 12%, transparent)' },
 ]);
 
 /** The language plus its highlighting, as one editor extension. */

@@ -20,8 +20,7 @@ export const studioEditorTheme = EditorView.theme({
     color: 'var(--muted)',
     borderRight: '1px solid var(--border)',
   },
-  '.cm-activeLine': { backgroundColor: 'var(--editor-active-line)' },
-  '.cm-activeLineGutter': { backgroundColor: 'var(--editor-active-line)' },
+  '.cm-activeLine, .cm-activeLineGutter': { backgroundColor: 'var(--editor-active-line)' },
   '&.cm-focused .cm-selectionBackground, .cm-selectionBackground, ::selection': {
     backgroundColor: 'var(--editor-selection)',
   },
