@@ -47,6 +47,7 @@ const handles = () => page.evaluate(() => window.__meristem!.branches!.handlesOn
 const editsDocument = () => page.evaluate(() => window.__meristem!.branches!.document());
 const isHandleColour = (r: number, g: number, b: number) => r > 200 && g > 70 && g < 180 && b < 90;
 
+// eslint-disable-next-line max-lines-per-function -- Long because its steps are one story on one page, each starting where the last ended
 describe('editing a branch by its Bézier handles', () => {
   let before: Picture;
   let after: Picture;

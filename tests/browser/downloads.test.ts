@@ -102,6 +102,7 @@ afterAll(async () => {
   removeScratch(dir);
 });
 
+// eslint-disable-next-line max-lines-per-function -- Long because its steps are one story on one page, each starting where the last ended
 describe('the Download menu', () => {
   it.each(['wrl', 'glb', 'iv', 'svg'])('%s: the bytes of meristem export', async (format) => {
     const download = await clickDownload(`download-${format}`);

@@ -22,6 +22,7 @@ export const GPU_COMPOSITING = ['--use-angle=swiftshader', '--enable-unsafe-swif
 
 useStudio(GPU_COMPOSITING);
 
+// eslint-disable-next-line max-lines-per-function -- Long because its steps are one story on one page, each starting where the last ended
 describe('typing while a 100,000-segment tree rebuilds', () => {
   it('never blocks the main thread for more than 200 ms and never shows a stale build', async () => {
     // In the Tubes mode: the flat example opens in the Lines mode, which meshes no tubes, and this

@@ -76,6 +76,7 @@ afterAll(async () => {
   await browser?.close();
 });
 
+// eslint-disable-next-line max-lines-per-function -- Long because its steps are one story on one page, each starting where the last ended
 describe('the studio', () => {
   let firstPicture: Picture;
   let afterEdit: Picture;

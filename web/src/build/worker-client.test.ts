@@ -61,7 +61,7 @@ afterEach(() => {
   vi.useRealTimers();
 });
 
-describe('BuildClient', () => {
+describe('BuildClient: delivering builds', () => {
   it('delivers a build and its round trip time', async () => {
     const outcome = client.request('A', { iterations: 3 });
     expect(latest().requests).toEqual([{ kind: 'build', id: 1, source: 'A', options: { iterations: 3 } }]);
@@ -151,7 +151,9 @@ describe('BuildClient', () => {
     latest().answer();
     expect(source(await next)).toBe('fine');
   });
+});
 
+describe('BuildClient: the studio core and kept builds', () => {
   it('has the worker load the studio core once asked, and every worker that replaces it', async () => {
     const first = client.request('A', {});
     expect(latest().messages.filter((m) => m.kind === 'studio-core')).toHaveLength(0);
@@ -245,6 +247,9 @@ describe('BuildClient', () => {
     expect(workers[0].messages.filter((m) => m.kind === 'free'), 'nothing sent to the dead worker').toEqual([]);
   });
 
+});
+
+describe('BuildClient: progress, Stop and failures', () => {
   it("forwards the running request's progress while it is wanted", async () => {
     const told: string[] = [];
     const watch = (name: string) => ({ onProgress: (p: { step: number; steps: number }) => told.push(`${name} ${p.step}/${p.steps}`) });

@@ -2,7 +2,8 @@
 // plants, pan and zoom only), each with its controls and headlight; which is in use, framing one
 // on a box, whether a new plant is framed (the holds on the frame, the "Refit" hint), its pose for
 // a share link, and the keys that move it.
-import { Box3, MathUtils, OrthographicCamera, PerspectiveCamera, Spherical, Vector3, type Scene } from 'three';
+import type { Box3} from 'three';
+import { MathUtils, OrthographicCamera, PerspectiveCamera, Spherical, Vector3, type Scene } from 'three';
 import type { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { CameraControls } from './camera-controls';
 import { flatPose, framePose } from './framing';

@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { Box3, OrthographicCamera, PerspectiveCamera, Vector3 } from 'three';
+import type { OrthographicCamera, PerspectiveCamera} from 'three';
+import { Box3, Vector3 } from 'three';
 import { flatPose, framePose, orthographicCameraOn, perspectiveCameraOn } from './framing';
 
 /** True when every corner of `box` projects inside the camera's view. */

@@ -1,5 +1,6 @@
 // Where to put the camera so a box fills the view.
-import { Box3, MathUtils, OrthographicCamera, PerspectiveCamera, Vector3 } from 'three';
+import type { Box3} from 'three';
+import { MathUtils, OrthographicCamera, PerspectiveCamera, Vector3 } from 'three';
 
 /** A camera placement: eye position, point looked at, and clip planes that suit the distance. */
 export interface CameraPose {

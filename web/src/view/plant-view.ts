@@ -24,6 +24,7 @@ import type { PictureLook } from './snapshot';
 import { View2D } from './view-2d';
 import { FrameLoop, compileAhead, maxPictureSide, viewRenderer } from './view-renderer';
 import { ViewPicking } from './view-picking';
+import type * as Snapshot from './snapshot';
 
 const DARK_SCHEME = '(prefers-color-scheme: dark)';
 
@@ -86,7 +87,7 @@ export class PlantView {
   /** Settles when the OrbitControls are attached (see {@link controlsReady}). */
   private readonly controlsLoaded: Promise<void>;
   /** The pictures' code (./snapshot.ts), once asked for (see {@link pictures}). */
-  private picturesLoaded: Promise<typeof import('./snapshot')> | undefined;
+  private picturesLoaded: Promise<typeof Snapshot> | undefined;
 
   /** `assetBase`: the site's root, where the textures are (default: the page's address). */
   constructor(
@@ -468,7 +469,7 @@ export class PlantView {
    * The pictures' code: a chunk of its own, which no first plant needs (the first load's budget,
    * tests/browser/first-load.test.ts), loaded by the first picture.
    */
-  private pictures(): Promise<typeof import('./snapshot')> {
+  private pictures(): Promise<typeof Snapshot> {
     return (this.picturesLoaded ??= import('./snapshot'));
   }
 

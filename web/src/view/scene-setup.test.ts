@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { MeshBasicMaterial, Vector4, type WebGLRenderer } from 'three';
+import type { Vector4} from 'three';
+import { MeshBasicMaterial, type WebGLRenderer } from 'three';
 import { atLeastAPixelWide, drawnSupersampled } from './scene-setup';
 
 describe('atLeastAPixelWide', () => {

@@ -1,14 +1,15 @@
 // The parts of a plant scene shared by the studio's view and the gallery thumbnails, so both
 // show a plant the same way: materials, and lights that follow the camera.
-import {
+import type {
   Camera,
+  Scene} from 'three';
+import {
   DirectionalLight,
   DoubleSide,
   HemisphereLight,
   type Material,
   MeshBasicMaterial,
   MeshStandardMaterial,
-  Scene,
   Vector4,
 } from 'three';
 
