@@ -8,7 +8,7 @@
 //! so an import never hands the editor a grammar with errors unless it has no axiom at all.
 //! Like the rest of the core, nothing here does IO or panics on any input.
 
-mod cpfg;
+mod abop;
 mod green;
 mod lparser;
 mod vlab;
@@ -88,8 +88,8 @@ pub fn import(text: &str, dialect: Dialect) -> Import {
     match dialect {
         Dialect::Green => green::import(text),
         Dialect::Lparser => lparser::import(text),
-        Dialect::Cpfg => cpfg::import(text, cpfg::Flavour::Cpfg),
-        Dialect::Lpy => cpfg::import(text, cpfg::Flavour::Lpy),
+        Dialect::Cpfg => abop::import(text, abop::Flavour::Cpfg),
+        Dialect::Lpy => abop::import(text, abop::Flavour::Lpy),
     }
 }
 

@@ -2,7 +2,7 @@
 //! follows, `if`/`else` over assignments bind conditional values, and in lpfg's blocks each
 //! `produce` ends a path.
 
-use super::{is_identifier, Env, Importer};
+use super::super::{is_identifier, Env, Importer};
 
 impl Importer {
     /// A statement block, in order: assignments `x = e;` (also `+=` …), which bind `x` for what
@@ -10,14 +10,19 @@ impl Importer {
     /// a conditional expression `((c)?then:else)`; `{…}` groups; `printf` (dropped with a note);
     /// a statement that assigns nothing (no effect in cpfg either: dropped with a note). A loop,
     /// or anything else, is an error (the production is skipped).
-    pub(super) fn block(&mut self, block: &str, env: &mut Env, n: usize) -> Result<(), String> {
+    pub(in crate::import::abop) fn block(
+        &mut self,
+        block: &str,
+        env: &mut Env,
+        n: usize,
+    ) -> Result<(), String> {
         self.statements(block, env, n, 0).map(|_| ())
     }
 
     /// The statements of `text` (see [`Importer::block`]); `depth` bounds the nesting of braces
     /// and `if`s, so that no input exhausts the stack.
     /// Returns whether every path through them ends at lpfg's `produce`.
-    pub(super) fn statements(
+    pub(in crate::import::abop) fn statements(
         &mut self,
         text: &str,
         env: &mut Env,
@@ -213,7 +218,7 @@ impl Importer {
 
 /// The longest value a statement block may give a variable: each use of a variable copies its
 /// value, so `x = x*x;` repeated would double it each time.
-pub(super) const MAX_VALUE: usize = 20_000;
+pub(in crate::import::abop) const MAX_VALUE: usize = 20_000;
 
 /// A statement of a cpfg block, as [`next_statement`] reads it.
 #[derive(Debug, PartialEq)]
@@ -227,7 +232,7 @@ enum Statement<'a> {
 }
 
 /// The byte index of the bracket that closes the one at `open` (`(` or `{`, nesting both).
-pub(super) fn closing(text: &str, open: usize) -> Option<usize> {
+pub(in crate::import::abop) fn closing(text: &str, open: usize) -> Option<usize> {
     let mut depth = 0i32;
     for (i, c) in text.char_indices().skip_while(|(i, _)| *i < open) {
         match c {

@@ -11,7 +11,7 @@
 //! each one's number, worked out once when it was defined. So a chain of macros that each use the
 //! one before twice costs one expansion a link, not a doubling text (issue 19).
 
-use super::Line;
+use super::super::Line;
 
 /// A `#define`.
 #[derive(Clone, Debug)]
@@ -33,7 +33,7 @@ const MAX_EXPANSIONS: usize = 2_000;
 const MAX_LINE: usize = 100_000;
 
 /// The preprocessor's state.
-pub(super) struct Preprocessor<'a> {
+pub(in crate::import::abop) struct Preprocessor<'a> {
     /// The macros defined now, by name (a new `#define` of a name replaces the old one).
     macros: std::collections::HashMap<String, Macro>,
     /// Macro uses replaced by text so far (a measure of the work done: linear in the input).
@@ -298,10 +298,11 @@ impl<'a> Preprocessor<'a> {
         }
         match (self.include)(name) {
             Some(text) => {
-                let included = super::lines(&text, super::Flavour::Cpfg)
-                    .into_iter()
-                    .map(|l| Line { n, ..l })
-                    .collect();
+                let included =
+                    crate::import::abop::prepare::lines(&text, crate::import::abop::Flavour::Cpfg)
+                        .into_iter()
+                        .map(|l| Line { n, ..l })
+                        .collect();
                 self.run(included, depth + 1)
             }
             None => {
@@ -444,7 +445,11 @@ fn arguments(text: &str, at: usize) -> Option<(Vec<String>, usize)> {
 }
 
 /// The body with each parameter (a whole word) replaced by its argument.
-pub(super) fn substitute(body: &str, params: &[String], args: &[String]) -> String {
+pub(in crate::import::abop) fn substitute(
+    body: &str,
+    params: &[String],
+    args: &[String],
+) -> String {
     map_words(body, |word, _, out| {
         match params.iter().position(|p| p == word) {
             Some(k) => out.push_str(args.get(k).map_or("", String::as_str)),

@@ -2,7 +2,9 @@
 //! with `produce` (each path to a `produce` a conditional production) and lpfg's long turtle
 //! names.
 
-use super::{closing, is_identifier, matching, separate, split_top, Env, Importer, Line};
+use super::cpfg::blocks::closing;
+use super::modules::{matching, split_top};
+use super::{is_identifier, separate, Env, Importer, Line};
 
 impl Importer {
     /// The lines of an L+C (lpfg) file in cpfg's terms: `module` declarations are read (a name

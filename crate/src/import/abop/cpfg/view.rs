@@ -2,13 +2,13 @@
 //! widths and colours, its functions (`func(k, x)`), its colour map; and the notes a `.l` opened
 //! alone needs when it relies on them.
 
-use super::{Flavour, Importer};
+use super::super::{Flavour, Importer};
 use crate::import::number;
 use crate::vocabulary::{name_of, Command, DirectiveKind, Meaning};
 
 impl Importer {
     /// The directives the view and colour files give, after the header.
-    pub(super) fn view_lines(&mut self) {
+    pub(in crate::import::abop) fn view_lines(&mut self) {
         let Some(view) = self.view.clone() else {
             return;
         };
@@ -48,7 +48,7 @@ impl Importer {
     }
 
     /// The axiom's start: the view's initial colour.
-    pub(super) fn initial_colour(&self) -> String {
+    pub(in crate::import::abop) fn initial_colour(&self) -> String {
         match self.view.as_ref().and_then(|v| v.color) {
             Some(c) => format!(
                 "{}({})",
@@ -60,7 +60,7 @@ impl Importer {
     }
 
     /// Notes for a `.l` opened alone: what its view file would have said.
-    pub(super) fn unknown_view(&mut self) {
+    pub(in crate::import::abop) fn unknown_view(&mut self) {
         if self.flavour != Flavour::Cpfg {
             return;
         }
@@ -80,7 +80,7 @@ impl Importer {
 
     /// A module whose meaning depends on the view (turns without an angle, colours) or that cpfg
     /// spells differently (`@Gs`, `@Gc`, `@Ge`); `None` for the others.
-    pub(super) fn view_module(
+    pub(in crate::import::abop) fn view_module(
         &mut self,
         name: &str,
         params: &[String],
@@ -124,7 +124,7 @@ impl Importer {
     }
 
     /// cpfg's `func(k, x)`: function k of the view file, as the `#curve`/`#table` it became.
-    pub(super) fn func(&self, args: &[String]) -> Result<String, String> {
+    pub(in crate::import::abop) fn func(&self, args: &[String]) -> Result<String, String> {
         let [k, x] = args else {
             return Err("cpfg's func(…) takes a function's number and a value".into());
         };

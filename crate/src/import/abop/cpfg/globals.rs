@@ -6,13 +6,13 @@
 //! step's number), which is exactly its value during that step; any other change is noted. An
 //! array becomes a choice by index, written where the array is read.
 
-use super::{Env, Importer, Line};
+use super::super::{Env, Importer, Line};
 use crate::import::number;
 use crate::vocabulary::DirectiveKind;
 
 /// Which block a statement is in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) enum BlockKind {
+pub(in crate::import::abop) enum BlockKind {
     Start,
     StartEach,
     EndEach,
@@ -45,7 +45,7 @@ impl BlockKind {
 
 /// What the global blocks of a file say, read before the file is translated.
 #[derive(Clone, Debug, Default)]
-pub(super) struct Globals {
+pub(in crate::import::abop) struct Globals {
     /// Variables a `StartEach:`/`EndEach:` block steps by a constant: name, step, and whether
     /// after the step (`EndEach:`).
     steps: Vec<(String, String, bool)>,
@@ -62,7 +62,7 @@ pub(super) struct Globals {
 }
 
 /// `Start: {…}` → the block kind and the statements inside the braces.
-pub(super) fn block(code: &str) -> Option<(BlockKind, Vec<String>)> {
+pub(in crate::import::abop) fn block(code: &str) -> Option<(BlockKind, Vec<String>)> {
     let colon = code.find(':')?;
     let keyword: String = code[..colon]
         .chars()
@@ -253,7 +253,7 @@ impl Globals {
 
 impl Importer {
     /// Translates a global block at line `n`; false when the line is none.
-    pub(super) fn global_block(&mut self, code: &str, n: usize) -> bool {
+    pub(in crate::import::abop) fn global_block(&mut self, code: &str, n: usize) -> bool {
         let Some((kind, statements)) = block(code) else {
             return false;
         };
@@ -380,7 +380,8 @@ impl Importer {
         }
         let close = after.rfind('}').unwrap_or(after.len());
         let mut values = Vec::new();
-        for v in super::split_top(&after[open + 1..close.max(open + 1)], ',') {
+        for v in crate::import::abop::modules::split_top(&after[open + 1..close.max(open + 1)], ',')
+        {
             if !v.trim().is_empty() {
                 values.push(self.expression(v, &Env::new())?);
             }
@@ -395,7 +396,7 @@ impl Importer {
     }
 
     /// How many indices the array `name` takes, if it is an array.
-    pub(super) fn array_dimensions(&self, name: &str) -> Option<usize> {
+    pub(in crate::import::abop) fn array_dimensions(&self, name: &str) -> Option<usize> {
         let (_, sizes, _) = self.globals.arrays.iter().find(|(a, _, _)| a == name)?;
         Some(sizes.len() + 1)
     }
@@ -405,7 +406,11 @@ impl Importer {
     /// give one index into its values, row after row, as C lays them out. The value is chosen by
     /// halving the range of indices, so that the choice nests as deep as the logarithm of the
     /// number of values.
-    pub(super) fn array_value(&self, name: &str, indices: &[String]) -> Option<String> {
+    pub(in crate::import::abop) fn array_value(
+        &self,
+        name: &str,
+        indices: &[String],
+    ) -> Option<String> {
         let (_, sizes, values) = self.globals.arrays.iter().find(|(a, _, _)| a == name)?;
         if indices.len() != sizes.len() + 1 || values.is_empty() {
             return None;
