@@ -2,8 +2,8 @@
 //! with a note for every construct that could not be translated, at its line.
 //!
 //! One module per dialect: [`green`] (Green's RL-systems), [`lparser`] (Laurens Lapré's Lparser
-//! `.ls`, positional and keyword formats), [`cpfg`] (the common subset of cpfg `.l` and L-Py
-//! `.lpy`). Each builds its output with an [`Output`], whose [`Output::finish`] checks the text
+//! `.ls`, positional and keyword formats), [`abop`] (ABOP's notation as cpfg `.l`, lpfg and L-Py
+//! `.lpy` write it). Each builds its output with an [`Output`], whose [`Output::finish`] checks the text
 //! with Meristem's own parser and resolver: a line Meristem rejects is commented out and reported,
 //! so an import never hands the editor a grammar with errors unless it has no axiom at all.
 //! Like the rest of the core, nothing here does IO or panics on any input.
