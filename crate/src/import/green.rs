@@ -9,6 +9,7 @@
 //! `Prune`) into Meristem's `@Switch`, `@Pendulum`, `@Repeat`, `@Prune`.
 
 use super::{Import, Output};
+use crate::syntax::PARENTHESES;
 use crate::vocabulary::{name_of, names_of, DirectiveKind, Function, GroupKind, Meaning};
 
 #[derive(Clone, Copy, PartialEq)]
@@ -261,13 +262,17 @@ fn production(rule: &str) -> Option<Production> {
     };
     let left = rule[..start].trim();
     let right = rule[arrow + 2..].trim();
-    let (pattern, condition) = match top_level(left, ':') {
+    let (pattern, condition) = match PARENTHESES.find_char(left, ':') {
         Some(i) => (left[..i].trim(), left[i + 1..].trim()),
         None => (left, ""),
     };
     let predecessor = {
-        let after_left = top_level(pattern, '<').map_or(pattern, |i| &pattern[i + 1..]);
-        let strict = top_level(after_left, '>').map_or(after_left, |i| &after_left[..i]);
+        let after_left = PARENTHESES
+            .find_char(pattern, '<')
+            .map_or(pattern, |i| &pattern[i + 1..]);
+        let strict = PARENTHESES
+            .find_char(after_left, '>')
+            .map_or(after_left, |i| &after_left[..i]);
         modules(strict.trim())
     };
     let pattern = modules(pattern);
@@ -281,20 +286,6 @@ fn production(rule: &str) -> Option<Production> {
         predecessor,
         condition: condition.chars().filter(|c| !c.is_whitespace()).collect(),
     })
-}
-
-/// The byte index of the first `token` outside parentheses.
-fn top_level(text: &str, token: char) -> Option<usize> {
-    let mut depth = 0i32;
-    for (i, c) in text.char_indices() {
-        match c {
-            '(' => depth += 1,
-            ')' => depth -= 1,
-            c if c == token && depth == 0 => return Some(i),
-            _ => {}
-        }
-    }
-    None
 }
 
 /// A module string: `A()` -> `A`, Green's control modules -> Meristem's `@` names; everything

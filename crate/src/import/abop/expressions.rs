@@ -2,8 +2,8 @@
 //! blocks, calls (each dialect's functions, L-Py's trigonometry in radians), operators.
 
 use super::cpfg::cpp;
-use super::modules::{matching, split_top};
-use super::{Env, Flavour, Importer};
+use super::{split_top, Env, Flavour, Importer};
+use crate::syntax::PARENTHESES;
 
 /// `180 / π`: L-Py's trigonometry is Python's, in radians; Meristem's is in degrees.
 pub(in crate::import::abop) const DEGREES: &str = "57.2957795131";
@@ -25,24 +25,16 @@ pub(in crate::import::abop) fn number_end(chars: &[char], start: usize) -> usize
 /// The byte index of `word` standing alone (not part of a longer name), outside parentheses.
 pub(in crate::import::abop) fn find_word(text: &str, word: &str) -> Option<usize> {
     let bytes = text.as_bytes();
-    let mut depth = 0i32;
-    for (i, c) in text.char_indices() {
-        match c {
-            '(' => depth += 1,
-            ')' => depth -= 1,
-            _ => {}
+    PARENTHESES.find_top_level(text, |i, _| {
+        if !text[i..].starts_with(word) {
+            return false;
         }
-        if depth == 0 && text[i..].starts_with(word) {
-            let before = i == 0 || !(bytes[i - 1].is_ascii_alphanumeric() || bytes[i - 1] == b'_');
-            let end = i + word.len();
-            let after =
-                end >= bytes.len() || !(bytes[end].is_ascii_alphanumeric() || bytes[end] == b'_');
-            if before && after {
-                return Some(i);
-            }
-        }
-    }
-    None
+        let before = i == 0 || !(bytes[i - 1].is_ascii_alphanumeric() || bytes[i - 1] == b'_');
+        let end = i + word.len();
+        let after =
+            end >= bytes.len() || !(bytes[end].is_ascii_alphanumeric() || bytes[end] == b'_');
+        before && after
+    })
 }
 
 impl Importer {
@@ -121,7 +113,9 @@ impl Importer {
             return self.array_read(chars, j, &word, env, out);
         }
         if chars.get(j) == Some(&'(') {
-            let close = matching(chars, j).ok_or("a '(' is never closed")?;
+            let close = PARENTHESES
+                .closing_char(chars, j)
+                .ok_or("a '(' is never closed")?;
             let inner: String = chars[j + 1..close].iter().collect();
             let mut args = Vec::new();
             for arg in split_top(&inner, ',') {

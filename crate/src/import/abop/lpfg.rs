@@ -2,9 +2,8 @@
 //! with `produce` (each path to a `produce` a conditional production) and lpfg's long turtle
 //! names.
 
-use super::cpfg::blocks::closing;
-use super::modules::{matching, split_top};
-use super::{is_identifier, separate, Env, Importer, Line};
+use super::{is_identifier, separate, split_top, Env, Importer, Line};
+use crate::syntax::{PARENTHESES, PARENTHESES_AND_BRACES};
 
 impl Importer {
     /// The lines of an L+C (lpfg) file in cpfg's terms: `module` declarations are read (a name
@@ -117,7 +116,9 @@ impl Importer {
                 j += 1;
             }
             let (args, after) = if chars.get(j) == Some(&'(') {
-                let close = matching(&chars, j).ok_or("a '(' is never closed")?;
+                let close = PARENTHESES
+                    .closing_char(&chars, j)
+                    .ok_or("a '(' is never closed")?;
                 (
                     Some(chars[j + 1..close].iter().collect::<String>()),
                     close + 1,
@@ -197,7 +198,7 @@ pub(super) fn is_lpfg(all: &[Line]) -> bool {
 pub(super) fn lpfg_production_parts(code: &str) -> Option<(&str, &str)> {
     let open = code.find('{')?;
     let head = code[..open].trim_end().strip_suffix(':')?.trim();
-    let close = closing(code, open)?;
+    let close = PARENTHESES_AND_BRACES.closing(code, open)?;
     if head.is_empty() || !code[close + 1..].trim().is_empty() {
         return None;
     }

@@ -29,6 +29,7 @@ mod tests;
 
 use super::vlab::View;
 use super::{Import, Output};
+use crate::syntax::{PARENTHESES, PARENTHESES_AND_BRACES};
 use cpfg::globals;
 use lpy::flags;
 use std::collections::HashMap;
@@ -200,19 +201,16 @@ struct Importer {
 
 /// The byte index of the first `token` outside brackets, braces and parentheses.
 fn top_level(text: &str, token: &str) -> Option<usize> {
-    let mut depth = 0i32;
-    let bytes = text.as_bytes();
-    for (i, c) in text.char_indices() {
-        match c {
-            '(' | '{' => depth += 1,
-            ')' | '}' => depth -= 1,
-            _ => {}
-        }
-        if depth == 0 && bytes[i..].starts_with(token.as_bytes()) {
-            return Some(i);
-        }
-    }
-    None
+    PARENTHESES_AND_BRACES.find_str(text, token)
+}
+
+/// Splits at `sep` outside parentheses.
+fn split_top(text: &str, sep: char) -> Vec<&str> {
+    PARENTHESES
+        .split(text, sep)
+        .into_iter()
+        .map(|(_, piece)| piece)
+        .collect()
 }
 
 /// The production arrow: `-->` or `->` outside parentheses; (start, end).

@@ -4,7 +4,8 @@
 
 use super::cpfg::cpfg_symbol;
 use super::lpy::LPY_NAMES;
-use super::{Env, Flavour, Importer};
+use super::{split_top, Env, Flavour, Importer};
+use crate::syntax::PARENTHESES;
 use crate::vocabulary::{module_named, name_of, Command, Meaning};
 
 /// The module name at `chars[start]`, which is `@`, `~` or `?`: `@` and the letters after it
@@ -24,44 +25,6 @@ pub(in crate::import::abop) fn symbol_name(chars: &[char], start: usize) -> (Str
         i += 1;
     }
     (chars[start..i].iter().collect(), i)
-}
-
-/// The index of the ')' that closes the '(' at `open`.
-pub(in crate::import::abop) fn matching(chars: &[char], open: usize) -> Option<usize> {
-    let mut depth = 0;
-    for (k, &c) in chars.iter().enumerate().skip(open) {
-        match c {
-            '(' => depth += 1,
-            ')' => {
-                depth -= 1;
-                if depth == 0 {
-                    return Some(k);
-                }
-            }
-            _ => {}
-        }
-    }
-    None
-}
-
-/// Splits at `sep` outside parentheses.
-pub(in crate::import::abop) fn split_top(text: &str, sep: char) -> Vec<&str> {
-    let mut parts = Vec::new();
-    let mut depth = 0i32;
-    let mut start = 0;
-    for (i, c) in text.char_indices() {
-        match c {
-            '(' => depth += 1,
-            ')' => depth -= 1,
-            c if c == sep && depth == 0 => {
-                parts.push(&text[start..i]);
-                start = i + 1;
-            }
-            _ => {}
-        }
-    }
-    parts.push(&text[start..]);
-    parts
 }
 
 impl Importer {
@@ -140,7 +103,9 @@ impl Importer {
             let mut params = Vec::new();
             let mut has_params = false;
             if chars.get(j) == Some(&'(') {
-                let close = matching(&chars, j).ok_or("a '(' is never closed")?;
+                let close = PARENTHESES
+                    .closing_char(&chars, j)
+                    .ok_or("a '(' is never closed")?;
                 let inner: String = chars[j + 1..close].iter().collect();
                 if name == "@L" {
                     // A text label (`@L("%.f", c)`): Meristem draws no text.

@@ -2,9 +2,9 @@
 //! notation: its guard (statement blocks and condition), its pattern (contexts, new contexts) and
 //! its successor.
 
-use super::cpfg::blocks::closing;
 use super::lpy::literal_parameters;
 use super::{arrow, separate, top_level, Env, Flavour, Importer};
+use crate::syntax::PARENTHESES_AND_BRACES;
 
 impl Importer {
     /// `pred : {pre} cond {post} --> succ : probability` in Meristem's notation.
@@ -107,7 +107,10 @@ impl Importer {
         let mut post = None;
         while !rest.is_empty() {
             if let Some(inner) = rest.strip_prefix('{') {
-                let close = closing(rest, 0).ok_or("a '{' block is never closed")? - 1;
+                let close = PARENTHESES_AND_BRACES
+                    .closing(rest, 0)
+                    .ok_or("a '{' block is never closed")?
+                    - 1;
                 let block = &inner[..close];
                 if condition.trim().is_empty() {
                     self.block(block, &mut env, n)?;

@@ -3,6 +3,7 @@
 //! `produce` ends a path.
 
 use super::super::{is_identifier, Env, Importer};
+use crate::syntax::PARENTHESES_AND_BRACES;
 
 impl Importer {
     /// A statement block, in order: assignments `x = e;` (also `+=` …), which bind `x` for what
@@ -231,24 +232,6 @@ enum Statement<'a> {
     Simple(&'a str),
 }
 
-/// The byte index of the bracket that closes the one at `open` (`(` or `{`, nesting both).
-pub(in crate::import::abop) fn closing(text: &str, open: usize) -> Option<usize> {
-    let mut depth = 0i32;
-    for (i, c) in text.char_indices().skip_while(|(i, _)| *i < open) {
-        match c {
-            '(' | '{' => depth += 1,
-            ')' | '}' => {
-                depth -= 1;
-                if depth == 0 {
-                    return Some(i);
-                }
-            }
-            _ => {}
-        }
-    }
-    None
-}
-
 /// Whether `text` starts with the keyword `word` (not a longer name).
 fn starts_with_word(text: &str, word: &str) -> bool {
     text.starts_with(word)
@@ -264,7 +247,9 @@ fn next_statement(text: &str, depth: usize) -> Result<(Statement<'_>, &str), Str
         return Err("statements nest more than 16 deep".into());
     }
     if text.starts_with('{') {
-        let close = closing(text, 0).ok_or("a '{' block is never closed")?;
+        let close = PARENTHESES_AND_BRACES
+            .closing(text, 0)
+            .ok_or("a '{' block is never closed")?;
         return Ok((Statement::Group(&text[1..close]), &text[close + 1..]));
     }
     if starts_with_word(text, "if") {
@@ -272,7 +257,9 @@ fn next_statement(text: &str, depth: usize) -> Result<(Statement<'_>, &str), Str
         let open = open
             .filter(|&o| text[o..].starts_with('('))
             .ok_or("'if' without '('")?;
-        let close = closing(text, open).ok_or("a '(' is never closed")?;
+        let close = PARENTHESES_AND_BRACES
+            .closing(text, open)
+            .ok_or("a '(' is never closed")?;
         let condition = &text[open + 1..close];
         let after = text[close + 1..].trim_start();
         let (then, rest) = next_statement(after, depth + 1)?;
@@ -296,16 +283,13 @@ fn next_statement(text: &str, depth: usize) -> Result<(Statement<'_>, &str), Str
         }
         return Ok((Statement::If(condition, then_text, None), rest));
     }
-    let mut depth = 0i32;
-    for (i, c) in text.char_indices() {
-        match c {
-            '(' | '{' => depth += 1,
-            ')' | '}' => depth -= 1,
-            ';' if depth <= 0 => return Ok((Statement::Simple(&text[..i]), &text[i + 1..])),
-            _ => {}
-        }
-    }
-    Ok((Statement::Simple(text), ""))
+    let end = PARENTHESES_AND_BRACES
+        .depths(text)
+        .find(|&(_, c, depth)| c == ';' && depth <= 0);
+    Ok(match end {
+        Some((i, _, _)) => (Statement::Simple(&text[..i]), &text[i + 1..]),
+        None => (Statement::Simple(text), ""),
+    })
 }
 
 /// `text` on one line, its runs of white space one space.

@@ -12,6 +12,7 @@
 //! one before twice costs one expansion a link, not a doubling text (issue 19).
 
 use super::super::Line;
+use crate::syntax::ALL_BRACKETS;
 
 /// A `#define`.
 #[derive(Clone, Debug)]
@@ -422,23 +423,18 @@ fn continued(lines: Vec<Line>) -> Vec<Line> {
 /// The arguments of a macro call whose first argument starts at byte `at` (after `(`): split at
 /// top-level commas; with the index of the closing `)`.
 fn arguments(text: &str, at: usize) -> Option<(Vec<String>, usize)> {
-    let mut depth = 0i32;
     let mut args = Vec::new();
     let mut start = at;
-    for (k, c) in text[at..].char_indices() {
+    for (k, c, depth) in ALL_BRACKETS.depths(&text[at..]) {
         let i = at + k;
-        match c {
-            '(' | '[' | '{' => depth += 1,
-            ')' if depth == 0 => {
-                args.push(text[start..i].trim().to_string());
-                return Some((args, i));
-            }
-            ')' | ']' | '}' => depth -= 1,
-            ',' if depth == 0 => {
-                args.push(text[start..i].trim().to_string());
-                start = i + 1;
-            }
-            _ => {}
+        // A `)` that takes the depth below the arguments' closes the call.
+        if c == ')' && depth == -1 {
+            args.push(text[start..i].trim().to_string());
+            return Some((args, i));
+        }
+        if c == ',' && depth == 0 {
+            args.push(text[start..i].trim().to_string());
+            start = i + 1;
         }
     }
     None

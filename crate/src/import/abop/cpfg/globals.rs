@@ -8,6 +8,7 @@
 
 use super::super::{Env, Importer, Line};
 use crate::import::number;
+use crate::syntax::BRACES;
 use crate::vocabulary::DirectiveKind;
 
 /// Which block a statement is in.
@@ -79,21 +80,14 @@ pub(in crate::import::abop) fn block(code: &str) -> Option<(BlockKind, Vec<Strin
 /// Statements split at `;` outside braces.
 fn statements(body: &str) -> Vec<String> {
     let mut out = Vec::new();
-    let mut depth = 0i32;
-    let mut current = String::new();
-    for c in body.chars() {
-        match c {
-            '{' => depth += 1,
-            '}' => depth -= 1,
-            ';' if depth <= 0 => {
-                out.push(std::mem::take(&mut current).trim().to_string());
-                continue;
-            }
-            _ => {}
+    let mut start = 0;
+    for (i, c, depth) in BRACES.depths(body) {
+        if c == ';' && depth <= 0 {
+            out.push(body[start..i].trim().to_string());
+            start = i + 1;
         }
-        current.push(c);
     }
-    out.push(current.trim().to_string());
+    out.push(body[start..].trim().to_string());
     out.retain(|s| !s.is_empty());
     out
 }
@@ -380,8 +374,7 @@ impl Importer {
         }
         let close = after.rfind('}').unwrap_or(after.len());
         let mut values = Vec::new();
-        for v in crate::import::abop::modules::split_top(&after[open + 1..close.max(open + 1)], ',')
-        {
+        for v in super::super::split_top(&after[open + 1..close.max(open + 1)], ',') {
             if !v.trim().is_empty() {
                 values.push(self.expression(v, &Env::new())?);
             }

@@ -2,9 +2,9 @@
 //! (`AXIOM`) become one declared module, several modules (`F(v,n)#(w)`) one production each
 //! with the others as context.
 
-use super::super::modules::matching;
 use super::super::{arrow, top_level, Flavour, Importer, Line};
 use super::cpfg_symbol;
+use crate::syntax::PARENTHESES;
 
 impl Importer {
     /// cpfg's predecessors made of several modules that are letters without parameters
@@ -156,7 +156,7 @@ impl Importer {
                 j += 1;
             }
             if chars.get(j) == Some(&'(') {
-                i = matching(&chars, j)? + 1;
+                i = PARENTHESES.closing_char(&chars, j)? + 1;
             }
             out.push(
                 chars[start..i]

@@ -4,7 +4,7 @@
 use super::super::{is_identifier, Importer, Line};
 use super::bodies::python_local;
 use super::flags::{self, Flag};
-use crate::import::abop::modules::matching;
+use crate::syntax::PARENTHESES;
 
 /// The globals of an L-Py file (assigned at the top level or named by `global`) that nothing
 /// reads: every use is a `global` statement, an assignment to it, or inside a text label `@L(…)`,
@@ -48,7 +48,7 @@ pub(in crate::import::abop) fn without_labels(code: &str) -> String {
     while let Some(at) = out.find("@L(") {
         let chars: Vec<char> = out.chars().collect();
         let open = out[..at + 2].chars().count();
-        let Some(close) = matching(&chars, open) else {
+        let Some(close) = PARENTHESES.closing_char(&chars, open) else {
             break;
         };
         let end: usize = chars[..=close].iter().map(|c| c.len_utf8()).sum();

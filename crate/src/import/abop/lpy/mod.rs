@@ -7,8 +7,8 @@ pub(super) mod bodies;
 pub(super) mod flags;
 pub(super) mod globals;
 
-use super::modules::{matching, split_top};
-use super::{is_identifier, top_level, Env, Importer, Line};
+use super::{is_identifier, split_top, top_level, Env, Importer, Line};
+use crate::syntax::PARENTHESES;
 use crate::vocabulary::{Command, DirectiveKind, Meaning};
 
 /// L-Py's predefined modules with long names that have a Meristem command.
@@ -156,7 +156,7 @@ pub(in crate::import::abop) fn literal_parameters(pattern: &str) -> (String, Vec
     while let Some(open) = rest.find('(') {
         out.push_str(&rest[..=open]);
         let chars: Vec<char> = rest[open..].chars().collect();
-        let Some(close) = matching(&chars, 0) else {
+        let Some(close) = PARENTHESES.closing_char(&chars, 0) else {
             break;
         };
         let inner: String = chars[1..close].iter().collect();
