@@ -16,30 +16,22 @@ pub struct Brackets {
 }
 
 /// Parentheses: parameter lists, calls and grouped expressions.
-pub const PARENTHESES: Brackets = Brackets {
-    opens: "(",
-    closes: ")",
-};
+pub const PARENTHESES: Brackets = Brackets::new("(", ")");
 
 /// Parentheses and braces: cpfg's statement blocks `{ … }` around and in expressions.
-pub const PARENTHESES_AND_BRACES: Brackets = Brackets {
-    opens: "({",
-    closes: ")}",
-};
+pub const PARENTHESES_AND_BRACES: Brackets = Brackets::new("({", ")}");
 
 /// Braces alone: cpfg's blocks of statements, whose parentheses do not matter.
-pub const BRACES: Brackets = Brackets {
-    opens: "{",
-    closes: "}",
-};
+pub const BRACES: Brackets = Brackets::new("{", "}");
 
 /// Parentheses, square brackets and braces: the arguments of a C macro call.
-pub const ALL_BRACKETS: Brackets = Brackets {
-    opens: "([{",
-    closes: ")]}",
-};
+pub const ALL_BRACKETS: Brackets = Brackets::new("([{", ")]}");
 
 impl Brackets {
+    const fn new(opens: &'static str, closes: &'static str) -> Brackets {
+        Brackets { opens, closes }
+    }
+
     /// Whether `c` is one of these brackets, opening or closing.
     pub fn contains(self, c: char) -> bool {
         self.opens.contains(c) || self.closes.contains(c)

@@ -47,6 +47,23 @@ pub(super) fn production(lhs: &str, rhs: &str) -> String {
     }
 }
 
+/// The colours 2 to 13 of Lparser's table, the same in Lparser 2.1 (`Add_default_colors`) and in
+/// the Lparser 4 code's VRML colours.
+const SHARED_COLOURS: [(usize, [f64; 3]); 12] = [
+    (2, [0.8, 0.4, 0.4]),
+    (3, [0.8, 0.8, 0.4]),
+    (4, [0.4, 0.8, 0.4]),
+    (5, [0.4, 0.8, 0.8]),
+    (6, [0.4, 0.4, 0.8]),
+    (7, [0.8, 0.4, 0.8]),
+    (8, [0.2, 0.5, 0.2]),
+    (9, [0.2, 0.5, 0.5]),
+    (10, [0.2, 0.2, 0.5]),
+    (11, [0.5, 0.2, 0.5]),
+    (12, [0.6, 0.2, 0.2]),
+    (13, [0.5, 0.5, 0.5]),
+];
+
 /// Meristem reads `//` after a space as a comment unless it is part of a run of three or more
 /// slashes, so a string that starts with exactly two rolls is written `/ /…` (whitespace between
 /// modules is insignificant).
@@ -281,43 +298,18 @@ impl<'f, 'o> Translator<'f, 'o> {
     pub(super) fn palette(&mut self) {
         let mut table = [[0.5; 3]; 100];
         let defaults: &[(usize, [f64; 3])] = match self.file.format {
-            // Lparser 2.1, Add_default_colors.
-            Format::Keyword => &[
-                (2, [0.8, 0.4, 0.4]),
-                (3, [0.8, 0.8, 0.4]),
-                (4, [0.4, 0.8, 0.4]),
-                (5, [0.4, 0.8, 0.8]),
-                (6, [0.4, 0.4, 0.8]),
-                (7, [0.8, 0.4, 0.8]),
-                (8, [0.2, 0.5, 0.2]),
-                (9, [0.2, 0.5, 0.5]),
-                (10, [0.2, 0.2, 0.5]),
-                (11, [0.5, 0.2, 0.5]),
-                (12, [0.6, 0.2, 0.2]),
-                (13, [0.5, 0.5, 0.5]),
-                (14, [0.75, 0.75, 0.75]),
-                (15, [1.0, 1.0, 1.0]),
-            ],
-            // The Lparser 4 code's VRML colours ("translate colors from lparser to RGB").
+            // Lparser 2.1, Add_default_colors: the shared ones and these.
+            Format::Keyword => &[(14, [0.75, 0.75, 0.75]), (15, [1.0, 1.0, 1.0])],
+            // The Lparser 4 code's VRML colours ("translate colors from lparser to RGB"): the
+            // shared ones and these.
             Format::Positional => &[
                 (1, [0.3, 0.3, 0.3]),
-                (2, [0.8, 0.4, 0.4]),
-                (3, [0.8, 0.8, 0.4]),
-                (4, [0.4, 0.8, 0.4]),
-                (5, [0.4, 0.8, 0.8]),
-                (6, [0.4, 0.4, 0.8]),
-                (7, [0.8, 0.4, 0.8]),
-                (8, [0.2, 0.5, 0.2]),
-                (9, [0.2, 0.5, 0.5]),
-                (10, [0.2, 0.2, 0.5]),
-                (11, [0.5, 0.2, 0.5]),
-                (12, [0.6, 0.2, 0.2]),
-                (13, [0.5, 0.5, 0.5]),
                 (14, [0.7, 0.7, 0.7]),
                 (15, [0.9, 0.9, 0.9]),
             ],
         };
-        for &(i, c) in defaults.iter().chain(self.file.colors.iter()) {
+        let defaults = SHARED_COLOURS.iter().chain(defaults);
+        for &(i, c) in defaults.chain(self.file.colors.iter()) {
             table[i] = c;
         }
         let byte = |v: f64| (v.clamp(0.0, 1.0) * 255.0).round() as u8;
