@@ -390,6 +390,7 @@ fn note_gaps(productions: &[(Production, usize)], variables: &[String], out: &mu
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::import::test_support::assert_resolves_if_it_has_an_axiom;
 
     /// The worked example, as the paper's text prints it.
     const WORKED: &str = "SYSTEM\nDECLARATIONS\n  CONTINUOUS p UNIFORM(0,1)\nAXIOM\n  A(1)B(3)A(5)\nRULES\n  A(x): p<0.4  $\\rightarrow$  A(x+1)\n  A(x): p>0.4  $\\rightarrow$  B(x-1)\n  A(x) < B(y) > A(z) : y<4  $\\rightarrow$  B(x+z)[A(y)]\nEND.\n";
@@ -478,12 +479,7 @@ mod tests {
             "DECLARATIONS\nCONTINUOUS\nDISCRETE 1 x(",
             "AXIOM A\nRULES\nA -> frob(1)\nEND.\nmore",
         ] {
-            let import = import(text);
-            let (file, _) = crate::syntax::parse(&import.text);
-            if file.axiom.is_some() {
-                let (_, d) = crate::model::resolve(&file);
-                assert!(!crate::diagnostics::has_errors(&d), "{text:?}: {d:?}");
-            }
+            assert_resolves_if_it_has_an_axiom(text, &import(text));
         }
         let import = import("AXIOM A\nRULES\nA -> B(frob(1))\nEND.");
         assert!(import

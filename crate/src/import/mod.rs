@@ -11,6 +11,8 @@
 mod abop;
 mod green;
 mod lparser;
+#[cfg(test)]
+mod test_support;
 mod vlab;
 mod zip;
 

@@ -3,6 +3,7 @@
 use super::cpfg::{cpp, cpp_functions};
 use super::prepare::lines;
 use super::*;
+use crate::import::test_support::{assert_resolves, assert_resolves_if_it_has_an_axiom};
 
 /// 200 chained `#define`s, each using the one before twice (through a macro with an
 /// argument, which is expanded), an `#if` on the last, and an axiom drawing it.
@@ -68,23 +69,13 @@ fn body(import: &Import) -> Vec<&str> {
         .collect()
 }
 
-fn resolves(import: &Import) {
-    let (file, d) = crate::syntax::parse(&import.text);
-    let (_, r) = crate::model::resolve(&file);
-    assert!(
-        !crate::diagnostics::has_errors(&d) && !crate::diagnostics::has_errors(&r),
-        "{}\n{d:?}{r:?}",
-        import.text
-    );
-}
-
 #[test]
 fn lpy_reads_undeclared_words_letter_by_letter_and_nests_its_ifs_and_locals() {
     let import = import(
         "Axiom: A(1)\nderivation length: 2\nproduction:\nA(x) :\n    p = min(1, x**2)\n    r = random()\n    if r <= p:\n        produce IB(1-x)\n    else:\n        produce A(x+p)\nB(x) :\n    if x >= 1:\n        if x < 3:\n            produce F(x)\n        else:\n            produce F(1)\n    else:\n        produce B(x+1)\nendlsystem\n",
         Flavour::Lpy,
     );
-    resolves(&import);
+    assert_resolves(&import);
     assert_eq!(
         body(&import)[3..],
         [
@@ -121,7 +112,7 @@ fn a_cpfg_define_continues_over_any_number_of_lines() {
         "#define BOX [F(1) \\\n\t+(90)F(2) \\\n\t+(90)F(3)]\nLsystem: 1\nderivation length: 1\nAxiom: BOX A\nA --> FA\nendlsystem\n",
         Flavour::Cpfg,
     );
-    resolves(&import);
+    assert_resolves(&import);
     assert!(import.notes.is_empty(), "{:?}", import.notes);
     assert!(
         import.text.contains("axiom: [F(1)+(90)F(2)+(90)F(3)]A"),
@@ -136,7 +127,7 @@ fn cpfg_heads_over_several_lines_whole_branch_contexts_and_labels() {
         "Lsystem: 1\nderivation length: 2\nAxiom: N(1)I(0)[I(2)A]I(3)\nN(k) < I(b) : b==0\n\t{f=k*2;} -->\n\tI(f)\nI(b) > [I(c)=]I(d) : b==0 --> I(c+d)@L(\" %.f\", b)\nendlsystem\n",
         Flavour::Cpfg,
     );
-    resolves(&import);
+    assert_resolves(&import);
     assert_eq!(
         body(&import)[2..],
         [
@@ -156,7 +147,7 @@ fn new_contexts_become_ordinary_contexts_with_a_note_that_says_what_changes() {
             "Axiom: A B B\nderivation length: 2\nproduction:\nA << B --> A\nB >> A --> C\nA < B --> B\nendlsystem\n",
             flavour,
         );
-        resolves(&import);
+        assert_resolves(&import);
         let body = body(&import);
         assert!(body.contains(&"A < B -> A"), "{body:?}");
         assert!(body.contains(&"B > A -> C"), "{body:?}");
@@ -183,7 +174,7 @@ fn cpfg_blocks_are_substituted_and_probabilities_become_weights() {
         "#define STEPS 4 /* steps */\n#define R 1.3\nLsystem: 1\nderivation length: STEPS\nignore: +-/\nAxiom: #(0.05)A(0)\nA(t) : {t=t-1;} t>0 --> \n\tI(t)[+(45)A(t)]\nM(t) : 1 {x=0.5*R^t; x+=1;} --> I(x)M(t)\nF --> F[+F]F : 0.3\nB --> *\ndecomposition\nmaximum depth: 2\nhomomorphism: no warnings\nI(x) --> F(x)\nendlsystem\n",
         Flavour::Cpfg,
     );
-    resolves(&import);
+    assert_resolves(&import);
     assert_eq!(
         body(&import),
         [
@@ -221,7 +212,7 @@ fn cpfg_if_blocks_become_conditional_values_and_printf_is_noted() {
         "#define REL 1\nderivation length: 2\nAxiom: A(1,4)\nE : 1 {srand(1);} --> *\nA(x,w) : x<3\n\t{t = 2*x;\n\tif (REL) {t = t/2; w = 0;} else t = t+1;\n\tif (w<t) {w = t;}\n\tprintf(\"%f\", t);\n\tt - 1;\n\t} --> F(t)A(x+1,w)\nendlsystem\n",
         Flavour::Cpfg,
     );
-    resolves(&import);
+    assert_resolves(&import);
     assert!(
         import.text.contains(
             "A(x,w) : x<3 -> F(((REL)?((2*x)/2):((2*x)+1)))A(x+1,((((REL)?(0):w)<((REL)?((2*x)/2):((2*x)+1)))?(((REL)?((2*x)/2):((2*x)+1))):((REL)?(0):w)))"
@@ -274,7 +265,7 @@ fn cpfg_arrays_of_two_dimensions_and_predecessors_of_several_letters() {
         "#define N 3\nLsystem: 1\nDefine: { array len[2][N] = {1, 2, 3, 4, 5, 6}; }\nderivation length: 1\nAxiom: AXIOM\nAXIOM : 1 --> F(len[0][2])F(len[1][0])F(len[1][ 2 ])F(len[5][5])\nendlsystem\n",
         Flavour::Cpfg,
     );
-    resolves(&import);
+    assert_resolves(&import);
     assert!(import.text.contains("#module AXIOM_"), "{}", import.text);
     assert!(import.text.contains("axiom: AXIOM_"), "{}", import.text);
     assert_eq!(import.notes.len(), 1, "{:?}", import.notes);
@@ -293,7 +284,7 @@ fn cpfg_predecessors_of_several_modules_become_contexts_and_axioms_continue() {
         "derivation length: 1\nAxiom: [F(2,0)#(1)]\n\t[F(3,1)#(2)]\nF(v,n)#(w) : n == 0 --> F(v)#(w)@O\n",
         Flavour::Cpfg,
     );
-    resolves(&import);
+    assert_resolves(&import);
     let body = body(&import);
     assert!(
         body.contains(&"axiom: [F(2,0)!(1)][F(3,1)!(2)]"),
@@ -323,7 +314,7 @@ fn cpfg_sections_without_a_depth_get_cpfgs_default_depth_one() {
         "derivation length: 0\nAxiom: h\nhomomorphism\nh --> [F]f\nf --> [F]f\nendlsystem\n",
         Flavour::Cpfg,
     );
-    resolves(&import);
+    assert_resolves(&import);
     assert_eq!(
         body(&import),
         [
@@ -350,7 +341,7 @@ fn cpfg_sections_without_a_depth_get_cpfgs_default_depth_one() {
 fn lpy_flags_set_by_a_production_become_defines_over_the_step() {
     let text = "m = 0\nAxiom: P(0)G\nderivation length: 6\nproduction:\nP(t) :\n    if t < 3: produce P(t+1)\n    else:\n        global m\n        m = 1\n        produce *\nG :\n    if m == 1: produce FG\nendlsystem\n";
     let import = import(text, Flavour::Lpy);
-    resolves(&import);
+    assert_resolves(&import);
     // P(0) → P(1) → P(2) → P(3) in three steps; the fourth erases it and sets m: from the
     // fifth step on, G grows an F a step (steps 5 and 6).
     assert!(
@@ -383,7 +374,7 @@ fn lpfg_blocks_produce_conditional_productions() {
         "#include <lpfgall.h>\n#define PL 0.5\nderivation length: 3;\nmodule A(float);\nmodule Apex(float);\nAxiom: Right(5) SetWidth(0.15) A(1.2) Apex(0);\nproduction:\nApex(t):{ produce Apex(t+1); }\ndecomposition:\nA(t):\n{\n\tt = t - PL;\n\tif(t>0)\n\t\tproduce F(t) SB() Left(30) F(1) EB() A(t);\n\tfloat w = 2*t;\n\tproduce Sphere(w) Frobnicate(1);\n}\n",
         Flavour::Cpfg,
     );
-    resolves(&import);
+    assert_resolves(&import);
     let body = body(&import);
     assert!(body.contains(&"#module Apex"), "{body:?}");
     assert!(
@@ -415,7 +406,7 @@ fn lpy_python_becomes_defines_and_conditional_productions() {
         "import math\nR = 1.456\nh = (0.3*0.7) ** 0.5\n__authors__ = 'C. Godin'\n\nAxiom: _(0.01) ,(2) A(1)\nderivation length: 3\nproduction:\nA(s) --> F(s)[+(85)A(s/R)][-(85)A(s/R)]\nB(t) :\n    if t < 2 and not t == 1: produce B(t+1)\n    elif t == 2:\n        produce C(t if t > 1 else 0)\n    else: produce *\nF(x) : produce F(x/3.)+(60)F(x/3.)\ninterpretation:\nC(t) --> F(sin(t))\nendlsystem\ndef End():\n    print('x')\n",
         Flavour::Lpy,
     );
-    resolves(&import);
+    assert_resolves(&import);
     assert_eq!(
         body(&import),
         [
@@ -451,7 +442,7 @@ fn what_cannot_be_translated_is_reported_at_its_line() {
         "#include \"x.h\"\n#define f(x) x\nAxiom: A(1)\nA(t) : {while (t>1) t=t-1;} t>0 --> B\nA(t) --> @c(1)~k(2)F(frob(1,t))\nendlsystem\nLsystem: 2\n",
         Flavour::Cpfg,
     );
-    resolves(&import);
+    assert_resolves(&import);
     let lines: Vec<usize> = import.notes.iter().map(|n| n.line).collect();
     // `#define f(x) x` is expanded where it is used (line 2 needs no note).
     assert_eq!(lines, [1, 4, 5, 5, 5, 7], "{:?}", import.notes);
@@ -466,7 +457,7 @@ fn lpy_helpers_tuples_and_the_iteration_number_are_translated() {
         "def long(x):\n  return 2*x\ndef alpha(x): return 30\nTOP, dr = 10, 0.02\nAxiom: A(1)\nderivation length: 3\nproduction:\nA(n) :\n  if(n < TOP): produce F(long(n))+(alpha(n))A(n+dr)\nB(n) --> B(getIterationNb())\nendlsystem\n",
         Flavour::Lpy,
     );
-    resolves(&import);
+    assert_resolves(&import);
     assert_eq!(
         body(&import),
         [
@@ -488,7 +479,7 @@ fn lpy_helpers_tuples_and_the_iteration_number_are_translated() {
         "Axiom: D(20,1)\nderivation length: 2\nproduction:\nD(20,k) : k > 0 --> D(20,k+1)F\nD(x,k) --> D(x,k)\nendlsystem\n",
         Flavour::Lpy,
     );
-    resolves(&literal);
+    assert_resolves(&literal);
     assert!(
         literal
             .text
@@ -504,7 +495,7 @@ fn lpy_bodies_with_other_code_are_skipped_whole() {
         "Axiom: A(0)\nA(t) :\n    x = t + 1\n    produce A(x)\nA(t) :\n    nproduce B\n",
         Flavour::Lpy,
     );
-    resolves(&import);
+    assert_resolves(&import);
     // A local assignment before `produce` is put where it is used; `nproduce` is skipped.
     assert_eq!(body(&import), ["axiom: A(0)", "A(t) -> A((t + 1))"]);
     assert_eq!(import.notes.len(), 1, "{:?}", import.notes);
@@ -525,16 +516,7 @@ fn odd_input_never_panics() {
         "Axiom: A\nA --> B : \n",
     ] {
         for flavour in [Flavour::Cpfg, Flavour::Lpy] {
-            let import = import(text, flavour);
-            let (file, _) = crate::syntax::parse(&import.text);
-            if file.axiom.is_some() {
-                let (_, d) = crate::model::resolve(&file);
-                assert!(
-                    !crate::diagnostics::has_errors(&d),
-                    "{text:?}: {d:?}\n{}",
-                    import.text
-                );
-            }
+            assert_resolves_if_it_has_an_axiom(text, &import(text, flavour));
         }
     }
 }

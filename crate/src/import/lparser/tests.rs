@@ -3,6 +3,7 @@
 use super::read::{leading_float, tokenize};
 use super::values::{classify, net_expr};
 use super::*;
+use crate::import::test_support::{assert_resolves, assert_resolves_if_it_has_an_axiom};
 
 fn run(text: &str) -> Import {
     import(text)
@@ -15,16 +16,6 @@ fn body(import: &Import) -> Vec<String> {
         .filter(|l| !l.starts_with("//") && !l.starts_with("#color"))
         .map(str::to_string)
         .collect()
-}
-
-fn check_resolves(import: &Import) {
-    let (file, d) = crate::syntax::parse(&import.text);
-    let (_, r) = crate::model::resolve(&file);
-    assert!(
-        !crate::diagnostics::has_errors(&d) && !crate::diagnostics::has_errors(&r),
-        "{}\n{d:?}\n{r:?}",
-        import.text
-    );
 }
 
 #[test]
@@ -76,7 +67,7 @@ fn the_laws_of_net_factors() {
 fn a_positional_file_becomes_a_parametric_l_system() {
     // ABOP p. 56's monopodial tree as Lparser writes it.
     let import = run("# tree\n10\n45\n15\n#\nc(12)FFAL\n#\nA=F[&'(.8)!BL]>(137)'!(.9)A\nB=F[-'(.8)!(.9)$CL]'!(.9)C\nC=F[+'(.8)!(.9)$BL]'!(.9)B\nL=~c(8){+(30)f(20)-(120)f(20)-(120)f(20)}\n@\n");
-    check_resolves(&import);
+    assert_resolves(&import);
     let body = body(&import);
     assert!(body.contains(&"#iterations 10".to_string()), "{body:?}");
     assert!(
@@ -105,7 +96,7 @@ fn a_positional_file_becomes_a_parametric_l_system() {
 #[test]
 fn macros_and_growth_rules_scale_what_follows() {
     let import = run("3\n30\n40\nA\nA=FSFA\nS='(.8)!(.9)\nF='(1.3)F'(.77)\n@\n");
-    check_resolves(&import);
+    assert_resolves(&import);
     let body = body(&import);
     // S's effect comes one step after it is written; F's compounds 1.3 × 0.77 every step.
     for line in [
@@ -121,7 +112,7 @@ fn macros_and_growth_rules_scale_what_follows() {
 #[test]
 fn the_keyword_format_reads_its_keywords() {
     let import = run("recursion 2\nangle 20\nthickness 50\nmin_thickness 5\nshape 1\ncolor 3 255 0 0\naxiom F\nrule F = F[+F]  # branch\nmutation 3\nfoo 1\n");
-    check_resolves(&import);
+    assert_resolves(&import);
     let text = &import.text;
     assert!(text.contains("#iterations 2\n#angle 20\n"), "{text}");
     assert!(text.contains("#color 3 255 0 0"), "{text}");
@@ -138,7 +129,7 @@ fn the_keyword_format_reads_its_keywords() {
 #[test]
 fn successors_starting_with_two_rolls_are_not_comments() {
     let import = run("1\n30\n10\nA\nA=>>F\n@\n");
-    check_resolves(&import);
+    assert_resolves(&import);
     assert!(import.text.contains("A -> / /F(1,0.1)"), "{}", import.text);
 }
 
@@ -154,15 +145,6 @@ fn nothing_panics_on_odd_input() {
         "3\n3\n3\nA\nA=]]A[[\n@\n",
         "99999999999\n1e308\n-5\nFé\n@\n",
     ] {
-        let import = run(text);
-        let (file, _) = crate::syntax::parse(&import.text);
-        if file.axiom.is_some() {
-            let (_, r) = crate::model::resolve(&file);
-            assert!(
-                !crate::diagnostics::has_errors(&r),
-                "{text:?}\n{}\n{r:?}",
-                import.text
-            );
-        }
+        assert_resolves_if_it_has_an_axiom(text, &run(text));
     }
 }
