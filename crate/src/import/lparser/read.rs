@@ -84,24 +84,34 @@ pub(super) fn keep_comment(comment: &str) -> Option<String> {
     (c.chars().any(char::is_alphanumeric)).then(|| comment.trim().to_string())
 }
 
-pub(super) fn parse_positional(text: &str, file: &mut LsFile, out: &mut Output) {
-    let mut stage = 0;
-    let mut ended = false;
-    let mut last_line = 0;
-    for (index, raw) in text.lines().enumerate() {
-        let n = index + 1;
-        last_line = n;
+/// The lines of an `.ls` file that hold code, read lazily: each as its 1-based number, its code
+/// and the comment after it. A line that is only a `#` comment goes to `header` (when it says
+/// something), in order.
+fn code_lines<'a>(
+    text: &'a str,
+    header: &'a mut Vec<String>,
+) -> impl Iterator<Item = (usize, &'a str, &'a str)> + 'a {
+    text.lines().enumerate().filter_map(move |(index, raw)| {
         let trimmed = raw.trim();
         if trimmed.is_empty() {
-            continue;
+            return None;
         }
         if let Some(comment) = trimmed.strip_prefix('#') {
             if let Some(c) = keep_comment(comment) {
-                file.header.push(c);
+                header.push(c);
             }
-            continue;
+            return None;
         }
         let (code, comment) = split_comment(trimmed);
+        Some((index + 1, code, comment))
+    })
+}
+
+pub(super) fn parse_positional(text: &str, file: &mut LsFile, out: &mut Output) {
+    let mut stage = 0;
+    let mut ended = false;
+    let mut header = Vec::new();
+    for (n, code, comment) in code_lines(text, &mut header) {
         let code = without_spaces(code);
         if code.is_empty() {
             continue;
@@ -144,9 +154,10 @@ pub(super) fn parse_positional(text: &str, file: &mut LsFile, out: &mut Output) 
         }
         stage += 1;
     }
+    file.header.extend(header);
     if !ended && stage >= 4 {
         out.note(
-            last_line,
+            text.lines().count(),
             "no '@' end mark: Lparser reads rules up to a line starting with '@'; every rule line was read",
         );
     }
@@ -155,19 +166,8 @@ pub(super) fn parse_positional(text: &str, file: &mut LsFile, out: &mut Output) 
 /// Reads the keyword format of Lparser 2 into `file`, line by line.
 pub(super) fn parse_keywords(text: &str, file: &mut LsFile, out: &mut Output) {
     let mut noted: Vec<String> = Vec::new();
-    for (index, raw) in text.lines().enumerate() {
-        let n = index + 1;
-        let trimmed = raw.trim();
-        if trimmed.is_empty() {
-            continue;
-        }
-        if let Some(comment) = trimmed.strip_prefix('#') {
-            if let Some(c) = keep_comment(comment) {
-                file.header.push(c);
-            }
-            continue;
-        }
-        let (code, comment) = split_comment(trimmed);
+    let mut header = Vec::new();
+    for (n, code, comment) in code_lines(text, &mut header) {
         let code = code.trim();
         let (keyword, command) = match code.find(char::is_whitespace) {
             Some(i) => (&code[..i], code[i..].trim()),
@@ -183,6 +183,7 @@ pub(super) fn parse_keywords(text: &str, file: &mut LsFile, out: &mut Output) {
         }
         keyword_line(file, &keyword, command, comment, n, out);
     }
+    file.header.extend(header);
 }
 
 /// Why a keyword of Lparser's program or output, not of the plant, is not translated (noted
