@@ -216,7 +216,7 @@ impl Importer {
         name: &str,
         args: &[String],
     ) -> Result<String, String> {
-        if let Some((_, params, body)) = self.helpers.iter().find(|(h, _, _)| h == name) {
+        if let Some((_, params, body)) = self.lpy.helpers.iter().find(|(h, _, _)| h == name) {
             if params.len() != args.len() {
                 return Err(format!(
                     "{name}(…) takes {} arguments, not {}",

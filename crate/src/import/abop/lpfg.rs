@@ -11,7 +11,7 @@ impl Importer {
     /// `derivation length:` lines is dropped, and a production's head `A(t):` joins the `{…}`
     /// block on the lines after it.
     pub(super) fn lpfg_lines(&mut self, all: Vec<Line>) -> Vec<Line> {
-        self.lpfg = true;
+        self.lpfg.active = true;
         let mut out: Vec<Line> = Vec::new();
         for mut line in all {
             if let Some(rest) = line.code.strip_prefix("module ") {
@@ -22,7 +22,7 @@ impl Importer {
                         && !self.declared.iter().any(|d| d == name)
                     {
                         self.declared.push(name.to_string());
-                        self.words.push((name.to_string(), name.to_string()));
+                        self.cpfg.words.push((name.to_string(), name.to_string()));
                     }
                 }
                 continue;
@@ -40,7 +40,9 @@ impl Importer {
             }
             out.push(line);
         }
-        self.words.sort_by_key(|w| std::cmp::Reverse(w.0.len()));
+        self.cpfg
+            .words
+            .sort_by_key(|w| std::cmp::Reverse(w.0.len()));
         out
     }
 
@@ -49,12 +51,12 @@ impl Importer {
     /// to it (lpfg leaves a module that produces nothing as it is, as Meristem does when no
     /// production applies).
     pub(super) fn lpfg_production(&mut self, pattern: &str, body: &str, n: usize) {
-        self.produced = Some(Vec::new());
-        self.path.clear();
+        self.lpfg.produced = Some(Vec::new());
+        self.lpfg.path.clear();
         let mut env = Env::new();
         let result = self.statements(body, &mut env, n, 0);
-        let produced = self.produced.take().unwrap_or_default();
-        self.path.clear();
+        let produced = self.lpfg.produced.take().unwrap_or_default();
+        self.lpfg.path.clear();
         if let Err(why) = result {
             self.note(n, format!("{why}; the production is skipped"));
             return;
@@ -127,7 +129,7 @@ impl Importer {
                 (None, i)
             };
             i = after;
-            if word.len() == 1 || self.words.iter().any(|(w, _)| *w == word) {
+            if word.len() == 1 || self.cpfg.words.iter().any(|(w, _)| *w == word) {
                 out.push_str(&word);
                 if let Some(a) = &args {
                     out.push_str(&format!("({a})"));

@@ -71,41 +71,36 @@ pub(super) fn import_with(
     include: &dyn Fn(&str) -> Option<String>,
 ) -> Import {
     let new = |probe: bool, flag_steps: Vec<(String, Option<u32>)>| Importer {
-        flags: Vec::new(),
-        probe,
-        flags_written: Vec::new(),
-        flag_steps,
-        in_productions: true,
         flavour,
         out: Output::default(),
         declared: Vec::new(),
-        words: Vec::new(),
-        write_only: Vec::new(),
-        lpfg: false,
-        default_depth: Vec::new(),
-        produced: None,
-        path: Vec::new(),
-        unknown_names: Vec::new(),
+        in_productions: true,
         noted: Vec::new(),
         axiom: false,
-        view: view.cloned(),
-        helpers: Vec::new(),
-        bare_turn: false,
-        colour: false,
-        globals: globals::Globals::default(),
+        cpfg: CpfgState {
+            view: view.cloned(),
+            ..CpfgState::default()
+        },
+        lpfg: LpfgState::default(),
+        lpy: LpyState {
+            probe,
+            flag_steps,
+            ..LpyState::default()
+        },
     };
     // L-Py flags (see `flags.rs`): a first run marks where they are set; when it found any, the
     // model is derived to find when, and imported again with that.
     let mut importer = new(flavour == Flavour::Lpy, Vec::new());
     importer.run(text, include);
-    if !importer.flags_written.is_empty() {
+    if !importer.lpy.flags_written.is_empty() {
         let probe = importer.out.finish().text;
         let steps = importer
+            .lpy
             .flags_written
             .iter()
             .filter_map(|&k| {
                 let step = flags::first_step(&probe, &flags::marker(k))?;
-                Some((importer.flags[k].name.clone(), step))
+                Some((importer.lpy.flags[k].name.clone(), step))
             })
             .collect();
         importer = new(false, steps);
@@ -150,20 +145,61 @@ fn uses_randomness(text: &str) -> bool {
         })
 }
 
+/// The translation of one file: what every dialect reads with ([`Output`], the names declared,
+/// the section) and each dialect's own state.
 struct Importer {
     flavour: Flavour,
     out: Output,
     /// Multi-letter module names (L-Py `module` declarations and names met in strings).
     declared: Vec<String>,
+    /// Whether the section being read is the productions (not decomposition or homomorphism).
+    in_productions: bool,
+    /// The keys of the notes given once (see [`Importer::note_once`]).
+    noted: Vec<String>,
+    /// Whether an axiom was written.
+    axiom: bool,
+    cpfg: CpfgState,
+    lpfg: LpfgState,
+    lpy: LpyState,
+}
+
+/// What reading a cpfg file keeps.
+#[derive(Default)]
+struct CpfgState {
     /// cpfg predecessors of several letter modules (`AXIOM --> …`): the letters as written and
     /// the one Meristem module they become, longest first.
     words: Vec<(String, String)>,
-    /// L-Py globals that nothing reads but text labels (`@L`, dropped): their `global`
-    /// statements and the assignments to them in production bodies can be dropped.
-    write_only: Vec<String>,
     /// The lines of cpfg's `homomorphism` and `decomposition` sections that do not set their
     /// `maximum depth:` (cpfg's default is 1).
     default_depth: Vec<usize>,
+    /// The vlab object's view and colours (cpfg, opened with its object).
+    view: Option<View>,
+    /// A turn without an angle was written (it turns by the view's angle increment).
+    bare_turn: bool,
+    /// A colour module was written.
+    colour: bool,
+    /// cpfg's global variables, arrays and `Start:`… blocks.
+    globals: globals::Globals,
+}
+
+/// What reading an L+C (lpfg) file keeps.
+#[derive(Default)]
+struct LpfgState {
+    /// Whether the `.l` is an L+C (lpfg) file: `module` declarations, `produce` in C blocks.
+    active: bool,
+    /// While an lpfg production's block is read: the successors it produces, each with the
+    /// condition of the path to its `produce`.
+    produced: Option<Vec<(Option<String>, String)>>,
+    /// The conditions of the `if`s the statement being read is in (lpfg).
+    path: Vec<String>,
+}
+
+/// What reading an L-Py file keeps.
+#[derive(Default)]
+struct LpyState {
+    /// L-Py globals that nothing reads but text labels (`@L`, dropped): their `global`
+    /// statements and the assignments to them in production bodies can be dropped.
+    write_only: Vec<String>,
     /// L-Py globals that may be flags (see `flags.rs`).
     flags: Vec<flags::Flag>,
     /// Whether this run is the probe that finds when flags change (markers in the successors).
@@ -173,30 +209,11 @@ struct Importer {
     /// After the probe: each flag's name and the first step its setting production applies in
     /// (`None`: never within the derivation length).
     flag_steps: Vec<(String, Option<u32>)>,
-    /// Whether the section being read is the productions (not decomposition or homomorphism).
-    in_productions: bool,
-    /// Whether the `.l` is an L+C (lpfg) file: `module` declarations, `produce` in C blocks.
-    lpfg: bool,
-    /// While an lpfg production's block is read: the successors it produces, each with the
-    /// condition of the path to its `produce`.
-    produced: Option<Vec<(Option<String>, String)>>,
-    /// The conditions of the `if`s the statement being read is in (lpfg).
-    path: Vec<String>,
-    /// Long names that are neither declared nor L-Py's (written as modules, reported once).
-    unknown_names: Vec<String>,
-    noted: Vec<String>,
-    axiom: bool,
-    /// The vlab object's view and colours (cpfg, opened with its object).
-    view: Option<View>,
     /// L-Py helper functions that return one expression: name, parameters, the expression
     /// (translated), inlined where they are called.
     helpers: Vec<(String, Vec<String>, String)>,
-    /// A turn without an angle was written (it turns by the view's angle increment).
-    bare_turn: bool,
-    /// A colour module was written.
-    colour: bool,
-    /// cpfg's global variables, arrays and `Start:`… blocks.
-    globals: globals::Globals,
+    /// Long names that are neither declared nor L-Py's (written as modules, reported once).
+    unknown_names: Vec<String>,
 }
 
 /// The byte index of the first `token` outside brackets, braces and parentheses.

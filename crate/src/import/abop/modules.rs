@@ -76,6 +76,7 @@ impl Importer {
                 } else if c.is_ascii_alphabetic() && self.flavour == Flavour::Lpy {
                     self.lpy_name(&chars, i, n)
                 } else if let Some((word, name)) = self
+                    .cpfg
                     .words
                     .iter()
                     .find(|(w, _)| chars[i..].iter().take(w.len()).copied().eq(w.chars()))

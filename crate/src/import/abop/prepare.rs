@@ -105,16 +105,16 @@ impl Importer {
                 all = self.lpfg_lines(all);
             }
             all = join_axiom_lines(join_two_line_productions(all));
-            if !self.lpfg {
-                self.default_depth = sections_without_depth(&all);
+            if !self.lpfg.active {
+                self.cpfg.default_depth = sections_without_depth(&all);
             }
-            self.globals = globals::Globals::scan(&all);
+            self.cpfg.globals = globals::Globals::scan(&all);
             self.words(&all);
         }
         // L-Py's `module` declarations change how strings split into modules: read them first.
         if self.flavour == Flavour::Lpy {
-            self.write_only = write_only_globals(&all);
-            self.flags = flags::candidates(&all);
+            self.lpy.write_only = write_only_globals(&all);
+            self.lpy.flags = flags::candidates(&all);
             for line in &all {
                 if let Some(rest) = line.code.strip_prefix("module ") {
                     for item in rest.split(',') {

@@ -135,7 +135,7 @@ impl Importer {
         if self.keyword_statement(line, ended) {
             return i;
         }
-        if self.lpfg {
+        if self.lpfg.active {
             if let Some((pattern, body)) = lpfg_production_parts(code) {
                 self.lpfg_production(pattern, body, line.n);
                 return i;
@@ -219,7 +219,7 @@ impl Importer {
             self.out.line(section.clone(), line.n);
             // cpfg rewrites its homomorphism and decomposition to depth 1 unless the section
             // says `maximum depth:` (its parser's default); Meristem's default is deeper.
-            if self.default_depth.contains(&line.n) {
+            if self.cpfg.default_depth.contains(&line.n) {
                 self.out
                     .line(format!("{} 1", KeywordKind::MaximumDepth.written()), line.n);
             }
@@ -245,7 +245,7 @@ impl Importer {
     /// `Axiom: modules` (the text after the colon is `rest`).
     pub(in crate::import::abop) fn axiom(&mut self, rest: &str, n: usize) {
         let lpfg;
-        let rest = if self.lpfg {
+        let rest = if self.lpfg.active {
             match self.lpfg_symbols(rest, n) {
                 Ok(text) => {
                     lpfg = text;
@@ -282,9 +282,9 @@ impl Importer {
         n: usize,
     ) {
         // The names listed draw nothing: a `+` here is no turn by the view's angle.
-        let (bare_turn, colour) = (self.bare_turn, self.colour);
+        let (bare_turn, colour) = (self.cpfg.bare_turn, self.cpfg.colour);
         let modules = self.modules(rest, &Env::new(), n);
-        (self.bare_turn, self.colour) = (bare_turn, colour);
+        (self.cpfg.bare_turn, self.cpfg.colour) = (bare_turn, colour);
         match modules {
             Ok(m) => {
                 let names = module_names(&m);

@@ -56,22 +56,23 @@ impl Importer {
                 continue;
             }
             if let Some(successor) = statement.strip_prefix("produce") {
-                if self.produced.is_some()
+                if self.lpfg.produced.is_some()
                     && !successor.starts_with(|c: char| c.is_ascii_alphanumeric() || c == '_')
                 {
                     let successor = self.lpfg_modules(successor, env, n)?;
-                    let condition = match self.path.len() {
+                    let condition = match self.lpfg.path.len() {
                         0 => None,
-                        1 => Some(self.path[0].clone()),
+                        1 => Some(self.lpfg.path[0].clone()),
                         _ => Some(
-                            self.path
+                            self.lpfg
+                                .path
                                 .iter()
                                 .map(|c| format!("({c})"))
                                 .collect::<Vec<_>>()
                                 .join(" && "),
                         ),
                     };
-                    if let Some(produced) = &mut self.produced {
+                    if let Some(produced) = &mut self.lpfg.produced {
                         produced.push((condition, successor));
                     }
                     return Ok(true);
@@ -107,28 +108,28 @@ impl Importer {
         let c = self
             .expression(condition, env)
             .map_err(|why| format!("the condition of 'if ({})': {why}", one_line(condition)))?;
-        let depth_before = self.path.len();
+        let depth_before = self.lpfg.path.len();
         let mut yes = env.clone();
-        self.path.push(c.clone());
+        self.lpfg.path.push(c.clone());
         let yes_ends = self.statements(then, &mut yes, n, depth + 1)?;
-        self.path.truncate(depth_before);
+        self.lpfg.path.truncate(depth_before);
         let mut no = env.clone();
-        self.path.push(format!("!({c})"));
+        self.lpfg.path.push(format!("!({c})"));
         let no_ends = match otherwise {
             Some(otherwise) => self.statements(otherwise, &mut no, n, depth + 1)?,
             None => false,
         };
-        self.path.truncate(depth_before);
+        self.lpfg.path.truncate(depth_before);
         // lpfg: a branch that produced ends the production; what follows runs on the other.
         match (yes_ends, no_ends) {
             (true, true) => return Ok(true),
             (true, false) => {
-                self.path.push(format!("!({c})"));
+                self.lpfg.path.push(format!("!({c})"));
                 *env = no;
                 return Ok(false);
             }
             (false, true) => {
-                self.path.push(c);
+                self.lpfg.path.push(c);
                 *env = yes;
                 return Ok(false);
             }
@@ -194,7 +195,7 @@ impl Importer {
         if !is_identifier(target) || value.starts_with('=') {
             return Err(format!("the statement '{statement}' is not an assignment"));
         }
-        if self.globals.is_global(target) && !env.contains_key(target) {
+        if self.cpfg.globals.is_global(target) && !env.contains_key(target) {
             self.note(n, format!("the statement '{statement}' changes cpfg's global variable {target} during the derivation; Meristem has no variables, so it is dropped and {target} keeps its start value"));
             return Ok(());
         }

@@ -288,6 +288,7 @@ impl Importer {
             ));
         };
         if let Some((_, value)) = self
+            .cpfg
             .globals
             .derived
             .iter()
@@ -309,8 +310,8 @@ impl Importer {
         }
         match kind {
             BlockKind::Start | BlockKind::Define => self.start_value(&name, s, n),
-            _ if self.globals.steps.iter().any(|(x, _, _)| *x == name)
-                && !self.globals.changed.contains(&name) =>
+            _ if self.cpfg.globals.steps.iter().any(|(x, _, _)| *x == name)
+                && !self.cpfg.globals.changed.contains(&name) =>
             {
                 Ok(())
             }
@@ -329,13 +330,14 @@ impl Importer {
         };
         let value = self.expression(value, &Env::new())?;
         let step = self
+            .cpfg
             .globals
             .steps
             .iter()
             .find(|(x, _, _)| x == name)
             .cloned();
         let text = match step {
-            Some((_, d, after)) if !self.globals.changed.iter().any(|c| c == name) => {
+            Some((_, d, after)) if !self.cpfg.globals.changed.iter().any(|c| c == name) => {
                 let steps = if after { "(NumIt-1)" } else { "NumIt" };
                 format!("({value})+({d})*{steps}")
             }
@@ -384,13 +386,18 @@ impl Importer {
         }
         // The sizes of the dimensions after the first: what one step of each index skips.
         sizes.remove(0);
-        self.globals.arrays.push((name, sizes, values));
+        self.cpfg.globals.arrays.push((name, sizes, values));
         Ok(())
     }
 
     /// How many indices the array `name` takes, if it is an array.
     pub(in crate::import::abop) fn array_dimensions(&self, name: &str) -> Option<usize> {
-        let (_, sizes, _) = self.globals.arrays.iter().find(|(a, _, _)| a == name)?;
+        let (_, sizes, _) = self
+            .cpfg
+            .globals
+            .arrays
+            .iter()
+            .find(|(a, _, _)| a == name)?;
         Some(sizes.len() + 1)
     }
 
@@ -404,7 +411,12 @@ impl Importer {
         name: &str,
         indices: &[String],
     ) -> Option<String> {
-        let (_, sizes, values) = self.globals.arrays.iter().find(|(a, _, _)| a == name)?;
+        let (_, sizes, values) = self
+            .cpfg
+            .globals
+            .arrays
+            .iter()
+            .find(|(a, _, _)| a == name)?;
         if indices.len() != sizes.len() + 1 || values.is_empty() {
             return None;
         }

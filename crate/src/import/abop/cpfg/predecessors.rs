@@ -25,7 +25,7 @@ impl Importer {
             if strict.len() < 2
                 || strict.len() > 32
                 || !strict.chars().all(|c| c.is_ascii_alphabetic())
-                || self.words.iter().any(|(w, _)| w == strict)
+                || self.cpfg.words.iter().any(|(w, _)| w == strict)
             {
                 continue;
             }
@@ -45,9 +45,11 @@ impl Importer {
                 ),
             );
             self.declared.push(name.clone());
-            self.words.push((strict.to_string(), name));
+            self.cpfg.words.push((strict.to_string(), name));
         }
-        self.words.sort_by_key(|w| std::cmp::Reverse(w.0.len()));
+        self.cpfg
+            .words
+            .sort_by_key(|w| std::cmp::Reverse(w.0.len()));
     }
 
     /// cpfg's predecessor of several modules (`F(v,n)#(w) --> F(v)#(w)@O`): Meristem's
@@ -143,6 +145,7 @@ impl Importer {
             i = if c == '@' || c == '~' || c == '?' {
                 cpfg_symbol(&chars, i).1
             } else if let Some((word, _)) = self
+                .cpfg
                 .words
                 .iter()
                 .find(|(w, _)| chars[i..].iter().take(w.len()).copied().eq(w.chars()))

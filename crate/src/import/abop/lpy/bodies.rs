@@ -300,7 +300,7 @@ impl Importer {
         // The `if`/`elif`/`else:` headers the current line is nested in: their indentation and
         // condition (`None` for `else`, which the order of the productions already says).
         let mut open: Vec<(usize, Option<String>)> = Vec::new();
-        let marked = self.flags_written.len();
+        let marked = self.lpy.flags_written.len();
         let owned = self.body_lines(body);
         let mut lines: Vec<&Line> = owned.iter().collect();
         let (names, values) = python_locals(&mut lines);
@@ -367,7 +367,7 @@ impl Importer {
             self.production(&text, line);
         }
         // The probe's markers count the steps since they were written.
-        for &k in &self.flags_written[marked..] {
+        for &k in &self.lpy.flags_written[marked..] {
             let m = flags::marker(k);
             self.out.line(format!("{m}(c) -> {m}(c+1)"), n);
         }

@@ -78,7 +78,7 @@ impl Importer {
     pub(in crate::import::abop) fn body_lines(&mut self, body: &[Line]) -> Vec<Line> {
         let mut lines: Vec<&Line> = body.iter().filter(|l| !l.code.is_empty()).collect();
         lines.retain(|line| {
-            let dropped = global_write(&line.code, &self.write_only);
+            let dropped = global_write(&line.code, &self.lpy.write_only);
             if let Some(g) = &dropped {
                 let code = line.code.clone();
                 self.note(line.n, format!("the Python code '{code}' changes the global {g}, which nothing but text labels (@L, dropped) reads; dropped"));
@@ -95,7 +95,7 @@ impl Importer {
     /// in the probe a marker put in the `produce` that follows it; `None` when the body sets no
     /// flag, or sets one this run cannot translate (the body is then read as it is).
     pub(in crate::import::abop) fn flag_lines(&mut self, lines: &[&Line]) -> Option<Vec<Line>> {
-        let flags = self.flags.clone();
+        let flags = self.lpy.flags.clone();
         let flag_of = |name: &str| flags.iter().position(|f| f.name == name);
         let mut out: Vec<Line> = Vec::new();
         let mut pending: Option<(usize, usize)> = None;
@@ -111,7 +111,8 @@ impl Importer {
                 let k = flag_of(name.trim())?;
                 (value.trim() == flags[k].set && !value.starts_with('=')).then_some((k, line))
             }) {
-                if !self.probe && !self.flag_steps.iter().any(|(f, _)| *f == flags[k].name) {
+                if !self.lpy.probe && !self.lpy.flag_steps.iter().any(|(f, _)| *f == flags[k].name)
+                {
                     return None;
                 }
                 pending = Some((k, set.indent));
@@ -128,7 +129,7 @@ impl Importer {
                 if !self.in_productions {
                     return None;
                 }
-                if self.probe {
+                if self.lpy.probe {
                     let m = flags::marker(k);
                     if !self.declared.contains(&m) {
                         self.declared.push(m.clone());
@@ -136,7 +137,7 @@ impl Importer {
                     let successor = successor.trim();
                     let successor = if successor == "*" { "" } else { successor };
                     line.code = format!("produce {m}(0) {successor}");
-                    self.flags_written.push(k);
+                    self.lpy.flags_written.push(k);
                 }
             }
             out.push(line);
@@ -146,8 +147,14 @@ impl Importer {
 
     /// The note for the setting of flag `k` at `line` (after the probe).
     pub(in crate::import::abop) fn flag_note(&mut self, k: usize, line: &Line) {
-        let Flag { name, initial, set } = self.flags[k].clone();
-        let Some((_, step)) = self.flag_steps.iter().find(|(f, _)| *f == name).cloned() else {
+        let Flag { name, initial, set } = self.lpy.flags[k].clone();
+        let Some((_, step)) = self
+            .lpy
+            .flag_steps
+            .iter()
+            .find(|(f, _)| *f == name)
+            .cloned()
+        else {
             return;
         };
         let code = &line.code;

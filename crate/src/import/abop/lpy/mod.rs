@@ -253,9 +253,10 @@ impl Importer {
                     .comment(&format!("{}: {text}", name.trim_matches('_')), line.n);
                 return next;
             }
-            let flag = self.flag_steps.iter().find(|(f, _)| f == name).cloned();
+            let flag = self.lpy.flag_steps.iter().find(|(f, _)| f == name).cloned();
             if let (true, Some((_, step))) = (assignment, flag) {
                 let set = self
+                    .lpy
                     .flags
                     .iter()
                     .find(|f| f.name == name)
@@ -345,7 +346,7 @@ impl Importer {
                     params.join(", ")
                 );
                 self.out.comment(&comment, n);
-                self.helpers.push((name.clone(), params, e));
+                self.lpy.helpers.push((name.clone(), params, e));
             }
             Err(why) => self.note(
                 n,
@@ -425,8 +426,8 @@ impl Importer {
                 && LPY_PREDEFINED.contains(&&rest[..word_len]) =>
             {
                 let word = rest[..word_len].to_string();
-                if !self.unknown_names.contains(&word) {
-                    self.unknown_names.push(word.clone());
+                if !self.lpy.unknown_names.contains(&word) {
+                    self.lpy.unknown_names.push(word.clone());
                     self.declared.push(word.clone());
                     self.note(
                         n,
