@@ -9,6 +9,7 @@
 //! `Prune`) into Meristem's `@Switch`, `@Pendulum`, `@Repeat`, `@Prune`.
 
 use super::{Import, Output};
+use crate::syntax::PARENTHESES;
 use crate::vocabulary::{name_of, names_of, DirectiveKind, Function, GroupKind, Meaning};
 
 #[derive(Clone, Copy, PartialEq)]
@@ -261,13 +262,17 @@ fn production(rule: &str) -> Option<Production> {
     };
     let left = rule[..start].trim();
     let right = rule[arrow + 2..].trim();
-    let (pattern, condition) = match top_level(left, ':') {
+    let (pattern, condition) = match PARENTHESES.find_char(left, ':') {
         Some(i) => (left[..i].trim(), left[i + 1..].trim()),
         None => (left, ""),
     };
     let predecessor = {
-        let after_left = top_level(pattern, '<').map_or(pattern, |i| &pattern[i + 1..]);
-        let strict = top_level(after_left, '>').map_or(after_left, |i| &after_left[..i]);
+        let after_left = PARENTHESES
+            .find_char(pattern, '<')
+            .map_or(pattern, |i| &pattern[i + 1..]);
+        let strict = PARENTHESES
+            .find_char(after_left, '>')
+            .map_or(after_left, |i| &after_left[..i]);
         modules(strict.trim())
     };
     let pattern = modules(pattern);
@@ -281,20 +286,6 @@ fn production(rule: &str) -> Option<Production> {
         predecessor,
         condition: condition.chars().filter(|c| !c.is_whitespace()).collect(),
     })
-}
-
-/// The byte index of the first `token` outside parentheses.
-fn top_level(text: &str, token: char) -> Option<usize> {
-    let mut depth = 0i32;
-    for (i, c) in text.char_indices() {
-        match c {
-            '(' => depth += 1,
-            ')' => depth -= 1,
-            c if c == token && depth == 0 => return Some(i),
-            _ => {}
-        }
-    }
-    None
 }
 
 /// A module string: `A()` -> `A`, Green's control modules -> Meristem's `@` names; everything
@@ -399,6 +390,7 @@ fn note_gaps(productions: &[(Production, usize)], variables: &[String], out: &mu
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::import::test_support::assert_resolves_if_it_has_an_axiom;
 
     /// The worked example, as the paper's text prints it.
     const WORKED: &str = "SYSTEM\nDECLARATIONS\n  CONTINUOUS p UNIFORM(0,1)\nAXIOM\n  A(1)B(3)A(5)\nRULES\n  A(x): p<0.4  $\\rightarrow$  A(x+1)\n  A(x): p>0.4  $\\rightarrow$  B(x-1)\n  A(x) < B(y) > A(z) : y<4  $\\rightarrow$  B(x+z)[A(y)]\nEND.\n";
@@ -487,12 +479,7 @@ mod tests {
             "DECLARATIONS\nCONTINUOUS\nDISCRETE 1 x(",
             "AXIOM A\nRULES\nA -> frob(1)\nEND.\nmore",
         ] {
-            let import = import(text);
-            let (file, _) = crate::syntax::parse(&import.text);
-            if file.axiom.is_some() {
-                let (_, d) = crate::model::resolve(&file);
-                assert!(!crate::diagnostics::has_errors(&d), "{text:?}: {d:?}");
-            }
+            assert_resolves_if_it_has_an_axiom(text, &import(text));
         }
         let import = import("AXIOM A\nRULES\nA -> B(frob(1))\nEND.");
         assert!(import

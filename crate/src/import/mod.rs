@@ -2,15 +2,17 @@
 //! with a note for every construct that could not be translated, at its line.
 //!
 //! One module per dialect: [`green`] (Green's RL-systems), [`lparser`] (Laurens Lapré's Lparser
-//! `.ls`, positional and keyword formats), [`cpfg`] (the common subset of cpfg `.l` and L-Py
-//! `.lpy`). Each builds its output with an [`Output`], whose [`Output::finish`] checks the text
+//! `.ls`, positional and keyword formats), [`abop`] (ABOP's notation as cpfg `.l`, lpfg and L-Py
+//! `.lpy` write it). Each builds its output with an [`Output`], whose [`Output::finish`] checks the text
 //! with Meristem's own parser and resolver: a line Meristem rejects is commented out and reported,
 //! so an import never hands the editor a grammar with errors unless it has no axiom at all.
 //! Like the rest of the core, nothing here does IO or panics on any input.
 
-mod cpfg;
+mod abop;
 mod green;
 mod lparser;
+#[cfg(test)]
+mod test_support;
 mod vlab;
 mod zip;
 
@@ -88,8 +90,8 @@ pub fn import(text: &str, dialect: Dialect) -> Import {
     match dialect {
         Dialect::Green => green::import(text),
         Dialect::Lparser => lparser::import(text),
-        Dialect::Cpfg => cpfg::import(text, cpfg::Flavour::Cpfg),
-        Dialect::Lpy => cpfg::import(text, cpfg::Flavour::Lpy),
+        Dialect::Cpfg => abop::import(text, abop::Flavour::Cpfg),
+        Dialect::Lpy => abop::import(text, abop::Flavour::Lpy),
     }
 }
 

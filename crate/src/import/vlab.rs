@@ -4,7 +4,7 @@
 //! from the object's `specifications` (the `cpfg …` command line), else guessed from the names.
 //! An object without a `.l` but with an L-Py `.lpy` is imported as L-Py.
 
-use super::cpfg::{self, Flavour};
+use super::abop::{self, Flavour};
 use super::{number, Dialect, Import};
 use crate::model::{Curve, CurveKind};
 use crate::vocabulary::{function_named, DirectiveKind};
@@ -252,7 +252,7 @@ pub fn import_object(files: &[ObjectFile]) -> Import {
     }
     colours(&all, &spec, &stem, &mut view);
     let include = |name: &str| all.text(name);
-    cpfg::import_with(&text, Flavour::Cpfg, Some(&view), &include)
+    abop::import_with(&text, Flavour::Cpfg, Some(&view), &include)
 }
 
 /// A folder without a cpfg `.l`: its L-Py `.lpy`, Lparser `.ls` or Meristem `.lsys`.

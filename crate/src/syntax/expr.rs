@@ -26,26 +26,6 @@ pub fn parse_expression(text: &str, base: usize) -> Result<ExprSyntax, Diagnosti
     Ok(expr)
 }
 
-/// Splits `text` at commas that are not inside parentheses; returns (offset, piece) pairs.
-pub fn split_arguments(text: &str) -> Vec<(usize, &str)> {
-    let mut pieces = Vec::new();
-    let mut depth = 0i32;
-    let mut start = 0;
-    for (i, c) in text.char_indices() {
-        match c {
-            '(' => depth += 1,
-            ')' => depth -= 1,
-            ',' if depth == 0 => {
-                pieces.push((start, &text[start..i]));
-                start = i + 1;
-            }
-            _ => {}
-        }
-    }
-    pieces.push((start, &text[start..]));
-    pieces
-}
-
 struct ExprParser<'a> {
     text: &'a str,
     base: usize,

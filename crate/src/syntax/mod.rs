@@ -5,6 +5,7 @@
 //! module *means*; that is the resolve step's job (`model`).
 
 mod ast;
+mod brackets;
 mod comments;
 mod directive;
 mod expr;
@@ -16,6 +17,7 @@ pub use ast::{
     BinaryOp, Directive, ExprSyntax, ModuleSyntax, ProductionSyntax, Section, SourceFile, Span,
     UnaryOp,
 };
+pub use brackets::{Brackets, ALL_BRACKETS, BRACES, PARENTHESES, PARENTHESES_AND_BRACES};
 pub use comments::blank_comments;
 pub use expr::{parse_expression, MAX_EXPRESSION_DEPTH};
 pub use parse::parse;

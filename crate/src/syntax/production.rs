@@ -1,10 +1,9 @@
 //! Production lines: `label: left < predecessor > right : condition -> (weight) successor`.
 
 use super::ast::{ExprSyntax, ModuleSyntax, ProductionSyntax, Section, Span};
+use super::brackets::PARENTHESES;
 use super::expr::parse_expression;
-use super::scanner::{
-    branch_bracket, check_brackets, find_top_level, matching_paren, ModuleScanner,
-};
+use super::scanner::{branch_bracket, check_brackets, ModuleScanner};
 use crate::diagnostics::{Diagnostic, Severity};
 
 /// Parses a production line starting at byte `at`. A line with an error yields no production:
@@ -102,7 +101,7 @@ fn split_condition<'a>(
     at: usize,
     diagnostics: &mut Vec<Diagnostic>,
 ) -> (&'a str, Option<ExprSyntax>) {
-    let Some(colon) = find_top_level(lhs, ':') else {
+    let Some(colon) = PARENTHESES.find_char(lhs, ':') else {
         return (lhs, None);
     };
     let text = &lhs[colon + 1..];
@@ -150,12 +149,12 @@ fn split_contexts<'a>(
         predecessor: lhs,
         predecessor_at: at,
     };
-    if let Some(lt) = find_top_level(sides.predecessor, '<') {
+    if let Some(lt) = PARENTHESES.find_char(sides.predecessor, '<') {
         sides.left = context(&sides.predecessor[..lt], sides.predecessor_at, diagnostics);
         sides.predecessor_at += lt + 1;
         sides.predecessor = &sides.predecessor[lt + 1..];
     }
-    if let Some(gt) = find_top_level(sides.predecessor, '>') {
+    if let Some(gt) = PARENTHESES.find_char(sides.predecessor, '>') {
         let right_at = sides.predecessor_at + gt + 1;
         sides.right = context(&sides.predecessor[gt + 1..], right_at, diagnostics);
         sides.predecessor = &sides.predecessor[..gt];
@@ -223,7 +222,7 @@ fn right_side(
     let mut rhs_at = at + (rhs.len() - rhs.trim_start().len());
     let mut weight = None;
     if trimmed.starts_with('(') {
-        let Some(close) = matching_paren(trimmed) else {
+        let Some(close) = PARENTHESES.closing(trimmed, 0) else {
             diagnostics.push(Diagnostic::error(
                 "E0116",
                 rhs_at..rhs_at + 1,

@@ -2,7 +2,8 @@
 //! bracket checks every module string gets.
 
 use super::ast::{ModuleSyntax, Span};
-use super::expr::{parse_expression, split_arguments};
+use super::brackets::PARENTHESES;
+use super::expr::parse_expression;
 use crate::diagnostics::Diagnostic;
 use crate::vocabulary::{module_named, Command, GroupKind, Meaning, MODULES};
 use std::cell::Cell;
@@ -10,38 +11,6 @@ use std::cell::Cell;
 /// Deepest control modules (`@Switch`, `@Pendulum`, `@Repeat`) may be written one inside another
 /// (`E0132`): the scanner, and later the derivation, follow a group's members one level at a time.
 pub const MAX_GROUP_DEPTH: usize = 64;
-
-/// Finds the first occurrence of `token` outside parentheses.
-pub(super) fn find_top_level(text: &str, token: char) -> Option<usize> {
-    let mut depth = 0i32;
-    for (i, c) in text.char_indices() {
-        match c {
-            '(' => depth += 1,
-            ')' => depth -= 1,
-            c if c == token && depth == 0 => return Some(i),
-            _ => {}
-        }
-    }
-    None
-}
-
-/// Byte index of the ')' that closes the '(' at the start of `text`.
-pub(super) fn matching_paren(text: &str) -> Option<usize> {
-    let mut depth = 0i32;
-    for (i, c) in text.char_indices() {
-        match c {
-            '(' => depth += 1,
-            ')' => {
-                depth -= 1;
-                if depth == 0 {
-                    return Some(i);
-                }
-            }
-            _ => {}
-        }
-    }
-    None
-}
 
 /// Reports unbalanced `[` `]` in one module string (axiom or successor).
 pub(super) fn check_brackets(modules: &[ModuleSyntax], diagnostics: &mut Vec<Diagnostic>) {
@@ -173,7 +142,7 @@ impl<'a> ModuleScanner<'a> {
             return Some(i + len);
         }
         let open = i + len + gap;
-        let Some(close) = matching_paren(&text[open..]) else {
+        let Some(close) = PARENTHESES.closing(&text[open..], 0) else {
             diagnostics.push(Diagnostic::error(
                 "E0116",
                 base + open..base + open + 1,
@@ -205,7 +174,7 @@ impl<'a> ModuleScanner<'a> {
         let mut body = inner;
         let mut body_at = at;
         if repeat {
-            match find_top_level(inner, ',') {
+            match PARENTHESES.find_char(inner, ',') {
                 Some(comma) => {
                     match parse_expression(&inner[..comma], at) {
                         Ok(e) => params.push(e),
@@ -324,7 +293,7 @@ fn parameter_list(
     diagnostics: &mut Vec<Diagnostic>,
 ) -> Option<usize> {
     let rest = &text[i..];
-    let close = matching_paren(rest);
+    let close = PARENTHESES.closing(rest, 0);
     let Some(last) = modules.last_mut().filter(|m| m.params.is_empty()) else {
         let end = close.map_or(text.len(), |j| i + j + 1);
         diagnostics.push(Diagnostic::error(
@@ -351,7 +320,7 @@ fn parameter_list(
         ));
         Vec::new()
     } else {
-        split_arguments(inner)
+        PARENTHESES.split(inner, ',')
     };
     for (offset, piece) in pieces {
         let at = base + i + 1 + offset;

@@ -2,14 +2,14 @@
 //! widths and colours, its functions (`func(k, x)`), its colour map; and the notes a `.l` opened
 //! alone needs when it relies on them.
 
-use super::{Flavour, Importer};
+use super::super::{Flavour, Importer};
 use crate::import::number;
 use crate::vocabulary::{name_of, Command, DirectiveKind, Meaning};
 
 impl Importer {
     /// The directives the view and colour files give, after the header.
-    pub(super) fn view_lines(&mut self) {
-        let Some(view) = self.view.clone() else {
+    pub(in crate::import::abop) fn view_lines(&mut self) {
+        let Some(view) = self.cpfg.view.clone() else {
             return;
         };
         self.out.comment(
@@ -48,8 +48,8 @@ impl Importer {
     }
 
     /// The axiom's start: the view's initial colour.
-    pub(super) fn initial_colour(&self) -> String {
-        match self.view.as_ref().and_then(|v| v.color) {
+    pub(in crate::import::abop) fn initial_colour(&self) -> String {
+        match self.cpfg.view.as_ref().and_then(|v| v.color) {
             Some(c) => format!(
                 "{}({})",
                 name_of(Meaning::Turtle(Command::SetColor)),
@@ -60,27 +60,27 @@ impl Importer {
     }
 
     /// Notes for a `.l` opened alone: what its view file would have said.
-    pub(super) fn unknown_view(&mut self) {
+    pub(in crate::import::abop) fn unknown_view(&mut self) {
         if self.flavour != Flavour::Cpfg {
             return;
         }
-        let no_angle = self.view.as_ref().is_none_or(|v| v.angle.is_none());
-        if self.bare_turn && no_angle {
-            let why = if self.view.is_some() {
+        let no_angle = self.cpfg.view.as_ref().is_none_or(|v| v.angle.is_none());
+        if self.cpfg.bare_turn && no_angle {
+            let why = if self.cpfg.view.is_some() {
                 "the view file gives no angle increment"
             } else {
                 "the angle increment is in the object's view file (.v), which was not opened with this file"
             };
             self.note(0, format!("{why}: turns without an angle use Meristem's default of 90° (open the object's folder or .zip to use its own)"));
         }
-        if self.colour && self.view.is_none() {
+        if self.cpfg.colour && self.cpfg.view.is_none() {
             self.note(0, "the colours are in the object's view file and colour map, which were not opened with this file: Meristem's palette is used (open the object's folder or .zip to use its own)");
         }
     }
 
     /// A module whose meaning depends on the view (turns without an angle, colours) or that cpfg
     /// spells differently (`@Gs`, `@Gc`, `@Ge`); `None` for the others.
-    pub(super) fn view_module(
+    pub(in crate::import::abop) fn view_module(
         &mut self,
         name: &str,
         params: &[String],
@@ -88,7 +88,7 @@ impl Importer {
         n: usize,
     ) -> Option<String> {
         if ["+", "-", "&", "^", "/", "\\"].contains(&name) && !has_params {
-            self.bare_turn = true;
+            self.cpfg.bare_turn = true;
             return None;
         }
         if self.flavour != Flavour::Cpfg {
@@ -97,8 +97,8 @@ impl Importer {
         // dialect: cpfg's module names
         match name {
             ";" | "," => {
-                self.colour = true;
-                let step = self.view.as_ref().and_then(|v| v.color_increment)?;
+                self.cpfg.colour = true;
+                let step = self.cpfg.view.as_ref().and_then(|v| v.color_increment)?;
                 if has_params || step == 1.0 {
                     return None;
                 }
@@ -124,11 +124,11 @@ impl Importer {
     }
 
     /// cpfg's `func(k, x)`: function k of the view file, as the `#curve`/`#table` it became.
-    pub(super) fn func(&self, args: &[String]) -> Result<String, String> {
+    pub(in crate::import::abop) fn func(&self, args: &[String]) -> Result<String, String> {
         let [k, x] = args else {
             return Err("cpfg's func(…) takes a function's number and a value".into());
         };
-        let Some(view) = &self.view else {
+        let Some(view) = &self.cpfg.view else {
             return Err(format!(
                 "cpfg's func({k}, …) reads function {k} of the object's view file (.v), which was not opened with this file (open the object's folder or .zip)"
             ));

@@ -5,13 +5,13 @@
 //! (a probe, with a marker module where the flag is set, under two seeds); when both agree, the
 //! flag becomes `#define m (NumIt > K ? 1 : 0)`, else the production is skipped as before.
 
-use super::{is_identifier, Line};
+use super::super::{is_identifier, Line};
 use crate::derive::{derive, DeriveOptions};
 
 /// A global of the file that may be a flag: its name, its value at the top level, the one other
 /// value productions set it to.
 #[derive(Clone, Debug, PartialEq)]
-pub(super) struct Flag {
+pub(in crate::import::abop) struct Flag {
     pub name: String,
     pub initial: String,
     pub set: String,
@@ -22,7 +22,7 @@ const PROBE_STEPS: u32 = 1_000;
 const PROBE_MODULES: usize = 50_000;
 
 /// The marker module of the flag with index `k` in a probe.
-pub(super) fn marker(k: usize) -> String {
+pub(in crate::import::abop) fn marker(k: usize) -> String {
     format!("ProbeMark{k}")
 }
 
@@ -36,7 +36,7 @@ fn number_assignment(code: &str) -> Option<(&str, &str)> {
 /// The globals of an L-Py file that may be flags: set to a number at the top level, named by a
 /// `global` statement, assigned nowhere but to numbers, and to only one number other than the
 /// top-level one; augmented assignments (`m += 1`) rule a global out.
-pub(super) fn candidates(all: &[Line]) -> Vec<Flag> {
+pub(in crate::import::abop) fn candidates(all: &[Line]) -> Vec<Flag> {
     let mut named: Vec<String> = Vec::new();
     for line in all {
         if let Some(rest) = line.code.strip_prefix("global ") {
@@ -82,7 +82,7 @@ pub(super) fn candidates(all: &[Line]) -> Vec<Flag> {
 /// The first step in which the marker `marker` appears in a derivation of `probe` (the probe's
 /// marker counts the steps after it was written): `Some(None)` when it never does, `None` when
 /// the probe cannot be derived within its limits or two seeds disagree.
-pub(super) fn first_step(probe: &str, marker: &str) -> Option<Option<u32>> {
+pub(in crate::import::abop) fn first_step(probe: &str, marker: &str) -> Option<Option<u32>> {
     let (file, _) = crate::syntax::parse(probe);
     let (model, diagnostics) = crate::model::resolve(&file);
     let mut model = model?;

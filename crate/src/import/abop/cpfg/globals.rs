@@ -6,13 +6,14 @@
 //! step's number), which is exactly its value during that step; any other change is noted. An
 //! array becomes a choice by index, written where the array is read.
 
-use super::{Env, Importer, Line};
+use super::super::{Env, Importer, Line};
 use crate::import::number;
+use crate::syntax::BRACES;
 use crate::vocabulary::DirectiveKind;
 
 /// Which block a statement is in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) enum BlockKind {
+pub(in crate::import::abop) enum BlockKind {
     Start,
     StartEach,
     EndEach,
@@ -45,7 +46,7 @@ impl BlockKind {
 
 /// What the global blocks of a file say, read before the file is translated.
 #[derive(Clone, Debug, Default)]
-pub(super) struct Globals {
+pub(in crate::import::abop) struct Globals {
     /// Variables a `StartEach:`/`EndEach:` block steps by a constant: name, step, and whether
     /// after the step (`EndEach:`).
     steps: Vec<(String, String, bool)>,
@@ -62,7 +63,7 @@ pub(super) struct Globals {
 }
 
 /// `Start: {…}` → the block kind and the statements inside the braces.
-pub(super) fn block(code: &str) -> Option<(BlockKind, Vec<String>)> {
+pub(in crate::import::abop) fn block(code: &str) -> Option<(BlockKind, Vec<String>)> {
     let colon = code.find(':')?;
     let keyword: String = code[..colon]
         .chars()
@@ -79,21 +80,14 @@ pub(super) fn block(code: &str) -> Option<(BlockKind, Vec<String>)> {
 /// Statements split at `;` outside braces.
 fn statements(body: &str) -> Vec<String> {
     let mut out = Vec::new();
-    let mut depth = 0i32;
-    let mut current = String::new();
-    for c in body.chars() {
-        match c {
-            '{' => depth += 1,
-            '}' => depth -= 1,
-            ';' if depth <= 0 => {
-                out.push(std::mem::take(&mut current).trim().to_string());
-                continue;
-            }
-            _ => {}
+    let mut start = 0;
+    for (i, c, depth) in BRACES.depths(body) {
+        if c == ';' && depth <= 0 {
+            out.push(body[start..i].trim().to_string());
+            start = i + 1;
         }
-        current.push(c);
     }
-    out.push(current.trim().to_string());
+    out.push(body[start..].trim().to_string());
     out.retain(|s| !s.is_empty());
     out
 }
@@ -253,7 +247,7 @@ impl Globals {
 
 impl Importer {
     /// Translates a global block at line `n`; false when the line is none.
-    pub(super) fn global_block(&mut self, code: &str, n: usize) -> bool {
+    pub(in crate::import::abop) fn global_block(&mut self, code: &str, n: usize) -> bool {
         let Some((kind, statements)) = block(code) else {
             return false;
         };
@@ -294,6 +288,7 @@ impl Importer {
             ));
         };
         if let Some((_, value)) = self
+            .cpfg
             .globals
             .derived
             .iter()
@@ -315,8 +310,8 @@ impl Importer {
         }
         match kind {
             BlockKind::Start | BlockKind::Define => self.start_value(&name, s, n),
-            _ if self.globals.steps.iter().any(|(x, _, _)| *x == name)
-                && !self.globals.changed.contains(&name) =>
+            _ if self.cpfg.globals.steps.iter().any(|(x, _, _)| *x == name)
+                && !self.cpfg.globals.changed.contains(&name) =>
             {
                 Ok(())
             }
@@ -335,13 +330,14 @@ impl Importer {
         };
         let value = self.expression(value, &Env::new())?;
         let step = self
+            .cpfg
             .globals
             .steps
             .iter()
             .find(|(x, _, _)| x == name)
             .cloned();
         let text = match step {
-            Some((_, d, after)) if !self.globals.changed.iter().any(|c| c == name) => {
+            Some((_, d, after)) if !self.cpfg.globals.changed.iter().any(|c| c == name) => {
                 let steps = if after { "(NumIt-1)" } else { "NumIt" };
                 format!("({value})+({d})*{steps}")
             }
@@ -380,7 +376,7 @@ impl Importer {
         }
         let close = after.rfind('}').unwrap_or(after.len());
         let mut values = Vec::new();
-        for v in super::split_top(&after[open + 1..close.max(open + 1)], ',') {
+        for v in super::super::split_top(&after[open + 1..close.max(open + 1)], ',') {
             if !v.trim().is_empty() {
                 values.push(self.expression(v, &Env::new())?);
             }
@@ -390,13 +386,18 @@ impl Importer {
         }
         // The sizes of the dimensions after the first: what one step of each index skips.
         sizes.remove(0);
-        self.globals.arrays.push((name, sizes, values));
+        self.cpfg.globals.arrays.push((name, sizes, values));
         Ok(())
     }
 
     /// How many indices the array `name` takes, if it is an array.
-    pub(super) fn array_dimensions(&self, name: &str) -> Option<usize> {
-        let (_, sizes, _) = self.globals.arrays.iter().find(|(a, _, _)| a == name)?;
+    pub(in crate::import::abop) fn array_dimensions(&self, name: &str) -> Option<usize> {
+        let (_, sizes, _) = self
+            .cpfg
+            .globals
+            .arrays
+            .iter()
+            .find(|(a, _, _)| a == name)?;
         Some(sizes.len() + 1)
     }
 
@@ -405,8 +406,17 @@ impl Importer {
     /// give one index into its values, row after row, as C lays them out. The value is chosen by
     /// halving the range of indices, so that the choice nests as deep as the logarithm of the
     /// number of values.
-    pub(super) fn array_value(&self, name: &str, indices: &[String]) -> Option<String> {
-        let (_, sizes, values) = self.globals.arrays.iter().find(|(a, _, _)| a == name)?;
+    pub(in crate::import::abop) fn array_value(
+        &self,
+        name: &str,
+        indices: &[String],
+    ) -> Option<String> {
+        let (_, sizes, values) = self
+            .cpfg
+            .globals
+            .arrays
+            .iter()
+            .find(|(a, _, _)| a == name)?;
         if indices.len() != sizes.len() + 1 || values.is_empty() {
             return None;
         }

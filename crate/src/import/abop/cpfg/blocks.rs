@@ -2,7 +2,8 @@
 //! follows, `if`/`else` over assignments bind conditional values, and in lpfg's blocks each
 //! `produce` ends a path.
 
-use super::{is_identifier, Env, Importer};
+use super::super::{is_identifier, Env, Importer};
+use crate::syntax::PARENTHESES_AND_BRACES;
 
 impl Importer {
     /// A statement block, in order: assignments `x = e;` (also `+=` …), which bind `x` for what
@@ -10,14 +11,19 @@ impl Importer {
     /// a conditional expression `((c)?then:else)`; `{…}` groups; `printf` (dropped with a note);
     /// a statement that assigns nothing (no effect in cpfg either: dropped with a note). A loop,
     /// or anything else, is an error (the production is skipped).
-    pub(super) fn block(&mut self, block: &str, env: &mut Env, n: usize) -> Result<(), String> {
+    pub(in crate::import::abop) fn block(
+        &mut self,
+        block: &str,
+        env: &mut Env,
+        n: usize,
+    ) -> Result<(), String> {
         self.statements(block, env, n, 0).map(|_| ())
     }
 
     /// The statements of `text` (see [`Importer::block`]); `depth` bounds the nesting of braces
     /// and `if`s, so that no input exhausts the stack.
     /// Returns whether every path through them ends at lpfg's `produce`.
-    pub(super) fn statements(
+    pub(in crate::import::abop) fn statements(
         &mut self,
         text: &str,
         env: &mut Env,
@@ -50,22 +56,23 @@ impl Importer {
                 continue;
             }
             if let Some(successor) = statement.strip_prefix("produce") {
-                if self.produced.is_some()
+                if self.lpfg.produced.is_some()
                     && !successor.starts_with(|c: char| c.is_ascii_alphanumeric() || c == '_')
                 {
                     let successor = self.lpfg_modules(successor, env, n)?;
-                    let condition = match self.path.len() {
+                    let condition = match self.lpfg.path.len() {
                         0 => None,
-                        1 => Some(self.path[0].clone()),
+                        1 => Some(self.lpfg.path[0].clone()),
                         _ => Some(
-                            self.path
+                            self.lpfg
+                                .path
                                 .iter()
                                 .map(|c| format!("({c})"))
                                 .collect::<Vec<_>>()
                                 .join(" && "),
                         ),
                     };
-                    if let Some(produced) = &mut self.produced {
+                    if let Some(produced) = &mut self.lpfg.produced {
                         produced.push((condition, successor));
                     }
                     return Ok(true);
@@ -101,28 +108,28 @@ impl Importer {
         let c = self
             .expression(condition, env)
             .map_err(|why| format!("the condition of 'if ({})': {why}", one_line(condition)))?;
-        let depth_before = self.path.len();
+        let depth_before = self.lpfg.path.len();
         let mut yes = env.clone();
-        self.path.push(c.clone());
+        self.lpfg.path.push(c.clone());
         let yes_ends = self.statements(then, &mut yes, n, depth + 1)?;
-        self.path.truncate(depth_before);
+        self.lpfg.path.truncate(depth_before);
         let mut no = env.clone();
-        self.path.push(format!("!({c})"));
+        self.lpfg.path.push(format!("!({c})"));
         let no_ends = match otherwise {
             Some(otherwise) => self.statements(otherwise, &mut no, n, depth + 1)?,
             None => false,
         };
-        self.path.truncate(depth_before);
+        self.lpfg.path.truncate(depth_before);
         // lpfg: a branch that produced ends the production; what follows runs on the other.
         match (yes_ends, no_ends) {
             (true, true) => return Ok(true),
             (true, false) => {
-                self.path.push(format!("!({c})"));
+                self.lpfg.path.push(format!("!({c})"));
                 *env = no;
                 return Ok(false);
             }
             (false, true) => {
-                self.path.push(c);
+                self.lpfg.path.push(c);
                 *env = yes;
                 return Ok(false);
             }
@@ -188,7 +195,7 @@ impl Importer {
         if !is_identifier(target) || value.starts_with('=') {
             return Err(format!("the statement '{statement}' is not an assignment"));
         }
-        if self.globals.is_global(target) && !env.contains_key(target) {
+        if self.cpfg.globals.is_global(target) && !env.contains_key(target) {
             self.note(n, format!("the statement '{statement}' changes cpfg's global variable {target} during the derivation; Meristem has no variables, so it is dropped and {target} keeps its start value"));
             return Ok(());
         }
@@ -213,7 +220,7 @@ impl Importer {
 
 /// The longest value a statement block may give a variable: each use of a variable copies its
 /// value, so `x = x*x;` repeated would double it each time.
-pub(super) const MAX_VALUE: usize = 20_000;
+pub(in crate::import::abop) const MAX_VALUE: usize = 20_000;
 
 /// A statement of a cpfg block, as [`next_statement`] reads it.
 #[derive(Debug, PartialEq)]
@@ -224,24 +231,6 @@ enum Statement<'a> {
     If(&'a str, &'a str, Option<&'a str>),
     /// Anything else, up to its `;`.
     Simple(&'a str),
-}
-
-/// The byte index of the bracket that closes the one at `open` (`(` or `{`, nesting both).
-pub(super) fn closing(text: &str, open: usize) -> Option<usize> {
-    let mut depth = 0i32;
-    for (i, c) in text.char_indices().skip_while(|(i, _)| *i < open) {
-        match c {
-            '(' | '{' => depth += 1,
-            ')' | '}' => {
-                depth -= 1;
-                if depth == 0 {
-                    return Some(i);
-                }
-            }
-            _ => {}
-        }
-    }
-    None
 }
 
 /// Whether `text` starts with the keyword `word` (not a longer name).
@@ -259,7 +248,9 @@ fn next_statement(text: &str, depth: usize) -> Result<(Statement<'_>, &str), Str
         return Err("statements nest more than 16 deep".into());
     }
     if text.starts_with('{') {
-        let close = closing(text, 0).ok_or("a '{' block is never closed")?;
+        let close = PARENTHESES_AND_BRACES
+            .closing(text, 0)
+            .ok_or("a '{' block is never closed")?;
         return Ok((Statement::Group(&text[1..close]), &text[close + 1..]));
     }
     if starts_with_word(text, "if") {
@@ -267,7 +258,9 @@ fn next_statement(text: &str, depth: usize) -> Result<(Statement<'_>, &str), Str
         let open = open
             .filter(|&o| text[o..].starts_with('('))
             .ok_or("'if' without '('")?;
-        let close = closing(text, open).ok_or("a '(' is never closed")?;
+        let close = PARENTHESES_AND_BRACES
+            .closing(text, open)
+            .ok_or("a '(' is never closed")?;
         let condition = &text[open + 1..close];
         let after = text[close + 1..].trim_start();
         let (then, rest) = next_statement(after, depth + 1)?;
@@ -291,16 +284,13 @@ fn next_statement(text: &str, depth: usize) -> Result<(Statement<'_>, &str), Str
         }
         return Ok((Statement::If(condition, then_text, None), rest));
     }
-    let mut depth = 0i32;
-    for (i, c) in text.char_indices() {
-        match c {
-            '(' | '{' => depth += 1,
-            ')' | '}' => depth -= 1,
-            ';' if depth <= 0 => return Ok((Statement::Simple(&text[..i]), &text[i + 1..])),
-            _ => {}
-        }
-    }
-    Ok((Statement::Simple(text), ""))
+    let end = PARENTHESES_AND_BRACES
+        .depths(text)
+        .find(|&(_, c, depth)| c == ';' && depth <= 0);
+    Ok(match end {
+        Some((i, _, _)) => (Statement::Simple(&text[..i]), &text[i + 1..]),
+        None => (Statement::Simple(text), ""),
+    })
 }
 
 /// `text` on one line, its runs of white space one space.

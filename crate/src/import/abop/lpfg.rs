@@ -2,7 +2,8 @@
 //! with `produce` (each path to a `produce` a conditional production) and lpfg's long turtle
 //! names.
 
-use super::{closing, is_identifier, matching, separate, split_top, Env, Importer, Line};
+use super::{is_identifier, separate, split_top, Env, Importer, Line};
+use crate::syntax::{PARENTHESES, PARENTHESES_AND_BRACES};
 
 impl Importer {
     /// The lines of an L+C (lpfg) file in cpfg's terms: `module` declarations are read (a name
@@ -10,7 +11,7 @@ impl Importer {
     /// `derivation length:` lines is dropped, and a production's head `A(t):` joins the `{…}`
     /// block on the lines after it.
     pub(super) fn lpfg_lines(&mut self, all: Vec<Line>) -> Vec<Line> {
-        self.lpfg = true;
+        self.lpfg.active = true;
         let mut out: Vec<Line> = Vec::new();
         for mut line in all {
             if let Some(rest) = line.code.strip_prefix("module ") {
@@ -21,7 +22,7 @@ impl Importer {
                         && !self.declared.iter().any(|d| d == name)
                     {
                         self.declared.push(name.to_string());
-                        self.words.push((name.to_string(), name.to_string()));
+                        self.cpfg.words.push((name.to_string(), name.to_string()));
                     }
                 }
                 continue;
@@ -39,7 +40,9 @@ impl Importer {
             }
             out.push(line);
         }
-        self.words.sort_by_key(|w| std::cmp::Reverse(w.0.len()));
+        self.cpfg
+            .words
+            .sort_by_key(|w| std::cmp::Reverse(w.0.len()));
         out
     }
 
@@ -48,12 +51,12 @@ impl Importer {
     /// to it (lpfg leaves a module that produces nothing as it is, as Meristem does when no
     /// production applies).
     pub(super) fn lpfg_production(&mut self, pattern: &str, body: &str, n: usize) {
-        self.produced = Some(Vec::new());
-        self.path.clear();
+        self.lpfg.produced = Some(Vec::new());
+        self.lpfg.path.clear();
         let mut env = Env::new();
         let result = self.statements(body, &mut env, n, 0);
-        let produced = self.produced.take().unwrap_or_default();
-        self.path.clear();
+        let produced = self.lpfg.produced.take().unwrap_or_default();
+        self.lpfg.path.clear();
         if let Err(why) = result {
             self.note(n, format!("{why}; the production is skipped"));
             return;
@@ -115,7 +118,9 @@ impl Importer {
                 j += 1;
             }
             let (args, after) = if chars.get(j) == Some(&'(') {
-                let close = matching(&chars, j).ok_or("a '(' is never closed")?;
+                let close = PARENTHESES
+                    .closing_char(&chars, j)
+                    .ok_or("a '(' is never closed")?;
                 (
                     Some(chars[j + 1..close].iter().collect::<String>()),
                     close + 1,
@@ -124,7 +129,7 @@ impl Importer {
                 (None, i)
             };
             i = after;
-            if word.len() == 1 || self.words.iter().any(|(w, _)| *w == word) {
+            if word.len() == 1 || self.cpfg.words.iter().any(|(w, _)| *w == word) {
                 out.push_str(&word);
                 if let Some(a) = &args {
                     out.push_str(&format!("({a})"));
@@ -195,7 +200,7 @@ pub(super) fn is_lpfg(all: &[Line]) -> bool {
 pub(super) fn lpfg_production_parts(code: &str) -> Option<(&str, &str)> {
     let open = code.find('{')?;
     let head = code[..open].trim_end().strip_suffix(':')?.trim();
-    let close = closing(code, open)?;
+    let close = PARENTHESES_AND_BRACES.closing(code, open)?;
     if head.is_empty() || !code[close + 1..].trim().is_empty() {
         return None;
     }

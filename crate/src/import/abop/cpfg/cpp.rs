@@ -11,7 +11,8 @@
 //! each one's number, worked out once when it was defined. So a chain of macros that each use the
 //! one before twice costs one expansion a link, not a doubling text (issue 19).
 
-use super::Line;
+use super::super::Line;
+use crate::syntax::ALL_BRACKETS;
 
 /// A `#define`.
 #[derive(Clone, Debug)]
@@ -33,7 +34,7 @@ const MAX_EXPANSIONS: usize = 2_000;
 const MAX_LINE: usize = 100_000;
 
 /// The preprocessor's state.
-pub(super) struct Preprocessor<'a> {
+pub(in crate::import::abop) struct Preprocessor<'a> {
     /// The macros defined now, by name (a new `#define` of a name replaces the old one).
     macros: std::collections::HashMap<String, Macro>,
     /// Macro uses replaced by text so far (a measure of the work done: linear in the input).
@@ -298,10 +299,11 @@ impl<'a> Preprocessor<'a> {
         }
         match (self.include)(name) {
             Some(text) => {
-                let included = super::lines(&text, super::Flavour::Cpfg)
-                    .into_iter()
-                    .map(|l| Line { n, ..l })
-                    .collect();
+                let included =
+                    crate::import::abop::prepare::lines(&text, crate::import::abop::Flavour::Cpfg)
+                        .into_iter()
+                        .map(|l| Line { n, ..l })
+                        .collect();
                 self.run(included, depth + 1)
             }
             None => {
@@ -421,30 +423,29 @@ fn continued(lines: Vec<Line>) -> Vec<Line> {
 /// The arguments of a macro call whose first argument starts at byte `at` (after `(`): split at
 /// top-level commas; with the index of the closing `)`.
 fn arguments(text: &str, at: usize) -> Option<(Vec<String>, usize)> {
-    let mut depth = 0i32;
     let mut args = Vec::new();
     let mut start = at;
-    for (k, c) in text[at..].char_indices() {
+    for (k, c, depth) in ALL_BRACKETS.depths(&text[at..]) {
         let i = at + k;
-        match c {
-            '(' | '[' | '{' => depth += 1,
-            ')' if depth == 0 => {
-                args.push(text[start..i].trim().to_string());
-                return Some((args, i));
-            }
-            ')' | ']' | '}' => depth -= 1,
-            ',' if depth == 0 => {
-                args.push(text[start..i].trim().to_string());
-                start = i + 1;
-            }
-            _ => {}
+        // A `)` that takes the depth below the arguments' closes the call.
+        if c == ')' && depth == -1 {
+            args.push(text[start..i].trim().to_string());
+            return Some((args, i));
+        }
+        if c == ',' && depth == 0 {
+            args.push(text[start..i].trim().to_string());
+            start = i + 1;
         }
     }
     None
 }
 
 /// The body with each parameter (a whole word) replaced by its argument.
-pub(super) fn substitute(body: &str, params: &[String], args: &[String]) -> String {
+pub(in crate::import::abop) fn substitute(
+    body: &str,
+    params: &[String],
+    args: &[String],
+) -> String {
     map_words(body, |word, _, out| {
         match params.iter().position(|p| p == word) {
             Some(k) => out.push_str(args.get(k).map_or("", String::as_str)),

@@ -1,0 +1,174 @@
+//! cpfg's predecessors of several modules, which Meristem writes as one: several letters
+//! (`AXIOM`) become one declared module, several modules (`F(v,n)#(w)`) one production each
+//! with the others as context.
+
+use super::super::{arrow, top_level, Flavour, Importer, Line};
+use super::cpfg_symbol;
+use crate::syntax::PARENTHESES;
+
+impl Importer {
+    /// cpfg's predecessors made of several modules that are letters without parameters
+    /// (`AXIOM : c --> …`, five modules A X I O M): Meristem's predecessor is one module, so the
+    /// letters written together become one declared module, with a note at the first
+    /// production.
+    pub(in crate::import::abop) fn words(&mut self, all: &[Line]) {
+        for line in all {
+            let Some((arrow_at, _)) = arrow(&line.code) else {
+                continue;
+            };
+            let left = &line.code[..arrow_at];
+            let left = top_level(left, ":").map_or(left, |i| &left[..i]);
+            let strict = top_level(left, "<").map_or(left, |i| &left[i + 1..]);
+            let strict = top_level(strict, ">")
+                .map_or(strict, |i| &strict[..i])
+                .trim();
+            if strict.len() < 2
+                || strict.len() > 32
+                || !strict.chars().all(|c| c.is_ascii_alphabetic())
+                || self.cpfg.words.iter().any(|(w, _)| w == strict)
+            {
+                continue;
+            }
+            // Meristem reads a line that starts with `axiom :` as its axiom.
+            let name = if strict.eq_ignore_ascii_case("axiom") {
+                format!("{strict}_")
+            } else {
+                strict.to_string()
+            };
+            let letters: Vec<String> = strict.chars().map(String::from).collect();
+            self.note(
+                line.n,
+                format!(
+                    "cpfg's predecessor {strict} is {} modules ({}); Meristem's predecessor is one module, so {strict} written together (here, in the axiom and in successors) becomes one module {name} (#module): where no production for it applies, cpfg would rewrite the letters one by one, Meristem keeps it whole",
+                    letters.len(),
+                    letters.join(" ")
+                ),
+            );
+            self.declared.push(name.clone());
+            self.cpfg.words.push((strict.to_string(), name));
+        }
+        self.cpfg
+            .words
+            .sort_by_key(|w| std::cmp::Reverse(w.0.len()));
+    }
+
+    /// cpfg's predecessor of several modules (`F(v,n)#(w) --> F(v)#(w)@O`): Meristem's
+    /// predecessor is one module, so it becomes one production per module, each with the others
+    /// as context: the first gives the successor, the others erase their module (`F(v,n) >
+    /// #(w) -> F(v)#(w)@O` and `F(v,n) < #(w) -> ε`), with a note. `None` when the predecessor
+    /// is one module, or when the production draws a random number (its probability or a random
+    /// condition would be drawn apart for each module).
+    pub(in crate::import::abop) fn several_modules(
+        &mut self,
+        left: &str,
+        right: &str,
+        n: usize,
+    ) -> Option<Vec<(String, String)>> {
+        if self.flavour != Flavour::Cpfg {
+            return None;
+        }
+        let (pattern, guard) = match top_level(left, ":") {
+            Some(i) => (left[..i].trim(), Some(left[i + 1..].trim())),
+            None => (left, None),
+        };
+        // The new contexts `<<`, `>>` are read with the pattern (see `new_contexts`).
+        if pattern.contains("<<") || pattern.contains(">>") {
+            return None;
+        }
+        let (before, rest) = match top_level(pattern, "<") {
+            Some(i) => (pattern[..i].trim(), &pattern[i + 1..]),
+            None => ("", pattern),
+        };
+        let (strict, after) = match top_level(rest, ">") {
+            Some(i) => (rest[..i].trim(), rest[i + 1..].trim()),
+            None => (rest.trim(), ""),
+        };
+        let modules = self.source_modules(strict)?;
+        if modules.len() < 2
+            || top_level(right, ":").is_some()
+            || ["ran(", "nran("].iter().any(|r| left.contains(r))
+        {
+            return None;
+        }
+        let before = if before == "*" { "" } else { before };
+        let after = if after == "*" { "" } else { after };
+        self.note(
+            n,
+            format!(
+                "cpfg's predecessor {strict} is {} modules; Meristem's predecessor is one module, so it becomes a production for {} with the others as its context and one for each other module that erases it there: the same unless two matches overlap or modules cpfg ignores stand between them",
+                modules.len(),
+                modules[0]
+            ),
+        );
+        let parts = (0..modules.len())
+            .map(|i| {
+                let lc = format!("{before}{}", modules[..i].concat());
+                let rc = format!("{}{after}", modules[i + 1..].concat());
+                let mut head = String::new();
+                if !lc.trim().is_empty() {
+                    head.push_str(&format!("{lc} < "));
+                }
+                head.push_str(&modules[i]);
+                if !rc.trim().is_empty() {
+                    head.push_str(&format!(" > {rc}"));
+                }
+                if let Some(g) = guard {
+                    head.push_str(&format!(" : {g}"));
+                }
+                let successor = if i == 0 {
+                    right.to_string()
+                } else {
+                    "*".to_string()
+                };
+                (head, successor)
+            })
+            .collect();
+        Some(parts)
+    }
+
+    /// The modules of a cpfg module string as written (`F(v,n)#(w)` → `F(v,n)`, `#(w)`); `None`
+    /// when it holds a bracket or a parenthesis that is never closed.
+    pub(in crate::import::abop) fn source_modules(&self, text: &str) -> Option<Vec<String>> {
+        let chars: Vec<char> = text.chars().collect();
+        let mut out = Vec::new();
+        let mut i = 0;
+        while i < chars.len() {
+            let c = chars[i];
+            if c.is_whitespace() {
+                i += 1;
+                continue;
+            }
+            if "[]{}<>".contains(c) {
+                return None;
+            }
+            let start = i;
+            i = if c == '@' || c == '~' || c == '?' {
+                cpfg_symbol(&chars, i).1
+            } else if let Some((word, _)) = self
+                .cpfg
+                .words
+                .iter()
+                .find(|(w, _)| chars[i..].iter().take(w.len()).copied().eq(w.chars()))
+            {
+                i + word.chars().count()
+            } else {
+                i + 1
+            };
+            let mut j = i;
+            while chars.get(j) == Some(&' ') {
+                j += 1;
+            }
+            if chars.get(j) == Some(&'(') {
+                i = PARENTHESES.closing_char(&chars, j)? + 1;
+            }
+            out.push(
+                chars[start..i]
+                    .iter()
+                    .collect::<String>()
+                    .trim()
+                    .to_string(),
+            );
+        }
+        Some(out)
+    }
+}

@@ -1,0 +1,26 @@
+//! What the importers' tests check of every translation: that Meristem reads it without errors.
+
+use super::Import;
+use crate::diagnostics::has_errors;
+
+/// Panics, with the text and the diagnostics, unless the text of `import` parses and resolves
+/// without errors.
+pub(super) fn assert_resolves(import: &Import) {
+    let (file, d) = crate::syntax::parse(&import.text);
+    let (_, r) = crate::model::resolve(&file);
+    assert!(
+        !has_errors(&d) && !has_errors(&r),
+        "{}\n{d:?}\n{r:?}",
+        import.text
+    );
+}
+
+/// The check on the import of odd input `source`: when its translation has an axiom, it
+/// resolves without errors (a translation without one is reported as such).
+pub(super) fn assert_resolves_if_it_has_an_axiom(source: &str, import: &Import) {
+    let (file, _) = crate::syntax::parse(&import.text);
+    if file.axiom.is_some() {
+        let (_, r) = crate::model::resolve(&file);
+        assert!(!has_errors(&r), "{source:?}\n{}\n{r:?}", import.text);
+    }
+}
