@@ -319,6 +319,17 @@ fn the_dependency_check_finds_an_arrow_back_up() {
 }
 
 /// Functions longer than the limit: (line, name, lines).
+/// What stands before `fn` without its visibility: `pub`, `pub(crate)`, `pub(in crate::a::b)`.
+fn without_visibility(head: &str) -> &str {
+    let Some(rest) = head.strip_prefix("pub") else {
+        return head;
+    };
+    match rest.strip_prefix('(') {
+        Some(inner) => inner.find(')').map_or(head, |close| &inner[close + 1..]),
+        None => rest,
+    }
+}
+
 fn long_functions(source: &Source) -> Vec<(usize, String, usize)> {
     let mut found = Vec::new();
     let lines = &source.code;
@@ -327,13 +338,10 @@ fn long_functions(source: &Source) -> Vec<(usize, String, usize)> {
         let Some(at) = trimmed.find("fn ") else {
             continue;
         };
-        let head = &trimmed[..at];
-        let is_item = head.split_whitespace().all(|w| {
-            matches!(
-                w,
-                "pub" | "pub(crate)" | "pub(super)" | "const" | "unsafe" | "async" | "extern"
-            )
-        });
+        let head = without_visibility(&trimmed[..at]);
+        let is_item = head
+            .split_whitespace()
+            .all(|w| matches!(w, "const" | "unsafe" | "async" | "extern"));
         if !is_item {
             continue;
         }
@@ -460,12 +468,17 @@ fn the_length_check_reads_signatures_with_arrays_and_arrows() {
         "trait T {{\n    fn declared(&self, p: [f32; 3]) -> [f32; 3];\n}}\n\
          pub fn long(p: [f32; 3], f: impl Fn(u8) -> Vec<u8>) -> [f32; 3] {{\n{body}    p\n}}\n\
          // Long because the test says so.\nfn excused(p: [f32; 3]) {{\n{body}}}\n\
-         fn short(p: [f32; 3]) -> f32 {{\n    p[0]\n}}\n"
+         fn short(p: [f32; 3]) -> f32 {{\n    p[0]\n}}\n\
+         pub(in crate::mesh) fn scoped() {{\n{body}}}\n"
     );
     let source = split(PathBuf::from("src/mesh/example.rs"), "mesh".into(), &text);
+    let scoped_at = 1 + text.lines().position(|l| l.contains("fn scoped")).unwrap();
     assert_eq!(
         long_functions(&source),
-        [(4, "long".to_string(), MAX_FUNCTION_LINES + 3)]
+        [
+            (4, "long".to_string(), MAX_FUNCTION_LINES + 3),
+            (scoped_at, "scoped".to_string(), MAX_FUNCTION_LINES + 2)
+        ]
     );
 }
 
