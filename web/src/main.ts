@@ -13,8 +13,9 @@ import { loadDownloads } from './studio/downloads';
 import { Autosave, browserKeeping, createOpening, INITIAL_EXAMPLE, wireFiles } from './studio/files';
 import { installLearnPanel } from './studio/learn';
 import { startingText, wireLinks } from './studio/links';
-import { connectTestHook, delay, emptyTestHook, lazyHelp, loadAppUpdates, nextFrame, Notice, studioElements, type StudioElements, type StudioTestHook } from './studio/page';
+import { delay, lazyHelp, loadAppUpdates, nextFrame, Notice, studioElements, type StudioElements } from './studio/page';
 import type { StudioParts } from './studio/parts';
+import { connectTestHook, emptyTestHook, type StudioTestHook } from './studio/test-hook';
 import { createLivePreview, DiagnosticsFeed, showStatus } from './studio/preview';
 import { PlantView } from './view';
 

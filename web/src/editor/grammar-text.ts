@@ -6,7 +6,6 @@
 // Invariant: nothing here imports CodeMirror; `./grammar-editor` arrives by a dynamic import.
 import type { Vocabulary } from '../core';
 import type { Diagnose } from './diagnostics';
-import type * as GrammarEditorModule from './grammar-editor';
 
 /** What the grammar editor needs. */
 export interface GrammarEditorOptions {
@@ -64,7 +63,9 @@ export interface GrammarEditor {
 }
 
 /** The module with the full editor (CodeMirror), loaded on demand. */
-export type EditorModule = Pick<typeof GrammarEditorModule, 'createGrammarEditor'>;
+export interface EditorModule {
+  createGrammarEditor(options: GrammarEditorOptions, selection?: { anchor: number; head: number }): GrammarEditor;
+}
 
 /**
  * The lazy editor's options: the vocabulary arrives with the editor (`core/vocabulary.ts`: after

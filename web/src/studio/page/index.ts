@@ -8,5 +8,4 @@ export { closeLikeAMenu } from './menus';
 export { lazyDialog, onDemand, type LazyDialog } from './on-demand';
 export { lazyHelp, type HelpOpener } from './help-loader';
 export { delay, nextFrame } from './frames';
-export { connectTestHook, emptyTestHook, type StudioTestHook } from './test-hook';
 export { loadAppUpdates } from './app-update-loader';

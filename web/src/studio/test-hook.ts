@@ -1,9 +1,9 @@
 // What the page exposes for its end-to-end tests and benchmarks, as `window.__meristem` (nothing
 // else is global). The browser tests read this shape: change it only with them.
-import type { PlantStats } from '../../core';
-import type { PlantView } from '../../view';
-import type { BranchEdits } from '../branches';
-import type { LivePreview } from '../preview';
+import type { PlantStats } from '../core';
+import type { PlantView } from '../view';
+import type { BranchEdits } from './branches';
+import type { LivePreview } from './preview';
 
 /** The studio as its tests see it. */
 export interface StudioTestHook {
