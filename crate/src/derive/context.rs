@@ -5,7 +5,7 @@
 //! the string's branches (trying each sibling branch in turn). Ignored modules are skipped on both
 //! sides.
 
-use crate::model::{LString, Model, PatternItem, PatternModule};
+use crate::model::{LString, Model, ModuleId, PatternItem, PatternModule};
 
 /// No partner: not a bracket, or an unbalanced one.
 pub const NONE: u32 = u32::MAX;
@@ -174,40 +174,50 @@ impl RightContext<'_> {
         (close != NONE).then(|| close as usize + 1)
     }
 
+    /// The first module from `pos` on that `skip` does not pass over, stepping over whole branches
+    /// `[…]`: `None` when the string ends first or a `[` is unbalanced.
+    #[inline(always)]
+    fn next_on_branch(&self, mut pos: usize, skip: impl Fn(ModuleId) -> bool) -> Option<usize> {
+        let (model, s) = (self.model, self.s);
+        while pos < s.len() {
+            let id = s.ids[pos];
+            if id == model.open {
+                pos = self.past_branch(pos)?;
+            } else if skip(id) {
+                pos += 1;
+            } else {
+                return Some(pos);
+            }
+        }
+        None
+    }
+
     /// Matches the pattern module `m` with the next module from `pos` on this branch, skipping
     /// branches and ignored modules, then the rest of the pattern after it.
     fn module<R: Recorder>(
         &self,
-        mut pos: usize,
+        pos: usize,
         m: &PatternModule,
         slots: &mut [f64],
         recorder: &mut R,
     ) -> bool {
         let (model, s) = (self.model, self.s);
-        while pos < s.len() {
-            let id = s.ids[pos];
-            if id == model.open {
-                let Some(next) = self.past_branch(pos) else {
-                    return false;
-                };
-                pos = next;
-            } else if id == model.close {
-                return false;
-            } else if model.ignored[id.index()] {
-                pos += 1;
-            } else {
-                if id != m.id || !bind(m, s.params_of(pos), slots) {
-                    return false;
-                }
-                let mark = recorder.mark();
-                recorder.record(pos);
-                if self.rest(pos + 1, slots, recorder) {
-                    return true;
-                }
-                recorder.reset(mark);
-                return false;
-            }
+        let Some(at) =
+            self.next_on_branch(pos, |id| id != model.close && model.ignored[id.index()])
+        else {
+            return false;
+        };
+        let id = s.ids[at];
+        // A `]` ends the branch before a module to match.
+        if id == model.close || id != m.id || !bind(m, s.params_of(at), slots) {
+            return false;
         }
+        let mark = recorder.mark();
+        recorder.record(at);
+        if self.rest(at + 1, slots, recorder) {
+            return true;
+        }
+        recorder.reset(mark);
         false
     }
 
@@ -236,21 +246,11 @@ impl RightContext<'_> {
 
     /// Matches a pattern `]` with the end of the branch `pos` is on (skipping whatever the branch
     /// still holds), then the rest of the pattern after it.
-    fn branch_end<R: Recorder>(&self, mut pos: usize, slots: &mut [f64], recorder: &mut R) -> bool {
-        let (model, s) = (self.model, self.s);
-        while pos < s.len() {
-            let id = s.ids[pos];
-            if id == model.open {
-                let Some(next) = self.past_branch(pos) else {
-                    return false;
-                };
-                pos = next;
-            } else if id == model.close {
-                return self.rest(pos + 1, slots, recorder);
-            } else {
-                pos += 1;
-            }
+    fn branch_end<R: Recorder>(&self, pos: usize, slots: &mut [f64], recorder: &mut R) -> bool {
+        let close = self.model.close;
+        match self.next_on_branch(pos, |id| id != close) {
+            Some(at) => self.rest(at + 1, slots, recorder),
+            None => false,
         }
-        false
     }
 }

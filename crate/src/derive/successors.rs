@@ -8,27 +8,14 @@ use crate::model::ModuleId;
 pub(super) const PAD: usize = 16;
 
 /// Appends `succ[start..start + len]` to `out`. A successor of at most 16 ids is copied as a fixed
-/// 4 or 16 ids (what lies past `len` is overwritten by the next module): wide stores of a known
-/// size instead of a copy of a variable length.
+/// 4 or 16 ids ([`put_wide`]; what lies past `len` is overwritten by the next module): wide stores
+/// of a known size instead of a copy of a variable length.
 #[inline(always)]
 pub(super) fn put(out: &mut Vec<ModuleId>, succ: &[ModuleId], start: usize, len: usize) {
-    if len > PAD {
-        out.extend_from_slice(&succ[start..start + len]);
-        return;
-    }
-    out.reserve(PAD);
-    let from = &succ[start..start + PAD];
-    let at = out.len();
-    // SAFETY: `reserve` leaves room for PAD more ids after `at`; `from` holds PAD initialised
-    // ids; the first `len` ids written are the successor, so the new length covers only them.
-    unsafe {
-        let to = out.as_mut_ptr().add(at);
-        if len <= 4 {
-            std::ptr::copy_nonoverlapping(from.as_ptr(), to, 4);
-        } else {
-            std::ptr::copy_nonoverlapping(from.as_ptr(), to, PAD);
-        }
-        out.set_len(at + len);
+    if len <= 4 {
+        put_wide::<4>(out, succ, start, len);
+    } else {
+        put_wide::<PAD>(out, succ, start, len);
     }
 }
 

@@ -215,22 +215,19 @@ const RANDOM: &[&[Param]] = &[&[
         "a random function such as uniform(0, 1)",
     ),
 ]];
-const CURVE: &[&[Param]] = &[&[
-    Param::new("name", ParamKind::Name, "the function's name"),
-    Param::new(
-        "points",
-        ParamKind::Points,
-        "control points x y, at least 4, x from the first to the last",
-    ),
-]];
-const TABLE: &[&[Param]] = &[&[
-    Param::new("name", ParamKind::Name, "the function's name"),
-    Param::new(
-        "points",
-        ParamKind::Points,
-        "points x y, at least 2, x increasing",
-    ),
-]];
+const CURVE: &[&[Param]] = &[&function_of_points(
+    "control points x y, at least 4, x from the first to the last",
+)];
+const TABLE: &[&[Param]] = &[&function_of_points("points x y, at least 2, x increasing")];
+
+/// The arguments of `#curve` and `#table`, which both define a function of x by points: its name,
+/// then the points.
+const fn function_of_points(points: &'static str) -> [Param; 2] {
+    [
+        Param::new("name", ParamKind::Name, "the function's name"),
+        Param::new("points", ParamKind::Points, points),
+    ]
+}
 const DEPTH: &[&[Param]] = &[&[Param::whole("n", 0.0, 10_000.0, "the depth").default(16.0)]];
 const U32_MAX: f64 = u32::MAX as f64;
 
