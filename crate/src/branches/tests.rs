@@ -2,21 +2,19 @@
 
 use super::*;
 use crate::mesh::{build_mesh, MeshBuffers};
-use crate::pipeline::{build, BuildOptions, PlantEditor};
+use crate::pipeline::{build, Build, BuildOptions, PlantEditor};
 
 fn built(source: &str) -> PlantEditor {
-    built_n(source, None)
+    editor(build(source, &BuildOptions::default()))
 }
 
 /// The plant of `source` after `iterations` steps, ready to edit.
-fn built_n(source: &str, iterations: Option<u32>) -> PlantEditor {
-    let result = build(
-        source,
-        &BuildOptions {
-            iterations,
-            ..BuildOptions::default()
-        },
-    );
+fn built_n(source: &str, iterations: u32) -> PlantEditor {
+    editor(build(source, &BuildOptions::with_iterations(iterations)))
+}
+
+/// The plant of a build that succeeded, ready to edit.
+fn editor(result: Build) -> PlantEditor {
     assert!(result.ok(), "{:?}", result.diagnostics);
     PlantEditor::new(result.plant)
 }
@@ -115,7 +113,7 @@ fn items_belong_to_the_joint_they_are_drawn_at() {
 #[test]
 fn paths_are_stable_under_re_derivation() {
     let source = "#angle 25\naxiom: X\nX -> F[+X][-X]FX\nF -> FF";
-    let (a, b) = (built_n(source, Some(3)), built_n(source, Some(4)));
+    let (a, b) = (built_n(source, 3), built_n(source, 4));
     let (ta, tb) = (a.tree().clone(), b.tree().clone());
     assert!(tb.len() > ta.len());
     // Each branch of n = 3 is at the same path at n = 4, starting where the same place grew to.
@@ -198,7 +196,7 @@ fn a_drag_rebuilds_the_branch_and_moves_its_descendants_like_a_full_mesh() {
     for smooth in [false, true] {
         // Smooth: every axis a generalized cylinder through Bézier pieces.
         let source = LEAFY.replace("axiom: A", if smooth { "axiom: @Gc A" } else { "axiom: A" });
-        let mut b = built_n(&source, Some(4));
+        let mut b = built_n(&source, 4);
         assert!(b
             .plant()
             .skeleton
@@ -295,7 +293,7 @@ fn a_drag_rebuilds_the_branch_and_moves_its_descendants_like_a_full_mesh() {
 
 #[test]
 fn descendants_move_rigidly() {
-    let mut b = built_n(LEAFY, Some(4));
+    let mut b = built_n(LEAFY, 4);
     let original = b.plant().skeleton.clone();
     let info = b.branches();
     let branch = info.iter().position(|i| i.path == [0, 0]).unwrap() as u32;
@@ -361,7 +359,7 @@ fn an_edited_straight_branch_lies_on_its_edited_curve() {
 
 #[test]
 fn edits_apply_by_path_undo_exactly_and_report_what_does_not_apply() {
-    let mut b = built_n(LEAFY, Some(3));
+    let mut b = built_n(LEAFY, 3);
     let unedited = (b.plant().skeleton.clone(), b.plant().mesh.clone());
     let edits = vec![
         BranchEdit {
@@ -433,7 +431,7 @@ fn edits_survive_re_derivation_with_another_iteration_count() {
         ],
     };
     for n in [3, 4, 5] {
-        let mut b = built_n(source, Some(n));
+        let mut b = built_n(source, n);
         let unedited = b.branches();
         let report = b.apply_edits(std::slice::from_ref(&edit));
         assert_eq!(report.applied, vec![vec![0, 1]], "n = {n}");
@@ -579,10 +577,7 @@ fn provenance_still_names_derived_modules_after_drags_and_edits() {
     // With a homomorphism the turtle reads another string; ranges name the derived string.
     let grown = build(
         "#angle 30\naxiom: A\nA -> B[+A][-A]BA\nhomomorphism:\nB -> FF",
-        &BuildOptions {
-            iterations: Some(3),
-            ..BuildOptions::default()
-        },
+        &BuildOptions::with_iterations(3),
     );
     assert!(!grown.derivation.turtle_origin.is_empty());
     let mut b = PlantEditor::new(grown.plant);

@@ -344,40 +344,35 @@ mod tests {
             .sum()
     }
 
+    /// The points of an outline given as (x, y) pairs.
+    fn outline(xy: &[(f64, f64)]) -> Vec<DVec2> {
+        xy.iter().map(|&(x, y)| DVec2::new(x, y)).collect()
+    }
+
     #[test]
     fn small_outlines_of_every_vertex_kind() {
         // A square, an arrow head (a merge point), a "W" (split and merge points), a comb.
         let shapes: Vec<Vec<DVec2>> = vec![
-            vec![
-                DVec2::new(0.0, 0.0),
-                DVec2::new(1.0, 0.0),
-                DVec2::new(1.0, 1.0),
-                DVec2::new(0.0, 1.0),
-            ],
-            vec![
-                DVec2::new(0.0, 0.0),
-                DVec2::new(2.0, 1.0),
-                DVec2::new(0.0, 2.0),
-                DVec2::new(0.5, 1.0),
-            ],
-            vec![
-                DVec2::new(0.0, 0.0),
-                DVec2::new(4.0, 0.0),
-                DVec2::new(4.0, 3.0),
-                DVec2::new(3.0, 1.0),
-                DVec2::new(2.0, 3.0),
-                DVec2::new(1.0, 1.0),
-                DVec2::new(0.0, 3.0),
-            ],
-            vec![
-                DVec2::new(0.0, 3.0),
-                DVec2::new(1.0, 1.0),
-                DVec2::new(2.0, 3.0),
-                DVec2::new(3.0, 1.0),
-                DVec2::new(4.0, 3.0),
-                DVec2::new(4.0, 0.0),
-                DVec2::new(0.0, 0.0),
-            ]
+            outline(&[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]),
+            outline(&[(0.0, 0.0), (2.0, 1.0), (0.0, 2.0), (0.5, 1.0)]),
+            outline(&[
+                (0.0, 0.0),
+                (4.0, 0.0),
+                (4.0, 3.0),
+                (3.0, 1.0),
+                (2.0, 3.0),
+                (1.0, 1.0),
+                (0.0, 3.0),
+            ]),
+            outline(&[
+                (0.0, 3.0),
+                (1.0, 1.0),
+                (2.0, 3.0),
+                (3.0, 1.0),
+                (4.0, 3.0),
+                (4.0, 0.0),
+                (0.0, 0.0),
+            ])
             .into_iter()
             .map(|p| DVec2::new(p.x, -p.y)) // listed clockwise: mirrored, counter-clockwise
             .collect(),
@@ -393,13 +388,7 @@ mod tests {
 
     #[test]
     fn a_self_crossing_outline_is_refused_not_a_hang() {
-        let bow = [
-            DVec2::new(0.0, 0.0),
-            DVec2::new(2.0, 2.0),
-            DVec2::new(2.0, 0.0),
-            DVec2::new(0.0, 2.1),
-            DVec2::new(-1.0, 1.0),
-        ];
+        let bow = outline(&[(0.0, 0.0), (2.0, 2.0), (2.0, 0.0), (0.0, 2.1), (-1.0, 1.0)]);
         let _ = triangulate(&bow, 1e-12); // any answer, promptly
         let figure_eight: Vec<DVec2> = (0..200)
             .map(|i| {
