@@ -26,22 +26,32 @@ fn paths(tree: &BranchTree) -> Vec<(Vec<u32>, Vec<u32>)> {
         .collect()
 }
 
+/// The branch tree of `source`'s plant, checked to hold these branches, in order: each its path
+/// and its segments.
+fn tree_of(source: &str, branches: &[(&[u32], &[u32])]) -> BranchTree {
+    let tree = built(source).tree().clone();
+    let expected: Vec<(Vec<u32>, Vec<u32>)> = branches
+        .iter()
+        .map(|(path, segments)| (path.to_vec(), segments.to_vec()))
+        .collect();
+    assert_eq!(paths(&tree), expected, "{source}");
+    tree
+}
+
 #[test]
 fn an_axis_is_cut_where_a_branch_leaves_and_the_continuation_is_the_last_child() {
     // s0 s1 [s2 s3 [s4] s5] s6 [s7] s8
-    let b = built("axiom: FF[+FF[-F]F]F[-F]F");
-    let tree = b.tree().clone();
-    assert_eq!(
-        paths(&tree),
-        vec![
-            (vec![0], vec![0, 1]),
-            (vec![0, 0], vec![2, 3]),
-            (vec![0, 0, 0], vec![4]),
-            (vec![0, 0, 1], vec![5]),
-            (vec![0, 1], vec![6]),
-            (vec![0, 1, 0], vec![7]),
-            (vec![0, 1, 1], vec![8]),
-        ]
+    let tree = tree_of(
+        "axiom: FF[+FF[-F]F]F[-F]F",
+        &[
+            (&[0], &[0, 1]),
+            (&[0, 0], &[2, 3]),
+            (&[0, 0, 0], &[4]),
+            (&[0, 0, 1], &[5]),
+            (&[0, 1], &[6]),
+            (&[0, 1, 0], &[7]),
+            (&[0, 1, 1], &[8]),
+        ],
     );
     assert_eq!(tree.roots, vec![0]);
     assert_eq!(tree.branches[0].children, vec![1, 4]);
@@ -60,23 +70,15 @@ fn an_axis_is_cut_where_a_branch_leaves_and_the_continuation_is_the_last_child()
 #[test]
 fn several_roots_and_moves() {
     // Two bracketed roots; `f` inside a branch still grows from the joint; `@M` starts a root.
-    let b = built("axiom: [F][+F[fF]]@M(3,0,0)FF");
-    let tree = b.tree().clone();
-    assert_eq!(
-        paths(&tree),
-        vec![
-            (vec![0], vec![0]),
-            (vec![1], vec![1]),
-            (vec![1, 0], vec![2]),
-            (vec![2], vec![3, 4]),
-        ]
+    tree_of(
+        "axiom: [F][+F[fF]]@M(3,0,0)FF",
+        &[(&[0], &[0]), (&[1], &[1]), (&[1, 0], &[2]), (&[2], &[3, 4])],
     );
 }
 
 #[test]
 fn missing_paths_say_how_far_they_exist() {
-    let b = built("axiom: F[+F]F");
-    let tree = b.tree().clone();
+    let tree = built("axiom: F[+F]F").tree().clone();
     assert_eq!(tree.find(&[]), Err("the path is empty".into()));
     assert_eq!(tree.find(&[1]), Err("the plant has 1 root branch".into()));
     assert_eq!(
@@ -93,15 +95,9 @@ fn missing_paths_say_how_far_they_exist() {
 fn items_belong_to_the_joint_they_are_drawn_at() {
     // A leaf at the end of s0 (inside a bracket), a sphere at the end of s1, a polygon in the
     // lateral from s1.
-    let b = built("axiom: F[&~l]F@O(0.2)[+F{.f.f.}]F");
-    let tree = b.tree().clone();
-    assert_eq!(
-        paths(&tree),
-        vec![
-            (vec![0], vec![0, 1]),
-            (vec![0, 0], vec![2]),
-            (vec![0, 1], vec![3])
-        ]
+    let tree = tree_of(
+        "axiom: F[&~l]F@O(0.2)[+F{.f.f.}]F",
+        &[(&[0], &[0, 1]), (&[0, 0], &[2]), (&[0, 1], &[3])],
     );
     assert_eq!(
         tree.branches[0].items,
