@@ -136,58 +136,60 @@ fn monotone_diagonals(p: &[DVec2]) -> Vec<(u32, u32)> {
             .map(|k| status[k] as usize)
     };
     let is_merge = |h: u32| h != u32::MAX && kinds[h as usize] == Kind::Merge;
+    // Edge `e` ends at vertex `i`: a merge vertex helping it gets a diagonal to `i`, and `e`
+    // leaves the status.
+    let end_edge = |status: &mut Vec<u32>,
+                    helper: &[u32],
+                    diagonals: &mut Vec<(u32, u32)>,
+                    e: usize,
+                    i: usize| {
+        if is_merge(helper[e]) {
+            diagonals.push((i as u32, helper[e]));
+        }
+        remove(status, e, p[i]);
+    };
+    // The edge leaving vertex `i` enters the status, helped by `i`.
+    let start_edge = |status: &mut Vec<u32>, helper: &mut [u32], i: usize| {
+        let at = position(status, p[i]);
+        status.insert(at, i as u32);
+        helper[i] = i as u32;
+    };
+    // Vertex `i` becomes the helper of the edge to its left, after a diagonal to the merge vertex
+    // that helped it.
+    let help_left =
+        |status: &[u32], helper: &mut [u32], diagonals: &mut Vec<(u32, u32)>, i: usize| {
+            if let Some(j) = left_of(status, p[i]) {
+                if is_merge(helper[j]) {
+                    diagonals.push((i as u32, helper[j]));
+                }
+                helper[j] = i as u32;
+            }
+        };
     for &i in &order {
         let i = i as usize;
         let v = p[i];
         let e_prev = prev(i);
         match kinds[i] {
-            Kind::Start => {
-                let at = position(&status, v);
-                status.insert(at, i as u32);
-                helper[i] = i as u32;
-            }
-            Kind::End => {
-                if is_merge(helper[e_prev]) {
-                    diagonals.push((i as u32, helper[e_prev]));
-                }
-                remove(&mut status, e_prev, v);
-            }
+            Kind::Start => start_edge(&mut status, &mut helper, i),
+            Kind::End => end_edge(&mut status, &helper, &mut diagonals, e_prev, i),
             Kind::Split => {
                 if let Some(j) = left_of(&status, v) {
                     diagonals.push((i as u32, helper[j]));
                     helper[j] = i as u32;
                 }
-                let at = position(&status, v);
-                status.insert(at, i as u32);
-                helper[i] = i as u32;
+                start_edge(&mut status, &mut helper, i);
             }
             Kind::Merge => {
-                if is_merge(helper[e_prev]) {
-                    diagonals.push((i as u32, helper[e_prev]));
-                }
-                remove(&mut status, e_prev, v);
-                if let Some(j) = left_of(&status, v) {
-                    if is_merge(helper[j]) {
-                        diagonals.push((i as u32, helper[j]));
-                    }
-                    helper[j] = i as u32;
-                }
+                end_edge(&mut status, &helper, &mut diagonals, e_prev, i);
+                help_left(&status, &mut helper, &mut diagonals, i);
             }
             Kind::Regular => {
                 // The interior is on the right when the outline comes down to this point.
                 if above(p[e_prev], v) {
-                    if is_merge(helper[e_prev]) {
-                        diagonals.push((i as u32, helper[e_prev]));
-                    }
-                    remove(&mut status, e_prev, v);
-                    let at = position(&status, v);
-                    status.insert(at, i as u32);
-                    helper[i] = i as u32;
-                } else if let Some(j) = left_of(&status, v) {
-                    if is_merge(helper[j]) {
-                        diagonals.push((i as u32, helper[j]));
-                    }
-                    helper[j] = i as u32;
+                    end_edge(&mut status, &helper, &mut diagonals, e_prev, i);
+                    start_edge(&mut status, &mut helper, i);
+                } else {
+                    help_left(&status, &mut helper, &mut diagonals, i);
                 }
             }
         }
