@@ -2,21 +2,19 @@
 
 use super::*;
 use crate::mesh::{build_mesh, MeshBuffers};
-use crate::pipeline::{build, BuildOptions, PlantEditor};
+use crate::pipeline::{build, Build, BuildOptions, PlantEditor};
 
 fn built(source: &str) -> PlantEditor {
-    built_n(source, None)
+    editor(build(source, &BuildOptions::default()))
 }
 
 /// The plant of `source` after `iterations` steps, ready to edit.
-fn built_n(source: &str, iterations: Option<u32>) -> PlantEditor {
-    let result = build(
-        source,
-        &BuildOptions {
-            iterations,
-            ..BuildOptions::default()
-        },
-    );
+fn built_n(source: &str, iterations: u32) -> PlantEditor {
+    editor(build(source, &BuildOptions::with_iterations(iterations)))
+}
+
+/// The plant of a build that succeeded, ready to edit.
+fn editor(result: Build) -> PlantEditor {
     assert!(result.ok(), "{:?}", result.diagnostics);
     PlantEditor::new(result.plant)
 }
@@ -28,22 +26,32 @@ fn paths(tree: &BranchTree) -> Vec<(Vec<u32>, Vec<u32>)> {
         .collect()
 }
 
+/// The branch tree of `source`'s plant, checked to hold these branches, in order: each its path
+/// and its segments.
+fn tree_of(source: &str, branches: &[(&[u32], &[u32])]) -> BranchTree {
+    let tree = built(source).tree().clone();
+    let expected: Vec<(Vec<u32>, Vec<u32>)> = branches
+        .iter()
+        .map(|(path, segments)| (path.to_vec(), segments.to_vec()))
+        .collect();
+    assert_eq!(paths(&tree), expected, "{source}");
+    tree
+}
+
 #[test]
 fn an_axis_is_cut_where_a_branch_leaves_and_the_continuation_is_the_last_child() {
     // s0 s1 [s2 s3 [s4] s5] s6 [s7] s8
-    let b = built("axiom: FF[+FF[-F]F]F[-F]F");
-    let tree = b.tree().clone();
-    assert_eq!(
-        paths(&tree),
-        vec![
-            (vec![0], vec![0, 1]),
-            (vec![0, 0], vec![2, 3]),
-            (vec![0, 0, 0], vec![4]),
-            (vec![0, 0, 1], vec![5]),
-            (vec![0, 1], vec![6]),
-            (vec![0, 1, 0], vec![7]),
-            (vec![0, 1, 1], vec![8]),
-        ]
+    let tree = tree_of(
+        "axiom: FF[+FF[-F]F]F[-F]F",
+        &[
+            (&[0], &[0, 1]),
+            (&[0, 0], &[2, 3]),
+            (&[0, 0, 0], &[4]),
+            (&[0, 0, 1], &[5]),
+            (&[0, 1], &[6]),
+            (&[0, 1, 0], &[7]),
+            (&[0, 1, 1], &[8]),
+        ],
     );
     assert_eq!(tree.roots, vec![0]);
     assert_eq!(tree.branches[0].children, vec![1, 4]);
@@ -62,23 +70,15 @@ fn an_axis_is_cut_where_a_branch_leaves_and_the_continuation_is_the_last_child()
 #[test]
 fn several_roots_and_moves() {
     // Two bracketed roots; `f` inside a branch still grows from the joint; `@M` starts a root.
-    let b = built("axiom: [F][+F[fF]]@M(3,0,0)FF");
-    let tree = b.tree().clone();
-    assert_eq!(
-        paths(&tree),
-        vec![
-            (vec![0], vec![0]),
-            (vec![1], vec![1]),
-            (vec![1, 0], vec![2]),
-            (vec![2], vec![3, 4]),
-        ]
+    tree_of(
+        "axiom: [F][+F[fF]]@M(3,0,0)FF",
+        &[(&[0], &[0]), (&[1], &[1]), (&[1, 0], &[2]), (&[2], &[3, 4])],
     );
 }
 
 #[test]
 fn missing_paths_say_how_far_they_exist() {
-    let b = built("axiom: F[+F]F");
-    let tree = b.tree().clone();
+    let tree = built("axiom: F[+F]F").tree().clone();
     assert_eq!(tree.find(&[]), Err("the path is empty".into()));
     assert_eq!(tree.find(&[1]), Err("the plant has 1 root branch".into()));
     assert_eq!(
@@ -95,15 +95,9 @@ fn missing_paths_say_how_far_they_exist() {
 fn items_belong_to_the_joint_they_are_drawn_at() {
     // A leaf at the end of s0 (inside a bracket), a sphere at the end of s1, a polygon in the
     // lateral from s1.
-    let b = built("axiom: F[&~l]F@O(0.2)[+F{.f.f.}]F");
-    let tree = b.tree().clone();
-    assert_eq!(
-        paths(&tree),
-        vec![
-            (vec![0], vec![0, 1]),
-            (vec![0, 0], vec![2]),
-            (vec![0, 1], vec![3])
-        ]
+    let tree = tree_of(
+        "axiom: F[&~l]F@O(0.2)[+F{.f.f.}]F",
+        &[(&[0], &[0, 1]), (&[0, 0], &[2]), (&[0, 1], &[3])],
     );
     assert_eq!(
         tree.branches[0].items,
@@ -115,7 +109,7 @@ fn items_belong_to_the_joint_they_are_drawn_at() {
 #[test]
 fn paths_are_stable_under_re_derivation() {
     let source = "#angle 25\naxiom: X\nX -> F[+X][-X]FX\nF -> FF";
-    let (a, b) = (built_n(source, Some(3)), built_n(source, Some(4)));
+    let (a, b) = (built_n(source, 3), built_n(source, 4));
     let (ta, tb) = (a.tree().clone(), b.tree().clone());
     assert!(tb.len() > ta.len());
     // Each branch of n = 3 is at the same path at n = 4, starting where the same place grew to.
@@ -198,7 +192,7 @@ fn a_drag_rebuilds_the_branch_and_moves_its_descendants_like_a_full_mesh() {
     for smooth in [false, true] {
         // Smooth: every axis a generalized cylinder through Bézier pieces.
         let source = LEAFY.replace("axiom: A", if smooth { "axiom: @Gc A" } else { "axiom: A" });
-        let mut b = built_n(&source, Some(4));
+        let mut b = built_n(&source, 4);
         assert!(b
             .plant()
             .skeleton
@@ -295,7 +289,7 @@ fn a_drag_rebuilds_the_branch_and_moves_its_descendants_like_a_full_mesh() {
 
 #[test]
 fn descendants_move_rigidly() {
-    let mut b = built_n(LEAFY, Some(4));
+    let mut b = built_n(LEAFY, 4);
     let original = b.plant().skeleton.clone();
     let info = b.branches();
     let branch = info.iter().position(|i| i.path == [0, 0]).unwrap() as u32;
@@ -361,7 +355,7 @@ fn an_edited_straight_branch_lies_on_its_edited_curve() {
 
 #[test]
 fn edits_apply_by_path_undo_exactly_and_report_what_does_not_apply() {
-    let mut b = built_n(LEAFY, Some(3));
+    let mut b = built_n(LEAFY, 3);
     let unedited = (b.plant().skeleton.clone(), b.plant().mesh.clone());
     let edits = vec![
         BranchEdit {
@@ -433,7 +427,7 @@ fn edits_survive_re_derivation_with_another_iteration_count() {
         ],
     };
     for n in [3, 4, 5] {
-        let mut b = built_n(source, Some(n));
+        let mut b = built_n(source, n);
         let unedited = b.branches();
         let report = b.apply_edits(std::slice::from_ref(&edit));
         assert_eq!(report.applied, vec![vec![0, 1]], "n = {n}");
@@ -579,10 +573,7 @@ fn provenance_still_names_derived_modules_after_drags_and_edits() {
     // With a homomorphism the turtle reads another string; ranges name the derived string.
     let grown = build(
         "#angle 30\naxiom: A\nA -> B[+A][-A]BA\nhomomorphism:\nB -> FF",
-        &BuildOptions {
-            iterations: Some(3),
-            ..BuildOptions::default()
-        },
+        &BuildOptions::with_iterations(3),
     );
     assert!(!grown.derivation.turtle_origin.is_empty());
     let mut b = PlantEditor::new(grown.plant);

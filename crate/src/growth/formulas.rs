@@ -199,12 +199,21 @@ mod tests {
 
     #[test]
     fn nb_follows_rand_between_mb_and_mb_plus_vb() {
-        assert_eq!(surviving_branches(34.0, 32.0, 0.0), 34);
-        assert_eq!(surviving_branches(34.0, 32.0, 0.999), 66);
-        // Round(0.4 × 5) = 2, Round(0.5 × 5) = Round(2.5) = 3 (halves away from zero).
-        assert_eq!(surviving_branches(10.0, 5.0, 0.4), 12);
-        assert_eq!(surviving_branches(10.0, 5.0, 0.5), 13);
-        assert_eq!(surviving_branches(-3.0, 1.0, 0.2), 0);
+        // (MB, VB, rand) and the NB it gives.
+        for ((mean, variance, rand), nb) in [
+            ((34.0, 32.0, 0.0), 34),
+            ((34.0, 32.0, 0.999), 66),
+            // Round(0.4 × 5) = 2, Round(0.5 × 5) = Round(2.5) = 3 (halves away from zero).
+            ((10.0, 5.0, 0.4), 12),
+            ((10.0, 5.0, 0.5), 13),
+            ((-3.0, 1.0, 0.2), 0),
+        ] {
+            assert_eq!(
+                surviving_branches(mean, variance, rand),
+                nb,
+                "{mean} {variance} {rand}"
+            );
+        }
     }
 
     #[test]
@@ -222,15 +231,24 @@ mod tests {
 
     #[test]
     fn table_2_speed_of_upper_and_other_branches() {
-        // SM 0, PF 2 (upper) or 1 (others), VR 1: NR is PF or PF + 1 (Fig 3a).
-        assert_eq!(rewritings(2.0, 0.0, 1.0, 0.2), 2);
-        assert_eq!(rewritings(2.0, 0.0, 1.0, 0.7), 3);
-        assert_eq!(rewritings(1.0, 0.0, 1.0, 0.2), 1);
-        assert_eq!(rewritings(1.0, 0.0, 1.0, 0.7), 2);
-        // VR 2 (Fig 3b): up to PF + 2.
-        assert_eq!(rewritings(2.0, 0.0, 2.0, 0.9), 4);
-        assert_eq!(rewritings(1.0, -5.0, 0.0, 0.5), 0);
-        assert_eq!(rewritings(1.0, 1e9, 0.0, 0.5), MAX_REWRITINGS);
+        // (PF, SM, VR, rand) and the NR it gives.
+        for ((positional, seasonal_mean, variance, rand), nr) in [
+            // SM 0, PF 2 (upper) or 1 (others), VR 1: NR is PF or PF + 1 (Fig 3a).
+            ((2.0, 0.0, 1.0, 0.2), 2),
+            ((2.0, 0.0, 1.0, 0.7), 3),
+            ((1.0, 0.0, 1.0, 0.2), 1),
+            ((1.0, 0.0, 1.0, 0.7), 2),
+            // VR 2 (Fig 3b): up to PF + 2.
+            ((2.0, 0.0, 2.0, 0.9), 4),
+            ((1.0, -5.0, 0.0, 0.5), 0),
+            ((1.0, 1e9, 0.0, 0.5), MAX_REWRITINGS),
+        ] {
+            assert_eq!(
+                rewritings(positional, seasonal_mean, variance, rand),
+                nr,
+                "{positional} {seasonal_mean} {variance} {rand}"
+            );
+        }
     }
 
     #[test]

@@ -136,58 +136,60 @@ fn monotone_diagonals(p: &[DVec2]) -> Vec<(u32, u32)> {
             .map(|k| status[k] as usize)
     };
     let is_merge = |h: u32| h != u32::MAX && kinds[h as usize] == Kind::Merge;
+    // Edge `e` ends at vertex `i`: a merge vertex helping it gets a diagonal to `i`, and `e`
+    // leaves the status.
+    let end_edge = |status: &mut Vec<u32>,
+                    helper: &[u32],
+                    diagonals: &mut Vec<(u32, u32)>,
+                    e: usize,
+                    i: usize| {
+        if is_merge(helper[e]) {
+            diagonals.push((i as u32, helper[e]));
+        }
+        remove(status, e, p[i]);
+    };
+    // The edge leaving vertex `i` enters the status, helped by `i`.
+    let start_edge = |status: &mut Vec<u32>, helper: &mut [u32], i: usize| {
+        let at = position(status, p[i]);
+        status.insert(at, i as u32);
+        helper[i] = i as u32;
+    };
+    // Vertex `i` becomes the helper of the edge to its left, after a diagonal to the merge vertex
+    // that helped it.
+    let help_left =
+        |status: &[u32], helper: &mut [u32], diagonals: &mut Vec<(u32, u32)>, i: usize| {
+            if let Some(j) = left_of(status, p[i]) {
+                if is_merge(helper[j]) {
+                    diagonals.push((i as u32, helper[j]));
+                }
+                helper[j] = i as u32;
+            }
+        };
     for &i in &order {
         let i = i as usize;
         let v = p[i];
         let e_prev = prev(i);
         match kinds[i] {
-            Kind::Start => {
-                let at = position(&status, v);
-                status.insert(at, i as u32);
-                helper[i] = i as u32;
-            }
-            Kind::End => {
-                if is_merge(helper[e_prev]) {
-                    diagonals.push((i as u32, helper[e_prev]));
-                }
-                remove(&mut status, e_prev, v);
-            }
+            Kind::Start => start_edge(&mut status, &mut helper, i),
+            Kind::End => end_edge(&mut status, &helper, &mut diagonals, e_prev, i),
             Kind::Split => {
                 if let Some(j) = left_of(&status, v) {
                     diagonals.push((i as u32, helper[j]));
                     helper[j] = i as u32;
                 }
-                let at = position(&status, v);
-                status.insert(at, i as u32);
-                helper[i] = i as u32;
+                start_edge(&mut status, &mut helper, i);
             }
             Kind::Merge => {
-                if is_merge(helper[e_prev]) {
-                    diagonals.push((i as u32, helper[e_prev]));
-                }
-                remove(&mut status, e_prev, v);
-                if let Some(j) = left_of(&status, v) {
-                    if is_merge(helper[j]) {
-                        diagonals.push((i as u32, helper[j]));
-                    }
-                    helper[j] = i as u32;
-                }
+                end_edge(&mut status, &helper, &mut diagonals, e_prev, i);
+                help_left(&status, &mut helper, &mut diagonals, i);
             }
             Kind::Regular => {
                 // The interior is on the right when the outline comes down to this point.
                 if above(p[e_prev], v) {
-                    if is_merge(helper[e_prev]) {
-                        diagonals.push((i as u32, helper[e_prev]));
-                    }
-                    remove(&mut status, e_prev, v);
-                    let at = position(&status, v);
-                    status.insert(at, i as u32);
-                    helper[i] = i as u32;
-                } else if let Some(j) = left_of(&status, v) {
-                    if is_merge(helper[j]) {
-                        diagonals.push((i as u32, helper[j]));
-                    }
-                    helper[j] = i as u32;
+                    end_edge(&mut status, &helper, &mut diagonals, e_prev, i);
+                    start_edge(&mut status, &mut helper, i);
+                } else {
+                    help_left(&status, &mut helper, &mut diagonals, i);
                 }
             }
         }
@@ -344,40 +346,35 @@ mod tests {
             .sum()
     }
 
+    /// The points of an outline given as (x, y) pairs.
+    fn outline(xy: &[(f64, f64)]) -> Vec<DVec2> {
+        xy.iter().map(|&(x, y)| DVec2::new(x, y)).collect()
+    }
+
     #[test]
     fn small_outlines_of_every_vertex_kind() {
         // A square, an arrow head (a merge point), a "W" (split and merge points), a comb.
         let shapes: Vec<Vec<DVec2>> = vec![
-            vec![
-                DVec2::new(0.0, 0.0),
-                DVec2::new(1.0, 0.0),
-                DVec2::new(1.0, 1.0),
-                DVec2::new(0.0, 1.0),
-            ],
-            vec![
-                DVec2::new(0.0, 0.0),
-                DVec2::new(2.0, 1.0),
-                DVec2::new(0.0, 2.0),
-                DVec2::new(0.5, 1.0),
-            ],
-            vec![
-                DVec2::new(0.0, 0.0),
-                DVec2::new(4.0, 0.0),
-                DVec2::new(4.0, 3.0),
-                DVec2::new(3.0, 1.0),
-                DVec2::new(2.0, 3.0),
-                DVec2::new(1.0, 1.0),
-                DVec2::new(0.0, 3.0),
-            ],
-            vec![
-                DVec2::new(0.0, 3.0),
-                DVec2::new(1.0, 1.0),
-                DVec2::new(2.0, 3.0),
-                DVec2::new(3.0, 1.0),
-                DVec2::new(4.0, 3.0),
-                DVec2::new(4.0, 0.0),
-                DVec2::new(0.0, 0.0),
-            ]
+            outline(&[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]),
+            outline(&[(0.0, 0.0), (2.0, 1.0), (0.0, 2.0), (0.5, 1.0)]),
+            outline(&[
+                (0.0, 0.0),
+                (4.0, 0.0),
+                (4.0, 3.0),
+                (3.0, 1.0),
+                (2.0, 3.0),
+                (1.0, 1.0),
+                (0.0, 3.0),
+            ]),
+            outline(&[
+                (0.0, 3.0),
+                (1.0, 1.0),
+                (2.0, 3.0),
+                (3.0, 1.0),
+                (4.0, 3.0),
+                (4.0, 0.0),
+                (0.0, 0.0),
+            ])
             .into_iter()
             .map(|p| DVec2::new(p.x, -p.y)) // listed clockwise: mirrored, counter-clockwise
             .collect(),
@@ -393,13 +390,7 @@ mod tests {
 
     #[test]
     fn a_self_crossing_outline_is_refused_not_a_hang() {
-        let bow = [
-            DVec2::new(0.0, 0.0),
-            DVec2::new(2.0, 2.0),
-            DVec2::new(2.0, 0.0),
-            DVec2::new(0.0, 2.1),
-            DVec2::new(-1.0, 1.0),
-        ];
+        let bow = outline(&[(0.0, 0.0), (2.0, 2.0), (2.0, 0.0), (0.0, 2.1), (-1.0, 1.0)]);
         let _ = triangulate(&bow, 1e-12); // any answer, promptly
         let figure_eight: Vec<DVec2> = (0..200)
             .map(|i| {

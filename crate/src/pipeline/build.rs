@@ -26,6 +26,17 @@ pub struct BuildOptions {
     pub sketch: bool,
 }
 
+#[cfg(test)]
+impl BuildOptions {
+    /// The default options with `n` iterations (the tests' usual build).
+    pub(crate) fn with_iterations(n: u32) -> Self {
+        BuildOptions {
+            iterations: Some(n),
+            ..BuildOptions::default()
+        }
+    }
+}
+
 /// Everything one build produced. When `diagnostics` has an error, the stages after the failing
 /// one did not run and what they make is empty.
 #[derive(Clone, Debug, Default)]

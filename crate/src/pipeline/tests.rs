@@ -12,14 +12,6 @@ fn timed<'a>(clock: &'a mut dyn FnMut() -> f64) -> Hooks<'a> {
     }
 }
 
-/// The default build options with `n` iterations.
-fn with_iterations(n: u32) -> BuildOptions {
-    BuildOptions {
-        iterations: Some(n),
-        ..BuildOptions::default()
-    }
-}
-
 /// A clock that advances by one unit each time it is read.
 fn ticking() -> impl FnMut() -> f64 {
     let mut t = 0.0;
@@ -29,6 +21,12 @@ fn ticking() -> impl FnMut() -> f64 {
     }
 }
 
+/// `source` built with `options` and a fresh [`ticking`] clock.
+fn build_ticking(source: &str, options: &BuildOptions) -> Build {
+    let mut clock = ticking();
+    build_with(source, options, &mut timed(&mut clock))
+}
+
 #[test]
 fn without_a_clock_there_are_no_timings() {
     assert_eq!(build("axiom: F", &BuildOptions::default()).timings, None);
@@ -36,12 +34,7 @@ fn without_a_clock_there_are_no_timings() {
 
 #[test]
 fn a_clock_is_read_once_around_each_stage() {
-    let mut clock = ticking();
-    let result = build_with(
-        "axiom: F\nF -> FF",
-        &BuildOptions::default(),
-        &mut timed(&mut clock),
-    );
+    let result = build_ticking("axiom: F\nF -> FF", &BuildOptions::default());
     let timings = result.timings.expect("timings");
     assert_eq!(
         timings,
@@ -113,12 +106,7 @@ fn the_clamping_warning_writes_max_coordinate_as_its_exponent_form() {
 
 #[test]
 fn stages_after_an_error_take_no_time() {
-    let mut clock = ticking();
-    let result = build_with(
-        "axiom: F[",
-        &BuildOptions::default(),
-        &mut timed(&mut clock),
-    );
+    let result = build_ticking("axiom: F[", &BuildOptions::default());
     assert!(!result.ok());
     let timings = result.timings.expect("timings");
     assert_eq!(timings.parse_resolve, 1.0);
@@ -136,7 +124,7 @@ fn progress_of(source: &str, iterations: u32) -> Vec<Progress> {
         clock: None,
         progress: Some(&mut progress),
     };
-    let options = with_iterations(iterations);
+    let options = BuildOptions::with_iterations(iterations);
     build_with(source, &options, &mut hooks);
     told
 }
@@ -175,10 +163,9 @@ fn progress_tells_each_stage_and_each_derivation_step() {
 #[test]
 fn a_clock_changes_nothing_else() {
     let source = "#angle 30\naxiom: X\nX -> F[+X]F[-X]+X\nF -> FF";
-    let options = with_iterations(3);
+    let options = BuildOptions::with_iterations(3);
     let plain = build(source, &options);
-    let mut clock = ticking();
-    let timed = build_with(source, &options, &mut timed(&mut clock));
+    let timed = build_ticking(source, &options);
     assert_eq!(plain.plant.stats, timed.plant.stats);
     assert_eq!(plain.plant.mesh.positions, timed.plant.mesh.positions);
 }
@@ -186,7 +173,7 @@ fn a_clock_changes_nothing_else() {
 #[test]
 fn a_sketch_draws_lines_and_its_remesh_is_the_plain_build() {
     let source = "#angle 25\naxiom: X\nX -> F[+X]F[-X]+X\nF -> FF";
-    let options = with_iterations(4);
+    let options = BuildOptions::with_iterations(4);
     let plain = build(source, &options);
     let mut sketch = build(
         source,
@@ -237,9 +224,8 @@ fn a_sketch_with_growth_draws_its_skeleton_at_once() {
     let sketch = build(
         source,
         &BuildOptions {
-            iterations: Some(3),
             sketch: true,
-            ..BuildOptions::default()
+            ..BuildOptions::with_iterations(3)
         },
     );
     assert!(!sketch.plant.is_sketch());
@@ -249,7 +235,7 @@ fn a_sketch_with_growth_draws_its_skeleton_at_once() {
 #[test]
 fn without_tubes_the_bounds_are_the_segments() {
     let source = "#angle 25\naxiom: X\nX -> F[+X]F[-X]+X\nF -> FF";
-    let options = with_iterations(3);
+    let options = BuildOptions::with_iterations(3);
     let mut result = build(source, &options);
     let with_tubes = result.plant.stats.clone();
     result.remesh(&MeshOptions {

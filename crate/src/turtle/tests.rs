@@ -367,30 +367,31 @@ fn assert_sketch_draws_the_skeleton(src: &str, tolerance: f32) {
     assert_eq!(sketch.line_bounds(), lines.bounds(), "{src}");
 }
 
+/// `src` is drawn by the plain sketch loop when `plain` (else it is left to the interpreter), and
+/// its sketch draws the skeleton's segments within `tolerance`.
+fn assert_sketched_by(src: &str, plain: bool, tolerance: f32) {
+    let (model, string) = model_and_string(src);
+    let others = interpreter::empty_skeleton(&model.settings, false);
+    assert_eq!(
+        sketch::plain_sketch(&model, &string, &[], others).is_some(),
+        plain,
+        "should the plain loop draw {src}?"
+    );
+    assert_sketch_draws_the_skeleton(src, tolerance);
+}
+
 #[test]
 fn the_plain_sketch_loop_draws_the_skeletons_segments() {
     for src in PLAIN_SKETCHES {
-        let (model, string) = model_and_string(src);
-        let others = interpreter::empty_skeleton(&model.settings, false);
-        assert!(
-            sketch::plain_sketch(&model, &string, &[], others).is_some(),
-            "the plain loop should draw {src}"
-        );
         // Frames are not re-orthonormalised after each turn: far below a pixel.
-        assert_sketch_draws_the_skeleton(src, 1e-6);
+        assert_sketched_by(src, true, 1e-6);
     }
 }
 
 #[test]
 fn other_sketches_are_drawn_by_the_interpreter_exactly() {
     for src in INTERPRETED_SKETCHES {
-        let (model, string) = model_and_string(src);
-        let others = interpreter::empty_skeleton(&model.settings, false);
-        assert!(
-            sketch::plain_sketch(&model, &string, &[], others).is_none(),
-            "the plain loop should leave {src} to the interpreter"
-        );
-        assert_sketch_draws_the_skeleton(src, 0.0);
+        assert_sketched_by(src, false, 0.0);
     }
 }
 
