@@ -1,4 +1,5 @@
-//! What the importers' tests check of every translation: that Meristem reads it without errors.
+//! What the importers' tests check of every translation: that Meristem reads it without errors;
+//! and how they read its notes.
 
 use super::Import;
 use crate::diagnostics::has_errors;
@@ -23,4 +24,13 @@ pub(super) fn assert_resolves_if_it_has_an_axiom(source: &str, import: &Import) 
         let (_, r) = crate::model::resolve(&file);
         assert!(!has_errors(&r), "{source:?}\n{}\n{r:?}", import.text);
     }
+}
+
+/// The notes of `import` as (line, message) pairs, to compare or to search.
+pub(super) fn noted(import: &Import) -> Vec<(usize, &str)> {
+    import
+        .notes
+        .iter()
+        .map(|n| (n.line, n.message.as_str()))
+        .collect()
 }
