@@ -75,6 +75,16 @@ fn built(import: &Import) -> crate::pipeline::Build {
     b
 }
 
+/// Panics unless `import` has exactly one note, and it contains `words`.
+fn assert_one_note(import: &Import, words: &str) {
+    assert_eq!(import.notes.len(), 1, "{:?}", import.notes);
+    assert!(
+        import.notes[0].message.contains(words),
+        "{:?}",
+        import.notes
+    );
+}
+
 fn body(import: &Import) -> Vec<&str> {
     import
         .text
@@ -147,8 +157,7 @@ fn cpfg_heads_over_several_lines_whole_branch_contexts_and_labels() {
             "endlsystem"
         ]
     );
-    assert_eq!(import.notes.len(), 1, "{:?}", import.notes);
-    assert!(import.notes[0].message.contains("@L draws a text label"));
+    assert_one_note(&import, "@L draws a text label");
 }
 
 #[test]
@@ -270,10 +279,7 @@ fn cpfg_arrays_of_two_dimensions_and_predecessors_of_several_letters() {
     );
     assert!(import.text.contains("#module AXIOM_"), "{}", import.text);
     assert!(import.text.contains("axiom: AXIOM_"), "{}", import.text);
-    assert_eq!(import.notes.len(), 1, "{:?}", import.notes);
-    assert!(import.notes[0]
-        .message
-        .contains("becomes one module AXIOM_"));
+    assert_one_note(&import, "becomes one module AXIOM_");
     let b = built(&import);
     // len[0][2] = 3, len[1][0] = 4, len[1][2] = 6, and past the end the last value, 6.
     assert_eq!(b.derived_text(), "F(3)F(4)F(6)F(6)", "{}", import.text);
@@ -347,8 +353,7 @@ fn lpy_flags_set_by_a_production_become_defines_over_the_step() {
         import.text
     );
     assert!(!import.text.contains("ProbeMark"), "{}", import.text);
-    assert_eq!(import.notes.len(), 1, "{:?}", import.notes);
-    assert!(import.notes[0].message.contains("first applies in step 4"));
+    assert_one_note(&import, "first applies in step 4");
     let b = crate::pipeline::build(&import.text, &crate::pipeline::BuildOptions::default());
     assert_eq!(b.derived_text(), "FFG");
     // A flag set to two different values is not one: the body is skipped as before.
@@ -386,10 +391,7 @@ fn lpfg_blocks_produce_conditional_productions() {
         body.contains(&"A(t) : !((t - PL)>0) -> @O((2*(t - PL)))"),
         "{body:?}"
     );
-    assert_eq!(import.notes.len(), 1, "{:?}", import.notes);
-    assert!(import.notes[0]
-        .message
-        .contains("Frobnicate is not a Meristem command"));
+    assert_one_note(&import, "Frobnicate is not a Meristem command");
     let b = built(&import);
     // A(1.2) → F(0.7)[+F]A(0.7) → F(0.7)[+F]F(0.2)[+F]A(0.2) → … @O(-0.6): four segments.
     assert_eq!(b.plant.stats.segments, 4, "{}", b.derived_text());
@@ -484,8 +486,7 @@ fn lpy_bodies_with_other_code_are_skipped_whole() {
     );
     // A local assignment before `produce` is put where it is used; `nproduce` is skipped.
     assert_eq!(body(&import), ["axiom: A(0)", "A(t) -> A((t + 1))"]);
-    assert_eq!(import.notes.len(), 1, "{:?}", import.notes);
-    assert!(import.notes[0].message.contains("nproduce B"));
+    assert_one_note(&import, "nproduce B");
 }
 
 #[test]
