@@ -18,11 +18,19 @@ pub(super) fn assert_resolves(import: &Import) {
 
 /// The check on the import of odd input `source`: when its translation has an axiom, it
 /// resolves without errors (a translation without one is reported as such).
-pub(super) fn assert_resolves_if_it_has_an_axiom(source: &str, import: &Import) {
+fn assert_resolves_if_it_has_an_axiom(source: &str, import: &Import) {
     let (file, _) = crate::syntax::parse(&import.text);
     if file.axiom.is_some() {
         let (_, r) = crate::model::resolve(&file);
         assert!(!has_errors(&r), "{source:?}\n{}\n{r:?}", import.text);
+    }
+}
+
+/// The check on an importer's odd inputs: `import` does not panic on any of `sources`, and each
+/// translation that has an axiom resolves without errors.
+pub(super) fn assert_odd_inputs_resolve(sources: &[&str], import: impl Fn(&str) -> Import) {
+    for source in sources {
+        assert_resolves_if_it_has_an_axiom(source, &import(source));
     }
 }
 
