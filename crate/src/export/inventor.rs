@@ -109,15 +109,15 @@ fn shape(out: &mut String, scene: &Scene, group: &ColorGroup) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::export::tests::{small_scene, two_colour_plant};
+    use crate::export::tests::{assert_fallback_text, written_two_colour_plant};
 
     #[test]
     fn shared_coordinates_and_a_face_set_per_colour_index() {
-        let (mesh, skeleton) = two_colour_plant();
-        let text = write(&Scene::new(&mesh, &skeleton));
-        assert!(text.starts_with("#Inventor V2.1 ascii\n"));
-        assert_eq!(text.matches("Coordinate3 {").count(), 1);
-        assert_eq!(text.matches("IndexedFaceSet {").count(), 2);
+        let (mesh, text) = written_two_colour_plant(
+            write,
+            "#Inventor V2.1 ascii\n",
+            &[("Coordinate3 {", 1), ("IndexedFaceSet {", 2)],
+        );
         assert_eq!(text.matches('{').count(), text.matches('}').count());
         assert_eq!(
             text.lines().filter(|l| l.ends_with(" -1,")).count(),
@@ -127,8 +127,6 @@ mod tests {
 
     #[test]
     fn the_fallback_writes_line_sets() {
-        let (mesh, skeleton) = small_scene(10);
-        let text = write(&Scene::new(&mesh, &skeleton));
-        assert!(text.contains("IndexedLineSet {") && !text.contains("IndexedFaceSet"));
+        assert_fallback_text(write, &["IndexedLineSet {"], &["IndexedFaceSet"]);
     }
 }

@@ -240,6 +240,22 @@ pub(crate) mod tests {
         built("#angle 30\naxiom: F[+;F]F\n")
     }
 
+    /// The text a writer makes of [`two_colour_plant`], with the plant's mesh, once checked that
+    /// it starts with the format's `header` and holds each pattern of `counts` that many times.
+    pub fn written_two_colour_plant(
+        write: fn(&Scene) -> String,
+        header: &str,
+        counts: &[(&str, usize)],
+    ) -> (MeshBuffers, String) {
+        let (mesh, skeleton) = two_colour_plant();
+        let text = write(&Scene::new(&mesh, &skeleton));
+        assert!(text.starts_with(header), "{text}");
+        for &(pattern, count) in counts {
+            assert_eq!(text.matches(pattern).count(), count, "{pattern}");
+        }
+        (mesh, text)
+    }
+
     /// A plant of colour indices 0, 1 and 2 meshed with at most `max_vertices`: lines when small.
     pub fn small_scene(max_vertices: usize) -> (MeshBuffers, Skeleton) {
         let (mesh, skeleton) = built_with(
@@ -251,6 +267,19 @@ pub(crate) mod tests {
         );
         assert!(mesh.indices.is_empty() && !mesh.lines.is_empty());
         (mesh, skeleton)
+    }
+
+    /// Panics unless the text a writer makes of [`small_scene`] (its fallback for a plant too
+    /// large to mesh) holds every pattern of `present` and none of `absent`.
+    pub fn assert_fallback_text(write: fn(&Scene) -> String, present: &[&str], absent: &[&str]) {
+        let (mesh, skeleton) = small_scene(10);
+        let text = write(&Scene::new(&mesh, &skeleton));
+        for pattern in present {
+            assert!(text.contains(pattern), "{pattern} missing in {text}");
+        }
+        for pattern in absent {
+            assert!(!text.contains(pattern), "{pattern} in {text}");
+        }
     }
 
     #[test]

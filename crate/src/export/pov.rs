@@ -223,14 +223,11 @@ fn rgb(out: &mut String, color: [f32; 3]) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::export::tests::{small_scene, two_colour_plant};
+    use crate::export::tests::{assert_fallback_text, written_two_colour_plant};
 
     #[test]
     fn one_mesh2_with_a_texture_per_colour_index_and_every_face() {
-        let (mesh, skeleton) = two_colour_plant();
-        let text = write(&Scene::new(&mesh, &skeleton));
-        assert!(text.starts_with("#version 3.7;\n"));
-        assert_eq!(text.matches("mesh2 {").count(), 1);
+        let (mesh, text) = written_two_colour_plant(write, "#version 3.7;\n", &[("mesh2 {", 1)]);
         assert!(text.contains(&format!("vertex_vectors {{\n    {},", mesh.vertex_count())));
         assert!(text.contains("texture_list {\n    2,"));
         assert!(text.contains(&format!("face_indices {{\n    {},", mesh.triangle_count())));
@@ -241,9 +238,6 @@ mod tests {
 
     #[test]
     fn the_fallback_writes_cylinders() {
-        let (mesh, skeleton) = small_scene(10);
-        let text = write(&Scene::new(&mesh, &skeleton));
-        assert!(text.contains("cylinder {"));
-        assert!(!text.contains("mesh2"));
+        assert_fallback_text(write, &["cylinder {"], &["mesh2"]);
     }
 }

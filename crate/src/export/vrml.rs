@@ -83,17 +83,20 @@ pub fn write(scene: &Scene) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::export::tests::{small_scene, two_colour_plant};
+    use crate::export::tests::{assert_fallback_text, written_two_colour_plant};
 
     #[test]
     fn shapes_share_one_coordinate_node_and_index_it_in_range() {
-        let (mesh, skeleton) = two_colour_plant();
-        let text = write(&Scene::new(&mesh, &skeleton));
-        assert!(text.starts_with("#VRML V2.0 utf8\n"));
-        assert_eq!(text.matches("Shape {").count(), 2);
-        assert_eq!(text.matches("DEF Meristem_Points").count(), 1);
-        assert_eq!(text.matches("USE Meristem_Points").count(), 1);
-        assert_eq!(text.matches("Viewpoint {").count(), 1);
+        let (mesh, text) = written_two_colour_plant(
+            write,
+            "#VRML V2.0 utf8\n",
+            &[
+                ("Shape {", 2),
+                ("DEF Meristem_Points", 1),
+                ("USE Meristem_Points", 1),
+                ("Viewpoint {", 1),
+            ],
+        );
         // Every triangle once, each index below the vertex count.
         let faces: Vec<&str> = text.lines().filter(|l| l.ends_with(" -1")).collect();
         assert_eq!(faces.len(), mesh.triangle_count());
@@ -111,10 +114,10 @@ mod tests {
 
     #[test]
     fn the_fallback_writes_line_sets() {
-        let (mesh, skeleton) = small_scene(10);
-        let text = write(&Scene::new(&mesh, &skeleton));
-        assert!(text.contains("IndexedLineSet"));
-        assert!(!text.contains("IndexedFaceSet"));
-        assert!(text.contains("emissiveColor"));
+        assert_fallback_text(
+            write,
+            &["IndexedLineSet", "emissiveColor"],
+            &["IndexedFaceSet"],
+        );
     }
 }

@@ -390,7 +390,7 @@ fn note_gaps(productions: &[(Production, usize)], variables: &[String], out: &mu
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::import::test_support::assert_resolves_if_it_has_an_axiom;
+    use crate::import::test_support::{assert_odd_inputs_resolve, noted};
 
     /// The worked example, as the paper's text prints it.
     const WORKED: &str = "SYSTEM\nDECLARATIONS\n  CONTINUOUS p UNIFORM(0,1)\nAXIOM\n  A(1)B(3)A(5)\nRULES\n  A(x): p<0.4  $\\rightarrow$  A(x+1)\n  A(x): p>0.4  $\\rightarrow$  B(x-1)\n  A(x) < B(y) > A(z) : y<4  $\\rightarrow$  B(x+z)[A(y)]\nEND.\n";
@@ -441,11 +441,7 @@ mod tests {
             assert!(text.contains(expected), "{expected} missing from\n{text}");
         }
         assert!(!text.contains("zipf"));
-        let messages: Vec<(usize, &str)> = import
-            .notes
-            .iter()
-            .map(|n| (n.line, n.message.as_str()))
-            .collect();
+        let messages = noted(&import);
         assert!(messages.iter().any(|(l, m)| *l == 5 && m.contains("rate")));
         assert!(messages
             .iter()
@@ -471,16 +467,17 @@ mod tests {
 
     #[test]
     fn odd_input_never_panics_and_rejected_lines_are_reported() {
-        for text in [
-            "",
-            "END.",
-            "RULES\nA",
-            "SYSTEM\nAXIOM\nA(\nRULES\nA -> B(\nEND.",
-            "DECLARATIONS\nCONTINUOUS\nDISCRETE 1 x(",
-            "AXIOM A\nRULES\nA -> frob(1)\nEND.\nmore",
-        ] {
-            assert_resolves_if_it_has_an_axiom(text, &import(text));
-        }
+        assert_odd_inputs_resolve(
+            &[
+                "",
+                "END.",
+                "RULES\nA",
+                "SYSTEM\nAXIOM\nA(\nRULES\nA -> B(\nEND.",
+                "DECLARATIONS\nCONTINUOUS\nDISCRETE 1 x(",
+                "AXIOM A\nRULES\nA -> frob(1)\nEND.\nmore",
+            ],
+            import,
+        );
         let import = import("AXIOM A\nRULES\nA -> B(frob(1))\nEND.");
         assert!(import
             .notes

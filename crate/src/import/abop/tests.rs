@@ -3,7 +3,7 @@
 use super::cpfg::{cpp, cpp_functions};
 use super::prepare::lines;
 use super::*;
-use crate::import::test_support::{assert_resolves, assert_resolves_if_it_has_an_axiom};
+use crate::import::test_support::{assert_odd_inputs_resolve, assert_resolves, noted};
 
 /// 200 chained `#define`s, each using the one before twice (through a macro with an
 /// argument, which is expanded), an `#if` on the last, and an axiom drawing it.
@@ -61,6 +61,30 @@ fn chained_defines_are_expanded_once_each_not_as_doubling_text() {
     assert!((length - 1.0).abs() < 1e-9, "{length}");
 }
 
+/// The translation of `text` in `flavour`, which Meristem must read without errors.
+fn resolved(text: &str, flavour: Flavour) -> Import {
+    let import = import(text, flavour);
+    assert_resolves(&import);
+    import
+}
+
+/// The plant Meristem builds from the translation of `import`, which must build without errors.
+fn built(import: &Import) -> crate::pipeline::Build {
+    let b = crate::pipeline::build(&import.text, &crate::pipeline::BuildOptions::default());
+    assert!(b.ok(), "{:?}", b.diagnostics);
+    b
+}
+
+/// Panics unless `import` has exactly one note, and it contains `words`.
+fn assert_one_note(import: &Import, words: &str) {
+    assert_eq!(import.notes.len(), 1, "{:?}", import.notes);
+    assert!(
+        import.notes[0].message.contains(words),
+        "{:?}",
+        import.notes
+    );
+}
+
 fn body(import: &Import) -> Vec<&str> {
     import
         .text
@@ -71,11 +95,10 @@ fn body(import: &Import) -> Vec<&str> {
 
 #[test]
 fn lpy_reads_undeclared_words_letter_by_letter_and_nests_its_ifs_and_locals() {
-    let import = import(
+    let import = resolved(
         "Axiom: A(1)\nderivation length: 2\nproduction:\nA(x) :\n    p = min(1, x**2)\n    r = random()\n    if r <= p:\n        produce IB(1-x)\n    else:\n        produce A(x+p)\nB(x) :\n    if x >= 1:\n        if x < 3:\n            produce F(x)\n        else:\n            produce F(1)\n    else:\n        produce B(x+1)\nendlsystem\n",
         Flavour::Lpy,
     );
-    assert_resolves(&import);
     assert_eq!(
         body(&import)[3..],
         [
@@ -108,11 +131,10 @@ fn lpy_reads_undeclared_words_letter_by_letter_and_nests_its_ifs_and_locals() {
 
 #[test]
 fn a_cpfg_define_continues_over_any_number_of_lines() {
-    let import = import(
+    let import = resolved(
         "#define BOX [F(1) \\\n\t+(90)F(2) \\\n\t+(90)F(3)]\nLsystem: 1\nderivation length: 1\nAxiom: BOX A\nA --> FA\nendlsystem\n",
         Flavour::Cpfg,
     );
-    assert_resolves(&import);
     assert!(import.notes.is_empty(), "{:?}", import.notes);
     assert!(
         import.text.contains("axiom: [F(1)+(90)F(2)+(90)F(3)]A"),
@@ -123,11 +145,10 @@ fn a_cpfg_define_continues_over_any_number_of_lines() {
 
 #[test]
 fn cpfg_heads_over_several_lines_whole_branch_contexts_and_labels() {
-    let import = import(
+    let import = resolved(
         "Lsystem: 1\nderivation length: 2\nAxiom: N(1)I(0)[I(2)A]I(3)\nN(k) < I(b) : b==0\n\t{f=k*2;} -->\n\tI(f)\nI(b) > [I(c)=]I(d) : b==0 --> I(c+d)@L(\" %.f\", b)\nendlsystem\n",
         Flavour::Cpfg,
     );
-    assert_resolves(&import);
     assert_eq!(
         body(&import)[2..],
         [
@@ -136,18 +157,16 @@ fn cpfg_heads_over_several_lines_whole_branch_contexts_and_labels() {
             "endlsystem"
         ]
     );
-    assert_eq!(import.notes.len(), 1, "{:?}", import.notes);
-    assert!(import.notes[0].message.contains("@L draws a text label"));
+    assert_one_note(&import, "@L draws a text label");
 }
 
 #[test]
 fn new_contexts_become_ordinary_contexts_with_a_note_that_says_what_changes() {
     for flavour in [Flavour::Lpy, Flavour::Cpfg] {
-        let import = import(
+        let import = resolved(
             "Axiom: A B B\nderivation length: 2\nproduction:\nA << B --> A\nB >> A --> C\nA < B --> B\nendlsystem\n",
             flavour,
         );
-        assert_resolves(&import);
         let body = body(&import);
         assert!(body.contains(&"A < B -> A"), "{body:?}");
         assert!(body.contains(&"B > A -> C"), "{body:?}");
@@ -170,11 +189,10 @@ fn new_contexts_become_ordinary_contexts_with_a_note_that_says_what_changes() {
 
 #[test]
 fn cpfg_blocks_are_substituted_and_probabilities_become_weights() {
-    let import = import(
+    let import = resolved(
         "#define STEPS 4 /* steps */\n#define R 1.3\nLsystem: 1\nderivation length: STEPS\nignore: +-/\nAxiom: #(0.05)A(0)\nA(t) : {t=t-1;} t>0 --> \n\tI(t)[+(45)A(t)]\nM(t) : 1 {x=0.5*R^t; x+=1;} --> I(x)M(t)\nF --> F[+F]F : 0.3\nB --> *\ndecomposition\nmaximum depth: 2\nhomomorphism: no warnings\nI(x) --> F(x)\nendlsystem\n",
         Flavour::Cpfg,
     );
-    assert_resolves(&import);
     assert_eq!(
         body(&import),
         [
@@ -208,11 +226,10 @@ fn cpfg_blocks_are_substituted_and_probabilities_become_weights() {
 
 #[test]
 fn cpfg_if_blocks_become_conditional_values_and_printf_is_noted() {
-    let import = import(
+    let import = resolved(
         "#define REL 1\nderivation length: 2\nAxiom: A(1,4)\nE : 1 {srand(1);} --> *\nA(x,w) : x<3\n\t{t = 2*x;\n\tif (REL) {t = t/2; w = 0;} else t = t+1;\n\tif (w<t) {w = t;}\n\tprintf(\"%f\", t);\n\tt - 1;\n\t} --> F(t)A(x+1,w)\nendlsystem\n",
         Flavour::Cpfg,
     );
-    assert_resolves(&import);
     assert!(
         import.text.contains(
             "A(x,w) : x<3 -> F(((REL)?((2*x)/2):((2*x)+1)))A(x+1,((((REL)?(0):w)<((REL)?((2*x)/2):((2*x)+1)))?(((REL)?((2*x)/2):((2*x)+1))):((REL)?(0):w)))"
@@ -220,11 +237,7 @@ fn cpfg_if_blocks_become_conditional_values_and_printf_is_noted() {
         "{}",
         import.text
     );
-    let said: Vec<(usize, &str)> = import
-        .notes
-        .iter()
-        .map(|n| (n.line, n.message.as_str()))
-        .collect();
+    let said = noted(&import);
     assert!(
         said.iter()
             .any(|(l, m)| *l == 4 && m.contains("'srand(1)' restarts")),
@@ -240,8 +253,7 @@ fn cpfg_if_blocks_become_conditional_values_and_printf_is_noted() {
             .any(|(l, m)| *l == 5 && m.contains("'t - 1' assigns nothing")),
         "{said:?}"
     );
-    let b = crate::pipeline::build(&import.text, &crate::pipeline::BuildOptions::default());
-    assert!(b.ok(), "{:?}", b.diagnostics);
+    let b = built(&import);
     // A(1,4) → F(1)A(2,0) → F(1)F(2)A(3,0): two segments.
     assert_eq!(b.plant.stats.segments, 2);
     // A loop is not translated: the production is skipped with a note.
@@ -261,30 +273,24 @@ fn cpfg_if_blocks_become_conditional_values_and_printf_is_noted() {
 
 #[test]
 fn cpfg_arrays_of_two_dimensions_and_predecessors_of_several_letters() {
-    let import = import(
+    let import = resolved(
         "#define N 3\nLsystem: 1\nDefine: { array len[2][N] = {1, 2, 3, 4, 5, 6}; }\nderivation length: 1\nAxiom: AXIOM\nAXIOM : 1 --> F(len[0][2])F(len[1][0])F(len[1][ 2 ])F(len[5][5])\nendlsystem\n",
         Flavour::Cpfg,
     );
-    assert_resolves(&import);
     assert!(import.text.contains("#module AXIOM_"), "{}", import.text);
     assert!(import.text.contains("axiom: AXIOM_"), "{}", import.text);
-    assert_eq!(import.notes.len(), 1, "{:?}", import.notes);
-    assert!(import.notes[0]
-        .message
-        .contains("becomes one module AXIOM_"));
-    let b = crate::pipeline::build(&import.text, &crate::pipeline::BuildOptions::default());
-    assert!(b.ok(), "{:?}", b.diagnostics);
+    assert_one_note(&import, "becomes one module AXIOM_");
+    let b = built(&import);
     // len[0][2] = 3, len[1][0] = 4, len[1][2] = 6, and past the end the last value, 6.
     assert_eq!(b.derived_text(), "F(3)F(4)F(6)F(6)", "{}", import.text);
 }
 
 #[test]
 fn cpfg_predecessors_of_several_modules_become_contexts_and_axioms_continue() {
-    let import = import(
+    let import = resolved(
         "derivation length: 1\nAxiom: [F(2,0)#(1)]\n\t[F(3,1)#(2)]\nF(v,n)#(w) : n == 0 --> F(v)#(w)@O\n",
         Flavour::Cpfg,
     );
-    assert_resolves(&import);
     let body = body(&import);
     assert!(
         body.contains(&"axiom: [F(2,0)!(1)][F(3,1)!(2)]"),
@@ -303,18 +309,16 @@ fn cpfg_predecessors_of_several_modules_become_contexts_and_axioms_continue() {
         "{:?}",
         import.notes
     );
-    let b = crate::pipeline::build(&import.text, &crate::pipeline::BuildOptions::default());
-    assert!(b.ok(), "{:?}", b.diagnostics);
+    let b = built(&import);
     assert_eq!(b.derived_text(), "[F(2)!(1)@O][F(3,1)!(2)]");
 }
 
 #[test]
 fn cpfg_sections_without_a_depth_get_cpfgs_default_depth_one() {
-    let import = import(
+    let import = resolved(
         "derivation length: 0\nAxiom: h\nhomomorphism\nh --> [F]f\nf --> [F]f\nendlsystem\n",
         Flavour::Cpfg,
     );
-    assert_resolves(&import);
     assert_eq!(
         body(&import),
         [
@@ -340,8 +344,7 @@ fn cpfg_sections_without_a_depth_get_cpfgs_default_depth_one() {
 #[test]
 fn lpy_flags_set_by_a_production_become_defines_over_the_step() {
     let text = "m = 0\nAxiom: P(0)G\nderivation length: 6\nproduction:\nP(t) :\n    if t < 3: produce P(t+1)\n    else:\n        global m\n        m = 1\n        produce *\nG :\n    if m == 1: produce FG\nendlsystem\n";
-    let import = import(text, Flavour::Lpy);
-    assert_resolves(&import);
+    let import = resolved(text, Flavour::Lpy);
     // P(0) → P(1) → P(2) → P(3) in three steps; the fourth erases it and sets m: from the
     // fifth step on, G grows an F a step (steps 5 and 6).
     assert!(
@@ -350,8 +353,7 @@ fn lpy_flags_set_by_a_production_become_defines_over_the_step() {
         import.text
     );
     assert!(!import.text.contains("ProbeMark"), "{}", import.text);
-    assert_eq!(import.notes.len(), 1, "{:?}", import.notes);
-    assert!(import.notes[0].message.contains("first applies in step 4"));
+    assert_one_note(&import, "first applies in step 4");
     let b = crate::pipeline::build(&import.text, &crate::pipeline::BuildOptions::default());
     assert_eq!(b.derived_text(), "FFG");
     // A flag set to two different values is not one: the body is skipped as before.
@@ -370,11 +372,10 @@ fn lpy_flags_set_by_a_production_become_defines_over_the_step() {
 
 #[test]
 fn lpfg_blocks_produce_conditional_productions() {
-    let import = import(
+    let import = resolved(
         "#include <lpfgall.h>\n#define PL 0.5\nderivation length: 3;\nmodule A(float);\nmodule Apex(float);\nAxiom: Right(5) SetWidth(0.15) A(1.2) Apex(0);\nproduction:\nApex(t):{ produce Apex(t+1); }\ndecomposition:\nA(t):\n{\n\tt = t - PL;\n\tif(t>0)\n\t\tproduce F(t) SB() Left(30) F(1) EB() A(t);\n\tfloat w = 2*t;\n\tproduce Sphere(w) Frobnicate(1);\n}\n",
         Flavour::Cpfg,
     );
-    assert_resolves(&import);
     let body = body(&import);
     assert!(body.contains(&"#module Apex"), "{body:?}");
     assert!(
@@ -390,23 +391,18 @@ fn lpfg_blocks_produce_conditional_productions() {
         body.contains(&"A(t) : !((t - PL)>0) -> @O((2*(t - PL)))"),
         "{body:?}"
     );
-    assert_eq!(import.notes.len(), 1, "{:?}", import.notes);
-    assert!(import.notes[0]
-        .message
-        .contains("Frobnicate is not a Meristem command"));
-    let b = crate::pipeline::build(&import.text, &crate::pipeline::BuildOptions::default());
-    assert!(b.ok(), "{:?}", b.diagnostics);
+    assert_one_note(&import, "Frobnicate is not a Meristem command");
+    let b = built(&import);
     // A(1.2) → F(0.7)[+F]A(0.7) → F(0.7)[+F]F(0.2)[+F]A(0.2) → … @O(-0.6): four segments.
     assert_eq!(b.plant.stats.segments, 4, "{}", b.derived_text());
 }
 
 #[test]
 fn lpy_python_becomes_defines_and_conditional_productions() {
-    let import = import(
+    let import = resolved(
         "import math\nR = 1.456\nh = (0.3*0.7) ** 0.5\n__authors__ = 'C. Godin'\n\nAxiom: _(0.01) ,(2) A(1)\nderivation length: 3\nproduction:\nA(s) --> F(s)[+(85)A(s/R)][-(85)A(s/R)]\nB(t) :\n    if t < 2 and not t == 1: produce B(t+1)\n    elif t == 2:\n        produce C(t if t > 1 else 0)\n    else: produce *\nF(x) : produce F(x/3.)+(60)F(x/3.)\ninterpretation:\nC(t) --> F(sin(t))\nendlsystem\ndef End():\n    print('x')\n",
         Flavour::Lpy,
     );
-    assert_resolves(&import);
     assert_eq!(
         body(&import),
         [
@@ -425,11 +421,7 @@ fn lpy_python_becomes_defines_and_conditional_productions() {
             "endlsystem",
         ]
     );
-    let notes: Vec<(usize, &str)> = import
-        .notes
-        .iter()
-        .map(|n| (n.line, n.message.as_str()))
-        .collect();
+    let notes = noted(&import);
     assert_eq!(notes.len(), 2, "{notes:?}");
     assert!(notes[0].0 == 1 && notes[0].1.contains("imports"));
     assert!(notes[1].0 == 19 && notes[1].1.contains("'End'"));
@@ -438,11 +430,10 @@ fn lpy_python_becomes_defines_and_conditional_productions() {
 
 #[test]
 fn what_cannot_be_translated_is_reported_at_its_line() {
-    let import = import(
+    let import = resolved(
         "#include \"x.h\"\n#define f(x) x\nAxiom: A(1)\nA(t) : {while (t>1) t=t-1;} t>0 --> B\nA(t) --> @c(1)~k(2)F(frob(1,t))\nendlsystem\nLsystem: 2\n",
         Flavour::Cpfg,
     );
-    assert_resolves(&import);
     let lines: Vec<usize> = import.notes.iter().map(|n| n.line).collect();
     // `#define f(x) x` is expanded where it is used (line 2 needs no note).
     assert_eq!(lines, [1, 4, 5, 5, 5, 7], "{:?}", import.notes);
@@ -453,11 +444,10 @@ fn what_cannot_be_translated_is_reported_at_its_line() {
 
 #[test]
 fn lpy_helpers_tuples_and_the_iteration_number_are_translated() {
-    let import = import(
+    let import = resolved(
         "def long(x):\n  return 2*x\ndef alpha(x): return 30\nTOP, dr = 10, 0.02\nAxiom: A(1)\nderivation length: 3\nproduction:\nA(n) :\n  if(n < TOP): produce F(long(n))+(alpha(n))A(n+dr)\nB(n) --> B(getIterationNb())\nendlsystem\n",
         Flavour::Lpy,
     );
-    assert_resolves(&import);
     assert_eq!(
         body(&import),
         [
@@ -475,11 +465,10 @@ fn lpy_helpers_tuples_and_the_iteration_number_are_translated() {
     assert!(import
         .text
         .contains("// L-Py's function long(x) = 2*x, inlined where it is called"));
-    let literal = super::import(
+    let literal = resolved(
         "Axiom: D(20,1)\nderivation length: 2\nproduction:\nD(20,k) : k > 0 --> D(20,k+1)F\nD(x,k) --> D(x,k)\nendlsystem\n",
         Flavour::Lpy,
     );
-    assert_resolves(&literal);
     assert!(
         literal
             .text
@@ -491,20 +480,18 @@ fn lpy_helpers_tuples_and_the_iteration_number_are_translated() {
 
 #[test]
 fn lpy_bodies_with_other_code_are_skipped_whole() {
-    let import = import(
+    let import = resolved(
         "Axiom: A(0)\nA(t) :\n    x = t + 1\n    produce A(x)\nA(t) :\n    nproduce B\n",
         Flavour::Lpy,
     );
-    assert_resolves(&import);
     // A local assignment before `produce` is put where it is used; `nproduce` is skipped.
     assert_eq!(body(&import), ["axiom: A(0)", "A(t) -> A((t + 1))"]);
-    assert_eq!(import.notes.len(), 1, "{:?}", import.notes);
-    assert!(import.notes[0].message.contains("nproduce B"));
+    assert_one_note(&import, "nproduce B");
 }
 
 #[test]
 fn odd_input_never_panics() {
-    for text in [
+    let texts = [
         "",
         "Axiom:",
         "-->",
@@ -514,9 +501,8 @@ fn odd_input_never_panics() {
         "if",
         "x = 'a'\nAxiom: F(\"a\")",
         "Axiom: A\nA --> B : \n",
-    ] {
-        for flavour in [Flavour::Cpfg, Flavour::Lpy] {
-            assert_resolves_if_it_has_an_axiom(text, &import(text, flavour));
-        }
+    ];
+    for flavour in [Flavour::Cpfg, Flavour::Lpy] {
+        assert_odd_inputs_resolve(&texts, |text| import(text, flavour));
     }
 }

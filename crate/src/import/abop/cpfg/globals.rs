@@ -390,14 +390,20 @@ impl Importer {
         Ok(())
     }
 
-    /// How many indices the array `name` takes, if it is an array.
-    pub(in crate::import::abop) fn array_dimensions(&self, name: &str) -> Option<usize> {
-        let (_, sizes, _) = self
+    /// The sizes (after the first) and the values of the array `name`, if it is an array.
+    fn array_named(&self, name: &str) -> Option<(&[String], &[String])> {
+        let (_, sizes, values) = self
             .cpfg
             .globals
             .arrays
             .iter()
             .find(|(a, _, _)| a == name)?;
+        Some((sizes, values))
+    }
+
+    /// How many indices the array `name` takes, if it is an array.
+    pub(in crate::import::abop) fn array_dimensions(&self, name: &str) -> Option<usize> {
+        let (sizes, _) = self.array_named(name)?;
         Some(sizes.len() + 1)
     }
 
@@ -411,12 +417,7 @@ impl Importer {
         name: &str,
         indices: &[String],
     ) -> Option<String> {
-        let (_, sizes, values) = self
-            .cpfg
-            .globals
-            .arrays
-            .iter()
-            .find(|(a, _, _)| a == name)?;
+        let (sizes, values) = self.array_named(name)?;
         if indices.len() != sizes.len() + 1 || values.is_empty() {
             return None;
         }

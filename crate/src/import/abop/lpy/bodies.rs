@@ -325,7 +325,15 @@ impl Importer {
                 }
                 _ => ("", code),
             };
-            if !head.is_empty() {
+            // The statement that must be a `produce`, the condition of its own header if it
+            // has one, and what the note says when it is not.
+            let (condition, statement, hint) = if head.is_empty() {
+                (
+                    None,
+                    code,
+                    " (Meristem imports bodies made of if, elif, else and produce)",
+                )
+            } else {
                 let Ok(condition) = self.python_condition(head, &names, &values, line.n) else {
                     return;
                 };
@@ -333,19 +341,12 @@ impl Importer {
                     open.push((line.indent, condition));
                     continue;
                 }
-                match produce(tail) {
-                    Some(s) => branches.push((nested(&open, condition), s.to_string(), line.n)),
-                    None => {
-                        self.note(line.n, format!("the Python code '{tail}' is not translated; the production is skipped"));
-                        return;
-                    }
-                }
-                continue;
-            }
-            match produce(code) {
-                Some(s) => branches.push((nested(&open, None), s.to_string(), line.n)),
+                (condition, tail, "")
+            };
+            match produce(statement) {
+                Some(s) => branches.push((nested(&open, condition), s.to_string(), line.n)),
                 None => {
-                    self.note(line.n, format!("the Python code '{code}' is not translated (Meristem imports bodies made of if, elif, else and produce); the production is skipped"));
+                    self.note(line.n, format!("the Python code '{statement}' is not translated{hint}; the production is skipped"));
                     return;
                 }
             }
