@@ -157,6 +157,19 @@ struct Provenance {
 /// What the stages after derive take part in while it derives. Every method has a default that
 /// does nothing, so an observer implements only what it needs. Random numbers an observer draws
 /// come from the derivation's generator (`rng`), so one seed still gives one plant.
+/// What a pass wrote, module by module, as an [`Observer`] is told it.
+#[derive(Clone, Copy, Debug)]
+pub struct Written<'a> {
+    /// The string the pass wrote.
+    pub string: &'a LString,
+    /// For each of its modules, the module of the previous string it comes from.
+    pub parent: &'a [u32],
+    /// For each of its modules, the production that wrote it ([`NOT_REWRITTEN`] for a copy).
+    pub origin: &'a [u32],
+    /// The step of a productions pass, `None` for decomposition (which finishes its parents' step).
+    pub birth: Option<u32>,
+}
+
 pub trait Observer {
     /// True when the observer follows every module through every pass (and may plan steps):
     /// derivation then takes the general path and reports every pass to [`Observer::followed`].
@@ -178,19 +191,8 @@ pub trait Observer {
         Ok(None)
     }
 
-    /// A pass wrote `written`: for each of its modules, the module of the previous string it
-    /// comes from (`parent`) and the production that wrote it (`origin`, [`NOT_REWRITTEN`] for a
-    /// copy). `birth` is the step of a productions pass, `None` for decomposition (which finishes
-    /// its parents' step). Called only when [`Observer::follows_modules`].
-    fn followed(
-        &mut self,
-        _written: &LString,
-        _parent: &[u32],
-        _origin: &[u32],
-        _birth: Option<u32>,
-        _rng: &mut dyn rand::Rng,
-    ) {
-    }
+    /// A pass wrote [`Written`]. Called only when [`Observer::follows_modules`].
+    fn followed(&mut self, _written: &Written<'_>, _rng: &mut dyn rand::Rng) {}
 
     /// Cut removed modules: `kept` are the indices of the modules left, in the string before.
     fn cut(&mut self, _kept: &[u32]) {}

@@ -236,7 +236,13 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
     /// the step of a productions pass, `None` for decomposition, which finishes its parents' step).
     pub fn followed(&mut self, written: &LString, birth: Option<u32>, observer: &mut dyn Observer) {
         if let Some(t) = &self.tracker {
-            observer.followed(written, &t.parent, &t.origin, birth, &mut *self.rng);
+            let written = super::Written {
+                string: written,
+                parent: &t.parent,
+                origin: &t.origin,
+                birth,
+            };
+            observer.followed(&written, &mut *self.rng);
         }
     }
 

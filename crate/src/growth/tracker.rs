@@ -7,7 +7,7 @@ use super::formulas::{branch_length, branch_width, sun_direction, Heights, Third
 use super::state::{
     bend, born_all, follow, plan, GrowthRecord, GrowthState, ModuleGrowth, StepValues,
 };
-use crate::derive::NOT_REWRITTEN;
+use crate::derive::{Written, NOT_REWRITTEN};
 use crate::diagnostics::Diagnostic;
 use crate::model::{Env, LString, Model, Program};
 
@@ -89,22 +89,16 @@ impl<'m> GrowthTracker<'m> {
     }
 
     /// A pass wrote `written` (see [`crate::derive::Observer::followed`]): the states follow it.
-    pub fn follow(
-        &mut self,
-        written: &LString,
-        parent: &[u32],
-        origin: &[u32],
-        birth: Option<u32>,
-        rng: &mut dyn rand::Rng,
-    ) {
+    pub fn follow(&mut self, written: &Written<'_>, rng: &mut dyn rand::Rng) {
         let state = &mut self.record.state;
+        let origin = written.origin;
         state.modules = follow(
             &self.model.growth,
             &state.modules,
-            written,
-            parent,
+            written.string,
+            written.parent,
             |j| origin[j] != NOT_REWRITTEN,
-            birth,
+            written.birth,
             rng,
         );
     }

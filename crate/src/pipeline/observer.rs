@@ -3,7 +3,7 @@
 //! derivation ([`trace`]).
 
 use super::Build;
-use crate::derive::{self, DeriveOptions};
+use crate::derive::{self, DeriveOptions, Written};
 use crate::diagnostics::Diagnostic;
 use crate::growth::{Adjustments, GrowthTracker};
 use crate::model::{LString, Model};
@@ -92,16 +92,9 @@ impl derive::Observer for StageObserver<'_, '_> {
         g.plan(step, s, &mut heights, rng).map(Some)
     }
 
-    fn followed(
-        &mut self,
-        written: &LString,
-        parent: &[u32],
-        origin: &[u32],
-        birth: Option<u32>,
-        rng: &mut dyn rand::Rng,
-    ) {
+    fn followed(&mut self, written: &Written<'_>, rng: &mut dyn rand::Rng) {
         if let Some(g) = &mut self.growth {
-            g.follow(written, parent, origin, birth, rng);
+            g.follow(written, rng);
         }
     }
 
