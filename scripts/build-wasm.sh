@@ -45,7 +45,7 @@ if [ ${#opt[@]} -eq 0 ]; then
   # parametric tree) ran 1.6x slower than with the cap (measured 2026-11-26, CPU time per
   # derivation 15 -> 9 ms; 50, 200 and 1000 alike). The unexplained fast build of 2026-11-26 01:40
   # (docs/notes/performance-history.md, issue 20) was most likely a tree whose hot loops had two callers.
-  # --no-inline also names the Fixed/Choice copy loop (derive/classes.rs, `write_fixed`) as one
+  # --no-inline also names the Fixed/Choice copy loop (derive/fixed_pass.rs, `ModuleClasses::write_fixed`) as one
   # never to inline (before -O3, while the names are still there), whatever its size: E n = 11 and a
   # classes-path 1.24d ran about 1.1-1.5x slower with it inlined (measured 2026-11-26).
   wasm-opt crate/pkg/meristem_bg.wasm -o crate/pkg/meristem_bg.wasm \

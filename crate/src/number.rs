@@ -8,7 +8,7 @@
 //! the crossing into JavaScript costs nothing the preview notices. `tests/wasm_boundary.rs`
 //! checks under wasm32 that both agree.
 //!
-//! The one place outside the boundaries (`main.rs`, `wasm.rs`) that calls JavaScript, and only
+//! The one place outside the boundaries (`main/`, `wasm/`) that calls JavaScript, and only
 //! this function: `tests/architecture.rs` (`the_core_does_no_io_and_knows_nothing_of_the_browser`)
 //! allows `js_sys` in this file by name and nowhere else. Behind the boundary it would cost a
 //! callback threaded through the parser and the resolver (every number of the grammar is read

@@ -1,5 +1,5 @@
 // The facade over the core's importers (`crate/src/import`): another dialect's text in, Meristem
-// text and notes out. The studio's file opening (studio/grammar-files.ts) calls this.
+// text and notes out. The studio's file opening (studio/files/grammar-files.ts) calls this.
 import { importGrammar as coreImportGrammar, importObject as coreImportObject } from '../../../crate/pkg/meristem.js';
 import { guarded } from './init';
 import { assertIoReady } from './io';

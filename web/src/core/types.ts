@@ -52,7 +52,7 @@ export interface PlantStats {
  * The triangle mesh of a plant as flat typed arrays, owned by JavaScript (copied out of wasm
  * memory, so they stay valid however the core's memory grows).
  *
- * The layout is defined once, on the core's `MeshBuffers` (`crate/src/mesh/mod.rs`); in short:
+ * The layout is defined once, on the core's `MeshBuffers` (`crate/src/mesh/buffers.rs`); in short:
  * `positions`, `normals` and `colors` hold 3 floats per vertex, `indices` 3 per triangle;
  * `ranges` holds (first triangle, derived-string module) pairs; `lines`/`lineColors` hold two
  * 3-float ends per segment, only when the model was too large to mesh (the triangles are then empty);
