@@ -1,7 +1,7 @@
 // The controls around the view, wired to the studio's parts: the derivation's and the view's
 // options (a change of either asks for a build, when it meshes), the view's tools, the view
 // following the plant, Stages; the layout for the room; the keyboard.
-import { figureName } from '../downloads';
+import { figureName } from '../files';
 import { browserStorage } from '../files';
 import type { LazyDialog } from '../page';
 import type { StudioParts } from '../parts';

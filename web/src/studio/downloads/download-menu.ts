@@ -4,7 +4,8 @@
 // time: the menu is disabled meanwhile.
 import { MODEL_FORMATS, type ExportOptions, type ModelFormat, type SvgLook } from '../../core';
 import type { PictureLook, PlantView } from '../../view';
-import { afterPaint, fileSize, paperPixels, pictureSize, saveFile, withResolution, type PaperChoice } from './downloads';
+import { afterPaint, fileSize, paperPixels, pictureSize, withResolution, type PaperChoice } from './downloads';
+import { saveFile } from '../files/save-file';
 import { createExportWorker, describeProgress, runExport } from './export-client';
 // Loaded on demand: it imports other areas' files, not their indexes, which would bring their
 // wiring into its chunk's graph (and split the first load into more files).

@@ -2,7 +2,7 @@
 // menu's code loads after the first plant (issue 22).
 import type { BranchEdits } from '../branches';
 import type { StudioParts } from '../parts';
-import { figureName } from './downloads';
+import { figureName } from '../files/save-file';
 
 /** Loads the Downloads menu and connects it to the plant on screen. */
 export function loadDownloads({ els, view, preview, opening }: StudioParts, branchEdits: BranchEdits): Promise<void> {

@@ -1,30 +1,5 @@
-// Downloads: handing a file to the browser, and the small parsing and wording around it.
-
-/** Words of a title that name no figure in particular (`ABOP Fig. 1.24d` is saved as `abop-1.24d`). */
-const FIGURE_WORDS = /^(fig\.?|figure)$/i;
-
-/**
- * The name files of a grammar are saved under: its title (the first line of its opening `//`
- * comment, up to a colon: `// ABOP Fig 1.24d: …` gives `abop-1.24d`, `// Barnsley fern` gives
- * `barnsley-fern`), else the name of the file it was opened as (an example, `file/NAME`; not a
- * saved grammar's `saved/ID`), else `plant`.
- */
-export function figureName(file: string, source = ''): string {
-  const title = /^\s*\/\/(.*)/.exec(source)?.[1].split(':')[0] ?? '';
-  const words = title.split(/\s+/).filter((w) => w !== '' && !FIGURE_WORDS.test(w));
-  const fromTitle = slug(words.join('-')).slice(0, 48).replace(/-+$/, '');
-  if (fromTitle !== '') return fromTitle;
-  const name = slug(file.replace(/^(file|saved)\//, '').replace(/\.[A-Za-z0-9]+$/, ''));
-  return name === '' || file.startsWith('saved/') ? 'plant' : name;
-}
-
-/** Lower case, runs of anything but letters, digits, `.` and `_` as one `-`, none at the ends. */
-function slug(text: string): string {
-  return text
-    .toLowerCase()
-    .replace(/[^\p{L}\p{N}._]+/gu, '-')
-    .replace(/^[-.]+|[-.]+$/g, '');
-}
+// Downloads: the small parsing and wording around the Download menu's files and pictures (their
+// names and the browser's download: ../files/save-file.ts).
 
 /** The smallest and (unless the GPU allows less) largest side of a PNG picture, in pixels. */
 export const PICTURE_MIN = 16;
@@ -59,21 +34,6 @@ export function fileSize(bytes: number): string {
   if (bytes < 1e6) return `${decimal.format(bytes / 1e3)} KB`;
   if (bytes < 1e9) return `${decimal.format(bytes / 1e6)} MB`;
   return `${decimal.format(bytes / 1e9)} GB`;
-}
-
-/** Hands `data` to the browser as a download named `fileName`. */
-export function saveFile(data: Blob | Uint8Array, fileName: string, mimeType: string): void {
-  const blob = data instanceof Blob ? data : new Blob([data.slice().buffer as ArrayBuffer], { type: mimeType });
-  const url = URL.createObjectURL(blob);
-  const link = document.createElement('a');
-  link.href = url;
-  link.download = fileName;
-  link.hidden = true;
-  document.body.append(link);
-  link.click();
-  link.remove();
-  // The download has started from the URL by now; a minute is generous before letting it go.
-  setTimeout(() => URL.revokeObjectURL(url), 60_000);
 }
 
 /** Resolves after the browser has painted, so a status set before it is on screen during long work. */

@@ -3,7 +3,7 @@
 // (old Lparser files) read as Windows-1252. Saving writes the editor's text as `NAME.lsys`.
 import { importGrammar, importObject, type Dialect, type ObjectFile } from '../../core';
 import { titleOf } from '../../share';
-import { saveFile } from '../downloads';
+import { saveFile } from './save-file';
 
 /** Largest grammar file opened (bytes). */
 export const MAX_FILE_BYTES = 1_000_000;

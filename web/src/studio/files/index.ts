@@ -8,3 +8,4 @@ export { INITIAL_EXAMPLE } from './initial-example';
 export { keptSentence, restoreAutosave, type TextKeeper } from './keeping';
 export type { OpenedText, TextOpening } from './text-opening';
 export { saveGrammarFile } from './grammar-files';
+export { figureName, saveFile } from './save-file';

@@ -8,9 +8,11 @@ import type { StartingText } from '../links';
 import { browserDatabase, browserStorage } from './browser-storage';
 import { installDrop } from './file-drop';
 import { installFileMenu } from './file-menu';
-import { readGrammarFile, readObjectFiles, createImportWorker } from './import-client';
 import { TextKeeper } from './keeping';
 import { TextOpening } from './text-opening';
+
+/** The import worker's client, loaded by the first file opened (no first plant opens one). */
+const importClient = () => import('./import-client');
 
 /** The user's work in this browser: localStorage, else (when that is full) IndexedDB; kept before anything replaces it. */
 export function browserKeeping(): KeptWork {
@@ -31,8 +33,14 @@ export function createOpening(
       confirm: els.confirm,
       cannotKeep: els.cannotKeep,
       keeper: parts.keeper,
-      readFile: (file) => readGrammarFile(file, { createWorker: createImportWorker, notice }),
-      readFiles: (files, name) => readObjectFiles(files, name, { createWorker: createImportWorker, notice }),
+      readFile: async (file) => {
+        const { readGrammarFile, createImportWorker } = await importClient();
+        return readGrammarFile(file, { createWorker: createImportWorker, notice });
+      },
+      readFiles: async (files, name) => {
+        const { readObjectFiles, createImportWorker } = await importClient();
+        return readObjectFiles(files, name, { createWorker: createImportWorker, notice });
+      },
       notice,
       forgetText: () => {
         derivation.clear();

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { exportModel } from '../../core';
 import { parseStageSvg, stagesSvg } from './stages-svg';
-import { figureName } from '../downloads';
+import { figureName } from '../files';
 import { stagesOf } from './stages';
 
 const PLANT = '#angle 20\naxiom: X\nX -> F[+X]F[-X]+X\nF -> FF\n';

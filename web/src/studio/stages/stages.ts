@@ -9,7 +9,8 @@ import type { StageScale } from '../../view/stages-layout';
 import { StagesView, type StagePlant, type StagesGrid } from '../../view/stages-view';
 // Loaded on demand: it imports other areas' files, not their indexes, which would bring their
 // wiring into its chunk's graph (and split the first load into more files).
-import { afterPaint, saveFile } from '../downloads/downloads';
+import { afterPaint } from '../downloads/downloads';
+import { saveFile } from '../files/save-file';
 import { createExportWorker, runExport } from '../downloads/export-client';
 import { stagesSvg, type StageDrawing } from './stages-svg';
 import { growthKey } from '../controls/view-following';
