@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { languageVocabulary } from '../core';
-import { argumentValues, findDirective, growthAttributes, setArguments, toggleAttribute, validArgument, type TextChange } from './growth-directives';
+import { findDirective } from './directive-lines';
+import { argumentValues, growthAttributes, setArguments, toggleAttribute, validArgument, type TextChange } from './growth-directives';
 
 const attribute = (name: string) => growthAttributes(languageVocabulary()).find((a) => a.directive === name)!;
 const apply = (text: string, change: TextChange | null) => (change ? text.slice(0, change.from) + change.insert + text.slice(change.to) : text);

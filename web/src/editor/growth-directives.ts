@@ -4,6 +4,7 @@
 // comment after them kept. Their arguments, defaults and labels come from the core's vocabulary.
 import { languageVocabulary, type Param, type Vocabulary } from '../core';
 import { directiveHoverText } from './hover-text';
+import { findDirective, type FoundDirective } from './directive-lines';
 
 /** One argument of a directive, as the panel edits it. */
 export interface GrowthField {
@@ -85,39 +86,6 @@ export function growthAttributes(vocabulary: Vocabulary): GrowthAttribute[] {
         })),
       };
     });
-}
-
-/** A directive found in the text: where its line is and its arguments. */
-export interface FoundDirective {
-  /** UTF-16 range of the arguments (from after the name to before a `//` comment or the line's end, trimmed). */
-  from: number;
-  to: number;
-  /** The whole line, its end of line included (for removal). */
-  lineFrom: number;
-  lineTo: number;
-  args: string[];
-}
-
-/** The first line `#directive …` of `text`, or null. */
-export function findDirective(text: string, directive: string): FoundDirective | null {
-  const pattern = new RegExp(`^([ \\t]*#${directive})(?=[ \\t]|$|//)([^\\n]*)$`, 'm');
-  const match = pattern.exec(text);
-  if (!match) return null;
-  const lineFrom = match.index;
-  const rest = match[2];
-  const comment = rest.indexOf('//');
-  const body = comment >= 0 ? rest.slice(0, comment) : rest;
-  const lead = body.length - body.trimStart().length;
-  const from = lineFrom + match[1].length + lead;
-  const trimmed = body.trim();
-  const end = lineFrom + match[0].length;
-  return {
-    from,
-    to: from + trimmed.length,
-    lineFrom,
-    lineTo: text[end] === '\n' ? end + 1 : end,
-    args: trimmed === '' ? [] : trimmed.split(/[ \t]+/),
-  };
 }
 
 /** A text change: replace `from`..`to` by `insert`. */

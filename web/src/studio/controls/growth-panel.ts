@@ -2,9 +2,9 @@
 // sun, gravity, wind, apices) as switches and fields that read and write the grammar's growth
 // directives. Each change is one editor change (undoable), so the plant follows through the normal
 // live preview; a value the core would not read is marked and not written.
+import { findDirective } from '../../editor/directive-lines';
 import {
   argumentValues,
-  findDirective,
   setArguments,
   toggleAttribute,
   validArgument,

@@ -3,7 +3,6 @@
 // core/vocabulary.ts); the text is built meanwhile. The Growth panel's code arrives with it.
 import { loadVocabulary } from '../../core';
 import type { GrammarEditor } from '../../editor/grammar-text';
-import { growthAttributes } from '../../editor/growth-directives';
 import type { DerivationControls } from '../derivation';
 import type { StudioElements } from '../page';
 import type { GrowthPanel } from './growth-panel';
@@ -46,7 +45,11 @@ export class VocabularyPanels {
     this.asked = true;
     this.failed = false;
     try {
-      const [vocabulary, { GrowthPanel }] = await Promise.all([loadVocabulary(), import('./growth-panel')]);
+      const [vocabulary, { GrowthPanel }, { growthAttributes }] = await Promise.all([
+        loadVocabulary(),
+        import('./growth-panel'),
+        import('../../editor/growth-directives'),
+      ]);
       this.arrived = true;
       const { els, editor } = this.parts;
       this.growth = new GrowthPanel(

@@ -5,7 +5,7 @@
 // is opened or the grammar's own iterations line is edited, and the errors its value causes (the
 // step and module limits) are told in the notice bar, since the text has nothing to mark for them.
 import { directiveOfKind, languageVocabulary, type Diagnostic, type PlantBuild } from '../../core';
-import { findDirective } from '../../editor/growth-directives';
+import { findDirective } from '../../editor/directive-lines';
 import type { SharedState } from '../../share';
 import type { Notice } from '../page';
 import { Playback } from '../../plant-controls';
