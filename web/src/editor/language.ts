@@ -208,7 +208,7 @@ export function grammarLanguage(vocabulary: Vocabulary): StreamLanguage<LineStat
   });
 }
 
-/** A token in its colour, the CSS variable `--tok-<colour>` (style.css), with any other style. */
+/** A token in its colour, the CSS variable `--tok-<colour>` (styles/page.css), with any other style. */
 function coloured(tag: Tag, colour: string, style: Omit<TagStyle, 'tag'> = {}): TagStyle {
   return { tag, color: `var(--tok-${colour})`, ...style };
 }
@@ -225,7 +225,7 @@ function contextBand(tag: Tag, side: 'left' | 'right'): TagStyle {
 const bold = { fontWeight: '600' };
 const italic = { fontStyle: 'italic' };
 
-/** Colours of the grammar's tokens; CSS variables (see style.css) so light and dark both work. */
+/** Colours of the grammar's tokens; CSS variables (see styles/page.css) so light and dark both work. */
 export const grammarHighlightStyle = HighlightStyle.define([
   coloured(tags.comment, 'comment', italic),
   coloured(grammarTags.directive, 'directive', bold),

@@ -1,7 +1,7 @@
 // The editor's look: fills its pane, follows the page's colour scheme through CSS variables.
 import { EditorView } from '@codemirror/view';
 
-/** Editor theme; the colours live in style.css so `prefers-color-scheme` switches them. */
+/** Editor theme; the colours live in styles/page.css so `prefers-color-scheme` switches them. */
 export const studioEditorTheme = EditorView.theme({
   '&': {
     height: '100%',

@@ -9,7 +9,7 @@ export interface ScenePalette {
   grid: Color;
 }
 
-/** The palette for a light (`false`) or dark (`true`) page. Keep in sync with `--view-bg` in style.css. */
+/** The palette for a light (`false`) or dark (`true`) page. Keep in sync with `--view-bg` in styles/page.css. */
 export function scenePalette(dark: boolean): ScenePalette {
   return dark
     ? { background: new Color('#1c1f24'), gridCenter: new Color('#30353c'), grid: new Color('#262a30') }

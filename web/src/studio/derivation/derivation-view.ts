@@ -17,7 +17,7 @@ import { plural } from '../preview/status';
 export const SEQUENCE_MAX_MODULES = 4_000;
 /** The derivation tree is drawn when the steps hold this many modules or fewer together. */
 export const TREE_MAX_MODULES = 160;
-/** Height of a row of the last-step list in pixels (keep in step with `.dv-pair` in style.css). */
+/** Height of a row of the last-step list in pixels (keep in step with `.dv-pair` in derivation-view.css). */
 const PAIR_HEIGHT = 24;
 const OVERSCAN = 6;
 

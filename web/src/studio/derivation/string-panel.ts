@@ -6,7 +6,7 @@ import { shortModuleText } from './module-text';
 
 /** Modules per row of the panel. */
 export const MODULES_PER_ROW = 40;
-/** Height of a row in pixels (keep in step with `.string-row` in style.css). */
+/** Height of a row in pixels (keep in step with `.string-row` in styles/inspector.css). */
 export const ROW_HEIGHT = 22;
 /** Rows rendered above and below the visible ones. */
 const OVERSCAN = 4;

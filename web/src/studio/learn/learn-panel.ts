@@ -1,7 +1,7 @@
 // The Learn panel (index.html `#learn`): the course of public/lessons, by chapter and order; a
 // lesson's text, its grammars with their pictures and an "Open in the editor" button, its tasks
 // with a Check of the plant on screen and a hidden solution; previous and next lesson. A side
-// column beside the studio on wide screens, over it on narrow ones (style.css); not modal, so the
+// column beside the studio on wide screens, over it on narrow ones (styles/side-panels.css); not modal, so the
 // editor and the plant stay in reach while a task is worked on. Escape closes it.
 import './learn-panel.css';
 import type { PlantBuild, PlantInspector } from '../../core';
