@@ -421,7 +421,7 @@ fn every_attribute_on_every_gallery_grammar_builds_a_valid_mesh() {
     for path in files {
         let text = std::fs::read_to_string(&path).expect("UTF-8");
         let plain = build(&text, &BuildOptions::default());
-        let steps = plain.steps.min(5);
+        let steps = plain.derived_with.steps.min(5);
         for seed in 1..=3 {
             let b = build(
                 &format!("{attributes}{text}"),

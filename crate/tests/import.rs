@@ -666,7 +666,7 @@ fn lparser_translations_keep_lparsers_string_symbol_for_symbol() {
         let result = import_file(file);
         let b = build(&result.text, &BuildOptions::default());
         assert!(b.ok(), "{file}: {:?}", b.diagnostics);
-        assert_eq!(b.steps, depth);
+        assert_eq!(b.derived_with.steps, depth);
         let mut expected = lparser_names(l, depth as usize, rewritten);
         if colour_prefix {
             expected.insert(0, ";".into()); // Lparser starts with colour 2: `;(2)`
@@ -710,7 +710,7 @@ fn greens_worked_example_derives_to_the_published_step() {
     // and the second for A(5); seed 3 (as public/examples/green-context.lsys) draws exactly so.
     let result = import_file("green/worked-example.txt");
     let b = derive(&result, None, Some(3));
-    assert_eq!(b.steps, 1);
+    assert_eq!(b.derived_with.steps, 1);
     assert_eq!(b.derived_text(), "A(2)B(6)[A(3)]B(4)");
     // Other seeds give Green's other outcomes: each A becomes A(x+1) or B(x-1), and B(3) always
     // becomes B(6)[A(3)] when both its neighbours are still A.
@@ -730,7 +730,7 @@ fn cpfg_and_lpy_translations_derive_the_strings_their_rules_give() {
     // Koch curve: F -> F+F--F+F, 4 steps: 4^4 F, and 4 turns for each of the 1 + 4 + 16 + 64
     // rewritings.
     let b = derive(&import_file("cpfg/snowflake.l"), None, None);
-    assert_eq!(b.steps, 4);
+    assert_eq!(b.derived_with.steps, 4);
     assert_eq!(b.plant.stats.modules, 1 + 256 + 4 * 85);
     assert_eq!(b.plant.stats.segments, 256);
     // A compound leaf drawn through its homomorphism: the derived string keeps A and I.

@@ -129,10 +129,7 @@ pub fn place_branch(
     match offsets {
         None => {
             for &s in &b.segments {
-                let (o, e) = (
-                    &original.segments[s as usize],
-                    &mut out.segments[s as usize],
-                );
+                let (o, e) = unedited_and_edited(&original.segments, &mut out.segments, s);
                 e.start = inherited.point(o.start);
                 e.end = inherited.point(o.end);
                 e.left = inherited.vector(o.left);
@@ -199,23 +196,22 @@ pub fn edited_motions(
     }
 }
 
+/// Element `i` of a skeleton's list as it was (`original`) and as it is being written (`out`).
+fn unedited_and_edited<'a, T>(original: &'a [T], out: &'a mut [T], i: u32) -> (&'a T, &'a mut T) {
+    (&original[i as usize], &mut out[i as usize])
+}
+
 /// Moves one polygon, leaf or sphere from its unedited place by `motion`.
 pub fn place_item(original: &Skeleton, item: Item, motion: &Rigid, out: &mut Skeleton) {
     match item {
         Item::Polygon(i) => {
-            let (o, e) = (
-                &original.polygons[i as usize],
-                &mut out.polygons[i as usize],
-            );
+            let (o, e) = unedited_and_edited(&original.polygons, &mut out.polygons, i);
             for (p, q) in e.points.iter_mut().zip(&o.points) {
                 *p = motion.point(*q);
             }
         }
         Item::Surface(i) => {
-            let (o, e) = (
-                &original.surfaces[i as usize],
-                &mut out.surfaces[i as usize],
-            );
+            let (o, e) = unedited_and_edited(&original.surfaces, &mut out.surfaces, i);
             e.origin = motion.point(o.origin);
             e.heading = motion.vector(o.heading);
             e.left = motion.vector(o.left);

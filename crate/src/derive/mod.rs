@@ -46,7 +46,7 @@ use rewriter::{Rewriter, Tracker};
 pub use generator::Generator;
 
 /// What one derivation does.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Default)]
 pub struct DeriveOptions {
     pub steps: u32,
     /// Overrides `#seed`.

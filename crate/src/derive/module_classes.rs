@@ -275,21 +275,14 @@ impl ModuleClasses {
         candidates: &[u32],
         class: &mut ModuleClass,
     ) -> ModuleKind {
-        let start = self.alternatives.len();
-        for &k in candidates {
-            let p = &rules.productions[k as usize];
-            let Some(weight) = &p.weight else { continue };
-            let Some(w) = weight.constant().filter(|w| *w >= 0.0) else {
-                return self.give_up(start);
-            };
-            if p.has_context() {
-                return self.give_up(start);
-            }
-            class.total += w;
-            self.push_alternative(k, p, w, (NONE, NONE));
-        }
-        self.set_alternatives(class, start);
-        ModuleKind::Choice
+        let weighted = candidates
+            .iter()
+            .filter(|&&k| rules.productions[k as usize].weight.is_some());
+        let read = |p: &Production| {
+            let weight = p.weight.as_ref()?.constant().filter(|w| *w >= 0.0)?;
+            (!p.has_context()).then_some((weight, (NONE, NONE)))
+        };
+        self.read_alternatives(rules, weighted, class, read, ModuleKind::Choice)
     }
 
     /// The productions among `candidates` up to the first without a context, when each has no
@@ -300,50 +293,60 @@ impl ModuleClasses {
         candidates: &[u32],
         class: &mut ModuleClass,
     ) -> ModuleKind {
-        let start = self.alternatives.len();
-        for &k in candidates {
-            let p = &rules.productions[k as usize];
+        // The first production without a context always applies: the ones after it never do.
+        let applying = candidates
+            .iter()
+            .position(|&k| !rules.productions[k as usize].has_context())
+            .map_or(candidates, |last| &candidates[..=last]);
+        let read = |p: &Production| {
             let single = |m: &PatternModule| (m.arity == 0).then_some(m.id.0);
             let left = match p.left.as_slice() {
-                [] => Some(NONE),
-                [m] => single(m),
-                _ => None,
+                [] => NONE,
+                [m] => single(m)?,
+                _ => return None,
             };
             let right = match p.right.as_slice() {
-                [] => Some(NONE),
-                [PatternItem::Module(m)] => single(m),
-                _ => None,
+                [] => NONE,
+                [PatternItem::Module(m)] => single(m)?,
+                _ => return None,
             };
-            let (Some(left), Some(right), None) = (left, right, &p.weight) else {
-                return self.give_up(start);
+            p.weight.is_none().then_some((0.0, (left, right)))
+        };
+        self.read_alternatives(rules, applying.iter(), class, read, ModuleKind::Neighbours)
+    }
+
+    /// Makes the productions `ks` the alternatives of `class`, each with the weight and contexts
+    /// (left, right) `read` finds in it; gives up (the class is General) at the first production
+    /// `read` refuses.
+    fn read_alternatives<'k>(
+        &mut self,
+        rules: &RuleSet,
+        ks: impl Iterator<Item = &'k u32>,
+        class: &mut ModuleClass,
+        read: impl Fn(&Production) -> Option<(f64, (u32, u32))>,
+        kind: ModuleKind,
+    ) -> ModuleKind {
+        let first = self.alternatives.len();
+        for &k in ks {
+            let p = &rules.productions[k as usize];
+            let Some((weight, (left, right))) = read(p) else {
+                self.alternatives.truncate(first);
+                return ModuleKind::General;
             };
-            self.push_alternative(k, p, 0.0, (left, right));
-            if !p.has_context() {
-                break; // it always applies: the productions after it never do
-            }
+            class.total += weight;
+            let (start, len) = self.successor(p.successor.iter().map(|m| m.id));
+            self.alternatives.push(Alternative {
+                production: k,
+                weight,
+                left,
+                right,
+                start,
+                len,
+            });
         }
-        self.set_alternatives(class, start);
-        ModuleKind::Neighbours
-    }
-
-    /// Appends production `k` (`p`) as an alternative of the class being built, with its weight
-    /// and its contexts (left, right).
-    fn push_alternative(&mut self, k: u32, p: &Production, weight: f64, (left, right): (u32, u32)) {
-        let (start, len) = self.successor(p.successor.iter().map(|m| m.id));
-        self.alternatives.push(Alternative {
-            production: k,
-            weight,
-            left,
-            right,
-            start,
-            len,
-        });
-    }
-
-    /// Makes `class`'s alternatives those pushed since `start`.
-    fn set_alternatives(&self, class: &mut ModuleClass, start: usize) {
-        class.start = start as u32;
-        class.len = (self.alternatives.len() - start) as u32;
+        class.start = first as u32;
+        class.len = (self.alternatives.len() - first) as u32;
+        kind
     }
 
     /// True when `class` copies its module unless a neighbour is the context of one of its
@@ -433,11 +436,6 @@ impl ModuleClasses {
         self.alternatives[class.start as usize..][..class.len as usize]
             .iter()
             .find(|a| (a.left == NONE || a.left == left) && (a.right == NONE || a.right == right))
-    }
-
-    fn give_up(&mut self, start: usize) -> ModuleKind {
-        self.alternatives.truncate(start);
-        ModuleKind::General
     }
 
     /// The index of the first hot module of `ids` from `from` (`ids.len()` when there is none).

@@ -31,11 +31,7 @@ impl<R: rand::Rng> Rewriter<'_, R> {
         let nested = c.neighbours
             && !c.flat
             && module_classes::right_neighbours(&c.classes, src, right, stack);
-        if c.sized && !tracking && !c.neighbours {
-            if let Some(changed) = self.rewrite_fixed(c, pass, dst) {
-                return Ok(changed);
-            }
-        } else if c.sized && !tracking && !nested {
+        if c.sized && !tracking && !nested {
             if let Some(changed) = self.rewrite_sized(c, pass, dst) {
                 return Ok(changed);
             }
@@ -91,43 +87,45 @@ impl<R: rand::Rng> Rewriter<'_, R> {
     /// string's neighbours are the modules next to each other (no brackets or ignored modules
     /// between them, or no class compares neighbours) and nothing is tracked: the next length is
     /// known first, so the output is allocated once and every module is one copy of a successor.
-    /// `None` when the next string passes a limit: the caller's loop says where.
+    /// When no class compares neighbours (every class is Fixed or Choice), the length comes from
+    /// the id counts ([`super::fixed_pass::Counts`], carried from the last pass when it wrote
+    /// `src`). `None` when the next string passes a limit (the caller's loop says where) or the
+    /// successors have no copy width.
     fn rewrite_sized(
         &mut self,
         c: &ModuleClasses,
         pass: &Pass<'_>,
         dst: &mut LString,
     ) -> Option<bool> {
-        Some(match c.width {
-            4 => self.rewrite_sized_as::<4>(c, pass, dst)?,
-            8 => self.rewrite_sized_as::<8>(c, pass, dst)?,
-            PAD => self.rewrite_sized_as::<{ PAD }>(c, pass, dst)?,
-            _ => return None,
-        })
-    }
-
-    /// [`Rewriter::rewrite_by_class`] when every class is Fixed or Choice of a known length and
-    /// nothing is tracked: the next length comes from the id counts ([`super::fixed_pass::Counts`],
-    /// carried from the last pass when it wrote `src`), the output is allocated once and every
-    /// module is one copy of a successor. `None` when the next string passes a limit: the caller's
-    /// loop says where.
-    fn rewrite_fixed(
-        &mut self,
-        c: &ModuleClasses,
-        pass: &Pass<'_>,
-        dst: &mut LString,
-    ) -> Option<bool> {
         let Pass { src, num_it, .. } = *pass;
-        let carried = self.counts.carried;
-        let len = c.fixed_len(&src.ids, &mut self.counts, carried);
-        self.sized_room(num_it, dst, len, len.saturating_mul(size_of::<ModuleId>()))?;
-        let picks = &mut self.counts.picks;
-        picks.clear();
-        picks.resize(c.alternatives.len(), 0);
-        let changed = c.write_fixed(&src.ids, &mut dst.ids, &mut *self.rng, &mut self.counts);
+        if !c.neighbours {
+            let carried = self.counts.carried;
+            let len = c.fixed_len(&src.ids, &mut self.counts, carried);
+            self.sized_room(num_it, dst, len, len.saturating_mul(size_of::<ModuleId>()))?;
+            let picks = &mut self.counts.picks;
+            picks.clear();
+            picks.resize(c.alternatives.len(), 0);
+            let changed = c.write_fixed(&src.ids, &mut dst.ids, &mut *self.rng, &mut self.counts);
+            debug_assert_eq!(dst.len(), len);
+            c.carry(&mut self.counts);
+            self.counts.len = Some(len);
+            return Some(changed);
+        }
+        let write: fn(&mut Self, &ModuleClasses, &[ModuleId], &mut LString) -> bool = match c.width
+        {
+            4 => Self::write_flat::<4>,
+            8 => Self::write_flat::<8>,
+            PAD => Self::write_flat::<{ PAD }>,
+            _ => return None,
+        };
+        let len: usize = if c.unit {
+            src.len()
+        } else {
+            src.ids.iter().map(|id| c.outs[id.index()] as usize).sum()
+        };
+        self.sized_room(num_it, dst, len, len * size_of::<ModuleId>())?;
+        let changed = write(self, c, &src.ids, dst);
         debug_assert_eq!(dst.len(), len);
-        c.carry(&mut self.counts);
-        self.counts.len = Some(len);
         Some(changed)
     }
 
@@ -142,22 +140,15 @@ impl<R: rand::Rng> Rewriter<'_, R> {
         Some(())
     }
 
-    /// [`Rewriter::rewrite_sized`], each successor copied as `W` ids.
+    /// Writes the flat string `ids` into `dst`, each successor copied as `W` ids
+    /// ([`ModuleClasses::width`]), in room made for it; returns whether a production applied.
     #[inline(never)]
-    fn rewrite_sized_as<const W: usize>(
+    fn write_flat<const W: usize>(
         &mut self,
         c: &ModuleClasses,
-        pass: &Pass<'_>,
+        ids: &[ModuleId],
         dst: &mut LString,
-    ) -> Option<bool> {
-        let Pass { src, num_it, .. } = *pass;
-        let len: usize = if c.unit {
-            src.len()
-        } else {
-            src.ids.iter().map(|id| c.outs[id.index()] as usize).sum()
-        };
-        self.sized_room(num_it, dst, len, len * size_of::<ModuleId>())?;
-        let ids = &src.ids;
+    ) -> bool {
         let n = ids.len();
         let mut changed = false;
         // A flat string whose modules compare neighbours: a module that is cold (no production
@@ -175,22 +166,21 @@ impl<R: rand::Rng> Rewriter<'_, R> {
             };
             let stop = (h + 2).min(n).max(b);
             for k in i..a {
-                changed |= self.rewrite_sized_one::<W>(c, ids, k, dst);
+                changed |= self.write_flat_one::<W>(c, ids, k, dst);
             }
             dst.ids.extend_from_slice(&ids[a..b]);
             for k in b..stop {
-                changed |= self.rewrite_sized_one::<W>(c, ids, k, dst);
+                changed |= self.write_flat_one::<W>(c, ids, k, dst);
             }
             i = stop;
         }
-        debug_assert_eq!(dst.len(), len);
-        Some(changed)
+        changed
     }
 
     /// Writes module `i` of `ids` as its class says, its neighbours being the modules next to
     /// it; returns whether a production applied.
     #[inline(always)]
-    fn rewrite_sized_one<const W: usize>(
+    fn write_flat_one<const W: usize>(
         &mut self,
         c: &ModuleClasses,
         ids: &[ModuleId],

@@ -39,16 +39,14 @@ impl BuildOptions {
 
 /// Everything one build produced. When `diagnostics` has an error, the stages after the failing
 /// one did not run and what they make is empty.
-#[derive(Clone, Debug, Default)]
+#[derive(Debug, Default)]
 pub struct Build {
     pub diagnostics: Vec<Diagnostic>,
     pub model: Option<Model>,
     /// The derived string and where its modules come from.
     pub derivation: Derivation,
-    /// Derivation steps run.
-    pub steps: u32,
-    /// The seed that overrode `#seed`, if any.
-    pub seed: Option<u64>,
+    /// The steps run and the seed that overrode `#seed`, if any.
+    pub derived_with: DeriveOptions,
     /// With growth attributes (`#lifetime`, `#shape`, `#sun`, …): each module's growth state and
     /// what every step did (apices growing and stopped per third, rewritings).
     pub growth: Option<GrowthRecord>,
@@ -78,14 +76,10 @@ impl Build {
 
     /// Questions about the derivation, when there is a model.
     pub fn inspector(&self) -> Option<Inspector<'_>> {
-        let options = DeriveOptions {
-            steps: self.steps,
-            seed: self.seed,
-        };
         Some(Inspector::new(
             self.model.as_ref()?,
             &self.derivation,
-            options,
+            self.derived_with.clone(),
         ))
     }
 
@@ -175,7 +169,11 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Watch<'_, '_>) -
     watch.start(Stage::Derive);
     watch.hooks.tell(Progress::Derived { step: 0, steps });
     let mut stepped = |step| watch.hooks.tell(Progress::Derived { step, steps });
-    let derived = derive_stage(&model, steps, options.seed, &mut result, &mut stepped);
+    let derive = DeriveOptions {
+        steps,
+        seed: options.seed,
+    };
+    let derived = derive_stage(&model, derive, &mut result, &mut stepped);
     watch.timings.derive = watch.lap();
     if let Some(None) = derived.as_ref().filter(|_| options.sketch) {
         watch.start(Stage::Interpret);
@@ -189,8 +187,6 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Watch<'_, '_>) -
                 .push(clamped_warning(&model, &result.derivation, module));
         }
         watch.start(Stage::Mesh);
-        result.steps = steps;
-        result.seed = options.seed;
         result.plant = Plant::sketched(sketch, &options.mesh, &result.derivation, steps);
         watch.timings.mesh = watch.lap();
     } else if let Some(adjustments) = derived {
@@ -207,8 +203,6 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Watch<'_, '_>) -
                 .push(clamped_warning(&model, &result.derivation, module));
         }
         watch.start(Stage::Mesh);
-        result.steps = steps;
-        result.seed = options.seed;
         result.plant = Plant::new(skeleton, &options.mesh, &result.derivation, steps);
         watch.timings.mesh = watch.lap();
     }

@@ -35,7 +35,7 @@ pub struct Exported {
 }
 
 /// Why nothing was exported.
-#[derive(Clone, Debug)]
+#[derive(Debug)]
 pub enum ExportError {
     /// The grammar has errors: there is no plant to write. The build is returned for its
     /// diagnostics.

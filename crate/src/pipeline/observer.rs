@@ -14,17 +14,15 @@ use crate::turtle;
 /// failed.
 pub(super) fn derive_stage(
     model: &Model,
-    steps: u32,
-    seed: Option<u64>,
+    options: DeriveOptions,
     result: &mut Build,
     stepped: &mut dyn FnMut(u32),
 ) -> Option<Option<Adjustments>> {
     let mut observer = StageObserver {
         model,
-        growth: GrowthTracker::new(model, steps),
+        growth: GrowthTracker::new(model, options.steps),
         stepped: Some(stepped),
     };
-    let options = DeriveOptions { steps, seed };
     match derive::derive_tracked(model, &options, &mut observer) {
         Ok(mut derivation) => {
             result.diagnostics.append(&mut derivation.warnings);
@@ -34,6 +32,7 @@ pub(super) fn derive_stage(
                 .map(|g| g.adjustments(&derivation.turtle_origin));
             result.growth = observer.growth.map(GrowthTracker::finish);
             result.derivation = derivation;
+            result.derived_with = options;
             Some(adjustments)
         }
         Err(diagnostic) => {

@@ -150,16 +150,6 @@ const fn row(
     }
 }
 
-const fn turtle(
-    name: &'static str,
-    command: Command,
-    params: &'static [Param],
-    doc: &'static str,
-    category: Category,
-) -> ModuleInfo {
-    row(name, Meaning::Turtle(command), params, doc, category)
-}
-
 const LENGTH: &[Param] = &[Param::number("l", "the distance moved")
     .default_from(DirectiveKind::Step)
     .unit("units")];
@@ -185,47 +175,48 @@ const SCALE: &[Param] = &[Param::number("s", "the length of the surface").defaul
 
 use Category as K;
 use Command as C;
+use Meaning::Turtle;
 
 /// Every module of LANGUAGE.md section 6 and the derivation-time modules of sections 6 and 7.
 #[rustfmt::skip]
 pub const MODULES: &[ModuleInfo] = &[
-    turtle("F", C::Forward, LENGTH, "Move forward by l and draw a segment.", K::Move),
-    turtle("f", C::Move, LENGTH, "Move forward by l without drawing.", K::Move),
-    turtle("G", C::ForwardNoVertex, LENGTH, "Draw forward by l without recording a polygon vertex.", K::Move),
-    turtle("g", C::MoveNoVertex, LENGTH, "Move forward by l without drawing or recording a polygon vertex.", K::Move),
-    turtle("@M", C::MoveTo, POINT, "Move to the point (x, y, z) without drawing.", K::Move),
-    turtle("+", C::TurnLeft, ANGLE, "Turn left by a degrees around the up vector U.", K::Rotate),
-    turtle("-", C::TurnRight, ANGLE, "Turn right by a degrees around the up vector U.", K::Rotate),
-    turtle("&", C::PitchDown, ANGLE, "Pitch down by a degrees around the left vector L.", K::Rotate),
-    turtle("^", C::PitchUp, ANGLE, "Pitch up by a degrees around the left vector L.", K::Rotate),
-    turtle("\\", C::RollLeft, ANGLE, "Roll left by a degrees around the heading H.", K::Rotate),
-    turtle("/", C::RollRight, ANGLE, "Roll right by a degrees around the heading H.", K::Rotate),
-    turtle("|", C::TurnAround, &[], "Turn around: 180° around the up vector U.", K::Rotate),
-    turtle("$", C::RollToVertical, &[], "Roll around H so that L is horizontal (ABOP p. 57).", K::Rotate),
-    turtle("@v", C::RollToVertical, &[], "Roll around H so that L is horizontal; the same as $.", K::Rotate),
-    turtle("[", C::Push, &[], "Start a branch: push the turtle state.", K::Branch),
-    turtle("]", C::Pop, &[], "End a branch: pop the turtle state.", K::Branch),
-    turtle("{", C::StartPolygon, &[], "Start a polygon: the turtle's position and later F, f and . moves are its vertices.", K::Polygon),
-    turtle(".", C::PolygonVertex, &[], "Record the turtle's position as a polygon vertex.", K::Polygon),
-    turtle("}", C::EndPolygon, &[], "Close and fill the polygon.", K::Polygon),
-    turtle("!", C::Width, &[Param::number("w", "the new width; without it, the width decreases by #width_step").unit("width units")],
+    row("F", Turtle(C::Forward), LENGTH, "Move forward by l and draw a segment.", K::Move),
+    row("f", Turtle(C::Move), LENGTH, "Move forward by l without drawing.", K::Move),
+    row("G", Turtle(C::ForwardNoVertex), LENGTH, "Draw forward by l without recording a polygon vertex.", K::Move),
+    row("g", Turtle(C::MoveNoVertex), LENGTH, "Move forward by l without drawing or recording a polygon vertex.", K::Move),
+    row("@M", Turtle(C::MoveTo), POINT, "Move to the point (x, y, z) without drawing.", K::Move),
+    row("+", Turtle(C::TurnLeft), ANGLE, "Turn left by a degrees around the up vector U.", K::Rotate),
+    row("-", Turtle(C::TurnRight), ANGLE, "Turn right by a degrees around the up vector U.", K::Rotate),
+    row("&", Turtle(C::PitchDown), ANGLE, "Pitch down by a degrees around the left vector L.", K::Rotate),
+    row("^", Turtle(C::PitchUp), ANGLE, "Pitch up by a degrees around the left vector L.", K::Rotate),
+    row("\\", Turtle(C::RollLeft), ANGLE, "Roll left by a degrees around the heading H.", K::Rotate),
+    row("/", Turtle(C::RollRight), ANGLE, "Roll right by a degrees around the heading H.", K::Rotate),
+    row("|", Turtle(C::TurnAround), &[], "Turn around: 180° around the up vector U.", K::Rotate),
+    row("$", Turtle(C::RollToVertical), &[], "Roll around H so that L is horizontal (ABOP p. 57).", K::Rotate),
+    row("@v", Turtle(C::RollToVertical), &[], "Roll around H so that L is horizontal; the same as $.", K::Rotate),
+    row("[", Turtle(C::Push), &[], "Start a branch: push the turtle state.", K::Branch),
+    row("]", Turtle(C::Pop), &[], "End a branch: pop the turtle state.", K::Branch),
+    row("{", Turtle(C::StartPolygon), &[], "Start a polygon: the turtle's position and later F, f and . moves are its vertices.", K::Polygon),
+    row(".", Turtle(C::PolygonVertex), &[], "Record the turtle's position as a polygon vertex.", K::Polygon),
+    row("}", Turtle(C::EndPolygon), &[], "Close and fill the polygon.", K::Polygon),
+    row("!", Turtle(C::Width), &[Param::number("w", "the new width; without it, the width decreases by #width_step").unit("width units")],
         "Set the width to w; without w, decrease it by #width_step.", K::Appearance),
-    turtle("'", C::NextColor, &[Param::number("n", "how many colour indices to step").default(1.0)],
+    row("'", Turtle(C::NextColor), &[Param::number("n", "how many colour indices to step").default(1.0)],
         "Increase the colour index by n.", K::Appearance),
-    turtle(";", C::SetColor, &[Param::number("c", "the colour index; without it, the next one")],
+    row(";", Turtle(C::SetColor), &[Param::number("c", "the colour index; without it, the next one")],
         "Set the colour index to c; without c, increase it by 1.", K::Appearance),
-    turtle("~l", C::Leaf, SCALE, "Draw the predefined leaf, s long, along H.", K::Surface),
-    turtle("~p", C::Petal, SCALE, "Draw the predefined petal, s long, along H.", K::Surface),
-    turtle("@O", C::Sphere, &[Param::number("r", "the radius; without it, half the current width")],
+    row("~l", Turtle(C::Leaf), SCALE, "Draw the predefined leaf, s long, along H.", K::Surface),
+    row("~p", Turtle(C::Petal), SCALE, "Draw the predefined petal, s long, along H.", K::Surface),
+    row("@O", Turtle(C::Sphere), &[Param::number("r", "the radius; without it, half the current width")],
         "Draw a sphere of radius r (without r: as wide as the current width).", K::Surface),
-    turtle("@Tp", C::TropismVector, VECTOR, "Set this branch's tropism vector T.", K::Tropism),
-    turtle("@Ts", C::TropismStrength, &[Param::number("e", "the susceptibility")], "Set this branch's tropism susceptibility e.", K::Tropism),
-    turtle("@Gc", C::StartSmooth, &[], "Start a smooth branch: segments until @Ge form one generalized cylinder.", K::Surface),
-    turtle("@Ge", C::EndSmooth, &[], "End a smooth branch.", K::Surface),
-    turtle("?P", C::QueryPosition, QUERIED, "Query: after each step, set to the turtle's position here.", K::Query),
-    turtle("?H", C::QueryHeading, QUERIED, "Query: after each step, set to the turtle's heading here.", K::Query),
-    turtle("?U", C::QueryUp, QUERIED, "Query: after each step, set to the turtle's up vector here.", K::Query),
-    turtle("?L", C::QueryLeft, QUERIED, "Query: after each step, set to the turtle's left vector here.", K::Query),
+    row("@Tp", Turtle(C::TropismVector), VECTOR, "Set this branch's tropism vector T.", K::Tropism),
+    row("@Ts", Turtle(C::TropismStrength), &[Param::number("e", "the susceptibility")], "Set this branch's tropism susceptibility e.", K::Tropism),
+    row("@Gc", Turtle(C::StartSmooth), &[], "Start a smooth branch: segments until @Ge form one generalized cylinder.", K::Surface),
+    row("@Ge", Turtle(C::EndSmooth), &[], "End a smooth branch.", K::Surface),
+    row("?P", Turtle(C::QueryPosition), QUERIED, "Query: after each step, set to the turtle's position here.", K::Query),
+    row("?H", Turtle(C::QueryHeading), QUERIED, "Query: after each step, set to the turtle's heading here.", K::Query),
+    row("?U", Turtle(C::QueryUp), QUERIED, "Query: after each step, set to the turtle's up vector here.", K::Query),
+    row("?L", Turtle(C::QueryLeft), QUERIED, "Query: after each step, set to the turtle's left vector here.", K::Query),
     row("%", Meaning::Cut, &[], "Cut: remove the rest of this branch from the string (during derivation).", K::Derivation),
     row("@Prune", Meaning::Cut, &[], "Cut, as %.", K::Derivation),
     row("@Switch", Meaning::Group(GroupKind::Switch), &[],

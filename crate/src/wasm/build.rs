@@ -192,7 +192,7 @@ impl PlantBuild {
     #[wasm_bindgen(getter)]
     pub fn seed(&self) -> f64 {
         let grammar = self.build.model.as_ref().map_or(0, |m| m.settings.seed);
-        self.build.seed.unwrap_or(grammar) as f64
+        self.build.derived_with.seed.unwrap_or(grammar) as f64
     }
 
     /// Modules in the derived string.
