@@ -109,3 +109,38 @@ export function readGif(bytes: Uint8Array): GifAnimation {
     } else throw new Error(`unexpected GIF block 0x${kind?.toString(16)} at ${at}`);
   }
 }
+
+/** An MP4's first video track: its size (the track header's) and its number of samples (frames). */
+export interface Mp4Video {
+  width: number;
+  height: number;
+  /** The sample description's format: `avc1` for H.264. */
+  format: string;
+  samples: number;
+}
+
+/** Reads an MP4 (ISO BMFF) file's first track: moov ▸ trak ▸ tkhd, and mdia ▸ minf ▸ stbl ▸ stsd, stsz. */
+export function readMp4(bytes: Uint8Array): Mp4Video {
+  const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+  const video: Mp4Video = { width: 0, height: 0, format: '', samples: 0 };
+  const containers = new Set(['moov', 'trak', 'mdia', 'minf', 'stbl']);
+  let tracks = 0;
+  const walk = (start: number, end: number) => {
+    for (let at = start; at + 8 <= end; ) {
+      const size = view.getUint32(at);
+      const type = new TextDecoder().decode(bytes.subarray(at + 4, at + 8));
+      const boxEnd = size === 0 ? end : at + size;
+      if (type === 'trak' && tracks++ > 0) return; // the first track only
+      if (containers.has(type)) walk(at + 8, boxEnd);
+      else if (type === 'tkhd') {
+        const version = bytes[at + 8];
+        const fields = at + 8 + (version === 1 ? 84 : 72) + 4; // after the header, its times, the matrix
+        [video.width, video.height] = [view.getUint32(fields) / 65536, view.getUint32(fields + 4) / 65536];
+      } else if (type === 'stsd') video.format = new TextDecoder().decode(bytes.subarray(at + 20, at + 24));
+      else if (type === 'stsz') video.samples = view.getUint32(at + 16);
+      at = boxEnd;
+    }
+  };
+  walk(0, bytes.length);
+  return video;
+}

@@ -71,6 +71,14 @@ describe('the choices checked', () => {
     }
   });
 
+  it('refuses seconds per step over a range of no steps, but films a still plant for seconds in all', () => {
+    expect(planMovie({ ...webm, from: 3, to: 3, timing: { kind: 'per-step', seconds: 1 } }, 7)).toEqual({
+      ok: false,
+      message: 'Time range: from and to are the same step; give a range, or the length in seconds in all',
+    });
+    expect(planMovie({ ...webm, from: 3, to: 3, turntable: true }, 7).ok).toBe(true);
+  });
+
   it('makes a plant without growth times a movie of the seconds given, its range ignored', () => {
     const planned = planMovie({ ...webm, turntable: true, timing: { kind: 'per-step', seconds: 2 }, from: 3, to: 99 }, null);
     expect(planned.ok && planned.plan).toMatchObject({ from: 0, to: 0, frames: 60, timing: { kind: 'duration', seconds: 2 } });

@@ -115,6 +115,9 @@ export function planMovie(options: MovieOptions, span: number | null, maxSide = 
   if (span !== null && !(Number.isFinite(from) && Number.isFinite(to) && from >= 0 && to <= end && from <= to)) {
     return { ok: false, message: `Time range: from and to must be steps between 0 and ${end}, from not after to` };
   }
+  if (span !== null && from === to && timing.kind === 'per-step') {
+    return { ok: false, message: 'Time range: from and to are the same step; give a range, or the length in seconds in all' };
+  }
   const chosen: MovieOptions = span === null ? { ...options, from: 0, to: 0, timing: asDuration(timing) } : options;
   const plan: MoviePlan = { ...chosen, frames: frameCount(chosen) };
   if (plan.frames > MAX_FRAMES) {

@@ -32,13 +32,20 @@ async function writerFor(plan: MoviePlan, scene: FrameScene, name: string): Prom
 
 /**
  * Records `plan` from `scene`: frame i at growth time {@link frameTime} and turn {@link frameTurn},
- * `onFrame(done, frames)` told after each. `name` names a PNG sequence's files.
+ * `onFrame(done, frames)` told after each. `name` names a PNG sequence's files; `makeWriter` is
+ * the format's writer (a fake one in unit tests).
  */
-export function recordMovie(plan: MoviePlan, scene: FrameScene, name: string, onFrame: (done: number, frames: number) => void): RecordingMovie {
+export function recordMovie(
+  plan: MoviePlan,
+  scene: FrameScene,
+  name: string,
+  onFrame: (done: number, frames: number) => void,
+  makeWriter: typeof writerFor = writerFor,
+): RecordingMovie {
   let cancelled = false;
   let writer: MovieWriter | undefined;
   const record = async (): Promise<Blob | null> => {
-    writer = await writerFor(plan, scene, name);
+    writer = await makeWriter(plan, scene, name);
     for (let index = 0; index < plan.frames; index++) {
       if (cancelled) return null;
       await scene.at(frameTime(index, plan.frames, plan.from, plan.to), frameTurn(index, plan.frames, plan.turntable));
