@@ -8,17 +8,12 @@
 import { mkdirSync, writeFileSync } from 'node:fs';
 import os from 'node:os';
 import { chromium } from 'playwright-core';
-import { preview } from 'vite';
+import { SETUPS, servedSite } from './bench-site.mjs';
 
-const SETUPS = {
-  'GPU compositing (SwiftShader)': ['--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
-  'software compositing (Chromium default without a GPU)': [],
-};
 const MOVIE = { width: 1280, height: 720, fps: 30, seconds: Number(process.env.BENCH_SECONDS ?? 10) };
 const setups = Object.entries(SETUPS).filter(([name]) => process.env.BENCH_SETUP === undefined || name.toLowerCase().startsWith(process.env.BENCH_SETUP));
 
-const server = await preview({ configFile: new URL('../vite.config.ts', import.meta.url).pathname, logLevel: 'warn', preview: { host: '127.0.0.1', port: 0 } });
-const url = `http://127.0.0.1:${server.httpServer.address().port}/`;
+const { server, url } = await servedSite();
 const results = [];
 try {
   for (const [setup, args] of setups) {

@@ -46,15 +46,20 @@ async function record(): Promise<Download> {
   return download;
 }
 
+/** Makes the movie of `choices` through the dialog (its summary first saying `planned`), and returns the file downloaded (kept in test-results). */
+async function movieFile(choices: Parameters<typeof choose>[0], planned: RegExp, fileName: string): Promise<Uint8Array> {
+  await openMovieDialog();
+  await choose(choices);
+  await expect.poll(() => page.getByTestId('movie-summary').textContent()).toMatch(planned);
+  const download = await record();
+  expect(download.suggestedFilename()).toBe(fileName);
+  await download.saveAs(new URL(fileName, RESULTS).pathname);
+  return new Uint8Array(readFileSync(await download.path()));
+}
+
 describe('videos of the growth', () => {
   it('writes a WebM of the frame count and size asked, which the browser decodes and plays', async () => {
-    await openMovieDialog();
-    await choose({ format: 'webm', width: 320, height: 240, fps: 24, seconds: 0.5, turntable: true });
-    await expect.poll(() => page.getByTestId('movie-summary').textContent()).toMatch(/^12 frames · 0\.5 s · 320 × 240/);
-    const download = await record();
-    expect(download.suggestedFilename()).toBe(`${NAME}.webm`);
-    await download.saveAs(new URL('movie.webm', RESULTS).pathname);
-    const bytes = new Uint8Array(readFileSync(await download.path()));
+    const bytes = await movieFile({ format: 'webm', width: 320, height: 240, fps: 24, seconds: 0.5, turntable: true }, /^12 frames · 0\.5 s · 320 × 240/, `${NAME}.webm`);
     const webm = readWebm(bytes);
     expect(webm).toMatchObject({ width: 320, height: 240, codec: 'V_VP9' });
     expect(webm.blocks.length).toBe(12);
@@ -111,10 +116,7 @@ describe('videos of the growth', () => {
     const encodes = await page.evaluate(async () => (await VideoEncoder.isConfigSupported({ codec: 'avc1.64001f', width: 1280, height: 720 })).supported === true);
     expect(offered, 'MP4 is offered exactly when the browser encodes H.264').toBe(encodes ? 1 : 0);
     if (!encodes) return;
-    await choose({ format: 'mp4', width: 320, height: 240, fps: 25, seconds: 0.4, turntable: true });
-    const download = await record();
-    expect(download.suggestedFilename()).toBe(`${NAME}.mp4`);
-    const bytes = new Uint8Array(readFileSync(await download.path()));
+    const bytes = await movieFile({ format: 'mp4', width: 320, height: 240, fps: 25, seconds: 0.4, turntable: true }, /^10 frames · 0\.4 s/, `${NAME}.mp4`);
     expect(readMp4(bytes)).toEqual({ width: 320, height: 240, format: 'avc1', samples: 10 });
     const blank = await browser.newPage();
     const played = await blank.evaluate(async (data) => {
@@ -132,13 +134,7 @@ describe('videos of the growth', () => {
 
 describe('GIFs, PNG sequences, and movies stopped or refused', () => {
   it('writes a looping GIF of the frame count, size and delay asked, which the browser decodes', async () => {
-    await openMovieDialog();
-    await choose({ format: 'gif', width: 160, height: 120, fps: 20, seconds: 0.4, turntable: true });
-    await expect.poll(() => page.getByTestId('movie-summary').textContent()).toMatch(/^8 frames · 0\.4 s · 160 × 120/);
-    const download = await record();
-    expect(download.suggestedFilename()).toBe(`${NAME}.gif`);
-    await download.saveAs(new URL('movie.gif', RESULTS).pathname);
-    const bytes = new Uint8Array(readFileSync(await download.path()));
+    const bytes = await movieFile({ format: 'gif', width: 160, height: 120, fps: 20, seconds: 0.4, turntable: true }, /^8 frames · 0\.4 s · 160 × 120/, `${NAME}.gif`);
     const gif = readGif(bytes);
     expect(gif).toMatchObject({ width: 160, height: 120, loops: 0 });
     expect(gif.frames).toEqual(Array(8).fill({ width: 160, height: 120, delay: 5 }));
@@ -166,11 +162,7 @@ describe('GIFs, PNG sequences, and movies stopped or refused', () => {
   });
 
   it('writes a PNG sequence: a zip of numbered PNGs of the size asked', async () => {
-    await openMovieDialog();
-    await choose({ format: 'png', width: 200, height: 150, fps: 10, seconds: 0.5, turntable: true });
-    const download = await record();
-    expect(download.suggestedFilename()).toBe(`${NAME}-frames.zip`);
-    const files = unzipSync(new Uint8Array(readFileSync(await download.path())));
+    const files = unzipSync(await movieFile({ format: 'png', width: 200, height: 150, fps: 10, seconds: 0.5, turntable: true }, /^5 frames/, `${NAME}-frames.zip`));
     expect(Object.keys(files)).toEqual([1, 2, 3, 4, 5].map((i) => `${NAME}-000${i}.png`));
     const pictures = Object.values(files).map((png) => decodePng(Buffer.from(png)));
     expect(pictures.map((p) => [p.width, p.height])).toEqual(Array(5).fill([200, 150]));

@@ -3,7 +3,7 @@
 // on a box, whether a new plant is framed (the holds on the frame, the "Refit" hint), its pose for
 // a share link, and the keys that move it.
 import type { Box3} from 'three';
-import { MathUtils, OrthographicCamera, PerspectiveCamera, Quaternion, Spherical, Vector3, type Scene } from 'three';
+import { MathUtils, OrthographicCamera, PerspectiveCamera, Spherical, Vector3, type Scene } from 'three';
 import type { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { CameraControls } from './camera-controls';
 import { flatPose, framePose } from './framing';
@@ -17,14 +17,6 @@ export interface ViewPose {
   position: [number, number, number];
   target: [number, number, number];
   zoom: number;
-}
-
-/** A turntable of the camera in use (see {@link CameraRig.turntable}). */
-export interface Turntable {
-  /** Puts the camera `angle` radians about the vertical through its target, from where it stood. */
-  turn(angle: number): void;
-  /** Puts the camera back where it stood. */
-  stop(): void;
 }
 
 /** One of the two cameras with its controls and whether it has been framed on a plant yet. */
@@ -240,34 +232,6 @@ export class CameraRig {
     controls.update();
     this.active.framed = true;
     this.moved = true; // the link's camera stays, as if the user had put it there
-  }
-
-  /**
-   * A turntable of the camera in use about the vertical (the world's Y axis, the plant's up)
-   * through the point it looks at: the camera keeps its distance, height and tilt, as a plant
-   * on a turning stand is filmed. (A flat plant's orthographic camera turns too: it then shows the
-   * plant edge on at a quarter turn.)
-   */
-  turntable(): Turntable {
-    const { camera, controls } = this.active;
-    const position = camera.position.clone();
-    const quaternion = camera.quaternion.clone();
-    const target = controls.target.clone();
-    const up = new Vector3(0, 1, 0);
-    const turned = new Quaternion();
-    return {
-      turn: (angle) => {
-        turned.setFromAxisAngle(up, angle);
-        camera.position.copy(position).sub(target).applyQuaternion(turned).add(target);
-        camera.quaternion.copy(quaternion).premultiply(turned);
-        camera.updateMatrixWorld();
-      },
-      stop: () => {
-        camera.position.copy(position);
-        camera.quaternion.copy(quaternion);
-        camera.updateMatrixWorld();
-      },
-    };
   }
 
   /**

@@ -28,11 +28,6 @@ import type * as Snapshot from './snapshot';
 
 const DARK_SCHEME = '(prefers-color-scheme: dark)';
 
-/** A movie's camera and frames (see {@link PlantView.film}). */
-export interface Film extends FilmFrames {
-  /** Turns the camera `angle` radians about the vertical through its target, from where it stood when filming began. */
-  turn(angle: number): void;
-}
 
 /** How the projection is chosen: from the plant (`auto`: flat plants in 2D), or fixed by the user. */
 export type ProjectionMode = 'auto' | Projection;
@@ -462,22 +457,17 @@ export class PlantView {
   }
 
   /**
-   * A movie's camera and frames (see ./snapshot.ts `filmFrames`): `turn` turns the camera about
-   * the plant (a turntable), `draw` draws a frame of a size in `look`. The view draws nothing else
-   * until `close`, which puts it back as it was.
+   * A movie's frames (see ./snapshot.ts `filmFrames`): the camera turned about the plant, each
+   * frame drawn at a size in `look`. The view draws nothing else until `close` puts it back.
    */
-  async film(look: PictureLook): Promise<Film> {
+  async film(look: PictureLook): Promise<FilmFrames> {
     const { filmFrames } = await this.pictures();
     if (this.filming) throw new Error('a movie is being filmed already');
     const frames = filmFrames(this.pictureSource(), look);
-    const turntable = this.cameras.turntable();
     this.filming = true;
     return {
-      turn: (angle) => turntable.turn(angle),
-      draw: (width, height) => frames.draw(width, height),
+      ...frames,
       close: () => {
-        if (!this.filming) return;
-        turntable.stop();
         this.filming = false;
         frames.close();
         this.requestRender();
@@ -494,6 +484,7 @@ export class PlantView {
       renderer,
       scene,
       camera,
+      target: new Vector3(...this.cameras.pose().target),
       shown,
       grid,
       segmentLines,

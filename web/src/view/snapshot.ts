@@ -1,11 +1,12 @@
 // Pictures of the view: a PNG of what the camera sees, at a size of the user's, drawn for one frame
 // on the view's own canvas; and a movie's frames, drawn one after another the same way. A chunk of its own, which the first plant does without: the view loads
-// it for the first picture. (It imports nothing at run time: what it needs of the view's modules
-// comes in its `PictureSource`.)
-import type { Color, OrthographicCamera, PerspectiveCamera, Scene, WebGLRenderer } from 'three';
+// it for the first picture. (It imports nothing of the view's modules at run time but the
+// turntable, which is its own: what it needs of them comes in its `PictureSource`.)
+import type { Color, OrthographicCamera, PerspectiveCamera, Scene, Vector3, WebGLRenderer } from 'three';
 import type { GroundGrid } from './ground-grid';
 import type { SegmentLines } from './segment-lines';
 import type { ShownPlant } from './shown-plant';
+import { turntable } from './turntable';
 import type { View2D } from './view-2d';
 
 /** A picture's look: its background (the view's, white or none), and the lines' width in its pixels. */
@@ -20,6 +21,8 @@ export interface PictureSource {
   renderer: WebGLRenderer;
   scene: Scene;
   camera: PerspectiveCamera | OrthographicCamera;
+  /** The point the camera looks at (the orbit's centre). */
+  target: Vector3;
   shown: ShownPlant;
   grid: GroundGrid;
   segmentLines: SegmentLines;
@@ -131,14 +134,16 @@ export async function snapshot(view: PictureSource, width: number, height: numbe
   return png;
 }
 
-/** Frames of a movie drawn by the view, one after another (see {@link filmFrames}). */
+/** Frames of a movie drawn by the view, one after another, its camera turned (see {@link filmFrames}). */
 export interface FilmFrames {
+  /** Turns the camera `angle` radians about the vertical through its target, from where it stood when filming began. */
+  turn(angle: number): void;
   /**
    * Draws the view as it is posed now at `width` × `height` pixels; returns the canvas holding
    * the frame, valid until the next call.
    */
   draw(width: number, height: number): HTMLCanvasElement;
-  /** Puts the view back as it was (its size, look and camera's aspect) and draws it. */
+  /** Puts the view back as it was (its size, look and camera) and draws it. */
   close(): void;
 }
 
@@ -162,7 +167,9 @@ export function filmFrames(view: PictureSource, look: PictureLook): FilmFrames {
   const scaled = document.createElement('canvas');
   let undress: (() => void) | undefined;
   let dressedAt = 0;
+  const stand = turntable(view.camera, view.target);
   return {
+    turn: (angle) => stand.turn(angle),
     draw: (width, height) => {
       const scale = 4 * width * height <= FILM_SUPERSAMPLED_PIXELS ? pictureScale(view, width, height) : 1;
       if (scale !== dressedAt) {
@@ -173,6 +180,7 @@ export function filmFrames(view: PictureSource, look: PictureLook): FilmFrames {
       return drawSized(view, width, height, scale, look, scaled);
     },
     close: () => {
+      stand.stop();
       undress?.();
       undress = undefined;
       restore(view, pixelRatio);

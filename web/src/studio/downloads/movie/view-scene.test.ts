@@ -1,11 +1,11 @@
 import { describe, expect, it } from 'vitest';
-import type { Film, PictureLook, PlantView } from '../../../view';
+import type { FilmFrames, PictureLook, PlantView } from '../../../view';
 import { growthSpanOf, viewScene } from './view-scene';
 
 /** A view that films into a fake canvas and records what is asked of it; with `growth`, it has issue 45's growth API. */
 function fakeView(growth: { span: number | null } | null) {
   const calls: string[] = [];
-  const film: Film = {
+  const film: FilmFrames = {
     turn: (angle) => void calls.push(`turn ${angle}`),
     draw: (width, height) => (calls.push(`draw ${width}×${height}`), { width, height } as HTMLCanvasElement),
     close: () => void calls.push('close'),

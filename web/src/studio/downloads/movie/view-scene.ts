@@ -1,7 +1,7 @@
 // The studio's FrameScene: the view on screen, its growth time set where the view can show growth
 // (issue 45's `setGrowthTime`), its camera turned about the plant, each frame drawn by the view at
 // the movie's size (../../../view/snapshot.ts `filmFrames`).
-import type { Film, PictureLook, PlantView } from '../../../view';
+import type { FilmFrames, PictureLook, PlantView } from '../../../view';
 import type { FrameScene } from './frame-scene';
 
 /** What a view that shows growth in time adds (slice g3's `PlantView` methods; absent, the plant is shown whole). */
@@ -26,7 +26,7 @@ export interface FilmedScene extends FrameScene {
 
 /** Films `view` in `look`: the view draws nothing else until `close`, which shows the plant whole again. */
 export async function viewScene(view: PlantView, look: PictureLook): Promise<FilmedScene> {
-  const film: Film = await view.film(look);
+  const film: FilmFrames = await view.film(look);
   const growing = view as unknown as GrowingView;
   const grow = typeof growing.setGrowthTime === 'function' && growthSpanOf(view) !== null ? growing.setGrowthTime.bind(view) : undefined;
   return {
