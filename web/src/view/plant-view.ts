@@ -462,17 +462,11 @@ export class PlantView {
    */
   async film(look: PictureLook): Promise<FilmFrames> {
     const { filmFrames } = await this.pictures();
-    if (this.filming) throw new Error('a movie is being filmed already');
-    const frames = filmFrames(this.pictureSource(), look);
     this.filming = true;
-    return {
-      ...frames,
-      close: () => {
-        this.filming = false;
-        frames.close();
-        this.requestRender();
-      },
-    };
+    return filmFrames(this.pictureSource(), look, () => {
+      this.filming = false;
+      this.requestRender();
+    });
   }
 
   /** What pictures are drawn from, with the plant last given on screen. */
@@ -484,7 +478,7 @@ export class PlantView {
       renderer,
       scene,
       camera,
-      target: new Vector3(...this.cameras.pose().target),
+      target: this.cameras.pose().target,
       shown,
       grid,
       segmentLines,

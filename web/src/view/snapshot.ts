@@ -2,7 +2,7 @@
 // on the view's own canvas; and a movie's frames, drawn one after another the same way. A chunk of its own, which the first plant does without: the view loads
 // it for the first picture. (It imports nothing of the view's modules at run time but the
 // turntable, which is its own: what it needs of them comes in its `PictureSource`.)
-import type { Color, OrthographicCamera, PerspectiveCamera, Scene, Vector3, WebGLRenderer } from 'three';
+import { Vector3, type Color, type OrthographicCamera, type PerspectiveCamera, type Scene, type WebGLRenderer } from 'three';
 import type { GroundGrid } from './ground-grid';
 import type { SegmentLines } from './segment-lines';
 import type { ShownPlant } from './shown-plant';
@@ -22,7 +22,7 @@ export interface PictureSource {
   scene: Scene;
   camera: PerspectiveCamera | OrthographicCamera;
   /** The point the camera looks at (the orbit's centre). */
-  target: Vector3;
+  target: [number, number, number];
   shown: ShownPlant;
   grid: GroundGrid;
   segmentLines: SegmentLines;
@@ -160,14 +160,15 @@ const FILM_SUPERSAMPLED_PIXELS = 1280 * 720;
  * Frames of `look` for a movie: as {@link snapshot}'s picture (at twice the size only up to
  * {@link FILM_SUPERSAMPLED_PIXELS}), each frame drawn on the view's canvas, which keeps the
  * frames' size until {@link FilmFrames.close} (the view is not to draw meanwhile: it would draw
- * into a frame-sized canvas).
+ * into a frame-sized canvas); `closed` is called once the view is back.
  */
-export function filmFrames(view: PictureSource, look: PictureLook): FilmFrames {
+export function filmFrames(view: PictureSource, look: PictureLook, closed: () => void): FilmFrames {
   const pixelRatio = view.renderer.getPixelRatio();
   const scaled = document.createElement('canvas');
   let undress: (() => void) | undefined;
   let dressedAt = 0;
-  const stand = turntable(view.camera, view.target);
+  let open = true;
+  const stand = turntable(view.camera, new Vector3(...view.target));
   return {
     turn: (angle) => stand.turn(angle),
     draw: (width, height) => {
@@ -180,10 +181,13 @@ export function filmFrames(view: PictureSource, look: PictureLook): FilmFrames {
       return drawSized(view, width, height, scale, look, scaled);
     },
     close: () => {
-      stand.stop();
-      undress?.();
-      undress = undefined;
-      restore(view, pixelRatio);
+      if (open) {
+        open = false;
+        stand.stop();
+        undress?.();
+        restore(view, pixelRatio);
+        closed();
+      }
     },
   };
 }
