@@ -149,7 +149,7 @@ export class MovieDialog {
 
   constructor(private readonly source: MovieSource) {
     const c = this.c;
-    this.fillFormats(false);
+    this.fillFormats({ webm: true, mp4: false });
     c.format.addEventListener('change', () => this.formatChanged());
     c.size.addEventListener('change', () => {
       const [width, height] = c.size.value.split('x');
@@ -164,15 +164,16 @@ export class MovieDialog {
     c.dialog.addEventListener('close', () => this.recording?.cancel());
   }
 
-  /** The formats, MP4 offered only where the browser encodes H.264. */
-  private fillFormats(mp4: boolean): void {
+  /** The formats, each video offered only where the browser encodes it (WebCodecs; H.264 for MP4). */
+  private fillFormats(encodes: Record<'webm' | 'mp4', boolean>): void {
     const kept = this.c.format.value || 'webm';
+    const formats = (['webm', 'mp4', 'gif', 'png'] as const).filter((f) => (f !== 'webm' && f !== 'mp4') || encodes[f]);
     options(
       this.c.format,
-      (['webm', 'mp4', 'gif', 'png'] as MovieFormat[]).filter((f) => f !== 'mp4' || mp4).map((f) => [f, `${FORMATS[f].label} (${movieFileName('…', f).slice(1)})`]),
+      formats.map((f) => [f, `${FORMATS[f].label} (${movieFileName('…', f).slice(1)})`]),
     );
     this.c.format.value = kept;
-    if (this.c.format.value === '') this.c.format.value = 'webm';
+    if (this.c.format.value === '') this.c.format.value = formats[0];
     this.fillRates();
   }
 
@@ -217,9 +218,12 @@ export class MovieDialog {
       if (Number(c.seconds.value) < 2) c.seconds.value = '6';
     }
     this.update();
-    const mp4 = await (await import('./video-writer')).canEncode('mp4', 1280, 720, 30);
-    this.fillFormats(mp4);
-    this.update();
+    const { canEncode } = await import('./video-writer');
+    const [webm, mp4] = await Promise.all([canEncode('webm', 1280, 720, 30), canEncode('mp4', 1280, 720, 30)]);
+    const before = c.format.value;
+    this.fillFormats({ webm, mp4 });
+    if (c.format.value !== before) this.formatChanged(); // (a video this browser cannot encode was chosen)
+    else this.update();
   }
 
   /** The plan of the choices, shown in the summary (or what is wrong with them). */
