@@ -7,7 +7,7 @@ import { saveFile } from '../../files/save-file';
 import { fileSize } from '../downloads';
 import { FORMATS, SIZE_PRESETS, movieFileName, movieSeconds, planMovie, type MovieFormat, type MovieOptions, type MoviePlan } from './movie-plan';
 import { recordMovie, type RecordingMovie } from './record-movie';
-import { growthSpanOf, viewScene } from './view-scene';
+import { growthSpanOf, viewScene, type FilmedScene } from './view-scene';
 import './movie-dialog.css';
 
 /** The dialog's controls. */
@@ -244,9 +244,10 @@ export class MovieDialog {
     const c = this.c;
     const look: PictureLook = { background: c.background.value as PictureLook['background'] };
     this.busy(true, plan.frames);
-    const scene = await viewScene(this.source.view, look);
     const started = performance.now();
+    let scene: FilmedScene | undefined;
     try {
+      scene = await viewScene(this.source.view, look);
       this.recording = recordMovie(plan, scene, name, (done, frames) => {
         c.progress.value = done;
         this.say('busy', `Frame ${done} of ${frames}…`);
@@ -261,7 +262,7 @@ export class MovieDialog {
       console.error('The movie failed:', error);
       this.say('error', `The movie failed: ${error instanceof Error ? error.message : String(error)}`);
     } finally {
-      scene.close();
+      scene?.close();
       this.recording = undefined;
       this.busy(false, plan.frames);
     }
