@@ -13,7 +13,7 @@
 import { mkdirSync, writeFileSync } from 'node:fs';
 import os from 'node:os';
 import { chromium } from 'playwright-core';
-import { preview } from 'vite';
+import { SETUPS, servedSite } from './bench-site.mjs';
 
 const KEYSTROKES = Number(process.env.KEYSTROKES ?? 16);
 // The flat example is drawn as lines (`auto`), which mesh no tubes: the tube frame is measured with
@@ -23,10 +23,6 @@ const WORKLOADS = [
   { name: 'ABOP 1.24d, n = 10, Lines mode (auto, flat)', iterations: '10', tubes: false },
   { name: 'ABOP 1.24d, n = 7 (4,118 segments), Tubes mode', iterations: '', tubes: true },
 ];
-const SETUPS = {
-  'GPU compositing (SwiftShader)': ['--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
-  'software compositing (Chromium default without a GPU)': [],
-};
 
 const only = (entries, chosen, matches) => (chosen === undefined ? entries : entries.filter((entry, i) => matches(entry, i, chosen)));
 const setups = only(Object.entries(SETUPS), process.env.BENCH_SETUP, ([name], _, chosen) => name.toLowerCase().startsWith(chosen));
@@ -39,8 +35,7 @@ const median = (values) => {
 };
 const round = (ms) => Math.round(ms * 10) / 10;
 
-const server = await preview({ configFile: new URL('../vite.config.ts', import.meta.url).pathname, logLevel: 'warn', preview: { host: '127.0.0.1', port: 0 } });
-const url = `http://127.0.0.1:${server.httpServer.address().port}/`;
+const { server, url } = await servedSite();
 const results = [];
 try {
   for (const [setup, args] of setups) {

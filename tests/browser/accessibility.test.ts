@@ -65,7 +65,11 @@ describe.each(['light', 'dark'] as const)('the %s theme', (scheme) => {
     await page.getByTestId('downloads').locator('summary').click();
     await page.locator('#model-downloads button').first().waitFor();
     expect((await audit(page, '[data-testid=downloads]')).failures, 'the download menu').toEqual([]);
-    await page.getByTestId('downloads').locator('summary').click();
+    await page.getByTestId('download-movie').click(); // (closes the menu)
+    await page.getByTestId('movie-dialog').waitFor({ state: 'visible' });
+    await page.locator('[data-testid=movie-format] option[value=gif]').waitFor({ state: 'attached' });
+    expect((await audit(page, '[data-testid=movie-dialog]')).failures, 'the movie dialog').toEqual([]);
+    await page.getByTestId('movie-close').click();
     await page.getByTestId('file-menu').locator('summary').click();
     expect((await audit(page, '[data-testid=file-menu]')).failures, 'the file menu').toEqual([]);
     await page.getByTestId('file-menu').locator('summary').click();

@@ -2,7 +2,7 @@
 // gallery's thumbnails drawn the same way.
 export { PlantView, type ProjectionMode, type RenderMode } from './plant-view';
 export type { Projection, ViewPose } from './camera-rig';
-export type { PictureLook } from './snapshot';
+export type { FilmFrames, PictureLook } from './snapshot';
 export { DEFAULT_LINE_WIDTH, LINE_WIDTH_MAX, LINE_WIDTH_MIN, lineWidthOf } from './segment-lines';
 export { ThumbnailRenderer } from './thumbnail';
 export { plantGeometry, lineGeometry, pointsBox } from './plant-geometry';

@@ -20,13 +20,14 @@ import { addSkyLight, drawnSupersampled } from './scene-setup';
 import { DEFAULT_LINE_WIDTH, SegmentLines } from './segment-lines';
 import { ShownPlant } from './shown-plant';
 import { ModuleOverlay } from './module-overlay';
-import type { PictureLook } from './snapshot';
+import type { FilmFrames, PictureLook, PictureSource } from './snapshot';
 import { View2D } from './view-2d';
 import { FrameLoop, compileAhead, maxPictureSide, viewRenderer } from './view-renderer';
 import { ViewPicking } from './view-picking';
 import type * as Snapshot from './snapshot';
 
 const DARK_SCHEME = '(prefers-color-scheme: dark)';
+
 
 /** How the projection is chosen: from the plant (`auto`: flat plants in 2D), or fixed by the user. */
 export type ProjectionMode = 'auto' | Projection;
@@ -88,6 +89,8 @@ export class PlantView {
   private readonly controlsLoaded: Promise<void>;
   /** The pictures' code (./snapshot.ts), once asked for (see {@link pictures}). */
   private picturesLoaded: Promise<typeof Snapshot> | undefined;
+  /** A movie is being filmed (see {@link film}): the view draws only its frames. */
+  private filming = false;
 
   /** `assetBase`: the site's root, where the textures are (default: the page's address). */
   constructor(
@@ -98,10 +101,15 @@ export class PlantView {
     this.renderer = renderer;
     this.frames = new FrameLoop(renderer, {
       prepare: () => {
-        if (this.sizeStale) this.resize(); // (while this frame is still queued: no other is asked for)
+        if (this.sizeStale && !this.filming) this.resize(); // (while this frame is still queued: no other is asked for)
       },
-      render: () => this.renderer.render(this.scene, this.cameras.camera),
-      after: () => this.draw2D(),
+      // (While a movie is filmed, its frames are the only ones drawn: see `film`.)
+      render: () => {
+        if (!this.filming) this.renderer.render(this.scene, this.cameras.camera);
+      },
+      after: () => {
+        if (!this.filming) this.draw2D();
+      },
     });
     // The images (150 KB, not part of any plant's first frame: it shows untextured until they are
     // there) load after the first frame that drew a plant, not beside the core and the script.
@@ -444,15 +452,33 @@ export class PlantView {
    * lines are `look.lineWidth` of its pixels wide.
    */
   async snapshot(width: number, height: number, look: PictureLook = { background: 'view' }): Promise<Blob> {
-    this.upload.finish(); // the picture is of the plant last given
     const { snapshot } = await this.pictures();
-    this.upload.finish(); // (given while the code loaded, the first time)
+    return snapshot(this.pictureSource(), width, height, look);
+  }
+
+  /**
+   * A movie's frames (see ./snapshot.ts `filmFrames`): the camera turned about the plant, each
+   * frame drawn at a size in `look`. The view draws nothing else until `close` puts it back.
+   */
+  async film(look: PictureLook): Promise<FilmFrames> {
+    const { filmFrames } = await this.pictures();
+    this.filming = true;
+    return filmFrames(this.pictureSource(), look, () => {
+      this.filming = false;
+      this.requestRender();
+    });
+  }
+
+  /** What pictures are drawn from, with the plant last given on screen. */
+  private pictureSource(): PictureSource {
+    this.upload.finish(); // the picture is of the plant last given
     const { renderer, scene, shown, grid, segmentLines, view2D } = this;
     const camera = this.cameras.camera;
-    const source = {
+    return {
       renderer,
       scene,
       camera,
+      target: this.cameras.pose().target,
       shown,
       grid,
       segmentLines,
@@ -462,7 +488,6 @@ export class PlantView {
       draw: (scale: number) => drawnSupersampled(scale, () => renderer.render(scene, camera)),
       resize: () => this.resize(),
     };
-    return snapshot(source, width, height, look);
   }
 
   /**

@@ -106,6 +106,7 @@ export function installDownloads(els: DownloadMenuElements, view: PlantView, sho
     button.addEventListener('click', () => void downloadModel(format, label));
     els.modelDownloads.append(button);
   }
+  installMovie(els, view, shown);
   closeLikeAMenu(els.menu);
   installPictureSize(els);
   els.downloadPng.addEventListener('click', () => {
@@ -143,6 +144,36 @@ export function installDownloads(els: DownloadMenuElements, view: PlantView, sho
     };
     void downloadModel('svg', 'SVG drawing', svg);
   });
+}
+
+/**
+ * The movie's entry, after the model formats: it opens the movie dialog (./movie/, loaded on
+ * first use with its encoders).
+ */
+function installMovie(els: DownloadMenuElements, view: PlantView, shown: () => DownloadedPlant | undefined): void {
+  const button = document.createElement('button');
+  button.type = 'button';
+  button.className = 'menu-item';
+  button.dataset.testid = 'download-movie';
+  button.setAttribute('aria-haspopup', 'dialog');
+  button.title = 'The growth, or the plant turning, as a video, an animated GIF or numbered PNGs';
+  button.append('Movie of the growth…', Object.assign(document.createElement('span'), { className: 'file-type', textContent: '.webm .gif .png' }));
+  let dialog: Promise<{ open(): Promise<void> }> | undefined;
+  button.addEventListener('click', () => {
+    if (!shown()) return;
+    els.menu.open = false;
+    dialog ??= import('./movie/movie-dialog').then(({ MovieDialog }) => new MovieDialog({ view, name: () => shown()?.name }));
+    dialog
+      .then((d) => d.open())
+      .catch((error: unknown) => {
+        dialog = undefined; // (try again: the network may be back)
+        showExportStatus(els.exportStatus, 'error', `The movie dialog could not load: ${error instanceof Error ? error.message : String(error)}`);
+      });
+  });
+  const heading = Object.assign(document.createElement('p'), { className: 'menu-heading', textContent: 'Movie of the plant on screen' });
+  const items = Object.assign(document.createElement('div'), { className: 'menu-items' });
+  items.append(button);
+  els.modelDownloads.after(heading, items);
 }
 
 /** The picture settings read, or the reason they do not make a picture. */
