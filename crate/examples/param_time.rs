@@ -31,7 +31,11 @@ fn main() {
     let (syntax, _) = parse(C);
     let (model, _) = resolve(&syntax);
     let model = model.expect("model");
-    let options = DeriveOptions { steps, seed: None };
+    let options = DeriveOptions {
+        steps,
+        seed: None,
+        time: None,
+    };
     let mut best = f64::MAX;
     let mut len = 0;
     let mut sum = 0.0;

@@ -17,8 +17,15 @@ fn model(src: &str) -> Model {
 
 fn derived(src: &str, steps: u32) -> String {
     let m = model(src);
-    let d = derive(&m, &DeriveOptions { steps, seed: None })
-        .unwrap_or_else(|e| panic!("{}", e.message));
+    let d = derive(
+        &m,
+        &DeriveOptions {
+            steps,
+            seed: None,
+            time: None,
+        },
+    )
+    .unwrap_or_else(|e| panic!("{}", e.message));
     d.string.to_text(&m.alphabet)
 }
 
@@ -29,6 +36,7 @@ fn derived_seed(src: &str, steps: u32, seed: u64) -> String {
         &DeriveOptions {
             steps,
             seed: Some(seed),
+            time: None,
         },
     )
     .unwrap_or_else(|e| panic!("{}", e.message));
@@ -140,6 +148,7 @@ fn hogeweg_hesper_1_31a_has_the_known_size() {
         &DeriveOptions {
             steps: 50,
             seed: None,
+            time: None,
         },
     )
     .expect("derives");
@@ -329,6 +338,7 @@ fn homomorphism_changes_what_the_turtle_reads_not_the_state() {
         &DeriveOptions {
             steps: 2,
             seed: None,
+            time: None,
         },
     )
     .expect("derives");
@@ -352,6 +362,7 @@ fn decomposition_that_never_ends_stops_at_its_depth_with_a_message() {
         &DeriveOptions {
             steps: 0,
             seed: None,
+            time: None,
         },
     )
     .unwrap_err();
@@ -379,6 +390,7 @@ fn runtime_errors_point_at_the_expression() {
         &DeriveOptions {
             steps: 1,
             seed: None,
+            time: None,
         },
     )
     .unwrap_err();
@@ -395,6 +407,7 @@ fn the_module_limit_applies_on_the_general_path_too() {
         &DeriveOptions {
             steps: 20,
             seed: None,
+            time: None,
         },
     )
     .unwrap_err();
@@ -440,6 +453,7 @@ fn groups_can_be_made_by_productions_and_the_turtle_reads_their_members() {
         &DeriveOptions {
             steps: 3,
             seed: None,
+            time: None,
         },
     )
     .expect("derives");
@@ -465,8 +479,15 @@ fn a_parametric_step_after_decomposition_is_sized_from_the_decomposed_string() {
 fn id_counts_are_the_turtle_strings_or_empty() {
     let counted = |src: &str, steps: u32| {
         let m = model(src);
-        let d = derive(&m, &DeriveOptions { steps, seed: None })
-            .unwrap_or_else(|e| panic!("{}", e.message));
+        let d = derive(
+            &m,
+            &DeriveOptions {
+                steps,
+                seed: None,
+                time: None,
+            },
+        )
+        .unwrap_or_else(|e| panic!("{}", e.message));
         let string = d.turtle_string();
         if d.id_counts.is_empty() {
             return false;

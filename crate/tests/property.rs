@@ -53,7 +53,15 @@ fn engine(source: &str, steps: u32) -> String {
         "{source}\n{diags:?}"
     );
     let model = model.expect("model");
-    let d = derive(&model, &DeriveOptions { steps, seed: None }).expect("derives");
+    let d = derive(
+        &model,
+        &DeriveOptions {
+            steps,
+            seed: None,
+            time: None,
+        },
+    )
+    .expect("derives");
     d.string.to_text(&model.alphabet)
 }
 
@@ -97,6 +105,7 @@ fn derived(source: &str, steps: u32, seed: u64) -> String {
         &DeriveOptions {
             steps,
             seed: Some(seed),
+            time: None,
         },
     ) {
         Ok(d) => d.string.to_text(&model.alphabet),
@@ -193,6 +202,7 @@ fn derived_or_error(source: &str, steps: u32, seed: u64) -> String {
     let options = DeriveOptions {
         steps,
         seed: Some(seed),
+        time: None,
     };
     match derive(&model, &options) {
         Ok(d) => d.string.to_text(&model.alphabet),

@@ -19,6 +19,10 @@ pub struct BuildOptions {
     pub iterations: Option<u32>,
     /// Overrides `#seed`.
     pub seed: Option<u64>,
+    /// The growth time in steps, overriding `iterations` (docs/LANGUAGE.md, "Timed modules"): a
+    /// timed grammar is derived to time `time · #dt`, between steps when it is a fraction; any
+    /// other grammar derives its whole steps, `floor(time)`. Below 0 or not finite counts as 0.
+    pub time: Option<f64>,
     pub mesh: MeshOptions,
     /// Draw the segments as lines only (a sketch, [`turtle::Sketch`]): no skeleton and no mesh
     /// until [`Build::remesh`] (or [`Build::ensure_skeleton`]) asks for them. Grammars with growth
@@ -152,7 +156,14 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Watch<'_, '_>) -
         result.model = Some(model);
         return result;
     }
-    let steps = options.iterations.unwrap_or(model.settings.iterations);
+    let time = options
+        .time
+        .map(|t| if t.is_finite() { t.max(0.0) } else { 0.0 });
+    let steps = match time {
+        Some(t) if model.settings.terminal_ages.is_empty() => t.floor().min(u32::MAX as f64) as u32,
+        Some(t) => t.ceil().min(u32::MAX as f64) as u32,
+        None => options.iterations.unwrap_or(model.settings.iterations),
+    };
     if steps > model.settings.max_steps {
         result.diagnostics.push(Diagnostic::error(
             "E0202",
@@ -172,6 +183,7 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Watch<'_, '_>) -
     let derive = DeriveOptions {
         steps,
         seed: options.seed,
+        time,
     };
     let derived = derive_stage(&model, derive, &mut result, &mut stepped);
     watch.timings.derive = watch.lap();

@@ -318,8 +318,14 @@ fn model_and_string(src: &str) -> (crate::model::Model, crate::model::LString) {
     assert!(diags.is_empty(), "{diags:?}");
     let model = model.expect("model");
     let steps = model.settings.iterations;
-    let derivation =
-        derive::derive(&model, &derive::DeriveOptions { steps, seed: None }).expect("derives");
+    let derivation = derive::derive(
+        &model,
+        &derive::DeriveOptions {
+            steps,
+            ..Default::default()
+        },
+    )
+    .expect("derives");
     (model, derivation.string)
 }
 
