@@ -337,3 +337,33 @@ fn a_growth_time_between_steps_of_an_untimed_grammar_shows_its_whole_steps() {
     let m = b.model.as_ref().expect("model");
     assert_eq!(b.derivation.string.to_text(&m.alphabet), "ABB");
 }
+
+#[test]
+fn an_lpy_continuous_growth_model_imports_with_its_time_step_and_grows() {
+    // L-Py's idiom (its 07-continuous-growth style): a global dt, ages stepped by dt each step.
+    let lpy = "dt = 0.1\nmaxage = 3\n\ndef growth(age):\n    return min(age / maxage, 1)\n\n\
+               Axiom: A(0)\nderivation length: 40\nproduction:\nA(age) :\n  if age > 1: produce I(0)[+L(0)]A(0)\n  \
+               else: produce A(age + dt)\nI(age) --> I(age + dt)\nL(age) --> L(age + dt)\n\
+               interpretation:\nI(age) --> F(growth(age))\nL(age) --> ~l(growth(age))\nendlsystem\n";
+    let imported = meristem::import::import(lpy, meristem::import::Dialect::Lpy);
+    assert!(imported.text.contains("#dt 0.1\n"), "{}", imported.text);
+    assert!(imported.notes.is_empty(), "{:?}", imported.notes);
+    let grown = |steps: u32| {
+        let b = build(
+            &imported.text,
+            &BuildOptions {
+                iterations: Some(steps),
+                ..BuildOptions::default()
+            },
+        );
+        assert!(b.ok(), "{:?}", b.diagnostics);
+        b.plant.mesh.positions.len()
+    };
+    // The apex lays down an internode and a leaf each time its age passes 1 in steps of 0.1;
+    // they then grow with their own ages: nothing drawn at step 12, one internode at 20, more at 40.
+    assert_eq!(grown(12), 0);
+    assert!(grown(40) > grown(20) && grown(20) > 0);
+    let b = build(&imported.text, &BuildOptions::default());
+    let m = b.model.as_ref().expect("model");
+    assert_eq!(m.settings.dt, 0.1);
+}

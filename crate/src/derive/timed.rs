@@ -85,11 +85,17 @@ impl Clock {
         Some(plan)
     }
 
-    /// Every timed module of `s` grows `by` older.
+    /// Every timed module of `s` grows `by` older, its age kept to 12 decimals (below 1000) so
+    /// that times written with fractions give the ages a person writes: 3.2 − 3 is 0.2, not
+    /// 0.20000000000000018.
     fn age(&self, s: &mut LString, by: f64) {
         for i in 0..s.len() {
             if self.timed(s, i).is_some() {
-                s.params[s.offsets[i] as usize] += by;
+                let age = &mut s.params[s.offsets[i] as usize];
+                *age += by;
+                if age.abs() < 1e3 {
+                    *age = (*age * 1e12).round() / 1e12;
+                }
             }
         }
     }
