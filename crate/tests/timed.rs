@@ -33,6 +33,13 @@ fn at(src: &str, t: f64) -> String {
     d.string.to_text(&m.alphabet)
 }
 
+/// The derived string at each time of `expected` is the one given there.
+fn check_times(src: &str, expected: &[(f64, &str)]) {
+    for &(t, string) in expected {
+        assert_eq!(at(src, t), string, "t = {t}");
+    }
+}
+
 /// The total length the turtle draws at growth time `t`: the `F` lengths of the homomorphism's
 /// string.
 fn length_at(src: &str, t: f64) -> f64 {
@@ -81,10 +88,7 @@ fn at_whole_times_the_timed_filament_is_the_d0l_word_of_section_1_2() {
     let d0l = "axiom: a_r\na_r -> a_l b_r\na_l -> b_l a_r\nb_r -> a_r\nb_l -> a_l";
     let m = model(d0l);
     for n in 5..=9 {
-        let options = DeriveOptions {
-            steps: n,
-            ..DeriveOptions::default()
-        };
+        let options = DeriveOptions::of_steps(n);
         let word = derive(&m, &options).expect("derives").string;
         assert_eq!(
             at(ANABAENA, n as f64).replace("(0)", ""),
@@ -95,8 +99,10 @@ fn at_whole_times_the_timed_filament_is_the_d0l_word_of_section_1_2() {
 
 #[test]
 fn between_replacements_every_module_ages_with_time() {
-    assert_eq!(at(ANABAENA, 2.5), "b_l(0.5)a_r(0.5)a_r(0.5)");
-    assert_eq!(at(ANABAENA, 0.25), "a_r(0.25)");
+    check_times(
+        ANABAENA,
+        &[(2.5, "b_l(0.5)a_r(0.5)a_r(0.5)"), (0.25, "a_r(0.25)")],
+    );
 }
 
 #[test]
@@ -107,18 +113,20 @@ fn lifetimes_that_differ_replace_modules_at_their_own_times() {
     //   t = 3: both reach their ends -> A(1) B(0) A(0)
     //   t = 4: A(1)'s A at 2 -> A(1) B(0); B -> A(0); A(0) is only 1 -> A(1)
     let src = "#terminal_age A 2 B 1\naxiom: A(0)\nA(x) -> A(1) B(0)\nB(x) -> A(0)";
-    assert_eq!(at(src, 1.5), "A(1.5)");
-    assert_eq!(at(src, 2.0), "A(1)B(0)");
-    assert_eq!(at(src, 2.5), "A(1.5)B(0.5)");
-    assert_eq!(at(src, 3.0), "A(1)B(0)A(0)");
-    assert_eq!(at(src, 3.5), "A(1.5)B(0.5)A(0.5)");
-    assert_eq!(at(src, 4.0), "A(1)B(0)A(0)A(1)");
+    check_times(
+        src,
+        &[
+            (1.5, "A(1.5)"),
+            (2.0, "A(1)B(0)"),
+            (2.5, "A(1.5)B(0.5)"),
+            (3.0, "A(1)B(0)A(0)"),
+            (3.5, "A(1.5)B(0.5)A(0.5)"),
+            (4.0, "A(1)B(0)A(0)A(1)"),
+        ],
+    );
     // One derivation from 0 to 4 runs the three rounds (t = 2, 3, 4) on its way.
     let m = model(src);
-    let options = DeriveOptions {
-        steps: 4,
-        ..DeriveOptions::default()
-    };
+    let options = DeriveOptions::of_steps(4);
     let (_, trace) = derive_traced(&m, &options, &mut Unobserved).expect("derives");
     let texts: Vec<String> = trace
         .iter()
@@ -135,9 +143,14 @@ fn a_production_reads_the_age_and_other_parameters() {
     // An apex that counts its internodes: replaced at age 1, with its count, which a condition
     // reads; the internode I is not timed and stays.
     let src = "#terminal_age A 1\naxiom: A(0, 0)\nA(t, n): n < 2 -> I(n) A(0, n + 1)\nA(t, n): n >= 2 -> B";
-    assert_eq!(at(src, 1.0), "I(0)A(0,1)");
-    assert_eq!(at(src, 2.75), "I(0)I(1)A(0.75,2)");
-    assert_eq!(at(src, 3.0), "I(0)I(1)B");
+    check_times(
+        src,
+        &[
+            (1.0, "I(0)A(0,1)"),
+            (2.75, "I(0)I(1)A(0.75,2)"),
+            (3.0, "I(0)I(1)B"),
+        ],
+    );
     // A module at its terminal age that no production rewrites keeps ageing, and is never
     // rewritten later (no endless rounds).
     let stuck = "#terminal_age A 1\naxiom: A(0)\nA(t): t > 5 -> B";
@@ -226,10 +239,7 @@ fn growth_functions_with_bad_arguments_stop_with_an_error() {
     for expr in ["exponential_growth(0.5, 0, 1)", "logistic(0.5, 0, 1, 0)"] {
         let src = format!("axiom: A(x)\nA(x) -> A({expr})");
         let m = model(&src.replace("axiom: A(x)", "axiom: A(1)"));
-        let options = DeriveOptions {
-            steps: 1,
-            ..DeriveOptions::default()
-        };
+        let options = DeriveOptions::of_steps(1);
         let e = derive(&m, &options).expect_err(expr);
         assert_eq!(e.code, "E0500", "{expr}: {}", e.message);
     }

@@ -58,6 +58,16 @@ pub struct DeriveOptions {
     pub time: Option<f64>,
 }
 
+impl DeriveOptions {
+    /// `steps` steps, with the grammar's seed.
+    pub fn of_steps(steps: u32) -> Self {
+        DeriveOptions {
+            steps,
+            ..Default::default()
+        }
+    }
+}
+
 /// The result of a derivation.
 #[derive(Clone, Debug, Default)]
 pub struct Derivation {

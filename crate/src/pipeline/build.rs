@@ -156,14 +156,7 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Watch<'_, '_>) -
         result.model = Some(model);
         return result;
     }
-    let time = options
-        .time
-        .map(|t| if t.is_finite() { t.max(0.0) } else { 0.0 });
-    let steps = match time {
-        Some(t) if model.settings.terminal_ages.is_empty() => t.floor().min(u32::MAX as f64) as u32,
-        Some(t) => t.ceil().min(u32::MAX as f64) as u32,
-        None => options.iterations.unwrap_or(model.settings.iterations),
-    };
+    let (steps, time) = steps_and_time(&model, options);
     if steps > model.settings.max_steps {
         result.diagnostics.push(Diagnostic::error(
             "E0202",
@@ -179,7 +172,13 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Watch<'_, '_>) -
     }
     watch.start(Stage::Derive);
     watch.hooks.tell(Progress::Derived { step: 0, steps });
-    let mut stepped = |step| watch.hooks.tell(Progress::Derived { step, steps });
+    // A timed grammar's rounds of replacements may outnumber its steps: progress stays within.
+    let mut stepped = |step: u32| {
+        watch.hooks.tell(Progress::Derived {
+            step: step.min(steps),
+            steps,
+        })
+    };
     let derive = DeriveOptions {
         steps,
         seed: options.seed,
@@ -220,6 +219,21 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Watch<'_, '_>) -
     }
     result.model = Some(model);
     result
+}
+
+/// The steps to derive and the growth time ([`BuildOptions::time`]): a time overrides the
+/// iterations; a timed grammar derives up to the step after it, any other its whole steps.
+fn steps_and_time(model: &Model, options: &BuildOptions) -> (u32, Option<f64>) {
+    let time = options
+        .time
+        .map(|t| if t.is_finite() { t.max(0.0) } else { 0.0 });
+    let whole = |t: f64| t.min(u32::MAX as f64) as u32;
+    let steps = match time {
+        Some(t) if model.settings.terminal_ages.is_empty() => whole(t.floor()),
+        Some(t) => whole(t.ceil()),
+        None => options.iterations.unwrap_or(model.settings.iterations),
+    };
+    (steps, time)
 }
 
 /// `E0406`: the module at `module` of the turtle's string drew past the skeleton's bounds; at

@@ -318,14 +318,8 @@ fn model_and_string(src: &str) -> (crate::model::Model, crate::model::LString) {
     assert!(diags.is_empty(), "{diags:?}");
     let model = model.expect("model");
     let steps = model.settings.iterations;
-    let derivation = derive::derive(
-        &model,
-        &derive::DeriveOptions {
-            steps,
-            ..Default::default()
-        },
-    )
-    .expect("derives");
+    let derivation =
+        derive::derive(&model, &derive::DeriveOptions::of_steps(steps)).expect("derives");
     (model, derivation.string)
 }
 

@@ -44,7 +44,7 @@ impl Grammar {
         let options = crate::derive::DeriveOptions {
             steps: iterations,
             seed: seed.map(|s| s as u64),
-            time: None,
+            ..Default::default()
         };
         match crate::derive::derive(&self.model, &options) {
             Ok(d) => d.string.len() as f64,
