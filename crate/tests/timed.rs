@@ -155,6 +155,10 @@ fn a_production_reads_the_age_and_other_parameters() {
     // rewritten later (no endless rounds).
     let stuck = "#terminal_age A 1\naxiom: A(0)\nA(t): t > 5 -> B";
     assert_eq!(at(stuck, 3.0), "A(3)");
+    // A successor written at its terminal age by an expression (no constant to check) is never
+    // due again either: one round, then it only ages.
+    let at_end = "#terminal_age A 1\naxiom: A(0)\nA(t) -> A(t) B";
+    assert_eq!(at(at_end, 5.0), "A(5)B");
 }
 
 #[test]
