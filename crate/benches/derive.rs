@@ -34,7 +34,7 @@ fn bench(c: &mut Criterion) {
     group.sample_size(20);
     for &(file, steps) in WORKLOADS {
         let model = model(file);
-        let options = DeriveOptions { steps, seed: None };
+        let options = DeriveOptions::of_steps(steps);
         let modules = derive(&model, &options).expect("derives").string.len();
         group.bench_function(format!("{file} n={steps} ({modules} modules)"), |b| {
             b.iter(|| {

@@ -18,7 +18,11 @@ fn model(text: &str) -> Model {
 
 fn time(name: &str, text: &str, steps: u32, seed: Option<u64>) {
     let model = model(text);
-    let options = DeriveOptions { steps, seed };
+    let options = DeriveOptions {
+        steps,
+        seed,
+        time: None,
+    };
     let len = derive(&model, &options).expect("derives").string.len();
     let mut times = Vec::new();
     let start = Instant::now();

@@ -31,7 +31,7 @@ fn main() {
     let (syntax, _) = parse(C);
     let (model, _) = resolve(&syntax);
     let model = model.expect("model");
-    let options = DeriveOptions { steps, seed: None };
+    let options = DeriveOptions::of_steps(steps);
     let mut best = f64::MAX;
     let mut len = 0;
     let mut sum = 0.0;

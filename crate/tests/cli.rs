@@ -438,3 +438,19 @@ fn export_takes_an_svgs_look_and_refuses_it_for_other_formats() {
     assert!(!glb.exists());
     std::fs::remove_dir_all(dir).ok();
 }
+
+#[test]
+fn derive_at_a_time_shows_a_timed_grammar_between_steps() {
+    let file = example("abop-6.1-timed-anabaena.lsys");
+    let (code, out, err) = meristem(&["derive", &file, "--at", "2.5"]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(out.trim(), "b_l(0.5)a_r(0.5)a_r(0.5)");
+    let (code, out, _) = meristem(&["derive", &file, "--at", "3"]);
+    assert_eq!(code, 0);
+    assert_eq!(out.trim(), "a_l(0)a_l(0)b_r(0)a_l(0)b_r(0)");
+    for bad in ["-1", "soon", "inf"] {
+        let (code, _, err) = meristem(&["derive", &file, "--at", bad]);
+        assert_eq!(code, 2, "--at {bad}");
+        assert!(err.contains("growth time"), "{err}");
+    }
+}

@@ -17,8 +17,7 @@ fn model(src: &str) -> Model {
 
 fn derived(src: &str, steps: u32) -> String {
     let m = model(src);
-    let d = derive(&m, &DeriveOptions { steps, seed: None })
-        .unwrap_or_else(|e| panic!("{}", e.message));
+    let d = derive(&m, &DeriveOptions::of_steps(steps)).unwrap_or_else(|e| panic!("{}", e.message));
     d.string.to_text(&m.alphabet)
 }
 
@@ -29,6 +28,7 @@ fn derived_seed(src: &str, steps: u32, seed: u64) -> String {
         &DeriveOptions {
             steps,
             seed: Some(seed),
+            ..Default::default()
         },
     )
     .unwrap_or_else(|e| panic!("{}", e.message));
@@ -139,7 +139,7 @@ fn hogeweg_hesper_1_31a_has_the_known_size() {
         &m,
         &DeriveOptions {
             steps: 50,
-            seed: None,
+            ..Default::default()
         },
     )
     .expect("derives");
@@ -328,7 +328,7 @@ fn homomorphism_changes_what_the_turtle_reads_not_the_state() {
         &m,
         &DeriveOptions {
             steps: 2,
-            seed: None,
+            ..Default::default()
         },
     )
     .expect("derives");
@@ -351,7 +351,7 @@ fn decomposition_that_never_ends_stops_at_its_depth_with_a_message() {
         &m,
         &DeriveOptions {
             steps: 0,
-            seed: None,
+            ..Default::default()
         },
     )
     .unwrap_err();
@@ -378,7 +378,7 @@ fn runtime_errors_point_at_the_expression() {
         &m,
         &DeriveOptions {
             steps: 1,
-            seed: None,
+            ..Default::default()
         },
     )
     .unwrap_err();
@@ -394,7 +394,7 @@ fn the_module_limit_applies_on_the_general_path_too() {
         &m,
         &DeriveOptions {
             steps: 20,
-            seed: None,
+            ..Default::default()
         },
     )
     .unwrap_err();
@@ -439,7 +439,7 @@ fn groups_can_be_made_by_productions_and_the_turtle_reads_their_members() {
         &m,
         &DeriveOptions {
             steps: 3,
-            seed: None,
+            ..Default::default()
         },
     )
     .expect("derives");
@@ -465,8 +465,8 @@ fn a_parametric_step_after_decomposition_is_sized_from_the_decomposed_string() {
 fn id_counts_are_the_turtle_strings_or_empty() {
     let counted = |src: &str, steps: u32| {
         let m = model(src);
-        let d = derive(&m, &DeriveOptions { steps, seed: None })
-            .unwrap_or_else(|e| panic!("{}", e.message));
+        let d =
+            derive(&m, &DeriveOptions::of_steps(steps)).unwrap_or_else(|e| panic!("{}", e.message));
         let string = d.turtle_string();
         if d.id_counts.is_empty() {
             return false;

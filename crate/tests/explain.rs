@@ -285,7 +285,7 @@ fn a_d0l_derivation_writes_its_provenance_when_asked_as_the_traced_derivation_re
         let b = built(source, 1);
         let model = b.model.as_ref().expect("model");
         for steps in [0, 1, 4] {
-            let options = meristem::derive::DeriveOptions { steps, seed: None };
+            let options = meristem::derive::DeriveOptions::of_steps(steps);
             let mut none = meristem::derive::Unobserved;
             let lazy = meristem::derive::derive_tracked(model, &options, &mut none).unwrap();
             let (traced, trace) =

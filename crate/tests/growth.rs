@@ -5,6 +5,7 @@
 
 use glam::DVec3;
 use meristem::pipeline::{build, Build, BuildOptions};
+use meristem::vocabulary::DirectiveKind;
 
 fn built(source: &str) -> Build {
     let result = build(source, &BuildOptions::default());
@@ -420,6 +421,10 @@ fn every_attribute_on_every_gallery_grammar_builds_a_valid_mesh() {
     let mut checked = 0;
     for path in files {
         let text = std::fs::read_to_string(&path).expect("UTF-8");
+        if text.contains(&DirectiveKind::TerminalAge.written()) {
+            // Timed modules decide themselves when they grow (E0214 with growth attributes).
+            continue;
+        }
         let plain = build(&text, &BuildOptions::default());
         let steps = plain.derived_with.steps.min(5);
         for seed in 1..=3 {

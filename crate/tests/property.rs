@@ -53,7 +53,7 @@ fn engine(source: &str, steps: u32) -> String {
         "{source}\n{diags:?}"
     );
     let model = model.expect("model");
-    let d = derive(&model, &DeriveOptions { steps, seed: None }).expect("derives");
+    let d = derive(&model, &DeriveOptions::of_steps(steps)).expect("derives");
     d.string.to_text(&model.alphabet)
 }
 
@@ -97,6 +97,7 @@ fn derived(source: &str, steps: u32, seed: u64) -> String {
         &DeriveOptions {
             steps,
             seed: Some(seed),
+            ..Default::default()
         },
     ) {
         Ok(d) => d.string.to_text(&model.alphabet),
@@ -193,6 +194,7 @@ fn derived_or_error(source: &str, steps: u32, seed: u64) -> String {
     let options = DeriveOptions {
         steps,
         seed: Some(seed),
+        ..Default::default()
     };
     match derive(&model, &options) {
         Ok(d) => d.string.to_text(&model.alphabet),

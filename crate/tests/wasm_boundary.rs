@@ -78,6 +78,7 @@ mod native {
             let options = BuildOptions {
                 iterations: Some(*iterations),
                 seed: Some(*seed),
+                time: None,
                 mesh: MeshOptions::view(None, None),
                 sketch: false,
             };

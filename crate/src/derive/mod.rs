@@ -34,6 +34,7 @@ mod parametric_pass;
 mod plan;
 mod rewriter;
 mod successors;
+mod timed;
 
 pub use explain::{explain, match_report, ContextCheck, Explanation, LastStep, MatchReport};
 
@@ -51,6 +52,20 @@ pub struct DeriveOptions {
     pub steps: u32,
     /// Overrides `#seed`.
     pub seed: Option<u64>,
+    /// The growth time, in steps, when it is not `steps` (a fraction of a step): a timed
+    /// grammar (`#terminal_age`) is derived to model time `time · #dt`; any other grammar
+    /// derives `steps` steps.
+    pub time: Option<f64>,
+}
+
+impl DeriveOptions {
+    /// `steps` steps, with the grammar's seed.
+    pub fn of_steps(steps: u32) -> Self {
+        DeriveOptions {
+            steps,
+            ..Default::default()
+        }
+    }
 }
 
 /// The result of a derivation.
@@ -215,7 +230,8 @@ impl Observer for Unobserved {}
 /// Derives with the generator seeded from `options.seed` or the grammar's `#seed`.
 pub fn derive(model: &Model, options: &DeriveOptions) -> Result<Derivation, Diagnostic> {
     let mut rng = Generator::seed_from_u64(options.seed.unwrap_or(model.settings.seed));
-    derive_with(model, options.steps, &mut rng)
+    let when = (options.steps, options.time);
+    run(model, when, &mut rng, false, &mut Unobserved)
 }
 
 /// Derives `steps` steps, drawing every random number from `rng`.
@@ -224,7 +240,7 @@ pub fn derive_with<R: rand::Rng>(
     steps: u32,
     rng: &mut R,
 ) -> Result<Derivation, Diagnostic> {
-    run(model, steps, rng, false, &mut Unobserved)
+    run(model, (steps, None), rng, false, &mut Unobserved)
 }
 
 /// Like [`derive`], and also records provenance ([`Derivation::origin`],
@@ -238,7 +254,8 @@ pub fn derive_tracked(
     observer: &mut dyn Observer,
 ) -> Result<Derivation, Diagnostic> {
     let mut rng = Generator::seed_from_u64(options.seed.unwrap_or(model.settings.seed));
-    run(model, options.steps, &mut rng, true, observer)
+    let when = (options.steps, options.time);
+    run(model, when, &mut rng, true, observer)
 }
 
 /// Like [`derive_tracked`], and also records every step ([`TracedStep`]: the string, and where
@@ -251,11 +268,17 @@ pub fn derive_traced(
     let mut rng = Generator::seed_from_u64(options.seed.unwrap_or(model.settings.seed));
     let mut run = Run::start(model, options.steps, &mut rng, observer)?;
     run.trace = Some(vec![run.traced_axiom()]);
-    for step in 1..=options.steps {
-        run.step(step, true)?;
-    }
+    let steps = match timed::Clock::new(model, options.steps, options.time) {
+        Some(clock) => run.timed(clock, true)?,
+        None => {
+            for step in 1..=options.steps {
+                run.step(step, true)?;
+            }
+            options.steps
+        }
+    };
     let trace = run.trace.take().unwrap_or_default();
-    Ok((run.finish(options.steps, true)?, trace))
+    Ok((run.finish(steps, true)?, trace))
 }
 
 /// Sets each query module's three parameters to the value the observer reads there.
@@ -348,14 +371,21 @@ fn limit_error(model: &Model, step: u32, len: usize) -> Diagnostic {
     )
 }
 
+/// Derives `when.0` steps, or a timed grammar to the time `when.1` (in steps; `when.0` when not
+/// given).
 fn run<R: rand::Rng>(
     model: &Model,
-    steps: u32,
+    when: (u32, Option<f64>),
     rng: &mut R,
     track: bool,
     observer: &mut dyn Observer,
 ) -> Result<Derivation, Diagnostic> {
+    let (steps, time) = when;
     let mut run = Run::start(model, steps, rng, observer)?;
+    if let Some(clock) = timed::Clock::new(model, steps, time) {
+        let rounds = run.timed(clock, track)?;
+        return run.finish(rounds, track);
+    }
     for step in 1..=steps {
         run.step(step, track && step == steps)?;
     }
@@ -379,6 +409,8 @@ struct Run<'m, 'o, R: rand::Rng> {
     previous: LString,
     /// Every step so far, when the derivation is traced.
     trace: Option<Vec<TracedStep>>,
+    /// The plan of a timed derivation's round, which replaces the observer's.
+    timed_plan: Option<Vec<u32>>,
 }
 
 impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
@@ -415,6 +447,7 @@ impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
             pending: None,
             previous: LString::default(),
             trace: None,
+            timed_plan: None,
         })
     }
 
@@ -435,9 +468,12 @@ impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
         if tracked || follows {
             self.rewriter.tracker = Some(Tracker::default());
         }
-        self.rewriter.plan = self
-            .observer
-            .plan(step, &self.current, &mut *self.rewriter.rng)?;
+        self.rewriter.plan = match self.timed_plan.take() {
+            Some(plan) => Some(plan),
+            None => self
+                .observer
+                .plan(step, &self.current, &mut *self.rewriter.rng)?,
+        };
         self.rewrite(step, tracked)?;
         std::mem::swap(&mut self.current, &mut self.next);
         if tracked {
@@ -461,6 +497,22 @@ impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
             });
         }
         Ok(())
+    }
+
+    /// A timed derivation: rounds of replacements until the clock reaches its end ([`timed`]),
+    /// each tracked when `tracked`. Returns the number of rounds; `E0407` past `#max_steps`.
+    fn timed(&mut self, mut clock: timed::Clock, tracked: bool) -> Result<u32, Diagnostic> {
+        let model = self.rewriter.model;
+        let mut round = 0;
+        while let Some(plan) = clock.next_round(&mut self.current) {
+            if round == model.settings.max_steps {
+                return Err(clock.too_many_rounds(model));
+            }
+            round += 1;
+            self.timed_plan = Some(plan);
+            self.step(round, tracked)?;
+        }
+        Ok(round)
     }
 
     /// The productions pass, from `current` into `next`.

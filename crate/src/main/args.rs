@@ -10,6 +10,8 @@ pub struct Args {
     pub file: String,
     pub iterations: Option<u32>,
     pub seed: Option<u64>,
+    /// `--at T`: the growth time, in steps.
+    pub at: Option<f64>,
     pub stats: bool,
     pub time: bool,
     pub from: Option<String>,
@@ -34,6 +36,7 @@ pub fn parse_args() -> Result<Args, lexopt::Error> {
     let mut file = None;
     let mut iterations = None;
     let mut seed = None;
+    let mut at = None;
     let mut stats = false;
     let mut time = false;
     let mut from = None;
@@ -51,6 +54,7 @@ pub fn parse_args() -> Result<Args, lexopt::Error> {
         match arg {
             Long("iterations") | Short('n') => iterations = Some(parser.value()?.parse()?),
             Long("seed") | Short('s') => seed = Some(parser.value()?.parse()?),
+            Long("at") => at = Some(growth_time(&parser.value()?.string()?)?),
             Long("stats") => stats = true,
             Long("time") => time = true,
             Long("from") => from = Some(parser.value()?.string()?),
@@ -101,6 +105,7 @@ pub fn parse_args() -> Result<Args, lexopt::Error> {
         file,
         iterations,
         seed,
+        at,
         stats,
         time,
         from,
@@ -115,6 +120,16 @@ pub fn parse_args() -> Result<Args, lexopt::Error> {
         size,
         dpi,
     })
+}
+
+/// `--at T`: a growth time from 0, in steps (refused otherwise, not clamped).
+fn growth_time(text: &str) -> Result<f64, lexopt::Error> {
+    match text.trim().parse::<f64>() {
+        Ok(t) if t.is_finite() && t >= 0.0 => Ok(t),
+        _ => Err(
+            format!("--at {text}: the growth time is a number of steps from 0, e.g. 3.5").into(),
+        ),
+    }
 }
 
 /// An SVG's picture settings from `--background`, `--line-width`, `--size` and `--dpi`, checked;

@@ -39,9 +39,11 @@ use meristem::BuildOptions;
 use std::process::ExitCode;
 
 pub const USAGE: &str = "usage:
-  meristem derive FILE [--iterations N] [--seed S] [--stats | --growth] [--time] [--edits EDITS.json]
+  meristem derive FILE [--iterations N | --at T] [--seed S] [--stats | --growth] [--time] [--edits EDITS.json]
+      --at T: the plant at growth time T in steps (0 or more, a fraction allowed): a timed grammar
+      (#terminal_age) at time T·#dt, any other at its whole steps; --time prints the stages' timings
   meristem check FILE
-  meristem export FILE -o OUT.EXT [--format EXT] [--iterations N] [--seed S] [--sides N] [--smooth-all]
+  meristem export FILE -o OUT.EXT [--format EXT] [--iterations N | --at T] [--seed S] [--sides N] [--smooth-all]
                   [--edits EDITS.json] [--background C] [--line-width PX] [--size WxH] [--dpi D]
       EXT: wrl (VRML 2.0), glb (glTF 2.0), pov (POV-Ray 3.7), obj (OBJ, writes OUT.mtl too),
            iv (OpenInventor 2.1), svg (SVG); --format overrides the extension
@@ -107,6 +109,7 @@ fn main() -> ExitCode {
     let options = BuildOptions {
         iterations: args.iterations,
         seed: args.seed,
+        time: args.at,
         mesh: MeshOptions::view(args.sides, Some(args.smooth_all)),
         sketch: false,
     };

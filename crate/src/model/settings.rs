@@ -38,6 +38,13 @@ pub struct Settings {
     pub palette: Vec<[f32; 3]>,
     /// Span of the `#iterations` directive, where step-related diagnostics point.
     pub iterations_span: Option<Span>,
+    /// `#terminal_age`: the timed modules (ABOP 6.1) and their terminal ages, in source order;
+    /// empty for a grammar that is not timed.
+    pub terminal_ages: Vec<(ModuleId, f64)>,
+    /// Span of the first `#terminal_age`, where timed derivation's diagnostics point.
+    pub terminal_age_span: Option<Span>,
+    /// `#dt`: the time one derivation step covers.
+    pub dt: f64,
 }
 
 /// The colour index's default colours: a ramp from bark brown (0) through olive and greens to
@@ -76,6 +83,7 @@ impl Settings {
             DirectiveKind::Seed => self.seed as f64,
             DirectiveKind::MaxModules => self.max_modules as f64,
             DirectiveKind::MaxSteps => self.max_steps as f64,
+            DirectiveKind::Dt => self.dt,
             _ => 0.0,
         }
     }
@@ -114,6 +122,9 @@ impl Default for Settings {
             draw: Vec::new(),
             palette: DEFAULT_PALETTE.to_vec(),
             iterations_span: None,
+            terminal_ages: Vec::new(),
+            terminal_age_span: None,
+            dt: default_of(DirectiveKind::Dt),
         }
     }
 }

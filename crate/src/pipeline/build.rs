@@ -19,6 +19,10 @@ pub struct BuildOptions {
     pub iterations: Option<u32>,
     /// Overrides `#seed`.
     pub seed: Option<u64>,
+    /// The growth time in steps, overriding `iterations` (docs/LANGUAGE.md, "Timed modules"): a
+    /// timed grammar is derived to time `time · #dt`, between steps when it is a fraction; any
+    /// other grammar derives its whole steps, `floor(time)`. Below 0 or not finite counts as 0.
+    pub time: Option<f64>,
     pub mesh: MeshOptions,
     /// Draw the segments as lines only (a sketch, [`turtle::Sketch`]): no skeleton and no mesh
     /// until [`Build::remesh`] (or [`Build::ensure_skeleton`]) asks for them. Grammars with growth
@@ -152,7 +156,7 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Watch<'_, '_>) -
         result.model = Some(model);
         return result;
     }
-    let steps = options.iterations.unwrap_or(model.settings.iterations);
+    let (steps, time) = steps_and_time(&model, options);
     if steps > model.settings.max_steps {
         result.diagnostics.push(Diagnostic::error(
             "E0202",
@@ -168,10 +172,17 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Watch<'_, '_>) -
     }
     watch.start(Stage::Derive);
     watch.hooks.tell(Progress::Derived { step: 0, steps });
-    let mut stepped = |step| watch.hooks.tell(Progress::Derived { step, steps });
+    // A timed grammar's rounds of replacements may outnumber its steps: progress stays within.
+    let mut stepped = |step: u32| {
+        watch.hooks.tell(Progress::Derived {
+            step: step.min(steps),
+            steps,
+        })
+    };
     let derive = DeriveOptions {
         steps,
         seed: options.seed,
+        time,
     };
     let derived = derive_stage(&model, derive, &mut result, &mut stepped);
     watch.timings.derive = watch.lap();
@@ -208,6 +219,21 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Watch<'_, '_>) -
     }
     result.model = Some(model);
     result
+}
+
+/// The steps to derive and the growth time ([`BuildOptions::time`]): a time overrides the
+/// iterations; a timed grammar derives up to the step after it, any other its whole steps.
+fn steps_and_time(model: &Model, options: &BuildOptions) -> (u32, Option<f64>) {
+    let time = options
+        .time
+        .map(|t| if t.is_finite() { t.max(0.0) } else { 0.0 });
+    let whole = |t: f64| t.min(u32::MAX as f64) as u32;
+    let steps = match time {
+        Some(t) if model.settings.terminal_ages.is_empty() => whole(t.floor()),
+        Some(t) => whole(t.ceil()),
+        None => options.iterations.unwrap_or(model.settings.iterations),
+    };
+    (steps, time)
 }
 
 /// `E0406`: the module at `module` of the turtle's string drew past the skeleton's bounds; at

@@ -319,7 +319,7 @@ fn model_and_string(src: &str) -> (crate::model::Model, crate::model::LString) {
     let model = model.expect("model");
     let steps = model.settings.iterations;
     let derivation =
-        derive::derive(&model, &derive::DeriveOptions { steps, seed: None }).expect("derives");
+        derive::derive(&model, &derive::DeriveOptions::of_steps(steps)).expect("derives");
     (model, derivation.string)
 }
 

@@ -35,6 +35,8 @@ pub enum DirectiveKind {
     Sun,
     Gravity,
     Wind,
+    TerminalAge,
+    Dt,
 }
 
 impl DirectiveKind {
@@ -228,6 +230,11 @@ const fn function_of_points(points: &'static str) -> [Param; 2] {
         Param::new("points", ParamKind::Points, points),
     ]
 }
+const TERMINAL_AGES: &[&[Param]] = &[&[Param::new(
+    "ages",
+    ParamKind::Ages,
+    "pairs of a module name and its terminal age: a_r 2 b_r 1",
+)]];
 const DEPTH: &[&[Param]] = &[&[Param::whole("n", 0.0, 10_000.0, "the depth").default(16.0)]];
 const U32_MAX: f64 = u32::MAX as f64;
 
@@ -476,6 +483,11 @@ pub const DIRECTIVES: &[DirectiveInfo] = &[
         "Declare multi-letter module names.").repeatable(),
     row("draw", D::Draw, "Drawn modules", MODULE_LIST, G::Turtle,
         "Further modules that draw a segment like F.").repeatable(),
+    row("terminal_age", D::TerminalAge, "Terminal ages", TERMINAL_AGES, G::Derivation,
+        "Timed modules (ABOP 6.1) and their terminal ages: a timed module carries its age as its first parameter and is replaced when the age reaches the terminal age.")
+        .usage("E0211", "(pairs of a module name and a terminal age above 0)").repeatable(),
+    row("dt", D::Dt, "Time step", &[&[Param::number("dt", "the time one derivation step covers").default(1.0).unit("time units")]], G::Derivation,
+        "The time one derivation step covers (default 1): a timed grammar at step n shows time n·dt; expressions read it as dt."),
     row("max_modules", D::MaxModules, "Module limit", &[&[Param::whole("n", 0.0, U32_MAX, "modules at most").default(5_000_000.0)]], G::Limits,
         "Stop with an error when the string would grow past n modules (default 5,000,000)."),
     row("max_steps", D::MaxSteps, "Step limit", &[&[Param::whole("n", 0.0, U32_MAX, "steps at most").default(10_000.0)]], G::Limits,

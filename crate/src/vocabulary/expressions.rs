@@ -32,6 +32,10 @@ pub enum Function {
     Binomial,
     Poisson,
     Constant,
+    Linear,
+    ExponentialGrowth,
+    Logistic,
+    Sigmoid,
 }
 
 impl Function {
@@ -114,6 +118,10 @@ pub const FUNCTIONS: &[FunctionInfo] = &[
     f("binomial", F::Binomial, &["n", "p"], "A random number of successes in n trials of probability p.").random(),
     f("poisson", F::Poisson, &["mean"], "A random number of the Poisson distribution.").random(),
     f("constant", F::Constant, &["x"], "x itself (Green's CONSTANT distribution)."),
+    f("linear", F::Linear, &["x", "a", "b"], "Growth function: from a at x = 0 to b at x = 1 in a straight line, a before and b after (x: age / terminal age)."),
+    f("exponential_growth", F::ExponentialGrowth, &["x", "a", "b"], "Growth function: from a at x = 0 to b at x = 1 multiplying by the same factor in equal times, a·(b/a)^x (a, b > 0)."),
+    f("logistic", F::Logistic, &["x", "a", "b", "k"], "Growth function: the logistic curve of steepness k > 0 centred at x = 1/2, scaled to run from a at x = 0 to b at x = 1."),
+    f("sigmoid", F::Sigmoid, &["x", "a", "b"], "Growth function: from a at x = 0 to b at x = 1 along the smooth S x²(3 − 2x), starting and ending at rest."),
 ];
 
 /// The row of a function name, in any case.
@@ -128,6 +136,8 @@ pub enum Value {
     NumIt,
     /// The number of steps of the derivation.
     MaxIt,
+    /// The time one derivation step covers (`#dt`, default 1).
+    Dt,
 }
 
 /// One row of the value table.
@@ -135,6 +145,9 @@ pub enum Value {
 pub struct ValueInfo {
     pub name: &'static str,
     pub value: Value,
+    /// True when a grammar's own `#define` or `#random` of this name replaces it (cpfg models
+    /// define `dt` themselves).
+    pub definable: bool,
     pub doc: &'static str,
 }
 
@@ -143,12 +156,20 @@ pub const VALUES: &[ValueInfo] = &[
     ValueInfo {
         name: "NumIt",
         value: Value::NumIt,
+        definable: false,
         doc: text("The step being derived: 1 in the first step (0 in the axiom)."),
     },
     ValueInfo {
         name: "MaxIt",
         value: Value::MaxIt,
+        definable: false,
         doc: text("The number of steps of this derivation."),
+    },
+    ValueInfo {
+        name: "dt",
+        value: Value::Dt,
+        definable: true,
+        doc: text("The time one derivation step covers: #dt, 1 by default (L-Py's dt); a grammar's own #define dt replaces it."),
     },
 ];
 

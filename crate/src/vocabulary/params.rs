@@ -24,6 +24,8 @@ pub enum ParamKind {
     Modules,
     /// Numbers in pairs `x y` (the points of `#curve` and `#table`).
     Points,
+    /// A module name and a number, in pairs (`#terminal_age a 2 b 1`).
+    Ages,
 }
 
 /// The value a parameter takes when it is not written.

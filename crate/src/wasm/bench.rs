@@ -44,6 +44,7 @@ impl Grammar {
         let options = crate::derive::DeriveOptions {
             steps: iterations,
             seed: seed.map(|s| s as u64),
+            ..Default::default()
         };
         match crate::derive::derive(&self.model, &options) {
             Ok(d) => d.string.len() as f64,

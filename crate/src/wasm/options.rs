@@ -281,6 +281,10 @@ options_objects! { BUILD_TYPESCRIPT;
         "iterations" => iterations: whole;
         /// Overrides `#seed`: a whole number from 0 to 2^53 (other values are ignored).
         "seed" => seed: number;
+        /// The growth time in steps, overriding `iterations`: a timed grammar (`#terminal_age`) is
+        /// shown at time `time · #dt`, between steps when it is a fraction; any other grammar at
+        /// its whole steps, `floor(time)`.
+        "time" => time: number;
         /// Sides of each branch tube, 3 to 64.
         "sides" => sides: whole;
         /// Every axis as a smooth generalized cylinder.
@@ -346,6 +350,7 @@ impl BuildOptionsFields {
         Self {
             iterations: None,
             seed: None,
+            time: None,
             sides: None,
             smooth_all: None,
             sketch: None,
@@ -367,6 +372,7 @@ impl BuildOptionsFields {
         BuildOptions {
             iterations: self.iterations,
             seed: seed.map(|s| s as u64),
+            time: self.time,
             mesh,
             sketch,
         }

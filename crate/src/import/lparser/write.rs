@@ -26,7 +26,7 @@ pub(super) fn measure_width_scale(text: &str) -> Option<f64> {
     }
     let options = crate::derive::DeriveOptions {
         steps: model.settings.iterations,
-        seed: None,
+        ..Default::default()
     };
     let derivation = crate::derive::derive(&model, &options).ok()?;
     let skeleton = crate::turtle::interpret(&model, derivation.turtle_string());

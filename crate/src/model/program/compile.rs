@@ -372,10 +372,14 @@ impl Compiler<'_> {
     fn name(&mut self, name: &str, span: &Span, depth: usize) -> Result<(), Diagnostic> {
         if let Some(slot) = self.scope.slot(name) {
             self.emit(Op::Slot(slot), span.clone());
-        } else if let Some(value) = value_named(name) {
+        } else if let Some(value) = value_named(name).filter(|v| {
+            !v.definable
+                || (self.scope.random_var(name).is_none() && self.scope.define(name).is_none())
+        }) {
             let op = match value.value {
                 Value::NumIt => Op::NumIt,
                 Value::MaxIt => Op::MaxIt,
+                Value::Dt => Op::Const(self.scope.dt()),
             };
             self.emit(op, span.clone());
         } else if let Some(k) = self.scope.random_var(name) {

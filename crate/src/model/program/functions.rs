@@ -5,6 +5,11 @@ use crate::vocabulary::Function;
 use rand::RngExt;
 use rand_distr::{Binomial, Distribution, Exp, Normal, Poisson};
 
+/// `x` limited to 0 … 1: the growth functions' normalised age (NaN stays NaN, an error later).
+fn unit(x: f64) -> f64 {
+    x.clamp(0.0, 1.0)
+}
+
 /// The value of `f` at the arguments `a`, or why the arguments are invalid.
 pub(super) fn call<R: rand::Rng + ?Sized>(
     f: Function,
@@ -40,6 +45,9 @@ pub(super) fn call<R: rand::Rng + ?Sized>(
             }
         }
         Function::Constant => a[0],
+        Function::Linear | Function::ExponentialGrowth | Function::Logistic | Function::Sigmoid => {
+            growth(f, a)?
+        }
         Function::Uniform => {
             if a[0] > a[1] {
                 return Err(format!(
@@ -79,5 +87,38 @@ pub(super) fn call<R: rand::Rng + ?Sized>(
         Function::Poisson => Poisson::new(a[0])
             .map_err(|_| format!("poisson({}): the mean must be > 0", a[0]))?
             .sample(rng),
+    })
+}
+
+/// The growth functions (ABOP section 6.2) at `a[0]`, the age as a fraction of the terminal age,
+/// limited to 0 … 1: from `a[1]` at 0 to `a[2]` at 1.
+fn growth(f: Function, a: &[f64]) -> Result<f64, String> {
+    Ok(match f {
+        Function::Linear => a[1] + (a[2] - a[1]) * unit(a[0]),
+        Function::ExponentialGrowth => {
+            if !(a[1] > 0.0 && a[2] > 0.0) {
+                return Err(format!(
+                    "exponential_growth({}, {}, {}): a and b must be above 0",
+                    a[0], a[1], a[2]
+                ));
+            }
+            a[1] * (a[2] / a[1]).powf(unit(a[0]))
+        }
+        Function::Logistic => {
+            if a[3].is_nan() || a[3] <= 0.0 {
+                return Err(format!(
+                    "logistic({}, {}, {}, {}): the steepness k must be above 0",
+                    a[0], a[1], a[2], a[3]
+                ));
+            }
+            let curve = |x: f64| 1.0 / (1.0 + (-a[3] * (x - 0.5)).exp());
+            let (lo, hi) = (curve(0.0), curve(1.0));
+            a[1] + (a[2] - a[1]) * (curve(unit(a[0])) - lo) / (hi - lo)
+        }
+        Function::Sigmoid => {
+            let x = unit(a[0]);
+            a[1] + (a[2] - a[1]) * x * x * (3.0 - 2.0 * x)
+        }
+        _ => a[0],
     })
 }

@@ -83,6 +83,10 @@ pub trait Scope {
     fn curve(&self, _name: &str) -> Option<Arc<Curve>> {
         None
     }
+    /// The value of `dt`: `#dt`, 1 by default.
+    fn dt(&self) -> f64 {
+        1.0
+    }
 }
 
 /// Why an evaluation failed; turned into a diagnostic at the op's span.

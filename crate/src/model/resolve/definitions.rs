@@ -29,7 +29,7 @@ impl Resolver {
             let taken = self.defines.contains_key(name)
                 || self.random_names.iter().any(|n| n == name)
                 || self.curves.contains_key(name)
-                || value_named(name).is_some()
+                || value_named(name).is_some_and(|v| !v.definable)
                 || function_named(name).is_some();
             if !taken {
                 if let Some(kind) = curve_kind(d.kind) {

@@ -77,7 +77,7 @@ impl Args {
 }
 
 /// The words of a directive's arguments, each as a directive of its own (for spans).
-fn words(d: &Directive) -> Vec<Directive> {
+pub(super) fn words(d: &Directive) -> Vec<Directive> {
     d.args
         .split_whitespace()
         .map(|word| {
@@ -205,6 +205,8 @@ impl Resolver {
             K::Sun => v.growth.sun = self.sun(d),
             K::Gravity => v.growth.gravity = self.bend(d, kind),
             K::Wind => v.growth.wind = self.bend(d, kind),
+            K::TerminalAge => self.terminal_ages(d, s),
+            K::Dt => self.dt_directive(d, s),
         }
     }
 
@@ -248,7 +250,8 @@ impl Resolver {
                 ParamKind::Expression
                 | ParamKind::Name
                 | ParamKind::Modules
-                | ParamKind::Points => None,
+                | ParamKind::Points
+                | ParamKind::Ages => None,
             };
             match arg {
                 Some(arg) => args.push(arg),
@@ -476,7 +479,7 @@ impl Resolver {
         program.eval(&mut env).map_err(|e| e.message)
     }
 
-    fn directive_error(&mut self, code: &'static str, d: &Directive, message: String) {
+    pub(super) fn directive_error(&mut self, code: &'static str, d: &Directive, message: String) {
         let span = if d.args.is_empty() {
             d.name_span.clone()
         } else {
@@ -487,7 +490,7 @@ impl Resolver {
     }
 
     /// A number (or constant expression), or `E0203`.
-    fn number(&mut self, d: &Directive) -> Option<f64> {
+    pub(super) fn number(&mut self, d: &Directive) -> Option<f64> {
         match self.constant(d) {
             Ok(v) => Some(v),
             Err(found) => {

@@ -7,6 +7,7 @@ mod definitions;
 mod directives;
 mod rules;
 mod scope;
+mod timed;
 
 use super::{Alphabet, Curve, GroupIds, Model, ModuleId, RuleSet, SuccessorModule};
 use crate::diagnostics::Diagnostic;
@@ -22,6 +23,7 @@ use std::sync::Arc;
 pub fn resolve(file: &SourceFile) -> (Option<Model>, Vec<Diagnostic>) {
     let mut r = Resolver::new();
     let fixed = r.fixed_ids();
+    r.dt = timed::written_dt(file).unwrap_or(r.dt);
     let randoms = r.definitions(file);
     let values = r.directives(file);
     let random_variables = r.random_variables(&randoms);
@@ -40,6 +42,11 @@ pub fn resolve(file: &SourceFile) -> (Option<Model>, Vec<Diagnostic>) {
     homomorphism.max_depth = values.homomorphism_depth;
     decomposition.max_depth = values.decomposition_depth;
     r.check_arities(&axiom, [&productions, &homomorphism, &decomposition]);
+    r.check_timed(
+        &values,
+        &axiom,
+        [&productions, &homomorphism, &decomposition],
+    );
     for set in [&mut productions, &mut homomorphism, &mut decomposition] {
         r.index(set);
     }
@@ -103,6 +110,8 @@ struct Resolver {
     random_names: Vec<String>,
     /// `#curve` and `#table` functions by name.
     curves: HashMap<String, Arc<Curve>>,
+    /// `#dt`, read before anything is compiled (expressions fold `dt` to it).
+    dt: f64,
 }
 
 /// The ids every model has, interned first and always in this order.
@@ -123,6 +132,7 @@ impl Resolver {
             define_values: HashMap::new(),
             random_names: Vec::new(),
             curves: HashMap::new(),
+            dt: crate::model::settings::directive_default(crate::vocabulary::DirectiveKind::Dt, 0),
         }
     }
 

@@ -20,6 +20,7 @@ struct ScopeView<'a> {
     define_values: &'a HashMap<String, f64>,
     random_names: &'a [String],
     curves: &'a HashMap<String, Arc<Curve>>,
+    dt: f64,
 }
 
 impl Scope for ScopeView<'_> {
@@ -45,6 +46,9 @@ impl Scope for ScopeView<'_> {
     fn curve(&self, name: &str) -> Option<Arc<Curve>> {
         self.curves.get(name).cloned()
     }
+    fn dt(&self) -> f64 {
+        self.dt
+    }
 }
 
 impl Resolver {
@@ -56,6 +60,7 @@ impl Resolver {
             define_values: &self.define_values,
             random_names: &self.random_names,
             curves: &self.curves,
+            dt: self.dt,
         };
         match Program::compile(expr, &scope) {
             Ok(p) => Some(p),
@@ -75,6 +80,7 @@ impl Resolver {
             define_values: &self.define_values,
             random_names: &[],
             curves: &self.curves,
+            dt: self.dt,
         };
         Program::compile(expr, &scope)
     }

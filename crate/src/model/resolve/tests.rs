@@ -16,6 +16,7 @@ fn valid_arguments(kind: DirectiveKind) -> String {
             ParamKind::Modules => "A".to_string(),
             ParamKind::Points => "0 0 0.3 0.2 0.6 0.9 1 1".to_string(),
             ParamKind::Season => p.choices[0].to_string(),
+            ParamKind::Ages => "A 2 B 1".to_string(),
             _ => {
                 let v = p
                     .default_value(|_| 1.0)

@@ -101,6 +101,7 @@ pub(in crate::import::abop) fn first_step(probe: &str, marker: &str) -> Option<O
             &DeriveOptions {
                 steps,
                 seed: Some(seed),
+                ..Default::default()
             },
         )
         .ok()?;

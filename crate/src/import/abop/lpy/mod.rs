@@ -271,6 +271,12 @@ impl Importer {
                 );
                 return next;
             }
+            if assignment && is_time_step(name, value) {
+                // L-Py's continuous-growth idiom: `dt` is the time a step covers.
+                let written = DirectiveKind::Dt.written();
+                self.out.line(format!("{written} {}", value.trim()), line.n);
+                return next;
+            }
             if assignment {
                 match self.expression(value, &Env::new()) {
                     Ok(e) => self.out.line(
@@ -439,4 +445,11 @@ impl Importer {
             None => (chars[start].to_string(), start + 1),
         }
     }
+}
+
+/// `dt = 0.1`: L-Py's time step, a number above 0, which becomes `#dt` (the value `dt` reads it).
+fn is_time_step(name: &str, value: &str) -> bool {
+    let is_dt = crate::vocabulary::value_named(name)
+        .is_some_and(|v| v.value == crate::vocabulary::Value::Dt);
+    is_dt && crate::number::parse_f64(value.trim()).is_some_and(|v| v.is_finite() && v > 0.0)
 }
