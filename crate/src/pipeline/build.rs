@@ -3,6 +3,7 @@
 
 use super::hooks::Watch;
 use super::observer::derive_stage;
+use super::step_on;
 use super::{Hooks, Inspector, Plant, Progress, Stage, StageTimings};
 use crate::derive::{Derivation, DeriveOptions};
 use crate::diagnostics::{has_errors, locate_all, Diagnostic, LocatedDiagnostic};
@@ -133,13 +134,19 @@ pub fn build(source: &str, options: &BuildOptions) -> Build {
 /// Runs every stage on `source`, with the caller's clock and progress callback.
 pub fn build_with(source: &str, options: &BuildOptions, hooks: &mut Hooks) -> Build {
     let mut watch = Watch::new(hooks);
-    let mut result = run_stages(source, options, &mut watch);
+    let mut result = run_stages(source, options, None, &mut watch);
     result.timings = watch.timings();
     result
 }
 
-/// The stages, each timed; a stage that fails leaves the later ones out.
-fn run_stages(source: &str, options: &BuildOptions, watch: &mut Watch<'_, '_>) -> Build {
+/// The stages, each timed; a stage that fails leaves the later ones out. The derivation goes on
+/// from `from`'s when it can ([`super::step_on`]).
+pub(super) fn run_stages(
+    source: &str,
+    options: &BuildOptions,
+    from: Option<&Build>,
+    watch: &mut Watch<'_, '_>,
+) -> Build {
     let mut result = Build::default();
     watch.start(Stage::Parse);
     let (file, diagnostics) = syntax::parse(source);
@@ -167,13 +174,16 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Watch<'_, '_>) -
         return result;
     }
     watch.start(Stage::Derive);
-    watch.hooks.tell(Progress::Derived { step: 0, steps });
-    let mut stepped = |step| watch.hooks.tell(Progress::Derived { step, steps });
     let derive = DeriveOptions {
         steps,
         seed: options.seed,
     };
-    let derived = derive_stage(&model, derive, &mut result, &mut stepped);
+    // A continued derivation starts at the step its earlier build stopped at.
+    let from = from.and_then(|from| step_on::continuable(from, &model, &derive));
+    let first = from.and_then(|f| f.resume.as_ref()).map_or(0, |r| r.steps);
+    watch.hooks.tell(Progress::Derived { step: first, steps });
+    let mut stepped = |step| watch.hooks.tell(Progress::Derived { step, steps });
+    let derived = derive_stage(&model, derive, from, &mut result, &mut stepped);
     watch.timings.derive = watch.lap();
     if let Some(None) = derived.as_ref().filter(|_| options.sketch) {
         watch.start(Stage::Interpret);
