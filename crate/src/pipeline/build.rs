@@ -54,6 +54,9 @@ pub struct Build {
     pub plant: Plant,
     /// How long each stage took, when the caller lent a clock.
     pub timings: Option<StageTimings>,
+    /// The step the derivation went on from when it continued an earlier build's
+    /// ([`super::build_on`]); `None` when it derived from the axiom.
+    pub continued_from: Option<u32>,
 }
 
 /// [`crate::turtle::MAX_COORDINATE`] as `{:e}` writes it, for the clamping warning: a constant
@@ -180,7 +183,8 @@ pub(super) fn run_stages(
     };
     // A continued derivation starts at the step its earlier build stopped at.
     let from = from.and_then(|from| step_on::continuable(from, &model, &derive));
-    let first = from.and_then(|f| f.resume.as_ref()).map_or(0, |r| r.steps);
+    result.continued_from = from.and_then(|f| f.resume.as_ref()).map(|r| r.steps);
+    let first = result.continued_from.unwrap_or(0);
     watch.hooks.tell(Progress::Derived { step: first, steps });
     let mut stepped = |step| watch.hooks.tell(Progress::Derived { step, steps });
     let derived = derive_stage(&model, derive, from, &mut result, &mut stepped);
