@@ -244,7 +244,8 @@ pub fn derive_tracked(
 ) -> Result<Derivation, Diagnostic> {
     let mut rng = Generator::seed_from_u64(options.seed.unwrap_or(model.settings.seed));
     let mut derivation = run(model, options.steps, &mut rng, true, observer)?;
-    if !observer.follows_modules() {
+    // Only the studio core continues derivations (`buildOn`): the first plant's keeps no state.
+    if cfg!(feature = "studio-extras") && !observer.follows_modules() {
         derivation.resume = Resume::after(model, options, &rng);
     }
     Ok(derivation)
