@@ -11,7 +11,8 @@ use meristem::pipeline::{
     build, build_on, why_not_continued, Build, BuildOptions, Hooks, Progress,
 };
 use proptest::prelude::*;
-use std::path::PathBuf;
+
+mod shared;
 
 fn options(iterations: u32, seed: Option<u64>) -> BuildOptions {
     BuildOptions {
@@ -114,27 +115,11 @@ fn check(source: &str, m: u32, from: &[u32], seed: Option<u64>, what: &str) -> b
     continued
 }
 
-fn examples() -> Vec<(String, String)> {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../public/examples");
-    let mut files: Vec<_> = std::fs::read_dir(&dir)
-        .expect("public/examples exists")
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "lsys"))
-        .collect();
-    files.sort();
-    files
-        .into_iter()
-        .map(|p| {
-            let name = p.file_name().unwrap().to_string_lossy().into_owned();
-            (name, std::fs::read_to_string(&p).expect("UTF-8"))
-        })
-        .collect()
-}
-
 #[test]
 fn every_gallery_example_continued_is_the_build_from_its_axiom() {
     let mut continued = 0;
-    for (name, text) in examples() {
+    for (path, text) in shared::examples() {
+        let name = path.file_name().unwrap().to_string_lossy().into_owned();
         let grammar = build(&text, &BuildOptions::default());
         let full = grammar.derived_with.steps;
         // Big plants at fewer steps: the property is per step, the test must stay quick.
