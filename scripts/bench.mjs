@@ -2,11 +2,12 @@
 // of issue 3, and the whole pipeline and the mesh stage on those of issue 4, with issue 8's drag
 // frame (one branch handle moved, the changed vertices copied out to JavaScript). Writes
 // test-results/bench.json (medians). The same workloads are benchmarked natively by criterion
-// (crate/benches/derive.rs, crate/benches/pipeline.rs); all read their grammars from the gallery.
+// (crate/benches/derive.rs, crate/benches/pipeline.rs); all read their grammars from the gallery
+// but the stepping rows of issue 45 (a `dt` grammar written here).
 import { readFileSync, mkdirSync, writeFileSync } from 'node:fs';
 import { performance } from 'node:perf_hooks';
 import os from 'node:os';
-import { initSync, Grammar, build } from '../crate/pkg/meristem.js';
+import { initSync, Grammar, build, buildOn } from '../crate/pkg/meristem.js';
 
 initSync({ module: readFileSync(new URL('../crate/pkg/meristem_bg.wasm', import.meta.url)) });
 
@@ -113,6 +114,45 @@ const pipelineRows = [];
     pipelineRows.push({ workload: `game-tree.lsys: drag branch [${path}] (${what}) → changed arrays`, vertices, median_ms: +ms.toFixed(2), runs, target_ms: 5 });
   }
   b.free();
+}
+// Issue 45: stepping a grammar of many small time steps (L-Py's continuous growth: `dt`), 10,236
+// modules whose parameters grow each step, 1,000 steps. One step on from the kept build of 999
+// steps (what the build worker does for a step forward and Play: `buildOn`), text to typed arrays
+// with every stage after derive included (turtle, tubes, arrays copied out); then the same without
+// the mesh (a sketch: lines only), and the whole derivation from the axiom it saves.
+{
+  const source = `#define dt 0.01
+#iterations 1000
+axiom: X(0)
+X(k) : k < 11 -> /(137.5)[&(35)X(k+1)]X(k+1)
+X(k) : k >= 11 -> A(0)
+A(t) -> A(t + dt)
+homomorphism:
+A(t) -> F(0.05 + t)
+`;
+  const kept = build(source, { iterations: 999 }).intoInspector();
+  const probe = buildOn(source, { iterations: 1000 }, kept);
+  if (probe.continuedFrom !== 999) throw new Error(`the dt grammar was not continued (from ${probe.continuedFrom})`);
+  const modules = probe.moduleCount;
+  const stats = JSON.parse(probe.stats());
+  probe.free();
+  const name = `dt grammar (${modules.toLocaleString('en')} modules, ${stats.segments.toLocaleString('en')} segments)`;
+  const step = (options) => () => {
+    const b = buildOn(source, options, kept);
+    copyOut(b);
+    b.free();
+  };
+  const on = time(step({ iterations: 1000 }));
+  pipelineRows.push({ workload: `${name}: step 999 → 1000 continued, meshed → typed arrays`, vertices: stats.vertices, median_ms: +on.ms.toFixed(2), runs: on.runs, target_ms: 5 });
+  const sketch = time(step({ iterations: 1000, sketch: true }));
+  pipelineRows.push({ workload: `${name}: step 999 → 1000 continued, lines only (no mesh)`, vertices: 0, median_ms: +sketch.ms.toFixed(2), runs: sketch.runs, target_ms: 5 });
+  const whole = time(() => {
+    const b = build(source, { iterations: 1000 });
+    copyOut(b);
+    b.free();
+  });
+  pipelineRows.push({ workload: `${name}: 1,000 steps from the axiom, meshed (what a step cost before)`, vertices: stats.vertices, median_ms: +whole.ms.toFixed(2), runs: whole.runs, target_ms: Infinity });
+  kept.free();
 }
 console.table(pipelineRows);
 const failures = pipelineRows.filter((r) => r.median_ms > r.target_ms);

@@ -1,26 +1,10 @@
 //! The gallery is the regression corpus: every `public/examples/*.lsys` must have a header, parse
 //! without any diagnostic, build within the limits and give a mesh that keeps every invariant.
 
-use meristem::pipeline::{build, BuildOptions};
-use std::path::PathBuf;
+mod shared;
 
-fn examples() -> Vec<(PathBuf, String)> {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../public/examples");
-    let mut files: Vec<_> = std::fs::read_dir(&dir)
-        .expect("public/examples exists")
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "lsys"))
-        .collect();
-    files.sort();
-    assert!(!files.is_empty(), "no examples in {}", dir.display());
-    files
-        .into_iter()
-        .map(|p| {
-            let text = std::fs::read_to_string(&p).expect("example is UTF-8");
-            (p, text)
-        })
-        .collect()
-}
+use meristem::pipeline::{build, BuildOptions};
+use shared::examples;
 
 #[test]
 fn every_example_has_a_title_source_and_description_header() {

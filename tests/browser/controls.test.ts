@@ -112,6 +112,31 @@ describe('iterations: step and play', () => {
     expect(problems).toEqual([]);
   });
 
+  it('derives only the new step when stepping forward (the build worker continues the plant shown)', async () => {
+    await open('abop-1.24d.lsys');
+    let before = 0;
+    for (const expected of [6, 5]) {
+      before = await generation(page);
+      await page.getByTestId('step-back').click();
+      expect(await nextBuild(page, before)).toBe('ok');
+      expect((await shownStats(page))?.iterations).toBe(expected);
+    }
+    await page.evaluate(() => {
+      const w = window as unknown as { __continued: (number | null)[] };
+      w.__continued = [];
+      window.__meristem!.preview!.onDelivered((r) => w.__continued.push(r.build.continuedFrom ?? null));
+    });
+    for (const expected of [6, 7]) {
+      before = await generation(page);
+      await page.getByTestId('step-forward').click();
+      expect(await nextBuild(page, before)).toBe('ok');
+      expect((await shownStats(page))?.iterations).toBe(expected);
+    }
+    // Each step forward went on from the plant before it (the studio core has loaded by now).
+    expect(await page.evaluate(() => (window as unknown as { __continued: (number | null)[] }).__continued)).toEqual([6, 7].map((n) => n - 1));
+    expect(problems).toEqual([]);
+  });
+
   it('plays from 0 up to the grammar’s iterations, one step at a time, and pause stops it', async () => {
     await recordIterations();
     await page.getByTestId('play').click();

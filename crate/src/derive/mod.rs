@@ -32,6 +32,7 @@ mod module_pass;
 mod parametric_classes;
 mod parametric_pass;
 mod plan;
+mod resume;
 mod rewriter;
 mod successors;
 mod timed;
@@ -45,6 +46,7 @@ use rand::SeedableRng;
 use rewriter::{Rewriter, Tracker};
 
 pub use generator::Generator;
+pub use resume::{resume, Resume};
 
 /// What one derivation does.
 #[derive(Clone, Debug, Default)]
@@ -89,6 +91,8 @@ pub struct Derivation {
     /// the derivation knows it without reading that string (the D0L path counts ids to size its
     /// steps); empty otherwise. The sketch turtle sizes its lines with it.
     pub id_counts: Vec<u64>,
+    /// Kept by [`derive_tracked`] when the derivation can be continued exactly ([`resume()`]).
+    pub resume: Option<Resume>,
 }
 
 /// In [`Derivation::origin`]: no production made this module in the last step.
@@ -147,6 +151,7 @@ impl PartialEq for Derivation {
             turtle_origin,
             previous,
             id_counts,
+            resume: _,
         } = self;
         *string == other.string
             && *interpreted == other.interpreted
@@ -255,7 +260,12 @@ pub fn derive_tracked(
 ) -> Result<Derivation, Diagnostic> {
     let mut rng = Generator::seed_from_u64(options.seed.unwrap_or(model.settings.seed));
     let when = (options.steps, options.time);
-    run(model, when, &mut rng, true, observer)
+    let mut derivation = run(model, when, &mut rng, true, observer)?;
+    // Only the studio core continues derivations (`buildOn`): the first plant's keeps no state.
+    if cfg!(feature = "studio-extras") && !observer.follows_modules() {
+        derivation.resume = Resume::after(model, options, &rng);
+    }
+    Ok(derivation)
 }
 
 /// Like [`derive_tracked`], and also records every step ([`TracedStep`]: the string, and where
@@ -623,6 +633,7 @@ impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
             turtle_origin: Vec::new(),
             previous,
             id_counts,
+            resume: None,
         };
         homomorphism(&mut rewriter, steps, &mut derivation, track)?;
         Ok(derivation)

@@ -3,6 +3,7 @@
 
 use super::hooks::Watch;
 use super::observer::derive_stage;
+use super::step_on;
 use super::{Hooks, Inspector, Plant, Progress, Stage, StageTimings};
 use crate::derive::{Derivation, DeriveOptions};
 use crate::diagnostics::{has_errors, locate_all, Diagnostic, LocatedDiagnostic};
@@ -57,6 +58,9 @@ pub struct Build {
     pub plant: Plant,
     /// How long each stage took, when the caller lent a clock.
     pub timings: Option<StageTimings>,
+    /// The step the derivation went on from when it continued an earlier build's
+    /// ([`super::build_on`]); `None` when it derived from the axiom.
+    pub continued_from: Option<u32>,
 }
 
 /// [`crate::turtle::MAX_COORDINATE`] as `{:e}` writes it, for the clamping warning: a constant
@@ -137,13 +141,19 @@ pub fn build(source: &str, options: &BuildOptions) -> Build {
 /// Runs every stage on `source`, with the caller's clock and progress callback.
 pub fn build_with(source: &str, options: &BuildOptions, hooks: &mut Hooks) -> Build {
     let mut watch = Watch::new(hooks);
-    let mut result = run_stages(source, options, &mut watch);
+    let mut result = run_stages(source, options, None, &mut watch);
     result.timings = watch.timings();
     result
 }
 
-/// The stages, each timed; a stage that fails leaves the later ones out.
-fn run_stages(source: &str, options: &BuildOptions, watch: &mut Watch<'_, '_>) -> Build {
+/// The stages, each timed; a stage that fails leaves the later ones out. The derivation goes on
+/// from `from`'s when it can ([`super::step_on`]).
+pub(super) fn run_stages(
+    source: &str,
+    options: &BuildOptions,
+    from: Option<&Build>,
+    watch: &mut Watch<'_, '_>,
+) -> Build {
     let mut result = Build::default();
     watch.start(Stage::Parse);
     let (file, diagnostics) = syntax::parse(source);
@@ -157,21 +167,22 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Watch<'_, '_>) -
         return result;
     }
     let (steps, time) = steps_and_time(&model, options);
-    if steps > model.settings.max_steps {
-        result.diagnostics.push(Diagnostic::error(
-            "E0202",
-            model.settings.iterations_span.clone().unwrap_or(0..0),
-            format!(
-                "{steps} iterations are more than the step limit {}; raise it with '{} {steps}'",
-                model.settings.max_steps,
-                crate::vocabulary::DirectiveKind::MaxSteps.written(),
-            ),
-        ));
+    if let Some(error) = step_limit_error(&model, steps) {
+        result.diagnostics.push(error);
         result.model = Some(model);
         return result;
     }
     watch.start(Stage::Derive);
-    watch.hooks.tell(Progress::Derived { step: 0, steps });
+    let derive = DeriveOptions {
+        steps,
+        seed: options.seed,
+        time,
+    };
+    // A continued derivation starts at the step its earlier build stopped at.
+    let from = from.and_then(|from| step_on::continuable(from, &model, &derive));
+    result.continued_from = from.and_then(|f| f.resume.as_ref()).map(|r| r.steps);
+    let first = result.continued_from.unwrap_or(0);
+    watch.hooks.tell(Progress::Derived { step: first, steps });
     // A timed grammar's rounds of replacements may outnumber its steps: progress stays within.
     let mut stepped = |step: u32| {
         watch.hooks.tell(Progress::Derived {
@@ -179,12 +190,7 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Watch<'_, '_>) -
             steps,
         })
     };
-    let derive = DeriveOptions {
-        steps,
-        seed: options.seed,
-        time,
-    };
-    let derived = derive_stage(&model, derive, &mut result, &mut stepped);
+    let derived = derive_stage(&model, derive, from, &mut result, &mut stepped);
     watch.timings.derive = watch.lap();
     if let Some(None) = derived.as_ref().filter(|_| options.sketch) {
         watch.start(Stage::Interpret);
@@ -219,6 +225,21 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Watch<'_, '_>) -
     }
     result.model = Some(model);
     result
+}
+
+/// `E0202` when `steps` is more than `#max_steps`.
+fn step_limit_error(model: &Model, steps: u32) -> Option<Diagnostic> {
+    let max = model.settings.max_steps;
+    (steps > max).then(|| {
+        Diagnostic::error(
+            "E0202",
+            model.settings.iterations_span.clone().unwrap_or(0..0),
+            format!(
+                "{steps} iterations are more than the step limit {max}; raise it with '{} {steps}'",
+                crate::vocabulary::DirectiveKind::MaxSteps.written(),
+            ),
+        )
+    })
 }
 
 /// The steps to derive and the growth time ([`BuildOptions::time`]): a time overrides the

@@ -15,7 +15,8 @@
 //!
 //! The files: `build.rs` ([`build()`], [`Build`], [`BuildOptions`]), `hooks.rs` ([`Hooks`],
 //! [`Stage`], [`Progress`], [`StageTimings`]), `observer.rs` (growth and the turtle following a
-//! derivation), `plant.rs`, `inspector.rs`, `editor.rs`, `export.rs`.
+//! derivation), `step_on.rs` ([`build_on`]: a build that continues an earlier one's derivation),
+//! `plant.rs`, `inspector.rs`, `editor.rs`, `export.rs`.
 
 mod build;
 mod editor;
@@ -24,6 +25,7 @@ mod hooks;
 mod inspector;
 mod observer;
 mod plant;
+mod step_on;
 
 pub use build::{build, build_with, Build, BuildOptions};
 pub use editor::{BranchInfo, PlantEditor};
@@ -31,6 +33,7 @@ pub use export::{export, ExportError, ExportOptions, Exported};
 pub use hooks::{Hooks, Progress, Stage, StageTimings};
 pub use inspector::{Explained, Inspector};
 pub use plant::Plant;
+pub use step_on::{build_on, why_not_continued};
 
 #[cfg(test)]
 mod tests;

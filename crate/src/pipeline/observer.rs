@@ -3,7 +3,7 @@
 //! derivation ([`trace`]).
 
 use super::Build;
-use crate::derive::{self, DeriveOptions, Written};
+use crate::derive::{self, Derivation, DeriveOptions, Written};
 use crate::diagnostics::Diagnostic;
 use crate::growth::{Adjustments, GrowthTracker};
 use crate::model::{LString, Model};
@@ -11,10 +11,11 @@ use crate::turtle;
 
 /// Derives (with growth following, when the grammar has growth attributes) into `result`,
 /// telling `stepped` each step done; returns the turtle's adjustments, or `None` when derivation
-/// failed.
+/// failed. The derivation continues `from` when it can ([`derive::resume`]).
 pub(super) fn derive_stage(
     model: &Model,
     options: DeriveOptions,
+    from: Option<&Derivation>,
     result: &mut Build,
     stepped: &mut dyn FnMut(u32),
 ) -> Option<Option<Adjustments>> {
@@ -23,7 +24,9 @@ pub(super) fn derive_stage(
         growth: GrowthTracker::new(model, options.steps),
         stepped: Some(stepped),
     };
-    match derive::derive_tracked(model, &options, &mut observer) {
+    let resumed = from.and_then(|from| derive::resume(model, &options, from, &mut observer));
+    let derived = resumed.unwrap_or_else(|| derive::derive_tracked(model, &options, &mut observer));
+    match derived {
         Ok(mut derivation) => {
             result.diagnostics.append(&mut derivation.warnings);
             let adjustments = observer

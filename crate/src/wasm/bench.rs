@@ -14,7 +14,7 @@ pub fn build_sketch(source: &str, iterations: Option<u32>) -> PlantBuild {
         sketch: Some(true),
         ..BuildOptionsFields::none()
     };
-    build_reading(source, &options.options(), None, None)
+    build_reading(source, &options.options(), None, None, None)
 }
 
 /// A parsed and resolved grammar derived many times, without the turtle and mesh stages: the

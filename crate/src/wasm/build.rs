@@ -28,9 +28,20 @@ pub fn build(
     clock: Option<js_sys::Function>,
     progress: Option<js_sys::Function>,
 ) -> Result<PlantBuild, JsValue> {
+    build_after(source, options, None, clock, progress)
+}
+
+/// [`build`], continuing `from`'s derivation when it can ([`pipeline::build_on`]).
+pub(super) fn build_after(
+    source: &str,
+    options: &BuildOptionsObject,
+    from: Option<&pipeline::Build>,
+    clock: Option<js_sys::Function>,
+    progress: Option<js_sys::Function>,
+) -> Result<PlantBuild, JsValue> {
     let fields = BuildOptionsFields::read(options)?;
     let (clock, progress) = (clock.as_ref(), progress.as_ref());
-    let mut plant = build_reading(source, &fields.options(), clock, progress);
+    let mut plant = build_reading(source, &fields.options(), from, clock, progress);
     if let Some(first) = &fields.sketch_first {
         plant.show_sketch(first, progress)?;
         let view = ViewOptionsFields {
@@ -64,10 +75,12 @@ fn tell(progress: Option<&js_sys::Function>, stage: Stage, step: u32, steps: u32
     }
 }
 
-/// Runs the pipeline with `options`, reading `clock` and telling `progress` as [`build`] says.
+/// Runs the pipeline with `options` (continuing `from`, when given and it can), reading `clock`
+/// and telling `progress` as [`build`] says.
 pub(super) fn build_reading(
     source: &str,
     options: &BuildOptions,
+    from: Option<&pipeline::Build>,
     clock: Option<&js_sys::Function>,
     progress: Option<&js_sys::Function>,
 ) -> PlantBuild {
@@ -80,7 +93,10 @@ pub(super) fn build_reading(
         clock: clock.map(|_| &mut now as &mut dyn FnMut() -> f64),
         progress: progress.map(|_| &mut told as &mut dyn FnMut(Progress)),
     };
-    let build = pipeline::build_with(source, options, &mut hooks);
+    let build = match from {
+        Some(from) => pipeline::build_on(source, options, from, &mut hooks),
+        None => pipeline::build_with(source, options, &mut hooks),
+    };
     let diagnostics =
         serde_json::to_string(&build.located_diagnostics(source)).unwrap_or_else(|_| "[]".into());
     PlantBuild { build, diagnostics }
@@ -193,6 +209,13 @@ impl PlantBuild {
     pub fn seed(&self) -> f64 {
         let grammar = self.build.model.as_ref().map_or(0, |m| m.settings.seed);
         self.build.derived_with.seed.unwrap_or(grammar) as f64
+    }
+
+    /// The step the derivation went on from, when it continued an earlier build's (`buildOn`);
+    /// `undefined` when it derived from the axiom.
+    #[wasm_bindgen(getter, js_name = continuedFrom)]
+    pub fn continued_from(&self) -> Option<u32> {
+        self.build.continued_from
     }
 
     /// Modules in the derived string.

@@ -15,6 +15,12 @@ impl PlantInspector {
         PlantInspector { build }
     }
 
+    /// The build it keeps (its derivation, without the geometry).
+    #[cfg(feature = "studio-extras")]
+    pub(super) fn build(&self) -> &pipeline::Build {
+        &self.build
+    }
+
     /// The module texts `texts` picks, as a JSON array (empty without an inspector).
     fn texts_json(&self, texts: impl FnOnce(&pipeline::Inspector) -> Vec<String>) -> String {
         let texts = self

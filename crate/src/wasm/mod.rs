@@ -12,7 +12,7 @@
 //! before the call traps, so the studio can say what failed and start a fresh core.
 //!
 //! The files: `options` (the options objects: their one reader and their TypeScript interfaces,
-//! from one table), `build`, `mesh_arrays` (the typed-array getters of a build and an editor, one
+//! from one table), `build`, `build_on` (a build that continues a kept one's derivation), `mesh_arrays` (the typed-array getters of a build and an editor, one
 //! row per array), `inspector`, `editor`, `export`, `import`, `bench` (the benchmarks' entry
 //! points) and `panic` (the crash path).
 #![deny(clippy::unwrap_used)]
@@ -22,6 +22,8 @@ mod mesh_arrays;
 #[cfg(feature = "studio-extras")]
 mod bench;
 mod build;
+#[cfg(feature = "studio-extras")]
+mod build_on;
 #[cfg(feature = "studio-extras")]
 mod editor;
 #[cfg(feature = "io")]
@@ -35,6 +37,8 @@ mod panic;
 #[cfg(feature = "studio-extras")]
 pub use bench::{build_sketch, Grammar};
 pub use build::{build, PlantBuild};
+#[cfg(feature = "studio-extras")]
+pub use build_on::build_on;
 #[cfg(feature = "studio-extras")]
 pub use editor::PlantEditor;
 #[cfg(feature = "io")]

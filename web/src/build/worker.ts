@@ -8,7 +8,9 @@
 // which later builds use: built for speed, it meshes a big plant in about two thirds of the time.
 // Started by createBuildWorker (worker-client.ts). A big plant is first sent as a sketch (its
 // segments as lines), then built; once the studio core is in use, its biggest arrays are copied
-// into buffers made while the worker waited, sized as the last build's (`prepareSpares`).
+// into buffers made while the worker waited, sized as the last build's (`prepareSpares`). A build
+// of the same text and options as a kept one but more iterations (a step forward, Play) derives
+// only the new steps from it (continue-from.ts); a step back derives from the axiom again.
 import { CoreCrashed, initCore, inspectPlant, loadStudioCore, prepareSpares, studioCoreInUse, type BuildOptions, type BuildProgress, type PlantInspector } from '../core';
 import {
   answerTransferables,
@@ -21,6 +23,7 @@ import {
   type WorkerRequest,
   type WorkerResponse,
 } from './worker-protocol';
+import { continuable, type KeptBuild } from './continue-from';
 
 /** Kept builds at most: the page frees what it does not show, this only bounds a leak. */
 const MAX_KEPT = 4;
@@ -35,10 +38,8 @@ const ready = new Promise<WebAssembly.Module | null>((resolve) => {
   addEventListener('message', first);
 }).then((module) => initCore(module ?? undefined));
 /** A kept build: its inspector, what it was built from, and whether the studio core built it. */
-interface Kept {
+interface Kept extends KeptBuild {
   inspector: PlantInspector;
-  source: string;
-  options: BuildOptions;
   studio: boolean;
 }
 const kept = new Map<number, Kept>();
@@ -55,9 +56,10 @@ function reply(response: WorkerResponse, transfer: Transferable[] = []): void {
   postMessage(response, { transfer });
 }
 
-function keep(id: number, inspector: PlantInspector, source: string, options: BuildOptions): void {
+/** Keeps build `id` (made by `inspectPlant`), freeing the oldest past {@link MAX_KEPT}. */
+function keep(id: number, made: { inspector: PlantInspector; build: { grammarIterations: number } }, source: string, options: BuildOptions): void {
   kept.get(id)?.inspector.free();
-  kept.set(id, { inspector, source, options, studio: studioCoreInUse() });
+  kept.set(id, { inspector: made.inspector, source, options, grammarIterations: made.build.grammarIterations, studio: studioCoreInUse() });
   for (const [oldest, old] of kept) {
     if (kept.size <= MAX_KEPT) break;
     old.inspector.free();
@@ -77,7 +79,7 @@ async function inspectorFor(id: number, question: InspectQuestion): Promise<Plan
 /** Kept build `id`, built by the first plant's core, is built again by the studio core (the same text and options give the same derivation). */
 function buildAgainWithStudioCore(id: number): void {
   const entry = kept.get(id);
-  if (entry && !entry.studio) keep(id, inspectPlant(entry.source, entry.options).inspector, entry.source, entry.options);
+  if (entry && !entry.studio) keep(id, inspectPlant(entry.source, entry.options), entry.source, entry.options);
 }
 
 /**
@@ -149,7 +151,7 @@ addEventListener('message', async (event: MessageEvent<WorkerRequest | CoreMessa
   }
   if (request.kind === 'keep') {
     try {
-      keep(request.build, inspectPlant(request.source, request.options).inspector, request.source, request.options);
+      keep(request.build, inspectPlant(request.source, request.options), request.source, request.options);
     } catch (error) {
       // It built before, so this is a bug; its questions get the empty answers.
       console.error('Meristem core failed to build a kept plant again', error);
@@ -169,8 +171,10 @@ addEventListener('message', async (event: MessageEvent<WorkerRequest | CoreMessa
   const { id, source, options, sketchFrom = SKETCH_MIN_SEGMENTS } = request;
   try {
     const start = performance.now();
-    // A big plant goes to the page as lines first: on screen while its tubes are meshed.
-    const { build, inspector, gpu } = inspectPlant(source, options, {
+    // A big plant goes to the page as lines first: on screen while its tubes are meshed. A kept
+    // build of fewer steps is continued (the core derives from the axiom when it cannot).
+    const made = inspectPlant(source, options, {
+      from: continuable(kept.values(), source, options)?.inspector,
       sketch: {
         minSegments: sketchFrom,
         show: (sketch) => reply({ kind: 'sketch', id, sketch }, [sketch.lines.buffer as ArrayBuffer, sketch.lineColors.buffer as ArrayBuffer]),
@@ -178,7 +182,8 @@ addEventListener('message', async (event: MessageEvent<WorkerRequest | CoreMessa
       onProgress: progressTeller(id),
       forGpu: true, // the normals and colours packed for the GPU, not as floats
     });
-    keep(id, inspector, source, options);
+    const { build, gpu } = made;
+    keep(id, made, source, options);
     reply({ kind: 'built', id, build, gpu, workerMillis: performance.now() - start, studioCore: studioCoreInUse() }, transferablesOf(build, gpu));
     // While the page draws it and the user edits: buffers for the next build of this size.
     prepareSpares();

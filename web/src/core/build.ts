@@ -9,6 +9,7 @@ import {
 } from '../../../crate/pkg-core/meristem_core.js';
 import type {
   build as studioBuildType,
+  buildOn as studioBuildOnType,
   Explanation as WasmExplanation,
   PlantEditor as WasmPlantEditor,
   PlantInspector as StudioPlantInspector,
@@ -72,15 +73,19 @@ let studioBuild: typeof studioBuildType | undefined;
 /** Its copies of a big build into spare buffers (./spare-copies.ts), given with it. */
 let spareCopies: SpareCopies | undefined;
 
+/** The studio core's `buildOn` (a build that continues a kept one's derivation), given with it. */
+let studioBuildOn: typeof studioBuildOnType | undefined;
+
 /**
  * Makes {@link inspectPlant} build with the whole boundary's module (crate/pkg, already
  * instantiated), whose inspectors also explain, report matches and trace the derivation: what
  * the first plant's core leaves out (issue 22), and copy a big plant for the GPU into `copies`'s
  * spare buffers where it has some. Called by ./studio-core.ts.
  */
-export function useStudioCore(core: typeof studioBuildType, copies?: SpareCopies): void {
+export function useStudioCore(core: typeof studioBuildType, copies?: SpareCopies, on?: typeof studioBuildOnType): void {
   studioBuild = core;
   spareCopies = copies;
+  studioBuildOn = on;
 }
 
 /**
@@ -111,6 +116,14 @@ export interface InspectRequest {
    * and `.colors` (then empty): what the build worker sends the view.
    */
   forGpu?: boolean;
+  /**
+   * An inspector of an earlier build of the same text and options but fewer iterations: its
+   * derivation goes on from there (only the new steps are derived; `build.continuedFrom` says
+   * from which), when the studio core built it and the grammar allows (docs/LANGUAGE.md,
+   * "Stepping"); otherwise the build derives from the axiom. The plant is the same either way.
+   * `from` is only read: it stays the caller's, to keep or free.
+   */
+  from?: PlantInspector;
 }
 
 /**
@@ -124,8 +137,8 @@ export interface InspectRequest {
 export function inspectPlant(source: string, options?: BuildOptions, request?: InspectRequest & { forGpu?: false }): { build: PlantBuild; inspector: PlantInspector };
 export function inspectPlant(source: string, options: BuildOptions, request: InspectRequest & { forGpu: true }): { build: PlantBuild; inspector: PlantInspector; gpu: GpuArrays };
 export function inspectPlant(source: string, options: BuildOptions = {}, request: InspectRequest = {}): { build: PlantBuild; inspector: PlantInspector; gpu?: GpuArrays } {
-  const { sketch, onProgress, forGpu = false } = request;
-  const core: (...args: Parameters<typeof build>) => WasmPlantBuild = studioBuild ?? build;
+  const { sketch, onProgress, forGpu = false, from } = request;
+  const core = coreFor(from);
   const result = runBuildWith(core, source, { ...options, sketchFirst: sketch && sketchFirst(sketch, options) }, onProgress);
   let plain: PlantBuild;
   let gpu: GpuArrays | undefined;
@@ -145,7 +158,19 @@ export function inspectPlant(source: string, options: BuildOptions = {}, request
     throw error;
   }
   const moduleCount = plain.moduleCount;
-  return { build: plain, inspector: new LiveInspector(guarded(() => result.intoInspector()), moduleCount), gpu };
+  return { build: plain, inspector: new LiveInspector(guarded(() => result.intoInspector()), moduleCount, studioBuild !== undefined), gpu };
+}
+
+/**
+ * The core's `build` for {@link inspectPlant}: the studio core's when loaded (the first plant's
+ * otherwise), continuing `from`'s derivation when the studio core built `from` too (an inspector
+ * of one module cannot be read by the other).
+ */
+function coreFor(from: PlantInspector | undefined): (...args: Parameters<typeof build>) => WasmPlantBuild {
+  const kept = from instanceof LiveInspector ? from.studioInspector() : undefined;
+  const on = studioBuildOn;
+  if (kept && on) return (source, options, clock, progress) => on(source, options, kept, clock, progress);
+  return studioBuild ?? build;
 }
 
 /** A big plant's skeleton as lines, shown while its tubes are meshed (see {@link inspectPlant}). */
@@ -243,6 +268,7 @@ export function plainBuild(source: string, result: WasmPlantBuild, { forGpu = fa
     flat: result.flat,
     grammarIterations: result.grammarIterations,
     seed: result.seed,
+    ...(result.continuedFrom === undefined ? {} : { continuedFrom: result.continuedFrom }),
   }));
 }
 
@@ -299,7 +325,14 @@ class LiveInspector implements PlantInspector {
   constructor(
     private result: AnyWasmInspector | undefined,
     private readonly moduleCount: number,
+    /** Whether the studio core built it (then `result` is one of its inspectors). */
+    private readonly byStudioCore: boolean,
   ) {}
+
+  /** The studio core's inspector behind this one, while not freed (what `buildOn` continues). */
+  studioInspector(): StudioPlantInspector | undefined {
+    return this.byStudioCore ? (this.result as StudioPlantInspector | undefined) : undefined;
+  }
 
   /** The core's inspector for a studio question; throws when it was built by the first plant's core. */
   private studio(): Partial<StudioQuestions> {

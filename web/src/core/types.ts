@@ -146,6 +146,11 @@ export interface PlantBuild {
   seed: number;
   /** Modules in the derived string. */
   moduleCount: number;
+  /**
+   * The step the derivation went on from when it continued an earlier build's (`inspectPlant`'s
+   * `from`: only the steps after it were derived); absent when it derived from the axiom.
+   */
+  continuedFrom?: number;
   /** The productions of the productions section, in source order (indices as in `origins`). */
   productions: ProductionInfo[];
   /**

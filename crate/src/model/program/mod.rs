@@ -140,6 +140,11 @@ impl Program {
             })
     }
 
+    /// True when the expression reads `MaxIt` (the number of steps of the derivation).
+    pub fn reads_max_it(&self) -> bool {
+        self.ops.contains(&Op::MaxIt)
+    }
+
     /// The constant value, when the expression has no names and draws nothing.
     pub fn constant(&self) -> Option<f64> {
         match self.ops.as_slice() {
