@@ -1,13 +1,25 @@
 // Growth in time across the boundary (docs/LANGUAGE.md, "Growth in time"): the REAL wasm core's
-// growth arrays, through the facade and the build worker's transfer list.
+// growth arrays, through the facade and the build worker's transfer list. The studio core
+// (crate/pkg, feature `growth`) makes them; the first plant's (crate/pkg-core) has no room for
+// them and ignores the option.
 import { readFileSync } from 'node:fs';
 import { beforeAll, describe, expect, it } from 'vitest';
-import { buildPlant, initCore, inspectPlant } from '../../web/src/core';
+import { buildPlant, initCore, initIo, inspectPlant, type BuildOptions, type PlantBuild } from '../../web/src/core';
+import { startStudioCore } from '../../web/src/core/studio-core';
 import { transferablesOf } from '../../web/src/build/worker-protocol';
 
 beforeAll(async () => {
   await initCore(readFileSync(new URL('../../crate/pkg-core/meristem_core_bg.wasm', import.meta.url)));
+  await initIo(readFileSync(new URL('../../crate/pkg/meristem_bg.wasm', import.meta.url)));
+  await startStudioCore();
 });
+
+/** A build by the studio core (what the build worker makes once it is loaded). */
+function studioBuild(source: string, options: BuildOptions): PlantBuild {
+  const { build, inspector } = inspectPlant(source, options);
+  inspector.free();
+  return build;
+}
 
 const TREE = '#angle 20\naxiom: X\nX -> F[+X]F[-X]+X\nF -> FF';
 
@@ -20,16 +32,19 @@ function grownAt(positions: Float32Array, origins: Float32Array, times: Float32A
 }
 
 describe('the growth arrays', () => {
-  it('are absent unless asked for', () => {
-    const plant = buildPlant(TREE, { iterations: 3 });
+  it('are absent unless asked for, and from the first plant’s core', () => {
+    const plant = studioBuild(TREE, { iterations: 3 });
     expect(plant.mesh.growthOrigins).toBeUndefined();
     expect(plant.mesh.growthTimes).toBeUndefined();
+    const first = buildPlant(TREE, { iterations: 3, growth: true });
+    expect(first.mesh.growthTimes).toBeUndefined();
+    expect(first.mesh.positions.length).toBe(plant.mesh.positions.length);
   });
 
   it('hold an origin and (t0, t1) per vertex within [−1, N], the plant growing from its base', () => {
     const n = 4;
     // A trunk segment first, so that step 0's plant has something to draw.
-    const plant = buildPlant(TREE.replace('axiom: X', 'axiom: FX'), { iterations: n, growth: true });
+    const plant = studioBuild(TREE.replace('axiom: X', 'axiom: FX'), { iterations: n, growth: true });
     const { positions, growthOrigins, growthTimes } = plant.mesh;
     if (!growthOrigins || !growthTimes) throw new Error('no growth arrays');
     const vertices = positions.length / 3;

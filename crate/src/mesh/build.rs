@@ -35,7 +35,7 @@ fn mesh_of(
 ) -> (MeshBuffers, MeshParts) {
     let unit = resolve_width_unit(skeleton, options.width_unit);
     let mut builder = Builder::new(options, unit);
-    if options.growth {
+    if options.with_growth() {
         builder.growth = Some(growth_schedule(skeleton));
     }
     let mut parts = MeshParts {

@@ -46,6 +46,13 @@ impl Default for MeshOptions {
 }
 
 impl MeshOptions {
+    /// Whether the mesh carries its growth in time: [`MeshOptions::growth`], when the core is
+    /// built with its `growth` feature (the first plant's WebAssembly core is not, and ignores it).
+    #[inline]
+    pub fn with_growth(&self) -> bool {
+        cfg!(feature = "growth") && self.growth
+    }
+
     /// The default options with the studio's view options: `sides` (clamped to
     /// [`MIN_SIDES`]..=[`MAX_SIDES`], default 6; the CLI refuses `--sides` out of that range
     /// before it gets here) and `smooth_all` (default false). The wasm boundary and the CLI's

@@ -177,7 +177,7 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Watch<'_, '_>) -
         steps,
         seed: options.seed,
     };
-    let count = options.mesh.growth;
+    let count = options.mesh.with_growth();
     let derived = derive_stage(&model, derive, count, &mut result, &mut stepped);
     watch.timings.derive = watch.lap();
     if let Some(None) = derived.as_ref().filter(|_| options.sketch) {

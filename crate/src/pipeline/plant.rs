@@ -100,7 +100,7 @@ impl Plant {
     pub fn remesh(&mut self, options: &MeshOptions) {
         self.mesh_options = options.clone();
         let counts = &mut self.skeleton.step_counts;
-        if options.growth && counts.len() != self.steps as usize + 1 {
+        if options.with_growth() && counts.len() != self.steps as usize + 1 {
             // Not counted while deriving: the plant grows evenly over its steps.
             *counts = (0..=self.steps).map(f64::from).collect();
         }
