@@ -1,8 +1,10 @@
 //! Growth in time (docs/LANGUAGE.md, "Growth in time"): the growth arrays of the mesh, counted by
 //! hand on small grammars, and the invariants every plant's growth keeps.
 
+use meristem::export::animation::Animation;
+use meristem::export::Format;
 use meristem::mesh::{growth_schedule, mesh_at, MeshBuffers, MeshOptions};
-use meristem::pipeline::{build, Build, BuildOptions};
+use meristem::pipeline::{build, export, Build, BuildOptions, ExportError, ExportOptions, Hooks};
 
 /// The build of `source` with `n` iterations and the growth arrays; `lines`: the lines fallback
 /// (one growth entry per line end, two per segment).
@@ -314,4 +316,137 @@ fn the_vertex_budget_counts_the_growth_arrays() {
         b.plant.mesh.growth_times.len(),
         2 * b.plant.mesh.lines.len() / 3
     );
+}
+
+/// The JSON chunk of a GLB.
+fn glb_json(glb: &[u8]) -> serde_json::Value {
+    let length = u32::from_le_bytes(glb[12..16].try_into().unwrap()) as usize;
+    serde_json::from_slice(&glb[20..20 + length]).unwrap()
+}
+
+/// The GLB of `source` after `n` steps, with `animation`.
+fn export_glb(source: &str, n: u32, animation: Option<Animation>) -> Result<Vec<u8>, ExportError> {
+    let options = ExportOptions {
+        build: BuildOptions {
+            iterations: Some(n),
+            ..BuildOptions::default()
+        },
+        format: Format::Glb,
+        stem: "plant".into(),
+        edits: None,
+        look: Default::default(),
+        animation,
+    };
+    export(source, &options, &mut Hooks::default()).map(|e| e.files[0].bytes.clone())
+}
+
+#[test]
+fn the_gltf_animation_has_a_morph_target_per_keyframe_and_ends_whole() {
+    let source = "#angle 20\naxiom: FX\nX -> F[+X]F[-X]+X\nF -> FF";
+    let animation = Animation {
+        seconds_per_step: 2.0,
+        targets_per_step: 3,
+    };
+    let glb = export_glb(source, 3, Some(animation)).unwrap_or_else(|_| panic!("exported"));
+    let json = glb_json(&glb);
+    // 3 steps × 3 targets, and a last keyframe that is the whole plant.
+    for p in json["meshes"][0]["primitives"].as_array().unwrap() {
+        assert_eq!(p["targets"].as_array().unwrap().len(), 9);
+    }
+    assert_eq!(json["meshes"][0]["weights"].as_array().unwrap().len(), 9);
+    let sampler = &json["animations"][0]["samplers"][0];
+    assert_eq!(sampler["interpolation"], "LINEAR");
+    let input = &json["accessors"][sampler["input"].as_u64().unwrap() as usize];
+    assert_eq!(input["count"], 10);
+    assert_eq!(input["max"][0], 6.0);
+    let output = &json["accessors"][sampler["output"].as_u64().unwrap() as usize];
+    assert_eq!(output["count"], 10 * 9);
+    let channel = &json["animations"][0]["channels"][0]["target"];
+    assert_eq!(
+        (channel["node"].as_u64(), channel["path"].as_str()),
+        (Some(0), Some("weights"))
+    );
+    // Without the option, the same plant's file has no animation.
+    let plain = export_glb(source, 3, None).unwrap_or_else(|_| panic!("exported"));
+    assert!(glb_json(&plain).get("animations").is_none());
+}
+
+#[test]
+fn a_gltf_animation_past_its_limit_is_refused_with_a_message() {
+    let source = "#angle 20\naxiom: X\nX -> F[+X]F[-X]+X\nF -> FF";
+    let animation = Animation {
+        seconds_per_step: 1.0,
+        targets_per_step: 16,
+    };
+    match export_glb(source, 8, Some(animation)) {
+        Err(ExportError::Animation(message)) => {
+            assert!(message.contains("fewer targets per step"), "{message}")
+        }
+        _ => panic!("exported past the limit"),
+    }
+}
+
+#[test]
+fn the_cli_writes_frames_of_the_growth() {
+    let dir = std::env::temp_dir().join(format!("meristem-growth-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let grammar = dir.join("plant.lsys");
+    std::fs::write(&grammar, "#angle 20\n#iterations 3\naxiom: F\nF -> F[+F]F").unwrap();
+    let run = |args: &[&str]| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_meristem"))
+            .arg("export")
+            .arg(&grammar)
+            .args(args)
+            .output()
+            .unwrap()
+    };
+    let frames = dir.join("frames");
+    let out = run(&["--frames", "4", "-o", frames.to_str().unwrap()]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let names: Vec<String> = (0..4).map(|k| format!("frame_{k:03}.svg")).collect();
+    let texts: Vec<String> = names
+        .iter()
+        .map(|n| std::fs::read_to_string(frames.join(n)).unwrap())
+        .collect();
+    // The same frame (viewBox) on every picture; the plant grows: more drawn at each frame.
+    let view_box = |t: &str| {
+        t.split("viewBox=\"")
+            .nth(1)
+            .unwrap()
+            .split('"')
+            .next()
+            .unwrap()
+            .to_string()
+    };
+    assert!(texts.iter().all(|t| view_box(t) == view_box(&texts[0])));
+    assert_ne!(texts[0], texts[1]);
+    assert_ne!(texts[1], texts[2]);
+    // The last frame is the plant's own SVG.
+    let whole = dir.join("whole.svg");
+    assert!(run(&["-o", whole.to_str().unwrap()]).status.success());
+    assert_eq!(texts[3], std::fs::read_to_string(&whole).unwrap());
+    // One frame at a time, and limits.
+    let at = dir.join("at.svg");
+    assert!(run(&["--at", "1.5", "-o", at.to_str().unwrap()])
+        .status
+        .success());
+    assert!(std::fs::read_to_string(&at).unwrap().contains("<svg"));
+    let refused = run(&["--frames", "0", "-o", frames.to_str().unwrap()]);
+    assert!(!refused.status.success());
+    assert!(String::from_utf8_lossy(&refused.stderr).contains("1 to 10000"));
+    let refused = run(&[
+        "--frames",
+        "3",
+        "--format",
+        "obj",
+        "-o",
+        frames.to_str().unwrap(),
+    ]);
+    assert!(String::from_utf8_lossy(&refused.stderr).contains("SVG pictures"));
+    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -327,6 +327,12 @@ options_objects! { EXPORT_TYPESCRIPT;
         "edits" => edits: text;
         /// An SVG's picture settings (refused for the other formats).
         "svg" => svg: SvgLook;
+        /// glTF only: the plant's growth as a glTF animation (morph targets keyed in time; docs/LANGUAGE.md, "Growth in time").
+        "animate" => animate: flag;
+        /// With `animate`: seconds of animation per derivation step (default 1).
+        "secondsPerStep" => seconds_per_step: number;
+        /// With `animate`: morph targets per step, 1 to 16 (default 4).
+        "targetsPerStep" => targets_per_step: whole;
     }
     /// An SVG's picture settings: the CLI's `--background`, `--line-width`, `--size` and `--dpi`.
     "SvgLook" => SvgLookObject, SvgLookFields {
@@ -387,6 +393,18 @@ impl ViewOptionsFields {
             growth: self.growth == Some(true),
             ..MeshOptions::view(self.sides, self.smooth_all)
         }
+    }
+}
+
+#[cfg(feature = "io")]
+impl ExportOptionsFields {
+    /// The growth animation asked for (`animate`), with its settings.
+    pub fn animation(&self) -> Option<export::animation::Animation> {
+        let defaults = export::animation::Animation::default();
+        (self.animate == Some(true)).then(|| export::animation::Animation {
+            seconds_per_step: self.seconds_per_step.unwrap_or(defaults.seconds_per_step),
+            targets_per_step: self.targets_per_step.unwrap_or(defaults.targets_per_step),
+        })
     }
 }
 
