@@ -23,7 +23,8 @@ pub(super) fn derive_stage(
         model,
         growth: GrowthTracker::new(model, options.steps),
         stepped: Some(stepped),
-        counter: count.then(|| StepCounter::new(model)),
+        // (Without the feature, none: the counter is left out of the build.)
+        counter: (cfg!(feature = "growth") && count).then(|| StepCounter::new(model)),
     };
     match derive::derive_tracked(model, &options, &mut observer) {
         Ok(mut derivation) => {
