@@ -150,17 +150,27 @@ impl<'a> Builder<'a> {
     /// The vertices the mesh may have: `max_vertices`, or fewer with the growth arrays, whose
     /// 20 bytes per vertex count against it (a vertex has 44 bytes without them).
     fn vertex_budget(&self) -> usize {
-        if self.growth.is_some() {
+        if self.growing() {
             self.options.max_vertices / 64 * 44
         } else {
             self.options.max_vertices
         }
     }
 
+    /// Whether the mesh carries growth: never without the `growth` feature, which leaves the
+    /// growth code out of the first plant's core.
+    #[inline(always)]
+    pub(super) fn growing(&self) -> bool {
+        cfg!(feature = "growth") && self.growth.is_some()
+    }
+
     /// Gives the vertices written since the last call the growth of element `element` (see
     /// [`GrowthSchedule::elements`]), when the mesh carries growth.
     #[inline]
     pub(super) fn grow(&mut self, element: usize) {
+        if !self.growing() {
+            return;
+        }
         let Some(schedule) = &self.growth else {
             return;
         };
@@ -244,7 +254,7 @@ impl<'a> Builder<'a> {
         // segment would send ABOP 1.24d at n = 7 (116,050 segments, 1.3 M vertices meshed) to the
         // lines fallback. The arrays grow past this when a plant needs it.
         // With growth, every segment has its own start ring.
-        let own_rings = 2 + usize::from(self.growth.is_some());
+        let own_rings = 2 + usize::from(self.growing());
         let tubes = if self.options.tubes {
             skeleton.segments.len() * (rings_per_segment + own_rings) * (self.sides + 1)
         } else {
@@ -341,7 +351,7 @@ impl<'a> Builder<'a> {
         let lines = segment_lines(skeleton);
         self.mesh.lines = lines.ends;
         self.mesh.line_colors = lines.colors;
-        if let Some(schedule) = &self.growth {
+        if let Some(schedule) = self.growth.as_ref().filter(|_| cfg!(feature = "growth")) {
             let mesh = &mut self.mesh;
             for g in &schedule.elements[..skeleton.segments.len().min(schedule.elements.len())] {
                 let o = [g.origin.x as f32, g.origin.y as f32, g.origin.z as f32];

@@ -197,7 +197,7 @@ impl Builder<'_> {
         let rings = &mut scratch.rings;
         rings.clear();
         scratch.ends.clear();
-        let (growth, chain) = (self.growth.is_some(), segments.chain);
+        let (growth, chain) = (self.growing(), segments.chain);
         let unit = self.unit;
         let circumference = |w: f64| (std::f64::consts::PI * w * unit).max(1e-12);
         let mut v = 0.0f64;
