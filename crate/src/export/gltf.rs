@@ -15,6 +15,7 @@
 //! studio give the same bytes, and so that it runs wherever the core runs (a worker, Node) with
 //! no `FileReader`.
 
+use super::animation::Keyframes;
 use super::scene::{ColorGroup, Primitive, Scene};
 use super::textures::{BARK_PNG, LEAF_PNG};
 use crate::mesh::{MATERIAL_BARK, MATERIAL_LEAF, MATERIAL_PLAIN};
@@ -32,11 +33,24 @@ const REPEAT: u32 = 10497;
 
 /// The GLB bytes of `scene`.
 pub fn write(scene: &Scene) -> Vec<u8> {
+    write_animated(scene, None)
+}
+
+/// The GLB bytes of `scene`, with the plant's growth as an animation when `growth` holds its
+/// keyframes ([`super::animation`]): a morph target per keyframe but the last on every
+/// primitive, and an animation `growth` of the mesh's weights.
+pub fn write_animated(scene: &Scene, growth: Option<&Keyframes>) -> Vec<u8> {
     let groups = scene.groups();
     let mut document = Document::default();
     if !groups.is_empty() {
-        let attributes = document.vertex_attributes(scene);
+        let mut attributes = document.vertex_attributes(scene);
+        if let Some(keyframes) = growth.filter(|k| !k.targets.is_empty()) {
+            attributes = document.morph_targets(keyframes, attributes);
+        }
         document.primitives(scene, &groups, &attributes);
+        if let Some(keyframes) = growth.filter(|k| !k.targets.is_empty()) {
+            document.animation(keyframes);
+        }
         document.embed_textures();
         document.pad_bin();
     }
@@ -56,6 +70,9 @@ struct Document {
     /// The material kind each texture shows (bark or leaf), in the order they were first used;
     /// texture `i` shows image `i`.
     textures: Vec<u32>,
+    /// With a growth animation: the morph targets' count and the animation.
+    morph_targets: usize,
+    animation: Option<Value>,
 }
 
 impl Document {
@@ -90,6 +107,56 @@ impl Document {
             attributes["TEXCOORD_0"] = json!(2);
         }
         attributes
+    }
+
+    /// The morph targets of `keyframes` (a `POSITION` accessor each, with `min`/`max`), after
+    /// the vertex attributes: `attributes` and `{"targets": [...]}`, split again by
+    /// [`Document::primitives`].
+    fn morph_targets(&mut self, keyframes: &Keyframes, attributes: Value) -> Value {
+        let mut targets = Vec::with_capacity(keyframes.targets.len());
+        for displacement in &keyframes.targets {
+            let (min, max) = min_max(displacement);
+            let accessor = self.accessors.len();
+            self.buffer_views.push(view(
+                &mut self.bin,
+                floats(displacement),
+                Some(ARRAY_BUFFER),
+            ));
+            self.accessors.push(json!({
+                "bufferView": self.buffer_views.len() - 1, "componentType": FLOAT,
+                "count": displacement.len() / 3, "type": "VEC3", "min": min, "max": max,
+            }));
+            targets.push(json!({ "POSITION": accessor }));
+        }
+        self.morph_targets = targets.len();
+        json!({ "attributes": attributes, "targets": targets })
+    }
+
+    /// The animation `growth`: the keyframes' times (seconds) and the weights at each, linearly
+    /// interpolated, on node 0's weights.
+    fn animation(&mut self, keyframes: &Keyframes) {
+        let times = &keyframes.seconds;
+        let input = self.accessors.len();
+        self.buffer_views
+            .push(view(&mut self.bin, floats(times), None));
+        self.accessors.push(json!({
+            "bufferView": self.buffer_views.len() - 1, "componentType": FLOAT,
+            "count": times.len(), "type": "SCALAR",
+            "min": [times.first().copied().unwrap_or(0.0)],
+            "max": [times.last().copied().unwrap_or(0.0)],
+        }));
+        let weights = keyframes.weights();
+        self.buffer_views
+            .push(view(&mut self.bin, floats(&weights), None));
+        self.accessors.push(json!({
+            "bufferView": self.buffer_views.len() - 1, "componentType": FLOAT,
+            "count": weights.len(), "type": "SCALAR",
+        }));
+        self.animation = Some(json!({
+            "name": "growth",
+            "samplers": [{ "input": input, "output": input + 1, "interpolation": "LINEAR" }],
+            "channels": [{ "sampler": 0, "target": { "node": 0, "path": "weights" } }],
+        }));
     }
 
     /// Appends a vertex attribute's `bytes` in a buffer view of its own, and its `accessor`.
@@ -132,12 +199,16 @@ impl Document {
                 }
                 let material = self.material(group, kind, primitive);
                 self.materials.push(material);
-                self.primitives.push(json!({
-                    "attributes": attributes,
+                let mut p = json!({
+                    "attributes": attributes.get("attributes").unwrap_or(attributes),
                     "indices": self.accessors.len(),
                     "material": self.materials.len() - 1,
                     "mode": if primitive == Primitive::Triangles { TRIANGLES } else { LINES },
-                }));
+                });
+                if let Some(targets) = attributes.get("targets") {
+                    p["targets"] = targets.clone();
+                }
+                self.primitives.push(p);
                 self.accessors.push(json!({
                     "bufferView": index_view, "byteOffset": offset, "componentType": UNSIGNED_INT,
                     "count": count, "type": "SCALAR",
@@ -252,6 +323,12 @@ impl Document {
         document["scenes"][0]["nodes"] = json!([0]);
         document["nodes"] = json!([{ "name": "plant", "mesh": 0 }]);
         document["meshes"] = json!([{ "name": "plant", "primitives": self.primitives }]);
+        if self.morph_targets > 0 {
+            document["meshes"][0]["weights"] = json!(vec![0.0; self.morph_targets]);
+        }
+        if let Some(animation) = self.animation {
+            document["animations"] = json!([animation]);
+        }
         document["materials"] = Value::Array(self.materials);
         if !self.images.is_empty() {
             let textures: Vec<Value> = (0..self.textures.len())

@@ -8,12 +8,13 @@
 //! | format | module | what it holds |
 //! | --- | --- | --- |
 //! | VRML 2.0 `.wrl` | [`vrml`] | a `Shape` per colour index over one shared `Coordinate`/`Normal`, a framing `Viewpoint` |
-//! | glTF 2.0 binary `.glb` | [`gltf`] | a primitive and PBR material per colour index over shared accessors |
+//! | glTF 2.0 binary `.glb` | [`gltf`] | a primitive and PBR material per colour index over shared accessors; the growth as morph targets and an animation ([`animation`]) |
 //! | POV-Ray 3.7 `.pov` | [`pov`] | one `mesh2` with a `texture_list`, camera and lights |
 //! | OBJ + MTL `.obj` | [`obj`] | `usemtl color_N` groups; the MTL beside it (a zip in the studio) |
 //! | OpenInventor 2.1 `.iv` | [`inventor`] | shared `Coordinate3`/`Normal`, a `Material` + face set per colour index |
 //! | SVG `.svg` | [`svg`] | the skeleton projected onto X–Y: stroked segments, filled polygons |
 
+pub mod animation;
 pub mod gltf;
 pub mod inventor;
 pub mod obj;

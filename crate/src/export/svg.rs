@@ -270,8 +270,22 @@ pub fn write(mesh: &MeshBuffers, skeleton: &Skeleton) -> String {
 
 /// The SVG text of the skeleton in `look` (checked by [`Look::checked`]).
 pub fn write_with(mesh: &MeshBuffers, skeleton: &Skeleton, look: &Look) -> String {
+    write_framed(mesh, skeleton, None, look)
+}
+
+/// [`write_with`], framed on the drawing of `framing` when given (the frames of a growing plant,
+/// each framed on the whole plant) rather than on the skeleton's own.
+pub fn write_framed(
+    mesh: &MeshBuffers,
+    skeleton: &Skeleton,
+    framing: Option<&Skeleton>,
+    look: &Look,
+) -> String {
     let mut shapes = shapes(skeleton, mesh.width_unit);
-    let frame = Frame::new(&shapes, look);
+    let frame = match framing {
+        Some(whole) => Frame::new(&self::shapes(whole, mesh.width_unit), look),
+        None => Frame::new(&shapes, look),
+    };
     if let Some(width) = frame.line_width {
         for shape in &mut shapes {
             if let Shape::Line(_, _, w, _) = shape {

@@ -25,6 +25,14 @@ pub struct Args {
     pub line_width: Option<f64>,
     pub size: Option<String>,
     pub dpi: Option<f64>,
+    /// `export --animate`: the growth as a glTF animation, with `--seconds-per-step` and
+    /// `--targets-per-step`.
+    pub animate: bool,
+    pub seconds_per_step: Option<f64>,
+    pub targets_per_step: Option<u32>,
+    /// `export --frames N`: N pictures of the growth into the output folder (`--at T` with an SVG
+    /// output: one, at growth time T).
+    pub frames: Option<u32>,
 }
 
 /// The command line. Long because it is the list of flags, one arm and one variable each: split,
@@ -50,6 +58,10 @@ pub fn parse_args() -> Result<Args, lexopt::Error> {
     let mut line_width = None;
     let mut size = None;
     let mut dpi = None;
+    let mut animate = false;
+    let mut seconds_per_step = None;
+    let mut targets_per_step = None;
+    let mut frames = None;
     while let Some(arg) = parser.next()? {
         match arg {
             Long("iterations") | Short('n') => iterations = Some(parser.value()?.parse()?),
@@ -59,7 +71,13 @@ pub fn parse_args() -> Result<Args, lexopt::Error> {
             Long("time") => time = true,
             Long("from") => from = Some(parser.value()?.string()?),
             Long("growth") => growth = true,
-            Long("output") | Short('o') => output = Some(PathBuf::from(parser.value()?)),
+            Long("animate") => animate = true,
+            Long("seconds-per-step") => seconds_per_step = Some(parser.value()?.parse()?),
+            Long("targets-per-step") => targets_per_step = Some(parser.value()?.parse()?),
+            Long("frames") => frames = Some(parser.value()?.parse()?),
+            Long("output") | Long("out") | Short('o') => {
+                output = Some(PathBuf::from(parser.value()?))
+            }
             Long("format") | Short('f') => format = Some(parser.value()?.string()?),
             Long("sides") => sides = Some(parser.value()?.string()?),
             Long("smooth-all") => smooth_all = true,
@@ -119,6 +137,10 @@ pub fn parse_args() -> Result<Args, lexopt::Error> {
         line_width,
         size,
         dpi,
+        animate,
+        seconds_per_step,
+        targets_per_step,
+        frames,
     })
 }
 

@@ -4,6 +4,7 @@ use super::args::{Args, ExportTarget};
 use meristem::branches::{BranchEdit, EditReport};
 use meristem::diagnostics::{locate_all, LocatedDiagnostic, Severity};
 use meristem::export;
+use meristem::export::animation::Animation;
 use meristem::pipeline::{
     self, Build, ExportError, ExportOptions, Hooks, PlantEditor, StageTimings,
 };
@@ -134,6 +135,13 @@ pub fn export_file(
         stem,
         edits,
         look,
+        animation: args.animate.then(|| {
+            let defaults = Animation::default();
+            Animation {
+                seconds_per_step: args.seconds_per_step.unwrap_or(defaults.seconds_per_step),
+                targets_per_step: args.targets_per_step.unwrap_or(defaults.targets_per_step),
+            }
+        }),
     };
     let exported = match pipeline::export(source, &options, hooks) {
         Ok(exported) => exported,
@@ -141,6 +149,10 @@ pub fn export_file(
             print_timings(args, build.timings);
             print_diagnostics(&args.file, &build.located_diagnostics(source));
             return ExitCode::from(1);
+        }
+        Err(ExportError::Animation(message)) => {
+            eprintln!("meristem: {message}");
+            return ExitCode::from(2);
         }
     };
     print_timings(args, exported.timings);

@@ -10,6 +10,10 @@
 //!                 [--edits EDITS.json]              the model as OUT.wrl, .glb, .pov, .obj (+ .mtl), .iv or .svg
 //!                 [--background C] [--line-width PX] [--size WxH] [--dpi D]
 //!                                                   an SVG's picture settings (the studio's)
+//!                 [--animate [--seconds-per-step S] [--targets-per-step K]]
+//!                                                   glTF: the growth as an animation
+//! meristem export FILE --frames N -o DIR | --at T -o OUT.svg
+//!                                                   SVG pictures of the plant growing
 //! meristem import FILE [--from D] [-o OUT.lsys]      another dialect translated; notes on stderr
 //!                                                   (FILE may be a vlab object's folder or .zip)
 //! meristem help [modules|directives]                the language's modules or directives, from
@@ -24,12 +28,14 @@
 
 mod args;
 mod build;
+mod frames;
 mod help;
 mod import;
 mod input;
 
 use args::{export_target, parse_args};
 use build::{derive_or_check, export_file};
+use frames::{at_as_picture, export_frames};
 use help::help;
 use import::{import_file, import_object, is_object};
 use input::{read_edits, read_source};
@@ -53,6 +59,10 @@ pub const USAGE: &str = "usage:
       --background white, none (the default: transparent) or a hex colour ('#' and six digits), --line-width PX (0.5 to 60:
       every line this wide in the picture's pixels, the Lines mode), --size WxH (16 to 8192
       pixels), --dpi D (10 to 2400: width and height in millimetres, e.g. 1748x2480 at 300 is A5)
+      glTF only: --animate writes the plant's growth as an animation (morph targets keyed in time),
+      --seconds-per-step S (default 1), --targets-per-step K (1 to 16, default 4)
+  meristem export FILE --frames N -o DIR   N SVG pictures of the plant growing, DIR/frame_000.svg …
+  meristem export FILE --at T -o OUT.svg   the plant at growth time T (0 to the iterations)
   meristem import FILE [--from green|lparser|cpfg|lpy] [-o OUT.lsys]
       FILE may be a vlab object's folder or .zip: its .l with its view file, functions and colours
   meristem help [modules|directives]     the language's modules and directives
@@ -73,7 +83,8 @@ fn main() -> ExitCode {
         eprintln!("meristem: unknown verb '{}'\n{USAGE}", args.verb);
         return ExitCode::from(2);
     }
-    let export_target = if args.verb == "export" {
+    let frames = args.verb == "export" && (args.frames.is_some() || at_as_picture(&args));
+    let export_target = if args.verb == "export" && !frames {
         match export_target(&args) {
             Ok(target) => Some(target),
             Err(e) => {
@@ -113,6 +124,9 @@ fn main() -> ExitCode {
         mesh: MeshOptions::view(args.sides, Some(args.smooth_all)),
         sketch: false,
     };
+    if frames {
+        return export_frames(&args, &source, options, &mut hooks);
+    }
     match export_target {
         Some(target) => export_file(&args, &source, options, edits, target, &mut hooks),
         None => derive_or_check(&args, &source, &options, edits, &mut hooks),

@@ -24,6 +24,10 @@ pub struct MeshOptions {
     /// Mesh the segments as tubes (true), or leave them out: the studio's Lines mode draws the
     /// segments as lines and needs the mesh only for leaves, polygons and spheres.
     pub tubes: bool,
+    /// Also write each vertex's growth in time (`MeshBuffers::growth_origins`, `growth_times`;
+    /// docs/LANGUAGE.md, "Growth in time"): 20 bytes more per vertex, counted against
+    /// `max_vertices`.
+    pub growth: bool,
 }
 
 impl Default for MeshOptions {
@@ -36,11 +40,19 @@ impl Default for MeshOptions {
             sphere_segments: 12,
             max_vertices: 4_000_000,
             tubes: true,
+            growth: false,
         }
     }
 }
 
 impl MeshOptions {
+    /// Whether the mesh carries its growth in time: [`MeshOptions::growth`], when the core is
+    /// built with its `growth` feature (the first plant's WebAssembly core is not, and ignores it).
+    #[inline]
+    pub fn with_growth(&self) -> bool {
+        cfg!(feature = "growth") && self.growth
+    }
+
     /// The default options with the studio's view options: `sides` (clamped to
     /// [`MIN_SIDES`]..=[`MAX_SIDES`], default 6; the CLI refuses `--sides` out of that range
     /// before it gets here) and `smooth_all` (default false). The wasm boundary and the CLI's

@@ -56,6 +56,9 @@ pub struct Build {
     /// what every step did (apices growing and stopped per third, rewritings).
     pub growth: Option<GrowthRecord>,
     pub plant: Plant,
+    /// How many elements the plant had after each step, 0 to N, when the mesh options asked for
+    /// growth in time (`Skeleton::step_counts`); empty otherwise.
+    pub step_counts: Vec<f64>,
     /// How long each stage took, when the caller lent a clock.
     pub timings: Option<StageTimings>,
     /// The step the derivation went on from when it continued an earlier build's
@@ -118,12 +121,13 @@ impl Build {
             return;
         }
         let segments = self.plant.stats.segments;
-        let skeleton = match &self.model {
+        let mut skeleton: turtle::Skeleton = match &self.model {
             Some(model) => {
                 turtle::interpret_sized(model, self.derivation.turtle_string(), segments)
             }
             None => Default::default(),
         };
+        skeleton.step_counts = self.step_counts.clone();
         self.plant.set_skeleton(skeleton);
     }
 
@@ -178,7 +182,10 @@ pub(super) fn run_stages(
         seed: options.seed,
         time,
     };
-    // A continued derivation starts at the step its earlier build stopped at.
+    // A continued derivation starts at the step its earlier build stopped at; growth times count
+    // the elements of every step from the axiom, so a build that asks for them derives again.
+    let count = options.mesh.with_growth();
+    let from = from.filter(|_| !count);
     let from = from.and_then(|from| step_on::continuable(from, &model, &derive));
     result.continued_from = from.and_then(|f| f.resume.as_ref()).map(|r| r.steps);
     let first = result.continued_from.unwrap_or(0);
@@ -190,7 +197,7 @@ pub(super) fn run_stages(
             steps,
         })
     };
-    let derived = derive_stage(&model, derive, from, &mut result, &mut stepped);
+    let derived = derive_stage(&model, derive, from, count, &mut result, &mut stepped);
     watch.timings.derive = watch.lap();
     if let Some(None) = derived.as_ref().filter(|_| options.sketch) {
         watch.start(Stage::Interpret);
@@ -208,11 +215,12 @@ pub(super) fn run_stages(
         watch.timings.mesh = watch.lap();
     } else if let Some(adjustments) = derived {
         watch.start(Stage::Interpret);
-        let skeleton = turtle::interpret_adjusted(
+        let mut skeleton = turtle::interpret_adjusted(
             &model,
             result.derivation.turtle_string(),
             adjustments.as_ref(),
         );
+        skeleton.step_counts = result.step_counts.clone();
         watch.timings.interpret = watch.lap();
         if let Some(module) = skeleton.clamped {
             result

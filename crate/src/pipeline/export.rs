@@ -5,6 +5,7 @@
 use super::{build_with, Build, BuildOptions, Hooks, PlantEditor, Stage, StageTimings};
 use crate::branches::{BranchEdit, EditReport};
 use crate::diagnostics::Diagnostic;
+use crate::export::animation::Animation;
 use crate::export::{self, ExportedFile, Format};
 
 /// What to export.
@@ -18,6 +19,9 @@ pub struct ExportOptions {
     pub edits: Option<Vec<BranchEdit>>,
     /// An SVG's picture settings (the default for the other formats).
     pub look: export::svg::Look,
+    /// glTF only: the plant's growth in time as an animation (docs/LANGUAGE.md, "Growth in
+    /// time").
+    pub animation: Option<Animation>,
 }
 
 /// An export's files and what happened on the way.
@@ -40,6 +44,9 @@ pub enum ExportError {
     /// The grammar has errors: there is no plant to write. The build is returned for its
     /// diagnostics.
     Grammar(Box<Build>),
+    /// The growth animation would pass its limit ([`export::animation::MAX_TARGET_BYTES`]), or
+    /// was asked of another format than glTF: the message says which.
+    Animation(String),
 }
 
 /// Builds `source`, applies the edits, and writes the model; `hooks.progress` is told each stage
@@ -49,28 +56,59 @@ pub fn export(
     options: &ExportOptions,
     hooks: &mut Hooks,
 ) -> Result<Exported, ExportError> {
-    let build = build_with(source, &options.build, hooks);
+    let animation = match options.animation {
+        Some(_) if options.format != Format::Glb => {
+            return Err(ExportError::Animation(format!(
+                "the growth animation is written in glTF only, not in {}",
+                options.format.extension()
+            )))
+        }
+        a => a,
+    };
+    let mut build_options = options.build.clone();
+    build_options.mesh.growth |= animation.is_some();
+    let build = build_with(source, &build_options, hooks);
     if !build.ok() {
         return Err(ExportError::Grammar(Box::new(build)));
     }
+    let steps = build.derived_with.steps;
     let (diagnostics, timings) = (build.diagnostics, build.timings);
     let (plant, edits) = match &options.edits {
         Some(edits) => {
             hooks.start(Stage::ApplyEdits);
             let mut editor = PlantEditor::new(build.plant);
             let report = editor.apply_edits(edits);
-            (editor.into_plant(), Some(report))
+            let mut plant = editor.into_plant();
+            if animation.is_some() {
+                // The growth arrays of the edited plant: the whole mesh again.
+                plant.remesh(&build_options.mesh);
+            }
+            (plant, Some(report))
         }
         None => (build.plant, None),
     };
+    let keyframes = animation
+        .map(|a| a.keyframes(&plant.mesh, steps))
+        .transpose()
+        .map_err(ExportError::Animation)?;
     hooks.start(Stage::Write);
-    let files = export::export_with(
-        options.format,
-        &plant.mesh,
-        &plant.skeleton,
-        &options.stem,
-        &options.look,
-    );
+    let files = match keyframes {
+        Some(keyframes) => {
+            let scene = export::scene::Scene::new(&plant.mesh, &plant.skeleton);
+            vec![ExportedFile {
+                name: format!("{}.glb", options.stem),
+                bytes: export::gltf::write_animated(&scene, Some(&keyframes)),
+                mime: "model/gltf-binary",
+            }]
+        }
+        None => export::export_with(
+            options.format,
+            &plant.mesh,
+            &plant.skeleton,
+            &options.stem,
+            &options.look,
+        ),
+    };
     Ok(Exported {
         files,
         diagnostics,

@@ -48,6 +48,7 @@ pub(super) fn build_after(
             sides: fields.sides,
             smooth_all: fields.smooth_all,
             tubes: Some(plant.tubes_after_sketch(first)),
+            growth: fields.growth,
         };
         plant.remesh_timed(&view.mesh(), clock);
     }

@@ -38,6 +38,7 @@ pub fn export_model(
         Some(svg) => svg.look().map_err(|e| JsError::new(&e))?,
         None => export::svg::Look::default(),
     };
+    let animation = fields.animation();
     let stem = fields.name.unwrap_or_else(|| "plant".into());
     let options = pipeline::ExportOptions {
         build: fields.base.options(),
@@ -45,6 +46,7 @@ pub fn export_model(
         stem: stem.clone(),
         edits,
         look,
+        animation,
     };
     let mut tell = |p: Progress| {
         // Stage starts only: an export's progress is its stages.
@@ -64,8 +66,12 @@ pub fn export_model(
         clock: None,
         progress: Some(&mut tell),
     };
-    let exported = pipeline::export(source, &options, &mut hooks)
-        .map_err(|_| JsError::new("the grammar has errors: nothing to export"))?;
+    let exported = pipeline::export(source, &options, &mut hooks).map_err(|e| match e {
+        pipeline::ExportError::Grammar(_) => {
+            JsError::new("the grammar has errors: nothing to export")
+        }
+        pipeline::ExportError::Animation(message) => JsError::new(&message),
+    })?;
     // Several files go in one zip named after the format too: `fern-pov.zip`, `fern-obj.zip`.
     let file = export::bundle(exported.files, &format!("{stem}-{}", format.extension()))
         .ok_or_else(|| JsError::new("the export is larger than 4 GiB"))?;

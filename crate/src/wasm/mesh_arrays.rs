@@ -108,5 +108,24 @@ macro_rules! plant_mesh_getters {
             /// The module of the derived string that drew each segment of `segmentEnds`.
             segment_modules "segmentModules": Uint32Array = p.segment_modules();
         }
+
+        // Growth in time: the studio core only (feature `growth`, crate/Cargo.toml).
+        #[cfg(feature = "growth")]
+        #[wasm_bindgen]
+        impl $class {
+            /// With the `growth` option: the point each vertex (each line end, for lines) grows
+            /// from, 3 floats each; empty otherwise.
+            #[wasm_bindgen(js_name = "growthOrigins")]
+            pub fn growth_origins(&self) -> js_sys::Float32Array {
+                js_sys::Float32Array::from(&self.plant().mesh.growth_origins[..])
+            }
+
+            /// With the `growth` option: each vertex's growth times (t0, t1), 2 floats each, in
+            /// derivation steps; empty otherwise.
+            #[wasm_bindgen(js_name = "growthTimes")]
+            pub fn growth_times(&self) -> js_sys::Float32Array {
+                js_sys::Float32Array::from(&self.plant().mesh.growth_times[..])
+            }
+        }
     };
 }

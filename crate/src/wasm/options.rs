@@ -293,6 +293,8 @@ options_objects! { BUILD_TYPESCRIPT;
         "sketch" => sketch: flag;
         /// A sketch first, shown while the same call meshes the plant (the live preview of big plants).
         "sketchFirst" => sketch_first: SketchFirst;
+        /// The mesh carries its growth in time: `growthOrigins` and `growthTimes` (docs/LANGUAGE.md, "Growth in time").
+        "growth" => growth: flag;
     }
     /// The sketch a build shows before it meshes (`BuildOptions.sketchFirst`).
     "SketchFirst" => SketchFirstObject, SketchFirstFields {
@@ -311,6 +313,8 @@ options_objects! { BUILD_TYPESCRIPT;
         "smoothAll" => smooth_all: flag;
         /// False: no tubes, only leaves, polygons and spheres (the Lines mode draws the segments as lines).
         "tubes" => tubes: flag;
+        /// The mesh carries its growth in time: `growthOrigins` and `growthTimes`.
+        "growth" => growth: flag;
     }
 }
 
@@ -327,6 +331,12 @@ options_objects! { EXPORT_TYPESCRIPT;
         "edits" => edits: text;
         /// An SVG's picture settings (refused for the other formats).
         "svg" => svg: SvgLook;
+        /// glTF only: the plant's growth as a glTF animation (morph targets keyed in time; docs/LANGUAGE.md, "Growth in time").
+        "animate" => animate: flag;
+        /// With `animate`: seconds of animation per derivation step (default 1).
+        "secondsPerStep" => seconds_per_step: number;
+        /// With `animate`: morph targets per step, 1 to 16 (default 4).
+        "targetsPerStep" => targets_per_step: whole;
     }
     /// An SVG's picture settings: the CLI's `--background`, `--line-width`, `--size` and `--dpi`.
     "SvgLook" => SvgLookObject, SvgLookFields {
@@ -355,6 +365,7 @@ impl BuildOptionsFields {
             smooth_all: None,
             sketch: None,
             sketch_first: None,
+            growth: None,
         }
     }
 
@@ -366,6 +377,7 @@ impl BuildOptionsFields {
         });
         let sketch = self.sketch == Some(true) || self.sketch_first.is_some();
         let mut mesh = MeshOptions::view(self.sides, self.smooth_all);
+        mesh.growth = self.growth == Some(true);
         if sketch {
             mesh.max_vertices = 0;
         }
@@ -384,8 +396,21 @@ impl ViewOptionsFields {
     pub fn mesh(&self) -> MeshOptions {
         MeshOptions {
             tubes: self.tubes.unwrap_or(true),
+            growth: self.growth == Some(true),
             ..MeshOptions::view(self.sides, self.smooth_all)
         }
+    }
+}
+
+#[cfg(feature = "io")]
+impl ExportOptionsFields {
+    /// The growth animation asked for (`animate`), with its settings.
+    pub fn animation(&self) -> Option<export::animation::Animation> {
+        let defaults = export::animation::Animation::default();
+        (self.animate == Some(true)).then(|| export::animation::Animation {
+            seconds_per_step: self.seconds_per_step.unwrap_or(defaults.seconds_per_step),
+            targets_per_step: self.targets_per_step.unwrap_or(defaults.targets_per_step),
+        })
     }
 }
 
@@ -412,6 +437,7 @@ mod tests {
             "export interface BuildOptions {",
             "  iterations?: number;",
             "  smoothAll?: boolean;",
+            "  growth?: boolean;",
             "  sketchFirst?: SketchFirst;",
             "export interface SketchFirst {",
             "  minSegments: number;",

@@ -38,6 +38,13 @@ export interface ExportOptions extends BuildOptions {
   edits?: EditsDocument;
   /** An SVG's picture settings (the CLI's `--background`, `--line-width`, `--size`, `--dpi`); SVG only. */
   svg?: SvgLook;
+  /**
+   * glTF only: the plant's growth as a standard glTF animation (morph targets keyed in time, the
+   * CLI's `--animate`), `secondsPerStep` (default 1) and `targetsPerStep` (1 to 16, default 4).
+   */
+  animate?: boolean;
+  secondsPerStep?: number;
+  targetsPerStep?: number;
 }
 
 /**
@@ -54,8 +61,8 @@ export function exportModel(source: string, format: ModelFormat, options: Export
 
 /** The core's export options for `format` and `options`. */
 function coreOptions(format: ModelFormat, options: ExportOptions) {
-  const { iterations, seed, sides, smoothAll, name, edits, svg } = options;
-  return { format, name, iterations, seed, sides, smoothAll, edits: edits ? JSON.stringify(edits) : undefined, svg };
+  const { iterations, seed, sides, smoothAll, name, edits, svg, animate, secondsPerStep, targetsPerStep } = options;
+  return { format, name, iterations, seed, sides, smoothAll, edits: edits ? JSON.stringify(edits) : undefined, svg, animate, secondsPerStep, targetsPerStep };
 }
 
 /** Runs the core's export, telling `onProgress` each stage when given. */

@@ -1,0 +1,130 @@
+//! `meristem export FILE --frames N -o DIR` and `--at T -o OUT.svg`: the plant growing, as SVG
+//! pictures at growth times from 0 to N (docs/LANGUAGE.md, "Growth in time"), each framed on the
+//! whole plant so that the frames line up.
+
+use super::args::{svg_look, Args};
+use super::build::{print_diagnostics, print_timings};
+use meristem::export::{svg, Format};
+use meristem::mesh::{growth_schedule, skeleton_at};
+use meristem::pipeline::{self, Hooks};
+use meristem::BuildOptions;
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+/// True when `--at T` asks `export` for a picture of the growth at T (an SVG output) rather than
+/// the plant at T in a file of another format (a timed grammar at T, any other at its whole steps).
+pub fn at_as_picture(args: &Args) -> bool {
+    let svg = |name: &str| Format::from_extension(name) == Some(Format::Svg);
+    let extension = args
+        .output
+        .as_ref()
+        .and_then(|o| o.extension())
+        .and_then(|e| e.to_str());
+    args.at.is_some() && args.format.as_deref().or(extension).is_some_and(svg)
+}
+
+/// Most frames one export writes.
+pub const MAX_FRAMES: u32 = 10_000;
+
+/// The pictures to write: each file and its growth time, for `steps` steps; or why not.
+fn frames_of(args: &Args, output: PathBuf, steps: u32) -> Result<Vec<(PathBuf, f32)>, String> {
+    let n = steps as f32;
+    match (args.frames, args.at) {
+        (Some(_), Some(_)) => Err("--frames and --at: give one of them".into()),
+        (Some(count), None) => {
+            if !(1..=MAX_FRAMES).contains(&count) {
+                return Err(format!("--frames {count}: give 1 to {MAX_FRAMES} frames"));
+            }
+            let digits = (count - 1).max(1).ilog10() as usize + 1;
+            let width = digits.max(3);
+            Ok((0..count)
+                .map(|k| {
+                    let t = if count == 1 {
+                        n
+                    } else {
+                        n * k as f32 / (count - 1) as f32
+                    };
+                    (output.join(format!("frame_{k:0width$}.svg")), t)
+                })
+                .collect())
+        }
+        (None, Some(t)) if t.is_finite() => Ok(vec![(output, (t as f32).clamp(-1.0, n))]),
+        (None, Some(t)) => Err(format!("--at {t}: give a growth time, a number of steps")),
+        (None, None) => Ok(Vec::new()),
+    }
+}
+
+/// The format and picture settings of frames: SVG only.
+fn frame_look(args: &Args) -> Result<svg::Look, String> {
+    if let Some(name) = &args.format {
+        if Format::from_extension(name) != Some(Format::Svg) {
+            return Err(format!(
+                "frames of the growth are SVG pictures, not '{name}' (the glTF animation is \
+                 --animate)"
+            ));
+        }
+    }
+    svg_look(args, Format::Svg)
+}
+
+/// Writes the frames; the exit code.
+pub fn export_frames(
+    args: &Args,
+    source: &str,
+    mut options: BuildOptions,
+    hooks: &mut Hooks,
+) -> ExitCode {
+    let fail = |message: String| {
+        eprintln!("meristem: {message}");
+        ExitCode::from(2)
+    };
+    let Some(output) = args.output.clone() else {
+        return fail("frames need an output: -o DIR with --frames, -o OUT.svg with --at".into());
+    };
+    let look = match frame_look(args) {
+        Ok(look) => look,
+        Err(e) => return fail(e),
+    };
+    // The pictures draw the skeleton: the mesh needs no triangles, only its growth. The whole
+    // plant is that of its steps; a timed grammar is derived again at each frame's time.
+    options.mesh.growth = true;
+    options.mesh.max_vertices = 0;
+    options.time = None;
+    let build = pipeline::build_with(source, &options, hooks);
+    print_timings(args, build.timings);
+    print_diagnostics(&args.file, &build.located_diagnostics(source));
+    if !build.ok() {
+        return ExitCode::from(1);
+    }
+    let frames = match frames_of(args, output.clone(), build.derived_with.steps) {
+        Ok(frames) => frames,
+        Err(e) => return fail(e),
+    };
+    if args.frames.is_some() {
+        if let Err(e) = std::fs::create_dir_all(&output) {
+            return fail(format!("cannot create {}: {e}", output.display()));
+        }
+    }
+    let (plant, schedule) = (&build.plant, growth_schedule(&build.plant.skeleton));
+    let timed = build
+        .model
+        .as_ref()
+        .is_some_and(|m| !m.settings.terminal_ages.is_empty());
+    for (path, t) in frames {
+        let at = if timed {
+            let time = Some(f64::from(t.max(0.0)));
+            let options = BuildOptions {
+                time,
+                ..options.clone()
+            };
+            pipeline::build(source, &options).plant.skeleton
+        } else {
+            skeleton_at(&plant.skeleton, &schedule, t)
+        };
+        let text = svg::write_framed(&plant.mesh, &at, Some(&plant.skeleton), &look);
+        if let Err(e) = std::fs::write(&path, text) {
+            return fail(format!("cannot write {}: {e}", path.display()));
+        }
+    }
+    ExitCode::SUCCESS
+}
