@@ -1,13 +1,16 @@
 // The plant's materials in the view: lit or unlit, textured (bark and leaf) once both images are
 // there and while the toggle is on, and the stand-in that hides the tubes in the Lines mode.
 import { MeshBasicMaterial, type Material } from 'three';
+import { growingMaterial, WHOLE, type GrowthUniform } from './growth';
 import { litPlantMaterial, unlitPlantMaterial } from './scene-setup';
 import { loadTexture, texturedMaterials, type TexturedMaterials } from './textures';
 
 /** The plant's materials and the choice between them. */
 export class PlantMaterials {
-  readonly lit = litPlantMaterial();
-  readonly unlit = unlitPlantMaterial();
+  /** The growth time every material of the plant (and its lines) is drawn at (./growth.ts). */
+  readonly growthTime: GrowthUniform = { value: WHOLE };
+  readonly lit = growingMaterial(litPlantMaterial(), this.growthTime);
+  readonly unlit = growingMaterial(unlitPlantMaterial(), this.growthTime);
   /** Stands in for the tubes' material in the Lines mode: their triangles are not drawn. */
   private readonly hiddenTubes = new MeshBasicMaterial({ visible: false });
   /**
@@ -40,6 +43,7 @@ export class PlantMaterials {
         after,
       );
     this.textured = texturedMaterials(texture('bark'), texture('leaf'), this.lit, this.unlit);
+    for (const material of [this.textured.lit[0], this.textured.lit[1], this.textured.unlit[0], this.textured.unlit[1]]) growingMaterial(material, this.growthTime);
   }
 
   /** Whether the plant is drawn textured (the toggle is on and both images are there). */

@@ -11,6 +11,7 @@ import type { Bounds, GpuArrays, MeshBuffers } from '../core';
 import { CameraRig, type Projection, type ViewPose } from './camera-rig';
 import { loadOrbitControls } from './camera-controls';
 import { GroundGrid } from './ground-grid';
+import { WHOLE } from './growth';
 import { BezierHandles } from './handles';
 import { highlightSegments, type Rgb } from './highlight';
 import { scenePalette } from './palette';
@@ -37,6 +38,9 @@ export type ProjectionMode = 'auto' | Projection;
  */
 export type RenderMode = 'auto' | 'lines' | 'tubes';
 
+/** Where the camera looks while the growth plays: at the whole (final) plant, or following what has grown. */
+export type GrowthCamera = 'final' | 'follow';
+
 /**
  * Shows one plant at a time in a container element. The view follows the plant: each new plant is
  * framed, unless the user has moved the camera since the last fit (then {@link onRefitHint}'s
@@ -54,7 +58,7 @@ export class PlantView {
   // (The parts that make materials are made in this order, as before the split: three.js sorts
   // what it draws by the materials' order of making.)
   private readonly materials = new PlantMaterials();
-  private readonly shown = new ShownPlant(this.materials.lit);
+  private readonly shown = new ShownPlant(this.materials.lit, this.materials.growthTime);
   private readonly upload: PlantUpload;
   private readonly grid = new GroundGrid(this.scene);
   /** Highlighted modules, drawn over the plant (which is dimmed meanwhile). */
@@ -88,6 +92,11 @@ export class PlantView {
   private readonly controlsLoaded: Promise<void>;
   /** The pictures' code (./snapshot.ts), once asked for (see {@link pictures}). */
   private picturesLoaded: Promise<typeof Snapshot> | undefined;
+  /** The growth time shown (null: the whole plant), see {@link setGrowthTime}. */
+  private growthAt: number | null = null;
+  private growthCamera: GrowthCamera = 'final';
+  /** Degrees the camera was turned about the plant since it was last framed (a turntable's). */
+  private turned = 0;
 
   /** `assetBase`: the site's root, where the textures are (default: the page's address). */
   constructor(
@@ -261,6 +270,7 @@ export class PlantView {
     const lines2D = this.view2D?.showPlant(asLines ? mesh : undefined) ?? false;
     this.shown.lines.visible = !lines2D;
     this.shown.replace(plant);
+    this.showGrowth(null); // a new plant shows whole until a growth time is set again
     // Whether WebGL draws them, said with them: its geometry of segments drawn in 2D is not made.
     this.segmentLines.show(asLines ? null : mesh, !this.segmentsIn2D);
     this.applyMaterial();
@@ -274,6 +284,64 @@ export class PlantView {
     // What is drawn in 2D, drawn now with the camera framed on it, not in the frame: the WebGL
     // frame comes on screen no later for it (the frame redraws it only if the camera or size changed).
     this.draw2D();
+  }
+
+  /**
+   * Shows the plant on screen at growth time `t` (in derivation steps, 0 … {@link growthSpan}; see
+   * ./growth.ts), or whole (`null`, the default after every new plant). One uniform changes and a
+   * frame is asked for: no build, no upload. A plant without growth arrays is shown whole. With
+   * the camera {@link setGrowthCamera following} the growth, the camera frames what has grown.
+   */
+  setGrowthTime(t: number | null): void {
+    const time = t === null || !Number.isFinite(t) ? null : t;
+    if (time === this.growthAt) return;
+    this.showGrowth(time);
+    if (time !== null && this.growthCamera === 'follow' && this.shown.growthSpan !== null) {
+      const box = this.shown.grownBox(time, this.usesLines);
+      if (!box.isEmpty()) {
+        const turned = this.turned;
+        this.frame(this.boundsOf(box));
+        this.turn(turned); // the turntable's angle kept
+      }
+    }
+    this.requestRender();
+  }
+
+  /** The growth time shown, or null (the whole plant). */
+  get growthTime(): number | null {
+    return this.growthAt;
+  }
+
+  private showGrowth(t: number | null): void {
+    this.growthAt = t;
+    this.materials.growthTime.value = t ?? WHOLE;
+    this.container.dataset.growthTime = t === null ? '' : String(t);
+  }
+
+  /** N when the plant on screen carries growth arrays (it can be shown at any t in [0, N]), else null. */
+  growthSpan(): number | null {
+    return this.upload.pending ? null : this.shown.growthSpan;
+  }
+
+  /** Where the camera looks while the growth is shown: at the whole plant (`final`) or at what has grown (`follow`). */
+  setGrowthCamera(mode: GrowthCamera): void {
+    this.growthCamera = mode;
+    if (mode === 'final') this.frame();
+    else if (this.growthAt !== null) {
+      const t = this.growthAt;
+      this.growthAt = null;
+      this.setGrowthTime(t);
+    }
+  }
+
+  /** Turns the camera `degrees` about the plant's vertical axis (a turntable; flat plants stay face-on). */
+  turn(degrees: number): void {
+    this.turned = (this.turned + degrees) % 360;
+    this.cameras.turn(degrees);
+  }
+
+  private boundsOf(box: Box3): Bounds {
+    return [box.min.toArray(), box.max.toArray()];
   }
 
   /** Frames the new plant on screen, or keeps the camera (and hints at a refit if the user moved it). */
@@ -433,6 +501,7 @@ export class PlantView {
    */
   frame(bounds?: Bounds): void {
     const box = bounds ? new Box3(new Vector3(...bounds[0]), new Vector3(...bounds[1])) : this.visibleBox();
+    this.turned = 0;
     this.cameras.frame(box);
     this.placeGrid(box);
     this.requestRender();

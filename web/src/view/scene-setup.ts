@@ -28,11 +28,15 @@ export function unlitPlantMaterial(): MeshBasicMaterial {
  * moves half a pixel outwards along its normal, in view space, and is projected again. One pixel's
  * size at the vertex's depth is 2·w / (P[1][1] · height in pixels): w is the depth for a
  * perspective camera and 1 for an orthographic one. Lighting and fog keep the vertex's own place
- * (three.js computed them from `mvPosition` before this).
+ * (three.js computed them from `mvPosition` before this). An element not grown yet at the growth
+ * time (./growth.ts) stays a point, not a pixel-wide speck.
  */
 const HALF_A_PIXEL_OUT = `
   vec3 outwards = normalMatrix * normal;
   float outwardsLength = length(outwards);
+#ifdef MERISTEM_GROWTH
+  if (meristemGrown == 0.0) outwardsLength = 0.0; // not grown yet (./growth.ts): not even a speck
+#endif
   if (outwardsLength > 0.0) {
     float pixel = 2.0 * gl_Position.w / (projectionMatrix[1][1] * meristemPixelsHigh);
     mvPosition.xyz += outwards * (0.5 * pixel / outwardsLength);

@@ -3,6 +3,7 @@
 import { Box3, BufferGeometry, LineBasicMaterial, LineSegments, Mesh, type Material } from 'three';
 import type { MeshBuffers } from '../core';
 import type { BufferPool, GpuGeometry } from './gpu-geometry';
+import { growingMaterial, growthBoxes, growthSpanOf, type GrowingMesh, type GrowthUniform } from './growth';
 import { plantGeometry, pointsBox, setBox } from './plant-geometry';
 import type { IncomingPlant, PlantUpload } from './plant-upload';
 
@@ -25,12 +26,16 @@ export class ShownPlant {
   flat = false;
   /** The box of the plant's segments (drawn as lines in the Lines mode), once asked for. */
   private segmentsBox: Box3 | undefined;
+  /** N when the plant carries growth arrays (./growth.ts), else null. */
+  growthSpan: number | null = null;
+  /** The boxes of the plant grown at each whole step (see {@link growthBoxes}), once asked for. */
+  private grownBoxes: Box3[] | undefined;
 
-  /** `material`: the plant's until {@link material} is set. */
-  constructor(material: Material) {
+  /** `material`: the plant's until {@link material} is set; `growthTime`: the time its lines grow to. */
+  constructor(material: Material, growthTime: GrowthUniform) {
     this.drawn = new Mesh<BufferGeometry, Material | Material[]>(new BufferGeometry(), material);
     this.pickable = new Mesh<BufferGeometry, Material | Material[]>(new BufferGeometry(), material);
-    this.lines = new LineSegments(new BufferGeometry(), new LineBasicMaterial({ vertexColors: true }));
+    this.lines = new LineSegments(new BufferGeometry(), growingMaterial(new LineBasicMaterial({ vertexColors: true }), growthTime));
   }
 
   /** Draws the plant (and picks in it) with `material` (one, or one per material group). */
@@ -57,6 +62,25 @@ export class ShownPlant {
     oldLines.dispose();
     this.flat = flat;
     this.segmentsBox = undefined;
+    const growing = mesh as GrowingMesh;
+    const entries = (asLines ? mesh.lines.length : mesh.positions.length) / 3;
+    this.growthSpan = growing.growthTimes?.length === entries * 2 && entries > 0 ? growthSpanOf(growing.growthTimes) : null;
+    this.grownBoxes = undefined;
+  }
+
+  /**
+   * The box of the plant grown by growth time `t` (the whole plant's without growth arrays): between
+   * two steps, the boxes of both steps' plants blended, so the camera that follows it moves smoothly.
+   */
+  grownBox(t: number, usesLines: boolean): Box3 {
+    const span = this.growthSpan;
+    if (span === null) return this.box(usesLines);
+    const geometry = this.drawn.geometry.getAttribute('position') ? this.pickable.geometry : this.lines.geometry;
+    const points = geometry.getAttribute('position')?.array as Float32Array | undefined;
+    const times = geometry.getAttribute('growthTime')?.array as Float32Array | undefined;
+    if (!points || !times) return this.box(usesLines);
+    this.grownBoxes ??= growthBoxes(points, times, span);
+    return blendedBox(this.grownBoxes, t);
   }
 
   /** Whether a plant drawn as lines, one pixel wide, is on screen (a plant too large to mesh, a sketch). */
@@ -118,4 +142,15 @@ export class ShownPlant {
     this.lines.geometry.dispose();
     this.lines.material.dispose();
   }
+}
+
+/** The box at `t` between `boxes[⌊t⌋]` and `boxes[⌈t⌉]` (clamped to the steps there are), corner by corner. */
+export function blendedBox(boxes: readonly Box3[], t: number): Box3 {
+  const last = boxes.length - 1;
+  const at = Math.min(last, Math.max(0, t));
+  const before = boxes[Math.floor(at)];
+  const after = boxes[Math.ceil(at)];
+  if (before.isEmpty()) return after.clone();
+  const f = at - Math.floor(at);
+  return new Box3(before.min.clone().lerp(after.min, f), before.max.clone().lerp(after.max, f));
 }
