@@ -1,8 +1,8 @@
 import { Box3, BufferGeometry, LineBasicMaterial, ShaderLib, Vector3 } from 'three';
 import { describe, expect, it } from 'vitest';
-import { addGrowthAttributes, growingMaterial, growthBoxes, growthSpanOf, grownFraction, injectGrowth, WHOLE } from './growth';
+import { blendedBox, growingMaterial, growthBoxes, grownFraction, injectGrowth } from './growth';
+import { addGrowthAttributes, growthSpanOf, WHOLE } from './growth-arrays';
 import { litPlantMaterial } from './scene-setup';
-import { blendedBox } from './shown-plant';
 
 describe('grownFraction (the smoothstep of the interfaces)', () => {
   it('is 0 before t0, 1 after t1, and smooth between', () => {
@@ -54,6 +54,11 @@ describe('injectGrowth', () => {
     expect(shader.uniforms.meristemPixelsHigh).toBeDefined();
     expect(shader.uniforms.meristemGrowthTime).toBe(uniform);
     expect(shader.vertexShader).toMatch(/#ifdef MERISTEM_GROWTH\s+if \(meristemGrown == 0\.0\) outwardsLength = 0\.0;/);
+    // Made to grow twice (a material shared by two lists), it is injected once.
+    expect(growingMaterial(growing, uniform)).toBe(growing);
+    const again = { vertexShader: ShaderLib.standard.vertexShader, fragmentShader: '', uniforms: {} as Record<string, unknown> };
+    growing.onBeforeCompile(again as never, undefined as never);
+    expect(again.vertexShader.match(/attribute vec2 growthTime;/g)).toHaveLength(1);
     // A line material (the fallback's) takes it too.
     const line = growingMaterial(new LineBasicMaterial(), uniform);
     const lineShader = { vertexShader: ShaderLib.basic.vertexShader, fragmentShader: '', uniforms: {} as Record<string, unknown> };

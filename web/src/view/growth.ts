@@ -3,31 +3,11 @@
 // crate/src/mesh/buffers.rs), and one uniform, the growth time t, places it. Showing another t
 // changes that uniform: no derivation, no meshing, no upload. The formula is the interfaces' one:
 // `origin + (position − origin) · g(clamp((t − t0) / (t1 − t0), 0, 1))`, g the smoothstep; its
-// JavaScript mirror ({@link grownFraction}) is what the tests and the framing read.
-import { Box3, BufferAttribute, type BufferGeometry, type Material, Vector3 } from 'three';
-import type { MeshBuffers } from '../core';
-
-/** The growth arrays a mesh may carry (asked for by `MeshOptions.growth`; absent or empty if not). */
-export interface GrowthArrays {
-  /** 3 floats a vertex (or a line end): the point it grows from. */
-  growthOrigins?: Float32Array;
-  /** 2 floats a vertex (or a line end): its growth times (t0, t1), −1 ≤ t0 < t1 ≤ N. */
-  growthTimes?: Float32Array;
-}
-
-/** A mesh, perhaps with its growth arrays. */
-export type GrowingMesh = MeshBuffers & GrowthArrays;
-
-/**
- * The uniform's value when no growth time is set: past every t1, so every vertex is where its
- * position says (a vertex without growth attributes reads times (0, 0) and is whole too).
- */
-export const WHOLE = 1e9;
-
-/** A uniform three.js reads (the growth time, shared by the plant's materials). */
-export interface GrowthUniform {
-  value: number;
-}
+// JavaScript mirror ({@link grownFraction}) is what the tests read. This module loads with the
+// first growth time shown (the first load's budget, tests/browser/first-load.test.ts); what every
+// plant needs is in ./growth-arrays.ts.
+import { Box3, type Material, Vector3 } from 'three';
+import type { GrowthUniform } from './growth-arrays';
 
 /** The name of the time uniform in the shaders. */
 const UNIFORM = 'meristemGrowthTime';
@@ -77,9 +57,11 @@ export function injectGrowth(shader: { vertexShader: string; uniforms: Record<st
 /**
  * Makes `material` grow its vertices with the time `uniform` (a geometry without growth
  * attributes is drawn whole), keeping its own `onBeforeCompile` (which runs first). Its programs
- * are cached apart from the same material without growth.
+ * are cached apart from the same material without growth. A material made to grow already is left as it is.
  */
 export function growingMaterial<M extends Material>(material: M, uniform: GrowthUniform): M {
+  if (material.userData.meristemGrowth === uniform) return material; // (grows already)
+  material.userData.meristemGrowth = uniform;
   const before = material.onBeforeCompile.bind(material);
   material.onBeforeCompile = (shader, renderer) => {
     before(shader, renderer);
@@ -91,28 +73,9 @@ export function growingMaterial<M extends Material>(material: M, uniform: Growth
 }
 
 /**
- * Adds the growth attributes to `geometry` when `origins` and `times` fit its `count` vertices (3
- * and 2 floats each); returns whether they did.
- */
-export function addGrowthAttributes(geometry: BufferGeometry, count: number, { growthOrigins, growthTimes }: GrowthArrays): boolean {
-  if (count === 0 || growthOrigins?.length !== count * 3 || growthTimes?.length !== count * 2) return false;
-  geometry.setAttribute('growthOrigin', new BufferAttribute(growthOrigins, 3));
-  geometry.setAttribute('growthTime', new BufferAttribute(growthTimes, 2));
-  return true;
-}
-
-/** N, the growth time at which the whole plant is grown: the last t1, up to a whole step; null without times. */
-export function growthSpanOf(times: Float32Array | undefined): number | null {
-  if (!times || times.length < 2) return null;
-  let last = 0;
-  for (let k = 1; k < times.length; k += 2) if (times[k] > last) last = times[k];
-  return Math.max(0, Math.ceil(last - 1e-6));
-}
-
-/**
  * The boxes of the plant grown at each whole step 0 … `span` (3-float `points` with their
- * `times`): a point counts from the step its growth ends. What "follow the growth" frames, between
- * two steps the box of the later one.
+ * `times`): a point counts from the step its growth ends. What "follow the growth" frames
+ * ({@link blendedBox} between two steps).
  */
 export function growthBoxes(points: Float32Array, times: Float32Array, span: number): Box3[] {
   const boxes = Array.from({ length: span + 1 }, () => new Box3());
@@ -123,4 +86,15 @@ export function growthBoxes(points: Float32Array, times: Float32Array, span: num
   }
   for (let n = 1; n <= span; n++) boxes[n].union(boxes[n - 1]);
   return boxes;
+}
+
+/** The box at `t` between `boxes[⌊t⌋]` and `boxes[⌈t⌉]` (clamped to the steps there are), corner by corner. */
+export function blendedBox(boxes: readonly Box3[], t: number): Box3 {
+  const last = boxes.length - 1;
+  const at = Math.min(last, Math.max(0, t));
+  const before = boxes[Math.floor(at)];
+  const after = boxes[Math.ceil(at)];
+  if (before.isEmpty()) return after.clone();
+  const f = at - Math.floor(at);
+  return new Box3(before.min.clone().lerp(after.min, f), before.max.clone().lerp(after.max, f));
 }

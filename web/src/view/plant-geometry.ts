@@ -1,13 +1,13 @@
 // The plant's triangle mesh as three.js BufferGeometries.
 import { Box3, BufferAttribute, BufferGeometry, Sphere, Vector3 } from 'three';
 import type { Bounds, GpuArrays, MeshBuffers } from '../core';
-import { addGrowthAttributes, type GrowthArrays } from './growth';
+import { addGrowthAttributes, type GrowthArrays } from './growth-arrays';
 
 /**
  * Wraps the core's mesh arrays (no copy: they are JavaScript-owned already) in a BufferGeometry
  * with `position`, `normal`, `color` (linear RGB) attributes and an index, bounds computed (the
  * sphere from the box: one pass over a million vertices instead of three), and the growth
- * attributes when the mesh has its growth arrays (./growth.ts). With `gpu`, its packed
+ * attributes when the mesh has its growth arrays (./growth-arrays.ts). With `gpu`, its packed
  * normals and colours are used instead of the mesh's floats. `bounds`, when given, is a box around
  * every position (a build's `stats.bounds`, which the core computed), and no pass is made.
  */

@@ -1,7 +1,8 @@
 // The plant's materials in the view: lit or unlit, textured (bark and leaf) once both images are
 // there and while the toggle is on, and the stand-in that hides the tubes in the Lines mode.
 import { MeshBasicMaterial, type Material } from 'three';
-import { growingMaterial, WHOLE, type GrowthUniform } from './growth';
+import type * as Growth from './growth';
+import { WHOLE, type GrowthUniform } from './growth-arrays';
 import { litPlantMaterial, unlitPlantMaterial } from './scene-setup';
 import { loadTexture, texturedMaterials, type TexturedMaterials } from './textures';
 
@@ -9,8 +10,8 @@ import { loadTexture, texturedMaterials, type TexturedMaterials } from './textur
 export class PlantMaterials {
   /** The growth time every material of the plant (and its lines) is drawn at (./growth.ts). */
   readonly growthTime: GrowthUniform = { value: WHOLE };
-  readonly lit = growingMaterial(litPlantMaterial(), this.growthTime);
-  readonly unlit = growingMaterial(unlitPlantMaterial(), this.growthTime);
+  readonly lit = litPlantMaterial();
+  readonly unlit = unlitPlantMaterial();
   /** Stands in for the tubes' material in the Lines mode: their triangles are not drawn. */
   private readonly hiddenTubes = new MeshBasicMaterial({ visible: false });
   /**
@@ -43,7 +44,6 @@ export class PlantMaterials {
         after,
       );
     this.textured = texturedMaterials(texture('bark'), texture('leaf'), this.lit, this.unlit);
-    for (const material of [this.textured.lit[0], this.textured.lit[1], this.textured.unlit[0], this.textured.unlit[1]]) growingMaterial(material, this.growthTime);
   }
 
   /** Whether the plant is drawn textured (the toggle is on and both images are there). */
@@ -60,6 +60,17 @@ export class PlantMaterials {
     const material = this.texturesOn ? textured : this.lighting ? this.lit : this.unlit;
     const kinds = Array.isArray(material) ? material : [material, material, material];
     return lines ? [this.hiddenTubes, kinds[1], kinds[2]] : material;
+  }
+
+  /**
+   * Makes every material of the plant, and `more` (its lines'), grow with {@link growthTime}
+   * (./growth.ts, loaded then): their programs are made again for the next frame.
+   */
+  grow({ growingMaterial }: typeof Growth, more: Material[]): void {
+    for (const material of new Set([...this.all, ...more])) {
+      growingMaterial(material, this.growthTime);
+      material.needsUpdate = true;
+    }
   }
 
   /** Every material the plant may be drawn with (whose programs can be compiled ahead). */

@@ -11,7 +11,7 @@ import type { Bounds, GpuArrays, MeshBuffers } from '../core';
 import { CameraRig, type Projection, type ViewPose } from './camera-rig';
 import { loadOrbitControls } from './camera-controls';
 import { GroundGrid } from './ground-grid';
-import { WHOLE } from './growth';
+import { WHOLE } from './growth-arrays';
 import { BezierHandles } from './handles';
 import { highlightSegments, type Rgb } from './highlight';
 import { scenePalette } from './palette';
@@ -26,6 +26,7 @@ import { View2D } from './view-2d';
 import { FrameLoop, compileAhead, maxPictureSide, viewRenderer } from './view-renderer';
 import { ViewPicking } from './view-picking';
 import type * as Snapshot from './snapshot';
+import type * as Growth from './growth';
 
 const DARK_SCHEME = '(prefers-color-scheme: dark)';
 
@@ -58,7 +59,7 @@ export class PlantView {
   // (The parts that make materials are made in this order, as before the split: three.js sorts
   // what it draws by the materials' order of making.)
   private readonly materials = new PlantMaterials();
-  private readonly shown = new ShownPlant(this.materials.lit, this.materials.growthTime);
+  private readonly shown = new ShownPlant(this.materials.lit);
   private readonly upload: PlantUpload;
   private readonly grid = new GroundGrid(this.scene);
   /** Highlighted modules, drawn over the plant (which is dimmed meanwhile). */
@@ -95,6 +96,9 @@ export class PlantView {
   /** The growth time shown (null: the whole plant), see {@link setGrowthTime}. */
   private growthAt: number | null = null;
   private growthCamera: GrowthCamera = 'final';
+  /** The growth's shaders (./growth.ts), loaded by the first growth time shown. */
+  private growthCode: typeof Growth | undefined;
+  private growthLoading: Promise<unknown> | undefined;
   /** Degrees the camera was turned about the plant since it was last framed (a turntable's). */
   private turned = 0;
 
@@ -296,8 +300,9 @@ export class PlantView {
     const time = t === null || !Number.isFinite(t) ? null : t;
     if (time === this.growthAt) return;
     this.showGrowth(time);
-    if (time !== null && this.growthCamera === 'follow' && this.shown.growthSpan !== null) {
-      const box = this.shown.grownBox(time, this.usesLines);
+    if (time !== null && !this.growthCode) this.loadGrowth();
+    if (time !== null && this.growthCode && this.growthCamera === 'follow' && this.shown.growthSpan !== null) {
+      const box = this.shown.grownBox(time, this.usesLines, this.growthCode);
       if (!box.isEmpty()) {
         const turned = this.turned;
         this.frame(this.boundsOf(box));
@@ -315,7 +320,33 @@ export class PlantView {
   private showGrowth(t: number | null): void {
     this.growthAt = t;
     this.materials.growthTime.value = t ?? WHOLE;
-    this.container.dataset.growthTime = t === null ? '' : String(t);
+  }
+
+  /**
+   * Loads the growth's shaders (a chunk of its own, which no first plant needs) and makes the
+   * plant's materials grow with the growth time; the time shown meanwhile is shown again then.
+   */
+  private loadGrowth(): void {
+    this.growthLoading ??= import('./growth').then(
+      (code) => {
+        this.growthCode = code;
+        this.materials.grow(code, [this.shown.lines.material]);
+        const t = this.growthAt;
+        this.growthAt = null;
+        this.setGrowthTime(t);
+        this.requestRender();
+      },
+      (error: unknown) => {
+        this.growthLoading = undefined; // tried again by the next time shown
+        console.error('The growth could not load:', error);
+      },
+    );
+  }
+
+  /** Settles once a growth time can be drawn (its shaders loaded); for tests and pictures. */
+  get growthReady(): Promise<unknown> {
+    this.loadGrowth();
+    return this.growthLoading!;
   }
 
   /** N when the plant on screen carries growth arrays (it can be shown at any t in [0, N]), else null. */

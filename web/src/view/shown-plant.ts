@@ -3,7 +3,8 @@
 import { Box3, BufferGeometry, LineBasicMaterial, LineSegments, Mesh, type Material } from 'three';
 import type { MeshBuffers } from '../core';
 import type { BufferPool, GpuGeometry } from './gpu-geometry';
-import { growingMaterial, growthBoxes, growthSpanOf, type GrowingMesh, type GrowthUniform } from './growth';
+import type * as Growth from './growth';
+import { growthSpanOf, type GrowingMesh } from './growth-arrays';
 import { plantGeometry, pointsBox, setBox } from './plant-geometry';
 import type { IncomingPlant, PlantUpload } from './plant-upload';
 
@@ -31,11 +32,11 @@ export class ShownPlant {
   /** The boxes of the plant grown at each whole step (see {@link growthBoxes}), once asked for. */
   private grownBoxes: Box3[] | undefined;
 
-  /** `material`: the plant's until {@link material} is set; `growthTime`: the time its lines grow to. */
-  constructor(material: Material, growthTime: GrowthUniform) {
+  /** `material`: the plant's until {@link material} is set. */
+  constructor(material: Material) {
     this.drawn = new Mesh<BufferGeometry, Material | Material[]>(new BufferGeometry(), material);
     this.pickable = new Mesh<BufferGeometry, Material | Material[]>(new BufferGeometry(), material);
-    this.lines = new LineSegments(new BufferGeometry(), growingMaterial(new LineBasicMaterial({ vertexColors: true }), growthTime));
+    this.lines = new LineSegments(new BufferGeometry(), new LineBasicMaterial({ vertexColors: true }));
   }
 
   /** Draws the plant (and picks in it) with `material` (one, or one per material group). */
@@ -72,7 +73,7 @@ export class ShownPlant {
    * The box of the plant grown by growth time `t` (the whole plant's without growth arrays): between
    * two steps, the boxes of both steps' plants blended, so the camera that follows it moves smoothly.
    */
-  grownBox(t: number, usesLines: boolean): Box3 {
+  grownBox(t: number, usesLines: boolean, { growthBoxes, blendedBox }: typeof Growth): Box3 {
     const span = this.growthSpan;
     if (span === null) return this.box(usesLines);
     const geometry = this.drawn.geometry.getAttribute('position') ? this.pickable.geometry : this.lines.geometry;
@@ -144,13 +145,3 @@ export class ShownPlant {
   }
 }
 
-/** The box at `t` between `boxes[⌊t⌋]` and `boxes[⌈t⌉]` (clamped to the steps there are), corner by corner. */
-export function blendedBox(boxes: readonly Box3[], t: number): Box3 {
-  const last = boxes.length - 1;
-  const at = Math.min(last, Math.max(0, t));
-  const before = boxes[Math.floor(at)];
-  const after = boxes[Math.ceil(at)];
-  if (before.isEmpty()) return after.clone();
-  const f = at - Math.floor(at);
-  return new Box3(before.min.clone().lerp(after.min, f), before.max.clone().lerp(after.max, f));
-}
