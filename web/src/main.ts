@@ -87,6 +87,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   await nextFrame();
   firstLoadDone();
   const vocabularyRead = panels.load();
+  void inspector.contexts.load(); // the String tab
   const downloadsInstalled = loadDownloads(parts, branchEdits);
   const editorLoaded = editor.loaded;
   await firstBuild;

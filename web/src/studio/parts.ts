@@ -5,7 +5,7 @@ import type { GrammarStore, KeptTexts } from '../share';
 import type { PlantView } from '../view';
 import type { SliderPanel } from '../plant-controls';
 import type { ViewOptions } from './controls';
-import type { ContextView, DerivationControls, LazyDerivationView } from './derivation';
+import type { DerivationControls, LazyContextView, LazyDerivationView } from './derivation';
 import type { TextKeeper, TextOpening } from './files';
 import type { HelpOpener, Notice, StudioElements } from './page';
 import type { LivePreview } from './preview';
@@ -28,7 +28,7 @@ export interface StudioParts extends KeptWork {
   help: HelpOpener;
   editor: LazyGrammarEditor;
   sliders: SliderPanel;
-  contexts: ContextView;
+  contexts: LazyContextView;
   derivationView: LazyDerivationView;
   preview: LivePreview;
   opening: TextOpening;

@@ -2,5 +2,5 @@
 // (the context view) and the Derivation tab (loaded with its tab: derivation-loader.ts).
 export { DerivationControls } from './derivation-controls';
 export { createInspector, type Inspector } from './inspector';
-export type { ContextView } from './context-view';
+export type { LazyContextView } from './context-loader';
 export type { LazyDerivationView } from './derivation-loader';
