@@ -31,7 +31,7 @@ describe('injectGrowth', () => {
     const text = shader.vertexShader;
     expect(text).toMatch(/attribute vec3 growthOrigin;/);
     expect(text).toMatch(/attribute vec2 growthTime;/);
-    expect(text.indexOf('#define MERISTEM_GROWTH')).toBeLessThan(text.indexOf('void main()'));
+    expect(text.indexOf('float meristemGrown = 1.0;')).toBeLessThan(text.indexOf('void main()'));
     const begin = text.indexOf('#include <begin_vertex>');
     const placed = text.indexOf('transformed = growthOrigin + (transformed - growthOrigin) * meristemGrown;');
     expect(begin).toBeGreaterThan(0);
@@ -53,7 +53,8 @@ describe('injectGrowth', () => {
     // The half-pixel push of atLeastAPixelWide ran first and is switched off for ungrown elements.
     expect(shader.uniforms.meristemPixelsHigh).toBeDefined();
     expect(shader.uniforms.meristemGrowthTime).toBe(uniform);
-    expect(shader.vertexShader).toMatch(/#ifdef MERISTEM_GROWTH\s+if \(meristemGrown == 0\.0\) outwardsLength = 0\.0;/);
+    expect(shader.vertexShader).toMatch(/if \(outwardsLength > 0\.0 && meristemGrown > 0\.0\)/);
+    expect(shader.vertexShader.match(/float meristemGrown = 1\.0;/g)).toHaveLength(1);
     // Made to grow twice (a material shared by two lists), it is injected once.
     expect(growingMaterial(growing, uniform)).toBe(growing);
     const again = { vertexShader: ShaderLib.standard.vertexShader, fragmentShader: '', uniforms: {} as Record<string, unknown> };

@@ -8,17 +8,16 @@
 // plant needs is in ./growth-arrays.ts.
 import { Box3, type Material, Vector3 } from 'three';
 import type { GrowthUniform } from './growth-arrays';
+import { GROWN } from './scene-setup';
 
 /** The name of the time uniform in the shaders. */
 const UNIFORM = 'meristemGrowthTime';
 
 /** Declarations the vertex shader needs, before its `main`. */
 export const GROWTH_DECLARATIONS = /* glsl */ `
-#define MERISTEM_GROWTH
 attribute vec3 growthOrigin;
 attribute vec2 growthTime;
 uniform float ${UNIFORM};
-float meristemGrown = 1.0;
 `;
 
 /**
@@ -46,12 +45,15 @@ export function grownFraction(t: number, t0: number, t1: number): number {
  * with `uniform` as the time; throws if three.js's chunks changed and the growth no longer fits.
  */
 export function injectGrowth(shader: { vertexShader: string; uniforms: Record<string, unknown> }, uniform: GrowthUniform): void {
-  const begin = '#include <begin_vertex>';
-  if (!shader.vertexShader.includes(begin) || !shader.vertexShader.includes('void main()')) {
+  // (After the line that includes three.js's begin_vertex chunk.)
+  const begin = /^.*<begin_vertex>.*$/m;
+  if (!begin.test(shader.vertexShader) || !shader.vertexShader.includes('void main()')) {
     throw new Error("three.js's vertex shader changed: the growth no longer fits it");
   }
   shader.uniforms[UNIFORM] = uniform;
-  shader.vertexShader = GROWTH_DECLARATIONS + shader.vertexShader.replace(begin, `${begin}\n${GROWTH_PLACEMENT}`);
+  // `meristemGrown` is declared by the plant's materials (./scene-setup.ts), else here.
+  const grown = shader.vertexShader.includes(GROWN) ? '' : GROWN;
+  shader.vertexShader = `${GROWTH_DECLARATIONS}${grown}\n${shader.vertexShader.replace(begin, (line) => `${line}\n${GROWTH_PLACEMENT}`)}`;
 }
 
 /**

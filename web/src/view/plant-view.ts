@@ -96,6 +96,8 @@ export class PlantView {
   /** The growth time shown (null: the whole plant), see {@link setGrowthTime}. */
   private growthAt: number | null = null;
   private growthCamera: GrowthCamera = 'final';
+  /** Who hears of each plant put on screen ({@link onPlantShown}). */
+  private readonly plantListeners = new Set<() => void>();
   /** The growth's shaders (./growth.ts), loaded by the first growth time shown. */
   private growthCode: typeof Growth | undefined;
   private growthLoading: Promise<unknown> | undefined;
@@ -288,6 +290,16 @@ export class PlantView {
     // What is drawn in 2D, drawn now with the camera framed on it, not in the frame: the WebGL
     // frame comes on screen no later for it (the frame redraws it only if the camera or size changed).
     this.draw2D();
+    for (const listener of this.plantListeners) listener();
+  }
+
+  /**
+   * Calls `listener` each time a new plant is on screen (all of it on the GPU; shown whole, see
+   * {@link setGrowthTime}); returns the function that stops it.
+   */
+  onPlantShown(listener: () => void): () => void {
+    this.plantListeners.add(listener);
+    return () => this.plantListeners.delete(listener);
   }
 
   /**

@@ -34,15 +34,18 @@ export function unlitPlantMaterial(): MeshBasicMaterial {
 const HALF_A_PIXEL_OUT = `
   vec3 outwards = normalMatrix * normal;
   float outwardsLength = length(outwards);
-#ifdef MERISTEM_GROWTH
-  if (meristemGrown == 0.0) outwardsLength = 0.0; // not grown yet (./growth.ts): not even a speck
-#endif
-  if (outwardsLength > 0.0) {
+  if (outwardsLength > 0.0 && meristemGrown > 0.0) {
     float pixel = 2.0 * gl_Position.w / (projectionMatrix[1][1] * meristemPixelsHigh);
     mvPosition.xyz += outwards * (0.5 * pixel / outwardsLength);
     gl_Position = projectionMatrix * mvPosition;
   }
 }`;
+
+/**
+ * The fraction of its size a vertex has grown to (./growth.ts sets it; 1 without growth): a vertex
+ * not grown yet is not moved out, so an element not there yet is not drawn as a speck.
+ */
+export const GROWN = 'float meristemGrown = 1.0;';
 
 const viewport = new Vector4();
 
@@ -79,7 +82,7 @@ export function atLeastAPixelWide<M extends Material>(material: M): M {
   const pixelsHigh = { value: 1 };
   material.onBeforeCompile = (shader) => {
     shader.uniforms.meristemPixelsHigh = pixelsHigh;
-    shader.vertexShader = `uniform float meristemPixelsHigh;\n${shader.vertexShader.replace(/\}\s*$/, HALF_A_PIXEL_OUT)}`;
+    shader.vertexShader = `uniform float meristemPixelsHigh;\n${GROWN}\n${shader.vertexShader.replace(/\}\s*$/, HALF_A_PIXEL_OUT)}`;
   };
   material.onBeforeRender = (renderer) => {
     pixelsHigh.value = Math.max(1, renderer.getCurrentViewport(viewport).w / supersampling);
