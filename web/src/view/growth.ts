@@ -6,8 +6,10 @@
 // JavaScript mirror ({@link grownFraction}) is what the tests read. This module loads with the
 // first growth time shown (the first load's budget, tests/browser/first-load.test.ts); what every
 // plant needs is in ./growth-arrays.ts.
-import { Box3, type Material, Vector3 } from 'three';
+import { Box3, type BufferGeometry, type Material, Vector3 } from 'three';
+import type { Bounds } from '../core';
 import type { GrowthUniform } from './growth-arrays';
+import type { ShownPlant } from './shown-plant';
 import { GROWN } from './scene-setup';
 
 /** The name of the time uniform in the shaders. */
@@ -99,4 +101,23 @@ export function blendedBox(boxes: readonly Box3[], t: number): Box3 {
   if (before.isEmpty()) return after.clone();
   const f = at - Math.floor(at);
   return new Box3(before.min.clone().lerp(after.min, f), before.max.clone().lerp(after.max, f));
+}
+
+/** The boxes of each step of a plant's geometry, made once (see {@link growthBoxes}). */
+const stepBoxes = new WeakMap<BufferGeometry, Box3[]>();
+
+/**
+ * The bounds of the plant on screen grown by growth time `t`, blended between the steps around it
+ * (what a camera following the growth frames); null without growth arrays or without anything grown.
+ */
+export function grownBounds(shown: ShownPlant, t: number): Bounds | null {
+  const span = shown.growthSpan;
+  const geometry = shown.drawn.geometry.getAttribute('position') ? shown.pickable.geometry : shown.lines.geometry;
+  const points = geometry.getAttribute('position')?.array as Float32Array | undefined;
+  const times = geometry.getAttribute('growthTime')?.array as Float32Array | undefined;
+  if (span === null || !points || !times) return null;
+  let boxes = stepBoxes.get(geometry);
+  if (!boxes) stepBoxes.set(geometry, (boxes = growthBoxes(points, times, span)));
+  const box = blendedBox(boxes, t);
+  return box.isEmpty() ? null : [box.min.toArray(), box.max.toArray()];
 }

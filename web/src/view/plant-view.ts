@@ -313,13 +313,11 @@ export class PlantView {
     if (time === this.growthAt) return;
     this.showGrowth(time);
     if (time !== null && !this.growthCode) this.loadGrowth();
-    if (time !== null && this.growthCode && this.growthCamera === 'follow' && this.shown.growthSpan !== null) {
-      const box = this.shown.grownBox(time, this.usesLines, this.growthCode);
-      if (!box.isEmpty()) {
-        const turned = this.turned;
-        this.frame(this.boundsOf(box));
-        this.turn(turned); // the turntable's angle kept
-      }
+    const bounds = time !== null && this.growthCamera === 'follow' ? this.growthCode?.grownBounds(this.shown, time) : null;
+    if (bounds) {
+      const turned = this.turned;
+      this.frame(bounds);
+      this.turn(turned); // the turntable's angle kept
     }
     this.requestRender();
   }
@@ -381,10 +379,6 @@ export class PlantView {
   turn(degrees: number): void {
     this.turned = (this.turned + degrees) % 360;
     this.cameras.turn(degrees);
-  }
-
-  private boundsOf(box: Box3): Bounds {
-    return [box.min.toArray(), box.max.toArray()];
   }
 
   /** Frames the new plant on screen, or keeps the camera (and hints at a refit if the user moved it). */

@@ -3,7 +3,6 @@
 import { Box3, BufferGeometry, LineBasicMaterial, LineSegments, Mesh, type Material } from 'three';
 import type { MeshBuffers } from '../core';
 import type { BufferPool, GpuGeometry } from './gpu-geometry';
-import type * as Growth from './growth';
 import { growthSpanOf, type GrowingMesh } from './growth-arrays';
 import { plantGeometry, pointsBox, setBox } from './plant-geometry';
 import type { IncomingPlant, PlantUpload } from './plant-upload';
@@ -27,10 +26,8 @@ export class ShownPlant {
   flat = false;
   /** The box of the plant's segments (drawn as lines in the Lines mode), once asked for. */
   private segmentsBox: Box3 | undefined;
-  /** N when the plant carries growth arrays (./growth.ts), else null. */
+  /** N when the plant carries growth arrays (./growth-arrays.ts), else null. */
   growthSpan: number | null = null;
-  /** The boxes of the plant grown at each whole step (see {@link growthBoxes}), once asked for. */
-  private grownBoxes: Box3[] | undefined;
 
   /** `material`: the plant's until {@link material} is set. */
   constructor(material: Material) {
@@ -66,22 +63,6 @@ export class ShownPlant {
     const growing = mesh as GrowingMesh;
     const entries = (asLines ? mesh.lines.length : mesh.positions.length) / 3;
     this.growthSpan = growing.growthTimes?.length === entries * 2 && entries > 0 ? growthSpanOf(growing.growthTimes) : null;
-    this.grownBoxes = undefined;
-  }
-
-  /**
-   * The box of the plant grown by growth time `t` (the whole plant's without growth arrays): between
-   * two steps, the boxes of both steps' plants blended, so the camera that follows it moves smoothly.
-   */
-  grownBox(t: number, usesLines: boolean, { growthBoxes, blendedBox }: typeof Growth): Box3 {
-    const span = this.growthSpan;
-    if (span === null) return this.box(usesLines);
-    const geometry = this.drawn.geometry.getAttribute('position') ? this.pickable.geometry : this.lines.geometry;
-    const points = geometry.getAttribute('position')?.array as Float32Array | undefined;
-    const times = geometry.getAttribute('growthTime')?.array as Float32Array | undefined;
-    if (!points || !times) return this.box(usesLines);
-    this.grownBoxes ??= growthBoxes(points, times, span);
-    return blendedBox(this.grownBoxes, t);
   }
 
   /** Whether a plant drawn as lines, one pixel wide, is on screen (a plant too large to mesh, a sketch). */
