@@ -59,7 +59,7 @@ describe('the growth timeline', () => {
     const half = await canvasPicture(page, 'timeline-1.24a-t2.5.png');
     await scrubTo(3);
     const three = await canvasPicture(page, 'timeline-1.24a-t3.png');
-    expect(await page.getByTestId('timeline-time').textContent()).toBe('t 3.00 of 4: step 3');
+    expect(await page.getByTestId('timeline-time').textContent()).toBe('t 3.00 of 4 · step 3');
     const [a, b, c] = [plantShare(two), plantShare(half), plantShare(three)];
     expect(a, 'something is drawn at t = 2').toBeGreaterThan(0.002);
     expect(b, 't = 2.5 has grown past t = 2').toBeGreaterThan(a * 1.1);

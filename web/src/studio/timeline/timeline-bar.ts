@@ -26,10 +26,9 @@ export function timeText(t: number): string {
  */
 export function growthLabel(t: number, span: number | null): string {
   if (span === null) return `t ${timeText(t)}`;
-  if (t >= span) return `t ${timeText(span)} of ${span}: the whole plant`;
+  if (t >= span) return `t ${timeText(span)} of ${span} · whole plant`;
   const step = Math.ceil(t);
-  const whole = t === step;
-  return `t ${timeText(t)} of ${span}: ${whole ? `step ${step}` : `step ${step} growing`}`;
+  return `t ${timeText(t)} of ${span} · step ${step}${t === step ? '' : ' growing'}`;
 }
 
 function make<K extends keyof HTMLElementTagNameMap>(tag: K, attributes: Record<string, string>, text?: string): HTMLElementTagNameMap[K] {
