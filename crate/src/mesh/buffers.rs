@@ -2,7 +2,7 @@
 
 use glam::DVec3;
 
-/// The mesh as ten flat arrays. **This is the one place the layout is defined**; the wasm
+/// The mesh as twelve flat arrays. **This is the one place the layout is defined**; the wasm
 /// boundary and the TypeScript `MeshBuffers` type refer here.
 ///
 /// - `positions`: `f32` × 3 per vertex (x, y, z), in model units, Y up.
@@ -36,6 +36,18 @@ use glam::DVec3;
 /// - `lines`, `line_colors`: only when the model is too large to mesh (`MeshOptions::max_vertices`):
 ///   `f32` × 3 per line end (two per segment) and `f32` × 3 colour per end; the triangle arrays
 ///   are then empty. Line `i` is `Skeleton::segments[i]` (its colour index is that segment's).
+/// - `growth_origins`, `growth_times`: only when [`MeshOptions::growth`](super::MeshOptions) is
+///   set (empty otherwise): the plant growing in time, growth time `t` counted in derivation
+///   steps (the plant of step n is the plant at t = n). `growth_origins`: `f32` × 3 per vertex,
+///   the point the vertex grows from, in the units and frame of `positions` (the start of the
+///   segment that drew it, a polygon's first point, a leaf's origin, a sphere's centre).
+///   `growth_times`: `f32` × 2 per vertex, `(t0, t1)` with `−1 ≤ t0 < t1 ≤ N` (N the steps
+///   derived; elements the axiom's plant already has: `(−1, 0)`). At time `t` a vertex is drawn at
+///   `origin + (position − origin) · g(clamp((t − t0) / (t1 − t0), 0, 1))`, `g(x) = x·x·(3 − 2x)`
+///   (smoothstep; [`grown_position`](super::grown_position)), normals unchanged. A tube's rings
+///   are not shared between segments then: each segment has its own start ring. In the lines
+///   fallback the two arrays follow `lines`: one entry per line end. How `t0` and `t1` are chosen:
+///   [`growth_schedule`](super::growth_schedule).
 /// - `width_unit`: model units per width unit (what `#width 1` measured across), for writers that
 ///   draw widths themselves (SVG).
 ///
@@ -45,7 +57,7 @@ use glam::DVec3;
 ///
 /// Memory: a tube of `sides` sides costs `sides + 1` vertices per joint (44 bytes each: position,
 /// normal, colour, uv) and `2·sides` triangles per segment (24 bytes each), plus two caps per axis;
-/// with the default 6 sides, about 370 bytes per segment.
+/// with the default 6 sides, about 370 bytes per segment. The growth arrays add 20 bytes per vertex.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct MeshBuffers {
     pub positions: Vec<f32>,
@@ -58,6 +70,8 @@ pub struct MeshBuffers {
     pub material_ranges: Vec<u32>,
     pub lines: Vec<f32>,
     pub line_colors: Vec<f32>,
+    pub growth_origins: Vec<f32>,
+    pub growth_times: Vec<f32>,
     pub width_unit: f64,
 }
 
@@ -106,6 +120,7 @@ impl MeshBuffers {
         if !self.lines.len().is_multiple_of(6) || self.line_colors.len() != self.lines.len() {
             return Err("lines must hold two 3-float ends per segment, each with a colour".into());
         }
+        self.check_growth()?;
         if let Some(i) = self.indices.iter().find(|&&i| i as usize >= vertices) {
             return Err(format!("index {i} out of range ({vertices} vertices)"));
         }
@@ -145,6 +160,33 @@ impl MeshBuffers {
             }
         }
         Ok(())
+    }
+
+    /// The growth arrays are empty, or hold an entry per vertex (per line end in the lines
+    /// fallback), finite, with `−1 ≤ t0 < t1`.
+    fn check_growth(&self) -> Result<(), String> {
+        if self.growth_times.is_empty() && self.growth_origins.is_empty() {
+            return Ok(());
+        }
+        let points = if self.positions.is_empty() {
+            self.lines.len() / 3
+        } else {
+            self.vertex_count()
+        };
+        if self.growth_origins.len() != 3 * points || self.growth_times.len() != 2 * points {
+            return Err("growth arrays must hold an origin and two times per vertex".into());
+        }
+        if !self.growth_origins.iter().all(|v| v.is_finite()) {
+            return Err("a growth origin is not finite".into());
+        }
+        match self
+            .growth_times
+            .chunks_exact(2)
+            .position(|t| !(t[0] >= -1.0 && t[0] < t[1] && t[1].is_finite()))
+        {
+            Some(v) => Err(format!("growth times of vertex {v} are not −1 ≤ t0 < t1")),
+            None => Ok(()),
+        }
     }
 
     /// (first triangle, value) pairs at increasing triangles inside the mesh, the first at 0.

@@ -2,7 +2,8 @@
 //! `tube.rs`, flats and spheres here), recording where each landed ([`MeshParts`]).
 
 use super::chains::{chains, Chains};
-use super::grow::{push, push_range};
+use super::grow::{append, push, push_range};
+use super::{growth_schedule, GrowthSchedule};
 use super::{parts, polygon, segment_lines, sphere, surfaces, tube};
 use super::{resolve_width_unit, ChainPart, MeshBuffers, MeshOptions, MeshParts, Part};
 use super::{MATERIAL_BARK, MATERIAL_LEAF, MATERIAL_PLAIN};
@@ -34,6 +35,9 @@ fn mesh_of(
 ) -> (MeshBuffers, MeshParts) {
     let unit = resolve_width_unit(skeleton, options.width_unit);
     let mut builder = Builder::new(options, unit);
+    if options.growth {
+        builder.growth = Some(growth_schedule(skeleton));
+    }
     let mut parts = MeshParts {
         segment_chain: if with_parts {
             vec![parts::NO_CHAIN; skeleton.segments.len()]
@@ -43,7 +47,7 @@ fn mesh_of(
         ..MeshParts::default()
     };
     let estimate = builder.estimate(skeleton);
-    if estimate > options.max_vertices {
+    if estimate > builder.vertex_budget() {
         builder.lines(skeleton);
         parts.lines = true;
         return (builder.mesh, parts);
@@ -82,16 +86,20 @@ fn mesh_of(
     for i in 0..skeleton.polygons.len() {
         let before = builder.mark();
         builder.polygon(skeleton, i);
+        builder.grow(skeleton.segments.len() + i);
         parts.polygons.push(builder.part_since(before));
     }
     for i in 0..skeleton.surfaces.len() {
         let before = builder.mark();
         builder.surface(skeleton, i);
+        builder.grow(skeleton.segments.len() + skeleton.polygons.len() + i);
         parts.surfaces.push(builder.part_since(before));
     }
     for i in 0..skeleton.spheres.len() {
         let before = builder.mark();
         builder.sphere_of(skeleton, i);
+        let flats = skeleton.polygons.len() + skeleton.surfaces.len();
+        builder.grow(skeleton.segments.len() + flats + i);
         parts.spheres.push(builder.part_since(before));
     }
     (builder.mesh, parts)
@@ -113,6 +121,8 @@ pub(crate) struct Builder<'a> {
     /// The material kind the next `range` call stands for.
     pub(super) material: u32,
     pub(super) scratch: tube::TubeScratch,
+    /// When the mesh carries its growth in time ([`MeshOptions::growth`]): each element's.
+    pub(super) growth: Option<GrowthSchedule>,
 }
 
 impl<'a> Builder<'a> {
@@ -133,7 +143,35 @@ impl<'a> Builder<'a> {
             element: parts::NO_CHAIN,
             material: MATERIAL_BARK,
             scratch: tube::TubeScratch::default(),
+            growth: None,
         }
+    }
+
+    /// The vertices the mesh may have: `max_vertices`, or fewer with the growth arrays, whose
+    /// 20 bytes per vertex count against it (a vertex has 44 bytes without them).
+    fn vertex_budget(&self) -> usize {
+        if self.growth.is_some() {
+            self.options.max_vertices / 64 * 44
+        } else {
+            self.options.max_vertices
+        }
+    }
+
+    /// Gives the vertices written since the last call the growth of element `element` (see
+    /// [`GrowthSchedule::elements`]), when the mesh carries growth.
+    #[inline]
+    pub(super) fn grow(&mut self, element: usize) {
+        let Some(schedule) = &self.growth else {
+            return;
+        };
+        let Some(g) = schedule.elements.get(element) else {
+            return;
+        };
+        let mesh = &mut self.mesh;
+        let new = mesh.vertex_count() - mesh.growth_times.len() / 2;
+        let o = [g.origin.x as f32, g.origin.y as f32, g.origin.z as f32];
+        append(&mut mesh.growth_origins, new, |_| o);
+        append(&mut mesh.growth_times, new, |_| [g.t0, g.t1]);
     }
 
     /// The position of the next vertex, triangle and element range.
@@ -205,8 +243,10 @@ impl<'a> Builder<'a> {
         // close only axes that branch at their end, a few of the segments: counting one for every
         // segment would send ABOP 1.24d at n = 7 (116,050 segments, 1.3 M vertices meshed) to the
         // lines fallback. The arrays grow past this when a plant needs it.
+        // With growth, every segment has its own start ring.
+        let own_rings = 2 + usize::from(self.growth.is_some());
         let tubes = if self.options.tubes {
-            skeleton.segments.len() * (rings_per_segment + 2) * (self.sides + 1)
+            skeleton.segments.len() * (rings_per_segment + own_rings) * (self.sides + 1)
         } else {
             0
         };
@@ -301,6 +341,14 @@ impl<'a> Builder<'a> {
         let lines = segment_lines(skeleton);
         self.mesh.lines = lines.ends;
         self.mesh.line_colors = lines.colors;
+        if let Some(schedule) = &self.growth {
+            let mesh = &mut self.mesh;
+            for g in &schedule.elements[..skeleton.segments.len().min(schedule.elements.len())] {
+                let o = [g.origin.x as f32, g.origin.y as f32, g.origin.z as f32];
+                append(&mut mesh.growth_origins, 2, |_| o);
+                append(&mut mesh.growth_times, 2, |_| [g.t0, g.t1]);
+            }
+        }
     }
 }
 

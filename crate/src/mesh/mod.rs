@@ -9,7 +9,7 @@
 //! The files: `buffers.rs` ([`MeshBuffers`], the one definition of the arrays' layout),
 //! `options.rs` ([`MeshOptions`]), `width.rs` ([`WidthUnit`]: widths to model units), `chains.rs`
 //! (the axes that become tubes), `build.rs` (the builder: [`build_mesh`]), `grow.rs` (how the
-//! arrays grow), `tube.rs` (axes as tubes), `curve.rs`, `polygon.rs` and `monotone.rs`
+//! arrays grow), `growth.rs` (growth in time: when each element grows, the mesh at a time), `tube.rs` (axes as tubes), `curve.rs`, `polygon.rs` and `monotone.rs`
 //! (triangulation), `surfaces.rs`, `sphere.rs`, `lines.rs` (segments as lines), `pack.rs` (normals
 //! and colours packed for the GPU), `parts.rs` (one element re-meshed alone).
 
@@ -18,6 +18,7 @@ mod build;
 mod chains;
 pub mod curve;
 mod grow;
+mod growth;
 mod lines;
 mod monotone;
 mod options;
@@ -32,6 +33,9 @@ mod width;
 pub use buffers::{MeshBuffers, MATERIAL_BARK, MATERIAL_LEAF, MATERIAL_PLAIN};
 pub use build::{build_mesh, build_mesh_with_parts};
 pub use chains::{joint_key, Chains};
+pub use growth::{
+    grown_position, growth_factor, growth_schedule, mesh_at, skeleton_at, Growth, GrowthSchedule,
+};
 pub use lines::{segment_colors, segment_ends, segment_lines, segment_modules, SegmentLines};
 pub use options::{MeshOptions, MAX_SIDES, MIN_SIDES};
 pub use pack::{normal_samples, pack_colors, pack_normals};

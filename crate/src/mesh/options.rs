@@ -24,6 +24,10 @@ pub struct MeshOptions {
     /// Mesh the segments as tubes (true), or leave them out: the studio's Lines mode draws the
     /// segments as lines and needs the mesh only for leaves, polygons and spheres.
     pub tubes: bool,
+    /// Also write each vertex's growth in time (`MeshBuffers::growth_origins`, `growth_times`;
+    /// docs/LANGUAGE.md, "Growth in time"): 20 bytes more per vertex, counted against
+    /// `max_vertices`.
+    pub growth: bool,
 }
 
 impl Default for MeshOptions {
@@ -36,6 +40,7 @@ impl Default for MeshOptions {
             sphere_segments: 12,
             max_vertices: 4_000_000,
             tubes: true,
+            growth: false,
         }
     }
 }

@@ -25,6 +25,9 @@ pub(super) struct TubeScratch {
     /// One ring's directions from the axis, a side each and the seam's (side 0 again).
     radials: Vec<DVec3>,
     rings: Vec<u32>,
+    /// With growth: the first vertex of the ring each quad ends at (a joint's ring is written
+    /// twice, [`Builder::rings`]); empty otherwise (the quads end at `rings`).
+    ends: Vec<u32>,
     offsets: Vec<DVec3>,
     outs: Vec<DVec3>,
 }
@@ -53,6 +56,42 @@ impl<'a> Chain<'a> {
     fn iter(&self) -> impl Iterator<Item = &'a Segment> + 'a {
         let segments = &self.skeleton.segments;
         self.chain.iter().map(move |&i| &segments[i as usize])
+    }
+}
+
+/// One ring of a tube, ready to write.
+struct Ring<'a> {
+    point: DVec3,
+    /// Directions from the axis: a side each and the seam's (side 0 again).
+    radials: &'a [DVec3],
+    radius: f64,
+    v: f32,
+    color: [f32; 3],
+}
+
+impl Ring<'_> {
+    /// Writes the ring's `sides + 1` vertices; returns the first. Each array grows once per ring
+    /// (as `Builder::vertex` writes them, in the same arithmetic: a call per vertex and array
+    /// costs more in wasm); u runs once around, the seam at u = 1.
+    fn write(&self, mesh: &mut super::MeshBuffers, sides: usize) -> u32 {
+        let first = mesh.vertex_count() as u32;
+        let count = sides + 1;
+        let (radials, radius, point) = (self.radials, self.radius, self.point);
+        append(&mut mesh.positions, count, |j| {
+            let p = point + radials[j] * radius;
+            [p.x as f32, p.y as f32, p.z as f32]
+        });
+        append(&mut mesh.normals, count, |j| {
+            let r = radials[j];
+            [r.x as f32, r.y as f32, r.z as f32]
+        });
+        let (v, sides32) = (self.v, sides as f32);
+        append(&mut mesh.uvs, count, |j| {
+            [if j < sides { j as f32 / sides32 } else { 1.0 }, v]
+        });
+        let c = self.color;
+        append(&mut mesh.colors, count, |_| c);
+        first
     }
 }
 
@@ -157,6 +196,8 @@ impl Builder<'_> {
         let sides = self.sides;
         let rings = &mut scratch.rings;
         rings.clear();
+        scratch.ends.clear();
+        let (growth, chain) = (self.growth.is_some(), segments.chain);
         let unit = self.unit;
         let circumference = |w: f64| (std::f64::consts::PI * w * unit).max(1e-12);
         let mut v = 0.0f64;
@@ -171,30 +212,31 @@ impl Builder<'_> {
             let radius = 0.5 * sample.width * self.unit;
             let c = segments.skeleton.color(segments.nth(sample.segment).color);
             let first = self.mesh.vertex_count() as u32;
-            // The ring's vertices: each array grown once per ring (as `vertex` writes them, in
-            // the same arithmetic: a call per vertex and array costs more in wasm), one per side
-            // from the builder's sin/cos table, and the seam: side 0 again, at u = 1.
+            // One per side from the builder's sin/cos table, and the seam: side 0 again, at u = 1.
             let radials = &mut scratch.radials;
             radials.clear();
             for j in 0..=sides {
                 let (sin, cos) = self.ring[if j < sides { j } else { 0 }];
                 radials.push(n * cos + b * sin);
             }
-            let mesh = &mut self.mesh;
-            let count = sides + 1;
-            append(&mut mesh.positions, count, |j| {
-                let p = sample.point + radials[j] * radius;
-                [p.x as f32, p.y as f32, p.z as f32]
-            });
-            append(&mut mesh.normals, count, |j| {
-                let r = radials[j];
-                [r.x as f32, r.y as f32, r.z as f32]
-            });
-            let (v32, sides32) = (v as f32, sides as f32);
-            append(&mut mesh.uvs, count, |j| {
-                [if j < sides { j as f32 / sides32 } else { 1.0 }, v32]
-            });
-            append(&mut mesh.colors, count, |_| c);
+            let ring = Ring {
+                point: sample.point,
+                radials,
+                radius,
+                v: v as f32,
+                color: c,
+            };
+            // With growth, a joint's ring is written twice: as the end of the segment before it
+            // (growing with it) and as the start of the next.
+            let segment = chain[sample.segment] as usize;
+            if growth && k > 0 && samples[k - 1].segment != sample.segment {
+                scratch.ends.push(ring.write(&mut self.mesh, sides));
+                self.grow(chain[samples[k - 1].segment] as usize);
+            } else if growth {
+                scratch.ends.push(first);
+            }
+            let first = ring.write(&mut self.mesh, sides);
+            self.grow(segment);
             rings.push(first);
         }
     }
@@ -211,6 +253,7 @@ impl Builder<'_> {
         let TubeScratch {
             samples,
             rings,
+            ends,
             offsets,
             outs,
             ..
@@ -229,12 +272,13 @@ impl Builder<'_> {
                 skeleton.color(first.color),
                 true,
             );
+            self.grow(chain[0] as usize);
         }
         for k in 0..rings.len() - 1 {
             let segment = segments.nth(samples[k].segment);
             self.element = chain[samples[k].segment];
             self.range(segment.module, segment.color);
-            let (a0, b0) = (rings[k], rings[k + 1]);
+            let (a0, b0) = (rings[k], *ends.get(k + 1).unwrap_or(&rings[k + 1]));
             append(&mut self.mesh.indices, n as usize, |j| {
                 let (j, next) = (j as u32, j as u32 + 1);
                 let (a, b, c, d) = (a0 + j, a0 + next, b0 + j, b0 + next);
@@ -252,6 +296,7 @@ impl Builder<'_> {
         } else {
             self.cap(point, tangent, rings[last], c, false);
         }
+        self.grow(chain[chain.len() - 1] as usize);
     }
 
     /// A rounded end closing a tube: a quarter circle of rings from the last ring to a point on

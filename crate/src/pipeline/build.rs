@@ -51,6 +51,9 @@ pub struct Build {
     /// what every step did (apices growing and stopped per third, rewritings).
     pub growth: Option<GrowthRecord>,
     pub plant: Plant,
+    /// How many elements the plant had after each step, 0 to N, when the mesh options asked for
+    /// growth in time (`Skeleton::step_counts`); empty otherwise.
+    pub step_counts: Vec<f64>,
     /// How long each stage took, when the caller lent a clock.
     pub timings: Option<StageTimings>,
 }
@@ -110,12 +113,13 @@ impl Build {
             return;
         }
         let segments = self.plant.stats.segments;
-        let skeleton = match &self.model {
+        let mut skeleton: turtle::Skeleton = match &self.model {
             Some(model) => {
                 turtle::interpret_sized(model, self.derivation.turtle_string(), segments)
             }
             None => Default::default(),
         };
+        skeleton.step_counts = self.step_counts.clone();
         self.plant.set_skeleton(skeleton);
     }
 
@@ -173,7 +177,8 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Watch<'_, '_>) -
         steps,
         seed: options.seed,
     };
-    let derived = derive_stage(&model, derive, &mut result, &mut stepped);
+    let count = options.mesh.growth;
+    let derived = derive_stage(&model, derive, count, &mut result, &mut stepped);
     watch.timings.derive = watch.lap();
     if let Some(None) = derived.as_ref().filter(|_| options.sketch) {
         watch.start(Stage::Interpret);
@@ -191,11 +196,12 @@ fn run_stages(source: &str, options: &BuildOptions, watch: &mut Watch<'_, '_>) -
         watch.timings.mesh = watch.lap();
     } else if let Some(adjustments) = derived {
         watch.start(Stage::Interpret);
-        let skeleton = turtle::interpret_adjusted(
+        let mut skeleton = turtle::interpret_adjusted(
             &model,
             result.derivation.turtle_string(),
             adjustments.as_ref(),
         );
+        skeleton.step_counts = result.step_counts.clone();
         watch.timings.interpret = watch.lap();
         if let Some(module) = skeleton.clamped {
             result

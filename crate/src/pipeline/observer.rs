@@ -11,10 +11,11 @@ use crate::turtle;
 
 /// Derives (with growth following, when the grammar has growth attributes) into `result`,
 /// telling `stepped` each step done; returns the turtle's adjustments, or `None` when derivation
-/// failed.
+/// failed. `count`: also count the elements of every step ([`Build::step_counts`]).
 pub(super) fn derive_stage(
     model: &Model,
     options: DeriveOptions,
+    count: bool,
     result: &mut Build,
     stepped: &mut dyn FnMut(u32),
 ) -> Option<Option<Adjustments>> {
@@ -22,9 +23,14 @@ pub(super) fn derive_stage(
         model,
         growth: GrowthTracker::new(model, options.steps),
         stepped: Some(stepped),
+        counter: count.then(|| StepCounter::new(model)),
     };
     match derive::derive_tracked(model, &options, &mut observer) {
         Ok(mut derivation) => {
+            if let Some(mut counter) = observer.counter.take() {
+                counter.count(&derivation.string);
+                result.step_counts = counter.counts;
+            }
             result.diagnostics.append(&mut derivation.warnings);
             let adjustments = observer
                 .growth
@@ -52,6 +58,7 @@ pub(super) fn trace(
         model,
         growth: GrowthTracker::new(model, options.steps),
         stepped: None,
+        counter: None,
     };
     derive::derive_traced(model, options, &mut observer).map(|(_, steps)| steps)
 }
@@ -64,6 +71,59 @@ struct StageObserver<'m, 's> {
     model: &'m Model,
     growth: Option<GrowthTracker<'m>>,
     stepped: Option<&'s mut dyn FnMut(u32)>,
+    /// When the build counts each step's elements (for growth in time).
+    counter: Option<StepCounter>,
+}
+
+/// The elements of each step's plant, counted on the derived strings: the modules that draw
+/// (a segment, a polygon, a leaf or petal, a sphere) and those a homomorphism rewrites (what it
+/// makes of them is not known before the end; one each is close enough to pace growth).
+struct StepCounter {
+    /// For each module id: whether it counts.
+    draws: Vec<bool>,
+    /// The count after each step so far.
+    counts: Vec<f64>,
+}
+
+impl StepCounter {
+    fn new(model: &Model) -> StepCounter {
+        use crate::vocabulary::Command;
+        let mut draws: Vec<bool> = (0..model.alphabet.len())
+            .map(|i| {
+                matches!(
+                    model.command(crate::model::ModuleId(i as u32)),
+                    Some(
+                        Command::Forward
+                            | Command::ForwardNoVertex
+                            | Command::StartPolygon
+                            | Command::Leaf
+                            | Command::Petal
+                            | Command::Sphere
+                    )
+                )
+            })
+            .collect();
+        for p in &model.homomorphism.productions {
+            if let Some(d) = draws.get_mut(p.predecessor.id.index()) {
+                *d = true;
+            }
+        }
+        StepCounter {
+            draws,
+            counts: Vec::new(),
+        }
+    }
+
+    /// Counts the plant of the next step, `s`.
+    fn count(&mut self, s: &LString) {
+        let draws = &self.draws;
+        let n = s
+            .ids
+            .iter()
+            .filter(|id| draws.get(id.index()).copied().unwrap_or(false))
+            .count();
+        self.counts.push(n as f64);
+    }
 }
 
 impl derive::Observer for StageObserver<'_, '_> {
@@ -83,6 +143,10 @@ impl derive::Observer for StageObserver<'_, '_> {
         s: &LString,
         rng: &mut dyn rand::Rng,
     ) -> Result<Option<Vec<u32>>, Diagnostic> {
+        // The string before step `step`: the plant of step `step` − 1.
+        if let Some(counter) = &mut self.counter {
+            counter.count(s);
+        }
         let Some(g) = &mut self.growth else {
             return Ok(None);
         };

@@ -99,6 +99,11 @@ impl Plant {
     /// sketch's plant must be drawn first ([`crate::pipeline::Build::remesh`] does).
     pub fn remesh(&mut self, options: &MeshOptions) {
         self.mesh_options = options.clone();
+        let counts = &mut self.skeleton.step_counts;
+        if options.growth && counts.len() != self.steps as usize + 1 {
+            // Not counted while deriving: the plant grows evenly over its steps.
+            *counts = (0..=self.steps).map(f64::from).collect();
+        }
         self.mesh = mesh::build_mesh(&self.skeleton, options);
         self.meshed();
     }

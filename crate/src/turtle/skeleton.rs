@@ -100,6 +100,10 @@ pub struct Skeleton {
     /// The first module (index in the interpreted string) whose geometry went past
     /// [`MAX_COORDINATE`] or was not a finite number, and was clamped ([`Skeleton::clamp_to_finite`]).
     pub clamped: Option<u32>,
+    /// How many elements the plant had after each step, 0 to N (the derivation's steps), as the
+    /// derivation counted them (modules that draw, in the derived strings): what paces the
+    /// plant's growth in time (`crate::mesh::growth_schedule`). Empty when not counted.
+    pub step_counts: Vec<f64>,
 }
 
 /// The largest coordinate, width or radius the skeleton keeps: well inside `f32` (about 3.4e38),

@@ -37,6 +37,7 @@ pub fn build(
             sides: fields.sides,
             smooth_all: fields.smooth_all,
             tubes: Some(plant.tubes_after_sketch(first)),
+            growth: fields.growth,
         };
         plant.remesh_timed(&view.mesh(), clock);
     }

@@ -98,6 +98,14 @@ macro_rules! plant_mesh_getters {
             lines "lines": Float32Array = p.mesh.lines;
             /// A colour (r, g, b) per line end.
             line_colors "lineColors": Float32Array = p.mesh.line_colors;
+            /// With the `growth` option: the point each vertex (each line end, for lines) grows
+            /// from, 3 floats each; empty otherwise.
+            growth_origins "growthOrigins" / growth_origins_into "growthOriginsInto": Float32Array =
+                p.mesh.growth_origins;
+            /// With the `growth` option: each vertex's growth times (t0, t1), 2 floats each, in
+            /// derivation steps; empty otherwise.
+            growth_times "growthTimes" / growth_times_into "growthTimesInto": Float32Array =
+                p.mesh.growth_times;
             /// Every segment as a line, whatever the mesh (the studio's Lines mode): two ends
             /// (x, y, z each) per segment.
             segment_ends "segmentEnds" / segment_ends_into "segmentEndsInto": Float32Array =

@@ -289,6 +289,8 @@ options_objects! { BUILD_TYPESCRIPT;
         "sketch" => sketch: flag;
         /// A sketch first, shown while the same call meshes the plant (the live preview of big plants).
         "sketchFirst" => sketch_first: SketchFirst;
+        /// The mesh carries its growth in time: `growthOrigins` and `growthTimes` (docs/LANGUAGE.md, "Growth in time").
+        "growth" => growth: flag;
     }
     /// The sketch a build shows before it meshes (`BuildOptions.sketchFirst`).
     "SketchFirst" => SketchFirstObject, SketchFirstFields {
@@ -307,6 +309,8 @@ options_objects! { BUILD_TYPESCRIPT;
         "smoothAll" => smooth_all: flag;
         /// False: no tubes, only leaves, polygons and spheres (the Lines mode draws the segments as lines).
         "tubes" => tubes: flag;
+        /// The mesh carries its growth in time: `growthOrigins` and `growthTimes`.
+        "growth" => growth: flag;
     }
 }
 
@@ -350,6 +354,7 @@ impl BuildOptionsFields {
             smooth_all: None,
             sketch: None,
             sketch_first: None,
+            growth: None,
         }
     }
 
@@ -361,6 +366,7 @@ impl BuildOptionsFields {
         });
         let sketch = self.sketch == Some(true) || self.sketch_first.is_some();
         let mut mesh = MeshOptions::view(self.sides, self.smooth_all);
+        mesh.growth = self.growth == Some(true);
         if sketch {
             mesh.max_vertices = 0;
         }
@@ -378,6 +384,7 @@ impl ViewOptionsFields {
     pub fn mesh(&self) -> MeshOptions {
         MeshOptions {
             tubes: self.tubes.unwrap_or(true),
+            growth: self.growth == Some(true),
             ..MeshOptions::view(self.sides, self.smooth_all)
         }
     }
@@ -406,6 +413,7 @@ mod tests {
             "export interface BuildOptions {",
             "  iterations?: number;",
             "  smoothAll?: boolean;",
+            "  growth?: boolean;",
             "  sketchFirst?: SketchFirst;",
             "export interface SketchFirst {",
             "  minSegments: number;",

@@ -93,7 +93,9 @@ function buffersOf(arrays: readonly ArrayBufferView[]): ArrayBuffer[] {
  * list moves them to the other side (no copy) and leaves them detached (length 0) here.
  */
 export function transferablesOf(build: PlantBuild, gpu?: GpuArrays): ArrayBuffer[] {
-  return buffersOf([...Object.values(build.mesh), build.origins, ...(gpu ? [gpu.normals, gpu.colors] : [])]);
+  // The mesh's optional arrays (its growth) are absent when not asked for.
+  const mesh = Object.values(build.mesh).filter((a): a is ArrayBufferView => ArrayBuffer.isView(a));
+  return buffersOf([...mesh, build.origins, ...(gpu ? [gpu.normals, gpu.colors] : [])]);
 }
 
 /** The buffers of an inspect answer (the typed arrays among its fields), for its transfer list. */

@@ -193,10 +193,10 @@ export function runBuild(source: string, options: CoreBuildOptions, onProgress?:
  */
 export function runBuildWith<B>(core: (...args: Parameters<typeof build>) => B, source: string, options: CoreBuildOptions, onProgress?: (progress: BuildProgress) => void): B {
   assertReady();
-  const { iterations, seed, sides, smoothAll, sketch, sketchFirst } = options;
+  const { iterations, seed, sides, smoothAll, sketch, sketchFirst, growth } = options;
   const progress = onProgress && ((stage: BuildStage, step: number, steps: number) => onProgress({ stage, step, steps }));
   // The core reads no clock: it reads ours between its stages.
-  return guarded(() => core(source, { iterations, seed, sides, smoothAll, sketch, sketchFirst }, () => performance.now(), progress));
+  return guarded(() => core(source, { iterations, seed, sides, smoothAll, sketch, sketchFirst, growth }, () => performance.now(), progress));
 }
 
 interface RawProduction {
@@ -255,6 +255,7 @@ type MeshHolder = WasmPlantBuild | WasmPlantEditor;
  */
 export function copyMesh(result: MeshHolder, { forGpu = false, spares = {} }: Pick<PlainCopy, 'forGpu' | 'spares'> = {}): MeshBuffers {
   return guarded(() => ({
+    ...growthOf(result),
     positions: spares.positions ?? ownedArray(result.positions()),
     normals: forGpu ? new Float32Array(0) : ownedArray(result.normals()),
     colors: forGpu ? new Float32Array(0) : ownedArray(result.colors()),
@@ -268,6 +269,13 @@ export function copyMesh(result: MeshHolder, { forGpu = false, spares = {} }: Pi
     segmentColors: spares.segmentColors ?? ownedArray(result.segmentColors()),
     segmentModules: ownedArray(result.segmentModules()),
   }));
+}
+
+/** The mesh's growth arrays, when the build asked for them (`BuildOptions.growth`); else nothing. */
+function growthOf(result: MeshHolder): Pick<MeshBuffers, 'growthOrigins' | 'growthTimes'> {
+  const growthTimes = result.growthTimes();
+  if (growthTimes.length === 0) return {};
+  return { growthOrigins: ownedArray(result.growthOrigins()), growthTimes: ownedArray(growthTimes) };
 }
 
 /** Copies a wasm explanation into plain data and frees it. */

@@ -60,6 +60,10 @@ export interface PlantStats {
  * material kind) pairs: 0 bark (tubes), 1 leaf (leaves, petals, polygons), 2 plain (spheres).
  * `segmentEnds`/`segmentColors` hold every segment as a line (two 3-float ends each) whatever the
  * mesh, and `segmentModules` the derived-string module that drew each: the view's Lines mode.
+ * `growthOrigins` (3 floats) and `growthTimes` (2 floats: t0, t1 in derivation steps) per vertex
+ * (per line end when the mesh is lines) are there only when `BuildOptions.growth` asked for the
+ * plant's growth in time: a vertex at growth time t is at
+ * `origin + (position − origin) · smoothstep(clamp((t − t0) / (t1 − t0), 0, 1))`.
  */
 export interface MeshBuffers {
   positions: Float32Array;
@@ -74,6 +78,8 @@ export interface MeshBuffers {
   segmentEnds: Float32Array;
   segmentColors: Float32Array;
   segmentModules: Uint32Array;
+  growthOrigins?: Float32Array;
+  growthTimes?: Float32Array;
 }
 
 /**
