@@ -192,8 +192,7 @@ export class EmbedPlant {
   }
 
   private options(): BuildOptions {
-    const options: BuildOptions = { iterations: this.iterations, seed: this.settings.seed };
-    return this.growthWanted ? Object.assign(options, { growth: true }) : options;
+    return { iterations: this.iterations, seed: this.settings.seed, ...(this.growthWanted ? { growth: true } : {}) };
   }
 
   private rebuild(): void {

@@ -5,16 +5,8 @@
 import { BufferAttribute, type BufferGeometry } from 'three';
 import type { MeshBuffers } from '../core';
 
-/** The growth arrays a mesh may carry (asked for by `MeshOptions.growth`; absent or empty if not). */
-export interface GrowthArrays {
-  /** 3 floats a vertex (or a line end): the point it grows from. */
-  growthOrigins?: Float32Array;
-  /** 2 floats a vertex (or a line end): its growth times (t0, t1), −1 ≤ t0 < t1 ≤ N. */
-  growthTimes?: Float32Array;
-}
-
-/** A mesh, perhaps with its growth arrays. */
-export type GrowingMesh = MeshBuffers & GrowthArrays;
+/** The growth arrays of a mesh (absent or empty when the build did not ask for them). */
+export type GrowthArrays = Pick<MeshBuffers, 'growthOrigins' | 'growthTimes'>;
 
 /**
  * The uniform's value when no growth time is set: past every t1, so every vertex is where its

@@ -1,7 +1,7 @@
 // The plant's triangle mesh as three.js BufferGeometries.
 import { Box3, BufferAttribute, BufferGeometry, Sphere, Vector3 } from 'three';
 import type { Bounds, GpuArrays, MeshBuffers } from '../core';
-import { addGrowthAttributes, type GrowthArrays } from './growth-arrays';
+import { addGrowthAttributes } from './growth-arrays';
 
 /**
  * Wraps the core's mesh arrays (no copy: they are JavaScript-owned already) in a BufferGeometry
@@ -11,7 +11,7 @@ import { addGrowthAttributes, type GrowthArrays } from './growth-arrays';
  * normals and colours are used instead of the mesh's floats. `bounds`, when given, is a box around
  * every position (a build's `stats.bounds`, which the core computed), and no pass is made.
  */
-export function plantGeometry(mesh: MeshBuffers & GrowthArrays, gpu?: GpuArrays, bounds?: Bounds): BufferGeometry {
+export function plantGeometry(mesh: MeshBuffers, gpu?: GpuArrays, bounds?: Bounds): BufferGeometry {
   const geometry = new BufferGeometry();
   if (mesh.indices.length === 0 && mesh.lines.length > 0) return lineGeometry(mesh);
   // A build worker's mesh has no float normals and colours: they come packed, as `gpu`.
@@ -51,7 +51,7 @@ export function setBox(geometry: BufferGeometry, box: Box3): void {
  * The fallback for models too large to mesh (and a sketch's segments): the core's line ends and
  * their colours, for a `LineSegments` object.
  */
-export function lineGeometry(mesh: Pick<MeshBuffers, 'lines' | 'lineColors'> & GrowthArrays): BufferGeometry {
+export function lineGeometry(mesh: Pick<MeshBuffers, 'lines' | 'lineColors' | 'growthOrigins' | 'growthTimes'>): BufferGeometry {
   const geometry = new BufferGeometry();
   geometry.setAttribute('position', new BufferAttribute(mesh.lines, 3));
   geometry.setAttribute('color', new BufferAttribute(mesh.lineColors, 3));

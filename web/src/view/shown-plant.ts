@@ -3,7 +3,7 @@
 import { Box3, BufferGeometry, LineBasicMaterial, LineSegments, Mesh, type Material } from 'three';
 import type { MeshBuffers } from '../core';
 import type { BufferPool, GpuGeometry } from './gpu-geometry';
-import { growthSpanOf, type GrowingMesh } from './growth-arrays';
+import { growthSpanOf } from './growth-arrays';
 import { plantGeometry, pointsBox, setBox } from './plant-geometry';
 import type { IncomingPlant, PlantUpload } from './plant-upload';
 
@@ -60,9 +60,8 @@ export class ShownPlant {
     oldLines.dispose();
     this.flat = flat;
     this.segmentsBox = undefined;
-    const growing = mesh as GrowingMesh;
     const entries = (asLines ? mesh.lines.length : mesh.positions.length) / 3;
-    this.growthSpan = growing.growthTimes?.length === entries * 2 && entries > 0 ? growthSpanOf(growing.growthTimes) : null;
+    this.growthSpan = mesh.growthTimes?.length === entries * 2 && entries > 0 ? growthSpanOf(mesh.growthTimes) : null;
   }
 
   /** Whether a plant drawn as lines, one pixel wide, is on screen (a plant too large to mesh, a sketch). */

@@ -1,7 +1,6 @@
 // The studio's live preview, wired to its parts: the text and the options it builds with, where
 // it says how the build went, and who takes over each build on screen (the inspector).
 import type { BuildClient } from '../../build';
-import type { BuildOptions } from '../../core';
 import type { LazyGrammarEditor } from '../../editor/grammar-text';
 import type { PlantView } from '../../view';
 import { tubesFor, type ViewOptions } from '../controls';
@@ -25,11 +24,6 @@ export interface StudioPreviewParts extends Inspector {
   timeline: LazyTimeline;
 }
 
-/** `options` asking for the mesh's growth arrays (`MeshOptions.growth`) when `growth`. */
-function withGrowth(options: BuildOptions, growth: boolean): BuildOptions {
-  return growth ? Object.assign(options, { growth }) : options;
-}
-
 /** The live preview of the editor's text, with the derivation's and the view's options. */
 export function createLivePreview(parts: StudioPreviewParts): LivePreview {
   const { els, editor, contexts, derivationView, derivation, viewOptions } = parts;
@@ -47,19 +41,16 @@ export function createLivePreview(parts: StudioPreviewParts): LivePreview {
       derivationView.reload();
     },
     text: () => editor.text(),
-    options: () =>
-      withGrowth(
-        {
-          iterations: derivation.iterations(),
-          seed: derivation.seed(),
-          sides: viewOptions.values.sides,
-          smoothAll: viewOptions.values.smoothAll,
-          // The Lines mode (and `auto` for a flat plant) draws no tubes: they are not meshed; but
-          // once the timeline is used they are, with growth arrays (the Lines mode's lines do not grow).
-          tubes: parts.timeline.growthWanted || tubesFor(viewOptions.values.render),
-        },
-        parts.timeline.growthWanted,
-      ),
+    options: () => ({
+      iterations: derivation.iterations(),
+      seed: derivation.seed(),
+      sides: viewOptions.values.sides,
+      smoothAll: viewOptions.values.smoothAll,
+      // The Lines mode (and `auto` for a flat plant) draws no tubes: they are not meshed; but
+      // once the timeline is used they are, with growth arrays (the Lines mode's lines do not grow).
+      tubes: parts.timeline.growthWanted || tubesFor(viewOptions.values.render),
+      ...(parts.timeline.growthWanted ? { growth: true } : {}),
+    }),
     diagnosticsChanged: () => editor.refreshDiagnostics(),
     adopt: (result) => {
       contexts.setBuild(result.build, result.inspector, result.source);
