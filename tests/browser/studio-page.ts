@@ -171,6 +171,12 @@ export async function openTubesMenu(page: Page): Promise<void> {
   if ((await menu.getAttribute('open')) === null) await menu.locator('summary').click();
 }
 
+/** Opens the timeline's menu of options (speed, loop, range, camera, turntable), if it is not open. */
+export async function openTimelineMenu(page: Page): Promise<void> {
+  const menu = page.getByTestId('timeline-menu');
+  if ((await menu.getAttribute('open')) === null) await menu.locator('summary').click();
+}
+
 /** Opens `file` through the gallery dialog (mouse), answering the confirm dialog with `answer` if it asks. */
 export async function openFromGallery(page: Page, file: string): Promise<void> {
   await page.getByTestId('open-gallery').click();

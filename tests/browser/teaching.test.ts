@@ -7,7 +7,7 @@ import { readFileSync, writeFileSync } from 'node:fs';
 import { describe, expect, inject, it } from 'vitest';
 import { colourShare, decodePng, foregroundExtent, foregroundMask, foregroundOverlap, foregroundShare, type Picture } from './pictures';
 import { browser, page, problems, useStudio } from './session';
-import { canvasPicture, findPixel, RESULTS, generation, HIGHLIGHT_PIXELS, loseAndRestoreContext, nextBuild, openExample, PHONE, replaceTextByTouch, savePage, twoFrames } from './studio-page';
+import { canvasPicture, findPixel, RESULTS, generation, HIGHLIGHT_PIXELS, loseAndRestoreContext, nextBuild, openExample, PHONE, replaceTextByTouch, savePage, twoFrames, openTimelineMenu } from './studio-page';
 
 useStudio();
 
@@ -24,7 +24,9 @@ async function plantExtent(name: string): Promise<{ width: number; height: numbe
 
 /** Chooses the timeline's camera: on the final plant, or following the growth. */
 async function chooseGrowthCamera(kind: 'final' | 'follow'): Promise<void> {
+  await openTimelineMenu(page);
   await page.getByTestId('timeline-camera').selectOption(kind);
+  await page.keyboard.press('Escape');
 }
 
 /** Scrubs the timeline to `t` and waits for the plant at that time on screen (growth arrays built first). */

@@ -7,7 +7,7 @@ import { chromium, type Browser, type Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
 import { decodeState, encodeState } from '../../web/src/share';
 import { changedShare, differingShare, foregroundShare, type Picture } from './pictures';
-import { canvasPicture, example, generation, nextBuild, openExample, openStudio, savePage, twoFrames } from './studio-page';
+import { canvasPicture, example, generation, nextBuild, openExample, openStudio, openTimelineMenu, savePage, twoFrames } from './studio-page';
 
 let browser: Browser;
 let page: Page;
@@ -75,7 +75,9 @@ describe('the growth timeline', () => {
   });
 
   it('plays: frames change while it plays, with no build, and Pause stops it', async () => {
+    await openTimelineMenu(page);
     await page.getByTestId('timeline-speed').selectOption('1');
+    await page.keyboard.press('Escape');
     await scrubTo(0.5);
     const generationBefore = await generation(page);
     await page.getByTestId('timeline-play').click();
@@ -109,10 +111,12 @@ describe('the growth timeline', () => {
 
   it('keeps the time, speed and range in a share link, and the link opens at that time', async () => {
     await scrubTo(2.5);
+    await openTimelineMenu(page);
     await page.getByTestId('timeline-speed').selectOption('0.5');
     await page.getByTestId('timeline-from').fill('1');
     await page.getByTestId('timeline-from').dispatchEvent('change');
     await page.getByTestId('timeline-loop').check();
+    await page.keyboard.press('Escape');
     await page.getByTestId('share').click();
     const link = await page.getByTestId('share-link').inputValue();
     await page.keyboard.press('Escape');

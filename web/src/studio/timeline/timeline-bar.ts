@@ -75,16 +75,29 @@ function barControls(bar: HTMLElement): BarControls {
   const turntable = make('input', { type: 'checkbox', 'data-testid': 'timeline-turntable' });
   const range = make('span', { class: 'timeline-range', role: 'group', 'aria-label': 'Range played' });
   range.append(labelled('From', from, 'Play from this time (in steps)'), labelled('to', to, 'Play up to this time (empty: the whole plant)'));
-  bar.replaceChildren(
-    play,
-    make('span', { class: 'timeline-track' }),
+  // The rest in a menu: the bar stays one line under a short view (a phone, a projector at 200 %).
+  const menu = make('details', { class: 'downloads tool-menu timeline-menu', 'data-testid': 'timeline-menu' });
+  const summary = make('summary', { title: 'Speed, loop, range, camera, turntable', 'aria-label': 'Options of the timeline' }, 'Options ▾');
+  const panel = make('div', { class: 'download-menu timeline-options' });
+  panel.append(
     labelled('Speed', speed, 'Steps of growth per second'),
     labelled('Loop', loop, 'Start again at the range’s start'),
     range,
     labelled('Camera', camera, 'While the growth plays: framed on the whole plant, or following what has grown'),
     labelled('Turntable', turntable, `The camera turns about the plant as it grows (${TURNTABLE_DEGREES_PER_STEP}° a step)`),
   );
-  bar.querySelector('.timeline-track')!.append(slider, time);
+  menu.append(summary, panel);
+  menu.addEventListener('keydown', (event) => {
+    if (event.key !== 'Escape' || !menu.open) return;
+    menu.open = false;
+    summary.focus();
+  });
+  document.addEventListener('pointerdown', (event) => {
+    if (menu.open && !menu.contains(event.target as Node)) menu.open = false;
+  });
+  const track = make('span', { class: 'timeline-track' });
+  track.append(slider, time);
+  bar.replaceChildren(play, track, menu);
   loop.parentElement!.classList.add('check');
   turntable.parentElement!.classList.add('check');
   return { play, slider, time, speed, loop, from, to, camera, turntable };
@@ -221,11 +234,12 @@ export class TimelineBar {
     this.els.bar.dataset.t = String(t);
   }
 
-  /** What a share link keeps: the time (once used), speed, range, loop, camera, turntable. */
+  /** What a share link keeps: the time (once used), speed, range, loop, camera, turntable; none at their defaults. */
   toShared(): SharedGrowth | undefined {
     const state = this.timeline.state;
-    const shared: SharedGrowth = { speed: state.speed };
+    const shared: SharedGrowth = {};
     if (this.engaged) shared.t = state.t;
+    if (state.speed !== 1) shared.speed = state.speed;
     if (state.from > 0) shared.from = state.from;
     const to = this.controls.to.value.trim();
     if (to !== '') shared.to = Number(to);
