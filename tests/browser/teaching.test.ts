@@ -7,7 +7,7 @@ import { readFileSync, writeFileSync } from 'node:fs';
 import { describe, expect, inject, it } from 'vitest';
 import { colourShare, decodePng, foregroundExtent, foregroundMask, foregroundOverlap, foregroundShare, type Picture } from './pictures';
 import { browser, page, problems, useStudio } from './session';
-import { canvasPicture, findPixel, RESULTS, generation, HIGHLIGHT_PIXELS, loseAndRestoreContext, nextBuild, openExample, PHONE, replaceTextByTouch, savePage, twoFrames, openTimelineMenu } from './studio-page';
+import { canvasPicture, findPixel, RESULTS, generation, HIGHLIGHT_PIXELS, loseAndRestoreContext, nextBuild, openExample, PHONE, replaceTextByTouch, savePage, twoFrames, openTimelineMenu, VIEW_CANVAS } from './studio-page';
 
 useStudio();
 
@@ -20,6 +20,25 @@ async function cursorOn(start: string): Promise<void> {
 /** The plant's extent on the 3D canvas (shares of its width and height), with the grid off. */
 async function plantExtent(name: string): Promise<{ width: number; height: number }> {
   return foregroundExtent(await canvasPicture(page, name));
+}
+
+/**
+ * The middle of the run of pixels passing `test` through `spot` along its row: a click there hits a
+ * two-pixel line that a click on the run's edge, half a pixel off, may miss.
+ */
+async function acrossTheMiddle(p: typeof page, spot: { x: number; y: number }, test: (r: number, g: number, b: number) => boolean): Promise<{ x: number; y: number }> {
+  const picture = await canvasPicture(p, 'across-the-middle.png');
+  const box = (await p.locator(VIEW_CANVAS).boundingBox())!;
+  const scale = picture.width / box.width;
+  const y = Math.floor((spot.y - box.y) * scale);
+  const passes = (x: number) => {
+    const i = 4 * (y * picture.width + x);
+    return x >= 0 && x < picture.width && test(picture.data[i], picture.data[i + 1], picture.data[i + 2]);
+  };
+  let [left, right] = [Math.floor((spot.x - box.x) * scale), Math.floor((spot.x - box.x) * scale)];
+  while (passes(left - 1)) left--;
+  while (passes(right + 1)) right++;
+  return { x: box.x + (left + right + 1) / 2 / scale, y: spot.y };
 }
 
 /** Chooses the timeline's camera: on the final plant, or following the growth. */
@@ -204,7 +223,7 @@ describe('the context panel', () => {
     const fired = await summary.getAttribute('data-fired');
     expect(Number(fired), 'every F of step 3 was rewritten').toBeGreaterThan(10);
     await expect.poll(async () => (await findPixel(page, HIGHLIGHT_PIXELS.produced)) !== null).toBe(true);
-    const spot = (await findPixel(page, HIGHLIGHT_PIXELS.produced))!;
+    const spot = await acrossTheMiddle(page, (await findPixel(page, HIGHLIGHT_PIXELS.produced))!, HIGHLIGHT_PIXELS.produced);
     await cursorOn('axiom');
     await page.mouse.click(spot.x, spot.y);
     await expect.poll(() => summary.textContent()).toMatch(/^This F \(module \d+ of the derived string\) was written by rule 2 \(line 8: F -> FF\) from F \(module \d+ of the step before\)\./);

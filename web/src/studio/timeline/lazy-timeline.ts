@@ -59,6 +59,11 @@ export class LazyTimeline {
     void this.load().then((bar) => bar.toggle());
   }
 
+  /** A build was delivered: the bar shows its steps (the plant may still be on its way to the GPU). */
+  delivered(): void {
+    this.loaded?.stepsChanged();
+  }
+
   /** Another text is opened: playing stops, the plant shows whole. */
   clear(): void {
     this.loaded?.clear();

@@ -208,6 +208,11 @@ export class TimelineBar {
     this.render(this.timeline.state);
   }
 
+  /** A build was delivered: its steps are shown (the slider's end, the label). */
+  stepsChanged(): void {
+    this.render(this.timeline.state);
+  }
+
   /** Another text is opened: playing stops and the plant shows whole. */
   clear(): void {
     this.timeline.pause();

@@ -5,4 +5,5 @@ import type { StudioParts } from '../parts';
 /** Connects the timeline to the view and the builds (its bar loads later: {@link LazyTimeline.load}). */
 export function wireTimeline({ timeline, view, preview }: StudioParts): void {
   timeline.connect({ view, rebuild: () => preview.rebuild(), steps: () => preview.lastGood?.build.stats.iterations });
+  preview.onDelivered(() => timeline.delivered());
 }
