@@ -92,7 +92,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   const vocabularyRead = panels.load();
   void inspector.contexts.load(); // the String tab
   const downloadsInstalled = loadDownloads(parts, branchEdits);
-  const timelineShown = timeline.load(); // the bar under the view
+  const timelineShown = timeline.load().catch((error: unknown) => console.error('The timeline could not load:', error)); // the bar under the view; Play tries again
   const editorLoaded = editor.loaded;
   await firstBuild;
   await vocabularyRead;

@@ -50,7 +50,13 @@ export class LazyTimeline {
   load(): Promise<Bar.TimelineBar> {
     const studio = this.studio;
     if (!studio) return Promise.reject(new Error('the timeline is not connected'));
-    this.loading ??= import('./timeline-bar').then((code) => (this.loaded = new code.TimelineBar(this.els, studio, () => this.want())));
+    this.loading ??= import('./timeline-bar').then(
+      (code) => (this.loaded = new code.TimelineBar(this.els, studio, () => this.want())),
+      (error: unknown) => {
+        this.loading = undefined; // the next Play tries again
+        throw error;
+      },
+    );
     return this.loading;
   }
 
