@@ -92,14 +92,13 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   const vocabularyRead = panels.load();
   void inspector.contexts.load(); // the String tab
   const downloadsInstalled = loadDownloads(parts, branchEdits);
-  const timelineShown = timeline.load().catch((error: unknown) => console.error('The timeline could not load:', error)); // the bar under the view; Play tries again
+  void timeline.load().catch((error: unknown) => console.error('The timeline could not load:', error)); // the bar under the view; Play tries again
   const editorLoaded = editor.loaded;
   await firstBuild;
   await vocabularyRead;
   await editorLoaded;
   await view.controlsReady; // the mouse moves the camera (the OrbitControls load after the first plant's frame)
   await downloadsInstalled;
-  await timelineShown;
   // The first load is done: the build worker loads the studio core (crate/pkg, built for speed:
   // a big plant's tubes in about half the time) for the builds after it.
   buildClient.useStudioCore();
