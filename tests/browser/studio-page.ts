@@ -150,7 +150,8 @@ export async function findPixel(page: Page, test: (r: number, g: number, b: numb
     for (let x = 1; x < picture.width - 1; x += 1) {
       let inside = true;
       for (let dy = -1; dy <= 1 && inside; dy++) for (let dx = -1; dx <= 1 && inside; dx++) inside = passes(x + dx, y + dy);
-      if (inside) return { x: box.x + x / scale, y: box.y + y / scale };
+      // (The pixel's centre: a click half a pixel off a two-pixel line misses it.)
+      if (inside) return { x: box.x + (x + 0.5) / scale, y: box.y + (y + 0.5) / scale };
     }
   return null;
 }
@@ -168,6 +169,12 @@ export function shownStats(page: Page): Promise<{ segments: number; iterations: 
 /** Opens the view toolbar's Tubes menu (sides, smooth axes), if it is not open. */
 export async function openTubesMenu(page: Page): Promise<void> {
   const menu = page.getByTestId('tubes-menu');
+  if ((await menu.getAttribute('open')) === null) await menu.locator('summary').click();
+}
+
+/** Opens the timeline's menu of options (speed, loop, range, camera, turntable), if it is not open. */
+export async function openTimelineMenu(page: Page): Promise<void> {
+  const menu = page.getByTestId('timeline-menu');
   if ((await menu.getAttribute('open')) === null) await menu.locator('summary').click();
 }
 

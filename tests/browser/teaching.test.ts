@@ -1,14 +1,13 @@
 // End-to-end: what a lecturer needs to teach a derivation (issue 17). The view follows the plant
-// (stepping, Play in either framing, a typed grammar, the Refit hint after the camera was moved);
+// (stepping, the growth timeline in either camera, a typed grammar, the Refit hint after the camera was moved);
 // the derivation view links each module of a step to what it became and lights it up in the plant;
 // Stages draws iterations side by side and downloads them as PNG and SVG; a click on the plant and
 // the cursor on its production report the same count. Pixels are read from the real canvas.
 import { readFileSync, writeFileSync } from 'node:fs';
-import type { Page } from 'playwright-core';
 import { describe, expect, inject, it } from 'vitest';
 import { colourShare, decodePng, foregroundExtent, foregroundMask, foregroundOverlap, foregroundShare, type Picture } from './pictures';
 import { browser, page, problems, useStudio } from './session';
-import { canvasPicture, findPixel, RESULTS, generation, HIGHLIGHT_PIXELS, loseAndRestoreContext, nextBuild, openExample, PHONE, replaceTextByTouch, savePage, twoFrames } from './studio-page';
+import { canvasPicture, findPixel, RESULTS, generation, HIGHLIGHT_PIXELS, loseAndRestoreContext, nextBuild, openExample, PHONE, replaceTextByTouch, savePage, twoFrames, openTimelineMenu, VIEW_CANVAS } from './studio-page';
 
 useStudio();
 
@@ -24,70 +23,38 @@ async function plantExtent(name: string): Promise<{ width: number; height: numbe
 }
 
 /**
- * Records, in the page, the plant's extent on the canvas in the first frame drawn of each delivered
- * build, with the build's iterations: what a student sees at each step of Play. Returns the
- * function that stops recording and hands the frames over.
+ * The middle of the run of pixels passing `test` through `spot` along its row: a click there hits a
+ * two-pixel line that a click on the run's edge, half a pixel off, may miss.
  */
-async function recordFrames(p: Page): Promise<() => Promise<{ iterations: number; height: number; width: number }[]>> {
-  await p.evaluate(() => {
-    const frames: { iterations: number; height: number; width: number }[] = [];
-    const state = { frames, stop: false };
-    (window as unknown as { __frames: typeof state }).__frames = state;
-    const canvas = document.querySelector<HTMLCanvasElement>('[data-testid=viewport] canvas')!;
-    const scratch = document.createElement('canvas');
-    let seen = -1;
-    const tick = () => {
-      const hook = window.__meristem!;
-      const rendered = hook.rendered;
-      // The first frame drawn after a delivery shows that build (Play may already have asked for the next).
-      if (rendered && rendered.generation !== seen && hook.lastStats) {
-        seen = rendered.generation;
-        scratch.width = Math.floor(canvas.width / 2);
-        scratch.height = Math.floor(canvas.height / 2);
-        const context = scratch.getContext('2d', { willReadFrequently: true })!;
-        context.drawImage(canvas, 0, 0, scratch.width, scratch.height);
-        const { data, width, height } = context.getImageData(0, 0, scratch.width, scratch.height);
-        const background = [data[0], data[1], data[2]];
-        let [minX, maxX, minY, maxY] = [Infinity, -Infinity, Infinity, -Infinity];
-        for (let y = 0; y < height; y++)
-          for (let x = 0; x < width; x++) {
-            const i = 4 * (y * width + x);
-            if (Math.abs(data[i] - background[0]) + Math.abs(data[i + 1] - background[1]) + Math.abs(data[i + 2] - background[2]) <= 60) continue;
-            minX = Math.min(minX, x);
-            maxX = Math.max(maxX, x);
-            minY = Math.min(minY, y);
-            maxY = Math.max(maxY, y);
-          }
-        frames.push({
-          iterations: hook.lastStats.iterations,
-          width: maxX < minX ? 0 : (maxX - minX + 1) / width,
-          height: maxY < minY ? 0 : (maxY - minY + 1) / height,
-        });
-      }
-      if (!state.stop) requestAnimationFrame(tick);
-    };
-    requestAnimationFrame(tick);
-  });
-  return () =>
-    p.evaluate(() => {
-      const state = (window as unknown as { __frames: { frames: { iterations: number; height: number; width: number }[]; stop: boolean } }).__frames;
-      state.stop = true;
-      return state.frames;
-    });
+async function acrossTheMiddle(p: typeof page, spot: { x: number; y: number }, test: (r: number, g: number, b: number) => boolean): Promise<{ x: number; y: number }> {
+  const picture = await canvasPicture(p, 'across-the-middle.png');
+  const box = (await p.locator(VIEW_CANVAS).boundingBox())!;
+  const scale = picture.width / box.width;
+  const y = Math.floor((spot.y - box.y) * scale);
+  const passes = (x: number) => {
+    const i = 4 * (y * picture.width + x);
+    return x >= 0 && x < picture.width && test(picture.data[i], picture.data[i + 1], picture.data[i + 2]);
+  };
+  let [left, right] = [Math.floor((spot.x - box.x) * scale), Math.floor((spot.x - box.x) * scale)];
+  while (passes(left - 1)) left--;
+  while (passes(right + 1)) right++;
+  return { x: box.x + (left + right + 1) / 2 / scale, y: spot.y };
 }
 
-/** Chooses in the framing menu how Play frames the plant. */
-async function choosePlayFraming(kind: 'each' | 'last'): Promise<void> {
-  await page.getByTestId('framing-menu').locator('summary').click();
-  await page.getByTestId(`play-framing-${kind}`).check();
+/** Chooses the timeline's camera: on the final plant, or following the growth. */
+async function chooseGrowthCamera(kind: 'final' | 'follow'): Promise<void> {
+  await openTimelineMenu(page);
+  await page.getByTestId('timeline-camera').selectOption(kind);
   await page.keyboard.press('Escape');
 }
 
-/** Plays the derivation to its end. */
-async function play(): Promise<void> {
-  await page.getByTestId('play').click();
-  await expect.poll(() => page.getByTestId('play').getAttribute('aria-pressed'), { timeout: 60_000 }).toBe('false');
-  await page.waitForFunction(() => window.__meristem?.preview?.settled === true);
+/** Scrubs the timeline to `t` and waits for the plant at that time on screen (growth arrays built first). */
+async function scrubTo(t: number): Promise<void> {
+  await page.getByTestId('timeline-slider').fill(String(t));
+  await page.waitForFunction((want) => {
+    const { t, span } = window.__meristem!.growth!();
+    return span !== null && (t === want || (t === null && want >= span)) && window.__meristem?.preview?.settled === true;
+  }, t, { timeout: 60_000 });
   await twoFrames(page);
 }
 
@@ -113,33 +80,27 @@ describe('the view follows the plant', () => {
     expect(problems).toEqual([]);
   });
 
-  it('frames every step during Play when asked to', async () => {
-    await choosePlayFraming('each');
-    const before = await generation(page);
-    await page.getByTestId('iterations').fill(''); // the grammar's 7: Play starts from 0
-    await nextBuild(page, before);
-    const stop = await recordFrames(page);
-    await play();
-    const frames = await stop();
-    const steps = new Set(frames.map((f) => f.iterations));
-    expect([...steps].sort(), 'every step was on screen').toEqual([0, 1, 2, 3, 4, 5, 6, 7]);
-    for (const f of frames.filter((f) => f.iterations >= 1)) {
-      expect(f.height, `step ${f.iterations} fills the view`).toBeGreaterThan(0.7);
+  it('frames the growth as it grows when the timeline’s camera follows it', async () => {
+    await page.getByTestId('iterations').fill(''); // the grammar's 7
+    await page.getByTestId('timeline-slider').waitFor();
+    await chooseGrowthCamera('follow');
+    for (const t of [1, 3.5, 6]) {
+      await scrubTo(t);
+      const extent = await plantExtent(`follow-growth-t${t}.png`);
+      expect(extent.height, `t = ${t} fills the view`).toBeGreaterThan(0.6);
     }
     expect(problems).toEqual([]);
   });
 
-  it("shows the growth in the last step's frame during Play, by default", async () => {
-    await choosePlayFraming('last');
-    const stop = await recordFrames(page);
-    await play();
-    const frames = await stop();
-    const tallest = new Map<number, number>();
-    for (const f of frames) tallest.set(f.iterations, Math.max(tallest.get(f.iterations) ?? 0, f.height));
-    const heights = [1, 2, 3, 4, 5, 6, 7].map((n) => tallest.get(n) ?? 0);
-    expect(heights[6], 'the last step fills the frame').toBeGreaterThan(0.7);
-    expect(heights[1], 'an early step is small inside that frame').toBeLessThan(0.3 * heights[6]);
-    for (let n = 1; n < heights.length; n++) expect(heights[n], `the plant grows from step ${n} to ${n + 1}: ${JSON.stringify(frames)}`).toBeGreaterThanOrEqual(heights[n - 1]);
+  it("shows the growth in the final plant's frame, by default", async () => {
+    await chooseGrowthCamera('final');
+    await scrubTo(2);
+    const early = await plantExtent('final-frame-t2.png');
+    await scrubTo(6.9);
+    const late = await plantExtent('final-frame-t7.png');
+    expect(late.height, 'the grown plant fills the frame').toBeGreaterThan(0.7);
+    expect(early.height, 'an early time is small inside that frame').toBeLessThan(0.3 * late.height);
+    await scrubTo(7);
     expect(problems).toEqual([]);
   });
 
@@ -262,7 +223,7 @@ describe('the context panel', () => {
     const fired = await summary.getAttribute('data-fired');
     expect(Number(fired), 'every F of step 3 was rewritten').toBeGreaterThan(10);
     await expect.poll(async () => (await findPixel(page, HIGHLIGHT_PIXELS.produced)) !== null).toBe(true);
-    const spot = (await findPixel(page, HIGHLIGHT_PIXELS.produced))!;
+    const spot = await acrossTheMiddle(page, (await findPixel(page, HIGHLIGHT_PIXELS.produced))!, HIGHLIGHT_PIXELS.produced);
     await cursorOn('axiom');
     await page.mouse.click(spot.x, spot.y);
     await expect.poll(() => summary.textContent()).toMatch(/^This F \(module \d+ of the derived string\) was written by rule 2 \(line 8: F -> FF\) from F \(module \d+ of the step before\)\./);

@@ -176,7 +176,9 @@ const AREAS: Record<string, Area> = {
   share: { uses: ['core'] },
   // build-worker-start.ts: the boot script starts the build worker before the studio's script.
   build: { uses: ['core'], doors: ['build/index.ts', 'build/build-worker-start.ts'] },
-  'plant-controls': { uses: ['core', 'editor'] },
+  // timeline.ts: the growth timeline, loaded with the studio's timeline bar and by animated embeds,
+  // never by the first plant.
+  'plant-controls': { uses: ['core', 'editor'], doors: ['plant-controls/index.ts', 'plant-controls/timeline.ts'] },
   studio: { uses: ['core', 'editor', 'view', 'share', 'build', 'plant-controls'], doors: ['studio/*/index.ts', 'studio/parts.ts', 'studio/test-hook.ts'] },
   embed: { uses: ['core', 'view', 'share', 'build', 'plant-controls'] },
   main: { uses: ['core', 'editor', 'view', 'share', 'build', 'plant-controls', 'studio', 'embed'] },

@@ -17,6 +17,7 @@ import { delay, lazyHelp, loadAppUpdates, nextFrame, Notice, studioElements, typ
 import type { StudioParts } from './studio/parts';
 import { connectTestHook, emptyTestHook, type StudioTestHook } from './studio/test-hook';
 import { createLivePreview, DiagnosticsFeed, showStatus } from './studio/preview';
+import { LazyTimeline, wireTimeline } from './studio/timeline';
 import { PlantView } from './view';
 
 /** `firstLoadDone` is called when what the first plant downloads has arrived (the rest may load then). */
@@ -50,9 +51,10 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   );
   const sliders = new SliderPanel(els.sliders, els.constantsCount, els.constantsEmpty, editor);
   const inspector = createInspector(els, view, editor, viewOptions);
-  const preview = createLivePreview({ els, client: buildClient, feed, view, editor, ...inspector, derivation, viewOptions, notice });
-  const opening = createOpening({ els, notice, keeper: keeping.keeper, editor, derivation, sliders, viewOptions, view, preview }, start);
-  const parts: StudioParts = { els, notice, ...keeping, view, viewOptions, derivation, help, editor, sliders, ...inspector, preview, opening };
+  const timeline = new LazyTimeline(els.timeline);
+  const preview = createLivePreview({ els, client: buildClient, feed, view, editor, ...inspector, derivation, viewOptions, notice, timeline });
+  const opening = createOpening({ els, notice, keeper: keeping.keeper, editor, derivation, sliders, viewOptions, view, preview, timeline }, start);
+  const parts: StudioParts = { els, notice, ...keeping, view, viewOptions, derivation, help, editor, sliders, ...inspector, preview, opening, timeline };
 
   // The keystroke route: each change carries its text to the panels, the build and the autosave.
   const panels = new VocabularyPanels(parts); // the sliders, the Growth panel: once the vocabulary has arrived
@@ -66,6 +68,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   // Each area, wired to the parts.
   const layout = wireLayout(parts);
   const controls = wireViewControls(parts);
+  wireTimeline(parts);
   const dialogs = wireFiles(parts);
   installLearnPanel({ preview, open: (text, title, key) => opening.replace(text, title, key) }); // lessons (issue 17), loaded on first use
   if (start.from === 'link') void autosave.save(start.text); // the link's text is now the work in progress
@@ -89,6 +92,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   const vocabularyRead = panels.load();
   void inspector.contexts.load(); // the String tab
   const downloadsInstalled = loadDownloads(parts, branchEdits);
+  void timeline.load().catch((error: unknown) => console.error('The timeline could not load:', error)); // the bar under the view; Play tries again
   const editorLoaded = editor.loaded;
   await firstBuild;
   await vocabularyRead;

@@ -2,13 +2,16 @@
 //
 //   <script type="module" src="https://…/meristem-plant.js"></script>
 //   <meristem-plant src="fern.lsys" iterations="5" controls="iterations, sliders"></meristem-plant>
+//   <meristem-plant src="fern.lsys" animate loop speed="1"></meristem-plant>
 //
 // The grammar is the file at `src` (relative to the page) or, without `src`, the element's own
 // text. `iterations` and `seed` override the grammar's; `controls` lists the controls shown
-// (`iterations`: − n + and Play; `sliders`: one per `#define`). Every plant of the page builds in
+// (`iterations`: − n + and Play; `sliders`: one per `#define`). `animate` plays the growth in time
+// at once (`loop`: again and again; `speed`: steps per second; `t`: the time to start from; `from`
+// and `to`: the range played), as Play does on demand. Every plant of the page builds in
 // one shared worker; the textures and the studio link point at the site this script came from.
 import { loadVocabulary } from '../core';
-import { EmbedPlant, parseControls } from './embed-plant';
+import { EmbedPlant, GROWTH_ATTRIBUTES, growthAttributes, parseControls } from './embed-plant';
 import { EMBED_CSS } from './embed-style';
 import { sharedBuilds } from './shared-builds';
 
@@ -25,7 +28,7 @@ function wholeNumber(value: string | null): number | undefined {
 }
 
 export class MeristemPlantElement extends HTMLElement {
-  static readonly observedAttributes = ['src', 'iterations', 'seed', 'controls'];
+  static readonly observedAttributes = ['src', 'iterations', 'seed', 'controls', ...GROWTH_ATTRIBUTES];
   private plant: EmbedPlant | undefined;
   /** Bumped on every (re)load, so a slow fetch of an old `src` is dropped. */
   private loads = 0;
@@ -77,6 +80,7 @@ export class MeristemPlantElement extends HTMLElement {
       iterations: wholeNumber(this.getAttribute('iterations')),
       seed: wholeNumber(this.getAttribute('seed')),
       controls,
+      growth: growthAttributes(this),
       siteRoot: SITE_ROOT,
       builds: sharedBuilds(),
     });

@@ -1,11 +1,17 @@
 // embed.html: one plant for an <iframe>, from a share link's state in the fragment
 // (`embed.html#s=…`, what the studio's Share dialog gives) and the controls in the query
-// (`?controls=iterations,sliders`). Nothing but the plant, its controls and "Open in Meristem".
+// (`?controls=iterations,sliders`); the growth as the link keeps it, or as the query asks
+// (`?animate&loop&speed=1&t=2&from=0&to=4`, as `<meristem-plant>`'s attributes). Nothing but the plant, its controls and "Open in Meristem".
 import { loadVocabulary } from '../core';
-import { decodeState, hasSharedState } from '../share';
-import { EmbedPlant, parseControls } from './embed-plant';
+import { decodeState, hasSharedState, type SharedGrowth } from '../share';
+import { EmbedPlant, growthAttributes, parseControls } from './embed-plant';
 import { EMBED_CSS } from './embed-style';
 import { sharedBuilds } from './shared-builds';
+
+/** The growth the query asks for (its parameters as `<meristem-plant>`'s attributes), or undefined. */
+function queryGrowth(query: URLSearchParams): SharedGrowth | undefined {
+  return growthAttributes({ getAttribute: (name) => query.get(name), hasAttribute: (name) => query.has(name) });
+}
 
 async function start(): Promise<void> {
   const style = document.createElement('style');
@@ -24,7 +30,8 @@ async function start(): Promise<void> {
   }
   if (controls.has('sliders')) await loadVocabulary(); // the sliders read the text with it
   const { text, iterations, seed } = decoded.state;
-  new EmbedPlant(host, { source: text, iterations, seed, controls, siteRoot: new URL('./', location.href).href, builds: sharedBuilds() });
+  const growth = queryGrowth(new URLSearchParams(location.search)) ?? decoded.state.growth;
+  new EmbedPlant(host, { source: text, iterations, seed, controls, growth, siteRoot: new URL('./', location.href).href, builds: sharedBuilds() });
 }
 
 void start();

@@ -1,10 +1,12 @@
 // A plant embedded in another page: the 3D view of a grammar (drag or the arrow keys to orbit),
-// optional iteration buttons with Play and `#define` sliders, and a link that opens the grammar in
-// the studio. Used by the view-only page (embed.html) and the <meristem-plant> element; the builds
+// its growth played in time (`animate`: at once, looped or not; Play: on demand), optional
+// iteration buttons with Play and `#define` sliders, and a link that opens the grammar in the
+// studio. Used by the view-only page (embed.html) and the <meristem-plant> element; the builds
 // go to the page's one shared worker. Small enough for 320 × 240.
 import type { BuildOptions } from '../core';
-import { encodeState } from '../share';
+import { cleanGrowth, encodeState, type SharedGrowth } from '../share';
 import { Playback, SliderPanel } from '../plant-controls';
+import { Timeline } from '../plant-controls/timeline';
 import type { BuildOutcome } from '../build';
 import { PlantView } from '../view';
 import type { SharedBuilds } from './shared-builds';
@@ -20,6 +22,12 @@ export interface EmbedSettings {
   iterations?: number;
   seed?: number;
   controls: ReadonlySet<EmbedControl>;
+  /**
+   * The growth in time: its time, speed, range and loop, and `playing` (the `animate` attribute):
+   * play at once (unless the reader asked for reduced motion). Absent: the plant is shown whole
+   * until Play.
+   */
+  growth?: SharedGrowth;
   /** The site's root: the studio (index.html) and its textures are there. */
   siteRoot: string;
   builds: SharedBuilds;
@@ -29,6 +37,16 @@ export interface EmbedSettings {
 export function parseControls(list: string | null): Set<EmbedControl> {
   const known: EmbedControl[] = ['iterations', 'sliders'];
   return new Set(known.filter((c) => (list ?? '').split(/[\s,]+/).includes(c)));
+}
+
+/** The attributes of the growth in time. */
+export const GROWTH_ATTRIBUTES = ['animate', 'loop', 'speed', 't', 'from', 'to'];
+
+/** The growth the attributes ask for (checked and clamped: they may hold anything), or undefined. */
+export function growthAttributes(element: Pick<Element, 'getAttribute' | 'hasAttribute'>): SharedGrowth | undefined {
+  if (!GROWTH_ATTRIBUTES.some((name) => element.hasAttribute(name))) return undefined;
+  const read = (name: string) => element.getAttribute(name) ?? undefined;
+  return cleanGrowth({ playing: element.hasAttribute('animate'), loop: element.hasAttribute('loop'), speed: read('speed'), t: read('t'), from: read('from'), to: read('to') });
 }
 
 function element<K extends keyof HTMLElementTagNameMap>(tag: K, className: string, text?: string): HTMLElementTagNameMap[K] {
@@ -45,6 +63,10 @@ export class EmbedPlant {
   private readonly open: HTMLAnchorElement;
   private readonly count: HTMLElement;
   private readonly playback: Playback;
+  /** The growth played in time (the view's growth time: no build a frame). */
+  private readonly timeline: Timeline;
+  /** Builds carry growth arrays: asked by `growth`, or by the first Play. */
+  private growthWanted: boolean;
   private readonly sliders: SliderPanel | undefined;
   private source: string;
   private iterations: number | undefined;
@@ -76,6 +98,11 @@ export class EmbedPlant {
         this.rebuild();
       },
     });
+    this.growthWanted = settings.growth !== undefined;
+    this.timeline = new Timeline(
+      { span: () => this.view.growthSpan(), show: (t) => this.showGrowth(t) },
+      { speed: settings.growth?.speed, loop: settings.growth?.loop },
+    );
     if (settings.controls.has('iterations')) bar.append(...this.iterationControls());
     bar.append(this.open);
     this.root.append(stage, bar);
@@ -93,7 +120,25 @@ export class EmbedPlant {
     }
     parent.append(this.root);
     this.view = new PlantView(stage, { assetBase: settings.siteRoot });
+    this.view.onPlantShown(() => this.timeline.refresh());
+    this.startGrowth(settings.growth);
     this.rebuild();
+  }
+
+  /** The growth as the settings ask: its range, its time, and playing if animated. */
+  private startGrowth(growth: SharedGrowth | undefined): void {
+    if (!growth) return;
+    this.timeline.setRange(growth.from ?? 0, growth.to ?? null);
+    if (growth.t !== undefined) this.timeline.seek(growth.t);
+    const still = globalThis.matchMedia?.('(prefers-reduced-motion: reduce)').matches ?? false;
+    if (growth.playing && !still) this.timeline.play();
+  }
+
+  /** Shows growth time `t` (the whole plant at its end). */
+  private showGrowth(t: number): void {
+    const span = this.view.growthSpan();
+    this.view.setGrowthTime(span === null || t >= span ? null : t);
+    this.root.dataset.t = String(t);
   }
 
   /** − n + and Play. */
@@ -109,8 +154,15 @@ export class EmbedPlant {
     const play = element('button', 'mp-button mp-play', 'Play');
     play.type = 'button';
     play.setAttribute('aria-pressed', 'false');
-    play.addEventListener('click', () => this.playback.toggle());
-    this.playback.onPlayingChange((playing) => {
+    play.title = 'Play the growth';
+    play.addEventListener('click', () => {
+      if (!this.growthWanted) {
+        this.growthWanted = true;
+        this.rebuild(); // with growth arrays: Play waits for them, playing
+      }
+      this.timeline.toggle();
+    });
+    this.timeline.onChange(({ playing }) => {
       play.textContent = playing ? 'Pause' : 'Play';
       play.setAttribute('aria-pressed', String(playing));
     });
@@ -122,6 +174,7 @@ export class EmbedPlant {
     this.source = source;
     this.iterations = iterations;
     this.playback.pause();
+    this.timeline.pause();
     this.sliders?.reset();
     this.sliders?.update(source);
     this.view.frameNextPlant();
@@ -132,13 +185,14 @@ export class EmbedPlant {
   dispose(): void {
     this.ticket++;
     this.playback.pause();
+    this.timeline.dispose();
     this.settings.builds.forget(this);
     this.view.dispose();
     this.root.remove();
   }
 
   private options(): BuildOptions {
-    return { iterations: this.iterations, seed: this.settings.seed };
+    return { iterations: this.iterations, seed: this.settings.seed, ...(this.growthWanted ? { growth: true } : {}) };
   }
 
   private rebuild(): void {

@@ -7,6 +7,7 @@
 // `<script>…</script>` or `<img onerror=…>` is just a comment, and every legal grammar opens
 // (`codec.test.ts`; the studio end to end in `tests/browser/share.test.ts`).
 import { validateEdits, type EditsDocument } from '../core/branches';
+import { cleanGrowth, type SharedGrowth } from './growth-state';
 
 /** The fragment's key: `#s=<version>.<payload>`. */
 export const FRAGMENT_KEY = 's';
@@ -51,6 +52,8 @@ export interface SharedState {
   camera?: { position: [number, number, number]; target: [number, number, number]; zoom?: number };
   /** Branch edits (their Bézier handles moved), keyed by branch path. */
   edits?: EditsDocument;
+  /** The growth timeline: time, speed, range (./growth-state.ts). */
+  growth?: SharedGrowth;
 }
 
 export type Decoded = { ok: true; state: SharedState } | { ok: false; error: string };
@@ -138,7 +141,7 @@ function cleanSliders(sliders: unknown): Record<string, number> | undefined {
 /** Checks the shape of a decoded state; copies only known fields. */
 export function validate(json: unknown): Decoded {
   if (!isRecord(json)) return fail('the link does not hold a state object');
-  const { text, iterations, seed, sliders, view, camera, edits } = json;
+  const { text, iterations, seed, sliders, view, camera, edits, growth } = json;
   if (typeof text !== 'string') return fail('the link holds no grammar text');
   if (text.length > MAX_TEXT) return fail(`the grammar in the link is too long (${text.length} characters; at most ${MAX_TEXT})`);
   const state: SharedState = { text };
@@ -152,6 +155,8 @@ export function validate(json: unknown): Decoded {
   }
   const kept = cleanSliders(sliders);
   if (kept) state.sliders = kept;
+  const timeline = cleanGrowth(growth); // (clamped, or dropped: the link opens without it)
+  if (timeline) state.growth = timeline;
   if (view !== undefined) {
     if (!isRecord(view)) return fail('the link’s view options are malformed');
     const clean: NonNullable<SharedState['view']> = {};

@@ -9,6 +9,7 @@ import type { DerivationControls, LazyContextView, LazyDerivationView } from './
 import type { TextKeeper, TextOpening } from './files';
 import type { HelpOpener, Notice, StudioElements } from './page';
 import type { LivePreview } from './preview';
+import type { LazyTimeline } from './timeline';
 
 /** The user's work: the grammars kept in the browser (localStorage, else IndexedDB). */
 export interface KeptWork {
@@ -32,4 +33,6 @@ export interface StudioParts extends KeptWork {
   derivationView: LazyDerivationView;
   preview: LivePreview;
   opening: TextOpening;
+  /** The growth timeline (its bar loads after the first plant). */
+  timeline: LazyTimeline;
 }

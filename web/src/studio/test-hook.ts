@@ -26,6 +26,8 @@ export interface StudioTestHook {
   sketched: number | null;
   /** The derived string's fingerprint of the plant on screen (share links must reproduce it). */
   derivedHash?: () => Promise<string>;
+  /** The growth time the view shows (null: the whole plant) and N, once the plant carries growth arrays. */
+  growth?: () => { t: number | null; span: number | null };
   /** Where the camera in use stands. */
   cameraPose?: () => { position: number[]; target: number[]; zoom: number };
   /** Branch editing: the selected branch's handles on the page, its path, and the edits. */
@@ -76,5 +78,6 @@ export function connectTestHook(hook: StudioTestHook, { preview, view, branchEdi
   };
   hook.derivedHash = () => preview.lastGood?.inspector.derivedHash() ?? Promise.resolve('');
   hook.cameraPose = () => view.cameraPose();
+  hook.growth = () => ({ t: view.growthTime, span: view.growthSpan() });
   hook.preview = preview;
 }

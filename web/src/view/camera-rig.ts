@@ -277,6 +277,15 @@ export class CameraRig {
     this.events.change();
   }
 
+  /**
+   * Turns the perspective camera `degrees` about the vertical through its target (a turntable; the
+   * face-on camera of flat plants does not turn).
+   */
+  turn(degrees: number): void {
+    if (this.active.camera instanceof OrthographicCamera || degrees === 0) return;
+    this.orbit(degrees, 0);
+  }
+
   /** Moves the camera `factor` times as far from its target (below 1: nearer). */
   private zoomBy(factor: number): void {
     const { camera, controls } = this.active;

@@ -1,11 +1,13 @@
 // The plant's triangle mesh as three.js BufferGeometries.
 import { Box3, BufferAttribute, BufferGeometry, Sphere, Vector3 } from 'three';
 import type { Bounds, GpuArrays, MeshBuffers } from '../core';
+import { addGrowthAttributes } from './growth-arrays';
 
 /**
  * Wraps the core's mesh arrays (no copy: they are JavaScript-owned already) in a BufferGeometry
  * with `position`, `normal`, `color` (linear RGB) attributes and an index, bounds computed (the
- * sphere from the box: one pass over a million vertices instead of three). With `gpu`, its packed
+ * sphere from the box: one pass over a million vertices instead of three), and the growth
+ * attributes when the mesh has its growth arrays (./growth-arrays.ts). With `gpu`, its packed
  * normals and colours are used instead of the mesh's floats. `bounds`, when given, is a box around
  * every position (a build's `stats.bounds`, which the core computed), and no pass is made.
  */
@@ -19,6 +21,7 @@ export function plantGeometry(mesh: MeshBuffers, gpu?: GpuArrays, bounds?: Bound
   geometry.setAttribute('color', gpu ? new BufferAttribute(gpu.colors, 3, true) : new BufferAttribute(mesh.colors, 3));
   geometry.setIndex(new BufferAttribute(mesh.indices, 1));
   if (mesh.uvs.length === (mesh.positions.length / 3) * 2) geometry.setAttribute('uv', new BufferAttribute(mesh.uvs, 2));
+  addGrowthAttributes(geometry, mesh.positions.length / 3, mesh);
   addMaterialGroups(geometry, mesh);
   setBox(geometry, bounds && mesh.positions.length > 0 ? new Box3(new Vector3(...bounds[0]), new Vector3(...bounds[1])) : pointsBox(mesh.positions));
   return geometry;
@@ -48,10 +51,11 @@ export function setBox(geometry: BufferGeometry, box: Box3): void {
  * The fallback for models too large to mesh (and a sketch's segments): the core's line ends and
  * their colours, for a `LineSegments` object.
  */
-export function lineGeometry(mesh: Pick<MeshBuffers, 'lines' | 'lineColors'>): BufferGeometry {
+export function lineGeometry(mesh: Pick<MeshBuffers, 'lines' | 'lineColors' | 'growthOrigins' | 'growthTimes'>): BufferGeometry {
   const geometry = new BufferGeometry();
   geometry.setAttribute('position', new BufferAttribute(mesh.lines, 3));
   geometry.setAttribute('color', new BufferAttribute(mesh.lineColors, 3));
+  addGrowthAttributes(geometry, mesh.lines.length / 3, mesh); // (one entry per line end then)
   setBox(geometry, pointsBox(mesh.lines));
   return geometry;
 }

@@ -1,11 +1,15 @@
 // The plant's materials in the view: lit or unlit, textured (bark and leaf) once both images are
 // there and while the toggle is on, and the stand-in that hides the tubes in the Lines mode.
 import { MeshBasicMaterial, type Material } from 'three';
+import type * as Growth from './growth';
+import { WHOLE, type GrowthUniform } from './growth-arrays';
 import { litPlantMaterial, unlitPlantMaterial } from './scene-setup';
 import { loadTexture, texturedMaterials, type TexturedMaterials } from './textures';
 
 /** The plant's materials and the choice between them. */
 export class PlantMaterials {
+  /** The growth time every material of the plant (and its lines) is drawn at (./growth.ts). */
+  readonly growthTime: GrowthUniform = { value: WHOLE };
   readonly lit = litPlantMaterial();
   readonly unlit = unlitPlantMaterial();
   /** Stands in for the tubes' material in the Lines mode: their triangles are not drawn. */
@@ -56,6 +60,17 @@ export class PlantMaterials {
     const material = this.texturesOn ? textured : this.lighting ? this.lit : this.unlit;
     const kinds = Array.isArray(material) ? material : [material, material, material];
     return lines ? [this.hiddenTubes, kinds[1], kinds[2]] : material;
+  }
+
+  /**
+   * Makes every material of the plant, and `more` (its lines'), grow with {@link growthTime}
+   * (./growth.ts, loaded then): their programs are made again for the next frame.
+   */
+  grow({ growingMaterial }: typeof Growth, more: Material[]): void {
+    for (const material of new Set([...this.all, ...more])) {
+      growingMaterial(material, this.growthTime);
+      material.needsUpdate = true;
+    }
   }
 
   /** Every material the plant may be drawn with (whose programs can be compiled ahead). */

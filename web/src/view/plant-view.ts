@@ -11,6 +11,7 @@ import type { Bounds, GpuArrays, MeshBuffers } from '../core';
 import { CameraRig, type Projection, type ViewPose } from './camera-rig';
 import { loadOrbitControls } from './camera-controls';
 import { GroundGrid } from './ground-grid';
+import { WHOLE } from './growth-arrays';
 import { BezierHandles } from './handles';
 import { highlightSegments, type Rgb } from './highlight';
 import { scenePalette } from './palette';
@@ -25,6 +26,7 @@ import { View2D } from './view-2d';
 import { FrameLoop, compileAhead, maxPictureSide, viewRenderer } from './view-renderer';
 import { ViewPicking } from './view-picking';
 import type * as Snapshot from './snapshot';
+import type * as Growth from './growth';
 
 const DARK_SCHEME = '(prefers-color-scheme: dark)';
 
@@ -37,6 +39,9 @@ export type ProjectionMode = 'auto' | Projection;
  * of the grammar's widths, or `auto`: lines for plants drawn in one plane, tubes for 3D ones.
  */
 export type RenderMode = 'auto' | 'lines' | 'tubes';
+
+/** Where the camera looks while the growth plays: at the whole (final) plant, or following what has grown. */
+export type GrowthCamera = 'final' | 'follow';
 
 /**
  * Shows one plant at a time in a container element. The view follows the plant: each new plant is
@@ -91,6 +96,16 @@ export class PlantView {
   private picturesLoaded: Promise<typeof Snapshot> | undefined;
   /** A movie is being filmed (see {@link film}): the view draws only its frames. */
   private filming = false;
+  /** The growth time shown (null: the whole plant), see {@link setGrowthTime}. */
+  private growthAt: number | null = null;
+  private growthCamera: GrowthCamera = 'final';
+  /** Who hears of each plant put on screen ({@link onPlantShown}). */
+  private readonly plantListeners = new Set<() => void>();
+  /** The growth's shaders (./growth.ts), loaded by the first growth time shown. */
+  private growthCode: typeof Growth | undefined;
+  private growthLoading: Promise<unknown> | undefined;
+  /** Degrees the camera was turned about the plant since it was last framed (a turntable's). */
+  private turned = 0;
 
   /** `assetBase`: the site's root, where the textures are (default: the page's address). */
   constructor(
@@ -269,6 +284,7 @@ export class PlantView {
     const lines2D = this.view2D?.showPlant(asLines ? mesh : undefined) ?? false;
     this.shown.lines.visible = !lines2D;
     this.shown.replace(plant);
+    this.showGrowth(null); // a new plant shows whole until a growth time is set again
     // Whether WebGL draws them, said with them: its geometry of segments drawn in 2D is not made.
     this.segmentLines.show(asLines ? null : mesh, !this.segmentsIn2D);
     this.applyMaterial();
@@ -282,6 +298,95 @@ export class PlantView {
     // What is drawn in 2D, drawn now with the camera framed on it, not in the frame: the WebGL
     // frame comes on screen no later for it (the frame redraws it only if the camera or size changed).
     this.draw2D();
+    for (const listener of this.plantListeners) listener();
+  }
+
+  /**
+   * Calls `listener` each time a new plant is on screen (all of it on the GPU; shown whole, see
+   * {@link setGrowthTime}); returns the function that stops it.
+   */
+  onPlantShown(listener: () => void): () => void {
+    this.plantListeners.add(listener);
+    return () => this.plantListeners.delete(listener);
+  }
+
+  /**
+   * Shows the plant on screen at growth time `t` (in derivation steps, 0 … {@link growthSpan}; see
+   * ./growth.ts), or whole (`null`, the default after every new plant). One uniform changes and a
+   * frame is asked for: no build, no upload. A plant without growth arrays is shown whole. With
+   * the camera {@link setGrowthCamera following} the growth, the camera frames what has grown.
+   */
+  setGrowthTime(t: number | null): void {
+    const time = t === null || !Number.isFinite(t) ? null : t;
+    if (time === this.growthAt) return;
+    this.showGrowth(time);
+    if (time !== null && !this.growthCode) this.loadGrowth();
+    const bounds = time !== null && this.growthCamera === 'follow' ? this.growthCode?.grownBounds(this.shown, time) : null;
+    if (bounds) {
+      const turned = this.turned;
+      this.frame(bounds);
+      this.turn(turned); // the turntable's angle kept
+    }
+    this.requestRender();
+  }
+
+  /** The growth time shown, or null (the whole plant). */
+  get growthTime(): number | null {
+    return this.growthAt;
+  }
+
+  private showGrowth(t: number | null): void {
+    this.growthAt = t;
+    this.materials.growthTime.value = t ?? WHOLE;
+  }
+
+  /**
+   * Loads the growth's shaders (a chunk of its own, which no first plant needs) and makes the
+   * plant's materials grow with the growth time; the time shown meanwhile is shown again then.
+   */
+  private loadGrowth(): void {
+    this.growthLoading ??= import('./growth').then(
+      (code) => {
+        this.growthCode = code;
+        this.materials.grow(code, [this.shown.lines.material]);
+        const t = this.growthAt;
+        this.growthAt = null;
+        this.setGrowthTime(t);
+        this.requestRender();
+      },
+      (error: unknown) => {
+        this.growthLoading = undefined; // tried again by the next time shown
+        console.error('The growth could not load:', error);
+      },
+    );
+  }
+
+  /** Settles once a growth time can be drawn (its shaders loaded); for tests and pictures. */
+  get growthReady(): Promise<unknown> {
+    this.loadGrowth();
+    return this.growthLoading!;
+  }
+
+  /** N when the plant on screen carries growth arrays (it can be shown at any t in [0, N]), else null. */
+  growthSpan(): number | null {
+    return this.upload.pending ? null : this.shown.growthSpan;
+  }
+
+  /** Where the camera looks while the growth is shown: at the whole plant (`final`) or at what has grown (`follow`). */
+  setGrowthCamera(mode: GrowthCamera): void {
+    this.growthCamera = mode;
+    if (mode === 'final') this.frame();
+    else if (this.growthAt !== null) {
+      const t = this.growthAt;
+      this.growthAt = null;
+      this.setGrowthTime(t);
+    }
+  }
+
+  /** Turns the camera `degrees` about the plant's vertical axis (a turntable; flat plants stay face-on). */
+  turn(degrees: number): void {
+    this.turned = (this.turned + degrees) % 360;
+    this.cameras.turn(degrees);
   }
 
   /** Frames the new plant on screen, or keeps the camera (and hints at a refit if the user moved it). */
@@ -441,6 +546,7 @@ export class PlantView {
    */
   frame(bounds?: Bounds): void {
     const box = bounds ? new Box3(new Vector3(...bounds[0]), new Vector3(...bounds[1])) : this.visibleBox();
+    this.turned = 0;
     this.cameras.frame(box);
     this.placeGrid(box);
     this.requestRender();

@@ -28,17 +28,24 @@ export function unlitPlantMaterial(): MeshBasicMaterial {
  * moves half a pixel outwards along its normal, in view space, and is projected again. One pixel's
  * size at the vertex's depth is 2·w / (P[1][1] · height in pixels): w is the depth for a
  * perspective camera and 1 for an orthographic one. Lighting and fog keep the vertex's own place
- * (three.js computed them from `mvPosition` before this).
+ * (three.js computed them from `mvPosition` before this). An element not grown yet at the growth
+ * time (./growth.ts) stays a point, not a pixel-wide speck.
  */
 const HALF_A_PIXEL_OUT = `
   vec3 outwards = normalMatrix * normal;
   float outwardsLength = length(outwards);
-  if (outwardsLength > 0.0) {
+  if (outwardsLength > 0.0 && meristemGrown > 0.0) {
     float pixel = 2.0 * gl_Position.w / (projectionMatrix[1][1] * meristemPixelsHigh);
     mvPosition.xyz += outwards * (0.5 * pixel / outwardsLength);
     gl_Position = projectionMatrix * mvPosition;
   }
 }`;
+
+/**
+ * The fraction of its size a vertex has grown to (./growth.ts sets it; 1 without growth): a vertex
+ * not grown yet is not moved out, so an element not there yet is not drawn as a speck.
+ */
+export const GROWN = 'float meristemGrown = 1.0;';
 
 const viewport = new Vector4();
 
@@ -75,7 +82,7 @@ export function atLeastAPixelWide<M extends Material>(material: M): M {
   const pixelsHigh = { value: 1 };
   material.onBeforeCompile = (shader) => {
     shader.uniforms.meristemPixelsHigh = pixelsHigh;
-    shader.vertexShader = `uniform float meristemPixelsHigh;\n${shader.vertexShader.replace(/\}\s*$/, HALF_A_PIXEL_OUT)}`;
+    shader.vertexShader = `uniform float meristemPixelsHigh;\n${GROWN}\n${shader.vertexShader.replace(/\}\s*$/, HALF_A_PIXEL_OUT)}`;
   };
   material.onBeforeRender = (renderer) => {
     pixelsHigh.value = Math.max(1, renderer.getCurrentViewport(viewport).w / supersampling);

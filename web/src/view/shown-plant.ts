@@ -3,6 +3,7 @@
 import { Box3, BufferGeometry, LineBasicMaterial, LineSegments, Mesh, type Material } from 'three';
 import type { MeshBuffers } from '../core';
 import type { BufferPool, GpuGeometry } from './gpu-geometry';
+import { growthSpanOf } from './growth-arrays';
 import { plantGeometry, pointsBox, setBox } from './plant-geometry';
 import type { IncomingPlant, PlantUpload } from './plant-upload';
 
@@ -25,6 +26,8 @@ export class ShownPlant {
   flat = false;
   /** The box of the plant's segments (drawn as lines in the Lines mode), once asked for. */
   private segmentsBox: Box3 | undefined;
+  /** N when the plant carries growth arrays (./growth-arrays.ts), else null. */
+  growthSpan: number | null = null;
 
   /** `material`: the plant's until {@link material} is set. */
   constructor(material: Material) {
@@ -57,6 +60,8 @@ export class ShownPlant {
     oldLines.dispose();
     this.flat = flat;
     this.segmentsBox = undefined;
+    const entries = (asLines ? mesh.lines.length : mesh.positions.length) / 3;
+    this.growthSpan = mesh.growthTimes?.length === entries * 2 && entries > 0 ? growthSpanOf(mesh.growthTimes) : null;
   }
 
   /** Whether a plant drawn as lines, one pixel wide, is on screen (a plant too large to mesh, a sketch). */
@@ -119,3 +124,4 @@ export class ShownPlant {
     this.lines.material.dispose();
   }
 }
+

@@ -19,7 +19,7 @@ export interface Shortcut {
 export const SHORTCUTS: readonly Shortcut[] = [
   { code: 'Comma', keys: 'Alt+,', action: 'stepBack', description: 'One iteration fewer' },
   { code: 'Period', keys: 'Alt+.', action: 'stepForward', description: 'One iteration more' },
-  { code: 'KeyP', keys: 'Alt+P', action: 'playPause', description: 'Play the derivation from 0 / pause' },
+  { code: 'KeyP', keys: 'Alt+P', action: 'playPause', description: 'Play the growth / pause (the timeline under the view)' },
   { code: 'KeyR', keys: 'Alt+R', action: 'reroll', description: 'New random seed' },
   { code: 'KeyG', keys: 'Alt+G', action: 'gallery', description: 'Open the gallery' },
   { code: 'KeyK', keys: 'Alt+K', action: 'frame', description: 'Frame the plant' },
@@ -61,6 +61,8 @@ export function renderShortcutHelp(list: HTMLElement): void {
     ['Ctrl+Shift+M', 'List every error and warning in full, under the text (Problems)'],
     ['Ctrl+Z', 'Undo, also an example, file or saved grammar opened over your text'],
     ['← → on the divider', 'Resize the editor and the view'],
+    ['Space on the view or the timeline', 'Play the growth / pause'],
+    ['← → on the timeline', 'A step of growth back or on (Shift: a tenth of a step); Home / End: the range’s ends'],
   ];
   list.replaceChildren(
     ...rows.flatMap(([keys, description]) => {

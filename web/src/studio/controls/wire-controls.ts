@@ -25,9 +25,8 @@ export function wireViewControls({ els, derivation, viewOptions, view, preview, 
   derivation.onChange(() => preview.rebuild());
   const viewTools = new ViewTools(els.viewTools, viewOptions, view);
   viewOptions.onChange((_, changed) => (changed.has('sides') || changed.has('smoothAll') || changed.has('render')) && preview.rebuild());
-  // The view follows the plant; Play shows the growth in one frame (or frames every step).
-  const following = new ViewFollowing(els.following, view, () => preview.lastGood);
-  following.follow(derivation.playback);
+  // The view follows the plant (the timeline's camera frames the growth: ../timeline).
+  const following = new ViewFollowing(els.following, view);
   // Stages: the iterations side by side, grown in a worker of their own (loaded when first turned on).
   const stages = new LazyStagesMode(els.stages, {
     shown: () => preview.lastGood,
@@ -38,7 +37,6 @@ export function wireViewControls({ els, derivation, viewOptions, view, preview, 
   });
   viewOptions.onChange((values, changed) => changed.has('lighting') && stages.setLighting(values.lighting));
   preview.onDelivered((result) => {
-    following.delivered(result);
     stages.delivered(result);
     derivation.buildShown(result.build);
     viewTools.showProjection();
@@ -68,11 +66,11 @@ export interface KeyboardTargets extends ViewControls {
 }
 
 /** Keyboard: shortcuts anywhere, their help, the splitter. */
-export function wireKeyboard({ els, derivation, view, help }: StudioParts, { viewTools, stages, layout, gallery }: KeyboardTargets): void {
+export function wireKeyboard({ els, derivation, view, help, timeline }: StudioParts, { viewTools, stages, layout, gallery }: KeyboardTargets): void {
   const actions: Record<ShortcutAction, () => void> = {
     stepBack: () => derivation.playback.stepBy(-1),
     stepForward: () => derivation.playback.stepBy(+1),
-    playPause: () => derivation.playback.toggle(),
+    playPause: () => timeline.toggle(),
     reroll: () => derivation.reroll(),
     gallery: () => gallery.open(),
     frame: () => view.frame(),

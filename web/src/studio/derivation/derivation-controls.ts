@@ -1,5 +1,5 @@
-// The derivation's controls in the toolbar: the iterations (the box, step −/+, play / pause) and the
-// seed (the box, reroll). Empty boxes mean the grammar's own `#iterations` and `#seed`. A number in
+// The derivation's controls in the toolbar: the iterations (the box, step −/+) and the seed (the
+// box, reroll); the toolbar's Play plays the growth in time (../timeline). Empty boxes mean the grammar's own `#iterations` and `#seed`. A number in
 // the iterations box overrides the grammar's, and shows it: the box is marked "overrides N" with a ×
 // that clears it (empty, its placeholder is the grammar's value); it is cleared when another text
 // is opened or the grammar's own iterations line is edited, and the errors its value causes (the
@@ -21,7 +21,6 @@ export interface DerivationElements {
   iterationsReset: HTMLButtonElement;
   stepBack: HTMLButtonElement;
   stepForward: HTMLButtonElement;
-  play: HTMLButtonElement;
   seed: HTMLInputElement;
   reroll: HTMLButtonElement;
 }
@@ -64,9 +63,9 @@ function writtenIterations(text: string): string | null {
   return findDirective(text, directive.name)?.args.join(' ') ?? null;
 }
 
-/** The iterations and seed the user asked for, and playback over the iterations. */
+/** The iterations and seed the user asked for, and stepping over the iterations. */
 export class DerivationControls {
-  /** Step −/+ and play over the iterations. */
+  /** Step −/+ over the iterations (a build each; Play plays the growth in time instead). */
   readonly playback: Playback;
   /** The grammar's `#iterations` of the last build shown. */
   private grammarIterations = 0;
@@ -87,10 +86,6 @@ export class DerivationControls {
       },
       { maxIterations: Number(els.iterations.max) },
     );
-    this.playback.onPlayingChange((playing) => {
-      els.play.setAttribute('aria-pressed', String(playing));
-      els.play.textContent = playing ? 'Pause' : 'Play';
-    });
     els.iterations.addEventListener('input', () => {
       this.playback.pause();
       this.showOverride();
@@ -104,7 +99,6 @@ export class DerivationControls {
     this.showOverride();
     els.stepBack.addEventListener('click', () => this.playback.stepBy(-1));
     els.stepForward.addEventListener('click', () => this.playback.stepBy(+1));
-    els.play.addEventListener('click', () => this.playback.toggle());
     els.seed.addEventListener('input', () => this.changed());
     els.reroll.addEventListener('click', () => this.reroll());
   }

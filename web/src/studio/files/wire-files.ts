@@ -23,10 +23,10 @@ export function browserKeeping(): KeptWork {
 
 /** What replaces the text: opening a text forgets what belonged to the one before, and builds the new one. */
 export function createOpening(
-  parts: Pick<StudioParts, 'els' | 'notice' | 'keeper' | 'editor' | 'derivation' | 'sliders' | 'viewOptions' | 'view' | 'preview'>,
+  parts: Pick<StudioParts, 'els' | 'notice' | 'keeper' | 'editor' | 'derivation' | 'sliders' | 'viewOptions' | 'view' | 'preview' | 'timeline'>,
   start: StartingText,
 ): TextOpening {
-  const { els, notice, derivation, sliders, viewOptions, view, preview } = parts;
+  const { els, notice, derivation, sliders, viewOptions, view, preview, timeline } = parts;
   return new TextOpening(
     {
       editor: parts.editor,
@@ -44,6 +44,7 @@ export function createOpening(
       notice,
       forgetText: () => {
         derivation.clear();
+        timeline.clear();
         sliders.reset();
         viewOptions.set({ projection: 'auto', render: 'auto' });
         view.frameNextPlant();

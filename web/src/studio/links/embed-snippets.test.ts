@@ -31,3 +31,20 @@ describe('embed snippets', () => {
     expect(html).not.toContain('<script>alert');
   });
 });
+
+describe('embed snippets of a growing plant', () => {
+  const growth = { t: 2.5, speed: 0.5, loop: true, from: 1, to: 3 };
+
+  it('play the growth as the timeline did: animate, loop, speed and range', () => {
+    expect(frameSnippet(SITE, '#s=1.abc', { iterations: false, sliders: false }, growth)).toContain(
+      'src="https://example.org/courses/meristem/embed.html?animate&amp;loop&amp;speed=0.5&amp;from=1&amp;to=3#s=1.abc"',
+    );
+    const html = elementSnippet(SITE, { text: 'axiom: F', growth }, { iterations: true, sliders: false });
+    expect(html).toContain('<meristem-plant controls="iterations" animate loop speed="0.5" from="1" to="3" style="height: 420px">');
+  });
+
+  it('do not animate a plant whose timeline was not used', () => {
+    expect(frameSnippet(SITE, '#s=1.abc', { iterations: false, sliders: false }, { speed: 1 })).toContain('embed.html#s=1.abc');
+    expect(elementSnippet(SITE, { text: 'axiom: F', growth: { speed: 2 } }, { iterations: false, sliders: false })).toContain('<meristem-plant style=');
+  });
+});

@@ -2,7 +2,7 @@
 // another page, as an <iframe> of embed.html (the state in its fragment, as a share link) or as a
 // <meristem-plant> element with the grammar written in the page. The site's address is the
 // studio's own, so the snippets work wherever the studio is deployed.
-import type { SharedState } from '../../share';
+import type { SharedGrowth, SharedState } from '../../share';
 
 /** Which controls the embedded plant shows (embed-plant.ts's names). */
 export interface SnippetControls {
@@ -24,21 +24,41 @@ function attribute(value: string): string {
   return `"${value.replace(/&/g, '&amp;').replace(/"/g, '&quot;')}"`;
 }
 
-/** An <iframe> of embed.html showing `fragment`'s state (`#s=…`), 640 × 480, fullscreen allowed. */
-export function frameSnippet(siteRoot: string, fragment: string, controls: SnippetControls): string {
+/**
+ * The growth's attributes (and embed.html's query parameters) for a link's timeline: the plant
+ * grows at once (`animate`), looped, at the speed and over the range the timeline had. None
+ * when the timeline was not used.
+ */
+export function growthParameters(growth: SharedGrowth | undefined): [string, string | null][] {
+  if (growth?.t === undefined) return [];
+  const parameters: [string, string | null][] = [['animate', null]];
+  if (growth.loop) parameters.push(['loop', null]);
+  if (growth.speed !== undefined && growth.speed !== 1) parameters.push(['speed', String(growth.speed)]);
+  if (growth.from) parameters.push(['from', String(growth.from)]);
+  if (growth.to !== undefined) parameters.push(['to', String(growth.to)]);
+  return parameters;
+}
+
+/**
+ * An <iframe> of embed.html showing `fragment`'s state (`#s=…`), 640 × 480, fullscreen allowed;
+ * growing as the timeline did (`growth`, see {@link growthParameters}).
+ */
+export function frameSnippet(siteRoot: string, fragment: string, controls: SnippetControls, growth?: SharedGrowth): string {
   const list = controlList(controls);
-  const src = new URL(`embed.html${list ? `?controls=${list}` : ''}${fragment}`, siteRoot).href;
+  const query = [...(list ? [`controls=${list}`] : []), ...growthParameters(growth).map(([name, value]) => (value === null ? name : `${name}=${value}`))].join('&');
+  const src = new URL(`embed.html${query ? `?${query}` : ''}${fragment}`, siteRoot).href;
   return `<iframe src=${attribute(src)} width="640" height="480" style="border: 0; max-width: 100%" title="A plant made with Meristem" allowfullscreen loading="lazy"></iframe>`;
 }
 
 /** The script that defines <meristem-plant>, then one element with `state`'s grammar as its text. */
-export function elementSnippet(siteRoot: string, state: Pick<SharedState, 'text' | 'iterations' | 'seed'>, controls: SnippetControls): string {
+export function elementSnippet(siteRoot: string, state: Pick<SharedState, 'text' | 'iterations' | 'seed' | 'growth'>, controls: SnippetControls): string {
   const script = new URL('meristem-plant.js', siteRoot).href;
   const list = controlList(controls);
   const attributes = [
     state.iterations === undefined ? '' : ` iterations="${state.iterations}"`,
     state.seed === undefined ? '' : ` seed="${state.seed}"`,
     list ? ` controls="${list}"` : '',
+    ...growthParameters(state.growth).map(([name, value]) => (value === null ? ` ${name}` : ` ${name}="${value}"`)),
   ].join('');
   return `<script type="module" src=${attribute(script)}></script>\n<meristem-plant${attributes} style="height: 420px">\n${htmlText(state.text.trimEnd())}\n</meristem-plant>`;
 }
@@ -77,7 +97,7 @@ export class EmbedSnippets {
   private render(): void {
     if (!this.shown) return;
     const controls = { iterations: this.els.iterations.checked, sliders: this.els.sliders.checked };
-    this.els.frame.value = frameSnippet(this.siteRoot, this.shown.fragment, controls);
+    this.els.frame.value = frameSnippet(this.siteRoot, this.shown.fragment, controls, this.shown.state.growth);
     this.els.element.value = elementSnippet(this.siteRoot, this.shown.state, controls);
   }
 

@@ -8,6 +8,7 @@ import type { DerivationControls } from '../derivation';
 import type { LivePreview } from '../preview';
 import type { SliderPanel } from '../../plant-controls';
 import type { ViewOptions } from '../controls';
+import type { LazyTimeline } from '../timeline';
 
 /** The pieces that keep what a link holds. */
 export interface LinkStateParts {
@@ -17,6 +18,8 @@ export interface LinkStateParts {
   viewOptions: ViewOptions;
   view: PlantView;
   branchEdits: BranchEdits;
+  /** The growth timeline: time, speed, range. */
+  timeline: LazyTimeline;
   /** Its builds: a link's camera is set once the link's plant is on screen. */
   preview: LivePreview;
 }
@@ -34,7 +37,7 @@ export class LinkState {
     });
   }
 
-  /** The state now: text, iterations and seed, sliders, view options, camera, branch edits. */
+  /** The state now: text, iterations and seed, sliders, view options, camera, branch edits, the timeline. */
   capture(): SharedState {
     const { editor, derivation, sliders, viewOptions, view, branchEdits } = this.parts;
     const state: SharedState = { text: editor.text(), ...derivation.toShared() };
@@ -44,6 +47,8 @@ export class LinkState {
     state.camera = view.cameraPose();
     const edits = branchEdits.document();
     if (edits) state.edits = edits;
+    const growth = this.parts.timeline.toShared();
+    if (growth) state.growth = growth;
     return state;
   }
 
@@ -56,5 +61,6 @@ export class LinkState {
     this.parts.viewOptions.applyShared(state.view);
     if (state.edits) this.parts.branchEdits.restore(state.edits);
     if (state.camera) this.camera = state.camera;
+    this.parts.timeline.applyShared(state.growth);
   }
 }

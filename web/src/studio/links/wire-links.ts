@@ -9,9 +9,9 @@ import { installShareButton } from './share-button';
 
 /** Restores the link the studio opened with (if any), and connects the Share button and pasted links. */
 export function wireLinks(parts: StudioParts, branchEdits: BranchEdits, start: StartingText): { preload(): Promise<unknown> } {
-  const { els, editor, derivation, sliders, viewOptions, view, preview, notice, opening } = parts;
-  const link = new LinkState({ editor, derivation, sliders, viewOptions, view, branchEdits, preview });
-  if (start.state) link.restore(start.state); // iterations, seed, edits, camera (its view options apply already)
+  const { els, editor, derivation, sliders, viewOptions, view, preview, notice, opening, timeline } = parts;
+  const link = new LinkState({ editor, derivation, sliders, viewOptions, view, branchEdits, preview, timeline });
+  if (start.state) link.restore(start.state); // iterations, seed, edits, camera, timeline (its view options apply already)
   // The Share dialog and its embed snippets load with the first share (issue 22).
   const shareDialog = onDemand(async () => {
     const [{ ShareDialog }, { EmbedSnippets }] = await Promise.all([import('./share-dialog'), import('./embed-snippets')]);

@@ -46,7 +46,6 @@ function controlElements() {
       iterationsReset: byId('iterations-reset', HTMLButtonElement),
       stepBack: byId('step-back', HTMLButtonElement),
       stepForward: byId('step-forward', HTMLButtonElement),
-      play: byId('play', HTMLButtonElement),
       seed: byId('seed', HTMLInputElement),
       reroll: byId('reroll', HTMLButtonElement),
     },
@@ -61,7 +60,7 @@ function controlElements() {
       lighting: byId('lighting', HTMLButtonElement),
       textures: byId('textures', HTMLButtonElement),
       byProduction: byId('by-production', HTMLInputElement),
-      menus: [byId('framing-menu', HTMLDetailsElement), byId('tubes-menu', HTMLDetailsElement), byId('lines-menu', HTMLDetailsElement)],
+      menus: [byId('tubes-menu', HTMLDetailsElement), byId('lines-menu', HTMLDetailsElement)],
       plantOnly: [...document.querySelectorAll<HTMLElement>('.view-tools .plant-only')],
     },
     layout: {
@@ -86,7 +85,10 @@ function controlElements() {
     },
     following: {
       refit: byId('refit', HTMLButtonElement),
-      playFraming: [...document.querySelectorAll<HTMLInputElement>('input[name=play-framing]')],
+    },
+    timeline: {
+      bar: byId('timeline', HTMLElement),
+      play: byId('play', HTMLButtonElement),
     },
     sliders: byId('sliders', HTMLElement),
     constantsCount: byId('constants-count', HTMLElement),

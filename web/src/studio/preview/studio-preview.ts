@@ -6,6 +6,7 @@ import type { PlantView } from '../../view';
 import { tubesFor, type ViewOptions } from '../controls';
 import type { DerivationControls, Inspector } from '../derivation';
 import type { Notice, StudioElements } from '../page';
+import type { LazyTimeline } from '../timeline';
 import { reportCoreCrashes } from './core-crashes';
 import type { DiagnosticsFeed } from './diagnostics-feed';
 import { LivePreview } from './live-preview';
@@ -20,6 +21,7 @@ export interface StudioPreviewParts extends Inspector {
   derivation: DerivationControls;
   viewOptions: ViewOptions;
   notice: Notice;
+  timeline: LazyTimeline;
 }
 
 /** The live preview of the editor's text, with the derivation's and the view's options. */
@@ -44,8 +46,10 @@ export function createLivePreview(parts: StudioPreviewParts): LivePreview {
       seed: derivation.seed(),
       sides: viewOptions.values.sides,
       smoothAll: viewOptions.values.smoothAll,
-      // The Lines mode (and `auto` for a flat plant) draws no tubes: they are not meshed.
-      tubes: tubesFor(viewOptions.values.render),
+      // The Lines mode (and `auto` for a flat plant) draws no tubes: they are not meshed; but
+      // once the timeline is used they are, with growth arrays (the Lines mode's lines do not grow).
+      tubes: parts.timeline.growthWanted || tubesFor(viewOptions.values.render),
+      ...(parts.timeline.growthWanted ? { growth: true } : {}),
     }),
     diagnosticsChanged: () => editor.refreshDiagnostics(),
     adopt: (result) => {

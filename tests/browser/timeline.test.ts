@@ -1,0 +1,153 @@
+// End-to-end: the growth timeline (issue 45) in the built studio, headless Chromium, by pixels.
+// ABOP 1.24a at n = 4 scrubbed to t = 2, 2.5 and 3 shows a plant growing between the steps (the
+// frame at 2.5 is neither 2's nor 3's, and larger than 2's), at t = N the whole plant as before
+// the timeline was used; Play changes the picture frame after frame without a build; a share
+// link keeps the time, speed and range; the embed plays the growth.
+import { chromium, type Browser, type Page } from 'playwright-core';
+import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
+import { decodeState, encodeState } from '../../web/src/share';
+import { changedShare, differingShare, foregroundShare, type Picture } from './pictures';
+import { canvasPicture, example, generation, nextBuild, openExample, openStudio, openTimelineMenu, savePage, twoFrames } from './studio-page';
+
+let browser: Browser;
+let page: Page;
+let problems: string[];
+
+beforeAll(async () => {
+  browser = await chromium.launch({ executablePath: '/usr/bin/chromium' });
+  ({ page, problems } = await openStudio(browser));
+  // The bar under the view loads after the first plant.
+  await page.getByTestId('timeline-slider').waitFor();
+});
+
+afterAll(async () => {
+  await browser?.close();
+});
+
+const growth = (p: Page = page) => p.evaluate(() => window.__meristem!.growth!());
+
+/** Scrubs the timeline to `t` (as a drag of the slider does) and waits for its frame. */
+async function scrubTo(t: number): Promise<void> {
+  await page.getByTestId('timeline-slider').fill(String(t));
+  await page.waitForFunction((want) => {
+    const { t, span } = window.__meristem!.growth!();
+    return span !== null && (t === want || (t === null && want >= span));
+  }, t);
+  await twoFrames(page);
+}
+
+/** The share of the view's pixels that are plant. */
+const plantShare = (picture: Picture) => foregroundShare(picture);
+
+describe('the growth timeline', () => {
+  it('shows ABOP 1.24a growing between steps: t = 2.5 is neither step 2 nor step 3, and t = N is the whole plant', async () => {
+    expect(await openExample(page, 'abop-1.24a.lsys')).toBe('ok');
+    let before = await generation(page);
+    await page.getByTestId('iterations').fill('4');
+    await nextBuild(page, before);
+    await page.getByTestId('grid').click(); // only the plant differs from the background
+    const whole = await canvasPicture(page, 'timeline-1.24a-whole.png');
+    expect((await growth()).span, 'no growth arrays before the timeline is used').toBeNull();
+
+    before = await generation(page);
+    await page.getByTestId('timeline-slider').fill('2');
+    await nextBuild(page, before); // the first use asks for a build with growth arrays
+    expect((await growth()).span).toBe(4);
+    await scrubTo(2);
+    const two = await canvasPicture(page, 'timeline-1.24a-t2.png');
+    await scrubTo(2.5);
+    const half = await canvasPicture(page, 'timeline-1.24a-t2.5.png');
+    await scrubTo(3);
+    const three = await canvasPicture(page, 'timeline-1.24a-t3.png');
+    expect(await page.getByTestId('timeline-time').textContent()).toBe('t 3.00 of 4 · step 3');
+    const [a, b, c] = [plantShare(two), plantShare(half), plantShare(three)];
+    expect(a, 'something is drawn at t = 2 (step 2: a ninth of the height)').toBeGreaterThan(0.0002);
+    expect(b, 't = 2.5 has grown past t = 2').toBeGreaterThan(a * 1.1);
+    expect(c, 't = 3 has grown past t = 2.5').toBeGreaterThan(b * 1.05);
+    expect(changedShare(two, half), 't = 2.5 is not step 2').toBeGreaterThan(0.001);
+    expect(changedShare(half, three), 't = 2.5 is not step 3').toBeGreaterThan(0.001);
+
+    await scrubTo(4);
+    expect((await growth()).t, 'at t = N the plant is shown whole').toBeNull();
+    const end = await canvasPicture(page, 'timeline-1.24a-t4.png');
+    expect(differingShare(whole, end, 40), 't = N is the whole plant as before').toBeLessThan(0.002);
+    expect(problems).toEqual([]);
+  });
+
+  it('plays: frames change while it plays, with no build, and Pause stops it', async () => {
+    await openTimelineMenu(page);
+    await page.getByTestId('timeline-speed').selectOption('1');
+    await page.keyboard.press('Escape');
+    await scrubTo(0.5);
+    const generationBefore = await generation(page);
+    await page.getByTestId('timeline-play').click();
+    expect(await page.getByTestId('play').getAttribute('aria-pressed'), 'the toolbar’s Play is the same Play').toBe('true');
+    const first = await canvasPicture(page, 'timeline-play-0.png');
+    await page.waitForTimeout(1000);
+    const second = await canvasPicture(page, 'timeline-play-1.png');
+    await page.keyboard.press('Alt+p');
+    expect(await page.getByTestId('timeline-play').getAttribute('aria-pressed')).toBe('false');
+    expect(changedShare(first, second), 'a second of playing changed the picture').toBeGreaterThan(0.001);
+    const { t } = await growth();
+    expect(t).toBeGreaterThan(0.7);
+    expect(t).toBeLessThan(4);
+    expect(await generation(page), 'playing built nothing').toBe(generationBefore);
+    await page.waitForTimeout(300);
+    expect((await growth()).t, 'paused').toBe(t);
+    expect(problems).toEqual([]);
+  });
+
+  it('steps with the keys on the slider: ← → a step, Shift a tenth', async () => {
+    await scrubTo(2);
+    await page.getByTestId('timeline-slider').focus();
+    await page.keyboard.press('ArrowRight');
+    expect((await growth()).t).toBe(3);
+    await page.keyboard.press('Shift+ArrowLeft');
+    expect((await growth()).t).toBeCloseTo(2.9, 9);
+    await page.keyboard.press('Home');
+    expect((await growth()).t).toBe(0);
+    expect(problems).toEqual([]);
+  });
+
+  it('keeps the time, speed and range in a share link, and the link opens at that time', async () => {
+    await scrubTo(2.5);
+    await openTimelineMenu(page);
+    await page.getByTestId('timeline-speed').selectOption('0.5');
+    await page.getByTestId('timeline-from').fill('1');
+    await page.getByTestId('timeline-from').dispatchEvent('change');
+    await page.getByTestId('timeline-loop').check();
+    await page.keyboard.press('Escape');
+    await page.getByTestId('share').click();
+    const link = await page.getByTestId('share-link').inputValue();
+    await page.keyboard.press('Escape');
+    const decoded = await decodeState(new URL(link).hash);
+    expect(decoded.ok && decoded.state.growth).toEqual({ t: 2.5, speed: 0.5, from: 1, loop: true });
+
+    const other = await browser.newPage({ viewport: { width: 1280, height: 800 } });
+    const opened: string[] = [];
+    other.on('pageerror', (e) => opened.push(e.message));
+    await other.goto(link);
+    await other.waitForFunction(() => window.__meristem?.growth?.().t === 2.5, undefined, { timeout: 30_000 });
+    expect(await other.getByTestId('timeline-speed').inputValue()).toBe('0.5');
+    expect(await other.getByTestId('timeline-loop').isChecked()).toBe(true);
+    await savePage(other, 'timeline-link.png');
+    await other.close();
+    expect(opened).toEqual([]);
+    expect(problems).toEqual([]);
+  });
+
+  it('plays in embed.html from its query (animate loop speed)', async () => {
+    const fragment = await encodeState({ text: example('abop-1.24a.lsys'), iterations: 3 });
+    const embed = await browser.newPage({ viewport: { width: 480, height: 360 } });
+    const errors: string[] = [];
+    embed.on('pageerror', (e) => errors.push(e.message));
+    await embed.goto(new URL(`embed.html?animate&loop&speed=2${fragment}`, inject('studioUrl')).href);
+    await embed.waitForFunction(() => Number(document.querySelector('.mp')?.getAttribute('data-t') ?? 0) > 0.2, undefined, { timeout: 30_000 });
+    const t1 = Number(await embed.locator('.mp').getAttribute('data-t'));
+    await embed.waitForTimeout(500);
+    const t2 = Number(await embed.locator('.mp').getAttribute('data-t'));
+    expect(t2, 'the embed plays on').not.toBe(t1);
+    await embed.close();
+    expect(errors).toEqual([]);
+  });
+});

@@ -1,0 +1,87 @@
+// The studio's growth timeline as the first plant's script holds it: whether builds carry growth
+// arrays (once the timeline is used), and the timeline bar under the view (./timeline-bar.ts, its
+// own chunk), loaded after the first plant or by the first Play. Play, the keyboard and share
+// links reach the timeline through here.
+import type { SharedGrowth } from '../../share';
+import type { PlantView } from '../../view';
+import type * as Bar from './timeline-bar';
+
+/** The bar's place in the page (index.html) and the toolbar's Play. */
+export interface TimelineElements {
+  /** The bar under the view, filled when its code arrives. */
+  bar: HTMLElement;
+  /** The toolbar's Play / Pause (the timeline's, as the bar's own). */
+  play: HTMLButtonElement;
+}
+
+/** What the timeline needs of the studio. */
+export interface TimelineStudio {
+  view: PlantView;
+  /** Asks for a build (with the options of now: growth arrays once {@link LazyTimeline.growthWanted}). */
+  rebuild: () => void;
+  /** The derivation steps of the plant on screen (N before its growth arrays are there). */
+  steps: () => number | undefined;
+}
+
+/** The timeline, its bar loaded on first use. */
+export class LazyTimeline {
+  /** Builds carry growth arrays: the timeline was used (asking for them costs a little meshing and memory). */
+  growthWanted = false;
+  private loading: Promise<Bar.TimelineBar> | undefined;
+  private loaded: Bar.TimelineBar | undefined;
+  private studio: TimelineStudio | undefined;
+
+  constructor(private readonly els: TimelineElements) {}
+
+  /** Connects the studio (after the parts are made: the preview reads {@link growthWanted}). */
+  connect(studio: TimelineStudio): void {
+    this.studio = studio;
+    this.els.play.addEventListener('click', () => this.toggle());
+  }
+
+  /** From now on builds carry growth arrays; a build follows if they did not. */
+  want(): void {
+    if (this.growthWanted) return;
+    this.growthWanted = true;
+    this.studio?.rebuild();
+  }
+
+  /** The bar, loaded (and shown) on first call. */
+  load(): Promise<Bar.TimelineBar> {
+    const studio = this.studio;
+    if (!studio) return Promise.reject(new Error('the timeline is not connected'));
+    this.loading ??= import('./timeline-bar').then(
+      (code) => (this.loaded = new code.TimelineBar(this.els, studio, () => this.want())),
+      (error: unknown) => {
+        this.loading = undefined; // the next Play tries again
+        throw error;
+      },
+    );
+    return this.loading;
+  }
+
+  /** Play / pause the growth. */
+  toggle(): void {
+    void this.load().then((bar) => bar.toggle());
+  }
+
+  /** A build was delivered: the bar shows its steps (the plant may still be on its way to the GPU). */
+  delivered(): void {
+    this.loaded?.stepsChanged();
+  }
+
+  /** Another text is opened: playing stops, the plant shows whole. */
+  clear(): void {
+    this.loaded?.clear();
+  }
+
+  /** What a share link keeps of the timeline (nothing until it was used). */
+  toShared(): SharedGrowth | undefined {
+    return this.loaded?.toShared();
+  }
+
+  /** A link's timeline: the bar loads and takes it (growth arrays are asked for if it has a time). */
+  applyShared(growth: SharedGrowth | undefined): void {
+    if (growth) void this.load().then((bar) => bar.applyShared(growth));
+  }
+}

@@ -1,0 +1,281 @@
+// The timeline bar under the view (issue 45): Play / Pause, the growth time t on a slider (with
+// the step growing and how far), the speed, Loop, the range played (from, to), the camera (on
+// the final plant, or following the growth) and a turntable. It drives the view's growth time
+// (`PlantView.setGrowthTime`: a uniform, no build) through a `Timeline` (plant-controls). Keys:
+// on the slider ← → a step (Shift: a tenth), Home / End the range's ends, Space play / pause; on
+// the view Space too; Alt+P anywhere. Loaded after the first plant, or by the first Play.
+import { cleanGrowth, type SharedGrowth } from '../../share';
+import { Timeline, TIMELINE_SPEEDS, type TimelineState } from '../../plant-controls/timeline';
+import type { GrowthCamera } from '../../view';
+import type { TimelineElements, TimelineStudio } from './lazy-timeline';
+import './timeline-bar.css';
+
+/** Degrees the turntable turns the camera for each step of growth played. */
+export const TURNTABLE_DEGREES_PER_STEP = 45;
+/** Who holds the view's tubes while a growth time is shown (the Lines mode's lines do not grow). */
+const TUBES_HOLDER = 'timeline';
+
+/** t as the bar writes it: two decimals. */
+export function timeText(t: number): string {
+  return t.toFixed(2);
+}
+
+/**
+ * What the bar says of t in a plant of `span` steps: the step growing (⌈t⌉, the step whose new
+ * organs are growing in; t = n is step n's plant whole) and the time.
+ */
+export function growthLabel(t: number, span: number | null): string {
+  if (span === null) return `t ${timeText(t)}`;
+  if (t >= span) return `t ${timeText(span)} of ${span} · whole plant`;
+  const step = Math.ceil(t);
+  return `t ${timeText(t)} of ${span} · step ${step}${t === step ? '' : ' growing'}`;
+}
+
+function make<K extends keyof HTMLElementTagNameMap>(tag: K, attributes: Record<string, string>, text?: string): HTMLElementTagNameMap[K] {
+  const e = document.createElement(tag);
+  for (const [name, value] of Object.entries(attributes)) e.setAttribute(name, value);
+  if (text !== undefined) e.textContent = text;
+  return e;
+}
+
+/** A labelled control: `<label>text control</label>`. */
+function labelled(text: string, control: HTMLElement, title: string): HTMLLabelElement {
+  const label = make('label', { class: 'field', title });
+  label.append(text, control);
+  return label;
+}
+
+/** The bar's controls. */
+interface BarControls {
+  play: HTMLButtonElement;
+  slider: HTMLInputElement;
+  time: HTMLOutputElement;
+  speed: HTMLSelectElement;
+  loop: HTMLInputElement;
+  from: HTMLInputElement;
+  to: HTMLInputElement;
+  camera: HTMLSelectElement;
+  turntable: HTMLInputElement;
+}
+
+/** Makes the bar's controls in `bar` (empty before). */
+function barControls(bar: HTMLElement): BarControls {
+  const play = make('button', { type: 'button', class: 'play', 'data-testid': 'timeline-play', 'aria-pressed': 'false', title: 'Play the growth (Space on the view, Alt+P)' }, 'Play');
+  const slider = make('input', { type: 'range', min: '0', max: '1', step: '0.01', value: '1', 'data-testid': 'timeline-slider', 'aria-label': 'Growth time, in steps' });
+  slider.title = '← → a step, Shift+← → a tenth, Home / End the range played';
+  const time = make('output', { 'data-testid': 'timeline-time', class: 'timeline-time' });
+  const speed = make('select', { 'data-testid': 'timeline-speed' });
+  for (const s of TIMELINE_SPEEDS) speed.append(make('option', { value: String(s) }, `${s}×`));
+  speed.value = '1';
+  const loop = make('input', { type: 'checkbox', 'data-testid': 'timeline-loop' });
+  const from = make('input', { type: 'number', min: '0', step: '0.5', value: '0', inputmode: 'decimal', 'data-testid': 'timeline-from' });
+  const to = make('input', { type: 'number', min: '0', step: '0.5', inputmode: 'decimal', 'data-testid': 'timeline-to' });
+  const camera = make('select', { 'data-testid': 'timeline-camera' });
+  camera.append(make('option', { value: 'final' }, 'final plant'), make('option', { value: 'follow' }, 'follow growth'));
+  const turntable = make('input', { type: 'checkbox', 'data-testid': 'timeline-turntable' });
+  const range = make('span', { class: 'timeline-range', role: 'group', 'aria-label': 'Range played' });
+  range.append(labelled('From', from, 'Play from this time (in steps)'), labelled('to', to, 'Play up to this time (empty: the whole plant)'));
+  // The rest in a menu: the bar stays one line under a short view (a phone, a projector at 200 %).
+  const menu = make('details', { class: 'downloads tool-menu timeline-menu', 'data-testid': 'timeline-menu' });
+  const summary = make('summary', { title: 'Speed, loop, range, camera, turntable', 'aria-label': 'Options of the timeline' }, 'Options ▾');
+  const panel = make('div', { class: 'download-menu timeline-options' });
+  panel.append(
+    labelled('Speed', speed, 'Steps of growth per second'),
+    labelled('Loop', loop, 'Start again at the range’s start'),
+    range,
+    labelled('Camera', camera, 'While the growth plays: framed on the whole plant, or following what has grown'),
+    labelled('Turntable', turntable, `The camera turns about the plant as it grows (${TURNTABLE_DEGREES_PER_STEP}° a step)`),
+  );
+  menu.append(summary, panel);
+  menu.addEventListener('keydown', (event) => {
+    if (event.key !== 'Escape' || !menu.open) return;
+    menu.open = false;
+    summary.focus();
+  });
+  document.addEventListener('pointerdown', (event) => {
+    if (menu.open && !menu.contains(event.target as Node)) menu.open = false;
+  });
+  const track = make('span', { class: 'timeline-track' });
+  track.append(slider, time);
+  bar.replaceChildren(play, track, menu);
+  loop.parentElement!.classList.add('check');
+  turntable.parentElement!.classList.add('check');
+  return { play, slider, time, speed, loop, from, to, camera, turntable };
+}
+
+/** The timeline bar and the timeline it drives. */
+export class TimelineBar {
+  readonly timeline: Timeline;
+  private readonly controls: BarControls;
+  /** The user (or a link) has put the timeline somewhere: new plants show that time, not whole. */
+  private engaged = false;
+  /** The last t shown while playing, for the turntable. */
+  private lastT: number | null = null;
+
+  constructor(
+    private readonly els: TimelineElements,
+    private readonly studio: TimelineStudio,
+    /** Asks for builds with growth arrays (from now on). */
+    private readonly want: () => void,
+  ) {
+    const { view } = studio;
+    this.timeline = new Timeline({ span: () => view.growthSpan(), show: (t) => this.show(t) });
+    this.controls = barControls(els.bar);
+    els.bar.hidden = false;
+    this.timeline.onChange((state) => this.render(state));
+    this.listen();
+    view.onPlantShown(() => this.plantShown());
+    this.plantShown();
+  }
+
+  private listen(): void {
+    const { play, slider, speed, loop, from, to, camera } = this.controls;
+    play.addEventListener('click', () => this.toggle());
+    slider.addEventListener('input', () => this.seek(slider.valueAsNumber));
+    slider.addEventListener('keydown', (event) => this.onKey(event));
+    this.studio.view.canvas.addEventListener('keydown', (event) => {
+      if (event.key !== ' ' || event.altKey || event.ctrlKey || event.metaKey) return;
+      event.preventDefault();
+      this.toggle();
+    });
+    speed.addEventListener('change', () => this.timeline.setSpeed(Number(speed.value)));
+    loop.addEventListener('change', () => this.timeline.setLoop(loop.checked));
+    const range = () => this.timeline.setRange(from.valueAsNumber || 0, to.value.trim() === '' ? null : to.valueAsNumber);
+    from.addEventListener('change', range);
+    to.addEventListener('change', range);
+    camera.addEventListener('change', () => this.studio.view.setGrowthCamera(camera.value as GrowthCamera));
+  }
+
+  /** The slider's keys: ← → a step (Shift: a tenth), Home / End the range's ends, Space play / pause. */
+  private onKey(event: KeyboardEvent): void {
+    const fine = event.shiftKey ? 0.1 : 1;
+    const state = this.timeline.state;
+    const moves: Record<string, () => void> = {
+      ArrowLeft: () => this.step(-fine),
+      ArrowDown: () => this.step(-fine),
+      ArrowRight: () => this.step(fine),
+      ArrowUp: () => this.step(fine),
+      Home: () => this.seek(state.from),
+      End: () => this.seek(state.to),
+      ' ': () => this.toggle(),
+    };
+    const move = moves[event.key];
+    if (!move || event.altKey || event.ctrlKey || event.metaKey) return;
+    event.preventDefault();
+    move();
+  }
+
+  /** Play / pause; the first use asks for growth arrays (the plant waits, playing, for them). */
+  toggle(): void {
+    this.engage();
+    this.timeline.toggle();
+  }
+
+  private seek(t: number): void {
+    this.engage();
+    this.timeline.pause();
+    this.timeline.seek(t);
+  }
+
+  private step(delta: number): void {
+    this.engage();
+    this.timeline.stepBy(delta);
+  }
+
+  private engage(): void {
+    this.engaged = true;
+    this.want();
+  }
+
+  /** Shows growth time `t`: the whole plant (and the Lines mode's lines) at the span's end. */
+  private show(t: number): void {
+    const { view } = this.studio;
+    const span = view.growthSpan();
+    const whole = span === null || t >= span;
+    view.holdTubes(TUBES_HOLDER, !whole);
+    view.setGrowthTime(whole ? null : t);
+    if (this.controls.turntable.checked && this.timeline.playing && this.lastT !== null && t > this.lastT) {
+      view.turn((t - this.lastT) * TURNTABLE_DEGREES_PER_STEP);
+    }
+    this.lastT = this.timeline.playing ? t : null;
+  }
+
+  /** A plant is on screen: the slider spans its steps; the time it was at is shown again. */
+  plantShown(): void {
+    const span = this.studio.view.growthSpan();
+    if (this.engaged) this.timeline.refresh();
+    else if (span !== null) this.timeline.seek(span);
+    this.render(this.timeline.state);
+  }
+
+  /** A build was delivered: its steps are shown (the slider's end, the label). */
+  stepsChanged(): void {
+    this.render(this.timeline.state);
+  }
+
+  /** Another text is opened: playing stops and the plant shows whole. */
+  clear(): void {
+    this.timeline.pause();
+    this.engaged = false;
+    this.studio.view.holdTubes(TUBES_HOLDER, false);
+    this.studio.view.setGrowthTime(null);
+    this.render(this.timeline.state);
+  }
+
+  /** Shows the state: Play's label and pressed state (both Plays), the slider, t and the step. */
+  private render(state: TimelineState): void {
+    const { play, slider, time } = this.controls;
+    const steps = state.span ?? this.studio.steps() ?? 0;
+    const t = this.engaged ? state.t : steps;
+    for (const button of [play, this.els.play]) {
+      button.setAttribute('aria-pressed', String(state.playing));
+      button.textContent = state.playing ? 'Pause' : 'Play';
+    }
+    slider.max = String(Math.max(steps, 0.01));
+    slider.value = String(Math.min(t, steps));
+    const label = state.span === null && this.engaged ? `${growthLabel(t, null)} (growth loading…)` : growthLabel(t, steps);
+    slider.setAttribute('aria-valuetext', label);
+    time.value = label;
+    this.els.bar.dataset.t = String(t);
+  }
+
+  /** What a share link keeps: the time (once used), speed, range, loop, camera, turntable; none at their defaults. */
+  toShared(): SharedGrowth | undefined {
+    const state = this.timeline.state;
+    const shared: SharedGrowth = {};
+    if (this.engaged) shared.t = state.t;
+    if (state.speed !== 1) shared.speed = state.speed;
+    if (state.from > 0) shared.from = state.from;
+    const to = this.controls.to.value.trim();
+    if (to !== '') shared.to = Number(to);
+    if (state.loop) shared.loop = true;
+    if (this.controls.camera.value === 'follow') shared.camera = 'follow';
+    if (this.controls.turntable.checked) shared.turntable = true;
+    return cleanGrowth(shared);
+  }
+
+  /** A link's timeline (checked again: it may come from anywhere). */
+  applyShared(shared: SharedGrowth): void {
+    const growth = cleanGrowth(shared);
+    if (!growth) return;
+    const { speed, loop, from, to, camera, turntable } = this.controls;
+    if (growth.speed !== undefined) {
+      this.timeline.setSpeed(growth.speed);
+      if (!TIMELINE_SPEEDS.some((s) => s === growth.speed)) speed.append(make('option', { value: String(growth.speed) }, `${growth.speed}×`));
+      speed.value = String(growth.speed);
+    }
+    loop.checked = growth.loop ?? false;
+    this.timeline.setLoop(loop.checked);
+    from.value = String(growth.from ?? 0);
+    to.value = growth.to === undefined ? '' : String(growth.to);
+    this.timeline.setRange(growth.from ?? 0, growth.to ?? null);
+    camera.value = growth.camera ?? 'final';
+    this.studio.view.setGrowthCamera(growth.camera ?? 'final');
+    turntable.checked = growth.turntable ?? false;
+    if (growth.t !== undefined) {
+      this.engage();
+      this.timeline.seek(growth.t);
+    }
+    if (growth.playing) this.toggle();
+  }
+}
