@@ -115,6 +115,18 @@ describe('the Download menu', () => {
     expect(problems).toEqual([]);
   });
 
+  it('glb, growth animated: the bytes of meristem export --animate, with its animation', async () => {
+    const download = await clickDownload('download-glb-growth');
+    expect(download.suggestedFilename()).toBe(`${NAME}-growth.glb`);
+    const bytes = await downloadedBytes(download);
+    const cli = exportWithCli(grammarFile, join(dir, `${NAME}-growth.glb`), [...CLI_OPTIONS, '--animate']);
+    expect(bytes.equals(cli), 'the animated glTF differs from the command-line tool\'s').toBe(true);
+    // The JSON chunk (after the 12-byte header and the chunk's length and type) has the animation.
+    const json = JSON.parse(bytes.subarray(20, 20 + bytes.readUInt32LE(12)).toString('utf8')) as { animations?: unknown[] };
+    expect(json.animations?.length).toBe(1);
+    expect(problems).toEqual([]);
+  });
+
   it('obj: a zip of the OBJ and MTL that meristem export writes', async () => {
     const download = await clickDownload('download-obj');
     expect(download.suggestedFilename()).toBe(`${NAME}-obj.zip`);

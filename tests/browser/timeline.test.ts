@@ -151,3 +151,26 @@ describe('the growth timeline', () => {
     expect(errors).toEqual([]);
   });
 });
+
+describe('a timed grammar on the timeline', () => {
+  it('derives a timed grammar at the time scrubbed to (the Anabaena filament of ABOP 6.1)', async () => {
+    expect(await openExample(page, 'abop-6.1-timed-anabaena.lsys')).toBe('ok');
+    /** Scrubs to `t` and waits for the plant derived at t: `modules` modules. */
+    const scrubTimed = async (t: number, modules: number) => {
+      await page.getByTestId('timeline-slider').fill(String(t));
+      await page.waitForFunction((n) => window.__meristem?.preview?.settled === true && window.__meristem.lastStats?.modules === n, modules, { timeout: 30_000 });
+      await twoFrames(page);
+    };
+    await scrubTimed(2.5, 3); // b_l(0.5) a_r(0.5) a_r(0.5)
+    expect(await page.getByTestId('timeline-time').textContent()).toMatch(/^t 2\.50 of 6/);
+    const length = () => page.evaluate(() => window.__meristem!.lastStats!.bounds[1][0] - window.__meristem!.lastStats!.bounds[0][0]);
+    // The filament is φ^(t+1) long (each cell grows between divisions): φ^3.5 at t = 2.5, φ^5 at 4.
+    const phi = (1 + Math.sqrt(5)) / 2;
+    expect(await length()).toBeCloseTo(phi ** 3.5, 3);
+    expect(foregroundShare(await canvasPicture(page, 'timeline-anabaena-t2.5.png')), 'the filament is drawn').toBeGreaterThan(0.001);
+    await scrubTimed(4, 8); // step 4 of the D0L-system
+    expect(await length()).toBeCloseTo(phi ** 5, 3);
+    await scrubTimed(6, 21); // the grammar's own iterations again
+    expect(problems).toEqual([]);
+  });
+});

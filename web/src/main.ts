@@ -6,7 +6,7 @@ import { BuildClient, createBuildWorker } from './build';
 import { coreVersion, initCore, loadVocabulary } from './core';
 import { createLazyGrammarEditor } from './editor/grammar-text';
 import { wireBranchEditing } from './studio/branches';
-import { SliderPanel } from './plant-controls';
+import { LazySliderPanel } from './plant-controls';
 import { sidesChoices, ViewOptions, VocabularyPanels, wireKeyboard, wireLayout, wireViewControls } from './studio/controls';
 import { createInspector, DerivationControls } from './studio/derivation';
 import { loadDownloads } from './studio/downloads';
@@ -49,7 +49,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
     { parent: els.editor, doc: start.text, diagnose: (text) => feed.diagnose(text), vocabulary: loadVocabulary, openReference: (anchor) => help.open(anchor) },
     () => import('./editor/grammar-editor'),
   );
-  const sliders = new SliderPanel(els.sliders, els.constantsCount, els.constantsEmpty, editor);
+  const sliders = new LazySliderPanel([els.sliders, els.constantsCount, els.constantsEmpty, editor]); // with the vocabulary
   const inspector = createInspector(els, view, editor, viewOptions);
   const timeline = new LazyTimeline(els.timeline);
   const preview = createLivePreview({ els, client: buildClient, feed, view, editor, ...inspector, derivation, viewOptions, notice, timeline });
@@ -90,15 +90,10 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   await nextFrame();
   firstLoadDone();
   const vocabularyRead = panels.load();
-  void inspector.contexts.load(); // the String tab
+  void Promise.all([inspector.contexts.load(), timeline.preload()]); // the String tab, the bar under the view
   const downloadsInstalled = loadDownloads(parts, branchEdits);
-  void timeline.load().catch((error: unknown) => console.error('The timeline could not load:', error)); // the bar under the view; Play tries again
-  const editorLoaded = editor.loaded;
-  await firstBuild;
-  await vocabularyRead;
-  await editorLoaded;
-  await view.controlsReady; // the mouse moves the camera (the OrbitControls load after the first plant's frame)
-  await downloadsInstalled;
+  // Then the mouse moves the camera (view.controlsReady: the OrbitControls load after the first plant's frame).
+  await Promise.all([firstBuild, vocabularyRead, editor.loaded, view.controlsReady, downloadsInstalled]);
   // The first load is done: the build worker loads the studio core (crate/pkg, built for speed:
   // a big plant's tubes in about half the time) for the builds after it.
   buildClient.useStudioCore();

@@ -18,6 +18,12 @@ use crate::model::{LString, Model};
 /// from fractions (0.1 + 0.2) still reach their terminal age together.
 const SAME_MOMENT: f64 = 1e-9;
 
+/// Whether this build of the core has the clock. `crate/pkg-core` (wasm32 without `studio-extras`,
+/// the first plant's core) leaves it out (issue 22, the first load: 1.2 KB gzipped): it derives a
+/// timed grammar's whole steps as a parametric one, says so (`PlantBuild.timed`), and the build
+/// worker builds it again with the studio core (`web/src/build/worker.ts`).
+const HAS_CLOCK: bool = cfg!(any(feature = "studio-extras", not(target_arch = "wasm32")));
+
 /// The clock of a timed derivation: each module id's terminal age, the time reached, the end.
 pub(super) struct Clock {
     /// Indexed by module id; infinite for a module that is not timed.
@@ -31,7 +37,7 @@ impl Clock {
     /// given): model time `time · #dt`. `None` when the grammar has no timed module.
     pub(super) fn new(model: &Model, steps: u32, time: Option<f64>) -> Option<Clock> {
         let settings = &model.settings;
-        if settings.terminal_ages.is_empty() {
+        if !HAS_CLOCK || settings.terminal_ages.is_empty() {
             return None;
         }
         let mut terminal = vec![f64::INFINITY; model.alphabet.len()];

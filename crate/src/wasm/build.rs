@@ -212,6 +212,16 @@ impl PlantBuild {
         self.build.derived_with.seed.unwrap_or(grammar) as f64
     }
 
+    /// True when the grammar has timed modules (`#terminal_age`, ABOP 6.1): its plant at a growth
+    /// time is derived at that time (the build option `time`), not grown from the whole plant's.
+    #[wasm_bindgen(getter)]
+    pub fn timed(&self) -> bool {
+        self.build
+            .model
+            .as_ref()
+            .is_some_and(|m| !m.settings.terminal_ages.is_empty())
+    }
+
     /// The step the derivation went on from, when it continued an earlier build's (`buildOn`);
     /// `undefined` when it derived from the axiom.
     #[wasm_bindgen(getter, js_name = continuedFrom)]

@@ -23,7 +23,7 @@ import {
   type WorkerRequest,
   type WorkerResponse,
 } from './worker-protocol';
-import { continuable, type KeptBuild } from './continue-from';
+import type { KeptBuild } from './continue-from';
 
 /** Kept builds at most: the page frees what it does not show, this only bounds a leak. */
 const MAX_KEPT = 4;
@@ -171,19 +171,33 @@ addEventListener('message', async (event: MessageEvent<WorkerRequest | CoreMessa
   const { id, source, options, sketchFrom = SKETCH_MIN_SEGMENTS } = request;
   try {
     const start = performance.now();
+    // Growth in time is the studio core's (the first plant's leaves it out): a build that asks for
+    // it (a timeline in use, a link at a time, an animated embed) loads that core first.
+    if (options.growth && !studioCoreInUse()) {
+      await loadStudioCore().catch((error: unknown) => console.warn('Meristem: the studio core could not load; the plant is built without its growth', error));
+    }
     // A big plant goes to the page as lines first: on screen while its tubes are meshed. A kept
-    // build of fewer steps is continued (the core derives from the axiom when it cannot).
-    const made = inspectPlant(source, options, {
-      from: continuable(kept.values(), source, options)?.inspector,
-      sketch: {
-        minSegments: sketchFrom,
-        show: (sketch) => reply({ kind: 'sketch', id, sketch }, [sketch.lines.buffer as ArrayBuffer, sketch.lineColors.buffer as ArrayBuffer]),
-      },
-      onProgress: progressTeller(id),
-      forGpu: true, // the normals and colours packed for the GPU, not as floats
-    });
-    const { build, gpu } = made;
-    keep(id, made, source, options);
+    // build of fewer steps is continued (only the studio core continues; the core derives from
+    // the axiom when it cannot).
+    const made = async () =>
+      inspectPlant(source, options, {
+        from: studioCoreInUse() ? (await import('./continue-from')).continuable(kept.values(), source, options)?.inspector : undefined,
+        sketch: {
+          minSegments: sketchFrom,
+          show: (sketch) => reply({ kind: 'sketch', id, sketch }, [sketch.lines.buffer as ArrayBuffer, sketch.lineColors.buffer as ArrayBuffer]),
+        },
+        onProgress: progressTeller(id),
+        forGpu: true, // the normals and colours packed for the GPU, not as floats
+      });
+    let plant = await made();
+    if (plant.build.timed && !studioCoreInUse()) {
+      // The first plant's core has no clock for timed modules (ABOP 6.1): the studio core builds them.
+      plant.inspector.free();
+      await loadStudioCore();
+      plant = await made();
+    }
+    const { build, gpu } = plant;
+    keep(id, plant, source, options);
     reply({ kind: 'built', id, build, gpu, workerMillis: performance.now() - start, studioCore: studioCoreInUse() }, transferablesOf(build, gpu));
     // While the page draws it and the user edits: buffers for the next build of this size.
     prepareSpares();

@@ -218,10 +218,10 @@ export function runBuild(source: string, options: CoreBuildOptions, onProgress?:
  */
 export function runBuildWith<B>(core: (...args: Parameters<typeof build>) => B, source: string, options: CoreBuildOptions, onProgress?: (progress: BuildProgress) => void): B {
   assertReady();
-  const { iterations, seed, sides, smoothAll, sketch, sketchFirst, growth } = options;
+  const { iterations, seed, time, sides, smoothAll, sketch, sketchFirst, growth } = options;
   const progress = onProgress && ((stage: BuildStage, step: number, steps: number) => onProgress({ stage, step, steps }));
   // The core reads no clock: it reads ours between its stages.
-  return guarded(() => core(source, { iterations, seed, sides, smoothAll, sketch, sketchFirst, growth }, () => performance.now(), progress));
+  return guarded(() => core(source, { iterations, seed, time, sides, smoothAll, sketch, sketchFirst, growth }, () => performance.now(), progress));
 }
 
 interface RawProduction {
@@ -268,6 +268,7 @@ export function plainBuild(source: string, result: WasmPlantBuild, { forGpu = fa
     flat: result.flat,
     grammarIterations: result.grammarIterations,
     seed: result.seed,
+    timed: result.timed,
     ...(result.continuedFrom === undefined ? {} : { continuedFrom: result.continuedFrom }),
   }));
 }

@@ -153,6 +153,11 @@ export interface PlantBuild {
   /** Modules in the derived string. */
   moduleCount: number;
   /**
+   * The grammar has timed modules (`#terminal_age`, ABOP 6.1): its plant at a growth time t is
+   * derived at t (`BuildOptions.time`), not grown on the GPU from the whole plant's.
+   */
+  timed: boolean;
+  /**
    * The step the derivation went on from when it continued an earlier build's (`inspectPlant`'s
    * `from`: only the steps after it were derived); absent when it derived from the axiom.
    */

@@ -5,7 +5,7 @@
 // go to the page's one shared worker. Small enough for 320 × 240.
 import type { BuildOptions } from '../core';
 import { cleanGrowth, encodeState, type SharedGrowth } from '../share';
-import { Playback, SliderPanel } from '../plant-controls';
+import { LazySliderPanel, Playback } from '../plant-controls';
 import { Timeline } from '../plant-controls/timeline';
 import type { BuildOutcome } from '../build';
 import { PlantView } from '../view';
@@ -67,7 +67,7 @@ export class EmbedPlant {
   private readonly timeline: Timeline;
   /** Builds carry growth arrays: asked by `growth`, or by the first Play. */
   private growthWanted: boolean;
-  private readonly sliders: SliderPanel | undefined;
+  private readonly sliders: LazySliderPanel | undefined;
   private source: string;
   private iterations: number | undefined;
   private grammarIterations = 0;
@@ -109,14 +109,20 @@ export class EmbedPlant {
     if (settings.controls.has('sliders')) {
       const list = element('div', 'mp-sliders');
       this.root.append(list);
-      this.sliders = new SliderPanel(list, element('span', 'mp-hidden'), element('span', 'mp-hidden'), {
-        replaceRange: (from, to, insert) => {
-          this.source = this.source.slice(0, from) + insert + this.source.slice(to);
-          this.sliders?.update(this.source);
-          this.rebuild();
+      this.sliders = new LazySliderPanel([
+        list,
+        element('span', 'mp-hidden'),
+        element('span', 'mp-hidden'),
+        {
+          replaceRange: (from, to, insert) => {
+            this.source = this.source.slice(0, from) + insert + this.source.slice(to);
+            this.sliders?.update(this.source);
+            this.rebuild();
+          },
         },
-      });
+      ]);
       this.sliders.update(this.source);
+      this.sliders.load().catch((error: unknown) => console.error('The sliders could not load:', error));
     }
     parent.append(this.root);
     this.view = new PlantView(stage, { assetBase: settings.siteRoot });

@@ -6,8 +6,8 @@
 // snippets; nothing in `web/src` puts user text into innerHTML), so a comment holding
 // `<script>…</script>` or `<img onerror=…>` is just a comment, and every legal grammar opens
 // (`codec.test.ts`; the studio end to end in `tests/browser/share.test.ts`).
-import { validateEdits, type EditsDocument } from '../core/branches';
-import { cleanGrowth, type SharedGrowth } from './growth-state';
+import type { EditsDocument } from '../core/branches';
+import type { SharedGrowth } from './growth-state';
 
 /** The fragment's key: `#s=<version>.<payload>`. */
 export const FRAGMENT_KEY = 's';
@@ -139,7 +139,7 @@ function cleanSliders(sliders: unknown): Record<string, number> | undefined {
 }
 
 /** Checks the shape of a decoded state; copies only known fields. */
-export function validate(json: unknown): Decoded {
+export async function validate(json: unknown): Promise<Decoded> {
   if (!isRecord(json)) return fail('the link does not hold a state object');
   const { text, iterations, seed, sliders, view, camera, edits, growth } = json;
   if (typeof text !== 'string') return fail('the link holds no grammar text');
@@ -155,8 +155,11 @@ export function validate(json: unknown): Decoded {
   }
   const kept = cleanSliders(sliders);
   if (kept) state.sliders = kept;
-  const timeline = cleanGrowth(growth); // (clamped, or dropped: the link opens without it)
-  if (timeline) state.growth = timeline;
+  if (growth !== undefined) {
+    // A timeline in a link: its checker loads with the first such link (not with the page).
+    const timeline = (await import('./growth-state')).cleanGrowth(growth); // (clamped, or dropped: the link opens without it)
+    if (timeline) state.growth = timeline;
+  }
   if (view !== undefined) {
     if (!isRecord(view)) return fail('the link’s view options are malformed');
     const clean: NonNullable<SharedState['view']> = {};
@@ -194,6 +197,8 @@ export function validate(json: unknown): Decoded {
     }
   }
   if (edits !== undefined) {
+    // Branch edits are rare in links: their checker loads with the first (not with the page).
+    const { validateEdits } = await import('../core/branches');
     const checked = validateEdits(edits);
     if (!checked.ok) return fail(`the link’s branch edits are malformed (${checked.error})`);
     state.edits = checked.document;

@@ -3,7 +3,7 @@
 import type { LazyGrammarEditor } from '../editor/grammar-text';
 import type { GrammarStore, KeptTexts } from '../share';
 import type { PlantView } from '../view';
-import type { SliderPanel } from '../plant-controls';
+import type { LazySliderPanel } from '../plant-controls';
 import type { ViewOptions } from './controls';
 import type { DerivationControls, LazyContextView, LazyDerivationView } from './derivation';
 import type { TextKeeper, TextOpening } from './files';
@@ -28,7 +28,7 @@ export interface StudioParts extends KeptWork {
   derivation: DerivationControls;
   help: HelpOpener;
   editor: LazyGrammarEditor;
-  sliders: SliderPanel;
+  sliders: LazySliderPanel;
   contexts: LazyContextView;
   derivationView: LazyDerivationView;
   preview: LivePreview;

@@ -6,13 +6,13 @@ import type { GrammarEditor } from '../../editor/grammar-text';
 import type { DerivationControls } from '../derivation';
 import type { StudioElements } from '../page';
 import type { GrowthPanel } from './growth-panel';
-import type { SliderPanel } from '../../plant-controls';
+import type { LazySliderPanel } from '../../plant-controls';
 
 /** What the panels read and write. */
 export interface VocabularyPanelParts {
   els: StudioElements;
   editor: GrammarEditor;
-  sliders: SliderPanel;
+  sliders: LazySliderPanel;
   derivation: DerivationControls;
 }
 
@@ -47,7 +47,7 @@ export class VocabularyPanels {
     try {
       const [vocabulary, { GrowthPanel }, { growthAttributes }] = await Promise.all([
         loadVocabulary(),
-        import('./growth-panel'),
+        this.parts.sliders.load().then(() => import('./growth-panel')),
         import('../../editor/growth-directives'),
       ]);
       this.arrived = true;

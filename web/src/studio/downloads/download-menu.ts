@@ -77,11 +77,13 @@ export function installDownloads(els: DownloadMenuElements, view: PlantView, sho
       busy(false);
     }
   };
-  const downloadModel = (format: ModelFormat, label: string, svg?: SvgLook): Promise<void> =>
+  /** Writes the plant shown as `format`; `more`: the SVG's look, or the glTF's growth animation. */
+  const downloadModel = (format: ModelFormat, label: string, more: Pick<ExportOptions, 'svg' | 'animate'> = {}): Promise<void> =>
     download(label, async () => {
       const plant = shown();
       if (!plant) throw new Error('no plant yet');
-      const options = { ...plant.options, name: plant.name, svg };
+      const name = more.animate ? `${plant.name}-growth` : plant.name;
+      const options = { ...plant.options, name, ...more };
       const running = runExport(createExportWorker, { source: plant.source, format, options }, (progress) => {
         els.exportProgress.max = progress.count;
         els.exportProgress.value = progress.index + 1;
@@ -106,6 +108,16 @@ export function installDownloads(els: DownloadMenuElements, view: PlantView, sho
     button.addEventListener('click', () => void downloadModel(format, label));
     els.modelDownloads.append(button);
   }
+  // The growth as a glTF animation (morph targets keyed in time: 1 s per step), which three.js's
+  // AnimationMixer, Blender and glTF viewers play.
+  const animated = document.createElement('button');
+  animated.type = 'button';
+  animated.className = 'menu-item';
+  animated.dataset.testid = 'download-glb-growth';
+  animated.title = 'The plant growing, as a glTF animation that three.js, Blender and glTF viewers play';
+  animated.append('glTF 2.0, growth animated', Object.assign(document.createElement('span'), { className: 'file-type', textContent: '.glb' }));
+  animated.addEventListener('click', () => void downloadModel('glb', 'glTF growth animation', { animate: true }));
+  els.modelDownloads.append(animated);
   installMovie(els, view, shown);
   closeLikeAMenu(els.menu);
   installPictureSize(els);
@@ -142,7 +154,7 @@ export function installDownloads(els: DownloadMenuElements, view: PlantView, sho
       height: size.height,
       dpi,
     };
-    void downloadModel('svg', 'SVG drawing', svg);
+    void downloadModel('svg', 'SVG drawing', { svg });
   });
 }
 

@@ -6,7 +6,7 @@ import type { PlantView } from '../../view';
 import type { BranchEdits } from '../branches';
 import type { DerivationControls } from '../derivation';
 import type { LivePreview } from '../preview';
-import type { SliderPanel } from '../../plant-controls';
+import type { LazySliderPanel } from '../../plant-controls';
 import type { ViewOptions } from '../controls';
 import type { LazyTimeline } from '../timeline';
 
@@ -14,7 +14,7 @@ import type { LazyTimeline } from '../timeline';
 export interface LinkStateParts {
   editor: GrammarEditor;
   derivation: DerivationControls;
-  sliders: SliderPanel;
+  sliders: LazySliderPanel;
   viewOptions: ViewOptions;
   view: PlantView;
   branchEdits: BranchEdits;

@@ -50,6 +50,7 @@ export function createLivePreview(parts: StudioPreviewParts): LivePreview {
       // once the timeline is used they are, with growth arrays (the Lines mode's lines do not grow).
       tubes: parts.timeline.growthWanted || tubesFor(viewOptions.values.render),
       ...(parts.timeline.growthWanted ? { growth: true } : {}),
+      ...(parts.timeline.timedAt === null ? {} : { time: parts.timeline.timedAt }),
     }),
     diagnosticsChanged: () => editor.refreshDiagnostics(),
     adopt: (result) => {

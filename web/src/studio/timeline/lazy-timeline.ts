@@ -19,6 +19,11 @@ export interface TimelineStudio {
   view: PlantView;
   /** Asks for a build (with the options of now: growth arrays once {@link LazyTimeline.growthWanted}). */
   rebuild: () => void;
+  /**
+   * The steps a timed grammar's timeline spans (its iterations: the plant at t = N), or null when
+   * the plant on screen is not timed (its growth arrays span its steps).
+   */
+  timedSpan: () => number | null;
   /** The derivation steps of the plant on screen (N before its growth arrays are there). */
   steps: () => number | undefined;
 }
@@ -27,6 +32,12 @@ export interface TimelineStudio {
 export class LazyTimeline {
   /** Builds carry growth arrays: the timeline was used (asking for them costs a little meshing and memory). */
   growthWanted = false;
+  /**
+   * The growth time a timed grammar's builds are derived at (the build option `time`), or null
+   * for the grammar's own iterations: a timed plant is shown at t by deriving it at t (ABOP 6.1),
+   * not grown from the whole plant's mesh.
+   */
+  timedAt: number | null = null;
   private loading: Promise<Bar.TimelineBar> | undefined;
   private loaded: Bar.TimelineBar | undefined;
   private studio: TimelineStudio | undefined;
@@ -46,12 +57,24 @@ export class LazyTimeline {
     this.studio?.rebuild();
   }
 
+  /** Loads the bar in the background (after the first plant); a failure is logged, and Play tries again. */
+  preload(): Promise<unknown> {
+    return this.load().catch((error: unknown) => console.error('The timeline could not load:', error));
+  }
+
+  /** Builds from now on derive a timed grammar at `t` (null: at its own iterations); a build follows a change. */
+  deriveAt(t: number | null): void {
+    if (t === this.timedAt) return;
+    this.timedAt = t;
+    this.studio?.rebuild();
+  }
+
   /** The bar, loaded (and shown) on first call. */
   load(): Promise<Bar.TimelineBar> {
     const studio = this.studio;
     if (!studio) return Promise.reject(new Error('the timeline is not connected'));
     this.loading ??= import('./timeline-bar').then(
-      (code) => (this.loaded = new code.TimelineBar(this.els, studio, () => this.want())),
+      (code) => (this.loaded = new code.TimelineBar(this.els, studio, { want: () => this.want(), deriveAt: (t) => this.deriveAt(t) })),
       (error: unknown) => {
         this.loading = undefined; // the next Play tries again
         throw error;
@@ -72,6 +95,7 @@ export class LazyTimeline {
 
   /** Another text is opened: playing stops, the plant shows whole. */
   clear(): void {
+    this.timedAt = null;
     this.loaded?.clear();
   }
 

@@ -103,6 +103,14 @@ function barControls(bar: HTMLElement): BarControls {
   return { play, slider, time, speed, loop, from, to, camera, turntable };
 }
 
+/** What the bar asks of the studio's builds. */
+export interface TimelineBuilds {
+  /** Builds carry growth arrays from now on. */
+  want(): void;
+  /** A timed grammar's builds derive it at growth time `t` (null: at its iterations). */
+  deriveAt(t: number | null): void;
+}
+
 /** The timeline bar and the timeline it drives. */
 export class TimelineBar {
   readonly timeline: Timeline;
@@ -115,11 +123,10 @@ export class TimelineBar {
   constructor(
     private readonly els: TimelineElements,
     private readonly studio: TimelineStudio,
-    /** Asks for builds with growth arrays (from now on). */
-    private readonly want: () => void,
+    private readonly builds: TimelineBuilds,
   ) {
     const { view } = studio;
-    this.timeline = new Timeline({ span: () => view.growthSpan(), show: (t) => this.show(t) });
+    this.timeline = new Timeline({ span: () => studio.timedSpan() ?? view.growthSpan(), show: (t) => this.show(t) });
     this.controls = barControls(els.bar);
     els.bar.hidden = false;
     this.timeline.onChange((state) => this.render(state));
@@ -184,13 +191,19 @@ export class TimelineBar {
 
   private engage(): void {
     this.engaged = true;
-    this.want();
+    this.builds.want();
   }
 
-  /** Shows growth time `t`: the whole plant (and the Lines mode's lines) at the span's end. */
+  /**
+   * Shows growth time `t`: the whole plant (and the Lines mode's lines) at the span's end. A timed
+   * grammar is derived at t (a build: the newest request waits while one runs); any other grows
+   * on the GPU from its whole plant's mesh.
+   */
   private show(t: number): void {
     const { view } = this.studio;
-    const span = view.growthSpan();
+    const timedSpan = this.studio.timedSpan();
+    this.builds.deriveAt(timedSpan === null || t >= timedSpan ? null : t);
+    const span = timedSpan === null ? view.growthSpan() : 0;
     const whole = span === null || t >= span;
     view.holdTubes(TUBES_HOLDER, !whole);
     view.setGrowthTime(whole ? null : t);
