@@ -2,18 +2,11 @@
 //! worked example, the semantics of stochastic choice and random variables, and homomorphism,
 //! decomposition and cut.
 
-use meristem::derive::{derive, derive_with, DeriveOptions};
-use meristem::model::{resolve, Model};
-use meristem::syntax::parse;
-use std::convert::Infallible;
+mod shared;
+use shared::model;
 
-fn model(src: &str) -> Model {
-    let (file, diags) = parse(src);
-    assert!(diags.is_empty(), "{diags:?}");
-    let (model, diags) = resolve(&file);
-    assert!(diags.is_empty(), "{diags:?}");
-    model.expect("model")
-}
+use meristem::derive::{derive, derive_with, DeriveOptions};
+use std::convert::Infallible;
 
 fn derived(src: &str, steps: u32) -> String {
     let m = model(src);

@@ -6,20 +6,15 @@
 //! ABOP section 1.2's D0L words (which a timed system of lifetimes 1 reproduces at whole times)
 //! and hand computation, each spelled out next to its test.
 
+mod shared;
+use shared::model;
+
 use meristem::derive::{derive, derive_traced, DeriveOptions, Unobserved};
-use meristem::model::{resolve, Model};
+use meristem::model::resolve;
 use meristem::pipeline::{build, BuildOptions};
 use meristem::syntax::parse;
 
 const ANABAENA: &str = include_str!("../../public/examples/abop-6.1-timed-anabaena.lsys");
-
-fn model(src: &str) -> Model {
-    let (file, diags) = parse(src);
-    assert!(diags.is_empty(), "{diags:?}");
-    let (model, diags) = resolve(&file);
-    assert!(diags.is_empty(), "{diags:?}");
-    model.expect("model")
-}
 
 /// The derived string at growth time `t` (in steps).
 fn at(src: &str, t: f64) -> String {

@@ -445,9 +445,21 @@ impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
             rewriter.tracker = None;
         }
         apply_queries(model, &mut current, observer);
-        Ok(Run {
-            d0l: if follows { None } else { D0lTable::new(model) },
-            has_cut: cut::contains_cut(model),
+        let d0l = if follows { None } else { D0lTable::new(model) };
+        Ok(Run::at(rewriter, observer, current, next, d0l))
+    }
+
+    /// A derivation under way whose string is `current` (`next`: a scratch string to reuse).
+    fn at(
+        rewriter: Rewriter<'m, R>,
+        observer: &'o mut dyn Observer,
+        current: LString,
+        next: LString,
+        d0l: Option<D0lTable>,
+    ) -> Self {
+        Run {
+            d0l,
+            has_cut: cut::contains_cut(rewriter.model),
             rewriter,
             observer,
             current,
@@ -458,7 +470,7 @@ impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
             previous: LString::default(),
             trace: None,
             timed_plan: None,
-        })
+        }
     }
 
     /// Step 0 as a traced step: the axiom, no module rewritten.

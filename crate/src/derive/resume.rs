@@ -16,7 +16,7 @@
 
 use super::d0l::D0lTable;
 use super::rewriter::Rewriter;
-use super::{cut, Derivation, DeriveOptions, Generator, Observer, Run};
+use super::{Derivation, DeriveOptions, Generator, Observer, Run};
 use crate::diagnostics::Diagnostic;
 use crate::model::{LString, Model, Program, RuleSet, SuccessorModule};
 
@@ -133,20 +133,14 @@ pub fn resume(
     }
     let mut rng = saved.rng.clone();
     let steps = options.steps;
-    let run = Run {
-        d0l: D0lTable::new(model),
-        has_cut: cut::contains_cut(model),
-        rewriter: Rewriter::new(model, steps, &mut rng),
+    let rewriter = Rewriter::new(model, steps, &mut rng);
+    let run = Run::at(
+        rewriter,
         observer,
-        current: from.string.clone(),
-        next: LString::default(),
-        origin: Vec::new(),
-        parent: Vec::new(),
-        pending: None,
-        previous: LString::default(),
-        trace: None,
-        timed_plan: None,
-    };
+        from.string.clone(),
+        LString::default(),
+        D0lTable::new(model),
+    );
     Some(continued(run, saved.steps, options).map(|mut derivation| {
         derivation.resume = Resume::after(model, options, &rng);
         derivation

@@ -21,10 +21,22 @@ pub struct Args {
     pub sides: Option<u32>,
     pub smooth_all: bool,
     pub edits: Option<PathBuf>,
+    pub picture: PictureArgs,
+    pub growth_out: GrowthOutArgs,
+}
+
+/// `--background`, `--line-width`, `--size` and `--dpi`: an SVG's picture settings, as written.
+#[derive(Default)]
+pub struct PictureArgs {
     pub background: Option<String>,
     pub line_width: Option<f64>,
     pub size: Option<String>,
     pub dpi: Option<f64>,
+}
+
+/// The growth out of the command line.
+#[derive(Default)]
+pub struct GrowthOutArgs {
     /// `export --animate`: the growth as a glTF animation, with `--seconds-per-step` and
     /// `--targets-per-step`.
     pub animate: bool,
@@ -54,14 +66,8 @@ pub fn parse_args() -> Result<Args, lexopt::Error> {
     let mut sides = None;
     let mut smooth_all = false;
     let mut edits = None;
-    let mut background = None;
-    let mut line_width = None;
-    let mut size = None;
-    let mut dpi = None;
-    let mut animate = false;
-    let mut seconds_per_step = None;
-    let mut targets_per_step = None;
-    let mut frames = None;
+    let mut picture = PictureArgs::default();
+    let mut growth_out = GrowthOutArgs::default();
     while let Some(arg) = parser.next()? {
         match arg {
             Long("iterations") | Short('n') => iterations = Some(parser.value()?.parse()?),
@@ -71,10 +77,14 @@ pub fn parse_args() -> Result<Args, lexopt::Error> {
             Long("time") => time = true,
             Long("from") => from = Some(parser.value()?.string()?),
             Long("growth") => growth = true,
-            Long("animate") => animate = true,
-            Long("seconds-per-step") => seconds_per_step = Some(parser.value()?.parse()?),
-            Long("targets-per-step") => targets_per_step = Some(parser.value()?.parse()?),
-            Long("frames") => frames = Some(parser.value()?.parse()?),
+            Long("animate") => growth_out.animate = true,
+            Long("seconds-per-step") => {
+                growth_out.seconds_per_step = Some(parser.value()?.parse()?)
+            }
+            Long("targets-per-step") => {
+                growth_out.targets_per_step = Some(parser.value()?.parse()?)
+            }
+            Long("frames") => growth_out.frames = Some(parser.value()?.parse()?),
             Long("output") | Long("out") | Short('o') => {
                 output = Some(PathBuf::from(parser.value()?))
             }
@@ -82,10 +92,10 @@ pub fn parse_args() -> Result<Args, lexopt::Error> {
             Long("sides") => sides = Some(parser.value()?.string()?),
             Long("smooth-all") => smooth_all = true,
             Long("edits") => edits = Some(PathBuf::from(parser.value()?)),
-            Long("background") => background = Some(parser.value()?.string()?),
-            Long("line-width") => line_width = Some(parser.value()?.parse()?),
-            Long("size") => size = Some(parser.value()?.string()?),
-            Long("dpi") => dpi = Some(parser.value()?.parse()?),
+            Long("background") => picture.background = Some(parser.value()?.string()?),
+            Long("line-width") => picture.line_width = Some(parser.value()?.parse()?),
+            Long("size") => picture.size = Some(parser.value()?.string()?),
+            Long("dpi") => picture.dpi = Some(parser.value()?.parse()?),
             Long("version") | Short('V') => {
                 println!("meristem {}", env!("CARGO_PKG_VERSION"));
                 std::process::exit(0);
@@ -133,14 +143,8 @@ pub fn parse_args() -> Result<Args, lexopt::Error> {
         sides,
         smooth_all,
         edits,
-        background,
-        line_width,
-        size,
-        dpi,
-        animate,
-        seconds_per_step,
-        targets_per_step,
-        frames,
+        picture,
+        growth_out,
     })
 }
 
@@ -157,17 +161,17 @@ fn growth_time(text: &str) -> Result<f64, lexopt::Error> {
 /// An SVG's picture settings from `--background`, `--line-width`, `--size` and `--dpi`, checked;
 /// refused for the other formats.
 pub fn svg_look(args: &Args, format: Format) -> Result<svg::Look, String> {
-    let given = args.background.is_some()
-        || args.line_width.is_some()
-        || args.size.is_some()
-        || args.dpi.is_some();
+    let given = args.picture.background.is_some()
+        || args.picture.line_width.is_some()
+        || args.picture.size.is_some()
+        || args.picture.dpi.is_some();
     if given && format != Format::Svg {
         return Err(format!(
             "--background, --line-width, --size and --dpi are an SVG's picture settings, not {}'s",
             format.extension()
         ));
     }
-    let size = match &args.size {
+    let size = match &args.picture.size {
         Some(text) => {
             let parsed = text
                 .split_once(['x', 'X', '×'])
@@ -179,7 +183,12 @@ pub fn svg_look(args: &Args, format: Format) -> Result<svg::Look, String> {
         }
         None => None,
     };
-    svg::Look::read(args.background.as_deref(), args.line_width, size, args.dpi)
+    svg::Look::read(
+        args.picture.background.as_deref(),
+        args.picture.line_width,
+        size,
+        args.picture.dpi,
+    )
 }
 
 /// Where `export` writes, in which format, and an SVG's look.

@@ -135,11 +135,17 @@ pub fn export_file(
         stem,
         edits,
         look,
-        animation: args.animate.then(|| {
+        animation: args.growth_out.animate.then(|| {
             let defaults = Animation::default();
             Animation {
-                seconds_per_step: args.seconds_per_step.unwrap_or(defaults.seconds_per_step),
-                targets_per_step: args.targets_per_step.unwrap_or(defaults.targets_per_step),
+                seconds_per_step: args
+                    .growth_out
+                    .seconds_per_step
+                    .unwrap_or(defaults.seconds_per_step),
+                targets_per_step: args
+                    .growth_out
+                    .targets_per_step
+                    .unwrap_or(defaults.targets_per_step),
             }
         }),
     };

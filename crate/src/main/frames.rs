@@ -29,7 +29,7 @@ pub const MAX_FRAMES: u32 = 10_000;
 /// The pictures to write: each file and its growth time, for `steps` steps; or why not.
 fn frames_of(args: &Args, output: PathBuf, steps: u32) -> Result<Vec<(PathBuf, f32)>, String> {
     let n = steps as f32;
-    match (args.frames, args.at) {
+    match (args.growth_out.frames, args.at) {
         (Some(_), Some(_)) => Err("--frames and --at: give one of them".into()),
         (Some(count), None) => {
             if !(1..=MAX_FRAMES).contains(&count) {
@@ -100,7 +100,7 @@ pub fn export_frames(
         Ok(frames) => frames,
         Err(e) => return fail(e),
     };
-    if args.frames.is_some() {
+    if args.growth_out.frames.is_some() {
         if let Err(e) = std::fs::create_dir_all(&output) {
             return fail(format!("cannot create {}: {e}", output.display()));
         }

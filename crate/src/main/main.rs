@@ -83,7 +83,8 @@ fn main() -> ExitCode {
         eprintln!("meristem: unknown verb '{}'\n{USAGE}", args.verb);
         return ExitCode::from(2);
     }
-    let frames = args.verb == "export" && (args.frames.is_some() || at_as_picture(&args));
+    let frames =
+        args.verb == "export" && (args.growth_out.frames.is_some() || at_as_picture(&args));
     let export_target = if args.verb == "export" && !frames {
         match export_target(&args) {
             Ok(target) => Some(target),

@@ -7,7 +7,7 @@ use super::step_on;
 use super::{Hooks, Inspector, Plant, Progress, Stage, StageTimings};
 use crate::derive::{Derivation, DeriveOptions};
 use crate::diagnostics::{has_errors, locate_all, Diagnostic, LocatedDiagnostic};
-use crate::growth::GrowthRecord;
+use crate::growth::{Adjustments, GrowthRecord};
 use crate::mesh::MeshOptions;
 use crate::model::{self, Model};
 use crate::syntax;
@@ -199,40 +199,61 @@ pub(super) fn run_stages(
     };
     let derived = derive_stage(&model, derive, from, count, &mut result, &mut stepped);
     watch.timings.derive = watch.lap();
-    if let Some(None) = derived.as_ref().filter(|_| options.sketch) {
-        watch.start(Stage::Interpret);
-        let derivation = &result.derivation;
-        let sketch =
-            turtle::sketch_counted(&model, derivation.turtle_string(), &derivation.id_counts);
-        watch.timings.interpret = watch.lap();
-        if let Some(module) = sketch.clamped() {
-            result
-                .diagnostics
-                .push(clamped_warning(&model, &result.derivation, module));
-        }
-        watch.start(Stage::Mesh);
-        result.plant = Plant::sketched(sketch, &options.mesh, &result.derivation, steps);
-        watch.timings.mesh = watch.lap();
-    } else if let Some(adjustments) = derived {
-        watch.start(Stage::Interpret);
-        let mut skeleton = turtle::interpret_adjusted(
-            &model,
-            result.derivation.turtle_string(),
-            adjustments.as_ref(),
-        );
-        skeleton.step_counts = result.step_counts.clone();
-        watch.timings.interpret = watch.lap();
-        if let Some(module) = skeleton.clamped {
-            result
-                .diagnostics
-                .push(clamped_warning(&model, &result.derivation, module));
-        }
-        watch.start(Stage::Mesh);
-        result.plant = Plant::new(skeleton, &options.mesh, &result.derivation, steps);
-        watch.timings.mesh = watch.lap();
+    if let Some(adjustments) = derived {
+        interpret_and_mesh(&model, options, steps, adjustments, &mut result, watch);
     }
     result.model = Some(model);
     result
+}
+
+/// What the turtle drew: a sketch's lines, or the skeleton.
+enum Drawn {
+    Sketch(turtle::Sketch),
+    Skeleton(turtle::Skeleton),
+}
+
+/// The turtle and the mesh stages: the segments as lines when the options ask for a sketch (and
+/// growth does not adjust the turtle), else the skeleton, adjusted by growth, and its mesh.
+fn interpret_and_mesh(
+    model: &Model,
+    options: &BuildOptions,
+    steps: u32,
+    adjustments: Option<Adjustments>,
+    result: &mut Build,
+    watch: &mut Watch<'_, '_>,
+) {
+    watch.start(Stage::Interpret);
+    let derivation = &result.derivation;
+    let drawn = match adjustments {
+        None if options.sketch => Drawn::Sketch(turtle::sketch_counted(
+            model,
+            derivation.turtle_string(),
+            &derivation.id_counts,
+        )),
+        adjustments => {
+            let turtle_string = derivation.turtle_string();
+            let mut skeleton =
+                turtle::interpret_adjusted(model, turtle_string, adjustments.as_ref());
+            skeleton.step_counts = result.step_counts.clone();
+            Drawn::Skeleton(skeleton)
+        }
+    };
+    watch.timings.interpret = watch.lap();
+    let clamped = match &drawn {
+        Drawn::Sketch(sketch) => sketch.clamped(),
+        Drawn::Skeleton(skeleton) => skeleton.clamped,
+    };
+    if let Some(module) = clamped {
+        let warning = clamped_warning(model, &result.derivation, module);
+        result.diagnostics.push(warning);
+    }
+    watch.start(Stage::Mesh);
+    let (mesh, derivation) = (&options.mesh, &result.derivation);
+    result.plant = match drawn {
+        Drawn::Sketch(sketch) => Plant::sketched(sketch, mesh, derivation, steps),
+        Drawn::Skeleton(skeleton) => Plant::new(skeleton, mesh, derivation, steps),
+    };
+    watch.timings.mesh = watch.lap();
 }
 
 /// `E0202` when `steps` is more than `#max_steps`.

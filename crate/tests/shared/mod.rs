@@ -1,8 +1,23 @@
-//! What several test files read: the gallery's examples (`public/examples/*.lsys`).
+//! What several test files read: the gallery's examples (`public/examples/*.lsys`), and a grammar
+//! resolved without a diagnostic. (Each test file compiles this module on its own and uses a
+//! part of it: hence `allow(dead_code)`.)
 
+use meristem::model::{resolve, Model};
+use meristem::syntax::parse;
 use std::path::PathBuf;
 
+/// `src` parsed and resolved, asserting that neither says anything.
+#[allow(dead_code)]
+pub fn model(src: &str) -> Model {
+    let (file, diags) = parse(src);
+    assert!(diags.is_empty(), "{diags:?}");
+    let (model, diags) = resolve(&file);
+    assert!(diags.is_empty(), "{diags:?}");
+    model.expect("model")
+}
+
 /// Every gallery example, by path, with its text, in file name order.
+#[allow(dead_code)]
 pub fn examples() -> Vec<(PathBuf, String)> {
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../public/examples");
     let mut files: Vec<_> = std::fs::read_dir(&dir)
