@@ -21,7 +21,7 @@ function distance(a: Uint8Array, i: number, b: Uint8Array | readonly number[], j
   return Math.abs(a[i] - b[j]) + Math.abs(a[i + 1] - b[j + 1]) + Math.abs(a[i + 2] - b[j + 2]);
 }
 
-/** The background colour: the most common colour among the picture's border pixels. */
+/** The background colour: the most common colour along the picture's edges (two pixels in). */
 export function backgroundColour(picture: Picture): [number, number, number] {
   const counts = new Map<number, number>();
   const { width, height, data } = picture;
@@ -30,8 +30,11 @@ export function backgroundColour(picture: Picture): [number, number, number] {
     const key = (data[i] << 16) | (data[i + 1] << 8) | data[i + 2];
     counts.set(key, (counts.get(key) ?? 0) + 1);
   };
-  for (let x = 0; x < width; x++) (add(x, 0), add(x, height - 1));
-  for (let y = 0; y < height; y++) (add(0, y), add(width - 1, y));
+  // Two pixels in from the edges: a screenshot of an element at a fractional place on the page
+  // may hold a row of its neighbour's border (the timeline bar's under the view, the toolbar's).
+  const inset = Math.min(2, Math.floor((Math.min(width, height) - 1) / 2));
+  for (let x = inset; x < width - inset; x++) (add(x, inset), add(x, height - 1 - inset));
+  for (let y = inset; y < height - inset; y++) (add(inset, y), add(width - 1 - inset, y));
   const [key] = [...counts.entries()].sort((a, b) => b[1] - a[1])[0];
   return [(key >> 16) & 255, (key >> 8) & 255, key & 255];
 }
