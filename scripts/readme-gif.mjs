@@ -14,10 +14,10 @@ try {
   const page = await browser.newPage({ viewport: { width: 1280, height: 800 }, acceptDownloads: true });
   await page.goto(url);
   await page.waitForFunction(() => window.__meristem?.preview?.settled === true && (window.__meristem.lastStats?.segments ?? 0) > 0, undefined, { timeout: 60_000 });
-  await page.evaluate(async () => {
-    const text = await (await fetch('examples/abop-1.24a.lsys')).text();
-    window.__meristem.preview.rebuild({ text });
-  });
+  // Fig. 1.24a from the gallery (the first text is the initial example: nothing to confirm).
+  await page.getByTestId('open-gallery').click();
+  await page.locator('[data-testid=gallery-list] button[data-file="abop-1.24a.lsys"]').click();
+  await page.waitForFunction(() => window.__meristem?.preview?.lastResult?.source.includes('1.24a') && window.__meristem.preview.settled, undefined, { timeout: 60_000 });
   await page.getByTestId('iterations').fill('5');
   await page.getByTestId('timeline-slider').waitFor();
   await page.getByTestId('timeline-slider').fill('5'); // the timeline in use: builds carry growth times
@@ -29,7 +29,7 @@ try {
   await page.getByTestId('movie-size').selectOption('');
   await page.getByTestId('movie-width').fill('360');
   await page.getByTestId('movie-height').fill('360');
-  await page.getByTestId('movie-fps').selectOption('12');
+  await page.getByTestId('movie-fps').selectOption('10');
   await page.getByTestId('movie-timing').selectOption('duration');
   await page.getByTestId('movie-seconds').fill('5');
   await page.getByTestId('movie-background').selectOption('white');
