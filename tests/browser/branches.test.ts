@@ -177,6 +177,8 @@ describe('editing a branch by its Bézier handles', () => {
 
   it('carries the edits in a share link', async () => {
     await page.getByTestId('share').click();
+    // The link is written once the state is encoded (asynchronously): wait for it.
+    await expect.poll(() => page.getByTestId('share-link').inputValue()).toMatch(/#s=1\./);
     const link = await page.getByTestId('share-link').inputValue();
     await page.keyboard.press('Escape');
     const other = await browser.newPage({ viewport: { width: 1280, height: 800 } });

@@ -118,6 +118,8 @@ describe('the growth timeline', () => {
     await page.getByTestId('timeline-loop').check();
     await page.keyboard.press('Escape');
     await page.getByTestId('share').click();
+    // The link is written once the state is encoded (asynchronously): wait for it.
+    await expect.poll(() => page.getByTestId('share-link').inputValue()).toMatch(/#s=1\./);
     const link = await page.getByTestId('share-link').inputValue();
     await page.keyboard.press('Escape');
     const decoded = await decodeState(new URL(link).hash);
