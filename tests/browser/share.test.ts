@@ -79,6 +79,7 @@ describe('share links', () => {
 
     await page.getByTestId('share').click();
     await page.getByTestId('share-dialog').waitFor({ state: 'visible' });
+    await expect.poll(() => page.getByTestId('share-link').inputValue()).toMatch(/#s=1\./); // written once encoded
     const link = await page.getByTestId('share-link').inputValue();
     expect(link.startsWith(inject('studioUrl'))).toBe(true);
     expect(link).toMatch(/#s=1\.[A-Za-z0-9_-]+$/);
@@ -166,6 +167,7 @@ describe('a grammar with HTML in its comments', () => {
     const hash = await derivedHash(page);
     await page.getByTestId('share').click();
     await page.getByTestId('share-dialog').waitFor({ state: 'visible' });
+    await expect.poll(() => page.getByTestId('share-link').inputValue()).toMatch(/#s=1\./); // written once encoded
     const link = await page.getByTestId('share-link').inputValue();
     expect(link).toMatch(/#s=1\.[A-Za-z0-9_-]+$/);
     expect(await page.getByTestId('share-download').isVisible(), 'a link, not the download instead').toBe(false);
