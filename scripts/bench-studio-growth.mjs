@@ -5,10 +5,8 @@
 // them): a frame's work is the sum of its callbacks, the timeline's tick and the view's draw call
 // (the draw itself runs in the GPU process). Both of bench-studio.mjs's Chromium setups;
 // BENCH_SETUP=software (or gpu) runs one. Results go to test-results/bench-studio-growth.json.
-import { mkdirSync, writeFileSync } from 'node:fs';
-import os from 'node:os';
 import { chromium } from 'playwright-core';
-import { SETUPS, servedSite } from './bench-site.mjs';
+import { SETUPS, servedSite, writeResults } from './bench-site.mjs';
 
 const WORKLOADS = [
   { name: 'ABOP 1.24d, n = 10 (116,050 segments), Tubes mode', iterations: 10 },
@@ -80,8 +78,4 @@ try {
 } finally {
   await server.close();
 }
-mkdirSync(new URL('../test-results/', import.meta.url), { recursive: true });
-writeFileSync(
-  new URL('../test-results/bench-studio-growth.json', import.meta.url),
-  `${JSON.stringify({ date: new Date().toISOString(), cpu: os.cpus()[0]?.model, cores: os.cpus().length, results }, null, 1)}\n`,
-);
+writeResults('bench-studio-growth.json', { results });

@@ -5,10 +5,8 @@
 // encoder. The plant grows over the movie where the view has growth times (the timeline's), and
 // the camera turns once about it. Both of bench-studio.mjs's Chromium setups; BENCH_SETUP=software
 // (or gpu) runs one. Results go to test-results/bench-studio-movie.json. Not part of `npm test`.
-import { mkdirSync, writeFileSync } from 'node:fs';
-import os from 'node:os';
 import { chromium } from 'playwright-core';
-import { SETUPS, servedSite } from './bench-site.mjs';
+import { SETUPS, servedSite, writeResults } from './bench-site.mjs';
 
 const MOVIE = { width: 1280, height: 720, fps: 30, seconds: Number(process.env.BENCH_SECONDS ?? 10) };
 const setups = Object.entries(SETUPS).filter(([name]) => process.env.BENCH_SETUP === undefined || name.toLowerCase().startsWith(process.env.BENCH_SETUP));
@@ -54,11 +52,7 @@ try {
 } finally {
   await server.close();
 }
-mkdirSync(new URL('../test-results/', import.meta.url), { recursive: true });
-writeFileSync(
-  new URL('../test-results/bench-studio-movie.json', import.meta.url),
-  `${JSON.stringify({ date: new Date().toISOString(), cpu: os.cpus()[0]?.model, cores: os.cpus().length, results }, null, 1)}\n`,
-);
+writeResults('bench-studio-movie.json', { results });
 console.log('\n| setup | workload | written in (Record → download) | per frame | target |');
 console.log('| --- | --- | ---: | ---: | ---: |');
 for (const r of results) console.log(`| ${r.setup} | ${r.workload} | ${(r.writtenMs / 1000).toFixed(1)} s | ${r.perFrameMs} ms | ≤ 30 s |`);

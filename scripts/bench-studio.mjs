@@ -10,10 +10,8 @@
 // Medians go to test-results/bench-studio.json. Not part of `npm test`.
 // While working on one stage: BENCH_SETUP=software (or gpu) and BENCH_WORKLOAD=0 (an index of
 // WORKLOADS) run one of each, and KEYSTROKES=N types fewer keys; the file is then not written.
-import { mkdirSync, writeFileSync } from 'node:fs';
-import os from 'node:os';
 import { chromium } from 'playwright-core';
-import { SETUPS, servedSite } from './bench-site.mjs';
+import { SETUPS, servedSite, writeResults } from './bench-site.mjs';
 
 const KEYSTROKES = Number(process.env.KEYSTROKES ?? 16);
 // The flat example is drawn as lines (`auto`), which mesh no tubes: the tube frame is measured with
@@ -144,11 +142,7 @@ try {
   await server.close();
 }
 if (!partial) {
-  mkdirSync(new URL('../test-results/', import.meta.url), { recursive: true });
-  writeFileSync(
-    new URL('../test-results/bench-studio.json', import.meta.url),
-    `${JSON.stringify({ date: new Date().toISOString(), cpu: os.cpus()[0]?.model, cores: os.cpus().length, keystrokes: KEYSTROKES, results }, null, 1)}\n`,
-  );
+  writeResults('bench-studio.json', { keystrokes: KEYSTROKES, results });
 }
 console.log('\n| setup | workload | keystroke → first frame of the new plant | → tubes drawn | → next frame | → GPU done | round trip (request → build on the page) | in the worker | core stages | of which mesh | build on the page → drawn | built by the studio core |');
 console.log('| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |');
