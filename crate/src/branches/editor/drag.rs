@@ -183,7 +183,7 @@ impl BranchEditor {
             .copied()
             .unwrap_or(self.inherited[branch as usize]);
         self.move_chains(session, &session.base_end.inverse().then(&end), mesh);
-        self.remesh_items(session, skeleton, mesh)?;
+        self.remesh_items(&session.items, skeleton, mesh)?;
         let mut bounds = session.fixed_bounds;
         for &r in &session.ranges {
             bounds = union(bounds, bounds_of(&mesh.positions, r));
@@ -311,15 +311,15 @@ impl BranchEditor {
         }
     }
 
-    /// Meshes the polygons, leaves and spheres of the dragged branch and below anew in place;
-    /// fails when one has another number of triangles.
+    /// Meshes `items` (the polygons, leaves and spheres of the dragged branch and below) anew in
+    /// place; fails when one has another number of triangles.
     fn remesh_items(
         &self,
-        session: &DragSession,
+        items: &[Item],
         skeleton: &Skeleton,
         mesh: &mut MeshBuffers,
     ) -> Result<(), String> {
-        for &item in &session.items {
+        for &item in items {
             let part = self.item_part(item);
             let alone = match item {
                 Item::Polygon(i) => {
