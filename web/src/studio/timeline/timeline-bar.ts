@@ -12,7 +12,10 @@ import './timeline-bar.css';
 
 /** Degrees the turntable turns the camera for each step of growth played. */
 export const TURNTABLE_DEGREES_PER_STEP = 45;
-/** Who holds the view's tubes while a growth time is shown (the Lines mode's lines do not grow). */
+/**
+ * Who holds the view's tubes while a growth time is shown (the Lines mode's lines do not grow),
+ * and its frame while a timed or stepwise grammar is derived at t with the camera on the final plant.
+ */
 const TUBES_HOLDER = 'timeline';
 
 /** t as the bar writes it: two decimals. */
@@ -107,7 +110,7 @@ function barControls(bar: HTMLElement): BarControls {
 export interface TimelineBuilds {
   /** Builds carry growth arrays from now on. */
   want(): void;
-  /** A timed grammar's builds derive it at growth time `t` (null: at its iterations). */
+  /** A timed grammar's builds derive it at growth time `t`, a stepwise one's at ⌊t⌋ (null: at its iterations). */
   deriveAt(t: number | null): void;
 }
 
@@ -196,8 +199,8 @@ export class TimelineBar {
 
   /**
    * Shows growth time `t`: the whole plant (and the Lines mode's lines) at the span's end. A timed
-   * grammar is derived at t (a build: the newest request waits while one runs); any other grows
-   * on the GPU from its whole plant's mesh.
+   * grammar is derived at t, a stepwise one at ⌊t⌋ (a build: the newest request waits while one
+   * runs); any other grows on the GPU from its whole plant's mesh.
    */
   private show(t: number): void {
     const { view } = this.studio;
@@ -206,6 +209,10 @@ export class TimelineBar {
     const span = timedSpan === null ? view.growthSpan() : 0;
     const whole = span === null || t >= span;
     view.holdTubes(TUBES_HOLDER, !whole);
+    // Each derived plant would be framed anew, and a plant growing would seem to stand still: the
+    // camera stays on the whole plant it framed (unless it follows the growth).
+    const derived = timedSpan !== null && t < timedSpan;
+    view.holdFrame(TUBES_HOLDER, derived && this.controls.camera.value === 'final');
     view.setGrowthTime(whole ? null : t);
     if (this.controls.turntable.checked && this.timeline.playing && this.lastT !== null && t > this.lastT) {
       view.turn((t - this.lastT) * TURNTABLE_DEGREES_PER_STEP);
@@ -231,6 +238,7 @@ export class TimelineBar {
     this.timeline.pause();
     this.engaged = false;
     this.studio.view.holdTubes(TUBES_HOLDER, false);
+    this.studio.view.holdFrame(TUBES_HOLDER, false);
     this.studio.view.setGrowthTime(null);
     this.render(this.timeline.state);
   }
