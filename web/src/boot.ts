@@ -4,7 +4,7 @@
 // gets the compiled core at once; the studio (main.ts) then finds both under way (`coreModule`
 // and `createBuildWorker` take them). vite.config.ts puts it in index.html's head. It imports the
 // two modules it runs by file, not through their areas' indexes: the boot script stays a few KB.
-import { coreModule } from './core/init';
+import { coreModule } from './core/compile';
 import { startEarlyBuildWorker } from './build/build-worker-start';
 
 coreModule().catch(() => undefined); // a failure is the studio's to report, when it asks

@@ -3,7 +3,7 @@
 // See index.html for the page, ARCHITECTURE.md for the areas.
 import './style.css';
 import { BuildClient, createBuildWorker } from './build';
-import { coreVersion, initCore, loadVocabulary } from './core';
+import { CORE_VERSION, coreModule, loadVocabulary } from './core';
 import { createLazyGrammarEditor } from './editor/grammar-text';
 import { wireBranchEditing } from './studio/branches';
 import { LazySliderPanel } from './plant-controls';
@@ -26,12 +26,12 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   const notice = new Notice(els.notice);
   const keeping = browserKeeping(); // the user's work, kept before anything replaces it
   // The page compiles the core and hands it to the build worker (builds run there, imports of
-  // opened files in an import worker's); the page's own instance only says the version. The
-  // build worker starts at once, and the studio is set up (the view's WebGL context, the panels)
-  // while the core still downloads: the first build is asked for once it has arrived (issue 22).
+  // opened files in an import worker's); the page has no instance of it. The build worker starts
+  // at once, and the studio is set up (the view's WebGL context, the panels) while the core still
+  // downloads: the first build is asked for once it has arrived (issue 22).
   const buildClient = new BuildClient(createBuildWorker);
   buildClient.warmUp();
-  const coreStarted = initCore();
+  const coreStarted = coreModule();
   coreStarted.catch(() => undefined); // awaited below, before the first build: a failure is reported there
   const start = await startingText({ ...keeping, notice, cannotKeep: els.cannotKeep }, INITIAL_EXAMPLE);
 
@@ -79,7 +79,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
 
   // Start: the first plant, as soon as the core has arrived.
   await coreStarted;
-  els.version.textContent = `core ${coreVersion()}`;
+  els.version.textContent = `core ${CORE_VERSION}`;
   const firstBuild = preview.nextDelivery();
   const underWay = preview.nextProgress();
   preview.rebuild();

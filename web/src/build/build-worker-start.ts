@@ -2,7 +2,7 @@
 // starts it as soon as that small script has arrived, while the studio's own script still
 // downloads, so the worker's script and the core's compilation are under way sooner (issue 22,
 // the first load); the studio's first createBuildWorker adopts it.
-import { coreModule } from '../core/init';
+import { coreModule } from '../core/compile';
 import type { CoreMessage } from './worker-protocol';
 import workerUrl from './worker.ts?worker&url';
 

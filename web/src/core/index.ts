@@ -1,6 +1,7 @@
 // The core: the Rust/WebAssembly pipeline behind an idiomatic TypeScript facade.
 // Invariant: no other TypeScript imports crate/pkg; everything else uses these names.
-export { initCore, coreModule, coreVersion, CoreCrashed } from './init';
+export { initCore, CoreCrashed } from './init';
+export { coreModule, CORE_VERSION } from './compile';
 export { initIo } from './io';
 export { loadBranchEditing, type EditPlant } from './editing';
 export { buildPlant, inspectPlant, prepareSpares, studioCoreInUse, type InspectRequest, type PlantSketch, type SketchRequest } from './build';

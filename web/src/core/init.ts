@@ -2,7 +2,7 @@
 // TypeScript that imports crate/pkg-core (the core without importers and exporters, all the first
 // plant needs) and crate/pkg (the whole boundary: ./io.ts loads it when a file is imported or
 // exported).
-import init, { initSync, onPanic, version } from '../../../crate/pkg-core/meristem_core.js';
+import init, { initSync, onPanic } from '../../../crate/pkg-core/meristem_core.js';
 import wasmUrl from '../../../crate/pkg-core/meristem_core_bg.wasm?url';
 
 let memory: WebAssembly.Memory | undefined;
@@ -19,31 +19,12 @@ export class CoreCrashed extends Error {
   override name = 'CoreCrashed';
 }
 
-let compiled: Promise<WebAssembly.Module> | undefined;
-
-/**
- * The core's compiled module, fetched and compiled once (browser only). The page instantiates it,
- * and hands it to its build workers (createBuildWorker), so the first plant downloads the core
- * once, whatever the host's caching (issue 22, the first load).
- */
-export function coreModule(): Promise<WebAssembly.Module> {
-  return (compiled ??= compileCore());
-}
-
-async function compileCore(): Promise<WebAssembly.Module> {
-  const response = await fetch(wasmUrl);
-  if (!response.ok) throw new Error(`the core could not be fetched: HTTP ${response.status}`);
-  // Streaming needs `application/wasm`; a host that says otherwise gets the bytes compiled whole.
-  if (response.headers.get('Content-Type')?.startsWith('application/wasm')) return WebAssembly.compileStreaming(response);
-  return WebAssembly.compile(await response.arrayBuffer());
-}
-
 /**
  * Instantiates the core once; later calls return the same promise.
  *
- * - In the browser call it without arguments: the `.wasm` file is fetched from the URL vite
- *   gives it (a hashed asset next to the page) and compiled ({@link coreModule}); a worker passes
- *   the module the page compiled.
+ * - In the browser pass the module the page compiled (`coreModule` of ./compile.ts), or nothing:
+ *   the `.wasm` file is then fetched from the URL vite gives it (a hashed asset next to the page)
+ *   and compiled here.
  * - In node (vitest, scripts) pass the bytes of `crate/pkg-core/meristem_core_bg.wasm`, e.g. from
  *   `readFileSync`: they are compiled synchronously (node cannot `fetch` a `file:` URL).
  */
@@ -55,9 +36,7 @@ export function initCore(wasm?: BufferSource | WebAssembly.Module): Promise<void
     listen();
     loading = Promise.resolve();
   } else {
-    loading = (wasm ? Promise.resolve(wasm) : coreModule())
-      .then((module) => init({ module_or_path: module }))
-      .then((output) => {
+    loading = init({ module_or_path: wasm ?? wasmUrl }).then((output) => {
         memory = output.memory;
         listen();
       });
@@ -68,12 +47,6 @@ export function initCore(wasm?: BufferSource | WebAssembly.Module): Promise<void
 /** Keeps the message of a panic of either core module for {@link guarded}. */
 export function notePanic(message: string): void {
   panicMessage = message;
-}
-
-/** The core's version (the crate version), for the about line and bug reports. */
-export function coreVersion(): string {
-  assertReady();
-  return guarded(() => version());
 }
 
 /** Throws a clear error when the core is used before {@link initCore} finished. */
