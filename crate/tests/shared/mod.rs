@@ -1,10 +1,11 @@
-//! What several test files read: the gallery's examples (`public/examples/*.lsys`), and a grammar
-//! resolved without a diagnostic. (Each test file compiles this module on its own and uses a
+//! What several test files read: the gallery's examples (`public/examples/*.lsys`), a grammar
+//! resolved without a diagnostic, and a vlab object's folder as its files. (Each test file compiles this module on its own and uses a
 //! part of it: hence `allow(dead_code)`.)
 
+use meristem::import::ObjectFile;
 use meristem::model::{resolve, Model};
 use meristem::syntax::parse;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// `src` parsed and resolved, asserting that neither says anything.
 #[allow(dead_code)]
@@ -34,4 +35,20 @@ pub fn examples() -> Vec<(PathBuf, String)> {
             (p, text)
         })
         .collect()
+}
+
+/// A vlab object folder as the CLI and the studio hand it over: every file with its bytes, in
+/// name order.
+#[allow(dead_code)]
+pub fn object(dir: &Path) -> Vec<ObjectFile> {
+    let mut files: Vec<ObjectFile> = std::fs::read_dir(dir)
+        .expect("object folder")
+        .flatten()
+        .map(|e| ObjectFile {
+            name: e.file_name().to_string_lossy().into_owned(),
+            bytes: std::fs::read(e.path()).expect("object file"),
+        })
+        .collect();
+    files.sort_by(|a, b| a.name.cmp(&b.name));
+    files
 }
