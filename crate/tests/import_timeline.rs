@@ -110,17 +110,6 @@ fn lpfg_growth(t: f64) -> f64 {
     (1.0 - w) * y(i / 20.0) + w * y((i + 1.0) / 20.0)
 }
 
-fn segment_lengths(text: &str) -> Vec<f64> {
-    let b = build(text, &BuildOptions::default());
-    assert!(b.ok(), "{:?}\n{text}", b.diagnostics);
-    b.plant
-        .skeleton
-        .segments
-        .iter()
-        .map(|s| (s.end - s.start).length())
-        .collect()
-}
-
 fn messages(import: &Import) -> Vec<&str> {
     import.notes.iter().map(|n| n.message.as_str()).collect()
 }
@@ -152,7 +141,9 @@ fn tfunc_and_val_give_lpfgs_lengths_at_the_start_middle_and_end_of_a_timeline() 
     let mut expected: Vec<f64> = by_hand.iter().map(|v| 2.0 * v).collect();
     // B: by numbers (SCALE is 3, GROWTH 2), then WIDTH at 0.5 through func and tfunc: 8/8.
     expected.extend([2.0 * 1.291375, 1.0, 1.0]);
-    let lengths = segment_lengths(&result.text);
+    let b = build(&result.text, &BuildOptions::default());
+    assert!(b.ok(), "{:?}\n{}", b.diagnostics, result.text);
+    let lengths = shared::lengths(&b);
     assert_eq!(lengths.len(), expected.len(), "{lengths:?}");
     for (k, (got, want)) in lengths.iter().zip(&expected).enumerate() {
         // The control points' ⅓ and ⅔ are written with 6 decimals: 1e-5 covers it.

@@ -1,9 +1,11 @@
 //! What several test files read: the gallery's examples (`public/examples/*.lsys`), a grammar
-//! resolved without a diagnostic, and a vlab object's folder as its files. (Each test file compiles this module on its own and uses a
+//! resolved without a diagnostic, a vlab object's folder as its files, and a plant's segments'
+//! lengths. (Each test file compiles this module on its own and uses a
 //! part of it: hence `allow(dead_code)`.)
 
 use meristem::import::ObjectFile;
 use meristem::model::{resolve, Model};
+use meristem::pipeline::Build;
 use meristem::syntax::parse;
 use std::path::{Path, PathBuf};
 
@@ -51,4 +53,15 @@ pub fn object(dir: &Path) -> Vec<ObjectFile> {
         .collect();
     files.sort_by(|a, b| a.name.cmp(&b.name));
     files
+}
+
+/// The length of each segment of a build's plant, in drawing order.
+#[allow(dead_code)]
+pub fn lengths(b: &Build) -> Vec<f64> {
+    b.plant
+        .skeleton
+        .segments
+        .iter()
+        .map(|s| (s.end - s.start).length())
+        .collect()
 }

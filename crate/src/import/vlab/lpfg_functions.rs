@@ -10,7 +10,7 @@
 //! line and what is wrong.
 
 use super::{function, function_set, identifier, CurveFunction, Files, FunctionKind, Reader, View};
-use crate::import::number;
+use crate::import::{leading_float, number};
 use crate::vocabulary::DirectiveKind;
 
 /// The function files lpfg is started with.
@@ -294,7 +294,7 @@ fn values(text: &str, file: &str, view: &mut View) {
         let Some(&first) = words.first() else {
             continue;
         };
-        let value = words.get(2).and_then(|w| leading_number(w));
+        let value = words.get(2).and_then(|w| leading_float(w));
         match (first, words.get(1), value) {
             // dialect: lpfg's value files are C's #define lines
             ("#define", Some(name), Some(value)) => {
@@ -319,18 +319,6 @@ fn values(text: &str, file: &str, view: &mut View) {
             ),
         }
     }
-}
-
-/// The number a word starts with, as C's `stof` reads it (`2.5cm` is 2.5); `None` when it
-/// starts with none or it is not finite.
-fn leading_number(word: &str) -> Option<f64> {
-    let end = word
-        .find(|c: char| !(c.is_ascii_digit() || matches!(c, '.' | '-' | '+' | 'e' | 'E')))
-        .unwrap_or(word.len());
-    (1..=end)
-        .rev()
-        .find_map(|k| word[..k].parse::<f64>().ok())
-        .filter(|v| v.is_finite())
 }
 
 #[cfg(test)]
@@ -391,38 +379,51 @@ mod tests {
 
     #[test]
     fn malformed_timelines_say_the_line_and_keep_what_came_before() {
-        let cut = TSET.replacen("end: 1\n", "end: one\n", 1);
-        let view = read_one("f.tset", &cut);
-        assert_eq!(view.functions.len(), 2);
-        assert!(view.functions[1].is_none());
-        assert!(
-            view.notes[0].starts_with("f.tset, line 21: 'end: one' is not a number"),
-            "{:?}",
-            view.notes
-        );
-        let view = read_one("f.tset", "timeEdit 1 2\nitems: two\n");
-        assert!(view.notes[0].starts_with("f.tset, line 2: 'items: two' is not a count"));
-        let view = read_one("f.tset", "timeEdit 1 3\n");
-        assert!(view.notes[0].starts_with("f.tset, line 1: 'timeEdit 1 3' is not a version"));
-        let view = read_one("f.tset", &TSET[..TSET.len() - 60]);
-        assert_eq!(view.functions.len(), 2);
-        assert!(
-            view.notes[0].contains("has no 'timelineFunceditFileEnd:'"),
-            "{:?}",
-            view.notes
-        );
-        let three = TSET.replacen("0.6 1\n", "", 1);
-        let view = read_one("f.tset", &three);
-        assert_eq!(view.functions.len(), 2);
-        assert!(view.functions[1].is_none());
-        assert!(
-            view.notes[0].starts_with("f.tset, line 26: the timeline function here is not"),
-            "{:?}",
-            view.notes
-        );
-        let extra = format!("{TSET}start: 0\n");
-        let view = read_one("f.tset", &extra);
-        assert!(view.notes[0].contains("goes on after the 2 timeline functions"));
+        // Each: the file, how many entries it gives (the first read, the second not), the note.
+        let cases: [(String, usize, &str); 6] = [
+            (
+                TSET.replacen("end: 1\n", "end: one\n", 1),
+                2,
+                "f.tset, line 21: 'end: one' is not a number",
+            ),
+            (
+                TSET.replacen("0.6 1\n", "", 1),
+                2,
+                "f.tset, line 26: the timeline function here is not",
+            ),
+            (
+                TSET[..TSET.len() - 60].to_string(),
+                2,
+                "has no 'timelineFunceditFileEnd:'",
+            ),
+            (
+                format!("{TSET}start: 0\n"),
+                2,
+                "goes on after the 2 timeline functions",
+            ),
+            (
+                "timeEdit 1 2\nitems: two\n".into(),
+                0,
+                "f.tset, line 2: 'items: two' is not a count",
+            ),
+            (
+                "timeEdit 1 3\n".into(),
+                0,
+                "f.tset, line 1: 'timeEdit 1 3' is not a version",
+            ),
+        ];
+        for (text, entries, piece) in cases {
+            let view = read_one("f.tset", &text);
+            assert_eq!(view.functions.len(), entries, "{piece}");
+            if entries == 2 {
+                assert!(view.functions[0].is_some(), "{piece}");
+            }
+            assert!(
+                view.notes.len() == 1 && view.notes[0].contains(piece),
+                "{piece}: {:?}",
+                view.notes
+            );
+        }
     }
 
     #[test]
@@ -438,12 +439,7 @@ mod tests {
     }
 
     #[test]
-    fn numbers_are_read_as_c_reads_them() {
-        assert_eq!(leading_number("2.5cm"), Some(2.5));
-        assert_eq!(leading_number("-1e2"), Some(-100.0));
-        assert_eq!(leading_number("1e"), Some(1.0));
-        assert_eq!(leading_number("abc"), None);
-        assert_eq!(leading_number("inf"), None);
+    fn ordinals_read_as_english() {
         assert_eq!(ordinal(1), "1st");
         assert_eq!(ordinal(12), "12th");
         assert_eq!(ordinal(23), "23rd");
