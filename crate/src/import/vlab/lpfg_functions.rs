@@ -114,35 +114,49 @@ fn note(view: &mut View, file: &str, line: usize, message: String) {
 
 /// The lines of a file after its first, numbered from 2, trimmed, blank ones skipped.
 struct Lines<'a> {
-    lines: std::iter::Peekable<Box<dyn Iterator<Item = (usize, &'a str)> + 'a>>,
+    lines: Vec<(usize, &'a str)>,
+    /// The index in `lines` of the next line to take.
+    next: usize,
     /// The number of the last line taken (or of the last line of the file).
     at: usize,
 }
 
 impl<'a> Lines<'a> {
     fn new(text: &'a str) -> Lines<'a> {
-        let lines: Box<dyn Iterator<Item = (usize, &'a str)> + 'a> = Box::new(
-            text.lines()
-                .enumerate()
-                .skip(1)
-                .map(|(i, l)| (i + 1, l.trim()))
-                .filter(|(_, l)| !l.is_empty()),
-        );
+        let lines: Vec<(usize, &str)> = text
+            .lines()
+            .enumerate()
+            .skip(1)
+            .map(|(i, l)| (i + 1, l.trim()))
+            .filter(|(_, l)| !l.is_empty())
+            .collect();
         Lines {
-            lines: lines.peekable(),
+            lines,
+            next: 0,
             at: text.lines().count().max(1),
         }
     }
 
+    /// The next line and its number, without taking it.
+    fn peek(&self) -> Option<(usize, &'a str)> {
+        self.lines.get(self.next).copied()
+    }
+
+    /// Takes the next line and its number.
+    fn take(&mut self) -> Option<(usize, &'a str)> {
+        let line = self.peek()?;
+        self.next += 1;
+        self.at = line.0;
+        Some(line)
+    }
+
     /// The next line, which must start with `key` (`start:`…): what follows the key.
     fn field(&mut self, key: &str) -> Result<&'a str, (usize, String)> {
-        match self.lines.next() {
-            Some((n, line)) => {
-                self.at = n;
-                line.strip_prefix(key)
-                    .map(str::trim)
-                    .ok_or_else(|| (n, format!("lpfg expects '{key}' here, not '{line}'")))
-            }
+        match self.take() {
+            Some((n, line)) => line
+                .strip_prefix(key)
+                .map(str::trim)
+                .ok_or_else(|| (n, format!("lpfg expects '{key}' here, not '{line}'"))),
             None => Err((self.at, format!("the file ends where lpfg expects '{key}'"))),
         }
     }
@@ -200,7 +214,7 @@ fn timeline(text: &str, file: &str, view: &mut View) {
             }
         }
     }
-    if let Some(&(n, _)) = lines.lines.peek() {
+    if let Some((n, _)) = lines.peek() {
         note(
             view,
             file,
@@ -231,12 +245,8 @@ fn item(
     let start = lines.number("start:")?;
     let end = lines.number("end:")?;
     lines.field("name:")?;
-    if lines
-        .lines
-        .peek()
-        .is_some_and(|(_, l)| l.starts_with("color:"))
-    {
-        lines.lines.next();
+    if lines.peek().is_some_and(|(_, l)| l.starts_with("color:")) {
+        lines.take();
     }
     lines.field("startLabel:")?;
     lines.field("endLabel:")?;
@@ -244,21 +254,18 @@ fn item(
     let first = lines.at + 1;
     let mut body = String::new();
     loop {
-        match lines.lines.next() {
-            Some((n, "timelineFunceditFileEnd:")) => {
-                lines.at = n;
-                break;
-            }
-            Some((n, line)) => {
-                lines.at = n;
+        match lines.take() {
+            Some((_, "timelineFunceditFileEnd:")) => break,
+            Some((_, line)) => {
                 body.push_str(line);
                 body.push('\n');
             }
-            None => return Err((
-                lines.at,
-                "the function file started on the line before has no 'timelineFunceditFileEnd:'"
-                    .into(),
-            )),
+            None => {
+                return Err((
+                    first - 1,
+                    "the function file this line starts has no 'timelineFunceditFileEnd:'".into(),
+                ))
+            }
         }
     }
     let fver = body.split_whitespace().take(3).collect::<Vec<_>>() == ["fver", "1", "1"];
@@ -394,7 +401,7 @@ mod tests {
             (
                 TSET[..TSET.len() - 60].to_string(),
                 2,
-                "has no 'timelineFunceditFileEnd:'",
+                "f.tset, line 25: the function file this line starts has no 'timelineFunceditFileEnd:'",
             ),
             (
                 format!("{TSET}start: 0\n"),
