@@ -152,6 +152,14 @@ fn tfunc_and_val_give_lpfgs_lengths_at_the_start_middle_and_end_of_a_timeline() 
 }
 
 #[test]
+fn without_specifications_the_folders_own_sets_are_read() {
+    let mut files = object(TSET, VSET);
+    let with = import::import_object(&files);
+    files.retain(|f| f.name != "specifications");
+    assert_eq!(import::import_object(&files), with);
+}
+
+#[test]
 fn malformed_timeline_and_value_files_are_notes_with_their_lines() {
     let tset = TSET.replace("end: 8", "end: eight");
     let result = import::import_object(&object(
