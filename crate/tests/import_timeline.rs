@@ -22,7 +22,8 @@ fn file(name: &str, text: &str) -> ObjectFile {
 /// SCALE 3.
 const SPECIFICATIONS: &str = "plant.l\nfunctions.tset\nvalues.vset\nfunctions.fset\n*\nmodel:\n\tgenerate:\n\t\tlpfg plant.l functions.tset values.vset functions.fset\n";
 
-/// GROWTH runs from t = 2 to t = 8. Its control points' x are 0, ⅓, ⅔, 1 and their y 1, 1, 1, 3:
+/// GROWTH runs from t = 2 to t = 8, the values BEGIN and FINISH (vlab's timeline tool ties its
+/// ends to them). Its control points' x are 0, ⅓, ⅔, 1 and their y 1, 1, 1, 3:
 /// the clamped cubic B-spline of four points is their Bézier curve, whose x is its parameter u
 /// and whose y is 1 + 2u³. lpfg reads it through 21 samples (x = 0, 0.05, … 1).
 const TSET: &str = "timeEdit 1 2
@@ -31,8 +32,8 @@ start: 2
 end: 8
 name: GROWTH
 color: 91,115,229
-startLabel: 
-endLabel: 
+startLabel: BEGIN
+endLabel: FINISH
 timelineFunceditFileStart:
 fver 1 1
 name: GROWTH
@@ -60,7 +61,7 @@ points: 4
 1.000000 1.000000
 ";
 
-const VSET: &str = "#define SCALE 2\n";
+const VSET: &str = "#define SCALE 2\n#define BEGIN 2\n#define FINISH 8\n";
 
 /// Each A(t) draws 2·GROWTH at t; B draws the same by numbers, then 8 · WIDTH(0.5) through
 /// `func` and `tfunc` (an `.fset` function's times are 0 and 1).
@@ -125,7 +126,7 @@ fn tfunc_and_val_give_lpfgs_lengths_at_the_start_middle_and_end_of_a_timeline() 
     assert!(
         result
             .text
-            .contains("A(t) -> F(SCALE * GROWTH(((t)-2)/6))\n"),
+            .contains("A(t) -> F(SCALE * GROWTH(((t)-BEGIN)/(FINISH-BEGIN)))\n"),
         "{}",
         result.text
     );
@@ -149,6 +150,18 @@ fn tfunc_and_val_give_lpfgs_lengths_at_the_start_middle_and_end_of_a_timeline() 
         // The control points' ⅓ and ⅔ are written with 6 decimals: 1e-5 covers it.
         assert!((got - want).abs() < 1e-5, "segment {k}: {got} ≠ {want}");
     }
+}
+
+#[test]
+fn a_timeline_reads_times_from_its_labels_values_only_while_they_hold_them() {
+    let plain = TSET.replace("BEGIN", "").replace("FINISH", "");
+    let result = import::import_object(&object(&plain, VSET));
+    assert!(result.text.contains("-> F(SCALE * GROWTH(((t)-2)/6))\n"));
+    let moved = VSET.replace("FINISH 8", "FINISH 9");
+    let result = import::import_object(&object(TSET, &moved));
+    assert!(result
+        .text
+        .contains("-> F(SCALE * GROWTH(((t)-BEGIN)/(8-BEGIN)))\n"));
 }
 
 #[test]

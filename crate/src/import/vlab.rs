@@ -55,15 +55,25 @@ pub(super) struct CurveFunction {
 }
 
 /// What an entry of the object's function list is.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub(super) enum FunctionKind {
     /// A function of x from 0 to 1 (`.func`, `.fset`): `func(NAME, x)`.
     Curve,
     /// lpfg's timeline function (`.tset`): `tfunc(NAME, t)` reads it at
     /// `(t − start)/(end − start)`, clamped to 0…1; `func(NAME, x)` at x.
-    Timeline { start: f64, end: f64 },
+    Timeline(Span),
     /// lpfg's value (`.vset`, `#define NAME value`): `val(NAME)`; its lines `#define` it.
-    Value,
+    Value(f64),
+}
+
+/// A timeline function's times, and the labels vlab's timeline tool ties them to: the names of
+/// the `.vset` values it keeps equal to them (empty when none).
+#[derive(Clone, Debug, PartialEq)]
+pub(super) struct Span {
+    pub start: f64,
+    pub end: f64,
+    pub start_label: String,
+    pub end_label: String,
 }
 
 /// The last part of a path.

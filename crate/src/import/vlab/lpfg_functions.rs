@@ -9,7 +9,9 @@
 //! a file (and run no model), the entries before the fault are read and a note gives the file, the
 //! line and what is wrong.
 
-use super::{function, function_set, identifier, CurveFunction, Files, FunctionKind, Reader, View};
+use super::{
+    function, function_set, identifier, CurveFunction, Files, FunctionKind, Reader, Span, View,
+};
 use crate::import::{leading_float, number};
 use crate::vocabulary::DirectiveKind;
 
@@ -248,8 +250,8 @@ fn item(
     if lines.peek().is_some_and(|(_, l)| l.starts_with("color:")) {
         lines.take();
     }
-    lines.field("startLabel:")?;
-    lines.field("endLabel:")?;
+    let start_label = lines.field("startLabel:")?.to_string();
+    let end_label = lines.field("endLabel:")?.to_string();
     lines.field("timelineFunceditFileStart:")?;
     let first = lines.at + 1;
     let mut body = String::new();
@@ -289,7 +291,12 @@ fn item(
         number(end)
     );
     f.lines[0] = f.lines[0].replacen(&from, &to, 1);
-    f.kind = FunctionKind::Timeline { start, end };
+    f.kind = FunctionKind::Timeline(Span {
+        start,
+        end,
+        start_label,
+        end_label,
+    });
     Ok(Some(f))
 }
 
@@ -315,7 +322,7 @@ fn values(text: &str, file: &str, view: &mut View) {
                     name: id,
                     source: name.to_string(),
                     lines: vec![line],
-                    kind: FunctionKind::Value,
+                    kind: FunctionKind::Value(value),
                 }));
             }
             _ => note(
@@ -347,13 +354,16 @@ mod tests {
         let f: Vec<&CurveFunction> = view.functions.iter().flatten().collect();
         assert_eq!(f.len(), 2);
         assert_eq!(f[0].name, "GROWTH");
-        assert_eq!(
-            f[0].kind,
-            FunctionKind::Timeline {
-                start: 2.0,
-                end: 8.0
-            }
-        );
+        let span = |start, end, start_label: &str, end_label: &str| {
+            FunctionKind::Timeline(Span {
+                start,
+                end,
+                start_label: start_label.into(),
+                end_label: end_label.into(),
+            })
+        };
+        assert_eq!(f[0].kind, span(2.0, 8.0, "", ""));
+        assert_eq!(f[1].kind, span(0.0, 1.0, "A", "B"));
         assert!(f[0].lines[0].contains("the timeline function of f.tset, from t = 2 to t = 8,"));
         // lpfg samples 21 times; FLAT's 3 samples are raised to lpfg's least, 10.
         assert!(f[0].lines[1].starts_with("#table GROWTH 0 0 0.05 "));

@@ -6,7 +6,7 @@
 
 use super::super::Importer;
 use crate::import::number;
-use crate::import::vlab::{CurveFunction, FunctionKind};
+use crate::import::vlab::{CurveFunction, FunctionKind, Span};
 
 /// A number as a factor or term of an expression: in parentheses when negative.
 fn operand(v: f64) -> String {
@@ -71,7 +71,7 @@ impl Importer {
             ));
         };
         let f = self.object_function("func", k)?;
-        if f.kind == FunctionKind::Value {
+        if matches!(f.kind, FunctionKind::Value(_)) {
             return Err(format!(
                 "{tool}'s func({k}, …) reads a function, and {k} is a value of the object's .vset file (val({k}) reads it)"
             ));
@@ -91,31 +91,54 @@ impl Importer {
         let f = self.object_function("tfunc", k)?;
         let t = t.trim();
         let name = &f.name;
-        Ok(match f.kind {
-            FunctionKind::Value => {
+        Ok(match &f.kind {
+            FunctionKind::Value(_) => {
                 return Err(format!(
                     "lpfg's tfunc({k}, …) reads a function, and {k} is a value of the object's .vset file (val({k}) reads it)"
                 ))
             }
             FunctionKind::Curve => format!("{name}({t})"),
-            // lpfg divides by 0: t before the start gives −∞ (clamped to 0), after it +∞ (1).
-            FunctionKind::Timeline { start, end } if start == end => {
-                format!("{name}(({t})<{}?0:1)", operand(start))
-            }
-            FunctionKind::Timeline { start, end } => {
-                let from = if start == 0.0 {
-                    format!("({t})")
-                } else {
-                    format!("(({t})-{})", operand(start))
-                };
-                let span = end - start;
-                if span == 1.0 {
-                    format!("{name}({from})")
-                } else {
-                    format!("{name}({from}/{})", operand(span))
-                }
-            }
+            FunctionKind::Timeline(span) => format!("{name}({})", self.timeline_time(span, t)),
         })
+    }
+
+    /// `(t − start)/(end − start)`, the argument lpfg gives a timeline function at time `t`. An
+    /// end whose label names a value of the `.vset` that holds its time is that value's
+    /// `#define`, as vlab's timeline tool keeps them equal (a slider moves both).
+    fn timeline_time(&self, span: &Span, t: &str) -> String {
+        let (start, end) = (span.start, span.end);
+        // lpfg divides by 0: t before the start gives −∞ (clamped to 0), after it +∞ (1).
+        if start == end {
+            return format!("({t})<{}?0:1", operand(start));
+        }
+        let start_define = self.value_define(&span.start_label, start);
+        let end_define = self.value_define(&span.end_label, end);
+        if start_define.is_some() || end_define.is_some() {
+            let start = start_define.unwrap_or_else(|| operand(start));
+            let end = end_define.unwrap_or_else(|| operand(end));
+            return format!("(({t})-{start})/({end}-{start})");
+        }
+        let from = if start == 0.0 {
+            format!("({t})")
+        } else {
+            format!("(({t})-{})", operand(start))
+        };
+        let span = end - start;
+        if span == 1.0 {
+            from
+        } else {
+            format!("{from}/{}", operand(span))
+        }
+    }
+
+    /// The Meristem name of the `.vset` value `label` names, when it holds `time`.
+    fn value_define(&self, label: &str, time: f64) -> Option<String> {
+        let view = self.cpfg.view.as_ref()?;
+        view.functions
+            .iter()
+            .flatten()
+            .find(|f| !label.is_empty() && f.source == label && f.kind == FunctionKind::Value(time))
+            .map(|f| f.name.clone())
     }
 
     /// lpfg's `val(k)`: value k of the `.vset` file, as the `#define` it became.
@@ -125,8 +148,8 @@ impl Importer {
         };
         let f = self.object_function("val", k)?;
         match f.kind {
-            FunctionKind::Value => Ok(f.name.clone()),
-            FunctionKind::Curve | FunctionKind::Timeline { .. } => Err(format!(
+            FunctionKind::Value(_) => Ok(f.name.clone()),
+            FunctionKind::Curve | FunctionKind::Timeline(_) => Err(format!(
                 "lpfg's val({k}) reads a value of the object's .vset file, and {k} is a function (lpfg gives no value for it)"
             )),
         }
