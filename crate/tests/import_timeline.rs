@@ -165,6 +165,27 @@ fn a_timeline_reads_times_from_its_labels_values_only_while_they_hold_them() {
 }
 
 #[test]
+fn function_files_on_lpfgs_command_line_come_after_the_sets() {
+    // WIDTH is 1, GROWTH 2, SCALE, BEGIN and FINISH 3 to 5: LAST.func is 6.
+    let mut files = object(TSET, VSET);
+    files[0] = file(
+        "specifications",
+        &SPECIFICATIONS.replace("vset functions.fset\n", "vset functions.fset LAST.func\n"),
+    );
+    files[1] = file(
+        "plant.l",
+        &PLANT.replace("func(WIDTH, 0.5)", "func(6, 0.5)"),
+    );
+    files.push(file(
+        "LAST.func",
+        &FSET.replace("WIDTH", "LAST")["funcgalleryver 1 1\nitems: 1\n".len()..],
+    ));
+    let result = import::import_object(&files);
+    assert!(result.text.contains("F(8 * LAST(0.5))"), "{}", result.text);
+    assert_eq!(result.notes.len(), 2, "{:?}", messages(&result));
+}
+
+#[test]
 fn without_specifications_the_folders_own_sets_are_read() {
     let mut files = object(TSET, VSET);
     let with = import::import_object(&files);
