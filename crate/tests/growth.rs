@@ -3,9 +3,12 @@
 //! widths by age (`#shape`, `#shape_width`), and which way the sun, gravity and wind bend branches.
 //! Every build is deterministic for its seed.
 
+mod shared;
+
 use glam::DVec3;
 use meristem::pipeline::{build, Build, BuildOptions};
 use meristem::vocabulary::DirectiveKind;
+use shared::lengths;
 
 fn built(source: &str) -> Build {
     let result = build(source, &BuildOptions::default());
@@ -132,15 +135,6 @@ fn extra_rewritings_grow_the_whole_branch_of_the_apex() {
     let inner = &inner[inner.find("@<").expect("group") + 2..inner.find("@>").expect("end")];
     assert_eq!(b.derived_text(), inner);
     assert_eq!(b.derived_text().matches('A').count(), 8);
-}
-
-fn lengths(b: &Build) -> Vec<f64> {
-    b.plant
-        .skeleton
-        .segments
-        .iter()
-        .map(|s| (s.end - s.start).length())
-        .collect()
 }
 
 #[test]

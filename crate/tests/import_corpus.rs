@@ -10,9 +10,12 @@
 //! Native only: it reads the corpus from disk, and proptest is not a wasm32 dependency.
 #![cfg(not(target_arch = "wasm32"))]
 
+mod shared;
+
 use meristem::import::{self, Dialect, Import, ObjectFile};
 use meristem::pipeline::{build, BuildOptions};
-use std::path::{Path, PathBuf};
+use shared::object;
+use std::path::PathBuf;
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/import-corpus")
@@ -1066,20 +1069,6 @@ const FAILURES: &[Failure] = &[
     )),
 
 ];
-
-/// A vlab object folder as the CLI and the studio hand it over: every file with its bytes.
-fn object(dir: &Path) -> Vec<ObjectFile> {
-    let mut files: Vec<ObjectFile> = std::fs::read_dir(dir)
-        .expect("object folder")
-        .flatten()
-        .map(|e| ObjectFile {
-            name: e.file_name().to_string_lossy().into_owned(),
-            bytes: std::fs::read(e.path()).expect("object file"),
-        })
-        .collect();
-    files.sort_by(|a, b| a.name.cmp(&b.name));
-    files
-}
 
 fn import_entry(path: &str) -> Import {
     let full = root().join(path);

@@ -51,8 +51,8 @@ describe('openGrammarBytes', () => {
 });
 
 describe('openObjectBytes', () => {
-  const folder = (name: string) => {
-    const dir = new URL(`../../crate/tests/import-corpus/vlab/${name}/`, import.meta.url);
+  const folder = (name: string, under = 'import-corpus/vlab') => {
+    const dir = new URL(`../../crate/tests/${under}/${name}/`, import.meta.url);
     return readdirSync(dir).map((file) => ({ name: `${name}/${file}`, bytes: new Uint8Array(readFileSync(new URL(file, dir))) }));
   };
 
@@ -64,6 +64,16 @@ describe('openObjectBytes', () => {
     expect(opened.text).toMatch(/^#angle 9$/m);
     expect(opened.text).toMatch(/^#table internode /m);
     expect(opened.notes).toEqual([expect.stringMatching(/^the materials of material.mat become their diffuse colours/)]);
+  });
+
+  it("imports an lpfg object's timeline functions (.tset) and values (.vset) with it", () => {
+    const opened = openObjectBytes(folder('Lychnis', 'import-timeline'));
+    expect(opened.ok).toBe(true);
+    if (!opened.ok) return;
+    expect(opened.text).toMatch(/^#table LEAF_LENGTH 0 0 /m);
+    expect(opened.text).toMatch(/^#define BR_END 15.4362 \/\/ val\(BR_END\) of aging.vset$/m);
+    expect(opened.text).toContain('~l(LEAFSCALE*LEAF_LENGTH(((t)-0.07)/36.8935))');
+    expect(opened.notes.filter((n) => /\.tset|\.vset|lpfg's (tfunc|val)/.test(n))).toEqual([]);
   });
 
   it('opens one grammar file as openGrammarBytes does, and says why a broken archive cannot be opened', () => {

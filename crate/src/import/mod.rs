@@ -297,6 +297,48 @@ fn defuse_comment(text: &str) -> String {
     text.replace("/*", "/ *").replace("*/", "* /")
 }
 
+/// `sscanf("%f")`: the number at the start of `s` (after spaces), if any.
+pub(crate) fn leading_float(s: &str) -> Option<f64> {
+    let s = s.trim_start();
+    let b = s.as_bytes();
+    let mut i = 0;
+    if i < b.len() && (b[i] == b'+' || b[i] == b'-') {
+        i += 1;
+    }
+    let digits_start = i;
+    while i < b.len() && b[i].is_ascii_digit() {
+        i += 1;
+    }
+    if i < b.len() && b[i] == b'.' {
+        i += 1;
+        while i < b.len() && b[i].is_ascii_digit() {
+            i += 1;
+        }
+    }
+    if i == digits_start || (i == digits_start + 1 && b[digits_start] == b'.') {
+        return None;
+    }
+    let mantissa_end = i;
+    if i < b.len() && (b[i] == b'e' || b[i] == b'E') {
+        let mut j = i + 1;
+        if j < b.len() && (b[j] == b'+' || b[j] == b'-') {
+            j += 1;
+        }
+        let exp_digits = j;
+        while j < b.len() && b[j].is_ascii_digit() {
+            j += 1;
+        }
+        if j > exp_digits {
+            i = j;
+        }
+    }
+    s[..i]
+        .parse::<f64>()
+        .ok()
+        .or_else(|| s[..mantissa_end].parse().ok())
+        .filter(|v| v.is_finite())
+}
+
 /// A number as Meristem text: shortest round trip of the value rounded to 12 significant digits
 /// (so `0.8 * 0.9` prints `0.72`), integers without a fraction.
 pub(crate) fn number(value: f64) -> String {

@@ -1,13 +1,16 @@
 //! A Virtual Laboratory object opened whole: the L-system (`plant.l`), its view file (`.v`: the
 //! angle increment, widths, colours, the function files), function files (`.func`, a function set
-//! `.fset`), and its colour map (`.map`) or materials (`.mat`). Which files belong together is read
-//! from the object's `specifications` (the `cpfg …` command line), else guessed from the names.
+//! `.fset`; lpfg's timeline functions `.tset` and values `.vset`, [`lpfg_functions`]), and its
+//! colour map (`.map`) or materials (`.mat`). Which files belong together is read from the
+//! object's `specifications` (the `cpfg …` or `lpfg …` command line), else guessed from the names.
 //! An object without a `.l` but with an L-Py `.lpy` is imported as L-Py.
+
+mod lpfg_functions;
 
 use super::abop::{self, Flavour};
 use super::{number, Dialect, Import};
 use crate::model::{Curve, CurveKind};
-use crate::vocabulary::{function_named, DirectiveKind};
+use crate::vocabulary::{function_named, value_named, DirectiveKind};
 
 /// One file of an object: its name (a path inside the folder or zip; only the last part counts)
 /// and its bytes.
@@ -29,7 +32,9 @@ pub(super) struct View {
     /// `tropism direction: x,y,z` and `initial elasticity: e` (or `tropism: T: x,y,z E: e`).
     pub tropism: Option<[f64; 3]>,
     pub elasticity: Option<f64>,
-    /// The functions `func(k, x)` reads, k from 1: each a name and the lines that define it.
+    /// The functions `func(k, x)` reads, k from 1 (lpfg's `tfunc(k, t)` and `val(k)` too: its
+    /// function sets, timelines and values share one list): each a name and the lines that
+    /// define it; `None` for one that could not be read (it keeps its number).
     pub functions: Vec<Option<CurveFunction>>,
     /// `#color` lines from the colour map or materials.
     pub palette: Vec<String>,
@@ -39,13 +44,36 @@ pub(super) struct View {
     pub sources: Vec<String>,
 }
 
-/// A cpfg function as a Meristem `#curve` or `#table`.
+/// A cpfg function as a Meristem `#curve` or `#table` (an lpfg value as a `#define`).
 #[derive(Clone, Debug)]
 pub(super) struct CurveFunction {
     /// The Meristem name, and the name the function file gives (what `func(NAME, x)` says).
     pub name: String,
     pub source: String,
     pub lines: Vec<String>,
+    pub kind: FunctionKind,
+}
+
+/// What an entry of the object's function list is.
+#[derive(Clone, Debug, PartialEq)]
+pub(super) enum FunctionKind {
+    /// A function of x from 0 to 1 (`.func`, `.fset`): `func(NAME, x)`.
+    Curve,
+    /// lpfg's timeline function (`.tset`): `tfunc(NAME, t)` reads it at
+    /// `(t − start)/(end − start)`, clamped to 0…1; `func(NAME, x)` at x.
+    Timeline(Span),
+    /// lpfg's value (`.vset`, `#define NAME value`): `val(NAME)`; its lines `#define` it.
+    Value(f64),
+}
+
+/// A timeline function's times, and the labels vlab's timeline tool ties them to: the names of
+/// the `.vset` values it keeps equal to them (empty when none).
+#[derive(Clone, Debug, PartialEq)]
+pub(super) struct Span {
+    pub start: f64,
+    pub end: f64,
+    pub start_label: String,
+    pub end_label: String,
 }
 
 /// The last part of a path.
@@ -99,8 +127,9 @@ struct Command {
     view: Option<String>,
     colormap: Option<String>,
     materials: Option<String>,
-    /// Function sets (`.fset`) lpfg is started with.
-    function_sets: Vec<String>,
+    /// The function set (`.fset`), timeline functions (`.tset`), values (`.vset`) and function
+    /// files (`.func`) lpfg is started with (of each set the last one named, as lpfg keeps).
+    lpfg: lpfg_functions::LpfgFiles,
 }
 
 fn command(specifications: &str) -> Option<Command> {
@@ -131,7 +160,7 @@ fn command(specifications: &str) -> Option<Command> {
             // lpfg names its files without options.
             w if lpfg && w.ends_with(".mat") => c.materials = Some(w.to_string()),
             w if lpfg && w.ends_with(".map") => c.colormap = Some(w.to_string()),
-            w if lpfg && w.ends_with(".fset") => c.function_sets.push(w.to_string()),
+            w if lpfg => c.lpfg.name(w),
             _ => {}
         }
         i += 1;
@@ -199,7 +228,10 @@ pub fn import_object(files: &[ObjectFile]) -> Import {
     let spec = all
         .text("specifications")
         .and_then(|s| command(&s))
-        .unwrap_or_default();
+        .unwrap_or_else(|| Command {
+            lpfg: lpfg_functions::LpfgFiles::guessed(&all),
+            ..Command::default()
+        });
     let ls = all.with(".l");
     let lsystem = spec
         .lsystem
@@ -234,22 +266,13 @@ pub fn import_object(files: &[ObjectFile]) -> Import {
             "the object has no view file (.v): the angle increment, widths and colours are not known, so Meristem's defaults are used (90°, width 1, its palette)".into(),
         ),
     }
-    // lpfg's function sets, unless the view file already read them (`function set:`).
+    // lpfg's function sets, timelines and values, unless the view file already read them
+    // (`function set:`).
     let view_text = view_name
         .as_ref()
         .and_then(|v| all.text(v))
         .unwrap_or_default();
-    for file in &spec.function_sets {
-        if view_text.contains(file.as_str()) {
-            continue;
-        }
-        match all.text(file) {
-            Some(t) => function_set(&t, file, &mut view),
-            None => view.notes.push(format!(
-                "the function set {file} was not opened with the object: its functions are not translated"
-            )),
-        }
-    }
+    lpfg_functions::read(&all, &spec.lpfg, &view_text, &mut view);
     colours(&all, &spec, &stem, &mut view);
     let include = |name: &str| all.text(name);
     abop::import_with(&text, Flavour::Cpfg, Some(&view), &include)
@@ -322,7 +345,7 @@ fn read_view(text: &str, all: &Files, view: &mut View) {
                 let samples = words.next().and_then(|w| w.parse::<usize>().ok());
                 let function = all
                     .text(&file)
-                    .and_then(|t| function(&t, samples, &file, view));
+                    .and_then(|t| function(&t, samples, &file, Reader::Cpfg, view));
                 if function.is_none() {
                     view.notes.push(format!(
                         "the function file {file} could not be read: func({}, …) is not translated",
@@ -339,7 +362,7 @@ fn read_view(text: &str, all: &Files, view: &mut View) {
             "function set" => {
                 let file = value.trim().to_string();
                 match all.text(&file) {
-                    Some(t) => function_set(&t, &file, view),
+                    Some(t) => function_set(&t, &file, Reader::Cpfg, view),
                     None => view.notes.push(format!(
                         "the function set {file} was not opened with the object: its functions are not translated"
                     )),
@@ -360,8 +383,26 @@ fn vector(text: &str) -> Option<[f64; 3]> {
     v.try_into().ok()
 }
 
+/// Whose reading of a function file to follow: cpfg samples a function when the view file (or
+/// a `fver 1 1` file) asks for more than 2 samples, else reads the spline itself; lpfg always
+/// samples, 10 to 1,000 times (`Function::_Load0101`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Reader {
+    Cpfg,
+    Lpfg,
+}
+
+impl Reader {
+    fn tool(self) -> &'static str {
+        match self {
+            Reader::Cpfg => "cpfg",
+            Reader::Lpfg => "lpfg",
+        }
+    }
+}
+
 /// A `.fset`: `funcgalleryver 1 1`, `items: n`, then n functions of the `.func` format.
-fn function_set(text: &str, file: &str, view: &mut View) {
+fn function_set(text: &str, file: &str, reader: Reader, view: &mut View) {
     let starts: Vec<usize> = text
         .match_indices("fver")
         .map(|(i, _)| i)
@@ -369,7 +410,7 @@ fn function_set(text: &str, file: &str, view: &mut View) {
         .collect();
     for (k, &start) in starts.iter().enumerate() {
         let end = starts.get(k + 1).copied().unwrap_or(text.len());
-        let f = function(&text[start..end], None, file, view);
+        let f = function(&text[start..end], None, file, reader, view);
         view.functions.push(f);
     }
 }
@@ -377,8 +418,14 @@ fn function_set(text: &str, file: &str, view: &mut View) {
 /// One function file (`fver 1 1` with `name:`, `samples:`, `points:`, points `x y [multiplicity]`;
 /// or the old `range: … points: n`). cpfg reads a function through `samples` values of its spline
 /// joined by straight lines when samples > 2 (a `#table` of those values), else the spline itself
-/// (a `#curve`).
-fn function(text: &str, samples: Option<usize>, file: &str, view: &View) -> Option<CurveFunction> {
+/// (a `#curve`); lpfg always through 10 to 1,000 samples. The first of its lines is a comment.
+fn function(
+    text: &str,
+    samples: Option<usize>,
+    file: &str,
+    reader: Reader,
+    view: &View,
+) -> Option<CurveFunction> {
     let mut name = base(file).trim_end_matches(".func").to_string();
     let mut own_samples = None;
     let mut numbers = Vec::new();
@@ -411,6 +458,10 @@ fn function(text: &str, samples: Option<usize>, file: &str, view: &View) -> Opti
         samples
     }
     .unwrap_or(0);
+    let samples = match reader {
+        Reader::Cpfg => samples,
+        Reader::Lpfg => samples.clamp(10, 1000),
+    };
     let curve = Curve::new(CurveKind::Spline, &numbers).ok()?;
     let source = name.clone();
     let name = identifier(&name, view);
@@ -425,8 +476,9 @@ fn function(text: &str, samples: Option<usize>, file: &str, view: &View) -> Opti
             })
             .collect();
         lines.push(format!(
-            "// {name}: the function of {file}, control points {}; cpfg reads it through {samples} samples, as here",
-            points.join(" ")
+            "// {name}: the function of {file}, control points {}; {} reads it through {samples} samples, as here",
+            points.join(" "),
+            reader.tool()
         ));
         lines.push(format!(
             "{} {name} {}",
@@ -445,6 +497,7 @@ fn function(text: &str, samples: Option<usize>, file: &str, view: &View) -> Opti
         name,
         source,
         lines,
+        kind: FunctionKind::Curve,
     })
 }
 
@@ -467,7 +520,7 @@ fn short(v: f64) -> String {
     }
 }
 
-/// A Meristem name for a function: letters, digits and `_`, not a built-in function's nor one
+/// A Meristem name for a function (or an lpfg value): letters, digits and `_`, not a built-in function's nor one
 /// already taken.
 fn identifier(name: &str, view: &View) -> String {
     let mut id: String = name
@@ -479,7 +532,8 @@ fn identifier(name: &str, view: &View) -> String {
     }
     let taken = |id: &str| {
         function_named(id).is_some()
-            || id == "func"
+            || value_named(id).is_some_and(|v| !v.definable)
+            || ["func", "tfunc", "val"].contains(&id)
             || view.functions.iter().flatten().any(|f| f.name == id)
     };
     while taken(&id) {

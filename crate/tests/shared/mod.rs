@@ -1,10 +1,13 @@
-//! What several test files read: the gallery's examples (`public/examples/*.lsys`), and a grammar
-//! resolved without a diagnostic. (Each test file compiles this module on its own and uses a
+//! What several test files read: the gallery's examples (`public/examples/*.lsys`), a grammar
+//! resolved without a diagnostic, a vlab object's folder as its files, and a plant's segments'
+//! lengths. (Each test file compiles this module on its own and uses a
 //! part of it: hence `allow(dead_code)`.)
 
+use meristem::import::ObjectFile;
 use meristem::model::{resolve, Model};
+use meristem::pipeline::Build;
 use meristem::syntax::parse;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// `src` parsed and resolved, asserting that neither says anything.
 #[allow(dead_code)]
@@ -33,5 +36,32 @@ pub fn examples() -> Vec<(PathBuf, String)> {
             let text = std::fs::read_to_string(&p).expect("example is UTF-8");
             (p, text)
         })
+        .collect()
+}
+
+/// A vlab object folder as the CLI and the studio hand it over: every file with its bytes, in
+/// name order.
+#[allow(dead_code)]
+pub fn object(dir: &Path) -> Vec<ObjectFile> {
+    let mut files: Vec<ObjectFile> = std::fs::read_dir(dir)
+        .expect("object folder")
+        .flatten()
+        .map(|e| ObjectFile {
+            name: e.file_name().to_string_lossy().into_owned(),
+            bytes: std::fs::read(e.path()).expect("object file"),
+        })
+        .collect();
+    files.sort_by(|a, b| a.name.cmp(&b.name));
+    files
+}
+
+/// The length of each segment of a build's plant, in drawing order.
+#[allow(dead_code)]
+pub fn lengths(b: &Build) -> Vec<f64> {
+    b.plant
+        .skeleton
+        .segments
+        .iter()
+        .map(|s| (s.end - s.start).length())
         .collect()
 }

@@ -248,11 +248,8 @@ impl Importer {
             }
             (Flavour::Lpy, "pow") => format!("(({})^({}))", a(0), a(1)),
             (Flavour::Cpfg, "func") => return self.func(args),
-            (Flavour::Cpfg, "tfunc") => {
-                return Err(
-                    "cpfg's tfunc(…) (a function of time from the animation's function file) is not translated".into(),
-                )
-            }
+            (Flavour::Cpfg, "tfunc") => return self.tfunc(args),
+            (Flavour::Cpfg, "val") => return self.val(args),
             (Flavour::Cpfg, "ran") => format!("uniform(0,{})", a(0)),
             (Flavour::Cpfg, "nran") => format!("normal({all})"),
             (_, "fabs") => format!("abs({all})"),

@@ -4,7 +4,7 @@
 use super::{
     Format, LsFile, Rule, Tok, DEFAULT_ANGLE, DEFAULT_RECURSION, DEFAULT_THICKNESS, VALUE_COMMANDS,
 };
-use crate::import::{number, Output};
+use crate::import::{leading_float, number, Output};
 
 /// Whether the file uses the keyword format: its first content line starts with a keyword.
 pub(super) fn format_of(text: &str) -> Format {
@@ -285,48 +285,6 @@ pub(super) fn add_rule(file: &mut LsFile, code: &str, n: usize, comment: &str, o
         line: n,
         comment: comment.to_string(),
     });
-}
-
-/// `sscanf("%f")`: the number at the start of `s` (after spaces), if any.
-pub(super) fn leading_float(s: &str) -> Option<f64> {
-    let s = s.trim_start();
-    let b = s.as_bytes();
-    let mut i = 0;
-    if i < b.len() && (b[i] == b'+' || b[i] == b'-') {
-        i += 1;
-    }
-    let digits_start = i;
-    while i < b.len() && b[i].is_ascii_digit() {
-        i += 1;
-    }
-    if i < b.len() && b[i] == b'.' {
-        i += 1;
-        while i < b.len() && b[i].is_ascii_digit() {
-            i += 1;
-        }
-    }
-    if i == digits_start || (i == digits_start + 1 && b[digits_start] == b'.') {
-        return None;
-    }
-    let mantissa_end = i;
-    if i < b.len() && (b[i] == b'e' || b[i] == b'E') {
-        let mut j = i + 1;
-        if j < b.len() && (b[j] == b'+' || b[j] == b'-') {
-            j += 1;
-        }
-        let exp_digits = j;
-        while j < b.len() && b[j].is_ascii_digit() {
-            j += 1;
-        }
-        if j > exp_digits {
-            i = j;
-        }
-    }
-    s[..i]
-        .parse::<f64>()
-        .ok()
-        .or_else(|| s[..mantissa_end].parse().ok())
-        .filter(|v| v.is_finite())
 }
 
 /// Splits an Lparser string into symbols: a command of [`VALUE_COMMANDS`] followed by `(` takes

@@ -1,8 +1,9 @@
 //! Lparser's formats read, its values threaded through parameters, its laws of net factors.
 
-use super::read::{leading_float, tokenize};
+use super::read::tokenize;
 use super::values::{classify, net_expr};
 use super::*;
+use crate::import::leading_float;
 use crate::import::test_support::{assert_odd_inputs_resolve, assert_resolves};
 
 fn run(text: &str) -> Import {

@@ -1,10 +1,11 @@
 //! What only cpfg writes: the C preprocessor ([`cpp`]), its lines joined ([`joins`]), statement
 //! blocks ([`blocks`]), global variables and `Start:` blocks ([`globals`]), the vlab object's
-//! view ([`view`]), predecessors of several modules ([`predecessors`]), `#define` lines and its
+//! view ([`view`]) and functions ([`functions`]: `func`, lpfg's `tfunc` and `val`), predecessors of several modules ([`predecessors`]), `#define` lines and its
 //! `@`/`~`/`?` names.
 
 pub(super) mod blocks;
 pub(super) mod cpp;
+mod functions;
 pub(super) mod globals;
 pub(super) mod joins;
 mod predecessors;
@@ -21,9 +22,11 @@ pub(in crate::import::abop) fn cpp_functions() -> Vec<String> {
         .iter()
         .map(|f| f.name.to_string())
         .chain(
-            ["func", "tfunc", "ran", "nran", "trunc", "fabs", "pow"]
-                .iter()
-                .map(|s| s.to_string()),
+            [
+                "func", "tfunc", "val", "ran", "nran", "trunc", "fabs", "pow",
+            ]
+            .iter()
+            .map(|s| s.to_string()),
         )
         .collect()
 }

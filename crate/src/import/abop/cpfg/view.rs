@@ -1,6 +1,6 @@
 //! What a cpfg L-system takes from the rest of its vlab object: the view file's angle increment,
-//! widths and colours, its functions (`func(k, x)`), its colour map; and the notes a `.l` opened
-//! alone needs when it relies on them.
+//! widths and colours, its functions (read by [`super::functions`]), its colour map; and the
+//! notes a `.l` opened alone needs when it relies on them.
 
 use super::super::{Flavour, Importer};
 use crate::import::number;
@@ -120,39 +120,6 @@ impl Importer {
                 Some(String::new())
             }
             _ => None,
-        }
-    }
-
-    /// cpfg's `func(k, x)`: function k of the view file, as the `#curve`/`#table` it became.
-    pub(in crate::import::abop) fn func(&self, args: &[String]) -> Result<String, String> {
-        let [k, x] = args else {
-            return Err("cpfg's func(…) takes a function's number and a value".into());
-        };
-        let Some(view) = &self.cpfg.view else {
-            return Err(format!(
-                "cpfg's func({k}, …) reads function {k} of the object's view file (.v), which was not opened with this file (open the object's folder or .zip)"
-            ));
-        };
-        // With a function set (`.fset`), cpfg names each function: `func(BR_ANGLE, x)`.
-        let named = view
-            .functions
-            .iter()
-            .flatten()
-            .find(|f| f.source == k.trim() || f.name == k.trim());
-        if let Some(f) = named {
-            return Ok(format!("{}({x})", f.name));
-        }
-        let index = k
-            .trim()
-            .parse::<f64>()
-            .ok()
-            .filter(|v| v.fract() == 0.0 && *v >= 1.0)
-            .ok_or_else(|| format!("cpfg's func({k}, …) chooses its function by an expression; Meristem names each function, so it is not translated"))?;
-        match view.functions.get(index as usize - 1) {
-            Some(Some(f)) => Ok(format!("{}({x})", f.name)),
-            _ => Err(format!(
-                "cpfg's func({k}, …): the view file lists no function {k} that could be read"
-            )),
         }
     }
 }

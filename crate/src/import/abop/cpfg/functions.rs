@@ -1,0 +1,157 @@
+//! The vlab object's functions where an expression reads them: cpfg's and lpfg's `func(k, x)`,
+//! lpfg's `tfunc(k, t)` (a timeline function, read at `(t − start)/(end − start)`) and `val(k)`
+//! (a value of the timeline), each naming its entry by the name its file gives or by its number
+//! from 1 (lpfg's `Interface::Func`, `TFunc` and `VFunc`), in Meristem's terms: the call of the
+//! `#table` or `#curve` the function became, or the `#define` the value became.
+
+use super::super::Importer;
+use crate::import::number;
+use crate::import::vlab::{CurveFunction, FunctionKind, Span};
+
+/// A number as a factor or term of an expression: in parentheses when negative.
+fn operand(v: f64) -> String {
+    if v < 0.0 {
+        format!("({})", number(v))
+    } else {
+        number(v)
+    }
+}
+
+impl Importer {
+    /// The tool whose call is being read: lpfg for an L+C file, else cpfg.
+    fn function_tool(&self) -> &'static str {
+        if self.lpfg.active {
+            "lpfg"
+        } else {
+            "cpfg"
+        }
+    }
+
+    /// The entry of the object's function list that `call(k, …)` names: by the name its file
+    /// gives it, else by its number from 1.
+    fn object_function(&self, call: &str, k: &str) -> Result<&CurveFunction, String> {
+        let tool = self.function_tool();
+        let k = k.trim();
+        let Some(view) = &self.cpfg.view else {
+            return Err(match call {
+                "func" => format!("{tool}'s func({k}, …) reads function {k} of the object's view file (.v), which was not opened with this file (open the object's folder or .zip)"),
+                "tfunc" => format!("lpfg's tfunc({k}, …) reads the timeline function {k} of the object's .tset file, which was not opened with this file (open the object's folder or .zip)"),
+                _ => format!("lpfg's val({k}) reads the value {k} of the object's .vset file, which was not opened with this file (open the object's folder or .zip)"),
+            });
+        };
+        // With function sets (`.fset`, `.tset`, `.vset`) each entry has a name: `func(BR_ANGLE, x)`.
+        let named = view
+            .functions
+            .iter()
+            .flatten()
+            .find(|f| f.source == k || f.name == k);
+        if let Some(f) = named {
+            return Ok(f);
+        }
+        let index = k
+            .parse::<f64>()
+            .ok()
+            .filter(|v| v.fract() == 0.0 && *v >= 1.0)
+            .ok_or_else(|| format!("{tool}'s {call}({k}, …) chooses its function by an expression or a name the object's files do not give; Meristem names each function, so it is not translated"))?;
+        match view.functions.get(index as usize - 1) {
+            Some(Some(f)) => Ok(f),
+            _ => Err(format!(
+                "{tool}'s {call}({k}, …): the object's files list no function {k} that could be read"
+            )),
+        }
+    }
+
+    /// cpfg's `func(k, x)`: function k of the view file or function sets, as the
+    /// `#curve`/`#table` it became (a timeline function is read at x, as lpfg's `func` does).
+    pub(in crate::import::abop) fn func(&self, args: &[String]) -> Result<String, String> {
+        let tool = self.function_tool();
+        let [k, x] = args else {
+            return Err(format!(
+                "{tool}'s func(…) takes a function's number and a value"
+            ));
+        };
+        let f = self.object_function("func", k)?;
+        if matches!(f.kind, FunctionKind::Value(_)) {
+            return Err(format!(
+                "{tool}'s func({k}, …) reads a function, and {k} is a value of the object's .vset file (val({k}) reads it)"
+            ));
+        }
+        Ok(format!("{}({x})", f.name))
+    }
+
+    /// lpfg's `tfunc(k, t)`: timeline function k at `(t − start)/(end − start)`; the function
+    /// (a `#table` of lpfg's samples) is level beyond 0 and 1, as lpfg clamps its argument. A
+    /// function of a function set has start 0 and end 1.
+    pub(in crate::import::abop) fn tfunc(&self, args: &[String]) -> Result<String, String> {
+        let [k, t] = args else {
+            return Err(
+                "lpfg's tfunc(…) takes a timeline function's name or number and a time".into(),
+            );
+        };
+        let f = self.object_function("tfunc", k)?;
+        let t = t.trim();
+        let name = &f.name;
+        Ok(match &f.kind {
+            FunctionKind::Value(_) => {
+                return Err(format!(
+                    "lpfg's tfunc({k}, …) reads a function, and {k} is a value of the object's .vset file (val({k}) reads it)"
+                ))
+            }
+            FunctionKind::Curve => format!("{name}({t})"),
+            FunctionKind::Timeline(span) => format!("{name}({})", self.timeline_time(span, t)),
+        })
+    }
+
+    /// `(t − start)/(end − start)`, the argument lpfg gives a timeline function at time `t`. An
+    /// end whose label names a value of the `.vset` that holds its time is that value's
+    /// `#define`, as vlab's timeline tool keeps them equal (a slider moves both).
+    fn timeline_time(&self, span: &Span, t: &str) -> String {
+        let (start, end) = (span.start, span.end);
+        // lpfg divides by 0: t before the start gives −∞ (clamped to 0), after it +∞ (1).
+        if start == end {
+            return format!("({t})<{}?0:1", operand(start));
+        }
+        let start_define = self.value_define(&span.start_label, start);
+        let end_define = self.value_define(&span.end_label, end);
+        if start_define.is_some() || end_define.is_some() {
+            let start = start_define.unwrap_or_else(|| operand(start));
+            let end = end_define.unwrap_or_else(|| operand(end));
+            return format!("(({t})-{start})/({end}-{start})");
+        }
+        let from = if start == 0.0 {
+            format!("({t})")
+        } else {
+            format!("(({t})-{})", operand(start))
+        };
+        let span = end - start;
+        if span == 1.0 {
+            from
+        } else {
+            format!("{from}/{}", operand(span))
+        }
+    }
+
+    /// The Meristem name of the `.vset` value `label` names, when it holds `time`.
+    fn value_define(&self, label: &str, time: f64) -> Option<String> {
+        let view = self.cpfg.view.as_ref()?;
+        view.functions
+            .iter()
+            .flatten()
+            .find(|f| !label.is_empty() && f.source == label && f.kind == FunctionKind::Value(time))
+            .map(|f| f.name.clone())
+    }
+
+    /// lpfg's `val(k)`: value k of the `.vset` file, as the `#define` it became.
+    pub(in crate::import::abop) fn val(&self, args: &[String]) -> Result<String, String> {
+        let [k] = args else {
+            return Err("lpfg's val(…) takes a value's name or number".into());
+        };
+        let f = self.object_function("val", k)?;
+        match f.kind {
+            FunctionKind::Value(_) => Ok(f.name.clone()),
+            FunctionKind::Curve | FunctionKind::Timeline(_) => Err(format!(
+                "lpfg's val({k}) reads a value of the object's .vset file, and {k} is a function (lpfg gives no value for it)"
+            )),
+        }
+    }
+}
