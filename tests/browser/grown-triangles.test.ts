@@ -4,15 +4,16 @@
 // the frame is read, then every triangle is drawn at the same t and the frame read again.
 import { chromium, type Browser, type Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { canvasPicture, generation, nextBuild, openExample, openStudio, twoFrames } from './studio-page';
+import { canvasPicture, generation, nextBuild, openExample, openStudio, twoFrames, type StudioPage } from './studio-page';
 
 let browser: Browser;
+let studio: StudioPage;
 let page: Page;
-let problems: string[];
 
 beforeAll(async () => {
   browser = await chromium.launch({ executablePath: '/usr/bin/chromium' });
-  ({ page, problems } = await openStudio(browser));
+  studio = await openStudio(browser);
+  page = studio.page;
   expect(await openExample(page, 'abop-1.24d.lsys')).toBe('ok');
   let before = await generation(page);
   await page.getByTestId('iterations').fill('5');
@@ -77,6 +78,6 @@ describe('the triangles drawn while the plant grows', () => {
       for (let i = 0; i < cut.data.length; i++) if (cut.data[i] !== whole.data[i]) differing += 1;
       expect(differing, `at t = ${t} the pictures are the same`).toBe(0);
     }
-    expect(problems).toEqual([]);
+    expect(studio.problems).toEqual([]);
   });
 });
