@@ -12,6 +12,8 @@ import type { GrowthUniform } from './growth-arrays';
 import type { ShownPlant } from './shown-plant';
 import { GROWN } from './scene-setup';
 
+export { drawGrown } from './grown-triangles';
+
 /** The name of the time uniform in the shaders. */
 const UNIFORM = 'meristemGrowthTime';
 

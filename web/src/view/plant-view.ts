@@ -338,6 +338,7 @@ export class PlantView {
   private showGrowth(t: number | null): void {
     this.growthAt = t;
     this.materials.growthTime.value = t ?? WHOLE;
+    this.growthCode?.drawGrown(this.shown.drawn, this.shown.pickable.geometry, this.renderer.getContext() as WebGL2RenderingContext, t);
   }
 
   /**

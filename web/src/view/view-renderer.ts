@@ -67,13 +67,15 @@ export interface FrameSteps {
 
 /**
  * Frames drawn on demand ({@link request}): one at the next animation frame, however often asked
- * for, and only once the GPU has passed the fence after the frame before. Listeners hear of each
- * frame drawn.
+ * for, and only once the GPU has passed the fence after the frame before the last (one frame at
+ * most is still being drawn). Listeners hear of each frame drawn.
  */
 export class FrameLoop {
   private queued = false;
-  /** The fence after the last frame drawn, until the GPU has passed it ({@link renderWhenDrawn}). */
+  /** The fence after the last frame drawn, until the GPU has passed it ({@link gpuIdle}). */
   private drawn: WebGLSync | null = null;
+  /** The fence after the frame before, until the GPU has passed it ({@link renderWhenDrawn}). */
+  private before: WebGLSync | null = null;
   private readonly listeners = new Set<() => void>();
 
   constructor(
@@ -89,14 +91,19 @@ export class FrameLoop {
   }
 
   /**
-   * Renders at an animation frame once the GPU has finished the frame before (a fence after each):
-   * a frame of a million-vertex plant can keep a software GPU busy for up to a second, and a new
-   * plant's upload made meanwhile held the page's thread until then (long tasks of 0.3 to 3 s while
-   * typing into that tree, `tests/browser/responsiveness.test.ts`). A GPU is done long before the
-   * next frame, and nothing waits.
+   * Renders at an animation frame once the GPU has finished the frame before the last (a fence
+   * after each): a frame of a million-vertex plant can keep a software GPU busy for up to a second,
+   * and a new plant's upload made meanwhile held the page's thread until then (long tasks of 0.3 to
+   * 3 s while typing into that tree, `tests/browser/responsiveness.test.ts`). One frame may still
+   * be on its way: with GPU compositing on SwiftShader the fence of the last frame is seen passed
+   * only after the compositor's frame that follows it, and waiting for it drew one animation
+   * frame in two or three (the growth of 1.24d at n = 7 played at 4-9 frames a second, 6-13 with
+   * a frame in flight, on a machine at load 12-16). Where the page's frame reads the canvas back
+   * (software compositing), the last frame is done by the next animation frame, and nothing
+   * changes. A GPU is done long before the next frame, and nothing waits.
    */
   private renderWhenDrawn(): void {
-    if (!this.gpuIdle()) {
+    if (!this.passed(this.before)) {
       requestAnimationFrame(() => this.renderWhenDrawn());
       return;
     }
@@ -104,24 +111,33 @@ export class FrameLoop {
     this.steps.prepare();
     this.queued = false;
     this.steps.render();
-    if (gl instanceof WebGL2RenderingContext) this.drawn = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
+    if (gl instanceof WebGL2RenderingContext) {
+      if (this.before) gl.deleteSync(this.before);
+      this.before = this.drawn;
+      this.drawn = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
+    }
     this.steps.after();
     for (const listener of this.listeners) listener();
   }
 
-  /** The GPU has finished the last frame drawn (its fence has passed). */
-  gpuIdle(): boolean {
+  /** Whether there is no fence `sync` or the GPU has passed it. */
+  private passed(sync: WebGLSync | null): boolean {
     const gl = this.renderer.getContext();
-    if (!this.drawn || !(gl instanceof WebGL2RenderingContext)) return true;
-    if (gl.clientWaitSync(this.drawn, 0, 0) === gl.TIMEOUT_EXPIRED) return false;
-    gl.deleteSync(this.drawn);
-    this.drawn = null;
+    return !sync || !(gl instanceof WebGL2RenderingContext) || gl.clientWaitSync(sync, 0, 0) !== gl.TIMEOUT_EXPIRED;
+  }
+
+  /** The GPU has finished the last frame drawn (its fence, and the one before, have passed). */
+  gpuIdle(): boolean {
+    if (!this.passed(this.drawn)) return false;
+    const gl = this.renderer.getContext() as WebGL2RenderingContext;
+    for (const sync of [this.drawn, this.before]) if (sync) gl.deleteSync(sync);
+    this.drawn = this.before = null;
     return true;
   }
 
-  /** The context was lost, and the fence with it. */
+  /** The context was lost, and the fences with it. */
   forgetFence(): void {
-    this.drawn = null;
+    this.drawn = this.before = null;
   }
 
   /** Calls `listener` after every frame drawn; returns the function that stops it. */
