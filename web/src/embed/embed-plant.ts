@@ -6,7 +6,7 @@
 import type { BuildOptions } from '../core';
 import { cleanGrowth, encodeState, type SharedGrowth } from '../share';
 import { LazySliderPanel, Playback } from '../plant-controls';
-import { Timeline } from '../plant-controls/timeline';
+import { GrowthShow, Timeline } from '../plant-controls/timeline';
 import type { BuildOutcome } from '../build';
 import { PlantView } from '../view';
 import type { SharedBuilds } from './shared-builds';
@@ -63,10 +63,18 @@ export class EmbedPlant {
   private readonly open: HTMLAnchorElement;
   private readonly count: HTMLElement;
   private readonly playback: Playback;
-  /** The growth played in time (the view's growth time: no build a frame). */
+  /** The growth played in time (the view's growth time: no build a frame; a timed grammar's build at t). */
   private readonly timeline: Timeline;
-  /** Builds carry growth arrays: asked by `growth`, or by the first Play. */
+  /** The plant at t, as the studio's timeline shows it: a timed grammar derived at t, any other grown on the GPU. */
+  private readonly growth: GrowthShow;
+  /** Builds carry growth arrays: asked by `growth`, or by the first Play (not for a timed grammar: it is derived at t). */
   private growthWanted: boolean;
+  /** The plant on screen is of a timed grammar (ABOP 6.1). */
+  private timed = false;
+  /** The growth time a timed grammar's builds are derived at, or null for its iterations. */
+  private timedAt: number | null = null;
+  /** Builds asked for and not yet answered. */
+  private underWay = 0;
   private readonly sliders: LazySliderPanel | undefined;
   private source: string;
   private iterations: number | undefined;
@@ -99,8 +107,20 @@ export class EmbedPlant {
       },
     });
     this.growthWanted = settings.growth !== undefined;
+    this.growth = new GrowthShow(
+      { growthSpan: () => this.view.growthSpan(), setGrowthTime: (t) => this.view.setGrowthTime(t) },
+      {
+        timedSpan: () => (this.timed ? (this.iterations ?? this.grammarIterations) : null),
+        deriveAt: (t) => {
+          if (t === this.timedAt) return;
+          this.timedAt = t;
+          this.rebuild();
+        },
+        busy: () => this.underWay > 0,
+      },
+    );
     this.timeline = new Timeline(
-      { span: () => this.view.growthSpan(), show: (t) => this.showGrowth(t) },
+      { span: () => this.growth.span(), show: (t) => this.showGrowth(t) },
       { speed: settings.growth?.speed, loop: settings.growth?.loop },
     );
     if (settings.controls.has('iterations')) bar.append(...this.iterationControls());
@@ -140,10 +160,9 @@ export class EmbedPlant {
     if (growth.playing && !still) this.timeline.play();
   }
 
-  /** Shows growth time `t` (the whole plant at its end). */
+  /** Shows growth time `t` (the whole plant at its end; a timed grammar derived at t). */
   private showGrowth(t: number): void {
-    const span = this.view.growthSpan();
-    this.view.setGrowthTime(span === null || t >= span ? null : t);
+    this.growth.show(t);
     this.root.dataset.t = String(t);
   }
 
@@ -181,6 +200,7 @@ export class EmbedPlant {
     this.iterations = iterations;
     this.playback.pause();
     this.timeline.pause();
+    this.timedAt = null; // derived at its own iterations until the timeline shows a time again
     this.sliders?.reset();
     this.sliders?.update(source);
     this.view.frameNextPlant();
@@ -198,15 +218,23 @@ export class EmbedPlant {
   }
 
   private options(): BuildOptions {
-    return { iterations: this.iterations, seed: this.settings.seed, ...(this.growthWanted ? { growth: true } : {}) };
+    return {
+      iterations: this.iterations,
+      seed: this.settings.seed,
+      ...(this.growthWanted && !this.timed ? { growth: true } : {}),
+      ...(this.timedAt === null ? {} : { time: this.timedAt }),
+    };
   }
 
   private rebuild(): void {
     const ticket = ++this.ticket;
     const options = this.options();
+    this.underWay++;
     void this.settings.builds.build(this, this.source, options).then((outcome) => {
+      this.underWay--;
       if (ticket === this.ticket) void this.show(outcome, options);
       else if (outcome.kind === 'built') outcome.result.inspector.free();
+      this.growth.delivered(); // a time wanted meanwhile is derived now
     });
   }
 
@@ -220,6 +248,7 @@ export class EmbedPlant {
     inspector.free();
     this.grammarIterations = build.grammarIterations;
     if (build.ok) {
+      this.timed = build.timed;
       this.view.showPlant(build.mesh, build.flat, outcome.result.gpu, build.stats.bounds);
       this.say('');
     } else {
@@ -229,6 +258,9 @@ export class EmbedPlant {
     this.count.textContent = `n = ${options.iterations ?? build.grammarIterations}`;
     this.root.dataset.state = build.ok ? 'ok' : 'error';
     this.root.dataset.iterations = String(build.stats.iterations);
+    // What the plant on screen is (for tests, and for a page that reads it): its modules and size.
+    this.root.dataset.modules = String(build.stats.modules);
+    this.root.dataset.bounds = build.stats.bounds.flat().join(' ');
     this.playback.shownBuild();
     const { seed } = this.settings;
     const fragment = await encodeState({ text: this.source, ...(this.iterations === undefined ? {} : { iterations: this.iterations }), ...(seed === undefined ? {} : { seed }) });

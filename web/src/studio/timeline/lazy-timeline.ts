@@ -29,6 +29,8 @@ export interface TimelineStudio {
   stepwise: () => boolean;
   /** The derivation steps of the plant on screen (N before its growth arrays are there). */
   steps: () => number | undefined;
+  /** A build is under way (a timed grammar's next time waits for it). */
+  busy: () => boolean;
 }
 
 /** The timeline, its bar loaded on first use. */

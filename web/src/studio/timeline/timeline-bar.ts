@@ -5,7 +5,7 @@
 // on the slider ← → a step (Shift: a tenth), Home / End the range's ends, Space play / pause; on
 // the view Space too; Alt+P anywhere. Loaded after the first plant, or by the first Play.
 import { cleanGrowth, type SharedGrowth } from '../../share';
-import { Timeline, TIMELINE_SPEEDS, type TimelineState } from '../../plant-controls/timeline';
+import { GrowthShow, Timeline, TIMELINE_SPEEDS, type TimelineState } from '../../plant-controls/timeline';
 import type { GrowthCamera } from '../../view';
 import type { TimelineElements, TimelineStudio } from './lazy-timeline';
 import './timeline-bar.css';
@@ -117,6 +117,8 @@ export interface TimelineBuilds {
 /** The timeline bar and the timeline it drives. */
 export class TimelineBar {
   readonly timeline: Timeline;
+  /** The plant at t: a timed grammar derived at t (builds paced), any other grown on the GPU. */
+  private readonly growth: GrowthShow;
   private readonly controls: BarControls;
   /** The user (or a link) has put the timeline somewhere: new plants show that time, not whole. */
   private engaged = false;
@@ -129,7 +131,8 @@ export class TimelineBar {
     private readonly builds: TimelineBuilds,
   ) {
     const { view } = studio;
-    this.timeline = new Timeline({ span: () => studio.timedSpan() ?? view.growthSpan(), show: (t) => this.show(t) });
+    this.growth = new GrowthShow(view, { timedSpan: () => studio.timedSpan(), deriveAt: (t) => builds.deriveAt(t), busy: () => studio.busy() });
+    this.timeline = new Timeline({ span: () => this.growth.span(), show: (t) => this.show(t) });
     this.controls = barControls(els.bar);
     els.bar.hidden = false;
     this.timeline.onChange((state) => this.render(state));
@@ -199,21 +202,17 @@ export class TimelineBar {
 
   /**
    * Shows growth time `t`: the whole plant (and the Lines mode's lines) at the span's end. A timed
-   * grammar is derived at t, a stepwise one at ⌊t⌋ (a build: the newest request waits while one
-   * runs); any other grows on the GPU from its whole plant's mesh.
+   * grammar is derived at t, a stepwise one at ⌊t⌋ (a build, asked for once the one under way has
+   * arrived); any other grows on the GPU from its whole plant's mesh.
    */
   private show(t: number): void {
     const { view } = this.studio;
-    const timedSpan = this.studio.timedSpan();
-    this.builds.deriveAt(timedSpan === null || t >= timedSpan ? null : t);
-    const span = timedSpan === null ? view.growthSpan() : 0;
-    const whole = span === null || t >= span;
-    view.holdTubes(TUBES_HOLDER, !whole);
+    view.holdTubes(TUBES_HOLDER, !this.growth.show(t));
     // Each derived plant would be framed anew, and a plant growing would seem to stand still: the
     // camera stays on the whole plant it framed (unless it follows the growth).
+    const timedSpan = this.studio.timedSpan();
     const derived = timedSpan !== null && t < timedSpan;
     view.holdFrame(TUBES_HOLDER, derived && this.controls.camera.value === 'final');
-    view.setGrowthTime(whole ? null : t);
     if (this.controls.turntable.checked && this.timeline.playing && this.lastT !== null && t > this.lastT) {
       view.turn((t - this.lastT) * TURNTABLE_DEGREES_PER_STEP);
     }
@@ -228,8 +227,9 @@ export class TimelineBar {
     this.render(this.timeline.state);
   }
 
-  /** A build was delivered: its steps are shown (the slider's end, the label). */
+  /** A build was delivered: its steps are shown (the slider's end, the label); a time wanted meanwhile is derived. */
   stepsChanged(): void {
+    this.growth.delivered();
     this.render(this.timeline.state);
   }
 
