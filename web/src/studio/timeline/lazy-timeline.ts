@@ -5,6 +5,7 @@
 import type { SharedGrowth } from '../../share';
 import type { PlantView } from '../../view';
 import type * as Bar from './timeline-bar';
+import type { HandOver } from './panel-pace';
 
 /** The bar's place in the page (index.html) and the toolbar's Play. */
 export interface TimelineElements {
@@ -112,6 +113,15 @@ export class LazyTimeline {
   /** A build was delivered: the bar shows its steps (the plant may still be on its way to the GPU). */
   delivered(): void {
     this.loaded?.stepsChanged();
+  }
+
+  /**
+   * A delivered build for the String and Derivation panels: given to them at once, or while the
+   * growth plays at the bar's pace (./panel-pace.ts: at most 4 a second, the newest at Pause).
+   */
+  handOver(build: HandOver): void {
+    if (this.loaded) this.loaded.handOver(build);
+    else build.give();
   }
 
   /** Another text is opened: playing stops, the plant shows whole. */

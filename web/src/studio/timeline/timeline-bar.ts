@@ -8,6 +8,7 @@ import { cleanGrowth, type SharedGrowth } from '../../share';
 import { GrowthShow, Timeline, TIMELINE_SPEEDS, type TimelineState } from '../../plant-controls/timeline';
 import type { GrowthCamera } from '../../view';
 import type { TimelineElements, TimelineStudio } from './lazy-timeline';
+import { PanelPace, type HandOver } from './panel-pace';
 import './timeline-bar.css';
 
 /** Degrees the turntable turns the camera for each step of growth played. */
@@ -124,6 +125,8 @@ export class TimelineBar {
   private engaged = false;
   /** The last t shown while playing, for the turntable. */
   private lastT: number | null = null;
+  /** How the panels follow the builds while the growth plays. */
+  private readonly panels = new PanelPace(() => this.timeline.playing);
 
   constructor(
     private readonly els: TimelineElements,
@@ -135,7 +138,10 @@ export class TimelineBar {
     this.timeline = new Timeline({ span: () => this.growth.span(), show: (t) => this.show(t) });
     this.controls = barControls(els.bar);
     els.bar.hidden = false;
-    this.timeline.onChange((state) => this.render(state));
+    this.timeline.onChange((state) => {
+      if (!state.playing) this.panels.flush(); // paused: the panels show the plant on screen
+      this.render(state);
+    });
     this.listen();
     view.onPlantShown(() => this.plantShown());
     this.plantShown();
@@ -227,10 +233,20 @@ export class TimelineBar {
     this.render(this.timeline.state);
   }
 
-  /** A build was delivered: its steps are shown (the slider's end, the label); a time wanted meanwhile is derived. */
+  /**
+   * A build was delivered: its steps are shown (the slider's end, the label). A time wanted while
+   * it was under way is derived now, and so is the time shown (a link's) if this build is the
+   * first to say its grammar is timed (its plant was shown before the studio knew).
+   */
   stepsChanged(): void {
+    if (this.engaged) this.timeline.refresh();
     this.growth.delivered();
     this.render(this.timeline.state);
+  }
+
+  /** A delivered build for the panels: at once, or while playing at their pace ({@link PanelPace}). */
+  handOver(build: HandOver): void {
+    this.panels.offer(build);
   }
 
   /** Another text is opened: playing stops and the plant shows whole. */
