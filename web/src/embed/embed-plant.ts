@@ -75,6 +75,8 @@ export class EmbedPlant {
   private timedAt: number | null = null;
   /** Builds asked for and not yet answered. */
   private underWay = 0;
+  /** Bumped by every writing of the studio link, so a late one is dropped. */
+  private linkTicket = 0;
   private readonly sliders: LazySliderPanel | undefined;
   private source: string;
   private iterations: number | undefined;
@@ -147,6 +149,11 @@ export class EmbedPlant {
     parent.append(this.root);
     this.view = new PlantView(stage, { assetBase: settings.siteRoot });
     this.view.onPlantShown(() => this.timeline.refresh());
+    let wasPlaying = false;
+    this.timeline.onChange(({ playing }) => {
+      if (wasPlaying && !playing) void this.writeLink(); // paused: the link opens at this t
+      wasPlaying = playing;
+    });
     this.startGrowth(settings.growth);
     this.rebuild();
   }
@@ -262,9 +269,27 @@ export class EmbedPlant {
     this.root.dataset.modules = String(build.stats.modules);
     this.root.dataset.bounds = build.stats.bounds.flat().join(' ');
     this.playback.shownBuild();
+    await this.writeLink();
+  }
+
+  /**
+   * "Open in Meristem": the grammar, its iterations and seed, and once the growth is in use its
+   * timeline (the time shown, speed, range, loop), so the studio opens on the same plant at the
+   * same t (a timed grammar derived at t there too). Written after each build and at each pause.
+   */
+  private async writeLink(): Promise<void> {
+    const ticket = ++this.linkTicket;
     const { seed } = this.settings;
-    const fragment = await encodeState({ text: this.source, ...(this.iterations === undefined ? {} : { iterations: this.iterations }), ...(seed === undefined ? {} : { seed }) });
-    this.open.href = new URL(`./${fragment}`, this.settings.siteRoot).href;
+    const given = this.settings.growth;
+    const { t, speed, loop, from } = this.timeline.state;
+    const growth = this.growthWanted || given ? cleanGrowth({ t, ...(speed === 1 ? {} : { speed }), ...(loop ? { loop } : {}), ...(from > 0 ? { from } : {}), to: given?.to }) : undefined;
+    const fragment = await encodeState({
+      text: this.source,
+      ...(this.iterations === undefined ? {} : { iterations: this.iterations }),
+      ...(seed === undefined ? {} : { seed }),
+      ...(growth ? { growth } : {}),
+    });
+    if (ticket === this.linkTicket) this.open.href = new URL(`./${fragment}`, this.settings.siteRoot).href;
   }
 
   private say(text: string): void {
