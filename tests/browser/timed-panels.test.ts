@@ -6,7 +6,7 @@
 import { chromium, type Browser, type Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
 import { decodeState, encodeState } from '../../web/src/share';
-import { canvasPicture, example, openExample, openStudio, savePage, twoFrames } from './studio-page';
+import { canvasPicture, example, openStudioOn, savePage, twoFrames } from './studio-page';
 import { foregroundShare } from './pictures';
 
 const ANABAENA = 'abop-6.1-timed-anabaena.lsys';
@@ -17,9 +17,7 @@ let problems: string[];
 
 beforeAll(async () => {
   browser = await chromium.launch({ executablePath: '/usr/bin/chromium' });
-  ({ page, problems } = await openStudio(browser));
-  await page.getByTestId('timeline-slider').waitFor();
-  expect(await openExample(page, ANABAENA)).toBe('ok');
+  ({ page, problems } = await openStudioOn(browser, ANABAENA));
 });
 
 afterAll(async () => {
