@@ -6,7 +6,7 @@
 import { chromium, type Browser, type Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
 import { decodeState, encodeState } from '../../web/src/share';
-import { canvasPicture, example, openStudioOn, savePage, twoFrames } from './studio-page';
+import { canvasPicture, editorText, example, generation, nextBuild, openStudioOn, savePage, twoFrames } from './studio-page';
 import { foregroundShare } from './pictures';
 
 const ANABAENA = 'abop-6.1-timed-anabaena.lsys';
@@ -142,9 +142,9 @@ describe('the panels of a timed grammar follow the timeline’s t', () => {
 });
 
 describe('an embedded timed grammar', () => {
-  /** Opens embed.html on the Anabaena with `query`; returns the page. */
-  async function openEmbed(query: string): Promise<{ embed: Page; errors: string[] }> {
-    const fragment = await encodeState({ text: example(ANABAENA) });
+  /** Opens embed.html on `text` (the Anabaena's by default) with `query`; returns the page. */
+  async function openEmbed(query: string, text = example(ANABAENA)): Promise<{ embed: Page; errors: string[] }> {
+    const fragment = await encodeState({ text });
     const embed = await browser.newPage({ viewport: { width: 480, height: 360 } });
     const errors: string[] = [];
     embed.on('pageerror', (e) => errors.push(e.message));
@@ -182,7 +182,8 @@ describe('an embedded timed grammar', () => {
     expect(await opened.evaluate(() => window.__meristem!.lastStats!.bounds.flat())).toEqual(bounds);
     await opened.close();
     expect(errors).toEqual([]);
-    expect(foregroundShare(await canvasPicture(page, 'timed-studio-t2.5.png')), 'the studio draws it').toBeGreaterThan(0.001);
+    // (The camera holds on the whole plant of t = 6, φ^3.5 times the filament's length at 2.5.)
+    expect(foregroundShare(await canvasPicture(page, 'timed-studio-t2.5.png')), 'the studio draws it').toBeGreaterThan(0.0003);
   });
 
   it('plays by deriving at t (the cells divide as it plays), not by growing the whole plant', async () => {
@@ -197,6 +198,24 @@ describe('an embedded timed grammar', () => {
     counts.delete('');
     // Grown on the GPU, the plant of t = 6 (21 cells) would be shown at every t.
     expect(counts.size, `module counts seen: ${[...counts].join(', ')}`).toBeGreaterThanOrEqual(4);
+    await embed.close();
+    expect(errors).toEqual([]);
+  });
+
+  it('of a stepwise grammar (L-Py’s continuous growth, imported) at t shows the studio’s step ⌊t⌋', async () => {
+    // crate/tests/import-corpus/lpy/07-continuous-growth.lpy imports with `#dt 0.1`: stepwise, its
+    // plant at t is its derivation's at step ⌊t⌋ (3 segments at step 20, as the CLI counts).
+    const before = await generation(page);
+    await page.getByTestId('file-input').setInputFiles(new URL('../../crate/tests/import-corpus/lpy/07-continuous-growth.lpy', import.meta.url).pathname);
+    expect(await nextBuild(page, before)).toBe('ok');
+    await page.getByTestId('timeline-slider').fill('20.5');
+    await page.waitForFunction(() => window.__meristem?.preview?.settled === true && window.__meristem.lastStats?.iterations === 20, undefined, { timeout: 30_000 });
+    const studio = await page.evaluate(() => window.__meristem!.lastStats!);
+    expect(studio.segments).toBe(3);
+    const { embed, errors } = await openEmbed('t=20.5', await editorText(page));
+    await embed.waitForFunction(() => document.querySelector('.mp')?.getAttribute('data-iterations') === '20', undefined, { timeout: 30_000 });
+    expect(await embed.locator('.mp').getAttribute('data-modules')).toBe(String(studio.modules));
+    // (Not the bounds: the studio's flat plant in the Lines mode has no tubes meshed to measure.)
     await embed.close();
     expect(errors).toEqual([]);
   });

@@ -5,7 +5,7 @@
 // go to the page's one shared worker. Small enough for 320 × 240.
 import type { BuildOptions } from '../core';
 import { cleanGrowth, encodeState, type SharedGrowth } from '../share';
-import { LazySliderPanel, Playback } from '../plant-controls';
+import { derivedBuildOptions, derivedTime, LazySliderPanel, Playback } from '../plant-controls';
 import { GrowthShow, Timeline } from '../plant-controls/timeline';
 import type { BuildOutcome } from '../build';
 import { PlantView } from '../view';
@@ -69,9 +69,11 @@ export class EmbedPlant {
   private readonly growth: GrowthShow;
   /** Builds carry growth arrays: asked by `growth`, or by the first Play (not for a timed grammar: it is derived at t). */
   private growthWanted: boolean;
-  /** The plant on screen is of a timed grammar (ABOP 6.1). */
+  /** The plant on screen is of a timed grammar (ABOP 6.1) or a stepwise one: derived at t, not grown on the GPU. */
   private timed = false;
-  /** The growth time a timed grammar's builds are derived at, or null for its iterations. */
+  /** The plant on screen is of a stepwise grammar (a `#dt` without timed modules): derived to ⌊t⌋. */
+  private stepwise = false;
+  /** The growth time a timed (or stepwise) grammar's builds are derived at, or null for its iterations. */
   private timedAt: number | null = null;
   /** Builds asked for and not yet answered. */
   private underWay = 0;
@@ -114,8 +116,9 @@ export class EmbedPlant {
       {
         timedSpan: () => (this.timed ? (this.iterations ?? this.grammarIterations) : null),
         deriveAt: (t) => {
-          if (t === this.timedAt) return;
-          this.timedAt = t;
+          const at = derivedTime(t, this.stepwise);
+          if (at === this.timedAt) return;
+          this.timedAt = at;
           this.rebuild();
         },
         busy: () => this.underWay > 0,
@@ -228,8 +231,7 @@ export class EmbedPlant {
     return {
       iterations: this.iterations,
       seed: this.settings.seed,
-      ...(this.growthWanted && !this.timed ? { growth: true } : {}),
-      ...(this.timedAt === null ? {} : { time: this.timedAt }),
+      ...derivedBuildOptions(this.timedAt, this.stepwise, this.growthWanted && !this.timed),
     };
   }
 
@@ -255,7 +257,8 @@ export class EmbedPlant {
     inspector.free();
     this.grammarIterations = build.grammarIterations;
     if (build.ok) {
-      this.timed = build.timed;
+      this.timed = build.timed || build.stepwise;
+      this.stepwise = build.stepwise;
       this.view.showPlant(build.mesh, build.flat, outcome.result.gpu, build.stats.bounds);
       this.say('');
     } else {

@@ -2,6 +2,7 @@
 // arrays (once the timeline is used), and the timeline bar under the view (./timeline-bar.ts, its
 // own chunk), loaded after the first plant or by the first Play. Play, the keyboard and share
 // links reach the timeline through here.
+import { derivedBuildOptions, derivedTime } from '../../plant-controls';
 import type { SharedGrowth } from '../../share';
 import type { PlantView } from '../../view';
 import type * as Bar from './timeline-bar';
@@ -74,7 +75,7 @@ export class LazyTimeline {
    * iterations); a build follows a change.
    */
   deriveAt(t: number | null): void {
-    const at = t !== null && this.studio?.stepwise() ? Math.floor(t) : t;
+    const at = derivedTime(t, this.studio?.stepwise() ?? false);
     if (at === this.timedAt) return;
     this.timedAt = at;
     this.studio?.rebuild();
@@ -87,8 +88,7 @@ export class LazyTimeline {
    * before it, as Play's steps do: derivations that count each step's elements are not continued).
    */
   buildOptions(): { growth?: true; time?: number; iterations?: number } {
-    if (this.timedAt !== null && this.studio?.stepwise()) return { iterations: this.timedAt };
-    return { ...(this.growthWanted ? { growth: true } : {}), ...(this.timedAt === null ? {} : { time: this.timedAt }) };
+    return derivedBuildOptions(this.timedAt, this.studio?.stepwise() ?? false, this.growthWanted);
   }
 
   /** The bar, loaded (and shown) on first call. */
