@@ -168,20 +168,29 @@ fn built(source: &str, n: u32) -> meristem::Build {
     b
 }
 
-#[test]
-fn the_derivation_of_eq_1_7_is_the_sequence_of_fig_1_34() {
-    let source = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../public/examples/abop-eq-1.7.lsys"
-    ))
-    .unwrap();
-    let b = built(&source, 4);
+/// The text of a gallery example.
+fn example(file: &str) -> String {
+    let path = format!("{}/../public/examples/{file}", env!("CARGO_MANIFEST_DIR"));
+    std::fs::read_to_string(path).unwrap()
+}
+
+/// The build's derivation traced ([`meristem::pipeline::Inspector::sequence`]) and each step's
+/// string as text.
+fn traced(b: &meristem::Build) -> (Vec<meristem::derive::TracedStep>, Vec<String>) {
     let inspector = b.inspector().expect("model");
     let steps = inspector.sequence(1_000).expect("short").expect("derives");
-    let texts: Vec<String> = steps
+    let texts = steps
         .iter()
         .map(|s| inspector.texts_of(&s.string).concat())
         .collect();
+    (steps, texts)
+}
+
+#[test]
+fn the_derivation_of_eq_1_7_is_the_sequence_of_fig_1_34() {
+    let b = built(&example("abop-eq-1.7.lsys"), 4);
+    let inspector = b.inspector().expect("model");
+    let (steps, texts) = traced(&b);
     assert_eq!(
         texts,
         [
@@ -297,4 +306,50 @@ fn a_d0l_derivation_writes_its_provenance_when_asked_as_the_traced_derivation_re
             assert_eq!(lazy.origin().len(), lazy.string.len());
         }
     }
+}
+
+#[test]
+fn a_timed_derivation_is_traced_round_by_round_and_ends_with_the_string_at_its_time() {
+    // ABOP 6.1's timed Anabaena at t = 2.5: rounds at t = 1 and 2 (every cell has terminal age 1),
+    // then every cell half a unit older: b_l(0.5) a_r(0.5) a_r(0.5), the build's string.
+    let source = example("abop-6.1-timed-anabaena.lsys");
+    let at = |time: f64| {
+        let options = BuildOptions {
+            time: Some(time),
+            ..BuildOptions::default()
+        };
+        build(&source, &options)
+    };
+    let b = at(2.5);
+    assert!(b.ok(), "{:?}", b.diagnostics);
+    let (steps, texts) = traced(&b);
+    // Each round's string at its moment: a replaced cell at age 0, the others aged to it.
+    assert_eq!(
+        texts,
+        [
+            "a_r(0)",
+            "a_l(0)b_r(0)",
+            "b_l(0)a_r(0)a_r(0)",
+            "b_l(0.5)a_r(0.5)a_r(0.5)"
+        ]
+    );
+    let times: Vec<Option<f64>> = steps.iter().map(|s| s.time).collect();
+    assert_eq!(times, [Some(0.0), Some(1.0), Some(2.0), Some(2.5)]);
+    // The ageing step rewrites nothing: each module is its own parent.
+    assert_eq!(steps[3].parent, [0, 1, 2]);
+    assert!(steps[3]
+        .origin
+        .iter()
+        .all(|&o| o == meristem::derive::NOT_REWRITTEN));
+    assert_eq!(steps[3].string, b.derivation.string);
+
+    // At a round's own time, no ageing step: the last round is the string at t.
+    let (steps, _) = traced(&at(2.0));
+    assert_eq!(
+        steps.iter().map(|s| s.time).collect::<Vec<_>>(),
+        [Some(0.0), Some(1.0), Some(2.0)]
+    );
+    // Other grammars' steps have no time.
+    let (steps, _) = traced(&built("axiom: A\nA -> AB\n", 2));
+    assert!(steps.iter().all(|s| s.time.is_none()));
 }

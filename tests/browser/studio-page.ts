@@ -28,6 +28,14 @@ export async function openStudio(browser: Browser, colorScheme: 'light' | 'dark'
   return studioIn(await browser.newPage({ viewport, colorScheme }));
 }
 
+/** Opens the studio with `file` of the gallery shown and waits for the timeline's bar (which loads after the first plant). */
+export async function openStudioOn(browser: Browser, file: string): Promise<StudioPage> {
+  const opened = await openStudio(browser);
+  await opened.page.getByTestId('timeline-slider').waitFor();
+  if ((await openExample(opened.page, file)) !== 'ok') throw new Error(`${file} did not build`);
+  return opened;
+}
+
 /** Opens the studio in `page` (of a context the caller made) and waits for the first plant and the editor. */
 export async function studioIn(page: Page): Promise<StudioPage> {
   mkdirSync(RESULTS, { recursive: true });

@@ -109,6 +109,10 @@ pub struct TracedStep {
     pub origin: Vec<u32>,
     /// For each module, the module of the previous step's string it comes from (empty at step 0).
     pub parent: Vec<u32>,
+    /// A timed derivation's growth time of this string, in steps (ABOP 6.1: each step is a round
+    /// of replacements, at the moment it happened; after the last round, a step that only ages
+    /// every module to the time asked, each module its own parent); `None` for other grammars.
+    pub time: Option<f64>,
 }
 
 impl Derivation {
@@ -479,6 +483,7 @@ impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
             string: self.current.clone(),
             origin: vec![NOT_REWRITTEN; self.current.len()],
             parent: Vec::new(),
+            time: None,
         }
     }
 
@@ -516,6 +521,7 @@ impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
                 string: self.current.clone(),
                 origin: self.origin.clone(),
                 parent: self.parent.clone(),
+                time: None,
             });
         }
         Ok(())
@@ -526,6 +532,7 @@ impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
     fn timed(&mut self, mut clock: timed::Clock, tracked: bool) -> Result<u32, Diagnostic> {
         let model = self.rewriter.model;
         let mut round = 0;
+        self.stamp_trace(&clock);
         while let Some(plan) = clock.next_round(&mut self.current) {
             if round == model.settings.max_steps {
                 return Err(clock.too_many_rounds(model));
@@ -533,8 +540,38 @@ impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
             round += 1;
             self.timed_plan = Some(plan);
             self.step(round, tracked)?;
+            self.stamp_trace(&clock);
         }
+        self.trace_ageing(&clock);
         Ok(round)
+    }
+
+    /// A traced timed derivation: the step just recorded is at the clock's time.
+    fn stamp_trace(&mut self, clock: &timed::Clock) {
+        if let Some(last) = self.trace.as_mut().and_then(|trace| trace.last_mut()) {
+            last.time = Some(clock.growth_time());
+        }
+    }
+
+    /// A traced timed derivation whose clock went on after its last round: the string at the end,
+    /// every module aged, recorded as a step of its own (each module its own parent, none
+    /// rewritten), so the trace ends with the derived string as it does for other grammars.
+    fn trace_ageing(&mut self, clock: &timed::Clock) {
+        let Some(trace) = self.trace.as_mut() else {
+            return;
+        };
+        let now = clock.growth_time();
+        let at_now = |t: f64| (t - now).abs() <= 1e-9 * now.max(1.0);
+        if trace.last().and_then(|last| last.time).is_some_and(at_now) {
+            return;
+        }
+        let n = self.current.len();
+        trace.push(TracedStep {
+            string: self.current.clone(),
+            origin: vec![NOT_REWRITTEN; n],
+            parent: (0..n as u32).collect(),
+            time: Some(now),
+        });
     }
 
     /// The productions pass, from `current` into `next`.

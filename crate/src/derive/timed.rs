@@ -30,6 +30,8 @@ pub(super) struct Clock {
     terminal: Vec<f64>,
     now: f64,
     end: f64,
+    /// `#dt`: model time per step.
+    dt: f64,
 }
 
 impl Clock {
@@ -49,7 +51,19 @@ impl Clock {
             terminal,
             now: 0.0,
             end,
+            dt: settings.dt,
         })
+    }
+
+    /// The time reached, as a growth time (in steps: model time / `#dt`), kept to 12 decimals
+    /// below 1000 as ages are (rounds at 0.1 + 0.2 are at 0.3).
+    pub(super) fn growth_time(&self) -> f64 {
+        let t = self.now / self.dt;
+        if t.abs() < 1e3 {
+            (t * 1e12).round() / 1e12
+        } else {
+            t
+        }
     }
 
     /// The terminal age of module `i` of `s` and its age, when it is timed and has its age.

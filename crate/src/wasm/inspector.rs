@@ -75,16 +75,18 @@ impl PlantInspector {
     }
 
     #[cfg(feature = "studio-extras")]
-    /// The whole derivation, step 0 to the last, as JSON `[{texts, parent, origin}]` (each step's
-    /// modules as written, and for each the module of the step before it comes from and the
-    /// production that wrote it), when all the steps' strings hold `max_modules` modules or fewer
-    /// together; `undefined` when they do not.
+    /// The whole derivation, step 0 to the last, as JSON `[{texts, parent, origin, time?}]` (each
+    /// step's modules as written, and for each the module of the step before it comes from and
+    /// the production that wrote it; a timed grammar's steps their growth time), when all the
+    /// steps' strings hold `max_modules` modules or fewer together; `undefined` when they do not.
     pub fn sequence(&self, max_modules: usize) -> Option<String> {
         #[derive(serde::Serialize)]
         struct Step<'a> {
             texts: Vec<String>,
             parent: &'a [u32],
             origin: &'a [u32],
+            #[serde(skip_serializing_if = "Option::is_none")]
+            time: Option<f64>,
         }
         let inspector = self.build.inspector()?;
         let traced = inspector.sequence(max_modules)?.ok()?;
@@ -94,6 +96,7 @@ impl PlantInspector {
                 texts: inspector.texts_of(&s.string),
                 parent: &s.parent,
                 origin: &s.origin,
+                time: s.time,
             })
             .collect();
         serde_json::to_string(&steps).ok()

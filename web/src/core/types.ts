@@ -250,6 +250,12 @@ export interface DerivationStep {
   parent: number[];
   /** For each module, the production that wrote it in this step ({@link NOT_REWRITTEN}: copied). */
   origin: number[];
+  /**
+   * A timed grammar's growth time of this string, in steps (ABOP 6.1: each step a round of
+   * replacements at the moment it happened; after the last round, a step that only ages every
+   * module to the time asked, each module its own parent). Absent for other grammars.
+   */
+  time?: number;
 }
 
 /** The last step's links: for each module of the derived string, the module of the string before. */

@@ -8,8 +8,12 @@
 // text. `iterations` and `seed` override the grammar's; `controls` lists the controls shown
 // (`iterations`: − n + and Play; `sliders`: one per `#define`). `animate` plays the growth in time
 // at once (`loop`: again and again; `speed`: steps per second; `t`: the time to start from; `from`
-// and `to`: the range played), as Play does on demand. Every plant of the page builds in
+// and `to`: the range played), as Play does on demand; a timed grammar (`#terminal_age`) is
+// derived at each time shown, as the studio's timeline does. Every plant of the page builds in
 // one shared worker; the textures and the studio link point at the site this script came from.
+// The plant's box (`.mp`, in the shadow root) says what is shown, for the page's scripts and
+// tests: `data-state` (ok, error), `data-iterations`, `data-modules`, `data-bounds` (min x y z,
+// max x y z) and `data-t` (the growth time shown).
 import { loadVocabulary } from '../core';
 import { EmbedPlant, GROWTH_ATTRIBUTES, growthAttributes, parseControls } from './embed-plant';
 import { EMBED_CSS } from './embed-style';

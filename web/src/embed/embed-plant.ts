@@ -5,8 +5,8 @@
 // go to the page's one shared worker. Small enough for 320 × 240.
 import type { BuildOptions } from '../core';
 import { cleanGrowth, encodeState, type SharedGrowth } from '../share';
-import { LazySliderPanel, Playback } from '../plant-controls';
-import { Timeline } from '../plant-controls/timeline';
+import { derivedBuildOptions, derivedTime, LazySliderPanel, Playback } from '../plant-controls';
+import { GrowthShow, Timeline } from '../plant-controls/timeline';
 import type { BuildOutcome } from '../build';
 import { PlantView } from '../view';
 import type { SharedBuilds } from './shared-builds';
@@ -63,10 +63,22 @@ export class EmbedPlant {
   private readonly open: HTMLAnchorElement;
   private readonly count: HTMLElement;
   private readonly playback: Playback;
-  /** The growth played in time (the view's growth time: no build a frame). */
+  /** The growth played in time (the view's growth time: no build a frame; a timed grammar's build at t). */
   private readonly timeline: Timeline;
-  /** Builds carry growth arrays: asked by `growth`, or by the first Play. */
+  /** The plant at t, as the studio's timeline shows it: a timed grammar derived at t, any other grown on the GPU. */
+  private readonly growth: GrowthShow;
+  /** Builds carry growth arrays: asked by `growth`, or by the first Play (not for a timed grammar: it is derived at t). */
   private growthWanted: boolean;
+  /** The plant on screen is of a timed grammar (ABOP 6.1) or a stepwise one: derived at t, not grown on the GPU. */
+  private timed = false;
+  /** The plant on screen is of a stepwise grammar (a `#dt` without timed modules): derived to ⌊t⌋. */
+  private stepwise = false;
+  /** The growth time a timed (or stepwise) grammar's builds are derived at, or null for its iterations. */
+  private timedAt: number | null = null;
+  /** Builds asked for and not yet answered. */
+  private underWay = 0;
+  /** Bumped by every writing of the studio link, so a late one is dropped. */
+  private linkTicket = 0;
   private readonly sliders: LazySliderPanel | undefined;
   private source: string;
   private iterations: number | undefined;
@@ -99,8 +111,21 @@ export class EmbedPlant {
       },
     });
     this.growthWanted = settings.growth !== undefined;
+    this.growth = new GrowthShow(
+      { growthSpan: () => this.view.growthSpan(), setGrowthTime: (t) => this.view.setGrowthTime(t) },
+      {
+        timedSpan: () => (this.timed ? (this.iterations ?? this.grammarIterations) : null),
+        deriveAt: (t) => {
+          const at = derivedTime(t, this.stepwise);
+          if (at === this.timedAt) return;
+          this.timedAt = at;
+          this.rebuild();
+        },
+        busy: () => this.underWay > 0,
+      },
+    );
     this.timeline = new Timeline(
-      { span: () => this.view.growthSpan(), show: (t) => this.showGrowth(t) },
+      { span: () => this.growth.span(), show: (t) => this.showGrowth(t) },
       { speed: settings.growth?.speed, loop: settings.growth?.loop },
     );
     if (settings.controls.has('iterations')) bar.append(...this.iterationControls());
@@ -127,6 +152,11 @@ export class EmbedPlant {
     parent.append(this.root);
     this.view = new PlantView(stage, { assetBase: settings.siteRoot });
     this.view.onPlantShown(() => this.timeline.refresh());
+    let wasPlaying = false;
+    this.timeline.onChange(({ playing }) => {
+      if (wasPlaying && !playing) void this.writeLink(); // paused: the link opens at this t
+      wasPlaying = playing;
+    });
     this.startGrowth(settings.growth);
     this.rebuild();
   }
@@ -140,10 +170,9 @@ export class EmbedPlant {
     if (growth.playing && !still) this.timeline.play();
   }
 
-  /** Shows growth time `t` (the whole plant at its end). */
+  /** Shows growth time `t` (the whole plant at its end; a timed grammar derived at t). */
   private showGrowth(t: number): void {
-    const span = this.view.growthSpan();
-    this.view.setGrowthTime(span === null || t >= span ? null : t);
+    this.growth.show(t);
     this.root.dataset.t = String(t);
   }
 
@@ -181,6 +210,7 @@ export class EmbedPlant {
     this.iterations = iterations;
     this.playback.pause();
     this.timeline.pause();
+    this.timedAt = null; // derived at its own iterations until the timeline shows a time again
     this.sliders?.reset();
     this.sliders?.update(source);
     this.view.frameNextPlant();
@@ -198,15 +228,22 @@ export class EmbedPlant {
   }
 
   private options(): BuildOptions {
-    return { iterations: this.iterations, seed: this.settings.seed, ...(this.growthWanted ? { growth: true } : {}) };
+    return {
+      iterations: this.iterations,
+      seed: this.settings.seed,
+      ...derivedBuildOptions(this.timedAt, this.stepwise, this.growthWanted && !this.timed),
+    };
   }
 
   private rebuild(): void {
     const ticket = ++this.ticket;
     const options = this.options();
+    this.underWay++;
     void this.settings.builds.build(this, this.source, options).then((outcome) => {
+      this.underWay--;
       if (ticket === this.ticket) void this.show(outcome, options);
       else if (outcome.kind === 'built') outcome.result.inspector.free();
+      this.growth.delivered(); // a time wanted meanwhile is derived now
     });
   }
 
@@ -220,6 +257,8 @@ export class EmbedPlant {
     inspector.free();
     this.grammarIterations = build.grammarIterations;
     if (build.ok) {
+      this.timed = build.timed || build.stepwise;
+      this.stepwise = build.stepwise;
       this.view.showPlant(build.mesh, build.flat, outcome.result.gpu, build.stats.bounds);
       this.say('');
     } else {
@@ -229,10 +268,31 @@ export class EmbedPlant {
     this.count.textContent = `n = ${options.iterations ?? build.grammarIterations}`;
     this.root.dataset.state = build.ok ? 'ok' : 'error';
     this.root.dataset.iterations = String(build.stats.iterations);
+    // What the plant on screen is (for tests, and for a page that reads it): its modules and size.
+    this.root.dataset.modules = String(build.stats.modules);
+    this.root.dataset.bounds = build.stats.bounds.flat().join(' ');
     this.playback.shownBuild();
+    await this.writeLink();
+  }
+
+  /**
+   * "Open in Meristem": the grammar, its iterations and seed, and once the growth is in use its
+   * timeline (the time shown, speed, range, loop), so the studio opens on the same plant at the
+   * same t (a timed grammar derived at t there too). Written after each build and at each pause.
+   */
+  private async writeLink(): Promise<void> {
+    const ticket = ++this.linkTicket;
     const { seed } = this.settings;
-    const fragment = await encodeState({ text: this.source, ...(this.iterations === undefined ? {} : { iterations: this.iterations }), ...(seed === undefined ? {} : { seed }) });
-    this.open.href = new URL(`./${fragment}`, this.settings.siteRoot).href;
+    const given = this.settings.growth;
+    const { t, speed, loop, from } = this.timeline.state;
+    const growth = this.growthWanted || given ? cleanGrowth({ t, ...(speed === 1 ? {} : { speed }), ...(loop ? { loop } : {}), ...(from > 0 ? { from } : {}), to: given?.to }) : undefined;
+    const fragment = await encodeState({
+      text: this.source,
+      ...(this.iterations === undefined ? {} : { iterations: this.iterations }),
+      ...(seed === undefined ? {} : { seed }),
+      ...(growth ? { growth } : {}),
+    });
+    if (ticket === this.linkTicket) this.open.href = new URL(`./${fragment}`, this.settings.siteRoot).href;
   }
 
   private say(text: string): void {

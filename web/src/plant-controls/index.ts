@@ -4,3 +4,4 @@
 // constants (`sliders.ts`, loaded on first use through `lazy-sliders.ts`).
 export { Playback } from './playback';
 export { LazySliderPanel } from './lazy-sliders';
+export { derivedBuildOptions, derivedTime } from './derived-at';

@@ -225,3 +225,6 @@ export class Timeline {
     for (const listener of this.listeners) listener(state);
   }
 }
+
+// The growth shown at t (a timed grammar derived at t), for the same hosts as the timeline.
+export { GrowthShow, type GrowthView, type TimedBuilds } from './timed-growth';

@@ -1,6 +1,6 @@
 // The String tab's context view, loaded after the first plant (issue 22: the first plant needs none
 // of it). Until it has loaded it keeps the last build and cursor, and hands them over on arrival.
-import type { PlantBuild, PlantInspector } from '../../core';
+import type { BuildOptions, PlantBuild, PlantInspector } from '../../core';
 import type { GrammarEditor } from '../../editor';
 import type { PlantView } from '../../view';
 import type { ViewOptions } from '../controls';
@@ -10,7 +10,7 @@ import type { ContextView, ContextViewElements } from './context-view';
 export class LazyContextView {
   private view: ContextView | undefined;
   private loading: Promise<void> | undefined;
-  private build: [PlantBuild, PlantInspector | undefined, string] | undefined;
+  private build: [PlantBuild, PlantInspector | undefined, string, BuildOptions?] | undefined;
   private cursor: number | undefined;
   private pickingOn = true;
 
@@ -41,11 +41,11 @@ export class LazyContextView {
   }
 
   /** As {@link ContextView.setBuild}, which owns `inspector`: kept (and the one it replaces freed) until the view has loaded. */
-  setBuild(build: PlantBuild, inspector: PlantInspector | undefined, source: string): void {
-    if (this.view) return this.view.setBuild(build, inspector, source);
+  setBuild(build: PlantBuild, inspector: PlantInspector | undefined, source: string, options?: BuildOptions): void {
+    if (this.view) return this.view.setBuild(build, inspector, source, options);
     const old = this.build?.[1];
     if (old !== inspector) old?.free();
-    this.build = [build, inspector, source];
+    this.build = [build, inspector, source, options];
   }
 
   /** As {@link ContextView.cursorAt}. */

@@ -4,13 +4,13 @@
 // and the production that made it is marked in the editor, with the contexts of that rewriting.
 // "Colour by production" paints every module by the production that wrote it, so stepping the
 // iterations shows which production rewrote what from step k to k + 1.
-import { NOT_REWRITTEN, type Explanation, type MatchReport, type PlantBuild, type PlantInspector } from '../../core';
+import { NOT_REWRITTEN, type BuildOptions, type Explanation, type MatchReport, type PlantBuild, type PlantInspector } from '../../core';
 import type { GrammarEditor } from '../../editor';
 import { cssColour, HIGHLIGHT, PRODUCTION_COLOURS, type Rgb } from '../../view/highlight';
 import type { PlantView } from '../../view';
 import { StringPanel, type ModuleRole } from './string-panel';
 import type { ViewOptions } from '../controls';
-import { conditionText, copiedInWords, countsInWords, describeProduction, madeInWords, reportInWords } from './explain-words';
+import { conditionText, copiedInWords, countsInWords, describeProduction, madeInWords, reportInWords, stringAtTime } from './explain-words';
 
 /** The page elements of the view. */
 export interface ContextViewElements {
@@ -39,6 +39,8 @@ export class ContextView {
   private build: PlantBuild | undefined;
   private inspector: PlantInspector | undefined;
   private source = '';
+  /** A timed grammar's growth time of the string shown (the timeline's t, else its iterations); null when not timed. */
+  private timedAt: number | null = null;
   private focus: Focus = { production: null, module: null };
   /** Modules lit up from elsewhere (the derivation view's hover), instead of the focus's highlight. */
   private preview: Set<number> | null = null;
@@ -76,12 +78,17 @@ export class ContextView {
     return Math.hypot(event.clientX - this.down.x, event.clientY - this.down.y) > 4;
   }
 
-  /** Shows a new build on screen; the view takes ownership of `inspector` (frees the old one). */
-  setBuild(build: PlantBuild, inspector: PlantInspector | undefined, source: string): void {
+  /**
+   * Shows a new build on screen, built with `options` (a timed grammar's at a time: the timeline's
+   * t); the view takes ownership of `inspector` (frees the old one).
+   */
+  setBuild(build: PlantBuild, inspector: PlantInspector | undefined, source: string, options: BuildOptions = {}): void {
     if (this.inspector !== inspector) this.inspector?.free();
     this.build = build;
     this.inspector = inspector;
     this.source = source;
+    this.timedAt = build.timed ? (options.time ?? options.iterations ?? build.grammarIterations) : null;
+    this.els.summary.dataset.t = this.timedAt === null ? '' : String(this.timedAt);
     this.panel.show(build.moduleCount, inspector);
     this.focus = { ...this.focus, module: null }; // module indices belong to the old string
     this.preview = null;
@@ -213,10 +220,11 @@ export class ContextView {
     delete summary.dataset.contextMatched;
     delete summary.dataset.conditionFailed;
     if (focus.production === null && focus.module === null) {
-      summary.textContent =
+      const idle =
         build.stats.iterations === 0
           ? 'Step 0: the axiom. Put the cursor on a production after a step to see where it fired.'
           : 'Put the cursor on a production to see where it fired in the last step, or click the plant to ask how a part of it was made.';
+      summary.textContent = this.timedAt === null ? idle : stringAtTime(this.timedAt);
       return;
     }
     const production = explanation ? build.productions[explanation.production] : undefined;

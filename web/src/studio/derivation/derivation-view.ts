@@ -8,7 +8,7 @@
 import './derivation-view.css';
 import { NOT_REWRITTEN, type DerivationStep, type PlantBuild, type PlantInspector } from '../../core';
 import { cssColour, PRODUCTION_COLOURS } from '../../view/highlight';
-import { shortModuleText } from './module-text';
+import { shortModuleText, shortNumber } from './module-text';
 // Loaded on demand: it imports other areas' files, not their indexes, which would bring their
 // wiring into its chunk's graph (and split the first load into more files).
 import { plural } from '../preview/status';
@@ -36,6 +36,20 @@ export interface DerivationViewHost {
   conditionOf(index: number): string | null;
 }
 
+/** A timed derivation's growth time as the view writes it (`2.5`, `0.333333`). */
+export function timeWords(time: number): string {
+  return `t = ${shortNumber(String(time))}`;
+}
+
+/**
+ * Step `k` as the view names it: `step 2`, or in a timed derivation (ABOP 6.1, each step a round
+ * of replacements at its time) `t = 2`.
+ */
+export function stepWords(steps: readonly DerivationStep[], k: number): string {
+  const time = steps[k].time;
+  return time === undefined ? `step ${k}` : timeWords(time);
+}
+
 /** Where a module of a step comes from, in words. */
 export function originInWords(
   steps: readonly DerivationStep[],
@@ -44,15 +58,24 @@ export function originInWords(
   host: Pick<DerivationViewHost, 'describeProduction' | 'conditionOf'>,
 ): string {
   const text = shortModuleText(steps[step].texts[module]);
-  if (step === 0) return `${text} is part of the axiom (step 0).`;
+  const at = (k: number) => stepWords(steps, k);
+  if (step === 0) return `${text} is part of the axiom (${at(0)}).`;
   const parent = steps[step].parent[module];
   const from = shortModuleText(steps[step - 1].texts[parent]);
   const origin = steps[step].origin[module];
-  if (origin === NOT_REWRITTEN) return `Step ${step}: ${text} is ${from} of step ${step - 1}, copied (no production rewrote it).`;
+  const time = steps[step].time;
+  const timed = time !== undefined;
+  const At = timed ? `At ${timeWords(time)}` : `Step ${step}`;
+  if (origin === NOT_REWRITTEN) {
+    return timed
+      ? `${At}: ${text} is ${from} of ${at(step - 1)}, older (not replaced: it had not reached its terminal age, or no production matched it).`
+      : `${At}: ${text} is ${from} of ${at(step - 1)}, copied (no production rewrote it).`;
+  }
   const siblings = steps[step].parent.filter((p) => p === parent).length;
   const became = siblings > 1 ? `one of the ${siblings} modules ${from} became` : `what ${from} became`;
   const condition = host.conditionOf(origin);
-  return `Step ${step}: ${text} is ${became}, by ${host.describeProduction(origin)}${condition === null ? '' : `; ${condition} held`}.`;
+  const when = timed ? `, at its terminal age (${from} is its age at ${at(step - 1)})` : '';
+  return `${At}: ${text} is ${became}${when}, by ${host.describeProduction(origin)}${condition === null ? '' : `; ${condition} held`}.`;
 }
 
 /** The modules of the last step that descend from module `module` of step `step`. */
@@ -162,11 +185,9 @@ export class DerivationView {
 
   private renderSequence(steps: DerivationStep[]): void {
     this.body.classList.remove('dv-long');
+    this.body.classList.toggle('dv-timed', steps[0].time !== undefined);
     const total = steps.reduce((n, s) => n + s.texts.length, 0);
-    this.caption.textContent =
-      steps.length === 1
-        ? 'Step 0: the axiom. Step the iterations up to watch it being rewritten.'
-        : `The derivation, step 0 to ${steps.length - 1}: each band is what one module of the step before became, in the colour of the production that wrote it. Hover a module.`;
+    this.caption.textContent = sequenceCaption(steps);
     const rows = steps.map((step, k) => this.sequenceRow(step, k));
     this.body.replaceChildren(...rows);
     if (steps.length > 1 && total <= TREE_MAX_MODULES) this.body.append(derivationTree(steps));
@@ -176,8 +197,9 @@ export class DerivationView {
   private sequenceRow(step: DerivationStep, k: number): HTMLElement {
     const row = element('div', 'dv-row');
     row.dataset.step = String(k);
-    const label = element('span', 'dv-step', k === 0 ? 'ω' : `⇒ ${k}`);
-    label.title = k === 0 ? 'Step 0: the axiom' : `Step ${k}`;
+    const [text, title] = stepLabel(step, k);
+    const label = element('span', 'dv-step', text);
+    label.title = title;
     row.append(label);
     let group: HTMLElement | undefined;
     step.texts.forEach((text, i) => {
@@ -282,6 +304,34 @@ export class DerivationView {
   private mark(step: number, i: number, className: string): void {
     for (const chip of this.body.querySelectorAll(`.dv-m[data-step="${step}"][data-i="${i}"]`)) chip.classList.add(className);
   }
+}
+
+/**
+ * What the view says above the rows: the steps shown, or for a timed grammar (ABOP 6.1) the rounds
+ * of replacements up to its time and, last, the string at that time.
+ */
+export function sequenceCaption(steps: readonly DerivationStep[]): string {
+  const last = steps[steps.length - 1].time;
+  if (last !== undefined) {
+    const ageing = steps.length > 1 && steps[steps.length - 1].origin.every((o) => o === NOT_REWRITTEN);
+    return (
+      `The timed derivation up to ${timeWords(last)}: a row per round of replacements, at its time` +
+      `${ageing ? `, and last the string at ${timeWords(last)} (every module older since)` : ''}. ` +
+      'Each band is what one module of the row before became, in the colour of the production that wrote it. Hover a module.'
+    );
+  }
+  return steps.length === 1
+    ? 'Step 0: the axiom. Step the iterations up to watch it being rewritten.'
+    : `The derivation, step 0 to ${steps.length - 1}: each band is what one module of the step before became, in the colour of the production that wrote it. Hover a module.`;
+}
+
+/** A row's label and its tooltip: `ω`, `⇒ 2`; a timed derivation's rows say their time (`⇒ t 2`, `t 2.5`). */
+export function stepLabel(step: DerivationStep, k: number): [string, string] {
+  if (step.time === undefined) return k === 0 ? ['ω', 'Step 0: the axiom'] : [`⇒ ${k}`, `Step ${k}`];
+  const t = shortNumber(String(step.time));
+  if (k === 0) return ['ω', `The axiom, ${timeWords(step.time)}`];
+  if (step.origin.every((o) => o === NOT_REWRITTEN)) return [`t ${t}`, `The string at ${timeWords(step.time)}: nothing replaced since the row before, every timed module older`];
+  return [`⇒ t ${t}`, `Round ${k}, at ${timeWords(step.time)}: the modules at their terminal age replaced`];
 }
 
 /** A module as the string panel writes it (numbers to 6 significant digits), the exact text in its tooltip. */

@@ -3,7 +3,7 @@
 // found a"). Pure functions of the core's answers and the source text, tested without a page.
 // Modules are written as the string panel writes them (numbers to 6 significant digits).
 import type { Explanation, MatchReport, ProductionInfo } from '../../core';
-import { shortModuleText } from './module-text';
+import { shortModuleText, shortNumber } from './module-text';
 import { plural } from '../preview';
 
 /** The 1-based line of a UTF-16 offset. */
@@ -22,6 +22,17 @@ export function describeProduction(source: string, p: ProductionInfo): string {
 /** The condition of a production as written, or null. */
 export function conditionText(source: string, p: ProductionInfo): string | null {
   return p.condition ? source.slice(p.condition.from, p.condition.to).trim() : null;
+}
+
+/**
+ * What the panels show of a timed grammar (ABOP 6.1) derived at growth time `t` (the timeline's,
+ * else its iterations), and where to look: its last step is the last round of replacements before t.
+ */
+export function stringAtTime(t: number): string {
+  return (
+    `The string at t = ${shortNumber(String(t))} (a timed module’s first parameter is its age). ` +
+    'Put the cursor on a production to see where it fired in the last round before t, or click the plant to ask how a part of it was made.'
+  );
 }
 
 /** What production `p` did in the last step, from its explanation's counts. */

@@ -100,6 +100,9 @@ export class StringPanel {
 
   private async render(): Promise<void> {
     const ticket = ++this.ticket;
+    // Hidden (the Derivation tab shown, the panels folded): nothing asked, nothing drawn; the
+    // resize observer draws it when it shows (a timed grammar's builds arrive many times a second).
+    if (this.scroller.getClientRects().length === 0) return;
     const rows = Math.ceil(this.count / MODULES_PER_ROW);
     const { first, last } = visibleRows(this.scroller.scrollTop, this.scroller.clientHeight || 200, rows);
     const start = first * MODULES_PER_ROW;

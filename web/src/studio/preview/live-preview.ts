@@ -232,6 +232,11 @@ export class LivePreview {
     for (const listener of this.sketchListeners) listener(sketch);
   }
 
+  /** A build asked for is under way (not yet delivered, stopped or crashed). */
+  get busy(): boolean {
+    return this.pendingSince !== undefined;
+  }
+
   /** The last build asked for has been delivered: what is on screen is of the text and options now. */
   get settled(): boolean {
     return this.requestedKey !== undefined && this.deliveredKey === this.requestedKey;

@@ -56,11 +56,16 @@ export function createLivePreview(parts: StudioPreviewParts): LivePreview {
       };
     },
     diagnosticsChanged: () => editor.refreshDiagnostics(),
-    adopt: (result) => {
-      contexts.setBuild(result.build, result.inspector, result.source);
-      derivationView.setBuild(result.build, result.inspector);
-      contexts.cursorAt(editor.cursor());
-    },
+    // The panels follow the plant on screen (while the growth plays, at the timeline's pace).
+    adopt: (result) =>
+      parts.timeline.handOver({
+        give: () => {
+          contexts.setBuild(result.build, result.inspector, result.source, result.options);
+          derivationView.setBuild(result.build, result.inspector);
+          contexts.cursorAt(editor.cursor());
+        },
+        drop: () => result.inspector.free(),
+      }),
     crashed: reportCoreCrashes(parts.notice),
   });
 }

@@ -2,9 +2,11 @@
 // arrays (once the timeline is used), and the timeline bar under the view (./timeline-bar.ts, its
 // own chunk), loaded after the first plant or by the first Play. Play, the keyboard and share
 // links reach the timeline through here.
+import { derivedBuildOptions, derivedTime } from '../../plant-controls';
 import type { SharedGrowth } from '../../share';
 import type { PlantView } from '../../view';
 import type * as Bar from './timeline-bar';
+import type { HandOver } from './panel-pace';
 
 /** The bar's place in the page (index.html) and the toolbar's Play. */
 export interface TimelineElements {
@@ -29,6 +31,8 @@ export interface TimelineStudio {
   stepwise: () => boolean;
   /** The derivation steps of the plant on screen (N before its growth arrays are there). */
   steps: () => number | undefined;
+  /** A build is under way (a timed grammar's next time waits for it). */
+  busy: () => boolean;
 }
 
 /** The timeline, its bar loaded on first use. */
@@ -71,7 +75,7 @@ export class LazyTimeline {
    * iterations); a build follows a change.
    */
   deriveAt(t: number | null): void {
-    const at = t !== null && this.studio?.stepwise() ? Math.floor(t) : t;
+    const at = derivedTime(t, this.studio?.stepwise() ?? false);
     if (at === this.timedAt) return;
     this.timedAt = at;
     this.studio?.rebuild();
@@ -84,8 +88,7 @@ export class LazyTimeline {
    * before it, as Play's steps do: derivations that count each step's elements are not continued).
    */
   buildOptions(): { growth?: true; time?: number; iterations?: number } {
-    if (this.timedAt !== null && this.studio?.stepwise()) return { iterations: this.timedAt };
-    return { ...(this.growthWanted ? { growth: true } : {}), ...(this.timedAt === null ? {} : { time: this.timedAt }) };
+    return derivedBuildOptions(this.timedAt, this.studio?.stepwise() ?? false, this.growthWanted);
   }
 
   /** The bar, loaded (and shown) on first call. */
@@ -110,6 +113,15 @@ export class LazyTimeline {
   /** A build was delivered: the bar shows its steps (the plant may still be on its way to the GPU). */
   delivered(): void {
     this.loaded?.stepsChanged();
+  }
+
+  /**
+   * A delivered build for the String and Derivation panels: given to them at once, or while the
+   * growth plays at the bar's pace (./panel-pace.ts: at most 4 a second, the newest at Pause).
+   */
+  handOver(build: HandOver): void {
+    if (this.loaded) this.loaded.handOver(build);
+    else build.give();
   }
 
   /** Another text is opened: playing stops, the plant shows whole. */

@@ -5,9 +5,10 @@
 // on the slider ← → a step (Shift: a tenth), Home / End the range's ends, Space play / pause; on
 // the view Space too; Alt+P anywhere. Loaded after the first plant, or by the first Play.
 import { cleanGrowth, type SharedGrowth } from '../../share';
-import { Timeline, TIMELINE_SPEEDS, type TimelineState } from '../../plant-controls/timeline';
+import { GrowthShow, Timeline, TIMELINE_SPEEDS, type TimelineState } from '../../plant-controls/timeline';
 import type { GrowthCamera } from '../../view';
 import type { TimelineElements, TimelineStudio } from './lazy-timeline';
+import { PanelPace, type HandOver } from './panel-pace';
 import './timeline-bar.css';
 
 /** Degrees the turntable turns the camera for each step of growth played. */
@@ -117,11 +118,15 @@ export interface TimelineBuilds {
 /** The timeline bar and the timeline it drives. */
 export class TimelineBar {
   readonly timeline: Timeline;
+  /** The plant at t: a timed grammar derived at t (builds paced), any other grown on the GPU. */
+  private readonly growth: GrowthShow;
   private readonly controls: BarControls;
   /** The user (or a link) has put the timeline somewhere: new plants show that time, not whole. */
   private engaged = false;
   /** The last t shown while playing, for the turntable. */
   private lastT: number | null = null;
+  /** How the panels follow the builds while the growth plays. */
+  private readonly panels = new PanelPace(() => this.timeline.playing);
 
   constructor(
     private readonly els: TimelineElements,
@@ -129,10 +134,14 @@ export class TimelineBar {
     private readonly builds: TimelineBuilds,
   ) {
     const { view } = studio;
-    this.timeline = new Timeline({ span: () => studio.timedSpan() ?? view.growthSpan(), show: (t) => this.show(t) });
+    this.growth = new GrowthShow(view, { timedSpan: () => studio.timedSpan(), deriveAt: (t) => builds.deriveAt(t), busy: () => studio.busy() });
+    this.timeline = new Timeline({ span: () => this.growth.span(), show: (t) => this.show(t) });
     this.controls = barControls(els.bar);
     els.bar.hidden = false;
-    this.timeline.onChange((state) => this.render(state));
+    this.timeline.onChange((state) => {
+      if (!state.playing) this.panels.flush(); // paused: the panels show the plant on screen
+      this.render(state);
+    });
     this.listen();
     view.onPlantShown(() => this.plantShown());
     this.plantShown();
@@ -199,21 +208,17 @@ export class TimelineBar {
 
   /**
    * Shows growth time `t`: the whole plant (and the Lines mode's lines) at the span's end. A timed
-   * grammar is derived at t, a stepwise one at ⌊t⌋ (a build: the newest request waits while one
-   * runs); any other grows on the GPU from its whole plant's mesh.
+   * grammar is derived at t, a stepwise one at ⌊t⌋ (a build, asked for once the one under way has
+   * arrived); any other grows on the GPU from its whole plant's mesh.
    */
   private show(t: number): void {
     const { view } = this.studio;
-    const timedSpan = this.studio.timedSpan();
-    this.builds.deriveAt(timedSpan === null || t >= timedSpan ? null : t);
-    const span = timedSpan === null ? view.growthSpan() : 0;
-    const whole = span === null || t >= span;
-    view.holdTubes(TUBES_HOLDER, !whole);
+    view.holdTubes(TUBES_HOLDER, !this.growth.show(t));
     // Each derived plant would be framed anew, and a plant growing would seem to stand still: the
     // camera stays on the whole plant it framed (unless it follows the growth).
+    const timedSpan = this.studio.timedSpan();
     const derived = timedSpan !== null && t < timedSpan;
     view.holdFrame(TUBES_HOLDER, derived && this.controls.camera.value === 'final');
-    view.setGrowthTime(whole ? null : t);
     if (this.controls.turntable.checked && this.timeline.playing && this.lastT !== null && t > this.lastT) {
       view.turn((t - this.lastT) * TURNTABLE_DEGREES_PER_STEP);
     }
@@ -228,9 +233,20 @@ export class TimelineBar {
     this.render(this.timeline.state);
   }
 
-  /** A build was delivered: its steps are shown (the slider's end, the label). */
+  /**
+   * A build was delivered: its steps are shown (the slider's end, the label). A time wanted while
+   * it was under way is derived now, and so is the time shown (a link's) if this build is the
+   * first to say its grammar is timed (its plant was shown before the studio knew).
+   */
   stepsChanged(): void {
+    if (this.engaged) this.timeline.refresh();
+    this.growth.delivered();
     this.render(this.timeline.state);
+  }
+
+  /** A delivered build for the panels: at once, or while playing at their pace ({@link PanelPace}). */
+  handOver(build: HandOver): void {
+    this.panels.offer(build);
   }
 
   /** Another text is opened: playing stops and the plant shows whole. */

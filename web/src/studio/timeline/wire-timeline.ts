@@ -11,6 +11,6 @@ export function wireTimeline({ timeline, view, preview, derivation }: StudioPart
     return build?.timed || build?.stepwise ? (derivation.iterations() ?? build.grammarIterations) : null;
   };
   const stepwise = () => preview.lastGood?.build.stepwise === true;
-  timeline.connect({ view, rebuild: () => preview.rebuild(), steps: () => preview.lastGood?.build.stats.iterations, timedSpan, stepwise });
+  timeline.connect({ view, rebuild: () => preview.rebuild(), steps: () => preview.lastGood?.build.stats.iterations, timedSpan, stepwise, busy: () => preview.busy });
   preview.onDelivered(() => timeline.delivered());
 }
