@@ -302,11 +302,14 @@ export function copyMesh(result: MeshHolder, { forGpu = false, spares = {} }: Pi
  * The mesh's growth arrays, when the build asked for them (`BuildOptions.growth`) and the studio
  * core made it (the first plant's core has no growth in time); else nothing.
  */
-function growthOf(result: MeshHolder): Pick<MeshBuffers, 'growthOrigins' | 'growthTimes'> {
+function growthOf(result: MeshHolder): Pick<MeshBuffers, 'growthOrigins' | 'growthTimes' | 'segmentGrowthTimes'> {
   if (!('growthTimes' in result)) return {};
   const growthTimes = result.growthTimes();
-  if (growthTimes.length === 0) return {};
-  return { growthOrigins: ownedArray(result.growthOrigins()), growthTimes: ownedArray(growthTimes) };
+  const segmentGrowthTimes = result.segmentGrowthTimes();
+  return {
+    ...(growthTimes.length === 0 ? {} : { growthOrigins: ownedArray(result.growthOrigins()), growthTimes: ownedArray(growthTimes) }),
+    ...(segmentGrowthTimes.length === 0 ? {} : { segmentGrowthTimes: ownedArray(segmentGrowthTimes) }),
+  };
 }
 
 /** Copies a wasm explanation into plain data and frees it. */

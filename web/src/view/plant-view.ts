@@ -321,6 +321,7 @@ export class PlantView {
     if (time === this.growthAt) return;
     this.showGrowth(time);
     if (time !== null && !this.growthCode) this.loadGrowth();
+    if (this.segmentsIn2D) this.placeLines(); // (grown on the CPU there)
     const bounds = time !== null && this.growthCamera === 'follow' ? this.growthCode?.grownBounds(this.shown, time) : null;
     if (bounds) {
       const turned = this.turned;
@@ -349,6 +350,7 @@ export class PlantView {
       (code) => {
         this.growthCode = code;
         this.materials.grow(code, [this.shown.lines.material]);
+        this.segmentLines.grow(new code.LineGrowth(this.materials.growthTime));
         const t = this.growthAt;
         this.growthAt = null;
         this.setGrowthTime(t);

@@ -20,6 +20,8 @@ export class View2D {
   private readonly canvas: SketchCanvas;
   /** The Lines mode's segments are drawn here, not by WebGL ({@link placeLines}). */
   private segmentsHere = false;
+  /** The segments' ends drawn here (grown to the growth time shown). */
+  private endsHere: Float32Array | undefined;
   /** The Lines mode's highlighted segments (drawn over the others) and the others' brightness. */
   private segmentHighlight: { over: LineOverlay | null; dim: number } = { over: null, dim: 1 };
   private readonly drawingBufferSize = new Vector2();
@@ -82,8 +84,11 @@ export class View2D {
     // Skia's round joins cost more than the difference (1,048,576 segments 2 pixels wide: 733
     // against 511 ms a frame without a GPU).
     const style = { width: width * ratio, round: width * ratio > 4, dim };
-    if (!this.segmentsHere) this.canvas.show(mesh.segmentEnds, mesh.segmentColors, style);
-    this.canvas.restyle(style, over && { ends: over.ends, colors: over.colors, width: (width + HIGHLIGHT_EXTRA) * ratio });
+    // At a growth time, the segments as grown then (./line-growth.ts).
+    const ends = this.segmentLines.grown(mesh.segmentEnds, mesh.segmentGrowthTimes);
+    if (!this.segmentsHere || ends !== this.endsHere) this.canvas.show(ends, mesh.segmentColors, style);
+    this.endsHere = ends;
+    this.canvas.restyle(style, over && { ends: this.segmentLines.grown(over.ends, over.times), colors: over.colors, width: (width + HIGHLIGHT_EXTRA) * ratio });
     this.segmentsHere = true;
     return true;
   }

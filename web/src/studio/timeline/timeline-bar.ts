@@ -12,8 +12,6 @@ import './timeline-bar.css';
 
 /** Degrees the turntable turns the camera for each step of growth played. */
 export const TURNTABLE_DEGREES_PER_STEP = 45;
-/** Who holds the view's tubes while a growth time is shown (the Lines mode's lines do not grow). */
-const TUBES_HOLDER = 'timeline';
 
 /** t as the bar writes it: two decimals. */
 export function timeText(t: number): string {
@@ -195,7 +193,7 @@ export class TimelineBar {
   }
 
   /**
-   * Shows growth time `t`: the whole plant (and the Lines mode's lines) at the span's end. A timed
+   * Shows growth time `t` (the whole plant at the span's end), in the Lines mode as in the Tubes mode. A timed
    * grammar is derived at t (a build: the newest request waits while one runs); any other grows
    * on the GPU from its whole plant's mesh.
    */
@@ -205,7 +203,6 @@ export class TimelineBar {
     this.builds.deriveAt(timedSpan === null || t >= timedSpan ? null : t);
     const span = timedSpan === null ? view.growthSpan() : 0;
     const whole = span === null || t >= span;
-    view.holdTubes(TUBES_HOLDER, !whole);
     view.setGrowthTime(whole ? null : t);
     if (this.controls.turntable.checked && this.timeline.playing && this.lastT !== null && t > this.lastT) {
       view.turn((t - this.lastT) * TURNTABLE_DEGREES_PER_STEP);
@@ -230,7 +227,6 @@ export class TimelineBar {
   clear(): void {
     this.timeline.pause();
     this.engaged = false;
-    this.studio.view.holdTubes(TUBES_HOLDER, false);
     this.studio.view.setGrowthTime(null);
     this.render(this.timeline.state);
   }
