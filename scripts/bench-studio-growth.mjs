@@ -1,6 +1,8 @@
 // `npm run bench:studio`'s growth rows (issue 45): the main thread's work per frame while the
-// timeline plays the growth of ABOP 1.24d at n = 10 (116,050 segments, Tubes mode), and the frames
-// per second it plays ABOP 1.24d at n = 7 (4,118 segments) at. In headless Chromium on the built
+// timeline plays the growth of ABOP 1.24d at n = 10 (116,050 segments), and the frames per second
+// it plays ABOP 1.24d at n = 7 (4,118 segments) at: in the Tubes mode, and in the Lines mode (the
+// flat tree's own: its segments grown on the GPU by texel lines, or, where a software rasterizer
+// draws the view, the big tree's grown on the CPU and drawn on the 2D canvas over it). In headless Chromium on the built
 // site (dist/). Every requestAnimationFrame callback of the page is timed (an init script wraps
 // them): a frame's work is the sum of its callbacks, the timeline's tick and the view's draw call
 // (the draw itself runs in the GPU process). Both of bench-studio.mjs's Chromium setups;
@@ -9,8 +11,10 @@ import { chromium } from 'playwright-core';
 import { SETUPS, servedSite, writeResults } from './bench-site.mjs';
 
 const WORKLOADS = [
-  { name: 'ABOP 1.24d, n = 10 (116,050 segments), Tubes mode', iterations: 10 },
-  { name: 'ABOP 1.24d, n = 7 (4,118 segments), Tubes mode', iterations: 7 },
+  { name: 'ABOP 1.24d, n = 10 (116,050 segments), Tubes mode', iterations: 10, tubes: true },
+  { name: 'ABOP 1.24d, n = 7 (4,118 segments), Tubes mode', iterations: 7, tubes: true },
+  { name: 'ABOP 1.24d, n = 10 (116,050 segments), Lines mode', iterations: 10, tubes: false },
+  { name: 'ABOP 1.24d, n = 7 (4,118 segments), Lines mode', iterations: 7, tubes: false },
 ];
 const PLAY_MS = 4000;
 const setups = Object.entries(SETUPS).filter(([name]) => process.env.BENCH_SETUP === undefined || name.toLowerCase().startsWith(process.env.BENCH_SETUP));
@@ -44,7 +48,7 @@ try {
       await page.goto(url);
       await page.waitForFunction(() => (window.__meristem?.lastStats?.segments ?? 0) > 0);
       await page.getByTestId('iterations').fill(String(workload.iterations));
-      await page.getByTestId('render-lines').click(); // Tubes
+      if (workload.tubes) await page.getByTestId('render-lines').click(); // Tubes (the flat tree's lines otherwise)
       await page.getByTestId('timeline-slider').waitFor();
       await page.getByTestId('timeline-slider').fill('0'); // the timeline in use: the next build carries growth times
       await page.waitForFunction((n) => window.__meristem?.growth?.().span === n && window.__meristem.preview?.settled, workload.iterations, { timeout: 120_000 });

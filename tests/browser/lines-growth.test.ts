@@ -3,40 +3,23 @@
 // mode (its lines as wide as chosen, no tubes in their place), the frames between the steps are
 // neither step's and grow from one to the next, and at t = 0 only the axiom's segment is drawn
 // (the segments not grown yet draw nothing, not a dot at each start).
-import { chromium, type Browser, type Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { beforeAll, describe, expect, it } from 'vitest';
 import { changedShare, foregroundExtent, foregroundShare, strokeWidth, type Picture } from './pictures';
-import { canvasPicture, generation, nextBuild, openExample, openStudio } from './studio-page';
+import { page, problems, useStudio } from './session';
+import { canvasPicture, generation, nextBuild, openGrowing, scrubTo } from './studio-page';
 
-let browser: Browser;
-let page: Page;
-let problems: string[];
+useStudio();
 
 beforeAll(async () => {
-  browser = await chromium.launch({ executablePath: '/usr/bin/chromium' });
-  ({ page, problems } = await openStudio(browser));
-  await page.getByTestId('timeline-slider').waitFor();
-});
-
-afterAll(async () => {
-  await browser?.close();
+  await page.getByTestId('timeline-slider').waitFor(); // the bar under the view loads after the first plant
 });
 
 const growth = () => page.evaluate(() => window.__meristem!.growth!());
 const render = () => page.getByTestId('viewport').getAttribute('data-render');
 
-/** Scrubs the timeline to `t` and waits for its frame. */
-async function scrubTo(t: number): Promise<void> {
-  await page.getByTestId('timeline-slider').fill(String(t));
-  await page.waitForFunction((want) => {
-    const { t, span } = window.__meristem!.growth!();
-    return span !== null && (t === want || (t === null && want >= span));
-  }, t);
-}
-
 /** The picture at growth time `t`, in the Lines mode. */
 async function linesAt(t: number): Promise<Picture> {
-  await scrubTo(t);
+  await scrubTo(page, t);
   const picture = await canvasPicture(page, `lines-growth-t${t.toFixed(2)}.png`);
   expect(await render(), `t = ${t}: drawn as lines, not tubes`).toBe('lines');
   return picture;
@@ -44,15 +27,11 @@ async function linesAt(t: number): Promise<Picture> {
 
 describe('the Lines mode on the timeline', () => {
   it('grows a flat plant as lines: between steps n and n + 1 the frames are neither step, and grow', async () => {
-    expect(await openExample(page, 'abop-1.24c.lsys')).toBe('ok');
-    let before = await generation(page);
-    await page.getByTestId('iterations').fill('3');
-    await nextBuild(page, before);
-    await page.getByTestId('grid').click(); // only the plant differs from the background
+    await openGrowing(page, 'abop-1.24c.lsys', 3);
     expect(await render(), 'a flat plant is drawn as lines').toBe('lines');
     const whole = await canvasPicture(page, 'lines-growth-whole.png');
 
-    before = await generation(page);
+    const before = await generation(page);
     await page.getByTestId('timeline-slider').fill('2');
     await nextBuild(page, before); // the first use asks for a build with growth times
     expect((await growth()).span).toBe(3);

@@ -321,7 +321,9 @@ export class PlantView {
     if (time === this.growthAt) return;
     this.showGrowth(time);
     if (time !== null && !this.growthCode) this.loadGrowth();
-    if (this.segmentsIn2D) this.placeLines(); // (grown on the CPU there)
+    // What is drawn in 2D is grown on the CPU.
+    if (this.segmentsIn2D) this.placeLines();
+    else this.view2D?.regrow();
     const bounds = time !== null && this.growthCamera === 'follow' ? this.growthCode?.grownBounds(this.shown, time) : null;
     if (bounds) {
       const turned = this.turned;

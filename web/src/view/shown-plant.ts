@@ -60,9 +60,8 @@ export class ShownPlant {
     oldLines.dispose();
     this.flat = flat;
     this.segmentsBox = undefined;
-    const entries = (asLines ? mesh.lines.length : mesh.positions.length) / 3;
-    // The segments' times: the Lines mode's lines grow by them (the mesh may hold no vertex).
-    this.growthSpan = growthSpanOf(mesh.growthTimes?.length === entries * 2 ? mesh.growthTimes : undefined, asLines ? undefined : mesh.segmentGrowthTimes);
+    // With the segments' times: the Lines mode's lines grow by them (the mesh may hold no vertex).
+    this.growthSpan = growthSpanOf(mesh.growthTimes, mesh.segmentGrowthTimes);
   }
 
   /** Whether a plant drawn as lines, one pixel wide, is on screen (a plant too large to mesh, a sketch). */

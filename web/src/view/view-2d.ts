@@ -22,6 +22,8 @@ export class View2D {
   private segmentsHere = false;
   /** The segments' ends drawn here (grown to the growth time shown). */
   private endsHere: Float32Array | undefined;
+  /** The plant drawn here as one-pixel lines (a sketch, a model too large to mesh). */
+  private thin: MeshBuffers | undefined;
   /** The Lines mode's highlighted segments (drawn over the others) and the others' brightness. */
   private segmentHighlight: { over: LineOverlay | null; dim: number } = { over: null, dim: 1 };
   private readonly drawingBufferSize = new Vector2();
@@ -56,9 +58,15 @@ export class View2D {
   showPlant(lines: MeshBuffers | undefined): boolean {
     this.canvas.clear();
     this.segmentsHere = false;
-    if (!lines || lines.lines.length === 0) return false;
-    this.canvas.show(lines.lines, lines.lineColors);
-    return true;
+    this.thin = lines?.lines.length ? lines : undefined;
+    return this.regrow();
+  }
+
+  /** Draws the one-pixel lines shown grown to the growth time shown (./line-growth.ts); true if there are any. */
+  regrow(): boolean {
+    const thin = this.thin;
+    if (thin) this.canvas.show(this.segmentLines.grown(thin.lines, thin.segmentGrowthTimes), thin.lineColors);
+    return !!thin;
   }
 
   /** The Lines mode's highlight, for {@link placeLines}. */
