@@ -321,9 +321,9 @@ export class PlantView {
     if (time === this.growthAt) return;
     this.showGrowth(time);
     if (time !== null && !this.growthCode) this.loadGrowth();
-    // What is drawn in 2D is grown on the CPU.
+    // The Lines mode's segments drawn in 2D are grown on the CPU; one-pixel lines are WebGL's meanwhile.
     if (this.segmentsIn2D) this.placeLines();
-    else this.view2D?.regrow();
+    else if (this.view2D) this.shown.lines.visible = !this.view2D.thinIn2D(time === null);
     const bounds = time !== null && this.growthCamera === 'follow' ? this.growthCode?.grownBounds(this.shown, time) : null;
     if (bounds) {
       const turned = this.turned;

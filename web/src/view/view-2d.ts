@@ -59,14 +59,21 @@ export class View2D {
     this.canvas.clear();
     this.segmentsHere = false;
     this.thin = lines?.lines.length ? lines : undefined;
-    return this.regrow();
+    return this.thinIn2D(true);
   }
 
-  /** Draws the one-pixel lines shown grown to the growth time shown (./line-growth.ts); true if there are any. */
-  regrow(): boolean {
+  /**
+   * Draws the one-pixel lines shown here (`on`), or leaves those with growth times to WebGL: while
+   * a growth time is shown, the growth's shader grows them there at the cost of a uniform (grown
+   * on the CPU and drawn here, ABOP 1.24d at n = 10 took 15 ms of the page's thread a frame).
+   * True if they are drawn here now.
+   */
+  thinIn2D(on: boolean): boolean {
     const thin = this.thin;
-    if (thin) this.canvas.show(this.segmentLines.grown(thin.lines, thin.segmentGrowthTimes), thin.lineColors);
-    return !!thin;
+    if (!thin) return false;
+    if (on || !thin.segmentGrowthTimes) this.canvas.show(thin.lines, thin.lineColors);
+    else this.canvas.clear();
+    return on || !thin.segmentGrowthTimes;
   }
 
   /** The Lines mode's highlight, for {@link placeLines}. */
