@@ -71,9 +71,11 @@ export class View2D {
   thinIn2D(on: boolean): boolean {
     const thin = this.thin;
     if (!thin) return false;
-    if (on || !thin.segmentGrowthTimes) this.canvas.show(thin.lines, thin.lineColors);
-    else this.canvas.clear();
-    return on || !thin.segmentGrowthTimes;
+    const here = on || !thin.segmentGrowthTimes;
+    // (Shown again only when it changes: each frame of the growth played asks.)
+    if (here && !this.canvas.active) this.canvas.show(thin.lines, thin.lineColors);
+    if (!here) this.canvas.clear();
+    return here;
   }
 
   /** The Lines mode's highlight, for {@link placeLines}. */
