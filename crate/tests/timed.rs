@@ -375,4 +375,19 @@ fn an_lpy_continuous_growth_model_imports_with_its_time_step_and_grows() {
     let b = build(&imported.text, &BuildOptions::default());
     let m = b.model.as_ref().expect("model");
     assert_eq!(m.settings.dt, 0.1);
+    // Its organs lengthen with their age at every step: on the timeline it is stepwise, derived
+    // to each whole step rather than grown in from the whole plant's mesh.
+    assert!(m.settings.stepwise() && !m.settings.timed());
+}
+
+#[test]
+fn a_time_step_without_timed_modules_makes_a_grammar_stepwise() {
+    let settings = |text: &str| {
+        let b = build(text, &BuildOptions::default());
+        b.model.expect("model").settings
+    };
+    assert!(settings("#dt 0.1\naxiom: A(0)\nA(t) -> A(t+dt)").stepwise());
+    assert!(!settings("axiom: F\nF -> FF").stepwise());
+    let timed = settings("#dt 0.5\n#terminal_age A 2 B 1\naxiom: A(0)\nA(x) -> A(1) B(0)");
+    assert!(timed.timed() && !timed.stepwise());
 }

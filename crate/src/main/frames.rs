@@ -86,7 +86,7 @@ pub fn export_frames(
         Err(e) => return fail(e),
     };
     // The pictures draw the skeleton: the mesh needs no triangles, only its growth. The whole
-    // plant is that of its steps; a timed grammar is derived again at each frame's time.
+    // plant is that of its steps; a timed or stepwise grammar is derived again at each frame's time.
     options.mesh.growth = true;
     options.mesh.max_vertices = 0;
     options.time = None;
@@ -106,12 +106,13 @@ pub fn export_frames(
         }
     }
     let (plant, schedule) = (&build.plant, growth_schedule(&build.plant.skeleton));
-    let timed = build
+    // A timed grammar is derived at each frame's time, a stepwise one at its whole steps.
+    let derived = build
         .model
         .as_ref()
-        .is_some_and(|m| !m.settings.terminal_ages.is_empty());
+        .is_some_and(|m| m.settings.timed() || m.settings.stepwise());
     for (path, t) in frames {
-        let at = if timed {
+        let at = if derived {
             let time = Some(f64::from(t.max(0.0)));
             let options = BuildOptions {
                 time,

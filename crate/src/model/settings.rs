@@ -45,6 +45,8 @@ pub struct Settings {
     pub terminal_age_span: Option<Span>,
     /// `#dt`: the time one derivation step covers.
     pub dt: f64,
+    /// The grammar has a `#dt` directive.
+    pub dt_given: bool,
 }
 
 /// The colour index's default colours: a ramp from bark brown (0) through olive and greens to
@@ -87,6 +89,19 @@ impl Settings {
             _ => 0.0,
         }
     }
+
+    /// The grammar has timed modules (`#terminal_age`, ABOP 6.1): it derives in continuous time.
+    pub fn timed(&self) -> bool {
+        !self.terminal_ages.is_empty()
+    }
+
+    /// The grammar declares its time step (`#dt`) and has no timed modules: the continuous-growth
+    /// idiom of L-Py and cpfg, whose modules carry their age and change it at every step. Its
+    /// plant at growth time t is its derivation's at step ⌊t⌋ (docs/LANGUAGE.md, "Growth in time"),
+    /// not the whole plant's mesh grown in, which would show every organ at its final size.
+    pub fn stepwise(&self) -> bool {
+        self.dt_given && !self.timed()
+    }
 }
 
 /// The default of a directive's `k`-th argument (in its longest form), from the vocabulary.
@@ -125,6 +140,7 @@ impl Default for Settings {
             terminal_ages: Vec::new(),
             terminal_age_span: None,
             dt: default_of(DirectiveKind::Dt),
+            dt_given: false,
         }
     }
 }

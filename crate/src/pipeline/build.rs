@@ -279,7 +279,7 @@ fn steps_and_time(model: &Model, options: &BuildOptions) -> (u32, Option<f64>) {
         .map(|t| if t.is_finite() { t.max(0.0) } else { 0.0 });
     let whole = |t: f64| t.min(u32::MAX as f64) as u32;
     let steps = match time {
-        Some(t) if model.settings.terminal_ages.is_empty() => whole(t.floor()),
+        Some(t) if !model.settings.timed() => whole(t.floor()),
         Some(t) => whole(t.ceil()),
         None => options.iterations.unwrap_or(model.settings.iterations),
     };

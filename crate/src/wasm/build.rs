@@ -219,7 +219,19 @@ impl PlantBuild {
         self.build
             .model
             .as_ref()
-            .is_some_and(|m| !m.settings.terminal_ages.is_empty())
+            .is_some_and(|m| m.settings.timed())
+    }
+
+    /// True when the grammar is stepwise ([`crate::model::Settings::stepwise`]: a `#dt` without
+    /// timed modules): its plant at a growth time t is derived to step ⌊t⌋, not grown from the
+    /// whole plant's mesh. In the studio core only (the timeline builds with it).
+    #[cfg(feature = "growth")]
+    #[wasm_bindgen(getter)]
+    pub fn stepwise(&self) -> bool {
+        self.build
+            .model
+            .as_ref()
+            .is_some_and(|m| m.settings.stepwise())
     }
 
     /// The step the derivation went on from, when it continued an earlier build's (`buildOn`);

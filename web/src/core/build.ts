@@ -269,6 +269,8 @@ export function plainBuild(source: string, result: WasmPlantBuild, { forGpu = fa
     grammarIterations: result.grammarIterations,
     seed: result.seed,
     timed: result.timed,
+    // (A getter of the studio core's builds only.)
+    stepwise: 'stepwise' in result && result.stepwise === true,
     ...(result.continuedFrom === undefined ? {} : { continuedFrom: result.continuedFrom }),
   }));
 }

@@ -161,6 +161,13 @@ export interface PlantBuild {
    */
   timed: boolean;
   /**
+   * The grammar is stepwise: a `#dt` without timed modules (L-Py's and cpfg's continuous growth,
+   * whose modules change with their age at every step). Its plant at growth time t is its
+   * derivation's at step ⌊t⌋, not grown on the GPU from the whole plant's (which would show every
+   * organ at its final size). Known from the studio core only (false from the first plant's).
+   */
+  stepwise: boolean;
+  /**
    * The step the derivation went on from when it continued an earlier build's (`inspectPlant`'s
    * `from`: only the steps after it were derived); absent when it derived from the axiom.
    */

@@ -66,6 +66,7 @@ impl Resolver {
         };
         if value > 0.0 {
             s.dt = value;
+            s.dt_given = true;
         } else {
             let message = format!("{} must be above 0, found {value}", d.written);
             self.directive_error("E0211", d, message);

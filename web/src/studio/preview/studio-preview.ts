@@ -41,17 +41,20 @@ export function createLivePreview(parts: StudioPreviewParts): LivePreview {
       derivationView.reload();
     },
     text: () => editor.text(),
-    options: () => ({
-      iterations: derivation.iterations(),
-      seed: derivation.seed(),
-      sides: viewOptions.values.sides,
-      smoothAll: viewOptions.values.smoothAll,
-      // The Lines mode (and `auto` for a flat plant) draws no tubes: they are not meshed (its lines
-      // grow by the segments' growth times, which the growth arrays carry).
-      tubes: tubesFor(viewOptions.values.render),
-      ...(parts.timeline.growthWanted ? { growth: true } : {}),
-      ...(parts.timeline.timedAt === null ? {} : { time: parts.timeline.timedAt }),
-    }),
+    options: () => {
+      // (A stepwise grammar's steps at t replace the iterations.)
+      const timeline = parts.timeline.buildOptions();
+      return {
+        iterations: derivation.iterations(),
+        seed: derivation.seed(),
+        sides: viewOptions.values.sides,
+        smoothAll: viewOptions.values.smoothAll,
+        // The Lines mode (and `auto` for a flat plant) draws no tubes: they are not meshed (its lines
+        // grow by the segments' growth times, which the growth arrays carry).
+        tubes: tubesFor(viewOptions.values.render),
+        ...timeline,
+      };
+    },
     diagnosticsChanged: () => editor.refreshDiagnostics(),
     adopt: (result) => {
       contexts.setBuild(result.build, result.inspector, result.source);

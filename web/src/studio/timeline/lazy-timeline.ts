@@ -20,10 +20,13 @@ export interface TimelineStudio {
   /** Asks for a build (with the options of now: growth arrays once {@link LazyTimeline.growthWanted}). */
   rebuild: () => void;
   /**
-   * The steps a timed grammar's timeline spans (its iterations: the plant at t = N), or null when
-   * the plant on screen is not timed (its growth arrays span its steps).
+   * The steps the timeline spans when the plant at t is derived at t (a timed or a stepwise
+   * grammar: its iterations, the plant at t = N), or null when it grows on the GPU from the whole
+   * plant's mesh (its growth arrays span its steps).
    */
   timedSpan: () => number | null;
+  /** The grammar on screen is stepwise (`PlantBuild.stepwise`): derived to each whole step of t. */
+  stepwise: () => boolean;
   /** The derivation steps of the plant on screen (N before its growth arrays are there). */
   steps: () => number | undefined;
 }
@@ -33,9 +36,10 @@ export class LazyTimeline {
   /** Builds carry growth arrays: the timeline was used (asking for them costs a little meshing and memory). */
   growthWanted = false;
   /**
-   * The growth time a timed grammar's builds are derived at (the build option `time`), or null
-   * for the grammar's own iterations: a timed plant is shown at t by deriving it at t (ABOP 6.1),
-   * not grown from the whole plant's mesh.
+   * The growth time a timed or stepwise grammar's builds are derived at, or null for the grammar's
+   * own iterations: a timed plant is shown at t by deriving it at t (ABOP 6.1), a stepwise one
+   * at ⌊t⌋ (whole steps: then a step forward goes on from the step before), not grown from the
+   * whole plant's mesh. See {@link timeOptions}.
    */
   timedAt: number | null = null;
   private loading: Promise<Bar.TimelineBar> | undefined;
@@ -62,11 +66,26 @@ export class LazyTimeline {
     return this.load().catch((error: unknown) => console.error('The timeline could not load:', error));
   }
 
-  /** Builds from now on derive a timed grammar at `t` (null: at its own iterations); a build follows a change. */
+  /**
+   * Builds from now on derive a timed grammar at `t`, a stepwise one at ⌊t⌋ (null: at its own
+   * iterations); a build follows a change.
+   */
   deriveAt(t: number | null): void {
-    if (t === this.timedAt) return;
-    this.timedAt = t;
+    const at = t !== null && this.studio?.stepwise() ? Math.floor(t) : t;
+    if (at === this.timedAt) return;
+    this.timedAt = at;
     this.studio?.rebuild();
+  }
+
+  /**
+   * What the timeline asks of the builds: once it was used, growth arrays (which the GPU grows);
+   * the time {@link deriveAt} asked for, a timed grammar's `time`; a stepwise grammar's steps at t
+   * as its `iterations`, without growth arrays (so that a build goes on from the one a step
+   * before it, as Play's steps do: derivations that count each step's elements are not continued).
+   */
+  buildOptions(): { growth?: true; time?: number; iterations?: number } {
+    if (this.timedAt !== null && this.studio?.stepwise()) return { iterations: this.timedAt };
+    return { ...(this.growthWanted ? { growth: true } : {}), ...(this.timedAt === null ? {} : { time: this.timedAt }) };
   }
 
   /** The bar, loaded (and shown) on first call. */

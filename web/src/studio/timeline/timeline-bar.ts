@@ -12,6 +12,8 @@ import './timeline-bar.css';
 
 /** Degrees the turntable turns the camera for each step of growth played. */
 export const TURNTABLE_DEGREES_PER_STEP = 45;
+/** Who holds the view's frame while a timed or stepwise grammar is derived at t with the camera on the final plant. */
+const FRAME_HOLDER = 'timeline';
 
 /** t as the bar writes it: two decimals. */
 export function timeText(t: number): string {
@@ -105,7 +107,7 @@ function barControls(bar: HTMLElement): BarControls {
 export interface TimelineBuilds {
   /** Builds carry growth arrays from now on. */
   want(): void;
-  /** A timed grammar's builds derive it at growth time `t` (null: at its iterations). */
+  /** A timed grammar's builds derive it at growth time `t`, a stepwise one's at ⌊t⌋ (null: at its iterations). */
   deriveAt(t: number | null): void;
 }
 
@@ -193,9 +195,9 @@ export class TimelineBar {
   }
 
   /**
-   * Shows growth time `t` (the whole plant at the span's end), in the Lines mode as in the Tubes mode. A timed
-   * grammar is derived at t (a build: the newest request waits while one runs); any other grows
-   * on the GPU from its whole plant's mesh.
+   * Shows growth time `t` (the whole plant at the span's end), in the Lines mode as in the Tubes
+   * mode. A timed grammar is derived at t, a stepwise one at ⌊t⌋ (a build: the newest request
+   * waits while one runs); any other grows on the GPU from its whole plant's mesh.
    */
   private show(t: number): void {
     const { view } = this.studio;
@@ -203,6 +205,10 @@ export class TimelineBar {
     this.builds.deriveAt(timedSpan === null || t >= timedSpan ? null : t);
     const span = timedSpan === null ? view.growthSpan() : 0;
     const whole = span === null || t >= span;
+    // Each derived plant would be framed anew, and a plant growing would seem to stand still: the
+    // camera stays on the whole plant it framed (unless it follows the growth).
+    const derived = timedSpan !== null && t < timedSpan;
+    view.holdFrame(FRAME_HOLDER, derived && this.controls.camera.value === 'final');
     view.setGrowthTime(whole ? null : t);
     if (this.controls.turntable.checked && this.timeline.playing && this.lastT !== null && t > this.lastT) {
       view.turn((t - this.lastT) * TURNTABLE_DEGREES_PER_STEP);
@@ -227,6 +233,7 @@ export class TimelineBar {
   clear(): void {
     this.timeline.pause();
     this.engaged = false;
+    this.studio.view.holdFrame(FRAME_HOLDER, false);
     this.studio.view.setGrowthTime(null);
     this.render(this.timeline.state);
   }

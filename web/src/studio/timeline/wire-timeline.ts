@@ -4,12 +4,13 @@ import type { StudioParts } from '../parts';
 
 /** Connects the timeline to the view and the builds (its bar loads later: {@link LazyTimeline.load}). */
 export function wireTimeline({ timeline, view, preview, derivation }: StudioParts): void {
-  // A timed grammar's plant at t is derived at t: its timeline spans its iterations, whatever t the
-  // plant on screen was derived at.
+  // A timed or stepwise grammar's plant at t is derived at t: its timeline spans its iterations,
+  // whatever t the plant on screen was derived at.
   const timedSpan = () => {
     const build = preview.lastGood?.build;
-    return build?.timed ? (derivation.iterations() ?? build.grammarIterations) : null;
+    return build?.timed || build?.stepwise ? (derivation.iterations() ?? build.grammarIterations) : null;
   };
-  timeline.connect({ view, rebuild: () => preview.rebuild(), steps: () => preview.lastGood?.build.stats.iterations, timedSpan });
+  const stepwise = () => preview.lastGood?.build.stepwise === true;
+  timeline.connect({ view, rebuild: () => preview.rebuild(), steps: () => preview.lastGood?.build.stats.iterations, timedSpan, stepwise });
   preview.onDelivered(() => timeline.delivered());
 }
