@@ -306,12 +306,8 @@ export function copyMesh(result: MeshHolder, { forGpu = false, spares = {} }: Pi
  */
 function growthOf(result: MeshHolder): Pick<MeshBuffers, 'growthOrigins' | 'growthTimes' | 'segmentGrowthTimes'> {
   if (!('growthTimes' in result)) return {};
-  const growthTimes = result.growthTimes();
-  const segmentGrowthTimes = result.segmentGrowthTimes();
-  return {
-    ...(growthTimes.length === 0 ? {} : { growthOrigins: ownedArray(result.growthOrigins()), growthTimes: ownedArray(growthTimes) }),
-    ...(segmentGrowthTimes.length === 0 ? {} : { segmentGrowthTimes: ownedArray(segmentGrowthTimes) }),
-  };
+  const owned = (values: Float32Array) => (values.length > 0 ? ownedArray(values) : undefined);
+  return { growthOrigins: owned(result.growthOrigins()), growthTimes: owned(result.growthTimes()), segmentGrowthTimes: owned(result.segmentGrowthTimes()) };
 }
 
 /** Copies a wasm explanation into plain data and frees it. */

@@ -4,7 +4,7 @@
 // segment's index, and its end is drawn at `start + (end − start) · g`. A segment not started yet
 // draws nothing (not the dot of its round ends). Showing another time changes the uniform alone;
 // the texture is made once a plant. On the CPU, {@link grownSegmentEnds} gives the same segments
-// for picking and for the 2D canvas a software rasterizer's view draws big plants on.
+// for picking.
 import { DataTexture, FloatType, NearestFilter, RGFormat, type ShaderMaterial } from 'three';
 import { grownFraction, UNIFORM } from './growth-function';
 import { WHOLE, type GrowthUniform } from './growth-arrays';
@@ -77,6 +77,15 @@ export function grownSegmentEnds(ends: Float32Array, times: Float32Array, t: num
   return grown;
 }
 
+/** What {@link LineGrowth.attach} makes grow: the Lines mode's lines (./segment-lines.ts), the plant's and the highlighted ones, with their growth times. */
+export interface GrowingLines {
+  plant: TexelLines;
+  overlay: TexelLines;
+  times?: Float32Array | undefined;
+  overTimes?: Float32Array | undefined;
+  growth?: LineGrowth | undefined;
+}
+
 /** The Lines mode's growth at the view's growth time: its lines' shaders and textures, and their segments on the CPU. */
 export class LineGrowth {
   /** The segments last grown on the CPU, by the ends they were grown from. */
@@ -84,6 +93,18 @@ export class LineGrowth {
 
   /** `time`: the view's growth time (./plant-materials.ts's). */
   constructor(private readonly time: GrowthUniform) {}
+
+  /**
+   * Makes the Lines mode's `lines` (./segment-lines.ts) grow with the time, each segment from its
+   * start by its growth times (the mesh's `segmentGrowthTimes`), and grow their segments from now on.
+   */
+  attach(lines: GrowingLines): void {
+    lines.growth = this;
+    this.grow(lines.plant);
+    this.grow(lines.overlay);
+    this.times(lines.plant, lines.times);
+    this.times(lines.overlay, lines.overTimes);
+  }
 
   /** Makes `lines` grow with the time: their program is made again for the next frame. */
   grow(lines: TexelLines): void {

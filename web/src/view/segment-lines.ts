@@ -40,25 +40,26 @@ export class SegmentLines {
   readonly group = new Group();
   /** What WebGL draws of them (see {@link drawn}). */
   private readonly drawables = new Group();
-  private readonly plant: TexelLines;
-  private readonly overlay: TexelLines;
+  /** The plant's lines, and the highlighted ones (drawn over them); ./line-growth.ts makes them grow. */
+  readonly plant: TexelLines;
+  readonly overlay: TexelLines;
   /** The plant's segments when {@link plant} cannot hold them: one pixel wide. */
   private readonly thin = new LineSegments(new BufferGeometry(), new LineBasicMaterial({ vertexColors: true }));
   /** The segments drawn (start xyz, end xyz each), for picking. */
   private ends: Float32Array = new Float32Array(0);
   private modules: Uint32Array = new Uint32Array(0);
   /** The growth times of the segments drawn (two a segment), and of the highlighted ones. */
-  private times: Float32Array | undefined;
-  private overTimes: Float32Array | undefined;
-  /** The growth in time (./line-growth.ts), once the growth's chunk is there ({@link grow}). */
-  private growth: LineGrowth | undefined;
+  times: Float32Array | undefined;
+  overTimes: Float32Array | undefined;
+  /** The growth in time, once the growth's chunk is there (./line-growth.ts `LineGrowth.attach`). */
+  growth: LineGrowth | undefined;
   private width = DEFAULT_LINE_WIDTH;
   /**
    * Segments given to {@link show} while WebGL did not draw the lines (hidden, or not {@link drawn}):
    * their geometry is made when it first does (a big plant's takes tens of milliseconds, wasted in
    * the Tubes mode, or while the view draws the lines in 2D).
    */
-  private unmade: Pick<MeshBuffers, 'segmentEnds' | 'segmentColors' | 'segmentGrowthTimes'> | null = null;
+  private unmade: Pick<MeshBuffers, 'segmentEnds' | 'segmentColors'> | null = null;
   /** The highlight given to {@link highlight} while WebGL did not draw the lines, drawn as {@link unmade} is. */
   private unmadeOverlay: { overlay: LineOverlay | null } | null = null;
 
@@ -103,7 +104,7 @@ export class SegmentLines {
     this.drawables.visible = drawn;
     this.ends = mesh?.segmentEnds ?? empty; // picked, whoever draws them
     this.times = mesh?.segmentGrowthTimes;
-    this.unmade = { segmentEnds: this.ends, segmentColors: mesh?.segmentColors ?? empty, segmentGrowthTimes: this.times };
+    this.unmade = { segmentEnds: this.ends, segmentColors: mesh?.segmentColors ?? empty };
     if (this.drawnByWebGl) this.make();
     else this.setPlant(empty, empty); // the old plant's lines go now
     this.modules = mesh?.segmentModules ?? new Uint32Array(0);
@@ -113,7 +114,7 @@ export class SegmentLines {
   /** Makes the geometry of the segments and highlight last given, if WebGL draws them now. */
   private make(): void {
     if (!this.drawnByWebGl) return;
-    if (this.unmade) this.setPlant(this.unmade.segmentEnds, this.unmade.segmentColors, this.unmade.segmentGrowthTimes);
+    if (this.unmade) this.setPlant(this.unmade.segmentEnds, this.unmade.segmentColors);
     if (this.unmadeOverlay) this.setOverlay(this.unmadeOverlay.overlay);
     this.unmade = this.unmadeOverlay = null;
   }
@@ -123,11 +124,12 @@ export class SegmentLines {
    * pass over the ends (a box, and the sphere around it; an exact box, then an exact sphere took
    * 14 ms of the page's thread for 116,050 segments): the sphere only has to hold every segment.
    */
-  private setPlant(ends: Float32Array, colors: Float32Array, times?: Float32Array): void {
+  private setPlant(ends: Float32Array, colors: Float32Array): void {
     const box = pointsBox(ends);
     const fits = this.plant.fits(ends.length / 6);
     this.plant.setSegments(fits ? ends : new Float32Array(0), colors, box);
-    this.growth?.times(this.plant, fits ? times : undefined);
+    // (The times are those of the segments last shown: of `ends`, or none are drawn.)
+    this.growth?.times(this.plant, fits && ends.length ? this.times : undefined);
     if (!fits || this.thin.visible) {
       this.thin.geometry.dispose();
       this.thin.geometry = new BufferGeometry();
@@ -157,23 +159,6 @@ export class SegmentLines {
     this.overlay.setSegments(ends, overlay?.colors ?? new Float32Array(0), pointsBox(ends));
     this.overTimes = ends.length > 0 ? overlay?.times : undefined;
     this.growth?.times(this.overlay, this.overTimes);
-  }
-
-  /**
-   * Makes the lines grow with the view's growth time (a segment grows from its start by its growth
-   * times, the mesh's `segmentGrowthTimes`; ./line-growth.ts): called once the growth's chunk is there.
-   */
-  grow(growth: LineGrowth): void {
-    this.growth = growth;
-    growth.grow(this.plant);
-    growth.grow(this.overlay);
-    growth.times(this.plant, this.times);
-    growth.times(this.overlay, this.overTimes);
-  }
-
-  /** `ends` (with their growth `times`) as drawn at the growth time shown: `ends` while the plant is whole. */
-  grown(ends: Float32Array, times?: Float32Array): Float32Array {
-    return this.growth?.grown(ends, times) ?? ends;
   }
 
   /** The lines' width in pixels (CSS pixels on screen; picture pixels in a snapshot). */
@@ -207,7 +192,8 @@ export class SegmentLines {
     if (!this.group.visible || !camera || this.modules.length === 0) return null;
     // One pixel wide where WebGL draws them with `thin`; as wide as chosen otherwise (2D draws that width).
     const width = this.thin.visible && this.drawables.visible ? 1 : this.width;
-    const hit = pickSegment(this.grown(this.ends, this.times), camera, raycaster.ray, width, this.plant.mesh.material.resolution);
+    // (At a growth time, the segments as grown then.)
+    const hit = pickSegment(this.growth?.grown(this.ends, this.times) ?? this.ends, camera, raycaster.ray, width, this.plant.mesh.material.resolution);
     if (!hit || hit.segment >= this.modules.length) return null;
     return { module: this.modules[hit.segment], distance: hit.distance };
   }

@@ -20,8 +20,6 @@ export class View2D {
   private readonly canvas: SketchCanvas;
   /** The Lines mode's segments are drawn here, not by WebGL ({@link placeLines}). */
   private segmentsHere = false;
-  /** The segments' ends drawn here (grown to the growth time shown). */
-  private endsHere: Float32Array | undefined;
   /** The plant drawn here as one-pixel lines (a sketch, a model too large to mesh). */
   private thin: MeshBuffers | undefined;
   /** The Lines mode's highlighted segments (drawn over the others) and the others' brightness. */
@@ -63,10 +61,8 @@ export class View2D {
   }
 
   /**
-   * Draws the one-pixel lines shown here (`on`), or leaves those with growth times to WebGL: while
-   * a growth time is shown, the growth's shader grows them there at the cost of a uniform (grown
-   * on the CPU and drawn here, ABOP 1.24d at n = 10 took 15 ms of the page's thread a frame).
-   * True if they are drawn here now.
+   * Draws the one-pixel lines shown here (`on`), or leaves those with growth times to WebGL (while
+   * a growth time is shown: the growth's shader grows them there). True if they are drawn here now.
    */
   thinIn2D(on: boolean): boolean {
     const thin = this.thin;
@@ -101,11 +97,8 @@ export class View2D {
     // Skia's round joins cost more than the difference (1,048,576 segments 2 pixels wide: 733
     // against 511 ms a frame without a GPU).
     const style = { width: width * ratio, round: width * ratio > 4, dim };
-    // At a growth time, the segments as grown then (./line-growth.ts).
-    const ends = this.segmentLines.grown(mesh.segmentEnds, mesh.segmentGrowthTimes);
-    if (!this.segmentsHere || ends !== this.endsHere) this.canvas.show(ends, mesh.segmentColors, style);
-    this.endsHere = ends;
-    this.canvas.restyle(style, over && { ends: this.segmentLines.grown(over.ends, over.times), colors: over.colors, width: (width + HIGHLIGHT_EXTRA) * ratio });
+    if (!this.segmentsHere) this.canvas.show(mesh.segmentEnds, mesh.segmentColors, style);
+    this.canvas.restyle(style, over && { ends: over.ends, colors: over.colors, width: (width + HIGHLIGHT_EXTRA) * ratio });
     this.segmentsHere = true;
     return true;
   }
