@@ -1,8 +1,8 @@
 // `npm run bench:studio`'s growth rows (issue 45): the main thread's work per frame while the
 // timeline plays the growth of ABOP 1.24d at n = 10 (116,050 segments), and the frames per second
 // it plays ABOP 1.24d at n = 7 (4,118 segments) at: in the Tubes mode, and in the Lines mode (the
-// flat tree's own: its segments grown on the GPU by texel lines, or, where a software rasterizer
-// draws the view, the big tree's grown on the CPU and drawn on the 2D canvas over it). In headless Chromium on the built
+// flat tree's own: its segments grown by the texel lines' shader; where a software rasterizer
+// draws the view, what it draws in 2D is WebGL's while a growth time is shown). In headless Chromium on the built
 // site (dist/). Every requestAnimationFrame callback of the page is timed (an init script wraps
 // them): a frame's work is the sum of its callbacks, the timeline's tick and the view's draw call
 // (the draw itself runs in the GPU process). Both of bench-studio.mjs's Chromium setups;
