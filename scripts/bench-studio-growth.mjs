@@ -1,20 +1,24 @@
 // `npm run bench:studio`'s growth rows (issue 45): the main thread's work per frame while the
-// timeline plays the growth of ABOP 1.24d at n = 10 (116,050 segments, Tubes mode), and the frames
-// per second it plays ABOP 1.24d at n = 7 (4,118 segments) at. In headless Chromium on the built
-// site (dist/). The timeline plays the whole growth once, t from 0 to N at 1 step a second, as
-// Play does. Every requestAnimationFrame callback of the page is timed (an init script wraps
+// timeline plays the growth of ABOP 1.24d at n = 10 (116,050 segments), and the frames per second
+// it plays ABOP 1.24d at n = 7 (4,118 segments) at: in the Tubes mode, and in the Lines mode (the
+// flat tree's own: its segments grown by the texel lines' shader; where a software rasterizer
+// draws the view, what it draws in 2D is WebGL's while a growth time is shown). In headless
+// Chromium on the built site (dist/). The timeline plays the whole growth once, t from 0 to N at 1
+// step a second, as Play does. Every requestAnimationFrame callback of the page is timed (an init script wraps
 // them): a frame's work is the sum of its callbacks, the timeline's tick and the view's draw call
 // (the draw itself runs in the GPU process). The frames counted are those the view drew (an
 // animation frame at which the GPU was still busy with the frame before draws nothing): over the
 // whole growth, and over its last step alone (the whole plant's triangles drawn). Both of
 // bench-studio.mjs's Chromium setups; BENCH_SETUP=software (or gpu) runs one, BENCH_WORKLOAD=0
-// or 1 one workload. Results go to test-results/bench-studio-growth.json.
+// to 3 one workload. Results go to test-results/bench-studio-growth.json.
 import { chromium } from 'playwright-core';
 import { SETUPS, servedSite, writeResults } from './bench-site.mjs';
 
 const WORKLOADS = [
-  { name: 'ABOP 1.24d, n = 10 (116,050 segments), Tubes mode', iterations: 10 },
-  { name: 'ABOP 1.24d, n = 7 (4,118 segments), Tubes mode', iterations: 7 },
+  { name: 'ABOP 1.24d, n = 10 (116,050 segments), Tubes mode', iterations: 10, tubes: true },
+  { name: 'ABOP 1.24d, n = 7 (4,118 segments), Tubes mode', iterations: 7, tubes: true },
+  { name: 'ABOP 1.24d, n = 10 (116,050 segments), Lines mode', iterations: 10, tubes: false },
+  { name: 'ABOP 1.24d, n = 7 (4,118 segments), Lines mode', iterations: 7, tubes: false },
 ];
 const setups = Object.entries(SETUPS).filter(([name]) => process.env.BENCH_SETUP === undefined || name.toLowerCase().startsWith(process.env.BENCH_SETUP));
 
@@ -62,7 +66,7 @@ try {
       await page.goto(url);
       await page.waitForFunction(() => (window.__meristem?.lastStats?.segments ?? 0) > 0);
       await page.getByTestId('iterations').fill(String(workload.iterations));
-      await page.getByTestId('render-lines').click(); // Tubes
+      if (workload.tubes) await page.getByTestId('render-lines').click(); // Tubes (the flat tree's lines otherwise)
       await page.getByTestId('timeline-slider').waitFor();
       await page.getByTestId('timeline-slider').fill('0'); // the timeline in use: the next build carries growth times
       await page.waitForFunction((n) => window.__meristem?.growth?.().span === n && window.__meristem.preview?.settled, workload.iterations, { timeout: 120_000 });

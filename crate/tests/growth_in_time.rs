@@ -76,6 +76,47 @@ fn a_line_that_doubles_is_drawn_from_its_base() {
 }
 
 #[test]
+fn each_segment_has_its_growth_times_whatever_the_mesh() {
+    // The Lines mode's mesh (no tubes, a leaf): the leaf's vertices carry growth arrays, and every
+    // segment its times, those of its line in the lines fallback (F -> FF's, counted above).
+    let source = "axiom: F~l\nF -> FF";
+    let fallback = grown(source, 3, true);
+    let by_lines: Vec<f32> = segment_times(&fallback.plant.mesh)
+        .into_iter()
+        .flat_map(|(t0, t1)| [t0, t1])
+        .collect();
+    assert_eq!(fallback.plant.mesh.segment_growth_times, by_lines);
+    let b = build(
+        source,
+        &BuildOptions {
+            iterations: Some(3),
+            mesh: MeshOptions {
+                growth: true,
+                tubes: false,
+                ..MeshOptions::default()
+            },
+            ..BuildOptions::default()
+        },
+    );
+    let mesh = &b.plant.mesh;
+    mesh.check().unwrap();
+    assert_eq!(mesh.segment_growth_times, by_lines);
+    assert_eq!(mesh.segment_growth_times.len(), 2 * 8);
+    assert_eq!(&mesh.segment_growth_times[..2], [-1.0, 0.0]);
+    assert!(mesh.segment_growth_times.iter().all(|&t| t <= 3.0));
+    assert!(mesh.vertex_count() > 0 && mesh.growth_times.len() == 2 * mesh.vertex_count());
+    // Without the option: none.
+    let plain = build(
+        source,
+        &BuildOptions {
+            iterations: Some(3),
+            ..BuildOptions::default()
+        },
+    );
+    assert!(plain.plant.mesh.segment_growth_times.is_empty());
+}
+
+#[test]
 fn a_branching_plant_has_each_steps_number_of_elements_at_that_step() {
     // F -> F[+F]F, n = 2: 1, 3, 9 segments.
     let b = grown("#angle 30\naxiom: F\nF -> F[+F]F", 2, true);

@@ -2,7 +2,7 @@
 // problem it reports, wait for builds, read the canvas.
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import type { Browser, Locator, Page } from 'playwright-core';
-import { inject } from 'vitest';
+import { expect, inject } from 'vitest';
 import { decodePng, type Picture } from './pictures';
 
 export const RESULTS = new URL('../../test-results/', import.meta.url);
@@ -127,6 +127,16 @@ export const VIEW_CANVAS = '[data-testid=viewport] canvas:not(.sketch-canvas)';
  */
 export const PLANT_ONLY = '[data-testid=viewport] > :not(canvas) { visibility: hidden !important; } [data-testid=viewport] canvas { outline: none !important; }';
 
+/** Scrubs the timeline to growth time `t` (as a drag of the slider does) and waits for its frame. */
+export async function scrubTo(page: Page, t: number): Promise<void> {
+  await page.getByTestId('timeline-slider').fill(String(t));
+  await page.waitForFunction((want) => {
+    const { t, span } = window.__meristem!.growth!();
+    return span !== null && (t === want || (t === null && want >= span));
+  }, t);
+  await twoFrames(page);
+}
+
 /** Screenshots the 3D canvas (saved as `name` in test-results/) and decodes it. */
 export async function canvasPicture(page: Page, name: string): Promise<Picture> {
   await twoFrames(page);
@@ -213,6 +223,18 @@ export async function openExample(page: Page, file: string): Promise<string | nu
     await page.waitForTimeout(50);
   }
   return nextBuild(page, before);
+}
+
+/**
+ * Opens the example `file` at `iterations` steps with the ground grid hidden (only the plant
+ * differs from the background), for pictures of its growth.
+ */
+export async function openGrowing(page: Page, file: string, iterations: number): Promise<void> {
+  expect(await openExample(page, file)).toBe('ok');
+  const before = await generation(page);
+  await page.getByTestId('iterations').fill(String(iterations));
+  await nextBuild(page, before);
+  await page.getByTestId('grid').click();
 }
 
 /**

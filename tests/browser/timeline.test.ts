@@ -8,7 +8,7 @@ import { chromium, type Browser, type Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
 import { decodeState, encodeState } from '../../web/src/share';
 import { changedShare, differingShare, foregroundShare, type Picture } from './pictures';
-import { canvasPicture, editorText, example, generation, nextBuild, openExample, openStudio, openTimelineMenu, savePage, shownStats, twoFrames } from './studio-page';
+import { canvasPicture, editorText, example, generation, nextBuild, openExample, openGrowing, openStudio, openTimelineMenu, savePage, scrubTo as scrubToTime, shownStats, twoFrames } from './studio-page';
 
 let browser: Browser;
 let page: Page;
@@ -27,30 +27,19 @@ afterAll(async () => {
 
 const growth = (p: Page = page) => p.evaluate(() => window.__meristem!.growth!());
 
-/** Scrubs the timeline to `t` (as a drag of the slider does) and waits for its frame. */
-async function scrubTo(t: number): Promise<void> {
-  await page.getByTestId('timeline-slider').fill(String(t));
-  await page.waitForFunction((want) => {
-    const { t, span } = window.__meristem!.growth!();
-    return span !== null && (t === want || (t === null && want >= span));
-  }, t);
-  await twoFrames(page);
-}
+/** Scrubs the timeline to `t` and waits for its frame. */
+const scrubTo = (t: number) => scrubToTime(page, t);
 
 /** The share of the view's pixels that are plant. */
 const plantShare = (picture: Picture) => foregroundShare(picture);
 
 describe('the growth timeline', () => {
   it('shows ABOP 1.24a growing between steps: t = 2.5 is neither step 2 nor step 3, and t = N is the whole plant', async () => {
-    expect(await openExample(page, 'abop-1.24a.lsys')).toBe('ok');
-    let before = await generation(page);
-    await page.getByTestId('iterations').fill('4');
-    await nextBuild(page, before);
-    await page.getByTestId('grid').click(); // only the plant differs from the background
+    await openGrowing(page, 'abop-1.24a.lsys', 4);
     const whole = await canvasPicture(page, 'timeline-1.24a-whole.png');
     expect((await growth()).span, 'no growth arrays before the timeline is used').toBeNull();
 
-    before = await generation(page);
+    const before = await generation(page);
     await page.getByTestId('timeline-slider').fill('2');
     await nextBuild(page, before); // the first use asks for a build with growth arrays
     expect((await growth()).span).toBe(4);

@@ -2,7 +2,7 @@
 
 use glam::DVec3;
 
-/// The mesh as twelve flat arrays. **This is the one place the layout is defined**; the wasm
+/// The mesh as thirteen flat arrays. **This is the one place the layout is defined**; the wasm
 /// boundary and the TypeScript `MeshBuffers` type refer here.
 ///
 /// - `positions`: `f32` × 3 per vertex (x, y, z), in model units, Y up.
@@ -48,6 +48,11 @@ use glam::DVec3;
 ///   are not shared between segments then: each segment has its own start ring. In the lines
 ///   fallback the two arrays follow `lines`: one entry per line end. How `t0` and `t1` are chosen:
 ///   [`growth_schedule`](super::growth_schedule).
+/// - `segment_growth_times`: with the growth arrays (empty otherwise), whatever the mesh holds:
+///   `f32` × 2 per segment of the skeleton, in the order of `Skeleton::segments` (the order of the
+///   segments as lines, `mesh::segment_ends`), `(t0, t1)` as above: the segment grows from its
+///   start, its end at `start + (end − start) · g(…)`. What the studio's Lines mode, which draws
+///   every segment as a line beside a mesh without tubes, grows its lines by.
 /// - `width_unit`: model units per width unit (what `#width 1` measured across), for writers that
 ///   draw widths themselves (SVG).
 ///
@@ -72,6 +77,7 @@ pub struct MeshBuffers {
     pub line_colors: Vec<f32>,
     pub growth_origins: Vec<f32>,
     pub growth_times: Vec<f32>,
+    pub segment_growth_times: Vec<f32>,
     pub width_unit: f64,
 }
 
@@ -163,8 +169,19 @@ impl MeshBuffers {
     }
 
     /// The growth arrays are empty, or hold an entry per vertex (per line end in the lines
-    /// fallback), finite, with `−1 ≤ t0 < t1`.
+    /// fallback), finite, with `−1 ≤ t0 < t1`; the segments' times are pairs, with `−1 ≤ t0 < t1`.
     fn check_growth(&self) -> Result<(), String> {
+        let bad = |times: &[f32]| {
+            times
+                .chunks_exact(2)
+                .position(|t| !(t[0] >= -1.0 && t[0] < t[1] && t[1].is_finite()))
+        };
+        if !self.segment_growth_times.len().is_multiple_of(2) {
+            return Err("segment growth times must hold two times per segment".into());
+        }
+        if let Some(s) = bad(&self.segment_growth_times) {
+            return Err(format!("growth times of segment {s} are not −1 ≤ t0 < t1"));
+        }
         if self.growth_times.is_empty() && self.growth_origins.is_empty() {
             return Ok(());
         }
@@ -179,11 +196,7 @@ impl MeshBuffers {
         if !self.growth_origins.iter().all(|v| v.is_finite()) {
             return Err("a growth origin is not finite".into());
         }
-        match self
-            .growth_times
-            .chunks_exact(2)
-            .position(|t| !(t[0] >= -1.0 && t[0] < t[1] && t[1].is_finite()))
-        {
+        match bad(&self.growth_times) {
             Some(v) => Err(format!("growth times of vertex {v} are not −1 ≤ t0 < t1")),
             None => Ok(()),
         }

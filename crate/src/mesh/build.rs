@@ -36,7 +36,9 @@ fn mesh_of(
     let unit = resolve_width_unit(skeleton, options.width_unit);
     let mut builder = Builder::new(options, unit);
     if options.with_growth() {
-        builder.growth = Some(growth_schedule(skeleton));
+        let schedule = growth_schedule(skeleton);
+        builder.mesh.segment_growth_times = segment_growth_times(&schedule, skeleton);
+        builder.growth = Some(schedule);
     }
     let mut parts = MeshParts {
         segment_chain: if with_parts {
@@ -360,6 +362,15 @@ impl<'a> Builder<'a> {
             }
         }
     }
+}
+
+/// Each segment's growth times `(t0, t1)` by `schedule`: `MeshBuffers::segment_growth_times`.
+fn segment_growth_times(schedule: &GrowthSchedule, skeleton: &Skeleton) -> Vec<f32> {
+    let segments = skeleton.segments.len().min(schedule.elements.len());
+    schedule.elements[..segments]
+        .iter()
+        .flat_map(|g| [g.t0, g.t1])
+        .collect()
 }
 
 /// 2-D coordinates scaled into the unit square by their bounding box (a zero extent maps to 0).

@@ -126,6 +126,13 @@ macro_rules! plant_mesh_getters {
             pub fn growth_times(&self) -> js_sys::Float32Array {
                 js_sys::Float32Array::from(&self.plant().mesh.growth_times[..])
             }
+
+            /// With the `growth` option: each segment's growth times (t0, t1) in the order of
+            /// `segmentEnds`, 2 floats each (the Lines mode's lines grow by them); empty otherwise.
+            #[wasm_bindgen(js_name = "segmentGrowthTimes")]
+            pub fn segment_growth_times(&self) -> js_sys::Float32Array {
+                js_sys::Float32Array::from(&self.plant().mesh.segment_growth_times[..])
+            }
         }
     };
 }

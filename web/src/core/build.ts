@@ -304,11 +304,10 @@ export function copyMesh(result: MeshHolder, { forGpu = false, spares = {} }: Pi
  * The mesh's growth arrays, when the build asked for them (`BuildOptions.growth`) and the studio
  * core made it (the first plant's core has no growth in time); else nothing.
  */
-function growthOf(result: MeshHolder): Pick<MeshBuffers, 'growthOrigins' | 'growthTimes'> {
+function growthOf(result: MeshHolder): Pick<MeshBuffers, 'growthOrigins' | 'growthTimes' | 'segmentGrowthTimes'> {
   if (!('growthTimes' in result)) return {};
-  const growthTimes = result.growthTimes();
-  if (growthTimes.length === 0) return {};
-  return { growthOrigins: ownedArray(result.growthOrigins()), growthTimes: ownedArray(growthTimes) };
+  const owned = (values: Float32Array) => (values.length > 0 ? ownedArray(values) : undefined);
+  return { growthOrigins: owned(result.growthOrigins()), growthTimes: owned(result.growthTimes()), segmentGrowthTimes: owned(result.segmentGrowthTimes()) };
 }
 
 /** Copies a wasm explanation into plain data and frees it. */

@@ -63,7 +63,9 @@ export interface PlantStats {
  * `growthOrigins` (3 floats) and `growthTimes` (2 floats: t0, t1 in derivation steps) per vertex
  * (per line end when the mesh is lines) are there only when `BuildOptions.growth` asked for the
  * plant's growth in time: a vertex at growth time t is at
- * `origin + (position − origin) · smoothstep(clamp((t − t0) / (t1 − t0), 0, 1))`.
+ * `origin + (position − origin) · smoothstep(clamp((t − t0) / (t1 − t0), 0, 1))`. With them,
+ * `segmentGrowthTimes` holds each segment's (t0, t1) (2 floats, in the order of `segmentEnds`): the
+ * Lines mode's line grows from its start by the same formula.
  */
 export interface MeshBuffers {
   positions: Float32Array;
@@ -80,6 +82,7 @@ export interface MeshBuffers {
   segmentModules: Uint32Array;
   growthOrigins?: Float32Array;
   growthTimes?: Float32Array;
+  segmentGrowthTimes?: Float32Array;
 }
 
 /**

@@ -47,7 +47,7 @@ export class GrowthShow {
   /**
    * Shows growth time `t`. A timed grammar is derived at t (whole at t ≥ N: its own iterations),
    * its plant drawn whole; any other is drawn at t by the view. Returns whether the plant is drawn
-   * whole (the Lines mode's lines, which do not grow, may show then).
+   * whole.
    */
   show(t: number): boolean {
     const timedSpan = this.builds.timedSpan();

@@ -30,10 +30,12 @@ export function addGrowthAttributes(geometry: BufferGeometry, count: number, { g
   return true;
 }
 
-/** N, the growth time at which the whole plant is grown: the last t1, up to a whole step; null without times. */
-export function growthSpanOf(times: Float32Array | undefined): number | null {
-  if (!times || times.length < 2) return null;
-  let last = 0;
-  for (let k = 1; k < times.length; k += 2) if (times[k] > last) last = times[k];
-  return Math.max(0, Math.ceil(last - 1e-6));
+/**
+ * N, the growth time at which the whole plant is grown: the last t1 of all `times` ((t0, t1)
+ * pairs: the vertices', the segments'), up to a whole step; null without times.
+ */
+export function growthSpanOf(...times: (Float32Array | undefined)[]): number | null {
+  let last = -1;
+  for (const pairs of times) for (let k = 1; k < (pairs?.length ?? 0); k += 2) last = Math.max(last, pairs![k]);
+  return last < -0.5 ? null : Math.max(0, Math.ceil(last - 1e-6));
 }

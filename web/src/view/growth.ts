@@ -6,16 +6,16 @@
 // JavaScript mirror ({@link grownFraction}) is what the tests read. This module loads with the
 // first growth time shown (the first load's budget, tests/browser/first-load.test.ts); what every
 // plant needs is in ./growth-arrays.ts.
-import { Box3, type BufferGeometry, type Material, Vector3 } from 'three';
+import { Box3, type Material, Vector3 } from 'three';
 import type { Bounds } from '../core';
 import type { GrowthUniform } from './growth-arrays';
 import type { ShownPlant } from './shown-plant';
+import { grownFraction, UNIFORM } from './growth-function';
 import { GROWN } from './scene-setup';
 
 export { drawGrown } from './grown-triangles';
-
-/** The name of the time uniform in the shaders. */
-const UNIFORM = 'meristemGrowthTime';
+export { grownFraction };
+export { grownSegmentEnds, LineGrowth } from './line-growth';
 
 /** Declarations the vertex shader needs, before its `main`. */
 export const GROWTH_DECLARATIONS = /* glsl */ `
@@ -36,13 +36,6 @@ export const GROWTH_PLACEMENT = /* glsl */ `
     transformed = growthOrigin + (transformed - growthOrigin) * meristemGrown;
   }
 `;
-
-/** The growth function g (smoothstep) of the fraction of [t0, t1] passed at `t`: 0 before t0, 1 after t1. */
-export function grownFraction(t: number, t0: number, t1: number): number {
-  if (!(t1 > t0)) return 1;
-  const x = Math.min(1, Math.max(0, (t - t0) / (t1 - t0)));
-  return x * x * (3 - 2 * x);
-}
 
 /**
  * Injects the growth into a vertex shader three.js made (`shader`, as `onBeforeCompile` gets it)
@@ -80,14 +73,14 @@ export function growingMaterial<M extends Material>(material: M, uniform: Growth
 
 /**
  * The boxes of the plant grown at each whole step 0 … `span` (3-float `points` with their
- * `times`): a point counts from the step its growth ends. What "follow the growth" frames
- * ({@link blendedBox} between two steps).
+ * `times`, one (t0, t1) for each `perTime` points: 2 for segments' ends): a point counts from the
+ * step its growth ends. What "follow the growth" frames ({@link blendedBox} between two steps).
  */
-export function growthBoxes(points: Float32Array, times: Float32Array, span: number): Box3[] {
+export function growthBoxes(points: Float32Array, times: Float32Array, span: number, perTime = 1): Box3[] {
   const boxes = Array.from({ length: span + 1 }, () => new Box3());
   const point = new Vector3();
-  for (let v = 0; 3 * v + 2 < points.length && 2 * v + 1 < times.length; v++) {
-    const step = Math.min(span, Math.max(0, Math.ceil(times[2 * v + 1] - 1e-6)));
+  for (let v = 0; 3 * v + 2 < points.length && 2 * Math.floor(v / perTime) + 1 < times.length; v++) {
+    const step = Math.min(span, Math.max(0, Math.ceil(times[2 * Math.floor(v / perTime) + 1] - 1e-6)));
     boxes[step].expandByPoint(point.set(points[3 * v], points[3 * v + 1], points[3 * v + 2]));
   }
   for (let n = 1; n <= span; n++) boxes[n].union(boxes[n - 1]);
@@ -105,21 +98,30 @@ export function blendedBox(boxes: readonly Box3[], t: number): Box3 {
   return new Box3(before.min.clone().lerp(after.min, f), before.max.clone().lerp(after.max, f));
 }
 
-/** The boxes of each step of a plant's geometry, made once (see {@link growthBoxes}). */
-const stepBoxes = new WeakMap<BufferGeometry, Box3[]>();
+/** The boxes of each step of a plant's points (its vertices, its segments' ends), made once (see {@link growthBoxes}). */
+const stepBoxes = new WeakMap<Float32Array, Box3[]>();
 
 /**
  * The bounds of the plant on screen grown by growth time `t`, blended between the steps around it
- * (what a camera following the growth frames); null without growth arrays or without anything grown.
+ * (what a camera following the growth frames): its mesh's and its segments' (drawn as lines in
+ * the Lines mode, beside a mesh that may hold nothing); null without growth arrays or without anything grown.
  */
 export function grownBounds(shown: ShownPlant, t: number): Bounds | null {
   const span = shown.growthSpan;
+  if (span === null) return null;
   const geometry = shown.drawn.geometry.getAttribute('position') ? shown.pickable.geometry : shown.lines.geometry;
   const points = geometry.getAttribute('position')?.array as Float32Array | undefined;
   const times = geometry.getAttribute('growthTime')?.array as Float32Array | undefined;
-  if (span === null || !points || !times) return null;
-  let boxes = stepBoxes.get(geometry);
-  if (!boxes) stepBoxes.set(geometry, (boxes = growthBoxes(points, times, span)));
-  const box = blendedBox(boxes, t);
+  const box = new Box3();
+  const parts: [Float32Array | undefined, Float32Array | undefined, number][] = [
+    [points, times, 1],
+    [shown.mesh?.segmentEnds, shown.mesh?.segmentGrowthTimes, 2],
+  ];
+  for (const [at, when, perTime] of parts) {
+    if (!at || !when) continue;
+    let boxes = stepBoxes.get(at);
+    if (!boxes) stepBoxes.set(at, (boxes = growthBoxes(at, when, span, perTime)));
+    box.union(blendedBox(boxes, t));
+  }
   return box.isEmpty() ? null : [box.min.toArray(), box.max.toArray()];
 }

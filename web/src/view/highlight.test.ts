@@ -73,5 +73,11 @@ describe('highlightSegments', () => {
     expect(Array.from(overlay.ends)).toEqual([6, 7, 8, 9, 10, 11]);
     expect(Array.from(overlay.colors)).toEqual([0, 1, 0, 0, 1, 0]);
     expect(highlightSegments(mesh(), () => null).ends.length).toBe(0);
+    expect(overlay.times, 'no growth times: none').toBeUndefined();
+  });
+
+  it("copies the chosen segments' growth times too (the highlight grows as its segments do)", () => {
+    const overlay = highlightSegments({ ...mesh(), segmentGrowthTimes: new Float32Array([-1, 0, 1.5, 2]) }, (module) => (module === 9 ? [0, 1, 0] : null));
+    expect(Array.from(overlay.times!)).toEqual([1.5, 2]);
   });
 });

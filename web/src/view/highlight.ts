@@ -92,10 +92,11 @@ export function highlightOverlay(mesh: MeshBuffers, colourOf: (module: number) =
   return { positions, normals: overlayNormals, colors };
 }
 
-/** Segments as lines (two 3-float ends each) with a colour per end. */
+/** Segments as lines (two 3-float ends each) with a colour per end, and their growth times (two each) if the plant has them. */
 export interface LineOverlay {
   ends: Float32Array;
   colors: Float32Array;
+  times?: Float32Array;
 }
 
 /** The segments (lines) of every module `colourOf` names, painted in that module's colour. */
@@ -107,12 +108,15 @@ export function highlightSegments(mesh: MeshBuffers, colourOf: (module: number) 
   });
   const ends = new Float32Array(picked.length * 6);
   const colors = new Float32Array(picked.length * 6);
+  const grows = mesh.segmentGrowthTimes;
+  const times = grows && new Float32Array(picked.length * 2);
   picked.forEach(({ segment, colour }, k) => {
     ends.set(mesh.segmentEnds.subarray(6 * segment, 6 * segment + 6), 6 * k);
     colors.set(colour, 6 * k);
     colors.set(colour, 6 * k + 3);
+    times?.set(grows!.subarray(2 * segment, 2 * segment + 2), 2 * k);
   });
-  return { ends, colors };
+  return { ends, colors, times };
 }
 
 /** CSS colour of linear RGB (the view's vertex colours are linear; CSS is sRGB). */

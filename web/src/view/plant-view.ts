@@ -259,9 +259,12 @@ export class PlantView {
     if (this.view2D?.placeLines(in2D ? this.shown.mesh : undefined)) this.requestRender();
   }
 
-  /** Whether the Lines mode's segments of the plant on screen are to be drawn in 2D ({@link placeLines}). */
+  /**
+   * Whether the Lines mode's segments of the plant on screen are to be drawn in 2D ({@link placeLines}):
+   * not while a growth time is shown (WebGL grows them by a uniform; see {@link setGrowthTime}).
+   */
   private get segmentsIn2D(): boolean {
-    return this.view2D !== undefined && this.usesLines && this.view2D.wants(this.shown.mesh);
+    return this.view2D !== undefined && this.growthAt === null && this.usesLines && this.view2D.wants(this.shown.mesh);
   }
 
   /**
@@ -321,6 +324,13 @@ export class PlantView {
     if (time === this.growthAt) return;
     this.showGrowth(time);
     if (time !== null && !this.growthCode) this.loadGrowth();
+    // What is drawn in 2D is WebGL's while a growth time is shown: the growth's shaders grow it
+    // there by a uniform (grown on the CPU and drawn in 2D, ABOP 1.24d at n = 10 took 15 ms of the
+    // page's thread a frame).
+    if (this.view2D) {
+      this.placeLines();
+      this.shown.lines.visible = !this.view2D.thinIn2D(time === null);
+    }
     const bounds = time !== null && this.growthCamera === 'follow' ? this.growthCode?.grownBounds(this.shown, time) : null;
     if (bounds) {
       const turned = this.turned;
@@ -350,6 +360,7 @@ export class PlantView {
       (code) => {
         this.growthCode = code;
         this.materials.grow(code, [this.shown.lines.material]);
+        new code.LineGrowth(this.materials.growthTime).attach(this.segmentLines);
         const t = this.growthAt;
         this.growthAt = null;
         this.setGrowthTime(t);

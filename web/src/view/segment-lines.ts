@@ -5,6 +5,7 @@
 import { BufferAttribute, BufferGeometry, Group, LineBasicMaterial, LineSegments, type OrthographicCamera, type PerspectiveCamera, type Raycaster } from 'three';
 import { LineMaterial } from 'three/examples/jsm/lines/LineMaterial.js';
 import type { MeshBuffers } from '../core';
+import type { LineGrowth } from './line-growth';
 import type { LineOverlay } from './highlight';
 import { pointsBox, setBox } from './plant-geometry';
 import { pickSegment } from './segment-pick';
@@ -39,13 +40,19 @@ export class SegmentLines {
   readonly group = new Group();
   /** What WebGL draws of them (see {@link drawn}). */
   private readonly drawables = new Group();
-  private readonly plant: TexelLines;
-  private readonly overlay: TexelLines;
+  /** The plant's lines, and the highlighted ones (drawn over them); ./line-growth.ts makes them grow. */
+  readonly plant: TexelLines;
+  readonly overlay: TexelLines;
   /** The plant's segments when {@link plant} cannot hold them: one pixel wide. */
   private readonly thin = new LineSegments(new BufferGeometry(), new LineBasicMaterial({ vertexColors: true }));
   /** The segments drawn (start xyz, end xyz each), for picking. */
   private ends: Float32Array = new Float32Array(0);
   private modules: Uint32Array = new Uint32Array(0);
+  /** The growth times of the segments drawn (two a segment), and of the highlighted ones. */
+  times: Float32Array | undefined;
+  overTimes: Float32Array | undefined;
+  /** The growth in time, once the growth's chunk is there (./line-growth.ts `LineGrowth.attach`). */
+  growth: LineGrowth | undefined;
   private width = DEFAULT_LINE_WIDTH;
   /**
    * Segments given to {@link show} while WebGL did not draw the lines (hidden, or not {@link drawn}):
@@ -92,10 +99,11 @@ export class SegmentLines {
    * Shows `mesh`'s segments (null: none), without highlight, {@link drawn} by WebGL or not; while
    * the lines are hidden, once they are shown.
    */
-  show(mesh: Pick<MeshBuffers, 'segmentEnds' | 'segmentColors' | 'segmentModules'> | null, drawn = this.drawables.visible): void {
+  show(mesh: Pick<MeshBuffers, 'segmentEnds' | 'segmentColors' | 'segmentModules' | 'segmentGrowthTimes'> | null, drawn = this.drawables.visible): void {
     const empty = new Float32Array(0);
     this.drawables.visible = drawn;
     this.ends = mesh?.segmentEnds ?? empty; // picked, whoever draws them
+    this.times = mesh?.segmentGrowthTimes;
     this.unmade = { segmentEnds: this.ends, segmentColors: mesh?.segmentColors ?? empty };
     if (this.drawnByWebGl) this.make();
     else this.setPlant(empty, empty); // the old plant's lines go now
@@ -120,6 +128,8 @@ export class SegmentLines {
     const box = pointsBox(ends);
     const fits = this.plant.fits(ends.length / 6);
     this.plant.setSegments(fits ? ends : new Float32Array(0), colors, box);
+    // (The times are those of the segments last shown: of `ends`, or none are drawn.)
+    this.growth?.times(this.plant, fits && ends.length ? this.times : undefined);
     if (!fits || this.thin.visible) {
       this.thin.geometry.dispose();
       this.thin.geometry = new BufferGeometry();
@@ -147,6 +157,8 @@ export class SegmentLines {
   private setOverlay(overlay: LineOverlay | null): void {
     const ends = overlay && this.overlay.fits(overlay.ends.length / 6) ? overlay.ends : new Float32Array(0);
     this.overlay.setSegments(ends, overlay?.colors ?? new Float32Array(0), pointsBox(ends));
+    this.overTimes = ends.length > 0 ? overlay?.times : undefined;
+    this.growth?.times(this.overlay, this.overTimes);
   }
 
   /** The lines' width in pixels (CSS pixels on screen; picture pixels in a snapshot). */
@@ -180,12 +192,14 @@ export class SegmentLines {
     if (!this.group.visible || !camera || this.modules.length === 0) return null;
     // One pixel wide where WebGL draws them with `thin`; as wide as chosen otherwise (2D draws that width).
     const width = this.thin.visible && this.drawables.visible ? 1 : this.width;
-    const hit = pickSegment(this.ends, camera, raycaster.ray, width, this.plant.mesh.material.resolution);
+    // (At a growth time, the segments as grown then.)
+    const hit = pickSegment(this.growth?.grown(this.ends, this.times) ?? this.ends, camera, raycaster.ray, width, this.plant.mesh.material.resolution);
     if (!hit || hit.segment >= this.modules.length) return null;
     return { module: this.modules[hit.segment], distance: hit.distance };
   }
 
   dispose(): void {
+    this.growth?.dispose(this.plant, this.overlay);
     this.plant.dispose();
     this.overlay.dispose();
     this.thin.geometry.dispose();

@@ -34,6 +34,14 @@ describe('pickSegment', () => {
     expect(on(195, 50)).toBeNull(); // beyond the segment's end (x = 8: pixel 180)
   });
 
+  it('never picks a segment with NaN ends (not grown yet at the growth time shown)', () => {
+    const ends = new Float32Array([NaN, NaN, NaN, NaN, NaN, NaN, -8, 0, 0, 8, 0, 0]);
+    for (const camera of [ortho(), new PerspectiveCamera(60, 2, 0.1, 100)]) {
+      expect(pickSegment(ends, camera, aimed(camera, 100, 50).ray, 4, VIEWPORT)?.segment).toBe(1);
+      expect(pickSegment(ends.slice(0, 6), camera, aimed(camera, 100, 50).ray, 4, VIEWPORT)).toBeNull();
+    }
+  });
+
   it('takes the nearest to the eye where lines cross, and gives its distance', () => {
     const camera = ortho();
     const raycaster = aimed(camera, 100, 50);

@@ -39,7 +39,8 @@ export function pickSegment(ends: Float32Array, camera: PerspectiveCamera | Orth
     const length2 = dx * dx + dy * dy;
     const t = length2 > 0 ? Math.min(1, Math.max(0, ((px - ax) * dx + (py - ay) * dy) / length2)) : 0;
     const z = start4.z + (end4.z - start4.z) * t;
-    if (z < -1 || z > 1 || Math.hypot(ax + dx * t - px, ay + dy * t - py) >= width / 2) continue;
+    // (Written to skip NaN too: a segment not grown yet at the growth time shown has NaN ends.)
+    if (!(z >= -1 && z <= 1 && Math.hypot(ax + dx * t - px, ay + dy * t - py) < width / 2)) continue;
     start.set(ends[i], ends[i + 1], ends[i + 2]);
     end.set(ends[i + 3], ends[i + 4], ends[i + 5]);
     ray.distanceSqToSegment(start, end, onRay);

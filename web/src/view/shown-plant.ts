@@ -60,8 +60,8 @@ export class ShownPlant {
     oldLines.dispose();
     this.flat = flat;
     this.segmentsBox = undefined;
-    const entries = (asLines ? mesh.lines.length : mesh.positions.length) / 3;
-    this.growthSpan = mesh.growthTimes?.length === entries * 2 && entries > 0 ? growthSpanOf(mesh.growthTimes) : null;
+    // With the segments' times: the Lines mode's lines grow by them (the mesh may hold no vertex).
+    this.growthSpan = growthSpanOf(mesh.growthTimes, mesh.segmentGrowthTimes);
   }
 
   /** Whether a plant drawn as lines, one pixel wide, is on screen (a plant too large to mesh, a sketch). */

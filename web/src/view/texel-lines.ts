@@ -79,9 +79,14 @@ export function boxIndices(segments: number): Uint32Array {
  */
 export class TexelLines {
   readonly mesh: Mesh<BufferGeometry, LineMaterial>;
-  private readonly uniforms = {
-    lineEnds: { value: null as DataTexture | null },
-    lineColors: { value: null as DataTexture | null },
+  /** The shader's uniforms (the growth adds its own, ./line-growth.ts). */
+  readonly uniforms: Record<string, { value: unknown }> & {
+    lineEnds: { value: DataTexture | null };
+    lineColors: { value: DataTexture | null };
+    lineSegmentsPerRow: { value: number };
+  } = {
+    lineEnds: { value: null },
+    lineColors: { value: null },
     lineSegmentsPerRow: { value: 1 },
   };
   /** Segments the index buffer has boxes for. */
@@ -107,7 +112,7 @@ export class TexelLines {
   }
 
   /** Segments per texture row (a row is at most `maxTextureSize` texels wide). */
-  private get perRow(): number {
+  get perRow(): number {
     return Math.floor(this.maxTextureSize / TEXELS);
   }
 

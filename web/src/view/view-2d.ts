@@ -20,6 +20,8 @@ export class View2D {
   private readonly canvas: SketchCanvas;
   /** The Lines mode's segments are drawn here, not by WebGL ({@link placeLines}). */
   private segmentsHere = false;
+  /** The plant drawn here as one-pixel lines (a sketch, a model too large to mesh). */
+  private thin: MeshBuffers | undefined;
   /** The Lines mode's highlighted segments (drawn over the others) and the others' brightness. */
   private segmentHighlight: { over: LineOverlay | null; dim: number } = { over: null, dim: 1 };
   private readonly drawingBufferSize = new Vector2();
@@ -54,9 +56,22 @@ export class View2D {
   showPlant(lines: MeshBuffers | undefined): boolean {
     this.canvas.clear();
     this.segmentsHere = false;
-    if (!lines || lines.lines.length === 0) return false;
-    this.canvas.show(lines.lines, lines.lineColors);
-    return true;
+    this.thin = lines?.lines.length ? lines : undefined;
+    return this.thinIn2D(true);
+  }
+
+  /**
+   * Draws the one-pixel lines shown here (`on`), or leaves those with growth times to WebGL (while
+   * a growth time is shown: the growth's shader grows them there). True if they are drawn here now.
+   */
+  thinIn2D(on: boolean): boolean {
+    const thin = this.thin;
+    if (!thin) return false;
+    const here = on || !thin.segmentGrowthTimes;
+    // (Shown again only when it changes: each frame of the growth played asks.)
+    if (here && !this.canvas.active) this.canvas.show(thin.lines, thin.lineColors);
+    if (!here) this.canvas.clear();
+    return here;
   }
 
   /** The Lines mode's highlight, for {@link placeLines}. */

@@ -49,9 +49,9 @@ export function createLivePreview(parts: StudioPreviewParts): LivePreview {
         seed: derivation.seed(),
         sides: viewOptions.values.sides,
         smoothAll: viewOptions.values.smoothAll,
-        // The Lines mode (and `auto` for a flat plant) draws no tubes: they are not meshed; but
-        // they are with growth arrays (the Lines mode's lines do not grow).
-        tubes: timeline.growth === true || tubesFor(viewOptions.values.render),
+        // The Lines mode (and `auto` for a flat plant) draws no tubes: they are not meshed (its lines
+        // grow by the segments' growth times, which the growth arrays carry).
+        tubes: tubesFor(viewOptions.values.render),
         ...timeline,
       };
     },

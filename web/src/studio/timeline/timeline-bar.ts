@@ -13,11 +13,8 @@ import './timeline-bar.css';
 
 /** Degrees the turntable turns the camera for each step of growth played. */
 export const TURNTABLE_DEGREES_PER_STEP = 45;
-/**
- * Who holds the view's tubes while a growth time is shown (the Lines mode's lines do not grow),
- * and its frame while a timed or stepwise grammar is derived at t with the camera on the final plant.
- */
-const TUBES_HOLDER = 'timeline';
+/** Who holds the view's frame while a timed or stepwise grammar is derived at t with the camera on the final plant. */
+const FRAME_HOLDER = 'timeline';
 
 /** t as the bar writes it: two decimals. */
 export function timeText(t: number): string {
@@ -207,18 +204,18 @@ export class TimelineBar {
   }
 
   /**
-   * Shows growth time `t`: the whole plant (and the Lines mode's lines) at the span's end. A timed
-   * grammar is derived at t, a stepwise one at ⌊t⌋ (a build, asked for once the one under way has
-   * arrived); any other grows on the GPU from its whole plant's mesh.
+   * Shows growth time `t` (the whole plant at the span's end), in the Lines mode as in the Tubes
+   * mode. A timed grammar is derived at t, a stepwise one at ⌊t⌋ (a build, asked for once the one
+   * under way has arrived); any other grows on the GPU from its whole plant's mesh.
    */
   private show(t: number): void {
     const { view } = this.studio;
-    view.holdTubes(TUBES_HOLDER, !this.growth.show(t));
+    this.growth.show(t);
     // Each derived plant would be framed anew, and a plant growing would seem to stand still: the
     // camera stays on the whole plant it framed (unless it follows the growth).
     const timedSpan = this.studio.timedSpan();
     const derived = timedSpan !== null && t < timedSpan;
-    view.holdFrame(TUBES_HOLDER, derived && this.controls.camera.value === 'final');
+    view.holdFrame(FRAME_HOLDER, derived && this.controls.camera.value === 'final');
     if (this.controls.turntable.checked && this.timeline.playing && this.lastT !== null && t > this.lastT) {
       view.turn((t - this.lastT) * TURNTABLE_DEGREES_PER_STEP);
     }
@@ -253,8 +250,7 @@ export class TimelineBar {
   clear(): void {
     this.timeline.pause();
     this.engaged = false;
-    this.studio.view.holdTubes(TUBES_HOLDER, false);
-    this.studio.view.holdFrame(TUBES_HOLDER, false);
+    this.studio.view.holdFrame(FRAME_HOLDER, false);
     this.studio.view.setGrowthTime(null);
     this.render(this.timeline.state);
   }

@@ -14,21 +14,20 @@ function fakeView(span: number | null) {
     film: async (look: PictureLook) => (calls.push(`film ${look.background}`), film),
     growthSpan: () => span,
     setGrowthTime: (t: number | null) => void calls.push(`time ${t}`),
-    holdTubes: (holder: string, on: boolean) => void calls.push(`tubes ${holder} ${on}`),
     growthReady: Promise.resolve(),
   };
   return { view: view as unknown as PlantView, calls };
 }
 
 describe('the view as a FrameScene', () => {
-  it('sets the growth time and the turn of each frame (tubes held: lines do not grow), draws at the size, and shows the plant whole after', async () => {
+  it('sets the growth time and the turn of each frame (as on screen: lines grow too), draws at the size, and shows the plant whole after', async () => {
     const { view, calls } = fakeView(7);
     expect(growthSpanOf(view)).toBe(7);
     const scene = await viewScene(view, { background: 'white' });
     await scene.at(2.5, 0.5);
     expect(scene.draw(320, 240)).toEqual({ width: 320, height: 240 });
     scene.close();
-    expect(calls).toEqual(['film white', 'tubes movie true', 'time 2.5', 'turn 0.5', 'draw 320×240', 'time null', 'tubes movie false', 'close']);
+    expect(calls).toEqual(['film white', 'time 2.5', 'turn 0.5', 'draw 320×240', 'time null', 'close']);
   });
 
   it('turns the whole plant where the plant has no growth times', async () => {

@@ -4,9 +4,6 @@
 import type { FilmFrames, PictureLook, PlantView } from '../../../view';
 import type { FrameScene } from './frame-scene';
 
-/** Who holds the view's tubes while a movie films the growth (the Lines mode's lines do not grow). */
-const TUBES_HOLDER = 'movie';
-
 /**
  * The growth time span the view's plant can be filmed over, `[0, N]`: N when the plant on screen
  * carries growth times, else null (a movie then turns the whole plant).
@@ -24,9 +21,8 @@ export interface FilmedScene extends FrameScene {
 export async function viewScene(view: PlantView, look: PictureLook): Promise<FilmedScene> {
   const growing = view.growthSpan() !== null;
   if (growing) await view.growthReady; // the growth's shaders, before the first frame
+  // (In the Lines mode or the Tubes mode, as on screen: both grow.)
   const film: FilmFrames = await view.film(look);
-  // A flat plant's lines do not grow: its tubes are drawn while the growth is filmed.
-  if (growing) view.holdTubes(TUBES_HOLDER, true);
   return {
     at: (t, turn) => {
       if (growing) view.setGrowthTime(t);
@@ -34,10 +30,7 @@ export async function viewScene(view: PlantView, look: PictureLook): Promise<Fil
     },
     draw: (width, height) => film.draw(width, height),
     close: () => {
-      if (growing) {
-        view.setGrowthTime(null);
-        view.holdTubes(TUBES_HOLDER, false);
-      }
+      if (growing) view.setGrowthTime(null);
       film.close();
     },
   };
