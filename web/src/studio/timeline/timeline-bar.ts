@@ -260,17 +260,20 @@ export class TimelineBar {
     const { play, slider, time } = this.controls;
     const steps = state.span ?? this.studio.steps() ?? 0;
     const t = this.engaged ? state.t : steps;
+    // (Called every frame while playing: only what changed is written, since a write of the same
+    // text or attribute still makes the page lay out, paint and hit-test again.)
     for (const button of [play, this.els.play]) {
-      button.setAttribute('aria-pressed', String(state.playing));
-      button.textContent = state.playing ? 'Pause' : 'Play';
+      setAttribute(button, 'aria-pressed', String(state.playing));
+      setProperty(button, 'textContent', state.playing ? 'Pause' : 'Play');
     }
-    slider.max = String(Math.max(steps, 0.01));
-    slider.value = String(Math.min(t, steps));
+    setProperty(slider, 'max', String(Math.max(steps, 0.01)));
+    setProperty(slider, 'value', String(Math.min(t, steps)));
     const label = state.span === null && this.engaged ? `${growthLabel(t, null)} (growth loading…)` : growthLabel(t, steps);
-    slider.setAttribute('aria-valuetext', label);
-    time.value = label;
-    this.els.bar.dataset.t = String(t);
+    setAttribute(slider, 'aria-valuetext', label);
+    setProperty(time, 'value', label);
+    setAttribute(this.els.bar, 'data-t', String(t));
   }
+
 
   /** What a share link keeps: the time (once used), speed, range, loop, camera, turntable; none at their defaults. */
   toShared(): SharedGrowth | undefined {
@@ -311,4 +314,14 @@ export class TimelineBar {
     }
     if (growth.playing) this.toggle();
   }
+}
+
+/** Sets an element's property to `value` unless it has it already. */
+function setProperty<E extends HTMLElement, K extends keyof E>(element: E, key: K, value: E[K]): void {
+  if (element[key] !== value) element[key] = value;
+}
+
+/** Sets an element's attribute to `value` unless it has it already. */
+function setAttribute(element: Element, name: string, value: string): void {
+  if (element.getAttribute(name) !== value) element.setAttribute(name, value);
 }
