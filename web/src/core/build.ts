@@ -138,6 +138,7 @@ export function inspectPlant(source: string, options?: BuildOptions, request?: I
 export function inspectPlant(source: string, options: BuildOptions, request: InspectRequest & { forGpu: true }): { build: PlantBuild; inspector: PlantInspector; gpu: GpuArrays };
 export function inspectPlant(source: string, options: BuildOptions = {}, request: InspectRequest = {}): { build: PlantBuild; inspector: PlantInspector; gpu?: GpuArrays } {
   const { sketch, onProgress, forGpu = false, from } = request;
+  assertReady(); // (the first plant's core: the studio core goes with it)
   const core = coreFor(from);
   const result = runBuildWith(core, source, { ...options, sketchFirst: sketch && sketchFirst(sketch, options) }, onProgress);
   let plain: PlantBuild;
@@ -209,15 +210,17 @@ function sketchFirst(request: SketchRequest, options: BuildOptions): SketchFirst
 
 /** Runs the core's `build` (for this folder's facades; the caller frees the result). */
 export function runBuild(source: string, options: CoreBuildOptions, onProgress?: (progress: BuildProgress) => void): WasmPlantBuild {
+  assertReady();
   return runBuildWith(build, source, options, onProgress);
 }
 
 /**
  * Runs `core`, the `build` of either core module (the first plant's, or the whole boundary's for
- * what only it has: branch editing, ./branches.ts). The caller frees the result.
+ * what only it has: branch editing, ./branches.ts), which the caller has checked is instantiated
+ * (the page has no instance of the first plant's core, only of the whole boundary's once it edits
+ * branches). The caller frees the result.
  */
 export function runBuildWith<B>(core: (...args: Parameters<typeof build>) => B, source: string, options: CoreBuildOptions, onProgress?: (progress: BuildProgress) => void): B {
-  assertReady();
   const { iterations, seed, time, sides, smoothAll, sketch, sketchFirst, growth } = options;
   const progress = onProgress && ((stage: BuildStage, step: number, steps: number) => onProgress({ stage, step, steps }));
   // The core reads no clock: it reads ours between its stages.
