@@ -188,7 +188,7 @@ export async function validate(json: unknown): Promise<Decoded> {
   }
   if (edits !== undefined) {
     // Branch edits are rare in links: their checker loads with the first (not with the page).
-    const { validateEdits } = await import('../core/branches');
+    const { validateEdits } = await import('../core/edits-check');
     const checked = validateEdits(edits);
     if (!checked.ok) return fail(`the link’s branch edits are malformed (${checked.error})`);
     state.edits = checked.document;
