@@ -36,15 +36,13 @@ export async function encodeState(state: SharedState): Promise<string> {
 }
 
 /**
- * Decodes a fragment (with or without `#`), loading the codec first; never throws: a codec that
- * cannot be loaded (the network gone) is a message too.
+ * Decodes a fragment (with or without `#`), loading the codec first; never throws: a codec (or
+ * one of the checks it loads) that cannot be loaded, the network gone, is a message too.
  */
 export async function decodeState(fragment: string): Promise<Decoded> {
-  let loaded: typeof Codec;
   try {
-    loaded = await loadCodec();
+    return await (await loadCodec()).decodeState(fragment);
   } catch {
     return { ok: false, error: 'the page could not load its link reader (check the connection, then reload)' };
   }
-  return loaded.decodeState(fragment);
 }
