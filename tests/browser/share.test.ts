@@ -110,22 +110,25 @@ describe('share links', () => {
     await page.close();
   });
 
-  const hostile: [string, string][] = [
+  const hostile: [string, string, string?][] = [
     ['too long', '#s=1.' + 'A'.repeat(MAX_FRAGMENT + 1)],
     ['not base64url', '#s=1.%3Cscript%3E'],
     ['not compressed', '#s=1.AAAAAAAAAAAA'],
     ['a decompression bomb', fragmentOf(new Uint8Array(8 * 1024 * 1024))],
     ['a newer format', fragmentOf(JSON.stringify({ v: 9, text: 'axiom: F' }), 9)],
     ['a malformed camera', fragmentOf(JSON.stringify({ v: 1, text: 'axiom: F', camera: { position: 'x' } }))],
+    // Checked by the codec's chunk, then the edits check's, both loaded on a fresh page by the link.
+    ['malformed branch edits', fragmentOf(JSON.stringify({ v: 1, text: 'axiom: F', edits: { version: 1, edits: [{ path: 'x' }] } })), 'branch edits are malformed'],
   ];
 
-  it.each(hostile)('refuse %s politely, and the studio opens as usual', async (_name, fragment) => {
+  it.each(hostile)('refuse %s politely, and the studio opens as usual', async (_name, fragment, reason) => {
     const { page, problems } = await openAt(inject('studioUrl') + fragment);
     const notice = page.getByTestId('notice');
     expect(await notice.isVisible()).toBe(true);
     expect(await notice.getAttribute('data-kind')).toBe('error');
     expect(await notice.getAttribute('role')).toBe('alert');
     expect(await page.getByTestId('notice-text').textContent()).toMatch(/^This link could not be opened: .+\. The studio opened as usual\.$/);
+    if (reason) expect(await page.getByTestId('notice-text').textContent()).toContain(reason);
     expect(await editorText(page)).toBe(example('abop-1.24d.lsys'));
     expect(await page.evaluate(() => document.querySelectorAll('script:not([src]), img[onerror]').length)).toBe(0);
     expect(problems).toEqual([]);

@@ -164,8 +164,8 @@ interface Area {
 const AREAS: Record<string, Area> = {
   // compile.ts: the boot script and the build worker's start compile the core without the facade
   // (and without the wasm-bindgen glue); branches.ts: the edits document's shape, which share
-  // links check.
-  core: { uses: [], doors: ['core/index.ts', 'core/compile.ts', 'core/branches.ts'] },
+  // links check (edits-check.ts, loaded with the first link that has edits).
+  core: { uses: [], doors: ['core/index.ts', 'core/compile.ts', 'core/branches.ts', 'core/edits-check.ts'] },
   // index.ts brings CodeMirror, which loads after the first plant: the plain textarea before it
   // and what the first plant's panels read of the text (defines, a directive's line, growth
   // directives, the reference's anchors) are doors of their own.

@@ -14,7 +14,6 @@ import {
   exportModelWithProgress,
   initCore,
   noEdits,
-  validateEdits,
   type EditsDocument,
   type MeshBuffers,
   type PlantEditor,
@@ -22,6 +21,7 @@ import {
 } from '../../web/src/core';
 // Not in the core's index: the page loads it on the first edit (loadBranchEditing, issue 22).
 import { editPlant } from '../../web/src/core/branch-editor';
+import { validateEdits } from '../../web/src/core/edits-check';
 
 const repoRoot = fileURLToPath(new URL('../..', import.meta.url));
 const GAME_TREE = readFileSync(new URL('../../public/examples/game-tree.lsys', import.meta.url), 'utf8');

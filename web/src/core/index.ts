@@ -43,7 +43,6 @@ export {
   applyMeshUpdate,
   DragRefused,
   noEdits,
-  validateEdits,
   type BranchEdit,
   type BranchInfo,
   type EditReport,

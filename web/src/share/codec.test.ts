@@ -1,7 +1,8 @@
 import { describe, expect, it } from 'vitest';
 import { readdirSync, readFileSync } from 'node:fs';
 import { deflateRawSync } from 'node:zlib';
-import { decodeState, encodeState, hasSharedState, MAX_FRAGMENT, MAX_ITERATIONS, type SharedState } from './codec';
+import { decodeState, encodeState, MAX_ITERATIONS, type SharedState } from './codec';
+import { hasSharedState, MAX_FRAGMENT } from './codec-loader';
 
 const base64url = (bytes: Uint8Array) => Buffer.from(bytes).toString('base64url');
 /** A fragment carrying arbitrary bytes, compressed as the studio would. */

@@ -7,18 +7,13 @@
 // `<script>…</script>` or `<img onerror=…>` is just a comment, and every legal grammar opens
 // (`codec.test.ts`; the studio end to end in `tests/browser/share.test.ts`).
 import type { EditsDocument } from '../core/branches';
+import { FRAGMENT_KEY, MAX_FRAGMENT, MAX_TEXT } from './codec-loader';
 import type { SharedGrowth } from './growth-state';
 
-/** The fragment's key: `#s=<version>.<payload>`. */
-export const FRAGMENT_KEY = 's';
 /** The format version written by this build; every version up to it can be read. */
 export const SHARE_VERSION = 1;
-/** Longest fragment accepted (characters). */
-export const MAX_FRAGMENT = 64 * 1024;
 /** Largest inflated payload accepted (bytes): a decompression bomb stops here. */
 export const MAX_INFLATED = 512 * 1024;
-/** Longest grammar text accepted (characters). */
-export const MAX_TEXT = 200_000;
 /** Most iterations a link may ask for: the core's own limit on steps (`#max_steps`) is a `u32`. */
 export const MAX_ITERATIONS = 2 ** 32 - 1;
 /** Most slider values a link keeps (they are in the text already: others are dropped, not refused). */
@@ -63,11 +58,6 @@ export async function encodeState(state: SharedState): Promise<string> {
   const json = JSON.stringify({ v: SHARE_VERSION, ...state });
   const deflated = await pipe(new TextEncoder().encode(json), new CompressionStream('deflate-raw'), Infinity);
   return `#${FRAGMENT_KEY}=${SHARE_VERSION}.${toBase64Url(deflated)}`;
-}
-
-/** True when a location fragment carries a shared state (it may still be invalid). */
-export function hasSharedState(fragment: string): boolean {
-  return fragment.replace(/^#/, '').startsWith(`${FRAGMENT_KEY}=`);
 }
 
 /** Decodes a fragment (with or without `#`); never throws. */
@@ -198,7 +188,7 @@ export async function validate(json: unknown): Promise<Decoded> {
   }
   if (edits !== undefined) {
     // Branch edits are rare in links: their checker loads with the first (not with the page).
-    const { validateEdits } = await import('../core/branches');
+    const { validateEdits } = await import('../core/edits-check');
     const checked = validateEdits(edits);
     if (!checked.ok) return fail(`the link’s branch edits are malformed (${checked.error})`);
     state.edits = checked.document;

@@ -1,7 +1,7 @@
 // Opening shared links: the one the page was opened with, and one pasted into the tab's address bar
 // later. Opening a link never loses the user's text: it is kept first (TextKeeper), and when this
 // browser cannot keep it anywhere the link is opened only after the user downloads it.
-import { decodeState, type GrammarStore, hasSharedState, type KeptTexts, type SharedState } from '../../share';
+import { decodeState, type GrammarStore, hasSharedState, type KeptTexts, loadCodec, type SharedState } from '../../share';
 import { askToDownload, type Notice, type QuestionDialog } from '../page';
 import { fetchExample } from '../gallery';
 import { keptSentence, type OpenedText, restoreAutosave, saveGrammarFile, type TextKeeper, type TextOpening } from '../files';
@@ -37,6 +37,9 @@ function refused(notice: Notice, error: string): void {
  * it had none; so does a link the user declines because their text could not be kept.
  */
 export async function startingText(parts: StartingParts, firstExample: string): Promise<StartingText> {
+  // The link's reader is not in the first load: a page opened from a link asks for it now, while
+  // the core downloads and the autosave is read (the one case it costs a request before the plant).
+  if (hasSharedState(location.hash)) loadCodec().catch(() => undefined); // a failure is decodeState's to say
   const saved = await restoreAutosave(parts.store, parts.kept);
   if (hasSharedState(location.hash)) {
     const decoded = await decodeState(location.hash);
