@@ -385,7 +385,10 @@ describe('sharing', () => {
     for (const grammar of LEGAL_GRAMMARS) {
       await typeText(page, grammar);
       await page.getByTestId('share').click();
+      // The dialog opens once the state is encoded (the codec loads on the first Share).
+      await page.getByTestId('share-dialog').waitFor({ state: 'visible' });
       const link = await page.getByTestId('share-link').inputValue();
+      expect(link).toMatch(/#s=1\./);
       expect(await page.getByTestId('share-too-long').isHidden()).toBe(true);
       await page.keyboard.press('Escape');
       const other = await newContext();
