@@ -43,7 +43,7 @@ export class LazyTimeline {
    * The growth time a timed or stepwise grammar's builds are derived at, or null for the grammar's
    * own iterations: a timed plant is shown at t by deriving it at t (ABOP 6.1), a stepwise one
    * at ⌊t⌋ (whole steps: then a step forward goes on from the step before), not grown from the
-   * whole plant's mesh. See {@link timeOptions}.
+   * whole plant's mesh. See {@link buildOptions}.
    */
   timedAt: number | null = null;
   private loading: Promise<Bar.TimelineBar> | undefined;
