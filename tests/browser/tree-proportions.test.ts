@@ -2,7 +2,7 @@
 // widths in the model's units (#width_unit 1): on screen its trunk must be as thin, against the
 // tree's height, as the grammar says, not the baobab that widths in units of the picture's
 // diagonal drew. Measured on the pixels of the 3D view; screenshots land in test-results/.
-import { writeFileSync } from 'node:fs';
+import { readFileSync, writeFileSync } from 'node:fs';
 import { chromium, type Browser } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { decodePng, foregroundMask, type Picture } from './pictures';
@@ -29,6 +29,24 @@ async function shown(source: string, picture: string): Promise<Picture> {
   const png = await page.locator(VIEW_CANVAS).screenshot({ style: PLANT_ONLY });
   writeFileSync(new URL(picture, RESULTS), png);
   return decodePng(png);
+}
+
+/** Fig 2.8a's trunk width ÷ height after n steps, by hand (crate/tests/abop_chapter2.rs,
+ * `ternary_ratio`): the trunk is vr^n wide; the main axis 200 lr^n + 100 (lr^n − 1)/(lr − 1) long. */
+function ternaryRatio(n: number, lr = 1.109, vr = 1.732): number {
+  return vr ** n / (200 * lr ** n + (100 * (lr ** n - 1)) / (lr - 1));
+}
+
+/** The columns × rows tile at `column` of a picture, its lowest tenth (the caption) left out. */
+function tile(picture: Picture, column: number, columns: number): Picture {
+  const width = Math.floor(picture.width / columns);
+  const height = Math.floor(picture.height * 0.9);
+  const data = new Uint8Array(width * height * 4);
+  for (let y = 0; y < height; y++) {
+    const from = (y * picture.width + column * width) * 4;
+    data.set(picture.data.subarray(from, from + width * 4), y * width * 4);
+  }
+  return { width, height, data };
 }
 
 /**
@@ -67,10 +85,9 @@ describe('the trees of chapter 2 on screen', () => {
   it('draws the trunk of Fig 2.8a as thin against its height as the grammar gives it', async () => {
     const tree = example('abop-2.08a-ternary-tree.lsys');
     const { trunk, height } = trunkAndHeight(await shown(tree, 'tree-2.08a-model-widths.png'));
-    // By hand from the grammar (crate/tests/abop_chapter2.rs, `ternary_ratio`): after n = 6 steps
-    // the trunk is vr⁶ = 1.732⁶ ≈ 27.0 wide; the main axis is 200 lr⁶ + 100 (lr⁶ − 1)/(lr − 1)
-    // ≈ 1162.7 long with lr = 1.109: a ratio of about 0.0232 (1/43).
-    const expected = 1.732 ** 6 / (200 * 1.109 ** 6 + (100 * (1.109 ** 6 - 1)) / 0.109);
+    // By hand from the grammar: after n = 6 steps the trunk is vr⁶ = 1.732⁶ ≈ 27.0 wide and the
+    // main axis ≈ 1162.7 long: a ratio of about 0.0232 (1/43).
+    const expected = ternaryRatio(6);
     const ratio = trunk / height;
     expect(height, 'the tree fills the view').toBeGreaterThan(250);
     expect(Math.abs(ratio / expected - 1), `trunk ${trunk} px of ${height} px: ${ratio.toFixed(4)} vs ${expected.toFixed(4)}`).toBeLessThan(0.25);
@@ -88,6 +105,31 @@ describe('the trees of chapter 2 on screen', () => {
     // its trunk's ten internodes 1, 0.9, … 0.9⁹ end to end: (1 − 0.9¹⁰)/0.1 ≈ 6.51.
     const expected = (10 * 0.03) / ((1 - 0.9 ** 10) / 0.1);
     expect(Math.abs(trunk / height / expected - 1), `trunk ${trunk} px of ${height} px`).toBeLessThan(0.25);
+    expect(studio.problems).toEqual([]);
+  });
+
+  it('prints the Stages figure of Fig 2.8a with each stage’s own trunk, n = 6 in the grammar’s proportions', async () => {
+    const { page } = studio;
+    expect(await pasteText(page, example('abop-2.08a-ternary-tree.lsys'))).toBe('ok');
+    await page.getByTestId('stages-toggle').click();
+    await page.getByTestId('stages-from').fill('4');
+    await page.getByTestId('stages-to').fill('6');
+    const captions = page.getByTestId('stages-figure').locator('.stage-caption');
+    await expect.poll(() => captions.allTextContents(), { timeout: 60_000 }).toEqual(['n = 4', 'n = 5', 'n = 6']);
+    const [file] = await Promise.all([page.waitForEvent('download'), page.getByTestId('stages-png').click()]);
+    const png = readFileSync((await file.path())!);
+    writeFileSync(new URL('tree-2.08a-stages.png', RESULTS), png);
+    const picture = decodePng(png);
+    // The figure's PNG (420 × 560 pixels a plant, at one scale): the last tile is n = 6.
+    const { trunk, height } = trunkAndHeight(tile(picture, 2, 3));
+    expect(height, 'n = 6 fills its tile').toBeGreaterThan(250);
+    expect(Math.abs(trunk / height / ternaryRatio(6) - 1), `trunk ${trunk} px of ${height} px`).toBeLessThan(0.25);
+    // At one scale, the younger trees are smaller and their trunks thinner: n = 4's trunk is
+    // vr⁻² = 1/3 of n = 6's, not the same share of a smaller picture.
+    const young = trunkAndHeight(tile(picture, 0, 3));
+    expect(young.height).toBeLessThan(0.8 * height);
+    expect(young.trunk).toBeLessThan(0.6 * trunk);
+    await page.getByTestId('stages-toggle').click();
     expect(studio.problems).toEqual([]);
   });
 });
