@@ -9,7 +9,7 @@ mod shared;
 
 use glam::DVec3;
 use meristem::export::Format;
-use meristem::pipeline::{build, export, Build, BuildOptions, ExportOptions, Hooks};
+use meristem::pipeline::{build, export, Build, BuildOptions, ExportOptions, Hooks, PlantEditor};
 use meristem::turtle::Skeleton;
 use shared::examples;
 
@@ -328,11 +328,28 @@ fn width_unit_makes_widths_diameters_in_model_units_at_any_size() {
         .mesh
         .positions
         .chunks(3)
-        .map(|p| DVec3::new(p[0] as f64, p[1] as f64, p[2] as f64))
-        .map(|p| p.y)
+        .map(|p| p[1] as f64)
         .fold(f64::MIN, f64::max);
     assert!(
         (top - (50.0 + 3.0)).abs() < 0.05,
         "sphere of radius 3 on top: {top}"
     );
+}
+
+/// Dragging a branch of 2.8a (the studio's branch editing) keeps the grammar's unit: the trunk,
+/// which the drag does not move, stays vr⁶ wide, the mesh's unit one model unit.
+#[test]
+fn a_dragged_tree_keeps_its_widths_in_model_units() {
+    let mut editor = PlantEditor::new(built(&example("abop-2.08a"), None).plant);
+    let branches = editor.branches();
+    let (k, branch) = branches
+        .iter()
+        .enumerate()
+        .find(|(_, b)| b.parent.is_some() && !b.children.is_empty())
+        .expect("a limb");
+    let tip = branch.control[3] + DVec3::new(40.0, 10.0, 0.0);
+    editor.drag(k as u32, 3, tip).expect("dragged");
+    assert_eq!(editor.plant().mesh.width_unit, 1.0);
+    let (trunk, _) = trunk_and_height(&editor.plant().mesh.positions);
+    assert!((trunk - 1.732f64.powi(6)).abs() < 1e-3 * trunk, "{trunk}");
 }
