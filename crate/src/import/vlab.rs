@@ -384,7 +384,8 @@ fn read_view(text: &str, all: &Files, view: &mut View) {
 /// nothing (polygons) or by a word starting with s (cylinders) in model units; the line style
 /// `pixel` (or 1) draws in pixels, `polygon` and `cylinder` (2, 3) in model units, since
 /// cpfg's cylinder is a unit cylinder of diameter 1 scaled by the width (`MakeCylinder`,
-/// `iGlEndCylNode` in `cpfg/irisGL.c`).
+/// `iGlEndCylNode` in `cpfg/irisGL.c`). lpfg reads the same `line style:` words (default pixel,
+/// `lpfg/drawparam.cpp`) and has no `initial line width:`.
 fn line_style(value: &str, width_line: bool) -> bool {
     let mut words = value.split_whitespace();
     if width_line {
