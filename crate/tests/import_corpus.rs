@@ -1210,6 +1210,30 @@ fn an_object_gives_its_view_and_functions_and_the_l_alone_says_what_it_lacks() {
     );
 }
 
+/// cpfg draws `line style: cylinder` (and polygons) as wide as the width in the model's units and
+/// `initial line width: 4 pixels` in pixels (vlab `cpfg/interpret.c` and `cpfg/irisGL.c`): the
+/// first imports with `#width_unit 1` and its mesh's width unit is one model unit; the second
+/// keeps Meristem's unit relative to the plant.
+#[test]
+fn a_view_file_that_draws_cylinders_gives_widths_in_model_units() {
+    let unit = meristem::vocabulary::DirectiveKind::WidthUnit.written();
+    let build_of = |text: &str| {
+        let b = build(text, &BuildOptions::default());
+        b.plant
+    };
+    let cylinders = import::import_object(&object(&root().join("vlab/05-monopodial")));
+    assert!(
+        cylinders.text.contains(&format!("{unit} 1\n")),
+        "{}",
+        cylinders.text
+    );
+    assert_eq!(build_of(&cylinders.text).mesh.width_unit, 1.0);
+    let pixels = import::import_object(&object(&root().join("vlab/01-hormone-up")));
+    assert!(!pixels.text.contains(&unit), "{}", pixels.text);
+    let plant = build_of(&pixels.text);
+    assert_ne!(plant.mesh.width_unit, 1.0, "relative to the plant's size");
+}
+
 #[test]
 fn a_zipped_object_imports_as_its_folder_does() {
     let dir = root().join("vlab/09-monopodial-spiral");

@@ -30,9 +30,10 @@ async function answer(check: string, source: string): Promise<{ pass: boolean; s
 }
 
 describe('the course', () => {
-  it('follows ABOP chapter 1 in at least 8 lessons and chapter 6 in at least 3, in order, each with a grammar and a task', () => {
+  it('follows ABOP chapter 1 in at least 8 lessons and chapters 2 and 6 in at least 3, in order, each with a grammar and a task', () => {
     const inChapter = (chapter: string) => lessons.filter((l) => l.chapter === chapter).length;
     expect(inChapter('1')).toBeGreaterThanOrEqual(8);
+    expect(inChapter('2')).toBeGreaterThanOrEqual(3);
     expect(inChapter('6')).toBeGreaterThanOrEqual(3);
     expect(lessons.map((l) => l.slug)).toEqual([...lessons].sort(compareLessons).map((l) => l.slug));
     for (const lesson of lessons) {

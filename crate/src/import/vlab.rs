@@ -27,6 +27,10 @@ pub(super) struct View {
     pub angle: Option<f64>,
     pub width: Option<f64>,
     pub width_step: Option<f64>,
+    /// cpfg draws lines as polygons or cylinders, whose width is in the model's units (`line
+    /// style: polygon | cylinder`, or `initial line width: w` without `pixels`), not as lines
+    /// `w` pixels wide (`line style: pixel`, cpfg's default): [`line_style`].
+    pub model_widths: bool,
     pub color: Option<f64>,
     pub color_increment: Option<f64>,
     /// `tropism direction: x,y,z` and `initial elasticity: e` (or `tropism: T: x,y,z E: e`).
@@ -308,7 +312,8 @@ fn read_view(text: &str, all: &Files, view: &mut View) {
         match key.as_str() {
             "angle factor" => view.angle = first.filter(|v| *v != 0.0).map(|v| 360.0 / v),
             "angle increment" => view.angle = first,
-            "initial line width" => view.width = first,
+            "initial line width" => (view.width, view.model_widths) = (first, line_style(value, true)),
+            "line style" => view.model_widths = line_style(value, false),
             "line width increment" => view.width_step = first,
             "initial color" => view.color = first,
             "color increment" => view.color_increment = first,
@@ -371,6 +376,23 @@ fn read_view(text: &str, all: &Files, view: &mut View) {
             _ => {}
         }
     }
+}
+
+/// Whether cpfg draws widths in the model's units after a view file's `initial line width: w
+/// [unit]` (`width_line`) or `line style: s` line (vlab `cpfg/interpret.c`, `ReadViewData`): a
+/// width followed by a word starting with p (`pixels`) draws lines in pixels, one followed by
+/// nothing (polygons) or by a word starting with s (cylinders) in model units; the line style
+/// `pixel` (or 1) draws in pixels, `polygon` and `cylinder` (2, 3) in model units, since
+/// cpfg's cylinder is a unit cylinder of diameter 1 scaled by the width (`MakeCylinder`,
+/// `iGlEndCylNode` in `cpfg/irisGL.c`). lpfg reads the same `line style:` words (default pixel,
+/// `lpfg/drawparam.cpp`) and has no `initial line width:`.
+fn line_style(value: &str, width_line: bool) -> bool {
+    let mut words = value.split_whitespace();
+    if width_line {
+        return !words.nth(1).is_some_and(|unit| unit.starts_with('p'));
+    }
+    let style = words.next().unwrap_or("");
+    !(style == "pixel" || style.starts_with('1'))
 }
 
 /// Three numbers separated by commas or spaces.
@@ -650,6 +672,32 @@ mod tests {
         two[3] = Some([1, 2, 3]);
         two[4] = Some([9, 9, 9]);
         assert_eq!(ramps(&two), ["#color 3 1 2 3", "#color 4 9 9 9"]);
+    }
+
+    #[test]
+    fn cpfg_draws_cylinders_and_polygons_in_model_units_and_lines_in_pixels() {
+        assert!(line_style(" 0.5", true), "a width alone: polygons");
+        assert!(!line_style(" 2 pixels", true));
+        assert!(line_style(" 2 s", true), "cpfg reads s as cylinders");
+        assert!(line_style(" cylinder", false));
+        assert!(line_style(" polygon /* or cylinder */", false));
+        assert!(line_style(" 3", false));
+        assert!(!line_style(" pixel // this is the default", false));
+        assert!(!line_style(" 1", false));
+        let mut view = View::default();
+        let text = "initial line width: 2 pixels\nline style: cylinder\n";
+        read_view(text, &Files::new(&[]), &mut view);
+        assert!(
+            view.model_widths,
+            "the later line wins, as cpfg reads them in order"
+        );
+        let mut view = View::default();
+        read_view(
+            "line style: cylinder\ninitial line width: 2 pixels\n",
+            &Files::new(&[]),
+            &mut view,
+        );
+        assert!(!view.model_widths);
     }
 
     #[test]

@@ -9,7 +9,8 @@ pub enum WidthUnit {
     /// One width unit is this fraction of the skeleton's bounding-box diagonal; but when the
     /// grammar sets no width (`Skeleton::widths_set`), at most [`DEFAULT_WIDTH_PER_LENGTH`] of its
     /// internodes' median length, so that a plant of many short internodes (ABOP 1.24a) is drawn
-    /// thin, as in the book, not as beads as thick as they are long.
+    /// thin, as in the book, not as beads as thick as they are long. A grammar's `#width_unit`
+    /// ([`Skeleton::width_unit`]) takes its place.
     Relative(f64),
     /// One width unit is this many model units.
     Absolute(f64),
@@ -19,11 +20,16 @@ pub enum WidthUnit {
 /// median length (see [`WidthUnit::Relative`]).
 pub const DEFAULT_WIDTH_PER_LENGTH: f64 = 0.1;
 
-/// Model units per width unit for `skeleton` (see [`WidthUnit`]).
+/// Model units per width unit for `skeleton` (see [`WidthUnit`]). A grammar's own unit
+/// (`#width_unit`, [`Skeleton::width_unit`]) replaces a relative one: its widths are diameters in
+/// the model's units at every size and step, as cpfg draws cylinders.
 pub fn resolve_width_unit(skeleton: &Skeleton, unit: WidthUnit) -> f64 {
     match unit {
         WidthUnit::Absolute(u) => u,
         WidthUnit::Relative(fraction) => {
+            if let Some(own) = skeleton.width_unit {
+                return own;
+            }
             let relative = fraction * skeleton_diagonal(skeleton);
             if skeleton.widths_set {
                 return relative;

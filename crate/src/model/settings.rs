@@ -25,6 +25,9 @@ pub struct Settings {
     pub width: f64,
     /// `#width_step`: how much `!` without a parameter decreases the width.
     pub width_step: f64,
+    /// `#width_unit`: model units per width unit, so that widths are diameters in the model's own
+    /// units (as cpfg draws cylinders); `None`: the mesh's unit, relative to the plant's size.
+    pub width_unit: Option<f64>,
     /// `#tropism x y z e`: the tropism vector T and susceptibility e (ABOP 2.3); e = 0 is none.
     pub tropism: (DVec3, f64),
     /// `#max_modules`: derivation stops with an error when a string would grow past this.
@@ -81,6 +84,7 @@ impl Settings {
             DirectiveKind::Step => self.step,
             DirectiveKind::Width => self.width,
             DirectiveKind::WidthStep => self.width_step,
+            DirectiveKind::WidthUnit => self.width_unit.unwrap_or(0.0),
             DirectiveKind::Iterations => self.iterations as f64,
             DirectiveKind::Seed => self.seed as f64,
             DirectiveKind::MaxModules => self.max_modules as f64,
@@ -131,6 +135,7 @@ impl Default for Settings {
             step: default_of(DirectiveKind::Step),
             width: default_of(DirectiveKind::Width),
             width_step: default_of(DirectiveKind::WidthStep),
+            width_unit: None,
             tropism: (DVec3::new(tropism(0), tropism(1), tropism(2)), tropism(3)),
             max_modules: default_of(DirectiveKind::MaxModules) as usize,
             max_steps: default_of(DirectiveKind::MaxSteps) as u32,

@@ -143,6 +143,7 @@ pub(super) fn empty_skeleton(settings: &Settings, adjustments: bool) -> Skeleton
     Skeleton {
         palette: settings.palette.clone(),
         widths_set: settings.width_given || adjustments,
+        width_unit: settings.width_unit,
         ..Skeleton::default()
     }
 }

@@ -97,6 +97,9 @@ pub struct Skeleton {
     /// width unit as they are. When false, every segment has the default width and the mesh ties
     /// it to the internodes' length instead (see `mesh::WidthUnit`).
     pub widths_set: bool,
+    /// `#width_unit`: model units per width unit, so that the mesh draws widths in the model's
+    /// own units whatever the plant's size; `None`: the mesh options' unit (`mesh::WidthUnit`).
+    pub width_unit: Option<f64>,
     /// The first module (index in the interpreted string) whose geometry went past
     /// [`MAX_COORDINATE`] or was not a finite number, and was clamped ([`Skeleton::clamp_to_finite`]).
     pub clamped: Option<u32>,

@@ -12,6 +12,7 @@ pub enum DirectiveKind {
     Step,
     Width,
     WidthStep,
+    WidthUnit,
     Tropism,
     Color,
     Seed,
@@ -452,6 +453,8 @@ pub const DIRECTIVES: &[DirectiveInfo] = &[
         "The initial segment width, in width units (default 1)."),
     row("width_step", D::WidthStep, "Width step", &[&[Param::number("d", "how much ! narrows").default(0.1).unit("width units")]], G::Turtle,
         "How much ! without a parameter decreases the width (default 0.1)."),
+    row("width_unit", D::WidthUnit, "Width unit", &[&[Param::number("u", "model units per width unit").unit("units")]], G::Turtle,
+        "Widths in the model's own units, as cpfg draws cylinders: a width w is a diameter of w·u units (#width_unit 1: !(w) is the diameter). Without it, one width unit is 1/300 of the plant's diagonal."),
     row("tropism", D::Tropism, "Tropism", &[&[
             Param::number("x", "tropism vector, x").default(0.0),
             Param::number("y", "tropism vector, y").default(-1.0),

@@ -159,6 +159,7 @@ impl Resolver {
                 s.width_given = true;
             }
             K::WidthStep => s.width_step = self.number(d).unwrap_or(s.width_step),
+            K::WidthUnit => s.width_unit = self.width_unit(d).or(s.width_unit),
             K::Tropism => {
                 if let Some(a) = self.arguments(d) {
                     let [x, y, z, e] = a.numbers(0);
@@ -502,6 +503,23 @@ impl Resolver {
                 None
             }
         }
+    }
+
+    /// `#width_unit`'s model units per width unit: a finite number above 0, or `E0215`.
+    fn width_unit(&mut self, d: &Directive) -> Option<f64> {
+        let value = self.number(d)?;
+        // The turtle's largest coordinate (`turtle::MAX_COORDINATE`): a larger unit would make
+        // a width of 1 wider than any drawing is allowed to be.
+        const MAX_WIDTH_UNIT: f64 = 1e30;
+        if value > 0.0 && value <= MAX_WIDTH_UNIT {
+            return Some(value);
+        }
+        let message = format!(
+            "{} must be above 0 and at most 1e30 (model units per width unit), found {value}",
+            d.written
+        );
+        self.directive_error("E0215", d, message);
+        None
     }
 
     /// A whole number from 0 to `max`, or `E0204`.

@@ -21,7 +21,12 @@ impl Importer {
             (DirectiveKind::Width, view.width),
             (DirectiveKind::WidthStep, view.width_step),
         ];
-        for (kind, value) in settings {
+        // cpfg's cylinders and polygons are as wide as the width in the model's units.
+        let unit = view.model_widths.then_some(1.0);
+        for (kind, value) in settings
+            .into_iter()
+            .chain([(DirectiveKind::WidthUnit, unit)])
+        {
             if let Some(v) = value {
                 self.out
                     .line(format!("{} {}", kind.written(), number(v)), 0);
