@@ -126,7 +126,7 @@ fn first_flowering(text: &str, steps: u32) -> Vec<Option<u32>> {
 
 #[test]
 fn mycelis_flowers_from_the_top_down() {
-    let text = example("abop-3.8-mycelis-muralis.lsys");
+    let text = example("abop-ls-3.2-mycelis-muralis.lsys");
     // By hand: the apex makes a branch every third step (steps 1, 4, 7, …), so after step t the
     // main axis has 1 + floor((t + 2) / 3) internodes; the florigen leaves I(20) at step 21 and
     // climbs one internode a step, reaching the apex's side at step 33: the apex flowers at 34.
