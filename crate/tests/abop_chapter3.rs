@@ -58,7 +58,11 @@ fn the_raceme_opens_its_flowers_from_the_base_up_by_lineage() {
             .collect();
         assert_eq!(ages.len(), n.saturating_sub(3) as usize, "buds at n = {n}");
         let open = ages.iter().filter(|&&t| t >= 3.0).count();
-        assert_eq!(open, n.saturating_sub(6) as usize, "open flowers at n = {n}");
+        assert_eq!(
+            open,
+            n.saturating_sub(6) as usize,
+            "open flowers at n = {n}"
+        );
         // Base first: the ages fall along the axis, so the open ones are the lowest.
         assert!(ages.windows(2).all(|w| w[0] > w[1]), "n = {n}: {ages:?}");
     }
@@ -86,7 +90,11 @@ fn the_acropetal_signal_opens_the_flowers_from_the_base_up() {
         let flowers = (n.saturating_sub(7) as usize).min(8);
         let buds = (n as usize).min(8) - flowers;
         assert_eq!(s, "K".repeat(flowers) + &"B".repeat(buds), "n = {n}");
-        assert_eq!(derived.ends_with('K'), n >= 15, "terminal flower at n = {n}");
+        assert_eq!(
+            derived.ends_with('K'),
+            n >= 15,
+            "terminal flower at n = {n}"
+        );
     }
 }
 
@@ -180,8 +188,16 @@ fn the_panicle_carries_more_flowers_on_its_lower_branches() {
             let age = n as usize - (i + 1); // steps the lateral apex has worked
             assert_eq!(count(b, "B"), age.min(5), "buds of lateral {i} at n = {n}");
             let open = b.iter().filter(|m| m.0 == "B" && m.1[0] >= 2.0).count();
-            assert_eq!(open, age.min(5).min(age.saturating_sub(2)), "lateral {i}, n = {n}");
-            assert_eq!(count(b, "K"), usize::from(age > 5), "lateral {i}'s flower, n = {n}");
+            assert_eq!(
+                open,
+                age.min(5).min(age.saturating_sub(2)),
+                "lateral {i}, n = {n}"
+            );
+            assert_eq!(
+                count(b, "K"),
+                usize::from(age > 5),
+                "lateral {i}'s flower, n = {n}"
+            );
         }
         let flowers: Vec<usize> = branches.iter().map(|b| count(b, "B")).collect();
         assert!(flowers.windows(2).all(|w| w[0] >= w[1]), "{flowers:?}");
@@ -193,7 +209,11 @@ fn the_monochasium_makes_one_flower_every_d_plus_one_steps() {
     let text = example("abop-sec-3.3.2-monochasium.lsys");
     for n in 1..=24u32 {
         let ms = modules(&at(&text, n).derived_text());
-        assert_eq!(count(&ms, "K"), ((n + 2) / 3) as usize, "flowers at n = {n}");
+        assert_eq!(
+            count(&ms, "K"),
+            n.div_ceil(3) as usize, // floor((n + D) / (D + 1)) with D = 2
+            "flowers at n = {n}"
+        );
         assert_eq!(count(&ms, "A"), 1, "one apex goes on at n = {n}");
     }
 }

@@ -7,15 +7,21 @@
 mod shared;
 
 use glam::DVec3;
-use meristem::pipeline::{build, BuildOptions};
+use meristem::pipeline::{build, Build, BuildOptions};
+use meristem::turtle::Skeleton;
 use shared::example;
 use std::collections::HashMap;
 
+/// The example's skeleton, built as the gallery builds it, without a diagnostic.
+fn skeleton(name: &str) -> Skeleton {
+    let result: Build = build(&example(name), &BuildOptions::default());
+    assert!(result.diagnostics.is_empty(), "{:?}", result.diagnostics);
+    result.plant.skeleton
+}
+
 /// The centres of the spheres (florets) the example draws, in the order the turtle drew them.
 fn florets(name: &str) -> Vec<DVec3> {
-    let result = build(&example(name), &BuildOptions::default());
-    assert!(result.diagnostics.is_empty(), "{:?}", result.diagnostics);
-    result.plant.skeleton.spheres.iter().map(|s| s.center).collect()
+    skeleton(name).spheres.iter().map(|s| s.center).collect()
 }
 
 /// The contact parastichies among `points[range]`: for each organ there, the index differences of
@@ -63,7 +69,10 @@ fn vogel_places_floret_n_at_n_times_the_divergence_angle_and_c_root_n() {
             assert!(p[n].z.abs() < 1e-9 && (p[n].length() - (n as f64).sqrt()).abs() < 1e-6);
             if n > 1 {
                 let divergence = turn(p[n - 1], p[n], DVec3::Z);
-                assert!((divergence - angle).abs() < 1e-6, "{name}: {divergence} at {n}");
+                assert!(
+                    (divergence - angle).abs() < 1e-6,
+                    "{name}: {divergence} at {n}"
+                );
             }
         }
     }
@@ -95,25 +104,24 @@ fn the_golden_angle_shows_34_and_55_parastichies_in_the_outer_part_of_the_head()
 
 #[test]
 fn the_sunflower_head_has_600_disk_florets_34_rays_and_34_55_parastichies() {
-    let result = build(
-        &example("abop-sec-4.1-sunflower-head.lsys"),
-        &BuildOptions::default(),
-    );
-    assert!(result.diagnostics.is_empty());
-    let disk: Vec<DVec3> = result.plant.skeleton.spheres.iter().map(|s| s.center).collect();
+    let head = skeleton("abop-sec-4.1-sunflower-head.lsys");
+    let disk: Vec<DVec3> = head.spheres.iter().map(|s| s.center).collect();
     assert_eq!(disk.len(), 600);
-    assert_eq!(result.plant.skeleton.surfaces.len(), 34, "ray florets");
+    assert_eq!(head.surfaces.len(), 34, "ray florets");
     assert_eq!(parastichies(&disk, 300, 600), (34, 55));
     // Every ray floret lies outside the disk.
     let rim = disk.iter().map(|p| p.length()).fold(0.0, f64::max);
-    for ray in &result.plant.skeleton.surfaces {
+    for ray in &head.surfaces {
         assert!(ray.origin.length() > rim - 1e-9);
     }
 }
 
 /// The organs of a cylindrical example, as seen from the axis Y: (angle, height) per organ.
 fn about_the_axis(points: &[DVec3]) -> Vec<(f64, f64)> {
-    points.iter().map(|p| (p.z.atan2(p.x).to_degrees(), p.y)).collect()
+    points
+        .iter()
+        .map(|p| (p.z.atan2(p.x).to_degrees(), p.y))
+        .collect()
 }
 
 #[test]
@@ -138,18 +146,8 @@ fn the_cylindrical_model_turns_by_137_5_and_shows_its_parastichy_pairs() {
 #[test]
 fn the_pine_cone_shows_5_and_8_parastichies_where_it_is_widest() {
     // Each scale is placed by its base, the first point of its polygon, on the cone's surface.
-    let result = build(
-        &example("abop-sec-4.2-pine-cone.lsys"),
-        &BuildOptions::default(),
-    );
-    assert!(result.diagnostics.is_empty());
-    let scales: Vec<DVec3> = result
-        .plant
-        .skeleton
-        .polygons
-        .iter()
-        .map(|p| p.points[0])
-        .collect();
+    let cone = skeleton("abop-sec-4.2-pine-cone.lsys");
+    let scales: Vec<DVec3> = cone.polygons.iter().map(|p| p.points[0]).collect();
     assert_eq!(scales.len(), 90);
     assert_eq!(parastichies(&scales, 30, 60), (5, 8));
 }

@@ -94,9 +94,15 @@ pub fn modules(derived: &str) -> Vec<(String, Vec<f64>)> {
         }
         let mut params = Vec::new();
         if chars.get(i) == Some(&'(') {
-            let close = i + chars[i..].iter().position(|&c| c == ')').expect("closing )");
+            let close = i + chars[i..]
+                .iter()
+                .position(|&c| c == ')')
+                .expect("closing )");
             let inside: String = chars[i + 1..close].iter().collect();
-            params = inside.split(',').map(|x| x.parse().expect("a number")).collect();
+            params = inside
+                .split(',')
+                .map(|x| x.parse().expect("a number"))
+                .collect();
             i = close + 1;
         }
         out.push((name, params));
