@@ -152,3 +152,17 @@ describe('the chapter 1 checks accept every correct answer and only those', () =
     expect((await answer(task.check, task.solution.replace(/#seed \d+\n/, ''), tall)).pass).toBe(false);
   });
 });
+
+describe('the parastichy facts', () => {
+  it('refuse a plant of more spheres than they read, in words', async () => {
+    const parsed = parseCheck('parastichies_m == 34');
+    if (!parsed.ok) throw new Error(parsed.error.message);
+    const { build, inspector } = inspectPlant('#iterations 13\naxiom: A\nA -> AA\nhomomorphism:\nA -> [@O(0.1)]f\n');
+    try {
+      const facts = await plantFacts(parsed.check, build, inspector);
+      expect(facts).toEqual({ ok: false, reason: 'the plant has 8,192 spheres, more than the parastichy count reads (5,000); try fewer iterations' });
+    } finally {
+      inspector.free();
+    }
+  });
+});

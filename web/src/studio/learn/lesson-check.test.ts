@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import type { PlantStats } from '../../core';
-import { evaluateCheck, needsDerivedString, parseCheck, spokenAnswer, spokenNumber, type CheckNode } from './lesson-check';
+import { evaluateCheck, needsDerivedString, needsFlorets, parseCheck, spokenAnswer, spokenNumber, type CheckNode } from './lesson-check';
 import { floretPositions, parastichyPair, type FloretMesh } from './parastichies';
 import { writtenSeed } from './written-seed';
 
@@ -149,7 +149,9 @@ describe('checks: position, seeds and parastichies', () => {
     expect(floretPositions(mesh)).toHaveLength(600);
     expect(floretPositions(mesh)[10][0]).toBeCloseTo(Math.sqrt(10) * Math.cos((10 * 137.5 * Math.PI) / 180), 6);
     expect(parastichyPair(floretPositions(mesh))).toEqual([34, 55]);
-    expect(evaluateCheck(read('parastichies_m == 34 and parastichies_n == 55'), { stats, mesh }).pass).toBe(true);
+    expect(evaluateCheck(read('parastichies_m == 34 and parastichies_n == 55'), { stats, florets: floretPositions(mesh) }).pass).toBe(true);
+    expect(needsFlorets(read('segments > 1 and not (parastichies_n + 1 > 2)'))).toBe(true);
+    expect(needsFlorets(read('segments > 1 or contains("D")'))).toBe(false);
     expect(parastichyPair(floretPositions(vogelMesh(600, 137.3)))).not.toEqual([34, 55]);
     expect(evaluateCheck(read('parastichies_m == 0'), { stats }).pass).toBe(true);
     expect(parastichyPair(floretPositions(vogelMesh(5, 137.5)))).toEqual([0, 0]);

@@ -8,7 +8,7 @@
 // malformed check fails the build with its file and line) and again on the page, then evaluated on
 // the last good build. Every answer is in words: "count("[") is 4, the task wants 8".
 import type { PlantBuild, PlantInspector, PlantStats } from '../../core';
-import { floretPositions, parastichyPair, type FloretMesh } from './parastichies.ts';
+import { floretPositions, MAX_FLORETS, parastichyPair } from './parastichies.ts';
 
 /** The facts a check may name, with what each means (docs/LESSONS.md lists the same). */
 export const CHECK_FACTS = {
@@ -311,6 +311,29 @@ export function parseCheck(source: string): ParsedCheck {
   }
 }
 
+/** Whether `node` (or any part of it) satisfies `test`. */
+function mentions(node: CheckNode | NumberNode, test: (node: NumberNode) => boolean): boolean {
+  switch (node.kind) {
+    case 'compare':
+    case 'and':
+    case 'or':
+    case 'arithmetic':
+      return mentions(node.left, test) || mentions(node.right, test);
+    case 'not':
+    case 'negate':
+      return mentions(node.operand, test);
+    case 'contains':
+      return false;
+    default:
+      return test(node);
+  }
+}
+
+/** Whether evaluating `check` needs the florets' positions (a parastichy fact). */
+export function needsFlorets(check: CheckNode): boolean {
+  return mentions(check, (n) => n.kind === 'fact' && (n.name === 'parastichies_m' || n.name === 'parastichies_n'));
+}
+
 /** Whether evaluating `check` needs the derived string (not only the stats). */
 export function needsDerivedString(check: CheckNode): boolean {
   const numeric = (node: NumberNode): boolean =>
@@ -336,8 +359,8 @@ export interface PlantFacts {
   stats: PlantStats;
   /** The derived string's modules as the string panel writes them (`F`, `A(1,2)`, `[`). */
   modules?: readonly string[];
-  /** The mesh, for the florets' parastichies (none: 0). */
-  mesh?: FloretMesh;
+  /** The florets' positions (`parastichies.ts`), for the parastichy facts (none: 0). */
+  florets?: readonly number[][];
   /** The seed the plant was derived with (`PlantBuild.seed`). */
   seed?: number;
   /** The seed the grammar's text writes (`written-seed.ts`); undefined when it writes none. */
@@ -355,7 +378,11 @@ export type FactsOutcome = { ok: true; facts: PlantFacts } | { ok: false; reason
  * (`build.derived` is cut short) from the inspector when the check needs it.
  */
 export async function plantFacts(check: CheckNode, build: PlantBuild, inspector: Pick<PlantInspector, 'moduleTexts'>, textSeed?: number): Promise<FactsOutcome> {
-  const known = { stats: build.stats, mesh: build.mesh, seed: build.seed, textSeed };
+  const florets = needsFlorets(check) ? floretPositions(build.mesh) : undefined;
+  if (florets && florets.length > MAX_FLORETS) {
+    return { ok: false, reason: `the plant has ${florets.length.toLocaleString('en')} spheres, more than the parastichy count reads (${MAX_FLORETS.toLocaleString('en')}); try fewer iterations` };
+  }
+  const known = { stats: build.stats, florets, seed: build.seed, textSeed };
   if (!needsDerivedString(check)) return { ok: true, facts: known };
   const count = build.moduleCount;
   if (count > MAX_CHECKED_MODULES) {
@@ -386,9 +413,9 @@ class StringFacts {
     this.modules = facts.modules;
   }
 
-  /** The contact parastichy pair of the plant's spheres ([0, 0] without a mesh or with too few). */
+  /** The contact parastichy pair of the plant's spheres ([0, 0] without florets or with too few). */
   pair(): [number, number] {
-    return (this.parastichies ??= this.facts.mesh ? parastichyPair(floretPositions(this.facts.mesh)) : [0, 0]);
+    return (this.parastichies ??= parastichyPair(this.facts.florets ?? []));
   }
 
   /** Where the first module named `name` stands, from 1; 0 when none does. */

@@ -13,6 +13,12 @@ const MATERIAL_PLAIN = 2;
 /** Fewer florets than this have no parastichies worth counting. */
 export const MIN_FLORETS = 12;
 
+/**
+ * The most florets a check counts parastichies among: the count compares a third of them with all
+ * (quadratic), which at this size takes some tens of milliseconds.
+ */
+export const MAX_FLORETS = 5_000;
+
 /** The mesh arrays the florets are read from. */
 export type FloretMesh = Pick<MeshBuffers, 'positions' | 'indices' | 'ranges' | 'materialRanges'>;
 
