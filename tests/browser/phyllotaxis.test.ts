@@ -34,12 +34,18 @@ describe('ABOP chapters 3 and 4 in the studio', () => {
     const phyllotaxis = group('ABOP chapter 4: phyllotaxis');
     expect(await herbs.locator('button.example-card').count()).toBeGreaterThanOrEqual(8);
     expect(await phyllotaxis.locator('button.example-card').count()).toBeGreaterThanOrEqual(7);
-    await herbs.scrollIntoViewIfNeeded();
-    await page.waitForTimeout(1500); // thumbnails
-    await savePage(page, 'chapter3-gallery.png');
-    await phyllotaxis.scrollIntoViewIfNeeded();
-    await page.waitForTimeout(1500);
-    await savePage(page, 'chapter4-gallery.png');
+    // Every card's thumbnail is drawn (the gallery's renderer builds each example).
+    for (const [group, picture] of [
+      [herbs, 'chapter3-gallery.png'],
+      [phyllotaxis, 'chapter4-gallery.png'],
+    ] as const) {
+      await group.scrollIntoViewIfNeeded();
+      const images = group.locator('button.example-card img');
+      await expect
+        .poll(async () => (await images.evaluateAll((all) => all.map((i) => (i as HTMLElement).dataset.state))).filter((s) => s !== 'ready'), { timeout: 60_000, interval: 500 })
+        .toEqual([]);
+      await savePage(page, picture);
+    }
     await page.keyboard.press('Escape');
   });
 
