@@ -1,4 +1,5 @@
-//! What several test files read: the gallery's examples (`public/examples/*.lsys`), a grammar
+//! What several test files read: the gallery's examples (`public/examples/*.lsys`, all or one by
+//! name), a derived string's modules with their parameters, a grammar
 //! resolved without a diagnostic, a vlab object's folder as its files, and a plant's segments'
 //! lengths. (Each test file compiles this module on its own and uses a
 //! part of it: hence `allow(dead_code)`.)
