@@ -6,21 +6,23 @@ import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
 import { LessonFileError, lessonIndex, readLesson, readLessons } from '../../scripts/lesson-files';
 import { lessonAssets } from '../../scripts/lessons-plugin';
-import { inspectPlant } from '../../web/src/core';
+import { directiveOfKind, inspectPlant, loadVocabulary, writtenDirective } from '../../web/src/core';
 import { evaluateCheck, parseCheck, plantFacts, spokenAnswer } from '../../web/src/studio/learn/lesson-check';
 import { compareLessons, isLesson, isLessonIndex } from '../../web/src/studio/learn/lesson-manifest';
+import { writtenSeed } from '../../web/src/studio/learn/written-seed';
 
 const LESSONS_DIR = fileURLToPath(new URL('../../public/lessons', import.meta.url));
 const lessons = readLessons(LESSONS_DIR);
 
 /** The check's answer on `source`, as the Learn panel says it. */
-async function answer(check: string, source: string): Promise<{ pass: boolean; said: string }> {
+async function answer(check: string, source: string, seed?: number): Promise<{ pass: boolean; said: string }> {
   const parsed = parseCheck(check);
   if (!parsed.ok) throw new Error(parsed.error.message);
-  const { build, inspector } = inspectPlant(source);
+  const { build, inspector } = inspectPlant(source, seed === undefined ? {} : { seed });
   try {
     expect(build.diagnostics, source).toEqual([]);
-    const facts = await plantFacts(parsed.check, build, inspector);
+    const seedDirective = writtenDirective(directiveOfKind(await loadVocabulary(), 'Seed'));
+    const facts = await plantFacts(parsed.check, build, inspector, writtenSeed(source, seedDirective));
     if (!facts.ok) throw new Error(facts.reason);
     const result = evaluateCheck(parsed.check, facts.facts);
     return { pass: result.pass, said: spokenAnswer(result) };
@@ -30,11 +32,13 @@ async function answer(check: string, source: string): Promise<{ pass: boolean; s
 }
 
 describe('the course', () => {
-  it('follows ABOP chapter 1 in at least 8 lessons and chapters 2 and 6 in at least 3, in order, each with a grammar and a task', () => {
+  it('follows ABOP chapter 1 in at least 8 lessons and chapters 2, 3, 4 and 6 in at least 3 each, in order, each with a grammar and a task', () => {
     const inChapter = (chapter: string) => lessons.filter((l) => l.chapter === chapter).length;
     expect(inChapter('1')).toBeGreaterThanOrEqual(8);
     expect(inChapter('2')).toBeGreaterThanOrEqual(3);
     expect(inChapter('6')).toBeGreaterThanOrEqual(3);
+    expect(inChapter('3')).toBeGreaterThanOrEqual(3);
+    expect(inChapter('4')).toBeGreaterThanOrEqual(3);
     expect(lessons.map((l) => l.slug)).toEqual([...lessons].sort(compareLessons).map((l) => l.slug));
     for (const lesson of lessons) {
       expect(lesson.grammars.length, lesson.slug).toBeGreaterThan(0);
@@ -105,5 +109,61 @@ describe('a lesson file', () => {
     ['a grammar inside a list', good.slice(0, 10).concat(['- item', '', '  ```lsys', '  axiom: F', '  ```']), 'stand on their own'],
   ])('with %s fails with its line', (_, lines, message) => {
     expect(problem(lines)).toContain(message);
+  });
+});
+
+describe('the chapter 1 checks accept every correct answer and only those', () => {
+  const lesson = (slug: string) => lessons.find((l) => l.slug === slug)!;
+  const filament = (axiom: string, n: number, rules: string) => `#iterations ${n}\naxiom: ${axiom}\n${rules}\nhomomorphism:\na -> F\nb -> F[+F][-F]\n`;
+
+  it('lesson 6 takes a right-to-left signal on a filament of any length at any step', async () => {
+    const { check } = lesson('06-signals').tasks[0];
+    const right = 'a > b -> b\nb -> a';
+    for (const [axiom, n] of [['aaaaaaab', 3], ['aaaaaaab', 4], ['aaaaaaab', 7], ['aaaaaaaab', 5], ['aaab', 2], ['aaaaaaaaaaaab', 10]] as const) {
+      const said = await answer(check, filament(axiom, n, right));
+      expect(said.pass, `${axiom} at ${n}: ${said.said}`).toBe(true);
+    }
+    // The other way round, rules in the other order and a right context over any neighbour pass too.
+    expect((await answer(check, filament('aaaaaaab', 4, 'b -> a\na > b -> b'))).pass).toBe(true);
+    for (const [axiom, n, rules] of [
+      ['baaaaaaaa', 3, 'b < a -> b\nb -> a'], // the signal still goes left to right
+      ['aaaaaaab', 3, 'b < a -> b\nb -> a'], // a left context at the right end: the signal is lost
+      ['aaaaaaab', 3, 'a > b -> b'], // b stays: a trail of b
+      ['aaaaaaab', 3, 'b -> a'], // no signal at all
+      ['aaab', 5, 'a > b -> b\nb -> a'], // run off the left end
+    ] as const) {
+      const said = await answer(check, filament(axiom, n, rules));
+      expect(said.pass, `${axiom} at ${n} with ${rules}: ${said.said}`).toBe(false);
+    }
+  });
+
+  it('lesson 5 wants the seed in the text, not only in the Seed box', async () => {
+    const task = lesson('05-stochastic').tasks[0];
+    const start = lesson('05-stochastic').grammars[task.start].text;
+    const tall = Number(/#seed (\d+)/.exec(task.solution)![1]);
+    // The tall plant from the Seed box, with the text still saying #seed 1: not yet.
+    const boxOnly = await answer(task.check, start, tall);
+    expect(boxOnly.pass, boxOnly.said).toBe(false);
+    expect(boxOnly.said).toContain('text_seed is 1');
+    // The seed written into the text passes with the box empty or holding the same seed…
+    expect((await answer(task.check, task.solution)).pass).toBe(true);
+    expect((await answer(task.check, task.solution, tall)).pass).toBe(true);
+    // …but not while the box overrides it with another, nor with the #seed line removed.
+    expect((await answer(task.check, task.solution, tall + 1)).pass).toBe(false);
+    expect((await answer(task.check, task.solution.replace(/#seed \d+\n/, ''), tall)).pass).toBe(false);
+  });
+});
+
+describe('the parastichy facts', () => {
+  it('refuse a plant of more spheres than they read, in words', async () => {
+    const parsed = parseCheck('parastichies_m == 34');
+    if (!parsed.ok) throw new Error(parsed.error.message);
+    const { build, inspector } = inspectPlant('#iterations 13\naxiom: A\nA -> AA\nhomomorphism:\nA -> [@O(0.1)]f\n');
+    try {
+      const facts = await plantFacts(parsed.check, build, inspector);
+      expect(facts).toEqual({ ok: false, reason: 'the plant has 8,192 spheres, more than the parastichy count reads (5,000); try fewer iterations' });
+    } finally {
+      inspector.free();
+    }
   });
 });

@@ -13,7 +13,9 @@ pub struct SphereMesh {
 
 /// A sphere of `segments` meridians and `rings` bands (at least 3 and 2). Vertices:
 /// `2 + (rings − 1)·segments`; triangles: `2·segments·(rings − 1)`. A radius that is not a positive
-/// finite number gives an empty mesh. The poles are on the Y axis (the view's up).
+/// finite number gives an empty mesh, and so does a sphere too small for its distance from the
+/// origin to be drawn in `f32`, the mesh's precision (a triangle would collapse to a line or turn
+/// over there: a radius of 1 at 1e30). The poles are on the Y axis (the view's up).
 pub fn sphere(center: DVec3, radius: f64, segments: u32, rings: u32) -> SphereMesh {
     let mut mesh = SphereMesh::default();
     if !(radius > 0.0 && radius.is_finite() && center.is_finite()) {
@@ -51,7 +53,23 @@ pub fn sphere(center: DVec3, radius: f64, segments: u32, rings: u32) -> SphereMe
         mesh.triangles
             .push([bottom, at(rings - 1, s + 1), at(rings - 1, s)]);
     }
-    mesh
+    if drawn_in_f32(&mesh) {
+        mesh
+    } else {
+        SphereMesh::default()
+    }
+}
+
+/// Whether every triangle keeps an area and its outward side once its corners are rounded to
+/// `f32` (as `MeshBuffers::check` sees them).
+fn drawn_in_f32(mesh: &SphereMesh) -> bool {
+    let rounded = |p: DVec3| p.as_vec3().as_dvec3();
+    mesh.triangles.iter().all(|t| {
+        let [a, b, c] = t.map(|i| rounded(mesh.positions[i as usize]));
+        let normals: DVec3 = t.iter().map(|&i| mesh.normals[i as usize]).sum();
+        let face = (b - a).cross(c - a);
+        face.length() > 0.0 && face.dot(normals) > 0.0
+    })
 }
 
 #[cfg(test)]
@@ -80,6 +98,23 @@ mod tests {
                 "triangle faces inwards"
             );
         }
+    }
+
+    #[test]
+    fn no_sphere_too_small_to_draw_where_it_is() {
+        // Far out along two axes, the corners round onto one line (what clamped coordinates give).
+        assert!(sphere(DVec3::new(1e30, 0.0, -1e30), 1.0, 8, 4)
+            .positions
+            .is_empty());
+        assert!(sphere(DVec3::new(3e7, 2.0, 3e7), 0.5, 8, 4)
+            .positions
+            .is_empty());
+        assert!(!sphere(DVec3::new(1e4, 0.0, 0.0), 0.01, 8, 4)
+            .positions
+            .is_empty());
+        assert!(!sphere(DVec3::new(1e30, 0.0, 0.0), 1e26, 8, 4)
+            .positions
+            .is_empty());
     }
 
     #[test]

@@ -1,4 +1,5 @@
-//! What several test files read: the gallery's examples (`public/examples/*.lsys`), a grammar
+//! What several test files read: the gallery's examples (`public/examples/*.lsys`, all or one by
+//! name), a derived string's modules with their parameters, a grammar
 //! resolved without a diagnostic, a vlab object's folder as its files, and a plant's segments'
 //! lengths. (Each test file compiles this module on its own and uses a
 //! part of it: hence `allow(dead_code)`.)
@@ -64,4 +65,48 @@ pub fn lengths(b: &Build) -> Vec<f64> {
         .iter()
         .map(|s| (s.end - s.start).length())
         .collect()
+}
+
+/// The text of the gallery example whose file name ends with `name`.
+#[allow(dead_code)]
+pub fn example(name: &str) -> String {
+    examples()
+        .into_iter()
+        .find(|(p, _)| p.to_string_lossy().ends_with(name))
+        .unwrap_or_else(|| panic!("no example {name}"))
+        .1
+}
+
+/// A derived string's modules as (name, parameters): `I(1)[&(40)B]` is `I` (1), `[`, `&` (40),
+/// `B`, `]`. Names are one character, or a letter with a subscript (`F_a`), as the gallery's
+/// chapter 3 and 4 examples write them.
+#[allow(dead_code)]
+pub fn modules(derived: &str) -> Vec<(String, Vec<f64>)> {
+    let chars: Vec<char> = derived.chars().collect();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < chars.len() {
+        let mut name = chars[i].to_string();
+        i += 1;
+        if chars.get(i) == Some(&'_') {
+            name.push('_');
+            name.push(chars[i + 1]);
+            i += 2;
+        }
+        let mut params = Vec::new();
+        if chars.get(i) == Some(&'(') {
+            let close = i + chars[i..]
+                .iter()
+                .position(|&c| c == ')')
+                .expect("closing )");
+            let inside: String = chars[i + 1..close].iter().collect();
+            params = inside
+                .split(',')
+                .map(|x| x.parse().expect("a number"))
+                .collect();
+            i = close + 1;
+        }
+        out.push((name, params));
+    }
+    out
 }

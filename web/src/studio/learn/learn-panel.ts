@@ -4,9 +4,10 @@
 // column beside the studio on wide screens, over it on narrow ones (styles/side-panels.css); not modal, so the
 // editor and the plant stay in reach while a task is worked on. Escape closes it.
 import './learn-panel.css';
-import type { PlantBuild, PlantInspector } from '../../core';
+import { directiveOfKind, loadVocabulary, writtenDirective, type PlantBuild, type PlantInspector } from '../../core';
 import { chapterHeading, isLesson, isLessonIndex, type Lesson, type LessonGrammar, type LessonSummary, type LessonTask } from './lesson-manifest';
 import { evaluateCheck, parseCheck, plantFacts, spokenAnswer } from './lesson-check';
+import { writtenSeed } from './written-seed';
 // Loaded on demand: it imports other areas' files, not their indexes, which would bring their
 // wiring into its chunk's graph (and split the first load into more files).
 import { byId } from '../page/page-elements';
@@ -35,6 +36,8 @@ export type LearnElements = ReturnType<typeof learnElements>;
 
 /** A build as the live preview keeps it. */
 interface ShownBuild {
+  /** The text the plant was built from. */
+  source: string;
   build: PlantBuild;
   inspector: Pick<PlantInspector, 'moduleTexts'>;
 }
@@ -299,7 +302,8 @@ export class LearnPanel {
     const last = preview.lastResult;
     if (!last) return say('fail', 'Not yet: there is no plant on screen.');
     if (!last.build.ok) return say('fail', 'Not yet: the grammar has errors (marked in the editor); the plant on screen is an older one. Fix them, then check again.');
-    const facts = await plantFacts(parsed.check, last.build, last.inspector);
+    const seedDirective = writtenDirective(directiveOfKind(await loadVocabulary(), 'Seed'));
+    const facts = await plantFacts(parsed.check, last.build, last.inspector, writtenSeed(last.source, seedDirective));
     if (!facts.ok) return say('fail', `Not yet: ${facts.reason}.`);
     const answer = evaluateCheck(parsed.check, facts.facts);
     say(answer.pass ? 'pass' : 'fail', spokenAnswer(answer) + (!answer.pass && task.hint ? ` Hint: ${task.hint}` : ''));

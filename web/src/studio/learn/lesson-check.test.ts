@@ -1,6 +1,8 @@
 import { describe, expect, it } from 'vitest';
 import type { PlantStats } from '../../core';
-import { evaluateCheck, needsDerivedString, parseCheck, spokenAnswer, spokenNumber, type CheckNode } from './lesson-check';
+import { evaluateCheck, needsDerivedString, needsFlorets, parseCheck, spokenAnswer, spokenNumber, type CheckNode } from './lesson-check';
+import { floretPositions, parastichyPair, type FloretMesh } from './parastichies';
+import { writtenSeed } from './written-seed';
 
 const stats: PlantStats = {
   modules: 12,
@@ -125,3 +127,66 @@ describe('checks: malformed ones are refused with the place', () => {
     expect(parsed.error.offset).toBe(offset);
   });
 });
+
+describe('checks: position, seeds and parastichies', () => {
+  it('finds where a module first stands, from 1', () => {
+    const facts = { stats, modules };
+    expect(evaluateCheck(read('position("F") == 1 and position("A") == 16 and position("G") == 0'), facts).pass).toBe(true);
+    expect(evaluateCheck(read('position("]") == 5 and position("-") < position("A")'), facts).pass).toBe(true);
+    expect(needsDerivedString(read('position("F") > 0'))).toBe(true);
+  });
+
+  it('compares the seed on screen with the one the text writes', () => {
+    const check = read('text_seed == seed');
+    expect(evaluateCheck(check, { stats, seed: 4, textSeed: 4 }).pass).toBe(true);
+    expect(spokenAnswer(evaluateCheck(check, { stats, seed: 4, textSeed: 1 }))).toBe('Not yet: text_seed is 1, the task wants seed (4).');
+    expect(evaluateCheck(read('text_seed == -1'), { stats, seed: 1 }).pass).toBe(true);
+  });
+
+  it('counts the parastichies of spheres placed by Vogel\'s formula', () => {
+    // 600 florets at n·137.5°, r = √n, each a tetrahedron of a sphere's material (2) around its centre.
+    const mesh = vogelMesh(600, 137.5);
+    expect(floretPositions(mesh)).toHaveLength(600);
+    expect(floretPositions(mesh)[10][0]).toBeCloseTo(Math.sqrt(10) * Math.cos((10 * 137.5 * Math.PI) / 180), 6);
+    expect(parastichyPair(floretPositions(mesh))).toEqual([34, 55]);
+    expect(evaluateCheck(read('parastichies_m == 34 and parastichies_n == 55'), { stats, florets: floretPositions(mesh) }).pass).toBe(true);
+    expect(needsFlorets(read('segments > 1 and not (parastichies_n + 1 > 2)'))).toBe(true);
+    expect(needsFlorets(read('segments > 1 or contains("D")'))).toBe(false);
+    expect(parastichyPair(floretPositions(vogelMesh(600, 137.3)))).not.toEqual([34, 55]);
+    expect(evaluateCheck(read('parastichies_m == 0'), { stats }).pass).toBe(true);
+    expect(parastichyPair(floretPositions(vogelMesh(5, 137.5)))).toEqual([0, 0]);
+  });
+});
+
+describe('the seed a text writes', () => {
+  it.each([
+    ['#seed 4\naxiom: F', 4],
+    ['#seed 4\n#seed 7\n', 7],
+    ['axiom: F // #seed 3', undefined],
+    ['// #seed 3\naxiom: F', undefined],
+    ['  #seed 12 // tall\n', 12],
+    ['#seedling 3\n', undefined],
+    ['#seed\n', undefined],
+    ['#seed -2\n', undefined],
+    ['axiom: F\n', undefined],
+  ])('%j is %s', (text, seed) => {
+    expect(writtenSeed(text, '#seed')).toBe(seed);
+  });
+});
+
+/** A mesh of `count` florets at Vogel's positions: per floret 4 triangles of material 2 (plain), a stalk of material 0 first. */
+function vogelMesh(count: number, angle: number): FloretMesh {
+  const positions: number[] = [0, 0, 0, 0, 0, -1, 0.1, 0, -1];
+  const indices: number[] = [0, 1, 2];
+  const ranges: number[] = [0, 0];
+  for (let n = 0; n < count; n++) {
+    const a = (n * angle * Math.PI) / 180;
+    const [x, y] = [Math.sqrt(n) * Math.cos(a), Math.sqrt(n) * Math.sin(a)];
+    const v = positions.length / 3;
+    const corners = [[1, 1, 1], [1, -1, -1], [-1, 1, -1], [-1, -1, 1]];
+    for (const [dx, dy, dz] of corners) positions.push(x + 0.1 * dx, y + 0.1 * dy, 0.1 * dz);
+    ranges.push(indices.length / 3, n + 1);
+    for (const [i, j, k] of [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]]) indices.push(v + i, v + j, v + k);
+  }
+  return { positions: new Float32Array(positions), indices: new Uint32Array(indices), ranges: new Uint32Array(ranges), materialRanges: new Uint32Array([0, 0, 1, 2]) };
+}

@@ -8,6 +8,7 @@
 // malformed check fails the build with its file and line) and again on the page, then evaluated on
 // the last good build. Every answer is in words: "count("[") is 4, the task wants 8".
 import type { PlantBuild, PlantInspector, PlantStats } from '../../core';
+import { floretPositions, MAX_FLORETS, parastichyPair } from './parastichies.ts';
 
 /** The facts a check may name, with what each means (docs/LESSONS.md lists the same). */
 export const CHECK_FACTS = {
@@ -21,6 +22,10 @@ export const CHECK_FACTS = {
   depth: 'extent of the plant along z (back to front)',
   branch_order: 'the deepest nesting of branches ([ inside [): 0 for a plant without branches',
   whorl: 'the most branches written side by side at one node: F[+F][-F]F has 2',
+  seed: 'the seed the plant on screen was derived with (the Seed box, else the grammar\'s #seed)',
+  text_seed: 'the seed the grammar\'s text writes with #seed; -1 when it writes none',
+  parastichies_m: 'the fewer of the two families of spirals (contact parastichies) of the plant\'s spheres (florets), counted in the middle third of them; 0 for fewer than 12',
+  parastichies_n: 'the more numerous of the two families of spirals of the plant\'s spheres (florets); 0 for fewer than 12',
 } as const;
 
 /** A fact a check may name. */
@@ -30,6 +35,7 @@ export type CheckFact = keyof typeof CHECK_FACTS;
 export const CHECK_FUNCTIONS = {
   count: 'count("F"): how many modules of the derived string are named F (whatever their parameters)',
   contains: 'contains("F[+F]"): whether the derived string, written as the string panel shows it, contains this text',
+  position: 'position("K"): where the first module named K stands in the derived string, counting from 1 at its start (the base); 0 when there is none',
 } as const;
 
 type Comparison = '==' | '!=' | '<' | '<=' | '>' | '>=';
@@ -39,7 +45,7 @@ type Arithmetic = '+' | '-' | '*' | '/';
 type NumberNode =
   | { kind: 'number'; value: number; text: string }
   | { kind: 'fact'; name: CheckFact; text: string }
-  | { kind: 'count'; module: string; text: string }
+  | { kind: 'count' | 'position'; module: string; text: string }
   | { kind: 'arithmetic'; op: Arithmetic; left: NumberNode; right: NumberNode; text: string }
   | { kind: 'negate'; operand: NumberNode; text: string };
 
@@ -266,10 +272,10 @@ class Parser {
       this.expectOp(')', 'to close (');
       return { ...inner, text: this.textFrom(t.offset) };
     }
-    if (t.kind === 'word' && t.text === 'count') {
+    if (t.kind === 'word' && (t.text === 'count' || t.text === 'position')) {
       const module = this.call();
-      if (module === '') throw new SyntaxProblem('count("") names no module', t.offset);
-      return { kind: 'count', module, text: this.textFrom(t.offset) };
+      if (module === '') throw new SyntaxProblem(`${t.text}("") names no module`, t.offset);
+      return { kind: t.text, module, text: this.textFrom(t.offset) };
     }
     if (t.kind === 'word' && t.text in CHECK_FACTS) {
       this.take();
@@ -305,10 +311,34 @@ export function parseCheck(source: string): ParsedCheck {
   }
 }
 
+/** Whether `node` (or any part of it) satisfies `test`. */
+function mentions(node: CheckNode | NumberNode, test: (node: NumberNode) => boolean): boolean {
+  switch (node.kind) {
+    case 'compare':
+    case 'and':
+    case 'or':
+    case 'arithmetic':
+      return mentions(node.left, test) || mentions(node.right, test);
+    case 'not':
+    case 'negate':
+      return mentions(node.operand, test);
+    case 'contains':
+      return false;
+    default:
+      return test(node);
+  }
+}
+
+/** Whether evaluating `check` needs the florets' positions (a parastichy fact). */
+export function needsFlorets(check: CheckNode): boolean {
+  return mentions(check, (n) => n.kind === 'fact' && (n.name === 'parastichies_m' || n.name === 'parastichies_n'));
+}
+
 /** Whether evaluating `check` needs the derived string (not only the stats). */
 export function needsDerivedString(check: CheckNode): boolean {
   const numeric = (node: NumberNode): boolean =>
     node.kind === 'count' ||
+    node.kind === 'position' ||
     (node.kind === 'fact' && (node.name === 'branch_order' || node.name === 'whorl')) ||
     (node.kind === 'arithmetic' && (numeric(node.left) || numeric(node.right))) ||
     (node.kind === 'negate' && numeric(node.operand));
@@ -329,6 +359,12 @@ export interface PlantFacts {
   stats: PlantStats;
   /** The derived string's modules as the string panel writes them (`F`, `A(1,2)`, `[`). */
   modules?: readonly string[];
+  /** The florets' positions (`parastichies.ts`), for the parastichy facts (none: 0). */
+  florets?: readonly number[][];
+  /** The seed the plant was derived with (`PlantBuild.seed`). */
+  seed?: number;
+  /** The seed the grammar's text writes (`written-seed.ts`); undefined when it writes none. */
+  textSeed?: number;
 }
 
 /** The most modules whose texts a check fetches from the build's inspector. */
@@ -341,15 +377,20 @@ export type FactsOutcome = { ok: true; facts: PlantFacts } | { ok: false; reason
  * The facts of a build without errors that `check` reads: the stats, and the whole derived string
  * (`build.derived` is cut short) from the inspector when the check needs it.
  */
-export async function plantFacts(check: CheckNode, build: PlantBuild, inspector: Pick<PlantInspector, 'moduleTexts'>): Promise<FactsOutcome> {
-  if (!needsDerivedString(check)) return { ok: true, facts: { stats: build.stats } };
+export async function plantFacts(check: CheckNode, build: PlantBuild, inspector: Pick<PlantInspector, 'moduleTexts'>, textSeed?: number): Promise<FactsOutcome> {
+  const florets = needsFlorets(check) ? floretPositions(build.mesh) : undefined;
+  if (florets && florets.length > MAX_FLORETS) {
+    return { ok: false, reason: `the plant has ${florets.length.toLocaleString('en')} spheres, more than the parastichy count reads (${MAX_FLORETS.toLocaleString('en')}); try fewer iterations` };
+  }
+  const known = { stats: build.stats, florets, seed: build.seed, textSeed };
+  if (!needsDerivedString(check)) return { ok: true, facts: known };
   const count = build.moduleCount;
   if (count > MAX_CHECKED_MODULES) {
     return { ok: false, reason: `the derived string has ${count.toLocaleString('en')} modules, more than the check reads; try fewer iterations` };
   }
   const modules = await inspector.moduleTexts(0, count);
   if (modules.length !== count) return { ok: false, reason: 'the plant changed while it was being checked; check again' };
-  return { ok: true, facts: { stats: build.stats, modules } };
+  return { ok: true, facts: { ...known, modules } };
 }
 
 /** The answer of a check: whether it holds, and the values that made it so, in words. */
@@ -359,14 +400,35 @@ export interface CheckAnswer {
   reasons: string[];
 }
 
-/** Facts read off the derived string, computed once per evaluation. */
+/** Facts read off the derived string and the mesh, computed once per evaluation. */
 class StringFacts {
   private names: string[] | undefined;
   private joined: string | undefined;
   private counts: Map<string, number> | undefined;
   private structure: { branchOrder: number; whorl: number } | undefined;
+  private parastichies: [number, number] | undefined;
+  private readonly modules: readonly string[] | undefined;
 
-  constructor(private readonly modules: readonly string[] | undefined) {}
+  constructor(readonly facts: PlantFacts) {
+    this.modules = facts.modules;
+  }
+
+  /** The contact parastichy pair of the plant's spheres ([0, 0] without florets or with too few). */
+  pair(): [number, number] {
+    return (this.parastichies ??= parastichyPair(this.facts.florets ?? []));
+  }
+
+  /** Where the first module named `name` stands, from 1; 0 when none does. */
+  position(name: string): number {
+    return this.moduleNames().indexOf(name) + 1;
+  }
+
+  private moduleNames(): readonly string[] {
+    return (this.names ??= this.list().map((m) => {
+      const paren = m.indexOf('(');
+      return paren < 0 ? m : m.slice(0, paren);
+    }));
+  }
 
   private list(): readonly string[] {
     if (!this.modules) throw new Error('this check needs the derived string');
@@ -379,12 +441,8 @@ class StringFacts {
 
   count(name: string): number {
     if (!this.counts) {
-      this.names ??= this.list().map((m) => {
-        const paren = m.indexOf('(');
-        return paren < 0 ? m : m.slice(0, paren);
-      });
       this.counts = new Map();
-      for (const n of this.names) this.counts.set(n, (this.counts.get(n) ?? 0) + 1);
+      for (const n of this.moduleNames()) this.counts.set(n, (this.counts.get(n) ?? 0) + 1);
     }
     return this.counts.get(name) ?? 0;
   }
@@ -428,6 +486,14 @@ function factValue(name: CheckFact, stats: PlantStats, strings: StringFacts): nu
       return strings.shape().branchOrder;
     case 'whorl':
       return strings.shape().whorl;
+    case 'seed':
+      return strings.facts.seed ?? Number.NaN;
+    case 'text_seed':
+      return strings.facts.textSeed ?? -1;
+    case 'parastichies_m':
+      return strings.pair()[0];
+    case 'parastichies_n':
+      return strings.pair()[1];
     default:
       return stats[name];
   }
@@ -441,6 +507,8 @@ function numberValue(node: NumberNode, stats: PlantStats, strings: StringFacts):
       return factValue(node.name, stats, strings);
     case 'count':
       return strings.count(node.module);
+    case 'position':
+      return strings.position(node.module);
     case 'negate':
       return -numberValue(node.operand, stats, strings);
     case 'arithmetic': {
@@ -521,7 +589,7 @@ function answer(node: CheckNode, stats: PlantStats, strings: StringFacts): Check
  * has none (see {@link needsDerivedString}).
  */
 export function evaluateCheck(check: CheckNode, facts: PlantFacts): CheckAnswer {
-  return answer(check, facts.stats, new StringFacts(facts.modules));
+  return answer(check, facts.stats, new StringFacts(facts));
 }
 
 /** The answer as one sentence: "Passed: count("[") is 8." or "Not yet: count("[") is 4, the task wants 8." */
