@@ -343,8 +343,8 @@ fn the_lily_has_three_sepals_and_three_petals_120_degrees_apart_petals_between_s
         let open = h.angle_between(axis).to_degrees();
         assert!(close(open, if k < 3 { 60.0 } else { 52.0 }, 1e-6), "{open}");
     }
-    // Six stamens, each with an anther: the spheres of colour 10.
-    assert_eq!(skeleton.spheres.iter().filter(|s| s.color == 10).count(), 6);
+    // Six stamens, each with an anther: the orange spheres (colour 9).
+    assert_eq!(skeleton.spheres.iter().filter(|s| s.color == 9).count(), 6);
 }
 
 #[test]
