@@ -267,6 +267,36 @@ fn fig_5_11_compound_leaves_add_a_pair_of_leaflets_a_step_and_jacobsthal_leaflet
     assert_eq!(bases("abop-5.11a-compound-leaf-alternate.lsys"), (6, 6));
 }
 
+/// The polygon's outline is symmetric about its midline, the line in its plane from its first point
+/// (the base) to the point farthest from it (the tip): every point has its mirror image.
+fn assert_symmetric(what: &str, p: &Polygon) {
+    let base = p.points[0];
+    let tip = p
+        .points
+        .iter()
+        .max_by(|a, b| (**a - base).length().total_cmp(&(**b - base).length()))
+        .unwrap();
+    let along = (*tip - base).normalize();
+    // Newell's normal of the outline.
+    let n = p.points.len();
+    let normal = (0..n)
+        .map(|i| p.points[i].cross(p.points[(i + 1) % n]))
+        .sum::<DVec3>()
+        .normalize();
+    let across = normal.cross(along);
+    let local = |q: &DVec3| ((*q - base).dot(along), (*q - base).dot(across));
+    for q in &p.points {
+        let (a, c) = local(q);
+        assert!(
+            p.points
+                .iter()
+                .map(local)
+                .any(|(a2, c2)| close(a, a2, 1e-9) && close(c, -c2, 1e-9)),
+            "{what}: the point ({a}, {c}) has no mirror image"
+        );
+    }
+}
+
 /// The azimuths (degrees, 0 to 360) of `directions` about `axis`, measured from the first one.
 fn azimuths(axis: DVec3, directions: &[DVec3]) -> Vec<f64> {
     let flat: Vec<DVec3> = directions
@@ -393,20 +423,42 @@ fn the_bellflower_has_five_sepals_and_five_polygon_petals_72_degrees_apart() {
         angles[1]
     );
     // Each petal is symmetric about its midline (base to tip): every point has its mirror image.
-    for (p, along) in petals.iter().zip(&petal_directions) {
-        let base = p.points[0];
-        let normal = (p.points[2] - base).cross(p.points[4] - base).normalize();
-        let across = normal.cross(*along);
-        let local = |q: &DVec3| ((*q - base).dot(*along), (*q - base).dot(across));
-        for q in &p.points {
-            let (a, c) = local(q);
-            assert!(
-                p.points
-                    .iter()
-                    .map(local)
-                    .any(|(a2, c2)| close(a, a2, 1e-9) && close(c, -c2, 1e-9)),
-                "a petal's point ({a}, {c}) has no mirror image"
-            );
-        }
+    for p in &petals {
+        assert_symmetric("a petal", p);
+    }
+}
+
+#[test]
+fn polygon_leaves_traced_by_the_outline_or_by_dots_are_symmetric_and_green() {
+    let b = built("abop-sec-5.1-polygon-leaves.lsys", None);
+    let polygons = &b.plant.skeleton.polygons;
+    // A node's two leaves are written at one step and drawn from the next: n − 1 nodes at n = 6.
+    assert_eq!(polygons.len(), 2 * 5);
+    for (k, p) in polygons.iter().enumerate() {
+        // L, ABOP's outline: { and six f (the last back at the start); M: { . then eight dots.
+        let (expected, what) = if k % 2 == 0 { (7, "L") } else { (9, "M") };
+        assert_eq!(p.points.len(), expected, "{what}");
+        assert_symmetric(what, p);
+        // No colour on their path: leaf green.
+        assert_eq!(p.color, 5, "{what}");
+    }
+    assert!(b.plant.skeleton.segments.iter().all(|s| s.color == 0));
+}
+
+#[test]
+fn the_herb_grows_one_leaf_a_step_each_a_ray_wider_a_step() {
+    let name = "abop-sec-5.2-herb-with-cordate-leaves.lsys";
+    for n in [4u32, 10, 16] {
+        let b = built(name, Some(n));
+        // The leaf of step k opens its fan at step k + 2 and adds a polygon a half at every later
+        // step: n − k − 1 a half, (n − 1)(n − 2) in all.
+        let expected = ((n - 1) * (n - 2)) as usize;
+        assert_eq!(b.derived_text().matches('{').count(), expected, "n = {n}");
+        assert_eq!(b.plant.skeleton.polygons.len(), expected, "n = {n}");
+        assert_eq!(
+            b.plant.skeleton.segments.len(),
+            n as usize + n as usize - 1,
+            "n = {n}: internodes and petioles"
+        );
     }
 }
