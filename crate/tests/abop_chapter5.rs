@@ -7,16 +7,8 @@ mod shared;
 
 use glam::DVec3;
 use meristem::pipeline::{build, Build, BuildOptions};
-use meristem::turtle::{Polygon, SurfaceKind};
-use shared::examples;
-
-fn example(name: &str) -> String {
-    let (_, text) = examples()
-        .into_iter()
-        .find(|(p, _)| p.ends_with(name))
-        .unwrap_or_else(|| panic!("{name}"));
-    text
-}
+use meristem::turtle::{Polygon, Surface, SurfaceKind};
+use shared::example;
 
 /// The example built at `n` steps (its own `#iterations` when `None`), without a diagnostic.
 fn built(name: &str, n: Option<u32>) -> Build {
@@ -185,7 +177,7 @@ fn fig_5_6_and_5_8_the_developmental_leaves_have_two_polygons_a_step_and_a_symme
 /// a(n) = a(n−1) + 2·a(n−2) (the apex goes on and its two laterals, one step late, grow like it):
 /// the Jacobsthal numbers (2^(n+2) − (−1)^n)/3.
 fn apices(n: u32) -> usize {
-    ((1i64 << (n + 2)) - if n % 2 == 0 { 1 } else { -1 }) as usize / 3
+    ((1i64 << (n + 2)) - if n.is_multiple_of(2) { 1 } else { -1 }) as usize / 3
 }
 
 /// Branches `[` at the top level of `derived`: the laterals on the main axis.
@@ -267,16 +259,24 @@ fn fig_5_11_compound_leaves_add_a_pair_of_leaflets_a_step_and_jacobsthal_leaflet
     assert_eq!(bases("abop-5.11a-compound-leaf-alternate.lsys"), (6, 6));
 }
 
-/// The polygon's outline is symmetric about its midline, the line in its plane from its first point
-/// (the base) to the point farthest from it (the tip): every point has its mirror image.
-fn assert_symmetric(what: &str, p: &Polygon) {
+/// A polygon's midline: the unit vector from its first point (the base of a leaf or petal drawn from
+/// its base) to the point farthest from it (the tip).
+fn midline(p: &Polygon) -> DVec3 {
     let base = p.points[0];
+    let far = |q: &&DVec3| (**q - base).length();
     let tip = p
         .points
         .iter()
-        .max_by(|a, b| (**a - base).length().total_cmp(&(**b - base).length()))
+        .max_by(|a, b| far(a).total_cmp(&far(b)))
         .unwrap();
-    let along = (*tip - base).normalize();
+    (*tip - base).normalize()
+}
+
+/// The polygon's outline is symmetric about its midline ([`midline`]): every point has its mirror
+/// image.
+fn assert_symmetric(what: &str, p: &Polygon) {
+    let base = p.points[0];
+    let along = midline(p);
     // Newell's normal of the outline.
     let n = p.points.len();
     let normal = (0..n)
@@ -329,6 +329,12 @@ fn assert_whorl(what: &str, angles: &[f64], n: usize) {
     }
 }
 
+/// The plant's predefined surfaces of one kind (`~l` or `~p`), in the order drawn.
+fn surfaces(b: &Build, kind: SurfaceKind) -> Vec<&Surface> {
+    let all = b.plant.skeleton.surfaces.iter();
+    all.filter(|s| s.kind == kind).collect()
+}
+
 /// The flower's axis: the heading of the segment drawn before its first organ of `kind`.
 fn flower_axis(b: &Build, first_organ: DVec3) -> DVec3 {
     let s = b
@@ -345,17 +351,9 @@ fn flower_axis(b: &Build, first_organ: DVec3) -> DVec3 {
 fn the_lily_has_three_sepals_and_three_petals_120_degrees_apart_petals_between_sepals() {
     let b = built("abop-sec-5.1-lily.lsys", None);
     let skeleton = &b.plant.skeleton;
-    let tepals: Vec<_> = skeleton
-        .surfaces
-        .iter()
-        .filter(|s| s.kind == SurfaceKind::Petal)
-        .collect();
+    let tepals = surfaces(&b, SurfaceKind::Petal);
     assert_eq!(tepals.len(), 6, "3 sepals + 3 petals");
-    let leaves = skeleton
-        .surfaces
-        .iter()
-        .filter(|s| s.kind == SurfaceKind::Leaf);
-    assert_eq!(leaves.count(), 7, "#define LEAVES 7");
+    assert_eq!(surfaces(&b, SurfaceKind::Leaf).len(), 7, "#define LEAVES 7");
     let axis = flower_axis(&b, tepals[0].origin);
     let headings: Vec<DVec3> = tepals.iter().map(|s| s.heading).collect();
     let angles = azimuths(axis, &headings);
@@ -381,11 +379,7 @@ fn the_lily_has_three_sepals_and_three_petals_120_degrees_apart_petals_between_s
 fn the_bellflower_has_five_sepals_and_five_polygon_petals_72_degrees_apart() {
     let b = built("abop-sec-5.1-campanula.lsys", None);
     let skeleton = &b.plant.skeleton;
-    let sepals: Vec<_> = skeleton
-        .surfaces
-        .iter()
-        .filter(|s| s.kind == SurfaceKind::Leaf)
-        .collect();
+    let sepals = surfaces(&b, SurfaceKind::Leaf);
     assert_eq!(sepals.len(), 5);
     let petals: Vec<_> = skeleton.polygons.iter().filter(|p| p.color == 13).collect();
     assert_eq!(petals.len(), 5);
@@ -398,19 +392,8 @@ fn the_bellflower_has_five_sepals_and_five_polygon_petals_72_degrees_apart() {
     assert!(axis.y < 0.0, "the bell hangs: axis {axis}");
     let sepal_angles = azimuths(axis, &sepals.iter().map(|s| s.heading).collect::<Vec<_>>());
     assert_whorl("sepals", &sepal_angles, 5);
-    // A petal's direction: from its base (first point) to its farthest point (the lobe's tip).
-    let petal_directions: Vec<DVec3> = petals
-        .iter()
-        .map(|p| {
-            let base = p.points[0];
-            let tip = p
-                .points
-                .iter()
-                .max_by(|a, b| (**a - base).length().total_cmp(&(**b - base).length()))
-                .unwrap();
-            (*tip - base).normalize()
-        })
-        .collect();
+    // A petal's direction: from its base to the lobe's tip.
+    let petal_directions: Vec<DVec3> = petals.iter().map(|p| midline(p)).collect();
     let mut all = vec![sepals[0].heading];
     all.extend(&petal_directions);
     let angles = azimuths(axis, &all);
