@@ -7,7 +7,7 @@
 import { writeFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { decodePng, foregroundMask, type Picture } from './pictures';
-import { canvasPicture, example, openExample, pasteText, PHONE, PLANT_ONLY, RESULTS, savePage, studioIn, VIEW_CANVAS } from './studio-page';
+import { canvasPicture, example, openExample, pasteText, PHONE, PLANT_ONLY, RESULTS, savePage, studioIn, twoFrames, VIEW_CANVAS } from './studio-page';
 import { browser, page, problems, useStudio } from './session';
 
 useStudio();
@@ -33,6 +33,13 @@ function colours(picture: Picture): { plant: number; green: number; brown: numbe
   return { plant: plant / mask.length, green: g / Math.max(plant, 1), brown: b / Math.max(plant, 1) };
 }
 
+/** Scrubs the timeline to `t` and waits for the plant derived to step ⌊t⌋ (a stepwise grammar). */
+async function scrubToStep(t: number): Promise<void> {
+  await page.getByTestId('timeline-slider').fill(String(t));
+  await page.waitForFunction((want) => window.__meristem!.lastStats?.iterations === want, Math.floor(t), { timeout: 60_000 });
+  await twoFrames(page);
+}
+
 describe('organs of ABOP chapter 5', () => {
   it('draws the cordate leaf as a whole green blade, and brown once the grammar chooses entry 0', async () => {
     expect(await openExample(page, 'abop-5.05-cordate-leaf.lsys')).toBe('ok');
@@ -48,6 +55,22 @@ describe('organs of ABOP chapter 5', () => {
     expect(brownLeaf.plant).toBeGreaterThan(0.08);
     expect(brownLeaf.green).toBeLessThan(0.05);
     expect(brownLeaf.brown).toBeGreaterThan(0.5);
+    await page.getByTestId('grid').click();
+    expect(problems).toEqual([]);
+  });
+
+  it('plays the cordate leaf as its developmental sequence: at t = 8 the leaf of step 8, smaller, on the same camera', async () => {
+    expect(await openExample(page, 'abop-5.05-cordate-leaf.lsys')).toBe('ok');
+    await page.getByTestId('grid').click();
+    const whole = colours(await canvasPicture(page, 'organs-cordate-leaf-t20-canvas.png'));
+    // #dt 1 makes the grammar stepwise: the timeline derives it to step 8, whose rays are at most
+    // 7 long, not 19 (the whole plant's mesh grown in would show full-size polygons appearing).
+    await scrubToStep(8);
+    const young = colours(await canvasPicture(page, 'organs-cordate-leaf-t8-canvas.png'));
+    expect(young.plant).toBeGreaterThan(0.005);
+    expect(young.plant).toBeLessThan(0.4 * whole.plant);
+    expect(young.green).toBeGreaterThan(0.8);
+    await scrubToStep(20);
     await page.getByTestId('grid').click();
     expect(problems).toEqual([]);
   });
