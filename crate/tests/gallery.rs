@@ -4,7 +4,7 @@
 mod shared;
 
 use meristem::pipeline::{build, BuildOptions};
-use shared::examples;
+use shared::{example, examples};
 
 #[test]
 fn every_example_has_a_title_source_and_description_header() {
@@ -72,14 +72,6 @@ fn abop_1_24d_has_the_known_size() {
         ten.plant.stats.modules, 381_767,
         "the issue's reference size of 1.24d at n = 10"
     );
-}
-
-fn example(name: &str) -> String {
-    let (_, text) = examples()
-        .into_iter()
-        .find(|(p, _)| p.ends_with(name))
-        .unwrap_or_else(|| panic!("{name}"));
-    text
 }
 
 #[test]

@@ -66,6 +66,18 @@ describe('POV-Ray renders the exported scenes', () => {
     expect(picture.onBorder).toBe(0);
   });
 
+  it('draws a leaf: a polygon leaf fills its outline with the leaf image, not its cut-out', () => {
+    // ABOP's leaf outline, face-on: its polygon keeps its whole outline (the image's opaque band);
+    // with POV-Ray's use_alpha read the wrong way round, only the corners outside that band showed.
+    const grammar = join(dir, 'leaf.lsys');
+    writeFileSync(grammar, '#angle 30\naxiom: !(0.2)F(0.2){-f+f+f-|-f+f+f}\n');
+    exportWithCli(grammar, join(dir, 'leaf.pov'));
+    const picture = render('leaf');
+    expect(picture.onBorder).toBe(0);
+    // The leaf is about a fifth of the picture (a blank one, or one of corners only, under 1 %).
+    expect(picture.plantPixels / (WIDTH * HEIGHT)).toBeGreaterThan(0.08);
+  });
+
   it('the pixel check can fail: a scene without the plant is blank', () => {
     const scene = readFileSync(join(goldenDir, 'leafy-3d.pov'), 'utf8');
     const withoutPlant = scene.replace('object { Meristem_Plant double_illuminate }', '');

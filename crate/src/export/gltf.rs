@@ -478,14 +478,15 @@ mod tests {
             .iter()
             .filter_map(|m| m["name"].as_str())
             .collect();
+        // The leaf `~l` drawn before any colour was chosen is leaf green (entry 5).
         assert_eq!(
             names,
-            ["color_0", "color_0_leaf", "color_0_plain", "color_1_leaf"]
+            ["color_0", "color_0_plain", "color_1_leaf", "color_5_leaf"]
         );
-        assert_eq!(materials[1]["alphaMode"], "MASK");
-        assert_eq!(materials[1]["doubleSided"], true);
+        assert_eq!(materials[3]["alphaMode"], "MASK");
+        assert_eq!(materials[3]["doubleSided"], true);
         assert!(materials[0]["pbrMetallicRoughness"]["baseColorTexture"].is_object());
-        assert!(materials[2]["pbrMetallicRoughness"]
+        assert!(materials[1]["pbrMetallicRoughness"]
             .get("baseColorTexture")
             .is_none());
         // Two images (bark, leaf), each an exact copy of the shipped PNG in the binary chunk.

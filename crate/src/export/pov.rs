@@ -119,11 +119,13 @@ fn mesh2(out: &mut String, scene: &Scene, groups: &[super::scene::ColorGroup], d
                 "    texture {{ uv_mapping pigment {{ image_pattern {{ png \"bark.png\" interpolate 2 }} \
                  color_map {{ [0 rgb 0] [1 rgb <{colour}>] }} }}"
             ),
+            // POV-Ray's `image_pattern … use_alpha` is the image's transparency (0 where it is
+            // opaque), so the leaf image shows below 0.5 and the cut-out is clear above it.
             MATERIAL_LEAF => write!(
                 out,
                 "    texture {{ uv_mapping pigment {{ image_pattern {{ png \"leaf.png\" interpolate 2 use_alpha }} \
-                 pigment_map {{ [0 rgbt 1] [0.5 rgbt 1] [0.5 image_pattern {{ png \"leaf.png\" interpolate 2 }} \
-                 color_map {{ [0 rgb 0] [1 rgb <{colour}>] }}] }} }}"
+                 pigment_map {{ [0.5 image_pattern {{ png \"leaf.png\" interpolate 2 }} \
+                 color_map {{ [0 rgb 0] [1 rgb <{colour}>] }}] [0.5 rgbt 1] }} }}"
             ),
             _ => write!(out, "    texture {{ pigment {{ color rgb <{colour}> }}"),
         }

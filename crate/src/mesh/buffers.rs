@@ -28,7 +28,8 @@ use glam::DVec3;
 ///   circumference (bark is not stretched: one texture tile is as long as the tube is round);
 ///   caps map the disk into 0..1. Leaves and petals: u across and v along the leaf's own outline
 ///   frame, both 0..1. Polygons: a planar projection in their plane, u across and v from the first
-///   point towards the farthest one, 0..1. Spheres: longitude and latitude, 0..1.
+///   point towards the farthest one, u 0..1 and v 0.15..0.85 (the band where the leaf image is
+///   opaque across its width, so its cut-out never trims a polygon). Spheres: longitude and latitude, 0..1.
 /// - `material_ranges`: the material kind of every triangle, `u32` × 2 per range (first
 ///   triangle, kind), sorted and running like `ranges`: [`MATERIAL_BARK`] (tubes and their caps),
 ///   [`MATERIAL_LEAF`] (predefined surfaces and polygons, two-sided) or [`MATERIAL_PLAIN`]

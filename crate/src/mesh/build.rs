@@ -400,9 +400,15 @@ fn unit_square(points: impl Iterator<Item = (f64, f64)> + Clone) -> Vec<[f32; 2]
         .collect()
 }
 
+/// The band of v in which the leaf image (`public/textures/leaf.png`) is opaque across its whole
+/// width: its outline rounds off only below 0.128 and above 0.872.
+pub const POLYGON_V: (f32, f32) = (0.15, 0.85);
+
 /// A polygon's texture coordinates: projected in its plane with v from the first point towards
 /// the point farthest from it (a leaf drawn from its base runs along its length) and u across,
-/// scaled into 0..1.
+/// scaled into 0..1 across and into [`POLYGON_V`] along, where the leaf image has no transparent
+/// surround: a polygon keeps exactly the outline the grammar traced (a leaf of many polygons, ABOP's
+/// developmental surfaces, would otherwise lose each one's corners to the image's cut-out).
 fn polygon_uvs(points: &[DVec3], normal: DVec3) -> Vec<[f32; 2]> {
     let Some(&origin) = points.first() else {
         return Vec::new();
@@ -417,8 +423,13 @@ fn polygon_uvs(points: &[DVec3], normal: DVec3) -> Vec<[f32; 2]> {
         .cross(along)
         .try_normalize()
         .unwrap_or_else(|| along.any_orthonormal_vector());
-    unit_square(points.iter().map(|p| {
+    let (v0, v1) = POLYGON_V;
+    let mut uvs = unit_square(points.iter().map(|p| {
         let d = *p - origin;
         (d.dot(across), d.dot(along))
-    }))
+    }));
+    for uv in &mut uvs {
+        uv[1] = v0 + (v1 - v0) * uv[1];
+    }
+    uvs
 }

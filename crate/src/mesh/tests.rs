@@ -172,9 +172,11 @@ fn leaves_polygons_and_spheres_have_uvs_in_the_unit_square_and_their_materials()
     let materials = mesh.triangle_materials();
     assert!(materials.contains(&(MATERIAL_LEAF as u8)));
     assert_eq!(*materials.last().unwrap(), MATERIAL_PLAIN as u8);
-    // The polygon's tip (farthest from its first point) is at v = 1, its base at v = 0.
-    assert_eq!(mesh.uvs[1], 0.0);
-    assert_eq!(mesh.uvs[5], 1.0);
+    // The polygon's tip (farthest from its first point) is at the top of the leaf image's opaque
+    // band, its base at the bottom: the image cuts nothing off the polygon's own outline.
+    let (v0, v1) = crate::mesh::build::POLYGON_V;
+    assert_eq!(mesh.uvs[1], v0);
+    assert_eq!(mesh.uvs[5], v1);
 }
 
 #[test]

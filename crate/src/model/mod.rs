@@ -16,7 +16,7 @@ pub use program::{Env, EvalError, Program, RandomVariable, Scope, Simple, MAX_OP
 pub use resolve::resolve;
 pub use settings::{
     directive_default, Bend, GrowthAttributes, Lifetime, Settings, Shape, ShapeWidth, Speed, Sun,
-    DEFAULT_PALETTE,
+    DEFAULT_PALETTE, ORGAN_COLOR,
 };
 
 use crate::syntax::{Section, Span};

@@ -39,6 +39,9 @@ pub struct Settings {
     /// The colours of the colour index (`'`, `;`), linear RGB in 0..=1: [`DEFAULT_PALETTE`]
     /// with the entries `#color` set. An index past the end wraps modulo the length.
     pub palette: Vec<[f32; 3]>,
+    /// A `#color` directive set entry 0, the turtle's starting colour: organs then start with it
+    /// like everything else (see [`ORGAN_COLOR`]).
+    pub start_color_given: bool,
     /// Span of the `#iterations` directive, where step-related diagnostics point.
     pub iterations_span: Option<Span>,
     /// `#terminal_age`: the timed modules (ABOP 6.1) and their terminal ages, in source order;
@@ -73,6 +76,13 @@ pub const DEFAULT_PALETTE: [[f32; 3]; 16] = [
     [0.95, 0.95, 0.92], // 14 white
     [0.50, 0.50, 0.50], // 15 grey
 ];
+
+/// The colour index of an organ (a polygon `{…}`, a predefined leaf `~l` or petal `~p`) drawn
+/// while no `'` or `;` on the turtle's path has chosen a colour: leaf green, not the starting
+/// bark brown of entry 0, so a leaf is green when the grammar says nothing about colours. A
+/// grammar that sets entry 0 (`#color 0 …`, as imported colour maps do) has chosen its starting
+/// colour, and its organs start with it as its segments do (cpfg's rule).
+pub const ORGAN_COLOR: u16 = 5;
 
 impl Settings {
     /// The value of a directive that takes one number (`#step`, `#angle`, …), as the settings
@@ -141,6 +151,7 @@ impl Default for Settings {
             max_steps: default_of(DirectiveKind::MaxSteps) as u32,
             draw: Vec::new(),
             palette: DEFAULT_PALETTE.to_vec(),
+            start_color_given: false,
             iterations_span: None,
             terminal_ages: Vec::new(),
             terminal_age_span: None,

@@ -315,6 +315,9 @@ impl<'a, C: Canvas> Interpreter<'a, C> {
     /// `!`, `'`, `;`: the width and the colour index.
     fn appearance(&mut self, command: Command, first: Option<f64>, value: Option<f64>) {
         let t = &mut self.turtle;
+        if command != Command::Width {
+            t.color_chosen = true;
+        }
         match command {
             Command::Width => {
                 self.canvas.widths_set();
@@ -413,7 +416,7 @@ impl<'a, C: Canvas> Interpreter<'a, C> {
         match command {
             Command::StartPolygon => {
                 self.open_polygons
-                    .push((vec![t.position], t.color, index, t.anchor))
+                    .push((vec![t.position], t.organ_color(), index, t.anchor))
             }
             Command::PolygonVertex => {
                 if let Some((points, ..)) = self.open_polygons.last_mut() {
@@ -449,7 +452,7 @@ impl<'a, C: Canvas> Interpreter<'a, C> {
             heading: t.heading,
             left: t.left,
             scale,
-            color: t.color,
+            color: t.organ_color(),
             module: index,
             anchor: t.anchor,
         });

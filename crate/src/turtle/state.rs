@@ -1,6 +1,6 @@
 //! The turtle's state and its rotations (docs/LANGUAGE.md, "Turtle").
 
-use crate::model::Settings;
+use crate::model::{Settings, ORGAN_COLOR};
 use glam::DVec3;
 
 /// The world's up direction, for `$` (ABOP's V).
@@ -15,6 +15,9 @@ pub(super) struct TurtleState {
     pub up: DVec3,
     pub width: f64,
     pub color: u16,
+    /// A `'` or `;` on the turtle's path chose the colour, or the grammar set the starting one
+    /// (`#color 0 …`): organs take `color`, not [`ORGAN_COLOR`].
+    pub color_chosen: bool,
     pub tropism: DVec3,
     pub susceptibility: f64,
     pub smooth: bool,
@@ -36,6 +39,7 @@ impl TurtleState {
             up: DVec3::Z,
             width: settings.width,
             color: 0,
+            color_chosen: settings.start_color_given,
             tropism,
             susceptibility,
             smooth: false,
@@ -46,6 +50,16 @@ impl TurtleState {
             start.yaw(settings.heading.to_radians().sin_cos());
         }
         start
+    }
+
+    /// The colour index of an organ drawn here (a polygon, a leaf or a petal): the turtle's, once
+    /// a colour was chosen; leaf green before.
+    pub fn organ_color(&self) -> u16 {
+        if self.color_chosen {
+            self.color
+        } else {
+            ORGAN_COLOR
+        }
     }
 
     /// Right-handed rotation about U by the angle whose sine and cosine are `(s, c)`: H turns

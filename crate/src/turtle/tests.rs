@@ -271,6 +271,27 @@ fn color_sets_palette_entries_and_ramps() {
 }
 
 #[test]
+fn organs_are_leaf_green_until_a_colour_is_chosen() {
+    use crate::model::ORGAN_COLOR;
+    // Nothing chosen: segments start at entry 0 (bark), the polygon, leaf and petal are green.
+    let s = run("axiom: F{.f+f+f}~l~p");
+    assert_eq!(s.segments[0].color, 0);
+    assert_eq!(s.polygons[0].color, ORGAN_COLOR);
+    assert!(s.surfaces.iter().all(|x| x.color == ORGAN_COLOR));
+    // A choice on the path (`;`, `'`, even `;(0)`) is kept; a branch's choice ends with it.
+    let s = run("axiom: [;(0){.f+f+f}]['{.f+f+f}]{.f+f+f}");
+    let colors: Vec<_> = s.polygons.iter().map(|p| p.color).collect();
+    assert_eq!(colors, [0, 1, ORGAN_COLOR]);
+    // A grammar that sets entry 0 chose its starting colour for everything (imported colour maps).
+    let s = run("#color 0 10 200 10\naxiom: F{.f+f+f}~l");
+    assert_eq!((s.polygons[0].color, s.surfaces[0].color), (0, 0));
+    // Setting another entry chooses nothing.
+    let s = run("#color 8 240 200 40\naxiom: {.f+f+f}");
+    assert_eq!(s.polygons[0].color, ORGAN_COLOR);
+    assert_eq!(s.color(ORGAN_COLOR), crate::model::DEFAULT_PALETTE[5]);
+}
+
+#[test]
 fn a_grammar_that_only_turns_with_plus_and_minus_is_flat() {
     assert!(run("#angle 30\naxiom: F[+F]F[-F]F").is_flat());
     assert!(run("#angle 90\naxiom: F+F{.f+f+f}").is_flat());

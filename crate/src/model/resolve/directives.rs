@@ -166,7 +166,9 @@ impl Resolver {
                     s.tropism = (DVec3::new(x, y, z), e);
                 }
             }
-            K::Color => self.color(d, kind.info(), &mut s.palette),
+            K::Color => {
+                s.start_color_given |= self.color(d, kind.info(), &mut s.palette);
+            }
             K::Iterations => {
                 if let Some(n) = self.whole(d, whole_max(kind)) {
                     s.iterations = n as u32;
@@ -275,10 +277,10 @@ impl Resolver {
     }
 
     /// `#color i r g b` sets one entry of the palette; `#color i j r g b r g b` sets entries
-    /// i..=j to a linear ramp between two colours.
-    fn color(&mut self, d: &Directive, info: &DirectiveInfo, palette: &mut Vec<[f32; 3]>) {
+    /// i..=j to a linear ramp between two colours. True when it set entry 0.
+    fn color(&mut self, d: &Directive, info: &DirectiveInfo, palette: &mut Vec<[f32; 3]>) -> bool {
         let Some(args) = self.arguments(d) else {
-            return;
+            return false;
         };
         let (first, last, from, to) = match args.0.len() {
             4 => {
@@ -305,7 +307,7 @@ impl Resolver {
         {
             let message = format!("{}, with first <= last", usage(d, info));
             self.directive_error(info.count_code, d, message);
-            return;
+            return false;
         }
         let (first, last) = (first as usize, last as usize);
         // Entries between the old end and `first` keep the colours they had by wrapping.
@@ -322,6 +324,7 @@ impl Resolver {
             };
             *entry = std::array::from_fn(|k| ((from[k] + (to[k] - from[k]) * t) / 255.0) as f32);
         }
+        first == 0
     }
 
     /// `#lifetime MB VB [pu pm pl]`.

@@ -640,26 +640,26 @@ light_source { <5.332658, 1.687073, 7.609392> color rgb <0.35, 0.35, 0.35> shado
     <0.25, 0.933>,
     <0.75, 0.933>,
     <0.5, 0.5>,
-    <1, 1>,
-    <1, 1>,
-    <0, 0.683>,
-    <0, 0.317>,
-    <1, 0>,
-    <1, 1>,
-    <1, 1>,
-    <0, 0.683>,
-    <0, 0.317>,
-    <1, 0>,
-    <1, 1>,
-    <1, 1>,
-    <0, 0.683>,
-    <0, 0.317>,
-    <1, 0>,
-    <1, 1>,
-    <1, 1>,
-    <0, 0.683>,
-    <0, 0.317>,
-    <1, 0>,
+    <1, 0.85>,
+    <1, 0.85>,
+    <0, 0.6281>,
+    <0, 0.3719>,
+    <1, 0.15>,
+    <1, 0.85>,
+    <1, 0.85>,
+    <0, 0.6281>,
+    <0, 0.3719>,
+    <1, 0.15>,
+    <1, 0.85>,
+    <1, 0.85>,
+    <0, 0.6281>,
+    <0, 0.3719>,
+    <1, 0.15>,
+    <1, 0.85>,
+    <1, 0.85>,
+    <0, 0.6281>,
+    <0, 0.3719>,
+    <1, 0.15>,
     <0.5, 1>,
     <0.3361, 0.9091>,
     <0.1959, 0.8182>,
@@ -816,8 +816,8 @@ light_source { <5.332658, 1.687073, 7.609392> color rgb <0.35, 0.35, 0.35> shado
     texture { uv_mapping pigment { image_pattern { png "bark.png" interpolate 2 } color_map { [0 rgb 0] [1 rgb <0.4, 0.27, 0.15>] } } finish { ambient 0.15 diffuse 0.85 } } // colour index 0
     texture { pigment { color rgb <0.4, 0.27, 0.15> } finish { ambient 0.15 diffuse 0.85 } } // colour index 0
     texture { uv_mapping pigment { image_pattern { png "bark.png" interpolate 2 } color_map { [0 rgb 0] [1 rgb <0.44, 0.34, 0.17>] } } finish { ambient 0.15 diffuse 0.85 } } // colour index 1
-    texture { uv_mapping pigment { image_pattern { png "leaf.png" interpolate 2 use_alpha } pigment_map { [0 rgbt 1] [0.5 rgbt 1] [0.5 image_pattern { png "leaf.png" interpolate 2 } color_map { [0 rgb 0] [1 rgb <0.44, 0.34, 0.17>] }] } } finish { ambient 0.15 diffuse 0.85 } } // colour index 1
-    texture { uv_mapping pigment { image_pattern { png "leaf.png" interpolate 2 use_alpha } pigment_map { [0 rgbt 1] [0.5 rgbt 1] [0.5 image_pattern { png "leaf.png" interpolate 2 } color_map { [0 rgb 0] [1 rgb <0.28, 0.66, 0.2>] }] } } finish { ambient 0.15 diffuse 0.85 } } // colour index 6
+    texture { uv_mapping pigment { image_pattern { png "leaf.png" interpolate 2 use_alpha } pigment_map { [0.5 image_pattern { png "leaf.png" interpolate 2 } color_map { [0 rgb 0] [1 rgb <0.44, 0.34, 0.17>] }] [0.5 rgbt 1] } } finish { ambient 0.15 diffuse 0.85 } } // colour index 1
+    texture { uv_mapping pigment { image_pattern { png "leaf.png" interpolate 2 use_alpha } pigment_map { [0.5 image_pattern { png "leaf.png" interpolate 2 } color_map { [0 rgb 0] [1 rgb <0.28, 0.66, 0.2>] }] [0.5 rgbt 1] } } finish { ambient 0.15 diffuse 0.85 } } // colour index 6
   }
   face_indices {
     304,

@@ -54,12 +54,13 @@ describe('galleryManifest', () => {
     const files = readdirSync(dir).filter((f) => f.endsWith('.lsys'));
     const manifest = galleryManifest(files.map((f) => [f, readFileSync(new URL(f, dir), 'utf8')] as const));
     expect(manifest).toHaveLength(files.length);
-    // In the gallery's order: ABOP chapter 1 first, then chapters 2, 3, 4 and 6, Green, Jou, Lparser, Other.
+    // In the gallery's order: ABOP chapters 1 to 6, Green, Jou, Lparser, Other.
     expect([...new Set(manifest.map((e) => e.group))]).toEqual([
       'ABOP chapter 1: graphical modeling using L-systems',
       'ABOP chapter 2: modeling of trees',
       'ABOP chapter 3: developmental models of herbaceous plants',
       'ABOP chapter 4: phyllotaxis',
+      'ABOP chapter 5: models of plant organs',
       'ABOP chapter 6: animation of plant development',
       "Green's RL-systems",
       'Jou, Park and Bahng: particle attributes',
