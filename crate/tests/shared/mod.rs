@@ -40,16 +40,6 @@ pub fn examples() -> Vec<(PathBuf, String)> {
         .collect()
 }
 
-/// The text of the gallery example whose file name ends with `name`.
-#[allow(dead_code)]
-pub fn example(name: &str) -> String {
-    let (_, text) = examples()
-        .into_iter()
-        .find(|(p, _)| p.ends_with(name))
-        .unwrap_or_else(|| panic!("{name}"));
-    text
-}
-
 /// A vlab object folder as the CLI and the studio hand it over: every file with its bytes, in
 /// name order.
 #[allow(dead_code)]
