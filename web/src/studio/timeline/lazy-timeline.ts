@@ -112,9 +112,12 @@ export class LazyTimeline {
     return this.studio?.timedSpan() ?? null;
   }
 
-  /** Stops playing (a movie poses the plant itself). */
-  pause(): void {
-    this.loaded?.timeline.pause();
+  /**
+   * A movie poses the plant (`on`) or is done: meanwhile the timeline pauses and asks for no time
+   * of its own (each plant shown or build delivered would have it ask for its t again).
+   */
+  pose(on: boolean): void {
+    this.loaded?.pose(on);
   }
 
   /** Play / pause the growth. */

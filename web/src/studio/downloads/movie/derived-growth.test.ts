@@ -15,7 +15,7 @@ function fakeStudio(span: number | null, fails: (at: number | null) => string | 
   const timeline = {
     timedAt: 2 as number | null,
     timedSpan: () => span,
-    pause: () => {},
+    pose: () => {},
     deriveAt(t: number | null) {
       if (t === timeline.timedAt) return;
       timeline.timedAt = t;

@@ -10,7 +10,7 @@ import type { LazyTimeline } from '../../timeline';
 
 /** What filming a derived plant needs of the studio. */
 export interface DerivedStudio {
-  timeline: Pick<LazyTimeline, 'deriveAt' | 'timedAt' | 'timedSpan' | 'pause'>;
+  timeline: Pick<LazyTimeline, 'deriveAt' | 'timedAt' | 'timedSpan' | 'pose'>;
   preview: Pick<LivePreview, 'answered' | 'settled' | 'lastResult'>;
   /** The view has a plant on its way to the GPU (`PlantView.uploading`). */
   uploading(): boolean;
@@ -42,7 +42,7 @@ function problem(preview: DerivedStudio['preview'], t: number): string | null {
 
 /**
  * The derived growth of the plant on screen, or null when it grows on the GPU (not timed nor
- * stepwise). (The timeline is to be paused first: the movie poses the plant.)
+ * stepwise). (The timeline is to be posed first, `LazyTimeline.pose`: the movie poses the plant.)
  */
 export function derivedGrowth(studio: DerivedStudio): DerivedGrowth | null {
   const span = studio.timeline.timedSpan();

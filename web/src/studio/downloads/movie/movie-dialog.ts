@@ -251,7 +251,7 @@ export class MovieDialog {
     let scene: FilmedScene | undefined;
     try {
       const { studio, view } = this.source;
-      studio.timeline.pause(); // the movie poses the plant
+      studio.timeline.pose(true); // the movie poses the plant, the timeline asks nothing meanwhile
       scene = await viewScene(view, look, derivedGrowth(studio));
       this.recording = recordMovie(plan, scene, name, (done, frames) => {
         c.progress.value = done;
@@ -267,6 +267,7 @@ export class MovieDialog {
       console.error('The movie failed:', error);
       this.say('error', `The movie failed: ${error instanceof Error ? error.message : String(error)}`);
     } finally {
+      this.source.studio.timeline.pose(false);
       scene?.close();
       this.recording = undefined;
       this.busy(false, plan.frames);
