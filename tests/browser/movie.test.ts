@@ -264,6 +264,22 @@ describe('the movie of a timed grammar', () => {
     expect(problems).toEqual([]);
   }, 180_000);
 
+  it('cancels a timed movie at once, the studio back at its time', async () => {
+    await scrubTimed(4.5, 8);
+    await openMovieDialog();
+    await choose({ format: 'webm', width: 320, height: 160, fps: 30, seconds: 30, turntable: false });
+    await page.getByTestId('movie-record').click();
+    await page.waitForFunction(() => Number((document.querySelector('[data-testid=movie-progress]') as HTMLProgressElement | null)?.value) >= 3);
+    await page.getByTestId('movie-cancel').click();
+    await expect.poll(() => page.getByTestId('movie-summary').textContent()).toBe('Cancelled: nothing was saved');
+    await page.getByTestId('movie-close').click();
+    // The filament derived at t = 4.5 again, as the timeline says.
+    await page.waitForFunction(() => window.__meristem?.preview?.settled === true && window.__meristem.lastStats?.modules === 8 && window.__meristem.preview.lastResult?.options.time === 4.5);
+    expect(await page.getByTestId('timeline-time').textContent()).toMatch(/^t 4\.50 of 6/);
+    await scrubTimed(6, 21);
+    expect(problems).toEqual([]);
+  });
+
   it('fails with the reason when the plant cannot be derived at a frame’s t, saving nothing', async () => {
     // Whole at every whole t (each cell 0 old), a division by zero where a cell is half a step old.
     expect(await pasteText(page, '#terminal_age a 1\n#iterations 4\naxiom: a(0)\na(t) -> a(0) a(0)\nhomomorphism:\na(t) -> F(1 / (t - 0.5))\n')).toBe('ok');
