@@ -454,3 +454,104 @@ fn derive_at_a_time_shows_a_timed_grammar_between_steps() {
         assert!(err.contains("growth time"), "{err}");
     }
 }
+
+/// A PNG the CLI wrote, decoded (8-bit RGBA, unfiltered rows, as it writes them): width, height
+/// and the pixels.
+fn decode_png(bytes: &[u8]) -> (u32, u32, Vec<u8>) {
+    assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
+    let (mut at, mut size, mut data) = (8, (0, 0), Vec::new());
+    while at + 8 <= bytes.len() {
+        let n = u32::from_be_bytes(bytes[at..at + 4].try_into().unwrap()) as usize;
+        let (kind, body) = (&bytes[at + 4..at + 8], &bytes[at + 8..at + 8 + n]);
+        match kind {
+            b"IHDR" => {
+                let word = |k: usize| u32::from_be_bytes(body[k..k + 4].try_into().unwrap());
+                size = (word(0), word(4));
+                assert_eq!(&body[8..10], &[8, 6], "8 bits, RGBA");
+            }
+            b"IDAT" => data.extend_from_slice(body),
+            _ => {}
+        }
+        at += 12 + n;
+    }
+    let raw = miniz_oxide::inflate::decompress_to_vec_zlib(&data).expect("a zlib stream");
+    let row = 1 + 4 * size.0 as usize;
+    assert_eq!(raw.len(), row * size.1 as usize);
+    let pixels = raw.chunks_exact(row).flat_map(|r| {
+        assert_eq!(r[0], 0, "rows unfiltered");
+        r[1..].to_vec()
+    });
+    (size.0, size.1, pixels.collect())
+}
+
+#[test]
+fn export_frames_writes_png_pictures_of_the_growth() {
+    let dir = std::env::temp_dir().join(format!("meristem-cli-png-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let grammar = example("abop-6.1-timed-anabaena.lsys");
+    let frames = dir.join("frames");
+    let look = [
+        "--size",
+        "400x120",
+        "--background",
+        "white",
+        "--line-width",
+        "3",
+    ];
+    let args = [
+        &["export", &grammar, "--frames", "7", "--format", "png", "-o"][..],
+        &[frames.to_str().unwrap()],
+        &look,
+    ]
+    .concat();
+    let (code, _, err) = meristem(&args);
+    assert_eq!((code, err.as_str()), (0, ""));
+    // The filament at t = 0, 1, … 6: φ^(t + 1) long (the example's header), drawn from the left
+    // on a white picture framed on the whole filament; its drawn pixels grow by about φ a step.
+    let drawn: Vec<usize> = (0..7)
+        .map(|k| {
+            let (w, h, rgba) =
+                decode_png(&std::fs::read(frames.join(format!("frame_{k:03}.png"))).unwrap());
+            assert_eq!((w, h), (400, 120));
+            rgba.chunks_exact(4)
+                .filter(|p| p[..3] != [255, 255, 255])
+                .count()
+        })
+        .collect();
+    let phi = (1.0 + 5f64.sqrt()) / 2.0;
+    for t in 3..7 {
+        let ratio = drawn[t] as f64 / drawn[t - 1] as f64;
+        assert!((ratio - phi).abs() < 0.08, "t = {t}: {drawn:?}");
+    }
+    // One picture at a time: the last frame is the filament at t = 6.
+    let at = dir.join("at.png");
+    let args = [
+        &["export", &grammar, "--at", "6", "-o"][..],
+        &[at.to_str().unwrap()],
+        &look,
+    ]
+    .concat();
+    assert_eq!(meristem(&args).0, 0);
+    assert_eq!(
+        std::fs::read(&at).unwrap(),
+        std::fs::read(frames.join("frame_006.png")).unwrap()
+    );
+    // Transparent by default (the filament drawn, the rest clear); too big a picture is refused.
+    let (code, _, _) = meristem(&["export", &grammar, "--at", "2", "-o", at.to_str().unwrap()]);
+    assert_eq!(code, 0);
+    let (_, _, rgba) = decode_png(&std::fs::read(&at).unwrap());
+    assert!(rgba.chunks_exact(4).any(|p| p[3] == 0) && rgba.chunks_exact(4).any(|p| p[3] > 0));
+    let (code, _, err) = meristem(&[
+        "export",
+        &grammar,
+        "--at",
+        "2",
+        "--size",
+        "5000x100",
+        "-o",
+        at.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 2);
+    assert!(err.contains("the most is 4096 on a side"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

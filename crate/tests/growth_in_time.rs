@@ -488,6 +488,6 @@ fn the_cli_writes_frames_of_the_growth() {
         "-o",
         frames.to_str().unwrap(),
     ]);
-    assert!(String::from_utf8_lossy(&refused.stderr).contains("SVG pictures"));
+    assert!(String::from_utf8_lossy(&refused.stderr).contains("SVG or PNG pictures"));
     let _ = std::fs::remove_dir_all(&dir);
 }

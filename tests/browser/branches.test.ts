@@ -8,7 +8,7 @@ import { join } from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { exportWithCli, removeScratch, scratchDir } from '../export/tools';
 import { colourShare, differingShare, foregroundMask, type Picture } from './pictures';
-import { canvasPicture, editorText, generation, nextBuild, openExample, savePage, twoFrames, VIEW_CANVAS } from './studio-page';
+import { canvasPicture, editorText, generation, nextBuild, openExample, savePage, scrubTo, twoFrames, VIEW_CANVAS } from './studio-page';
 import { browser, page, problems, useStudio } from './session';
 
 const dir = scratchDir('branches');
@@ -192,6 +192,65 @@ describe('editing a branch by its Bézier handles', () => {
     expect(await editsDocument()).toBeNull();
     await page.getByTestId('edit-undo').click();
     expect(await editsDocument()).toEqual(edited);
+    expect(problems).toEqual([]);
+  });
+});
+
+/** The plant's pixel with the most plant pixels around it (a 15 × 15 square): inside its thickest branch, the trunk. */
+function thickestPoint(picture: Picture): { x: number; y: number } {
+  const mask = foregroundMask(picture);
+  const { width, height } = picture;
+  let best = { x: 0, y: 0, n: -1 };
+  for (let y = 7; y < height - 7; y++)
+    for (let x = 7; x < width - 7; x++) {
+      if (!mask[y * width + x]) continue;
+      let n = 0;
+      for (let dy = -7; dy <= 7; dy++) for (let dx = -7; dx <= 7; dx++) n += mask[(y + dy) * width + x + dx];
+      if (n > best.n) best = { x, y, n };
+    }
+  return { x: best.x + 0.5, y: best.y + 0.5 };
+}
+
+// Issue 45: a plant that grows in time (the timeline used: its mesh carries growth arrays) keeps
+// them right through a drag. The drag re-meshes only what moved (the parts meshed alone carry their
+// growth: it used to re-mesh the whole plant), the page patches the moved vertices' growth origins
+// on the GPU, and mid-growth the dragged branch grows from where the edit put it: the same picture
+// as the whole mesh of the same edits (which a redo shows).
+describe('a dragged plant growing in time', () => {
+  it('draws the dragged branch mid-growth where the edit put it, as the whole mesh of its edits', async () => {
+    await page.getByTestId('timeline-slider').fill('99'); // the first use: builds carry growth arrays
+    await page.waitForFunction(() => window.__meristem!.growth!().span !== null && window.__meristem!.preview!.settled, undefined, { timeout: 30_000 });
+    const span = (await page.evaluate(() => window.__meristem!.growth!().span))!;
+    const mid = span - 0.4; // (the last step's twigs growing)
+    await page.getByTestId('edit-branches').click();
+    await scrubTo(page, span);
+    const point = thickestPoint(await canvasPicture(page, 'branches-growing-whole.png'));
+    const canvas = (await page.locator(VIEW_CANVAS).boundingBox())!;
+    await page.mouse.click(canvas.x + point.x, canvas.y + point.y);
+    await expect.poll(() => page.evaluate(() => window.__meristem!.branches!.selectedPath())).not.toBeNull();
+    await twoFrames(page);
+    await scrubTo(page, mid);
+    const undragged = await canvasPicture(page, 'branches-growing-undragged.png');
+    await scrubTo(page, span);
+    const [, , , p3] = await handles();
+    await page.mouse.move(p3.x, p3.y);
+    await page.mouse.down();
+    await page.mouse.move(p3.x - 12, p3.y + 5, { steps: 3 });
+    await page.mouse.up();
+    expect(await page.getByTestId('edit-branches').getAttribute('data-last-drag'), 'only what moved was re-meshed').toBe('partial');
+    await scrubTo(page, mid);
+    const dragged = await canvasPicture(page, 'branches-growing-dragged.png');
+    const path = await page.evaluate(() => window.__meristem!.branches!.selectedPath());
+    expect(differingShare(undragged, dragged, 40), `mid-growth, the branch ${path} moved`).toBeGreaterThan(0.002);
+    // The whole mesh of the same edits: undo, redo (which meshes the edited plant whole).
+    await page.getByTestId('edit-undo').click();
+    await page.getByTestId('edit-redo').click();
+    await scrubTo(page, span);
+    await scrubTo(page, mid);
+    const remeshed = await canvasPicture(page, 'branches-growing-remeshed.png');
+    // (Exactly the same picture; with the GPU's growth origins left where the drag began, 133 pixels differed.)
+    expect(differingShare(dragged, remeshed, 40), 'the drag’s growth is the whole mesh’s').toBeLessThan(0.00005);
+    await page.keyboard.press('Escape');
     expect(problems).toEqual([]);
   });
 });

@@ -9,9 +9,9 @@ import type { Download } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { unzipSync } from 'fflate';
 import { readGif, readMp4, readWebm } from './media-files';
-import { decodePng } from './pictures';
+import { decodePng, foregroundMask, type Picture } from './pictures';
 import { browser, page, problems, useStudio } from './session';
-import { RESULTS } from './studio-page';
+import { canvasPicture, openExample, pasteText, RESULTS, twoFrames } from './studio-page';
 
 useStudio();
 
@@ -199,6 +199,105 @@ describe('GIFs, PNG sequences, and movies stopped or refused', () => {
     expect(await page.getByTestId('movie-record').isDisabled()).toBe(true);
     await page.getByTestId('movie-close').click();
     expect(problems).toEqual([]);
+  });
+});
+
+/** The foreground's left and right ends (pixels) along the row with most of it, and the colour a few pixels in from its left end. */
+function filament(picture: Picture): { left: number; right: number; colour: [number, number, number] } {
+  const mask = foregroundMask(picture);
+  const { width, height, data } = picture;
+  let row = 0;
+  let most = -1;
+  for (let y = 0; y < height; y++) {
+    let n = 0;
+    for (let x = 0; x < width; x++) n += mask[y * width + x];
+    if (n > most) [row, most] = [y, n];
+  }
+  let [left, right] = [width, -1];
+  for (let x = 0; x < width; x++) if (mask[row * width + x]) [left, right] = [Math.min(left, x), Math.max(right, x)];
+  const i = 4 * (row * width + left + 4);
+  return { left, right, colour: [data[i], data[i + 1], data[i + 2]] };
+}
+
+const colourDistance = (a: number[], b: number[]) => Math.abs(a[0] - b[0]) + Math.abs(a[1] - b[1]) + Math.abs(a[2] - b[2]);
+
+/** Scrubs the timeline to `t` and waits for the timed plant derived at t (`modules` modules) on screen. */
+async function scrubTimed(t: number, modules: number): Promise<void> {
+  await page.getByTestId('timeline-slider').fill(String(t));
+  await page.waitForFunction((n) => window.__meristem?.preview?.settled === true && window.__meristem.lastStats?.modules === n && window.__meristem.uploading?.() !== true, modules, { timeout: 30_000 });
+  await twoFrames(page);
+}
+
+// Issue 45: a timed grammar is filmed as the timeline shows it, derived at each frame's t (not
+// its whole plant's mesh grown on the GPU). ABOP 6.1's Anabaena (public/examples/abop-6.1-timed-
+// anabaena.lsys): at t in [n, n + 1) the filament is the D0L-system's word n, its cells grown by
+// their age, φ^(t + 1) long; worked by hand, word n starts with an a cell for odd n ≥ 3 (a_l a_l
+// b_r …) and with a b cell for even n ≥ 2 (b_l a_r …), where the whole plant's (word 6) first
+// cell is a b: a movie grown from the whole plant's mesh starts with a b at every t.
+describe('the movie of a timed grammar', () => {
+  it('films the plant derived at each frame’s t, as the timeline shows it, and puts the studio back', async () => {
+    expect(await openExample(page, 'abop-6.1-timed-anabaena.lsys')).toBe('ok');
+    await scrubTimed(3.5, 5);
+    expect(await page.evaluate(() => window.__meristem!.growth!().span), 'a timed plant carries no growth arrays').toBeNull();
+    expect(await page.evaluate(() => window.__meristem!.preview!.lastResult!.options.growth)).toBeUndefined();
+    const studio = filament(await canvasPicture(page, 'movie-anabaena-studio-t3.5.png'));
+    await scrubTimed(6, 21);
+    await openMovieDialog();
+    expect(await page.locator('#movie-range-note').textContent()).toBe('The plant grows from step 0 to 6.');
+    const files = unzipSync(await movieFile({ format: 'png', width: 480, height: 200, fps: 10, seconds: 1.3, turntable: false }, /^13 frames · 1\.3 s · 480 × 200 · steps 0 to 6$/, 'timed-anabaena-filament-frames.zip'));
+    const frames = Object.values(files).map((png) => filament(decodePng(Buffer.from(png))));
+    expect(frames.length).toBe(13); // t = 0, 0.5, … 6
+    const length = (t: number) => frames[2 * t].right - frames[2 * t].left;
+    for (let k = 3; k < 13; k++) expect(length(k / 2), `the filament grows from t = ${(k - 1) / 2} to ${k / 2}`).toBeGreaterThan(length((k - 1) / 2));
+    const phi = (1 + Math.sqrt(5)) / 2;
+    for (const t of [4, 4.5, 5, 5.5, 6]) expect(length(t) / length(t - 1), `φ^(t + 1) long at t = ${t}`).toBeCloseTo(phi, 1);
+    // The first cell: a at t = 3.5 and 5.5 (words 3 and 5), b at 2.5 and 4.5 (words 2 and 4).
+    const first = (t: number) => frames[2 * t].colour;
+    // (Colours 5 and 3 of the palette, two greens about 54 apart as drawn.)
+    expect(colourDistance(first(3.5), first(5.5))).toBeLessThan(20);
+    expect(colourDistance(first(2.5), first(4.5))).toBeLessThan(20);
+    expect(colourDistance(first(3.5), first(4.5)), 'an a cell, then a b cell first').toBeGreaterThan(40);
+    expect(colourDistance(first(3.5), studio.colour), 'as the timeline shows t = 3.5').toBeLessThan(20);
+    // Back at the time the studio showed: the whole filament.
+    await page.waitForFunction(() => window.__meristem?.preview?.settled === true && window.__meristem.lastStats?.modules === 21);
+    await page.getByTestId('movie-close').click();
+    expect(problems).toEqual([]);
+  }, 180_000);
+
+  it('cancels a timed movie at once, the studio back at its time', async () => {
+    await scrubTimed(4.5, 8);
+    await openMovieDialog();
+    await choose({ format: 'webm', width: 320, height: 160, fps: 30, seconds: 30, turntable: false });
+    await page.getByTestId('movie-record').click();
+    await page.waitForFunction(() => Number((document.querySelector('[data-testid=movie-progress]') as HTMLProgressElement | null)?.value) >= 3);
+    await page.getByTestId('movie-cancel').click();
+    await expect.poll(() => page.getByTestId('movie-summary').textContent()).toBe('Cancelled: nothing was saved');
+    await page.getByTestId('movie-close').click();
+    // The filament derived at t = 4.5 again, as the timeline says.
+    await page.waitForFunction(() => window.__meristem?.preview?.settled === true && window.__meristem.lastStats?.modules === 8 && window.__meristem.preview.lastResult?.options.time === 4.5);
+    expect(await page.getByTestId('timeline-time').textContent()).toMatch(/^t 4\.50 of 6/);
+    await scrubTimed(6, 21);
+    expect(problems).toEqual([]);
+  });
+
+  it('fails with the reason when the plant cannot be derived at a frame’s t, saving nothing', async () => {
+    // Whole at every whole t (each cell 0 old), a division by zero where a cell is half a step old.
+    expect(await pasteText(page, '#terminal_age a 1\n#iterations 4\naxiom: a(0)\na(t) -> a(0) a(0)\nhomomorphism:\na(t) -> F(1 / (t - 0.5))\n')).toBe('ok');
+    await openMovieDialog();
+    await choose({ format: 'png', width: 160, height: 90, fps: 10, seconds: 0.9, turntable: false });
+    const downloads: string[] = [];
+    page.on('download', (d) => downloads.push(d.suggestedFilename()));
+    await page.getByTestId('movie-record').click();
+    await page.waitForFunction(() => document.querySelector('[data-testid=movie-summary]')?.getAttribute('data-state') === 'error', undefined, { timeout: 60_000 });
+    expect(await page.getByTestId('movie-summary').textContent()).toMatch(/^The movie failed: the grammar has errors at t = 0\.5: division by zero/);
+    expect(await page.getByTestId('movie-dialog').getAttribute('data-state')).toBe('idle');
+    await page.getByTestId('movie-close').click();
+    // The studio is back at its plant (the grammar's own iterations), without errors.
+    await page.waitForFunction(() => window.__meristem?.preview?.settled === true && window.__meristem.preview.lastResult?.build.ok === true);
+    expect(downloads).toEqual([]);
+    // The page logs the movie's failure, and nothing else.
+    const logged = problems.splice(0);
+    expect(logged).toEqual([expect.stringMatching(/^console error: The movie failed: Error: the grammar has errors at t = 0\.5: division by zero/)]);
   });
 });
 

@@ -365,3 +365,30 @@ describe('drag targets and the edits document (issue 19)', () => {
     expect(refused).toBeGreaterThan(50);
   });
 });
+
+describe('a plant that grows in time (issue 45)', () => {
+  it('is dragged with its growth origins crossing with the changed vertices, its growth times kept', () => {
+    const { editor, build } = editPlant(GAME_TREE, { growth: true });
+    try {
+      const mesh = build.mesh;
+      expect(mesh.growthOrigins?.length).toBe(mesh.positions.length);
+      const times = mesh.growthTimes!.slice();
+      let copy: MeshBuffers = { ...mesh, positions: mesh.positions.slice(), normals: mesh.normals.slice(), growthOrigins: mesh.growthOrigins!.slice() };
+      const bough = editor.findBranch([0, 0])!;
+      const p3 = point(editor.controlPoints(), 4 * bough + 3);
+      for (let frame = 1; frame <= 2; frame++) {
+        const update = editor.drag(bough, 3, [p3[0] + 0.1 * frame, p3[1] - 0.05, p3[2] + 0.02]);
+        // (A partial re-mesh: before, a tube meshed alone had no growth and another ring count.)
+        expect(update.full).toBe(false);
+        expect(update.growthOrigins.length).toBe(update.positions.length);
+        copy = applyMeshUpdate(copy, update);
+        const core = editor.mesh();
+        expect(same(copy.growthOrigins!, core.growthOrigins!)).toBe(true);
+        expect(same(core.growthTimes!, times)).toBe(true);
+        expect(worst(copy.growthOrigins!, mesh.growthOrigins!)).toBeGreaterThan(0.05);
+      }
+    } finally {
+      editor.free();
+    }
+  });
+});

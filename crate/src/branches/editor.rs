@@ -13,6 +13,12 @@
 //! appears or vanishes, or a part's vertex or triangle count or provenance changes. Then the
 //! whole mesh is rebuilt and [`MeshChange::full`] says so, with the reason.
 //!
+//! Growth in time (with `MeshOptions::growth`): an edit moves where a branch grows, not when. The
+//! mesh's growth times are the unedited plant's schedule ([`mesh::growth_schedule`] of the
+//! unedited skeleton), its growth origins where the edited skeleton puts each element; a drag
+//! writes both over the parts it re-meshes and moves the moved chains' origins with them, so the
+//! growth arrays equal those of the whole mesh of the same edits.
+//!
 //! Widths: an edited plant keeps the width unit of the unedited one (a drag that makes the
 //! plant a little larger does not thin every branch), so the mesh is built with
 //! `WidthUnit::Absolute` of that unit.
@@ -22,8 +28,8 @@ mod drag;
 use super::deform::{self, Rigid};
 use super::edits::{check_edit, BranchEdit, EditReport, NotApplied, MAX_EDITS, MAX_OFFSET};
 use super::{BranchTree, Item, NO_BRANCH};
-use crate::mesh::parts::MeshParts;
-use crate::mesh::{self, MeshBuffers, MeshOptions, WidthUnit};
+use crate::mesh::parts::{Alone, MeshParts};
+use crate::mesh::{self, GrowthSchedule, MeshBuffers, MeshOptions, WidthUnit};
 use crate::turtle::Skeleton;
 use drag::DragSession;
 use glam::DVec3;
@@ -85,6 +91,8 @@ pub struct BranchEditor {
     inherited: Vec<Rigid>,
     options: MeshOptions,
     unit: f64,
+    /// The unedited skeleton's growth times, once a mesh grows in time (see the module's doc).
+    schedule: Option<GrowthSchedule>,
     parts: MeshParts,
     session: Option<DragSession>,
     change: MeshChange,
@@ -108,6 +116,7 @@ impl BranchEditor {
             inherited: vec![Rigid::IDENTITY; n],
             options: MeshOptions::default(),
             unit,
+            schedule: None,
             parts: MeshParts::default(),
             session: None,
             change: MeshChange::default(),
@@ -129,6 +138,15 @@ impl BranchEditor {
     /// The layout of the current mesh.
     pub fn parts(&self) -> &MeshParts {
         &self.parts
+    }
+
+    /// How an element of the current mesh is meshed alone (its options, unit and growth times).
+    pub fn alone(&self) -> Alone<'_> {
+        Alone {
+            options: &self.options,
+            unit: self.unit,
+            schedule: self.schedule.as_ref(),
+        }
     }
 
     /// The mesh options edits are meshed with (the width unit fixed).
@@ -176,7 +194,11 @@ impl BranchEditor {
             width_unit: WidthUnit::Absolute(self.unit),
             ..options.clone()
         };
-        let (mesh, parts) = mesh::build_mesh_with_parts(skeleton, &self.options);
+        if self.options.with_growth() && self.schedule.is_none() {
+            self.schedule = Some(mesh::growth_schedule(&self.original));
+        }
+        let (mesh, parts) =
+            mesh::build_mesh_with_schedule(skeleton, &self.options, self.schedule.as_ref());
         self.parts = parts;
         self.session = None;
         self.change = MeshChange {

@@ -287,6 +287,64 @@ fn a_drag_rebuilds_the_branch_and_moves_its_descendants_like_a_full_mesh() {
     }
 }
 
+/// A drag of a plant that grows in time (`MeshOptions::growth`) stays a partial re-mesh, and
+/// leaves the growth arrays those of the whole mesh of the same edits: the times the unedited
+/// plant's (an edit moves where a branch grows, not when), each vertex's origin where the edit
+/// put its element; so the plant drawn at any growth time is the whole mesh's.
+#[cfg(feature = "growth")]
+#[test]
+fn a_drag_keeps_the_growth_in_time_of_a_whole_mesh_of_its_edits() {
+    let mut options = BuildOptions::with_iterations(4);
+    options.mesh.growth = true;
+    let mut b = editor(build(LEAFY, &options));
+    let unedited = b.plant().mesh.clone();
+    assert!(!unedited.growth_times.is_empty());
+    let info = b.branches();
+    let branch = info
+        .iter()
+        .position(|i| i.path.len() == 3 && !i.children.is_empty())
+        .expect("a mid-level branch") as u32;
+    let p3 = info[branch as usize].control[3];
+    let worst = |a: &[f32], b: &[f32]| {
+        assert_eq!(a.len(), b.len());
+        a.iter()
+            .zip(b)
+            .map(|(x, y)| (x - y).abs())
+            .fold(0.0f32, f32::max)
+    };
+    for frame in 1..=3 {
+        let f = frame as f64;
+        let target = p3 + glam::DVec3::new(0.05 * f, -0.08 * f, 0.04 * f);
+        let change = b.drag(branch, 3, target).unwrap();
+        assert!(!change.full, "frame {frame}: {change:?}");
+        let mut whole = editor(build(LEAFY, &options));
+        whole.apply_edits(&b.edits());
+        let (mesh, full) = (&b.plant().mesh, &whole.plant().mesh);
+        assert_close(mesh, &mut full.clone(), 2e-5);
+        assert_eq!(mesh.growth_times, full.growth_times);
+        assert_eq!(mesh.growth_times, unedited.growth_times);
+        assert_eq!(mesh.segment_growth_times, full.segment_growth_times);
+        let origins = worst(&mesh.growth_origins, &full.growth_origins);
+        assert!(origins <= 2e-5, "frame {frame}: origins off by {origins}");
+        // The moved vertices grow from their new places, not from where they were.
+        let moved = change.ranges.iter().any(|r| {
+            let (from, to) = (3 * r[0] as usize, 3 * (r[0] + r[1]) as usize);
+            worst(
+                &mesh.growth_origins[from..to],
+                &unedited.growth_origins[from..to],
+            ) > 1e-3
+        });
+        assert!(moved, "frame {frame}: the dragged branch's origins moved");
+        for t in [0.5, 1.7, 2.5, 3.2] {
+            let at = worst(
+                &crate::mesh::mesh_at(mesh, t),
+                &crate::mesh::mesh_at(full, t),
+            );
+            assert!(at <= 4e-5, "frame {frame}, t = {t}: off by {at}");
+        }
+    }
+}
+
 #[test]
 fn descendants_move_rigidly() {
     let mut b = built_n(LEAFY, 4);

@@ -119,6 +119,8 @@ impl Look {
 struct Frame {
     min: DVec2,
     size: DVec2,
+    /// The picture's size in pixels.
+    pixels: DVec2,
     width: String,
     height: String,
     /// A segment's stroke in model units when the look fixes it in pixels.
@@ -140,6 +142,7 @@ impl Frame {
             return Frame {
                 min: min - DVec2::splat(margin),
                 size,
+                pixels,
                 width: length(pixels.x, look.dpi),
                 height: length(pixels.y, look.dpi),
                 line_width: None,
@@ -157,6 +160,7 @@ impl Frame {
         Frame {
             min: (min + max) * 0.5 - size * 0.5,
             size,
+            pixels,
             width: length(pixels.x, look.dpi),
             height: length(pixels.y, look.dpi),
             line_width: look.line_width.map(|w| w / scale),
@@ -281,18 +285,7 @@ pub fn write_framed(
     framing: Option<&Skeleton>,
     look: &Look,
 ) -> String {
-    let mut shapes = shapes(skeleton, mesh.width_unit);
-    let frame = match framing {
-        Some(whole) => Frame::new(&self::shapes(whole, mesh.width_unit), look),
-        None => Frame::new(&shapes, look),
-    };
-    if let Some(width) = frame.line_width {
-        for shape in &mut shapes {
-            if let Shape::Line(_, _, w, _) = shape {
-                *w = width;
-            }
-        }
-    }
+    let (shapes, frame) = framed_shapes(mesh, skeleton, framing, look);
     let decimals = decimals_for(frame.size.max_element()).saturating_sub(2);
 
     let mut out = String::with_capacity(256 + shapes.len() * 48);
@@ -342,6 +335,81 @@ pub fn write_framed(
     }
     out.push_str("</g>\n</svg>\n");
     out
+}
+
+/// The shapes of `skeleton` and the frame they are drawn in (see [`write_framed`]), the lines'
+/// widths those of the look when it fixes them.
+fn framed_shapes(
+    mesh: &MeshBuffers,
+    skeleton: &Skeleton,
+    framing: Option<&Skeleton>,
+    look: &Look,
+) -> (Vec<Shape>, Frame) {
+    let mut shapes = shapes(skeleton, mesh.width_unit);
+    let frame = match framing {
+        Some(whole) => Frame::new(&self::shapes(whole, mesh.width_unit), look),
+        None => Frame::new(&shapes, look),
+    };
+    if let Some(width) = frame.line_width {
+        for shape in &mut shapes {
+            if let Shape::Line(_, _, w, _) = shape {
+                *w = width;
+            }
+        }
+    }
+    (shapes, frame)
+}
+
+/// A shape of a [`Flat`] picture, in its pixels (x right, y down).
+#[derive(Clone, Debug, PartialEq)]
+pub enum FlatShape {
+    /// A stroke with round caps: start, end, width.
+    Line(DVec2, DVec2, f64),
+    /// A filled outline.
+    Fill(Vec<DVec2>),
+    /// A filled circle: centre, radius.
+    Circle(DVec2, f64),
+}
+
+/// The picture [`write_framed`] writes, as its shapes in its pixels: what a raster of the same
+/// picture fills (the command line's PNG frames of the growth).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Flat {
+    pub width: u32,
+    pub height: u32,
+    /// The background's sRGB colour; `None`: transparent.
+    pub background: Option<[u8; 3]>,
+    /// Each shape and its sRGB colour, in drawing order.
+    pub shapes: Vec<(FlatShape, [u8; 3])>,
+}
+
+/// [`write_framed`]'s picture as a [`Flat`].
+pub fn flat_framed(
+    mesh: &MeshBuffers,
+    skeleton: &Skeleton,
+    framing: Option<&Skeleton>,
+    look: &Look,
+) -> Flat {
+    let (shapes, frame) = framed_shapes(mesh, skeleton, framing, look);
+    let scale = frame.pixels.x / frame.size.x; // (the same both ways)
+    let at = |p: &DVec2| (*p - frame.min) * scale;
+    let colour = |index: u16| srgb(skeleton.color(index)).map(|c| (c * 255.0).round() as u8);
+    let shapes = shapes
+        .iter()
+        .map(|shape| match shape {
+            Shape::Line(a, b, w, c) => (FlatShape::Line(at(a), at(b), w * scale), colour(*c)),
+            Shape::Fill(points, c) => {
+                (FlatShape::Fill(points.iter().map(at).collect()), colour(*c))
+            }
+            Shape::Circle(centre, r, c) => (FlatShape::Circle(at(centre), r * scale), colour(*c)),
+        })
+        .collect();
+    Flat {
+        width: frame.pixels.x.round().max(1.0) as u32,
+        height: frame.pixels.y.round().max(1.0) as u32,
+        background: look.background,
+        shapes,
+    }
 }
 
 /// The XML declaration, the `svg` element (its `viewBox` and size from `frame`), its title and

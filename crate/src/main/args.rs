@@ -43,7 +43,7 @@ pub struct GrowthOutArgs {
     pub seconds_per_step: Option<f64>,
     pub targets_per_step: Option<u32>,
     /// `export --frames N`: N pictures of the growth into the output folder (`--at T` with an SVG
-    /// output: one, at growth time T).
+    /// or PNG output: one, at growth time T).
     pub frames: Option<u32>,
 }
 

@@ -1,9 +1,11 @@
 //! `meristem export FILE --frames N -o DIR` and `--at T -o OUT.svg`: the plant growing, as SVG
 //! pictures at growth times from 0 to N (docs/LANGUAGE.md, "Growth in time"), each framed on the
-//! whole plant so that the frames line up.
+//! whole plant so that the frames line up; or as PNG pictures of the same drawing (`--format png`,
+//! `-o OUT.png`), filled on the CPU by `raster.rs`.
 
 use super::args::{svg_look, Args};
 use super::build::{print_diagnostics, print_timings};
+use super::raster;
 use meristem::export::{svg, Format};
 use meristem::mesh::{growth_schedule, skeleton_at};
 use meristem::pipeline::{self, Hooks};
@@ -14,20 +16,44 @@ use std::process::ExitCode;
 /// True when `--at T` asks `export` for a picture of the growth at T (an SVG output) rather than
 /// the plant at T in a file of another format (a timed grammar at T, any other at its whole steps).
 pub fn at_as_picture(args: &Args) -> bool {
-    let svg = |name: &str| Format::from_extension(name) == Some(Format::Svg);
+    let picture = |name: &str| picture_kind(name).is_some();
     let extension = args
         .output
         .as_ref()
         .and_then(|o| o.extension())
         .and_then(|e| e.to_str());
-    args.at.is_some() && args.format.as_deref().or(extension).is_some_and(svg)
+    args.at.is_some() && args.format.as_deref().or(extension).is_some_and(picture)
+}
+
+/// A picture of the growth: an SVG drawing or a PNG of it.
+#[derive(Clone, Copy, PartialEq)]
+enum Picture {
+    Svg,
+    Png,
+}
+
+/// The picture a format's name or extension asks for, if it is one.
+fn picture_kind(name: &str) -> Option<Picture> {
+    if Format::from_extension(name) == Some(Format::Svg) {
+        Some(Picture::Svg)
+    } else if name.eq_ignore_ascii_case("png") {
+        Some(Picture::Png)
+    } else {
+        None
+    }
 }
 
 /// Most frames one export writes.
 pub const MAX_FRAMES: u32 = 10_000;
 
-/// The pictures to write: each file and its growth time, for `steps` steps; or why not.
-fn frames_of(args: &Args, output: PathBuf, steps: u32) -> Result<Vec<(PathBuf, f32)>, String> {
+/// The pictures to write: each file (`extension`: a frame's) and its growth time, for `steps`
+/// steps; or why not.
+fn frames_of(
+    args: &Args,
+    output: PathBuf,
+    steps: u32,
+    extension: &str,
+) -> Result<Vec<(PathBuf, f32)>, String> {
     let n = steps as f32;
     match (args.growth_out.frames, args.at) {
         (Some(_), Some(_)) => Err("--frames and --at: give one of them".into()),
@@ -44,7 +70,7 @@ fn frames_of(args: &Args, output: PathBuf, steps: u32) -> Result<Vec<(PathBuf, f
                     } else {
                         n * k as f32 / (count - 1) as f32
                     };
-                    (output.join(format!("frame_{k:0width$}.svg")), t)
+                    (output.join(format!("frame_{k:0width$}.{extension}")), t)
                 })
                 .collect())
         }
@@ -54,17 +80,47 @@ fn frames_of(args: &Args, output: PathBuf, steps: u32) -> Result<Vec<(PathBuf, f
     }
 }
 
-/// The format and picture settings of frames: SVG only.
-fn frame_look(args: &Args) -> Result<svg::Look, String> {
-    if let Some(name) = &args.format {
-        if Format::from_extension(name) != Some(Format::Svg) {
-            return Err(format!(
-                "frames of the growth are SVG pictures, not '{name}' (the glTF animation is \
-                 --animate)"
-            ));
-        }
+/// The kind and picture settings of frames: SVG (by default) or PNG.
+fn frame_look(args: &Args) -> Result<(Picture, svg::Look), String> {
+    let extension = args
+        .output
+        .as_ref()
+        .filter(|_| args.growth_out.frames.is_none())
+        .and_then(|o| o.extension())
+        .and_then(|e| e.to_str());
+    let kind = match args.format.as_deref().or(extension) {
+        Some(name) => picture_kind(name).ok_or_else(|| {
+            format!(
+                "frames of the growth are SVG or PNG pictures, not '{name}' (the glTF animation \
+                 is --animate)"
+            )
+        })?,
+        None => Picture::Svg,
+    };
+    Ok((kind, svg_look(args, Format::Svg)?))
+}
+
+/// The file of one picture: the SVG's text, or a PNG of the same drawing (at most
+/// [`raster::MAX_SIDE`] pixels on a side).
+fn picture_file(
+    kind: Picture,
+    plant: &meristem::pipeline::Plant,
+    at: &meristem::turtle::Skeleton,
+    look: &svg::Look,
+) -> Result<Vec<u8>, String> {
+    if kind == Picture::Svg {
+        return Ok(svg::write_framed(&plant.mesh, at, Some(&plant.skeleton), look).into_bytes());
     }
-    svg_look(args, Format::Svg)
+    let flat = svg::flat_framed(&plant.mesh, at, Some(&plant.skeleton), look);
+    if flat.width.max(flat.height) > raster::MAX_SIDE {
+        return Err(format!(
+            "a PNG frame of {} × {} pixels: the most is {} on a side (--size)",
+            flat.width,
+            flat.height,
+            raster::MAX_SIDE
+        ));
+    }
+    Ok(raster::png(&flat))
 }
 
 /// Writes the frames; the exit code.
@@ -81,8 +137,8 @@ pub fn export_frames(
     let Some(output) = args.output.clone() else {
         return fail("frames need an output: -o DIR with --frames, -o OUT.svg with --at".into());
     };
-    let look = match frame_look(args) {
-        Ok(look) => look,
+    let (kind, look) = match frame_look(args) {
+        Ok(picture) => picture,
         Err(e) => return fail(e),
     };
     // The pictures draw the skeleton: the mesh needs no triangles, only its growth. The whole
@@ -96,7 +152,8 @@ pub fn export_frames(
     if !build.ok() {
         return ExitCode::from(1);
     }
-    let frames = match frames_of(args, output.clone(), build.derived_with.steps) {
+    let extension = if kind == Picture::Png { "png" } else { "svg" };
+    let frames = match frames_of(args, output.clone(), build.derived_with.steps, extension) {
         Ok(frames) => frames,
         Err(e) => return fail(e),
     };
@@ -122,8 +179,11 @@ pub fn export_frames(
         } else {
             skeleton_at(&plant.skeleton, &schedule, t)
         };
-        let text = svg::write_framed(&plant.mesh, &at, Some(&plant.skeleton), &look);
-        if let Err(e) = std::fs::write(&path, text) {
+        let bytes = match picture_file(kind, plant, &at, &look) {
+            Ok(bytes) => bytes,
+            Err(e) => return fail(e),
+        };
+        if let Err(e) = std::fs::write(&path, bytes) {
             return fail(format!("cannot write {}: {e}", path.display()));
         }
     }

@@ -13,7 +13,8 @@
 //!                 [--animate [--seconds-per-step S] [--targets-per-step K]]
 //!                                                   glTF: the growth as an animation
 //! meristem export FILE --frames N -o DIR | --at T -o OUT.svg
-//!                                                   SVG pictures of the plant growing
+//!                                                   SVG (or, --format png / OUT.png, PNG)
+//!                                                   pictures of the plant growing
 //! meristem import FILE [--from D] [-o OUT.lsys]      another dialect translated; notes on stderr
 //!                                                   (FILE may be a vlab object's folder or .zip)
 //! meristem help [modules|directives]                the language's modules or directives, from
@@ -32,6 +33,7 @@ mod frames;
 mod help;
 mod import;
 mod input;
+mod raster;
 
 use args::{export_target, parse_args};
 use build::{derive_or_check, export_file};
@@ -62,7 +64,9 @@ pub const USAGE: &str = "usage:
       glTF only: --animate writes the plant's growth as an animation (morph targets keyed in time),
       --seconds-per-step S (default 1), --targets-per-step K (1 to 16, default 4)
   meristem export FILE --frames N -o DIR   N SVG pictures of the plant growing, DIR/frame_000.svg …
-  meristem export FILE --at T -o OUT.svg   the plant at growth time T (0 to the iterations)
+                                           (--format png: PNGs of the same drawing, frame_000.png …)
+  meristem export FILE --at T -o OUT.svg   the plant at growth time T (0 to the iterations; OUT.png:
+                                           a PNG); a PNG is drawn in 2D as the SVG, at most 4096 px a side
   meristem import FILE [--from green|lparser|cpfg|lpy] [-o OUT.lsys]
       FILE may be a vlab object's folder or .zip: its .l with its view file, functions and colours
   meristem help [modules|directives]     the language's modules and directives

@@ -3,7 +3,7 @@
 
 use super::chains::{chains, Chains};
 use super::grow::{append, push, push_range};
-use super::{growth_schedule, GrowthSchedule};
+use super::{growth_origin, growth_schedule, GrowthSchedule};
 use super::{parts, polygon, segment_lines, sphere, surfaces, tube};
 use super::{resolve_width_unit, ChainPart, MeshBuffers, MeshOptions, MeshParts, Part};
 use super::{MATERIAL_BARK, MATERIAL_LEAF, MATERIAL_PLAIN};
@@ -14,7 +14,8 @@ use glam::DVec3;
 /// joint rings, ends are capped), smooth axes as generalized cylinders through their joints,
 /// polygons and predefined surfaces two-sided, spheres. Above `max_vertices` it returns lines.
 pub fn build_mesh(skeleton: &Skeleton, options: &MeshOptions) -> MeshBuffers {
-    mesh_of(skeleton, options, false).0
+    let schedule = options.with_growth().then(|| growth_schedule(skeleton));
+    mesh_of(skeleton, options, schedule.as_ref(), false).0
 }
 
 /// [`build_mesh`], and where each element of the skeleton landed in the mesh ([`MeshParts`]):
@@ -23,21 +24,34 @@ pub fn build_mesh_with_parts(
     skeleton: &Skeleton,
     options: &MeshOptions,
 ) -> (MeshBuffers, MeshParts) {
-    mesh_of(skeleton, options, true)
+    build_mesh_with_schedule(skeleton, options, None)
+}
+
+/// [`build_mesh_with_parts`], the growth times (with [`MeshOptions::growth`]) taken from
+/// `schedule` when given, else from the skeleton's own [`growth_schedule`]: an edited plant's
+/// elements grow when the unedited plant's schedule says (`crate::branches`), from where the
+/// edits put them ([`super::growth_origin`]).
+pub fn build_mesh_with_schedule(
+    skeleton: &Skeleton,
+    options: &MeshOptions,
+    schedule: Option<&GrowthSchedule>,
+) -> (MeshBuffers, MeshParts) {
+    let own = (options.with_growth() && schedule.is_none()).then(|| growth_schedule(skeleton));
+    mesh_of(skeleton, options, schedule.or(own.as_ref()), true)
 }
 
 /// The mesh, and its parts when `with_parts` (else empty parts: the same mesh, without the
-/// bookkeeping).
+/// bookkeeping); its growth times from `schedule` with [`MeshOptions::growth`].
 fn mesh_of(
     skeleton: &Skeleton,
     options: &MeshOptions,
+    schedule: Option<&GrowthSchedule>,
     with_parts: bool,
 ) -> (MeshBuffers, MeshParts) {
     let unit = resolve_width_unit(skeleton, options.width_unit);
     let mut builder = Builder::new(options, unit);
-    if options.with_growth() {
-        let schedule = growth_schedule(skeleton);
-        builder.mesh.segment_growth_times = segment_growth_times(&schedule, skeleton);
+    if let Some(schedule) = schedule.filter(|_| options.with_growth()) {
+        builder.mesh.segment_growth_times = segment_growth_times(schedule, skeleton);
         builder.growth = Some(schedule);
     }
     let mut parts = MeshParts {
@@ -88,20 +102,23 @@ fn mesh_of(
     for i in 0..skeleton.polygons.len() {
         let before = builder.mark();
         builder.polygon(skeleton, i);
-        builder.grow(skeleton.segments.len() + i);
+        builder.grow(skeleton, skeleton.segments.len() + i);
         parts.polygons.push(builder.part_since(before));
     }
     for i in 0..skeleton.surfaces.len() {
         let before = builder.mark();
         builder.surface(skeleton, i);
-        builder.grow(skeleton.segments.len() + skeleton.polygons.len() + i);
+        builder.grow(
+            skeleton,
+            skeleton.segments.len() + skeleton.polygons.len() + i,
+        );
         parts.surfaces.push(builder.part_since(before));
     }
     for i in 0..skeleton.spheres.len() {
         let before = builder.mark();
         builder.sphere_of(skeleton, i);
         let flats = skeleton.polygons.len() + skeleton.surfaces.len();
-        builder.grow(skeleton.segments.len() + flats + i);
+        builder.grow(skeleton, skeleton.segments.len() + flats + i);
         parts.spheres.push(builder.part_since(before));
     }
     (builder.mesh, parts)
@@ -123,8 +140,9 @@ pub(crate) struct Builder<'a> {
     /// The material kind the next `range` call stands for.
     pub(super) material: u32,
     pub(super) scratch: tube::TubeScratch,
-    /// When the mesh carries its growth in time ([`MeshOptions::growth`]): each element's.
-    pub(super) growth: Option<GrowthSchedule>,
+    /// When the mesh carries its growth in time ([`MeshOptions::growth`]): each element's times
+    /// (its origin is where the skeleton meshed puts it, [`super::growth_origin`]).
+    pub(super) growth: Option<&'a GrowthSchedule>,
 }
 
 impl<'a> Builder<'a> {
@@ -166,22 +184,19 @@ impl<'a> Builder<'a> {
         cfg!(feature = "growth") && self.growth.is_some()
     }
 
-    /// Gives the vertices written since the last call the growth of element `element` (see
-    /// [`GrowthSchedule::elements`]), when the mesh carries growth.
+    /// Gives the vertices written since the last call the growth of element `element` of
+    /// `skeleton` (see [`GrowthSchedule::elements`]), when the mesh carries growth.
     #[inline]
-    pub(super) fn grow(&mut self, element: usize) {
+    pub(super) fn grow(&mut self, skeleton: &Skeleton, element: usize) {
         if !self.growing() {
             return;
         }
-        let Some(schedule) = &self.growth else {
-            return;
-        };
-        let Some(g) = schedule.elements.get(element) else {
+        let Some(g) = self.growth.and_then(|s| s.elements.get(element)) else {
             return;
         };
         let mesh = &mut self.mesh;
         let new = mesh.vertex_count() - mesh.growth_times.len() / 2;
-        let o = [g.origin.x as f32, g.origin.y as f32, g.origin.z as f32];
+        let o = growth_origin(skeleton, element).as_vec3().to_array();
         append(&mut mesh.growth_origins, new, |_| o);
         append(&mut mesh.growth_times, new, |_| [g.t0, g.t1]);
     }
@@ -353,10 +368,11 @@ impl<'a> Builder<'a> {
         let lines = segment_lines(skeleton);
         self.mesh.lines = lines.ends;
         self.mesh.line_colors = lines.colors;
-        if let Some(schedule) = self.growth.as_ref().filter(|_| cfg!(feature = "growth")) {
+        if let Some(schedule) = self.growth.filter(|_| cfg!(feature = "growth")) {
             let mesh = &mut self.mesh;
-            for g in &schedule.elements[..skeleton.segments.len().min(schedule.elements.len())] {
-                let o = [g.origin.x as f32, g.origin.y as f32, g.origin.z as f32];
+            let segments = skeleton.segments.len().min(schedule.elements.len());
+            for (g, s) in schedule.elements[..segments].iter().zip(&skeleton.segments) {
+                let o = s.start.as_vec3().to_array();
                 append(&mut mesh.growth_origins, 2, |_| o);
                 append(&mut mesh.growth_times, 2, |_| [g.t0, g.t1]);
             }

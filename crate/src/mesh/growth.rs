@@ -106,7 +106,8 @@ fn reaches(skeleton: &Skeleton) -> Vec<Reach> {
             origin: s.start,
         });
     }
-    let mut flat = |anchor: Option<u32>, origin: DVec3, size: f64| {
+    let mut flat = |anchor: Option<u32>, size: f64| {
+        let origin = growth_origin(skeleton, reaches.len());
         let start = after(&reaches, anchor, origin);
         let length = if size.is_finite() { size } else { 0.0 }.max(least);
         reaches.push(Reach {
@@ -116,21 +117,48 @@ fn reaches(skeleton: &Skeleton) -> Vec<Reach> {
         });
     };
     for p in &skeleton.polygons {
-        let origin = p.points.first().copied().unwrap_or(skeleton.end);
+        let origin = polygon_origin(skeleton, p);
         let size = p
             .points
             .iter()
             .map(|q| (*q - origin).length())
             .fold(0.0, f64::max);
-        flat(p.anchor, origin, size);
+        flat(p.anchor, size);
     }
     for s in &skeleton.surfaces {
-        flat(s.anchor, s.origin, s.scale.abs());
+        flat(s.anchor, s.scale.abs());
     }
     for s in &skeleton.spheres {
-        flat(s.anchor, s.center, s.radius.abs());
+        flat(s.anchor, s.radius.abs());
     }
     reaches
+}
+
+/// Where element `element` of `skeleton` grows from (elements numbered as
+/// [`GrowthSchedule::elements`]): a segment's start, a polygon's first point, a leaf's origin, a
+/// sphere's centre. The mesh takes its vertices' origins from the skeleton it meshes, and their
+/// times from a schedule: an edited plant (its branches moved, `crate::branches`) grows where its
+/// edits put each element, when the unedited plant's schedule says.
+pub fn growth_origin(skeleton: &Skeleton, element: usize) -> DVec3 {
+    let mut i = element;
+    if let Some(s) = skeleton.segments.get(i) {
+        return s.start;
+    }
+    i -= skeleton.segments.len();
+    if let Some(p) = skeleton.polygons.get(i) {
+        return polygon_origin(skeleton, p);
+    }
+    i -= skeleton.polygons.len();
+    if let Some(s) = skeleton.surfaces.get(i) {
+        return s.origin;
+    }
+    i -= skeleton.surfaces.len();
+    skeleton.spheres.get(i).map_or(skeleton.end, |s| s.center)
+}
+
+/// A polygon's growth origin: its first point.
+fn polygon_origin(skeleton: &Skeleton, p: &crate::turtle::Polygon) -> DVec3 {
+    p.points.first().copied().unwrap_or(skeleton.end)
 }
 
 /// The growth front: the path distance it has reached at times −1, 0, 1, … N (`distances[k]` at

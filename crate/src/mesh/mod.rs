@@ -31,10 +31,11 @@ mod tube;
 mod width;
 
 pub use buffers::{MeshBuffers, MATERIAL_BARK, MATERIAL_LEAF, MATERIAL_PLAIN};
-pub use build::{build_mesh, build_mesh_with_parts};
+pub use build::{build_mesh, build_mesh_with_parts, build_mesh_with_schedule};
 pub use chains::{joint_key, Chains};
 pub use growth::{
-    grown_position, growth_factor, growth_schedule, mesh_at, skeleton_at, Growth, GrowthSchedule,
+    grown_position, growth_factor, growth_origin, growth_schedule, mesh_at, skeleton_at, Growth,
+    GrowthSchedule,
 };
 pub use lines::{segment_colors, segment_ends, segment_lines, segment_modules, SegmentLines};
 pub use options::{MeshOptions, MAX_SIDES, MIN_SIDES};

@@ -11,7 +11,7 @@
 //! ([`ChainPart::ranges`]).
 
 use super::build::Builder;
-use super::{MeshBuffers, MeshOptions};
+use super::{GrowthSchedule, MeshBuffers, MeshOptions};
 use crate::turtle::Skeleton;
 
 /// Not in a chain (a segment of zero width), or not a segment (in element ranges).
@@ -241,59 +241,85 @@ pub fn joins(skeleton: &Skeleton, p: u32, i: u32, unit: f64) -> bool {
     super::chains::joins(skeleton, p as usize, i as usize, unit)
 }
 
+/// How one element is meshed alone: as the whole mesh was, by `options` at width unit `unit`,
+/// its growth times (with [`MeshOptions::growth`]) from `schedule` (the whole mesh's).
+#[derive(Clone, Copy)]
+pub struct Alone<'a> {
+    pub options: &'a MeshOptions,
+    pub unit: f64,
+    pub schedule: Option<&'a GrowthSchedule>,
+}
+
+impl<'a> Alone<'a> {
+    fn builder(&self) -> Builder<'a> {
+        let mut builder = Builder::new(self.options, self.unit);
+        builder.growth = self.schedule.filter(|_| self.options.with_growth());
+        builder
+    }
+}
+
 /// The tube of one chain alone, as `build_mesh` writes it, and its element ranges.
 pub fn chain_mesh(
     skeleton: &Skeleton,
-    options: &MeshOptions,
-    unit: f64,
+    how: Alone,
     chain: &[u32],
     start_cap: bool,
     end_dome: bool,
 ) -> (MeshBuffers, Vec<u32>) {
-    let mut builder = Builder::new(options, unit);
+    let mut builder = how.builder();
     builder.tube(skeleton, chain, start_cap, end_dome);
     let ranges = builder.element_ranges_since(&[0, 0, 0]);
     (builder.mesh, ranges)
 }
 
 /// One polygon alone.
-pub fn polygon_mesh(
-    skeleton: &Skeleton,
-    options: &MeshOptions,
-    unit: f64,
-    i: usize,
-) -> MeshBuffers {
-    alone(options, unit, |builder| builder.polygon(skeleton, i))
+pub fn polygon_mesh(skeleton: &Skeleton, how: Alone, i: usize) -> MeshBuffers {
+    let element = skeleton.segments.len() + i;
+    alone(skeleton, how, element, |builder| {
+        builder.polygon(skeleton, i)
+    })
 }
 
 /// One leaf or petal alone.
-pub fn surface_mesh(
-    skeleton: &Skeleton,
-    options: &MeshOptions,
-    unit: f64,
-    i: usize,
-) -> MeshBuffers {
-    alone(options, unit, |builder| builder.surface(skeleton, i))
+pub fn surface_mesh(skeleton: &Skeleton, how: Alone, i: usize) -> MeshBuffers {
+    let element = skeleton.segments.len() + skeleton.polygons.len() + i;
+    alone(skeleton, how, element, |builder| {
+        builder.surface(skeleton, i)
+    })
 }
 
 /// One sphere alone.
-pub fn sphere_mesh(skeleton: &Skeleton, options: &MeshOptions, unit: f64, i: usize) -> MeshBuffers {
-    alone(options, unit, |builder| builder.sphere_of(skeleton, i))
+pub fn sphere_mesh(skeleton: &Skeleton, how: Alone, i: usize) -> MeshBuffers {
+    let flats = skeleton.polygons.len() + skeleton.surfaces.len();
+    let element = skeleton.segments.len() + flats + i;
+    alone(skeleton, how, element, |builder| {
+        builder.sphere_of(skeleton, i)
+    })
 }
 
-/// The mesh `draw` writes into a new builder: one element meshed alone.
-fn alone(options: &MeshOptions, unit: f64, draw: impl FnOnce(&mut Builder)) -> MeshBuffers {
-    let mut builder = Builder::new(options, unit);
+/// The mesh `draw` writes into a new builder, growing as element `element` (of the growth
+/// schedule's numbering): one element meshed alone.
+fn alone(
+    skeleton: &Skeleton,
+    how: Alone,
+    element: usize,
+    draw: impl FnOnce(&mut Builder),
+) -> MeshBuffers {
+    let mut builder = how.builder();
     draw(&mut builder);
+    builder.grow(skeleton, element);
     builder.mesh
 }
 
-/// Copies `alone` (one element meshed alone) over `part` of `mesh`: positions, normals and uvs, and
-/// the indices when `indices` (their pattern may differ, e.g. a polygon triangulated anew).
-/// Returns false, changing nothing, when the counts differ.
+/// Copies `alone` (one element meshed alone) over `part` of `mesh`: positions, normals and uvs,
+/// the growth arrays (origins and times) when the mesh has them, and the indices when `indices`
+/// (their pattern may differ, e.g. a polygon triangulated anew). Returns false, changing
+/// nothing, when the counts differ (or the mesh grows in time and `alone` does not).
 pub fn write_part(mesh: &mut MeshBuffers, part: &Part, alone: &MeshBuffers, indices: bool) -> bool {
+    let growing = !mesh.growth_times.is_empty();
     if alone.vertex_count() != part.vertices as usize
         || alone.triangle_count() != part.triangles as usize
+        || (growing && alone.growth_times.len() != 2 * part.vertices as usize)
     {
         return false;
     }
@@ -303,6 +329,10 @@ pub fn write_part(mesh: &mut MeshBuffers, part: &Part, alone: &MeshBuffers, indi
     mesh.normals[v..v + n].copy_from_slice(&alone.normals);
     let u = 2 * part.first_vertex as usize;
     mesh.uvs[u..u + alone.uvs.len()].copy_from_slice(&alone.uvs);
+    if growing {
+        mesh.growth_origins[v..v + n].copy_from_slice(&alone.growth_origins);
+        mesh.growth_times[u..u + 2 * part.vertices as usize].copy_from_slice(&alone.growth_times);
+    }
     if indices {
         let t = 3 * part.first_triangle as usize;
         for (to, from) in mesh.indices[t..t + alone.indices.len()]
@@ -322,12 +352,33 @@ mod tests {
 
     #[test]
     fn parts_cover_the_mesh_and_each_element_meshes_alone_to_its_part() {
+        parts_mesh_alone_to_their_part(false);
+    }
+
+    /// With growth in time, each element meshed alone carries the growth origins and times the
+    /// whole mesh gives its vertices (what a drag writes over its part, `crate::branches`).
+    #[cfg(feature = "growth")]
+    #[test]
+    fn parts_growing_in_time_mesh_alone_to_their_part_with_its_growth() {
+        parts_mesh_alone_to_their_part(true);
+    }
+
+    fn parts_mesh_alone_to_their_part(growth: bool) {
         let source = "#angle 30\naxiom: X\nX -> F[+X~l][-X{.f.f.}]F@O(0.1)X\nF -> FF";
-        let result = build(source, &BuildOptions::with_iterations(3));
-        let options = MeshOptions::default();
+        let mut build_options = BuildOptions::with_iterations(3);
+        build_options.mesh.growth = growth;
+        let result = build(source, &build_options);
+        let options = build_options.mesh.clone();
         let (mesh, parts) = super::super::build_mesh_with_parts(&result.plant.skeleton, &options);
         assert_eq!(mesh, result.plant.mesh);
+        assert_eq!(mesh.growth_times.is_empty(), !growth);
         let unit = mesh.width_unit;
+        let schedule = super::super::growth_schedule(&result.plant.skeleton);
+        let how = Alone {
+            options: &options,
+            unit,
+            schedule: Some(&schedule),
+        };
         let all: Vec<Part> = parts
             .chains
             .iter()
@@ -353,11 +404,12 @@ mod tests {
         // Rewriting every part from its element meshed alone gives the same mesh.
         let mut copy = mesh.clone();
         copy.positions.iter_mut().for_each(|x| *x = 0.0);
+        copy.growth_origins.iter_mut().for_each(|x| *x = 0.0);
+        copy.growth_times.iter_mut().for_each(|x| *x = 0.0);
         for c in &parts.chains {
             let (alone, ranges) = chain_mesh(
                 &result.plant.skeleton,
-                &options,
-                unit,
+                how,
                 &c.segments,
                 c.start_cap,
                 c.end_dome,
@@ -369,7 +421,7 @@ mod tests {
             assert!(write_part(
                 &mut copy,
                 p,
-                &polygon_mesh(&result.plant.skeleton, &options, unit, i),
+                &polygon_mesh(&result.plant.skeleton, how, i),
                 true
             ));
         }
@@ -377,7 +429,7 @@ mod tests {
             assert!(write_part(
                 &mut copy,
                 p,
-                &surface_mesh(&result.plant.skeleton, &options, unit, i),
+                &surface_mesh(&result.plant.skeleton, how, i),
                 true
             ));
         }
@@ -385,7 +437,7 @@ mod tests {
             assert!(write_part(
                 &mut copy,
                 p,
-                &sphere_mesh(&result.plant.skeleton, &options, unit, i),
+                &sphere_mesh(&result.plant.skeleton, how, i),
                 true
             ));
         }
@@ -393,8 +445,7 @@ mod tests {
         // A part of another size is refused.
         let (alone, _) = chain_mesh(
             &result.plant.skeleton,
-            &options,
-            unit,
+            how,
             &parts.chains[0].segments,
             true,
             false,
@@ -404,6 +455,20 @@ mod tests {
             ..parts.chains[0].part
         };
         assert!(!write_part(&mut copy, &small, &alone, false));
+        if growth {
+            // A part meshed without its growth is refused by a mesh that grows.
+            let (alone, _) = chain_mesh(
+                &result.plant.skeleton,
+                Alone {
+                    schedule: None,
+                    ..how
+                },
+                &parts.chains[0].segments,
+                parts.chains[0].start_cap,
+                parts.chains[0].end_dome,
+            );
+            assert!(!write_part(&mut copy, &parts.chains[0].part, &alone, false));
+        }
     }
 
     #[test]

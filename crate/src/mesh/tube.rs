@@ -231,12 +231,12 @@ impl Builder<'_> {
             let segment = chain[sample.segment] as usize;
             if growth && k > 0 && samples[k - 1].segment != sample.segment {
                 scratch.ends.push(ring.write(&mut self.mesh, sides));
-                self.grow(chain[samples[k - 1].segment] as usize);
+                self.grow(segments.skeleton, chain[samples[k - 1].segment] as usize);
             } else if growth {
                 scratch.ends.push(first);
             }
             let first = ring.write(&mut self.mesh, sides);
-            self.grow(segment);
+            self.grow(segments.skeleton, segment);
             rings.push(first);
         }
     }
@@ -272,7 +272,7 @@ impl Builder<'_> {
                 skeleton.color(first.color),
                 true,
             );
-            self.grow(chain[0] as usize);
+            self.grow(skeleton, chain[0] as usize);
         }
         for k in 0..rings.len() - 1 {
             let segment = segments.nth(samples[k].segment);
@@ -296,7 +296,7 @@ impl Builder<'_> {
         } else {
             self.cap(point, tangent, rings[last], c, false);
         }
-        self.grow(chain[chain.len() - 1] as usize);
+        self.grow(skeleton, chain[chain.len() - 1] as usize);
     }
 
     /// A rounded end closing a tube: a quarter circle of rings from the last ring to a point on

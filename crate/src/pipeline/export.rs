@@ -76,14 +76,11 @@ pub fn export(
     let (plant, edits) = match &options.edits {
         Some(edits) => {
             hooks.start(Stage::ApplyEdits);
+            // (With the animation, the editor's mesh carries the growth arrays: an edited plant
+            // grows when the unedited one does, from where the edits put each element.)
             let mut editor = PlantEditor::new(build.plant);
             let report = editor.apply_edits(edits);
-            let mut plant = editor.into_plant();
-            if animation.is_some() {
-                // The growth arrays of the edited plant: the whole mesh again.
-                plant.remesh(&build_options.mesh);
-            }
-            (plant, Some(report))
+            (editor.into_plant(), Some(report))
         }
         None => (build.plant, None),
     };

@@ -92,7 +92,8 @@ impl PlantEditor {
     /// Drags handle `handle` (1, 2 or 3) of branch `branch` to (x, y, z): the branch's edit
     /// changes and only what moved is re-meshed. Returns true when the whole mesh was rebuilt
     /// (read every array again; `changeReason()` says why); otherwise read only the changed
-    /// vertices (`changedRanges`, `changedPositions`, `changedNormals`, `changedUvs`). Throws on a
+    /// vertices (`changedRanges`, `changedPositions`, `changedNormals`, `changedUvs`,
+    /// `changedGrowthOrigins`). Throws on a
     /// bad branch, handle or position; throws an error named `DragRefused` (and changes nothing)
     /// for a target whose edit an edits document could not hold, so `edits()` always writes a
     /// document `applyEdits` accepts.
@@ -150,6 +151,14 @@ impl PlantEditor {
     #[wasm_bindgen(js_name = changedUvs)]
     pub fn changed_uvs(&self) -> js_sys::Float32Array {
         self.gather(&self.editor.plant().mesh.uvs, 2)
+    }
+
+    /// The growth origins of the changed vertices, range after range (3 floats per vertex);
+    /// empty when the mesh carries no growth arrays. (Their growth times do not change: an edit
+    /// moves where a branch grows, not when.)
+    #[wasm_bindgen(js_name = changedGrowthOrigins)]
+    pub fn changed_growth_origins(&self) -> js_sys::Float32Array {
+        self.gather(&self.editor.plant().mesh.growth_origins, 3)
     }
 
     /// Meshes the edited plant again with other view options.

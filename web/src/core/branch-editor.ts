@@ -135,6 +135,7 @@ class LiveEditor implements PlantEditor {
         positions: mesh.positions,
         normals: mesh.normals,
         uvs: mesh.uvs,
+        growthOrigins: mesh.growthOrigins ?? new Float32Array(0),
         mesh,
         stats,
       };
@@ -146,6 +147,7 @@ class LiveEditor implements PlantEditor {
       positions: ownedArray(core.changedPositions()),
       normals: ownedArray(core.changedNormals()),
       uvs: ownedArray(core.changedUvs()),
+      growthOrigins: ownedArray(core.changedGrowthOrigins()),
       mesh: null,
       stats,
     }));

@@ -72,6 +72,12 @@ export interface MeshUpdate {
   normals: Float32Array;
   /** Texture coordinates of the changed vertices (2 floats each). */
   uvs: Float32Array;
+  /**
+   * Growth origins of the changed vertices (3 floats each; empty when the mesh has no growth
+   * arrays): a moved branch grows from where it is now. Growth times do not change (an edit moves
+   * where a branch grows, not when).
+   */
+  growthOrigins: Float32Array;
   /** The whole new mesh, when `full`. */
   mesh: MeshBuffers | null;
   /** The plant's stats after the change (its bounds move with its branches). */
@@ -132,6 +138,7 @@ export function applyMeshUpdate(mesh: MeshBuffers, update: MeshUpdate): MeshBuff
     const m = 2 * update.ranges[k + 1];
     if (update.uvs.length >= uv + m && mesh.uvs.length >= 2 * update.ranges[k] + m) mesh.uvs.set(update.uvs.subarray(uv, uv + m), 2 * update.ranges[k]);
     uv += m;
+    if (update.growthOrigins.length >= at && mesh.growthOrigins && mesh.growthOrigins.length >= from + n) mesh.growthOrigins.set(update.growthOrigins.subarray(at - n, at), from);
   }
   return mesh;
 }

@@ -98,9 +98,10 @@ export class ShownPlant {
       ['position', mesh.positions, 3],
       ['normal', mesh.normals, 3],
       ['uv', mesh.uvs, 2],
+      ['growthOrigin', mesh.growthOrigins, 3],
     ] as const) {
       // (Packed normals are not the mesh's: a mesh with them is not edited.)
-      if (source.getAttribute(name)?.array !== array) continue;
+      if (!array || source.getAttribute(name)?.array !== array) continue;
       for (let k = 0; k + 1 < ranges.length; k += 2) onGpu.patch(name, size * ranges[k], size * ranges[k + 1]);
     }
     setBox(source, pointsBox(mesh.positions));

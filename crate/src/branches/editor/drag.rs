@@ -24,9 +24,11 @@ pub(super) struct DragSession {
     moved: Vec<u32>,
     /// Polygons, leaves and spheres of the branch and below: meshed anew every frame.
     items: Vec<Item>,
-    /// The moved chains' positions and normals when the drag began, chain after chain.
+    /// The moved chains' positions, normals and growth origins (when the mesh grows in time)
+    /// when the drag began, chain after chain.
     base_positions: Vec<f32>,
     base_normals: Vec<f32>,
+    base_origins: Vec<f32>,
     /// The motion of the branch's end joint when the drag began.
     base_end: Rigid,
     ranges: Vec<[u32; 2]>,
@@ -63,6 +65,7 @@ impl BranchEditor {
             .collect();
         let mut base_positions = Vec::new();
         let mut base_normals = Vec::new();
+        let mut base_origins = Vec::new();
         for &c in &moved {
             let p = &self.parts.chains[c as usize].part;
             let (from, to) = (
@@ -71,6 +74,9 @@ impl BranchEditor {
             );
             base_positions.extend_from_slice(&mesh.positions[from..to]);
             base_normals.extend_from_slice(&mesh.normals[from..to]);
+            if let Some(origins) = mesh.growth_origins.get(from..to) {
+                base_origins.extend_from_slice(origins);
+            }
         }
         let parts = rebuilt
             .iter()
@@ -89,6 +95,7 @@ impl BranchEditor {
             items,
             base_positions,
             base_normals,
+            base_origins,
             base_end: self.end_motion(branch),
             fixed_joints: self.fixed_joints(&moving_segments, skeleton),
             fixed_bounds: bounds_outside(&mesh.positions, &ranges),
@@ -271,8 +278,7 @@ impl BranchEditor {
             let chain = &self.parts.chains[c as usize];
             let (alone, ranges) = parts::chain_mesh(
                 skeleton,
-                &self.options,
-                self.unit,
+                self.alone(),
                 &chain.segments,
                 chain.start_cap,
                 chain.end_dome,
@@ -285,27 +291,36 @@ impl BranchEditor {
     }
 
     /// Moves the chains below the dragged branch by `delta` from where they were when the drag
-    /// began.
+    /// began (their vertices, normals and growth origins).
     fn move_chains(&self, session: &DragSession, delta: &Rigid, mesh: &mut MeshBuffers) {
+        let point = |b: &[f32]| {
+            let p = delta.point(DVec3::new(b[0] as f64, b[1] as f64, b[2] as f64));
+            [p.x as f32, p.y as f32, p.z as f32]
+        };
+        let vector = |b: &[f32]| {
+            let q = delta.vector(DVec3::new(b[0] as f64, b[1] as f64, b[2] as f64));
+            [q.x as f32, q.y as f32, q.z as f32]
+        };
         let mut at = 0;
         for &c in &session.moved {
             let p = &self.parts.chains[c as usize].part;
             let n = 3 * p.vertices as usize;
             let v = 3 * p.first_vertex as usize;
-            let (base_p, base_n) = (
+            moved(
+                &mut mesh.positions[v..v + n],
                 &session.base_positions[at..at + n],
-                &session.base_normals[at..at + n],
+                point,
             );
-            for (k, (bp, bn)) in base_p
-                .chunks_exact(3)
-                .zip(base_n.chunks_exact(3))
-                .enumerate()
-            {
-                let p = delta.point(DVec3::new(bp[0] as f64, bp[1] as f64, bp[2] as f64));
-                let q = delta.vector(DVec3::new(bn[0] as f64, bn[1] as f64, bn[2] as f64));
-                let i = v + 3 * k;
-                mesh.positions[i..i + 3].copy_from_slice(&[p.x as f32, p.y as f32, p.z as f32]);
-                mesh.normals[i..i + 3].copy_from_slice(&[q.x as f32, q.y as f32, q.z as f32]);
+            moved(
+                &mut mesh.normals[v..v + n],
+                &session.base_normals[at..at + n],
+                vector,
+            );
+            if let (Some(to), Some(from)) = (
+                mesh.growth_origins.get_mut(v..v + n),
+                session.base_origins.get(at..at + n),
+            ) {
+                moved(to, from, point);
             }
             at += n;
         }
@@ -322,15 +337,9 @@ impl BranchEditor {
         for &item in items {
             let part = self.item_part(item);
             let alone = match item {
-                Item::Polygon(i) => {
-                    parts::polygon_mesh(skeleton, &self.options, self.unit, i as usize)
-                }
-                Item::Surface(i) => {
-                    parts::surface_mesh(skeleton, &self.options, self.unit, i as usize)
-                }
-                Item::Sphere(i) => {
-                    parts::sphere_mesh(skeleton, &self.options, self.unit, i as usize)
-                }
+                Item::Polygon(i) => parts::polygon_mesh(skeleton, self.alone(), i as usize),
+                Item::Surface(i) => parts::surface_mesh(skeleton, self.alone(), i as usize),
+                Item::Sphere(i) => parts::sphere_mesh(skeleton, self.alone(), i as usize),
             };
             if !parts::write_part(mesh, &part, &alone, true) {
                 return Err(
@@ -339,6 +348,13 @@ impl BranchEditor {
             }
         }
         Ok(())
+    }
+}
+
+/// Writes `motion` of each triple of `base` into `to` (as long).
+fn moved(to: &mut [f32], base: &[f32], motion: impl Fn(&[f32]) -> [f32; 3]) {
+    for (t, b) in to.chunks_exact_mut(3).zip(base.chunks_exact(3)) {
+        t.copy_from_slice(&motion(b));
     }
 }
 

@@ -276,6 +276,8 @@ export class BranchEditSession {
       if (error instanceof DragRefused) return;
       throw error;
     }
+    // (Said on the Reshape button, for the tests: a drag re-meshes only what moved, or the whole plant.)
+    this.els.toggle.dataset.lastDrag = update.full ? 'whole' : 'partial';
     if (update.full && update.mesh) {
       this.mesh = update.mesh;
       this.view.showPlant(this.mesh, this.host.shown()?.flat ?? false);

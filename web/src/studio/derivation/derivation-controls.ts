@@ -187,6 +187,7 @@ export class DerivationControls {
     const override = this.iterations();
     const grammar = this.grammarIterations;
     iterations.placeholder = `grammar: ${grammar}`;
+    iterationsBox.style.setProperty('--digits', String(String(grammar).length)); // (the box's width, iterations-box.css)
     iterationsBox.toggleAttribute('data-override', override !== undefined);
     iterationsTag.textContent = `overrides ${grammar}`;
     iterationsReset.hidden = override === undefined;

@@ -10,6 +10,7 @@ import { createExportWorker, describeProgress, runExport } from './export-client
 // Loaded on demand: it imports other areas' files, not their indexes, which would bring their
 // wiring into its chunk's graph (and split the first load into more files).
 import { closeLikeAMenu } from '../page/menus';
+import type { DerivedStudio } from './movie/derived-growth';
 
 /** The menu and the export's status (see index.html). */
 export interface DownloadMenuElements {
@@ -49,8 +50,11 @@ export function showExportStatus(element: HTMLElement, state: ExportState, text:
   element.dataset.state = state;
 }
 
-/** Fills the Download menu; `shown` is the plant on screen (none before the first good build). */
-export function installDownloads(els: DownloadMenuElements, view: PlantView, shown: () => DownloadedPlant | undefined): void {
+/**
+ * Fills the Download menu; `shown` is the plant on screen (none before the first good build);
+ * `studio`, its timeline and builds, for movies of a plant derived at t.
+ */
+export function installDownloads(els: DownloadMenuElements, view: PlantView, shown: () => DownloadedPlant | undefined, studio: MovieStudio): void {
   const menuButtons = (): HTMLButtonElement[] => [...els.menu.querySelectorAll('button')];
   const busy = (on: boolean) => {
     menuButtons().forEach((b) => (b.disabled = on));
@@ -118,7 +122,7 @@ export function installDownloads(els: DownloadMenuElements, view: PlantView, sho
   animated.append('glTF 2.0, growth animated', Object.assign(document.createElement('span'), { className: 'file-type', textContent: '.glb' }));
   animated.addEventListener('click', () => void downloadModel('glb', 'glTF growth animation', { animate: true }));
   els.modelDownloads.append(animated);
-  installMovie(els, view, shown);
+  installMovie(els, { view, shown, studio });
   closeLikeAMenu(els.menu);
   installPictureSize(els);
   els.downloadPng.addEventListener('click', () => {
@@ -162,7 +166,7 @@ export function installDownloads(els: DownloadMenuElements, view: PlantView, sho
  * The movie's entry, after the model formats: it opens the movie dialog (./movie/, loaded on
  * first use with its encoders).
  */
-function installMovie(els: DownloadMenuElements, view: PlantView, shown: () => DownloadedPlant | undefined): void {
+function installMovie(els: DownloadMenuElements, { view, shown, studio }: { view: PlantView; shown: () => DownloadedPlant | undefined; studio: MovieStudio }): void {
   const button = document.createElement('button');
   button.type = 'button';
   button.className = 'menu-item';
@@ -174,7 +178,7 @@ function installMovie(els: DownloadMenuElements, view: PlantView, shown: () => D
   button.addEventListener('click', () => {
     if (!shown()) return;
     els.menu.open = false;
-    dialog ??= import('./movie/movie-dialog').then(({ MovieDialog }) => new MovieDialog({ view, name: () => shown()?.name }));
+    dialog ??= import('./movie/movie-dialog').then(({ MovieDialog }) => new MovieDialog({ view, name: () => shown()?.name, studio: movieStudio(view, studio) }));
     dialog
       .then((d) => d.open())
       .catch((error: unknown) => {
@@ -186,6 +190,28 @@ function installMovie(els: DownloadMenuElements, view: PlantView, shown: () => D
   const items = Object.assign(document.createElement('div'), { className: 'menu-items' });
   items.append(button);
   els.modelDownloads.after(heading, items);
+}
+
+/** The studio's timeline and builds, which a movie of a plant derived at t poses the plant through. */
+export interface MovieStudio {
+  timeline: DerivedStudio['timeline'];
+  preview: DerivedStudio['preview'];
+}
+
+/** What the movie dialog needs of the studio to film a plant derived at t. */
+function movieStudio(view: PlantView, { timeline, preview }: MovieStudio): DerivedStudio {
+  return {
+    timeline,
+    preview,
+    uploading: () => view.uploading,
+    nextPlantShown: () =>
+      new Promise((resolve) => {
+        const stop = view.onPlantShown(() => {
+          stop();
+          resolve();
+        });
+      }),
+  };
 }
 
 /** The picture settings read, or the reason they do not make a picture. */

@@ -5,11 +5,16 @@ import type { StudioParts } from '../parts';
 import { figureName } from '../files/save-file';
 
 /** Loads the Downloads menu and connects it to the plant on screen. */
-export function loadDownloads({ els, view, preview, opening }: StudioParts, branchEdits: BranchEdits): Promise<void> {
+export function loadDownloads({ els, view, preview, opening, timeline }: StudioParts, branchEdits: BranchEdits): Promise<void> {
   return import('./download-menu').then(({ installDownloads }) =>
-    installDownloads(els.downloads, view, () => {
-      const good = preview.lastGood;
-      return good && { source: good.source, options: { ...good.options, edits: branchEdits.document() }, name: figureName(opening.currentFile, good.source) };
-    }),
+    installDownloads(
+      els.downloads,
+      view,
+      () => {
+        const good = preview.lastGood;
+        return good && { source: good.source, options: { ...good.options, edits: branchEdits.document() }, name: figureName(opening.currentFile, good.source) };
+      },
+      { timeline, preview },
+    ),
   );
 }

@@ -80,6 +80,8 @@ export class LivePreview {
   private readonly listeners = new Set<(result: BuildResult) => void>();
   private readonly sketchListeners = new Set<(sketch: PlantSketch) => void>();
   private readonly progressWaiters: (() => void)[] = [];
+  /** Who waits for no build to be under way ({@link answered}). */
+  private readonly answerWaiters: (() => void)[] = [];
   /** When the oldest request not yet delivered was made (undefined: none waits). */
   private pendingSince: number | undefined;
   /** The newest request's progress, as its worker tells it. */
@@ -232,6 +234,20 @@ export class LivePreview {
     for (const listener of this.sketchListeners) listener(sketch);
   }
 
+  /**
+   * Settles once no build asked for is under way: at once when none is, else after a delivery
+   * (or a stop, or a crash) that leaves none (a build its listeners asked for is waited for too).
+   * Then {@link settled} and {@link lastResult} say what is on screen.
+   */
+  answered(): Promise<void> {
+    return this.busy ? new Promise((resolve) => this.answerWaiters.push(resolve)) : Promise.resolve();
+  }
+
+  /** Tells those waiting for no build under way, if none is. */
+  private tellAnswered(): void {
+    if (!this.busy) for (const resolve of this.answerWaiters.splice(0)) resolve();
+  }
+
   /** A build asked for is under way (not yet delivered, stopped or crashed). */
   get busy(): boolean {
     return this.pendingSince !== undefined;
@@ -265,6 +281,7 @@ export class LivePreview {
       if (shown) this.parts.workerReplaced?.();
       if (this.parts.problems) this.parts.problems.hidden = true;
       status.dataset.generation = String(++this.generation);
+      this.tellAnswered();
       return;
     }
     const { result } = outcome;
@@ -288,5 +305,6 @@ export class LivePreview {
     this.deliveredKey = key;
     status.dataset.generation = String(++this.generation);
     for (const listener of this.listeners) listener(result);
+    this.tellAnswered();
   }
 }

@@ -82,13 +82,15 @@ export class LazyTimeline {
   }
 
   /**
-   * What the timeline asks of the builds: once it was used, growth arrays (which the GPU grows);
-   * the time {@link deriveAt} asked for, a timed grammar's `time`; a stepwise grammar's steps at t
-   * as its `iterations`, without growth arrays (so that a build goes on from the one a step
-   * before it, as Play's steps do: derivations that count each step's elements are not continued).
+   * What the timeline asks of the builds: once it was used, growth arrays (which the GPU grows),
+   * but not for a plant derived at t (a timed or stepwise grammar never plays them, and a build
+   * that counts each step's elements derives from the axiom again); the time {@link deriveAt}
+   * asked for, a timed grammar's `time`; a stepwise grammar's steps at t as its `iterations` (so
+   * that a build goes on from the one a step before it, as Play's steps do).
    */
   buildOptions(): { growth?: true; time?: number; iterations?: number } {
-    return derivedBuildOptions(this.timedAt, this.studio?.stepwise() ?? false, this.growthWanted);
+    const studio = this.studio;
+    return derivedBuildOptions(this.timedAt, studio?.stepwise() ?? false, this.growthWanted && studio?.timedSpan() === null);
   }
 
   /** The bar, loaded (and shown) on first call. */
@@ -105,14 +107,32 @@ export class LazyTimeline {
     return this.loading;
   }
 
+  /** N when the plant on screen is derived at t (a timed or stepwise grammar), else null. */
+  timedSpan(): number | null {
+    return this.studio?.timedSpan() ?? null;
+  }
+
+  /**
+   * A movie poses the plant (`on`) or is done: meanwhile the timeline pauses and asks for no time
+   * of its own (each plant shown or build delivered would have it ask for its t again).
+   */
+  pose(on: boolean): void {
+    this.loaded?.pose(on);
+  }
+
   /** Play / pause the growth. */
   toggle(): void {
     void this.load().then((bar) => bar.toggle());
   }
 
-  /** A build was delivered: the bar shows its steps (the plant may still be on its way to the GPU). */
+  /**
+   * A build was delivered: the bar shows its steps (the plant may still be on its way to the GPU).
+   * Whether builds carry growth arrays follows the plant on screen: if this build's grammar turned
+   * timed or stepwise (or stopped being), it is built again as the options now say.
+   */
   delivered(): void {
     this.loaded?.stepsChanged();
+    if (this.growthWanted) this.studio?.rebuild(); // (nothing when the options are the same)
   }
 
   /**

@@ -120,6 +120,8 @@ export class TimelineBar {
   private readonly controls: BarControls;
   /** The user (or a link) has put the timeline somewhere: new plants show that time, not whole. */
   private engaged = false;
+  /** A movie poses the plant: the bar shows no time of its own meanwhile ({@link pose}). */
+  private posed = false;
   /** The last t shown while playing, for the turntable. */
   private lastT: number | null = null;
   /** How the panels follow the builds while the growth plays. */
@@ -209,6 +211,7 @@ export class TimelineBar {
    * under way has arrived); any other grows on the GPU from its whole plant's mesh.
    */
   private show(t: number): void {
+    if (this.posed) return;
     const { view } = this.studio;
     this.growth.show(t);
     // Each derived plant would be framed anew, and a plant growing would seem to stand still: the
@@ -236,9 +239,19 @@ export class TimelineBar {
    * first to say its grammar is timed (its plant was shown before the studio knew).
    */
   stepsChanged(): void {
+    if (this.posed) return;
     if (this.engaged) this.timeline.refresh();
     this.growth.delivered();
     this.render(this.timeline.state);
+  }
+
+  /**
+   * A movie poses the plant (`on`: playing stops, and no time of the bar's is shown or asked for
+   * until it is done) or is done.
+   */
+  pose(on: boolean): void {
+    this.posed = on;
+    if (on) this.timeline.pause();
   }
 
   /** A delivered build for the panels: at once, or while playing at their pace ({@link PanelPace}). */

@@ -6,6 +6,7 @@ import type { PictureLook, PlantView } from '../../../view';
 import { saveFile } from '../../files/save-file';
 import { fileSize } from '../downloads';
 import { FORMATS, SIZE_PRESETS, movieFileName, movieSeconds, planMovie, type MovieFormat, type MovieOptions, type MoviePlan } from './movie-plan';
+import { derivedGrowth, type DerivedStudio } from './derived-growth';
 import { recordMovie, type RecordingMovie } from './record-movie';
 import { growthSpanOf, viewScene, type FilmedScene } from './view-scene';
 import './movie-dialog.css';
@@ -139,6 +140,8 @@ export interface MovieSource {
   view: PlantView;
   /** The name files of the plant on screen are saved under (none before the first plant). */
   name(): string | undefined;
+  /** The studio's timeline and builds: a timed or stepwise grammar is filmed derived at each frame's t, as the timeline shows it. */
+  studio: DerivedStudio;
 }
 
 /** The movie dialog, made on first use; `open` shows it for the plant on screen. */
@@ -203,7 +206,7 @@ export class MovieDialog {
     const c = this.c;
     if (!c.dialog.open) c.dialog.showModal();
     if (this.recording) return;
-    this.span = growthSpanOf(this.source.view);
+    this.span = this.source.studio.timeline.timedSpan() ?? growthSpanOf(this.source.view);
     const growing = this.span !== null;
     c.range.disabled = !growing;
     c.from.max = c.to.max = String(this.span ?? 0);
@@ -247,7 +250,9 @@ export class MovieDialog {
     const started = performance.now();
     let scene: FilmedScene | undefined;
     try {
-      scene = await viewScene(this.source.view, look);
+      const { studio, view } = this.source;
+      studio.timeline.pose(true); // the movie poses the plant, the timeline asks nothing meanwhile
+      scene = await viewScene(view, look, derivedGrowth(studio));
       this.recording = recordMovie(plan, scene, name, (done, frames) => {
         c.progress.value = done;
         this.say('busy', `Frame ${done} of ${frames}…`);
@@ -262,6 +267,7 @@ export class MovieDialog {
       console.error('The movie failed:', error);
       this.say('error', `The movie failed: ${error instanceof Error ? error.message : String(error)}`);
     } finally {
+      this.source.studio.timeline.pose(false);
       scene?.close();
       this.recording = undefined;
       this.busy(false, plan.frames);

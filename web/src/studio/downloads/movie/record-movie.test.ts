@@ -46,6 +46,34 @@ describe('recordMovie', () => {
     expect(log).toEqual(['close']);
   });
 
+  it('cancels at once while a frame waits for its scene (a plant derived at t still building), adding nothing after', async () => {
+    const { drawn, log, make } = fakes();
+    let posed = 0;
+    const slow: FrameScene = {
+      // The second frame's plant never arrives.
+      at: () => (++posed === 2 ? new Promise<void>(() => {}) : undefined),
+      draw: (width, height) => ({ width, height }) as HTMLCanvasElement,
+    };
+    const recording = recordMovie(plan, slow, 'tree', () => {}, make);
+    await new Promise((resolve) => setTimeout(resolve, 20));
+    expect(posed).toBe(2);
+    recording.cancel();
+    expect(await recording.done).toBeNull();
+    expect(drawn).toEqual(['0: 64 × 48']);
+    expect(log).toEqual(['close']);
+  });
+
+  it('passes a scene’s failure on (a build at some t failed), closing the writer', async () => {
+    const { log, make } = fakes();
+    const failing: FrameScene = {
+      at: (t) => (t >= 3 ? Promise.reject(new Error('the grammar has errors at t = 3')) : undefined),
+      draw: (width, height) => ({ width, height }) as HTMLCanvasElement,
+    };
+    const recording = recordMovie(plan, failing, 'tree', () => {}, make);
+    await expect(recording.done).rejects.toThrow('the grammar has errors at t = 3');
+    expect(log).toEqual(['close']);
+  });
+
   it('passes a writer’s failure on, closing it', async () => {
     const { scene, log } = fakes();
     const failing: MovieWriter = { add: async () => Promise.reject(new Error('the video encoder failed: out of memory')), finish: async () => new Blob(), close: () => void log.push('close') };

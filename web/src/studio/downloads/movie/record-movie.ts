@@ -44,18 +44,23 @@ export function recordMovie(
 ): RecordingMovie {
   let cancelled = false;
   let writer: MovieWriter | undefined;
+  let stop = () => {};
+  // Cancel settles the movie at once, even while a frame waits for its scene (a plant derived
+  // at t may take a while to build): the frame under way is dropped when it comes.
+  const stopped = new Promise<null>((resolve) => (stop = () => resolve(null)));
   const record = async (): Promise<Blob | null> => {
     writer = await makeWriter(plan, scene, name);
     for (let index = 0; index < plan.frames; index++) {
       if (cancelled) return null;
       await scene.at(frameTime(index, plan.frames, plan.from, plan.to), frameTurn(index, plan.frames, plan.turntable));
+      if (cancelled) return null;
       await writer.add(scene.draw(plan.width, plan.height), index);
       onFrame(index + 1, plan.frames);
       await yieldToPage();
     }
     return cancelled ? null : writer.finish();
   };
-  const done = record().then(
+  const recorded = record().then(
     (file) => (cancelled ? null : file),
     (error: unknown) => {
       writer?.close();
@@ -64,10 +69,11 @@ export function recordMovie(
     },
   );
   return {
-    done,
+    done: Promise.race([recorded, stopped]),
     cancel: () => {
       cancelled = true;
       writer?.close();
+      stop();
     },
   };
 }
