@@ -15,7 +15,9 @@
 //! gives the size in millimetres, so a 1748 × 2480 picture at 300 DPI prints as A5.
 
 use super::scene::{decimals_for, number, srgb};
-use crate::mesh::{bezier, polygon, surfaces, MeshBuffers};
+#[cfg(feature = "surfaces")]
+use crate::mesh::bezier;
+use crate::mesh::{polygon, surfaces, MeshBuffers};
 use crate::turtle::{Skeleton, SurfaceKind};
 use glam::{DVec2, DVec3};
 use std::fmt::Write;
@@ -218,12 +220,13 @@ fn shapes(skeleton: &Skeleton, unit: f64) -> Vec<Shape> {
             SurfaceKind::Petal => surfaces::SurfaceKind::Petal,
             SurfaceKind::Declared(k) => {
                 // Each patch filled within its outline (its grid's border).
-                let Some(shape) = skeleton.shapes.get(k as usize) else {
-                    continue;
-                };
-                for grid in bezier::tessellate(s, shape) {
-                    fill(grid_border(&grid), s.color, s.module);
+                #[cfg(feature = "surfaces")]
+                if let Some(shape) = skeleton.shapes.get(k as usize) {
+                    for grid in bezier::tessellate(s, shape) {
+                        fill(grid_border(&grid), s.color, s.module);
+                    }
                 }
+                let _ = k;
                 continue;
             }
         };
@@ -240,6 +243,7 @@ fn shapes(skeleton: &Skeleton, unit: f64) -> Vec<Shape> {
     keyed.into_iter().map(|(_, shape)| shape).collect()
 }
 
+#[cfg(feature = "surfaces")]
 /// The border of a patch's grid, once around: its first row, last column, last row backwards
 /// and first column backwards.
 fn grid_border(grid: &bezier::Grid) -> Vec<DVec3> {

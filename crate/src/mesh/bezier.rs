@@ -10,7 +10,6 @@
 use crate::model::{Patch, SurfaceShape};
 use crate::turtle::Surface;
 use glam::DVec3;
-use std::collections::HashMap;
 
 /// One patch tessellated: `rows × cols` points row by row (rows along s) and their unit normals
 /// (the front).
@@ -137,18 +136,20 @@ fn smooth_seams(grids: &mut [Grid]) {
         .flat_map(|g| &g.points)
         .fold(0.0f64, |m, p| m.max(p.abs().max_element()));
     let cell = (extent * 1e-6).max(f64::MIN_POSITIVE);
-    let mut shared: HashMap<[i64; 3], Vec<(usize, usize)>> = HashMap::new();
+    // Every point with its cell, sorted by cell (the core's one sort: no hash map in the first
+    // plant's core), then each run of one cell averaged.
+    let mut keyed: Vec<([i64; 3], usize, usize)> = Vec::new();
     for (g, grid) in grids.iter().enumerate() {
         for (k, p) in grid.points.iter().enumerate() {
-            let key = (*p / cell).round().as_i64vec3().to_array();
-            shared.entry(key).or_default().push((g, k));
+            keyed.push(((*p / cell).round().as_i64vec3().to_array(), g, k));
         }
     }
-    for group in shared.values().filter(|v| v.len() > 1) {
-        let first = grids[group[0].0].normals[group[0].1];
-        let same: Vec<(usize, usize)> = group
+    crate::sort::sort_by_key(&mut keyed, |e| e.0);
+    for run in keyed.chunk_by(|a, b| a.0 == b.0).filter(|r| r.len() > 1) {
+        let first = grids[run[0].1].normals[run[0].2];
+        let same: Vec<(usize, usize)> = run
             .iter()
-            .copied()
+            .map(|&(_, g, k)| (g, k))
             .filter(|&(g, k)| grids[g].normals[k].dot(first) > 0.0)
             .collect();
         let sum: DVec3 = same.iter().map(|&(g, k)| grids[g].normals[k]).sum();

@@ -1,10 +1,12 @@
 //! The builder: [`build_mesh`] writes each element of a skeleton into [`MeshBuffers`] (tubes by
 //! `tube.rs`, flats and spheres here), recording where each landed ([`MeshParts`]).
 
+#[cfg(feature = "surfaces")]
+use super::bezier;
 use super::chains::{chains, Chains};
 use super::grow::{append, push, push_range};
-use super::{bezier, parts, polygon, segment_lines, sphere, surfaces, tube};
 use super::{growth_schedule, GrowthSchedule};
+use super::{parts, polygon, segment_lines, sphere, surfaces, tube};
 use super::{resolve_width_unit, ChainPart, MeshBuffers, MeshOptions, MeshParts, Part};
 use super::{MATERIAL_BARK, MATERIAL_LEAF, MATERIAL_PLAIN};
 use crate::turtle::{Skeleton, Surface, SurfaceKind};
@@ -238,11 +240,14 @@ impl<'a> Builder<'a> {
             SurfaceKind::Leaf => surfaces::SurfaceKind::Leaf,
             SurfaceKind::Petal => surfaces::SurfaceKind::Petal,
             SurfaceKind::Declared(k) => {
+                // Without the feature `surfaces` the model declares none.
+                #[cfg(feature = "surfaces")]
                 if let Some(shape) = skeleton.shapes.get(k as usize) {
                     self.element = parts::NO_CHAIN;
                     let grids = bezier::tessellate(s, shape);
                     self.patches(&grids, s, skeleton);
                 }
+                let _ = k;
                 return;
             }
         };
@@ -351,6 +356,7 @@ impl<'a> Builder<'a> {
         }
     }
 
+    #[cfg(feature = "surfaces")]
     /// A declared surface's patches, two-sided as [`Builder::flat`]: the front faces each
     /// patch's ∂P/∂s × ∂P/∂t. Texture coordinates span the whole surface in its own frame, across
     /// along `left` and along the heading, as the built-in leaf's (cpfg's texels per surface).

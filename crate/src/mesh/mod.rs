@@ -14,6 +14,7 @@
 //! patches), `sphere.rs`, `lines.rs` (segments as lines), `pack.rs` (normals
 //! and colours packed for the GPU), `parts.rs` (one element re-meshed alone).
 
+#[cfg(feature = "surfaces")]
 pub mod bezier;
 mod buffers;
 mod build;

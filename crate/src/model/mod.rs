@@ -19,7 +19,9 @@ pub use settings::{
     directive_default, Bend, GrowthAttributes, Lifetime, Settings, Shape, ShapeWidth, Speed, Sun,
     DEFAULT_PALETTE,
 };
-pub use surface::{organ_patches, Patch, SurfaceShape, WrittenPoint, MAX_PATCHES, MAX_PRECISION};
+#[cfg(feature = "surfaces")]
+pub use surface::organ_patches;
+pub use surface::{Patch, SurfaceShape, WrittenPoint, MAX_PATCHES, MAX_PRECISION};
 
 use crate::syntax::{Section, Span};
 use crate::vocabulary::{Command, ModuleInfo};

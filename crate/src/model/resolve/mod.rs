@@ -7,6 +7,7 @@ mod definitions;
 mod directives;
 mod rules;
 mod scope;
+#[cfg(feature = "surfaces")]
 mod surfaces;
 mod timed;
 
@@ -27,7 +28,7 @@ pub fn resolve(file: &SourceFile) -> (Option<Model>, Vec<Diagnostic>) {
     r.dt = timed::written_dt(file).unwrap_or(r.dt);
     let randoms = r.definitions(file);
     let mut values = r.directives(file);
-    values.settings.surfaces = r.surfaces(file);
+    r.surface_settings(file, &mut values.settings);
     let random_variables = r.random_variables(&randoms);
 
     let Some((axiom_syntax, axiom_span)) = &file.axiom else {
@@ -188,6 +189,19 @@ impl Resolver {
 }
 
 impl Resolver {
+    /// Whether the file declares surfaces, and (with the feature `surfaces`) what they are.
+    fn surface_settings(&mut self, file: &SourceFile, settings: &mut super::Settings) {
+        use crate::vocabulary::DirectiveKind::{Patch, Surface};
+        settings.surfaces_declared = file
+            .directives
+            .iter()
+            .any(|d| matches!(d.kind, Some(Surface | Patch)));
+        #[cfg(feature = "surfaces")]
+        {
+            settings.surfaces = self.surfaces(file);
+        }
+    }
+
     /// [`meanings`], warning of each `~X` drawn but not declared.
     fn meanings_and_surfaces(
         &mut self,
@@ -196,7 +210,10 @@ impl Resolver {
         sets: [&RuleSet; 3],
     ) -> Vec<Option<&'static ModuleInfo>> {
         let meanings = meanings(&self.alphabet, &settings.draw, &settings.surfaces);
+        #[cfg(feature = "surfaces")]
         self.check_surfaces_drawn(&meanings, &settings.surfaces, axiom, sets);
+        #[cfg(not(feature = "surfaces"))]
+        let _ = (axiom, sets);
         meanings
     }
 }

@@ -246,8 +246,10 @@ impl Resolver {
     fn precision(&mut self, v: f64, at: &Span, letter: char) -> u32 {
         let kept = v.round().clamp(1.0, MAX_PRECISION as f64);
         if kept != v {
+            // The kept value as a whole number: the first plant's core formats no float (issue 22).
+            let kept = kept as u32;
             let message = format!(
-                "the precision of ~{letter} is a whole number from 1 to {MAX_PRECISION}: {v} is read as {kept}"
+                "the precision of ~{letter} is a whole number from 1 to {MAX_PRECISION}: one is read as {kept}"
             );
             self.diagnostics
                 .push(Diagnostic::warning("E0223", at.clone(), message));

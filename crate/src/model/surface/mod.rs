@@ -7,8 +7,10 @@
 //! x along the turtle's L, y along H, z along U. `~X(s)` multiplies them by s
 //! (`~X(sx, sy, sz)`: by sx along L, sy along H, sz along U) and adds the turtle's position.
 
+#[cfg(feature = "surfaces")]
 mod library;
 
+#[cfg(feature = "surfaces")]
 pub use library::organ_patches;
 
 use crate::syntax::Span;
@@ -23,9 +25,11 @@ pub type Patch = [DVec3; 16];
 pub const MAX_PATCHES: usize = 64;
 /// The most quads along s or t of a patch (cpfg's is 10).
 pub const MAX_PRECISION: u32 = 32;
+#[cfg(feature = "surfaces")]
 /// Quads along s and t when nothing says (cpfg's `S_COUNT / 2` when a `.s` file has no
 /// `PRECISION` line).
 pub const DEFAULT_PRECISION: u32 = 5;
+#[cfg(feature = "surfaces")]
 /// Quads along s and t of the library's shapes.
 pub const LIBRARY_PRECISION: u32 = 8;
 
@@ -70,6 +74,7 @@ impl SurfaceShape {
     }
 }
 
+#[cfg(feature = "surfaces")]
 /// The frame of a declaration: what a `.s` file's header and a view file's surface line give.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Frame {
@@ -80,6 +85,7 @@ pub struct Frame {
     pub scale: f64,
 }
 
+#[cfg(feature = "surfaces")]
 impl Default for Frame {
     fn default() -> Self {
         Frame {
@@ -92,6 +98,7 @@ impl Default for Frame {
     }
 }
 
+#[cfg(feature = "surfaces")]
 impl Frame {
     /// The frame's left, heading and up, orthonormal as cpfg makes them; `None` when the heading
     /// and up are parallel or zero.
@@ -108,6 +115,7 @@ impl Frame {
     }
 }
 
+#[cfg(feature = "surfaces")]
 #[cfg(test)]
 mod tests {
     use super::*;
