@@ -3,10 +3,11 @@
 // picked as a folder's files, imports with `#surface`/`#patch` lines and shows its petals.
 // Screenshots land in test-results/ for a person to look at.
 import { readdirSync } from 'node:fs';
-import { describe, expect, it } from 'vitest';
+import { deflateRawSync } from 'node:zlib';
+import { describe, expect, inject, it } from 'vitest';
 import { foregroundShare, type Picture } from './pictures';
 import { canvasPicture, editorText, pasteText, savePage, twoFrames } from './studio-page';
-import { page, problems, useStudio } from './session';
+import { browser, page, problems, useStudio } from './session';
 
 useStudio();
 
@@ -42,6 +43,21 @@ describe('surfaces', () => {
     expect(count(picture, yellow), 'disk pixels').toBeGreaterThan(200);
     expect(problems).toEqual([]);
   });
+
+  it('opens a link to it as the first plant: the first plant\'s core leaves it to the studio core, which draws it', async () => {
+    // A share link's fragment, compressed as the studio compresses (tests/browser/share.test.ts).
+    const fragment = `#s=1.${Buffer.from(deflateRawSync(Buffer.from(JSON.stringify({ v: 1, text: LIBRARY })))).toString('base64url')}`;
+    const fresh = await browser.newPage({ viewport: { width: 1280, height: 800 } });
+    const seen: string[] = [];
+    fresh.on('pageerror', (e) => seen.push(e.message));
+    await fresh.goto(inject('studioUrl') + fragment);
+    // The surfaces' vertices (the organs at precision 8, both sides) once the studio core built it.
+    await fresh.waitForFunction(() => (window.__meristem?.lastStats?.vertices ?? 0) > 1500, undefined, { timeout: 60_000 });
+    const picture = await canvasPicture(fresh, 'surfaces-link-canvas.png');
+    expect(count(picture, pink), 'petal pixels').toBeGreaterThan(200);
+    expect(seen).toEqual([]);
+    await fresh.close();
+  }, 90_000);
 
   it("imports Lychnis with its .s surfaces and shows its pink petals", async () => {
     const dir = new URL('../../crate/tests/import-corpus/vlab/01-Lychnis/', import.meta.url);
