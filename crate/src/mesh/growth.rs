@@ -126,7 +126,10 @@ fn reaches(skeleton: &Skeleton) -> Vec<Reach> {
         flat(p.anchor, size);
     }
     for s in &skeleton.surfaces {
-        flat(s.anchor, s.scale.abs());
+        flat(
+            s.anchor,
+            s.scale.abs().max_element() * skeleton.surface_reach(s),
+        );
     }
     for s in &skeleton.spheres {
         flat(s.anchor, s.radius.abs());

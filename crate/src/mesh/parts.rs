@@ -364,7 +364,8 @@ mod tests {
     }
 
     fn parts_mesh_alone_to_their_part(growth: bool) {
-        let source = "#angle 30\naxiom: X\nX -> F[+X~l][-X{.f.f.}]F@O(0.1)X\nF -> FF";
+        let source =
+            "#angle 30\n#surface a disk\naxiom: X\nX -> F[+X~l][-X{.f.f.}~a(0.5)]F@O(0.1)X\nF -> FF";
         let mut build_options = BuildOptions::with_iterations(3);
         build_options.mesh.growth = growth;
         let result = build(source, &build_options);

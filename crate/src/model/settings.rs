@@ -53,6 +53,11 @@ pub struct Settings {
     pub dt: f64,
     /// The grammar has a `#dt` directive.
     pub dt_given: bool,
+    /// The surfaces `#surface` and `#patch` declare, by letter (what `~X` draws); empty without
+    /// the feature `surfaces`.
+    pub surfaces: Vec<std::sync::Arc<super::SurfaceShape>>,
+    /// The grammar has a `#surface` or `#patch` line (read or not: see the feature `surfaces`).
+    pub surfaces_declared: bool,
 }
 
 /// The colour index's default colours: a ramp from bark brown (0) through olive and greens to
@@ -157,6 +162,8 @@ impl Default for Settings {
             terminal_age_span: None,
             dt: default_of(DirectiveKind::Dt),
             dt_given: false,
+            surfaces: Vec::new(),
+            surfaces_declared: false,
         }
     }
 }

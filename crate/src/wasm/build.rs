@@ -222,6 +222,17 @@ impl PlantBuild {
             .is_some_and(|m| m.settings.timed())
     }
 
+    /// True when the grammar declares surfaces (`#surface`, `#patch`), which only the studio
+    /// core (crate/pkg, the feature `surfaces`) draws: the build worker builds such a grammar with
+    /// it, as it does a timed one.
+    #[wasm_bindgen(getter, js_name = declaresSurfaces)]
+    pub fn declares_surfaces(&self) -> bool {
+        self.build
+            .model
+            .as_ref()
+            .is_some_and(|m| m.settings.surfaces_declared)
+    }
+
     /// True when the grammar is stepwise ([`crate::model::Settings::stepwise`]: a `#dt` without
     /// timed modules): its plant at a growth time t is derived to step ⌊t⌋, not grown from the
     /// whole plant's mesh. In the studio core only (the timeline builds with it).

@@ -272,6 +272,7 @@ export function plainBuild(source: string, result: WasmPlantBuild, { forGpu = fa
     grammarIterations: result.grammarIterations,
     seed: result.seed,
     timed: result.timed,
+    declaresSurfaces: result.declaresSurfaces,
     // (A getter of the studio core's builds only.)
     stepwise: 'stepwise' in result && result.stepwise === true,
     ...(result.continuedFrom === undefined ? {} : { continuedFrom: result.continuedFrom }),

@@ -161,6 +161,11 @@ export interface PlantBuild {
    */
   timed: boolean;
   /**
+   * The grammar declares surfaces (`#surface`, `#patch`), which only the studio core draws: the
+   * build worker builds it with that core (the first plant's resolves it without them).
+   */
+  declaresSurfaces: boolean;
+  /**
    * The grammar is stepwise: a `#dt` without timed modules (L-Py's and cpfg's continuous growth,
    * whose modules change with their age at every step). Its plant at growth time t is its
    * derivation's at step ⌊t⌋, not grown on the GPU from the whole plant's (which would show every

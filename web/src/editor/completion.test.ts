@@ -31,7 +31,7 @@ describe('grammar completion', () => {
   it('offers multi-character turtle commands after @, ~ and ?', () => {
     expect(labels(complete('axiom: F@|'))).toEqual(expect.arrayContaining(['@O', '@M', '@Gc', '@Ge', '@Tp', '@Ts']));
     expect(labels(complete('axiom: F@|'))).not.toContain('F');
-    expect(labels(complete('A -> F~|'))).toEqual(['~l', '~p']);
+    expect(labels(complete('A -> F~|'))).toEqual(['~l', '~p', '~X']);
     const queries = complete('A -> ?|');
     expect(labels(queries)).toEqual(['?P', '?H', '?U', '?L']);
     expect(queries?.options[0].detail).toBe('(x, y, z)');
