@@ -2761,11 +2761,11 @@ light_source { <7.174129, 2.479781, 9.321193> color rgb <0.35, 0.35, 0.35> shado
   texture_list {
     6,
     texture { uv_mapping pigment { image_pattern { png "bark.png" interpolate 2 } color_map { [0 rgb 0] [1 rgb <0.27, 0.54, 0.15>] } } finish { ambient 0.15 diffuse 0.85 } } // colour index 4
-    texture { uv_mapping pigment { image_pattern { png "leaf.png" interpolate 2 use_alpha } pigment_map { [0 rgbt 1] [0.5 rgbt 1] [0.5 image_pattern { png "leaf.png" interpolate 2 } color_map { [0 rgb 0] [1 rgb <0.27, 0.54, 0.15>] }] } } finish { ambient 0.15 diffuse 0.85 } } // colour index 4
-    texture { uv_mapping pigment { image_pattern { png "leaf.png" interpolate 2 use_alpha } pigment_map { [0 rgbt 1] [0.5 rgbt 1] [0.5 image_pattern { png "leaf.png" interpolate 2 } color_map { [0 rgb 0] [1 rgb <0.2, 0.58, 0.16>] }] } } finish { ambient 0.15 diffuse 0.85 } } // colour index 5
-    texture { uv_mapping pigment { image_pattern { png "leaf.png" interpolate 2 use_alpha } pigment_map { [0 rgbt 1] [0.5 rgbt 1] [0.5 image_pattern { png "leaf.png" interpolate 2 } color_map { [0 rgb 0] [1 rgb <0.28, 0.66, 0.2>] }] } } finish { ambient 0.15 diffuse 0.85 } } // colour index 6
-    texture { uv_mapping pigment { image_pattern { png "leaf.png" interpolate 2 use_alpha } pigment_map { [0 rgbt 1] [0.5 rgbt 1] [0.5 image_pattern { png "leaf.png" interpolate 2 } color_map { [0 rgb 0] [1 rgb <0.92, 0.8, 0.28>] }] } } finish { ambient 0.15 diffuse 0.85 } } // colour index 8
-    texture { uv_mapping pigment { image_pattern { png "leaf.png" interpolate 2 use_alpha } pigment_map { [0 rgbt 1] [0.5 rgbt 1] [0.5 image_pattern { png "leaf.png" interpolate 2 } color_map { [0 rgb 0] [1 rgb <0.9, 0.5, 0.65>] }] } } finish { ambient 0.15 diffuse 0.85 } } // colour index 11
+    texture { uv_mapping pigment { image_pattern { png "leaf.png" interpolate 2 use_alpha } pigment_map { [0.5 image_pattern { png "leaf.png" interpolate 2 } color_map { [0 rgb 0] [1 rgb <0.27, 0.54, 0.15>] }] [0.5 rgbt 1] } } finish { ambient 0.15 diffuse 0.85 } } // colour index 4
+    texture { uv_mapping pigment { image_pattern { png "leaf.png" interpolate 2 use_alpha } pigment_map { [0.5 image_pattern { png "leaf.png" interpolate 2 } color_map { [0 rgb 0] [1 rgb <0.2, 0.58, 0.16>] }] [0.5 rgbt 1] } } finish { ambient 0.15 diffuse 0.85 } } // colour index 5
+    texture { uv_mapping pigment { image_pattern { png "leaf.png" interpolate 2 use_alpha } pigment_map { [0.5 image_pattern { png "leaf.png" interpolate 2 } color_map { [0 rgb 0] [1 rgb <0.28, 0.66, 0.2>] }] [0.5 rgbt 1] } } finish { ambient 0.15 diffuse 0.85 } } // colour index 6
+    texture { uv_mapping pigment { image_pattern { png "leaf.png" interpolate 2 use_alpha } pigment_map { [0.5 image_pattern { png "leaf.png" interpolate 2 } color_map { [0 rgb 0] [1 rgb <0.92, 0.8, 0.28>] }] [0.5 rgbt 1] } } finish { ambient 0.15 diffuse 0.85 } } // colour index 8
+    texture { uv_mapping pigment { image_pattern { png "leaf.png" interpolate 2 use_alpha } pigment_map { [0.5 image_pattern { png "leaf.png" interpolate 2 } color_map { [0 rgb 0] [1 rgb <0.9, 0.5, 0.65>] }] [0.5 rgbt 1] } } finish { ambient 0.15 diffuse 0.85 } } // colour index 11
   }
   face_indices {
     988,
