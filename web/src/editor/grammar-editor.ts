@@ -1,7 +1,7 @@
 // The grammar editor: CodeMirror 6 with the grammar language and the core's diagnostics.
 import { basicSetup } from 'codemirror';
 import { Decoration, EditorView, type DecorationSet } from '@codemirror/view';
-import { type EditorState, StateEffect, StateField, Transaction } from '@codemirror/state';
+import { type EditorState, StateEffect, StateField, Transaction, type TransactionSpec } from '@codemirror/state';
 import { forceLinting, openLintPanel } from '@codemirror/lint';
 import { isolateHistory } from '@codemirror/commands';
 import { grammarCompletion } from './completion';
@@ -10,8 +10,21 @@ import { commandHover } from './hover';
 import { grammarLinting, relint } from './diagnostics';
 import { studioEditorTheme } from './theme';
 import type { GrammarEditor, GrammarEditorOptions } from './grammar-text';
+import type { TextChange } from './growth-directives';
 
 export type { GrammarEditor, GrammarEditorOptions };
+
+/**
+ * The transaction of {@link GrammarEditor.replaceRanges}: with history, an undo step of its own
+ * (isolated before and after); without, a change the history skips.
+ */
+export function rangesTransaction(changes: readonly TextChange[], { history = true }: { history?: boolean } = {}): TransactionSpec {
+  return {
+    changes: changes.map(({ from, to, insert }) => ({ from, to, insert })),
+    userEvent: 'input',
+    annotations: history ? [isolateHistory.of('full')] : [Transaction.addToHistory.of(false)],
+  };
+}
 
 /** Sets (or clears, with null) the marked production range. */
 const markProductionEffect = StateEffect.define<{ from: number; to: number } | null>();
@@ -106,6 +119,7 @@ export function createGrammarEditor(options: GrammarEditorOptions, selection?: {
         userEvent: 'input',
         annotations: history ? [] : [Transaction.addToHistory.of(false)],
       }),
+    replaceRanges: (changes, options) => view.dispatch(rangesTransaction(changes, options)),
     markProduction: (range) => {
       const length = view.state.doc.length;
       const clamped = range && { from: Math.min(range.from, length), to: Math.min(range.to, length) };

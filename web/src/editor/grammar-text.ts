@@ -6,6 +6,7 @@
 // Invariant: nothing here imports CodeMirror; `./grammar-editor` arrives by a dynamic import.
 import type { Vocabulary } from '../core';
 import type { Diagnose } from './diagnostics';
+import type { TextChange } from './growth-directives';
 
 /** What the grammar editor needs. */
 export interface GrammarEditorOptions {
@@ -47,6 +48,12 @@ export interface GrammarEditor {
    * false` a change undo skips (the steps of a slider drag, made one undo step at its end).
    */
   replaceRange(from: number, to: number, insert: string, options?: { history?: boolean }): void;
+  /**
+   * Replaces several ranges at once (offsets in the text before the change; none overlapping) in
+   * one transaction: with history, one undo step of its own, never joined to the typing or the
+   * edit before it; with `history: false`, a change undo skips (the steps of a drag).
+   */
+  replaceRanges(changes: readonly TextChange[], options?: { history?: boolean }): void;
   /** Marks a range (a production picked elsewhere) and scrolls it into view; null clears the mark. */
   markProduction(range: { from: number; to: number } | null): void;
   /**
@@ -141,6 +148,12 @@ export function createLazyGrammarEditor(options: LazyGrammarEditorOptions, load:
     replaceRange: (from, to, insert, history) => {
       if (full) return full.replaceRange(from, to, insert, history);
       area.setRangeText(insert, from, to, 'preserve');
+      changed();
+    },
+    replaceRanges: (changes, history) => {
+      if (full) return full.replaceRanges(changes, history);
+      // From the last to the first: each leaves the offsets before it as they were.
+      for (const c of [...changes].sort((a, b) => b.from - a.from)) area.setRangeText(c.insert, c.from, c.to, 'preserve');
       changed();
     },
     markProduction: (range) => full?.markProduction(range),
