@@ -23,6 +23,7 @@ export {
   directiveOfKind,
   languageVocabulary,
   loadVocabulary,
+  onVocabulary,
   useVocabulary,
   vocabularyIfLoaded,
   paramsText,

@@ -20,6 +20,7 @@ interface RawSurface {
   written: { patch: number; index: number; value: Point3; from: number; to: number }[];
   toTurtle: number[];
   end: Point3 | null;
+  writeOut: { from: number; to: number; insert: string }[];
   precision: [number, number];
   positions: number[];
   normals: number[];
@@ -42,6 +43,7 @@ export function surfacePreview(source: string, letter: string): SurfaceAnswer {
     written: s.written.map((w) => ({ ...w, from: offset(w.from), to: offset(w.to) })),
     toTurtle: s.toTurtle,
     end: s.end,
+    writeOut: s.writeOut.map((c) => ({ ...c, from: offset(c.from), to: offset(c.to) })),
     precision: s.precision,
     positions: Float32Array.from(s.positions),
     normals: Float32Array.from(s.normals),

@@ -35,6 +35,11 @@ export interface SurfacePreview {
   toTurtle: number[];
   /** Where the turtle moves after drawing (`end`), if anywhere. */
   end: Point3 | null;
+  /**
+   * For a library shape: the changes (UTF-16 offsets into the text asked about) that write it out
+   * as `#patch` lines of the same shape and precision, so that its points can be edited; else empty.
+   */
+  writeOut: { from: number; to: number; insert: string }[];
   /** Quads per patch along s and t. */
   precision: [number, number];
   /** The surface tessellated as the plant draws it: positions and normals (x y z each), triangles. */

@@ -9,6 +9,7 @@ import { grammarSupport } from './language';
 import { commandHover } from './hover';
 import { grammarLinting, relint } from './diagnostics';
 import { studioEditorTheme } from './theme';
+import { surfaceGutter } from './surface-gutter';
 import type { GrammarEditor, GrammarEditorOptions } from './grammar-text';
 import type { TextChange } from './growth-directives';
 
@@ -88,6 +89,7 @@ export function createGrammarEditor(options: GrammarEditorOptions, selection?: {
       EditorView.lineWrapping,
       EditorView.contentAttributes.of({ 'aria-label': 'L-system grammar' }),
       markedProduction,
+      options.openSurface ? surfaceGutter(options.openSurface) : [],
       EditorView.updateListener.of((update) => {
         if (update.docChanged || update.selectionSet) options.onCursor?.(update.state.selection.main.head);
       }),
