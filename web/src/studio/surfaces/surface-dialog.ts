@@ -40,6 +40,8 @@ export class SurfaceDialog {
   private refreshQueued = false;
   private toTurtle = new Matrix4();
   private fromTurtle = new Matrix4();
+  /** What had the focus when the dialog opened: it gets it back when the dialog closes. */
+  private opener: HTMLElement | null = null;
 
   constructor(
     private readonly host: SurfaceEditorHost,
@@ -48,6 +50,10 @@ export class SurfaceDialog {
     const c = this.c;
     this.scene = new SurfaceScene(c.canvas);
     c.close.addEventListener('click', () => c.dialog.close());
+    c.dialog.addEventListener('close', () => {
+      if (this.opener?.isConnected) this.opener.focus();
+      this.opener = null;
+    });
     c.dialog.addEventListener('keydown', (event) => {
       if (event.key === 'Escape') {
         event.preventDefault();
@@ -71,7 +77,10 @@ export class SurfaceDialog {
     const c = this.c;
     if (letter !== this.letter) this.selected = null;
     this.letter = letter;
-    if (!c.dialog.open) c.dialog.show();
+    if (!c.dialog.open) {
+      this.opener = document.activeElement instanceof HTMLElement ? document.activeElement : null;
+      c.dialog.show();
+    }
     this.refresh();
     c.canvas.focus();
   }
@@ -108,7 +117,9 @@ export class SurfaceDialog {
     this.toTurtle = surface ? new Matrix4().fromArray(surface.toTurtle) : new Matrix4();
     this.fromTurtle = this.toTurtle.clone().invert();
     if (surface && this.selected !== null && this.selected >= surface.net.length) this.selected = null;
-    if (!this.drag) this.scene.show(surface, this.selected);
+    // With errors, the last surface stays in view (not editable) until the text resolves again.
+    if (surface && this.drag) this.scene.showMesh(surface);
+    else if (surface) this.scene.show(surface, this.selected);
     this.showStatus(text, letters.includes(this.letter));
     this.showPoint();
   }

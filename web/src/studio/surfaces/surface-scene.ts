@@ -69,26 +69,29 @@ export class SurfaceScene {
     this.resize.observe(canvas);
   }
 
-  /** Shows `surface` (null: nothing but the turtle's axes); the camera frames it when its letter is new. */
-  show(surface: SurfacePreview | null, selected: number | null): void {
-    this.surface.geometry.dispose();
-    const geometry = new BufferGeometry();
-    if (surface) {
-      geometry.setAttribute('position', new BufferAttribute(surface.positions, 3));
-      geometry.setAttribute('normal', new BufferAttribute(surface.normals, 3));
-      geometry.setIndex(new BufferAttribute(surface.indices, 1));
-    }
-    this.surface.geometry = geometry;
-    this.net = surface ? surface.net.map((p) => [...p]) : [];
+  /** Shows `surface` with its net and `selected` point; the camera frames it when its letter is new. */
+  show(surface: SurfacePreview, selected: number | null): void {
+    this.showMesh(surface);
+    this.net = surface.net.map((p) => [...p]);
     this.drawNet();
     this.select(selected);
-    const end = surface?.end;
+    const end = surface.end;
     this.endPoint.visible = !!end;
     if (end) this.endPoint.geometry.setAttribute('position', new BufferAttribute(Float32Array.from(end), 3));
-    if (surface && this.framedFor !== surface.letter) {
+    if (this.framedFor !== surface.letter) {
       this.framedFor = surface.letter;
       this.frame();
     }
+  }
+
+  /** Shows `surface`'s tessellation alone (while a drag moves the net itself). */
+  showMesh(surface: SurfacePreview): void {
+    this.surface.geometry.dispose();
+    const geometry = new BufferGeometry();
+    geometry.setAttribute('position', new BufferAttribute(surface.positions, 3));
+    geometry.setAttribute('normal', new BufferAttribute(surface.normals, 3));
+    geometry.setIndex(new BufferAttribute(surface.indices, 1));
+    this.surface.geometry = geometry;
     this.requestFrame();
   }
 
