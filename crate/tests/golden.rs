@@ -70,6 +70,12 @@ fn render(source: &str) -> String {
         .ok();
     }
     for s in result.plant.skeleton.surfaces.iter().take(10) {
+        // One number when the scale is the same along L, H and U (`~l(s)`), else all three.
+        let scale = if s.scale.min_element() == s.scale.max_element() {
+            s.scale.x.to_string()
+        } else {
+            s.scale.to_string()
+        };
         writeln!(
             out,
             "surface #{} {:?} at {} h {} l {} scale {} c{}",
@@ -78,7 +84,7 @@ fn render(source: &str) -> String {
             v(s.origin),
             v(s.heading),
             v(s.left),
-            s.scale,
+            scale,
             s.color
         )
         .ok();

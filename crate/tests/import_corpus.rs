@@ -43,14 +43,6 @@ const CORPUS: &[Entry] = &[
         &[
             (
                 0,
-                "the view file's surface p is read from petal.s, which Meristem does not ",
-            ),
-            (
-                0,
-                "the view file's surface l is read from leaf.s, which Meristem does not r",
-            ),
-            (
-                0,
                 "the materials of material.mat become their diffuse colours: their ambien",
             ),
             (
@@ -114,7 +106,7 @@ const CORPUS: &[Entry] = &[
         &[
             (
                 0,
-                "the view file's surface l is read from leaf.s, which Meristem does not r",
+                "the view file's surface l is read from leaf.s, which was not opened with",
             ),
             (
                 0,
@@ -142,7 +134,7 @@ const CORPUS: &[Entry] = &[
             ),
             (
                 0,
-                "the view file's surface l is read from leaf.s, which Meristem does not r",
+                "the view file's surface l is read from leaf.s, which was not opened with",
             ),
             (
                 0,
@@ -163,7 +155,7 @@ const CORPUS: &[Entry] = &[
             ),
             (
                 0,
-                "the view file's surface l is read from leaf.s, which Meristem does not r",
+                "the view file's surface l is read from leaf.s, which was not opened with",
             ),
             (
                 0,
@@ -179,7 +171,7 @@ const CORPUS: &[Entry] = &[
         &[
             (
                 0,
-                "the view file's surface l is read from leaf.s, which Meristem does not r",
+                "the view file's surface l is read from leaf.s, which was not opened with",
             ),
             (
                 0,
@@ -238,7 +230,7 @@ const CORPUS: &[Entry] = &[
         &[
             (
                 0,
-                "the view file's surface l is read from leaf.s, which Meristem does not r",
+                "the view file's surface l is read from leaf.s, which was not opened with",
             ),
             (
                 0,
@@ -760,14 +752,6 @@ const CORPUS: &[Entry] = &[
         &[
             (
                 0,
-                "the view file's surface p is read from petal.s, which Meristem does not ",
-            ),
-            (
-                0,
-                "the view file's surface c is read from calyx.s, which Meristem does not ",
-            ),
-            (
-                0,
                 "the materials of materials.mat become their diffuse colours: their ambie",
             ),
             (
@@ -777,10 +761,6 @@ const CORPUS: &[Entry] = &[
             (
                 100,
                 "cpfg's _ is not a Meristem command; kept as a module the turtle ignores",
-            ),
-            (
-                102,
-                "~c names a surface from a file; Meristem draws only ~l and ~p, so it is ",
             ),
         ],
     ),
@@ -906,7 +886,7 @@ const CORPUS: &[Entry] = &[
             ),
             (
                 270,
-                "~m names a surface from a file; Meristem draws only ~l and ~p, so it is ",
+                "~m names a surface the object's view file does not give (or whose file w",
             ),
             (
                 270,
@@ -969,7 +949,7 @@ const CORPUS: &[Entry] = &[
             ),
             (
                 89,
-                "~b names a surface from a file; Meristem draws only ~l and ~p, so it is ",
+                "~b names a surface the object's view file does not give (or whose file w",
             ),
         ],
     ),

@@ -215,6 +215,7 @@ pub fn place_item(original: &Skeleton, item: Item, motion: &Rigid, out: &mut Ske
             e.origin = motion.point(o.origin);
             e.heading = motion.vector(o.heading);
             e.left = motion.vector(o.left);
+            e.up = motion.vector(o.up);
         }
         Item::Sphere(i) => {
             out.spheres[i as usize].center = motion.point(original.spheres[i as usize].center);

@@ -15,7 +15,7 @@
 //! gives the size in millimetres, so a 1748 × 2480 picture at 300 DPI prints as A5.
 
 use super::scene::{decimals_for, number, srgb};
-use crate::mesh::{polygon, surfaces, MeshBuffers};
+use crate::mesh::{bezier, polygon, surfaces, MeshBuffers};
 use crate::turtle::{Skeleton, SurfaceKind};
 use glam::{DVec2, DVec3};
 use std::fmt::Write;
@@ -216,12 +216,18 @@ fn shapes(skeleton: &Skeleton, unit: f64) -> Vec<Shape> {
         let kind = match s.kind {
             SurfaceKind::Leaf => surfaces::SurfaceKind::Leaf,
             SurfaceKind::Petal => surfaces::SurfaceKind::Petal,
+            SurfaceKind::Declared(k) => {
+                // Each patch filled within its outline (its grid's border).
+                let Some(shape) = skeleton.shapes.get(k as usize) else {
+                    continue;
+                };
+                for grid in bezier::tessellate(s, shape) {
+                    fill(grid_border(&grid), s.color, s.module);
+                }
+                continue;
+            }
         };
-        fill(
-            surfaces::place(kind, s.origin, s.heading, s.left, s.scale),
-            s.color,
-            s.module,
-        );
+        fill(surfaces::outline_of(kind, s), s.color, s.module);
     }
     for s in &skeleton.spheres {
         let radius = s.radius_width.map_or(s.radius, |w| w * unit);
@@ -232,6 +238,18 @@ fn shapes(skeleton: &Skeleton, unit: f64) -> Vec<Shape> {
     // Stable: shapes of one module keep the order above.
     keyed.sort_by_key(|(module, _)| *module);
     keyed.into_iter().map(|(_, shape)| shape).collect()
+}
+
+/// The border of a patch's grid, once around: its first row, last column, last row backwards
+/// and first column backwards.
+fn grid_border(grid: &bezier::Grid) -> Vec<DVec3> {
+    let (rows, cols) = (grid.rows, grid.cols);
+    let at = |i: usize, j: usize| grid.points[i * cols + j];
+    let mut border: Vec<DVec3> = (0..cols).map(|j| at(0, j)).collect();
+    border.extend((1..rows).map(|i| at(i, cols - 1)));
+    border.extend((0..cols - 1).rev().map(|j| at(rows - 1, j)));
+    border.extend((1..rows - 1).rev().map(|i| at(i, 0)));
+    border
 }
 
 /// The box around the shapes, circles included, and the lines' strokes when `strokes`:

@@ -6,6 +6,7 @@
 //! An object without a `.l` but with an L-Py `.lpy` is imported as L-Py.
 
 mod lpfg_functions;
+mod surface_file;
 
 use super::abop::{self, Flavour};
 use super::{number, Dialect, Import};
@@ -38,6 +39,10 @@ pub(super) struct View {
     pub functions: Vec<Option<CurveFunction>>,
     /// `#color` lines from the colour map or materials.
     pub palette: Vec<String>,
+    /// `#surface` and `#patch` lines from the view file's surfaces and their `.s` files.
+    pub surfaces: Vec<String>,
+    /// The letters those lines declare (`~X` draws them).
+    pub surface_letters: Vec<String>,
     /// Notes about the view and colour files (line 0).
     pub notes: Vec<String>,
     /// The file names, for the header.
@@ -334,10 +339,7 @@ fn read_view(text: &str, all: &Files, view: &mut View) {
                     ));
                     continue;
                 }
-                view.notes.push(format!(
-                    "the view file's surface {name} is read from {file}, which Meristem does not read: ~{name} draws Meristem's own {}",
-                    if name == "p" { "petal" } else { "leaf" }
-                ));
+                surface(name, file, words.collect(), all, view);
             }
             "function" => {
                 let mut words = value.split_whitespace();
@@ -370,6 +372,43 @@ fn read_view(text: &str, all: &Files, view: &mut View) {
             }
             _ => {}
         }
+    }
+}
+
+/// A view file's `surface: X file.s scale [s t]`: the file's patches as `#surface X …` and
+/// `#patch X …` lines, or a note saying why not (what `~X` then draws).
+fn surface(name: &str, file: &str, rest: Vec<&str>, all: &Files, view: &mut View) {
+    let numbers: Vec<f64> = rest
+        .iter()
+        .map_while(|w| w.parse::<f64>().ok().filter(|v| v.is_finite()))
+        .collect();
+    // cpfg: a size of 0 or below is 1; precisions of 0 are the file's.
+    let scale = numbers.first().copied().filter(|s| *s > 0.0).unwrap_or(1.0);
+    let precision = match numbers.get(1..3) {
+        Some([s, t]) => [*s, *t].map(|v| v.clamp(0.0, 1e6) as u32),
+        _ => [0, 0],
+    };
+    let own = match name {
+        "p" => "Meristem's own petal",
+        "l" => "Meristem's own leaf",
+        _ => "nothing",
+    };
+    let one_letter = name.len() == 1 && name.chars().all(|c| c.is_ascii_alphabetic());
+    let read = match all.text(file) {
+        _ if !one_letter => Err(format!("Meristem cannot use: '{name}' is not one letter")),
+        Some(text) => surface_file::read(&text, base(file), name, scale, precision)
+            .map_err(|why| format!("cannot be read ({why})")),
+        None => Err("was not opened with the object".to_string()),
+    };
+    match read {
+        Ok(lines) => {
+            view.surfaces.extend(lines.lines);
+            view.surface_letters.push(name.to_string());
+            view.notes.extend(lines.note);
+        }
+        Err(why) => view.notes.push(format!(
+            "the view file's surface {name} is read from {file}, which {why}: ~{name} draws {own}"
+        )),
     }
 }
 

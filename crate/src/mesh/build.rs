@@ -3,12 +3,24 @@
 
 use super::chains::{chains, Chains};
 use super::grow::{append, push, push_range};
+use super::{bezier, parts, polygon, segment_lines, sphere, surfaces, tube};
 use super::{growth_schedule, GrowthSchedule};
-use super::{parts, polygon, segment_lines, sphere, surfaces, tube};
 use super::{resolve_width_unit, ChainPart, MeshBuffers, MeshOptions, MeshParts, Part};
 use super::{MATERIAL_BARK, MATERIAL_LEAF, MATERIAL_PLAIN};
-use crate::turtle::Skeleton;
+use crate::turtle::{Skeleton, Surface, SurfaceKind};
 use glam::DVec3;
+
+/// An upper bound of the vertices a surface's mesh has: both sides of every patch's grid for a
+/// declared surface, 64 for the built-in outlines.
+fn surface_vertices(skeleton: &Skeleton, s: &Surface) -> usize {
+    match s.kind {
+        SurfaceKind::Declared(k) => skeleton.shapes.get(k as usize).map_or(0, |shape| {
+            let [a, b] = shape.precision.map(|n| n as usize + 1);
+            2 * shape.patches.len() * a * b
+        }),
+        _ => 64,
+    }
+}
 
 /// Builds the mesh of a skeleton: a tube per axis (segments that continue each other share their
 /// joint rings, ends are capped), smooth axes as generalized cylinders through their joints,
@@ -223,10 +235,18 @@ impl<'a> Builder<'a> {
     pub(super) fn surface(&mut self, skeleton: &Skeleton, i: usize) {
         let s = &skeleton.surfaces[i];
         let kind = match s.kind {
-            crate::turtle::SurfaceKind::Leaf => surfaces::SurfaceKind::Leaf,
-            crate::turtle::SurfaceKind::Petal => surfaces::SurfaceKind::Petal,
+            SurfaceKind::Leaf => surfaces::SurfaceKind::Leaf,
+            SurfaceKind::Petal => surfaces::SurfaceKind::Petal,
+            SurfaceKind::Declared(k) => {
+                if let Some(shape) = skeleton.shapes.get(k as usize) {
+                    self.element = parts::NO_CHAIN;
+                    let grids = bezier::tessellate(s, shape);
+                    self.patches(&grids, s, skeleton);
+                }
+                return;
+            }
         };
-        let points = surfaces::place(kind, s.origin, s.heading, s.left, s.scale);
+        let points = surfaces::outline_of(kind, s);
         self.element = parts::NO_CHAIN;
         // The leaf's own frame: across along `left`, along the heading.
         let uvs = unit_square(points.iter().map(|p| {
@@ -267,7 +287,11 @@ impl<'a> Builder<'a> {
             .iter()
             .map(|p| 2 * p.points.len())
             .sum::<usize>()
-            + skeleton.surfaces.len() * 64;
+            + skeleton
+                .surfaces
+                .iter()
+                .map(|s| surface_vertices(skeleton, s))
+                .sum::<usize>();
         let spheres = skeleton.spheres.len() * (self.options.sphere_segments as usize + 1).pow(2);
         tubes + flats + spheres
     }
@@ -322,6 +346,40 @@ impl<'a> Builder<'a> {
                     self.mesh.indices.extend([a, d, b]);
                 } else {
                     self.mesh.indices.extend([a, b, d]);
+                }
+            }
+        }
+    }
+
+    /// A declared surface's patches, two-sided as [`Builder::flat`]: the front faces each
+    /// patch's ∂P/∂s × ∂P/∂t. Texture coordinates span the whole surface in its own frame, across
+    /// along `left` and along the heading, as the built-in leaf's (cpfg's texels per surface).
+    fn patches(&mut self, grids: &[bezier::Grid], s: &Surface, skeleton: &Skeleton) {
+        let triangles: Vec<Vec<[u32; 3]>> = grids.iter().map(bezier::Grid::triangles).collect();
+        if triangles.iter().all(Vec::is_empty) {
+            return;
+        }
+        self.material = MATERIAL_LEAF;
+        self.range(s.module, s.color);
+        let c = skeleton.color(s.color);
+        let uvs = unit_square(grids.iter().flat_map(|g| &g.points).map(|p| {
+            let d = *p - s.origin;
+            (d.dot(s.left), d.dot(s.heading))
+        }));
+        for (sign, flip) in [(1.0, false), (-1.0, true)] {
+            let mut uv = uvs.iter();
+            for (grid, tris) in grids.iter().zip(&triangles) {
+                let first = self.mesh.vertex_count() as u32;
+                for (p, n) in grid.points.iter().zip(&grid.normals) {
+                    self.vertex(*p, *n * sign, c, uv.next().copied().unwrap_or_default());
+                }
+                for &[a, b, d] in tris {
+                    let [a, b, d] = [a, b, d].map(|k| first + k);
+                    if flip {
+                        self.mesh.indices.extend([a, d, b]);
+                    } else {
+                        self.mesh.indices.extend([a, b, d]);
+                    }
                 }
             }
         }

@@ -125,7 +125,11 @@ fn reaches(skeleton: &Skeleton) -> Vec<Reach> {
         flat(p.anchor, origin, size);
     }
     for s in &skeleton.surfaces {
-        flat(s.anchor, s.origin, s.scale.abs());
+        flat(
+            s.anchor,
+            s.origin,
+            s.scale.abs().max_element() * skeleton.surface_reach(s),
+        );
     }
     for s in &skeleton.spheres {
         flat(s.anchor, s.center, s.radius.abs());

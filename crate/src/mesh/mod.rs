@@ -10,9 +10,11 @@
 //! `options.rs` ([`MeshOptions`]), `width.rs` ([`WidthUnit`]: widths to model units), `chains.rs`
 //! (the axes that become tubes), `build.rs` (the builder: [`build_mesh`]), `grow.rs` (how the
 //! arrays grow), `growth.rs` (growth in time: when each element grows, the mesh at a time), `tube.rs` (axes as tubes), `curve.rs`, `polygon.rs` and `monotone.rs`
-//! (triangulation), `surfaces.rs`, `sphere.rs`, `lines.rs` (segments as lines), `pack.rs` (normals
+//! (triangulation), `surfaces.rs` (the built-in leaf and petal), `bezier.rs` (declared surfaces'
+//! patches), `sphere.rs`, `lines.rs` (segments as lines), `pack.rs` (normals
 //! and colours packed for the GPU), `parts.rs` (one element re-meshed alone).
 
+pub mod bezier;
 mod buffers;
 mod build;
 mod chains;

@@ -322,7 +322,8 @@ mod tests {
 
     #[test]
     fn parts_cover_the_mesh_and_each_element_meshes_alone_to_its_part() {
-        let source = "#angle 30\naxiom: X\nX -> F[+X~l][-X{.f.f.}]F@O(0.1)X\nF -> FF";
+        let source =
+            "#angle 30\n#surface a disk\naxiom: X\nX -> F[+X~l][-X{.f.f.}~a(0.5)]F@O(0.1)X\nF -> FF";
         let result = build(source, &BuildOptions::with_iterations(3));
         let options = MeshOptions::default();
         let (mesh, parts) = super::super::build_mesh_with_parts(&result.plant.skeleton, &options);

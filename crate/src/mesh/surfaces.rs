@@ -1,5 +1,6 @@
-//! The predefined surfaces of cpfg's `~l` (leaf) and `~p` (petal), drawn by `~l(s)` at the turtle
-//! with scale `s`: flat outlines in the turtle's H–L plane, base at the turtle, tip along H.
+//! Meristem's own predefined surfaces, drawn by `~l` (leaf) and `~p` (petal) when the grammar
+//! declares no surface for them (`#surface`, `#patch`: `bezier.rs`): `~l(s)` at the turtle with
+//! scale `s`, flat outlines in the turtle's H–L plane, base at the turtle, tip along H.
 //!
 //! Both outlines have [`OUTLINE_POINTS`] points: the base (index 0), ten points up the right
 //! side (−L), the tip (index [`TIP`], at `scale` along H), and ten points back down the left side
@@ -42,6 +43,18 @@ pub fn outline(kind: SurfaceKind) -> Vec<(f64, f64)> {
         points.push((t, half_width(kind, t)));
     }
     points
+}
+
+/// The outline of a built-in surface as the turtle placed it: its length along H scaled by the
+/// surface's scale along H, its width by the scale along L.
+pub fn outline_of(kind: SurfaceKind, s: &crate::turtle::Surface) -> Vec<DVec3> {
+    place(
+        kind,
+        s.origin,
+        s.heading * s.scale.y,
+        s.left * s.scale.x,
+        1.0,
+    )
 }
 
 /// The outline placed at `origin` in the frame (`heading`, `left`), scaled by `scale`.

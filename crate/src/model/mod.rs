@@ -8,6 +8,7 @@ mod lstring;
 mod program;
 mod resolve;
 mod settings;
+mod surface;
 
 pub use alphabet::{Alphabet, ModuleId};
 pub use curve::{Curve, CurveKind};
@@ -18,6 +19,7 @@ pub use settings::{
     directive_default, Bend, GrowthAttributes, Lifetime, Settings, Shape, ShapeWidth, Speed, Sun,
     DEFAULT_PALETTE,
 };
+pub use surface::{organ_patches, Patch, SurfaceShape, WrittenPoint, MAX_PATCHES, MAX_PRECISION};
 
 use crate::syntax::{Section, Span};
 use crate::vocabulary::{Command, ModuleInfo};
@@ -168,6 +170,11 @@ impl Model {
     /// What the turtle does with module `id`.
     pub fn command(&self, id: ModuleId) -> Option<Command> {
         self.meanings.get(id.index()).copied().flatten()?.command()
+    }
+
+    /// The index in [`Settings::surfaces`] of the declared surface module `id` draws (`~X`).
+    pub fn surface_of(&self, id: ModuleId) -> Option<usize> {
+        resolve::surface_index(self.alphabet.name(id), &self.settings.surfaces)
     }
 
     /// True when a query module (`?P ?H ?U ?L`) is in the grammar's alphabet.

@@ -47,6 +47,8 @@ pub struct Settings {
     pub dt: f64,
     /// The grammar has a `#dt` directive.
     pub dt_given: bool,
+    /// The surfaces `#surface` and `#patch` declare, by letter (what `~X` draws).
+    pub surfaces: Vec<std::sync::Arc<super::SurfaceShape>>,
 }
 
 /// The colour index's default colours: a ramp from bark brown (0) through olive and greens to
@@ -141,6 +143,7 @@ impl Default for Settings {
             terminal_age_span: None,
             dt: default_of(DirectiveKind::Dt),
             dt_given: false,
+            surfaces: Vec::new(),
         }
     }
 }

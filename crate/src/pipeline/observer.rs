@@ -103,6 +103,7 @@ impl StepCounter {
                             | Command::StartPolygon
                             | Command::Leaf
                             | Command::Petal
+                            | Command::Surface
                             | Command::Sphere
                     )
                 )

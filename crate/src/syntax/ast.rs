@@ -35,8 +35,11 @@ pub struct Directive {
     pub expr: Option<ExprSyntax>,
     /// For `#ignore`, `#consider`, `#draw`, `#apex`: the modules listed.
     pub modules: Vec<ModuleSyntax>,
-    /// For `#curve` and `#table`: the numbers after the name (pairs x y).
+    /// For `#curve` and `#table`: the numbers after the name (pairs x y); for `#patch`, triples
+    /// x y z.
     pub points: Vec<f64>,
+    /// Where each of `points` is written.
+    pub point_spans: Vec<Span>,
 }
 
 /// One module occurrence: a name such as `F`, `F_a`, `@O`, `?P`, with its parameters.

@@ -43,11 +43,17 @@ pub(super) fn parse_directive(
         expr: None,
         modules: Vec::new(),
         points: Vec::new(),
+        point_spans: Vec::new(),
     };
     let first = info.and_then(|i| i.params().first()).map(|p| p.kind);
-    let points = info.and_then(|i| i.params().get(1)).map(|p| p.kind) == Some(ParamKind::Points);
+    let second = info.and_then(|i| i.params().get(1)).map(|p| p.kind);
     let kept = match first {
-        Some(ParamKind::Name) if points => curve_definition(&mut directive, diagnostics),
+        Some(ParamKind::Name) if second == Some(ParamKind::Points) => {
+            curve_definition(&mut directive, diagnostics)
+        }
+        Some(ParamKind::Name) if second == Some(ParamKind::Surface) => {
+            surface_definition(&mut directive, diagnostics)
+        }
         Some(ParamKind::Name) => definition(&mut directive, diagnostics),
         Some(ParamKind::Modules) => module_list(&mut directive, scanner, diagnostics),
         _ => true,
@@ -112,28 +118,51 @@ fn definition(d: &mut Directive, diagnostics: &mut Vec<Diagnostic>) -> bool {
     }
 }
 
-/// `#curve NAME x y x y …`, `#table NAME x y …`: a name, then numbers separated by spaces or
-/// commas. False when the line is not kept.
+/// `#surface X words`: the letter; the words stay text for the resolver. False when the line is
+/// not kept.
+fn surface_definition(d: &mut Directive, diagnostics: &mut Vec<Diagnostic>) -> bool {
+    let Some(ident_len) = leading_name(d, "a shape or frame words", diagnostics) else {
+        return false;
+    };
+    let at = d.args_span.start;
+    d.target = Some((d.args[..ident_len].to_string(), at..at + ident_len));
+    true
+}
+
+/// `#curve NAME x y x y …`, `#table NAME x y …`, `#patch X x y z, …`: a name, then numbers
+/// separated by spaces or commas. False when the line is not kept.
 fn curve_definition(d: &mut Directive, diagnostics: &mut Vec<Diagnostic>) -> bool {
-    let Some(ident_len) = leading_name(d, "points x y", diagnostics) else {
+    let coordinates = if d.kind == Some(DirectiveKind::Patch) {
+        "x y z"
+    } else {
+        "x y"
+    };
+    let Some(ident_len) = leading_name(d, &format!("points {coordinates}"), diagnostics) else {
         return false;
     };
     let args = d.args.as_str();
     let args_at = d.args_span.start;
     let rest = &args[ident_len..];
     let mut points = Vec::new();
+    let mut spans = Vec::new();
     for word in rest.split(|c: char| c.is_whitespace() || c == ',') {
         if word.is_empty() {
             continue;
         }
+        let at = args_at + (word.as_ptr() as usize - args.as_ptr() as usize);
         match crate::number::parse_f64(word) {
-            Some(v) if v.is_finite() => points.push(v),
+            Some(v) if v.is_finite() => {
+                points.push(v);
+                spans.push(at..at + word.len());
+            }
             _ => {
-                let at = args_at + (word.as_ptr() as usize - args.as_ptr() as usize);
                 diagnostics.push(Diagnostic::error(
                     "E0137",
                     at..at + word.len(),
-                    format!("'{word}' is not a number: {} takes numbers x y", d.written),
+                    format!(
+                        "'{word}' is not a number: {} takes numbers {coordinates}",
+                        d.written
+                    ),
                 ));
                 return false;
             }
@@ -141,6 +170,7 @@ fn curve_definition(d: &mut Directive, diagnostics: &mut Vec<Diagnostic>) -> boo
     }
     d.target = Some((args[..ident_len].to_string(), args_at..args_at + ident_len));
     d.points = points;
+    d.point_spans = spans;
     true
 }
 

@@ -186,6 +186,7 @@ impl Parser<'_> {
             expr: None,
             modules: Vec::new(),
             points: Vec::new(),
+            point_spans: Vec::new(),
         });
     }
 }

@@ -110,6 +110,10 @@ impl Canvas for Skeleton {
 
 pub(super) struct Interpreter<'a, C: Canvas> {
     settings: &'a Settings,
+    /// For each module id, the declared surface it draws (`~X`), if any.
+    surface_of: Vec<Option<u16>>,
+    /// The declared surfaces.
+    shapes: &'a [std::sync::Arc<crate::model::SurfaceShape>],
     /// For each module id, what the turtle does with it.
     actions: Vec<Option<Action>>,
     turtle: TurtleState,
@@ -142,6 +146,7 @@ fn first_default(info: &ModuleInfo, settings: &Settings) -> Option<f64> {
 pub(super) fn empty_skeleton(settings: &Settings, adjustments: bool) -> Skeleton {
     Skeleton {
         palette: settings.palette.clone(),
+        shapes: settings.surfaces.clone(),
         widths_set: settings.width_given || adjustments,
         ..Skeleton::default()
     }
@@ -162,8 +167,17 @@ impl<'a, C: Canvas> Interpreter<'a, C> {
             .map(|m| m.and_then(|info| Some((info.command()?, first_default(info, settings)))))
             .collect();
         let start = TurtleState::start(settings);
+        let surface_of = (0..model.alphabet.len())
+            .map(|i| {
+                model
+                    .surface_of(crate::model::ModuleId(i as u32))
+                    .map(|k| k as u16)
+            })
+            .collect();
         Interpreter {
             settings,
+            surface_of,
+            shapes: &settings.surfaces,
             actions,
             turtle: start,
             stack: Vec::new(),
@@ -184,14 +198,19 @@ impl<'a, C: Canvas> Interpreter<'a, C> {
         for (index, id) in string.ids.iter().enumerate() {
             self.turn_by_growth(index);
             let before = self.turtle.position.y;
-            let moved = match self.actions[id.index()] {
-                Some((command, default)) => {
+            let moved = match (self.actions[id.index()], self.surface_of[id.index()]) {
+                (_, Some(k)) => {
+                    let params = string.params_of(index);
+                    self.surface(SurfaceKind::Declared(k), params, index as u32);
+                    false
+                }
+                (Some((command, default)), None) => {
                     let params = string.params_of(index);
                     // A first parameter replaces the default length or angle: `F(l)`, `+(a)`.
                     let first = params.first().copied().filter(|v| v.is_finite());
                     self.command(command, first, first.or(default), params, index as u32)
                 }
-                None => false,
+                (None, None) => false,
             };
             if extent {
                 let y = self.turtle.position.y;
@@ -265,7 +284,10 @@ impl<'a, C: Canvas> Interpreter<'a, C> {
             Command::Width | Command::NextColor | Command::SetColor => {
                 self.appearance(command, first, value)
             }
-            Command::Leaf | Command::Petal => self.surface(command, value.unwrap_or(1.0), index),
+            Command::Leaf => self.surface(SurfaceKind::Leaf, params, index),
+            Command::Petal => self.surface(SurfaceKind::Petal, params, index),
+            // A declared `~X` is drawn by `run`; an undeclared one draws nothing (E0222).
+            Command::Surface => {}
             Command::Sphere => self.sphere(first, index),
             Command::MoveTo
             | Command::TropismVector
@@ -432,26 +454,48 @@ impl<'a, C: Canvas> Interpreter<'a, C> {
         }
     }
 
-    /// `~l`, `~p`: a predefined surface `scale` long along H.
-    fn surface(&mut self, command: Command, scale: f64, index: u32) {
-        if scale <= 0.0 {
+    /// `~l`, `~p` and a declared `~X`: a surface placed at the turtle, scaled as cpfg's `~`
+    /// (interpret.c): by 1 without parameters, by the first along L, H and U with one or two, by
+    /// the three along L, H and U with three. Nothing for a scale of 0 or below along H; a
+    /// declared surface with an end point moves the turtle there (cpfg's `determine_end_point`,
+    /// by the first parameter).
+    fn surface(&mut self, kind: SurfaceKind, params: &[f64], index: u32) {
+        let finite = |k: usize| params.get(k).copied().filter(|v| v.is_finite());
+        let first = finite(0).unwrap_or(1.0);
+        let scale = match (finite(1), finite(2)) {
+            (Some(sy), Some(sz)) if params.len() >= 3 => DVec3::new(first, sy, sz),
+            _ => DVec3::splat(first),
+        };
+        let nothing = match kind {
+            SurfaceKind::Declared(_) => scale.cmpeq(DVec3::ZERO).any(),
+            _ => scale.y <= 0.0,
+        };
+        if nothing {
             return;
         }
         let t = &self.turtle;
-        self.canvas.surface(Surface {
-            kind: if command == Command::Leaf {
-                SurfaceKind::Leaf
-            } else {
-                SurfaceKind::Petal
-            },
+        let surface = Surface {
+            kind,
             origin: t.position,
             heading: t.heading,
             left: t.left,
+            up: t.up,
             scale,
             color: t.color,
             module: index,
             anchor: t.anchor,
-        });
+        };
+        let end = match kind {
+            SurfaceKind::Declared(k) => self.shapes[k as usize].end,
+            _ => None,
+        };
+        if let Some(end) = end {
+            let t = &mut self.turtle;
+            t.position = surface.origin
+                + (surface.left * end.x + surface.heading * end.y + surface.up * end.z) * first;
+            t.last_segment = None;
+        }
+        self.canvas.surface(surface);
     }
 
     /// `?P ?H ?U ?L`: what the turtle reads here.

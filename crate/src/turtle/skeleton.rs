@@ -42,22 +42,39 @@ pub struct Polygon {
 /// Which predefined surface.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum SurfaceKind {
+    /// Meristem's own flat leaf (`~l` undeclared).
     Leaf,
+    /// Meristem's own flat petal (`~p` undeclared).
     Petal,
+    /// The declared surface [`Skeleton::shapes`]`[k]` (`#surface`, `#patch`).
+    Declared(u16),
 }
 
-/// A predefined surface (`~l`, `~p`) placed at the turtle.
+/// A predefined surface (`~l`, `~p`, a declared `~X`) placed at the turtle.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Surface {
     pub kind: SurfaceKind,
     pub origin: DVec3,
     pub heading: DVec3,
     pub left: DVec3,
-    pub scale: f64,
+    pub up: DVec3,
+    /// The scale along L, H and U (`~X(s)`: s along each; `~X(sx, sy, sz)`).
+    pub scale: DVec3,
     pub color: u16,
     pub module: u32,
     /// The segment the turtle's state here grew from (as [`Segment::anchor`]).
     pub anchor: Option<u32>,
+}
+
+impl Surface {
+    /// A point of the surface's own frame (x along L, y along H, z along U, at scale 1) where
+    /// the surface puts it.
+    pub fn place(&self, p: DVec3) -> DVec3 {
+        self.origin
+            + self.left * (p.x * self.scale.x)
+            + self.heading * (p.y * self.scale.y)
+            + self.up * (p.z * self.scale.z)
+    }
 }
 
 /// A sphere (`@O`). Its radius is in model units (`@O(r)`), or half the width in width units
@@ -104,6 +121,8 @@ pub struct Skeleton {
     /// derivation counted them (modules that draw, in the derived strings): what paces the
     /// plant's growth in time (`crate::mesh::growth_schedule`). Empty when not counted.
     pub step_counts: Vec<f64>,
+    /// The surfaces the grammar declares, what [`SurfaceKind::Declared`] indexes.
+    pub shapes: Vec<std::sync::Arc<crate::model::SurfaceShape>>,
 }
 
 /// The largest coordinate, width or radius the skeleton keeps: well inside `f32` (about 3.4e38),
@@ -320,9 +339,10 @@ impl Skeleton {
         }
         for s in &mut self.surfaces {
             let changed = clamp_point(&mut s.origin)
-                | clamp_number(&mut s.scale)
+                | clamp_point(&mut s.scale)
                 | clamp_direction(&mut s.heading, DVec3::Y)
-                | clamp_direction(&mut s.left, DVec3::X);
+                | clamp_direction(&mut s.left, DVec3::X)
+                | clamp_direction(&mut s.up, DVec3::Z);
             note(changed, s.module);
         }
         for s in &mut self.spheres {
@@ -357,14 +377,31 @@ impl Skeleton {
         extent.is_flat()
     }
 
+    /// How far a surface reaches from its origin at scale 1: 1 for the built-in leaf and petal
+    /// (their length), the farthest control point for a declared one.
+    pub fn surface_reach(&self, s: &Surface) -> f64 {
+        match s.kind {
+            SurfaceKind::Declared(k) => self.shapes.get(k as usize).map_or(0.0, |x| x.reach()),
+            _ => 1.0,
+        }
+    }
+
     /// Calls `f` on every point that counts for [`Skeleton::is_flat`] until it returns false;
     /// returns whether it never did.
     pub(crate) fn for_each_point(&self, f: &mut dyn FnMut(DVec3) -> bool) -> bool {
         self.segments.iter().all(|s| f(s.start) && f(s.end))
             && self.polygons.iter().all(|p| p.points.iter().all(|&q| f(q)))
-            // A surface's outline spans heading and left from the origin.
-            && self.surfaces.iter().all(|s| {
-                f(s.origin) && f(s.origin + s.heading * s.scale) && f(s.origin + s.left * s.scale)
+            // The built-in outlines span heading and left from the origin; a declared surface
+            // lies within its control points.
+            && self.surfaces.iter().all(|s| match s.kind {
+                SurfaceKind::Declared(k) => self.shapes.get(k as usize).is_none_or(|shape| {
+                    shape.patches.iter().flatten().all(|&p| f(s.place(p)))
+                }),
+                _ => {
+                    f(s.origin)
+                        && f(s.place(DVec3::Y))
+                        && f(s.place(DVec3::X))
+                }
             })
             && self.spheres.iter().all(|s| f(s.center))
     }

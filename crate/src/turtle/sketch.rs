@@ -235,6 +235,7 @@ fn op_of(command: Option<Command>) -> (Op, f64) {
         | C::EndPolygon
         | C::Leaf
         | C::Petal
+        | C::Surface
         | C::Sphere
         | C::MoveTo
         | C::TropismVector

@@ -214,7 +214,7 @@ fn surfaces_spheres_and_move_to() {
     assert_eq!(s.surfaces.len(), 2);
     assert_eq!(
         (s.surfaces[0].kind, s.surfaces[0].scale),
-        (SurfaceKind::Leaf, 2.0)
+        (SurfaceKind::Leaf, DVec3::splat(2.0))
     );
     assert!(close(s.surfaces[1].origin, DVec3::new(3.0, 4.0, 5.0)));
     assert_eq!(s.spheres.len(), 2);

@@ -37,6 +37,8 @@ pub enum DirectiveKind {
     Wind,
     TerminalAge,
     Dt,
+    Surface,
+    Patch,
 }
 
 impl DirectiveKind {
@@ -230,6 +232,22 @@ const fn function_of_points(points: &'static str) -> [Param; 2] {
         Param::new("points", ParamKind::Points, points),
     ]
 }
+const SURFACE: &[&[Param]] = &[&[
+    Param::new("X", ParamKind::Name, "the surface's letter: ~X draws it"),
+    Param::new(
+        "shape",
+        ParamKind::Surface,
+        "a shape of the library, then frame words: contact x y z, heading x y z, up x y z, end x y z, size s, scale s, precision s t",
+    ),
+]];
+const PATCH: &[&[Param]] = &[&[
+    Param::new("X", ParamKind::Name, "the surface's letter: ~X draws it"),
+    Param::new(
+        "points",
+        ParamKind::Points,
+        "16 control points x y z, row by row of the 4 × 4 grid, separated by commas",
+    ),
+]];
 const TERMINAL_AGES: &[&[Param]] = &[&[Param::new(
     "ages",
     ParamKind::Ages,
@@ -488,6 +506,12 @@ pub const DIRECTIVES: &[DirectiveInfo] = &[
         .usage("E0211", "(pairs of a module name and a terminal age above 0)").repeatable(),
     row("dt", D::Dt, "Time step", &[&[Param::number("dt", "the time one derivation step covers").default(1.0).unit("time units")]], G::Derivation,
         "The time one derivation step covers (default 1): a timed grammar at step n shows time n·dt; expressions read it as dt."),
+    row("surface", D::Surface, "Surface", SURFACE, G::Turtle,
+        "Declares what ~X draws: a shape of the organ library (leaf, petal, sepal, disk, ray_floret), and the frame of its #patch points as a cpfg .s file gives it.")
+        .usage("E0221", "(a letter, then a shape of the library and frame words with their numbers)").repeatable(),
+    row("patch", D::Patch, "Bézier patch", PATCH, G::Turtle,
+        "One bicubic Bézier patch of the surface ~X: 16 control points x y z, row by row; several lines make a surface of several patches.")
+        .usage("E0220", "(a letter, then 16 points x y z)").repeatable(),
     row("max_modules", D::MaxModules, "Module limit", &[&[Param::whole("n", 0.0, U32_MAX, "modules at most").default(5_000_000.0)]], G::Limits,
         "Stop with an error when the string would grow past n modules (default 5,000,000)."),
     row("max_steps", D::MaxSteps, "Step limit", &[&[Param::whole("n", 0.0, U32_MAX, "steps at most").default(10_000.0)]], G::Limits,

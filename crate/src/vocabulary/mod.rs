@@ -19,6 +19,7 @@ mod expressions;
 mod keywords;
 mod modules;
 mod params;
+mod surfaces;
 
 pub use directives::{
     directive, directive_named, DirectiveInfo, DirectiveKind, Season, DIRECTIVES,
@@ -31,6 +32,10 @@ pub use modules::{
     module_named, name_of, names_of, Category, Command, GroupKind, Meaning, ModuleInfo, MODULES,
 };
 pub use params::{Param, ParamDefault, ParamKind};
+pub use surfaces::{
+    frame_word_named, organ_named, FrameWord, FrameWordInfo, Organ, OrganInfo, FRAME_WORDS,
+    SURFACE_SHAPES,
+};
 
 use serde::Serialize;
 
@@ -67,6 +72,8 @@ pub fn written_names() -> Vec<String> {
     );
     names.extend(FUNCTIONS.iter().map(|f| f.name.to_string()));
     names.extend(VALUES.iter().map(|v| v.name.to_string()));
+    names.extend(SURFACE_SHAPES.iter().map(|o| o.name.to_string()));
+    names.extend(FRAME_WORDS.iter().map(|w| w.name.to_string()));
     names
 }
 

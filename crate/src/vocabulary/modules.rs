@@ -37,6 +37,8 @@ pub enum Command {
     SetColor,
     Leaf,
     Petal,
+    /// `~X`: the surface declared for the letter X (`#surface`, `#patch`).
+    Surface,
     Sphere,
     MoveTo,
     TropismVector,
@@ -172,6 +174,11 @@ const QUERIED: &[Param] = &[
     Param::number("z", "z, set by the turtle"),
 ];
 const SCALE: &[Param] = &[Param::number("s", "the length of the surface").default(1.0)];
+const SURFACE_SCALES: &[Param] = &[
+    Param::number("s", "the scale; with sy and sz, the scale along L").default(1.0),
+    Param::number("sy", "the scale along H"),
+    Param::number("sz", "the scale along U"),
+];
 
 use Category as K;
 use Command as C;
@@ -207,6 +214,8 @@ pub const MODULES: &[ModuleInfo] = &[
         "Set the colour index to c; without c, increase it by 1.", K::Appearance),
     row("~l", Turtle(C::Leaf), SCALE, "Draw the predefined leaf, s long, along H.", K::Surface),
     row("~p", Turtle(C::Petal), SCALE, "Draw the predefined petal, s long, along H.", K::Surface),
+    row("~X", Turtle(C::Surface), SURFACE_SCALES,
+        "Draw the surface declared for the letter X (#surface X, #patch X), scaled by s, or by s along L, sy along H and sz along U.", K::Surface),
     row("@O", Turtle(C::Sphere), &[Param::number("r", "the radius; without it, half the current width")],
         "Draw a sphere of radius r (without r: as wide as the current width).", K::Surface),
     row("@Tp", Turtle(C::TropismVector), VECTOR, "Set this branch's tropism vector T.", K::Tropism),

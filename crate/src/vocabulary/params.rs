@@ -26,6 +26,9 @@ pub enum ParamKind {
     Points,
     /// A module name and a number, in pairs (`#terminal_age a 2 b 1`).
     Ages,
+    /// A surface's library shape and frame words with their numbers
+    /// (`#surface p petal precision 8 8`; [`super::SURFACE_SHAPES`], [`super::FRAME_WORDS`]).
+    Surface,
 }
 
 /// The value a parameter takes when it is not written.

@@ -8,7 +8,7 @@
 import vocabularyUrl from '../../../crate/pkg-core/vocabulary.json?url';
 
 /** What a parameter holds. */
-export type ParamKind = 'number' | 'whole' | 'stepExpression' | 'expression' | 'season' | 'name' | 'modules' | 'points' | 'ages';
+export type ParamKind = 'number' | 'whole' | 'stepExpression' | 'expression' | 'season' | 'name' | 'modules' | 'points' | 'ages' | 'surface';
 
 /** One parameter of a module or a directive. */
 export interface Param {

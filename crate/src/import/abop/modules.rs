@@ -204,11 +204,11 @@ impl Importer {
                 format!("{tool}'s {name} is not a Meristem command; kept as a module the turtle ignores"),
             );
         }
-        if name.starts_with('~') && module_named(name).is_none() {
+        if name.starts_with('~') && module_named(name).is_none() && !self.view_declares(name) {
             self.note_once(
                 name,
                 n,
-                format!("{name} names a surface from a file; Meristem draws only ~l and ~p, so it is kept as a module the turtle ignores"),
+                format!("{name} names a surface the object's view file does not give (or whose file was not read): kept, and it draws nothing"),
             );
         }
         if name.chars().count() > 1
@@ -218,5 +218,17 @@ impl Importer {
             self.declared.push(name.to_string());
         }
         with(name, &params)
+    }
+}
+
+impl Importer {
+    /// True when the object's view file declares the surface `~X` that `name` draws (its
+    /// `surface: X file.s` line was read).
+    fn view_declares(&self, name: &str) -> bool {
+        self.cpfg.view.as_ref().is_some_and(|v| {
+            v.surface_letters
+                .iter()
+                .any(|letter| name.strip_prefix('~') == Some(letter.as_str()))
+        })
     }
 }

@@ -194,6 +194,7 @@ impl Resolver {
                     .map_or(v.decomposition_depth, |n| n as u32)
             }
             K::Module | K::Define | K::Random | K::Curve | K::Table => {}
+            K::Surface | K::Patch => {}
             K::Draw => s.draw.extend(self.module_ids(d)),
             K::Ignore => v.ignore.extend(self.module_ids(d)),
             K::Apex => v.apex.extend(self.module_ids(d)),
@@ -251,7 +252,8 @@ impl Resolver {
                 | ParamKind::Name
                 | ParamKind::Modules
                 | ParamKind::Points
-                | ParamKind::Ages => None,
+                | ParamKind::Ages
+                | ParamKind::Surface => None,
             };
             match arg {
                 Some(arg) => args.push(arg),

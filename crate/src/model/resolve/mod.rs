@@ -7,9 +7,10 @@ mod definitions;
 mod directives;
 mod rules;
 mod scope;
+mod surfaces;
 mod timed;
 
-use super::{Alphabet, Curve, GroupIds, Model, ModuleId, RuleSet, SuccessorModule};
+use super::{Alphabet, Curve, GroupIds, Model, ModuleId, RuleSet, SuccessorModule, SurfaceShape};
 use crate::diagnostics::Diagnostic;
 use crate::syntax::{ExprSyntax, Section, SourceFile};
 use crate::vocabulary::{module_named, name_of, Command, GroupKind, Meaning, ModuleInfo, MODULES};
@@ -25,7 +26,8 @@ pub fn resolve(file: &SourceFile) -> (Option<Model>, Vec<Diagnostic>) {
     let fixed = r.fixed_ids();
     r.dt = timed::written_dt(file).unwrap_or(r.dt);
     let randoms = r.definitions(file);
-    let values = r.directives(file);
+    let mut values = r.directives(file);
+    values.settings.surfaces = r.surfaces(file);
     let random_variables = r.random_variables(&randoms);
 
     let Some((axiom_syntax, axiom_span)) = &file.axiom else {
@@ -51,7 +53,8 @@ pub fn resolve(file: &SourceFile) -> (Option<Model>, Vec<Diagnostic>) {
         r.index(set);
     }
 
-    let meanings = meanings(&r.alphabet, &values.settings.draw);
+    let sets = [&productions, &homomorphism, &decomposition];
+    let meanings = r.meanings_and_surfaces(&values.settings, &axiom, sets);
     let ignored = ignored(&r.alphabet, &values, &fixed);
     let everywhere = |f: &dyn Fn(&SuccessorModule) -> bool| {
         any_module(&axiom, f)
@@ -184,19 +187,57 @@ impl Resolver {
     }
 }
 
-/// For each module id: its vocabulary row (`F`'s for the modules `#draw` lists).
-fn meanings(alphabet: &Alphabet, draw: &[ModuleId]) -> Vec<Option<&'static ModuleInfo>> {
+impl Resolver {
+    /// [`meanings`], warning of each `~X` drawn but not declared.
+    fn meanings_and_surfaces(
+        &mut self,
+        settings: &super::Settings,
+        axiom: &[SuccessorModule],
+        sets: [&RuleSet; 3],
+    ) -> Vec<Option<&'static ModuleInfo>> {
+        let meanings = meanings(&self.alphabet, &settings.draw, &settings.surfaces);
+        self.check_surfaces_drawn(&meanings, &settings.surfaces, axiom, sets);
+        meanings
+    }
+}
+
+/// For each module id: its vocabulary row (`F`'s for the modules `#draw` lists, `~X`'s for the
+/// surfaces `#surface` and `#patch` declare, `~l` and `~p` too).
+fn meanings(
+    alphabet: &Alphabet,
+    draw: &[ModuleId],
+    surfaces: &[Arc<SurfaceShape>],
+) -> Vec<Option<&'static ModuleInfo>> {
     let forward = module_named(name_of(Meaning::Turtle(Command::Forward)));
+    let surface = module_named(name_of(Meaning::Turtle(Command::Surface)));
     (0..alphabet.len())
         .map(|i| {
             let id = ModuleId(i as u32);
             if draw.contains(&id) {
                 forward
+            } else if surface_index(alphabet.name(id), surfaces).is_some() {
+                surface
             } else {
                 module_named(alphabet.name(id))
             }
         })
         .collect()
+}
+
+/// The index in `surfaces` of the surface a module named `name` draws (`~X` with X declared).
+pub fn surface_index(name: &str, surfaces: &[Arc<SurfaceShape>]) -> Option<usize> {
+    let letter = surface_letter(name)?;
+    surfaces.iter().position(|s| s.letter == letter)
+}
+
+/// X, for a module name `~X` of one ASCII letter.
+fn surface_letter(name: &str) -> Option<char> {
+    let surface = name_of(Meaning::Turtle(Command::Surface));
+    let prefix = surface.strip_suffix(|c: char| c.is_ascii_alphabetic())?;
+    match *name.strip_prefix(prefix)?.as_bytes() {
+        [c] if c.is_ascii_alphabetic() => Some(char::from(c)),
+        _ => None,
+    }
 }
 
 /// For each module id: skipped by context matching (`#ignore`, or left out by `#consider`). The

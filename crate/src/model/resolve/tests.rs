@@ -14,9 +14,11 @@ fn valid_arguments(kind: DirectiveKind) -> String {
             ParamKind::Name => "k".to_string(),
             ParamKind::Expression => "uniform(0, 1)".to_string(),
             ParamKind::Modules => "A".to_string(),
+            ParamKind::Points if kind == DirectiveKind::Patch => vec!["0 0 0"; 16].join(", "),
             ParamKind::Points => "0 0 0.3 0.2 0.6 0.9 1 1".to_string(),
             ParamKind::Season => p.choices[0].to_string(),
             ParamKind::Ages => "A 2 B 1".to_string(),
+            ParamKind::Surface => "petal precision 6 6".to_string(),
             _ => {
                 let v = p
                     .default_value(|_| 1.0)

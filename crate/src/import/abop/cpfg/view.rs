@@ -34,7 +34,7 @@ impl Importer {
                     .line(format!("{} {values}", DirectiveKind::Tropism.written()), 0);
             }
         }
-        for line in &view.palette {
+        for line in view.palette.iter().chain(&view.surfaces) {
             self.out.line(line.clone(), 0);
         }
         for f in view.functions.iter().flatten() {
