@@ -19,7 +19,10 @@ pub use settings::{
     directive_default, Bend, GrowthAttributes, Lifetime, Settings, Shape, ShapeWidth, Speed, Sun,
     DEFAULT_PALETTE,
 };
-pub use surface::{organ_patches, Patch, SurfaceShape, WrittenPoint, MAX_PATCHES, MAX_PRECISION};
+pub use surface::{
+    organ_patches, Frame, Patch, SurfaceShape, WrittenPoint, LIBRARY_PRECISION, MAX_PATCHES,
+    MAX_PRECISION,
+};
 
 use crate::syntax::{Section, Span};
 use crate::vocabulary::{Command, ModuleInfo};

@@ -16,7 +16,8 @@
 //! The files: `build.rs` ([`build()`], [`Build`], [`BuildOptions`]), `hooks.rs` ([`Hooks`],
 //! [`Stage`], [`Progress`], [`StageTimings`]), `observer.rs` (growth and the turtle following a
 //! derivation), `step_on.rs` ([`build_on`]: a build that continues an earlier one's derivation),
-//! `plant.rs`, `inspector.rs`, `editor.rs`, `export.rs`.
+//! `plant.rs`, `inspector.rs`, `editor.rs`, `export.rs`, `surface_preview.rs` ([`surface_preview`]:
+//! one declared surface for the studio's surface editor).
 
 mod build;
 mod editor;
@@ -26,6 +27,7 @@ mod inspector;
 mod observer;
 mod plant;
 mod step_on;
+mod surface_preview;
 
 pub use build::{build, build_with, Build, BuildOptions};
 pub use editor::{BranchInfo, PlantEditor};
@@ -34,6 +36,7 @@ pub use hooks::{Hooks, Progress, Stage, StageTimings};
 pub use inspector::{Explained, Inspector};
 pub use plant::Plant;
 pub use step_on::{build_on, why_not_continued};
+pub use surface_preview::{surface_preview, SurfacePreview};
 
 #[cfg(test)]
 mod tests;
