@@ -1,7 +1,7 @@
 // End-to-end: the surface editor (issue 46) in the built studio. A flower whose petal is the
 // library's: the Surfaces menu opens the editor, which writes the petal out as patch lines; a drag
 // of a control point with the mouse rewrites its x y z in the text and the plant's pixels change;
-// one Ctrl+Z in the text restores the text before the drag (Ctrl+Shift+Z brings the drag back); the
+// one Ctrl+Z in the text restores the text before the drag (Ctrl+Y brings the drag back); the
 // glTF from the Download menu carries the moved point and passes the Khronos validator. Screenshots
 // at laptop size, at 200 % and on a phone (touch).
 import { readFileSync } from 'node:fs';
@@ -88,9 +88,9 @@ describe('the surface editor', () => {
     await page.locator('[data-testid=editor] .cm-content').click();
     await page.keyboard.press('Control+z');
     expect(await editorText(page)).toBe(written);
-    await page.keyboard.press('Control+Shift+z');
+    await page.keyboard.press('Control+y'); // and the drag back, for the download
     expect(await editorText(page)).toBe(dragged);
-    await nextBuild(page, await generation(page) - 1);
+    await page.waitForFunction((source) => window.__meristem?.preview?.lastResult?.source === source && window.__meristem.preview.settled, dragged);
   });
 
   it('exports the edited petal as valid glTF that carries the moved point', async () => {

@@ -1,7 +1,7 @@
 // The grammar editor: CodeMirror 6 with the grammar language and the core's diagnostics.
 import { basicSetup } from 'codemirror';
 import { Decoration, EditorView, type DecorationSet } from '@codemirror/view';
-import { type EditorState, StateEffect, StateField, Transaction, type TransactionSpec } from '@codemirror/state';
+import { type Annotation, type EditorState, StateEffect, StateField, Transaction, type TransactionSpec } from '@codemirror/state';
 import { forceLinting, openLintPanel } from '@codemirror/lint';
 import { isolateHistory } from '@codemirror/commands';
 import { grammarCompletion } from './completion';
@@ -10,21 +10,26 @@ import { commandHover } from './hover';
 import { grammarLinting, relint } from './diagnostics';
 import { studioEditorTheme } from './theme';
 import { surfaceGutter } from './surface-gutter';
-import type { GrammarEditor, GrammarEditorOptions } from './grammar-text';
+import type { GrammarEditor, GrammarEditorOptions, HistoryStep } from './grammar-text';
 import type { TextChange } from './growth-directives';
 
 export type { GrammarEditor, GrammarEditorOptions };
 
 /**
- * The transaction of {@link GrammarEditor.replaceRanges}: with history, an undo step of its own
- * (isolated before and after); without, a change the history skips.
+ * The transaction of {@link GrammarEditor.replaceRanges}. A drag's steps are history events that
+ * CodeMirror's history joins into one (a typing-like user event, adjacent changes, all stamped
+ * with the drag's start time so that no pause splits them), isolated from what comes before the
+ * first and after the last: no change is kept out of the history, since the history maps its older
+ * events through such changes and an undo past them would then leave their text behind.
  */
-export function rangesTransaction(changes: readonly TextChange[], { history = true }: { history?: boolean } = {}): TransactionSpec {
-  return {
-    changes: changes.map(({ from, to, insert }) => ({ from, to, insert })),
-    userEvent: 'input',
-    annotations: history ? [isolateHistory.of('full')] : [Transaction.addToHistory.of(false)],
-  };
+export function rangesTransaction(changes: readonly TextChange[], { history = true }: { history?: HistoryStep } = {}): TransactionSpec {
+  const spec = { changes: changes.map(({ from, to, insert }) => ({ from, to, insert })), userEvent: 'input' };
+  if (history === true) return { ...spec, annotations: isolateHistory.of('full') };
+  if (history === false) return { ...spec, annotations: Transaction.addToHistory.of(false) };
+  const annotations: Annotation<unknown>[] = [Transaction.time.of(history.drag)];
+  if (history.step === 'first') annotations.push(isolateHistory.of('before'));
+  if (history.step === 'last') annotations.push(isolateHistory.of('after'));
+  return { ...spec, userEvent: 'input.type.drag', annotations };
 }
 
 /** Sets (or clears, with null) the marked production range. */

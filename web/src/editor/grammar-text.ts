@@ -28,6 +28,13 @@ export interface GrammarEditorOptions {
   openSurface?: (letter: string) => void;
 }
 
+/**
+ * How a change enters the undo history: as one undo step of its own (true), not at all (false: a
+ * change undo skips), or as a step of a drag: the steps of one drag (the same `drag`, a time in
+ * ms) make one undo step, which the first step starts and the last (no change needed) closes.
+ */
+export type HistoryStep = boolean | { drag: number; step: 'first' | 'next' | 'last' };
+
 /** The grammar text on the page: the placeholder's until the editor has loaded, then the editor's. */
 export interface GrammarEditor {
   /** The current grammar text. */
@@ -52,10 +59,10 @@ export interface GrammarEditor {
   replaceRange(from: number, to: number, insert: string, options?: { history?: boolean }): void;
   /**
    * Replaces several ranges at once (offsets in the text before the change; none overlapping) in
-   * one transaction: with history, one undo step of its own, never joined to the typing or the
-   * edit before it; with `history: false`, a change undo skips (the steps of a drag).
+   * one transaction, which enters the undo history as {@link HistoryStep} says (by default, one
+   * undo step of its own, never joined to the typing or the edit before or after it).
    */
-  replaceRanges(changes: readonly TextChange[], options?: { history?: boolean }): void;
+  replaceRanges(changes: readonly TextChange[], options?: { history?: HistoryStep }): void;
   /** Marks a range (a production picked elsewhere) and scrolls it into view; null clears the mark. */
   markProduction(range: { from: number; to: number } | null): void;
   /**

@@ -51,14 +51,35 @@ describe('a drag of a control point', () => {
     expect(editor.text()).toBe(GRAMMAR);
   });
 
-  it('leaves no undo step when the point comes back where it was', () => {
+  it('leaves the text as it was when the point comes back where it began', () => {
     const editor = editorOn(GRAMMAR);
     const edit = new PointEdit(editor, [FIRST]);
     edit.move([2, 2, 2]);
     edit.move([0, 0, 0]);
     edit.end();
     expect(editor.text()).toBe(GRAMMAR);
-    expect(undoDepth(editor.state)).toBe(0);
+    editor.undo();
+    expect(editor.text()).toBe(GRAMMAR);
+  });
+
+  it('is one undo step, even inside text an earlier undo step wrote, and however long it pauses', async () => {
+    // The patch line is written by one undo step (as the editor writes a library shape out), then
+    // a point of it is dragged: undoing both gives back the text before either, nothing left over.
+    const editor = editorOn('axiom: ~A\n');
+    editor.replaceRanges([{ from: 10, to: 10, insert: '#patch A 0 0 0, 1 0 0, 0 0 0\n' }]);
+    expect(editor.text()).toBe(GRAMMAR);
+    const edit = new PointEdit(editor, [FIRST, THIRD]);
+    edit.move([0.5, 0, 0]);
+    await new Promise((resolve) => setTimeout(resolve, 600)); // longer than CodeMirror's pause between undo steps
+    edit.move([0.75, 0, 0]);
+    edit.end();
+    editor.type(0, '// typed after\n');
+    expect(undoDepth(editor.state)).toBe(3);
+    editor.undo();
+    editor.undo();
+    expect(editor.text()).toBe(GRAMMAR);
+    editor.undo();
+    expect(editor.text()).toBe('axiom: ~A\n');
   });
 
   it('stops when the text changes under it, and never writes over what was typed', () => {

@@ -1,15 +1,16 @@
 // A control point moved through the grammar text: every step of a drag rewrites its `x y z`
-// (and its copies' where patches meet) outside the undo history, so that the plant follows live
-// through the text's ordinary rebuild; the drag's end makes it one undo step, from the text before
-// the drag to the text after it (Ctrl+Z after a drag restores the text before it).
+// (and its copies' where patches meet) at once, so that the plant follows live through the text's
+// ordinary rebuild, and the steps of one drag make one undo step (Ctrl+Z after a drag restores the
+// text before it). A nudge or a number typed is an edit of one step.
 import type { Point3 } from '../../core';
+import type { HistoryStep } from '../../editor/grammar-text';
 import type { TextChange } from '../../editor/growth-directives';
-import { movePoints, pointText, replaceSpans, type PointSpan } from './point-text';
+import { movePoints, pointText, type PointSpan } from './point-text';
 
 /** What a point edit needs of the grammar editor. */
 export interface PointTextEditor {
   text(): string;
-  replaceRanges(changes: readonly TextChange[], options?: { history?: boolean }): void;
+  replaceRanges(changes: readonly TextChange[], options?: { history?: HistoryStep }): void;
 }
 
 /** One control point's edit (a drag, a nudge or a number typed): {@link move} as often as it goes, then {@link end}. */
@@ -21,6 +22,8 @@ export class PointEdit {
   private written: string | undefined;
   /** The text changed under the edit (the user typed): it writes nothing more. */
   private stale = false;
+  /** The edit's undo step: its steps carry this time, which joins them. */
+  private readonly drag = Date.now();
 
   constructor(
     private readonly editor: PointTextEditor,
@@ -36,33 +39,24 @@ export class PointEdit {
     return !this.stale;
   }
 
-  /** Writes `point` at every span, outside the undo history; false when the text changed under the edit (it has stopped). */
+  /** Writes `point` at every span; false when the text changed under the edit (it has stopped). */
   move(point: Point3): boolean {
     if (!this.holds()) return false;
     const insert = pointText(point);
     if (insert === this.written || (this.written === undefined && this.before.every((b) => b === insert))) return true;
     const { changes, spans } = movePoints(this.spans, point);
-    this.editor.replaceRanges(changes, { history: false });
+    const step = this.written === undefined ? 'first' : 'next';
+    this.editor.replaceRanges(changes, { history: { drag: this.drag, step } });
     this.spans = spans;
     this.written = insert;
     return true;
   }
 
-  /**
-   * Ends the edit: the text before it, then the text now, written again as one undo step (nothing
-   * when the point is back where it was, or the text changed under the edit).
-   */
+  /** Ends the edit: its steps are one undo step, closed to what comes after. */
   end(): void {
-    if (this.written === undefined || !this.holds()) return;
-    const final = this.written;
+    if (this.written === undefined) return;
     this.written = undefined;
-    const restored = replaceSpans(this.spans, this.before);
-    this.editor.replaceRanges(restored.changes, { history: false });
-    this.spans = restored.spans;
-    if (this.before.every((b) => b === final)) return;
-    const done = replaceSpans(this.spans, this.spans.map(() => final));
-    this.editor.replaceRanges(done.changes, { history: true });
-    this.spans = done.spans;
+    this.editor.replaceRanges([], { history: { drag: this.drag, step: 'last' } });
   }
 
   /** The spans still hold what the edit last wrote (or what they held when it began). */
