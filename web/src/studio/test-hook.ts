@@ -4,7 +4,7 @@ import type { PlantStats } from '../core';
 import type { PlantView } from '../view';
 import type { BranchEdits } from './branches';
 import type { LivePreview } from './preview';
-import type { LazySurfaceEditing } from './surfaces';
+import type { SurfaceEditing } from './surfaces';
 
 /** The studio as its tests see it. */
 export interface StudioTestHook {
@@ -57,7 +57,7 @@ export interface TestedStudio {
   preview: LivePreview;
   view: PlantView;
   branchEdits: BranchEdits;
-  surfaces: LazySurfaceEditing;
+  surfaces: SurfaceEditing;
 }
 
 /** Fills `hook` from the studio's pieces and keeps it current as builds arrive and frames are drawn. */

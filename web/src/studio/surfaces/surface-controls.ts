@@ -74,7 +74,7 @@ export function makeSurfaceControls(): SurfaceControls {
         field('Point', c.point),
         make('div', { className: 'surface-xyz' }, field('x', c.coordinates[0]), field('y', c.coordinates[1]), field('z', c.coordinates[2])),
         field('Drag', c.axis),
-        make('p', { className: 'hint', textContent: 'Drag a point to move it: the grammar follows, one undo step per drag (Ctrl+Z in the text). Drag elsewhere to turn the view.' }),
+        make('p', { className: 'hint', textContent: 'Drag a point: the text follows (Ctrl+Z there undoes a drag). Drag elsewhere to turn the view.' }),
         c.frame,
       ),
     ),

@@ -27,7 +27,7 @@ import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import type { Point3, SurfacePreview } from '../../core';
 
 /** The colours of the view: the surface's front and back, the net, the selected point, the turtle's axes. */
-const COLOURS = { front: 0xe58fb5, back: 0xc9b8c4, net: 0xff7a00, selected: 0x1769d1, heading: 0x2e7d32, up: 0x1769d1, contact: 0x222222, end: 0x8e24aa } as const;
+const COLOURS = { front: 0xe58fb5, back: 0xc9b8c4, net: 0xff7a00, selected: 0x1769d1, heading: 0x2e7d32, up: 0x1769d1, contact: 0x111111, end: 0x8e24aa } as const;
 
 /** Moving a point: in the plane facing the camera, or along one axis of the written points (a direction in the view). */
 export type DragAxis = null | Vector3;
@@ -42,7 +42,7 @@ export class SurfaceScene {
   private readonly lines = new LineSegments(new BufferGeometry(), new LineBasicMaterial({ color: COLOURS.net, depthTest: false, transparent: true, opacity: 0.8 }));
   private readonly points = new Points(new BufferGeometry(), new PointsMaterial({ color: COLOURS.net, size: 9, sizeAttenuation: false, depthTest: false }));
   private readonly selection = new Points(new BufferGeometry(), new PointsMaterial({ color: COLOURS.selected, size: 15, sizeAttenuation: false, depthTest: false }));
-  private readonly contact = new Points(new BufferGeometry(), new PointsMaterial({ color: COLOURS.contact, size: 8, sizeAttenuation: false, depthTest: false }));
+  private readonly contact = new Points(new BufferGeometry(), new PointsMaterial({ color: COLOURS.contact, size: 11, sizeAttenuation: false, depthTest: false }));
   private readonly heading = new ArrowHelper(new Vector3(0, 1, 0), new Vector3(), 0.3, COLOURS.heading);
   private readonly up = new ArrowHelper(new Vector3(0, 0, 1), new Vector3(), 0.15, COLOURS.up);
   private readonly endPoint = new Points(new BufferGeometry(), new PointsMaterial({ color: COLOURS.end, size: 10, sizeAttenuation: false, depthTest: false }));
@@ -63,6 +63,14 @@ export class SurfaceScene {
     this.points.renderOrder = 11;
     this.selection.renderOrder = 12;
     this.contact.geometry.setAttribute('position', new BufferAttribute(new Float32Array(3), 3));
+    // The turtle's axes and the contact point are drawn over the surface, never hidden by it.
+    for (const arrow of [this.heading, this.up]) {
+      for (const part of [arrow.line, arrow.cone]) {
+        part.renderOrder = 13;
+        Object.assign(part.material, { depthTest: false, transparent: true });
+      }
+    }
+    this.contact.renderOrder = 14;
     this.controls = new OrbitControls(this.camera, canvas);
     this.controls.addEventListener('change', () => this.requestFrame());
     this.resize = new ResizeObserver(() => this.fit());
