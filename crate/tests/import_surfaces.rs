@@ -48,39 +48,38 @@ fn per_surface(b: &Build, k: usize) -> usize {
     2 * shape.patches.len() * s * t
 }
 
+/// Imports the corpus object `name`, checks that no note is about a surface and that it declares
+/// `shapes` (letter, patches), builds it and checks that the mesh holds every drawn surface's
+/// vertices. Returns the text and the surfaces drawn of each shape.
+fn imported(name: &str, shapes: [(char, usize); 2]) -> (String, Build, Vec<usize>) {
+    let import = import::import_object(&corpus(name));
+    let notes: Vec<&str> = import.notes.iter().map(|n| n.message.as_str()).collect();
+    assert!(!notes.iter().any(|n| n.contains("surface")), "{notes:?}");
+    let b = built(&import);
+    let declared: Vec<(char, usize)> = b
+        .plant
+        .skeleton
+        .shapes
+        .iter()
+        .map(|s| (s.letter, s.patches.len()))
+        .collect();
+    assert_eq!(declared, shapes);
+    let (counts, vertices) = drawn(&b);
+    let expected = counts[0] * per_surface(&b, 0) + counts[1] * per_surface(&b, 1);
+    assert_eq!(vertices, expected);
+    (import.text, b, counts)
+}
+
 #[test]
 fn lychnis_draws_its_petals_and_leaves_from_its_s_files() {
-    let import = import::import_object(&corpus("01-Lychnis"));
+    let (text, b, counts) = imported("01-Lychnis", [('p', 1), ('l', 1)]);
     // plant.v: `surface: p petal.s 2 6 6`, `surface: l leaf.s 6 6 10`; petal.s's header.
-    assert!(import.text.contains(
-        "#surface p contact 23.44 4.08 -9.23 end 23.63 5.46 -8.91 heading 0.01 1 0.03 up 0.02 -0.03 1 size 39.46 scale 2 precision 6 6\n"
-    ), "{}", import.text);
-    assert!(import
-        .text
-        .contains("#patch p 21.18 5.46 -9.72, 12.57 15 4.03, -5.96 55.04 -10.39,"));
-    assert!(import.text.contains(" scale 6 precision 6 10\n#patch l "));
-    assert!(
-        !import.notes.iter().any(|n| n.message.contains("surface")),
-        "{:?}",
-        import.notes
-    );
-    let b = built(&import);
-    let shapes = &b.plant.skeleton.shapes;
-    assert_eq!(
-        shapes
-            .iter()
-            .map(|s| (s.letter, s.patches.len()))
-            .collect::<Vec<_>>(),
-        [('p', 1), ('l', 1)]
-    );
-    let (counts, vertices) = drawn(&b);
+    let petal = "#surface p contact 23.44 4.08 -9.23 end 23.63 5.46 -8.91 heading 0.01 1 0.03 up 0.02 -0.03 1 size 39.46 scale 2 precision 6 6\n";
+    assert!(text.contains(petal), "{text}");
+    assert!(text.contains("#patch p 21.18 5.46 -9.72, 12.57 15 4.03, -5.96 55.04 -10.39,"));
+    assert!(text.contains(" scale 6 precision 6 10\n#patch l "));
     // Every flower has 5 petals (K(t) → five R(t), each with its ~p).
     assert_eq!(counts[0] % 5, 0);
-    assert!(counts[0] > 0 && counts[1] > 0, "{counts:?}");
-    assert_eq!(
-        vertices,
-        counts[0] * per_surface(&b, 0) + counts[1] * per_surface(&b, 1)
-    );
     assert_eq!(per_surface(&b, 0), 2 * 7 * 7);
     assert_eq!(per_surface(&b, 1), 2 * 7 * 11);
     // Regression values of this translation (cpfg cannot run here).
@@ -92,27 +91,9 @@ const LYCHNIS_LEAVES: usize = 130;
 
 #[test]
 fn lilac_draws_its_four_patch_calyx_and_its_petals() {
-    let import = import::import_object(&corpus("Lilac"));
-    assert!(import.text.contains("#surface c contact 0 0 370 end 0 0 -0.46 heading 0.01 0.01 -1 up 0.01 -1 -0.01 size 370 scale 2 precision 5 5\n"), "{}", import.text);
-    assert!(
-        !import.notes.iter().any(|n| n.message.contains("surface")),
-        "{:?}",
-        import.notes
-    );
-    let b = built(&import);
-    let shapes = &b.plant.skeleton.shapes;
-    assert_eq!(
-        shapes
-            .iter()
-            .map(|s| (s.letter, s.patches.len()))
-            .collect::<Vec<_>>(),
-        [('p', 1), ('c', 4)]
-    );
-    let (counts, vertices) = drawn(&b);
-    assert_eq!(
-        vertices,
-        counts[0] * per_surface(&b, 0) + counts[1] * per_surface(&b, 1)
-    );
+    let (text, _, counts) = imported("Lilac", [('p', 1), ('c', 4)]);
+    let calyx = "#surface c contact 0 0 370 end 0 0 -0.46 heading 0.01 0.01 -1 up 0.01 -1 -0.01 size 370 scale 2 precision 5 5\n";
+    assert!(text.contains(calyx), "{text}");
     // plant.l's flower K: one calyx ~c(4) and four petals ~p(P_SIZE).
     assert_eq!(counts[0], 4 * counts[1]);
     // Regression values of this translation (cpfg cannot run here).

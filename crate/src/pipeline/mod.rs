@@ -16,8 +16,10 @@
 //! The files: `build.rs` ([`build()`], [`Build`], [`BuildOptions`]), `hooks.rs` ([`Hooks`],
 //! [`Stage`], [`Progress`], [`StageTimings`]), `observer.rs` (growth and the turtle following a
 //! derivation), `step_on.rs` ([`build_on`]: a build that continues an earlier one's derivation),
-//! `plant.rs`, `inspector.rs`, `editor.rs`, `export.rs`, `surface_preview.rs` ([`surface_preview`]:
-//! one declared surface for the studio's surface editor).
+//! `plant.rs`, `inspector.rs`, `editor.rs`, `export.rs`, `surfaces.rs` ([`declared_surfaces`]: the
+//! `#surface` / `#patch` declarations with the text of each control point, for a surface editor),
+//! `surface_preview.rs` ([`surface_preview`]: one declared surface as the studio's surface editor
+//! shows it, meshed, with its frame and a library shape's text written out).
 
 mod build;
 mod editor;
@@ -28,6 +30,7 @@ mod observer;
 mod plant;
 mod step_on;
 mod surface_preview;
+mod surfaces;
 
 pub use build::{build, build_with, Build, BuildOptions};
 pub use editor::{BranchInfo, PlantEditor};
@@ -37,6 +40,7 @@ pub use inspector::{Explained, Inspector};
 pub use plant::Plant;
 pub use step_on::{build_on, why_not_continued};
 pub use surface_preview::{surface_preview, SurfacePreview};
+pub use surfaces::{declared_surfaces, DeclaredPoint, DeclaredSurface};
 
 #[cfg(test)]
 mod tests;
