@@ -2,9 +2,12 @@
 // library's: the Surfaces menu opens the editor, which writes the petal out as patch lines; a drag
 // of a control point with the mouse rewrites its x y z in the text and the plant's pixels change;
 // one Ctrl+Z in the text restores the text before the drag (Ctrl+Y brings the drag back); the
-// glTF from the Download menu carries the moved point and passes the Khronos validator. Screenshots
-// at laptop size, at 200 % and on a phone (touch).
+// glTF from the Download menu carries the moved point and passes the Khronos validator; the chosen
+// point nudged from the keyboard; a broken patch line typed while the editor is open is an error it
+// shows. Screenshots at laptop size, at 200 % and on a phone (touch), where axe finds no serious
+// accessibility problem in the dialog.
 import { readFileSync } from 'node:fs';
+import { AxeBuilder } from '@axe-core/playwright';
 import { validateBytes } from 'gltf-validator';
 import { describe, expect, it, vi } from 'vitest';
 import { differingShare } from './pictures';
@@ -98,6 +101,29 @@ describe('the surface editor', () => {
     expect(top).toBeGreaterThan(plainTop + 0.05);
     expect(problems).toEqual([]);
   });
+
+  it('moves the chosen point from the keyboard, and says what is wrong when the text breaks', async () => {
+    const before = await editorText(page);
+    await page.getByTestId('surface-point').selectOption('0'); // the base of the midrib, 0 0 0
+    await page.getByTestId('surface-view').focus();
+    await page.keyboard.press('ArrowRight'); // x + 0.01 (a hundredth of the petal, rounded to a power of ten)
+    await expect.poll(() => page.getByTestId('surface-x').inputValue()).toBe('0.01');
+    const nudged = await editorText(page);
+    expect(nudged.split('\n')[1].startsWith('#patch P 0.01 0 0, ')).toBe(true);
+    expect(nudged.split('\n')[2]).toContain(', 0.01 0 0, -0.28'); // its copy in the other half: the seam stays closed
+    // A patch line with too few numbers, typed while the editor is open: the error, no crash.
+    await page.locator('[data-testid=editor] .cm-content').click();
+    await page.keyboard.press('Control+End');
+    await page.keyboard.type('\n#patch P 1 2');
+    await expect.poll(() => page.getByTestId('surface-status').textContent()).toContain('E0220');
+    expect(await page.getByTestId('surface-status').getAttribute('data-state')).toBe('error');
+    for (let k = 0; k < 3 && (await editorText(page)) !== nudged; k++) await page.keyboard.press('Control+z');
+    expect(await editorText(page)).toBe(nudged);
+    await page.keyboard.press('Control+z'); // the nudge was one undo step
+    expect(await editorText(page)).toBe(before);
+    await expect.poll(() => page.getByTestId('surface-status').getAttribute('data-state')).toBe('ok');
+    expect(problems).toEqual([]);
+  });
 });
 
 describe('the surface editor at 200 % and on a phone', () => {
@@ -119,6 +145,9 @@ describe('the surface editor at 200 % and on a phone', () => {
     expect(box.width).toBeLessThanOrEqual(viewport.width + 1);
     expect(box.y + box.height).toBeLessThanOrEqual(viewport.height + 1);
     await opened.page.screenshot({ path: new URL(`surface-editor-${label}.png`, RESULTS).pathname });
+    // No serious or critical accessibility violation in the dialog (axe, WCAG 2.1 AA).
+    const audit = await new AxeBuilder({ page: opened.page }).include('[data-testid=surface-dialog]').withTags(['wcag2a', 'wcag2aa', 'wcag21aa']).analyze();
+    expect(audit.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical').map((v) => `${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`)).toEqual([]);
     expect(opened.problems).toEqual([]);
     await context.close();
   });

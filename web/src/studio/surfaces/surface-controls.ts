@@ -1,6 +1,7 @@
 // The surface editor's dialog, made (closed) in the page: a 3D view of the surface, the point
 // chosen with its x, y, z, the drag's axis, and what the core says of the surface. Made here, not
 // in index.html: it loads with the editor's code on first use.
+import { el as make } from '../page/make-element';
 import './surface-dialog.css';
 
 /** The dialog's elements. */
@@ -17,15 +18,6 @@ export interface SurfaceControls {
   axis: HTMLSelectElement;
   frame: HTMLButtonElement;
   close: HTMLButtonElement;
-}
-
-/** An element `tag` with `props` (and `testid`), and `children` appended. */
-function make<K extends keyof HTMLElementTagNameMap>(tag: K, props: Partial<HTMLElementTagNameMap[K]> & { testid?: string } = {}, ...children: (Node | string)[]): HTMLElementTagNameMap[K] {
-  const { testid, ...rest } = props;
-  const element = Object.assign(document.createElement(tag), rest);
-  if (testid) element.dataset.testid = testid;
-  element.append(...children);
-  return element;
 }
 
 /** Builds the dialog (closed) in `document.body`. */
