@@ -189,6 +189,7 @@ mod tests {
             precision: [precision; 2],
             end: None,
             organ: Some(organ),
+            frame: Default::default(),
             written: Vec::new(),
         }
     }

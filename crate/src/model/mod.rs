@@ -20,7 +20,7 @@ pub use settings::{
     DEFAULT_PALETTE, ORGAN_COLOR,
 };
 #[cfg(feature = "surfaces")]
-pub use surface::organ_patches;
+pub use surface::{organ_patches, Frame, LIBRARY_PRECISION};
 pub use surface::{Patch, SurfaceShape, WrittenPoint, MAX_PATCHES, MAX_PRECISION};
 
 use crate::syntax::{Section, Span};

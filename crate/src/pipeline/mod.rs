@@ -16,8 +16,9 @@
 //! The files: `build.rs` ([`build()`], [`Build`], [`BuildOptions`]), `hooks.rs` ([`Hooks`],
 //! [`Stage`], [`Progress`], [`StageTimings`]), `observer.rs` (growth and the turtle following a
 //! derivation), `step_on.rs` ([`build_on`]: a build that continues an earlier one's derivation),
-//! `plant.rs`, `inspector.rs`, `editor.rs`, `export.rs`, `surfaces.rs` ([`declared_surfaces`]: the
-//! `#surface` / `#patch` declarations with the text of each control point, for a surface editor).
+//! `plant.rs`, `inspector.rs`, `editor.rs`, `export.rs`, `surface_preview.rs` ([`surface_preview`]: one
+//! declared surface as the studio's surface editor shows it: meshed, its control points with the
+//! text of each, its frame, and a library shape's text written out as `#patch` lines).
 
 mod build;
 mod editor;
@@ -27,7 +28,8 @@ mod inspector;
 mod observer;
 mod plant;
 mod step_on;
-mod surfaces;
+#[cfg(feature = "surfaces")]
+mod surface_preview;
 
 pub use build::{build, build_with, Build, BuildOptions};
 pub use editor::{BranchInfo, PlantEditor};
@@ -36,7 +38,8 @@ pub use hooks::{Hooks, Progress, Stage, StageTimings};
 pub use inspector::{Explained, Inspector};
 pub use plant::Plant;
 pub use step_on::{build_on, why_not_continued};
-pub use surfaces::{declared_surfaces, DeclaredPoint, DeclaredSurface};
+#[cfg(feature = "surfaces")]
+pub use surface_preview::{surface_preview, SurfacePreview};
 
 #[cfg(test)]
 mod tests;

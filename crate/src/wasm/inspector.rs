@@ -121,21 +121,6 @@ impl PlantInspector {
     }
 
     /// A fingerprint of the derived string (16 hex digits): equal for equal derivations.
-    /// The surfaces the grammar declares (`#surface`, `#patch`), as JSON: `[{letter, organ,
-    /// precision: [s, t], patches, points: [{patch, index, value: [x, y, z], from, to}]}]`, where
-    /// `from`..`to` is the byte range of a `#patch` point's three numbers in the grammar's text
-    /// (what a surface editor rewrites); `[]` without a model.
-    #[cfg(feature = "studio-extras")]
-    pub fn surfaces(&self) -> String {
-        let surfaces = self
-            .build
-            .model
-            .as_ref()
-            .map(pipeline::declared_surfaces)
-            .unwrap_or_default();
-        serde_json::to_string(&surfaces).unwrap_or_else(|_| "[]".into())
-    }
-
     #[wasm_bindgen(js_name = derivedHash)]
     pub fn derived_hash(&self) -> String {
         self.build

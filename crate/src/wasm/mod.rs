@@ -13,8 +13,8 @@
 //!
 //! The files: `options` (the options objects: their one reader and their TypeScript interfaces,
 //! from one table), `build`, `build_on` (a build that continues a kept one's derivation), `mesh_arrays` (the typed-array getters of a build and an editor, one
-//! row per array), `inspector`, `editor`, `export`, `import`, `bench` (the benchmarks' entry
-//! points) and `panic` (the crash path).
+//! row per array), `inspector`, `editor`, `export`, `import`, `surface` (one declared surface for
+//! the surface editor), `bench` (the benchmarks' entry points) and `panic` (the crash path).
 #![deny(clippy::unwrap_used)]
 
 #[macro_use]
@@ -33,6 +33,8 @@ mod import;
 mod inspector;
 mod options;
 mod panic;
+#[cfg(all(feature = "studio-extras", feature = "surfaces"))]
+mod surface;
 
 #[cfg(feature = "studio-extras")]
 pub use bench::{build_sketch, Grammar};
@@ -52,6 +54,8 @@ pub use options::{BuildOptionsObject, SketchFirstObject, ViewOptionsObject, BUIL
 #[cfg(feature = "io")]
 pub use options::{ExportOptionsObject, SvgLookObject, EXPORT_TYPESCRIPT};
 pub use panic::{on_panic, panic_for_tests};
+#[cfg(all(feature = "studio-extras", feature = "surfaces"))]
+pub use surface::surface_preview_json;
 use wasm_bindgen::prelude::*;
 
 /// The core's version (the crate version).

@@ -41,7 +41,7 @@ import {
 const NO_TIMINGS: StageTimings = { parseResolve: 0, derive: 0, interpret: 0, mesh: 0 };
 
 /** A diagnostic as the core serialises it (byte offsets named `from`/`to`). */
-interface RawDiagnostic {
+export interface RawDiagnostic {
   severity: Severity;
   code: string;
   message: string;
@@ -416,7 +416,7 @@ class LiveInspector implements PlantInspector {
   }
 }
 
-function toDiagnostic(raw: RawDiagnostic): Diagnostic {
+export function toDiagnostic(raw: RawDiagnostic): Diagnostic {
   return {
     severity: raw.severity,
     code: raw.code,

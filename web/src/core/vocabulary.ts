@@ -98,6 +98,19 @@ export interface Vocabulary {
 
 let cached: Vocabulary | undefined;
 let loading: Promise<Vocabulary> | undefined;
+const arrivals: (() => void)[] = [];
+
+/** Calls `listener` once the vocabulary has arrived (at once if it has), without fetching it. */
+export function onVocabulary(listener: () => void): void {
+  if (cached) listener();
+  else arrivals.push(listener);
+}
+
+function arrived(vocabulary: Vocabulary): Vocabulary {
+  cached = vocabulary;
+  for (const listener of arrivals.splice(0)) listener();
+  return vocabulary;
+}
 
 /** The language's vocabulary, fetched once (browser); later calls return the same promise. */
 export function loadVocabulary(): Promise<Vocabulary> {
@@ -106,7 +119,7 @@ export function loadVocabulary(): Promise<Vocabulary> {
       if (!response.ok) throw new Error(`the vocabulary could not be fetched: HTTP ${response.status}`);
       return response.json() as Promise<Vocabulary>;
     })
-    .then((vocabulary) => (cached = vocabulary))
+    .then(arrived)
     .catch((error: unknown) => {
       loading = undefined; // tried again on the next call
       throw error;
@@ -115,7 +128,7 @@ export function loadVocabulary(): Promise<Vocabulary> {
 
 /** Sets the vocabulary without fetching it (node: tests and scripts read it from crate/pkg). */
 export function useVocabulary(vocabulary: Vocabulary): void {
-  cached = vocabulary;
+  arrived(vocabulary);
   loading = Promise.resolve(vocabulary);
 }
 

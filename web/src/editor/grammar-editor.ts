@@ -1,7 +1,7 @@
 // The grammar editor: CodeMirror 6 with the grammar language and the core's diagnostics.
 import { basicSetup } from 'codemirror';
 import { Decoration, EditorView, type DecorationSet } from '@codemirror/view';
-import { type EditorState, StateEffect, StateField, Transaction } from '@codemirror/state';
+import { type Annotation, type EditorState, StateEffect, StateField, Transaction, type TransactionSpec } from '@codemirror/state';
 import { forceLinting, openLintPanel } from '@codemirror/lint';
 import { isolateHistory } from '@codemirror/commands';
 import { grammarCompletion } from './completion';
@@ -9,9 +9,28 @@ import { grammarSupport } from './language';
 import { commandHover } from './hover';
 import { grammarLinting, relint } from './diagnostics';
 import { studioEditorTheme } from './theme';
-import type { GrammarEditor, GrammarEditorOptions } from './grammar-text';
+import { surfaceGutter } from './surface-gutter';
+import type { GrammarEditor, GrammarEditorOptions, HistoryStep } from './grammar-text';
+import type { TextChange } from './growth-directives';
 
 export type { GrammarEditor, GrammarEditorOptions };
+
+/**
+ * The transaction of {@link GrammarEditor.replaceRanges}. A drag's steps are history events that
+ * CodeMirror's history joins into one (a typing-like user event, adjacent changes, all stamped
+ * with the drag's start time so that no pause splits them), isolated from what comes before the
+ * first and after the last: no change is kept out of the history, since the history maps its older
+ * events through such changes and an undo past them would then leave their text behind.
+ */
+export function rangesTransaction(changes: readonly TextChange[], { history = true }: { history?: HistoryStep } = {}): TransactionSpec {
+  const spec = { changes: changes.map(({ from, to, insert }) => ({ from, to, insert })), userEvent: 'input' };
+  if (history === true) return { ...spec, annotations: isolateHistory.of('full') };
+  if (history === false) return { ...spec, annotations: Transaction.addToHistory.of(false) };
+  const annotations: Annotation<unknown>[] = [Transaction.time.of(history.drag)];
+  if (history.step === 'first') annotations.push(isolateHistory.of('before'));
+  if (history.step === 'last') annotations.push(isolateHistory.of('after'));
+  return { ...spec, userEvent: 'input.type.drag', annotations };
+}
 
 /** Sets (or clears, with null) the marked production range. */
 const markProductionEffect = StateEffect.define<{ from: number; to: number } | null>();
@@ -75,6 +94,7 @@ export function createGrammarEditor(options: GrammarEditorOptions, selection?: {
       EditorView.lineWrapping,
       EditorView.contentAttributes.of({ 'aria-label': 'L-system grammar' }),
       markedProduction,
+      options.openSurface ? surfaceGutter(options.openSurface) : [],
       EditorView.updateListener.of((update) => {
         if (update.docChanged || update.selectionSet) options.onCursor?.(update.state.selection.main.head);
       }),
@@ -106,6 +126,7 @@ export function createGrammarEditor(options: GrammarEditorOptions, selection?: {
         userEvent: 'input',
         annotations: history ? [] : [Transaction.addToHistory.of(false)],
       }),
+    replaceRanges: (changes, options) => view.dispatch(rangesTransaction(changes, options)),
     markProduction: (range) => {
       const length = view.state.doc.length;
       const clamped = range && { from: Math.min(range.from, length), to: Math.min(range.to, length) };

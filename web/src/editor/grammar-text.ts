@@ -6,6 +6,7 @@
 // Invariant: nothing here imports CodeMirror; `./grammar-editor` arrives by a dynamic import.
 import type { Vocabulary } from '../core';
 import type { Diagnose } from './diagnostics';
+import type { TextChange } from './growth-directives';
 
 /** What the grammar editor needs. */
 export interface GrammarEditorOptions {
@@ -23,7 +24,16 @@ export interface GrammarEditorOptions {
   onCursor?: (pos: number) => void;
   /** Opens the language reference at a row (`referenceAnchor`): hover docs link to it. */
   openReference?: (anchor: string) => void;
+  /** Opens the surface editor on surface X (the gutter's marker of a `#surface X`/`#patch X` line, Alt+B on it). */
+  openSurface?: (letter: string) => void;
 }
+
+/**
+ * How a change enters the undo history: as one undo step of its own (true), not at all (false: a
+ * change undo skips), or as a step of a drag: the steps of one drag (the same `drag`, a time in
+ * ms) make one undo step, which the first step starts and the last (no change needed) closes.
+ */
+export type HistoryStep = boolean | { drag: number; step: 'first' | 'next' | 'last' };
 
 /** The grammar text on the page: the placeholder's until the editor has loaded, then the editor's. */
 export interface GrammarEditor {
@@ -47,6 +57,12 @@ export interface GrammarEditor {
    * false` a change undo skips (the steps of a slider drag, made one undo step at its end).
    */
   replaceRange(from: number, to: number, insert: string, options?: { history?: boolean }): void;
+  /**
+   * Replaces several ranges at once (offsets in the text before the change; none overlapping) in
+   * one transaction, which enters the undo history as {@link HistoryStep} says (by default, one
+   * undo step of its own, never joined to the typing or the edit before or after it).
+   */
+  replaceRanges(changes: readonly TextChange[], options?: { history?: HistoryStep }): void;
   /** Marks a range (a production picked elsewhere) and scrolls it into view; null clears the mark. */
   markProduction(range: { from: number; to: number } | null): void;
   /**
@@ -72,7 +88,7 @@ export interface EditorModule {
  * the first plant); who hears of changes and of the cursor says so on the editor made
  * ({@link LazyGrammarEditor.onChange}), so that it can be made before them.
  */
-export type LazyGrammarEditorOptions = Omit<GrammarEditorOptions, 'vocabulary' | 'onChange' | 'onCursor'> & { vocabulary: () => Promise<Vocabulary> };
+export type LazyGrammarEditorOptions = Omit<GrammarEditorOptions, 'vocabulary' | 'onChange' | 'onCursor' | 'openSurface'> & { vocabulary: () => Promise<Vocabulary> };
 
 /** The grammar text on the page, which tells its listeners of every change and cursor move. */
 export interface LazyGrammarEditor extends GrammarEditor {
@@ -80,6 +96,8 @@ export interface LazyGrammarEditor extends GrammarEditor {
   onChange(listener: (text: string) => void): void;
   /** Calls `listener` with the cursor's position (UTF-16) whenever it moves or the text changes. */
   onCursor(listener: (pos: number) => void): void;
+  /** Calls `listener` with a surface's letter when the user asks to edit it from the text (the gutter, Alt+B). */
+  onOpenSurface(listener: (letter: string) => void): void;
 }
 
 /**
@@ -94,6 +112,8 @@ export function createLazyGrammarEditor(options: LazyGrammarEditorOptions, load:
   const cursorListeners: ((pos: number) => void)[] = [];
   const onChange = (text: string) => changeListeners.forEach((listener) => listener(text));
   const onCursor = (pos: number) => cursorListeners.forEach((listener) => listener(pos));
+  const surfaceListeners: ((letter: string) => void)[] = [];
+  const openSurface = (letter: string) => surfaceListeners.forEach((listener) => listener(letter));
   const area = document.createElement('textarea');
   area.className = 'grammar-placeholder';
   area.dataset.testid = 'grammar-placeholder';
@@ -117,7 +137,7 @@ export function createLazyGrammarEditor(options: LazyGrammarEditorOptions, load:
       const [start, end] = [area.selectionStart, area.selectionEnd];
       const selection = area.selectionDirection === 'backward' ? { anchor: end, head: start } : { anchor: start, head: end };
       const clamp = (n: number) => Math.min(n, area.value.length);
-      full = module.createGrammarEditor({ ...options, onChange, onCursor, vocabulary, doc: area.value }, { anchor: clamp(selection.anchor), head: clamp(selection.head) });
+      full = module.createGrammarEditor({ ...options, onChange, onCursor, openSurface, vocabulary, doc: area.value }, { anchor: clamp(selection.anchor), head: clamp(selection.head) });
       area.remove();
       if (hadFocus) full.focus();
     }, reportLoadError));
@@ -126,6 +146,7 @@ export function createLazyGrammarEditor(options: LazyGrammarEditorOptions, load:
   return {
     onChange: (listener) => void changeListeners.push(listener),
     onCursor: (listener) => void cursorListeners.push(listener),
+    onOpenSurface: (listener) => void surfaceListeners.push(listener),
     text: () => full?.text() ?? area.value,
     cursor: () => full?.cursor() ?? area.selectionStart,
     focus: () => (full ? full.focus() : area.focus()),
@@ -141,6 +162,12 @@ export function createLazyGrammarEditor(options: LazyGrammarEditorOptions, load:
     replaceRange: (from, to, insert, history) => {
       if (full) return full.replaceRange(from, to, insert, history);
       area.setRangeText(insert, from, to, 'preserve');
+      changed();
+    },
+    replaceRanges: (changes, history) => {
+      if (full) return full.replaceRanges(changes, history);
+      // From the last to the first: each leaves the offsets before it as they were.
+      for (const c of [...changes].sort((a, b) => b.from - a.from)) area.setRangeText(c.insert, c.from, c.to, 'preserve');
       changed();
     },
     markProduction: (range) => full?.markProduction(range),

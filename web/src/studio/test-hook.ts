@@ -4,6 +4,7 @@ import type { PlantStats } from '../core';
 import type { PlantView } from '../view';
 import type { BranchEdits } from './branches';
 import type { LivePreview } from './preview';
+import type { SurfaceEditing } from './surfaces';
 
 /** The studio as its tests see it. */
 export interface StudioTestHook {
@@ -36,6 +37,8 @@ export interface StudioTestHook {
     selectedPath: () => number[] | null;
     document: () => unknown;
   };
+  /** The surface editor: net point k of the surface it shows, on the page (null when closed). */
+  surfacePointOnPage?: (k: number) => { x: number; y: number } | null;
 }
 
 declare global {
@@ -54,10 +57,11 @@ export interface TestedStudio {
   preview: LivePreview;
   view: PlantView;
   branchEdits: BranchEdits;
+  surfaces: SurfaceEditing;
 }
 
 /** Fills `hook` from the studio's pieces and keeps it current as builds arrive and frames are drawn. */
-export function connectTestHook(hook: StudioTestHook, { preview, view, branchEdits }: TestedStudio): void {
+export function connectTestHook(hook: StudioTestHook, { preview, view, branchEdits, surfaces }: TestedStudio): void {
   preview.onDelivered((result) => {
     if (result.build.ok) hook.lastStats = result.build.stats;
     if (result.build.ok && result.build.stats.segments > 0) hook.firstPlantAt ??= Date.now();
@@ -76,6 +80,7 @@ export function connectTestHook(hook: StudioTestHook, { preview, view, branchEdi
     selectedPath: () => branchEdits.selectedPath(),
     document: () => branchEdits.document() ?? null,
   };
+  hook.surfacePointOnPage = (k) => surfaces.pointOnPage(k);
   hook.derivedHash = () => preview.lastGood?.inspector.derivedHash() ?? Promise.resolve('');
   hook.cameraPose = () => view.cameraPose();
   hook.growth = () => ({ t: view.growthTime, span: view.growthSpan() });

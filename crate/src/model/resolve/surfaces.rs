@@ -238,6 +238,7 @@ impl Resolver {
             precision,
             end: x.end.map(place),
             organ: x.organ,
+            frame: x.frame,
             written: x.written,
         })
     }

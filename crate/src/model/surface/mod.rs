@@ -58,6 +58,10 @@ pub struct SurfaceShape {
     pub end: Option<DVec3>,
     /// The library shape it is, if it is one.
     pub organ: Option<Organ>,
+    /// The declared frame its points were placed by (what maps a written point to `patches`:
+    /// the studio's surface editor maps a dragged point back through it).
+    #[cfg(feature = "surfaces")]
+    pub frame: Frame,
     /// The `#patch` points as written.
     pub written: Vec<WrittenPoint>,
 }

@@ -4,6 +4,7 @@
 // in index.html: it loads with the Download menu's code, after the first plant.
 import type { PictureLook, PlantView } from '../../../view';
 import { saveFile } from '../../files/save-file';
+import { el } from '../../page/make-element';
 import { fileSize } from '../downloads';
 import { FORMATS, SIZE_PRESETS, movieFileName, movieSeconds, planMovie, type MovieFormat, type MovieOptions, type MoviePlan } from './movie-plan';
 import { derivedGrowth, type DerivedStudio } from './derived-growth';
@@ -31,15 +32,6 @@ interface MovieControls {
   progress: HTMLProgressElement;
   record: HTMLButtonElement;
   cancel: HTMLButtonElement;
-}
-
-/** An element `tag` with `props`, and `children` appended. */
-function el<K extends keyof HTMLElementTagNameMap>(tag: K, props: Partial<HTMLElementTagNameMap[K]> & { testid?: string } = {}, ...children: (Node | string)[]): HTMLElementTagNameMap[K] {
-  const { testid, ...rest } = props;
-  const element = Object.assign(document.createElement(tag), rest);
-  if (testid) element.dataset.testid = testid;
-  element.append(...children);
-  return element;
 }
 
 function options(select: HTMLSelectElement, entries: [value: string, label: string][]): HTMLSelectElement {

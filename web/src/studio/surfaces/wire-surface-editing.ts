@@ -1,0 +1,28 @@
+// The surface editor (issue 46), wired to the studio's parts: opened from the Surfaces menu of the
+// view's tools or from the text (the gutter's marker, Alt+B on a surface's line), following every
+// change of the text. Only this file is in the first load: the menu reads the directives' names
+// from the vocabulary, so it loads with it (./surface-tools.ts), and the editor on its first opening.
+import { onVocabulary } from '../../core';
+import type { StudioParts } from '../parts';
+import type { SurfaceTools } from './surface-tools';
+
+/** The surface editor as the test hook sees it. */
+export interface SurfaceEditing {
+  /** Net point `k` of the surface the editor shows, on the page; null when it is closed. */
+  pointOnPage(k: number): { x: number; y: number } | null;
+}
+
+/** The surface editor on the grammar in `editor`; its menu goes after the branch tools. */
+export function wireSurfaceEditing({ els, editor, notice }: StudioParts): SurfaceEditing {
+  let tools: SurfaceTools | undefined;
+  const loaded = new Promise<SurfaceTools>((resolve, reject) =>
+    onVocabulary(() => {
+      const after = els.branchEditing.toggle.parentElement ?? els.branchEditing.toggle;
+      import('./surface-tools').then(({ installSurfaceTools }) => resolve((tools = installSurfaceTools(after, editor, notice))), reject);
+    }),
+  );
+  loaded.catch((error: unknown) => notice.show('error', `The surface editor could not load: ${String(error)}`));
+  editor.onChange((text) => tools?.changed(text));
+  editor.onOpenSurface((letter) => void loaded.then((t) => t.open(letter)));
+  return { pointOnPage: (k) => tools?.pointOnPage(k) ?? null };
+}
