@@ -17,7 +17,7 @@ import { delay, lazyHelp, loadAppUpdates, nextFrame, Notice, studioElements, typ
 import type { StudioParts } from './studio/parts';
 import { connectTestHook, emptyTestHook, type StudioTestHook } from './studio/test-hook';
 import { createLivePreview, DiagnosticsFeed, showStatus } from './studio/preview';
-import { wireSurfaceEditing } from './studio/surfaces';
+import { wireSurfaceEditingLater } from './studio/surfaces';
 import { LazyTimeline, wireTimeline } from './studio/timeline';
 import { PlantView } from './view';
 
@@ -75,7 +75,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   if (start.from === 'link') void autosave.save(start.text); // the link's text is now the work in progress
   const branchEdits = wireBranchEditing(parts, controls);
   const links = wireLinks(parts, branchEdits, start);
-  connectTestHook(hook, { preview, view, branchEdits, surfaces: wireSurfaceEditing(parts) }); // (the surface editor: view tools, text)
+  connectTestHook(hook, { preview, view, branchEdits, surfaces: wireSurfaceEditingLater(parts) }); // (the surface editor: view tools, text)
   wireKeyboard(parts, { ...controls, layout, gallery: dialogs.gallery });
 
   // Start: the first plant, as soon as the core has arrived.

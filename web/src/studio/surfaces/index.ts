@@ -1,4 +1,4 @@
 // The surface editor (issue 46): a declared surface's control points moved in a 3D view, the
 // grammar's patch lines following; loaded on first use (surface-editing-loader.ts).
-export { wireSurfaceEditing } from './wire-surface-editing';
+export { wireSurfaceEditingLater } from './lazy-surface-editing';
 export type { SurfaceEditing } from './wire-surface-editing';

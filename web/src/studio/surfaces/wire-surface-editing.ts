@@ -1,7 +1,8 @@
 // The surface editor (issue 46), wired to the studio's parts: opened from the Surfaces menu of the
 // view's tools or from the text (the gutter's marker, Alt+B on a surface's line), following every
-// change of the text. Only this file is in the first load: the menu reads the directives' names
-// from the vocabulary, so it loads with it (./surface-tools.ts), and the editor on its first opening.
+// change of the text. Loaded once the vocabulary has arrived (./lazy-surface-editing.ts, the first
+// load's part): the menu reads the directives' names from it (./surface-tools.ts), and the editor
+// loads on its first opening.
 import { onVocabulary } from '../../core';
 import type { StudioParts } from '../parts';
 import type { SurfaceTools } from './surface-tools';
