@@ -16,10 +16,12 @@ use glam::DVec3;
 /// declared surface, 64 for the built-in outlines.
 fn surface_vertices(skeleton: &Skeleton, s: &Surface) -> usize {
     match s.kind {
-        SurfaceKind::Declared(k) => skeleton.shapes.get(k as usize).map_or(0, |shape| {
-            let [a, b] = shape.precision.map(|n| n as usize + 1);
-            2 * shape.patches.len() * a * b
-        }),
+        SurfaceKind::Declared(k) if cfg!(feature = "surfaces") => {
+            skeleton.shapes.get(k as usize).map_or(0, |shape| {
+                let [a, b] = shape.precision.map(|n| n as usize + 1);
+                2 * shape.patches.len() * a * b
+            })
+        }
         _ => 64,
     }
 }

@@ -119,7 +119,14 @@ fn definition(d: &mut Directive, diagnostics: &mut Vec<Diagnostic>) -> bool {
 }
 
 /// `#surface X words`: the letter; the words stay text for the resolver. False when the line is
-/// not kept.
+/// not kept. (Without the feature `surfaces` the line is kept as written: the first plant's core
+/// only says that the grammar declares surfaces, and the studio's core builds it.)
+#[cfg(not(feature = "surfaces"))]
+fn surface_definition(_: &mut Directive, _: &mut Vec<Diagnostic>) -> bool {
+    true
+}
+
+#[cfg(feature = "surfaces")]
 fn surface_definition(d: &mut Directive, diagnostics: &mut Vec<Diagnostic>) -> bool {
     let Some(ident_len) = leading_name(d, "a shape or frame words", diagnostics) else {
         return false;

@@ -110,7 +110,9 @@ impl Canvas for Skeleton {
 
 pub(super) struct Interpreter<'a, C: Canvas> {
     settings: &'a Settings,
-    /// For each module id, the declared surface it draws (`~X`), if any.
+    /// For each module id, the declared surface it draws (`~X`), if any (none without the
+    /// feature `surfaces`, whose model declares none: the first plant's core).
+    #[cfg(feature = "surfaces")]
     surface_of: Vec<Option<u16>>,
     /// The declared surfaces.
     shapes: &'a [std::sync::Arc<crate::model::SurfaceShape>],
@@ -168,6 +170,7 @@ impl<'a, C: Canvas> Interpreter<'a, C> {
             .map(|m| m.and_then(|info| Some((info.command()?, first_default(info, settings)))))
             .collect();
         let start = TurtleState::start(settings);
+        #[cfg(feature = "surfaces")]
         let surface_of = (0..model.alphabet.len())
             .map(|i| {
                 model
@@ -177,6 +180,7 @@ impl<'a, C: Canvas> Interpreter<'a, C> {
             .collect();
         Interpreter {
             settings,
+            #[cfg(feature = "surfaces")]
             surface_of,
             shapes: &settings.surfaces,
             actions,
@@ -199,7 +203,11 @@ impl<'a, C: Canvas> Interpreter<'a, C> {
         for (index, id) in string.ids.iter().enumerate() {
             self.turn_by_growth(index);
             let before = self.turtle.position.y;
-            let moved = match (self.actions[id.index()], self.surface_of[id.index()]) {
+            #[cfg(feature = "surfaces")]
+            let declared = self.surface_of[id.index()];
+            #[cfg(not(feature = "surfaces"))]
+            let declared: Option<u16> = None;
+            let moved = match (self.actions[id.index()], declared) {
                 (_, Some(k)) => {
                     let params = string.params_of(index);
                     self.surface(SurfaceKind::Declared(k), params, index as u32);

@@ -232,7 +232,9 @@ fn meanings(
             let id = ModuleId(i as u32);
             if draw.contains(&id) {
                 forward
-            } else if surface_index(alphabet.name(id), surfaces).is_some() {
+            } else if cfg!(feature = "surfaces")
+                && surface_index(alphabet.name(id), surfaces).is_some()
+            {
                 surface
             } else {
                 module_named(alphabet.name(id))
