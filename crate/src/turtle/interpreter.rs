@@ -203,23 +203,18 @@ impl<'a, C: Canvas> Interpreter<'a, C> {
         for (index, id) in string.ids.iter().enumerate() {
             self.turn_by_growth(index);
             let before = self.turtle.position.y;
-            #[cfg(feature = "surfaces")]
-            let declared = self.surface_of[id.index()];
-            #[cfg(not(feature = "surfaces"))]
-            let declared: Option<u16> = None;
-            let moved = match (self.actions[id.index()], declared) {
-                (_, Some(k)) => {
-                    let params = string.params_of(index);
-                    self.surface(SurfaceKind::Declared(k), params, index as u32);
+            let moved = match self.actions[id.index()] {
+                Some((Command::Surface, _)) => {
+                    self.declared_surface(id.index(), string.params_of(index), index as u32);
                     false
                 }
-                (Some((command, default)), None) => {
+                Some((command, default)) => {
                     let params = string.params_of(index);
                     // A first parameter replaces the default length or angle: `F(l)`, `+(a)`.
                     let first = params.first().copied().filter(|v| v.is_finite());
                     self.command(command, first, first.or(default), params, index as u32)
                 }
-                (None, None) => false,
+                None => false,
             };
             if extent {
                 let y = self.turtle.position.y;
@@ -227,6 +222,17 @@ impl<'a, C: Canvas> Interpreter<'a, C> {
             }
         }
         self.finish()
+    }
+
+    /// `~X` of module `id`: the surface declared for X (an undeclared one draws nothing: E0222;
+    /// without the feature `surfaces` the model declares none).
+    fn declared_surface(&mut self, id: usize, params: &[f64], index: u32) {
+        #[cfg(feature = "surfaces")]
+        if let Some(k) = self.surface_of[id] {
+            self.surface(SurfaceKind::Declared(k), params, index);
+        }
+        #[cfg(not(feature = "surfaces"))]
+        let _ = (id, params, index);
     }
 
     /// Records the turtle's height at a module (`at`, the middle of a move) and the extent.
@@ -295,7 +301,7 @@ impl<'a, C: Canvas> Interpreter<'a, C> {
             }
             Command::Leaf => self.surface(SurfaceKind::Leaf, params, index),
             Command::Petal => self.surface(SurfaceKind::Petal, params, index),
-            // A declared `~X` is drawn by `run`; an undeclared one draws nothing (E0222).
+            // A declared `~X` is drawn by `run` (`declared_surface`), which knows its module.
             Command::Surface => {}
             Command::Sphere => self.sphere(first, index),
             Command::MoveTo
