@@ -75,3 +75,4 @@ export {
   type Severity,
   type StageTimings,
 } from './types';
+export { onDemand } from './on-demand';

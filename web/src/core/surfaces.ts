@@ -2,6 +2,7 @@
 // editor shows it: its patches tessellated as the plant draws them, its control points, and where
 // each point's `x y z` is written in the text. The core answers (`surfacePreview` of
 // ./surface-preview.ts, in crate/pkg), loaded with the editor's first use (`loadSurfacePreview`).
+import { onDemand } from './on-demand';
 import type { Diagnostic } from './types';
 
 /** x, y, z. */
@@ -58,21 +59,12 @@ export interface SurfaceAnswer {
 /** `surfacePreview` of ./surface-preview.ts: surface `letter` of `source`. */
 export type SurfacePreviewer = (source: string, letter: string) => SurfaceAnswer;
 
-let loading: Promise<SurfacePreviewer> | undefined;
-
 /**
  * Loads the surface editor's core once (crate/pkg, with the importers and exporters) and resolves
  * to its `surfacePreview`; a failed load (the network) is tried again by the next call.
  */
-export function loadSurfacePreview(): Promise<SurfacePreviewer> {
-  loading ??= import('./surface-preview')
-    .then(async (module) => {
-      await module.initSurfacePreview();
-      return module.surfacePreview;
-    })
-    .catch((error: unknown) => {
-      loading = undefined;
-      throw error;
-    });
-  return loading;
-}
+export const loadSurfacePreview: () => Promise<SurfacePreviewer> = onDemand(async () => {
+  const module = await import('./surface-preview');
+  await module.initSurfacePreview();
+  return module.surfacePreview;
+});

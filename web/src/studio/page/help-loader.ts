@@ -1,7 +1,7 @@
 // The Help panel (the language reference) loads when first opened (issue 22: the first plant does
 // not need it).
 import type { HelpPanelElements } from './help-panel';
-import { onDemand } from './on-demand';
+import { onDemand } from '../../core';
 
 /** Opens the Help panel, loading it first if need be. */
 export interface HelpOpener {

@@ -1,15 +1,6 @@
 // What the studio loads on first use (issue 22: the first load carries none of it): dialogs,
-// Stages, branch editing.
-
-/** `make`, called on the first use and kept (a failure is tried again on the next use). */
-export function onDemand<T>(make: () => Promise<T>): () => Promise<T> {
-  let made: Promise<T> | undefined;
-  return () =>
-    (made ??= make().catch((error: unknown) => {
-      made = undefined;
-      throw error;
-    }));
-}
+// Stages, branch editing (by the core's `onDemand`).
+import { onDemand } from '../../core';
 
 /** A dialog loaded when first opened. */
 export interface LazyDialog {
