@@ -11,6 +11,8 @@
 pub mod branches;
 pub mod derive;
 pub mod diagnostics;
+#[cfg(feature = "environment")]
+pub mod environment;
 pub mod export;
 pub mod growth;
 pub mod import;

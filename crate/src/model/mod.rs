@@ -4,6 +4,7 @@
 
 mod alphabet;
 mod curve;
+mod environment;
 mod lstring;
 mod program;
 mod resolve;
@@ -12,6 +13,7 @@ mod surface;
 
 pub use alphabet::{Alphabet, ModuleId};
 pub use curve::{Curve, CurveKind};
+pub use environment::{EnvironmentSpec, PlantPlace, ProgramSpec, SettingValue};
 pub use lstring::LString;
 pub use program::{Env, EvalError, Program, RandomVariable, Scope, Simple, MAX_OPS, MAX_STACK};
 pub use resolve::resolve;

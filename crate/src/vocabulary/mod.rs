@@ -15,6 +15,7 @@
 //! in `turtle`. Nothing here depends on any other part of the crate.
 
 mod directives;
+mod environment;
 mod expressions;
 mod keywords;
 mod modules;
@@ -23,6 +24,11 @@ mod surfaces;
 
 pub use directives::{
     directive, directive_named, DirectiveInfo, DirectiveKind, Season, DIRECTIVES,
+};
+pub use environment::{
+    environment_program_named, environment_shape_named, EnvironmentProgram, EnvironmentProgramInfo,
+    EnvironmentSetting, EnvironmentShape, EnvironmentShapeInfo, ENVIRONMENT_PROGRAMS,
+    ENVIRONMENT_SHAPES,
 };
 pub use expressions::{
     function_named, value_named, Function, FunctionInfo, Value, ValueInfo, FUNCTIONS, VALUES,
@@ -74,6 +80,8 @@ pub fn written_names() -> Vec<String> {
     names.extend(VALUES.iter().map(|v| v.name.to_string()));
     names.extend(SURFACE_SHAPES.iter().map(|o| o.name.to_string()));
     names.extend(FRAME_WORDS.iter().map(|w| w.name.to_string()));
+    names.extend(ENVIRONMENT_PROGRAMS.iter().map(|p| p.name.to_string()));
+    names.extend(ENVIRONMENT_SHAPES.iter().map(|s| s.name.to_string()));
     names
 }
 

@@ -1,0 +1,82 @@
+//! The environment stage (docs/LANGUAGE.md, "Environment"; issue 47): programs that answer the
+//! communication modules `?E` between derivation steps, as lpfg's environmental programs and the
+//! open L-systems of Měch and Prusinkiewicz (1996) do.
+//!
+//! The cycle: after step n (and after the axiom) every plant's string is interpreted; the parts
+//! the turtle drew, of all plants, are given to each program ([`Responder::update`]); then every
+//! `?E` is a [`Probe`] at its turtle position and each program writes its reply
+//! ([`Responder::answer`]); the replies, concatenated in the order the programs are declared,
+//! become the `?E`'s parameters, which step n + 1's productions read.
+//!
+//! Plain data in ([`Part`], [`Probe`]), plain data out (replies, a [`Field`] for the studio's
+//! views). Deterministic: a program that draws random numbers takes its seed from its settings.
+
+/// Most bytes the programs of one build may hold at once (their grids and points): a grid that
+/// would pass it stops the build with a diagnostic, never a trap.
+pub const MAX_ENVIRONMENT_BYTES: usize = 64 << 20;
+
+/// One part of a plant as the environment sees it: a segment from `from` to `to` of radius
+/// `radius`, or a flat organ (a polygon, a surface, a leaf) at its centre (`from` = `to`) with its
+/// area in `area` (0 for a segment).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Part {
+    pub from: [f64; 3],
+    pub to: [f64; 3],
+    pub radius: f64,
+    pub area: f64,
+    /// Which plant of the stand drew it (0 for a single plant).
+    pub plant: u32,
+}
+
+/// One `?E` asking: where the turtle is, its frame, and the module's parameters as the
+/// productions wrote them (a program may read them as inputs).
+#[derive(Clone, Copy, Debug)]
+pub struct Probe<'a> {
+    pub position: [f64; 3],
+    pub heading: [f64; 3],
+    pub up: [f64; 3],
+    pub args: &'a [f64],
+    pub plant: u32,
+}
+
+/// A grid of values for the studio's views (the light grid as a slice or heat map): `values` has
+/// `dims[0] × dims[1] × dims[2]` entries, x fastest; voxel (i, j, k) spans
+/// `origin + cell × (i, j, k)` to `origin + cell × (i + 1, j + 1, k + 1)`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Field {
+    pub origin: [f64; 3],
+    pub cell: f64,
+    pub dims: [usize; 3],
+    pub values: Vec<f32>,
+}
+
+/// A program would need more than its share of [`MAX_ENVIRONMENT_BYTES`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct Exceeded {
+    /// What it would have allocated ("a light grid of 512 × 512 × 300 voxels").
+    pub what: String,
+    pub bytes: usize,
+}
+
+/// An environmental program.
+pub trait Responder {
+    /// How many values it replies with (its row's `reply` in the vocabulary).
+    fn reply_len(&self) -> usize;
+
+    /// The plants changed: take in every plant's parts. Checks its memory against `budget`
+    /// bytes before it allocates.
+    fn update(&mut self, parts: &[Part], budget: usize) -> Result<(), Exceeded>;
+
+    /// Answers every probe: probe `i`'s reply goes to `replies[i * stride + offset ..][..reply_len]`.
+    /// All probes at once, since some replies depend on the others (an attraction point goes to
+    /// the nearest bud).
+    fn answer(&mut self, probes: &[Probe<'_>], replies: &mut [f64], stride: usize, offset: usize);
+
+    /// Bytes it holds now (for the budget of the programs together).
+    fn bytes(&self) -> usize;
+
+    /// What the studio can draw of it: a grid of values, if it keeps one.
+    fn field(&self) -> Option<Field> {
+        None
+    }
+}
