@@ -57,6 +57,9 @@ impl ProgramSpec {
     }
 }
 
+/// Most plants a stand may have (`#stand`, `#plant` together): each is a whole derivation.
+pub const MAX_STAND_PLANTS: usize = 400;
+
 /// One plant of a stand: where it stands and which of the stand's seeds it derives with.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PlantPlace {

@@ -13,7 +13,7 @@ mod surface;
 
 pub use alphabet::{Alphabet, ModuleId};
 pub use curve::{Curve, CurveKind};
-pub use environment::{EnvironmentSpec, PlantPlace, ProgramSpec, SettingValue};
+pub use environment::{EnvironmentSpec, PlantPlace, ProgramSpec, SettingValue, MAX_STAND_PLANTS};
 pub use lstring::LString;
 pub use program::{Env, EvalError, Program, RandomVariable, Scope, Simple, MAX_OPS, MAX_STACK};
 pub use resolve::resolve;
@@ -168,6 +168,9 @@ pub struct Model {
     /// The particle attributes (`#lifetime`, `#speed`, `#shape`, `#sun`, …) and which modules are
     /// apices and segments; all off by default.
     pub growth: GrowthAttributes,
+    /// `#environment`, `#stand` and `#plant` (empty without the feature `environment`, which then
+    /// only notes that the grammar declares them: [`Settings::environment_declared`]).
+    pub environment: EnvironmentSpec,
 }
 
 impl Model {
@@ -179,6 +182,13 @@ impl Model {
     /// The index in [`Settings::surfaces`] of the declared surface module `id` draws (`~X`).
     pub fn surface_of(&self, id: ModuleId) -> Option<usize> {
         resolve::surface_index(self.alphabet.name(id), &self.settings.surfaces)
+    }
+
+    /// The id of the communication module `?E`, when the grammar writes it.
+    pub fn environment_query(&self) -> Option<ModuleId> {
+        (0..self.alphabet.len())
+            .map(|i| ModuleId(i as u32))
+            .find(|&id| self.command(id) == Some(Command::QueryEnvironment))
     }
 
     /// True when a query module (`?P ?H ?U ?L`) is in the grammar's alphabet.

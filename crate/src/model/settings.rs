@@ -58,6 +58,9 @@ pub struct Settings {
     pub surfaces: Vec<std::sync::Arc<super::SurfaceShape>>,
     /// The grammar has a `#surface` or `#patch` line (read or not: see the feature `surfaces`).
     pub surfaces_declared: bool,
+    /// The grammar has an `#environment`, `#stand` or `#plant` line (read or not: see the feature
+    /// `environment`).
+    pub environment_declared: bool,
 }
 
 /// The colour index's default colours: a ramp from bark brown (0) through olive and greens to
@@ -164,6 +167,7 @@ impl Default for Settings {
             dt_given: false,
             surfaces: Vec::new(),
             surfaces_declared: false,
+            environment_declared: false,
         }
     }
 }

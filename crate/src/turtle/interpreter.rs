@@ -1,7 +1,8 @@
 //! The interpreter: reads the string module by module and draws.
 
 use super::skeleton::{
-    segment_within_bounds, Polygon, QueryValue, Segment, Skeleton, Sphere, Surface, SurfaceKind,
+    segment_within_bounds, EnvironmentQuery, Polygon, QueryValue, Segment, Skeleton, Sphere,
+    Surface, SurfaceKind,
 };
 use super::state::TurtleState;
 use crate::growth::{Adjustments, Heights, Third};
@@ -28,6 +29,8 @@ pub(super) trait Canvas {
     /// Whether the canvas keeps query values (a sketch does not).
     fn wants_queries(&self) -> bool;
     fn query(&mut self, query: QueryValue);
+    /// A communication module `?E` (kept when [`Canvas::wants_queries`]).
+    fn environment_query(&mut self, query: EnvironmentQuery);
     /// The grammar set a width (`!`).
     fn widths_set(&mut self);
     /// The string is read: the turtle ended at `end`; `widths` are growth's width factors by third
@@ -82,6 +85,10 @@ impl Canvas for Skeleton {
 
     fn query(&mut self, query: QueryValue) {
         self.queries.push(query);
+    }
+
+    fn environment_query(&mut self, query: EnvironmentQuery) {
+        self.environment_queries.push(query);
     }
 
     fn widths_set(&mut self) {
@@ -313,6 +320,7 @@ impl<'a, C: Canvas> Interpreter<'a, C> {
             | Command::QueryHeading
             | Command::QueryUp
             | Command::QueryLeft => self.query(command, index),
+            Command::QueryEnvironment => self.environment_query(index),
         }
         false
     }
@@ -531,6 +539,20 @@ impl<'a, C: Canvas> Interpreter<'a, C> {
         self.canvas.query(QueryValue {
             module: index,
             value: [v.x, v.y, v.z],
+        });
+    }
+
+    /// `?E`: where the turtle stands and how it is turned, for the environment.
+    fn environment_query(&mut self, index: u32) {
+        if !self.canvas.wants_queries() {
+            return;
+        }
+        let t = &self.turtle;
+        self.canvas.environment_query(EnvironmentQuery {
+            module: index,
+            position: t.position.to_array(),
+            heading: t.heading.to_array(),
+            up: t.up.to_array(),
         });
     }
 

@@ -18,7 +18,8 @@ mod state;
 
 pub(crate) use skeleton::f32_box;
 pub use skeleton::{
-    Extent, Polygon, QueryValue, Segment, Skeleton, Sphere, Surface, SurfaceKind, MAX_COORDINATE,
+    EnvironmentQuery, Extent, Polygon, QueryValue, Segment, Skeleton, Sphere, Surface, SurfaceKind,
+    MAX_COORDINATE,
 };
 pub use sketch::{SegmentLines, Sketch};
 

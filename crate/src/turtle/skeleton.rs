@@ -97,6 +97,16 @@ pub struct QueryValue {
     pub value: [f64; 3],
 }
 
+/// Where a communication module `?E` stands: the turtle's position and frame at it, which the
+/// environment's programs answer (docs/LANGUAGE.md, "Environment").
+#[derive(Clone, Debug, PartialEq)]
+pub struct EnvironmentQuery {
+    pub module: u32,
+    pub position: [f64; 3],
+    pub heading: [f64; 3],
+    pub up: [f64; 3],
+}
+
 /// The turtle's output: plain geometry, no mesh yet.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Skeleton {
@@ -105,6 +115,8 @@ pub struct Skeleton {
     pub surfaces: Vec<Surface>,
     pub spheres: Vec<Sphere>,
     pub queries: Vec<QueryValue>,
+    /// The communication modules `?E`, where they stand.
+    pub environment_queries: Vec<EnvironmentQuery>,
     /// Where the turtle stood after the last module.
     pub end: DVec3,
     /// The colours of the colour indices (the grammar's palette); empty means

@@ -156,6 +156,8 @@ impl Canvas for Sketch {
 
     fn query(&mut self, _query: QueryValue) {}
 
+    fn environment_query(&mut self, _query: super::skeleton::EnvironmentQuery) {}
+
     fn widths_set(&mut self) {}
 
     fn finish(&mut self, end: DVec3, _widths: Option<(&Adjustments, f64, f64)>, _: bool) {
@@ -229,7 +231,8 @@ fn op_of(command: Option<Command>) -> (Op, f64) {
         | C::QueryPosition
         | C::QueryHeading
         | C::QueryUp
-        | C::QueryLeft => (Op::Nothing, 1.0),
+        | C::QueryLeft
+        | C::QueryEnvironment => (Op::Nothing, 1.0),
         C::StartPolygon
         | C::PolygonVertex
         | C::EndPolygon

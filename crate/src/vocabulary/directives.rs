@@ -40,6 +40,9 @@ pub enum DirectiveKind {
     Dt,
     Surface,
     Patch,
+    Environment,
+    Stand,
+    Plant,
 }
 
 impl DirectiveKind {
@@ -248,6 +251,21 @@ const PATCH: &[&[Param]] = &[&[
         ParamKind::Points,
         "16 control points x y z, row by row of the 4 × 4 grid, separated by commas",
     ),
+]];
+const ENVIRONMENT: &[&[Param]] = &[&[Param::new(
+    "program",
+    ParamKind::Words,
+    "a program (light, obstacle, space, attractors), a shape if it takes one (box, sphere, plane), then setting words with their numbers",
+)]];
+const STAND: &[&[Param]] = &[&[Param::new(
+    "layout",
+    ParamKind::Words,
+    "row N spacing D, grid NX NZ spacing D, or random N size W D [seed S] [spacing MIN]",
+)]];
+const PLANT: &[&[Param]] = &[&[
+    Param::number("x", "x of the plant's base"),
+    Param::number("y", "y of the plant's base"),
+    Param::number("z", "z of the plant's base"),
 ]];
 const TERMINAL_AGES: &[&[Param]] = &[&[Param::new(
     "ages",
@@ -515,6 +533,15 @@ pub const DIRECTIVES: &[DirectiveInfo] = &[
     row("patch", D::Patch, "Bézier patch", PATCH, G::Turtle,
         "One bicubic Bézier patch of the surface ~X: 16 control points x y z, row by row; several lines make a surface of several patches.")
         .usage("E0220", "(a letter, then 16 points x y z)").repeatable(),
+    row("environment", D::Environment, "Environment program", ENVIRONMENT, G::Derivation,
+        "An environmental program that answers the communication modules ?E between derivation steps: light, obstacle, space or attractors, its shape, and its settings.")
+        .usage("E0230", "(a program, a shape if it takes one, then setting words with their numbers)").repeatable(),
+    row("stand", D::Stand, "Stand of plants", STAND, G::Derivation,
+        "Plants the grammar N times sharing one environment, each with its own seed: in a row, a grid, or at random places.")
+        .usage("E0233", "(row N spacing D, grid NX NZ spacing D, or random N size W D [seed S] [spacing MIN])").repeatable(),
+    row("plant", D::Plant, "Plant at", PLANT, G::Derivation,
+        "One more plant of the stand, its base at x y z; several lines plant several.")
+        .usage("E0234", "(the base's x y z)").repeatable(),
     row("max_modules", D::MaxModules, "Module limit", &[&[Param::whole("n", 0.0, U32_MAX, "modules at most").default(5_000_000.0)]], G::Limits,
         "Stop with an error when the string would grow past n modules (default 5,000,000)."),
     row("max_steps", D::MaxSteps, "Step limit", &[&[Param::whole("n", 0.0, U32_MAX, "steps at most").default(10_000.0)]], G::Limits,

@@ -137,6 +137,79 @@ pub const ENVIRONMENT_PROGRAMS: &[EnvironmentProgramInfo] = &[
     },
 ];
 
+/// The settings each shape must be given (a box its corners), whatever program takes it.
+const SHAPE_REQUIRES: [(EnvironmentShape, &[&str]); 3] = [
+    (EnvironmentShape::Box, &["min", "max"]),
+    (EnvironmentShape::Sphere, &["center", "radius"]),
+    (EnvironmentShape::Plane, &["point", "normal"]),
+];
+
+impl EnvironmentShape {
+    /// The settings a line with this shape must write.
+    pub fn required(self) -> &'static [&'static str] {
+        SHAPE_REQUIRES
+            .iter()
+            .find(|(s, _)| *s == self)
+            .map_or(&[], |(_, r)| r)
+    }
+
+    /// Its word.
+    pub fn name(self) -> &'static str {
+        ENVIRONMENT_SHAPES
+            .iter()
+            .find(|s| s.shape == self)
+            .map_or("", |s| s.name)
+    }
+}
+
+/// How the plants of a stand are placed (`#stand`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub enum StandLayout {
+    /// N plants along x, `spacing` apart, centred on the origin.
+    Row,
+    /// NX × NZ plants on a square grid in the x–z plane, `spacing` apart, centred on the origin.
+    Grid,
+    /// N plants at random places in a `size` W × D rectangle centred on the origin.
+    Random,
+}
+
+/// One layout word of `#stand`: how many whole numbers follow it, its settings, which of them
+/// must be written.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct StandLayoutInfo {
+    pub name: &'static str,
+    pub layout: StandLayout,
+    /// What the whole numbers after the word count (`N`, or `NX NZ`).
+    pub counts: &'static [&'static str],
+    pub settings: &'static [EnvironmentSetting],
+    /// The settings that must be written.
+    pub required: &'static [&'static str],
+    pub doc: &'static str,
+}
+
+const SPACING: EnvironmentSetting =
+    setting("spacing", 1, "The distance between neighbouring plants.");
+
+#[rustfmt::skip]
+pub const STAND_LAYOUTS: &[StandLayoutInfo] = &[
+    StandLayoutInfo { name: "row", layout: StandLayout::Row, counts: &["N"], settings: &[SPACING], required: &["spacing"],
+        doc: text("N plants along x, `spacing` apart, centred on the origin.") },
+    StandLayoutInfo { name: "grid", layout: StandLayout::Grid, counts: &["NX", "NZ"], settings: &[SPACING], required: &["spacing"],
+        doc: text("NX × NZ plants in the x–z plane, `spacing` apart, centred on the origin.") },
+    StandLayoutInfo { name: "random", layout: StandLayout::Random, counts: &["N"], required: &["size"],
+        settings: &[
+            setting("size", 2, "The width (along x) and depth (along z) of the rectangle the plants stand in."),
+            setting("seed", 1, "The seed of the places (default: the grammar's seed)."),
+            setting("spacing", 1, "The least distance between two plants (default 0)."),
+        ],
+        doc: text("N plants at random places in a `size` W × D rectangle centred on the origin, at least `spacing` apart.") },
+];
+
+/// The stand layout named `name`.
+pub fn stand_layout_named(name: &str) -> Option<&'static StandLayoutInfo> {
+    STAND_LAYOUTS.iter().find(|l| l.name == name)
+}
+
 /// The program named `name`.
 pub fn environment_program_named(name: &str) -> Option<&'static EnvironmentProgramInfo> {
     ENVIRONMENT_PROGRAMS.iter().find(|p| p.name == name)

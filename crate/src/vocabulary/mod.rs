@@ -26,9 +26,9 @@ pub use directives::{
     directive, directive_named, DirectiveInfo, DirectiveKind, Season, DIRECTIVES,
 };
 pub use environment::{
-    environment_program_named, environment_shape_named, EnvironmentProgram, EnvironmentProgramInfo,
-    EnvironmentSetting, EnvironmentShape, EnvironmentShapeInfo, ENVIRONMENT_PROGRAMS,
-    ENVIRONMENT_SHAPES,
+    environment_program_named, environment_shape_named, stand_layout_named, EnvironmentProgram,
+    EnvironmentProgramInfo, EnvironmentSetting, EnvironmentShape, EnvironmentShapeInfo,
+    StandLayout, StandLayoutInfo, ENVIRONMENT_PROGRAMS, ENVIRONMENT_SHAPES, STAND_LAYOUTS,
 };
 pub use expressions::{
     function_named, value_named, Function, FunctionInfo, Value, ValueInfo, FUNCTIONS, VALUES,
@@ -82,6 +82,7 @@ pub fn written_names() -> Vec<String> {
     names.extend(FRAME_WORDS.iter().map(|w| w.name.to_string()));
     names.extend(ENVIRONMENT_PROGRAMS.iter().map(|p| p.name.to_string()));
     names.extend(ENVIRONMENT_SHAPES.iter().map(|s| s.name.to_string()));
+    names.extend(STAND_LAYOUTS.iter().map(|l| l.name.to_string()));
     names
 }
 

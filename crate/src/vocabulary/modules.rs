@@ -49,6 +49,9 @@ pub enum Command {
     QueryHeading,
     QueryUp,
     QueryLeft,
+    /// `?E`: a communication module, answered by the environment's programs between steps
+    /// (docs/LANGUAGE.md, "Environment"); the turtle draws nothing for it.
+    QueryEnvironment,
 }
 
 impl Command {
@@ -226,6 +229,8 @@ pub const MODULES: &[ModuleInfo] = &[
     row("?H", Turtle(C::QueryHeading), QUERIED, "Query: after each step, set to the turtle's heading here.", K::Query),
     row("?U", Turtle(C::QueryUp), QUERIED, "Query: after each step, set to the turtle's up vector here.", K::Query),
     row("?L", Turtle(C::QueryLeft), QUERIED, "Query: after each step, set to the turtle's left vector here.", K::Query),
+    row("?E", Turtle(C::QueryEnvironment), &[],
+        "Communication module (any number of parameters): after each step, the #environment programs write their replies into its parameters, in the order they are declared.", K::Query),
     row("%", Meaning::Cut, &[], "Cut: remove the rest of this branch from the string (during derivation).", K::Derivation),
     row("@Prune", Meaning::Cut, &[], "Cut, as %.", K::Derivation),
     row("@Switch", Meaning::Group(GroupKind::Switch), &[],

@@ -29,6 +29,10 @@ pub enum ParamKind {
     /// A surface's library shape and frame words with their numbers
     /// (`#surface p petal precision 8 8`; [`super::SURFACE_SHAPES`], [`super::FRAME_WORDS`]).
     Surface,
+    /// Words with their numbers that the resolver reads by a table of its own: `#environment`'s
+    /// program, shape and settings ([`super::ENVIRONMENT_PROGRAMS`]), `#stand`'s layout and
+    /// settings ([`super::STAND_LAYOUTS`]).
+    Words,
 }
 
 /// The value a parameter takes when it is not written.

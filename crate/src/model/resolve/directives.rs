@@ -198,6 +198,7 @@ impl Resolver {
             }
             K::Module | K::Define | K::Random | K::Curve | K::Table => {}
             K::Surface | K::Patch => {}
+            K::Environment | K::Stand | K::Plant => {}
             K::Draw => s.draw.extend(self.module_ids(d)),
             K::Ignore => v.ignore.extend(self.module_ids(d)),
             K::Apex => v.apex.extend(self.module_ids(d)),
@@ -256,7 +257,8 @@ impl Resolver {
                 | ParamKind::Modules
                 | ParamKind::Points
                 | ParamKind::Ages
-                | ParamKind::Surface => None,
+                | ParamKind::Surface
+                | ParamKind::Words => None,
             };
             match arg {
                 Some(arg) => args.push(arg),
@@ -528,7 +530,7 @@ impl Resolver {
     }
 
     /// A whole number from 0 to `max`, or `E0204`.
-    fn whole(&mut self, d: &Directive, max: u64) -> Option<u64> {
+    pub(super) fn whole(&mut self, d: &Directive, max: u64) -> Option<u64> {
         match self.constant(d) {
             Ok(v) if v >= 0.0 && v.fract() == 0.0 && v <= max as f64 => Some(v as u64),
             result => {

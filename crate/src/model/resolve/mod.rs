@@ -5,6 +5,8 @@
 
 mod definitions;
 mod directives;
+#[cfg(feature = "environment")]
+mod environment;
 mod rules;
 mod scope;
 #[cfg(feature = "surfaces")]
@@ -29,6 +31,7 @@ pub fn resolve(file: &SourceFile) -> (Option<Model>, Vec<Diagnostic>) {
     let randoms = r.definitions(file);
     let mut values = r.directives(file);
     r.surface_settings(file, &mut values.settings);
+    let environment = r.environment_settings(file, &mut values.settings);
     let random_variables = r.random_variables(&randoms);
 
     let Some((axiom_syntax, axiom_span)) = &file.axiom else {
@@ -96,6 +99,7 @@ pub fn resolve(file: &SourceFile) -> (Option<Model>, Vec<Diagnostic>) {
         settings: values.settings,
         meanings,
         growth,
+        environment,
     };
     (Some(model), r.diagnostics)
 }
@@ -200,6 +204,24 @@ impl Resolver {
         {
             settings.surfaces = self.surfaces(file);
         }
+    }
+
+    /// Whether the file declares an environment, and (with the feature `environment`) what it is.
+    fn environment_settings(
+        &mut self,
+        file: &SourceFile,
+        settings: &mut super::Settings,
+    ) -> super::EnvironmentSpec {
+        use crate::vocabulary::DirectiveKind::{Environment, Plant, Stand};
+        settings.environment_declared = file
+            .directives
+            .iter()
+            .any(|d| matches!(d.kind, Some(Environment | Stand | Plant)));
+        #[cfg(feature = "environment")]
+        if settings.environment_declared {
+            return self.environment(file, settings.seed);
+        }
+        super::EnvironmentSpec::default()
     }
 
     /// [`meanings`], warning of each `~X` drawn but not declared.

@@ -19,6 +19,8 @@ fn valid_arguments(kind: DirectiveKind) -> String {
             ParamKind::Season => p.choices[0].to_string(),
             ParamKind::Ages => "A 2 B 1".to_string(),
             ParamKind::Surface => "petal precision 6 6".to_string(),
+            ParamKind::Words if kind == DirectiveKind::Stand => "row 3 spacing 2".to_string(),
+            ParamKind::Words => "obstacle sphere center 0 1 0 radius 1".to_string(),
             _ => {
                 let v = p
                     .default_value(|_| 1.0)

@@ -84,7 +84,9 @@ impl Importer {
 
     /// The notes for cpfg's `?E` and `_`, which are kept as modules the turtle ignores.
     pub(in crate::import::abop) fn cpfg_module_notes(&mut self, name: &str, n: usize) {
-        if name == "?E" && self.flavour == Flavour::Cpfg {
+        use crate::vocabulary::{name_of, Command, Meaning};
+        let communication = name_of(Meaning::Turtle(Command::QueryEnvironment));
+        if name == communication && self.flavour == Flavour::Cpfg {
             self.note_once(
                 name,
                 n,
