@@ -34,6 +34,7 @@ mod parametric_pass;
 mod plan;
 mod resume;
 mod rewriter;
+mod stepper;
 mod successors;
 mod timed;
 
@@ -47,6 +48,7 @@ use rewriter::{Rewriter, Tracker};
 
 pub use generator::Generator;
 pub use resume::{resume, Resume};
+pub use stepper::{Assembled, Stepper};
 
 /// What one derivation does.
 #[derive(Clone, Debug, Default)]

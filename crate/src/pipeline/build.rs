@@ -64,6 +64,10 @@ pub struct Build {
     /// The step the derivation went on from when it continued an earlier build's
     /// ([`super::build_on`]); `None` when it derived from the axiom.
     pub continued_from: Option<u32>,
+    /// Where each plant of a stand stands (`#stand`, `#plant`; docs/LANGUAGE.md, "Stands"), in
+    /// the order of the derived string, which holds each plant inside `[ @M(x, y, z) … ]`; empty
+    /// for a single plant.
+    pub plant_offsets: Vec<[f64; 3]>,
 }
 
 /// [`crate::turtle::MAX_COORDINATE`] as `{:e}` writes it, for the clamping warning: a constant

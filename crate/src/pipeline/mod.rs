@@ -22,11 +22,15 @@
 
 mod build;
 mod editor;
+#[cfg(feature = "environment")]
+mod environment;
 mod export;
 mod hooks;
 mod inspector;
 mod observer;
 mod plant;
+#[cfg(feature = "environment")]
+mod stand;
 mod step_on;
 #[cfg(feature = "surfaces")]
 mod surface_preview;

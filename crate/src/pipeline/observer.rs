@@ -21,31 +21,29 @@ pub(super) fn derive_stage(
     result: &mut Build,
     stepped: &mut dyn FnMut(u32),
 ) -> Option<Option<Adjustments>> {
-    let mut observer = StageObserver {
-        model,
-        growth: GrowthTracker::new(model, options.steps),
-        stepped: Some(stepped),
-        // (Without the feature, none: the counter is left out of the build.)
-        counter: (cfg!(feature = "growth") && count).then(|| StepCounter::new(model)),
-    };
+    #[cfg(feature = "environment")]
+    if super::environment::runs(model) {
+        return super::environment::derive_stage(model, options, count, result, stepped);
+    }
+    if let Some(warning) = unanswered(model) {
+        result.diagnostics.push(warning);
+    }
+    if cfg!(feature = "environment") && !model.environment.is_empty() {
+        // A timed grammar (the only one with an environment that gets here).
+        result.diagnostics.push(Diagnostic::warning(
+            "E0409",
+            model.settings.terminal_age_span.clone().unwrap_or(0..0),
+            "a timed grammar is derived without its environment: the environment answers ?E \
+             between whole steps, and timed modules are replaced between them"
+                .to_string(),
+        ));
+    }
+    let mut observer = StageObserver::new(model, options.steps, count, true);
+    observer.stepped = Some(stepped);
     let resumed = from.and_then(|from| derive::resume(model, &options, from, &mut observer));
     let derived = resumed.unwrap_or_else(|| derive::derive_tracked(model, &options, &mut observer));
     match derived {
-        Ok(mut derivation) => {
-            if let Some(mut counter) = observer.counter.take() {
-                counter.count(&derivation.string);
-                result.step_counts = counter.counts;
-            }
-            result.diagnostics.append(&mut derivation.warnings);
-            let adjustments = observer
-                .growth
-                .as_ref()
-                .map(|g| g.adjustments(&derivation.turtle_origin));
-            result.growth = observer.growth.map(GrowthTracker::finish);
-            result.derivation = derivation;
-            result.derived_with = options;
-            Some(adjustments)
-        }
+        Ok(derivation) => Some(observer.record(derivation, options, result)),
         Err(diagnostic) => {
             result.diagnostics.push(diagnostic);
             None
@@ -59,12 +57,11 @@ pub(super) fn trace(
     model: &Model,
     options: &DeriveOptions,
 ) -> Result<Vec<derive::TracedStep>, Diagnostic> {
-    let mut observer = StageObserver {
-        model,
-        growth: GrowthTracker::new(model, options.steps),
-        stepped: None,
-        counter: None,
-    };
+    #[cfg(feature = "environment")]
+    if super::environment::runs(model) {
+        return super::environment::trace(model, options);
+    }
+    let mut observer = StageObserver::new(model, options.steps, false, true);
     derive::derive_traced(model, options, &mut observer).map(|(_, steps)| steps)
 }
 
@@ -72,12 +69,55 @@ pub(super) fn trace(
 /// step (asking the turtle for heights), and the turtle answers query modules. Both read the
 /// derived string itself, not its homomorphism image. The progress callback, if any, is told each
 /// step done.
-struct StageObserver<'m, 's> {
+pub(super) struct StageObserver<'m, 's> {
     model: &'m Model,
     growth: Option<GrowthTracker<'m>>,
     stepped: Option<&'s mut dyn FnMut(u32)>,
     /// When the build counts each step's elements (for growth in time).
     counter: Option<StepCounter>,
+}
+
+impl<'m> StageObserver<'m, '_> {
+    /// The observer of a derivation of `steps` steps: `count`, count each step's elements;
+    /// `growth`, follow the grammar's growth attributes, if it has any.
+    pub(super) fn new(model: &'m Model, steps: u32, count: bool, growth: bool) -> Self {
+        StageObserver {
+            model,
+            growth: growth.then(|| GrowthTracker::new(model, steps)).flatten(),
+            stepped: None,
+            // (Without the feature, none: the counter is left out of the build.)
+            counter: (cfg!(feature = "growth") && count).then(|| StepCounter::new(model)),
+        }
+    }
+
+    /// Puts `derivation` (derived with `options`, this observer watching) into `result` with the
+    /// growth record and the step counts; returns the turtle's adjustments.
+    pub(super) fn record(
+        mut self,
+        mut derivation: Derivation,
+        options: DeriveOptions,
+        result: &mut Build,
+    ) -> Option<Adjustments> {
+        if let Some(counts) = self.step_counts(&derivation.string) {
+            result.step_counts = counts;
+        }
+        result.diagnostics.append(&mut derivation.warnings);
+        let adjustments = self
+            .growth
+            .as_ref()
+            .map(|g| g.adjustments(&derivation.turtle_origin));
+        result.growth = self.growth.map(GrowthTracker::finish);
+        result.derivation = derivation;
+        result.derived_with = options;
+        adjustments
+    }
+
+    /// The elements after each step, when counted, the last step's `last` string counted too.
+    pub(super) fn step_counts(&mut self, last: &LString) -> Option<Vec<f64>> {
+        let mut counter = self.counter.take()?;
+        counter.count(last);
+        Some(counter.counts)
+    }
 }
 
 /// The elements of each step's plant, counted on the derived strings: the modules that draw
@@ -190,4 +230,53 @@ impl derive::Observer for StageObserver<'_, '_> {
             .map(|q| (q.module, q.value))
             .collect()
     }
+}
+
+/// `E0409` when the grammar writes `?E` and declares no program to answer it (its parameters
+/// stay as written), unless the grammar declares an environment that this core does not run (the
+/// studio builds it again with the core that does).
+pub(super) fn unanswered(model: &Model) -> Option<Diagnostic> {
+    let query = model.environment_query()?;
+    let elsewhere = model.settings.environment_declared && !cfg!(feature = "environment");
+    if elsewhere || !model.environment.programs.is_empty() {
+        return None;
+    }
+    let name = model.alphabet.name(query);
+    Some(Diagnostic::warning(
+        "E0409",
+        first_written(model, query).unwrap_or_else(|| model.axiom_span.clone()),
+        format!(
+            "no environment program answers {name}: its parameters stay as written; declare one \
+             with '{} obstacle box min x y z max x y z' (or light, space, attractors)",
+            crate::vocabulary::DirectiveKind::Environment.written()
+        ),
+    ))
+}
+
+/// Where module `id` is first written, in the axiom or a successor.
+pub(super) fn first_written(
+    model: &Model,
+    id: crate::model::ModuleId,
+) -> Option<crate::syntax::Span> {
+    fn find(
+        modules: &[crate::model::SuccessorModule],
+        id: crate::model::ModuleId,
+    ) -> Option<crate::syntax::Span> {
+        modules.iter().find_map(|m| {
+            if m.id == id {
+                return Some(m.span.clone());
+            }
+            m.group.iter().flatten().find_map(|member| find(member, id))
+        })
+    }
+    let sets = [
+        &model.productions,
+        &model.decomposition,
+        &model.homomorphism,
+    ];
+    find(&model.axiom, id).or_else(|| {
+        sets.iter()
+            .flat_map(|set| &set.productions)
+            .find_map(|p| find(&p.successor, id))
+    })
 }

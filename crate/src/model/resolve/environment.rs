@@ -183,7 +183,9 @@ impl Resolver {
     /// `E0232` for a shape without the settings it needs; `E0231` for a radius not above 0, a box
     /// whose corners are not in order, a zero normal.
     fn check_shape(&mut self, spec: &ProgramSpec) -> Option<()> {
-        let shape = spec.shape?;
+        let Some(shape) = spec.shape else {
+            return Some(());
+        };
         let missing: Vec<&str> = shape
             .required()
             .iter()

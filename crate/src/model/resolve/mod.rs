@@ -32,6 +32,10 @@ pub fn resolve(file: &SourceFile) -> (Option<Model>, Vec<Diagnostic>) {
     let mut values = r.directives(file);
     r.surface_settings(file, &mut values.settings);
     let environment = r.environment_settings(file, &mut values.settings);
+    if !environment.plants.is_empty() {
+        // The module that places each plant of the stand in the string the views read.
+        r.alphabet.intern(name_of(Meaning::Turtle(Command::MoveTo)));
+    }
     let random_variables = r.random_variables(&randoms);
 
     let Some((axiom_syntax, axiom_span)) = &file.axiom else {

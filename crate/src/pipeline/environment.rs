@@ -1,0 +1,401 @@
+//! The environment's cycle in a build (docs/LANGUAGE.md, "Environment"; issue 47): every plant
+//! of the grammar (one, or a stand's) is derived by a [`Stepper`], all in lockstep; after the
+//! axiom and after every step each plant's string is interpreted, every program takes in all
+//! plants' parts, and every `?E` is answered at its place. Derive and the turtle know nothing of
+//! it: this file is where they meet the programs of [`crate::environment`].
+
+use super::observer::StageObserver;
+use super::stand::Stand;
+use super::Build;
+use crate::derive::{DeriveOptions, Generator, Stepper, TracedStep};
+use crate::diagnostics::Diagnostic;
+use crate::environment::{
+    responder, Exceeded, Part, Probe, ProgramDefaults, Responder, MAX_ENVIRONMENT_BYTES,
+};
+use crate::growth::Adjustments;
+use crate::model::{LString, Model, ModuleId, ProgramSpec};
+use crate::turtle::{self, Skeleton};
+use glam::DVec3;
+use rand::SeedableRng;
+
+/// True when the build runs the cycle: the grammar declares a program or a stand, and is not
+/// timed (a timed grammar is derived as if it declared no environment, with a warning).
+pub(super) fn runs(model: &Model) -> bool {
+    !model.environment.is_empty() && !model.settings.timed()
+}
+
+/// The programs of one build and the places of its plants.
+struct Environment<'m> {
+    model: &'m Model,
+    programs: Vec<(Box<dyn Responder>, &'m ProgramSpec)>,
+    /// Where each plant stands (the origin for a grammar without a stand).
+    places: Vec<DVec3>,
+    /// The values one `?E` is answered with: every program's reply, in the order declared.
+    stride: usize,
+    query: Option<ModuleId>,
+}
+
+impl<'m> Environment<'m> {
+    /// The environment of `model`, derived with `seed`; `E0410` for a program this core lacks.
+    fn new(model: &'m Model, seed: u64) -> Result<Self, Diagnostic> {
+        let defaults = ProgramDefaults {
+            step: model.settings.step,
+            seed,
+        };
+        let mut programs = Vec::new();
+        for spec in &model.environment.programs {
+            let Some(program) = responder(spec, &defaults) else {
+                return Err(Diagnostic::error(
+                    "E0410",
+                    spec.span.clone(),
+                    format!(
+                        "the {} program is not part of this build of Meristem",
+                        spec.info().name
+                    ),
+                ));
+            };
+            programs.push((program, spec));
+        }
+        let places = match &model.environment.plants[..] {
+            [] => vec![DVec3::ZERO],
+            plants => plants
+                .iter()
+                .map(|p| DVec3::from_array(p.position))
+                .collect(),
+        };
+        Ok(Environment {
+            model,
+            stride: programs.iter().map(|(p, _)| p.reply_len()).sum(),
+            programs,
+            places,
+            query: model.environment_query(),
+        })
+    }
+
+    /// Answers every `?E` of every plant's string now: each string interpreted, every program
+    /// updated with all the parts, then asked. Nothing when no string holds a `?E`.
+    fn answer<R: rand::Rng>(
+        &mut self,
+        plants: &mut [Stepper<'_, '_, R>],
+    ) -> Result<(), Diagnostic> {
+        let Some(query) = self.query else {
+            return Ok(());
+        };
+        if self.programs.is_empty() || !plants.iter().any(|p| p.string().ids.contains(&query)) {
+            return Ok(());
+        }
+        let mut parts = Vec::new();
+        let mut asked = Vec::new();
+        for (k, plant) in plants.iter().enumerate() {
+            let skeleton = turtle::interpret(self.model, plant.string());
+            add_parts(&skeleton, self.places[k], k as u32, &mut parts);
+            asked.extend(skeleton.environment_queries.iter().map(|q| (k, q.clone())));
+        }
+        self.update(&parts)?;
+        let replies = {
+            let probes: Vec<Probe<'_>> = asked
+                .iter()
+                .map(|(k, q)| Probe {
+                    position: (DVec3::from_array(q.position) + self.places[*k]).to_array(),
+                    heading: q.heading,
+                    up: q.up,
+                    args: plants[*k].string().params_of(q.module as usize),
+                    plant: *k as u32,
+                })
+                .collect();
+            let mut replies = vec![0.0; probes.len() * self.stride];
+            let mut offset = 0;
+            for (program, _) in &mut self.programs {
+                program.answer(&probes, &mut replies, self.stride, offset);
+                offset += program.reply_len();
+            }
+            replies
+        };
+        for (i, (k, q)) in asked.iter().enumerate() {
+            let reply = &replies[i * self.stride..][..self.stride];
+            write_reply(plants[*k].string_mut(), q.module as usize, reply);
+        }
+        for plant in plants.iter_mut() {
+            plant.written();
+        }
+        Ok(())
+    }
+
+    /// Every program takes in the parts, each within what the others leave of the budget.
+    fn update(&mut self, parts: &[Part]) -> Result<(), Diagnostic> {
+        for k in 0..self.programs.len() {
+            let others: usize = (self.programs.iter().enumerate())
+                .filter(|(j, _)| *j != k)
+                .map(|(_, (p, _))| p.bytes())
+                .sum();
+            let budget = MAX_ENVIRONMENT_BYTES.saturating_sub(others);
+            let (program, spec) = &mut self.programs[k];
+            if let Err(exceeded) = program.update(parts, budget) {
+                return Err(over_budget(spec, &exceeded));
+            }
+        }
+        Ok(())
+    }
+}
+
+/// `E0408`: a program would need more than the environment's memory budget.
+fn over_budget(spec: &ProgramSpec, exceeded: &Exceeded) -> Diagnostic {
+    let mb = |b: usize| b.div_ceil(1 << 20);
+    Diagnostic::error(
+        "E0408",
+        spec.span.clone(),
+        format!(
+            "the {} program would hold {} ({} MB), above the environment's budget of {} MB; \
+             use coarser settings (a larger cell, fewer points) or a smaller plant",
+            spec.info().name,
+            exceeded.what,
+            mb(exceeded.bytes),
+            mb(MAX_ENVIRONMENT_BYTES)
+        ),
+    )
+}
+
+/// Writes `reply` into the parameters of module `i`: the first k values for a `?E` of k
+/// parameters; one with more parameters than the reply keeps the rest as written.
+fn write_reply(s: &mut LString, i: usize, reply: &[f64]) {
+    if s.offsets.is_empty() || i + 1 >= s.offsets.len() {
+        return;
+    }
+    let (from, to) = (s.offsets[i] as usize, s.offsets[i + 1] as usize);
+    let n = (to - from).min(reply.len());
+    s.params[from..from + n].copy_from_slice(&reply[..n]);
+}
+
+/// The parts the environment sees of one plant's skeleton, moved to its place: segments (their
+/// radius half their width, in the model's units with `#width_unit`), and polygons, surfaces and
+/// spheres at their centres with their areas.
+fn add_parts(skeleton: &Skeleton, place: DVec3, plant: u32, parts: &mut Vec<Part>) {
+    let unit = skeleton.width_unit.unwrap_or(1.0);
+    let at = |p: DVec3| (p + place).to_array();
+    let flat = |centre: DVec3, area: f64| Part {
+        from: at(centre),
+        to: at(centre),
+        radius: 0.0,
+        area,
+        plant,
+    };
+    parts.extend(skeleton.segments.iter().map(|s| Part {
+        from: at(s.start),
+        to: at(s.end),
+        radius: 0.5 * s.width * unit,
+        area: 0.0,
+        plant,
+    }));
+    for p in &skeleton.polygons {
+        let Some(&first) = p.points.first() else {
+            continue;
+        };
+        let centre = p.points.iter().sum::<DVec3>() / p.points.len() as f64;
+        // Half the length of the sum of the fan's cross products: the polygon's area.
+        let mut twice = DVec3::ZERO;
+        for w in p.points.windows(2) {
+            twice += (w[0] - first).cross(w[1] - first);
+        }
+        parts.push(flat(centre, 0.5 * twice.length()));
+    }
+    for s in &skeleton.surfaces {
+        // A leaf-like organ: half its length along H times its width along L.
+        let area = 0.5 * (s.scale.x * s.scale.y).abs();
+        parts.push(flat(s.place(DVec3::new(0.0, 0.5, 0.0)), area));
+    }
+    for s in &skeleton.spheres {
+        parts.push(flat(s.center, std::f64::consts::PI * s.radius * s.radius));
+    }
+}
+
+/// Derives every plant of `model` in lockstep with the environment answering between steps, into
+/// `result`, telling `stepped` each step done (and again once the environment has answered it);
+/// returns the turtle's adjustments (growth's, for a single plant), or `None` when it failed.
+pub(super) fn derive_stage(
+    model: &Model,
+    options: DeriveOptions,
+    count: bool,
+    result: &mut Build,
+    stepped: &mut dyn FnMut(u32),
+) -> Option<Option<Adjustments>> {
+    result.diagnostics.extend(warnings(model));
+    match lockstep(model, &options, count, false, stepped) {
+        Ok(Derived {
+            mut observers,
+            derivations,
+            ..
+        }) => {
+            let stand = model.environment.plants.len();
+            if stand == 0 {
+                let (derivation, observer) = (derivations.into_iter().next()?, observers.pop()?);
+                return Some(observer.record(derivation, options, result));
+            }
+            let mut counts: Vec<f64> = Vec::new();
+            for (observer, d) in observers.iter_mut().zip(&derivations) {
+                for (i, c) in observer
+                    .step_counts(&d.string)
+                    .unwrap_or_default()
+                    .into_iter()
+                    .enumerate()
+                {
+                    match counts.get_mut(i) {
+                        Some(sum) => *sum += c,
+                        None => counts.push(c),
+                    }
+                }
+            }
+            result.step_counts = counts;
+            let placed = Stand::new(model).place(derivations);
+            result.plant_offsets = model
+                .environment
+                .plants
+                .iter()
+                .map(|p| p.position)
+                .collect();
+            result.derivation = placed;
+            result.derived_with = options;
+            Some(None)
+        }
+        Err(diagnostic) => {
+            result.diagnostics.push(diagnostic);
+            None
+        }
+    }
+}
+
+/// The derivation as a sequence (the studio's derivation view), with the environment answering
+/// between steps: a stand's steps show all its plants, placed.
+pub(super) fn trace(model: &Model, options: &DeriveOptions) -> Result<Vec<TracedStep>, Diagnostic> {
+    let derived = lockstep(model, options, false, true, &mut |_| {})?;
+    let mut traces = derived.traces;
+    if model.environment.plants.is_empty() {
+        return Ok(traces.pop().unwrap_or_default());
+    }
+    Ok(Stand::new(model).place_traces(traces))
+}
+
+/// What [`lockstep`] derived: each plant's derivation, observer and trace.
+struct Derived<'m> {
+    derivations: Vec<crate::derive::Derivation>,
+    observers: Vec<StageObserver<'m, 'static>>,
+    traces: Vec<Vec<TracedStep>>,
+}
+
+/// Every plant derived in lockstep, the environment answering after the axiom and every step.
+/// Plant i derives with the seed `seed + i`; growth attributes follow a single plant only.
+fn lockstep<'m>(
+    model: &'m Model,
+    options: &DeriveOptions,
+    count: bool,
+    traced: bool,
+    stepped: &mut dyn FnMut(u32),
+) -> Result<Derived<'m>, Diagnostic> {
+    let seed = options.seed.unwrap_or(model.settings.seed);
+    let mut environment = Environment::new(model, seed)?;
+    let n = environment.places.len();
+    let single = model.environment.plants.is_empty();
+    let mut rngs: Vec<Generator> = (0..n as u64)
+        .map(|i| Generator::seed_from_u64(seed.wrapping_add(i)))
+        .collect();
+    let mut observers: Vec<StageObserver<'m, 'static>> = (0..n)
+        .map(|_| StageObserver::new(model, options.steps, count, single))
+        .collect();
+    let mut plants = Vec::with_capacity(n);
+    for (rng, observer) in rngs.iter_mut().zip(observers.iter_mut()) {
+        plants.push(Stepper::start(model, options.steps, rng, observer, traced)?);
+    }
+    environment.answer(&mut plants)?;
+    for step in 1..=options.steps {
+        for plant in &mut plants {
+            plant.step()?;
+        }
+        stepped(step);
+        environment.answer(&mut plants)?;
+        stepped(step);
+    }
+    let mut derivations = Vec::with_capacity(n);
+    let mut traces = Vec::with_capacity(n);
+    for plant in plants {
+        let (derivation, trace) = plant.finish()?;
+        derivations.push(derivation);
+        traces.push(trace);
+    }
+    Ok(Derived {
+        derivations,
+        observers,
+        traces,
+    })
+}
+
+/// Warnings about an environment that will not answer: programs declared and no `?E` written
+/// (`E0409`); a stand of a grammar with growth attributes, which only a single plant follows.
+fn warnings(model: &Model) -> Vec<Diagnostic> {
+    let mut warnings = Vec::new();
+    let first = model.environment.programs.first();
+    if let (Some(spec), None) = (first, model.environment_query()) {
+        warnings.push(Diagnostic::warning(
+            "E0409",
+            spec.span.clone(),
+            "no communication module ?E asks the environment: the programs are not run; write \
+             ?E(…) where the plant should read their replies"
+                .to_string(),
+        ));
+    }
+    if !model.environment.plants.is_empty() && model.growth.is_active() {
+        let span = model.settings.iterations_span.clone().unwrap_or(0..0);
+        warnings.push(Diagnostic::warning(
+            "E0409",
+            span,
+            "the growth attributes follow a single plant: the plants of a stand grow without them"
+                .to_string(),
+        ));
+    }
+    warnings
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A program that asks for more than it is given.
+    struct Greedy;
+
+    impl Responder for Greedy {
+        fn reply_len(&self) -> usize {
+            1
+        }
+        fn update(&mut self, _parts: &[Part], budget: usize) -> Result<(), Exceeded> {
+            Err(Exceeded {
+                what: "a light grid of 1024 × 1024 × 1024 voxels".into(),
+                bytes: budget + 1,
+            })
+        }
+        fn answer(&mut self, _: &[Probe<'_>], _: &mut [f64], _: usize, _: usize) {}
+        fn bytes(&self) -> usize {
+            0
+        }
+    }
+
+    #[test]
+    fn a_program_over_the_budget_is_a_diagnostic_at_its_line() {
+        let source = "#environment obstacle sphere center 0 0 0 radius 1\naxiom: F ?E(0)";
+        let (file, _) = crate::syntax::parse(source);
+        let model = crate::model::resolve(&file).0.expect("a model");
+        let mut environment = Environment::new(&model, 1).expect("an environment");
+        environment.programs[0].0 = Box::new(Greedy);
+        let mut rng = Generator::seed_from_u64(1);
+        let mut observer = crate::derive::Unobserved;
+        let mut plants = vec![Stepper::start(&model, 1, &mut rng, &mut observer, false).unwrap()];
+        let error = environment
+            .answer(&mut plants)
+            .expect_err("over the budget");
+        assert_eq!(error.code, "E0408");
+        assert_eq!(&source[error.span.clone()], source.lines().next().unwrap());
+        assert!(
+            error.message.contains("1024 × 1024 × 1024 voxels"),
+            "{}",
+            error.message
+        );
+        assert!(error.message.contains("64 MB"), "{}", error.message);
+    }
+}

@@ -1,0 +1,367 @@
+//! The environment (issue 47; docs/LANGUAGE.md, "Environment"): `#environment`, `#stand` and
+//! `#plant` read with their diagnostics, `?E` answered between steps, pruning against an
+//! obstacle, stands of plants with their seeds, and a stand exported.
+
+use meristem::export::Format;
+use meristem::model::{resolve, EnvironmentSpec, PlantPlace, ProgramSpec, SettingValue};
+use meristem::pipeline::{build, export, BuildOptions, ExportOptions, Hooks};
+use meristem::vocabulary::{EnvironmentProgram, EnvironmentShape};
+
+/// The diagnostics of resolving `source`: (code, the text its span covers).
+fn diagnostics(source: &str) -> Vec<(String, String)> {
+    let (file, mut found) = meristem::syntax::parse(source);
+    let (_, more) = resolve(&file);
+    found.extend(more);
+    found
+        .iter()
+        .map(|d| (d.code.to_string(), source[d.span.clone()].to_string()))
+        .collect()
+}
+
+fn spec(source: &str) -> EnvironmentSpec {
+    let (file, _) = meristem::syntax::parse(source);
+    resolve(&file).0.expect("a model").environment
+}
+
+fn built(source: &str, iterations: u32) -> meristem::pipeline::Build {
+    let options = BuildOptions {
+        iterations: Some(iterations),
+        ..BuildOptions::default()
+    };
+    let b = build(source, &options);
+    let errors: Vec<_> = b
+        .diagnostics
+        .iter()
+        .filter(|d| d.severity == meristem::diagnostics::Severity::Error)
+        .collect();
+    assert!(errors.is_empty(), "{errors:?}");
+    b
+}
+
+#[test]
+fn each_wrong_word_has_its_diagnostic_at_the_word() {
+    let cases: &[(&str, &str, &str)] = &[
+        ("#environment sunlight", "E0230", "sunlight"),
+        (
+            "#environment obstacle cube min 0 0 0 max 1 1 1",
+            "E0230",
+            "obstacle",
+        ),
+        ("#environment light box", "E0230", "box"),
+        (
+            "#environment attractors plane point 0 0 0 normal 0 1 0",
+            "E0230",
+            "plane",
+        ),
+        (
+            "#environment obstacle sphere centre 0 0 0 radius 1",
+            "E0231",
+            "centre",
+        ),
+        (
+            "#environment obstacle sphere center 0 0 radius 1",
+            "E0231",
+            "center 0 0",
+        ),
+        (
+            "#environment obstacle box min 0 0 0",
+            "E0232",
+            "#environment obstacle box min 0 0 0",
+        ),
+        (
+            "#environment obstacle sphere center 0 0 0 radius 0",
+            "E0231",
+            "radius 0",
+        ),
+        (
+            "#environment obstacle box min 0 0 0 max 1 -1 1",
+            "E0231",
+            "max 1 -1 1",
+        ),
+        (
+            "#environment obstacle plane point 0 0 0 normal 0 0 0",
+            "E0231",
+            "normal 0 0 0",
+        ),
+        ("#environment light sky x", "E0203", "x"),
+        ("#stand circle 4", "E0233", "circle"),
+        ("#stand row 3", "E0233", "row 3"),
+        ("#stand row 0 spacing 1", "E0233", "0"),
+        (
+            "#stand grid 30 30 spacing 1",
+            "E0235",
+            "grid 30 30 spacing 1",
+        ),
+        (
+            "#stand random 50 size 1 1 spacing 1",
+            "E0235",
+            "random 50 size 1 1 spacing 1",
+        ),
+        ("#plant 1 2", "E0234", "1 2"),
+    ];
+    for (line, code, at) in cases {
+        let found = diagnostics(&format!("{line}\naxiom: F ?E(1)"));
+        assert_eq!(
+            found,
+            vec![(code.to_string(), at.to_string())],
+            "{line}: {found:?}"
+        );
+    }
+    // 400 plants at most, #stand and #plant together.
+    let many = format!("#stand grid 20 20 spacing 1\n#plant 0 0 0\naxiom: F");
+    assert_eq!(diagnostics(&many)[0].0, "E0235");
+}
+
+#[test]
+fn a_full_environment_reads_as_written() {
+    let source = "#environment light sun 0.5 sun_direction 0 1 1 cell 0.25\n\
+                  #environment obstacle box min -1 0 -1 max 1 2 1\n\
+                  #stand row 3 spacing 2\n\
+                  #plant 0 0 5\n\
+                  axiom: F ?E(0, 0, 0, 0, 0, 0)";
+    let s = spec(source);
+    let setting = |name: &'static str, values: Vec<f64>, text: &str| SettingValue {
+        name,
+        values,
+        span: source.find(text).map(|a| a..a + text.len()).unwrap(),
+    };
+    let line = |text: &str| source.find(text).map(|a| a..a + text.len()).unwrap();
+    let expected = EnvironmentSpec {
+        programs: vec![
+            ProgramSpec {
+                program: EnvironmentProgram::Light,
+                shape: None,
+                settings: vec![
+                    setting("sun", vec![0.5], "sun 0.5"),
+                    setting("sun_direction", vec![0.0, 1.0, 1.0], "sun_direction 0 1 1"),
+                    setting("cell", vec![0.25], "cell 0.25"),
+                ],
+                span: line("#environment light sun 0.5 sun_direction 0 1 1 cell 0.25"),
+            },
+            ProgramSpec {
+                program: EnvironmentProgram::Obstacle,
+                shape: Some(EnvironmentShape::Box),
+                settings: vec![
+                    setting("min", vec![-1.0, 0.0, -1.0], "min -1 0 -1"),
+                    setting("max", vec![1.0, 2.0, 1.0], "max 1 2 1"),
+                ],
+                span: line("#environment obstacle box min -1 0 -1 max 1 2 1"),
+            },
+        ],
+        plants: [
+            [-2.0, 0.0, 0.0],
+            [0.0, 0.0, 0.0],
+            [2.0, 0.0, 0.0],
+            [0.0, 0.0, 5.0],
+        ]
+        .iter()
+        .enumerate()
+        .map(|(i, &position)| PlantPlace {
+            position,
+            index: i as u32,
+        })
+        .collect(),
+    };
+    assert_eq!(s, expected);
+    assert_eq!(s.reply_len(), 6);
+}
+
+/// A shoot growing up (one unit a step) into a box whose floor is at y = 2.5, asking with `?E`
+/// behind its apex. Its reply, hand-checked: after step n the `?E` stands at the apex, at y = n;
+/// the distance to the box is 2.5 − n outside, and inside (n = 3, the box 1 wide on each side
+/// of x and z) the nearest face is the floor, 0.5 below.
+const SHOOT: &str = "#environment obstacle box min -1 2.5 -1 max 1 10 1\n\
+                     axiom: A ?E(1, 0)\n\
+                     A > ?E(f, d) : f == 1 -> F A\n\
+                     A > ?E(f, d) : f == 0 -> B\n";
+
+#[test]
+fn a_communication_module_reads_the_obstacle_where_it_stands_after_each_step() {
+    assert_eq!(built(SHOOT, 1).derived_text(), "FA?E(1,1.5)");
+    assert_eq!(built(SHOOT, 2).derived_text(), "FFA?E(1,0.5)");
+    assert_eq!(built(SHOOT, 3).derived_text(), "FFFA?E(0,-0.5)");
+    // Step 4's production reads step 3's reply: the apex stops.
+    assert_eq!(built(SHOOT, 4).derived_text(), "FFFB?E(0,-0.5)");
+    // Without the program the module stays as written (and a warning says what is missing).
+    let inert = built(
+        SHOOT
+            .lines()
+            .skip(1)
+            .collect::<Vec<_>>()
+            .join("\n")
+            .as_str(),
+        4,
+    );
+    assert_eq!(inert.derived_text(), "FFFFA?E(1,0)");
+    assert!(inert.diagnostics.iter().any(|d| d.code == "E0409"));
+}
+
+#[test]
+fn a_communication_module_keeps_what_the_reply_does_not_fill() {
+    let source = "#environment obstacle sphere center 0 0 0 radius 1\naxiom: F ?E(7) F ?E(7, 7, 7)";
+    assert_eq!(built(source, 0).derived_text(), "F?E(1)F?E(1,1,7)");
+}
+
+/// A bush that probes one step ahead of each apex (`g` moves there without drawing) and prunes
+/// the apex with `%` when that point is inside the box above it; it keeps growing otherwise.
+const HEDGE: &str = "#angle 30\n\
+                     #seed 5\n\
+                     #environment obstacle box min -50 3.5 -50 max 50 60 50\n\
+                     axiom: A g ?E(1, 0)\n\
+                     A > g ?E(f, d) : f == 1 -> F [ + / A g ?E(1, 0) ] [ - \\ A g ?E(1, 0) ] & A g ?E(1, 0)\n\
+                     A > g ?E(f, d) : f == 0 -> %\n";
+
+#[test]
+fn pruning_against_a_box_leaves_no_segment_inside_it() {
+    let pruned = built(HEDGE, 7);
+    let segments = &pruned.plant.skeleton.segments;
+    assert!(segments.len() > 20);
+    let inside = |p: glam::DVec3| p.x.abs() < 50.0 && p.z.abs() < 50.0 && p.y > 3.5 && p.y < 60.0;
+    for s in segments {
+        for k in 0..=10 {
+            let p = s.start.lerp(s.end, k as f64 / 10.0);
+            assert!(!inside(p), "a segment reaches {p} inside the box");
+        }
+    }
+    // The same bush without the box grows into it: the box did the pruning.
+    let free = built(&HEDGE.replace("#environment", "// #environment"), 7);
+    assert!(free.plant.skeleton.segments.len() > segments.len());
+    let top = free
+        .plant
+        .skeleton
+        .segments
+        .iter()
+        .map(|s| s.end.y)
+        .fold(0.0, f64::max);
+    assert!(top > 3.5);
+}
+
+/// A stochastic grammar, the same in every test below.
+const STOCHASTIC: &str = "#angle 25\n\
+                          axiom: A ?E(1, 0)\n\
+                          A -> (1) F [ + A ] A\n\
+                          A -> (1) F [ - A ] A\n\
+                          A -> (1) F A\n";
+
+#[test]
+fn the_same_seed_gives_the_same_plant() {
+    let source = format!("#environment obstacle plane point 0 3 0 normal 0 -1 0\n{STOCHASTIC}");
+    let a = built(&source, 6).derived_text();
+    assert_eq!(a, built(&source, 6).derived_text());
+    let other = build(
+        &source,
+        &BuildOptions {
+            iterations: Some(6),
+            seed: Some(2),
+            ..BuildOptions::default()
+        },
+    );
+    assert_ne!(a, other.derived_text());
+}
+
+/// Plant i of a stand of the grammar derives with the seed `seed + i`: alone with that seed (the
+/// obstacle's replies depend on no other plant) it is the same plant.
+#[test]
+fn a_stand_s_plants_differ_and_each_is_reproducible() {
+    let stand = format!("#stand grid 3 3 spacing 4\n#environment obstacle sphere center 0 2 0 radius 1\n{STOCHASTIC}");
+    let b = built(&stand, 5);
+    assert_eq!(b.plant_offsets.len(), 9);
+    assert_eq!(b.plant_offsets[0], [-4.0, 0.0, -4.0]);
+    let text = b.derived_text();
+    assert_eq!(text, built(&stand, 5).derived_text());
+    // `[@M(x,y,z)…]` a plant: its own string is between `)` and the `]` before the next.
+    let plants: Vec<&str> = text
+        .split("[@M(")
+        .skip(1)
+        .map(|p| p.split_once(')').unwrap().1)
+        .map(|p| p.strip_suffix(']').unwrap_or(p))
+        .collect();
+    assert_eq!(plants.len(), 9);
+    let distinct: std::collections::HashSet<&str> = plants.iter().copied().collect();
+    assert!(distinct.len() >= 5, "{plants:?}");
+    let single = "#environment obstacle sphere center 0 2 0 radius 1\n".to_string() + STOCHASTIC;
+    for (i, plant) in plants.iter().enumerate().step_by(4) {
+        let alone = build(
+            &single,
+            &BuildOptions {
+                iterations: Some(5),
+                seed: Some(1 + i as u64),
+                ..BuildOptions::default()
+            },
+        );
+        // The sphere sits at the origin: plant 4 (the middle one) stands in it.
+        if i != 4 {
+            let alone_text = alone.derived_text();
+            // The same plant; only its reply differs, the obstacle being elsewhere from it.
+            let unanswered = |s: &str| s.split("?E(").next().unwrap_or("").to_string();
+            assert_eq!(unanswered(plant), unanswered(&alone_text), "plant {i}");
+        }
+    }
+    // Every plant is drawn at its place.
+    let skeleton = &b.plant.skeleton;
+    for offset in &b.plant_offsets {
+        let base = glam::DVec3::from_array(*offset);
+        assert!(skeleton
+            .segments
+            .iter()
+            .any(|s| s.start.distance(base) < 1e-9));
+    }
+}
+
+#[test]
+fn a_stand_of_nine_builds_and_exports_gltf() {
+    let source = format!("#stand grid 3 3 spacing 3\n{STOCHASTIC}");
+    let options = ExportOptions {
+        build: BuildOptions {
+            iterations: Some(4),
+            ..BuildOptions::default()
+        },
+        format: Format::Glb,
+        stem: "stand".into(),
+        edits: None,
+        look: Default::default(),
+        animation: None,
+    };
+    let exported = export(&source, &options, &mut Hooks::default()).expect("exported");
+    let glb = &exported.files[0].bytes;
+    assert_eq!(&glb[..4], b"glTF");
+    assert_eq!(
+        u32::from_le_bytes(glb[8..12].try_into().unwrap()) as usize,
+        glb.len()
+    );
+    let single = export(STOCHASTIC, &options, &mut Hooks::default()).expect("exported");
+    let one = single.files[0].bytes.len();
+    // (The mesh spends fewer sides on each tube of a larger model: not 9 times the bytes.)
+    assert!(
+        glb.len() > one,
+        "{} bytes for 9 plants, {one} for one",
+        glb.len()
+    );
+    let json_len = u32::from_le_bytes(glb[12..16].try_into().unwrap()) as usize;
+    let json = std::str::from_utf8(&glb[20..20 + json_len]).expect("a JSON chunk");
+    assert!(json.contains("\"meshes\""));
+}
+
+#[test]
+fn progress_is_told_every_step_of_the_cycle() {
+    use meristem::pipeline::{build_with, Progress};
+    let mut told = Vec::new();
+    let mut progress = |p: Progress| {
+        if let Progress::Derived { step, .. } = p {
+            told.push(step);
+        }
+    };
+    let mut hooks = Hooks {
+        clock: None,
+        progress: Some(&mut progress),
+    };
+    let options = BuildOptions {
+        iterations: Some(3),
+        ..BuildOptions::default()
+    };
+    let b = build_with(SHOOT, &options, &mut hooks);
+    assert!(b.ok());
+    for step in 0..=3 {
+        assert!(told.contains(&step), "{told:?}");
+    }
+}
