@@ -108,8 +108,8 @@ fn each_wrong_word_has_its_diagnostic_at_the_word() {
         );
     }
     // 400 plants at most, #stand and #plant together.
-    let many = format!("#stand grid 20 20 spacing 1\n#plant 0 0 0\naxiom: F");
-    assert_eq!(diagnostics(&many)[0].0, "E0235");
+    let many = "#stand grid 20 20 spacing 1\n#plant 0 0 0\naxiom: F";
+    assert_eq!(diagnostics(many)[0].0, "E0235");
 }
 
 #[test]
