@@ -371,11 +371,20 @@ fn the_derivation_view_shows_each_step_s_replies() {
     let b = built(SHOOT, 4);
     let model = b.model.as_ref().unwrap();
     let steps = b.inspector().unwrap().sequence(10_000).unwrap().unwrap();
-    let texts: Vec<String> = steps.iter().map(|s| s.string.to_text(&model.alphabet)).collect();
+    let texts: Vec<String> = steps
+        .iter()
+        .map(|s| s.string.to_text(&model.alphabet))
+        .collect();
     // The axiom is answered too: its ?E stands at the origin, 2.5 below the box.
     assert_eq!(
         texts,
-        ["A?E(1,2.5)", "FA?E(1,1.5)", "FFA?E(1,0.5)", "FFFA?E(0,-0.5)", "FFFB?E(0,-0.5)"]
+        [
+            "A?E(1,2.5)",
+            "FA?E(1,1.5)",
+            "FFA?E(1,0.5)",
+            "FFFA?E(0,-0.5)",
+            "FFFB?E(0,-0.5)"
+        ]
     );
 }
 
@@ -409,7 +418,39 @@ fn a_stand_s_provenance_points_into_its_own_plant() {
     let steps = b.inspector().unwrap().sequence(100_000).unwrap().unwrap();
     assert_eq!(steps.len(), 5);
     for step in &steps {
-        assert_eq!(step.string.to_text(&model.alphabet).matches("[@M(").count(), 4);
+        assert_eq!(
+            step.string.to_text(&model.alphabet).matches("[@M(").count(),
+            4
+        );
     }
     assert_eq!(steps[4].string, d.string);
+}
+
+#[test]
+fn a_stand_counts_its_plants_together_against_the_module_limit() {
+    // Each plant has 2^6 = 64 modules after 6 steps; the 9 together pass 500.
+    let source = "#max_modules 500\n#stand grid 3 3 spacing 1\naxiom: A\nA -> AA";
+    let options = BuildOptions {
+        iterations: Some(6),
+        ..BuildOptions::default()
+    };
+    let b = build(source, &options);
+    let error = b
+        .diagnostics
+        .iter()
+        .find(|d| d.code == "E0400")
+        .expect("E0400");
+    assert!(
+        error.message.contains("9 plants 576 modules"),
+        "{}",
+        error.message
+    );
+    assert!(build(
+        source,
+        &BuildOptions {
+            iterations: Some(5),
+            ..options
+        }
+    )
+    .ok());
 }
