@@ -168,8 +168,10 @@ pub struct Model {
     /// The particle attributes (`#lifetime`, `#speed`, `#shape`, `#sun`, …) and which modules are
     /// apices and segments; all off by default.
     pub growth: GrowthAttributes,
-    /// `#environment`, `#stand` and `#plant` (empty without the feature `environment`, which then
-    /// only notes that the grammar declares them: [`Settings::environment_declared`]).
+    /// `#environment`, `#stand` and `#plant`. Only with the feature `environment`: without it (the
+    /// first plant's core) the resolver only notes that the grammar declares them
+    /// ([`Settings::environment_declared`]).
+    #[cfg(feature = "environment")]
     pub environment: EnvironmentSpec,
 }
 
@@ -185,6 +187,7 @@ impl Model {
     }
 
     /// The id of the communication module `?E`, when the grammar writes it.
+    #[cfg(feature = "environment")]
     pub fn environment_query(&self) -> Option<ModuleId> {
         (0..self.alphabet.len())
             .map(|i| ModuleId(i as u32))

@@ -67,6 +67,7 @@ pub struct Build {
     /// Where each plant of a stand stands (`#stand`, `#plant`; docs/LANGUAGE.md, "Stands"), in
     /// the order of the derived string, which holds each plant inside `[ @M(x, y, z) … ]`; empty
     /// for a single plant.
+    #[cfg(feature = "environment")]
     pub plant_offsets: Vec<[f64; 3]>,
 }
 

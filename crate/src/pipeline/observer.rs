@@ -29,7 +29,8 @@ pub(super) fn derive_stage(
     if let Some(warning) = unanswered(model) {
         result.diagnostics.push(warning);
     }
-    if cfg!(feature = "environment") && !model.environment.is_empty() {
+    #[cfg(feature = "environment")]
+    if !model.environment.is_empty() {
         // A timed grammar (the only one with an environment that gets here).
         result.diagnostics.push(Diagnostic::warning(
             "E0409",

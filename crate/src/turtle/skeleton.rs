@@ -115,7 +115,8 @@ pub struct Skeleton {
     pub surfaces: Vec<Surface>,
     pub spheres: Vec<Sphere>,
     pub queries: Vec<QueryValue>,
-    /// The communication modules `?E`, where they stand.
+    /// The communication modules `?E`, where they stand (only the environment reads them).
+    #[cfg(feature = "environment")]
     pub environment_queries: Vec<EnvironmentQuery>,
     /// Where the turtle stood after the last module.
     pub end: DVec3,

@@ -24,6 +24,8 @@ use std::sync::Arc;
 
 /// Resolves a parsed file. Returns `None` for the model when there is nothing to derive (no
 /// axiom); otherwise a model plus every diagnostic, even when some are errors.
+// (Without the feature `environment` the model keeps no environment: only its declared flag.)
+#[cfg_attr(not(feature = "environment"), allow(unused_variables))]
 pub fn resolve(file: &SourceFile) -> (Option<Model>, Vec<Diagnostic>) {
     let mut r = Resolver::new();
     let fixed = r.fixed_ids();
@@ -99,6 +101,7 @@ pub fn resolve(file: &SourceFile) -> (Option<Model>, Vec<Diagnostic>) {
         settings: values.settings,
         meanings,
         growth,
+        #[cfg(feature = "environment")]
         environment,
     };
     (Some(model), r.diagnostics)
