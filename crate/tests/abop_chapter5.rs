@@ -173,6 +173,30 @@ fn fig_5_8_and_its_variant_the_developmental_leaves_have_two_polygons_a_step_and
     assert!(turns(&entire) <= 2, "entire: {}", turns(&entire));
 }
 
+#[test]
+fn fig_5_6f_the_simple_leaf_is_one_polygon_of_2n_plus_1_vertices_up_its_midrib() {
+    // By hand: the axiom's dot and two vein ends a step give 1 + 2n vertices of one polygon (after
+    // the base, which `{` records too: Meristem's polygon starts where it is opened); the
+    // midrib's k-th segment, made at step k, has grown to LA·RA^(n−k): the youngest veins' dots,
+    // at the apex, stand 1 (the petiole F) + LA·(RA^n − 1)/(RA − 1) high, on the midrib.
+    for n in [1u32, 5, 20] {
+        let b = built("abop-5.06f-simple-leaf.lsys", Some(n));
+        let polygons = &b.plant.skeleton.polygons;
+        assert_eq!(polygons.len(), 1, "n = {n}");
+        assert_eq!(polygons[0].points.len(), 2 + 2 * n as usize, "n = {n}");
+        assert_eq!(polygons[0].points[0], polygons[0].points[1], "the base twice");
+        let midrib = 5.0 * (1.1f64.powi(n as i32) - 1.0) / 0.1;
+        let top = polygons[0].points.iter().map(|p| p.y).fold(0.0, f64::max);
+        assert!(close(top, 1.0 + midrib, 1e-6), "n = {n}: {top}");
+        // Symmetric: the outline goes up the left veins' ends and down the right ones, mirrored.
+        let points = &polygons[0].points[1..];
+        for k in 1..=n as usize {
+            let (left, right) = (points[k], points[points.len() - k]);
+            assert!(close(left.x, -right.x, 1e-9) && close(left.y, right.y, 1e-9), "n = {n}, k = {k}");
+        }
+    }
+}
+
 /// The number of apices after n steps from A(0) with the apical delay `d`, when every apex of age 0
 /// makes `laterals` lateral apices a step (2: opposite, Fig 5.11; 1: alternate, Fig 5.12) and goes
 /// on: a lateral made at step s waits d steps and grows like the whole from step s + d + 1, so
