@@ -256,9 +256,17 @@ fn capsella_makes_fourteen_leaves_then_a_raceme_of_flowers_turning_to_fruits() {
         let made = |s: u32| (15..=n).contains(&s);
         let fruits = (15..=n).filter(|&s| s + 6 <= n).count();
         let flowering = (15..=n).filter(|&s| made(s) && s < n && s + 6 > n).count();
-        assert_eq!(count(&ms, "L"), usize::from((1..=14).contains(&n)), "n = {n}");
+        assert_eq!(
+            count(&ms, "L"),
+            usize::from((1..=14).contains(&n)),
+            "n = {n}"
+        );
         assert_eq!(count(&ms, "A"), usize::from(n >= 14), "n = {n}");
-        assert_eq!(count(&ms, "X"), pedicels - fruits, "unripe fruits at n = {n}");
+        assert_eq!(
+            count(&ms, "X"),
+            pedicels - fruits,
+            "unripe fruits at n = {n}"
+        );
         assert_eq!(count(&ms, "K"), if n >= 15 { 4 } else { 0 }, "n = {n}");
         let leaf_halves = 2 * (leaves - usize::from(n <= 14));
         assert_eq!(

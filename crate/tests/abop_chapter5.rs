@@ -110,7 +110,8 @@ fn fig_5_5_the_cordate_leaf_is_a_fan_of_n_polygons_a_half_mirrored_about_the_mid
 }
 
 #[test]
-fn fig_5_8_and_its_variant_the_developmental_leaves_have_two_polygons_a_step_and_a_symmetric_blade() {
+fn fig_5_8_and_its_variant_the_developmental_leaves_have_two_polygons_a_step_and_a_symmetric_blade()
+{
     // (LA, RA) of each example: the midrib is the sum of the main segments, the k-th of them
     // written at step k and grown by RA at every later step: LA·(RA^n − 1)/(RA − 1), or LA·n.
     for (name, la, ra) in [
@@ -184,7 +185,10 @@ fn fig_5_6f_the_simple_leaf_is_one_polygon_of_2n_plus_1_vertices_up_its_midrib()
         let polygons = &b.plant.skeleton.polygons;
         assert_eq!(polygons.len(), 1, "n = {n}");
         assert_eq!(polygons[0].points.len(), 2 + 2 * n as usize, "n = {n}");
-        assert_eq!(polygons[0].points[0], polygons[0].points[1], "the base twice");
+        assert_eq!(
+            polygons[0].points[0], polygons[0].points[1],
+            "the base twice"
+        );
         let midrib = 5.0 * (1.1f64.powi(n as i32) - 1.0) / 0.1;
         let top = polygons[0].points.iter().map(|p| p.y).fold(0.0, f64::max);
         assert!(close(top, 1.0 + midrib, 1e-6), "n = {n}: {top}");
@@ -192,7 +196,10 @@ fn fig_5_6f_the_simple_leaf_is_one_polygon_of_2n_plus_1_vertices_up_its_midrib()
         let points = &polygons[0].points[1..];
         for k in 1..=n as usize {
             let (left, right) = (points[k], points[points.len() - k]);
-            assert!(close(left.x, -right.x, 1e-9) && close(left.y, right.y, 1e-9), "n = {n}, k = {k}");
+            assert!(
+                close(left.x, -right.x, 1e-9) && close(left.y, right.y, 1e-9),
+                "n = {n}, k = {k}"
+            );
         }
     }
 }
@@ -268,7 +275,11 @@ fn figs_5_11_and_5_12_compound_leaves_have_their_panels_delays_leaflets_and_rach
             // One leaflet (a polygon of the homomorphism) per apex.
             assert_eq!(b.plant.skeleton.polygons.len(), apices(n, d, laterals));
             // The rachis carries `laterals` laterals a step.
-            assert_eq!(top_level_branches(&derived), laterals * n as usize, "{name} n = {n}");
+            assert_eq!(
+                top_level_branches(&derived),
+                laterals * n as usize,
+                "{name} n = {n}"
+            );
             // Its two internodes a step elongate by R a step: 2·(1 + R + … + R^(n−1)).
             let rachis: f64 = b
                 .plant
