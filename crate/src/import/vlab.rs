@@ -444,7 +444,7 @@ fn surface(name: &str, file: &str, rest: Vec<&str>, all: &Files, view: &mut View
         letter: name,
         scale,
         precision,
-        colours: false,
+        colours: !view.materials,
     };
     let read = match all.text(file) {
         _ if !one_letter => Err(format!("Meristem cannot use: '{name}' is not one letter")),

@@ -433,6 +433,35 @@ mod tests {
     }
 
     #[test]
+    fn patch_colours_are_kept_with_a_colour_map_and_diffuse_factors_are_noted() {
+        let second = PATCH.replace(
+            "TOP COLOR: 1 DIFFUSE: 0.00 BOTTOM COLOR: 1 DIFFUSE: 0.00",
+            "TOP COLOR: 32 DIFFUSE: 0.5 BOTTOM COLOR: 40 DIFFUSE: 0.00",
+        );
+        let third = PATCH
+            .replace("TOP COLOR: 1", "TOP COLOR: 0")
+            .replace("BOTTOM COLOR: 1", "BOTTOM COLOR: 0");
+        let text = format!("{HEADER}{PATCH}{second}{third}");
+        let s = read(&text, &wanted(1.0, [0, 0])).unwrap();
+        assert!(s.lines[1].ends_with(", 3 3 0 color 1"), "{}", s.lines[1]);
+        assert!(
+            s.lines[2].ends_with(", 3 3 0 color 32 40"),
+            "{}",
+            s.lines[2]
+        );
+        assert!(s.lines[3].ends_with(", 3 3 0"), "{}", s.lines[3]);
+        assert!(s.note.unwrap().contains("diffuse factors"));
+        // With materials cpfg draws the turtle's material: no colours.
+        let plain = Wanted {
+            colours: false,
+            ..wanted(1.0, [0, 0])
+        };
+        let s = read(&text, &plain).unwrap();
+        assert!(s.lines.iter().all(|l| !l.contains("color")));
+        assert_eq!(s.note, None);
+    }
+
+    #[test]
     fn malformed_files_say_where() {
         let cut = format!("{HEADER}{}", &PATCH[..PATCH.len() - 20]);
         let e = read(&cut, &wanted(1.0, [0, 0])).unwrap_err();
