@@ -227,20 +227,14 @@ fn lpfg_surface_ids_are_read_from_defines_and_an_unknown_id_says_why() {
         leaf,
     ];
     let import = import::import_object(&files);
-    let notes: Vec<&str> = import.notes.iter().map(|n| n.message.as_str()).collect();
     // lpfg numbers the view file's surfaces from 0: petal.s is 0 (~p), leaf.s 1 (~l).
     assert!(
         import.text.contains("A(k) -> ~l(2)~p(1,2,3)~l(1)\n"),
         "{}",
         import.text
     );
-    assert!(
-        notes
-            .iter()
-            .any(|n| n.contains("none with id 7; lpfg ignores the module")),
-        "{notes:?}"
-    );
-    assert!(notes.iter().any(|n| n.contains("Surface(k, …): the surface id k is not a constant Meristem can work out, so Meristem draws ~l, the view file's leaf.s 2 instead")), "{notes:?}");
+    noted(&import, "none with id 7; lpfg ignores the module");
+    noted(&import, "Surface(k, …): the surface id k is not a constant Meristem can work out, so Meristem draws ~l, the view file's leaf.s 2 instead");
     let b = built(&import);
     let declared: Vec<char> = b.plant.skeleton.shapes.iter().map(|s| s.letter).collect();
     assert_eq!(declared, ['p', 'l']);
@@ -252,12 +246,12 @@ fn lpfg_surface_ids_are_read_from_defines_and_an_unknown_id_says_why() {
     let import = import::import_object(&files);
     // Surface(7, 1) too: with a file missing, no id is known to be wrong.
     assert!(import.text.contains("A(k) -> ~l(2)~p(1,2,3)~l(1)~l(1)\n"));
+    noted(&import, "surface file leaf.s was not opened");
+    noted(&import, "Surface(LEAF_SURFACE, …) draws the view file's surface 1, which was not read (see the notes on the view file): Meristem draws its own leaf ~l instead");
+}
+
+/// Fails unless a note of `import` says `what`.
+fn noted(import: &Import, what: &str) {
     let notes: Vec<&str> = import.notes.iter().map(|n| n.message.as_str()).collect();
-    assert!(
-        notes
-            .iter()
-            .any(|n| n.contains("surface file leaf.s was not opened")),
-        "{notes:?}"
-    );
-    assert!(notes.iter().any(|n| n.contains("Surface(LEAF_SURFACE, …) draws the view file's surface 1, which was not read (see the notes on the view file): Meristem draws its own leaf ~l instead")), "{notes:?}");
+    assert!(notes.iter().any(|n| n.contains(what)), "{what}: {notes:?}");
 }

@@ -423,16 +423,7 @@ fn line_style(value: &str, width_line: bool) -> bool {
 /// A view file's `surface: X file.s scale [s t]`: the file's patches as `#surface X …` and
 /// `#patch X …` lines, or a note saying why not (what `~X` then draws).
 fn surface(name: &str, file: &str, rest: Vec<&str>, all: &Files, view: &mut View) {
-    let numbers: Vec<f64> = rest
-        .iter()
-        .map_while(|w| w.parse::<f64>().ok().filter(|v| v.is_finite()))
-        .collect();
-    // cpfg: a size of 0 or below is 1; precisions of 0 are the file's.
-    let scale = numbers.first().copied().filter(|s| *s > 0.0).unwrap_or(1.0);
-    let precision = match numbers.get(1..3) {
-        Some([s, t]) => [*s, *t].map(|v| v.clamp(0.0, 1e6) as u32),
-        _ => [0, 0],
-    };
+    let (scale, precision, _) = surface_numbers(&rest);
     let own = match name {
         "p" => "Meristem's own petal",
         "l" => "Meristem's own leaf",
@@ -463,6 +454,22 @@ fn surface(name: &str, file: &str, rest: Vec<&str>, all: &Files, view: &mut View
             "the view file's surface {name} is read from {file}, which {why}: ~{name} draws {own}"
         )),
     }
+}
+
+/// The numbers after a surface line's file: its scale (0 or below is 1, as cpfg and lpfg read
+/// it), its precisions s and t (0 0 when not given: the file's, or the tool's default), and how
+/// many numbers there are.
+fn surface_numbers(rest: &[&str]) -> (f64, [u32; 2], usize) {
+    let numbers: Vec<f64> = rest
+        .iter()
+        .map_while(|w| w.parse::<f64>().ok().filter(|v| v.is_finite()))
+        .collect();
+    let scale = numbers.first().copied().filter(|s| *s > 0.0).unwrap_or(1.0);
+    let precision = match numbers.get(1..3) {
+        Some([s, t]) => [*s, *t].map(|v| v.clamp(0.0, 1e6) as u32),
+        _ => [0, 0],
+    };
+    (scale, precision, numbers.len())
 }
 
 /// Three numbers separated by commas or spaces.

@@ -17,16 +17,8 @@ pub(super) fn read(file: &str, rest: &[&str], all: &Files, view: &mut View) {
     if view.lpfg_surfaces.iter().any(|s| s.line == line) {
         return;
     }
-    let numbers: Vec<f64> = rest
-        .iter()
-        .map_while(|w| w.parse::<f64>().ok().filter(|v| v.is_finite()))
-        .collect();
-    let scale = numbers.first().copied().filter(|s| *s > 0.0).unwrap_or(1.0);
-    let precision = match numbers.get(1..3) {
-        Some([s, t]) => [*s, *t].map(|v| v.clamp(0.0, 1e6) as u32),
-        _ => [0, 0],
-    };
-    if numbers.len() > 3 {
+    let (scale, precision, numbers) = super::surface_numbers(rest);
+    if numbers > 3 {
         view.notes.push(format!(
             "the view file's surface {file} is given a texture: Meristem draws it in the turtle's colour"
         ));
