@@ -246,7 +246,7 @@ const PATCH: &[&[Param]] = &[&[
     Param::new(
         "points",
         ParamKind::Points,
-        "16 control points x y z, row by row of the 4 × 4 grid, separated by commas",
+        "16 control points x y z, row by row of the 4 × 4 grid, separated by commas; then, if wanted, color top [bottom]: the patch's colour indices (0: the turtle's)",
     ),
 ]];
 const TERMINAL_AGES: &[&[Param]] = &[&[Param::new(
@@ -513,8 +513,8 @@ pub const DIRECTIVES: &[DirectiveInfo] = &[
         "Declares what ~X draws: a shape of the organ library (leaf, petal, sepal, disk, ray_floret), and the frame of its #patch points as a cpfg .s file gives it.")
         .usage("E0221", "(a letter, then a shape of the library and frame words with their numbers)").repeatable(),
     row("patch", D::Patch, "Bézier patch", PATCH, G::Turtle,
-        "One bicubic Bézier patch of the surface ~X: 16 control points x y z, row by row; several lines make a surface of several patches.")
-        .usage("E0220", "(a letter, then 16 points x y z)").repeatable(),
+        "One bicubic Bézier patch of the surface ~X: 16 control points x y z, row by row, then optionally color top [bottom] (colour indices as ;(n) sets them, 0 the turtle's); several lines make a surface of several patches.")
+        .usage("E0220", "(a letter, then 16 points x y z, then optionally color and one or two colour indices)").repeatable(),
     row("max_modules", D::MaxModules, "Module limit", &[&[Param::whole("n", 0.0, U32_MAX, "modules at most").default(5_000_000.0)]], G::Limits,
         "Stop with an error when the string would grow past n modules (default 5,000,000)."),
     row("max_steps", D::MaxSteps, "Step limit", &[&[Param::whole("n", 0.0, U32_MAX, "steps at most").default(10_000.0)]], G::Limits,
