@@ -65,6 +65,40 @@ fn trunk_and_height(positions: &[f32]) -> (f64, f64) {
     (2.0 * radius, height)
 }
 
+/// The book's drawing unit of a Fig 2.6 or 2.7 tree: its widths are cpfg line widths in pixels, so
+/// a pixel is the picture's frame ÷ its pixels. As Meristem's default unit does, the frame is the
+/// finished tree's bounding-box diagonal (from the skeleton: no width in it) and 300 pixels across.
+fn book_pixel(s: &Skeleton) -> f64 {
+    let (mut low, mut high) = (DVec3::splat(f64::MAX), DVec3::splat(f64::MIN));
+    for seg in &s.segments {
+        low = low.min(seg.start).min(seg.end);
+        high = high.max(seg.start).max(seg.end);
+    }
+    low.distance(high) / 300.0
+}
+
+/// The grammar's `#width_unit`.
+fn width_unit(text: &str) -> f64 {
+    text.lines()
+        .find_map(|l| l.strip_prefix("#width_unit "))
+        .and_then(|v| v.trim().parse().ok())
+        .expect("a #width_unit")
+}
+
+/// Every stage of a Fig 2.6 or 2.7 tree is drawn with the grammar's unit: the trunk 10 units wide.
+fn assert_trunk_at_every_stage(name: &str, text: &str) {
+    let unit = width_unit(text);
+    for stage in [1, 4, 7] {
+        let b = built(text, Some(stage));
+        assert_eq!(b.plant.mesh.width_unit, unit, "{name} at n = {stage}");
+        let (trunk, _) = trunk_and_height(&b.plant.mesh.positions);
+        assert!(
+            (trunk - 10.0 * unit).abs() < 1e-3 * trunk,
+            "{name} at n = {stage}: {trunk}"
+        );
+    }
+}
+
 /// `measured` is within 25 % of `expected`.
 fn within_quarter(what: &str, measured: f64, expected: f64) {
     let off = (measured / expected - 1.0).abs();
@@ -126,13 +160,14 @@ fn honda_trees_have_their_tables_angles_counts_and_proportions() {
         );
         let ratio = s.segments[lateral].width / s.segments[0].width;
         assert!((ratio - 0.707).abs() < 1e-9, "{name}: wr");
-        // By hand: the trunk is 10 width units wide, the tree as high as its trunk's internodes
-        // 1, r1, r1², … r1⁹ laid end to end (the trunk grows straight up; no branch reaches
-        // higher): (1 − r1¹⁰)/(1 − r1).
+        // By hand: the trunk is 10 of the book's pixels wide, the tree as high as its trunk's
+        // internodes 1, r1, r1², … r1⁹ laid end to end (the trunk grows straight up; no branch
+        // reaches higher): (1 − r1¹⁰)/(1 − r1).
         let r1: f64 = constant(&text, "r1");
-        let expected = 10.0 * b.plant.mesh.width_unit / ((1.0 - r1.powi(10)) / (1.0 - r1));
+        let expected = 10.0 * book_pixel(s) / ((1.0 - r1.powi(10)) / (1.0 - r1));
         let (trunk_width, height) = trunk_and_height(&b.plant.mesh.positions);
         within_quarter(name, trunk_width / height, expected);
+        assert_trunk_at_every_stage(name, &text);
     }
 }
 
@@ -141,7 +176,7 @@ const SYMPODIAL: [(&str, f64, f64, f64, f64); 4] = [
     ("abop-2.07a", 0.9, 0.7, 5.0, 65.0),
     ("abop-2.07b", 0.9, 0.7, 10.0, 60.0),
     ("abop-2.07c", 0.9, 0.8, 20.0, 50.0),
-    ("abop-2.07d", 0.8, 0.8, 35.0, 35.0),
+    ("abop-2.07d", 0.9, 0.8, 35.0, 35.0),
 ];
 
 #[test]
@@ -168,12 +203,13 @@ fn sympodial_trees_fork_at_their_tables_angles_with_their_proportions() {
         // By hand: after the trunk (length 1), the highest path takes the r1 branch of every fork:
         // at fork k its internode is r1^k long, and since $ makes L horizontal before each turn
         // by a1 about U, the heading's upward part is multiplied by cos a1 at each fork:
-        // height = 1 + Σ_{k=1..9} (r1 cos a1)^k. The trunk is 10 width units wide.
+        // height = 1 + Σ_{k=1..9} (r1 cos a1)^k. The trunk is 10 of the book's pixels wide.
         let q = r1 * a1.to_radians().cos();
         let height = 1.0 + (1..10).map(|k| q.powi(k)).sum::<f64>();
-        let expected = 10.0 * b.plant.mesh.width_unit / height;
+        let expected = 10.0 * book_pixel(s) / height;
         let (trunk_width, drawn_height) = trunk_and_height(&b.plant.mesh.positions);
         within_quarter(name, trunk_width / drawn_height, expected);
+        assert_trunk_at_every_stage(name, &text);
     }
 }
 

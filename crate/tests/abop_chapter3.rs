@@ -239,3 +239,40 @@ fn the_partial_raceme_has_leaves_below_and_flowers_above() {
         assert!(count(&ms, "I") >= organs.len());
     }
 }
+
+#[test]
+fn capsella_makes_fourteen_leaves_then_a_raceme_of_flowers_turning_to_fruits() {
+    // By hand from the grammar: a(13) makes one leaf L a step for 14 steps (t = 13 … 0), and A one
+    // pedicel a step from step 15 on. A pedicel made at step s has its four petals K drawn from
+    // step s + 1 (each K two polygons) and, at step s + 6, X(5) has counted down and becomes the
+    // fruit (one polygon) while % cuts the petals behind it. An L becomes its two halves the step
+    // after it is made.
+    let text = example("abop-3.05-capsella-bursa-pastoris.lsys");
+    for n in [1u32, 10, 14, 15, 16, 20, 21, 26, 30] {
+        let b = at(&text, n);
+        let ms = modules(&b.derived_text());
+        let leaves = n.min(14) as usize;
+        let pedicels = n.saturating_sub(14) as usize;
+        let made = |s: u32| (15..=n).contains(&s);
+        let fruits = (15..=n).filter(|&s| s + 6 <= n).count();
+        let flowering = (15..=n).filter(|&s| made(s) && s < n && s + 6 > n).count();
+        assert_eq!(
+            count(&ms, "L"),
+            usize::from((1..=14).contains(&n)),
+            "n = {n}"
+        );
+        assert_eq!(count(&ms, "A"), usize::from(n >= 14), "n = {n}");
+        assert_eq!(
+            count(&ms, "X"),
+            pedicels - fruits,
+            "unripe fruits at n = {n}"
+        );
+        assert_eq!(count(&ms, "K"), if n >= 15 { 4 } else { 0 }, "n = {n}");
+        let leaf_halves = 2 * (leaves - usize::from(n <= 14));
+        assert_eq!(
+            b.plant.skeleton.polygons.len(),
+            leaf_halves + 8 * flowering + fruits,
+            "polygons at n = {n}"
+        );
+    }
+}

@@ -110,12 +110,13 @@ fn fig_5_5_the_cordate_leaf_is_a_fan_of_n_polygons_a_half_mirrored_about_the_mid
 }
 
 #[test]
-fn fig_5_6_and_5_8_the_developmental_leaves_have_two_polygons_a_step_and_a_symmetric_blade() {
+fn fig_5_8_and_its_variant_the_developmental_leaves_have_two_polygons_a_step_and_a_symmetric_blade()
+{
     // (LA, RA) of each example: the midrib is the sum of the main segments, the k-th of them
     // written at step k and grown by RA at every later step: LA·(RA^n − 1)/(RA − 1), or LA·n.
     for (name, la, ra) in [
-        ("abop-5.06-rose-leaf.lsys", 5.0, 1.15f64),
-        ("abop-5.08-leaf-growth-rates.lsys", 5.0, 1.0),
+        ("abop-5.08-rose-leaf.lsys", 5.0, 1.15f64),
+        ("abop-sec-5.2-leaf-growth-rates.lsys", 5.0, 1.0),
     ] {
         for n in [6u32, 20] {
             let b = built(name, Some(n));
@@ -166,18 +167,55 @@ fn fig_5_6_and_5_8_the_developmental_leaves_have_two_polygons_a_step_and_a_symme
             .collect();
         steps.windows(2).filter(|w| w[0] * w[1] < 0.0).count()
     };
-    let rose = example("abop-5.06-rose-leaf.lsys");
+    let rose = example("abop-5.08-rose-leaf.lsys");
     assert!(turns(&rose) >= 20, "serrated: {}", turns(&rose));
     let entire = rose.replace("#define LC 3 ", "#define LC 0 ");
     assert_ne!(entire, rose);
     assert!(turns(&entire) <= 2, "entire: {}", turns(&entire));
 }
 
-/// The number of apices after n steps from A(0) with the delay D = 1: a(0) = 1, a(1) = 3 and
-/// a(n) = a(n−1) + 2·a(n−2) (the apex goes on and its two laterals, one step late, grow like it):
-/// the Jacobsthal numbers (2^(n+2) − (−1)^n)/3.
-fn apices(n: u32) -> usize {
-    ((1i64 << (n + 2)) - if n.is_multiple_of(2) { 1 } else { -1 }) as usize / 3
+#[test]
+fn fig_5_6f_the_simple_leaf_is_one_polygon_of_2n_plus_1_vertices_up_its_midrib() {
+    // By hand: the axiom's dot and two vein ends a step give 1 + 2n vertices of one polygon (after
+    // the base, which `{` records too: Meristem's polygon starts where it is opened); the
+    // midrib's k-th segment, made at step k, has grown to LA·RA^(n−k): the youngest veins' dots,
+    // at the apex, stand 1 (the petiole F) + LA·(RA^n − 1)/(RA − 1) high, on the midrib.
+    for n in [1u32, 5, 20] {
+        let b = built("abop-5.06f-simple-leaf.lsys", Some(n));
+        let polygons = &b.plant.skeleton.polygons;
+        assert_eq!(polygons.len(), 1, "n = {n}");
+        assert_eq!(polygons[0].points.len(), 2 + 2 * n as usize, "n = {n}");
+        assert_eq!(
+            polygons[0].points[0], polygons[0].points[1],
+            "the base twice"
+        );
+        let midrib = 5.0 * (1.1f64.powi(n as i32) - 1.0) / 0.1;
+        let top = polygons[0].points.iter().map(|p| p.y).fold(0.0, f64::max);
+        assert!(close(top, 1.0 + midrib, 1e-6), "n = {n}: {top}");
+        // Symmetric: the outline goes up the left veins' ends and down the right ones, mirrored.
+        let points = &polygons[0].points[1..];
+        for k in 1..=n as usize {
+            let (left, right) = (points[k], points[points.len() - k]);
+            assert!(
+                close(left.x, -right.x, 1e-9) && close(left.y, right.y, 1e-9),
+                "n = {n}, k = {k}"
+            );
+        }
+    }
+}
+
+/// The number of apices after n steps from A(0) with the apical delay `d`, when every apex of age 0
+/// makes `laterals` lateral apices a step (2: opposite, Fig 5.11; 1: alternate, Fig 5.12) and goes
+/// on: a lateral made at step s waits d steps and grows like the whole from step s + d + 1, so
+/// f(n) = f(n − 1) + laterals · f(n − 1 − d), f = 1 up to step 0. With d = 1 and two laterals: the
+/// Jacobsthal numbers (2^(n+2) − (−1)^n)/3.
+fn apices(n: u32, d: u32, laterals: usize) -> usize {
+    let mut f = vec![1usize; (d + 1) as usize]; // f(−d) … f(0)
+    for _ in 0..n {
+        let next = f[f.len() - 1] + laterals * f[f.len() - 1 - d as usize];
+        f.push(next);
+    }
+    f[f.len() - 1]
 }
 
 /// Branches `[` at the top level of `derived`: the laterals on the main axis.
@@ -197,29 +235,52 @@ fn top_level_branches(derived: &str) -> usize {
     count
 }
 
+/// Figs 5.11 a–e and 5.12 a–c: (file, D, R, laterals a step on the rachis).
+const COMPOUND: [(&str, u32, f64, usize); 8] = [
+    ("abop-5.11a-compound-leaf.lsys", 0, 2.0, 2),
+    ("abop-5.11b-compound-leaf.lsys", 1, 1.5, 2),
+    ("abop-5.11c-compound-leaf.lsys", 2, 1.36, 2),
+    ("abop-5.11d-compound-leaf.lsys", 4, 1.23, 2),
+    ("abop-5.11e-compound-leaf.lsys", 7, 1.17, 2),
+    ("abop-5.12a-compound-leaf-alternate.lsys", 1, 1.36, 1),
+    ("abop-5.12b-compound-leaf-alternate.lsys", 4, 1.18, 1),
+    ("abop-5.12c-compound-leaf-alternate.lsys", 7, 1.13, 1),
+];
+
 #[test]
-fn fig_5_11_compound_leaves_add_a_pair_of_leaflets_a_step_and_jacobsthal_leaflets_in_all() {
+fn figs_5_11_and_5_12_compound_leaves_have_their_panels_delays_leaflets_and_rachis() {
+    // Hand counts of the recurrence: D = 1 with pairs gives the Jacobsthal numbers, D = 0 powers
+    // of 3 (every apex makes two more at once), alternate D = 1 the Fibonacci numbers.
     assert_eq!(
-        (0..8).map(apices).collect::<Vec<_>>(),
+        (0..8).map(|n| apices(n, 1, 2)).collect::<Vec<_>>(),
         [1, 3, 5, 11, 21, 43, 85, 171]
     );
-    for name in [
-        "abop-5.11a-compound-leaf-alternate.lsys",
-        "abop-5.11b-compound-leaf-opposite.lsys",
-    ] {
-        for n in 0..=7 {
+    assert_eq!(
+        (0..5).map(|n| apices(n, 0, 2)).collect::<Vec<_>>(),
+        [1, 3, 9, 27, 81]
+    );
+    assert_eq!(
+        (0..8).map(|n| apices(n, 1, 1)).collect::<Vec<_>>(),
+        [1, 2, 3, 5, 8, 13, 21, 34]
+    );
+    for (name, d, r, laterals) in COMPOUND {
+        let text = example(name);
+        assert!(text.contains(&format!("#define D {d} ")), "{name}: D");
+        assert!(text.contains(&format!("#define R {r} ")), "{name}: R");
+        for n in 0..=9 {
             let b = built(name, Some(n));
             let derived = b.derived_text();
-            assert_eq!(derived.matches('A').count(), apices(n), "{name} n = {n}");
+            let apices_drawn = derived.matches('A').count() + derived.matches('B').count();
+            assert_eq!(apices_drawn, apices(n, d, laterals), "{name} n = {n}");
             // One leaflet (a polygon of the homomorphism) per apex.
-            assert_eq!(b.plant.skeleton.polygons.len(), apices(n), "{name} n = {n}");
-            // The rachis carries one pair of laterals per step.
+            assert_eq!(b.plant.skeleton.polygons.len(), apices(n, d, laterals));
+            // The rachis carries `laterals` laterals a step.
             assert_eq!(
                 top_level_branches(&derived),
-                2 * n as usize,
+                laterals * n as usize,
                 "{name} n = {n}"
             );
-            // Its internodes elongate by R = 2 a step: 2·(1 + 2 + … + 2^(n−1)) = 2·(2^n − 1).
+            // Its two internodes a step elongate by R a step: 2·(1 + R + … + R^(n−1)).
             let rachis: f64 = b
                 .plant
                 .skeleton
@@ -228,7 +289,7 @@ fn fig_5_11_compound_leaves_add_a_pair_of_leaflets_a_step_and_jacobsthal_leaflet
                 .filter(|s| s.start.x.abs() < 1e-9 && s.end.x.abs() < 1e-9)
                 .map(|s| (s.end - s.start).length())
                 .sum();
-            let expected = 2.0 * ((1u64 << n) as f64 - 1.0);
+            let expected = 2.0 * (0..n).map(|k| r.powi(k as i32)).sum::<f64>();
             assert!(close(rachis, expected, 1e-6), "{name} n = {n}: {rachis}");
         }
     }
@@ -254,9 +315,10 @@ fn fig_5_11_compound_leaves_add_a_pair_of_leaflets_a_step_and_jacobsthal_leaflet
         (all, points.len())
     };
     // A lateral written at step k waits a step (D = 1) and draws at step k + 2: at n = 5 the
-    // laterals of steps 1 to 3 have drawn, 3 pairs.
-    assert_eq!(bases("abop-5.11b-compound-leaf-opposite.lsys"), (6, 3));
-    assert_eq!(bases("abop-5.11a-compound-leaf-alternate.lsys"), (6, 6));
+    // laterals of steps 1 to 3 have drawn: 3 pairs on the opposite leaf, 3 single ones on the
+    // alternate leaf.
+    assert_eq!(bases("abop-5.11b-compound-leaf.lsys"), (6, 3));
+    assert_eq!(bases("abop-5.12a-compound-leaf-alternate.lsys"), (3, 3));
 }
 
 /// A polygon's midline: the unit vector from its first point (the base of a leaf or petal drawn from

@@ -771,19 +771,11 @@ const CORPUS: &[Entry] = &[
         &[
             (
                 0,
-                "the view file's surface file leaf.s is not read by Meristem: what draws ",
-            ),
-            (
-                0,
                 "the view file's stropism line (0.0 1.0 0, 0.05) is not translated: the p",
             ),
             (
                 0,
                 "the materials of material.mat become their diffuse colours: their ambien",
-            ),
-            (
-                42,
-                "lpfg's Surface3(id, x, y, z) draws the view file's surface id (a .s file",
             ),
         ],
     ),

@@ -161,3 +161,97 @@ fn any_bytes_as_s_files_never_crash_the_import_or_the_build() {
         assert!(b.ok(), "{:?}", b.diagnostics);
     }
 }
+
+#[test]
+fn an_lpfg_object_draws_its_surface3_leaves_from_its_s_file_where_lpfg_puts_them() {
+    // MonopodialSpiral (lpfg): view.v `surface: leaf.s` is surface 0; lsystem.l's leaf L(t) is
+    // interpreted as `… Surface3(0, width, length, length)`.
+    let import = import::import_object(&corpus("MonopodialSpiral"));
+    let notes: Vec<&str> = import.notes.iter().map(|n| n.message.as_str()).collect();
+    assert!(!notes.iter().any(|n| n.contains("urface")), "{notes:?}");
+    assert!(
+        import
+            .text
+            .contains("#surface l contact 0.02 -1.66 0 size 1 scale 1 precision 10 10\n"),
+        "{}",
+        import.text
+    );
+    let leaf = "~l((leaf_width(t/20)),(leaf_length(t/10)),(leaf_length(t/10)))";
+    assert!(import.text.contains(leaf), "{}", import.text);
+    let b = built(&import);
+    let (counts, vertices) = drawn(&b);
+    // One leaf per node: 44 internodes (SOURCES.md), each with its leaf.
+    assert_eq!(counts, [44]);
+    assert_eq!(per_surface(&b, 0), 2 * 11 * 11);
+    assert_eq!(vertices, 44 * per_surface(&b, 0));
+    // The patch's corner (s, t) = (0, 0) is its first control point p = (−0.60, 1.21, 0.10).
+    // lpfg (surface.cpp, glturtle.cpp): left = up × heading = (0,0,−1) × (0,1,0) = (1,0,0);
+    // v = (p − contact) read along (−left, heading, up) = (0.62, 2.87, −0.10), drawn at
+    // position + sx·v.x·(−L) + sy·v.y·H + sz·v.z·U. lpfg's turtle starts as Meristem's (heading
+    // +Y, left −X, up +Z) and turns alike (Left(a) is +(a)), so the corner is at
+    // position − sx·0.62·L + sy·2.87·H − sz·0.10·U.
+    let s = &b.plant.skeleton.surfaces[0];
+    let expected = s.origin - s.left * (s.scale.x * 0.62) + s.heading * (s.scale.y * 2.87)
+        - s.up * (s.scale.z * 0.10);
+    let (mesh, parts) = build_mesh_with_parts(&b.plant.skeleton, &b.plant.mesh_options);
+    let first = parts.surfaces[0].first_vertex as usize;
+    let corner = glam::DVec3::new(
+        mesh.positions[3 * first] as f64,
+        mesh.positions[3 * first + 1] as f64,
+        mesh.positions[3 * first + 2] as f64,
+    );
+    assert!(
+        (corner - expected).length() < 1e-4 * (1.0 + expected.length()),
+        "{corner} {expected}"
+    );
+}
+
+#[test]
+fn lpfg_surface_ids_are_read_from_defines_and_an_unknown_id_says_why() {
+    let leaf = corpus("MonopodialSpiral")
+        .into_iter()
+        .find(|f| f.name == "leaf.s")
+        .expect("leaf.s");
+    let file = |name: &str, text: &str| ObjectFile {
+        name: name.into(),
+        bytes: text.as_bytes().to_vec(),
+    };
+    let lsystem = "#include <lpfgall.h>\n#define LEAF_SURFACE 1\nderivation length: 1;\nmodule A(float);\nAxiom: A(1);\nA(k): { produce Surface(LEAF_SURFACE, 2) Surface3(0, 1, 2, 3) Surface(7, 1) Surface(k, 1); }\n";
+    let mut files = vec![
+        file("plant.l", lsystem),
+        file("plant.v", "surface: petal.s 1 4 6\nsurface: leaf.s 2\n"),
+        ObjectFile {
+            name: "petal.s".into(),
+            bytes: leaf.bytes.clone(),
+        },
+        leaf,
+    ];
+    let import = import::import_object(&files);
+    // lpfg numbers the view file's surfaces from 0: petal.s is 0 (~p), leaf.s 1 (~l).
+    assert!(
+        import.text.contains("A(k) -> ~l(2)~p(1,2,3)~l(1)\n"),
+        "{}",
+        import.text
+    );
+    noted(&import, "none with id 7; lpfg ignores the module");
+    noted(&import, "Surface(k, …): the surface id k is not a constant Meristem can work out, so Meristem draws ~l, the view file's leaf.s 2 instead");
+    let b = built(&import);
+    let declared: Vec<char> = b.plant.skeleton.shapes.iter().map(|s| s.letter).collect();
+    assert_eq!(declared, ['p', 'l']);
+    // ~l(1), drawn for Surface(k, 1), is leaf.s too (the note says so).
+    let (counts, _) = drawn(&b);
+    assert_eq!(counts, [1, 2]);
+    // Without leaf.s, its id is unknown: Meristem's own leaf, with a note.
+    files.retain(|f| f.name != "leaf.s");
+    let import = import::import_object(&files);
+    // Surface(7, 1) too: with a file missing, no id is known to be wrong.
+    assert!(import.text.contains("A(k) -> ~l(2)~p(1,2,3)~l(1)~l(1)\n"));
+    noted(&import, "surface file leaf.s was not opened");
+    noted(&import, "Surface(LEAF_SURFACE, …) draws the view file's surface 1, which was not read (see the notes on the view file): Meristem draws its own leaf ~l instead");
+}
+
+/// Fails unless a note of `import` says `what`.
+fn noted(import: &Import, what: &str) {
+    let notes: Vec<&str> = import.notes.iter().map(|n| n.message.as_str()).collect();
+    assert!(notes.iter().any(|n| n.contains(what)), "{what}: {notes:?}");
+}

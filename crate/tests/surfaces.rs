@@ -207,3 +207,92 @@ fn a_growing_surface_grows_from_its_contact_point() {
         assert_eq!(o, [0.0, 1.0, 0.0]);
     }
 }
+
+/// Two unit patches side by side (the second one over along L), the first in colour 3, the
+/// second 5 on top and 7 underneath, and a third with no colour of its own.
+fn coloured_patches() -> String {
+    let row = |dx: f64| -> String {
+        (0..16)
+            .map(|k| format!("{} {} 0", dx + (k % 4) as f64 / 3.0, (k / 4) as f64 / 3.0))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    format!(
+        "#color 1 200 200 200\n#color 3 255 0 0\n#color 5 0 0 255\n#color 7 0 255 0\n#patch a {} color 3\n#patch a {} color 5 7\n#patch a {}\naxiom: ;(1)~a",
+        row(0.0),
+        row(2.0),
+        row(4.0)
+    )
+}
+
+#[test]
+fn patch_colours_win_over_the_turtle_s_as_cpfg_s_do_and_reach_every_export() {
+    let b = ok(&coloured_patches());
+    let mesh = &b.plant.mesh;
+    // Per patch 6 × 6 points a side (precision 5, the default): the fronts of patches 0, 1, 2,
+    // then their backs.
+    let per = 36;
+    assert_eq!(mesh.vertex_count(), 6 * per);
+    let colour = |v: usize| {
+        let c = &mesh.colors[3 * v..3 * v + 3];
+        [c[0], c[1], c[2]].map(|x| (x * 255.0).round() as u8)
+    };
+    let skeleton = &b.plant.skeleton;
+    let srgb = |i: u16| skeleton.color(i).map(|x| (x * 255.0).round() as u8);
+    // Front: 3, 5, the turtle's 1; back: 3, 7, 1.
+    for (k, index) in [3u16, 5, 1, 3, 7, 1].into_iter().enumerate() {
+        assert_eq!(colour(k * per), srgb(index), "part {k}");
+        assert_eq!(colour(k * per + per - 1), srgb(index), "part {k}");
+    }
+    assert_ne!(srgb(3), srgb(1));
+    // Each triangle's colour index, as the writers group them.
+    let indices: Vec<u32> = mesh.color_ranges.chunks_exact(2).map(|r| r[1]).collect();
+    assert_eq!(indices, [3, 5, 1, 3, 7, 1]);
+    // OBJ: one material per colour index; the same for glTF, VRML, POV-Ray and Inventor.
+    use meristem::export::{export, Format};
+    let files = export(Format::Obj, mesh, skeleton, "plant");
+    let mtl = String::from_utf8_lossy(&files[1].bytes).into_owned();
+    for index in [1, 3, 5, 7] {
+        assert!(mtl.contains(&format!("newmtl color_{index}\n")), "{mtl}");
+    }
+    let glb = &export(Format::Glb, mesh, skeleton, "plant")[0].bytes;
+    let json = String::from_utf8_lossy(&glb[20..]).into_owned();
+    for index in [1, 3, 5, 7] {
+        assert!(json.contains(&format!("\"color_{index}_leaf\"")), "{index}");
+    }
+    let wrl = String::from_utf8_lossy(&export(Format::Vrml, mesh, skeleton, "plant")[0].bytes)
+        .into_owned();
+    for index in [1, 3, 5, 7] {
+        assert!(
+            wrl.contains(&format!("# colour index {index}\n")),
+            "{index}"
+        );
+    }
+}
+
+#[test]
+fn patch_colours_that_are_not_colour_indices_are_errors_with_spans() {
+    for (bad, word) in [
+        ("color", "color"),
+        ("color 1 2 3", "color 1 2 3"),
+        ("color -1", "color -1"),
+        ("color 2.5", "color 2.5"),
+    ] {
+        let source = format!("{} {bad}\naxiom: ~a", unit_patch('a'));
+        let b = built(&source);
+        let d = with_code(&b, "E0220");
+        assert_eq!(&source[d.span.clone()], word, "{bad}");
+        assert!(
+            d.message.contains("one or two colour indices"),
+            "{}",
+            d.message
+        );
+    }
+    // A word that is not `color` after the points is still not a number.
+    let b = built(&format!("{} colour 3\naxiom: ~a", unit_patch('a')));
+    assert!(
+        codes(&b).iter().any(|(c, _)| *c == "E0137"),
+        "{:?}",
+        b.diagnostics
+    );
+}

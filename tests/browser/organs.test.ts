@@ -76,7 +76,7 @@ describe('organs of ABOP chapter 5', () => {
   });
 
   it('shows the compound leaf, the cordate leaf and the lily at laptop and phone size', async () => {
-    for (const file of ['abop-5.11b-compound-leaf-opposite.lsys', 'abop-5.05-cordate-leaf.lsys', 'abop-sec-5.1-lily.lsys', 'abop-sec-5.1-campanula.lsys']) {
+    for (const file of ['abop-5.11b-compound-leaf.lsys', 'abop-5.05-cordate-leaf.lsys', 'abop-sec-5.1-lily.lsys', 'abop-sec-5.1-campanula.lsys']) {
       expect(await openExample(page, file)).toBe('ok');
       const name = file.replace('.lsys', '');
       const picture = await canvasPicture(page, `organs-${name}-laptop-canvas.png`);
@@ -86,7 +86,7 @@ describe('organs of ABOP chapter 5', () => {
     const phone = await browser.newContext(PHONE);
     try {
       const { page: small, problems: smallProblems } = await studioIn(await phone.newPage());
-      for (const file of ['abop-5.11b-compound-leaf-opposite.lsys', 'abop-5.05-cordate-leaf.lsys', 'abop-sec-5.1-lily.lsys']) {
+      for (const file of ['abop-5.11b-compound-leaf.lsys', 'abop-5.05-cordate-leaf.lsys', 'abop-sec-5.1-lily.lsys']) {
         expect(await openExample(small, file)).toBe('ok');
         const name = file.replace('.lsys', '');
         const png = await small.locator(VIEW_CANVAS).screenshot({ style: PLANT_ONLY });

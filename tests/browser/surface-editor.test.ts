@@ -5,12 +5,13 @@
 // glTF from the Download menu carries the moved point and passes the Khronos validator; the chosen
 // point nudged from the keyboard; a broken patch line typed while the editor is open is an error it
 // shows. Screenshots at laptop size, at 200 % and on a phone (touch), where axe finds no serious
-// accessibility problem in the dialog.
-import { readFileSync } from 'node:fs';
+// accessibility problem in the dialog. The editor's view shows the surface in the plant's colour:
+// leaf green by default, the turtle's colour where the plant sets one, never a fixed pink.
+import { readFileSync, writeFileSync } from 'node:fs';
 import { AxeBuilder } from '@axe-core/playwright';
 import { validateBytes } from 'gltf-validator';
 import { describe, expect, it, vi } from 'vitest';
-import { differingShare } from './pictures';
+import { colourShare, decodePng, differingShare, type Picture } from './pictures';
 import { canvasPicture, editorText, generation, nextBuild, pasteText, PHONE, replaceTextByTouch, RESULTS, studioIn, twoFrames } from './studio-page';
 import { browser, page, problems, useStudio } from './session';
 
@@ -28,6 +29,19 @@ async function openEditor(p = page): Promise<void> {
   await p.getByTestId('surface-dialog').waitFor({ state: 'visible' });
   await expect.poll(() => p.getByTestId('surface-status').textContent(), { timeout: 20_000 }).toContain('~P');
 }
+
+/** The editor's 3D view as a picture (saved as `name`). */
+async function editorView(name: string, p = page): Promise<Picture> {
+  await twoFrames(p);
+  const png = await p.getByTestId('surface-view').screenshot();
+  writeFileSync(new URL(name, RESULTS), png);
+  return decodePng(png);
+}
+
+/** Pixel tests: leaf green, the red of `#color 9 220 40 40` lit, and the pink the editor used to draw every surface in. */
+const GREEN = (r: number, g: number, b: number) => g > r + 25 && g > b + 25;
+const RED = (r: number, g: number, b: number) => r > 110 && g < 0.55 * r && b < 0.55 * r;
+const PINK = (r: number, g: number, b: number) => r > 150 && b > 100 && g < r - 40 && b > g + 10;
 
 /** The highest point of the plant in a GLB (its POSITION accessors' max y). */
 function topOf(glb: Buffer): number {
@@ -55,6 +69,10 @@ describe('the surface editor', () => {
     expect(await pasteText(page, FLOWER)).toBe('ok');
     await openEditor();
     expect(await page.getByTestId('surface-status').textContent()).toContain("the library's petal");
+    // No colour is chosen before ~P: the plant draws the petal leaf green, and so does the editor.
+    const view = await editorView('surface-editor-green.png');
+    expect(colourShare(view, GREEN), 'leaf green').toBeGreaterThan(0.03);
+    expect(colourShare(view, PINK), 'no pink').toBeLessThan(0.001);
     const before = await generation(page);
     await page.getByTestId('surface-write-out').click();
     expect(await nextBuild(page, before)).toBe('ok');
@@ -122,6 +140,20 @@ describe('the surface editor', () => {
     await page.keyboard.press('Control+z'); // the nudge was one undo step
     expect(await editorText(page)).toBe(before);
     await expect.poll(() => page.getByTestId('surface-status').getAttribute('data-state')).toBe('ok');
+    expect(problems).toEqual([]);
+  });
+});
+
+describe("the surface editor's colours", () => {
+  it("shows the surface in the turtle's colour at the plant's first ~P", async () => {
+    const red = '#color 9 220 40 40\n#surface P petal\naxiom: F(1) ;(9) [&(60) ~P(2)] /(120) [&(60) ~P(2)]\n';
+    expect(await pasteText(page, red)).toBe('ok');
+    await openEditor();
+    await expect.poll(async () => colourShare(await editorView('surface-editor-red.png'), RED), { timeout: 20_000 }).toBeGreaterThan(0.03);
+    const view = await editorView('surface-editor-red.png');
+    // Green only in the turtle's heading arrow (about 0.3 % of the view), none in the petal.
+    expect(colourShare(view, GREEN), 'no leaf green').toBeLessThan(0.01);
+    expect(colourShare(view, PINK), 'no pink').toBeLessThan(0.001);
     expect(problems).toEqual([]);
   });
 });

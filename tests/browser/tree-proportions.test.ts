@@ -101,9 +101,11 @@ describe('the trees of chapter 2 on screen', () => {
   it('draws Honda’s tree of Fig 2.6a with its trunk in the grammar’s proportions', async () => {
     const tree = example('abop-2.06a-monopodial.lsys');
     const { trunk, height } = trunkAndHeight(await shown(tree, 'tree-2.06a.png'));
-    // The trunk is 10 width units of 0.03 (the example's #width_unit) wide, the tree as high as
-    // its trunk's ten internodes 1, 0.9, … 0.9⁹ end to end: (1 − 0.9¹⁰)/0.1 ≈ 6.51.
-    const expected = (10 * 0.03) / ((1 - 0.9 ** 10) / 0.1);
+    // The trunk is 10 width units (the book's pixels; one is the example's #width_unit long) wide,
+    // the tree as high as its trunk's ten internodes 1, 0.9, … 0.9⁹ end to end: (1 − 0.9¹⁰)/0.1 ≈ 6.51.
+    const unit = Number(/^#width_unit (\S+)$/m.exec(tree)?.[1]);
+    expect(unit).toBeGreaterThan(0);
+    const expected = (10 * unit) / ((1 - 0.9 ** 10) / 0.1);
     expect(Math.abs(trunk / height / expected - 1), `trunk ${trunk} px of ${height} px`).toBeLessThan(0.25);
     expect(studio.problems).toEqual([]);
   });

@@ -168,3 +168,23 @@ describe('the parastichy facts', () => {
     }
   });
 });
+
+describe('the trunk\'s proportion', () => {
+  it('is measured on the first tube drawn, and refused in words when the plant has none', async () => {
+    const parsed = parseCheck('trunk_width_ratio > 0.1');
+    if (!parsed.ok) throw new Error(parsed.error.message);
+    // A trunk 2 wide (#width_unit 1) under a plant 10 tall: 0.2.
+    const { build, inspector } = inspectPlant('#width_unit 1\naxiom: !(2)F(4)!(1)F(6)\n');
+    try {
+      const facts = await plantFacts(parsed.check, build, inspector);
+      if (!facts.ok) throw new Error(facts.reason);
+      expect(facts.facts.trunkWidthRatio).toBeCloseTo(0.2, 3);
+      const lines = { ...build, mesh: { ...build.mesh, indices: new Uint32Array(), ranges: new Uint32Array() } };
+      const refused = await plantFacts(parsed.check, lines, inspector);
+      expect(refused.ok).toBe(false);
+      if (!refused.ok) expect(refused.reason).toContain('choose Tubes');
+    } finally {
+      inspector.free();
+    }
+  });
+});

@@ -226,8 +226,12 @@ fn shapes(skeleton: &Skeleton, unit: f64) -> Vec<Shape> {
                 // Each patch filled within its outline (its grid's border).
                 #[cfg(feature = "surfaces")]
                 if let Some(shape) = skeleton.shapes.get(k as usize) {
-                    for grid in bezier::tessellate(s, shape) {
-                        fill(grid_border(&grid), s.color, s.module);
+                    for (k, grid) in bezier::tessellate(s, shape).iter().enumerate() {
+                        fill(
+                            grid_border(grid),
+                            shape.patch_color(k, false, s.color),
+                            s.module,
+                        );
                     }
                 }
                 let _ = k;

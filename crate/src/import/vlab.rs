@@ -6,6 +6,7 @@
 //! An object without a `.l` but with an L-Py `.lpy` is imported as L-Py.
 
 mod lpfg_functions;
+mod lpfg_surface;
 mod surface_file;
 
 use super::abop::{self, Flavour};
@@ -47,10 +48,28 @@ pub(super) struct View {
     pub surfaces: Vec<String>,
     /// The letters those lines declare (`~X` draws them).
     pub surface_letters: Vec<String>,
+    /// lpfg's surfaces by id: the view file's `surface: file.s …` lines in order, each with the
+    /// letter it is declared by (lpfg's `Surface(id, s)` draws `~X(s)`); a file not opened or not
+    /// read takes no id, as lpfg leaves out a file it cannot load.
+    pub lpfg_surfaces: Vec<LpfgSurface>,
+    /// An lpfg surface file the view file names was not opened with the object (what lpfg's
+    /// `Surface` then draws is not known).
+    pub lpfg_surface_missing: bool,
+    /// The object has materials (`.mat`) rather than a colour map: cpfg then draws a `.s`
+    /// surface in the turtle's material, not in its patches' colours.
+    pub materials: bool,
     /// Notes about the view and colour files (line 0).
     pub notes: Vec<String>,
     /// The file names, for the header.
     pub sources: Vec<String>,
+}
+
+/// One of lpfg's surfaces: the view file's text after `surface:` (lpfg loads a line once) and the
+/// letter that draws it.
+#[derive(Clone, Debug)]
+pub(super) struct LpfgSurface {
+    pub line: String,
+    pub letter: String,
 }
 
 /// A cpfg function as a Meristem `#curve` or `#table` (an lpfg value as a `#define`).
@@ -264,7 +283,10 @@ pub fn import_object(files: &[ObjectFile]) -> Import {
         .clone()
         .filter(|v| all.get(v).is_some())
         .or_else(|| pick(&views, &stem).map(str::to_string));
-    let mut view = View::default();
+    let mut view = View {
+        materials: colour_files(&all, &spec, &stem).1.is_some(),
+        ..View::default()
+    };
     view.sources.push(lsystem.clone());
     match &view_name {
         Some(name) => {
@@ -335,16 +357,17 @@ fn read_view(text: &str, all: &Files, view: &mut View) {
                 value.trim()
             )),
             "surface" => {
-                let mut words = value.split_whitespace();
-                let (name, file) = (words.next().unwrap_or(""), words.next().unwrap_or(""));
-                if file.is_empty() {
-                    // lpfg's form: the file alone, its surfaces numbered in order.
-                    view.notes.push(format!(
-                        "the view file's surface file {name} is not read by Meristem: what draws its surfaces draws Meristem's own leaf"
-                    ));
-                    continue;
+                let words: Vec<&str> = value.split_whitespace().collect();
+                let number = |w: &&str| w.parse::<f64>().is_ok();
+                match words.as_slice() {
+                    [] => {}
+                    // lpfg's form: the file, then numbers; its surfaces are numbered in order.
+                    [file, rest @ ..] if rest.first().is_none_or(number) => {
+                        lpfg_surface::read(file, rest, all, view)
+                    }
+                    [name, file, rest @ ..] => surface(name, file, rest.to_vec(), all, view),
+                    _ => {}
                 }
-                surface(name, file, words.collect(), all, view);
             }
             "function" => {
                 let mut words = value.split_whitespace();
@@ -400,26 +423,25 @@ fn line_style(value: &str, width_line: bool) -> bool {
 /// A view file's `surface: X file.s scale [s t]`: the file's patches as `#surface X …` and
 /// `#patch X …` lines, or a note saying why not (what `~X` then draws).
 fn surface(name: &str, file: &str, rest: Vec<&str>, all: &Files, view: &mut View) {
-    let numbers: Vec<f64> = rest
-        .iter()
-        .map_while(|w| w.parse::<f64>().ok().filter(|v| v.is_finite()))
-        .collect();
-    // cpfg: a size of 0 or below is 1; precisions of 0 are the file's.
-    let scale = numbers.first().copied().filter(|s| *s > 0.0).unwrap_or(1.0);
-    let precision = match numbers.get(1..3) {
-        Some([s, t]) => [*s, *t].map(|v| v.clamp(0.0, 1e6) as u32),
-        _ => [0, 0],
-    };
+    let (scale, precision, _) = surface_numbers(&rest);
     let own = match name {
         "p" => "Meristem's own petal",
         "l" => "Meristem's own leaf",
         _ => "nothing",
     };
     let one_letter = name.len() == 1 && name.chars().all(|c| c.is_ascii_alphabetic());
+    let wanted = surface_file::Wanted {
+        file: base(file),
+        letter: name,
+        scale,
+        precision,
+        colours: !view.materials,
+    };
     let read = match all.text(file) {
         _ if !one_letter => Err(format!("Meristem cannot use: '{name}' is not one letter")),
-        Some(text) => surface_file::read(&text, base(file), name, scale, precision)
-            .map_err(|why| format!("cannot be read ({why})")),
+        Some(text) => {
+            surface_file::read(&text, &wanted).map_err(|why| format!("cannot be read ({why})"))
+        }
         None => Err("was not opened with the object".to_string()),
     };
     match read {
@@ -432,6 +454,22 @@ fn surface(name: &str, file: &str, rest: Vec<&str>, all: &Files, view: &mut View
             "the view file's surface {name} is read from {file}, which {why}: ~{name} draws {own}"
         )),
     }
+}
+
+/// The numbers after a surface line's file: its scale (0 or below is 1, as cpfg and lpfg read
+/// it), its precisions s and t (0 0 when not given: the file's, or the tool's default), and how
+/// many numbers there are.
+fn surface_numbers(rest: &[&str]) -> (f64, [u32; 2], usize) {
+    let numbers: Vec<f64> = rest
+        .iter()
+        .map_while(|w| w.parse::<f64>().ok().filter(|v| v.is_finite()))
+        .collect();
+    let scale = numbers.first().copied().filter(|s| *s > 0.0).unwrap_or(1.0);
+    let precision = match numbers.get(1..3) {
+        Some([s, t]) => [*s, *t].map(|v| v.clamp(0.0, 1e6) as u32),
+        _ => [0, 0],
+    };
+    (scale, precision, numbers.len())
 }
 
 /// Three numbers separated by commas or spaces.
@@ -607,16 +645,7 @@ fn identifier(name: &str, view: &View) -> String {
 /// index and 14 bytes: transparency, ambient, diffuse, emissive, specular, shininess) as `#color`
 /// ramps.
 fn colours(all: &Files, spec: &Command, stem: &str, view: &mut View) {
-    let maps = all.with(".map");
-    let mats = all.with(".mat");
-    let (map, mat) = if spec.colormap.is_some() || spec.materials.is_some() {
-        (spec.colormap.clone(), spec.materials.clone())
-    } else {
-        (
-            pick(&maps, stem).map(str::to_string),
-            pick(&mats, stem).map(str::to_string),
-        )
-    };
+    let (map, mat) = colour_files(all, spec, stem);
     let mut entries: Vec<Option<[u8; 3]>> = vec![None; 256];
     if let Some(bytes) = map.as_deref().and_then(|m| all.get(m)) {
         for (i, rgb) in bytes.chunks_exact(3).take(256).enumerate() {
@@ -640,6 +669,25 @@ fn colours(all: &Files, spec: &Command, stem: &str, view: &mut View) {
         return;
     }
     view.palette = ramps(&entries);
+}
+
+/// The colour map the object is drawn with, else its materials: each a file opened with it.
+fn colour_files(all: &Files, spec: &Command, stem: &str) -> (Option<String>, Option<String>) {
+    let (map, mat) = if spec.colormap.is_some() || spec.materials.is_some() {
+        (spec.colormap.clone(), spec.materials.clone())
+    } else {
+        let maps = all.with(".map");
+        let mats = all.with(".mat");
+        (
+            pick(&maps, stem).map(str::to_string),
+            pick(&mats, stem).map(str::to_string),
+        )
+    };
+    let opened = |f: Option<String>| f.filter(|f| all.get(f).is_some());
+    match opened(map) {
+        Some(map) => (Some(map), None),
+        None => (None, opened(mat)),
+    }
 }
 
 /// `#color` lines for the entries: runs that change linearly become one ramp.

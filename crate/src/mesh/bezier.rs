@@ -191,6 +191,7 @@ mod tests {
             organ: Some(organ),
             frame: Default::default(),
             written: Vec::new(),
+            colors: Vec::new(),
         }
     }
 

@@ -262,7 +262,7 @@ impl<'a> Builder<'a> {
                 if let Some(shape) = skeleton.shapes.get(k as usize) {
                     self.element = parts::NO_CHAIN;
                     let grids = bezier::tessellate(s, shape);
-                    self.patches(&grids, s, skeleton);
+                    self.patches(&grids, s, shape, skeleton);
                 }
                 let _ = k;
                 return;
@@ -375,23 +375,32 @@ impl<'a> Builder<'a> {
 
     #[cfg(feature = "surfaces")]
     /// A declared surface's patches, two-sided as [`Builder::flat`]: the front faces each
-    /// patch's ∂P/∂s × ∂P/∂t. Texture coordinates span the whole surface in its own frame, across
-    /// along `left` and along the heading, as the built-in leaf's (cpfg's texels per surface).
-    fn patches(&mut self, grids: &[bezier::Grid], s: &Surface, skeleton: &Skeleton) {
+    /// patch's ∂P/∂s × ∂P/∂t, in the patch's top colour, the back in its bottom colour (the
+    /// turtle's where the patch gives none: [`SurfaceShape::patch_color`]). Texture coordinates
+    /// span the whole surface in its own frame, across along `left` and along the heading, as the
+    /// built-in leaf's (cpfg's texels per surface).
+    fn patches(
+        &mut self,
+        grids: &[bezier::Grid],
+        s: &Surface,
+        shape: &crate::model::SurfaceShape,
+        skeleton: &Skeleton,
+    ) {
         let triangles: Vec<Vec<[u32; 3]>> = grids.iter().map(bezier::Grid::triangles).collect();
         if triangles.iter().all(Vec::is_empty) {
             return;
         }
         self.material = MATERIAL_LEAF;
-        self.range(s.module, s.color);
-        let c = skeleton.color(s.color);
         let uvs = unit_square(grids.iter().flat_map(|g| &g.points).map(|p| {
             let d = *p - s.origin;
             (d.dot(s.left), d.dot(s.heading))
         }));
         for (sign, flip) in [(1.0, false), (-1.0, true)] {
             let mut uv = uvs.iter();
-            for (grid, tris) in grids.iter().zip(&triangles) {
+            for (k, (grid, tris)) in grids.iter().zip(&triangles).enumerate() {
+                let color = shape.patch_color(k, flip, s.color);
+                self.range(s.module, color);
+                let c = skeleton.color(color);
                 let first = self.mesh.vertex_count() as u32;
                 for (p, n) in grid.points.iter().zip(&grid.normals) {
                     self.vertex(*p, *n * sign, c, uv.next().copied().unwrap_or_default());

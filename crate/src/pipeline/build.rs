@@ -278,7 +278,7 @@ fn step_limit_error(model: &Model, steps: u32) -> Option<Diagnostic> {
 
 /// The steps to derive and the growth time ([`BuildOptions::time`]): a time overrides the
 /// iterations; a timed grammar derives up to the step after it, any other its whole steps.
-fn steps_and_time(model: &Model, options: &BuildOptions) -> (u32, Option<f64>) {
+pub(super) fn steps_and_time(model: &Model, options: &BuildOptions) -> (u32, Option<f64>) {
     let time = options
         .time
         .map(|t| if t.is_finite() { t.max(0.0) } else { 0.0 });

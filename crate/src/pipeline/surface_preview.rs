@@ -3,11 +3,16 @@
 //! [`tessellate`](crate::mesh::bezier::tessellate), at the turtle's origin in its own frame at
 //! scale 1), its control points, where each `#patch` point is written, the frame's map from
 //! written points to the turtle's frame, and, for a library shape, the text that writes it out
-//! as `#patch` lines so that its points can be edited.
+//! as `#patch` lines so that its points can be edited; and, when asked, the colours the plant
+//! draws each patch with.
 
+use super::{build::steps_and_time, BuildOptions};
+use crate::derive::{derive, DeriveOptions};
 use crate::diagnostics::Diagnostic;
 use crate::mesh::bezier::tessellate;
-use crate::model::{organ_patches, resolve, SurfaceShape, LIBRARY_PRECISION};
+use crate::model::{
+    organ_patches, resolve, Model, SurfaceShape, DEFAULT_PALETTE, LIBRARY_PRECISION, ORGAN_COLOR,
+};
 use crate::syntax::{parse, Directive, SourceFile, Span};
 use crate::turtle::{Surface, SurfaceKind};
 use crate::vocabulary::{directive, DirectiveKind, FrameWord};
@@ -27,15 +32,23 @@ pub struct SurfacePreview {
     /// For a library shape: the changes (byte spans of the text, replacement) that write it out
     /// as `#patch` lines of the same shape and precision; empty otherwise.
     pub write_out: Vec<(Span, String)>,
+    /// When asked: each patch's colour on its front and its back (r, g, b, linear, 0 to 1), as
+    /// the plant draws it ([`plant_colours`]); empty otherwise.
+    pub colors: Vec<[[f32; 3]; 2]>,
 }
 
-/// Surface `letter` of `source` (None when the text declares none that resolves), and the text's
-/// diagnostics.
-pub fn surface_preview(source: &str, letter: char) -> (Option<SurfacePreview>, Vec<Diagnostic>) {
+/// Surface `letter` of `source` (None when the text declares none that resolves), with its
+/// colours when `colours` (which derives the plant: an editor dragging a point, which changes no
+/// colour, asks without), and the text's diagnostics.
+pub fn surface_preview(
+    source: &str,
+    letter: char,
+    colours: bool,
+) -> (Option<SurfacePreview>, Vec<Diagnostic>) {
     let (file, mut diagnostics) = parse(source);
     let (model, more) = resolve(&file);
     diagnostics.extend(more);
-    let shape = model.and_then(|m| {
+    let shape = model.as_ref().and_then(|m| {
         m.settings
             .surfaces
             .iter()
@@ -43,6 +56,10 @@ pub fn surface_preview(source: &str, letter: char) -> (Option<SurfacePreview>, V
             .cloned()
     });
     let preview = shape.map(|shape| {
+        let colors = match &model {
+            Some(model) if colours => plant_colours(model, &shape),
+            _ => Vec::new(),
+        };
         let (positions, normals, indices) = mesh_of(&shape);
         let write_out = match shape.organ {
             Some(_) => write_out(source, &file, &shape),
@@ -54,10 +71,61 @@ pub fn surface_preview(source: &str, letter: char) -> (Option<SurfacePreview>, V
             normals,
             indices,
             write_out,
+            colors,
             shape,
         }
     });
     (preview, diagnostics)
+}
+
+/// Each patch's colours, front and back, as the plant draws them: the patch's own, else the
+/// turtle's colour at the plant's first `~X` (the grammar derived as a build derives it), else
+/// what a `~X` drawn before any colour is chosen takes (the organs' leaf green).
+fn plant_colours(model: &Model, shape: &SurfaceShape) -> Vec<[[f32; 3]; 2]> {
+    let patches = 0..shape.patches.len();
+    let own = patches
+        .clone()
+        .all(|k| shape.patch_color(k, false, 0) != 0 && shape.patch_color(k, true, 0) != 0);
+    let turtle = if own {
+        ORGAN_COLOR
+    } else {
+        turtle_colour(model, shape.letter)
+    };
+    let palette: &[[f32; 3]] = match model.settings.palette.as_slice() {
+        [] => &DEFAULT_PALETTE,
+        p => p,
+    };
+    patches
+        .map(|k| {
+            [false, true]
+                .map(|back| palette[shape.patch_color(k, back, turtle) as usize % palette.len()])
+        })
+        .collect()
+}
+
+/// The colour index of the plant's first `~letter`; leaf green when the plant draws none or
+/// cannot be derived.
+fn turtle_colour(model: &Model, letter: char) -> u16 {
+    let (steps, time) = steps_and_time(model, &BuildOptions::default());
+    let Ok(derivation) = derive(
+        model,
+        &DeriveOptions {
+            steps,
+            seed: None,
+            time,
+        },
+    ) else {
+        return ORGAN_COLOR;
+    };
+    let skeleton = crate::turtle::interpret(model, derivation.turtle_string());
+    let drawn = skeleton.surfaces.iter().find(|s| match s.kind {
+        SurfaceKind::Declared(k) => skeleton
+            .shapes
+            .get(k as usize)
+            .is_some_and(|x| x.letter == letter),
+        _ => false,
+    });
+    drawn.map_or(ORGAN_COLOR, |s| s.color)
 }
 
 /// The surface drawn at the origin in the turtle's own frame (L = x, H = y, U = z), scale 1.
@@ -182,7 +250,7 @@ mod tests {
     fn a_patch_surface_gives_its_mesh_points_and_spans() {
         let points: Vec<String> = (0..16).map(|k| format!("{} {} 0", k % 4, k / 4)).collect();
         let text = format!("axiom: ~A\n#patch A {}\n", points.join(", "));
-        let (preview, diagnostics) = surface_preview(&text, 'A');
+        let (preview, diagnostics) = surface_preview(&text, 'A', false);
         assert!(
             !crate::diagnostics::has_errors(&diagnostics),
             "{diagnostics:?}"
@@ -200,7 +268,7 @@ mod tests {
         ];
         assert_eq!(p.to_turtle, identity);
         assert!(p.write_out.is_empty());
-        assert!(surface_preview(&text, 'B').0.is_none());
+        assert!(surface_preview(&text, 'B', false).0.is_none());
     }
 
     #[test]
@@ -210,7 +278,7 @@ mod tests {
             "axiom: ~A\n#surface A contact 0 0 2 heading 0 0 1 up 0 -1 0 size 2\n#patch A {}\n",
             points.join(", ")
         );
-        let p = surface_preview(&text, 'A').0.expect("surface A");
+        let p = surface_preview(&text, 'A', false).0.expect("surface A");
         let m = p.to_turtle;
         for (w, placed) in p.shape.written.iter().zip(p.shape.patches[0].iter()) {
             let [x, y, z] = w.value;
@@ -224,8 +292,32 @@ mod tests {
     }
 
     #[test]
+    fn colours_are_the_patches_own_else_the_turtle_s_at_the_first_x_else_leaf_green() {
+        let points: Vec<String> = (0..16).map(|k| format!("{} {} 0", k % 4, k / 4)).collect();
+        let patch = format!("#patch A {}", points.join(", "));
+        let palette = "#color 2 255 0 0\n#color 3 0 0 255\n#color 5 0 255 0\n";
+        let colours = |text: &str| surface_preview(text, 'A', true).0.expect("A").colors;
+        let (red, blue, green) = ([1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, 1.0, 0.0]);
+        // The turtle's colour where the plant draws the first ~A: ;(2) before it, ;(3) after.
+        let text = format!("{palette}{patch}\n{patch} color 3\naxiom: F;(2)~A;(3)~A\n");
+        assert_eq!(colours(&text), [[red, red], [blue, blue]]);
+        // Derived: the first ~A appears at step 2, after ;(3).
+        let text = format!("{palette}{patch}\n#iterations 2\naxiom: X\nX -> ;(3)Y\nY -> ~A\n");
+        assert_eq!(colours(&text), [[blue, blue]]);
+        // Never drawn, or drawn before any colour: leaf green (index 5 here).
+        let text = format!("{palette}{patch}\naxiom: F\n");
+        assert_eq!(colours(&text), [[green, green]]);
+        // Without colours asked, none.
+        assert!(surface_preview(&text, 'A', false)
+            .0
+            .expect("A")
+            .colors
+            .is_empty());
+    }
+
+    #[test]
     fn a_library_shape_is_written_out_as_the_same_surface() {
-        let (preview, _) = surface_preview(PETAL, 'P');
+        let (preview, _) = surface_preview(PETAL, 'P', false);
         let p = preview.expect("the petal");
         let mut text = PETAL.to_string();
         for (span, insert) in p.write_out.iter().rev() {
@@ -235,7 +327,7 @@ mod tests {
             text.contains("#surface P precision 8 8\n#patch P "),
             "{text}"
         );
-        let (written, diagnostics) = surface_preview(&text, 'P');
+        let (written, diagnostics) = surface_preview(&text, 'P', false);
         assert!(
             !crate::diagnostics::has_errors(&diagnostics),
             "{diagnostics:?}"

@@ -7,7 +7,7 @@ use super::ast::Directive;
 use super::expr::parse_expression;
 use super::scanner::ModuleScanner;
 use crate::diagnostics::Diagnostic;
-use crate::vocabulary::{directive_named, DirectiveKind, ParamKind};
+use crate::vocabulary::{directive_named, DirectiveKind, ParamKind, PATCH_COLOR};
 
 /// Parses the directive whose `#` is at byte `at`; `None` when the line is too broken to keep.
 pub(super) fn parse_directive(
@@ -136,8 +136,9 @@ fn surface_definition(d: &mut Directive, diagnostics: &mut Vec<Diagnostic>) -> b
     true
 }
 
-/// `#curve NAME x y x y …`, `#table NAME x y …`, `#patch X x y z, …`: a name, then numbers
-/// separated by spaces or commas. False when the line is not kept.
+/// `#curve NAME x y x y …`, `#table NAME x y …`, `#patch X x y z, … [color c [c]]`: a name,
+/// then numbers separated by spaces or commas (a patch's colours stay text for the resolver).
+/// False when the line is not kept.
 fn curve_definition(d: &mut Directive, diagnostics: &mut Vec<Diagnostic>) -> bool {
     let coordinates = if d.kind == Some(DirectiveKind::Patch) {
         "x y z"
@@ -155,6 +156,10 @@ fn curve_definition(d: &mut Directive, diagnostics: &mut Vec<Diagnostic>) -> boo
     for word in rest.split(|c: char| c.is_whitespace() || c == ',') {
         if word.is_empty() {
             continue;
+        }
+        // `#patch X … color top [bottom]`: the resolver reads the colours from the text.
+        if word == PATCH_COLOR && d.kind == Some(DirectiveKind::Patch) {
+            break;
         }
         let at = args_at + (word.as_ptr() as usize - args.as_ptr() as usize);
         match crate::number::parse_f64(word) {

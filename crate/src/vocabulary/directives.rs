@@ -249,7 +249,7 @@ const PATCH: &[&[Param]] = &[&[
     Param::new(
         "points",
         ParamKind::Points,
-        "16 control points x y z, row by row of the 4 × 4 grid, separated by commas",
+        "16 control points x y z, row by row of the 4 × 4 grid, separated by commas; then, if wanted, color top [bottom]: the patch's colour indices (0: the turtle's)",
     ),
 ]];
 const ENVIRONMENT: &[&[Param]] = &[&[Param::new(
@@ -531,8 +531,8 @@ pub const DIRECTIVES: &[DirectiveInfo] = &[
         "Declares what ~X draws: a shape of the organ library (leaf, petal, sepal, disk, ray_floret), and the frame of its #patch points as a cpfg .s file gives it.")
         .usage("E0221", "(a letter, then a shape of the library and frame words with their numbers)").repeatable(),
     row("patch", D::Patch, "Bézier patch", PATCH, G::Turtle,
-        "One bicubic Bézier patch of the surface ~X: 16 control points x y z, row by row; several lines make a surface of several patches.")
-        .usage("E0220", "(a letter, then 16 points x y z)").repeatable(),
+        "One bicubic Bézier patch of the surface ~X: 16 control points x y z, row by row, then optionally color top [bottom] (colour indices as ;(n) sets them, 0 the turtle's); several lines make a surface of several patches.")
+        .usage("E0220", "(a letter, then 16 points x y z, then optionally color and one or two colour indices)").repeatable(),
     row("environment", D::Environment, "Environment program", ENVIRONMENT, G::Derivation,
         "An environmental program that answers the communication modules ?E between derivation steps: light, obstacle, space or attractors, its shape, and its settings.")
         .usage("E0230", text("(a program, a shape if it takes one, then setting words with their numbers)")).repeatable(),

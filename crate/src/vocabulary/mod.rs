@@ -40,7 +40,7 @@ pub use modules::{
 pub use params::{Param, ParamDefault, ParamKind};
 pub use surfaces::{
     frame_word_named, organ_named, FrameWord, FrameWordInfo, Organ, OrganInfo, FRAME_WORDS,
-    SURFACE_SHAPES,
+    PATCH_COLOR, SURFACE_SHAPES,
 };
 
 use serde::Serialize;
@@ -80,6 +80,7 @@ pub fn written_names() -> Vec<String> {
     names.extend(VALUES.iter().map(|v| v.name.to_string()));
     names.extend(SURFACE_SHAPES.iter().map(|o| o.name.to_string()));
     names.extend(FRAME_WORDS.iter().map(|w| w.name.to_string()));
+    names.push(PATCH_COLOR.to_string());
     names.extend(ENVIRONMENT_PROGRAMS.iter().map(|p| p.name.to_string()));
     names.extend(ENVIRONMENT_SHAPES.iter().map(|s| s.name.to_string()));
     names.extend(STAND_LAYOUTS.iter().map(|l| l.name.to_string()));

@@ -73,6 +73,11 @@ pub const FRAME_WORDS: &[FrameWordInfo] = &[
     FrameWordInfo { name: "precision", word: FrameWord::Precision, numbers: 2, doc: text("Quads per patch along s and t, 1 to 32 (default 5 5, as cpfg).") },
 ];
 
+/// The word after a `#patch` line's 16 points that gives the patch's colours: `color top
+/// [bottom]`, colour indices as `;(n)` sets them, the bottom the top's when not given; 0 is the
+/// turtle's colour (cpfg's `TOP COLOR` and `BOTTOM COLOR`).
+pub const PATCH_COLOR: &str = "color";
+
 /// The library shape named `name`.
 pub fn organ_named(name: &str) -> Option<&'static OrganInfo> {
     SURFACE_SHAPES.iter().find(|o| o.name == name)

@@ -9,13 +9,15 @@ use wasm_bindgen::prelude::*;
 
 /// Surface `letter` (one letter X of `#surface X` / `#patch X`) of `source`: JSON
 /// `{surface, diagnostics}`, `surface` null when the text declares none that resolves, else
-/// `{letter, organ, net, written, toTurtle, end, precision, positions, normals, indices, writeOut}`
-/// with byte spans (`web/src/core/surface-preview.ts` reads it).
+/// `{letter, organ, net, written, toTurtle, end, precision, positions, normals, indices, writeOut,
+/// colors}` with byte spans (`web/src/core/surface-preview.ts` reads it); `colors` (each patch's
+/// front and back colour as the plant draws it, linear r g b) is empty unless `colours`, which
+/// derives the plant.
 #[wasm_bindgen(js_name = surfacePreview)]
-pub fn surface_preview_json(source: &str, letter: &str) -> String {
+pub fn surface_preview_json(source: &str, letter: &str, colours: bool) -> String {
     let mut chars = letter.chars();
     let (preview, diagnostics) = match (chars.next(), chars.next()) {
-        (Some(c), None) => surface_preview(source, c),
+        (Some(c), None) => surface_preview(source, c, colours),
         _ => (None, Vec::new()),
     };
     let surface = preview.map_or(Value::Null, |p| {
@@ -36,6 +38,7 @@ pub fn surface_preview_json(source: &str, letter: &str) -> String {
             "writeOut": p.write_out.iter().map(|(span, insert)| json!({
                 "from": span.start, "to": span.end, "insert": insert,
             })).collect::<Vec<Value>>(),
+            "colors": p.colors,
         })
     });
     json!({ "surface": surface, "diagnostics": locate_all(source, &diagnostics) }).to_string()

@@ -25,11 +25,12 @@ interface RawSurface {
   positions: number[];
   normals: number[];
   indices: number[];
+  colors: [Point3, Point3][];
 }
 
-/** Surface `letter` of `source` (see {@link SurfaceAnswer}); requires {@link initSurfacePreview}. */
-export function surfacePreview(source: string, letter: string): SurfaceAnswer {
-  const raw = JSON.parse(guarded(() => corePreview(source, letter))) as { surface: RawSurface | null; diagnostics: RawDiagnostic[] };
+/** Surface `letter` of `source` (see {@link SurfaceAnswer}), its colours unless `colours` is false; requires {@link initSurfacePreview}. */
+export function surfacePreview(source: string, letter: string, colours = true): SurfaceAnswer {
+  const raw = JSON.parse(guarded(() => corePreview(source, letter, colours))) as { surface: RawSurface | null; diagnostics: RawDiagnostic[] };
   const diagnostics = raw.diagnostics.map(toDiagnostic);
   const s = raw.surface;
   if (!s) return { surface: null, diagnostics };
@@ -48,6 +49,7 @@ export function surfacePreview(source: string, letter: string): SurfaceAnswer {
     positions: Float32Array.from(s.positions),
     normals: Float32Array.from(s.normals),
     indices: Uint32Array.from(s.indices),
+    colors: s.colors,
   };
   return { surface, diagnostics };
 }

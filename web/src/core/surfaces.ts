@@ -47,6 +47,12 @@ export interface SurfacePreview {
   positions: Float32Array;
   normals: Float32Array;
   indices: Uint32Array;
+  /**
+   * Each patch's colour on its front and its back (linear r g b, 0 to 1) as the plant draws it:
+   * the patch's own (`color`), else the turtle's at the plant's first `~X`, else leaf green.
+   * Empty when not asked for (see {@link SurfacePreviewer}).
+   */
+  colors: [Point3, Point3][];
 }
 
 /** What the core says of a surface: the surface (null when the text declares none that resolves) and the text's diagnostics. */
@@ -56,8 +62,11 @@ export interface SurfaceAnswer {
   diagnostics: Diagnostic[];
 }
 
-/** `surfacePreview` of ./surface-preview.ts: surface `letter` of `source`. */
-export type SurfacePreviewer = (source: string, letter: string) => SurfaceAnswer;
+/**
+ * `surfacePreview` of ./surface-preview.ts: surface `letter` of `source`, with its colours unless
+ * `colours` is false (they derive the plant; a drag, which changes no colour, goes without).
+ */
+export type SurfacePreviewer = (source: string, letter: string, colours?: boolean) => SurfaceAnswer;
 
 /**
  * Loads the surface editor's core once (crate/pkg, with the importers and exporters) and resolves

@@ -160,27 +160,58 @@ impl Importer {
             "SetColor" => format!(";({a})"),
             "Sphere" => format!("@O({a})"),
             "Surface3" if parts.len() == 4 => {
-                self.note_once(
-                    "Surface3",
-                    n,
-                    "lpfg's Surface3(id, x, y, z) draws the view file's surface id (a .s file Meristem does not read) scaled by x, y and z; Meristem draws its own leaf ~l(y), y long, as wide as its own shape makes it: the scale x and the surface's shape are not kept",
-                );
-                format!("~l({})", parts[2].trim())
+                let scales = parts[1..].iter().map(|p| p.trim()).collect::<Vec<_>>();
+                self.lpfg_surface(word, parts[0], &scales.join(", "), n)
             }
-            "Surface" if parts.len() == 2 => {
-                self.note_once(
-                    "Surface",
-                    n,
-                    "lpfg's Surface(id, s) draws the view file's surface id (a .s file Meristem does not read) scaled by s; Meristem draws its own leaf ~l(s) instead",
-                );
-                format!("~l({})", parts[1].trim())
-            }
+            "Surface" if parts.len() == 2 => self.lpfg_surface(word, parts[0], parts[1].trim(), n),
             _ => {
                 self.note_once(
                     &format!("lpfg {word}"),
                     n,
                     format!("lpfg's {word} is not a Meristem command; dropped"),
                 );
+                String::new()
+            }
+        }
+    }
+}
+
+impl Importer {
+    /// lpfg's `Surface(id, s)` or `Surface3(id, sx, sy, sz)` (`word`): `~X(scales)` of the
+    /// surface the view file gives that id ([`crate::import::vlab`]), else Meristem's own leaf
+    /// `~l` with a note; nothing (as lpfg) when the view file has surfaces but none with that id.
+    fn lpfg_surface(&mut self, word: &str, id: &str, scales: &str, n: usize) -> String {
+        let leaf = format!("~l({scales})");
+        let Some(view) = self.cpfg.view.as_ref() else {
+            self.note_once(word, n, format!("lpfg's {word}(id, …) draws the surface the object's view file gives that id; the .l was opened alone, so Meristem draws its own leaf ~l instead"));
+            return leaf;
+        };
+        let (surfaces, missing) = (view.lpfg_surfaces.clone(), view.lpfg_surface_missing);
+        let own = match surfaces.iter().find(|s| s.letter == "l") {
+            Some(s) => format!("~l, the view file's {}", s.line),
+            None => "its own leaf ~l".to_string(),
+        };
+        let id = id.trim();
+        let value = id.parse::<f64>().ok().or_else(|| {
+            let c = self.lpfg.constants.iter().find(|(name, _)| name == id);
+            c.map(|(_, v)| *v)
+        });
+        let Some(value) = value.filter(|v| v.fract() == 0.0 && *v >= 0.0) else {
+            self.note_once(&format!("{word} {id}"), n, format!("lpfg's {word}({id}, …): the surface id {id} is not a constant Meristem can work out, so Meristem draws {own} instead"));
+            return leaf;
+        };
+        match surfaces.get(value as usize) {
+            Some(s) => format!("~{}({scales})", s.letter),
+            None if missing => {
+                self.note_once(&format!("{word} {id}"), n, format!("lpfg's {word}({id}, …) draws the view file's surface {value}, which was not read (see the notes on the view file): Meristem draws {own} instead"));
+                leaf
+            }
+            None => {
+                let given = match surfaces.len() {
+                    0 => "no surface".to_string(),
+                    k => format!("surfaces with ids 0 to {}", k - 1),
+                };
+                self.note_once(&format!("{word} {id}"), n, format!("lpfg's {word}({id}, …): the view file gives {given}, none with id {value}; lpfg ignores the module, and so does Meristem"));
                 String::new()
             }
         }

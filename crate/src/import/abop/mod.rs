@@ -192,6 +192,8 @@ struct LpfgState {
     produced: Option<Vec<(Option<String>, String)>>,
     /// The conditions of the `if`s the statement being read is in (lpfg).
     path: Vec<String>,
+    /// The `#define`d constants and their values (an lpfg surface id names one).
+    constants: Vec<(String, f64)>,
 }
 
 /// What reading an L-Py file keeps.

@@ -97,6 +97,7 @@ impl Importer {
             let names: Vec<&str> = functions.iter().map(String::as_str).collect();
             let mut pre = cpp::Preprocessor::new(include, &names);
             all = pre.run(all, 0);
+            self.lpfg.constants = pre.constants();
             for (n, message) in pre.notes {
                 self.note(n, message);
             }

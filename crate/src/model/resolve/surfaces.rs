@@ -11,7 +11,7 @@ use crate::model::{
 use crate::syntax::{Directive, SourceFile, Span};
 use crate::vocabulary::{
     frame_word_named, organ_named, Command, DirectiveKind, FrameWord, ModuleInfo, Organ,
-    FRAME_WORDS, SURFACE_SHAPES,
+    FRAME_WORDS, PATCH_COLOR, SURFACE_SHAPES,
 };
 use glam::DVec3;
 use std::sync::Arc;
@@ -32,6 +32,7 @@ struct Declaration {
     precision: Option<[f64; 2]>,
     patches: Vec<Patch>,
     written: Vec<WrittenPoint>,
+    colors: Vec<[u16; 2]>,
 }
 
 impl Resolver {
@@ -183,6 +184,38 @@ impl Resolver {
         let written = &x.written[x.written.len() - 16..];
         x.patches
             .push(std::array::from_fn(|k| DVec3::from_array(written[k].value)));
+        let colors = self.patch_colors(d);
+        x.colors.push(colors);
+    }
+
+    /// The colours after a `#patch` line's points (`color top [bottom]`, the bottom the top's
+    /// when not given), 0 for the turtle's; [0, 0] (with E0220 when they are not one or two
+    /// colour indices) when there are none.
+    fn patch_colors(&mut self, d: &Directive) -> [u16; 2] {
+        let words = words_after_name(d);
+        let Some(k) = words.iter().position(|(w, _)| w == PATCH_COLOR) else {
+            return [0, 0];
+        };
+        let index = |w: &str| {
+            crate::number::parse_f64(w)
+                .filter(|v| v.fract() == 0.0 && (0.0..=u16::MAX as f64).contains(v))
+                .map(|v| v as u16)
+        };
+        let values: Vec<Option<u16>> = words[k + 1..].iter().map(|(w, _)| index(w)).collect();
+        match values[..] {
+            [Some(top)] => [top, top],
+            [Some(top), Some(bottom)] => [top, bottom],
+            _ => {
+                let end = words.last().map_or(words[k].1.end, |w| w.1.end);
+                let message = format!(
+                    "'{PATCH_COLOR}' takes one or two colour indices (whole numbers from 0 to {}), the top's then the bottom's; 0 is the turtle's colour",
+                    u16::MAX
+                );
+                self.diagnostics
+                    .push(Diagnostic::error("E0220", words[k].1.start..end, message));
+                [0, 0]
+            }
+        }
     }
 
     /// The shape of one letter's declarations, placed in the turtle's frame; `None` (with a
@@ -240,6 +273,11 @@ impl Resolver {
             organ: x.organ,
             frame: x.frame,
             written: x.written,
+            colors: if x.colors.iter().all(|c| *c == [0, 0]) {
+                Vec::new()
+            } else {
+                x.colors
+            },
         })
     }
 
@@ -328,6 +366,7 @@ impl Declaration {
             precision: None,
             patches: Vec::new(),
             written: Vec::new(),
+            colors: Vec::new(),
         }
     }
 }

@@ -64,9 +64,22 @@ pub struct SurfaceShape {
     pub frame: Frame,
     /// The `#patch` points as written.
     pub written: Vec<WrittenPoint>,
+    /// Each patch's colour indices, top (its front) then bottom (`#patch … color top
+    /// [bottom]`), 0 for the turtle's colour; empty when no patch gives one.
+    pub colors: Vec<[u16; 2]>,
 }
 
 impl SurfaceShape {
+    /// The colour index patch `k` is drawn with on its front (`back` false) or back, when the
+    /// turtle's is `turtle`: the patch's own when it gives one, as cpfg's `determine_vertex_shading`
+    /// takes a `.s` patch's non-zero `TOP COLOR` / `BOTTOM COLOR` over the turtle's.
+    pub fn patch_color(&self, k: usize, back: bool, turtle: u16) -> u16 {
+        match self.colors.get(k).map(|c| c[usize::from(back)]) {
+            Some(c) if c != 0 => c,
+            _ => turtle,
+        }
+    }
+
     /// The largest distance of a control point from the contact point at scale 1 (a patch lies
     /// within its control points' hull).
     pub fn reach(&self) -> f64 {

@@ -158,6 +158,20 @@ describe('checks: position, seeds and parastichies', () => {
   });
 });
 
+describe('checks: the trunk\'s proportion and the divergence angle', () => {
+  it('reads the divergence off the florets and the trunk\'s ratio from the facts', () => {
+    const florets = floretPositions(vogelMesh(600, 137.5));
+    expect(needsFlorets(read('divergence > 137'))).toBe(true);
+    expect(evaluateCheck(read('divergence > 137.45 and divergence < 137.55'), { stats, florets }).pass).toBe(true);
+    const mirrored = floretPositions(vogelMesh(600, 222.5));
+    expect(evaluateCheck(read('divergence > 137.45 and divergence < 137.55'), { stats, florets: mirrored }).pass).toBe(true);
+    expect(spokenAnswer(evaluateCheck(read('divergence > 1'), { stats }))).toBe('Not yet: divergence is 0, the task wants more than 1.');
+    expect(evaluateCheck(read('trunk_width_ratio > 0.04'), { stats, trunkWidthRatio: 0.0445 }).pass).toBe(true);
+    expect(evaluateCheck(read('trunk_width_ratio > 0.05'), { stats, trunkWidthRatio: 0.0445 }).pass).toBe(false);
+    expect(needsFlorets(read('trunk_width_ratio > 0.05'))).toBe(false);
+  });
+});
+
 describe('the seed a text writes', () => {
   it.each([
     ['#seed 4\naxiom: F', 4],

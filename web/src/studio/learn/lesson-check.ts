@@ -9,6 +9,7 @@
 // the last good build. Every answer is in words: "count("[") is 4, the task wants 8".
 import type { PlantBuild, PlantInspector, PlantStats } from '../../core';
 import { floretPositions, MAX_FLORETS, parastichyPair } from './parastichies.ts';
+import { divergence, trunkWidthRatio } from './plant-measures.ts';
 
 /** The facts a check may name, with what each means (docs/LESSONS.md lists the same). */
 export const CHECK_FACTS = {
@@ -26,6 +27,8 @@ export const CHECK_FACTS = {
   text_seed: 'the seed the grammar\'s text writes with #seed; -1 when it writes none',
   parastichies_m: 'the fewer of the two families of spirals (contact parastichies) of the plant\'s spheres (florets), counted in the middle third of them; 0 for fewer than 12',
   parastichies_n: 'the more numerous of the two families of spirals of the plant\'s spheres (florets); 0 for fewer than 12',
+  trunk_width_ratio: 'the first segment\'s drawn width (at its base) ÷ the plant\'s height: the trunk\'s proportion',
+  divergence: 'the angle in degrees (0 to 180) about the plant\'s axis between consecutive spheres (organs, florets) in the order drawn, the median over them; 0 for fewer than 3',
 } as const;
 
 /** A fact a check may name. */
@@ -329,9 +332,14 @@ function mentions(node: CheckNode | NumberNode, test: (node: NumberNode) => bool
   }
 }
 
-/** Whether evaluating `check` needs the florets' positions (a parastichy fact). */
+/** Whether evaluating `check` needs the florets' positions (a parastichy fact or the divergence). */
 export function needsFlorets(check: CheckNode): boolean {
-  return mentions(check, (n) => n.kind === 'fact' && (n.name === 'parastichies_m' || n.name === 'parastichies_n'));
+  return mentions(check, (n) => n.kind === 'fact' && (n.name === 'parastichies_m' || n.name === 'parastichies_n' || n.name === 'divergence'));
+}
+
+/** Whether evaluating `check` needs the trunk's proportion (read off the mesh's first tube). */
+function needsTrunk(check: CheckNode): boolean {
+  return mentions(check, (n) => n.kind === 'fact' && n.name === 'trunk_width_ratio');
 }
 
 /** Whether evaluating `check` needs the derived string (not only the stats). */
@@ -365,6 +373,8 @@ export interface PlantFacts {
   seed?: number;
   /** The seed the grammar's text writes (`written-seed.ts`); undefined when it writes none. */
   textSeed?: number;
+  /** The trunk's drawn width ÷ the plant's height (`plant-measures.ts`), when a check needs it. */
+  trunkWidthRatio?: number;
 }
 
 /** The most modules whose texts a check fetches from the build's inspector. */
@@ -382,7 +392,11 @@ export async function plantFacts(check: CheckNode, build: PlantBuild, inspector:
   if (florets && florets.length > MAX_FLORETS) {
     return { ok: false, reason: `the plant has ${florets.length.toLocaleString('en')} spheres, more than the parastichy count reads (${MAX_FLORETS.toLocaleString('en')}); try fewer iterations` };
   }
-  const known = { stats: build.stats, florets, seed: build.seed, textSeed };
+  const trunk = needsTrunk(check) ? trunkWidthRatio(build.mesh, build.stats) : undefined;
+  if (trunk !== undefined && Number.isNaN(trunk)) {
+    return { ok: false, reason: 'the plant has no trunk drawn as a tube (the Lines mode draws lines): choose Tubes in the view, then check again' };
+  }
+  const known = { stats: build.stats, florets, seed: build.seed, textSeed, trunkWidthRatio: trunk };
   if (!needsDerivedString(check)) return { ok: true, facts: known };
   const count = build.moduleCount;
   if (count > MAX_CHECKED_MODULES) {
@@ -494,6 +508,10 @@ function factValue(name: CheckFact, stats: PlantStats, strings: StringFacts): nu
       return strings.pair()[0];
     case 'parastichies_n':
       return strings.pair()[1];
+    case 'trunk_width_ratio':
+      return strings.facts.trunkWidthRatio ?? Number.NaN;
+    case 'divergence':
+      return divergence(strings.facts.florets ?? []);
     default:
       return stats[name];
   }

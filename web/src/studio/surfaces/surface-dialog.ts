@@ -109,8 +109,11 @@ export class SurfaceDialog {
   /** Asks the core for the surface in the text now, and shows it (or why there is none). */
   private refresh(): void {
     const text = this.host.editor.text();
-    this.answer = this.preview(text, this.letter);
+    // A drag moves points only: the colours stay those asked before it (asking derives the plant).
+    const before = this.answer?.surface;
+    this.answer = this.preview(text, this.letter, !this.drag);
     const surface = this.answer.surface;
+    if (surface && this.drag && before?.letter === surface.letter) surface.colors = before.colors;
     const letters = declaredSurfaces(text).map((s) => s.letter);
     this.fillLetters(letters);
     this.c.title.textContent = `Surface ~${this.letter}`;

@@ -1,15 +1,17 @@
 // The surface editor's 3D view: one declared surface in the turtle's frame at scale 1 (x along L,
 // y along H: up the screen, z along U: toward the viewer), tessellated as the plant draws it (the
 // core's mesh), its 4 × 4 control nets as points and lines, the contact point with the turtle's
-// heading and up, the end point if declared; an orbit camera. Drawn on demand.
+// heading and up, the end point if declared; an orbit camera. Drawn on demand. Each patch's front
+// and back are in the colours the plant draws them with (the core's answer).
 import {
   AmbientLight,
   ArrowHelper,
   BufferAttribute,
   BufferGeometry,
   Color,
+  BackSide,
   DirectionalLight,
-  DoubleSide,
+  FrontSide,
   LineBasicMaterial,
   LineSegments,
   Mesh,
@@ -26,8 +28,8 @@ import {
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import type { Point3, SurfacePreview } from '../../core';
 
-/** The colours of the view: the surface's front and back, the net, the selected point, the turtle's axes. */
-const COLOURS = { front: 0xe58fb5, back: 0xc9b8c4, net: 0xff7a00, selected: 0x1769d1, heading: 0x2e7d32, up: 0x1769d1, contact: 0x111111, end: 0x8e24aa } as const;
+/** The colours of the view: the net, the selected point, the turtle's axes. */
+const COLOURS = { net: 0xff7a00, selected: 0x1769d1, heading: 0x2e7d32, up: 0x1769d1, contact: 0x111111, end: 0x8e24aa } as const;
 
 /** Moving a point: in the plane facing the camera, or along one axis of the written points (a direction in the view). */
 export type DragAxis = null | Vector3;
@@ -38,7 +40,8 @@ export class SurfaceScene {
   private readonly scene = new Scene();
   private readonly camera = new PerspectiveCamera(40, 1, 0.001, 1000);
   private readonly controls: OrbitControls;
-  private readonly surface = new Mesh(new BufferGeometry(), new MeshStandardMaterial({ color: COLOURS.front, side: DoubleSide, roughness: 0.7 }));
+  /** The surface's fronts and backs, each side in its own colours. */
+  private readonly sides = [FrontSide, BackSide].map((side) => new Mesh(new BufferGeometry(), new MeshStandardMaterial({ vertexColors: true, side, roughness: 0.7 })));
   private readonly lines = new LineSegments(new BufferGeometry(), new LineBasicMaterial({ color: COLOURS.net, depthTest: false, transparent: true, opacity: 0.8 }));
   private readonly points = new Points(new BufferGeometry(), new PointsMaterial({ color: COLOURS.net, size: 9, sizeAttenuation: false, depthTest: false }));
   private readonly selection = new Points(new BufferGeometry(), new PointsMaterial({ color: COLOURS.selected, size: 15, sizeAttenuation: false, depthTest: false }));
@@ -58,7 +61,7 @@ export class SurfaceScene {
     const light = new DirectionalLight(0xffffff, 2.2);
     light.position.set(0.6, 1, 1.4);
     this.camera.add(light); // a light that turns with the camera: the side looked at is always lit
-    this.scene.add(this.camera, new AmbientLight(0xffffff, 0.9), this.surface, this.lines, this.points, this.selection, this.contact, this.heading, this.up, this.endPoint);
+    this.scene.add(this.camera, new AmbientLight(0xffffff, 0.9), ...this.sides, this.lines, this.points, this.selection, this.contact, this.heading, this.up, this.endPoint);
     this.lines.renderOrder = 10;
     this.points.renderOrder = 11;
     this.selection.renderOrder = 12;
@@ -94,12 +97,18 @@ export class SurfaceScene {
 
   /** Shows `surface`'s tessellation alone (while a drag moves the net itself). */
   showMesh(surface: SurfacePreview): void {
-    this.surface.geometry.dispose();
-    const geometry = new BufferGeometry();
-    geometry.setAttribute('position', new BufferAttribute(surface.positions, 3));
-    geometry.setAttribute('normal', new BufferAttribute(surface.normals, 3));
-    geometry.setIndex(new BufferAttribute(surface.indices, 1));
-    this.surface.geometry = geometry;
+    const position = new BufferAttribute(surface.positions, 3);
+    const normal = new BufferAttribute(surface.normals, 3);
+    const index = new BufferAttribute(surface.indices, 1);
+    this.sides.forEach((mesh, side) => {
+      mesh.geometry.dispose();
+      const geometry = new BufferGeometry();
+      geometry.setAttribute('position', position);
+      geometry.setAttribute('normal', normal);
+      geometry.setAttribute('color', new BufferAttribute(vertexColours(surface, side), 3));
+      geometry.setIndex(index);
+      mesh.geometry = geometry;
+    });
     this.requestFrame();
   }
 
@@ -201,7 +210,7 @@ export class SurfaceScene {
   dispose(): void {
     this.resize.disconnect();
     this.controls.dispose();
-    for (const o of [this.surface, this.lines, this.points, this.selection, this.contact, this.endPoint]) o.geometry.dispose();
+    for (const o of [...this.sides, this.lines, this.points, this.selection, this.contact, this.endPoint]) o.geometry.dispose();
     this.renderer.dispose();
   }
 
@@ -240,4 +249,19 @@ export class SurfaceScene {
     this.camera.updateProjectionMatrix();
     this.requestFrame();
   }
+}
+
+/** Leaf green, the plant's colour for an organ before any colour is chosen: what shows until the core says. */
+const LEAF: Point3 = [0.2, 0.58, 0.16];
+
+/**
+ * A colour per vertex of `surface`'s tessellation for its front (`side` 0) or back: each patch's
+ * grid of (s + 1) × (t + 1) points in the patch's colour.
+ */
+function vertexColours(surface: SurfacePreview, side: number): Float32Array {
+  const [s, t] = surface.precision;
+  const perPatch = (s + 1) * (t + 1);
+  const out = new Float32Array(surface.positions.length);
+  for (let v = 0; v < out.length / 3; v++) out.set(surface.colors[Math.floor(v / perPatch)]?.[side] ?? LEAF, 3 * v);
+  return out;
 }

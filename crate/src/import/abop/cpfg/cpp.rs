@@ -111,6 +111,15 @@ impl<'a> Preprocessor<'a> {
         out
     }
 
+    /// The kept macros whose value is a constant, with that value (what an lpfg surface id
+    /// such as `Surface(LEAF, s)` reads).
+    pub fn constants(&self) -> Vec<(String, f64)> {
+        self.macros
+            .iter()
+            .filter_map(|(name, m)| Some((name.clone(), m.value.filter(|_| m.kept)?)))
+            .collect()
+    }
+
     /// `#if`, `#ifdef`, `#ifndef`, `#elif`, `#else`, `#endif`; false for another word.
     fn conditional(
         &mut self,
