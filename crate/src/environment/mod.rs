@@ -11,6 +11,8 @@
 //! Plain data in ([`Part`], [`Probe`]), plain data out (replies, a [`Field`] for the studio's
 //! views). Deterministic: a program that draws random numbers takes its seed from its settings.
 
+pub mod light;
+
 /// Most bytes the programs of one build may hold at once (their grids and points): a grid that
 /// would pass it stops the build with a diagnostic, never a trap.
 pub const MAX_ENVIRONMENT_BYTES: usize = 64 << 20;
