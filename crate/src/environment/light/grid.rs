@@ -151,18 +151,31 @@ impl PlaneOf {
 /// content of `src` moved by (su, sv); what moves out is dropped.
 pub fn shifted_add(dst: &mut [f32], src: &[f32], nu: usize, w: f32, shift: [isize; 2]) {
     let nv = dst.len() / nu.max(1);
-    let [su, sv] = shift;
-    if su.unsigned_abs() >= nu || sv.unsigned_abs() >= nv || w == 0.0 {
-        return;
-    }
-    let (u_from, u_to) = (su.max(0) as usize, (nu as isize + su.min(0)) as usize);
-    let (v_from, v_to) = (sv.max(0) as usize, (nv as isize + sv.min(0)) as usize);
-    for v in v_from..v_to {
-        let d = &mut dst[v * nu + u_from..v * nu + u_to];
-        let s_start = (v as isize - sv) as usize * nu + (u_from as isize - su) as usize;
-        let s = &src[s_start..s_start + d.len()];
-        for (x, &y) in d.iter_mut().zip(s) {
-            *x += w * y;
+    for (v, row) in dst.chunks_exact_mut(nu).enumerate() {
+        if let Some(from) = shifted(v, shift[1], nv) {
+            shifted_add_row(row, &src[from * nu..(from + 1) * nu], w, shift[0]);
         }
     }
+}
+
+/// `dst(u) += w × src(u − s)` for the u where both are in the row.
+pub fn shifted_add_row(dst: &mut [f32], src: &[f32], w: f32, s: isize) {
+    let n = dst.len();
+    if s.unsigned_abs() >= n {
+        return;
+    }
+    let (d, s) = if s >= 0 {
+        (&mut dst[s as usize..], &src[..n - s as usize])
+    } else {
+        (&mut dst[..n - s.unsigned_abs()], &src[s.unsigned_abs()..])
+    };
+    for (x, &y) in d.iter_mut().zip(s) {
+        *x += w * y;
+    }
+}
+
+/// `at − shift`, if it is in `0..n`.
+pub fn shifted(at: usize, shift: isize, n: usize) -> Option<usize> {
+    let from = at as isize - shift;
+    (0..n as isize).contains(&from).then_some(from as usize)
 }

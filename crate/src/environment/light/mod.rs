@@ -60,6 +60,8 @@ pub struct Light {
     settings: LightSettings,
     /// The full light C (0 when parts cast no shadow).
     full: f64,
+    /// ln(1 − absorb): the log of the sun's light one part lets through.
+    kept: f64,
     /// The grid of the last update; no voxels before the first or when there were no parts.
     extent: Extent,
     /// Parts per voxel; after the sun's sweep, parts on the beam up to each voxel.
@@ -83,6 +85,7 @@ impl Light {
             })
             .sum();
         Ok(Light {
+            kept: (1.0 - settings.absorb).ln(),
             settings,
             full,
             extent: Extent::default(),
@@ -176,14 +179,13 @@ fn megabytes(bytes: f64) -> String {
     }
 }
 
-/// A vector resized to `len` zeros in the allocation it has (given back when it is more than
-/// twice what is needed).
-fn zeros(v: &mut Vec<f32>, len: usize) {
-    v.clear();
+/// A vector resized to `len` in the allocation it has (given back when it is more than twice
+/// what is needed); what it held before is left in it.
+fn fit(v: &mut Vec<f32>, len: usize) {
+    v.resize(len, 0.0);
     if v.capacity() > 2 * len {
         v.shrink_to(len);
     }
-    v.resize(len, 0.0);
 }
 
 impl Responder for Light {
@@ -198,10 +200,12 @@ impl Responder for Light {
         };
         self.extent = extent;
         let dims = extent.dims;
-        zeros(&mut self.beam, extent.voxels());
+        fit(&mut self.beam, extent.voxels());
+        self.beam.fill(0.0);
         self.deposit(parts);
         if self.sky_counts() {
-            zeros(&mut self.shadow, extent.voxels());
+            // Every voxel written by the propagation: no need to clear it.
+            fit(&mut self.shadow, extent.voxels());
             let pyramid = Pyramid {
                 shadow: self.settings.shadow as f32,
                 fade: (1.0 / self.settings.spread) as f32,

@@ -16,7 +16,7 @@ impl Light {
             1.0
         };
         let direct = if self.sun_counts() {
-            sun::transmitted(self.beam[v], self.settings.absorb)
+            sun::transmitted(self.beam[v], self.kept)
         } else {
             1.0
         };
@@ -115,7 +115,7 @@ impl Light {
         }
         let at = [0, 1, 2].map(|a| p[a] + enter * toward[a]);
         let v = self.extent.index(self.extent.voxel_clamped(at));
-        sun::transmitted(self.beam[v], self.settings.absorb)
+        sun::transmitted(self.beam[v], self.kept)
     }
 }
 

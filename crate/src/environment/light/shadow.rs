@@ -14,7 +14,7 @@
 //! the fading and the ending cancel exactly). The grid's margin of `depth` voxels beside the
 //! parts keeps every corner inside the grid until its pyramid ends.
 
-use super::grid::{shifted_add, PlaneOf};
+use super::grid::{shifted, shifted_add_row};
 
 /// The shape of one part's shadow.
 #[derive(Clone, Copy, Debug)]
@@ -26,12 +26,9 @@ pub struct Pyramid {
     pub depth: usize,
 }
 
-/// The planes the propagation works in, kept from one update to the next.
+/// The corner planes of the layer above and of this layer, kept from one update to the next.
 #[derive(Debug, Default)]
 pub struct ShadowPlanes {
-    layer: Vec<f32>,
-    ended: Vec<f32>,
-    sum: Vec<f32>,
     corners: [Vec<f32>; 4],
     next: [Vec<f32>; 4],
 }
@@ -39,22 +36,16 @@ pub struct ShadowPlanes {
 impl ShadowPlanes {
     /// Bytes of planes for a grid of `dims`.
     pub fn bytes_for(dims: [usize; 3]) -> usize {
-        11 * dims[0] * dims[2] * std::mem::size_of::<f32>()
+        8 * dims[0] * dims[2] * std::mem::size_of::<f32>()
     }
 
     pub fn bytes(&self) -> usize {
-        let planes = [&self.layer, &self.ended, &self.sum];
-        let all = planes.into_iter().chain(&self.corners).chain(&self.next);
+        let all = self.corners.iter().chain(&self.next);
         all.map(|p| p.capacity() * std::mem::size_of::<f32>()).sum()
     }
 
     fn reset(&mut self, plane: usize) {
-        let all = [&mut self.layer, &mut self.ended, &mut self.sum];
-        for p in all
-            .into_iter()
-            .chain(&mut self.corners)
-            .chain(&mut self.next)
-        {
+        for p in self.corners.iter_mut().chain(&mut self.next) {
             p.clear();
             p.resize(plane, 0.0);
         }
@@ -62,7 +53,8 @@ impl ShadowPlanes {
 }
 
 /// Writes into `shadow` the shadow of every voxel of a grid of `dims` whose parts per voxel are
-/// `parts` (the sum of the pyramids of all parts).
+/// `parts` (the sum of the pyramids of all parts). Row by row (a row of x at one y and z), each
+/// row's corners, their sum and the shadow's row made while the rows they read are in the cache.
 pub fn propagate(
     parts: &[f32],
     dims: [usize; 3],
@@ -72,59 +64,63 @@ pub fn propagate(
 ) {
     let [nx, ny, nz] = dims;
     planes.reset(nx * nz);
-    let depth = pyramid.depth;
-    let a = pyramid.shadow;
-    let ended_weight = -a * pyramid.fade.powi(depth as i32 + 1);
+    let row_of = |j: usize, k: usize| nx * (j + ny * k);
+    let far = pyramid.depth as isize + 1;
+    let ended_weight = -pyramid.shadow * pyramid.fade.powi(far as i32);
     for j in (0..ny).rev() {
-        PlaneOf::new(dims, 1, j).gather(parts, &mut planes.layer);
-        let ended = j + depth + 1 < ny;
-        if ended {
-            PlaneOf::new(dims, 1, j + depth + 1).gather(parts, &mut planes.ended);
-        }
-        for c in 0..4 {
-            // Corner c: (oi, ok) = 0 for the low side (moving to −1), 1 for the high side (+1).
-            let (oi, ok) = ((c & 1) as isize, (c >> 1) as isize);
-            let (di, dk) = (2 * oi - 1, 2 * ok - 1);
-            let next = &mut planes.next[c];
-            next.fill(0.0);
-            shifted_add(next, &planes.layer, nx, a, [oi, ok]);
-            shifted_add(next, &planes.corners[c], nx, pyramid.fade, [di, dk]);
-            if ended {
-                let far = depth as isize + 1;
-                shifted_add(
-                    next,
-                    &planes.ended,
-                    nx,
-                    ended_weight,
-                    [oi + far * di, ok + far * dk],
-                );
+        let ended = (j + pyramid.depth + 1 < ny).then_some(j + pyramid.depth + 1);
+        for k in 0..nz {
+            for c in 0..4 {
+                // Corner c: (oi, ok) = 0 for the low side (moving to −1), 1 for the high side (+1).
+                let (oi, ok) = ((c & 1) as isize, (c >> 1) as isize);
+                let (di, dk) = (2 * oi - 1, 2 * ok - 1);
+                let next = &mut planes.next[c][k * nx..(k + 1) * nx];
+                next.fill(0.0);
+                if let Some(from) = shifted(k, ok, nz) {
+                    shifted_add_row(next, &parts[row_of(j, from)..][..nx], pyramid.shadow, oi);
+                }
+                if let Some(from) = shifted(k, dk, nz) {
+                    let above = &planes.corners[c][from * nx..(from + 1) * nx];
+                    shifted_add_row(next, above, pyramid.fade, di);
+                }
+                if let (Some(e), Some(from)) = (ended, shifted(k, ok + far * dk, nz)) {
+                    let row = &parts[row_of(e, from)..][..nx];
+                    shifted_add_row(next, row, ended_weight, oi + far * di);
+                }
             }
+            sum_row(
+                &planes.next,
+                k,
+                nx,
+                shadow,
+                row_of(j, k),
+                (k > 0).then(|| row_of(j, k - 1)),
+            );
         }
         std::mem::swap(&mut planes.corners, &mut planes.next);
-        corners_to_shadow(&planes.corners, nx, &mut planes.sum);
-        PlaneOf::new(dims, 1, j).scatter(&planes.sum, shadow, |s| s);
     }
 }
 
-/// The layer's shadow: the corner planes with their signs, summed along i and then along k.
-fn corners_to_shadow(corners: &[Vec<f32>; 4], nx: usize, sum: &mut [f32]) {
-    let [low, high_i, high_k, high] = corners;
-    for (s, (((a, b), c), d)) in sum
-        .iter_mut()
-        .zip(low.iter().zip(high_i).zip(high_k).zip(high))
-    {
-        *s = (a - b) - (c - d);
+/// Row k of the layer's shadow: the corner planes' row k with their signs, summed along the row,
+/// plus the row before (at `before`): the corners summed along i and along k.
+fn sum_row(
+    corners: &[Vec<f32>; 4],
+    k: usize,
+    nx: usize,
+    shadow: &mut [f32],
+    at: usize,
+    before: Option<usize>,
+) {
+    let [low, high_i, high_k, high] = corners.each_ref().map(|c| &c[k * nx..(k + 1) * nx]);
+    let (earlier, rest) = shadow.split_at_mut(at);
+    let row = &mut rest[..nx];
+    let mut running = 0.0;
+    for i in 0..nx {
+        running += (low[i] - high_i[i]) - (high_k[i] - high[i]);
+        row[i] = running;
     }
-    for row in sum.chunks_exact_mut(nx) {
-        let mut running = 0.0;
-        for x in row {
-            running += *x;
-            *x = running;
-        }
-    }
-    for k in 1..sum.len() / nx.max(1) {
-        let (before, rest) = sum.split_at_mut(k * nx);
-        for (x, &y) in rest[..nx].iter_mut().zip(&before[(k - 1) * nx..]) {
+    if let Some(b) = before {
+        for (x, &y) in row.iter_mut().zip(&earlier[b..b + nx]) {
             *x += y;
         }
     }

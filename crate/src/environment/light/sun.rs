@@ -98,13 +98,14 @@ fn bilinear(du: f64, dv: f64) -> [([isize; 2], f32); 4] {
 }
 
 /// The light let through by `parts` parts on the beam, one forgiven (the part a probe stands
-/// at: Palubicki's "+ a" for the sun): (1 − absorb)^max(parts − 1, 0).
-pub fn transmitted(parts: f32, absorb: f64) -> f64 {
+/// at: Palubicki's "+ a" for the sun): (1 − absorb)^max(parts − 1, 0), given `kept` =
+/// ln(1 − absorb) (−∞ when a part stops all).
+pub fn transmitted(parts: f32, kept: f64) -> f64 {
     let crossed = f64::from(parts) - 1.0;
     if crossed <= 0.0 {
         1.0
     } else {
-        (1.0 - absorb).powf(crossed)
+        (crossed * kept).exp()
     }
 }
 
@@ -149,9 +150,11 @@ mod tests {
 
     #[test]
     fn one_part_is_forgiven_and_the_rest_absorb() {
-        assert_eq!(transmitted(0.0, 0.5), 1.0);
-        assert_eq!(transmitted(1.0, 0.9), 1.0);
-        assert!((transmitted(3.0, 0.5) - 0.25).abs() < 1e-12);
-        assert_eq!(transmitted(2.0, 1.0), 0.0);
+        let kept = |absorb: f64| (1.0 - absorb).ln();
+        assert_eq!(transmitted(0.0, kept(0.5)), 1.0);
+        assert_eq!(transmitted(1.0, kept(0.9)), 1.0);
+        assert!((transmitted(3.0, kept(0.5)) - 0.25).abs() < 1e-12);
+        assert_eq!(transmitted(2.0, kept(1.0)), 0.0);
+        assert_eq!(transmitted(5.0, kept(0.0)), 1.0);
     }
 }
