@@ -16,16 +16,19 @@ pub struct Extent {
     pub lo: [f64; 3],
     pub dims: [usize; 3],
     pub cell: f64,
+    /// 1 / cell: a point's voxel is `floor(x × inv)`, the same product everywhere (a multiply,
+    /// not a divide, for the hundreds of thousands of parts an update places).
+    pub inv: f64,
 }
 
 /// The whole numbers of cells the parts' box spans, before margins: (lowest, highest) on each axis.
-pub fn parts_box(parts: &[Part], cell: f64) -> Option<([f64; 3], [f64; 3])> {
+pub fn parts_box(parts: &[Part], inv: f64) -> Option<([f64; 3], [f64; 3])> {
     let mut lo = [f64::INFINITY; 3];
     let mut hi = [f64::NEG_INFINITY; 3];
     for part in parts.iter().filter(|p| finite(p)) {
         for p in [part.from, part.to] {
             for a in 0..3 {
-                let c = (p[a] / cell).floor();
+                let c = (p[a] * inv).floor();
                 lo[a] = lo[a].min(c);
                 hi[a] = hi[a].max(c);
             }
@@ -72,7 +75,7 @@ impl Extent {
     pub fn voxel_of(&self, p: [f64; 3]) -> Option<[usize; 3]> {
         let mut v = [0; 3];
         for a in 0..3 {
-            let r = (p[a] / self.cell).floor() - self.lo[a];
+            let r = (p[a] * self.inv).floor() - self.lo[a];
             if !(r >= 0.0 && r < self.dims[a] as f64) {
                 return None;
             }
@@ -84,7 +87,7 @@ impl Extent {
     /// The voxel of `p`, moved into the grid when rounding put it just outside.
     pub fn voxel_clamped(&self, p: [f64; 3]) -> [usize; 3] {
         [0, 1, 2].map(|a| {
-            let r = (p[a] / self.cell).floor() - self.lo[a];
+            let r = (p[a] * self.inv).floor() - self.lo[a];
             r.clamp(0.0, (self.dims[a] - 1) as f64) as usize
         })
     }

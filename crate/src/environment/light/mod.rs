@@ -116,14 +116,16 @@ impl Light {
     /// The grid `parts` need, or what it would take when over `budget`; `None` without parts.
     fn plan(&self, parts: &[Part], budget: usize) -> Result<Option<Extent>, Exceeded> {
         let cell = self.settings.cell;
-        let Some((lo, hi)) = grid::parts_box(parts, cell) else {
+        let inv = 1.0 / cell;
+        let Some((lo, hi)) = grid::parts_box(parts, inv) else {
             return Ok(None);
         };
         let depth = self.settings.depth as f64;
         let (lo, dims) = Extent::with_margins(lo, hi, depth, depth, 1.0);
         let voxels = dims[0] * dims[1] * dims[2];
         let whole = [dims[0] as usize, dims[1] as usize, dims[2] as usize];
-        let planes = (self.sky_counts() as usize) * ShadowPlanes::bytes_for(whole)
+        let planes = (self.sky_counts() as usize)
+            * ShadowPlanes::bytes_for(whole, self.settings.depth)
             + (self.sun_counts() as usize) * SunPlanes::bytes_for(whole);
         let grids = 1.0 + f64::from(u8::from(self.sky_counts()));
         let bytes = voxels * grids * F32 as f64 + planes as f64;
@@ -142,26 +144,32 @@ impl Light {
             lo,
             dims: whole,
             cell,
+            inv,
         }))
     }
 
     /// Adds each part to the voxels it is in (`beam` holds the parts per voxel).
     fn deposit(&mut self, parts: &[Part]) {
-        let cell = self.settings.cell;
+        let inv = self.extent.inv;
         for part in parts.iter().filter(|p| grid::finite(p)) {
             let (from, to) = (part.from, part.to);
+            let middle = [0, 1, 2].map(|a| 0.5 * (from[a] + to[a]));
             if part.area > 0.0 {
-                let centre = [0, 1, 2].map(|a| 0.5 * (from[a] + to[a]));
-                let v = self.extent.index(self.extent.voxel_clamped(centre));
-                self.beam[v] += (part.area / (cell * cell)).max(1.0) as f32;
+                let v = self.extent.index(self.extent.voxel_clamped(middle));
+                self.beam[v] += (part.area * inv * inv).max(1.0) as f32;
                 continue;
             }
             let d = [0, 1, 2].map(|a| to[a] - from[a]);
-            let cells = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt() / cell;
-            let pieces = cells.ceil().max(1.0);
-            let weight = (cells.max(1.0) / pieces) as f32;
+            let cells = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt() * inv;
+            if cells <= 1.0 {
+                let v = self.extent.index(self.extent.voxel_clamped(middle));
+                self.beam[v] += 1.0;
+                continue;
+            }
+            let pieces = cells.ceil();
+            let (step, weight) = (1.0 / pieces, (cells / pieces) as f32);
             for s in 0..pieces as usize {
-                let t = (s as f64 + 0.5) / pieces;
+                let t = (s as f64 + 0.5) * step;
                 let p = [0, 1, 2].map(|a| from[a] + t * d[a]);
                 let v = self.extent.index(self.extent.voxel_clamped(p));
                 self.beam[v] += weight;

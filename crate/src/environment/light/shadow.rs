@@ -14,8 +14,6 @@
 //! the fading and the ending cancel exactly). The grid's margin of `depth` voxels beside the
 //! parts keeps every corner inside the grid until its pyramid ends.
 
-use super::grid::{shifted, shifted_add_row};
-
 /// The shape of one part's shadow.
 #[derive(Clone, Copy, Debug)]
 pub struct Pyramid {
@@ -26,35 +24,70 @@ pub struct Pyramid {
     pub depth: usize,
 }
 
-/// The corner planes of the layer above and of this layer, kept from one update to the next.
+/// The planes of the propagation, kept from one update to the next: the layer's parts, the parts
+/// whose pyramids end there, the corners of the layer above and of this layer. Each is padded
+/// with `depth + 2` zeros all round, so that every shifted read lands in it: one pass a corner,
+/// no bounds.
 #[derive(Debug, Default)]
 pub struct ShadowPlanes {
+    layer: Vec<f32>,
+    ended: Vec<f32>,
     corners: [Vec<f32>; 4],
     next: [Vec<f32>; 4],
 }
 
 impl ShadowPlanes {
-    /// Bytes of planes for a grid of `dims`.
-    pub fn bytes_for(dims: [usize; 3]) -> usize {
-        8 * dims[0] * dims[2] * std::mem::size_of::<f32>()
+    /// Bytes of planes for a grid of `dims` and shadows `depth` deep.
+    pub fn bytes_for(dims: [usize; 3], depth: usize) -> usize {
+        let pad = 2 * (depth + 2);
+        10 * (dims[0] + pad) * (dims[2] + pad) * std::mem::size_of::<f32>()
     }
 
     pub fn bytes(&self) -> usize {
-        let all = self.corners.iter().chain(&self.next);
+        let all = [&self.layer, &self.ended]
+            .into_iter()
+            .chain(&self.corners)
+            .chain(&self.next);
         all.map(|p| p.capacity() * std::mem::size_of::<f32>()).sum()
     }
 
     fn reset(&mut self, plane: usize) {
-        for p in self.corners.iter_mut().chain(&mut self.next) {
+        let all = [&mut self.layer, &mut self.ended].into_iter();
+        for p in all.chain(&mut self.corners).chain(&mut self.next) {
             p.clear();
             p.resize(plane, 0.0);
         }
     }
 }
 
+/// A padded plane: `width` values a row, the grid's row k at row `k + pad`, column i at `i + pad`.
+#[derive(Clone, Copy)]
+struct Padded {
+    width: usize,
+    pad: usize,
+    nx: usize,
+}
+
+impl Padded {
+    /// Where the grid's row `k` shifted by (si, sk) starts: the row that lands on row k.
+    fn start(&self, k: usize, [si, sk]: [isize; 2]) -> usize {
+        let row = (k + self.pad) as isize - sk;
+        (row * self.width as isize + self.pad as isize - si) as usize
+    }
+
+    /// Copies the grid's layer `j` into the plane's inside.
+    fn gather(&self, parts: &[f32], dims: [usize; 3], j: usize, plane: &mut [f32]) {
+        for k in 0..dims[2] {
+            let from = self.nx * (j + dims[1] * k);
+            let at = self.start(k, [0, 0]);
+            plane[at..at + self.nx].copy_from_slice(&parts[from..from + self.nx]);
+        }
+    }
+}
+
 /// Writes into `shadow` the shadow of every voxel of a grid of `dims` whose parts per voxel are
 /// `parts` (the sum of the pyramids of all parts). Row by row (a row of x at one y and z), each
-/// row's corners, their sum and the shadow's row made while the rows they read are in the cache.
+/// row's four corners in one pass each, then their sum and the shadow's row.
 pub fn propagate(
     parts: &[f32],
     dims: [usize; 3],
@@ -63,55 +96,56 @@ pub fn propagate(
     planes: &mut ShadowPlanes,
 ) {
     let [nx, ny, nz] = dims;
-    planes.reset(nx * nz);
-    let row_of = |j: usize, k: usize| nx * (j + ny * k);
+    let pad = pyramid.depth + 2;
+    let padded = Padded {
+        width: nx + 2 * pad,
+        pad,
+        nx,
+    };
+    planes.reset(padded.width * (nz + 2 * pad));
     let far = pyramid.depth as isize + 1;
     let ended_weight = -pyramid.shadow * pyramid.fade.powi(far as i32);
     for j in (0..ny).rev() {
-        let ended = (j + pyramid.depth + 1 < ny).then_some(j + pyramid.depth + 1);
+        padded.gather(parts, dims, j, &mut planes.layer);
+        let ended = j + pyramid.depth + 1 < ny;
+        if ended {
+            padded.gather(parts, dims, j + pyramid.depth + 1, &mut planes.ended);
+        }
         for k in 0..nz {
             for c in 0..4 {
                 // Corner c: (oi, ok) = 0 for the low side (moving to −1), 1 for the high side (+1).
                 let (oi, ok) = ((c & 1) as isize, (c >> 1) as isize);
                 let (di, dk) = (2 * oi - 1, 2 * ok - 1);
-                let next = &mut planes.next[c][k * nx..(k + 1) * nx];
-                next.fill(0.0);
-                if let Some(from) = shifted(k, ok, nz) {
-                    shifted_add_row(next, &parts[row_of(j, from)..][..nx], pyramid.shadow, oi);
+                let at = padded.start(k, [0, 0]);
+                let next = &mut planes.next[c][at..at + nx];
+                let own = &planes.layer[padded.start(k, [oi, ok])..][..nx];
+                let above = &planes.corners[c][padded.start(k, [di, dk])..][..nx];
+                let (a, fade) = (pyramid.shadow, pyramid.fade);
+                for ((x, &o), &b) in next.iter_mut().zip(own).zip(above) {
+                    *x = a * o + fade * b;
                 }
-                if let Some(from) = shifted(k, dk, nz) {
-                    let above = &planes.corners[c][from * nx..(from + 1) * nx];
-                    shifted_add_row(next, above, pyramid.fade, di);
-                }
-                if let (Some(e), Some(from)) = (ended, shifted(k, ok + far * dk, nz)) {
-                    let row = &parts[row_of(e, from)..][..nx];
-                    shifted_add_row(next, row, ended_weight, oi + far * di);
+                if ended {
+                    let shift = [oi + far * di, ok + far * dk];
+                    let gone = &planes.ended[padded.start(k, shift)..][..nx];
+                    for (x, &g) in next.iter_mut().zip(gone) {
+                        *x += ended_weight * g;
+                    }
                 }
             }
-            sum_row(
-                &planes.next,
-                k,
-                nx,
-                shadow,
-                row_of(j, k),
-                (k > 0).then(|| row_of(j, k - 1)),
-            );
+            let at = padded.start(k, [0, 0]);
+            let rows = planes.next.each_ref().map(|c| &c[at..at + nx]);
+            let row_of = |k: usize| nx * (j + ny * k);
+            sum_row(rows, shadow, row_of(k), (k > 0).then(|| row_of(k - 1)));
         }
         std::mem::swap(&mut planes.corners, &mut planes.next);
     }
 }
 
-/// Row k of the layer's shadow: the corner planes' row k with their signs, summed along the row,
+/// A row of the layer's shadow: the corner planes' rows with their signs, summed along the row,
 /// plus the row before (at `before`): the corners summed along i and along k.
-fn sum_row(
-    corners: &[Vec<f32>; 4],
-    k: usize,
-    nx: usize,
-    shadow: &mut [f32],
-    at: usize,
-    before: Option<usize>,
-) {
-    let [low, high_i, high_k, high] = corners.each_ref().map(|c| &c[k * nx..(k + 1) * nx]);
+fn sum_row(corners: [&[f32]; 4], shadow: &mut [f32], at: usize, before: Option<usize>) {
+    let [low, high_i, high_k, high] = corners;
+    let nx = low.len();
     let (earlier, rest) = shadow.split_at_mut(at);
     let row = &mut rest[..nx];
     let mut running = 0.0;
