@@ -73,17 +73,26 @@ fn wall() -> Vec<Part> {
     parts
 }
 
-#[test]
-fn a_probe_behind_a_wall_from_a_low_sun_reads_less_and_its_light_points_away() {
+/// The replies at `points` of a light with the sun low along `toward` (its beam stopped 90% by
+/// each part) over `parts`.
+fn low_sun(toward: [f64; 3], parts: &[Part], points: &[[f64; 3]]) -> Vec<[f64; 4]> {
     let mut light = light(&[
         ("sun", &[1.0]),
-        ("sun_direction", &[1.0, 0.4, 0.0]),
+        ("sun_direction", &toward),
         ("absorb", &[0.9]),
     ]);
-    light.update(&wall(), MAX_ENVIRONMENT_BYTES).unwrap();
-    let [lit, shaded] = replies(&mut light, &[[3.5, 4.5, 0.25], [-2.5, 4.5, 0.25]])[..] else {
-        unreachable!()
-    };
+    light.update(parts, MAX_ENVIRONMENT_BYTES).unwrap();
+    replies(&mut light, points)
+}
+
+#[test]
+fn a_probe_behind_a_wall_from_a_low_sun_reads_less_and_its_light_points_away() {
+    let r = low_sun(
+        [1.0, 0.4, 0.0],
+        &wall(),
+        &[[3.5, 4.5, 0.25], [-2.5, 4.5, 0.25]],
+    );
+    let [lit, shaded] = [r[0], r[1]];
     // The same distance from the wall (3 voxels), so the same sky; the sun's beam crosses the
     // wall's two parts a voxel (one forgiven) on the far side: direct light 0.1 there, 1 here.
     assert!(lit[0] - shaded[0] > 0.4, "lit {lit:?}, shaded {shaded:?}");
@@ -106,40 +115,13 @@ fn a_probe_behind_a_wall_from_a_low_sun_reads_less_and_its_light_points_away() {
 fn the_wall_casts_the_same_shadow_whichever_axis_the_sun_comes_along() {
     // The wall turned a quarter about y (in the plane z = 0.5) with the sun from +z, and mirrored
     // (the sun from −x): the same numbers as from +x, by the same sweep along another axis.
-    let turned: Vec<Part> = wall()
-        .iter()
-        .map(|p| segment(swap_xz(p.from), swap_xz(p.to)))
-        .collect();
-    let mut from_z = light(&[
-        ("sun", &[1.0]),
-        ("sun_direction", &[0.0, 0.4, 1.0]),
-        ("absorb", &[0.9]),
-    ]);
-    from_z.update(&turned, MAX_ENVIRONMENT_BYTES).unwrap();
-    let z = replies(&mut from_z, &[[0.25, 4.5, 3.5], [0.25, 4.5, -2.5]]);
-    let mirrored: Vec<Part> = wall()
-        .iter()
-        .map(|p| segment(mirror_x(p.from), mirror_x(p.to)))
-        .collect();
-    let mut from_minus_x = light(&[
-        ("sun", &[1.0]),
-        ("sun_direction", &[-1.0, 0.4, 0.0]),
-        ("absorb", &[0.9]),
-    ]);
-    from_minus_x
-        .update(&mirrored, MAX_ENVIRONMENT_BYTES)
-        .unwrap();
-    let m = replies(
-        &mut from_minus_x,
-        &[mirror_x([3.5, 4.5, 0.25]), mirror_x([-2.5, 4.5, 0.25])],
-    );
-    let mut from_x = light(&[
-        ("sun", &[1.0]),
-        ("sun_direction", &[1.0, 0.4, 0.0]),
-        ("absorb", &[0.9]),
-    ]);
-    from_x.update(&wall(), MAX_ENVIRONMENT_BYTES).unwrap();
-    let x = replies(&mut from_x, &[[3.5, 4.5, 0.25], [-2.5, 4.5, 0.25]]);
+    let moved = |f: fn([f64; 3]) -> [f64; 3]| -> Vec<Part> {
+        wall().iter().map(|p| segment(f(p.from), f(p.to))).collect()
+    };
+    let points = [[3.5, 4.5, 0.25], [-2.5, 4.5, 0.25]];
+    let x = low_sun([1.0, 0.4, 0.0], &wall(), &points);
+    let z = low_sun([0.0, 0.4, 1.0], &moved(swap_xz), &points.map(swap_xz));
+    let m = low_sun([-1.0, 0.4, 0.0], &moved(mirror_x), &points.map(mirror_x));
     for i in 0..2 {
         assert!(
             (x[i][0] - z[i][0]).abs() < 1e-6 && (x[i][1] - z[i][3]).abs() < 1e-6,

@@ -14,7 +14,7 @@ use wasm_bindgen::prelude::*;
 pub struct LightBench {
     light: Light,
     parts: Vec<Part>,
-    probes: Vec<[f64; 3]>,
+    probes: Vec<Probe<'static>>,
     replies: Vec<f64>,
 }
 
@@ -46,7 +46,15 @@ impl LightBench {
         let mut rng = rand_pcg::Pcg64Mcg::seed_from_u64(u64::from(seed));
         let point = |rng: &mut rand_pcg::Pcg64Mcg| size.map(|s| rng.random::<f64>() * s);
         let parts = branches(segments, size, &mut rng);
-        let probes: Vec<[f64; 3]> = (0..probes).map(|_| point(&mut rng)).collect();
+        let probes: Vec<Probe<'static>> = (0..probes)
+            .map(|_| Probe {
+                position: point(&mut rng),
+                heading: [0.0, 1.0, 0.0],
+                up: [1.0, 0.0, 0.0],
+                args: &[],
+                plant: 0,
+            })
+            .collect();
         Ok(LightBench {
             light,
             parts,
@@ -64,18 +72,7 @@ impl LightBench {
 
     /// Every probe answered; the sum of their exposures.
     pub fn answer(&mut self) -> f64 {
-        let probes: Vec<Probe<'_>> = self
-            .probes
-            .iter()
-            .map(|&position| Probe {
-                position,
-                heading: [0.0, 1.0, 0.0],
-                up: [0.0, 0.0, 1.0],
-                args: &[],
-                plant: 0,
-            })
-            .collect();
-        self.light.answer(&probes, &mut self.replies, 4, 0);
+        self.light.answer(&self.probes, &mut self.replies, 4, 0);
         self.replies.iter().step_by(4).sum()
     }
 
