@@ -354,3 +354,44 @@ fn settings_out_of_range_are_errors_at_the_setting() {
     )
     .is_ok());
 }
+
+#[test]
+fn no_parts_odd_numbers_and_far_points_give_replies_never_a_panic() {
+    let mut light = light(&[("sun", &[1.0]), ("sun_direction", &[0.3, 1.0, 0.2])]);
+    let nan = [f64::NAN, 0.0, 0.0];
+    let far = [1e300, -1e300, 0.0];
+    for parts in [
+        vec![],
+        vec![segment(nan, [0.0; 3])],
+        vec![segment(far, far)],
+    ] {
+        light.update(&parts, MAX_ENVIRONMENT_BYTES).unwrap();
+        for r in replies(&mut light, &[[0.0; 3], nan, far, [f64::INFINITY; 3]]) {
+            assert!(r.iter().all(|x| x.is_finite()), "{parts:?}: {r:?}");
+            assert!((0.0..=1.0).contains(&r[0]), "{r:?}");
+        }
+    }
+    assert!(light
+        .update(&[segment(far, far)], MAX_ENVIRONMENT_BYTES)
+        .is_ok());
+    // A part far out and one at the origin: a grid the budget refuses, measured without overflow.
+    let apart = [segment([0.0; 3], [0.0, 1.0, 0.0]), segment(far, far)];
+    let exceeded = light.update(&apart, MAX_ENVIRONMENT_BYTES).unwrap_err();
+    assert!(exceeded.bytes > MAX_ENVIRONMENT_BYTES, "{exceeded:?}");
+    // A grid of one voxel's parts, and probes around it.
+    light
+        .update(
+            &[segment([0.2, 0.2, 0.2], [0.3, 0.3, 0.3])],
+            MAX_ENVIRONMENT_BYTES,
+        )
+        .unwrap();
+    assert_eq!(light.dims(), [17, 10, 17]);
+    let r = replies(
+        &mut light,
+        &[[0.5, -0.5, 0.5], [0.5, -8.5, 0.5], [0.5, -9.5, 0.5]],
+    );
+    assert!(
+        r.iter().all(|r| r[0] == 1.0),
+        "one part shades no one: {r:?}"
+    );
+}

@@ -123,12 +123,11 @@ impl Light {
         let depth = self.settings.depth as f64;
         let (lo, dims) = Extent::with_margins(lo, hi, depth, depth, 1.0);
         let voxels = dims[0] * dims[1] * dims[2];
-        let whole = [dims[0] as usize, dims[1] as usize, dims[2] as usize];
-        let planes = (self.sky_counts() as usize)
-            * ShadowPlanes::bytes_for(whole, self.settings.depth)
-            + (self.sun_counts() as usize) * SunPlanes::bytes_for(whole);
-        let grids = 1.0 + f64::from(u8::from(self.sky_counts()));
-        let bytes = voxels * grids * F32 as f64 + planes as f64;
+        let (sky, sun) = (self.sky_counts(), self.sun_counts());
+        let planes = f64::from(u8::from(sky)) * ShadowPlanes::bytes_for(dims, self.settings.depth)
+            + f64::from(u8::from(sun)) * SunPlanes::bytes_for(dims);
+        let grids = 1.0 + f64::from(u8::from(sky));
+        let bytes = voxels * grids * F32 as f64 + planes;
         // NaN: a box too far out for floats to measure.
         if bytes.is_nan() || bytes > budget as f64 {
             let [x, y, z] = dims;
@@ -142,7 +141,7 @@ impl Light {
         }
         Ok(Some(Extent {
             lo,
-            dims: whole,
+            dims: dims.map(|d| d as usize),
             cell,
             inv,
         }))

@@ -37,10 +37,11 @@ pub struct ShadowPlanes {
 }
 
 impl ShadowPlanes {
-    /// Bytes of planes for a grid of `dims` and shadows `depth` deep.
-    pub fn bytes_for(dims: [usize; 3], depth: usize) -> usize {
-        let pad = 2 * (depth + 2);
-        10 * (dims[0] + pad) * (dims[2] + pad) * std::mem::size_of::<f32>()
+    /// Bytes of planes for a grid of `dims` and shadows `depth` deep (as a float: the grid may
+    /// be too large for a size).
+    pub fn bytes_for(dims: [f64; 3], depth: usize) -> f64 {
+        let pad = 2.0 * (depth as f64 + 2.0);
+        10.0 * (dims[0] + pad) * (dims[2] + pad) * std::mem::size_of::<f32>() as f64
     }
 
     pub fn bytes(&self) -> usize {

@@ -21,12 +21,13 @@ pub struct SunPlanes {
 }
 
 impl SunPlanes {
-    /// Bytes of planes for a grid of `dims`: two of its largest plane.
-    pub fn bytes_for(dims: [usize; 3]) -> usize {
+    /// Bytes of planes for a grid of `dims`: two of its largest plane (as a float: the grid may
+    /// be too large for a size).
+    pub fn bytes_for(dims: [f64; 3]) -> f64 {
         let largest = (dims[0] * dims[1])
             .max(dims[1] * dims[2])
             .max(dims[0] * dims[2]);
-        2 * largest * std::mem::size_of::<f32>()
+        2.0 * largest * std::mem::size_of::<f32>() as f64
     }
 
     pub fn bytes(&self) -> usize {
