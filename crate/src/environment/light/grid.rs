@@ -86,10 +86,8 @@ impl Extent {
 
     /// The voxel of `p`, moved into the grid when rounding put it just outside.
     pub fn voxel_clamped(&self, p: [f64; 3]) -> [usize; 3] {
-        [0, 1, 2].map(|a| {
-            let r = (p[a] * self.inv).floor() - self.lo[a];
-            r.clamp(0.0, (self.dims[a] - 1) as f64) as usize
-        })
+        // The cast saturates: below 0 (and NaN) to 0.
+        [0, 1, 2].map(|a| (((p[a] * self.inv).floor() - self.lo[a]) as usize).min(self.dims[a] - 1))
     }
 }
 
