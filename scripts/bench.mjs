@@ -1,13 +1,14 @@
-// `npm run bench`: speed of the WebAssembly core in Node. Two tables: derivation on the workloads
-// of issue 3, and the whole pipeline and the mesh stage on those of issue 4, with issue 8's drag
-// frame (one branch handle moved, the changed vertices copied out to JavaScript). Writes
+// `npm run bench`: speed of the WebAssembly core in Node. Three tables: derivation on the workloads
+// of issue 3; the whole pipeline and the mesh stage on those of issue 4, with issue 8's drag
+// frame (one branch handle moved, the changed vertices copied out to JavaScript); and the
+// environment's programs of issue 47. Writes
 // test-results/bench.json (medians). The same workloads are benchmarked natively by criterion
 // (crate/benches/derive.rs, crate/benches/pipeline.rs); all read their grammars from the gallery
 // but the stepping rows of issue 45 (a `dt` grammar written here).
 import { readFileSync, mkdirSync, writeFileSync } from 'node:fs';
 import { performance } from 'node:perf_hooks';
 import os from 'node:os';
-import { initSync, Grammar, build, buildOn } from '../crate/pkg/meristem.js';
+import { initSync, Grammar, build, buildOn, LightBench } from '../crate/pkg/meristem.js';
 
 initSync({ module: readFileSync(new URL('../crate/pkg/meristem_bg.wasm', import.meta.url)) });
 
@@ -155,9 +156,30 @@ A(t) -> F(0.05 + t)
   kept.free();
 }
 console.table(pipelineRows);
-const failures = pipelineRows.filter((r) => r.median_ms > r.target_ms);
+
+// Issue 47: the environment. One light step (crate/src/environment/light/): the grid rebuilt from
+// 100,000 segments (branches of 100 end to end, as a turtle draws them) in 128³ voxels, the sky's
+// shadow and the sun's beam propagated, and 1,000 probes answered. Target 50 ms.
+const environmentRows = [];
+{
+  const light = new LightBench(100_000, 1_000, 128, 1);
+  light.update();
+  const dims = [...light.dims()].join(' × ');
+  const cpu = [];
+  const { ms, runs } = time(() => {
+    const before = process.cpuUsage();
+    light.update();
+    light.answer();
+    const used = process.cpuUsage(before);
+    cpu.push((used.user + used.system) / 1000);
+  });
+  environmentRows.push({ workload: `light step: 100,000 segments, ${dims} voxels, 1,000 probes (update + answer)`, MB: +(light.bytes() / 1e6).toFixed(1), median_ms: +ms.toFixed(2), cpu_ms: +median(cpu).toFixed(2), runs, target_ms: 50 });
+  light.free();
+}
+console.table(environmentRows);
+const failures = [...pipelineRows, ...environmentRows].filter((r) => r.median_ms > r.target_ms);
 const machine = `${os.cpus()[0]?.model ?? 'unknown CPU'}, ${os.cpus().length} cores, Node ${process.version}`;
 mkdirSync(new URL('../test-results/', import.meta.url), { recursive: true });
-writeFileSync(new URL('../test-results/bench.json', import.meta.url), JSON.stringify({ machine, date: new Date().toISOString(), rows, pipeline: pipelineRows }, null, 2));
+writeFileSync(new URL('../test-results/bench.json', import.meta.url), JSON.stringify({ machine, date: new Date().toISOString(), rows, pipeline: pipelineRows, environment: environmentRows }, null, 2));
 console.log(`machine: ${machine}\nwritten: test-results/bench.json`);
 for (const r of failures) console.log(`over target: ${r.workload}: ${r.median_ms} ms > ${r.target_ms} ms`);

@@ -14,7 +14,8 @@
 //! The files: `options` (the options objects: their one reader and their TypeScript interfaces,
 //! from one table), `build`, `build_on` (a build that continues a kept one's derivation), `mesh_arrays` (the typed-array getters of a build and an editor, one
 //! row per array), `inspector`, `editor`, `export`, `import`, `surface` (one declared surface for
-//! the surface editor), `bench` (the benchmarks' entry points) and `panic` (the crash path).
+//! the surface editor), `bench` and `light_bench` (the benchmarks' entry points) and `panic` (the
+//! crash path).
 #![deny(clippy::unwrap_used)]
 
 #[macro_use]
@@ -31,6 +32,8 @@ mod export;
 #[cfg(feature = "io")]
 mod import;
 mod inspector;
+#[cfg(all(feature = "studio-extras", feature = "environment"))]
+mod light_bench;
 mod options;
 mod panic;
 #[cfg(all(feature = "studio-extras", feature = "surfaces"))]
@@ -50,6 +53,8 @@ pub use import::{import_grammar, import_object};
 #[cfg(feature = "studio-extras")]
 pub use inspector::Explanation;
 pub use inspector::PlantInspector;
+#[cfg(all(feature = "studio-extras", feature = "environment"))]
+pub use light_bench::LightBench;
 pub use options::{BuildOptionsObject, SketchFirstObject, ViewOptionsObject, BUILD_TYPESCRIPT};
 #[cfg(feature = "io")]
 pub use options::{ExportOptionsObject, SvgLookObject, EXPORT_TYPESCRIPT};
