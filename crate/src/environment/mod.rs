@@ -80,3 +80,8 @@ pub trait Responder {
         None
     }
 }
+
+pub mod attractors;
+mod grid;
+mod settings;
+pub mod space;
