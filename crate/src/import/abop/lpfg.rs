@@ -159,6 +159,8 @@ impl Importer {
             "SetWidth" => format!("#({a})"),
             "SetColor" => format!(";({a})"),
             "Sphere" => format!("@O({a})"),
+            // lpfg's communication modules, with one or two parameters: cpfg's ?E.
+            "E1" | "E2" => format!("?E({a})"),
             "Surface3" if parts.len() == 4 => {
                 self.note_once(
                     "Surface3",

@@ -85,11 +85,7 @@ impl Importer {
     /// The notes for cpfg's `?E` and `_`, which are kept as modules the turtle ignores.
     pub(in crate::import::abop) fn cpfg_module_notes(&mut self, name: &str, n: usize) {
         if name == "?E" && self.flavour == Flavour::Cpfg {
-            self.note_once(
-                name,
-                n,
-                "cpfg's ?E(…) asks the environment program (a light or space model run beside cpfg) for values; Meristem runs no environment program, so ?E is kept as a module whose parameters stay as the L-system writes them, and productions that read it see those values",
-            );
+            self.note_once(name, n, self.communication_note());
         }
         if name == "_" && self.flavour == Flavour::Cpfg {
             self.note_once(
