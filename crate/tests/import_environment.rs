@@ -7,6 +7,7 @@
 mod shared;
 
 use meristem::import::{self, Import};
+use meristem::pipeline::{build, BuildOptions};
 use shared::object;
 use std::path::PathBuf;
 
@@ -97,10 +98,24 @@ fn honda81_keeps_e_inert_and_names_what_is_missing() {
             "{object}"
         );
     }
-    // lpfg's E1(x) is cpfg's ?E(x).
+    // lpfg's E1(x) is cpfg's ?E(x), `A()` is `A`, and the predecessor `f(l)E1(x)` is two
+    // productions with each other as context, as cpfg's `f?E(x)` is.
     let lpfg = imported("lpfg-01-ulam-collide");
-    assert!(lpfg.text.contains("?E(VIGOR)"), "{}", lpfg.text);
     assert!(notes_with(&lpfg, "lpfg's E1").is_empty());
+    for line in [
+        "axiom: !(WIDTH)[F(LENGTH)A][-(ANGLE)F(LENGTH)A][+(ANGLE)F(LENGTH)A][|F(LENGTH)A]\n",
+        "f(l) > ?E(x) : x == 1 -> F(l)A\n",
+        "f(l) < ?E(x) : x == 1 -> ε\n",
+        "A -> [-(ANGLE)f(LENGTH)?E(VIGOR)][+(ANGLE)f(LENGTH)?E(VIGOR)][f(LENGTH)?E(VIGOR)]\n",
+    ] {
+        assert!(lpfg.text.contains(line), "{line}{}", lpfg.text);
+    }
+    assert!(notes_with(&lpfg, "Meristem rejects").is_empty(), "{:?}", lpfg.notes);
+    // Without an answer, every tentacle keeps its ?E(VIGOR): the axiom's four apices become
+    // three tentacles each (decomposition), and stay.
+    let b = build(&lpfg.text, &BuildOptions::default());
+    assert!(b.ok(), "{:?}", b.diagnostics);
+    assert_eq!(b.plant.stats.segments, 4);
 }
 
 #[test]
