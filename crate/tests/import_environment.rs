@@ -110,7 +110,11 @@ fn honda81_keeps_e_inert_and_names_what_is_missing() {
     ] {
         assert!(lpfg.text.contains(line), "{line}{}", lpfg.text);
     }
-    assert!(notes_with(&lpfg, "Meristem rejects").is_empty(), "{:?}", lpfg.notes);
+    assert!(
+        notes_with(&lpfg, "Meristem rejects").is_empty(),
+        "{:?}",
+        lpfg.notes
+    );
     // Without an answer, every tentacle keeps its ?E(VIGOR): the axiom's four apices become
     // three tentacles each (decomposition), and stay.
     let b = build(&lpfg.text, &BuildOptions::default());

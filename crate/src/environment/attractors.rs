@@ -167,14 +167,18 @@ impl Responder for Attractors {
 
     fn update(&mut self, parts: &[Part], budget: usize) -> Result<(), Exceeded> {
         let held = self.bytes();
-        if held > budget {
+        let axes_bytes = parts.len() * std::mem::size_of::<[[f64; 3]; 2]>();
+        if held + axes_bytes > budget {
             return Err(Exceeded {
-                what: format!("{} attraction points", self.points.len()),
-                bytes: held,
+                what: format!(
+                    "{} attraction points and {} parts",
+                    self.points.len(),
+                    parts.len()
+                ),
+                bytes: held + axes_bytes,
             });
         }
         let axes: Vec<[[f64; 3]; 2]> = parts.iter().map(|p| [p.from, p.to]).collect();
-        let axes_bytes = std::mem::size_of_val(&axes[..]);
         let grid = SegmentGrid::build(
             &axes,
             self.kill,

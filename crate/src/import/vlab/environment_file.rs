@@ -7,9 +7,10 @@
 //! Read from vlab's own programs (`ENVIRO/*/doc.txt` and sources): `chiba` (Chiba et al.'s light
 //! through leaf balls: replies the light, then the brightest direction) and `shadowpyramid`
 //! (Palubicki et al. 2009's shadow propagation: the light, then its gradient) are light models
-//! and reply in the order Meristem's `light` does (exposure, dx, dy, dz); `honda81` and
-//! `ecosystem` (1 when no other `?E` of higher vigor is within a radius, else 0) have no
-//! counterpart: `space` counts the parts around a point, it does not answer yes or no.
+//! and reply in the order Meristem's `light` does (exposure, dx, dy, dz); `honda81` (1 when no
+//! other `?E` of at least its vigor is within a radius, else 0) and `ecosystem` (the same with
+//! circles as wide as each `?E`'s first parameter) have no counterpart: `space` counts the parts
+//! around a point, it does not answer yes or no.
 
 use super::Files;
 use crate::import::number;
@@ -113,7 +114,10 @@ pub(crate) fn read(e_name: &str, all: &Files) -> Option<Environment> {
     match program.as_str() {
         "chiba" => chiba(&spec, &mut env),
         "shadowpyramid" => shadow_pyramid(&spec, &mut env),
-        "honda81" | "ecosystem" => {
+        "ecosystem" => env.notes.push(format!(
+            "{e_name} runs ecosystem (Honda 1981's test with each ?E a circle as wide as its first parameter: 1 when it overlaps no larger one, else 0: self-thinning of a stand); Meristem has no program that answers yes or no for the ?E themselves, so ?E keeps the parameters the L-system writes (the nearest is `space`, which counts the plants' parts within a radius)"
+        )),
+        "honda81" => {
             let radius = spec.number("radius").unwrap_or(0.0);
             env.notes.push(format!(
                 "{e_name} runs {program} (Honda 1981: a ?E replies 1 when no other ?E of at least its vigor is within {} of it, else 0); Meristem has no program that answers yes or no for the ?E themselves, so ?E keeps the parameters the L-system writes (the nearest is `space radius {}`, which counts the plant's parts within the radius: a line for it is left as a comment)",
@@ -285,5 +289,20 @@ mod tests {
         assert!(env.notes[0].contains("soil.spec is not in the object"));
         assert!(env.notes[1].contains("program soil, which Meristem does not have"));
         assert!(read("none.e", &Files::new(&files)).is_none());
+    }
+
+    #[test]
+    fn ecosystem_is_honda_with_circles_and_stays_inert() {
+        let files = object(&[
+            ("tree.e", "executable: ecosystem -e tree.e density.spec\n"),
+            (
+                "density.spec",
+                "grid size: 100 100 100\n3D case: one\nvigor: off\n",
+            ),
+        ]);
+        let env = read("tree.e", &Files::new(&files)).unwrap();
+        assert!(env.lines.is_empty());
+        assert_eq!(env.notes.len(), 1);
+        assert!(env.notes[0].contains("as wide as its first parameter"));
     }
 }
