@@ -11,11 +11,18 @@ use meristem::pipeline::{build, BuildOptions};
 use shared::object;
 use std::path::PathBuf;
 
+fn tests() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests")
+}
+
+/// The object `name`: its files here, with those the import corpus already holds (`12-two-trees`
+/// is there without its environment files).
 fn imported(name: &str) -> Import {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("tests/import-environment")
-        .join(name);
-    import::import_object(&object(&dir))
+    let mut files = object(&tests().join("import-environment").join(name));
+    if name == "cpfg-12-two-trees" {
+        files.extend(object(&tests().join("import-corpus/vlab/12-two-trees")));
+    }
+    import::import_object(&files)
 }
 
 /// The notes whose message contains `piece`.
@@ -134,8 +141,8 @@ fn a_program_meristem_lacks_is_named() {
 
 #[test]
 fn an_l_file_alone_says_the_e_file_was_not_opened() {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/import-environment");
-    let text = std::fs::read_to_string(dir.join("cpfg-12-two-trees/tree.l")).unwrap();
+    let text =
+        std::fs::read_to_string(tests().join("import-corpus/vlab/12-two-trees/tree.l")).unwrap();
     let i = import::import(&text, import::Dialect::Cpfg);
     assert_eq!(
         notes_with(&i, "the object's .e file, which names it, was not opened").len(),
