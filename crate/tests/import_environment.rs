@@ -150,3 +150,22 @@ fn an_l_file_alone_says_the_e_file_was_not_opened() {
     );
     assert!(!i.text.contains("#environment"));
 }
+
+#[test]
+fn obstacles_crossed_by_a_path_are_not_meristem_s_solids() {
+    // obstacles.dat: 14 lines of the Celtic knot's frame (x0 y0 x1 y1 each).
+    let i = imported("cpfg-CelticKnot");
+    let missing = notes_with(&i, "enviro.e runs obcheck: 14 line obstacles");
+    assert_eq!(missing.len(), 1, "{:?}", i.notes);
+    assert!(!i.text.lines().any(|l| l.contains("#environment")));
+    assert_eq!(
+        notes_with(
+            &i,
+            "environmental program obcheck, which Meristem does not have"
+        )
+        .len(),
+        1
+    );
+    let b = build(&i.text, &BuildOptions::default());
+    assert!(b.ok(), "{:?}", b.diagnostics);
+}

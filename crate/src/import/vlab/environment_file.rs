@@ -130,6 +130,15 @@ pub(crate) fn read(e_name: &str, all: &Files) -> Option<Environment> {
                 number(radius)
             ));
         }
+        "obcheck" => {
+            let text = spec_text.as_deref().unwrap_or("");
+            let lines = text
+                .split_once("coordinates:")
+                .map_or(0, |(_, c)| c.split_whitespace().filter(|w| w.parse::<f64>().is_ok()).count() / 4);
+            env.notes.push(format!(
+                "{e_name} runs obcheck: {lines} line obstacles in the plane, and a ?E(1) replies 1 when the turtle's path since the ?E before it crosses one, else 0; Meristem's obstacle is a solid (box, sphere, plane) that answers at one point whether it is free and how far its surface is, not whether a path crossed a line, so ?E keeps the parameters the L-system writes"
+            ));
+        }
         _ => env.notes.push(format!(
             "{e_name} runs the environmental program {program}, which Meristem does not have (it has light, obstacle, space and attractors): ?E keeps the parameters the L-system writes"
         )),
