@@ -10,7 +10,7 @@
 //! of the unit directions towards them, Runions et al.'s direction of growth ((0, 0, 0) when it
 //! takes none).
 
-use super::grid::{distance, nearest_on_segment, sub, unit, SegmentGrid};
+use super::grid::{distance, nearest_on_segment, sub, unit, Near, SegmentGrid};
 use super::settings::{point, positive, whole, BAD_SETTING};
 use super::{Exceeded, Part, Probe, Responder};
 use crate::derive::Generator;
@@ -135,14 +135,14 @@ impl Attractors {
         let at: Vec<[[f64; 3]; 2]> = probes.iter().map(|p| [p.position; 2]).collect();
         let grid = SegmentGrid::of_points(&at, self.influence);
         let mut taken = vec![[0.0; 4]; probes.len()];
-        let mut near = Vec::new();
+        let mut near = Near::default();
         for &p in &self.points {
             grid.near(p, &mut near);
             let mut best: Option<(f64, usize)> = None;
-            for &i in &near {
-                let d = distance(p, at[i as usize][0]);
-                if d <= self.influence && best.is_none_or(|(b, _)| d < b) {
-                    best = Some((d, i as usize));
+            for &i in &near.found {
+                let (d, i) = (distance(p, at[i as usize][0]), i as usize);
+                if d <= self.influence && best.is_none_or(|(b, j)| d < b || (d == b && i < j)) {
+                    best = Some((d, i));
                 }
             }
             if let Some((_, i)) = best {
@@ -185,11 +185,11 @@ impl Responder for Attractors {
             budget.saturating_sub(held + axes_bytes),
             "a grid for the attraction points' kill distance",
         )?;
-        let mut near = Vec::new();
+        let mut near = Near::default();
         let kill = self.kill;
         self.points.retain(|&p| {
             grid.near(p, &mut near);
-            !near.iter().any(|&i| {
+            !near.found.iter().any(|&i| {
                 let [a, b] = axes[i as usize];
                 distance(nearest_on_segment(p, a, b), p) <= kill
             })

@@ -10,7 +10,7 @@
 //! starts there, within 1e-9 of the scene's size) is the segment the bud grows from, the one it
 //! continues or a branch of the same node, and is not counted.
 
-use super::grid::{distance, nearest_on_segment, sub, unit, SegmentGrid};
+use super::grid::{distance, nearest_on_segment, sub, unit, Near, SegmentGrid};
 use super::settings::positive;
 use super::{Exceeded, Part, Probe, Responder};
 use crate::diagnostics::Diagnostic;
@@ -42,11 +42,11 @@ impl Space {
     }
 
     /// The neighbours' count and the direction away from them, for a point at `p`.
-    fn crowding(&self, p: [f64; 3], near: &mut Vec<u32>) -> [f64; 4] {
+    fn crowding(&self, p: [f64; 3], near: &mut Near) -> [f64; 4] {
         self.grid.near(p, near);
         let mut count = 0.0;
         let mut away = [0.0; 3];
-        for &index in near.iter() {
+        for &index in &near.found {
             let [from, to] = self.axes[index as usize];
             if distance(from, p) <= self.touching || distance(to, p) <= self.touching {
                 continue;
@@ -97,7 +97,7 @@ impl Responder for Space {
     }
 
     fn answer(&mut self, probes: &[Probe<'_>], replies: &mut [f64], stride: usize, offset: usize) {
-        let mut near = Vec::new();
+        let mut near = Near::default();
         for (i, probe) in probes.iter().enumerate() {
             let reply = self.crowding(probe.position, &mut near);
             if let Some(slot) = replies.get_mut(i * stride + offset..i * stride + offset + 4) {
