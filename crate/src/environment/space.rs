@@ -163,6 +163,7 @@ mod tests {
         let parts = [
             segment([0.0, 0.0, 0.0], [0.0, 1.0, 0.0], 0), // the bud's own segment
             segment([0.0, 1.0, 0.0], [0.0, 1.0, 0.0], 0), // a leaf at the bud: touching too
+            segment([0.0, 1.0, 0.0], [0.0, 1.5, 0.3], 0), // the axis going on from the bud
             segment([0.5, 0.0, 0.0], [0.5, 2.0, 0.0], 0), // 0.5 to the right (+x)
             segment([0.0, 1.0, 0.8], [3.0, 1.0, 0.8], 0), // 0.8 in front (+z)
             segment([-1.5, 1.0, 0.0], [-1.5, 3.0, 0.0], 0), // 1.5 to the left: too far
