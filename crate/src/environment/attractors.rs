@@ -1,5 +1,6 @@
 //! `attractors`: space colonisation (Runions, Lane and Prusinkiewicz 2007, "Modeling trees with
-//! a space colonization algorithm"; docs/LANGUAGE.md, "Environment").
+//! a space colonization algorithm"; docs/LANGUAGE.md, "Crowding and space
+//! colonisation").
 //!
 //! `count` attraction points fill a box or a ball, placed uniformly at random by the program's
 //! own generator (seeded by `seed`, else the grammar's seed): the same seed gives the same

@@ -1,4 +1,4 @@
-//! `space`: how crowded space is around each `?E` (docs/LANGUAGE.md, "Environment"), for
+//! `space`: how crowded space is around each `?E` (docs/LANGUAGE.md, "Crowding and space colonisation"), for
 //! competition within a plant and between the plants of a stand.
 //!
 //! Every part of every plant is a capsule: a segment counts as a neighbour of a point when the
