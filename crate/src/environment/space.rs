@@ -1,5 +1,5 @@
-//! `space`: how crowded space is around each `?E` (docs/LANGUAGE.md, "Crowding and space colonisation"), for
-//! competition within a plant and between the plants of a stand.
+//! `space`: how crowded space is around each `?E`, for competition within a plant and between
+//! the plants of a stand (docs/LANGUAGE.md, "Crowding and space colonisation").
 //!
 //! Every part of every plant is a capsule: a segment counts as a neighbour of a point when the
 //! nearest point of its axis is within `radius`, an organ when its centre is. The reply is the
