@@ -1,9 +1,13 @@
 //! The factory of programs: a resolved `#environment` line ([`ProgramSpec`]) becomes the
-//! [`Responder`] that runs it. One arm a program; a program this build does not have yet gives
-//! `None`, and the cycle says so with a diagnostic.
+//! [`Responder`] that runs it, one arm a program; a setting a program cannot use is a diagnostic
+//! at the setting.
 
+use super::attractors::Attractors;
+use super::light::Light;
 use super::obstacle::{Obstacle, Solid};
+use super::space::Space;
 use super::Responder;
+use crate::diagnostics::Diagnostic;
 use crate::model::ProgramSpec;
 use crate::vocabulary::EnvironmentProgram;
 
@@ -16,17 +20,28 @@ pub struct ProgramDefaults {
     pub seed: u64,
 }
 
-/// The responder of `spec`, or `None` when this build has no such program.
-pub fn responder(spec: &ProgramSpec, defaults: &ProgramDefaults) -> Option<Box<dyn Responder>> {
-    let _ = defaults;
-    match spec.program {
-        EnvironmentProgram::Obstacle => Some(Box::new(Obstacle {
-            solid: Solid::of(spec)?,
-        })),
-        // The light grid (`light.rs`) and the space programs (`space.rs`, `attractors.rs`) add
-        // their arms here.
-        EnvironmentProgram::Light | EnvironmentProgram::Space | EnvironmentProgram::Attractors => {
-            None
+/// The responder of `spec`, or the diagnostic of a setting it cannot use (at the setting).
+pub fn responder(
+    spec: &ProgramSpec,
+    defaults: &ProgramDefaults,
+) -> Result<Box<dyn Responder>, Diagnostic> {
+    Ok(match spec.program {
+        EnvironmentProgram::Obstacle => {
+            // The resolver has checked the shape's settings (E0231, E0232): a solid is always
+            // made; the message is for a model built by hand without them.
+            let solid = Solid::of(spec).ok_or_else(|| {
+                Diagnostic::error(
+                    "E0232",
+                    spec.span.clone(),
+                    "this obstacle has no whole shape",
+                )
+            })?;
+            Box::new(Obstacle { solid })
         }
-    }
+        EnvironmentProgram::Light => Box::new(Light::new(spec, defaults.step)?),
+        EnvironmentProgram::Space => Box::new(Space::new(spec, defaults.step)?),
+        EnvironmentProgram::Attractors => {
+            Box::new(Attractors::new(spec, defaults.step, defaults.seed)?)
+        }
+    })
 }

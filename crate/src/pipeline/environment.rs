@@ -36,7 +36,8 @@ struct Environment<'m> {
 }
 
 impl<'m> Environment<'m> {
-    /// The environment of `model`, derived with `seed`; `E0410` for a program this core lacks.
+    /// The environment of `model`, derived with `seed`; the diagnostic of a setting a program
+    /// cannot use.
     fn new(model: &'m Model, seed: u64) -> Result<Self, Diagnostic> {
         let defaults = ProgramDefaults {
             step: model.settings.step,
@@ -44,16 +45,7 @@ impl<'m> Environment<'m> {
         };
         let mut programs = Vec::new();
         for spec in &model.environment.programs {
-            let Some(program) = responder(spec, &defaults) else {
-                return Err(Diagnostic::error(
-                    "E0410",
-                    spec.span.clone(),
-                    format!(
-                        "the {} program is not part of this build of Meristem",
-                        spec.info().name
-                    ),
-                ));
-            };
+            let program = responder(spec, &defaults)?;
             programs.push((program, spec));
         }
         let places = match &model.environment.plants[..] {

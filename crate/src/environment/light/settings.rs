@@ -5,8 +5,7 @@
 use crate::diagnostics::Diagnostic;
 use crate::model::ProgramSpec;
 
-/// The code of a setting a program cannot use (docs/LANGUAGE.md, "Diagnostic codes").
-pub const BAD_SETTING: &str = "E0239";
+pub use crate::environment::settings::BAD_SETTING;
 
 /// The deepest a shadow may reach, in layers (the `depth` setting's most).
 pub const MOST_DEPTH: usize = 64;
