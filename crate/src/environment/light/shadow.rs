@@ -9,9 +9,10 @@
 //! (i + q + 1, k + q + 1)). Each corner moves one voxel diagonally outwards and fades by 1/b a
 //! layer down, so each of the four corner planes is the one above moved by one voxel, times
 //! 1/b, plus the layer's own parts, minus the parts `depth + 1` layers up (whose pyramids end).
-//! The layer's shadow is the running sum of the four planes together. Cost: about 20 passes over
-//! a plane a layer, O(voxels), and exact but for rounding (a relative 1e-6; with b a power of 2
-//! the fading and the ending cancel exactly). The grid's margin of `depth` voxels beside the
+//! The layer's shadow is the running sum of the four planes together. Cost: about ten passes
+//! over each row of x, O(voxels) whatever the depth, and exact but for rounding (a relative
+//! 1e-6; with b a power of 2 the fading and the ending cancel exactly; tested against the sum of
+//! the pyramids). The grid's margin of `depth` voxels beside the
 //! parts keeps every corner inside the grid until its pyramid ends.
 
 /// The shape of one part's shadow.

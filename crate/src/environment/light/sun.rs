@@ -4,9 +4,9 @@
 //! count of the point one plane towards the sun, read from the plane before by bilinear
 //! interpolation. That point is at most one voxel aside (the axis is the longest), so the beam
 //! samples every plane it crosses and misses no wall. The weights are the same for the whole
-//! plane: four shifted adds a plane, O(voxels). Interpolation blurs a shadow's edge by about a
-//! voxel per few planes (numerical diffusion); a voxel's count is exact along the grid's axes
-//! and diagonals.
+//! plane: four shifted adds a plane, row by row, O(voxels). Interpolation blurs a shadow's edge
+//! by about a voxel per few planes (numerical diffusion); a voxel's count is exact along the
+//! grid's axes and diagonals.
 //!
 //! Beer–Lambert: one part stops `absorb` of the beam, so n parts let through (1 − absorb)^n;
 //! the count is kept and turned into light only where a probe or the studio reads it.
