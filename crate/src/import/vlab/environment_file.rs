@@ -14,7 +14,7 @@
 
 use super::Files;
 use crate::import::number;
-use crate::vocabulary::EnvironmentProgram;
+use crate::vocabulary::{DirectiveKind, EnvironmentProgram};
 
 /// What the object's environment gives the import.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -125,7 +125,8 @@ pub(crate) fn read(e_name: &str, all: &Files) -> Option<Environment> {
                 number(radius)
             ));
             env.lines.push(format!(
-                "// #environment {} radius {}",
+                "// {} {} radius {}",
+                DirectiveKind::Environment.written(),
                 EnvironmentProgram::Space.info().name,
                 number(radius)
             ));
@@ -148,7 +149,11 @@ pub(crate) fn read(e_name: &str, all: &Files) -> Option<Environment> {
 
 /// The line `#environment light` with `settings` (word, numbers).
 fn light_line(settings: &[(&str, Vec<f64>)]) -> String {
-    let mut line = format!("#environment {}", EnvironmentProgram::Light.info().name);
+    let mut line = format!(
+        "{} {}",
+        DirectiveKind::Environment.written(),
+        EnvironmentProgram::Light.info().name
+    );
     for (word, values) in settings {
         line.push(' ');
         line.push_str(word);
