@@ -11,6 +11,7 @@
 //! Plain data in ([`Part`], [`Probe`]), plain data out (replies, a [`Field`] for the studio's
 //! views). Deterministic: a program that draws random numbers takes its seed from its settings.
 
+pub mod light;
 pub mod obstacle;
 pub mod programs;
 
