@@ -86,3 +86,8 @@ pub trait Responder {
         None
     }
 }
+
+pub mod attractors;
+mod grid;
+mod settings;
+pub mod space;

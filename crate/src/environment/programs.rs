@@ -18,15 +18,20 @@ pub struct ProgramDefaults {
 
 /// The responder of `spec`, or `None` when this build has no such program.
 pub fn responder(spec: &ProgramSpec, defaults: &ProgramDefaults) -> Option<Box<dyn Responder>> {
-    let _ = defaults;
     match spec.program {
         EnvironmentProgram::Obstacle => Some(Box::new(Obstacle {
             solid: Solid::of(spec)?,
         })),
-        // The light grid (`light.rs`) and the space programs (`space.rs`, `attractors.rs`) add
-        // their arms here.
-        EnvironmentProgram::Light | EnvironmentProgram::Space | EnvironmentProgram::Attractors => {
-            None
-        }
+        // Provisional (the studio's base branch): settings' diagnostics are lost here until the
+        // factory returns them.
+        EnvironmentProgram::Light => Some(Box::new(
+            super::light::Light::new(spec, defaults.step).ok()?,
+        )),
+        EnvironmentProgram::Space => Some(Box::new(
+            super::space::Space::new(spec, defaults.step).ok()?,
+        )),
+        EnvironmentProgram::Attractors => Some(Box::new(
+            super::attractors::Attractors::new(spec, defaults.step, defaults.seed).ok()?,
+        )),
     }
 }

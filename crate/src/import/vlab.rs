@@ -5,6 +5,7 @@
 //! object's `specifications` (the `cpfg …` or `lpfg …` command line), else guessed from the names.
 //! An object without a `.l` but with an L-Py `.lpy` is imported as L-Py.
 
+mod environment_file;
 mod lpfg_functions;
 mod surface_file;
 
@@ -47,6 +48,8 @@ pub(super) struct View {
     pub surfaces: Vec<String>,
     /// The letters those lines declare (`~X` draws them).
     pub surface_letters: Vec<String>,
+    /// The object's environmental program (its `.e` file), translated or named as missing.
+    pub environment: Option<environment_file::Environment>,
     /// Notes about the view and colour files (line 0).
     pub notes: Vec<String>,
     /// The file names, for the header.
@@ -136,6 +139,8 @@ struct Command {
     view: Option<String>,
     colormap: Option<String>,
     materials: Option<String>,
+    /// The communication file of the environmental program (`-e file.e`; lpfg: a `.e` named).
+    environment: Option<String>,
     /// The function set (`.fset`), timeline functions (`.tset`), values (`.vset`) and function
     /// files (`.func`) lpfg is started with (of each set the last one named, as lpfg keeps).
     lpfg: lpfg_functions::LpfgFiles,
@@ -163,12 +168,17 @@ fn command(specifications: &str) -> Option<Command> {
                 i += 1;
             }
             "-w" | "-wp" | "-wr" => i += 2,
-            "-e" | "-m2" | "-m3" | "-M2" | "-M3" | "-a" | "-s" | "-str" | "-o" | "-g" => i += 1,
+            "-e" => {
+                c.environment = next;
+                i += 1;
+            }
+            "-m2" | "-m3" | "-M2" | "-M3" | "-a" | "-s" | "-str" | "-o" | "-g" => i += 1,
             w if w.ends_with(".l") => c.lsystem = Some(w.to_string()),
             w if w.ends_with(".v") => c.view = Some(w.to_string()),
             // lpfg names its files without options.
             w if lpfg && w.ends_with(".mat") => c.materials = Some(w.to_string()),
             w if lpfg && w.ends_with(".map") => c.colormap = Some(w.to_string()),
+            w if lpfg && w.ends_with(".e") => c.environment = Some(w.to_string()),
             w if lpfg => c.lpfg.name(w),
             _ => {}
         }
@@ -283,6 +293,16 @@ pub fn import_object(files: &[ObjectFile]) -> Import {
         .unwrap_or_default();
     lpfg_functions::read(&all, &spec.lpfg, &view_text, &mut view);
     colours(&all, &spec, &stem, &mut view);
+    let communication = spec.environment.clone().or_else(|| {
+        let es = all.with(".e");
+        (es.len() == 1).then(|| es[0].to_string())
+    });
+    if let Some(e) = communication {
+        view.environment = environment_file::read(&e, &all);
+        if view.environment.is_some() {
+            view.sources.push(e);
+        }
+    }
     let include = |name: &str| all.text(name);
     abop::import_with(&text, Flavour::Cpfg, Some(&view), &include)
 }

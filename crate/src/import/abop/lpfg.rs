@@ -61,25 +61,36 @@ impl Importer {
             self.note(n, format!("{why}; the production is skipped"));
             return;
         }
-        let pattern = match self.pattern(pattern, n) {
+        let pattern = match self
+            .lpfg_symbols(pattern, n)
+            .and_then(|p| self.pattern(&p, n))
+        {
             Ok(p) => p,
             Err(why) => {
                 self.note(n, format!("{why}; the production is skipped"));
                 return;
             }
         };
+        // A predecessor of several modules (`f(l)E1(x)`): one production a module, the others
+        // its context, as for cpfg; the first produces, the others erase their module.
+        let heads: Vec<String> = match self.several_modules(&pattern, "", n) {
+            Some(parts) => parts.into_iter().map(|(head, _)| head).collect(),
+            None => vec![pattern],
+        };
         for (condition, successor) in produced {
-            let mut text = pattern.clone();
-            if let Some(c) = condition {
-                text.push_str(&format!(" : {c}"));
+            for (i, head) in heads.iter().enumerate() {
+                let mut text = head.clone();
+                if let Some(c) = &condition {
+                    text.push_str(&format!(" : {c}"));
+                }
+                text.push_str(" -> ");
+                text.push_str(if successor.is_empty() || i > 0 {
+                    "ε"
+                } else {
+                    &successor
+                });
+                self.out.line(text, n);
             }
-            text.push_str(" -> ");
-            text.push_str(if successor.is_empty() {
-                "ε"
-            } else {
-                &successor
-            });
-            self.out.line(text, n);
         }
     }
 
@@ -131,7 +142,8 @@ impl Importer {
             i = after;
             if word.len() == 1 || self.cpfg.words.iter().any(|(w, _)| *w == word) {
                 out.push_str(&word);
-                if let Some(a) = &args {
+                // lpfg writes a module without parameters as `A()`; Meristem as `A`.
+                if let Some(a) = args.as_ref().filter(|a| !a.trim().is_empty()) {
                     out.push_str(&format!("({a})"));
                 }
                 continue;
@@ -159,6 +171,8 @@ impl Importer {
             "SetWidth" => format!("#({a})"),
             "SetColor" => format!(";({a})"),
             "Sphere" => format!("@O({a})"),
+            // lpfg's communication modules, with one or two parameters: cpfg's ?E.
+            "E1" | "E2" => format!("?E({a})"),
             "Surface3" if parts.len() == 4 => {
                 self.note_once(
                     "Surface3",

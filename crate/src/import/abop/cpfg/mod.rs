@@ -87,11 +87,7 @@ impl Importer {
         use crate::vocabulary::{name_of, Command, Meaning};
         let communication = name_of(Meaning::Turtle(Command::QueryEnvironment));
         if name == communication && self.flavour == Flavour::Cpfg {
-            self.note_once(
-                name,
-                n,
-                "cpfg's ?E(…) asks the environment program (a light or space model run beside cpfg) for values; Meristem runs no environment program, so ?E is kept as a module whose parameters stay as the L-system writes them, and productions that read it see those values",
-            );
+            self.note_once(name, n, self.communication_note());
         }
         if name == "_" && self.flavour == Flavour::Cpfg {
             self.note_once(
