@@ -233,6 +233,17 @@ impl PlantBuild {
             .is_some_and(|m| m.settings.surfaces_declared)
     }
 
+    /// True when the grammar declares an environment (`#environment`, `#stand`, `#plant`), which
+    /// only the studio core (crate/pkg, the feature `environment`) runs: the build worker builds
+    /// such a grammar with it, as it does one that declares surfaces.
+    #[wasm_bindgen(getter, js_name = declaresEnvironment)]
+    pub fn declares_environment(&self) -> bool {
+        self.build
+            .model
+            .as_ref()
+            .is_some_and(|m| m.settings.environment_declared)
+    }
+
     /// True when the grammar is stepwise ([`crate::model::Settings::stepwise`]: a `#dt` without
     /// timed modules): its plant at a growth time t is derived to step ⌊t⌋, not grown from the
     /// whole plant's mesh. In the studio core only (the timeline builds with it).

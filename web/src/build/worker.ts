@@ -190,9 +190,10 @@ addEventListener('message', async (event: MessageEvent<WorkerRequest | CoreMessa
         forGpu: true, // the normals and colours packed for the GPU, not as floats
       });
     let plant = await made();
-    if ((plant.build.timed || plant.build.declaresSurfaces) && !studioCoreInUse()) {
-      // The first plant's core has no clock for timed modules (ABOP 6.1) and draws no declared
-      // surfaces (#surface, #patch: no room in its first load): the studio core builds them.
+    if ((plant.build.timed || plant.build.declaresSurfaces || plant.build.declaresEnvironment) && !studioCoreInUse()) {
+      // The first plant's core has no clock for timed modules (ABOP 6.1), draws no declared
+      // surfaces (#surface, #patch) and runs no environment (#environment, #stand: no room in its
+      // first load): the studio core builds them.
       plant.inspector.free();
       await loadStudioCore();
       plant = await made();

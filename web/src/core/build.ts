@@ -273,6 +273,7 @@ export function plainBuild(source: string, result: WasmPlantBuild, { forGpu = fa
     seed: result.seed,
     timed: result.timed,
     declaresSurfaces: result.declaresSurfaces,
+    declaresEnvironment: result.declaresEnvironment,
     // (A getter of the studio core's builds only.)
     stepwise: 'stepwise' in result && result.stepwise === true,
     ...(result.continuedFrom === undefined ? {} : { continuedFrom: result.continuedFrom }),

@@ -166,6 +166,11 @@ export interface PlantBuild {
    */
   declaresSurfaces: boolean;
   /**
+   * The grammar declares an environment (`#environment`, `#stand`, `#plant`), which only the studio
+   * core runs: the build worker builds it with that core (the first plant's resolves it without).
+   */
+  declaresEnvironment: boolean;
+  /**
    * The grammar is stepwise: a `#dt` without timed modules (L-Py's and cpfg's continuous growth,
    * whose modules change with their age at every step). Its plant at growth time t is its
    * derivation's at step ⌊t⌋, not grown on the GPU from the whole plant's (which would show every

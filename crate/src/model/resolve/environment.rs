@@ -246,27 +246,7 @@ impl Resolver {
             self.directive_error("E0233", at, message);
             return None;
         };
-        let mut counts = Vec::new();
-        for (k, name) in layout.counts.iter().enumerate() {
-            let Some(w) = words.get(k + 1) else {
-                self.directive_error(
-                    "E0233",
-                    d,
-                    format!("{} {} needs {name}; {}", d.written, layout.name, usage()),
-                );
-                return None;
-            };
-            let n = self.whole(w, MAX_STAND_PLANTS as u64 + 1)?;
-            if n == 0 {
-                self.directive_error(
-                    "E0233",
-                    w,
-                    format!("{} {} needs at least one plant", d.written, layout.name),
-                );
-                return None;
-            }
-            counts.push(n as usize);
-        }
+        let counts = self.stand_counts(d, &words, layout)?;
         let rest = &words[1 + layout.counts.len()..];
         let settings = self.settings(d, rest, layout.settings, layout.name)?;
         if let Some(name) = layout
@@ -316,6 +296,38 @@ impl Resolver {
                 Some(placed)
             }
         }
+    }
+
+    /// The whole numbers after a `#stand`'s layout word (`N`, or `NX NZ`), each at least 1.
+    fn stand_counts(
+        &mut self,
+        d: &Directive,
+        words: &[Directive],
+        layout: &StandLayoutInfo,
+    ) -> Option<Vec<usize>> {
+        let usage = || format!("{} needs {}", d.written, DirectiveKind::Stand.info().usage);
+        let mut counts = Vec::new();
+        for (k, name) in layout.counts.iter().enumerate() {
+            let Some(w) = words.get(k + 1) else {
+                self.directive_error(
+                    "E0233",
+                    d,
+                    format!("{} {} needs {name}; {}", d.written, layout.name, usage()),
+                );
+                return None;
+            };
+            let n = self.whole(w, MAX_STAND_PLANTS as u64 + 1)?;
+            if n == 0 {
+                self.directive_error(
+                    "E0233",
+                    w,
+                    format!("{} {} needs at least one plant", d.written, layout.name),
+                );
+                return None;
+            }
+            counts.push(n as usize);
+        }
+        Some(counts)
     }
 
     /// `E0235`: a random stand whose plants do not fit `spacing` apart.

@@ -32,10 +32,6 @@ pub fn resolve(file: &SourceFile) -> (Option<Model>, Vec<Diagnostic>) {
     let mut values = r.directives(file);
     r.surface_settings(file, &mut values.settings);
     let environment = r.environment_settings(file, &mut values.settings);
-    if !environment.plants.is_empty() {
-        // The module that places each plant of the stand in the string the views read.
-        r.alphabet.intern(name_of(Meaning::Turtle(Command::MoveTo)));
-    }
     let random_variables = r.random_variables(&randoms);
 
     let Some((axiom_syntax, axiom_span)) = &file.axiom else {
@@ -223,7 +219,13 @@ impl Resolver {
             .any(|d| matches!(d.kind, Some(Environment | Stand | Plant)));
         #[cfg(feature = "environment")]
         if settings.environment_declared {
-            return self.environment(file, settings.seed);
+            let environment = self.environment(file, settings.seed);
+            if !environment.plants.is_empty() {
+                // The module that places each plant of a stand in the string the views read.
+                self.alphabet
+                    .intern(name_of(Meaning::Turtle(Command::MoveTo)));
+            }
+            return environment;
         }
         super::EnvironmentSpec::default()
     }
