@@ -68,6 +68,10 @@ pub struct Build {
     /// the order of the derived string, which holds each plant inside `[ @M(x, y, z) … ]`; empty
     /// for a single plant.
     pub plant_offsets: Vec<[f64; 3]>,
+    /// What the views draw of the environment after the last step (the light grid, obstacles,
+    /// attraction points); `None` for a grammar that declares none or was not derived with it.
+    #[cfg(feature = "environment")]
+    pub environment: Option<super::EnvironmentView>,
 }
 
 /// [`crate::turtle::MAX_COORDINATE`] as `{:e}` writes it, for the clamping warning: a constant
