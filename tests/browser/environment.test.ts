@@ -135,6 +135,19 @@ describe('the environment in the view', () => {
     expect(problems).toEqual([]);
   });
 
+  it("shows each step's ?E in the derivation view as the environment answered it", async () => {
+    // docs/LANGUAGE.md's shoot: its apex rises 1 a step towards a box whose floor is at y = 2.5.
+    const shoot = ['#environment obstacle box min -1 2.5 -1 max 1 10 1', '#iterations 4', 'axiom: A ?E(1, 0)', 'A > ?E(f, d) : f == 1 -> F A', 'A > ?E(f, d) : f == 0 -> B', ''].join('\n');
+    expect(await pasteText(page, shoot)).toBe('ok');
+    await page.getByTestId('tab-derivation').click();
+    const rows = page.getByTestId('derivation').locator('.dv-row');
+    await expect.poll(() => rows.count()).toBe(5); // steps 0 to 4
+    const texts = await rows.allTextContents();
+    ['?E(1,2.5)', '?E(1,1.5)', '?E(1,0.5)', '?E(0,-0.5)', '?E(0,-0.5)'].forEach((reply, step) => expect(texts[step], `step ${step}`).toContain(reply));
+    await page.getByTestId('tab-string').click();
+    expect(problems).toEqual([]);
+  });
+
   it('hides the tools for a grammar without an environment', async () => {
     expect(await pasteText(page, '#iterations 3\naxiom: F\nF -> F[+F]F[-F]F\n')).toBe('ok');
     await expect.poll(() => page.getByTestId('environment').isVisible()).toBe(false);

@@ -59,4 +59,17 @@ describe("a build's environment through the facade", () => {
     expect(built('axiom: F').environment).toBeUndefined();
     expect(buildPlant(LIT).environment).toBeUndefined();
   });
+
+  it("the derivation view's sequence shows each step's ?E as the environment answered it", async () => {
+    // The shoot of docs/LANGUAGE.md's example: its apex rises 1 a step towards a box whose floor is
+    // at y = 2.5; after step k it stands at y = k, so the box is 2.5 - k away, and inside after 3.
+    const source = ['#environment obstacle box min -1 2.5 -1 max 1 10 1', '#iterations 4', 'axiom: A ?E(1, 0)', 'A > ?E(f, d) : f == 1 -> F A', 'A > ?E(f, d) : f == 0 -> B'].join('\n');
+    const { inspector } = inspectPlant(source);
+    try {
+      const steps = await inspector.sequence(1000);
+      expect(steps!.map((step) => step.texts.at(-1))).toEqual(['?E(1,2.5)', '?E(1,1.5)', '?E(1,0.5)', '?E(0,-0.5)', '?E(0,-0.5)']);
+    } finally {
+      inspector.free();
+    }
+  });
 });
