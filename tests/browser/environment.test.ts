@@ -5,13 +5,14 @@
 // changes the picture; a picked segment shows its `?E`'s reply in words; a grammar without an
 // environment hides the tools; a stand of 9 plants builds, shows all 9, and its glTF, downloaded
 // from the Download menu, is valid by the Khronos validator. Screenshots land in test-results/.
-import { readFileSync } from 'node:fs';
+import { readFileSync, writeFileSync } from 'node:fs';
+import { deflateRawSync } from 'node:zlib';
 import { validateBytes } from 'gltf-validator';
 import type { Download } from 'playwright-core';
-import { describe, expect, it } from 'vitest';
+import { describe, expect, inject, it } from 'vitest';
 import { foregroundExtent, type Picture } from './pictures';
-import { canvasPicture, pasteText, savePage, shownStats } from './studio-page';
-import { page, problems, useStudio } from './session';
+import { canvasPicture, pasteText, PHONE, RESULTS, savePage, shownStats } from './studio-page';
+import { browser, page, problems, useStudio } from './session';
 
 useStudio();
 
@@ -200,4 +201,35 @@ describe('a stand of 9 plants', () => {
     await page.getByTestId('grid').click();
     expect(problems).toEqual([]);
   }, 90_000);
+});
+
+describe('the Environment tools at other sizes', () => {
+  // A share link's fragment, compressed as the studio compresses (tests/browser/share.test.ts).
+  const link = () => `${inject('studioUrl')}#s=1.${Buffer.from(deflateRawSync(Buffer.from(JSON.stringify({ v: 1, text: LIT })))).toString('base64url')}`;
+  const sizes = {
+    'laptop at 200 %': { viewport: { width: 640, height: 400 }, deviceScaleFactor: 2 },
+    phone: PHONE,
+  };
+  for (const [name, options] of Object.entries(sizes)) {
+    it(`are on screen and draw the slice: ${name}`, async () => {
+      const context = await browser.newContext(options);
+      const small = await context.newPage();
+      const seen: string[] = [];
+      small.on('pageerror', (e) => seen.push(e.message));
+      await small.goto(link());
+      // The studio core builds it (the first plant's core leaves environments to it), then the tools come.
+      await small.waitForFunction(() => document.querySelector('[data-testid=viewport]')?.getAttribute('data-environment')?.startsWith('y:'), undefined, { timeout: 60_000 });
+      // In the View toolbar, which scrolls sideways on a narrow screen: reached as its other tools are.
+      const toggle = small.getByTestId('environment');
+      await toggle.scrollIntoViewIfNeeded();
+      const box = (await toggle.boundingBox())!;
+      expect(box.x).toBeGreaterThanOrEqual(0);
+      expect(box.x + box.width).toBeLessThanOrEqual(options.viewport.width);
+      writeFileSync(new URL(`environment-${name.replace(/\W+/g, '-')}.png`, RESULTS), await small.screenshot());
+      const picture = await canvasPicture(small, `environment-${name.replace(/\W+/g, '-')}-canvas.png`);
+      expect(count(picture, heatShade) + count(picture, heatLight), 'the slice').toBeGreaterThan(200);
+      expect(seen).toEqual([]);
+      await context.close();
+    }, 90_000);
+  }
 });
