@@ -22,26 +22,22 @@ export interface PickedQuery {
 export function branchQuery(texts: readonly string[], first: number, picked: number, names: { query: string; open: string; close: string }): PickedQuery | null {
   const isQuery = (text: string) => text === names.query || text.startsWith(`${names.query}(`);
   const found = (i: number): PickedQuery => ({ module: first + i, text: texts[i], values: valuesOf(texts[i]) });
+  // From `start` by `step`: a bracket `into` enters a nested branch, `outOf` leaves one (or, at
+  // the picked module's own depth, ends the search).
+  const scan = (start: number, step: 1 | -1, into: string, outOf: string): PickedQuery | null => {
+    let depth = 0;
+    for (let i = start; i >= 0 && i < texts.length; i += step) {
+      const text = texts[i];
+      if (text === into) depth++;
+      else if (text === outOf) {
+        if (depth === 0) return null;
+        depth--;
+      } else if (depth === 0 && isQuery(text)) return found(i);
+    }
+    return null;
+  };
   const at = picked - first;
-  let depth = 0;
-  for (let i = at + 1; i < texts.length; i++) {
-    const text = texts[i];
-    if (text === names.open) depth++;
-    else if (text === names.close) {
-      if (depth === 0) break;
-      depth--;
-    } else if (depth === 0 && isQuery(text)) return found(i);
-  }
-  depth = 0;
-  for (let i = at - 1; i >= 0; i--) {
-    const text = texts[i];
-    if (text === names.close) depth++;
-    else if (text === names.open) {
-      if (depth === 0) break;
-      depth--;
-    } else if (depth === 0 && isQuery(text)) return found(i);
-  }
-  return null;
+  return scan(at + 1, 1, names.open, names.close) ?? scan(at - 1, -1, names.close, names.open);
 }
 
 /** The numbers of a module's text `X(1, -2.5e-3)`. */
