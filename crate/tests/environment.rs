@@ -108,8 +108,8 @@ fn each_wrong_word_has_its_diagnostic_at_the_word() {
         );
     }
     // 400 plants at most, #stand and #plant together.
-    let many = format!("#stand grid 20 20 spacing 1\n#plant 0 0 0\naxiom: F");
-    assert_eq!(diagnostics(&many)[0].0, "E0235");
+    let many = "#stand grid 20 20 spacing 1\n#plant 0 0 0\naxiom: F";
+    assert_eq!(diagnostics(many)[0].0, "E0235");
 }
 
 #[test]
@@ -364,4 +364,93 @@ fn progress_is_told_every_step_of_the_cycle() {
     for step in 0..=3 {
         assert!(told.contains(&step), "{told:?}");
     }
+}
+
+#[test]
+fn the_derivation_view_shows_each_step_s_replies() {
+    let b = built(SHOOT, 4);
+    let model = b.model.as_ref().unwrap();
+    let steps = b.inspector().unwrap().sequence(10_000).unwrap().unwrap();
+    let texts: Vec<String> = steps
+        .iter()
+        .map(|s| s.string.to_text(&model.alphabet))
+        .collect();
+    // The axiom is answered too: its ?E stands at the origin, 2.5 below the box.
+    assert_eq!(
+        texts,
+        [
+            "A?E(1,2.5)",
+            "FA?E(1,1.5)",
+            "FFA?E(1,0.5)",
+            "FFFA?E(0,-0.5)",
+            "FFFB?E(0,-0.5)"
+        ]
+    );
+}
+
+/// A stand's provenance is each plant's, moved to where the plant sits: every module copied in
+/// the last step (written by no production) is the module its parent was, in the placed string
+/// before the step; the derivation view's steps place every plant too.
+#[test]
+fn a_stand_s_provenance_points_into_its_own_plant() {
+    let source = format!("#stand row 4 spacing 3\n{STOCHASTIC}\nhomomorphism:\nA -> F(0.5)");
+    let b = built(&source, 4);
+    let d = &b.derivation;
+    let (origin, parent) = (d.origin(), d.parent());
+    assert_eq!(origin.len(), d.string.len());
+    assert_eq!(parent.len(), d.string.len());
+    for i in 0..d.string.len() {
+        let p = parent[i] as usize;
+        assert!(p < d.previous.len());
+        if origin[i] == meristem::derive::NOT_REWRITTEN {
+            assert_eq!(d.previous.ids[p], d.string.ids[i], "module {i}");
+        }
+    }
+    // The homomorphism's string maps back into the placed string.
+    let shown = d.turtle_string();
+    assert_eq!(d.turtle_origin.len(), shown.len());
+    let model = b.model.as_ref().unwrap();
+    let a = model.alphabet.get("A").unwrap();
+    for (k, &i) in d.turtle_origin.iter().enumerate() {
+        let from = d.string.ids[i as usize];
+        assert!(from == shown.ids[k] || from == a, "module {k}");
+    }
+    let steps = b.inspector().unwrap().sequence(100_000).unwrap().unwrap();
+    assert_eq!(steps.len(), 5);
+    for step in &steps {
+        assert_eq!(
+            step.string.to_text(&model.alphabet).matches("[@M(").count(),
+            4
+        );
+    }
+    assert_eq!(steps[4].string, d.string);
+}
+
+#[test]
+fn a_stand_counts_its_plants_together_against_the_module_limit() {
+    // Each plant has 2^6 = 64 modules after 6 steps; the 9 together pass 500.
+    let source = "#max_modules 500\n#stand grid 3 3 spacing 1\naxiom: A\nA -> AA";
+    let options = BuildOptions {
+        iterations: Some(6),
+        ..BuildOptions::default()
+    };
+    let b = build(source, &options);
+    let error = b
+        .diagnostics
+        .iter()
+        .find(|d| d.code == "E0400")
+        .expect("E0400");
+    assert!(
+        error.message.contains("9 plants 576 modules"),
+        "{}",
+        error.message
+    );
+    assert!(build(
+        source,
+        &BuildOptions {
+            iterations: Some(5),
+            ..options
+        }
+    )
+    .ok());
 }

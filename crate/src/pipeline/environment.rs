@@ -314,6 +314,7 @@ fn lockstep<'m>(
         for plant in &mut plants {
             plant.step()?;
         }
+        check_stand_size(model, step, &plants)?;
         stepped(step);
         environment.answer(&mut plants)?;
         stepped(step);
@@ -331,6 +332,48 @@ fn lockstep<'m>(
         traces,
         view: EnvironmentView::of(&environment.programs),
     })
+}
+
+/// `E0400` / `E0401` when a stand's plants together pass `#max_modules` or the memory budget of
+/// one string at `step`: the views read them as one string.
+fn check_stand_size<R: rand::Rng>(
+    model: &Model,
+    step: u32,
+    plants: &[Stepper<'_, '_, R>],
+) -> Result<(), Diagnostic> {
+    if plants.len() < 2 {
+        return Ok(());
+    }
+    let len: usize = plants.iter().map(|p| p.string().len()).sum();
+    let bytes: usize = plants.iter().map(|p| p.string().bytes()).sum();
+    let max = model.settings.max_modules;
+    let span = || model.settings.iterations_span.clone().unwrap_or(0..0);
+    let n = plants.len();
+    if len > max {
+        return Err(Diagnostic::error(
+            "E0400",
+            span(),
+            format!(
+                "step {step} would make the stand's {n} plants {len} modules together, above the \
+                 limit of {max}; use fewer iterations or plants, or raise the limit with \
+                 '#max_modules N'"
+            ),
+        ));
+    }
+    if bytes > crate::derive::MAX_STRING_BYTES {
+        let mb = |b: usize| b.div_ceil(1 << 20);
+        return Err(Diagnostic::error(
+            "E0401",
+            span(),
+            format!(
+                "step {step} would make the stand's {n} plants take {} MB together, above the \
+                 memory budget of {} MB for one string; use fewer iterations or plants",
+                mb(bytes),
+                mb(crate::derive::MAX_STRING_BYTES)
+            ),
+        ));
+    }
+    Ok(())
 }
 
 /// Warnings about an environment that will not answer: programs declared and no `?E` written

@@ -25,6 +25,7 @@ pub(super) fn derive_stage(
     if super::environment::runs(model) {
         return super::environment::derive_stage(model, options, count, result, stepped);
     }
+    #[cfg(feature = "environment")]
     if let Some(warning) = unanswered(model) {
         result.diagnostics.push(warning);
     }
@@ -233,12 +234,12 @@ impl derive::Observer for StageObserver<'_, '_> {
 }
 
 /// `E0409` when the grammar writes `?E` and declares no program to answer it (its parameters
-/// stay as written), unless the grammar declares an environment that this core does not run (the
-/// studio builds it again with the core that does).
-pub(super) fn unanswered(model: &Model) -> Option<Diagnostic> {
+/// stay as written). Only the studio core says so: the first plant's has no room for it, and runs
+/// no environment anyway.
+#[cfg(feature = "environment")]
+fn unanswered(model: &Model) -> Option<Diagnostic> {
     let query = model.environment_query()?;
-    let elsewhere = model.settings.environment_declared && !cfg!(feature = "environment");
-    if elsewhere || !model.environment.programs.is_empty() {
+    if !model.environment.programs.is_empty() {
         return None;
     }
     let name = model.alphabet.name(query);
@@ -254,10 +255,8 @@ pub(super) fn unanswered(model: &Model) -> Option<Diagnostic> {
 }
 
 /// Where module `id` is first written, in the axiom or a successor.
-pub(super) fn first_written(
-    model: &Model,
-    id: crate::model::ModuleId,
-) -> Option<crate::syntax::Span> {
+#[cfg(feature = "environment")]
+fn first_written(model: &Model, id: crate::model::ModuleId) -> Option<crate::syntax::Span> {
     fn find(
         modules: &[crate::model::SuccessorModule],
         id: crate::model::ModuleId,

@@ -1,8 +1,7 @@
 //! The interpreter: reads the string module by module and draws.
 
 use super::skeleton::{
-    segment_within_bounds, EnvironmentQuery, Polygon, QueryValue, Segment, Skeleton, Sphere,
-    Surface, SurfaceKind,
+    segment_within_bounds, Polygon, QueryValue, Segment, Skeleton, Sphere, Surface, SurfaceKind,
 };
 use super::state::TurtleState;
 use crate::growth::{Adjustments, Heights, Third};
@@ -30,7 +29,8 @@ pub(super) trait Canvas {
     fn wants_queries(&self) -> bool;
     fn query(&mut self, query: QueryValue);
     /// A communication module `?E` (kept when [`Canvas::wants_queries`]).
-    fn environment_query(&mut self, query: EnvironmentQuery);
+    #[cfg(feature = "environment")]
+    fn environment_query(&mut self, query: super::skeleton::EnvironmentQuery);
     /// The grammar set a width (`!`).
     fn widths_set(&mut self);
     /// The string is read: the turtle ended at `end`; `widths` are growth's width factors by third
@@ -87,7 +87,8 @@ impl Canvas for Skeleton {
         self.queries.push(query);
     }
 
-    fn environment_query(&mut self, query: EnvironmentQuery) {
+    #[cfg(feature = "environment")]
+    fn environment_query(&mut self, query: super::skeleton::EnvironmentQuery) {
         self.environment_queries.push(query);
     }
 
@@ -320,7 +321,11 @@ impl<'a, C: Canvas> Interpreter<'a, C> {
             | Command::QueryHeading
             | Command::QueryUp
             | Command::QueryLeft => self.query(command, index),
+            // Only the environment reads where `?E` stands (the first plant's core runs none).
+            #[cfg(feature = "environment")]
             Command::QueryEnvironment => self.environment_query(index),
+            #[cfg(not(feature = "environment"))]
+            Command::QueryEnvironment => {}
         }
         false
     }
@@ -543,17 +548,19 @@ impl<'a, C: Canvas> Interpreter<'a, C> {
     }
 
     /// `?E`: where the turtle stands and how it is turned, for the environment.
+    #[cfg(feature = "environment")]
     fn environment_query(&mut self, index: u32) {
         if !self.canvas.wants_queries() {
             return;
         }
         let t = &self.turtle;
-        self.canvas.environment_query(EnvironmentQuery {
-            module: index,
-            position: t.position.to_array(),
-            heading: t.heading.to_array(),
-            up: t.up.to_array(),
-        });
+        self.canvas
+            .environment_query(super::skeleton::EnvironmentQuery {
+                module: index,
+                position: t.position.to_array(),
+                heading: t.heading.to_array(),
+                up: t.up.to_array(),
+            });
     }
 
     /// The extent for heights, growth's widths by third, and where the turtle ended.

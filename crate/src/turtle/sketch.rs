@@ -156,6 +156,7 @@ impl Canvas for Sketch {
 
     fn query(&mut self, _query: QueryValue) {}
 
+    #[cfg(feature = "environment")]
     fn environment_query(&mut self, _query: super::skeleton::EnvironmentQuery) {}
 
     fn widths_set(&mut self) {}

@@ -535,13 +535,13 @@ pub const DIRECTIVES: &[DirectiveInfo] = &[
         .usage("E0220", "(a letter, then 16 points x y z)").repeatable(),
     row("environment", D::Environment, "Environment program", ENVIRONMENT, G::Derivation,
         "An environmental program that answers the communication modules ?E between derivation steps: light, obstacle, space or attractors, its shape, and its settings.")
-        .usage("E0230", "(a program, a shape if it takes one, then setting words with their numbers)").repeatable(),
+        .usage("E0230", text("(a program, a shape if it takes one, then setting words with their numbers)")).repeatable(),
     row("stand", D::Stand, "Stand of plants", STAND, G::Derivation,
         "Plants the grammar N times sharing one environment, each with its own seed: in a row, a grid, or at random places.")
-        .usage("E0233", "(row N spacing D, grid NX NZ spacing D, or random N size W D [seed S] [spacing MIN])").repeatable(),
+        .usage("E0233", text("(row N spacing D, grid NX NZ spacing D, or random N size W D [seed S] [spacing MIN])")).repeatable(),
     row("plant", D::Plant, "Plant at", PLANT, G::Derivation,
         "One more plant of the stand, its base at x y z; several lines plant several.")
-        .usage("E0234", "(the base's x y z)").repeatable(),
+        .usage("E0234", text("(the base's x y z)")).repeatable(),
     row("max_modules", D::MaxModules, "Module limit", &[&[Param::whole("n", 0.0, U32_MAX, "modules at most").default(5_000_000.0)]], G::Limits,
         "Stop with an error when the string would grow past n modules (default 5,000,000)."),
     row("max_steps", D::MaxSteps, "Step limit", &[&[Param::whole("n", 0.0, U32_MAX, "steps at most").default(10_000.0)]], G::Limits,

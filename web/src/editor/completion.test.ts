@@ -33,7 +33,7 @@ describe('grammar completion', () => {
     expect(labels(complete('axiom: F@|'))).not.toContain('F');
     expect(labels(complete('A -> F~|'))).toEqual(['~l', '~p', '~X']);
     const queries = complete('A -> ?|');
-    expect(labels(queries)).toEqual(['?P', '?H', '?U', '?L']);
+    expect(labels(queries)).toEqual(['?P', '?H', '?U', '?L', '?E']);
     expect(queries?.options[0].detail).toBe('(x, y, z)');
   });
 
