@@ -11,7 +11,7 @@ import { validateBytes } from 'gltf-validator';
 import type { Download } from 'playwright-core';
 import { describe, expect, inject, it } from 'vitest';
 import { foregroundExtent, type Picture } from './pictures';
-import { canvasPicture, pasteText, PHONE, RESULTS, savePage, shownStats } from './studio-page';
+import { canvasPicture, findPixel, pasteText, PHONE, RESULTS, savePage, shownStats } from './studio-page';
 import { browser, page, problems, useStudio } from './session';
 
 useStudio();
@@ -127,12 +127,25 @@ describe('the environment in the view', () => {
     await page.getByTestId('string-panel').locator('.m[data-i="3"]').click();
     const reply = page.getByTestId('environment-reply');
     await expect.poll(() => reply.textContent()).toMatch(
-      /^ Its \?E\(0\.\d+, -?[\d.]+, -?[\d.]+, -?[\d.]+, 1, [\d.]+\): exposure 0\.\d+, towards \(-?[\d.]+, -?[\d.]+, -?[\d.]+\), free 1, distance [\d.]+\.$/,
+      /^ Its \?E\((0\.\d+|1), -?[\d.]+, -?[\d.]+, -?[\d.]+, 1, [\d.]+\): exposure (0\.\d+|1), towards \(-?[\d.]+, -?[\d.]+, -?[\d.]+\), free 1, distance [\d.]+\.$/,
     );
     expect(await reply.getAttribute('data-module')).toBe('4');
     // The trunk's first segment: no ?E on its own branch (its children's are theirs).
     await page.getByTestId('string-panel').locator('.m[data-i="0"]').click();
     await expect.poll(() => reply.textContent()).toBe(' No ?E on this branch.');
+    // In the 3D view: a click on a branch (the environment hidden, so that it lands on bark) picks
+    // its segment, and the summary says its ?E's reply too.
+    await page.getByTestId('environment').click();
+    await expect.poll(environmentState).toBe('off');
+    const summary = page.getByTestId('explain-summary');
+    const before = await summary.textContent();
+    const bark = (r: number, g: number, b: number) => r > 60 && r < 210 && r > g + 12 && g > b + 8;
+    const spot = await findPixel(page, bark);
+    expect(spot, 'a branch on screen').not.toBeNull();
+    await page.mouse.click(spot!.x, spot!.y);
+    await expect.poll(() => summary.textContent()).not.toBe(before);
+    await expect.poll(() => reply.textContent()).toMatch(/^ (Its \?E\(.*\): exposure .*, towards \(.*\), free 1, distance [\d.]+\.|No \?E on this branch\.)$/);
+    await page.getByTestId('environment').click();
     expect(problems).toEqual([]);
   });
 
