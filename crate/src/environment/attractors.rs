@@ -162,6 +162,10 @@ impl Attractors {
 }
 
 impl Responder for Attractors {
+    fn points(&self) -> &[[f64; 3]] {
+        &self.points
+    }
+
     fn reply_len(&self) -> usize {
         4
     }

@@ -85,6 +85,11 @@ pub trait Responder {
     fn field(&self) -> Option<Field> {
         None
     }
+
+    /// What the studio can draw of it as points (the attraction points left), if it keeps some.
+    fn points(&self) -> &[[f64; 3]] {
+        &[]
+    }
 }
 
 pub mod attractors;

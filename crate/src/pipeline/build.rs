@@ -69,6 +69,10 @@ pub struct Build {
     /// for a single plant.
     #[cfg(feature = "environment")]
     pub plant_offsets: Vec<[f64; 3]>,
+    /// What the views draw of the environment after the last step (the light grid, obstacles,
+    /// attraction points); `None` for a grammar that declares none or was not derived with it.
+    #[cfg(feature = "environment")]
+    pub environment: Option<super::EnvironmentView>,
 }
 
 /// [`crate::turtle::MAX_COORDINATE`] as `{:e}` writes it, for the clamping warning: a constant

@@ -4,6 +4,7 @@
 //! plants' parts, and every `?E` is answered at its place. Derive and the turtle know nothing of
 //! it: this file is where they meet the programs of [`crate::environment`].
 
+use super::environment_view::EnvironmentView;
 use super::observer::StageObserver;
 use super::stand::Stand;
 use super::Build;
@@ -215,8 +216,10 @@ pub(super) fn derive_stage(
         Ok(Derived {
             mut observers,
             derivations,
+            view,
             ..
         }) => {
+            result.environment = Some(view);
             let stand = model.environment.plants.len();
             if stand == 0 {
                 let (derivation, observer) = (derivations.into_iter().next()?, observers.pop()?);
@@ -271,6 +274,8 @@ struct Derived<'m> {
     derivations: Vec<crate::derive::Derivation>,
     observers: Vec<StageObserver<'m, 'static>>,
     traces: Vec<Vec<TracedStep>>,
+    /// The environment after the last step, for the views.
+    view: EnvironmentView,
 }
 
 /// Every plant derived in lockstep, the environment answering after the axiom and every step.
@@ -317,6 +322,7 @@ fn lockstep<'m>(
         derivations,
         observers,
         traces,
+        view: EnvironmentView::of(&environment.programs),
     })
 }
 

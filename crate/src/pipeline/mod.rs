@@ -24,6 +24,8 @@ mod build;
 mod editor;
 #[cfg(feature = "environment")]
 mod environment;
+#[cfg(feature = "environment")]
+mod environment_view;
 mod export;
 mod hooks;
 mod inspector;
@@ -37,6 +39,8 @@ mod surface_preview;
 
 pub use build::{build, build_with, Build, BuildOptions};
 pub use editor::{BranchInfo, PlantEditor};
+#[cfg(feature = "environment")]
+pub use environment_view::{EnvironmentView, FieldView, MAX_VIEW_POINTS, MAX_VIEW_VOXELS};
 pub use export::{export, ExportError, ExportOptions, Exported};
 pub use hooks::{Hooks, Progress, Stage, StageTimings};
 pub use inspector::{Explained, Inspector};

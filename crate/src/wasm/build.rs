@@ -119,6 +119,12 @@ impl PlantBuild {
         &self.build.plant
     }
 
+    /// What the build keeps of its environment for the views, if it has one.
+    #[cfg(feature = "environment")]
+    pub(super) fn environment_view(&self) -> Option<&pipeline::EnvironmentView> {
+        self.build.environment.as_ref()
+    }
+
     /// Meshes the plant again with `mesh`, timed with `clock` as [`Self::remesh`] says.
     fn remesh_timed(&mut self, mesh: &MeshOptions, clock: Option<&js_sys::Function>) {
         let mut now = || read_clock(clock);

@@ -13,9 +13,9 @@
 //!
 //! The files: `options` (the options objects: their one reader and their TypeScript interfaces,
 //! from one table), `build`, `build_on` (a build that continues a kept one's derivation), `mesh_arrays` (the typed-array getters of a build and an editor, one
-//! row per array), `inspector`, `editor`, `export`, `import`, `surface` (one declared surface for
-//! the surface editor), `bench` and `light_bench` (the benchmarks' entry points) and `panic` (the
-//! crash path).
+//! row per array), `inspector`, `editor`, `environment` (what a build knows of its environment,
+//! for the views), `export`, `import`, `surface` (one declared surface for the surface editor),
+//! `bench` and `light_bench` (the benchmarks' entry points) and `panic` (the crash path).
 #![deny(clippy::unwrap_used)]
 
 #[macro_use]
@@ -27,6 +27,8 @@ mod build;
 mod build_on;
 #[cfg(feature = "studio-extras")]
 mod editor;
+#[cfg(feature = "environment")]
+mod environment;
 #[cfg(feature = "io")]
 mod export;
 #[cfg(feature = "io")]

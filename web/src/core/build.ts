@@ -24,6 +24,7 @@ import {
   type BuildStage,
   type Diagnostic,
   type DerivationStep,
+  type EnvironmentData,
   type Explanation,
   type GpuArrays,
   type LastStepLinks,
@@ -76,16 +77,20 @@ let spareCopies: SpareCopies | undefined;
 /** The studio core's `buildOn` (a build that continues a kept one's derivation), given with it. */
 let studioBuildOn: typeof studioBuildOnType | undefined;
 
+/** The studio core's copy of a build's environment (./environment.ts), given with it. */
+let environmentOf: ((result: object) => EnvironmentData | undefined) | undefined;
+
 /**
  * Makes {@link inspectPlant} build with the whole boundary's module (crate/pkg, already
  * instantiated), whose inspectors also explain, report matches and trace the derivation: what
  * the first plant's core leaves out (issue 22), and copy a big plant for the GPU into `copies`'s
  * spare buffers where it has some. Called by ./studio-core.ts.
  */
-export function useStudioCore(core: typeof studioBuildType, copies?: SpareCopies, on?: typeof studioBuildOnType): void {
+export function useStudioCore(core: typeof studioBuildType, copies?: SpareCopies, on?: typeof studioBuildOnType, environment?: typeof environmentOf): void {
   studioBuild = core;
   spareCopies = copies;
   studioBuildOn = on;
+  environmentOf = environment;
 }
 
 /**
@@ -274,6 +279,7 @@ export function plainBuild(source: string, result: WasmPlantBuild, { forGpu = fa
     timed: result.timed,
     declaresSurfaces: result.declaresSurfaces,
     declaresEnvironment: result.declaresEnvironment,
+    environment: environmentOf?.(result),
     // (A getter of the studio core's builds only.)
     stepwise: 'stepwise' in result && result.stepwise === true,
     ...(result.continuedFrom === undefined ? {} : { continuedFrom: result.continuedFrom }),

@@ -4,15 +4,16 @@
 // file on the first such question (`loadStudioCore`); unit tests import it after `initIo`.
 import { build as studioBuild, buildOn as studioBuildOn } from '../../../crate/pkg/meristem.js';
 import { useStudioCore } from './build';
+import { environmentOf } from './environment';
 import { initIo } from './io';
 import { SpareCopies } from './spare-copies';
 
 /**
  * Instantiates crate/pkg (once, see `initIo`) and makes `inspectPlant` build with it, copying big
  * plants for the GPU into spare buffers (`prepareSpares`) and continuing a kept build's derivation
- * when asked (`buildOn`).
+ * when asked (`buildOn`), and copying each build's environment for the views.
  */
 export async function startStudioCore(): Promise<void> {
   await initIo();
-  useStudioCore(studioBuild, new SpareCopies(), studioBuildOn);
+  useStudioCore(studioBuild, new SpareCopies(), studioBuildOn, environmentOf);
 }

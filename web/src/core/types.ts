@@ -171,6 +171,11 @@ export interface PlantBuild {
    */
   declaresEnvironment: boolean;
   /**
+   * What the build knows of its environment after its last step (the views draw it): present when
+   * the grammar declares one and the studio core built it.
+   */
+  environment?: EnvironmentData;
+  /**
    * The grammar is stepwise: a `#dt` without timed modules (L-Py's and cpfg's continuous growth,
    * whose modules change with their age at every step). Its plant at growth time t is its
    * derivation's at step ⌊t⌋, not grown on the GPU from the whole plant's (which would show every
@@ -309,3 +314,40 @@ export interface PlantInspector {
 
 /** How many characters of the derived string {@link buildPlant} keeps. */
 export const DERIVED_PREVIEW_CHARS = 10_000;
+
+/**
+ * One program's grid of values (the light program's exposure, 0 to 1): `values` has
+ * `dims[0] × dims[1] × dims[2]` entries, x fastest; voxel (i, j, k) spans `origin + cell × (i, j, k)`
+ * to `origin + cell × (i + 1, j + 1, k + 1)`. A grid above a million voxels comes averaged over
+ * blocks (a larger `cell`).
+ */
+export interface EnvironmentField {
+  /** The program's index among the grammar's `#environment` lines. */
+  program: number;
+  /** The program's name (`light`). */
+  name: string;
+  origin: [number, number, number];
+  cell: number;
+  dims: [number, number, number];
+  /** The smallest and largest value. */
+  min: number;
+  max: number;
+  values: Float32Array;
+}
+
+/** An obstacle's solid, in the model's coordinates (+Y up). */
+export type EnvironmentSolid =
+  | { shape: 'box'; min: [number, number, number]; max: [number, number, number] }
+  | { shape: 'sphere'; center: [number, number, number]; radius: number }
+  /** The half-space behind the plane through `point`; `normal` (unit) points to the free side. */
+  | { shape: 'plane'; point: [number, number, number]; normal: [number, number, number] };
+
+/** What a build knows of its environment after its last step (`PlantBuild.environment`). */
+export interface EnvironmentData {
+  fields: EnvironmentField[];
+  solids: EnvironmentSolid[];
+  /** The attraction points left, x, y, z each (at most 100,000). */
+  points: Float32Array;
+  /** The names of the values a `?E` is answered with, every program's in the order declared. */
+  replies: string[];
+}

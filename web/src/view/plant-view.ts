@@ -6,7 +6,7 @@
 // (./module-overlay.ts), the grid (./ground-grid.ts), picking (./view-picking.ts), pictures
 // (./snapshot.ts), what is drawn in 2D over the view where a software rasterizer draws it
 // (./view-2d.ts).
-import { Box3, Color, Scene, Vector3, type Camera, type WebGLRenderer } from 'three';
+import { Box3, Color, Scene, Vector3, type Camera, type Object3D, type WebGLRenderer } from 'three';
 import type { Bounds, GpuArrays, MeshBuffers } from '../core';
 import { CameraRig, type Projection, type ViewPose } from './camera-rig';
 import { loadOrbitControls } from './camera-controls';
@@ -706,6 +706,16 @@ export class PlantView {
   /** Marks the plant as out of date (the grammar has errors) or current. */
   setStale(stale: boolean): void {
     this.container.toggleAttribute('data-stale', stale);
+  }
+
+  /**
+   * Draws `layer` with the plant (the environment's: ./environment-layer.ts), or draws it again
+   * after it changed; `show` false takes it away.
+   */
+  drawLayer(layer: Object3D, show = true): void {
+    if (show) this.scene.add(layer);
+    else this.scene.remove(layer);
+    this.requestRender();
   }
 
   /** Calls `listener` after every frame drawn; returns the function that stops it. */

@@ -4,12 +4,13 @@
 // and the production that made it is marked in the editor, with the contexts of that rewriting.
 // "Colour by production" paints every module by the production that wrote it, so stepping the
 // iterations shows which production rewrote what from step k to k + 1.
-import { NOT_REWRITTEN, type BuildOptions, type Explanation, type MatchReport, type PlantBuild, type PlantInspector } from '../../core';
+import { loadVocabulary, NOT_REWRITTEN, type BuildOptions, type Explanation, type MatchReport, type PlantBuild, type PlantInspector } from '../../core';
 import type { GrammarEditor } from '../../editor';
 import { cssColour, HIGHLIGHT, PRODUCTION_COLOURS, type Rgb } from '../../view/highlight';
 import type { PlantView } from '../../view';
 import { StringPanel, type ModuleRole } from './string-panel';
 import type { ViewOptions } from '../controls';
+import { branchQuery, EnvironmentTools, REPLY_REACH, replyInWords } from '../environment';
 import { conditionText, copiedInWords, countsInWords, describeProduction, madeInWords, reportInWords, stringAtTime } from './explain-words';
 
 /** The page elements of the view. */
@@ -46,6 +47,8 @@ export class ContextView {
   private preview: Set<number> | null = null;
   /** Bumped by every change of focus or build, so late answers are dropped. */
   private ticket = 0;
+  /** The View toolbar's Environment tools: each build's environment drawn with its plant. */
+  private readonly environment: EnvironmentTools;
 
   constructor(
     private readonly els: ContextViewElements,
@@ -55,6 +58,7 @@ export class ContextView {
     private readonly viewOptions: ViewOptions,
   ) {
     this.panel = new StringPanel(els.panel, (module) => this.pickModule(module));
+    this.environment = new EnvironmentTools(view);
     // One definition of the highlight colours: the 3D view's, passed on to the page's CSS.
     for (const [role, rgb] of Object.entries(HIGHLIGHT)) {
       document.documentElement.style.setProperty(`--hl-${role}`, cssColour(rgb));
@@ -90,6 +94,7 @@ export class ContextView {
     this.timedAt = build.timed ? (options.time ?? options.iterations ?? build.grammarIterations) : null;
     this.els.summary.dataset.t = this.timedAt === null ? '' : String(this.timedAt);
     this.panel.show(build.moduleCount, inspector);
+    this.environment.show(build.environment, build.flat);
     this.focus = { ...this.focus, module: null }; // module indices belong to the old string
     this.preview = null;
     this.renderLegend();
@@ -163,7 +168,29 @@ export class ContextView {
       if (ticket !== this.ticket) return;
       this.apply(build, focus, explanation);
       this.describe(build, focus, explanation, report, text);
+      if (focus.module !== null && build.environment) void this.describeReply(build, inspector, focus.module, ticket);
     });
+  }
+
+  /**
+   * Adds to the summary the reply of the picked module's `?E` (the first after it on its branch,
+   * else the last before it): its values named by the programs' reply words.
+   */
+  private async describeReply(build: PlantBuild, inspector: PlantInspector | undefined, module: number, ticket: number): Promise<void> {
+    const vocabulary = await loadVocabulary();
+    const nameOf = (meaning: string) => vocabulary.modules.find((m) => m.meaning === meaning)?.name;
+    const [query, open, close] = [nameOf('QueryEnvironment'), nameOf('Push'), nameOf('Pop')];
+    if (!inspector || !query || !open || !close || !build.environment) return;
+    const first = Math.max(0, module - REPLY_REACH);
+    const texts = await inspector.moduleTexts(first, module + REPLY_REACH + 1 - first);
+    if (ticket !== this.ticket) return;
+    const found = branchQuery(texts, first, module, { query, open, close });
+    const line = document.createElement('span');
+    line.className = 'environment-reply';
+    line.dataset.testid = 'environment-reply';
+    line.textContent = found ? ` Its ${replyInWords(found, build.environment.replies, query)}.` : ` No ${query} on this branch.`;
+    if (found) line.dataset.module = String(found.module);
+    this.els.summary.append(line);
   }
 
   /**
