@@ -196,3 +196,38 @@ fn the_middle_tree_of_a_row_gets_less_light_and_grows_less() {
     // Measured: [1488, 1402, 1492].
     assert!(*least as f64 > 0.9 * *most as f64, "{per:?}");
 }
+
+#[test]
+fn the_middle_tree_of_a_grid_is_the_most_shaded() {
+    let per = internodes_per_plant(&built(&example("open-grid-competing.lsys"), 9, None));
+    assert_eq!(per.len(), 9, "{per:?}");
+    // Measured: [400, 328, 380, 332, 262, 306, 346, 312, 342] (`F`s, the trunks' included): the
+    // middle tree (index 4) has neighbours on all four sides.
+    let middle = per[4];
+    assert!(per.iter().all(|&p| p >= middle), "{per:?}");
+    let corners = [per[0], per[2], per[6], per[8]];
+    assert!(
+        (middle as f64) < 0.85 * *corners.iter().min().unwrap() as f64,
+        "{per:?}"
+    );
+}
+
+/// The ball: centre (0, 4, 0), radius 2.6; the stem from the ground to y = 2 starts below it.
+#[test]
+fn a_standard_clipped_to_a_ball_ends_every_segment_in_it() {
+    let b = built(&example("open-topiary-ball.lsys"), 50, None);
+    let segments = &b.plant.skeleton.segments;
+    assert!(segments.len() > 150, "{}", segments.len());
+    let centre = DVec3::new(0.0, 4.0, 0.0);
+    for s in segments {
+        assert!(
+            s.end.distance(centre) <= 2.6 + 1e-9,
+            "a segment ends at {} outside the ball",
+            s.end
+        );
+    }
+    // Round: it reaches most of the way to the ball's sides and top (measured ±2.2 or more, 6.5).
+    let (lo, hi) = extent(segments);
+    assert!(lo.x < -2.0 && hi.x > 2.0 && lo.z < -2.0 && hi.z > 2.0, "{lo} {hi}");
+    assert!(hi.y > 6.2, "{hi}");
+}
