@@ -131,13 +131,19 @@ fn a_sheared_hedge_leaves_no_segment_outside_its_box_and_fills_it() {
     // It fills the box: measured x −2.54 … 2.47, y 0 … 5.07, z −2.53 … 2.47.
     let (lo, hi) = extent(segments);
     for axis in [0, 2] {
-        assert!(lo[axis] < -0.85 * SIZE && hi[axis] > 0.85 * SIZE, "{lo} {hi}");
+        assert!(
+            lo[axis] < -0.85 * SIZE && hi[axis] > 0.85 * SIZE,
+            "{lo} {hi}"
+        );
     }
     assert!(hi.y > 0.9 * 2.0 * SIZE, "{hi}");
     // A gardener with a larger box (4) lets the same shrub grow past the first one's sides.
     let larger = source.replace("#define SIZE 2.6", "#define SIZE 4");
     let (lo, hi) = extent(&built(&larger, 40, None).plant.skeleton.segments);
-    assert!(lo.x < -SIZE || hi.x > SIZE || hi.y > 2.0 * SIZE, "{lo} {hi}");
+    assert!(
+        lo.x < -SIZE || hi.x > SIZE || hi.y > 2.0 * SIZE,
+        "{lo} {hi}"
+    );
 }
 
 /// The ball: centre (0, 7, 0), radius 4; the trunk reaches it at y = 3.
@@ -228,6 +234,9 @@ fn a_standard_clipped_to_a_ball_ends_every_segment_in_it() {
     }
     // Round: it reaches most of the way to the ball's sides and top (measured ±2.2 or more, 6.5).
     let (lo, hi) = extent(segments);
-    assert!(lo.x < -2.0 && hi.x > 2.0 && lo.z < -2.0 && hi.z > 2.0, "{lo} {hi}");
+    assert!(
+        lo.x < -2.0 && hi.x > 2.0 && lo.z < -2.0 && hi.z > 2.0,
+        "{lo} {hi}"
+    );
     assert!(hi.y > 6.2, "{hi}");
 }
