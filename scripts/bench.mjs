@@ -69,6 +69,31 @@ const copyOut = (b) => [b.positions(), b.normals(), b.colors(), b.indices(), b.r
 // Issue 4: a tree the size of seed 001's (468 branches, 87,200 vertices) from grammar text to typed
 // arrays in JavaScript, every stage included.
 const pipelineRows = [];
+// Issue 47: a stand of 9 trees of about 20,000 segments each (scripts/bench/stand-9.lsys) grown 10
+// steps in one light grid, text to typed arrays: after the axiom and every step all 9 strings
+// interpreted, the light program updated with all their parts and every bud's ?E answered, then
+// the mesh. Target 2 s. cpu_ms is the process's CPU time (the wall time on a busy machine is more).
+{
+  const source = readFileSync(new URL('./bench/stand-9.lsys', import.meta.url), 'utf8');
+  const probe = build(source, {});
+  const stats = JSON.parse(probe.stats());
+  probe.free();
+  if (stats.segments < 9 * 19_000) throw new Error(`the stand has ${stats.segments} segments, not about 9 × 20,000`);
+  const cpu = [];
+  const runs = [];
+  for (let i = 0; i < 5; i++) {
+    const before = process.cpuUsage();
+    const t0 = performance.now();
+    const b = build(source, {});
+    copyOut(b);
+    b.free();
+    runs.push(performance.now() - t0);
+    const used = process.cpuUsage(before);
+    cpu.push((used.user + used.system) / 1000);
+  }
+  const name = `stand of 9 trees, ${stats.segments.toLocaleString('en')} segments, 10 steps in light: text → typed arrays`;
+  pipelineRows.push({ workload: name, vertices: stats.vertices, median_ms: +median(runs).toFixed(2), cpu_ms: +median(cpu).toFixed(2), runs: runs.length, target_ms: 2000 });
+}
 {
   const source = example('game-tree.lsys');
   const probe = build(source, {});

@@ -32,7 +32,7 @@ async function answer(check: string, source: string, seed?: number): Promise<{ p
 }
 
 describe('the course', () => {
-  it('follows ABOP chapter 1 in at least 8 lessons and chapters 2 to 6 in at least 3 each, in order, each with a grammar and a task', () => {
+  it('follows ABOP chapter 1 in at least 8 lessons, chapters 2 to 6 and the environment in at least 3 each, in order, each with a grammar and a task', () => {
     const inChapter = (chapter: string) => lessons.filter((l) => l.chapter === chapter).length;
     expect(inChapter('1')).toBeGreaterThanOrEqual(8);
     expect(inChapter('2')).toBeGreaterThanOrEqual(3);
@@ -40,6 +40,8 @@ describe('the course', () => {
     expect(inChapter('3')).toBeGreaterThanOrEqual(3);
     expect(inChapter('4')).toBeGreaterThanOrEqual(3);
     expect(inChapter('5')).toBeGreaterThanOrEqual(3);
+    // Issue 47: a tree towards light and in the dark, trees in a row, a sheared hedge.
+    expect(inChapter('Environment: open L-systems')).toBeGreaterThanOrEqual(3);
     expect(lessons.map((l) => l.slug)).toEqual([...lessons].sort(compareLessons).map((l) => l.slug));
     for (const lesson of lessons) {
       expect(lesson.grammars.length, lesson.slug).toBeGreaterThan(0);

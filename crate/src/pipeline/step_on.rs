@@ -47,5 +47,9 @@ pub fn why_not_continued(from: &Build) -> Option<&'static str> {
     if model.growth.is_active() {
         return Some("growth attributes follow every module; their state is not carried");
     }
+    #[cfg(feature = "environment")]
+    if super::environment::runs(model) {
+        return Some("the environment's replies are not carried: its cycle derives from the axiom");
+    }
     derive::Resume::blocked(model)
 }

@@ -29,6 +29,8 @@ describe('exampleGroup', () => {
     ['Lluch, Vicent, Vivó, Quirós, "Green: a tool for modelling natural elements" (seed 000), Fig. 1.', "Green's RL-systems"],
     ['Jou, Park, Bahng, "L-system tree with particle attributes" (shared/seeds/002), Fig 2 and Table 1.', 'Jou, Park and Bahng: particle attributes'],
     ["Laurens Lapré's Lparser examples, fern-plant.ls", 'Lparser'],
+    ['Palubicki et al., "Self-organizing tree models for image synthesis" (SIGGRAPH 2009).', 'Open L-systems: plants and their environment'],
+    ['Měch & Prusinkiewicz, "Visual models of plants interacting with their environment" (SIGGRAPH 1996).', 'Open L-systems: plants and their environment'],
     ['Rathod, Tyagi, "L-systems based 3D tree modeling" (shared/seeds/003).', 'Other'],
     ['', 'Other'],
   ])('%s is in %s', (source, group) => {
@@ -54,7 +56,7 @@ describe('galleryManifest', () => {
     const files = readdirSync(dir).filter((f) => f.endsWith('.lsys'));
     const manifest = galleryManifest(files.map((f) => [f, readFileSync(new URL(f, dir), 'utf8')] as const));
     expect(manifest).toHaveLength(files.length);
-    // In the gallery's order: ABOP chapters 1 to 6, Green, Jou, Lparser, Other.
+    // In the gallery's order: ABOP chapters 1 to 6, Green, Jou, Lparser, the open L-systems, Other.
     expect([...new Set(manifest.map((e) => e.group))]).toEqual([
       'ABOP chapter 1: graphical modeling using L-systems',
       'ABOP chapter 2: modeling of trees',
@@ -65,6 +67,7 @@ describe('galleryManifest', () => {
       "Green's RL-systems",
       'Jou, Park and Bahng: particle attributes',
       'Lparser',
+      'Open L-systems: plants and their environment',
       'Other',
     ]);
     for (const entry of manifest) expect(entry.group.startsWith('ABOP'), entry.file).toBe(entry.file.startsWith('abop-'));

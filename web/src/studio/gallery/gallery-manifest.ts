@@ -25,13 +25,15 @@ const OTHER_GROUPS: readonly (readonly [string, RegExp])[] = [
   ["Green's RL-systems", /\bGreen\b/],
   ['Jou, Park and Bahng: particle attributes', /\bJou\b/],
   ['Lparser', /\bLparser\b/],
+  ['Open L-systems: plants and their environment', /\b(?:Měch|Palubicki|Runions)\b/],
   ['Other', /(?:)/],
 ];
 
 /**
  * The group of an example, from its source: a source naming *The Algorithmic Beauty of Plants*
  * is in the chapter of its first figure, equation or section number ("Fig. 2.6a" → "ABOP chapter 2:
- * modeling of trees"); then Green, Jou, Park and Bahng, Lparser; anything else is "Other".
+ * modeling of trees"); then Green, Jou, Park and Bahng, Lparser, the open L-systems of issue 47 (Měch,
+ * Palubicki, Runions); anything else is "Other".
  */
 export function exampleGroup(source: string): string {
   if (/Algorithmic Beauty of Plants/i.test(source)) {

@@ -36,6 +36,8 @@ describe('checks: facts and functions', () => {
     ['modules > 12', false],
     ['iterations >= 2 and iterations <= 2', true],
     ['width == 3 and height == 6 and depth == 0.5', true],
+    // bounds x -1 … 2: one to the left of the base, two to the right.
+    ['left == 1 and right == 2 and right == 2 * left', true],
     ['vertices != 100', false],
     ['triangles < 81', true],
     ["count(\"F\") == 5", true],

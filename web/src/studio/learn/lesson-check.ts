@@ -21,6 +21,8 @@ export const CHECK_FACTS = {
   width: 'extent of the plant along x (left to right)',
   height: 'extent of the plant along y (bottom to top)',
   depth: 'extent of the plant along z (back to front)',
+  left: 'how far the plant reaches to the left of its base (the origin), along -x; 0 when it stays right of it',
+  right: 'how far the plant reaches to the right of its base (the origin), along +x; 0 when it stays left of it',
   branch_order: 'the deepest nesting of branches ([ inside [): 0 for a plant without branches',
   whorl: 'the most branches written side by side at one node: F[+F][-F]F has 2',
   seed: 'the seed the plant on screen was derived with (the Seed box, else the grammar\'s #seed)',
@@ -496,6 +498,10 @@ function factValue(name: CheckFact, stats: PlantStats, strings: StringFacts): nu
       return max[1] - min[1];
     case 'depth':
       return max[2] - min[2];
+    case 'left':
+      return Math.max(0, -min[0]);
+    case 'right':
+      return Math.max(0, max[0]);
     case 'branch_order':
       return strings.shape().branchOrder;
     case 'whorl':
