@@ -100,7 +100,15 @@ impl SegmentGrid {
         let bytes = count * BYTES_PER_PIECE as f64;
         if bytes > budget as f64 {
             return Err(Exceeded {
-                what: format!("{what} of {} parts within {reach}", segments.len()),
+                what: format!(
+                    "{what} of {} parts within {}",
+                    segments.len(),
+                    if (1e-3..1e6).contains(&reach) {
+                        format!("{reach}")
+                    } else {
+                        format!("{reach:.3e}")
+                    }
+                ),
                 bytes: bytes.min(usize::MAX as f64) as usize,
             });
         }

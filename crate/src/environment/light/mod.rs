@@ -132,10 +132,7 @@ impl Light {
         if bytes.is_nan() || bytes > budget as f64 {
             let [x, y, z] = dims;
             return Err(Exceeded {
-                what: format!(
-                    "a light grid of {x} × {y} × {z} voxels ({})",
-                    megabytes(bytes)
-                ),
+                what: format!("a light grid of {x} × {y} × {z} voxels"),
                 bytes: bytes.min(usize::MAX as f64) as usize,
             });
         }
@@ -174,15 +171,6 @@ impl Light {
                 self.beam[v] += weight;
             }
         }
-    }
-}
-
-/// `bytes` as a size a person reads ("104 MB").
-fn megabytes(bytes: f64) -> String {
-    if bytes >= 1e7 {
-        format!("{:.0} MB", bytes / 1e6)
-    } else {
-        format!("{:.1} MB", bytes / 1e6)
     }
 }
 
