@@ -267,7 +267,7 @@ fn a_grid_over_the_budget_is_refused_before_it_is_allocated() {
     assert!(
         exceeded
             .what
-            .starts_with("a light grid of 5137 × 12298 × 3089 voxels ("),
+            .starts_with("a light grid of 5137 × 12298 × 3089 voxels"),
         "{}",
         exceeded.what
     );
