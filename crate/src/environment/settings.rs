@@ -7,21 +7,31 @@ use crate::model::ProgramSpec;
 /// The code of a setting a program cannot use (docs/LANGUAGE.md, "Diagnostic codes").
 pub const BAD_SETTING: &str = "E0239";
 
-/// The number of `name`, or `default` when not written: finite and above 0.
-pub fn positive(spec: &ProgramSpec, name: &str, default: f64) -> Result<f64, Diagnostic> {
+/// The number of setting `name`, or `default` when it is not written; finite, at most 1e30, and
+/// `ok`, or an error at the setting saying it must be `what` (the program named in the message).
+pub fn number(
+    spec: &ProgramSpec,
+    name: &str,
+    default: f64,
+    ok: impl Fn(f64) -> bool,
+    what: &str,
+) -> Result<f64, Diagnostic> {
     let value = spec.number(name).unwrap_or(default);
-    if value.is_finite() && value > 0.0 {
+    if value.is_finite() && value.abs() <= 1e30 && ok(value) {
         return Ok(value);
     }
-    let written = spec.number(name).is_some();
-    let message = if written {
-        format!("`{name}` must be a number above 0 (it is {value})")
+    let program = spec.info().name;
+    let message = if spec.number(name).is_some() {
+        format!("the {program}'s `{name}` must be {what} (it is {value})")
     } else {
-        format!(
-            "`{name}` is not written and its default ({value}) is not above 0: write `{name}` and a number above 0"
-        )
+        format!("the {program}'s `{name}` is not written and its default ({value}) is not {what}: write `{name}` and {what}")
     };
     Err(Diagnostic::error(BAD_SETTING, spec.span_of(name), message))
+}
+
+/// The number of `name`, or `default` when not written: finite and above 0.
+pub fn positive(spec: &ProgramSpec, name: &str, default: f64) -> Result<f64, Diagnostic> {
+    number(spec, name, default, |x| x > 0.0, "a number above 0")
 }
 
 /// The whole number of `name` from 0 to `most`, or `default` when not written.

@@ -5,6 +5,7 @@
 use crate::diagnostics::Diagnostic;
 use crate::model::ProgramSpec;
 
+use crate::environment::settings::number;
 pub use crate::environment::settings::BAD_SETTING;
 
 /// The deepest a shadow may reach, in layers (the `depth` setting's most).
@@ -68,27 +69,6 @@ impl LightSettings {
             absorb,
         })
     }
-}
-
-/// The number of setting `name`, or `default` when it is not written; finite, at most 1e30, and
-/// `ok`, or an error saying it must be `what`.
-fn number(
-    spec: &ProgramSpec,
-    name: &str,
-    default: f64,
-    ok: impl Fn(f64) -> bool,
-    what: &str,
-) -> Result<f64, Diagnostic> {
-    let value = spec.number(name).unwrap_or(default);
-    if value.is_finite() && value.abs() <= 1e30 && ok(value) {
-        return Ok(value);
-    }
-    let message = if spec.number(name).is_some() {
-        format!("the light's `{name}` must be {what} (it is {value})")
-    } else {
-        format!("the light's `{name}` is not written and its default ({value}) is not {what}: write `{name}` and {what}")
-    };
-    Err(Diagnostic::error(BAD_SETTING, spec.span_of(name), message))
 }
 
 /// `sun_direction` as a unit vector (default straight up).
