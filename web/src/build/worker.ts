@@ -11,7 +11,7 @@
 // into buffers made while the worker waited, sized as the last build's (`prepareSpares`). A build
 // of the same text and options as a kept one but more iterations (a step forward, Play) derives
 // only the new steps from it (continue-from.ts); a step back derives from the axiom again.
-import { CoreCrashed, initCore, inspectPlant, loadStudioCore, prepareSpares, studioCoreInUse, type BuildOptions, type BuildProgress, type PlantInspector } from '../core';
+import { CoreCrashed, initCore, inspectPlant, loadStudioCore, needsStudioCore, prepareSpares, studioCoreInUse, type BuildOptions, type BuildProgress, type PlantInspector } from '../core';
 import {
   answerTransferables,
   type CoreMessage,
@@ -190,7 +190,7 @@ addEventListener('message', async (event: MessageEvent<WorkerRequest | CoreMessa
         forGpu: true, // the normals and colours packed for the GPU, not as floats
       });
     let plant = await made();
-    if ((plant.build.timed || plant.build.declaresSurfaces || plant.build.declaresEnvironment) && !studioCoreInUse()) {
+    if (needsStudioCore(plant.build)) {
       // The first plant's core has no clock for timed modules (ABOP 6.1), draws no declared
       // surfaces (#surface, #patch) and runs no environment (#environment, #stand: no room in its
       // first load): the studio core builds them.

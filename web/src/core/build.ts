@@ -107,6 +107,15 @@ export function studioCoreInUse(): boolean {
   return studioBuild !== undefined;
 }
 
+/**
+ * Whether the first plant's core built `build` without what its grammar needs (the clock of timed
+ * modules, declared surfaces, an environment: no room in its first load), so that it must be built
+ * again once {@link loadStudioCore} is done.
+ */
+export function needsStudioCore(build: Pick<PlantBuild, 'timed' | 'declaresSurfaces' | 'declaresEnvironment'>): boolean {
+  return (build.timed || build.declaresSurfaces || build.declaresEnvironment) && !studioCoreInUse();
+}
+
 /** How {@link inspectPlant} builds: a sketch first, progress, arrays for the GPU. */
 export interface InspectRequest {
   /** A sketch of a big plant, shown while its tubes are meshed in the same call into the core. */

@@ -5,7 +5,7 @@ export { coreModule, CORE_VERSION } from './compile';
 export { initIo } from './io';
 export { loadBranchEditing, type EditPlant } from './editing';
 export { loadSurfacePreview, type Point3, type SurfaceAnswer, type SurfacePreview, type SurfacePreviewer, type WrittenPoint } from './surfaces';
-export { buildPlant, inspectPlant, prepareSpares, studioCoreInUse, type InspectRequest, type PlantSketch, type SketchRequest } from './build';
+export { buildPlant, inspectPlant, needsStudioCore, prepareSpares, studioCoreInUse, type InspectRequest, type PlantSketch, type SketchRequest } from './build';
 export { loadStudioCore } from './studio-core-loader';
 export {
   exportModel,

@@ -1,7 +1,7 @@
 // The thumbnail worker: builds a gallery example with its own core instance and draws it with
 // ThumbnailRenderer on an OffscreenCanvas, so neither the build nor the drawing (slow for big
 // plants without a GPU) ever holds up the page. Answers each request with a PNG, in order.
-import { buildPlant, initCore, loadStudioCore, studioCoreInUse } from '../../core';
+import { buildPlant, initCore, loadStudioCore, needsStudioCore } from '../../core';
 import { ThumbnailRenderer } from '../../view/thumbnail';
 
 /** Page → worker. */
@@ -22,9 +22,8 @@ addEventListener('message', async (event: MessageEvent<ThumbnailRequest>) => {
   try {
     await ready;
     let build = buildPlant(source);
-    if ((build.timed || build.declaresSurfaces || build.declaresEnvironment) && !studioCoreInUse()) {
-      // As in the build worker: the first plant's core has no clock, no declared surfaces and no
-      // environment; the studio core draws those examples as the studio shows them.
+    if (needsStudioCore(build)) {
+      // As in the build worker: the studio core draws those examples as the studio shows them.
       await loadStudioCore();
       build = buildPlant(source);
     }
