@@ -1,6 +1,7 @@
 //! The builder: [`build_mesh`] writes each element of a skeleton into [`MeshBuffers`] (tubes by
 //! `tube.rs`, flats and spheres here), recording where each landed ([`MeshParts`]).
 
+#[cfg(feature = "surfaces")]
 use super::bezier;
 use super::chains::{chains, Chains};
 use super::grow::{append, push, push_range};
@@ -8,7 +9,6 @@ use super::{growth_origin, growth_schedule, GrowthSchedule};
 use super::{parts, polygon, segment_lines, sphere, surfaces, tube};
 use super::{resolve_width_unit, ChainPart, MeshBuffers, MeshOptions, MeshParts, Part};
 use super::{MATERIAL_BARK, MATERIAL_LEAF, MATERIAL_PLAIN};
-#[cfg(feature = "surfaces")]
 use crate::maths;
 use crate::turtle::{Skeleton, Surface, SurfaceKind};
 use glam::DVec3;
