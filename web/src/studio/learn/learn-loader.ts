@@ -24,4 +24,11 @@ export function installLearnPanel(host: LearnHost): void {
       .finally(() => toggle.removeAttribute('aria-busy'));
   };
   toggle.addEventListener('click', first);
+  // An assignment or a submission in the address (docs/ASSIGNMENTS.md): opened after the first plant.
+  if (/(assignment|submission)=/.test(location.href)) {
+    const ready = Promise.race([host.preview.nextDelivery(), new Promise((done) => setTimeout(done, 20_000))]);
+    Promise.all([import('./assignment-opening'), ready])
+      .then(([opening]) => opening.openFromAddress(host))
+      .catch((error: unknown) => console.error('Could not open the assignment:', error));
+  }
 }

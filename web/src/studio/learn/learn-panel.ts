@@ -53,6 +53,8 @@ export interface LearnHost {
   };
   /** Opens `text` in the editor (asking first if the user's text would be lost); `key` names it (`lesson/SLUG/N`). */
   open(text: string, title: string, key: string): Promise<boolean>;
+  /** The editor's text now (an assignment's Check and Submit… read it). */
+  text(): string;
 }
 
 async function fetchJson(url: string): Promise<unknown> {
@@ -170,10 +172,29 @@ export class LearnPanel {
         return section;
       }),
     );
+    contents.append(this.assignments());
     contents.hidden = false;
     lesson.hidden = true;
     const first = (this.current && contents.querySelector<HTMLButtonElement>(`[data-slug="${this.current.slug}"]`)) || contents.querySelector('button');
     first?.focus();
+  }
+
+  /** "Your own assignments": an assignment file opened (docs/ASSIGNMENTS.md), its code loaded then. */
+  private assignments(): HTMLElement {
+    const section = element('section', 'learn-chapter');
+    const input = element('input', '');
+    input.type = 'file';
+    input.accept = '.md,.markdown,.txt,text/markdown,text/plain';
+    input.hidden = true;
+    input.dataset.testid = 'learn-assignment-file';
+    input.addEventListener('change', () => {
+      const file = input.files?.[0];
+      input.value = '';
+      if (file) void import('./assignment-opening').then((opening) => opening.openAssignmentFile(this.host, file));
+    });
+    const about = 'An assignment of your course (a Markdown file: docs/ASSIGNMENTS.md). Open it to work on it, or, as its author, to see what is wrong with it.';
+    section.append(element('h3', '', 'Your own assignments'), element('p', 'learn-section', about), button('Open an assignment file…', 'Open an assignment file…', () => input.click()), input);
+    return section;
   }
 
   /** Shows a lesson (fetched on first view). */
