@@ -46,10 +46,24 @@ async function openSubmission(host: AssignmentHost, packed: string): Promise<voi
   shown.show(assignment.text, source, { submission, changed: fingerprint(assignment.text) !== submission.fingerprint });
 }
 
-/** Opens what the studio's address asks for, if anything: an assignment, or a submission. */
-export async function openFromAddress(host: AssignmentHost): Promise<void> {
+/** What opening from the address needs: the studio, and its first plant (then a submission may replace the text). */
+export interface AddressHost extends AssignmentHost {
+  preview: { readonly lastResult: unknown; nextDelivery(): Promise<void> };
+}
+
+/** Waits for the studio's first plant (at most 20 s: a first build that crashed is never delivered). */
+async function firstPlant(host: AddressHost): Promise<void> {
+  if (host.preview.lastResult === undefined) await Promise.race([host.preview.nextDelivery(), new Promise((done) => setTimeout(done, 20_000))]);
+}
+
+/**
+ * Opens what the studio's address asks for, if anything: an assignment, or a submission; after
+ * the first plant, so that the studio is whole when the student's grammar replaces its text.
+ */
+export async function openFromAddress(host: AddressHost): Promise<void> {
   const request = addressRequest(location);
   if (request.kind === 'none') return;
+  await firstPlant(host);
   if (request.kind === 'submission') {
     // Not opened again by a reload: the page's text is then the lecturer's own again.
     history.replaceState(null, '', `${location.pathname}${location.search}`);

@@ -13,7 +13,7 @@ export function installLearnPanel(host: LearnHost): void {
     panel.hidden = false;
     toggle.setAttribute('aria-expanded', 'true');
     toggle.setAttribute('aria-busy', 'true');
-    import('./learn-panel')
+    panelCode()
       .then(({ LearnPanel, learnElements }) => new LearnPanel(learnElements(), host).open())
       .catch((error: unknown) => {
         console.error('Could not load the lessons:', error);
@@ -24,11 +24,9 @@ export function installLearnPanel(host: LearnHost): void {
       .finally(() => toggle.removeAttribute('aria-busy'));
   };
   toggle.addEventListener('click', first);
-  // An assignment or a submission in the address (docs/ASSIGNMENTS.md): opened after the first plant.
-  if (/(assignment|submission)=/.test(location.href)) {
-    const ready = Promise.race([host.preview.nextDelivery(), new Promise((done) => setTimeout(done, 20_000))]);
-    Promise.all([import('./assignment-opening'), ready])
-      .then(([opening]) => opening.openFromAddress(host))
-      .catch((error: unknown) => console.error('Could not open the assignment:', error));
-  }
+  // An assignment or a submission in the address (docs/ASSIGNMENTS.md): the one test of the first load.
+  if (/(assignment|submission)=/.test(location.href)) void panelCode().then((code) => code.openFromAddress(host));
 }
+
+/** The panel's code (one import, so the first load holds its address once). */
+const panelCode = () => import('./learn-panel');

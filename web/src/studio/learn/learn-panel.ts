@@ -79,6 +79,11 @@ function button(text: string, label: string, onClick: () => void, className = ''
   return node;
 }
 
+/** Opens the assignment or submission the studio's address asks for (its code loads now). */
+export function openFromAddress(host: LearnHost): Promise<void> {
+  return import('./assignment-opening').then((opening) => opening.openFromAddress(host));
+}
+
 /** The Learn panel. */
 export class LearnPanel {
   private index: LessonSummary[] | undefined;
