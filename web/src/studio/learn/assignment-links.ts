@@ -59,6 +59,9 @@ export function assignmentUrl(text: string, base: string): { ok: true; url: stri
     return { ok: false, error: `“${text.slice(0, 80)}” is not a web address` };
   }
   if (url.protocol !== 'https:' && url.protocol !== 'http:') return { ok: false, error: `an assignment is read from an http or https address, not ${url.protocol}` };
+  if (url.protocol === 'http:' && new URL(base).protocol === 'https:' && !['localhost', '127.0.0.1'].includes(url.hostname)) {
+    return { ok: false, error: `the studio is served over https, and a browser does not let it read a file over http (${url.href}): put the file on an https address` };
+  }
   return { ok: true, url: url.href };
 }
 
