@@ -4,24 +4,11 @@
 // studio's worker makes, here the core in node).
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
-import { directiveOfKind, inspectPlant, loadVocabulary, writtenDirective } from '../../web/src/core';
-import { problemText, readAssignment, type AssignmentProblem } from '../../web/src/studio/learn/assignment-file';
-import { judge, validateAssignment, type GrammarBuilder } from '../../web/src/studio/learn/assignment-validate';
-import { writtenSeed } from '../../web/src/studio/learn/written-seed';
+import { problemText, readAssignment } from '../../web/src/studio/learn/assignment-file';
+import { judge } from '../../web/src/studio/learn/assignment-validate';
+import { assignmentProblems as problems, nodeBuilder as builder } from './assignment-builder';
 
 const EXAMPLE = readFileSync(new URL('../../public/assignments/example-koch.md', import.meta.url), 'utf8');
-
-const builder: GrammarBuilder = async (text) => {
-  const { build, inspector } = inspectPlant(text, { tubes: true });
-  const seed = writtenDirective(directiveOfKind(await loadVocabulary(), 'Seed'));
-  return { ok: true, build, inspector, textSeed: writtenSeed(text, seed) };
-};
-
-/** Every problem of a file: read, then built. */
-async function problems(text: string): Promise<AssignmentProblem[]> {
-  const read = readAssignment(text);
-  return [...read.problems, ...(await validateAssignment(read.assignment, builder))].sort((a, b) => a.line - b.line);
-}
 
 /** An assignment file of these lines (`lines[0]` is the file's line 1). */
 const file = (...lines: string[]) => `${lines.join('\n')}\n`;
