@@ -8,6 +8,7 @@
 import { readFileSync } from 'node:fs';
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
+import { packText } from '../../web/src/share/codec';
 import { serveStatic, type StaticSite } from './static-server';
 import { editorText, generation, nextBuild, pasteText, savePage } from './studio-page';
 import { browser, page, problems, useStudio } from './session';
@@ -123,6 +124,9 @@ describe('a lecturer’s assignment', () => {
     }
   });
 
+});
+
+describe('an assignment that cannot be opened as it is, or that is hostile', () => {
   it('says what the lecturer’s server needs when it sends no CORS header, and offers the file instead', async () => {
     const url = `${closed.base}${FILE}`;
     await openAt(page, `${inject('studioUrl')}?assignment=${encodeURIComponent(url)}`);
@@ -136,4 +140,46 @@ describe('a lecturer’s assignment', () => {
     expect(await page.getByTestId('assignment-fingerprint').textContent()).toContain('From the file example-koch.md');
     await savePage(page, 'assignment-no-cors.png');
   });
+
+  it('opens a packed assignment whose Markdown holds HTML and scripts as text, running none of them', async () => {
+    const hostile = [
+      '---',
+      'title: <img src=x onerror="window.hacked=1">Hostile',
+      '---',
+      '<script>window.hacked = 2</script> <img src="x" onerror="window.hacked=3">',
+      '',
+      'Text with [click](javascript:window.hacked=4), ![p](javascript:x) and [a page](https://example.org/).',
+      '',
+      '```lsys',
+      '// Start',
+      'axiom: F',
+      '```',
+      '',
+      '```task',
+      'Do <b onclick="window.hacked=5">this</b>.',
+      'check: segments > 1',
+      'solution:',
+      'axiom: FF',
+      '```',
+      '',
+    ].join('\n');
+    await openAt(page, `${inject('studioUrl')}#assignment=1.${await packText(hostile)}`);
+    problems.splice(0);
+    const panel = page.getByTestId('assignment');
+    await panel.getByRole('heading', { name: '<img src=x onerror="window.hacked=1">Hostile', level: 2 }).waitFor({ timeout: 30_000 });
+    const body = panel.getByTestId('assignment-body');
+    expect(await body.textContent()).toContain('<script>window.hacked = 2</script>');
+    expect(await body.textContent()).toContain('Do <b onclick="window.hacked=5">this</b>.');
+    expect(await body.locator('script, [onerror], [onclick], b').count()).toBe(0);
+    const click = body.getByText('click', { exact: true });
+    expect(await click.getAttribute('href')).toBeNull();
+    expect(await body.getByText('a page').getAttribute('href')).toBe('https://example.org/');
+    expect(await body.getByText('a page').getAttribute('rel')).toBe('noopener noreferrer');
+    expect(await body.locator('img').getAttribute('src')).toBeNull();
+    await click.click();
+    expect(await page.evaluate(() => (window as { hacked?: number }).hacked)).toBeUndefined();
+    expect(await page.getByTestId('assignment-fingerprint').textContent()).toContain('Packed in the link');
+    expect(problems).toEqual([]);
+  });
 });
+

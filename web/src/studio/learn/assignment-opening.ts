@@ -15,17 +15,6 @@ function thePanel(host: AssignmentHost): AssignmentPanel {
   return panel;
 }
 
-let listening = false;
-
-/** From now on, a submission or an assignment link pasted into this tab's address bar opens too (30 submissions, one tab). */
-function openPastedLinks(host: AddressHost): void {
-  if (listening) return;
-  listening = true;
-  window.addEventListener('hashchange', () => {
-    if (/^#(assignment|submission)=/.test(location.hash)) void openFromAddress(host);
-  });
-}
-
 /** Opens an assignment file the user picked (a lecturer checking their own file, or a student given one). */
 export async function openAssignmentFile(host: AssignmentHost, file: File): Promise<void> {
   const shown = thePanel(host);
@@ -72,7 +61,6 @@ async function firstPlant(host: AddressHost): Promise<void> {
  * the first plant, so that the studio is whole when the student's grammar replaces its text.
  */
 export async function openFromAddress(host: AddressHost): Promise<void> {
-  openPastedLinks(host);
   const request = addressRequest(location);
   if (request.kind === 'none') return;
   await firstPlant(host);

@@ -24,8 +24,12 @@ export function installLearnPanel(host: LearnHost): void {
       .finally(() => toggle.removeAttribute('aria-busy'));
   };
   toggle.addEventListener('click', first);
-  // An assignment or a submission in the address (docs/ASSIGNMENTS.md): the one test of the first load.
-  if (/(assignment|submission)=/.test(location.href)) void panelCode().then((code) => code.openFromAddress(host));
+  // An assignment or a submission in the address (docs/ASSIGNMENTS.md), or pasted into it later.
+  const assignment = () => void panelCode().then((code) => code.openFromAddress(host));
+  if (/(assignment|submission)=/.test(location.href)) assignment();
+  addEventListener('hashchange', () => {
+    if (/^#(assignment|submission)=/.test(location.hash)) assignment();
+  });
 }
 
 /** The panel's code (one import, so the first load holds its address once). */
