@@ -90,14 +90,19 @@ export function studioAddress(location: Pick<Location, 'origin' | 'pathname'>, s
 /** The link that opens an assignment for students: its URL's, or the file packed into the link. */
 export async function assignmentLink(location: Pick<Location, 'origin' | 'pathname'>, source: AssignmentSource, text: string): Promise<string> {
   if (source.kind === 'url') return studioAddress(location, `?assignment=${encodeURIComponent(source.url)}`);
-  return studioAddress(location, `#assignment=${VERSION}.${await (await loadCodec()).packText(text)}`);
+  return studioAddress(location, fragment('assignment', await (await loadCodec()).packText(text)));
+}
+
+/** The fragment of a packed assignment or a submission: `#assignment=1.…`, `#submission=1.…`. */
+function fragment(kind: 'assignment' | 'submission', packed: string): string {
+  return ['#', kind, '=', VERSION, '.', packed].join('');
 }
 
 /** The link of a student's work (its fragment is checked against the length a link may have). */
 export async function submissionLink(location: Pick<Location, 'origin' | 'pathname'>, submission: Submission): Promise<{ ok: true; link: string } | { ok: false; error: string }> {
   const packed = await (await loadCodec()).packText(JSON.stringify({ v: VERSION, ...submission }));
   if (packed.length > MAX_FRAGMENT) return { ok: false, error: `the link would be ${packed.length.toLocaleString('en')} characters long, and a link holds at most ${MAX_FRAGMENT.toLocaleString('en')}` };
-  return { ok: true, link: studioAddress(location, `#submission=${VERSION}.${packed}`) };
+  return { ok: true, link: studioAddress(location, fragment('submission', packed)) };
 }
 
 /** The text inside a packed link (`1.<payload>`), or why it cannot be read. */
