@@ -10,6 +10,7 @@ import './assignment-panel.css';
 import { focusableCode } from '../page/focusable-code';
 import { problemText, readAssignment, type Assignment, type AssignmentProblem, type AssignmentTask } from './assignment-file.ts';
 import { fingerprint, type AssignmentSource, type Submission } from './assignment-links.ts';
+import { assignmentFileInput } from './assignment-input.ts';
 import { renderMarkdown } from './assignment-markdown.ts';
 import { SubmitControls } from './assignment-submit.ts';
 import { judge, validateAssignment, type GrammarBuilder, type Verdict } from './assignment-validate.ts';
@@ -112,16 +113,7 @@ export class AssignmentPanel {
 
   /** A button that picks an assignment file. */
   private fileButton(): HTMLElement {
-    const input = element('input', '');
-    input.type = 'file';
-    input.accept = '.md,.markdown,.txt,text/markdown,text/plain';
-    input.hidden = true;
-    input.dataset.testid = 'assignment-file';
-    input.addEventListener('change', () => {
-      const file = input.files?.[0];
-      if (file) this.openFile(file);
-      input.value = '';
-    });
+    const input = assignmentFileInput('assignment-file', this.openFile);
     const wrap = element('p', 'assignment-actions');
     wrap.append(button('Open an assignment file…', () => input.click()), input);
     return wrap;

@@ -8,6 +8,7 @@ import { directiveOfKind, loadVocabulary, writtenDirective, type PlantBuild, typ
 import { chapterHeading, isLesson, isLessonIndex, type Lesson, type LessonGrammar, type LessonSummary, type LessonTask } from './lesson-manifest';
 import { evaluateCheck, parseCheck, plantFacts, spokenAnswer } from './lesson-check';
 import { writtenSeed } from './written-seed';
+import { assignmentFileInput } from './assignment-input';
 // Loaded on demand: it imports other areas' files, not their indexes, which would bring their
 // wiring into its chunk's graph (and split the first load into more files).
 import { byId } from '../page/page-elements';
@@ -187,16 +188,7 @@ export class LearnPanel {
   /** "Your own assignments": an assignment file opened (docs/ASSIGNMENTS.md), its code loaded then. */
   private assignments(): HTMLElement {
     const section = element('section', 'learn-chapter');
-    const input = element('input', '');
-    input.type = 'file';
-    input.accept = '.md,.markdown,.txt,text/markdown,text/plain';
-    input.hidden = true;
-    input.dataset.testid = 'learn-assignment-file';
-    input.addEventListener('change', () => {
-      const file = input.files?.[0];
-      input.value = '';
-      if (file) void import('./assignment-opening').then((opening) => opening.openAssignmentFile(this.host, file));
-    });
+    const input = assignmentFileInput('learn-assignment-file', (file) => void import('./assignment-opening').then((opening) => opening.openAssignmentFile(this.host, file)));
     const about = 'An assignment of your course (a Markdown file: docs/ASSIGNMENTS.md). Open it to work on it, or, as its author, to see what is wrong with it.';
     section.append(element('h3', '', 'Your own assignments'), element('p', 'learn-section', about), button('Open an assignment file…', 'Open an assignment file…', () => input.click()), input);
     return section;
