@@ -78,6 +78,14 @@ describe('a lecturer’s assignment', () => {
     expect(await check(0)).toEqual({ state: 'pass', text: 'Passed: segments is 2048.' });
     expect((await check(1)).state).toBe('fail');
     await savePage(page, 'assignment-passed.png');
+    // Closed, the toolbar's Assignment button brings it back as it was; the lessons take its place.
+    await panel.getByRole('button', { name: 'Close the assignment' }).click();
+    expect(await panel.isVisible()).toBe(false);
+    await page.getByTestId('open-learn').click();
+    await page.getByTestId('learn-contents').getByRole('button', { name: 'Open an assignment file…' }).waitFor();
+    await page.getByTestId('open-assignment').click();
+    expect(await page.getByTestId('learn').isVisible()).toBe(false);
+    expect(await page.getByTestId('assignment-result').first().textContent()).toBe('Passed: segments is 2048.');
 
     await page.getByTestId('submit-open').click();
     await page.getByTestId('submit-name').fill('Ada Student');

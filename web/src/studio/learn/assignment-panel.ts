@@ -56,6 +56,8 @@ function say(result: HTMLElement, state: 'pass' | 'fail' | 'busy', text: string)
 export class AssignmentPanel {
   readonly panel = element('aside', 'learn-panel assignment-panel');
   private readonly article = element('article', 'learn-lesson');
+  /** The toolbar's Assignment button (beside Learn). */
+  private readonly toggle = button('Assignment', () => (this.panel.hidden ? this.reveal() : this.close()), '', 'Show or hide the assignment');
   /** Bumped by each assignment shown: the validation of an earlier one says nothing. */
   private shown = 0;
 
@@ -80,7 +82,17 @@ export class AssignmentPanel {
       this.close();
     });
     panel.hidden = true;
+    panel.id = 'assignment';
     document.querySelector('footer.statusbar')?.before(panel);
+    // The toolbar's Assignment button, beside Learn, brings a closed assignment back; the lessons
+    // take the same column, so opening them closes the assignment.
+    const learn = document.getElementById('open-learn');
+    this.toggle.id = 'open-assignment';
+    this.toggle.dataset.testid = 'open-assignment';
+    this.toggle.setAttribute('aria-controls', 'assignment');
+    this.toggle.setAttribute('aria-expanded', 'false');
+    learn?.after(this.toggle);
+    learn?.addEventListener('click', () => this.close(false));
   }
 
   /** Shows the panel (the Learn panel's column: the lessons close). */
@@ -88,10 +100,19 @@ export class AssignmentPanel {
     const learn = document.getElementById('learn');
     if (learn && !learn.hidden) document.getElementById('learn-close')?.click();
     this.panel.hidden = false;
+    this.toggle.setAttribute('aria-expanded', 'true');
   }
 
-  close(): void {
+  /** Hides the panel (the toolbar's Assignment button shows it again), giving that button the focus. */
+  close(focus = true): void {
     this.panel.hidden = true;
+    this.toggle.setAttribute('aria-expanded', 'false');
+    if (focus) this.toggle.focus();
+  }
+
+  /** Opens a grammar of the assignment; on a narrow screen, where the panel covers the studio, it then steps aside. */
+  private async open(text: string, title: string, key: string): Promise<void> {
+    if ((await this.host.open(text, title, key)) && window.matchMedia('(max-width: 800px)').matches) this.close(false);
   }
 
   /** Says that an assignment is on its way. */
@@ -223,7 +244,7 @@ export class AssignmentPanel {
     const code = element('pre', 'lesson-code');
     code.tabIndex = 0;
     code.append(element('code', '', text));
-    const open = button('Open in the editor', () => void this.host.open(text, title, key), 'primary', `Open in the editor: ${title}`);
+    const open = button('Open in the editor', () => void this.open(text, title, key), 'primary', `Open in the editor: ${title}`);
     open.dataset.testid = 'assignment-open';
     figure.append(element('figcaption', '', title), code, open);
     return figure;
@@ -246,7 +267,7 @@ export class AssignmentPanel {
     const actions = element('div', 'task-actions');
     actions.append(check);
     const start = assignment.grammars[task.start];
-    if (start) actions.append(button('Open the starting grammar', () => void this.host.open(start.text, start.title, `assignment/g${task.start}`), '', `Open the starting grammar: ${start.title}`));
+    if (start) actions.append(button('Open the starting grammar', () => void this.open(start.text, start.title, `assignment/g${task.start}`), '', `Open the starting grammar: ${start.title}`));
     box.append(heading, text, actions, result);
     if (!submitted) return { box };
     const verdict = element('p', 'task-result');
