@@ -134,6 +134,32 @@ describe('a lecturer’s assignment', () => {
 
 });
 
+describe('an assignment on a phone', () => {
+  it('covers the screen without scrolling sideways, steps aside for the editor, and comes back from the toolbar', async () => {
+    const phone = await browser.newPage({ viewport: { width: 390, height: 844 } });
+    try {
+      await openAt(phone, `${inject('studioUrl')}?assignment=${encodeURIComponent(`${course.base}${FILE}`)}`);
+      const panel = phone.getByTestId('assignment');
+      await panel.getByRole('heading', { name: 'Koch islands, one step further', level: 2 }).waitFor({ timeout: 30_000 });
+      expect(await panel.boundingBox()).toEqual({ x: 0, y: 0, width: 390, height: 844 });
+      expect(await phone.getByTestId('assignment-body').evaluate((e) => e.scrollWidth - e.clientWidth)).toBeLessThanOrEqual(0);
+      await savePage(phone, 'assignment-phone.png');
+      await panel.getByRole('button', { name: /^Open in the editor: / }).click();
+      await panel.waitFor({ state: 'hidden' });
+      const toggle = phone.getByTestId('open-assignment');
+      // Beside Learn, in the toolbar that scrolls sideways on a phone.
+      expect(await toggle.evaluate((b) => b.previousElementSibling?.id)).toBe('open-learn');
+      await toggle.scrollIntoViewIfNeeded();
+      const box = await toggle.boundingBox();
+      expect(box && box.x >= 0 && box.x + box.width <= 390, 'the Assignment button scrolls into the screen').toBe(true);
+      await toggle.click();
+      await panel.waitFor({ state: 'visible' });
+    } finally {
+      await phone.close();
+    }
+  });
+});
+
 describe('an assignment that cannot be opened as it is, or that is hostile', () => {
   it('says what the lecturer’s server needs when it sends no CORS header, and offers the file instead', async () => {
     const url = `${closed.base}${FILE}`;
