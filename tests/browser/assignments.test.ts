@@ -67,6 +67,17 @@ describe('a lecturer’s assignment', () => {
     expect(await nextBuild(page, before)).toBe('ok');
     expect(await editorText(page)).toBe(START);
     expect((await check(0)).state).toBe('fail');
+    // The toolbar's Iterations box is not the student's work: the check says it read the text.
+    before = await generation(page);
+    await page.getByTestId('iterations').fill('3');
+    await page.getByTestId('iterations').blur();
+    expect(await nextBuild(page, before)).toBe('ok');
+    const overridden = await check(0);
+    expect(overridden.state).toBe('fail');
+    expect(overridden.text).toContain('The check reads the grammar as written, at its #iterations 2; the plant on screen is at 3, set by the Iterations box.');
+    await page.getByTestId('iterations').fill('');
+    await page.getByTestId('iterations').blur();
+    await page.waitForFunction(() => !document.querySelector('[data-testid=iterations-box]')?.hasAttribute('data-override'));
 
     expect(await pasteText(page, wrong)).toBe('ok');
     expect(await check(0)).toEqual({

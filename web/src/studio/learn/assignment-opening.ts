@@ -48,7 +48,7 @@ async function openSubmission(host: AssignmentHost, packed: string): Promise<voi
 
 /** What opening from the address needs: the studio, and its first plant (then a submission may replace the text). */
 export interface AddressHost extends AssignmentHost {
-  preview: { readonly lastResult: unknown; nextDelivery(): Promise<void> };
+  preview: NonNullable<AssignmentHost['preview']> & { nextDelivery(): Promise<void> };
 }
 
 /** Waits for the studio's first plant (at most 20 s: a first build that crashed is never delivered). */

@@ -7,6 +7,7 @@
 // The solution is in the file but never shown (hidden, not secret: docs/ASSIGNMENTS.md says so).
 import './learn-panel.css';
 import './assignment-panel.css';
+import type { PlantBuild } from '../../core';
 import { focusableCode } from '../page/focusable-code';
 import { problemText, readAssignment, type Assignment, type AssignmentProblem, type AssignmentTask } from './assignment-file.ts';
 import { fingerprint, type AssignmentSource, type Submission } from './assignment-links.ts';
@@ -21,6 +22,17 @@ export interface AssignmentHost {
   text(): string;
   /** Opens `text` in the editor, asking first when the user's own text would be replaced; `key` names it. */
   open(text: string, title: string, key: string): Promise<boolean>;
+  /** The plant on screen (the toolbar's Iterations box may differ from the grammar's own). */
+  preview?: { readonly lastResult: { source: string; build: Pick<PlantBuild, 'ok' | 'stats' | 'grammarIterations'> } | undefined };
+}
+
+/** A note when the plant on screen of `text` is not at the grammar's own iterations (the toolbar's box), which a check does not read. */
+function overrideNote(host: AssignmentHost, text: string): string {
+  const shown = host.preview?.lastResult;
+  if (!shown || shown.source !== text || !shown.build.ok) return '';
+  const { stats, grammarIterations } = shown.build;
+  if (grammarIterations <= 0 || stats.iterations === grammarIterations) return '';
+  return ` (The check reads the grammar as written, at its #iterations ${grammarIterations}; the plant on screen is at ${stats.iterations}, set by the Iterations box.)`;
 }
 
 /** A submission shown: the student's work, and whether the assignment changed since. */
@@ -282,8 +294,9 @@ export class AssignmentPanel {
   /** Checks the editor's grammar as written against a task, and says the answer. */
   private async check(task: AssignmentTask, result: HTMLElement): Promise<void> {
     say(result, 'busy', 'Checking the grammar in the editor…');
-    const verdict = await judge(task.check, this.host.text(), this.builder);
+    const text = this.host.text();
+    const verdict = await judge(task.check, text, this.builder);
     const hint = verdict.state !== 'pass' && task.hint ? ` Hint: ${task.hint}` : '';
-    say(result, verdict.state === 'pass' ? 'pass' : 'fail', verdict.said + hint);
+    say(result, verdict.state === 'pass' ? 'pass' : 'fail', verdict.said + hint + overrideNote(this.host, text));
   }
 }
