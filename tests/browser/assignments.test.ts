@@ -145,6 +145,28 @@ describe('a lecturer’s assignment', () => {
 
 });
 
+describe('a submission of an assignment changed since', () => {
+  it('says so, and checks against the file as it is now', async () => {
+    const link = await page.getByTestId('submit-link').inputValue();
+    expect(link).toMatch(/#submission=1\./);
+    const original = readFileSync(new URL(`../../public/${FILE}`, import.meta.url), 'utf8');
+    course.replaced.set(FILE, original.replace('check: segments == 2048', 'check: segments == 16384'));
+    try {
+      await page.goto('about:blank');
+      await openAt(page, link);
+      const banner = page.getByTestId('submission-banner');
+      await banner.waitFor({ timeout: 30_000 });
+      expect(await banner.textContent()).toContain('The assignment has changed since the student worked on it');
+      await expect.poll(() => page.getByTestId('submission-verdict').first().textContent(), { timeout: 60_000 }).toBe('Submitted grammar: Not yet: segments is 2048, the task wants 16384.');
+      // The lecturer's changed file is checked too: its solution no longer passes its check.
+      await expect.poll(() => page.getByTestId('assignment-problems').getAttribute('data-state'), { timeout: 60_000 }).toBe('problems');
+      expect(await page.getByTestId('assignment-problems').textContent()).toContain('solution: the solution does not pass its own check: Not yet: segments is 2048, the task wants 16384.');
+    } finally {
+      course.replaced.delete(FILE);
+    }
+  });
+});
+
 describe('an assignment on a phone', () => {
   it('covers the screen without scrolling sideways, steps aside for the editor, and comes back from the toolbar', async () => {
     const phone = await browser.newPage({ viewport: { width: 390, height: 844 } });
