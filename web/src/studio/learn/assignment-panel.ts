@@ -9,6 +9,7 @@ import './learn-panel.css';
 import './assignment-panel.css';
 import type { PlantBuild } from '../../core';
 import { focusableCode } from '../page/focusable-code';
+import { GalleryThumbnails } from '../gallery/thumbnails';
 import { problemText, readAssignment, type Assignment, type AssignmentProblem, type AssignmentTask } from './assignment-file.ts';
 import { fingerprint, type AssignmentSource, type Submission } from './assignment-links.ts';
 import { assignmentFileInput } from './assignment-input.ts';
@@ -68,10 +69,12 @@ function say(result: HTMLElement, state: 'pass' | 'fail' | 'busy', text: string)
 export class AssignmentPanel {
   readonly panel = element('aside', 'learn-panel assignment-panel');
   private readonly article = element('article', 'learn-lesson');
-  /** The toolbar's Assignment button (beside Learn). */
-  private readonly toggle = button('Assignment', () => (this.panel.hidden ? this.reveal() : this.close()), '', 'Show or hide the assignment');
   /** Bumped by each assignment shown: the validation of an earlier one says nothing. */
   private shown = 0;
+  /** The grammars' pictures, drawn as the gallery's are, by key (`assignment/FINGERPRINT/gN`). */
+  private readonly texts = new Map<string, string>();
+  private readonly images = new Map<string, HTMLImageElement>();
+  private readonly thumbnails = new GalleryThumbnails(async (key) => this.texts.get(key) ?? '');
 
   constructor(
     private readonly host: AssignmentHost,
@@ -85,26 +88,26 @@ export class AssignmentPanel {
     const header = element('header', 'dialog-header');
     const heading = element('h2', '', 'Assignment');
     heading.id = 'assignment-heading';
-    header.append(heading, button('Close', () => this.close(), 'quiet', 'Close the assignment'));
+    header.append(heading, button('Close', () => this.closeToLearn(), 'quiet', 'Close the assignment'));
     article.dataset.testid = 'assignment-body';
     panel.append(header, article);
     panel.addEventListener('keydown', (event) => {
       if (event.key !== 'Escape' || event.defaultPrevented) return;
       event.preventDefault();
-      this.close();
+      this.closeToLearn();
+    });
+    this.thumbnails.onPicture((key, url) => {
+      const image = this.images.get(key);
+      if (!image) return;
+      if (url) image.src = url;
+      image.dataset.state = url ? 'ready' : 'failed';
     });
     panel.hidden = true;
     panel.id = 'assignment';
     document.querySelector('footer.statusbar')?.before(panel);
-    // The toolbar's Assignment button, beside Learn, brings a closed assignment back; the lessons
-    // take the same column, so opening them closes the assignment.
-    const learn = document.getElementById('open-learn');
-    this.toggle.id = 'open-assignment';
-    this.toggle.dataset.testid = 'open-assignment';
-    this.toggle.setAttribute('aria-controls', 'assignment');
-    this.toggle.setAttribute('aria-expanded', 'false');
-    learn?.after(this.toggle);
-    learn?.addEventListener('click', () => this.close(false));
+    // The lessons take the same column: opening them hides the assignment, and their list has
+    // "Back to the assignment" (learn-panel.ts) while one is open.
+    document.getElementById('open-learn')?.addEventListener('click', () => this.close());
   }
 
   /** Shows the panel (the Learn panel's column: the lessons close). */
@@ -112,19 +115,22 @@ export class AssignmentPanel {
     const learn = document.getElementById('learn');
     if (learn && !learn.hidden) document.getElementById('learn-close')?.click();
     this.panel.hidden = false;
-    this.toggle.setAttribute('aria-expanded', 'true');
   }
 
-  /** Hides the panel (the toolbar's Assignment button shows it again), giving that button the focus. */
-  close(focus = true): void {
+  /** Hides the panel (the Learn panel's list brings it back). */
+  close(): void {
     this.panel.hidden = true;
-    this.toggle.setAttribute('aria-expanded', 'false');
-    if (focus) this.toggle.focus();
+  }
+
+  /** Closes the panel from its own controls: the focus goes to Learn, whose list brings it back. */
+  private closeToLearn(): void {
+    this.close();
+    document.getElementById('open-learn')?.focus();
   }
 
   /** Opens a grammar of the assignment; on a narrow screen, where the panel covers the studio, it then steps aside. */
   private async open(text: string, title: string, key: string): Promise<void> {
-    if ((await this.host.open(text, title, key)) && window.matchMedia('(max-width: 800px)').matches) this.close(false);
+    if ((await this.host.open(text, title, key)) && window.matchMedia('(max-width: 800px)').matches) this.close();
   }
 
   /** Says that an assignment is on its way. */
@@ -170,7 +176,7 @@ export class AssignmentPanel {
     report.dataset.testid = 'assignment-problems';
     report.setAttribute('aria-live', 'polite');
     const base = source.kind === 'url' ? source.url : location.href;
-    const body = this.body(assignment, base, submitted);
+    const body = this.body(assignment, base, submitted, print);
     const submit = new SubmitControls({ assignment, source, text, fingerprint: print }, () => this.host.text());
     this.article.replaceChildren(
       ...(submitted ? [this.banner(submitted, assignment)] : []),
@@ -223,12 +229,13 @@ export class AssignmentPanel {
   }
 
   /** The assignment's text, grammars and tasks. */
-  private body(assignment: Assignment, base: string, submitted: ShownSubmission | undefined): HTMLElement {
+  private body(assignment: Assignment, base: string, submitted: ShownSubmission | undefined, print: string): HTMLElement {
+    this.images.clear();
     const body = element('div', 'lesson-body');
     const verdicts: Promise<Verdict>[] = [];
     for (const part of assignment.parts) {
       if (part.kind === 'text') body.append(renderMarkdown(part.markdown, base));
-      else if (part.kind === 'grammar') body.append(this.figure(assignment.grammars[part.index].title, assignment.grammars[part.index].text, `assignment/g${part.index}`));
+      else if (part.kind === 'grammar') body.append(this.figure(assignment.grammars[part.index].title, assignment.grammars[part.index].text, `assignment/g${part.index}`, print));
       else {
         const task = this.task(assignment, assignment.tasks[part.index], part.index, base, submitted);
         body.append(task.box);
@@ -236,6 +243,7 @@ export class AssignmentPanel {
       }
     }
     if (submitted) void this.score(verdicts);
+    this.thumbnails.request([...this.images.keys()]);
     return body;
   }
 
@@ -250,15 +258,25 @@ export class AssignmentPanel {
     score.dataset.state = passed === all.length ? 'pass' : 'fail';
   }
 
-  /** A grammar with its text and a button that opens it. */
-  private figure(title: string, text: string, key: string): HTMLElement {
+  /** A grammar with its picture, its text and a button that opens it. */
+  private figure(title: string, text: string, key: string, print: string): HTMLElement {
     const figure = element('figure', 'lesson-figure');
+    const picture = `${key}/${print}`; // a picture per version of the file
+    this.texts.set(picture, text);
+    const image = element('img', 'thumbnail');
+    image.alt = `Picture of ${title}`;
+    image.width = 320;
+    image.height = 240;
+    const known = this.thumbnails.picture(picture);
+    if (known) image.src = known;
+    image.dataset.state = known === undefined ? 'pending' : known ? 'ready' : 'failed';
+    this.images.set(picture, image);
     const code = element('pre', 'lesson-code');
     code.tabIndex = 0;
     code.append(element('code', '', text));
     const open = button('Open in the editor', () => void this.open(text, title, key), 'primary', `Open in the editor: ${title}`);
     open.dataset.testid = 'assignment-open';
-    figure.append(element('figcaption', '', title), code, open);
+    figure.append(image, element('figcaption', '', title), code, open);
     return figure;
   }
 

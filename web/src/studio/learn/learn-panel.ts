@@ -179,10 +179,26 @@ export class LearnPanel {
       }),
     );
     contents.append(this.assignments());
+    const back = this.backToAssignment();
+    if (back) contents.prepend(back);
     contents.hidden = false;
     lesson.hidden = true;
     const first = (this.current && contents.querySelector<HTMLButtonElement>(`[data-slug="${this.current.slug}"]`)) || contents.querySelector('button');
     first?.focus();
+  }
+
+  /** "Back to the assignment", when one was opened (assignment-panel.ts) and then closed. */
+  private backToAssignment(): HTMLElement | undefined {
+    const shown = document.getElementById('assignment');
+    const title = shown?.querySelector('.lesson-title')?.textContent;
+    if (!shown || !title) return undefined;
+    const back = button(`Back to the assignment: ${title}`, `Back to the assignment: ${title}`, () => {
+      this.close();
+      shown.hidden = false;
+      shown.querySelector<HTMLElement>('.lesson-title')?.focus();
+    }, 'learn-entry');
+    back.dataset.testid = 'learn-back-to-assignment';
+    return back;
   }
 
   /** "Your own assignments": an assignment file opened (docs/ASSIGNMENTS.md), its code loaded then. */
