@@ -10,6 +10,7 @@ import './assignment-panel.css';
 import type { PlantBuild } from '../../core';
 import { focusableCode } from '../page/focusable-code';
 import { GalleryThumbnails } from '../gallery/thumbnails';
+import { closeOnEscape, showPictures } from './side-panel';
 import { problemText, readAssignment, type Assignment, type AssignmentProblem, type AssignmentTask } from './assignment-file.ts';
 import { fingerprint, type AssignmentSource, type Submission } from './assignment-links.ts';
 import { assignmentFileInput } from './assignment-input.ts';
@@ -91,17 +92,8 @@ export class AssignmentPanel {
     header.append(heading, button('Close', () => this.closeToLearn(), 'quiet', 'Close the assignment'));
     article.dataset.testid = 'assignment-body';
     panel.append(header, article);
-    panel.addEventListener('keydown', (event) => {
-      if (event.key !== 'Escape' || event.defaultPrevented) return;
-      event.preventDefault();
-      this.closeToLearn();
-    });
-    this.thumbnails.onPicture((key, url) => {
-      const image = this.images.get(key);
-      if (!image) return;
-      if (url) image.src = url;
-      image.dataset.state = url ? 'ready' : 'failed';
-    });
+    closeOnEscape(panel, () => this.closeToLearn());
+    showPictures(this.thumbnails, this.images);
     panel.hidden = true;
     panel.id = 'assignment';
     document.querySelector('footer.statusbar')?.before(panel);

@@ -14,6 +14,7 @@ import { assignmentFileInput } from './assignment-input';
 import { byId } from '../page/page-elements';
 import { focusableCode } from '../page/focusable-code';
 import { GalleryThumbnails } from '../gallery/thumbnails';
+import { closeOnEscape, showPictures } from './side-panel';
 
 /** The list of lessons, relative to the page (built by scripts/lessons-plugin.ts). */
 const INDEX_URL = 'lessons/index.json';
@@ -101,17 +102,8 @@ export class LearnPanel {
   ) {
     els.toggle.addEventListener('click', () => (els.panel.hidden ? void this.open() : this.close()));
     els.close.addEventListener('click', () => this.close());
-    els.panel.addEventListener('keydown', (event) => {
-      if (event.key !== 'Escape' || event.defaultPrevented) return;
-      event.preventDefault();
-      this.close();
-    });
-    this.thumbnails.onPicture((key, url) => {
-      const image = this.images.get(key);
-      if (!image) return;
-      if (url) image.src = url;
-      image.dataset.state = url ? 'ready' : 'failed';
-    });
+    closeOnEscape(els.panel, () => this.close());
+    showPictures(this.thumbnails, this.images);
   }
 
   /** Opens the panel on the lesson shown last, or on the list of lessons. */
