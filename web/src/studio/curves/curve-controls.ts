@@ -40,7 +40,7 @@ export function makeCurveControls(): CurveControls {
   plot.setAttribute('role', 'application');
   plot.setAttribute(
     'aria-label',
-    'Curve: drag a point, double-click to add one. Arrow keys move the chosen point (Shift ten times as far, Alt a tenth), [ and ] choose the point before or after, Insert adds a point, Delete removes the chosen one',
+    'Curve: drag a point, double-click to add one. Arrow keys move the chosen point (Shift ten times as far, Alt a tenth), [ and ] choose the point before or after, Home and End the first and the last, Insert adds a point, Delete removes the chosen one',
   );
   plot.setAttribute('aria-describedby', c.status.id);
   c.dialog.setAttribute('aria-labelledby', c.title.id);

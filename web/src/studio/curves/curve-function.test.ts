@@ -45,5 +45,10 @@ describe('the plot', () => {
     expect(frame.y[0]).toBeLessThan(0);
     expect(frame.y[1]).toBeGreaterThan(1);
     expect(frameOf([[2, 3], [2, 3]], []).x[1]).toBeGreaterThan(2);
+    // A level curve (its samples off by rounding) is framed with 0 in sight, not magnified.
+    const level: Point2[] = [[0, 1], [0.33, 1], [0.66, 1], [1, 1]];
+    const y = frameOf(level, curveOutline('curve', level)).y;
+    expect(y[0]).toBeLessThan(0);
+    expect(y[1]).toBeGreaterThan(1.1);
   });
 });

@@ -151,11 +151,17 @@ export class CurvePanel {
     this.draw();
   }
 
-  /** Whether a point stands outside the frame or on its edge (a drag ended there: room to go further). */
+  /**
+   * Whether the frame no longer suits the points: one stands outside it or on its edge (a drag
+   * ended there: room to go further), or they fill less than half of it (typed smaller).
+   */
   private outsideFrame(): boolean {
     const { x, y } = this.c.plot.frame;
     const [dx, dy] = [(x[1] - x[0]) * 0.01, (y[1] - y[0]) * 0.01];
-    return this.values().some(([px, py]) => px < x[0] + dx || px > x[1] - dx || py < y[0] + dy || py > y[1] - dy);
+    const values = this.values();
+    if (values.some(([px, py]) => px < x[0] + dx || px > x[1] - dx || py < y[0] + dy || py > y[1] - dy)) return true;
+    const ideal = frameOf(values, curveOutline(this.declaration?.kind ?? 'curve', values));
+    return ideal.x[1] - ideal.x[0] < 0.5 * (x[1] - x[0]) || ideal.y[1] - ideal.y[0] < 0.5 * (y[1] - y[0]);
   }
 
   /** Says what the curve is, or why it cannot be edited, or which rule of the language it breaks. */
@@ -314,7 +320,7 @@ export class CurvePanel {
     this.draw();
   }
 
-  /** Arrow keys move the chosen point (Shift ten times as far, Alt a tenth); [ and ] choose another; Insert adds, Delete removes. */
+  /** Arrow keys move the chosen point (Shift ten times as far, Alt a tenth); [ and ] choose another, Home and End the first and the last; Insert adds, Delete removes. */
   private key(event: KeyboardEvent): void {
     const count = this.points.length;
     if (!this.declaration || count === 0 || event.ctrlKey || event.metaKey) return;
@@ -323,7 +329,8 @@ export class CurvePanel {
   }
 
   private chooseOrChange(key: string, count: number): boolean {
-    if (key === '[' || key === ']') {
+    if (key === 'Home' || key === 'End') this.choose(key === 'Home' ? 0 : count - 1);
+    else if (key === '[' || key === ']') {
       const k = this.selected ?? (key === ']' ? -1 : 0);
       this.choose((k + (key === ']' ? 1 : count - 1)) % count);
     } else if (key === 'Insert' || key === '+') this.addInWidestGap();
@@ -350,7 +357,7 @@ export class CurvePanel {
     plot.element.focus();
     if (k === null) return;
     event.preventDefault();
-    const at = plot.valueAt(event.clientX, event.clientY);
+    const at = plot.valueAt(event.clientX, event.clientY, false);
     const p = this.points[k].value;
     plot.element.setPointerCapture(event.pointerId);
     this.drag = { pointer: event.pointerId, k, edit: this.editOf(k), grab: [p[0] - at[0], p[1] - at[1]], pending: null };
@@ -359,7 +366,7 @@ export class CurvePanel {
 
   private pointerMove(event: PointerEvent): void {
     const drag = this.drag;
-    const at = this.c.plot.valueAt(event.clientX, event.clientY);
+    const at = this.c.plot.valueAt(event.clientX, event.clientY, !drag);
     if (!drag) return this.showUnder(at);
     if (event.pointerId !== drag.pointer) return;
     const first = drag.pending === null;

@@ -27,16 +27,24 @@ export function ticks(low: number, high: number, count = 5): number[] {
   return out;
 }
 
-/** The frame that holds `points` and the line between them, with a margin. */
+/**
+ * The frame that holds `points` and the line between them, with room around them to drag into;
+ * y = 0 stays in sight when the values keep one sign (a length, an angle), as funcedit shows its
+ * functions from 0: the frame does not magnify a small change into a steep one.
+ */
 export function frameOf(points: readonly Point2[], outline: readonly Point2[]): Frame {
-  const range = (values: number[], pad: number): [number, number] => {
-    const [low, high] = [Math.min(...values), Math.max(...values)];
+  const range = (values: number[], pad: number, withZero: boolean): [number, number] => {
+    let [low, high] = [Math.min(...values), Math.max(...values)];
     if (!Number.isFinite(low) || !Number.isFinite(high)) return [0, 1];
+    // A level line sampled off a spline differs from its level by rounding only: level, then.
+    if (high - low <= 1e-9 * Math.max(Math.abs(low), Math.abs(high))) low = high;
+    if (withZero && low >= 0) low = 0;
+    else if (withZero && high <= 0) high = 0;
     const span = high - low || Math.max(1, Math.abs(low));
     return [low - span * pad, high + span * pad];
   };
   const all = [...points, ...outline];
-  return { x: range(all.map((p) => p[0]), 0.04), y: range(all.map((p) => p[1]), 0.12) };
+  return { x: range(all.map((p) => p[0]), 0.04, false), y: range(all.map((p) => p[1]), 0.2, true) };
 }
 
 function svg<K extends keyof SVGElementTagNameMap>(tag: K, attributes: Record<string, string | number> = {}): SVGElementTagNameMap[K] {
@@ -60,14 +68,15 @@ export class CurvePlot {
     return [MARGIN.left + ((p[0] - x[0]) / (x[1] - x[0])) * w, MARGIN.top + (1 - (p[1] - y[0]) / (y[1] - y[0])) * h];
   }
 
-  /** The value at the page's point (clientX, clientY), kept inside the frame. */
-  valueAt(clientX: number, clientY: number): Point2 {
+  /** The value at the page's point (clientX, clientY); `inside`: kept inside the frame (else a drag may go past it). */
+  valueAt(clientX: number, clientY: number, inside = true): Point2 {
     const box = this.element.getBoundingClientRect();
     const { x, y } = this.frame;
     const w = this.width - MARGIN.left - MARGIN.right;
     const h = this.height - MARGIN.top - MARGIN.bottom;
-    const u = Math.min(1, Math.max(0, (clientX - box.left - MARGIN.left) / w));
-    const v = Math.min(1, Math.max(0, (clientY - box.top - MARGIN.top) / h));
+    const keep = (t: number) => (inside ? Math.min(1, Math.max(0, t)) : t);
+    const u = keep((clientX - box.left - MARGIN.left) / w);
+    const v = keep((clientY - box.top - MARGIN.top) / h);
     return [x[0] + u * (x[1] - x[0]), y[0] + (1 - v) * (y[1] - y[0])];
   }
 
@@ -130,7 +139,7 @@ export class CurvePlot {
       out.push(svg('line', { class: x === 0 ? 'curve-zero' : 'curve-grid', x1: u, x2: u, y1: top, y2: bottom }));
       out.push(Object.assign(svg('text', { class: 'curve-tick', x: u, y: bottom + 16, 'text-anchor': 'middle' }), { textContent: label(x) }));
     }
-    for (const y of ticks(...this.frame.y, 4)) {
+    for (const y of ticks(...this.frame.y, Math.max(3, Math.round(this.height / 45)))) {
       const [, v] = this.pixelOf([0, y]);
       out.push(svg('line', { class: y === 0 ? 'curve-zero' : 'curve-grid', x1: left, x2: right, y1: v, y2: v }));
       out.push(Object.assign(svg('text', { class: 'curve-tick', x: left - 6, y: v + 4, 'text-anchor': 'end' }), { textContent: label(y) }));
