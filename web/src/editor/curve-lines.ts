@@ -4,6 +4,7 @@
 // separated by spaces or commas, up to a `//` comment). The editor's gutter marks these lines; the
 // curve editor (studio/curves) reads and rewrites their numbers. Pure but for the vocabulary.
 import { directiveOfKind, vocabularyIfLoaded, writtenDirective } from '../core';
+import { curveLinePattern } from './surface-lines';
 
 /** How a declaration reads its points: a B-spline's control points, or a table's corners. */
 export type CurveFunctionKind = 'curve' | 'table';
@@ -37,23 +38,12 @@ export interface CurveDeclaration {
 /** A number as the core reads one: decimal, with an optional sign and exponent. */
 const NUMBER = /^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/;
 
-let linePattern: RegExp | undefined;
-let names: Record<string, CurveFunctionKind> = {};
-
-/** A line that declares a curve function: the directive (group 2) and the name (group 3); undefined until the vocabulary has arrived. */
-function curveLine(): RegExp | undefined {
-  if (linePattern) return linePattern;
+/** The directives as written, and the kind each declares; empty until the vocabulary has arrived. */
+function kinds(): Record<string, CurveFunctionKind> {
   const vocabulary = vocabularyIfLoaded();
-  if (!vocabulary) return undefined;
+  if (!vocabulary) return {};
   const [curve, table] = ['Curve', 'Table'].map((kind) => writtenDirective(directiveOfKind(vocabulary, kind)));
-  names = { [curve]: 'curve', [table]: 'table' };
-  linePattern = new RegExp(`^([ \\t]*(${curve}|${table})[ \\t]+)([A-Za-z_][A-Za-z0-9_]*)`);
-  return linePattern;
-}
-
-/** The name of the curve function the line `line` declares, or null (also before the vocabulary has arrived). */
-export function curveNameOf(line: string): string | null {
-  return curveLine()?.exec(line)?.[3] ?? null;
+  return { [curve]: 'curve', [table]: 'table' };
 }
 
 /** Where a `//` comment starts in `rest` (after a blank, as the core's parser has it), or its length. */
@@ -67,7 +57,7 @@ function commentStart(rest: string): number {
 
 /** The declaration on the line `line` that starts at `lineFrom` in the text, or null when it declares none. */
 export function curveDeclarationOn(line: string, lineFrom: number): CurveDeclaration | null {
-  const match = curveLine()?.exec(line);
+  const match = curveLinePattern()?.exec(line);
   if (!match) return null;
   const directive = match[2];
   const argsFrom = match[0].length;
@@ -85,13 +75,13 @@ export function curveDeclarationOn(line: string, lineFrom: number): CurveDeclara
     numbers.push({ value, text: word[0], from, to: from + word[0].length });
   }
   if (!problem && numbers.length % 2 === 1) problem = `its ${numbers.length} numbers are not pairs x y`;
-  return { kind: names[directive], name: match[3], directive, lineFrom, lineTo: lineFrom + line.length, argsFrom: lineFrom + argsFrom, argsTo: lineFrom + argsTo, numbers, problem };
+  return { kind: kinds()[directive], name: match[3], directive, lineFrom, lineTo: lineFrom + line.length, argsFrom: lineFrom + argsFrom, argsTo: lineFrom + argsTo, numbers, problem };
 }
 
 /** Every curve function `text` declares, in the order written. */
 export function curveDeclarations(text: string): CurveDeclaration[] {
   const out: CurveDeclaration[] = [];
-  if (!curveLine() || !Object.keys(names).some((name) => text.includes(name))) return out;
+  if (!curveLinePattern() || !Object.keys(kinds()).some((name) => text.includes(name))) return out;
   let from = 0;
   for (const line of text.split('\n')) {
     const found = line.includes('#') ? curveDeclarationOn(line, from) : null;

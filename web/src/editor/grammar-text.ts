@@ -31,8 +31,14 @@ export interface GrammarEditorOptions {
   openEditor?: OpenEditor;
 }
 
+/** What the text asks to edit: a surface by its letter, or a curve function by its name. */
+export interface EditorTarget {
+  what: 'surface' | 'curve';
+  name: string;
+}
+
 /** Opens the surface editor on a surface's letter, or the curve editor on a curve function's name. */
-export type OpenEditor = (what: 'surface' | 'curve', name: string) => void;
+export type OpenEditor = (target: EditorTarget) => void;
 
 /**
  * How a change enters the undo history: as one undo step of its own (true), not at all (false: a
@@ -119,7 +125,7 @@ export function createLazyGrammarEditor(options: LazyGrammarEditorOptions, load:
   const onChange = (text: string) => changeListeners.forEach((listener) => listener(text));
   const onCursor = (pos: number) => cursorListeners.forEach((listener) => listener(pos));
   const editorListeners: OpenEditor[] = [];
-  const openEditor: OpenEditor = (what, name) => editorListeners.forEach((listener) => listener(what, name));
+  const openEditor: OpenEditor = (target) => editorListeners.forEach((listener) => listener(target));
   const area = document.createElement('textarea');
   area.className = 'grammar-placeholder';
   area.dataset.testid = 'grammar-placeholder';

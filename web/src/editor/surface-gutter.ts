@@ -4,26 +4,19 @@
 // pressed, and Alt+B (B for Bézier, and B-spline) on such a line, from the keyboard.
 import { gutter, GutterMarker, keymap, type EditorView } from '@codemirror/view';
 import { RangeSet, type Extension, type Text } from '@codemirror/state';
-import { curveNameOf } from './curve-lines';
-import type { OpenEditor } from './grammar-text';
-import { surfaceLetterOf } from './surface-lines';
+import type { EditorTarget, OpenEditor } from './grammar-text';
+import { curveNameOf, surfaceLetterOf } from './surface-lines';
 
 /** The key that opens the editor of the cursor's line. */
 export const SURFACE_KEY = 'Alt-b';
 
-/** What a line declares that an editor edits. */
-interface Editable {
-  what: 'surface' | 'curve';
-  name: string;
-}
-
-class EditableMarker extends GutterMarker {
-  constructor(readonly target: Editable) {
+class EditorTargetMarker extends GutterMarker {
+  constructor(readonly target: EditorTarget) {
     super();
   }
 
   override eq(other: GutterMarker): boolean {
-    return other instanceof EditableMarker && other.target.what === this.target.what && other.target.name === this.target.name;
+    return other instanceof EditorTargetMarker && other.target.what === this.target.what && other.target.name === this.target.name;
   }
 
   override toDOM(): Node {
@@ -38,7 +31,7 @@ class EditableMarker extends GutterMarker {
 }
 
 /** What the line `text` declares that an editor edits, or null. */
-function editableOf(text: string): Editable | null {
+function editableOf(text: string): EditorTarget | null {
   if (!text.includes('#')) return null;
   const letter = surfaceLetterOf(text);
   if (letter !== null) return { what: 'surface', name: letter };
@@ -52,7 +45,7 @@ function markers(doc: Text): RangeSet<GutterMarker> {
   for (let n = 1; n <= doc.lines; n++) {
     const line = doc.line(n);
     const target = editableOf(line.text);
-    if (target) ranges.push(new EditableMarker(target).range(line.from));
+    if (target) ranges.push(new EditorTargetMarker(target).range(line.from));
   }
   return RangeSet.of(ranges);
 }
@@ -60,7 +53,7 @@ function markers(doc: Text): RangeSet<GutterMarker> {
 /** Opens the editor of the line at `pos`; false when it declares nothing an editor edits. */
 function openAt(view: EditorView, pos: number, open: OpenEditor): boolean {
   const target = editableOf(view.state.doc.lineAt(pos).text);
-  if (target) open(target.what, target.name);
+  if (target) open(target);
   return target !== null;
 }
 

@@ -5,7 +5,8 @@
 import { history, undo, undoDepth } from '@codemirror/commands';
 import { EditorState, type Transaction } from '@codemirror/state';
 import { describe, expect, it } from 'vitest';
-import { curveDeclarationOn, curveDeclarations, curveNameOf, type CurveDeclaration } from '../../editor/curve-lines';
+import { curveDeclarationOn, curveDeclarations, type CurveDeclaration } from '../../editor/curve-lines';
+import { curveNameOf } from '../../editor/surface-lines';
 import type { TextChange } from '../../editor/growth-directives';
 import { rangesTransaction } from '../../editor/grammar-editor';
 import { PointEdit, type PointTextEditor } from '../surfaces/point-edit';

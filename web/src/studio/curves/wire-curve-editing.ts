@@ -39,7 +39,7 @@ export class LazyCurveEditing {
 /** The curve editor on the grammar in `editor`. */
 export function wireCurveEditing({ editor, notice }: Pick<StudioParts, 'editor' | 'notice'>): void {
   const editing = new LazyCurveEditing({ editor }, notice);
-  editor.onOpenEditor((what, name) => {
+  editor.onOpenEditor(({ what, name }) => {
     if (what === 'curve') editing.open(name);
   });
   editor.onChange(() => editing.textChanged());

@@ -26,8 +26,8 @@ export function wireSurfaceEditing({ els, editor, notice }: StudioParts): Surfac
   );
   loaded.catch((error: unknown) => notice.show('error', `The surface editor could not load: ${String(error)}`));
   editor.onChange((text) => tools?.changed(text));
-  editor.onOpenEditor((what, letter) => {
-    if (what === 'surface') void loaded.then((t) => t.open(letter));
+  editor.onOpenEditor(({ what, name }) => {
+    if (what === 'surface') void loaded.then((t) => t.open(name));
   });
   return { pointOnPage: (k) => tools?.pointOnPage(k) ?? null };
 }
