@@ -6,12 +6,13 @@
 // The rules it keeps: a point never passes its neighbours' x, the first and the last keep their x
 // (they bound the function's domain, as in funcedit), and a curve keeps its least number of
 // points (4 for a `#curve`, 2 for a `#table`).
-import { curveDeclarations, type CurveDeclaration } from '../../editor/curve-lines';
+import { curveDeclarations, type CurveDeclaration, type CurveFunctionKind } from '../../editor/curve-lines';
 import { PointEdit, type PointTextEditor } from '../surfaces/point-edit';
 import { makeCurveControls } from './curve-controls';
 import { curveOutline, curveValue, LEAST_POINTS, type Point2 } from './curve-function';
 import { frameOf } from './curve-plot';
-import { addPointChange, decimalsFor, fixedDecimals, numberText, removePointChange, writtenPoints, type WrittenPoint } from './curve-text';
+import { curveSource, type CurveSource } from './curve-source';
+import { decimalsFor, fixedDecimals, numberText, type WrittenPoint } from './curve-text';
 
 /** What the editor needs of the page: the grammar text. */
 export interface CurveEditorHost {
@@ -47,7 +48,8 @@ export function whyNotEditable(d: CurveDeclaration | null, name: string, text: s
 export class CurvePanel {
   private readonly c = makeCurveControls();
   private name = '';
-  private declaration: CurveDeclaration | null = null;
+  /** The points in the text and how an edit of them is written; null while the line cannot be edited. */
+  private source: CurveSource | null = null;
   private points: WrittenPoint[] = [];
   private selected: number | null = null;
   private under: Point2 | null = null;
@@ -121,10 +123,10 @@ export class CurvePanel {
     const text = this.host.editor.text();
     const declaration = declarationOf(text, this.name);
     const why = whyNotEditable(declaration, this.name, text);
-    this.declaration = why ? null : declaration;
-    this.points = this.declaration ? writtenPoints(this.declaration) : [];
+    this.source = why || !declaration ? null : curveSource(text, declaration);
+    this.points = this.source?.points ?? [];
     if (this.selected !== null && this.selected >= this.points.length) this.selected = null;
-    const kind = declaration?.kind ?? 'curve';
+    const kind = this.kind();
     this.c.title.textContent = `${declaration?.directive ?? 'Curve'} ${this.name}`;
     if (this.points.length > 0 && !this.drag && (refit || this.outsideFrame())) this.fit();
     this.showStatus(why);
@@ -135,8 +137,12 @@ export class CurvePanel {
   }
 
   private draw(): void {
-    const kind = this.declaration?.kind ?? 'curve';
-    this.c.plot.draw(kind, this.values(), this.selected, this.under);
+    this.c.plot.draw(this.kind(), this.values(), this.selected, this.under);
+  }
+
+  /** How the points draw and read. */
+  private kind(): CurveFunctionKind {
+    return this.source?.kind ?? 'curve';
   }
 
   private values(): Point2[] {
@@ -147,7 +153,7 @@ export class CurvePanel {
   private fit(): void {
     const values = this.values();
     if (values.length === 0) return;
-    this.c.plot.frame = frameOf(values, curveOutline(this.declaration?.kind ?? 'curve', values));
+    this.c.plot.frame = frameOf(values, curveOutline(this.kind(), values));
     this.draw();
   }
 
@@ -160,23 +166,22 @@ export class CurvePanel {
     const [dx, dy] = [(x[1] - x[0]) * 0.01, (y[1] - y[0]) * 0.01];
     const values = this.values();
     if (values.some(([px, py]) => px < x[0] + dx || px > x[1] - dx || py < y[0] + dy || py > y[1] - dy)) return true;
-    const ideal = frameOf(values, curveOutline(this.declaration?.kind ?? 'curve', values));
+    const ideal = frameOf(values, curveOutline(this.kind(), values));
     return ideal.x[1] - ideal.x[0] < 0.5 * (x[1] - x[0]) || ideal.y[1] - ideal.y[0] < 0.5 * (y[1] - y[0]);
   }
 
   /** Says what the curve is, or why it cannot be edited, or which rule of the language it breaks. */
   private showStatus(why: string | null): void {
     const status = this.c.status;
-    const d = this.declaration;
-    const problem = why ?? (d ? ruleBroken(d, this.values()) : null);
+    const source = this.source;
+    const problem = why ?? (source ? ruleBroken(source, this.values()) : null);
     status.dataset.state = problem ? 'error' : 'ok';
-    if (problem || !d) {
+    if (problem || !source) {
       status.textContent = problem ?? '';
       return;
     }
     const [first, last] = [this.points[0].value[0], this.points[this.points.length - 1].value[0]];
-    const what = d.kind === 'curve' ? 'control points of a B-spline' : 'points joined by straight lines';
-    status.textContent = `${this.points.length} ${what}, x from ${first} to ${last}`;
+    status.textContent = `${source.description}, x from ${first} to ${last}`;
   }
 
   /** The chosen point's x and y in the fields, and what may be done with it. */
@@ -198,16 +203,17 @@ export class CurvePanel {
   }
 
   private whyNotRemovable(k: number | null): string | null {
-    const d = this.declaration;
-    if (!d || k === null) return 'Choose a point to remove';
+    const source = this.source;
+    if (!source || k === null) return 'Choose a point to remove';
     if (this.isEnd(k)) return 'The first and the last point bound the function: they stay';
-    if (this.points.length <= LEAST_POINTS[d.kind]) return `${d.directive} needs at least ${LEAST_POINTS[d.kind]} points`;
+    const least = LEAST_POINTS[source.kind];
+    if (this.points.length <= least) return `${source.kind === 'curve' ? 'A curve' : 'A table'} needs at least ${least} points`;
     return null;
   }
 
   /** The decimals a number on `axis` (0: x, 1: y) is written with: the line's own fixed count, else a thousandth of the frame. */
   private decimals(axis: number): { decimals: number; fixed: boolean } {
-    const fixed = this.declaration ? fixedDecimals(this.declaration) : null;
+    const fixed = this.source ? fixedDecimals(this.source.declaration) : null;
     if (fixed !== null) return { decimals: fixed, fixed: true };
     const [low, high] = axis === 0 ? this.c.plot.frame.x : this.c.plot.frame.y;
     return { decimals: decimalsFor(high - low), fixed: false };
@@ -244,14 +250,13 @@ export class CurvePanel {
 
   /** An edit of point `k`: its x and y, or its y alone (an end). */
   private editOf(k: number): PointEdit {
-    const p = this.points[k];
-    return new PointEdit(this.host.editor, this.isEnd(k) ? [p.y] : [p.x, p.y]);
+    return new PointEdit(this.host.editor, this.source?.spansOf(k) ?? []);
   }
 
   /** Writes point `k` at `to` through `edit`; false when the text changed under the edit. */
   private write(edit: PointEdit, k: number, to: Point2): boolean {
     const texts = this.texts(k, this.allowed(k, to));
-    return edit.write(this.isEnd(k) ? [texts[1]] : texts);
+    return this.source ? edit.write(this.source.insertsOf(k, texts)) : false;
   }
 
   /** Moves point `k` to `to` as one undo step (a nudge, a number typed). */
@@ -264,7 +269,7 @@ export class CurvePanel {
 
   private typed(axis: number, value: number): void {
     const k = this.selected;
-    if (k === null || !this.declaration || !Number.isFinite(value)) return this.showPoint();
+    if (k === null || !this.source || !Number.isFinite(value)) return this.showPoint();
     const to: [number, number] = [...this.points[k].value];
     to[axis] = value;
     this.place(k, to);
@@ -278,14 +283,14 @@ export class CurvePanel {
 
   /** Adds a point at `at` (between the ends: never before the first nor after the last) as one undo step, and chooses it. */
   private addAt(at: Point2): void {
-    const d = this.declaration;
+    const source = this.source;
     const values = this.values();
-    if (!d || values.length < 2) return;
+    if (!source || values.length < 2) return;
     let k = values.findIndex((p) => p[0] > at[0]);
     k = Math.min(values.length - 1, Math.max(1, k < 0 ? values.length - 1 : k));
     const x = Math.min(values[k][0], Math.max(values[k - 1][0], at[0]));
     const texts = [0, 1].map((axis) => numberText([x, at[1]][axis], this.decimals(axis).decimals, this.decimals(axis).fixed));
-    this.host.editor.replaceRanges([addPointChange(this.host.editor.text(), d, k, [texts[0], texts[1]])], { history: true });
+    this.host.editor.replaceRanges(source.addChanges(this.host.editor.text(), k, [texts[0], texts[1]]), { history: true });
     this.selected = k;
     this.refresh(false);
   }
@@ -293,37 +298,38 @@ export class CurvePanel {
   /** Adds a point in the middle of the widest gap between two points' x, on the function's line there. */
   private addInWidestGap(): void {
     const values = this.values();
-    if (!this.declaration || values.length < 2) return;
+    const kind = this.kind();
+    if (!this.source || values.length < 2) return;
     let k = 1;
     for (let j = 2; j < values.length; j++) if (values[j][0] - values[j - 1][0] > values[k][0] - values[k - 1][0]) k = j;
     const x = (values[k][0] + values[k - 1][0]) / 2;
-    const y = values.length >= LEAST_POINTS[this.declaration.kind] ? curveValue(this.declaration.kind, values, x) : (values[k][1] + values[k - 1][1]) / 2;
+    const y = values.length >= LEAST_POINTS[kind] ? curveValue(kind, values, x) : (values[k][1] + values[k - 1][1]) / 2;
     this.addAt([x, y]);
   }
 
   private removeChosen(): void {
     const k = this.selected;
-    if (!this.declaration || k === null || this.whyNotRemovable(k)) return;
-    this.host.editor.replaceRanges([removePointChange(this.declaration, k)], { history: true });
+    if (!this.source || k === null || this.whyNotRemovable(k)) return;
+    this.host.editor.replaceRanges(this.source.removeChanges(k), { history: true });
     this.selected = Math.min(k, this.points.length - 2);
     this.refresh(false);
   }
 
   /** The value under the pointer: the function's at the pointer's x (or the dragged point). */
   private showUnder(at: Point2 | null): void {
-    const d = this.declaration;
     const values = this.values();
-    const ready = d && values.length >= LEAST_POINTS[d.kind];
-    this.under = at && ready ? [at[0], curveValue(d.kind, values, at[0])] : null;
+    const kind = this.kind();
+    const ready = this.source && values.length >= LEAST_POINTS[kind];
+    this.under = at && ready ? [at[0], curveValue(kind, values, at[0])] : null;
     const shown = this.under;
-    this.c.under.textContent = shown && d ? `${d.name}(${short(shown[0])}) = ${short(shown[1])}` : '';
+    this.c.under.textContent = shown ? `${this.name}(${short(shown[0])}) = ${short(shown[1])}` : '';
     this.draw();
   }
 
   /** Arrow keys move the chosen point (Shift ten times as far, Alt a tenth); [ and ] choose another, Home and End the first and the last; Insert adds, Delete removes. */
   private key(event: KeyboardEvent): void {
     const count = this.points.length;
-    if (!this.declaration || count === 0 || event.ctrlKey || event.metaKey) return;
+    if (!this.source || count === 0 || event.ctrlKey || event.metaKey) return;
     const handled = this.chooseOrChange(event.key, count) || this.nudge(event);
     if (handled) event.preventDefault();
   }
@@ -351,7 +357,7 @@ export class CurvePanel {
   }
 
   private pointerDown(event: PointerEvent): void {
-    if (event.button !== 0 || this.drag || !this.declaration) return;
+    if (event.button !== 0 || this.drag || !this.source) return;
     const plot = this.c.plot;
     const k = plot.pointAt(this.values(), event.clientX, event.clientY, event.pointerType === 'touch' ? REACH.touch : REACH.mouse);
     plot.element.focus();
@@ -402,7 +408,7 @@ export class CurvePanel {
   }
 
   private doubleClick(event: MouseEvent): void {
-    if (!this.declaration) return;
+    if (!this.source) return;
     const plot = this.c.plot;
     if (plot.pointAt(this.values(), event.clientX, event.clientY, REACH.mouse) !== null) return;
     this.addAt(plot.valueAt(event.clientX, event.clientY));
@@ -410,12 +416,13 @@ export class CurvePanel {
 }
 
 /** The rule of the language the points break (docs/LANGUAGE.md "Curve functions"), or null. */
-export function ruleBroken(d: CurveDeclaration, values: readonly Point2[]): string | null {
-  const least = LEAST_POINTS[d.kind];
-  if (values.length < least) return `${d.directive} needs at least ${least} points, not ${values.length} (E0210): add one.`;
+export function ruleBroken(source: Pick<CurveSource, 'kind' | 'declaration'>, values: readonly Point2[]): string | null {
+  const least = LEAST_POINTS[source.kind];
+  const directive = source.declaration.directive;
+  if (values.length < least) return `${directive} ${source.declaration.name} needs at least ${least} points, not ${values.length} (E0210): add one.`;
   const k = values.findIndex((p, j) => j > 0 && p[0] < values[j - 1][0]);
   if (k < 0) return null;
-  const must = d.kind === 'table' ? 'must not decrease (E0210)' : 'should grow along the curve';
+  const must = source.kind === 'table' ? 'must not decrease (E0210)' : 'should grow along the curve';
   return `The x of point ${k + 1} is less than the one before: the points' x ${must}.`;
 }
 
