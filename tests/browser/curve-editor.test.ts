@@ -4,7 +4,9 @@
 // straight up) and the plant's pixels change; one Ctrl+Z in the text restores the text and the
 // plant. The chosen point nudged from the keyboard is one undo step; a point added and removed by
 // the panel's buttons keeps the line's separators; a line that cannot be edited as points is said
-// instead of opened. On a phone the panel fits the screen and a finger drags a point.
+// instead of opened; a table imported from a vlab .func is edited by the function's control points.
+// On a phone the panel fits the screen, a finger drags a point, and axe finds no serious problem.
+import { AxeBuilder } from '@axe-core/playwright';
 import { describe, expect, it, vi } from 'vitest';
 import type { Page } from 'playwright-core';
 import { differingShare } from './pictures';
@@ -130,6 +132,37 @@ describe('the curve editor', () => {
   });
 });
 
+describe('a function imported from a vlab .func file', () => {
+  it("opens as the function's control points; a drag rewrites them and the table's samples", async () => {
+    const width = [
+      '// width: the function of width.func, control points 0 0.147913 0.454706 0.186737 0.72 0.278164 1 0.112564; cpfg reads it through 10 samples, as here',
+      '#table width 0 0.147913 0.111111111111 0.158671 0.222222222222 0.1714461 0.333333333333 0.1850653 0.444444444444 0.1976611 0.555555555556 0.2064242 0.666666666667 0.2074151 0.777777777778 0.1956357 0.888888888889 0.1656137 1 0.112564',
+      'axiom: A(0)',
+      'A(t) -> F(1) [+F(10*width(t))] A(t+0.25)',
+      '#iterations 5',
+      '',
+    ].join('\n');
+    expect(await pasteText(page, width)).toBe('ok');
+    await page.getByTestId('curve-marker-width').click();
+    await expect.poll(() => page.getByTestId('curve-status').textContent()).toContain("4 control points of a function file's B-spline, written as the table's 10 samples");
+    const point = await pointOnPage(2);
+    const built = await generation(page);
+    await page.mouse.move(point.x, point.y);
+    await page.mouse.down();
+    for (let k = 1; k <= 5; k++) await page.mouse.move(point.x, point.y - 10 * k);
+    await page.mouse.up();
+    expect(await nextBuild(page, built)).toBe('ok');
+    const [comment, table] = (await editorText(page)).split('\n');
+    expect(comment).toMatch(/^\/\/ width: the function of width\.func, control points 0 0\.147913 0\.454706 0\.186737 0\.72 0\.(\d+) 1 0\.112564; cpfg reads/);
+    expect(table).not.toBe(width.split('\n')[1]);
+    expect(table.split(' ').length).toBe(2 + 20);
+    await page.locator('[data-testid=editor] .cm-line').first().click(); // above the panel
+    await page.keyboard.press('Control+z');
+    expect(await editorText(page)).toBe(width);
+    expect(problems).toEqual([]);
+  });
+});
+
 describe('the curve editor on a phone', () => {
   it('fits the screen, and a finger drags a point', async () => {
     const context = await browser.newContext(PHONE);
@@ -151,6 +184,9 @@ describe('the curve editor on a phone', () => {
     await touch('touchEnd', point.y - 60);
     await expect.poll(() => curveLine(p)).toMatch(/^#curve len 0 1, 0\.33 1\.\d+, 0\.66 1, 1 1$/);
     await p.screenshot({ path: new URL('curve-editor-phone.png', RESULTS).pathname });
+    // No serious or critical accessibility violation in the panel (axe, WCAG 2.1 AA).
+    const audit = await new AxeBuilder({ page: p }).include('[data-testid=curve-dialog]').withTags(['wcag2a', 'wcag2aa', 'wcag21aa']).analyze();
+    expect(audit.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical').map((v) => `${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`)).toEqual([]);
     expect(opened.problems).toEqual([]);
     await context.close();
   });
