@@ -7,6 +7,7 @@
 // (they bound the function's domain, as in funcedit), and a curve keeps its least number of
 // points (4 for a `#curve`, 2 for a `#table`).
 import { curveDeclarations, type CurveDeclaration, type CurveFunctionKind } from '../../editor/curve-lines';
+import { TextPanel } from '../page/text-panel';
 import { PointEdit, type PointTextEditor } from '../surfaces/point-edit';
 import { makeCurveControls } from './curve-controls';
 import { curveOutline, curveValue, LEAST_POINTS, type Point2 } from './curve-function';
@@ -54,23 +55,12 @@ export class CurvePanel {
   private selected: number | null = null;
   private under: Point2 | null = null;
   private drag: Drag | undefined;
-  private refreshQueued = false;
-  /** What had the focus when the panel opened: it gets it back when the panel closes. */
-  private opener: HTMLElement | null = null;
+  private readonly panel: TextPanel;
 
   constructor(private readonly host: CurveEditorHost) {
     const c = this.c;
     const plot = c.plot.element;
-    c.close.addEventListener('click', () => c.dialog.close());
-    c.dialog.addEventListener('close', () => {
-      if (this.opener?.isConnected) this.opener.focus();
-      this.opener = null;
-    });
-    c.dialog.addEventListener('keydown', (event) => {
-      if (event.key !== 'Escape') return;
-      event.preventDefault();
-      c.dialog.close();
-    });
+    this.panel = new TextPanel(c.dialog, c.close, () => this.refresh(false));
     c.coordinates.forEach((input, axis) => input.addEventListener('change', () => this.typed(axis, Number(input.value))));
     c.add.addEventListener('click', () => this.addInWidestGap());
     c.remove.addEventListener('click', () => this.removeChosen());
@@ -91,31 +81,22 @@ export class CurvePanel {
     const declaration = declarationOf(text, name);
     const why = whyNotEditable(declaration, name, text);
     if (why) return why;
-    const c = this.c;
     if (name !== this.name) this.selected = null;
     this.name = name;
-    if (!c.dialog.open) {
-      this.opener = document.activeElement instanceof HTMLElement ? document.activeElement : null;
-      c.dialog.show();
-    }
+    this.panel.show();
     this.refresh(true);
-    c.plot.element.focus();
+    this.c.plot.element.focus();
     return null;
   }
 
   /** Whether the panel is open. */
   get isOpen(): boolean {
-    return this.c.dialog.open;
+    return this.panel.isOpen;
   }
 
   /** The grammar text changed (typed, or written by a drag): the panel follows it at the next frame. */
   textChanged(): void {
-    if (!this.c.dialog.open || this.refreshQueued) return;
-    this.refreshQueued = true;
-    requestAnimationFrame(() => {
-      this.refreshQueued = false;
-      if (this.c.dialog.open) this.refresh(false);
-    });
+    this.panel.textChanged();
   }
 
   /** Reads the curve from the text now and shows it (or why it cannot be edited); `refit`: frame it anew. */
@@ -189,7 +170,9 @@ export class CurvePanel {
     const c = this.c;
     const point = this.selected === null ? undefined : this.points[this.selected];
     c.coordinates.forEach((input, axis) => {
-      input.disabled = !point || (axis === 0 && this.isEnd(this.selected));
+      const end = axis === 0 && this.isEnd(this.selected);
+      input.disabled = !point || end;
+      input.title = end ? 'The first and the last point keep their x: they bound the function' : '';
       input.step = String(this.step(axis));
       if (document.activeElement !== input || !point) input.value = point ? (axis === 0 ? point.x.text : point.y.text) : '';
     });
@@ -388,8 +371,11 @@ export class CurvePanel {
     drag.pending = null;
     if (!this.write(drag.edit, drag.k, to)) return this.endDrag();
     // The point follows at once; the text's change redraws the rest at the next frame.
-    this.points[drag.k] = { ...this.points[drag.k], value: [Number(this.texts(drag.k, to)[0]), to[1]] };
-    this.showUnder(to);
+    const [x, y] = this.texts(drag.k, to);
+    this.points[drag.k] = { ...this.points[drag.k], value: [Number(x), Number(y)] };
+    this.under = null;
+    this.c.under.textContent = `point ${drag.k + 1}: x ${x}, y ${y}`;
+    this.draw();
   }
 
   private pointerUp(event: PointerEvent): void {
