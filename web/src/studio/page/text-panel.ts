@@ -1,7 +1,8 @@
 // A panel beside the grammar text that edits it (the surface editor, the curve editor): a
 // non-modal <dialog>, so that the text and the plant stay in use while it is open. Escape or its
 // Close button closes it and gives the focus back to what had it; it follows the text at most once
-// a frame, however often the text changes (a drag writes it at every step).
+// a frame, however often the text changes (a drag writes it at every step). Its look: text-panel.css.
+import './text-panel.css';
 
 /** The panel's dialog, its opening and closing, and its following of the text. */
 export class TextPanel {
@@ -15,6 +16,7 @@ export class TextPanel {
     close: HTMLButtonElement,
     private readonly follow: () => void,
   ) {
+    dialog.classList.add('text-panel');
     close.addEventListener('click', () => dialog.close());
     dialog.addEventListener('close', () => {
       if (this.opener?.isConnected) this.opener.focus();
