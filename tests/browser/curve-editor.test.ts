@@ -36,10 +36,24 @@ async function openEditor(p: Page = page, tap = false): Promise<void> {
   await expect.poll(() => p.getByTestId('curve-status').textContent(), { timeout: 20_000 }).toContain('4 control points');
 }
 
-/** The centre of control point `k` in the plot, on the page. */
+/** The centre of control point `k` in the plot, on the page (measured in one go: the plot redraws its points). */
 async function pointOnPage(k: number, p: Page = page): Promise<{ x: number; y: number }> {
-  const box = (await p.locator('[data-testid=curve-plot] circle.curve-point').nth(k).boundingBox())!;
-  return { x: box.x + box.width / 2, y: box.y + box.height / 2 };
+  const found = await p.waitForFunction((k) => {
+    const circle = document.querySelectorAll('[data-testid=curve-plot] circle.curve-point')[k];
+    const box = circle?.getBoundingClientRect();
+    return box && box.width > 0 ? { x: box.x + box.width / 2, y: box.y + box.height / 2 } : null;
+  }, k);
+  return (await found.jsonValue())!;
+}
+
+/** Drags the mouse from `point` straight up by `pixels`, in steps of 10 or less; waits for the build it made and returns its state. */
+async function dragUp(point: { x: number; y: number }, pixels: number): Promise<string | null> {
+  const built = await generation(page);
+  await page.mouse.move(point.x, point.y);
+  await page.mouse.down();
+  for (let k = 1; k <= Math.ceil(pixels / 10); k++) await page.mouse.move(point.x, point.y - Math.min(pixels, 10 * k));
+  await page.mouse.up();
+  return nextBuild(page, built);
 }
 
 /** The curve's line of the editor's text. */
@@ -53,12 +67,7 @@ describe('the curve editor', () => {
     await openEditor();
     const before = await canvasPicture(page, 'curve-plant-before.png');
     const point = await pointOnPage(2);
-    const built = await generation(page);
-    await page.mouse.move(point.x, point.y);
-    await page.mouse.down();
-    for (let k = 1; k <= 10; k++) await page.mouse.move(point.x, point.y - 8 * k);
-    await page.mouse.up();
-    expect(await nextBuild(page, built)).toBe('ok');
+    expect(await dragUp(point, 80)).toBe('ok');
     const dragged = await curveLine();
     // Only the point's y changed, written with at most 3 decimals; the rest of the line as typed.
     const match = /^#curve len 0 1, 0\.33 1, 0\.66 (\d+(?:\.\d{1,3})?), 1 1$/.exec(dragged);
@@ -145,13 +154,7 @@ describe('a function imported from a vlab .func file', () => {
     expect(await pasteText(page, width)).toBe('ok');
     await page.getByTestId('curve-marker-width').click();
     await expect.poll(() => page.getByTestId('curve-status').textContent()).toContain("4 control points of a function file's B-spline, written as the table's 10 samples");
-    const point = await pointOnPage(2);
-    const built = await generation(page);
-    await page.mouse.move(point.x, point.y);
-    await page.mouse.down();
-    for (let k = 1; k <= 5; k++) await page.mouse.move(point.x, point.y - 10 * k);
-    await page.mouse.up();
-    expect(await nextBuild(page, built)).toBe('ok');
+    expect(await dragUp(await pointOnPage(2), 50)).toBe('ok');
     const [comment, table] = (await editorText(page)).split('\n');
     expect(comment).toMatch(/^\/\/ width: the function of width\.func, control points 0 0\.147913 0\.454706 0\.186737 0\.72 0\.(\d+) 1 0\.112564; cpfg reads/);
     expect(table).not.toBe(width.split('\n')[1]);
