@@ -46,12 +46,17 @@ async function pointOnPage(k: number, p: Page = page): Promise<{ x: number; y: n
   return (await found.jsonValue())!;
 }
 
-/** Drags the mouse from `point` straight up by `pixels`, in steps of 10 or less; waits for the build it made and returns its state. */
+/**
+ * Drags the mouse from `point` straight up by `pixels`, in steps of 10 or less; the plant follows
+ * while the button is still down (a build is delivered before it is released). Waits for the
+ * build of the text it wrote and returns its state.
+ */
 async function dragUp(point: { x: number; y: number }, pixels: number): Promise<string | null> {
   const built = await generation(page);
   await page.mouse.move(point.x, point.y);
   await page.mouse.down();
   for (let k = 1; k <= Math.ceil(pixels / 10); k++) await page.mouse.move(point.x, point.y - Math.min(pixels, 10 * k));
+  await page.waitForFunction((before) => Number(document.querySelector('[data-testid=status]')?.getAttribute('data-generation') ?? 0) > before, built);
   await page.mouse.up();
   return nextBuild(page, built);
 }
