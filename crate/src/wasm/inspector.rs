@@ -102,6 +102,26 @@ impl PlantInspector {
         serde_json::to_string(&steps).ok()
     }
 
+    #[cfg(feature = "studio-extras")]
+    /// The lineage of module `module` of the derived string (`pipeline::lineage`), as JSON: `{rows:
+    /// [{step, module, text, production?, time?}]}`, the last step first, back to the axiom, or
+    /// `{error}` with the message (no such module, or the derivation step by step over its memory
+    /// budget).
+    pub fn lineage(&self, module: usize) -> String {
+        #[derive(serde::Serialize)]
+        #[serde(rename_all = "camelCase")]
+        enum Answer {
+            Rows(Vec<pipeline::LineageRow>),
+            Error(String),
+        }
+        let answer = match self.build.inspector().map(|i| i.lineage(module)) {
+            Some(Ok(rows)) => Answer::Rows(rows),
+            Some(Err(e)) => Answer::Error(e.message),
+            None => Answer::Error("the grammar did not build".to_string()),
+        };
+        serde_json::to_string(&answer).unwrap_or_else(|_| "{}".into())
+    }
+
     /// The text of modules `start .. start + count` of the string the last step read (JSON array).
     #[wasm_bindgen(js_name = previousTexts)]
     pub fn previous_texts(&self, start: usize, count: usize) -> String {
