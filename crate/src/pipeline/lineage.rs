@@ -33,6 +33,10 @@ pub struct LineageRow {
     /// A timed grammar's growth time of that step's string, in steps.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub time: Option<f64>,
+    /// The modules of the derived string that descend from it: `first ..= last` (rewriting keeps
+    /// the order of the modules, so every module between them descends from it too).
+    pub first: u32,
+    pub last: u32,
 }
 
 /// The lineage of module `module` of the string derived with `options`: one row per step, the
@@ -55,14 +59,19 @@ pub fn lineage(
     }
     let mut rows = Vec::with_capacity(steps.len());
     let mut at = module;
+    // Each module of the derived string's ancestor at the step of the row being written.
+    let mut ancestors: Vec<u32> = (0..last as u32).collect();
     for (k, s) in steps.iter().enumerate().rev() {
         let production = s.origin.get(at).copied().filter(|&p| p != NOT_REWRITTEN);
+        let (first, last) = descendants(&ancestors, at as u32);
         rows.push(LineageRow {
             step: k as u32,
             module: at as u32,
             text: s.string.module_text(&model.alphabet, at),
             production,
             time: s.time,
+            first,
+            last,
         });
         match s.parent.get(at) {
             Some(&p) => at = p as usize,
@@ -70,8 +79,18 @@ pub fn lineage(
             // A step without provenance (never expected): the lineage stops there, said as is.
             None => break,
         }
+        for a in &mut ancestors {
+            *a = s.parent.get(*a as usize).copied().unwrap_or(u32::MAX);
+        }
     }
     Ok(rows)
+}
+
+/// The first and last index of `ancestors` equal to `module` (it is one of them).
+fn descendants(ancestors: &[u32], module: u32) -> (u32, u32) {
+    let first = ancestors.iter().position(|&a| a == module).unwrap_or(0);
+    let last = ancestors.iter().rposition(|&a| a == module).unwrap_or(first);
+    (first as u32, last as u32)
 }
 
 /// Production `index` of `model` as the lineage names it: its line and column (from 1) in
@@ -130,6 +149,11 @@ mod tests {
         );
         // A bracket copied at step 2 from step 1's `[` (module 1), and the `+` module 7 of step 2,
         // copied from step 1's `+` at 2.
+        let b = build(source, &BuildOptions::with_iterations(2));
+        let rows = lineage(b.model.as_ref().unwrap(), &b.derived_with, 11).unwrap();
+        let spans: Vec<_> = rows.iter().map(|r| (r.first, r.last)).collect();
+        // Step 1's F at 3 became modules 8-13; the axiom, the whole string.
+        assert_eq!(spans, [(11, 11), (8, 13), (0, 20)]);
         let got = lineage_of(source, 2, 7).unwrap();
         assert_eq!(
             got,
