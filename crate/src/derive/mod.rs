@@ -38,7 +38,9 @@ mod stepper;
 mod successors;
 mod timed;
 
-pub use explain::{explain, match_report, ContextCheck, Explanation, LastStep, MatchReport};
+pub use explain::{
+    explain, match_report, matching, ContextCheck, Explanation, LastStep, MatchReport,
+};
 
 use crate::diagnostics::Diagnostic;
 use crate::model::{LString, Model};

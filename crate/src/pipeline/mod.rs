@@ -13,7 +13,8 @@
 //! read around each stage, a callback told each stage as it starts and each derivation step as it
 //! ends).
 //!
-//! The files: `build.rs` ([`build()`], [`Build`], [`BuildOptions`]), `hooks.rs` ([`Hooks`],
+//! The files: `breakpoints.rs` (where a derivation played step by step pauses: a production's
+//! first firing, a watch's first true module), `build.rs` ([`build()`], [`Build`], [`BuildOptions`]), `hooks.rs` ([`Hooks`],
 //! [`Stage`], [`Progress`], [`StageTimings`]), `observer.rs` (growth and the turtle following a
 //! derivation), `step_on.rs` ([`build_on`]: a build that continues an earlier one's derivation),
 //! `plant.rs`, `inspector.rs`, `lineage.rs` ([`lineage()`]: a module's
@@ -21,6 +22,7 @@
 //! declared surface as the studio's surface editor shows it: meshed, its control points with the
 //! text of each, its frame, and a library shape's text written out as `#patch` lines).
 
+mod breakpoints;
 mod build;
 mod editor;
 #[cfg(feature = "environment")]
@@ -39,6 +41,7 @@ mod step_on;
 #[cfg(feature = "surfaces")]
 mod surface_preview;
 
+pub use breakpoints::{first_firing, first_watched, Pause};
 pub use build::{build, build_with, Build, BuildOptions};
 pub use editor::{BranchInfo, PlantEditor};
 #[cfg(feature = "environment")]
