@@ -571,7 +571,10 @@ fn lineage_lists_a_module_back_to_the_axiom_with_the_production_of_each_step() {
     );
     let (code, _, err) = meristem(&["lineage", &file, "9999", "--iterations", "2"]);
     assert_eq!(code, 1);
-    assert!(err.contains("no module 9999") && err.contains("[E0411]"), "{err}");
+    assert!(
+        err.contains("no module 9999") && err.contains("[E0411]"),
+        "{err}"
+    );
     let (code, _, err) = meristem(&["lineage", &file]);
     assert_eq!(code, 2);
     assert!(err.contains("lineage needs a module index"), "{err}");

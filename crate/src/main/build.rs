@@ -188,7 +188,13 @@ pub fn print_lineage(args: &Args, source: &str, options: &BuildOptions) -> ExitC
             return ExitCode::from(2);
         }
     };
-    let build = pipeline::build(source, &BuildOptions { sketch: true, ..options.clone() });
+    let build = pipeline::build(
+        source,
+        &BuildOptions {
+            sketch: true,
+            ..options.clone()
+        },
+    );
     print_diagnostics(&args.file, &build.located_diagnostics(source));
     let (true, Some(model)) = (build.ok(), build.model.as_ref()) else {
         return ExitCode::from(1);

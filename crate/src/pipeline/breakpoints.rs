@@ -116,7 +116,11 @@ fn watching_model(source: &str, model: &Model, watch: &str) -> Result<(Model, u3
         .productions
         .iter()
         .position(|p| inserted.contains(&p.span.start))
-        .ok_or_else(|| bad(format!("the watch '{watch}' is not a production's left side")))?;
+        .ok_or_else(|| {
+            bad(format!(
+                "the watch '{watch}' is not a production's left side"
+            ))
+        })?;
     let same_ids = (0..model.alphabet.len() as u32).all(|k| {
         let id = model::ModuleId(k);
         watcher.alphabet.get(model.alphabet.name(id)) == Some(id)
@@ -147,11 +151,24 @@ mod tests {
         let model = b.model.as_ref().unwrap();
         // A(0) A(1) A(2) A(3): the second production first fires at step 4 (on A(3)), once.
         let pause = first_firing(model, &b.derived_with, 1).unwrap();
-        assert_eq!(pause, Some(Pause { step: 4, count: 1, module: 0 }));
+        assert_eq!(
+            pause,
+            Some(Pause {
+                step: 4,
+                count: 1,
+                module: 0
+            })
+        );
         // B -> B F fires at step 5 on the one B; A(x) < T at step 1.
         let pause = first_firing(model, &b.derived_with, 2).unwrap().unwrap();
         assert_eq!((pause.step, pause.count), (5, 1));
-        assert_eq!(first_firing(model, &b.derived_with, 0).unwrap().unwrap().step, 1);
+        assert_eq!(
+            first_firing(model, &b.derived_with, 0)
+                .unwrap()
+                .unwrap()
+                .step,
+            1
+        );
         let b = built(3);
         let model = b.model.as_ref().unwrap();
         assert_eq!(first_firing(model, &b.derived_with, 1).unwrap(), None);
@@ -162,7 +179,14 @@ mod tests {
         let b = built(6);
         let model = b.model.as_ref().unwrap();
         let at = |watch: &str| first_watched(GRAMMAR, model, &b.derived_with, watch);
-        assert_eq!(at("A(x) : x > 1").unwrap(), Some(Pause { step: 2, count: 1, module: 0 }));
+        assert_eq!(
+            at("A(x) : x > 1").unwrap(),
+            Some(Pause {
+                step: 2,
+                count: 1,
+                module: 0
+            })
+        );
         assert_eq!(at("A(x) : x >= T").unwrap().unwrap().step, 3);
         // B -> B F first writes an F at step 5.
         assert_eq!(at("F").unwrap().unwrap().step, 5);
@@ -171,7 +195,11 @@ mod tests {
         assert_eq!(at("A(x) : x > 100").unwrap(), None);
         let e = at("A(x) : x >").unwrap_err();
         assert_eq!(e.code, "E0412");
-        assert!(e.message.starts_with("the watch 'A(x) : x >': "), "{}", e.message);
+        assert!(
+            e.message.starts_with("the watch 'A(x) : x >': "),
+            "{}",
+            e.message
+        );
         assert_eq!(at("A -> B").unwrap_err().code, "E0412");
     }
 }

@@ -89,14 +89,22 @@ pub fn lineage(
 /// The first and last index of `ancestors` equal to `module` (it is one of them).
 fn descendants(ancestors: &[u32], module: u32) -> (u32, u32) {
     let first = ancestors.iter().position(|&a| a == module).unwrap_or(0);
-    let last = ancestors.iter().rposition(|&a| a == module).unwrap_or(first);
+    let last = ancestors
+        .iter()
+        .rposition(|&a| a == module)
+        .unwrap_or(first);
     (first as u32, last as u32)
 }
 
 /// Production `index` of `model` as the lineage names it: its line and column (from 1) in
 /// `source`, and its text (with its condition and contexts, as written).
 pub fn production_place(source: &str, model: &Model, index: u32) -> Option<(usize, usize, String)> {
-    let span = model.productions.productions.get(index as usize)?.span.clone();
+    let span = model
+        .productions
+        .productions
+        .get(index as usize)?
+        .span
+        .clone();
     let (line, column) = LineIndex::new(source).line_column(span.start);
     let text = source.get(span)?.trim().to_string();
     Some((line, column, text))
@@ -108,7 +116,10 @@ pub fn lineage_text(source: &str, model: &Model, rows: &[LineageRow]) -> String 
     let mut out = String::new();
     for row in rows {
         let when = row.time.map(|t| format!(" (t = {t})")).unwrap_or_default();
-        let how = match row.production.and_then(|p| production_place(source, model, p)) {
+        let how = match row
+            .production
+            .and_then(|p| production_place(source, model, p))
+        {
             Some((line, column, text)) => format!("{line}:{column} {text}"),
             None if row.step == 0 => "axiom".to_string(),
             None => "copied".to_string(),

@@ -4,13 +4,15 @@
 // and the production that made it is marked in the editor, with the contexts of that rewriting.
 // "Colour by production" paints every module by the production that wrote it, so stepping the
 // iterations shows which production rewrote what from step k to k + 1.
-import { loadVocabulary, NOT_REWRITTEN, type BuildOptions, type Explanation, type MatchReport, type PlantBuild, type PlantInspector } from '../../core';
+import { loadVocabulary, NOT_REWRITTEN, type BuildOptions, type Explanation, type LineageRow, type MatchReport, type PlantBuild, type PlantInspector } from '../../core';
 import type { GrammarEditor } from '../../editor';
 import { cssColour, HIGHLIGHT, PRODUCTION_COLOURS, type Rgb } from '../../view/highlight';
 import type { PlantView } from '../../view';
 import { StringPanel, type ModuleRole } from './string-panel';
 import type { ViewOptions } from '../controls';
 import { branchQuery, EnvironmentTools, REPLY_REACH, replyInWords } from '../environment';
+import { BreakpointPanel } from './breakpoints';
+import { LineageList } from './lineage-list';
 import { conditionText, copiedInWords, countsInWords, describeProduction, madeInWords, reportInWords, stringAtTime } from './explain-words';
 
 /** The page elements of the view. */
@@ -49,6 +51,12 @@ export class ContextView {
   private ticket = 0;
   /** The View toolbar's Environment tools: each build's environment drawn with its plant. */
   private readonly environment: EnvironmentTools;
+  /** The picked module's lineage, under the summary. */
+  private readonly lineage: LineageList;
+  /** The breakpoints, under the lineage: where Play pauses. */
+  readonly breakpoints: BreakpointPanel;
+  /** Told the lineage shown (null: none): the derivation view marks it. */
+  onLineage: (rows: readonly LineageRow[] | null) => void = () => {};
 
   constructor(
     private readonly els: ContextViewElements,
@@ -59,6 +67,13 @@ export class ContextView {
   ) {
     this.panel = new StringPanel(els.panel, (module) => this.pickModule(module));
     this.environment = new EnvironmentTools(view);
+    this.lineage = new LineageList({
+      describeProduction: (index) => this.describeProduction(index),
+      preview: (modules, production) => this.showPreview(modules, production),
+      shown: (rows) => this.onLineage(rows),
+    });
+    this.breakpoints = new BreakpointPanel({ describeProduction: (index) => this.describeProduction(index) });
+    els.summary.after(this.lineage.element, this.breakpoints.element);
     // One definition of the highlight colours: the 3D view's, passed on to the page's CSS.
     for (const [role, rgb] of Object.entries(HIGHLIGHT)) {
       document.documentElement.style.setProperty(`--hl-${role}`, cssColour(rgb));
@@ -96,6 +111,8 @@ export class ContextView {
     this.panel.show(build.moduleCount, inspector);
     this.environment.show(build.environment, build.flat);
     this.focus = { ...this.focus, module: null }; // module indices belong to the old string
+    this.lineage.clear();
+    this.breakpoints.setBuild(build, inspector, source);
     this.preview = null;
     this.renderLegend();
     this.refresh();
@@ -116,6 +133,7 @@ export class ContextView {
     // A pick speaks for itself: the cursor's production is set aside until the cursor moves again.
     this.setFocus({ production: null, module });
     if (module !== null) this.panel.scrollToModule(module);
+    void this.lineage.show(this.inspector, module, this.source, this.build?.productions ?? []);
   }
 
   /**

@@ -113,6 +113,8 @@ export class DerivationView {
   private stale = true;
   /** Bumped on every new build, so late answers are dropped. */
   private ticket = 0;
+  /** The picked module's lineage (the String tab's), marked in the rows: (step, module) pairs. */
+  private lineage: readonly { step: number; module: number }[] = [];
 
   constructor(
     root: HTMLElement,
@@ -134,6 +136,17 @@ export class DerivationView {
     this.body.addEventListener('pointerleave', (event) => event.pointerType !== 'touch' && this.hover(null));
     this.body.addEventListener('click', (event) => this.click(event.target as HTMLElement));
     this.body.addEventListener('scroll', () => this.pairs && this.renderPairs());
+  }
+
+  /** Marks the chain of a module's lineage in the rows (null: none). */
+  showLineage(rows: readonly { step: number; module: number }[] | null): void {
+    this.lineage = rows ?? [];
+    this.markLineage();
+  }
+
+  private markLineage(): void {
+    for (const old of this.body.querySelectorAll('.dv-lineage')) old.classList.remove('dv-lineage');
+    for (const { step, module } of this.lineage) this.mark(step, module, 'dv-lineage');
   }
 
   /** Shows the derivation of a new build (fetched when the view is on screen). */
@@ -192,6 +205,7 @@ export class DerivationView {
     this.body.replaceChildren(...rows);
     if (steps.length > 1 && total <= TREE_MAX_MODULES) this.body.append(derivationTree(steps));
     this.status.textContent = '';
+    this.markLineage();
   }
 
   private sequenceRow(step: DerivationStep, k: number): HTMLElement {

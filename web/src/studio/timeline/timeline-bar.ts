@@ -138,12 +138,28 @@ export class TimelineBar {
     this.controls = barControls(els.bar);
     els.bar.hidden = false;
     this.timeline.onChange((state) => {
+      if (this.breakAt(state)) return; // (paused there: the pause's own change has rendered)
       if (!state.playing) this.panels.flush(); // paused: the panels show the plant on screen
       this.render(state);
     });
     this.listen();
     view.onPlantShown(() => this.plantShown());
     this.plantShown();
+  }
+
+  /** The t last shown while playing (null: paused), to see Play cross a breakpoint's step. */
+  private playedT: number | null = null;
+
+  /** Pauses Play where it crosses the debugger's breakpoint (the String tab's), at its step: true when it did. */
+  private breakAt(state: TimelineState): boolean {
+    const before = this.playedT;
+    this.playedT = state.playing ? state.t : null;
+    const at = this.studio.breakpoint?.at() ?? null;
+    if (at === null || before === null || !state.playing || !(before < at && at <= state.t)) return false;
+    this.timeline.pause();
+    this.timeline.seek(at);
+    this.studio.breakpoint?.paused();
+    return true;
   }
 
   private listen(): void {
