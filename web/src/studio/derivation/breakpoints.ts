@@ -17,6 +17,22 @@ interface Stop {
   words: string;
 }
 
+/**
+ * Where the toolbar's Play pauses: the timeline bar (loaded after the first plant, as this panel
+ * is) imports it when it loads; the panel on the page sets it.
+ */
+export const playStop = {
+  panel: null as BreakpointPanel | null,
+  /** The growth time Play pauses at (a whole step), or null. */
+  at(): number | null {
+    return this.panel?.at() ?? null;
+  },
+  /** Play paused at {@link at}: the panel says why. */
+  paused(): void {
+    this.panel?.paused();
+  },
+};
+
 const plural = (n: number, word: string) => `${n} ${word}${n === 1 ? '' : 's'}`;
 
 /** The panel under the String tab's summary, and the step Play pauses at. */
@@ -51,6 +67,7 @@ export class BreakpointPanel {
     this.status.setAttribute('aria-live', 'polite');
     this.element.append(summary, this.rules, watchLabel, this.status);
     this.watch.addEventListener('change', () => void this.find());
+    playStop.panel = this;
   }
 
   /** A new build on screen: the breakpoints stay (by production), their step is found again. */

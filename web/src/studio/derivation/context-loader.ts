@@ -1,6 +1,6 @@
 // The String tab's context view, loaded after the first plant (issue 22: the first plant needs none
 // of it). Until it has loaded it keeps the last build and cursor, and hands them over on arrival.
-import type { BuildOptions, LineageRow, PlantBuild, PlantInspector } from '../../core';
+import type { BuildOptions, PlantBuild, PlantInspector } from '../../core';
 import type { GrammarEditor } from '../../editor';
 import type { PlantView } from '../../view';
 import type { ViewOptions } from '../controls';
@@ -13,8 +13,6 @@ export class LazyContextView {
   private build: [PlantBuild, PlantInspector | undefined, string, BuildOptions?] | undefined;
   private cursor: number | undefined;
   private pickingOn = true;
-  /** As {@link ContextView.onLineage}. */
-  onLineage: (rows: readonly LineageRow[] | null) => void = () => {};
 
   constructor(
     private readonly els: ContextViewElements,
@@ -33,7 +31,6 @@ export class LazyContextView {
       const { ContextView } = await import('./context-view');
       const view = new ContextView(this.els, this.plantView, this.editor, this.viewOptions);
       view.picking = this.pickingOn;
-      view.onLineage = (rows) => this.onLineage(rows);
       if (this.build) view.setBuild(...this.build);
       if (this.cursor !== undefined) view.cursorAt(this.cursor);
       this.view = view;
@@ -76,12 +73,6 @@ export class LazyContextView {
   conditionOf(index: number): string | null {
     return this.view?.conditionOf(index) ?? null;
   }
-
-  /** Where Play pauses for a breakpoint ({@link ContextView.breakpoints}), and its words when it does. */
-  readonly breakpoint = {
-    at: () => this.view?.breakpoints.at() ?? null,
-    paused: () => this.view?.breakpoints.paused(),
-  };
 
   /** As {@link ContextView.reload}. */
   reload(): void {

@@ -4,7 +4,7 @@
 // and the production that made it is marked in the editor, with the contexts of that rewriting.
 // "Colour by production" paints every module by the production that wrote it, so stepping the
 // iterations shows which production rewrote what from step k to k + 1.
-import { loadVocabulary, NOT_REWRITTEN, type BuildOptions, type Explanation, type LineageRow, type MatchReport, type PlantBuild, type PlantInspector } from '../../core';
+import { loadVocabulary, NOT_REWRITTEN, type BuildOptions, type Explanation, type MatchReport, type PlantBuild, type PlantInspector } from '../../core';
 import type { GrammarEditor } from '../../editor';
 import { cssColour, HIGHLIGHT, PRODUCTION_COLOURS, type Rgb } from '../../view/highlight';
 import type { PlantView } from '../../view';
@@ -54,9 +54,7 @@ export class ContextView {
   /** The picked module's lineage, under the summary. */
   private readonly lineage: LineageList;
   /** The breakpoints, under the lineage: where Play pauses. */
-  readonly breakpoints: BreakpointPanel;
-  /** Told the lineage shown (null: none): the derivation view marks it. */
-  onLineage: (rows: readonly LineageRow[] | null) => void = () => {};
+  private readonly breakpoints: BreakpointPanel;
 
   constructor(
     private readonly els: ContextViewElements,
@@ -70,7 +68,6 @@ export class ContextView {
     this.lineage = new LineageList({
       describeProduction: (index) => this.describeProduction(index),
       preview: (modules, production) => this.showPreview(modules, production),
-      shown: (rows) => this.onLineage(rows),
     });
     this.breakpoints = new BreakpointPanel({ describeProduction: (index) => this.describeProduction(index) });
     els.summary.after(this.lineage.element, this.breakpoints.element);

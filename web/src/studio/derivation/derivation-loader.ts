@@ -1,6 +1,6 @@
 // The Derivation tab's view, loaded when the tab is first shown (issue 22: the first plant needs
 // none of it). Until then it only remembers the last build, and hands it over when it arrives.
-import type { LineageRow, PlantBuild, PlantInspector } from '../../core';
+import type { PlantBuild, PlantInspector } from '../../core';
 import type { DerivationView, DerivationViewHost } from './derivation-view';
 
 /** A {@link DerivationView} in `root` that loads with the tab's first showing. */
@@ -9,7 +9,6 @@ export class LazyDerivationView {
   private loading: Promise<void> | undefined;
   private build: [PlantBuild, PlantInspector | undefined] | undefined;
   private shown = false;
-  private lineage: readonly LineageRow[] | null = null;
 
   constructor(
     private readonly root: HTMLElement,
@@ -20,12 +19,6 @@ export class LazyDerivationView {
   setBuild(build: PlantBuild, inspector: PlantInspector | undefined): void {
     this.build = [build, inspector];
     this.view?.setBuild(build, inspector);
-  }
-
-  /** As {@link DerivationView.showLineage}: kept for the view until it has loaded. */
-  showLineage(rows: readonly LineageRow[] | null): void {
-    this.lineage = rows;
-    this.view?.showLineage(rows);
   }
 
   /** As {@link DerivationView.reload}: nothing to reload before the view has loaded (it asks when it does). */
@@ -45,7 +38,6 @@ export class LazyDerivationView {
       const { DerivationView } = await import('./derivation-view');
       const view = new DerivationView(this.root, this.host);
       if (this.build) view.setBuild(...this.build);
-      view.showLineage(this.lineage);
       view.setShown(this.shown);
       this.view = view;
     } catch (error) {

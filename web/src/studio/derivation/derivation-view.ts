@@ -5,6 +5,7 @@
 // module of step n − 1 beside the substring of step n it became, virtualised. Hovering a module
 // says where it came from and which rule wrote it, and lights up in the 3D view the part of the
 // plant that grew from it and in the editor the production.
+import { lineageShown } from './lineage-list';
 import './derivation-view.css';
 import { NOT_REWRITTEN, type DerivationStep, type PlantBuild, type PlantInspector } from '../../core';
 import { cssColour, PRODUCTION_COLOURS } from '../../view/highlight';
@@ -136,6 +137,8 @@ export class DerivationView {
     this.body.addEventListener('pointerleave', (event) => event.pointerType !== 'touch' && this.hover(null));
     this.body.addEventListener('click', (event) => this.click(event.target as HTMLElement));
     this.body.addEventListener('scroll', () => this.pairs && this.renderPairs());
+    lineageShown.listeners.add((rows) => this.showLineage(rows));
+    this.showLineage(lineageShown.rows);
   }
 
   /** Marks the chain of a module's lineage in the rows (null: none). */

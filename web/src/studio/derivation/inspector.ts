@@ -24,7 +24,6 @@ export function createInspector(els: StudioElements, view: PlantView, editor: Gr
     describeProduction: (index) => contexts.describeProduction(index),
     conditionOf: (index) => contexts.conditionOf(index),
   });
-  contexts.onLineage = (rows) => derivationView.showLineage(rows);
   installInspectorTabs(els.inspectorTabs, (tab) => derivationView.setShown(tab === 'tab-derivation'));
   return { contexts, derivationView };
 }

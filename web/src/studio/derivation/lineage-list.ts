@@ -11,9 +11,20 @@ export interface LineageHost {
   describeProduction(index: number): string;
   /** Lights up `modules` of the derived string and marks `production` (null: the focus's own highlight again). */
   preview(modules: Iterable<number> | null, production: number | null): void;
-  /** The chain shown (null: none), for the derivation view. */
-  shown(rows: readonly LineageRow[] | null): void;
 }
+
+/**
+ * The lineage on screen, for the Derivation tab, which outlines its chain: both load after the
+ * first plant, so they meet here rather than through the first plant's script.
+ */
+export const lineageShown = {
+  rows: null as readonly LineageRow[] | null,
+  listeners: new Set<(rows: readonly LineageRow[] | null) => void>(),
+  tell(rows: readonly LineageRow[] | null): void {
+    this.rows = rows;
+    for (const listener of this.listeners) listener(rows);
+  },
+};
 
 /**
  * A lineage as the command line prints it (`meristem lineage FILE MODULE`), one line per step,
@@ -68,14 +79,14 @@ export class LineageList {
       this.list.replaceChildren();
       this.heading.textContent = lineage.error ? `No lineage: ${lineage.error}` : '';
       this.element.hidden = !lineage.error;
-      this.host.shown(null);
+      lineageShown.tell(null);
       return;
     }
     const rows = lineage.rows;
     this.element.dataset.text = lineageText(rows, source, productions);
     this.heading.textContent = `Lineage of module ${module}, back to the axiom (hover a step to see all that grew from it):`;
     this.list.replaceChildren(...rows.map((row) => this.item(row)));
-    this.host.shown(rows);
+    lineageShown.tell(rows);
   }
 
   /** Hides the list. */
@@ -84,7 +95,7 @@ export class LineageList {
     this.element.hidden = true;
     this.list.replaceChildren();
     delete this.element.dataset.text;
-    this.host.shown(null);
+    lineageShown.tell(null);
   }
 
   private item(row: LineageRow): HTMLElement {

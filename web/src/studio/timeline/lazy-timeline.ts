@@ -33,8 +33,6 @@ export interface TimelineStudio {
   steps: () => number | undefined;
   /** A build is under way (a timed grammar's next time waits for it). */
   busy: () => boolean;
-  /** The debugger's breakpoint: the growth time Play pauses at (null: none), and what it says when it does. */
-  breakpoint?: { at(): number | null; paused(): void };
 }
 
 /** The timeline, its bar loaded on first use. */

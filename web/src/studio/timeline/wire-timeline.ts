@@ -3,7 +3,7 @@
 import type { StudioParts } from '../parts';
 
 /** Connects the timeline to the view and the builds (its bar loads later: {@link LazyTimeline.load}). */
-export function wireTimeline({ timeline, view, preview, derivation, contexts }: StudioParts): void {
+export function wireTimeline({ timeline, view, preview, derivation }: StudioParts): void {
   // A timed or stepwise grammar's plant at t is derived at t: its timeline spans its iterations,
   // whatever t the plant on screen was derived at.
   const timedSpan = () => {
@@ -11,6 +11,6 @@ export function wireTimeline({ timeline, view, preview, derivation, contexts }: 
     return build?.timed || build?.stepwise ? (derivation.iterations() ?? build.grammarIterations) : null;
   };
   const stepwise = () => preview.lastGood?.build.stepwise === true;
-  timeline.connect({ view, rebuild: () => preview.rebuild(), steps: () => preview.lastGood?.build.stats.iterations, timedSpan, stepwise, busy: () => preview.busy, breakpoint: contexts.breakpoint });
+  timeline.connect({ view, rebuild: () => preview.rebuild(), steps: () => preview.lastGood?.build.stats.iterations, timedSpan, stepwise, busy: () => preview.busy });
   preview.onDelivered(() => timeline.delivered());
 }
