@@ -19,8 +19,8 @@ let problems: string[];
 const CARGO = ['--quiet', '--manifest-path', 'crate/Cargo.toml', '--bin', 'meristem'];
 
 /** `meristem lineage` of the gallery's `file` (its own iterations), from the command line. */
-function cliLineage(file: string, module: number): string {
-  return execFileSync('cargo', ['run', ...CARGO, '--', 'lineage', `public/examples/${file}`, String(module)], { cwd: ROOT, encoding: 'utf8' });
+function cliLineage(file: string, module: number, ...options: string[]): string {
+  return execFileSync('cargo', ['run', ...CARGO, '--', 'lineage', `public/examples/${file}`, String(module), ...options], { cwd: ROOT, encoding: 'utf8' });
 }
 
 /** Not the view's background (#eceef1) nor near it: a drawn part of the plant. */
@@ -77,10 +77,31 @@ describe('the lineage of a picked module', () => {
   });
 });
 
+describe('the lineage in the derivation view', () => {
+  it('outlines the chain of a module picked in the String tab, step by step', async () => {
+    // 3 iterations: 156 modules, short enough for the Derivation tab's whole sequence.
+    await page.getByTestId('iterations').fill('3');
+    await expect.poll(() => page.evaluate(() => window.__meristem?.lastStats?.iterations)).toBe(3);
+    await page.getByTestId('string-panel').locator('[data-i="40"]').click();
+    const lineage = page.getByTestId('lineage');
+    await expect.poll(() => lineage.getAttribute('data-text'), { timeout: 20_000 }).toBe(cliLineage('abop-1.24d.lsys', 40, '--iterations', '3'));
+    await page.getByTestId('tab-derivation').click();
+    const chain = page.getByTestId('derivation').locator('.dv-m.dv-lineage');
+    await expect.poll(() => chain.count(), { timeout: 20_000 }).toBe(4);
+    const marked = await chain.evaluateAll((chips) => chips.map((c) => `${(c as HTMLElement).dataset.step}:${(c as HTMLElement).dataset.i}`));
+    const rows = await lineage.locator('li button').evaluateAll((buttons) => buttons.map((b) => `${(b as HTMLElement).dataset.step}:${(b as HTMLElement).dataset.module}`));
+    expect(marked.sort()).toEqual(rows.sort());
+    await savePage(page, 'lineage-derivation-view.png');
+    await page.getByTestId('tab-string').click();
+    await page.getByTestId('iterations').fill('');
+    await expect.poll(() => page.evaluate(() => window.__meristem?.lastStats?.iterations)).toBe(7);
+    expect(problems).toEqual([]);
+  });
+});
+
 describe('breakpoints', () => {
   it('pauses Play at the first step where the production fires, and says how many times it fired', async () => {
     // 1.24d: X -> F[+X]F[-X]+X writes the first F at step 1; F -> FF first fires at step 2, on both.
-    await page.getByTestId('tab-string').click();
     const panel = page.getByTestId('breakpoints');
     await panel.locator('summary').click();
     await panel.locator('input[data-production="1"]').check();
