@@ -114,6 +114,15 @@ describe('breakpoints', () => {
     expect(await page.getByTestId('play').getAttribute('aria-pressed')).toBe('false');
     expect(await page.evaluate(() => window.__meristem?.growth?.().t)).toBe(2);
     await savePage(page, 'breakpoint-paused.png');
+    // A watch: F first stands in the string at step 1 (F[+X]F[-X]+X, twice); the first stop wins.
+    const watch = page.getByTestId('breakpoint-watch');
+    await watch.fill('F');
+    await watch.press('Enter');
+    await expect.poll(() => status.textContent()).toBe('Play pauses at step 1: F holds for 2 modules.');
+    await page.getByTestId('timeline-slider').fill('0');
+    await page.getByTestId('play').click();
+    await expect.poll(() => status.getAttribute('data-paused'), { timeout: 20_000 }).toBe('1');
+    expect(await page.evaluate(() => window.__meristem?.growth?.().t)).toBe(1);
     // A watch that never holds: Play does not pause; a malformed one says what is wrong.
     await panel.locator('input[data-production="1"]').uncheck();
     await page.getByTestId('breakpoint-watch').fill('X : 1 >');
