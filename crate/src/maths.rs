@@ -13,9 +13,15 @@
 //! `disallowed_methods`), and `tests/wasm_boundary.rs` checks a stand under wasm32 against the
 //! numbers the native build writes.
 //!
+//! glam's own rotations and angles call the platform's functions too (its `libm` feature would
+//! also make its `sqrt` a software one in WebAssembly), so the few the core needs are here:
+//! [`rotation`], [`angle_between`], [`signed_angle`], [`axis_angle`].
+//!
 //! Not here, because they are already the same everywhere: `sqrt`, `abs`, `floor`, `ceil`,
 //! `round`, `mul_add` (correctly rounded by IEEE 754 on every target) and `powi` (rustc lowers it
 //! to compiler-builtins' `__powidf2`, the same code on every target, or to the same multiplications).
+
+use glam::{DQuat, DVec2, DVec3};
 
 /// The sine of `x` radians.
 pub fn sin(x: f64) -> f64 {
@@ -87,6 +93,38 @@ pub fn hypot(x: f64, y: f64) -> f64 {
     libm::hypot(x, y)
 }
 
+/// The rotation by `angle` radians about the unit vector `axis` (glam's `DQuat::from_axis_angle`).
+pub fn rotation(axis: DVec3, angle: f64) -> DQuat {
+    let (s, c) = sin_cos(angle * 0.5);
+    let v = axis * s;
+    DQuat::from_xyzw(v.x, v.y, v.z, c)
+}
+
+/// The angle between two non-zero vectors, in radians in [0, π] (glam's `DVec3::angle_between`).
+pub fn angle_between(a: DVec3, b: DVec3) -> f64 {
+    let cos = a.dot(b) / (a.length_squared() * b.length_squared()).sqrt();
+    acos(cos.clamp(-1.0, 1.0))
+}
+
+/// The angle that turns `a` towards `b` in the plane, in radians in [-π, π], positive
+/// anticlockwise (glam's `DVec2::angle_to`).
+pub fn signed_angle(a: DVec2, b: DVec2) -> f64 {
+    let cos = a.dot(b) / (a.length_squared() * b.length_squared()).sqrt();
+    acos(cos.clamp(-1.0, 1.0)) * a.perp_dot(b).signum()
+}
+
+/// The axis and angle (radians) of a unit quaternion; (X, 0) for no rotation (glam's
+/// `DQuat::to_axis_angle`).
+pub fn axis_angle(q: DQuat) -> (DVec3, f64) {
+    let v = DVec3::new(q.x, q.y, q.z);
+    let length = v.length();
+    if length >= 1e-8 {
+        (v / length, 2.0 * atan2(length, q.w))
+    } else {
+        (DVec3::X, 0.0)
+    }
+}
+
 #[cfg(test)]
 #[allow(clippy::disallowed_methods)] // the platform's functions, to compare with
 mod tests {
@@ -112,6 +150,20 @@ mod tests {
             assert!(close(log10(x), x.log10()));
             assert!(close(powf(x, 1.7), x.powf(1.7)));
         }
+        let (a, b) = (DVec3::new(1.0, 2.0, 0.5), DVec3::new(-0.3, 1.0, 2.0));
+        assert!(close(angle_between(a, b), a.angle_between(b)));
+        let (p, q) = (DVec2::new(1.0, 0.2), DVec2::new(-0.4, 1.0));
+        assert!(close(signed_angle(p, q), p.angle_to(q)));
+        assert!(close(signed_angle(q, p), q.angle_to(p)));
+        let axis = DVec3::new(0.0, 0.6, 0.8);
+        let r = rotation(axis, 1.2);
+        let g = DQuat::from_axis_angle(axis, 1.2);
+        assert!(
+            (r.x - g.x).abs() + (r.y - g.y).abs() + (r.z - g.z).abs() + (r.w - g.w).abs() < 1e-15
+        );
+        let ((u, t), (v, w)) = (axis_angle(r), g.to_axis_angle());
+        assert!(close(t, w) && (u - v).length() < 1e-12);
+        assert_eq!(axis_angle(DQuat::IDENTITY), (DVec3::X, 0.0));
         for &x in &[-0.9, 0.0, 0.5] {
             assert!(close(asin(x), x.asin()));
             assert!(close(acos(x), x.acos()));

@@ -113,7 +113,7 @@ fn within_quarter(what: &str, measured: f64, expected: f64) {
 /// The angle between two segments' directions, in degrees.
 fn angle(s: &Skeleton, a: usize, b: usize) -> f64 {
     let dir = |i: usize| (s.segments[i].end - s.segments[i].start).normalize();
-    dir(a).angle_between(dir(b)).to_degrees()
+    maths::angle_between(dir(a), dir(b)).to_degrees()
 }
 
 /// The segments that leave the end of segment `i` as branches (not its axis's continuation).

@@ -73,9 +73,9 @@ fn fig_5_5_the_cordate_leaf_is_a_fan_of_n_polygons_a_half_mirrored_about_the_mid
             if last.length() < 1e-9 {
                 continue; // the young rays at the fan's edge have no length yet
             }
-            let k = (last.angle_between(DVec3::Y).to_degrees() / 10.0).round();
+            let k = (maths::angle_between(last, DVec3::Y).to_degrees() / 10.0).round();
             assert!(close(
-                last.angle_between(DVec3::Y).to_degrees(),
+                maths::angle_between(last, DVec3::Y).to_degrees(),
                 10.0 * k,
                 1e-6
             ));
@@ -435,7 +435,7 @@ fn the_lily_has_three_sepals_and_three_petals_120_degrees_apart_petals_between_s
     );
     // Every tepal opens OPEN (60°) or OPEN − 8 from the flower's axis.
     for (k, h) in headings.iter().enumerate() {
-        let open = h.angle_between(axis).to_degrees();
+        let open = maths::angle_between(*h, axis).to_degrees();
         assert!(close(open, if k < 3 { 60.0 } else { 52.0 }, 1e-6), "{open}");
     }
     // Six stamens, each with an anther: the orange spheres (colour 9).

@@ -6,6 +6,7 @@
 mod shared;
 
 use glam::DVec3;
+use meristem::maths;
 use meristem::pipeline::{build, Build, BuildOptions};
 use meristem::vocabulary::DirectiveKind;
 use shared::lengths;
@@ -215,7 +216,7 @@ fn the_sun_in_the_south_bends_the_middle_and_upper_stem_towards_plus_x() {
             meristem::vocabulary::Season::named(season).expect("season"),
         );
         for s in segments {
-            let from_vertical = direction(s).angle_between(DVec3::Y).to_degrees();
+            let from_vertical = maths::angle_between(direction(s), DVec3::Y).to_degrees();
             assert!(
                 from_vertical <= 90.0 - altitude + 1e-9,
                 "{season}: {from_vertical}"
@@ -241,7 +242,7 @@ fn bending_accumulates_step_after_step() {
         ));
         let segments = &b.plant.skeleton.segments;
         // The third segment has been in the upper or middle third since it was written.
-        direction(&segments[2]).angle_between(DVec3::Y).to_degrees()
+        maths::angle_between(direction(&segments[2]), DVec3::Y).to_degrees()
     };
     let turned: Vec<f64> = (1..=4).map(bend).collect();
     // The third segment turns 2° at every step, on top of what the one below it turned.

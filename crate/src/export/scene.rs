@@ -184,7 +184,7 @@ impl View {
         let right = DVec3::Y.cross(back).normalize();
         let up = back.cross(right);
         let rotation = DQuat::from_mat3(&DMat3::from_cols(right, up, back)).normalize();
-        let (axis, angle) = rotation.to_axis_angle();
+        let (axis, angle) = maths::axis_angle(rotation);
         if angle.abs() < 1e-12 || !axis.is_finite() {
             (DVec3::Z, 0.0)
         } else {
@@ -340,7 +340,7 @@ mod tests {
         let view = View::framing(bounds);
         // Every corner is inside the square pyramid of half-angle fov/2 around the view.
         let (axis, angle) = view.orientation();
-        let rotation = DQuat::from_axis_angle(axis, angle);
+        let rotation = maths::rotation(axis, angle);
         let (right, up) = (rotation * DVec3::X, rotation * DVec3::Y);
         let tan = maths::tan(view.fov * 0.5);
         let mut widest: f64 = 0.0;

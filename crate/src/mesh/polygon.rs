@@ -7,6 +7,7 @@
 //! notch) that a fan would fold over. Repeated points and collinear runs are dropped first, so a
 //! `{ . f . f . }` that records the same point twice still triangulates cleanly.
 
+use crate::maths;
 use glam::{DVec2, DVec3};
 
 /// Triangles over the indices of the original point list, counter-clockwise seen from `normal`.
@@ -81,7 +82,7 @@ fn convex_fan(points: &[DVec3], normal: DVec3, tolerance: f64) -> Option<Vec<[u3
         }
         let (d, e) = (b - a, c - b);
         if d != DVec2::ZERO && e != DVec2::ZERO {
-            winding += d.angle_to(e);
+            winding += maths::signed_angle(d, e);
         }
     }
     // Once round, not a loop that winds twice over itself.

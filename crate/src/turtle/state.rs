@@ -102,7 +102,7 @@ impl TurtleState {
             return;
         }
         let angle = self.susceptibility * strength;
-        let rotation = glam::DQuat::from_axis_angle(axis / strength, angle);
+        let rotation = maths::rotation(axis / strength, angle);
         self.set_frame(rotation * self.heading, rotation * self.left);
     }
 
@@ -115,11 +115,11 @@ impl TurtleState {
         if degrees == 0.0 || s < 1e-9 {
             return;
         }
-        let between = self.heading.angle_between(target);
+        let between = maths::angle_between(self.heading, target);
         let angle = degrees
             .to_radians()
             .clamp(between - std::f64::consts::PI, between);
-        let rotation = glam::DQuat::from_axis_angle(axis / s, angle);
+        let rotation = maths::rotation(axis / s, angle);
         self.set_frame(rotation * self.heading, rotation * self.left);
     }
 
