@@ -32,6 +32,7 @@ export function wireViewControls({ els, derivation, viewOptions, view, preview, 
     shown: () => preview.lastGood,
     createClient: () => new BuildClient(createBuildWorker),
     lighting: () => viewOptions.values.lighting,
+    lineWidth: () => viewOptions.values.lineWidth,
     fileName: () => figureName(opening.namedFile, preview.lastGood?.source),
     toggled: (on) => viewTools.pauseForStages(on),
   });
