@@ -33,11 +33,19 @@ export interface StagePlant {
   caption: string;
 }
 
-/** The largest font, in pixels, that `text` fits `room` pixels wide in at most `size` (`measure`: its width at `size`). */
-export function fittedFont(size: number, room: number, measure: (size: number) => number): number {
-  const width = measure(size);
-  return width > room ? Math.max(1, (size * room) / width) : size;
+/**
+ * A caption set in `room` pixels: on one line at `size` pixels where it fits; else broken after a
+ * colon or before a parenthesis (`n = 0` over `(nothing drawn)`), at the largest size up to `size`
+ * its widest line fits at (`width`: a text's width at a size).
+ */
+export function fittedCaption(caption: string, size: number, room: number, width: (text: string, size: number) => number): { lines: string[]; size: number } {
+  const lines = width(caption, size) <= room ? [caption] : caption.split(/(?<=:) | (?=\()/);
+  const widest = Math.max(...lines.map((line) => width(line, size)));
+  return { lines, size: widest > room ? Math.max(1, (size * room) / widest) : size };
 }
+
+/** The height of a caption's line, in sizes of its font. */
+const CAPTION_LEADING = 1.15;
 
 /** Share of a tile's width a caption may take. */
 const CAPTION_ROOM = 0.94;
@@ -149,12 +157,12 @@ export class StagesView {
       const size = captionHeight(height, this.grid.rows, scale) * 0.55;
       context.textAlign = 'center';
       context.fillStyle = background === 'view' && this.darkScheme.matches ? '#e6edf3' : '#1f2328';
+      const font = (px: number) => `${px}px system-ui, sans-serif`;
       tiles.forEach((tile, i) => {
-        const caption = this.plants[i].caption;
-        const font = (px: number) => `${px}px system-ui, sans-serif`;
-        const fitted = fittedFont(size, tile.viewport.width * CAPTION_ROOM, (px) => ((context.font = font(px)), context.measureText(caption).width));
-        context.font = font(fitted);
-        context.fillText(caption, tile.caption.x, tile.caption.y);
+        const fitted = fittedCaption(this.plants[i].caption, size, tile.viewport.width * CAPTION_ROOM, (text, px) => ((context.font = font(px)), context.measureText(text).width));
+        context.font = font(fitted.size);
+        // The last line on the caption's baseline, the others above it.
+        fitted.lines.forEach((line, k) => context.fillText(line, tile.caption.x, tile.caption.y - (fitted.lines.length - 1 - k) * fitted.size * CAPTION_LEADING));
       });
     } finally {
       this.setLineWidth(1);
@@ -295,11 +303,14 @@ export class StagesView {
       const style = (label as HTMLElement).style;
       style.left = `${tiles[i].caption.x}px`;
       style.top = `${tiles[i].caption.y}px`;
-      // As large as the band allows, smaller where a long caption (`n = 0 (nothing drawn)`) would pass its tile.
+      // As large as the band allows; broken in two, and smaller, where a long caption (`n = 0 (nothing drawn)`) would pass its tile.
+      const caption = this.plants[i].caption;
       const fitted = measure
-        ? fittedFont(font, tiles[i].viewport.width * CAPTION_ROOM, (px) => ((measure.font = `${px}px system-ui, sans-serif`), measure.measureText(this.plants[i].caption).width))
-        : font;
-      style.fontSize = `${fitted}px`;
+        ? fittedCaption(caption, font, tiles[i].viewport.width * CAPTION_ROOM, (text, px) => ((measure.font = `${px}px system-ui, sans-serif`), measure.measureText(text).width))
+        : { lines: [caption], size: font };
+      label.textContent = fitted.lines.join('\n');
+      style.fontSize = `${fitted.size}px`;
+      style.lineHeight = String(CAPTION_LEADING);
     });
   }
 

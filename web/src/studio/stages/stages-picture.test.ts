@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { fittedFont } from '../../view/stages-view';
+import { fittedCaption } from '../../view/stages-view';
 import { captionHeight } from '../../view/stages-layout';
 import { paperPixels } from '../downloads/downloads';
 import { stageCount, stagesOf } from './stages';
@@ -27,9 +27,13 @@ describe("Stages' step and picture", () => {
   });
 
   it('shrinks a caption that would pass its tile, and scales the caption band with the picture', () => {
-    const measure = (size: number) => size * 10; // a caption 10 ems wide
-    expect(fittedFont(20, 400, measure)).toBe(20);
-    expect(fittedFont(20, 100, measure)).toBe(10);
+    const width = (text: string, size: number) => text.length * size * 0.5; // half an em a character
+    expect(fittedCaption('n = 3', 20, 400, width)).toEqual({ lines: ['n = 3'], size: 20 });
+    // 21 characters: 210 pixels at 20; broken, its widest line (15 characters, 150 pixels) shrunk to 100.
+    const broken = fittedCaption('n = 0 (nothing drawn)', 20, 100, width);
+    expect(broken.lines).toEqual(['n = 0', '(nothing drawn)']);
+    expect(broken.size).toBeCloseTo((20 * 100) / 150);
+    expect(fittedCaption('n = 2: the core crashed', 20, 200, width).lines).toEqual(['n = 2:', 'the core crashed']);
     expect(captionHeight(300, 1, 1)).toBe(21);
     expect(captionHeight(1748, 1, 300 / 96)).toBe(Math.round(1748 * 0.07)); // on A5 at 300 DPI: type as large as on screen, not 44 px
     expect(captionHeight(5000, 1, 2)).toBe(88);

@@ -51,13 +51,14 @@ export interface StagesPictureControls {
   picture(): StagesPicture;
 }
 
-function select(testId: string, label: string, options: [string, string][], chosen: string): HTMLSelectElement {
+/** A select of `options` ([value, text]), `chosen` selected, in a label `name` with the title `title`. */
+function select(testId: string, name: string, title: string, options: [string, string][], chosen: string): { label: HTMLLabelElement; element: HTMLSelectElement } {
   const element = document.createElement('select');
   element.dataset.testid = testId;
-  element.setAttribute('aria-label', label);
-  element.title = label;
   for (const [value, text] of options) element.append(new Option(text, value, value === chosen, value === chosen));
-  return element;
+  const label = Object.assign(document.createElement('label'), { className: 'field', title });
+  label.append(`${name} `, element);
+  return { label, element };
 }
 
 /** Makes the controls: the step after the last iteration's box (`to`), the PNG's before `png`. */
@@ -67,15 +68,16 @@ export function addPictureControls(to: HTMLInputElement, png: HTMLButtonElement)
   const stepLabel = Object.assign(document.createElement('label'), { className: 'field', title: 'Every k-th step from the first iteration: 2 draws n = 0, 2, 4, 6' });
   stepLabel.append('every ', step);
   to.closest('label')?.after(stepLabel);
-  const background = select('stages-background', 'Background of the PNG', [['white', 'white'], ['transparent', 'transparent'], ['view', 'as shown']], 'white');
-  const paper = select('stages-paper', 'Paper the PNG fills (turned to the figure’s shape)', [['', 'no paper'], ...Object.entries(PAPERS).map(([key, p]): [string, string] => [key, p.label])], '');
-  const dpi = select('stages-dpi', 'Resolution of the PNG', [['150', '150 DPI'], ['300', '300 DPI']], '150');
-  png.before(background, paper, dpi);
+  const background = select('stages-background', 'Background', 'The PNG’s background: white, transparent, or as the figure is shown', [['white', 'white'], ['transparent', 'transparent'], ['view', 'as shown']], 'white');
+  const papers = Object.entries(PAPERS).map(([key, p]): [string, string] => [key, p.label]);
+  const paper = select('stages-paper', 'Paper', 'A sheet the PNG fills, turned to the figure’s shape; none: a tile of 420 × 560 pixels a plant at 150 DPI', [['', 'none'], ...papers], '');
+  const dpi = select('stages-dpi', 'DPI', 'The PNG’s resolution, in dots per inch: its lines and captions keep their size on paper', [['150', '150'], ['300', '300']], '150');
+  png.before(background.label, paper.label, dpi.label);
   return {
     step,
-    background,
-    paper,
-    dpi,
-    picture: () => ({ background: background.value as StagesPicture['background'], paper: paper.value as StagesPicture['paper'], dpi: Number(dpi.value) }),
+    background: background.element,
+    paper: paper.element,
+    dpi: dpi.element,
+    picture: () => ({ background: background.element.value as StagesPicture['background'], paper: paper.element.value as StagesPicture['paper'], dpi: Number(dpi.element.value) }),
   };
 }
