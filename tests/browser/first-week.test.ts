@@ -205,6 +205,7 @@ describe('the Iterations box', () => {
     await page.locator('[data-testid=editor] .cm-content').waitFor();
     await page.waitForTimeout(800); // (the linter's pause)
     expect(await page.locator('[data-testid=editor] .cm-lintRange-error').count(), 'no error marked in the grammar').toBe(0);
+    expect(await page.getByTestId('status').textContent(), 'nor told of its #iterations line').toBe('Too many iterations in the Iterations box — showing last good plant');
     await page.locator('.toolbar').screenshot({ path: new URL('first-week-iterations.png', RESULTS).pathname }).catch(() => undefined);
     await type('');
     expect(await box()).toMatchObject({ invalid: false, override: false });

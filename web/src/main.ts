@@ -47,7 +47,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   const feed = new DiagnosticsFeed();
   // The grammar in a plain textarea until CodeMirror arrives, after the first plant (below).
   const editor = createLazyGrammarEditor(
-    { parent: els.editor, doc: start.text, diagnose: (text) => feed.diagnose(text).then((d) => derivation.ofText(d)), vocabulary: loadVocabulary, openReference: (anchor) => help.open(anchor) },
+    { parent: els.editor, doc: start.text, diagnose: (text) => feed.diagnose(text), vocabulary: loadVocabulary, openReference: (anchor) => help.open(anchor) },
     () => import('./editor/grammar-editor'),
   );
   const sliders = new LazySliderPanel([els.sliders, els.constantsCount, els.constantsEmpty, editor]); // with the vocabulary
