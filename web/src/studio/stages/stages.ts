@@ -94,7 +94,7 @@ export class StagesMode {
   /** What the figure on screen was grown from (a delivered build with another key grows it again). */
   private key: string | undefined;
   /** The figure on screen: the text and options, and its stages, for the SVG. */
-  private figure: { source: string; options: BuildOptions; stages: Stage[]; grid: StagesGrid; drawn: boolean[] } | undefined;
+  private figure: { source: string; options: BuildOptions; stages: Stage[]; grid: StagesGrid; drawn: boolean[]; lines: number | null } | undefined;
   /** The step and the PNG's settings (made with Stages). */
   private readonly picture: StagesPictureControls;
 
@@ -221,7 +221,7 @@ export class StagesMode {
       plants.push(this.plantOf(stage, outcome.kind === 'built' ? outcome.result : outcome.kind, sketch));
     }
     view.show(plants, grid, lines);
-    this.figure = { source, options, stages, grid, drawn: plants.map((p) => p.mesh !== null) };
+    this.figure = { source, options, stages, grid, drawn: plants.map((p) => p.mesh !== null), lines };
     const missing = plants.filter((p) => !p.mesh).length;
     const scaled = `${stages.length} plants ${grid.scale === 'one' ? 'at one scale' : 'each fitted to its tile'}`;
     this.say('done', missing === 0 ? scaled : `${scaled}; ${missing} drew nothing`);
@@ -277,7 +277,7 @@ export class StagesMode {
         drawings.push({ svg: new TextDecoder().decode(outcome.file.bytes), caption: stage.caption });
       }
       const name = this.host.fileName();
-      const svg = stagesSvg(drawings, figure.grid.columns, figure.grid.rows, `${name}: stages`, figure.grid.scale);
+      const svg = stagesSvg(drawings, figure.grid.columns, figure.grid.rows, `${name}: stages`, figure.grid.scale, figure.lines ?? undefined);
       saveFile(new Blob([svg], { type: 'image/svg+xml' }), `${name}-stages.svg`, 'image/svg+xml');
       this.say('done', `Saved the figure as an SVG`);
     } catch (error) {
