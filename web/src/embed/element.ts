@@ -31,6 +31,18 @@ function wholeNumber(value: string | null): number | undefined {
   return Number.isInteger(n) && n >= 0 ? n : undefined;
 }
 
+/**
+ * Why a grammar at `url`, on another site than the page, could not be read: most often its server
+ * does not let other sites' pages read it (CORS), which the browser tells only its console.
+ */
+export function crossOrigin(url: URL): string {
+  return (
+    `${url.href} is on another site (${url.host}), and its server did not let this page read it. ` +
+    'Its server must send the header “Access-Control-Allow-Origin” (e.g. “Access-Control-Allow-Origin: *”) with the grammar, ' +
+    'or put the grammar on this page’s own site, or write it inside the element: <meristem-plant>axiom: F …</meristem-plant>.'
+  );
+}
+
 export class MeristemPlantElement extends HTMLElement {
   static readonly observedAttributes = ['src', 'iterations', 'seed', 'controls', ...GROWTH_ATTRIBUTES];
   private plant: EmbedPlant | undefined;
@@ -61,7 +73,10 @@ export class MeristemPlantElement extends HTMLElement {
   private async grammar(): Promise<string> {
     const src = this.getAttribute('src');
     if (!src) return this.textContent?.trim() ?? '';
-    const response = await fetch(new URL(src, document.baseURI));
+    const url = new URL(src, document.baseURI);
+    const response = await fetch(url).catch((error: unknown) => {
+      throw url.origin === location.origin ? error : new Error(crossOrigin(url));
+    });
     if (!response.ok) throw new Error(`${src}: HTTP ${response.status}`);
     return response.text();
   }

@@ -16,6 +16,7 @@ export const EMBED_CSS = `
 .mp-view { position: relative; flex: 1 1 auto; min-height: 120px; background: var(--mp-bg); }
 .mp-view canvas { position: absolute; inset: 0; display: block; width: 100%; height: 100%; touch-action: none; }
 .mp-view canvas:focus-visible { outline: 3px solid var(--mp-focus); outline-offset: -3px; }
+.mp-failed { margin: 0; padding: 12px; border: 1px solid #c62828; border-radius: 8px; color: #c62828; font: 14px/1.4 system-ui, sans-serif; overflow-wrap: anywhere; }
 .mp-message { position: absolute; inset: auto 8px 8px 8px; z-index: 1; margin: 0; padding: 4px 8px; border-radius: 6px;
   background: var(--mp-panel); color: #c62828; font-size: 13px; }
 .mp-message[hidden], .mp-hidden { display: none; }

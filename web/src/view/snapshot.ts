@@ -6,6 +6,7 @@ import { Vector3, type Color, type OrthographicCamera, type PerspectiveCamera, t
 import type { GroundGrid } from './ground-grid';
 import type { SegmentLines } from './segment-lines';
 import type { ShownPlant } from './shown-plant';
+import { framePicture, keepCamera } from './picture-frame';
 import { turntable } from './turntable';
 import type { View2D } from './view-2d';
 
@@ -112,21 +113,25 @@ function restore(view: PictureSource, pixelRatio: number): void {
 }
 
 /**
- * A PNG of the view at `width` × `height` pixels: the same camera and lights, the aspect ratio of
- * the picture, the look `look` (see {@link drawSized}). The canvas is drawn at that size for one
- * frame and restored before the page paints again.
+ * A PNG of the view at `width` × `height` pixels: the camera looking the same way, moved so that the
+ * whole plant fills the picture's aspect ratio with a margin (./picture-frame.ts), the same lights,
+ * the look `look` (see {@link drawSized}). The canvas is drawn at that size for one frame and
+ * restored, with the camera, before the page paints again.
  */
 export async function snapshot(view: PictureSource, width: number, height: number, look: PictureLook): Promise<Blob> {
   const scale = pictureScale(view, width, height);
   const pixelRatio = view.renderer.getPixelRatio();
   let blob: Promise<Blob | null>;
   const undress = dress(view, look, scale);
+  const putBack = keepCamera(view.camera);
   try {
+    framePicture(view.camera, view.shown.box(true), width / height);
     const picture = drawSized(view, width, height, scale, look);
     // toBlob copies the bitmap now (preserveDrawingBuffer keeps it); encoding finishes later.
     blob = new Promise((resolve) => picture.toBlob(resolve, 'image/png'));
   } finally {
     undress();
+    putBack();
     restore(view, pixelRatio);
   }
   const png = await blob;

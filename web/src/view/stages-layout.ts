@@ -29,9 +29,12 @@ export interface StageTile {
   caption: { x: number; y: number };
 }
 
-/** The caption band under each row, in pixels, for a picture `height` pixels high. */
-export function captionHeight(height: number, rows: number): number {
-  return Math.round(Math.min(44, Math.max(18, (0.07 * height) / Math.sqrt(rows))));
+/**
+ * The caption band under each row, in pixels, for a picture `height` pixels high whose CSS pixel is
+ * `scale` of its pixels (a PNG at 300 DPI: 3.1): from 18 to 44 CSS pixels.
+ */
+export function captionHeight(height: number, rows: number, scale = 1): number {
+  return Math.round(Math.min(44 * scale, Math.max(18 * scale, (0.07 * height) / Math.sqrt(rows))));
 }
 
 /** Share of a tile's width and height a plant may fill (the rest is the gap to the next). */
@@ -45,7 +48,8 @@ export type StageScale = 'one' | 'each';
 /**
  * The tiles of a `columns` × `rows` figure of `width` × `height` pixels for plants whose view
  * extents are `extents` (row by row; `null`: nothing drawn). With `one` scale, the widest and the
- * tallest plant just fit their tiles; with `each`, every plant just fits its own.
+ * tallest plant just fit their tiles; with `each`, every plant just fits its own. `pixels`: the
+ * picture's pixels a CSS pixel (see {@link captionHeight}).
  */
 export function stageTiles(
   extents: readonly (ViewExtent | null)[],
@@ -54,8 +58,9 @@ export function stageTiles(
   width: number,
   height: number,
   scale: StageScale = 'one',
+  pixels = 1,
 ): StageTile[] {
-  const caption = captionHeight(height, rows);
+  const caption = captionHeight(height, rows, pixels);
   const tileWidth = width / columns;
   const tileHeight = Math.max(1, height / rows - caption);
   // Model units per pixel that fit `plants`; a figure of points only (or nothing) gets an arbitrary one.

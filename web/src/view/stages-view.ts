@@ -5,11 +5,14 @@
 // like the studio's first view of them. Drawn on demand into its own canvas; a picture of any size
 // comes out as a PNG with the captions.
 import { Box3, Group, LineBasicMaterial, LineSegments, Mesh, OrthographicCamera, Scene, Vector2, Vector3, WebGLRenderer, type BufferGeometry, type Object3D } from 'three';
+import { LineMaterial } from 'three/examples/jsm/lines/LineMaterial.js';
 import type { Bounds, GpuArrays, MeshBuffers } from '../core';
 import { scenePalette } from './palette';
 import { lineGeometry, plantGeometry } from './plant-geometry';
 import { addHeadlight, addSkyLight, litPlantMaterial, unlitPlantMaterial } from './scene-setup';
+import type { PictureLook } from './snapshot';
 import { captionHeight, stageTiles, type StageScale, type StageTile, type ViewExtent } from './stages-layout';
+import { TexelLines } from './texel-lines';
 
 const DARK_SCHEME = '(prefers-color-scheme: dark)';
 
@@ -30,6 +33,23 @@ export interface StagePlant {
   caption: string;
 }
 
+/**
+ * A caption set in `room` pixels: on one line at `size` pixels where it fits; else broken after a
+ * colon or before a parenthesis (`n = 0` over `(nothing drawn)`), at the largest size up to `size`
+ * its widest line fits at (`width`: a text's width at a size).
+ */
+export function fittedCaption(caption: string, size: number, room: number, width: (text: string, size: number) => number): { lines: string[]; size: number } {
+  const lines = width(caption, size) <= room ? [caption] : caption.split(/(?<=:) | (?=\()/);
+  const widest = Math.max(...lines.map((line) => width(line, size)));
+  return { lines, size: widest > room ? Math.max(1, (size * room) / widest) : size };
+}
+
+/** The height of a caption's line, in sizes of its font. */
+const CAPTION_LEADING = 1.15;
+
+/** Share of a tile's width a caption may take. */
+const CAPTION_ROOM = 0.94;
+
 /** The figure's layout: how many plants across and down (the plants are given row by row), and their scale. */
 export interface StagesGrid {
   columns: number;
@@ -44,7 +64,10 @@ export class StagesView {
   private readonly lit = litPlantMaterial();
   private readonly unlit = unlitPlantMaterial();
   private readonly lineMaterial = new LineBasicMaterial({ vertexColors: true });
-  private plants: { object: Object3D | null; extent: ViewExtent | null; caption: string }[] = [];
+  private plants: { object: Object3D | null; extent: ViewExtent | null; caption: string; lines?: TexelLines }[] = [];
+  /** The lines' width in CSS pixels when the plants are drawn as lines (as the view's Lines mode), else null: tubes. */
+  private lineWidth: number | null = null;
+  private readonly measure = document.createElement('canvas').getContext('2d');
   private grid: StagesGrid = { columns: 1, rows: 1, scale: 'one' };
   private lighting = true;
   private renderQueued = false;
@@ -53,7 +76,7 @@ export class StagesView {
   private readonly resizeObserver: ResizeObserver;
 
   constructor(private readonly container: HTMLElement) {
-    this.renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    this.renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true, alpha: true }); // (alpha: a transparent PNG)
     this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
     this.renderer.domElement.setAttribute('aria-hidden', 'true');
     this.captions = document.createElement('div');
@@ -70,14 +93,20 @@ export class StagesView {
     this.resize();
   }
 
-  /** Shows `plants` (row by row) in a `grid`; replaces (and disposes) what was shown. */
-  show(plants: readonly StagePlant[], grid: StagesGrid): void {
+  /**
+   * Shows `plants` (row by row) in a `grid`; replaces (and disposes) what was shown. With a
+   * `lineWidth` (CSS pixels) their segments are drawn as lines that wide in every stage, however
+   * each is scaled (as the view's Lines mode draws them); without, as tubes.
+   */
+  show(plants: readonly StagePlant[], grid: StagesGrid, lineWidth: number | null = null): void {
     this.clear();
     this.grid = grid;
+    this.lineWidth = lineWidth;
     const flat = plants.every((p) => p.flat || !p.mesh);
     this.aimCamera(plants, flat);
     this.plants = plants.map((plant) => {
       if (!plant.mesh) return { object: null, extent: null, caption: plant.caption };
+      if (lineWidth !== null && plant.lines && plant.lines.lines.length > 0) return { ...this.asLines(plant.lines, plant.bounds, lineWidth), caption: plant.caption };
       const geometry = plantGeometry(plant.mesh, plant.gpu, plant.bounds);
       const asLines = plant.mesh.indices.length === 0 && plant.mesh.lines.length > 0;
       const object = new Group();
@@ -91,18 +120,28 @@ export class StagesView {
     this.requestRender();
   }
 
+  /** `lines` drawn `width` CSS pixels wide, hidden until its tile is drawn. */
+  private asLines(lines: NonNullable<StagePlant['lines']>, bounds: Bounds, width: number): { object: Object3D; extent: ViewExtent; lines: TexelLines } {
+    const drawn = new TexelLines(new LineMaterial({ vertexColors: true, linewidth: width, worldUnits: false }), this.renderer.capabilities.maxTextureSize);
+    drawn.setSegments(lines.lines, lines.lineColors, new Box3(new Vector3(...bounds[0]), new Vector3(...bounds[1])));
+    drawn.mesh.visible = false;
+    this.scene.add(drawn.mesh);
+    return { object: drawn.mesh, extent: this.extent(bounds), lines: drawn };
+  }
+
   /** Shades the plants (on) or shows the palette's colours as they are (off), like the 3D view. */
   setLighting(lit: boolean): void {
     this.lighting = lit;
-    for (const { object } of this.plants) object?.traverse((part) => part instanceof Mesh && (part.material = this.material()));
+    for (const { object, lines } of this.plants) if (!lines) object?.traverse((part) => part instanceof Mesh && (part.material = this.material()));
     this.requestRender();
   }
 
   /**
-   * The figure as a PNG of `width` × `height` pixels, captions included: the same tiles and
-   * background as on screen, laid out for that size.
+   * The figure as a PNG of `width` × `height` pixels, captions included: the same tiles as on
+   * screen, laid out for that size, on the `background` asked for; `scale` pixels of the picture
+   * a CSS pixel of the screen (its lines' width and the captions' least size).
    */
-  async picture(width: number, height: number): Promise<Blob> {
+  async picture(width: number, height: number, { background, scale }: { background: PictureLook['background']; scale: number }): Promise<Blob> {
     const pixelRatio = this.renderer.getPixelRatio();
     const canvas = document.createElement('canvas');
     canvas.width = width;
@@ -112,14 +151,21 @@ export class StagesView {
     try {
       this.renderer.setPixelRatio(1);
       this.renderer.setSize(width, height, false);
-      const tiles = this.draw(width, height);
+      this.setLineWidth(scale);
+      const tiles = this.draw(width, height, background, scale);
       context.drawImage(this.renderer.domElement, 0, 0);
-      const size = captionHeight(height, this.grid.rows) * 0.55;
-      context.font = `${Math.round(size)}px system-ui, sans-serif`;
+      const size = captionHeight(height, this.grid.rows, scale) * 0.55;
       context.textAlign = 'center';
-      context.fillStyle = this.darkScheme.matches ? '#e6edf3' : '#1f2328';
-      tiles.forEach((tile, i) => context.fillText(this.plants[i].caption, tile.caption.x, tile.caption.y));
+      context.fillStyle = background === 'view' && this.darkScheme.matches ? '#e6edf3' : '#1f2328';
+      const font = (px: number) => `${px}px system-ui, sans-serif`;
+      tiles.forEach((tile, i) => {
+        const fitted = fittedCaption(this.plants[i].caption, size, tile.viewport.width * CAPTION_ROOM, (text, px) => ((context.font = font(px)), context.measureText(text).width));
+        context.font = font(fitted.size);
+        // The last line on the caption's baseline, the others above it.
+        fitted.lines.forEach((line, k) => context.fillText(line, tile.caption.x, tile.caption.y - (fitted.lines.length - 1 - k) * fitted.size * CAPTION_LEADING));
+      });
     } finally {
+      this.setLineWidth(1);
       this.renderer.setPixelRatio(pixelRatio);
       this.resize();
     }
@@ -152,10 +198,11 @@ export class StagesView {
   }
 
   private clear(): void {
-    for (const { object } of this.plants) {
+    for (const { object, lines } of this.plants) {
       if (!object) continue;
       this.scene.remove(object);
-      object.traverse((part) => (part instanceof Mesh || part instanceof LineSegments) && (part.geometry as BufferGeometry).dispose());
+      if (lines) (lines.dispose(), lines.mesh.material.dispose());
+      else object.traverse((part) => (part instanceof Mesh || part instanceof LineSegments) && (part.geometry as BufferGeometry).dispose());
     }
     this.plants = [];
   }
@@ -193,14 +240,22 @@ export class StagesView {
     return extent;
   }
 
-  /** Draws every tile into the renderer's canvas of `width` × `height` CSS pixels; returns the tiles. */
-  private draw(width: number, height: number): StageTile[] {
+  /** The lines drawn `scale` times the width chosen (a picture's pixels a CSS pixel). */
+  private setLineWidth(scale: number): void {
+    for (const { lines } of this.plants) if (lines && this.lineWidth !== null) lines.mesh.material.linewidth = this.lineWidth * scale;
+  }
+
+  /**
+   * Draws every tile into the renderer's canvas of `width` × `height` CSS pixels on `background`
+   * (`scale`: the picture's pixels a CSS pixel, for the captions' band); returns the tiles.
+   */
+  private draw(width: number, height: number, background: PictureLook['background'] = 'view', pixels = 1): StageTile[] {
     const { columns, rows, scale } = this.grid;
-    const tiles = stageTiles(this.plants.map((p) => p.extent), columns, rows, width, height, scale);
+    const tiles = stageTiles(this.plants.map((p) => p.extent), columns, rows, width, height, scale, pixels);
     const renderer = this.renderer;
     this.scene.background = null;
     renderer.setScissorTest(false);
-    renderer.setClearColor(scenePalette(this.darkScheme.matches).background, 1);
+    renderer.setClearColor(background === 'view' ? scenePalette(this.darkScheme.matches).background : 0xffffff, background === 'transparent' ? 0 : 1);
     renderer.clear();
     renderer.setScissorTest(true);
     tiles.forEach((tile, i) => {
@@ -243,11 +298,19 @@ export class StagesView {
     const { columns, rows, scale } = this.grid;
     const tiles = stageTiles(this.plants.map((p) => p.extent), columns, rows, width, height, scale);
     const font = captionHeight(height, rows) * 0.55;
+    const measure = this.measure;
     [...this.captions.children].forEach((label, i) => {
       const style = (label as HTMLElement).style;
       style.left = `${tiles[i].caption.x}px`;
       style.top = `${tiles[i].caption.y}px`;
-      style.fontSize = `${font}px`;
+      // As large as the band allows; broken in two, and smaller, where a long caption (`n = 0 (nothing drawn)`) would pass its tile.
+      const caption = this.plants[i].caption;
+      const fitted = measure
+        ? fittedCaption(caption, font, tiles[i].viewport.width * CAPTION_ROOM, (text, px) => ((measure.font = `${px}px system-ui, sans-serif`), measure.measureText(text).width))
+        : { lines: [caption], size: font };
+      label.textContent = fitted.lines.join('\n');
+      style.fontSize = `${fitted.size}px`;
+      style.lineHeight = String(CAPTION_LEADING);
     });
   }
 

@@ -32,7 +32,8 @@ export function wireViewControls({ els, derivation, viewOptions, view, preview, 
     shown: () => preview.lastGood,
     createClient: () => new BuildClient(createBuildWorker),
     lighting: () => viewOptions.values.lighting,
-    fileName: () => figureName(opening.currentFile, preview.lastGood?.source),
+    lineWidth: () => viewOptions.values.lineWidth,
+    fileName: () => figureName(opening.namedFile, preview.lastGood?.source),
     toggled: (on) => viewTools.pauseForStages(on),
   });
   viewOptions.onChange((values, changed) => changed.has('lighting') && stages.setLighting(values.lighting));

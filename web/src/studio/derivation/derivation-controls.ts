@@ -72,6 +72,8 @@ export class DerivationControls {
   /** The grammar's iterations line as last seen in the text (undefined: not seen yet). */
   private iterationsLine: string | null | undefined;
   private readonly listeners = new Set<() => void>();
+  /** The last build said the box's number is too many (the step or module limit). */
+  private tooMany = false;
 
   /** `notice` tells the errors the box's value causes. */
   constructor(
@@ -88,6 +90,7 @@ export class DerivationControls {
     );
     els.iterations.addEventListener('input', () => {
       this.playback.pause();
+      this.tooMany = false;
       this.showOverride();
       this.changed();
     });
@@ -108,9 +111,15 @@ export class DerivationControls {
     this.listeners.add(listener);
   }
 
-  /** The iterations asked for; undefined: the grammar's own. */
+  /** The iterations asked for; undefined: the grammar's own (also while the box holds what it does not accept: `-2`, `2.5`). */
   iterations(): number | undefined {
-    return wholeNumber(this.els.iterations);
+    return this.els.iterations.validity.valid ? wholeNumber(this.els.iterations) : undefined;
+  }
+
+  /** The diagnostics the text shows: not the limits the box's number passes (the box says those). */
+  ofText(diagnostics: readonly Diagnostic[]): readonly Diagnostic[] {
+    const n = this.iterations();
+    return n === undefined || n === this.grammarIterations ? diagnostics : diagnostics.filter((d) => !ITERATION_ERRORS.has(d.code));
   }
 
   /** The seed asked for; undefined: the grammar's own. */
@@ -130,10 +139,11 @@ export class DerivationControls {
    */
   buildShown(build: Pick<PlantBuild, 'grammarIterations' | 'diagnostics'>): void {
     if (build.diagnostics.every((d) => d.severity !== 'error' || ITERATION_ERRORS.has(d.code))) this.grammarIterations = build.grammarIterations;
-    this.showOverride();
     const errors = overrideErrors(this.iterations(), this.grammarIterations, build.diagnostics);
+    this.tooMany = errors !== null;
     if (errors) this.notice?.show('error', errors.message, errors.items, OVERRIDE_TOPIC);
     else this.notice?.hide(OVERRIDE_TOPIC);
+    this.showOverride();
     this.playback.shownBuild();
   }
 
@@ -181,18 +191,26 @@ export class DerivationControls {
     this.changed();
   }
 
-  /** Shows which iterations are in force: the box's, marked as overriding the grammar's, or the grammar's as placeholder. */
+  /**
+   * Shows which iterations are in force: the box's, marked as overriding the grammar's (not when
+   * they are the grammar's), or the grammar's as placeholder; and at the box, what it does not
+   * accept (the grammar is not to blame for it): not a whole number from 0 to its maximum, or too many.
+   */
   private showOverride(): void {
     const { iterations, iterationsBox, iterationsTag, iterationsReset } = this.els;
     const override = this.iterations();
     const grammar = this.grammarIterations;
+    const refused = this.tooMany ? 'too many' : iterations.validity.valid ? '' : `whole, 0–${iterations.max}`;
+    const marked = refused !== '' || (override !== undefined && override !== grammar);
     iterations.placeholder = `grammar: ${grammar}`;
     iterationsBox.style.setProperty('--digits', String(String(grammar).length)); // (the box's width, iterations-box.css)
-    iterationsBox.toggleAttribute('data-override', override !== undefined);
-    iterationsTag.textContent = `overrides ${grammar}`;
-    iterationsReset.hidden = override === undefined;
-    iterations.title =
-      override === undefined
+    iterationsBox.toggleAttribute('data-override', marked);
+    iterations.setAttribute('aria-invalid', String(refused !== ''));
+    iterationsTag.textContent = refused || `overrides ${grammar}`;
+    iterationsReset.hidden = !marked;
+    iterations.title = refused
+      ? `Iterations: ${refused}`
+      : override === undefined
         ? `The grammar's own iterations (${grammar}) are in force; type a number to override them`
         : `${override} iterations override the grammar's ${grammar}; × or an empty box uses the grammar's`;
   }

@@ -12,7 +12,7 @@ export function loadDownloads({ els, view, preview, opening, timeline }: StudioP
       view,
       () => {
         const good = preview.lastGood;
-        return good && { source: good.source, options: { ...good.options, edits: branchEdits.document() }, name: figureName(opening.currentFile, good.source) };
+        return good && { source: good.source, options: { ...good.options, edits: branchEdits.document() }, name: figureName(opening.namedFile, good.source) };
       },
       { timeline, preview },
     ),

@@ -44,8 +44,12 @@ export function afterPaint(): Promise<void> {
 /** The resolutions a picture is offered at, in dots per inch. */
 export const PICTURE_DPIS = [72, 150, 300] as const;
 
-/** Paper a picture can fill (ISO sizes, portrait), in millimetres. */
-export const PAPERS = { a5: { label: 'A5', width: 148, height: 210 }, a4: { label: 'A4', width: 210, height: 297 } } as const;
+/** Paper a picture can fill (ISO sizes and US Letter, portrait), in millimetres. */
+export const PAPERS = {
+  a5: { label: 'A5', width: 148, height: 210 },
+  a4: { label: 'A4', width: 210, height: 297 },
+  letter: { label: 'Letter', width: 215.9, height: 279.4 },
+} as const;
 
 /** A paper and its orientation, as the menu offers them: `a5-portrait`, `a4-landscape`. */
 export type PaperChoice = `${keyof typeof PAPERS}-${'portrait' | 'landscape'}`;

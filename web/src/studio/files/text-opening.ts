@@ -64,6 +64,11 @@ export class TextOpening {
     return this.file;
   }
 
+  /** The file the text on screen is named after: `untitled` once an example's text was changed (its own title names it, see `figureName`). */
+  get namedFile(): string {
+    return this.pristine === undefined || this.parts.editor.text() === this.pristine ? this.file : 'untitled';
+  }
+
   /**
    * Replaces the editor's text by `text` (titled `title` in the questions), unless the user's own
    * text would be lost and they choose to keep it; settles whether it was replaced. Their text is

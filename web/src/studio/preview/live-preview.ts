@@ -2,7 +2,7 @@
 // only the newest one is shown. A grammar with errors keeps the last good plant on screen, marked
 // stale. A build that takes a while says so ("Building… step k of n") with a Stop button. The
 // editor's linter gets its diagnostics from the same builds (DiagnosticsFeed).
-import type { BuildOptions, BuildProgress, PlantSketch } from '../../core';
+import type { BuildOptions, BuildProgress, Diagnostic, PlantSketch } from '../../core';
 import type { PlantView } from '../../view';
 import { DiagnosticsFeed } from './diagnostics-feed';
 import { reportBuilding, reportErrors, reportPlant, type StatusReport } from './status';
@@ -44,6 +44,11 @@ export interface LivePreviewParts {
   text: () => string;
   /** The build options now (iterations, seed, view options). */
   options: () => BuildOptions;
+  /**
+   * The diagnostics the text is to answer for (its linter's, the status line's): without those
+   * the options caused, which say so where they are set (the Iterations box's limits).
+   */
+  blamed?: (diagnostics: readonly Diagnostic[]) => readonly Diagnostic[];
   /** Called when a build's diagnostics may differ from what the linter showed for the same text. */
   diagnosticsChanged: () => void;
   /**
@@ -287,6 +292,8 @@ export class LivePreview {
     const { result } = outcome;
     const { build } = result;
     const sameText = this.lastResult?.source === result.source;
+    const blamed = this.parts.blamed?.(build.diagnostics) ?? build.diagnostics;
+    const own = blamed.some((d) => d.severity === 'error');
     if (build.ok) {
       view.showPlant(build.mesh, build.flat, result.gpu, build.stats.bounds);
       this.lastGood = result;
@@ -295,12 +302,12 @@ export class LivePreview {
       showStatus(status, reportPlant(build.stats, build.diagnostics, build.timings, result.roundTripMillis));
     } else {
       result.inspector.free(); // not shown: the plant on screen stays the last good one
-      showStatus(status, reportErrors(build.diagnostics, this.lastGood !== undefined));
+      showStatus(status, own ? reportErrors(blamed, this.lastGood !== undefined) : { state: 'stale', text: 'Too many iterations in the Iterations box — showing last good plant' });
     }
-    this.markStale(!build.ok && this.lastGood !== undefined, 'the grammar has errors');
-    if (this.parts.problems) this.parts.problems.hidden = build.diagnostics.length === 0;
+    this.markStale(!build.ok && this.lastGood !== undefined, own ? 'the grammar has errors' : 'too many iterations');
+    if (this.parts.problems) this.parts.problems.hidden = blamed.length === 0;
     this.lastResult = result;
-    this.feed.delivered(result.source, build.diagnostics);
+    this.feed.delivered(result.source, blamed);
     if (sameText) this.parts.diagnosticsChanged();
     this.deliveredKey = key;
     status.dataset.generation = String(++this.generation);

@@ -55,6 +55,7 @@ export function createLivePreview(parts: StudioPreviewParts): LivePreview {
         ...timeline,
       };
     },
+    blamed: (diagnostics) => derivation.ofText(diagnostics),
     diagnosticsChanged: () => editor.refreshDiagnostics(),
     // The panels follow the plant on screen (while the growth plays, at the timeline's pace).
     adopt: (result) =>

@@ -49,6 +49,22 @@ describe('the Stages figure as SVG', () => {
     for (const w of widths) expect(w).toBeGreaterThanOrEqual(pixel * 0.999);
   });
 
+  it('draws every stroke of every stage at the line width asked for, in pixels of the figure, each stage fitted or not', () => {
+    for (const fit of ['one', 'each'] as const) {
+      const svg = stagesSvg([2, 5].map((n) => ({ svg: svgOf(n), caption: `n = ${n}` })), 2, 1, 'x', fit, 3);
+      const [, , width, height] = /viewBox="([^"]+)"/.exec(svg)![1].split(' ').map(Number);
+      const pixel = Math.max(width, height) / 1600;
+      const groups = svg.split('<g transform=').slice(1);
+      expect(groups).toHaveLength(2);
+      for (const group of groups) {
+        const k = Number(/^"[^"]*scale\(([\d.e-]+)\)/.exec(group)?.[1] ?? 1);
+        const widths = [...group.matchAll(/stroke-width="([^"]+)"/g)].map((m) => (Number(m[1]) * k) / pixel);
+        expect(widths.length).toBeGreaterThan(0);
+        for (const w of widths) expect(w, `${fit}: 3 pixels`).toBeCloseTo(3, 2);
+      }
+    }
+  });
+
   it('enlarges each drawing to fill its tile when asked', () => {
     const drawings = [1, 3].map((n) => ({ svg: svgOf(n), caption: `n = ${n}` }));
     const svg = stagesSvg(drawings, 2, 1, 'x', 'each');

@@ -37,9 +37,11 @@ const FIGURE_SIZE = 1600;
 /**
  * The figure of `drawings` (row by row) in a `columns` × `rows` grid: every plant at the same
  * scale, centred in its tile and standing on the row's baseline, its caption under it; no stroke
- * thinner than a pixel of the figure's `width` × `height`.
+ * thinner than a pixel of the figure's `width` × `height`. With `lineWidth` (pixels of the
+ * figure), every stroke of every plant is that wide, as the view's Lines mode draws them: each
+ * stage's own widths are in its own unit (docs/LANGUAGE.md, widths), which differs from stage to stage.
  */
-export function stagesSvg(drawings: readonly StageDrawing[], columns: number, rows: number, title: string, fit: StageScale = 'one'): string {
+export function stagesSvg(drawings: readonly StageDrawing[], columns: number, rows: number, title: string, fit: StageScale = 'one', lineWidth?: number): string {
   const parsed = drawings.map((d) => (d.svg ? parseStageSvg(d.svg) : null));
   const widest = Math.max(1e-9, ...parsed.map((p) => (p ? p.viewBox[2] : 0)));
   const tallest = Math.max(1e-9, ...parsed.map((p) => (p ? p.viewBox[3] : 0)));
@@ -55,7 +57,13 @@ export function stagesSvg(drawings: readonly StageDrawing[], columns: number, ro
   // Strokes at least a pixel wide at the figure's size: the small, early stages stay visible.
   const thinnest = 1 / scale;
   const widen = (body: string, factor: number) =>
-    body.replace(/stroke-width="([^"]+)"/g, (all, w: string) => (Number(w) * factor < thinnest ? `stroke-width="${Number((thinnest / factor).toPrecision(4))}"` : all));
+    body.replace(/stroke-width="([^"]+)"/g, (all, w: string) =>
+      lineWidth !== undefined
+        ? `stroke-width="${Number((lineWidth / scale / factor).toPrecision(4))}"`
+        : Number(w) * factor < thinnest
+          ? `stroke-width="${Number((thinnest / factor).toPrecision(4))}"`
+          : all,
+    );
   const parts: string[] = [
     '<?xml version="1.0" encoding="UTF-8"?>',
     `<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 ${round(width)} ${round(height)}" width="${round(width * scale)}" height="${round(height * scale)}">`,

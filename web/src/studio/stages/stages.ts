@@ -9,19 +9,17 @@ import type { StageScale } from '../../view/stages-layout';
 import { StagesView, type StagePlant, type StagesGrid } from '../../view/stages-view';
 // Loaded on demand: it imports other areas' files, not their indexes, which would bring their
 // wiring into its chunk's graph (and split the first load into more files).
-import { afterPaint } from '../downloads/downloads';
+import { afterPaint, withResolution } from '../downloads/downloads';
 import { saveFile } from '../files/save-file';
 import { createExportWorker, runExport } from '../downloads/export-client';
 import { stagesSvg, type StageDrawing } from './stages-svg';
+import { addPictureControls, MAX_STAGE_STEP, pixelsPerCssPixel, stagesPictureSize, type StagesPictureControls } from './stages-picture';
 import { growthKey } from '../controls/view-following';
 import type { BuildClient, BuildResult } from '../../build';
 
 /** Most iterations side by side, and most seeds, in one figure. */
 export const MAX_STAGE_COLUMNS = 10;
 export const MAX_STAGE_SEEDS = 8;
-/** A tile of the downloaded PNG, in pixels. */
-const PNG_TILE = { width: 420, height: 560 };
-const PNG_MAX_SIDE = 8192;
 /** The pause after typing in the range before the figure is grown again. */
 const RANGE_TYPING_MS = 300;
 
@@ -51,6 +49,8 @@ export interface StagesHost {
   createClient(): BuildClient;
   /** Whether the plants are lit (the view's Light option). */
   lighting(): boolean;
+  /** The width of the view's lines in CSS pixels (its Lines mode's). */
+  lineWidth(): number;
   /** The file name the downloads start with (no extension). */
   fileName(): string;
   /** Stages turned on or off (the 3D view's own tools pause meanwhile). */
@@ -64,16 +64,21 @@ interface Stage {
   caption: string;
 }
 
-/** The figure a range asks for: its stages (row by row) and grid. */
-export function stagesOf(from: number, to: number, seeds: readonly (number | undefined)[], scale: StageScale = 'one'): { stages: Stage[]; grid: StagesGrid } {
+/** How many stages iterations `from` to `to`, every `step`-th, are. */
+export function stageCount(from: number, to: number, step = 1): number {
+  return Math.floor((to - from) / step) + 1;
+}
+
+/** The figure a range asks for (every `step`-th iteration from `from`, up to `to`): its stages (row by row) and grid. */
+export function stagesOf(from: number, to: number, seeds: readonly (number | undefined)[], scale: StageScale = 'one', step = 1): { stages: Stage[]; grid: StagesGrid } {
   const stages: Stage[] = [];
   const specimens = from === to && seeds.length > 1; // one row of specimens (ABOP Fig. 1.27)
   for (const seed of seeds)
-    for (let n = from; n <= to; n++) {
+    for (let n = from; n <= to; n += step) {
       const caption = specimens ? `seed ${seed}` : seeds.length > 1 ? `n = ${n}, seed ${seed}` : `n = ${n}`;
       stages.push({ iterations: n, seed, caption });
     }
-  const grid = specimens ? { columns: seeds.length, rows: 1, scale } : { columns: to - from + 1, rows: seeds.length, scale };
+  const grid = specimens ? { columns: seeds.length, rows: 1, scale } : { columns: stageCount(from, to, step), rows: seeds.length, scale };
   return { stages, grid };
 }
 
@@ -89,7 +94,9 @@ export class StagesMode {
   /** What the figure on screen was grown from (a delivered build with another key grows it again). */
   private key: string | undefined;
   /** The figure on screen: the text and options, and its stages, for the SVG. */
-  private figure: { source: string; options: BuildOptions; stages: Stage[]; grid: StagesGrid; drawn: boolean[] } | undefined;
+  private figure: { source: string; options: BuildOptions; stages: Stage[]; grid: StagesGrid; drawn: boolean[]; lines: number | null } | undefined;
+  /** The step and the PNG's settings (made with Stages). */
+  private readonly picture: StagesPictureControls;
 
   constructor(
     private readonly els: StagesElements,
@@ -99,7 +106,8 @@ export class StagesMode {
     // The figure follows the range as it is typed (after a pause, so "12" is not grown as "1" first).
     let typing: ReturnType<typeof setTimeout> | undefined;
     els.scale.addEventListener('change', () => void this.grow());
-    for (const input of [els.from, els.to, els.seeds])
+    this.picture = addPictureControls(els.to, els.png);
+    for (const input of [els.from, els.to, els.seeds, this.picture.step])
       input.addEventListener('input', () => {
         clearTimeout(typing);
         this.ticket++; // what was being grown is for the old range
@@ -164,15 +172,18 @@ export class StagesMode {
   }
 
   /** The range asked for, or why it cannot be drawn. */
-  private range(): { from: number; to: number; seeds: number } | string {
+  private range(): { from: number; to: number; seeds: number; step: number } | string {
     const from = wholeNumber(this.els.from);
     const to = wholeNumber(this.els.to);
     const seeds = wholeNumber(this.els.seeds) ?? 1;
+    const step = this.picture.step.valueAsNumber;
     if (from === undefined || to === undefined || from < 0 || to < 0) return 'Give the first and last iteration (0 or more).';
     if (from > to) return `The first iteration (${from}) is after the last (${to}).`;
-    if (to - from + 1 > MAX_STAGE_COLUMNS) return `At most ${MAX_STAGE_COLUMNS} iterations side by side (${from} to ${to} is ${to - from + 1}).`;
+    if (!(Number.isInteger(step) && step >= 1 && step <= MAX_STAGE_STEP)) return `Every k-th step: a whole k from 1 to ${MAX_STAGE_STEP}.`;
+    const count = stageCount(from, to, step);
+    if (count > MAX_STAGE_COLUMNS) return `At most ${MAX_STAGE_COLUMNS} iterations side by side (${from} to ${to}${step > 1 ? ` every ${step}` : ''} is ${count}).`;
     if (seeds < 1 || seeds > MAX_STAGE_SEEDS) return `Seeds: 1 to ${MAX_STAGE_SEEDS}.`;
-    return { from, to, seeds };
+    return { from, to, seeds, step };
   }
 
   /** Grows every stage of the range, one after the other, then shows the figure. */
@@ -191,7 +202,10 @@ export class StagesMode {
     const { source, options } = shown;
     const first = options.seed ?? shown.build.seed;
     const seeds = range.seeds === 1 ? [options.seed] : Array.from({ length: range.seeds }, (_, i) => first + i);
-    const { stages, grid } = stagesOf(range.from, range.to, seeds, this.els.scale.value === 'each' ? 'each' : 'one');
+    const { stages, grid } = stagesOf(range.from, range.to, seeds, this.els.scale.value === 'each' ? 'each' : 'one', range.step);
+    // Drawn as the view draws the plant: lines of one width in pixels in every stage (the Lines
+    // mode, and a flat plant in Auto), or tubes.
+    const lines = options.tubes === false || (options.tubes === 'unlessFlat' && shown.build.flat) ? this.host.lineWidth() : null;
     const plants: StagePlant[] = [];
     for (const [i, stage] of stages.entries()) {
       this.say('growing', `Growing ${stage.caption} (${i + 1} of ${stages.length})…`);
@@ -206,8 +220,8 @@ export class StagesMode {
       }
       plants.push(this.plantOf(stage, outcome.kind === 'built' ? outcome.result : outcome.kind, sketch));
     }
-    view.show(plants, grid);
-    this.figure = { source, options, stages, grid, drawn: plants.map((p) => p.mesh !== null) };
+    view.show(plants, grid, lines);
+    this.figure = { source, options, stages, grid, drawn: plants.map((p) => p.mesh !== null), lines };
     const missing = plants.filter((p) => !p.mesh).length;
     const scaled = `${stages.length} plants ${grid.scale === 'one' ? 'at one scale' : 'each fitted to its tile'}`;
     this.say('done', missing === 0 ? scaled : `${scaled}; ${missing} drew nothing`);
@@ -229,13 +243,13 @@ export class StagesMode {
     const view = this.view;
     const figure = this.figure;
     if (!view || !figure) return;
-    const scale = Math.min(1, PNG_MAX_SIDE / (figure.grid.columns * PNG_TILE.width), PNG_MAX_SIDE / (figure.grid.rows * PNG_TILE.height));
-    const width = Math.round(figure.grid.columns * PNG_TILE.width * scale);
-    const height = Math.round(figure.grid.rows * PNG_TILE.height * scale);
+    const chosen = this.picture.picture();
+    const { width, height } = stagesPictureSize(figure.grid.columns, figure.grid.rows, chosen);
     try {
-      const png = await view.picture(width, height);
+      const drawn = await view.picture(width, height, { background: chosen.background, scale: pixelsPerCssPixel(chosen.dpi) });
+      const png = withResolution(new Uint8Array(await drawn.arrayBuffer()), chosen.dpi);
       saveFile(png, `${this.host.fileName()}-stages.png`, 'image/png');
-      this.say('done', `Saved the figure as a ${width} × ${height} PNG`);
+      this.say('done', `Saved the figure as a ${width} × ${height} PNG at ${chosen.dpi} DPI`);
     } catch (error) {
       this.say('error', `Could not draw the PNG: ${error instanceof Error ? error.message : String(error)}`);
     }
@@ -263,7 +277,7 @@ export class StagesMode {
         drawings.push({ svg: new TextDecoder().decode(outcome.file.bytes), caption: stage.caption });
       }
       const name = this.host.fileName();
-      const svg = stagesSvg(drawings, figure.grid.columns, figure.grid.rows, `${name}: stages`, figure.grid.scale);
+      const svg = stagesSvg(drawings, figure.grid.columns, figure.grid.rows, `${name}: stages`, figure.grid.scale, figure.lines ?? undefined);
       saveFile(new Blob([svg], { type: 'image/svg+xml' }), `${name}-stages.svg`, 'image/svg+xml');
       this.say('done', `Saved the figure as an SVG`);
     } catch (error) {
