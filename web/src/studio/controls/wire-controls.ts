@@ -6,6 +6,7 @@ import { browserStorage } from '../files';
 import type { LazyDialog } from '../page';
 import type { StudioParts } from '../parts';
 import { LazyStagesMode } from '../stages';
+import { LazyVariants } from '../variants';
 import { BuildClient, createBuildWorker } from '../../build';
 import { LayoutModes } from './layout-modes';
 import { installShortcuts, renderShortcutHelp, type ShortcutAction } from './shortcuts';
@@ -18,6 +19,7 @@ export interface ViewControls {
   viewTools: ViewTools;
   following: ViewFollowing;
   stages: LazyStagesMode;
+  variants: LazyVariants;
 }
 
 /** Connects the options to the builds, and the view's tools, following and Stages to the plant on screen. */
@@ -33,15 +35,24 @@ export function wireViewControls({ els, derivation, viewOptions, view, preview, 
     createClient: () => new BuildClient(createBuildWorker),
     lighting: () => viewOptions.values.lighting,
     fileName: () => figureName(opening.currentFile, preview.lastGood?.source),
-    toggled: (on) => viewTools.pauseForStages(on),
+    toggled: (on) => (on && variants.close(), viewTools.pauseForStages(on)),
   });
-  viewOptions.onChange((values, changed) => changed.has('lighting') && stages.setLighting(values.lighting));
+  // Variants: two to six plants side by side, cameras linked (loaded when first opened).
+  const variants = new LazyVariants(els.variants, {
+    viewport: els.viewport,
+    shown: () => preview.lastGood,
+    createClient: () => new BuildClient(createBuildWorker),
+    lighting: () => viewOptions.values.lighting,
+    fileName: () => figureName(opening.currentFile, preview.lastGood?.source),
+    toggled: (on) => (on && stages.close(), viewTools.pauseForStages(on)),
+  });
+  viewOptions.onChange((values, changed) => changed.has('lighting') && (stages.setLighting(values.lighting), variants.setLighting(values.lighting)));
   preview.onDelivered((result) => {
     stages.delivered(result);
     derivation.buildShown(result.build);
     viewTools.showProjection();
   });
-  return { viewTools, following, stages };
+  return { viewTools, following, stages, variants };
 }
 
 /** The layout for the room: narrow screens, Large for a projector, fullscreen. */

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { defineVariants, numericConstants, parseValues, seedVariants } from './variant-making';
+import { defineVariants, numericConstants, parseValues, seedVariants, valuesAround } from './variant-making';
 
 const PLANT = '#define angle 20 // [0, 90]\n#define q angle * 2\n#angle angle\naxiom: X\nX -> F[+X]F[-X]+X\n';
 
@@ -15,7 +15,13 @@ describe('making variants', () => {
   });
 
   it('lists the constants whose value is a number', () => {
-    expect(numericConstants(PLANT)).toEqual(['angle']);
+    expect(numericConstants(PLANT)).toEqual([{ name: 'angle', value: 20 }]);
+    expect(numericConstants('#define a 1\n#define a 2\n#define b -3')).toEqual([
+      { name: 'a', value: 1 },
+      { name: 'b', value: -3 },
+    ]);
+    expect(valuesAround(20)).toEqual([15, 20, 25]);
+    expect(valuesAround(0)).toEqual([-1, 0, 1]);
   });
 
   it('sets one constant to each value, the rest of the text as it is', () => {

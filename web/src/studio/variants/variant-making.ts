@@ -22,9 +22,15 @@ export function parseValues(typed: string): number[] | string {
   return values;
 }
 
-/** The `#define` constants of `text` whose value is a plain number, by name (first of each). */
-export function numericConstants(text: string): string[] {
-  return [...new Set(defineConstants(text).map((c) => c.name))];
+/** The `#define` constants of `text` whose value is a plain number, with it (the first of each name). */
+export function numericConstants(text: string): { name: string; value: number }[] {
+  const seen = new Set<string>();
+  return defineConstants(text).flatMap(({ name, value }) => (seen.has(name) ? [] : (seen.add(name), [{ name, value }])));
+}
+
+/** Three values around `value` for a first row: three quarters, itself, five quarters (or ±1 about 0). */
+export function valuesAround(value: number): number[] {
+  return value === 0 ? [-1, 0, 1] : [0.75, 1, 1.25].map((k) => Number((value * k).toPrecision(3)));
 }
 
 /**
