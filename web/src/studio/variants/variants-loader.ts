@@ -4,41 +4,28 @@ import type { SharedVariant } from '../../share';
 import type { VariantsHost, VariantsMode } from './variants';
 import { onDemand } from '../page';
 
-/** A {@link VariantsMode} that loads with its first opening. */
-export class LazyVariants {
-  private mode: VariantsMode | undefined;
-
-  constructor(
-    private readonly toggle: HTMLButtonElement,
-    private readonly host: VariantsHost,
-  ) {
-    this.toggle.addEventListener('click', () => this.load((mode) => mode.toggle()));
-  }
-
-  /** As {@link VariantsMode.show}: with a link's `variants`. */
-  show(variants?: readonly SharedVariant[]): void {
-    this.load((mode) => void mode.show(variants));
-  }
-
+/** The Variants view as the studio reaches it before and after it has loaded. */
+export interface LazyVariants {
+  /** As {@link VariantsMode.show}: with a link's `variants`; the first call loads it. */
+  show(variants?: readonly SharedVariant[]): void;
   /** As {@link VariantsMode.close}. */
-  close(): void {
-    this.mode?.close();
-  }
-
+  close(): void;
   /** As {@link VariantsMode.shared}: none before it has loaded. */
-  shared(): SharedVariant[] | undefined {
-    return this.mode?.shared();
-  }
-
+  shared(): SharedVariant[] | undefined;
   /** As {@link VariantsMode.setLighting}: read from the host when it opens. */
-  setLighting(lit: boolean): void {
-    this.mode?.setLighting(lit);
-  }
+  setLighting(lit: boolean): void;
+}
 
-  private readonly loaded = onDemand(async () => (this.mode = new (await import('./variants')).VariantsMode(this.toggle, this.host)));
-
-  /** Runs `then` on the view, loaded (a failure is said in the console; the next click tries again). */
-  private load(then: (mode: VariantsMode) => void): void {
-    this.loaded().then(then, (error: unknown) => console.error('Variants could not load:', error));
-  }
+/** The Variants view of `toggle`, loaded with its first opening (a failure is said in the console; the next click tries again). */
+export function lazyVariants(toggle: HTMLButtonElement, host: VariantsHost): LazyVariants {
+  let mode: VariantsMode | undefined;
+  const loaded = onDemand(async () => (mode = new (await import('./variants')).VariantsMode(toggle, host)));
+  const then = (run: (mode: VariantsMode) => unknown) => void loaded().then(run, (error: unknown) => console.error('Variants could not load:', error));
+  toggle.addEventListener('click', () => then((m) => m.toggle()));
+  return {
+    show: (variants) => then((m) => m.show(variants)),
+    close: () => mode?.close(),
+    shared: () => mode?.shared(),
+    setLighting: (lit) => mode?.setLighting(lit),
+  };
 }
