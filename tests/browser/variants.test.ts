@@ -8,7 +8,7 @@ import { deflateRawSync } from 'node:zlib';
 import { describe, expect, inject, it } from 'vitest';
 import { decodePng, differingShare, foregroundShare, type Picture } from './pictures';
 import { browser, page, problems, useStudio } from './session';
-import { openExample, RESULTS, twoFrames } from './studio-page';
+import { openExample, PHONE, RESULTS, twoFrames } from './studio-page';
 
 useStudio();
 
@@ -73,6 +73,13 @@ describe('Variants', () => {
       expect(foregroundShare(column(after, c, 3)), `column ${c + 1} still holds its plant`).toBeGreaterThan(0.002);
     }
 
+    // The wheel over one plant zooms them all.
+    await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+    await page.mouse.wheel(0, -400);
+    await twoFrames(page);
+    const zoomed = decodePng(await figureCanvas().screenshot());
+    for (let c = 0; c < 3; c++) expect(differingShare(column(after, c, 3), column(zoomed, c, 3), 40), `column ${c + 1} zoomed`).toBeGreaterThan(0.001);
+
     // One PNG, a plant in each of its three columns.
     const png = await download('variants-png');
     expect(png.name).toBe('abop-2.6a-variants.png');
@@ -83,6 +90,10 @@ describe('Variants', () => {
 
     const svg = (await download('variants-svg')).bytes.toString('utf8');
     expect([...svg.matchAll(/<text [^>]*>([^<]*)<\/text>/g)].map((m) => m[1])).toEqual(['a0 = 20', 'a0 = 45', 'a0 = 70']);
+
+    // A caption typed in a card is under its plant at once.
+    await page.getByTestId('variant-caption').nth(1).fill('book’s 45°');
+    await expect.poll(captions).toEqual(['a0 = 20', 'book’s 45°', 'a0 = 70']);
     expect(problems).toEqual([]);
   });
 
@@ -94,13 +105,42 @@ describe('Variants', () => {
     await page.keyboard.press('Escape');
     const other = await browser.newPage({ viewport: { width: 1280, height: 800 } });
     await other.goto(link);
-    await expect.poll(() => other.getByTestId('variants-figure').locator('.stage-caption').allTextContents(), { timeout: 60_000 }).toEqual(['a0 = 20', 'a0 = 45', 'a0 = 70']);
+    await expect.poll(() => other.getByTestId('variants-figure').locator('.stage-caption').allTextContents(), { timeout: 60_000 }).toEqual(['a0 = 20', 'book’s 45°', 'a0 = 70']);
     expect(await other.getByTestId('variants-toggle').getAttribute('aria-pressed')).toBe('true');
 
     const hostile = { v: 1, text: 'axiom: F', variants: Array.from({ length: 500 }, () => ({ text: 'F', caption: '<img src=x onerror=alert(1)>' })) };
     await other.goto(`${inject('studioUrl')}#s=1.${deflateRawSync(Buffer.from(JSON.stringify(hostile))).toString('base64url')}`);
     await expect.poll(() => other.getByTestId('notice').textContent(), { timeout: 30_000 }).toContain('the link’s variants are 500 plants; a link holds 2 to 6');
     await other.close();
+  });
+
+  it('stacks the cards under the row on a phone', async () => {
+    const phone = await browser.newPage(PHONE);
+    await phone.goto(inject('studioUrl'));
+    await phone.waitForFunction(() => (window.__meristem?.lastStats?.segments ?? 0) > 0);
+    await phone.getByTestId('variants-toggle').click();
+    await expect.poll(() => phone.getByTestId('variants-status').getAttribute('data-state'), { timeout: 60_000 }).toBe('done');
+    await twoFrames(phone);
+    writeFileSync(new URL('variants-phone.png', RESULTS), await phone.screenshot());
+    const picture = decodePng(await phone.getByTestId('variants-figure').locator('canvas').screenshot());
+    const count = await phone.getByTestId('variant-card').count();
+    expect(count).toBeGreaterThanOrEqual(2);
+    for (let c = 0; c < count; c++) expect(foregroundShare(column(picture, c, count)), `column ${c + 1} holds a plant`).toBeGreaterThan(0.001);
+    const [first, second] = [await phone.getByTestId('variant-card').nth(0).boundingBox(), await phone.getByTestId('variant-card').nth(1).boundingBox()];
+    expect(second!.y, 'one card under the other').toBeGreaterThanOrEqual(first!.y + first!.height);
+    expect(first!.width, 'a card as wide as the screen, nearly').toBeGreaterThan(300);
+    await phone.close();
+  });
+
+  it('stops a long growing at once, and grows again when asked', async () => {
+    await page.getByTestId('variants-add-empty').click();
+    const card = page.getByTestId('variant-card').nth(3);
+    await card.getByTestId('variant-text').fill('#iterations 8\naxiom: F\nF -> F[+F]F[-F]F\n'); // 5^8 segments in tubes: seconds of work
+    await page.getByTestId('variants-stop').click();
+    await expect.poll(() => status().textContent()).toMatch(/^Stopped/);
+    expect(await page.getByTestId('variants-stop').isHidden()).toBe(true);
+    await card.getByRole('button', { name: 'Remove plant 4' }).click();
+    await expect.poll(() => status().textContent(), { timeout: 60_000 }).toMatch(/^3 plants at one scale/);
   });
 
   it('closes: the plant on screen is back', async () => {

@@ -100,6 +100,12 @@ export class StagesView {
     this.requestRender();
   }
 
+  /** Replaces the captions of the plants shown (row by row); the plants and the camera stay. */
+  setCaptions(captions: readonly (string | undefined)[]): void {
+    this.plants.forEach((plant, i) => (plant.caption = captions[i] ?? plant.caption));
+    this.showCaptions();
+  }
+
   /** Shades the plants (on) or shows the palette's colours as they are (off), like the 3D view. */
   setLighting(lit: boolean): void {
     this.lighting = lit;

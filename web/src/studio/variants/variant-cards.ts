@@ -114,7 +114,8 @@ export class VariantCards {
       el('div', { className: 'variant-card-head' }, el('strong', {}, `${i + 1}`), caption, remove),
       el('div', { className: 'variant-card-fields' }, el('label', { className: 'field' }, 'Seed ', seed), el('label', { className: 'field' }, 'Iterations ', iterations)),
       figures,
-      el('details', { open: variant.text === '' }, el('summary', {}, 'Text'), text),
+      // A pasted plant's text, or a copy of plant 1's, open for editing.
+      el('details', { open: variant.text === '' || (i > 0 && variant.text === variants[0].text && variant.seed === variants[0].seed) }, el('summary', {}, 'Text'), text),
       diff,
     );
   }

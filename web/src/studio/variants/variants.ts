@@ -71,7 +71,7 @@ export class VariantsMode {
     });
     this.figure = el('div', { className: 'stages-figure variants-figure', testid: 'variants-figure', role: 'img', ariaLabel: 'The variants side by side: drag to turn them all, the wheel zooms them all' });
     const list = el('ol', { className: 'variant-cards', testid: 'variant-cards', ariaLabel: 'The variants: their figures and differences' });
-    this.cards = new VariantCards(list, { edited: (_, regrow) => this.edited(regrow), removed: (i) => this.remove(i) });
+    this.cards = new VariantCards(list, { edited: (i, regrow) => (regrow ? this.edited() : this.recaption(i)), removed: (i) => this.remove(i) });
     this.panel = el('div', { className: 'stages variants', testid: 'variants', id: 'variants', hidden: true }, this.bar.element, el('div', { className: 'variants-body' }, this.figure, list));
     this.panel.setAttribute('role', 'region');
     this.panel.setAttribute('aria-label', 'Variants');
@@ -89,8 +89,8 @@ export class VariantsMode {
   }
 
   /**
-   * Opens the view with `variants` (a link's), else with those it had, else with three made from
-   * the plant on screen: its first numeric constant at three values, or three seeds.
+   * Opens the view with `variants` (a link's), else with those it had, else with those made from
+   * the plant on screen: its first numeric constant at three values, or the grammar and a copy.
    */
   async show(variants?: readonly SharedVariant[]): Promise<void> {
     if (variants) this.variants = variants.map((v) => ({ ...v }));
@@ -152,9 +152,11 @@ export class VariantsMode {
       const made = defineVariants(base.text, name, values, base.seed);
       if (typeof made !== 'string') return made.map((v) => ({ ...v, ...(base.iterations === undefined ? {} : { iterations: base.iterations }) }));
     }
-    const first = base.seed ?? this.host.shown()?.build.seed ?? 1;
-    const made = seedVariants(base.text, [first, first + 1, first + 2]);
-    return typeof made === 'string' ? [base, { ...base }] : made.map((v) => ({ ...v, iterations: base.iterations }));
+    // No constant to vary: the grammar and a copy of it to edit (seeds may make no difference).
+    return [
+      { ...base, caption: 'plant 1' },
+      { ...base, caption: 'copy' },
+    ];
   }
 
   /** Replaces the variants by those made from the plant on screen: a constant at `values`, or `values` as seeds. */
@@ -184,12 +186,20 @@ export class VariantsMode {
     void this.grow();
   }
 
-  /** A card changed: the captions at once, the plants after a pause in the typing. */
-  private edited(regrow: boolean): void {
+  /** A card's text, seed or iterations changed: the plants are grown again after a pause in the typing. */
+  private edited(): void {
     clearTimeout(this.typing);
     this.ticket++; // what was being grown is for the old texts
     this.bar.say('growing', 'Growing…');
-    this.typing = setTimeout(() => void this.grow(), regrow ? TYPING_MS : 0);
+    this.typing = setTimeout(() => void this.grow(), TYPING_MS);
+  }
+
+  /** A card's caption changed: under its plant at once (a plant that drew nothing keeps saying why until grown again). */
+  private recaption(index: number): void {
+    const plant = this.plants[index];
+    if (!plant?.mesh) return;
+    plant.caption = captionOf(this.variants[index], index);
+    this.view?.setCaptions(this.plants.map((p) => p.caption));
   }
 
   private stop(): void {
