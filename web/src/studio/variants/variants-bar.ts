@@ -13,6 +13,8 @@ export interface BarActions {
   add(text: string, caption: string): void;
   /** A copy of the grammar on screen added to the row. */
   addShown(): void;
+  /** The constants of the grammar on screen that may be varied (read again each time the choice is opened). */
+  constants(): string[];
   rescaled(): void;
   stop(): void;
   png(): void;
@@ -39,6 +41,8 @@ export class VariantsBar {
 
   constructor(private readonly actions: BarActions) {
     this.constant.setAttribute('aria-label', 'The constant to vary');
+    // The grammar on screen may have changed since the view opened: its constants are read again.
+    for (const type of ['focus', 'pointerdown'] as const) this.constant.addEventListener(type, () => this.showConstants(actions.constants()));
     this.values.setAttribute('aria-label', 'Its values, e.g. 20, 25, 30');
     this.seeds.setAttribute('aria-label', 'Seeds, e.g. 1, 2, 3');
     this.example.setAttribute('aria-label', 'Add an example from the gallery');
@@ -78,6 +82,8 @@ export class VariantsBar {
 
   /** The constants the grammar on screen offers to vary (none: the choice is disabled). */
   showConstants(names: readonly string[]): void {
+    const listed = [...this.constant.options].map((o) => o.value).filter((v) => v !== '');
+    if (listed.length === names.length && listed.every((name, i) => name === names[i])) return; // an open list is left alone
     const chosen = this.constant.value;
     this.constant.replaceChildren(...names.map((name) => el('option', { value: name, textContent: name })));
     if (names.includes(chosen)) this.constant.value = chosen;

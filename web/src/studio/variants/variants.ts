@@ -63,6 +63,7 @@ export class VariantsMode {
       make: (kind, what, values) => this.make(kind, what, values),
       add: (text, caption) => this.add({ text, caption }),
       addShown: () => this.add({ ...this.fromShown(), caption: `plant ${this.variants.length + 1}` }),
+      constants: () => numericConstants(this.fromShown().text).map((c) => c.name),
       rescaled: () => this.view?.show(this.plants, this.grid()),
       stop: () => this.stop(),
       png: () => void this.downloadPng(),
