@@ -83,7 +83,8 @@ export class VariantsBar {
   /** The constants the grammar on screen offers to vary (none: the choice is disabled). */
   showConstants(names: readonly string[]): void {
     const listed = [...this.constant.options].map((o) => o.value).filter((v) => v !== '');
-    if (listed.length === names.length && listed.every((name, i) => name === names[i])) return; // an open list is left alone
+    const same = listed.length === names.length && listed.every((name, i) => name === names[i]);
+    if (same && this.constant.options.length > 0) return; // an open list is left alone
     const chosen = this.constant.value;
     this.constant.replaceChildren(...names.map((name) => el('option', { value: name, textContent: name })));
     if (names.includes(chosen)) this.constant.value = chosen;
