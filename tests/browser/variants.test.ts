@@ -80,6 +80,14 @@ describe('Variants', () => {
     const zoomed = decodePng(await figureCanvas().screenshot());
     for (let c = 0; c < 3; c++) expect(differingShare(column(after, c, 3), column(zoomed, c, 3), 40), `column ${c + 1} zoomed`).toBeGreaterThan(0.001);
 
+    // From the keyboard too: the arrow keys turn them all.
+    await page.getByTestId('variants-figure').focus();
+    await page.keyboard.press('ArrowLeft');
+    await page.keyboard.press('ArrowLeft');
+    await twoFrames(page);
+    const keyed = decodePng(await figureCanvas().screenshot());
+    for (let c = 0; c < 3; c++) expect(differingShare(column(zoomed, c, 3), column(keyed, c, 3), 40), `column ${c + 1} turned by a key`).toBeGreaterThan(0.001);
+
     // One PNG, a plant in each of its three columns.
     const png = await download('variants-png');
     expect(png.name).toBe('abop-2.6a-variants.png');

@@ -223,9 +223,29 @@ export class StagesView {
     this.camera.updateMatrixWorld();
   }
 
-  /** Dragging on the figure turns the camera (half a turn across its width); the wheel zooms. */
+  /**
+   * Dragging on the figure turns the camera (half a turn across its width); the wheel zooms; with
+   * the figure focused, the arrow keys turn it and + and − zoom.
+   */
   private listenForOrbit(): void {
     const canvas = this.renderer.domElement;
+    const step = Math.PI / 24;
+    const keys: Record<string, () => void> = {
+      ArrowLeft: () => this.orbit(step, 0),
+      ArrowRight: () => this.orbit(-step, 0),
+      ArrowUp: () => this.orbit(0, step),
+      ArrowDown: () => this.orbit(0, -step),
+      '+': () => this.zoomBy(1.25),
+      '=': () => this.zoomBy(1.25),
+      '-': () => this.zoomBy(0.8),
+    };
+    this.container.tabIndex = 0;
+    this.container.addEventListener('keydown', (event) => {
+      const key = keys[event.key];
+      if (!key || event.altKey || event.ctrlKey || event.metaKey) return;
+      event.preventDefault();
+      key();
+    });
     canvas.style.touchAction = 'none';
     let last: { x: number; y: number; id: number } | undefined;
     canvas.addEventListener('pointerdown', (event) => {

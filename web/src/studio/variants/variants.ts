@@ -70,7 +70,7 @@ export class VariantsMode {
       svg: () => void this.downloadSvg(),
       close: () => this.close(),
     });
-    this.figure = el('div', { className: 'stages-figure variants-figure', testid: 'variants-figure', role: 'img', ariaLabel: 'The variants side by side: drag to turn them all, the wheel zooms them all' });
+    this.figure = el('div', { className: 'stages-figure variants-figure', testid: 'variants-figure', role: 'img', ariaLabel: 'The variants side by side: drag or the arrow keys turn them all, the wheel or + and − zoom them all' });
     const list = el('ol', { className: 'variant-cards', testid: 'variant-cards', ariaLabel: 'The variants: their figures and differences' });
     this.cards = new VariantCards(list, { edited: (i, regrow) => (regrow ? this.edited() : this.recaption(i)), removed: (i) => this.remove(i) });
     this.panel = el('div', { className: 'stages variants', testid: 'variants', id: 'variants', hidden: true }, this.bar.element, el('div', { className: 'variants-body' }, this.figure, list));
