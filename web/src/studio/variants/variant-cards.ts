@@ -3,6 +3,7 @@
 // segments, height) and the lines in which its text differs from the first plant's. Text only,
 // in text nodes (a variant's text comes from a link, never trusted as HTML).
 import type { SharedVariant } from '../../share';
+import { MAX_CAPTION } from '../../share/variants-state';
 import { el } from '../page/make-element';
 import { lineDiff, type DiffLine } from './line-diff';
 
@@ -78,7 +79,7 @@ export class VariantCards {
   }
 
   private card(variants: SharedVariant[], variant: SharedVariant, i: number, removable: boolean): HTMLElement {
-    const caption = el('input', { type: 'text', value: variant.caption ?? '', placeholder: `plant ${i + 1}`, maxLength: 120, testid: 'variant-caption' });
+    const caption = el('input', { type: 'text', value: variant.caption ?? '', placeholder: `plant ${i + 1}`, maxLength: MAX_CAPTION, testid: 'variant-caption' });
     caption.setAttribute('aria-label', `Caption of plant ${i + 1}`);
     const seed = el('input', { type: 'number', min: '0', step: '1', value: variant.seed === undefined ? '' : String(variant.seed), placeholder: 'grammar’s', inputMode: 'numeric' });
     const iterations = el('input', { type: 'number', min: '0', step: '1', value: variant.iterations === undefined ? '' : String(variant.iterations), placeholder: 'grammar’s', inputMode: 'numeric' });

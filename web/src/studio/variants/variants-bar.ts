@@ -4,6 +4,7 @@
 import type { StageScale } from '../../view/stages-layout';
 import { fetchExample, fetchManifest } from '../gallery/gallery';
 import { el } from '../page/make-element';
+import { MAX_CAPTION } from '../../share/variants-state';
 
 /** What the bar asks of the view. */
 export interface BarActions {
@@ -125,7 +126,7 @@ export class VariantsBar {
     this.example.value = '';
     if (!file) return;
     try {
-      this.actions.add(await fetchExample(file), title.slice(0, 120));
+      this.actions.add(await fetchExample(file), title.slice(0, MAX_CAPTION));
     } catch (error) {
       this.say('error', `Could not open the example: ${error instanceof Error ? error.message : String(error)}`);
     }
