@@ -176,7 +176,8 @@ const AREAS: Record<string, Area> = {
   // code; thumbnail.ts: the gallery's thumbnail worker draws without a page.
   // stages-view.ts and stages-layout.ts: the Stages panel's own scene, loaded with that panel on demand.
   view: { uses: ['core'], doors: ['view/index.ts', 'view/highlight.ts', 'view/thumbnail.ts', 'view/stages-view.ts', 'view/stages-layout.ts'] },
-  share: { uses: ['core'] },
+  // variants-state.ts: the Variants view's plants in a link, their shape and limits, for the view (loaded on demand).
+  share: { uses: ['core'], doors: ['share/index.ts', 'share/variants-state.ts'] },
   // build-worker-start.ts: the boot script starts the build worker before the studio's script.
   build: { uses: ['core'], doors: ['build/index.ts', 'build/build-worker-start.ts'] },
   // timeline.ts: the growth timeline, loaded with the studio's timeline bar and by animated embeds,

@@ -74,7 +74,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   installLearnPanel({ preview, open: (text, title, key) => opening.replace(text, title, key), text: () => editor.text() }); // lessons (issue 17), loaded on first use
   if (start.from === 'link') void autosave.save(start.text); // the link's text is now the work in progress
   const branchEdits = wireBranchEditing(parts, controls);
-  const links = wireLinks(parts, branchEdits, start);
+  const links = wireLinks(parts, branchEdits, start, controls.variants);
   connectTestHook(hook, { preview, view, branchEdits, surfaces: wireSurfaceEditingLater(parts) }); // (the surface editor: view tools, text)
   wireKeyboard(parts, { ...controls, layout, gallery: dialogs.gallery });
 

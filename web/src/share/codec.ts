@@ -9,6 +9,7 @@
 import type { EditsDocument } from '../core/branches';
 import { FRAGMENT_KEY, MAX_FRAGMENT, MAX_TEXT } from './codec-loader';
 import type { SharedGrowth } from './growth-state';
+import type { SharedVariant } from './variants-state';
 
 /** The format version written by this build; every version up to it can be read. */
 export const SHARE_VERSION = 1;
@@ -49,6 +50,8 @@ export interface SharedState {
   edits?: EditsDocument;
   /** The growth timeline: time, speed, range (./growth-state.ts). */
   growth?: SharedGrowth;
+  /** The Variants view, open with these plants side by side (./variants-state.ts). */
+  variants?: SharedVariant[];
 }
 
 export type Decoded = { ok: true; state: SharedState } | { ok: false; error: string };
@@ -148,7 +151,7 @@ function cleanSliders(sliders: unknown): Record<string, number> | undefined {
 /** Checks the shape of a decoded state; copies only known fields. */
 export async function validate(json: unknown): Promise<Decoded> {
   if (!isRecord(json)) return fail('the link does not hold a state object');
-  const { text, iterations, seed, sliders, view, camera, edits, growth } = json;
+  const { text, iterations, seed, sliders, view, camera, edits, growth, variants } = json;
   if (typeof text !== 'string') return fail('the link holds no grammar text');
   if (text.length > MAX_TEXT) return fail(`the grammar in the link is too long (${text.length} characters; at most ${MAX_TEXT})`);
   const state: SharedState = { text };
@@ -209,6 +212,12 @@ export async function validate(json: unknown): Promise<Decoded> {
     const checked = validateEdits(edits);
     if (!checked.ok) return fail(`the link’s branch edits are malformed (${checked.error})`);
     state.edits = checked.document;
+  }
+  if (variants !== undefined) {
+    // Variants are rare in links: their checker loads with the first (not with the page).
+    const checked = (await import('./variants-state')).checkVariants(variants);
+    if (!checked.ok) return fail(checked.error);
+    state.variants = checked.variants;
   }
   return { ok: true, state };
 }

@@ -3,7 +3,8 @@
 // at one scale (or each fitted to its tile), standing on a common baseline, with a caption under each (see
 // stages-layout.ts). Flat plants are seen face-on; 3D plants a little from the side and above,
 // like the studio's first view of them. Drawn on demand into its own canvas; a picture of any size
-// comes out as a PNG with the captions.
+// comes out as a PNG with the captions. With `orbit` (the Variants view), dragging turns the one
+// camera about the plants and the wheel zooms: every tile turns and zooms together.
 import { Box3, Group, LineBasicMaterial, LineSegments, Mesh, OrthographicCamera, Scene, Vector2, Vector3, WebGLRenderer, type BufferGeometry, type Object3D } from 'three';
 import { LineMaterial } from 'three/examples/jsm/lines/LineMaterial.js';
 import type { Bounds, GpuArrays, MeshBuffers } from '../core';
@@ -64,10 +65,14 @@ export class StagesView {
   private readonly lit = litPlantMaterial();
   private readonly unlit = unlitPlantMaterial();
   private readonly lineMaterial = new LineBasicMaterial({ vertexColors: true });
-  private plants: { object: Object3D | null; extent: ViewExtent | null; caption: string; lines?: TexelLines }[] = [];
+  private plants: { object: Object3D | null; extent: ViewExtent | null; bounds: Bounds; caption: string; lines?: TexelLines }[] = [];
   /** The lines' width in CSS pixels when the plants are drawn as lines (as the view's Lines mode), else null: tubes. */
   private lineWidth: number | null = null;
   private readonly measure = document.createElement('canvas').getContext('2d');
+  /** Where the camera looks from: the plants' centre, their radius, the unit direction to the eye. */
+  private aim = { centre: new Vector3(), radius: 1, direction: new Vector3(0, 0, 1) };
+  /** The zoom of every tile about its centre (1: the plants just fit). */
+  private zoom = 1;
   private grid: StagesGrid = { columns: 1, rows: 1, scale: 'one' };
   private lighting = true;
   private renderQueued = false;
@@ -75,7 +80,10 @@ export class StagesView {
   private readonly darkScheme = window.matchMedia(DARK_SCHEME);
   private readonly resizeObserver: ResizeObserver;
 
-  constructor(private readonly container: HTMLElement) {
+  constructor(
+    private readonly container: HTMLElement,
+    options: { orbit?: boolean } = {},
+  ) {
     this.renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true, alpha: true }); // (alpha: a transparent PNG)
     this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
     this.renderer.domElement.setAttribute('aria-hidden', 'true');
@@ -91,6 +99,7 @@ export class StagesView {
     this.resizeObserver = new ResizeObserver(() => this.resize());
     this.resizeObserver.observe(container);
     this.resize();
+    if (options.orbit) this.listenForOrbit();
   }
 
   /**
@@ -105,8 +114,8 @@ export class StagesView {
     const flat = plants.every((p) => p.flat || !p.mesh);
     this.aimCamera(plants, flat);
     this.plants = plants.map((plant) => {
-      if (!plant.mesh) return { object: null, extent: null, caption: plant.caption };
-      if (lineWidth !== null && plant.lines && plant.lines.lines.length > 0) return { ...this.asLines(plant.lines, plant.bounds, lineWidth), caption: plant.caption };
+      if (!plant.mesh) return { object: null, extent: null, bounds: plant.bounds, caption: plant.caption };
+      if (lineWidth !== null && plant.lines && plant.lines.lines.length > 0) return { ...this.asLines(plant.lines, plant.bounds, lineWidth), bounds: plant.bounds, caption: plant.caption };
       const geometry = plantGeometry(plant.mesh, plant.gpu, plant.bounds);
       const asLines = plant.mesh.indices.length === 0 && plant.mesh.lines.length > 0;
       const object = new Group();
@@ -114,7 +123,7 @@ export class StagesView {
       if (!asLines && plant.lines && plant.lines.lines.length > 0) object.add(new LineSegments(lineGeometry(plant.lines), this.lineMaterial));
       object.visible = false;
       this.scene.add(object);
-      return { object, extent: this.extent(plant.bounds), caption: plant.caption };
+      return { object, extent: this.extent(plant.bounds), bounds: plant.bounds, caption: plant.caption };
     });
     this.showCaptions();
     this.requestRender();
@@ -129,10 +138,37 @@ export class StagesView {
     return { object: drawn.mesh, extent: this.extent(bounds), lines: drawn };
   }
 
+  /** Replaces the captions of the plants shown (row by row); the plants and the camera stay. */
+  setCaptions(captions: readonly (string | undefined)[]): void {
+    this.plants.forEach((plant, i) => (plant.caption = captions[i] ?? plant.caption));
+    this.showCaptions();
+  }
+
   /** Shades the plants (on) or shows the palette's colours as they are (off), like the 3D view. */
   setLighting(lit: boolean): void {
     this.lighting = lit;
     for (const { object, lines } of this.plants) if (!lines) object?.traverse((part) => part instanceof Mesh && (part.material = this.material()));
+    this.requestRender();
+  }
+
+  /**
+   * Turns the one camera about the plants' centre: `azimuth` radians about the vertical, `elevation`
+   * radians up (kept short of straight up or down); every tile turns with it.
+   */
+  orbit(azimuth: number, elevation: number): void {
+    const { direction } = this.aim;
+    const up = Math.max(-1.45, Math.min(1.45, Math.asin(Math.max(-1, Math.min(1, direction.y))) + elevation));
+    const around = Math.atan2(direction.x, direction.z) + azimuth;
+    direction.set(Math.cos(up) * Math.sin(around), Math.sin(up), Math.cos(up) * Math.cos(around));
+    this.placeCamera();
+    for (const plant of this.plants) if (plant.object) plant.extent = this.extent(plant.bounds);
+    this.placeCaptions();
+    this.requestRender();
+  }
+
+  /** Zooms every tile by `factor` about its centre (more than 1: closer), from 1/20 to 50 times. */
+  zoomBy(factor: number): void {
+    this.zoom = Math.max(0.05, Math.min(50, this.zoom * factor));
     this.requestRender();
   }
 
@@ -218,12 +254,68 @@ export class StagesView {
     const centre = all.isEmpty() ? new Vector3() : all.getCenter(new Vector3());
     const radius = Math.max(size.length() / 2, 1e-6);
     const across = flat ? new Vector3(0, 0, 1) : size.z <= size.x ? new Vector3(0.25, 0.18, 1) : new Vector3(1, 0.18, -0.25);
-    this.camera.position.copy(centre).addScaledVector(across.normalize(), radius * 3);
+    this.aim = { centre, radius, direction: across.normalize() };
+    this.zoom = 1;
+    this.placeCamera();
+  }
+
+  /** The camera where {@link aim} puts it, looking at the plants' centre. */
+  private placeCamera(): void {
+    const { centre, radius, direction } = this.aim;
+    this.camera.position.copy(centre).addScaledVector(direction, radius * 3);
     this.camera.up.set(0, 1, 0);
     this.camera.lookAt(centre);
     this.camera.near = radius * 0.5;
     this.camera.far = radius * 6;
     this.camera.updateMatrixWorld();
+  }
+
+  /**
+   * Dragging on the figure turns the camera (half a turn across its width); the wheel zooms; with
+   * the figure focused, the arrow keys turn it and + and − zoom.
+   */
+  private listenForOrbit(): void {
+    const canvas = this.renderer.domElement;
+    const step = Math.PI / 24;
+    const keys: Record<string, () => void> = {
+      ArrowLeft: () => this.orbit(step, 0),
+      ArrowRight: () => this.orbit(-step, 0),
+      ArrowUp: () => this.orbit(0, step),
+      ArrowDown: () => this.orbit(0, -step),
+      '+': () => this.zoomBy(1.25),
+      '=': () => this.zoomBy(1.25),
+      '-': () => this.zoomBy(0.8),
+    };
+    this.container.tabIndex = 0;
+    this.container.addEventListener('keydown', (event) => {
+      const key = keys[event.key];
+      if (!key || event.altKey || event.ctrlKey || event.metaKey) return;
+      event.preventDefault();
+      key();
+    });
+    canvas.style.touchAction = 'none';
+    let last: { x: number; y: number; id: number } | undefined;
+    canvas.addEventListener('pointerdown', (event) => {
+      last = { x: event.clientX, y: event.clientY, id: event.pointerId };
+      canvas.setPointerCapture(event.pointerId);
+    });
+    canvas.addEventListener('pointermove', (event) => {
+      if (!last || event.pointerId !== last.id) return;
+      const turn = Math.PI / Math.max(1, this.container.clientWidth);
+      this.orbit(-(event.clientX - last.x) * turn, (event.clientY - last.y) * turn);
+      last = { ...last, x: event.clientX, y: event.clientY };
+    });
+    const release = () => (last = undefined);
+    canvas.addEventListener('pointerup', release);
+    canvas.addEventListener('pointercancel', release);
+    canvas.addEventListener(
+      'wheel',
+      (event) => {
+        event.preventDefault();
+        this.zoomBy(Math.exp(-Math.max(-100, Math.min(100, event.deltaY)) * 0.002));
+      },
+      { passive: false },
+    );
   }
 
   /** A box's extent in the camera's view plane. */
@@ -266,7 +358,9 @@ export class StagesView {
       const bottom = height - y - h;
       renderer.setViewport(x, bottom, w, h);
       renderer.setScissor(x, bottom, w, h);
-      Object.assign(this.camera, tile.frustum);
+      const { left, right, top, bottom: low } = tile.frustum;
+      const [midX, midY, half] = [(left + right) / 2, (top + low) / 2, 0.5 / this.zoom];
+      Object.assign(this.camera, { left: midX - (right - left) * half, right: midX + (right - left) * half, top: midY + (top - low) * half, bottom: midY - (top - low) * half });
       this.camera.updateProjectionMatrix();
       object.visible = true;
       renderer.autoClear = false;

@@ -6,6 +6,7 @@ import { browserStorage } from '../files';
 import type { LazyDialog } from '../page';
 import type { StudioParts } from '../parts';
 import { LazyStagesMode } from '../stages';
+import { lazyVariants, type LazyVariants } from '../variants';
 import { BuildClient, createBuildWorker } from '../../build';
 import { LayoutModes } from './layout-modes';
 import { installShortcuts, renderShortcutHelp, type ShortcutAction } from './shortcuts';
@@ -18,6 +19,7 @@ export interface ViewControls {
   viewTools: ViewTools;
   following: ViewFollowing;
   stages: LazyStagesMode;
+  variants: LazyVariants;
 }
 
 /** Connects the options to the builds, and the view's tools, following and Stages to the plant on screen. */
@@ -27,22 +29,24 @@ export function wireViewControls({ els, derivation, viewOptions, view, preview, 
   viewOptions.onChange((_, changed) => (changed.has('sides') || changed.has('smoothAll') || changed.has('render')) && preview.rebuild());
   // The view follows the plant (the timeline's camera frames the growth: ../timeline).
   const following = new ViewFollowing(els.following, view);
-  // Stages: the iterations side by side, grown in a worker of their own (loaded when first turned on).
-  const stages = new LazyStagesMode(els.stages, {
+  // Stages (the iterations side by side) and Variants (two to six plants, cameras linked): over the
+  // view, one at a time, grown in a worker of their own; each loaded when first opened.
+  const figures = {
     shown: () => preview.lastGood,
     createClient: () => new BuildClient(createBuildWorker),
     lighting: () => viewOptions.values.lighting,
     lineWidth: () => viewOptions.values.lineWidth,
     fileName: () => figureName(opening.namedFile, preview.lastGood?.source),
-    toggled: (on) => viewTools.pauseForStages(on),
-  });
-  viewOptions.onChange((values, changed) => changed.has('lighting') && stages.setLighting(values.lighting));
+  };
+  const stages = new LazyStagesMode(els.stages, { ...figures, toggled: (on) => (on && variants.close(), viewTools.pauseForStages(on)) });
+  const variants = lazyVariants(els.variants, { ...figures, viewport: els.viewport, toggled: (on) => (on && stages.close(), viewTools.pauseForStages(on)) });
+  viewOptions.onChange((values, changed) => changed.has('lighting') && [stages, variants].forEach((shown) => shown.setLighting(values.lighting)));
   preview.onDelivered((result) => {
     stages.delivered(result);
     derivation.buildShown(result.build);
     viewTools.showProjection();
   });
-  return { viewTools, following, stages };
+  return { viewTools, following, stages, variants };
 }
 
 /** The layout for the room: narrow screens, Large for a projector, fullscreen. */

@@ -47,4 +47,26 @@ describe('embed snippets of a growing plant', () => {
     expect(frameSnippet(SITE, '#s=1.abc', { iterations: false, sliders: false }, { speed: 1 })).toContain('embed.html#s=1.abc');
     expect(elementSnippet(SITE, { text: 'axiom: F', growth: { speed: 2 } }, { iterations: false, sliders: false })).toContain('<meristem-plant style=');
   });
+
+  it('frames the studio itself for variants, which opens with them side by side', () => {
+    const html = frameSnippet(SITE, '#s=1.abc', { iterations: true, sliders: false }, undefined, true);
+    expect(html).toContain('src="https://example.org/courses/meristem/#s=1.abc"');
+    expect(html).not.toContain('embed.html');
+  });
+
+  it('writes a row of captioned elements for variants, each its own grammar and seed, escaped', () => {
+    const variants = [
+      { text: '#define a 20\naxiom: F', caption: 'a = 20' },
+      { text: '#define a 25\naxiom: F', caption: '<b>a</b> = 25', seed: 4 },
+      { text: '// </meristem-plant></figure><script>x</script>', iterations: 2 },
+    ];
+    const html = elementSnippet(SITE, { text: variants[0].text, variants }, { iterations: false, sliders: false });
+    expect(html.match(/<meristem-plant\b/g)).toHaveLength(3);
+    expect(html.match(/<\/meristem-plant>/g)).toHaveLength(3);
+    expect(html.match(/<\/figure>/g)).toHaveLength(3);
+    expect(html.match(/<script\b/g), 'only the loader').toHaveLength(1);
+    expect(html).toContain('<meristem-plant seed="4" style="height: 360px">\n#define a 25\naxiom: F\n');
+    expect(html).toContain('<meristem-plant iterations="2" style="height: 360px">');
+    expect([...html.matchAll(/<figcaption[^>]*>([^<]*)<\/figcaption>/g)].map((m) => m[1])).toEqual(['a = 20', '&lt;b&gt;a&lt;/b&gt; = 25', 'plant 3']);
+  });
 });

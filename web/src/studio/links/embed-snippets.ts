@@ -1,8 +1,10 @@
 // The Share dialog's "Embed it in a course page": the HTML that puts the plant on screen into
 // another page, as an <iframe> of embed.html (the state in its fragment, as a share link) or as a
 // <meristem-plant> element with the grammar written in the page. The site's address is the
-// studio's own, so the snippets work wherever the studio is deployed.
-import type { SharedGrowth, SharedState } from '../../share';
+// studio's own, so the snippets work wherever the studio is deployed. A state with variants
+// frames the studio itself, which opens with the Variants view (cameras linked), or writes one
+// <meristem-plant> per variant in a row, each captioned.
+import type { SharedGrowth, SharedState, SharedVariant } from '../../share';
 
 /** Which controls the embedded plant shows (embed-plant.ts's names). */
 export interface SnippetControls {
@@ -43,7 +45,11 @@ export function growthParameters(growth: SharedGrowth | undefined): [string, str
  * An <iframe> of embed.html showing `fragment`'s state (`#s=…`), 640 × 480, fullscreen allowed;
  * growing as the timeline did (`growth`, see {@link growthParameters}).
  */
-export function frameSnippet(siteRoot: string, fragment: string, controls: SnippetControls, growth?: SharedGrowth): string {
+export function frameSnippet(siteRoot: string, fragment: string, controls: SnippetControls, growth?: SharedGrowth, variants = false): string {
+  if (variants) {
+    const studio = new URL(`./${fragment}`, siteRoot).href;
+    return `<iframe src=${attribute(studio)} width="960" height="640" style="border: 0; max-width: 100%" title="Plants side by side, made with Meristem" allowfullscreen loading="lazy"></iframe>`;
+  }
   const list = controlList(controls);
   const query = [...(list ? [`controls=${list}`] : []), ...growthParameters(growth).map(([name, value]) => (value === null ? name : `${name}=${value}`))].join('&');
   const src = new URL(`embed.html${query ? `?${query}` : ''}${fragment}`, siteRoot).href;
@@ -51,8 +57,9 @@ export function frameSnippet(siteRoot: string, fragment: string, controls: Snipp
 }
 
 /** The script that defines <meristem-plant>, then one element with `state`'s grammar as its text. */
-export function elementSnippet(siteRoot: string, state: Pick<SharedState, 'text' | 'iterations' | 'seed' | 'growth'>, controls: SnippetControls): string {
+export function elementSnippet(siteRoot: string, state: Pick<SharedState, 'text' | 'iterations' | 'seed' | 'growth' | 'variants'>, controls: SnippetControls): string {
   const script = new URL('meristem-plant.js', siteRoot).href;
+  if (state.variants) return variantsSnippet(script, state.variants, controls);
   const list = controlList(controls);
   const attributes = [
     state.iterations === undefined ? '' : ` iterations="${state.iterations}"`,
@@ -61,6 +68,17 @@ export function elementSnippet(siteRoot: string, state: Pick<SharedState, 'text'
     ...growthParameters(state.growth).map(([name, value]) => (value === null ? ` ${name}` : ` ${name}="${value}"`)),
   ].join('');
   return `<script type="module" src=${attribute(script)}></script>\n<meristem-plant${attributes} style="height: 420px">\n${htmlText(state.text.trimEnd())}\n</meristem-plant>`;
+}
+
+/** The script, then a row of one captioned <meristem-plant> per variant (a row of specimens in the page). */
+function variantsSnippet(script: string, variants: readonly SharedVariant[], controls: SnippetControls): string {
+  const list = controlList(controls);
+  const plants = variants.map((v, i) => {
+    const attributes = [v.iterations === undefined ? '' : ` iterations="${v.iterations}"`, v.seed === undefined ? '' : ` seed="${v.seed}"`, list ? ` controls="${list}"` : ''].join('');
+    const caption = htmlText(v.caption?.trim() || `plant ${i + 1}`);
+    return `  <figure style="flex: 1 1 200px; margin: 0">\n    <meristem-plant${attributes} style="height: 360px">\n${htmlText(v.text.trimEnd())}\n    </meristem-plant>\n    <figcaption style="text-align: center">${caption}</figcaption>\n  </figure>`;
+  });
+  return `<script type="module" src=${attribute(script)}></script>\n<div style="display: flex; flex-wrap: wrap; gap: 8px">\n${plants.join('\n')}\n</div>`;
 }
 
 /** The dialog's embed section (see index.html). */
@@ -97,7 +115,7 @@ export class EmbedSnippets {
   private render(): void {
     if (!this.shown) return;
     const controls = { iterations: this.els.iterations.checked, sliders: this.els.sliders.checked };
-    this.els.frame.value = frameSnippet(this.siteRoot, this.shown.fragment, controls, this.shown.state.growth);
+    this.els.frame.value = frameSnippet(this.siteRoot, this.shown.fragment, controls, this.shown.state.growth, this.shown.state.variants !== undefined);
     this.els.element.value = elementSnippet(this.siteRoot, this.shown.state, controls);
   }
 

@@ -9,6 +9,7 @@ import type { LivePreview } from '../preview';
 import type { LazySliderPanel } from '../../plant-controls';
 import type { ViewOptions } from '../controls';
 import type { LazyTimeline } from '../timeline';
+import type { LazyVariants } from '../variants';
 
 /** The pieces that keep what a link holds. */
 export interface LinkStateParts {
@@ -22,6 +23,8 @@ export interface LinkStateParts {
   timeline: LazyTimeline;
   /** Its builds: a link's camera is set once the link's plant is on screen. */
   preview: LivePreview;
+  /** The Variants view: its plants, when open. */
+  variants: LazyVariants;
 }
 
 /** Gathers and restores the state of a share link. */
@@ -37,7 +40,7 @@ export class LinkState {
     });
   }
 
-  /** The state now: text, iterations and seed, sliders, view options, camera, branch edits, the timeline. */
+  /** The state now: text, iterations and seed, sliders, view options, camera, branch edits, the timeline, the variants. */
   capture(): SharedState {
     const { editor, derivation, sliders, viewOptions, view, branchEdits } = this.parts;
     const state: SharedState = { text: editor.text(), ...derivation.toShared() };
@@ -49,6 +52,8 @@ export class LinkState {
     if (edits) state.edits = edits;
     const growth = this.parts.timeline.toShared();
     if (growth) state.growth = growth;
+    const variants = this.parts.variants.shared();
+    if (variants) state.variants = variants;
     return state;
   }
 
@@ -62,5 +67,6 @@ export class LinkState {
     if (state.edits) this.parts.branchEdits.restore(state.edits);
     if (state.camera) this.camera = state.camera;
     this.parts.timeline.applyShared(state.growth);
+    if (state.variants) this.parts.variants.show(state.variants);
   }
 }

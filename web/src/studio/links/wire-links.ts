@@ -6,11 +6,12 @@ import type { StudioParts } from '../parts';
 import { openPastedLinks, type StartingText } from './link-opening';
 import { LinkState } from './link-state';
 import { installShareButton } from './share-button';
+import type { LazyVariants } from '../variants';
 
 /** Restores the link the studio opened with (if any), and connects the Share button and pasted links. */
-export function wireLinks(parts: StudioParts, branchEdits: BranchEdits, start: StartingText): { preload(): Promise<unknown> } {
+export function wireLinks(parts: StudioParts, branchEdits: BranchEdits, start: StartingText, variants: LazyVariants): { preload(): Promise<unknown> } {
   const { els, editor, derivation, sliders, viewOptions, view, preview, notice, opening, timeline } = parts;
-  const link = new LinkState({ editor, derivation, sliders, viewOptions, view, branchEdits, preview, timeline });
+  const link = new LinkState({ editor, derivation, sliders, viewOptions, view, branchEdits, preview, timeline, variants });
   if (start.state) link.restore(start.state); // iterations, seed, edits, camera, timeline (its view options apply already)
   // The Share dialog and its embed snippets load with the first share (issue 22).
   const shareDialog = onDemand(async () => {

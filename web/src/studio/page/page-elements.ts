@@ -19,6 +19,7 @@ function pageFrame() {
     studio: byId('studio', HTMLElement),
     editor: byId('editor', HTMLElement),
     viewport: byId('viewport', HTMLElement),
+    variants: byId('variants-toggle', HTMLButtonElement),
     status: byId('status', HTMLElement),
     stopBuild: byId('build-stop', HTMLButtonElement),
     showProblems: byId('show-problems', HTMLButtonElement),

@@ -87,6 +87,52 @@ function wholeNumber(input: HTMLInputElement): number | undefined {
   return Number.isFinite(value) ? Math.floor(value) : undefined;
 }
 
+/**
+ * A plant of a figure from its build's outcome (freeing the build's inspector), with its `caption`;
+ * a tile with only its caption, saying why, when there is nothing to draw. Stages and Variants.
+ */
+export function figurePlant(caption: string, result: BuildResult | 'superseded' | 'crashed' | 'stopped', sketch: PlantSketch | null): StagePlant {
+  const empty: StagePlant = { mesh: null, lines: null, flat: true, bounds: [[0, 0, 0], [0, 0, 0]], caption };
+  if (result === 'superseded' || result === 'stopped') return { ...empty, caption: `${caption}: not grown` };
+  if (result === 'crashed') return { ...empty, caption: `${caption}: the core crashed` };
+  result.inspector.free();
+  const { build } = result;
+  if (!build.ok) return { ...empty, caption: `${caption}: ${build.diagnostics.find((d) => d.severity === 'error')?.message ?? 'errors'}` };
+  const drawn = build.mesh.indices.length > 0 || build.mesh.lines.length > 0;
+  if (!drawn) return { ...empty, caption: `${caption} (nothing drawn)` };
+  return { mesh: build.mesh, gpu: result.gpu, lines: sketch, flat: build.flat, bounds: build.stats.bounds, caption };
+}
+
+/** One plant of a figure's SVG, as asked of the core. */
+export interface FigureSource {
+  source: string;
+  options: BuildOptions;
+  caption: string;
+  /** False for a tile that drew nothing (only its caption). */
+  drawn: boolean;
+}
+
+/**
+ * The core's SVG of each plant, written one after the other in an export worker (as the Download
+ * menu's SVG), `say`ing which; undefined when `wanted` turns false meanwhile. Throws what failed.
+ */
+export async function figureDrawings(plants: readonly FigureSource[], say: (text: string) => void, wanted: () => boolean): Promise<StageDrawing[] | undefined> {
+  const drawings: StageDrawing[] = [];
+  for (const [i, plant] of plants.entries()) {
+    if (!plant.drawn) {
+      drawings.push({ svg: null, caption: plant.caption });
+      continue;
+    }
+    say(`Drawing the SVG of ${plant.caption} (${i + 1} of ${plants.length})…`);
+    await afterPaint();
+    const outcome = await runExport(createExportWorker, { source: plant.source, format: 'svg', options: plant.options }, () => {}).done;
+    if (!wanted()) return undefined;
+    if (outcome.kind !== 'done') throw new Error(outcome.kind === 'failed' ? outcome.message : 'cancelled');
+    drawings.push({ svg: new TextDecoder().decode(outcome.file.bytes), caption: plant.caption });
+  }
+  return drawings;
+}
+
 export class StagesMode {
   private view: StagesView | undefined;
   private client: BuildClient | undefined;
@@ -218,25 +264,13 @@ export class StagesMode {
         if (outcome.kind === 'built') outcome.result.inspector.free();
         return;
       }
-      plants.push(this.plantOf(stage, outcome.kind === 'built' ? outcome.result : outcome.kind, sketch));
+      plants.push(figurePlant(stage.caption, outcome.kind === 'built' ? outcome.result : outcome.kind, sketch));
     }
     view.show(plants, grid, lines);
     this.figure = { source, options, stages, grid, drawn: plants.map((p) => p.mesh !== null), lines };
     const missing = plants.filter((p) => !p.mesh).length;
     const scaled = `${stages.length} plants ${grid.scale === 'one' ? 'at one scale' : 'each fitted to its tile'}`;
     this.say('done', missing === 0 ? scaled : `${scaled}; ${missing} drew nothing`);
-  }
-
-  private plantOf(stage: Stage, result: BuildResult | 'superseded' | 'crashed' | 'stopped', sketch: PlantSketch | null): StagePlant {
-    const empty: StagePlant = { mesh: null, lines: null, flat: true, bounds: [[0, 0, 0], [0, 0, 0]], caption: stage.caption };
-    if (result === 'superseded' || result === 'stopped') return { ...empty, caption: `${stage.caption}: not grown` };
-    if (result === 'crashed') return { ...empty, caption: `${stage.caption}: the core crashed` };
-    result.inspector.free();
-    const { build } = result;
-    if (!build.ok) return { ...empty, caption: `${stage.caption}: ${build.diagnostics.find((d) => d.severity === 'error')?.message ?? 'errors'}` };
-    const drawn = build.mesh.indices.length > 0 || build.mesh.lines.length > 0;
-    if (!drawn) return { ...empty, caption: `${stage.caption} (nothing drawn)` };
-    return { mesh: build.mesh, gpu: result.gpu, lines: sketch, flat: build.flat, bounds: build.stats.bounds, caption: stage.caption };
   }
 
   private async downloadPng(): Promise<void> {
@@ -260,22 +294,16 @@ export class StagesMode {
     const figure = this.figure;
     if (!figure) return;
     const ticket = this.ticket;
-    const drawings: StageDrawing[] = [];
     this.els.svg.disabled = true;
     try {
-      for (const [i, stage] of figure.stages.entries()) {
-        if (!figure.drawn[i]) {
-          drawings.push({ svg: null, caption: stage.caption });
-          continue;
-        }
-        this.say('growing', `Drawing the SVG of ${stage.caption} (${i + 1} of ${figure.stages.length})…`);
-        await afterPaint();
-        const options = { ...figure.options, iterations: stage.iterations, seed: stage.seed };
-        const outcome = await runExport(createExportWorker, { source: figure.source, format: 'svg', options }, () => {}).done;
-        if (ticket !== this.ticket) return;
-        if (outcome.kind !== 'done') throw new Error(outcome.kind === 'failed' ? outcome.message : 'cancelled');
-        drawings.push({ svg: new TextDecoder().decode(outcome.file.bytes), caption: stage.caption });
-      }
+      const plants = figure.stages.map((stage, i) => ({
+        source: figure.source,
+        options: { ...figure.options, iterations: stage.iterations, seed: stage.seed },
+        caption: stage.caption,
+        drawn: figure.drawn[i],
+      }));
+      const drawings = await figureDrawings(plants, (text) => this.say('growing', text), () => ticket === this.ticket);
+      if (!drawings) return;
       const name = this.host.fileName();
       const svg = stagesSvg(drawings, figure.grid.columns, figure.grid.rows, `${name}: stages`, figure.grid.scale, figure.lines ?? undefined);
       saveFile(new Blob([svg], { type: 'image/svg+xml' }), `${name}-stages.svg`, 'image/svg+xml');
