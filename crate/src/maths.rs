@@ -2,16 +2,20 @@
 //!
 //! `f64::sin`, `exp`, `ln`, `powf` and the like are not one function. Natively they call the C
 //! library (glibc on Linux, another on macOS or Windows); under wasm32 they call Rust's port of
-//! musl's libm. Both are accurate to within an ulp, but not to the same bits: measured on 2 M random
-//! arguments, sin differs in the last bit on 3.0 % of them, exp on 9.7 %, ln on 6.7 %, pow on
-//! 10.2 %. Most of the time that moves a vertex's last digit. With an environment (issue 47) it
-//! moves a plant: a threshold on a bud's exposure flips, and the studio (wasm) and the CLI
-//! (native) grow different trees from one grammar and one seed.
+//! musl's libm (compiler-builtins). Both are accurate to within an ulp, but not to the same bits:
+//! measured on 2 M random arguments, sin differs in the last bit on 3.0 % of them, exp on 9.7 %, ln
+//! on 6.7 %, pow on 10.2 %. Most of the time that moves a vertex's last digit. With an environment
+//! (issue 47) it moves a plant: a threshold on a bud's exposure flips, and the studio (wasm) and the
+//! CLI (native) grew different trees from one grammar and one seed.
 //!
-//! So the core calls these, which call the `libm` crate on every target: one implementation, the
-//! same bits everywhere. `crate/clippy.toml` forbids the `f64` methods in the core (clippy's
-//! `disallowed_methods`), and `tests/wasm_boundary.rs` checks a stand under wasm32 against the
-//! numbers the native build writes.
+//! So the core calls these. Natively they call the `libm` crate, the same port of musl's libm that
+//! WebAssembly's `f64` methods run; under wasm32 they call those methods, so the first plant's
+//! core carries no second copy (a `libm` of its own cost 370 B of the first load). That both are
+//! the same bits is checked, not assumed: `tests/wasm_boundary.rs` folds every function here at
+//! 20,000 arguments into one number, natively and under wasm32, against one constant, so a
+//! toolchain whose builtins drift from the `libm` pinned in Cargo.toml fails there. Clippy
+//! (`crate/clippy.toml`) forbids the `f64` methods, and glam's rotations that use them, elsewhere
+//! in the core.
 //!
 //! glam's own rotations and angles call the platform's functions too (its `libm` feature would
 //! also make its `sqrt` a software one in WebAssembly), so the few the core needs are here:
@@ -21,76 +25,124 @@
 //! `round`, `mul_add` (correctly rounded by IEEE 754 on every target) and `powi` (rustc lowers it
 //! to compiler-builtins' `__powidf2`, the same code on every target, or to the same multiplications).
 
+#[cfg(not(target_arch = "wasm32"))]
+use libm as imp;
+
+/// Under wasm32 the `f64` methods are already musl's libm (compiler-builtins), named as `libm` names them.
+#[cfg(target_arch = "wasm32")]
+#[allow(clippy::disallowed_methods)]
+mod imp {
+    pub fn sin(x: f64) -> f64 {
+        x.sin()
+    }
+    pub fn cos(x: f64) -> f64 {
+        x.cos()
+    }
+    pub fn tan(x: f64) -> f64 {
+        x.tan()
+    }
+    pub fn asin(x: f64) -> f64 {
+        x.asin()
+    }
+    pub fn acos(x: f64) -> f64 {
+        x.acos()
+    }
+    pub fn atan(x: f64) -> f64 {
+        x.atan()
+    }
+    pub fn atan2(y: f64, x: f64) -> f64 {
+        y.atan2(x)
+    }
+    pub fn exp(x: f64) -> f64 {
+        x.exp()
+    }
+    pub fn log(x: f64) -> f64 {
+        x.ln()
+    }
+    pub fn log10(x: f64) -> f64 {
+        x.log10()
+    }
+    pub fn pow(x: f64, y: f64) -> f64 {
+        x.powf(y)
+    }
+    pub fn cbrt(x: f64) -> f64 {
+        x.cbrt()
+    }
+    pub fn hypot(x: f64, y: f64) -> f64 {
+        x.hypot(y)
+    }
+}
+
 use glam::{DQuat, DVec2, DVec3};
 
 /// The sine of `x` radians.
 pub fn sin(x: f64) -> f64 {
-    libm::sin(x)
+    imp::sin(x)
 }
 
 /// The cosine of `x` radians.
 pub fn cos(x: f64) -> f64 {
-    libm::cos(x)
+    imp::cos(x)
 }
 
 /// `(sin(x), cos(x))`, each the same bits as [`sin`] and [`cos`].
 pub fn sin_cos(x: f64) -> (f64, f64) {
-    (libm::sin(x), libm::cos(x))
+    (imp::sin(x), imp::cos(x))
 }
 
 /// The tangent of `x` radians.
 pub fn tan(x: f64) -> f64 {
-    libm::tan(x)
+    imp::tan(x)
 }
 
 /// The arcsine of `x`, in radians (NaN outside [-1, 1]).
 pub fn asin(x: f64) -> f64 {
-    libm::asin(x)
+    imp::asin(x)
 }
 
 /// The arccosine of `x`, in radians (NaN outside [-1, 1]).
 pub fn acos(x: f64) -> f64 {
-    libm::acos(x)
+    imp::acos(x)
 }
 
 /// The arctangent of `x`, in radians.
 pub fn atan(x: f64) -> f64 {
-    libm::atan(x)
+    imp::atan(x)
 }
 
 /// The angle of the point (`x`, `y`) from the x axis, in radians in [-π, π] (`y.atan2(x)`).
 pub fn atan2(y: f64, x: f64) -> f64 {
-    libm::atan2(y, x)
+    imp::atan2(y, x)
 }
 
 /// e to the power `x`.
 pub fn exp(x: f64) -> f64 {
-    libm::exp(x)
+    imp::exp(x)
 }
 
 /// The natural logarithm of `x`.
 pub fn ln(x: f64) -> f64 {
-    libm::log(x)
+    imp::log(x)
 }
 
 /// The base-10 logarithm of `x`.
 pub fn log10(x: f64) -> f64 {
-    libm::log10(x)
+    imp::log10(x)
 }
 
 /// `x` to the power `y` (`x.powf(y)`).
 pub fn powf(x: f64, y: f64) -> f64 {
-    libm::pow(x, y)
+    imp::pow(x, y)
 }
 
 /// The cube root of `x`.
 pub fn cbrt(x: f64) -> f64 {
-    libm::cbrt(x)
+    imp::cbrt(x)
 }
 
 /// `√(x² + y²)` without overflow or underflow on the way.
 pub fn hypot(x: f64, y: f64) -> f64 {
-    libm::hypot(x, y)
+    imp::hypot(x, y)
 }
 
 /// The rotation by `angle` radians about the unit vector `axis` (glam's `DQuat::from_axis_angle`).
