@@ -4,6 +4,7 @@
 // Names are shown as text only.
 import { type GrammarStore, type KeptText, type KeptTexts, type StoredGrammar, titleOf } from '../../share';
 import { saveGrammarFile } from './grammar-files';
+import './library-dialog.css';
 
 /** The dialog's elements (see index.html). */
 export interface LibraryElements {

@@ -6,6 +6,7 @@
 import { fetchManifest } from './gallery';
 import type { GalleryEntry } from './gallery-manifest';
 import type { GalleryThumbnails } from './thumbnails';
+import './gallery-dialog.css';
 
 /** The gallery dialog of index.html (`#gallery`). */
 export class GalleryDialog {

@@ -7,6 +7,7 @@
 // Loaded on demand: it imports other areas' files, not their indexes, which would bring their
 // wiring into its chunk's graph (and split the first load into more files).
 import { saveGrammarFile } from '../files/grammar-files';
+import './share-dialog.css';
 
 /** The dialog's elements (see index.html). */
 export interface ShareDialogElements {

@@ -3,6 +3,7 @@
 // site, so the studio starts with the network off. A newer deployment installs beside it and waits:
 // a bar says "A new version is ready — reload", and Reload switches to it and reloads the page
 // (work in progress is autosaved, and restored on reload). Later keeps the running version.
+import './app-update.css';
 
 /** What vite-plugin-pwa's `registerSW` (virtual:pwa-register) takes and gives, as far as used here. */
 export type RegisterServiceWorker = (options: {
