@@ -4,6 +4,7 @@
 //! plants' parts, and every `?E` is answered at its place. Derive and the turtle know nothing of
 //! it: this file is where they meet the programs of [`crate::environment`].
 
+use super::environment_answers::{self as answers, Answers, Asker};
 use super::environment_view::EnvironmentView;
 use super::observer::StageObserver;
 use super::stand::Stand;
@@ -34,6 +35,8 @@ struct Environment<'m> {
     /// The values one `?E` is answered with: every program's reply, in the order declared.
     stride: usize,
     query: Option<ModuleId>,
+    /// The answer passes' buffers, kept between passes.
+    answers: Answers,
 }
 
 impl<'m> Environment<'m> {
@@ -62,51 +65,62 @@ impl<'m> Environment<'m> {
             programs,
             places,
             query: model.environment_query(),
+            answers: Answers::default(),
         })
     }
 
-    /// Answers every `?E` of every plant's string now: each string interpreted, every program
+    /// Answers every `?E` of every plant's string now, after step `step` (0: the axiom): the
+    /// `?E` counted against the budget first, then each string interpreted, every program
     /// updated with all the parts, then asked. Nothing when no string holds a `?E`.
     fn answer<R: rand::Rng>(
         &mut self,
         plants: &mut [Stepper<'_, '_, R>],
+        step: u32,
     ) -> Result<(), Diagnostic> {
         let Some(query) = self.query else {
             return Ok(());
         };
-        if self.programs.is_empty() || !plants.iter().any(|p| p.string().ids.contains(&query)) {
+        if self.programs.is_empty() {
             return Ok(());
         }
+        let strings = plants.iter().map(|p| p.string());
+        let n = answers::check(self.model, query, strings, self.stride, step)?;
+        if n == 0 {
+            return Ok(());
+        }
+        self.answers.reset(n, self.stride);
         let mut parts = Vec::new();
-        let mut asked = Vec::new();
+        let mut probes: Vec<Probe<'_>> = Vec::with_capacity(n);
         for (k, plant) in plants.iter().enumerate() {
             let skeleton = turtle::interpret(self.model, plant.string());
             add_parts(&skeleton, self.places[k], k as u32, &mut parts);
-            asked.extend(skeleton.environment_queries.iter().map(|q| (k, q.clone())));
-        }
-        self.update(&parts)?;
-        let replies = {
-            let probes: Vec<Probe<'_>> = asked
-                .iter()
-                .map(|(k, q)| Probe {
-                    position: (DVec3::from_array(q.position) + self.places[*k]).to_array(),
+            for q in &skeleton.environment_queries {
+                probes.push(Probe {
+                    position: (DVec3::from_array(q.position) + self.places[k]).to_array(),
                     heading: q.heading,
                     up: q.up,
-                    args: plants[*k].string().params_of(q.module as usize),
-                    plant: *k as u32,
-                })
-                .collect();
-            let mut replies = vec![0.0; probes.len() * self.stride];
-            let mut offset = 0;
-            for (program, _) in &mut self.programs {
-                program.answer(&probes, &mut replies, self.stride, offset);
-                offset += program.reply_len();
+                    args: plant.string().params_of(q.module as usize),
+                    plant: k as u32,
+                });
+                self.answers.askers.push(Asker {
+                    plant: k as u32,
+                    module: q.module,
+                });
             }
-            replies
-        };
-        for (i, (k, q)) in asked.iter().enumerate() {
-            let reply = &replies[i * self.stride..][..self.stride];
-            write_reply(plants[*k].string_mut(), q.module as usize, reply);
+        }
+        self.update(&parts)?;
+        drop(parts);
+        let replies = &mut self.answers.replies[..probes.len() * self.stride];
+        let mut offset = 0;
+        for (program, _) in &mut self.programs {
+            program.answer(&probes, replies, self.stride, offset);
+            offset += program.reply_len();
+        }
+        drop(probes);
+        for (i, asker) in self.answers.askers.iter().enumerate() {
+            let reply = &self.answers.replies[i * self.stride..][..self.stride];
+            let string = plants[asker.plant as usize].string_mut();
+            write_reply(string, asker.module as usize, reply);
         }
         for plant in plants.iter_mut() {
             plant.written();
@@ -121,7 +135,7 @@ impl<'m> Environment<'m> {
                 .filter(|(j, _)| *j != k)
                 .map(|(_, (p, _))| p.bytes())
                 .sum();
-            let budget = MAX_ENVIRONMENT_BYTES.saturating_sub(others);
+            let budget = MAX_ENVIRONMENT_BYTES.saturating_sub(others + self.answers.bytes());
             let (program, spec) = &mut self.programs[k];
             if let Err(exceeded) = program.update(parts, budget) {
                 return Err(over_budget(spec, &exceeded));
@@ -301,14 +315,14 @@ fn lockstep<'m>(
     for (rng, observer) in rngs.iter_mut().zip(observers.iter_mut()) {
         plants.push(Stepper::start(model, options.steps, rng, observer, traced)?);
     }
-    environment.answer(&mut plants)?;
+    environment.answer(&mut plants, 0)?;
     for step in 1..=options.steps {
         for plant in &mut plants {
             plant.step()?;
         }
         check_stand_size(model, step, &plants)?;
         stepped(step);
-        environment.answer(&mut plants)?;
+        environment.answer(&mut plants, step)?;
         stepped(step);
     }
     let mut derivations = Vec::with_capacity(n);
@@ -428,7 +442,7 @@ mod tests {
         let mut observer = crate::derive::Unobserved;
         let mut plants = vec![Stepper::start(&model, 1, &mut rng, &mut observer, false).unwrap()];
         let error = environment
-            .answer(&mut plants)
+            .answer(&mut plants, 0)
             .expect_err("over the budget");
         assert_eq!(error.code, "E0408");
         assert_eq!(&source[error.span.clone()], source.lines().next().unwrap());

@@ -257,7 +257,10 @@ fn unanswered(model: &Model) -> Option<Diagnostic> {
 
 /// Where module `id` is first written, in the axiom or a successor.
 #[cfg(feature = "environment")]
-fn first_written(model: &Model, id: crate::model::ModuleId) -> Option<crate::syntax::Span> {
+pub(super) fn first_written(
+    model: &Model,
+    id: crate::model::ModuleId,
+) -> Option<crate::syntax::Span> {
     fn find(
         modules: &[crate::model::SuccessorModule],
         id: crate::model::ModuleId,
