@@ -343,13 +343,15 @@ fn a_stand_of_nine_builds_and_exports_gltf() {
 }
 
 #[test]
-fn progress_is_told_every_step_of_the_cycle() {
+fn progress_tells_each_step_and_each_answer_pass_in_order() {
     use meristem::pipeline::{build_with, Progress};
     let mut told = Vec::new();
-    let mut progress = |p: Progress| {
-        if let Progress::Derived { step, .. } = p {
-            told.push(step);
+    let mut progress = |p: Progress| match p {
+        Progress::Derived { step, steps } => told.push(format!("step {step} of {steps}")),
+        Progress::Environment { step, steps } => {
+            told.push(format!("{}, step {step} of {steps}", p.label()))
         }
+        Progress::Started(_) => {}
     };
     let mut hooks = Hooks {
         clock: None,
@@ -361,9 +363,35 @@ fn progress_is_told_every_step_of_the_cycle() {
     };
     let b = build_with(SHOOT, &options, &mut hooks);
     assert!(b.ok());
-    for step in 0..=3 {
-        assert!(told.contains(&step), "{told:?}");
-    }
+    let expected = [
+        "step 0 of 3",
+        "environment, step 0 of 3",
+        "step 1 of 3",
+        "environment, step 1 of 3",
+        "step 2 of 3",
+        "environment, step 2 of 3",
+        "step 3 of 3",
+        "environment, step 3 of 3",
+    ];
+    assert_eq!(told, expected);
+    // No ?E in the string after step 1 (the apex stopped, its ?E gone): no pass, none told.
+    let mut told = Vec::new();
+    let mut progress = |p: Progress| told.push(p);
+    let mut hooks = Hooks {
+        clock: None,
+        progress: Some(&mut progress),
+    };
+    let source = "#environment obstacle box min -1 -1 -1 max 1 1 1\n\
+                  axiom: A ?E(1, 0)\n\
+                  ?E(f, d) -> F\n";
+    assert!(build_with(source, &options, &mut hooks).ok());
+    let passes: Vec<_> = (told.iter())
+        .filter_map(|p| match p {
+            Progress::Environment { step, .. } => Some(*step),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(passes, [0]);
 }
 
 #[test]

@@ -200,12 +200,7 @@ pub(super) fn run_stages(
     let first = result.continued_from.unwrap_or(0);
     watch.hooks.tell(Progress::Derived { step: first, steps });
     // A timed grammar's rounds of replacements may outnumber its steps: progress stays within.
-    let mut stepped = |step: u32| {
-        watch.hooks.tell(Progress::Derived {
-            step: step.min(steps),
-            steps,
-        })
-    };
+    let mut stepped = |progress: Progress| watch.hooks.tell(progress.within(steps));
     let derived = derive_stage(&model, derive, from, count, &mut result, &mut stepped);
     watch.timings.derive = watch.lap();
     if let Some(adjustments) = derived {

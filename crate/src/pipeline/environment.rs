@@ -8,7 +8,7 @@ use super::environment_answers::{self as answers, Answers, Asker};
 use super::environment_view::EnvironmentView;
 use super::observer::StageObserver;
 use super::stand::Stand;
-use super::Build;
+use super::{Build, Progress};
 use crate::derive::{DeriveOptions, Generator, Stepper, TracedStep};
 use crate::diagnostics::Diagnostic;
 use crate::environment::{
@@ -76,6 +76,7 @@ impl<'m> Environment<'m> {
         &mut self,
         plants: &mut [Stepper<'_, '_, R>],
         step: u32,
+        answering: &mut dyn FnMut(u32),
     ) -> Result<(), Diagnostic> {
         let Some(query) = self.query else {
             return Ok(());
@@ -88,6 +89,7 @@ impl<'m> Environment<'m> {
         if n == 0 {
             return Ok(());
         }
+        answering(step);
         self.answers.reset(n, self.stride);
         let mut parts = Vec::new();
         let mut probes: Vec<Probe<'_>> = Vec::with_capacity(n);
@@ -216,14 +218,14 @@ fn add_parts(skeleton: &Skeleton, place: DVec3, plant: u32, parts: &mut Vec<Part
 }
 
 /// Derives every plant of `model` in lockstep with the environment answering between steps, into
-/// `result`, telling `stepped` each step done (and again once the environment has answered it);
+/// `result`, telling `stepped` each step done and each answer pass as it starts;
 /// returns the turtle's adjustments (growth's, for a single plant), or `None` when it failed.
 pub(super) fn derive_stage(
     model: &Model,
     options: DeriveOptions,
     count: bool,
     result: &mut Build,
-    stepped: &mut dyn FnMut(u32),
+    stepped: &mut dyn FnMut(Progress),
 ) -> Option<Option<Adjustments>> {
     result.diagnostics.extend(warnings(model));
     match lockstep(model, &options, count, false, stepped) {
@@ -299,7 +301,7 @@ fn lockstep<'m>(
     options: &DeriveOptions,
     count: bool,
     traced: bool,
-    stepped: &mut dyn FnMut(u32),
+    stepped: &mut dyn FnMut(Progress),
 ) -> Result<Derived<'m>, Diagnostic> {
     let seed = options.seed.unwrap_or(model.settings.seed);
     let mut environment = Environment::new(model, seed)?;
@@ -315,15 +317,19 @@ fn lockstep<'m>(
     for (rng, observer) in rngs.iter_mut().zip(observers.iter_mut()) {
         plants.push(Stepper::start(model, options.steps, rng, observer, traced)?);
     }
-    environment.answer(&mut plants, 0)?;
-    for step in 1..=options.steps {
+    let steps = options.steps;
+    environment.answer(&mut plants, 0, &mut |step| {
+        stepped(Progress::Environment { step, steps })
+    })?;
+    for step in 1..=steps {
         for plant in &mut plants {
             plant.step()?;
         }
         check_stand_size(model, step, &plants)?;
-        stepped(step);
-        environment.answer(&mut plants, step)?;
-        stepped(step);
+        stepped(Progress::Derived { step, steps });
+        environment.answer(&mut plants, step, &mut |step| {
+            stepped(Progress::Environment { step, steps })
+        })?;
     }
     let mut derivations = Vec::with_capacity(n);
     let mut traces = Vec::with_capacity(n);
@@ -442,7 +448,7 @@ mod tests {
         let mut observer = crate::derive::Unobserved;
         let mut plants = vec![Stepper::start(&model, 1, &mut rng, &mut observer, false).unwrap()];
         let error = environment
-            .answer(&mut plants, 0)
+            .answer(&mut plants, 0, &mut |_| {})
             .expect_err("over the budget");
         assert_eq!(error.code, "E0408");
         assert_eq!(&source[error.span.clone()], source.lines().next().unwrap());

@@ -2,7 +2,7 @@
 //! string and the turtle answers query modules, for a build ([`derive_stage`]) and for the traced
 //! derivation ([`trace`]).
 
-use super::Build;
+use super::{Build, Progress};
 use crate::derive::{self, Derivation, DeriveOptions, Written};
 use crate::diagnostics::Diagnostic;
 use crate::growth::{Adjustments, GrowthTracker};
@@ -10,7 +10,7 @@ use crate::model::{LString, Model};
 use crate::turtle;
 
 /// Derives (with growth following, when the grammar has growth attributes) into `result`,
-/// telling `stepped` each step done; returns the turtle's adjustments, or `None` when derivation
+/// telling `stepped` each step done (its `steps` left to the caller); returns the turtle's adjustments, or `None` when derivation
 /// failed. The derivation continues `from` when it can ([`derive::resume`]). `count`: also count
 /// the elements of every step ([`Build::step_counts`]).
 pub(super) fn derive_stage(
@@ -19,7 +19,7 @@ pub(super) fn derive_stage(
     from: Option<&Derivation>,
     count: bool,
     result: &mut Build,
-    stepped: &mut dyn FnMut(u32),
+    stepped: &mut dyn FnMut(Progress),
 ) -> Option<Option<Adjustments>> {
     #[cfg(feature = "environment")]
     if super::environment::runs(model) {
@@ -74,7 +74,7 @@ pub(super) fn trace(
 pub(super) struct StageObserver<'m, 's> {
     model: &'m Model,
     growth: Option<GrowthTracker<'m>>,
-    stepped: Option<&'s mut dyn FnMut(u32)>,
+    stepped: Option<&'s mut dyn FnMut(Progress)>,
     /// When the build counts each step's elements (for growth in time).
     counter: Option<StepCounter>,
 }
@@ -220,7 +220,7 @@ impl derive::Observer for StageObserver<'_, '_> {
             g.stepped(step);
         }
         if let Some(stepped) = self.stepped.as_mut() {
-            stepped(step);
+            stepped(Progress::Derived { step, steps: 0 });
         }
     }
 
