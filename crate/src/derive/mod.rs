@@ -48,7 +48,7 @@ use rewriter::{Rewriter, Tracker};
 
 pub use generator::Generator;
 pub use resume::{resume, Resume};
-pub use stepper::{Assembled, Stepper};
+pub use stepper::{Assembled, Shown, Stepper};
 
 /// What one derivation does.
 #[derive(Clone, Debug, Default)]
@@ -532,20 +532,32 @@ impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
     /// A timed derivation: rounds of replacements until the clock reaches its end ([`timed`]),
     /// each tracked when `tracked`. Returns the number of rounds; `E0407` past `#max_steps`.
     fn timed(&mut self, mut clock: timed::Clock, tracked: bool) -> Result<u32, Diagnostic> {
-        let model = self.rewriter.model;
         let mut round = 0;
         self.stamp_trace(&clock);
+        self.rounds(&mut clock, &mut round, tracked)?;
+        Ok(round)
+    }
+
+    /// The rounds of a timed derivation from the clock's time to its end, counted on from
+    /// `round`; every module aged to the end.
+    fn rounds(
+        &mut self,
+        clock: &mut timed::Clock,
+        round: &mut u32,
+        tracked: bool,
+    ) -> Result<(), Diagnostic> {
+        let model = self.rewriter.model;
         while let Some(plan) = clock.next_round(&mut self.current) {
-            if round == model.settings.max_steps {
+            if *round == model.settings.max_steps {
                 return Err(clock.too_many_rounds(model));
             }
-            round += 1;
+            *round += 1;
             self.timed_plan = Some(plan);
-            self.step(round, tracked)?;
-            self.stamp_trace(&clock);
+            self.step(*round, tracked)?;
+            self.stamp_trace(clock);
         }
-        self.trace_ageing(&clock);
-        Ok(round)
+        self.trace_ageing(clock);
+        Ok(())
     }
 
     /// A traced timed derivation: the step just recorded is at the clock's time.
@@ -699,22 +711,41 @@ fn homomorphism<R: rand::Rng>(
     derivation: &mut Derivation,
     track: bool,
 ) -> Result<(), Diagnostic> {
-    let rules = &rewriter.model.homomorphism;
-    if rules.is_empty() {
+    if rewriter.model.homomorphism.is_empty() {
         return Ok(());
     }
-    let mut shown = derivation.string.clone();
+    let warnings = &mut derivation.warnings;
+    let (shown, turtle_origin) = image(rewriter, steps, &derivation.string, track, warnings)?;
+    derivation.interpreted = Some(shown);
+    derivation.turtle_origin = turtle_origin;
+    // The turtle reads another string than the one counted.
+    derivation.id_counts = Vec::new();
+    Ok(())
+}
+
+/// The homomorphism image of `s` (the rules applied until nothing changes, or their maximum
+/// depth, with a warning into `warnings`) and, when `track`, where each of its modules comes from
+/// in `s`.
+fn image<R: rand::Rng>(
+    rewriter: &mut Rewriter<'_, R>,
+    steps: u32,
+    s: &LString,
+    track: bool,
+    warnings: &mut Vec<Diagnostic>,
+) -> Result<(LString, Vec<u32>), Diagnostic> {
+    let rules = &rewriter.model.homomorphism;
+    let mut shown = s.clone();
     let mut next = LString::default();
     let mut depth = 0;
     let mut turtle_origin: Vec<u32> = if track {
-        (0..shown.len() as u32).collect()
+        (0..s.len() as u32).collect()
     } else {
         Vec::new()
     };
     loop {
         if depth == rules.max_depth {
             let span = rules.productions.first().map_or(0..0, |p| p.span.clone());
-            derivation.warnings.push(Diagnostic::warning(
+            warnings.push(Diagnostic::warning(
                 "E0403",
                 span,
                 format!(
@@ -743,9 +774,5 @@ fn homomorphism<R: rand::Rng>(
         std::mem::swap(&mut shown, &mut next);
         depth += 1;
     }
-    derivation.interpreted = Some(shown);
-    derivation.turtle_origin = turtle_origin;
-    // The turtle reads another string than the one counted.
-    derivation.id_counts = Vec::new();
-    Ok(())
+    Ok((shown, turtle_origin))
 }

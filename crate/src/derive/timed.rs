@@ -30,6 +30,8 @@ pub(super) struct Clock {
     terminal: Vec<f64>,
     now: f64,
     end: f64,
+    /// The end of the whole derivation (`end` is nearer while it is stepped, [`Clock::until`]).
+    last: f64,
     /// `#dt`: model time per step.
     dt: f64,
 }
@@ -51,8 +53,16 @@ impl Clock {
             terminal,
             now: 0.0,
             end,
+            last: end,
             dt: settings.dt,
         })
+    }
+
+    /// Stops the next rounds at growth time `t` (in steps), or at the derivation's end when that
+    /// comes first: a derivation stepped from outside ([`super::Stepper`]) goes one step of
+    /// time at a time.
+    pub(super) fn until(&mut self, t: f64) {
+        self.end = (t * self.dt).min(self.last);
     }
 
     /// The time reached, as a growth time (in steps: model time / `#dt`), kept to 12 decimals

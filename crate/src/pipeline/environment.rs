@@ -6,7 +6,7 @@
 
 use super::environment_answers::{self as answers, Answers, Asker};
 use super::environment_view::EnvironmentView;
-use super::observer::StageObserver;
+use super::observer::{Lent, StageObserver};
 use super::stand::Stand;
 use super::{Build, Progress};
 use crate::derive::{DeriveOptions, Generator, Stepper, TracedStep};
@@ -19,12 +19,15 @@ use crate::model::{LString, Model, ModuleId, ProgramSpec};
 use crate::turtle::{self, Skeleton};
 use glam::DVec3;
 use rand::SeedableRng;
+use std::cell::RefCell;
 
-/// True when the build runs the cycle: the grammar declares a program or a stand, and is not
-/// timed (a timed grammar is derived as if it declared no environment, with a warning).
+/// True when the build runs the cycle: the grammar declares a program or a stand.
 pub(super) fn runs(model: &Model) -> bool {
-    !model.environment.is_empty() && !model.settings.timed()
+    !model.environment.is_empty()
 }
+
+/// The observers of a stand's plants, each lent to its plant's derivation and read between steps.
+type Observers<'m> = [RefCell<StageObserver<'m, 'static>>];
 
 /// The programs of one build and the places of its plants.
 struct Environment<'m> {
@@ -35,6 +38,9 @@ struct Environment<'m> {
     /// The values one `?E` is answered with: every program's reply, in the order declared.
     stride: usize,
     query: Option<ModuleId>,
+    /// The build's seed: each plant's reading draws from its own generator (a stochastic
+    /// homomorphism), seeded from it.
+    seed: u64,
     /// The answer passes' buffers, kept between passes.
     answers: Answers,
 }
@@ -65,16 +71,18 @@ impl<'m> Environment<'m> {
             programs,
             places,
             query: model.environment_query(),
+            seed,
             answers: Answers::default(),
         })
     }
 
     /// Answers every `?E` of every plant's string now, after step `step` (0: the axiom): the
-    /// `?E` counted against the budget first, then each string interpreted, every program
+    /// `?E` counted against the budget first, then each plant read as it is drawn, every program
     /// updated with all the parts, then asked. Nothing when no string holds a `?E`.
     fn answer<R: rand::Rng>(
         &mut self,
         plants: &mut [Stepper<'_, '_, R>],
+        observers: &Observers<'_>,
         step: u32,
         answering: &mut dyn FnMut(u32),
     ) -> Result<(), Diagnostic> {
@@ -94,19 +102,36 @@ impl<'m> Environment<'m> {
         let mut parts = Vec::new();
         let mut probes: Vec<Probe<'_>> = Vec::with_capacity(n);
         for (k, plant) in plants.iter().enumerate() {
-            let skeleton = turtle::interpret(self.model, plant.string());
+            let seed = self.seed.wrapping_add(k as u64) ^ (u64::from(step) << 32);
+            let shown = plant.shown(seed)?;
+            let (string, origin) = match &shown {
+                Some(shown) => (&shown.string, &shown.origin[..]),
+                None => (plant.string(), &[][..]),
+            };
+            let adjustments = observers[k].borrow().adjustments(origin);
+            let skeleton = turtle::interpret_adjusted(self.model, string, adjustments.as_ref());
             add_parts(&skeleton, self.places[k], k as u32, &mut parts);
+            let mut last = None;
             for q in &skeleton.environment_queries {
+                // The `?E` of the derived string it is drawn from: its first image answers it.
+                let module = match origin {
+                    [] => q.module,
+                    _ => origin[q.module as usize],
+                };
+                if plant.string().ids.get(module as usize) != Some(&query) || last == Some(module) {
+                    continue;
+                }
+                last = Some(module);
                 probes.push(Probe {
                     position: (DVec3::from_array(q.position) + self.places[k]).to_array(),
                     heading: q.heading,
                     up: q.up,
-                    args: plant.string().params_of(q.module as usize),
+                    args: plant.string().params_of(module as usize),
                     plant: k as u32,
                 });
                 self.answers.askers.push(Asker {
                     plant: k as u32,
-                    module: q.module,
+                    module,
                 });
             }
         }
@@ -256,7 +281,12 @@ pub(super) fn derive_stage(
                 }
             }
             result.step_counts = counts;
-            let placed = Stand::new(model).place(derivations);
+            let stand = Stand::new(model);
+            let adjustments = (observers.iter().zip(&derivations))
+                .map(|(o, d)| o.adjustments(&d.turtle_origin))
+                .collect();
+            let adjustments = stand.adjustments(adjustments);
+            let placed = stand.place(derivations);
             result.plant_offsets = model
                 .environment
                 .plants
@@ -265,7 +295,7 @@ pub(super) fn derive_stage(
                 .collect();
             result.derivation = placed;
             result.derived_with = options;
-            Some(None)
+            Some(adjustments)
         }
         Err(diagnostic) => {
             result.diagnostics.push(diagnostic);
@@ -294,8 +324,9 @@ struct Derived<'m> {
     view: EnvironmentView,
 }
 
-/// Every plant derived in lockstep, the environment answering after the axiom and every step.
-/// Plant i derives with the seed `seed + i`; growth attributes follow a single plant only.
+/// Every plant derived in lockstep, the environment answering after the axiom and every step
+/// (a timed grammar's step: one step of growth time). Plant i derives with the seed `seed + i`,
+/// its growth attributes followed by its own observer.
 fn lockstep<'m>(
     model: &'m Model,
     options: &DeriveOptions,
@@ -306,19 +337,20 @@ fn lockstep<'m>(
     let seed = options.seed.unwrap_or(model.settings.seed);
     let mut environment = Environment::new(model, seed)?;
     let n = environment.places.len();
-    let single = model.environment.plants.is_empty();
     let mut rngs: Vec<Generator> = (0..n as u64)
         .map(|i| Generator::seed_from_u64(seed.wrapping_add(i)))
         .collect();
-    let mut observers: Vec<StageObserver<'m, 'static>> = (0..n)
-        .map(|_| StageObserver::new(model, options.steps, count, single))
+    let observers: Vec<RefCell<StageObserver<'m, 'static>>> = (0..n)
+        .map(|_| RefCell::new(StageObserver::new(model, options.steps, count, true)))
         .collect();
+    let mut lent: Vec<Lent<'_, 'm, 'static>> = observers.iter().map(Lent).collect();
     let mut plants = Vec::with_capacity(n);
-    for (rng, observer) in rngs.iter_mut().zip(observers.iter_mut()) {
-        plants.push(Stepper::start(model, options.steps, rng, observer, traced)?);
+    let when = (options.steps, options.time);
+    for (rng, observer) in rngs.iter_mut().zip(lent.iter_mut()) {
+        plants.push(Stepper::start(model, when, rng, observer, traced)?);
     }
     let steps = options.steps;
-    environment.answer(&mut plants, 0, &mut |step| {
+    environment.answer(&mut plants, &observers, 0, &mut |step| {
         stepped(Progress::Environment { step, steps })
     })?;
     for step in 1..=steps {
@@ -327,7 +359,7 @@ fn lockstep<'m>(
         }
         check_stand_size(model, step, &plants)?;
         stepped(Progress::Derived { step, steps });
-        environment.answer(&mut plants, step, &mut |step| {
+        environment.answer(&mut plants, &observers, step, &mut |step| {
             stepped(Progress::Environment { step, steps })
         })?;
     }
@@ -338,9 +370,10 @@ fn lockstep<'m>(
         derivations.push(derivation);
         traces.push(trace);
     }
+    drop(lent);
     Ok(Derived {
         derivations,
-        observers,
+        observers: observers.into_iter().map(RefCell::into_inner).collect(),
         traces,
         view: EnvironmentView::of(&environment.programs),
     })
@@ -389,7 +422,7 @@ fn check_stand_size<R: rand::Rng>(
 }
 
 /// Warnings about an environment that will not answer: programs declared and no `?E` written
-/// (`E0409`); a stand of a grammar with growth attributes, which only a single plant follows.
+/// (`E0409`).
 fn warnings(model: &Model) -> Vec<Diagnostic> {
     let mut warnings = Vec::new();
     let first = model.environment.programs.first();
@@ -399,15 +432,6 @@ fn warnings(model: &Model) -> Vec<Diagnostic> {
             spec.span.clone(),
             "no communication module ?E asks the environment: the programs are not run; write \
              ?E(…) where the plant should read their replies"
-                .to_string(),
-        ));
-    }
-    if !model.environment.plants.is_empty() && model.growth.is_active() {
-        let span = model.settings.iterations_span.clone().unwrap_or(0..0);
-        warnings.push(Diagnostic::warning(
-            "E0409",
-            span,
-            "the growth attributes follow a single plant: the plants of a stand grow without them"
                 .to_string(),
         ));
     }
@@ -446,9 +470,12 @@ mod tests {
         environment.programs[0].0 = Box::new(Greedy);
         let mut rng = Generator::seed_from_u64(1);
         let mut observer = crate::derive::Unobserved;
-        let mut plants = vec![Stepper::start(&model, 1, &mut rng, &mut observer, false).unwrap()];
+        let when = (1, None);
+        let mut plants =
+            vec![Stepper::start(&model, when, &mut rng, &mut observer, false).unwrap()];
+        let observers = [RefCell::new(StageObserver::new(&model, 1, false, true))];
         let error = environment
-            .answer(&mut plants, 0, &mut |_| {})
+            .answer(&mut plants, &observers, 0, &mut |_| {})
             .expect_err("over the budget");
         assert_eq!(error.code, "E0408");
         assert_eq!(&source[error.span.clone()], source.lines().next().unwrap());
