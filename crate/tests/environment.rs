@@ -515,6 +515,29 @@ fn a_timed_plant_is_answered_as_drawn_at_each_step_its_organs_grown() {
     assert_eq!(at(TIMED_STEM, 3.0), "I(3)B?E(0,-1)");
     // A fraction of a step: answered at the time asked, as drawn then (2.6875 long).
     assert_eq!(at(TIMED_STEM, 2.5), "I(2.5)A(0.5)?E(0,-0.6875)");
+    // The derivation view: a row a round and a row at each whole step, as answered then.
+    let b = build(
+        TIMED_STEM,
+        &BuildOptions {
+            time: Some(3.0),
+            ..BuildOptions::default()
+        },
+    );
+    let model = b.model.as_ref().unwrap();
+    let rows: Vec<(Option<f64>, String)> = (b.inspector().unwrap().sequence(100).unwrap())
+        .unwrap()
+        .iter()
+        .map(|s| (s.time, s.string.to_text(&model.alphabet)))
+        .collect();
+    let expected = [
+        (Some(0.0), "I(0)A(0)?E(1,1.5)"),
+        (Some(1.0), "I(1)A(0)?E(1,0.625)"),
+        (Some(2.0), "I(2)A(0)?E(0,-0.25)"),
+        (Some(3.0), "I(3)B?E(0,-1)"),
+    ];
+    let expected: Vec<(Option<f64>, String)> =
+        expected.iter().map(|(t, s)| (*t, s.to_string())).collect();
+    assert_eq!(rows, expected);
     // The string itself, without its drawing, leaves the bud at the ground: free for ever.
     let undrawn = TIMED_STEM.replace("I(t) -> F(", "I(t) -> X(");
     assert_eq!(at(&undrawn, 3.0), "I(3)A(0)?E(1,2)");
