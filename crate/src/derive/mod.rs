@@ -711,41 +711,22 @@ fn homomorphism<R: rand::Rng>(
     derivation: &mut Derivation,
     track: bool,
 ) -> Result<(), Diagnostic> {
-    if rewriter.model.homomorphism.is_empty() {
+    let rules = &rewriter.model.homomorphism;
+    if rules.is_empty() {
         return Ok(());
     }
-    let warnings = &mut derivation.warnings;
-    let (shown, turtle_origin) = image(rewriter, steps, &derivation.string, track, warnings)?;
-    derivation.interpreted = Some(shown);
-    derivation.turtle_origin = turtle_origin;
-    // The turtle reads another string than the one counted.
-    derivation.id_counts = Vec::new();
-    Ok(())
-}
-
-/// The homomorphism image of `s` (the rules applied until nothing changes, or their maximum
-/// depth, with a warning into `warnings`) and, when `track`, where each of its modules comes from
-/// in `s`.
-fn image<R: rand::Rng>(
-    rewriter: &mut Rewriter<'_, R>,
-    steps: u32,
-    s: &LString,
-    track: bool,
-    warnings: &mut Vec<Diagnostic>,
-) -> Result<(LString, Vec<u32>), Diagnostic> {
-    let rules = &rewriter.model.homomorphism;
-    let mut shown = s.clone();
+    let mut shown = derivation.string.clone();
     let mut next = LString::default();
     let mut depth = 0;
     let mut turtle_origin: Vec<u32> = if track {
-        (0..s.len() as u32).collect()
+        (0..shown.len() as u32).collect()
     } else {
         Vec::new()
     };
     loop {
         if depth == rules.max_depth {
             let span = rules.productions.first().map_or(0..0, |p| p.span.clone());
-            warnings.push(Diagnostic::warning(
+            derivation.warnings.push(Diagnostic::warning(
                 "E0403",
                 span,
                 format!(
@@ -774,5 +755,9 @@ fn image<R: rand::Rng>(
         std::mem::swap(&mut shown, &mut next);
         depth += 1;
     }
-    Ok((shown, turtle_origin))
+    derivation.interpreted = Some(shown);
+    derivation.turtle_origin = turtle_origin;
+    // The turtle reads another string than the one counted.
+    derivation.id_counts = Vec::new();
+    Ok(())
 }

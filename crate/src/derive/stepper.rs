@@ -90,14 +90,15 @@ impl<'m, 'o, R: rand::Rng> Stepper<'m, 'o, R> {
         }
         let mut rng = Generator::seed_from_u64(seed);
         let mut rewriter = Rewriter::new(model, self.done, &mut rng);
-        let (string, origin) = super::image(
-            &mut rewriter,
-            self.done,
-            &self.run.current,
-            true,
-            &mut Vec::new(),
-        )?;
-        Ok(Some(Shown { string, origin }))
+        let mut now = Derivation {
+            string: self.run.current.clone(),
+            ..Derivation::default()
+        };
+        super::homomorphism(&mut rewriter, self.done, &mut now, true)?;
+        Ok(now.interpreted.map(|string| Shown {
+            string,
+            origin: now.turtle_origin,
+        }))
     }
 
     /// The string now (after the axiom, or after the last step).
