@@ -51,6 +51,7 @@ pub enum Progress {
     /// The environment answers the `?E` of the plant of `step` (0: the axiom) of `steps`: told
     /// as each answer pass starts (only when one runs), so the progress line can say
     /// "environment, step k of n" while the programs work.
+    #[cfg(feature = "environment")]
     Environment { step: u32, steps: u32 },
 }
 
@@ -60,12 +61,14 @@ impl Progress {
         match self {
             Progress::Started(stage) => stage.label(),
             Progress::Derived { .. } => Stage::Derive.label(),
+            #[cfg(feature = "environment")]
             Progress::Environment { .. } => "environment",
         }
     }
 
     /// The same progress with its step kept within `steps` (a timed grammar's rounds of
     /// replacements may outnumber its steps), out of `steps`.
+    #[cfg(feature = "environment")]
     pub(super) fn within(self, steps: u32) -> Progress {
         match self {
             Progress::Derived { step, .. } => Progress::Derived {

@@ -2,7 +2,7 @@
 //! string and the turtle answers query modules, for a build ([`derive_stage`]) and for the traced
 //! derivation ([`trace`]).
 
-use super::{Build, Progress};
+use super::Build;
 use crate::derive::{self, Derivation, DeriveOptions, Written};
 use crate::diagnostics::Diagnostic;
 use crate::growth::{Adjustments, GrowthTracker};
@@ -10,7 +10,7 @@ use crate::model::{LString, Model};
 use crate::turtle;
 
 /// Derives (with growth following, when the grammar has growth attributes) into `result`,
-/// telling `stepped` each step done (its `steps` left to the caller); returns the turtle's adjustments, or `None` when derivation
+/// telling `stepped` each step done; returns the turtle's adjustments, or `None` when derivation
 /// failed. The derivation continues `from` when it can ([`derive::resume`]). `count`: also count
 /// the elements of every step ([`Build::step_counts`]).
 pub(super) fn derive_stage(
@@ -19,12 +19,8 @@ pub(super) fn derive_stage(
     from: Option<&Derivation>,
     count: bool,
     result: &mut Build,
-    stepped: &mut dyn FnMut(Progress),
+    stepped: &mut dyn FnMut(u32),
 ) -> Option<Option<Adjustments>> {
-    #[cfg(feature = "environment")]
-    if super::environment::runs(model) {
-        return super::environment::derive_stage(model, options, count, result, stepped);
-    }
     #[cfg(feature = "environment")]
     if let Some(warning) = unanswered(model) {
         result.diagnostics.push(warning);
@@ -63,7 +59,7 @@ pub(super) fn trace(
 pub(super) struct StageObserver<'m, 's> {
     model: &'m Model,
     growth: Option<GrowthTracker<'m>>,
-    stepped: Option<&'s mut dyn FnMut(Progress)>,
+    stepped: Option<&'s mut dyn FnMut(u32)>,
     /// When the build counts each step's elements (for growth in time).
     counter: Option<StepCounter>,
 }
@@ -217,7 +213,7 @@ impl derive::Observer for StageObserver<'_, '_> {
             g.stepped(step);
         }
         if let Some(stepped) = self.stepped.as_mut() {
-            stepped(Progress::Derived { step, steps: 0 });
+            stepped(step);
         }
     }
 

@@ -87,10 +87,10 @@ pub(super) fn build_reading(
 ) -> PlantBuild {
     let mut now = || read_clock(clock);
     let mut told = |p: Progress| match p {
-        Progress::Started(_) => tell(progress, p.label(), 0, 0),
-        Progress::Derived { step, steps } | Progress::Environment { step, steps } => {
-            tell(progress, p.label(), step, steps)
-        }
+        Progress::Started(stage) => tell(progress, stage.label(), 0, 0),
+        Progress::Derived { step, steps } => tell(progress, Stage::Derive.label(), step, steps),
+        #[cfg(feature = "environment")]
+        Progress::Environment { step, steps } => tell(progress, p.label(), step, steps),
     };
     let mut hooks = Hooks {
         clock: clock.map(|_| &mut now as &mut dyn FnMut() -> f64),
