@@ -16,6 +16,7 @@ pub mod environment;
 pub mod export;
 pub mod growth;
 pub mod import;
+pub mod maths;
 pub mod mesh;
 pub mod model;
 pub mod number;

@@ -9,6 +9,7 @@ mod shared;
 
 use glam::DVec3;
 use meristem::export::Format;
+use meristem::maths;
 use meristem::pipeline::{build, export, Build, BuildOptions, ExportOptions, Hooks, PlantEditor};
 use meristem::turtle::Skeleton;
 use shared::examples;
@@ -60,7 +61,7 @@ fn trunk_and_height(positions: &[f32]) -> (f64, f64) {
     let radius = positions
         .chunks(3)
         .filter(|p| (p[1] as f64 - low).abs() < 1e-5 * height)
-        .map(|p| (p[0] as f64).hypot(p[2] as f64))
+        .map(|p| maths::hypot(p[0] as f64, p[2] as f64))
         .fold(0.0, f64::max);
     (2.0 * radius, height)
 }
@@ -204,7 +205,7 @@ fn sympodial_trees_fork_at_their_tables_angles_with_their_proportions() {
         // at fork k its internode is r1^k long, and since $ makes L horizontal before each turn
         // by a1 about U, the heading's upward part is multiplied by cos a1 at each fork:
         // height = 1 + Σ_{k=1..9} (r1 cos a1)^k. The trunk is 10 of the book's pixels wide.
-        let q = r1 * a1.to_radians().cos();
+        let q = r1 * maths::cos(a1.to_radians());
         let height = 1.0 + (1..10).map(|k| q.powi(k)).sum::<f64>();
         let expected = 10.0 * book_pixel(s) / height;
         let (trunk_width, drawn_height) = trunk_and_height(&b.plant.mesh.positions);
@@ -277,7 +278,7 @@ fn ternary_trees_have_their_tables_counts_angles_and_the_books_trunks_at_every_s
         assert_eq!(fork.len(), 3, "{name}");
         for k in fork {
             let measured = angle(s, stem, k);
-            let slack = (e * a.to_radians().sin()).to_degrees() + 1e-6;
+            let slack = (e * maths::sin(a.to_radians())).to_degrees() + 1e-6;
             assert!((measured - a).abs() <= slack, "{name}: {measured} vs {a}");
         }
     }

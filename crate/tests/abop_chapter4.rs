@@ -7,6 +7,7 @@
 mod shared;
 
 use glam::DVec3;
+use meristem::maths;
 use meristem::pipeline::{build, Build, BuildOptions};
 use meristem::turtle::Skeleton;
 use shared::example;
@@ -51,7 +52,7 @@ fn parastichies(points: &[DVec3], from: usize, to: usize) -> (usize, usize) {
 fn turn(a: DVec3, b: DVec3, axis: DVec3) -> f64 {
     let flat = |p: DVec3| p - axis * p.dot(axis);
     let (a, b) = (flat(a), flat(b));
-    let angle = a.cross(b).dot(axis).atan2(a.dot(b)).to_degrees();
+    let angle = maths::atan2(a.cross(b).dot(axis), a.dot(b)).to_degrees();
     angle.rem_euclid(360.0)
 }
 
@@ -120,7 +121,7 @@ fn the_sunflower_head_has_600_disk_florets_34_rays_and_34_55_parastichies() {
 fn about_the_axis(points: &[DVec3]) -> Vec<(f64, f64)> {
     points
         .iter()
-        .map(|p| (p.z.atan2(p.x).to_degrees(), p.y))
+        .map(|p| (maths::atan2(p.z, p.x).to_degrees(), p.y))
         .collect()
 }
 

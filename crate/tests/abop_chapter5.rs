@@ -6,6 +6,7 @@
 mod shared;
 
 use glam::DVec3;
+use meristem::maths;
 use meristem::pipeline::{build, Build, BuildOptions};
 use meristem::turtle::{Polygon, Surface, SurfaceKind};
 use shared::example;
@@ -368,7 +369,11 @@ fn azimuths(axis: DVec3, directions: &[DVec3]) -> Vec<f64> {
     let x = flat[0];
     let y = axis.cross(x);
     flat.iter()
-        .map(|d| d.dot(y).atan2(d.dot(x)).to_degrees().rem_euclid(360.0))
+        .map(|d| {
+            maths::atan2(d.dot(y), d.dot(x))
+                .to_degrees()
+                .rem_euclid(360.0)
+        })
         .collect()
 }
 

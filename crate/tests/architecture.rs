@@ -29,6 +29,9 @@ const RANKS: &[(&str, u32)] = &[
     ("sort", 0),
     // `number`: reading a number's text (src/number.rs), for the syntax and the model.
     ("number", 0),
+    // `maths`: sin, exp, ln, pow… from the `libm` crate on every target (src/maths.rs), so the
+    // native CLI and the wasm studio grow the same plant.
+    ("maths", 0),
     ("vocabulary", 1),
     ("diagnostics", 1),
     ("syntax", 2),

@@ -4,6 +4,7 @@
 use glam::DVec3;
 use meristem::branches::{parse_edits, write_edits, BranchEdit};
 use meristem::export::{self, Format};
+use meristem::maths;
 use meristem::mesh::MeshBuffers;
 use meristem::pipeline::{build, BuildOptions, Plant, PlantEditor};
 use std::path::PathBuf;
@@ -393,7 +394,7 @@ fn whatever_a_drag_accepts_the_edits_document_holds_and_the_core_reads_back() {
             let handle = 1 + (rng.next() % 3) as usize;
             let at = b.control_points(branch)[handle];
             // Targets from a hair to 1e12 away, in random directions.
-            let scale = 10f64.powf(-8.0 + 20.0 * (rng.unit() + 1.0) / 2.0);
+            let scale = maths::powf(10.0, -8.0 + 20.0 * (rng.unit() + 1.0) / 2.0);
             let target = at + DVec3::new(rng.unit(), rng.unit(), rng.unit()) * scale;
             let before = b.edits();
             match b.drag(branch, handle, target) {

@@ -555,3 +555,27 @@ fn export_frames_writes_png_pictures_of_the_growth() {
     assert!(err.contains("the most is 4096 on a side"), "{err}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn lineage_lists_a_module_back_to_the_axiom_with_the_production_of_each_step() {
+    // 1.24d after 1 step: F [ + X ] F [ - X ] + X (0-11); step 2 writes F as F F (0, 1), copies
+    // [ + (2, 3), and writes step 1's X at 3 as F [ + X ] …, from 4: its X is module 7.
+    let file = example("abop-1.24d.lsys");
+    let (code, out, err) = meristem(&["lineage", &file, "7", "--iterations", "2"]);
+    assert_eq!((code, err.as_str()), (0, ""));
+    assert_eq!(
+        out,
+        "step 2: X [7] <- 7:1 X -> F[+X]F[-X]+X\n\
+         step 1: X [3] <- 7:1 X -> F[+X]F[-X]+X\n\
+         step 0: X [0] <- axiom\n"
+    );
+    let (code, _, err) = meristem(&["lineage", &file, "9999", "--iterations", "2"]);
+    assert_eq!(code, 1);
+    assert!(
+        err.contains("no module 9999") && err.contains("[E0411]"),
+        "{err}"
+    );
+    let (code, _, err) = meristem(&["lineage", &file]);
+    assert_eq!(code, 2);
+    assert!(err.contains("lineage needs a module index"), "{err}");
+}

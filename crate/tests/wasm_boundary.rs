@@ -7,7 +7,9 @@
 
 /// A deterministic plant (ABOP fig. 1.24d) and a stochastic one (fig. 1.27, its random choices from
 /// one seeded generator), with the iterations and the seed each build uses.
-const PLANTS: [(&str, &str, u32, u64); 2] = [
+/// And two plants that sense their world (issue 47), where a last bit of a sine or an exponential
+/// can flip a bud: a 3 × 3 stand competing for light and a space-colonisation tree.
+const PLANTS: [(&str, &str, u32, u64); 4] = [
     (
         "1.24d",
         include_str!("../../public/examples/abop-1.24d.lsys"),
@@ -19,6 +21,18 @@ const PLANTS: [(&str, &str, u32, u64); 2] = [
         include_str!("../../public/examples/abop-1.27-stochastic.lsys"),
         5,
         42,
+    ),
+    (
+        "open-grid",
+        include_str!("../../public/examples/open-grid-competing.lsys"),
+        9,
+        1,
+    ),
+    (
+        "open-space",
+        include_str!("../../public/examples/open-space-colonisation.lsys"),
+        20,
+        7,
     ),
 ];
 
@@ -32,10 +46,42 @@ struct Built {
 }
 
 /// The expected builds of [`PLANTS`], in order.
-const EXPECTED: [(&str, usize, f64); 2] = [
+const EXPECTED: [(&str, usize, f64); 4] = [
     ("da7d5a827a04c582", 12719, 1373290.500090927),
     ("6b509c2c41fbe6cc", 8904, 459051.03510469943),
+    ("4925332075fa7d0c", 42175, 524549.5325517417),
+    ("d0a8f0f5ac4e6c93", 4542, 43900.38167501377),
 ];
+
+/// Every function of `meristem::maths` at 20,000 arguments spread over its domain, each result's
+/// bits folded into one number: the same on every target, or the core's plants are not.
+fn maths_fingerprint() -> u64 {
+    use meristem::maths;
+    let mut folded: u64 = 0xcbf2_9ce4_8422_2325;
+    let mut fold = |x: f64| folded = (folded ^ x.to_bits()).wrapping_mul(0x0100_0000_01b3);
+    for k in 0..20_000 {
+        let t = k as f64 / 20_000.0;
+        let x = (t - 0.5) * 200.0; // [-100, 100)
+        let (s, c) = maths::sin_cos(x);
+        fold(s);
+        fold(c);
+        fold(maths::tan(x));
+        fold(maths::asin(2.0 * t - 1.0));
+        fold(maths::acos(2.0 * t - 1.0));
+        fold(maths::atan(x));
+        fold(maths::atan2(x, 1.0 - t));
+        fold(maths::exp(x * 0.7));
+        fold(maths::ln(t * 1e3 + 1e-9));
+        fold(maths::log10(t * 1e6 + 1e-9));
+        fold(maths::powf(t * 10.0, x * 0.1));
+        fold(maths::cbrt(x));
+        fold(maths::hypot(x, t));
+    }
+    folded
+}
+
+/// [`maths_fingerprint`] as the native build computes it.
+const MATHS_FINGERPRINT: u64 = 0xaa9b_3227_b8d0_0a38;
 
 fn extent(positions: &[f32]) -> f64 {
     positions.iter().map(|p| f64::from(p.abs())).sum()
@@ -98,6 +144,12 @@ mod native {
     fn numbers_are_read_as_str_parse_reads_them() {
         parse_f64_is_str_parse();
     }
+
+    #[test]
+    fn the_maths_give_the_same_bits_as_in_webassembly() {
+        let fingerprint = maths_fingerprint();
+        assert_eq!(fingerprint, MATHS_FINGERPRINT, "{fingerprint:#x}");
+    }
 }
 
 #[cfg(target_arch = "wasm32")]
@@ -134,6 +186,12 @@ mod wasm {
     #[wasm_bindgen_test]
     fn numbers_are_read_as_str_parse_reads_them() {
         parse_f64_is_str_parse();
+    }
+
+    #[wasm_bindgen_test]
+    fn the_maths_give_the_same_bits_as_natively() {
+        let fingerprint = maths_fingerprint();
+        assert_eq!(fingerprint, MATHS_FINGERPRINT, "{fingerprint:#x}");
     }
 
     #[wasm_bindgen_test]

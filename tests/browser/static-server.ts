@@ -13,6 +13,7 @@ const TYPES: Record<string, string> = {
   '.css': 'text/css',
   '.wasm': 'application/wasm',
   '.lsys': 'text/plain; charset=utf-8',
+  '.md': 'text/markdown; charset=utf-8',
   '.json': 'application/json',
   '.png': 'image/png',
   '.svg': 'image/svg+xml',
@@ -32,8 +33,11 @@ export interface StaticSite {
 /** What a host compresses when the browser accepts gzip (`gzip: true`). */
 const COMPRESSED = new Set(['.html', '.js', '.css', '.wasm', '.json', '.lsys', '.svg', '.webmanifest']);
 
-/** Serves dist/ under `subPath` (`/a/b/`) on a free loopback port; with `gzip`, compressed as hosts do. */
-export async function serveStatic(subPath: string, { gzip = false } = {}): Promise<StaticSite> {
+/**
+ * Serves dist/ under `subPath` (`/a/b/`) on a free loopback port; with `gzip`, compressed as hosts
+ * do; `headers` go with every file (a lecturer's site that allows other origins: CORS).
+ */
+export async function serveStatic(subPath: string, { gzip = false, headers = {} as Record<string, string> } = {}): Promise<StaticSite> {
   const replaced = new Map<string, string>();
   let requests = 0;
   const server: Server = createServer((request, response) => {
@@ -46,7 +50,7 @@ export async function serveStatic(subPath: string, { gzip = false } = {}): Promi
     if (existsSync(file) && statSync(file).isDirectory()) file = join(file, 'index.html');
     if (!existsSync(file)) return void response.writeHead(404).end('not found');
     const compress = gzip && COMPRESSED.has(extname(file)) && /\bgzip\b/.test(String(request.headers['accept-encoding']));
-    response.writeHead(200, { 'Content-Type': TYPES[extname(file)] ?? 'application/octet-stream', ...(compress ? { 'Content-Encoding': 'gzip' } : {}) });
+    response.writeHead(200, { ...headers, 'Content-Type': TYPES[extname(file)] ?? 'application/octet-stream', ...(compress ? { 'Content-Encoding': 'gzip' } : {}) });
     const replacement = replaced.get(relative);
     if (replacement !== undefined) return void response.end(replacement);
     if (compress) createReadStream(file).pipe(createGzip({ level: 9 })).pipe(response);

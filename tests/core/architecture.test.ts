@@ -169,8 +169,9 @@ const AREAS: Record<string, Area> = {
   // index.ts brings CodeMirror, which loads after the first plant: the plain textarea before it
   // and what the first plant's panels read of the text (defines, a directive's line, growth
   // directives, the reference's anchors) are doors of their own.
-  // surface-lines.ts: the Surfaces menu reads which surfaces the text declares from the first plant on.
-  editor: { uses: ['core'], doors: ['editor/index.ts', 'editor/grammar-text.ts', 'editor/defines.ts', 'editor/growth-directives.ts', 'editor/directive-lines.ts', 'editor/reference.ts', 'editor/surface-lines.ts'] },
+  // surface-lines.ts: the Surfaces menu reads which surfaces the text declares from the first plant on;
+  // curve-lines.ts: the curve editor (loaded on first use) reads and rewrites a curve's numbers.
+  editor: { uses: ['core'], doors: ['editor/index.ts', 'editor/grammar-text.ts', 'editor/defines.ts', 'editor/growth-directives.ts', 'editor/directive-lines.ts', 'editor/reference.ts', 'editor/surface-lines.ts', 'editor/curve-lines.ts'] },
   // highlight.ts: the highlight colours, for panels loaded on demand without the view's three.js
   // code; thumbnail.ts: the gallery's thumbnail worker draws without a page.
   // stages-view.ts and stages-layout.ts: the Stages panel's own scene, loaded with that panel on demand.

@@ -71,7 +71,7 @@ async function startStudio(els: StudioElements, hook: StudioTestHook, firstLoadD
   const controls = wireViewControls(parts);
   wireTimeline(parts);
   const dialogs = wireFiles(parts);
-  installLearnPanel({ preview, open: (text, title, key) => opening.replace(text, title, key) }); // lessons (issue 17), loaded on first use
+  installLearnPanel({ preview, open: (text, title, key) => opening.replace(text, title, key), text: () => editor.text() }); // lessons (issue 17), loaded on first use
   if (start.from === 'link') void autosave.save(start.text); // the link's text is now the work in progress
   const branchEdits = wireBranchEditing(parts, controls);
   const links = wireLinks(parts, branchEdits, start);

@@ -1,6 +1,7 @@
 //! The branch tree, edits and partial re-meshing against hand-worked cases.
 
 use super::*;
+use crate::maths;
 use crate::mesh::{build_mesh, MeshBuffers};
 use crate::pipeline::{build, Build, BuildOptions, PlantEditor};
 
@@ -496,7 +497,7 @@ fn edits_survive_re_derivation_with_another_iteration_count() {
         let length = b.tree().branches[k].length;
         let moved = edited[k].control[3] - unedited[k].control[3];
         assert!(
-            (moved.length() - length * (0.4f64.hypot(0.2))).abs() < 1e-9,
+            (moved.length() - length * maths::hypot(0.4, 0.2)).abs() < 1e-9,
             "n = {n}"
         );
         assert_eq!(edited[k].control[0], unedited[k].control[0]);

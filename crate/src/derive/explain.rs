@@ -212,6 +212,38 @@ pub fn match_report(
     Ok(report)
 }
 
+/// The modules of `s` (a string of this grammar) where production `production`'s predecessor,
+/// contexts and condition all hold, as they would if `s` were rewritten at step `steps` (the
+/// debugger's watch: a pattern and condition true for some module). A condition that draws random
+/// numbers draws them from a generator of its own.
+pub fn matching(
+    model: &Model,
+    s: &LString,
+    production: u32,
+    steps: u32,
+) -> Result<Vec<u32>, Diagnostic> {
+    let Some(p) = model.productions.productions.get(production as usize) else {
+        return Ok(Vec::new());
+    };
+    let mut rng = Generator::seed_from_u64(model.settings.seed);
+    let mut rewriter = Rewriter::new(model, steps, &mut rng);
+    context::bracket_partners(model, s, &mut rewriter.partner);
+    let mut found = Vec::new();
+    for i in 0..s.len() {
+        if s.ids[i] != p.predecessor.id || s.params_of(i).len() != p.predecessor.arity {
+            continue;
+        }
+        if !rewriter.check_left(p, s, i).matched || !rewriter.check_right(p, s, i).matched {
+            continue;
+        }
+        let (_, condition) = rewriter.matches_recording(p, s, i, steps, &mut (), &mut ())?;
+        if condition {
+            found.push(i as u32);
+        }
+    }
+    Ok(found)
+}
+
 /// The production that wrote the first module `module` became, if any.
 fn rewritten_by(origin: &[u32], parent: &[u32], module: usize) -> Option<u32> {
     let child = parent.iter().position(|&p| p as usize == module)?;

@@ -38,7 +38,9 @@ mod stepper;
 mod successors;
 mod timed;
 
-pub use explain::{explain, match_report, ContextCheck, Explanation, LastStep, MatchReport};
+pub use explain::{
+    explain, match_report, matching, ContextCheck, Explanation, LastStep, MatchReport,
+};
 
 use crate::diagnostics::Diagnostic;
 use crate::model::{LString, Model};
@@ -322,6 +324,26 @@ fn apply_queries(model: &Model, s: &mut LString, observer: &mut dyn Observer) {
 /// the derivation well inside wasm32's 4 GiB, and the CLI gives the same answer as the studio.
 pub const MAX_STRING_BYTES: usize = 256 << 20;
 
+/// Most bytes a traced derivation ([`derive_traced`]: every step's string and provenance, for the
+/// derivation view and a module's lineage) may hold (`E0410`).
+pub const MAX_TRACE_BYTES: usize = 128 << 20;
+
+/// `E0410`: the trace would hold `bytes` at `step`, above [`MAX_TRACE_BYTES`].
+#[cold]
+fn trace_error(model: &Model, step: u32, bytes: usize) -> Diagnostic {
+    Diagnostic::error(
+        "E0410",
+        size_span(model),
+        format!(
+            "the derivation step by step (every string kept, for the derivation view or a \
+             module's lineage) would take {} MB by step {step}, above its budget of {} MB; \
+             ask with fewer iterations",
+            bytes.div_ceil(1 << 20),
+            MAX_TRACE_BYTES >> 20
+        ),
+    )
+}
+
 /// `E0400` when a string of `len` modules passes `#max_modules`, `E0401` when its `bytes` pass
 /// [`MAX_STRING_BYTES`], at `step` (0: the axiom).
 #[inline]
@@ -518,14 +540,33 @@ impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
         }
         self.observer.stepped(step);
         apply_queries(model, &mut self.current, self.observer);
-        if let Some(trace) = self.trace.as_mut() {
-            trace.push(TracedStep {
+        if self.trace.is_some() {
+            let traced = TracedStep {
                 string: self.current.clone(),
                 origin: self.origin.clone(),
                 parent: self.parent.clone(),
                 time: None,
-            });
+            };
+            self.record(step, traced)?;
         }
+        Ok(())
+    }
+
+    /// Adds `traced` (step `step`) to the trace: `E0410` when the trace would pass
+    /// [`MAX_TRACE_BYTES`].
+    fn record(&mut self, step: u32, traced: TracedStep) -> Result<(), Diagnostic> {
+        let Some(trace) = self.trace.as_mut() else {
+            return Ok(());
+        };
+        // Only the studio core traces (the first plant's core leaves the budget's code out).
+        if cfg!(feature = "studio-extras") {
+            let bytes = |t: &TracedStep| t.string.bytes() + 4 * (t.origin.len() + t.parent.len());
+            let total: usize = trace.iter().map(bytes).sum::<usize>() + bytes(&traced);
+            if total > MAX_TRACE_BYTES {
+                return Err(trace_error(self.rewriter.model, step, total));
+            }
+        }
+        trace.push(traced);
         Ok(())
     }
 
@@ -556,7 +597,7 @@ impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
             self.step(*round, tracked)?;
             self.stamp_trace(clock);
         }
-        self.trace_ageing(clock);
+        self.trace_ageing(clock, *round)?;
         Ok(())
     }
 
@@ -570,22 +611,23 @@ impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
     /// A traced timed derivation whose clock went on after its last round: the string at the end,
     /// every module aged, recorded as a step of its own (each module its own parent, none
     /// rewritten), so the trace ends with the derived string as it does for other grammars.
-    fn trace_ageing(&mut self, clock: &timed::Clock) {
-        let Some(trace) = self.trace.as_mut() else {
-            return;
+    fn trace_ageing(&mut self, clock: &timed::Clock, round: u32) -> Result<(), Diagnostic> {
+        let Some(trace) = self.trace.as_ref() else {
+            return Ok(());
         };
         let now = clock.growth_time();
         let at_now = |t: f64| (t - now).abs() <= 1e-9 * now.max(1.0);
         if trace.last().and_then(|last| last.time).is_some_and(at_now) {
-            return;
+            return Ok(());
         }
         let n = self.current.len();
-        trace.push(TracedStep {
+        let aged = TracedStep {
             string: self.current.clone(),
             origin: vec![NOT_REWRITTEN; n],
             parent: (0..n as u32).collect(),
             time: Some(now),
-        });
+        };
+        self.record(round + 1, aged)
     }
 
     /// The productions pass, from `current` into `next`.

@@ -220,6 +220,7 @@ impl Responder for Attractors {
 mod tests {
     use super::*;
     use crate::environment::settings::tests::spec;
+    use crate::maths;
     use crate::vocabulary::EnvironmentProgram;
 
     fn cube(settings: &[(&'static str, &[f64])]) -> ProgramSpec {
@@ -384,7 +385,7 @@ mod tests {
         let buds: Vec<[f64; 3]> = (0..10000)
             .map(|i| {
                 let t = i as f64 / 10000.0;
-                [2.0 * t - 1.0, (37.0 * t).sin(), (91.0 * t).cos()]
+                [2.0 * t - 1.0, maths::sin(37.0 * t), maths::cos(91.0 * t)]
             })
             .collect();
         let probes: Vec<Probe> = buds.iter().map(|&b| probe(b)).collect();

@@ -2,6 +2,7 @@
 //! lines) grouped by colour index, the camera that frames the plant, and numbers printed the same
 //! way on every machine.
 
+use crate::maths;
 use crate::mesh::MeshBuffers;
 use crate::turtle::Skeleton;
 use glam::{DMat3, DQuat, DVec3};
@@ -150,7 +151,7 @@ impl View {
         let up = back.cross(right);
         // Each corner needs the eye far enough that its offset across the view stays within
         // tan(fov / 2) of its depth; 3 % more leaves a margin.
-        let tan = (fov * 0.5).tan();
+        let tan = maths::tan(fov * 0.5);
         let mut distance: f64 = 0.0;
         for k in 0..8 {
             let corner = DVec3::new(
@@ -200,7 +201,7 @@ pub fn srgb(linear: [f32; 3]) -> [f32; 3] {
         let s = if c <= 0.003_130_8 {
             12.92 * c
         } else {
-            1.055 * c.powf(1.0 / 2.4) - 0.055
+            1.055 * maths::powf(c, 1.0 / 2.4) - 0.055
         };
         s as f32
     })
@@ -284,7 +285,7 @@ pub fn decimals_for(extent: f64) -> usize {
     if !(extent.is_finite() && extent > 0.0) {
         return 6;
     }
-    (6.0 - extent.log10().floor()).clamp(0.0, 12.0) as usize
+    (6.0 - maths::log10(extent).floor()).clamp(0.0, 12.0) as usize
 }
 
 /// The largest side of the bounds.
@@ -341,7 +342,7 @@ mod tests {
         let (axis, angle) = view.orientation();
         let rotation = DQuat::from_axis_angle(axis, angle);
         let (right, up) = (rotation * DVec3::X, rotation * DVec3::Y);
-        let tan = (view.fov * 0.5).tan();
+        let tan = maths::tan(view.fov * 0.5);
         let mut widest: f64 = 0.0;
         for x in [-1.0, 1.0] {
             for y in [0.0, 10.0] {

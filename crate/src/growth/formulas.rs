@@ -1,6 +1,7 @@
 //! The paper's formulas as pure functions, and the thirds of a plant's height they speak of.
 //! `rand` is one value of Rand(), uniform in [0, 1).
 
+use crate::maths;
 use crate::vocabulary::Season;
 use glam::DVec3;
 use serde::Serialize;
@@ -130,7 +131,7 @@ pub fn branch_length(rate: f64, maturity: u32, age: u32) -> f64 {
     if age <= maturity {
         rate.powi(age as i32)
     } else {
-        let log = |x: f64| x.ln() / rate.ln();
+        let log = |x: f64| maths::ln(x) / maths::ln(rate);
         log(age as f64) - log(maturity as f64) + rate.powi(maturity as i32)
     }
 }
@@ -173,7 +174,11 @@ pub fn sun_direction(latitude: f64, season: Season) -> Option<DVec3> {
     }
     let towards_equator = if latitude < 0.0 { -1.0 } else { 1.0 };
     let a = altitude.to_radians();
-    Some(DVec3::new(towards_equator * a.cos(), a.sin(), 0.0))
+    Some(DVec3::new(
+        towards_equator * maths::cos(a),
+        maths::sin(a),
+        0.0,
+    ))
 }
 
 #[cfg(test)]
@@ -297,7 +302,7 @@ mod tests {
     #[test]
     fn the_sun_stands_towards_the_equator_at_its_altitude() {
         let s = sun_direction(38.0, Season::Equinox).expect("up");
-        assert!((s.y - 52f64.to_radians().sin()).abs() < 1e-12);
+        assert!((s.y - maths::sin(52f64.to_radians())).abs() < 1e-12);
         assert!(s.x > 0.0 && s.z == 0.0);
         assert!(sun_direction(-38.0, Season::Equinox).expect("up").x < 0.0);
         // At the Tropic of Cancer in summer the sun is at the zenith; north of the zenith in the

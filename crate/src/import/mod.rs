@@ -20,6 +20,7 @@ pub use vlab::{import_files, import_object, ObjectFile};
 pub use zip::unzip;
 
 use crate::diagnostics::{has_errors, LineIndex, Severity};
+use crate::maths;
 use serde::Serialize;
 
 /// A notation the importers read.
@@ -348,7 +349,7 @@ pub(crate) fn number(value: f64) -> String {
     if value == 0.0 {
         return "0".into();
     }
-    let digits = 12 - 1 - value.abs().log10().floor() as i32;
+    let digits = 12 - 1 - maths::log10(value.abs()).floor() as i32;
     let rounded = if (0..=300).contains(&digits) {
         let scale = 10f64.powi(digits);
         let r = (value * scale).round() / scale;

@@ -11,6 +11,7 @@ mod lpfg_surface;
 mod specifications;
 mod surface_file;
 
+use crate::maths;
 use specifications::{command, Command};
 
 use super::abop::{self, Flavour};
@@ -573,7 +574,7 @@ fn short(v: f64) -> String {
     if v == 0.0 || !v.is_finite() {
         return "0".into();
     }
-    let digits = (6 - v.abs().log10().floor() as i32).clamp(0, 12) as usize;
+    let digits = (6 - maths::log10(v.abs()).floor() as i32).clamp(0, 12) as usize;
     let text = format!("{v:.digits$}");
     let text = if text.contains('.') {
         text.trim_end_matches('0').trim_end_matches('.').to_string()

@@ -8,6 +8,8 @@ use std::path::PathBuf;
 pub struct Args {
     pub verb: String,
     pub file: String,
+    /// `lineage FILE MODULE`: the module's index in the derived string, as written.
+    pub module: Option<String>,
     pub iterations: Option<u32>,
     pub seed: Option<u64>,
     /// `--at T`: the growth time, in steps.
@@ -54,6 +56,7 @@ pub fn parse_args() -> Result<Args, lexopt::Error> {
     let mut parser = lexopt::Parser::from_env();
     let mut verb = None;
     let mut file = None;
+    let mut module = None;
     let mut iterations = None;
     let mut seed = None;
     let mut at = None;
@@ -106,6 +109,9 @@ pub fn parse_args() -> Result<Args, lexopt::Error> {
             }
             Value(v) if verb.is_none() => verb = Some(v.string()?),
             Value(v) if file.is_none() => file = Some(v.string()?),
+            Value(v) if verb.as_deref() == Some("lineage") && module.is_none() => {
+                module = Some(v.string()?)
+            }
             _ => return Err(arg.unexpected()),
         }
     }
@@ -131,6 +137,7 @@ pub fn parse_args() -> Result<Args, lexopt::Error> {
     Ok(Args {
         verb,
         file,
+        module,
         iterations,
         seed,
         at,

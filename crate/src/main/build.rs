@@ -174,3 +174,39 @@ pub fn export_file(
         }
     }
 }
+
+/// `meristem lineage FILE MODULE`: the module's ancestors step by step, the last step first
+/// (`pipeline::lineage_text`), as the studio's debugger lists them.
+pub fn print_lineage(args: &Args, source: &str, options: &BuildOptions) -> ExitCode {
+    let module = match args.module.as_deref().map(|m| m.trim().parse::<usize>()) {
+        Some(Ok(module)) => module,
+        Some(Err(_)) | None => {
+            eprintln!(
+                "meristem: lineage needs a module index from 0: meristem lineage FILE MODULE\n{}",
+                super::USAGE
+            );
+            return ExitCode::from(2);
+        }
+    };
+    let build = pipeline::build(
+        source,
+        &BuildOptions {
+            sketch: true,
+            ..options.clone()
+        },
+    );
+    print_diagnostics(&args.file, &build.located_diagnostics(source));
+    let (true, Some(model)) = (build.ok(), build.model.as_ref()) else {
+        return ExitCode::from(1);
+    };
+    match pipeline::lineage(model, &build.derived_with, module) {
+        Ok(rows) => {
+            print!("{}", pipeline::lineage_text(source, model, &rows));
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            print_diagnostics(&args.file, &locate_all(source, &[e]));
+            ExitCode::from(1)
+        }
+    }
+}

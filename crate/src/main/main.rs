@@ -6,6 +6,10 @@
 //!                                                   --time: each stage's time on stderr
 //! meristem derive FILE --growth                     what the growth attributes did, step by step (JSON)
 //! meristem check FILE                               diagnostics as FILE:LINE:COL: severity: message
+//! meristem lineage FILE MODULE [--iterations N | --at T] [--seed S]
+//!                                                   module MODULE of the derived string, its
+//!                                                   ancestor at each step back to the axiom and
+//!                                                   the production that made each
 //! meristem export FILE -o OUT.EXT [--format EXT] [--iterations N] [--seed S] [--sides N] [--smooth-all]
 //!                 [--edits EDITS.json]              the model as OUT.wrl, .glb, .pov, .obj (+ .mtl), .iv or .svg
 //!                 [--background C] [--line-width PX] [--size WxH] [--dpi D]
@@ -36,7 +40,7 @@ mod input;
 mod raster;
 
 use args::{export_target, parse_args};
-use build::{derive_or_check, export_file};
+use build::{derive_or_check, export_file, print_lineage};
 use frames::{at_as_picture, export_frames};
 use help::help;
 use import::{import_file, import_object, is_object};
@@ -51,6 +55,9 @@ pub const USAGE: &str = "usage:
       --at T: the plant at growth time T in steps (0 or more, a fraction allowed): a timed grammar
       (#terminal_age) at time T·#dt, any other at its whole steps; --time prints the stages' timings
   meristem check FILE
+  meristem lineage FILE MODULE [--iterations N | --at T] [--seed S]
+      module MODULE (from 0) of the derived string, the module it came from at each step back to
+      the axiom, and the production (LINE:COL and its text) that made each; the studio's debugger
   meristem export FILE -o OUT.EXT [--format EXT] [--iterations N | --at T] [--seed S] [--sides N] [--smooth-all]
                   [--edits EDITS.json] [--background C] [--line-width PX] [--size WxH] [--dpi D]
       EXT: wrl (VRML 2.0), glb (glTF 2.0), pov (POV-Ray 3.7), obj (OBJ, writes OUT.mtl too),
@@ -83,7 +90,7 @@ fn main() -> ExitCode {
     if args.verb == "help" {
         return help(&args.file);
     }
-    if !["derive", "check", "export", "import"].contains(&args.verb.as_str()) {
+    if !["derive", "check", "export", "import", "lineage"].contains(&args.verb.as_str()) {
         eprintln!("meristem: unknown verb '{}'\n{USAGE}", args.verb);
         return ExitCode::from(2);
     }
@@ -131,6 +138,9 @@ fn main() -> ExitCode {
     };
     if frames {
         return export_frames(&args, &source, options, &mut hooks);
+    }
+    if args.verb == "lineage" {
+        return print_lineage(&args, &source, &options);
     }
     match export_target {
         Some(target) => export_file(&args, &source, options, edits, target, &mut hooks),

@@ -9,6 +9,7 @@ use super::{growth_origin, growth_schedule, GrowthSchedule};
 use super::{parts, polygon, segment_lines, sphere, surfaces, tube};
 use super::{resolve_width_unit, ChainPart, MeshBuffers, MeshOptions, MeshParts, Part};
 use super::{MATERIAL_BARK, MATERIAL_LEAF, MATERIAL_PLAIN};
+use crate::maths;
 use crate::turtle::{Skeleton, Surface, SurfaceKind};
 use glam::DVec3;
 
@@ -173,7 +174,7 @@ impl<'a> Builder<'a> {
             unit,
             sides,
             ring: (0..sides)
-                .map(|k| (k as f64 / sides as f64 * std::f64::consts::TAU).sin_cos())
+                .map(|k| maths::sin_cos(k as f64 / sides as f64 * std::f64::consts::TAU))
                 .collect(),
             element_ranges: Vec::new(),
             element: parts::NO_CHAIN,
@@ -429,8 +430,8 @@ impl<'a> Builder<'a> {
         let first = self.mesh.vertex_count() as u32;
         for (p, n) in s.positions.iter().zip(&s.normals) {
             // Longitude and latitude of the normal.
-            let u = 0.5 + n.z.atan2(n.x) / std::f64::consts::TAU;
-            let v = n.y.clamp(-1.0, 1.0).acos() / std::f64::consts::PI;
+            let u = 0.5 + maths::atan2(n.z, n.x) / std::f64::consts::TAU;
+            let v = maths::acos(n.y.clamp(-1.0, 1.0)) / std::f64::consts::PI;
             self.vertex(*p, *n, c, [u as f32, v as f32]);
         }
         for tri in &s.triangles {

@@ -10,6 +10,7 @@
 //! is checked (every triangle counter-clockwise, their areas summing to the polygon's): for an
 //! outline that crosses itself the caller gets `None` and uses another method.
 
+use crate::maths;
 use glam::DVec2;
 
 /// `a` comes before `b` in the sweep: higher, or as high and further left.
@@ -221,7 +222,7 @@ fn faces(p: &[DVec2], diagonals: &[(u32, u32)]) -> Option<Vec<Vec<u32>>> {
             let c = p[i];
             crate::sort::sort_by(list, |x, y| {
                 let (dx, dy) = (p[x.0 as usize] - c, p[y.0 as usize] - c);
-                dx.y.atan2(dx.x).total_cmp(&dy.y.atan2(dy.x))
+                maths::atan2(dx.y, dx.x).total_cmp(&maths::atan2(dy.y, dy.x))
             });
         }
     }
@@ -395,7 +396,7 @@ mod tests {
         let figure_eight: Vec<DVec2> = (0..200)
             .map(|i| {
                 let t = std::f64::consts::TAU * i as f64 / 200.0;
-                DVec2::new(t.sin(), (2.0 * t).sin() * 0.5 + 0.01 * t)
+                DVec2::new(maths::sin(t), maths::sin(2.0 * t) * 0.5 + 0.01 * t)
             })
             .collect();
         let _ = triangulate(&figure_eight, 1e-12);

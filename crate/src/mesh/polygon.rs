@@ -316,6 +316,7 @@ impl Outline {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::maths;
 
     fn area(points: &[DVec3], t: &Triangulation) -> f64 {
         t.triangles
@@ -346,7 +347,7 @@ mod tests {
             .map(|i| {
                 let a = std::f64::consts::TAU * i as f64 / n as f64;
                 let r = if i % 2 == 0 { 1.0 } else { 0.8 };
-                DVec3::new(r * a.cos(), r * a.sin(), 0.0)
+                DVec3::new(r * maths::cos(a), r * maths::sin(a), 0.0)
             })
             .collect();
         let t = triangulate(&star);
@@ -431,7 +432,7 @@ mod tests {
                 } else {
                     1.0
                 };
-                DVec3::new(r * a.cos(), r * a.sin(), 0.0)
+                DVec3::new(r * maths::cos(a), r * maths::sin(a), 0.0)
             })
             .collect();
         let mut seed = 0x2545_f491_u64;
@@ -440,7 +441,7 @@ mod tests {
                 seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1);
                 let a = tau * i as f64 / n as f64;
                 let r = 0.5 + 0.5 * ((seed >> 11) as f64 / (1u64 << 53) as f64);
-                DVec3::new(r * a.cos(), r * a.sin(), 0.0)
+                DVec3::new(r * maths::cos(a), r * maths::sin(a), 0.0)
             })
             .collect();
         let teeth = (n - 2) / 4;

@@ -1,6 +1,7 @@
 //! Spheres (`@O`): a latitude–longitude mesh with one vertex at each pole, so no triangle is
 //! degenerate.
 
+use crate::maths;
 use glam::DVec3;
 
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -29,10 +30,10 @@ pub fn sphere(center: DVec3, radius: f64, segments: u32, rings: u32) -> SphereMe
     push(DVec3::Y, &mut mesh);
     for r in 1..rings {
         let theta = r as f64 / rings as f64 * std::f64::consts::PI;
-        let (sin_t, cos_t) = theta.sin_cos();
+        let (sin_t, cos_t) = maths::sin_cos(theta);
         for s in 0..segments {
             let phi = s as f64 / segments as f64 * std::f64::consts::TAU;
-            let (sin_p, cos_p) = phi.sin_cos();
+            let (sin_p, cos_p) = maths::sin_cos(phi);
             push(DVec3::new(sin_t * cos_p, cos_t, -sin_t * sin_p), &mut mesh);
         }
     }

@@ -6,6 +6,7 @@
 //! side (−L), the tip (index [`TIP`], at `scale` along H), and ten points back down the left side
 //! (+L). They run counter-clockwise seen from U, so the triangulated front faces U (H × L = U).
 
+use crate::maths;
 use glam::DVec3;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -19,12 +20,12 @@ pub const TIP: usize = 11;
 
 /// Half width of the outline at `t` (0 at the base, 1 at the tip) for a surface of length 1.
 fn half_width(kind: SurfaceKind, t: f64) -> f64 {
-    let s = (std::f64::consts::PI * t).sin().max(0.0);
+    let s = maths::sin(std::f64::consts::PI * t).max(0.0);
     match kind {
         // Lanceolate: widest below the middle, narrow tip.
         SurfaceKind::Leaf => 0.19 * s * (1.0 - 0.35 * t) * 1.25,
         // Obovate: widest beyond the middle, round end.
-        SurfaceKind::Petal => 0.32 * s.powf(0.6) * (0.7 + 0.5 * t),
+        SurfaceKind::Petal => 0.32 * maths::powf(s, 0.6) * (0.7 + 0.5 * t),
     }
 }
 

@@ -2,6 +2,7 @@
 
 use super::chains::chains;
 use super::*;
+use crate::maths;
 use crate::turtle::Skeleton;
 use crate::turtle::{Polygon, Segment, Sphere};
 use glam::DVec3;
@@ -249,8 +250,8 @@ fn a_wide_tube_at_a_bend_of_short_segments_breaks_instead_of_turning_inside_out(
     // Width 40 at unit 0.1 is a radius of 2; a bend of 80° tilts the joint ring by 40°, so
     // it reaches 2 × sin 40° ≈ 1.29 along each segment: past the middle of a 0.3-long one.
     let turned = DVec3::new(
-        -(80f64.to_radians().sin()),
-        1.0 + 80f64.to_radians().cos(),
+        -maths::sin(80f64.to_radians()),
+        1.0 + maths::cos(80f64.to_radians()),
         0.0,
     );
     let mut segments = vec![

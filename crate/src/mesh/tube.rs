@@ -6,6 +6,7 @@
 use super::build::Builder;
 use super::grow::{append, push};
 use super::{curve, MATERIAL_BARK};
+use crate::maths;
 use crate::turtle::{Segment, Skeleton};
 use glam::DVec3;
 
@@ -327,7 +328,7 @@ impl Builder<'_> {
         let mut rings = [0u32; DOME_STEPS];
         for (step, first_of_step) in rings.iter_mut().enumerate() {
             let angle = std::f64::consts::FRAC_PI_2 * step as f64 / DOME_STEPS as f64;
-            let (sin, cos) = angle.sin_cos();
+            let (sin, cos) = maths::sin_cos(angle);
             let first = self.mesh.vertex_count() as u32;
             for (j, (offset, out)) in offsets.iter().zip(outs.iter()).enumerate() {
                 let (u, v) = (j as f32 / n as f32, 0.5 + 0.5 * sin as f32);

@@ -270,6 +270,7 @@ impl GrowthAttributes {
 #[cfg(test)]
 mod tests {
     use super::DEFAULT_PALETTE;
+    use crate::maths;
 
     /// sRGB (0..=255) of a linear colour, as the studio and the writers show it.
     fn srgb(c: [f32; 3]) -> [f64; 3] {
@@ -279,7 +280,7 @@ mod tests {
                 * if v <= 0.003_130_8 {
                     12.92 * v
                 } else {
-                    1.055 * v.powf(1.0 / 2.4) - 0.055
+                    1.055 * maths::powf(v, 1.0 / 2.4) - 0.055
                 }
         })
     }

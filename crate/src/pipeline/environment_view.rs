@@ -6,6 +6,7 @@
 
 use crate::environment::obstacle::Solid;
 use crate::environment::{Field, Responder};
+use crate::maths;
 use crate::model::ProgramSpec;
 use crate::vocabulary::EnvironmentProgram;
 use std::fmt::Write;
@@ -152,7 +153,7 @@ fn coarsened(field: Field, most: usize) -> Field {
     if voxels <= most || voxels == 0 {
         return field;
     }
-    let mut f = ((voxels as f64 / most as f64).cbrt().ceil() as usize).max(2);
+    let mut f = (maths::cbrt(voxels as f64 / most as f64).ceil() as usize).max(2);
     let dims_of = |f: usize| [nx.div_ceil(f), ny.div_ceil(f), nz.div_ceil(f)];
     while dims_of(f).iter().product::<usize>() > most {
         f += 1;

@@ -52,6 +52,12 @@ impl<'b> Inspector<'b> {
         (total <= max_modules).then_some(Ok(traced))
     }
 
+    /// The lineage of module `module` of the derived string, the last step first, back to the
+    /// axiom ([`super::lineage()`]).
+    pub fn lineage(&self, module: usize) -> Result<Vec<super::LineageRow>, Diagnostic> {
+        super::lineage(self.model, &self.options, module)
+    }
+
     /// The text of modules `start .. start + count` of the string the last step read (clamped).
     pub fn previous_texts(&self, start: usize, count: usize) -> Vec<String> {
         texts(self.model, &self.derivation.previous, start, count)

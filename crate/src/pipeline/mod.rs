@@ -13,13 +13,16 @@
 //! read around each stage, a callback told each stage as it starts and each derivation step as it
 //! ends).
 //!
-//! The files: `build.rs` ([`build()`], [`Build`], [`BuildOptions`]), `hooks.rs` ([`Hooks`],
+//! The files: `breakpoints.rs` (where a derivation played step by step pauses: a production's
+//! first firing, a watch's first true module), `build.rs` ([`build()`], [`Build`], [`BuildOptions`]), `hooks.rs` ([`Hooks`],
 //! [`Stage`], [`Progress`], [`StageTimings`]), `observer.rs` (growth and the turtle following a
 //! derivation), `step_on.rs` ([`build_on`]: a build that continues an earlier one's derivation),
-//! `plant.rs`, `inspector.rs`, `editor.rs`, `export.rs`, `surface_preview.rs` ([`surface_preview`]: one
+//! `plant.rs`, `inspector.rs`, `lineage.rs` ([`lineage()`]: a module's
+//! ancestors step by step back to the axiom, and the productions that made them), `editor.rs`, `export.rs`, `surface_preview.rs` ([`surface_preview`]: one
 //! declared surface as the studio's surface editor shows it: meshed, its control points with the
 //! text of each, its frame, and a library shape's text written out as `#patch` lines).
 
+mod breakpoints;
 mod build;
 mod editor;
 #[cfg(feature = "environment")]
@@ -31,6 +34,7 @@ mod environment_view;
 mod export;
 mod hooks;
 mod inspector;
+mod lineage;
 mod observer;
 mod plant;
 #[cfg(feature = "environment")]
@@ -39,6 +43,7 @@ mod step_on;
 #[cfg(feature = "surfaces")]
 mod surface_preview;
 
+pub use breakpoints::{first_firing, first_watched, Pause};
 pub use build::{build, build_with, Build, BuildOptions};
 pub use editor::{BranchInfo, PlantEditor};
 #[cfg(feature = "environment")]
@@ -46,6 +51,7 @@ pub use environment_view::{EnvironmentView, FieldView, MAX_VIEW_POINTS, MAX_VIEW
 pub use export::{export, ExportError, ExportOptions, Exported};
 pub use hooks::{Hooks, Progress, Stage, StageTimings};
 pub use inspector::{Explained, Inspector};
+pub use lineage::{lineage, lineage_text, production_place, LineageRow};
 pub use plant::Plant;
 pub use step_on::{build_on, why_not_continued};
 #[cfg(feature = "surfaces")]

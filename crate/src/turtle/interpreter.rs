@@ -5,6 +5,7 @@ use super::skeleton::{
 };
 use super::state::TurtleState;
 use crate::growth::{Adjustments, Heights, Third};
+use crate::maths;
 use crate::model::{LString, Model, Settings};
 use crate::vocabulary::{Command, ModuleInfo};
 use glam::DVec3;
@@ -349,14 +350,14 @@ impl<'a, C: Canvas> Interpreter<'a, C> {
         }
     }
 
-    /// `a.sin_cos()`, remembered for the last two angles.
+    /// `maths::sin_cos(a)`, remembered for the last two angles.
     #[inline]
     fn sin_cos(&mut self, a: f64) -> (f64, f64) {
         let bits = a.to_bits();
         if let Some(&(_, turn)) = self.turns.iter().find(|(b, _)| *b == bits) {
             return turn;
         }
-        let turn = a.sin_cos();
+        let turn = maths::sin_cos(a);
         self.turns = [self.turns[1], (bits, turn)];
         turn
     }

@@ -14,6 +14,7 @@ use super::skeleton::{
 };
 use super::state::TurtleState;
 use crate::growth::Adjustments;
+use crate::maths;
 use crate::model::{LString, Model};
 use crate::vocabulary::Command;
 use glam::DVec3;
@@ -467,7 +468,7 @@ fn plain_loop<const PARAMETRIC: bool>(
                 }
             }
             Op::TurnAround => {
-                let (s, c) = std::f64::consts::PI.sin_cos();
+                let (s, c) = maths::sin_cos(std::f64::consts::PI);
                 yaw(&mut t, s, c);
             }
             Op::RollToVertical => {
@@ -554,7 +555,7 @@ fn plain_loop<const PARAMETRIC: bool>(
 /// the interpreter computes them.
 fn turn_of(sign: f64, angle: f64) -> (f64, f64) {
     let angle = if angle.is_nan() { 0.0 } else { angle };
-    (sign * angle.to_radians()).sin_cos()
+    maths::sin_cos(sign * angle.to_radians())
 }
 
 /// Rotation about U: H turns towards L.

@@ -1,5 +1,6 @@
 //! The turtle's state and its rotations (docs/LANGUAGE.md, "Turtle").
 
+use crate::maths;
 use crate::model::{Settings, ORGAN_COLOR};
 use glam::DVec3;
 
@@ -47,7 +48,7 @@ impl TurtleState {
             anchor: None,
         };
         if settings.heading != 0.0 {
-            start.yaw(settings.heading.to_radians().sin_cos());
+            start.yaw(maths::sin_cos(settings.heading.to_radians()));
         }
         start
     }

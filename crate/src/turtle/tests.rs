@@ -1,6 +1,7 @@
 //! The turtle against hand computations.
 
 use super::*;
+use crate::maths;
 use crate::{derive, model, syntax};
 use glam::DVec3;
 
@@ -99,7 +100,7 @@ fn fig_1_37a_row_of_trees_ends_on_its_baseline() {
     assert!(close(s.end, DVec3::new(0.0, 1.0, 0.0)), "{}", s.end);
     let s = run(&grammar(86.0));
     let h = (0.3f64 * 0.7).sqrt();
-    let stretch = (1.0 + 2.0 * h * 86f64.to_radians().cos()).powi(5);
+    let stretch = (1.0 + 2.0 * h * maths::cos(86f64.to_radians())).powi(5);
     assert!(close(s.end, DVec3::new(0.0, stretch, 0.0)), "{}", s.end);
 }
 
@@ -131,13 +132,19 @@ fn tropism_bends_the_heading_towards_t_by_e_times_sin() {
     let s = run("#tropism 1 0 0 0.5\naxiom: FF");
     let second = &s.segments[1];
     let h = (second.end - second.start).normalize();
-    assert!(close(h, DVec3::new(0.5f64.sin(), 0.5f64.cos(), 0.0)), "{h}");
+    assert!(
+        close(h, DVec3::new(maths::sin(0.5), maths::cos(0.5), 0.0)),
+        "{h}"
+    );
     // Again: |H × T| is now cos 0.5, so the next bend is 0.5·cos 0.5.
     let s = run("#tropism 1 0 0 0.5\naxiom: FFF");
     let third = &s.segments[2];
     let h = (third.end - third.start).normalize();
-    let angle = 0.5 + 0.5 * 0.5f64.cos();
-    assert!(close(h, DVec3::new(angle.sin(), angle.cos(), 0.0)), "{h}");
+    let angle = 0.5 + 0.5 * maths::cos(0.5);
+    assert!(
+        close(h, DVec3::new(maths::sin(angle), maths::cos(angle), 0.0)),
+        "{h}"
+    );
     // A heading along T does not bend; @Ts(0) turns tropism off for a branch.
     let s = run("#tropism 0 1 0 0.9\naxiom: FF");
     assert!(close(s.end, DVec3::new(0.0, 2.0, 0.0)));

@@ -102,6 +102,56 @@ impl PlantInspector {
         serde_json::to_string(&steps).ok()
     }
 
+    #[cfg(feature = "studio-extras")]
+    /// The lineage of module `module` of the derived string (`pipeline::lineage`), as JSON: `{rows:
+    /// [{step, module, text, production?, time?}]}`, the last step first, back to the axiom, or
+    /// `{error}` with the message (no such module, or the derivation step by step over its memory
+    /// budget).
+    pub fn lineage(&self, module: usize) -> String {
+        #[derive(serde::Serialize)]
+        #[serde(rename_all = "camelCase")]
+        enum Answer {
+            Rows(Vec<pipeline::LineageRow>),
+            Error(String),
+        }
+        let answer = match self.build.inspector().map(|i| i.lineage(module)) {
+            Some(Ok(rows)) => Answer::Rows(rows),
+            Some(Err(e)) => Answer::Error(e.message),
+            None => Answer::Error("the grammar did not build".to_string()),
+        };
+        serde_json::to_string(&answer).unwrap_or_else(|_| "{}".into())
+    }
+
+    #[cfg(feature = "studio-extras")]
+    /// Where Play pauses for a breakpoint (`pipeline::first_firing`, `first_watched`): with `watch`
+    /// empty, at the first firing of production `production`; else at the first step where the
+    /// watch (`A(x) : x > 3`, read with the grammar `source`) holds for a module. JSON `{pause:
+    /// {step, count, module}}`, `{}` when it never does, `{error}` with the message.
+    pub fn breakpoint(&self, source: &str, production: u32, watch: &str) -> String {
+        #[derive(serde::Serialize)]
+        #[serde(rename_all = "camelCase")]
+        enum Answer {
+            Pause(pipeline::Pause),
+            Never {},
+            Error(String),
+        }
+        let Some(model) = self.build.model.as_ref() else {
+            return r#"{"error":"the grammar did not build"}"#.into();
+        };
+        let options = &self.build.derived_with;
+        let found = if watch.trim().is_empty() {
+            pipeline::first_firing(model, options, production)
+        } else {
+            pipeline::first_watched(source, model, options, watch)
+        };
+        let answer = match found {
+            Ok(Some(pause)) => Answer::Pause(pause),
+            Ok(None) => Answer::Never {},
+            Err(e) => Answer::Error(e.message),
+        };
+        serde_json::to_string(&answer).unwrap_or_else(|_| "{}".into())
+    }
+
     /// The text of modules `start .. start + count` of the string the last step read (JSON array).
     #[wasm_bindgen(js_name = previousTexts)]
     pub fn previous_texts(&self, start: usize, count: usize) -> String {

@@ -1,6 +1,6 @@
 // The page's side of the build worker: one request at a time, the newest waiting request only,
 // stale answers never delivered, and a worker stuck on an outdated build replaced.
-import { type BuildOptions, type BuildProgress, type DerivationStep, type Explanation, type GpuArrays, type LastStepLinks, type MatchReport, type PlantBuild, type PlantInspector, type PlantSketch } from '../core';
+import { type BuildOptions, type BuildProgress, type DerivationStep, type Explanation, type GpuArrays, type LastStepLinks, type BreakpointAnswer, type Lineage, type MatchReport, type PlantBuild, type PlantInspector, type PlantSketch } from '../core';
 import type { BuildResponse, InspectAnswer, InspectQuestion, WorkerRequest, WorkerResponse } from './worker-protocol';
 import { startBuildWorker, takeEarlyBuildWorker } from './build-worker-start';
 
@@ -234,7 +234,7 @@ export class BuildClient {
    * abandoned build) the current one builds it again first, once, from its text and options, so a
    * plant still on the page goes on answering; the fallback only if the worker goes while asked.
    */
-  ask<T extends InspectAnswer>(kept: KeptBuild, question: InspectQuestion, args: number[], fallback: T): Promise<T> {
+  ask<T extends InspectAnswer>(kept: KeptBuild, question: InspectQuestion, args: (number | string)[], fallback: T): Promise<T> {
     const worker = this.ensureWorker();
     if (kept.worker !== worker) {
       kept.worker = worker;
@@ -335,7 +335,7 @@ class RemoteInspector implements PlantInspector {
     private readonly kept: KeptBuild,
   ) {}
 
-  private ask<T extends InspectAnswer>(question: InspectQuestion, args: number[], fallback: T): Promise<T> {
+  private ask<T extends InspectAnswer>(question: InspectQuestion, args: (number | string)[], fallback: T): Promise<T> {
     return this.freed ? Promise.resolve(fallback) : this.client.ask<T>(this.kept, question, args, fallback);
   }
 
@@ -361,6 +361,14 @@ class RemoteInspector implements PlantInspector {
 
   sequence(maxModules: number): Promise<DerivationStep[] | null> {
     return this.ask<DerivationStep[] | null>('sequence', [maxModules], null);
+  }
+
+  lineage(module: number): Promise<Lineage> {
+    return this.ask<Lineage>('lineage', [module], { error: '' });
+  }
+
+  breakpoint(source: string, production: number, watch: string): Promise<BreakpointAnswer> {
+    return this.ask<BreakpointAnswer>('breakpoint', [source, production, watch], { error: '' });
   }
 
   previousTexts(start: number, count: number): Promise<string[]> {

@@ -28,7 +28,7 @@ export type WorkerRequest =
    */
   | { kind: 'keep'; build: number; source: string; options: BuildOptions }
   /** Ask kept build `build` a question; `id` ties the answer to it. */
-  | { kind: 'inspect'; id: number; build: number; question: InspectQuestion; args: number[] }
+  | { kind: 'inspect'; id: number; build: number; question: InspectQuestion; args: (number | string)[] }
   /** Release kept build `build`. */
   | { kind: 'free'; build: number }
   /**

@@ -50,7 +50,7 @@ const kept = new Map<number, Kept>();
  * loads the studio core; a build the first plant's core kept is built again with it (the same
  * text and options give the same derivation), and later builds are made with it.
  */
-const STUDIO_QUESTIONS: ReadonlySet<InspectQuestion> = new Set<InspectQuestion>(['explain', 'explainModule', 'matchReport', 'sequence']);
+const STUDIO_QUESTIONS: ReadonlySet<InspectQuestion> = new Set<InspectQuestion>(['explain', 'explainModule', 'matchReport', 'sequence', 'lineage', 'breakpoint']);
 
 function reply(response: WorkerResponse, transfer: Transferable[] = []): void {
   postMessage(response, { transfer });
@@ -107,14 +107,16 @@ const UNANSWERED: { [Q in InspectQuestion]: Awaited<ReturnType<PlantInspector[Q]
   derivedHash: '',
   matchReport: null,
   sequence: null,
+  lineage: { error: '' },
+  breakpoint: { error: '' },
   previousTexts: [],
   lastStep: { parents: new Uint32Array(0), previousCount: 0 },
 };
 
 /** Asks `inspector` the question by its method's name. */
-function answer(inspector: PlantInspector | undefined, question: InspectQuestion, args: number[]): Promise<InspectAnswer> {
+function answer(inspector: PlantInspector | undefined, question: InspectQuestion, args: (number | string)[]): Promise<InspectAnswer> {
   if (!inspector || !(question in UNANSWERED)) return Promise.resolve(UNANSWERED[question] ?? null);
-  const method = inspector[question] as (...args: number[]) => Promise<InspectAnswer>;
+  const method = inspector[question] as (...args: (number | string)[]) => Promise<InspectAnswer>;
   return method.apply(inspector, args);
 }
 

@@ -27,7 +27,9 @@ import {
   type EnvironmentData,
   type Explanation,
   type GpuArrays,
+  type BreakpointAnswer,
   type LastStepLinks,
+  type Lineage,
   type MatchReport,
   type MeshBuffers,
   type PlantBuild,
@@ -349,7 +351,7 @@ function toExplanation(explained: WasmExplanation | undefined): Explanation | nu
 }
 
 /** The questions only the studio core's inspector answers (feature `studio-extras`). */
-type StudioQuestions = Pick<StudioPlantInspector, 'explain' | 'explainModule' | 'matchReport' | 'sequence'>;
+type StudioQuestions = Pick<StudioPlantInspector, 'explain' | 'explainModule' | 'matchReport' | 'sequence' | 'lineage' | 'breakpoint'>;
 
 /** An inspector of either core module: the first plant's has none of {@link StudioQuestions}. */
 type AnyWasmInspector = WasmPlantInspector & Partial<StudioQuestions>;
@@ -409,6 +411,18 @@ class LiveInspector implements PlantInspector {
     const core = this.studio();
     const json = guarded(() => core.sequence?.(maxModules));
     return Promise.resolve(json ? (JSON.parse(json) as DerivationStep[]) : null);
+  }
+
+  lineage(module: number): Promise<Lineage> {
+    const core = this.studio();
+    const json = guarded(() => core.lineage?.(module));
+    return Promise.resolve(json ? (JSON.parse(json) as Lineage) : { error: 'no lineage' });
+  }
+
+  breakpoint(source: string, production: number, watch: string): Promise<BreakpointAnswer> {
+    const core = this.studio();
+    const json = guarded(() => core.breakpoint?.(source, production, watch));
+    return Promise.resolve(json ? (JSON.parse(json) as BreakpointAnswer) : { error: 'no answer' });
   }
 
   previousTexts(start: number, count: number): Promise<string[]> {

@@ -280,6 +280,32 @@ export interface DerivationStep {
   time?: number;
 }
 
+/** One step of a module's lineage (the debugger): its ancestor at that step, and what made it. */
+export interface LineageRow {
+  /** The step (0: the axiom). */
+  step: number;
+  /** The ancestor's index in that step's string, and its text. */
+  module: number;
+  text: string;
+  /** The production that wrote it in that step (absent: copied, or the axiom's). */
+  production?: number;
+  /** A timed grammar's growth time of that step, in steps. */
+  time?: number;
+  /** The modules of the derived string that descend from it: `first` to `last`. */
+  first: number;
+  last: number;
+}
+
+/** A module's lineage, the last step first, back to the axiom; or why there is none. */
+export type Lineage = { rows: LineageRow[] } | { error: string };
+
+/**
+ * Where Play pauses for a breakpoint: the step, how many times its production fired there (or
+ * for how many modules its watch held), and the first such module of that step's string; `never`
+ * when it does not pause in the steps derived.
+ */
+export type BreakpointAnswer = { pause: { step: number; count: number; module: number } } | { never: object } | { error: string };
+
 /** The last step's links: for each module of the derived string, the module of the string before. */
 export interface LastStepLinks {
   parents: Uint32Array;
@@ -307,6 +333,13 @@ export interface PlantInspector {
   matchReport(production: number, module: number): Promise<MatchReport | null>;
   /** Every step of the derivation when all their strings hold `maxModules` modules or fewer together; else null. */
   sequence(maxModules: number): Promise<DerivationStep[] | null>;
+  /** The lineage of one module of the derived string (derived again, step by step). */
+  lineage(module: number): Promise<Lineage>;
+  /**
+   * Where a breakpoint pauses: with `watch` empty, at the first firing of production `production`;
+   * else at the first step where the watch (`A(x) : x > 3`, read with the grammar `source`) holds.
+   */
+  breakpoint(source: string, production: number, watch: string): Promise<BreakpointAnswer>;
   /** The text of modules `start .. start + count` of the string the last step read. */
   previousTexts(start: number, count: number): Promise<string[]>;
   /** Where each module of the derived string comes from in the string before. */

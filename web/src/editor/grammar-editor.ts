@@ -94,7 +94,7 @@ export function createGrammarEditor(options: GrammarEditorOptions, selection?: {
       EditorView.lineWrapping,
       EditorView.contentAttributes.of({ 'aria-label': 'L-system grammar' }),
       markedProduction,
-      options.openSurface ? surfaceGutter(options.openSurface) : [],
+      options.openEditor ? surfaceGutter(options.openEditor) : [],
       EditorView.updateListener.of((update) => {
         if (update.docChanged || update.selectionSet) options.onCursor?.(update.state.selection.main.head);
       }),

@@ -24,9 +24,21 @@ export interface GrammarEditorOptions {
   onCursor?: (pos: number) => void;
   /** Opens the language reference at a row (`referenceAnchor`): hover docs link to it. */
   openReference?: (anchor: string) => void;
-  /** Opens the surface editor on surface X (the gutter's marker of a `#surface X`/`#patch X` line, Alt+B on it). */
-  openSurface?: (letter: string) => void;
+  /**
+   * Opens the editor of what a line declares (its gutter marker, Alt+B on it): the surface editor
+   * on surface X of a `#surface X`/`#patch X` line, the curve editor on a `#curve`/`#table` function.
+   */
+  openEditor?: OpenEditor;
 }
+
+/** What the text asks to edit: a surface by its letter, or a curve function by its name. */
+export interface EditorTarget {
+  what: 'surface' | 'curve';
+  name: string;
+}
+
+/** Opens the surface editor on a surface's letter, or the curve editor on a curve function's name. */
+export type OpenEditor = (target: EditorTarget) => void;
 
 /**
  * How a change enters the undo history: as one undo step of its own (true), not at all (false: a
@@ -88,7 +100,7 @@ export interface EditorModule {
  * the first plant); who hears of changes and of the cursor says so on the editor made
  * ({@link LazyGrammarEditor.onChange}), so that it can be made before them.
  */
-export type LazyGrammarEditorOptions = Omit<GrammarEditorOptions, 'vocabulary' | 'onChange' | 'onCursor' | 'openSurface'> & { vocabulary: () => Promise<Vocabulary> };
+export type LazyGrammarEditorOptions = Omit<GrammarEditorOptions, 'vocabulary' | 'onChange' | 'onCursor' | 'openEditor'> & { vocabulary: () => Promise<Vocabulary> };
 
 /** The grammar text on the page, which tells its listeners of every change and cursor move. */
 export interface LazyGrammarEditor extends GrammarEditor {
@@ -96,8 +108,8 @@ export interface LazyGrammarEditor extends GrammarEditor {
   onChange(listener: (text: string) => void): void;
   /** Calls `listener` with the cursor's position (UTF-16) whenever it moves or the text changes. */
   onCursor(listener: (pos: number) => void): void;
-  /** Calls `listener` with a surface's letter when the user asks to edit it from the text (the gutter, Alt+B). */
-  onOpenSurface(listener: (letter: string) => void): void;
+  /** Calls `listener` with what the user asks to edit from the text (the gutter, Alt+B): a surface's letter or a curve's name. */
+  onOpenEditor(listener: OpenEditor): void;
 }
 
 /**
@@ -112,8 +124,8 @@ export function createLazyGrammarEditor(options: LazyGrammarEditorOptions, load:
   const cursorListeners: ((pos: number) => void)[] = [];
   const onChange = (text: string) => changeListeners.forEach((listener) => listener(text));
   const onCursor = (pos: number) => cursorListeners.forEach((listener) => listener(pos));
-  const surfaceListeners: ((letter: string) => void)[] = [];
-  const openSurface = (letter: string) => surfaceListeners.forEach((listener) => listener(letter));
+  const editorListeners: OpenEditor[] = [];
+  const openEditor: OpenEditor = (target) => editorListeners.forEach((listener) => listener(target));
   const area = document.createElement('textarea');
   area.className = 'grammar-placeholder';
   area.dataset.testid = 'grammar-placeholder';
@@ -137,7 +149,7 @@ export function createLazyGrammarEditor(options: LazyGrammarEditorOptions, load:
       const [start, end] = [area.selectionStart, area.selectionEnd];
       const selection = area.selectionDirection === 'backward' ? { anchor: end, head: start } : { anchor: start, head: end };
       const clamp = (n: number) => Math.min(n, area.value.length);
-      full = module.createGrammarEditor({ ...options, onChange, onCursor, openSurface, vocabulary, doc: area.value }, { anchor: clamp(selection.anchor), head: clamp(selection.head) });
+      full = module.createGrammarEditor({ ...options, onChange, onCursor, openEditor, vocabulary, doc: area.value }, { anchor: clamp(selection.anchor), head: clamp(selection.head) });
       area.remove();
       if (hadFocus) full.focus();
     }, reportLoadError));
@@ -146,7 +158,7 @@ export function createLazyGrammarEditor(options: LazyGrammarEditorOptions, load:
   return {
     onChange: (listener) => void changeListeners.push(listener),
     onCursor: (listener) => void cursorListeners.push(listener),
-    onOpenSurface: (listener) => void surfaceListeners.push(listener),
+    onOpenEditor: (listener) => void editorListeners.push(listener),
     text: () => full?.text() ?? area.value,
     cursor: () => full?.cursor() ?? area.selectionStart,
     focus: () => (full ? full.focus() : area.focus()),

@@ -1,51 +1,64 @@
-// The grammar editor's way into the surface editor: a marker in the gutter of every line that
-// declares a surface (`#surface X …`, `#patch X …`), which opens the editor on surface X when
-// pressed, and Alt+B (B for Bézier) on such a line, from the keyboard.
+// The grammar editor's way into the editors of what a line declares: a marker in the gutter of
+// every line that declares a surface (`#surface X …`, `#patch X …`) or a curve function (`#curve
+// NAME …`, `#table NAME …`), which opens the surface editor on X or the curve editor on NAME when
+// pressed, and Alt+B (B for Bézier, and B-spline) on such a line, from the keyboard.
 import { gutter, GutterMarker, keymap, type EditorView } from '@codemirror/view';
 import { RangeSet, type Extension, type Text } from '@codemirror/state';
-import { surfaceLetterOf } from './surface-lines';
+import type { EditorTarget, OpenEditor } from './grammar-text';
+import { curveNameOf, surfaceLetterOf } from './surface-lines';
 
-/** The key that opens the surface editor on the cursor's line. */
+/** The key that opens the editor of the cursor's line. */
 export const SURFACE_KEY = 'Alt-b';
 
-class SurfaceMarker extends GutterMarker {
-  constructor(readonly letter: string) {
+class EditorTargetMarker extends GutterMarker {
+  constructor(readonly target: EditorTarget) {
     super();
   }
 
   override eq(other: GutterMarker): boolean {
-    return other instanceof SurfaceMarker && other.letter === this.letter;
+    return other instanceof EditorTargetMarker && other.target.what === this.target.what && other.target.name === this.target.name;
   }
 
   override toDOM(): Node {
+    const { what, name } = this.target;
     const marker = document.createElement('span');
-    marker.className = 'cm-surface-marker';
-    marker.textContent = '◆';
-    marker.title = `Edit the surface ~${this.letter} (Alt+B on this line)`;
-    marker.dataset.testid = `surface-marker-${this.letter}`;
+    marker.className = `cm-${what}-marker`;
+    marker.textContent = what === 'surface' ? '◆' : '∿';
+    marker.title = what === 'surface' ? `Edit the surface ~${name} (Alt+B on this line)` : `Edit the curve ${name} (Alt+B on this line)`;
+    marker.dataset.testid = `${what}-marker-${name}`;
     return marker;
   }
 }
 
-/** The markers of the lines of `doc` that declare surfaces. */
+/** What the line `text` declares that an editor edits, or null. */
+function editableOf(text: string): EditorTarget | null {
+  if (!text.includes('#')) return null;
+  const letter = surfaceLetterOf(text);
+  if (letter !== null) return { what: 'surface', name: letter };
+  const name = curveNameOf(text);
+  return name === null ? null : { what: 'curve', name };
+}
+
+/** The markers of the lines of `doc` that declare surfaces or curves. */
 function markers(doc: Text): RangeSet<GutterMarker> {
   const ranges = [];
   for (let n = 1; n <= doc.lines; n++) {
     const line = doc.line(n);
-    if (!line.text.includes('#')) continue;
-    const letter = surfaceLetterOf(line.text);
-    if (letter !== null) ranges.push(new SurfaceMarker(letter).range(line.from));
+    const target = editableOf(line.text);
+    if (target) ranges.push(new EditorTargetMarker(target).range(line.from));
   }
   return RangeSet.of(ranges);
 }
 
-/** The surface letter of the line at `pos`, or null. */
-function letterAt(view: EditorView, pos: number): string | null {
-  return surfaceLetterOf(view.state.doc.lineAt(pos).text);
+/** Opens the editor of the line at `pos`; false when it declares nothing an editor edits. */
+function openAt(view: EditorView, pos: number, open: OpenEditor): boolean {
+  const target = editableOf(view.state.doc.lineAt(pos).text);
+  if (target) open(target);
+  return target !== null;
 }
 
-/** The gutter's markers and the key, which call `open` with a surface's letter. */
-export function surfaceGutter(open: (letter: string) => void): Extension {
+/** The gutter's markers and the key, which call `open` with a surface's letter or a curve's name. */
+export function surfaceGutter(open: OpenEditor): Extension {
   let cached: { doc: Text; set: RangeSet<GutterMarker> } | undefined;
   return [
     gutter({
@@ -55,24 +68,9 @@ export function surfaceGutter(open: (letter: string) => void): Extension {
         return cached.set;
       },
       domEventHandlers: {
-        mousedown: (view, line) => {
-          const letter = letterAt(view, line.from);
-          if (letter === null) return false;
-          open(letter);
-          return true;
-        },
+        mousedown: (view, line) => openAt(view, line.from, open),
       },
     }),
-    keymap.of([
-      {
-        key: SURFACE_KEY,
-        run: (view) => {
-          const letter = letterAt(view, view.state.selection.main.head);
-          if (letter === null) return false;
-          open(letter);
-          return true;
-        },
-      },
-    ]),
+    keymap.of([{ key: SURFACE_KEY, run: (view) => openAt(view, view.state.selection.main.head, open) }]),
   ];
 }

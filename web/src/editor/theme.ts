@@ -20,7 +20,7 @@ export const studioEditorTheme = EditorView.theme({
     color: 'var(--muted)',
     borderRight: '1px solid var(--border)',
   },
-  '.cm-surface-marker': { color: 'var(--accent)', cursor: 'pointer', padding: '0 2px' },
+  '.cm-surface-marker, .cm-curve-marker': { color: 'var(--accent)', cursor: 'pointer', padding: '0 2px' },
   '.cm-activeLine, .cm-activeLineGutter': { backgroundColor: 'var(--editor-active-line)' },
   '&.cm-focused .cm-selectionBackground, .cm-selectionBackground, ::selection': {
     backgroundColor: 'var(--editor-selection)',

@@ -55,9 +55,32 @@ export type Decoded = { ok: true; state: SharedState } | { ok: false; error: str
 
 /** Encodes a state as a URL fragment (with the leading `#`). */
 export async function encodeState(state: SharedState): Promise<string> {
-  const json = JSON.stringify({ v: SHARE_VERSION, ...state });
-  const deflated = await pipe(new TextEncoder().encode(json), new CompressionStream('deflate-raw'), Infinity);
-  return `#${FRAGMENT_KEY}=${SHARE_VERSION}.${toBase64Url(deflated)}`;
+  return `#${FRAGMENT_KEY}=${SHARE_VERSION}.${await packText(JSON.stringify({ v: SHARE_VERSION, ...state }))}`;
+}
+
+/** Text as a link carries it: deflate-raw, then base64url (share links, assignments, submissions). */
+export async function packText(text: string): Promise<string> {
+  return toBase64Url(await pipe(new TextEncoder().encode(text), new CompressionStream('deflate-raw'), Infinity));
+}
+
+/**
+ * The text {@link packText} packed, or why not (in words that follow "the link …"); never throws.
+ * Inflates to at most {@link MAX_INFLATED} bytes.
+ */
+export async function unpackText(packed: string): Promise<{ ok: true; text: string } | { ok: false; error: string }> {
+  const bytes = fromBase64Url(packed);
+  if (!bytes) return { ok: false, error: 'the link is not valid base64url' };
+  let inflated: Uint8Array;
+  try {
+    inflated = await pipe(bytes, new DecompressionStream('deflate-raw'), MAX_INFLATED);
+  } catch (error) {
+    return { ok: false, error: error instanceof TooLarge ? `the link inflates to more than ${MAX_INFLATED / 1024} KiB` : 'the link is not valid compressed data' };
+  }
+  try {
+    return { ok: true, text: new TextDecoder('utf-8', { fatal: true }).decode(inflated) };
+  } catch {
+    return { ok: false, error: 'the link does not hold valid UTF-8 text' };
+  }
 }
 
 /** Decodes a fragment (with or without `#`); never throws. */
@@ -70,17 +93,11 @@ export async function decodeState(fragment: string): Promise<Decoded> {
   const version = dot > 0 ? Number(body.slice(0, dot)) : NaN;
   if (!Number.isInteger(version) || version < 1) return fail('the link has no format version');
   if (version > SHARE_VERSION) return fail(`the link was made by a newer Meristem (format ${version}); this one reads up to ${SHARE_VERSION}`);
-  const bytes = fromBase64Url(body.slice(dot + 1));
-  if (!bytes) return fail('the link is not valid base64url');
-  let inflated: Uint8Array;
-  try {
-    inflated = await pipe(bytes, new DecompressionStream('deflate-raw'), MAX_INFLATED);
-  } catch (error) {
-    return fail(error instanceof TooLarge ? `the link inflates to more than ${MAX_INFLATED / 1024} KiB` : 'the link is not valid compressed data');
-  }
+  const unpacked = await unpackText(body.slice(dot + 1));
+  if (!unpacked.ok) return unpacked;
   let json: unknown;
   try {
-    json = JSON.parse(new TextDecoder('utf-8', { fatal: true }).decode(inflated));
+    json = JSON.parse(unpacked.text);
   } catch {
     return fail('the link does not hold valid JSON text');
   }

@@ -2,7 +2,7 @@
 // fat lines, `LineMaterial`: each segment a screen-facing quad with round ends, drawn without
 // instancing by ./texel-lines.ts), as the book draws its two-dimensional figures; an overlay of
 // highlighted segments, and picking by the segment under the pointer (./segment-pick.ts).
-import { BufferAttribute, BufferGeometry, Group, LineBasicMaterial, LineSegments, type OrthographicCamera, type PerspectiveCamera, type Raycaster } from 'three';
+import { BufferAttribute, BufferGeometry, Group, LineBasicMaterial, LineSegments, type OrthographicCamera, type PerspectiveCamera, type Raycaster, type Vector2 } from 'three';
 import { LineMaterial } from 'three/examples/jsm/lines/LineMaterial.js';
 import type { MeshBuffers } from '../core';
 import type { LineGrowth } from './line-growth';
@@ -183,17 +183,21 @@ export class SegmentLines {
   }
 
   /**
-   * The module of the segment `raycaster` (set from a camera) meets within the line's width, and
-   * the hit's distance from the eye; null when it meets none or the lines are hidden. (The group
-   * is never moved: the segments' coordinates are the world's.)
+   * The module of the segment `raycaster` (set from a camera) meets within the line's width (or a
+   * few pixels beside it, ./segment-pick.ts), and the hit's distance from the eye; null when it
+   * meets none or the lines are hidden. `tubes`: the segments are drawn as tubes (whose triangles
+   * the pointer missed) in a viewport of that size in CSS pixels: the segment whose axis passes
+   * within a few pixels, lines shown or not. (The group is never moved: the segments' coordinates
+   * are the world's.)
    */
-  pick(raycaster: Raycaster): { module: number; distance: number } | null {
+  pick(raycaster: Raycaster, tubes?: Vector2): { module: number; distance: number } | null {
     const camera = raycaster.camera as PerspectiveCamera | OrthographicCamera | null;
-    if (!this.group.visible || !camera || this.modules.length === 0) return null;
+    if ((!tubes && !this.group.visible) || !camera || this.modules.length === 0) return null;
     // One pixel wide where WebGL draws them with `thin`; as wide as chosen otherwise (2D draws that width).
-    const width = this.thin.visible && this.drawables.visible ? 1 : this.width;
+    const width = tubes ? 0 : this.thin.visible && this.drawables.visible ? 1 : this.width;
     // (At a growth time, the segments as grown then.)
-    const hit = pickSegment(this.growth?.grown(this.ends, this.times) ?? this.ends, camera, raycaster.ray, width, this.plant.mesh.material.resolution);
+    const resolution = tubes ?? this.plant.mesh.material.resolution;
+    const hit = pickSegment(this.growth?.grown(this.ends, this.times) ?? this.ends, camera, raycaster.ray, width, resolution);
     if (!hit || hit.segment >= this.modules.length) return null;
     return { module: this.modules[hit.segment], distance: hit.distance };
   }

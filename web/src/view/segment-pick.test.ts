@@ -24,7 +24,7 @@ describe('pickSegment', () => {
     const ends = new Float32Array([-8, 0, 0, 8, 0, 0, 5, -4, 0, 5, 4, 0]);
     const on = (x: number, y: number, width = 4) => {
       const camera = ortho();
-      return pickSegment(ends, camera, aimed(camera, x, y).ray, width, VIEWPORT)?.segment ?? null;
+      return pickSegment(ends, camera, aimed(camera, x, y).ray, width, VIEWPORT, 0)?.segment ?? null;
     };
     expect(on(60, 50)).toBe(0);
     expect(on(60, 51.5)).toBe(0); // 1.5 px off a 4 px line
@@ -32,6 +32,29 @@ describe('pickSegment', () => {
     expect(on(60, 52.5, 6)).toBe(0); // within a 6 px line
     expect(on(151, 30)).toBe(1);
     expect(on(195, 50)).toBeNull(); // beyond the segment's end (x = 8: pixel 180)
+  });
+
+  it('picks a thin line from a few pixels beside it, and the nearer of two lines on screen (issue 48)', () => {
+    // Segment 0 along x at y = 0 (pixel row 50); segment 1 along x at y = -0.8 (row 58).
+    const ends = new Float32Array([-8, 0, 0, 8, 0, 0, -8, -0.8, 0, 8, -0.8, 0]);
+    const at = (x: number, y: number, width: number) => {
+      const camera = ortho();
+      return pickSegment(ends, camera, aimed(camera, x, y).ray, width, VIEWPORT)?.segment ?? null;
+    };
+    expect(at(60, 47, 1)).toBe(0); // 3 px above a 1 px line
+    expect(at(60, 53, 1)).toBe(0); // 3 px below it, nearer it than the other
+    expect(at(60, 55, 1)).toBe(1); // 3 px above the other
+    expect(at(60, 61, 2)).toBe(1); // 3 px below a 2 px line
+    expect(at(60, 40, 1)).toBeNull(); // 10 px away: nothing
+    expect(at(60, 44.4, 2)).toBeNull(); // 4.6 px beyond a 2 px line's edge
+    expect(at(60, 45.2, 2)).toBe(0); // 3.8 px beyond it
+  });
+
+  it('prefers a line that covers the pointer, then the nearest to the eye, over one beside it', () => {
+    const camera = ortho();
+    // Segment 0 at z = 5 (near the eye), 3 px above the pointer; segment 1 at z = -5 under it.
+    const ends = new Float32Array([-8, 0.3, 5, 8, 0.3, 5, -8, 0, -5, 8, 0, -5]);
+    expect(pickSegment(ends, camera, aimed(camera, 60, 50).ray, 2, VIEWPORT)?.segment).toBe(1);
   });
 
   it('never picks a segment with NaN ends (not grown yet at the growth time shown)', () => {

@@ -34,9 +34,16 @@ export class ViewPicking {
     const hit = raycaster
       .intersectObject(plant.pickable, false)
       .find((h) => h.faceIndex != null && (!lines || moduleOfTriangle(mesh.materialRanges, h.faceIndex) !== MATERIAL_BARK));
-    const line = lines ? segmentLines.pick(raycaster) : null;
+    // A thin tube is hard to hit: the pointer a few pixels beside its axis picks it too.
+    const line = lines ? segmentLines.pick(raycaster) : hit ? null : segmentLines.pick(raycaster, this.viewport());
     if (line && (!hit || line.distance <= hit.distance)) return line.module;
     return hit?.faceIndex != null ? moduleOfTriangle(mesh.ranges, hit.faceIndex) : null;
+  }
+
+  /** The canvas's size in CSS pixels. */
+  private viewport(): Vector2 {
+    const rect = this.canvas.getBoundingClientRect();
+    return new Vector2(rect.width, rect.height);
   }
 
   /** The triangle of `plant`'s mesh at a point of the page, or null. */

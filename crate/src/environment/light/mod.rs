@@ -49,6 +49,7 @@ pub use settings::{LightSettings, BAD_SETTING, MOST_DEPTH};
 
 use super::{Exceeded, Field, Part, Probe, Responder};
 use crate::diagnostics::Diagnostic;
+use crate::maths;
 use crate::model::ProgramSpec;
 use grid::Extent;
 use shadow::{Pyramid, ShadowPlanes};
@@ -85,7 +86,7 @@ impl Light {
             })
             .sum();
         Ok(Light {
-            kept: (1.0 - settings.absorb).ln(),
+            kept: maths::ln(1.0 - settings.absorb),
             settings,
             full,
             extent: Extent::default(),

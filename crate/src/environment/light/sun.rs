@@ -12,6 +12,7 @@
 //! the count is kept and turned into light only where a probe or the studio reads it.
 
 use super::grid::{shifted_add, PlaneOf};
+use crate::maths;
 
 /// The planes of the sweep, kept from one update to the next.
 #[derive(Debug, Default)]
@@ -106,7 +107,7 @@ pub fn transmitted(parts: f32, kept: f64) -> f64 {
     if crossed <= 0.0 {
         1.0
     } else {
-        (crossed * kept).exp()
+        maths::exp(crossed * kept)
     }
 }
 
@@ -151,7 +152,7 @@ mod tests {
 
     #[test]
     fn one_part_is_forgiven_and_the_rest_absorb() {
-        let kept = |absorb: f64| (1.0 - absorb).ln();
+        let kept = |absorb: f64| maths::ln(1.0 - absorb);
         assert_eq!(transmitted(0.0, kept(0.5)), 1.0);
         assert_eq!(transmitted(1.0, kept(0.9)), 1.0);
         assert!((transmitted(3.0, kept(0.5)) - 0.25).abs() < 1e-12);

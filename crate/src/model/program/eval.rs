@@ -4,6 +4,7 @@
 use super::functions::call;
 use super::random::deviate;
 use super::{Env, EvalError, Op, Program, MAX_STACK};
+use crate::maths;
 use crate::syntax::BinaryOp;
 
 impl Program {
@@ -193,7 +194,7 @@ pub(super) fn evaluate_binary(op: BinaryOp, a: f64, b: f64) -> Option<f64> {
         BinaryOp::Div | BinaryOp::Rem if b == 0.0 => return None,
         BinaryOp::Div => a / b,
         BinaryOp::Rem => a % b,
-        BinaryOp::Pow => a.powf(b),
+        BinaryOp::Pow => maths::powf(a, b),
         BinaryOp::Lt => truth(a < b),
         BinaryOp::Le => truth(a <= b),
         BinaryOp::Gt => truth(a > b),

@@ -1,6 +1,7 @@
 //! The built-in functions of expressions (`sin`, `clamp`, …), the random ones (`uniform`,
 //! `normal`, …) drawing from the evaluation's generator.
 
+use crate::maths;
 use crate::vocabulary::Function;
 use rand::RngExt;
 use rand_distr::{Binomial, Distribution, Exp, Normal, Poisson};
@@ -18,16 +19,16 @@ pub(super) fn call<R: rand::Rng + ?Sized>(
 ) -> Result<f64, String> {
     let deg = |x: f64| x.to_radians();
     Ok(match f {
-        Function::Sin => deg(a[0]).sin(),
-        Function::Cos => deg(a[0]).cos(),
-        Function::Tan => deg(a[0]).tan(),
-        Function::Asin => a[0].asin().to_degrees(),
-        Function::Acos => a[0].acos().to_degrees(),
-        Function::Atan => a[0].atan().to_degrees(),
-        Function::Atan2 => a[0].atan2(a[1]).to_degrees(),
+        Function::Sin => maths::sin(deg(a[0])),
+        Function::Cos => maths::cos(deg(a[0])),
+        Function::Tan => maths::tan(deg(a[0])),
+        Function::Asin => maths::asin(a[0]).to_degrees(),
+        Function::Acos => maths::acos(a[0]).to_degrees(),
+        Function::Atan => maths::atan(a[0]).to_degrees(),
+        Function::Atan2 => maths::atan2(a[0], a[1]).to_degrees(),
         Function::Sqrt => a[0].sqrt(),
-        Function::Exp => a[0].exp(),
-        Function::Log => a[0].ln(),
+        Function::Exp => maths::exp(a[0]),
+        Function::Log => maths::ln(a[0]),
         Function::Abs => a[0].abs(),
         Function::Floor => a[0].floor(),
         Function::Ceil => a[0].ceil(),
@@ -102,7 +103,7 @@ fn growth(f: Function, a: &[f64]) -> Result<f64, String> {
                     a[0], a[1], a[2]
                 ));
             }
-            a[1] * (a[2] / a[1]).powf(unit(a[0]))
+            a[1] * maths::powf(a[2] / a[1], unit(a[0]))
         }
         Function::Logistic => {
             if a[3].is_nan() || a[3] <= 0.0 {
@@ -111,7 +112,7 @@ fn growth(f: Function, a: &[f64]) -> Result<f64, String> {
                     a[0], a[1], a[2], a[3]
                 ));
             }
-            let curve = |x: f64| 1.0 / (1.0 + (-a[3] * (x - 0.5)).exp());
+            let curve = |x: f64| 1.0 / (1.0 + maths::exp(-a[3] * (x - 0.5)));
             let (lo, hi) = (curve(0.0), curve(1.0));
             a[1] + (a[2] - a[1]) * (curve(unit(a[0])) - lo) / (hi - lo)
         }

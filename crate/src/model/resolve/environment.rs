@@ -6,6 +6,7 @@
 use super::directives::words;
 use super::Resolver;
 use crate::diagnostics::Diagnostic;
+use crate::maths;
 use crate::model::{EnvironmentSpec, PlantPlace, ProgramSpec, SettingValue, MAX_STAND_PLANTS};
 use crate::syntax::{Directive, SourceFile, Span};
 use crate::vocabulary::{
@@ -405,7 +406,7 @@ fn random_places(n: usize, size: [f64; 2], spacing: f64, seed: u64) -> Vec<[f64;
     let far_enough = |p: &[f64; 3], places: &[[f64; 3]]| {
         places
             .iter()
-            .all(|q| (p[0] - q[0]).hypot(p[2] - q[2]) >= spacing)
+            .all(|q| maths::hypot(p[0] - q[0], p[2] - q[2]) >= spacing)
     };
     for _ in 0..n {
         let found = (0..PLACE_TRIES).find_map(|_| {
@@ -447,7 +448,7 @@ mod tests {
         for (i, p) in a.iter().enumerate() {
             assert!(p[0].abs() <= 5.0 && p[2].abs() <= 5.0);
             for q in &a[..i] {
-                assert!((p[0] - q[0]).hypot(p[2] - q[2]) >= 1.0);
+                assert!(maths::hypot(p[0] - q[0], p[2] - q[2]) >= 1.0);
             }
         }
         assert!(random_places(50, [1.0, 1.0], 1.0, 7).len() < 50);

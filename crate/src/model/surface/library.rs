@@ -8,6 +8,7 @@
 //! its rows from the centre (a degenerate corner) to the rim.
 
 use super::Patch;
+use crate::maths;
 use crate::vocabulary::Organ;
 use glam::DVec3;
 
@@ -155,7 +156,7 @@ fn disk_quarter(k: usize) -> Patch {
     let r = DISK_RADIUS;
     let c = 0.5523 * r;
     let arc = [(0.0, r), (c, r), (r, c), (r, 0.0)];
-    let (sin, cos) = (k as f64 * std::f64::consts::FRAC_PI_2).sin_cos();
+    let (sin, cos) = maths::sin_cos(k as f64 * std::f64::consts::FRAC_PI_2);
     std::array::from_fn(|n| {
         let (i, j) = (n / 4, n % 4);
         let f = i as f64 / 3.0;

@@ -11,6 +11,8 @@ import type { PlantView } from '../../view';
 import { StringPanel, type ModuleRole } from './string-panel';
 import type { ViewOptions } from '../controls';
 import { branchQuery, EnvironmentTools, REPLY_REACH, replyInWords } from '../environment';
+import { BreakpointPanel } from './breakpoints';
+import { LineageList } from './lineage-list';
 import { conditionText, copiedInWords, countsInWords, describeProduction, madeInWords, reportInWords, stringAtTime } from './explain-words';
 
 /** The page elements of the view. */
@@ -49,6 +51,10 @@ export class ContextView {
   private ticket = 0;
   /** The View toolbar's Environment tools: each build's environment drawn with its plant. */
   private readonly environment: EnvironmentTools;
+  /** The picked module's lineage, under the summary. */
+  private readonly lineage: LineageList;
+  /** The breakpoints, under the lineage: where Play pauses. */
+  private readonly breakpoints: BreakpointPanel;
 
   constructor(
     private readonly els: ContextViewElements,
@@ -59,6 +65,12 @@ export class ContextView {
   ) {
     this.panel = new StringPanel(els.panel, (module) => this.pickModule(module));
     this.environment = new EnvironmentTools(view);
+    this.lineage = new LineageList({
+      describeProduction: (index) => this.describeProduction(index),
+      preview: (modules, production) => this.showPreview(modules, production),
+    });
+    this.breakpoints = new BreakpointPanel({ describeProduction: (index) => this.describeProduction(index) });
+    els.summary.after(this.lineage.element, this.breakpoints.element);
     // One definition of the highlight colours: the 3D view's, passed on to the page's CSS.
     for (const [role, rgb] of Object.entries(HIGHLIGHT)) {
       document.documentElement.style.setProperty(`--hl-${role}`, cssColour(rgb));
@@ -96,6 +108,8 @@ export class ContextView {
     this.panel.show(build.moduleCount, inspector);
     this.environment.show(build.environment, build.flat);
     this.focus = { ...this.focus, module: null }; // module indices belong to the old string
+    this.lineage.clear();
+    this.breakpoints.setBuild(build, inspector, source);
     this.preview = null;
     this.renderLegend();
     this.refresh();
@@ -116,6 +130,7 @@ export class ContextView {
     // A pick speaks for itself: the cursor's production is set aside until the cursor moves again.
     this.setFocus({ production: null, module });
     if (module !== null) this.panel.scrollToModule(module);
+    void this.lineage.show(this.inspector, module, this.source, this.build?.productions ?? []);
   }
 
   /**

@@ -5,6 +5,7 @@
 // module of step n − 1 beside the substring of step n it became, virtualised. Hovering a module
 // says where it came from and which rule wrote it, and lights up in the 3D view the part of the
 // plant that grew from it and in the editor the production.
+import { lineageShown } from './lineage-list';
 import './derivation-view.css';
 import { NOT_REWRITTEN, type DerivationStep, type PlantBuild, type PlantInspector } from '../../core';
 import { cssColour, PRODUCTION_COLOURS } from '../../view/highlight';
@@ -113,6 +114,8 @@ export class DerivationView {
   private stale = true;
   /** Bumped on every new build, so late answers are dropped. */
   private ticket = 0;
+  /** The picked module's lineage (the String tab's), marked in the rows: (step, module) pairs. */
+  private lineage: readonly { step: number; module: number }[] = [];
 
   constructor(
     root: HTMLElement,
@@ -134,6 +137,19 @@ export class DerivationView {
     this.body.addEventListener('pointerleave', (event) => event.pointerType !== 'touch' && this.hover(null));
     this.body.addEventListener('click', (event) => this.click(event.target as HTMLElement));
     this.body.addEventListener('scroll', () => this.pairs && this.renderPairs());
+    lineageShown.listeners.add((rows) => this.showLineage(rows));
+    this.showLineage(lineageShown.rows);
+  }
+
+  /** Marks the chain of a module's lineage in the rows (null: none). */
+  showLineage(rows: readonly { step: number; module: number }[] | null): void {
+    this.lineage = rows ?? [];
+    this.markLineage();
+  }
+
+  private markLineage(): void {
+    for (const old of this.body.querySelectorAll('.dv-lineage')) old.classList.remove('dv-lineage');
+    for (const { step, module } of this.lineage) this.mark(step, module, 'dv-lineage');
   }
 
   /** Shows the derivation of a new build (fetched when the view is on screen). */
@@ -192,6 +208,7 @@ export class DerivationView {
     this.body.replaceChildren(...rows);
     if (steps.length > 1 && total <= TREE_MAX_MODULES) this.body.append(derivationTree(steps));
     this.status.textContent = '';
+    this.markLineage();
   }
 
   private sequenceRow(step: DerivationStep, k: number): HTMLElement {

@@ -13,7 +13,7 @@ export function installLearnPanel(host: LearnHost): void {
     panel.hidden = false;
     toggle.setAttribute('aria-expanded', 'true');
     toggle.setAttribute('aria-busy', 'true');
-    import('./learn-panel')
+    panelCode()
       .then(({ LearnPanel, learnElements }) => new LearnPanel(learnElements(), host).open())
       .catch((error: unknown) => {
         console.error('Could not load the lessons:', error);
@@ -24,4 +24,13 @@ export function installLearnPanel(host: LearnHost): void {
       .finally(() => toggle.removeAttribute('aria-busy'));
   };
   toggle.addEventListener('click', first);
+  // An assignment or a submission in the address (docs/ASSIGNMENTS.md), or pasted into it later.
+  const assignment = () => void panelCode().then((code) => code.openFromAddress(host));
+  if (/(assignment|submission)=/.test(location.href)) assignment();
+  addEventListener('hashchange', () => {
+    if (/^#(assignment|submission)=/.test(location.hash)) assignment();
+  });
 }
+
+/** The panel's code (one import, so the first load holds its address once). */
+const panelCode = () => import('./learn-panel');

@@ -8,11 +8,13 @@ import { directiveOfKind, loadVocabulary, writtenDirective, type PlantBuild, typ
 import { chapterHeading, isLesson, isLessonIndex, type Lesson, type LessonGrammar, type LessonSummary, type LessonTask } from './lesson-manifest';
 import { evaluateCheck, parseCheck, plantFacts, spokenAnswer } from './lesson-check';
 import { writtenSeed } from './written-seed';
+import { assignmentFileInput } from './assignment-input';
 // Loaded on demand: it imports other areas' files, not their indexes, which would bring their
 // wiring into its chunk's graph (and split the first load into more files).
 import { byId } from '../page/page-elements';
 import { focusableCode } from '../page/focusable-code';
 import { GalleryThumbnails } from '../gallery/thumbnails';
+import { closeOnEscape, showPictures } from './side-panel';
 
 /** The list of lessons, relative to the page (built by scripts/lessons-plugin.ts). */
 const INDEX_URL = 'lessons/index.json';
@@ -53,6 +55,8 @@ export interface LearnHost {
   };
   /** Opens `text` in the editor (asking first if the user's text would be lost); `key` names it (`lesson/SLUG/N`). */
   open(text: string, title: string, key: string): Promise<boolean>;
+  /** The editor's text now (an assignment's Check and Submit… read it). */
+  text(): string;
 }
 
 async function fetchJson(url: string): Promise<unknown> {
@@ -77,6 +81,11 @@ function button(text: string, label: string, onClick: () => void, className = ''
   return node;
 }
 
+/** Opens the assignment or submission the studio's address asks for (its code loads now). */
+export function openFromAddress(host: LearnHost): Promise<void> {
+  return import('./assignment-opening').then((opening) => opening.openFromAddress(host));
+}
+
 /** The Learn panel. */
 export class LearnPanel {
   private index: LessonSummary[] | undefined;
@@ -93,17 +102,8 @@ export class LearnPanel {
   ) {
     els.toggle.addEventListener('click', () => (els.panel.hidden ? void this.open() : this.close()));
     els.close.addEventListener('click', () => this.close());
-    els.panel.addEventListener('keydown', (event) => {
-      if (event.key !== 'Escape' || event.defaultPrevented) return;
-      event.preventDefault();
-      this.close();
-    });
-    this.thumbnails.onPicture((key, url) => {
-      const image = this.images.get(key);
-      if (!image) return;
-      if (url) image.src = url;
-      image.dataset.state = url ? 'ready' : 'failed';
-    });
+    closeOnEscape(els.panel, () => this.close());
+    showPictures(this.thumbnails, this.images);
   }
 
   /** Opens the panel on the lesson shown last, or on the list of lessons. */
@@ -170,10 +170,36 @@ export class LearnPanel {
         return section;
       }),
     );
+    contents.append(this.assignments());
+    const back = this.backToAssignment();
+    if (back) contents.prepend(back);
     contents.hidden = false;
     lesson.hidden = true;
     const first = (this.current && contents.querySelector<HTMLButtonElement>(`[data-slug="${this.current.slug}"]`)) || contents.querySelector('button');
     first?.focus();
+  }
+
+  /** "Back to the assignment", when one was opened (assignment-panel.ts) and then closed. */
+  private backToAssignment(): HTMLElement | undefined {
+    const shown = document.getElementById('assignment');
+    const title = shown?.querySelector('.lesson-title')?.textContent;
+    if (!shown || !title) return undefined;
+    const back = button(`Back to the assignment: ${title}`, `Back to the assignment: ${title}`, () => {
+      this.close();
+      shown.hidden = false;
+      shown.querySelector<HTMLElement>('.lesson-title')?.focus();
+    }, 'learn-entry');
+    back.dataset.testid = 'learn-back-to-assignment';
+    return back;
+  }
+
+  /** "Your own assignments": an assignment file opened (docs/ASSIGNMENTS.md), its code loaded then. */
+  private assignments(): HTMLElement {
+    const section = element('section', 'learn-chapter');
+    const input = assignmentFileInput('learn-assignment-file', (file) => void import('./assignment-opening').then((opening) => opening.openAssignmentFile(this.host, file)));
+    const about = 'An assignment of your course (a Markdown file: docs/ASSIGNMENTS.md). Open it to work on it, or, as its author, to see what is wrong with it.';
+    section.append(element('h3', '', 'Your own assignments'), element('p', 'learn-section', about), button('Open an assignment file…', 'Open an assignment file…', () => input.click()), input);
+    return section;
   }
 
   /** Shows a lesson (fetched on first view). */

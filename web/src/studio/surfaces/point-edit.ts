@@ -1,11 +1,12 @@
 // A control point moved through the grammar text: every step of a drag rewrites its `x y z`
 // (and its copies' where patches meet) at once, so that the plant follows live through the text's
 // ordinary rebuild, and the steps of one drag make one undo step (Ctrl+Z after a drag restores the
-// text before it). A nudge or a number typed is an edit of one step.
+// text before it). A nudge or a number typed is an edit of one step. The curve editor moves a
+// curve function's points the same way, its x and y written at two spans ({@link PointEdit.write}).
 import type { Point3 } from '../../core';
 import type { HistoryStep } from '../../editor/grammar-text';
 import type { TextChange } from '../../editor/growth-directives';
-import { movePoints, pointText, type PointSpan } from './point-text';
+import { pointText, replaceSpans, type PointSpan } from './point-text';
 
 /** What a point edit needs of the grammar editor. */
 export interface PointTextEditor {
@@ -18,8 +19,8 @@ export class PointEdit {
   private spans: PointSpan[];
   /** Each span's text when the edit began. */
   private readonly before: string[];
-  /** What the edit last wrote at every span (undefined: nothing yet). */
-  private written: string | undefined;
+  /** What the edit last wrote at each span (undefined: nothing yet). */
+  private written: readonly string[] | undefined;
   /** The text changed under the edit (the user typed): it writes nothing more. */
   private stale = false;
   /** The edit's undo step: its steps carry this time, which joins them. */
@@ -41,14 +42,20 @@ export class PointEdit {
 
   /** Writes `point` at every span; false when the text changed under the edit (it has stopped). */
   move(point: Point3): boolean {
-    if (!this.holds()) return false;
     const insert = pointText(point);
-    if (insert === this.written || (this.written === undefined && this.before.every((b) => b === insert))) return true;
-    const { changes, spans } = movePoints(this.spans, point);
+    return this.write(this.spans.map(() => insert));
+  }
+
+  /** Writes `inserts[k]` at span k; false when the text changed under the edit (it has stopped). */
+  write(inserts: readonly string[]): boolean {
+    if (!this.holds()) return false;
+    const same = (texts: readonly string[]) => texts.every((t, k) => t === inserts[k]);
+    if (same(this.written ?? this.before)) return true;
+    const { changes, spans } = replaceSpans(this.spans, inserts);
     const step = this.written === undefined ? 'first' : 'next';
     this.editor.replaceRanges(changes, { history: { drag: this.drag, step } });
     this.spans = spans;
-    this.written = insert;
+    this.written = [...inserts];
     return true;
   }
 
@@ -63,7 +70,8 @@ export class PointEdit {
   private holds(): boolean {
     if (this.stale) return false;
     const text = this.editor.text();
-    this.stale = this.spans.some((s, k) => text.slice(s.from, s.to) !== (this.written ?? this.before[k]));
+    const expected = this.written ?? this.before;
+    this.stale = this.spans.some((s, k) => text.slice(s.from, s.to) !== expected[k]);
     return !this.stale;
   }
 }

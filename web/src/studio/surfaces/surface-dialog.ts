@@ -9,6 +9,7 @@ import { type Point3, type SurfaceAnswer, type SurfacePreview, type SurfacePrevi
 import { declaredSurfaces, surfaceLetterOf } from '../../editor/surface-lines';
 import { PointEdit, type PointTextEditor } from './point-edit';
 import { coordinateText, copiesOf } from './point-text';
+import { TextPanel } from '../page/text-panel';
 import { makeSurfaceControls } from './surface-controls';
 import { SurfaceScene } from './surface-scene';
 
@@ -37,11 +38,9 @@ export class SurfaceDialog {
   private answer: SurfaceAnswer | null = null;
   private selected: number | null = null;
   private drag: Drag | undefined;
-  private refreshQueued = false;
   private toTurtle = new Matrix4();
   private fromTurtle = new Matrix4();
-  /** What had the focus when the dialog opened: it gets it back when the dialog closes. */
-  private opener: HTMLElement | null = null;
+  private readonly panel: TextPanel;
 
   constructor(
     private readonly host: SurfaceEditorHost,
@@ -49,17 +48,7 @@ export class SurfaceDialog {
   ) {
     const c = this.c;
     this.scene = new SurfaceScene(c.canvas);
-    c.close.addEventListener('click', () => c.dialog.close());
-    c.dialog.addEventListener('close', () => {
-      if (this.opener?.isConnected) this.opener.focus();
-      this.opener = null;
-    });
-    c.dialog.addEventListener('keydown', (event) => {
-      if (event.key === 'Escape') {
-        event.preventDefault();
-        c.dialog.close();
-      }
-    });
+    this.panel = new TextPanel(c.dialog, c.close, () => this.refresh());
     c.letter.addEventListener('change', () => this.open(c.letter.value));
     c.point.addEventListener('change', () => this.choose(c.point.value === '' ? null : Number(c.point.value)));
     c.coordinates.forEach((input, axis) => input.addEventListener('change', () => this.typed(axis, Number(input.value))));
@@ -77,27 +66,19 @@ export class SurfaceDialog {
     const c = this.c;
     if (letter !== this.letter) this.selected = null;
     this.letter = letter;
-    if (!c.dialog.open) {
-      this.opener = document.activeElement instanceof HTMLElement ? document.activeElement : null;
-      c.dialog.show();
-    }
+    this.panel.show();
     this.refresh();
     c.canvas.focus();
   }
 
   /** Whether the dialog is open. */
   get isOpen(): boolean {
-    return this.c.dialog.open;
+    return this.panel.isOpen;
   }
 
   /** The grammar text changed (typed, or written by a drag): the dialog follows it at the next frame. */
   textChanged(): void {
-    if (!this.c.dialog.open || this.refreshQueued) return;
-    this.refreshQueued = true;
-    requestAnimationFrame(() => {
-      this.refreshQueued = false;
-      if (this.c.dialog.open) this.refresh();
-    });
+    this.panel.textChanged();
   }
 
   /** Net point `k` on the page (CSS pixels), or null (for tests). */

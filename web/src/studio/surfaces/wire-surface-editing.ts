@@ -2,8 +2,9 @@
 // view's tools or from the text (the gutter's marker, Alt+B on a surface's line), following every
 // change of the text. Loaded once the vocabulary has arrived (./lazy-surface-editing.ts, the first
 // load's part): the menu reads the directives' names from it (./surface-tools.ts), and the editor
-// loads on its first opening.
+// loads on its first opening. The curve editor (../curves) opens from the same gutter: it is wired here.
 import { onVocabulary } from '../../core';
+import { wireCurveEditing } from '../curves';
 import type { StudioParts } from '../parts';
 import type { SurfaceTools } from './surface-tools';
 
@@ -15,6 +16,7 @@ export interface SurfaceEditing {
 
 /** The surface editor on the grammar in `editor`; its menu goes after the branch tools. */
 export function wireSurfaceEditing({ els, editor, notice }: StudioParts): SurfaceEditing {
+  wireCurveEditing({ editor, notice });
   let tools: SurfaceTools | undefined;
   const loaded = new Promise<SurfaceTools>((resolve, reject) =>
     onVocabulary(() => {
@@ -24,6 +26,8 @@ export function wireSurfaceEditing({ els, editor, notice }: StudioParts): Surfac
   );
   loaded.catch((error: unknown) => notice.show('error', `The surface editor could not load: ${String(error)}`));
   editor.onChange((text) => tools?.changed(text));
-  editor.onOpenSurface((letter) => void loaded.then((t) => t.open(letter)));
+  editor.onOpenEditor(({ what, name }) => {
+    if (what === 'surface') void loaded.then((t) => t.open(name));
+  });
   return { pointOnPage: (k) => tools?.pointOnPage(k) ?? null };
 }

@@ -9,6 +9,7 @@ import { GrowthShow, Timeline, TIMELINE_SPEEDS, type TimelineState } from '../..
 import type { GrowthCamera } from '../../view';
 import type { TimelineElements, TimelineStudio } from './lazy-timeline';
 import { PanelPace, type HandOver } from './panel-pace';
+import type { playStop } from '../derivation/breakpoints';
 import './timeline-bar.css';
 
 /** Degrees the turntable turns the camera for each step of growth played. */
@@ -112,6 +113,9 @@ export interface TimelineBuilds {
   deriveAt(t: number | null): void;
 }
 
+/** What the timeline bar asks of the debugger's breakpoints. */
+type PlayStop = Pick<typeof playStop, 'at' | 'paused'>;
+
 /** The timeline bar and the timeline it drives. */
 export class TimelineBar {
   readonly timeline: Timeline;
@@ -138,12 +142,31 @@ export class TimelineBar {
     this.controls = barControls(els.bar);
     els.bar.hidden = false;
     this.timeline.onChange((state) => {
+      if (this.breakAt(state)) return; // (paused there: the pause's own change has rendered)
       if (!state.playing) this.panels.flush(); // paused: the panels show the plant on screen
       this.render(state);
     });
     this.listen();
+    void import('../derivation/breakpoints').then(({ playStop }) => (this.stop = playStop));
     view.onPlantShown(() => this.plantShown());
     this.plantShown();
+  }
+
+  /** The t last shown while playing (null: paused), to see Play cross a breakpoint's step. */
+  private playedT: number | null = null;
+  /** The debugger's breakpoints (the String tab's), once their code is there. */
+  private stop: PlayStop | undefined;
+
+  /** Pauses Play where it crosses the debugger's breakpoint (the String tab's), at its step: true when it did. */
+  private breakAt(state: TimelineState): boolean {
+    const before = this.playedT;
+    this.playedT = state.playing ? state.t : null;
+    const at = this.stop?.at() ?? null;
+    if (at === null || before === null || !state.playing || !(before < at && at <= state.t)) return false;
+    this.timeline.pause();
+    this.timeline.seek(at);
+    this.stop?.paused();
+    return true;
   }
 
   private listen(): void {
