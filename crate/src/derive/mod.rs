@@ -579,28 +579,6 @@ impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
         Ok(round)
     }
 
-    /// The rounds of a timed derivation from the clock's time to its end, counted on from
-    /// `round`; every module aged to the end.
-    fn rounds(
-        &mut self,
-        clock: &mut timed::Clock,
-        round: &mut u32,
-        tracked: bool,
-    ) -> Result<(), Diagnostic> {
-        let model = self.rewriter.model;
-        while let Some(plan) = clock.next_round(&mut self.current) {
-            if *round == model.settings.max_steps {
-                return Err(clock.too_many_rounds(model));
-            }
-            *round += 1;
-            self.timed_plan = Some(plan);
-            self.step(*round, tracked)?;
-            self.stamp_trace(clock);
-        }
-        self.trace_ageing(clock, *round)?;
-        Ok(())
-    }
-
     /// A traced timed derivation: the step just recorded is at the clock's time.
     fn stamp_trace(&mut self, clock: &timed::Clock) {
         if let Some(last) = self.trace.as_mut().and_then(|trace| trace.last_mut()) {

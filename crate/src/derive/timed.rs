@@ -156,3 +156,27 @@ impl Clock {
 fn rounded(x: f64) -> f64 {
     (x * 1e9).round() / 1e9
 }
+
+impl<R: rand::Rng> super::Run<'_, '_, R> {
+    /// The rounds of a timed derivation from the clock's time to its end, counted on from
+    /// `round`; every module aged to the end.
+    pub(super) fn rounds(
+        &mut self,
+        clock: &mut Clock,
+        round: &mut u32,
+        tracked: bool,
+    ) -> Result<(), Diagnostic> {
+        let model = self.rewriter.model;
+        while let Some(plan) = clock.next_round(&mut self.current) {
+            if *round == model.settings.max_steps {
+                return Err(clock.too_many_rounds(model));
+            }
+            *round += 1;
+            self.timed_plan = Some(plan);
+            self.step(*round, tracked)?;
+            self.stamp_trace(clock);
+        }
+        self.trace_ageing(clock, *round)?;
+        Ok(())
+    }
+}
