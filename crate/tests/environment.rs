@@ -343,13 +343,15 @@ fn a_stand_of_nine_builds_and_exports_gltf() {
 }
 
 #[test]
-fn progress_is_told_every_step_of_the_cycle() {
+fn progress_tells_each_step_and_each_answer_pass_in_order() {
     use meristem::pipeline::{build_with, Progress};
     let mut told = Vec::new();
-    let mut progress = |p: Progress| {
-        if let Progress::Derived { step, .. } = p {
-            told.push(step);
+    let mut progress = |p: Progress| match p {
+        Progress::Derived { step, steps } => told.push(format!("step {step} of {steps}")),
+        Progress::Environment { step, steps } => {
+            told.push(format!("{}, step {step} of {steps}", p.label()))
         }
+        Progress::Started(_) => {}
     };
     let mut hooks = Hooks {
         clock: None,
@@ -361,9 +363,35 @@ fn progress_is_told_every_step_of_the_cycle() {
     };
     let b = build_with(SHOOT, &options, &mut hooks);
     assert!(b.ok());
-    for step in 0..=3 {
-        assert!(told.contains(&step), "{told:?}");
-    }
+    let expected = [
+        "step 0 of 3",
+        "environment, step 0 of 3",
+        "step 1 of 3",
+        "environment, step 1 of 3",
+        "step 2 of 3",
+        "environment, step 2 of 3",
+        "step 3 of 3",
+        "environment, step 3 of 3",
+    ];
+    assert_eq!(told, expected);
+    // No ?E in the string after step 1 (the apex stopped, its ?E gone): no pass, none told.
+    let mut told = Vec::new();
+    let mut progress = |p: Progress| told.push(p);
+    let mut hooks = Hooks {
+        clock: None,
+        progress: Some(&mut progress),
+    };
+    let source = "#environment obstacle box min -1 -1 -1 max 1 1 1\n\
+                  axiom: A ?E(1, 0)\n\
+                  ?E(f, d) -> F\n";
+    assert!(build_with(source, &options, &mut hooks).ok());
+    let passes: Vec<_> = (told.iter())
+        .filter_map(|p| match p {
+            Progress::Environment { step, .. } => Some(*step),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(passes, [0]);
 }
 
 #[test]
@@ -453,4 +481,109 @@ fn a_stand_counts_its_plants_together_against_the_module_limit() {
         }
     )
     .ok());
+}
+
+/// A timed grammar (ABOP 6.1) whose stem grows by a growth function of its age, drawn by the
+/// homomorphism: the bud on its tip waits while it is free and stops once its stem has carried
+/// it into the box.
+const TIMED_STEM: &str = "#environment obstacle box min -1 2 -1 max 1 10 1\n\
+                          #terminal_age I 1000 A 1\n\
+                          axiom: I(0) A(0) ?E(1, 0)\n\
+                          A(t) > ?E(f, d) : f == 1 -> A(0)\n\
+                          A(t) > ?E(f, d) : f == 0 -> B\n\
+                          homomorphism:\n\
+                          I(t) -> F(linear(t / 4, 0.5, 4))\n";
+
+#[test]
+fn a_timed_plant_is_answered_as_drawn_at_each_step_its_organs_grown() {
+    let at = |source: &str, time: f64| {
+        let b = build(
+            source,
+            &BuildOptions {
+                time: Some(time),
+                ..BuildOptions::default()
+            },
+        );
+        assert!(b.ok(), "{:?}", b.diagnostics);
+        assert!(b.diagnostics.is_empty(), "{:?}", b.diagnostics);
+        b.derived_text()
+    };
+    // The stem is 0.5 + 3.5 t / 4 long at t: 1.375 at t = 1 (the bud 0.625 below the box),
+    // 2.25 at t = 2 (0.25 inside); the bud reads that at its terminal age, t = 3, and stops.
+    assert_eq!(at(TIMED_STEM, 1.0), "I(1)A(0)?E(1,0.625)");
+    assert_eq!(at(TIMED_STEM, 2.0), "I(2)A(0)?E(0,-0.25)");
+    assert_eq!(at(TIMED_STEM, 3.0), "I(3)B?E(0,-1)");
+    // A fraction of a step: answered at the time asked, as drawn then (2.6875 long).
+    assert_eq!(at(TIMED_STEM, 2.5), "I(2.5)A(0.5)?E(0,-0.6875)");
+    // The derivation view: a row a round and a row at each whole step, as answered then.
+    let b = build(
+        TIMED_STEM,
+        &BuildOptions {
+            time: Some(3.0),
+            ..BuildOptions::default()
+        },
+    );
+    let model = b.model.as_ref().unwrap();
+    let rows: Vec<(Option<f64>, String)> = (b.inspector().unwrap().sequence(100).unwrap())
+        .unwrap()
+        .iter()
+        .map(|s| (s.time, s.string.to_text(&model.alphabet)))
+        .collect();
+    let expected = [
+        (Some(0.0), "I(0)A(0)?E(1,1.5)"),
+        (Some(1.0), "I(1)A(0)?E(1,0.625)"),
+        (Some(2.0), "I(2)A(0)?E(0,-0.25)"),
+        (Some(3.0), "I(3)B?E(0,-1)"),
+    ];
+    let expected: Vec<(Option<f64>, String)> =
+        expected.iter().map(|(t, s)| (*t, s.to_string())).collect();
+    assert_eq!(rows, expected);
+    // The string itself, without its drawing, leaves the bud at the ground: free for ever.
+    let undrawn = TIMED_STEM.replace("I(t) -> F(", "I(t) -> X(");
+    assert_eq!(at(&undrawn, 3.0), "I(3)A(0)?E(1,2)");
+}
+
+#[test]
+fn a_stand_s_plants_grow_with_the_growth_attributes_as_each_alone() {
+    // Far from every plant: the obstacle changes no reply, so each plant of the stand is the
+    // plant derived alone with its seed, its segments lengthened by #shape and bent by #gravity.
+    let plant = "#environment obstacle sphere center 0 100 0 radius 1\n\
+                 #lifetime 6 2\n#shape 1.4 3\n#gravity 4 2\n\
+                 axiom: A ?E(1, 0)\n\
+                 A -> F [+ A ?E(1, 0)] [- A ?E(1, 0)] A\n\
+                 ?E(f, d) -> ε\n";
+    let stand = format!("#plant 0 0 0\n#plant 10 0 0\n{plant}");
+    let lengths = |b: &meristem::pipeline::Build| -> Vec<f64> {
+        let mut l: Vec<f64> = (b.plant.skeleton.segments.iter())
+            .map(|s| (s.end - s.start).length())
+            .collect();
+        l.sort_by(f64::total_cmp);
+        l
+    };
+    let options = |seed| BuildOptions {
+        iterations: Some(4),
+        seed: Some(seed),
+        ..BuildOptions::default()
+    };
+    let both = build(&stand, &options(5));
+    assert!(both.ok(), "{:?}", both.diagnostics);
+    assert!(
+        !both.diagnostics.iter().any(|d| d.code == "E0409"),
+        "{:?}",
+        both.diagnostics
+    );
+    let mut alone: Vec<f64> = [5, 6]
+        .iter()
+        .flat_map(|&seed| lengths(&build(plant, &options(seed))))
+        .collect();
+    alone.sort_by(f64::total_cmp);
+    let together = lengths(&both);
+    assert_eq!(together.len(), alone.len());
+    assert!(
+        together.iter().any(|&l| l > 1.5),
+        "#shape lengthens: {together:?}"
+    );
+    for (a, b) in together.iter().zip(&alone) {
+        assert!((a - b).abs() < 1e-9, "{together:?} vs {alone:?}");
+    }
 }

@@ -50,7 +50,7 @@ use rewriter::{Rewriter, Tracker};
 
 pub use generator::Generator;
 pub use resume::{resume, Resume};
-pub use stepper::{Assembled, Stepper};
+pub use stepper::{Assembled, Shown, Stepper};
 
 /// What one derivation does.
 #[derive(Clone, Debug, Default)]
@@ -573,19 +573,9 @@ impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
     /// A timed derivation: rounds of replacements until the clock reaches its end ([`timed`]),
     /// each tracked when `tracked`. Returns the number of rounds; `E0407` past `#max_steps`.
     fn timed(&mut self, mut clock: timed::Clock, tracked: bool) -> Result<u32, Diagnostic> {
-        let model = self.rewriter.model;
         let mut round = 0;
         self.stamp_trace(&clock);
-        while let Some(plan) = clock.next_round(&mut self.current) {
-            if round == model.settings.max_steps {
-                return Err(clock.too_many_rounds(model));
-            }
-            round += 1;
-            self.timed_plan = Some(plan);
-            self.step(round, tracked)?;
-            self.stamp_trace(&clock);
-        }
-        self.trace_ageing(&clock, round)?;
+        self.rounds(&mut clock, &mut round, tracked)?;
         Ok(round)
     }
 

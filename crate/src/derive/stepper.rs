@@ -3,26 +3,42 @@
 //! "Environment") and step several derivations in lockstep (the plants of a stand). Derive
 //! itself knows nothing of what the caller does between steps.
 
-use super::{Derivation, Observer, Run, TracedStep};
+use super::rewriter::Rewriter;
+use super::timed::Clock;
+use super::{Derivation, Generator, Observer, Run, TracedStep};
 use crate::diagnostics::Diagnostic;
 use crate::model::{LString, Model};
+use rand::SeedableRng;
 
 /// A derivation under way, stepped by its caller. Every step is the same as [`super::derive`]'s
 /// (the productions, decomposition, cut, the query modules `?P ?H ?U ?L`); the last step is
-/// tracked as [`super::derive_tracked`] tracks it.
+/// tracked as [`super::derive_tracked`] tracks it. A timed grammar's step is one step of growth
+/// time (`#dt` of model time): the rounds of replacements within it, then every module aged to
+/// its end.
 pub struct Stepper<'m, 'o, R: rand::Rng> {
     run: Run<'m, 'o, R>,
     steps: u32,
     done: u32,
+    /// A timed grammar's clock, and the rounds of replacements so far.
+    clock: Option<Clock>,
+    rounds: u32,
+}
+
+/// The string the turtle reads ([`Stepper::shown`]): the homomorphism image of the derived
+/// string, and for each of its modules the module of the derived string it comes from.
+pub struct Shown {
+    pub string: LString,
+    pub origin: Vec<u32>,
 }
 
 impl<'m, 'o, R: rand::Rng> Stepper<'m, 'o, R> {
-    /// Writes and decomposes the axiom of a derivation of `steps` steps, drawing every random
+    /// Writes and decomposes the axiom of a derivation of `steps` steps (a timed grammar's to
+    /// growth time `time`, when given, as [`super::DeriveOptions::time`]), drawing every random
     /// number from `rng`. `traced`: record every step ([`TracedStep`]), as
     /// [`super::derive_traced`] does.
     pub fn start(
         model: &'m Model,
-        steps: u32,
+        (steps, time): (u32, Option<f64>),
         rng: &'m mut R,
         observer: &'o mut dyn Observer,
         traced: bool,
@@ -31,10 +47,16 @@ impl<'m, 'o, R: rand::Rng> Stepper<'m, 'o, R> {
         if traced {
             run.trace = Some(vec![run.traced_axiom()]);
         }
+        let clock = Clock::new(model, steps, time);
+        if let Some(clock) = &clock {
+            run.stamp_trace(clock);
+        }
         Ok(Stepper {
             run,
             steps,
             done: 0,
+            clock,
+            rounds: 0,
         })
     }
 
@@ -49,8 +71,34 @@ impl<'m, 'o, R: rand::Rng> Stepper<'m, 'o, R> {
             return Ok(());
         }
         self.done += 1;
+        if let Some(clock) = &mut self.clock {
+            clock.until(f64::from(self.done));
+            return self.run.rounds(clock, &mut self.rounds, true);
+        }
         let tracked = self.run.trace.is_some() || self.done == self.steps;
         self.run.step(self.done, tracked)
+    }
+
+    /// The string the turtle reads now, as it will at the end: the homomorphism image of
+    /// [`Stepper::string`] (`None` without a homomorphism: the string itself). A stochastic
+    /// homomorphism draws from a generator of its own, seeded with `seed`, so that reading the
+    /// plant between steps changes none of the derivation's draws.
+    pub fn shown(&self, seed: u64) -> Result<Option<Shown>, Diagnostic> {
+        let model = self.run.rewriter.model;
+        if model.homomorphism.is_empty() {
+            return Ok(None);
+        }
+        let mut rng = Generator::seed_from_u64(seed);
+        let mut rewriter = Rewriter::new(model, self.done, &mut rng);
+        let mut now = Derivation {
+            string: self.run.current.clone(),
+            ..Derivation::default()
+        };
+        super::homomorphism(&mut rewriter, self.done, &mut now, true)?;
+        Ok(now.interpreted.map(|string| Shown {
+            string,
+            origin: now.turtle_origin,
+        }))
     }
 
     /// The string now (after the axiom, or after the last step).
@@ -76,7 +124,12 @@ impl<'m, 'o, R: rand::Rng> Stepper<'m, 'o, R> {
     /// every step.
     pub fn finish(mut self) -> Result<(Derivation, Vec<TracedStep>), Diagnostic> {
         let trace = self.run.trace.take().unwrap_or_default();
-        let derivation = self.run.finish(self.done, true)?;
+        let steps = if self.clock.is_some() {
+            self.rounds
+        } else {
+            self.done
+        };
+        let derivation = self.run.finish(steps, true)?;
         Ok((derivation, trace))
     }
 }

@@ -30,6 +30,8 @@ pub(super) struct Clock {
     terminal: Vec<f64>,
     now: f64,
     end: f64,
+    /// The end of the whole derivation (`end` is nearer while it is stepped, [`Clock::until`]).
+    last: f64,
     /// `#dt`: model time per step.
     dt: f64,
 }
@@ -51,8 +53,16 @@ impl Clock {
             terminal,
             now: 0.0,
             end,
+            last: end,
             dt: settings.dt,
         })
+    }
+
+    /// Stops the next rounds at growth time `t` (in steps), or at the derivation's end when that
+    /// comes first: a derivation stepped from outside ([`super::Stepper`]) goes one step of
+    /// time at a time.
+    pub(super) fn until(&mut self, t: f64) {
+        self.end = (t * self.dt).min(self.last);
     }
 
     /// The time reached, as a growth time (in steps: model time / `#dt`), kept to 12 decimals
@@ -145,4 +155,28 @@ impl Clock {
 /// `x` to 9 decimals, for messages (0.010000999999999104 is 0.010001).
 fn rounded(x: f64) -> f64 {
     (x * 1e9).round() / 1e9
+}
+
+impl<R: rand::Rng> super::Run<'_, '_, R> {
+    /// The rounds of a timed derivation from the clock's time to its end, counted on from
+    /// `round`; every module aged to the end.
+    pub(super) fn rounds(
+        &mut self,
+        clock: &mut Clock,
+        round: &mut u32,
+        tracked: bool,
+    ) -> Result<(), Diagnostic> {
+        let model = self.rewriter.model;
+        while let Some(plan) = clock.next_round(&mut self.current) {
+            if *round == model.settings.max_steps {
+                return Err(clock.too_many_rounds(model));
+            }
+            *round += 1;
+            self.timed_plan = Some(plan);
+            self.step(*round, tracked)?;
+            self.stamp_trace(clock);
+        }
+        self.trace_ageing(clock, *round)?;
+        Ok(())
+    }
 }

@@ -199,20 +199,39 @@ pub(super) fn run_stages(
     result.continued_from = from.and_then(|f| f.resume.as_ref()).map(|r| r.steps);
     let first = result.continued_from.unwrap_or(0);
     watch.hooks.tell(Progress::Derived { step: first, steps });
-    // A timed grammar's rounds of replacements may outnumber its steps: progress stays within.
-    let mut stepped = |step: u32| {
-        watch.hooks.tell(Progress::Derived {
-            step: step.min(steps),
-            steps,
-        })
-    };
-    let derived = derive_stage(&model, derive, from, count, &mut result, &mut stepped);
+    let derived = derive_told(&model, derive, from, count, &mut result, watch.hooks, steps);
     watch.timings.derive = watch.lap();
     if let Some(adjustments) = derived {
         interpret_and_mesh(&model, options, steps, adjustments, &mut result, watch);
     }
     result.model = Some(model);
     result
+}
+
+/// The derive stage ([`derive_stage`], or the environment's cycle when the grammar declares an
+/// environment), telling `hooks` each of the `steps` steps done (and each answer pass).
+fn derive_told(
+    model: &Model,
+    derive: DeriveOptions,
+    from: Option<&Derivation>,
+    count: bool,
+    result: &mut Build,
+    hooks: &mut Hooks,
+    steps: u32,
+) -> Option<Option<Adjustments>> {
+    #[cfg(feature = "environment")]
+    if super::environment::runs(model) {
+        let mut told = |progress: Progress| hooks.tell(progress.within(steps));
+        return super::environment::derive_stage(model, derive, count, result, &mut told);
+    }
+    // A timed grammar's rounds of replacements may outnumber its steps: progress stays within.
+    let mut stepped = |step: u32| {
+        hooks.tell(Progress::Derived {
+            step: step.min(steps),
+            steps,
+        })
+    };
+    derive_stage(model, derive, from, count, result, &mut stepped)
 }
 
 /// What the turtle drew: a sketch's lines, or the skeleton.

@@ -4,10 +4,11 @@
 //! plants' parts, and every `?E` is answered at its place. Derive and the turtle know nothing of
 //! it: this file is where they meet the programs of [`crate::environment`].
 
+use super::environment_answers::{self as answers, Answers, Asker};
 use super::environment_view::EnvironmentView;
-use super::observer::StageObserver;
+use super::observer::{Lent, StageObserver};
 use super::stand::Stand;
-use super::Build;
+use super::{Build, Progress};
 use crate::derive::{DeriveOptions, Generator, Stepper, TracedStep};
 use crate::diagnostics::Diagnostic;
 use crate::environment::{
@@ -18,12 +19,15 @@ use crate::model::{LString, Model, ModuleId, ProgramSpec};
 use crate::turtle::{self, Skeleton};
 use glam::DVec3;
 use rand::SeedableRng;
+use std::cell::RefCell;
 
-/// True when the build runs the cycle: the grammar declares a program or a stand, and is not
-/// timed (a timed grammar is derived as if it declared no environment, with a warning).
+/// True when the build runs the cycle: the grammar declares a program or a stand.
 pub(super) fn runs(model: &Model) -> bool {
-    !model.environment.is_empty() && !model.settings.timed()
+    !model.environment.is_empty()
 }
+
+/// The observers of a stand's plants, each lent to its plant's derivation and read between steps.
+type Observers<'m> = [RefCell<StageObserver<'m, 'static>>];
 
 /// The programs of one build and the places of its plants.
 struct Environment<'m> {
@@ -34,6 +38,11 @@ struct Environment<'m> {
     /// The values one `?E` is answered with: every program's reply, in the order declared.
     stride: usize,
     query: Option<ModuleId>,
+    /// The build's seed: each plant's reading draws from its own generator (a stochastic
+    /// homomorphism), seeded from it.
+    seed: u64,
+    /// The answer passes' buffers, kept between passes.
+    answers: Answers,
 }
 
 impl<'m> Environment<'m> {
@@ -62,51 +71,83 @@ impl<'m> Environment<'m> {
             programs,
             places,
             query: model.environment_query(),
+            seed,
+            answers: Answers::default(),
         })
     }
 
-    /// Answers every `?E` of every plant's string now: each string interpreted, every program
+    /// Answers every `?E` of every plant's string now, after step `step` (0: the axiom): the
+    /// `?E` counted against the budget first, then each plant read as it is drawn, every program
     /// updated with all the parts, then asked. Nothing when no string holds a `?E`.
     fn answer<R: rand::Rng>(
         &mut self,
         plants: &mut [Stepper<'_, '_, R>],
+        observers: &Observers<'_>,
+        step: u32,
+        answering: &mut dyn FnMut(u32),
     ) -> Result<(), Diagnostic> {
         let Some(query) = self.query else {
             return Ok(());
         };
-        if self.programs.is_empty() || !plants.iter().any(|p| p.string().ids.contains(&query)) {
+        if self.programs.is_empty() {
             return Ok(());
         }
-        let mut parts = Vec::new();
-        let mut asked = Vec::new();
-        for (k, plant) in plants.iter().enumerate() {
-            let skeleton = turtle::interpret(self.model, plant.string());
-            add_parts(&skeleton, self.places[k], k as u32, &mut parts);
-            asked.extend(skeleton.environment_queries.iter().map(|q| (k, q.clone())));
+        let strings = plants.iter().map(|p| p.string());
+        let n = answers::check(self.model, query, strings, self.stride, step)?;
+        if n == 0 {
+            return Ok(());
         }
-        self.update(&parts)?;
-        let replies = {
-            let probes: Vec<Probe<'_>> = asked
-                .iter()
-                .map(|(k, q)| Probe {
-                    position: (DVec3::from_array(q.position) + self.places[*k]).to_array(),
+        answering(step);
+        self.answers.reset(n, self.stride);
+        let mut parts = Vec::new();
+        let mut probes: Vec<Probe<'_>> = Vec::with_capacity(n);
+        for (k, plant) in plants.iter().enumerate() {
+            let seed = self.seed.wrapping_add(k as u64) ^ (u64::from(step) << 32);
+            let shown = plant.shown(seed)?;
+            let (string, origin) = match &shown {
+                Some(shown) => (&shown.string, &shown.origin[..]),
+                None => (plant.string(), &[][..]),
+            };
+            let adjustments = observers[k].borrow().adjustments(origin);
+            let skeleton = turtle::interpret_adjusted(self.model, string, adjustments.as_ref());
+            add_parts(&skeleton, self.places[k], k as u32, &mut parts);
+            let mut last = None;
+            for q in &skeleton.environment_queries {
+                // The `?E` of the derived string it is drawn from: its first image answers it.
+                let module = match origin {
+                    [] => q.module,
+                    _ => origin[q.module as usize],
+                };
+                if plant.string().ids.get(module as usize) != Some(&query) || last == Some(module) {
+                    continue;
+                }
+                last = Some(module);
+                probes.push(Probe {
+                    position: (DVec3::from_array(q.position) + self.places[k]).to_array(),
                     heading: q.heading,
                     up: q.up,
-                    args: plants[*k].string().params_of(q.module as usize),
-                    plant: *k as u32,
-                })
-                .collect();
-            let mut replies = vec![0.0; probes.len() * self.stride];
-            let mut offset = 0;
-            for (program, _) in &mut self.programs {
-                program.answer(&probes, &mut replies, self.stride, offset);
-                offset += program.reply_len();
+                    args: plant.string().params_of(module as usize),
+                    plant: k as u32,
+                });
+                self.answers.askers.push(Asker {
+                    plant: k as u32,
+                    module,
+                });
             }
-            replies
-        };
-        for (i, (k, q)) in asked.iter().enumerate() {
-            let reply = &replies[i * self.stride..][..self.stride];
-            write_reply(plants[*k].string_mut(), q.module as usize, reply);
+        }
+        self.update(&parts)?;
+        drop(parts);
+        let replies = &mut self.answers.replies[..probes.len() * self.stride];
+        let mut offset = 0;
+        for (program, _) in &mut self.programs {
+            program.answer(&probes, replies, self.stride, offset);
+            offset += program.reply_len();
+        }
+        drop(probes);
+        for (i, asker) in self.answers.askers.iter().enumerate() {
+            let reply = &self.answers.replies[i * self.stride..][..self.stride];
+            let string = plants[asker.plant as usize].string_mut();
+            write_reply(string, asker.module as usize, reply);
         }
         for plant in plants.iter_mut() {
             plant.written();
@@ -121,7 +162,7 @@ impl<'m> Environment<'m> {
                 .filter(|(j, _)| *j != k)
                 .map(|(_, (p, _))| p.bytes())
                 .sum();
-            let budget = MAX_ENVIRONMENT_BYTES.saturating_sub(others);
+            let budget = MAX_ENVIRONMENT_BYTES.saturating_sub(others + self.answers.bytes());
             let (program, spec) = &mut self.programs[k];
             if let Err(exceeded) = program.update(parts, budget) {
                 return Err(over_budget(spec, &exceeded));
@@ -202,14 +243,14 @@ fn add_parts(skeleton: &Skeleton, place: DVec3, plant: u32, parts: &mut Vec<Part
 }
 
 /// Derives every plant of `model` in lockstep with the environment answering between steps, into
-/// `result`, telling `stepped` each step done (and again once the environment has answered it);
+/// `result`, telling `stepped` each step done and each answer pass as it starts;
 /// returns the turtle's adjustments (growth's, for a single plant), or `None` when it failed.
 pub(super) fn derive_stage(
     model: &Model,
     options: DeriveOptions,
     count: bool,
     result: &mut Build,
-    stepped: &mut dyn FnMut(u32),
+    stepped: &mut dyn FnMut(Progress),
 ) -> Option<Option<Adjustments>> {
     result.diagnostics.extend(warnings(model));
     match lockstep(model, &options, count, false, stepped) {
@@ -240,7 +281,12 @@ pub(super) fn derive_stage(
                 }
             }
             result.step_counts = counts;
-            let placed = Stand::new(model).place(derivations);
+            let stand = Stand::new(model);
+            let adjustments = (observers.iter().zip(&derivations))
+                .map(|(o, d)| o.adjustments(&d.turtle_origin))
+                .collect();
+            let adjustments = stand.adjustments(adjustments);
+            let placed = stand.place(derivations);
             result.plant_offsets = model
                 .environment
                 .plants
@@ -249,7 +295,7 @@ pub(super) fn derive_stage(
                 .collect();
             result.derivation = placed;
             result.derived_with = options;
-            Some(None)
+            Some(adjustments)
         }
         Err(diagnostic) => {
             result.diagnostics.push(diagnostic);
@@ -278,38 +324,44 @@ struct Derived<'m> {
     view: EnvironmentView,
 }
 
-/// Every plant derived in lockstep, the environment answering after the axiom and every step.
-/// Plant i derives with the seed `seed + i`; growth attributes follow a single plant only.
+/// Every plant derived in lockstep, the environment answering after the axiom and every step
+/// (a timed grammar's step: one step of growth time). Plant i derives with the seed `seed + i`,
+/// its growth attributes followed by its own observer.
 fn lockstep<'m>(
     model: &'m Model,
     options: &DeriveOptions,
     count: bool,
     traced: bool,
-    stepped: &mut dyn FnMut(u32),
+    stepped: &mut dyn FnMut(Progress),
 ) -> Result<Derived<'m>, Diagnostic> {
     let seed = options.seed.unwrap_or(model.settings.seed);
     let mut environment = Environment::new(model, seed)?;
     let n = environment.places.len();
-    let single = model.environment.plants.is_empty();
     let mut rngs: Vec<Generator> = (0..n as u64)
         .map(|i| Generator::seed_from_u64(seed.wrapping_add(i)))
         .collect();
-    let mut observers: Vec<StageObserver<'m, 'static>> = (0..n)
-        .map(|_| StageObserver::new(model, options.steps, count, single))
+    let observers: Vec<RefCell<StageObserver<'m, 'static>>> = (0..n)
+        .map(|_| RefCell::new(StageObserver::new(model, options.steps, count, true)))
         .collect();
+    let mut lent: Vec<Lent<'_, 'm, 'static>> = observers.iter().map(Lent).collect();
     let mut plants = Vec::with_capacity(n);
-    for (rng, observer) in rngs.iter_mut().zip(observers.iter_mut()) {
-        plants.push(Stepper::start(model, options.steps, rng, observer, traced)?);
+    let when = (options.steps, options.time);
+    for (rng, observer) in rngs.iter_mut().zip(lent.iter_mut()) {
+        plants.push(Stepper::start(model, when, rng, observer, traced)?);
     }
-    environment.answer(&mut plants)?;
-    for step in 1..=options.steps {
+    let steps = options.steps;
+    environment.answer(&mut plants, &observers, 0, &mut |step| {
+        stepped(Progress::Environment { step, steps })
+    })?;
+    for step in 1..=steps {
         for plant in &mut plants {
             plant.step()?;
         }
         check_stand_size(model, step, &plants)?;
-        stepped(step);
-        environment.answer(&mut plants)?;
-        stepped(step);
+        stepped(Progress::Derived { step, steps });
+        environment.answer(&mut plants, &observers, step, &mut |step| {
+            stepped(Progress::Environment { step, steps })
+        })?;
     }
     let mut derivations = Vec::with_capacity(n);
     let mut traces = Vec::with_capacity(n);
@@ -318,9 +370,10 @@ fn lockstep<'m>(
         derivations.push(derivation);
         traces.push(trace);
     }
+    drop(lent);
     Ok(Derived {
         derivations,
-        observers,
+        observers: observers.into_iter().map(RefCell::into_inner).collect(),
         traces,
         view: EnvironmentView::of(&environment.programs),
     })
@@ -369,7 +422,7 @@ fn check_stand_size<R: rand::Rng>(
 }
 
 /// Warnings about an environment that will not answer: programs declared and no `?E` written
-/// (`E0409`); a stand of a grammar with growth attributes, which only a single plant follows.
+/// (`E0409`).
 fn warnings(model: &Model) -> Vec<Diagnostic> {
     let mut warnings = Vec::new();
     let first = model.environment.programs.first();
@@ -379,15 +432,6 @@ fn warnings(model: &Model) -> Vec<Diagnostic> {
             spec.span.clone(),
             "no communication module ?E asks the environment: the programs are not run; write \
              ?E(…) where the plant should read their replies"
-                .to_string(),
-        ));
-    }
-    if !model.environment.plants.is_empty() && model.growth.is_active() {
-        let span = model.settings.iterations_span.clone().unwrap_or(0..0);
-        warnings.push(Diagnostic::warning(
-            "E0409",
-            span,
-            "the growth attributes follow a single plant: the plants of a stand grow without them"
                 .to_string(),
         ));
     }
@@ -426,9 +470,12 @@ mod tests {
         environment.programs[0].0 = Box::new(Greedy);
         let mut rng = Generator::seed_from_u64(1);
         let mut observer = crate::derive::Unobserved;
-        let mut plants = vec![Stepper::start(&model, 1, &mut rng, &mut observer, false).unwrap()];
+        let when = (1, None);
+        let mut plants =
+            vec![Stepper::start(&model, when, &mut rng, &mut observer, false).unwrap()];
+        let observers = [RefCell::new(StageObserver::new(&model, 1, false, true))];
         let error = environment
-            .answer(&mut plants)
+            .answer(&mut plants, &observers, 0, &mut |_| {})
             .expect_err("over the budget");
         assert_eq!(error.code, "E0408");
         assert_eq!(&source[error.span.clone()], source.lines().next().unwrap());

@@ -48,6 +48,40 @@ pub enum Progress {
     /// `step` of the derivation's `steps` steps are done: told with 0 as derivation starts, then
     /// after each step, so a long derivation can say "step k of n".
     Derived { step: u32, steps: u32 },
+    /// The environment answers the `?E` of the plant of `step` (0: the axiom) of `steps`: told
+    /// as each answer pass starts (only when one runs), so the progress line can say
+    /// "environment, step k of n" while the programs work.
+    #[cfg(feature = "environment")]
+    Environment { step: u32, steps: u32 },
+}
+
+impl Progress {
+    /// What a progress line calls it: the stage's label, `environment` for an answer pass.
+    pub fn label(self) -> &'static str {
+        match self {
+            Progress::Started(stage) => stage.label(),
+            Progress::Derived { .. } => Stage::Derive.label(),
+            #[cfg(feature = "environment")]
+            Progress::Environment { .. } => "environment",
+        }
+    }
+
+    /// The same progress with its step kept within `steps` (a timed grammar's rounds of
+    /// replacements may outnumber its steps), out of `steps`.
+    #[cfg(feature = "environment")]
+    pub(super) fn within(self, steps: u32) -> Progress {
+        match self {
+            Progress::Derived { step, .. } => Progress::Derived {
+                step: step.min(steps),
+                steps,
+            },
+            Progress::Environment { step, .. } => Progress::Environment {
+                step: step.min(steps),
+                steps,
+            },
+            started => started,
+        }
+    }
 }
 
 /// What a caller lends a build. Both are optional; neither changes the result.

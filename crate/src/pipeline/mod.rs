@@ -28,6 +28,8 @@ mod editor;
 #[cfg(feature = "environment")]
 mod environment;
 #[cfg(feature = "environment")]
+mod environment_answers;
+#[cfg(feature = "environment")]
 mod environment_view;
 mod export;
 mod hooks;

@@ -22,23 +22,8 @@ pub(super) fn derive_stage(
     stepped: &mut dyn FnMut(u32),
 ) -> Option<Option<Adjustments>> {
     #[cfg(feature = "environment")]
-    if super::environment::runs(model) {
-        return super::environment::derive_stage(model, options, count, result, stepped);
-    }
-    #[cfg(feature = "environment")]
     if let Some(warning) = unanswered(model) {
         result.diagnostics.push(warning);
-    }
-    #[cfg(feature = "environment")]
-    if !model.environment.is_empty() {
-        // A timed grammar (the only one with an environment that gets here).
-        result.diagnostics.push(Diagnostic::warning(
-            "E0409",
-            model.settings.terminal_age_span.clone().unwrap_or(0..0),
-            "a timed grammar is derived without its environment: the environment answers ?E \
-             between whole steps, and timed modules are replaced between them"
-                .to_string(),
-        ));
     }
     let mut observer = StageObserver::new(model, options.steps, count, true);
     observer.stepped = Some(stepped);
@@ -112,6 +97,14 @@ impl<'m> StageObserver<'m, '_> {
         result.derivation = derivation;
         result.derived_with = options;
         adjustments
+    }
+
+    /// Growth's adjustments of the string the turtle reads now, whose module i comes from module
+    /// `origin[i]` of the derived string (empty: it is the derived string); `None` without growth
+    /// attributes.
+    #[cfg(feature = "environment")]
+    pub(super) fn adjustments(&self, origin: &[u32]) -> Option<Adjustments> {
+        self.growth.as_ref().map(|g| g.adjustments(origin))
     }
 
     /// The elements after each step, when counted, the last step's `last` string counted too.
@@ -234,6 +227,49 @@ impl derive::Observer for StageObserver<'_, '_> {
     }
 }
 
+/// A [`StageObserver`] lent to a derivation through a shared cell, so that its owner reads its
+/// growth between steps while the derivation holds it (the environment's cycle reads each plant
+/// as drawn, growth's adjustments included). The derivation and the owner take turns: never both
+/// at once.
+#[cfg(feature = "environment")]
+pub(super) struct Lent<'c, 'm, 's>(pub(super) &'c std::cell::RefCell<StageObserver<'m, 's>>);
+
+#[cfg(feature = "environment")]
+impl derive::Observer for Lent<'_, '_, '_> {
+    fn follows_modules(&self) -> bool {
+        self.0.borrow().follows_modules()
+    }
+
+    fn axiom(&mut self, axiom: &LString, rng: &mut dyn rand::Rng) {
+        self.0.borrow_mut().axiom(axiom, rng);
+    }
+
+    fn plan(
+        &mut self,
+        step: u32,
+        s: &LString,
+        rng: &mut dyn rand::Rng,
+    ) -> Result<Option<Vec<u32>>, Diagnostic> {
+        self.0.borrow_mut().plan(step, s, rng)
+    }
+
+    fn followed(&mut self, written: &Written<'_>, rng: &mut dyn rand::Rng) {
+        self.0.borrow_mut().followed(written, rng);
+    }
+
+    fn cut(&mut self, kept: &[u32]) {
+        self.0.borrow_mut().cut(kept);
+    }
+
+    fn stepped(&mut self, step: u32) {
+        self.0.borrow_mut().stepped(step);
+    }
+
+    fn queries(&mut self, s: &LString) -> Vec<(u32, [f64; 3])> {
+        self.0.borrow_mut().queries(s)
+    }
+}
+
 /// `E0409` when the grammar writes `?E` and declares no program to answer it (its parameters
 /// stay as written). Only the studio core says so: the first plant's has no room for it, and runs
 /// no environment anyway.
@@ -257,7 +293,10 @@ fn unanswered(model: &Model) -> Option<Diagnostic> {
 
 /// Where module `id` is first written, in the axiom or a successor.
 #[cfg(feature = "environment")]
-fn first_written(model: &Model, id: crate::model::ModuleId) -> Option<crate::syntax::Span> {
+pub(super) fn first_written(
+    model: &Model,
+    id: crate::model::ModuleId,
+) -> Option<crate::syntax::Span> {
     fn find(
         modules: &[crate::model::SuccessorModule],
         id: crate::model::ModuleId,

@@ -6,6 +6,7 @@
 //! no production.
 
 use crate::derive::{Assembled, Derivation, TracedStep, NOT_REWRITTEN};
+use crate::growth::{Adjustments, ModuleAdjustment};
 use crate::model::{LString, Model, ModuleId};
 use crate::vocabulary::{name_of, Command, Meaning};
 
@@ -136,6 +137,26 @@ impl Stand {
             warnings,
         }
         .into()
+    }
+
+    /// Growth's adjustments of the placed string the turtle reads, from each plant's own (of its
+    /// own turtle string, in order): the modules that place the plants are not adjusted. `None`
+    /// when no plant has any (a grammar without growth attributes).
+    pub(super) fn adjustments(&self, plants: Vec<Option<Adjustments>>) -> Option<Adjustments> {
+        let first = plants.iter().flatten().next()?;
+        let mut placed = Adjustments {
+            attractors: first.attractors,
+            scales_length: first.scales_length,
+            scales_width: first.scales_width,
+            modules: Vec::new(),
+        };
+        let still = ModuleAdjustment::default;
+        for plant in plants.into_iter().flatten() {
+            placed.modules.extend((0..BEFORE).map(|_| still()));
+            placed.modules.extend(plant.modules);
+            placed.modules.extend(self.after().map(|_| still()));
+        }
+        Some(placed)
     }
 
     /// The plants' traces (the same number of steps each) as one: step k shows every plant at

@@ -64,12 +64,12 @@ fn read_clock(clock: Option<&js_sys::Function>) -> f64 {
         .unwrap_or(0.0)
 }
 
-/// Tells `progress(stage, step, steps)`, when there is one; one that throws changes nothing.
-fn tell(progress: Option<&js_sys::Function>, stage: Stage, step: u32, steps: u32) {
+/// Tells `progress(label, step, steps)`, when there is one; one that throws changes nothing.
+fn tell(progress: Option<&js_sys::Function>, label: &str, step: u32, steps: u32) {
     if let Some(f) = progress {
         let _ = f.call3(
             &JsValue::NULL,
-            &JsValue::from_str(stage.label()),
+            &JsValue::from_str(label),
             &JsValue::from_f64(step.into()),
             &JsValue::from_f64(steps.into()),
         );
@@ -87,8 +87,10 @@ pub(super) fn build_reading(
 ) -> PlantBuild {
     let mut now = || read_clock(clock);
     let mut told = |p: Progress| match p {
-        Progress::Started(stage) => tell(progress, stage, 0, 0),
-        Progress::Derived { step, steps } => tell(progress, Stage::Derive, step, steps),
+        Progress::Started(stage) => tell(progress, stage.label(), 0, 0),
+        Progress::Derived { step, steps } => tell(progress, Stage::Derive.label(), step, steps),
+        #[cfg(feature = "environment")]
+        Progress::Environment { step, steps } => tell(progress, p.label(), step, steps),
     };
     let mut hooks = Hooks {
         clock: clock.map(|_| &mut now as &mut dyn FnMut() -> f64),
@@ -166,7 +168,7 @@ impl PlantBuild {
                 &JsValue::from_f64(segments as f64),
             )?;
         }
-        tell(progress, Stage::Mesh, 0, 0);
+        tell(progress, Stage::Mesh.label(), 0, 0);
         Ok(())
     }
 

@@ -1,5 +1,5 @@
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
-import type { PlantBuild } from '../core';
+import type { BuildStage, PlantBuild } from '../core';
 import { FakeJobWorker } from './fake-job-worker';
 import { BuildClient, type BuildOutcome, type WorkerLike } from './worker-client';
 import type { InspectAnswer, WorkerRequest, WorkerResponse } from './worker-protocol';
@@ -30,8 +30,8 @@ class FakeWorker extends FakeJobWorker<WorkerRequest, WorkerResponse> implements
     this.send({ kind: 'sketch', id, sketch });
   }
   /** Tells request `id`'s progress (default: the last one's). */
-  progress(step: number, steps: number, id = this.requests.at(-1)!.id): void {
-    this.send({ kind: 'progress', id, progress: { stage: 'deriving', step, steps } });
+  progress(step: number, steps: number, id = this.requests.at(-1)!.id, stage: BuildStage = 'deriving'): void {
+    this.send({ kind: 'progress', id, progress: { stage, step, steps } });
   }
   override fail(message = 'no module'): void {
     super.fail(message);
@@ -280,6 +280,19 @@ describe('BuildClient: progress, Stop and failures', () => {
     expect(workers[1].requests.map((r) => r.source)).toEqual(['next']);
     latest().answer();
     expect(source(await next)).toBe('next');
+  });
+
+  it('stops a build while the environment answers: the pass is ended with its worker', async () => {
+    const told: string[] = [];
+    const slow = client.request('light', {}, { onProgress: (p) => told.push(`${p.stage} ${p.step}/${p.steps}`) });
+    latest().progress(3, 40);
+    latest().progress(3, 40, undefined, 'environment');
+    expect(told).toEqual(['deriving 3/40', 'environment 3/40']);
+    expect(client.stop()).toBe(true);
+    expect(await slow).toEqual({ kind: 'stopped' });
+    expect(workers[0].terminated, 'the pass runs in the worker: terminated, it ends at once').toBe(true);
+    workers[0].progress(4, 40, undefined, 'environment'); // the dead worker's late word is not shown
+    expect(told).toHaveLength(2);
   });
 
   it('reports a worker that fails to start', async () => {

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { readFileSync } from 'node:fs';
 import { initCore, inspectPlant } from '../core';
-import { answerTransferables, transferablesOf } from './worker-protocol';
+import { answerTransferables, progressWanted, PROGRESS_INTERVAL, transferablesOf } from './worker-protocol';
 
 await initCore(readFileSync(new URL('../../../crate/pkg-core/meristem_core_bg.wasm', import.meta.url)));
 
@@ -29,5 +29,18 @@ describe('answerTransferables', () => {
     expect(answerTransferables(['F'])).toEqual([]);
     expect(answerTransferables(null)).toEqual([]);
     expect(answerTransferables('abc')).toEqual([]);
+  });
+});
+
+describe('progressWanted', () => {
+  it('lets the environment pass through after a step at once, and steps and passes in time', () => {
+    const soon = PROGRESS_INTERVAL / 2;
+    expect(progressWanted('', 'parsing', 0), 'a stage start').toBe(true);
+    expect(progressWanted('deriving', 'deriving', soon), 'a step soon after a step').toBe(false);
+    expect(progressWanted('deriving', 'environment', soon), 'the pass after a step, however soon').toBe(true);
+    expect(progressWanted('environment', 'deriving', soon), 'a step soon after a pass').toBe(false);
+    expect(progressWanted('environment', 'environment', soon), 'a pass soon after a pass').toBe(false);
+    expect(progressWanted('environment', 'deriving', PROGRESS_INTERVAL), 'a step in time').toBe(true);
+    expect(progressWanted('environment', 'interpreting', soon), 'the next stage').toBe(true);
   });
 });

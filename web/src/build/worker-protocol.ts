@@ -50,6 +50,18 @@ export const SKETCH_MIN_SEGMENTS = 20_000;
 /** The shortest time between two progress messages of one build (ms): a stage's start always goes. */
 export const PROGRESS_INTERVAL = 50;
 
+/**
+ * Whether a build's progress at stage `next` goes to the page `sinceMs` after the last one sent
+ * (at stage `last`): every stage start, steps at most every {@link PROGRESS_INTERVAL} ms. Between
+ * steps the environment's pass goes after any step (it may be the long part), a step after it
+ * only in time: the line never says "step" while the environment works, nor sends two messages a
+ * step.
+ */
+export function progressWanted(last: string, next: BuildProgress['stage'], sinceMs: number): boolean {
+  if (sinceMs >= PROGRESS_INTERVAL) return true;
+  return next !== last && !(last === 'environment' && next === 'deriving');
+}
+
 /** Worker → page. */
 export type WorkerResponse =
   /** Build `id` is at this stage or derivation step (at most one per {@link PROGRESS_INTERVAL}, besides stage starts). */

@@ -15,7 +15,7 @@ import { CoreCrashed, initCore, inspectPlant, loadStudioCore, needsStudioCore, p
 import {
   answerTransferables,
   type CoreMessage,
-  PROGRESS_INTERVAL,
+  progressWanted,
   SKETCH_MIN_SEGMENTS,
   transferablesOf,
   type InspectAnswer,
@@ -120,13 +120,13 @@ function answer(inspector: PlantInspector | undefined, question: InspectQuestion
   return method.apply(inspector, args);
 }
 
-/** Tells the page build `id`'s progress: every stage start, derivation steps at most every {@link PROGRESS_INTERVAL} ms. */
+/** Tells the page build `id`'s progress, as much of it as {@link progressWanted} lets through. */
 function progressTeller(id: number): (progress: BuildProgress) => void {
   let last = -Infinity;
   let stage = '';
   return (progress) => {
     const now = performance.now();
-    if (progress.stage === stage && now - last < PROGRESS_INTERVAL) return;
+    if (!progressWanted(stage, progress.stage, now - last)) return;
     stage = progress.stage;
     last = now;
     reply({ kind: 'progress', id, progress });

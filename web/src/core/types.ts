@@ -107,12 +107,16 @@ export interface GpuArrays {
  */
 export type BuildOptions = Omit<CoreBuildOptions, 'sketch' | 'sketchFirst'> & { tubes?: boolean | 'unlessFlat' };
 
-/** A stage of a build, as the core reports it (in this order). */
-export type BuildStage = 'parsing' | 'deriving' | 'interpreting' | 'meshing';
+/**
+ * A stage of a build, as the core reports it (in this order); `environment` alternates with
+ * `deriving` while the environment answers `?E` between steps (docs/LANGUAGE.md, "Environment").
+ */
+export type BuildStage = 'parsing' | 'deriving' | 'environment' | 'interpreting' | 'meshing';
 
 /**
  * Where a build is: the stage that just started, and while deriving, `step` of the `steps`
- * derivation steps done (told from 0 of n, then after each step; both 0 in the other stages).
+ * derivation steps done (told from 0 of n, then after each step; both 0 in the other stages);
+ * `environment`: the environment answers the `?E` of the plant of step `step` (0: the axiom).
  */
 export interface BuildProgress {
   stage: BuildStage;

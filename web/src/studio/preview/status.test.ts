@@ -66,5 +66,8 @@ describe('status line', () => {
     expect(reportBuilding({ stage: 'deriving', step: 0, steps: 0 }, 400).text).toBe('Building… deriving');
     expect(reportBuilding({ stage: 'deriving', step: 1234, steps: 5000 }, 2500).text).toBe('Building… step 1,234 of 5,000 · 2 s');
     expect(reportBuilding({ stage: 'meshing', step: 0, steps: 0 }, 61_000).text).toBe('Building… meshing · 61 s');
+    // The environment answering between steps says so, with the step whose plant it answers.
+    expect(reportBuilding({ stage: 'environment', step: 12, steps: 40 }, 3200).text).toBe('Building… environment, step 12 of 40 · 3 s');
+    expect(reportBuilding({ stage: 'environment', step: 0, steps: 0 }, 400).text).toBe('Building… environment');
   });
 });

@@ -66,18 +66,20 @@ export function reportErrors(diagnostics: readonly Diagnostic[], hasPlant: boole
 const BUILDING: Record<BuildProgress['stage'], string> = {
   parsing: 'reading the grammar',
   deriving: 'deriving',
+  environment: 'environment',
   interpreting: 'drawing the turtle’s path',
   meshing: 'meshing',
 };
 
 /**
  * The status while a build runs: `Building… step 12 of 40 · 3 s` (the stage, or the derivation
- * step it has reached, and after a second the time so far). Never a plant's figures: the plant on
+ * step it has reached, and after a second the time so far); `Building… environment, step 12 of 40`
+ * while the environment answers the plant of step 12. Never a plant's figures: the plant on
  * screen may be of an older text.
  */
 export function reportBuilding(progress: BuildProgress | undefined, elapsedMs: number): { state: 'building'; text: string } {
   let doing = '';
-  if (progress?.stage === 'deriving' && progress.steps > 0) doing = ` step ${count.format(progress.step)} of ${count.format(progress.steps)}`;
+  if (progress?.steps) doing = `${progress.stage === 'environment' ? ' environment,' : ''} step ${count.format(progress.step)} of ${count.format(progress.steps)}`;
   else if (progress) doing = ` ${BUILDING[progress.stage]}`;
   const time = elapsedMs >= 1000 ? ` · ${Math.floor(elapsedMs / 1000)} s` : '';
   return { state: 'building', text: `Building…${doing}${time}` };
