@@ -3,6 +3,7 @@
 // Numbers show 6 significant digits, the exact text in the module's tooltip (module-text.ts).
 import type { PlantInspector } from '../../core';
 import { shortModuleText } from './module-text';
+import './string-panel.css';
 
 /** Modules per row of the panel. */
 export const MODULES_PER_ROW = 40;
