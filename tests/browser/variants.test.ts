@@ -143,7 +143,12 @@ describe('Variants', () => {
   it('stops a long growing at once, and grows again when asked', async () => {
     await page.getByTestId('variants-add-empty').click();
     const card = page.getByTestId('variant-card').nth(3);
-    await card.getByTestId('variant-text').fill('#iterations 8\naxiom: F\nF -> F[+F]F[-F]F\n'); // 5^8 segments in tubes: seconds of work
+    // 2^19 modules rewritten 180 more times: seconds of derivation with nothing to draw (a line-heavy
+    // plant would be meshed, or refused by a limit, too fast for a click to land on a fast machine).
+    await card.getByTestId('variant-text').fill('#iterations 200\naxiom: A(0)\nA(n) : n < 19 -> A(n+1)A(n+1)\nA(n) : n >= 19 -> A(n+1)\n');
+    // Stop shows from the first key: it also cancels a growing still waiting for a pause in the typing.
+    expect(await page.getByTestId('variants-stop').isVisible()).toBe(true);
+    await expect.poll(() => status().textContent()).toMatch(/\(4 of 4\)/);
     await page.getByTestId('variants-stop').click();
     await expect.poll(() => status().textContent()).toMatch(/^Stopped/);
     expect(await page.getByTestId('variants-stop').isHidden()).toBe(true);

@@ -192,6 +192,7 @@ export class VariantsMode {
   private edited(): void {
     clearTimeout(this.typing);
     this.ticket++; // what was being grown is for the old texts
+    this.bar.growing(true); // Stop works from the first key: it also cancels the pending growing
     this.bar.say('growing', 'Growing…');
     this.typing = setTimeout(() => void this.grow(), TYPING_MS);
   }
