@@ -67,14 +67,27 @@ fn cli(args: &[&Path]) -> Result<String, Outcome> {
     Ok(String::from_utf8_lossy(&out.stdout).to_string())
 }
 
+/// What the CLI said, without the machine's folders (the item's own path and the scratch file).
+fn plain(outcome: Outcome, scratch: &Path) -> Outcome {
+    let strip = |s: String| {
+        s.replace(&format!("{}/", root().display()), "")
+            .replace(&format!("{}/", scratch.display()), "")
+    };
+    match outcome {
+        Outcome::Nothing(why) => Outcome::Nothing(strip(why)),
+        Outcome::Crash(why) => Outcome::Crash(strip(why)),
+        other => other,
+    }
+}
+
 fn open(item: &Path, scratch: &Path) -> Outcome {
     let grammar = scratch.join("grammar.lsys");
     if let Err(outcome) = cli(&[Path::new("import"), item, Path::new("-o"), &grammar]) {
-        return outcome;
+        return plain(outcome, scratch);
     }
     let stats = match cli(&[Path::new("derive"), &grammar, Path::new("--stats")]) {
         Ok(stdout) => stdout,
-        Err(outcome) => return outcome,
+        Err(outcome) => return plain(outcome, scratch),
     };
     let stats: serde_json::Value =
         serde_json::from_str(stats.lines().last().unwrap_or("")).unwrap_or_default();
@@ -177,7 +190,11 @@ fn report(all: &[(String, String)], results: &BTreeMap<String, Outcome>) {
         );
     }
     let built: usize = shares.values().map(|s| s.0).sum();
-    println!("all: {built} of {} (each outcome: {})", all.len(), path.display());
+    println!(
+        "all: {built} of {} (each outcome: {})",
+        all.len(),
+        path.display()
+    );
 }
 
 fn check(
