@@ -10,6 +10,8 @@ from __future__ import annotations
 import inspect
 import time
 
+_now = time.monotonic
+
 from .lpy_errors import LimitReached
 from .lpy_match import match_left, match_pred, match_right
 from .lstring import Lstring, to_modules
@@ -35,6 +37,32 @@ def rule_table(rt, kind: str) -> dict:
 
 def try_rule(rt, rule, s, i, new, forward: bool):
     """(modules, length) when `rule` rewrites at `i` (forwards: starts there; backwards: ends)."""
+    if rule.simple:
+        args = s[i].args
+        if len(args) != rule.nargs:
+            return None
+        length = 1
+    else:
+        got = match_rule(rt, rule, s, i, new, forward)
+        if got is None:
+            return None
+        args, length = got
+    if _now() > rt.deadline:
+        raise LimitReached(f"the derivation passed the time limit ({rt.options.get('time_limit', 50)} s)")
+    buffered = rt.nbuf
+    buffered.clear()
+    result = rule.func(*args)
+    if result is None:
+        if not buffered:
+            return None
+        return buffered[:], length
+    if type(result) is not list:
+        result = to_modules(result)
+    return (buffered + result if buffered else result), length
+
+
+def match_rule(rt, rule, s, i, new, forward: bool):
+    """(bound parameters, predecessor length) when the rule's patterns match at `i`."""
     args: list = []
     start = i if forward else i - len(rule.pred) + 1
     if start < 0:
@@ -52,19 +80,7 @@ def try_rule(rt, rule, s, i, new, forward: bool):
         return None
     if rule.right and not match_right(rule.right, 0, s, end, args, filt):
         return None
-    if time.monotonic() > rt.deadline:
-        raise LimitReached(f"the derivation passed the time limit ({rt.options.get('time_limit', 50)} s)")
-    rt.nbuf = []
-    result = rule.func(*args)
-    buffered = rt.nbuf
-    rt.nbuf = []
-    if result is None:
-        if not buffered:
-            return None
-        return buffered, length
-    if type(result) is not list:
-        result = to_modules(result)
-    return (buffered + result if buffered else result), length
+    return args, length
 
 
 def rewrite(rt, s: list, kind: str) -> tuple[list, bool]:
@@ -74,6 +90,8 @@ def rewrite(rt, s: list, kind: str) -> tuple[list, bool]:
     if len(table) == 1 and not stars:
         return s, False
     applied = False
+    if type(s) is not list:
+        s = list(s)
     n = len(s)
     if rt.forward_dir:
         out: list = []

@@ -135,6 +135,19 @@ class Module:
         return Module(self.name, copy.deepcopy(self.args, memo))
 
 
+_new_module = object.__new__
+_set_name = Module.name.__set__
+_set_args = Module.args.__set__
+
+
+def make_module(name: str, args: list) -> Module:
+    """The fast constructor the translated rules call (`__M`)."""
+    m = _new_module(Module)
+    _set_name(m, name)
+    _set_args(m, args)
+    return m
+
+
 class Lstring(list):
     """A string of modules, with the `AxialTree` navigation models use."""
 
@@ -273,6 +286,11 @@ class ObjectTable:
 
 
 def format_arg(v) -> str:
+    t = type(v)
+    if t is float:
+        return repr(v) if v - v == 0 else "0"
+    if t is int:
+        return repr(v)
     if isinstance(v, (bool, int, float)):
         return format_number(v)
     if isinstance(v, str):
@@ -302,16 +320,22 @@ def format_module(m: Module) -> str:
     return f"{m.name}({','.join(format_arg(a) for a in args)})"
 
 
+def _is_word_char(c: str) -> bool:
+    return c.isalnum() or c == "_"
+
+
 def format_lstring(modules) -> str:
+    """Modules in L-Py's syntax; a blank separates two names that would otherwise fuse."""
     out = []
-    prev_ident = False
+    prev_word = False
     for m in modules:
-        text = format_module(m)
-        ident = m.name[-1:].isalnum() or m.name[-1:] == "_"
-        if prev_ident and not m.args and (text[:1].isalnum() or text[:1] == "_"):
-            out.append(" ")
-        elif prev_ident and (text[:1].isalnum() or text[:1] == "_"):
+        name, args = m.name, m.args
+        if args:
+            text = format_module(m)
+        else:
+            text = name
+        if prev_word and _is_word_char(text[0]):
             out.append(" ")
         out.append(text)
-        prev_ident = ident and not m.args
+        prev_word = not args and _is_word_char(name[-1])
     return "".join(out)
