@@ -18,7 +18,7 @@ from .lpy_errors import LimitReached, ModelError, from_exception
 from .lpy_lstring import LpySyntaxError
 from .lpy_match import ContextFilter, Pattern, match_left, match_pred, match_right
 from .lpy_source import translate
-from .lstring import Lstring, Module, make_module, predefined_names, to_modules
+from .lstring import Lstring, Module, StringReader, make_module, predefined_names, to_modules
 from . import plantgl_modules
 
 
@@ -89,6 +89,13 @@ class LpyRuntime:
             "getDerivationLength": lambda: rt.derivation_length,
         }
 
+    def read_string(self, text: str) -> list:
+        """A module string given as text while the model runs: its parameters are evaluated
+        in the model's namespace (they are the model's own expressions)."""
+        from .lpy_lstring import to_python
+
+        return eval(to_python(text, self.source.names), self.namespace)
+
     def nbuf_extend(self, mods):
         self.nbuf.extend(mods)
 
@@ -121,6 +128,7 @@ class LpyRuntime:
         except LpySyntaxError as e:
             raise ModelError(f"SyntaxError: {e.message}", e.line, e.column) from None
         src = self.source
+        StringReader.current = self.read_string
         Module.named.update({name: {p: i for i, p in enumerate(params)}
                              for name, params in src.declared.items() if params})
         ns = self.namespace

@@ -151,6 +151,11 @@ def make_module(name: str, args: list) -> Module:
 class Lstring(list):
     """A string of modules, with the `AxialTree` navigation models use."""
 
+    def __init__(self, value=()):
+        if isinstance(value, (str, Module)) or (type(value) is not list and not isinstance(value, Lstring)):
+            value = to_modules(value)
+        list.__init__(self, value)
+
     def __getitem__(self, i):
         got = list.__getitem__(self, i)
         return Lstring(got) if isinstance(i, slice) else got
@@ -231,14 +236,20 @@ class Lstring(list):
 AxialTree = Lstring
 
 
+class StringReader:
+    """Reads module strings given as text at run time (`Lstring("F(1)A")`): set by the run."""
+
+    current = None
+
+
 def to_modules(value) -> list:
     """A production's value (Lstring, list of modules/names/tuples, a string) as modules."""
     if isinstance(value, Module):
         return [value]
     if isinstance(value, str):
-        from .lpy_source import parse_lstring_value
-
-        return parse_lstring_value(value)
+        if StringReader.current is None:
+            raise TypeError("a string of modules outside a model run")
+        return StringReader.current(value)
     out = []
     for item in value:
         if isinstance(item, Module):
@@ -327,15 +338,15 @@ def _is_word_char(c: str) -> bool:
 def format_lstring(modules) -> str:
     """Modules in L-Py's syntax; a blank separates two names that would otherwise fuse."""
     out = []
-    prev_word = False
+    prev_word = 0  # length of the previous name when it could fuse with the next one
     for m in modules:
         name, args = m.name, m.args
         if args:
             text = format_module(m)
         else:
             text = name
-        if prev_word and _is_word_char(text[0]):
+        if prev_word and _is_word_char(text[0]) and (len(name) > 1 or prev_word > 1):
             out.append(" ")
         out.append(text)
-        prev_word = not args and _is_word_char(name[-1])
+        prev_word = len(name) if not args and _is_word_char(name[-1]) else 0
     return "".join(out)
