@@ -29,14 +29,22 @@ class NameTable:
 
     def __init__(self, predefined: dict[str, str]):
         self.names = dict(predefined)
-        self.maxlen = max(len(n) for n in self.names)
+        self.lengths: dict[str, list[int]] = {}  # first character → name lengths, longest first
+        for name in self.names:
+            self._index(name)
+
+    def _index(self, name: str):
+        lengths = self.lengths.setdefault(name[0], [])
+        if len(name) not in lengths:
+            lengths.append(len(name))
+            lengths.sort(reverse=True)
 
     def declare(self, name: str, alias_of: str | None = None):
         self.names[name] = self.names.get(alias_of, alias_of) if alias_of else name
-        self.maxlen = max(self.maxlen, len(name))
+        self._index(name)
 
     def match(self, text: str, i: int) -> tuple[str, int]:
-        for w in range(min(self.maxlen, len(text) - i), 0, -1):
+        for w in self.lengths.get(text[i], ()):
             primary = self.names.get(text[i : i + w])
             if primary is not None:
                 return primary, w
