@@ -148,7 +148,7 @@ class LpyRuntime:
             for name, value in self.parameters.items():
                 ns[name] = value
             self._build_rules()
-        except (ModelError, LimitReached):
+        except LimitReached:
             raise
         except Exception as e:  # the model's own code failed
             raise from_exception(e, self.filename) from None

@@ -14,7 +14,7 @@ import signal
 import threading
 import time
 
-from .lpy_errors import LimitReached, ModelError, from_exception
+from .lpy_errors import LimitReached, from_exception
 from .lstring import ObjectTable, format_lstring
 
 MAX_OUTPUT = 20_000  # characters of what the model printed, kept in result["output"]
@@ -98,13 +98,9 @@ def run_lpy(files: dict, main: str, options: dict) -> dict:
         ObjectTable.current = table
         result["lstring"] = format_lstring(s)
         result["ok"] = True
-    except ModelError as e:
-        result["error"] = e.as_dict()
     except LimitReached as e:
         result["error"] = {"line": 0, "column": 0, "message": str(e)}
-    except RecursionError as e:
-        result["error"] = from_exception(e, main).as_dict()
-    except Exception as e:  # the model's own code, or a rule body
+    except Exception as e:  # the model's own code, a rule body, or a ModelError located here
         result["error"] = from_exception(e, main).as_dict()
     finally:
         ObjectTable.current = None
