@@ -172,7 +172,8 @@ class LpyRuntime:
         steps = self.options.get("steps")
         if steps is not None:
             return int(steps)
-        return int(self.namespace.get("__derivation_length__") or 0)
+        # L-Py's default derivation length is 1 (lsystem.cpp: __max_derivation(1))
+        return int(self.namespace.get("__derivation_length__", 1) or 0)
 
     def axiom(self) -> Lstring:
         ax = self.namespace.get("__axiom__", [])
