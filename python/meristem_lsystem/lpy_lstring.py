@@ -109,6 +109,14 @@ def parse_modules(text: str, names: NameTable, line: int = 0) -> list[ModuleText
         if name == "~" and i < n and text[i] not in "( \t\n":
             surface = text[i]
             i += 1
+        elif name == "$":
+            # `$Name(var)` in a pattern binds the whole module; `$var` in a successor emits it
+            j = i
+            while j < n and (text[j].isalnum() or text[j] == "_"):
+                j += 1
+            if j == i:
+                raise LpySyntaxError("'$' must be followed by a name", line + text.count("\n", 0, i))
+            surface, i = text[i:j], j
         j = i
         while j < n and text[j] in " \t":
             j += 1
@@ -147,7 +155,8 @@ def to_python(text: str, names: NameTable, line: int = 0) -> str:
     items = []
     for m in parse_modules(text, names, line):
         if m.name == "$":
-            raise LpySyntaxError("'$' (GetModule) is not supported in successors", line)
+            items.append(f"__Mcopy({m.surface})")
+            continue
         args = m.args or ""
         if m.name in ("*", "new"):
             # `*(name, args…)` / `new(name, args…)`: a module whose name is computed;

@@ -26,6 +26,12 @@ class Pattern:
         """Appends the bound values to `out`; False (out untouched) when `m` does not match."""
         args = m.args
         specs = self.specs
+        if specs and specs[0][0] == "module":
+            # `$Name(m)`: the whole module, whatever its parameters
+            if self.name != m.name:
+                return False
+            out.append(m)
+            return True
         if self.name == "*":
             # `*(name, args…)`: the first spec takes the name
             if not specs:

@@ -77,7 +77,7 @@ class LpyRuntime:
             rt.nbuf.extend(to_modules(value))
 
         return {
-            "__M": make_module, "__Mstar": lambda name, *args: Module(name, list(args)),
+            "__M": make_module, "__Mcopy": lambda m: m.copy() if isinstance(m, Module) else to_modules(m)[0], "__Mstar": lambda name, *args: Module(name, list(args)),
             "__produce": lambda mods: mods, "__nproduce": rt.nbuf_extend,
             "nsproduce": nproduce, "pproduce": nproduce,
             "getIterationNb": lambda: rt.iteration, "execContext": lambda: rt.context, "Stop": rt.stop, "stop": rt.stop,

@@ -77,6 +77,10 @@ def find_top(text: str, token: str, start: int = 0, opening: str = "([{", closin
 
 def declare_modules(text: str, names: NameTable, declared: dict, line: int):
     """`module A(x, y), B = A, C : scale = 1`: names, named parameters and aliases."""
+    comment = find_top(text, "#")
+    text = text if comment < 0 else text[:comment]
+    if "#" in text:
+        text = text.split("#", 1)[0]
     body = text.split(":", 1)[0] if find_top(text, ":") >= 0 else text
     for piece in split_args(body):
         if not piece:
@@ -97,6 +101,10 @@ def declare_modules(text: str, names: NameTable, declared: dict, line: int):
 def pattern(text: str, names: NameTable, line: int) -> list[PatternModule]:
     out = []
     for m in parse_modules(text, names, line):
+        if m.name == "$":
+            target = names.names.get(m.surface, m.surface)
+            out.append(PatternModule(target, [("module", (m.args or "").strip() or "_")]))
+            continue
         specs = []
         if m.surface is not None:
             specs.append(("const", repr(m.surface)))
@@ -156,6 +164,7 @@ def rule_params(spec: RuleSpec) -> list[str]:
     for part in (spec.left, spec.new_left, spec.pred, spec.new_right, spec.right):
         for pm in part:
             params.extend(v[0] if k == "cond" else v for k, v in pm.specs if k != "const")
+    # named modules the header binds twice would be a Python error: L-Py refuses them too
     return params
 
 
@@ -201,6 +210,40 @@ def transform_code(line: str, names: NameTable, lineno: int, produce: bool) -> s
     return "".join(out)
 
 
+SUCCESSOR_LINE = re.compile(r"-->|-static->|\bn?produce\b")
+
+
+def balance(line: str) -> int:
+    """Open parentheses left at the line's end (strings and comments skipped)."""
+    depth, j = 0, 0
+    while j < len(line):
+        c = line[j]
+        if c in "'\"":
+            j = skip_string(line, j)
+            continue
+        if c == "#":
+            break
+        depth += (c == "(") - (c == ")")
+        j += 1
+    return depth
+
+
+def join_continued_successors(lines: list[str]) -> list[str]:
+    """A successor whose parentheses close on later lines is joined into its first line; the
+    lines it took stay, blank, so every other line keeps its number."""
+    lines = list(lines)
+    for i, line in enumerate(lines):
+        if not SUCCESSOR_LINE.search(line) or balance(line) <= 0:
+            continue
+        joined, k = line, i + 1
+        while balance(joined) > 0 and k < len(lines) and k - i <= 30:
+            joined += " " + lines[k].strip()
+            lines[k] = ""
+            k += 1
+        lines[i] = joined
+    return lines
+
+
 def keyword(line: str, *words: str) -> str | None:
     """The text after `word:` when the line starts with one of `words` followed by ':'."""
     for w in words:
@@ -225,7 +268,7 @@ def translate(text: str, predefined: dict[str, str]) -> LpySource:
     if cut >= 0:
         init_code = "\n" * text.count("\n", 0, cut) + text[cut:]
         text = text[:cut]
-    lines = text.split("\n")
+    lines = join_continued_successors(text.split("\n"))
     names = NameTable(predefined)
     declared: dict[str, list[str]] = {}
     collect_declarations(lines, names, declared)

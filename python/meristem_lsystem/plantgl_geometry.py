@@ -98,6 +98,24 @@ class _Curve:
         pts = self.sample(100)
         return sum((q - p).norm() for p, q in zip(pts, pts[1:]))
 
+    def deepcopy(self):
+        import copy
+
+        return copy.deepcopy(self)
+
+    def getArcLengthToUMapping(self):
+        """The function from normalised arc length in [0, 1] to the curve's parameter."""
+        count = 101
+        a, b = self.firstKnot, self.lastKnot
+        us = [a + (b - a) * i / (count - 1) for i in range(count)]
+        pts = [self.getPointAt(u) for u in us]
+        lengths = [0.0]
+        for p, q in zip(pts, pts[1:]):
+            lengths.append(lengths[-1] + (q - p).norm())
+        total = lengths[-1] or 1.0
+        curve = Polyline2D([(length / total, u) for length, u in zip(lengths, us)])
+        return QuantisedFunction(curve, count)
+
     def describe(self):
         return {"type": type(self).__name__, "points": [list(p) for p in self.sample()]}
 
@@ -209,6 +227,27 @@ class NurbsPatch:
         w = r[3] or 1.0
         return Vector3(r[0] / w, r[1] / w, r[2] / w)
 
+    def _derivative(self, u, v, du, dv):
+        h = 1e-4
+        a = self.getPointAt(max(0.0, u - h * du), max(0.0, v - h * dv))
+        b = self.getPointAt(min(1.0, u + h * du), min(1.0, v + h * dv))
+        return (b - a) / (2 * h)
+
+    def getUTangentAt(self, u, v):
+        return self._derivative(u, v, 1, 0)
+
+    def getVTangentAt(self, u, v):
+        return self._derivative(u, v, 0, 1)
+
+    def getNormalAt(self, u, v):
+        return (self.getUTangentAt(u, v) ^ self.getVTangentAt(u, v)).normed()
+
+    def getIsoUSectionAt(self, u):
+        return Polyline([list(self.getPointAt(u, j / (SAMPLES - 1))) for j in range(SAMPLES)])
+
+    def getIsoVSectionAt(self, v):
+        return Polyline([list(self.getPointAt(i / (SAMPLES - 1), v)) for i in range(SAMPLES)])
+
     def describe(self, count=12):
         grid = [[list(self.getPointAt(i / (count - 1), j / (count - 1))) for j in range(count)]
                 for i in range(count)]
@@ -304,9 +343,10 @@ class Geometry:
 GEOMETRY_NAMES = [
     "Sphere", "Cylinder", "Cone", "Box", "Disc", "Frustum", "Paraboloid", "Revolution",
     "Extrusion", "Translated", "Scaled", "AxisRotated", "EulerRotated", "Oriented", "Shape",
+    "Point3Grid", "Discretizer",
     "Scene", "TriangleSet", "QuadSet", "FaceSet", "Group", "Swung", "Text", "Font", "PointSet",
     "Polyline2DSet", "IFS", "ExtrudedHull", "Tapered", "BoundingBox", "Transformed", "Matrix4",
-    "Matrix3", "Quaternion", "ProfileInterpolation", "Font", "Index", "IndexArray", "Index3Array",
+    "Quaternion", "ProfileInterpolation", "Font", "Index", "IndexArray", "Index3Array",
     "Index4Array", "Curve2DArray", "Color4Array", "RealArray", "Viewer",
 ]
 GEOMETRY = {name: type(name, (Geometry,), {}) for name in GEOMETRY_NAMES}

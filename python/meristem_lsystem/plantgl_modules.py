@@ -64,7 +64,7 @@ def plantgl_names() -> dict:
     names.update(geo.GEOMETRY)
     names["Color3Array"] = list
     names["Point3Matrix"] = geo.Point4Matrix
-    names["Matrix3"].IDENTITY = names["Matrix3"]()
+    names["Matrix3"] = pmath.Matrix3
     names["Matrix4"].IDENTITY = names["Matrix4"]()
     names["Color3"] = pmath.Color3
     names.update(eStatic=0, eAnimatedPrimitives=1, eAnimatedScene=2)

@@ -57,6 +57,20 @@ class Productions(unittest.TestCase):
         self.assertEqual(r["lstring"], "A(2)")
 
 
+    def test_get_module_binds_and_emits_the_whole_module(self):
+        src = ("module Aging(age)\nAxiom: Aging(1) B\nderivation length: 2\nproduction:\n"
+               "$Aging(a):\n  a.age += 1\n  produce $a F(a.age,\n     2)\nendlsystem\n")
+        r = run_text(src)
+        self.assertTrue(r["ok"], r["error"])
+        self.assertEqual(r["lstring"], "Aging(3)F(3,2)F(2,2)B")
+
+    def test_successor_continued_on_later_lines_keeps_line_numbers(self):
+        src = ("Axiom: A\nderivation length: 1\nproduction:\nA --> F(1,\n  2) B(1/0 if False else 1)\n"
+               "B --> C(1/0)\nendlsystem\n")
+        r = run_text(src.replace("Axiom: A", "Axiom: A B"))
+        self.assertEqual(r["error"]["line"], 6)
+
+
 class Contexts(unittest.TestCase):
     def test_left_context_skips_branches_and_climbs_to_the_parent(self):
         r = run_text("Axiom: A[B][C D]E\nderivation length: 1\nproduction:\n"
