@@ -20,6 +20,9 @@ def draws(lstring: str) -> bool:
     from meristem_lsystem.lpy_lstring import NameTable, parse_modules
     from meristem_lsystem.lstring import predefined_names
 
+    if len(lstring) > 200_000:
+        # long strings: the first 200 000 characters tell (drawing starts early in a plant)
+        lstring = lstring[:200_000].rsplit(")", 1)[0] + ")"
     try:
         return any(m.name in DRAWING for m in parse_modules(lstring, NameTable(predefined_names())))
     except Exception:

@@ -15,7 +15,7 @@ import threading
 import time
 
 from .lpy_errors import LimitReached, from_exception
-from .lstring import ObjectTable, format_lstring
+from .lstring import Module, ObjectTable, format_lstring
 
 MAX_OUTPUT = 20_000  # characters of what the model printed, kept in result["output"]
 DEFAULTS = {"steps": None, "seed": 0, "max_modules": 2_000_000, "time_limit": 50.0}
@@ -88,6 +88,7 @@ def run_lpy(files: dict, main: str, options: dict) -> dict:
 
     result = empty_result("lpy")
     random.seed(options.get("seed", 0))
+    Module.named.clear()  # named parameters are the declarations of this run's files
     rt = LpyRuntime(files, main, options)
     table = ObjectTable()
     try:
