@@ -28,7 +28,10 @@ class Rule:
 
     def __init__(self, spec, func, order, consts):
         self.spec, self.func, self.order, self.group = spec, func, order, spec.group
-        compile_ = lambda pats: [Pattern(p.name, [(k, consts(k, v)) for k, v in p.specs]) for p in pats]
+        def compile_(pats):
+            return [Pattern(p.name, [(k, compile_(v) if k == "repeat" else consts(k, v)) for k, v in p.specs])
+                    for p in pats]
+
         self.pred, self.left, self.right = compile_(spec.pred), compile_(spec.left), compile_(spec.right)
         self.new_left, self.new_right = compile_(spec.new_left), compile_(spec.new_right)
         self.first = self.pred[0].name

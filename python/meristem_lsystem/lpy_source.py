@@ -101,6 +101,9 @@ def declare_modules(text: str, names: NameTable, declared: dict, line: int):
 def pattern(text: str, names: NameTable, line: int) -> list[PatternModule]:
     out = []
     for m in parse_modules(text, names, line):
+        if m.name == "x" and m.args and m.args.strip():
+            out.append(PatternModule("x", [("repeat", pattern(m.args, names, line))]))
+            continue
         if m.name == "$":
             target = names.names.get(m.surface, m.surface)
             out.append(PatternModule(target, [("module", (m.args or "").strip() or "_")]))
@@ -158,12 +161,24 @@ def split_header(header: str) -> dict[str, str]:
     return parts
 
 
+def pattern_params(part: list) -> list[str]:
+    params = []
+    for pm in part:
+        for kind, value in pm.specs:
+            if kind == "repeat":
+                params.extend(pattern_params(value))
+            elif kind == "cond":
+                params.append(value[0])
+            elif kind != "const":
+                params.append(value)
+    return params
+
+
 def rule_params(spec: RuleSpec) -> list[str]:
     """The rule function's parameters, in the header's order; `*args` arrive as one list."""
     params = []
     for part in (spec.left, spec.new_left, spec.pred, spec.new_right, spec.right):
-        for pm in part:
-            params.extend(v[0] if k == "cond" else v for k, v in pm.specs if k != "const")
+        params.extend(pattern_params(part))
     # named modules the header binds twice would be a Python error: L-Py refuses them too
     return params
 

@@ -50,11 +50,14 @@ class Productions(unittest.TestCase):
         self.assertEqual(count(run_text(src)["lstring"], "F"), 3)
         self.assertEqual(count(run_text(src, steps=5)["lstring"], "F"), 5)
 
-    def test_derivation_stops_when_no_rule_applies(self):
-        r = run_text("Axiom: A(0)\nderivation length: 10\nproduction:\n"
-                     "A(x) :\n  if x < 2: produce A(x+1)\nendlsystem\n")
-        self.assertEqual(r["steps"], 3)
-        self.assertEqual(r["lstring"], "A(2)")
+    def test_every_step_runs_even_when_no_rule_applies(self):
+        # L-Py's option "Early return when no matching" is Disabled by default
+        src = ("n = []\ndef EndEach():\n  n.append(1)\ndef End(s):\n  return s + [('F', len(n))]\n"
+               "Axiom: A(0)\nderivation length: 10\nproduction:\n"
+               "A(x) :\n  if x < 2: produce A(x+1)\nendlsystem\n")
+        r = run_text(src)
+        self.assertEqual(r["steps"], 10)
+        self.assertEqual(r["lstring"], "A(2)F(10)")
 
 
     def test_get_module_binds_and_emits_the_whole_module(self):
@@ -162,6 +165,14 @@ class Hooks(unittest.TestCase):
         r = run_text(src)
         self.assertTrue(r["ok"], r["error"])
         self.assertIn("Y", r["lstring"])
+
+    def test_repetition_over_child_branches_in_the_new_string(self):
+        # backwards, the branches to A's right are already rewritten when A is: 10 + 20
+        src = ("def Start():\n  backward()\nAxiom: A [B(1)] [B(2)] [C] B(9)\nderivation length: 1\n"
+               "production:\nB(w) --> B(w*10)\nA >> x([B(w)]) --> A(sum(w))\nendlsystem\n")
+        r = run_text(src)
+        self.assertTrue(r["ok"], r["error"])
+        self.assertEqual(r["lstring"], "A(30)[B(10)][B(20)][C]B(90)")
 
     def test_axiom_as_python_body(self):
         r = run_text("Axiom:\n  for i in range(3): nproduce F(i)\nderivation length: 0\nendlsystem\n")
