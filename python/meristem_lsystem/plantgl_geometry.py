@@ -330,6 +330,90 @@ class Texture2D(Material):
         self.image = kw.get("image", args[0] if args else None)
 
 
+class Point3Grid:
+    """PlantGL's point grid for neighbourhood queries: points hashed into cubic voxels (the
+    given voxel size, else about 8 points a voxel), balls and cones, points switched off."""
+
+    def __init__(self, a, b=None, *rest):
+        first_is_points = isinstance(a, (list, tuple)) and len(a) and not isinstance(a[0], (int, float))
+        points, other = (a, b) if first_is_points else (b, a)
+        self.points = [p if isinstance(p, _Vector) else Vector3(*p) for p in points]
+        self.enabled = [True] * len(self.points)
+        size = None
+        if other is not None and not isinstance(other, (int, float)):
+            size = max(float(x) for x in other)
+        if not size and self.points:
+            lo = [min(p[k] for p in self.points) for k in range(3)]
+            hi = [max(p[k] for p in self.points) for k in range(3)]
+            volume = max((hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]), 1e-9)
+            size = (volume * 8 / len(self.points)) ** (1 / 3)
+        self.size = size or 1.0
+        self.cells: dict = {}
+        for i, p in enumerate(self.points):
+            self.cells.setdefault(self._cell(p), []).append(i)
+
+    def _cell(self, p):
+        k = self.size
+        return (int(p[0] // k), int(p[1] // k), int(p[2] // k))
+
+    def _near(self, center, radius):
+        k = self.size
+        lo = [int((center[d] - radius) // k) for d in range(3)]
+        hi = [int((center[d] + radius) // k) for d in range(3)]
+        cells = self.cells
+        for x in range(lo[0], hi[0] + 1):
+            for y in range(lo[1], hi[1] + 1):
+                for z in range(lo[2], hi[2] + 1):
+                    yield from cells.get((x, y, z), ())
+
+    def query_ball_point(self, center, radius):
+        c, r2 = Vector3(*center), float(radius) ** 2
+        pts, on = self.points, self.enabled
+        return sorted(i for i in self._near(c, float(radius)) if on[i] and (pts[i] - c).normSquared() <= r2)
+
+    def query_points_in_cone(self, apex, direction, radius, angle):
+        import math
+
+        c, d = Vector3(*apex), Vector3(*direction).normed()
+        r2, cos_max = float(radius) ** 2, math.cos(angle)
+        found = []
+        for i in self._near(c, float(radius)):
+            if not self.enabled[i]:
+                continue
+            v = self.points[i] - c
+            n2 = v.normSquared()
+            if n2 <= r2 and (n2 == 0 or (v * d) / math.sqrt(n2) >= cos_max):
+                found.append(i)
+        return sorted(found)
+
+    def disable_points(self, indices):
+        for i in indices:
+            self.enabled[i] = False
+
+    def enable_points(self, indices):
+        for i in indices:
+            self.enabled[i] = True
+
+    def is_point_enabled(self, i):
+        return self.enabled[i]
+
+    def get_enabled_points(self):
+        return [p for p, on in zip(self.points, self.enabled) if on]
+
+    def nbPoints(self):
+        return len(self.points)
+
+
+def pointset_mean_direction(origin, points, indices=None):
+    """PlantGL: the mean of the unit directions from `origin` to the points (normalised)."""
+    o = Vector3(*origin)
+    chosen = [points[i] for i in indices] if indices is not None else list(points)
+    total = Vector3(0, 0, 0)
+    for p in chosen:
+        total = total + (Vector3(*p) - o).normed()
+    return total.normed()
+
+
 class Geometry:
     """A PlantGL shape or transformation used with `@g`/`PglShape`: kept by type and arguments."""
 
@@ -343,7 +427,7 @@ class Geometry:
 GEOMETRY_NAMES = [
     "Sphere", "Cylinder", "Cone", "Box", "Disc", "Frustum", "Paraboloid", "Revolution",
     "Extrusion", "Translated", "Scaled", "AxisRotated", "EulerRotated", "Oriented", "Shape",
-    "Point3Grid", "Discretizer",
+    "Discretizer",
     "Scene", "TriangleSet", "QuadSet", "FaceSet", "Group", "Swung", "Text", "Font", "PointSet",
     "Polyline2DSet", "IFS", "ExtrudedHull", "Tapered", "BoundingBox", "Transformed", "Matrix4",
     "Quaternion", "ProfileInterpolation", "Font", "Index", "IndexArray", "Index3Array",

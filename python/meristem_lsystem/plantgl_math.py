@@ -142,6 +142,12 @@ class _Vector:
     def __round__(self, nd=None):
         return self._new([round(a, nd or 0) for a in self._c])
 
+    def anOrthogonalVector(self):
+        x, y, z = (list(self._c) + [0.0, 0.0])[:3]
+        if abs(x) > 1e-9 or abs(y) > 1e-9:
+            return Vector3(-y, x, 0.0).normed()
+        return Vector3(0.0, -z, y).normed()
+
     def anorm(self):
         return sum(abs(a) for a in self._c)
 

@@ -59,7 +59,7 @@ def plantgl_names() -> dict:
     names = _math_names()
     for n in ("Point2Array", "Point3Array", "Point4Array", "Point4Matrix", "NurbsCurve2D",
               "NurbsCurve", "BezierCurve2D", "BezierCurve", "Polyline2D", "Polyline", "NurbsPatch",
-              "BezierPatch", "QuantisedFunction", "Material", "ImageTexture", "Texture2D"):
+              "BezierPatch", "QuantisedFunction", "Material", "ImageTexture", "Texture2D", "Point3Grid", "pointset_mean_direction"):
         names[n] = getattr(geo, n)
     names.update(geo.GEOMETRY)
     names["Color3Array"] = list
