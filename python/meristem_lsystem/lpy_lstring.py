@@ -88,7 +88,22 @@ def closing_paren(text: str, i: int, line: int) -> int:
     raise LpySyntaxError("unclosed '(' in module parameters", line)
 
 
-def parse_modules(text: str, names: NameTable, line: int = 0) -> list[ModuleText]:
+PATTERN_WORDS = (("all", "x"), ("x", "x"), ("or", "or"), ("?I", "?I"))
+
+
+def pattern_word(text: str, i: int) -> tuple[str, int] | None:
+    """`x(`/`all(` (repetition), `or(` and `?I` read as pattern constructs at `i`."""
+    for word, name in PATTERN_WORDS:
+        if text.startswith(word, i):
+            j = i + len(word)
+            while j < len(text) and text[j] in " \t":
+                j += 1
+            if name == "?I" or (j < len(text) and text[j] == "("):
+                return name, len(word)
+    return None
+
+
+def parse_modules(text: str, names: NameTable, line: int = 0, pattern: bool = False) -> list[ModuleText]:
     out: list[ModuleText] = []
     i, n = 0, len(text)
     while i < n:
@@ -103,7 +118,8 @@ def parse_modules(text: str, names: NameTable, line: int = 0) -> list[ModuleText
         if c in "()":
             raise LpySyntaxError(f"found a module named '{c}'", line + text.count("\n", 0, i))
         start = i
-        name, width = names.match(text, i)
+        special = pattern_word(text, i) if pattern else None
+        name, width = special or names.match(text, i)
         i += width
         surface = None
         if name == "~" and i < n and text[i] not in "( \t\n":

@@ -131,6 +131,7 @@ class LpyRuntime:
         except LpySyntaxError as e:
             raise ModelError(f"SyntaxError: {e.message}", e.line, e.column) from None
         src = self.source
+        self.notes.extend(src.notes)
         StringReader.current = self.read_string
         Module.named.update({name: {p: i for i, p in enumerate(params)}
                              for name, params in src.declared.items() if params})

@@ -23,6 +23,10 @@ COND = re.compile(r"([A-Za-z_][A-Za-z0-9_]*)\s*(==|!=|<=|>=|<|>|\bin\b|\bnot\s+i
 IDENT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\Z")
 
 
+class Unsupported(Exception):
+    """A pattern construct this runtime does not match: its rule is left out, with a note."""
+
+
 @dataclass
 class PatternModule:
     name: str
@@ -100,7 +104,9 @@ def declare_modules(text: str, names: NameTable, declared: dict, line: int):
 
 def pattern(text: str, names: NameTable, line: int) -> list[PatternModule]:
     out = []
-    for m in parse_modules(text, names, line):
+    for m in parse_modules(text, names, line, pattern=True):
+        if m.name in ("?I", "or"):
+            raise Unsupported(f"'{m.name}' patterns are not available")
         if m.name == "x" and m.args and m.args.strip():
             out.append(PatternModule("x", [("repeat", pattern(m.args, names, line))]))
             continue
@@ -407,10 +413,18 @@ def rule_line(line: str, no: int, src: LpySource, kind: str, group: int) -> str:
         raise LpySyntaxError("a rule needs '-->' or ':' after its predecessor", no, 1)
     cut = arrow if arrow >= 0 and (colon < 0 or arrow < colon) else colon
     header = split_header(line[:cut])
-    spec = RuleSpec(kind, group, no, f"__rule_{len(src.rules)}__",
-                    pattern(header["pred"], src.names, no), pattern(header["left"], src.names, no),
-                    pattern(header["right"], src.names, no), pattern(header["new_left"], src.names, no),
-                    pattern(header["new_right"], src.names, no), static)
+    try:
+        spec = RuleSpec(kind, group, no, f"__rule_{len(src.rules)}__",
+                        pattern(header["pred"], src.names, no), pattern(header["left"], src.names, no),
+                        pattern(header["right"], src.names, no), pattern(header["new_left"], src.names, no),
+                        pattern(header["new_right"], src.names, no), static)
+    except Unsupported as e:
+        src.notes.append({"line": no, "message": f"rule left out: {e}"})
+        name = f"__unused_rule_{no}__"
+        if cut == arrow:
+            return f"def {name}(*args): pass"
+        rest = line[colon + 1 :]
+        return f"def {name}(*args):" + (" " + transform_code(rest, src.names, no, True) if rest.strip() else "")
     if not spec.pred:
         raise LpySyntaxError("a rule without a predecessor", no, 1)
     src.rules.append(spec)
