@@ -22,6 +22,15 @@ from .lstring import Lstring, Module, StringReader, make_module, predefined_name
 from . import plantgl_modules
 
 
+def compile_quietly(code: str, filename: str):
+    """Compiles the model's Python; its SyntaxWarnings (`is` with a literal …) are not ours."""
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        return compile(code, filename, "exec")
+
+
 class Rule:
     __slots__ = ("spec", "func", "order", "pred", "left", "right", "new_left", "new_right",
                  "first", "group", "simple", "nargs")
@@ -90,7 +99,36 @@ class LpyRuntime:
             "extern": extern, "frameDisplay": lambda *a: None, "isAnimationEnabled": lambda: False,
             "Lsystem": rt.sub_lsystem, "xrange": range, "unicode": str, "long": int,
             "getDerivationLength": lambda: rt.derivation_length,
+            "open": rt.open_file, "requestSelection": rt.request_selection,
         }
+
+    def open_file(self, name, mode="r", *args, **kw):
+        """The model's `open`: its own files from `files` (read); writes are kept nowhere."""
+        import io
+
+        base = str(name).replace("\\", "/").split("/")[-1]
+        if any(c in mode for c in "wax+"):
+            self.note(f"the model writes '{base}': Meristem keeps no files (the text is dropped)")
+            return io.StringIO()
+        if base not in self.files:
+            raise FileNotFoundError(f"no file '{base}' came with the model")
+        return io.StringIO(self.files[base])
+
+    def request_selection(self, *args):
+        self.note("interactive selection is not available: the model continues without one")
+
+    def note(self, message: str):
+        """A note at the model's line that is running now."""
+        import sys
+
+        line, frame = 0, sys._getframe(1)
+        while frame is not None:
+            if frame.f_code.co_filename == self.filename:
+                line = frame.f_lineno
+                break
+            frame = frame.f_back
+        if not any(n["message"] == message for n in self.notes):
+            self.notes.append({"line": line, "message": message})
 
     def read_string(self, text: str) -> list:
         """A module string given as text while the model runs: its parameters are evaluated
@@ -144,11 +182,11 @@ class LpyRuntime:
         plantgl_modules.install({"Lsystem": self.sub_lsystem})
         try:
             if src.init_code is not None:
-                exec(compile(src.init_code, self.filename, "exec"), ns)
+                exec(compile_quietly(src.init_code, self.filename), ns)
                 init = ns.get("__initialiseContext__")
                 if init:
                     init(self.context)
-            exec(compile(src.code, self.filename, "exec"), ns)
+            exec(compile_quietly(src.code, self.filename), ns)
             for name, value in self.parameters.items():
                 ns[name] = value
             self._build_rules()

@@ -40,9 +40,15 @@ class Point4Array(_PointArray):
     KIND = Vector4
 
 
+def _point4(p) -> Vector4:
+    """A control point with its weight; three coordinates get weight 1."""
+    values = list(p)
+    return Vector4(*(values + [1.0] if len(values) == 3 else values))
+
+
 class Point4Matrix(list):
     def __init__(self, rows=()):
-        super().__init__([p if isinstance(p, _Vector) else Vector4(*p) for p in row] for row in rows)
+        super().__init__([p if isinstance(p, Vector4) else _point4(p) for p in row] for row in rows)
 
 
 def _clamped_knots(n: int, degree: int) -> list[float]:
@@ -243,15 +249,29 @@ class NurbsPatch:
         return (self.getUTangentAt(u, v) ^ self.getVTangentAt(u, v)).normed()
 
     def getIsoUSectionAt(self, u):
-        return Polyline([list(self.getPointAt(u, j / (SAMPLES - 1))) for j in range(SAMPLES)])
+        """The NURBS curve of the surface at `u` (control points: the columns blended at u)."""
+        cols = list(zip(*self.ctrlPointMatrix))
+        ctrl = []
+        for col in cols:
+            homog = [[p[0] * p[3], p[1] * p[3], p[2] * p[3], p[3]] for p in col]
+            x, y, z, w = _de_boor(homog, self.uknotList, self.udegree, u)
+            w = w or 1.0
+            ctrl.append(Vector4(x / w, y / w, z / w, w))
+        return NurbsCurve(ctrl, self.vknotList, self.vdegree)
 
     def getIsoVSectionAt(self, v):
-        return Polyline([list(self.getPointAt(i / (SAMPLES - 1), v)) for i in range(SAMPLES)])
+        ctrl = []
+        for row in self.ctrlPointMatrix:
+            homog = [[p[0] * p[3], p[1] * p[3], p[2] * p[3], p[3]] for p in row]
+            x, y, z, w = _de_boor(homog, self.vknotList, self.vdegree, v)
+            w = w or 1.0
+            ctrl.append(Vector4(x / w, y / w, z / w, w))
+        return NurbsCurve(ctrl, self.uknotList, self.udegree)
 
     def describe(self, count=12):
         grid = [[list(self.getPointAt(i / (count - 1), j / (count - 1))) for j in range(count)]
                 for i in range(count)]
-        return {"type": "NurbsPatch", "points": grid}
+        return {"type": type(self).__name__, "points": grid}
 
 
 class BezierPatch(NurbsPatch):
@@ -414,14 +434,32 @@ def pointset_mean_direction(origin, points, indices=None):
     return total.normed()
 
 
+def describe_value(v):
+    """A parameter of a PlantGL shape as JSON: numbers, vectors as lists, shapes described."""
+    if isinstance(v, (bool, int, float, str)) or v is None:
+        return v
+    if isinstance(v, _Vector) or isinstance(v, Color3):
+        return list(v)
+    describe = getattr(v, "describe", None)
+    if describe is not None:
+        return describe()
+    if isinstance(v, (list, tuple)):
+        return [describe_value(x) for x in v]
+    return {"type": type(v).__name__}
+
+
 class Geometry:
-    """A PlantGL shape or transformation used with `@g`/`PglShape`: kept by type and arguments."""
+    """A PlantGL shape or transformation used with `@g`/`PglShape`: its type and arguments
+    (`Scaled(size, BezierPatch(...))` → {"type": "Scaled", "args": [[…], {patch}]})."""
 
     def __init__(self, *args, **kw):
         self.args, self.kw = args, kw
 
     def describe(self):
-        return {"type": type(self).__name__}
+        out = {"type": type(self).__name__, "args": [describe_value(a) for a in self.args]}
+        if self.kw:
+            out["named"] = {k: describe_value(v) for k, v in self.kw.items()}
+        return out
 
 
 GEOMETRY_NAMES = [
