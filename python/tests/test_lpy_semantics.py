@@ -223,6 +223,28 @@ class Randomness(unittest.TestCase):
         self.assertEqual(run_text(self.SRC, seed=7)["lstring"], expected)
 
 
+class FilesAndNotes(unittest.TestCase):
+    def test_open_reads_the_models_own_files(self):
+        from lpy_helpers import run
+
+        main = ("with open('data/lengths.txt') as f:\n  L = [float(x) for x in f.read().split()]\n"
+                "Axiom: A\nderivation length: 1\nproduction:\nA :\n"
+                "  for l in L: nproduce F(l)\nendlsystem\n")
+        r = run({"main.lpy": main, "lengths.txt": "1 2.5"}, "main.lpy", {})
+        self.assertEqual(r["lstring"], "F(1.0)F(2.5)")
+        r = run({"main.lpy": main}, "main.lpy", {})
+        self.assertEqual(r["error"]["line"], 1)
+        self.assertIn("FileNotFoundError", r["error"]["message"])
+
+    def test_unavailable_pattern_leaves_its_rule_out_with_a_note(self):
+        src = ("Axiom: A B\nderivation length: 1\nproduction:\nA >> x([?I(it)]) --> X\n"
+               "A --> Y\nendlsystem\n")
+        r = run_text(src)
+        self.assertTrue(r["ok"], r["error"])
+        self.assertEqual(r["lstring"], "YB")
+        self.assertEqual(r["notes"][0]["line"], 4)
+
+
 class Composition(unittest.TestCase):
     def test_lsystem_from_another_file(self):
         from lpy_helpers import run
