@@ -103,6 +103,10 @@ def run_lpy(files: dict, main: str, options: dict) -> dict:
         result["error"] = {"line": 0, "column": 0, "message": str(e)}
     except Exception as e:  # the model's own code, a rule body, or a ModelError located here
         result["error"] = from_exception(e, main).as_dict()
+    except SystemExit as e:  # the model called exit(): an error at its line, not the end of ours
+        error = from_exception(e, main)
+        error.message = "the model called exit()"
+        result["error"] = error.as_dict()
     finally:
         ObjectTable.current = None
     result["objects"] = table.objects

@@ -62,6 +62,11 @@ class Errors(unittest.TestCase):
         self.assertLess(time.monotonic() - t0, 10)
         self.assertIn("time limit", r["error"]["message"])
 
+    def test_exit_in_the_model_is_an_error_not_our_exit(self):
+        r = run_text("import sys\nAxiom: A\nderivation length: 1\nproduction:\nA :\n  sys.exit(3)\nendlsystem\n")
+        self.assertFalse(r["ok"])
+        self.assertEqual(r["error"]["line"], 6)
+
     def test_missing_main_file(self):
         from lpy_helpers import run
 
