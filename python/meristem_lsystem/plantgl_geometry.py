@@ -452,8 +452,26 @@ class Geometry:
     """A PlantGL shape or transformation used with `@g`/`PglShape`: its type and arguments
     (`Scaled(size, BezierPatch(...))` → {"type": "Scaled", "args": [[…], {patch}]})."""
 
+    PARAMETERS: tuple = ()  # PlantGL's names of the positional arguments
+
     def __init__(self, *args, **kw):
-        self.args, self.kw = args, kw
+        object.__setattr__(self, "args", list(args))
+        object.__setattr__(self, "kw", dict(kw))
+
+    def __getattr__(self, name):
+        params = type(self).PARAMETERS
+        if name in params and params.index(name) < len(self.args):
+            return self.args[params.index(name)]
+        if name in self.kw:
+            return self.kw[name]
+        raise AttributeError(name)
+
+    def __setattr__(self, name, value):
+        params = type(self).PARAMETERS
+        if name in params and params.index(name) < len(self.args):
+            self.args[params.index(name)] = value
+        else:
+            self.kw[name] = value
 
     def describe(self):
         out = {"type": type(self).__name__, "args": [describe_value(a) for a in self.args]}
@@ -471,4 +489,12 @@ GEOMETRY_NAMES = [
     "Quaternion", "ProfileInterpolation", "Font", "Index", "IndexArray", "Index3Array",
     "Index4Array", "Curve2DArray", "Color4Array", "RealArray", "Viewer",
 ]
-GEOMETRY = {name: type(name, (Geometry,), {}) for name in GEOMETRY_NAMES}
+SHAPE_PARAMETERS = {
+    "Sphere": ("radius", "slices", "stacks"), "Cylinder": ("radius", "height", "solid", "slices"),
+    "Cone": ("radius", "height", "solid", "slices"), "Paraboloid": ("radius", "height", "shape", "solid"),
+    "Disc": ("radius", "slices"), "Box": ("size",), "Frustum": ("radius", "height", "taper", "solid"),
+    "Translated": ("translation", "geometry"), "Scaled": ("scale", "geometry"),
+    "AxisRotated": ("axis", "angle", "geometry"), "Shape": ("geometry", "appearance"),
+}
+GEOMETRY = {name: type(name, (Geometry,), {"PARAMETERS": SHAPE_PARAMETERS.get(name, ())})
+            for name in GEOMETRY_NAMES}
