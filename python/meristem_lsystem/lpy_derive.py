@@ -105,21 +105,42 @@ def rewrite(rt, s: list, kind: str, depth: int = 1) -> tuple[list, bool]:
     n = len(s)
     out: list = []
     i = 0
+    buffered = rt.nbuf
     while i < n:
         m = s[i]
         if m.name == "%":
             i = end_of_branch(s, i + 1)
             continue
         for rule in table.get(m.name, stars):
-            got = try_rule(rt, rule, s, i, out, True)
-            if got is not None:
-                produced = got[0]
-                if depth > 1 and produced:
-                    produced, _ = rewrite(rt, produced, kind, depth - 1)
-                out.extend(produced)
-                i += got[1]
-                applied = True
-                break
+            if rule.simple:
+                # the common case inlined (one module, plain parameters, no context)
+                args = m.args
+                if len(args) != rule.nargs:
+                    continue
+                if _now() > rt.deadline:
+                    raise LimitReached(f"the derivation passed the time limit ({rt.options.get('time_limit', 50)} s)")
+                buffered.clear()
+                result = rule.func(*args)
+                if result is None:
+                    if not buffered:
+                        continue
+                    produced = buffered[:]
+                else:
+                    if type(result) is not list:
+                        result = to_modules(result)
+                    produced = buffered + result if buffered else result
+                length = 1
+            else:
+                got = try_rule(rt, rule, s, i, out, True)
+                if got is None:
+                    continue
+                produced, length = got
+            if depth > 1 and produced:
+                produced, _ = rewrite(rt, produced, kind, depth - 1)
+            out.extend(produced)
+            i += length
+            applied = True
+            break
         else:
             out.append(m)
             i += 1
