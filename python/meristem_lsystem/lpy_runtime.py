@@ -9,14 +9,12 @@ rules (homomorphism) up to their maximum depth give the string the turtle draws.
 
 from __future__ import annotations
 
-import inspect
-import random
 import time
 
 from .lpy_context import Context
 from .lpy_errors import LimitReached, ModelError, from_exception
 from .lpy_lstring import LpySyntaxError
-from .lpy_match import ContextFilter, Pattern, match_left, match_pred, match_right
+from .lpy_match import ContextFilter, Pattern
 from .lpy_source import translate
 from .lstring import Lstring, Module, StringReader, make_module, predefined_names, to_modules
 from . import plantgl_modules

@@ -12,7 +12,6 @@ import io
 import random
 import signal
 import threading
-import time
 
 from .lpy_errors import LimitReached, from_exception
 from .lstring import Module, ObjectTable, format_lstring
