@@ -1,0 +1,194 @@
+"""lpfg's derivation of a read model: `Start:`, the axiom, per step `StartEach:`, one parallel
+rewriting (forward or, after `Backward()`, from the right end, so `>>` sees the new string),
+decomposition to its maximum depth, `EndEach:`; then `End:` and interpretation to its maximum
+depth. A production whose body ends without `produce` does not apply, and the next one is
+tried (the current group's first, then group 0's). Modules are tuples `(name, args)`.
+"""
+
+from .lexer import LpfgError
+from .matching import Reversed, Skipper, match_left, match_right, match_strict
+from .runtime import StopDerivation, _int, _val
+
+COERCE = {"int": _int, "float": float, "bool": lambda v: 1 if v else 0}
+
+
+class Engine:
+    def __init__(self, model, namespace, runtime, max_modules):
+        self.model = model
+        self.ns = namespace
+        self.rt = runtime
+        self.max_modules = max_modules
+        self.skipper = Skipper(model.ignore, model.consider)
+        self.forward_index = {}  # (group, first name) -> productions
+        self.backward_index = {}  # (group, last name) -> productions
+        self.rules = {"decomposition": {}, "interpretation": {}}
+        for p in model.productions:
+            p.call = namespace[p.func]
+            if p.section == "production":
+                self.forward_index.setdefault((p.group, p.pred[0][0]), []).append(p)
+                self.backward_index.setdefault((p.group, p.pred[-1][0]), []).append(p)
+            else:
+                self.rules[p.section].setdefault(p.pred[0][0], []).append(p)
+        self.coercers = {}
+        for name, types in model.modules.items():
+            self.coercers[name] = [COERCE.get(t, _val) for t in types]
+        self.current_line = 0
+
+    # --- one production ---------------------------------------------------------------------
+    def fire(self, p, args):
+        """The successor of `p` with `args`, or None when its body produced nothing."""
+        self.rt.tick()
+        self.current_line = p.line
+        self.rt.buffer = []
+        if p.call(*args) is not True:
+            return None
+        out = self.rt.buffer
+        coercers = self.coercers
+        for k, m in enumerate(out):
+            c = coercers.get(m[0])
+            if c and len(c) == len(m[1]):
+                out[k] = (m[0], tuple(f(a) for f, a in zip(c, m[1])))
+        return out
+
+    def candidates(self, index, name):
+        group = self.rt.group
+        found = index.get((group, name), [])
+        if group != 0:
+            found = found + index.get((0, name), [])
+        return found
+
+    # --- a derivation step ------------------------------------------------------------------
+    def step(self, s):
+        if self.rt.direction == "backward":
+            return self.step_backward(s)
+        out = []
+        i, n = 0, len(s)
+        while i < n:
+            width = 0
+            for p in self.candidates(self.forward_index, s[i][0]):
+                args = self.match(p, s, i, out, None)
+                if args is None:
+                    continue
+                result = self.fire(p, args)
+                if result is not None:
+                    out.extend(result)
+                    width = len(p.pred)
+                    break
+            if width:
+                i += width
+            else:
+                out.append(s[i])
+                i += 1
+        return out
+
+    def step_backward(self, s):
+        out_rev = []
+        i = len(s) - 1
+        while i >= 0:
+            width = 0
+            for p in self.candidates(self.backward_index, s[i][0]):
+                args = self.match(p, s, i - len(p.pred) + 1, None, out_rev)
+                if args is None:
+                    continue
+                result = self.fire(p, args)
+                if result is not None:
+                    out_rev.extend(reversed(result))
+                    width = len(p.pred)
+                    break
+            if width:
+                i -= width
+            else:
+                out_rev.append(s[i])
+                i -= 1
+        out_rev.reverse()
+        return out_rev
+
+    def match(self, p, s, start, out, out_rev):
+        args = match_strict(s, start, p.pred)
+        if args is None:
+            return None
+        if p.left:
+            if p.left_new and out is not None:
+                left = match_left(out, len(out), p.left, self.skipper)
+            else:
+                left = match_left(s, start, p.left, self.skipper)
+            if left is None:
+                return None
+            args = left + args
+        if p.right:
+            if p.right_new and out_rev is not None:
+                right = match_right(Reversed(out_rev), 0, p.right, self.skipper)
+            else:
+                right = match_right(s, start + len(p.pred), p.right, self.skipper)
+            if right is None:
+                return None
+            args = args + right
+        return args
+
+    # --- decomposition and interpretation ---------------------------------------------------
+    def rewrite(self, s, section):
+        """Each module replaced by its rule's successor, again in that, down to the section's
+        maximum depth (an explicit stack: depths of a thousand are common)."""
+        rules = self.rules[section]
+        if not rules:
+            return s
+        out = []
+        stack = [(iter(s), self.model.max_depth[section])]
+        while stack:
+            it, depth = stack[-1]
+            m = next(it, None)
+            if m is None:
+                stack.pop()
+                continue
+            result = None
+            if depth > 0:
+                for p in rules.get(m[0], ()):
+                    if len(p.pred) == 1 and p.pred[0][1] == len(m[1]):
+                        result = self.fire(p, m[1])
+                        if result is not None:
+                            break
+            if result is None:
+                out.append(m)
+                if len(out) > self.max_modules:
+                    raise LpfgError(f"the string grew beyond {self.max_modules} modules during {section}")
+            else:
+                stack.append((iter(result), depth - 1))
+        return out
+
+    # --- the whole run ----------------------------------------------------------------------
+    def hook(self, name):
+        if name in self.model.hooks:
+            self.ns[name]()
+
+    def run(self, steps):
+        """(final string after interpretation, steps derived)."""
+        self.hook("_start")
+        if steps is None:
+            steps = self.ns["_derivation_length"]() if self.model.has_length else 0
+        self.rt.buffer = []
+        if "_axiom" not in self.ns:
+            raise LpfgError("the model has no Axiom:")
+        self.ns["_axiom"]()
+        s = self.rewrite(self.fire_axiom(), "decomposition")
+        done = 0
+        try:
+            while done < steps and not self.rt.stop:
+                self.rt.step = done
+                self.hook("_start_each")
+                s = self.rewrite(self.step(s), "decomposition")
+                done += 1
+                if len(s) > self.max_modules:
+                    raise LpfgError(f"the string grew beyond {self.max_modules} modules at step {done}")
+                self.hook("_end_each")
+            self.hook("_end")
+        except StopDerivation:
+            pass
+        return self.rewrite(s, "interpretation"), done
+
+    def fire_axiom(self):
+        out = self.rt.buffer
+        for k, m in enumerate(out):
+            c = self.coercers.get(m[0])
+            if c and len(c) == len(m[1]):
+                out[k] = (m[0], tuple(f(a) for f, a in zip(c, m[1])))
+        return list(out)
