@@ -5,7 +5,7 @@ from .lexer import LpfgError
 SCALAR_TYPES = {
     "int": "int", "float": "float", "double": "float", "bool": "bool", "char": "int",
     "long": "int", "short": "int", "unsigned": "int", "signed": "int", "size_t": "int",
-    "void": "void",
+    "void": "void", "FILE": "handle", "VisibilityMode": "int",
 }
 QUALIFIERS = {"const", "static", "inline", "extern", "volatile", "register", "struct", "mutable"}
 VECTOR_TYPES = {"V3f": "V3f", "V3d": "V3f", "V2f": "V2f", "V2d": "V2f", "V3i": "V3f", "V2i": "V2f"}

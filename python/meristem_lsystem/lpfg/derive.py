@@ -38,7 +38,7 @@ class Engine:
     def fire(self, p, args):
         """The successor of `p` with `args`, or None when its body produced nothing."""
         self.rt.tick()
-        self.current_line = p.line
+        self.current_line = self.rt.line = p.line
         self.rt.buffer = []
         if p.call(*args) is not True:
             return None
@@ -107,6 +107,8 @@ class Engine:
         args = match_strict(s, start, p.pred)
         if args is None:
             return None
+        if self.model.ring and (p.left or p.right):
+            return self.match_ring(p, s, start, args)
         if p.left:
             if p.left_new and out is not None:
                 left = match_left(out, len(out), p.left, self.skipper)
@@ -125,34 +127,54 @@ class Engine:
             args = args + right
         return args
 
+    def match_ring(self, p, s, start, args):
+        """A ring L-system: the string's end touches its start (for contexts)."""
+        n = len(s)
+        twice = s + s
+        if p.left:
+            left = match_left(twice, start + n, p.left, self.skipper)
+            if left is None:
+                return None
+            args = left + args
+        if p.right:
+            right = match_right(twice, start + len(p.pred), p.right, self.skipper)
+            if right is None:
+                return None
+            args = args + right
+        return args
+
     # --- decomposition and interpretation ---------------------------------------------------
     def rewrite(self, s, section):
         """Each module replaced by its rule's successor, again in that, down to the section's
-        maximum depth (an explicit stack: depths of a thousand are common)."""
+        maximum depth (an explicit stack: depths of a thousand are common). Contexts are
+        matched in the string the module is in."""
         rules = self.rules[section]
         if not rules:
             return s
         out = []
-        stack = [(iter(s), self.model.max_depth[section])]
+        stack = [[s, 0, self.model.max_depth[section]]]
         while stack:
-            it, depth = stack[-1]
-            m = next(it, None)
-            if m is None:
+            top = stack[-1]
+            seq, i, depth = top
+            if i >= len(seq):
                 stack.pop()
                 continue
-            result = None
+            result, width = None, 1
             if depth > 0:
-                for p in rules.get(m[0], ()):
-                    if len(p.pred) == 1 and p.pred[0][1] == len(m[1]):
-                        result = self.fire(p, m[1])
+                for p in rules.get(seq[i][0], ()):
+                    args = self.match(p, seq, i, None, None)
+                    if args is not None:
+                        result = self.fire(p, args)
                         if result is not None:
+                            width = len(p.pred)
                             break
+            top[1] = i + width
             if result is None:
-                out.append(m)
+                out.append(seq[i])
                 if len(out) > self.max_modules:
                     raise LpfgError(f"the string grew beyond {self.max_modules} modules during {section}")
             else:
-                stack.append((iter(result), depth - 1))
+                stack.append([result, 0, depth - 1])
         return out
 
     # --- the whole run ----------------------------------------------------------------------

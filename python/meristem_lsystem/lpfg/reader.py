@@ -7,6 +7,7 @@ patterns, sections, groups, ignore/consider, maximum depths).
 from .control import BodyTranslator
 from .cursor import SCALAR_TYPES
 from .expressions import coerce, py_name
+from .runtime import PREDEFINED_STRUCTS
 from .statements import Struct
 
 SECTIONS = {
@@ -40,6 +41,7 @@ class Model:
         self.source = ""
         self.hooks = set()
         self.has_length = False
+        self.ring = False
 
 
 class Reader(BodyTranslator):
@@ -51,6 +53,23 @@ class Reader(BodyTranslator):
         self.current_return = None
         for name in function_names:
             self.globals[name] = (py_name(name), "int")
+        for name, cls in PREDEFINED_STRUCTS.items():
+            struct = Struct(name)
+            struct.fields = [(f, t, []) for f, t in zip(cls._fields, cls._types)]
+            self.structs[name] = struct
+        self.declare_views()
+
+    def declare_views(self):
+        """View names (`vgroup Name:`, `UseView(Name)`) are numbers lpfg gives each view."""
+        views = []
+        for k, t in enumerate(self.tokens):
+            before = self.tokens[k - 2][1] if k >= 2 else ""
+            if t[0] == "id" and (self.tokens[k - 1][1] == "vgroup" or before in ("UseView", "CloseView")):
+                if t[1] not in views and t[1] not in self.globals:
+                    views.append(t[1])
+        for number, name in enumerate(views):
+            self.globals[name] = (py_name(name), "int")
+            self.lines.append(f"{py_name(name)} = {number}  #@{0}")
 
     def read(self):
         while self.peek()[0] != "eof":
@@ -80,6 +99,8 @@ class Reader(BodyTranslator):
             handler()
         elif v == "derivation" and self.at("length", 1):
             self.derivation_length()
+        elif v == "ring" and self.at("L", 1):
+            self.ring()
         elif v == "maximum" and self.at("depth", 1):
             self.maximum_depth()
         elif v in HOOKS and self.at(":", 1):
@@ -144,6 +165,16 @@ class Reader(BodyTranslator):
             raise self.error("maximum depth must be a number", tok)
         key = self.section if self.section != "production" else "decomposition"
         self.model.max_depth[key] = depth
+
+    def ring(self):
+        """`ring L-system: 1;` — the string is a ring for contexts."""
+        tok = self.next()
+        while not self.accept(":"):
+            self.next()
+        e = self.expression()
+        self.expect(";")
+        self.model.ring = e.code not in ("0", "False")
+        del tok
 
     def ignore_list(self):
         word = self.next()[1]
@@ -428,4 +459,11 @@ class Reader(BodyTranslator):
 
 
 def _predefined_type(name):
-    return "int" if name in ("SetColor", "IncColor", "DecColor") else "float"
+    """The type of a parameter of a module the model does not declare (lpfg's own)."""
+    if name in ("SetColor", "IncColor", "DecColor"):
+        return "int"
+    return "float" if name in TURTLE_FLOATS else None
+
+
+TURTLE_FLOATS = {"F", "f", "Left", "Right", "Up", "Down", "RollL", "RollR", "SetWidth", "Sphere",
+                 "Circle", "E1", "E2", "Surface", "MoveTo", "Line", "LineTo", "GetPos", "GetHead"}

@@ -100,6 +100,26 @@ class V2f(_Vector):
     _defaults = (float, float)
 
 
+class MouseStatus(_Struct):
+    """lpfg's mouse state: no mouse here, so nothing is ever pushed."""
+
+    _fields = ("viewX", "viewY", "atFront", "atRear", "atMiddle", "lbDown", "lbPushed",
+               "lbReleased", "mbDown", "mbPushed", "mbReleased", "rbDown", "rbPushed", "rbReleased",
+               "cursorActive", "selectedModuleId")
+    _types = ("int", "int", "V3f", "V3f", "V3f") + ("int",) * 11
+    _defaults = (int, int, V3f, V3f, V3f) + (int,) * 11
+
+
+class CameraPosition(_Struct):
+    _fields = ("position", "lookat", "up", "scale", "upVector", "headVector")
+    _types = ("V3f", "V3f", "V3f", "float", "V3f", "V3f")
+    _defaults = (V3f, V3f, V3f, lambda: 1.0, V3f, V3f)
+
+
+# lpfg's types that are structs of its own, with their fields' types (for the translator).
+PREDEFINED_STRUCTS = {"MouseStatus": MouseStatus, "CameraPosition": CameraPosition}
+
+
 class _Init:
     """A brace initialiser `{a, b, …}` before it knows what it initialises."""
 
@@ -134,10 +154,23 @@ def _bool(v):
     return 1 if v else 0
 
 
+class ZeroDivisionNote:
+    """Where an integer division or remainder by zero is noted (C leaves it undefined; the
+    result is 0 and the run goes on, as a researcher opening the model expects a plant)."""
+
+    notify = None
+
+
+def _zero_int(what):
+    if ZeroDivisionNote.notify is not None:
+        ZeroDivisionNote.notify(what)
+    return 0
+
+
 def _div(a, b):
     if isinstance(a, int) and isinstance(b, int):
         if b == 0:
-            raise LpfgError("integer division by zero")
+            return _zero_int("division")
         q = abs(a) // abs(b)
         return q if (a >= 0) == (b >= 0) else -q
     try:
@@ -151,7 +184,7 @@ def _div(a, b):
 def _mod(a, b):
     if isinstance(a, int) and isinstance(b, int):
         if b == 0:
-            raise LpfgError("integer remainder by zero")
+            return _zero_int("remainder")
         r = abs(a) % abs(b)
         return r if a >= 0 else -r
     return math.fmod(a, b)
@@ -246,6 +279,14 @@ class Runtime:
         self.group = 0
         self.stop = False
         self.step = 0
+        self.line = 0  # the line of the production running, for notes
+        ZeroDivisionNote.notify = self.zero_division
+
+    def zero_division(self, what):
+        key = ("zero", self.line)
+        if key not in self.noted:
+            self.noted.add(key)
+            self.notes.append({"line": self.line, "message": f"integer {what} by zero (undefined in C) gave 0"})
 
     def tick(self):
         if time.monotonic() > self.deadline:
@@ -276,10 +317,20 @@ class Runtime:
             "Printf": self.ignored("Printf"), "printf": self.ignored("printf"),
             "fprintf": self.ignored("fprintf"), "fflush": self.ignored("fflush"),
             "UseView": self.ignored("UseView"), "DisplayFrame": self.ignored("DisplayFrame"),
-            "fopen": self.unsupported("fopen"), "fclose": self.ignored("fclose"),
+            "fopen": self.no_file, "fclose": self.ignored("fclose"),
             "stdout": None, "stderr": None, "exit": self.do_exit, "assert": lambda c: None,
+            "MouseStatus": MouseStatus, "CameraPosition": CameraPosition,
+            "GetMouseStatus": self.mouse, "GetCameraPosition": lambda *a: CameraPosition(),
+            "RunSimulation": lambda: None, "PauseSimulation": lambda: None,
+            "StopSimulation": lambda: None, "terrainVisibilityAll": lambda *a: None,
+            "Shaded": 0, "Wireframe": 1, "Hidden": 2,
         })
         return ns
+
+    def mouse(self):
+        self.note_once("mouse", "GetMouseStatus: an interactive model; here the mouse never moves "
+                       "or clicks, so what it would add by hand is not drawn")
+        return MouseStatus()
 
     def nproduce(self, *modules):
         self.buffer.extend(modules)
@@ -302,7 +353,8 @@ class Runtime:
             return 0
         return call
 
-    def unsupported(self, name):
-        def call(*args):
-            raise LpfgError(f"{name}: file access is not available (files arrive with the model)")
-        return call
+    def no_file(self, name="", mode="r", *rest):
+        if "r" in str(mode):
+            raise LpfgError(f"fopen({name!r}): reading files from a model is not available")
+        self.note_once("fopen", f"fopen({name!r}): files the model writes are not written")
+        return None
