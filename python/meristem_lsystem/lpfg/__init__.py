@@ -9,7 +9,6 @@ contexts) → `output` (the string in lpfg's module names).
 
 import re
 import sys
-import time
 
 from .derive import Engine
 from .lexer import LpfgError
@@ -31,8 +30,7 @@ def run(files, main, options=None):
     options = options or {}
     notes = []
     result = {"ok": False, "dialect": "lpfg", "steps": 0, "lstring": "", "materials": [],
-              "notes": notes, "error": None}
-    started = time.monotonic()
+              "notes": notes, "error": None, "objects": []}
     runtime = None
     engine = None
     source_lines = []
@@ -61,7 +59,6 @@ def run(files, main, options=None):
     except Exception as e:  # the model's own code failing at run time
         line = _model_line(sys.exc_info()[2], source_lines) or (engine.current_line if engine else 0)
         result["error"] = {"line": line, "column": 0, "message": _describe(e)}
-    result["seconds"] = round(time.monotonic() - started, 3)
     return result
 
 

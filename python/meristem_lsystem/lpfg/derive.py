@@ -9,6 +9,13 @@ from .lexer import LpfgError
 from .matching import Reversed, Skipper, match_left, match_right, match_strict
 from .runtime import StopDerivation, _int, _val
 
+# lpfg's own modules whose parameters are floats (SetColor's are ints: it is left as written).
+PREDEFINED_FLOATS = {
+    "F", "f", "Left", "Right", "Up", "Down", "RollL", "RollR", "SetWidth", "Sphere", "Circle",
+    "Surface", "MoveTo", "MoveRel", "Line", "LineTo", "LineRel", "Cylinder", "Rhombus",
+    "Triangle", "SetHead", "Sphere0", "Circle0", "Elasticity", "SetElasticity", "TropismDirection",
+    "CurveScale", "Orient", "Label2D",
+}
 COERCE = {"int": _int, "float": float, "bool": lambda v: 1 if v else 0}
 
 
@@ -29,7 +36,7 @@ class Engine:
                 self.backward_index.setdefault((p.group, p.pred[-1][0]), []).append(p)
             else:
                 self.rules[p.section].setdefault(p.pred[0][0], []).append(p)
-        self.coercers = {}
+        self.coercers = {name: None for name in PREDEFINED_FLOATS}
         for name, types in model.modules.items():
             self.coercers[name] = [COERCE.get(t, _val) for t in types]
         self.current_line = 0
@@ -43,11 +50,20 @@ class Engine:
         if p.call(*args) is not True:
             return None
         out = self.rt.buffer
+        return self.coerce(out)
+
+    def coerce(self, out):
+        """Parameters as the module's declaration types them (lpfg's own modules take floats)."""
         coercers = self.coercers
         for k, m in enumerate(out):
-            c = coercers.get(m[0])
-            if c and len(c) == len(m[1]):
-                out[k] = (m[0], tuple(f(a) for f, a in zip(c, m[1])))
+            name = m[0]
+            if name not in coercers:
+                continue
+            c = coercers[name]
+            if c is None:
+                out[k] = (name, tuple(float(a) if type(a) is int else a for a in m[1]))
+            elif len(c) == len(m[1]):
+                out[k] = (name, tuple(f(a) for f, a in zip(c, m[1])))
         return out
 
     def candidates(self, index, name):
@@ -208,9 +224,4 @@ class Engine:
         return self.rewrite(s, "interpretation"), done
 
     def fire_axiom(self):
-        out = self.rt.buffer
-        for k, m in enumerate(out):
-            c = self.coercers.get(m[0])
-            if c and len(c) == len(m[1]):
-                out[k] = (m[0], tuple(f(a) for f, a in zip(c, m[1])))
-        return list(out)
+        return list(self.coerce(self.rt.buffer))

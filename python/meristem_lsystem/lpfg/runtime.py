@@ -187,6 +187,8 @@ def _mod(a, b):
             return _zero_int("remainder")
         r = abs(a) % abs(b)
         return r if a >= 0 else -r
+    if isinstance(a, _Vector):
+        return a % b  # lpfg's cross product
     return math.fmod(a, b)
 
 
