@@ -28,6 +28,9 @@ class BodyTranslator(StatementTranslator):
             if handler:
                 handler()
                 return
+            if v == "struct" and self.peek(1)[0] == "id" and self.peek(2)[0] == "id":
+                self.declaration(is_global=False)
+                return
             if v in ("typedef", "struct", "class", "enum", "goto", "new", "delete", "template"):
                 raise self.error(f"'{v}' inside a body is not supported")
             if self.at_type():

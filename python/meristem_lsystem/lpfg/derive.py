@@ -6,7 +6,7 @@ tried (the current group's first, then group 0's). Modules are tuples `(name, ar
 """
 
 from .lexer import LpfgError
-from .matching import Reversed, Skipper, match_left, match_right, match_strict
+from .matching import Reversed, Skipper, match_left, match_right, match_right_end, match_strict
 from .runtime import StopDerivation, _int, _val
 
 # lpfg's own modules whose parameters are floats (SetColor's are ints: it is left as written).
@@ -40,11 +40,18 @@ class Engine:
         for name, types in model.modules.items():
             self.coercers[name] = [COERCE.get(t, _val) for t in types]
         self.current_line = 0
+        self.where = None
+        self.context_state = {}
+        namespace["_in_context"] = self.in_context
 
     # --- one production ---------------------------------------------------------------------
-    def fire(self, p, args):
-        """The successor of `p` with `args`, or None when its body produced nothing."""
+    def fire(self, p, args, where=None):
+        """The successor of `p` with `args`, or None when its body produced nothing. `where`
+        is (string, start, new string so far, new string to the right reversed), for the
+        body's `InRightContext` and kin."""
         self.rt.tick()
+        self.where = where
+        self.context_state = {}
         self.current_line = self.rt.line = p.line
         self.rt.buffer = []
         if p.call(*args) is not True:
@@ -73,6 +80,30 @@ class Engine:
             found = found + index.get((0, name), [])
         return found
 
+    def in_context(self, side, new, key, pattern):
+        """The parameters of `pattern` beside the predecessor being rewritten, or None."""
+        if self.where is None:
+            return None
+        s, start, p, out, out_rev = self.where
+        pattern = [tuple(x) for x in pattern]
+        if side == "left":
+            if new:
+                return None if out is None else match_left(out, len(out), pattern, self.skipper)
+            return match_left(s, start, pattern, self.skipper)
+        if new:
+            if out_rev is None:
+                return None
+            seq, j = Reversed(out_rev), 0
+        else:
+            seq, j = s, start + len(p.pred)
+        j = self.context_state.get(key, j)
+        found = match_right_end(seq, j, pattern, self.skipper)
+        if found is None:
+            return None
+        if pattern[0][0] == "SB":  # called again, the next branch
+            self.context_state[key] = found[1]
+        return found[0]
+
     # --- a derivation step ------------------------------------------------------------------
     def step(self, s):
         if self.rt.direction == "backward":
@@ -85,7 +116,7 @@ class Engine:
                 args = self.match(p, s, i, out, None)
                 if args is None:
                     continue
-                result = self.fire(p, args)
+                result = self.fire(p, args, (s, i, p, out, None))
                 if result is not None:
                     out.extend(result)
                     width = len(p.pred)
@@ -106,7 +137,7 @@ class Engine:
                 args = self.match(p, s, i - len(p.pred) + 1, None, out_rev)
                 if args is None:
                     continue
-                result = self.fire(p, args)
+                result = self.fire(p, args, (s, i - len(p.pred) + 1, p, None, out_rev))
                 if result is not None:
                     out_rev.extend(reversed(result))
                     width = len(p.pred)

@@ -63,7 +63,43 @@ def binary_code(op, left, right):
     return f"({left} {op} {right})"
 
 
-class ExpressionParser(Cursor):
+CONTEXT_CALLS = {
+    "InLeftContext": ("left", False), "InRightContext": ("right", False),
+    "InNewLeftContext": ("left", True), "InNewRightContext": ("right", True),
+}
+
+
+class ContextCalls:
+    """`InRightContext(SB() X(a) EB())` and its kin: true when the pattern is found next to the
+    predecessor, binding its parameters to the (declared) variables named in it. Called again
+    at the same place (a `while`), a pattern that starts with a branch finds the next branch."""
+
+    def context_call(self, name):
+        side, new = CONTEXT_CALLS[name]
+        self.expect("(")
+        pattern, names = [], []
+        while not self.accept(")"):
+            module = self.ident()
+            arity = 0
+            if self.accept("("):
+                while not self.accept(")"):
+                    names.append(self.ident())
+                    arity += 1
+                    self.accept(",")
+            pattern.append((module, arity))
+        self.counter += 1
+        holder = f"_cv{self.counter}"
+        binds = []
+        for k, var in enumerate(names):
+            found = self.lookup(var)
+            target = found.code if found is not None and found.lv[0] == "name" else py_name(var)
+            binds.append(f"({target} := _val({holder}[{k}]))")
+        bound = f"_last({', '.join(binds)}, 1)" if binds else "1"
+        call = f"_in_context({side!r}, {new}, {self.counter}, {tuple(pattern)!r})"
+        return Expr(f"_bool((({holder} := {call}) is not None) and {bound})", None, "int")
+
+
+class ExpressionParser(Cursor, ContextCalls):
     """Needs from its subclass: `lookup(name) -> Expr | None`, `is_type_name(name)`,
     `field_type(struct type, field)`, `struct_names`."""
 
@@ -260,6 +296,8 @@ class ExpressionParser(Cursor):
 
     def call(self, t):
         name = t[1]
+        if name in CONTEXT_CALLS:
+            return self.context_call(name)
         args = self.arguments()
         if name in VECTOR_TYPES:
             return Expr(f"{VECTOR_TYPES[name]}({', '.join(args)})", None, VECTOR_TYPES[name])

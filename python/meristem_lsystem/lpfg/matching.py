@@ -66,6 +66,12 @@ def _before_branch(seq, j):
 
 
 def match_right(seq, j, pattern, skipper):
+    found = match_right_end(seq, j, pattern, skipper)
+    return None if found is None else found[0]
+
+
+def match_right_end(seq, j, pattern, skipper):
+    """(parameters, index after the match) or None."""
     args = []
     n = len(seq)
     for name, arity in pattern:
@@ -99,7 +105,7 @@ def match_right(seq, j, pattern, skipper):
             return None
         args.extend(module[1])
         j += 1
-    return args
+    return args, j
 
 
 def match_left(seq, i, pattern, skipper):

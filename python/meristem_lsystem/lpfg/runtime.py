@@ -147,6 +147,10 @@ def _int(v):
     try:
         return int(v)
     except (OverflowError, ValueError):
+        if isinstance(v, float):  # undefined in C; a PC's lpfg gets the "integer indefinite"
+            if ZeroDivisionNote.notify is not None:
+                ZeroDivisionNote.notify("conversion of an infinite or NaN value", -2147483648)
+            return -2147483648
         raise LpfgError(f"cannot convert {v!r} to an integer")
 
 
@@ -163,8 +167,17 @@ class ZeroDivisionNote:
 
 def _zero_int(what):
     if ZeroDivisionNote.notify is not None:
-        ZeroDivisionNote.notify(what)
+        ZeroDivisionNote.notify(f"{what} by zero", 0)
     return 0
+
+
+def _log(x, base=None):
+    """C's log: log(0) is -inf, a negative number's log is NaN."""
+    if x == 0:
+        return -math.inf
+    if x < 0 or x != x:
+        return math.nan
+    return math.log(x) if base is None else math.log(x) / math.log(base)
 
 
 def _div(a, b):
@@ -255,7 +268,7 @@ def _safe(f):
 MATHS = {
     "sin": math.sin, "cos": math.cos, "tan": math.tan, "asin": _safe(math.asin),
     "acos": _safe(math.acos), "atan": math.atan, "atan2": math.atan2, "sqrt": _safe(math.sqrt),
-    "exp": _safe(math.exp), "log": _safe(math.log), "log10": _safe(math.log10),
+    "exp": _safe(math.exp), "log": _log, "log10": lambda x: _log(x, 10),
     "pow": _pow, "fabs": lambda x: abs(float(x)), "abs": abs, "floor": lambda x: float(math.floor(x)),
     "ceil": lambda x: float(math.ceil(x)), "fmod": math.fmod, "fmin": min, "fmax": max,
     "min": min, "max": max, "sinh": math.sinh, "cosh": math.cosh, "tanh": math.tanh,
@@ -284,11 +297,11 @@ class Runtime:
         self.line = 0  # the line of the production running, for notes
         ZeroDivisionNote.notify = self.zero_division
 
-    def zero_division(self, what):
-        key = ("zero", self.line)
+    def zero_division(self, what, value):
+        key = ("undefined", what, self.line)
         if key not in self.noted:
             self.noted.add(key)
-            self.notes.append({"line": self.line, "message": f"integer {what} by zero (undefined in C) gave 0"})
+            self.notes.append({"line": self.line, "message": f"integer {what} (undefined in C) gave {value}"})
 
     def tick(self):
         if time.monotonic() > self.deadline:
