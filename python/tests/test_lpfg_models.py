@@ -190,6 +190,47 @@ points: 4
         self.assertAlmostEqual(float(modules(r)[0][1][0]), 0.25, places=3)
 
 
+class LpfgFeatureTest(unittest.TestCase):
+    def test_in_new_right_context_walks_the_branches_in_a_while_loop(self):  # as InNewContext
+        src = """derivation length: 1;
+module N(float);
+Start: { Backward(); }
+Axiom: N(0) SB() N(2) EB() SB() N(3) EB() N(4);
+N(a):
+{
+  float b, sum = 0;
+  while (InNewRightContext(SB() N(b) EB())) sum += b;
+  if (InNewRightContext(N(b))) sum += b;
+  produce N(a + sum);
+}
+"""
+        r = run_lpfg(src)
+        self.assertEqual([a[0] for n, a in modules(r) if n == "N"], ["9.0", "2.0", "3.0", "4.0"])
+
+    def test_a_constructor_with_initialisers_and_an_enum_in_a_struct(self):  # as UserMenu
+        src = """derivation length: 0;
+struct S { int c; enum { E0, E1 } e; S(void) : c(4), e(E1) {} };
+module M(S);
+Axiom: M(S());
+interpretation:
+M(s): { if (s.e == S::E1) produce F(s.c); }
+"""
+        self.assertEqual(run_lpfg(src)["lstring"], "F(4.0)")
+
+    def test_a_gillespie_group_rewrites_one_module_per_step(self):
+        src = """derivation length: 5;
+Start: { UseGroup(1); SeedGillespie(3); }
+module A();
+Axiom: A A A;
+ggroup 1:
+A(): { propensity 2.0 produce F(1) A; }
+"""
+        r = run_lpfg(src)
+        self.assertEqual(count(r, "F"), 5)
+        self.assertEqual(count(r, "A"), 3)
+        self.assertEqual(run_lpfg(src)["lstring"], r["lstring"])  # the same seed, the same plant
+
+
 class ErrorTest(unittest.TestCase):
     def test_a_syntax_error_gives_its_line_and_column(self):
         r = run_lpfg("derivation length: 1;\nAxiom: A;\nA(): { produce F(1) }\n")

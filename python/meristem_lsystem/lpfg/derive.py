@@ -105,7 +105,33 @@ class Engine:
         return found[0]
 
     # --- a derivation step ------------------------------------------------------------------
+    def step_gillespie(self, s):
+        """A ggroup step (Gillespie's algorithm): every applicable production gives its
+        propensity; one of them, drawn in proportion, rewrites its predecessor alone."""
+        reactions = []
+        for i in range(len(s)):
+            for p in self.forward_index.get((self.rt.group, s[i][0]), ()):
+                args = self.match(p, s, i, None, None)
+                if args is None:
+                    continue
+                self.rt.propensity = 1.0
+                result = self.fire(p, args, (s, i, p, None, None))
+                if result is not None:
+                    if self.rt.propensity > 0:
+                        reactions.append((self.rt.propensity, i, len(p.pred), result))
+                    break
+        if not reactions:
+            return s
+        pick = self.rt.rng.random() * sum(r[0] for r in reactions)
+        for rate, i, width, result in reactions:
+            pick -= rate
+            if pick < 0:
+                break
+        return s[:i] + result + s[i + width:]
+
     def step(self, s):
+        if self.rt.group in self.model.gillespie:
+            return self.step_gillespie(s)
         if self.rt.direction == "backward":
             return self.step_backward(s)
         out = []

@@ -266,7 +266,7 @@ class ExpressionParser(Cursor, ContextCalls):
             return self.initializer_list()
         if kind != "id":
             raise self.error(f"unexpected '{value}' in an expression", t)
-        if value in ("std", ) and self.accept("::"):
+        if self.accept("::"):  # std::sin, ShapeData::SD_Square: the names are global here
             return self.primary()
         if value in CONSTANTS:
             return Expr(CONSTANTS[value], None, "bool")

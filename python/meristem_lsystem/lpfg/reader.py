@@ -42,6 +42,7 @@ class Model:
         self.hooks = set()
         self.has_length = False
         self.ring = False
+        self.gillespie = set()  # groups rewritten one reaction at a time (ggroup)
 
 
 class Reader(BodyTranslator):
@@ -94,6 +95,7 @@ class Reader(BodyTranslator):
             "struct": self.struct_or_declaration, "class": self.struct_or_declaration,
             "typedef": self.typedef, "using": self.skip_statement, "enum": self.enum,
             "group": self.group_start, "vgroup": self.group_start, "endgroup": self.group_end,
+            "ggroup": self.group_start,
         }.get(v) if t[0] == "id" else None
         if handler:
             handler()
@@ -188,11 +190,13 @@ class Reader(BodyTranslator):
             self.model.consider = (self.model.consider or set()) | names
 
     def group_start(self):
-        self.next()
+        word = self.next()[1]
         t = self.next()
         self.expect(":")
         if t[0] == "num":
             self.group = int(float(t[1].rstrip("fFlL")))
+            if word == "ggroup":
+                self.model.gillespie.add(self.group)
         # a view group (vgroup) is drawn like the rest: its modules keep group 0
 
     def group_end(self):
@@ -267,7 +271,7 @@ class Reader(BodyTranslator):
             parts["right"], right_new, func, start[2]))
         self.function_body(func, names, None)
 
-    def function_body(self, name, params, return_type, method_of=None):
+    def function_body(self, name, params, return_type, method_of=None, initialisers=False):
         """`def name(params):` with the body that follows ('{…}' or one statement)."""
         self.scopes = [{}]
         saved_lines, self.lines = self.lines, []
@@ -284,6 +288,14 @@ class Reader(BodyTranslator):
                 entry.append(f"{py} = _val({py})")
         for line in entry:
             self.emit(line)
+        if initialisers and self.accept(":"):  # a constructor's `: field(value), …`
+            while not self.at("{"):
+                field = self.ident()
+                self.expect("(")
+                value = self.expression()
+                self.expect(")")
+                self.emit(f"self.{field} = {coerce(value.code, method_of.field_type(field))}")
+                self.accept(",")
         if self.accept("{"):
             self.block_until_brace()
         else:
@@ -400,6 +412,9 @@ class Reader(BodyTranslator):
             if self.at("~"):
                 self._skip_member()
                 continue
+            if self.at("enum"):
+                self.enum_member(struct)
+                continue
             k = 0
             while self.peek(k)[0] == "id" and self.is_type_name(self.peek(k)[1]):
                 k += 1
@@ -419,6 +434,26 @@ class Reader(BodyTranslator):
                     break
             self.expect(";")
         self.emit_struct(struct, methods)
+
+    def enum_member(self, struct):
+        """`enum { A, B } field;` inside a struct: the names are constants, the field an int."""
+        self.next()
+        if self.peek()[0] == "id":
+            self.typedefs[self.next()[1]] = "int"
+        self.expect("{")
+        value = "0"
+        while not self.accept("}"):
+            name = self.ident()
+            if self.accept("="):
+                value = self.ternary().code
+            self.globals[name] = (py_name(name), "int")
+            self.emit(f"{py_name(name)} = {value}")
+            value = f"({py_name(name)} + 1)"
+            self.accept(",")
+        while not self.accept(";"):
+            name = self.ident()
+            struct.fields.append((name, "int", []))
+            self.accept(",")
 
     def _skip_member(self):
         depth = 0
@@ -448,9 +483,7 @@ class Reader(BodyTranslator):
             if kind == "ctor":
                 self.next()
                 params = self.parameter_list()
-                if self.accept(":"):
-                    raise self.error("constructor initialiser lists are not supported")
-                self.function_body(f"_ctor_{len(params)}", params, None, method_of=struct)
+                self.function_body(f"_ctor_{len(params)}", params, None, method_of=struct, initialisers=True)
             else:
                 self.function_definition(method_of=struct)
             body, self.lines = self.lines, saved

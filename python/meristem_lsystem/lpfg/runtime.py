@@ -295,6 +295,7 @@ class Runtime:
         self.stop = False
         self.step = 0
         self.line = 0  # the line of the production running, for notes
+        self.propensity = 1.0  # the rate the last ggroup production gave
         ZeroDivisionNote.notify = self.zero_division
 
     def zero_division(self, what, value):
@@ -325,6 +326,10 @@ class Runtime:
             "drand48": self.rng.random, "random": lambda: self.rng.randrange(2147483648),
             "uniform": lambda a=0.0, b=1.0: a + (b - a) * self.rng.random(),
             "func": self.functions.value, "tfunc": self.functions.timeline, "val": self.functions.val,
+            "_propensity": self.set_propensity, "SeedGillespie": lambda s=0: self.rng.seed(int(s)),
+            "expf": _safe(math.exp), "sqrtf": _safe(math.sqrt), "powf": _pow, "fabsf": lambda x: abs(float(x)),
+            "logf": _log, "sinf": math.sin, "cosf": math.cos, "floorf": lambda x: float(math.floor(x)),
+            "UserMenuItem": lambda *a: None, "UserMenuChoice": self.menu_choice,
             "Stop": self.do_stop, "Forward": lambda: self.set_direction("forward"),
             "Backward": lambda: self.set_direction("backward"), "UseGroup": self.use_group,
             "CurrentGroup": lambda: self.group, "getDerivationStep": lambda: self.step,
@@ -349,6 +354,13 @@ class Runtime:
 
     def nproduce(self, *modules):
         self.buffer.extend(modules)
+
+    def menu_choice(self):
+        self.note_once("menu", "UserMenuChoice: the model's own menu is not shown; no item is ever chosen (-1)")
+        return -1
+
+    def set_propensity(self, rate):
+        self.propensity = float(rate)
 
     def do_stop(self):
         self.stop = True
