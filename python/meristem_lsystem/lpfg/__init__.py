@@ -21,7 +21,7 @@ _LINE = re.compile(r"#@(\d+)$")
 
 # lpfg modules that ask the environment or the turtle for values lpfg fills in between steps.
 QUERIES = {
-    "E1": "environment", "E2": "environment", "GetPos": "turtle", "GetHead": "turtle",
+    "E1": "environment", "E2": "environment", "EA20": "environment", "GetPos": "turtle", "GetHead": "turtle",
     "GetLeft": "turtle", "GetUp": "turtle",
 }
 
