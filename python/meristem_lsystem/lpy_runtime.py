@@ -28,8 +28,7 @@ class Rule:
 
     def __init__(self, spec, func, order, consts):
         self.spec, self.func, self.order, self.group = spec, func, order, spec.group
-        compile_ = lambda pats: [Pattern(p.name, [(k, consts(v) if k == "const" else v)
-                                                  for k, v in p.specs]) for p in pats]
+        compile_ = lambda pats: [Pattern(p.name, [(k, consts(k, v)) for k, v in p.specs]) for p in pats]
         self.pred, self.left, self.right = compile_(spec.pred), compile_(spec.left), compile_(spec.right)
         self.new_left, self.new_right = compile_(spec.new_left), compile_(spec.new_right)
         self.first = self.pred[0].name
@@ -76,7 +75,7 @@ class LpyRuntime:
             "__M": Module, "__Mstar": lambda name, *args: Module(name, list(args)),
             "__produce": lambda mods: mods, "__nproduce": rt.nbuf_extend,
             "nsproduce": nproduce, "pproduce": nproduce,
-            "getIterationNb": lambda: rt.iteration, "Stop": rt.stop, "stop": rt.stop,
+            "getIterationNb": lambda: rt.iteration, "execContext": lambda: rt.context, "Stop": rt.stop, "stop": rt.stop,
             "forward": lambda: rt.set_direction(True), "backward": lambda: rt.set_direction(False),
             "isForward": lambda: rt.forward_dir, "useGroup": rt.use_group,
             "getGroup": lambda: rt.group, "context": lambda: rt.context,
@@ -135,7 +134,14 @@ class LpyRuntime:
             raise from_exception(e, self.filename) from None
 
     def _build_rules(self):
-        consts = lambda text: eval(text, self.namespace)  # the model's own expression
+        def consts(kind, value):
+            # the model's own expressions: a constant, or a test on a parameter
+            if kind == "const":
+                return eval(value, self.namespace)
+            if kind == "cond":
+                return eval(f"lambda {value[0]}: {value[1]}", self.namespace)
+            return value
+
         self.all_rules = []
         for order, spec in enumerate(self.source.rules):
             self.all_rules.append(Rule(spec, self.namespace[spec.function], order, consts))

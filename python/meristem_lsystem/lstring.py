@@ -34,7 +34,7 @@ PREDEFINED = [
 
 # Names that are only meaningful in patterns or string manipulation, never declared by default
 # as drawable modules of a user string (`x`, `or`, `new` are reserved in patterns only).
-PATTERN_ONLY = {"x", "or", "new", "=]", "?I", "$", "*"}
+PATTERN_ONLY = {"x", "or", "=]", "?I", "$"}
 
 
 def predefined_names() -> dict[str, str]:
