@@ -231,6 +231,29 @@ A(): { propensity 2.0 produce F(1) A; }
         self.assertEqual(run_lpfg(src)["lstring"], r["lstring"])  # the same seed, the same plant
 
 
+class BetweenStepsTest(unittest.TestCase):
+    def test_cut_removes_the_rest_of_its_branch_at_the_next_step(self):
+        src = """derivation length: %d;
+module X();
+Axiom: F(1) SB() F(2) X() F(3) SB() F(4) EB() F(5) EB() F(6);
+X(): { produce Cut(); }
+"""
+        self.assertIn("Cut()F(3.0)", run_lpfg(src % 1)["lstring"])  # produced, not yet applied
+        self.assertEqual(run_lpfg(src % 2)["lstring"], "F(1.0)SB()F(2.0)EB()F(6.0)")
+
+    def test_getpos_receives_the_turtles_position_through_interpretation(self):
+        src = """derivation length: 1;
+module A();
+Axiom: F(2) Left(90) A() GetPos(0, 0, 0);
+interpretation:
+A(): { produce F(3); }
+"""
+        r = run_lpfg(src)
+        pos = [a for n, a in modules(r) if n == "GetPos"][0]
+        self.assertAlmostEqual(float(pos[0]), -3.0)
+        self.assertAlmostEqual(float(pos[1]), 2.0)
+
+
 class ErrorTest(unittest.TestCase):
     def test_a_syntax_error_gives_its_line_and_column(self):
         r = run_lpfg("derivation length: 1;\nAxiom: A;\nA(): { produce F(1) }\n")

@@ -19,11 +19,9 @@ from .runtime import Runtime
 
 _LINE = re.compile(r"#@(\d+)$")
 
-# lpfg modules that ask the environment or the turtle for values lpfg fills in between steps.
-QUERIES = {
-    "E1": "environment", "E2": "environment", "EA20": "environment", "GetPos": "turtle", "GetHead": "turtle",
-    "GetLeft": "turtle", "GetUp": "turtle",
-}
+# lpfg modules that ask the environment for values it fills in between steps (the turtle's
+# queries, GetPos and kin, are answered: turtle.py).
+QUERIES = {"E1": "environment", "E2": "environment", "EA20": "environment"}
 
 
 def run(files, main, options=None):

@@ -8,6 +8,7 @@ tried (the current group's first, then group 0's). Modules are tuples `(name, ar
 from .lexer import LpfgError
 from .matching import Reversed, Skipper, match_left, match_right, match_right_end, match_strict
 from .runtime import StopDerivation, _int, _val
+from .turtle import answer_queries
 
 # lpfg's own modules whose parameters are floats (SetColor's are ints: it is left as written).
 PREDEFINED_FLOATS = {
@@ -131,9 +132,10 @@ class Engine:
 
     def step(self, s):
         if self.rt.group in self.model.gillespie:
-            return self.step_gillespie(s)
+            return self.step_gillespie(cut(s))
         if self.rt.direction == "backward":
             return self.step_backward(s)
+        s = cut(s)  # lpfg's DeriveForward skips from a Cut to the end of its branch
         out = []
         i, n = 0, len(s)
         while i < n:
@@ -264,13 +266,13 @@ class Engine:
         if "_axiom" not in self.ns:
             raise LpfgError("the model has no Axiom:")
         self.ns["_axiom"]()
-        s = self.rewrite(self.fire_axiom(), "decomposition")
+        s = self.settle(self.rewrite(self.fire_axiom(), "decomposition"))
         done = 0
         try:
             while done < steps and not self.rt.stop:
                 self.rt.step = done
                 self.hook("_start_each")
-                s = self.rewrite(self.step(s), "decomposition")
+                s = self.settle(self.rewrite(self.step(s), "decomposition"))
                 done += 1
                 if len(s) > self.max_modules:
                     raise LpfgError(f"the string grew beyond {self.max_modules} modules at step {done}")
@@ -280,5 +282,35 @@ class Engine:
             pass
         return self.rewrite(s, "interpretation"), done
 
+    def settle(self, s):
+        """What lpfg does to the string between steps: the turtle answers `GetPos` and the
+        other queries."""
+        return answer_queries(self, s)
+
     def fire_axiom(self):
         return list(self.coerce(self.rt.buffer))
+
+
+def cut(s):
+    """`s` without each `Cut()` and what follows it up to the end of its branch."""
+    if not any(m[0] == "Cut" for m in s):
+        return s
+    out = []
+    i, n = 0, len(s)
+    while i < n:
+        if s[i][0] != "Cut":
+            out.append(s[i])
+            i += 1
+            continue
+        depth = 0
+        i += 1
+        while i < n:
+            name = s[i][0]
+            if name == "SB":
+                depth += 1
+            elif name == "EB":
+                if depth == 0:
+                    break
+                depth -= 1
+            i += 1
+    return out

@@ -1,0 +1,66 @@
+"""The turtle lpfg runs between steps to answer queries: `GetPos(x, y, z)`, `GetHead`,
+`GetLeft`, `GetUp` receive the turtle's position or orientation where they stand, the string
+being read through the interpretation rules as lpfg draws it. Only what moves or turns the
+turtle counts (F, f, the turns and rolls, TurnAround, MoveTo, SB/EB); angles in degrees.
+"""
+
+import math
+
+QUERIES = {"GetPos": "p", "GetHead": "h", "GetLeft": "l", "GetUp": "u"}
+
+
+def _rotate(a, b, degrees):
+    """(a, b) turned by `degrees` in their plane: a towards b."""
+    r = math.radians(degrees)
+    c, s = math.cos(r), math.sin(r)
+    return ([a[k] * c + b[k] * s for k in range(3)], [b[k] * c - a[k] * s for k in range(3)])
+
+
+class Turtle:
+    def __init__(self):
+        self.p = [0.0, 0.0, 0.0]
+        self.h = [0.0, 1.0, 0.0]
+        self.l = [-1.0, 0.0, 0.0]
+        self.u = [0.0, 0.0, 1.0]
+        self.stack = []
+
+    def command(self, name, args):
+        a = float(args[0]) if args and isinstance(args[0], (int, float)) else None
+        if name in ("F", "f") and a is not None:
+            self.p = [self.p[k] + self.h[k] * a for k in range(3)]
+        elif name in ("Left", "Right") and a is not None:
+            self.h, self.l = _rotate(self.h, self.l, a if name == "Left" else -a)
+        elif name in ("Up", "Down") and a is not None:
+            self.h, self.u = _rotate(self.h, self.u, a if name == "Up" else -a)
+        elif name in ("RollL", "RollR", "Roll") and a is not None:
+            self.l, self.u = _rotate(self.l, self.u, -a if name == "RollL" else a)
+        elif name == "TurnAround":
+            self.h = [-v for v in self.h]
+            self.l = [-v for v in self.l]
+        elif name == "SB":
+            self.stack.append((self.p, self.h, self.l, self.u))
+        elif name == "EB" and self.stack:
+            self.p, self.h, self.l, self.u = self.stack.pop()
+        elif name in ("MoveTo", "MoveTo3f", "MoveTo3d") and len(args) >= 3:
+            self.p = [float(v) for v in args[:3]]
+
+    def answer(self, name, args):
+        """The query module with the turtle's values in place of its parameters."""
+        value = getattr(self, QUERIES[name])
+        return (name, tuple(value[: len(args)]) + tuple(args[3:]))
+
+
+def answer_queries(engine, s):
+    """`s` with its query modules answered; unchanged when it has none."""
+    if not any(m[0] in QUERIES for m in s):
+        return s
+    turtle = Turtle()
+    out = []
+    for m in s:
+        if m[0] in QUERIES:
+            out.append(turtle.answer(m[0], m[1]))
+            continue
+        out.append(m)
+        for c in engine.rewrite([m], "interpretation"):
+            turtle.command(c[0], c[1])
+    return out
