@@ -36,7 +36,7 @@ class Engine:
                 self.forward_index.setdefault((p.group, p.pred[0][0]), []).append(p)
                 self.backward_index.setdefault((p.group, p.pred[-1][0]), []).append(p)
             else:
-                self.rules[p.section].setdefault(p.pred[0][0], []).append(p)
+                self.rules[p.section].setdefault((p.group, p.pred[0][0]), []).append(p)
         self.coercers = {name: None for name in PREDEFINED_FLOATS}
         for name, types in model.modules.items():
             self.coercers[name] = [COERCE.get(t, _val) for t in types]
@@ -236,7 +236,7 @@ class Engine:
                 continue
             result, width = None, 1
             if depth > 0:
-                for p in rules.get(seq[i][0], ()):
+                for p in self.candidates(rules, seq[i][0]):
                     args = self.match(p, seq, i, None, None)
                     if args is not None:
                         result = self.fire(p, args)

@@ -91,11 +91,12 @@ class Reader(BodyTranslator):
             return
         handler = {
             "module": self.module_declaration, "Axiom": self.axiom, "axiom": self.axiom,
-            "ignore": self.ignore_list, "consider": self.ignore_list,
+            "ignore": self.ignore_list, "consider": self.ignore_list, "VerifyString": self.skip_statement,
             "struct": self.struct_or_declaration, "class": self.struct_or_declaration,
             "typedef": self.typedef, "using": self.skip_statement, "enum": self.enum,
             "group": self.group_start, "vgroup": self.group_start, "endgroup": self.group_end,
-            "ggroup": self.group_start,
+            "ggroup": self.group_start, "window": self.group_start,
+            "endvgroup": self.group_end, "endwindow": self.group_end,
         }.get(v) if t[0] == "id" else None
         if handler:
             handler()
@@ -132,6 +133,8 @@ class Reader(BodyTranslator):
                         self.next()
                     self.accept(",")
             self.model.modules[name] = types
+            if self.accept("="):  # lpfg's own module numbers: module Cut() = 16;
+                self.next()
             if not self.accept(","):
                 break
         self.expect(";")
