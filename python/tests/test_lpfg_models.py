@@ -254,6 +254,22 @@ A(): { produce F(3); }
         self.assertAlmostEqual(float(pos[1]), 2.0)
 
 
+class EnvironmentTest(unittest.TestCase):
+    E_FILE = "executable: honda81 -e commfile.e density.spec\ncommunication type: files\n"
+    SPEC = "verbose: off\nradius:  0.1\n3d case: on\n"
+
+    def test_honda81_stops_the_weaker_of_two_queries_that_meet(self):
+        src = "derivation length: 1;\nAxiom: E1(1) E1(0.5) F(5) E1(0.5) SB() Left(90) E1(0.5) EB();\n"
+        r = run_lpfg(src, {"commfile.e": self.E_FILE, "density.spec": self.SPEC})
+        self.assertEqual([a[0] for n, a in modules(r) if n == "E1"], ["1", "0", "0", "0"])
+        self.assertEqual(r["notes"], [])
+
+    def test_without_a_communication_file_queries_keep_their_values_with_a_note(self):
+        r = run_lpfg("derivation length: 1;\nAxiom: E1(1) E1(0.5);\n")
+        self.assertEqual([a[0] for n, a in modules(r) if n == "E1"], ["1.0", "0.5"])
+        self.assertIn("environment", r["notes"][0]["message"])
+
+
 class ErrorTest(unittest.TestCase):
     def test_a_syntax_error_gives_its_line_and_column(self):
         r = run_lpfg("derivation length: 1;\nAxiom: A;\nA(): { produce F(1) }\n")

@@ -11,6 +11,7 @@ import re
 import sys
 
 from .derive import Engine
+from .environment import environment_of
 from .lexer import LpfgError
 from .output import write_lstring
 from .preprocess import preprocess
@@ -42,12 +43,16 @@ def run(files, main, options=None):
             ns[name] = number
         code = compile(model.source, "<lpfg>", "exec")
         exec(code, ns)  # the model's own code, translated
-        engine = Engine(model, ns, runtime, int(options.get("max_modules", 2_000_000)))
+        environment = environment_of(files, notes)
+        engine = Engine(model, ns, runtime, int(options.get("max_modules", 2_000_000)), environment)
         final, steps = engine.run(options.get("steps"))
         result["steps"] = steps
         result["lstring"] = write_lstring(final)
         result["ok"] = True
-        _note_queries(final, notes)
+        if environment is None:
+            _note_queries(final, notes)
+        if any(m[0] == "Terrain" for m in final):
+            notes.append({"line": 0, "message": "Terrain: lpfg's terrain (from its own terrain files and camera) is not reproduced"})
     except LpfgError as e:
         line = e.line or _model_line(sys.exc_info()[2], source_lines) or (engine.current_line if engine else 0)
         result["error"] = {"line": line, "column": e.column, "message": e.message}

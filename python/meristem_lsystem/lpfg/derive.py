@@ -8,6 +8,7 @@ tried (the current group's first, then group 0's). Modules are tuples `(name, ar
 from .lexer import LpfgError
 from .matching import Reversed, Skipper, match_left, match_right, match_right_end, match_strict
 from .runtime import StopDerivation, _int, _val
+from .environment import environment_of
 from .turtle import answer_queries
 
 # lpfg's own modules whose parameters are floats (SetColor's are ints: it is left as written).
@@ -15,13 +16,13 @@ PREDEFINED_FLOATS = {
     "F", "f", "Left", "Right", "Up", "Down", "RollL", "RollR", "SetWidth", "Sphere", "Circle",
     "Surface", "MoveTo", "MoveRel", "Line", "LineTo", "LineRel", "Cylinder", "Rhombus",
     "Triangle", "SetHead", "Sphere0", "Circle0", "Elasticity", "SetElasticity", "TropismDirection",
-    "CurveScale", "Orient", "Label2D",
+    "CurveScale", "Orient", "E1", "E2",
 }
 COERCE = {"int": _int, "float": float, "bool": lambda v: 1 if v else 0}
 
 
 class Engine:
-    def __init__(self, model, namespace, runtime, max_modules):
+    def __init__(self, model, namespace, runtime, max_modules, environment=None):
         self.model = model
         self.ns = namespace
         self.rt = runtime
@@ -40,6 +41,7 @@ class Engine:
         self.coercers = {name: None for name in PREDEFINED_FLOATS}
         for name, types in model.modules.items():
             self.coercers[name] = [COERCE.get(t, _val) for t in types]
+        self.environment = environment
         self.current_line = 0
         self.where = None
         self.context_state = {}
@@ -266,13 +268,14 @@ class Engine:
         if "_axiom" not in self.ns:
             raise LpfgError("the model has no Axiom:")
         self.ns["_axiom"]()
-        s = self.settle(self.rewrite(self.fire_axiom(), "decomposition"))
+        s = self.rewrite(self.fire_axiom(), "decomposition")
         done = 0
         try:
             while done < steps and not self.rt.stop:
                 self.rt.step = done
+                s = self.settle(s)
                 self.hook("_start_each")
-                s = self.settle(self.rewrite(self.step(s), "decomposition"))
+                s = self.rewrite(self.step(s), "decomposition")
                 done += 1
                 if len(s) > self.max_modules:
                     raise LpfgError(f"the string grew beyond {self.max_modules} modules at step {done}")
@@ -283,9 +286,9 @@ class Engine:
         return self.rewrite(s, "interpretation"), done
 
     def settle(self, s):
-        """What lpfg does to the string between steps: the turtle answers `GetPos` and the
-        other queries."""
-        return answer_queries(self, s)
+        """What lpfg does before each step (`InterpretForEnvironment`): the turtle answers
+        `GetPos` and the other queries, the environment the `E1`/`E2` modules."""
+        return answer_queries(self, s, self.environment)
 
     def fire_axiom(self):
         return list(self.coerce(self.rt.buffer))

@@ -50,17 +50,39 @@ class Turtle:
         return (name, tuple(value[: len(args)]) + tuple(args[3:]))
 
 
-def answer_queries(engine, s):
-    """`s` with its query modules answered; unchanged when it has none."""
-    if not any(m[0] in QUERIES for m in s):
+ENVIRONMENT_QUERIES = {"E1": 1, "E2": 2, "EA20": 20}
+
+
+def answer_queries(engine, s, environment):
+    """`s` with its query modules answered (the turtle's, and the environment's when the
+    object has one); unchanged when it has none."""
+    asks = QUERIES if environment is None else {**QUERIES, **ENVIRONMENT_QUERIES}
+    if not any(m[0] in asks for m in s):
         return s
     turtle = Turtle()
     out = []
+    pending = []  # (index in out, kind, vigor, position)
     for m in s:
         if m[0] in QUERIES:
             out.append(turtle.answer(m[0], m[1]))
             continue
+        if environment is not None and m[0] in ENVIRONMENT_QUERIES and m[1]:
+            first = m[1][0]
+            if isinstance(first, list):  # EA20's 20 values: the first is the vigor and the reply
+                first = first[0] if first else 0.0
+            vigor = first if isinstance(first, (int, float)) else 0.0
+            pending.append((len(out), ENVIRONMENT_QUERIES[m[0]], vigor, list(turtle.p)))
+            out.append(m)
+            continue
         out.append(m)
         for c in engine.rewrite([m], "interpretation"):
             turtle.command(c[0], c[1])
+    if pending:
+        replies = environment.answer([(kind, vigor, p) for _, kind, vigor, p in pending])
+        for (k, _, _, _), reply in zip(pending, replies):
+            name, args = out[k]
+            if isinstance(args[0], list):
+                out[k] = (name, ([reply] + list(args[0][1:]),) + tuple(args[1:]))
+            else:
+                out[k] = (name, (reply,) + tuple(args[1:]))
     return out
