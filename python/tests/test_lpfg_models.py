@@ -288,6 +288,13 @@ class ErrorTest(unittest.TestCase):
         self.assertFalse(r["ok"])
         self.assertIn("10000", r["error"]["message"])
 
+    def test_every_truncation_of_a_model_gives_a_result_or_an_error_at_a_line(self):
+        for source in (COMPOUND_INTERP, RECURSIVE):
+            for k in range(0, len(source), 5):
+                r = run_lpfg(source[:k], time_limit=2)
+                if not r["ok"]:
+                    self.assertGreaterEqual(r["error"]["line"], 1, (k, r["error"]))
+
     def test_an_unknown_name_is_reported_at_its_line(self):
         r = run_lpfg("derivation length: 1;\nAxiom: A;\nA(): {\n  produce F(nowhere(1));\n}\n")
         self.assertFalse(r["ok"])

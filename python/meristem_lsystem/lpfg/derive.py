@@ -266,7 +266,7 @@ class Engine:
             steps = self.ns["_derivation_length"]() if self.model.has_length else 0
         self.rt.buffer = []
         if "_axiom" not in self.ns:
-            raise LpfgError("the model has no Axiom:")
+            raise LpfgError("the model has no Axiom:", self.model.last_line, 1)
         self.ns["_axiom"]()
         s = self.rewrite(self.fire_axiom(), "decomposition")
         done = 0

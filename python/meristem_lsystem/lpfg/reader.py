@@ -42,6 +42,7 @@ class Model:
         self.hooks = set()
         self.has_length = False
         self.ring = False
+        self.last_line = 1
         self.gillespie = set()  # groups rewritten one reaction at a time (ggroup)
 
 
@@ -76,6 +77,7 @@ class Reader(BodyTranslator):
         while self.peek()[0] != "eof":
             self.top_item()
         self.model.source = "\n".join(self.lines) + "\n"
+        self.model.last_line = self.tokens[-1][2] if self.tokens else 1
         return self.model
 
     def top_item(self):
