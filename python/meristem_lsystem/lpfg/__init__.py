@@ -47,7 +47,7 @@ def run(files, main, options=None):
         engine = Engine(model, ns, runtime, int(options.get("max_modules", 2_000_000)), environment)
         final, steps = engine.run(options.get("steps"))
         result["steps"] = steps
-        result["lstring"] = write_lstring(final)
+        result["lstring"] = write_lstring(final, notes)
         result["ok"] = True
         if environment is None:
             _note_queries(final, notes)

@@ -1,6 +1,7 @@
 """The final string written in lpfg's own module syntax: `F(1.0)SB()Left(30)EB()`.
 
-Numbers are written as Python writes them (`repr`); a `V3f`/`V2f` or any other struct is written
+Numbers are written as Python writes them (`repr`; an infinite or NaN float as 0, with a
+note); a `V3f`/`V2f` or any other struct is written
 as its fields' numbers in order (`MoveTo3f(1.0,2.0,0.0)`), a string in double quotes with C
 escapes (`Label("total florets")`), a list (array) as its items.
 """
@@ -17,7 +18,11 @@ def _values(v, out):
     elif isinstance(v, int):
         out.append(repr(v))
     elif isinstance(v, float):
-        out.append(repr(v) if math.isfinite(v) else ("nan" if v != v else ("inf" if v > 0 else "-inf")))
+        if math.isfinite(v):
+            out.append(repr(v))
+        else:
+            out.append("0")
+            NON_FINITE[0] += 1
     elif isinstance(v, str):
         out.append(json.dumps(v))
     elif isinstance(v, _Struct):
@@ -32,11 +37,18 @@ def _values(v, out):
         out.append(json.dumps(str(v)))
 
 
-def write_lstring(modules):
+NON_FINITE = [0]
+
+
+def write_lstring(modules, notes=None):
+    """The string; a note when a parameter was infinite or NaN (written 0, as the L-Py side does)."""
+    NON_FINITE[0] = 0
     parts = []
     for name, args in modules:
         values = []
         for a in args:
             _values(a, values)
         parts.append(f"{name}({','.join(values)})")
+    if NON_FINITE[0] and notes is not None:
+        notes.append({"line": 0, "message": f"{NON_FINITE[0]} parameters were infinite or NaN (a C division by zero?): written 0"})
     return "".join(parts)
