@@ -12,7 +12,7 @@ import math
 from .runtime import _Struct
 
 
-def _values(v, out):
+def _values(v, out, non_finite):
     if isinstance(v, bool):
         out.append("1" if v else "0")
     elif isinstance(v, int):
@@ -22,33 +22,30 @@ def _values(v, out):
             out.append(repr(v))
         else:
             out.append("0")
-            NON_FINITE[0] += 1
+            non_finite[0] += 1
     elif isinstance(v, str):
         out.append(json.dumps(v))
     elif isinstance(v, _Struct):
         for name in v._fields:
-            _values(getattr(v, name), out)
+            _values(getattr(v, name), out, non_finite)
     elif isinstance(v, (list, tuple)):
         for x in v:
-            _values(x, out)
+            _values(x, out, non_finite)
     elif v is None:
         out.append("0")
     else:
         out.append(json.dumps(str(v)))
 
 
-NON_FINITE = [0]
-
-
 def write_lstring(modules, notes=None):
     """The string; a note when a parameter was infinite or NaN (written 0, as the L-Py side does)."""
-    NON_FINITE[0] = 0
+    non_finite = [0]
     parts = []
     for name, args in modules:
         values = []
         for a in args:
-            _values(a, values)
+            _values(a, values, non_finite)
         parts.append(f"{name}({','.join(values)})")
-    if NON_FINITE[0] and notes is not None:
-        notes.append({"line": 0, "message": f"{NON_FINITE[0]} parameters were infinite or NaN (a C division by zero?): written 0"})
+    if non_finite[0] and notes is not None:
+        notes.append({"line": 0, "message": f"{non_finite[0]} parameters were infinite or NaN (a C division by zero?): written 0"})
     return "".join(parts)
