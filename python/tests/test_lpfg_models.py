@@ -81,13 +81,78 @@ M(t) :
 I(x) : { produce F(x); }
 """
 
-ACROPETAL_SIGNAL = """#include <lpfgall.h>
-derivation length: 4;
-module B(int);
-ignore: Left F;
-Axiom: B(1) F(1) Left(30) B(0) F(1) B(0);
-B(a) < B(b) : { produce B(a); }
-B(a) : { if (a == 1) produce B(a) F(2); }
+HORMONE_UP = """#include <lpfgall.h>
+#define LENGTH 1
+#define WIDTH 5
+#define ANGLE 45.0
+derivation length: 1;
+module A();
+module B();
+module X();
+ignore: Left Right;
+Axiom: SetWidth(WIDTH) X();
+X():
+{
+	produce
+		B()
+		SB() Right(ANGLE) A() EB() A()
+		SB()  Left(ANGLE) A() EB() A()
+		SB() Right(ANGLE) A() EB() A()
+		SB()  Left(ANGLE) A() EB() A()
+		SB() Right(ANGLE) A() EB() A();
+}
+B() < A():
+{
+	produce B();
+}
+interpretation:
+A():
+{
+	produce SetColor(1) F(LENGTH);
+}
+B():
+{
+	produce SetColor(2) F(LENGTH);
+}
+"""
+
+SIGNAL_DOWN = """#include <lpfgall.h>
+#define LENGTH 1
+#define WIDTH 5
+#define ANGLE 45.0
+derivation length: 1;
+module A();
+module B();
+module X();
+ignore: Left Right;
+Axiom: SetWidth(WIDTH) X();
+X():
+{
+	produce
+		A() SB() Right(ANGLE) A() EB()
+		A() SB()  Left(ANGLE) A() EB()
+		A() SB() Right(ANGLE) A() EB()
+		A() SB()  Left(ANGLE) A() EB()
+		A() SB() Right(ANGLE) A() EB()
+		B();
+}
+B():
+{
+	produce A();
+}
+A() > B():
+{
+	produce B();
+}
+interpretation:
+A():
+{
+	produce SetColor(1) F(LENGTH);
+}
+B():
+{
+	produce SetColor(2) F(LENGTH);
+}
 """
 
 
@@ -120,13 +185,19 @@ class CourseObjectTest(unittest.TestCase):
         lengths = sorted({float(a[0]) for n, a in modules(r) if n == "F"})
         self.assertIn(0.5 * 1.5 ** 6, lengths)
 
-    def test_a_signal_moves_up_through_ignored_modules(self):  # as in 03-signal-down
-        r = run_lpfg(ACROPETAL_SIGNAL)
-        names = [n for n, _ in modules(r)]
-        self.assertEqual(names.count("B"), 3)
-        self.assertEqual(names.count("F"), 2 + 4)  # the first B adds F(2) each step
-        b_values = [a[0] for n, a in modules(r) if n == "B"]
-        self.assertEqual(b_values, ["1", "1", "1"])
+    def test_an_acropetal_signal_climbs_a_node_and_its_branch_each_step(self):  # 01-hormone-up
+        for steps, signalled in ((1, 1), (2, 3), (3, 5), (6, 11)):
+            r = run_lpfg(HORMONE_UP, steps=steps)
+            colours = [a[0] for n, a in modules(r) if n == "SetColor"]
+            self.assertEqual(len(colours), 11)  # 11 segments, each with its colour
+            self.assertEqual(colours.count("2"), signalled, steps)
+
+    def test_a_basipetal_signal_goes_down_the_main_axis_only(self):  # 03-signal-down
+        for steps, at in ((1, 10), (2, 8), (3, 6), (6, 0)):
+            r = run_lpfg(SIGNAL_DOWN, steps=steps)
+            colours = [a[0] for n, a in modules(r) if n == "SetColor"]
+            self.assertEqual(colours.count("2"), 1, steps)
+            self.assertEqual(colours.index("2"), at, steps)
 
 
 class DerivationTest(unittest.TestCase):
