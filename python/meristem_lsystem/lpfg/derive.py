@@ -181,6 +181,10 @@ class Engine:
         return out_rev
 
     def match(self, p, s, start, out, out_rev):
+        # lpfg (TryMatchForward/Backward) skips a production whose new context lies on the
+        # side not yet derived: `>>` when deriving forward, `<<` when backward.
+        if (out is not None and p.right_new) or (out_rev is not None and p.left_new):
+            return None
         args = match_strict(s, start, p.pred)
         if args is None:
             return None
