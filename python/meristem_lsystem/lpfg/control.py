@@ -3,6 +3,7 @@ and expression statements (assignments written as Python statements)."""
 
 from .expressions import ASSIGN_OPS, Expr
 from .statements import StatementTranslator
+from .expressions import SCALARS
 
 
 class BodyTranslator(StatementTranslator):
@@ -189,7 +190,7 @@ class BodyTranslator(StatementTranslator):
         e = self.expression()
         self.expect(";")
         kind = self.current_return
-        if kind in ("int", "float", "bool"):
+        if kind in SCALARS:
             from .expressions import coerce
             self.emit(f"return {coerce(e.code, kind)}")
         else:

@@ -7,7 +7,7 @@ tried (the current group's first, then group 0's). Modules are tuples `(name, ar
 
 from .lexer import LpfgError
 from .matching import Reversed, Skipper, match_left, match_right, match_right_end, match_strict
-from .runtime import StopDerivation, _int, _val
+from .runtime import StopDerivation, _f32, _int, _val
 from .environment import environment_of
 from .turtle import answer_queries
 
@@ -18,7 +18,7 @@ PREDEFINED_FLOATS = {
     "Triangle", "SetHead", "Sphere0", "Circle0", "Elasticity", "SetElasticity", "TropismDirection",
     "CurveScale", "Orient", "E1", "E2",
 }
-COERCE = {"int": _int, "float": float, "bool": lambda v: 1 if v else 0}
+COERCE = {"int": _int, "float": float, "f32": _f32, "bool": lambda v: 1 if v else 0}
 
 
 class Engine:

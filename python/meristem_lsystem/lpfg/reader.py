@@ -6,7 +6,7 @@ patterns, sections, groups, ignore/consider, maximum depths).
 
 from .control import BodyTranslator
 from .cursor import SCALAR_TYPES
-from .expressions import coerce, py_name
+from .expressions import SCALARS, coerce, py_name
 from .runtime import PREDEFINED_STRUCTS
 from .statements import Struct
 
@@ -287,7 +287,7 @@ class Reader(BodyTranslator):
         for cname, type_, by_ref in [(p[0], p[1], p[2] if len(p) > 2 else False) for p in params]:
             py = self.declare_local(cname, type_)
             py_params.append(py)
-            if type_ in ("int", "float", "bool"):
+            if type_ in SCALARS:
                 entry.append(f"{py} = {coerce(py, type_)}")
             elif not by_ref:
                 entry.append(f"{py} = _val({py})")

@@ -5,6 +5,7 @@ and lpfg's vectors, the maths library, random numbers, function files, and lpfg'
 
 import math
 import random
+import struct
 import time
 
 from .functions import FunctionSet
@@ -132,7 +133,21 @@ def _coerce(value, type_):
         return _int(value)
     if type_ == "float":
         return float(value)
+    if type_ == "f32":
+        return _f32(value)
     return _val(value)
+
+
+_F32 = struct.Struct("f")
+
+
+def _f32(v):
+    """A value stored in a C `float`: rounded to single precision."""
+    v = float(v)
+    try:
+        return _F32.unpack(_F32.pack(v))[0]
+    except OverflowError:
+        return math.copysign(math.inf, v)
 
 
 def _val(v):
@@ -317,7 +332,7 @@ class Runtime:
         ns = dict(MATHS)
         ns.update({
             "_Struct": _Struct, "V3f": V3f, "V2f": V2f, "V3d": V3f, "V2d": V2f, "_Init": _Init,
-            "_val": _val, "_int": _int, "_bool": _bool, "_div": _div, "_mod": _mod,
+            "_val": _val, "_int": _int, "_f32": _f32, "_bool": _bool, "_div": _div, "_mod": _mod,
             "_last": _last, "_setattr": _setattr, "_setitem": _setitem, "_array": _array,
             "_init_array": _init_array, "_init_struct": _init_struct, "_sprintf": _sprintf,
             "_np": self.nproduce, "_PRODUCED": True, "_tick": self.tick,

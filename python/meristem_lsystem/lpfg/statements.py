@@ -125,7 +125,7 @@ class StatementTranslator(ExpressionParser):
                 continue
             if v in SCALAR_TYPES:
                 self.next()
-                if not (type_ == "float" and v == "int"):
+                if not (type_ in ("float", "f32") and v == "int"):
                     type_ = SCALAR_TYPES[v] if type_ in (None, "int") else type_
                 continue
             if type_ is None and (v in VECTOR_TYPES or v in self.structs or v in self.typedefs):
@@ -151,7 +151,7 @@ class StatementTranslator(ExpressionParser):
             return f"_array({dims[0]}, lambda: {inner})"
         if type_ == "int" or type_ == "bool":
             return "0"
-        if type_ == "float":
+        if type_ in ("float", "f32"):
             return "0.0"
         if type_ in ("V3f", "V2f") or type_ in self.structs:
             return f"{py_name(type_)}()"
