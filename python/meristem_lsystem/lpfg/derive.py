@@ -42,6 +42,11 @@ class Engine:
         for name, types in model.modules.items():
             self.coercers[name] = [COERCE.get(t, _val) for t in types]
         self.environment = environment
+        for key, depth in list(model.max_depth.items()):
+            if isinstance(depth, str):
+                model.max_depth[key] = namespace[depth]()
+        if "_ring" in namespace:
+            model.ring = bool(namespace["_ring"]())
         self.current_line = 0
         self.where = None
         self.context_state = {}

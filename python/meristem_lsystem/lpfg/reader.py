@@ -161,27 +161,27 @@ class Reader(BodyTranslator):
         self.emit(f"    return _int({e.code})")
 
     def maximum_depth(self):
-        tok = self.next()
+        self.next()
         self.next()
         self.expect(":")
         e = self.expression()
         self.expect(";")
-        try:
-            depth = int(float(eval(e.code, {"_div": lambda a, b: a / b, "_int": int})))
-        except Exception:
-            raise self.error("maximum depth must be a number", tok)
         key = self.section if self.section != "production" else "decomposition"
-        self.model.max_depth[key] = depth
+        name = f"_max_depth_{key}"
+        self.emit(f"def {name}():")
+        self.emit(f"    return _int({e.code})")
+        self.model.max_depth[key] = name  # evaluated once the model's globals exist
 
     def ring(self):
         """`ring L-system: 1;` — the string is a ring for contexts."""
-        tok = self.next()
+        self.next()
         while not self.accept(":"):
             self.next()
         e = self.expression()
         self.expect(";")
-        self.model.ring = e.code not in ("0", "False")
-        del tok
+        self.emit("def _ring():")
+        self.emit(f"    return {e.code}")
+        self.model.ring = True  # until _ring() says otherwise, after the model's globals exist
 
     def ignore_list(self):
         word = self.next()[1]

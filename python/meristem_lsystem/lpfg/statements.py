@@ -166,7 +166,6 @@ class StatementTranslator(ExpressionParser):
         while True:
             while self.accept("*") or self.accept("&"):
                 pass
-            token = self.peek()
             name = self.ident()
             dims = []
             while self.accept("["):
@@ -188,7 +187,6 @@ class StatementTranslator(ExpressionParser):
             else:
                 py = self.declare_local(name, full)
             self.emit(f"{py} = {value}")
-            del token
             if not self.accept(","):
                 break
         self.expect(";")
