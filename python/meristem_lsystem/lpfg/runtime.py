@@ -5,6 +5,8 @@ and lpfg's vectors, the maths library, random numbers, function files, and lpfg'
 
 import math
 import random
+import re
+import sys
 import struct
 import time
 
@@ -257,10 +259,15 @@ def _init_struct(cls, init):
     return obj
 
 
+_FORMAT = re.compile(r"%([-+ #0]*\d*(?:\.\d+)?)(?:hh|h|ll|l|L|z|j|t)?([diouxXeEfFgGcs%])")
+
+
 def _sprintf(fmt, *args):
+    """C's printf formatting (length modifiers such as `%ld` dropped)."""
+    fmt = _FORMAT.sub(lambda m: "%" + m.group(1) + ("d" if m.group(2) in "iu" else m.group(2)), str(fmt))
     try:
         return fmt % tuple(args)
-    except (TypeError, ValueError):
+    except (TypeError, ValueError, OverflowError):
         return fmt
 
 
@@ -349,10 +356,13 @@ class Runtime:
             "Backward": lambda: self.set_direction("backward"), "UseGroup": self.use_group,
             "CurrentGroup": lambda: self.group, "getDerivationStep": lambda: self.step,
             "CurrentDerivationStep": lambda: self.step,
-            "Printf": self.ignored("Printf"), "printf": self.ignored("printf"),
-            "fprintf": self.ignored("fprintf"), "fflush": self.ignored("fflush"),
-            "UseView": self.ignored("UseView"), "DisplayFrame": self.ignored("DisplayFrame"),
-            "fopen": self.no_file, "fclose": self.ignored("fclose"),
+            "Printf": self.printf, "printf": self.printf,
+            "fprintf": lambda stream, *a: self.printf(*a) if stream is None else 0,
+            "fflush": lambda *a: 0, "puts": lambda text: self.printf(str(text) + "\n"),
+            "UseView": self.ignored("UseView", "lpfg's views are drawn here in one scene"),
+            "CloseView": self.ignored("CloseView", "lpfg's views are drawn here in one scene"),
+            "DisplayFrame": self.ignored("DisplayFrame", "animation frames are not written"),
+            "fopen": self.no_file, "fclose": lambda *a: 0,
             "stdout": None, "stderr": None, "exit": self.do_exit, "assert": lambda c: None,
             "MouseStatus": MouseStatus, "CameraPosition": CameraPosition,
             "GetMouseStatus": self.mouse, "GetCameraPosition": lambda *a: CameraPosition(),
@@ -366,6 +376,13 @@ class Runtime:
         self.note_once("mouse", "GetMouseStatus: an interactive model; here the mouse never moves "
                        "or clicks, so what it would add by hand is not drawn")
         return MouseStatus()
+
+    def printf(self, fmt="", *args):
+        """What the model prints (`Printf`, `printf`, `fprintf(stdout …)`) goes to standard
+        output, which `run` keeps as the result's `output`."""
+        text = _sprintf(fmt, *args)
+        sys.stdout.write(text)
+        return len(text)
 
     def nproduce(self, *modules):
         self.buffer.extend(modules)
@@ -389,9 +406,9 @@ class Runtime:
     def use_group(self, g):
         self.group = int(g)
 
-    def ignored(self, name):
+    def ignored(self, name, why):
         def call(*args):
-            self.note_once(name, f"{name}: printing and views are not reproduced")
+            self.note_once(name, f"{name}: {why}")
             return 0
         return call
 
