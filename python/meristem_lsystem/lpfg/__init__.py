@@ -38,6 +38,7 @@ def run(files, main, options=None):
         tokens = preprocess(files, main, notes)
         model = Reader(tokens, runtime.functions.names).read()
         source_lines = model.source.split("\n")
+        runtime.source_lines = source_lines
         ns = runtime.namespace()
         for name, number in runtime.functions.names.items():
             ns[name] = number

@@ -141,6 +141,7 @@ def _coerce(value, type_):
 
 
 _F32 = struct.Struct("f")
+_LINE_MARK = re.compile(r"#@(\d+)$")
 
 
 def _f32(v):
@@ -317,14 +318,29 @@ class Runtime:
         self.stop = False
         self.step = 0
         self.line = 0  # the line of the production running, for notes
+        self.source_lines = []  # the translated source, for the lines of notes
         self.propensity = 1.0  # the rate the last ggroup production gave
         ZeroDivisionNote.notify = self.zero_division
 
     def zero_division(self, what, value):
-        key = ("undefined", what, self.line)
+        line = self.model_line() or self.line
+        key = ("undefined", what, line)
         if key not in self.noted:
             self.noted.add(key)
-            self.notes.append({"line": self.line, "message": f"integer {what} (undefined in C) gave {value}"})
+            self.notes.append({"line": line, "message": f"integer {what} (undefined in C) gave {value}"})
+
+    def model_line(self):
+        """The L+C line of the innermost translated code running (its `#@line` mark)."""
+        frame = sys._getframe(1)
+        while frame is not None:
+            if frame.f_code.co_filename == "<lpfg>":
+                k = frame.f_lineno - 1
+                if 0 <= k < len(self.source_lines):
+                    mark = _LINE_MARK.search(self.source_lines[k])
+                    if mark:
+                        return int(mark.group(1))
+            frame = frame.f_back
+        return 0
 
     def tick(self):
         if time.monotonic() > self.deadline:
@@ -333,7 +349,7 @@ class Runtime:
     def note_once(self, key, message):
         if key not in self.noted:
             self.noted.add(key)
-            self.notes.append({"line": 0, "message": message})
+            self.notes.append({"line": self.model_line(), "message": message})
 
     def namespace(self):
         ns = dict(MATHS)
