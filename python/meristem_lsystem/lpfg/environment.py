@@ -54,7 +54,7 @@ class Honda81:
         for i, (kind, vigor, p) in enumerate(queries):
             reply = 1
             base = [math.floor(v / cell) for v in p[: 3 if self.is3d else 2]]
-            for offset in _offsets(len(base)):
+            for offset in _OFFSETS[len(base)]:
                 key = (kind,) + tuple(b + o for b, o in zip(base, offset))
                 for j in grid.get(key, ()):
                     if j == i or vigor > queries[j][1]:
@@ -76,3 +76,6 @@ def _offsets(n):
     if n == 0:
         return [()]
     return [(o,) + rest for o in (-1, 0, 1) for rest in _offsets(n - 1)]
+
+
+_OFFSETS = {2: _offsets(2), 3: _offsets(3)}  # the neighbouring cells of a grid cell

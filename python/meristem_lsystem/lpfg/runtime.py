@@ -35,8 +35,10 @@ class _Struct:
 
     def _copy(self):
         other = object.__new__(type(self))
-        for name in self._fields:
-            object.__setattr__(other, name, _val(getattr(self, name)))
+        copied = other.__dict__
+        for name, v in self.__dict__.items():
+            t = type(v)
+            copied[name] = v if t is float or t is int else _val(v)
         return other
 
     def __repr__(self):

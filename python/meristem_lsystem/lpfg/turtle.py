@@ -7,6 +7,8 @@ turtle counts (F, f, the turns and rolls, TurnAround, MoveTo, SB/EB); angles in 
 import math
 
 QUERIES = {"GetPos": "p", "GetHead": "h", "GetLeft": "l", "GetUp": "u"}
+MOVES = {"F", "f", "Left", "Right", "Up", "Down", "RollL", "RollR", "Roll", "TurnAround", "SB",
+         "EB", "MoveTo", "MoveTo3f", "MoveTo3d"}
 
 
 def _rotate(a, b, degrees):
@@ -60,6 +62,7 @@ def answer_queries(engine, s, environment):
     if not any(m[0] in asks for m in s):
         return s
     turtle = Turtle()
+    interpreted = {name for _, name in engine.rules["interpretation"]}
     out = []
     pending = []  # (index in out, kind, vigor, position)
     for m in s:
@@ -75,8 +78,11 @@ def answer_queries(engine, s, environment):
             out.append(m)
             continue
         out.append(m)
-        for c in engine.rewrite([m], "interpretation"):
-            turtle.command(c[0], c[1])
+        if m[0] in interpreted:
+            for c in engine.rewrite([m], "interpretation"):
+                turtle.command(c[0], c[1])
+        elif m[0] in MOVES:
+            turtle.command(m[0], m[1])
     if pending:
         replies = environment.answer([(kind, vigor, p) for _, kind, vigor, p in pending])
         for (k, _, _, _), reply in zip(pending, replies):
