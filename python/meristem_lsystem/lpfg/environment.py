@@ -23,7 +23,11 @@ def environment_of(files, notes):
             notes.append({"line": 0, "message": f"{name} runs the environmental program {program}, "
                           "which is not reproduced: the query modules keep their parameters"})
             return None
-        return Honda81(files.get(words[-1], ""))
+        spec = words[-1]
+        if spec not in files:
+            notes.append({"line": 0, "message": f"{name} runs honda81 with {spec}, which is not among the "
+                          "object's files: its radius is 0 (only queries at the same point meet)"})
+        return Honda81(files.get(spec, ""))
     return None
 
 
