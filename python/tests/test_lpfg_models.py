@@ -325,6 +325,16 @@ A(): { produce F(3); }
         self.assertAlmostEqual(float(pos[1]), 2.0)
 
 
+class SeedTest(unittest.TestCase):
+    SRC = "derivation length: 3;\nAxiom: A;\nmodule A();\nA(): { produce F(ran(1.0)) A; }\n"
+
+    def test_the_same_seed_gives_the_same_plant_and_another_seed_another(self):
+        a, b = run_lpfg(self.SRC, seed=1), run_lpfg(self.SRC, seed=1)
+        self.assertEqual(a["lstring"], b["lstring"])
+        self.assertNotEqual(a["lstring"], run_lpfg(self.SRC, seed=2)["lstring"])
+        self.assertTrue(all(0 <= float(v[0]) < 1 for n, v in modules(a) if n == "F"))
+
+
 class EnvironmentTest(unittest.TestCase):
     E_FILE = "executable: honda81 -e commfile.e density.spec\ncommunication type: files\n"
     SPEC = "verbose: off\nradius:  0.1\n3d case: on\n"
