@@ -288,6 +288,21 @@ M(s): { if (s.e == S::E1) produce F(s.c); }
 """
         self.assertEqual(run_lpfg(src)["lstring"], "F(4.0)")
 
+    def test_the_first_view_is_drawn(self):  # as Multiview, LPFG-FibonacciFlorets
+        src = """derivation length: 0;
+Start: { UseView(Big); UseView(Small); }
+Axiom: A B;
+interpretation:
+vgroup Big:
+A(): { produce F(10); }
+vgroup Small:
+A(): { produce F(1); }
+B(): { produce F(2); }
+"""
+        r = run_lpfg(src)
+        self.assertEqual(r["lstring"], "F(10.0)B()")
+        self.assertIn("Small", r["notes"][-1]["message"])
+
     def test_a_gillespie_group_rewrites_one_module_per_step(self):
         src = """derivation length: 5;
 Start: { UseGroup(1); SeedGillespie(3); }

@@ -36,7 +36,7 @@ class Engine:
             if p.section == "production":
                 self.forward_index.setdefault((p.group, p.pred[0][0]), []).append(p)
                 self.backward_index.setdefault((p.group, p.pred[-1][0]), []).append(p)
-            else:
+            elif getattr(p, "view", None) in (None, 0):  # the first view is the one drawn
                 self.rules[p.section].setdefault((p.group, p.pred[0][0]), []).append(p)
         self.coercers = {name: None for name in PREDEFINED_FLOATS}
         for name, types in model.modules.items():
