@@ -14,9 +14,14 @@ from .turtle import answer_queries
 # lpfg's own modules whose parameters are floats (SetColor's are ints: it is left as written).
 PREDEFINED_FLOATS = {
     "F", "f", "Left", "Right", "Up", "Down", "RollL", "RollR", "SetWidth", "Sphere", "Circle",
-    "Surface", "MoveTo", "MoveRel", "Line", "LineTo", "LineRel", "Cylinder", "Rhombus",
+    "MoveTo", "MoveRel", "Line", "LineTo", "LineRel", "Cylinder", "Rhombus",
     "Triangle", "SetHead", "Sphere0", "Circle0", "Elasticity", "SetElasticity", "TropismDirection",
     "CurveScale", "Orient", "E1", "E2",
+}
+# lpfg's own modules with integer parameters (a colour or surface index): C truncates.
+PREDEFINED_TYPED = {
+    "SetColor": [_int], "CurrentTexture": [_int], "Surface": [_int, float],
+    "Surface3": [_int, float, float, float],
 }
 COERCE = {"int": _int, "float": float, "f32": _f32, "bool": lambda v: 1 if v else 0}
 
@@ -39,6 +44,7 @@ class Engine:
             elif getattr(p, "view", None) in (None, 0):  # the first view is the one drawn
                 self.rules[p.section].setdefault((p.group, p.pred[0][0]), []).append(p)
         self.coercers = {name: None for name in PREDEFINED_FLOATS}
+        self.coercers.update(PREDEFINED_TYPED)
         for name, types in model.modules.items():
             self.coercers[name] = [COERCE.get(t, _val) for t in types]
         self.environment = environment
