@@ -384,6 +384,12 @@ class ErrorTest(unittest.TestCase):
         self.assertFalse(r["ok"])
         self.assertIn("10000", r["error"]["message"])
 
+    def test_a_loop_that_produces_without_end_stops_at_max_modules_at_its_line(self):
+        src = "derivation length: 1;\nAxiom: A;\nmodule A();\nA(): {\n for (int i = 0; i < 100000000; i++) nproduce F(1);\n produce;\n}\n"
+        r = run_lpfg(src, max_modules=1000)
+        self.assertFalse(r["ok"])
+        self.assertEqual(r["error"]["line"], 5)
+
     def test_every_truncation_of_a_model_gives_a_result_or_an_error_at_a_line(self):
         for source in (COMPOUND_INTERP, RECURSIVE):
             for k in range(0, len(source), 5):

@@ -32,6 +32,7 @@ class Engine:
         self.ns = namespace
         self.rt = runtime
         self.max_modules = max_modules
+        runtime.max_modules = max_modules
         self.skipper = Skipper(model.ignore, model.consider)
         self.forward_index = {}  # (group, first name) -> productions
         self.backward_index = {}  # (group, last name) -> productions
@@ -161,6 +162,8 @@ class Engine:
                 if result is not None:
                     out.extend(result)
                     width = len(p.pred)
+                    if len(out) > self.max_modules:
+                        raise LpfgError(f"the string grew beyond {self.max_modules} modules at step {self.rt.step + 1}")
                     break
             if width:
                 i += width
@@ -182,6 +185,8 @@ class Engine:
                 if result is not None:
                     out_rev.extend(reversed(result))
                     width = len(p.pred)
+                    if len(out_rev) > self.max_modules:
+                        raise LpfgError(f"the string grew beyond {self.max_modules} modules at step {self.rt.step + 1}")
                     break
             if width:
                 i -= width

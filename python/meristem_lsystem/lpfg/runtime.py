@@ -321,6 +321,7 @@ class Runtime:
         self.step = 0
         self.line = 0  # the line of the production running, for notes
         self.source_lines = []  # the translated source, for the lines of notes
+        self.max_modules = 2_000_000
         self.propensity = 1.0  # the rate the last ggroup production gave
         ZeroDivisionNote.notify = self.zero_division
 
@@ -404,6 +405,8 @@ class Runtime:
 
     def nproduce(self, *modules):
         self.buffer.extend(modules)
+        if len(self.buffer) > self.max_modules:
+            raise LpfgError(f"one successor grew beyond {self.max_modules} modules")
 
     def menu_choice(self):
         self.note_once("menu", "UserMenuChoice: the model's own menu is not shown; no item is ever chosen (-1)")
