@@ -308,6 +308,8 @@ class Engine:
     def settle(self, s):
         """What lpfg does before each step (`InterpretForEnvironment`): the turtle answers
         `GetPos` and the other queries, the environment the `E1`/`E2` modules."""
+        if not self.rt.environment_on:
+            return s
         return answer_queries(self, s, self.environment)
 
     def fire_axiom(self):

@@ -322,6 +322,7 @@ class Runtime:
         self.line = 0  # the line of the production running, for notes
         self.source_lines = []  # the translated source, for the lines of notes
         self.max_modules = 2_000_000
+        self.environment_on = True
         self.propensity = 1.0  # the rate the last ggroup production gave
         ZeroDivisionNote.notify = self.zero_division
 
@@ -370,6 +371,8 @@ class Runtime:
             "_propensity": self.set_propensity, "SeedGillespie": lambda s=0: self.rng.seed(int(s)),
             "expf": _safe(math.exp), "sqrtf": _safe(math.sqrt), "powf": _pow, "fabsf": lambda x: abs(float(x)),
             "logf": _log, "sinf": math.sin, "cosf": math.cos, "floorf": lambda x: float(math.floor(x)),
+            "Environment": lambda: self.set_environment(True),
+            "NoEnvironment": lambda: self.set_environment(False),
             "UserMenuItem": lambda *a: None, "UserMenuChoice": self.menu_choice,
             "Stop": self.do_stop, "Forward": lambda: self.set_direction("forward"),
             "Backward": lambda: self.set_direction("backward"), "UseGroup": self.use_group,
@@ -407,6 +410,11 @@ class Runtime:
         self.buffer.extend(modules)
         if len(self.buffer) > self.max_modules:
             raise LpfgError(f"one successor grew beyond {self.max_modules} modules")
+
+    def set_environment(self, on):
+        """lpfg's Environment()/NoEnvironment(): whether the step before each derivation runs
+        (the turtle's queries and the environmental program)."""
+        self.environment_on = on
 
     def menu_choice(self):
         self.note_once("menu", "UserMenuChoice: the model's own menu is not shown; no item is ever chosen (-1)")
