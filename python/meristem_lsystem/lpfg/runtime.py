@@ -304,6 +304,16 @@ MATHS = {
 }
 
 
+# lpfg's calls that read files this runtime does not read: an error naming the construct.
+UNSUPPORTED_CALLS = {
+    **{name: "lpfg's contour and curve files (.con, .crv) are not read here" for name in (
+        "curveX", "curveY", "curveZ", "curveXY", "curveXYZ", "curveXYf", "curveXYd",
+        "curveXYZf", "curveXYZd")},
+    "Interpolate": "lpfg's B-spline surface objects are not reproduced",
+    "GetSurface": "lpfg's B-spline surface objects are not reproduced",
+}
+
+
 class Runtime:
     """The per-run state that lpfg's calls change, and the namespace the model runs in."""
 
@@ -371,6 +381,7 @@ class Runtime:
             "_propensity": self.set_propensity, "SeedGillespie": lambda s=0: self.rng.seed(int(s)),
             "expf": _safe(math.exp), "sqrtf": _safe(math.sqrt), "powf": _pow, "fabsf": lambda x: abs(float(x)),
             "logf": _log, "sinf": math.sin, "cosf": math.cos, "floorf": lambda x: float(math.floor(x)),
+            "IsForward": lambda: 1 if self.direction == "forward" else 0,
             "Environment": lambda: self.set_environment(True),
             "NoEnvironment": lambda: self.set_environment(False),
             "UserMenuItem": lambda *a: None, "UserMenuChoice": self.menu_choice,
@@ -392,7 +403,14 @@ class Runtime:
             "StopSimulation": lambda: None, "terrainVisibilityAll": lambda *a: None,
             "Shaded": 0, "Wireframe": 1, "Hidden": 2,
         })
+        for name in UNSUPPORTED_CALLS:
+            ns[name] = self.unsupported(name)
         return ns
+
+    def unsupported(self, name):
+        def call(*args):
+            raise LpfgError(f"{name}: {UNSUPPORTED_CALLS[name]}")
+        return call
 
     def mouse(self):
         self.note_once("mouse", "GetMouseStatus: an interactive model; here the mouse never moves "
