@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The one test command (`npm test`): installs the tools npm cannot, then runs every gate and suite
-# (lint: cargo fmt, clippy, eslint; cargo test, the boundary tests under wasm32, vitest with the real wasm, the export files read by their real consumers,
+# (lint: cargo fmt, clippy, eslint; cargo test, the Python runtime's unit tests, the boundary tests under wasm32, vitest with the real wasm, the export files read by their real consumers,
 # browser tests in headless Chromium) even when an earlier one fails, and ends with one line
 # `N passed, N failed` counting them all.
 # Artefacts (screenshots, JSON reports) go to test-results/.
@@ -42,6 +42,15 @@ cargo_status=${PIPESTATUS[0]}
 read -r p f < <(grep -E '^test result:' test-results/cargo.txt | sed -E 's/.* ([0-9]+) passed; ([0-9]+) failed.*/\1 \2/' | awk '{p+=$1; f+=$2} END {print p+0, f+0}')
 passed=$((passed + p)); failed=$((failed + f))
 if [ "$cargo_status" -ne 0 ] && [ "$f" -eq 0 ]; then echo "FAILED: cargo test did not run to the end"; failed=$((failed + 1)); fi
+
+echo "::: python unit tests (python/meristem_lsystem: the L-Py and lpfg runtime)"
+python3 -m unittest discover -s python/tests 2>&1 | tee test-results/python.txt
+python_status=${PIPESTATUS[0]}
+ran=$(sed -nE 's/^Ran ([0-9]+) tests?.*/\1/p' test-results/python.txt | tail -1)
+bad=$(sed -nE 's/^FAILED \((.*)\)$/\1/p' test-results/python.txt | grep -oE '(failures|errors)=[0-9]+' | cut -d= -f2 | awk '{s+=$1} END {print s+0}')
+if [ -z "$ran" ] || [ "$ran" -eq 0 ]; then echo "FAILED: no python test ran"; failed=$((failed + 1))
+else passed=$((passed + ran - bad)); failed=$((failed + bad)); fi
+if [ "$python_status" -ne 0 ] && [ "$bad" -eq 0 ]; then echo "FAILED: the python tests did not run to the end"; failed=$((failed + 1)); fi
 
 gate "build wasm" bash scripts/build-wasm.sh
 echo "::: wasm32 boundary tests (wasm-pack test --node, the core compiled to WebAssembly with SIMD, as crate/pkg is)"
