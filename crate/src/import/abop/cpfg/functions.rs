@@ -48,9 +48,15 @@ impl Importer {
         if let Some(f) = named {
             return Ok(f);
         }
-        let index = k
-            .parse::<f64>()
-            .ok()
+        // A number, or a `#define`d name whose value is one (`#define INT_LENGTH 1`).
+        let constant = self
+            .lpfg
+            .constants
+            .iter()
+            .find(|(name, _)| name == k)
+            .map(|&(_, v)| v);
+        let index = constant
+            .or_else(|| k.parse::<f64>().ok())
             .filter(|v| v.fract() == 0.0 && *v >= 1.0)
             .ok_or_else(|| format!("{tool}'s {call}({k}, …) chooses its function by an expression or a name the object's files do not give; Meristem names each function, so it is not translated"))?;
         match view.functions.get(index as usize - 1) {

@@ -4,6 +4,7 @@
 //! `@`/`~`/`?` names.
 
 pub(super) mod blocks;
+mod circles;
 pub(super) mod cpp;
 mod functions;
 pub(super) mod globals;

@@ -137,6 +137,7 @@ impl Importer {
                 let sign = if name == "," { -step } else { step };
                 Some(format!("'({})", number(sign)))
             }
+            "@c" | "@o" => Some(self.circle(name, params, n)),
             "@Gs" => Some(name_of(Meaning::Turtle(Command::StartSmooth)).to_string()),
             // dialect: cpfg's end of a generalized cylinder
             "@Ge" => Some(name_of(Meaning::Turtle(Command::EndSmooth)).to_string()),
