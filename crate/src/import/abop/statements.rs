@@ -90,6 +90,10 @@ impl Importer {
                 }
             }
         }
+        if !ended {
+            let last = all.last().map_or(0, |l| l.n);
+            self.staged_lines(last);
+        }
         if !self.declared.is_empty() {
             self.out.replace(
                 module_line,
@@ -208,6 +212,7 @@ impl Importer {
         }
         // dialect: cpfg's keyword
         if let Some(rest) = keyword(&lower, code, "maximum depth:") {
+            self.cpfg.depth_line = Some((self.out.len(), rest.trim().to_string()));
             self.out.line(
                 format!("{} {}", KeywordKind::MaximumDepth.written(), rest.trim()),
                 line.n,
@@ -216,6 +221,7 @@ impl Importer {
         }
         if let Some(section) = section(&lower) {
             self.in_productions = section == KeywordKind::Productions.written();
+            self.cpfg.depth_line = None;
             self.out.line(section.clone(), line.n);
             // cpfg rewrites its homomorphism and decomposition to depth 1 unless the section
             // says `maximum depth:` (its parser's default); Meristem's default is deeper.
@@ -227,6 +233,7 @@ impl Importer {
         }
         let end = KeywordKind::EndLSystem.written();
         if lower == end {
+            self.staged_lines(line.n);
             self.out.line(end, line.n);
             *ended = true;
             return true;

@@ -160,4 +160,38 @@ impl Importer {
             )),
         }
     }
+
+    /// cpfg's `curveX(k, t)`, `curveY`, `curveZ` (`axis` 0, 1, 2) and `curveGAL(k)` (`axis`
+    /// `None`): contour k of the view file's `curve:` lines, as the tables it became (see
+    /// `vlab/contour_file.rs`).
+    pub(in crate::import::abop) fn contour(
+        &self,
+        call: &str,
+        axis: Option<usize>,
+        args: &[String],
+    ) -> Result<String, String> {
+        let k = args.first().map_or("", |k| k.trim());
+        let Some(view) = &self.cpfg.view else {
+            return Err(format!("cpfg's {call}({k}, …) reads contour {k} of the object's view file (.v), which was not opened with this file (open the object's folder or .zip)"));
+        };
+        let index = self
+            .lpfg
+            .constants
+            .iter()
+            .find(|(name, _)| name == k)
+            .map(|&(_, v)| v)
+            .or_else(|| k.parse::<f64>().ok())
+            .filter(|v| v.fract() == 0.0 && *v >= 1.0)
+            .ok_or_else(|| format!("cpfg's {call}({k}, …) chooses its contour by an expression; Meristem names each contour, so it is not translated"))?;
+        let Some(Some(contour)) = view.contours.get(index as usize - 1) else {
+            return Err(format!(
+                "cpfg's {call}({k}, …): the view file gives no contour {k} that could be read"
+            ));
+        };
+        match (axis, args) {
+            (None, [_]) => Ok(format!("({})", crate::import::number(contour.length))),
+            (Some(axis), [_, t]) => Ok(format!("{}({t})", contour.names[axis])),
+            _ => Err(format!("cpfg's {call}(…) takes a contour's number{}", if axis.is_some() { " and a fraction of its length" } else { "" })),
+        }
+    }
 }

@@ -5,10 +5,14 @@
 
 pub(super) mod blocks;
 mod circles;
+pub(super) mod draws;
+#[cfg(test)]
+mod tests;
 pub(super) mod cpp;
 mod functions;
 pub(super) mod globals;
 pub(super) mod joins;
+pub(super) mod loops;
 mod predecessors;
 mod view;
 
@@ -24,7 +28,9 @@ pub(in crate::import::abop) fn cpp_functions() -> Vec<String> {
         .map(|f| f.name.to_string())
         .chain(
             [
-                "func", "tfunc", "val", "ran", "nran", "trunc", "fabs", "pow",
+                "func", "tfunc", "val", "ran", "nran", "bran", "biran", "trunc", "fabs",
+                "curveX", "curveY", "curveZ", "curveGAL",
+                "pow",
             ]
             .iter()
             .map(|s| s.to_string()),
