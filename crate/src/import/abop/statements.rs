@@ -296,6 +296,8 @@ impl Importer {
             Ok(m) => {
                 let names = module_names(&m);
                 if !names.is_empty() {
+                    self.cpfg.context_list =
+                        Some((self.out.len(), directive.to_string(), names.clone()));
                     self.out.line(format!("{directive} {}", names.join(" ")), n);
                 }
             }
