@@ -56,6 +56,12 @@ apt_install() {
   fi
 }
 
+# The CLI runs L-Py and lpfg models with the machine's Python (python/meristem_lsystem/); the
+# studio runs the same package on Pyodide and needs nothing here.
+if ! python3 -c 'import sys; sys.exit(sys.version_info < (3, 11))' 2>/dev/null; then
+  apt_install "the CLI's L-Py and lpfg route (Python 3.11 or newer)" python3
+fi
+
 if $browser && [ ! -x /usr/bin/chromium ]; then
   apt_install "the browser tests (Chromium at /usr/bin/chromium)" chromium
 fi

@@ -1,0 +1,6 @@
+angle increment: 60 
+initial line width: 1 pixels
+initial color: 1
+scale factor: 0.9000
+
+

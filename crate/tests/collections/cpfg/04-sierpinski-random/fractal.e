@@ -1,0 +1,3 @@
+executable: honda81 density.spec
+communication type: files
+turtle position:P:%.4f %.4f %.0f

@@ -1,0 +1,17 @@
+angle increment: 30
+initial color: 1
+color increment: 1
+initial line width: 1 pixels
+line width increment: .5
+viewpoint: 0,0,-1
+/* box: x: -12,12 y: -12,12 z: -1,1 */
+view reference point: 0,0,0
+projection: parallel
+front distance:1000.0
+back distance: -1000.0
+scale factor: 0.98
+z buffer: on
+render mode: filled
+line style: wireframe
+contour sides: 16
+light: O: 10 10 -5

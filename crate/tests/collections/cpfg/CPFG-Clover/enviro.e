@@ -1,0 +1,3 @@
+executable: clover -e enviro.e enviro.spec
+communication type: memory
+turtle position:P:%g %g %g

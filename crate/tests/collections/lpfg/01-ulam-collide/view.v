@@ -1,0 +1,12 @@
+projection: parallel
+front distance: 1000.0
+back distance: -1000.0
+
+scale: 0.98
+
+z buffer: on
+
+render mode: filled
+line style: polygon
+
+light: O: 10 10 -5

@@ -1,0 +1,3 @@
+line style: pixel
+z buffer: on
+render mode: shaded

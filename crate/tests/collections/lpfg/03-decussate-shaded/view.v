@@ -1,0 +1,3 @@
+line style: cylinder
+z buffer: on
+render mode: shaded

@@ -1,0 +1,9 @@
+projection: parallel
+front distance:1000.0
+back distance: -1000.0
+scale: 0.98
+z buffer: on
+render mode: filled
+line style: wireframe
+light: O: 10 10 -5
+corrected rotation: on

@@ -1,0 +1,6 @@
+line style: cylinder
+z buffer: on
+render mode: shaded
+light: V: 5 3 1 D: 0.3 0.5 0.3
+light: V: 0 -1 0 D: 0.8 0.7 0.3
+light: V: 0 1 0 D: 0.3 0.5 0.3

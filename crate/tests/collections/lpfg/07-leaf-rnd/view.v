@@ -1,0 +1,4 @@
+line style: cylinder
+z buffer: on
+surface: leaf.s
+render mode: shaded

@@ -1,0 +1,5 @@
+line style: cylinder
+z buffer: on
+render mode: shaded
+projection: parallel
+

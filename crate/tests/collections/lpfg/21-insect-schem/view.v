@@ -1,0 +1,2 @@
+scale: 0.9000
+corrected rotation: on

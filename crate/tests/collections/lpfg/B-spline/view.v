@@ -1,0 +1,4 @@
+line style: pixel
+render mode: filled
+z buffer: on
+

@@ -1,0 +1,7 @@
+render mode: shaded
+z buffer: on
+line style: cylinder
+light: V: 1 1 1
+contour sides: 10
+projection: parallel
+box: 0 -20 20 -20 20 -20 20

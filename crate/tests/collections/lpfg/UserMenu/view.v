@@ -1,0 +1,3 @@
+z buffer: on
+render mode: shaded
+contour sides: 64
