@@ -112,7 +112,11 @@ impl Importer {
             self.cpfg.globals = globals::Globals::scan(&all);
             self.cpfg.has_decomposition = all.iter().any(|l| {
                 super::statements::section(&l.code.to_lowercase()).as_deref()
-                    == Some(crate::vocabulary::KeywordKind::Decomposition.written().as_str())
+                    == Some(
+                        crate::vocabulary::KeywordKind::Decomposition
+                            .written()
+                            .as_str(),
+                    )
             });
             self.words(&all);
         }

@@ -164,7 +164,11 @@ impl Importer {
     }
 
     /// cpfg's probability after the successor (`--> succ : 0.3`): the successor and the weight.
-    fn weight<'r>(&mut self, right: &'r str, env: &Env) -> Result<(&'r str, Option<String>), String> {
+    fn weight<'r>(
+        &mut self,
+        right: &'r str,
+        env: &Env,
+    ) -> Result<(&'r str, Option<String>), String> {
         Ok(match top_level(right, ":") {
             Some(i) => {
                 let weight = self

@@ -323,13 +323,14 @@ fn next_statement(text: &str, depth: usize) -> Result<(Statement<'_>, &str), Str
         if !starts_with_word(rest, "while") {
             return Err("'do {…}' without 'while'".into());
         }
-        let (condition, rest) = match PARENTHESES_AND_BRACES.closing(rest, rest.find('(').unwrap_or(0)) {
-            Some(close) if rest.find('(').is_some() => {
-                let open = rest.find('(').unwrap_or(0);
-                (&rest[open + 1..close], rest[close + 1..].trim_start())
-            }
-            _ => return Err("'while' without '('".into()),
-        };
+        let (condition, rest) =
+            match PARENTHESES_AND_BRACES.closing(rest, rest.find('(').unwrap_or(0)) {
+                Some(close) if rest.find('(').is_some() => {
+                    let open = rest.find('(').unwrap_or(0);
+                    (&rest[open + 1..close], rest[close + 1..].trim_start())
+                }
+                _ => return Err("'while' without '('".into()),
+            };
         let rest = rest.strip_prefix(';').unwrap_or(rest);
         return Ok((Statement::While(condition, &after[1..end], true), rest));
     }

@@ -71,7 +71,9 @@ pub(in crate::import::abop) fn formal_parameters(pattern: &str) -> Vec<String> {
 /// (`X` when it has none).
 pub(in crate::import::abop) fn aux_letter(pattern: &str) -> String {
     let strict = top_level(pattern, "<").map_or(pattern, |i| &pattern[i + 1..]);
-    let strict = top_level(strict, ">").map_or(strict, |i| &strict[..i]).trim();
+    let strict = top_level(strict, ">")
+        .map_or(strict, |i| &strict[..i])
+        .trim();
     let letter: String = strict
         .chars()
         .take_while(|c| c.is_ascii_alphanumeric())
@@ -199,7 +201,10 @@ mod tests {
 
     #[test]
     fn the_formal_parameters_of_a_pattern_are_every_module_s_in_order() {
-        assert_eq!(formal_parameters("S(a) < A(i,t) > B(a, z)"), ["a", "i", "t", "z"]);
+        assert_eq!(
+            formal_parameters("S(a) < A(i,t) > B(a, z)"),
+            ["a", "i", "t", "z"]
+        );
         assert!(formal_parameters("A").is_empty());
     }
 

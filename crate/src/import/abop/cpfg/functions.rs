@@ -191,7 +191,14 @@ impl Importer {
         match (axis, args) {
             (None, [_]) => Ok(format!("({})", crate::import::number(contour.length))),
             (Some(axis), [_, t]) => Ok(format!("{}({t})", contour.names[axis])),
-            _ => Err(format!("cpfg's {call}(…) takes a contour's number{}", if axis.is_some() { " and a fraction of its length" } else { "" })),
+            _ => Err(format!(
+                "cpfg's {call}(…) takes a contour's number{}",
+                if axis.is_some() {
+                    " and a fraction of its length"
+                } else {
+                    ""
+                }
+            )),
         }
     }
 }

@@ -39,9 +39,14 @@ fn assigned_names(body: &str) -> Vec<String> {
             continue;
         };
         let target = target.trim().trim_end_matches(['+', '-', '*', '/']).trim();
-        let target = target.rsplit(|c: char| c.is_whitespace() || c == ')').next().unwrap_or("");
+        let target = target
+            .rsplit(|c: char| c.is_whitespace() || c == ')')
+            .next()
+            .unwrap_or("");
         let is_name = target.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_')
-            && target.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
+            && target
+                .chars()
+                .all(|c| c.is_ascii_alphanumeric() || c == '_');
         // `a == b` and `a <= b` compare: what follows `=` is another `=`, or `<`/`>`/`!` precede.
         let compares = statement.contains("==")
             || statement.contains("<=")
@@ -113,9 +118,12 @@ impl Importer {
                 None => "0".into(),
             })
             .collect();
-        let condition = self
-            .expression(&l.condition, &Env::new())
-            .map_err(|why| format!("the condition of the loop 'while ({})': {why}", l.condition.trim()))?;
+        let condition = self.expression(&l.condition, &Env::new()).map_err(|why| {
+            format!(
+                "the condition of the loop 'while ({})': {why}",
+                l.condition.trim()
+            )
+        })?;
         let mut turn = Env::new();
         self.statements(&l.body, &mut turn, n, 1)?;
         let next: Vec<String> = carried

@@ -59,7 +59,10 @@ fn a_function_named_by_a_define_and_a_macro_continued_by_two_backslashes_are_rea
         A --> F(func(INT_LENGTH, 0.5))\nendlsystem\n";
     let import = import(funcs, Flavour::Cpfg);
     assert!(
-        import.notes.iter().any(|n| n.message.contains("view file (.v)")),
+        import
+            .notes
+            .iter()
+            .any(|n| n.message.contains("view file (.v)")),
         "{:?}",
         import.notes
     );
