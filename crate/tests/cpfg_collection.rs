@@ -73,7 +73,12 @@ fn weeping_birch_grows_exactly_its_internodes_whatever_the_draws() {
     // becomes exactly n internodes, as nl and nr are drawn once. 17 steps do not finish 22,500
     // (the larger part shrinks by about 0.76 a step), so a smaller total is checked whole.
     let (import, b) = open("WeepingBirch");
-    assert_eq!(count(&import.text, "beta(5,16)"), 1, "{}", import.text);
+    assert_eq!(
+        count(&import.text, "betavariate(5,16)"),
+        1,
+        "{}",
+        import.text
+    );
     assert!(b.plant.stats.segments > 1000);
     let small = import
         .text

@@ -362,18 +362,7 @@ fn read_view(text: &str, all: &Files, view: &mut View) {
                 "the view file's {key} line ({}) is not translated: the plant does not bend by it",
                 value.trim()
             )),
-            "curve" => {
-                let file = value.split_whitespace().next().unwrap_or("").to_string();
-                let stem = identifier(base(&file).trim_end_matches(".con"), view);
-                let contour = all.text(&file).and_then(|t| contour_file::read(&t, &stem));
-                if contour.is_none() {
-                    view.notes.push(format!(
-                        "the contour file {file} could not be read (it was not opened, or it is no B-spline): curveX({}, …) and the others are not translated",
-                        view.contours.len() + 1
-                    ));
-                }
-                view.contours.push(contour);
-            }
+            "curve" => contour(value, all, view),
             "function set" => {
                 let file = value.trim().to_string();
                 match all.text(&file) {
@@ -602,6 +591,20 @@ fn short(v: f64) -> String {
     } else {
         text
     }
+}
+
+/// The view file's `curve: file.con` (the text after the colon): the next contour of `curveX(k, …)`.
+fn contour(value: &str, all: &Files, view: &mut View) {
+    let file = value.split_whitespace().next().unwrap_or("").to_string();
+    let stem = identifier(base(&file).trim_end_matches(".con"), view);
+    let contour = all.text(&file).and_then(|t| contour_file::read(&t, &stem));
+    if contour.is_none() {
+        view.notes.push(format!(
+            "the contour file {file} could not be read (it was not opened, or it is no B-spline): curveX({}, …) and the others are not translated",
+            view.contours.len() + 1
+        ));
+    }
+    view.contours.push(contour);
 }
 
 /// A Meristem name for a function (or an lpfg value): letters, digits and `_`, not a built-in function's nor one

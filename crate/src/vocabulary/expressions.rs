@@ -118,7 +118,7 @@ pub const FUNCTIONS: &[FunctionInfo] = &[
     f("uniform_int", F::UniformInt, &["a", "b"], "A random whole number from a to b, both included.").random(),
     f("binomial", F::Binomial, &["n", "p"], "A random number of successes in n trials of probability p.").random(),
     f("poisson", F::Poisson, &["mean"], "A random number of the Poisson distribution.").random(),
-    f("beta", F::Beta, &["a", "b"], "A random number of the beta distribution of shapes a, b > 0, from 0 to 1 (cpfg's bran).").random(),
+    f("betavariate", F::Beta, &["a", "b"], "A random number of the beta distribution of shapes a, b > 0, from 0 to 1 (Python's random.betavariate, cpfg's bran).").random(),
     f("constant", F::Constant, &["x"], "x itself (Green's CONSTANT distribution)."),
     f("linear", F::Linear, &["x", "a", "b"], "Growth function: from a at x = 0 to b at x = 1 in a straight line, a before and b after (x: age / terminal age)."),
     f("exponential_growth", F::ExponentialGrowth, &["x", "a", "b"], "Growth function: from a at x = 0 to b at x = 1 multiplying by the same factor in equal times, a·(b/a)^x (a, b > 0)."),

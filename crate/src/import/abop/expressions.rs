@@ -252,7 +252,7 @@ impl Importer {
             (Flavour::Cpfg, "val") => return self.val(args),
             (Flavour::Cpfg, "ran") => format!("uniform(0,{})", a(0)),
             (Flavour::Cpfg, "nran") => format!("normal({all})"),
-            (Flavour::Cpfg, "bran") => format!("beta({all})"),
+            (Flavour::Cpfg, "bran") => format!("betavariate({all})"),
             (Flavour::Cpfg, "curveX") => return self.contour(name, Some(0), args),
             (Flavour::Cpfg, "curveY") => return self.contour(name, Some(1), args),
             (Flavour::Cpfg, "curveZ") => return self.contour(name, Some(2), args),

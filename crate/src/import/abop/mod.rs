@@ -194,6 +194,8 @@ struct CpfgState {
     after: Vec<String>,
     /// The staged section holds a loop: its depth is raised.
     staged_depth: bool,
+    /// A production of the file has a context of its own.
+    other_contexts: bool,
     /// The `#consider` or `#ignore` line written: its output line, its directive, its names.
     context_list: Option<(usize, String, Vec<String>)>,
     /// The output line of the `maximum depth:` of the section being read, and its value.

@@ -212,11 +212,7 @@ impl Importer {
         }
         // dialect: cpfg's keyword
         if let Some(rest) = keyword(&lower, code, "maximum depth:") {
-            self.cpfg.depth_line = Some((self.out.len(), rest.trim().to_string()));
-            self.out.line(
-                format!("{} {}", KeywordKind::MaximumDepth.written(), rest.trim()),
-                line.n,
-            );
+            self.maximum_depth(rest.trim(), line.n);
             return true;
         }
         if let Some(section) = section(&lower) {
@@ -247,6 +243,15 @@ impl Importer {
             return true;
         }
         self.flavour == Flavour::Lpy && code.starts_with("module ")
+    }
+
+    /// `maximum depth: n` of the section being read (a loop may raise it: `cpfg/loops.rs`).
+    fn maximum_depth(&mut self, value: &str, n: usize) {
+        self.cpfg.depth_line = Some((self.out.len(), value.to_string()));
+        self.out.line(
+            format!("{} {value}", KeywordKind::MaximumDepth.written()),
+            n,
+        );
     }
 
     /// `Axiom: modules` (the text after the colon is `rest`).

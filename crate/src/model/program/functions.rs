@@ -89,7 +89,7 @@ pub(super) fn call<R: rand::Rng + ?Sized>(
             .map_err(|_| format!("poisson({}): the mean must be > 0", a[0]))?
             .sample(rng),
         Function::Beta => Beta::new(a[0], a[1])
-            .map_err(|_| format!("beta({}, {}): the shapes must be > 0", a[0], a[1]))?
+            .map_err(|_| format!("betavariate({}, {}): the shapes must be > 0", a[0], a[1]))?
             .sample(rng),
     })
 }

@@ -5,7 +5,7 @@
 //! new number at each place (`nl` and `nr` would no longer add up to `n-1`). So a production
 //! whose block draws is written in two parts that run in the same step: the production writes
 //! an auxiliary module carrying its parameters and each drawn value, drawn once
-//! (`A(n) : n>1 -> A_d1(n, floor(n*beta(5,16)))`), and a decomposition production turns that
+//! (`A(n) : n>1 -> A_d1(n, floor(n*betavariate(5,16)))`), and a decomposition production turns that
 //! module into the successor, reading the values as parameters (`A_d1(n, nl_d) -> …A(nl_d)…
 //! A(n-nl_d-1)`). Decomposition runs after the step's productions, so the string after the step
 //! is cpfg's. Only top-level assignments are drawn this way (one inside an `if` stays
@@ -210,7 +210,7 @@ mod tests {
 
     #[test]
     fn a_value_draws_when_it_calls_a_random_function_by_name() {
-        assert!(draws_random("floor(n*beta(5,16))"));
+        assert!(draws_random("floor(n*betavariate(5,16))"));
         assert!(draws_random("uniform(0,1)+1"));
         assert!(!draws_random("n*my_uniform(2)"));
         assert!(!draws_random("n-1"));

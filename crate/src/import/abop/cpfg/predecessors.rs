@@ -18,6 +18,9 @@ impl Importer {
             };
             let left = &line.code[..arrow_at];
             let left = top_level(left, ":").map_or(left, |i| &left[..i]);
+            if top_level(left, "<").is_some() || top_level(left, ">").is_some() {
+                self.cpfg.other_contexts = true;
+            }
             let strict = top_level(left, "<").map_or(left, |i| &left[i + 1..]);
             let strict = top_level(strict, ">")
                 .map_or(strict, |i| &strict[..i])
@@ -129,11 +132,17 @@ impl Importer {
 
     /// A predecessor of several modules becomes contexts, which `consider:` and `ignore:` act
     /// on while cpfg's predecessor is matched whole: its modules are added to the `#consider`
-    /// line (taken off the `#ignore` line), with a note.
+    /// line (taken off the `#ignore` line), with a note, when no production has contexts of its
+    /// own.
     fn match_predecessor_modules(&mut self, modules: &[String], n: usize) {
         let Some((index, directive, mut names)) = self.cpfg.context_list.clone() else {
             return;
         };
+        // Another production's contexts would see the modules added too (the pipe model of
+        // 02-Borchert-Slade would no longer find its `!`): then the list stays as it is.
+        if self.cpfg.other_contexts {
+            return;
+        }
         let consider = directive == crate::vocabulary::DirectiveKind::Consider.written();
         let mut changed = Vec::new();
         for m in modules {

@@ -20,8 +20,12 @@ fn a_block_variable_that_draws_is_drawn_once_for_every_place_that_reads_it() {
         A(n) : n>1 {nl=floor(n*bran(2,3)+0.0); nr = n-nl-1;} --> F[+A(nl)][-A(nr)]\n\
         A(n) : n==1 --> F\nA(n) : n<=0 --> *\nendlsystem\n";
     let (translated, built) = build(text);
-    assert!(translated.contains("beta(2,3)"), "{translated}");
-    assert_eq!(translated.matches("beta(").count(), 1, "{translated}");
+    assert!(translated.contains("betavariate(2,3)"), "{translated}");
+    assert_eq!(
+        translated.matches("betavariate(").count(),
+        1,
+        "{translated}"
+    );
     for seed in 1..4 {
         let options = crate::BuildOptions {
             seed: Some(seed),
