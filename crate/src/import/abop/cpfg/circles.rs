@@ -51,7 +51,7 @@ impl Importer {
 fn disc(d: &str) -> String {
     let turn = 360.0 / SIDES as f64;
     // A side of the inscribed polygon is d · sin(180° / SIDES).
-    let side = (std::f64::consts::PI / SIDES as f64).sin();
+    let side = crate::maths::sin(std::f64::consts::PI / SIDES as f64);
     let first = 90.0 + turn / 2.0;
     let mut out = format!("[f(({d})/2)+({first}){{");
     for k in 0..SIDES - 1 {
