@@ -99,7 +99,7 @@ const EXPECTED: &[(&str, Dialect, Notes)] = &[
         "cpfg/phyllotaxis.l",
         Dialect::Cpfg,
         &[
-            (9, "@c is not a Meristem command"),
+            (9, "@c(d) draws a disc of diameter d"),
             (0, "colours are in the object's view file"),
         ],
     ),

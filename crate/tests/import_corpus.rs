@@ -194,7 +194,7 @@ const CORPUS: &[Entry] = &[
             ),
             (
                 15,
-                "cpfg's @o is not a Meristem command; kept as a module the turtle ignores",
+                "cpfg's @o(d) draws a disc of diameter d facing the viewer",
             ),
         ],
     ),
@@ -218,7 +218,7 @@ const CORPUS: &[Entry] = &[
             ),
             (
                 40,
-                "cpfg's @o is not a Meristem command; kept as a module the turtle ignores",
+                "cpfg's @o(d) draws a disc of diameter d facing the viewer",
             ),
         ],
     ),
@@ -249,7 +249,7 @@ const CORPUS: &[Entry] = &[
             ),
             (
                 40,
-                "cpfg's @o is not a Meristem command; kept as a module the turtle ignores",
+                "cpfg's @o(d) draws a disc of diameter d facing the viewer",
             ),
         ],
     ),
@@ -306,7 +306,7 @@ const CORPUS: &[Entry] = &[
             ),
             (
                 33,
-                "cpfg's @o is not a Meristem command; kept as a module the turtle ignores",
+                "cpfg's @o(d) draws a disc of diameter d facing the viewer",
             ),
         ],
     ),
@@ -445,10 +445,7 @@ const CORPUS: &[Entry] = &[
         182,
         45,
         &[
-            (
-                66,
-                "cpfg's @c is not a Meristem command; kept as a module the turtle ignores",
-            ),
+            (66, "cpfg's @c without a diameter is as wide as the line"),
             (
                 66,
                 "cpfg's @L draws a text label; Meristem draws no text, so the label is dr",
@@ -503,7 +500,7 @@ const CORPUS: &[Entry] = &[
             ),
             (
                 53,
-                "cpfg's @c is not a Meristem command; kept as a module the turtle ignores",
+                "cpfg's @c(d) draws a disc of diameter d in the turtle's H–L plane",
             ),
         ],
     ),
@@ -731,10 +728,7 @@ const CORPUS: &[Entry] = &[
                 106,
                 "cpfg's printf prints to the console; it is not translated (the plant is ",
             ),
-            (
-                145,
-                "cpfg's @c is not a Meristem command; kept as a module the turtle ignores",
-            ),
+            (145, "cpfg's @c without a diameter is as wide as the line"),
             (
                 147,
                 "cpfg's @R is not a Meristem command; kept as a module the turtle ignores",
@@ -1029,14 +1023,16 @@ const FAILURES: &[Failure] = &[
 
 
 (
-"the spiral's only production computes its primordia in a while loop over its parameters and the contour curve (curveX, curveY, curveGAL of profile.con, a file the object does not hold); Meristem has no loops, so it is skipped",
+"the spiral's only production computes its primordia in a while loop (translated: an auxiliary module rewritten until its condition fails) along the contour curve (curveX, curveY, curveGAL of profile.con, a file this copy of the object does not hold: the whole object in tests/collections/cpfg/Ridley builds, see cpfg_collection.rs), so it is skipped",
 (
         "vlab/Ridley",
         2,
         0,
         &[
             (0, "the materials of material.mat become their diffuse colours: their ambien"),
-            (14, "the statement 'while (a<rho_square && s<L) { x = curveX(1,s/L); a = a + "),
+            (0, "the contour file profile.con could not be read"),
+            (5, "cpfg's curveGAL(1, …): the view file gives no contour 1"),
+            (14, "cpfg's curveY(1, …): the view file gives no contour 1 that could be read"),
         ],
     )),
 

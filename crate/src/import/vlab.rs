@@ -5,6 +5,7 @@
 //! object's `specifications` (the `cpfg …` or `lpfg …` command line), else guessed from the names.
 //! An object without a `.l` but with an L-Py `.lpy` is imported as L-Py.
 
+pub(super) mod contour_file;
 mod environment_file;
 mod lpfg_functions;
 mod lpfg_surface;
@@ -47,6 +48,9 @@ pub(super) struct View {
     /// function sets, timelines and values share one list): each a name and the lines that
     /// define it; `None` for one that could not be read (it keeps its number).
     pub functions: Vec<Option<CurveFunction>>,
+    /// The contours `curveX(k, t)`, `curveY`, `curveZ` and `curveGAL(k)` read, k from 1 (the
+    /// view file's `curve:` lines); `None` for one that could not be read.
+    pub contours: Vec<Option<contour_file::Contour>>,
     /// `#color` lines from the colour map or materials.
     pub palette: Vec<String>,
     /// `#surface` and `#patch` lines from the view file's surfaces and their `.s` files.
@@ -358,6 +362,7 @@ fn read_view(text: &str, all: &Files, view: &mut View) {
                 "the view file's {key} line ({}) is not translated: the plant does not bend by it",
                 value.trim()
             )),
+            "curve" => contour(value, all, view),
             "function set" => {
                 let file = value.trim().to_string();
                 match all.text(&file) {
@@ -586,6 +591,20 @@ fn short(v: f64) -> String {
     } else {
         text
     }
+}
+
+/// The view file's `curve: file.con` (the text after the colon): the next contour of `curveX(k, …)`.
+fn contour(value: &str, all: &Files, view: &mut View) {
+    let file = value.split_whitespace().next().unwrap_or("").to_string();
+    let stem = identifier(base(&file).trim_end_matches(".con"), view);
+    let contour = all.text(&file).and_then(|t| contour_file::read(&t, &stem));
+    if contour.is_none() {
+        view.notes.push(format!(
+            "the contour file {file} could not be read (it was not opened, or it is no B-spline): curveX({}, …) and the others are not translated",
+            view.contours.len() + 1
+        ));
+    }
+    view.contours.push(contour);
 }
 
 /// A Meristem name for a function (or an lpfg value): letters, digits and `_`, not a built-in function's nor one

@@ -252,6 +252,12 @@ impl Importer {
             (Flavour::Cpfg, "val") => return self.val(args),
             (Flavour::Cpfg, "ran") => format!("uniform(0,{})", a(0)),
             (Flavour::Cpfg, "nran") => format!("normal({all})"),
+            (Flavour::Cpfg, "bran") => format!("betavariate({all})"),
+            (Flavour::Cpfg, "curveX") => return self.contour(name, Some(0), args),
+            (Flavour::Cpfg, "curveY") => return self.contour(name, Some(1), args),
+            (Flavour::Cpfg, "curveZ") => return self.contour(name, Some(2), args),
+            (Flavour::Cpfg, "curveGAL") => return self.contour(name, None, args),
+            (Flavour::Cpfg, "biran") => format!("binomial({all})"),
             (_, "fabs") => format!("abs({all})"),
             _ => format!("{name}({all})"),
         })

@@ -180,6 +180,26 @@ struct CpfgState {
     colour: bool,
     /// cpfg's global variables, arrays and `Start:`… blocks.
     globals: globals::Globals,
+    /// While a production's blocks are read: the variables that draw random numbers.
+    draws: Option<cpfg::draws::Draws>,
+    /// The decomposition productions of the auxiliary modules of draws, for the end.
+    staged: Vec<String>,
+    /// How many auxiliary modules of draws were made (their names count).
+    stage_count: usize,
+    /// Whether the file has a decomposition section of its own.
+    has_decomposition: bool,
+    /// While a production's blocks are read: `Some` when a loop may be read, with the loop.
+    loops: Option<Option<cpfg::loops::Loop>>,
+    /// Lines to write after the production being read (a loop's productions).
+    after: Vec<String>,
+    /// The staged section holds a loop: its depth is raised.
+    staged_depth: bool,
+    /// A production of the file has a context of its own.
+    other_contexts: bool,
+    /// The `#consider` or `#ignore` line written: its output line, its directive, its names.
+    context_list: Option<(usize, String, Vec<String>)>,
+    /// The output line of the `maximum depth:` of the section being read, and its value.
+    depth_line: Option<(usize, String)>,
 }
 
 /// What reading an L+C (lpfg) file keeps.

@@ -110,6 +110,14 @@ impl Importer {
                 self.cpfg.default_depth = sections_without_depth(&all);
             }
             self.cpfg.globals = globals::Globals::scan(&all);
+            self.cpfg.has_decomposition = all.iter().any(|l| {
+                super::statements::section(&l.code.to_lowercase()).as_deref()
+                    == Some(
+                        crate::vocabulary::KeywordKind::Decomposition
+                            .written()
+                            .as_str(),
+                    )
+            });
             self.words(&all);
         }
         // L-Py's `module` declarations change how strings split into modules: read them first.

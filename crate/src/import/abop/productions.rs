@@ -30,8 +30,16 @@ impl Importer {
             return;
         }
         match self.production_text(left, right, n) {
-            Ok(text) => self.out.line(text, n),
-            Err(why) => self.note(n, format!("{why}; the production is skipped")),
+            Ok(text) => {
+                self.out.line(text, n);
+                for line in std::mem::take(&mut self.cpfg.after) {
+                    self.out.line(line, n);
+                }
+            }
+            Err(why) => {
+                self.cpfg.after.clear();
+                self.note(n, format!("{why}; the production is skipped"))
+            }
         }
     }
 
@@ -51,6 +59,35 @@ impl Importer {
             Flavour::Cpfg => (pattern.to_string(), Vec::new()),
         };
         let pattern = pattern.as_str();
+        // cpfg's loops (see `cpfg/loops.rs`).
+        if let Some(text) = self.loop_production(pattern, guard, right, n)? {
+            return Ok(text);
+        }
+        // cpfg's block variables that draw random numbers (see `cpfg/draws.rs`).
+        if self.may_stage_draws() {
+            self.cpfg.draws = Some(Default::default());
+            let guarded = self.guard(guard, n);
+            let draws = self.cpfg.draws.take().unwrap_or_default();
+            if !draws.values.is_empty() && !draws.tangled {
+                let (env, condition) = guarded?;
+                let (right, weight) = self.weight(right, &env)?;
+                let successor = if right.is_empty() || right == "*" {
+                    String::new()
+                } else {
+                    self.modules(right, &env, n)?
+                };
+                let staged = self.staged(
+                    pattern,
+                    condition.as_deref(),
+                    weight.as_deref(),
+                    &successor,
+                    &draws,
+                )?;
+                if let Some(text) = staged {
+                    return Ok(text);
+                }
+            }
+        }
         let (env, condition) = self.guard(guard, n)?;
         // L-Py's `D(20, k)` matches a D whose first parameter is 20: a condition.
         let condition = if literals.is_empty() {
@@ -61,16 +98,7 @@ impl Importer {
                 .chain(condition.map(|c| format!("({c})")))
                 .reduce(|a, b| format!("{a} && {b}"))
         };
-        // cpfg's probability after the successor: `--> succ : 0.3`.
-        let (right, weight) = match top_level(right, ":") {
-            Some(i) => {
-                let weight = self
-                    .expression(right[i + 1..].trim(), &env)
-                    .map_err(|why| format!("the probability: {why}"))?;
-                (right[..i].trim(), Some(weight))
-            }
-            None => (right, None),
-        };
+        let (right, weight) = self.weight(right, &env)?;
         let mut text = self.pattern(pattern, n)?;
         let successor = if right.is_empty() || right == "*" {
             String::new()
@@ -91,6 +119,65 @@ impl Importer {
             text.push_str(&separate(&successor));
         }
         Ok(text)
+    }
+
+    /// The production whose blocks hold a loop (see `cpfg/loops.rs`); `None` when they hold
+    /// none, or the dialect has none.
+    fn loop_production(
+        &mut self,
+        pattern: &str,
+        guard: &str,
+        right: &str,
+        n: usize,
+    ) -> Result<Option<String>, String> {
+        let may = self.flavour == Flavour::Cpfg
+            && !self.lpfg.active
+            && (!self.in_productions || !self.cpfg.has_decomposition)
+            && (guard.contains("while") || guard.contains("do"));
+        if !may {
+            return Ok(None);
+        }
+        self.cpfg.loops = Some(None);
+        let guarded = self.guard(guard, n);
+        let found = self.cpfg.loops.take().flatten();
+        let (env, condition) = guarded?;
+        let Some(l) = found else {
+            return Ok(None);
+        };
+        let (right, weight) = self.weight(right, &env)?;
+        if weight.is_some() {
+            return Err("a production with a loop and a probability is not translated".into());
+        }
+        let successor = if right.is_empty() || right == "*" {
+            String::new()
+        } else {
+            self.modules(right, &env, n)?
+        };
+        let mut head = self.pattern(pattern, n)?;
+        if let Some(c) = condition {
+            head.push_str(&format!(" : {c}"));
+        }
+        let letter = super::cpfg::draws::aux_letter(pattern);
+        let params = super::cpfg::draws::formal_parameters(pattern);
+        self.looped(&letter, &head, &params, &successor, &l, n)
+            .map(Some)
+    }
+
+    /// cpfg's probability after the successor (`--> succ : 0.3`): the successor and the weight.
+    fn weight<'r>(
+        &mut self,
+        right: &'r str,
+        env: &Env,
+    ) -> Result<(&'r str, Option<String>), String> {
+        Ok(match top_level(right, ":") {
+            Some(i) => {
+                let weight = self
+                    .expression(right[i + 1..].trim(), env)
+                    .map_err(|why| format!("the probability: {why}"))?;
+                (right[..i].trim(), Some(weight))
+            }
+            None => (right, None),
+        })
     }
 
     /// A production's guard (what stands between `:` and the arrow): statement blocks `{…}`
@@ -125,6 +212,10 @@ impl Importer {
             }
         }
         let condition = condition.trim();
+        let looped = self.cpfg.loops.as_ref().is_some_and(Option::is_some);
+        if looped && !(condition.is_empty() || condition == "*") {
+            return Err("a loop before the production's condition is not translated (Meristem tests the condition before the auxiliary module that runs the loop)".into());
+        }
         let condition = if condition.is_empty() || condition == "*" {
             None
         } else {

@@ -90,6 +90,10 @@ impl Importer {
                 }
             }
         }
+        if !ended {
+            let last = all.last().map_or(0, |l| l.n);
+            self.staged_lines(last);
+        }
         if !self.declared.is_empty() {
             self.out.replace(
                 module_line,
@@ -208,14 +212,12 @@ impl Importer {
         }
         // dialect: cpfg's keyword
         if let Some(rest) = keyword(&lower, code, "maximum depth:") {
-            self.out.line(
-                format!("{} {}", KeywordKind::MaximumDepth.written(), rest.trim()),
-                line.n,
-            );
+            self.maximum_depth(rest.trim(), line.n);
             return true;
         }
         if let Some(section) = section(&lower) {
             self.in_productions = section == KeywordKind::Productions.written();
+            self.cpfg.depth_line = None;
             self.out.line(section.clone(), line.n);
             // cpfg rewrites its homomorphism and decomposition to depth 1 unless the section
             // says `maximum depth:` (its parser's default); Meristem's default is deeper.
@@ -227,6 +229,7 @@ impl Importer {
         }
         let end = KeywordKind::EndLSystem.written();
         if lower == end {
+            self.staged_lines(line.n);
             self.out.line(end, line.n);
             *ended = true;
             return true;
@@ -240,6 +243,15 @@ impl Importer {
             return true;
         }
         self.flavour == Flavour::Lpy && code.starts_with("module ")
+    }
+
+    /// `maximum depth: n` of the section being read (a loop may raise it: `cpfg/loops.rs`).
+    fn maximum_depth(&mut self, value: &str, n: usize) {
+        self.cpfg.depth_line = Some((self.out.len(), value.to_string()));
+        self.out.line(
+            format!("{} {value}", KeywordKind::MaximumDepth.written()),
+            n,
+        );
     }
 
     /// `Axiom: modules` (the text after the colon is `rest`).
@@ -289,6 +301,8 @@ impl Importer {
             Ok(m) => {
                 let names = module_names(&m);
                 if !names.is_empty() {
+                    self.cpfg.context_list =
+                        Some((self.out.len(), directive.to_string(), names.clone()));
                     self.out.line(format!("{directive} {}", names.join(" ")), n);
                 }
             }

@@ -256,18 +256,29 @@ fn cpfg_if_blocks_become_conditional_values_and_printf_is_noted() {
     let b = built(&import);
     // A(1,4) → F(1)A(2,0) → F(1)F(2)A(3,0): two segments.
     assert_eq!(b.plant.stats.segments, 2);
-    // A loop is not translated: the production is skipped with a note.
+    // A loop runs as an auxiliary module rewritten until its condition fails (cpfg/loops.rs):
+    // A(1) counts x up to 3 within the one step.
     let looped = super::import(
-        "Axiom: A(1)\nA(x) : {while (x < 3) {x = x + 1;}} --> F(x)\n",
+        "derivation length: 1\nAxiom: A(1)\nA(x) : {while (x < 3) {x = x + 1;}} --> F(x)\n",
+        Flavour::Cpfg,
+    );
+    assert!(looped.notes.is_empty(), "{:?}", looped.notes);
+    let b = built(&looped);
+    assert_eq!(b.plant.stats.segments, 1, "{}", looped.text);
+    let end = b.plant.skeleton.segments[0].end;
+    assert!((end.y - 3.0).abs() < 1e-9, "{end:?}\n{}", looped.text);
+    // A second loop in the block is not translated: the production is skipped with a note.
+    let twice = super::import(
+        "Axiom: A(1)\nA(x) : {while (x < 3) {x = x + 1;} while (x < 5) {x = x + 1;}} --> F(x)\n",
         Flavour::Cpfg,
     );
     assert!(
-        looped
+        twice
             .notes
             .iter()
-            .any(|n| n.line == 2 && n.message.contains("is a loop")),
+            .any(|n| n.line == 2 && n.message.contains("second loop")),
         "{:?}",
-        looped.notes
+        twice.notes
     );
 }
 
@@ -437,9 +448,11 @@ fn what_cannot_be_translated_is_reported_at_its_line() {
     let lines: Vec<usize> = import.notes.iter().map(|n| n.line).collect();
     // `#define f(x) x` is expanded where it is used (line 2 needs no note).
     assert_eq!(lines, [1, 4, 5, 5, 5, 7], "{:?}", import.notes);
+    // `@c(1)` is a disc (a polygon of 12 sides); `frob` stops the production.
     assert!(import
         .text
-        .contains("// not imported: A(t) -> @c(1)~k(2)F(frob(1,t))"));
+        .contains("// not imported: A(t) -> [f((1)/2)+(105){f((1)*0.258819045103)"));
+    assert!(import.text.contains("}]~k(2)F(frob(1,t))"));
 }
 
 #[test]

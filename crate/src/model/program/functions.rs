@@ -4,7 +4,7 @@
 use crate::maths;
 use crate::vocabulary::Function;
 use rand::RngExt;
-use rand_distr::{Binomial, Distribution, Exp, Normal, Poisson};
+use rand_distr::{Beta, Binomial, Distribution, Exp, Normal, Poisson};
 
 /// `x` limited to 0 … 1: the growth functions' normalised age (NaN stays NaN, an error later).
 fn unit(x: f64) -> f64 {
@@ -87,6 +87,9 @@ pub(super) fn call<R: rand::Rng + ?Sized>(
         }
         Function::Poisson => Poisson::new(a[0])
             .map_err(|_| format!("poisson({}): the mean must be > 0", a[0]))?
+            .sample(rng),
+        Function::Beta => Beta::new(a[0], a[1])
+            .map_err(|_| format!("betavariate({}, {}): the shapes must be > 0", a[0], a[1]))?
             .sample(rng),
     })
 }

@@ -50,6 +50,13 @@ impl Importer {
                     }
                     continue;
                 }
+                Statement::While(condition, body, once) => {
+                    if once {
+                        self.statements(body, env, n, depth + 1)?;
+                    }
+                    self.loop_statement(condition, body, env, depth)?;
+                    continue;
+                }
                 Statement::Simple(s) => s.trim(),
             };
             if statement.is_empty() {
@@ -109,6 +116,25 @@ impl Importer {
             .expression(condition, env)
             .map_err(|why| format!("the condition of 'if ({})': {why}", one_line(condition)))?;
         let depth_before = self.lpfg.path.len();
+        // A value drawn inside a branch stays substituted (see `draws.rs`).
+        let draws = self.cpfg.draws.take();
+        let result = self.branches(c, then, otherwise, env, n, depth, depth_before);
+        self.cpfg.draws = draws;
+        result
+    }
+
+    /// The two branches of an `if` whose condition is `c` (see [`Importer::if_statement`]).
+    #[allow(clippy::too_many_arguments)]
+    fn branches(
+        &mut self,
+        c: String,
+        then: &str,
+        otherwise: Option<&str>,
+        env: &mut Env,
+        n: usize,
+        depth: usize,
+        depth_before: usize,
+    ) -> Result<bool, String> {
         let mut yes = env.clone();
         self.lpfg.path.push(c.clone());
         let yes_ends = self.statements(then, &mut yes, n, depth + 1)?;
@@ -213,6 +239,10 @@ impl Importer {
         if value.len() > MAX_VALUE {
             return Err(too_long());
         }
+        if let Some(aux) = self.drawn(target, &value) {
+            env.insert(target.to_string(), aux);
+            return Ok(());
+        }
         env.insert(target.to_string(), format!("({value})"));
         Ok(())
     }
@@ -229,8 +259,32 @@ enum Statement<'a> {
     Group(&'a str),
     /// `if (condition) then [else otherwise]`.
     If(&'a str, &'a str, Option<&'a str>),
+    /// `while (condition) body` (false), `do body while (condition);` (true: the body runs
+    /// once first).
+    While(&'a str, &'a str, bool),
     /// Anything else, up to its `;`.
     Simple(&'a str),
+}
+
+/// `while (condition) {body}` at the start of `text` (after `while`): the condition, the body
+/// and the text after it.
+fn while_loop(text: &str) -> Result<(&str, &str, &str), String> {
+    let after = text.trim_start();
+    if !after.starts_with('(') {
+        return Err("'while' without '('".into());
+    }
+    let close = PARENTHESES_AND_BRACES
+        .closing(after, 0)
+        .ok_or("a '(' is never closed")?;
+    let condition = &after[1..close];
+    let rest = after[close + 1..].trim_start();
+    if !rest.starts_with('{') {
+        return Err("a loop's body must be in braces (cpfg's rule)".into());
+    }
+    let end = PARENTHESES_AND_BRACES
+        .closing(rest, 0)
+        .ok_or("a '{' block is never closed")?;
+    Ok((condition, &rest[1..end], &rest[end + 1..]))
 }
 
 /// Whether `text` starts with the keyword `word` (not a longer name).
@@ -252,6 +306,33 @@ fn next_statement(text: &str, depth: usize) -> Result<(Statement<'_>, &str), Str
             .closing(text, 0)
             .ok_or("a '{' block is never closed")?;
         return Ok((Statement::Group(&text[1..close]), &text[close + 1..]));
+    }
+    if starts_with_word(text, "while") {
+        let (condition, body, rest) = while_loop(&text[5..])?;
+        return Ok((Statement::While(condition, body, false), rest));
+    }
+    if starts_with_word(text, "do") {
+        let after = text[2..].trim_start();
+        if !after.starts_with('{') {
+            return Err("a loop's body must be in braces (cpfg's rule)".into());
+        }
+        let end = PARENTHESES_AND_BRACES
+            .closing(after, 0)
+            .ok_or("a '{' block is never closed")?;
+        let rest = after[end + 1..].trim_start();
+        if !starts_with_word(rest, "while") {
+            return Err("'do {…}' without 'while'".into());
+        }
+        let (condition, rest) =
+            match PARENTHESES_AND_BRACES.closing(rest, rest.find('(').unwrap_or(0)) {
+                Some(close) if rest.find('(').is_some() => {
+                    let open = rest.find('(').unwrap_or(0);
+                    (&rest[open + 1..close], rest[close + 1..].trim_start())
+                }
+                _ => return Err("'while' without '('".into()),
+            };
+        let rest = rest.strip_prefix(';').unwrap_or(rest);
+        return Ok((Statement::While(condition, &after[1..end], true), rest));
     }
     if starts_with_word(text, "if") {
         let open = text.find(|c: char| !c.is_whitespace() && c != 'i' && c != 'f');

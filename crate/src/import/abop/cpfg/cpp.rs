@@ -407,10 +407,7 @@ fn continued(lines: Vec<Line>) -> Vec<Line> {
             if let Some(last) = out.get_mut(head) {
                 last.code.push(' ');
                 last.code.push_str(&line.code);
-                open = last.code.ends_with('\\');
-                if open {
-                    last.code.pop();
-                }
+                open = strip_continuation(&mut last.code);
                 out.push(Line {
                     code: String::new(),
                     ..line
@@ -419,14 +416,26 @@ fn continued(lines: Vec<Line>) -> Vec<Line> {
             }
         }
         let mut line = line;
-        open = line.code.ends_with('\\');
-        if open {
-            line.code.pop();
-        }
+        open = strip_continuation(&mut line.code);
         head = out.len();
         out.push(line);
     }
     out
+}
+
+/// Takes a line's continuation `\` off its end; true when there was one. A line that ends with
+/// `\\` (vlab's editor escapes the backslash, as in the course's `02-fern-leaf`) is continued
+/// too, both taken off: cpp would leave the first in the macro's value, where it is no token of an
+/// expression cpfg could read.
+fn strip_continuation(code: &mut String) -> bool {
+    if !code.ends_with('\\') {
+        return false;
+    }
+    code.pop();
+    if code.ends_with('\\') {
+        code.pop();
+    }
+    true
 }
 
 /// The arguments of a macro call whose first argument starts at byte `at` (after `(`): split at

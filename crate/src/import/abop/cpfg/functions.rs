@@ -48,9 +48,15 @@ impl Importer {
         if let Some(f) = named {
             return Ok(f);
         }
-        let index = k
-            .parse::<f64>()
-            .ok()
+        // A number, or a `#define`d name whose value is one (`#define INT_LENGTH 1`).
+        let constant = self
+            .lpfg
+            .constants
+            .iter()
+            .find(|(name, _)| name == k)
+            .map(|&(_, v)| v);
+        let index = constant
+            .or_else(|| k.parse::<f64>().ok())
             .filter(|v| v.fract() == 0.0 && *v >= 1.0)
             .ok_or_else(|| format!("{tool}'s {call}({k}, …) chooses its function by an expression or a name the object's files do not give; Meristem names each function, so it is not translated"))?;
         match view.functions.get(index as usize - 1) {
@@ -151,6 +157,47 @@ impl Importer {
             FunctionKind::Value(_) => Ok(f.name.clone()),
             FunctionKind::Curve | FunctionKind::Timeline(_) => Err(format!(
                 "lpfg's val({k}) reads a value of the object's .vset file, and {k} is a function (lpfg gives no value for it)"
+            )),
+        }
+    }
+
+    /// cpfg's `curveX(k, t)`, `curveY`, `curveZ` (`axis` 0, 1, 2) and `curveGAL(k)` (`axis`
+    /// `None`): contour k of the view file's `curve:` lines, as the tables it became (see
+    /// `vlab/contour_file.rs`).
+    pub(in crate::import::abop) fn contour(
+        &self,
+        call: &str,
+        axis: Option<usize>,
+        args: &[String],
+    ) -> Result<String, String> {
+        let k = args.first().map_or("", |k| k.trim());
+        let Some(view) = &self.cpfg.view else {
+            return Err(format!("cpfg's {call}({k}, …) reads contour {k} of the object's view file (.v), which was not opened with this file (open the object's folder or .zip)"));
+        };
+        let index = self
+            .lpfg
+            .constants
+            .iter()
+            .find(|(name, _)| name == k)
+            .map(|&(_, v)| v)
+            .or_else(|| k.parse::<f64>().ok())
+            .filter(|v| v.fract() == 0.0 && *v >= 1.0)
+            .ok_or_else(|| format!("cpfg's {call}({k}, …) chooses its contour by an expression; Meristem names each contour, so it is not translated"))?;
+        let Some(Some(contour)) = view.contours.get(index as usize - 1) else {
+            return Err(format!(
+                "cpfg's {call}({k}, …): the view file gives no contour {k} that could be read"
+            ));
+        };
+        match (axis, args) {
+            (None, [_]) => Ok(format!("({})", crate::import::number(contour.length))),
+            (Some(axis), [_, t]) => Ok(format!("{}({t})", contour.names[axis])),
+            _ => Err(format!(
+                "cpfg's {call}(…) takes a contour's number{}",
+                if axis.is_some() {
+                    " and a fraction of its length"
+                } else {
+                    ""
+                }
             )),
         }
     }

@@ -4,11 +4,16 @@
 //! `@`/`~`/`?` names.
 
 pub(super) mod blocks;
+mod circles;
 pub(super) mod cpp;
+pub(super) mod draws;
 mod functions;
 pub(super) mod globals;
 pub(super) mod joins;
+pub(super) mod loops;
 mod predecessors;
+#[cfg(test)]
+mod tests;
 mod view;
 
 use super::modules::symbol_name;
@@ -23,7 +28,8 @@ pub(in crate::import::abop) fn cpp_functions() -> Vec<String> {
         .map(|f| f.name.to_string())
         .chain(
             [
-                "func", "tfunc", "val", "ran", "nran", "trunc", "fabs", "pow",
+                "func", "tfunc", "val", "ran", "nran", "bran", "biran", "trunc", "fabs", "curveX",
+                "curveY", "curveZ", "curveGAL", "pow",
             ]
             .iter()
             .map(|s| s.to_string()),

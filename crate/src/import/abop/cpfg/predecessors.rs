@@ -18,6 +18,9 @@ impl Importer {
             };
             let left = &line.code[..arrow_at];
             let left = top_level(left, ":").map_or(left, |i| &left[..i]);
+            if top_level(left, "<").is_some() || top_level(left, ">").is_some() {
+                self.cpfg.other_contexts = true;
+            }
             let strict = top_level(left, "<").map_or(left, |i| &left[i + 1..]);
             let strict = top_level(strict, ">")
                 .map_or(strict, |i| &strict[..i])
@@ -100,6 +103,7 @@ impl Importer {
                 modules[0]
             ),
         );
+        self.match_predecessor_modules(&modules, n);
         let parts = (0..modules.len())
             .map(|i| {
                 let lc = format!("{before}{}", modules[..i].concat());
@@ -124,6 +128,52 @@ impl Importer {
             })
             .collect();
         Some(parts)
+    }
+
+    /// A predecessor of several modules becomes contexts, which `consider:` and `ignore:` act
+    /// on while cpfg's predecessor is matched whole: its modules are added to the `#consider`
+    /// line (taken off the `#ignore` line), with a note, when no production has contexts of its
+    /// own.
+    fn match_predecessor_modules(&mut self, modules: &[String], n: usize) {
+        let Some((index, directive, mut names)) = self.cpfg.context_list.clone() else {
+            return;
+        };
+        // Another production's contexts would see the modules added too (the pipe model of
+        // 02-Borchert-Slade would no longer find its `!`): then the list stays as it is.
+        if self.cpfg.other_contexts {
+            return;
+        }
+        let consider = directive == crate::vocabulary::DirectiveKind::Consider.written();
+        let mut changed = Vec::new();
+        for m in modules {
+            let name = m.split('(').next().unwrap_or("").trim().to_string();
+            let listed = names.contains(&name);
+            if consider && !listed {
+                names.push(name.clone());
+                changed.push(name);
+            } else if !consider && listed {
+                names.retain(|x| *x != name);
+                changed.push(name);
+            }
+        }
+        if changed.is_empty() {
+            return;
+        }
+        let line = if names.is_empty() {
+            String::new()
+        } else {
+            format!("{directive} {}", names.join(" "))
+        };
+        self.out.replace(index, line);
+        self.cpfg.context_list = Some((index, directive.clone(), names));
+        let how = if consider { "added to" } else { "taken off" };
+        self.note(
+            n,
+            format!(
+                "the modules of this predecessor ({}) are {how} {directive}, so that the contexts it becomes match them as cpfg matches its predecessor; other productions' contexts see them too",
+                changed.join(" ")
+            ),
+        );
     }
 
     /// The modules of a cpfg module string as written (`F(v,n)#(w)` → `F(v,n)`, `#(w)`); `None`

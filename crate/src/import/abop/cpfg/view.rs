@@ -47,6 +47,12 @@ impl Importer {
                 self.out.line(line.clone(), 0);
             }
         }
+        for line in view.contours.iter().flatten().flat_map(|c| &c.lines) {
+            match line.strip_prefix("// ") {
+                Some(comment) => self.out.comment(comment, 0),
+                None => self.out.line(line.clone(), 0),
+            }
+        }
         for note in &view.notes {
             self.note(0, note.clone());
         }
@@ -136,6 +142,12 @@ impl Importer {
                 }
                 let sign = if name == "," { -step } else { step };
                 Some(format!("'({})", number(sign)))
+            }
+            "@c" | "@o" => Some(self.circle(name, params, n)),
+            // dialect: cpfg's sphere takes its diameter, Meristem's its radius.
+            "@O" if has_params && !self.lpfg.active => {
+                let d = params.first().map_or("", String::as_str);
+                Some(format!("{name}(({d})/2)"))
             }
             "@Gs" => Some(name_of(Meaning::Turtle(Command::StartSmooth)).to_string()),
             // dialect: cpfg's end of a generalized cylinder
