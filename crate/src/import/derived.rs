@@ -160,11 +160,14 @@ pub fn import_derived(result_json: &str, main: &str, files: &[ObjectFile], seed:
 /// The derived import's header, colours and notes.
 fn finish(imported: Import, run: &DerivedRun, scanned: &Scanned, main: &str, seed: u64) -> Import {
     let name = base(main);
+    let steps = match run.steps {
+        1 => "1 step".to_string(),
+        n => format!("{n} steps"),
+    };
     let mut text = format!(
-        "// Derived by Python from {name} in {} steps, with seed {seed} (meristem_lsystem).\n\
+        "// Derived by Python from {name} in {steps}, with seed {seed} (meristem_lsystem).\n\
          // This is the plant's final string, not its rules: to change the rules, edit {name}\n\
-         // and open it again.\n",
-        run.steps
+         // and open it again.\n"
     );
     for m in &run.materials {
         let declared = format!("#color {} ", m.index);
