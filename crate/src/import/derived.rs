@@ -222,15 +222,27 @@ pub fn prefer_derived(translation: Import, derived: Import) -> Import {
     kept
 }
 
+/// How many steps [`needs_python`] derives, at most, to see whether a translation draws.
+const STEPS_TO_SEE_A_PLANT: u32 = 3;
+
 /// Whether a hand translation falls short, so that the model is better run by Python: it has
-/// no axiom, carries a note (something dropped or approximated), or builds no plant (no segment
-/// and no triangle). Whether Python can run the files at all is
+/// no axiom, carries a note (something dropped or approximated), or draws nothing (no segment
+/// and no triangle) in its first steps (at most [`STEPS_TO_SEE_A_PLANT`]: a translation that
+/// explodes later is not derived twice). Whether Python can run the files at all is
 /// [`crate::import::python_main`]'s answer.
 pub fn needs_python(translation: &Import) -> bool {
     if translation.is_empty() || !translation.notes.is_empty() {
         return true;
     }
-    let build = crate::pipeline::build(&translation.text, &BuildOptions::default());
+    let (file, _) = crate::syntax::parse(&translation.text);
+    let Some(model) = crate::model::resolve(&file).0 else {
+        return true;
+    };
+    let options = BuildOptions {
+        iterations: Some(model.settings.iterations.min(STEPS_TO_SEE_A_PLANT)),
+        ..BuildOptions::default()
+    };
+    let build = crate::pipeline::build(&translation.text, &options);
     !build.ok() || build.plant.stats.segments + build.plant.stats.triangles == 0
 }
 
@@ -275,7 +287,13 @@ fn scan(lstring: &str, drop_empty: bool) -> Scanned {
                 .rev()
                 .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
                 .collect();
-            tail.into_iter().rev().collect()
+            let start = s.text.len() - tail.len();
+            // L-Py's `@L`, `~l`: the sign is part of the name.
+            let sign = s.text[boundary..start]
+                .chars()
+                .next_back()
+                .filter(|c| "@~".contains(*c));
+            sign.into_iter().chain(tail.into_iter().rev()).collect()
         };
         let args: Option<Vec<String>> = if inner.trim().is_empty() {
             Some(Vec::new())
@@ -356,7 +374,9 @@ fn lpfg_text(source: &str, scanned: &Scanned) -> String {
     }
     for (name, count) in &scanned.modules {
         let known = declared.contains(name) || LPFG_PREDEFINED.contains(&name.as_str());
-        if name.len() > 1 && !known && !name.starts_with(|c: char| c.is_ascii_digit()) {
+        let identifier = name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+            && !name.starts_with(|c: char| c.is_ascii_digit());
+        if name.len() > 1 && !known && identifier {
             let params = vec!["float"; *count].join(", ");
             text.push_str(&format!("module {name}({params});\n"));
             declared.push(name.clone());

@@ -29,8 +29,8 @@ pub fn import_file(args: &Args, source: &str) -> ExitCode {
     };
     let translation = import::import(source, dialect);
     // An .lpy or an L+C .l read with its own dialect may be run by Python instead.
-    let result = match (&args.from, dialect) {
-        (None, Dialect::Lpy | Dialect::Cpfg) => {
+    let result = match dialect {
+        Dialect::Lpy | Dialect::Cpfg => {
             let file = import::ObjectFile {
                 name: base_name(&args.file),
                 bytes: source.as_bytes().to_vec(),

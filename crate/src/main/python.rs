@@ -2,9 +2,11 @@
 //! `MERISTEM_PYTHON` names (CPython 3.11 or later). The package `meristem_lsystem` is embedded in
 //! this binary (`build.rs`) and handed to Python on stdin with the model's files, as JSON; a small
 //! driver imports the package from that JSON (nothing is written to disk), calls
-//! `meristem_lsystem.run(files, main, options)` and prints its result on stdout. The child is
-//! killed after 60 s (`MERISTEM_PYTHON_TIMEOUT`, in seconds, changes it); the runtime's own time
-//! limit is set 10 s shorter, so that a model that runs too long stops with its own message.
+//! `meristem_lsystem.run(files, main, options)` and prints its result on stdout (what the model
+//! prints goes to stderr). The child is killed after 55 s (`MERISTEM_PYTHON_TIMEOUT`, in
+//! seconds, changes it), so that an import with its translation stays within a minute; the
+//! runtime's own time limit is set 10 s shorter, so that a model that runs too long stops with
+//! its own message.
 
 use meristem::import::{ObjectFile, PythonMain};
 use std::io::{Read, Write};
@@ -40,8 +42,11 @@ class Embedded(importlib.abc.MetaPathFinder, importlib.abc.Loader):
 
 sys.meta_path.insert(0, Embedded())
 from meristem_lsystem import run
+# What the model prints goes to stderr: stdout carries the result alone.
+result_out, sys.stdout = sys.stdout, sys.stderr
 result = run(request["files"], request["main"], request["options"])
-sys.stdout.write(json.dumps(result))
+result_out.write(json.dumps(result))
+result_out.flush()
 "#;
 
 /// The seconds after which Python is stopped.
@@ -50,7 +55,7 @@ fn timeout() -> f64 {
         .ok()
         .and_then(|t| t.trim().parse::<f64>().ok())
         .filter(|t| t.is_finite() && *t > 0.0)
-        .unwrap_or(60.0)
+        .unwrap_or(55.0)
 }
 
 /// Runs `main` of `files` with Python: the result's JSON, or why there is none (Python missing or
