@@ -10,8 +10,8 @@
 
 use super::vlab::ObjectFile;
 use super::{import, import_files, number, Dialect, Import, ImportNote};
+use crate::diagnostics::has_errors;
 use crate::syntax::PARENTHESES;
-use crate::BuildOptions;
 use serde::Deserialize;
 
 /// The result of `meristem_lsystem.run` (its JSON), as far as Meristem reads it.
@@ -225,6 +225,9 @@ pub fn prefer_derived(translation: Import, derived: Import) -> Import {
 /// How many steps [`needs_python`] derives, at most, to see whether a translation draws.
 const STEPS_TO_SEE_A_PLANT: u32 = 3;
 
+/// The most modules [`needs_python`] derives to see whether a translation draws.
+const MODULES_TO_SEE_A_PLANT: usize = 200_000;
+
 /// Whether a hand translation falls short, so that the model is better run by Python: it has
 /// no axiom, carries a note (something dropped or approximated), or draws nothing (no segment
 /// and no triangle) in its first steps (at most [`STEPS_TO_SEE_A_PLANT`]: a translation that
@@ -234,16 +237,25 @@ pub fn needs_python(translation: &Import) -> bool {
     if translation.is_empty() || !translation.notes.is_empty() {
         return true;
     }
-    let (file, _) = crate::syntax::parse(&translation.text);
-    let Some(model) = crate::model::resolve(&file).0 else {
+    let (file, diagnostics) = crate::syntax::parse(&translation.text);
+    let (model, more) = crate::model::resolve(&file);
+    let errors = has_errors(&diagnostics) || has_errors(&more);
+    let Some(mut model) = model.filter(|_| !errors) else {
         return true;
     };
-    let options = BuildOptions {
-        iterations: Some(model.settings.iterations.min(STEPS_TO_SEE_A_PLANT)),
-        ..BuildOptions::default()
+    model.settings.max_modules = model.settings.max_modules.min(MODULES_TO_SEE_A_PLANT);
+    let options = crate::derive::DeriveOptions {
+        steps: model.settings.iterations.min(STEPS_TO_SEE_A_PLANT),
+        ..Default::default()
     };
-    let build = crate::pipeline::build(&translation.text, &options);
-    !build.ok() || build.plant.stats.segments + build.plant.stats.triangles == 0
+    let Ok(derivation) = crate::derive::derive(&model, &options) else {
+        return true;
+    };
+    let skeleton = crate::turtle::interpret(&model, derivation.turtle_string());
+    skeleton.segments.is_empty()
+        && skeleton.polygons.is_empty()
+        && skeleton.surfaces.is_empty()
+        && skeleton.spheres.is_empty()
 }
 
 /// The last part of a path.
@@ -391,5 +403,4 @@ fn lpfg_text(source: &str, scanned: &Scanned) -> String {
 }
 
 #[cfg(test)]
-#[path = "derived_tests.rs"]
 mod tests;
