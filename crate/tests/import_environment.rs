@@ -111,7 +111,8 @@ fn honda81_keeps_e_inert_and_names_what_is_missing() {
     assert!(notes_with(&lpfg, "lpfg's E1").is_empty());
     for line in [
         "axiom: !(WIDTH)[F(LENGTH)A][-(ANGLE)F(LENGTH)A][+(ANGLE)F(LENGTH)A][|F(LENGTH)A]\n",
-        "f(l) > ?E(x) : x == 1 -> F(l)A\n",
+        // lpfg's IncColor() is Meristem's ' (the next colour).
+        "f(l) > ?E(x) : x == 1 -> 'F(l)A\n",
         "f(l) < ?E(x) : x == 1 -> ε\n",
         "A -> [-(ANGLE)f(LENGTH)?E(VIGOR)][+(ANGLE)f(LENGTH)?E(VIGOR)][f(LENGTH)?E(VIGOR)]\n",
     ] {

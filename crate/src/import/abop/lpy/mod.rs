@@ -403,7 +403,19 @@ impl Importer {
         start: usize,
         n: usize,
     ) -> (String, usize) {
-        let rest: String = chars[start..].iter().collect();
+        // The word at `start`, the spaces after it and one more character: all that is read
+        // here (the whole rest of a derived axiom, copied for each module, was quadratic).
+        let word_end = chars[start..]
+            .iter()
+            .position(|c| !(c.is_ascii_alphanumeric() || *c == '_'))
+            .map_or(chars.len(), |k| start + k);
+        let spaces_end = chars[word_end..]
+            .iter()
+            .position(|c| !c.is_whitespace())
+            .map_or(chars.len(), |k| word_end + k);
+        let rest: String = chars[start..(spaces_end + 1).min(chars.len())]
+            .iter()
+            .collect();
         let candidates: Vec<String> = self
             .declared
             .iter()
