@@ -9,7 +9,7 @@
 // with eval (Emscripten's EM_ASM), which the page's `script-src 'self' 'wasm-unsafe-eval'` would
 // refuse; the worker is started from the page's own origin (`worker-src 'self'`) and fetches only
 // from it (`pyodide/…`), so the page's policy holds as it was.
-import type { PyodideAPI } from 'pyodide';
+import type { loadPyodide as LoadPyodide, PyodideAPI } from 'pyodide';
 import { packageSources } from './python-package';
 import type { PythonWorkerRequest, PythonWorkerResponse } from './python-protocol';
 import { installPackage, runModel } from './python-runner';
@@ -22,7 +22,7 @@ function reply(response: PythonWorkerResponse): void {
 
 /** Pyodide started, with the runtime installed (once per worker). */
 async function startPython(indexURL: string): Promise<PyodideAPI> {
-  const { loadPyodide } = (await import(/* @vite-ignore */ `${indexURL}pyodide.mjs`)) as typeof import('pyodide');
+  const { loadPyodide } = (await import(/* @vite-ignore */ `${indexURL}pyodide.mjs`)) as { loadPyodide: typeof LoadPyodide };
   const py = await loadPyodide({ indexURL, stdout: () => {}, stderr: () => {} });
   installPackage(py, packageSources());
   return py;
