@@ -1,0 +1,191 @@
+"""The derivation loop: parallel rewriting of a string by one kind of rule, and the steps.
+
+A step walks the string once (forwards, or backwards after `backward()`), and at each module
+tries the rules whose predecessor starts with its name (and the `*` rules), in the order of the
+file; the first that matches and does not return None rewrites. The clock is read at every rule
+application and the string's size after every step."""
+
+from __future__ import annotations
+
+import inspect
+import time
+
+from .lpy_errors import LimitReached
+from .lpy_match import match_left, match_pred, match_right
+from .lstring import Lstring, to_modules
+
+
+def rule_table(rt, kind: str) -> dict:
+    """Name → rules of `kind` active in the current group (declaration order), '*' → star rules."""
+    key = (kind, rt.group)
+    table = rt._tables.get(key)
+    if table is None:
+        table = {}
+        for rule in rt.all_rules:
+            if rule.spec.kind == kind and rule.group in (0, rt.group):
+                table.setdefault(rule.first, []).append(rule)
+        stars = table.pop("*", [])
+        if stars:
+            for name, rules in table.items():
+                table[name] = sorted(rules + stars, key=lambda r: r.order)
+        table["*"] = stars
+        rt._tables[key] = table
+    return table
+
+
+def try_rule(rt, rule, s, i, new, forward: bool):
+    """(modules, length) when `rule` rewrites at `i` (forwards: starts there; backwards: ends)."""
+    args: list = []
+    start = i if forward else i - len(rule.pred) + 1
+    if start < 0:
+        return None
+    filt = rt.filt
+    if rule.left and not match_left(rule.left, s, start, args, filt):
+        return None
+    if rule.new_left and not match_left(rule.new_left, new if forward else s, len(new) if forward else start, args, filt):
+        return None
+    length = match_pred(rule.pred, s, start, args)
+    if not length:
+        return None
+    end = start + length
+    if rule.new_right and not match_right(rule.new_right, 0, s, end, args, filt):
+        return None
+    if rule.right and not match_right(rule.right, 0, s, end, args, filt):
+        return None
+    if time.monotonic() > rt.deadline:
+        raise LimitReached(f"the derivation passed the time limit ({rt.options.get('time_limit', 50)} s)")
+    rt.nbuf = []
+    result = rule.func(*args)
+    buffered = rt.nbuf
+    rt.nbuf = []
+    if result is None:
+        if not buffered:
+            return None
+        return buffered, length
+    if type(result) is not list:
+        result = to_modules(result)
+    return (buffered + result if buffered else result), length
+
+
+def rewrite(rt, s: list, kind: str) -> tuple[list, bool]:
+    """One parallel rewriting of `s` by the rules of `kind`; (new string, whether any applied)."""
+    table = rule_table(rt, kind)
+    stars = table["*"]
+    if len(table) == 1 and not stars:
+        return s, False
+    applied = False
+    n = len(s)
+    if rt.forward_dir:
+        out: list = []
+        i = 0
+        while i < n:
+            m = s[i]
+            for rule in table.get(m.name, stars):
+                got = try_rule(rt, rule, s, i, out, True)
+                if got is not None:
+                    out.extend(got[0])
+                    i += got[1]
+                    applied = True
+                    break
+            else:
+                out.append(m)
+                i += 1
+        return out, applied
+    chunks: list = []
+    i = n - 1
+    while i >= 0:
+        m = s[i]
+        for rule in candidates(rt, table, m.name):
+            got = try_rule(rt, rule, s, i, chunks, False)
+            if got is not None:
+                chunks.append(got[0])
+                i -= got[1]
+                applied = True
+                break
+        else:
+            chunks.append([m])
+            i -= 1
+    out = []
+    for chunk in reversed(chunks):
+        out.extend(chunk)
+    return out, applied
+
+
+def candidates(rt, table, name):
+    """Backwards, a predecessor ends at the module: rules whose last pattern module is `name`."""
+    key = ("last", id(table), name)
+    got = rt._tables.get(key)
+    if got is None:
+        every = {id(r): r for rules in table.values() for r in rules}.values()
+        got = sorted((r for r in every if r.pred[-1].name in (name, "*")), key=lambda r: r.order)
+        rt._tables[key] = got
+    return got
+
+
+def max_depth(rt, kind: str) -> int:
+    value = rt.namespace.get(f"__maximum_depth_{kind}__", 1)
+    return max(1, int(value))
+
+
+def decompose(rt, s: list, kind: str) -> list:
+    for _ in range(max_depth(rt, kind)):
+        s, applied = rewrite(rt, s, kind)
+        if not applied:
+            break
+        check_size(rt, s)
+    return s
+
+
+def check_size(rt, s):
+    if len(s) > rt.max_modules:
+        raise LimitReached(f"the string grew to {len(s)} modules, over the limit of {rt.max_modules}")
+
+
+def call_hook(rt, name: str, lstring):
+    """Calls Start/StartEach/EndEach/End with as many of (lstring, scene) as it takes."""
+    hook = rt.namespace.get(name)
+    if not callable(hook):
+        return None
+    try:
+        nparams = len(inspect.signature(hook).parameters)
+    except (TypeError, ValueError):
+        nparams = 0
+    result = hook(*([lstring, None][:nparams]))
+    if result is None or name in ("Start", "StartEach"):
+        return None
+    return Lstring(to_modules(result))
+
+
+def derive(rt) -> Lstring:
+    return derive_from(rt, rt.axiom(), 0, rt.derivation_length)
+
+
+def derive_from(rt, s, start: int, steps: int) -> Lstring:
+    call_hook(rt, "Start", s)
+    done = 0
+    for it in range(start, start + steps):
+        rt.iteration = it
+        call_hook(rt, "StartEach", s)
+        s, _ = rewrite(rt, s, "production")
+        check_size(rt, s)
+        s = decompose(rt, s, "decomposition")
+        s = Lstring(s)
+        replaced = call_hook(rt, "EndEach", s)
+        if replaced is not None:
+            s = replaced
+        done = it + 1
+        if rt.stop_requested:
+            break
+    rt.steps_done = done
+    replaced = call_hook(rt, "End", s)
+    if replaced is not None:
+        s = replaced
+    return Lstring(s)
+
+
+def interpret(rt, s) -> Lstring:
+    saved = rt.forward_dir
+    rt.forward_dir = True
+    s = decompose(rt, list(s), "interpretation")
+    rt.forward_dir = saved
+    return Lstring(s)

@@ -1,0 +1,158 @@
+"""Running an L-Py model: its Python executed once, then the derivation, as L-Py does it.
+
+Order (L-Py's lsystem.cpp): the INITIALISATION section runs and `__initialiseContext__(context)`
+sets materials, panel scalars, curves and functions; the model's code runs (rules are functions
+in its namespace); `Start()`; each step `StartEach()`, productions of the active group (and
+group 0), decompositions up to their maximum depth, `EndEach(lstring)` (a returned string
+replaces the current one), and `Stop()` ends the loop; `End(lstring)`; then interpretation
+rules (homomorphism) up to their maximum depth give the string the turtle draws."""
+
+from __future__ import annotations
+
+import inspect
+import random
+import time
+
+from .lpy_context import Context
+from .lpy_errors import LimitReached, ModelError, from_exception
+from .lpy_lstring import LpySyntaxError
+from .lpy_match import ContextFilter, Pattern, match_left, match_pred, match_right
+from .lpy_source import translate
+from .lstring import Lstring, Module, predefined_names, to_modules
+from . import plantgl_modules
+
+
+class Rule:
+    __slots__ = ("spec", "func", "order", "pred", "left", "right", "new_left", "new_right",
+                 "first", "group")
+
+    def __init__(self, spec, func, order, consts):
+        self.spec, self.func, self.order, self.group = spec, func, order, spec.group
+        compile_ = lambda pats: [Pattern(p.name, [(k, consts(v) if k == "const" else v)
+                                                  for k, v in p.specs]) for p in pats]
+        self.pred, self.left, self.right = compile_(spec.pred), compile_(spec.left), compile_(spec.right)
+        self.new_left, self.new_right = compile_(spec.new_left), compile_(spec.new_right)
+        self.first = self.pred[0].name
+
+
+class LpyRuntime:
+    """One model: load (translate + execute), derive, interpret."""
+
+    def __init__(self, files: dict[str, str], main: str, options: dict, parameters=None):
+        self.files, self.main, self.options = files, main, options
+        self.filename = main
+        self.namespace: dict = {}
+        self.context = Context(self)
+        self.iteration = 0
+        self.group = 0
+        self.forward_dir = True
+        self.stop_requested = False
+        self.nbuf: list = []
+        self.deadline = time.monotonic() + float(options.get("time_limit", 50))
+        self.max_modules = int(options.get("max_modules", 2_000_000))
+        self.parameters = dict(parameters or {})
+        self.notes: list[dict] = []
+        self._api = None
+        self.rules: dict[str, list[Rule]] = {}
+        self._tables: dict = {}
+
+    # ----- the model's view of its L-system -----
+    def api(self) -> dict:
+        if self._api is None:
+            self._api = self._make_api()
+        return self._api
+
+    def _make_api(self) -> dict:
+        rt = self
+
+        def extern(**kw):
+            for name, value in kw.items():
+                rt.namespace.setdefault(name, rt.parameters.get(name, value))
+
+        def nproduce(value):
+            rt.nbuf.extend(to_modules(value))
+
+        return {
+            "__M": Module, "__Mstar": lambda name, *args: Module(name, list(args)),
+            "__produce": lambda mods: mods, "__nproduce": rt.nbuf_extend,
+            "nsproduce": nproduce, "pproduce": nproduce,
+            "getIterationNb": lambda: rt.iteration, "Stop": rt.stop, "stop": rt.stop,
+            "forward": lambda: rt.set_direction(True), "backward": lambda: rt.set_direction(False),
+            "isForward": lambda: rt.forward_dir, "useGroup": rt.use_group,
+            "getGroup": lambda: rt.group, "context": lambda: rt.context,
+            "extern": extern, "frameDisplay": lambda *a: None, "isAnimationEnabled": lambda: False,
+            "Lsystem": rt.sub_lsystem, "xrange": range, "unicode": str, "long": int,
+            "getDerivationLength": lambda: rt.derivation_length,
+        }
+
+    def nbuf_extend(self, mods):
+        self.nbuf.extend(mods)
+
+    def stop(self):
+        self.stop_requested = True
+
+    def set_direction(self, forward: bool):
+        self.forward_dir = forward
+
+    def use_group(self, group):
+        self.group = int(group)
+
+    def sub_lsystem(self, filename, parameters=None):
+        from .lpy_compose import SubLsystem
+
+        return SubLsystem(self, filename, parameters)
+
+    # ----- loading -----
+    def load(self):
+        text = self.files[self.main]
+        try:
+            self.source = translate(text, predefined_names())
+        except LpySyntaxError as e:
+            raise ModelError(f"SyntaxError: {e.message}", e.line, e.column) from None
+        src = self.source
+        Module.named.update({name: {p: i for i, p in enumerate(params)}
+                             for name, params in src.declared.items() if params})
+        ns = self.namespace
+        ns.update({"__name__": "__lpy__", "__builtins__": __builtins__})
+        ns.update(plantgl_modules.plantgl_names())
+        ns.update(plantgl_modules.lpy_names())
+        ns.update(self.api())
+        ns.update(self.parameters)
+        plantgl_modules.install({"Lsystem": self.sub_lsystem})
+        try:
+            if src.init_code is not None:
+                exec(compile(src.init_code, self.filename, "exec"), ns)
+                init = ns.get("__initialiseContext__")
+                if init:
+                    init(self.context)
+            exec(compile(src.code, self.filename, "exec"), ns)
+            for name, value in self.parameters.items():
+                ns[name] = value
+            self._build_rules()
+        except (ModelError, LimitReached):
+            raise
+        except Exception as e:  # the model's own code failed
+            raise from_exception(e, self.filename) from None
+
+    def _build_rules(self):
+        consts = lambda text: eval(text, self.namespace)  # the model's own expression
+        self.all_rules = []
+        for order, spec in enumerate(self.source.rules):
+            self.all_rules.append(Rule(spec, self.namespace[spec.function], order, consts))
+        self.filt = ContextFilter(self.source.ignore, self.source.consider)
+
+    @property
+    def derivation_length(self) -> int:
+        steps = self.options.get("steps")
+        if steps is not None:
+            return int(steps)
+        return int(self.namespace.get("__derivation_length__") or 0)
+
+    def axiom(self) -> Lstring:
+        ax = self.namespace.get("__axiom__", [])
+        if callable(ax):
+            self.nbuf = []
+            value = ax()
+            ax = self.nbuf + (to_modules(value) if value is not None else [])
+            self.nbuf = []
+        return Lstring(to_modules(ax))

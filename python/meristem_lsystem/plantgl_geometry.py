@@ -1,0 +1,312 @@
+"""PlantGL's curves, patches, point arrays, materials and shapes that L-Py models build.
+
+Curves are evaluated as PlantGL does: `NurbsCurve2D`/`NurbsCurve` by de Boor over a clamped
+uniform knot vector unless knots are given (control points carry a weight as last coordinate),
+`BezierCurve2D` by de Casteljau, `Polyline2D` piecewise linearly; `getPointAt(u)` takes u in
+the curve's parameter range [firstKnot, lastKnot]. `QuantisedFunction(curve)` reads the curve as
+y = f(x). A curve or patch in a module's parameters is written in the result as `@obj<k>` with
+`describe()` in `result["objects"][k]`."""
+
+from __future__ import annotations
+
+import bisect
+
+from .plantgl_math import Color3, Vector2, Vector3, Vector4, _Vector
+
+SAMPLES = 32
+
+
+class _PointArray(list):
+    KIND = Vector3
+
+    def __init__(self, points=(), *more):
+        if more or isinstance(points, (int, float)):
+            points = [] if isinstance(points, (int, float)) else [points, *more]
+        super().__init__(p if isinstance(p, _Vector) else self.KIND(*p) for p in points)
+
+    def getLength(self):
+        return len(self)
+
+
+class Point2Array(_PointArray):
+    KIND = Vector2
+
+
+class Point3Array(_PointArray):
+    KIND = Vector3
+
+
+class Point4Array(_PointArray):
+    KIND = Vector4
+
+
+class Point4Matrix(list):
+    def __init__(self, rows=()):
+        super().__init__([p if isinstance(p, _Vector) else Vector4(*p) for p in row] for row in rows)
+
+
+def _clamped_knots(n: int, degree: int) -> list[float]:
+    inner = n - degree - 1
+    return [0.0] * (degree + 1) + [i / (inner + 1) for i in range(1, inner + 1)] + [1.0] * (degree + 1)
+
+
+def _de_boor(points: list[list[float]], knots: list[float], degree: int, u: float) -> list[float]:
+    n = len(points)
+    u = min(max(u, knots[degree]), knots[n])
+    k = bisect.bisect_right(knots, u) - 1
+    k = min(max(k, degree), n - 1)
+    d = [list(points[j + k - degree]) for j in range(degree + 1)]
+    for r in range(1, degree + 1):
+        for j in range(degree, r - 1, -1):
+            i = j + k - degree
+            den = knots[i + degree + 1 - r] - knots[i]
+            a = 0.0 if den == 0 else (u - knots[i]) / den
+            d[j] = [(1 - a) * x + a * y for x, y in zip(d[j - 1], d[j])]
+    return d[degree]
+
+
+class _Curve:
+    DIM = 2
+    name = ""
+
+    def getPointAt(self, u):
+        raise NotImplementedError
+
+    @property
+    def firstKnot(self):
+        return 0.0
+
+    @property
+    def lastKnot(self):
+        return 1.0
+
+    def getTangentAt(self, u):
+        h = (self.lastKnot - self.firstKnot) * 1e-4
+        a = self.getPointAt(max(self.firstKnot, u - h))
+        b = self.getPointAt(min(self.lastKnot, u + h))
+        return (b - a).normed()
+
+    def getNormalAt(self, u):
+        t = self.getTangentAt(u)
+        return Vector2(-t[1], t[0]) if self.DIM == 2 else Vector3(-t[1], t[0], 0)
+
+    def sample(self, count=SAMPLES):
+        a, b = self.firstKnot, self.lastKnot
+        return [self.getPointAt(a + (b - a) * i / (count - 1)) for i in range(count)]
+
+    def getLength(self):
+        pts = self.sample(100)
+        return sum((q - p).norm() for p, q in zip(pts, pts[1:]))
+
+    def describe(self):
+        return {"type": type(self).__name__, "points": [list(p) for p in self.sample()]}
+
+
+class NurbsCurve2D(_Curve):
+    DIM = 2
+
+    def __init__(self, ctrlPointList, knotList=None, degree=3, stride=60, **kw):
+        kind = Vector3 if self.DIM == 2 else Vector4
+        pts = [p if isinstance(p, _Vector) else kind(*p) for p in ctrlPointList]
+        self.ctrlPointList = pts
+        self.degree = min(int(kw.get("degree", degree)), max(1, len(pts) - 1))
+        self.knotList = list(knotList) if knotList else _clamped_knots(len(pts), self.degree)
+        self.stride = stride
+
+    @property
+    def firstKnot(self):
+        return self.knotList[self.degree]
+
+    @property
+    def lastKnot(self):
+        return self.knotList[len(self.ctrlPointList)]
+
+    def getPointAt(self, u):
+        w_index = self.DIM
+        homog = [[c * p[w_index] for c in list(p)[:w_index]] + [p[w_index]] for p in self.ctrlPointList]
+        r = _de_boor(homog, self.knotList, self.degree, u)
+        w = r[w_index] or 1.0
+        coords = [c / w for c in r[:w_index]]
+        return Vector2(*coords) if self.DIM == 2 else Vector3(*coords)
+
+
+class NurbsCurve(NurbsCurve2D):
+    DIM = 3
+
+
+class BezierCurve2D(_Curve):
+    DIM = 2
+
+    def __init__(self, ctrlPointList, stride=60, **kw):
+        kind = Vector3 if self.DIM == 2 else Vector4
+        self.ctrlPointList = [p if isinstance(p, _Vector) else kind(*p) for p in ctrlPointList]
+        self.degree = len(self.ctrlPointList) - 1
+        self.stride = stride
+
+    def getPointAt(self, u):
+        k = self.DIM
+        pts = [[c * p[k] for c in list(p)[:k]] + [p[k]] for p in self.ctrlPointList]
+        while len(pts) > 1:
+            pts = [[(1 - u) * a + u * b for a, b in zip(p, q)] for p, q in zip(pts, pts[1:])]
+        w = pts[0][k] or 1.0
+        coords = [c / w for c in pts[0][:k]]
+        return Vector2(*coords) if k == 2 else Vector3(*coords)
+
+
+class BezierCurve(BezierCurve2D):
+    DIM = 3
+
+
+class Polyline2D(_Curve):
+    DIM = 2
+
+    def __init__(self, pointList, **kw):
+        kind = Vector2 if self.DIM == 2 else Vector3
+        self.pointList = [p if isinstance(p, _Vector) else kind(*p) for p in pointList]
+
+    @property
+    def lastKnot(self):
+        return float(len(self.pointList) - 1)
+
+    def getPointAt(self, u):
+        pts = self.pointList
+        i = min(max(int(u), 0), len(pts) - 2)
+        t = u - i
+        return pts[i] * (1 - t) + pts[i + 1] * t
+
+    def sample(self, count=SAMPLES):
+        return list(self.pointList)
+
+    @staticmethod
+    def Circle(radius=1.0, slices=8):
+        import math
+
+        return Polyline2D([(radius * math.cos(2 * math.pi * i / slices),
+                            radius * math.sin(2 * math.pi * i / slices)) for i in range(slices + 1)])
+
+
+class Polyline(Polyline2D):
+    DIM = 3
+
+
+class NurbsPatch:
+    """A NURBS surface: rows of Vector4 control points (x, y, z, w)."""
+
+    def __init__(self, ctrlPointMatrix, udegree=3, vdegree=3, uknotList=None, vknotList=None, **kw):
+        self.ctrlPointMatrix = Point4Matrix(ctrlPointMatrix)
+        rows, cols = len(self.ctrlPointMatrix), len(self.ctrlPointMatrix[0])
+        self.udegree = min(int(kw.get("udegree", udegree)), rows - 1)
+        self.vdegree = min(int(kw.get("vdegree", vdegree)), cols - 1)
+        self.uknotList = list(uknotList) if uknotList else _clamped_knots(rows, self.udegree)
+        self.vknotList = list(vknotList) if vknotList else _clamped_knots(cols, self.vdegree)
+
+    def getPointAt(self, u, v):
+        rows = []
+        for row in self.ctrlPointMatrix:
+            homog = [[p[0] * p[3], p[1] * p[3], p[2] * p[3], p[3]] for p in row]
+            rows.append(_de_boor(homog, self.vknotList, self.vdegree, v))
+        r = _de_boor(rows, self.uknotList, self.udegree, u)
+        w = r[3] or 1.0
+        return Vector3(r[0] / w, r[1] / w, r[2] / w)
+
+    def describe(self, count=12):
+        grid = [[list(self.getPointAt(i / (count - 1), j / (count - 1))) for j in range(count)]
+                for i in range(count)]
+        return {"type": "NurbsPatch", "points": grid}
+
+
+class BezierPatch(NurbsPatch):
+    def __init__(self, ctrlPointMatrix, **kw):
+        m = Point4Matrix(ctrlPointMatrix)
+        super().__init__(m, len(m) - 1, len(m[0]) - 1)
+
+
+class QuantisedFunction:
+    """A curve read as y = f(x), sampled as PlantGL does (`sampling` points, linear between)."""
+
+    def __init__(self, curve, sampling=100, clamped=True):
+        pts = sorted(((p[0], p[1]) for p in curve.sample(max(int(sampling), 2))), key=lambda p: p[0])
+        self.xs, self.ys = [p[0] for p in pts], [p[1] for p in pts]
+        self.clamped = clamped
+
+    @property
+    def firstx(self):
+        return self.xs[0]
+
+    @property
+    def lastx(self):
+        return self.xs[-1]
+
+    def __call__(self, x):
+        xs, ys = self.xs, self.ys
+        if x <= xs[0]:
+            return ys[0]
+        if x >= xs[-1]:
+            return ys[-1]
+        i = bisect.bisect_right(xs, x)
+        x0, x1 = xs[i - 1], xs[i]
+        t = 0.0 if x1 == x0 else (x - x0) / (x1 - x0)
+        return ys[i - 1] * (1 - t) + ys[i] * t
+
+    getValue = __call__
+
+    def describe(self):
+        return {"type": "QuantisedFunction", "points": [[x, y] for x, y in zip(self.xs, self.ys)]}
+
+
+class Material:
+    """A PlantGL material; its colour is ambient × diffuse, as PlantGL renders it."""
+
+    def __init__(self, *args, **kw):
+        self.name = ""
+        self.ambient = Color3(80, 80, 80)
+        self.diffuse = 2.0
+        positional = list(args)
+        if positional and isinstance(positional[0], str):
+            self.name = positional.pop(0)
+        fields = ["ambient", "diffuse", "specular", "emission", "shininess", "transparency"]
+        for name, value in zip(fields, positional):
+            kw.setdefault(name, value)
+        for name, value in kw.items():
+            if name in ("ambient", "specular", "emission") and not isinstance(value, Color3):
+                value = Color3(*value)
+            setattr(self, name, value)
+
+    def rgb(self):
+        return [min(255, max(0, round(c * self.diffuse))) for c in self.ambient]
+
+    def describe(self):
+        return {"type": "Material", "rgb": self.rgb()}
+
+
+class ImageTexture(Material):
+    def __init__(self, *args, **kw):
+        super().__init__(*(a for a in args if not isinstance(a, str)))
+        self.filename = next((a for a in args if isinstance(a, str)), "")
+
+
+class Texture2D(Material):
+    def __init__(self, *args, **kw):
+        super().__init__()
+        self.image = kw.get("image", args[0] if args else None)
+
+
+class Geometry:
+    """A PlantGL shape or transformation used with `@g`/`PglShape`: kept by type and arguments."""
+
+    def __init__(self, *args, **kw):
+        self.args, self.kw = args, kw
+
+    def describe(self):
+        return {"type": type(self).__name__}
+
+
+GEOMETRY_NAMES = [
+    "Sphere", "Cylinder", "Cone", "Box", "Disc", "Frustum", "Paraboloid", "Revolution",
+    "Extrusion", "Translated", "Scaled", "AxisRotated", "EulerRotated", "Oriented", "Shape",
+    "Scene", "TriangleSet", "QuadSet", "FaceSet", "Group", "Swung", "Text", "Font", "PointSet",
+    "Polyline2DSet", "IFS", "ExtrudedHull", "Tapered", "BoundingBox", "Transformed", "Matrix4",
+    "Matrix3", "Quaternion", "ProfileInterpolation", "Font", "Index", "IndexArray", "Index3Array",
+    "Index4Array", "Curve2DArray", "Color4Array", "RealArray", "Viewer",
+]
+GEOMETRY = {name: type(name, (Geometry,), {}) for name in GEOMETRY_NAMES}
