@@ -16,6 +16,8 @@ export interface PythonRunRequest {
 
 /** `run`'s options; what is left out takes the runtime's default. */
 export interface PythonRunOptions {
+  /** The dialect to run `main` in (the runtime tells it by the file when left out). */
+  dialect?: 'lpy' | 'lpfg';
   /** Steps to derive; null: the model's own derivation length. */
   steps?: number | null;
   seed?: number;
