@@ -7,8 +7,13 @@
 //! with Meristem's own parser and resolver: a line Meristem rejects is commented out and reported,
 //! so an import never hands the editor a grammar with errors unless it has no axiom at all.
 //! Like the rest of the core, nothing here does IO or panics on any input.
+//!
+//! L-Py models and lpfg's L+C are programs: when the hand translation of one falls short
+//! ([`needs_python`]), the model is run by Python (the CLI runs `python3`, the studio Pyodide) and
+//! [`import_derived`] turns the derived string into Meristem text ([`derived`]).
 
 mod abop;
+mod derived;
 mod green;
 mod lparser;
 #[cfg(test)]
@@ -16,15 +21,16 @@ mod test_support;
 mod vlab;
 mod zip;
 
-pub use vlab::{import_files, import_object, ObjectFile};
+pub use derived::{import_derived, needs_python, prefer_derived, DerivedRun};
+pub use vlab::{import_files, import_object, python_main, ObjectFile, PythonMain};
 pub use zip::unzip;
 
 use crate::diagnostics::{has_errors, LineIndex, Severity};
 use crate::maths;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// A notation the importers read.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Dialect {
     /// Green's RL-systems: `SYSTEM DECLARATIONS AXIOM RULES END.` (Lluch et al.).
@@ -66,14 +72,14 @@ impl Dialect {
 
 /// Something the importer could not translate (or translated only approximately), at a 1-based
 /// line of the imported text (0 when it concerns the whole file).
-#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub struct ImportNote {
     pub line: usize,
     pub message: String,
 }
 
 /// The result of an import: Meristem text, and the notes.
-#[derive(Clone, Debug, Default, PartialEq, Eq, Serialize)]
+#[derive(Clone, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub struct Import {
     pub text: String,
     pub notes: Vec<ImportNote>,

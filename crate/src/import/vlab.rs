@@ -8,10 +8,12 @@
 mod environment_file;
 mod lpfg_functions;
 mod lpfg_surface;
+mod python_main;
 mod specifications;
 mod surface_file;
 
 use crate::maths;
+pub use python_main::{python_main, PythonMain};
 use specifications::{command, Command};
 
 use super::abop::{self, Flavour};
@@ -219,19 +221,7 @@ pub fn import_object(files: &[ObjectFile]) -> Import {
             lpfg: lpfg_functions::LpfgFiles::guessed(&all),
             ..Command::default()
         });
-    let ls = all.with(".l");
-    let lsystem = spec
-        .lsystem
-        .clone()
-        .filter(|l| all.get(l).is_some())
-        .or_else(|| {
-            ["plant.l", "lsystem.l"]
-                .iter()
-                .find(|n| all.get(n).is_some())
-                .map(|s| s.to_string())
-        })
-        .or_else(|| ls.first().map(|s| s.to_string()));
-    let Some(lsystem) = lsystem else {
+    let Some(lsystem) = lsystem_file(&all, &spec) else {
         return other_dialect(&all);
     };
     let stem = lsystem.trim_end_matches(".l").to_string();
@@ -276,6 +266,21 @@ pub fn import_object(files: &[ObjectFile]) -> Import {
     }
     let include = |name: &str| all.text(name);
     abop::import_with(&text, Flavour::Cpfg, Some(&view), &include)
+}
+
+/// The object's L-system file: the one `specifications` names, else `plant.l` or `lsystem.l`,
+/// else the first `.l`.
+fn lsystem_file(all: &Files, spec: &Command) -> Option<String> {
+    spec.lsystem
+        .clone()
+        .filter(|l| all.get(l).is_some())
+        .or_else(|| {
+            ["plant.l", "lsystem.l"]
+                .iter()
+                .find(|n| all.get(n).is_some())
+                .map(|s| s.to_string())
+        })
+        .or_else(|| all.with(".l").first().map(|s| s.to_string()))
 }
 
 /// A folder without a cpfg `.l`: its L-Py `.lpy`, Lparser `.ls` or Meristem `.lsys`.

@@ -8,23 +8,14 @@ use wasm_bindgen::prelude::*;
 /// [`import_grammar`] (`dialect` is null when nothing could be imported).
 #[wasm_bindgen(js_name = importObject)]
 pub fn import_object(names: Vec<String>, bytes: &[u8], lengths: &[u32]) -> String {
-    use crate::import::{self, Dialect, Import, ObjectFile};
+    use crate::import::{self, Dialect, Import};
     #[derive(serde::Serialize)]
     struct Imported {
         #[serde(flatten)]
         import: Import,
         dialect: Option<Dialect>,
     }
-    let mut files = Vec::new();
-    let mut at = 0usize;
-    for (name, &len) in names.into_iter().zip(lengths) {
-        let end = at.saturating_add(len as usize).min(bytes.len());
-        files.push(ObjectFile {
-            name,
-            bytes: bytes[at.min(end)..end].to_vec(),
-        });
-        at = end;
-    }
+    let files = object_files(names, bytes, lengths);
     let (import, dialect) = import::import_files(&files);
     serde_json::to_string(&Imported { import, dialect }).unwrap_or_else(|_| "{}".into())
 }
@@ -64,4 +55,105 @@ pub fn import_grammar(text: &str, dialect_or_file_name: &str) -> String {
         },
     };
     serde_json::to_string(&result).unwrap_or_else(|_| "{}".into())
+}
+
+/// The files of [`import_object`]'s arguments: `names[k]` with the next `lengths[k]` bytes.
+fn object_files(
+    names: Vec<String>,
+    bytes: &[u8],
+    lengths: &[u32],
+) -> Vec<crate::import::ObjectFile> {
+    let mut files = Vec::new();
+    let mut at = 0usize;
+    for (name, &len) in names.into_iter().zip(lengths) {
+        let end = at.saturating_add(len as usize).min(bytes.len());
+        files.push(crate::import::ObjectFile {
+            name,
+            bytes: bytes[at.min(end)..end].to_vec(),
+        });
+        at = end;
+    }
+    files
+}
+
+/// Which of the files opened together (as [`import_object`] takes them) Python would run:
+/// JSON `{"main": name, "dialect": "lpy" | "lpfg"}` (the runtime's `main` and
+/// `options.dialect`), or `null` when none can be (cpfg, Lparser, Green: the hand translation is
+/// all there is).
+#[wasm_bindgen(js_name = pythonMain)]
+pub fn python_main(names: Vec<String>, bytes: &[u8], lengths: &[u32]) -> String {
+    let files = object_files(names, bytes, lengths);
+    serde_json::to_string(&crate::import::python_main(&files)).unwrap_or_else(|_| "null".into())
+}
+
+/// The rule that chooses the Python route: `importJson` is what [`import_object`] or
+/// [`import_grammar`] returned for a model [`python_main`] can run. True when that hand
+/// translation has no axiom, carries a note (something dropped or approximated) or draws
+/// nothing: then run the model by Python and call [`import_derived`]. False (and for JSON that
+/// cannot be read): keep the translation, an editable grammar with its rules.
+#[wasm_bindgen(js_name = needsPython)]
+pub fn needs_python(import_json: &str) -> bool {
+    serde_json::from_str::<crate::import::Import>(import_json)
+        .map(|import| crate::import::needs_python(&import))
+        .unwrap_or(false)
+}
+
+/// A Python run turned into Meristem text: `resultJson` is the JSON `meristem_lsystem.run`
+/// returned for the file `mainName` (from [`python_main`]) of the files given as to
+/// [`import_object`], run with `seed`. Returns JSON `{text, notes, dialect}` as
+/// [`import_object`]; a run that stopped gives an empty `text` and a note at the error's line
+/// (then call [`prefer_derived`] with the hand translation). TypeScript:
+/// `importDerived(resultJson: string, mainName: string, names: string[], bytes: Uint8Array,
+/// lengths: Uint32Array, seed: number): string`.
+#[wasm_bindgen(js_name = importDerived)]
+pub fn import_derived(
+    result_json: &str,
+    main_name: &str,
+    names: Vec<String>,
+    bytes: &[u8],
+    lengths: &[u32],
+    seed: f64,
+) -> String {
+    use crate::import::{self, Dialect, Import};
+    #[derive(serde::Serialize)]
+    struct Imported {
+        #[serde(flatten)]
+        import: Import,
+        dialect: Option<Dialect>,
+    }
+    let files = object_files(names, bytes, lengths);
+    let seed = if seed.is_finite() && seed >= 0.0 {
+        seed as u64
+    } else {
+        0
+    };
+    let import = import::import_derived(result_json, main_name, &files, seed);
+    let lpy = main_name.to_ascii_lowercase().ends_with(".lpy");
+    let dialect = (!import.is_empty()).then_some(if lpy { Dialect::Lpy } else { Dialect::Cpfg });
+    serde_json::to_string(&Imported { import, dialect }).unwrap_or_else(|_| "{}".into())
+}
+
+/// The import to open: the derived one (`derivedJson`, from [`import_derived`]) when it has a
+/// plant, else the hand translation (`translationJson`) with the derived one's notes saying why
+/// Python gave none. Both as JSON `{text, notes, dialect}`; returns the same.
+#[wasm_bindgen(js_name = preferDerived)]
+pub fn prefer_derived(translation_json: &str, derived_json: &str) -> String {
+    use crate::import::{self, Dialect, Import};
+    #[derive(serde::Serialize, serde::Deserialize)]
+    struct Imported {
+        #[serde(flatten)]
+        import: Import,
+        dialect: Option<Dialect>,
+    }
+    let read = |json: &str| serde_json::from_str::<Imported>(json).ok();
+    let (Some(translation), Some(derived)) = (read(translation_json), read(derived_json)) else {
+        return translation_json.to_string();
+    };
+    let dialect = if derived.import.is_empty() {
+        translation.dialect
+    } else {
+        derived.dialect
+    };
+    let import = import::prefer_derived(translation.import, derived.import);
+    serde_json::to_string(&Imported { import, dialect }).unwrap_or_else(|_| "{}".into())
 }

@@ -51,7 +51,9 @@ pub use editor::PlantEditor;
 #[cfg(feature = "io")]
 pub use export::{export_model, ExportedModel};
 #[cfg(feature = "io")]
-pub use import::{import_grammar, import_object};
+pub use import::{
+    import_derived, import_grammar, import_object, needs_python, prefer_derived, python_main,
+};
 #[cfg(feature = "studio-extras")]
 pub use inspector::Explanation;
 pub use inspector::PlantInspector;
