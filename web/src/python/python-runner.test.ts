@@ -4,6 +4,7 @@
 // importDerived (the import worker's call), then built.
 import { loadPyodide, type PyodideAPI } from 'pyodide';
 import { beforeAll, describe, expect, it } from 'vitest';
+import { buildPlant, importDerived } from '../core';
 import { packageSources } from './python-package';
 import { installPackage, runModel, type PythonRunRequest } from './python-runner';
 
@@ -42,5 +43,33 @@ describe('the L-system runtime on Pyodide', () => {
     expect(result.ok).toBe(false);
     expect(result.error).toMatchObject({ line: 5 });
     expect(String((result.error as { message: string }).message)).toMatch(/undefined_name/);
+  });
+});
+
+/** The text of a derived run as the import worker makes it, and its plant's segments. */
+function derivedPlant(json: string, main: string, files: Record<string, string>): { text: string; notes: string[]; segments: number; ok: boolean } {
+  const encoded = Object.entries(files).map(([name, text]) => ({ name, bytes: new TextEncoder().encode(text) }));
+  const imported = importDerived(json, main, encoded, 0);
+  const build = buildPlant(imported.text);
+  return { text: imported.text, notes: imported.notes.map((n) => n.message), segments: build.ok ? build.stats.segments : -1, ok: build.ok };
+}
+
+describe('what Python derived, made Meristem text by the core (the studio’s Python path)', () => {
+  it('draws a tree whose lengths a Python function computes: 1 + 2 + 4 + 8 segments', () => {
+    const tree = 'from math import sqrt\n\ndef length(order):\n    return 1.0 / sqrt(order + 1)\n\nAxiom: A(0)\nderivation length: 4\nproduction:\nA(order):\n    if order < 3:\n        produce F(length(order)) [ +(35) A(order + 1) ] [ -(35) A(order + 1) ]\n    else:\n        produce F(0.3)\nendlsystem\n';
+    const { json, result } = runLpy('tree.lpy', tree);
+    expect(result.ok).toBe(true);
+    const plant = derivedPlant(json, 'tree.lpy', { 'tree.lpy': tree });
+    expect(plant.ok).toBe(true);
+    expect(plant.segments).toBe(1 + 2 + 4 + 8);
+    expect(plant.text).toMatch(/Python/);
+  });
+
+  it('draws a model whose string Start and EndEach change through globals, seeded', () => {
+    const model = 'import random\n\ndef Start():\n    global grown\n    grown = 0\n\ndef EndEach():\n    global grown\n    grown += 1\n\nAxiom: A\nderivation length: 6\nproduction:\nA:\n    if random.random() < 2 and grown < 5:\n        produce F A\n    else:\n        produce F\nendlsystem\n';
+    const { json, result } = runLpy('globals.lpy', model, { seed: 3 });
+    expect(result.ok).toBe(true);
+    expect(String(result.lstring).replace(/ /g, '')).toBe('FFFFFF');
+    expect(derivedPlant(json, 'globals.lpy', { 'globals.lpy': model }).segments).toBe(6);
   });
 });

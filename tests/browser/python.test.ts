@@ -1,0 +1,156 @@
+// Python in the studio (issue 49): an L-Py model that the hand translation does not reach (a
+// production whose body is Python) opened with the Open control is run by Pyodide, loaded from the
+// site on first use in a worker of its own, and the plant it derived is drawn, with the notice
+// saying how; a model that never ends is stopped with Stop, the user's text as it was. Laptop and
+// phone.
+import { chromium, type Browser, type Page } from 'playwright-core';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { decodePng, foregroundShare } from './pictures';
+import { editorText, generation, nextBuild, PHONE, RESULTS, studioIn, VIEW_CANVAS, type StudioPage } from './studio-page';
+import { writeFileSync } from 'node:fs';
+
+/** A branching tree whose growth is Python: a function, `if`, `produce` with computed parameters. */
+const TREE = `from math import sqrt
+
+def length(order):
+    return 1.0 / sqrt(order + 1)
+
+Axiom: A(0)
+derivation length: 5
+production:
+A(order):
+    if order < 4:
+        produce F(length(order)) [ +(35) A(order + 1) ] [ -(35) A(order + 1) ] A(order + 1)
+    else:
+        produce F(0.3)
+endlsystem
+`;
+
+/** A production whose body never returns: only Stop (or the time limit) ends it. */
+const LOOP = `Axiom: A
+derivation length: 2
+production:
+A:
+    n = 0
+    while n >= 0:
+        n += 1
+    produce F A
+endlsystem
+`;
+
+/** Text of the user's that must survive a stopped open. */
+const MINE = '// mine\n#iterations 3\naxiom: F\nF -> F[+F]F';
+
+let browser: Browser;
+
+beforeAll(async () => {
+  browser = await chromium.launch({ executablePath: '/usr/bin/chromium' });
+});
+
+afterAll(async () => {
+  await browser?.close();
+});
+
+async function open(page: Page, name: string, text: string): Promise<void> {
+  await page.getByTestId('file-input').setInputFiles({ name, mimeType: 'text/plain', buffer: Buffer.from(text) });
+}
+
+/** Opens `name` over text of the user's: answers Replace when asked; the build's status. */
+async function openOver(page: Page, name: string, text: string): Promise<string | null> {
+  const before = await generation(page);
+  await open(page, name, text);
+  const replace = page.getByTestId('confirm-replace-button');
+  const deadline = Date.now() + 120_000;
+  while (Date.now() < deadline && (await generation(page)) === before) {
+    if (await replace.isVisible()) await replace.click();
+    await page.waitForTimeout(200);
+  }
+  return nextBuild(page, before);
+}
+
+/** The share of the plant's canvas that is not background, from a screenshot of it. */
+async function plantShare(page: Page, name: string): Promise<number> {
+  const png = await page.locator(VIEW_CANVAS).screenshot();
+  writeFileSync(new URL(name, RESULTS), png);
+  return foregroundShare(decodePng(png));
+}
+
+async function noticeText(page: Page): Promise<string | null> {
+  return page.getByTestId('notice-text').textContent();
+}
+
+describe('an L-Py model run by Python', () => {
+  for (const [device, options] of [
+    ['laptop', { viewport: { width: 1280, height: 800 } }],
+    ['phone', PHONE],
+  ] as const) {
+    it(`opens through Open, loads Python once, and draws the plant Python derived (${device})`, async () => {
+      const context = await browser.newContext(options);
+      const { page, problems }: StudioPage = await studioIn(await context.newPage());
+      const before = await generation(page);
+      await open(page, 'tree.lpy', TREE);
+      await expect.poll(() => noticeText(page), { timeout: 10_000 }).toMatch(/^(Loading Python \(about 12 MB, once\)…|Running tree\.lpy in Python…)$/);
+      expect(await nextBuild(page, before, 120_000)).toBe('ok');
+      expect(await noticeText(page)).toMatch(/^Imported tree\.lpy from L-Py, run by Python \(5 steps, \d+\.\d s\)/);
+      const text = await editorText(page);
+      expect(text).toMatch(/Python/);
+      // 1 + 2 + 4 + 8 + 16 segments of A's F (each A of order < 4 makes three more) and the ends' F(0.3):
+      // the derived string, not the rules, is what the editor holds.
+      const stats = await page.evaluate(() => window.__meristem!.lastStats!);
+      expect(stats.segments).toBeGreaterThan(30);
+      expect(await plantShare(page, `python-tree-${device}.png`)).toBeGreaterThan(0.01);
+      writeFileSync(new URL(`python-tree-page-${device}.png`, RESULTS), await page.screenshot());
+      expect(problems).toEqual([]);
+      await context.close();
+    });
+  }
+
+  it('stops a model that runs on, with Stop, and leaves the text as it was', async () => {
+    const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
+    const { page, problems } = await studioIn(await context.newPage());
+    const before = await generation(page);
+    await page.getByTestId('editor').locator('.cm-content').click();
+    await page.keyboard.press('Control+A');
+    await page.keyboard.insertText(MINE);
+    expect(await nextBuild(page, before)).toBe('ok');
+    await open(page, 'loop.lpy', LOOP);
+    await expect.poll(() => noticeText(page), { timeout: 120_000 }).toBe('Running loop.lpy in Python…');
+    await page.getByTestId('python-stop').click();
+    await expect.poll(() => noticeText(page)).toBe('Could not open loop.lpy: you stopped Python while it ran loop.lpy; your text is as it was.');
+    expect(await editorText(page)).toBe(MINE);
+    // Python starts again for the next model (the stopped worker was ended).
+    expect(await openOver(page, 'tree.lpy', TREE)).toBe('ok');
+    expect(problems).toEqual([]);
+    await context.close();
+  });
+});
+
+describe('Python offline', () => {
+  it('is kept by the service worker once a model has opened: the studio reloads offline and opens another', async () => {
+    const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
+    const { page, problems } = await studioIn(await context.newPage());
+    await page.evaluate(async () => (await navigator.serviceWorker.ready).active?.state);
+    await page.reload(); // controlled by the service worker from now on
+    await page.waitForFunction(() => (window.__meristem?.lastStats?.segments ?? 0) > 0);
+    await page.evaluate(() => window.__meristem?.ready);
+    // Nothing of Python is precached: a visitor who opens no model never downloads it.
+    const precached = await page.evaluate(async () => (await Promise.all((await caches.keys()).map(async (name) => [name, (await (await caches.open(name)).keys()).map((r) => r.url)] as const))));
+    expect(precached.flatMap(([, urls]) => urls).filter((url) => url.includes('/pyodide/'))).toEqual([]);
+    const before = await generation(page);
+    await open(page, 'tree.lpy', TREE);
+    expect(await nextBuild(page, before, 120_000)).toBe('ok');
+    const kept = await page.evaluate(async () => {
+      const names = (await caches.keys()).filter((name) => name.startsWith('meristem-pyodide-'));
+      return names.length === 1 ? (await (await caches.open(names[0])).keys()).map((r) => new URL(r.url).pathname.split('/').pop()).sort() : names;
+    });
+    expect(kept).toEqual(['pyodide-lock.json', 'pyodide.asm.mjs', 'pyodide.asm.wasm', 'pyodide.mjs', 'python_stdlib.zip']);
+    await context.setOffline(true);
+    await page.reload();
+    await page.waitForFunction(() => (window.__meristem?.lastStats?.segments ?? 0) > 0, undefined, { timeout: 30_000 });
+    await page.evaluate(() => window.__meristem?.ready);
+    expect(await openOver(page, 'tree.lpy', TREE.replace('derivation length: 5', 'derivation length: 4'))).toBe('ok');
+    expect(await noticeText(page)).toMatch(/^Imported tree\.lpy from L-Py, run by Python \(4 steps/);
+    expect(problems).toEqual([]);
+    await context.close();
+  });
+});
