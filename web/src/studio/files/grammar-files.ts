@@ -18,7 +18,7 @@ export type OpenedFile =
       dialect: Dialect | null;
       /** What the importer could not translate, `line N: …` (or a note about the encoding). */
       notes: string[];
-      /** How it was read when not by the importer alone: `run by Python (12 steps, 1.4 s)`. */
+      /** What it was read from, when not by the importer alone: `L-Py, run by Python (12 steps, 1.4 s)`. */
       how?: string;
     }
   | { ok: false; error: string };

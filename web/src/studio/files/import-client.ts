@@ -11,8 +11,6 @@ import type { Notice } from '../page';
 import { runWorkerJob, type JobWorkerLike, type WorkerJob } from '../../build';
 import { openInPython, pagePython } from './python-opening';
 
-export { pagePython };
-
 /**
  * Page → import worker: the files a worker imports (one grammar file, or an object's files); with
  * `derived`, what Python derived (`result`: the runtime's JSON) for `main` among them, to be made
@@ -63,14 +61,14 @@ export function runImport(createWorker: () => ImportWorkerLike, request: ImportR
 
 /**
  * What reading a file uses: the worker to import in, the notice that shows the import, its time
- * limit, and the Python worker's client for models that Python runs (one for the page: Python
- * loads once).
+ * limit, and the Python worker's client for models that Python runs (default: the page's one,
+ * so that Python loads once).
  */
 export interface FileReadingParts {
   createWorker: () => ImportWorkerLike;
   notice: Notice;
   limitMs?: number;
-  python: () => PythonClient;
+  python?: () => PythonClient;
 }
 
 /** What the notice shows about an import (its topic, so that only its own notice is taken back). */
@@ -117,7 +115,7 @@ export async function importInWorker(files: ObjectFile[], name: string, parts: F
     case 'python':
       return openInPython(outcome.run, outcome.translated, name, {
         notice: parts.notice,
-        python: parts.python,
+        python: parts.python ?? pagePython,
         derive: (result, main, how) => importInWorker(files, name, parts, { result, main, how }),
       });
     case 'failed':

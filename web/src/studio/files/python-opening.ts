@@ -7,7 +7,7 @@
 // hand translation opens, with a note saying so.
 import { PythonClient, type PythonOutcome, type PythonRunRequest, type PythonState } from '../../python';
 import type { Notice } from '../page';
-import type { OpenedFile } from './grammar-files';
+import { dialectName, type OpenedFile } from './grammar-files';
 
 /** The notice's topic while Python loads or runs (only its own notice is taken back). */
 const PYTHON = 'python';
@@ -58,7 +58,8 @@ function openOutcome(outcome: PythonOutcome, translated: OpenedFile, path: strin
         return { ok: false, error: `Python stopped the model (${main}${where}): ${error?.message ?? 'no reason given'}; your text is as it was` };
       }
       const steps = `${result.steps} ${result.steps === 1 ? 'step' : 'steps'}`;
-      return parts.derive(outcome.json, path, `run by Python (${steps}, ${(millis / 1000).toFixed(1)} s)`);
+      const source = result.dialect === 'lpfg' ? 'lpfg' : dialectName('lpy');
+      return parts.derive(outcome.json, path, `${source}, run by Python (${steps}, ${(millis / 1000).toFixed(1)} s)`);
     }
     case 'stopped':
       return { ok: false, error: `you stopped Python while it ran ${name}; your text is as it was` };

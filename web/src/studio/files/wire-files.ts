@@ -34,12 +34,12 @@ export function createOpening(
       cannotKeep: els.cannotKeep,
       keeper: parts.keeper,
       readFile: async (file) => {
-        const { readGrammarFile, createImportWorker, pagePython } = await importClient();
-        return readGrammarFile(file, { createWorker: createImportWorker, notice, python: pagePython });
+        const { readGrammarFile, createImportWorker } = await importClient();
+        return readGrammarFile(file, { createWorker: createImportWorker, notice });
       },
       readFiles: async (files, name) => {
-        const { readObjectFiles, createImportWorker, pagePython } = await importClient();
-        return readObjectFiles(files, name, { createWorker: createImportWorker, notice, python: pagePython });
+        const { readObjectFiles, createImportWorker } = await importClient();
+        return readObjectFiles(files, name, { createWorker: createImportWorker, notice });
       },
       notice,
       forgetText: () => {
