@@ -27,8 +27,9 @@ export function pagePython(): PythonClient {
   return (shared ??= new PythonClient());
 }
 
-/** What the notice says in each state. */
-function stateMessage(state: PythonState, main: string): string {
+/** What the notice says in each state ('starting': until the worker says which). */
+function stateMessage(state: PythonState | 'starting', main: string): string {
+  if (state === 'starting') return `Starting Python for ${main}…`;
   return state === 'loading' ? 'Loading Python (about 12 MB, once)…' : `Running ${main} in Python…`;
 }
 
@@ -37,8 +38,8 @@ export async function openInPython(run: PythonRunRequest, translated: OpenedFile
   const { notice } = parts;
   const main = baseName(run.main);
   let job: { stop(): void } | undefined;
-  const show = (state: PythonState) => notice.show('info', stateMessage(state, main), [], PYTHON, [{ label: 'Stop', testid: 'python-stop', run: () => job?.stop() }]);
-  show('running');
+  const show = (state: PythonState | 'starting') => notice.show('info', stateMessage(state, main), [], PYTHON, [{ label: 'Stop', testid: 'python-stop', run: () => job?.stop() }]);
+  show('starting');
   const started = parts.python().run(run, show);
   job = started;
   const outcome = await started.done;
