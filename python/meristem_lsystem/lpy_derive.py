@@ -10,8 +10,10 @@ from __future__ import annotations
 import inspect
 import time
 
+_now = time.monotonic
+
 from .lpy_errors import LimitReached
-from .lpy_match import match_left, match_pred, match_right
+from .lpy_match import end_of_branch, match_left, match_pred, match_right
 from .lstring import Lstring, to_modules
 
 
@@ -21,13 +23,15 @@ def rule_table(rt, kind: str) -> dict:
     table = rt._tables.get(key)
     if table is None:
         table = {}
-        for rule in rt.all_rules:
-            if rule.spec.kind == kind and rule.group in (0, rt.group):
-                table.setdefault(rule.first, []).append(rule)
+        # L-Py's __getRules: the group's rules, then group 0's, each in the file's order
+        order = lambda r: (r.group != rt.group, r.order)
+        chosen = sorted((r for r in rt.all_rules if r.spec.kind == kind and r.group in (0, rt.group)), key=order)
+        for rule in chosen:
+            table.setdefault(rule.first, []).append(rule)
         stars = table.pop("*", [])
         if stars:
             for name, rules in table.items():
-                table[name] = sorted(rules + stars, key=lambda r: r.order)
+                table[name] = sorted(rules + stars, key=order)
         table["*"] = stars
         rt._tables[key] = table
     return table
@@ -35,6 +39,32 @@ def rule_table(rt, kind: str) -> dict:
 
 def try_rule(rt, rule, s, i, new, forward: bool):
     """(modules, length) when `rule` rewrites at `i` (forwards: starts there; backwards: ends)."""
+    if rule.simple:
+        args = s[i].args
+        if len(args) != rule.nargs:
+            return None
+        length = 1
+    else:
+        got = match_rule(rt, rule, s, i, new, forward)
+        if got is None:
+            return None
+        args, length = got
+    if _now() > rt.deadline:
+        raise LimitReached(f"the derivation passed the time limit ({rt.options.get('time_limit', 50)} s)")
+    buffered = rt.nbuf
+    buffered.clear()
+    result = rule.func(*args)
+    if result is None:
+        if not buffered:
+            return None
+        return buffered[:], length
+    if type(result) is not list:
+        result = to_modules(result)
+    return (buffered + result if buffered else result), length
+
+
+def match_rule(rt, rule, s, i, new, forward: bool):
+    """(bound parameters, predecessor length) when the rule's patterns match at `i`."""
     args: list = []
     start = i if forward else i - len(rule.pred) + 1
     if start < 0:
@@ -52,47 +82,52 @@ def try_rule(rt, rule, s, i, new, forward: bool):
         return None
     if rule.right and not match_right(rule.right, 0, s, end, args, filt):
         return None
-    if time.monotonic() > rt.deadline:
-        raise LimitReached(f"the derivation passed the time limit ({rt.options.get('time_limit', 50)} s)")
-    rt.nbuf = []
-    result = rule.func(*args)
-    buffered = rt.nbuf
-    rt.nbuf = []
-    if result is None:
-        if not buffered:
-            return None
-        return buffered, length
-    if type(result) is not list:
-        result = to_modules(result)
-    return (buffered + result if buffered else result), length
+    return args, length
 
 
-def rewrite(rt, s: list, kind: str) -> tuple[list, bool]:
-    """One parallel rewriting of `s` by the rules of `kind`; (new string, whether any applied)."""
+def rewrite(rt, s: list, kind: str, depth: int = 1) -> tuple[list, bool]:
+    """One parallel rewriting of `s` by the rules of `kind`; (new string, whether any applied).
+
+    With `depth` > 1 what a rule produced is rewritten again, alone, up to `depth` times
+    (L-Py's `maximum depth` of decomposition and interpretation). `%` cuts its branch."""
     table = rule_table(rt, kind)
     stars = table["*"]
-    if len(table) == 1 and not stars:
+    if type(s) is not list:
+        s = list(s)
+    if len(table) == 1 and not stars and "%" not in table:
         return s, False
+    if not rt.forward_dir:
+        return rewrite_backward(rt, s, table)
     applied = False
     n = len(s)
-    if rt.forward_dir:
-        out: list = []
-        i = 0
-        while i < n:
-            m = s[i]
-            for rule in table.get(m.name, stars):
-                got = try_rule(rt, rule, s, i, out, True)
-                if got is not None:
-                    out.extend(got[0])
-                    i += got[1]
-                    applied = True
-                    break
-            else:
-                out.append(m)
-                i += 1
-        return out, applied
+    out: list = []
+    i = 0
+    while i < n:
+        m = s[i]
+        if m.name == "%":
+            i = end_of_branch(s, i + 1)
+            continue
+        for rule in table.get(m.name, stars):
+            got = try_rule(rt, rule, s, i, out, True)
+            if got is not None:
+                produced = got[0]
+                if depth > 1 and produced:
+                    produced, _ = rewrite(rt, produced, kind, depth - 1)
+                out.extend(produced)
+                i += got[1]
+                applied = True
+                break
+        else:
+            out.append(m)
+            i += 1
+    return out, applied
+
+
+def rewrite_backward(rt, s: list, table) -> tuple[list, bool]:
+    """The same from the string's end (after `backward()`): predecessors end at the module."""
+    applied = False
     chunks: list = []
-    i = n - 1
+    i = len(s) - 1
     while i >= 0:
         m = s[i]
         for rule in candidates(rt, table, m.name):
@@ -117,7 +152,7 @@ def candidates(rt, table, name):
     got = rt._tables.get(key)
     if got is None:
         every = {id(r): r for rules in table.values() for r in rules}.values()
-        got = sorted((r for r in every if r.pred[-1].name in (name, "*")), key=lambda r: r.order)
+        got = sorted((r for r in every if r.pred[-1].name in (name, "*")), key=lambda r: (r.group != rt.group, r.order))
         rt._tables[key] = got
     return got
 
@@ -127,13 +162,10 @@ def max_depth(rt, kind: str) -> int:
     return max(1, int(value))
 
 
-def decompose(rt, s: list, kind: str) -> list:
-    for _ in range(max_depth(rt, kind)):
-        s, applied = rewrite(rt, s, kind)
-        if not applied:
-            break
-        check_size(rt, s)
-    return s
+def decompose(rt, s: list, kind: str) -> tuple[list, bool]:
+    s, applied = rewrite(rt, s, kind, max_depth(rt, kind))
+    check_size(rt, s)
+    return s, applied
 
 
 def check_size(rt, s):
@@ -161,31 +193,37 @@ def derive(rt) -> Lstring:
 
 
 def derive_from(rt, s, start: int, steps: int) -> Lstring:
-    call_hook(rt, "Start", s)
+    """L-Py's `__derive`: the loop ends early when no rule applies (`End` then is not called)."""
+    if start == 0:
+        rt.iteration = 0
+        call_hook(rt, "Start", s)
     done = 0
-    for it in range(start, start + steps):
+    has_rules = bool(rt.all_rules)
+    for it in range(start, start + steps if has_rules and s else start):
         rt.iteration = it
         call_hook(rt, "StartEach", s)
-        s, _ = rewrite(rt, s, "production")
+        s, matched = rewrite(rt, s, "production")
         check_size(rt, s)
-        s = decompose(rt, s, "decomposition")
+        s, decomposed = decompose(rt, s, "decomposition")
         s = Lstring(s)
         replaced = call_hook(rt, "EndEach", s)
         if replaced is not None:
             s = replaced
-        done = it + 1
-        if rt.stop_requested:
+        done = it + 1 - start
+        if rt.stop_requested or not (matched or decomposed):
             break
     rt.steps_done = done
-    replaced = call_hook(rt, "End", s)
-    if replaced is not None:
-        s = replaced
+    if start + done == start + steps or not has_rules:
+        rt.iteration = start + steps
+        replaced = call_hook(rt, "End", s)
+        if replaced is not None:
+            s = replaced
     return Lstring(s)
 
 
 def interpret(rt, s) -> Lstring:
     saved = rt.forward_dir
     rt.forward_dir = True
-    s = decompose(rt, list(s), "interpretation")
+    s, _ = decompose(rt, list(s), "interpretation")
     rt.forward_dir = saved
     return Lstring(s)

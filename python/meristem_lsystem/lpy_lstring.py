@@ -141,9 +141,11 @@ def to_python(text: str, names: NameTable, line: int = 0) -> str:
         if m.name == "$":
             raise LpySyntaxError("'$' (GetModule) is not supported in successors", line)
         args = m.args or ""
-        if m.name == "*":
-            # `*(name, args…)`: a module whose name is computed
-            items.append(f"__Mstar({args})")
+        if m.name in ("*", "new"):
+            # `*(name, args…)` / `new(name, args…)`: a module whose name is computed;
+            # a bare `*` produces nothing (L-Py: `produce *` erases the module)
+            if args.strip():
+                items.append(f"__Mstar({args})")
             continue
         if m.surface is not None:
             args = repr(m.surface) + ("," + args if args.strip() else "")

@@ -44,6 +44,11 @@ class Pattern:
             kind, value = specs[k]
             if kind == "var":
                 out.append(args[k])
+            elif kind == "cond":
+                if not value(args[k]):
+                    del out[mark:]
+                    return False
+                out.append(args[k])
             elif args[k] != value:
                 del out[mark:]
                 return False

@@ -18,21 +18,25 @@ from .lpy_errors import LimitReached, ModelError, from_exception
 from .lpy_lstring import LpySyntaxError
 from .lpy_match import ContextFilter, Pattern, match_left, match_pred, match_right
 from .lpy_source import translate
-from .lstring import Lstring, Module, predefined_names, to_modules
+from .lstring import Lstring, Module, StringReader, make_module, predefined_names, to_modules
 from . import plantgl_modules
 
 
 class Rule:
     __slots__ = ("spec", "func", "order", "pred", "left", "right", "new_left", "new_right",
-                 "first", "group")
+                 "first", "group", "simple", "nargs")
 
     def __init__(self, spec, func, order, consts):
         self.spec, self.func, self.order, self.group = spec, func, order, spec.group
-        compile_ = lambda pats: [Pattern(p.name, [(k, consts(v) if k == "const" else v)
-                                                  for k, v in p.specs]) for p in pats]
+        compile_ = lambda pats: [Pattern(p.name, [(k, consts(k, v)) for k, v in p.specs]) for p in pats]
         self.pred, self.left, self.right = compile_(spec.pred), compile_(spec.left), compile_(spec.right)
         self.new_left, self.new_right = compile_(spec.new_left), compile_(spec.new_right)
         self.first = self.pred[0].name
+        # one predecessor module, plain parameters, no context: matched by a length test
+        only = self.pred[0]
+        self.nargs = only.nfixed
+        self.simple = (len(self.pred) == 1 and not (self.left or self.right or self.new_left or self.new_right)
+                       and only.name != "*" and all(k == "var" for k, _ in only.specs))
 
 
 class LpyRuntime:
@@ -73,10 +77,10 @@ class LpyRuntime:
             rt.nbuf.extend(to_modules(value))
 
         return {
-            "__M": Module, "__Mstar": lambda name, *args: Module(name, list(args)),
+            "__M": make_module, "__Mstar": lambda name, *args: Module(name, list(args)),
             "__produce": lambda mods: mods, "__nproduce": rt.nbuf_extend,
             "nsproduce": nproduce, "pproduce": nproduce,
-            "getIterationNb": lambda: rt.iteration, "Stop": rt.stop, "stop": rt.stop,
+            "getIterationNb": lambda: rt.iteration, "execContext": lambda: rt.context, "Stop": rt.stop, "stop": rt.stop,
             "forward": lambda: rt.set_direction(True), "backward": lambda: rt.set_direction(False),
             "isForward": lambda: rt.forward_dir, "useGroup": rt.use_group,
             "getGroup": lambda: rt.group, "context": lambda: rt.context,
@@ -85,8 +89,22 @@ class LpyRuntime:
             "getDerivationLength": lambda: rt.derivation_length,
         }
 
+    def read_string(self, text: str) -> list:
+        """A module string given as text while the model runs: its parameters are evaluated
+        in the model's namespace (they are the model's own expressions)."""
+        from .lpy_lstring import to_python
+
+        return eval(to_python(text, self.source.names), self.namespace)
+
     def nbuf_extend(self, mods):
         self.nbuf.extend(mods)
+
+    def axiom_value(self, ax):
+        self.nbuf.clear()
+        value = ax()
+        got = self.nbuf + (to_modules(value) if value is not None else [])
+        self.nbuf.clear()
+        return got
 
     def stop(self):
         self.stop_requested = True
@@ -110,6 +128,7 @@ class LpyRuntime:
         except LpySyntaxError as e:
             raise ModelError(f"SyntaxError: {e.message}", e.line, e.column) from None
         src = self.source
+        StringReader.current = self.read_string
         Module.named.update({name: {p: i for i, p in enumerate(params)}
                              for name, params in src.declared.items() if params})
         ns = self.namespace
@@ -135,7 +154,14 @@ class LpyRuntime:
             raise from_exception(e, self.filename) from None
 
     def _build_rules(self):
-        consts = lambda text: eval(text, self.namespace)  # the model's own expression
+        def consts(kind, value):
+            # the model's own expressions: a constant, or a test on a parameter
+            if kind == "const":
+                return eval(value, self.namespace)
+            if kind == "cond":
+                return eval(f"lambda {value[0]}: {value[1]}", self.namespace)
+            return value
+
         self.all_rules = []
         for order, spec in enumerate(self.source.rules):
             self.all_rules.append(Rule(spec, self.namespace[spec.function], order, consts))
@@ -151,8 +177,5 @@ class LpyRuntime:
     def axiom(self) -> Lstring:
         ax = self.namespace.get("__axiom__", [])
         if callable(ax):
-            self.nbuf = []
-            value = ax()
-            ax = self.nbuf + (to_modules(value) if value is not None else [])
-            self.nbuf = []
+            ax = self.axiom_value(ax)
         return Lstring(to_modules(ax))

@@ -18,6 +18,8 @@ RULE_KINDS = {"production": "production", "decomposition": "decomposition",
               "interpretation": "interpretation", "homomorphism": "interpretation"}
 CODE_STARTS = ("def ", "class ", "import ", "from ", "@", "global ", "if ", "for ", "while ",
                "try:", "with ", "print(", "print ")
+PRINT2 = re.compile(r"(\s*)print\s+([^(\s=].*?)\s*$")
+COND = re.compile(r"([A-Za-z_][A-Za-z0-9_]*)\s*(==|!=|<=|>=|<|>|\bin\b|\bnot\s+in\b|\bis\b)")
 IDENT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\Z")
 
 
@@ -53,7 +55,7 @@ class LpySource:
     notes: list[dict] = field(default_factory=list)
 
 
-def find_top(text: str, token: str, start: int = 0) -> int:
+def find_top(text: str, token: str, start: int = 0, opening: str = "([{", closing: str = ")]}") -> int:
     """Index of `token` outside strings, comments and brackets, or -1."""
     depth, j = 0, start
     while j < len(text):
@@ -63,9 +65,9 @@ def find_top(text: str, token: str, start: int = 0) -> int:
             continue
         if c == "#":
             return -1
-        if c in "([{":
+        if c in opening:
             depth += 1
-        elif c in ")]}":
+        elif c in closing:
             depth -= 1
         elif depth == 0 and text.startswith(token, j):
             return j
@@ -103,6 +105,9 @@ def pattern(text: str, names: NameTable, line: int) -> list[PatternModule]:
                 specs.append(("var", arg))
             elif arg.startswith("*") and IDENT.match(arg.lstrip("*")):
                 specs.append(("star", arg.lstrip("*")))
+            elif COND.match(arg):
+                name, test = COND.match(arg).groups()
+                specs.append(("cond", (name, arg)))
             else:
                 specs.append(("const", arg))
         out.append(PatternModule(m.name, specs))
@@ -150,7 +155,7 @@ def rule_params(spec: RuleSpec) -> list[str]:
     params = []
     for part in (spec.left, spec.new_left, spec.pred, spec.new_right, spec.right):
         for pm in part:
-            params.extend(v for k, v in pm.specs if k != "const")
+            params.extend(v[0] if k == "cond" else v for k, v in pm.specs if k != "const")
     return params
 
 
@@ -229,6 +234,8 @@ def translate(text: str, predefined: dict[str, str]) -> LpySource:
     mode, kind, group, body = "code", "production", 0, None
     in_triple = None
     for no, line in enumerate(lines, 1):
+        if "print" in line:
+            line = python2_print(line)
         stripped = line.strip()
         if in_triple:
             out.append(line)
@@ -250,14 +257,15 @@ def translate(text: str, predefined: dict[str, str]) -> LpySource:
         if depth is not None:
             out.append(f"__maximum_depth_{kind}__ = {depth.strip()}")
             continue
-        handled = section_line(line, no, src, out, names)
+        following = next((l for l in lines[no:] if l.strip() and not l.strip().startswith("#")), "")
+        handled = section_line(line, no, src, out, names, following[:1] in (" ", "\t"))
         if handled is not None:
             new_mode, kind_or_none, group_or_none, body = handled
             mode = new_mode or mode
             kind = kind_or_none or kind
             group = group if group_or_none is None else group_or_none
             continue
-        if mode == "rules" and not line.startswith(CODE_STARTS) and not re.match(r"[A-Za-z_][\w.]*\s*(\[.*\])?\s*[-+*/]?=[^=]", line):
+        if mode == "rules" and is_rule_header(line) and not re.match(r"[A-Za-z_][\w.]*\s*(\[.*\])?\s*[-+*/]?=[^=]", line):
             out.append(rule_line(line, no, src, kind, group))
             body = "rule"
             continue
@@ -270,12 +278,32 @@ def translate(text: str, predefined: dict[str, str]) -> LpySource:
     return src
 
 
-def section_line(line, no, src: LpySource, out, names):
+def is_rule_header(line: str) -> bool:
+    """In a rules section, a line at column 0 is a rule unless it is plain Python."""
+    if find_top(line, "-->", 0, "(", ")") >= 0 or find_top(line, "-static->", 0, "(", ")") >= 0:
+        return True
+    if line.startswith("@"):
+        return line.rstrip().endswith(":") or find_top(line, ":", 0, "(", ")") >= 0
+    if line.startswith(CODE_STARTS):
+        return False
+    return not re.match(r"[A-Za-z_][\w.]*\s*(\[.*\])?\s*[-+*/]?=[^=]", line)
+
+
+def python2_print(line: str) -> str:
+    """`print x, y` (Python 2, in older models) → `print(x, y)`."""
+    m = PRINT2.match(line)
+    return f"{m.group(1)}print({m.group(2)})" if m else line
+
+
+def section_line(line, no, src: LpySource, out, names, indented_next: bool = False):
     """A section keyword at column 0: its Python line, and (mode, kind, group, body) or None."""
     rest = keyword(line, "Axiom", "axiom")
     if rest is not None:
         if rest.strip() and not rest.strip().startswith("#"):
             out.append(f"__axiom__ = {to_python(rest, names, no)}")
+            return None, None, None, None
+        if not indented_next:
+            out.append("__axiom__ = []")
             return None, None, None, None
         out.append("def __axiom__():")
         return None, None, None, "axiom"
@@ -312,11 +340,11 @@ def section_line(line, no, src: LpySource, out, names):
 
 
 def rule_line(line: str, no: int, src: LpySource, kind: str, group: int) -> str:
-    arrow, width, static = find_top(line, "-->"), 3, False
+    arrow, width, static = find_top(line, "-->", 0, "(", ")"), 3, False
     if arrow < 0:
-        arrow = find_top(line, "-static->")
+        arrow = find_top(line, "-static->", 0, "(", ")")
         width, static = 9, arrow >= 0
-    colon = find_top(line, ":")
+    colon = find_top(line, ":", 0, "(", ")")
     if arrow < 0 and colon < 0:
         raise LpySyntaxError("a rule needs '-->' or ':' after its predecessor", no, 1)
     cut = arrow if arrow >= 0 and (colon < 0 or arrow < colon) else colon
@@ -333,6 +361,9 @@ def rule_line(line: str, no: int, src: LpySource, kind: str, group: int) -> str:
         succ = line[arrow + width :]
         return f"{head} return __produce({to_python(succ, src.names, no)})"
     rest = line[colon + 1 :]
+    if rest.strip().startswith("@static"):
+        rest = rest.replace("@static", "", 1)
+        spec.static = True
     if rest.strip() and not rest.strip().startswith("#"):
         return head + " " + transform_code(rest, src.names, no, True)
     return head

@@ -34,7 +34,7 @@ PREDEFINED = [
 
 # Names that are only meaningful in patterns or string manipulation, never declared by default
 # as drawable modules of a user string (`x`, `or`, `new` are reserved in patterns only).
-PATTERN_ONLY = {"x", "or", "new", "=]", "?I", "$", "*"}
+PATTERN_ONLY = {"x", "or", "=]", "?I", "$"}
 
 
 def predefined_names() -> dict[str, str]:
@@ -135,8 +135,26 @@ class Module:
         return Module(self.name, copy.deepcopy(self.args, memo))
 
 
+_new_module = object.__new__
+_set_name = Module.name.__set__
+_set_args = Module.args.__set__
+
+
+def make_module(name: str, args: list) -> Module:
+    """The fast constructor the translated rules call (`__M`)."""
+    m = _new_module(Module)
+    _set_name(m, name)
+    _set_args(m, args)
+    return m
+
+
 class Lstring(list):
     """A string of modules, with the `AxialTree` navigation models use."""
+
+    def __init__(self, value=()):
+        if isinstance(value, (str, Module)) or (type(value) is not list and not isinstance(value, Lstring)):
+            value = to_modules(value)
+        list.__init__(self, value)
 
     def __getitem__(self, i):
         got = list.__getitem__(self, i)
@@ -218,14 +236,20 @@ class Lstring(list):
 AxialTree = Lstring
 
 
+class StringReader:
+    """Reads module strings given as text at run time (`Lstring("F(1)A")`): set by the run."""
+
+    current = None
+
+
 def to_modules(value) -> list:
     """A production's value (Lstring, list of modules/names/tuples, a string) as modules."""
     if isinstance(value, Module):
         return [value]
     if isinstance(value, str):
-        from .lpy_source import parse_lstring_value
-
-        return parse_lstring_value(value)
+        if StringReader.current is None:
+            raise TypeError("a string of modules outside a model run")
+        return StringReader.current(value)
     out = []
     for item in value:
         if isinstance(item, Module):
@@ -273,6 +297,11 @@ class ObjectTable:
 
 
 def format_arg(v) -> str:
+    t = type(v)
+    if t is float:
+        return repr(v) if v - v == 0 else "0"
+    if t is int:
+        return repr(v)
     if isinstance(v, (bool, int, float)):
         return format_number(v)
     if isinstance(v, str):
@@ -302,16 +331,22 @@ def format_module(m: Module) -> str:
     return f"{m.name}({','.join(format_arg(a) for a in args)})"
 
 
+def _is_word_char(c: str) -> bool:
+    return c.isalnum() or c == "_"
+
+
 def format_lstring(modules) -> str:
+    """Modules in L-Py's syntax; a blank separates two names that would otherwise fuse."""
     out = []
-    prev_ident = False
+    prev_word = 0  # length of the previous name when it could fuse with the next one
     for m in modules:
-        text = format_module(m)
-        ident = m.name[-1:].isalnum() or m.name[-1:] == "_"
-        if prev_ident and not m.args and (text[:1].isalnum() or text[:1] == "_"):
-            out.append(" ")
-        elif prev_ident and (text[:1].isalnum() or text[:1] == "_"):
+        name, args = m.name, m.args
+        if args:
+            text = format_module(m)
+        else:
+            text = name
+        if prev_word and _is_word_char(text[0]) and (len(name) > 1 or prev_word > 1):
             out.append(" ")
         out.append(text)
-        prev_ident = ident and not m.args
+        prev_word = len(name) if not args and _is_word_char(name[-1]) else 0
     return "".join(out)

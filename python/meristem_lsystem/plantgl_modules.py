@@ -67,6 +67,7 @@ def plantgl_names() -> dict:
     names["Matrix3"].IDENTITY = names["Matrix3"]()
     names["Matrix4"].IDENTITY = names["Matrix4"]()
     names["Color3"] = pmath.Color3
+    names.update(eStatic=0, eAnimatedPrimitives=1, eAnimatedScene=2)
     return names
 
 

@@ -7,6 +7,8 @@ endless loop; in Pyodide the worker running it is the last resort."""
 
 from __future__ import annotations
 
+import contextlib
+import io
 import random
 import signal
 import threading
@@ -15,6 +17,7 @@ import time
 from .lpy_errors import LimitReached, ModelError, from_exception
 from .lstring import ObjectTable, format_lstring
 
+MAX_OUTPUT = 20_000  # characters of what the model printed, kept in result["output"]
 DEFAULTS = {"steps": None, "seed": 0, "max_modules": 2_000_000, "time_limit": 50.0}
 
 
@@ -45,8 +48,12 @@ def run(files: dict, main: str, options: dict | None = None) -> dict:
         result = empty_result(dialect)
         result["error"] = {"line": 0, "column": 0, "message": f"no file named {main!r}"}
         return result
-    with Alarm(float(options["time_limit"]) + 2.0):
-        return runner(files, main, options)
+    printed = io.StringIO()
+    with Alarm(float(options["time_limit"]) + 2.0), contextlib.redirect_stdout(printed):
+        result = runner(files, main, options)
+    text = printed.getvalue()
+    result["output"] = text if len(text) <= MAX_OUTPUT else text[:MAX_OUTPUT] + "\n…"
+    return result
 
 
 class Alarm:
