@@ -10,8 +10,8 @@
 
 use super::vlab::ObjectFile;
 use super::{import, import_files, number, Dialect, Import, ImportNote};
+use crate::diagnostics::has_errors;
 use crate::syntax::PARENTHESES;
-use crate::BuildOptions;
 use serde::Deserialize;
 
 /// The result of `meristem_lsystem.run` (its JSON), as far as Meristem reads it.
@@ -160,11 +160,14 @@ pub fn import_derived(result_json: &str, main: &str, files: &[ObjectFile], seed:
 /// The derived import's header, colours and notes.
 fn finish(imported: Import, run: &DerivedRun, scanned: &Scanned, main: &str, seed: u64) -> Import {
     let name = base(main);
+    let steps = match run.steps {
+        1 => "1 step".to_string(),
+        n => format!("{n} steps"),
+    };
     let mut text = format!(
-        "// Derived by Python from {name} in {} steps, with seed {seed} (meristem_lsystem).\n\
+        "// Derived by Python from {name} in {steps}, with seed {seed} (meristem_lsystem).\n\
          // This is the plant's final string, not its rules: to change the rules, edit {name}\n\
-         // and open it again.\n",
-        run.steps
+         // and open it again.\n"
     );
     for m in &run.materials {
         let declared = format!("#color {} ", m.index);
@@ -219,16 +222,40 @@ pub fn prefer_derived(translation: Import, derived: Import) -> Import {
     kept
 }
 
+/// How many steps [`needs_python`] derives, at most, to see whether a translation draws.
+const STEPS_TO_SEE_A_PLANT: u32 = 3;
+
+/// The most modules [`needs_python`] derives to see whether a translation draws.
+const MODULES_TO_SEE_A_PLANT: usize = 200_000;
+
 /// Whether a hand translation falls short, so that the model is better run by Python: it has
-/// no axiom, carries a note (something dropped or approximated), or builds no plant (no segment
-/// and no triangle). Whether Python can run the files at all is
+/// no axiom, carries a note (something dropped or approximated), or draws nothing (no segment
+/// and no triangle) in its first steps (at most [`STEPS_TO_SEE_A_PLANT`]: a translation that
+/// explodes later is not derived twice). Whether Python can run the files at all is
 /// [`crate::import::python_main`]'s answer.
 pub fn needs_python(translation: &Import) -> bool {
     if translation.is_empty() || !translation.notes.is_empty() {
         return true;
     }
-    let build = crate::pipeline::build(&translation.text, &BuildOptions::default());
-    !build.ok() || build.plant.stats.segments + build.plant.stats.triangles == 0
+    let (file, diagnostics) = crate::syntax::parse(&translation.text);
+    let (model, more) = crate::model::resolve(&file);
+    let errors = has_errors(&diagnostics) || has_errors(&more);
+    let Some(mut model) = model.filter(|_| !errors) else {
+        return true;
+    };
+    model.settings.max_modules = model.settings.max_modules.min(MODULES_TO_SEE_A_PLANT);
+    let options = crate::derive::DeriveOptions {
+        steps: model.settings.iterations.min(STEPS_TO_SEE_A_PLANT),
+        ..Default::default()
+    };
+    let Ok(derivation) = crate::derive::derive(&model, &options) else {
+        return true;
+    };
+    let skeleton = crate::turtle::interpret(&model, derivation.turtle_string());
+    skeleton.segments.is_empty()
+        && skeleton.polygons.is_empty()
+        && skeleton.surfaces.is_empty()
+        && skeleton.spheres.is_empty()
 }
 
 /// The last part of a path.
@@ -272,7 +299,13 @@ fn scan(lstring: &str, drop_empty: bool) -> Scanned {
                 .rev()
                 .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
                 .collect();
-            tail.into_iter().rev().collect()
+            let start = s.text.len() - tail.len();
+            // L-Py's `@L`, `~l`: the sign is part of the name.
+            let sign = s.text[boundary..start]
+                .chars()
+                .next_back()
+                .filter(|c| "@~".contains(*c));
+            sign.into_iter().chain(tail.into_iter().rev()).collect()
         };
         let args: Option<Vec<String>> = if inner.trim().is_empty() {
             Some(Vec::new())
@@ -353,7 +386,9 @@ fn lpfg_text(source: &str, scanned: &Scanned) -> String {
     }
     for (name, count) in &scanned.modules {
         let known = declared.contains(name) || LPFG_PREDEFINED.contains(&name.as_str());
-        if name.len() > 1 && !known && !name.starts_with(|c: char| c.is_ascii_digit()) {
+        let identifier = name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+            && !name.starts_with(|c: char| c.is_ascii_digit());
+        if name.len() > 1 && !known && identifier {
             let params = vec!["float"; *count].join(", ");
             text.push_str(&format!("module {name}({params});\n"));
             declared.push(name.clone());
@@ -368,5 +403,4 @@ fn lpfg_text(source: &str, scanned: &Scanned) -> String {
 }
 
 #[cfg(test)]
-#[path = "derived_tests.rs"]
 mod tests;

@@ -28,8 +28,13 @@
 //! `--edits` applies branch edits (the studio's edits document, docs/LANGUAGE.md) to the plant
 //! before its stats or its export; an edit whose branch no longer exists is a warning.
 //!
+//! `derive`, `check`, `export` and `lineage` read an L-Py `.lpy`, a `.l` or a vlab object (folder
+//! or `.zip`) as `import` gives it. An L-Py or lpfg model whose translation falls short is run by
+//! the machine's Python (`python`; `MERISTEM_PYTHON`, `MERISTEM_PYTHON_TIMEOUT`).
+//!
 //! The files: `args` (the flags read, and where `export` writes), `input` (the grammar and edits
-//! files read), `build` (`derive`, `check` and `export`), `import` and `help`; this one wires them.
+//! files read), `build` (`derive`, `check` and `export`), `import` and `help`, `python` (a model
+//! run by Python); this one wires them.
 
 mod args;
 mod build;
@@ -37,13 +42,14 @@ mod frames;
 mod help;
 mod import;
 mod input;
+mod python;
 mod raster;
 
 use args::{export_target, parse_args};
 use build::{derive_or_check, export_file, print_lineage};
 use frames::{at_as_picture, export_frames};
 use help::help;
-use import::{import_file, import_object, is_object};
+use import::{foreign_source, import_file, import_object, is_object};
 use input::{read_edits, read_source};
 use meristem::mesh::MeshOptions;
 use meristem::pipeline::Hooks;
@@ -110,7 +116,11 @@ fn main() -> ExitCode {
     if args.verb == "import" && is_object(&args.file) {
         return import_object(&args);
     }
-    let source = match read_source(&args) {
+    // An .lpy, a .l or a vlab object: translated, or run by Python, first.
+    let foreign = (args.verb != "import")
+        .then(|| foreign_source(&args))
+        .flatten();
+    let source = match foreign.unwrap_or_else(|| read_source(&args)) {
         Ok(source) => source,
         Err(code) => return code,
     };

@@ -8,7 +8,7 @@ fn file(name: &str, text: &str) -> ObjectFile {
 }
 
 fn stats(text: &str) -> crate::export::Stats {
-    let build = crate::pipeline::build(text, &BuildOptions::default());
+    let build = crate::pipeline::build(text, &crate::BuildOptions::default());
     assert!(build.ok(), "{text}\n{:?}", build.diagnostics);
     build.plant.stats.clone()
 }

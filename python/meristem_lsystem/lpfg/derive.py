@@ -1,0 +1,258 @@
+"""lpfg's derivation of a read model: `Start:`, the axiom, per step `StartEach:`, one parallel
+rewriting (forward or, after `Backward()`, from the right end, so `>>` sees the new string),
+decomposition to its maximum depth, `EndEach:`; then `End:` and interpretation to its maximum
+depth. A production whose body ends without `produce` does not apply, and the next one is
+tried (the current group's first, then group 0's). Modules are tuples `(name, args)`.
+"""
+
+from .lexer import LpfgError
+from .matching import Reversed, Skipper, match_left, match_right, match_right_end, match_strict
+from .runtime import StopDerivation, _int, _val
+
+# lpfg's own modules whose parameters are floats (SetColor's are ints: it is left as written).
+PREDEFINED_FLOATS = {
+    "F", "f", "Left", "Right", "Up", "Down", "RollL", "RollR", "SetWidth", "Sphere", "Circle",
+    "Surface", "MoveTo", "MoveRel", "Line", "LineTo", "LineRel", "Cylinder", "Rhombus",
+    "Triangle", "SetHead", "Sphere0", "Circle0", "Elasticity", "SetElasticity", "TropismDirection",
+    "CurveScale", "Orient", "Label2D",
+}
+COERCE = {"int": _int, "float": float, "bool": lambda v: 1 if v else 0}
+
+
+class Engine:
+    def __init__(self, model, namespace, runtime, max_modules):
+        self.model = model
+        self.ns = namespace
+        self.rt = runtime
+        self.max_modules = max_modules
+        self.skipper = Skipper(model.ignore, model.consider)
+        self.forward_index = {}  # (group, first name) -> productions
+        self.backward_index = {}  # (group, last name) -> productions
+        self.rules = {"decomposition": {}, "interpretation": {}}
+        for p in model.productions:
+            p.call = namespace[p.func]
+            if p.section == "production":
+                self.forward_index.setdefault((p.group, p.pred[0][0]), []).append(p)
+                self.backward_index.setdefault((p.group, p.pred[-1][0]), []).append(p)
+            else:
+                self.rules[p.section].setdefault(p.pred[0][0], []).append(p)
+        self.coercers = {name: None for name in PREDEFINED_FLOATS}
+        for name, types in model.modules.items():
+            self.coercers[name] = [COERCE.get(t, _val) for t in types]
+        self.current_line = 0
+        self.where = None
+        self.context_state = {}
+        namespace["_in_context"] = self.in_context
+
+    # --- one production ---------------------------------------------------------------------
+    def fire(self, p, args, where=None):
+        """The successor of `p` with `args`, or None when its body produced nothing. `where`
+        is (string, start, new string so far, new string to the right reversed), for the
+        body's `InRightContext` and kin."""
+        self.rt.tick()
+        self.where = where
+        self.context_state = {}
+        self.current_line = self.rt.line = p.line
+        self.rt.buffer = []
+        if p.call(*args) is not True:
+            return None
+        out = self.rt.buffer
+        return self.coerce(out)
+
+    def coerce(self, out):
+        """Parameters as the module's declaration types them (lpfg's own modules take floats)."""
+        coercers = self.coercers
+        for k, m in enumerate(out):
+            name = m[0]
+            if name not in coercers:
+                continue
+            c = coercers[name]
+            if c is None:
+                out[k] = (name, tuple(float(a) if type(a) is int else a for a in m[1]))
+            elif len(c) == len(m[1]):
+                out[k] = (name, tuple(f(a) for f, a in zip(c, m[1])))
+        return out
+
+    def candidates(self, index, name):
+        group = self.rt.group
+        found = index.get((group, name), [])
+        if group != 0:
+            found = found + index.get((0, name), [])
+        return found
+
+    def in_context(self, side, new, key, pattern):
+        """The parameters of `pattern` beside the predecessor being rewritten, or None."""
+        if self.where is None:
+            return None
+        s, start, p, out, out_rev = self.where
+        pattern = [tuple(x) for x in pattern]
+        if side == "left":
+            if new:
+                return None if out is None else match_left(out, len(out), pattern, self.skipper)
+            return match_left(s, start, pattern, self.skipper)
+        if new:
+            if out_rev is None:
+                return None
+            seq, j = Reversed(out_rev), 0
+        else:
+            seq, j = s, start + len(p.pred)
+        j = self.context_state.get(key, j)
+        found = match_right_end(seq, j, pattern, self.skipper)
+        if found is None:
+            return None
+        if pattern[0][0] == "SB":  # called again, the next branch
+            self.context_state[key] = found[1]
+        return found[0]
+
+    # --- a derivation step ------------------------------------------------------------------
+    def step(self, s):
+        if self.rt.direction == "backward":
+            return self.step_backward(s)
+        out = []
+        i, n = 0, len(s)
+        while i < n:
+            width = 0
+            for p in self.candidates(self.forward_index, s[i][0]):
+                args = self.match(p, s, i, out, None)
+                if args is None:
+                    continue
+                result = self.fire(p, args, (s, i, p, out, None))
+                if result is not None:
+                    out.extend(result)
+                    width = len(p.pred)
+                    break
+            if width:
+                i += width
+            else:
+                out.append(s[i])
+                i += 1
+        return out
+
+    def step_backward(self, s):
+        out_rev = []
+        i = len(s) - 1
+        while i >= 0:
+            width = 0
+            for p in self.candidates(self.backward_index, s[i][0]):
+                args = self.match(p, s, i - len(p.pred) + 1, None, out_rev)
+                if args is None:
+                    continue
+                result = self.fire(p, args, (s, i - len(p.pred) + 1, p, None, out_rev))
+                if result is not None:
+                    out_rev.extend(reversed(result))
+                    width = len(p.pred)
+                    break
+            if width:
+                i -= width
+            else:
+                out_rev.append(s[i])
+                i -= 1
+        out_rev.reverse()
+        return out_rev
+
+    def match(self, p, s, start, out, out_rev):
+        args = match_strict(s, start, p.pred)
+        if args is None:
+            return None
+        if self.model.ring and (p.left or p.right):
+            return self.match_ring(p, s, start, args)
+        if p.left:
+            if p.left_new and out is not None:
+                left = match_left(out, len(out), p.left, self.skipper)
+            else:
+                left = match_left(s, start, p.left, self.skipper)
+            if left is None:
+                return None
+            args = left + args
+        if p.right:
+            if p.right_new and out_rev is not None:
+                right = match_right(Reversed(out_rev), 0, p.right, self.skipper)
+            else:
+                right = match_right(s, start + len(p.pred), p.right, self.skipper)
+            if right is None:
+                return None
+            args = args + right
+        return args
+
+    def match_ring(self, p, s, start, args):
+        """A ring L-system: the string's end touches its start (for contexts)."""
+        n = len(s)
+        twice = s + s
+        if p.left:
+            left = match_left(twice, start + n, p.left, self.skipper)
+            if left is None:
+                return None
+            args = left + args
+        if p.right:
+            right = match_right(twice, start + len(p.pred), p.right, self.skipper)
+            if right is None:
+                return None
+            args = args + right
+        return args
+
+    # --- decomposition and interpretation ---------------------------------------------------
+    def rewrite(self, s, section):
+        """Each module replaced by its rule's successor, again in that, down to the section's
+        maximum depth (an explicit stack: depths of a thousand are common). Contexts are
+        matched in the string the module is in."""
+        rules = self.rules[section]
+        if not rules:
+            return s
+        out = []
+        stack = [[s, 0, self.model.max_depth[section]]]
+        while stack:
+            top = stack[-1]
+            seq, i, depth = top
+            if i >= len(seq):
+                stack.pop()
+                continue
+            result, width = None, 1
+            if depth > 0:
+                for p in rules.get(seq[i][0], ()):
+                    args = self.match(p, seq, i, None, None)
+                    if args is not None:
+                        result = self.fire(p, args)
+                        if result is not None:
+                            width = len(p.pred)
+                            break
+            top[1] = i + width
+            if result is None:
+                out.append(seq[i])
+                if len(out) > self.max_modules:
+                    raise LpfgError(f"the string grew beyond {self.max_modules} modules during {section}")
+            else:
+                stack.append([result, 0, depth - 1])
+        return out
+
+    # --- the whole run ----------------------------------------------------------------------
+    def hook(self, name):
+        if name in self.model.hooks:
+            self.ns[name]()
+
+    def run(self, steps):
+        """(final string after interpretation, steps derived)."""
+        self.hook("_start")
+        if steps is None:
+            steps = self.ns["_derivation_length"]() if self.model.has_length else 0
+        self.rt.buffer = []
+        if "_axiom" not in self.ns:
+            raise LpfgError("the model has no Axiom:")
+        self.ns["_axiom"]()
+        s = self.rewrite(self.fire_axiom(), "decomposition")
+        done = 0
+        try:
+            while done < steps and not self.rt.stop:
+                self.rt.step = done
+                self.hook("_start_each")
+                s = self.rewrite(self.step(s), "decomposition")
+                done += 1
+                if len(s) > self.max_modules:
+                    raise LpfgError(f"the string grew beyond {self.max_modules} modules at step {done}")
+                self.hook("_end_each")
+            self.hook("_end")
+        except StopDerivation:
+            pass
+        return self.rewrite(s, "interpretation"), done
+
+    def fire_axiom(self):
+        return list(self.coerce(self.rt.buffer))
