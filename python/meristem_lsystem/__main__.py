@@ -13,7 +13,8 @@ import sys
 from .run import run
 
 TEXT_EXTENSIONS = (".lpy", ".l", ".h", ".v", ".func", ".a", ".map", ".mat", ".txt", ".py",
-                   ".s", ".con", ".crv", ".fset", ".cset", ".e", ".in", "specifications")
+                   ".s", ".con", ".crv", ".fset", ".cset", ".e", ".in", "specifications",
+                   ".spec", ".tset", ".vset")  # lpfg: environment specs, timelines, values
 
 
 def read_folder(folder: str) -> dict:

@@ -81,13 +81,78 @@ M(t) :
 I(x) : { produce F(x); }
 """
 
-ACROPETAL_SIGNAL = """#include <lpfgall.h>
-derivation length: 4;
-module B(int);
-ignore: Left F;
-Axiom: B(1) F(1) Left(30) B(0) F(1) B(0);
-B(a) < B(b) : { produce B(a); }
-B(a) : { if (a == 1) produce B(a) F(2); }
+HORMONE_UP = """#include <lpfgall.h>
+#define LENGTH 1
+#define WIDTH 5
+#define ANGLE 45.0
+derivation length: 1;
+module A();
+module B();
+module X();
+ignore: Left Right;
+Axiom: SetWidth(WIDTH) X();
+X():
+{
+	produce
+		B()
+		SB() Right(ANGLE) A() EB() A()
+		SB()  Left(ANGLE) A() EB() A()
+		SB() Right(ANGLE) A() EB() A()
+		SB()  Left(ANGLE) A() EB() A()
+		SB() Right(ANGLE) A() EB() A();
+}
+B() < A():
+{
+	produce B();
+}
+interpretation:
+A():
+{
+	produce SetColor(1) F(LENGTH);
+}
+B():
+{
+	produce SetColor(2) F(LENGTH);
+}
+"""
+
+SIGNAL_DOWN = """#include <lpfgall.h>
+#define LENGTH 1
+#define WIDTH 5
+#define ANGLE 45.0
+derivation length: 1;
+module A();
+module B();
+module X();
+ignore: Left Right;
+Axiom: SetWidth(WIDTH) X();
+X():
+{
+	produce
+		A() SB() Right(ANGLE) A() EB()
+		A() SB()  Left(ANGLE) A() EB()
+		A() SB() Right(ANGLE) A() EB()
+		A() SB()  Left(ANGLE) A() EB()
+		A() SB() Right(ANGLE) A() EB()
+		B();
+}
+B():
+{
+	produce A();
+}
+A() > B():
+{
+	produce B();
+}
+interpretation:
+A():
+{
+	produce SetColor(1) F(LENGTH);
+}
+B():
+{
+	produce SetColor(2) F(LENGTH);
+}
 """
 
 
@@ -120,13 +185,19 @@ class CourseObjectTest(unittest.TestCase):
         lengths = sorted({float(a[0]) for n, a in modules(r) if n == "F"})
         self.assertIn(0.5 * 1.5 ** 6, lengths)
 
-    def test_a_signal_moves_up_through_ignored_modules(self):  # as in 03-signal-down
-        r = run_lpfg(ACROPETAL_SIGNAL)
-        names = [n for n, _ in modules(r)]
-        self.assertEqual(names.count("B"), 3)
-        self.assertEqual(names.count("F"), 2 + 4)  # the first B adds F(2) each step
-        b_values = [a[0] for n, a in modules(r) if n == "B"]
-        self.assertEqual(b_values, ["1", "1", "1"])
+    def test_an_acropetal_signal_climbs_a_node_and_its_branch_each_step(self):  # 01-hormone-up
+        for steps, signalled in ((1, 1), (2, 3), (3, 5), (6, 11)):
+            r = run_lpfg(HORMONE_UP, steps=steps)
+            colours = [a[0] for n, a in modules(r) if n == "SetColor"]
+            self.assertEqual(len(colours), 11)  # 11 segments, each with its colour
+            self.assertEqual(colours.count("2"), signalled, steps)
+
+    def test_a_basipetal_signal_goes_down_the_main_axis_only(self):  # 03-signal-down
+        for steps, at in ((1, 10), (2, 8), (3, 6), (6, 0)):
+            r = run_lpfg(SIGNAL_DOWN, steps=steps)
+            colours = [a[0] for n, a in modules(r) if n == "SetColor"]
+            self.assertEqual(colours.count("2"), 1, steps)
+            self.assertEqual(colours.index("2"), at, steps)
 
 
 class DerivationTest(unittest.TestCase):
@@ -190,6 +261,96 @@ points: 4
         self.assertAlmostEqual(float(modules(r)[0][1][0]), 0.25, places=3)
 
 
+class LpfgFeatureTest(unittest.TestCase):
+    def test_in_new_right_context_walks_the_branches_in_a_while_loop(self):  # as InNewContext
+        src = """derivation length: 1;
+module N(float);
+Start: { Backward(); }
+Axiom: N(0) SB() N(2) EB() SB() N(3) EB() N(4);
+N(a):
+{
+  float b, sum = 0;
+  while (InNewRightContext(SB() N(b) EB())) sum += b;
+  if (InNewRightContext(N(b))) sum += b;
+  produce N(a + sum);
+}
+"""
+        r = run_lpfg(src)
+        self.assertEqual([a[0] for n, a in modules(r) if n == "N"], ["9.0", "2.0", "3.0", "4.0"])
+
+    def test_a_constructor_with_initialisers_and_an_enum_in_a_struct(self):  # as UserMenu
+        src = """derivation length: 0;
+struct S { int c; enum { E0, E1 } e; S(void) : c(4), e(E1) {} };
+module M(S);
+Axiom: M(S());
+interpretation:
+M(s): { if (s.e == S::E1) produce F(s.c); }
+"""
+        self.assertEqual(run_lpfg(src)["lstring"], "F(4.0)")
+
+    def test_a_gillespie_group_rewrites_one_module_per_step(self):
+        src = """derivation length: 5;
+Start: { UseGroup(1); SeedGillespie(3); }
+module A();
+Axiom: A A A;
+ggroup 1:
+A(): { propensity 2.0 produce F(1) A; }
+"""
+        r = run_lpfg(src)
+        self.assertEqual(count(r, "F"), 5)
+        self.assertEqual(count(r, "A"), 3)
+        self.assertEqual(run_lpfg(src)["lstring"], r["lstring"])  # the same seed, the same plant
+
+
+class BetweenStepsTest(unittest.TestCase):
+    def test_cut_removes_the_rest_of_its_branch_at_the_next_step(self):
+        src = """derivation length: %d;
+module X();
+Axiom: F(1) SB() F(2) X() F(3) SB() F(4) EB() F(5) EB() F(6);
+X(): { produce Cut(); }
+"""
+        self.assertIn("Cut()F(3.0)", run_lpfg(src % 1)["lstring"])  # produced, not yet applied
+        self.assertEqual(run_lpfg(src % 2)["lstring"], "F(1.0)SB()F(2.0)EB()F(6.0)")
+
+    def test_getpos_receives_the_turtles_position_through_interpretation(self):
+        src = """derivation length: 1;
+module A();
+Axiom: F(2) Left(90) A() GetPos(0, 0, 0);
+interpretation:
+A(): { produce F(3); }
+"""
+        r = run_lpfg(src)
+        pos = [a for n, a in modules(r) if n == "GetPos"][0]
+        self.assertAlmostEqual(float(pos[0]), -3.0)
+        self.assertAlmostEqual(float(pos[1]), 2.0)
+
+
+class SeedTest(unittest.TestCase):
+    SRC = "derivation length: 3;\nAxiom: A;\nmodule A();\nA(): { produce F(ran(1.0)) A; }\n"
+
+    def test_the_same_seed_gives_the_same_plant_and_another_seed_another(self):
+        a, b = run_lpfg(self.SRC, seed=1), run_lpfg(self.SRC, seed=1)
+        self.assertEqual(a["lstring"], b["lstring"])
+        self.assertNotEqual(a["lstring"], run_lpfg(self.SRC, seed=2)["lstring"])
+        self.assertTrue(all(0 <= float(v[0]) < 1 for n, v in modules(a) if n == "F"))
+
+
+class EnvironmentTest(unittest.TestCase):
+    E_FILE = "executable: honda81 -e commfile.e density.spec\ncommunication type: files\n"
+    SPEC = "verbose: off\nradius:  0.1\n3d case: on\n"
+
+    def test_honda81_stops_the_weaker_of_two_queries_that_meet(self):
+        src = "derivation length: 1;\nAxiom: E1(1) E1(0.5) F(5) E1(0.5) SB() Left(90) E1(0.5) EB();\n"
+        r = run_lpfg(src, {"commfile.e": self.E_FILE, "density.spec": self.SPEC})
+        self.assertEqual([a[0] for n, a in modules(r) if n == "E1"], ["1", "0", "0", "0"])
+        self.assertEqual(r["notes"], [])
+
+    def test_without_a_communication_file_queries_keep_their_values_with_a_note(self):
+        r = run_lpfg("derivation length: 1;\nAxiom: E1(1) E1(0.5);\n")
+        self.assertEqual([a[0] for n, a in modules(r) if n == "E1"], ["1.0", "0.5"])
+        self.assertIn("environment", r["notes"][0]["message"])
+
+
 class ErrorTest(unittest.TestCase):
     def test_a_syntax_error_gives_its_line_and_column(self):
         r = run_lpfg("derivation length: 1;\nAxiom: A;\nA(): { produce F(1) }\n")
@@ -207,6 +368,13 @@ class ErrorTest(unittest.TestCase):
         r = run_lpfg(src, max_modules=10000)
         self.assertFalse(r["ok"])
         self.assertIn("10000", r["error"]["message"])
+
+    def test_every_truncation_of_a_model_gives_a_result_or_an_error_at_a_line(self):
+        for source in (COMPOUND_INTERP, RECURSIVE):
+            for k in range(0, len(source), 5):
+                r = run_lpfg(source[:k], time_limit=2)
+                if not r["ok"]:
+                    self.assertGreaterEqual(r["error"]["line"], 1, (k, r["error"]))
 
     def test_an_unknown_name_is_reported_at_its_line(self):
         r = run_lpfg("derivation length: 1;\nAxiom: A;\nA(): {\n  produce F(nowhere(1));\n}\n")

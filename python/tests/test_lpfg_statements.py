@@ -2,7 +2,7 @@
 
 import unittest
 
-from lpfg_support import axiom_of, values
+from lpfg_support import axiom_of, run_lpfg, values
 
 
 def result_of(body, declarations=""):
@@ -18,6 +18,21 @@ class StatementTest(unittest.TestCase):
         self.assertEqual(result_of("int i = 7; float f = i; result = f/2;"), 3.5)
         self.assertEqual(result_of("int i = 3.9; result = i;"), 3.0)
         self.assertEqual(result_of("result = (int) 2.7 + (float) 1/2;"), 2.5)
+
+    def test_float_is_single_precision_and_double_is_not(self):
+        # 0.1 added ten times: C's float gives 1.0000001192092896, double 0.9999999999999999
+        self.assertEqual(result_of("float f = 0; for (int i = 0; i < 10; i++) f += 0.1; result = f;"), 1.0000001192092896)
+        body = "double d = 0; for (int i = 0; i < 10; i++) d += 0.1; result = d < 1 ? 1 : 2;"
+        self.assertEqual(result_of(body), 1.0)
+
+    def test_module_parameters_declared_float_are_single_precision(self):
+        src = """derivation length: 3;
+module A(float);
+Axiom: A(0);
+A(t): { produce A(t + 0.1); }
+"""
+        r = run_lpfg(src)
+        self.assertEqual(r["lstring"], "A(0.30000001192092896)")
 
     def test_if_else_chains(self):
         body = "int a = 5; if (a < 3) result = 1; else if (a < 6) result = 2; else result = 3;"

@@ -11,6 +11,7 @@ import re
 import sys
 
 from .derive import Engine
+from .environment import environment_of
 from .lexer import LpfgError
 from .output import write_lstring
 from .preprocess import preprocess
@@ -19,11 +20,9 @@ from .runtime import Runtime
 
 _LINE = re.compile(r"#@(\d+)$")
 
-# lpfg modules that ask the environment or the turtle for values lpfg fills in between steps.
-QUERIES = {
-    "E1": "environment", "E2": "environment", "GetPos": "turtle", "GetHead": "turtle",
-    "GetLeft": "turtle", "GetUp": "turtle",
-}
+# lpfg modules that ask the environment for values it fills in between steps (the turtle's
+# queries, GetPos and kin, are answered: turtle.py).
+QUERIES = {"E1": "environment", "E2": "environment", "EA20": "environment"}
 
 
 def run(files, main, options=None):
@@ -39,17 +38,22 @@ def run(files, main, options=None):
         tokens = preprocess(files, main, notes)
         model = Reader(tokens, runtime.functions.names).read()
         source_lines = model.source.split("\n")
+        runtime.source_lines = source_lines
         ns = runtime.namespace()
         for name, number in runtime.functions.names.items():
             ns[name] = number
         code = compile(model.source, "<lpfg>", "exec")
         exec(code, ns)  # the model's own code, translated
-        engine = Engine(model, ns, runtime, int(options.get("max_modules", 2_000_000)))
+        environment = environment_of(files, notes)
+        engine = Engine(model, ns, runtime, int(options.get("max_modules", 2_000_000)), environment)
         final, steps = engine.run(options.get("steps"))
         result["steps"] = steps
-        result["lstring"] = write_lstring(final)
+        result["lstring"] = write_lstring(final, notes)
         result["ok"] = True
-        _note_queries(final, notes)
+        if environment is None:
+            _note_queries(final, notes)
+        if any(m[0] == "Terrain" for m in final):
+            notes.append({"line": 0, "message": "Terrain: lpfg's terrain (from its own terrain files and camera) is not reproduced"})
     except LpfgError as e:
         line = e.line or _model_line(sys.exc_info()[2], source_lines) or (engine.current_line if engine else 0)
         result["error"] = {"line": line, "column": e.column, "message": e.message}

@@ -1,6 +1,8 @@
 """`python3 -m meristem_lsystem.lpfg FOLDER|FILE.l [--steps N] [--seed S]` prints `run`'s JSON."""
 
 import argparse
+import contextlib
+import io
 import json
 import os
 
@@ -51,7 +53,11 @@ def main():
     parser.add_argument("--seed", type=int, default=0)
     a = parser.parse_args()
     files, main_file = read_object(a.path)
-    print(json.dumps(run(files, main_file, {"steps": a.steps, "seed": a.seed})))
+    printed = io.StringIO()
+    with contextlib.redirect_stdout(printed):  # what the model prints stays out of the JSON
+        result = run(files, main_file, {"steps": a.steps, "seed": a.seed})
+    result["output"] = printed.getvalue()[:100_000]
+    print(json.dumps(result))
 
 
 if __name__ == "__main__":

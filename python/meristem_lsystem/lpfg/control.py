@@ -3,6 +3,7 @@ and expression statements (assignments written as Python statements)."""
 
 from .expressions import ASSIGN_OPS, Expr
 from .statements import StatementTranslator
+from .expressions import SCALARS
 
 
 class BodyTranslator(StatementTranslator):
@@ -23,7 +24,7 @@ class BodyTranslator(StatementTranslator):
                 "do": self.do_statement, "switch": self.switch_statement,
                 "break": self.break_statement, "continue": self.continue_statement,
                 "return": self.return_statement, "produce": self.produce_statement,
-                "nproduce": self.produce_statement,
+                "nproduce": self.produce_statement, "propensity": self.propensity_statement,
             }.get(v)
             if handler:
                 handler()
@@ -189,7 +190,7 @@ class BodyTranslator(StatementTranslator):
         e = self.expression()
         self.expect(";")
         kind = self.current_return
-        if kind in ("int", "float", "bool"):
+        if kind in SCALARS:
             from .expressions import coerce
             self.emit(f"return {coerce(e.code, kind)}")
         else:
@@ -203,6 +204,13 @@ class BodyTranslator(StatementTranslator):
             self.emit(f"_np({', '.join(modules)})")
         if word == "produce":
             self.emit("return _PRODUCED")
+
+    def propensity_statement(self):
+        """`propensity p produce …;` in a ggroup: the reaction's rate, then its successor."""
+        self.next()
+        rate = self.ternary().code
+        self.emit(f"_propensity({rate})")
+        self.produce_statement()
 
     def module_list(self, end):
         """`A(x, y) SB B EB …` up to `end`: Python tuples ('A', (x, y))."""

@@ -3,7 +3,7 @@
 from .lexer import LpfgError
 
 SCALAR_TYPES = {
-    "int": "int", "float": "float", "double": "float", "bool": "bool", "char": "int",
+    "int": "int", "float": "f32", "double": "float", "bool": "bool", "char": "int",
     "long": "int", "short": "int", "unsigned": "int", "signed": "int", "size_t": "int",
     "void": "void", "FILE": "handle", "VisibilityMode": "int",
 }

@@ -7,20 +7,22 @@ tried (the current group's first, then group 0's). Modules are tuples `(name, ar
 
 from .lexer import LpfgError
 from .matching import Reversed, Skipper, match_left, match_right, match_right_end, match_strict
-from .runtime import StopDerivation, _int, _val
+from .runtime import StopDerivation, _f32, _int, _val
+from .environment import environment_of
+from .turtle import answer_queries
 
 # lpfg's own modules whose parameters are floats (SetColor's are ints: it is left as written).
 PREDEFINED_FLOATS = {
     "F", "f", "Left", "Right", "Up", "Down", "RollL", "RollR", "SetWidth", "Sphere", "Circle",
     "Surface", "MoveTo", "MoveRel", "Line", "LineTo", "LineRel", "Cylinder", "Rhombus",
     "Triangle", "SetHead", "Sphere0", "Circle0", "Elasticity", "SetElasticity", "TropismDirection",
-    "CurveScale", "Orient", "Label2D",
+    "CurveScale", "Orient", "E1", "E2",
 }
-COERCE = {"int": _int, "float": float, "bool": lambda v: 1 if v else 0}
+COERCE = {"int": _int, "float": float, "f32": _f32, "bool": lambda v: 1 if v else 0}
 
 
 class Engine:
-    def __init__(self, model, namespace, runtime, max_modules):
+    def __init__(self, model, namespace, runtime, max_modules, environment=None):
         self.model = model
         self.ns = namespace
         self.rt = runtime
@@ -35,10 +37,16 @@ class Engine:
                 self.forward_index.setdefault((p.group, p.pred[0][0]), []).append(p)
                 self.backward_index.setdefault((p.group, p.pred[-1][0]), []).append(p)
             else:
-                self.rules[p.section].setdefault(p.pred[0][0], []).append(p)
+                self.rules[p.section].setdefault((p.group, p.pred[0][0]), []).append(p)
         self.coercers = {name: None for name in PREDEFINED_FLOATS}
         for name, types in model.modules.items():
             self.coercers[name] = [COERCE.get(t, _val) for t in types]
+        self.environment = environment
+        for key, depth in list(model.max_depth.items()):
+            if isinstance(depth, str):
+                model.max_depth[key] = namespace[depth]()
+        if "_ring" in namespace:
+            model.ring = bool(namespace["_ring"]())
         self.current_line = 0
         self.where = None
         self.context_state = {}
@@ -105,9 +113,36 @@ class Engine:
         return found[0]
 
     # --- a derivation step ------------------------------------------------------------------
+    def step_gillespie(self, s):
+        """A ggroup step (Gillespie's algorithm): every applicable production gives its
+        propensity; one of them, drawn in proportion, rewrites its predecessor alone."""
+        reactions = []
+        for i in range(len(s)):
+            for p in self.forward_index.get((self.rt.group, s[i][0]), ()):
+                args = self.match(p, s, i, None, None)
+                if args is None:
+                    continue
+                self.rt.propensity = 1.0
+                result = self.fire(p, args, (s, i, p, None, None))
+                if result is not None:
+                    if self.rt.propensity > 0:
+                        reactions.append((self.rt.propensity, i, len(p.pred), result))
+                    break
+        if not reactions:
+            return s
+        pick = self.rt.rng.random() * sum(r[0] for r in reactions)
+        for rate, i, width, result in reactions:
+            pick -= rate
+            if pick < 0:
+                break
+        return s[:i] + result + s[i + width:]
+
     def step(self, s):
+        if self.rt.group in self.model.gillespie:
+            return self.step_gillespie(cut(s))
         if self.rt.direction == "backward":
             return self.step_backward(s)
+        s = cut(s)  # lpfg's DeriveForward skips from a Cut to the end of its branch
         out = []
         i, n = 0, len(s)
         while i < n:
@@ -151,6 +186,10 @@ class Engine:
         return out_rev
 
     def match(self, p, s, start, out, out_rev):
+        # lpfg (TryMatchForward/Backward) skips a production whose new context lies on the
+        # side not yet derived: `>>` when deriving forward, `<<` when backward.
+        if (out is not None and p.right_new) or (out_rev is not None and p.left_new):
+            return None
         args = match_strict(s, start, p.pred)
         if args is None:
             return None
@@ -208,7 +247,7 @@ class Engine:
                 continue
             result, width = None, 1
             if depth > 0:
-                for p in rules.get(seq[i][0], ()):
+                for p in self.candidates(rules, seq[i][0]):
                     args = self.match(p, seq, i, None, None)
                     if args is not None:
                         result = self.fire(p, args)
@@ -236,13 +275,14 @@ class Engine:
             steps = self.ns["_derivation_length"]() if self.model.has_length else 0
         self.rt.buffer = []
         if "_axiom" not in self.ns:
-            raise LpfgError("the model has no Axiom:")
+            raise LpfgError("the model has no Axiom:", self.model.last_line, 1)
         self.ns["_axiom"]()
         s = self.rewrite(self.fire_axiom(), "decomposition")
         done = 0
         try:
             while done < steps and not self.rt.stop:
                 self.rt.step = done
+                s = self.settle(s)
                 self.hook("_start_each")
                 s = self.rewrite(self.step(s), "decomposition")
                 done += 1
@@ -254,5 +294,35 @@ class Engine:
             pass
         return self.rewrite(s, "interpretation"), done
 
+    def settle(self, s):
+        """What lpfg does before each step (`InterpretForEnvironment`): the turtle answers
+        `GetPos` and the other queries, the environment the `E1`/`E2` modules."""
+        return answer_queries(self, s, self.environment)
+
     def fire_axiom(self):
         return list(self.coerce(self.rt.buffer))
+
+
+def cut(s):
+    """`s` without each `Cut()` and what follows it up to the end of its branch."""
+    if not any(m[0] == "Cut" for m in s):
+        return s
+    out = []
+    i, n = 0, len(s)
+    while i < n:
+        if s[i][0] != "Cut":
+            out.append(s[i])
+            i += 1
+            continue
+        depth = 0
+        i += 1
+        while i < n:
+            name = s[i][0]
+            if name == "SB":
+                depth += 1
+            elif name == "EB":
+                if depth == 0:
+                    break
+                depth -= 1
+            i += 1
+    return out

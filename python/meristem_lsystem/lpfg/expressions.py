@@ -24,6 +24,8 @@ BINARY = {
     "<<": (8, "<<"), ">>": (8, ">>"), "+": (9, "+"), "-": (9, "-"),
     "*": (10, "*"), "/": (10, "_div"), "%": (10, "_mod"),
 }
+# C's arithmetic types: `float` is single precision (f32), `double` a Python float.
+SCALARS = ("int", "float", "f32", "bool")
 ASSIGN_OPS = {"=", "+=", "-=", "*=", "/=", "%=", "&=", "|=", "^=", "<<=", ">>="}
 CONSTANTS = {"true": "True", "false": "False", "NULL": "None", "nullptr": "None"}
 
@@ -50,6 +52,8 @@ def coerce(code, type_):
         return f"_int({code})"
     if type_ == "float":
         return f"float({code})"
+    if type_ == "f32":
+        return f"_f32({code})"
     if type_ == "bool":
         return f"_bool({code})"
     return f"_val({code})"
@@ -186,7 +190,7 @@ class ExpressionParser(Cursor, ContextCalls):
                 type_ = self.type_name()
                 self.expect(")")
                 e = self.unary()
-                return Expr(coerce(e.code, type_) if type_ in ("int", "float", "bool") else e.code, None, type_)
+                return Expr(coerce(e.code, type_) if type_ in SCALARS else e.code, None, type_)
         if t[0] == "id" and t[1] == "sizeof":
             raise self.error("sizeof is not supported")
         return self.postfix()
@@ -266,7 +270,7 @@ class ExpressionParser(Cursor, ContextCalls):
             return self.initializer_list()
         if kind != "id":
             raise self.error(f"unexpected '{value}' in an expression", t)
-        if value in ("std", ) and self.accept("::"):
+        if self.accept("::"):  # std::sin, ShapeData::SD_Square: the names are global here
             return self.primary()
         if value in CONSTANTS:
             return Expr(CONSTANTS[value], None, "bool")
@@ -340,7 +344,7 @@ def _element(type_):
 def _result_type(op, a, b):
     if op in ("==", "!=", "<", ">", "<=", ">=", "&&", "||"):
         return "int"
-    if a == "float" or b == "float":
+    if a in ("float", "f32") or b in ("float", "f32"):
         return "float"
     if a in ("int", "bool") and b in ("int", "bool"):
         return "int"

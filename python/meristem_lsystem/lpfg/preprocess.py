@@ -32,7 +32,7 @@ class Preprocessor:
         for line in tokenize_lines(self.files[name]):
             if not line:
                 continue
-            active = all(a for a, _ in stack)
+            active = all(entry[0] for entry in stack)
             if line[0][1] == "#" and line[0][0] == "op":
                 out.extend(self.expand(pending, set()))
                 pending = []
@@ -41,7 +41,7 @@ class Preprocessor:
                 pending.extend(line)
         out.extend(self.expand(pending, set()))
         if stack:
-            raise LpfgError("#if without #endif", 0, 0)
+            raise LpfgError("#if without #endif", *stack[-1][2])
         return out
 
     def _directive(self, line, stack, active, out, depth):
@@ -54,23 +54,23 @@ class Preprocessor:
                 raise LpfgError(f"#{word} needs a name", *here)
             defined = rest[0][1] in self.macros
             cond = defined if word == "ifdef" else not defined
-            stack.append((cond, cond))
+            stack.append((cond, cond, here))
         elif word == "if":
             cond = bool(self._condition(rest, here)) if active else False
-            stack.append((cond, cond))
+            stack.append((cond, cond, here))
         elif word in ("elif", "else", "endif"):
             if not stack:
                 raise LpfgError(f"#{word} without #if", *here)
             if word == "endif":
                 stack.pop()
                 return
-            _, taken = stack.pop()
-            outer = all(a for a, _ in stack)
+            _, taken, opened = stack.pop()
+            outer = all(entry[0] for entry in stack)
             if word == "else":
                 cond = not taken
             else:
                 cond = (not taken) and outer and bool(self._condition(rest, here))
-            stack.append((cond, taken or cond))
+            stack.append((cond, taken or cond, opened))
         elif not active:
             return
         elif word == "define":

@@ -6,7 +6,7 @@ patterns, sections, groups, ignore/consider, maximum depths).
 
 from .control import BodyTranslator
 from .cursor import SCALAR_TYPES
-from .expressions import coerce, py_name
+from .expressions import SCALARS, coerce, py_name
 from .runtime import PREDEFINED_STRUCTS
 from .statements import Struct
 
@@ -42,6 +42,8 @@ class Model:
         self.hooks = set()
         self.has_length = False
         self.ring = False
+        self.last_line = 1
+        self.gillespie = set()  # groups rewritten one reaction at a time (ggroup)
 
 
 class Reader(BodyTranslator):
@@ -75,6 +77,7 @@ class Reader(BodyTranslator):
         while self.peek()[0] != "eof":
             self.top_item()
         self.model.source = "\n".join(self.lines) + "\n"
+        self.model.last_line = self.tokens[-1][2] if self.tokens else 1
         return self.model
 
     def top_item(self):
@@ -90,10 +93,12 @@ class Reader(BodyTranslator):
             return
         handler = {
             "module": self.module_declaration, "Axiom": self.axiom, "axiom": self.axiom,
-            "ignore": self.ignore_list, "consider": self.ignore_list,
+            "ignore": self.ignore_list, "consider": self.ignore_list, "VerifyString": self.skip_statement,
             "struct": self.struct_or_declaration, "class": self.struct_or_declaration,
             "typedef": self.typedef, "using": self.skip_statement, "enum": self.enum,
             "group": self.group_start, "vgroup": self.group_start, "endgroup": self.group_end,
+            "ggroup": self.group_start, "window": self.group_start,
+            "endvgroup": self.group_end, "endwindow": self.group_end,
         }.get(v) if t[0] == "id" else None
         if handler:
             handler()
@@ -130,6 +135,8 @@ class Reader(BodyTranslator):
                         self.next()
                     self.accept(",")
             self.model.modules[name] = types
+            if self.accept("="):  # lpfg's own module numbers: module Cut() = 16;
+                self.next()
             if not self.accept(","):
                 break
         self.expect(";")
@@ -154,27 +161,27 @@ class Reader(BodyTranslator):
         self.emit(f"    return _int({e.code})")
 
     def maximum_depth(self):
-        tok = self.next()
+        self.next()
         self.next()
         self.expect(":")
         e = self.expression()
         self.expect(";")
-        try:
-            depth = int(float(eval(e.code, {"_div": lambda a, b: a / b, "_int": int})))
-        except Exception:
-            raise self.error("maximum depth must be a number", tok)
         key = self.section if self.section != "production" else "decomposition"
-        self.model.max_depth[key] = depth
+        name = f"_max_depth_{key}"
+        self.emit(f"def {name}():")
+        self.emit(f"    return _int({e.code})")
+        self.model.max_depth[key] = name  # evaluated once the model's globals exist
 
     def ring(self):
         """`ring L-system: 1;` — the string is a ring for contexts."""
-        tok = self.next()
+        self.next()
         while not self.accept(":"):
             self.next()
         e = self.expression()
         self.expect(";")
-        self.model.ring = e.code not in ("0", "False")
-        del tok
+        self.emit("def _ring():")
+        self.emit(f"    return {e.code}")
+        self.model.ring = True  # until _ring() says otherwise, after the model's globals exist
 
     def ignore_list(self):
         word = self.next()[1]
@@ -188,11 +195,13 @@ class Reader(BodyTranslator):
             self.model.consider = (self.model.consider or set()) | names
 
     def group_start(self):
-        self.next()
+        word = self.next()[1]
         t = self.next()
         self.expect(":")
         if t[0] == "num":
             self.group = int(float(t[1].rstrip("fFlL")))
+            if word == "ggroup":
+                self.model.gillespie.add(self.group)
         # a view group (vgroup) is drawn like the rest: its modules keep group 0
 
     def group_end(self):
@@ -267,7 +276,7 @@ class Reader(BodyTranslator):
             parts["right"], right_new, func, start[2]))
         self.function_body(func, names, None)
 
-    def function_body(self, name, params, return_type, method_of=None):
+    def function_body(self, name, params, return_type, method_of=None, initialisers=False):
         """`def name(params):` with the body that follows ('{…}' or one statement)."""
         self.scopes = [{}]
         saved_lines, self.lines = self.lines, []
@@ -278,12 +287,20 @@ class Reader(BodyTranslator):
         for cname, type_, by_ref in [(p[0], p[1], p[2] if len(p) > 2 else False) for p in params]:
             py = self.declare_local(cname, type_)
             py_params.append(py)
-            if type_ in ("int", "float", "bool"):
+            if type_ in SCALARS:
                 entry.append(f"{py} = {coerce(py, type_)}")
             elif not by_ref:
                 entry.append(f"{py} = _val({py})")
         for line in entry:
             self.emit(line)
+        if initialisers and self.accept(":"):  # a constructor's `: field(value), …`
+            while not self.at("{"):
+                field = self.ident()
+                self.expect("(")
+                value = self.expression()
+                self.expect(")")
+                self.emit(f"self.{field} = {coerce(value.code, method_of.field_type(field))}")
+                self.accept(",")
         if self.accept("{"):
             self.block_until_brace()
         else:
@@ -400,6 +417,9 @@ class Reader(BodyTranslator):
             if self.at("~"):
                 self._skip_member()
                 continue
+            if self.at("enum"):
+                self.enum_member(struct)
+                continue
             k = 0
             while self.peek(k)[0] == "id" and self.is_type_name(self.peek(k)[1]):
                 k += 1
@@ -419,6 +439,26 @@ class Reader(BodyTranslator):
                     break
             self.expect(";")
         self.emit_struct(struct, methods)
+
+    def enum_member(self, struct):
+        """`enum { A, B } field;` inside a struct: the names are constants, the field an int."""
+        self.next()
+        if self.peek()[0] == "id":
+            self.typedefs[self.next()[1]] = "int"
+        self.expect("{")
+        value = "0"
+        while not self.accept("}"):
+            name = self.ident()
+            if self.accept("="):
+                value = self.ternary().code
+            self.globals[name] = (py_name(name), "int")
+            self.emit(f"{py_name(name)} = {value}")
+            value = f"({py_name(name)} + 1)"
+            self.accept(",")
+        while not self.accept(";"):
+            name = self.ident()
+            struct.fields.append((name, "int", []))
+            self.accept(",")
 
     def _skip_member(self):
         depth = 0
@@ -448,9 +488,7 @@ class Reader(BodyTranslator):
             if kind == "ctor":
                 self.next()
                 params = self.parameter_list()
-                if self.accept(":"):
-                    raise self.error("constructor initialiser lists are not supported")
-                self.function_body(f"_ctor_{len(params)}", params, None, method_of=struct)
+                self.function_body(f"_ctor_{len(params)}", params, None, method_of=struct, initialisers=True)
             else:
                 self.function_definition(method_of=struct)
             body, self.lines = self.lines, saved

@@ -5,6 +5,9 @@ and lpfg's vectors, the maths library, random numbers, function files, and lpfg'
 
 import math
 import random
+import re
+import sys
+import struct
 import time
 
 from .functions import FunctionSet
@@ -32,8 +35,10 @@ class _Struct:
 
     def _copy(self):
         other = object.__new__(type(self))
-        for name in self._fields:
-            object.__setattr__(other, name, _val(getattr(self, name)))
+        copied = other.__dict__
+        for name, v in self.__dict__.items():
+            t = type(v)
+            copied[name] = v if t is float or t is int else _val(v)
         return other
 
     def __repr__(self):
@@ -132,7 +137,22 @@ def _coerce(value, type_):
         return _int(value)
     if type_ == "float":
         return float(value)
+    if type_ == "f32":
+        return _f32(value)
     return _val(value)
+
+
+_F32 = struct.Struct("f")
+_LINE_MARK = re.compile(r"#@(\d+)$")
+
+
+def _f32(v):
+    """A value stored in a C `float`: rounded to single precision."""
+    v = float(v)
+    try:
+        return _F32.unpack(_F32.pack(v))[0]
+    except OverflowError:
+        return math.copysign(math.inf, v)
 
 
 def _val(v):
@@ -242,10 +262,15 @@ def _init_struct(cls, init):
     return obj
 
 
+_FORMAT = re.compile(r"%([-+ #0]*\d*(?:\.\d+)?)(?:hh|h|ll|l|L|z|j|t)?([diouxXeEfFgGcs%])")
+
+
 def _sprintf(fmt, *args):
+    """C's printf formatting (length modifiers such as `%ld` dropped)."""
+    fmt = _FORMAT.sub(lambda m: "%" + m.group(1) + ("d" if m.group(2) in "iu" else m.group(2)), str(fmt))
     try:
         return fmt % tuple(args)
-    except (TypeError, ValueError):
+    except (TypeError, ValueError, OverflowError):
         return fmt
 
 
@@ -295,13 +320,29 @@ class Runtime:
         self.stop = False
         self.step = 0
         self.line = 0  # the line of the production running, for notes
+        self.source_lines = []  # the translated source, for the lines of notes
+        self.propensity = 1.0  # the rate the last ggroup production gave
         ZeroDivisionNote.notify = self.zero_division
 
     def zero_division(self, what, value):
-        key = ("undefined", what, self.line)
+        line = self.model_line() or self.line
+        key = ("undefined", what, line)
         if key not in self.noted:
             self.noted.add(key)
-            self.notes.append({"line": self.line, "message": f"integer {what} (undefined in C) gave {value}"})
+            self.notes.append({"line": line, "message": f"integer {what} (undefined in C) gave {value}"})
+
+    def model_line(self):
+        """The L+C line of the innermost translated code running (its `#@line` mark)."""
+        frame = sys._getframe(1)
+        while frame is not None:
+            if frame.f_code.co_filename == "<lpfg>":
+                k = frame.f_lineno - 1
+                if 0 <= k < len(self.source_lines):
+                    mark = _LINE_MARK.search(self.source_lines[k])
+                    if mark:
+                        return int(mark.group(1))
+            frame = frame.f_back
+        return 0
 
     def tick(self):
         if time.monotonic() > self.deadline:
@@ -310,13 +351,13 @@ class Runtime:
     def note_once(self, key, message):
         if key not in self.noted:
             self.noted.add(key)
-            self.notes.append({"line": 0, "message": message})
+            self.notes.append({"line": self.model_line(), "message": message})
 
     def namespace(self):
         ns = dict(MATHS)
         ns.update({
             "_Struct": _Struct, "V3f": V3f, "V2f": V2f, "V3d": V3f, "V2d": V2f, "_Init": _Init,
-            "_val": _val, "_int": _int, "_bool": _bool, "_div": _div, "_mod": _mod,
+            "_val": _val, "_int": _int, "_f32": _f32, "_bool": _bool, "_div": _div, "_mod": _mod,
             "_last": _last, "_setattr": _setattr, "_setitem": _setitem, "_array": _array,
             "_init_array": _init_array, "_init_struct": _init_struct, "_sprintf": _sprintf,
             "_np": self.nproduce, "_PRODUCED": True, "_tick": self.tick,
@@ -325,14 +366,21 @@ class Runtime:
             "drand48": self.rng.random, "random": lambda: self.rng.randrange(2147483648),
             "uniform": lambda a=0.0, b=1.0: a + (b - a) * self.rng.random(),
             "func": self.functions.value, "tfunc": self.functions.timeline, "val": self.functions.val,
+            "_propensity": self.set_propensity, "SeedGillespie": lambda s=0: self.rng.seed(int(s)),
+            "expf": _safe(math.exp), "sqrtf": _safe(math.sqrt), "powf": _pow, "fabsf": lambda x: abs(float(x)),
+            "logf": _log, "sinf": math.sin, "cosf": math.cos, "floorf": lambda x: float(math.floor(x)),
+            "UserMenuItem": lambda *a: None, "UserMenuChoice": self.menu_choice,
             "Stop": self.do_stop, "Forward": lambda: self.set_direction("forward"),
             "Backward": lambda: self.set_direction("backward"), "UseGroup": self.use_group,
             "CurrentGroup": lambda: self.group, "getDerivationStep": lambda: self.step,
             "CurrentDerivationStep": lambda: self.step,
-            "Printf": self.ignored("Printf"), "printf": self.ignored("printf"),
-            "fprintf": self.ignored("fprintf"), "fflush": self.ignored("fflush"),
-            "UseView": self.ignored("UseView"), "DisplayFrame": self.ignored("DisplayFrame"),
-            "fopen": self.no_file, "fclose": self.ignored("fclose"),
+            "Printf": self.printf, "printf": self.printf,
+            "fprintf": lambda stream, *a: self.printf(*a) if stream is None else 0,
+            "fflush": lambda *a: 0, "puts": lambda text: self.printf(str(text) + "\n"),
+            "UseView": self.ignored("UseView", "lpfg's views are drawn here in one scene"),
+            "CloseView": self.ignored("CloseView", "lpfg's views are drawn here in one scene"),
+            "DisplayFrame": self.ignored("DisplayFrame", "animation frames are not written"),
+            "fopen": self.no_file, "fclose": lambda *a: 0,
             "stdout": None, "stderr": None, "exit": self.do_exit, "assert": lambda c: None,
             "MouseStatus": MouseStatus, "CameraPosition": CameraPosition,
             "GetMouseStatus": self.mouse, "GetCameraPosition": lambda *a: CameraPosition(),
@@ -347,8 +395,22 @@ class Runtime:
                        "or clicks, so what it would add by hand is not drawn")
         return MouseStatus()
 
+    def printf(self, fmt="", *args):
+        """What the model prints (`Printf`, `printf`, `fprintf(stdout …)`) goes to standard
+        output, which `run` keeps as the result's `output`."""
+        text = _sprintf(fmt, *args)
+        sys.stdout.write(text)
+        return len(text)
+
     def nproduce(self, *modules):
         self.buffer.extend(modules)
+
+    def menu_choice(self):
+        self.note_once("menu", "UserMenuChoice: the model's own menu is not shown; no item is ever chosen (-1)")
+        return -1
+
+    def set_propensity(self, rate):
+        self.propensity = float(rate)
 
     def do_stop(self):
         self.stop = True
@@ -362,9 +424,9 @@ class Runtime:
     def use_group(self, g):
         self.group = int(g)
 
-    def ignored(self, name):
+    def ignored(self, name, why):
         def call(*args):
-            self.note_once(name, f"{name}: printing and views are not reproduced")
+            self.note_once(name, f"{name}: {why}")
             return 0
         return call
 

@@ -10,6 +10,10 @@ from .cursor import QUALIFIERS, SCALAR_TYPES, VECTOR_TYPES
 from .expressions import Expr, ExpressionParser, coerce, py_name
 
 
+# lpfg's array types: EA20Array is the 20 values an environment answers EA20 with.
+ARRAY_TYPES = {"EA20Array": 20}
+
+
 class Struct:
     def __init__(self, name):
         self.name = name
@@ -43,7 +47,7 @@ class StatementTranslator(ExpressionParser):
         return self.structs
 
     def is_type_name(self, name):
-        return (name in SCALAR_TYPES or name in VECTOR_TYPES or name in self.structs
+        return (name in SCALAR_TYPES or name in ARRAY_TYPES or name in VECTOR_TYPES or name in self.structs
                 or name in self.typedefs or name in QUALIFIERS)
 
     def field_type(self, type_, field):
@@ -102,7 +106,7 @@ class StatementTranslator(ExpressionParser):
         t = self.peek()
         if t[0] != "id" or not self.is_type_name(t[1]):
             return False
-        if t[1] in self.structs or t[1] in VECTOR_TYPES or t[1] in self.typedefs:
+        if t[1] in self.structs or t[1] in VECTOR_TYPES or t[1] in self.typedefs or t[1] in ARRAY_TYPES:
             nxt = self.peek(1)
             return nxt[0] == "id" or nxt[1] in ("*", "&")
         return True
@@ -121,12 +125,16 @@ class StatementTranslator(ExpressionParser):
                 continue
             if v in SCALAR_TYPES:
                 self.next()
-                if not (type_ == "float" and v == "int"):
+                if not (type_ in ("float", "f32") and v == "int"):
                     type_ = SCALAR_TYPES[v] if type_ in (None, "int") else type_
                 continue
             if type_ is None and (v in VECTOR_TYPES or v in self.structs or v in self.typedefs):
                 self.next()
                 type_ = VECTOR_TYPES.get(v) or self.typedefs.get(v) or v
+                continue
+            if type_ is None and v in ARRAY_TYPES:
+                self.next()
+                type_ = "float[]"
                 continue
             break
         while self.peek()[1] in ("*", "&"):
@@ -143,7 +151,7 @@ class StatementTranslator(ExpressionParser):
             return f"_array({dims[0]}, lambda: {inner})"
         if type_ == "int" or type_ == "bool":
             return "0"
-        if type_ == "float":
+        if type_ in ("float", "f32"):
             return "0.0"
         if type_ in ("V3f", "V2f") or type_ in self.structs:
             return f"{py_name(type_)}()"
@@ -153,16 +161,18 @@ class StatementTranslator(ExpressionParser):
     def declaration(self, is_global):
         """`type a = 1, b[3], c;` — one Python assignment per name."""
         self.char_array = self.at("char") or (self.at("const") and self.at("char", 1))
+        array_type = ARRAY_TYPES.get(self.peek()[1])
         type_ = self.type_name()
         while True:
             while self.accept("*") or self.accept("&"):
                 pass
-            token = self.peek()
             name = self.ident()
             dims = []
             while self.accept("["):
                 dims.append("0" if self.at("]") else self.expression().code)
                 self.expect("]")
+            if array_type:
+                type_, dims = "float", [str(array_type)] + dims
             full = type_ + "[]" * len(dims)
             if self.at("("):  # a constructor call: V3f p(1, 2, 3);
                 args = self.arguments()
@@ -177,7 +187,6 @@ class StatementTranslator(ExpressionParser):
             else:
                 py = self.declare_local(name, full)
             self.emit(f"{py} = {value}")
-            del token
             if not self.accept(","):
                 break
         self.expect(";")
