@@ -8,6 +8,7 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { decodePng, foregroundShare } from './pictures';
 import { editorText, generation, nextBuild, PHONE, RESULTS, studioIn, VIEW_CANVAS, type StudioPage } from './studio-page';
 import { writeFileSync } from 'node:fs';
+import { zipSync } from 'fflate';
 
 /** A branching tree whose growth is Python: a function, `if`, `produce` with computed parameters. */
 const TREE = `from math import sqrt
@@ -105,6 +106,25 @@ describe('an L-Py model run by Python', () => {
       await context.close();
     });
   }
+
+  it('opens a zipped lpfg object whose production loops in C++, by Python, with its view file', async () => {
+    const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
+    const { page, problems } = await studioIn(await context.newPage());
+    const encode = (text: string) => new TextEncoder().encode(text);
+    const zip = zipSync({
+      'loop/specifications': encode('lpfg lsystem.l view.v\n'),
+      'loop/view.v': encode('line style: cylinder\n'),
+      'loop/lsystem.l': encode('#include <lpfgall.h>\nderivation length: 1;\nmodule A(int);\nAxiom: A(3);\nA(n):\n{\n  for (int i = 0; i < n; i++)\n    nproduce F(1) SB() Left(30) F(0.5) EB();\n  produce;\n}\n'),
+    });
+    const before = await generation(page);
+    await page.getByTestId('file-input').setInputFiles({ name: 'loop.zip', mimeType: 'application/zip', buffer: Buffer.from(zip) });
+    expect(await nextBuild(page, before, 120_000)).toBe('ok');
+    expect(await noticeText(page)).toMatch(/^Imported loop\.zip from lpfg, run by Python \(1 step, \d+\.\d s\)/);
+    // Three F(1), each with a branch of F(0.5): six segments, by hand.
+    expect(await page.evaluate(() => window.__meristem!.lastStats!.segments)).toBe(6);
+    expect(problems).toEqual([]);
+    await context.close();
+  });
 
   it('stops a model that runs on, with Stop, and leaves the text as it was', async () => {
     const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
