@@ -28,7 +28,7 @@ const repoRoot = fileURLToPath(new URL('.', import.meta.url));
  * (scripts/make-icons.mjs). `prompt`: a new version waits until the user reloads from the studio's
  * "A new version is ready" bar (web/src/studio/page/app-update.ts registers it). Every URL is relative,
  * so it works from any sub-path; query strings (embed.html?controls=…) are ignored when matching.
- * Pyodide (dist/pyodide/, about 12 MB: scripts/pyodide-plugin.ts) is not precached: a visitor who
+ * Pyodide (dist/pyodide/, about 13 MB: scripts/pyodide-plugin.ts) is not precached: a visitor who
  * never opens an L-Py or lpfg model never downloads it. The first model that needs Python fetches
  * it, and the service worker keeps it then (cache first, in a cache named after Pyodide's version,
  * so an upgrade fetches the new files), so Python models open offline after that.

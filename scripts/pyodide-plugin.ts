@@ -15,7 +15,7 @@ export const PYODIDE_DIR = 'pyodide';
 
 /**
  * The runtime's files: the loader, the interpreter (its JavaScript and WebAssembly), the standard
- * library and the lock file it reads at start. Packages beyond the standard library are never
+ * library and the lock file it reads at start; 13.5 MB, 6.3 MB gzipped (314.0.7). Packages beyond the standard library are never
  * loaded (the L-system runtime is pure Python), so none is served.
  */
 export const PYODIDE_FILES = ['pyodide.mjs', 'pyodide.asm.mjs', 'pyodide.asm.wasm', 'python_stdlib.zip', 'pyodide-lock.json'] as const;

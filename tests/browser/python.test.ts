@@ -90,7 +90,7 @@ describe('an L-Py model run by Python', () => {
       const { page, problems }: StudioPage = await studioIn(await context.newPage());
       const before = await generation(page);
       await open(page, 'tree.lpy', TREE);
-      await expect.poll(() => noticeText(page), { timeout: 10_000 }).toMatch(/^(Loading Python \(about 12 MB, once\)…|Running tree\.lpy in Python…)$/);
+      await expect.poll(() => noticeText(page), { timeout: 10_000 }).toMatch(/^(Loading Python \(about 13 MB, once\)…|Running tree\.lpy in Python…)$/);
       expect(await nextBuild(page, before, 120_000)).toBe('ok');
       expect(await noticeText(page)).toMatch(/^Imported tree\.lpy from L-Py, run by Python \(5 steps, \d+\.\d s\)/);
       // The text built (the editor is behind a tab on a phone): what Python derived, saying so.

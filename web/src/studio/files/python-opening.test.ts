@@ -49,7 +49,7 @@ const result = (fields: object) => JSON.stringify({ ok: true, dialect: 'lpy', st
 describe('opening a model in Python', () => {
   it('says Python loads, then runs the file, and makes text of what it derived, saying how', async () => {
     const { opened, shown, derived } = await opening([{ kind: 'loading' }, { kind: 'running' }, { kind: 'done', result: result({}), millis: 1234 }]);
-    expect(shown).toEqual(['Starting Python for tree.lpy…', 'Loading Python (about 12 MB, once)…', 'Running tree.lpy in Python…', '(hidden)']);
+    expect(shown).toEqual(['Starting Python for tree.lpy…', 'Loading Python (about 13 MB, once)…', 'Running tree.lpy in Python…', '(hidden)']);
     expect(derived).toEqual([`models/tree.lpy | L-Py, run by Python (5 steps, 1.2 s) | ${result({})}`]);
     expect(opened).toMatchObject({ ok: true, text: 'axiom: F F', how: 'L-Py, run by Python (5 steps, 1.2 s)' });
   });

@@ -1,5 +1,5 @@
 // Opening a model that Python runs (an L-Py model or an lpfg object the hand translation does not
-// reach): the notice says "Loading Python (about 12 MB, once)…" while Pyodide is fetched (the first
+// reach): the notice says "Loading Python (about 13 MB, once)…" while Pyodide is fetched (the first
 // model only), then "Running FILE in Python…", each with Stop; what Python derived becomes Meristem
 // text in the import worker. The user's text is never touched before that text exists: a model
 // stopped or failing leaves the editor as it was, with the model's error at its line. When Python
@@ -30,7 +30,7 @@ export function pagePython(): PythonClient {
 /** What the notice says in each state ('starting': until the worker says which). */
 function stateMessage(state: PythonState | 'starting', main: string): string {
   if (state === 'starting') return `Starting Python for ${main}…`;
-  return state === 'loading' ? 'Loading Python (about 12 MB, once)…' : `Running ${main} in Python…`;
+  return state === 'loading' ? 'Loading Python (about 13 MB, once)…' : `Running ${main} in Python…`;
 }
 
 /** Runs `run` in Python and opens what it derived; `translated` is the hand translation (`name`: what was opened). */
