@@ -26,12 +26,12 @@ function fakeNotice() {
 }
 
 /** Opens `run` with a fake worker that answers `answers` once the run starts; what it opened and showed. */
-async function opening(answers: PythonWorkerResponse[], pressStop = false) {
+async function opening(answers: PythonWorkerResponse[], pressStop = false, hand: OpenedFile = translated) {
   const worker = new FakePythonWorker();
   const python = new PythonClient(() => worker, () => 'http://site/pyodide/');
   const { notice, shown, stop } = fakeNotice();
   const derived: string[] = [];
-  const pending = openInPython(run, translated, 'tree.lpy', {
+  const pending = openInPython(run, hand, 'tree.lpy', {
     notice,
     python: () => python,
     derive: async (result, main, how) => {
@@ -54,11 +54,20 @@ describe('opening a model in Python', () => {
     expect(opened).toMatchObject({ ok: true, text: 'axiom: F F', how: 'L-Py, run by Python (5 steps, 1.2 s)' });
   });
 
-  it('gives the model’s error at its line and column, and opens nothing', async () => {
+  it('gives the model’s error at its line and column, as the first note of the hand translation', async () => {
     const error = { line: 7, column: 12, message: "NameError: name 'leng' is not defined" };
     const { opened, derived } = await opening([{ kind: 'running' }, { kind: 'done', result: result({ ok: false, error }), millis: 5 }]);
     expect(derived).toEqual([]);
-    expect(opened).toEqual({ ok: false, error: "Python stopped the model (tree.lpy, line 7, column 12): NameError: name 'leng' is not defined; your text is as it was" });
+    expect(opened).toEqual({
+      ...translated,
+      notes: ["Python stopped the model (tree.lpy, line 7, column 12): NameError: name 'leng' is not defined; this is the translation by hand.", ...(translated.ok ? translated.notes : [])],
+    });
+  });
+
+  it('gives the model’s error alone, the text as it was, when there is no hand translation', async () => {
+    const error = { line: 2, column: 0, message: 'SyntaxError: unclosed (' };
+    const { opened } = await opening([{ kind: 'running' }, { kind: 'done', result: result({ ok: false, error }), millis: 5 }], false, { ok: false, error: 'nothing' });
+    expect(opened).toEqual({ ok: false, error: 'Python stopped the model (tree.lpy, line 2): SyntaxError: unclosed (; your text is as it was' });
   });
 
   it('opens nothing when stopped, and ends the worker', async () => {

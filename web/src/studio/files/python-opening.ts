@@ -2,10 +2,11 @@
 // reach): the notice says "Loading Python (about 13 MB, once)…" while Pyodide is fetched (the first
 // model only), then "Running FILE in Python…", each with Stop; what Python derived becomes Meristem
 // text in the import worker. The user's text is never touched before that text exists: a model
-// stopped or failing leaves the editor as it was, with the model's error at its line. When Python
-// cannot be loaded at all (offline before the first model, a browser without WebAssembly), the
-// hand translation opens, with a note saying so.
-import { PythonClient, type PythonOutcome, type PythonRunRequest, type PythonState } from '../../python';
+// stopped leaves the editor as it was. A model whose run stops with an error (at its line), or
+// that Python cannot run at all (offline before the first model, a browser without
+// WebAssembly), opens as its hand translation with a first note saying why, as the CLI's import
+// does; when there is no translation either, the error alone, the editor as it was.
+import { PythonClient, type PythonOutcome, type PythonResult, type PythonRunRequest, type PythonState } from '../../python';
 import type { Notice } from '../page';
 import { dialectName, type OpenedFile } from './grammar-files';
 
@@ -53,11 +54,7 @@ function openOutcome(outcome: PythonOutcome, translated: OpenedFile, path: strin
   switch (outcome.kind) {
     case 'done': {
       const { result, millis } = outcome;
-      if (!result.ok) {
-        const error = result.error;
-        const where = error && error.line > 0 ? `, line ${error.line}${error.column > 0 ? `, column ${error.column}` : ''}` : '';
-        return { ok: false, error: `Python stopped the model (${main}${where}): ${error?.message ?? 'no reason given'}; your text is as it was` };
-      }
+      if (!result.ok) return stoppedByPython(result.error, translated, main);
       const steps = `${result.steps} ${result.steps === 1 ? 'step' : 'steps'}`;
       const source = result.dialect === 'lpfg' ? 'lpfg' : dialectName('lpy');
       return parts.derive(outcome.json, path, `${source}, run by Python (${steps}, ${(millis / 1000).toFixed(1)} s)`);
@@ -70,6 +67,17 @@ function openOutcome(outcome: PythonOutcome, translated: OpenedFile, path: strin
       if (!translated.ok) return { ok: false, error: outcome.message };
       return { ...translated, notes: [`${outcome.message}: this is the translation by hand, without what only Python runs.`, ...translated.notes] };
   }
+}
+
+/**
+ * A model Python stopped (its error at its line): the hand translation, with that error as its
+ * first note, when there is one (as the CLI's import does); else the error, the editor as it was.
+ */
+function stoppedByPython(error: PythonResult['error'], translated: OpenedFile, main: string): OpenedFile {
+  const where = error && error.line > 0 ? `, line ${error.line}${error.column > 0 ? `, column ${error.column}` : ''}` : '';
+  const why = `Python stopped the model (${main}${where}): ${error?.message ?? 'no reason given'}`;
+  if (!translated.ok || translated.text.trim() === '') return { ok: false, error: `${why}; your text is as it was` };
+  return { ...translated, notes: [`${why}; this is the translation by hand.`, ...translated.notes] };
 }
 
 /** A path's last part. */
