@@ -18,8 +18,6 @@ export type OpenedFile =
       dialect: Dialect | null;
       /** What the importer could not translate, `line N: …` (or a note about the encoding). */
       notes: string[];
-      /** What it was read from, when not by the importer alone: `L-Py, run by Python (12 steps, 1.4 s)`. */
-      how?: string;
     }
   | { ok: false; error: string };
 

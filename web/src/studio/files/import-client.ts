@@ -14,11 +14,11 @@ import { openInPython, pagePython } from './python-opening';
 /**
  * Page → import worker: the files a worker imports (one grammar file, or an object's files); with
  * `derived`, what Python derived (`result`: the runtime's JSON) for `main` among them, to be made
- * Meristem text (`how`: how it was read, for the notice).
+ * Meristem text.
  */
 export interface ImportRequest {
   files: ObjectFile[];
-  derived?: { result: string; main: string; how: string };
+  derived?: { result: string; main: string };
 }
 
 /**
@@ -116,7 +116,7 @@ export async function importInWorker(files: ObjectFile[], name: string, parts: F
       return openInPython(outcome.run, outcome.translated, name, {
         notice: parts.notice,
         python: parts.python ?? pagePython,
-        derive: (result, main, how) => importInWorker(files, name, parts, { result, main, how }),
+        derive: (result, main) => importInWorker(files, name, parts, { result, main }),
       });
     case 'failed':
       return { ok: false, error: outcome.message };

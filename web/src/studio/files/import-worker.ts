@@ -23,7 +23,7 @@ addEventListener('message', async (event: MessageEvent<ImportRequest>) => {
   }
   try {
     if (derived) {
-      reply({ kind: 'done', opened: openDerivedBytes(derived.result, derived.main, files, derived.how) });
+      reply({ kind: 'done', opened: openDerivedBytes(derived.result, derived.main, files) });
       return;
     }
     const opened = openObjectBytes(files);

@@ -34,9 +34,9 @@ async function opening(answers: PythonWorkerResponse[], pressStop = false, hand:
   const pending = openInPython(run, hand, 'tree.lpy', {
     notice,
     python: () => python,
-    derive: async (result, main, how) => {
-      derived.push(`${main} | ${how} | ${result}`);
-      return { ok: true, text: 'axiom: F F', dialect: 'lpy', notes: [], how };
+    derive: async (result, main) => {
+      derived.push(`${main} | ${result}`);
+      return { ok: true, text: 'axiom: F F', dialect: 'lpy', notes: [] };
     },
   });
   for (const answer of answers) worker.send(answer);
@@ -47,11 +47,11 @@ async function opening(answers: PythonWorkerResponse[], pressStop = false, hand:
 const result = (fields: object) => JSON.stringify({ ok: true, dialect: 'lpy', steps: 5, lstring: 'F F', materials: [], notes: [], error: null, ...fields });
 
 describe('opening a model in Python', () => {
-  it('says Python loads, then runs the file, and makes text of what it derived, saying how', async () => {
+  it('says Python loads, then runs the file, and makes text of what it derived', async () => {
     const { opened, shown, derived } = await opening([{ kind: 'loading' }, { kind: 'running' }, { kind: 'done', result: result({}), millis: 1234 }]);
     expect(shown).toEqual(['Starting Python for tree.lpy…', 'Loading Python (about 13 MB, once)…', 'Running tree.lpy in Python…', '(hidden)']);
-    expect(derived).toEqual([`models/tree.lpy | L-Py, run by Python (5 steps, 1.2 s) | ${result({})}`]);
-    expect(opened).toMatchObject({ ok: true, text: 'axiom: F F', how: 'L-Py, run by Python (5 steps, 1.2 s)' });
+    expect(derived).toEqual([`models/tree.lpy | ${result({})}`]);
+    expect(opened).toEqual({ ok: true, text: 'axiom: F F', dialect: 'lpy', notes: [] });
   });
 
   it('gives the model’s error at its line and column, as the first note of the hand translation', async () => {

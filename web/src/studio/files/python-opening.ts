@@ -8,7 +8,7 @@
 // does; when there is no translation either, the error alone, the editor as it was.
 import { PythonClient, type PythonOutcome, type PythonResult, type PythonRunRequest, type PythonState } from '../../python';
 import type { Notice } from '../page';
-import { dialectName, type OpenedFile } from './grammar-files';
+import type { OpenedFile } from './grammar-files';
 
 /** The notice's topic while Python loads or runs (only its own notice is taken back). */
 const PYTHON = 'python';
@@ -18,7 +18,7 @@ export interface PythonOpeningParts {
   notice: Notice;
   python: () => PythonClient;
   /** Makes Meristem text of what Python derived (`result`, the runtime's JSON) for `main`, in the import worker. */
-  derive(result: string, main: string, how: string): Promise<OpenedFile>;
+  derive(result: string, main: string): Promise<OpenedFile>;
 }
 
 let shared: PythonClient | undefined;
@@ -53,11 +53,9 @@ function openOutcome(outcome: PythonOutcome, translated: OpenedFile, path: strin
   const main = baseName(path);
   switch (outcome.kind) {
     case 'done': {
-      const { result, millis } = outcome;
+      const { result } = outcome;
       if (!result.ok) return stoppedByPython(result.error, translated, main);
-      const steps = `${result.steps} ${result.steps === 1 ? 'step' : 'steps'}`;
-      const source = result.dialect === 'lpfg' ? 'lpfg' : dialectName('lpy');
-      return parts.derive(outcome.json, path, `${source}, run by Python (${steps}, ${(millis / 1000).toFixed(1)} s)`);
+      return parts.derive(outcome.json, path);
     }
     case 'stopped':
       return { ok: false, error: `you stopped Python while it ran ${name}; your text is as it was` };

@@ -58,10 +58,9 @@ export function unpacked(files: ObjectFile[]): ObjectFile[] | null {
 
 /**
  * Meristem text from what Python derived for `main` (`resultJson`, the runtime's result) with the
- * files it ran (the view file, functions and colours of an lpfg object still apply); `how` says
- * how it was read (for the notice).
+ * files it ran (the view file, functions and colours of an lpfg object still apply). The text
+ * says in its first lines that Python derived it, in how many steps, with which seed.
  */
-export function openDerivedBytes(resultJson: string, main: string, files: ObjectFile[], how: string): OpenedFile {
-  const read = opened(importDerived(resultJson, main, unpacked(files) ?? files, PYTHON_SEED), `Python's result for ${main} could not be read`);
-  return read.ok ? { ...read, how } : read;
+export function openDerivedBytes(resultJson: string, main: string, files: ObjectFile[]): OpenedFile {
+  return opened(importDerived(resultJson, main, unpacked(files) ?? files, PYTHON_SEED), `Python's result for ${main} could not be read`);
 }

@@ -164,7 +164,7 @@ export class TextOpening {
     const tell = (kept: string) => {
       const after = kept ? ` ${kept}` : '';
       if (opened.dialect) {
-        const what = `Imported ${name} from ${opened.how ?? dialectName(opened.dialect)}`;
+        const what = `Imported ${name} from ${dialectName(opened.dialect)}`;
         const n = opened.notes.length;
         notice.show('info', n === 0 ? `${what}: everything was translated.${after}` : `${what}.${after} Not translated, or only approximately (${n}):`, opened.notes);
       } else if (opened.notes.length > 0 || kept) notice.show('info', `Opened ${name}.${after}`, opened.notes);
