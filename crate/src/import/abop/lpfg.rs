@@ -4,6 +4,7 @@
 
 use super::{is_identifier, separate, split_top, Env, Importer, Line};
 use crate::syntax::{PARENTHESES, PARENTHESES_AND_BRACES};
+use crate::vocabulary::{name_of, Command, Meaning};
 
 impl Importer {
     /// The lines of an L+C (lpfg) file in cpfg's terms: `module` declarations are read (a name
@@ -158,6 +159,7 @@ impl Importer {
     /// note) for a name Meristem has no command for.
     fn lpfg_symbol(&mut self, word: &str, a: &str, n: usize) -> String {
         let parts: Vec<&str> = split_top(a, ',');
+        let sphere = name_of(Meaning::Turtle(Command::Sphere));
         match word {
             "SB" => "[".to_string(),
             "EB" => "]".to_string(),
@@ -171,6 +173,27 @@ impl Importer {
             "SetWidth" => format!("#({a})"),
             "SetColor" => format!(";({a})"),
             "Sphere" => format!("@O({a})"),
+            "Sphere0" => sphere.to_string(),
+            // lpfg's polygons (`stdmods.h`): start, vertex, end.
+            "SP" => "{".to_string(),
+            "PP" => ".".to_string(),
+            "EP" => "}".to_string(),
+            "IncColor" => "'".to_string(),
+            "DecColor" => "'(-1)".to_string(),
+            "MoveTo" => format!("@M({a})"),
+            "RollToVert" => "$".to_string(),
+            "Circle" | "Circle0" | "CircleFront" | "CircleFront0" | "CircleB" | "CircleFrontB" => {
+                self.note_once(
+                    "lpfg Circle",
+                    n,
+                    format!("lpfg's {word} draws a disc; Meristem has no disc and draws a sphere of its radius (@O) in its place"),
+                );
+                if a.trim().is_empty() {
+                    sphere.to_string()
+                } else {
+                    format!("{sphere}({a})")
+                }
+            }
             // lpfg's communication modules, with one or two parameters: cpfg's ?E.
             "E1" | "E2" => format!("?E({a})"),
             "Surface3" if parts.len() == 4 => {

@@ -120,3 +120,31 @@ fn python_is_needed_when_the_translation_has_notes_or_draws_nothing() {
     assert!(needs_python(&noted));
     assert!(needs_python(&Import::default()));
 }
+
+#[test]
+fn lpfgs_polygons_and_circles_are_drawn() {
+    let files = [
+        file("o/specifications", "lpfg lsystem.l view.v\n"),
+        file("o/lsystem.l", "module A();\nAxiom: A();\n"),
+        file("o/view.v", ""),
+    ];
+    let result = r#"{"ok": true, "dialect": "lpfg", "steps": 1,
+        "lstring": "SP()F(1)Left(90)F(1)Left(90)F(1)EP()IncColor()Circle(0.5)Circle0()",
+        "materials": [], "notes": [], "error": null}"#;
+    let import = import_derived(result, "o/lsystem.l", &files, 0);
+    assert!(
+        import
+            .text
+            .contains("axiom: {F(1)+(90)F(1)+(90)F(1)}'@O(0.5)@O"),
+        "{}",
+        import.text
+    );
+    assert!(import
+        .notes
+        .iter()
+        .any(|n| n.message.contains("Circle draws a disc")));
+    // The F inside the polygon are its edges, not segments.
+    let stats = stats(&import.text);
+    assert_eq!(stats.segments, 0);
+    assert!(stats.triangles > 0);
+}
