@@ -288,6 +288,21 @@ M(s): { if (s.e == S::E1) produce F(s.c); }
 """
         self.assertEqual(run_lpfg(src)["lstring"], "F(4.0)")
 
+    def test_the_first_view_is_drawn(self):  # as Multiview, LPFG-FibonacciFlorets
+        src = """derivation length: 0;
+Start: { UseView(Big); UseView(Small); }
+Axiom: A B;
+interpretation:
+vgroup Big:
+A(): { produce F(10); }
+vgroup Small:
+A(): { produce F(1); }
+B(): { produce F(2); }
+"""
+        r = run_lpfg(src)
+        self.assertEqual(r["lstring"], "F(10.0)B()")
+        self.assertIn("Small", r["notes"][-1]["message"])
+
     def test_a_gillespie_group_rewrites_one_module_per_step(self):
         src = """derivation length: 5;
 Start: { UseGroup(1); SeedGillespie(3); }
@@ -368,6 +383,12 @@ class ErrorTest(unittest.TestCase):
         r = run_lpfg(src, max_modules=10000)
         self.assertFalse(r["ok"])
         self.assertIn("10000", r["error"]["message"])
+
+    def test_a_loop_that_produces_without_end_stops_at_max_modules_at_its_line(self):
+        src = "derivation length: 1;\nAxiom: A;\nmodule A();\nA(): {\n for (int i = 0; i < 100000000; i++) nproduce F(1);\n produce;\n}\n"
+        r = run_lpfg(src, max_modules=1000)
+        self.assertFalse(r["ok"])
+        self.assertEqual(r["error"]["line"], 5)
 
     def test_every_truncation_of_a_model_gives_a_result_or_an_error_at_a_line(self):
         for source in (COMPOUND_INTERP, RECURSIVE):

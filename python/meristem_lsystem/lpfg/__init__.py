@@ -52,6 +52,9 @@ def run(files, main, options=None):
         result["ok"] = True
         if environment is None:
             _note_queries(final, notes)
+        if len(model.views) > 1:
+            notes.append({"line": 0, "message": f"lpfg draws each view in its own window; here the first, "
+                          f"{model.views[0]}, is drawn (not {', '.join(model.views[1:])})"})
         if any(m[0] == "Terrain" for m in final):
             notes.append({"line": 0, "message": "Terrain: lpfg's terrain (from its own terrain files and camera) is not reproduced"})
     except LpfgError as e:

@@ -14,9 +14,14 @@ from .turtle import answer_queries
 # lpfg's own modules whose parameters are floats (SetColor's are ints: it is left as written).
 PREDEFINED_FLOATS = {
     "F", "f", "Left", "Right", "Up", "Down", "RollL", "RollR", "SetWidth", "Sphere", "Circle",
-    "Surface", "MoveTo", "MoveRel", "Line", "LineTo", "LineRel", "Cylinder", "Rhombus",
+    "MoveTo", "MoveRel", "Line", "LineTo", "LineRel", "Cylinder", "Rhombus",
     "Triangle", "SetHead", "Sphere0", "Circle0", "Elasticity", "SetElasticity", "TropismDirection",
     "CurveScale", "Orient", "E1", "E2",
+}
+# lpfg's own modules with integer parameters (a colour or surface index): C truncates.
+PREDEFINED_TYPED = {
+    "SetColor": [_int], "CurrentTexture": [_int], "Surface": [_int, float],
+    "Surface3": [_int, float, float, float],
 }
 COERCE = {"int": _int, "float": float, "f32": _f32, "bool": lambda v: 1 if v else 0}
 
@@ -27,6 +32,7 @@ class Engine:
         self.ns = namespace
         self.rt = runtime
         self.max_modules = max_modules
+        runtime.max_modules = max_modules
         self.skipper = Skipper(model.ignore, model.consider)
         self.forward_index = {}  # (group, first name) -> productions
         self.backward_index = {}  # (group, last name) -> productions
@@ -36,9 +42,10 @@ class Engine:
             if p.section == "production":
                 self.forward_index.setdefault((p.group, p.pred[0][0]), []).append(p)
                 self.backward_index.setdefault((p.group, p.pred[-1][0]), []).append(p)
-            else:
+            elif getattr(p, "view", None) in (None, 0):  # the first view is the one drawn
                 self.rules[p.section].setdefault((p.group, p.pred[0][0]), []).append(p)
         self.coercers = {name: None for name in PREDEFINED_FLOATS}
+        self.coercers.update(PREDEFINED_TYPED)
         for name, types in model.modules.items():
             self.coercers[name] = [COERCE.get(t, _val) for t in types]
         self.environment = environment
@@ -155,6 +162,8 @@ class Engine:
                 if result is not None:
                     out.extend(result)
                     width = len(p.pred)
+                    if len(out) > self.max_modules:
+                        raise LpfgError(f"the string grew beyond {self.max_modules} modules at step {self.rt.step + 1}")
                     break
             if width:
                 i += width
@@ -176,6 +185,8 @@ class Engine:
                 if result is not None:
                     out_rev.extend(reversed(result))
                     width = len(p.pred)
+                    if len(out_rev) > self.max_modules:
+                        raise LpfgError(f"the string grew beyond {self.max_modules} modules at step {self.rt.step + 1}")
                     break
             if width:
                 i -= width
@@ -297,6 +308,8 @@ class Engine:
     def settle(self, s):
         """What lpfg does before each step (`InterpretForEnvironment`): the turtle answers
         `GetPos` and the other queries, the environment the `E1`/`E2` modules."""
+        if not self.rt.environment_on:
+            return s
         return answer_queries(self, s, self.environment)
 
     def fire_axiom(self):

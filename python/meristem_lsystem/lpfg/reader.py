@@ -43,7 +43,8 @@ class Model:
         self.has_length = False
         self.ring = False
         self.last_line = 1
-        self.gillespie = set()  # groups rewritten one reaction at a time (ggroup)
+        self.gillespie = set()
+        self.views = []  # vgroup names in order of appearance  # groups rewritten one reaction at a time (ggroup)
 
 
 class Reader(BodyTranslator):
@@ -52,6 +53,7 @@ class Reader(BodyTranslator):
         self.model = Model()
         self.section = "production"
         self.group = 0
+        self.view = None  # the vgroup being read, by its number in order of appearance
         self.current_return = None
         for name in function_names:
             self.globals[name] = (py_name(name), "int")
@@ -90,6 +92,7 @@ class Reader(BodyTranslator):
             self.next()
             self.section = SECTIONS[v]
             self.group = 0
+            self.view = None
             return
         handler = {
             "module": self.module_declaration, "Axiom": self.axiom, "axiom": self.axiom,
@@ -198,16 +201,23 @@ class Reader(BodyTranslator):
         word = self.next()[1]
         t = self.next()
         self.expect(":")
-        if t[0] == "num":
+        if word in ("vgroup", "window"):
+            # a view's interpretation rules: lpfg draws each view in its own window
+            if t[1] not in self.model.views:
+                self.model.views.append(t[1])
+            self.view = self.model.views.index(t[1])
+        elif t[0] == "num":
             self.group = int(float(t[1].rstrip("fFlL")))
             if word == "ggroup":
                 self.model.gillespie.add(self.group)
-        # a view group (vgroup) is drawn like the rest: its modules keep group 0
 
     def group_end(self):
-        self.next()
+        word = self.next()[1]
         self.accept(";")
-        self.group = 0
+        if word in ("endvgroup", "endwindow"):
+            self.view = None
+        else:
+            self.group = 0
 
     def skip_statement(self):
         while not self.accept(";"):
@@ -274,6 +284,7 @@ class Reader(BodyTranslator):
         self.model.productions.append(Production(
             self.section, self.group, parts["left"], left_new, parts["pred"],
             parts["right"], right_new, func, start[2]))
+        self.model.productions[-1].view = self.view
         self.function_body(func, names, None)
 
     def function_body(self, name, params, return_type, method_of=None, initialisers=False):

@@ -304,6 +304,16 @@ MATHS = {
 }
 
 
+# lpfg's calls that read files this runtime does not read: an error naming the construct.
+UNSUPPORTED_CALLS = {
+    **{name: "lpfg's contour and curve files (.con, .crv) are not read here" for name in (
+        "curveX", "curveY", "curveZ", "curveXY", "curveXYZ", "curveXYf", "curveXYd",
+        "curveXYZf", "curveXYZd")},
+    "Interpolate": "lpfg's B-spline surface objects are not reproduced",
+    "GetSurface": "lpfg's B-spline surface objects are not reproduced",
+}
+
+
 class Runtime:
     """The per-run state that lpfg's calls change, and the namespace the model runs in."""
 
@@ -321,6 +331,8 @@ class Runtime:
         self.step = 0
         self.line = 0  # the line of the production running, for notes
         self.source_lines = []  # the translated source, for the lines of notes
+        self.max_modules = 2_000_000
+        self.environment_on = True
         self.propensity = 1.0  # the rate the last ggroup production gave
         ZeroDivisionNote.notify = self.zero_division
 
@@ -369,6 +381,9 @@ class Runtime:
             "_propensity": self.set_propensity, "SeedGillespie": lambda s=0: self.rng.seed(int(s)),
             "expf": _safe(math.exp), "sqrtf": _safe(math.sqrt), "powf": _pow, "fabsf": lambda x: abs(float(x)),
             "logf": _log, "sinf": math.sin, "cosf": math.cos, "floorf": lambda x: float(math.floor(x)),
+            "IsForward": lambda: 1 if self.direction == "forward" else 0,
+            "Environment": lambda: self.set_environment(True),
+            "NoEnvironment": lambda: self.set_environment(False),
             "UserMenuItem": lambda *a: None, "UserMenuChoice": self.menu_choice,
             "Stop": self.do_stop, "Forward": lambda: self.set_direction("forward"),
             "Backward": lambda: self.set_direction("backward"), "UseGroup": self.use_group,
@@ -377,8 +392,8 @@ class Runtime:
             "Printf": self.printf, "printf": self.printf,
             "fprintf": lambda stream, *a: self.printf(*a) if stream is None else 0,
             "fflush": lambda *a: 0, "puts": lambda text: self.printf(str(text) + "\n"),
-            "UseView": self.ignored("UseView", "lpfg's views are drawn here in one scene"),
-            "CloseView": self.ignored("CloseView", "lpfg's views are drawn here in one scene"),
+            "UseView": self.ignored("UseView", "lpfg opens a window per view; here only the first view is drawn"),
+            "CloseView": lambda *a: 0,
             "DisplayFrame": self.ignored("DisplayFrame", "animation frames are not written"),
             "fopen": self.no_file, "fclose": lambda *a: 0,
             "stdout": None, "stderr": None, "exit": self.do_exit, "assert": lambda c: None,
@@ -388,7 +403,14 @@ class Runtime:
             "StopSimulation": lambda: None, "terrainVisibilityAll": lambda *a: None,
             "Shaded": 0, "Wireframe": 1, "Hidden": 2,
         })
+        for name in UNSUPPORTED_CALLS:
+            ns[name] = self.unsupported(name)
         return ns
+
+    def unsupported(self, name):
+        def call(*args):
+            raise LpfgError(f"{name}: {UNSUPPORTED_CALLS[name]}")
+        return call
 
     def mouse(self):
         self.note_once("mouse", "GetMouseStatus: an interactive model; here the mouse never moves "
@@ -404,6 +426,13 @@ class Runtime:
 
     def nproduce(self, *modules):
         self.buffer.extend(modules)
+        if len(self.buffer) > self.max_modules:
+            raise LpfgError(f"one successor grew beyond {self.max_modules} modules")
+
+    def set_environment(self, on):
+        """lpfg's Environment()/NoEnvironment(): whether the step before each derivation runs
+        (the turtle's queries and the environmental program)."""
+        self.environment_on = on
 
     def menu_choice(self):
         self.note_once("menu", "UserMenuChoice: the model's own menu is not shown; no item is ever chosen (-1)")
