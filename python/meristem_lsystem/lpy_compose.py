@@ -6,7 +6,7 @@ file is taken from the run's `files`; it shares the run's limits and clock."""
 from __future__ import annotations
 
 from .lpy_errors import ModelError
-from .lstring import Lstring, to_modules
+from .lstring import Lstring, StringReader, to_modules
 
 
 class SubLsystem:
@@ -19,7 +19,11 @@ class SubLsystem:
         options = dict(parent.options, steps=None)
         options["time_limit"] = max(0.0, parent.deadline - __import__("time").monotonic())
         self._rt = LpyRuntime(parent.files, name, options, parameters)
-        self._rt.load()
+        reader = StringReader.current
+        try:
+            self._rt.load()
+        finally:
+            StringReader.current = reader
 
     @property
     def axiom(self):

@@ -13,7 +13,7 @@ import time
 _now = time.monotonic
 
 from .lpy_errors import LimitReached
-from .lpy_match import end_of_branch, match_left, match_pred, match_right
+from .lpy_match import Reversed, end_of_branch, match_left, match_pred, match_right
 from .lstring import Lstring, to_modules
 
 
@@ -78,8 +78,11 @@ def match_rule(rt, rule, s, i, new, forward: bool):
     if not length:
         return None
     end = start + length
-    if rule.new_right and not match_right(rule.new_right, 0, s, end, args, filt):
-        return None
+    if rule.new_right:
+        # `>>`: deriving backwards, the new string to the right is already built
+        target, at = (s, end) if forward else (Reversed(new), 0)
+        if not match_right(rule.new_right, 0, target, at, args, filt):
+            return None
     if rule.right and not match_right(rule.right, 0, s, end, args, filt):
         return None
     return args, length
@@ -102,21 +105,42 @@ def rewrite(rt, s: list, kind: str, depth: int = 1) -> tuple[list, bool]:
     n = len(s)
     out: list = []
     i = 0
+    buffered = rt.nbuf
     while i < n:
         m = s[i]
         if m.name == "%":
             i = end_of_branch(s, i + 1)
             continue
         for rule in table.get(m.name, stars):
-            got = try_rule(rt, rule, s, i, out, True)
-            if got is not None:
-                produced = got[0]
-                if depth > 1 and produced:
-                    produced, _ = rewrite(rt, produced, kind, depth - 1)
-                out.extend(produced)
-                i += got[1]
-                applied = True
-                break
+            if rule.simple:
+                # the common case inlined (one module, plain parameters, no context)
+                args = m.args
+                if len(args) != rule.nargs:
+                    continue
+                if _now() > rt.deadline:
+                    raise LimitReached(f"the derivation passed the time limit ({rt.options.get('time_limit', 50)} s)")
+                buffered.clear()
+                result = rule.func(*args)
+                if result is None:
+                    if not buffered:
+                        continue
+                    produced = buffered[:]
+                else:
+                    if type(result) is not list:
+                        result = to_modules(result)
+                    produced = buffered + result if buffered else result
+                length = 1
+            else:
+                got = try_rule(rt, rule, s, i, out, True)
+                if got is None:
+                    continue
+                produced, length = got
+            if depth > 1 and produced:
+                produced, _ = rewrite(rt, produced, kind, depth - 1)
+            out.extend(produced)
+            i += length
+            applied = True
+            break
         else:
             out.append(m)
             i += 1
@@ -127,18 +151,21 @@ def rewrite_backward(rt, s: list, table) -> tuple[list, bool]:
     """The same from the string's end (after `backward()`): predecessors end at the module."""
     applied = False
     chunks: list = []
+    built = []  # what is built so far, last module first (read by `>>` through Reversed)
     i = len(s) - 1
     while i >= 0:
         m = s[i]
         for rule in candidates(rt, table, m.name):
-            got = try_rule(rt, rule, s, i, chunks, False)
+            got = try_rule(rt, rule, s, i, built, False)
             if got is not None:
                 chunks.append(got[0])
+                built.extend(reversed(got[0]))
                 i -= got[1]
                 applied = True
                 break
         else:
             chunks.append([m])
+            built.append(m)
             i -= 1
     out = []
     for chunk in reversed(chunks):
@@ -193,27 +220,27 @@ def derive(rt) -> Lstring:
 
 
 def derive_from(rt, s, start: int, steps: int) -> Lstring:
-    """L-Py's `__derive`: the loop ends early when no rule applies (`End` then is not called)."""
+    """L-Py's `__derive` with its default options: every step runs even when no rule applies
+    ("Early return when no matching" is Disabled by default), `Stop()` ends the loop early."""
     if start == 0:
         rt.iteration = 0
         call_hook(rt, "Start", s)
     done = 0
-    has_rules = bool(rt.all_rules)
-    for it in range(start, start + steps if has_rules and s else start):
+    for it in range(start, start + steps):
         rt.iteration = it
         call_hook(rt, "StartEach", s)
-        s, matched = rewrite(rt, s, "production")
+        s, _ = rewrite(rt, s, "production")
         check_size(rt, s)
-        s, decomposed = decompose(rt, s, "decomposition")
+        s, _ = decompose(rt, s, "decomposition")
         s = Lstring(s)
         replaced = call_hook(rt, "EndEach", s)
         if replaced is not None:
             s = replaced
         done = it + 1 - start
-        if rt.stop_requested or not (matched or decomposed):
+        if rt.stop_requested:
             break
     rt.steps_done = done
-    if start + done == start + steps or not has_rules:
+    if not rt.stop_requested:
         rt.iteration = start + steps
         replaced = call_hook(rt, "End", s)
         if replaced is not None:

@@ -22,14 +22,16 @@ class LimitReached(Exception):
 
 def from_exception(exc: BaseException, filename: str) -> ModelError:
     """A Python exception raised while the model ran, located at the model's deepest line."""
-    if isinstance(exc, ModelError):
-        return exc
     if isinstance(exc, SyntaxError) and exc.filename == filename:
         return ModelError(f"SyntaxError: {exc.msg}", exc.lineno or 0, exc.offset or 0)
     line = 0
     for frame, lineno in traceback.walk_tb(exc.__traceback__):
         if frame.f_code.co_filename == filename:
             line = lineno
+    if isinstance(exc, ModelError):
+        if not exc.line:
+            exc.line = line
+        return exc
     text = f"{type(exc).__name__}: {exc}"
     if isinstance(exc, (ImportError, ModuleNotFoundError)):
         text += " (Meristem runs models with Python's standard library and PlantGL's names only)"

@@ -29,14 +29,22 @@ class NameTable:
 
     def __init__(self, predefined: dict[str, str]):
         self.names = dict(predefined)
-        self.maxlen = max(len(n) for n in self.names)
+        self.lengths: dict[str, list[int]] = {}  # first character → name lengths, longest first
+        for name in self.names:
+            self._index(name)
+
+    def _index(self, name: str):
+        lengths = self.lengths.setdefault(name[0], [])
+        if len(name) not in lengths:
+            lengths.append(len(name))
+            lengths.sort(reverse=True)
 
     def declare(self, name: str, alias_of: str | None = None):
         self.names[name] = self.names.get(alias_of, alias_of) if alias_of else name
-        self.maxlen = max(self.maxlen, len(name))
+        self._index(name)
 
     def match(self, text: str, i: int) -> tuple[str, int]:
-        for w in range(min(self.maxlen, len(text) - i), 0, -1):
+        for w in self.lengths.get(text[i], ()):
             primary = self.names.get(text[i : i + w])
             if primary is not None:
                 return primary, w
@@ -80,7 +88,22 @@ def closing_paren(text: str, i: int, line: int) -> int:
     raise LpySyntaxError("unclosed '(' in module parameters", line)
 
 
-def parse_modules(text: str, names: NameTable, line: int = 0) -> list[ModuleText]:
+PATTERN_WORDS = (("all", "x"), ("x", "x"), ("or", "or"), ("?I", "?I"))
+
+
+def pattern_word(text: str, i: int) -> tuple[str, int] | None:
+    """`x(`/`all(` (repetition), `or(` and `?I` read as pattern constructs at `i`."""
+    for word, name in PATTERN_WORDS:
+        if text.startswith(word, i):
+            j = i + len(word)
+            while j < len(text) and text[j] in " \t":
+                j += 1
+            if name == "?I" or (j < len(text) and text[j] == "("):
+                return name, len(word)
+    return None
+
+
+def parse_modules(text: str, names: NameTable, line: int = 0, pattern: bool = False) -> list[ModuleText]:
     out: list[ModuleText] = []
     i, n = 0, len(text)
     while i < n:
@@ -95,12 +118,21 @@ def parse_modules(text: str, names: NameTable, line: int = 0) -> list[ModuleText
         if c in "()":
             raise LpySyntaxError(f"found a module named '{c}'", line + text.count("\n", 0, i))
         start = i
-        name, width = names.match(text, i)
+        special = pattern_word(text, i) if pattern else None
+        name, width = special or names.match(text, i)
         i += width
         surface = None
         if name == "~" and i < n and text[i] not in "( \t\n":
             surface = text[i]
             i += 1
+        elif name == "$":
+            # `$Name(var)` in a pattern binds the whole module; `$var` in a successor emits it
+            j = i
+            while j < n and (text[j].isalnum() or text[j] == "_"):
+                j += 1
+            if j == i:
+                raise LpySyntaxError("'$' must be followed by a name", line + text.count("\n", 0, i))
+            surface, i = text[i:j], j
         j = i
         while j < n and text[j] in " \t":
             j += 1
@@ -139,7 +171,8 @@ def to_python(text: str, names: NameTable, line: int = 0) -> str:
     items = []
     for m in parse_modules(text, names, line):
         if m.name == "$":
-            raise LpySyntaxError("'$' (GetModule) is not supported in successors", line)
+            items.append(f"__Mcopy({m.surface})")
+            continue
         args = m.args or ""
         if m.name in ("*", "new"):
             # `*(name, args…)` / `new(name, args…)`: a module whose name is computed;

@@ -26,6 +26,12 @@ class Pattern:
         """Appends the bound values to `out`; False (out untouched) when `m` does not match."""
         args = m.args
         specs = self.specs
+        if specs and specs[0][0] == "module":
+            # `$Name(m)`: the whole module, whatever its parameters
+            if self.name != m.name:
+                return False
+            out.append(m)
+            return True
         if self.name == "*":
             # `*(name, args…)`: the first spec takes the name
             if not specs:
@@ -131,40 +137,99 @@ def end_of_branch(s: list, j: int) -> int:
     return len(s)
 
 
-def match_right(pats: list, pi: int, s: list, j: int, out: list, filt: ContextFilter) -> bool:
+def match_right(pats: list, pi: int, s, j: int, out: list, filt: ContextFilter) -> bool:
     """Matches `pats[pi:]` from `j` onwards."""
+    return right_end(pats, pi, s, j, out, filt) >= 0
+
+
+def skip_ignored(s, j: int, n: int, filt: ContextFilter) -> int:
+    while j < n and s[j].name not in BRACKETS and filt.skipped(s[j].name):
+        j += 1
+    return j
+
+
+def right_end(pats: list, pi: int, s, j: int, out: list, filt: ContextFilter) -> int:
+    """Matches `pats[pi:]` from `j`; the index after the match, or -1.
+
+    Long because: one walk handles the bracket cases and the repetition `x(...)` together."""
     n = len(s)
     while pi < len(pats):
         p = pats[pi]
-        while j < n and s[j].name not in BRACKETS and filt.skipped(s[j].name):
-            j += 1
+        j = skip_ignored(s, j, n, filt)
         if p.name == "]":
             j = end_of_branch(s, j)
             if j >= n:
-                return False
+                return -1
             j += 1
             pi += 1
             continue
+        if p.name == "x" and p.specs and p.specs[0][0] == "repeat":
+            j = repeat(p.specs[0][1], s, j, out, filt)
+            pi += 1
+            continue
         if j >= n:
-            return False
+            return -1
         name = s[j].name
         if p.name == "[":
             while j < n and s[j].name == "[":
                 mark = len(out)
-                if match_right(pats, pi + 1, s, j + 1, out, filt):
-                    return True
+                end = right_end(pats, pi + 1, s, j + 1, out, filt)
+                if end >= 0:
+                    return end
                 del out[mark:]
-                j = end_of_branch(s, j + 1) + 1
-                while j < n and s[j].name not in BRACKETS and filt.skipped(s[j].name):
-                    j += 1
-            return False
+                j = skip_ignored(s, end_of_branch(s, j + 1) + 1, n, filt)
+            return -1
         if name == "[":
             j = end_of_branch(s, j + 1) + 1
             continue
         if name == "]":
-            return False
+            return -1
         if not p.bind(s[j], out):
-            return False
+            return -1
         j += 1
         pi += 1
-    return True
+    return j
+
+
+def repeat(inner: list, s, j: int, out: list, filt: ContextFilter) -> int:
+    """`x(pattern)`: the pattern as many times as it matches; each variable gets the list of
+    its values (L-Py's repetition in contexts, e.g. `>> x([I(w)])` for every child branch)."""
+    columns: list | None = None
+    while True:
+        trial: list = []
+        end = right_end(inner, 0, s, j, trial, filt)
+        if end < 0 or end <= j:
+            break
+        if columns is None:
+            columns = [[] for _ in trial]
+        for column, value in zip(columns, trial):
+            column.append(value)
+        j = end
+    out.extend(columns if columns is not None else [[] for _ in range(count_vars(inner))])
+    return j
+
+
+def count_vars(pats: list) -> int:
+    total = 0
+    for p in pats:
+        for kind, value in p.specs:
+            if kind == "repeat":
+                total += count_vars(value)
+            elif kind != "const":
+                total += 1
+    return total
+
+
+class Reversed:
+    """A backwards-built string seen from left to right (for `>>` when deriving backwards)."""
+
+    __slots__ = ("items",)
+
+    def __init__(self, items: list):
+        self.items = items
+
+    def __len__(self):
+        return len(self.items)
+
+    def __getitem__(self, j):
+        return self.items[len(self.items) - 1 - j]

@@ -22,13 +22,25 @@ from .lstring import Lstring, Module, StringReader, make_module, predefined_name
 from . import plantgl_modules
 
 
+def compile_quietly(code: str, filename: str):
+    """Compiles the model's Python; its SyntaxWarnings (`is` with a literal …) are not ours."""
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        return compile(code, filename, "exec")
+
+
 class Rule:
     __slots__ = ("spec", "func", "order", "pred", "left", "right", "new_left", "new_right",
                  "first", "group", "simple", "nargs")
 
     def __init__(self, spec, func, order, consts):
         self.spec, self.func, self.order, self.group = spec, func, order, spec.group
-        compile_ = lambda pats: [Pattern(p.name, [(k, consts(k, v)) for k, v in p.specs]) for p in pats]
+        def compile_(pats):
+            return [Pattern(p.name, [(k, compile_(v) if k == "repeat" else consts(k, v)) for k, v in p.specs])
+                    for p in pats]
+
         self.pred, self.left, self.right = compile_(spec.pred), compile_(spec.left), compile_(spec.right)
         self.new_left, self.new_right = compile_(spec.new_left), compile_(spec.new_right)
         self.first = self.pred[0].name
@@ -77,7 +89,7 @@ class LpyRuntime:
             rt.nbuf.extend(to_modules(value))
 
         return {
-            "__M": make_module, "__Mstar": lambda name, *args: Module(name, list(args)),
+            "__M": make_module, "__Mcopy": lambda m: m.copy() if isinstance(m, Module) else to_modules(m)[0], "__Mstar": lambda name, *args: Module(name, list(args)),
             "__produce": lambda mods: mods, "__nproduce": rt.nbuf_extend,
             "nsproduce": nproduce, "pproduce": nproduce,
             "getIterationNb": lambda: rt.iteration, "execContext": lambda: rt.context, "Stop": rt.stop, "stop": rt.stop,
@@ -87,7 +99,36 @@ class LpyRuntime:
             "extern": extern, "frameDisplay": lambda *a: None, "isAnimationEnabled": lambda: False,
             "Lsystem": rt.sub_lsystem, "xrange": range, "unicode": str, "long": int,
             "getDerivationLength": lambda: rt.derivation_length,
+            "open": rt.open_file, "requestSelection": rt.request_selection,
         }
+
+    def open_file(self, name, mode="r", *args, **kw):
+        """The model's `open`: its own files from `files` (read); writes are kept nowhere."""
+        import io
+
+        base = str(name).replace("\\", "/").split("/")[-1]
+        if any(c in mode for c in "wax+"):
+            self.note(f"the model writes '{base}': Meristem keeps no files (the text is dropped)")
+            return io.StringIO()
+        if base not in self.files:
+            raise FileNotFoundError(f"no file '{base}' came with the model")
+        return io.StringIO(self.files[base])
+
+    def request_selection(self, *args):
+        self.note("interactive selection is not available: the model continues without one")
+
+    def note(self, message: str):
+        """A note at the model's line that is running now."""
+        import sys
+
+        line, frame = 0, sys._getframe(1)
+        while frame is not None:
+            if frame.f_code.co_filename == self.filename:
+                line = frame.f_lineno
+                break
+            frame = frame.f_back
+        if not any(n["message"] == message for n in self.notes):
+            self.notes.append({"line": line, "message": message})
 
     def read_string(self, text: str) -> list:
         """A module string given as text while the model runs: its parameters are evaluated
@@ -128,6 +169,7 @@ class LpyRuntime:
         except LpySyntaxError as e:
             raise ModelError(f"SyntaxError: {e.message}", e.line, e.column) from None
         src = self.source
+        self.notes.extend(src.notes)
         StringReader.current = self.read_string
         Module.named.update({name: {p: i for i, p in enumerate(params)}
                              for name, params in src.declared.items() if params})
@@ -140,15 +182,15 @@ class LpyRuntime:
         plantgl_modules.install({"Lsystem": self.sub_lsystem})
         try:
             if src.init_code is not None:
-                exec(compile(src.init_code, self.filename, "exec"), ns)
+                exec(compile_quietly(src.init_code, self.filename), ns)
                 init = ns.get("__initialiseContext__")
                 if init:
                     init(self.context)
-            exec(compile(src.code, self.filename, "exec"), ns)
+            exec(compile_quietly(src.code, self.filename), ns)
             for name, value in self.parameters.items():
                 ns[name] = value
             self._build_rules()
-        except (ModelError, LimitReached):
+        except LimitReached:
             raise
         except Exception as e:  # the model's own code failed
             raise from_exception(e, self.filename) from None
@@ -172,7 +214,8 @@ class LpyRuntime:
         steps = self.options.get("steps")
         if steps is not None:
             return int(steps)
-        return int(self.namespace.get("__derivation_length__") or 0)
+        # L-Py's default derivation length is 1 (lsystem.cpp: __max_derivation(1))
+        return int(self.namespace.get("__derivation_length__", 1) or 0)
 
     def axiom(self) -> Lstring:
         ax = self.namespace.get("__axiom__", [])

@@ -23,6 +23,10 @@ COND = re.compile(r"([A-Za-z_][A-Za-z0-9_]*)\s*(==|!=|<=|>=|<|>|\bin\b|\bnot\s+i
 IDENT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\Z")
 
 
+class Unsupported(Exception):
+    """A pattern construct this runtime does not match: its rule is left out, with a note."""
+
+
 @dataclass
 class PatternModule:
     name: str
@@ -77,6 +81,10 @@ def find_top(text: str, token: str, start: int = 0, opening: str = "([{", closin
 
 def declare_modules(text: str, names: NameTable, declared: dict, line: int):
     """`module A(x, y), B = A, C : scale = 1`: names, named parameters and aliases."""
+    comment = find_top(text, "#")
+    text = text if comment < 0 else text[:comment]
+    if "#" in text:
+        text = text.split("#", 1)[0]
     body = text.split(":", 1)[0] if find_top(text, ":") >= 0 else text
     for piece in split_args(body):
         if not piece:
@@ -96,7 +104,16 @@ def declare_modules(text: str, names: NameTable, declared: dict, line: int):
 
 def pattern(text: str, names: NameTable, line: int) -> list[PatternModule]:
     out = []
-    for m in parse_modules(text, names, line):
+    for m in parse_modules(text, names, line, pattern=True):
+        if m.name in ("?I", "or"):
+            raise Unsupported(f"'{m.name}' patterns are not available")
+        if m.name == "x" and m.args and m.args.strip():
+            out.append(PatternModule("x", [("repeat", pattern(m.args, names, line))]))
+            continue
+        if m.name == "$":
+            target = names.names.get(m.surface, m.surface)
+            out.append(PatternModule(target, [("module", (m.args or "").strip() or "_")]))
+            continue
         specs = []
         if m.surface is not None:
             specs.append(("const", repr(m.surface)))
@@ -150,12 +167,25 @@ def split_header(header: str) -> dict[str, str]:
     return parts
 
 
+def pattern_params(part: list) -> list[str]:
+    params = []
+    for pm in part:
+        for kind, value in pm.specs:
+            if kind == "repeat":
+                params.extend(pattern_params(value))
+            elif kind == "cond":
+                params.append(value[0])
+            elif kind != "const":
+                params.append(value)
+    return params
+
+
 def rule_params(spec: RuleSpec) -> list[str]:
     """The rule function's parameters, in the header's order; `*args` arrive as one list."""
     params = []
     for part in (spec.left, spec.new_left, spec.pred, spec.new_right, spec.right):
-        for pm in part:
-            params.extend(v[0] if k == "cond" else v for k, v in pm.specs if k != "const")
+        params.extend(pattern_params(part))
+    # named modules the header binds twice would be a Python error: L-Py refuses them too
     return params
 
 
@@ -201,6 +231,40 @@ def transform_code(line: str, names: NameTable, lineno: int, produce: bool) -> s
     return "".join(out)
 
 
+SUCCESSOR_LINE = re.compile(r"-->|-static->|\bn?produce\b")
+
+
+def balance(line: str) -> int:
+    """Open parentheses left at the line's end (strings and comments skipped)."""
+    depth, j = 0, 0
+    while j < len(line):
+        c = line[j]
+        if c in "'\"":
+            j = skip_string(line, j)
+            continue
+        if c == "#":
+            break
+        depth += (c == "(") - (c == ")")
+        j += 1
+    return depth
+
+
+def join_continued_successors(lines: list[str]) -> list[str]:
+    """A successor whose parentheses close on later lines is joined into its first line; the
+    lines it took stay, blank, so every other line keeps its number."""
+    lines = list(lines)
+    for i, line in enumerate(lines):
+        if not SUCCESSOR_LINE.search(line) or balance(line) <= 0:
+            continue
+        joined, k = line, i + 1
+        while balance(joined) > 0 and k < len(lines) and k - i <= 30:
+            joined += " " + lines[k].strip()
+            lines[k] = ""
+            k += 1
+        lines[i] = joined
+    return lines
+
+
 def keyword(line: str, *words: str) -> str | None:
     """The text after `word:` when the line starts with one of `words` followed by ':'."""
     for w in words:
@@ -225,7 +289,7 @@ def translate(text: str, predefined: dict[str, str]) -> LpySource:
     if cut >= 0:
         init_code = "\n" * text.count("\n", 0, cut) + text[cut:]
         text = text[:cut]
-    lines = text.split("\n")
+    lines = join_continued_successors(text.split("\n"))
     names = NameTable(predefined)
     declared: dict[str, list[str]] = {}
     collect_declarations(lines, names, declared)
@@ -349,10 +413,18 @@ def rule_line(line: str, no: int, src: LpySource, kind: str, group: int) -> str:
         raise LpySyntaxError("a rule needs '-->' or ':' after its predecessor", no, 1)
     cut = arrow if arrow >= 0 and (colon < 0 or arrow < colon) else colon
     header = split_header(line[:cut])
-    spec = RuleSpec(kind, group, no, f"__rule_{len(src.rules)}__",
-                    pattern(header["pred"], src.names, no), pattern(header["left"], src.names, no),
-                    pattern(header["right"], src.names, no), pattern(header["new_left"], src.names, no),
-                    pattern(header["new_right"], src.names, no), static)
+    try:
+        spec = RuleSpec(kind, group, no, f"__rule_{len(src.rules)}__",
+                        pattern(header["pred"], src.names, no), pattern(header["left"], src.names, no),
+                        pattern(header["right"], src.names, no), pattern(header["new_left"], src.names, no),
+                        pattern(header["new_right"], src.names, no), static)
+    except Unsupported as e:
+        src.notes.append({"line": no, "message": f"rule left out: {e}"})
+        name = f"__unused_rule_{no}__"
+        if cut == arrow:
+            return f"def {name}(*args): pass"
+        rest = line[colon + 1 :]
+        return f"def {name}(*args):" + (" " + transform_code(rest, src.names, no, True) if rest.strip() else "")
     if not spec.pred:
         raise LpySyntaxError("a rule without a predecessor", no, 1)
     src.rules.append(spec)

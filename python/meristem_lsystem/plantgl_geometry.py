@@ -40,9 +40,15 @@ class Point4Array(_PointArray):
     KIND = Vector4
 
 
+def _point4(p) -> Vector4:
+    """A control point with its weight; three coordinates get weight 1."""
+    values = list(p)
+    return Vector4(*(values + [1.0] if len(values) == 3 else values))
+
+
 class Point4Matrix(list):
     def __init__(self, rows=()):
-        super().__init__([p if isinstance(p, _Vector) else Vector4(*p) for p in row] for row in rows)
+        super().__init__([p if isinstance(p, Vector4) else _point4(p) for p in row] for row in rows)
 
 
 def _clamped_knots(n: int, degree: int) -> list[float]:
@@ -97,6 +103,24 @@ class _Curve:
     def getLength(self):
         pts = self.sample(100)
         return sum((q - p).norm() for p, q in zip(pts, pts[1:]))
+
+    def deepcopy(self):
+        import copy
+
+        return copy.deepcopy(self)
+
+    def getArcLengthToUMapping(self):
+        """The function from normalised arc length in [0, 1] to the curve's parameter."""
+        count = 101
+        a, b = self.firstKnot, self.lastKnot
+        us = [a + (b - a) * i / (count - 1) for i in range(count)]
+        pts = [self.getPointAt(u) for u in us]
+        lengths = [0.0]
+        for p, q in zip(pts, pts[1:]):
+            lengths.append(lengths[-1] + (q - p).norm())
+        total = lengths[-1] or 1.0
+        curve = Polyline2D([(length / total, u) for length, u in zip(lengths, us)])
+        return QuantisedFunction(curve, count)
 
     def describe(self):
         return {"type": type(self).__name__, "points": [list(p) for p in self.sample()]}
@@ -209,10 +233,45 @@ class NurbsPatch:
         w = r[3] or 1.0
         return Vector3(r[0] / w, r[1] / w, r[2] / w)
 
+    def _derivative(self, u, v, du, dv):
+        h = 1e-4
+        a = self.getPointAt(max(0.0, u - h * du), max(0.0, v - h * dv))
+        b = self.getPointAt(min(1.0, u + h * du), min(1.0, v + h * dv))
+        return (b - a) / (2 * h)
+
+    def getUTangentAt(self, u, v):
+        return self._derivative(u, v, 1, 0)
+
+    def getVTangentAt(self, u, v):
+        return self._derivative(u, v, 0, 1)
+
+    def getNormalAt(self, u, v):
+        return (self.getUTangentAt(u, v) ^ self.getVTangentAt(u, v)).normed()
+
+    def getIsoUSectionAt(self, u):
+        """The NURBS curve of the surface at `u` (control points: the columns blended at u)."""
+        cols = list(zip(*self.ctrlPointMatrix))
+        ctrl = []
+        for col in cols:
+            homog = [[p[0] * p[3], p[1] * p[3], p[2] * p[3], p[3]] for p in col]
+            x, y, z, w = _de_boor(homog, self.uknotList, self.udegree, u)
+            w = w or 1.0
+            ctrl.append(Vector4(x / w, y / w, z / w, w))
+        return NurbsCurve(ctrl, self.vknotList, self.vdegree)
+
+    def getIsoVSectionAt(self, v):
+        ctrl = []
+        for row in self.ctrlPointMatrix:
+            homog = [[p[0] * p[3], p[1] * p[3], p[2] * p[3], p[3]] for p in row]
+            x, y, z, w = _de_boor(homog, self.vknotList, self.vdegree, v)
+            w = w or 1.0
+            ctrl.append(Vector4(x / w, y / w, z / w, w))
+        return NurbsCurve(ctrl, self.uknotList, self.udegree)
+
     def describe(self, count=12):
         grid = [[list(self.getPointAt(i / (count - 1), j / (count - 1))) for j in range(count)]
                 for i in range(count)]
-        return {"type": "NurbsPatch", "points": grid}
+        return {"type": type(self).__name__, "points": grid}
 
 
 class BezierPatch(NurbsPatch):
@@ -291,22 +350,151 @@ class Texture2D(Material):
         self.image = kw.get("image", args[0] if args else None)
 
 
+class Point3Grid:
+    """PlantGL's point grid for neighbourhood queries: points hashed into cubic voxels (the
+    given voxel size, else about 8 points a voxel), balls and cones, points switched off."""
+
+    def __init__(self, a, b=None, *rest):
+        first_is_points = isinstance(a, (list, tuple)) and len(a) and not isinstance(a[0], (int, float))
+        points, other = (a, b) if first_is_points else (b, a)
+        self.points = [p if isinstance(p, _Vector) else Vector3(*p) for p in points]
+        self.enabled = [True] * len(self.points)
+        size = None
+        if other is not None and not isinstance(other, (int, float)):
+            size = max(float(x) for x in other)
+        if not size and self.points:
+            lo = [min(p[k] for p in self.points) for k in range(3)]
+            hi = [max(p[k] for p in self.points) for k in range(3)]
+            volume = max((hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]), 1e-9)
+            size = (volume * 8 / len(self.points)) ** (1 / 3)
+        self.size = size or 1.0
+        self.cells: dict = {}
+        for i, p in enumerate(self.points):
+            self.cells.setdefault(self._cell(p), []).append(i)
+
+    def _cell(self, p):
+        k = self.size
+        return (int(p[0] // k), int(p[1] // k), int(p[2] // k))
+
+    def _near(self, center, radius):
+        k = self.size
+        lo = [int((center[d] - radius) // k) for d in range(3)]
+        hi = [int((center[d] + radius) // k) for d in range(3)]
+        cells = self.cells
+        for x in range(lo[0], hi[0] + 1):
+            for y in range(lo[1], hi[1] + 1):
+                for z in range(lo[2], hi[2] + 1):
+                    yield from cells.get((x, y, z), ())
+
+    def query_ball_point(self, center, radius):
+        c, r2 = Vector3(*center), float(radius) ** 2
+        pts, on = self.points, self.enabled
+        return sorted(i for i in self._near(c, float(radius)) if on[i] and (pts[i] - c).normSquared() <= r2)
+
+    def query_points_in_cone(self, apex, direction, radius, angle):
+        import math
+
+        c, d = Vector3(*apex), Vector3(*direction).normed()
+        r2, cos_max = float(radius) ** 2, math.cos(angle)
+        found = []
+        for i in self._near(c, float(radius)):
+            if not self.enabled[i]:
+                continue
+            v = self.points[i] - c
+            n2 = v.normSquared()
+            if n2 <= r2 and (n2 == 0 or (v * d) / math.sqrt(n2) >= cos_max):
+                found.append(i)
+        return sorted(found)
+
+    def disable_points(self, indices):
+        for i in indices:
+            self.enabled[i] = False
+
+    def enable_points(self, indices):
+        for i in indices:
+            self.enabled[i] = True
+
+    def is_point_enabled(self, i):
+        return self.enabled[i]
+
+    def get_enabled_points(self):
+        return [p for p, on in zip(self.points, self.enabled) if on]
+
+    def nbPoints(self):
+        return len(self.points)
+
+
+def pointset_mean_direction(origin, points, indices=None):
+    """PlantGL: the mean of the unit directions from `origin` to the points (normalised)."""
+    o = Vector3(*origin)
+    chosen = [points[i] for i in indices] if indices is not None else list(points)
+    total = Vector3(0, 0, 0)
+    for p in chosen:
+        total = total + (Vector3(*p) - o).normed()
+    return total.normed()
+
+
+def describe_value(v):
+    """A parameter of a PlantGL shape as JSON: numbers, vectors as lists, shapes described."""
+    if isinstance(v, (bool, int, float, str)) or v is None:
+        return v
+    if isinstance(v, _Vector) or isinstance(v, Color3):
+        return list(v)
+    describe = getattr(v, "describe", None)
+    if describe is not None:
+        return describe()
+    if isinstance(v, (list, tuple)):
+        return [describe_value(x) for x in v]
+    return {"type": type(v).__name__}
+
+
 class Geometry:
-    """A PlantGL shape or transformation used with `@g`/`PglShape`: kept by type and arguments."""
+    """A PlantGL shape or transformation used with `@g`/`PglShape`: its type and arguments
+    (`Scaled(size, BezierPatch(...))` → {"type": "Scaled", "args": [[…], {patch}]})."""
+
+    PARAMETERS: tuple = ()  # PlantGL's names of the positional arguments
 
     def __init__(self, *args, **kw):
-        self.args, self.kw = args, kw
+        object.__setattr__(self, "args", list(args))
+        object.__setattr__(self, "kw", dict(kw))
+
+    def __getattr__(self, name):
+        params = type(self).PARAMETERS
+        if name in params and params.index(name) < len(self.args):
+            return self.args[params.index(name)]
+        if name in self.kw:
+            return self.kw[name]
+        raise AttributeError(name)
+
+    def __setattr__(self, name, value):
+        params = type(self).PARAMETERS
+        if name in params and params.index(name) < len(self.args):
+            self.args[params.index(name)] = value
+        else:
+            self.kw[name] = value
 
     def describe(self):
-        return {"type": type(self).__name__}
+        out = {"type": type(self).__name__, "args": [describe_value(a) for a in self.args]}
+        if self.kw:
+            out["named"] = {k: describe_value(v) for k, v in self.kw.items()}
+        return out
 
 
 GEOMETRY_NAMES = [
     "Sphere", "Cylinder", "Cone", "Box", "Disc", "Frustum", "Paraboloid", "Revolution",
     "Extrusion", "Translated", "Scaled", "AxisRotated", "EulerRotated", "Oriented", "Shape",
+    "Discretizer",
     "Scene", "TriangleSet", "QuadSet", "FaceSet", "Group", "Swung", "Text", "Font", "PointSet",
     "Polyline2DSet", "IFS", "ExtrudedHull", "Tapered", "BoundingBox", "Transformed", "Matrix4",
-    "Matrix3", "Quaternion", "ProfileInterpolation", "Font", "Index", "IndexArray", "Index3Array",
+    "Quaternion", "ProfileInterpolation", "Font", "Index", "IndexArray", "Index3Array",
     "Index4Array", "Curve2DArray", "Color4Array", "RealArray", "Viewer",
 ]
-GEOMETRY = {name: type(name, (Geometry,), {}) for name in GEOMETRY_NAMES}
+SHAPE_PARAMETERS = {
+    "Sphere": ("radius", "slices", "stacks"), "Cylinder": ("radius", "height", "solid", "slices"),
+    "Cone": ("radius", "height", "solid", "slices"), "Paraboloid": ("radius", "height", "shape", "solid"),
+    "Disc": ("radius", "slices"), "Box": ("size",), "Frustum": ("radius", "height", "taper", "solid"),
+    "Translated": ("translation", "geometry"), "Scaled": ("scale", "geometry"),
+    "AxisRotated": ("axis", "angle", "geometry"), "Shape": ("geometry", "appearance"),
+}
+GEOMETRY = {name: type(name, (Geometry,), {"PARAMETERS": SHAPE_PARAMETERS.get(name, ())})
+            for name in GEOMETRY_NAMES}

@@ -142,6 +142,12 @@ class _Vector:
     def __round__(self, nd=None):
         return self._new([round(a, nd or 0) for a in self._c])
 
+    def anOrthogonalVector(self):
+        x, y, z = (list(self._c) + [0.0, 0.0])[:3]
+        if abs(x) > 1e-9 or abs(y) > 1e-9:
+            return Vector3(-y, x, 0.0).normed()
+        return Vector3(0.0, -z, y).normed()
+
     def anorm(self):
         return sum(abs(a) for a in self._c)
 
@@ -281,3 +287,48 @@ for _c in (Color3,):
     _c.BLACK, _c.WHITE = Color3(0, 0, 0), Color3(255, 255, 255)
     _c.RED, _c.GREEN, _c.BLUE = Color3(255, 0, 0), Color3(0, 255, 0), Color3(0, 0, 255)
     _c.YELLOW, _c.CYAN, _c.MAGENTA = Color3(255, 255, 0), Color3(0, 255, 255), Color3(255, 0, 255)
+
+
+class Matrix3:
+    """A 3 × 3 matrix (rows): `Matrix3.axisRotation(axis, angle)`, `m * v`, `m * m`."""
+
+    def __init__(self, *values):
+        if len(values) == 9:
+            self.rows = [[float(x) for x in values[i : i + 3]] for i in (0, 3, 6)]
+        elif len(values) == 3:
+            # PlantGL builds a matrix from three column vectors
+            cols = [list(v) for v in values]
+            self.rows = [[float(cols[c][r]) for c in range(3)] for r in range(3)]
+        else:
+            self.rows = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]
+
+    @staticmethod
+    def axisRotation(axis, angle):
+        x, y, z = (float(a) for a in axis)
+        n = math.sqrt(x * x + y * y + z * z) or 1.0
+        x, y, z = x / n, y / n, z / n
+        c, s, t = math.cos(angle), math.sin(angle), 1 - math.cos(angle)
+        return Matrix3(t * x * x + c, t * x * y - s * z, t * x * z + s * y,
+                       t * x * y + s * z, t * y * y + c, t * y * z - s * x,
+                       t * x * z - s * y, t * y * z + s * x, t * z * z + c)
+
+    def __mul__(self, o):
+        if isinstance(o, Matrix3):
+            cols = list(zip(*o.rows))
+            return Matrix3(*[sum(a * b for a, b in zip(row, col)) for row in self.rows for col in cols])
+        if isinstance(o, (int, float)):
+            return Matrix3(*[a * o for row in self.rows for a in row])
+        v = list(o)
+        return Vector3(*[sum(a * b for a, b in zip(row, v)) for row in self.rows])
+
+    def transpose(self):
+        return Matrix3(*[self.rows[c][r] for r in range(3) for c in range(3)])
+
+    def getColumn(self, i):
+        return Vector3(*[row[i] for row in self.rows])
+
+    def getRow(self, i):
+        return Vector3(*self.rows[i])
+
+
+Matrix3.IDENTITY = Matrix3()

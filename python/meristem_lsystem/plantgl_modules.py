@@ -59,12 +59,12 @@ def plantgl_names() -> dict:
     names = _math_names()
     for n in ("Point2Array", "Point3Array", "Point4Array", "Point4Matrix", "NurbsCurve2D",
               "NurbsCurve", "BezierCurve2D", "BezierCurve", "Polyline2D", "Polyline", "NurbsPatch",
-              "BezierPatch", "QuantisedFunction", "Material", "ImageTexture", "Texture2D"):
+              "BezierPatch", "QuantisedFunction", "Material", "ImageTexture", "Texture2D", "Point3Grid", "pointset_mean_direction"):
         names[n] = getattr(geo, n)
     names.update(geo.GEOMETRY)
     names["Color3Array"] = list
     names["Point3Matrix"] = geo.Point4Matrix
-    names["Matrix3"].IDENTITY = names["Matrix3"]()
+    names["Matrix3"] = pmath.Matrix3
     names["Matrix4"].IDENTITY = names["Matrix4"]()
     names["Color3"] = pmath.Color3
     names.update(eStatic=0, eAnimatedPrimitives=1, eAnimatedScene=2)

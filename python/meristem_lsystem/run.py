@@ -14,8 +14,8 @@ import signal
 import threading
 import time
 
-from .lpy_errors import LimitReached, ModelError, from_exception
-from .lstring import ObjectTable, format_lstring
+from .lpy_errors import LimitReached, from_exception
+from .lstring import Module, ObjectTable, format_lstring
 
 MAX_OUTPUT = 20_000  # characters of what the model printed, kept in result["output"]
 DEFAULTS = {"steps": None, "seed": 0, "max_modules": 2_000_000, "time_limit": 50.0}
@@ -71,7 +71,7 @@ class Alarm:
             try:
                 self.previous = signal.signal(signal.SIGALRM, self._fire)
                 signal.setitimer(signal.ITIMER_REAL, self.seconds)
-            except (ValueError, OSError):
+            except Exception:  # Pyodide and others without working timers: the worker's limit
                 self.active = False
         return self
 
@@ -88,6 +88,7 @@ def run_lpy(files: dict, main: str, options: dict) -> dict:
 
     result = empty_result("lpy")
     random.seed(options.get("seed", 0))
+    Module.named.clear()  # named parameters are the declarations of this run's files
     rt = LpyRuntime(files, main, options)
     table = ObjectTable()
     try:
@@ -98,14 +99,14 @@ def run_lpy(files: dict, main: str, options: dict) -> dict:
         ObjectTable.current = table
         result["lstring"] = format_lstring(s)
         result["ok"] = True
-    except ModelError as e:
-        result["error"] = e.as_dict()
     except LimitReached as e:
         result["error"] = {"line": 0, "column": 0, "message": str(e)}
-    except RecursionError as e:
+    except Exception as e:  # the model's own code, a rule body, or a ModelError located here
         result["error"] = from_exception(e, main).as_dict()
-    except Exception as e:  # the model's own code, or a rule body
-        result["error"] = from_exception(e, main).as_dict()
+    except SystemExit as e:  # the model called exit(): an error at its line, not the end of ours
+        error = from_exception(e, main)
+        error.message = "the model called exit()"
+        result["error"] = error.as_dict()
     finally:
         ObjectTable.current = None
     result["objects"] = table.objects

@@ -50,11 +50,28 @@ class Productions(unittest.TestCase):
         self.assertEqual(count(run_text(src)["lstring"], "F"), 3)
         self.assertEqual(count(run_text(src, steps=5)["lstring"], "F"), 5)
 
-    def test_derivation_stops_when_no_rule_applies(self):
-        r = run_text("Axiom: A(0)\nderivation length: 10\nproduction:\n"
-                     "A(x) :\n  if x < 2: produce A(x+1)\nendlsystem\n")
-        self.assertEqual(r["steps"], 3)
-        self.assertEqual(r["lstring"], "A(2)")
+    def test_every_step_runs_even_when_no_rule_applies(self):
+        # L-Py's option "Early return when no matching" is Disabled by default
+        src = ("n = []\ndef EndEach():\n  n.append(1)\ndef End(s):\n  return s + [('F', len(n))]\n"
+               "Axiom: A(0)\nderivation length: 10\nproduction:\n"
+               "A(x) :\n  if x < 2: produce A(x+1)\nendlsystem\n")
+        r = run_text(src)
+        self.assertEqual(r["steps"], 10)
+        self.assertEqual(r["lstring"], "A(2)F(10)")
+
+
+    def test_get_module_binds_and_emits_the_whole_module(self):
+        src = ("module Aging(age)\nAxiom: Aging(1) B\nderivation length: 2\nproduction:\n"
+               "$Aging(a):\n  a.age += 1\n  produce $a F(a.age,\n     2)\nendlsystem\n")
+        r = run_text(src)
+        self.assertTrue(r["ok"], r["error"])
+        self.assertEqual(r["lstring"], "Aging(3)F(3,2)F(2,2)B")
+
+    def test_successor_continued_on_later_lines_keeps_line_numbers(self):
+        src = ("Axiom: A\nderivation length: 1\nproduction:\nA --> F(1,\n  2) B(1/0 if False else 1)\n"
+               "B --> C(1/0)\nendlsystem\n")
+        r = run_text(src.replace("Axiom: A", "Axiom: A B"))
+        self.assertEqual(r["error"]["line"], 6)
 
 
 class Contexts(unittest.TestCase):
@@ -149,6 +166,14 @@ class Hooks(unittest.TestCase):
         self.assertTrue(r["ok"], r["error"])
         self.assertIn("Y", r["lstring"])
 
+    def test_repetition_over_child_branches_in_the_new_string(self):
+        # backwards, the branches to A's right are already rewritten when A is: 10 + 20
+        src = ("def Start():\n  backward()\nAxiom: A [B(1)] [B(2)] [C] B(9)\nderivation length: 1\n"
+               "production:\nB(w) --> B(w*10)\nA >> x([B(w)]) --> A(sum(w))\nendlsystem\n")
+        r = run_text(src)
+        self.assertTrue(r["ok"], r["error"])
+        self.assertEqual(r["lstring"], "A(30)[B(10)][B(20)][C]B(90)")
+
     def test_axiom_as_python_body(self):
         r = run_text("Axiom:\n  for i in range(3): nproduce F(i)\nderivation length: 0\nendlsystem\n")
         self.assertEqual(r["lstring"], "F(0)F(1)F(2)")
@@ -196,6 +221,28 @@ class Randomness(unittest.TestCase):
         random.seed(7)
         expected = "".join("F" if random.random() < 0.5 else "G" for _ in range(5)) + "A"
         self.assertEqual(run_text(self.SRC, seed=7)["lstring"], expected)
+
+
+class FilesAndNotes(unittest.TestCase):
+    def test_open_reads_the_models_own_files(self):
+        from lpy_helpers import run
+
+        main = ("with open('data/lengths.txt') as f:\n  L = [float(x) for x in f.read().split()]\n"
+                "Axiom: A\nderivation length: 1\nproduction:\nA :\n"
+                "  for l in L: nproduce F(l)\nendlsystem\n")
+        r = run({"main.lpy": main, "lengths.txt": "1 2.5"}, "main.lpy", {})
+        self.assertEqual(r["lstring"], "F(1.0)F(2.5)")
+        r = run({"main.lpy": main}, "main.lpy", {})
+        self.assertEqual(r["error"]["line"], 1)
+        self.assertIn("FileNotFoundError", r["error"]["message"])
+
+    def test_unavailable_pattern_leaves_its_rule_out_with_a_note(self):
+        src = ("Axiom: A B\nderivation length: 1\nproduction:\nA >> x([?I(it)]) --> X\n"
+               "A --> Y\nendlsystem\n")
+        r = run_text(src)
+        self.assertTrue(r["ok"], r["error"])
+        self.assertEqual(r["lstring"], "YB")
+        self.assertEqual(r["notes"][0]["line"], 4)
 
 
 class Composition(unittest.TestCase):
