@@ -15,6 +15,7 @@ import type { HtmlTagDescriptor, Plugin } from 'vite';
 import { defineConfig } from 'vitest/config';
 import { galleryManifestPlugin } from './scripts/gallery-plugin.ts';
 import { lessonsPlugin } from './scripts/lessons-plugin.ts';
+import { PYODIDE_DIR, pyodideAssetsPlugin, pyodideVersion } from './scripts/pyodide-plugin.ts';
 import { referencePlugin } from './scripts/reference-plugin.ts';
 import { INITIAL_EXAMPLE } from './web/src/studio/files/initial-example.ts';
 
@@ -27,6 +28,10 @@ const repoRoot = fileURLToPath(new URL('.', import.meta.url));
  * (scripts/make-icons.mjs). `prompt`: a new version waits until the user reloads from the studio's
  * "A new version is ready" bar (web/src/studio/page/app-update.ts registers it). Every URL is relative,
  * so it works from any sub-path; query strings (embed.html?controls=…) are ignored when matching.
+ * Pyodide (dist/pyodide/, about 13 MB: scripts/pyodide-plugin.ts) is not precached: a visitor who
+ * never opens an L-Py or lpfg model never downloads it. The first model that needs Python fetches
+ * it, and the service worker keeps it then (cache first, in a cache named after Pyodide's version,
+ * so an upgrade fetches the new files), so Python models open offline after that.
  */
 function offlineApp() {
   return VitePWA({
@@ -51,9 +56,17 @@ function offlineApp() {
     },
     workbox: {
       globPatterns: ['**/*.{html,js,css,wasm,json,lsys,png,svg,webmanifest}'],
+      globIgnores: [`${PYODIDE_DIR}/**`],
       maximumFileSizeToCacheInBytes: 8 * 1024 * 1024,
       ignoreURLParametersMatching: [/.*/],
       navigateFallback: null,
+      runtimeCaching: [
+        {
+          urlPattern: new RegExp(`/${PYODIDE_DIR}/[^/?]+$`),
+          handler: 'CacheFirst',
+          options: { cacheName: `meristem-pyodide-${pyodideVersion()}`, cacheableResponse: { statuses: [200] } },
+        },
+      ],
     },
   });
 }
@@ -97,6 +110,7 @@ export default defineConfig({
     lessonsPlugin(`${repoRoot}public/lessons`),
     referencePlugin(`${repoRoot}docs/LANGUAGE.md`),
     preloadCore(),
+    pyodideAssetsPlugin(),
     offlineApp(),
   ],
   worker: { format: 'es' },

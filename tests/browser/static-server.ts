@@ -9,6 +9,7 @@ import { createGzip } from 'node:zlib';
 const DIST = fileURLToPath(new URL('../../dist/', import.meta.url));
 const TYPES: Record<string, string> = {
   '.html': 'text/html; charset=utf-8',
+  '.mjs': 'text/javascript',
   '.js': 'text/javascript',
   '.css': 'text/css',
   '.wasm': 'application/wasm',

@@ -2,7 +2,8 @@
 // - One boundary: only web/src/core/ imports the generated package (crate/pkg).
 // - Areas point one way: each folder of web/src is an area that may import only the areas AREAS
 //   lets it (core ← editor, view, share, build ← plant-controls ← studio, embed ← main.ts,
-//   boot.ts), another area only through its doors (its index.ts, and the few files AREAS names
+//   boot.ts; python, which uses none, ← studio),
+//   another area only through its doors (its index.ts, and the few files AREAS names
 //   with a reason; a lazy `import()` may name the module it loads: that is where a chunk of the
 //   page starts), and no file imports itself back through a cycle of static imports.
 // - One vocabulary: the studio names no part of the language the core's vocabulary does not have,
@@ -180,12 +181,14 @@ const AREAS: Record<string, Area> = {
   share: { uses: ['core'], doors: ['share/index.ts', 'share/variants-state.ts'] },
   // build-worker-start.ts: the boot script starts the build worker before the studio's script.
   build: { uses: ['core'], doors: ['build/index.ts', 'build/build-worker-start.ts'] },
+  // Pyodide's worker and its client: no part of the core (the core reads what Python derived).
+  python: { uses: [] },
   // timeline.ts: the growth timeline, loaded with the studio's timeline bar and by animated embeds,
   // never by the first plant.
   'plant-controls': { uses: ['core', 'editor'], doors: ['plant-controls/index.ts', 'plant-controls/timeline.ts'] },
-  studio: { uses: ['core', 'editor', 'view', 'share', 'build', 'plant-controls'], doors: ['studio/*/index.ts', 'studio/parts.ts', 'studio/test-hook.ts'] },
+  studio: { uses: ['core', 'editor', 'view', 'share', 'build', 'plant-controls', 'python'], doors: ['studio/*/index.ts', 'studio/parts.ts', 'studio/test-hook.ts'] },
   embed: { uses: ['core', 'view', 'share', 'build', 'plant-controls'] },
-  main: { uses: ['core', 'editor', 'view', 'share', 'build', 'plant-controls', 'studio', 'embed'] },
+  main: { uses: ['core', 'editor', 'view', 'share', 'build', 'plant-controls', 'python', 'studio', 'embed'] },
 };
 
 /** Whether `file` is one of an area's doors (`*` matches one folder name). */

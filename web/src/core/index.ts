@@ -40,7 +40,7 @@ export {
   type Vocabulary,
 } from './vocabulary';
 export { byteOffsetToUtf16, utf16Offsets } from './offsets';
-export { importGrammar, importObject, type Dialect, type ImportedGrammar, type ImportNote, type ObjectFile } from './import';
+export { importDerived, importGrammar, importObject, pythonRoute, type Dialect, type ImportedGrammar, type ImportNote, type ObjectFile, type PythonRoute } from './import';
 export {
   applyMeshUpdate,
   DragRefused,

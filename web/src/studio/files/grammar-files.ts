@@ -1,7 +1,7 @@
 // Opening and saving grammar files: `.lsys` (Meristem's language) as it is, Green, Lparser `.ls`,
 // cpfg `.l` and L-Py `.lpy` through the core's importers, with their notes; text that is not UTF-8
 // (old Lparser files) read as Windows-1252. Saving writes the editor's text as `NAME.lsys`.
-import { importGrammar, importObject, type Dialect, type ObjectFile } from '../../core';
+import { importGrammar, importObject, type Dialect, type ImportedGrammar, type ObjectFile } from '../../core';
 import { titleOf } from '../../share';
 import { saveFile } from './save-file';
 
@@ -89,9 +89,13 @@ export function openObjectBytes(files: ObjectFile[]): OpenedFile {
   if (total > MAX_OBJECT_BYTES) {
     return { ok: false, error: `the files are too large for a model (${total.toLocaleString('en-US')} bytes; at most ${MAX_OBJECT_BYTES.toLocaleString('en-US')})` };
   }
-  const imported = importObject(files);
+  return opened(importObject(files), 'no L-system file among them');
+}
+
+/** An import as the page shows it: notes as `line N: …`; no dialect is an error (`fallback` when no note says why). */
+export function opened(imported: ImportedGrammar, fallback: string): OpenedFile {
   const notes = imported.notes.map((n) => (n.line > 0 ? `line ${n.line}: ${n.message}` : n.message));
-  if (imported.dialect === null) return { ok: false, error: notes.join(' ') || 'no L-system file among them' };
+  if (imported.dialect === null) return { ok: false, error: notes.join(' ') || fallback };
   return { ok: true, text: imported.text, dialect: imported.dialect, notes };
 }
 

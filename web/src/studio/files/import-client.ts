@@ -1,22 +1,39 @@
 // The page's side of the import worker (import-worker.ts): a grammar file of another dialect, or
 // files opened together (a vlab object, an L-Py model, a .zip), is imported in a worker of its own,
 // with a Cancel button in the notice and a time limit, so the page stays responsive however long
-// an importer takes. `.lsys` files need no import: the page reads them itself.
+// an importer takes. `.lsys` files need no import: the page reads them itself. A model the core
+// says Python should run goes to python-opening.ts between two imports: what to run, then what
+// Python derived.
 import type { ObjectFile } from '../../core';
+import type { PythonClient, PythonRunRequest } from '../../python';
 import { checkGrammarBytes, type OpenedFile } from './grammar-files';
 import type { Notice } from '../page';
 import { runWorkerJob, type JobWorkerLike, type WorkerJob } from '../../build';
+import { openInPython, pagePython } from './python-opening';
 
-/** Page → import worker: the files a worker imports (one grammar file, or an object's files). */
+/**
+ * Page → import worker: the files a worker imports (one grammar file, or an object's files); with
+ * `derived`, what Python derived (`result`: the runtime's JSON) for `main` among them, to be made
+ * Meristem text.
+ */
 export interface ImportRequest {
   files: ObjectFile[];
+  derived?: { result: string; main: string };
 }
 
-/** Import worker → page. */
-export type ImportResponse = { kind: 'done'; opened: OpenedFile } | { kind: 'failed'; message: string };
+/**
+ * Import worker → page: the text; or `python`, the model to run in Python, with the hand
+ * translation (`translated`, used when Python cannot be loaded).
+ */
+export type ImportResponse = { kind: 'done'; opened: OpenedFile } | { kind: 'python'; run: PythonRunRequest; translated: OpenedFile } | { kind: 'failed'; message: string };
 
 /** How an import ended. */
-export type ImportOutcome = { kind: 'done'; opened: OpenedFile } | { kind: 'failed'; message: string } | { kind: 'cancelled' } | { kind: 'timeout' };
+export type ImportOutcome =
+  | { kind: 'done'; opened: OpenedFile }
+  | { kind: 'python'; run: PythonRunRequest; translated: OpenedFile }
+  | { kind: 'failed'; message: string }
+  | { kind: 'cancelled' }
+  | { kind: 'timeout' };
 
 /** What the client needs of a Worker (a fake one in unit tests). */
 export type ImportWorkerLike = JobWorkerLike<ImportRequest, ImportResponse>;
@@ -35,18 +52,23 @@ export function createImportWorker(): Worker {
 /** Imports the request's files in a fresh worker from `createWorker`, stopped after `limitMs`. */
 export function runImport(createWorker: () => ImportWorkerLike, request: ImportRequest, limitMs = IMPORT_TIME_LIMIT): WorkerJob<ImportOutcome> {
   return runWorkerJob<ImportRequest, ImportResponse, ImportOutcome>(createWorker, request, {
-    answer: (response) => (response.kind === 'done' ? { kind: 'done', opened: response.opened } : { kind: 'failed', message: `the importer failed (a bug): ${response.message}` }),
+    answer: (response) => (response.kind === 'failed' ? { kind: 'failed', message: `the importer failed (a bug): ${response.message}` } : response),
     failed: (message) => ({ kind: 'failed', message: `the import worker failed: ${message}` }),
     cancelled: { kind: 'cancelled' },
     limit: { ms: limitMs, outcome: { kind: 'timeout' } },
   });
 }
 
-/** What reading a file uses: the worker to import in, the notice that shows the import, its time limit. */
+/**
+ * What reading a file uses: the worker to import in, the notice that shows the import, its time
+ * limit, and the Python worker's client for models that Python runs (default: the page's one,
+ * so that Python loads once).
+ */
 export interface FileReadingParts {
   createWorker: () => ImportWorkerLike;
   notice: Notice;
   limitMs?: number;
+  python?: () => PythonClient;
 }
 
 /** What the notice shows about an import (its topic, so that only its own notice is taken back). */
@@ -74,10 +96,13 @@ export function readObjectFiles(files: ObjectFile[], name: string, parts: FileRe
   return importInWorker(files, name, parts);
 }
 
-/** Imports `files` in a worker, the notice saying so (with Cancel) once it takes a while. */
-async function importInWorker(files: ObjectFile[], name: string, parts: FileReadingParts): Promise<OpenedFile> {
+/**
+ * Imports `files` in a worker, the notice saying so (with Cancel) once it takes a while; a model
+ * that Python runs goes on in {@link openInPython}. With `derived`, makes text of what Python derived.
+ */
+export async function importInWorker(files: ObjectFile[], name: string, parts: FileReadingParts, derived?: ImportRequest['derived']): Promise<OpenedFile> {
   const limitMs = parts.limitMs ?? IMPORT_TIME_LIMIT;
-  const job = runImport(parts.createWorker, { files }, limitMs);
+  const job = runImport(parts.createWorker, { files, ...(derived ? { derived } : {}) }, limitMs);
   const shown = setTimeout(() => {
     parts.notice.show('info', `Importing ${name}…`, [], IMPORTING, [{ label: 'Cancel', testid: 'import-cancel', run: () => job.cancel() }]);
   }, IMPORT_NOTICE_AFTER);
@@ -87,6 +112,12 @@ async function importInWorker(files: ObjectFile[], name: string, parts: FileRead
   switch (outcome.kind) {
     case 'done':
       return outcome.opened;
+    case 'python':
+      return openInPython(outcome.run, outcome.translated, name, {
+        notice: parts.notice,
+        python: parts.python ?? pagePython,
+        derive: (result, main) => importInWorker(files, name, parts, { result, main }),
+      });
     case 'failed':
       return { ok: false, error: outcome.message };
     case 'cancelled':
