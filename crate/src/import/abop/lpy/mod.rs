@@ -405,10 +405,26 @@ impl Importer {
     ) -> (String, usize) {
         // The word at `start`, the spaces after it and one more character: all that is read
         // here (the whole rest of a derived axiom, copied for each module, was quadratic).
-        let word_end = chars[start..]
+        // A word longer than every name it could be is read letter by letter (L-Py's own
+        // reading of `ABAB…`): it is never scanned further, or a derived axiom of a million
+        // one-letter modules would be read in time growing with the square of its length.
+        let longest = self
+            .declared
             .iter()
+            .map(String::len)
+            .chain(LPY_NAMES.iter().map(|(long, _)| long.len()))
+            .chain(LPY_PREDEFINED.iter().map(|name| name.len()))
+            .max()
+            .unwrap_or(1);
+        let Some(word_end) = chars[start..]
+            .iter()
+            .take(longest + 1)
             .position(|c| !(c.is_ascii_alphanumeric() || *c == '_'))
-            .map_or(chars.len(), |k| start + k);
+            .map(|k| start + k)
+            .or_else(|| (start + longest + 1 > chars.len()).then_some(chars.len()))
+        else {
+            return (chars[start].to_string(), start + 1);
+        };
         let spaces_end = chars[word_end..]
             .iter()
             .position(|c| !c.is_whitespace())
@@ -416,20 +432,17 @@ impl Importer {
         let rest: String = chars[start..(spaces_end + 1).min(chars.len())]
             .iter()
             .collect();
-        let candidates: Vec<String> = self
+        let long = self
             .declared
             .iter()
-            .cloned()
-            .chain(LPY_NAMES.iter().map(|(long, _)| long.to_string()))
-            .collect();
-        let long = candidates
-            .iter()
+            .map(String::as_str)
+            .chain(LPY_NAMES.iter().map(|(long, _)| *long))
             .filter(|d| {
-                rest.starts_with(d.as_str())
+                rest.starts_with(d)
                     && !rest[d.len()..].starts_with(|c: char| c.is_ascii_alphanumeric())
             })
             .max_by_key(|d| d.len())
-            .cloned();
+            .map(str::to_string);
         let word_len = rest
             .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
             .unwrap_or(rest.len());
