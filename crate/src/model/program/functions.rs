@@ -4,7 +4,7 @@
 use crate::maths;
 use crate::vocabulary::Function;
 use rand::RngExt;
-use rand_distr::{Beta, Binomial, Distribution, Exp, Normal, Poisson};
+use rand_distr::{Binomial, Distribution, Exp, Normal, Poisson, StandardNormal};
 
 /// `x` limited to 0 … 1: the growth functions' normalised age (NaN stays NaN, an error later).
 fn unit(x: f64) -> f64 {
@@ -88,10 +88,46 @@ pub(super) fn call<R: rand::Rng + ?Sized>(
         Function::Poisson => Poisson::new(a[0])
             .map_err(|_| format!("poisson({}): the mean must be > 0", a[0]))?
             .sample(rng),
-        Function::Beta => Beta::new(a[0], a[1])
-            .map_err(|_| format!("betavariate({}, {}): the shapes must be > 0", a[0], a[1]))?
-            .sample(rng),
+        Function::Beta => {
+            if !(a[0] > 0.0 && a[1] > 0.0 && a[0].is_finite() && a[1].is_finite()) {
+                return Err(format!(
+                    "betavariate({}, {}): the shapes must be > 0",
+                    a[0], a[1]
+                ));
+            }
+            let (x, y) = (gamma(a[0], rng), gamma(a[1], rng));
+            if x + y > 0.0 {
+                x / (x + y)
+            } else {
+                // Both shapes so small that both draws underflowed: the mass is at 0 and 1.
+                f64::from(u8::from(rng.random::<f64>() * (a[0] + a[1]) < a[0]))
+            }
+        }
     })
+}
+
+/// A draw of the gamma distribution of shape `k` > 0 (scale 1), by Marsaglia and Tsang's method
+/// (2000), with `u^(1/k)` for shapes under 1: betavariate's X / (X + Y). Written here rather than
+/// taken from rand_distr's Beta, whose two algorithms the first plant's core has no room for.
+fn gamma<R: rand::Rng + ?Sized>(k: f64, rng: &mut R) -> f64 {
+    if k < 1.0 {
+        let u: f64 = rng.random();
+        return gamma(k + 1.0, rng) * maths::powf(u, 1.0 / k);
+    }
+    let d = k - 1.0 / 3.0;
+    let c = 1.0 / (9.0 * d).sqrt();
+    loop {
+        let x: f64 = StandardNormal.sample(rng);
+        let v = 1.0 + c * x;
+        if v <= 0.0 {
+            continue;
+        }
+        let v = v * v * v;
+        let u: f64 = rng.random();
+        if u > 0.0 && maths::ln(u) < 0.5 * x * x + d - d * v + d * maths::ln(v) {
+            return d * v;
+        }
+    }
 }
 
 /// The growth functions (ABOP section 6.2) at `a[0]`, the age as a fraction of the terminal age,
