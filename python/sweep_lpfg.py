@@ -1,4 +1,4 @@
-"""Dev script: runs every lpfg object of a folder (default /work/collections/lpfg; one vlab
+"""Dev script: runs every lpfg object of a folder (default crate/tests/collections/lpfg; one vlab
 object per sub-folder) and counts those whose run is ok and whose string draws something.
 `python3 python/sweep_lpfg.py [DIR] [-v]`."""
 
@@ -21,7 +21,7 @@ DRAWING = re.compile(r"(?<![A-Za-z_0-9])(F|Line|LineTo|LineTo2f|LineTo3f|LineTo3
 
 
 def main():
-    folder = next((a for a in sys.argv[1:] if not a.startswith("-")), "/work/collections/lpfg")
+    folder = next((a for a in sys.argv[1:] if not a.startswith("-")), os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "crate", "tests", "collections", "lpfg"))
     verbose = "-v" in sys.argv
     names = sorted(n for n in os.listdir(folder) if os.path.isdir(os.path.join(folder, n)))
     good = 0

@@ -1,4 +1,4 @@
-"""Dev script: runs every .lpy of a folder (default /work/collections/lpy) and counts the models
+"""Dev script: runs every .lpy of a folder (default crate/tests/collections/lpy) and counts the models
 whose run is ok and whose string draws something. `python3 python/sweep_lpy.py [DIR] [-v]`."""
 
 from __future__ import annotations
@@ -42,7 +42,7 @@ def files_for(folder: str, name: str) -> dict:
 
 
 def main():
-    folder = next((a for a in sys.argv[1:] if not a.startswith("-")), "/work/collections/lpy")
+    folder = next((a for a in sys.argv[1:] if not a.startswith("-")), os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "crate", "tests", "collections", "lpy"))
     verbose = "-v" in sys.argv
     names = sorted(n for n in os.listdir(folder) if n.endswith(".lpy"))
     good = 0

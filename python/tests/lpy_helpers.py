@@ -11,7 +11,7 @@ sys.path.insert(0, os.path.dirname(HERE))
 from meristem_lsystem import run  # noqa: E402
 
 REPO = os.path.dirname(os.path.dirname(HERE))
-COLLECTIONS = [os.path.join(REPO, "crate", "tests", "collections", "lpy"), "/work/collections/lpy"]
+COLLECTIONS = [os.path.join(REPO, "crate", "tests", "collections", "lpy")]
 
 
 def run_text(text: str, **options) -> dict:

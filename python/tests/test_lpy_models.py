@@ -1,7 +1,7 @@
 """Ten models of L-Py's own collection, checked against a hand count of what they draw.
 
 The files come from the collection copied into the repository (crate/tests/collections/lpy,
-from openalea/lpy at commit 4a365a3, CeCILL-C) or, before it lands, from /work/collections/lpy;
+from openalea/lpy at commit 4a365a3, CeCILL-C), copied in crate/tests/collections/lpy;
 a test is skipped only when neither copy exists."""
 
 import re
