@@ -88,21 +88,21 @@ pub(super) fn call<R: rand::Rng + ?Sized>(
         Function::Poisson => Poisson::new(a[0])
             .map_err(|_| format!("poisson({}): the mean must be > 0", a[0]))?
             .sample(rng),
-        Function::Beta => {
-            if !(a[0] > 0.0 && a[1] > 0.0 && a[0].is_finite() && a[1].is_finite()) {
-                return Err(format!(
-                    "betavariate({}, {}): the shapes must be > 0",
-                    a[0], a[1]
-                ));
-            }
-            let (x, y) = (gamma(a[0], rng), gamma(a[1], rng));
-            if x + y > 0.0 {
-                x / (x + y)
-            } else {
-                // Both shapes so small that both draws underflowed: the mass is at 0 and 1.
-                f64::from(u8::from(rng.random::<f64>() * (a[0] + a[1]) < a[0]))
-            }
-        }
+        Function::Beta => beta(a[0], a[1], rng)?,
+    })
+}
+
+/// `betavariate(a, b)`: X / (X + Y) of two gamma draws of shapes `a` and `b`.
+fn beta<R: rand::Rng + ?Sized>(a: f64, b: f64, rng: &mut R) -> Result<f64, String> {
+    if !(a > 0.0 && b > 0.0 && a.is_finite() && b.is_finite()) {
+        return Err(format!("betavariate({a}, {b}): the shapes must be > 0"));
+    }
+    let (x, y) = (gamma(a, rng), gamma(b, rng));
+    Ok(if x + y > 0.0 {
+        x / (x + y)
+    } else {
+        // Both shapes so small that both draws underflowed: the mass is at 0 and 1.
+        f64::from(u8::from(rng.random::<f64>() * (a + b) < a))
     })
 }
 
