@@ -97,7 +97,7 @@ describe('an L-Py model run by Python', () => {
       await open(page, 'tree.lpy', TREE);
       await expect.poll(() => noticeText(page), { timeout: 10_000 }).toMatch(/^(Loading Python \(about 13 MB, once\)…|Running tree\.lpy in Python…)$/);
       expect(await nextBuild(page, before, 120_000)).toBe('ok');
-      expect(await noticeText(page)).toMatch(/^Ran tree\.lpy in Python: nothing was left out/);
+      expect(await noticeText(page)).toMatch(/^Imported tree\.lpy from L-Py/);
       // The text built (the editor is behind a tab on a phone): what Python derived, saying so.
       const text = await builtText(page);
       expect(text).toMatch(/^\/\/ Derived by Python from tree\.lpy in 5 steps, with seed 0/);
@@ -124,7 +124,7 @@ describe('an L-Py model run by Python', () => {
     const before = await generation(page);
     await page.getByTestId('file-input').setInputFiles({ name: 'loop.zip', mimeType: 'application/zip', buffer: Buffer.from(zip) });
     expect(await nextBuild(page, before, 120_000)).toBe('ok');
-    expect(await noticeText(page)).toMatch(/^Ran loop\.zip in Python/);
+    expect(await noticeText(page)).toMatch(/^Imported loop\.zip from /);
     expect(await builtText(page)).toMatch(/^\/\/ Derived by Python from (loop\/)?lsystem\.l in 1 step/);
     // Three F(1), each with a branch of F(0.5): six segments, by hand.
     expect(await page.evaluate(() => window.__meristem!.lastStats!.segments)).toBe(6);

@@ -12,6 +12,7 @@ import { studioEditorTheme } from './theme';
 import { surfaceGutter } from './surface-gutter';
 import type { GrammarEditor, GrammarEditorOptions, HistoryStep } from './grammar-text';
 import type { TextChange } from './growth-directives';
+import './grammar-editor.css';
 
 export type { GrammarEditor, GrammarEditorOptions };
 

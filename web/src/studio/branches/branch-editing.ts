@@ -20,6 +20,7 @@ import {
   type PlantEditor,
 } from '../../core';
 import type { PlantView } from '../../view';
+import './branch-editing.css';
 
 /** Plants with more segments than this are not edited on the page (the editor builds on its thread). */
 export const MAX_EDITABLE_SEGMENTS = 60_000;

@@ -11,6 +11,7 @@ import {
   type GrowthAttribute,
   type TextChange,
 } from '../../editor/growth-directives';
+import './growth-panel.css';
 
 /** What the panel needs of the editor. */
 export interface GrowthEditor {

@@ -82,6 +82,7 @@ export class LayoutModes {
   setLarge(on: boolean): void {
     if (on === this.large) return;
     this.body.classList.toggle('large', on);
+    if (on) void presentationStyles().then(() => this.host.remeasureEditor());
     this.els.large.setAttribute('aria-pressed', String(on));
     if (on) {
       this.foldedBeforeLarge = this.folded;
@@ -107,6 +108,7 @@ export class LayoutModes {
 
   private enterViewOnly(): void {
     this.body.classList.add('view-only');
+    void presentationStyles();
     this.showPane('plant');
     this.els.fullscreen.setAttribute('aria-pressed', 'true');
     // The page is still the studio if the browser refuses (a frame without allowfullscreen).
@@ -128,4 +130,11 @@ export class LayoutModes {
     this.els.inspectorToggle.setAttribute('aria-expanded', String(!folded));
     this.els.inspectorToggle.setAttribute('aria-label', folded ? 'Show the string and derivation panels' : 'Hide the string and derivation panels');
   }
+}
+
+let presentationLoad: Promise<unknown> | undefined;
+
+/** The presentation modes' CSS (Large, fullscreen), loaded once, the first time one is entered. */
+function presentationStyles(): Promise<unknown> {
+  return (presentationLoad ??= import('../../styles/presentation-modes.css'));
 }

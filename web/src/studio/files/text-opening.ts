@@ -164,10 +164,9 @@ export class TextOpening {
     const tell = (kept: string) => {
       const after = kept ? ` ${kept}` : '';
       if (opened.dialect) {
-        const ran = opened.text.startsWith('// Derived by Python'); // a model run by Python (python-route.ts)
-        const what = ran ? `Ran ${name} in Python` : `Imported ${name} from ${dialectName(opened.dialect)}`;
+        const what = `Imported ${name} from ${dialectName(opened.dialect)}`;
         const n = opened.notes.length;
-        notice.show('info', n === 0 ? `${what}: ${ran ? 'nothing was left out' : 'everything was translated'}.${after}` : `${what}.${after} Not translated, or only approximately (${n}):`, opened.notes);
+        notice.show('info', n === 0 ? `${what}: everything was translated.${after}` : `${what}.${after} Not translated, or only approximately (${n}):`, opened.notes);
       } else if (opened.notes.length > 0 || kept) notice.show('info', `Opened ${name}.${after}`, opened.notes);
       else notice.hide();
     };
