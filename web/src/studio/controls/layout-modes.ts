@@ -2,7 +2,7 @@
 // take turns (the Grammar / Plant button); Large, for a projector, enlarges the type and gives the
 // view most of the screen; Fullscreen shows the plant alone with the derivation's controls; the
 // panels under the view fold away. The modes are classes and data attributes on <body> and the
-// inspector (styles/layout-modes.css does the layout); this file keeps them, their buttons and their keys.
+// inspector (styles/layout-modes.css does the layout; styles/presentation-modes.css, loaded on first use, Large and fullscreen); this file keeps them, their buttons and their keys.
 import type { KeyValueStorage } from '../../share';
 
 /** The controls (see index.html). */
