@@ -329,7 +329,7 @@ const CORPUS: &[Entry] = &[
         "lpy/07-continuous-growth.lpy",
         8,
         7,
-        &[(1, "Python imports are not translated")],
+        &[],
     ),
     (
         "lpy/09-flower-continous-growth.lpy",
@@ -355,7 +355,6 @@ const CORPUS: &[Entry] = &[
                 0,
                 "L-Py draws its random numbers with another generator than Meristem's",
             ),
-            (1, "Python imports are not translated"),
             (27, "the Python function 'Start' is not translated"),
             (
                 50,
@@ -419,7 +418,6 @@ const CORPUS: &[Entry] = &[
                 0,
                 "L-Py draws its random numbers with another generator than Meristem's: th",
             ),
-            (2, "Python imports are not translated"),
             (10, "the Python function 'Start' is not translated"),
             (
                 14,
@@ -436,7 +434,6 @@ const CORPUS: &[Entry] = &[
                 0,
                 "L-Py draws its random numbers with another generator than Meristem's",
             ),
-            (1, "Python imports are not translated"),
             (13, "the Python function 'Start' is not translated"),
         ],
     ),
@@ -553,7 +550,6 @@ const CORPUS: &[Entry] = &[
                 0,
                 "L-Py draws its random numbers with another generator than Meristem's: th",
             ),
-            (1, "Python imports are not translated"),
             (
                 12,
                 "the Python function 'txt' returns str(round(val,2))[:5]: '[' in an expre",
@@ -948,7 +944,6 @@ const CORPUS: &[Entry] = &[
                 0,
                 "L-Py draws its random numbers with another generator than Meristem's: th",
             ),
-            (1, "Python imports are not translated"),
             (13, "the Python function 'Start' is not translated"),
             (
                 23,
@@ -966,7 +961,6 @@ const CORPUS: &[Entry] = &[
 const FAILURES: &[Failure] = &[
 ("modules carry Python objects (T(SegmentData())) and the bending is computed with PlantGL vectors in Python; nothing of it is expressible, not even the axiom", ("lpy/16a-branch-bending.lpy", 0, 0, &[(
 0, "nothing to derive: no axiom could be imported"),(
-1, "Python imports are not translated"),(
 2, "Python imports are not translated"),(
 3, "Python imports are not translated"),(
 14, "the Python statement 'Forward,Backward,Growth=range(3)' is not translate"),(
@@ -992,7 +986,6 @@ const FAILURES: &[Failure] = &[
 167, "the Python function '__initialiseContext__' is not translated"),])),
 ("modules carry Python objects (SegmentData()) and the bending is computed with PlantGL vectors in Python; nothing of it is expressible, not even the axiom", ("lpy/16b-branching-system-bending.lpy", 0, 0, &[(
 0, "nothing to derive: no axiom could be imported"),(
-1, "Python imports are not translated"),(
 2, "Python imports are not translated"),(
 3, "Python imports are not translated"),(
 15, "the Python statement 'Forward,Backward,Growth=range(3)' is not translate"),(

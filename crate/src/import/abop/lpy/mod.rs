@@ -290,6 +290,11 @@ impl Importer {
                 return next;
             }
         }
+        if imports_only_numbers(code) {
+            // The names `math` and `random` bring are translated where they are used (and one
+            // that is not gets its note there): importing them loses nothing.
+            return next;
+        }
         let first = code
             .split(|c: char| !c.is_ascii_alphanumeric() && c != '_')
             .next();
@@ -477,4 +482,19 @@ fn is_time_step(name: &str, value: &str) -> bool {
     let is_dt = crate::vocabulary::value_named(name)
         .is_some_and(|v| v.value == crate::vocabulary::Value::Dt);
     is_dt && crate::number::parse_f64(value.trim()).is_some_and(|v| v.is_finite() && v > 0.0)
+}
+
+/// True for `import math`, `import random`, `from math import …` and `from random import …`:
+/// Python's modules of numbers, whose functions the expression translator knows by name.
+fn imports_only_numbers(code: &str) -> bool {
+    const NUMBERS: [&str; 2] = ["math", "random"];
+    let words: Vec<&str> = code.split_whitespace().collect();
+    match words.as_slice() {
+        ["from", module, "import", ..] => NUMBERS.contains(module),
+        ["import", rest @ ..] if !rest.is_empty() => rest
+            .join(" ")
+            .split(',')
+            .all(|m| NUMBERS.contains(&m.trim())),
+        _ => false,
+    }
 }
