@@ -325,12 +325,7 @@ const CORPUS: &[Entry] = &[
             ),
         ],
     ),
-    (
-        "lpy/07-continuous-growth.lpy",
-        8,
-        7,
-        &[],
-    ),
+    ("lpy/07-continuous-growth.lpy", 8, 7, &[]),
     (
         "lpy/09-flower-continous-growth.lpy",
         6042,

@@ -115,9 +115,25 @@ fn python_is_needed_when_the_translation_has_notes_or_draws_nothing() {
     assert!(!needs_python(&clean));
     let nothing = import("Axiom: A\n", Dialect::Lpy);
     assert!(needs_python(&nothing));
-    let noted = import("import math\nAxiom: F(math.pi)\n", Dialect::Lpy);
+    let noted = import("import numpy\nAxiom: F(1)\n", Dialect::Lpy);
     assert!(!noted.notes.is_empty());
     assert!(needs_python(&noted));
+    // Python's modules of numbers lose nothing: their names are translated where they are used.
+    for numbers in [
+        "import math",
+        "from math import *",
+        "from random import uniform, seed",
+        "import math, random",
+    ] {
+        let clean = import(&format!("{numbers}\nAxiom: F(math.pi)\n"), Dialect::Lpy);
+        assert!(clean.notes.is_empty(), "{numbers}: {:?}", clean.notes);
+        assert!(!needs_python(&clean), "{numbers}");
+    }
+    let unknown = import("from math import erf\nAxiom: F(erf(1))\n", Dialect::Lpy);
+    assert!(
+        needs_python(&unknown),
+        "a name Meristem lacks is noted where it is used"
+    );
     assert!(needs_python(&Import::default()));
 }
 
