@@ -313,6 +313,12 @@ impl<'a, C: Canvas> Interpreter<'a, C> {
             // A declared `~X` is drawn by `run` (`declared_surface`), which knows its module.
             Command::Surface => {}
             Command::Sphere => self.sphere(first, index),
+            Command::LineTo
+            | Command::LineRel
+            | Command::OrientedLineTo
+            | Command::OrientedLineRel => return self.line(command, params, index),
+            Command::SetHeading => self.turtle.set_heading(params),
+            Command::Frame => self.frame(value.unwrap_or(1.0), index),
             Command::MoveTo
             | Command::TropismVector
             | Command::TropismStrength
@@ -460,6 +466,64 @@ impl<'a, C: Canvas> Interpreter<'a, C> {
         }
     }
 
+    /// `@LineTo`, `@LineRel`, `@OLineTo`, `@OLineRel` (L-Py's commands): a segment from the
+    /// turtle to a point, or by a vector, whatever the heading. The segment is drawn square to its
+    /// own direction (the turtle's frame turned the least way onto it); the `O` forms keep that
+    /// frame, the others keep the turtle's. A fourth parameter is the width from then on. Inside
+    /// a polygon the end is a vertex, as `F`'s. Returns whether the turtle moved.
+    fn line(&mut self, command: Command, params: &[f64], index: u32) -> bool {
+        let Some(v) = vector(params) else {
+            return false;
+        };
+        let t = &mut self.turtle;
+        let start = t.position;
+        let end = match command {
+            Command::LineTo | Command::OrientedLineTo => v,
+            _ => start + v,
+        };
+        let mut along = *t;
+        along.point_to(end - start);
+        along.position = end;
+        if let Some((points, ..)) = self.open_polygons.last_mut() {
+            points.push(end);
+            along.last_segment = None;
+        } else if end != start {
+            self.segments_within_bounds &= segment_within_bounds(start, &along);
+            let segment = self.canvas.segment(start, &along, index);
+            along.last_segment = Some(segment);
+            along.anchor = Some(segment);
+        }
+        if let Some(w) = params.get(3).filter(|w| w.is_finite()) {
+            self.canvas.widths_set();
+            along.width = w.max(0.0);
+        }
+        if matches!(command, Command::LineTo | Command::LineRel) {
+            along.heading = t.heading;
+            along.left = t.left;
+            along.up = t.up;
+        }
+        *t = along;
+        true
+    }
+
+    /// `@Frame(s)`: H, L and U drawn from the turtle, each `size` long, in the palette's red,
+    /// green and blue entries ([`FRAME_COLORS`]); the turtle does not move.
+    fn frame(&mut self, size: f64, index: u32) {
+        let t = self.turtle;
+        if !(size.is_finite() && size > 0.0) {
+            return;
+        }
+        for (axis, color) in [t.heading, t.left, t.up].into_iter().zip(FRAME_COLORS) {
+            let mut arm = t;
+            arm.point_to(axis);
+            arm.position = t.position + axis * size;
+            arm.color = color;
+            arm.last_segment = None;
+            self.segments_within_bounds &= segment_within_bounds(t.position, &arm);
+            self.canvas.segment(t.position, &arm, index);
+        }
+    }
+
     /// `{`, `.`, `}`.
     fn polygon(&mut self, command: Command, index: u32) {
         let t = &self.turtle;
@@ -579,6 +643,10 @@ impl<'a, C: Canvas> Interpreter<'a, C> {
         self.canvas
     }
 }
+
+/// The colour indices `@Frame` draws H, L and U in: the default palette's signal red, leaf
+/// green and blue (L-Py draws them red, green and blue).
+const FRAME_COLORS: [u16; 3] = [10, 5, 13];
 
 /// The first three parameters as a vector, when there are three and they are finite.
 fn vector(params: &[f64]) -> Option<DVec3> {

@@ -79,4 +79,6 @@ pub fn heights(model: &Model, string: &LString, adjustments: Option<&Adjustments
 }
 
 #[cfg(test)]
+mod line_tests;
+#[cfg(test)]
 mod tests;

@@ -193,7 +193,7 @@ enum Op {
     NextColor,
     SetColor,
     /// Something the plain loop leaves to the interpreter (polygons, surfaces, spheres, tropism,
-    /// `@M`).
+    /// `@M`, lines to points, `@R`, frames).
     Other,
 }
 
@@ -243,6 +243,12 @@ fn op_of(command: Option<Command>) -> (Op, f64) {
         | C::Surface
         | C::Sphere
         | C::MoveTo
+        | C::LineTo
+        | C::LineRel
+        | C::OrientedLineTo
+        | C::OrientedLineRel
+        | C::SetHeading
+        | C::Frame
         | C::TropismVector
         | C::TropismStrength => (Op::Other, 1.0),
     }

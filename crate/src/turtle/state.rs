@@ -123,6 +123,45 @@ impl TurtleState {
         self.set_frame(rotation * self.heading, rotation * self.left);
     }
 
+    /// Turns the frame the least way so that H points along `direction` (about U by 180° when
+    /// it points straight back); nothing for a zero or non-finite direction.
+    pub fn point_to(&mut self, direction: DVec3) {
+        let length = direction.length();
+        if !(length.is_finite() && length > 0.0) {
+            return;
+        }
+        let target = direction / length;
+        let axis = self.heading.cross(target);
+        let s = axis.length();
+        if s < 1e-12 {
+            if self.heading.dot(target) < 0.0 {
+                self.set_frame(target, -self.left);
+            }
+            return;
+        }
+        let rotation = maths::rotation(axis / s, maths::angle_between(self.heading, target));
+        self.set_frame(target, rotation * self.left);
+    }
+
+    /// `@R(hx, hy, hz, ux, uy, uz)`: H along the first vector; U along the second made square to
+    /// H (L = U × H), or, without it (or with one along H), the least turn onto H.
+    pub fn set_heading(&mut self, params: &[f64]) {
+        let finite = |k: usize| {
+            let v = DVec3::new(params[k], params[k + 1], params[k + 2]);
+            v.is_finite().then_some(v)
+        };
+        let Some(heading) = (params.len() >= 3).then(|| finite(0)).flatten() else {
+            return;
+        };
+        let up = (params.len() >= 6).then(|| finite(3)).flatten();
+        match up {
+            Some(u) if u.cross(heading).length() > 1e-9 * u.length() * heading.length() => {
+                self.set_frame(heading, u.cross(heading))
+            }
+            _ => self.point_to(heading),
+        }
+    }
+
     /// Sets H and L, re-orthonormalising so that rounding never accumulates; U = H × L.
     fn set_frame(&mut self, heading: DVec3, left: DVec3) {
         let h = heading.normalize();

@@ -41,6 +41,18 @@ pub enum Command {
     Surface,
     Sphere,
     MoveTo,
+    /// `@LineTo`: draw a segment to a point; the frame is unchanged.
+    LineTo,
+    /// `@LineRel`: draw a segment by a vector; the frame is unchanged.
+    LineRel,
+    /// `@OLineTo`: draw a segment to a point, turning H along it.
+    OrientedLineTo,
+    /// `@OLineRel`: draw a segment by a vector, turning H along it.
+    OrientedLineRel,
+    /// `@R`: set the heading, and the up vector when given.
+    SetHeading,
+    /// `@Frame`: draw the turtle's frame, H, L and U, as three segments.
+    Frame,
     TropismVector,
     TropismStrength,
     StartSmooth,
@@ -166,6 +178,37 @@ const POINT: &[Param] = &[
     Param::number("y", "y coordinate"),
     Param::number("z", "z coordinate"),
 ];
+const LINE: &[Param] = &[
+    Param::number("x", "x coordinate"),
+    Param::number("y", "y coordinate"),
+    Param::number("z", "z coordinate"),
+    Param::number(
+        "w",
+        "the width from the segment's end on; without it, the width stays",
+    )
+    .unit("width units"),
+];
+const LINE_BY: &[Param] = &[
+    Param::number("x", "x component"),
+    Param::number("y", "y component"),
+    Param::number("z", "z component"),
+    Param::number(
+        "w",
+        "the width from the segment's end on; without it, the width stays",
+    )
+    .unit("width units"),
+];
+const HEADING_UP: &[Param] = &[
+    Param::number("hx", "the heading's x component"),
+    Param::number("hy", "the heading's y component"),
+    Param::number("hz", "the heading's z component"),
+    Param::number(
+        "ux",
+        "the up vector's x component; without the up vector, the frame turns the least way",
+    ),
+    Param::number("uy", "the up vector's y component"),
+    Param::number("uz", "the up vector's z component"),
+];
 const VECTOR: &[Param] = &[
     Param::number("x", "x component"),
     Param::number("y", "y component"),
@@ -195,6 +238,10 @@ pub const MODULES: &[ModuleInfo] = &[
     row("G", Turtle(C::ForwardNoVertex), LENGTH, "Draw forward by l without recording a polygon vertex.", K::Move),
     row("g", Turtle(C::MoveNoVertex), LENGTH, "Move forward by l without drawing or recording a polygon vertex.", K::Move),
     row("@M", Turtle(C::MoveTo), POINT, "Move to the point (x, y, z) without drawing.", K::Move),
+    row("@LineTo", Turtle(C::LineTo), LINE, "Draw a segment from the turtle to the point (x, y, z); H, L and U do not turn.", K::Move),
+    row("@LineRel", Turtle(C::LineRel), LINE_BY, "Draw a segment from the turtle by the vector (x, y, z); H, L and U do not turn.", K::Move),
+    row("@OLineTo", Turtle(C::OrientedLineTo), LINE, "Draw a segment from the turtle to the point (x, y, z), turning H along it the least way.", K::Move),
+    row("@OLineRel", Turtle(C::OrientedLineRel), LINE_BY, "Draw a segment from the turtle by the vector (x, y, z), turning H along it the least way.", K::Move),
     row("+", Turtle(C::TurnLeft), ANGLE, "Turn left by a degrees around the up vector U.", K::Rotate),
     row("-", Turtle(C::TurnRight), ANGLE, "Turn right by a degrees around the up vector U.", K::Rotate),
     row("&", Turtle(C::PitchDown), ANGLE, "Pitch down by a degrees around the left vector L.", K::Rotate),
@@ -202,6 +249,7 @@ pub const MODULES: &[ModuleInfo] = &[
     row("\\", Turtle(C::RollLeft), ANGLE, "Roll left by a degrees around the heading H.", K::Rotate),
     row("/", Turtle(C::RollRight), ANGLE, "Roll right by a degrees around the heading H.", K::Rotate),
     row("|", Turtle(C::TurnAround), &[], "Turn around: 180° around the up vector U.", K::Rotate),
+    row("@R", Turtle(C::SetHeading), HEADING_UP, "Set the heading H to (hx, hy, hz) and, when given, the up vector U to (ux, uy, uz) made square to H.", K::Rotate),
     row("$", Turtle(C::RollToVertical), &[], "Roll around H so that L is horizontal (ABOP p. 57).", K::Rotate),
     row("@v", Turtle(C::RollToVertical), &[], "Roll around H so that L is horizontal; the same as $.", K::Rotate),
     row("[", Turtle(C::Push), &[], "Start a branch: push the turtle state.", K::Branch),
@@ -219,6 +267,8 @@ pub const MODULES: &[ModuleInfo] = &[
     row("~p", Turtle(C::Petal), SCALE, "Draw the predefined petal, s long, along H.", K::Surface),
     row("~X", Turtle(C::Surface), SURFACE_SCALES,
         "Draw the surface declared for the letter X (#surface X, #patch X), scaled by s, or by s along L, sy along H and sz along U.", K::Surface),
+    row("@Frame", Turtle(C::Frame), &[Param::number("s", "the length of each axis").default(1.0).unit("units")],
+        "Draw the turtle's frame: H in colour 10 (red), L in colour 5 (green), U in colour 13 (blue), each s long, at the current width.", K::Appearance),
     row("@O", Turtle(C::Sphere), &[Param::number("r", "the radius; without it, half the current width")],
         "Draw a sphere of radius r (without r: as wide as the current width).", K::Surface),
     row("@Tp", Turtle(C::TropismVector), VECTOR, "Set this branch's tropism vector T.", K::Tropism),

@@ -180,7 +180,11 @@ impl Importer {
             "EP" => "}".to_string(),
             "IncColor" => "'".to_string(),
             "DecColor" => "'(-1)".to_string(),
-            "MoveTo" => format!("@M({a})"),
+            "MoveTo" | "MoveTo3f" | "MoveTo3d" => format!("@M({a})"),
+            // lpfg's lines to a point or by a vector (`stdmods.h`), in cpfg's axes as Meristem's.
+            "LineTo" | "LineTo3f" | "LineTo3d" => format!("@LineTo({a})"),
+            "LineRel3f" | "LineRel3d" => format!("@LineRel({a})"),
+            "SetHead" | "SetHead3f" => format!("@R({a})"),
             "RollToVert" => "$".to_string(),
             "Circle" | "Circle0" | "CircleFront" | "CircleFront0" | "CircleB" | "CircleFrontB" => {
                 self.note_once(

@@ -166,6 +166,18 @@ impl Importer {
         if let Some(text) = self.view_module(name, &params, has_params, n) {
             return text;
         }
+        if self.flavour == Flavour::Lpy {
+            if let Some(text) = super::lpy::axes::placed(name, &params) {
+                return text;
+            }
+            if name == "Frame" {
+                // Its other parameters shape the arrows' cones, which Meristem does not draw.
+                return with(
+                    name_of(Meaning::Turtle(Command::Frame)),
+                    &params[..params.len().min(1)],
+                );
+            }
+        }
         let query = name_of(Meaning::Turtle(Command::QueryPosition));
         if self.flavour == Flavour::Lpy && name == query && params.len() == 3 {
             // L-Py's turtle starts heading up along +Z and turns (`+`) in the Y-Z plane;

@@ -3,6 +3,7 @@
 //! `if`/`elif`/`else` and `produce` become conditional productions ([`bodies`]), globals that
 //! productions set become flags ([`flags`], [`globals`]); L-Py's long module names.
 
+pub(super) mod axes;
 pub(super) mod bodies;
 pub(super) mod flags;
 pub(super) mod globals;
@@ -26,6 +27,12 @@ pub(in crate::import::abop) const LPY_NAMES: &[(&str, Meaning)] = &[
     ("IncColor", Meaning::Turtle(Command::SetColor)),
     ("Sphere", Meaning::Turtle(Command::Sphere)),
     ("MoveTo", Meaning::Turtle(Command::MoveTo)),
+    ("LineTo", Meaning::Turtle(Command::LineTo)),
+    ("LineRel", Meaning::Turtle(Command::LineRel)),
+    ("OLineTo", Meaning::Turtle(Command::OrientedLineTo)),
+    ("OLineRel", Meaning::Turtle(Command::OrientedLineRel)),
+    ("SetHead", Meaning::Turtle(Command::SetHeading)),
+    ("Frame", Meaning::Turtle(Command::Frame)),
     ("StartGC", Meaning::Turtle(Command::StartSmooth)),
     ("EndGC", Meaning::Turtle(Command::EndSmooth)),
     ("Cut", Meaning::Cut),
@@ -45,13 +52,8 @@ pub(in crate::import::abop) const LPY_PREDEFINED: &[&str] = &[
     "EP",
     "PP",
     "MoveRel",
-    "LineTo",
-    "OLineTo",
     "Pinpoint",
-    "LineRel",
-    "OLineRel",
     "PinpointRel",
-    "SetHead",
     "EulerAngles",
     "Left",
     "Right",
@@ -77,7 +79,6 @@ pub(in crate::import::abop) const LPY_PREDEFINED: &[&str] = &[
     "SetScale",
     "surface",
     "PglShape",
-    "Frame",
     "Arrow",
     "Elasticity",
     "Tropism",
