@@ -366,32 +366,24 @@ const CORPUS: &[Entry] = &[
         ],
     ),
     ("lpy/13-branched-signal.lpy", 16, 7, &[]),
-    ("lpy/Frame.lpy", 5, 1, &[]),
+    ("lpy/Frame.lpy", 1, 3, &[]),
     ("lpy/branching.lpy", 6, 3, &[]),
     ("lpy/combined.lpy", 37, 7, &[]),
     ("lpy/ex_lsystem3.lpy", 134, 48, &[]),
-    ("lpy/filledPolygons.lpy", 20, 1, &[]),
+    ("lpy/filledPolygons.lpy", 16, 3, &[]),
     ("lpy/generalizedCylinders.lpy", 12, 6, &[]),
     ("lpy/harderExample.lpy", 61, 10, &[]),
-    ("lpy/movement.lpy", 6, 1, &[]),
+    ("lpy/movement.lpy", 2, 3, &[]),
     (
         "lpy/orientation.lpy",
-        6,
-        1,
+        2,
+        3,
         &[(
             2,
             "'Pinpoint' is not a module Meristem knows; kept as a module its turtle i",
         )],
     ),
-    (
-        "lpy/polygons.lpy",
-        7,
-        3,
-        &[(
-            2,
-            "'Frame' is not a module Meristem knows; kept as a module its turtle igno",
-        )],
-    ),
+    ("lpy/polygons.lpy", 7, 6, &[]),
     (
         "lpy/resolution.lpy",
         5,
@@ -485,10 +477,6 @@ const CORPUS: &[Entry] = &[
             (
                 37,
                 "cpfg's predecessor F(n) A is 2 modules; Meristem's predecessor is one mo",
-            ),
-            (
-                53,
-                "cpfg's @R is not a Meristem command; kept as a module the turtle ignores",
             ),
             (
                 53,
@@ -720,10 +708,6 @@ const CORPUS: &[Entry] = &[
                 "cpfg's printf prints to the console; it is not translated (the plant is ",
             ),
             (145, "cpfg's @c without a diameter is as wide as the line"),
-            (
-                147,
-                "cpfg's @R is not a Meristem command; kept as a module the turtle ignores",
-            ),
             (
                 147,
                 "cpfg's @L draws a text label; Meristem draws no text, so the label is dr",

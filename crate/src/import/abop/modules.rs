@@ -6,7 +6,7 @@ use super::cpfg::cpfg_symbol;
 use super::lpy::LPY_NAMES;
 use super::{split_top, Env, Flavour, Importer};
 use crate::syntax::PARENTHESES;
-use crate::vocabulary::{module_named, name_of, Command, Meaning};
+use crate::vocabulary::{module_named, name_of};
 
 /// The module name at `chars[start]`, which is `@`, `~` or `?`: `@` and the letters after it
 /// (or cpfg's one symbol, `@!`, `@#`), or `~` or `?` and one letter. Returns it and the index
@@ -167,29 +167,9 @@ impl Importer {
             return text;
         }
         if self.flavour == Flavour::Lpy {
-            if let Some(text) = super::lpy::axes::placed(name, &params) {
+            if let Some(text) = self.lpy_world_module(name, &params, n) {
                 return text;
             }
-            if name == "Frame" {
-                // Its other parameters shape the arrows' cones, which Meristem does not draw.
-                return with(
-                    name_of(Meaning::Turtle(Command::Frame)),
-                    &params[..params.len().min(1)],
-                );
-            }
-        }
-        let query = name_of(Meaning::Turtle(Command::QueryPosition));
-        if self.flavour == Flavour::Lpy && name == query && params.len() == 3 {
-            // L-Py's turtle starts heading up along +Z and turns (`+`) in the Y-Z plane;
-            // Meristem's heads along +Y and turns in the X-Y plane: L-Py's z is Meristem's y,
-            // its y is Meristem's x, its x Meristem's z.
-            self.note_once(
-                query,
-                n,
-                "L-Py's turtle grows along +Z and turns towards Y, Meristem's grows along +Y and turns towards X: ?P(x,y,z) becomes ?P(y,z,x), so that each name reads the same axis of the plant; signs along the horizontal axes may differ",
-            );
-            let params = vec![params[1].clone(), params[2].clone(), params[0].clone()];
-            return with(query, &params);
         }
         if name == "," {
             return if has_params {
