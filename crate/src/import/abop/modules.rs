@@ -71,6 +71,8 @@ impl Importer {
             let (name, after) =
                 if (c == '@' || c == '~' || c == '?') && self.flavour == Flavour::Cpfg {
                     cpfg_symbol(&chars, i)
+                } else if (c == '@' || c == '~' || c == '?') && self.flavour == Flavour::Lpy {
+                    super::lpy::lpy_symbol_name(&chars, i)
                 } else if c == '@' || c == '~' || c == '?' {
                     symbol_name(&chars, i)
                 } else if c.is_ascii_alphabetic() && self.flavour == Flavour::Lpy {

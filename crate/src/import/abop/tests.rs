@@ -94,6 +94,19 @@ fn body(import: &Import) -> Vec<&str> {
 }
 
 #[test]
+fn lpy_reads_its_at_names_longest_first() {
+    // L-Py reads `@gSetColor(3)` as `@g` then `SetColor(3)`, and `@GcF` as `@Gc F`.
+    let import = super::import("Axiom: @gSetColor(3)@GcF(2)@Ge@Foo\n", Flavour::Lpy);
+    let axiom = body(&import)[0].to_string();
+    assert_eq!(axiom, "axiom: @g;(3)@GcF(2)@Ge@Foo", "{:?}", import.notes);
+    assert!(import.notes.iter().any(|n| n.message.contains("@g ")));
+    assert!(
+        import.notes.iter().any(|n| n.message.contains("@Foo")),
+        "an unknown @ name stays one name"
+    );
+}
+
+#[test]
 fn lpy_reads_undeclared_words_letter_by_letter_and_nests_its_ifs_and_locals() {
     let import = resolved(
         "Axiom: A(1)\nderivation length: 2\nproduction:\nA(x) :\n    p = min(1, x**2)\n    r = random()\n    if r <= p:\n        produce IB(1-x)\n    else:\n        produce A(x+p)\nB(x) :\n    if x >= 1:\n        if x < 3:\n            produce F(x)\n        else:\n            produce F(1)\n    else:\n        produce B(x+1)\nendlsystem\n",

@@ -42,6 +42,24 @@ pub(in crate::import::abop) const LPY_NAMES: &[(&str, Meaning)] = &[
     ("GetLeft", Meaning::Turtle(Command::QueryLeft)),
 ];
 
+/// L-Py's predefined modules whose names start with `@` (its `predefinedmodules.cpp`): L-Py
+/// reads them longest first, so `@gSetColor(3)` is `@g` then `SetColor(3)`.
+const LPY_AT_NAMES: &str = "@2D @3D @B @D @Dd @Di @Gc @Ge @L @M @O @R @Tp @Ts @b @g @h @o @v";
+
+/// The module name at `chars[start]`, an `@`, `~` or `?`, as L-Py reads it: one of its `@` names,
+/// longest first; otherwise as [`super::modules::symbol_name`] reads any dialect's.
+pub(in crate::import::abop) fn lpy_symbol_name(chars: &[char], start: usize) -> (String, usize) {
+    let (name, end) = super::modules::symbol_name(chars, start);
+    let known = LPY_AT_NAMES
+        .split(' ')
+        .filter(|at| name.starts_with(at))
+        .max_by_key(|at| at.len());
+    match known {
+        Some(at) if at.len() < name.len() => (at.to_string(), start + at.chars().count()),
+        _ => (name, end),
+    }
+}
+
 /// L-Py's other predefined modules with names longer than a letter (its `predefinedmodules.cpp`):
 /// a word among them is one module even undeclared; any other undeclared word is read letter by
 /// letter, as L-Py reads it (`IB(1-x)` is `I` then `B(1-x)`).
