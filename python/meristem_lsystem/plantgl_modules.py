@@ -60,7 +60,8 @@ def plantgl_names() -> dict:
     names = _math_names()
     for n in ("Point2Array", "Point3Array", "Point4Array", "Point4Matrix", "NurbsCurve2D",
               "NurbsCurve", "BezierCurve2D", "BezierCurve", "Polyline2D", "Polyline",
-              "QuantisedFunction", "Material", "ImageTexture", "Texture2D", "Point3Grid", "pointset_mean_direction"):
+              "QuantisedFunction", "Material", "ImageTexture", "Texture2D", "Point3Grid", "pointset_mean_direction",
+              "Discretizer"):
         names[n] = getattr(geo, n)
     names["NurbsPatch"], names["BezierPatch"] = patch.NurbsPatch, patch.BezierPatch
     names.update(geo.GEOMETRY)
