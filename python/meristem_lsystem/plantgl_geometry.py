@@ -14,6 +14,7 @@ import bisect
 from .plantgl_math import Color3, Vector2, Vector3, Vector4, _Vector
 
 SAMPLES = 32
+DEFAULT_STRIDE = 30  # PlantGL: BezierCurve::DEFAULT_STRIDE, also NurbsCurve's
 
 
 class _PointArray(list):
@@ -100,8 +101,14 @@ class _Curve:
         a, b = self.firstKnot, self.lastKnot
         return [self.getPointAt(a + (b - a) * i / (count - 1)) for i in range(count)]
 
+    def getStride(self):
+        return int(getattr(self, "stride", DEFAULT_STRIDE))
+
     def getLength(self):
-        pts = self.sample(100)
+        """PlantGL's `LineicModel::getLength`: the polyline through `stride` + 1 points at
+        uniform parameters."""
+        a, b, n = self.firstKnot, self.lastKnot, self.getStride()
+        pts = [self.getPointAt(a + (b - a) * i / n) for i in range(n + 1)]
         return sum((q - p).norm() for p, q in zip(pts, pts[1:]))
 
     def deepcopy(self):
@@ -110,17 +117,26 @@ class _Curve:
         return copy.deepcopy(self)
 
     def getArcLengthToUMapping(self):
-        """The function from normalised arc length in [0, 1] to the curve's parameter."""
-        count = 101
-        a, b = self.firstKnot, self.lastKnot
-        us = [a + (b - a) * i / (count - 1) for i in range(count)]
-        pts = [self.getPointAt(u) for u in us]
-        lengths = [0.0]
-        for p, q in zip(pts, pts[1:]):
-            lengths.append(lengths[-1] + (q - p).norm())
-        total = lengths[-1] or 1.0
-        curve = Polyline2D([(length / total, u) for length, u in zip(lengths, us)])
-        return QuantisedFunction(curve, count)
+        """PlantGL's `LineicModel::getArcLengthToUMapping`: normalised arc length in [0, 1] →
+        the curve's parameter, from `stride` + 1 samples (repeated points skipped), quantised
+        at 5 × stride."""
+        a, b, n = self.firstKnot, self.lastKnot, self.getStride()
+        total = self.getLength() or 1.0
+        p1, length, points = self.getPointAt(a), 0.0, [(0.0, a)]
+        for i in range(1, n + 1):
+            u = a + (b - a) * i / n
+            p2 = self.getPointAt(u)
+            step = (p2 - p1).norm()
+            if step > 0:
+                length += step
+                p1 = p2
+                points.append((length / total, u))
+        points[-1] = (1.0, b)
+        return QuantisedFunction(Polyline2D(points), 5 * n)
+
+    def apply(self, action):
+        """`curve.apply(Discretizer())`: PlantGL's visitor, for the discretizer only."""
+        return action.process(self)
 
     def describe(self):
         return {"type": type(self).__name__, "points": [list(p) for p in self.sample()]}
@@ -129,7 +145,11 @@ class _Curve:
 class NurbsCurve2D(_Curve):
     DIM = 2
 
-    def __init__(self, ctrlPointList, knotList=None, degree=3, stride=60, **kw):
+    def __init__(self, ctrlPointList, knotList=None, degree=None, stride=None, **kw):
+        if isinstance(knotList, int):  # PlantGL's other constructor: (points, degree, stride)
+            knotList, degree, stride = None, knotList, degree
+        degree = 3 if degree is None else degree
+        stride = DEFAULT_STRIDE if stride is None else stride
         kind = Vector3 if self.DIM == 2 else Vector4
         pts = [p if isinstance(p, _Vector) else kind(*p) for p in ctrlPointList]
         self.ctrlPointList = pts
@@ -161,7 +181,7 @@ class NurbsCurve(NurbsCurve2D):
 class BezierCurve2D(_Curve):
     DIM = 2
 
-    def __init__(self, ctrlPointList, stride=60, **kw):
+    def __init__(self, ctrlPointList, stride=DEFAULT_STRIDE, **kw):
         kind = Vector3 if self.DIM == 2 else Vector4
         self.ctrlPointList = [p if isinstance(p, _Vector) else kind(*p) for p in ctrlPointList]
         self.degree = len(self.ctrlPointList) - 1
@@ -201,6 +221,9 @@ class Polyline2D(_Curve):
     def sample(self, count=SAMPLES):
         return list(self.pointList)
 
+    def getStride(self):
+        return max(len(self.pointList) - 1, 1)
+
     @staticmethod
     def Circle(radius=1.0, slices=8):
         import math
@@ -211,73 +234,6 @@ class Polyline2D(_Curve):
 
 class Polyline(Polyline2D):
     DIM = 3
-
-
-class NurbsPatch:
-    """A NURBS surface: rows of Vector4 control points (x, y, z, w)."""
-
-    def __init__(self, ctrlPointMatrix, udegree=3, vdegree=3, uknotList=None, vknotList=None, **kw):
-        self.ctrlPointMatrix = Point4Matrix(ctrlPointMatrix)
-        rows, cols = len(self.ctrlPointMatrix), len(self.ctrlPointMatrix[0])
-        self.udegree = min(int(kw.get("udegree", udegree)), rows - 1)
-        self.vdegree = min(int(kw.get("vdegree", vdegree)), cols - 1)
-        self.uknotList = list(uknotList) if uknotList else _clamped_knots(rows, self.udegree)
-        self.vknotList = list(vknotList) if vknotList else _clamped_knots(cols, self.vdegree)
-
-    def getPointAt(self, u, v):
-        rows = []
-        for row in self.ctrlPointMatrix:
-            homog = [[p[0] * p[3], p[1] * p[3], p[2] * p[3], p[3]] for p in row]
-            rows.append(_de_boor(homog, self.vknotList, self.vdegree, v))
-        r = _de_boor(rows, self.uknotList, self.udegree, u)
-        w = r[3] or 1.0
-        return Vector3(r[0] / w, r[1] / w, r[2] / w)
-
-    def _derivative(self, u, v, du, dv):
-        h = 1e-4
-        a = self.getPointAt(max(0.0, u - h * du), max(0.0, v - h * dv))
-        b = self.getPointAt(min(1.0, u + h * du), min(1.0, v + h * dv))
-        return (b - a) / (2 * h)
-
-    def getUTangentAt(self, u, v):
-        return self._derivative(u, v, 1, 0)
-
-    def getVTangentAt(self, u, v):
-        return self._derivative(u, v, 0, 1)
-
-    def getNormalAt(self, u, v):
-        return (self.getUTangentAt(u, v) ^ self.getVTangentAt(u, v)).normed()
-
-    def getIsoUSectionAt(self, u):
-        """The NURBS curve of the surface at `u` (control points: the columns blended at u)."""
-        cols = list(zip(*self.ctrlPointMatrix))
-        ctrl = []
-        for col in cols:
-            homog = [[p[0] * p[3], p[1] * p[3], p[2] * p[3], p[3]] for p in col]
-            x, y, z, w = _de_boor(homog, self.uknotList, self.udegree, u)
-            w = w or 1.0
-            ctrl.append(Vector4(x / w, y / w, z / w, w))
-        return NurbsCurve(ctrl, self.vknotList, self.vdegree)
-
-    def getIsoVSectionAt(self, v):
-        ctrl = []
-        for row in self.ctrlPointMatrix:
-            homog = [[p[0] * p[3], p[1] * p[3], p[2] * p[3], p[3]] for p in row]
-            x, y, z, w = _de_boor(homog, self.vknotList, self.vdegree, v)
-            w = w or 1.0
-            ctrl.append(Vector4(x / w, y / w, z / w, w))
-        return NurbsCurve(ctrl, self.uknotList, self.udegree)
-
-    def describe(self, count=12):
-        grid = [[list(self.getPointAt(i / (count - 1), j / (count - 1))) for j in range(count)]
-                for i in range(count)]
-        return {"type": type(self).__name__, "points": grid}
-
-
-class BezierPatch(NurbsPatch):
-    def __init__(self, ctrlPointMatrix, **kw):
-        m = Point4Matrix(ctrlPointMatrix)
-        super().__init__(m, len(m) - 1, len(m[0]) - 1)
 
 
 class QuantisedFunction:
@@ -311,6 +267,31 @@ class QuantisedFunction:
 
     def describe(self):
         return {"type": "QuantisedFunction", "points": [[x, y] for x, y in zip(self.xs, self.ys)]}
+
+
+class Discretizer:
+    """PlantGL's Discretizer (`src/cpp/plantgl/algo/base/discretizer.cpp`) for curves: a
+    NURBS or Bézier curve becomes the Polyline through `stride` + 1 points at uniform
+    parameters (a 2D curve at z = 0), a Polyline2D the Polyline of its points. `result` holds it.
+    Other shapes are not available and say so."""
+
+    def __init__(self):
+        self.result = None
+
+    def process(self, shape):
+        if isinstance(shape, Polyline2D):
+            points = shape.pointList
+        elif isinstance(shape, (NurbsCurve2D, BezierCurve2D)):
+            a, b, n = shape.firstKnot, shape.lastKnot, shape.getStride()
+            points = [shape.getPointAt(a + (b - a) * i / n) for i in range(n)] + [shape.getPointAt(b)]
+        else:
+            raise NotImplementedError(f"PlantGL's Discretizer of a {type(shape).__name__} is not available")
+        self.result = Polyline([(*p, 0.0) if len(p) == 2 else tuple(p) for p in points])
+        return True
+
+    @property
+    def discretization(self):
+        return self.result
 
 
 class Material:
@@ -483,7 +464,6 @@ class Geometry:
 GEOMETRY_NAMES = [
     "Sphere", "Cylinder", "Cone", "Box", "Disc", "Frustum", "Paraboloid", "Revolution",
     "Extrusion", "Translated", "Scaled", "AxisRotated", "EulerRotated", "Oriented", "Shape",
-    "Discretizer",
     "Scene", "TriangleSet", "QuadSet", "FaceSet", "Group", "Swung", "Text", "Font", "PointSet",
     "Polyline2DSet", "IFS", "ExtrudedHull", "Tapered", "BoundingBox", "Transformed", "Matrix4",
     "Quaternion", "ProfileInterpolation", "Font", "Index", "IndexArray", "Index3Array",

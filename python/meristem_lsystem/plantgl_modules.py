@@ -10,6 +10,7 @@ import types
 
 from . import plantgl_geometry as geo
 from . import plantgl_math as pmath
+from . import plantgl_patch as patch
 from .lstring import AxialTree, Lstring, Module
 
 
@@ -58,9 +59,11 @@ def _math_names() -> dict:
 def plantgl_names() -> dict:
     names = _math_names()
     for n in ("Point2Array", "Point3Array", "Point4Array", "Point4Matrix", "NurbsCurve2D",
-              "NurbsCurve", "BezierCurve2D", "BezierCurve", "Polyline2D", "Polyline", "NurbsPatch",
-              "BezierPatch", "QuantisedFunction", "Material", "ImageTexture", "Texture2D", "Point3Grid", "pointset_mean_direction"):
+              "NurbsCurve", "BezierCurve2D", "BezierCurve", "Polyline2D", "Polyline",
+              "QuantisedFunction", "Material", "ImageTexture", "Texture2D", "Point3Grid", "pointset_mean_direction",
+              "Discretizer"):
         names[n] = getattr(geo, n)
+    names["NurbsPatch"], names["BezierPatch"] = patch.NurbsPatch, patch.BezierPatch
     names.update(geo.GEOMETRY)
     names["Color3Array"] = list
     names["Point3Matrix"] = geo.Point4Matrix

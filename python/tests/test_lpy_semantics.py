@@ -198,8 +198,9 @@ class Initialisation(unittest.TestCase):
         self.assertEqual(r["lstring"], "F(2.5)")
 
     def test_curve_objects_are_referenced(self):
-        r = run_text(self.SRC.replace("Axiom: F(length)", "Axiom: SetGuide(curve, 3) F(1)"))
-        self.assertTrue(r["lstring"].startswith("SetGuide(@obj0,3)"), r["lstring"])
+        # (a SetGuide is written out as the turns it makes: test_turtle_guide.py)
+        r = run_text(self.SRC.replace("Axiom: F(length)", "Axiom: SetContour(curve) F(1)"))
+        self.assertTrue(r["lstring"].startswith("SetContour(@obj0)"), r["lstring"])
         self.assertEqual(r["objects"][0]["type"], "NurbsCurve2D")
         self.assertEqual(r["objects"][0]["points"][0], [0.0, 0.0])
         self.assertEqual(r["objects"][0]["points"][-1], [2.0, 0.0])
