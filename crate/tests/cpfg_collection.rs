@@ -131,3 +131,17 @@ fn the_celtic_knots_tries_run_without_its_obstacle_program() {
     assert!((spheres[0].radius - 0.1).abs() < 1e-9);
     assert!(import.notes.iter().any(|n| n.message.contains("obcheck")));
 }
+
+#[test]
+fn sierpinski_grows_pascal_s_triangle_modulo_2_through_honda81() {
+    // `?E(x) : x==1 --> ;[F?E(0)]-(60)/(180)[F?E(0)]`, 15 steps, honda81 with radius 0.01 in
+    // space: two tips that meet both stop, so the live tips of row n are Pascal's triangle
+    // modulo 2, 2^popcount(n) of them, each drawing two segments in the next step:
+    // 2·Σ_{n<15} 2^popcount(n) = 2·(3^4 − 2^4) = 130.
+    let (import, b) = open("CPFG-Sierpinski");
+    assert!(import.text.contains("#environment collision radius 0.01\n"), "{}", import.text);
+    assert!(import.notes.is_empty(), "{:?}", import.notes);
+    let by_hand: u32 = (0..15u32).map(|n| 2 << n.count_ones()).sum();
+    assert_eq!(by_hand, 130);
+    assert_eq!(b.plant.stats.segments, by_hand as usize);
+}

@@ -93,6 +93,7 @@ pub trait Responder {
 }
 
 pub mod attractors;
+pub mod collision;
 mod grid;
 pub(crate) mod settings;
 pub mod space;

@@ -3,6 +3,7 @@
 //! at the setting.
 
 use super::attractors::Attractors;
+use super::collision::Collision;
 use super::light::Light;
 use super::obstacle::{Obstacle, Solid};
 use super::space::Space;
@@ -43,5 +44,6 @@ pub fn responder(
         EnvironmentProgram::Attractors => {
             Box::new(Attractors::new(spec, defaults.step, defaults.seed)?)
         }
+        EnvironmentProgram::Collision => Box::new(Collision::new(spec, defaults.step)?),
     })
 }

@@ -16,6 +16,8 @@ pub enum EnvironmentProgram {
     Space,
     /// Attraction points for space colonisation (Runions et al. 2007).
     Attractors,
+    /// Whether a bud meets another of at least its vigor (Honda 1981; vlab's `honda81`).
+    Collision,
 }
 
 /// The shape of an obstacle or of the volume attraction points fill.
@@ -134,6 +136,17 @@ pub const ENVIRONMENT_PROGRAMS: &[EnvironmentProgramInfo] = &[
         ],
         reply: &["count", "dx", "dy", "dz"],
         doc: text("Space colonisation (Runions et al. 2007): attraction points fill a shape; each is taken by the nearest `?E` within `influence`. Replies with how many points the `?E` takes and the unit mean direction towards them."),
+    },
+    EnvironmentProgramInfo {
+        name: "collision",
+        program: EnvironmentProgram::Collision,
+        shapes: &[],
+        settings: &[
+            setting("radius", 1, "How near two `?E` meet (default: the grammar's step length; 0: only at one point)."),
+            setting("flat", 1, "1: measure in the horizontal plane (x and z), as honda81's `3d case: off`; 0 (default): in space."),
+        ],
+        reply: &["free"],
+        doc: text("Honda's (1981) test, as vlab's honda81: `?E(vigor, kind)` replies 1 when no other `?E` of the same kind and at least its vigor is within `radius`, else 0 (both stop when equal). Only the `?E` meet, of every plant."),
     },
 ];
 

@@ -8,9 +8,8 @@
 //! through leaf balls: replies the light, then the brightest direction) and `shadowpyramid`
 //! (Palubicki et al. 2009's shadow propagation: the light, then its gradient) are light models
 //! and reply in the order Meristem's `light` does (exposure, dx, dy, dz); `honda81` (1 when no
-//! other `?E` of at least its vigor is within a radius, else 0) and `ecosystem` (the same with
-//! circles as wide as each `?E`'s first parameter) have no counterpart: `space` counts the parts
-//! around a point, it does not answer yes or no.
+//! other `?E` of at least its vigor is within a radius, else 0) is Meristem's `collision`;
+//! `ecosystem` (the same with circles as wide as each `?E`'s first parameter) has no counterpart.
 
 use super::Files;
 use crate::import::number;
@@ -118,16 +117,20 @@ pub(crate) fn read(e_name: &str, all: &Files) -> Option<Environment> {
             "{e_name} runs ecosystem (Honda 1981's test with each ?E a circle as wide as its first parameter: 1 when it overlaps no larger one, else 0: self-thinning of a stand); Meristem has no program that answers yes or no for the ?E themselves, so ?E keeps the parameters the L-system writes (the nearest is `space`, which counts the plants' parts within a radius)"
         )),
         "honda81" => {
+            // Meristem's collision is honda81's test, its radius and its plane (`3d case: off`,
+            // honda81's default, compares x and z): nothing to note.
             let radius = spec.number("radius").unwrap_or(0.0);
-            env.notes.push(format!(
-                "{e_name} runs {program} (Honda 1981: a ?E replies 1 when no other ?E of at least its vigor is within {} of it, else 0); Meristem has no program that answers yes or no for the ?E themselves, so ?E keeps the parameters the L-system writes (the nearest is `space radius {}`, which counts the plant's parts within the radius: a line for it is left as a comment)",
-                number(radius),
-                number(radius)
-            ));
+            let in_space = spec
+                .lines
+                .iter()
+                .rev()
+                .find(|(k, _)| k == "3d case")
+                .is_some_and(|(_, w)| w.first().is_some_and(|w| w == "on"));
+            let flat = if in_space { "" } else { " flat 1" };
             env.lines.push(format!(
-                "// {} {} radius {}",
+                "{} {} radius {}{flat}",
                 DirectiveKind::Environment.written(),
-                EnvironmentProgram::Space.info().name,
+                EnvironmentProgram::Collision.info().name,
                 number(radius)
             ));
         }
@@ -141,7 +144,7 @@ pub(crate) fn read(e_name: &str, all: &Files) -> Option<Environment> {
             ));
         }
         _ => env.notes.push(format!(
-            "{e_name} runs the environmental program {program}, which Meristem does not have (it has light, obstacle, space and attractors): ?E keeps the parameters the L-system writes"
+            "{e_name} runs the environmental program {program}, which Meristem does not have (it has light, obstacle, space, attractors and collision): ?E keeps the parameters the L-system writes"
         )),
     }
     Some(env)
@@ -303,6 +306,21 @@ mod tests {
         assert!(env.notes[0].contains("soil.spec is not in the object"));
         assert!(env.notes[1].contains("program soil, which Meristem does not have"));
         assert!(read("none.e", &Files::new(&files)).is_none());
+    }
+
+    #[test]
+    fn honda81_is_collision_in_its_plane_or_in_space() {
+        let files = object(&[
+            ("f.e", "executable: honda81 density.spec\n"),
+            ("density.spec", "verbose: off\nradius:  0.01\n3d case: on\n"),
+            ("g.e", "executable: honda81 -e g.e flat.spec\n"),
+            ("flat.spec", "radius: 2\n"),
+        ]);
+        let env = read("f.e", &Files::new(&files)).unwrap();
+        assert_eq!(env.lines, ["#environment collision radius 0.01"]);
+        assert!(env.notes.is_empty(), "{:?}", env.notes);
+        let env = read("g.e", &Files::new(&files)).unwrap();
+        assert_eq!(env.lines, ["#environment collision radius 2 flat 1"]);
     }
 
     #[test]

@@ -93,7 +93,9 @@ impl Importer {
         use crate::vocabulary::{name_of, Command, Meaning};
         let communication = name_of(Meaning::Turtle(Command::QueryEnvironment));
         if name == communication && self.flavour == Flavour::Cpfg {
-            self.note_once(name, n, self.communication_note());
+            if let Some(note) = self.communication_note() {
+                self.note_once(name, n, note);
+            }
         }
         if name == "_" && self.flavour == Flavour::Cpfg {
             self.note_once(

@@ -69,10 +69,14 @@ impl Importer {
         }
     }
 
-    /// The note at the first `?E`: what answers it.
-    pub(in crate::import::abop) fn communication_note(&self) -> String {
+    /// The note at the first `?E`: what answers it; `None` when the object's program became an
+    /// `#environment` line that answers as it does (nothing differs, nothing to note).
+    pub(in crate::import::abop) fn communication_note(&self) -> Option<String> {
         let environment = self.cpfg.view.as_ref().and_then(|v| v.environment.as_ref());
-        match environment {
+        Some(match environment {
+            Some(env) if env.lines.iter().any(|l| !l.starts_with("//")) && env.notes.is_empty() => {
+                return None
+            }
             Some(env) if env.lines.iter().any(|l| !l.starts_with("//")) => format!(
                 "?E(…) is answered between steps by the #environment line above, the object's {} translated (its note at the top says what differs)",
                 env.program
@@ -81,8 +85,8 @@ impl Importer {
                 "?E(…) asks the object's environmental program {}, which Meristem does not have: it is kept as a module whose parameters stay as the L-system writes them, and productions that read it see those values",
                 env.program
             ),
-            None => "cpfg's ?E(…) asks the environment program (a light or space model run beside cpfg) for values; the object's .e file, which names it, was not opened, so ?E is kept as a module whose parameters stay as the L-system writes them, unless an #environment line (light, obstacle, space or attractors) is added to answer it".into(),
-        }
+            None => "cpfg's ?E(…) asks the environment program (a light or space model run beside cpfg) for values; the object's .e file, which names it, was not opened, so ?E is kept as a module whose parameters stay as the L-system writes them, unless an #environment line (light, obstacle, space, attractors or collision) is added to answer it".into(),
+        })
     }
 
     /// The axiom's start: the view's initial colour.
