@@ -139,7 +139,11 @@ fn sierpinski_grows_pascal_s_triangle_modulo_2_through_honda81() {
     // modulo 2, 2^popcount(n) of them, each drawing two segments in the next step:
     // 2·Σ_{n<15} 2^popcount(n) = 2·(3^4 − 2^4) = 130.
     let (import, b) = open("CPFG-Sierpinski");
-    assert!(import.text.contains("#environment collision radius 0.01\n"), "{}", import.text);
+    assert!(
+        import.text.contains("#environment collision radius 0.01\n"),
+        "{}",
+        import.text
+    );
     assert!(import.notes.is_empty(), "{:?}", import.notes);
     let by_hand: u32 = (0..15u32).map(|n| 2 << n.count_ones()).sum();
     assert_eq!(by_hand, 130);

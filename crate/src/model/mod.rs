@@ -194,6 +194,17 @@ impl Model {
             .find(|&id| self.command(id) == Some(Command::QueryEnvironment))
     }
 
+    /// True when the grammar writes one of L-Py's commands that place the turtle by coordinates
+    /// or draw its frame (`@LineTo`, `@LineRel`, `@OLineTo`, `@OLineRel`, `@R`, `@Frame`), which
+    /// only a core with the feature `placing` draws (the first plant's core reads them as
+    /// modules without a meaning: by their names, [`crate::vocabulary::PLACING`]).
+    pub fn places_by_coordinates(&self) -> bool {
+        (0..self.alphabet.len()).any(|i| {
+            let name = self.alphabet.name(ModuleId(i as u32));
+            crate::vocabulary::PLACING.split(' ').any(|p| p == name)
+        })
+    }
+
     /// True when a query module (`?P ?H ?U ?L`) is in the grammar's alphabet.
     pub fn has_queries(&self) -> bool {
         (0..self.alphabet.len()).any(|i| {

@@ -313,12 +313,24 @@ impl<'a, C: Canvas> Interpreter<'a, C> {
             // A declared `~X` is drawn by `run` (`declared_surface`), which knows its module.
             Command::Surface => {}
             Command::Sphere => self.sphere(first, index),
+            #[cfg(feature = "placing")]
             Command::LineTo
             | Command::LineRel
             | Command::OrientedLineTo
             | Command::OrientedLineRel => return self.line(command, params, index),
+            #[cfg(feature = "placing")]
             Command::SetHeading => self.turtle.set_heading(params),
+            #[cfg(feature = "placing")]
             Command::Frame => self.frame(value.unwrap_or(1.0), index),
+            // The first plant's core: the build worker builds such a grammar again with the
+            // studio core (`Model::places_by_coordinates`).
+            #[cfg(not(feature = "placing"))]
+            Command::LineTo
+            | Command::LineRel
+            | Command::OrientedLineTo
+            | Command::OrientedLineRel
+            | Command::SetHeading
+            | Command::Frame => {}
             Command::MoveTo
             | Command::TropismVector
             | Command::TropismStrength
@@ -466,6 +478,7 @@ impl<'a, C: Canvas> Interpreter<'a, C> {
         }
     }
 
+    #[cfg(feature = "placing")]
     /// `@LineTo`, `@LineRel`, `@OLineTo`, `@OLineRel` (L-Py's commands): a segment from the
     /// turtle to a point, or by a vector, whatever the heading. The segment is drawn square to its
     /// own direction (the turtle's frame turned the least way onto it); the `O` forms keep that
@@ -506,6 +519,7 @@ impl<'a, C: Canvas> Interpreter<'a, C> {
         true
     }
 
+    #[cfg(feature = "placing")]
     /// `@Frame(s)`: H, L and U drawn from the turtle, each `size` long, in the palette's red,
     /// green and blue entries ([`FRAME_COLORS`]); the turtle does not move.
     fn frame(&mut self, size: f64, index: u32) {
@@ -644,6 +658,7 @@ impl<'a, C: Canvas> Interpreter<'a, C> {
     }
 }
 
+#[cfg(feature = "placing")]
 /// The colour indices `@Frame` draws H, L and U in: the default palette's signal red, leaf
 /// green and blue (L-Py draws them red, green and blue).
 const FRAME_COLORS: [u16; 3] = [10, 5, 13];

@@ -78,7 +78,7 @@ pub fn heights(model: &Model, string: &LString, adjustments: Option<&Adjustments
     heights
 }
 
-#[cfg(test)]
+#[cfg(all(test, feature = "placing"))]
 mod line_tests;
 #[cfg(test)]
 mod tests;

@@ -123,6 +123,7 @@ impl TurtleState {
         self.set_frame(rotation * self.heading, rotation * self.left);
     }
 
+    #[cfg(feature = "placing")]
     /// Turns the frame the least way so that H points along `direction` (about U by 180° when
     /// it points straight back); nothing for a zero or non-finite direction.
     pub fn point_to(&mut self, direction: DVec3) {
@@ -143,6 +144,7 @@ impl TurtleState {
         self.set_frame(target, rotation * self.left);
     }
 
+    #[cfg(feature = "placing")]
     /// `@R(hx, hy, hz, ux, uy, uz)`: H along the first vector; U along the second made square to
     /// H (L = U × H), or, without it (or with one along H), the least turn onto H.
     pub fn set_heading(&mut self, params: &[f64]) {

@@ -36,6 +36,7 @@ pub use expressions::{
 pub use keywords::{keyword_named, KeywordInfo, KeywordKind, KEYWORDS};
 pub use modules::{
     module_named, name_of, names_of, Category, Command, GroupKind, Meaning, ModuleInfo, MODULES,
+    PLACING,
 };
 pub use params::{Param, ParamDefault, ParamKind};
 pub use surfaces::{

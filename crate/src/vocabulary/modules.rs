@@ -76,6 +76,20 @@ impl Command {
         )
     }
 
+    /// True for L-Py's commands that place the turtle by coordinates or draw its frame (the
+    /// feature `placing`; [`PLACING`] names them).
+    pub fn places_by_coordinates(self) -> bool {
+        matches!(
+            self,
+            Command::LineTo
+                | Command::LineRel
+                | Command::OrientedLineTo
+                | Command::OrientedLineRel
+                | Command::SetHeading
+                | Command::Frame
+        )
+    }
+
     /// True for the moves that draw a segment (`F`, `G`).
     pub fn draws(self) -> bool {
         matches!(self, Command::Forward | Command::ForwardNoVertex)
@@ -178,6 +192,7 @@ const POINT: &[Param] = &[
     Param::number("y", "y coordinate"),
     Param::number("z", "z coordinate"),
 ];
+#[cfg(any(feature = "placing", not(target_arch = "wasm32")))]
 const LINE: &[Param] = &[
     Param::number("x", "x coordinate"),
     Param::number("y", "y coordinate"),
@@ -188,6 +203,7 @@ const LINE: &[Param] = &[
     )
     .unit("width units"),
 ];
+#[cfg(any(feature = "placing", not(target_arch = "wasm32")))]
 const LINE_BY: &[Param] = &[
     Param::number("x", "x component"),
     Param::number("y", "y component"),
@@ -198,6 +214,7 @@ const LINE_BY: &[Param] = &[
     )
     .unit("width units"),
 ];
+#[cfg(any(feature = "placing", not(target_arch = "wasm32")))]
 const HEADING_UP: &[Param] = &[
     Param::number("hx", "the heading's x component"),
     Param::number("hy", "the heading's y component"),
@@ -230,6 +247,12 @@ use Category as K;
 use Command as C;
 use Meaning::Turtle;
 
+/// The names of the commands [`Command::places_by_coordinates`] is true for. The first plant's
+/// core (wasm32 without the feature `placing`) has no rows for them, so that its first load
+/// carries none of their tables: it reads them as modules without a meaning, and tells the build
+/// worker by these names that the studio core must build the grammar.
+pub const PLACING: &str = "@LineTo @LineRel @OLineTo @OLineRel @R @Frame";
+
 /// Every module of LANGUAGE.md section 6 and the derivation-time modules of sections 6 and 7.
 #[rustfmt::skip]
 pub const MODULES: &[ModuleInfo] = &[
@@ -238,9 +261,13 @@ pub const MODULES: &[ModuleInfo] = &[
     row("G", Turtle(C::ForwardNoVertex), LENGTH, "Draw forward by l without recording a polygon vertex.", K::Move),
     row("g", Turtle(C::MoveNoVertex), LENGTH, "Move forward by l without drawing or recording a polygon vertex.", K::Move),
     row("@M", Turtle(C::MoveTo), POINT, "Move to the point (x, y, z) without drawing.", K::Move),
+    #[cfg(any(feature = "placing", not(target_arch = "wasm32")))]
     row("@LineTo", Turtle(C::LineTo), LINE, "Draw a segment from the turtle to the point (x, y, z); H, L and U do not turn.", K::Move),
+    #[cfg(any(feature = "placing", not(target_arch = "wasm32")))]
     row("@LineRel", Turtle(C::LineRel), LINE_BY, "Draw a segment from the turtle by the vector (x, y, z); H, L and U do not turn.", K::Move),
+    #[cfg(any(feature = "placing", not(target_arch = "wasm32")))]
     row("@OLineTo", Turtle(C::OrientedLineTo), LINE, "Draw a segment from the turtle to the point (x, y, z), turning H along it the least way.", K::Move),
+    #[cfg(any(feature = "placing", not(target_arch = "wasm32")))]
     row("@OLineRel", Turtle(C::OrientedLineRel), LINE_BY, "Draw a segment from the turtle by the vector (x, y, z), turning H along it the least way.", K::Move),
     row("+", Turtle(C::TurnLeft), ANGLE, "Turn left by a degrees around the up vector U.", K::Rotate),
     row("-", Turtle(C::TurnRight), ANGLE, "Turn right by a degrees around the up vector U.", K::Rotate),
@@ -249,6 +276,7 @@ pub const MODULES: &[ModuleInfo] = &[
     row("\\", Turtle(C::RollLeft), ANGLE, "Roll left by a degrees around the heading H.", K::Rotate),
     row("/", Turtle(C::RollRight), ANGLE, "Roll right by a degrees around the heading H.", K::Rotate),
     row("|", Turtle(C::TurnAround), &[], "Turn around: 180° around the up vector U.", K::Rotate),
+    #[cfg(any(feature = "placing", not(target_arch = "wasm32")))]
     row("@R", Turtle(C::SetHeading), HEADING_UP, "Set the heading H to (hx, hy, hz) and, when given, the up vector U to (ux, uy, uz) made square to H.", K::Rotate),
     row("$", Turtle(C::RollToVertical), &[], "Roll around H so that L is horizontal (ABOP p. 57).", K::Rotate),
     row("@v", Turtle(C::RollToVertical), &[], "Roll around H so that L is horizontal; the same as $.", K::Rotate),
@@ -267,6 +295,7 @@ pub const MODULES: &[ModuleInfo] = &[
     row("~p", Turtle(C::Petal), SCALE, "Draw the predefined petal, s long, along H.", K::Surface),
     row("~X", Turtle(C::Surface), SURFACE_SCALES,
         "Draw the surface declared for the letter X (#surface X, #patch X), scaled by s, or by s along L, sy along H and sz along U.", K::Surface),
+    #[cfg(any(feature = "placing", not(target_arch = "wasm32")))]
     row("@Frame", Turtle(C::Frame), &[Param::number("s", "the length of each axis").default(1.0).unit("units")],
         "Draw the turtle's frame: H in colour 10 (red), L in colour 5 (green), U in colour 13 (blue), each s long, at the current width.", K::Appearance),
     row("@O", Turtle(C::Sphere), &[Param::number("r", "the radius; without it, half the current width")],
@@ -374,6 +403,19 @@ mod tests {
         for name in others.split(' ').chain([""]) {
             assert!(module_named(name).is_none(), "{name:?}");
         }
+    }
+
+    #[test]
+    fn placing_names_exactly_the_rows_that_place_by_coordinates() {
+        let mut rows: Vec<&str> = MODULES
+            .iter()
+            .filter(|m| m.command().is_some_and(Command::places_by_coordinates))
+            .map(|m| m.name)
+            .collect();
+        let mut listed: Vec<&str> = PLACING.split(' ').collect();
+        rows.sort_unstable();
+        listed.sort_unstable();
+        assert_eq!(rows, listed);
     }
 
     #[test]

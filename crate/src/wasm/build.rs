@@ -241,6 +241,17 @@ impl PlantBuild {
             .is_some_and(|m| m.settings.surfaces_declared)
     }
 
+    /// True when the grammar places the turtle by coordinates or draws its frame (`@LineTo`,
+    /// `@LineRel`, `@OLineTo`, `@OLineRel`, `@R`, `@Frame`), which only the studio core
+    /// (crate/pkg, the feature `placing`) draws: the build worker builds it with that core.
+    #[wasm_bindgen(getter, js_name = placesByCoordinates)]
+    pub fn places_by_coordinates(&self) -> bool {
+        self.build
+            .model
+            .as_ref()
+            .is_some_and(|m| m.places_by_coordinates())
+    }
+
     /// True when the grammar declares an environment (`#environment`, `#stand`, `#plant`), which
     /// only the studio core (crate/pkg, the feature `environment`) runs: the build worker builds
     /// such a grammar with it, as it does one that declares surfaces.

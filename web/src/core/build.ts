@@ -111,11 +111,11 @@ export function studioCoreInUse(): boolean {
 
 /**
  * Whether the first plant's core built `build` without what its grammar needs (the clock of timed
- * modules, declared surfaces, an environment: no room in its first load), so that it must be built
+ * modules, declared surfaces, an environment, L-Py's placing commands: no room in its first load), so that it must be built
  * again once {@link loadStudioCore} is done.
  */
-export function needsStudioCore(build: Pick<PlantBuild, 'timed' | 'declaresSurfaces' | 'declaresEnvironment'>): boolean {
-  return (build.timed || build.declaresSurfaces || build.declaresEnvironment) && !studioCoreInUse();
+export function needsStudioCore(build: Pick<PlantBuild, 'timed' | 'declaresSurfaces' | 'declaresEnvironment' | 'placesByCoordinates'>): boolean {
+  return (build.timed || build.declaresSurfaces || build.declaresEnvironment || build.placesByCoordinates) && !studioCoreInUse();
 }
 
 /** How {@link inspectPlant} builds: a sketch first, progress, arrays for the GPU. */
@@ -289,6 +289,7 @@ export function plainBuild(source: string, result: WasmPlantBuild, { forGpu = fa
     seed: result.seed,
     timed: result.timed,
     declaresSurfaces: result.declaresSurfaces,
+    placesByCoordinates: result.placesByCoordinates,
     declaresEnvironment: result.declaresEnvironment,
     environment: environmentOf?.(result),
     // (A getter of the studio core's builds only.)

@@ -175,6 +175,11 @@ export interface PlantBuild {
    */
   declaresEnvironment: boolean;
   /**
+   * The grammar places the turtle by coordinates or draws its frame (`@LineTo`, `@R`, `@Frame`,
+   * L-Py's commands), which only the studio core draws: the build worker builds it with that core.
+   */
+  placesByCoordinates: boolean;
+  /**
    * What the build knows of its environment after its last step (the views draw it): present when
    * the grammar declares one and the studio core built it.
    */
