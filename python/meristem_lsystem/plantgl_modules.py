@@ -11,6 +11,7 @@ import types
 from . import plantgl_geometry as geo
 from . import plantgl_math as pmath
 from . import plantgl_patch as patch
+from . import plantgl_cspline, plantgl_profile
 from .lstring import AxialTree, Lstring, Module
 
 
@@ -99,7 +100,10 @@ def install(extra_lpy: dict) -> None:
         "openalea.plantgl.math": _module("openalea.plantgl.math", _math_names()),
         "openalea.plantgl.scenegraph": _module("openalea.plantgl.scenegraph", pgl),
         "openalea.plantgl.scenegraph.interpolated_profile": _module(
-            "openalea.plantgl.scenegraph.interpolated_profile", pgl),
+            "openalea.plantgl.scenegraph.interpolated_profile", {**pgl, **plantgl_profile.NAMES}),
+        "openalea.plantgl.scenegraph.cspline": _module(
+            "openalea.plantgl.scenegraph.cspline",
+            {"CSpline": plantgl_cspline.CSpline, "cspline": plantgl_cspline.cspline}),
         "openalea.lpy": _module("openalea.lpy", lpy, True),
         "openalea.lpy.parameterset": _module("openalea.lpy.parameterset", {"ParameterSet": ParameterSet}),
     }
@@ -108,5 +112,7 @@ def install(extra_lpy: dict) -> None:
     table["openalea.plantgl"].all = table["openalea.plantgl.all"]
     table["openalea.plantgl"].math = table["openalea.plantgl.math"]
     table["openalea.plantgl"].scenegraph = table["openalea.plantgl.scenegraph"]
+    for sub in ("interpolated_profile", "cspline"):
+        setattr(table["openalea.plantgl.scenegraph"], sub, table["openalea.plantgl.scenegraph." + sub])
     table["openalea.lpy"].parameterset = table["openalea.lpy.parameterset"]
     sys.modules.update(table)
