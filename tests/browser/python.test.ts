@@ -10,11 +10,17 @@ import { editorText, generation, nextBuild, PHONE, RESULTS, studioIn, VIEW_CANVA
 import { writeFileSync } from 'node:fs';
 import { zipSync } from 'fflate';
 
-/** A branching tree whose growth is Python: a function, `if`, `produce` with computed parameters. */
+/**
+ * A branching tree whose growth is Python: a function with a loop (which the hand translation
+ * cannot carry), `if`, `produce` with computed parameters.
+ */
 const TREE = `from math import sqrt
 
 def length(order):
-    return 1.0 / sqrt(order + 1)
+    s = 1.0
+    for i in range(order):
+        s = s * sqrt(0.5)
+    return s
 
 Axiom: A(0)
 derivation length: 5

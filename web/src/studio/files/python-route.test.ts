@@ -10,11 +10,13 @@ function route(files: { name: string; bytes: Uint8Array }[]) {
   return pythonRequest(files, openObjectBytes(files));
 }
 
-const BODY = 'from math import sqrt\n\nAxiom: A(0)\nderivation length: 2\nproduction:\nA(n):\n    if n < 1:\n        produce F(sqrt(n + 1))[+A(n + 1)]A(n + 1)\n    else:\n        produce F\nendlsystem\n';
+// A Python function with a loop: the hand translation cannot carry it (`from math import …` alone
+// would not need Python: its names are translated).
+const BODY = 'def length(n):\n    s = 1\n    for i in range(n):\n        s += i\n    return s\n\nAxiom: A(0)\nderivation length: 2\nproduction:\nA(n):\n    if n < 1:\n        produce F(length(n + 2))[+A(n + 1)]A(n + 1)\n    else:\n        produce F\nendlsystem\n';
 const LPFG = '#include <lpfgall.h>\nmodule A(int);\nderivation length: 2;\nAxiom: A(0);\nA(n) :\n{\n  if (n < 2) produce F(1) A(n + 1);\n}\n';
 
 describe('the Python route of opened files', () => {
-  it('runs an L-Py model that imports from Python, with its text', () => {
+  it('runs an L-Py model whose Python the translation cannot carry, with its text', () => {
     const request = route([{ name: 'tree.lpy', bytes: encode(BODY) }]);
     expect(request).toEqual({ files: { 'tree.lpy': BODY }, main: 'tree.lpy', options: { dialect: 'lpy', steps: null, seed: 0 } });
   });
