@@ -475,17 +475,47 @@ def fill_queries(rt, s: list) -> list:
     turtle = LpyTurtle(rt.context.turtle.settings, rt.note)
     from .lpy_derive import max_depth
 
+    out = list(s)
+    skips, last = _quiet_branches(out, turtle.names)
+    if last < 0:
+        return out
     saved = rt.forward_dir
     rt.forward_dir = True
     try:
-        out = list(s)
-        _interpret(rt, out, turtle, max_depth(rt, "interpretation"), True)
+        _interpret(rt, out, turtle, max_depth(rt, "interpretation"), True, skips, last)
     finally:
         rt.forward_dir = saved
     return out
 
 
-def _interpret(rt, s: list, turtle: LpyTurtle, depth: int, top: bool) -> None:
+def _quiet_branches(s: list, names) -> tuple[dict, int]:
+    """`[` index → its `]` for the branches that hold no query, and the last query's index.
+    What the turtle does there cannot change a query's value: `]` restores the whole state, and
+    nothing after the last query is read (this keeps a large string's guides from being walked
+    again at every step; interpretation rules are not run there, which only a rule body with
+    side effects on the model's globals could tell)."""
+    skips: dict[int, int] = {}
+    open_: list[list] = []  # [index, holds a query]
+    last = -1
+    for i, m in enumerate(s):
+        name = m.name
+        if name == "[":
+            open_.append([i, False])
+        elif name == "]" and open_:
+            start, holds = open_.pop()
+            if holds:
+                if open_:
+                    open_[-1][1] = True
+            else:
+                skips[start] = i
+        elif names.get(name, name) in QUERIES:
+            last = i
+            if open_:
+                open_[-1][1] = True
+    return skips, last
+
+
+def _interpret(rt, s: list, turtle: LpyTurtle, depth: int, top: bool, skips=None, last=None) -> None:
     """L-Py's `__gRecursiveInterpretation`: rules rewrite a module (their production is
     interpreted, again through the rules while depth remains); other modules are interpreted
     where they stand, and a query among them (in `s`, when `top`) is replaced by its answer."""
@@ -496,8 +526,15 @@ def _interpret(rt, s: list, turtle: LpyTurtle, depth: int, top: bool) -> None:
     stars = table["*"]
     names = turtle.names
     i, n = 0, len(s)
+    if top:
+        n = last + 1
+        if "[" in table or stars:
+            skips = {}
     while i < n:
         m = s[i]
+        if top and i in skips:
+            i = skips[i] + 1
+            continue
         if m.name == "%":
             i = end_of_branch(s, i + 1)
             continue

@@ -62,6 +62,11 @@ class Queries(unittest.TestCase):
         got = self.derive("[ F(5) +(30) ] W ?P(0,0,0) A", rules)
         self.assertVectors(got, [(0, 0, 3)])
 
+    def test_a_query_inside_nested_branches(self):
+        # the branches that hold a query are walked, the others only skipped ([ ] restores all)
+        got = self.derive("F(1) [ +(90) F(5) ] [ F(2) [ -(90) F(3) ?P(0,0,0) A ] ] F(4) ?P(0,0,0) A")
+        self.assertVectors(got, [(0, 3, 3), (0, 0, 5)])
+
     def test_the_angle_increment_and_default_step_come_from_the_settings(self):
         src = ("context().turtle.setAngleIncrement(90)\ncontext().turtle.setDefaultStep(2)\n"
                "Axiom: + F ?P(0,0,0) A\nderivation length: 1\n" + READ)
