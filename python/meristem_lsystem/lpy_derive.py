@@ -15,6 +15,7 @@ _now = time.monotonic
 from .lpy_errors import LimitReached
 from .lpy_match import Reversed, end_of_branch, match_left, match_pred, match_right
 from .lstring import Lstring, to_modules
+from .lpy_turtle import fill_queries, has_query
 
 
 def rule_table(rt, kind: str) -> dict:
@@ -221,7 +222,8 @@ def derive(rt) -> Lstring:
 
 def derive_from(rt, s, start: int, steps: int) -> Lstring:
     """L-Py's `__derive` with its default options: every step runs even when no rule applies
-    ("Early return when no matching" is Disabled by default), `Stop()` ends the loop early."""
+    ("Early return when no matching" is Disabled by default), `Stop()` ends the loop early.
+    Before a step whose production rules read turtle queries, the turtle fills them."""
     if start == 0:
         rt.iteration = 0
         call_hook(rt, "Start", s)
@@ -229,6 +231,8 @@ def derive_from(rt, s, start: int, steps: int) -> Lstring:
     for it in range(start, start + steps):
         rt.iteration = it
         call_hook(rt, "StartEach", s)
+        if has_query(rt):
+            s = fill_queries(rt, s)  # L-Py's __step: the turtle fills ?P, ?H … first
         s, _ = rewrite(rt, s, "production")
         check_size(rt, s)
         s, _ = decompose(rt, s, "decomposition")

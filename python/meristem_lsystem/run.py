@@ -81,19 +81,6 @@ class Alarm:
         return False
 
 
-QUERIES = {"?P", "?H", "?U", "?L", "?R", "?F", "GetPos", "GetHead", "GetUp", "GetLeft", "GetRight",
-           "GetFrame"}
-
-
-def note_turtle_queries(rt, s) -> None:
-    """L-Py fills query modules (`?P`, `?H`, `?F` …) from its turtle before each step; this run
-    has no turtle, so a rule reading them sees what the string holds. Said once, by name."""
-    names = sorted({m.name for m in s if getattr(m, "name", None) in QUERIES})
-    if names:
-        rt.note(f"turtle queries ({', '.join(names)}) are not filled in by a turtle as in L-Py: rules "
-                "that read them see the values written in the string (or do not match)")
-
-
 def run_lpy(files: dict, main: str, options: dict) -> dict:
     from .lpy_derive import derive, interpret
     from .lpy_runtime import LpyRuntime
@@ -109,7 +96,6 @@ def run_lpy(files: dict, main: str, options: dict) -> dict:
         s = derive(rt)
         result["steps"] = rt.steps_done
         s = expand_guides(interpret(rt, s), rt.note)
-        note_turtle_queries(rt, s)
         ObjectTable.current = table
         result["lstring"] = format_lstring(s)
         result["ok"] = True

@@ -101,10 +101,19 @@ class CollectionModels(unittest.TestCase):
         # 13 internodes, 5 basal F(0.1), 18 leaves of 100 F; with NFlowerClosed = 4 (the model's
         # own line after its panel): 4 closed flowers (peduncle 9 F, 3 sepals of 100 F) and 4 open
         # (peduncle 9, sepals 300, F(0.5), petals 200, upper and lower lips 100 each)
+        # The lower lips' hairs: `?F(p,h,u,l) Section(...)` reads the turtle's frame (filled
+        # before each step), each hair `[MoveRel(...) SetHead(n, h) _ F(0.2,0.001)]` with n made
+        # of l and u, so n ⟂ h and |h| = 1 when the frame is PlantGL's orthonormal frame.
         r = self.run_model("share/tutorial/10 - graphics/orchidee.lpy")
         want = 13 + 5 + 18 * 100 + 4 * (9 + 300) + 4 * (9 + 300 + 1 + 200 + 200)
-        self.assertEqual(count(r["lstring"], "F"), want)
-        self.assertTrue(any("?F" in n["message"] for n in r["notes"]))
+        hairs = re.findall(r"\[MoveRel\([^)]*\)@R\(([^)]*)\)", r["lstring"])
+        self.assertGreater(len(hairs), 62 * 4)  # 62 sections on each of the 4 lower lips
+        self.assertEqual(count(r["lstring"], "F"), want + len(hairs))
+        for hair in hairs:
+            n, h = [float(v) for v in hair.split(",")[:3]], [float(v) for v in hair.split(",")[3:]]
+            self.assertAlmostEqual(sum(a * b for a, b in zip(n, h)), 0.0, places=9)
+            self.assertAlmostEqual(sum(a * a for a in h), 1.0, places=9)
+        self.assertFalse(any("?F" in n["message"] for n in r["notes"]))
         self.assertIsNone(re.search(r"SetGuide|nF\(", r["lstring"]))
 
 
