@@ -284,17 +284,19 @@ pub fn prefer_derived(translation: Import, derived: Import) -> Import {
     kept
 }
 
-/// How many steps [`needs_python`] derives, at most, to see whether a translation draws.
-const STEPS_TO_SEE_A_PLANT: u32 = 3;
+/// The steps after which [`needs_python`] looks whether a translation draws, in turn: most
+/// plants draw within 3, a continuous-growth model (an apex that lays an internode every few
+/// steps of `dt`) within tens.
+const STEPS_TO_SEE_A_PLANT: [u32; 3] = [3, 30, 100];
 
 /// The most modules [`needs_python`] derives to see whether a translation draws.
 const MODULES_TO_SEE_A_PLANT: usize = 200_000;
 
 /// Whether a hand translation falls short, so that the model is better run by Python: it has
 /// no axiom, carries a note (something dropped or approximated), or draws nothing (no segment
-/// and no triangle) in its first steps (at most [`STEPS_TO_SEE_A_PLANT`]: a translation that
-/// explodes later is not derived twice). Whether Python can run the files at all is
-/// [`crate::import::python_main`]'s answer.
+/// and no triangle) after 3, 30 or 100 of its steps ([`STEPS_TO_SEE_A_PLANT`]; a translation that
+/// passes [`MODULES_TO_SEE_A_PLANT`] modules before it draws is left to Python). Whether Python
+/// can run the files at all is [`crate::import::python_main`]'s answer.
 pub fn needs_python(translation: &Import) -> bool {
     if translation.is_empty() || !translation.notes.is_empty() {
         return true;
@@ -306,18 +308,30 @@ pub fn needs_python(translation: &Import) -> bool {
         return true;
     };
     model.settings.max_modules = model.settings.max_modules.min(MODULES_TO_SEE_A_PLANT);
-    let options = crate::derive::DeriveOptions {
-        steps: model.settings.iterations.min(STEPS_TO_SEE_A_PLANT),
-        ..Default::default()
-    };
-    let Ok(derivation) = crate::derive::derive(&model, &options) else {
-        return true;
-    };
-    let skeleton = crate::turtle::interpret(&model, derivation.turtle_string());
-    skeleton.segments.is_empty()
-        && skeleton.polygons.is_empty()
-        && skeleton.surfaces.is_empty()
-        && skeleton.spheres.is_empty()
+    let iterations = model.settings.iterations;
+    let mut looked = None;
+    for steps in STEPS_TO_SEE_A_PLANT.map(|s| s.min(iterations)) {
+        if looked == Some(steps) {
+            break;
+        }
+        looked = Some(steps);
+        let options = crate::derive::DeriveOptions {
+            steps,
+            ..Default::default()
+        };
+        let Ok(derivation) = crate::derive::derive(&model, &options) else {
+            return true;
+        };
+        let skeleton = crate::turtle::interpret(&model, derivation.turtle_string());
+        if !(skeleton.segments.is_empty()
+            && skeleton.polygons.is_empty()
+            && skeleton.surfaces.is_empty()
+            && skeleton.spheres.is_empty())
+        {
+            return false;
+        }
+    }
+    true
 }
 
 /// The last part of a path.

@@ -115,6 +115,19 @@ fn python_is_needed_when_the_translation_has_notes_or_draws_nothing() {
     assert!(!needs_python(&clean));
     let nothing = import("Axiom: A\n", Dialect::Lpy);
     assert!(needs_python(&nothing));
+    // An apex that lays its first internode after 20 steps (L-Py's continuous growth) draws:
+    // the hand translation is kept.
+    let late = import(
+        "Axiom: A(0)\nderivation length: 40\nproduction:\nA(t) :\n    if t < 20:\n        produce A(t+1)\n    else:\n        produce F A(0)\nendlsystem\n",
+        Dialect::Lpy,
+    );
+    assert!(late.notes.is_empty(), "{:?}", late.notes);
+    assert!(!needs_python(&late));
+    let never = import(
+        "Axiom: A\nderivation length: 500\nproduction:\nA --> A\nendlsystem\n",
+        Dialect::Lpy,
+    );
+    assert!(needs_python(&never), "nothing drawn after 100 steps");
     let noted = import("import numpy\nAxiom: F(1)\n", Dialect::Lpy);
     assert!(!noted.notes.is_empty());
     assert!(needs_python(&noted));
