@@ -1,24 +1,13 @@
 //! L-Py's turtle commands that place the turtle by coordinates (`@LineTo`, `@LineRel`,
 //! `@OLineTo`, `@OLineRel`, `@R`) and `@Frame`, against hand computations.
 
+use super::tests::model_and_string;
 use super::*;
-use crate::{derive, model, syntax};
 use glam::DVec3;
 
 fn run(src: &str) -> Skeleton {
     let (model, string) = model_and_string(src);
     interpret(&model, &string)
-}
-
-/// The model and its axiom (these grammars have no productions).
-fn model_and_string(src: &str) -> (crate::model::Model, crate::model::LString) {
-    let (file, diags) = syntax::parse(src);
-    assert!(diags.is_empty(), "{diags:?}");
-    let (model, diags) = model::resolve(&file);
-    assert!(diags.is_empty(), "{diags:?}");
-    let model = model.expect("model");
-    let derivation = derive::derive(&model, &derive::DeriveOptions::of_steps(0)).expect("derives");
-    (model, derivation.string)
 }
 
 fn close(a: DVec3, b: DVec3) -> bool {
@@ -103,8 +92,7 @@ fn set_heading_takes_the_heading_and_the_up_vector_made_square() {
     assert!(close(s.end, v(2.0, 0.0, 0.0)), "{}", s.end);
     assert_eq!(s.queries[0].value, [0.0, 0.0, -1.0]);
     assert_eq!(s.queries[1].value, [0.0, 1.0, 0.0]);
-    // An up vector not square to H is made square: (1,1,0) with H = +Z gives U = +X... and Y
-    // drops out only after squaring: U = (1,1,0) − 0 = (1,1,0)/√2.
+    // An up vector square to H is kept, only made unit: (1,1,0) with H = +Z is U = (1,1,0)/√2.
     let s = run("axiom: @R(0,0,3,1,1,0)?U(0,0,0)F(1)");
     let u = s.queries[0].value;
     let r = std::f64::consts::FRAC_1_SQRT_2;
@@ -113,6 +101,13 @@ fn set_heading_takes_the_heading_and_the_up_vector_made_square() {
         "{u:?}"
     );
     assert!(close(s.end, v(0.0, 0.0, 1.0)));
+    // One not square to H is made square (PlantGL's setHead): (1,1,0) with H = +X is U = +Y.
+    let s = run("axiom: @R(1,0,0,1,1,0)?U(0,0,0)");
+    let u = s.queries[0].value;
+    assert!(
+        u[0].abs() < 1e-12 && (u[1] - 1.0).abs() < 1e-12 && u[2].abs() < 1e-12,
+        "{u:?}"
+    );
     // Without an up vector (or with one along H), the least turn: from H = +Y to +X about U.
     let s = run("axiom: @R(5,0,0)?U(0,0,0)F(1)");
     assert_eq!(s.queries[0].value, [0.0, 0.0, 1.0]);

@@ -339,7 +339,7 @@ fn anchors_name_the_segment_a_state_grew_from() {
 }
 
 /// The model and the derived string of `src`.
-fn model_and_string(src: &str) -> (crate::model::Model, crate::model::LString) {
+pub(super) fn model_and_string(src: &str) -> (crate::model::Model, crate::model::LString) {
     let (file, diags) = syntax::parse(src);
     assert!(diags.is_empty(), "{diags:?}");
     let (model, diags) = model::resolve(&file);
