@@ -74,7 +74,8 @@ describe('the panels of a timed grammar follow the timeline’s t', () => {
     // At a round's own time the last round is the string at t (ages 0), no row of ageing.
     await scrubTimed(page, 2, 3);
     expect(await stringPanel(page)).toEqual(['b_l(0)', 'a_r(0)', 'a_r(0)']);
-    expect((await derivationRows(page)).labels).toEqual(['ω', '⇒ t 1', '⇒ t 2']);
+    // The Derivation tab is filled after the String tab: wait for its rows of t = 2.
+    await expect.poll(async () => (await derivationRows(page)).labels).toEqual(['ω', '⇒ t 1', '⇒ t 2']);
     expect(problems).toEqual([]);
   });
 
