@@ -79,32 +79,34 @@ fn nine_chiba_sources_are_a_sun_and_a_sky() {
 }
 
 #[test]
-fn honda81_keeps_e_inert_and_names_what_is_missing() {
+fn honda81_becomes_collision_and_the_tentacles_that_meet_stop() {
     for object in ["cpfg-01-ulam-collide", "lpfg-01-ulam-collide"] {
         let i = imported(object);
-        let missing = notes_with(&i, "runs honda81");
-        assert_eq!(missing.len(), 1, "{object}");
-        assert!(missing[0].contains("within 0.01"), "{object}");
-        assert!(missing[0].contains("Meristem has no program that answers yes or no"));
-        // The nearest program, as a comment the user may turn on.
+        // density.spec: `radius: 0.01`, `3d case: on`.
         assert!(
-            i.text.contains("// #environment space radius 0.01\n"),
-            "{object}"
+            i.text.contains("\n#environment collision radius 0.01\n"),
+            "{object}: {}",
+            i.text
         );
         assert!(
-            !i.text.lines().any(|l| l.starts_with("#environment")),
-            "{object}"
+            notes_with(&i, "honda81").is_empty(),
+            "{object}: {:?}",
+            i.notes
         );
-        assert_eq!(
-            notes_with(
-                &i,
-                "environmental program honda81, which Meristem does not have"
-            )
-            .len(),
-            1,
-            "{object}"
+        assert!(
+            notes_with(&i, "?E(…)").is_empty(),
+            "{object}: {:?}",
+            i.notes
         );
     }
+    // cpfg's object, one step: the axiom's four arms of length 1 (90° apart) each end in an apex
+    // that decomposes into three tentacles f?E: straight on, and 90° to either side. The side
+    // tentacles of neighbouring arms reach the same corner (1, 1), (1, −1), … and stop each other
+    // (equal vigor); the four straight ones are free and each draws one F: 4 + 4 segments.
+    let cpfg = imported("cpfg-01-ulam-collide");
+    let b = build(&cpfg.text, &BuildOptions::default());
+    assert!(b.ok(), "{:?}", b.diagnostics);
+    assert_eq!(b.plant.stats.segments, 8);
     // lpfg's E1(x) is cpfg's ?E(x), `A()` is `A`, and the predecessor `f(l)E1(x)` is two
     // productions with each other as context, as cpfg's `f?E(x)` is.
     let lpfg = imported("lpfg-01-ulam-collide");
@@ -123,11 +125,14 @@ fn honda81_keeps_e_inert_and_names_what_is_missing() {
         "{:?}",
         lpfg.notes
     );
-    // Without an answer, every tentacle keeps its ?E(VIGOR): the axiom's four apices become
-    // three tentacles each (decomposition), and stay.
-    let b = build(&lpfg.text, &BuildOptions::default());
+    // The same first step as cpfg's: 4 + 4 segments.
+    let one = BuildOptions {
+        iterations: Some(1),
+        ..BuildOptions::default()
+    };
+    let b = build(&lpfg.text, &one);
     assert!(b.ok(), "{:?}", b.diagnostics);
-    assert_eq!(b.plant.stats.segments, 4);
+    assert_eq!(b.plant.stats.segments, 8);
 }
 
 #[test]
