@@ -149,3 +149,100 @@ fn sierpinski_grows_pascal_s_triangle_modulo_2_through_honda81() {
     assert_eq!(by_hand, 130);
     assert_eq!(b.plant.stats.segments, by_hand as usize);
 }
+
+/// The straight distance from where the first segment starts to where the last one ends, in
+/// units of the first segment's length (every F of these curves is as long as the first).
+fn span_in_steps(b: &Build) -> f64 {
+    let segments = &b.plant.skeleton.segments;
+    let unit = (segments[0].end - segments[0].start).length();
+    for s in segments {
+        assert!(((s.end - s.start).length() - unit).abs() < 1e-9 * unit);
+    }
+    (segments[segments.len() - 1].end - segments[0].start).length() / unit
+}
+
+#[test]
+fn the_quadratic_koch_curve_draws_8_to_the_4_segments_spanning_4_to_the_4() {
+    // `F --> F+F-F-FF+F+F-F`, 4 steps, no homomorphism: each F becomes 8, so 8^4 = 4096 F.
+    // With the view file's 90°, the eight F go east, north, east, south, south, east, north,
+    // east: 4 east, 1 + 1 − 2 = 0 north, so each F's ends move 4 times as far apart a step and
+    // the curve's ends stand 4^4 = 256 F apart.
+    let (_, b) = open("01-quadratic-Koch");
+    assert_eq!(b.plant.stats.segments, 8usize.pow(4));
+    let span = span_in_steps(&b);
+    assert!((span - 256.0).abs() < 1e-6, "{span}");
+}
+
+#[test]
+fn the_dragon_curve_draws_2_to_the_8_segments_spanning_16() {
+    // `L --> +L--R+`, `R --> -L++R-`, 8 steps, then `L --> F`, `R --> F`: each letter becomes
+    // one L and one R, so 2^8 = 256 letters and 256 F. Angle factor 8 gives 45°: +L--R+
+    // draws L turned 45° left and R 45° right of the heading and returns to it, so the ends
+    // move √2 times as far apart a step: (√2)^8 = 16 F.
+    let (_, b) = open("DragonCurve");
+    assert_eq!(b.plant.stats.segments, 256);
+    let span = span_in_steps(&b);
+    assert!((span - 16.0).abs() < 1e-6, "{span}");
+}
+
+#[test]
+fn the_koch_snowflake_object_draws_4_to_the_4_segments_spanning_3_to_the_4() {
+    // `F --> F+F--F+F`, 4 steps, 60°: 4^4 = 256 F. The four F go at 0°, 60°, −60°, 0°: their
+    // ends stand 1 + 2·cos 60° + 1 = 3 F apart along the heading, so 3^4 = 81 after 4 steps.
+    let (_, b) = open("03-snowflake");
+    assert_eq!(b.plant.stats.segments, 256);
+    let span = span_in_steps(&b);
+    assert!((span - 81.0).abs() < 1e-6, "{span}");
+}
+
+#[test]
+fn the_compound_leaf_draws_2_times_3_to_the_4_minus_2_to_the_4_segments_30_high() {
+    // `A --> F[+A][-A]FA`, `F --> FF`, 4 steps, A not drawn. A step makes 3 A of each A, so
+    // 3^n A after n; F count f(n+1) = 2·f(n) + 2·3^n, f(0) = 0: f(n) = 2·(3^n − 2^n), 130.
+    // The main axis: A after n steps is 2 F after n − 1 steps (2^(n−1) each) then A after
+    // n − 1, so h(n) = 2^n + h(n−1) = 2 + 4 + 8 + 16 = 30 F. No path in a side A after k
+    // steps is longer than its main axis h(k), and the main axis goes on from the branch point
+    // for 2^k + h(k) > h(k): the top is the main axis's, 30 F above the base.
+    let (_, b) = open("04-compound");
+    assert_eq!(b.plant.stats.segments, 2 * (81 - 16));
+    let segments = &b.plant.skeleton.segments;
+    let unit = (segments[0].end - segments[0].start).length();
+    let base = segments[0].start.y;
+    let top = segments.iter().map(|s| s.end.y).fold(f64::MIN, f64::max);
+    assert!(
+        ((top - base) / unit - 30.0).abs() < 1e-6,
+        "{}",
+        (top - base) / unit
+    );
+}
+
+#[test]
+fn the_recursive_leaf_draws_2_to_the_8_minus_1_segments_from_a_8() {
+    // Derivation length 1 from `A(8)`; the homomorphism (depth 100) expands
+    // `A(t) : t >= 2 --> M(t-2) A(t-1)`, `M(t) --> I(x)[+A(t)][-A(t)]I(x)` with x = 0.5·1.5^t,
+    // `A(t) : t < 2 --> ;F(t)`, `I(x) --> F(x)`. F modules: S(t) = 1 for t < 2 and
+    // S(t) = S(t−1) + 2 + 2·S(t−2): S(2..8) = 5, 9, 21, 41, 85, 169, 341. But the A(0) tips
+    // draw F(0), a step of length 0 that draws nothing (cpfg's line has no length either):
+    // Z(0) = 1, Z(1) = 0, Z(t) = Z(t−1) + 2·Z(t−2): Z(2..8) = 2, 2, 6, 10, 22, 42, 86.
+    // Drawn: S(n) − Z(n) = (2^(n+2) + 2·(−1)^n)/3 − 1 − (2^n + 2·(−1)^n)/3 = 2^n − 1 = 255.
+    let s = |n: u32| (2i64.pow(n + 2) + 2 * (-1i64).pow(n)) / 3 - 1;
+    let z = |n: u32| (2i64.pow(n) + 2 * (-1i64).pow(n)) / 3;
+    assert_eq!((s(8), z(8)), (341, 86));
+    let (_, b) = open("10-recursive");
+    assert_eq!(b.plant.stats.segments, (s(8) - z(8)) as usize);
+    assert_eq!(b.plant.stats.segments, 255);
+    // The shortest segments are M(0)'s I(0.5), the longest M(6)'s I(0.5·1.5^6), from A(8).
+    let lengths: Vec<f64> = b
+        .plant
+        .skeleton
+        .segments
+        .iter()
+        .map(|s| (s.end - s.start).length())
+        .collect();
+    let shortest = lengths.iter().copied().fold(f64::MAX, f64::min);
+    let longest = lengths.iter().copied().fold(0.0, f64::max);
+    assert!(
+        (longest / shortest - 1.5f64.powi(6)).abs() < 1e-9,
+        "{shortest} {longest}"
+    );
+}
