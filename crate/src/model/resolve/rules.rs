@@ -49,8 +49,8 @@ impl Resolver {
 
     /// A predecessor or context module: its parameters must be names, bound to new slots.
     fn pattern(&mut self, m: &ModuleSyntax, slots: &mut Slots) -> PatternModule {
-        let first_slot = slots.names.len().min(MAX_NAMES) as u16;
-        if slots.names.len() + m.params.len() > MAX_NAMES {
+        let first_slot = slots.len().min(MAX_NAMES) as u16;
+        if slots.len() + m.params.len() > MAX_NAMES {
             self.diagnostics.push(Diagnostic::error(
                 "E0515",
                 m.span.clone(),
@@ -60,7 +60,7 @@ impl Resolver {
         for p in &m.params {
             match p {
                 ExprSyntax::Name(name, span) => {
-                    if slots.names.contains(name) {
+                    if slots.binds(name) {
                         self.diagnostics.push(Diagnostic::error(
                             "E0512",
                             span.clone(),
@@ -69,7 +69,7 @@ impl Resolver {
                             ),
                         ));
                     }
-                    slots.names.push(name.clone());
+                    slots.bind(Some(name));
                 }
                 other => {
                     self.diagnostics.push(Diagnostic::error(
@@ -77,7 +77,7 @@ impl Resolver {
                         other.span(),
                         "a parameter of a predecessor or context must be a name (a formal parameter)",
                     ));
-                    slots.names.push(String::new());
+                    slots.bind(None);
                 }
             }
         }
@@ -131,7 +131,7 @@ impl Resolver {
             condition,
             weight,
             successor,
-            slots: slots.names.len(),
+            slots: slots.len(),
             span: p.span.clone(),
         })
     }
