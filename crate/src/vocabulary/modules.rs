@@ -192,28 +192,17 @@ const POINT: &[Param] = &[
     Param::number("y", "y coordinate"),
     Param::number("z", "z coordinate"),
 ];
+/// The width after a line to a point (`@LineTo`'s fourth parameter).
 #[cfg(any(feature = "placing", not(target_arch = "wasm32")))]
-const LINE: &[Param] = &[
-    Param::number("x", "x coordinate"),
-    Param::number("y", "y coordinate"),
-    Param::number("z", "z coordinate"),
-    Param::number(
-        "w",
-        "the width from the segment's end on; without it, the width stays",
-    )
-    .unit("width units"),
-];
+const WIDTH_AFTER: Param = Param::number(
+    "w",
+    "the width from the segment's end on; without it, the width stays",
+)
+.unit("width units");
 #[cfg(any(feature = "placing", not(target_arch = "wasm32")))]
-const LINE_BY: &[Param] = &[
-    Param::number("x", "x component"),
-    Param::number("y", "y component"),
-    Param::number("z", "z component"),
-    Param::number(
-        "w",
-        "the width from the segment's end on; without it, the width stays",
-    )
-    .unit("width units"),
-];
+const LINE: &[Param] = &[POINT[0], POINT[1], POINT[2], WIDTH_AFTER];
+#[cfg(any(feature = "placing", not(target_arch = "wasm32")))]
+const LINE_BY: &[Param] = &[VECTOR[0], VECTOR[1], VECTOR[2], WIDTH_AFTER];
 #[cfg(any(feature = "placing", not(target_arch = "wasm32")))]
 const HEADING_UP: &[Param] = &[
     Param::number("hx", "the heading's x component"),
