@@ -483,6 +483,43 @@ fn a_stand_counts_its_plants_together_against_the_module_limit() {
     .ok());
 }
 
+#[test]
+fn an_answer_pass_counts_what_it_holds_so_a_stand_of_786432_questions_is_answered() {
+    // 3 plants of 2^18 = 262,144 ?E after step 19, each answered with the obstacle's two values:
+    // their probes, askers and replies (120 bytes each) and one plant's turtle records at a time
+    // (80 bytes each) are 111 MB, within the pass's 128 MB. Counted as a turtle record per ?E of
+    // every plant at once (200 bytes each, 157 MB) they were refused; twice the plants still are.
+    let source = |plants: u32| {
+        format!(
+            "#environment obstacle sphere center 0 0 0 radius 1\n\
+             #stand row {plants} spacing 1\n\
+             axiom: B(0)\n\
+             B(n) : n < 18 -> B(n + 1) B(n + 1)\n\
+             B(n) : n >= 18 -> ?E(5, 5)\n"
+        )
+    };
+    let b = built(&source(3), 19);
+    assert!(b.diagnostics.iter().all(|d| d.code != "E0408"));
+    let six = build(
+        &source(6),
+        &BuildOptions {
+            iterations: Some(19),
+            ..BuildOptions::default()
+        },
+    );
+    let error = six
+        .diagnostics
+        .iter()
+        .find(|d| d.code == "E0408")
+        .expect("E0408 for six plants");
+    assert!(error.message.contains("1572864 ?E"), "{}", error.message);
+    assert!(
+        error.message.contains("128 MB for one answer pass"),
+        "{}",
+        error.message
+    );
+}
+
 /// A timed grammar (ABOP 6.1) whose stem grows by a growth function of its age, drawn by the
 /// homomorphism: the bud on its tip waits while it is free and stops once its stem has carried
 /// it into the box.

@@ -162,7 +162,7 @@ impl<'m> Environment<'m> {
                 .filter(|(j, _)| *j != k)
                 .map(|(_, (p, _))| p.bytes())
                 .sum();
-            let budget = MAX_ENVIRONMENT_BYTES.saturating_sub(others + self.answers.bytes());
+            let budget = MAX_ENVIRONMENT_BYTES.saturating_sub(others);
             let (program, spec) = &mut self.programs[k];
             if let Err(exceeded) = program.update(parts, budget) {
                 return Err(over_budget(spec, &exceeded));
