@@ -420,7 +420,7 @@ fn a_gltf_animation_past_its_limit_is_refused_with_a_message() {
         targets_per_step: 16,
     };
     match export_glb(source, 8, Some(animation)) {
-        Err(ExportError::Animation(message)) => {
+        Err(ExportError::Refused(message)) => {
             assert!(message.contains("fewer targets per step"), "{message}")
         }
         _ => panic!("exported past the limit"),

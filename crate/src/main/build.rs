@@ -156,7 +156,7 @@ pub fn export_file(
             print_diagnostics(&args.file, &build.located_diagnostics(source));
             return ExitCode::from(1);
         }
-        Err(ExportError::Animation(message)) => {
+        Err(ExportError::Refused(message)) => {
             eprintln!("meristem: {message}");
             return ExitCode::from(2);
         }

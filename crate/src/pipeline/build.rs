@@ -115,6 +115,9 @@ impl Build {
     pub fn remesh_with(&mut self, options: &MeshOptions, hooks: &mut Hooks) {
         let mut watch = Watch::new(hooks);
         self.ensure_skeleton();
+        if self.plant.is_lines_only() {
+            return;
+        }
         let interpret = watch.lap();
         self.plant.remesh(options);
         let mesh = watch.lap();
@@ -124,15 +127,16 @@ impl Build {
         }
     }
 
-    /// Draws the skeleton of a sketch's plant ([`BuildOptions::sketch`]), once; nothing otherwise.
+    /// Draws the skeleton of a sketch's plant ([`BuildOptions::sketch`]), once; nothing otherwise,
+    /// nor for a plant whose skeleton would pass its budget ([`Plant::is_lines_only`]).
     pub fn ensure_skeleton(&mut self) {
-        if !self.plant.is_sketch() {
+        if !self.plant.is_sketch() || self.plant.is_lines_only() {
             return;
         }
         let segments = self.plant.stats.segments;
         let mut skeleton: turtle::Skeleton = match &self.model {
             Some(model) => {
-                turtle::interpret_sized(model, self.derivation.turtle_string(), segments)
+                turtle::interpret_sized(model, self.derivation.turtle_string(), None, segments)
             }
             None => Default::default(),
         };
@@ -252,16 +256,23 @@ fn interpret_and_mesh(
 ) {
     watch.start(Stage::Interpret);
     let derivation = &result.derivation;
+    let turtle_string = derivation.turtle_string();
+    let size = turtle::drawing_size(model, turtle_string, &derivation.id_counts);
+    let lines_only = !size.skeleton_fits();
+    if !size.sketch_fits() || (lines_only && adjustments.is_some()) {
+        let error = super::budget::too_large(model, steps, &size, adjustments.is_some());
+        result.diagnostics.push(error);
+        return;
+    }
     let drawn = match adjustments {
-        None if options.sketch => Drawn::Sketch(turtle::sketch_counted(
+        None if options.sketch || lines_only => Drawn::Sketch(turtle::sketch_counted(
             model,
-            derivation.turtle_string(),
+            turtle_string,
             &derivation.id_counts,
         )),
         adjustments => {
-            let turtle_string = derivation.turtle_string();
             let mut skeleton =
-                turtle::interpret_adjusted(model, turtle_string, adjustments.as_ref());
+                turtle::interpret_sized(model, turtle_string, adjustments.as_ref(), size.segments);
             skeleton.step_counts = result.step_counts.clone();
             Drawn::Skeleton(skeleton)
         }
@@ -281,6 +292,11 @@ fn interpret_and_mesh(
         Drawn::Sketch(sketch) => Plant::sketched(sketch, mesh, derivation, steps),
         Drawn::Skeleton(skeleton) => Plant::new(skeleton, mesh, derivation, steps),
     };
+    if lines_only {
+        result.plant.keep_lines_only();
+        let warning = super::budget::lines_only(model, steps, &size);
+        result.diagnostics.push(warning);
+    }
     watch.timings.mesh = watch.lap();
 }
 

@@ -44,9 +44,10 @@ pub enum ExportError {
     /// The grammar has errors: there is no plant to write. The build is returned for its
     /// diagnostics.
     Grammar(Box<Build>),
-    /// The growth animation would pass its limit ([`export::animation::MAX_TARGET_BYTES`]), or
-    /// was asked of another format than glTF: the message says which.
-    Animation(String),
+    /// The export was refused, the message says why: the growth animation would pass its limit
+    /// ([`export::animation::MAX_TARGET_BYTES`]) or was asked of another format than glTF, or
+    /// the plant is drawn as lines only (its skeleton over budget: `E0414`).
+    Refused(String),
 }
 
 /// Builds `source`, applies the edits, and writes the model; `hooks.progress` is told each stage
@@ -58,7 +59,7 @@ pub fn export(
 ) -> Result<Exported, ExportError> {
     let animation = match options.animation {
         Some(_) if options.format != Format::Glb => {
-            return Err(ExportError::Animation(format!(
+            return Err(ExportError::Refused(format!(
                 "the growth animation is written in glTF only, not in {}",
                 options.format.extension()
             )))
@@ -70,6 +71,14 @@ pub fn export(
     let build = build_with(source, &build_options, hooks);
     if !build.ok() {
         return Err(ExportError::Grammar(Box::new(build)));
+    }
+    if build.plant.is_lines_only() {
+        return Err(ExportError::Refused(format!(
+            "the plant is too large to export: {} segments, drawn as lines only (its skeleton \
+             would pass the budget of {} MB); export it with fewer iterations",
+            build.plant.stats.segments,
+            crate::turtle::MAX_SKELETON_BYTES >> 20
+        )));
     }
     let steps = build.derived_with.steps;
     let (diagnostics, timings) = (build.diagnostics, build.timings);
@@ -87,7 +96,7 @@ pub fn export(
     let keyframes = animation
         .map(|a| a.keyframes(&plant.mesh, steps))
         .transpose()
-        .map_err(ExportError::Animation)?;
+        .map_err(ExportError::Refused)?;
     hooks.start(Stage::Write);
     let files = match keyframes {
         Some(keyframes) => {

@@ -23,6 +23,7 @@
 //! text of each, its frame, and a library shape's text written out as `#patch` lines).
 
 mod breakpoints;
+mod budget;
 mod build;
 mod editor;
 #[cfg(feature = "environment")]

@@ -23,6 +23,9 @@ pub struct Plant {
     /// A sketch's plant ([`Plant::sketched`]): the skeleton is not drawn yet, the mesh holds the
     /// segments as lines; these are the lines' modules and whether the drawing is flat.
     sketch: Option<(Vec<u32>, bool)>,
+    /// The skeleton would pass [`crate::turtle::MAX_SKELETON_BYTES`]: the plant stays a sketch's
+    /// lines (`E0414`), and nothing draws its skeleton.
+    lines_only: bool,
 }
 
 impl Plant {
@@ -80,12 +83,23 @@ impl Plant {
             steps,
             turtle_origin: derivation.turtle_origin.clone(),
             sketch: Some((lines.modules, flat)),
+            lines_only: false,
         }
     }
 
     /// True for the plant of a sketch whose skeleton is not drawn yet.
     pub fn is_sketch(&self) -> bool {
         self.sketch.is_some()
+    }
+
+    /// True for a sketch's plant whose skeleton would pass its budget: lines only, for good.
+    pub fn is_lines_only(&self) -> bool {
+        self.lines_only
+    }
+
+    /// Marks a sketch's plant as one whose skeleton is never drawn ([`Plant::is_lines_only`]).
+    pub(super) fn keep_lines_only(&mut self) {
+        self.lines_only = self.sketch.is_some();
     }
 
     /// The skeleton of a sketch's plant, drawn now: the plant is a plain one from here on (its

@@ -11,11 +11,13 @@
 //! parameters). With growth attributes the turtle also takes plain per-module
 //! [`Adjustments`] (turns towards attractors, length and width factors) that growth computes.
 
+mod budget;
 mod interpreter;
 mod skeleton;
 mod sketch;
 mod state;
 
+pub use budget::{drawing_size, DrawingSize, MAX_SKELETON_BYTES, MAX_SKETCH_BYTES};
 pub(crate) use skeleton::f32_box;
 pub use skeleton::{
     EnvironmentQuery, Extent, Polygon, QueryValue, Segment, Skeleton, Sphere, Surface, SurfaceKind,
@@ -43,12 +45,18 @@ pub fn interpret_adjusted(
     Interpreter::new(model, string, adjustments, None, canvas).run(string)
 }
 
-/// [`interpret`], with room for `segments` segments (a sketch of the same string counted them):
-/// the skeleton's array grows once.
-pub fn interpret_sized(model: &Model, string: &LString, segments: usize) -> Skeleton {
-    let mut canvas = empty_skeleton(&model.settings, false);
+/// [`interpret_adjusted`], with room for `segments` segments (a sketch of the same string or
+/// [`drawing_size`] counted them): the skeleton's array grows once, and never holds an old and a
+/// new copy at once.
+pub fn interpret_sized(
+    model: &Model,
+    string: &LString,
+    adjustments: Option<&Adjustments>,
+    segments: usize,
+) -> Skeleton {
+    let mut canvas = empty_skeleton(&model.settings, adjustments.is_some());
     canvas.segments.reserve_exact(segments);
-    Interpreter::new(model, string, None, None, canvas).run(string)
+    Interpreter::new(model, string, adjustments, None, canvas).run(string)
 }
 
 /// Runs the turtle over `string` drawing only its segments, as lines ([`Sketch`]): line `i` is
@@ -65,7 +73,10 @@ pub fn sketch_counted(model: &Model, string: &LString, id_counts: &[u64]) -> Ske
     if let Some(sketch) = sketch::plain_sketch(model, string, id_counts, others.clone()) {
         return sketch;
     }
-    Interpreter::new(model, string, None, None, Sketch::new(others, 0)).run(string)
+    // Room for every segment at once: a doubling array would hold half as much again while it
+    // grows (a sketch of millions of segments is what the drawing's budget lets through).
+    let segments = budget::drawing_size(model, string, id_counts).segments;
+    Interpreter::new(model, string, None, None, Sketch::new(others, segments)).run(string)
 }
 
 /// The height (Y) of the turtle at every module of `string` (the middle of the move for

@@ -70,7 +70,7 @@ pub fn export_model(
         pipeline::ExportError::Grammar(_) => {
             JsError::new("the grammar has errors: nothing to export")
         }
-        pipeline::ExportError::Animation(message) => JsError::new(&message),
+        pipeline::ExportError::Refused(message) => JsError::new(&message),
     })?;
     // Several files go in one zip named after the format too: `fern-pov.zip`, `fern-obj.zip`.
     let file = export::bundle(exported.files, &format!("{stem}-{}", format.extension()))

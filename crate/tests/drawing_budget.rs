@@ -1,0 +1,95 @@
+//! The drawing's budget (issue 50, findings 1 and 2; docs/LANGUAGE.md, "Limits"): a plant whose
+//! skeleton would pass 512 MB is drawn as lines only, with a warning, and is not exported; one
+//! whose lines would pass 512 MB too stops with an error before the turtle runs. Before, `F -> FF`
+//! at 24 steps asked for a 2 GB array ("capacity overflow" in WebAssembly, a lost core).
+
+use meristem::export::Format;
+use meristem::pipeline::{build, export, BuildOptions, ExportError, ExportOptions, Hooks};
+use meristem::turtle::{MAX_SKELETON_BYTES, MAX_SKETCH_BYTES};
+
+const DOUBLING: &str = "#max_modules 40000000\naxiom: F\nF -> FF\n";
+
+fn options(iterations: u32) -> BuildOptions {
+    BuildOptions {
+        iterations: Some(iterations),
+        ..BuildOptions::default()
+    }
+}
+
+#[test]
+fn sixteen_million_segments_stop_before_the_turtle_runs() {
+    let b = build(DOUBLING, &options(24));
+    let error = b
+        .diagnostics
+        .iter()
+        .find(|d| d.code == "E0413")
+        .unwrap_or_else(|| panic!("E0413 expected: {:?}", b.diagnostics));
+    assert!(
+        error.message.contains("16777216 segments"),
+        "{}",
+        error.message
+    );
+    assert!(
+        error.message.contains("832 MB even as lines"),
+        "{}",
+        error.message
+    );
+    assert_eq!(MAX_SKETCH_BYTES, 512 << 20);
+    assert_eq!(b.plant.stats.segments, 0);
+    assert!(b.plant.mesh.lines.is_empty());
+}
+
+#[test]
+fn eight_million_segments_are_drawn_as_lines_only_and_not_exported() {
+    let mut b = build(DOUBLING, &options(23));
+    assert!(b.ok(), "{:?}", b.diagnostics);
+    let warning = b
+        .diagnostics
+        .iter()
+        .find(|d| d.code == "E0414")
+        .unwrap_or_else(|| panic!("E0414 expected: {:?}", b.diagnostics));
+    assert!(
+        warning.message.contains("8388608 segments"),
+        "{}",
+        warning.message
+    );
+    assert!(warning.message.contains("1024 MB"), "{}", warning.message);
+    assert_eq!(MAX_SKELETON_BYTES, 512 << 20);
+    assert!(b.plant.is_lines_only());
+    assert_eq!(b.plant.stats.lines, 1 << 23);
+    assert_eq!(b.plant.mesh.lines.len(), 6 << 23);
+    // Asking for tubes again keeps the lines: the skeleton is never drawn.
+    let mesh = b.plant.mesh_options.clone();
+    b.remesh(&mesh);
+    b.ensure_skeleton();
+    assert!(b.plant.skeleton.segments.is_empty());
+    assert_eq!(b.plant.mesh.lines.len(), 6 << 23);
+    let refused = export(
+        DOUBLING,
+        &ExportOptions {
+            build: options(23),
+            format: Format::Glb,
+            stem: "plant".into(),
+            edits: None,
+            look: Default::default(),
+            animation: None,
+        },
+        &mut Hooks::default(),
+    );
+    match refused {
+        Err(ExportError::Refused(message)) => {
+            assert!(message.contains("too large to export"), "{message}")
+        }
+        other => panic!("refused expected, got {:?}", other.map(|e| e.files.len())),
+    }
+}
+
+#[test]
+fn four_million_segments_still_have_their_skeleton() {
+    // 2^22 segments of 128 bytes: the skeleton's budget exactly.
+    let b = build(DOUBLING, &options(22));
+    assert!(b.ok(), "{:?}", b.diagnostics);
+    assert!(b.diagnostics.iter().all(|d| d.code != "E0414"));
+    assert!(!b.plant.is_lines_only());
+    assert_eq!(b.plant.skeleton.segments.len(), 1 << 22);
+}
