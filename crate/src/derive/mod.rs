@@ -27,6 +27,7 @@ mod explain;
 mod fixed_pass;
 mod generator;
 mod groups;
+mod limits;
 mod module_classes;
 mod module_pass;
 mod parametric_classes;
@@ -49,6 +50,8 @@ use rand::SeedableRng;
 use rewriter::{Rewriter, Tracker};
 
 pub use generator::Generator;
+use limits::{check_size, memory_error, trace_error, work_error};
+pub use limits::{work_budget, MAX_STRING_BYTES, MAX_TRACE_BYTES};
 pub use resume::{resume, Resume};
 pub use stepper::{Assembled, Shown, Stepper};
 
@@ -318,97 +321,6 @@ fn apply_queries(model: &Model, s: &mut LString, observer: &mut dyn Observer) {
     }
 }
 
-/// Most bytes one derived string may take (`E0401`): a module's id, its parameters' offset when
-/// the grammar has parameters, and 8 bytes per parameter ([`LString::bytes`]). A derivation holds
-/// two strings (three when the last step is tracked) and their buffers may double, so this keeps
-/// the derivation well inside wasm32's 4 GiB, and the CLI gives the same answer as the studio.
-pub const MAX_STRING_BYTES: usize = 256 << 20;
-
-/// Most bytes a traced derivation ([`derive_traced`]: every step's string and provenance, for the
-/// derivation view and a module's lineage) may hold (`E0410`).
-pub const MAX_TRACE_BYTES: usize = 128 << 20;
-
-/// `E0410`: the trace would hold `bytes` at `step`, above [`MAX_TRACE_BYTES`].
-#[cold]
-fn trace_error(model: &Model, step: u32, bytes: usize) -> Diagnostic {
-    Diagnostic::error(
-        "E0410",
-        size_span(model),
-        format!(
-            "the derivation step by step (every string kept, for the derivation view or a \
-             module's lineage) would take {} MB by step {step}, above its budget of {} MB; \
-             ask with fewer iterations",
-            bytes.div_ceil(1 << 20),
-            MAX_TRACE_BYTES >> 20
-        ),
-    )
-}
-
-/// `E0400` when a string of `len` modules passes `#max_modules`, `E0401` when its `bytes` pass
-/// [`MAX_STRING_BYTES`], at `step` (0: the axiom).
-#[inline]
-fn check_size(model: &Model, step: u32, len: usize, bytes: usize) -> Result<(), Diagnostic> {
-    if len > model.settings.max_modules {
-        return Err(limit_error(model, step, len));
-    }
-    if bytes > MAX_STRING_BYTES {
-        return Err(memory_error(model, step, len, bytes));
-    }
-    Ok(())
-}
-
-/// `E0401`: the string at `step` would take more than [`MAX_STRING_BYTES`].
-#[cold]
-fn memory_error(model: &Model, step: u32, len: usize, bytes: usize) -> Diagnostic {
-    let mb = |b: usize| b.div_ceil(1 << 20);
-    let when = size_when(step);
-    Diagnostic::error(
-        "E0401",
-        size_span(model),
-        format!(
-            "{when} {len} modules or more taking {} MB, above the memory budget of {} MB for \
-             one string (4 bytes a module, 4 more with parameters, 8 a parameter); use fewer \
-             iterations or fewer parameters per module",
-            mb(bytes),
-            mb(MAX_STRING_BYTES)
-        ),
-    )
-}
-
-/// How a size error at `step` begins: what the axiom has (step 0), or what the step would make.
-fn size_when(step: u32) -> String {
-    if step == 0 {
-        "the axiom has".to_string()
-    } else {
-        format!("step {step} would make a string of")
-    }
-}
-
-/// Where a size error points: `#iterations`, else the axiom.
-fn size_span(model: &Model) -> crate::syntax::Span {
-    model
-        .settings
-        .iterations_span
-        .clone()
-        .unwrap_or_else(|| model.axiom_span.clone())
-}
-
-/// `E0400`: the string would grow past `#max_modules` at `step` (0: the axiom).
-#[cold]
-fn limit_error(model: &Model, step: u32, len: usize) -> Diagnostic {
-    let max = model.settings.max_modules;
-    let span = size_span(model);
-    let when = size_when(step);
-    Diagnostic::error(
-        "E0400",
-        span,
-        format!(
-            "{when} {len} modules or more, above the limit of {max}; \
-             use fewer iterations or raise the limit with '#max_modules N'"
-        ),
-    )
-}
-
 /// Derives `when.0` steps, or a timed grammar to the time `when.1` (in steps; `when.0` when not
 /// given).
 fn run<R: rand::Rng>(
@@ -449,6 +361,8 @@ struct Run<'m, 'o, R: rand::Rng> {
     trace: Option<Vec<TracedStep>>,
     /// The plan of a timed derivation's round, which replaces the observer's.
     timed_plan: Option<Vec<u32>>,
+    /// Modules written by the steps so far ([`work_budget`]).
+    work: u64,
 }
 
 impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
@@ -498,6 +412,7 @@ impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
             previous: LString::default(),
             trace: None,
             timed_plan: None,
+            work: 0,
         }
     }
 
@@ -527,6 +442,10 @@ impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
         };
         self.rewrite(step, tracked)?;
         std::mem::swap(&mut self.current, &mut self.next);
+        self.work = self.work.saturating_add(self.current.len() as u64);
+        if self.work > work_budget(model) {
+            return Err(work_error(model, step, self.work));
+        }
         if tracked {
             // The string before the step, kept instead of copied (decomposition takes a new
             // scratch string).

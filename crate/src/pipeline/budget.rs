@@ -12,45 +12,43 @@ fn span(model: &Model) -> crate::syntax::Span {
     (model.settings.iterations_span.clone()).unwrap_or_else(|| model.axiom_span.clone())
 }
 
-fn mb(bytes: usize) -> usize {
-    bytes.div_ceil(1 << 20)
-}
-
 /// `E0413`: the plant of `steps` steps cannot be drawn within the budget: even as lines, or at
 /// all when `growth` (growth's adjustments need the skeleton).
 pub(super) fn too_large(model: &Model, steps: u32, size: &DrawingSize, growth: bool) -> Diagnostic {
-    let segments = size.segments;
-    let message = if growth {
-        format!(
-            "after {steps} steps the plant has {segments} segments, whose skeleton would take {} \
-             MB, above its budget of {} MB (growth attributes need the skeleton: it cannot be \
-             drawn as lines only); use fewer iterations",
-            mb(size.skeleton),
-            mb(turtle::MAX_SKELETON_BYTES)
+    let (bytes, what) = if growth {
+        (
+            size.skeleton,
+            "as a skeleton (growth attributes need it: the plant cannot be drawn as lines only)",
         )
     } else {
-        format!(
-            "after {steps} steps the plant has {segments} segments, which would take {} MB even \
-             as lines, above the drawing's budget of {} MB; use fewer iterations",
-            mb(size.sketch),
-            mb(turtle::MAX_SKETCH_BYTES)
-        )
+        (size.sketch, "even as lines")
     };
+    let message = over(steps, size, bytes, what, "use fewer iterations");
     Diagnostic::error("E0413", span(model), message)
 }
 
 /// `E0414`: the plant of `steps` steps is drawn as lines only, its skeleton being over budget.
 pub(super) fn lines_only(model: &Model, steps: u32, size: &DrawingSize) -> Diagnostic {
-    Diagnostic::warning(
-        "E0414",
-        span(model),
-        format!(
-            "after {steps} steps the plant has {} segments, whose skeleton would take {} MB, \
-             above its budget of {} MB: it is drawn as lines only (no tubes, branch editing or \
-             SVG export); use fewer iterations for those",
-            size.segments,
-            mb(size.skeleton),
-            mb(turtle::MAX_SKELETON_BYTES)
-        ),
+    let message = over(
+        steps,
+        size,
+        size.skeleton,
+        "as a skeleton",
+        "it is drawn as lines only (no tubes, branch editing or export); use fewer iterations \
+         for those",
+    );
+    Diagnostic::warning("E0414", span(model), message)
+}
+
+/// The words of both: the plant's segments, what they would take `what`, the budget (the
+/// skeleton's and the lines' are the same 512 MB), and what to do.
+fn over(steps: u32, size: &DrawingSize, bytes: usize, what: &str, then: &str) -> String {
+    const _: () = assert!(turtle::MAX_SKELETON_BYTES == turtle::MAX_SKETCH_BYTES);
+    format!(
+        "after {steps} steps the plant has {} segments, which would take {} MB {what}, above the \
+         drawing's budget of {} MB; {then}",
+        size.segments,
+        bytes.div_ceil(1 << 20),
+        turtle::MAX_SKELETON_BYTES >> 20
     )
 }

@@ -21,4 +21,4 @@ pub use brackets::{Brackets, ALL_BRACKETS, BRACES, PARENTHESES, PARENTHESES_AND_
 pub use comments::blank_comments;
 pub use expr::{parse_expression, MAX_EXPRESSION_DEPTH};
 pub use parse::parse;
-pub use scanner::MAX_GROUP_DEPTH;
+pub use scanner::{MAX_GROUP_DEPTH, MAX_SCANNED_MODULES};

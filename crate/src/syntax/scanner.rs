@@ -12,6 +12,19 @@ use std::cell::Cell;
 /// (`E0132`): the scanner, and later the derivation, follow a group's members one level at a time.
 pub const MAX_GROUP_DEPTH: usize = 64;
 
+/// Most modules one grammar's text may hold, in its axiom, successors and module lists together
+/// (`E0145`): the default `#max_modules`, so that any axiom within the default module limit is
+/// read. A module costs some 150 bytes in the syntax tree (its name, span and parameter list)
+/// before the resolver turns it into 4, so this keeps a text of 40 million `F` from asking for
+/// gigabytes before any limit is checked; scanning stops at the module that passes it.
+pub const MAX_SCANNED_MODULES: usize = 5_000_000;
+
+/// `E0145`'s words, a constant text (the first plant's core formats no message it can spare; a
+/// test checks the number against [`MAX_SCANNED_MODULES`]).
+const TOO_MANY_MODULES: &str = "the text holds more than 5000000 modules (axiom, successors and \
+     module lists together); the rest is not read. Write a long axiom as a short one and \
+     productions that grow it";
+
 /// Reports unbalanced `[` `]` in one module string (axiom or successor).
 pub(super) fn check_brackets(modules: &[ModuleSyntax], diagnostics: &mut Vec<Diagnostic>) {
     let mut open: Vec<&Span> = Vec::new();
@@ -60,6 +73,8 @@ pub(super) struct ModuleScanner<'a> {
     at_names: Vec<&'static str>,
     /// How many control modules the text being scanned is inside.
     depth: Cell<usize>,
+    /// Modules scanned so far in the whole text ([`MAX_SCANNED_MODULES`]).
+    scanned: Cell<usize>,
 }
 
 impl<'a> ModuleScanner<'a> {
@@ -74,6 +89,7 @@ impl<'a> ModuleScanner<'a> {
             declared,
             at_names,
             depth: Cell::new(0),
+            scanned: Cell::new(0),
         }
     }
 
@@ -92,6 +108,10 @@ impl<'a> ModuleScanner<'a> {
         let mut modules = Vec::new();
         let mut i = 0;
         while i < text.len() {
+            if self.scanned.get().saturating_add(modules.len()) > MAX_SCANNED_MODULES {
+                self.too_many(base + i..base + text.len(), diagnostics);
+                break;
+            }
             let Some(c) = text[i..].chars().next() else {
                 break;
             };
@@ -114,7 +134,22 @@ impl<'a> ModuleScanner<'a> {
                 None => break,
             }
         }
+        self.scanned
+            .set(self.scanned.get().saturating_add(modules.len()));
         modules
+    }
+
+    /// `E0145` at `span`, the text not read, once per file (the scanner stops reading modules).
+    fn too_many(&self, span: Span, diagnostics: &mut Vec<Diagnostic>) {
+        if self.scanned.get() == usize::MAX {
+            return;
+        }
+        self.scanned.set(usize::MAX);
+        diagnostics.push(Diagnostic::error(
+            "E0145",
+            span.start..span.end.min(span.start + 1),
+            TOO_MANY_MODULES,
+        ));
     }
 
     /// The module whose name starts at `i` (a control module with its members); returns where
@@ -339,4 +374,34 @@ fn parameter_list(
     }
     last.span.end = base + i + close + 1;
     Some(i + close + 1)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_text_of_more_modules_than_the_limit_stops_at_the_first_over_it() {
+        let scanner = ModuleScanner::new(&[]);
+        let mut diagnostics = Vec::new();
+        let first = scanner.scan(&"F".repeat(MAX_SCANNED_MODULES - 2), 0, &mut diagnostics);
+        assert_eq!(first.len(), MAX_SCANNED_MODULES - 2);
+        assert!(diagnostics.is_empty());
+        // Two more fit; the third module of this line is the first over the limit.
+        let text = "A B C D";
+        let second = scanner.scan(text, 100, &mut diagnostics);
+        assert_eq!(
+            second.len(),
+            3,
+            "scanning stops after the module over the limit"
+        );
+        assert_eq!(diagnostics.len(), 1);
+        assert_eq!(diagnostics[0].code, "E0145");
+        let limit = format!("more than {MAX_SCANNED_MODULES} modules");
+        assert!(diagnostics[0].message.contains(&limit));
+        assert_eq!(diagnostics[0].span, 105..106);
+        // Once said, the rest of the text is not read and not reported again.
+        assert!(scanner.scan("X Y", 200, &mut diagnostics).is_empty());
+        assert_eq!(diagnostics.len(), 1);
+    }
 }
