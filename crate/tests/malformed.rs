@@ -117,6 +117,9 @@ const CASES: &[Case] = &[
     ("random_reads_itself", "#random p = uniform(0, p)\naxiom: F(p)", "E0507", 1, 24),
     ("random_variables_read_each_other", "#random p = uniform(0, q)\n#random q = normal(p, 1)\naxiom: F(p)", "E0507", 2, 20),
     ("random_cycle_through_a_define", "#define d q\n#random p = uniform(0, d)\n#random q = normal(p, 1)\naxiom: F(p)", "E0507", 3, 20),
+    ("normal_with_a_negative_deviation", "#iterations 1\naxiom: A(0)\nA(x) -> A(normal(0, -1))", "E0500", 3, 11),
+    ("error_after_lone_carriage_returns", "#iterations 1\raxiom: F\rF F[+F]F", "E0105", 3, 1),
+    ("error_after_a_byte_order_mark", "\u{feff}axiom: F]", "E0108", 1, 9),
     ("define_chain_too_large_once_expanded", "#define d0 x\n#define d1 d0+d0\n#define d2 d1+d1\n#define d3 d2+d2\n#define d4 d3+d3\n#define d5 d4+d4\n#define d6 d5+d5\n#define d7 d6+d6\n#define d8 d7+d7\n#define d9 d8+d8\n#define d10 d9+d9\n#define d11 d10+d10\n#define d12 d11+d11\n#define d13 d12+d12\naxiom: A(1)\nA(x) -> F(d13)", "E0128", 16, 11),
 ];
 

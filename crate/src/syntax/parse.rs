@@ -26,11 +26,12 @@ pub fn parse(source: &str) -> (SourceFile, Vec<Diagnostic>) {
     (parser.file, parser.diagnostics)
 }
 
-/// Lines with the byte offset at which each starts (`\r\n` endings are handled by `trim`).
+/// Lines with the byte offset at which each starts. A line ends at `\n`, `\r\n` or a lone `\r`
+/// (old Mac files): splitting at both characters makes `\r\n` an empty line more, which is skipped.
 fn split_lines(text: &str) -> Vec<(usize, &str)> {
     let mut lines = Vec::new();
     let mut start = 0;
-    for line in text.split('\n') {
+    for line in text.split(['\n', '\r']) {
         lines.push((start, line));
         start += line.len() + 1;
     }
@@ -249,6 +250,21 @@ mod tests {
                 (None, "D".into(), 0),
             ]
         );
+    }
+
+    #[test]
+    fn a_byte_order_mark_and_every_kind_of_line_end_are_read() {
+        for src in [
+            "\u{feff}#iterations 2\naxiom: F\nF -> FF",
+            "#iterations 2\raxiom: F\rF -> FF\r",
+            "\u{feff}#iterations 2 // two\r\naxiom: F\r\nF -> FF",
+        ] {
+            let (file, diags) = parse(src);
+            assert!(diags.is_empty(), "{src:?}: {diags:?}");
+            assert_eq!(file.directives.len(), 1, "{src:?}");
+            assert_eq!(file.productions.len(), 1, "{src:?}");
+            assert!(file.axiom.is_some(), "{src:?}");
+        }
     }
 
     #[test]

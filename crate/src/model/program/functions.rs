@@ -68,8 +68,12 @@ pub(super) fn call<R: rand::Rng + ?Sized>(
             }
             (lo + (rng.random::<f64>() * (hi - lo + 1.0)).floor()).min(hi)
         }
+        // rand_distr takes a negative deviation as a mirror image; like `exponential`'s negative
+        // rate, it is an error here.
         Function::Normal => Normal::new(a[0], a[1])
-            .map_err(|_| format!("normal({}, {}): the deviation must be ≥ 0", a[0], a[1]))?
+            .ok()
+            .filter(|_| a[1] >= 0.0)
+            .ok_or_else(|| format!("normal({}, {}): the deviation must be ≥ 0", a[0], a[1]))?
             .sample(rng),
         Function::Exponential => Exp::new(a[0])
             .map_err(|_| format!("exponential({}): the rate must be ≥ 0", a[0]))?
@@ -85,8 +89,16 @@ pub(super) fn call<R: rand::Rng + ?Sized>(
                 .map_err(|_| format!("binomial({}, {}): p must be in 0..1", a[0], a[1]))?
                 .sample(rng) as f64
         }
+        // A mean of 0 is legitimate: the count is always 0 (rand_distr refuses it).
+        Function::Poisson if a[0] == 0.0 => 0.0,
         Function::Poisson => Poisson::new(a[0])
-            .map_err(|_| format!("poisson({}): the mean must be > 0", a[0]))?
+            .map_err(|_| {
+                format!(
+                    "poisson({}): the mean must be from 0 to {:e}",
+                    a[0],
+                    Poisson::<f64>::MAX_LAMBDA
+                )
+            })?
             .sample(rng),
         Function::Beta => beta(a[0], a[1], rng)?,
     })
