@@ -12,12 +12,12 @@ use meristem::BuildOptions;
 use std::path::Path;
 use std::process::ExitCode;
 
-/// Writes the files of an export: the first at `output`, any others (OBJ's MTL) beside it with
-/// their own extension, texture images (POV-Ray's) beside it with their own names, each said on
-/// stdout. When `output` is a stream (`-` for stdout, a device such as `/dev/stdout`, a pipe) the
-/// first file goes there and nothing is said on stdout (it may be the file itself); the others are
-/// not written (there is no "beside" a stream): a note on stderr says which, and the OBJ's
-/// `mtllib` then names a library that is not there.
+/// Writes the files of an export: the first at `output`, any others beside it with their own
+/// names (OBJ's MTL, as its `mtllib` names it; POV-Ray's texture images, as the scene names them),
+/// each said on stdout. When `output` is a stream (`-` for stdout, a device such as
+/// `/dev/stdout`, a pipe) the first file goes there and nothing is said on stdout (it may be the
+/// file itself); the others are not written (there is no "beside" a stream): a note on stderr
+/// says which, and the OBJ's `mtllib` then names a library that is not there.
 pub fn write_export(output: &Path, files: &[export::ExportedFile]) -> Result<(), String> {
     let stream = is_stream(output);
     for (k, file) in files.iter().enumerate() {
@@ -31,12 +31,10 @@ pub fn write_export(output: &Path, files: &[export::ExportedFile]) -> Result<(),
         }
         let path = if k == 0 {
             output.to_path_buf()
-        } else if file.mime == "image/png" {
-            // A texture keeps its own name (`bark.png`): the scene refers to it by that name.
-            output.with_file_name(&file.name)
         } else {
-            let extension = file.name.rsplit('.').next().unwrap_or("");
-            output.with_extension(extension)
+            // A texture keeps its own name (`bark.png`), the MTL the one the OBJ's `mtllib`
+            // gives (the output's stem made safe: `my plant.obj` names `my-plant.mtl`).
+            output.with_file_name(&file.name)
         };
         if path.as_os_str() == "-" {
             std::io::Write::write_all(&mut std::io::stdout().lock(), &file.bytes)
