@@ -78,30 +78,38 @@ pub(super) fn call<R: rand::Rng + ?Sized>(
         Function::Exponential => Exp::new(a[0])
             .map_err(|_| format!("exponential({}): the rate must be ≥ 0", a[0]))?
             .sample(rng),
-        Function::Binomial => {
-            if !(a[0] >= 0.0 && a[0] <= 1e12) {
-                return Err(format!(
-                    "binomial({}, {}): n must be a count from 0 to 10^12",
-                    a[0], a[1]
-                ));
-            }
-            Binomial::new(a[0] as u64, a[1])
-                .map_err(|_| format!("binomial({}, {}): p must be in 0..1", a[0], a[1]))?
-                .sample(rng) as f64
-        }
-        // A mean of 0 is legitimate: the count is always 0 (rand_distr refuses it).
-        Function::Poisson if a[0] == 0.0 => 0.0,
-        Function::Poisson => Poisson::new(a[0])
-            .map_err(|_| {
-                format!(
-                    "poisson({}): the mean must be from 0 to {:e}",
-                    a[0],
-                    Poisson::<f64>::MAX_LAMBDA
-                )
-            })?
-            .sample(rng),
+        Function::Binomial => binomial(a[0], a[1], rng)?,
+        Function::Poisson => poisson(a[0], rng)?,
         Function::Beta => beta(a[0], a[1], rng)?,
     })
+}
+
+/// `binomial(n, p)`: a count of successes among n trials.
+fn binomial<R: rand::Rng + ?Sized>(n: f64, p: f64, rng: &mut R) -> Result<f64, String> {
+    if !(0.0..=1e12).contains(&n) {
+        return Err(format!(
+            "binomial({n}, {p}): n must be a count from 0 to 10^12"
+        ));
+    }
+    Ok(Binomial::new(n as u64, p)
+        .map_err(|_| format!("binomial({n}, {p}): p must be in 0..1"))?
+        .sample(rng) as f64)
+}
+
+/// `poisson(mean)`: a count. A mean of 0 is legitimate, the count always 0 (rand_distr refuses
+/// it; issue 50, 12).
+fn poisson<R: rand::Rng + ?Sized>(mean: f64, rng: &mut R) -> Result<f64, String> {
+    if mean == 0.0 {
+        return Ok(0.0);
+    }
+    Ok(Poisson::new(mean)
+        .map_err(|_| {
+            format!(
+                "poisson({mean}): the mean must be from 0 to {:e}",
+                Poisson::<f64>::MAX_LAMBDA
+            )
+        })?
+        .sample(rng))
 }
 
 /// `betavariate(a, b)`: X / (X + Y) of two gamma draws of shapes `a` and `b`.
