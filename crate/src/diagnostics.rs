@@ -69,19 +69,34 @@ pub struct LineIndex<'a> {
     line_starts: Vec<usize>,
 }
 
+/// Where each line of `text` starts (byte offsets): after `\n`, and after a `\r` not followed by
+/// `\n`; the first line after a byte order mark.
+pub fn line_starts(text: &str) -> Vec<usize> {
+    let bytes = text.as_bytes();
+    let mut starts = vec![if text.starts_with('\u{feff}') {
+        '\u{feff}'.len_utf8()
+    } else {
+        0
+    }];
+    starts.extend(bytes.iter().enumerate().filter_map(|(i, &b)| {
+        let ends = b == b'\n' || (b == b'\r' && bytes.get(i + 1) != Some(&b'\n'));
+        ends.then_some(i + 1)
+    }));
+    starts
+}
+
+/// The 1-based line of byte `offset`, given the [`line_starts`] of its text: what a message
+/// says of another place than its own span (its span carries its own place).
+pub fn line_of(line_starts: &[usize], offset: usize) -> usize {
+    line_starts.partition_point(|&start| start <= offset).max(1)
+}
+
 impl<'a> LineIndex<'a> {
     pub fn new(text: &'a str) -> Self {
-        let bytes = text.as_bytes();
-        let mut line_starts = vec![if text.starts_with('\u{feff}') {
-            '\u{feff}'.len_utf8()
-        } else {
-            0
-        }];
-        line_starts.extend(bytes.iter().enumerate().filter_map(|(i, &b)| {
-            let ends = b == b'\n' || (b == b'\r' && bytes.get(i + 1) != Some(&b'\n'));
-            ends.then_some(i + 1)
-        }));
-        LineIndex { text, line_starts }
+        LineIndex {
+            text,
+            line_starts: line_starts(text),
+        }
     }
 
     /// 1-based (line, column) of a byte offset; offsets past the end or inside a character are

@@ -15,7 +15,10 @@ pub fn parse(source: &str) -> (SourceFile, Vec<Diagnostic>) {
     let lines = split_lines(&text);
     let declared = declared_modules(&lines);
     let mut parser = Parser {
-        file: SourceFile::default(),
+        file: SourceFile {
+            line_starts: crate::diagnostics::line_starts(&text),
+            ..SourceFile::default()
+        },
         diagnostics,
         scanner: ModuleScanner::new(&declared),
         section: Section::Productions,
@@ -124,8 +127,8 @@ impl Parser<'_> {
                 "E0104",
                 span.clone(),
                 format!(
-                    "a second axiom replaces the one at byte {}; a grammar has one axiom",
-                    previous.start
+                    "a second axiom replaces the one on line {}; a grammar has one axiom",
+                    self.file.line(previous.start)
                 ),
             ));
         }
