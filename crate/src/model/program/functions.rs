@@ -96,6 +96,11 @@ fn binomial<R: rand::Rng + ?Sized>(n: f64, p: f64, rng: &mut R) -> Result<f64, S
         .sample(rng) as f64)
 }
 
+/// rand_distr's largest Poisson mean (`Poisson::MAX_LAMBDA`) as `{:e}` writes it: a constant text,
+/// so that the first plant's core carries no float-to-exponent formatting (issue 22; a test checks
+/// it against the number).
+const MAX_POISSON_MEAN_TEXT: &str = "1.844e19";
+
 /// `poisson(mean)`: a count. A mean of 0 is legitimate, the count always 0 (rand_distr refuses
 /// it; issue 50, 12).
 fn poisson<R: rand::Rng + ?Sized>(mean: f64, rng: &mut R) -> Result<f64, String> {
@@ -104,10 +109,7 @@ fn poisson<R: rand::Rng + ?Sized>(mean: f64, rng: &mut R) -> Result<f64, String>
     }
     Ok(Poisson::new(mean)
         .map_err(|_| {
-            format!(
-                "poisson({mean}): the mean must be from 0 to {:e}",
-                Poisson::<f64>::MAX_LAMBDA
-            )
+            format!("poisson({mean}): the mean must be from 0 to {MAX_POISSON_MEAN_TEXT}")
         })?
         .sample(rng))
 }
@@ -181,4 +183,17 @@ fn growth(f: Function, a: &[f64]) -> Result<f64, String> {
         }
         _ => a[0],
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_poisson_limit_text_is_the_limit() {
+        assert_eq!(
+            format!("{:e}", Poisson::<f64>::MAX_LAMBDA),
+            MAX_POISSON_MEAN_TEXT
+        );
+    }
 }
