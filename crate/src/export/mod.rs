@@ -193,7 +193,8 @@ pub fn export_with(
     }
 }
 
-/// What the studio downloads: the one file of an export, or a zip (`STEM.zip`) of its files
+/// What the studio downloads: the one file of an export, or a zip (`STEM.zip`, `stem` a
+/// [`safe_stem`] and what the caller adds to it, as `fern-obj`) of its files
 /// when it has several (OBJ and MTL; POV-Ray's scene and the texture images it names). `None`
 /// only past 4 GiB.
 pub fn bundle(mut files: Vec<ExportedFile>, stem: &str) -> Option<ExportedFile> {
@@ -205,7 +206,7 @@ pub fn bundle(mut files: Vec<ExportedFile>, stem: &str) -> Option<ExportedFile> 
         .map(|f| (f.name.as_str(), f.bytes.as_slice()))
         .collect();
     Some(ExportedFile {
-        name: format!("{}.zip", safe_stem(stem)),
+        name: format!("{stem}.zip"),
         bytes: zip::stored(&entries)?,
         mime: "application/zip",
     })
@@ -387,15 +388,16 @@ pub(crate) mod tests {
         let obj = std::str::from_utf8(&files[0].bytes).expect("text");
         assert!(obj.contains("\nmtllib x-v-nan-nan-nan.mtl\n"), "{obj}");
         assert!(!obj.lines().any(|l| l.starts_with("v nan")));
-        let zip = bundle(files, name).expect("small");
+        // The entries' names are the files' own: none climbs out of the folder it is unpacked in.
+        let zip = bundle(files, &safe_stem(name)).expect("small");
         assert_eq!(zip.name, "x-v-nan-nan-nan.zip");
         assert!(!zip.bytes.windows(3).any(|w| w == b"../"));
-        let huge = bundle(
-            export(Format::Obj, &mesh, &skeleton, &"n".repeat(100_000)),
-            "n",
-        )
-        .expect("a long name is cut, not an archive past 4 GiB");
-        assert_eq!(huge.name, "n.zip");
+        let files = export(Format::Obj, &mesh, &skeleton, &"n".repeat(100_000));
+        assert_eq!(files[0].name, format!("{}.obj", "n".repeat(MAX_STEM_CHARS)));
+        assert!(
+            bundle(files, "n").is_some(),
+            "a long name is cut, not an archive past 4 GiB"
+        );
     }
 
     #[test]
