@@ -34,7 +34,7 @@ pub fn parse(source: &str) -> (SourceFile, Vec<Diagnostic>) {
 fn split_lines(text: &str) -> Vec<(usize, &str)> {
     let mut lines = Vec::new();
     let mut start = 0;
-    for line in text.split(['\n', '\r']) {
+    for line in text.split(|c| c == '\n' || c == '\r') {
         lines.push((start, line));
         start += line.len() + 1;
     }

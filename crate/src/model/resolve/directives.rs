@@ -569,7 +569,11 @@ impl Resolver {
         // u64::MAX and was cut to it (issue 50, 11).
         let digits = !d.args.is_empty() && d.args.bytes().all(|b| b.is_ascii_digit());
         let (value, found) = if digits {
-            (d.args.parse::<u64>().ok(), excerpt(&d.args))
+            // By hand, not `str::parse`: the first plant's core carries no integer parser.
+            let exact = d.args.bytes().try_fold(0u64, |n, b| {
+                n.checked_mul(10)?.checked_add(u64::from(b - b'0'))
+            });
+            (exact, excerpt(&d.args))
         } else {
             match self.constant(d) {
                 // Below 2^64, `as` is exact for a whole number.
