@@ -527,19 +527,13 @@ fn blame_section(
     } else {
         return e;
     };
-    let above = if e.code == "E0400" {
-        format!(
-            "above the limit of {}; raise it with '#max_modules N'",
-            model.settings.max_modules
-        )
-    } else {
-        "above the memory budget for one string".to_string()
-    };
     Diagnostic {
         span: p.span.clone(),
         message: format!(
-            "this {section} production makes a string of {len} modules or more, {above}, or \
-             write fewer modules in its successor"
+            "this {section} production makes a string of {len} modules or more, above \
+             #max_modules ({}) or the 256 MB one string may take: write fewer modules in its \
+             successor (or raise #max_modules)",
+            model.settings.max_modules
         ),
         ..e
     }

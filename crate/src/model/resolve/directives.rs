@@ -104,16 +104,23 @@ pub(super) fn words(d: &Directive) -> Vec<Directive> {
 /// 2^64, the first whole number above `u64::MAX`.
 const TWO_TO_64: f64 = 18_446_744_073_709_551_616.0;
 
-/// Longest excerpt of a directive's argument a message quotes (characters).
+/// Longest excerpt of a directive's argument a message quotes (bytes: 40 characters of ASCII).
 const MAX_QUOTED: usize = 40;
 
-/// `text` as a message quotes it: whole when short, else its first [`MAX_QUOTED`] characters and
-/// an ellipsis (a 200 KB argument is not repeated in a message; the span shows it all).
+/// `text` as a message quotes it: whole when short, else its first [`MAX_QUOTED`] bytes (to a
+/// character's start) and an ellipsis (a 200 KB argument is not repeated in a message; the span
+/// shows it all).
 pub(super) fn excerpt(text: &str) -> String {
-    match text.char_indices().nth(MAX_QUOTED) {
-        Some((cut, _)) => format!("{}…", &text[..cut]),
-        None => text.to_string(),
+    if text.len() <= MAX_QUOTED {
+        return text.to_string();
     }
+    let mut cut = MAX_QUOTED;
+    while !text.is_char_boundary(cut) {
+        cut -= 1;
+    }
+    let mut quoted = text[..cut].to_string();
+    quoted.push('…');
+    quoted
 }
 
 /// `#name needs 'A B' or 'A B C' (what they mean)`: the forms and their explanation.
