@@ -34,11 +34,17 @@ pub fn parse(source: &str) -> (SourceFile, Vec<Diagnostic>) {
 fn split_lines(text: &str) -> Vec<(usize, &str)> {
     let mut lines = Vec::new();
     let mut start = 0;
-    for line in text.split(|c| c == '\n' || c == '\r') {
+    for line in text.split(is_line_end) {
         lines.push((start, line));
         start += line.len() + 1;
     }
     lines
+}
+
+/// `\n` or `\r` (a function rather than `['\n', '\r']`: the first plant's core carries no
+/// searcher for a set of characters).
+fn is_line_end(c: char) -> bool {
+    c == '\n' || c == '\r'
 }
 
 /// The names `#module` lines declare, longest first: they change how every line is split into
