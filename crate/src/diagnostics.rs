@@ -61,17 +61,42 @@ pub struct LocatedDiagnostic {
     pub column: usize,
 }
 
-/// Maps byte offsets of one text to lines and columns.
+/// Maps byte offsets of one text to lines and columns. A line ends at `\n`, `\r\n` or a lone
+/// `\r`; a byte order mark at the start is not a column (editors do not show it), though spans
+/// still count its bytes (they are offsets into the text as given).
 pub struct LineIndex<'a> {
     text: &'a str,
     line_starts: Vec<usize>,
 }
 
+/// Where each line of `text` starts (byte offsets): after `\n`, and after a `\r` not followed by
+/// `\n`; the first line after a byte order mark.
+pub fn line_starts(text: &str) -> Vec<usize> {
+    let bytes = text.as_bytes();
+    let mut starts = vec![if text.starts_with('\u{feff}') {
+        '\u{feff}'.len_utf8()
+    } else {
+        0
+    }];
+    starts.extend(bytes.iter().enumerate().filter_map(|(i, &b)| {
+        let ends = b == b'\n' || (b == b'\r' && bytes.get(i + 1) != Some(&b'\n'));
+        ends.then_some(i + 1)
+    }));
+    starts
+}
+
+/// The 1-based line of byte `offset`, given the [`line_starts`] of its text: what a message
+/// says of another place than its own span (its span carries its own place).
+pub fn line_of(line_starts: &[usize], offset: usize) -> usize {
+    line_starts.partition_point(|&start| start <= offset).max(1)
+}
+
 impl<'a> LineIndex<'a> {
     pub fn new(text: &'a str) -> Self {
-        let mut line_starts = vec![0];
-        line_starts.extend(text.match_indices('\n').map(|(i, _)| i + 1));
-        LineIndex { text, line_starts }
+        LineIndex {
+            text,
+            line_starts: line_starts(text),
+        }
     }
 
     /// 1-based (line, column) of a byte offset; offsets past the end or inside a character are
@@ -81,8 +106,12 @@ impl<'a> LineIndex<'a> {
         while !self.text.is_char_boundary(offset) {
             offset -= 1;
         }
-        let line = self.line_starts.partition_point(|&start| start <= offset) - 1;
-        let column = self.text[self.line_starts[line]..offset].chars().count() + 1;
+        let line = self
+            .line_starts
+            .partition_point(|&start| start <= offset)
+            .saturating_sub(1);
+        let from = self.line_starts[line].min(offset);
+        let column = self.text[from..offset].chars().count() + 1;
         (line + 1, column)
     }
 
@@ -121,5 +150,16 @@ mod tests {
         assert_eq!(index.line_column(5), (2, 2)); // after the two-byte ω
         assert_eq!(index.line_column(4), (2, 1)); // inside ω: clamped
         assert_eq!(index.line_column(100), (3, 1));
+    }
+
+    #[test]
+    fn lone_carriage_returns_end_lines_and_a_byte_order_mark_is_no_column() {
+        let index = LineIndex::new("\u{feff}ab\rcd\r\nef");
+        assert_eq!(index.line_column(0), (1, 1)); // the mark itself
+        assert_eq!(index.line_column(3), (1, 1)); // 'a'
+        assert_eq!(index.line_column(4), (1, 2));
+        assert_eq!(index.line_column(6), (2, 1)); // 'c'
+        assert_eq!(index.line_column(8), (2, 3)); // the '\r' of "\r\n"
+        assert_eq!(index.line_column(10), (3, 1)); // 'e'
     }
 }

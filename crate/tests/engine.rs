@@ -226,6 +226,13 @@ fn a_random_variable_is_drawn_afresh_at_each_use_in_the_successor() {
 }
 
 #[test]
+fn a_poisson_count_of_mean_zero_is_zero() {
+    // rand_distr refuses a mean of 0; the count is legitimately always 0 (issue 50, 12).
+    let s = derived_seed("axiom: A\nA -> B(poisson(0))B(poisson(0.0))", 1, 3);
+    assert_eq!(s, "B(0)B(0)");
+}
+
+#[test]
 fn a_random_variable_may_read_another_and_sees_the_same_deviate_as_the_conditions() {
     // q is drawn below p; if q's p were drawn apart from the conditions' p, q <= p would fail for
     // about half the modules. The lines are in either order.

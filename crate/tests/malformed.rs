@@ -117,6 +117,20 @@ const CASES: &[Case] = &[
     ("random_reads_itself", "#random p = uniform(0, p)\naxiom: F(p)", "E0507", 1, 24),
     ("random_variables_read_each_other", "#random p = uniform(0, q)\n#random q = normal(p, 1)\naxiom: F(p)", "E0507", 2, 20),
     ("random_cycle_through_a_define", "#define d q\n#random p = uniform(0, d)\n#random q = normal(p, 1)\naxiom: F(p)", "E0507", 3, 20),
+    ("normal_with_a_negative_deviation", "#iterations 1\naxiom: A(0)\nA(x) -> A(normal(0, -1))", "E0500", 3, 11),
+    ("error_after_lone_carriage_returns", "#iterations 1\raxiom: F\rF F[+F]F", "E0105", 3, 1),
+    ("error_after_a_byte_order_mark", "\u{feff}axiom: F]", "E0108", 1, 9),
+    ("curve_named_after_a_function", "#curve sin 0 0, 1 1\naxiom: F", "E0205", 1, 8),
+    ("curve_defined_twice", "#curve c 0 0, 0.3 0.1, 0.7 0.9, 1 1\n#curve c 0 0, 0.3 0.1, 0.7 0.9, 1 1\naxiom: F(c(0))", "E0205", 2, 8),
+    ("curve_named_after_a_define", "#define c 5\n#curve c 0 0, 0.3 0.1, 0.7 0.9, 1 1\naxiom: F(c)", "E0205", 2, 8),
+    ("table_named_after_a_curve", "#curve c 0 0, 0.3 0.1, 0.7 0.9, 1 1\n#table c 0 0, 1 1\naxiom: F(c(0))", "E0205", 2, 8),
+    ("curve_named_numit_without_points", "#curve NumIt\naxiom: F", "E0205", 1, 8),
+    ("homomorphism_past_the_module_limit", "#iterations 0\n#max_modules 1000\naxiom: F\nhomomorphism:\nF -> FFFFFFFFFF", "E0400", 5, 1),
+    ("decomposition_past_the_module_limit", "#iterations 1\n#max_modules 1000\naxiom: F\ndecomposition:\nF -> FFFFFFFFFF", "E0400", 5, 1),
+    ("seed_above_u64", "#seed 18446744073709551616\naxiom: F", "E0204", 1, 7),
+    ("angle_reads_numit", "#angle 10 * NumIt\naxiom: F", "E0203", 1, 8),
+    ("iterations_read_maxit", "#iterations MaxIt\naxiom: F", "E0204", 1, 13),
+    ("define_reading_numit_in_a_directive", "#define n NumIt + 1\n#step n\naxiom: F", "E0203", 2, 7),
     ("define_chain_too_large_once_expanded", "#define d0 x\n#define d1 d0+d0\n#define d2 d1+d1\n#define d3 d2+d2\n#define d4 d3+d3\n#define d5 d4+d4\n#define d6 d5+d5\n#define d7 d6+d6\n#define d8 d7+d7\n#define d9 d8+d8\n#define d10 d9+d9\n#define d11 d10+d10\n#define d12 d11+d11\n#define d13 d12+d12\naxiom: A(1)\nA(x) -> F(d13)", "E0128", 16, 11),
 ];
 
@@ -204,6 +218,85 @@ fn messages_name_what_the_user_wrote() {
             "{source:?}: {messages:?}"
         );
     }
+}
+
+/// The located diagnostics of `source`: (line, column, code, message).
+fn located(source: &str) -> Vec<(usize, usize, &'static str, String)> {
+    build(source, &BuildOptions::default())
+        .located_diagnostics(source)
+        .into_iter()
+        .map(|d| (d.line, d.column, d.code, d.message))
+        .collect()
+}
+
+#[test]
+fn messages_name_the_other_place_by_its_line_not_a_byte() {
+    // issue 50, 11: E0201, E0104 and E0301 said "at byte N".
+    for (source, code, line, column, other) in [
+        ("#angle 10\n#angle 20\naxiom: F", "E0201", 2, 1, "line 1"),
+        ("axiom: F\n\naxiom: G", "E0104", 3, 1, "line 1"),
+        ("axiom: F\nF -> FF\n\nF -> G", "E0301", 4, 1, "line 2"),
+        (
+            "\u{feff}#angle 1\r#angle 2\raxiom: F",
+            "E0201",
+            2,
+            1,
+            "line 1",
+        ),
+    ] {
+        let all = located(source);
+        let found = all.iter().find(|d| d.2 == code);
+        let Some((l, c, _, message)) = found else {
+            panic!("{source:?}: no {code} in {all:?}");
+        };
+        assert_eq!((*l, *c), (line, column), "{source:?}: {message}");
+        assert!(message.contains(other), "{source:?}: {message}");
+        assert!(!message.contains("byte"), "{source:?}: {message}");
+    }
+}
+
+#[test]
+fn a_deeply_nested_directive_argument_is_quoted_short() {
+    // issue 50, 11: 70 nested parentheses around a 200 KB argument were quoted whole.
+    let argument = format!(
+        "{}1{}{}",
+        "(".repeat(70),
+        " ".repeat(200_000),
+        ")".repeat(70)
+    );
+    let source = format!("#angle {argument}\naxiom: F");
+    let all = located(&source);
+    let (line, column, code, message) = &all[0];
+    assert_eq!((*line, *column, *code), (1, 8, "E0203"), "{message}");
+    assert!(
+        message.chars().count() < 200,
+        "{} characters",
+        message.len()
+    );
+    assert!(
+        message.contains(&format!("{}…", "(".repeat(40))),
+        "{message}"
+    );
+    assert!(message.contains("nested more than"), "{message}");
+}
+
+#[test]
+fn seeds_up_to_u64_max_are_read_exactly() {
+    let all = located("#seed 18446744073709551615\naxiom: F");
+    assert!(all.is_empty(), "{all:?}");
+    let all = located("#seed 18446744073709551616\naxiom: F");
+    assert!(all[0].3.contains("found 18446744073709551616"), "{all:?}");
+}
+
+#[test]
+fn a_homomorphism_overflow_names_the_production() {
+    let all = located("#iterations 0\n#max_modules 1000\naxiom: F\nhomomorphism:\nF -> FFFFFFFFFF");
+    let message = &all[0].3;
+    assert!(
+        message.starts_with("this homomorphism production makes a string of"),
+        "{message}"
+    );
+    assert!(!message.contains("axiom"), "{message}");
 }
 
 #[test]

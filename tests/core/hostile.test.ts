@@ -32,7 +32,7 @@ function cases(): [string, string][] {
 const NORMAL = '#angle 25.7\n#iterations 4\naxiom: F\nF -> F[+F]F[-F]F';
 
 function expectation(text: string): string {
-  const match = /^\/\/ expect: (\S+)/.exec(text);
+  const match = /^\uFEFF?\/\/ expect: (\S+)/.exec(text); // one file starts with a byte order mark
   if (!match) throw new Error('the first line must say // expect: ok or // expect: E0xxx');
   return match[1];
 }

@@ -456,7 +456,8 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
         } else {
             self.emit(&p.successor, p.slots, num_it, dst)?;
         }
-        check_size(model, num_it, dst.len(), dst.bytes())?;
+        check_size(model, num_it, dst.len(), dst.bytes())
+            .map_err(|e| blame_section(model, rules, p, dst.len(), e))?;
         Ok(Some(index))
     }
 
@@ -506,4 +507,34 @@ fn negative_weight(span: Span, w: f64) -> Diagnostic {
         span,
         format!("a weight cannot be negative (it is {w} here)"),
     )
+}
+
+/// A size error (`E0400`, `E0401`) met while a homomorphism or decomposition production wrote:
+/// blamed on that production, not on the axiom or `#iterations` (issue 50, 11: a homomorphism
+/// of an axiom `F` said "the axiom has 1010 modules"). A productions pass's error is kept.
+#[cold]
+fn blame_section(
+    model: &Model,
+    rules: &RuleSet,
+    p: &Production,
+    len: usize,
+    e: Diagnostic,
+) -> Diagnostic {
+    let section = if std::ptr::eq(rules, &model.homomorphism) {
+        "homomorphism"
+    } else if std::ptr::eq(rules, &model.decomposition) {
+        "decomposition"
+    } else {
+        return e;
+    };
+    Diagnostic {
+        span: p.span.clone(),
+        message: format!(
+            "this {section} production makes a string of {len} modules or more, above \
+             #max_modules ({}) or the 256 MB one string may take: write fewer modules in its \
+             successor (or raise #max_modules)",
+            model.settings.max_modules
+        ),
+        ..e
+    }
 }

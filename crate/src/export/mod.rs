@@ -89,6 +89,39 @@ pub struct ExportedFile {
     pub mime: &'static str,
 }
 
+/// Longest file stem an export writes (characters): [`safe_stem`] cuts a longer name.
+pub const MAX_STEM_CHARS: usize = 64;
+
+/// A name made a safe file stem (issue 50, 14): the one function every name goes through before
+/// it names a file or is written into one (zip entries, OBJ's `mtllib`, the glTF download's
+/// name). Path separators, control characters (a line break would start a line of its own in an
+/// OBJ), whitespace (`mtllib` takes a list of names) and the characters Windows refuses
+/// (`:*?"<>|`) become `-`, runs of them one `-`; dots and dashes at either end go (so `../../x`
+/// is `x`, and no stem is hidden or `..`); at most [`MAX_STEM_CHARS`] characters are kept; an
+/// empty result is `plant`. A stem that is already safe (`plant`, `fern_2`, `fougère`) is kept.
+pub fn safe_stem(name: &str) -> String {
+    let unsafe_char = |c: char| c.is_control() || c.is_whitespace() || "/\\:*?\"<>|".contains(c);
+    let mut stem = String::new();
+    for c in name.chars() {
+        let c = if unsafe_char(c) { '-' } else { c };
+        if !(c == '-' && stem.ends_with('-')) {
+            stem.push(c);
+        }
+    }
+    let ends = |c: char| c == '-' || c == '.';
+    let stem: String = stem
+        .trim_matches(ends)
+        .chars()
+        .take(MAX_STEM_CHARS)
+        .collect();
+    let stem = stem.trim_end_matches(ends);
+    if stem.is_empty() {
+        "plant".to_string()
+    } else {
+        stem.to_string()
+    }
+}
+
 /// Writes the model in `format` as files named after `stem` (`plant` gives `plant.wrl`; OBJ gives
 /// `plant.obj`, which names `plant.mtl`, and `plant.mtl`).
 pub fn export(
@@ -109,6 +142,7 @@ pub fn export_with(
     look: &svg::Look,
 ) -> Vec<ExportedFile> {
     let scene = Scene::new(mesh, skeleton);
+    let stem = safe_stem(stem);
     let file = |extension: &str, bytes: Vec<u8>, mime: &'static str| ExportedFile {
         name: format!("{stem}.{extension}"),
         bytes,
@@ -159,7 +193,8 @@ pub fn export_with(
     }
 }
 
-/// What the studio downloads: the one file of an export, or a zip (`STEM.zip`) of its files
+/// What the studio downloads: the one file of an export, or a zip (`STEM.zip`, `stem` a
+/// [`safe_stem`] and what the caller adds to it, as `fern-obj`) of its files
 /// when it has several (OBJ and MTL; POV-Ray's scene and the texture images it names). `None`
 /// only past 4 GiB.
 pub fn bundle(mut files: Vec<ExportedFile>, stem: &str) -> Option<ExportedFile> {
@@ -313,6 +348,55 @@ pub(crate) mod tests {
         assert_eq!(
             (glb.name.as_str(), glb.mime),
             ("tree.glb", "model/gltf-binary")
+        );
+    }
+
+    #[test]
+    fn a_name_becomes_a_safe_stem() {
+        for (name, stem) in [
+            ("plant", "plant"),
+            ("fern_2", "fern_2"),
+            ("fougère", "fougère"),
+            ("../../x", "x"),
+            ("..\\..\\x", "x"),
+            ("/etc/passwd", "etc-passwd"),
+            ("a\nv nan nan nan", "a-v-nan-nan-nan"),
+            ("tree\r\0\t.", "tree"),
+            ("C:fern?*", "C-fern"),
+            ("..", "plant"),
+            ("", "plant"),
+            (" \n ", "plant"),
+            (".hidden", "hidden"),
+        ] {
+            assert_eq!(safe_stem(name), stem, "{name:?}");
+            assert_eq!(safe_stem(stem), stem, "a safe stem is kept");
+        }
+        let long = safe_stem(&"a".repeat(100_000));
+        assert_eq!(long, "a".repeat(MAX_STEM_CHARS));
+        // Cut to its length, a stem still does not end in a dash or a dot.
+        let cut = safe_stem(&format!("{}.b", "a".repeat(MAX_STEM_CHARS - 1)));
+        assert_eq!(cut, "a".repeat(MAX_STEM_CHARS - 1));
+    }
+
+    #[test]
+    fn a_hostile_name_reaches_no_file_as_it_is() {
+        let (mesh, skeleton) = two_colour_plant();
+        let name = "../../x\nv nan nan nan";
+        let files = export(Format::Obj, &mesh, &skeleton, name);
+        let names: Vec<&str> = files.iter().map(|f| f.name.as_str()).collect();
+        assert_eq!(names, ["x-v-nan-nan-nan.obj", "x-v-nan-nan-nan.mtl"]);
+        let obj = std::str::from_utf8(&files[0].bytes).expect("text");
+        assert!(obj.contains("\nmtllib x-v-nan-nan-nan.mtl\n"), "{obj}");
+        assert!(!obj.lines().any(|l| l.starts_with("v nan")));
+        // The entries' names are the files' own: none climbs out of the folder it is unpacked in.
+        let zip = bundle(files, &safe_stem(name)).expect("small");
+        assert_eq!(zip.name, "x-v-nan-nan-nan.zip");
+        assert!(!zip.bytes.windows(3).any(|w| w == b"../"));
+        let files = export(Format::Obj, &mesh, &skeleton, &"n".repeat(100_000));
+        assert_eq!(files[0].name, format!("{}.obj", "n".repeat(MAX_STEM_CHARS)));
+        assert!(
+            bundle(files, "n").is_some(),
+            "a long name is cut, not an archive past 4 GiB"
         );
     }
 

@@ -12,24 +12,52 @@ use meristem::BuildOptions;
 use std::path::Path;
 use std::process::ExitCode;
 
-/// Writes the files of an export: the first at `output`, any others (OBJ's MTL) beside it with
-/// their own extension, texture images (POV-Ray's) beside it with their own names.
+/// Writes the files of an export: the first at `output`, any others beside it with their own
+/// names (OBJ's MTL, as its `mtllib` names it; POV-Ray's texture images, as the scene names them),
+/// each said on stdout. When `output` is a stream (`-` for stdout, a device such as
+/// `/dev/stdout`, a pipe) the first file goes there and nothing is said on stdout (it may be the
+/// file itself); the others are not written (there is no "beside" a stream): a note on stderr
+/// says which, and the OBJ's `mtllib` then names a library that is not there.
 pub fn write_export(output: &Path, files: &[export::ExportedFile]) -> Result<(), String> {
+    let stream = is_stream(output);
     for (k, file) in files.iter().enumerate() {
+        if k > 0 && stream {
+            eprintln!(
+                "meristem: note: {} is not a regular file: {} is not written beside it",
+                output.display(),
+                file.name
+            );
+            continue;
+        }
         let path = if k == 0 {
             output.to_path_buf()
-        } else if file.mime == "image/png" {
-            // A texture keeps its own name (`bark.png`): the scene refers to it by that name.
-            output.with_file_name(&file.name)
         } else {
-            let extension = file.name.rsplit('.').next().unwrap_or("");
-            output.with_extension(extension)
+            // A texture keeps its own name (`bark.png`), the MTL the one the OBJ's `mtllib`
+            // gives (the output's stem made safe: `my plant.obj` names `my-plant.mtl`).
+            output.with_file_name(&file.name)
         };
+        if path.as_os_str() == "-" {
+            std::io::Write::write_all(&mut std::io::stdout().lock(), &file.bytes)
+                .map_err(|e| format!("cannot write to stdout: {e}"))?;
+            continue;
+        }
         std::fs::write(&path, &file.bytes)
             .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
-        println!("wrote {} ({} bytes)", path.display(), file.bytes.len());
+        if !stream {
+            println!("wrote {} ({} bytes)", path.display(), file.bytes.len());
+        }
     }
     Ok(())
+}
+
+/// True when `output` is no place beside which other files can go: `-` (stdout), a path under
+/// `/dev/` or `/proc/` (`/dev/stdout`, `/dev/fd/3`, which may even point to a regular file when
+/// stdout is redirected), or an existing file that is not a regular file (a named pipe).
+fn is_stream(output: &Path) -> bool {
+    output.as_os_str() == "-"
+        || output.starts_with("/dev")
+        || output.starts_with("/proc")
+        || std::fs::metadata(output).is_ok_and(|m| !m.is_file() && !m.is_dir())
 }
 
 pub fn print_diagnostics(file: &str, diagnostics: &[LocatedDiagnostic]) {
@@ -124,9 +152,11 @@ pub fn export_file(
         format,
         look,
     } = target;
-    // The stem names the MTL file inside the OBJ, so it is the output's own stem.
+    // The stem names the MTL file inside the OBJ, so it is the output's own stem (`plant` for a
+    // stream such as `-` or `/dev/stdout`, whose name is no file's).
     let stem = output
         .file_stem()
+        .filter(|_| !is_stream(&output))
         .map(|s| s.to_string_lossy().into_owned())
         .unwrap_or_else(|| "plant".into());
     let options = ExportOptions {

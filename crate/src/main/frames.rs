@@ -183,7 +183,13 @@ pub fn export_frames(
             Ok(bytes) => bytes,
             Err(e) => return fail(e),
         };
-        if let Err(e) = std::fs::write(&path, bytes) {
+        // `--at T -o - --format svg`: the one picture on stdout, as `export -o -` writes.
+        let written = if path.as_os_str() == "-" {
+            std::io::Write::write_all(&mut std::io::stdout().lock(), &bytes)
+        } else {
+            std::fs::write(&path, bytes)
+        };
+        if let Err(e) = written {
             return fail(format!("cannot write {}: {e}", path.display()));
         }
     }

@@ -1,6 +1,7 @@
 //! `meristem import`: another dialect's grammar or a vlab object translated.
 
 use super::args::Args;
+use super::input::read_bytes;
 use super::python;
 use meristem::import::{self, Dialect, Import};
 use std::process::ExitCode;
@@ -64,8 +65,8 @@ pub fn import_object(args: &Args) -> ExitCode {
 pub fn read_object(args: &Args) -> Result<Vec<import::ObjectFile>, ExitCode> {
     let path = std::path::Path::new(&args.file);
     if !path.is_dir() {
-        let bytes = std::fs::read(path).map_err(|e| {
-            eprintln!("meristem: cannot read {}: {e}", args.file);
+        let bytes = read_bytes(path).map_err(|e| {
+            eprintln!("meristem: {e}");
             ExitCode::from(2)
         })?;
         return import::unzip(&bytes).map_err(|e| {
@@ -137,13 +138,13 @@ pub fn foreign_source(args: &Args) -> Option<Result<String, ExitCode>> {
             Err(code) => return Some(Err(code)),
         }
     } else if lower.ends_with(".lpy") || lower.ends_with(".l") {
-        match std::fs::read(&args.file) {
+        match read_bytes(std::path::Path::new(&args.file)) {
             Ok(bytes) => vec![import::ObjectFile {
                 name: base_name(&args.file),
                 bytes,
             }],
             Err(e) => {
-                eprintln!("meristem: cannot read {}: {e}", args.file);
+                eprintln!("meristem: {e}");
                 return Some(Err(ExitCode::from(2)));
             }
         }

@@ -68,6 +68,8 @@ pub const USAGE: &str = "usage:
                   [--edits EDITS.json] [--background C] [--line-width PX] [--size WxH] [--dpi D]
       EXT: wrl (VRML 2.0), glb (glTF 2.0), pov (POV-Ray 3.7), obj (OBJ, writes OUT.mtl too),
            iv (OpenInventor 2.1), svg (SVG); --format overrides the extension
+      -o - --format EXT writes the file on stdout; a stream (-, /dev/stdout, a pipe) gets no
+           .mtl or textures beside it (a note on stderr says so), and no 'wrote …' on stdout
       --sides N (3 to 64, default 6) and --smooth-all are the studio's view options
       --edits EDITS.json: branch edits made in the studio (its edits document), applied first
       SVG only, the studio's picture settings:

@@ -102,7 +102,7 @@ pub fn export(
         Some(keyframes) => {
             let scene = export::scene::Scene::new(&plant.mesh, &plant.skeleton);
             vec![ExportedFile {
-                name: format!("{}.glb", options.stem),
+                name: format!("{}.glb", export::safe_stem(&options.stem)),
                 bytes: export::gltf::write_animated(&scene, Some(&keyframes)),
                 mime: "model/gltf-binary",
             }]

@@ -13,6 +13,16 @@ pub struct SourceFile {
     /// The axiom, with the span of the `axiom:` line (`None` when the file has none).
     pub axiom: Option<(Vec<ModuleSyntax>, Span)>,
     pub productions: Vec<ProductionSyntax>,
+    /// Where each line starts (`diagnostics::line_starts`), for messages that name another line
+    /// than their own ("replaces the one on line 2"): messages never carry byte offsets.
+    pub line_starts: Vec<usize>,
+}
+
+impl SourceFile {
+    /// The 1-based line of byte `offset`.
+    pub fn line(&self, offset: usize) -> usize {
+        crate::diagnostics::line_of(&self.line_starts, offset)
+    }
 }
 
 /// A `#name args` line. `derivation length: N` is stored as `iterations`, and `maximum depth: N`

@@ -1,18 +1,29 @@
 //! Comments are replaced by spaces before parsing, byte for byte, so every span the parser reports
-//! is a span of the original text and line numbers do not move.
+//! is a span of the original text and line numbers do not move. A byte order mark at the start of
+//! the text (a file saved by Notepad) is blanked the same way: spans stay byte offsets into the
+//! text as given, with its mark.
 
 use crate::diagnostics::Diagnostic;
 
-/// Returns `source` with `// …` and `/* … */` comments blanked out (newlines inside block comments
-/// are kept), and a diagnostic for an unterminated block comment.
+/// Returns `source` with `// …` and `/* … */` comments and a leading byte order mark blanked
+/// out (line ends inside block comments are kept), and a diagnostic for an unterminated block
+/// comment. A line comment ends at `\n` or at `\r` (old Mac line ends).
 pub fn blank_comments(source: &str) -> (String, Vec<Diagnostic>) {
     let bytes = source.as_bytes();
     let mut out = bytes.to_vec();
     let mut diagnostics = Vec::new();
     let mut i = 0;
+    if source.starts_with('\u{feff}') {
+        out[..BOM_LEN].fill(b' ');
+        i = BOM_LEN;
+    }
+    let first = i;
     while i < bytes.len() {
-        if bytes[i] == b'/' && bytes.get(i + 1) == Some(&b'/') && starts_line_comment(bytes, i) {
-            while i < bytes.len() && bytes[i] != b'\n' {
+        if bytes[i] == b'/'
+            && bytes.get(i + 1) == Some(&b'/')
+            && starts_line_comment(bytes, first, i)
+        {
+            while i < bytes.len() && bytes[i] != b'\n' && bytes[i] != b'\r' {
                 out[i] = b' ';
                 i += 1;
             }
@@ -30,7 +41,7 @@ pub fn blank_comments(source: &str) -> (String, Vec<Diagnostic>) {
                     closed = true;
                     break;
                 }
-                if bytes[i] != b'\n' {
+                if bytes[i] != b'\n' && bytes[i] != b'\r' {
                     out[i] = b' ';
                 }
                 i += 1;
@@ -52,10 +63,14 @@ pub fn blank_comments(source: &str) -> (String, Vec<Diagnostic>) {
     (text, diagnostics)
 }
 
+/// The UTF-8 byte order mark's length in bytes.
+const BOM_LEN: usize = '\u{feff}'.len_utf8();
+
 /// A `//` starts a comment at the start of a line or after whitespace, unless it is part of a run
 /// of three or more slashes: ABOP writes five rolls as `/////` (`F -> S/////F`).
-fn starts_line_comment(bytes: &[u8], i: usize) -> bool {
-    let after_space = i == 0 || bytes[i - 1].is_ascii_whitespace();
+/// `first` is where the text starts (after a byte order mark).
+fn starts_line_comment(bytes: &[u8], first: usize, i: usize) -> bool {
+    let after_space = i == first || bytes[i - 1].is_ascii_whitespace();
     let longer_run = bytes.get(i + 2) == Some(&b'/') || (i > 0 && bytes[i - 1] == b'/');
     after_space && !longer_run
 }
@@ -88,6 +103,14 @@ mod tests {
                 "X -> F//F"
             ]
         );
+    }
+
+    #[test]
+    fn a_byte_order_mark_and_old_mac_line_ends_are_read() {
+        let (text, diags) = blank_comments("\u{feff}F // a\rG /* b\r */H");
+        assert!(diags.is_empty());
+        assert_eq!(text, "   F     \rG     \r   H");
+        assert_eq!(blank_comments("\u{feff}// a\nF").0, "       \nF");
     }
 
     #[test]

@@ -15,7 +15,10 @@ pub fn parse(source: &str) -> (SourceFile, Vec<Diagnostic>) {
     let lines = split_lines(&text);
     let declared = declared_modules(&lines);
     let mut parser = Parser {
-        file: SourceFile::default(),
+        file: SourceFile {
+            line_starts: crate::diagnostics::line_starts(&text),
+            ..SourceFile::default()
+        },
         diagnostics,
         scanner: ModuleScanner::new(&declared),
         section: Section::Productions,
@@ -26,15 +29,22 @@ pub fn parse(source: &str) -> (SourceFile, Vec<Diagnostic>) {
     (parser.file, parser.diagnostics)
 }
 
-/// Lines with the byte offset at which each starts (`\r\n` endings are handled by `trim`).
+/// Lines with the byte offset at which each starts. A line ends at `\n`, `\r\n` or a lone `\r`
+/// (old Mac files): splitting at both characters makes `\r\n` an empty line more, which is skipped.
 fn split_lines(text: &str) -> Vec<(usize, &str)> {
     let mut lines = Vec::new();
     let mut start = 0;
-    for line in text.split('\n') {
+    for line in text.split(is_line_end) {
         lines.push((start, line));
         start += line.len() + 1;
     }
     lines
+}
+
+/// `\n` or `\r` (a function rather than `['\n', '\r']`: the first plant's core carries no
+/// searcher for a set of characters).
+fn is_line_end(c: char) -> bool {
+    c == '\n' || c == '\r'
 }
 
 /// The names `#module` lines declare, longest first: they change how every line is split into
@@ -123,8 +133,8 @@ impl Parser<'_> {
                 "E0104",
                 span.clone(),
                 format!(
-                    "a second axiom replaces the one at byte {}; a grammar has one axiom",
-                    previous.start
+                    "a second axiom replaces the one on line {}; a grammar has one axiom",
+                    self.file.line(previous.start)
                 ),
             ));
         }
@@ -249,6 +259,21 @@ mod tests {
                 (None, "D".into(), 0),
             ]
         );
+    }
+
+    #[test]
+    fn a_byte_order_mark_and_every_kind_of_line_end_are_read() {
+        for src in [
+            "\u{feff}#iterations 2\naxiom: F\nF -> FF",
+            "#iterations 2\raxiom: F\rF -> FF\r",
+            "\u{feff}#iterations 2 // two\r\naxiom: F\r\nF -> FF",
+        ] {
+            let (file, diags) = parse(src);
+            assert!(diags.is_empty(), "{src:?}: {diags:?}");
+            assert_eq!(file.directives.len(), 1, "{src:?}");
+            assert_eq!(file.productions.len(), 1, "{src:?}");
+            assert!(file.axiom.is_some(), "{src:?}");
+        }
     }
 
     #[test]

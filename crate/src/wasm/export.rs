@@ -39,7 +39,10 @@ pub fn export_model(
         None => export::svg::Look::default(),
     };
     let animation = fields.animation();
-    let stem = fields.name.unwrap_or_else(|| "plant".into());
+    // The name comes from any caller of the API: it is made a safe stem before it names a file
+    // or is written into one (`"../../x"` would name zip entries outside the folder unpacked,
+    // a line break would add a line to the OBJ).
+    let stem = export::safe_stem(fields.name.as_deref().unwrap_or("plant"));
     let options = pipeline::ExportOptions {
         build: fields.base.options(),
         format,

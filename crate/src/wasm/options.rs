@@ -325,7 +325,7 @@ options_objects! { EXPORT_TYPESCRIPT;
     "ExportOptions" extends "BuildOptions" BuildOptionsFields => ExportOptionsObject, ExportOptionsFields {
         /// `wrl`, `glb`, `pov`, `obj`, `iv` or `svg`.
         "format" => format: text, required;
-        /// File name without extension; default `plant`. A zip of several files is `NAME-FORMAT.zip`.
+        /// File name without extension; default `plant`. A zip of several files is `NAME-FORMAT.zip`. Made a safe stem first: at most 64 characters, path separators, control characters and spaces as `-`, no dot or dash at either end (`../../x` gives `x`).
         "name" => name: text;
         /// An edits document (JSON text) to apply first.
         "edits" => edits: text;

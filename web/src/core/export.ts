@@ -32,7 +32,11 @@ export interface ModelFile {
 
 /** Options of {@link exportModel}: the build's, and the file name without extension. */
 export interface ExportOptions extends BuildOptions {
-  /** File name without extension; default `plant` (a zip of several files: `NAME-obj.zip`, `NAME-pov.zip`). */
+  /**
+   * File name without extension; default `plant` (a zip of several files: `NAME-obj.zip`, `NAME-pov.zip`).
+   * The core makes it a safe stem first: at most 64 characters, path separators, control characters
+   * and spaces as `-`, no dot or dash at either end (`../../x` gives `x`).
+   */
   name?: string;
   /** Branch edits to apply first (the file is then `meristem export … --edits EDITS.json`'s). */
   edits?: EditsDocument;

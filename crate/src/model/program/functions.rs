@@ -68,28 +68,50 @@ pub(super) fn call<R: rand::Rng + ?Sized>(
             }
             (lo + (rng.random::<f64>() * (hi - lo + 1.0)).floor()).min(hi)
         }
+        // rand_distr takes a negative deviation as a mirror image; like `exponential`'s negative
+        // rate, it is an error here.
         Function::Normal => Normal::new(a[0], a[1])
-            .map_err(|_| format!("normal({}, {}): the deviation must be ≥ 0", a[0], a[1]))?
+            .ok()
+            .filter(|_| a[1] >= 0.0)
+            .ok_or_else(|| format!("normal({}, {}): the deviation must be ≥ 0", a[0], a[1]))?
             .sample(rng),
         Function::Exponential => Exp::new(a[0])
             .map_err(|_| format!("exponential({}): the rate must be ≥ 0", a[0]))?
             .sample(rng),
-        Function::Binomial => {
-            if !(a[0] >= 0.0 && a[0] <= 1e12) {
-                return Err(format!(
-                    "binomial({}, {}): n must be a count from 0 to 10^12",
-                    a[0], a[1]
-                ));
-            }
-            Binomial::new(a[0] as u64, a[1])
-                .map_err(|_| format!("binomial({}, {}): p must be in 0..1", a[0], a[1]))?
-                .sample(rng) as f64
-        }
-        Function::Poisson => Poisson::new(a[0])
-            .map_err(|_| format!("poisson({}): the mean must be > 0", a[0]))?
-            .sample(rng),
+        Function::Binomial => binomial(a[0], a[1], rng)?,
+        Function::Poisson => poisson(a[0], rng)?,
         Function::Beta => beta(a[0], a[1], rng)?,
     })
+}
+
+/// `binomial(n, p)`: a count of successes among n trials.
+fn binomial<R: rand::Rng + ?Sized>(n: f64, p: f64, rng: &mut R) -> Result<f64, String> {
+    if !(0.0..=1e12).contains(&n) {
+        return Err(format!(
+            "binomial({n}, {p}): n must be a count from 0 to 10^12"
+        ));
+    }
+    Ok(Binomial::new(n as u64, p)
+        .map_err(|_| format!("binomial({n}, {p}): p must be in 0..1"))?
+        .sample(rng) as f64)
+}
+
+/// rand_distr's largest Poisson mean (`Poisson::MAX_LAMBDA`) as `{:e}` writes it: a constant text,
+/// so that the first plant's core carries no float-to-exponent formatting (issue 22; a test checks
+/// it against the number).
+const MAX_POISSON_MEAN_TEXT: &str = "1.844e19";
+
+/// `poisson(mean)`: a count. A mean of 0 is legitimate, the count always 0 (rand_distr refuses
+/// it; issue 50, 12).
+fn poisson<R: rand::Rng + ?Sized>(mean: f64, rng: &mut R) -> Result<f64, String> {
+    if mean == 0.0 {
+        return Ok(0.0);
+    }
+    Ok(Poisson::new(mean)
+        .map_err(|_| {
+            format!("poisson({mean}): the mean must be from 0 to {MAX_POISSON_MEAN_TEXT}")
+        })?
+        .sample(rng))
 }
 
 /// `betavariate(a, b)`: X / (X + Y) of two gamma draws of shapes `a` and `b`.
@@ -161,4 +183,17 @@ fn growth(f: Function, a: &[f64]) -> Result<f64, String> {
         }
         _ => a[0],
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_poisson_limit_text_is_the_limit() {
+        assert_eq!(
+            format!("{:e}", Poisson::<f64>::MAX_LAMBDA),
+            MAX_POISSON_MEAN_TEXT
+        );
+    }
 }

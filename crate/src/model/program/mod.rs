@@ -152,6 +152,13 @@ impl Program {
             _ => None,
         }
     }
+
+    /// True when the expression reads `NumIt` or `MaxIt` (its value depends on the step).
+    pub fn reads_step(&self) -> bool {
+        self.ops
+            .iter()
+            .any(|op| matches!(op, Op::NumIt | Op::MaxIt))
+    }
 }
 
 #[cfg(test)]

@@ -31,23 +31,31 @@ impl Resolver {
                 || self.curves.contains_key(name)
                 || value_named(name).is_some_and(|v| !v.definable)
                 || function_named(name).is_some();
-            if !taken {
-                if let Some(kind) = curve_kind(d.kind) {
-                    self.curve(name, kind, d);
-                    continue;
-                }
+            let curve = curve_kind(d.kind);
+            if taken && (curve.is_some() || d.expr.is_some()) {
+                // A curve's name too (issue 50, 11: `#curve sin …`, a second `#curve c`, a
+                // `#define c` before `#curve c` were ignored without a word).
+                let built_in = function_named(name).is_some()
+                    || value_named(name).is_some_and(|v| !v.definable);
+                let what = if built_in {
+                    "is a built-in name"
+                } else {
+                    "is already defined"
+                };
+                self.diagnostics.push(Diagnostic::error(
+                    "E0205",
+                    span.clone(),
+                    format!("'{name}' {what}"),
+                ));
+                continue;
+            }
+            if let Some(kind) = curve {
+                self.curve(name, kind, d);
+                continue;
             }
             let Some(expr) = &d.expr else {
                 continue;
             };
-            if taken {
-                self.diagnostics.push(Diagnostic::error(
-                    "E0205",
-                    span.clone(),
-                    format!("'{name}' is already defined"),
-                ));
-                continue;
-            }
             if d.kind == Some(DirectiveKind::Define) {
                 self.defines.insert(name.clone(), expr.clone());
                 self.define_order.push(name.clone());

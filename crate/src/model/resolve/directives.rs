@@ -101,6 +101,28 @@ pub(super) fn words(d: &Directive) -> Vec<Directive> {
         .collect()
 }
 
+/// 2^64, the first whole number above `u64::MAX`.
+const TWO_TO_64: f64 = 18_446_744_073_709_551_616.0;
+
+/// Longest excerpt of a directive's argument a message quotes (bytes: 40 characters of ASCII).
+const MAX_QUOTED: usize = 40;
+
+/// `text` as a message quotes it: whole when short, else its first [`MAX_QUOTED`] bytes (to a
+/// character's start) and an ellipsis (a 200 KB argument is not repeated in a message; the span
+/// shows it all).
+pub(super) fn excerpt(text: &str) -> String {
+    if text.len() <= MAX_QUOTED {
+        return text.to_string();
+    }
+    let mut cut = MAX_QUOTED;
+    while !text.is_char_boundary(cut) {
+        cut -= 1;
+    }
+    let mut quoted = text[..cut].to_string();
+    quoted.push('…');
+    quoted
+}
+
 /// `#name needs 'A B' or 'A B C' (what they mean)`: the forms and their explanation.
 fn usage(d: &Directive, info: &DirectiveInfo) -> String {
     let explanation = if info.usage.starts_with('(') {
@@ -123,8 +145,9 @@ impl Resolver {
                     "E0201",
                     d.name_span.clone(),
                     format!(
-                        "#{} is set twice; this one replaces the value at byte {}",
-                        d.name, previous.name_span.start
+                        "#{} is set twice; this one replaces the value on line {}",
+                        d.name,
+                        file.line(previous.name_span.start)
                     ),
                 ));
             }
@@ -468,21 +491,29 @@ impl Resolver {
         if d.args.is_empty() {
             return Err("nothing".into());
         }
+        let written = excerpt(&d.args);
         if let Some(v) = crate::number::parse_f64(&d.args) {
             return if v.is_finite() {
                 Ok(v)
             } else {
-                Err(format!("'{}', which is too large", d.args))
+                Err(format!("'{written}', which is too large"))
             };
         }
-        let quoted = |message: String| format!("'{}' ({message})", d.args);
+        let quoted = |message: String| format!("'{written}' ({message})");
         let expr = crate::syntax::parse_expression(&d.args, d.args_span.start)
             .map_err(|e| quoted(e.message))?;
         let program = self
             .compile_constant(&expr)
             .map_err(|e| quoted(e.message))?;
         if program.random {
-            return Err(format!("'{}', which draws random numbers", d.args));
+            return Err(format!("'{written}', which draws random numbers"));
+        }
+        if program.reads_step() {
+            // Evaluated once, before any step, NumIt and MaxIt would silently be 0 (issue 50, 11).
+            return Err(format!(
+                "'{written}', which reads NumIt or MaxIt: a directive's value is read once, \
+                 before the first step"
+            ));
         }
         let mut rng = rand_pcg::Pcg64Mcg::new(0);
         let mut env = Env {
@@ -541,20 +572,36 @@ impl Resolver {
 
     /// A whole number from 0 to `max`, or `E0204`.
     pub(super) fn whole(&mut self, d: &Directive, max: u64) -> Option<u64> {
-        match self.constant(d) {
-            Ok(v) if v >= 0.0 && v.fract() == 0.0 && v <= max as f64 => Some(v as u64),
-            result => {
-                let found = result.map_or_else(|e| e, |v| format!("{v}"));
-                self.directive_error(
-                    "E0204",
-                    d,
-                    format!(
-                        "{} needs a whole number from 0 to {max}, found {found}",
-                        d.written
-                    ),
-                );
-                None
+        // Digits alone are read exactly: as a float, 18446744073709551616 (2^64) passed for
+        // u64::MAX and was cut to it (issue 50, 11).
+        let digits = !d.args.is_empty() && d.args.bytes().all(|b| b.is_ascii_digit());
+        let (value, found) = if digits {
+            // By hand, not `str::parse`: the first plant's core carries no integer parser.
+            let exact = d.args.bytes().try_fold(0u64, |n, b| {
+                n.checked_mul(10)?.checked_add(u64::from(b - b'0'))
+            });
+            (exact, excerpt(&d.args))
+        } else {
+            match self.constant(d) {
+                // Below 2^64, `as` is exact for a whole number.
+                Ok(v) if v >= 0.0 && v.fract() == 0.0 && v < TWO_TO_64 => {
+                    (Some(v as u64), format!("{v}"))
+                }
+                Ok(v) => (None, format!("{v}")),
+                Err(why) => (None, why),
             }
+        };
+        if let Some(v) = value.filter(|&v| v <= max) {
+            return Some(v);
         }
+        self.directive_error(
+            "E0204",
+            d,
+            format!(
+                "{} needs a whole number from 0 to {max}, found {found}",
+                d.written
+            ),
+        );
+        None
     }
 }

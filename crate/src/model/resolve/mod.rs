@@ -56,7 +56,7 @@ pub fn resolve(file: &SourceFile) -> (Option<Model>, Vec<Diagnostic>) {
         [&productions, &homomorphism, &decomposition],
     );
     for set in [&mut productions, &mut homomorphism, &mut decomposition] {
-        r.index(set);
+        r.index(set, file);
     }
 
     let sets = [&productions, &homomorphism, &decomposition];

@@ -8,7 +8,7 @@ use crate::diagnostics::{Diagnostic, Severity};
 use crate::model::{
     Alphabet, ModuleId, PatternItem, PatternModule, Production, Program, RuleSet, SuccessorModule,
 };
-use crate::syntax::{ExprSyntax, ModuleSyntax, ProductionSyntax, Span};
+use crate::syntax::{ExprSyntax, ModuleSyntax, ProductionSyntax, SourceFile, Span};
 use crate::vocabulary::{module_named, Command};
 use std::collections::HashMap;
 
@@ -224,12 +224,12 @@ impl Resolver {
     }
 
     /// Indexes `set` by predecessor and warns about productions that never apply.
-    pub(super) fn index(&mut self, set: &mut RuleSet) {
+    pub(super) fn index(&mut self, set: &mut RuleSet, file: &SourceFile) {
         set.by_predecessor = vec![Vec::new(); self.alphabet.len()];
         for (index, p) in set.productions.iter().enumerate() {
             set.by_predecessor[p.predecessor.id.index()].push(index as u32);
         }
-        unreachable_warnings(set, &self.alphabet, &mut self.diagnostics);
+        unreachable_warnings(set, &self.alphabet, file, &mut self.diagnostics);
     }
 }
 
@@ -265,7 +265,12 @@ fn collect_uses(modules: &[SuccessorModule], written: &mut Uses) {
 /// Warns about productions that an earlier, unconditional one always pre-empts. One pass per
 /// predecessor: for each arity, the first unconditional production without a weight (it blocks
 /// every later one) and the first with a weight (it blocks later ones without).
-fn unreachable_warnings(set: &RuleSet, alphabet: &Alphabet, diagnostics: &mut Vec<Diagnostic>) {
+fn unreachable_warnings(
+    set: &RuleSet,
+    alphabet: &Alphabet,
+    file: &SourceFile,
+    diagnostics: &mut Vec<Diagnostic>,
+) {
     for candidates in &set.by_predecessor {
         // arity -> (first unweighted blocker, first weighted blocker)
         let mut blockers: HashMap<usize, (Option<&Production>, Option<&Production>)> =
@@ -293,8 +298,8 @@ fn unreachable_warnings(set: &RuleSet, alphabet: &Alphabet, diagnostics: &mut Ve
                     "E0301",
                     q.span.clone(),
                     format!(
-                        "this production never applies: the production at byte {} always rewrites '{}' first",
-                        p.span.start,
+                        "this production never applies: the production on line {} always rewrites '{}' first",
+                        file.line(p.span.start),
                         alphabet.name(q.predecessor.id)
                     ),
                 ));
