@@ -11,7 +11,9 @@
 (() => {
   /** The intact-checks of the files this guards, by how their URL ends. */
   const CHECKS = [
-    [/\.wasm$/, async (response) => WebAssembly.validate(await response.arrayBuffer())],
+    // The cores only (assets/meristem_core_bg-HASH.wasm, assets/meristem_bg-HASH.wasm): Pyodide's
+    // wasm is workbox's runtime cache's, not the precache's, and must reach that route.
+    [/\/assets\/meristem[\w-]*\.wasm$/, async (response) => WebAssembly.validate(await response.arrayBuffer())],
     [
       /\/examples\/index\.json$/,
       async (response) => {
@@ -36,8 +38,9 @@
   /** The file from the precache when intact; else from the network (kept when intact); see above. */
   async function guarded(request, intact, isCore) {
     const cache = await precache();
-    const keys = cache ? await cache.keys(request, { ignoreSearch: true }) : [];
-    const cached = keys.length > 0 ? await cache.match(keys[0]) : undefined;
+    // By URL, as workbox matches its precache: its revision query and the response's Vary ignored.
+    const keys = cache ? await cache.keys(request.url, { ignoreSearch: true, ignoreVary: true }) : [];
+    const cached = keys.length > 0 ? await cache.match(keys[0], { ignoreVary: true }) : undefined;
     if (!cached) return fetch(request); // not precached (yet): as without this file
     if (await intact(cached.clone())) return cached;
     console.warn(`Meristem: the offline copy of ${request.url} is damaged; fetching it again`);
