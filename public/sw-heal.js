@@ -63,6 +63,7 @@
     if (url.origin !== self.location.origin) return;
     const check = CHECKS.find(([pattern]) => pattern.test(url.pathname));
     if (!check) return;
-    event.respondWith(guarded(request, check[1], check[0].source.includes('wasm')));
+    // (Should the cache itself fail, the network answers, as without this file.)
+    event.respondWith(guarded(request, check[1], check[0].source.includes('wasm')).catch(() => fetch(request)));
   });
 })();
