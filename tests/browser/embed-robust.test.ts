@@ -67,6 +67,7 @@ describe('a plant that never finishes (9a)', () => {
     expect(await slow.locator('.mp-message').isVisible()).toBe(true);
     writeFileSync(new URL('embed-growing.png', RESULTS), await page.screenshot());
     expect(await page.locator('#b .mp').getAttribute('data-state'), 'waits behind the first').toBeNull();
+    expect(await page.locator('#b .mp-message').textContent()).toBe('Waiting to grow…');
 
     await page.evaluate(() => document.getElementById('slow')!.remove());
     await expect.poll(() => page.locator('#b .mp').getAttribute('data-state'), { timeout: 20_000 }).toBe('ok');

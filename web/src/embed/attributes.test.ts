@@ -20,8 +20,9 @@ describe('<meristem-plant> iterations and seed attributes (issue 50, finding 9c)
 });
 
 describe('growingMessage', () => {
-  it('says the plant grows, with the derivation step when known', () => {
-    expect(growingMessage(undefined)).toBe('Growing…');
+  it('says the plant waits, then grows, with the derivation step when known', () => {
+    expect(growingMessage(undefined)).toBe('Waiting to grow…');
+    expect(growingMessage({ stage: 'parsing', step: 0, steps: 0 })).toBe('Growing…');
     expect(growingMessage({ stage: 'deriving', step: 3, steps: 10 })).toBe('Growing… step 3 of 10');
     expect(growingMessage({ stage: 'meshing', step: 0, steps: 0 })).toBe('Growing…');
   });

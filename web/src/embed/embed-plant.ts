@@ -38,9 +38,14 @@ export interface EmbedSettings {
 /** How long a build runs before the plant says it is growing (ms): a quick one shows no message. */
 export const GROWING_AFTER_MS = 300;
 
-/** What a plant being built says: "Growing…", with the derivation step when it is known. */
+/**
+ * What a plant asked for says until it is shown: "Growing…", with the derivation step when it is
+ * known; before its build has begun (the page's plants build one at a time, the core may still be
+ * loading), that it waits.
+ */
 export function growingMessage(progress: BuildProgress | undefined): string {
-  if (progress?.stage === 'deriving' && progress.steps > 0) return `Growing… step ${progress.step} of ${progress.steps}`;
+  if (!progress) return 'Waiting to grow…';
+  if (progress.stage === 'deriving' && progress.steps > 0) return `Growing… step ${progress.step} of ${progress.steps}`;
   return 'Growing…';
 }
 
