@@ -31,7 +31,9 @@ const repoRoot = fileURLToPath(new URL('.', import.meta.url));
  * Pyodide (dist/pyodide/, about 13 MB: scripts/pyodide-plugin.ts) is not precached: a visitor who
  * never opens an L-Py or lpfg model never downloads it. The first model that needs Python fetches
  * it, and the service worker keeps it then (cache first, in a cache named after Pyodide's version,
- * so an upgrade fetches the new files), so Python models open offline after that.
+ * so an upgrade fetches the new files), so Python models open offline after that. A damaged copy
+ * of the core's wasm or of the gallery's manifest in the cache is checked for and fetched again
+ * (public/sw-heal.js, issue 50, finding 10).
  */
 function offlineApp() {
   return VitePWA({
@@ -56,7 +58,9 @@ function offlineApp() {
     },
     workbox: {
       globPatterns: ['**/*.{html,js,css,wasm,json,lsys,png,svg,webmanifest}'],
-      globIgnores: [`${PYODIDE_DIR}/**`],
+      globIgnores: [`${PYODIDE_DIR}/**`, 'sw-heal.js'],
+      // Before workbox's routes: a damaged copy of the core or of the gallery's manifest heals (public/sw-heal.js).
+      importScripts: ['sw-heal.js'],
       maximumFileSizeToCacheInBytes: 8 * 1024 * 1024,
       ignoreURLParametersMatching: [/.*/],
       navigateFallback: null,

@@ -9,6 +9,7 @@ import {
   generation,
   nextBuild,
   openExample,
+  pasteText,
   savePage,
   shownStats,
   twoFrames,
@@ -74,6 +75,23 @@ describe('sliders for #define constants', () => {
     expect(await list.textContent()).toContain('lr');
     await page.keyboard.press('Escape');
     for (let i = 0; i < '\nB -> F(l'.length; i++) await page.keyboard.press('Backspace');
+    expect(problems).toEqual([]);
+  });
+
+  it('gives a pasted number its own range and step (issue 50, finding 15)', async () => {
+    const grammar = (a: string) => `#define a ${a}\n#angle 25\n#iterations 3\naxiom: F\nF -> F[+F]F[-F]F`;
+    expect(await pasteText(page, grammar('1000'))).toBe('ok');
+    const slider = page.locator('input[data-define=a]');
+    await expect.poll(() => slider.evaluate((i: HTMLInputElement) => [i.min, i.max, i.step])).toEqual(['0', '2000', '1']);
+    expect(await pasteText(page, grammar('0.5'))).toBe('ok');
+    await expect.poll(() => slider.evaluate((i: HTMLInputElement) => [i.min, i.max, i.step])).toEqual(['0', '1', '0.01']);
+    await slider.focus();
+    await page.keyboard.press('ArrowRight');
+    await expect.poll(() => editorText(page)).toContain('#define a 0.51\n');
+    // The slider's own value keeps its range: one more step right.
+    await page.keyboard.press('ArrowRight');
+    await expect.poll(() => editorText(page)).toContain('#define a 0.52\n');
+    expect(await slider.evaluate((i: HTMLInputElement) => [i.min, i.max, i.step])).toEqual(['0', '1', '0.01']);
     expect(problems).toEqual([]);
   });
 });

@@ -79,3 +79,25 @@ describe('the iterations box', () => {
     });
   }
 });
+
+describe('iterations the core cannot take (issue 50, finding 9c)', () => {
+  it('says at the box what it takes, never that the core crashed, and builds the grammar’s own', async () => {
+    const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
+    const page = await context.newPage();
+    // A link may hold up to 2^32 − 1 iterations (the core's limit), more than the box takes.
+    const fragment = await encodeState({ text: '#iterations 3\naxiom: F\nF -> F[+F]F', iterations: 2 ** 32 - 1 });
+    await page.goto(new URL(fragment, inject('studioUrl')).href);
+    await page.waitForFunction(() => window.__meristem?.lastStats?.iterations === 3 && window.__meristem.preview?.settled === true);
+    for (const typed of ['4294967296', '4294967295', '1e400']) {
+      await page.getByTestId('iterations').fill(typed);
+      await page.getByTestId('iterations').blur();
+      await expect.poll(() => page.getByTestId('iterations-tag').textContent()).toBe('whole, 0–10000');
+      await page.waitForTimeout(500); // (a build it asked for, had it asked for one)
+      expect(await page.evaluate(() => window.__meristem?.lastStats?.iterations), typed).toBe(3);
+      expect(await page.getByTestId('status').getAttribute('data-state'), typed).not.toBe('crashed');
+      const notice = page.getByTestId('notice');
+      expect((await notice.isVisible()) ? await page.getByTestId('notice-text').textContent() : '', typed).not.toMatch(/crash/i);
+    }
+    await context.close();
+  });
+});

@@ -20,7 +20,7 @@ export function coreModule(): Promise<WebAssembly.Module> {
 
 async function compileCore(): Promise<WebAssembly.Module> {
   const response = await fetch(wasmUrl);
-  if (!response.ok) throw new Error(`the core could not be fetched: HTTP ${response.status}`);
+  if (!response.ok) throw new Error(`the core could not be fetched: HTTP ${response.status} ${response.statusText}`); // (a damaged offline copy: public/sw-heal.js says so)
   // Streaming needs `application/wasm`; a host that says otherwise gets the bytes compiled whole.
   if (response.headers.get('Content-Type')?.startsWith('application/wasm')) return WebAssembly.compileStreaming(response);
   return WebAssembly.compile(await response.arrayBuffer());

@@ -15,7 +15,7 @@
 // tests: `data-state` (ok, error), `data-iterations`, `data-modules`, `data-bounds` (min x y z,
 // max x y z) and `data-t` (the growth time shown).
 import { loadVocabulary } from '../core';
-import { EmbedPlant, GROWTH_ATTRIBUTES, growthAttributes, parseControls } from './embed-plant';
+import { EmbedPlant, GROWTH_ATTRIBUTES, growthAttributes, parseControls, wholeAttribute } from './embed-plant';
 import { EMBED_CSS } from './embed-style';
 import { sharedBuilds } from './shared-builds';
 
@@ -24,12 +24,6 @@ import { sharedBuilds } from './shared-builds';
  * read `new URL('./', import.meta.url)` as that file and inline it.)
  */
 const SITE_ROOT = new URL('./', import.meta.url).href;
-
-/** A whole number attribute, or undefined. */
-function wholeNumber(value: string | null): number | undefined {
-  const n = value === null || value.trim() === '' ? NaN : Number(value);
-  return Number.isInteger(n) && n >= 0 ? n : undefined;
-}
 
 /**
  * Why a grammar at `url`, on another site than the page, could not be read: most often its server
@@ -94,10 +88,13 @@ export class MeristemPlantElement extends HTMLElement {
     if (load !== this.loads || !this.shadowRoot) return;
     this.plant?.dispose();
     this.shadowRoot.querySelector('.mp-failed')?.remove();
+    const iterations = wholeAttribute('iterations', this.getAttribute('iterations'));
+    const seed = wholeAttribute('seed', this.getAttribute('seed'));
     this.plant = new EmbedPlant(this.shadowRoot, {
       source,
-      iterations: wholeNumber(this.getAttribute('iterations')),
-      seed: wholeNumber(this.getAttribute('seed')),
+      iterations: iterations.value,
+      seed: seed.value,
+      notes: [iterations.problem, seed.problem].filter((p): p is string => p !== undefined),
       controls,
       growth: growthAttributes(this),
       siteRoot: SITE_ROOT,

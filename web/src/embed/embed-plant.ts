@@ -3,8 +3,8 @@
 // iteration buttons with Play and `#define` sliders, and a link that opens the grammar in the
 // studio. Used by the view-only page (embed.html) and the <meristem-plant> element; the builds
 // go to the page's one shared worker. Small enough for 320 × 240.
-import type { BuildOptions } from '../core';
-import { cleanGrowth, encodeState, type SharedGrowth } from '../share';
+import type { BuildOptions, BuildProgress } from '../core';
+import { cleanGrowth, decodeState, encodeState, type SharedGrowth } from '../share';
 import { derivedBuildOptions, derivedTime, LazySliderPanel, Playback } from '../plant-controls';
 import { GrowthShow, Timeline } from '../plant-controls/timeline';
 import type { BuildOutcome } from '../build';
@@ -31,6 +31,22 @@ export interface EmbedSettings {
   /** The site's root: the studio (index.html) and its textures are there. */
   siteRoot: string;
   builds: SharedBuilds;
+  /** What is wrong with the element's attributes (each ignored), shown above the plant. */
+  notes?: readonly string[];
+}
+
+/** How long a build runs before the plant says it is growing (ms): a quick one shows no message. */
+export const GROWING_AFTER_MS = 300;
+
+/**
+ * What a plant asked for says until it is shown: "Growing…", with the derivation step when it is
+ * known; before its build has begun (the page's plants build one at a time, the core may still be
+ * loading), that it waits.
+ */
+export function growingMessage(progress: BuildProgress | undefined): string {
+  if (!progress) return 'Waiting to grow…';
+  if (progress.stage === 'deriving' && progress.steps > 0) return `Growing… step ${progress.step} of ${progress.steps}`;
+  return 'Growing…';
 }
 
 /** The controls given as a list (`"iterations, sliders"`), unknown names ignored. */
@@ -49,6 +65,23 @@ export function growthAttributes(element: Pick<Element, 'getAttribute' | 'hasAtt
   return cleanGrowth({ playing: element.hasAttribute('animate'), loop: element.hasAttribute('loop'), speed: read('speed'), t: read('t'), from: read('from'), to: read('to') });
 }
 
+/** The largest value of each whole-number attribute: the core's limits for its options. */
+export const ATTRIBUTE_MAX = { iterations: 2 ** 32 - 1, seed: Number.MAX_SAFE_INTEGER } as const;
+
+/**
+ * A whole-number attribute (`iterations`, `seed`): its value, or undefined when absent or not a
+ * whole number from 0 to its largest (issue 50, finding 9c: the core refused `iterations="4294967296"`
+ * and the plant said "a bug of Meristem"), with what is wrong with it then, to show in the element.
+ */
+export function wholeAttribute(name: keyof typeof ATTRIBUTE_MAX, value: string | null): { value?: number; problem?: string } {
+  if (value === null) return {};
+  const n = value.trim() === '' ? NaN : Number(value);
+  if (Number.isInteger(n) && n >= 0 && n <= ATTRIBUTE_MAX[name]) return { value: n };
+  const shown = value.length > 40 ? `${value.slice(0, 40)}…` : value;
+  const own = name === 'iterations' ? '#iterations' : '#seed';
+  return { problem: `${name}="${shown}" is not a whole number from 0 to ${ATTRIBUTE_MAX[name]}: the grammar’s own ${own} is used.` };
+}
+
 function element<K extends keyof HTMLElementTagNameMap>(tag: K, className: string, text?: string): HTMLElementTagNameMap[K] {
   const e = document.createElement(tag);
   e.className = className;
@@ -56,9 +89,33 @@ function element<K extends keyof HTMLElementTagNameMap>(tag: K, className: strin
   return e;
 }
 
+/**
+ * Gives back a canvas's WebGL context at once (the browser keeps few: Chromium 16 a page, losing
+ * the oldest beyond), rather than when the canvas is collected.
+ */
+function releaseContext(canvas: HTMLCanvasElement): void {
+  const gl = canvas.getContext('webgl2') ?? canvas.getContext('webgl');
+  gl?.getExtension('WEBGL_lose_context')?.loseContext();
+}
+
+/** Said when the browser took the plant's 3D view back, or gave it none. */
+export const VIEW_LOST = 'This plant’s 3D view was taken back by the browser (too many 3D views on this page). Scroll it out of sight and back to draw it again.';
+
 export class EmbedPlant {
   readonly root: HTMLElement;
-  private readonly view: PlantView;
+  /**
+   * The 3D view, while the plant is on screen or near it (issue 50, finding 9b: a page of many
+   * plants holds more WebGL contexts than the browser keeps, and it drops the oldest, blank): made
+   * when the plant scrolls into sight, released (its context given back) when it scrolls out.
+   */
+  private view: PlantView | undefined;
+  private readonly stage: HTMLElement;
+  /** What the view is asked to show, kept to show again in a view made again. */
+  private lastPlant: Parameters<PlantView['showPlant']> | undefined;
+  private growthTime: number | null = null;
+  private readonly visibility: IntersectionObserver | undefined;
+  /** Why the plant is not drawn (its view lost or refused), or ''. */
+  private viewProblem = '';
   private readonly message: HTMLElement;
   private readonly open: HTMLAnchorElement;
   private readonly count: HTMLElement;
@@ -85,6 +142,10 @@ export class EmbedPlant {
   private grammarIterations = 0;
   /** Bumped by every request, so a late answer is dropped. */
   private ticket = 0;
+  /** Shows "Growing…" when the build under way takes long. */
+  private growingTimer: ReturnType<typeof setTimeout> | undefined;
+  /** The grammar as a file, when the link cannot hold it ({@link writeLink}). */
+  private savedUrl: string | undefined;
 
   constructor(
     parent: HTMLElement | ShadowRoot,
@@ -94,9 +155,15 @@ export class EmbedPlant {
     this.iterations = settings.iterations;
     this.root = element('div', 'mp');
     const stage = element('div', 'mp-view');
+    this.stage = stage;
     this.message = element('p', 'mp-message');
     this.message.setAttribute('role', 'status');
     stage.append(this.message);
+    if (settings.notes && settings.notes.length > 0) {
+      const note = element('p', 'mp-note', settings.notes.join(' '));
+      note.setAttribute('role', 'note');
+      stage.append(note);
+    }
     const bar = element('div', 'mp-bar');
     this.count = element('span', 'mp-count');
     this.open = element('a', 'mp-open', 'Open in Meristem ↗');
@@ -112,7 +179,13 @@ export class EmbedPlant {
     });
     this.growthWanted = settings.growth !== undefined;
     this.growth = new GrowthShow(
-      { growthSpan: () => this.view.growthSpan(), setGrowthTime: (t) => this.view.setGrowthTime(t) },
+      {
+        growthSpan: () => this.view?.growthSpan() ?? null,
+        setGrowthTime: (t) => {
+          this.growthTime = t;
+          this.view?.setGrowthTime(t);
+        },
+      },
       {
         timedSpan: () => (this.timed ? (this.iterations ?? this.grammarIterations) : null),
         deriveAt: (t) => {
@@ -150,8 +223,12 @@ export class EmbedPlant {
       this.sliders.load().catch((error: unknown) => console.error('The sliders could not load:', error));
     }
     parent.append(this.root);
-    this.view = new PlantView(stage, { assetBase: settings.siteRoot });
-    this.view.onPlantShown(() => this.timeline.refresh());
+    if (typeof IntersectionObserver === 'function') {
+      this.visibility = new IntersectionObserver((entries) => (entries.at(-1)?.isIntersecting ? this.makeView() : this.releaseView()), { rootMargin: '200px' });
+      this.visibility.observe(this.root);
+    } else {
+      this.makeView();
+    }
     let wasPlaying = false;
     this.timeline.onChange(({ playing }) => {
       if (wasPlaying && !playing) void this.writeLink(); // paused: the link opens at this t
@@ -159,6 +236,46 @@ export class EmbedPlant {
     });
     this.startGrowth(settings.growth);
     this.rebuild();
+  }
+
+  /** Makes the 3D view (the plant came into sight) and shows the plant in it; says so if the browser gives none. */
+  private makeView(): void {
+    if (this.view) return;
+    let view: PlantView;
+    try {
+      view = new PlantView(this.stage, { assetBase: this.settings.siteRoot });
+    } catch (error) {
+      console.warn('Meristem: no 3D view for a plant:', error);
+      this.viewProblem = VIEW_LOST;
+      this.say(VIEW_LOST);
+      return;
+    }
+    this.view = view;
+    view.onPlantShown(() => this.timeline.refresh());
+    // Lost while on screen (another page's view took it): said, and made again when it comes back into sight.
+    view.canvas.addEventListener('webglcontextlost', () => {
+      if (this.view !== view) return; // (given back by releaseView)
+      this.releaseView();
+      this.viewProblem = VIEW_LOST;
+      this.say(VIEW_LOST);
+    });
+    if (this.viewProblem !== '') {
+      this.viewProblem = '';
+      if (this.message.textContent === VIEW_LOST) this.say('');
+    }
+    if (this.lastPlant) {
+      view.showPlant(...this.lastPlant);
+      if (this.growthTime !== null) view.setGrowthTime(this.growthTime);
+    }
+  }
+
+  /** Releases the 3D view and its WebGL context (the plant went out of sight, or away). */
+  private releaseView(): void {
+    const view = this.view;
+    if (!view) return;
+    this.view = undefined;
+    releaseContext(view.canvas);
+    view.dispose();
   }
 
   /** The growth as the settings ask: its range, its time, and playing if animated. */
@@ -213,7 +330,7 @@ export class EmbedPlant {
     this.timedAt = null; // derived at its own iterations until the timeline shows a time again
     this.sliders?.reset();
     this.sliders?.update(source);
-    this.view.frameNextPlant();
+    this.view?.frameNextPlant();
     this.rebuild();
   }
 
@@ -223,7 +340,11 @@ export class EmbedPlant {
     this.playback.pause();
     this.timeline.dispose();
     this.settings.builds.forget(this);
-    this.view.dispose();
+    clearTimeout(this.growingTimer);
+    if (this.savedUrl) URL.revokeObjectURL(this.savedUrl);
+    this.visibility?.disconnect();
+    this.releaseView();
+    this.lastPlant = undefined;
     this.root.remove();
   }
 
@@ -239,9 +360,23 @@ export class EmbedPlant {
     const ticket = ++this.ticket;
     const options = this.options();
     this.underWay++;
-    void this.settings.builds.build(this, this.source, options).then((outcome) => {
+    let progress: BuildProgress | undefined;
+    clearTimeout(this.growingTimer);
+    this.growingTimer = setTimeout(() => {
+      this.growingTimer = undefined;
+      if (ticket === this.ticket) this.say(growingMessage(progress), true);
+    }, GROWING_AFTER_MS);
+    const onProgress = (now: BuildProgress) => {
+      progress = now;
+      if (ticket === this.ticket && this.growingTimer === undefined) this.say(growingMessage(progress), true);
+    };
+    void this.settings.builds.build(this, this.source, options, onProgress).then((outcome) => {
       this.underWay--;
-      if (ticket === this.ticket) void this.show(outcome, options);
+      if (ticket === this.ticket) {
+        clearTimeout(this.growingTimer);
+        this.growingTimer = undefined;
+        void this.show(outcome, options);
+      }
       else if (outcome.kind === 'built') outcome.result.inspector.free();
       this.growth.delivered(); // a time wanted meanwhile is derived now
     });
@@ -250,7 +385,9 @@ export class EmbedPlant {
   private async show(outcome: BuildOutcome, options: BuildOptions): Promise<void> {
     if (outcome.kind === 'superseded' || outcome.kind === 'stopped') return;
     if (outcome.kind === 'crashed') {
-      this.say('The plant could not be built (a bug of Meristem).');
+      // The core refuses options it cannot use (`bad options: …`): not a bug, and it says why.
+      const refused = /bad options: (.*)$/.exec(outcome.message);
+      this.say(refused ? `The plant could not be built: its ${refused[1]}.` : 'The plant could not be built (a bug of Meristem).');
       return;
     }
     const { build, inspector } = outcome.result;
@@ -259,8 +396,9 @@ export class EmbedPlant {
     if (build.ok) {
       this.timed = build.timed || build.stepwise;
       this.stepwise = build.stepwise;
-      this.view.showPlant(build.mesh, build.flat, outcome.result.gpu, build.stats.bounds);
-      this.say('');
+      this.lastPlant = [build.mesh, build.flat, outcome.result.gpu, build.stats.bounds];
+      this.view?.showPlant(...this.lastPlant);
+      this.say(this.viewProblem);
     } else {
       const first = build.diagnostics.find((d) => d.severity === 'error');
       this.say(first ? `Line ${first.line}: ${first.message}` : 'The grammar has errors.');
@@ -292,11 +430,40 @@ export class EmbedPlant {
       ...(seed === undefined ? {} : { seed }),
       ...(growth ? { growth } : {}),
     });
-    if (ticket === this.linkTicket) this.open.href = new URL(`./${fragment}`, this.settings.siteRoot).href;
+    // The studio opens the link with this very decoder: a link it would refuse (a grammar too
+    // long for a link: issue 50, finding 9d) is never offered; the grammar is, as a file.
+    const opened = await decodeState(fragment);
+    if (ticket !== this.linkTicket) return;
+    if (opened.ok) this.offerLink(new URL(`./${fragment}`, this.settings.siteRoot).href);
+    else this.offerFile(opened.error);
   }
 
-  private say(text: string): void {
+  /** "Open in Meristem ↗": the studio, on this plant. */
+  private offerLink(href: string): void {
+    if (this.savedUrl) URL.revokeObjectURL(this.savedUrl);
+    this.savedUrl = undefined;
+    this.open.textContent = 'Open in Meristem ↗';
+    this.open.removeAttribute('download');
+    this.open.removeAttribute('title');
+    this.open.target = '_blank';
+    this.open.href = href;
+  }
+
+  /** No link can open this plant in the studio (`why`): the grammar as a file to open there instead. */
+  private offerFile(why: string): void {
+    if (this.savedUrl) URL.revokeObjectURL(this.savedUrl);
+    this.savedUrl = URL.createObjectURL(new Blob([this.source], { type: 'text/plain' }));
+    this.open.textContent = 'Save the grammar ↓';
+    this.open.title = `Too long to open in Meristem by a link: ${why}. Save the grammar, then open the file in Meristem (File ▸ Open).`;
+    this.open.download = 'plant.lsys';
+    this.open.removeAttribute('target');
+    this.open.href = this.savedUrl;
+  }
+
+  /** Shows `text` over the plant (nothing when empty); `busy`: a note that it is being built, not an error. */
+  private say(text: string, busy = false): void {
     this.message.textContent = text;
     this.message.hidden = text === '';
+    this.message.classList.toggle('mp-busy', busy);
   }
 }

@@ -19,6 +19,9 @@ export const EMBED_CSS = `
 .mp-failed { margin: 0; padding: 12px; border: 1px solid #c62828; border-radius: 8px; color: #c62828; font: 14px/1.4 system-ui, sans-serif; overflow-wrap: anywhere; }
 .mp-message { position: absolute; inset: auto 8px 8px 8px; z-index: 1; margin: 0; padding: 4px 8px; border-radius: 6px;
   background: var(--mp-panel); color: #c62828; font-size: 13px; }
+.mp-message.mp-busy { color: var(--mp-muted); }
+.mp-note { position: absolute; inset: 8px 8px auto 8px; z-index: 1; margin: 0; padding: 4px 8px; border-radius: 6px;
+  background: var(--mp-panel); color: #c62828; font-size: 13px; overflow-wrap: anywhere; }
 .mp-message[hidden], .mp-hidden { display: none; }
 .mp-bar { display: flex; flex-wrap: wrap; align-items: center; gap: 6px; padding: 6px 8px; border-top: 1px solid var(--mp-border); }
 .mp-button { min-width: 32px; padding: 3px 10px; border: 1px solid var(--mp-border); border-radius: 6px;

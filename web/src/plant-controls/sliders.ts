@@ -1,7 +1,9 @@
 // A slider for every `#define` constant with a plain number (as in vlab's control panels):
 // dragging rewrites the number in the text (one undo step per drag) and the plant follows. The
 // range is the one in a `// [min, max]` comment, else the default of editor/defines.ts, which
-// stays put while the value moves inside it (so a drag does not rescale its own slider).
+// stays put while the number is one the slider wrote (so a drag does not rescale its own slider)
+// and follows the number when the text gives another (typed, pasted, an opened file: issue 50,
+// finding 15: `#define a 1000` then a pasted `#define a 0.5` kept [0, 2000] and step 1).
 import { defineConstants, formatNumber, type DefineConstant } from '../editor/defines';
 
 /** A slider's range and step. */
@@ -11,21 +13,25 @@ export interface SliderRange {
   step: number;
 }
 
+/** The range a constant's slider showed, and the number (as written) it showed it for. */
+export interface RememberedRange {
+  range: SliderRange;
+  /** The number the range is kept for: the last one shown, or the last one the slider wrote. */
+  text: string;
+}
+
 /**
  * The range each constant's slider shows: its written range if it has one; else the range it
- * had before (`remembered`, by name) while the value is still inside it; else its default.
- * `remembered` is updated.
+ * had before (`remembered`, by name) while the number is the one it had then or the one its
+ * slider wrote ({@link SliderPanel}); else (another number: typed, pasted, opened) the default
+ * of the number now in the text, with its step. `remembered` is updated.
  */
-export function sliderRanges(constants: readonly DefineConstant[], remembered: Map<string, SliderRange>): SliderRange[] {
+export function sliderRanges(constants: readonly DefineConstant[], remembered: Map<string, RememberedRange>): SliderRange[] {
   return constants.map((c) => {
     const fresh = { min: c.min, max: c.max, step: c.step };
-    if (c.ranged) {
-      remembered.set(c.name, fresh);
-      return fresh;
-    }
     const old = remembered.get(c.name);
-    if (old && c.value >= old.min && c.value <= old.max) return old;
-    remembered.set(c.name, fresh);
+    if (!c.ranged && old && old.text === c.text && c.value >= old.range.min && c.value <= old.range.max) return old.range;
+    remembered.set(c.name, { range: fresh, text: c.text });
     return fresh;
   });
 }
@@ -39,7 +45,7 @@ export interface SliderEditor {
 export class SliderPanel {
   private constants: DefineConstant[] = [];
   private ranges: SliderRange[] = [];
-  private readonly remembered = new Map<string, SliderRange>();
+  private readonly remembered = new Map<string, RememberedRange>();
   private rows: { row: HTMLElement; input: HTMLInputElement; output: HTMLOutputElement }[] = [];
   private layout = '';
   /** The slider being dragged and its number as written when the drag began. */
@@ -57,12 +63,12 @@ export class SliderPanel {
     private readonly editor: SliderEditor,
   ) {}
 
-  /** Forgets the remembered ranges (another grammar was opened). */
   /** The value of every slider, by its constant's name (what a share link records). */
   values(): Record<string, number> {
     return Object.fromEntries(this.constants.map((c) => [c.name, c.value]));
   }
 
+  /** Forgets the remembered ranges (another grammar was opened). */
   reset(): void {
     this.remembered.clear();
   }
@@ -127,6 +133,7 @@ export class SliderPanel {
     const text = formatNumber(value, this.ranges[index].step);
     if (text === constant.text) return;
     if (this.drag?.index !== index) this.drag = { index, text: constant.text };
+    this.keepRange(index, text);
     this.editor.replaceRange(constant.from, constant.to, text, { history: false });
   }
 
@@ -137,8 +144,17 @@ export class SliderPanel {
     const constant = this.constants[index];
     if (!drag || drag.index !== index || !constant || drag.text === constant.text) return;
     const final = constant.text;
+    this.keepRange(index, drag.text);
     this.editor.replaceRange(constant.from, constant.to, drag.text, { history: false });
     const restored = this.constants[index];
+    this.keepRange(index, final);
     this.editor.replaceRange(restored.from, restored.to, final);
+  }
+
+  /** The slider is writing `text` for constant `index`: its range stays when the text comes back. */
+  private keepRange(index: number, text: string): void {
+    const constant = this.constants[index];
+    const remembered = constant && this.remembered.get(constant.name);
+    if (remembered) remembered.text = text;
   }
 }

@@ -3,7 +3,7 @@
 // first when the editor's text was changed). Keyboard: Tab or the arrow keys move between examples
 // (← → in reading order, ↑ ↓ to the nearest card of the row above or below, across groups), Enter
 // opens, Escape closes. Loaded when first opened (issue 22: the first plant needs none of it).
-import { fetchManifest } from './gallery';
+import { fetchManifest } from './manifest-fetch';
 import type { GalleryEntry } from './gallery-manifest';
 import type { GalleryThumbnails } from './thumbnails';
 import './gallery-dialog.css';
@@ -34,9 +34,20 @@ export class GalleryDialog {
     return this.entries;
   }
 
-  /** Opens the dialog (and starts drawing the thumbnails not drawn yet). */
+  /**
+   * Opens the dialog (and starts drawing the thumbnails not drawn yet). A manifest that could not
+   * be fetched or read (the network off, a damaged offline copy: issue 50, finding 10) is said in
+   * the dialog, and fetched again at the next opening.
+   */
   async open(): Promise<void> {
-    const entries = await this.manifest();
+    let entries: GalleryEntry[];
+    try {
+      entries = await this.manifest();
+    } catch (error) {
+      this.unreadable(error);
+      return;
+    }
+    if (this.list.querySelector('.gallery-unreadable')) this.list.replaceChildren();
     if (this.list.childElementCount === 0) this.render(entries);
     if (!this.dialog.open) this.dialog.showModal();
     const current = this.current();
@@ -44,6 +55,18 @@ export class GalleryDialog {
     card?.focus();
     card?.scrollIntoView({ block: 'nearest' });
     this.thumbnails.request(entries.map((e) => e.file));
+  }
+
+  /** Says in the open dialog that the list of examples could not be read, and why. */
+  private unreadable(error: unknown): void {
+    const item = document.createElement('li');
+    item.className = 'gallery-unreadable';
+    item.setAttribute('role', 'alert');
+    item.textContent =
+      `The list of examples could not be read (${error instanceof Error ? error.message : String(error)}). ` +
+      (navigator.onLine ? 'Close the gallery and open it again to try once more.' : 'Connect to the network, then open the gallery again.');
+    this.list.replaceChildren(item);
+    if (!this.dialog.open) this.dialog.showModal();
   }
 
   private cards(): HTMLButtonElement[] {

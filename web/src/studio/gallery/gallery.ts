@@ -1,9 +1,6 @@
-// The example gallery's files: the texts of public/examples and their manifest, fetched once per
-// visit. The dialog that shows them is ./gallery-dialog.ts, loaded when it is first opened.
-import { isGalleryManifest, type GalleryEntry } from './gallery-manifest';
-
-/** The manifest, relative to the page (built by scripts/gallery-plugin.ts). */
-const MANIFEST_URL = 'examples/index.json';
+// The example gallery's files: the texts of public/examples, fetched once per visit (their
+// manifest: ./manifest-fetch.ts, with the dialog that shows them, ./gallery-dialog.ts, loaded
+// when it is first opened).
 
 const texts = new Map<string, Promise<string>>();
 
@@ -19,13 +16,4 @@ export function fetchExample(file: string): Promise<string> {
     texts.set(file, text);
   }
   return text;
-}
-
-/** The gallery's manifest. */
-export async function fetchManifest(): Promise<GalleryEntry[]> {
-  const response = await fetch(MANIFEST_URL);
-  if (!response.ok) throw new Error(`${MANIFEST_URL}: HTTP ${response.status}`);
-  const manifest: unknown = await response.json();
-  if (!isGalleryManifest(manifest)) throw new Error(`${MANIFEST_URL} is not a gallery manifest`);
-  return manifest;
 }

@@ -2,7 +2,8 @@
 // the grammar on screen, an example, a pasted text), the scale, the progress with Stop, the
 // downloads and Close. Made in code (the page's HTML carries only the Variants button).
 import type { StageScale } from '../../view/stages-layout';
-import { fetchExample, fetchManifest } from '../gallery/gallery';
+import { fetchExample } from '../gallery/gallery';
+import { fetchManifest } from '../gallery/manifest-fetch';
 import { el } from '../page/make-element';
 import { MAX_CAPTION } from '../../share/variants-state';
 
