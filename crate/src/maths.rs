@@ -28,6 +28,20 @@
 #[cfg(not(target_arch = "wasm32"))]
 use libm as imp;
 
+/// `x` limited to `lo` … `hi`, as `f64::clamp` for `lo ≤ hi` (NaN stays NaN), but with no
+/// assertion on the bounds: `f64::clamp` panics when they cross or one is NaN, and its message
+/// formats them, which brings Rust's float formatting into the first plant's core (issue 22).
+#[inline]
+pub fn clamp(x: f64, lo: f64, hi: f64) -> f64 {
+    if x < lo {
+        lo
+    } else if x > hi {
+        hi
+    } else {
+        x
+    }
+}
+
 /// Under wasm32 the `f64` methods are already musl's libm (compiler-builtins), named as `libm` names them.
 #[cfg(target_arch = "wasm32")]
 #[allow(clippy::disallowed_methods)]

@@ -112,6 +112,46 @@ fn parse_f64_is_str_parse() {
     }
 }
 
+#[cfg_attr(target_arch = "wasm32", wasm_bindgen_test)]
+#[cfg_attr(not(target_arch = "wasm32"), test)]
+/// `number::Decimal` writes a number as Rust's `{}` does (under wasm32 from JavaScript's
+/// `toString` digits, without Rust's float formatting in the core).
+fn decimal_is_rust_s_display() {
+    let samples = [
+        0.1,
+        1e21,
+        -1.5e300,
+        1.5e-7,
+        -2.5e-8,
+        5e-324,
+        f64::MAX,
+        f64::MIN_POSITIVE,
+        1e-6,
+        123.456,
+        1e20,
+        -7.0,
+        0.0,
+        -0.0,
+        f64::NAN,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        1.0 / 3.0,
+        2.0 / 3.0 * 1e-10,
+        22.5,
+        137.5077640500378,
+        std::f64::consts::PI,
+        1.2345678901234567e25,
+        9007199254740993.0,
+    ];
+    for v in samples {
+        assert_eq!(
+            format!("{}", meristem::number::Decimal(v)),
+            format!("{v}"),
+            "{v:?}"
+        );
+    }
+}
+
 #[cfg(not(target_arch = "wasm32"))]
 mod native {
     use super::*;

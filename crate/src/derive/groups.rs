@@ -223,8 +223,9 @@ impl<R: rand::Rng> Rewriter<'_, R> {
             "E0405",
             span,
             format!(
-                "@Repeat count {count} is above the step limit {max}; use a smaller count or \
-                 raise '#max_steps N'"
+                "@Repeat count {} is above the step limit {max}; use a smaller count or raise \
+                 '#max_steps N'",
+                crate::number::Decimal(count)
             ),
         ))
     }

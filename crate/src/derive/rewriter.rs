@@ -505,7 +505,10 @@ fn negative_weight(span: Span, w: f64) -> Diagnostic {
     Diagnostic::error(
         "E0513",
         span,
-        format!("a weight cannot be negative (it is {w} here)"),
+        format!(
+            "a weight cannot be negative (it is {} here)",
+            crate::number::Decimal(w)
+        ),
     )
 }
 

@@ -110,7 +110,7 @@ fn monotone_diagonals(p: &[DVec2]) -> Vec<(u32, u32)> {
         let (a, b) = (p[e], p[next(e)]);
         let (upper, lower) = if above(a, b) { (a, b) } else { (b, a) };
         if upper.y == lower.y {
-            return v.x.clamp(upper.x, lower.x);
+            return crate::maths::clamp(v.x, upper.x, lower.x);
         }
         if v.y >= upper.y {
             return upper.x;

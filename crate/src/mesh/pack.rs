@@ -155,7 +155,7 @@ mod tests {
             let want = if v.is_nan() {
                 0.0
             } else {
-                js_round(f64::from(v).clamp(lo, 1.0) * scale)
+                js_round(crate::maths::clamp(f64::from(v), lo, 1.0) * scale)
             };
             assert_eq!(p.into(), want, "{what} {v}");
         }

@@ -86,7 +86,7 @@ impl Curve {
         let target = if x.is_nan() {
             first
         } else {
-            x.clamp(first.min(last), first.max(last))
+            crate::maths::clamp(x, first.min(last), first.max(last))
         };
         let (mut low, mut high) = (0.0, 1.0);
         let mut at = self.point(0.5);

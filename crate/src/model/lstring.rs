@@ -128,7 +128,7 @@ impl LString {
                 if k > 0 {
                     out.push(',');
                 }
-                let _ = write!(out, "{p}");
+                let _ = write!(out, "{}", crate::number::Decimal(*p));
             }
             out.push(')');
         }

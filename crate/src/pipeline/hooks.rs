@@ -171,9 +171,9 @@ impl StageTimings {
             if !v.is_finite() {
                 "null".to_string()
             } else if v.fract() == 0.0 {
-                format!("{v}.0")
+                format!("{}.0", crate::number::Decimal(v))
             } else {
-                format!("{v}")
+                crate::number::Decimal(v).to_string()
             }
         };
         format!(

@@ -116,9 +116,11 @@ impl TurtleState {
             return;
         }
         let between = maths::angle_between(self.heading, target);
-        let angle = degrees
-            .to_radians()
-            .clamp(between - std::f64::consts::PI, between);
+        let angle = maths::clamp(
+            degrees.to_radians(),
+            between - std::f64::consts::PI,
+            between,
+        );
         let rotation = maths::rotation(axis / s, angle);
         self.set_frame(rotation * self.heading, rotation * self.left);
     }

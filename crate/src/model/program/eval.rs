@@ -119,7 +119,10 @@ impl Program {
         let value = stack[0];
         if !value.is_finite() {
             return Err(EvalError {
-                message: format!("the expression gives {value}, not a finite number"),
+                message: format!(
+                    "the expression gives {}, not a finite number",
+                    crate::number::Decimal(value)
+                ),
                 span: self.span.clone(),
             });
         }

@@ -2,13 +2,25 @@
 //! `normal`, …) drawing from the evaluation's generator.
 
 use crate::maths;
+use crate::number::Decimal;
 use crate::vocabulary::Function;
 use rand::RngExt;
 use rand_distr::{Binomial, Distribution, Exp, Normal, Poisson, StandardNormal};
+use std::fmt::Write;
 
 /// `x` limited to 0 … 1: the growth functions' normalised age (NaN stays NaN, an error later).
 fn unit(x: f64) -> f64 {
     x.clamp(0.0, 1.0)
+}
+
+/// `name(a, b, …)` with the numbers as Rust writes them ([`Decimal`]), for the messages.
+fn called(name: &str, args: &[f64]) -> String {
+    let mut text = format!("{name}(");
+    for (k, v) in args.iter().enumerate() {
+        let _ = write!(text, "{}{}", if k > 0 { ", " } else { "" }, Decimal(*v));
+    }
+    text.push(')');
+    text
 }
 
 /// The value of `f` at the arguments `a`, or why the arguments are invalid.
@@ -52,8 +64,8 @@ pub(super) fn call<R: rand::Rng + ?Sized>(
         Function::Uniform => {
             if a[0] > a[1] {
                 return Err(format!(
-                    "uniform({}, {}): the lower bound is above the upper",
-                    a[0], a[1]
+                    "{}: the lower bound is above the upper",
+                    called("uniform", &a[..2])
                 ));
             }
             a[0] + (a[1] - a[0]) * rng.random::<f64>()
@@ -62,8 +74,8 @@ pub(super) fn call<R: rand::Rng + ?Sized>(
             let (lo, hi) = (a[0].ceil(), a[1].floor());
             if lo > hi {
                 return Err(format!(
-                    "uniform_int({}, {}): no whole number in the range",
-                    a[0], a[1]
+                    "{}: no whole number in the range",
+                    called("uniform_int", &a[..2])
                 ));
             }
             (lo + (rng.random::<f64>() * (hi - lo + 1.0)).floor()).min(hi)
@@ -73,10 +85,10 @@ pub(super) fn call<R: rand::Rng + ?Sized>(
         Function::Normal => Normal::new(a[0], a[1])
             .ok()
             .filter(|_| a[1] >= 0.0)
-            .ok_or_else(|| format!("normal({}, {}): the deviation must be ≥ 0", a[0], a[1]))?
+            .ok_or_else(|| format!("{}: the deviation must be ≥ 0", called("normal", &a[..2])))?
             .sample(rng),
         Function::Exponential => Exp::new(a[0])
-            .map_err(|_| format!("exponential({}): the rate must be ≥ 0", a[0]))?
+            .map_err(|_| format!("{}: the rate must be ≥ 0", called("exponential", &a[..1])))?
             .sample(rng),
         Function::Binomial => binomial(a[0], a[1], rng)?,
         Function::Poisson => poisson(a[0], rng)?,
@@ -88,11 +100,12 @@ pub(super) fn call<R: rand::Rng + ?Sized>(
 fn binomial<R: rand::Rng + ?Sized>(n: f64, p: f64, rng: &mut R) -> Result<f64, String> {
     if !(0.0..=1e12).contains(&n) {
         return Err(format!(
-            "binomial({n}, {p}): n must be a count from 0 to 10^12"
+            "{}: n must be a count from 0 to 10^12",
+            called("binomial", &[n, p])
         ));
     }
     Ok(Binomial::new(n as u64, p)
-        .map_err(|_| format!("binomial({n}, {p}): p must be in 0..1"))?
+        .map_err(|_| format!("{}: p must be in 0..1", called("binomial", &[n, p])))?
         .sample(rng) as f64)
 }
 
@@ -109,7 +122,10 @@ fn poisson<R: rand::Rng + ?Sized>(mean: f64, rng: &mut R) -> Result<f64, String>
     }
     Ok(Poisson::new(mean)
         .map_err(|_| {
-            format!("poisson({mean}): the mean must be from 0 to {MAX_POISSON_MEAN_TEXT}")
+            format!(
+                "{}: the mean must be from 0 to {MAX_POISSON_MEAN_TEXT}",
+                called("poisson", &[mean])
+            )
         })?
         .sample(rng))
 }
@@ -117,7 +133,10 @@ fn poisson<R: rand::Rng + ?Sized>(mean: f64, rng: &mut R) -> Result<f64, String>
 /// `betavariate(a, b)`: X / (X + Y) of two gamma draws of shapes `a` and `b`.
 fn beta<R: rand::Rng + ?Sized>(a: f64, b: f64, rng: &mut R) -> Result<f64, String> {
     if !(a > 0.0 && b > 0.0 && a.is_finite() && b.is_finite()) {
-        return Err(format!("betavariate({a}, {b}): the shapes must be > 0"));
+        return Err(format!(
+            "{}: the shapes must be > 0",
+            called("betavariate", &[a, b])
+        ));
     }
     let (x, y) = (gamma(a, rng), gamma(b, rng));
     Ok(if x + y > 0.0 {
@@ -160,8 +179,8 @@ fn growth(f: Function, a: &[f64]) -> Result<f64, String> {
         Function::ExponentialGrowth => {
             if !(a[1] > 0.0 && a[2] > 0.0) {
                 return Err(format!(
-                    "exponential_growth({}, {}, {}): a and b must be above 0",
-                    a[0], a[1], a[2]
+                    "{}: a and b must be above 0",
+                    called("exponential_growth", &a[..3])
                 ));
             }
             a[1] * maths::powf(a[2] / a[1], unit(a[0]))
@@ -169,8 +188,8 @@ fn growth(f: Function, a: &[f64]) -> Result<f64, String> {
         Function::Logistic => {
             if a[3].is_nan() || a[3] <= 0.0 {
                 return Err(format!(
-                    "logistic({}, {}, {}, {}): the steepness k must be above 0",
-                    a[0], a[1], a[2], a[3]
+                    "{}: the steepness k must be above 0",
+                    called("logistic", &a[..4])
                 ));
             }
             let curve = |x: f64| 1.0 / (1.0 + maths::exp(-a[3] * (x - 0.5)));

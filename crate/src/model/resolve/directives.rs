@@ -9,6 +9,7 @@ use crate::model::{
     Bend, Env, GrowthAttributes, Lifetime, ModuleId, Program, Settings, Shape, ShapeWidth, Speed,
     Sun,
 };
+use crate::number::Decimal;
 use crate::syntax::{Directive, SourceFile};
 use crate::vocabulary::{DirectiveInfo, DirectiveKind, ParamKind, Season};
 use glam::DVec3;
@@ -563,8 +564,9 @@ impl Resolver {
             return Some(value);
         }
         let message = format!(
-            "{} must be above 0 and at most 1e30 (model units per width unit), found {value}",
-            d.written
+            "{} must be above 0 and at most 1e30 (model units per width unit), found {}",
+            d.written,
+            Decimal(value)
         );
         self.directive_error("E0215", d, message);
         None
@@ -585,9 +587,9 @@ impl Resolver {
             match self.constant(d) {
                 // Below 2^64, `as` is exact for a whole number.
                 Ok(v) if v >= 0.0 && v.fract() == 0.0 && v < TWO_TO_64 => {
-                    (Some(v as u64), format!("{v}"))
+                    (Some(v as u64), Decimal(v).to_string())
                 }
-                Ok(v) => (None, format!("{v}")),
+                Ok(v) => (None, Decimal(v).to_string()),
                 Err(why) => (None, why),
             }
         };

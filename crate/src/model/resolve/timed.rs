@@ -6,6 +6,7 @@ use super::directives::{words, DirectiveValues};
 use super::Resolver;
 use crate::diagnostics::Diagnostic;
 use crate::model::{ModuleId, RuleSet, Settings, SuccessorModule};
+use crate::number::Decimal;
 use crate::syntax::{Directive, SourceFile, Span};
 use crate::vocabulary::DirectiveKind;
 
@@ -43,8 +44,10 @@ impl Resolver {
             };
             if value <= 0.0 {
                 let message = format!(
-                    "{} {}: a terminal age must be above 0, found {value}",
-                    d.written, name.args
+                    "{} {}: a terminal age must be above 0, found {}",
+                    d.written,
+                    name.args,
+                    Decimal(value)
                 );
                 self.directive_error("E0211", age, message);
                 continue;
@@ -68,7 +71,11 @@ impl Resolver {
             s.dt = value;
             s.dt_given = true;
         } else {
-            let message = format!("{} must be above 0, found {value}", d.written);
+            let message = format!(
+                "{} must be above 0, found {}",
+                d.written,
+                crate::number::Decimal(value)
+            );
             self.directive_error("E0211", d, message);
         }
     }
@@ -139,8 +146,10 @@ impl Resolver {
                     "E0213",
                     m.span.clone(),
                     format!(
-                        "'{name}' starts at age {alpha}: an initial age must be from 0 to below \
-                         its terminal age {beta}"
+                        "'{name}' starts at age {}: an initial age must be from 0 to below its \
+                         terminal age {}",
+                        Decimal(alpha),
+                        Decimal(beta)
                     ),
                 ));
             }
