@@ -83,7 +83,7 @@ describe('attributes the core cannot use (9c)', () => {
     const { page, problems } = await coursePage('iterations.html', `<meristem-plant id="a" iterations="4294967296" style="width: 320px; height: 240px">${SMALL}</meristem-plant>`);
     const a = page.locator('#a');
     await expect.poll(() => a.locator('.mp').getAttribute('data-state'), { timeout: 30_000 }).toBe('ok');
-    expect(await a.locator('.mp-note').textContent()).toBe('iterations="4294967296" is not a whole number from 0 to 4294967295: the grammar’s own #iterations is used.');
+    expect(await a.locator('.mp-note').textContent()).toBe('iterations="4294967296" is not a whole number from 0 to 4294967295: the grammar’s own value is used.');
     expect(await a.locator('.mp').getAttribute('data-iterations')).toBe('4');
     expect(await a.locator('.mp-message').textContent()).not.toContain('bug');
     expect(await drawnShare(page, '#a', 'embed-bad-iterations.png')).toBeGreaterThan(0.01);

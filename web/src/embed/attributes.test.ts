@@ -11,10 +11,10 @@ describe('<meristem-plant> iterations and seed attributes (issue 50, finding 9c)
 
   it('says what is wrong with any other value, rather than handing the core what it refuses', () => {
     expect(wholeAttribute('iterations', '4294967296')).toEqual({
-      problem: 'iterations="4294967296" is not a whole number from 0 to 4294967295: the grammar’s own #iterations is used.',
+      problem: 'iterations="4294967296" is not a whole number from 0 to 4294967295: the grammar’s own value is used.',
     });
     for (const bad of ['-1', '2.5', 'five', '', '1e400']) expect(wholeAttribute('iterations', bad).problem).toContain(`iterations="${bad}"`);
-    expect(wholeAttribute('seed', '9007199254740992').problem).toContain('the grammar’s own #seed');
+    expect(wholeAttribute('seed', '9007199254740992').problem).toContain('seed="9007199254740992" is not a whole number');
     expect(wholeAttribute('seed', 'x'.repeat(1000)).problem!.length).toBeLessThan(200);
   });
 });

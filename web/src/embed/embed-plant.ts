@@ -78,8 +78,7 @@ export function wholeAttribute(name: keyof typeof ATTRIBUTE_MAX, value: string |
   const n = value.trim() === '' ? NaN : Number(value);
   if (Number.isInteger(n) && n >= 0 && n <= ATTRIBUTE_MAX[name]) return { value: n };
   const shown = value.length > 40 ? `${value.slice(0, 40)}…` : value;
-  const own = name === 'iterations' ? '#iterations' : '#seed';
-  return { problem: `${name}="${shown}" is not a whole number from 0 to ${ATTRIBUTE_MAX[name]}: the grammar’s own ${own} is used.` };
+  return { problem: `${name}="${shown}" is not a whole number from 0 to ${ATTRIBUTE_MAX[name]}: the grammar’s own value is used.` };
 }
 
 function element<K extends keyof HTMLElementTagNameMap>(tag: K, className: string, text?: string): HTMLElementTagNameMap[K] {
