@@ -6,6 +6,10 @@ use super::super::{arrow, top_level, Flavour, Importer, Line};
 use super::cpfg_symbol;
 use crate::syntax::PARENTHESES;
 
+/// Most modules of a cpfg predecessor translated as contexts (each module becomes a production
+/// with the others as its context, so k modules give k productions of k modules each).
+const MAX_PREDECESSOR_MODULES: usize = 64;
+
 impl Importer {
     /// cpfg's predecessors made of several modules that are letters without parameters
     /// (`AXIOM : c --> …`, five modules A X I O M): Meristem's predecessor is one module, so the
@@ -92,6 +96,21 @@ impl Importer {
             || ["ran(", "nran("].iter().any(|r| left.contains(r))
         {
             return None;
+        }
+        if modules.len() > MAX_PREDECESSOR_MODULES {
+            // Each module would become a production with all the others as its context: k
+            // productions of k modules each (issue 50, 4: a macro bomb's 6,000-module
+            // predecessor made 36 MB of text).
+            self.note(
+                n,
+                format!(
+                    "cpfg's predecessor here is {} modules, more than the {MAX_PREDECESSOR_MODULES} \
+                     Meristem translates (each becomes a production with all the others as its \
+                     context); the production is left out",
+                    modules.len()
+                ),
+            );
+            return Some(Vec::new());
         }
         let before = if before == "*" { "" } else { before };
         let after = if after == "*" { "" } else { after };
