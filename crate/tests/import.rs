@@ -870,4 +870,13 @@ fn a_cpfg_macro_bomb_imports_small_and_says_what_it_left_out() {
         "{:?}",
         imported.notes
     );
+    // (b) a macro expanding to ten copies of itself: cpp expands a macro once inside itself.
+    let text = "#define A A A A A A A A A A A\nLsystem: 1\nderivation length: 3\nAxiom: A\n\
+                A --> F[+A]A\nendlsystem\n";
+    let imported = import::import(text, Dialect::Cpfg);
+    assert!(
+        imported.text.len() < 40_000,
+        "{} bytes",
+        imported.text.len()
+    );
 }
