@@ -880,3 +880,31 @@ fn a_cpfg_macro_bomb_imports_small_and_says_what_it_left_out() {
         imported.text.len()
     );
 }
+
+#[test]
+fn an_l_py_function_nested_in_itself_is_not_inlined_without_end() {
+    // Issue 50, finding 5: `f(x) = x+x` nested 28 deep doubles with each call (2^28 copies of
+    // `s`): the importer asked for 4 GB. Now the inlining stops past 20,000 characters with a note.
+    let mut call = "s".to_string();
+    for _ in 0..28 {
+        call = format!("f({call})");
+    }
+    let text = format!(
+        "def f(x):\n    return x+x\n\nAxiom: A(1)\nderivation length: 2\nproduction:\n\
+         A(s) --> F({call})A(s)\nendlsystem\n"
+    );
+    let imported = import::import(&text, Dialect::Lpy);
+    assert!(
+        imported.text.len() < 20_000,
+        "{} bytes",
+        imported.text.len()
+    );
+    assert!(
+        imported
+            .notes
+            .iter()
+            .any(|n| n.message.contains("grows longer than 20000 characters")),
+        "{:?}",
+        imported.notes
+    );
+}

@@ -1,6 +1,7 @@
 //! Expressions (cpfg's C, L-Py's Python) in Meristem's terms: numbers, names bound by statement
 //! blocks, calls (each dialect's functions, L-Py's trigonometry in radians), operators.
 
+use super::cpfg::blocks::MAX_VALUE;
 use super::cpfg::cpp;
 use super::{split_top, Env, Flavour, Importer};
 use crate::syntax::PARENTHESES;
@@ -225,7 +226,15 @@ impl Importer {
                 ));
             }
             let args: Vec<String> = args.iter().map(|a| format!("({a})")).collect();
-            return Ok(format!("({})", cpp::substitute(body, params, &args)));
+            let inlined = cpp::substitute(body, params, &args);
+            // A function that uses its argument twice doubles with each call nested in the
+            // next (issue 50, 5: `f(x) = x+x` nested 28 deep asked for 4 GB).
+            if inlined.len() > MAX_VALUE {
+                return Err(format!(
+                    "{name}(…) inlined here grows longer than {MAX_VALUE} characters"
+                ));
+            }
+            return Ok(format!("({inlined})"));
         }
         let a = |k: usize| args.get(k).cloned().unwrap_or_default();
         let all = args.join(",");
