@@ -112,8 +112,6 @@ fn parse_f64_is_str_parse() {
     }
 }
 
-#[cfg_attr(target_arch = "wasm32", wasm_bindgen_test)]
-#[cfg_attr(not(target_arch = "wasm32"), test)]
 /// `number::Decimal` writes a number as Rust's `{}` does (under wasm32 from JavaScript's
 /// `toString` digits, without Rust's float formatting in the core).
 fn decimal_is_rust_s_display() {
@@ -186,6 +184,11 @@ mod native {
     }
 
     #[test]
+    fn numbers_are_written_as_rust_writes_them() {
+        decimal_is_rust_s_display();
+    }
+
+    #[test]
     fn the_maths_give_the_same_bits_as_in_webassembly() {
         let fingerprint = maths_fingerprint();
         assert_eq!(fingerprint, MATHS_FINGERPRINT, "{fingerprint:#x}");
@@ -226,6 +229,11 @@ mod wasm {
     #[wasm_bindgen_test]
     fn numbers_are_read_as_str_parse_reads_them() {
         parse_f64_is_str_parse();
+    }
+
+    #[wasm_bindgen_test]
+    fn numbers_are_written_as_rust_writes_them() {
+        decimal_is_rust_s_display();
     }
 
     #[wasm_bindgen_test]
