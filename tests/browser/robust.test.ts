@@ -178,8 +178,12 @@ describe('with localStorage full, opening a link never loses the text', () => {
   });
 });
 
-/** Derives for minutes: 200,000 steps over a string that grows by one module a step. */
-const SLOW = '// slow\n#max_steps 1000000\n#iterations 200000\naxiom: A\nA -> AB';
+/**
+ * Derives for minutes: 200,000 steps over a string that grows by one module a step (2·10^10
+ * modules written: the module limit is raised so that the work budget, 20 times it, does not
+ * end it first).
+ */
+const SLOW = '// slow\n#max_modules 1000000000\n#max_steps 1000000\n#iterations 200000\naxiom: A\nA -> AB';
 const status = (page: Page) => page.getByTestId('status');
 
 /** Waits until the status says the build is at some derivation step; returns the step. */
