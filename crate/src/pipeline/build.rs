@@ -269,6 +269,7 @@ fn interpret_and_mesh(
             model,
             turtle_string,
             &derivation.id_counts,
+            size.segments,
         )),
         adjustments => {
             let mut skeleton =

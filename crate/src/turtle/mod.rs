@@ -62,20 +62,25 @@ pub fn interpret_sized(
 /// Runs the turtle over `string` drawing only its segments, as lines ([`Sketch`]): line `i` is
 /// segment `i` of [`interpret`]'s skeleton.
 pub fn sketch(model: &Model, string: &LString) -> Sketch {
-    sketch_counted(model, string, &[])
+    let segments = drawing_size(model, string, &[]).segments;
+    sketch_counted(model, string, &[], segments)
 }
 
 /// [`sketch`], with how many times each module id occurs in `string` (indexed by id, as
 /// [`crate::derive::Derivation::id_counts`]; empty: not known), which spares the turtle a pass
-/// over the string to size its lines.
-pub fn sketch_counted(model: &Model, string: &LString, id_counts: &[u64]) -> Sketch {
+/// over the string to size its lines, and the segments [`drawing_size`] counted (room for every
+/// line at once when the interpreter draws them: a doubling array would hold half as much again
+/// while it grows).
+pub fn sketch_counted(
+    model: &Model,
+    string: &LString,
+    id_counts: &[u64],
+    segments: usize,
+) -> Sketch {
     let others = empty_skeleton(&model.settings, false);
     if let Some(sketch) = sketch::plain_sketch(model, string, id_counts, others.clone()) {
         return sketch;
     }
-    // Room for every segment at once: a doubling array would hold half as much again while it
-    // grows (a sketch of millions of segments is what the drawing's budget lets through).
-    let segments = budget::drawing_size(model, string, id_counts).segments;
     Interpreter::new(model, string, None, None, Sketch::new(others, segments)).run(string)
 }
 
