@@ -27,7 +27,7 @@ impl Resolver {
                 continue;
             };
             let taken = self.defines.contains_key(name)
-                || self.random_names.iter().any(|n| n == name)
+                || self.random_names.contains_key(name)
                 || self.curves.contains_key(name)
                 || value_named(name).is_some_and(|v| !v.definable)
                 || function_named(name).is_some();
@@ -66,7 +66,8 @@ impl Resolver {
                     format!("more than {MAX_NAMES} #random variables"),
                 ));
             } else {
-                self.random_names.push(name.clone());
+                let index = self.random_names.len() as u16;
+                self.random_names.insert(name.clone(), index);
                 randoms.push(d);
             }
         }

@@ -117,8 +117,8 @@ struct Resolver {
     define_order: Vec<String>,
     /// The value of each `#define` whose expression is a constant, computed once.
     define_values: HashMap<String, f64>,
-    /// `#random` names, in order (a variable's index is its position).
-    random_names: Vec<String>,
+    /// `#random` names and each variable's index (the order the directives give them).
+    random_names: HashMap<String, u16>,
     /// `#curve` and `#table` functions by name.
     curves: HashMap<String, Arc<Curve>>,
     /// `#dt`, read before anything is compiled (expressions fold `dt` to it).
@@ -141,7 +141,7 @@ impl Resolver {
             defines: HashMap::new(),
             define_order: Vec::new(),
             define_values: HashMap::new(),
-            random_names: Vec::new(),
+            random_names: HashMap::new(),
             curves: HashMap::new(),
             dt: crate::model::settings::directive_default(crate::vocabulary::DirectiveKind::Dt, 0),
         }

@@ -47,7 +47,8 @@ struct ScopeView<'a> {
     slots: &'a Slots,
     defines: &'a HashMap<String, ExprSyntax>,
     define_values: &'a HashMap<String, f64>,
-    random_names: &'a [String],
+    /// `#random` names and their indices; none in a directive's constant expression.
+    random_names: Option<&'a HashMap<String, u16>>,
     curves: &'a HashMap<String, Arc<Curve>>,
     dt: f64,
 }
@@ -63,10 +64,7 @@ impl Scope for ScopeView<'_> {
         self.define_values.get(name).copied()
     }
     fn random_var(&self, name: &str) -> Option<u16> {
-        self.random_names
-            .iter()
-            .position(|n| n == name)
-            .map(|i| i as u16)
+        self.random_names?.get(name).copied()
     }
     fn curve(&self, name: &str) -> Option<Arc<Curve>> {
         self.curves.get(name).cloned()
@@ -83,7 +81,7 @@ impl Resolver {
             slots,
             defines: &self.defines,
             define_values: &self.define_values,
-            random_names: &self.random_names,
+            random_names: Some(&self.random_names),
             curves: &self.curves,
             dt: self.dt,
         };
@@ -103,7 +101,7 @@ impl Resolver {
             slots: &Slots::default(),
             defines: &self.defines,
             define_values: &self.define_values,
-            random_names: &[],
+            random_names: None,
             curves: &self.curves,
             dt: self.dt,
         };
