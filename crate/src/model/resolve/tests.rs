@@ -86,3 +86,18 @@ fn a_wrong_number_of_arguments_names_the_forms() {
     );
     assert!(message.ends_with("found 1 values"), "{message}");
 }
+
+#[test]
+fn a_directive_set_three_times_names_the_line_just_before_each_repeat() {
+    let text = "#angle 10\n#angle 20\n#angle 30\naxiom: F";
+    let (file, _) = crate::syntax::parse(text);
+    let (_, diagnostics) = super::resolve(&file);
+    let messages: Vec<&str> = diagnostics.iter().map(|d| d.message.as_str()).collect();
+    assert_eq!(
+        messages,
+        [
+            "#angle is set twice; this one replaces the value on line 1",
+            "#angle is set twice; this one replaces the value on line 2",
+        ]
+    );
+}
