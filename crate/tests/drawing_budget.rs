@@ -4,7 +4,9 @@
 //! at 24 steps asked for a 2 GB array ("capacity overflow" in WebAssembly, a lost core).
 
 use meristem::export::Format;
-use meristem::pipeline::{build, export, BuildOptions, ExportError, ExportOptions, Hooks};
+use meristem::pipeline::{
+    build, export, BuildOptions, ExportError, ExportOptions, Hooks, MAX_READING_BYTES,
+};
 use meristem::turtle::{MAX_SKELETON_BYTES, MAX_SKETCH_BYTES};
 
 const DOUBLING: &str = "#max_modules 40000000\naxiom: F\nF -> FF\n";
@@ -92,4 +94,55 @@ fn four_million_segments_still_have_their_skeleton() {
     assert!(b.diagnostics.iter().all(|d| d.code != "E0414"));
     assert!(!b.plant.is_lines_only());
     assert_eq!(b.plant.skeleton.segments.len(), 1 << 22);
+}
+
+/// A plant the environment reads between steps: `?E` and a program, `F -> FF`.
+const READ_DOUBLING: &str = "#environment obstacle sphere center 0 0 100 radius 1\n\
+                             #max_modules 40000000\naxiom: ?E(0) F\nF -> FF\n";
+
+#[test]
+fn the_environment_does_not_draw_a_plant_of_four_million_segments_between_steps() {
+    // After step 22 the plant has 2^22 segments: its skeleton alone would take 513 MB.
+    // Before, the environment drew it whatever its size (640 MB at 5 million segments).
+    let b = build(READ_DOUBLING, &options(22));
+    let error = b
+        .diagnostics
+        .iter()
+        .find(|d| d.code == "E0416")
+        .unwrap_or_else(|| panic!("E0416 expected: {:?}", b.diagnostics));
+    assert!(error.message.contains("after step 22"), "{}", error.message);
+    assert!(
+        error.message.contains("4194304 segments"),
+        "{}",
+        error.message
+    );
+    assert!(
+        error.message.contains("budget of 512 MB"),
+        "{}",
+        error.message
+    );
+    assert_eq!(MAX_READING_BYTES, 512 << 20);
+    // The step before is read, and answered.
+    assert!(build(READ_DOUBLING, &options(21)).ok());
+}
+
+#[test]
+fn the_environment_counts_the_parts_of_the_plants_it_has_read() {
+    // Two plants of 2^21 segments: each skeleton fits (about 270 MB), but the first one's parts
+    // (150 MB) and the second one's skeleton and parts do not.
+    let stand = format!("#plant 0 0 0\n#plant 5 0 0\n{READ_DOUBLING}");
+    let b = build(&stand, &options(21));
+    let error = b
+        .diagnostics
+        .iter()
+        .find(|d| d.code == "E0416")
+        .unwrap_or_else(|| panic!("E0416 expected: {:?}", b.diagnostics));
+    assert!(error.message.contains("after step 21"), "{}", error.message);
+    assert!(
+        error
+            .message
+            .contains("2097152 segments beside the 2097152 parts"),
+        "{}",
+        error.message
+    );
 }

@@ -8,7 +8,7 @@ use crate::model::Model;
 use crate::turtle::{self, DrawingSize};
 
 /// Where a drawing's size is blamed: `#iterations`, else the axiom.
-fn span(model: &Model) -> crate::syntax::Span {
+pub(super) fn span(model: &Model) -> crate::syntax::Span {
     (model.settings.iterations_span.clone()).unwrap_or_else(|| model.axiom_span.clone())
 }
 

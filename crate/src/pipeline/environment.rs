@@ -5,6 +5,7 @@
 //! it: this file is where they meet the programs of [`crate::environment`].
 
 use super::environment_answers::{self as answers, Answers, Asker};
+use super::environment_reading as reading;
 use super::environment_view::EnvironmentView;
 use super::observer::{Lent, StageObserver};
 use super::stand::Stand;
@@ -109,7 +110,9 @@ impl<'m> Environment<'m> {
                 None => (plant.string(), &[][..]),
             };
             let adjustments = observers[k].borrow().adjustments(origin);
+            let bytes = reading::before_drawing(self.model, string, parts.len(), step)?;
             let skeleton = turtle::interpret_adjusted(self.model, string, adjustments.as_ref());
+            reading::before_parts(self.model, &skeleton, bytes, &mut parts, step)?;
             add_parts(&skeleton, self.places[k], k as u32, &mut parts);
             let mut last = None;
             for q in &skeleton.environment_queries {

@@ -31,6 +31,8 @@ mod environment;
 #[cfg(feature = "environment")]
 mod environment_answers;
 #[cfg(feature = "environment")]
+mod environment_reading;
+#[cfg(feature = "environment")]
 mod environment_view;
 mod export;
 mod hooks;
@@ -47,6 +49,8 @@ mod surface_preview;
 pub use breakpoints::{first_firing, first_watched, Pause};
 pub use build::{build, build_with, Build, BuildOptions};
 pub use editor::{BranchInfo, PlantEditor};
+#[cfg(feature = "environment")]
+pub use environment_reading::MAX_READING_BYTES;
 #[cfg(feature = "environment")]
 pub use environment_view::{EnvironmentView, FieldView, MAX_VIEW_POINTS, MAX_VIEW_VOXELS};
 pub use export::{export, ExportError, ExportOptions, Exported};
