@@ -146,3 +146,54 @@ fn the_environment_counts_the_parts_of_the_plants_it_has_read() {
         error.message
     );
 }
+
+/// 2^n spheres and nothing else.
+const SPHERES: &str = "#max_modules 40000000\naxiom: A\nA -> AA\nhomomorphism:\nA -> @O(1)f\n";
+
+#[test]
+fn a_plant_too_large_to_mesh_says_that_its_spheres_are_left_out() {
+    // 65,536 spheres of 17 × 17 vertices: 18.9 million vertices, above the mesh's 4 million.
+    // Before, it was drawn as lines of its segments (none): nothing, without a word.
+    let b = build(SPHERES, &options(16));
+    assert!(b.ok(), "{:?}", b.diagnostics);
+    let warning = b
+        .diagnostics
+        .iter()
+        .find(|d| d.code == "E0417")
+        .unwrap_or_else(|| panic!("E0417 expected: {:?}", b.diagnostics));
+    assert!(
+        warning
+            .message
+            .contains("65536 polygons, leaves and spheres are left out"),
+        "{}",
+        warning.message
+    );
+    assert!(
+        warning.message.contains("limit of 4000000"),
+        "{}",
+        warning.message
+    );
+    assert_eq!(b.plant.stats.vertices, 0);
+    // Meshed, they say nothing.
+    let small = build(SPHERES, &options(4));
+    assert!(small.diagnostics.is_empty(), "{:?}", small.diagnostics);
+    assert!(small.plant.stats.vertices > 0);
+}
+
+#[test]
+fn remeshing_past_the_mesh_limit_and_back_adds_and_removes_the_warning() {
+    let mut b = build(SPHERES, &options(8));
+    assert!(b.diagnostics.is_empty(), "{:?}", b.diagnostics);
+    let mut mesh = b.plant.mesh_options.clone();
+    mesh.max_vertices = 1000;
+    b.remesh(&mesh);
+    let codes = |b: &meristem::pipeline::Build| -> Vec<String> {
+        b.diagnostics.iter().map(|d| d.code.to_string()).collect()
+    };
+    assert_eq!(codes(&b), ["E0417"]);
+    b.remesh(&mesh);
+    assert_eq!(codes(&b), ["E0417"], "one warning, not one a remesh");
+    mesh.max_vertices = 4_000_000;
+    b.remesh(&mesh);
+    assert!(b.diagnostics.is_empty(), "{:?}", b.diagnostics);
+}

@@ -56,6 +56,9 @@ use glam::DVec3;
 ///   every segment as a line beside a mesh without tubes, grows its lines by.
 /// - `width_unit`: model units per width unit (what `#width 1` measured across), for writers that
 ///   draw widths themselves (SVG).
+/// - `unmeshed_vertices`: when the model was too large to mesh and is `lines`, the vertices its
+///   mesh would have had (more than `MeshOptions::max_vertices`); 0 otherwise. The lines are the
+///   segments only: a model's polygons, surfaces and spheres are then not drawn at all.
 ///
 /// Where each chain, polygon, leaf and sphere of the skeleton lies in these arrays (contiguous runs
 /// of vertices and triangles, in that order) is recorded by [`build_mesh_with_parts`](super::build_mesh_with_parts) as
@@ -80,6 +83,7 @@ pub struct MeshBuffers {
     pub growth_times: Vec<f32>,
     pub segment_growth_times: Vec<f32>,
     pub width_unit: f64,
+    pub unmeshed_vertices: usize,
 }
 
 /// Material kind of tubes (bark texture).

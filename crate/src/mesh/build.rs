@@ -82,6 +82,7 @@ fn mesh_of(
     let estimate = builder.estimate(skeleton);
     if estimate > builder.vertex_budget() {
         builder.lines(skeleton);
+        builder.mesh.unmeshed_vertices = estimate;
         parts.lines = true;
         return (builder.mesh, parts);
     }

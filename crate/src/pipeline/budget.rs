@@ -52,3 +52,21 @@ fn over(steps: u32, size: &DrawingSize, bytes: usize, what: &str, then: &str) ->
         turtle::MAX_SKELETON_BYTES >> 20
     )
 }
+
+/// `E0417`: the plant was too large to mesh and is drawn as lines, one per segment, which leave
+/// out its polygons, surfaces and spheres (a plant of 65,536 spheres was drawn as nothing,
+/// without a word); nothing when it was meshed or has none of them.
+pub(super) fn shapes_left_out(model: &Model, plant: &super::Plant) -> Option<Diagnostic> {
+    let (mesh, skeleton) = (&plant.mesh, &plant.skeleton);
+    let shapes = skeleton.polygons.len() + skeleton.surfaces.len() + skeleton.spheres.len();
+    if mesh.unmeshed_vertices == 0 || shapes == 0 {
+        return None;
+    }
+    let message = format!(
+        "the plant's mesh would have {} vertices, above the mesh's limit of {}: it is drawn as \
+         lines, one per segment, and its {shapes} polygons, leaves and spheres are left out (of \
+         the view and of exports); use fewer iterations",
+        mesh.unmeshed_vertices, plant.mesh_options.max_vertices
+    );
+    Some(Diagnostic::warning("E0417", span(model), message))
+}

@@ -120,6 +120,12 @@ impl Build {
         }
         let interpret = watch.lap();
         self.plant.remesh(options);
+        // Other sides or smooth axes may pass the mesh's limit, or come back within it.
+        self.diagnostics.retain(|d| d.code != "E0417");
+        if let Some(model) = &self.model {
+            let warning = super::budget::shapes_left_out(model, &self.plant);
+            self.diagnostics.extend(warning);
+        }
         let mesh = watch.lap();
         if let Some(timings) = self.timings.as_mut() {
             timings.interpret += interpret;
@@ -293,6 +299,8 @@ fn interpret_and_mesh(
         Drawn::Sketch(sketch) => Plant::sketched(sketch, mesh, derivation, steps),
         Drawn::Skeleton(skeleton) => Plant::new(skeleton, mesh, derivation, steps),
     };
+    let left_out = super::budget::shapes_left_out(model, &result.plant);
+    result.diagnostics.extend(left_out);
     if lines_only {
         result.plant.keep_lines_only();
         let warning = super::budget::lines_only(model, steps, &size);
