@@ -197,3 +197,23 @@ fn remeshing_past_the_mesh_limit_and_back_adds_and_removes_the_warning() {
     b.remesh(&mesh);
     assert!(b.diagnostics.is_empty(), "{:?}", b.diagnostics);
 }
+
+#[test]
+fn a_plant_of_leaves_over_the_drawing_budget_counts_its_leaves() {
+    // 4,194,304 leaves and no segment: before, "the plant has 0 segments, which would take
+    // 672 MB as a skeleton".
+    let leaves = "#max_modules 40000000\naxiom: A\nA -> AA\nhomomorphism:\nA -> ~l f\n";
+    let b = build(leaves, &options(22));
+    let warning = b
+        .diagnostics
+        .iter()
+        .find(|d| d.code == "E0414")
+        .unwrap_or_else(|| panic!("E0414 expected: {:?}", b.diagnostics));
+    assert!(
+        warning.message.contains(
+            "0 segments and 4194304 polygons, polygon points, leaves, spheres or queries"
+        ),
+        "{}",
+        warning.message
+    );
+}

@@ -44,9 +44,14 @@ pub(super) fn lines_only(model: &Model, steps: u32, size: &DrawingSize) -> Diagn
 /// skeleton's and the lines' are the same 512 MB), and what to do.
 fn over(steps: u32, size: &DrawingSize, bytes: usize, what: &str, then: &str) -> String {
     const _: () = assert!(turtle::MAX_SKELETON_BYTES == turtle::MAX_SKETCH_BYTES);
+    // Leaves, polygons and spheres too: a plant of 4 million leaves has no segment.
+    let others = match size.others {
+        0 => String::new(),
+        n => format!(" and {n} polygons, polygon points, leaves, spheres or queries"),
+    };
     format!(
-        "after {steps} steps the plant has {} segments, which would take {} MB {what}, above the \
-         drawing's budget of {} MB; {then}",
+        "after {steps} steps the plant has {} segments{others}, which would take {} MB {what}, \
+         above the drawing's budget of {} MB; {then}",
         size.segments,
         bytes.div_ceil(1 << 20),
         turtle::MAX_SKELETON_BYTES >> 20

@@ -22,6 +22,9 @@ pub const MAX_SKETCH_BYTES: usize = 512 << 20;
 pub struct DrawingSize {
     /// Segments drawn (an upper bound: a zero-length move draws none).
     pub segments: usize,
+    /// The other elements the skeleton records: polygons and their `.` points, leaves, spheres,
+    /// query values (an upper bound, as `segments`).
+    pub others: usize,
     /// Bytes of the skeleton ([`super::interpret`]).
     pub skeleton: usize,
     /// Bytes of the sketch's lines ([`super::sketch`]).
@@ -83,7 +86,7 @@ pub fn drawing_size(model: &Model, string: &LString, id_counts: &[u64]) -> Drawi
     } else {
         id_counts
     };
-    let (mut segments, mut skeleton) = (0usize, 0usize);
+    let (mut segments, mut others, mut skeleton) = (0usize, 0usize, 0usize);
     for (index, &n) in counts.iter().enumerate() {
         let command = model.meanings.get(index).copied().flatten();
         let Some(command) = command.and_then(|info| info.command()) else {
@@ -92,10 +95,16 @@ pub fn drawing_size(model: &Model, string: &LString, id_counts: &[u64]) -> Drawi
         let n = usize::try_from(n).unwrap_or(usize::MAX);
         let (bytes, drawn) = skeleton_cost(command);
         segments = segments.saturating_add(n.saturating_mul(drawn));
+        // (A move records a point only inside a polygon: it is counted in bytes, not here.)
+        let move_ = matches!(command, Command::Move | Command::MoveNoVertex);
+        if drawn == 0 && bytes > 0 && !move_ {
+            others = others.saturating_add(n);
+        }
         skeleton = skeleton.saturating_add(n.saturating_mul(bytes));
     }
     DrawingSize {
         segments,
+        others,
         skeleton,
         sketch: segments.saturating_mul(SKETCH_SEGMENT_BYTES),
     }
