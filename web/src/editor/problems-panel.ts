@@ -70,6 +70,7 @@ class ProblemsPanel implements Panel {
   private readonly sizer: HTMLElement;
   private readonly idPrefix = `cm-problem-${++panels}-`;
   private queued = false;
+  private readonly resizing = new ResizeObserver(() => this.queueRender());
   /** A row to scroll into view at the next render. */
   private reveal = -1;
 
@@ -100,7 +101,11 @@ class ProblemsPanel implements Panel {
       const row = (event.target as HTMLElement).closest<HTMLElement>('[data-problem]');
       if (row) goToProblem(this.view, Number(row.dataset.problem));
     });
-    new ResizeObserver(() => this.queueRender()).observe(this.list);
+    this.resizing.observe(this.list);
+  }
+
+  destroy(): void {
+    this.resizing.disconnect();
   }
 
   mount(): void {
@@ -153,7 +158,9 @@ class ProblemsPanel implements Panel {
   private render(): void {
     const problems = this.problems;
     const n = problems.list.length;
-    this.heading.textContent = n === 0 ? 'No problems' : `${count(n, 'problem')}${severities(problems.list)}`;
+    // (Written only when it changes: it is a live region, read out when its text is replaced.)
+    const heading = n === 0 ? 'No problems' : `${count(n, 'problem')}${severities(problems.list)}`;
+    if (this.heading.textContent !== heading) this.heading.textContent = heading;
     // As tall as its rows, up to six (and 30% of the window: problems-panel.css).
     this.list.style.height = `${Math.max(1, Math.min(n, 6)) * ROW_HEIGHT}px`;
     const view = this.list.clientHeight;
@@ -168,7 +175,8 @@ class ProblemsPanel implements Panel {
     if (selected >= first && selected < last) this.list.setAttribute('aria-activedescendant', this.idPrefix + selected);
     else this.list.removeAttribute('aria-activedescendant');
     // Always there, of one height: a panel growing under the text would hide what the text just scrolled to.
-    this.chosen.textContent = selected >= 0 ? this.describe(problems, selected) : n > 0 ? 'Choose a problem to go to it in the text; F8 goes to the next one.' : '';
+    const chosen = selected >= 0 ? this.describe(problems, selected) : n > 0 ? 'Choose a problem to go to it in the text; F8 goes to the next one.' : '';
+    if (this.chosen.textContent !== chosen) this.chosen.textContent = chosen;
   }
 
   private row(problems: Problems, i: number, top: number): HTMLElement {
