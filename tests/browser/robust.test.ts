@@ -498,20 +498,21 @@ describe('a grammar error on a phone', () => {
     expect(await page.getByTestId('editor').isVisible()).toBe(false);
     // Problems: the grammar's pane again, with every message in full under the text.
     await showProblems.tap();
-    const list = page.locator('[data-testid=editor] .cm-panel-lint');
+    const list = page.locator('[data-testid=editor] [data-testid=problems]');
     await list.waitFor();
-    const items = list.locator('li');
+    const items = list.locator('.cm-problem');
     await expect.poll(() => items.count()).toBe(2);
-    expect(await items.allTextContents()).toEqual(["'[' is never closed by a ']'E0109", "'(' is never closed by a ')'E0116"]);
+    expect(await items.allTextContents()).toEqual(["3:12'[' is never closed by a ']'E0109", "4:7'(' is never closed by a ')'E0116"]);
     for (const item of await items.all()) {
       const box = (await item.boundingBox())!;
       // (CodeMirror sets the coloured left border a pixel out.)
       expect(box.x >= -1 && box.x + box.width <= 390 && box.y >= 0 && box.y + box.height <= 844, `on screen: ${JSON.stringify(box)}`).toBe(true);
     }
-    // Choosing one goes to it in the text.
+    // Choosing one goes to it in the text, and shows its message whole (a row too narrow for it cuts it short).
     await items.nth(1).tap();
     const cursorLine = () => page.evaluate(() => document.querySelector('[data-testid=editor] .cm-activeLine')?.textContent);
     await expect.poll(cursorLine).toBe('F -> F(F');
+    expect(await list.locator('.cm-problems-chosen').textContent()).toBe("4:7 '(' is never closed by a ')' (E0116)");
     // Mended, the button goes.
     expect(await replaceTextByTouch(page, '#angle 25\naxiom: X\nX -> F[+X]F[-X]+X\nF -> FF\n')).toBe('ok');
     expect(await showProblems.isVisible()).toBe(false);

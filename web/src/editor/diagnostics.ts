@@ -1,8 +1,9 @@
 // Core diagnostics shown in the editor: exact ranges, a gutter marker, hover text.
-import { linter, lintGutter, openLintPanel, type Diagnostic as EditorDiagnostic } from '@codemirror/lint';
+import { linter, lintGutter, type Diagnostic as EditorDiagnostic } from '@codemirror/lint';
 import { StateEffect, type Extension } from '@codemirror/state';
-import { keymap } from '@codemirror/view';
 import { utf16Offsets, type Diagnostic } from '../core';
+import { problems } from './problems';
+import { inTextOrder, markedDiagnostics, problemsUpdate } from './problems-state';
 
 /**
  * Converts the core's diagnostics for `text` (UTF-8 byte spans) into CodeMirror diagnostics
@@ -35,20 +36,24 @@ export const LINT_DELAY_MS = 400;
 export const relint = StateEffect.define<null>();
 
 /**
- * The lint extensions: underline + tooltip at each span, markers in a gutter, and Ctrl+Shift+M for
- * the list of them on every platform (basicSetup's Mod-Shift-m is Cmd+Shift+M on a Mac, which
- * Chrome keeps for its profile menu).
+ * The lint extensions: underline + tooltip at each span and markers in a gutter, for the first
+ * thousand problems (problems-state.ts's `markedDiagnostics`: 100,000 markers blocked the page),
+ * and every problem in the Problems panel and under F8 (problems.ts).
  */
 export function grammarLinting(diagnose: Diagnose): Extension {
   return [
     linter(
       async (view) => {
-        const text = view.state.doc.toString();
-        return toEditorDiagnostics(text, await diagnose(text));
+        const { doc } = view.state;
+        const text = doc.toString();
+        const all = inTextOrder(toEditorDiagnostics(text, await diagnose(text)));
+        // CodeMirror drops an answer about an older text; so do the problems.
+        if (view.state.doc === doc) view.dispatch(problemsUpdate(all));
+        return markedDiagnostics(all);
       },
       { delay: LINT_DELAY_MS, needsRefresh: (update) => update.transactions.some((t) => t.effects.some((e) => e.is(relint))) },
     ),
     lintGutter(),
-    keymap.of([{ key: 'Ctrl-Shift-m', run: openLintPanel, preventDefault: true }]),
+    problems(),
   ];
 }

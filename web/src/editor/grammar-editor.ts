@@ -2,12 +2,13 @@
 import { basicSetup } from 'codemirror';
 import { Decoration, EditorView, type DecorationSet } from '@codemirror/view';
 import { type Annotation, type EditorState, StateEffect, StateField, Transaction, type TransactionSpec } from '@codemirror/state';
-import { forceLinting, openLintPanel } from '@codemirror/lint';
+import { forceLinting } from '@codemirror/lint';
 import { isolateHistory } from '@codemirror/commands';
 import { grammarCompletion } from './completion';
 import { grammarSupport } from './language';
 import { commandHover } from './hover';
 import { grammarLinting, relint } from './diagnostics';
+import { openProblems } from './problems';
 import { studioEditorTheme } from './theme';
 import { surfaceGutter } from './surface-gutter';
 import type { GrammarEditor, GrammarEditorOptions, HistoryStep } from './grammar-text';
@@ -107,7 +108,7 @@ export function createGrammarEditor(options: GrammarEditorOptions, selection?: {
     cursor: () => (upcoming ?? view.state).selection.main.head,
     focus: () => view.focus(),
     requestMeasure: () => view.requestMeasure(),
-    showProblems: () => openLintPanel(view),
+    showProblems: () => openProblems(view),
     loaded: Promise.resolve(),
     refreshDiagnostics: () => {
       view.dispatch({ effects: relint.of(null) });

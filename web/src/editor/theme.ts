@@ -49,10 +49,7 @@ export const studioEditorTheme = EditorView.theme({
   // light grey, which was a bright strip in the dark scheme.
   '.cm-panels': { backgroundColor: 'var(--panel)', color: 'var(--text)' },
   '.cm-panels.cm-panels-bottom': { borderTop: '1px solid var(--border)' },
-  // The list of problems (the status bar's Problems, Ctrl+Shift+M): messages clear of its close
-  // button, which is big enough for a finger.
-  '.cm-panel.cm-panel-lint ul': { paddingRight: '2em' },
-  '.cm-panel.cm-panel-lint [name=close]': { fontSize: '22px', padding: '0 8px', color: 'var(--muted)' },
+  // (The list of problems has its own styles: problems-panel.css.)
   // A diagnostic's code (E0109) at full strength: CodeMirror's 0.7 opacity left it at 3.1:1 on the
   // list's selected row (axe, WCAG AA wants 4.5:1); its smaller size keeps it secondary.
   '.cm-diagnosticSource': { opacity: 1 },

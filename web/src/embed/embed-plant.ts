@@ -8,7 +8,8 @@ import { cleanGrowth, decodeState, encodeState, type SharedGrowth } from '../sha
 import { derivedBuildOptions, derivedTime, LazySliderPanel, Playback } from '../plant-controls';
 import { GrowthShow, Timeline } from '../plant-controls/timeline';
 import type { BuildOutcome } from '../build';
-import { PlantView } from '../view';
+import { PlantView, sharedTarget } from '../view';
+import type { RenderTarget } from '../view';
 import type { SharedBuilds } from './shared-builds';
 
 /** The controls an embedded plant can show. */
@@ -88,26 +89,20 @@ function element<K extends keyof HTMLElementTagNameMap>(tag: K, className: strin
   return e;
 }
 
-/**
- * Gives back a canvas's WebGL context at once (the browser keeps few: Chromium 16 a page, losing
- * the oldest beyond), rather than when the canvas is collected.
- */
-function releaseContext(canvas: HTMLCanvasElement): void {
-  const gl = canvas.getContext('webgl2') ?? canvas.getContext('webgl');
-  gl?.getExtension('WEBGL_lose_context')?.loseContext();
-}
-
-/** Said when the browser took the plant's 3D view back, or gave it none. */
+/** Said when the browser took the page's 3D drawing back, or gave it none. */
 export const VIEW_LOST = 'This plant’s 3D view was taken back by the browser (too many 3D views on this page). Scroll it out of sight and back to draw it again.';
 
 export class EmbedPlant {
   readonly root: HTMLElement;
   /**
-   * The 3D view, while the plant is on screen or near it (issue 50, finding 9b: a page of many
-   * plants holds more WebGL contexts than the browser keeps, and it drops the oldest, blank): made
-   * when the plant scrolls into sight, released (its context given back) when it scrolls out.
+   * The 3D view, while the plant is on screen or near it: made when the plant scrolls into sight,
+   * released when it scrolls out. It draws into a 2D canvas with the page's one WebGL renderer
+   * (issue 50, finding 9b: a WebGL context per plant, and Chromium keeps 16 a page, dropping the
+   * oldest: ../view/shared-renderer.ts).
    */
   private view: PlantView | undefined;
+  /** Ends the view's listener on the shared renderer's canvas. */
+  private viewListening: AbortController | undefined;
   private readonly stage: HTMLElement;
   /** What the view is asked to show, kept to show again in a view made again. */
   private lastPlant: Parameters<PlantView['showPlant']> | undefined;
@@ -241,8 +236,10 @@ export class EmbedPlant {
   private makeView(): void {
     if (this.view) return;
     let view: PlantView;
+    let target: RenderTarget;
     try {
-      view = new PlantView(this.stage, { assetBase: this.settings.siteRoot });
+      target = sharedTarget();
+      view = new PlantView(this.stage, { assetBase: this.settings.siteRoot, target: () => target });
     } catch (error) {
       console.warn('Meristem: no 3D view for a plant:', error);
       this.viewProblem = VIEW_LOST;
@@ -251,13 +248,16 @@ export class EmbedPlant {
     }
     this.view = view;
     view.onPlantShown(() => this.timeline.refresh());
-    // Lost while on screen (another page's view took it): said, and made again when it comes back into sight.
-    view.canvas.addEventListener('webglcontextlost', () => {
-      if (this.view !== view) return; // (given back by releaseView)
+    // Lost while on screen (the page made too many other WebGL views): said, and made again (with
+    // a new shared renderer) when it comes back into sight.
+    this.viewListening = new AbortController();
+    const lost = () => {
+      if (this.view !== view) return;
       this.releaseView();
       this.viewProblem = VIEW_LOST;
       this.say(VIEW_LOST);
-    });
+    };
+    target.contextCanvas.addEventListener('webglcontextlost', lost, { signal: this.viewListening.signal });
     if (this.viewProblem !== '') {
       this.viewProblem = '';
       if (this.message.textContent === VIEW_LOST) this.say('');
@@ -273,7 +273,7 @@ export class EmbedPlant {
     const view = this.view;
     if (!view) return;
     this.view = undefined;
-    releaseContext(view.canvas);
+    this.viewListening?.abort();
     view.dispose();
   }
 

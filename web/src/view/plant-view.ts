@@ -23,7 +23,8 @@ import { ShownPlant } from './shown-plant';
 import { ModuleOverlay } from './module-overlay';
 import type { FilmFrames, PictureLook, PictureSource } from './snapshot';
 import { View2D } from './view-2d';
-import { FrameLoop, compileAhead, maxPictureSide, viewRenderer } from './view-renderer';
+import { FrameLoop, compileAhead, maxPictureSide } from './view-renderer';
+import { ownTarget, type RenderTarget } from './render-target';
 import { ViewPicking } from './view-picking';
 import type * as Snapshot from './snapshot';
 import type * as Growth from './growth';
@@ -55,6 +56,10 @@ export type GrowthCamera = 'final' | 'follow';
  */
 export class PlantView {
   private readonly renderer: WebGLRenderer;
+  /** Where it draws: its own canvas, or one a shared renderer fills (./render-target.ts). */
+  private readonly target: RenderTarget;
+  /** Ends the listeners on the context's canvas (a shared renderer's outlives the view). */
+  private readonly listening = new AbortController();
   private readonly frames: FrameLoop;
   private readonly scene = new Scene();
   // (The parts that make materials are made in this order, as before the split: three.js sorts
@@ -107,12 +112,16 @@ export class PlantView {
   /** Degrees the camera was turned about the plant since it was last framed (a turntable's). */
   private turned = 0;
 
-  /** `assetBase`: the site's root, where the textures are (default: the page's address). */
+  /**
+   * `assetBase`: the site's root, where the textures are (default: the page's address); `target`:
+   * where it draws (default: a canvas and renderer of its own).
+   */
   constructor(
     private readonly container: HTMLElement,
-    { assetBase }: { assetBase?: string } = {},
+    { assetBase, target }: { assetBase?: string; target?: () => RenderTarget } = {},
   ) {
-    const { renderer, software } = viewRenderer();
+    this.target = (target ?? ownTarget)();
+    const { renderer, software } = this.target;
     this.renderer = renderer;
     this.frames = new FrameLoop(renderer, {
       prepare: () => {
@@ -120,7 +129,7 @@ export class PlantView {
       },
       // (While a movie is filmed, its frames are the only ones drawn: see `film`.)
       render: () => {
-        if (!this.filming) this.renderer.render(this.scene, this.cameras.camera);
+        if (!this.filming) this.target.render(this.scene, this.cameras.camera);
       },
       after: () => {
         if (!this.filming) this.draw2D();
@@ -143,15 +152,15 @@ export class PlantView {
     );
     this.upload = new PlantUpload(renderer.getContext() as WebGL2RenderingContext, () => this.frames.gpuIdle(), (plant) => this.swapIn(plant));
     this.segmentLines = new SegmentLines(this.renderer.capabilities.maxTextureSize);
-    this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
-    const canvas = this.renderer.domElement;
+    const { canvas } = this.target;
     canvas.setAttribute('aria-label', '3D view of the plant; drag or the arrow keys to orbit, scroll or + and − to zoom, Home to fit');
     canvas.tabIndex = 0;
     canvas.addEventListener('keydown', (event) => this.cameras.onKey(event));
-    canvas.addEventListener('webglcontextlost', () => this.contextLost());
-    canvas.addEventListener('webglcontextrestored', () => this.contextRestored());
+    const { signal } = this.listening;
+    this.target.contextCanvas.addEventListener('webglcontextlost', () => this.contextLost(), { signal });
+    this.target.contextCanvas.addEventListener('webglcontextrestored', () => this.contextRestored(), { signal });
     container.append(canvas);
-    if (software) this.view2D = new View2D(container, renderer, this.segmentLines);
+    if (software) this.view2D = new View2D(container, this.target, this.segmentLines);
 
     addSkyLight(this.scene);
     this.cameras = new CameraRig(container, canvas, { change: () => this.requestRender(), home: () => this.frame() });
@@ -500,7 +509,7 @@ export class PlantView {
 
   /** The canvas, for pointer events. */
   get canvas(): HTMLCanvasElement {
-    return this.renderer.domElement;
+    return this.target.canvas;
   }
 
   /**
@@ -731,8 +740,8 @@ export class PlantView {
     this.upload.cancel();
     this.shown.dispose(this.upload.buffers);
     for (const part of [this.overlay, this.segmentLines, this.materials, this.grid]) part.dispose();
-    this.renderer.dispose();
-    this.renderer.domElement.remove();
+    this.listening.abort();
+    this.target.dispose();
     this.view2D?.clear();
   }
 
@@ -752,7 +761,7 @@ export class PlantView {
     this.sizeStale = false;
     const width = Math.max(1, this.container.clientWidth);
     const height = Math.max(1, this.container.clientHeight);
-    this.renderer.setSize(width, height, false);
+    this.target.setSize(width, height);
     this.cameras.resize(width, height);
     this.requestRender();
   }

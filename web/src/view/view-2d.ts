@@ -1,9 +1,10 @@
 // What the view draws in 2D over its WebGL canvas where a software rasterizer draws it
 // (./sketch-canvas.ts): a plant drawn as one-pixel lines (a sketch, a model too large to mesh),
 // and in the Lines mode a big plant's segments.
-import { Vector2, type Camera, type WebGLRenderer } from 'three';
+import { Vector2, type Camera } from 'three';
 import type { MeshBuffers } from '../core';
 import type { LineOverlay } from './highlight';
+import type { RenderTarget } from './render-target';
 import { HIGHLIGHT_EXTRA, type SegmentLines } from './segment-lines';
 import { SketchCanvas } from './sketch-canvas';
 
@@ -28,7 +29,7 @@ export class View2D {
 
   constructor(
     container: HTMLElement,
-    private readonly renderer: WebGLRenderer,
+    private readonly target: RenderTarget,
     private readonly segmentLines: SegmentLines,
   ) {
     this.canvas = new SketchCanvas(container);
@@ -90,7 +91,7 @@ export class View2D {
       return false;
     }
     // The canvas's pixels are the drawing buffer's; the widths are in CSS pixels.
-    const ratio = this.renderer.getPixelRatio();
+    const ratio = this.target.pixelRatio();
     const width = this.segmentLines.lineWidth;
     const { over, dim } = this.segmentHighlight;
     // Round ends and corners as WebGL draws them, where they show: for lines of a few pixels
@@ -107,9 +108,9 @@ export class View2D {
   draw(camera: Camera): void {
     if (!this.canvas.active) return;
     camera.updateMatrixWorld();
-    const { x, y } = this.renderer.getDrawingBufferSize(this.drawingBufferSize);
+    const { x, y } = this.target.drawingBufferSize(this.drawingBufferSize);
     this.canvas.draw(camera, x, y);
-    if (this.segmentsHere) this.segmentLines.setViewport(this.renderer.domElement.clientWidth, this.renderer.domElement.clientHeight);
+    if (this.segmentsHere) this.segmentLines.setViewport(this.target.canvas.clientWidth, this.target.canvas.clientHeight);
   }
 
   /** Takes everything drawn away. */
