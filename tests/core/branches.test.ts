@@ -61,6 +61,29 @@ function worst(a: Float32Array, b: Float32Array): number {
   return m;
 }
 
+describe('a comb of 60,000 segments, the most the studio edits', () => {
+  // 1,875 steps of 16 forks: 30,000 forks along one axis, the deepest branch 30,001 deep. The
+  // tree kept every branch's whole path (n²/2 numbers, 3.6 GB in the core, then as JSON): the
+  // page's core trapped. Paths are now made when one is asked for.
+  it('opens for editing, and its deepest branch is found by its path', () => {
+    const comb = `#max_steps 2000\n#max_modules 40000000\naxiom: A\nA -> ${'F[+F]'.repeat(16)}A`;
+    const { build, editor } = editPlant(comb, { iterations: 1875 });
+    try {
+      expect(build.stats.segments).toBe(60_000);
+      const branches = editor.branches();
+      // (Parents come before children: each depth from its parent's, no path made.)
+      const depth: number[] = [];
+      for (const b of branches) depth.push(b.parent === null ? 1 : depth[b.parent] + 1);
+      const deepest = branches[depth.indexOf(Math.max(...depth))];
+      const path = deepest.path;
+      expect(path.length).toBe(30_001);
+      expect(editor.findBranch(path)).toBe(deepest.index);
+    } finally {
+      editor.free();
+    }
+  }, 120_000);
+});
+
 describe('the branches of the game tree', () => {
   let editor: PlantEditor;
   let mesh: MeshBuffers;

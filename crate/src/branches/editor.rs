@@ -164,7 +164,7 @@ impl BranchEditor {
     pub fn edit(&self, branch: u32) -> Option<BranchEdit> {
         let handles = (*self.edits.get(branch as usize)?)?;
         Some(BranchEdit {
-            path: self.tree.branches[branch as usize].path.clone(),
+            path: self.tree.path(branch),
             handles,
         })
     }
@@ -326,7 +326,7 @@ impl BranchEditor {
                 local.abs().max_element()
             )));
         }
-        if let Err(e) = check_edit(b.path.len(), &handles) {
+        if let Err(e) = check_edit(b.depth as usize, &handles) {
             return Err(DragError::OutOfReach(format!(
                 "the edit could not be kept: {e}"
             )));

@@ -21,9 +21,8 @@ fn editor(result: Build) -> PlantEditor {
 }
 
 fn paths(tree: &BranchTree) -> Vec<(Vec<u32>, Vec<u32>)> {
-    tree.branches
-        .iter()
-        .map(|b| (b.path.clone(), b.segments.clone()))
+    (tree.branches.iter().enumerate())
+        .map(|(k, b)| (tree.path(k as u32), b.segments.clone()))
         .collect()
 }
 
@@ -114,12 +113,13 @@ fn paths_are_stable_under_re_derivation() {
     let (ta, tb) = (a.tree().clone(), b.tree().clone());
     assert!(tb.len() > ta.len());
     // Each branch of n = 3 is at the same path at n = 4, starting where the same place grew to.
-    for branch in &ta.branches {
-        let other = tb.find(&branch.path).expect("the path still exists");
+    for k in 0..ta.len() as u32 {
+        let path = ta.path(k);
+        let other = tb.find(&path).expect("the path still exists");
         let start = |t: &BranchTree, s: &PlantEditor, b: u32| {
             s.plant().skeleton.segments[t.branches[b as usize].segments[0] as usize].start
         };
-        let k = ta.find(&branch.path).unwrap();
+        assert_eq!(ta.find(&path), Ok(k));
         // F -> FF doubles every length: the same place is twice as far.
         assert!((start(&ta, &a, k) * 2.0 - start(&tb, &b, other)).length() < 1e-9);
     }

@@ -66,7 +66,7 @@ impl PlantEditor {
             .map(|b| {
                 let branch = &tree.branches[b as usize];
                 BranchInfo {
-                    path: branch.path.clone(),
+                    path: tree.path(b),
                     parent: branch.parent,
                     children: branch.children.clone(),
                     segments: branch.segments.clone(),

@@ -15,17 +15,14 @@ plant_mesh_getters!(PlantEditor);
 
 #[wasm_bindgen]
 impl PlantEditor {
-    /// The path of each branch, as JSON: `[[0], [0, 0], [0, 1], …]` (branch `i` is entry `i`).
-    #[wasm_bindgen(js_name = branchPaths)]
-    pub fn branch_paths(&self) -> String {
-        let paths: Vec<&Vec<u32>> = self
-            .editor
-            .tree()
-            .branches
-            .iter()
-            .map(|b| &b.path)
-            .collect();
-        serde_json::to_string(&paths).unwrap_or_else(|_| "[]".into())
+    /// The place of each branch among its parent's children, or among the roots (the last
+    /// number of its path; a path is the places from its root down to it). Not every path whole:
+    /// a comb of n forks has paths n deep, n²/2 numbers together.
+    #[wasm_bindgen(js_name = branchRanks)]
+    pub fn branch_ranks(&self) -> js_sys::Uint32Array {
+        let tree = self.editor.tree();
+        let ranks: Vec<u32> = tree.branches.iter().map(|b| b.rank).collect();
+        js_sys::Uint32Array::from(&ranks[..])
     }
 
     /// The parent of each branch; 4294967295 (u32::MAX) for a root.

@@ -32,10 +32,32 @@ export function editPlant(source: string, options: BuildOptions = {}): { build: 
   return { build: plain, editor: new LiveEditor(guarded(() => result.intoEditor())) };
 }
 
+/**
+ * One branch of {@link LiveEditor.branches}: its path made when asked for, from its parents' ranks
+ * (every path at once would be n²/2 numbers for a comb of n forks).
+ */
+class Branch implements BranchInfo {
+  readonly children: number[] = [];
+
+  constructor(
+    readonly index: number,
+    private readonly rank: number,
+    readonly parent: number | null,
+    private readonly tree: readonly BranchInfo[],
+  ) {}
+
+  get path(): number[] {
+    const path: number[] = [];
+    for (let b: Branch | undefined = this; b; b = b.parent === null ? undefined : (this.tree[b.parent] as Branch)) path.push(b.rank);
+    return path.reverse();
+  }
+}
+
 /** A {@link PlantEditor} over the core's `PlantEditor` on this thread. */
 class LiveEditor implements PlantEditor {
   private tree: BranchInfo[] | undefined;
-  private byPath: Map<string, number> | undefined;
+  /** The roots, in the order of their paths' first number. */
+  private roots: number[] | undefined;
   private triangleRanges: Uint32Array | undefined;
   private triangles = 0;
 
@@ -43,24 +65,27 @@ class LiveEditor implements PlantEditor {
 
   branches(): BranchInfo[] {
     if (!this.tree) {
-      const paths = JSON.parse(guarded(() => this.core.branchPaths())) as number[][];
+      const ranks = guarded(() => this.core.branchRanks());
       const parents = guarded(() => this.core.branchParents());
-      const tree: BranchInfo[] = paths.map((path, index) => ({
-        index,
-        path,
-        parent: parents[index] === 0xffffffff ? null : parents[index],
-        children: [],
-      }));
-      for (const b of tree) if (b.parent !== null) tree[b.parent].children.push(b.index);
+      const tree: BranchInfo[] = [];
+      this.roots = [];
+      for (let index = 0; index < ranks.length; index++) {
+        const parent = parents[index] === 0xffffffff ? null : parents[index];
+        tree.push(new Branch(index, ranks[index], parent, tree));
+        if (parent === null) this.roots.push(index);
+        else tree[parent].children.push(index);
+      }
       this.tree = tree;
-      this.byPath = new Map(tree.map((b) => [b.path.join(','), b.index]));
     }
     return this.tree;
   }
 
+  /** Down from the roots by each index of `path` (as the core's `BranchTree::find`). */
   findBranch(path: readonly number[]): number | null {
-    this.branches();
-    return this.byPath?.get(path.join(',')) ?? null;
+    const tree = this.branches();
+    let at: number | undefined = this.roots?.[path[0]];
+    for (let k = 1; k < path.length && at !== undefined; k++) at = tree[at].children[path[k]];
+    return path.length > 0 && at !== undefined ? at : null;
   }
 
   controlPoints(): Float32Array {

@@ -43,8 +43,9 @@ export interface EditsDocument {
 
 /** One branch of the plant. `index` is what the editor's other methods take. */
 export interface BranchInfo {
-  index: number;
-  path: number[];
+  readonly index: number;
+  /** Its path (what an edits document names it by), made when read: read it for one branch. */
+  readonly path: number[];
   /** Its parent's index; null for a root. */
   parent: number | null;
   /** Its children's indices, in the order they appear in the string. */
