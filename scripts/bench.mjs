@@ -125,9 +125,13 @@ const pipelineRows = [];
 // uploads to the GPU). Target: 5 ms in wasm.
 {
   const b = build(example('game-tree.lsys'), {}).intoEditor();
-  const paths = JSON.parse(b.branchPaths());
+  // The branch at a path: from the roots down, at each level the child of that place.
+  const [ranks, parents] = [b.branchRanks(), b.branchParents()];
+  const branchAt = (path) =>
+    path.reduce((at, place, depth) => ranks.findIndex((r, k) => r === place && parents[k] === (depth === 0 ? 0xffffffff : at)), -1);
   for (const [path, what] of [[[0, 0], 'a bough, 120 descendants'], [[0, 2, 0], 'a mid-level branch, 39 descendants']]) {
-    const branch = paths.findIndex((p) => p.join() === path.join());
+    const branch = branchAt(path);
+    if (branch < 0) throw new Error(`no branch at ${path}`);
     const p3 = b.branchControlPoints().slice(12 * branch + 9, 12 * branch + 12);
     let frame = 0;
     let vertices = 0;
