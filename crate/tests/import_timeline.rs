@@ -354,10 +354,40 @@ fn any_bytes_in_a_timeline_or_values_file_give_a_translation_or_a_note() {
             };
             f.bytes.splice(at..end, noise.iter().copied());
             let result = import::import_object(&files);
-            let (file, mut d) = meristem::syntax::parse(&result.text);
-            d.extend(meristem::model::resolve(&file).1);
-            prop_assert!(!meristem::diagnostics::has_errors(&d), "{}", result.text);
+            prop_assert!(resolves(&result.text), "{}", result.text);
             Ok(())
         })
         .expect("no input breaks the importer");
+}
+
+/// True when `text` parses and resolves without an error.
+fn resolves(text: &str) -> bool {
+    let (file, mut d) = meristem::syntax::parse(text);
+    d.extend(meristem::model::resolve(&file).1);
+    !meristem::diagnostics::has_errors(&d)
+}
+
+/// The fuzz test's case (0, [13], 40040, false): a carriage return before a value's name
+/// (`#define \rBR_END 15.4362`). The name went into the translation's comment
+/// `// val(\rBR_END)`, where Meristem's parser ends a line at the `\r`: the line after it was in
+/// error, and the repair commented out the line the importer counted there (`#define SIM_END`),
+/// which left the derivation length and then the axiom unresolved.
+#[test]
+fn a_carriage_return_in_a_value_file_does_not_shift_the_lines_the_import_repairs() {
+    let mut files = lychnis();
+    let vset = files
+        .iter_mut()
+        .find(|f| f.name == "aging.vset")
+        .expect("aging.vset");
+    vset.bytes.insert("#define ".len(), b'\r');
+    let result = import::import_object(&files);
+    assert!(resolves(&result.text), "{}", result.text);
+    assert!(result
+        .text
+        .contains("#define SIM_END 23.2721 // val(SIM_END) of aging.vset\n"));
+    assert!(result.text.contains("\naxiom: "), "{}", result.text);
+    // What could not be translated is said.
+    assert!(messages(&result)
+        .iter()
+        .any(|m| m.contains("Meristem rejects the translation `BR_END) of aging.vset`")));
 }

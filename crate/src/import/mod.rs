@@ -190,12 +190,15 @@ pub(crate) struct Output {
 const MAX_REPAIRS: usize = 64;
 
 impl Output {
-    /// Appends one line (which must not contain a newline) that came from source line `source`
-    /// (0: from no particular line).
+    /// Appends one line (which must not contain a line break) that came from source line
+    /// `source` (0: from no particular line).
     pub fn line(&mut self, text: impl Into<String>, source: usize) {
         let text: String = text.into();
-        // A newline would shift every later line: keep any extra text as lines of their own.
-        for part in text.split('\n') {
+        // A line break would shift every later line, and [`Output::finish`] would comment out the
+        // wrong one: keep any extra text as lines of their own. Meristem's parser ends a line at
+        // `\n`, `\r\n` or a lone `\r` (a `\r` in a name of a mutated `.vset` made `#define SIM_END`
+        // the line commented out in place of the one in error).
+        for part in text.replace("\r\n", "\n").split(['\n', '\r']) {
             self.lines.push((part.to_string(), source));
         }
     }
