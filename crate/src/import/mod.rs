@@ -257,7 +257,7 @@ impl Output {
                     source,
                     format!(
                         "Meristem rejects the translation `{}`: {} (the line is commented out)",
-                        content.trim(),
+                        excerpt(content.trim()),
                         d.message
                     ),
                 );
@@ -284,6 +284,17 @@ impl Output {
         self.lines.last().map_or("", |(text, _)| text.as_str())
     }
 
+    /// Inserts `lines` (from no particular source line) before line `index` (0-based); the lines
+    /// after them move down, so an index kept of a later line no longer holds.
+    pub fn insert(&mut self, index: usize, lines: Vec<String>) {
+        let mut inserted = Output::default();
+        for line in lines {
+            inserted.line(line, 0);
+        }
+        let index = index.min(self.lines.len());
+        self.lines.splice(index..index, inserted.lines);
+    }
+
     /// Replaces the text of line `index` (0-based), keeping its source line.
     pub fn replace(&mut self, index: usize, text: String) {
         if let Some(line) = self.lines.get_mut(index) {
@@ -300,6 +311,22 @@ impl Output {
         }
         text
     }
+}
+
+/// The most bytes of a translated line a note quotes.
+const MAX_QUOTED: usize = 300;
+
+/// `text`, cut after [`MAX_QUOTED`] bytes (at a character's start) with `…`: a note about a long
+/// line quotes its start, not the whole line (issue 50, 6: a 35 MB note).
+fn excerpt(text: &str) -> String {
+    if text.len() <= MAX_QUOTED {
+        return text.to_string();
+    }
+    let mut end = MAX_QUOTED;
+    while !text.is_char_boundary(end) {
+        end -= 1;
+    }
+    format!("{}…", &text[..end])
 }
 
 /// Makes text safe inside a `//` comment: no block-comment markers.
