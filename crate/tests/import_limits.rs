@@ -270,3 +270,23 @@ fn a_function_of_half_a_million_points_is_noted_not_read() {
         notes(&imported)
     );
 }
+
+/// The comment naming the functions not written quotes the files' names without their line
+/// breaks (Meristem's parser ends a line at a `\r`: the rest would be code).
+#[test]
+fn the_functions_not_written_are_named_on_one_line() {
+    let fset = function_set(2, 10).replace("name: F1\n", "name: F\r1\n");
+    let imported = import::import_object(&object_reading(&fset, &["F0".to_string()]));
+    assert!(
+        imported.text.contains(
+            "// Not written: the object's functions F 1 (the L-system does not read them).\n"
+        ),
+        "{}",
+        imported.text
+    );
+    assert!(
+        !said(&imported, "Meristem rejects"),
+        "{:?}",
+        notes(&imported)
+    );
+}

@@ -277,7 +277,12 @@ impl Importer {
         }
         if !unused.is_empty() {
             let more = unused.len().saturating_sub(10);
-            let names = unused[..unused.len().min(10)].join(", ");
+            // A name is the file's text: no line break may end the comment early.
+            let names: String = unused[..unused.len().min(10)]
+                .join(", ")
+                .chars()
+                .map(|c| if c.is_control() { ' ' } else { c })
+                .collect();
             let more = if more > 0 {
                 format!(" and {more} more")
             } else {
