@@ -800,8 +800,12 @@ proptest! {
             "#include <lpfgall.h>\nmodule A(float);\nAxiom: A(1);\nA(t):{ ",
             "g = 0\nAxiom: A(1)\nproduction:\nA(t) :\n    global g\n    g += 1\n    if t > 1:\n        x = ",
             "m = 0\nderivation length: 9\nAxiom: P(0)G\nproduction:\nP(t) :\n    if t < 3: produce P(t+1)\n    else:\n        global m\n        m = 1\n        produce ",
+            // Issue 50, 6: lines continued by `\` among blank lines, a production over two
+            // lines after them (the joins), an #include the file alone cannot give.
+            "#include \"a.h\"\nLsystem: 1\nderivation length: 2\nAxiom: F\\\n\n\n  F\\\nF\n\n\nA :\n\n",
         ]),
-        body in "[-+&^<>|%$~!?:;'\"cFfgZzt\\[\\]{}.()0-9ABCabpxiewhlrodu=@#*/, \n]{0,80}",
+        // `\r` too: Meristem's parser ends a line there (issue 50's flaky timeline case).
+        body in "[-+&^<>|%$~!?:;'\"cFfgZzt\\[\\]{}.()0-9ABCabpxiewhlrodu=@#*/, \n\r]{0,80}",
     ) {
         let text = format!("{prefix}{body}");
         for dialect in Dialect::ALL {

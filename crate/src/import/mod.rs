@@ -190,12 +190,15 @@ pub(crate) struct Output {
 const MAX_REPAIRS: usize = 64;
 
 impl Output {
-    /// Appends one line (which must not contain a newline) that came from source line `source`
-    /// (0: from no particular line).
+    /// Appends one line (which must not contain a line break) that came from source line
+    /// `source` (0: from no particular line).
     pub fn line(&mut self, text: impl Into<String>, source: usize) {
         let text: String = text.into();
-        // A newline would shift every later line: keep any extra text as lines of their own.
-        for part in text.split('\n') {
+        // A line break would shift every later line, and [`Output::finish`] would comment out the
+        // wrong one: keep any extra text as lines of their own. Meristem's parser ends a line at
+        // `\n`, `\r\n` or a lone `\r` (a `\r` in a name of a mutated `.vset` made `#define SIM_END`
+        // the line commented out in place of the one in error).
+        for part in text.replace("\r\n", "\n").split(['\n', '\r']) {
             self.lines.push((part.to_string(), source));
         }
     }
@@ -254,7 +257,7 @@ impl Output {
                     source,
                     format!(
                         "Meristem rejects the translation `{}`: {} (the line is commented out)",
-                        content.trim(),
+                        excerpt(content.trim()),
                         d.message
                     ),
                 );
@@ -281,6 +284,17 @@ impl Output {
         self.lines.last().map_or("", |(text, _)| text.as_str())
     }
 
+    /// Inserts `lines` (from no particular source line) before line `index` (0-based); the lines
+    /// after them move down, so an index kept of a later line no longer holds.
+    pub fn insert(&mut self, index: usize, lines: Vec<String>) {
+        let mut inserted = Output::default();
+        for line in lines {
+            inserted.line(line, 0);
+        }
+        let index = index.min(self.lines.len());
+        self.lines.splice(index..index, inserted.lines);
+    }
+
     /// Replaces the text of line `index` (0-based), keeping its source line.
     pub fn replace(&mut self, index: usize, text: String) {
         if let Some(line) = self.lines.get_mut(index) {
@@ -297,6 +311,22 @@ impl Output {
         }
         text
     }
+}
+
+/// The most bytes of a translated line a note quotes.
+const MAX_QUOTED: usize = 300;
+
+/// `text`, cut after [`MAX_QUOTED`] bytes (at a character's start) with `…`: a note about a long
+/// line quotes its start, not the whole line (issue 50, 6: a 35 MB note).
+fn excerpt(text: &str) -> String {
+    if text.len() <= MAX_QUOTED {
+        return text.to_string();
+    }
+    let mut end = MAX_QUOTED;
+    while !text.is_char_boundary(end) {
+        end -= 1;
+    }
+    format!("{}…", &text[..end])
 }
 
 /// Makes text safe inside a `//` comment: no block-comment markers.

@@ -7,19 +7,19 @@
 
 pub(super) mod contour_file;
 mod environment_file;
+mod function_file;
 mod lpfg_functions;
 mod lpfg_surface;
 mod python_main;
 mod specifications;
 mod surface_file;
 
-use crate::maths;
+use function_file::{function, function_set, short};
 pub use python_main::{python_main, PythonMain};
 use specifications::{command, Command};
 
 use super::abop::{self, Flavour};
-use super::{number, Dialect, Import};
-use crate::model::{Curve, CurveKind};
+use super::{Dialect, Import};
 use crate::vocabulary::{function_named, value_named, DirectiveKind};
 
 /// One file of an object: its name (a path inside the folder or zip; only the last part counts)
@@ -91,8 +91,25 @@ pub(super) struct CurveFunction {
     /// The Meristem name, and the name the function file gives (what `func(NAME, x)` says).
     pub name: String,
     pub source: String,
-    pub lines: Vec<String>,
+    /// What the comment above a function says it is: `the function of f.fset`.
+    pub about: String,
+    pub body: Body,
     pub kind: FunctionKind,
+}
+
+/// What a [`CurveFunction`] writes.
+#[derive(Clone, Debug)]
+pub(super) enum Body {
+    /// These lines (an lpfg value's `#define`).
+    Lines(Vec<String>),
+    /// A function of control points `x y …`, sampled when it is written ([`CurveFunction::lines`]):
+    /// only the functions the L-system reads are, so a set of thousands costs nothing to read
+    /// (issue 50, 6).
+    Points {
+        points: Vec<f64>,
+        samples: usize,
+        tool: &'static str,
+    },
 }
 
 /// What an entry of the object's function list is.
@@ -476,125 +493,6 @@ impl Reader {
             Reader::Cpfg => "cpfg",
             Reader::Lpfg => "lpfg",
         }
-    }
-}
-
-/// A `.fset`: `funcgalleryver 1 1`, `items: n`, then n functions of the `.func` format.
-fn function_set(text: &str, file: &str, reader: Reader, view: &mut View) {
-    let starts: Vec<usize> = text
-        .match_indices("fver")
-        .map(|(i, _)| i)
-        .filter(|&i| i == 0 || text.as_bytes()[i - 1] == b'\n')
-        .collect();
-    for (k, &start) in starts.iter().enumerate() {
-        let end = starts.get(k + 1).copied().unwrap_or(text.len());
-        let f = function(&text[start..end], None, file, reader, view);
-        view.functions.push(f);
-    }
-}
-
-/// One function file (`fver 1 1` with `name:`, `samples:`, `points:`, points `x y [multiplicity]`;
-/// or the old `range: … points: n`). cpfg reads a function through `samples` values of its spline
-/// joined by straight lines when samples > 2 (a `#table` of those values), else the spline itself
-/// (a `#curve`); lpfg always through 10 to 1,000 samples. The first of its lines is a comment.
-fn function(
-    text: &str,
-    samples: Option<usize>,
-    file: &str,
-    reader: Reader,
-    view: &View,
-) -> Option<CurveFunction> {
-    let mut name = base(file).trim_end_matches(".func").to_string();
-    let mut own_samples = None;
-    let mut numbers = Vec::new();
-    let mut reading = false;
-    for line in text.lines() {
-        let line = line.trim();
-        if let Some(v) = line.strip_prefix("name:") {
-            name = v.trim().to_string();
-        } else if let Some(v) = line.strip_prefix("samples:") {
-            own_samples = v.trim().parse::<usize>().ok();
-        } else if line.starts_with("points:") {
-            reading = true;
-        } else if reading {
-            let values: Vec<f64> = line
-                .split_whitespace()
-                .filter_map(|w| w.parse().ok())
-                .collect();
-            if let [x, y, rest @ ..] = values.as_slice() {
-                let times = rest.first().map_or(1, |m| (*m as usize).clamp(1, 16));
-                for _ in 0..times {
-                    numbers.extend([*x, *y]);
-                }
-            }
-        }
-    }
-    // fver 1.1 files carry their own sample count; the old format takes the view file's.
-    let samples = if text.starts_with("fver") {
-        own_samples
-    } else {
-        samples
-    }
-    .unwrap_or(0);
-    let samples = match reader {
-        Reader::Cpfg => samples,
-        Reader::Lpfg => samples.clamp(10, 1000),
-    };
-    let curve = Curve::new(CurveKind::Spline, &numbers).ok()?;
-    let source = name.clone();
-    let name = identifier(&name, view);
-    let points: Vec<String> = numbers.iter().map(|v| number(*v)).collect();
-    let mut lines = Vec::new();
-    if samples > 2 {
-        let samples = samples.min(1000);
-        let values: Vec<String> = (0..samples)
-            .map(|i| {
-                let x = i as f64 / (samples - 1) as f64;
-                format!("{} {}", number(x), short(curve.value(x)))
-            })
-            .collect();
-        lines.push(format!(
-            "// {name}: the function of {file}, control points {}; {} reads it through {samples} samples, as here",
-            points.join(" "),
-            reader.tool()
-        ));
-        lines.push(format!(
-            "{} {name} {}",
-            DirectiveKind::Table.written(),
-            values.join(" ")
-        ));
-    } else {
-        lines.push(format!("// {name}: the function of {file}"));
-        lines.push(format!(
-            "{} {name} {}",
-            DirectiveKind::Curve.written(),
-            points.join(" ")
-        ));
-    }
-    Some(CurveFunction {
-        name,
-        source,
-        lines,
-        kind: FunctionKind::Curve,
-    })
-}
-
-/// A value with 7 significant digits (cpfg's floats).
-fn short(v: f64) -> String {
-    if v == 0.0 || !v.is_finite() {
-        return "0".into();
-    }
-    let digits = (6 - maths::log10(v.abs()).floor() as i32).clamp(0, 12) as usize;
-    let text = format!("{v:.digits$}");
-    let text = if text.contains('.') {
-        text.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        text
-    };
-    if text == "-0" {
-        "0".into()
-    } else {
-        text
     }
 }
 

@@ -6,6 +6,9 @@ use super::cpfg::cpp;
 use super::{split_top, Env, Flavour, Importer};
 use crate::syntax::PARENTHESES;
 
+/// The longest text one read of a cpfg array may give (its values in a choice by index).
+const MAX_ARRAY_READ: usize = 100_000;
+
 /// `180 / π`: L-Py's trigonometry is Python's, in radians; Meristem's is in degrees.
 pub(in crate::import::abop) const DEGREES: &str = "57.2957795131";
 
@@ -180,6 +183,12 @@ impl Importer {
         let value = self.array_value(word, &indices).ok_or_else(|| {
             format!("'{word}[…]' reads an array that cpfg's Start: or Define: block does not give as one list of values")
         })?;
+        // The choice repeats the index once for each value (issue 50, 6).
+        if value.len() > MAX_ARRAY_READ {
+            return Err(format!(
+                "'{word}[…]' read here grows longer than {MAX_ARRAY_READ} characters"
+            ));
+        }
         out.push_str(&value);
         Ok(at)
     }

@@ -200,6 +200,13 @@ struct CpfgState {
     context_list: Option<(usize, String, Vec<String>)>,
     /// The output line of the `maximum depth:` of the section being read, and its value.
     depth_line: Option<(usize, String)>,
+    /// Where the object's functions are written (after the view's lines), and which of them
+    /// (indices into the view's functions, in the order first read) the L-system reads, with
+    /// their lines.
+    functions_at: Option<usize>,
+    used_functions: Vec<(usize, Vec<String>)>,
+    /// The bytes of those lines.
+    function_bytes: usize,
 }
 
 /// What reading an L+C (lpfg) file keeps.

@@ -108,6 +108,8 @@ impl Importer {
             self.note(0, "no Axiom: line");
         }
         self.unknown_view();
+        // Last: the lines move those after them down.
+        self.function_lines();
     }
 
     /// Translates one statement (a line, or a production with the lines it takes); returns the

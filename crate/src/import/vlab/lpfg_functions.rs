@@ -10,7 +10,8 @@
 //! line and what is wrong.
 
 use super::{
-    function, function_set, identifier, CurveFunction, Files, FunctionKind, Reader, Span, View,
+    function, function_set, identifier, Body, CurveFunction, Files, FunctionKind, Reader, Span,
+    View,
 };
 use crate::import::{leading_float, number};
 use crate::vocabulary::DirectiveKind;
@@ -284,13 +285,11 @@ fn item(
     if start == end {
         note(view, file, first - 1, format!("the timeline function {} starts and ends at {}: lpfg divides by their difference, 0; Meristem reads it at its start before that time and at its end from then on", f.source, number(start)));
     }
-    let from = format!("the function of {file},");
-    let to = format!(
-        "the timeline function of {file}, from t = {} to t = {},",
+    f.about = format!(
+        "the timeline function of {file}, from t = {} to t = {}",
         number(start),
         number(end)
     );
-    f.lines[0] = f.lines[0].replacen(&from, &to, 1);
     f.kind = FunctionKind::Timeline(Span {
         start,
         end,
@@ -321,7 +320,8 @@ fn values(text: &str, file: &str, view: &mut View) {
                 view.functions.push(Some(CurveFunction {
                     name: id,
                     source: name.to_string(),
-                    lines: vec![line],
+                    about: format!("val({name}) of {file}"),
+                    body: Body::Lines(vec![line]),
                     kind: FunctionKind::Value(value),
                 }));
             }
@@ -364,10 +364,10 @@ mod tests {
         };
         assert_eq!(f[0].kind, span(2.0, 8.0, "", ""));
         assert_eq!(f[1].kind, span(0.0, 1.0, "A", "B"));
-        assert!(f[0].lines[0].contains("the timeline function of f.tset, from t = 2 to t = 8,"));
+        assert!(f[0].lines()[0].contains("the timeline function of f.tset, from t = 2 to t = 8,"));
         // lpfg samples 21 times; FLAT's 3 samples are raised to lpfg's least, 10.
-        assert!(f[0].lines[1].starts_with("#table GROWTH 0 0 0.05 "));
-        assert_eq!(f[1].lines[1].split_whitespace().count(), 2 + 2 * 10);
+        assert!(f[0].lines()[1].starts_with("#table GROWTH 0 0 0.05 "));
+        assert_eq!(f[1].lines()[1].split_whitespace().count(), 2 + 2 * 10);
     }
 
     #[test]
@@ -376,11 +376,11 @@ mod tests {
             "v.vset",
             "#define BR_END 15.4362\n\n#define\tSIM_END 23.2721 extra\nBR 3\n#define X abc\n",
         );
-        let names: Vec<&str> = view
+        let names: Vec<String> = view
             .functions
             .iter()
             .flatten()
-            .map(|f| f.lines[0].as_str())
+            .map(|f| f.lines()[0].clone())
             .collect();
         assert_eq!(
             names,

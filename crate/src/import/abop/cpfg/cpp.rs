@@ -32,6 +32,10 @@ struct Macro {
 const MAX_INCLUDE_DEPTH: usize = 8;
 const MAX_EXPANSIONS: usize = 2_000;
 const MAX_LINE: usize = 100_000;
+/// The most bytes `#include` may bring in, all files and all times together: files that include
+/// each other several times grow as a power of that count however shallow (issue 50, 6: eight
+/// files of 400 bytes ran for minutes).
+const MAX_INCLUDED: usize = 1 << 20;
 
 /// The preprocessor's state.
 pub(in crate::import::abop) struct Preprocessor<'a> {
@@ -44,6 +48,8 @@ pub(in crate::import::abop) struct Preprocessor<'a> {
     pub notes: Vec<(usize, String)>,
     /// Functions the importer translates (their names are never taken for module text).
     functions: &'a [&'a str],
+    /// The bytes `#include` brought in so far; past [`MAX_INCLUDED`] once it refused a file.
+    included: usize,
 }
 
 /// One level of `#if`: is this branch taken, was one taken already, was the enclosing one active.
@@ -61,6 +67,7 @@ impl<'a> Preprocessor<'a> {
             include,
             notes: Vec::new(),
             functions,
+            included: 0,
         }
     }
 
@@ -307,7 +314,19 @@ impl<'a> Preprocessor<'a> {
             return Vec::new();
         }
         match (self.include)(name) {
+            Some(text) if self.included + text.len() > MAX_INCLUDED => {
+                // Said once: every later `#include` is left out too.
+                if self.included <= MAX_INCLUDED {
+                    self.included = MAX_INCLUDED + 1;
+                    self.notes.push((
+                        n,
+                        format!("#include \"{name}\" and those after it are left out: the files they include would bring in more than {} MB together", MAX_INCLUDED >> 20),
+                    ));
+                }
+                Vec::new()
+            }
             Some(text) => {
+                self.included += text.len();
                 let included =
                     crate::import::abop::prepare::lines(&text, crate::import::abop::Flavour::Cpfg)
                         .into_iter()

@@ -6,7 +6,12 @@
 
 use super::super::Importer;
 use crate::import::number;
-use crate::import::vlab::{CurveFunction, FunctionKind, Span};
+use crate::import::vlab::{Body, CurveFunction, FunctionKind, Span};
+use std::collections::HashMap;
+
+/// The most bytes the functions an L-system reads may take in its translation (a `#table` of
+/// lpfg's 1,000 samples takes some 20 KB): a set of 5,000 functions made 125 MB (issue 50, 6).
+const MAX_FUNCTION_BYTES: usize = 1 << 20;
 
 /// A number as a factor or term of an expression: in parentheses when negative.
 fn operand(v: f64) -> String {
@@ -30,6 +35,18 @@ impl Importer {
     /// The entry of the object's function list that `call(k, …)` names: by the name its file
     /// gives it, else by its number from 1.
     fn object_function(&self, call: &str, k: &str) -> Result<&CurveFunction, String> {
+        let index = self.function_index(call, k)?;
+        self.cpfg
+            .view
+            .as_ref()
+            .and_then(|v| v.functions.get(index))
+            .and_then(Option::as_ref)
+            .ok_or_else(|| format!("{call}({k}, …): no such function"))
+    }
+
+    /// The index in the object's function list of the entry `call(k, …)` names (see
+    /// [`Importer::object_function`]).
+    fn function_index(&self, call: &str, k: &str) -> Result<usize, String> {
         let tool = self.function_tool();
         let k = k.trim();
         let Some(view) = &self.cpfg.view else {
@@ -43,10 +60,9 @@ impl Importer {
         let named = view
             .functions
             .iter()
-            .flatten()
-            .find(|f| f.source == k || f.name == k);
-        if let Some(f) = named {
-            return Ok(f);
+            .position(|f| f.as_ref().is_some_and(|f| f.source == k || f.name == k));
+        if let Some(index) = named {
+            return Ok(index);
         }
         // A number, or a `#define`d name whose value is one (`#define INT_LENGTH 1`).
         let constant = self
@@ -60,7 +76,7 @@ impl Importer {
             .filter(|v| v.fract() == 0.0 && *v >= 1.0)
             .ok_or_else(|| format!("{tool}'s {call}({k}, …) chooses its function by an expression or a name the object's files do not give; Meristem names each function, so it is not translated"))?;
         match view.functions.get(index as usize - 1) {
-            Some(Some(f)) => Ok(f),
+            Some(Some(_)) => Ok(index as usize - 1),
             _ => Err(format!(
                 "{tool}'s {call}({k}, …): the object's files list no function {k} that could be read"
             )),
@@ -69,7 +85,7 @@ impl Importer {
 
     /// cpfg's `func(k, x)`: function k of the view file or function sets, as the
     /// `#curve`/`#table` it became (a timeline function is read at x, as lpfg's `func` does).
-    pub(in crate::import::abop) fn func(&self, args: &[String]) -> Result<String, String> {
+    pub(in crate::import::abop) fn func(&mut self, args: &[String]) -> Result<String, String> {
         let tool = self.function_tool();
         let [k, x] = args else {
             return Err(format!(
@@ -82,13 +98,15 @@ impl Importer {
                 "{tool}'s func({k}, …) reads a function, and {k} is a value of the object's .vset file (val({k}) reads it)"
             ));
         }
-        Ok(format!("{}({x})", f.name))
+        let call = format!("{}({x})", f.name);
+        self.use_function(self.function_index("func", k)?)?;
+        Ok(call)
     }
 
     /// lpfg's `tfunc(k, t)`: timeline function k at `(t − start)/(end − start)`; the function
     /// (a `#table` of lpfg's samples) is level beyond 0 and 1, as lpfg clamps its argument. A
     /// function of a function set has start 0 and end 1.
-    pub(in crate::import::abop) fn tfunc(&self, args: &[String]) -> Result<String, String> {
+    pub(in crate::import::abop) fn tfunc(&mut self, args: &[String]) -> Result<String, String> {
         let [k, t] = args else {
             return Err(
                 "lpfg's tfunc(…) takes a timeline function's name or number and a time".into(),
@@ -97,7 +115,7 @@ impl Importer {
         let f = self.object_function("tfunc", k)?;
         let t = t.trim();
         let name = &f.name;
-        Ok(match &f.kind {
+        let call = match &f.kind {
             FunctionKind::Value(_) => {
                 return Err(format!(
                     "lpfg's tfunc({k}, …) reads a function, and {k} is a value of the object's .vset file (val({k}) reads it)"
@@ -105,7 +123,9 @@ impl Importer {
             }
             FunctionKind::Curve => format!("{name}({t})"),
             FunctionKind::Timeline(span) => format!("{name}({})", self.timeline_time(span, t)),
-        })
+        };
+        self.use_function(self.function_index("tfunc", k)?)?;
+        Ok(call)
     }
 
     /// `(t − start)/(end − start)`, the argument lpfg gives a timeline function at time `t`. An
@@ -200,5 +220,79 @@ impl Importer {
                 }
             )),
         }
+    }
+
+    /// Marks entry `index` of the object's function list as read by the L-system, so that it is
+    /// written; an error when its lines would take those written past [`MAX_FUNCTION_BYTES`].
+    fn use_function(&mut self, index: usize) -> Result<(), String> {
+        if self.cpfg.used_functions.iter().any(|(k, _)| *k == index) {
+            return Ok(());
+        }
+        let Some(f) = self
+            .cpfg
+            .view
+            .as_ref()
+            .and_then(|v| v.functions.get(index))
+            .and_then(Option::as_ref)
+        else {
+            return Ok(());
+        };
+        let lines = f.lines();
+        let bytes: usize = lines.iter().map(|l| l.len() + 1).sum();
+        if self.cpfg.function_bytes + bytes > MAX_FUNCTION_BYTES {
+            return Err(format!(
+                "the function {} is not written: with it, the functions the L-system reads would take more than {} MB of text",
+                f.source,
+                MAX_FUNCTION_BYTES >> 20
+            ));
+        }
+        self.cpfg.function_bytes += bytes;
+        self.cpfg.used_functions.push((index, lines));
+        Ok(())
+    }
+
+    /// Writes the object's functions after the view's lines, once the L-system has been read:
+    /// its values, and the functions it reads; a comment names the others (a function set's
+    /// functions the L-system never reads are not written).
+    pub(in crate::import::abop) fn function_lines(&mut self) {
+        let (Some(at), Some(view)) = (self.cpfg.functions_at, &self.cpfg.view) else {
+            return;
+        };
+        let used: HashMap<usize, &Vec<String>> = self
+            .cpfg
+            .used_functions
+            .iter()
+            .map(|(k, lines)| (*k, lines))
+            .collect();
+        let mut lines = Vec::new();
+        let mut unused = Vec::new();
+        for (k, f) in view.functions.iter().enumerate() {
+            let Some(f) = f else { continue };
+            match (used.get(&k).copied(), &f.body) {
+                (Some(written), _) | (None, Body::Lines(written)) => {
+                    lines.extend(written.iter().cloned())
+                }
+                (None, Body::Points { .. }) => unused.push(f.source.as_str()),
+            }
+        }
+        if !unused.is_empty() {
+            let more = unused.len().saturating_sub(10);
+            // A name is the file's text: no line break may end the comment early.
+            let names: String = unused[..unused.len().min(10)]
+                .join(", ")
+                .chars()
+                .map(|c| if c.is_control() { ' ' } else { c })
+                .collect();
+            let more = if more > 0 {
+                format!(" and {more} more")
+            } else {
+                String::new()
+            };
+            lines.push(format!(
+                "// Not written: the object's functions {} (the L-system does not read them).",
+                crate::import::defuse_comment(&format!("{names}{more}"))
+            ));
+        }
+        self.out.insert(at, lines);
     }
 }

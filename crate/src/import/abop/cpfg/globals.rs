@@ -245,6 +245,9 @@ impl Globals {
     }
 }
 
+/// The most values of an array: each read of it writes them all, in a choice by index.
+const MAX_ARRAY_VALUES: usize = 1_000;
+
 impl Importer {
     /// Translates a global block at line `n`; false when the line is none.
     pub(in crate::import::abop) fn global_block(&mut self, code: &str, n: usize) -> bool {
@@ -375,8 +378,17 @@ impl Importer {
             return Err(format!("array {name} has no size"));
         }
         let close = after.rfind('}').unwrap_or(after.len());
+        let listed = super::super::split_top(&after[open + 1..close.max(open + 1)], ',');
+        // Each read of the array writes all its values (issue 50, 6: a million values made a
+        // production of 2.5 GB).
+        if listed.len() > MAX_ARRAY_VALUES {
+            return Err(format!(
+                "array {name} has {} values, more than the {MAX_ARRAY_VALUES} Meristem writes where an array is read: it is not translated, and the productions that read it are left out",
+                listed.len()
+            ));
+        }
         let mut values = Vec::new();
-        for v in super::super::split_top(&after[open + 1..close.max(open + 1)], ',') {
+        for v in listed {
             if !v.trim().is_empty() {
                 values.push(self.expression(v, &Env::new())?);
             }

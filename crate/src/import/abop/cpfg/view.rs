@@ -42,11 +42,9 @@ impl Importer {
         for line in view.palette.iter().chain(&view.surfaces) {
             self.out.line(line.clone(), 0);
         }
-        for f in view.functions.iter().flatten() {
-            for line in &f.lines {
-                self.out.line(line.clone(), 0);
-            }
-        }
+        // The functions the L-system reads go here once it has been read
+        // ([`Importer::function_lines`]).
+        self.cpfg.functions_at = Some(self.out.len());
         for line in view.contours.iter().flatten().flat_map(|c| &c.lines) {
             match line.strip_prefix("// ") {
                 Some(comment) => self.out.comment(comment, 0),
