@@ -290,3 +290,26 @@ fn the_functions_not_written_are_named_on_one_line() {
         notes(&imported)
     );
 }
+
+/// The same predecessor in an L+C file: the note names lpfg, whose file it is (it said "cpfg's
+/// predecessor": lpfg's files are read as cpfg's).
+#[test]
+fn an_lpfg_predecessor_of_5000_modules_is_named_as_lpfg_s() {
+    let text = format!(
+        "#include <lpfgall.h>\nderivation length: 2;\nAxiom: {};\nproduction:\n{}:\n{{\n\tproduce F;\n}}\n",
+        letters(100, " "),
+        letters(5000, " ")
+    );
+    let imported = import::import(&text, Dialect::Cpfg);
+    assert!(
+        said(
+            &imported,
+            "lpfg's predecessor here is 5000 modules, more than the 64"
+        ),
+        "{:?}",
+        notes(&imported)
+    );
+    assert!(!notes(&imported)
+        .iter()
+        .any(|n| n.contains("cpfg's predecessor")));
+}

@@ -11,6 +11,15 @@ use crate::syntax::PARENTHESES;
 const MAX_PREDECESSOR_MODULES: usize = 64;
 
 impl Importer {
+    /// The tool whose predecessor a note speaks of: lpfg's files are read as cpfg's.
+    fn predecessor_tool(&self) -> &'static str {
+        if self.lpfg.active {
+            "lpfg"
+        } else {
+            "cpfg"
+        }
+    }
+
     /// cpfg's predecessors made of several modules that are letters without parameters
     /// (`AXIOM : c --> …`, five modules A X I O M): Meristem's predecessor is one module, so the
     /// letters written together become one declared module, with a note at the first
@@ -43,10 +52,11 @@ impl Importer {
                 strict.to_string()
             };
             let letters: Vec<String> = strict.chars().map(String::from).collect();
+            let tool = self.predecessor_tool();
             self.note(
                 line.n,
                 format!(
-                    "cpfg's predecessor {strict} is {} modules ({}); Meristem's predecessor is one module, so {strict} written together (here, in the axiom and in successors) becomes one module {name} (#module): where no production for it applies, cpfg would rewrite the letters one by one, Meristem keeps it whole",
+                    "{tool}'s predecessor {strict} is {} modules ({}); Meristem's predecessor is one module, so {strict} written together (here, in the axiom and in successors) becomes one module {name} (#module): where no production for it applies, cpfg would rewrite the letters one by one, Meristem keeps it whole",
                     letters.len(),
                     letters.join(" ")
                 ),
@@ -101,10 +111,11 @@ impl Importer {
             // Each module would become a production with all the others as its context: k
             // productions of k modules each (issue 50, 4: a macro bomb's 6,000-module
             // predecessor made 36 MB of text).
+            let tool = self.predecessor_tool();
             self.note(
                 n,
                 format!(
-                    "cpfg's predecessor here is {} modules, more than the {MAX_PREDECESSOR_MODULES} \
+                    "{tool}'s predecessor here is {} modules, more than the {MAX_PREDECESSOR_MODULES} \
                      Meristem translates (each becomes a production with all the others as its \
                      context); the production is left out",
                     modules.len()
@@ -114,10 +125,11 @@ impl Importer {
         }
         let before = if before == "*" { "" } else { before };
         let after = if after == "*" { "" } else { after };
+        let tool = self.predecessor_tool();
         self.note(
             n,
             format!(
-                "cpfg's predecessor {strict} is {} modules; Meristem's predecessor is one module, so it becomes a production for {} with the others as its context and one for each other module that erases it there: the same unless two matches overlap or modules cpfg ignores stand between them",
+                "{tool}'s predecessor {strict} is {} modules; Meristem's predecessor is one module, so it becomes a production for {} with the others as its context and one for each other module that erases it there: the same unless two matches overlap or modules cpfg ignores stand between them",
                 modules.len(),
                 modules[0]
             ),
