@@ -313,3 +313,23 @@ fn an_lpfg_predecessor_of_5000_modules_is_named_as_lpfg_s() {
         .iter()
         .any(|n| n.contains("cpfg's predecessor")));
 }
+
+/// A line of 3,000 uses of a macro that does not grow: the note says which limit it passed
+/// (before: "a macro here expands without end; the line is left as it is", neither true).
+#[test]
+fn a_line_of_many_macro_uses_says_which_limit_it_passed() {
+    let text = format!(
+        "#define X F\nLsystem: 1\nderivation length: 1\nAxiom: {}\nendlsystem\n",
+        vec!["X"; 3000].join(" ")
+    );
+    let imported = import::import(&text, Dialect::Cpfg);
+    assert!(
+        said(
+            &imported,
+            "expand more than 2000 times or past 100000 characters"
+        ),
+        "{:?}",
+        notes(&imported)
+    );
+    assert!(said(&imported, "the rest of the line is left unexpanded"));
+}

@@ -356,9 +356,15 @@ impl<'a> Preprocessor<'a> {
             count += 1;
             self.expansions += 1;
             if count > MAX_EXPANSIONS || text.len() > MAX_LINE {
+                // Either a macro that grows without end, or a long line (continued lines
+                // joined) with many uses: say which limit, not which cause.
                 self.notes.push((
                     n,
-                    "a macro here expands without end; the line is left as it is".into(),
+                    format!(
+                        "the macros of this line expand more than {MAX_EXPANSIONS} times or past \
+                         {MAX_LINE} characters (a macro that grows without end does); the rest \
+                         of the line is left unexpanded"
+                    ),
                 ));
                 return text;
             }
