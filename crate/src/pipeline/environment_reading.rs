@@ -23,9 +23,9 @@ fn parts_bytes(n: usize) -> usize {
     n.saturating_mul(size_of::<Part>())
 }
 
-/// Before the turtle draws plant `plant`'s `string` after step `step`, with `parts` parts of the
-/// plants before it held: the bytes its skeleton will hold at most, or `E0416` when those and
-/// the parts would pass [`MAX_READING_BYTES`].
+/// Before the turtle draws one plant's `string` after step `step`, with `parts` parts of the
+/// plants read before it held: the bytes its skeleton will hold at most, or `E0416` when those
+/// and the parts would pass [`MAX_READING_BYTES`].
 pub(super) fn before_drawing(
     model: &Model,
     string: &LString,
