@@ -161,7 +161,7 @@ class ProblemsPanel implements Panel {
     // (Written only when it changes: it is a live region, read out when its text is replaced.)
     const heading = n === 0 ? 'No problems' : `${count(n, 'problem')}${severities(problems.list)}`;
     if (this.heading.textContent !== heading) this.heading.textContent = heading;
-    // As tall as its rows, up to six (and 30% of the window: problems-panel.css).
+    // As tall as its rows, up to six (and 30% of the window, 20% of a short one: problems-panel.css).
     this.list.style.height = `${Math.max(1, Math.min(n, 6)) * ROW_HEIGHT}px`;
     const view = this.list.clientHeight;
     if (this.reveal >= 0 && this.reveal < n) this.list.scrollTop = scrollFor(this.reveal, this.list.scrollTop, view, n);
