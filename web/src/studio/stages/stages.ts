@@ -88,6 +88,44 @@ function wholeNumber(input: HTMLInputElement): number | undefined {
 }
 
 /**
+ * Most bytes the plants of one figure (Stages, Variants) may hold in the page together: meshes,
+ * lines and GPU arrays. Ten stages of a plant near the mesh's limit, times eight seeds, would
+ * otherwise ask the page for gigabytes (a phone's tab dies; the text is autosaved, the figure lost).
+ */
+export const MAX_FIGURE_BYTES = 512 * 2 ** 20;
+
+/** Bytes a plant of a figure holds in the page. */
+export function plantBytes(plant: StagePlant): number {
+  const arrays = [plant.mesh, plant.gpu, plant.lines].flatMap((group) => Object.values(group ?? {}) as unknown[]);
+  return arrays.reduce<number>((sum, a) => sum + (ArrayBuffer.isView(a) ? a.byteLength : 0), 0);
+}
+
+/** The bytes a figure's plants hold so far, and the plants left out to stay within its budget. */
+export class FigureBudget {
+  private held = 0;
+  leftOut = 0;
+
+  constructor(private readonly limit = MAX_FIGURE_BYTES) {}
+
+  /** `plant`, or a tile with only its caption when it would take the figure past the budget. */
+  keep(plant: StagePlant): StagePlant {
+    const bytes = plantBytes(plant);
+    if (this.held + bytes <= this.limit) {
+      this.held += bytes;
+      return plant;
+    }
+    this.leftOut += 1;
+    return { mesh: null, lines: null, flat: true, bounds: [[0, 0, 0], [0, 0, 0]], caption: `${plant.caption}: left out (over ${this.limit / 2 ** 20} MB)` };
+  }
+
+  /** The status's words for the plants left out ('' when none was). */
+  words(): string {
+    if (this.leftOut === 0) return '';
+    return `; ${this.leftOut} left out: the figure would hold more than ${this.limit / 2 ** 20} MB (fewer iterations or seeds)`;
+  }
+}
+
+/**
  * A plant of a figure from its build's outcome (freeing the build's inspector), with its `caption`;
  * a tile with only its caption, saying why, when there is nothing to draw. Stages and Variants.
  */
@@ -253,6 +291,7 @@ export class StagesMode {
     // mode, and a flat plant in Auto), or tubes.
     const lines = options.tubes === false || (options.tubes === 'unlessFlat' && shown.build.flat) ? this.host.lineWidth() : null;
     const plants: StagePlant[] = [];
+    const budget = new FigureBudget();
     for (const [i, stage] of stages.entries()) {
       this.say('growing', `Growing ${stage.caption} (${i + 1} of ${stages.length})…`);
       // The sketch (the segments as lines) of every stage: drawn with the tubes, it keeps the early,
@@ -264,13 +303,13 @@ export class StagesMode {
         if (outcome.kind === 'built') outcome.result.inspector.free();
         return;
       }
-      plants.push(figurePlant(stage.caption, outcome.kind === 'built' ? outcome.result : outcome.kind, sketch));
+      plants.push(budget.keep(figurePlant(stage.caption, outcome.kind === 'built' ? outcome.result : outcome.kind, sketch)));
     }
     view.show(plants, grid, lines);
     this.figure = { source, options, stages, grid, drawn: plants.map((p) => p.mesh !== null), lines };
-    const missing = plants.filter((p) => !p.mesh).length;
+    const missing = plants.filter((p) => !p.mesh).length - budget.leftOut;
     const scaled = `${stages.length} plants ${grid.scale === 'one' ? 'at one scale' : 'each fitted to its tile'}`;
-    this.say('done', missing === 0 ? scaled : `${scaled}; ${missing} drew nothing`);
+    this.say('done', (missing === 0 ? scaled : `${scaled}; ${missing} drew nothing`) + budget.words());
   }
 
   private async downloadPng(): Promise<void> {

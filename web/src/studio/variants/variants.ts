@@ -13,7 +13,7 @@ import type { SharedVariant } from '../../share';
 import { MIN_SHARED_VARIANTS as MIN_VARIANTS, MAX_SHARED_VARIANTS as MAX_VARIANTS } from '../../share/variants-state';
 import { StagesView, type StagePlant, type StagesGrid } from '../../view/stages-view';
 import { loadVocabulary } from '../../core';
-import { figureDrawings, figurePlant } from '../stages/stages';
+import { FigureBudget, figureDrawings, figurePlant } from '../stages/stages';
 import { pixelsPerCssPixel, stagesPictureSize } from '../stages/stages-picture';
 import { stagesSvg } from '../stages/stages-svg';
 import { saveFile } from '../files/save-file';
@@ -223,6 +223,7 @@ export class VariantsMode {
     const plants: StagePlant[] = [];
     const figures: (VariantFigures | string)[] = [];
     this.bar.growing(true);
+    const budget = new FigureBudget();
     for (const [i, variant] of variants.entries()) {
       const caption = captionOf(variant, i);
       this.bar.say('growing', `Growing ${caption} (${i + 1} of ${variants.length})…`);
@@ -235,15 +236,15 @@ export class VariantsMode {
       }
       const build = outcome.kind === 'built' ? outcome.result.build : undefined;
       figures.push(build?.ok ? { modules: build.stats.modules, segments: build.stats.segments, height: build.stats.bounds[1][1] - build.stats.bounds[0][1] } : 'No plant: see its caption');
-      plants.push(figurePlant(caption, outcome.kind === 'built' ? outcome.result : outcome.kind, sketch));
+      plants.push(budget.keep(figurePlant(caption, outcome.kind === 'built' ? outcome.result : outcome.kind, sketch)));
     }
     this.bar.growing(false);
     this.plants = plants;
     view.show(plants, this.grid());
     this.drawn = plants.map((p) => p.mesh !== null);
     this.cards.showFigures(figures);
-    const missing = plants.filter((p) => !p.mesh).length;
-    this.bar.say('done', `${plants.length} plants at ${this.grid().scale === 'one' ? 'one scale' : 'each fitted'}${missing ? `; ${missing} drew nothing` : ''}. Drag to turn them all.`);
+    const missing = plants.filter((p) => !p.mesh).length - budget.leftOut;
+    this.bar.say('done', `${plants.length} plants at ${this.grid().scale === 'one' ? 'one scale' : 'each fitted'}${missing ? `; ${missing} drew nothing` : ''}${budget.words()}. Drag to turn them all.`);
   }
 
   private grid(): StagesGrid {
