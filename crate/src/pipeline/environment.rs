@@ -110,9 +110,10 @@ impl<'m> Environment<'m> {
                 None => (plant.string(), &[][..]),
             };
             let adjustments = observers[k].borrow().adjustments(origin);
-            let bytes = reading::before_drawing(self.model, string, parts.len(), step)?;
-            let skeleton = turtle::interpret_adjusted(self.model, string, adjustments.as_ref());
-            reading::before_parts(self.model, &skeleton, bytes, &mut parts, step)?;
+            let size = reading::before_drawing(self.model, string, parts.len(), step)?;
+            let adjusted = adjustments.as_ref();
+            let skeleton = turtle::interpret_sized(self.model, string, adjusted, size.segments);
+            reading::before_parts(self.model, &skeleton, size.skeleton, &mut parts, step)?;
             add_parts(&skeleton, self.places[k], k as u32, &mut parts);
             let mut last = None;
             for q in &skeleton.environment_queries {

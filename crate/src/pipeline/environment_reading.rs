@@ -10,7 +10,7 @@
 use crate::diagnostics::Diagnostic;
 use crate::environment::Part;
 use crate::model::{LString, Model};
-use crate::turtle::{self, Skeleton};
+use crate::turtle::{self, DrawingSize, Skeleton};
 
 /// Most bytes one reading may hold at once: the parts of the plants read so far and the skeleton
 /// of the one being read. About 2.5 million segments in one plant (a skeleton takes about 128
@@ -24,20 +24,21 @@ fn parts_bytes(n: usize) -> usize {
 }
 
 /// Before the turtle draws one plant's `string` after step `step`, with `parts` parts of the
-/// plants read before it held: the bytes its skeleton will hold at most, or `E0416` when those
-/// and the parts would pass [`MAX_READING_BYTES`].
+/// plants read before it held: what its drawing will hold at most (the turtle sizes its skeleton
+/// by it, so that a growing array never holds an old and a new copy beyond the count), or `E0416`
+/// when that and the parts would pass [`MAX_READING_BYTES`].
 pub(super) fn before_drawing(
     model: &Model,
     string: &LString,
     parts: usize,
     step: u32,
-) -> Result<usize, Diagnostic> {
+) -> Result<DrawingSize, Diagnostic> {
     let size = turtle::drawing_size(model, string, &[]);
     let held = parts_bytes(parts).saturating_add(size.skeleton);
     if held > MAX_READING_BYTES {
         return Err(over_budget(model, step, parts, size.segments, held));
     }
-    Ok(size.skeleton)
+    Ok(size)
 }
 
 /// Before the parts of `skeleton` (which holds at most `skeleton_bytes`) are added to `parts`:
