@@ -5,30 +5,8 @@
 //! binary: the allocator is the whole process's, so this file holds one test).
 
 use meristem::pipeline::{build, BuildOptions, PlantEditor};
-use std::alloc::{GlobalAlloc, Layout, System};
-use std::sync::atomic::{AtomicUsize, Ordering::Relaxed};
-
-/// The system allocator, counting the bytes held now and the most held at once.
-struct Counting;
-
-static HELD: AtomicUsize = AtomicUsize::new(0);
-static PEAK: AtomicUsize = AtomicUsize::new(0);
-
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        let held = HELD.fetch_add(layout.size(), Relaxed) + layout.size();
-        PEAK.fetch_max(held, Relaxed);
-        unsafe { System.alloc(layout) }
-    }
-
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        HELD.fetch_sub(layout.size(), Relaxed);
-        unsafe { System.dealloc(ptr, layout) }
-    }
-}
-
-#[global_allocator]
-static ALLOCATOR: Counting = Counting;
+#[path = "shared/counting.rs"]
+mod counting;
 
 #[test]
 fn editing_a_comb_of_20000_forks_holds_megabytes_not_gigabytes() {
@@ -41,10 +19,7 @@ fn editing_a_comb_of_20000_forks_holds_megabytes_not_gigabytes() {
     let b = build(source, &options);
     assert!(b.ok(), "{:?}", b.diagnostics);
     assert_eq!(b.plant.skeleton.segments.len(), 20_000);
-    let before = HELD.load(Relaxed);
-    PEAK.store(before, Relaxed);
-    let editor = PlantEditor::new(b.plant);
-    let peak = PEAK.load(Relaxed) - before;
+    let (editor, peak) = counting::peak_of(|| PlantEditor::new(b.plant));
     // Its paths whole: 10,000²/2 × 2 numbers of 4 bytes, 400 MB.
     assert!(peak < 64 << 20, "the editor took {} MB", peak >> 20);
     let tree = editor.tree();

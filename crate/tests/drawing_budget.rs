@@ -3,13 +3,20 @@
 //! whose lines would pass 512 MB too stops with an error before the turtle runs. Before, `F -> FF`
 //! at 24 steps asked for a 2 GB array ("capacity overflow" in WebAssembly, a lost core).
 
+use meristem::diagnostics::Diagnostic;
 use meristem::export::Format;
 use meristem::pipeline::{
-    build, export, BuildOptions, ExportError, ExportOptions, Hooks, MAX_READING_BYTES,
+    build, export, Build, BuildOptions, ExportError, ExportOptions, Hooks, MAX_READING_BYTES,
 };
 use meristem::turtle::{MAX_SKELETON_BYTES, MAX_SKETCH_BYTES};
 
 const DOUBLING: &str = "#max_modules 40000000\naxiom: F\nF -> FF\n";
+
+/// The diagnostic of `code` that `b` must have.
+fn diagnostic<'b>(b: &'b Build, code: &str) -> &'b Diagnostic {
+    (b.diagnostics.iter().find(|d| d.code == code))
+        .unwrap_or_else(|| panic!("{code} expected: {:?}", b.diagnostics))
+}
 
 fn options(iterations: u32) -> BuildOptions {
     BuildOptions {
@@ -21,11 +28,7 @@ fn options(iterations: u32) -> BuildOptions {
 #[test]
 fn sixteen_million_segments_stop_before_the_turtle_runs() {
     let b = build(DOUBLING, &options(24));
-    let error = b
-        .diagnostics
-        .iter()
-        .find(|d| d.code == "E0413")
-        .unwrap_or_else(|| panic!("E0413 expected: {:?}", b.diagnostics));
+    let error = diagnostic(&b, "E0413");
     assert!(
         error.message.contains("16777216 segments"),
         "{}",
@@ -45,11 +48,7 @@ fn sixteen_million_segments_stop_before_the_turtle_runs() {
 fn eight_million_segments_are_drawn_as_lines_only_and_not_exported() {
     let mut b = build(DOUBLING, &options(23));
     assert!(b.ok(), "{:?}", b.diagnostics);
-    let warning = b
-        .diagnostics
-        .iter()
-        .find(|d| d.code == "E0414")
-        .unwrap_or_else(|| panic!("E0414 expected: {:?}", b.diagnostics));
+    let warning = diagnostic(&b, "E0414");
     assert!(
         warning.message.contains("8388608 segments"),
         "{}",
@@ -105,11 +104,7 @@ fn the_environment_does_not_draw_a_plant_of_four_million_segments_between_steps(
     // After step 22 the plant has 2^22 segments: its skeleton alone would take 513 MB.
     // Before, the environment drew it whatever its size (640 MB at 5 million segments).
     let b = build(READ_DOUBLING, &options(22));
-    let error = b
-        .diagnostics
-        .iter()
-        .find(|d| d.code == "E0416")
-        .unwrap_or_else(|| panic!("E0416 expected: {:?}", b.diagnostics));
+    let error = diagnostic(&b, "E0416");
     assert!(error.message.contains("after step 22"), "{}", error.message);
     assert!(
         error.message.contains("4194304 segments"),
@@ -132,11 +127,7 @@ fn the_environment_counts_the_parts_of_the_plants_it_has_read() {
     // (150 MB) and the second one's skeleton and parts do not.
     let stand = format!("#plant 0 0 0\n#plant 5 0 0\n{READ_DOUBLING}");
     let b = build(&stand, &options(21));
-    let error = b
-        .diagnostics
-        .iter()
-        .find(|d| d.code == "E0416")
-        .unwrap_or_else(|| panic!("E0416 expected: {:?}", b.diagnostics));
+    let error = diagnostic(&b, "E0416");
     assert!(error.message.contains("after step 21"), "{}", error.message);
     assert!(
         error
@@ -156,11 +147,7 @@ fn a_plant_too_large_to_mesh_says_that_its_spheres_are_left_out() {
     // Before, it was drawn as lines of its segments (none): nothing, without a word.
     let b = build(SPHERES, &options(16));
     assert!(b.ok(), "{:?}", b.diagnostics);
-    let warning = b
-        .diagnostics
-        .iter()
-        .find(|d| d.code == "E0417")
-        .unwrap_or_else(|| panic!("E0417 expected: {:?}", b.diagnostics));
+    let warning = diagnostic(&b, "E0417");
     assert!(
         warning
             .message
@@ -187,9 +174,8 @@ fn remeshing_past_the_mesh_limit_and_back_adds_and_removes_the_warning() {
     let mut mesh = b.plant.mesh_options.clone();
     mesh.max_vertices = 1000;
     b.remesh(&mesh);
-    let codes = |b: &meristem::pipeline::Build| -> Vec<String> {
-        b.diagnostics.iter().map(|d| d.code.to_string()).collect()
-    };
+    let codes =
+        |b: &Build| -> Vec<String> { b.diagnostics.iter().map(|d| d.code.to_string()).collect() };
     assert_eq!(codes(&b), ["E0417"]);
     b.remesh(&mesh);
     assert_eq!(codes(&b), ["E0417"], "one warning, not one a remesh");
@@ -204,11 +190,7 @@ fn a_plant_of_leaves_over_the_drawing_budget_counts_its_leaves() {
     // 672 MB as a skeleton".
     let leaves = "#max_modules 40000000\naxiom: A\nA -> AA\nhomomorphism:\nA -> ~l f\n";
     let b = build(leaves, &options(22));
-    let warning = b
-        .diagnostics
-        .iter()
-        .find(|d| d.code == "E0414")
-        .unwrap_or_else(|| panic!("E0414 expected: {:?}", b.diagnostics));
+    let warning = diagnostic(&b, "E0414");
     assert!(
         warning.message.contains(
             "0 segments and 4194304 polygons, polygon points, leaves, spheres or queries"

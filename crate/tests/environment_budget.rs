@@ -5,30 +5,8 @@
 
 use meristem::environment::MAX_ENVIRONMENT_BYTES;
 use meristem::pipeline::{build, BuildOptions};
-use std::alloc::{GlobalAlloc, Layout, System};
-use std::sync::atomic::{AtomicUsize, Ordering::Relaxed};
-
-/// The system allocator, counting the bytes held now and the most held at once.
-struct Counting;
-
-static HELD: AtomicUsize = AtomicUsize::new(0);
-static PEAK: AtomicUsize = AtomicUsize::new(0);
-
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        let held = HELD.fetch_add(layout.size(), Relaxed) + layout.size();
-        PEAK.fetch_max(held, Relaxed);
-        unsafe { System.alloc(layout) }
-    }
-
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        HELD.fetch_sub(layout.size(), Relaxed);
-        unsafe { System.dealloc(ptr, layout) }
-    }
-}
-
-#[global_allocator]
-static ALLOCATOR: Counting = Counting;
+#[path = "shared/counting.rs"]
+mod counting;
 
 #[test]
 fn a_million_communication_modules_stop_before_their_answers_are_allocated() {
@@ -43,10 +21,7 @@ fn a_million_communication_modules_stop_before_their_answers_are_allocated() {
         iterations: Some(21),
         ..BuildOptions::default()
     };
-    let before = HELD.load(Relaxed);
-    PEAK.store(before, Relaxed);
-    let b = build(source, &options);
-    let peak = PEAK.load(Relaxed) - before;
+    let (b, peak) = counting::peak_of(|| build(source, &options));
     let error = b
         .diagnostics
         .iter()
