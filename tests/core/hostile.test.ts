@@ -6,6 +6,7 @@
 import { readdirSync, readFileSync } from 'node:fs';
 import { beforeAll, describe, expect, it } from 'vitest';
 import { buildPlant, exportModel, inspectPlant, MODEL_FORMATS } from '../../web/src/core';
+import { buildsWithStudioCore } from '../../web/src/core/build';
 import { startStudioCore } from '../../web/src/core/studio-core';
 
 const corpus = new URL('../../crate/tests/hostile/', import.meta.url);
@@ -37,7 +38,7 @@ beforeAll(startStudioCore);
 /** `text` built as the studio builds it: by the first plant's core, or again by the studio's. */
 function built(text: string): ReturnType<typeof buildPlant> {
   const first = buildPlant(text);
-  if (!(first.timed || first.declaresSurfaces || first.declaresEnvironment || first.placesByCoordinates)) return first;
+  if (!buildsWithStudioCore(first)) return first;
   const { build, inspector } = inspectPlant(text);
   inspector.free();
   return build;

@@ -115,7 +115,12 @@ export function studioCoreInUse(): boolean {
  * again once {@link loadStudioCore} is done.
  */
 export function needsStudioCore(build: Pick<PlantBuild, 'timed' | 'declaresSurfaces' | 'declaresEnvironment' | 'placesByCoordinates'>): boolean {
-  return (build.timed || build.declaresSurfaces || build.declaresEnvironment || build.placesByCoordinates) && !studioCoreInUse();
+  return buildsWithStudioCore(build) && !studioCoreInUse();
+}
+
+/** Whether `build`'s grammar needs what only the studio core builds (see {@link needsStudioCore}). */
+export function buildsWithStudioCore(build: Pick<PlantBuild, 'timed' | 'declaresSurfaces' | 'declaresEnvironment' | 'placesByCoordinates'>): boolean {
+  return build.timed || build.declaresSurfaces || build.declaresEnvironment || build.placesByCoordinates;
 }
 
 /** How {@link inspectPlant} builds: a sketch first, progress, arrays for the GPU. */
