@@ -43,12 +43,12 @@ class Branch implements BranchInfo {
     readonly index: number,
     private readonly rank: number,
     readonly parent: number | null,
-    private readonly tree: readonly BranchInfo[],
+    private readonly tree: readonly Branch[],
   ) {}
 
   get path(): number[] {
     const path: number[] = [];
-    for (let b: Branch | undefined = this; b; b = b.parent === null ? undefined : (this.tree[b.parent] as Branch)) path.push(b.rank);
+    for (let b: Branch | undefined = this; b; b = b.parent === null ? undefined : this.tree[b.parent]) path.push(b.rank);
     return path.reverse();
   }
 }
@@ -67,7 +67,7 @@ class LiveEditor implements PlantEditor {
     if (!this.tree) {
       const ranks = guarded(() => this.core.branchRanks());
       const parents = guarded(() => this.core.branchParents());
-      const tree: BranchInfo[] = [];
+      const tree: Branch[] = [];
       this.roots = [];
       for (let index = 0; index < ranks.length; index++) {
         const parent = parents[index] === 0xffffffff ? null : parents[index];
