@@ -779,6 +779,18 @@ fn cpfg_and_lpy_translations_derive_the_strings_their_rules_give() {
 #[cfg(not(target_arch = "wasm32"))]
 use proptest::prelude::*;
 
+/// L-Py's inlining bomb (issue 50, 5): `f` doubles its argument and is nested 28 deep, so the
+/// inlined call would be 2^28 copies of `s`; the production is left open for the body to finish.
+#[cfg(not(target_arch = "wasm32"))]
+const BOMB_LPY: &str = "def f(x):\n    return x+x\n\nAxiom: A(1)\nderivation length: 2\nproduction:\n\
+    A(s) --> F(f(f(f(f(f(f(f(f(f(f(f(f(f(f(f(f(f(f(f(f(f(f(f(f(f(f(f(f(s))))))))))))))))))))))))))))";
+
+/// What an import of the fuzzer's few hundred bytes may write, text and notes together. The
+/// importers' caps (cpp's expansions and line, the inlining's 20,000 characters, the predecessor's
+/// 64 modules, …) keep the bombs above to tens of kilobytes; before them, one gave 36 MB.
+#[cfg(not(target_arch = "wasm32"))]
+const MAX_IMPORTED_BYTES: usize = 1 << 20;
+
 #[cfg(not(target_arch = "wasm32"))]
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(200))]
@@ -803,6 +815,12 @@ proptest! {
             // Issue 50, 6: lines continued by `\` among blank lines, a production over two
             // lines after them (the joins), an #include the file alone cannot give.
             "#include \"a.h\"\nLsystem: 1\nderivation length: 2\nAxiom: F\\\n\n\n  F\\\nF\n\n\nA :\n\n",
+            // Issue 50, 4 and 5: the macro bombs (each macro twice the other; one ten times
+            // itself) and L-Py's inlining bomb (a function doubling its argument, nested 28 deep),
+            // each left open for the body to finish.
+            "#define A B B\n#define B A A\nLsystem: 1\nderivation length: 3\nAxiom: A\nA --> ",
+            "#define A A A A A A A A A A A\nLsystem: 1\nderivation length: 3\nAxiom: A B\nB --> A",
+            BOMB_LPY,
         ]),
         // `\r` too: Meristem's parser ends a line there (issue 50's flaky timeline case).
         body in "[-+&^<>|%$~!?:;'\"cFfgZzt\\[\\]{}.()0-9ABCabpxiewhlrodu=@#*/, \n\r]{0,80}",
@@ -810,6 +828,12 @@ proptest! {
         let text = format!("{prefix}{body}");
         for dialect in Dialect::ALL {
             let result = import::import(&text, dialect);
+            let notes: usize = result.notes.iter().map(|n| n.message.len()).sum();
+            prop_assert!(
+                result.text.len() + notes <= MAX_IMPORTED_BYTES,
+                "{dialect:?} {text:?}: {} bytes of text, {notes} of notes",
+                result.text.len()
+            );
             if !result.is_empty() {
                 let errors = resolve_errors(&result.text);
                 prop_assert!(errors.is_empty(), "{dialect:?} {text:?}: {errors:?}\n{}", result.text);
@@ -883,6 +907,17 @@ fn a_cpfg_macro_bomb_imports_small_and_says_what_it_left_out() {
         "{} bytes",
         imported.text.len()
     );
+}
+
+#[test]
+fn a_carriage_return_in_a_comment_after_code_stays_in_the_comment() {
+    // Found by the fuzzer below: an unclosed cpfg comment after a production's code was written
+    // as `B -> A // z\r]`, and Meristem's parser, which ends a line at a lone `\r`, read `]` as a
+    // line of its own (E0105).
+    let text = "Lsystem: 1\nderivation length: 3\nAxiom: A B\nB --> A/*z\r]";
+    let imported = import::import(text, Dialect::Cpfg);
+    assert_eq!(resolve_errors(&imported.text), Vec::<String>::new());
+    assert!(imported.text.contains("B -> A // z ]"), "{}", imported.text);
 }
 
 #[test]
