@@ -35,6 +35,8 @@ describe('a list of diagnostics as columns', () => {
     expect(list.count('error')).toBe(3);
     expect(list.count('warning')).toBe(1);
     expect(list.first('warning')).toEqual(diagnostics[1]);
+    expect(list.some((severity, code) => severity === 'warning' && code === 'E0201')).toBe(true);
+    expect(list.some((_, code) => code === 'E0999')).toBe(false);
     const errors = list.where((severity, code) => severity === 'error' && code !== 'E0400');
     expect(errors.slice()).toEqual([diagnostics[0], diagnostics[2]]);
     expect(errors.slice(1)).toEqual([diagnostics[2]]);

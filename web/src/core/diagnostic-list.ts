@@ -58,7 +58,7 @@ export function encodeDiagnostics(diagnostics: readonly Diagnostic[]): Diagnosti
   return { errors, codeIndices, codes, places, messages: messages.slice(0, used), messageEnds };
 }
 
-const decoder = new TextDecoder();
+let decoder: TextDecoder | undefined;
 
 /** A build's diagnostics, read from their columns: `at(i)` makes the object of one. */
 export class DiagnosticList implements Iterable<Diagnostic> {
@@ -100,7 +100,7 @@ export class DiagnosticList implements Iterable<Diagnostic> {
     if (!(i >= 0 && i < this.length)) return undefined;
     const { places, messages, messageEnds } = this.columns;
     const r = this.row(i);
-    const message = decoder.decode(messages.subarray(r === 0 ? 0 : messageEnds[r - 1], messageEnds[r]));
+    const message = (decoder ??= new TextDecoder()).decode(messages.subarray(r === 0 ? 0 : messageEnds[r - 1], messageEnds[r]));
     const [fromByte, toByte, line, column] = places.subarray(4 * r, 4 * r + 4);
     return { severity: this.severity(i), code: this.code(i), message, fromByte, toByte, line, column };
   }
@@ -110,6 +110,12 @@ export class DiagnosticList implements Iterable<Diagnostic> {
     const rows: number[] = [];
     for (let i = 0; i < this.length; i++) if (keep(this.severity(i), this.code(i))) rows.push(this.row(i));
     return rows.length === this.length ? this : new DiagnosticList({ ...this.columns, rows: Uint32Array.from(rows) });
+  }
+
+  /** Whether `test` is true of the severity and code of any diagnostic. */
+  some(test: (severity: Severity, code: string) => boolean): boolean {
+    for (let i = 0; i < this.length; i++) if (test(this.severity(i), this.code(i))) return true;
+    return false;
   }
 
   /** How many diagnostics are of `severity` (all without it). */
@@ -151,7 +157,7 @@ export function diagnosticList(diagnostics: readonly Diagnostic[]): DiagnosticLi
 }
 
 /** No diagnostics. */
-export const NO_DIAGNOSTICS = new DiagnosticList({
+export const NO_DIAGNOSTICS = /* @__PURE__ */ new DiagnosticList({
   errors: new Uint8Array(0),
   codeIndices: new Uint16Array(0),
   codes: [],

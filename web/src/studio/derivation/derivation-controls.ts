@@ -138,7 +138,7 @@ export class DerivationControls {
    * unknown), the errors the box's value caused are told, and playback goes on.
    */
   buildShown(build: Pick<PlantBuild, 'grammarIterations' | 'diagnostics'>): void {
-    if (build.diagnostics.where((severity, code) => severity === 'error' && !ITERATION_ERRORS.has(code)).length === 0) this.grammarIterations = build.grammarIterations;
+    if (!build.diagnostics.some((severity, code) => severity === 'error' && !ITERATION_ERRORS.has(code))) this.grammarIterations = build.grammarIterations;
     const errors = overrideErrors(this.iterations(), this.grammarIterations, build.diagnostics);
     this.tooMany = errors !== null;
     if (errors) this.notice?.show('error', errors.message, errors.items, OVERRIDE_TOPIC);
