@@ -111,6 +111,7 @@ try {
     const { profile } = await profiler.send('Profiler.stop');
     await profiler.detach();
     if (process.env.PROFILE_OUT) writeFileSync(`${process.env.PROFILE_OUT}-${i}.cpuprofile`, JSON.stringify(profile));
+    if (process.env.PROFILE_OUT) writeFileSync(`${process.env.PROFILE_OUT}-${i}.trace.json`, trace);
     const marks = await page.evaluate(() => window.__marks);
     samples.push({ marks, tasks: mainTasks(trace), functions: heaviest(profile) });
     console.log(JSON.stringify(samples.at(-1)));
