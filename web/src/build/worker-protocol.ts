@@ -64,7 +64,7 @@ export function progressWanted(last: string, next: BuildProgress['stage'], since
 
 /**
  * A build as the worker posts it: its diagnostics as their columns, whose buffers are transferred
- * with the mesh's (a text of 100,000 problems posted as objects held the page 60–80 ms a build).
+ * with the mesh's (a text of 100,000 problems posted as objects held the page 60–240 ms a build).
  */
 export type PostedBuild = Omit<PlantBuild, 'diagnostics'> & { diagnostics: DiagnosticColumns };
 
