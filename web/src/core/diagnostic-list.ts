@@ -147,7 +147,6 @@ export class DiagnosticList implements Iterable<Diagnostic> {
   *[Symbol.iterator](): Iterator<Diagnostic> {
     for (let i = 0; i < this.length; i++) yield this.at(i) as Diagnostic;
   }
-
 }
 
 /** The buffers of `columns`' arrays, to transfer with them (posted, they are not copied). */
