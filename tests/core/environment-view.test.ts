@@ -31,7 +31,7 @@ function built(source: string) {
 describe("a build's environment through the facade", () => {
   it('carries the light grid, the sphere, the points left and the reply words', () => {
     const build = built(LIT);
-    expect(build.diagnostics).toEqual([]);
+    expect([...build.diagnostics]).toEqual([]);
     const environment = build.environment!;
     expect(environment.replies).toEqual(['exposure', 'dx', 'dy', 'dz', 'free', 'distance', 'count', 'dx', 'dy', 'dz']);
     expect(environment.fields).toHaveLength(1);

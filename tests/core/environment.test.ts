@@ -34,7 +34,7 @@ describe('the environment through the facade', () => {
     const { build, inspector } = inspectPlant(SHOOT);
     try {
       expect(build.declaresEnvironment).toBe(true);
-      expect(build.diagnostics).toEqual([]);
+      expect([...build.diagnostics]).toEqual([]);
       expect(build.derived).toBe('FFFB?E(0,-0.5)');
     } finally {
       inspector.free();
@@ -44,7 +44,7 @@ describe('the environment through the facade', () => {
   it('the studio core plants a stand of 9, each plant at its place', () => {
     const { build, inspector } = inspectPlant('#stand grid 3 3 spacing 2\n#iterations 2\naxiom: F');
     try {
-      expect(build.diagnostics).toEqual([]);
+      expect([...build.diagnostics]).toEqual([]);
       expect(build.derived).toBe(
         '[@M(-2,0,-2)F][@M(0,0,-2)F][@M(2,0,-2)F][@M(-2,0,0)F][@M(0,0,0)F][@M(2,0,0)F][@M(-2,0,2)F][@M(0,0,2)F][@M(2,0,2)F]',
       );

@@ -34,7 +34,7 @@ describe('buildPlant on the gallery example', () => {
   });
 
   it('builds without diagnostics and reports positive sizes', () => {
-    expect(plant.diagnostics).toEqual([]);
+    expect([...plant.diagnostics]).toEqual([]);
     expect(plant.ok).toBe(true);
     const { stats } = plant;
     expect(stats.iterations).toBe(7);
@@ -240,7 +240,7 @@ describe('buildPlant on a grammar with an error', () => {
   it('reports ok=false and a diagnostic on the right line, with no geometry', () => {
     const plant = buildPlant('axiom: X\nX -> F[');
     expect(plant.ok).toBe(false);
-    const errors = plant.diagnostics.filter((d) => d.severity === 'error');
+    const errors = [...plant.diagnostics].filter((d) => d.severity === 'error');
     expect(errors.length).toBeGreaterThan(0);
     expect(errors[0]).toMatchObject({ line: 2, column: 7, fromByte: 15, toByte: 16 });
     expect(errors[0].code).toMatch(/^E\d{4}$/);

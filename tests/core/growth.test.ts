@@ -6,7 +6,7 @@ import { readFileSync } from 'node:fs';
 import { beforeAll, describe, expect, it } from 'vitest';
 import { buildPlant, initCore, initIo, inspectPlant, type BuildOptions, type PlantBuild } from '../../web/src/core';
 import { startStudioCore } from '../../web/src/core/studio-core';
-import { transferablesOf } from '../../web/src/build/worker-protocol';
+import { postedBuild, transferablesOf } from '../../web/src/build/worker-protocol';
 
 beforeAll(async () => {
   await initCore(readFileSync(new URL('../../crate/pkg-core/meristem_core_bg.wasm', import.meta.url)));
@@ -87,7 +87,7 @@ describe('the growth arrays', () => {
     inspector.free();
     const { growthOrigins, growthTimes } = build.mesh;
     if (!growthOrigins || !growthTimes) throw new Error('no growth arrays');
-    const buffers = transferablesOf(build, gpu);
+    const buffers = transferablesOf(postedBuild(build), gpu);
     expect(buffers).toContain(growthOrigins.buffer);
     expect(buffers).toContain(growthTimes.buffer);
   });

@@ -67,11 +67,11 @@ describe('hostile grammars in the wasm core', () => {
   it.each(all)('%s gives its result or its diagnostic, and the instance builds on', (name, text) => {
     const expected = expectation(text);
     const plant = built(text);
-    const codes = plant.diagnostics.map((d) => `${d.code} ${d.line}:${d.column} ${d.message}`);
+    const codes = [...plant.diagnostics].map((d) => `${d.code} ${d.line}:${d.column} ${d.message}`);
     if (expected === 'ok') {
       expect(plant.ok, codes.join('\n')).toBe(true);
     } else {
-      const found = plant.diagnostics.find((d) => d.code === expected);
+      const found = [...plant.diagnostics].find((d) => d.code === expected);
       expect(found, `${name}: expected ${expected}, got\n${codes.join('\n')}`).toBeDefined();
       expect(found!.line).toBeGreaterThanOrEqual(1);
       if (found!.severity === 'error') expect(plant.ok).toBe(false);

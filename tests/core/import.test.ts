@@ -37,7 +37,7 @@ describe('importGrammar', () => {
     expect(imported.notes[2].message).toContain("'~' without a value");
     // The translation builds in the studio's pipeline without a diagnostic.
     const plant = buildPlant(imported.text);
-    expect(plant.diagnostics).toEqual([]);
+    expect([...plant.diagnostics]).toEqual([]);
     expect(plant.stats.segments).toBeGreaterThan(0);
   }, 300_000); // the first run compiles the release CLI
 
@@ -63,6 +63,6 @@ describe('importGrammar', () => {
     const broken = importGrammar('Lsystem: 1\nAxiom: A\nA --> B(frob(1))\n', 'x.l');
     expect(broken.dialect).toBe('cpfg');
     expect(broken.notes).toEqual([{ line: 3, message: expect.stringContaining("unknown function 'frob'") }]);
-    expect(buildPlant(broken.text).diagnostics.filter((d) => d.severity === 'error')).toEqual([]);
+    expect([...buildPlant(broken.text).diagnostics].filter((d) => d.severity === 'error')).toEqual([]);
   });
 });

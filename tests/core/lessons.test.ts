@@ -20,7 +20,7 @@ async function answer(check: string, source: string, seed?: number): Promise<{ p
   if (!parsed.ok) throw new Error(parsed.error.message);
   const { build, inspector } = inspectPlant(source, seed === undefined ? {} : { seed });
   try {
-    expect(build.diagnostics, source).toEqual([]);
+    expect([...build.diagnostics], source).toEqual([]);
     const seedDirective = writtenDirective(directiveOfKind(await loadVocabulary(), 'Seed'));
     const facts = await plantFacts(parsed.check, build, inspector, writtenSeed(source, seedDirective));
     if (!facts.ok) throw new Error(facts.reason);
@@ -60,7 +60,7 @@ describe('the course', () => {
     it.each(lesson.grammars.map((g) => [g.title, g.text]))('builds %s without a diagnostic', (_title, text) => {
       const { build, inspector } = inspectPlant(text);
       inspector.free();
-      expect(build.diagnostics).toEqual([]);
+      expect([...build.diagnostics]).toEqual([]);
       expect(build.stats.segments).toBeGreaterThan(0);
     });
 

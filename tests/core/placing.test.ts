@@ -28,7 +28,7 @@ describe('placing the turtle by coordinates through the facade', () => {
     const { build, inspector } = inspectPlant(LINES);
     try {
       expect(build.placesByCoordinates).toBe(true);
-      expect(build.diagnostics).toEqual([]);
+      expect([...build.diagnostics]).toEqual([]);
       expect(build.stats.segments).toBe(3 + 3 + 1);
       // The step after the frame goes on up from (0, 5, 0): the plant is 6 tall.
       const [low, high] = build.stats.bounds;

@@ -30,7 +30,7 @@ describe('declared surfaces through the facade', () => {
     const { build, inspector } = inspectPlant(FLOWER);
     try {
       expect(build.declaresSurfaces).toBe(true);
-      expect(build.diagnostics).toEqual([]);
+      expect([...build.diagnostics]).toEqual([]);
       const tube = buildPlant('axiom: F').stats.vertices;
       // The petal at precision 8 (9 × 9 points a patch), the bract at 5 (6 × 6), two sides each.
       expect(build.stats.vertices).toBe(tube + 2 * (2 * 81 + 36));

@@ -1,8 +1,8 @@
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
-import type { BuildStage, PlantBuild } from '../core';
+import type { BuildStage } from '../core';
 import { FakeJobWorker } from './fake-job-worker';
 import { BuildClient, type BuildOutcome, type WorkerLike } from './worker-client';
-import type { InspectAnswer, WorkerRequest, WorkerResponse } from './worker-protocol';
+import type { InspectAnswer, PostedBuild, WorkerRequest, WorkerResponse } from './worker-protocol';
 
 /** A build worker that records requests and answers when the test says so. */
 class FakeWorker extends FakeJobWorker<WorkerRequest, WorkerResponse> implements WorkerLike {
@@ -13,7 +13,7 @@ class FakeWorker extends FakeJobWorker<WorkerRequest, WorkerResponse> implements
   /** Answers request `id` (default: the last one) with a build whose `derived` is its source. */
   answer(id = this.requests.at(-1)!.id): void {
     const request = this.requests.find((r) => r.id === id)!;
-    const build = { ok: true, derived: request.source } as unknown as PlantBuild;
+    const build = { ok: true, derived: request.source } as unknown as PostedBuild;
     this.send({ kind: 'built', id, build, workerMillis: 1, studioCore: false } as WorkerResponse);
   }
   crash(id = this.requests.at(-1)!.id): void {

@@ -1,7 +1,7 @@
 // The page's side of the build worker: one request at a time, the newest waiting request only,
 // stale answers never delivered, and a worker stuck on an outdated build replaced.
 import { type BuildOptions, type BuildProgress, type DerivationStep, type Explanation, type GpuArrays, type LastStepLinks, type BreakpointAnswer, type Lineage, type MatchReport, type PlantBuild, type PlantInspector, type PlantSketch } from '../core';
-import type { BuildResponse, InspectAnswer, InspectQuestion, WorkerRequest, WorkerResponse } from './worker-protocol';
+import { receivedBuild, type BuildResponse, type InspectAnswer, type InspectQuestion, type WorkerRequest, type WorkerResponse } from './worker-protocol';
 import { startBuildWorker, takeEarlyBuildWorker } from './build-worker-start';
 
 /** What the client needs of a Worker (a fake one in unit tests). */
@@ -277,7 +277,7 @@ export class BuildClient {
         const result: BuildResult = {
           source: running.source,
           options: running.options,
-          build: response.build,
+          build: receivedBuild(response.build),
           gpu: response.gpu,
           inspector: new RemoteInspector(this, { worker, build: response.id, source: running.source, options: running.options }),
           workerMillis: response.workerMillis,

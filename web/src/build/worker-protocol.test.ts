@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { readFileSync } from 'node:fs';
 import { initCore, inspectPlant } from '../core';
-import { answerTransferables, progressWanted, PROGRESS_INTERVAL, transferablesOf } from './worker-protocol';
+import { answerTransferables, postedBuild, progressWanted, PROGRESS_INTERVAL, receivedBuild, transferablesOf, type PostedBuild } from './worker-protocol';
 
 await initCore(readFileSync(new URL('../../../crate/pkg-core/meristem_core_bg.wasm', import.meta.url)));
 
@@ -9,17 +9,49 @@ describe('transferablesOf', () => {
   it('lists the buffer of every array of a build once, and moving them leaves nothing behind', () => {
     const { build, inspector, gpu } = inspectPlant('#iterations 2\naxiom: X\nX -> F[+X]F[-X]+X\nF -> FF', {}, { forGpu: true });
     inspector.free();
-    const buffers = transferablesOf(build, gpu);
+    const posted = postedBuild(build);
+    const buffers = transferablesOf(posted, gpu);
     const arrays = [...Object.values(build.mesh), build.origins, gpu.normals, gpu.colors].filter((a) => a !== undefined && a.byteLength > 0); // (growth arrays absent: undefined)
     expect(arrays.length).toBeGreaterThanOrEqual(6);
     for (const array of arrays) expect(buffers).toContain(array.buffer);
     expect(new Set(buffers).size).toBe(buffers.length);
     // What postMessage does with a transfer list: the buffers move, the originals detach.
-    const moved = structuredClone(build, { transfer: buffers });
+    const moved = structuredClone(posted, { transfer: buffers });
     expect(moved.mesh.positions.length).toBeGreaterThan(0);
     expect(build.mesh.positions.length).toBe(0);
   });
+
+  it('moves 100,000 diagnostics as a few arrays, not 100,000 objects the page would deserialise (issue 50)', () => {
+    const { build, inspector, gpu } = inspectPlant(`axiom: F\n${'?\n'.repeat(100_000)}`, {}, { forGpu: true });
+    inspector.free();
+    const posted: PostedBuild = postedBuild(build);
+    const buffers: ArrayBufferLike[] = transferablesOf(posted, gpu);
+    expect(arrayBuffersIn(posted).filter((b) => b.byteLength > 0 && !buffers.includes(b)), 'buffers copied, not moved').toEqual([]);
+    const moved = structuredClone(posted, { transfer: buffers as ArrayBuffer[] });
+    // Everything the page deserialises but the bytes of its typed arrays (moved, not copied).
+    expect(objectsIn(moved), 'objects and strings in the posted build').toBeLessThan(200);
+    const received = receivedBuild(moved);
+    expect(received.diagnostics).toHaveLength(100_000);
+    expect(received.diagnostics.at(99_999)).toMatchObject({ severity: 'error', code: 'E0105', line: 100_001, column: 1 });
+  });
 });
+
+/** The objects and strings reachable from `value`, a typed array counted as one. */
+function objectsIn(value: unknown, seen = new Set<unknown>()): number {
+  if (typeof value === 'string') return 1;
+  if (typeof value !== 'object' || value === null || seen.has(value)) return 0;
+  seen.add(value);
+  if (ArrayBuffer.isView(value)) return 1;
+  return 1 + Object.values(value).reduce((sum: number, v) => sum + objectsIn(v, seen), 0);
+}
+
+/** The buffers of the typed arrays reachable from `value`. */
+function arrayBuffersIn(value: unknown, seen = new Set<unknown>()): ArrayBufferLike[] {
+  if (typeof value !== 'object' || value === null || seen.has(value)) return [];
+  seen.add(value);
+  if (ArrayBuffer.isView(value)) return [value.buffer];
+  return Object.values(value).flatMap((v) => arrayBuffersIn(v, seen));
+}
 
 describe('answerTransferables', () => {
   it('moves an explanation’s module lists, and nothing for other answers', () => {

@@ -1,6 +1,6 @@
 // The messages between the page and the build worker (worker.ts), and the transfer lists that move
 // typed arrays out of the worker without copying them.
-import type { BuildOptions, BuildProgress, GpuArrays, PlantBuild, PlantInspector, PlantSketch } from '../core';
+import { columnBuffers, DiagnosticList, type BuildOptions, type BuildProgress, type DiagnosticColumns, type GpuArrays, type PlantBuild, type PlantInspector, type PlantSketch } from '../core';
 
 /** The questions a kept build answers: the methods of `PlantInspector`, asked by name. */
 export type InspectQuestion = Exclude<keyof PlantInspector, 'free'>;
@@ -62,6 +62,22 @@ export function progressWanted(last: string, next: BuildProgress['stage'], since
   return next !== last && !(last === 'environment' && next === 'deriving');
 }
 
+/**
+ * A build as the worker posts it: its diagnostics as their columns, whose buffers are transferred
+ * with the mesh's (a text of 100,000 problems posted as objects held the page 60–240 ms a build).
+ */
+export type PostedBuild = Omit<PlantBuild, 'diagnostics'> & { diagnostics: DiagnosticColumns };
+
+/** What the worker posts of `build`. */
+export function postedBuild(build: PlantBuild): PostedBuild {
+  return { ...build, diagnostics: build.diagnostics.columns };
+}
+
+/** The build the worker posted, on the page (its diagnostics read from their columns, nothing copied). */
+export function receivedBuild(posted: PostedBuild): PlantBuild {
+  return { ...posted, diagnostics: new DiagnosticList(posted.diagnostics) };
+}
+
 /** Worker → page. */
 export type WorkerResponse =
   /** Build `id` is at this stage or derivation step (at most one per {@link PROGRESS_INTERVAL}, besides stage starts). */
@@ -71,7 +87,7 @@ export type WorkerResponse =
   | {
       kind: 'built';
       id: number;
-      build: PlantBuild;
+      build: PostedBuild;
       /** The mesh's normals and colours packed for the GPU (the view sends these, not the floats). */
       gpu: GpuArrays;
       /** Time of the core call inside the worker, copying the arrays out of wasm memory included. */
@@ -104,10 +120,10 @@ function buffersOf(arrays: readonly ArrayBufferView[]): ArrayBuffer[] {
  * The buffers of every typed array in `build` (and `gpu`), each once: posting them with this transfer
  * list moves them to the other side (no copy) and leaves them detached (length 0) here.
  */
-export function transferablesOf(build: PlantBuild, gpu?: GpuArrays): ArrayBuffer[] {
+export function transferablesOf(build: PostedBuild, gpu?: GpuArrays): ArrayBuffer[] {
   // The mesh's optional arrays (its growth) are absent when not asked for.
   const mesh = Object.values(build.mesh).filter((a): a is ArrayBufferView => ArrayBuffer.isView(a));
-  return buffersOf([...mesh, build.origins, ...(gpu ? [gpu.normals, gpu.colors] : [])]);
+  return [...new Set([...buffersOf([...mesh, build.origins, ...(gpu ? [gpu.normals, gpu.colors] : [])]), ...columnBuffers(build.diagnostics)])];
 }
 
 /** The buffers of an inspect answer (the typed arrays among its fields), for its transfer list. */

@@ -15,6 +15,7 @@ import { CoreCrashed, initCore, inspectPlant, loadStudioCore, needsStudioCore, p
 import {
   answerTransferables,
   type CoreMessage,
+  postedBuild,
   progressWanted,
   SKETCH_MIN_SEGMENTS,
   transferablesOf,
@@ -200,7 +201,8 @@ addEventListener('message', async (event: MessageEvent<WorkerRequest | CoreMessa
       await loadStudioCore();
       plant = await made();
     }
-    const { build, gpu } = plant;
+    const { gpu } = plant;
+    const build = postedBuild(plant.build);
     keep(id, plant, source, options);
     reply({ kind: 'built', id, build, gpu, workerMillis: performance.now() - start, studioCore: studioCoreInUse() }, transferablesOf(build, gpu));
     // While the page draws it and the user edits: buffers for the next build of this size.

@@ -14,6 +14,7 @@ import type {
   PlantEditor as WasmPlantEditor,
   PlantInspector as StudioPlantInspector,
 } from '../../../crate/pkg/meristem.js';
+import { diagnosticList } from './diagnostic-list';
 import { utf16Offsets } from './offsets';
 import { assertReady, guarded, ownedArray } from './init';
 import type { SpareArrays, SpareCopies } from './spare-copies';
@@ -272,7 +273,7 @@ export function plainBuild(source: string, result: WasmPlantBuild, { forGpu = fa
   const toUtf16 = utf16Offsets(source);
   return guarded(() => ({
     ok: result.ok,
-    diagnostics: (JSON.parse(result.diagnostics()) as RawDiagnostic[]).map(toDiagnostic),
+    diagnostics: diagnosticList((JSON.parse(result.diagnostics()) as RawDiagnostic[]).map(toDiagnostic)),
     stats: stats ?? (JSON.parse(result.stats()) as PlantStats),
     mesh: copyMesh(result, { forGpu, spares }),
     derived: result.derived(DERIVED_PREVIEW_CHARS),

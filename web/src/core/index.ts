@@ -40,6 +40,7 @@ export {
   type Vocabulary,
 } from './vocabulary';
 export { byteOffsetToUtf16, utf16Offsets } from './offsets';
+export { columnBuffers, diagnosticList, DiagnosticList, NO_DIAGNOSTICS, type DiagnosticColumns } from './diagnostic-list';
 export { importDerived, importGrammar, importObject, pythonRoute, type Dialect, type ImportedGrammar, type ImportNote, type ObjectFile, type PythonRoute } from './import';
 export {
   applyMeshUpdate,

@@ -2,6 +2,7 @@
 // (the options type is the core's declaration, a type only): the rest of the front end programs
 // against these types only.
 import type { BuildOptions as CoreBuildOptions } from '../../../crate/pkg-core/meristem_core.js';
+import type { DiagnosticList } from './diagnostic-list';
 
 /** How bad a diagnostic is; an `error` means the build produced no geometry. */
 export type Severity = 'error' | 'warning';
@@ -144,7 +145,8 @@ export interface StageTimings {
 export interface PlantBuild {
   /** True when no diagnostic is an error; only then do `mesh` and `stats` describe a plant. */
   ok: boolean;
-  diagnostics: Diagnostic[];
+  /** In source order (by span), as columns: an object made for each one read (./diagnostic-list.ts). */
+  diagnostics: DiagnosticList;
   stats: PlantStats;
   mesh: MeshBuffers;
   /** The derived string, cut to its first {@link DERIVED_PREVIEW_CHARS} characters (then ending in "…"). */

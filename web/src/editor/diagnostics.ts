@@ -1,30 +1,17 @@
 // Core diagnostics shown in the editor: exact ranges, a gutter marker, hover text.
-import { linter, lintGutter, type Diagnostic as EditorDiagnostic } from '@codemirror/lint';
+import { linter, lintGutter } from '@codemirror/lint';
 import { StateEffect, type Extension } from '@codemirror/state';
-import { utf16Offsets, type Diagnostic } from '../core';
+import type { DiagnosticList } from '../core';
+import { ProblemList } from './problem-list';
 import { problems } from './problems';
-import { inTextOrder, markedDiagnostics, problemsUpdate } from './problems-state';
-
-/**
- * Converts the core's diagnostics for `text` (UTF-8 byte spans) into CodeMirror diagnostics
- * (UTF-16 positions, clamped to the text). The code (`E0101`) becomes the diagnostic's source,
- * shown before the message.
- */
-export function toEditorDiagnostics(text: string, diagnostics: readonly Diagnostic[]): EditorDiagnostic[] {
-  const toUtf16 = utf16Offsets(text);
-  return diagnostics.map((d) => {
-    const from = toUtf16(d.fromByte);
-    const to = Math.max(from, toUtf16(d.toByte));
-    return { from, to, severity: d.severity, message: d.message, source: d.code };
-  });
-}
+import { markedDiagnostics, problemsUpdate } from './problems-state';
 
 /**
  * Returns the core's diagnostics for a grammar text, now or later (the studio answers when the
  * build worker delivers that text's build). An answer about a text that is no longer the
  * document's is dropped by the linter.
  */
-export type Diagnose = (text: string) => readonly Diagnostic[] | Promise<readonly Diagnostic[]>;
+export type Diagnose = (text: string) => DiagnosticList | Promise<DiagnosticList>;
 
 /** How long the editor waits after the last edit before showing diagnostics, in ms. */
 export const LINT_DELAY_MS = 400;
@@ -46,7 +33,7 @@ export function grammarLinting(diagnose: Diagnose): Extension {
       async (view) => {
         const { doc } = view.state;
         const text = doc.toString();
-        const all = inTextOrder(toEditorDiagnostics(text, await diagnose(text)));
+        const all = ProblemList.of(text, await diagnose(text));
         // CodeMirror drops an answer about an older text; so do the problems.
         if (view.state.doc === doc) view.dispatch(problemsUpdate(all));
         return markedDiagnostics(all);

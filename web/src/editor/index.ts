@@ -6,7 +6,7 @@ export { createGrammarEditor, type CodeMirrorGrammarEditor } from './grammar-edi
 export { grammarLanguage, grammarHighlightStyle, grammarTags, grammarSupport } from './language';
 export { commandHover, commandHoverText } from './hover';
 export { grammarCompletion, grammarCompletionSource } from './completion';
-export { toEditorDiagnostics, grammarLinting, LINT_DELAY_MS, type Diagnose } from './diagnostics';
+export { grammarLinting, LINT_DELAY_MS, type Diagnose } from './diagnostics';
 export { studioEditorTheme } from './theme';
 export { defineConstants, defineNames, defaultRange, defaultStep, formatNumber, type DefineConstant, type DefineName } from './defines';
 export { growthAttributes, type GrowthAttribute, type GrowthField } from './growth-directives';

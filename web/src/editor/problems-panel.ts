@@ -4,7 +4,7 @@
 // 11 s: issue 50, finding 11). A row shows where (line:column), the message and its code; a cut
 // message is whole in its tooltip and in the line over the list, which shows the chosen problem.
 // Keys in the list as in CodeMirror's: arrows, Page Up/Down, Home/End, Enter (to the text), Escape.
-import type { Diagnostic as EditorDiagnostic } from '@codemirror/lint';
+import type { ProblemList } from './problem-list';
 import type { EditorView, Panel, ViewUpdate } from '@codemirror/view';
 import { closeProblems, count, goToProblem, problemRange, problemsField, type Problems } from './problems-state';
 import './problems-panel.css';
@@ -180,7 +180,7 @@ class ProblemsPanel implements Panel {
   }
 
   private row(problems: Problems, i: number, top: number): HTMLElement {
-    const diagnostic = problems.list[i];
+    const diagnostic = problems.list.at(i);
     const row = element('div', `cm-problem cm-problem-${diagnostic.severity}`);
     row.id = this.idPrefix + i;
     row.dataset.problem = String(i);
@@ -212,15 +212,14 @@ class ProblemsPanel implements Panel {
   }
 
   private describe(problems: Problems, i: number): string {
-    const { message, source } = problems.list[i];
+    const { message, source } = problems.list.at(i);
     return `${this.where(problems, i)} ${message}${source ? ` (${source})` : ''}`;
   }
 }
 
 /** ": 99,998 errors, 2 warnings" when some problems are errors and some not; else "". */
-function severities(list: readonly EditorDiagnostic[]): string {
-  let errors = 0;
-  for (const d of list) if (d.severity === 'error') errors++;
+function severities(list: ProblemList): string {
+  const { errors } = list;
   const others = list.length - errors;
   return errors > 0 && others > 0 ? `: ${count(errors, 'error')}, ${count(others, 'warning')}` : '';
 }

@@ -3,6 +3,7 @@
 import type { Diagnostic as EditorDiagnostic } from '@codemirror/lint';
 import { type ChangeDesc, StateEffect, StateField } from '@codemirror/state';
 import type { Command, EditorView } from '@codemirror/view';
+import { ProblemList } from './problem-list';
 
 /** The most diagnostics the text is marked with (the panel and F8 reach every one). */
 export const MAX_MARKED = 1000;
@@ -10,7 +11,7 @@ export const MAX_MARKED = 1000;
 /** The text's diagnostics and the panel's state. */
 export interface Problems {
   /** In document order (by start, then end), with positions in the text they were made for. */
-  readonly list: readonly EditorDiagnostic[];
+  readonly list: ProblemList;
   /** The text's changes since then: positions are mapped through them when read (mapping 100,000 on every keystroke would cost). */
   readonly since: ChangeDesc | null;
   /** The panel is shown. */
@@ -19,12 +20,12 @@ export interface Problems {
   readonly selected: number;
 }
 
-const setProblems = StateEffect.define<readonly EditorDiagnostic[]>();
+const setProblems = StateEffect.define<ProblemList>();
 const showProblems = StateEffect.define<boolean>();
 const chooseProblem = StateEffect.define<number>();
 
 export const problemsField = StateField.define<Problems>({
-  create: () => ({ list: [], since: null, open: false, selected: -1 }),
+  create: () => ({ list: ProblemList.NONE, since: null, open: false, selected: -1 }),
   update(value, transaction) {
     let next = value;
     if (transaction.docChanged && value.list.length > 0) {
@@ -40,26 +41,19 @@ export const problemsField = StateField.define<Problems>({
   },
 });
 
-/** Sorts diagnostics into document order (stable: the core's order among equal ranges). */
-export function inTextOrder(diagnostics: readonly EditorDiagnostic[]): EditorDiagnostic[] {
-  return diagnostics
-    .map((d, i) => ({ d, i }))
-    .sort((a, b) => a.d.from - b.d.from || a.d.to - b.d.to || a.i - b.i)
-    .map(({ d }) => d);
-}
-
 /**
  * The diagnostics the text is marked with, of a list in document order: the first
  * {@link MAX_MARKED}, and past them one note where the first unmarked one starts.
  */
-export function markedDiagnostics(list: readonly EditorDiagnostic[]): EditorDiagnostic[] {
-  if (list.length <= MAX_MARKED) return [...list];
+export function markedDiagnostics(list: ProblemList): EditorDiagnostic[] {
+  const marked = Array.from({ length: Math.min(list.length, MAX_MARKED) }, (_, i) => list.at(i));
+  if (list.length <= MAX_MARKED) return marked;
   const rest = list.length - MAX_MARKED;
-  const at = list[MAX_MARKED].from;
+  const at = list.range(MAX_MARKED).from;
   const message =
     `${count(rest, 'more problem')} from here on ${rest === 1 ? 'is' : 'are'} not marked in the text: ` +
     `Problems (Ctrl+Shift+M) lists all ${list.length.toLocaleString('en')}, and F8 goes to the next one`;
-  return [...list.slice(0, MAX_MARKED), { from: at, to: at, severity: 'info', message }];
+  return [...marked, { from: at, to: at, severity: 'info', message }];
 }
 
 /** "1 problem", "100,000 problems". */
@@ -68,7 +62,7 @@ export function count(n: number, noun: string): string {
 }
 
 /** The transaction that gives the text's diagnostics now (from the linter, in document order). */
-export function problemsUpdate(list: readonly EditorDiagnostic[]): { effects: StateEffect<unknown> } {
+export function problemsUpdate(list: ProblemList): { effects: StateEffect<unknown> } {
   return { effects: setProblems.of(list) };
 }
 
@@ -86,7 +80,7 @@ export const closeProblems: Command = (view) => {
 
 /** Where problem `i` is in the text now. */
 export function problemRange(problems: Problems, i: number): { from: number; to: number } {
-  const { from, to } = problems.list[i];
+  const { from, to } = problems.list.range(i);
   if (!problems.since) return { from, to };
   const start = problems.since.mapPos(from, 1);
   return { from: start, to: Math.max(start, problems.since.mapPos(to, -1)) };

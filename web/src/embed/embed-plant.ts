@@ -399,7 +399,7 @@ export class EmbedPlant {
       this.view?.showPlant(...this.lastPlant);
       this.say(this.viewProblem);
     } else {
-      const first = build.diagnostics.find((d) => d.severity === 'error');
+      const first = build.diagnostics.first('error');
       this.say(first ? `Line ${first.line}: ${first.message}` : 'The grammar has errors.');
     }
     this.count.textContent = `n = ${options.iterations ?? build.grammarIterations}`;

@@ -1,8 +1,7 @@
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
-import type { PlantBuild } from '../core';
 import { FakeJobWorker } from '../build/fake-job-worker';
 import type { BuildOutcome, WorkerLike } from '../build';
-import type { WorkerRequest, WorkerResponse } from '../build/worker-protocol';
+import type { PostedBuild, WorkerRequest, WorkerResponse } from '../build/worker-protocol';
 import { SharedBuilds } from './shared-builds';
 
 /** A build worker that answers when the test says so. */
@@ -12,7 +11,7 @@ class FakeWorker extends FakeJobWorker<WorkerRequest, WorkerResponse> implements
   }
   answer(): void {
     const request = this.requests.at(-1)!;
-    const build = { ok: true, derived: request.source } as unknown as PlantBuild;
+    const build = { ok: true, derived: request.source } as unknown as PostedBuild;
     this.send({ kind: 'built', id: request.id, build, workerMillis: 1, studioCore: false } as WorkerResponse);
   }
 }

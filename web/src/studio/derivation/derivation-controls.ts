@@ -4,7 +4,7 @@
 // that clears it (empty, its placeholder is the grammar's value); it is cleared when another text
 // is opened or the grammar's own iterations line is edited, and the errors its value causes (the
 // step and module limits) are told in the notice bar, since the text has nothing to mark for them.
-import { directiveOfKind, languageVocabulary, type Diagnostic, type PlantBuild } from '../../core';
+import { directiveOfKind, languageVocabulary, type DiagnosticList, type PlantBuild } from '../../core';
 import { findDirective } from '../../editor/directive-lines';
 import type { SharedState } from '../../share';
 import type { Notice } from '../page';
@@ -47,9 +47,9 @@ const OVERRIDE_TOPIC = 'iterations';
  * What the notice bar says about a build made with the box's `override` of the grammar's
  * iterations: the errors that number causes (the core's messages), or null when there are none.
  */
-export function overrideErrors(override: number | undefined, grammarIterations: number, diagnostics: readonly Diagnostic[]): { message: string; items: string[] } | null {
+export function overrideErrors(override: number | undefined, grammarIterations: number, diagnostics: DiagnosticList): { message: string; items: string[] } | null {
   if (override === undefined) return null;
-  const errors = diagnostics.filter((d) => d.severity === 'error' && ITERATION_ERRORS.has(d.code));
+  const errors = diagnostics.where((severity, code) => severity === 'error' && ITERATION_ERRORS.has(code)).slice();
   if (errors.length === 0) return null;
   return {
     message: `${override} iterations, from the Iterations box (the grammar's own: ${grammarIterations}), are too many:`,
@@ -117,9 +117,9 @@ export class DerivationControls {
   }
 
   /** The diagnostics the text shows: not the limits the box's number passes (the box says those). */
-  ofText(diagnostics: readonly Diagnostic[]): readonly Diagnostic[] {
+  ofText(diagnostics: DiagnosticList): DiagnosticList {
     const n = this.iterations();
-    return n === undefined || n === this.grammarIterations ? diagnostics : diagnostics.filter((d) => !ITERATION_ERRORS.has(d.code));
+    return n === undefined || n === this.grammarIterations ? diagnostics : diagnostics.where((_, code) => !ITERATION_ERRORS.has(code));
   }
 
   /** The seed asked for; undefined: the grammar's own. */
@@ -138,7 +138,7 @@ export class DerivationControls {
    * unknown), the errors the box's value caused are told, and playback goes on.
    */
   buildShown(build: Pick<PlantBuild, 'grammarIterations' | 'diagnostics'>): void {
-    if (build.diagnostics.every((d) => d.severity !== 'error' || ITERATION_ERRORS.has(d.code))) this.grammarIterations = build.grammarIterations;
+    if (!build.diagnostics.some((severity, code) => severity === 'error' && !ITERATION_ERRORS.has(code))) this.grammarIterations = build.grammarIterations;
     const errors = overrideErrors(this.iterations(), this.grammarIterations, build.diagnostics);
     this.tooMany = errors !== null;
     if (errors) this.notice?.show('error', errors.message, errors.items, OVERRIDE_TOPIC);

@@ -30,7 +30,7 @@ export async function judge(check: string, text: string, builder: GrammarBuilder
   const built = await builder(text);
   if (!built.ok) return { state: 'error', said: `Could not build the grammar: ${built.reason}.` };
   try {
-    const error = built.build.diagnostics.find((d) => d.severity === 'error');
+    const error = built.build.diagnostics.first('error');
     if (error || !built.build.ok) {
       const first = error ? { line: error.line, message: error.message } : { line: 1, message: 'the grammar has errors' };
       return { state: 'error', said: `Not yet: the grammar has errors (line ${first.line}: ${first.message}).`, error: first };
@@ -69,7 +69,7 @@ async function grammarProblems(text: string, line: number, builder: GrammarBuild
   if (!built.ok) return [{ line, field: 'grammar', message: `could not build this grammar: ${built.reason}` }];
   built.inspector.free();
   return built.build.diagnostics
-    .filter((d) => d.severity === 'error')
+    .where((severity) => severity === 'error')
     .slice(0, 5)
     .map((d) => ({ line: line + d.line - 1, field: 'grammar', message: `the grammar has an error: ${d.message}` }));
 }

@@ -2,7 +2,7 @@
 // only the newest one is shown. A grammar with errors keeps the last good plant on screen, marked
 // stale. A build that takes a while says so ("Building… step k of n") with a Stop button. The
 // editor's linter gets its diagnostics from the same builds (DiagnosticsFeed).
-import type { BuildOptions, BuildProgress, Diagnostic, PlantSketch } from '../../core';
+import { NO_DIAGNOSTICS, type BuildOptions, type BuildProgress, type DiagnosticList, type PlantSketch } from '../../core';
 import type { PlantView } from '../../view';
 import { DiagnosticsFeed } from './diagnostics-feed';
 import { reportBuilding, reportErrors, reportPlant, type StatusReport } from './status';
@@ -48,7 +48,7 @@ export interface LivePreviewParts {
    * The diagnostics the text is to answer for (its linter's, the status line's): without those
    * the options caused, which say so where they are set (the Iterations box's limits).
    */
-  blamed?: (diagnostics: readonly Diagnostic[]) => readonly Diagnostic[];
+  blamed?: (diagnostics: DiagnosticList) => DiagnosticList;
   /** Called when a build's diagnostics may differ from what the linter showed for the same text. */
   diagnosticsChanged: () => void;
   /**
@@ -273,7 +273,7 @@ export class LivePreview {
         this.parts.crashed?.(outcome.message);
       }
       this.requestedKey = undefined; // the same text may be tried again, on a fresh worker
-      this.feed.delivered(this.parts.text(), []);
+      this.feed.delivered(this.parts.text(), NO_DIAGNOSTICS);
       const shown = this.lastGood !== undefined;
       if (outcome.kind === 'crashed') {
         showStatus(status, { state: 'crashed', text: 'The core crashed on this grammar (a bug); edit to try again' });
@@ -293,7 +293,7 @@ export class LivePreview {
     const { build } = result;
     const sameText = this.lastResult?.source === result.source;
     const blamed = this.parts.blamed?.(build.diagnostics) ?? build.diagnostics;
-    const own = blamed.some((d) => d.severity === 'error');
+    const own = blamed.count('error') > 0;
     if (build.ok) {
       view.showPlant(build.mesh, build.flat, result.gpu, build.stats.bounds);
       this.lastGood = result;

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import type { Diagnostic, PlantStats } from '../../core';
+import { diagnosticList, NO_DIAGNOSTICS, type Diagnostic, type PlantStats } from '../../core';
 import { plural, reportBuilding, reportErrors, reportPlant } from './status';
 
 const stats: PlantStats = {
@@ -29,35 +29,35 @@ describe('status line', () => {
   const timings = { parseResolve: 0.04, derive: 1.25, interpret: 12.5, mesh: 61.3 };
 
   it('reports the sizes, the time of each stage and the whole round trip', () => {
-    expect(reportPlant(stats, [], timings, 83.14159)).toEqual({
+    expect(reportPlant(stats, NO_DIAGNOSTICS, timings, 83.14159)).toEqual({
       state: 'ok',
       text:
         '12,345 modules · 1 segment · 1,024 vertices · 2,000 triangles · ' +
         'parse+resolve 0.0 · derive 1.3 · interpret 13 · mesh 61 ms · 83 ms round trip',
     });
-    expect(reportPlant(stats, [diagnostic('warning')], timings, 4.24).text).toMatch(/· 4\.2 ms round trip · 1 warning$/);
+    expect(reportPlant(stats, diagnosticList([diagnostic('warning')]), timings, 4.24).text).toMatch(/· 4\.2 ms round trip · 1 warning$/);
   });
 
   it('says "drawn as lines" for a plant with segments and no mesh (the Lines mode), not "0 vertices"', () => {
     const lines = { ...stats, vertices: 0, triangles: 0, lines: 0 };
-    expect(reportPlant(lines, [], timings, 9).text).toMatch(/^12,345 modules · 1 segment · drawn as lines · parse\+resolve /);
+    expect(reportPlant(lines, NO_DIAGNOSTICS, timings, 9).text).toMatch(/^12,345 modules · 1 segment · drawn as lines · parse\+resolve /);
     const empty = { ...stats, segments: 0, vertices: 0, triangles: 0, lines: 0 };
-    expect(reportPlant(empty, [], timings, 9).text).toMatch(/· 0 segments · 0 vertices · 0 triangles ·/);
+    expect(reportPlant(empty, NO_DIAGNOSTICS, timings, 9).text).toMatch(/· 0 segments · 0 vertices · 0 triangles ·/);
   });
 
   it('says when a model too large to mesh is drawn as lines', () => {
     const huge = { ...stats, vertices: 0, triangles: 0, lines: 2000000 };
-    expect(reportPlant(huge, [], timings, 900).text).toMatch(/· too large to mesh: 2,000,000 segments drawn as lines$/);
+    expect(reportPlant(huge, NO_DIAGNOSTICS, timings, 900).text).toMatch(/· too large to mesh: 2,000,000 segments drawn as lines$/);
   });
 
   it('reports errors, whether the last good plant is still shown, and the first error in words', () => {
     const twoErrors = [diagnostic('warning'), diagnostic('error'), diagnostic('error')];
     twoErrors[1] = { ...twoErrors[1], line: 3, message: 'the derivation needs 9 GiB; lower #max_modules' };
-    expect(reportErrors(twoErrors, true)).toEqual({
+    expect(reportErrors(diagnosticList(twoErrors), true)).toEqual({
       state: 'stale',
       text: '2 errors — showing last good plant · line 3: the derivation needs 9 GiB; lower #max_modules',
     });
-    expect(reportErrors([diagnostic('error')], false)).toEqual({ state: 'error', text: '1 error — no plant yet · line 1: m' });
+    expect(reportErrors(diagnosticList([diagnostic('error')]), false)).toEqual({ state: 'error', text: '1 error — no plant yet · line 1: m' });
   });
 
   it('says what a build is doing, never a plant’s figures', () => {

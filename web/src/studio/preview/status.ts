@@ -1,5 +1,5 @@
 // The status line's text, as pure functions of a build (tested without a page).
-import type { BuildProgress, Diagnostic, PlantStats, StageTimings } from '../../core';
+import type { BuildProgress, DiagnosticList, PlantStats, StageTimings } from '../../core';
 
 /** What the status line shows after a build. */
 export interface StatusReport {
@@ -27,7 +27,7 @@ export function millis(ms: number): string {
  */
 export function reportPlant(
   stats: PlantStats,
-  diagnostics: readonly Diagnostic[],
+  diagnostics: DiagnosticList,
   timings: StageTimings,
   totalMillis: number,
 ): StatusReport {
@@ -42,7 +42,7 @@ export function reportPlant(
     `parse+resolve ${millis(timings.parseResolve)} · derive ${millis(timings.derive)} · interpret ${millis(timings.interpret)} · mesh ${millis(timings.mesh)} ms`,
     `${millis(totalMillis)} ms round trip`,
   ];
-  const warnings = diagnostics.filter((d) => d.severity === 'warning').length;
+  const warnings = diagnostics.count('warning');
   if (warnings > 0) parts.push(plural(warnings, 'warning'));
   if (stats.lines > 0) parts.push(`too large to mesh: ${plural(stats.lines, 'segment')} drawn as lines`);
   return { state: 'ok', text: parts.join(' · ') };
@@ -53,10 +53,10 @@ export function reportPlant(
  * The first error follows in words (with its line): when a limit was hit (steps, modules, memory)
  * the core's message says what to change, and it is said where the user is looking.
  */
-export function reportErrors(diagnostics: readonly Diagnostic[], hasPlant: boolean): StatusReport {
-  const all = diagnostics.filter((d) => d.severity === 'error');
-  const errors = plural(all.length, 'error');
-  const first = all[0] ? ` · line ${all[0].line}: ${all[0].message}` : '';
+export function reportErrors(diagnostics: DiagnosticList, hasPlant: boolean): StatusReport {
+  const errors = plural(diagnostics.count('error'), 'error');
+  const error = diagnostics.first('error');
+  const first = error ? ` · line ${error.line}: ${error.message}` : '';
   return hasPlant
     ? { state: 'stale', text: `${errors} — showing last good plant${first}` }
     : { state: 'error', text: `${errors} — no plant yet${first}` };

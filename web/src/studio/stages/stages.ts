@@ -135,7 +135,7 @@ export function figurePlant(caption: string, result: BuildResult | 'superseded' 
   if (result === 'crashed') return { ...empty, caption: `${caption}: the core crashed` };
   result.inspector.free();
   const { build } = result;
-  if (!build.ok) return { ...empty, caption: `${caption}: ${build.diagnostics.find((d) => d.severity === 'error')?.message ?? 'errors'}` };
+  if (!build.ok) return { ...empty, caption: `${caption}: ${build.diagnostics.first('error')?.message ?? 'errors'}` };
   const drawn = build.mesh.indices.length > 0 || build.mesh.lines.length > 0;
   if (!drawn) return { ...empty, caption: `${caption} (nothing drawn)` };
   return { mesh: build.mesh, gpu: result.gpu, lines: sketch, flat: build.flat, bounds: build.stats.bounds, caption };

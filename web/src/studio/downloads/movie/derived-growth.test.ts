@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import type { BuildResult } from '../../../build';
+import { diagnosticList } from '../../../core';
 import { derivedGrowth, type DerivedStudio } from './derived-growth';
 
 /**
@@ -38,7 +39,7 @@ function fakeStudio(span: number | null, fails: (at: number | null) => string | 
         return building === undefined;
       },
       get lastResult() {
-        return last && ({ build: { ok: last.ok, diagnostics: last.ok ? [] : [{ severity: 'error', message: last.message }] } } as unknown as BuildResult);
+        return last && ({ build: { ok: last.ok, diagnostics: diagnosticList(last.ok ? [] : [{ severity: 'error', code: 'E0400', message: last.message, fromByte: 0, toByte: 0, line: 1, column: 1 }]) } } as unknown as BuildResult);
       },
     },
     uploading: () => uploading,

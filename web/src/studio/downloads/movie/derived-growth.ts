@@ -36,7 +36,7 @@ function problem(preview: DerivedStudio['preview'], t: number): string | null {
   if (!preview.settled) return `the build at t = ${t} was stopped, or the core crashed on it`;
   const build = preview.lastResult?.build;
   if (build?.ok) return null;
-  const error = build?.diagnostics.find((d) => d.severity === 'error');
+  const error = build?.diagnostics.first('error');
   return `the grammar has errors at t = ${t}${error ? `: ${error.message}` : ''}`;
 }
 
