@@ -13,7 +13,24 @@ use crate::diagnostics::{has_errors, LineIndex, Severity};
 pub(crate) struct Output {
     lines: Vec<(String, usize)>,
     notes: Vec<ImportNote>,
+    /// The bytes of `lines`, each with its line end.
+    bytes: usize,
+    /// The source line whose translation would have passed [`MAX_OUTPUT`]: nothing from it on
+    /// is written.
+    cut_at: Option<usize>,
+    /// Notes past [`MAX_NOTES`], counted, not kept.
+    notes_left_out: usize,
 }
+
+/// The most bytes of lines an importer writes (the check then marks the lines Meristem rejects
+/// `// not imported:`, a few bytes more each). Real models translate to at most about a
+/// megabyte (an L-Py model whose string is derived when imported); a 45 KB cpfg file of macros
+/// 10,000 modules long translated to 20 MB, and 1.2 GB of memory, before this cap.
+pub(crate) const MAX_OUTPUT: usize = 4 << 20;
+
+/// The most notes an import lists; the rest are counted in one last note. Each rejected line has
+/// a note quoting it, and 200,000 rejected lines made tens of megabytes of notes.
+pub(crate) const MAX_NOTES: usize = 1_000;
 
 /// How many times [`Output::finish`] re-checks after commenting out rejected lines.
 const MAX_REPAIRS: usize = 64;
@@ -28,6 +45,14 @@ impl Output {
         // `\n`, `\r\n` or a lone `\r` (a `\r` in a name of a mutated `.vset` made `#define SIM_END`
         // the line commented out in place of the one in error).
         for part in text.replace("\r\n", "\n").split(['\n', '\r']) {
+            if self.cut_at.is_some() {
+                return;
+            }
+            if self.bytes + part.len() + 1 > MAX_OUTPUT {
+                self.cut_at = Some(source);
+                return;
+            }
+            self.bytes += part.len() + 1;
             self.lines.push((part.to_string(), source));
         }
     }
@@ -45,8 +70,13 @@ impl Output {
         };
         // One source line translated into several productions says each thing once (the notes
         // of one line are written together: the last few are enough to look at).
-        if !self.notes.iter().rev().take(16).any(|n| *n == note) {
+        if self.notes.iter().rev().take(16).any(|n| *n == note) {
+            return;
+        }
+        if self.notes.len() < MAX_NOTES {
             self.notes.push(note);
+        } else {
+            self.notes_left_out += 1;
         }
     }
 
@@ -64,7 +94,7 @@ impl Output {
             }
             let index = LineIndex::new(&text);
             let mut repaired = false;
-            let mut seen = Vec::new();
+            let mut seen = std::collections::HashSet::new();
             for d in diagnostics.iter().filter(|d| d.severity == Severity::Error) {
                 if d.code == "E0300" {
                     let message = "nothing to derive: no axiom could be imported".to_string();
@@ -77,10 +107,9 @@ impl Output {
                 let Some((content, source)) = self.lines.get(line - 1).cloned() else {
                     continue;
                 };
-                if seen.contains(&line) || content.trim_start().starts_with("//") {
+                if content.trim_start().starts_with("//") || !seen.insert(line) {
                     continue;
                 }
-                seen.push(line);
                 self.lines[line - 1].0 = format!("// not imported: {}", defuse_comment(&content));
                 self.note(
                     source,
@@ -96,10 +125,33 @@ impl Output {
                 break;
             }
         }
+        self.note_the_caps();
         self.notes.sort_by_key(|n| n.line);
         Import {
             text: self.text(),
             notes: self.notes,
+        }
+    }
+
+    /// The notes that say what the caps left out (kept whatever [`MAX_NOTES`] says).
+    fn note_the_caps(&mut self) {
+        if let Some(line) = self.cut_at {
+            self.notes.push(ImportNote {
+                line,
+                message: format!(
+                    "the translation passes {} MB here: the rest of the file is left out",
+                    MAX_OUTPUT >> 20
+                ),
+            });
+        }
+        if self.notes_left_out > 0 {
+            self.notes.push(ImportNote {
+                line: 0,
+                message: format!(
+                    "{} more notes are not listed (only the first {MAX_NOTES} are)",
+                    self.notes_left_out
+                ),
+            });
         }
     }
 
@@ -121,6 +173,7 @@ impl Output {
             inserted.line(line, 0);
         }
         let index = index.min(self.lines.len());
+        self.bytes += inserted.bytes;
         self.lines.splice(index..index, inserted.lines);
     }
 
@@ -128,11 +181,13 @@ impl Output {
     /// `text` becomes a space: the line stays one line, so the lines after it keep their places.
     pub fn replace(&mut self, index: usize, text: String) {
         if let Some(line) = self.lines.get_mut(index) {
-            line.0 = if text.contains(['\r', '\n']) {
+            let text = if text.contains(['\r', '\n']) {
                 text.replace(['\r', '\n'], " ")
             } else {
                 text
             };
+            self.bytes = self.bytes - line.0.len() + text.len();
+            line.0 = text;
         }
     }
 
@@ -170,4 +225,40 @@ pub(crate) fn defuse_comment(text: &str) -> String {
     text.replace("/*", "/ *")
         .replace("*/", "* /")
         .replace(['\r', '\n'], " ")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_text_stops_at_its_cap_with_a_note_at_the_line_that_passed_it() {
+        let mut out = Output::default();
+        // Comments, which the check leaves as they are.
+        let line = format!("// {}", "F".repeat(996));
+        for source in 1..=5000 {
+            out.line(line.clone(), source);
+        }
+        let import = out.finish();
+        assert!(import.text.len() <= MAX_OUTPUT, "{}", import.text.len());
+        // 1,000 bytes a line with its end: line 4,195 is the first that does not fit.
+        let cut = import.notes.iter().find(|n| n.message.contains("passes 4 MB"));
+        assert_eq!(cut.map(|n| n.line), Some(MAX_OUTPUT / 1000 + 1), "{:?}", import.notes);
+    }
+
+    #[test]
+    fn notes_past_their_cap_are_counted_in_one_note() {
+        let mut out = Output::default();
+        out.line("axiom: F", 1);
+        for line in 1..=1500 {
+            out.note(line, format!("note {line}"));
+        }
+        let import = out.finish();
+        assert_eq!(import.notes.len(), MAX_NOTES + 1);
+        assert_eq!(import.notes[0].line, 0);
+        assert_eq!(
+            import.notes[0].message,
+            "500 more notes are not listed (only the first 1000 are)"
+        );
+    }
 }

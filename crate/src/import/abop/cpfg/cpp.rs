@@ -36,6 +36,10 @@ const MAX_LINE: usize = 100_000;
 /// each other several times grow as a power of that count however shallow (issue 50, 6: eight
 /// files of 400 bytes ran for minutes).
 const MAX_INCLUDED: usize = 1 << 20;
+/// The most bytes the expansion of macros may add to a file, all lines together: each line's
+/// own caps still let a 45 KB file of 2,000 lines, each using a macro 20,000 characters long,
+/// grow to 40 MB, which took the importer 1.2 GB (issue 50).
+const MAX_GROWTH: usize = 1 << 20;
 
 /// The preprocessor's state.
 pub(in crate::import::abop) struct Preprocessor<'a> {
@@ -50,6 +54,8 @@ pub(in crate::import::abop) struct Preprocessor<'a> {
     functions: &'a [&'a str],
     /// The bytes `#include` brought in so far; past [`MAX_INCLUDED`] once it refused a file.
     included: usize,
+    /// The bytes expansion added so far; [`MAX_GROWTH`] at most.
+    grown: usize,
 }
 
 /// One level of `#if`: is this branch taken, was one taken already, was the enclosing one active.
@@ -68,6 +74,7 @@ impl<'a> Preprocessor<'a> {
             notes: Vec::new(),
             functions,
             included: 0,
+            grown: 0,
         }
     }
 
@@ -368,6 +375,23 @@ impl<'a> Preprocessor<'a> {
                 ));
                 return text;
             }
+            let growth = replacement.len().saturating_sub(end - start);
+            if self.grown + growth > MAX_GROWTH {
+                if self.grown <= MAX_GROWTH {
+                    self.notes.push((
+                        n,
+                        format!(
+                            "the macros of this file add more than {} MB to it: from here on \
+                             they are left unexpanded",
+                            MAX_GROWTH >> 20
+                        ),
+                    ));
+                    // Said once: every later use finds the budget passed.
+                    self.grown = MAX_GROWTH + 1;
+                }
+                return text;
+            }
+            self.grown += growth;
             text.replace_range(start..end, &replacement);
             // Rescan the replacement (nested macros), but a macro met again at the same place
             // is cpp's recursion, which stops; MAX_EXPANSIONS bounds it here.
