@@ -13,6 +13,10 @@ use meristem::pipeline::{build, Build, BuildOptions};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::path::{Path, PathBuf};
 
+#[path = "shared/seeded.rs"]
+mod seeded;
+use seeded::Seeded;
+
 fn corpus_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/hostile")
 }
@@ -180,22 +184,6 @@ fn every_hostile_grammar_gives_its_result_or_its_diagnostic() {
             .collect()
     });
     assert!(failures.is_empty(), "{}", failures.join("\n"));
-}
-
-/// A small seeded generator (SplitMix64), so a failing case is found again from its seed.
-struct Seeded(u64);
-
-impl Seeded {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    fn below(&mut self, n: usize) -> usize {
-        (self.next() % n.max(1) as u64) as usize
-    }
 }
 
 /// Pieces a mutation inserts: the syntax the audit found fragile, and extreme numbers.
