@@ -6,7 +6,7 @@
 // problems: the task that receives the build (the worker's message: its deserialisation, the
 // preview's delivery, the status line) and the linter's task (the conversion to CodeMirror
 // diagnostics, their order, the Problems panel's state). Medians go to
-// test-results/bench-diagnostics.json. Not part of `npm test`. KEYSTROKES=N types fewer keys; PROFILE_OUT=path writes each keystroke's CPU profile
+// test-results/bench-diagnostics.json. Run by `npm run bench:studio`, not part of `npm test`. KEYSTROKES=N types fewer keys; PROFILE_OUT=path writes each keystroke's CPU profile
 // (path-N.cpuprofile, for Chromium's DevTools).
 import { writeFileSync } from 'node:fs';
 import { chromium } from 'playwright-core';
