@@ -242,8 +242,16 @@ mod tests {
         let import = out.finish();
         assert!(import.text.len() <= MAX_OUTPUT, "{}", import.text.len());
         // 1,000 bytes a line with its end: line 4,195 is the first that does not fit.
-        let cut = import.notes.iter().find(|n| n.message.contains("passes 4 MB"));
-        assert_eq!(cut.map(|n| n.line), Some(MAX_OUTPUT / 1000 + 1), "{:?}", import.notes);
+        let cut = import
+            .notes
+            .iter()
+            .find(|n| n.message.contains("passes 4 MB"));
+        assert_eq!(
+            cut.map(|n| n.line),
+            Some(MAX_OUTPUT / 1000 + 1),
+            "{:?}",
+            import.notes
+        );
     }
 
     #[test]
