@@ -10,6 +10,12 @@ import type { SurfaceEditing } from './surfaces';
 export interface StudioTestHook {
   /** Settles when the first build is on screen (rejects if the studio could not start). */
   ready: Promise<void>;
+  /**
+   * Set by a test: the time an import may take, in ms, instead of the studio's 10 s. The importers
+   * now translate any file the studio opens (up to 1 MB) in a few seconds, so the test of the
+   * limit lowers it rather than look for a slower file.
+   */
+  importTimeLimitMs?: number;
   /** Stats of the plant on screen. */
   lastStats: PlantStats | null;
   /** `Date.now()` when the first plant (a build with segments) arrived: the first-load test's end. */

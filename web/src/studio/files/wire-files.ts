@@ -35,11 +35,11 @@ export function createOpening(
       keeper: parts.keeper,
       readFile: async (file) => {
         const { readGrammarFile, createImportWorker } = await importClient();
-        return readGrammarFile(file, { createWorker: createImportWorker, notice });
+        return readGrammarFile(file, { createWorker: createImportWorker, notice, limitMs: window.__meristem?.importTimeLimitMs });
       },
       readFiles: async (files, name) => {
         const { readObjectFiles, createImportWorker } = await importClient();
-        return readObjectFiles(files, name, { createWorker: createImportWorker, notice });
+        return readObjectFiles(files, name, { createWorker: createImportWorker, notice, limitMs: window.__meristem?.importTimeLimitMs });
       },
       notice,
       forgetText: () => {
