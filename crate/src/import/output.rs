@@ -94,7 +94,6 @@ impl Output {
             }
             let index = LineIndex::new(&text);
             let mut repaired = false;
-            let mut seen = std::collections::HashSet::new();
             for d in diagnostics.iter().filter(|d| d.severity == Severity::Error) {
                 if d.code == "E0300" {
                     let message = "nothing to derive: no axiom could be imported".to_string();
@@ -107,7 +106,8 @@ impl Output {
                 let Some((content, source)) = self.lines.get(line - 1).cloned() else {
                     continue;
                 };
-                if content.trim_start().starts_with("//") || !seen.insert(line) {
+                // A line commented out already (by an earlier error on it too) is left as it is.
+                if content.trim_start().starts_with("//") {
                     continue;
                 }
                 self.lines[line - 1].0 = format!("// not imported: {}", defuse_comment(&content));
@@ -181,11 +181,7 @@ impl Output {
     /// `text` becomes a space: the line stays one line, so the lines after it keep their places.
     pub fn replace(&mut self, index: usize, text: String) {
         if let Some(line) = self.lines.get_mut(index) {
-            let text = if text.contains(['\r', '\n']) {
-                text.replace(['\r', '\n'], " ")
-            } else {
-                text
-            };
+            let text = one_line(&text);
             self.bytes = self.bytes - line.0.len() + text.len();
             line.0 = text;
         }
@@ -222,9 +218,13 @@ fn excerpt(text: &str) -> String {
 /// would end the comment (Meristem's parser ends a line at a lone `\r` too: an unclosed cpfg
 /// comment `/*z\r]` was written as `// z\r]`, and its `]` became a line of its own).
 pub(crate) fn defuse_comment(text: &str) -> String {
-    text.replace("/*", "/ *")
-        .replace("*/", "* /")
-        .replace(['\r', '\n'], " ")
+    one_line(&text.replace("/*", "/ *").replace("*/", "* /"))
+}
+
+/// `text` with each line break (`\n`, or a lone `\r`, which Meristem's parser also ends a line
+/// at) made a space.
+fn one_line(text: &str) -> String {
+    text.replace(['\r', '\n'], " ")
 }
 
 #[cfg(test)]
