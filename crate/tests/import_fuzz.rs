@@ -142,8 +142,9 @@ fn files() -> Vec<(String, String, Dialect)> {
         .collect()
 }
 
-/// Issue 50's bombs, and one that passed every cap of a line: 2,000 lines each using a macro of
-/// 10,000 modules (45 KB of cpfg that was 20 MB of text and 1.2 GB of memory).
+/// Issue 50's bombs, one that passed every cap of a line (2,000 lines each using a macro of
+/// 10,000 modules: 45 KB of cpfg that was 20 MB of text and 1.2 GB of memory), and twenty L-Py
+/// flags (their markers in one probe derivation).
 fn bombs() -> Vec<(String, String, Dialect)> {
     let cpfg = |head: &str, body: &str| {
         format!(
@@ -162,6 +163,17 @@ fn bombs() -> Vec<(String, String, Dialect)> {
     let uses: String = (0..2000)
         .map(|k| format!("A < A > A : {k} --> E\n"))
         .collect();
+    // L-Py globals that productions set once (flags): the importer derives the model to find
+    // when each is set, once per seed for all of them.
+    let names: Vec<String> = (0..20).map(|k| format!("Pa{k}")).collect();
+    let mut flags = format!("module {}\n", names.join(", "));
+    flags += &(0..20).map(|k| format!("m{k} = 0\n")).collect::<String>();
+    let axiom: String = names.iter().map(|n| format!("{n}(0)")).collect();
+    flags += &format!("derivation length: 30\nAxiom: {axiom}X(0)\nproduction:\n");
+    flags += "X(n) :\n    if n < 6: produce X(n+1)X(n+1)\n";
+    for (k, name) in names.iter().enumerate() {
+        flags += &format!("{name}(t) :\n    if t < {}: produce {name}(t+1)\n    else:\n        global m{k}\n        m{k} = 1\n        produce *\nX(n) :\n    if m{k} == 1: produce F\n", k + 2);
+    }
     [
         ("macros-doubling", cpfg("#define A B B\n#define B A A\n", ""), Dialect::Cpfg),
         ("macro-tenfold", cpfg("#define A A A A A A A A A A A\n", ""), Dialect::Cpfg),
@@ -176,6 +188,7 @@ fn bombs() -> Vec<(String, String, Dialect)> {
             format!("Lsystem: 1\nderivation length: 1\nAxiom: {}\n{letters} --> F\nendlsystem\n", "AB".repeat(500)),
             Dialect::Cpfg,
         ),
+        ("many-flags", flags, Dialect::Lpy),
     ]
     .into_iter()
     .map(|(name, text, dialect)| (name.to_string(), text, dialect))

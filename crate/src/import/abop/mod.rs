@@ -94,14 +94,11 @@ pub(super) fn import_with(
     importer.run(text, include);
     if !importer.lpy.flags_written.is_empty() {
         let probe = importer.out.finish().text;
-        let steps = importer
-            .lpy
-            .flags_written
+        let written = &importer.lpy.flags_written;
+        let steps = written
             .iter()
-            .filter_map(|&k| {
-                let step = flags::first_step(&probe, &flags::marker(k))?;
-                Some((importer.lpy.flags[k].name.clone(), step))
-            })
+            .zip(flags::first_steps(&probe, written))
+            .filter_map(|(&k, step)| Some((importer.lpy.flags[k].name.clone(), step?)))
             .collect();
         importer = new(false, steps);
         importer.run(text, include);

@@ -395,6 +395,54 @@ fn lpy_flags_set_by_a_production_become_defines_over_the_step() {
 }
 
 #[test]
+fn many_lpy_flags_are_found_by_one_probe_derivation_per_seed() {
+    // Twelve flags, flag k set by its own module once that module counted to k + 2 (and read by
+    // a production of its own): each flag's
+    // step is its own (flags 1 and 10, 11 tell their markers apart), and the probe is derived
+    // once per seed for all of them (it was twice per flag: 24 derivations of up to a million
+    // modules each here, about 50 ms apiece in the studio).
+    let names: Vec<String> = (0..12).map(|k| format!("Pa{k}")).collect();
+    let readers: Vec<String> = (0..12).map(|k| format!("Qa{k}")).collect();
+    let mut text = format!("module {}, {}\n", names.join(", "), readers.join(", "));
+    for k in 0..12 {
+        text += &format!("m{k} = 0\n");
+    }
+    text += &format!(
+        "derivation length: 20\nAxiom: {}\nproduction:\n",
+        names.join("")
+    );
+    let axiom: String = names.iter().map(|n| format!("{n}(0)")).collect();
+    text = text.replace(
+        &format!("Axiom: {}", names.join("")),
+        &format!("Axiom: {axiom}G"),
+    );
+    for (k, name) in names.iter().enumerate() {
+        let last = k + 2;
+        text += &format!(
+            "{name}(t) :\n    if t < {last}: produce {name}(t+1)\n    else:\n        global m{k}\n        m{k} = 1\n        produce *\n"
+        );
+    }
+    for (k, reader) in readers.iter().enumerate() {
+        text += &format!("{reader} :\n    if m{k} == 1: produce F\n");
+    }
+    text += "G :\n    if m11 == 1: produce FG\nendlsystem\n";
+    super::lpy::flags::PROBE_DERIVATIONS.with(|n| n.set(0));
+    let import = resolved(&text, Flavour::Lpy);
+    assert_eq!(
+        super::lpy::flags::PROBE_DERIVATIONS.with(|n| n.get()),
+        2,
+        "one derivation per seed"
+    );
+    for k in 0..12 {
+        let define = format!("#define m{k} (NumIt > {} ? 1 : 0)", k + 3);
+        assert!(import.text.contains(&define), "{define}\n{}", import.text);
+    }
+    // m11 is set in step 14: G grows an F in each of steps 15 to 20.
+    let b = crate::pipeline::build(&import.text, &crate::pipeline::BuildOptions::default());
+    assert_eq!(b.derived_text(), "FFFFFFG");
+}
+
+#[test]
 fn lpfg_blocks_produce_conditional_productions() {
     let import = resolved(
         "#include <lpfgall.h>\n#define PL 0.5\nderivation length: 3;\nmodule A(float);\nmodule Apex(float);\nAxiom: Right(5) SetWidth(0.15) A(1.2) Apex(0);\nproduction:\nApex(t):{ produce Apex(t+1); }\ndecomposition:\nA(t):\n{\n\tt = t - PL;\n\tif(t>0)\n\t\tproduce F(t) SB() Left(30) F(1) EB() A(t);\n\tfloat w = 2*t;\n\tproduce Sphere(w) Frobnicate(1);\n}\n",

@@ -7,6 +7,8 @@
 
 use super::super::{is_identifier, Line};
 use crate::derive::{derive, DeriveOptions};
+use crate::model::Model;
+use std::collections::HashMap;
 
 /// A global of the file that may be a flag: its name, its value at the top level, the one other
 /// value productions set it to.
@@ -21,9 +23,12 @@ pub(in crate::import::abop) struct Flag {
 const PROBE_STEPS: u32 = 1_000;
 const PROBE_MODULES: usize = 50_000;
 
+/// The start of a marker module's name: the flag's index follows.
+const MARKER: &str = "ProbeMark";
+
 /// The marker module of the flag with index `k` in a probe.
 pub(in crate::import::abop) fn marker(k: usize) -> String {
-    format!("ProbeMark{k}")
+    format!("{MARKER}{k}")
 }
 
 /// The plain numbers an assignment `name = value` sets, or `None`.
@@ -79,10 +84,46 @@ pub(in crate::import::abop) fn candidates(all: &[Line]) -> Vec<Flag> {
     out
 }
 
-/// The first step in which the marker `marker` appears in a derivation of `probe` (the probe's
-/// marker counts the steps after it was written): `Some(None)` when it never does, `None` when
-/// the probe cannot be derived within its limits or two seeds disagree.
-pub(in crate::import::abop) fn first_step(probe: &str, marker: &str) -> Option<Option<u32>> {
+/// For each flag index of `flags`, the first step in which its marker ([`marker`]) appears in a
+/// derivation of `probe` (the probe's marker counts the steps after it was written): `Some(None)`
+/// when it never does, `None` when the probe cannot be derived within its limits or two seeds
+/// disagree. The probe is derived once per seed for all the flags: a file with many flags costs
+/// two derivations, not two per flag.
+pub(in crate::import::abop) fn first_steps(
+    probe: &str,
+    flags: &[usize],
+) -> Vec<Option<Option<u32>>> {
+    let derived = probe_model(probe).and_then(|(model, steps)| {
+        let first = latest_marks(&model, steps, 1)?;
+        let second = latest_marks(&model, steps, 2)?;
+        Some((first, second, steps))
+    });
+    let Some((first, second, steps)) = derived else {
+        return vec![None; flags.len()];
+    };
+    // The marker with the most steps after it was written is the first one written.
+    let step = |marks: &HashMap<usize, f64>, k: usize| {
+        marks.get(&k).map(|&most| steps.saturating_sub(most as u32))
+    };
+    flags
+        .iter()
+        .map(|&k| {
+            let (a, b) = (step(&first, k), step(&second, k));
+            (a == b).then_some(a)
+        })
+        .collect()
+}
+
+#[cfg(test)]
+thread_local! {
+    /// How many times this thread derived a probe (the tests count them).
+    pub(in crate::import::abop) static PROBE_DERIVATIONS: std::cell::Cell<usize> =
+        const { std::cell::Cell::new(0) };
+}
+
+/// The probe's model, its module limit lowered to the probe's, and its steps; `None` when it has
+/// errors or more steps than a probe may take.
+fn probe_model(probe: &str) -> Option<(Model, u32)> {
     let (file, _) = crate::syntax::parse(probe);
     let (model, diagnostics) = crate::model::resolve(&file);
     let mut model = model?;
@@ -94,27 +135,42 @@ pub(in crate::import::abop) fn first_step(probe: &str, marker: &str) -> Option<O
         return None;
     }
     model.settings.max_modules = model.settings.max_modules.min(PROBE_MODULES);
-    let mut found = Vec::new();
-    for seed in [1, 2] {
-        let d = derive(
-            &model,
-            &DeriveOptions {
-                steps,
-                seed: Some(seed),
-                ..Default::default()
-            },
-        )
-        .ok()?;
-        let text = d.string.to_text(&model.alphabet);
-        let open = format!("{marker}(");
-        let most = text
-            .match_indices(&open)
-            .filter_map(|(i, _)| {
-                let rest = &text[i + open.len()..];
-                rest[..rest.find(')')?].parse::<f64>().ok()
-            })
-            .fold(None, |m: Option<f64>, c| Some(m.map_or(c, |m| m.max(c))));
-        found.push(most.map(|c| steps.saturating_sub(c as u32)));
+    Some((model, steps))
+}
+
+/// The probe derived `steps` steps with `seed`: for each flag index whose marker it holds, the
+/// largest count a marker of that flag holds. `None` when the derivation fails (a limit).
+fn latest_marks(model: &Model, steps: u32, seed: u64) -> Option<HashMap<usize, f64>> {
+    #[cfg(test)]
+    PROBE_DERIVATIONS.with(|n| n.set(n.get() + 1));
+    let options = DeriveOptions {
+        steps,
+        seed: Some(seed),
+        ..Default::default()
+    };
+    let text = derive(model, &options)
+        .ok()?
+        .string
+        .to_text(&model.alphabet);
+    let mut most: HashMap<usize, f64> = HashMap::new();
+    for (i, _) in text.match_indices(MARKER) {
+        let rest = &text[i + MARKER.len()..];
+        let digits = rest.len() - rest.trim_start_matches(|c: char| c.is_ascii_digit()).len();
+        let (Ok(k), Some(args)) = (
+            rest[..digits].parse::<usize>(),
+            rest[digits..].strip_prefix('('),
+        ) else {
+            continue;
+        };
+        let Some(count) = args
+            .find(')')
+            .and_then(|end| args[..end].parse::<f64>().ok())
+        else {
+            continue;
+        };
+        most.entry(k)
+            .and_modify(|m| *m = m.max(count))
+            .or_insert(count);
     }
-    (found[0] == found[1]).then(|| found[0])
+    Some(most)
 }
