@@ -77,7 +77,7 @@ pub const USAGE: &str = "usage:
       every line this wide in the picture's pixels, the Lines mode), --size WxH (16 to 8192
       pixels), --dpi D (10 to 2400: width and height in millimetres, e.g. 1748x2480 at 300 is A5)
       glTF only: --animate writes the plant's growth as an animation (morph targets keyed in time),
-      --seconds-per-step S (default 1), --targets-per-step K (1 to 16, default 4)
+      --seconds-per-step S (0.001 to 3600, default 1), --targets-per-step K (1 to 16, default 4)
   meristem export FILE --frames N -o DIR   N SVG pictures of the plant growing, DIR/frame_000.svg …
                                            (--format png: PNGs of the same drawing, frame_000.png …)
   meristem export FILE --at T -o OUT.svg   the plant at growth time T (0 to the iterations; OUT.png:
