@@ -73,8 +73,10 @@ pub fn parse_args() -> Result<Args, lexopt::Error> {
     let mut growth_out = GrowthOutArgs::default();
     while let Some(arg) = parser.next()? {
         match arg {
-            Long("iterations") | Short('n') => iterations = Some(parser.value()?.parse()?),
-            Long("seed") | Short('s') => seed = Some(parser.value()?.parse()?),
+            Long("iterations") | Short('n') => {
+                iterations = Some(number(&mut parser, "--iterations")?)
+            }
+            Long("seed") | Short('s') => seed = Some(number(&mut parser, "--seed")?),
             Long("at") => at = Some(growth_time(&parser.value()?.string()?)?),
             Long("stats") => stats = true,
             Long("time") => time = true,
@@ -82,12 +84,12 @@ pub fn parse_args() -> Result<Args, lexopt::Error> {
             Long("growth") => growth = true,
             Long("animate") => growth_out.animate = true,
             Long("seconds-per-step") => {
-                growth_out.seconds_per_step = Some(parser.value()?.parse()?)
+                growth_out.seconds_per_step = Some(number(&mut parser, "--seconds-per-step")?)
             }
             Long("targets-per-step") => {
-                growth_out.targets_per_step = Some(parser.value()?.parse()?)
+                growth_out.targets_per_step = Some(number(&mut parser, "--targets-per-step")?)
             }
-            Long("frames") => growth_out.frames = Some(parser.value()?.parse()?),
+            Long("frames") => growth_out.frames = Some(number(&mut parser, "--frames")?),
             Long("output") | Long("out") | Short('o') => {
                 output = Some(PathBuf::from(parser.value()?))
             }
@@ -96,9 +98,9 @@ pub fn parse_args() -> Result<Args, lexopt::Error> {
             Long("smooth-all") => smooth_all = true,
             Long("edits") => edits = Some(PathBuf::from(parser.value()?)),
             Long("background") => picture.background = Some(parser.value()?.string()?),
-            Long("line-width") => picture.line_width = Some(parser.value()?.parse()?),
+            Long("line-width") => picture.line_width = Some(number(&mut parser, "--line-width")?),
             Long("size") => picture.size = Some(parser.value()?.string()?),
-            Long("dpi") => picture.dpi = Some(parser.value()?.parse()?),
+            Long("dpi") => picture.dpi = Some(number(&mut parser, "--dpi")?),
             Long("version") | Short('V') => {
                 println!("meristem {}", env!("CARGO_PKG_VERSION"));
                 std::process::exit(0);
@@ -153,6 +155,33 @@ pub fn parse_args() -> Result<Args, lexopt::Error> {
         picture,
         growth_out,
     })
+}
+
+/// The number after `flag`, or a message that names the flag and what it takes (lexopt's own
+/// said only `cannot parse argument "abc"`, not for which flag).
+fn number<T: Number>(parser: &mut lexopt::Parser, flag: &str) -> Result<T, lexopt::Error> {
+    let value = parser.value()?;
+    let text = value.to_string_lossy();
+    text.trim()
+        .parse()
+        .map_err(|_| format!("{flag} {text}: give {}", T::WHAT).into())
+}
+
+/// A number a flag takes, and how it is said.
+trait Number: std::str::FromStr {
+    const WHAT: &'static str;
+}
+
+impl Number for u32 {
+    const WHAT: &'static str = "a whole number from 0 to 4294967295";
+}
+
+impl Number for u64 {
+    const WHAT: &'static str = "a whole number from 0 to 18446744073709551615";
+}
+
+impl Number for f64 {
+    const WHAT: &'static str = "a number, e.g. 2.5";
 }
 
 /// `--at T`: a growth time from 0, in steps (refused otherwise, not clamped).

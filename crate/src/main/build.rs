@@ -1,6 +1,7 @@
 //! `meristem derive`, `check` and `export`: a build, and what is printed or written of it.
 
 use super::args::{Args, ExportTarget};
+use super::input::check_not_input;
 use meristem::branches::{BranchEdit, EditReport};
 use meristem::diagnostics::{locate_all, LocatedDiagnostic, Severity};
 use meristem::export;
@@ -53,7 +54,7 @@ pub fn write_export(output: &Path, files: &[export::ExportedFile]) -> Result<(),
 /// True when `output` is no place beside which other files can go: `-` (stdout), a path under
 /// `/dev/` or `/proc/` (`/dev/stdout`, `/dev/fd/3`, which may even point to a regular file when
 /// stdout is redirected), or an existing file that is not a regular file (a named pipe).
-fn is_stream(output: &Path) -> bool {
+pub fn is_stream(output: &Path) -> bool {
     output.as_os_str() == "-"
         || output.starts_with("/dev")
         || output.starts_with("/proc")
@@ -195,6 +196,28 @@ pub fn export_file(
     print_diagnostics(&args.file, &locate_all(source, &exported.diagnostics));
     if let Some(report) = &exported.edits {
         print_edit_report(args, report);
+    }
+    // Nothing is written when any file would go over one the command reads.
+    let beside = exported.files.iter().skip(1);
+    let paths =
+        std::iter::once(output.clone()).chain(beside.map(|f| output.with_file_name(&f.name)));
+    for (k, path) in paths.enumerate() {
+        // (`-o plant.mtl --format obj` wrote the OBJ, then its MTL over it.)
+        let over_first = k > 0 && !is_stream(&output) && path == output;
+        let checked = if over_first {
+            Err(format!(
+                "{} would be written over {}, the {} file itself: give the output its own extension",
+                exported.files[k].name,
+                output.display(),
+                format.extension()
+            ))
+        } else {
+            check_not_input(args, &path)
+        };
+        if let Err(e) = checked {
+            eprintln!("meristem: {e}");
+            return ExitCode::from(2);
+        }
     }
     match write_export(&output, &exported.files) {
         Ok(()) => ExitCode::SUCCESS,
