@@ -282,3 +282,76 @@ fn a_number_that_is_not_one_is_refused_naming_its_flag() {
         assert_eq!(first, format!("meristem: {flag} {value}: give {what}"));
     }
 }
+
+#[test]
+fn a_flag_the_verb_has_no_use_for_is_refused_not_ignored() {
+    let dir = temp_dir("flags");
+    std::fs::write(dir.join("plant.lsys"), GRAMMAR).expect("grammar");
+    let cases: &[(&[&str], &str)] = &[
+        // It printed the string on stdout with exit 0, and wrote no file.
+        (
+            &["derive", "plant.lsys", "-o", "out.txt"],
+            "derive takes no -o (it prints on stdout: redirect it, > FILE)",
+        ),
+        (
+            &["check", "plant.lsys", "--frames", "3"],
+            "check takes no --frames",
+        ),
+        (
+            &["lineage", "plant.lsys", "0", "--edits", "e.json"],
+            "lineage takes no --edits",
+        ),
+        (
+            &["import", "plant.lsys", "--format", "svg"],
+            "import takes no --format",
+        ),
+        (
+            &["export", "plant.lsys", "-o", "x.svg", "--stats"],
+            "export takes no --stats",
+        ),
+        (
+            &["derive", "plant.lsys", "--stats", "--growth"],
+            "--stats and --growth: give one of them",
+        ),
+        (
+            &[
+                "export",
+                "plant.lsys",
+                "-o",
+                "a.glb",
+                "--seconds-per-step",
+                "2",
+            ],
+            "--seconds-per-step and --targets-per-step set the glTF animation: add --animate",
+        ),
+    ];
+    for (args, says) in cases {
+        let (code, out, err) = meristem_in(&dir, args);
+        assert_eq!((code, out.as_str()), (2, ""), "{args:?}: {err}");
+        assert_eq!(
+            err.lines().next(),
+            Some(format!("meristem: {says}").as_str()),
+            "{args:?}"
+        );
+    }
+    assert!(
+        !dir.join("out.txt").exists() && !dir.join("x.svg").exists() && !dir.join("a.glb").exists()
+    );
+    // What each verb takes still runs.
+    for args in [
+        &[
+            "derive",
+            "plant.lsys",
+            "--stats",
+            "--sides",
+            "8",
+            "--seed",
+            "3",
+        ][..],
+        &["check", "plant.lsys", "--iterations", "1", "--time"],
+        &["lineage", "plant.lsys", "0", "--at", "1.5"],
+    ] {
+        let (code, _, err) = meristem_in(&dir, args);
+        assert_eq!(code, 0, "{args:?}: {err}");
+    }
+}

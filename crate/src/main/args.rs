@@ -269,3 +269,68 @@ pub fn export_target(args: &Args) -> Result<ExportTarget, String> {
         look,
     })
 }
+
+/// Refuses a flag the verb has no use for (`derive plant.lsys -o out.txt` printed the string on
+/// stdout and wrote no file, with exit 0), and flags that exclude each other.
+pub fn check_flags(args: &Args) -> Result<(), String> {
+    let given = [
+        (
+            "--iterations",
+            args.iterations.is_some(),
+            "derive check lineage export import",
+        ),
+        ("--at", args.at.is_some(), "derive check lineage export"),
+        (
+            "--seed",
+            args.seed.is_some(),
+            "derive check lineage export import",
+        ),
+        ("--stats", args.stats, "derive"),
+        ("--growth", args.growth, "derive"),
+        ("--time", args.time, "derive check export"),
+        ("--from", args.from.is_some(), "import"),
+        ("-o", args.output.is_some(), "export import"),
+        ("--format", args.format.is_some(), "export"),
+        ("--sides", args.sides.is_some(), "derive check export"),
+        ("--smooth-all", args.smooth_all, "derive check export"),
+        ("--edits", args.edits.is_some(), "derive check export"),
+        ("--background", args.picture.background.is_some(), "export"),
+        ("--line-width", args.picture.line_width.is_some(), "export"),
+        ("--size", args.picture.size.is_some(), "export"),
+        ("--dpi", args.picture.dpi.is_some(), "export"),
+        ("--animate", args.growth_out.animate, "export"),
+        (
+            "--seconds-per-step",
+            args.growth_out.seconds_per_step.is_some(),
+            "export",
+        ),
+        (
+            "--targets-per-step",
+            args.growth_out.targets_per_step.is_some(),
+            "export",
+        ),
+        ("--frames", args.growth_out.frames.is_some(), "export"),
+    ];
+    for (flag, is_given, verbs) in given {
+        if is_given && !verbs.split(' ').any(|v| v == args.verb) {
+            let hint = if flag == "-o" {
+                " (it prints on stdout: redirect it, > FILE)"
+            } else {
+                ""
+            };
+            return Err(format!("{} takes no {flag}{hint}", args.verb));
+        }
+    }
+    if args.stats && args.growth {
+        return Err("--stats and --growth: give one of them".into());
+    }
+    let animation =
+        args.growth_out.seconds_per_step.is_some() || args.growth_out.targets_per_step.is_some();
+    if animation && !args.growth_out.animate {
+        return Err(
+            "--seconds-per-step and --targets-per-step set the glTF animation: add --animate"
+                .into(),
+        );
+    }
+    Ok(())
+}

@@ -45,7 +45,7 @@ mod input;
 mod python;
 mod raster;
 
-use args::{export_target, parse_args};
+use args::{check_flags, export_target, parse_args};
 use build::{derive_or_check, export_file, print_lineage};
 use frames::{at_as_picture, export_frames};
 use help::help;
@@ -100,6 +100,10 @@ fn main() -> ExitCode {
     }
     if !["derive", "check", "export", "import", "lineage"].contains(&args.verb.as_str()) {
         eprintln!("meristem: unknown verb '{}'\n{USAGE}", args.verb);
+        return ExitCode::from(2);
+    }
+    if let Err(e) = check_flags(&args) {
+        eprintln!("meristem: {e}\n{USAGE}");
         return ExitCode::from(2);
     }
     let frames =
