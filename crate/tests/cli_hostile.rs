@@ -355,3 +355,61 @@ fn a_flag_the_verb_has_no_use_for_is_refused_not_ignored() {
         assert_eq!(code, 0, "{args:?}: {err}");
     }
 }
+
+/// Runs the CLI in `dir` with stdout on `stdout`: exit code and stderr.
+fn meristem_to(dir: &Path, args: &[&str], stdout: Stdio) -> (i32, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_meristem"))
+        .args(args)
+        .current_dir(dir)
+        .stdout(stdout)
+        .output()
+        .expect("run meristem");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn stdout_that_cannot_be_written_is_a_message_not_a_panic() {
+    let dir = temp_dir("stdout");
+    std::fs::write(dir.join("plant.lsys"), GRAMMAR).expect("grammar");
+    // A full disk: `print!` panicked ("failed printing to stdout", exit 101) in every verb.
+    if let Ok(full) = std::fs::OpenOptions::new().write(true).open("/dev/full") {
+        for args in [
+            &["derive", "plant.lsys"][..],
+            &["derive", "plant.lsys", "--stats"],
+            &["lineage", "plant.lsys", "0"],
+            &["import", "plant.lsys", "--from", "green"],
+            &["export", "plant.lsys", "-o", "out.svg"],
+            &["help", "modules"],
+            &["--help"],
+            &["--version"],
+        ] {
+            let stdout = Stdio::from(full.try_clone().expect("clone"));
+            let (code, err) = meristem_to(&dir, args, stdout);
+            assert_eq!(code, 2, "{args:?}: {err}");
+            assert!(!err.contains("panicked"), "{args:?}: {err}");
+            assert!(
+                err.contains("meristem: cannot write to stdout: "),
+                "{args:?}: {err}"
+            );
+        }
+    }
+    // A reader gone (`meristem derive … | head`): the string of 5^8 F is more than a pipe holds.
+    let mut child = Command::new(env!("CARGO_BIN_EXE_meristem"))
+        .args(["derive", "plant.lsys", "--iterations", "8"])
+        .current_dir(&dir)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("run meristem");
+    drop(child.stdout.take());
+    let out = child.wait_with_output().expect("ends");
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.starts_with("meristem: cannot write to stdout: Broken pipe"),
+        "{err}"
+    );
+}

@@ -102,11 +102,11 @@ pub fn parse_args() -> Result<Args, lexopt::Error> {
             Long("size") => picture.size = Some(parser.value()?.string()?),
             Long("dpi") => picture.dpi = Some(number(&mut parser, "--dpi")?),
             Long("version") | Short('V') => {
-                println!("meristem {}", env!("CARGO_PKG_VERSION"));
+                super::print_out(format_args!("meristem {}\n", env!("CARGO_PKG_VERSION")));
                 std::process::exit(0);
             }
             Long("help") | Short('h') => {
-                println!("{USAGE}");
+                super::print_out(format_args!("{USAGE}\n"));
                 std::process::exit(0);
             }
             Value(v) if verb.is_none() => verb = Some(v.string()?),

@@ -45,7 +45,8 @@ pub fn write_export(output: &Path, files: &[export::ExportedFile]) -> Result<(),
         std::fs::write(&path, &file.bytes)
             .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
         if !stream {
-            println!("wrote {} ({} bytes)", path.display(), file.bytes.len());
+            let size = file.bytes.len();
+            super::print_out(format_args!("wrote {} ({size} bytes)\n", path.display()));
         }
     }
     Ok(())
@@ -119,7 +120,7 @@ pub fn derive_or_check(
         build.plant = editor.into_plant();
     }
     if args.verb == "derive" {
-        println!("{}", derived_output(args, &build));
+        super::print_out(format_args!("{}\n", derived_output(args, &build)));
     }
     ExitCode::SUCCESS
 }
@@ -254,7 +255,8 @@ pub fn print_lineage(args: &Args, source: &str, options: &BuildOptions) -> ExitC
     };
     match pipeline::lineage(model, &build.derived_with, module) {
         Ok(rows) => {
-            print!("{}", pipeline::lineage_text(source, model, &rows));
+            let text = pipeline::lineage_text(source, model, &rows);
+            super::print_out(format_args!("{text}"));
             ExitCode::SUCCESS
         }
         Err(e) => {

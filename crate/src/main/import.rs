@@ -215,7 +215,7 @@ pub fn write_import(args: &Args, result: &import::Import) -> ExitCode {
                 return ExitCode::from(2);
             }
         }
-        None => print!("{}", result.text),
+        None => super::print_out(format_args!("{}", result.text)),
     }
     if result.is_empty() {
         ExitCode::from(1)

@@ -87,6 +87,17 @@ pub const USAGE: &str = "usage:
   meristem help [modules|directives]     the language's modules and directives
   meristem --version";
 
+/// Writes on stdout as `print!` does, but a failure (the reader gone: `meristem derive … | head`;
+/// a full disk) is a message and exit 2, as `export -o -` says it, not `print!`'s panic (exit 101).
+pub fn print_out(text: std::fmt::Arguments) {
+    use std::io::Write;
+    let mut out = std::io::stdout().lock();
+    if let Err(e) = out.write_fmt(text).and_then(|()| out.flush()) {
+        eprintln!("meristem: cannot write to stdout: {e}");
+        std::process::exit(2);
+    }
+}
+
 fn main() -> ExitCode {
     let args = match parse_args() {
         Ok(args) => args,
