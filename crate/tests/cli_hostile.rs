@@ -413,3 +413,48 @@ fn stdout_that_cannot_be_written_is_a_message_not_a_panic() {
         "{err}"
     );
 }
+
+#[test]
+fn a_flag_given_twice_is_refused_not_overridden() {
+    let dir = temp_dir("twice");
+    std::fs::write(dir.join("plant.lsys"), GRAMMAR).expect("grammar");
+    // The last one was taken without a word.
+    for (args, flag) in [
+        (
+            &["derive", "plant.lsys", "-n", "1", "--iterations", "2"][..],
+            "--iterations",
+        ),
+        (
+            &["export", "plant.lsys", "-o", "a.svg", "--out", "b.svg"],
+            "-o",
+        ),
+        (
+            &[
+                "export",
+                "plant.lsys",
+                "-o",
+                "a.svg",
+                "--format",
+                "svg",
+                "-f",
+                "wrl",
+            ],
+            "--format",
+        ),
+        (
+            &["derive", "plant.lsys", "--seed", "1", "-s", "1"],
+            "--seed",
+        ),
+    ] {
+        let (code, _, err) = meristem_in(&dir, args);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert_eq!(
+            err.lines().next(),
+            Some(format!("meristem: {flag} is given twice: give it once").as_str())
+        );
+    }
+    assert!(!dir.join("a.svg").exists() && !dir.join("b.svg").exists());
+    // A switch twice changes nothing and is let be.
+    let (code, _, err) = meristem_in(&dir, &["derive", "plant.lsys", "--stats", "--stats"]);
+    assert_eq!(code, 0, "{err}");
+}

@@ -71,7 +71,9 @@ pub fn parse_args() -> Result<Args, lexopt::Error> {
     let mut edits = None;
     let mut picture = PictureArgs::default();
     let mut growth_out = GrowthOutArgs::default();
+    let mut seen = Vec::new();
     while let Some(arg) = parser.next()? {
+        given_once(&arg, &mut seen)?;
         match arg {
             Long("iterations") | Short('n') => {
                 iterations = Some(number(&mut parser, "--iterations")?)
@@ -155,6 +157,46 @@ pub fn parse_args() -> Result<Args, lexopt::Error> {
         picture,
         growth_out,
     })
+}
+
+/// The flags that take a value, each with the short or other names that are the same flag.
+const VALUE_FLAGS: [(&str, &[&str]); 15] = [
+    ("--iterations", &["n"]),
+    ("--seed", &["s"]),
+    ("--at", &[]),
+    ("--from", &[]),
+    ("--seconds-per-step", &[]),
+    ("--targets-per-step", &[]),
+    ("--frames", &[]),
+    ("-o", &["o", "output", "out"]),
+    ("--format", &["f"]),
+    ("--sides", &[]),
+    ("--edits", &[]),
+    ("--background", &[]),
+    ("--line-width", &[]),
+    ("--size", &[]),
+    ("--dpi", &[]),
+];
+
+/// Refuses a flag that takes a value given a second time (`-n 3 … -n 5` took the last without a
+/// word: a script that adds a flag to one it forgot got another plant than it asked for).
+fn given_once(arg: &lexopt::Arg, seen: &mut Vec<&'static str>) -> Result<(), lexopt::Error> {
+    let name = match arg {
+        lexopt::Arg::Long(name) => name.to_string(),
+        lexopt::Arg::Short(c) => c.to_string(),
+        lexopt::Arg::Value(_) => return Ok(()),
+    };
+    let flag = VALUE_FLAGS.iter().find(|(flag, other)| {
+        flag.trim_start_matches('-') == name || other.contains(&name.as_str())
+    });
+    let Some(&(flag, _)) = flag else {
+        return Ok(());
+    };
+    if seen.contains(&flag) {
+        return Err(format!("{flag} is given twice: give it once").into());
+    }
+    seen.push(flag);
+    Ok(())
 }
 
 /// The number after `flag`, or a message that names the flag and what it takes (lexopt's own
