@@ -458,3 +458,38 @@ fn a_flag_given_twice_is_refused_not_overridden() {
     let (code, _, err) = meristem_in(&dir, &["derive", "plant.lsys", "--stats", "--stats"]);
     assert_eq!(code, 0, "{err}");
 }
+
+#[cfg(unix)]
+#[test]
+fn a_model_that_prints_without_end_is_read_within_bounds() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = temp_dir("prints");
+    // A list in a body: the hand translation falls short, so Python runs the model.
+    let model = "lengths = [1.0, 0.8]\nAxiom: A(0)\nderivation length: 2\nproduction:\n\
+                 A(i):\n  produce F(lengths[i])[+(30)A(i+1)]\nendlsystem\n";
+    std::fs::write(dir.join("model.lpy"), model).expect("model");
+    // A "Python" whose model prints 1.5 GB (each print of a model goes to stderr), then fails.
+    let python = dir.join("python.sh");
+    let script = "#!/bin/sh\ncat > /dev/null\nyes 'the model prints' | head -c 1500000000 >&2\n\
+                  printf '\\nValueError: boom\\n' >&2\nexit 1\n";
+    std::fs::write(&python, script).expect("script");
+    std::fs::set_permissions(&python, std::fs::Permissions::from_mode(0o755)).expect("chmod");
+    // Under 1 GB of address space: all of stderr was kept (and copied again as text), so the
+    // allocation failed and the process aborted.
+    let command = format!(
+        "ulimit -v 1000000; MERISTEM_PYTHON={} exec {} import model.lpy",
+        python.display(),
+        env!("CARGO_BIN_EXE_meristem")
+    );
+    let out = Command::new("sh")
+        .args(["-c", &command])
+        .current_dir(&dir)
+        .output()
+        .expect("run");
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{err}");
+    assert!(
+        err.contains("failed: ValueError: boom; the hand translation is used"),
+        "{err}"
+    );
+}
