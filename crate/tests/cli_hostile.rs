@@ -314,6 +314,10 @@ fn a_flag_the_verb_has_no_use_for_is_refused_not_ignored() {
             "--stats and --growth: give one of them",
         ),
         (
+            &["lineage", "plant.lsys", "0", "--at", "1", "-n", "2"],
+            "--iterations and --at: give one of them",
+        ),
+        (
             &[
                 "export",
                 "plant.lsys",

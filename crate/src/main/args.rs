@@ -300,7 +300,7 @@ pub fn export_target(args: &Args) -> Result<ExportTarget, String> {
             format!("unknown extension '.{name}'")
         };
         format!(
-            "{what}; the formats are {} (PNG comes from the studio's renderer)",
+            "{what}; the formats are {} (a PNG is a picture of the growth: --at T or --frames N)",
             Format::names()
         )
     })?;
@@ -365,6 +365,10 @@ pub fn check_flags(args: &Args) -> Result<(), String> {
     }
     if args.stats && args.growth {
         return Err("--stats and --growth: give one of them".into());
+    }
+    // (`--at` won without a word.)
+    if args.iterations.is_some() && args.at.is_some() {
+        return Err("--iterations and --at: give one of them".into());
     }
     let animation =
         args.growth_out.seconds_per_step.is_some() || args.growth_out.targets_per_step.is_some();
