@@ -39,6 +39,12 @@ impl Default for Animation {
 /// Most targets per step.
 pub const MAX_TARGETS_PER_STEP: u32 = 16;
 
+/// The fewest and most seconds of animation per step: within them every keyframe's time is finite
+/// and, for a plant of up to 10,000 steps (the default step limit) at up to
+/// [`MAX_TARGETS_PER_STEP`], larger than the one before in `f32` (glTF's rule for an animation's
+/// input).
+pub const SECONDS_PER_STEP: (f64, f64) = (0.001, 3600.0);
+
 /// Most bytes the morph targets may take (targets × points × 12).
 pub const MAX_TARGET_BYTES: usize = 256 << 20;
 
@@ -52,10 +58,30 @@ pub struct Keyframes {
 }
 
 impl Animation {
+    /// Refuses settings out of range (not clamped: a file keyed otherwise than asked would be a
+    /// silent surprise, and 1e40 seconds per step wrote infinite keyframe times, an invalid glTF).
+    pub fn check(&self) -> Result<(), String> {
+        let (least, most) = SECONDS_PER_STEP;
+        let s = self.seconds_per_step;
+        if !(least..=most).contains(&s) {
+            return Err(format!(
+                "the growth animation's seconds per step must be from {least} to {most}, not {s}"
+            ));
+        }
+        let k = self.targets_per_step;
+        if !(1..=MAX_TARGETS_PER_STEP).contains(&k) {
+            return Err(format!(
+                "the growth animation's targets per step must be from 1 to {MAX_TARGETS_PER_STEP}, not {k}"
+            ));
+        }
+        Ok(())
+    }
+
     /// The keyframes of `mesh`'s growth over `span` steps, or why there are too many (a message
     /// that says what to change).
     pub fn keyframes(&self, mesh: &MeshBuffers, span: u32) -> Result<Keyframes, String> {
-        let per = self.targets_per_step.clamp(1, MAX_TARGETS_PER_STEP);
+        self.check()?;
+        let per = self.targets_per_step;
         let count = span as usize * per as usize;
         let points = if mesh.positions.is_empty() {
             &mesh.lines
@@ -73,11 +99,7 @@ impl Animation {
                 MAX_TARGET_BYTES >> 20
             ));
         }
-        let seconds_per_step = if self.seconds_per_step.is_finite() && self.seconds_per_step > 0.0 {
-            self.seconds_per_step
-        } else {
-            1.0
-        };
+        let seconds_per_step = self.seconds_per_step;
         let time = |j: usize| (j as f64 / f64::from(per)) as f32;
         let seconds = (0..=count)
             .map(|j| (f64::from(time(j)) * seconds_per_step) as f32)

@@ -24,7 +24,7 @@ mod zip;
 
 pub use derived::{import_derived, needs_python, prefer_derived, DerivedRun};
 pub use vlab::{import_files, import_object, python_main, ObjectFile, PythonMain};
-pub use zip::unzip;
+pub use zip::{unzip, MAX_ENTRIES as MAX_OBJECT_FILES, MAX_TOTAL as MAX_OBJECT_BYTES};
 
 use crate::maths;
 use serde::{Deserialize, Serialize};

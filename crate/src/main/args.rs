@@ -71,10 +71,14 @@ pub fn parse_args() -> Result<Args, lexopt::Error> {
     let mut edits = None;
     let mut picture = PictureArgs::default();
     let mut growth_out = GrowthOutArgs::default();
+    let mut seen = Vec::new();
     while let Some(arg) = parser.next()? {
+        given_once(&arg, &mut seen)?;
         match arg {
-            Long("iterations") | Short('n') => iterations = Some(parser.value()?.parse()?),
-            Long("seed") | Short('s') => seed = Some(parser.value()?.parse()?),
+            Long("iterations") | Short('n') => {
+                iterations = Some(number(&mut parser, "--iterations")?)
+            }
+            Long("seed") | Short('s') => seed = Some(number(&mut parser, "--seed")?),
             Long("at") => at = Some(growth_time(&parser.value()?.string()?)?),
             Long("stats") => stats = true,
             Long("time") => time = true,
@@ -82,12 +86,12 @@ pub fn parse_args() -> Result<Args, lexopt::Error> {
             Long("growth") => growth = true,
             Long("animate") => growth_out.animate = true,
             Long("seconds-per-step") => {
-                growth_out.seconds_per_step = Some(parser.value()?.parse()?)
+                growth_out.seconds_per_step = Some(number(&mut parser, "--seconds-per-step")?)
             }
             Long("targets-per-step") => {
-                growth_out.targets_per_step = Some(parser.value()?.parse()?)
+                growth_out.targets_per_step = Some(number(&mut parser, "--targets-per-step")?)
             }
-            Long("frames") => growth_out.frames = Some(parser.value()?.parse()?),
+            Long("frames") => growth_out.frames = Some(number(&mut parser, "--frames")?),
             Long("output") | Long("out") | Short('o') => {
                 output = Some(PathBuf::from(parser.value()?))
             }
@@ -96,15 +100,15 @@ pub fn parse_args() -> Result<Args, lexopt::Error> {
             Long("smooth-all") => smooth_all = true,
             Long("edits") => edits = Some(PathBuf::from(parser.value()?)),
             Long("background") => picture.background = Some(parser.value()?.string()?),
-            Long("line-width") => picture.line_width = Some(parser.value()?.parse()?),
+            Long("line-width") => picture.line_width = Some(number(&mut parser, "--line-width")?),
             Long("size") => picture.size = Some(parser.value()?.string()?),
-            Long("dpi") => picture.dpi = Some(parser.value()?.parse()?),
+            Long("dpi") => picture.dpi = Some(number(&mut parser, "--dpi")?),
             Long("version") | Short('V') => {
-                println!("meristem {}", env!("CARGO_PKG_VERSION"));
+                super::print_out(format_args!("meristem {}\n", env!("CARGO_PKG_VERSION")));
                 std::process::exit(0);
             }
             Long("help") | Short('h') => {
-                println!("{USAGE}");
+                super::print_out(format_args!("{USAGE}\n"));
                 std::process::exit(0);
             }
             Value(v) if verb.is_none() => verb = Some(v.string()?),
@@ -153,6 +157,73 @@ pub fn parse_args() -> Result<Args, lexopt::Error> {
         picture,
         growth_out,
     })
+}
+
+/// The flags that take a value, each with the short or other names that are the same flag.
+const VALUE_FLAGS: [(&str, &[&str]); 15] = [
+    ("--iterations", &["n"]),
+    ("--seed", &["s"]),
+    ("--at", &[]),
+    ("--from", &[]),
+    ("--seconds-per-step", &[]),
+    ("--targets-per-step", &[]),
+    ("--frames", &[]),
+    ("-o", &["o", "output", "out"]),
+    ("--format", &["f"]),
+    ("--sides", &[]),
+    ("--edits", &[]),
+    ("--background", &[]),
+    ("--line-width", &[]),
+    ("--size", &[]),
+    ("--dpi", &[]),
+];
+
+/// Refuses a flag that takes a value given a second time (`-n 3 … -n 5` took the last without a
+/// word: a script that adds a flag to one it forgot got another plant than it asked for).
+fn given_once(arg: &lexopt::Arg, seen: &mut Vec<&'static str>) -> Result<(), lexopt::Error> {
+    let name = match arg {
+        lexopt::Arg::Long(name) => name.to_string(),
+        lexopt::Arg::Short(c) => c.to_string(),
+        lexopt::Arg::Value(_) => return Ok(()),
+    };
+    let flag = VALUE_FLAGS.iter().find(|(flag, other)| {
+        flag.trim_start_matches('-') == name || other.contains(&name.as_str())
+    });
+    let Some(&(flag, _)) = flag else {
+        return Ok(());
+    };
+    if seen.contains(&flag) {
+        return Err(format!("{flag} is given twice: give it once").into());
+    }
+    seen.push(flag);
+    Ok(())
+}
+
+/// The number after `flag`, or a message that names the flag and what it takes (lexopt's own
+/// said only `cannot parse argument "abc"`, not for which flag).
+fn number<T: Number>(parser: &mut lexopt::Parser, flag: &str) -> Result<T, lexopt::Error> {
+    let value = parser.value()?;
+    let text = value.to_string_lossy();
+    text.trim()
+        .parse()
+        .map_err(|_| format!("{flag} {text}: give {}", T::WHAT).into())
+}
+
+/// A number a flag takes, and how it is said.
+trait Number: std::str::FromStr {
+    const WHAT: &'static str;
+}
+
+impl Number for u32 {
+    const WHAT: &'static str = "a whole number from 0 to 4294967295";
+}
+
+impl Number for u64 {
+    const WHAT: &'static str = "a whole number from 0 to 18446744073709551615";
+}
+
+impl Number for f64 {
+    const WHAT: &'static str = "a number, e.g. 2.5";
 }
 
 /// `--at T`: a growth time from 0, in steps (refused otherwise, not clamped).
@@ -229,7 +300,7 @@ pub fn export_target(args: &Args) -> Result<ExportTarget, String> {
             format!("unknown extension '.{name}'")
         };
         format!(
-            "{what}; the formats are {} (PNG comes from the studio's renderer)",
+            "{what}; the formats are {} (a PNG is a picture of the growth: --at T or --frames N)",
             Format::names()
         )
     })?;
@@ -239,4 +310,73 @@ pub fn export_target(args: &Args) -> Result<ExportTarget, String> {
         format,
         look,
     })
+}
+
+/// Refuses a flag the verb has no use for (`derive plant.lsys -o out.txt` printed the string on
+/// stdout and wrote no file, with exit 0), and flags that exclude each other.
+pub fn check_flags(args: &Args) -> Result<(), String> {
+    let given = [
+        (
+            "--iterations",
+            args.iterations.is_some(),
+            "derive check lineage export import",
+        ),
+        ("--at", args.at.is_some(), "derive check lineage export"),
+        (
+            "--seed",
+            args.seed.is_some(),
+            "derive check lineage export import",
+        ),
+        ("--stats", args.stats, "derive"),
+        ("--growth", args.growth, "derive"),
+        ("--time", args.time, "derive check export"),
+        ("--from", args.from.is_some(), "import"),
+        ("-o", args.output.is_some(), "export import"),
+        ("--format", args.format.is_some(), "export"),
+        ("--sides", args.sides.is_some(), "derive check export"),
+        ("--smooth-all", args.smooth_all, "derive check export"),
+        ("--edits", args.edits.is_some(), "derive check export"),
+        ("--background", args.picture.background.is_some(), "export"),
+        ("--line-width", args.picture.line_width.is_some(), "export"),
+        ("--size", args.picture.size.is_some(), "export"),
+        ("--dpi", args.picture.dpi.is_some(), "export"),
+        ("--animate", args.growth_out.animate, "export"),
+        (
+            "--seconds-per-step",
+            args.growth_out.seconds_per_step.is_some(),
+            "export",
+        ),
+        (
+            "--targets-per-step",
+            args.growth_out.targets_per_step.is_some(),
+            "export",
+        ),
+        ("--frames", args.growth_out.frames.is_some(), "export"),
+    ];
+    for (flag, is_given, verbs) in given {
+        if is_given && !verbs.split(' ').any(|v| v == args.verb) {
+            let hint = if flag == "-o" {
+                " (it prints on stdout: redirect it, > FILE)"
+            } else {
+                ""
+            };
+            return Err(format!("{} takes no {flag}{hint}", args.verb));
+        }
+    }
+    if args.stats && args.growth {
+        return Err("--stats and --growth: give one of them".into());
+    }
+    // (`--at` won without a word.)
+    if args.iterations.is_some() && args.at.is_some() {
+        return Err("--iterations and --at: give one of them".into());
+    }
+    let animation =
+        args.growth_out.seconds_per_step.is_some() || args.growth_out.targets_per_step.is_some();
+    if animation && !args.growth_out.animate {
+        return Err(
+            "--seconds-per-step and --targets-per-step set the glTF animation: add --animate"
+                .into(),
+        );
+    }
+    Ok(())
 }

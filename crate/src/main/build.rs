@@ -1,6 +1,7 @@
 //! `meristem derive`, `check` and `export`: a build, and what is printed or written of it.
 
 use super::args::{Args, ExportTarget};
+use super::input::check_not_input;
 use meristem::branches::{BranchEdit, EditReport};
 use meristem::diagnostics::{locate_all, LocatedDiagnostic, Severity};
 use meristem::export;
@@ -44,7 +45,8 @@ pub fn write_export(output: &Path, files: &[export::ExportedFile]) -> Result<(),
         std::fs::write(&path, &file.bytes)
             .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
         if !stream {
-            println!("wrote {} ({} bytes)", path.display(), file.bytes.len());
+            let size = file.bytes.len();
+            super::print_out(format_args!("wrote {} ({size} bytes)\n", path.display()));
         }
     }
     Ok(())
@@ -53,7 +55,7 @@ pub fn write_export(output: &Path, files: &[export::ExportedFile]) -> Result<(),
 /// True when `output` is no place beside which other files can go: `-` (stdout), a path under
 /// `/dev/` or `/proc/` (`/dev/stdout`, `/dev/fd/3`, which may even point to a regular file when
 /// stdout is redirected), or an existing file that is not a regular file (a named pipe).
-fn is_stream(output: &Path) -> bool {
+pub fn is_stream(output: &Path) -> bool {
     output.as_os_str() == "-"
         || output.starts_with("/dev")
         || output.starts_with("/proc")
@@ -118,7 +120,7 @@ pub fn derive_or_check(
         build.plant = editor.into_plant();
     }
     if args.verb == "derive" {
-        println!("{}", derived_output(args, &build));
+        super::print_out(format_args!("{}\n", derived_output(args, &build)));
     }
     ExitCode::SUCCESS
 }
@@ -196,6 +198,28 @@ pub fn export_file(
     if let Some(report) = &exported.edits {
         print_edit_report(args, report);
     }
+    // Nothing is written when any file would go over one the command reads.
+    let beside = exported.files.iter().skip(1);
+    let paths =
+        std::iter::once(output.clone()).chain(beside.map(|f| output.with_file_name(&f.name)));
+    for (k, path) in paths.enumerate() {
+        // (`-o plant.mtl --format obj` wrote the OBJ, then its MTL over it.)
+        let over_first = k > 0 && !is_stream(&output) && path == output;
+        let checked = if over_first {
+            Err(format!(
+                "{} would be written over {}, the {} file itself: give the output its own extension",
+                exported.files[k].name,
+                output.display(),
+                format.extension()
+            ))
+        } else {
+            check_not_input(args, &path)
+        };
+        if let Err(e) = checked {
+            eprintln!("meristem: {e}");
+            return ExitCode::from(2);
+        }
+    }
     match write_export(&output, &exported.files) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
@@ -231,7 +255,8 @@ pub fn print_lineage(args: &Args, source: &str, options: &BuildOptions) -> ExitC
     };
     match pipeline::lineage(model, &build.derived_with, module) {
         Ok(rows) => {
-            print!("{}", pipeline::lineage_text(source, model, &rows));
+            let text = pipeline::lineage_text(source, model, &rows);
+            super::print_out(format_args!("{text}"));
             ExitCode::SUCCESS
         }
         Err(e) => {

@@ -4,7 +4,8 @@
 //! `-o OUT.png`), filled on the CPU by `raster.rs`.
 
 use super::args::{svg_look, Args};
-use super::build::{print_diagnostics, print_timings};
+use super::build::{is_stream, print_diagnostics, print_timings};
+use super::input::check_not_input;
 use super::raster;
 use meristem::export::{svg, Format};
 use meristem::mesh::{growth_schedule, skeleton_at};
@@ -137,6 +138,13 @@ pub fn export_frames(
     let Some(output) = args.output.clone() else {
         return fail("frames need an output: -o DIR with --frames, -o OUT.svg with --at".into());
     };
+    // (`-` is stdout elsewhere: here it made a folder named `-`.)
+    if args.growth_out.frames.is_some() && is_stream(&output) {
+        return fail(format!(
+            "--frames writes its pictures into a folder, not to {}: give -o DIR",
+            output.display()
+        ));
+    }
     let (kind, look) = match frame_look(args) {
         Ok(picture) => picture,
         Err(e) => return fail(e),
@@ -157,6 +165,12 @@ pub fn export_frames(
         Ok(frames) => frames,
         Err(e) => return fail(e),
     };
+    if let Some(e) = frames
+        .iter()
+        .find_map(|(path, _)| check_not_input(args, path).err())
+    {
+        return fail(e);
+    }
     if args.growth_out.frames.is_some() {
         if let Err(e) = std::fs::create_dir_all(&output) {
             return fail(format!("cannot create {}: {e}", output.display()));

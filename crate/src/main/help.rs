@@ -7,15 +7,17 @@ use std::process::ExitCode;
 /// `meristem help [modules|directives]`: the usage, or a table of the vocabulary.
 pub fn help(topic: &str) -> ExitCode {
     match topic {
-        "" => println!("{USAGE}"),
+        "" => super::print_out(format_args!("{USAGE}\n")),
         "modules" => {
             for m in MODULES {
-                println!("{:<10} {:<24} {}", m.name, params_text(m.params), m.doc);
+                let params = params_text(m.params);
+                super::print_out(format_args!("{:<10} {params:<24} {}\n", m.name, m.doc));
             }
         }
         "directives" => {
             for d in DIRECTIVES {
-                println!("#{:<20} {:<28} {}", d.name, d.forms_text(), d.doc);
+                let forms = d.forms_text();
+                super::print_out(format_args!("#{:<20} {forms:<28} {}\n", d.name, d.doc));
             }
         }
         other => {

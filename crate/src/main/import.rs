@@ -1,9 +1,10 @@
 //! `meristem import`: another dialect's grammar or a vlab object translated.
 
 use super::args::Args;
-use super::input::read_bytes;
+use super::input::{check_not_input, read_bytes, MAX_FILE_BYTES};
 use super::python;
 use meristem::import::{self, Dialect, Import};
+use std::io::Read;
 use std::process::ExitCode;
 
 /// `meristem import`: the translation on stdout (or in `-o OUT`), one `FILE:LINE: note: …` line on
@@ -74,9 +75,20 @@ pub fn read_object(args: &Args) -> Result<Vec<import::ObjectFile>, ExitCode> {
             ExitCode::from(1)
         });
     }
+    read_folder(path).map_err(|e| {
+        eprintln!("meristem: {e}");
+        ExitCode::from(2)
+    })
+}
+
+/// The files of a vlab object's folder and of the folders in it, one level deep (an object's
+/// files are at its top). Bounded as a `.zip` is ([`import::MAX_OBJECT_FILES`] files,
+/// [`MAX_FILE_BYTES`] together), and only regular files are read (links followed): a named pipe
+/// would wait for a writer forever, a link to `/dev/zero` never end; each one skipped is said.
+fn read_folder(path: &std::path::Path) -> Result<Vec<import::ObjectFile>, String> {
     let mut files = Vec::new();
+    let mut left = MAX_FILE_BYTES;
     let mut folders = vec![path.to_path_buf()];
-    // The folder and the folders in it, one level deep (an object's files are at its top).
     for depth in 0..2 {
         for folder in std::mem::take(&mut folders) {
             let Ok(entries) = std::fs::read_dir(&folder) else {
@@ -84,18 +96,46 @@ pub fn read_object(args: &Args) -> Result<Vec<import::ObjectFile>, ExitCode> {
             };
             for entry in entries.flatten() {
                 let p = entry.path();
-                if p.is_dir() {
+                let Ok(metadata) = std::fs::metadata(&p) else {
+                    continue;
+                };
+                if metadata.is_dir() {
                     if depth == 0 {
                         folders.push(p);
                     }
-                } else if let Ok(bytes) = std::fs::read(&p) {
-                    let name = p
-                        .strip_prefix(path)
-                        .unwrap_or(&p)
-                        .to_string_lossy()
-                        .into_owned();
-                    files.push(import::ObjectFile { name, bytes });
+                    continue;
                 }
+                if !metadata.is_file() {
+                    eprintln!(
+                        "meristem: note: {} is not a regular file: not read",
+                        p.display()
+                    );
+                    continue;
+                }
+                let too_many = || {
+                    format!(
+                        "{} is not a vlab object: its files are more than {} or more than {} MiB \
+                         together",
+                        path.display(),
+                        import::MAX_OBJECT_FILES,
+                        MAX_FILE_BYTES >> 20
+                    )
+                };
+                if files.len() == import::MAX_OBJECT_FILES || metadata.len() > left {
+                    return Err(too_many());
+                }
+                let mut bytes = Vec::new();
+                let Ok(file) = std::fs::File::open(&p) else {
+                    continue;
+                };
+                // (A file of /proc says 0 bytes and may give more: read no further than the limit.)
+                if file.take(left + 1).read_to_end(&mut bytes).is_err() {
+                    continue;
+                }
+                left = left.checked_sub(bytes.len() as u64).ok_or_else(too_many)?;
+                let name = p.strip_prefix(path).unwrap_or(&p);
+                let name = name.to_string_lossy().into_owned();
+                files.push(import::ObjectFile { name, bytes });
             }
         }
     }
@@ -166,12 +206,16 @@ pub fn write_import(args: &Args, result: &import::Import) -> ExitCode {
     print_notes(args, result);
     match &args.output {
         Some(path) => {
+            if let Err(e) = check_not_input(args, path) {
+                eprintln!("meristem: {e}");
+                return ExitCode::from(2);
+            }
             if let Err(e) = std::fs::write(path, &result.text) {
                 eprintln!("meristem: cannot write {}: {e}", path.display());
                 return ExitCode::from(2);
             }
         }
-        None => print!("{}", result.text),
+        None => super::print_out(format_args!("{}", result.text)),
     }
     if result.is_empty() {
         ExitCode::from(1)

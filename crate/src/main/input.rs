@@ -1,7 +1,9 @@
 //! The files the command line names, read: the grammar and the edits document.
 
 use super::args::Args;
+use super::build::is_stream;
 use meristem::branches::{parse_edits, BranchEdit};
+use meristem::import;
 use std::io::Read;
 use std::path::Path;
 use std::process::ExitCode;
@@ -11,15 +13,38 @@ use std::process::ExitCode;
 /// web/src/studio/files/grammar-files.ts). A regular file's size is known and read whole.
 pub const MAX_STREAM_BYTES: u64 = 1_000_000;
 
+/// The most a regular file is read for: what a vlab object's `.zip` may unpack to
+/// ([`import::MAX_OBJECT_BYTES`], 64 MiB), far above any grammar (the studio opens 1 MB), so
+/// that a file named by mistake (a disk image, `/proc/kcore`) is refused at once instead of
+/// filling the memory.
+pub const MAX_FILE_BYTES: u64 = import::MAX_OBJECT_BYTES as u64;
+
 /// The bytes of the file at `path`; a file that is not a regular file is read up to
-/// [`MAX_STREAM_BYTES`] and refused beyond, so `check /dev/zero` ends at once with a message.
+/// [`MAX_STREAM_BYTES`] and refused beyond, so `check /dev/zero` ends at once with a message;
+/// a regular file up to [`MAX_FILE_BYTES`].
 pub fn read_bytes(path: &Path) -> Result<Vec<u8>, String> {
     let cannot = |e: std::io::Error| format!("cannot read {}: {e}", path.display());
     let file = std::fs::File::open(path).map_err(cannot)?;
-    let regular = file.metadata().map_err(cannot)?.is_file();
+    let metadata = file.metadata().map_err(cannot)?;
     let mut bytes = Vec::new();
-    if regular {
-        (&file).read_to_end(&mut bytes).map_err(cannot)?;
+    if metadata.is_file() {
+        let too_large = || {
+            format!(
+                "{} is larger than {} MiB, the most Meristem reads of a file",
+                path.display(),
+                MAX_FILE_BYTES >> 20
+            )
+        };
+        if metadata.len() > MAX_FILE_BYTES {
+            return Err(too_large());
+        }
+        // (A file of /proc says 0 bytes and may give more: read no further than the limit.)
+        file.take(MAX_FILE_BYTES + 1)
+            .read_to_end(&mut bytes)
+            .map_err(cannot)?;
+        if bytes.len() as u64 > MAX_FILE_BYTES {
+            return Err(too_large());
+        }
         return Ok(bytes);
     }
     file.take(MAX_STREAM_BYTES + 1)
@@ -33,6 +58,39 @@ pub fn read_bytes(path: &Path) -> Result<Vec<u8>, String> {
         ));
     }
     Ok(bytes)
+}
+
+/// Refuses to write `output` when it is one of the files read (the grammar, the edits, a file of
+/// the vlab object's folder): the command would lose its own input. A stream (`-`, `/dev/stdout`)
+/// is no file read, and an output not there yet loses nothing.
+pub fn check_not_input(args: &Args, output: &Path) -> Result<(), String> {
+    let stream = is_stream(output);
+    let Some(target) = std::fs::canonicalize(output).ok().filter(|_| !stream) else {
+        return Ok(());
+    };
+    let inputs = [
+        ("the grammar", Some(Path::new(&args.file))),
+        ("the edits", args.edits.as_deref()),
+    ];
+    for (what, input) in inputs {
+        let Some(read) = input.and_then(|i| std::fs::canonicalize(i).ok()) else {
+            continue;
+        };
+        let (over, what) = if read.is_dir() {
+            let inside = target.starts_with(&read) && target.is_file();
+            (inside, "a file of the object")
+        } else {
+            (target == read, what)
+        };
+        if over {
+            return Err(format!(
+                "{} would be written over {what} this command reads ({}): give another output",
+                output.display(),
+                input.map_or(String::new(), |i| i.display().to_string())
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// The grammar file's text. Files of other tools often predate UTF-8 (Lparser's are DOS text): an

@@ -45,7 +45,7 @@ mod input;
 mod python;
 mod raster;
 
-use args::{export_target, parse_args};
+use args::{check_flags, export_target, parse_args};
 use build::{derive_or_check, export_file, print_lineage};
 use frames::{at_as_picture, export_frames};
 use help::help;
@@ -77,7 +77,7 @@ pub const USAGE: &str = "usage:
       every line this wide in the picture's pixels, the Lines mode), --size WxH (16 to 8192
       pixels), --dpi D (10 to 2400: width and height in millimetres, e.g. 1748x2480 at 300 is A5)
       glTF only: --animate writes the plant's growth as an animation (morph targets keyed in time),
-      --seconds-per-step S (default 1), --targets-per-step K (1 to 16, default 4)
+      --seconds-per-step S (0.001 to 3600, default 1), --targets-per-step K (1 to 16, default 4)
   meristem export FILE --frames N -o DIR   N SVG pictures of the plant growing, DIR/frame_000.svg …
                                            (--format png: PNGs of the same drawing, frame_000.png …)
   meristem export FILE --at T -o OUT.svg   the plant at growth time T (0 to the iterations; OUT.png:
@@ -86,6 +86,17 @@ pub const USAGE: &str = "usage:
       FILE may be a vlab object's folder or .zip: its .l with its view file, functions and colours
   meristem help [modules|directives]     the language's modules and directives
   meristem --version";
+
+/// Writes on stdout as `print!` does, but a failure (the reader gone: `meristem derive … | head`;
+/// a full disk) is a message and exit 2, as `export -o -` says it, not `print!`'s panic (exit 101).
+pub fn print_out(text: std::fmt::Arguments) {
+    use std::io::Write;
+    let mut out = std::io::stdout().lock();
+    if let Err(e) = out.write_fmt(text).and_then(|()| out.flush()) {
+        eprintln!("meristem: cannot write to stdout: {e}");
+        std::process::exit(2);
+    }
+}
 
 fn main() -> ExitCode {
     let args = match parse_args() {
@@ -100,6 +111,10 @@ fn main() -> ExitCode {
     }
     if !["derive", "check", "export", "import", "lineage"].contains(&args.verb.as_str()) {
         eprintln!("meristem: unknown verb '{}'\n{USAGE}", args.verb);
+        return ExitCode::from(2);
+    }
+    if let Err(e) = check_flags(&args) {
+        eprintln!("meristem: {e}\n{USAGE}");
         return ExitCode::from(2);
     }
     let frames =

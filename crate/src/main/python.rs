@@ -93,6 +93,12 @@ pub fn run(
             last.unwrap_or("no message").trim()
         ));
     }
+    if stdout.len() > MAX_RESULT_BYTES {
+        return Err(format!(
+            "Python's result is larger than {} MiB, the most Meristem reads",
+            MAX_RESULT_BYTES >> 20
+        ));
+    }
     String::from_utf8(stdout).map_err(|_| "Python's result is not UTF-8 text".to_string())
 }
 
@@ -122,6 +128,51 @@ fn request(
     request.to_string().into_bytes()
 }
 
+/// The most bytes of Python's result (its stdout) read: past it the result is refused.
+const MAX_RESULT_BYTES: usize = 512 << 20;
+
+/// The bytes of what the model prints (Python's stderr) kept, its last: the error's line is read
+/// from them. A model that prints in a loop filled the memory (6 GB in 4 s) before the timeout.
+const MAX_MESSAGE_BYTES: usize = 64 << 10;
+
+/// Which bytes of a stream [`drain`] keeps.
+#[derive(Clone, Copy)]
+enum Keep {
+    First(usize),
+    Last(usize),
+}
+
+/// Reads `stream` to its end (so the child is never blocked on a full pipe), keeping at most
+/// the first or the last bytes `keep` says.
+fn drain(mut stream: Box<dyn Read + Send>, keep: Keep) -> Vec<u8> {
+    let mut kept = Vec::new();
+    let mut chunk = vec![0u8; 64 << 10];
+    loop {
+        let n = match stream.read(&mut chunk) {
+            Ok(0) => break,
+            Ok(n) => n,
+            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
+            Err(_) => break,
+        };
+        match keep {
+            Keep::First(most) => {
+                let room = most.saturating_sub(kept.len()).min(n);
+                kept.extend_from_slice(&chunk[..room]);
+            }
+            Keep::Last(most) => {
+                kept.extend_from_slice(&chunk[..n]);
+                if kept.len() > 2 * most {
+                    kept.drain(..kept.len() - most);
+                }
+            }
+        }
+    }
+    if let Keep::Last(most) = keep {
+        kept.drain(..kept.len().saturating_sub(most));
+    }
+    kept
+}
+
 /// Writes `input` to the child, reads its output, waits at most `limit` seconds (then kills it):
 /// its status (`None` when killed), stdout and stderr.
 fn communicate(
@@ -135,26 +186,22 @@ fn communicate(
             let _ = stdin.write_all(&input);
         }
     });
-    let reader = |stream: Option<Box<dyn Read + Send>>| {
-        std::thread::spawn(move || {
-            let mut bytes = Vec::new();
-            if let Some(mut s) = stream {
-                let _ = s.read_to_end(&mut bytes);
-            }
-            bytes
-        })
+    let reader = |stream: Option<Box<dyn Read + Send>>, keep: Keep| {
+        std::thread::spawn(move || stream.map(|s| drain(s, keep)).unwrap_or_default())
     };
     let out = reader(
         child
             .stdout
             .take()
             .map(|s| Box::new(s) as Box<dyn Read + Send>),
+        Keep::First(MAX_RESULT_BYTES + 1),
     );
     let err = reader(
         child
             .stderr
             .take()
             .map(|s| Box::new(s) as Box<dyn Read + Send>),
+        Keep::Last(MAX_MESSAGE_BYTES),
     );
     let start = Instant::now();
     let status = loop {

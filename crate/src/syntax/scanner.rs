@@ -139,6 +139,11 @@ impl<'a> ModuleScanner<'a> {
         modules
     }
 
+    /// True once [`MAX_SCANNED_MODULES`] was passed (`E0145`): no more modules are read.
+    pub(super) fn stopped(&self) -> bool {
+        self.scanned.get() == usize::MAX
+    }
+
     /// `E0145` at `span`, the text not read, once per file (the scanner stops reading modules).
     fn too_many(&self, span: Span, diagnostics: &mut Vec<Diagnostic>) {
         if self.scanned.get() == usize::MAX {

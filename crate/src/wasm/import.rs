@@ -5,7 +5,8 @@ use wasm_bindgen::prelude::*;
 /// Imports files opened together, a vlab object (its `.l`, view file, functions and colours, as a
 /// folder, several files or a `.zip`) or an L-Py model: `names[k]` is the k-th file's name (a path
 /// inside the folder), its bytes are the next `lengths[k]` bytes of `bytes`. Returns the JSON of
-/// [`import_grammar`] (`dialect` is null when nothing could be imported).
+/// [`import_grammar`] (`dialect` is null when nothing could be imported, and when the names,
+/// bytes and lengths disagree: a note says how).
 #[wasm_bindgen(js_name = importObject)]
 pub fn import_object(names: Vec<String>, bytes: &[u8], lengths: &[u32]) -> String {
     use crate::import::{self, Dialect, Import};
@@ -15,8 +16,10 @@ pub fn import_object(names: Vec<String>, bytes: &[u8], lengths: &[u32]) -> Strin
         import: Import,
         dialect: Option<Dialect>,
     }
-    let files = object_files(names, bytes, lengths);
-    let (import, dialect) = import::import_files(&files);
+    let (import, dialect) = match object_files(names, bytes, lengths) {
+        Ok(files) => import::import_files(&files),
+        Err(why) => (not_imported(why), None),
+    };
     serde_json::to_string(&Imported { import, dialect }).unwrap_or_else(|_| "{}".into())
 }
 
@@ -57,33 +60,64 @@ pub fn import_grammar(text: &str, dialect_or_file_name: &str) -> String {
     serde_json::to_string(&result).unwrap_or_else(|_| "{}".into())
 }
 
-/// The files of [`import_object`]'s arguments: `names[k]` with the next `lengths[k]` bytes.
+/// The files of [`import_object`]'s arguments: `names[k]` with the next `lengths[k]` bytes; or
+/// why not, when there are not as many names as lengths or the lengths do not add up to the
+/// bytes (a file cut short or dropped without a word would be imported wrong).
 fn object_files(
     names: Vec<String>,
     bytes: &[u8],
     lengths: &[u32],
-) -> Vec<crate::import::ObjectFile> {
-    let mut files = Vec::new();
-    let mut at = 0usize;
+) -> Result<Vec<crate::import::ObjectFile>, String> {
+    if names.len() != lengths.len() {
+        return Err(format!(
+            "the files opened together do not agree: {} names but {} lengths",
+            names.len(),
+            lengths.len()
+        ));
+    }
+    let total: u64 = lengths.iter().map(|&len| u64::from(len)).sum();
+    if total != bytes.len() as u64 {
+        return Err(format!(
+            "the files opened together do not agree: their lengths add up to {total} bytes, but \
+             {} bytes were given",
+            bytes.len()
+        ));
+    }
+    let mut files = Vec::with_capacity(names.len());
+    let mut rest = bytes;
     for (name, &len) in names.into_iter().zip(lengths) {
-        let end = at.saturating_add(len as usize).min(bytes.len());
+        let (file, after) = rest.split_at(len as usize);
         files.push(crate::import::ObjectFile {
             name,
-            bytes: bytes[at.min(end)..end].to_vec(),
+            bytes: file.to_vec(),
         });
-        at = end;
+        rest = after;
     }
-    files
+    Ok(files)
+}
+
+/// An import of nothing, with the note that says why.
+fn not_imported(why: String) -> crate::import::Import {
+    crate::import::Import {
+        text: String::new(),
+        notes: vec![crate::import::ImportNote {
+            line: 0,
+            message: why,
+        }],
+    }
 }
 
 /// Which of the files opened together (as [`import_object`] takes them) Python would run:
 /// JSON `{"main": name, "dialect": "lpy" | "lpfg"}` (the runtime's `main` and
 /// `options.dialect`), or `null` when none can be (cpfg, Lparser, Green: the hand translation is
-/// all there is).
+/// all there is). Throws when the names, bytes and lengths disagree.
 #[wasm_bindgen(js_name = pythonMain)]
-pub fn python_main(names: Vec<String>, bytes: &[u8], lengths: &[u32]) -> String {
-    let files = object_files(names, bytes, lengths);
-    serde_json::to_string(&crate::import::python_main(&files)).unwrap_or_else(|_| "null".into())
+pub fn python_main(names: Vec<String>, bytes: &[u8], lengths: &[u32]) -> Result<String, JsError> {
+    let files = object_files(names, bytes, lengths).map_err(|why| JsError::new(&why))?;
+    Ok(
+        serde_json::to_string(&crate::import::python_main(&files))
+            .unwrap_or_else(|_| "null".into()),
+    )
 }
 
 /// The rule that chooses the Python route: `importJson` is what [`import_object`] or
@@ -121,7 +155,17 @@ pub fn import_derived(
         import: Import,
         dialect: Option<Dialect>,
     }
-    let files = object_files(names, bytes, lengths);
+    let files = match object_files(names, bytes, lengths) {
+        Ok(files) => files,
+        Err(why) => {
+            let import = not_imported(why);
+            return serde_json::to_string(&Imported {
+                import,
+                dialect: None,
+            })
+            .unwrap_or_else(|_| "{}".into());
+        }
+    };
     let seed = if seed.is_finite() && seed >= 0.0 {
         seed as u64
     } else {

@@ -333,7 +333,7 @@ options_objects! { EXPORT_TYPESCRIPT;
         "svg" => svg: SvgLook;
         /// glTF only: the plant's growth as a glTF animation (morph targets keyed in time; docs/LANGUAGE.md, "Growth in time").
         "animate" => animate: flag;
-        /// With `animate`: seconds of animation per derivation step (default 1).
+        /// With `animate`: seconds of animation per derivation step, 0.001 to 3600 (default 1).
         "secondsPerStep" => seconds_per_step: number;
         /// With `animate`: morph targets per step, 1 to 16 (default 4).
         "targetsPerStep" => targets_per_step: whole;

@@ -44,7 +44,7 @@ export interface ExportOptions extends BuildOptions {
   svg?: SvgLook;
   /**
    * glTF only: the plant's growth as a standard glTF animation (morph targets keyed in time, the
-   * CLI's `--animate`), `secondsPerStep` (default 1) and `targetsPerStep` (1 to 16, default 4).
+   * CLI's `--animate`), `secondsPerStep` (0.001 to 3600, default 1) and `targetsPerStep` (1 to 16, default 4).
    */
   animate?: boolean;
   secondsPerStep?: number;
