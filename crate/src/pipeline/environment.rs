@@ -13,11 +13,13 @@ use super::{Build, Progress};
 use crate::derive::{DeriveOptions, Generator, Stepper, TracedStep};
 use crate::diagnostics::Diagnostic;
 use crate::environment::{
-    responder, Exceeded, Part, Probe, ProgramDefaults, Responder, MAX_ENVIRONMENT_BYTES,
+    responder, Exceeded, Part, Probe, ProgramDefaults, Responder, ENVIRONMENT_WORK_PER_MODULE,
+    MAX_ENVIRONMENT_BYTES,
 };
 use crate::growth::Adjustments;
 use crate::model::{LString, Model, ModuleId, ProgramSpec};
 use crate::turtle::{self, Skeleton};
+use crate::vocabulary::EnvironmentProgram;
 use glam::DVec3;
 use rand::SeedableRng;
 use std::cell::RefCell;
@@ -56,7 +58,11 @@ impl<'m> Environment<'m> {
         };
         let mut programs = Vec::new();
         for spec in &model.environment.programs {
-            let program = responder(spec, &defaults)?;
+            let mut program = responder(spec, &defaults)?;
+            if let Some(work) = program.work() {
+                let modules = model.settings.max_modules as u64;
+                work.most = modules.saturating_mul(ENVIRONMENT_WORK_PER_MODULE);
+            }
             programs.push((program, spec));
         }
         let places = match &model.environment.plants[..] {
@@ -139,12 +145,19 @@ impl<'m> Environment<'m> {
                 });
             }
         }
-        self.update(&parts)?;
+        self.update(&parts, step, probes.len())?;
+        let crowd = Crowd {
+            step,
+            probes: probes.len(),
+            parts: parts.len(),
+        };
         drop(parts);
         let replies = &mut self.answers.replies[..probes.len() * self.stride];
         let mut offset = 0;
-        for (program, _) in &mut self.programs {
+        for (program, spec) in &mut self.programs {
+            overworked(spec, program.as_mut(), &crowd)?;
             program.answer(&probes, replies, self.stride, offset);
+            overworked(spec, program.as_mut(), &crowd)?;
             offset += program.reply_len();
         }
         drop(probes);
@@ -160,7 +173,7 @@ impl<'m> Environment<'m> {
     }
 
     /// Every program takes in the parts, each within what the others leave of the budget.
-    fn update(&mut self, parts: &[Part]) -> Result<(), Diagnostic> {
+    fn update(&mut self, parts: &[Part], step: u32, probes: usize) -> Result<(), Diagnostic> {
         for k in 0..self.programs.len() {
             let others: usize = (self.programs.iter().enumerate())
                 .filter(|(j, _)| *j != k)
@@ -171,9 +184,59 @@ impl<'m> Environment<'m> {
             if let Err(exceeded) = program.update(parts, budget) {
                 return Err(over_budget(spec, &exceeded));
             }
+            let crowd = Crowd {
+                step,
+                probes,
+                parts: parts.len(),
+            };
+            overworked(spec, program.as_mut(), &crowd)?;
         }
         Ok(())
     }
+}
+
+/// What one answer pass holds, for the message of a program that worked too long.
+struct Crowd {
+    step: u32,
+    probes: usize,
+    parts: usize,
+}
+
+/// `E0418` when `program` has done more than the environment's work limit in this build.
+fn overworked(
+    spec: &ProgramSpec,
+    program: &mut dyn Responder,
+    crowd: &Crowd,
+) -> Result<(), Diagnostic> {
+    let Some(work) = program.work().filter(|w| w.over()).copied() else {
+        return Ok(());
+    };
+    let way_out = match spec.program {
+        EnvironmentProgram::Light => "a larger `cell` (fewer voxels) or fewer iterations",
+        EnvironmentProgram::Space => {
+            "a smaller `radius` (fewer parts near each `?E`) or fewer `?E`"
+        }
+        EnvironmentProgram::Attractors => {
+            "a smaller `influence` or `kill`, a smaller `count`, or fewer `?E`"
+        }
+        EnvironmentProgram::Collision => "a smaller `radius` or fewer `?E` crowded together",
+        EnvironmentProgram::Obstacle => "fewer iterations",
+    };
+    Err(Diagnostic::error(
+        "E0418",
+        spec.span.clone(),
+        format!(
+            "the {} program passed the environment's work limit of {} tests by step {}, \
+             answering {} `?E` among {} parts: the `?E`, parts or points crowd too closely \
+             for its settings; use {way_out} (or raise `#max_modules`: {} tests a module)",
+            spec.info().name,
+            work.most,
+            crowd.step,
+            crowd.probes,
+            crowd.parts,
+            ENVIRONMENT_WORK_PER_MODULE,
+        ),
+    ))
 }
 
 /// `E0408`: a program would need more than the environment's memory budget.
