@@ -24,8 +24,8 @@ pub const MAX_ENVIRONMENT_BYTES: usize = 64 << 20;
 /// Most work one program may do in one build, all its passes together, for each module of
 /// `#max_modules` (so 10⁹ by default, and a grammar raises it as it raises the derivation's
 /// work): a test of the distance between a point and a part, an attraction point or another `?E`
-/// (every candidate the grids give, near or not), and a voxel a part is spread over or the
-/// light's propagation sweeps (seconds of work: 10⁹ of them take 1.5 to 12 s natively). A
+/// (every candidate the grids give, near or not), a voxel a part is spread over, and four
+/// voxels the light's propagation sweeps (seconds of work: 10⁹ of them take 1.5 to 12 s natively). A
 /// program that passes it stops where it is and the build stops with `E0418`, so that many `?E`
 /// crowded in one cell with many parts, points or other `?E` (a quadratic pass) ends in the
 /// command line and an embedded plant too, where no Stop button is at hand.

@@ -49,6 +49,7 @@ pub use settings::{LightSettings, BAD_SETTING, MOST_DEPTH};
 
 use super::{Exceeded, Field, Part, Probe, Responder, Work};
 use crate::diagnostics::Diagnostic;
+use crate::environment::settings::shown;
 use crate::maths;
 use crate::model::ProgramSpec;
 use grid::Extent;
@@ -136,7 +137,12 @@ impl Light {
         if bytes.is_nan() || bytes > budget as f64 {
             let [x, y, z] = dims;
             return Err(Exceeded {
-                what: format!("a light grid of {x} × {y} × {z} voxels"),
+                what: format!(
+                    "a light grid of {} × {} × {} voxels",
+                    shown(x),
+                    shown(y),
+                    shown(z)
+                ),
                 bytes: bytes.min(usize::MAX as f64) as usize,
             });
         }
@@ -214,7 +220,9 @@ impl Responder for Light {
             return Ok(());
         };
         self.extent = extent;
-        let work = self.pieces(parts) + extent.voxels() as f64;
+        // A voxel spread over costs a test's time (a write anywhere in the grid); the sweeps of
+        // the propagation, row after row, a quarter of that each voxel.
+        let work = self.pieces(parts) + extent.voxels() as f64 / 4.0;
         self.work.add(work.min(u64::MAX as f64) as u64);
         if self.work.over() {
             self.extent = Extent::default();
