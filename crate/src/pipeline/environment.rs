@@ -57,8 +57,19 @@ impl<'m> Environment<'m> {
             seed,
         };
         let mut programs = Vec::new();
+        let mut held = 0;
         for spec in &model.environment.programs {
             let mut program = responder(spec, &defaults)?;
+            // What it starts with (a million attraction points: 24 MB) counts at once, so that a
+            // hundred such lines stop here, not after 2.4 GB.
+            held += program.bytes();
+            if held > MAX_ENVIRONMENT_BYTES {
+                let exceeded = Exceeded {
+                    what: beside("what it starts with", held - program.bytes()),
+                    bytes: held,
+                };
+                return Err(over_budget(spec, &exceeded));
+            }
             if let Some(work) = program.work() {
                 let modules = model.settings.max_modules as u64;
                 work.most = modules.saturating_mul(ENVIRONMENT_WORK_PER_MODULE);
@@ -181,7 +192,8 @@ impl<'m> Environment<'m> {
                 .sum();
             let budget = MAX_ENVIRONMENT_BYTES.saturating_sub(others);
             let (program, spec) = &mut self.programs[k];
-            if let Err(exceeded) = program.update(parts, budget) {
+            if let Err(mut exceeded) = program.update(parts, budget) {
+                exceeded.what = beside(&exceeded.what, others);
                 return Err(over_budget(spec, &exceeded));
             }
             let crowd = Crowd {
@@ -237,6 +249,15 @@ fn overworked(
             ENVIRONMENT_WORK_PER_MODULE,
         ),
     ))
+}
+
+/// `what` a program would hold, and the bytes the other programs hold beside it when they hold
+/// some (a budget passed by many programs together, not by the one named).
+fn beside(what: &str, others: usize) -> String {
+    match others.div_ceil(1 << 20) {
+        0 => what.to_string(),
+        mb => format!("{what} beside the {mb} MB the other programs hold"),
+    }
 }
 
 /// `E0408`: a program would need more than the environment's memory budget.
