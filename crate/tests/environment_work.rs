@@ -91,3 +91,21 @@ fn raising_max_modules_raises_the_work_limit() {
     assert!(m.contains("limit of 20000000 tests"), "{m}");
     assert!(m.contains("by step 13"), "{m}");
 }
+
+#[test]
+fn a_plant_read_at_every_step_without_growing_stops_at_the_reading_limit() {
+    let src = include_str!("hostile/environment_timed_plant_read_every_step.lsys");
+    let m = work_limit(src, &BuildOptions::default());
+    assert!(m.contains("the environment has read"), "{m}");
+    assert!(
+        m.contains("work limit of 40000 (20 times the module limit)"),
+        "{m}"
+    );
+    // To t = 30 it reads less, and grows.
+    let b = build(src, &at(30));
+    assert!(
+        b.diagnostics.iter().all(|d| d.severity != Severity::Error),
+        "{:?}",
+        b.diagnostics
+    );
+}

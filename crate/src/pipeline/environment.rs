@@ -46,6 +46,10 @@ struct Environment<'m> {
     seed: u64,
     /// The answer passes' buffers, kept between passes.
     answers: Answers,
+    /// The modules of the plants' strings the passes have read so far (each pass draws every
+    /// plant): a timed grammar's whole steps without a round rewrite nothing, so the
+    /// derivation's work budget does not see them.
+    read: u64,
 }
 
 impl<'m> Environment<'m> {
@@ -91,6 +95,7 @@ impl<'m> Environment<'m> {
             query: model.environment_query(),
             seed,
             answers: Answers::default(),
+            read: 0,
         })
     }
 
@@ -115,6 +120,7 @@ impl<'m> Environment<'m> {
         if n == 0 {
             return Ok(());
         }
+        self.count_reading(plants.iter().map(|p| p.string().len()), step)?;
         answering(step);
         self.answers.reset(n, self.stride);
         let mut parts = Vec::new();
@@ -181,6 +187,38 @@ impl<'m> Environment<'m> {
             plant.written();
         }
         Ok(())
+    }
+
+    /// Counts a pass's reading of strings of `lengths` modules; `E0418` once the passes have read
+    /// more than 20 × `#max_modules` modules (the derivation's work budget): a timed grammar of a
+    /// million modules held for 10,000 whole steps without a round read them all at every step
+    /// (minutes), while the derivation wrote nothing.
+    fn count_reading(
+        &mut self,
+        lengths: impl Iterator<Item = usize>,
+        step: u32,
+    ) -> Result<(), Diagnostic> {
+        let modules: u64 = lengths.map(|l| l as u64).sum();
+        self.read = self.read.saturating_add(modules);
+        let most = (self.model.settings.max_modules as u64).saturating_mul(20);
+        if self.read <= most {
+            return Ok(());
+        }
+        let span = self
+            .programs
+            .first()
+            .map_or(0..0, |(_, spec)| spec.span.clone());
+        Err(Diagnostic::error(
+            "E0418",
+            span,
+            format!(
+                "by step {step} the environment has read {} modules of the plants (every plant \
+                 drawn at every step its `?E` are answered), above its work limit of {most} (20 \
+                 times the module limit); use fewer steps or a smaller plant, or raise the limit \
+                 with '#max_modules N'",
+                self.read
+            ),
+        ))
     }
 
     /// Every program takes in the parts, each within what the others leave of the budget.
