@@ -392,3 +392,19 @@ fn a_time_step_without_timed_modules_makes_a_grammar_stepwise() {
     let timed = settings("#dt 0.5\n#terminal_age A 2 B 1\naxiom: A(0)\nA(x) -> A(1) B(0)");
     assert!(timed.timed() && !timed.stepwise());
 }
+
+#[test]
+fn a_terminal_age_too_small_for_the_clock_is_an_error_not_a_module_never_replaced() {
+    // The clock takes moments 1e-9 apart as one: a terminal age of 1e-9 was accepted and never
+    // reached (B stayed B(0.00001, 0) at t = 0.00001 instead of being replaced 10,000 times).
+    for age in ["0.000000001", "1e-9", "0.0000005"] {
+        let src = format!("#terminal_age B {age}\naxiom: B(0, 0)\nB(t, n) -> B(0, n + 1)");
+        let codes = errors(&src);
+        assert_eq!(codes.len(), 1, "{codes:?}");
+        assert_eq!(codes[0].0, "E0211");
+        assert_eq!(codes[0].1, age);
+    }
+    // A millionth is the least, and it is reached: ten rounds by t = 0.00001.
+    let src = "#terminal_age B 0.000001\naxiom: B(0, 0)\nB(t, n) -> B(0, n + 1)";
+    assert_eq!(at(src, 0.00001), "B(0,10)");
+}

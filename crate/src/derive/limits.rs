@@ -11,6 +11,35 @@ use crate::model::Model;
 /// the derivation well inside wasm32's 4 GiB, and the CLI gives the same answer as the studio.
 pub const MAX_STRING_BYTES: usize = 256 << 20;
 
+/// Bytes an observer that follows every module (the growth attributes) holds for a module written:
+/// its state (`growth::ModuleGrowth`, 64 bytes) for the string before the pass and for the one
+/// written, both held while it follows.
+pub const FOLLOWED_BYTES_PER_MODULE: usize = 128;
+
+/// Most bytes the states of the modules followed may take (`E0401`): 1 GB, 8 million modules, so
+/// the default `#max_modules` never meets it, and a raised one stops before wasm32's 4 GiB (a
+/// string of 40 million modules with `#lifetime` held 2.2 GB when the module limit stopped it).
+pub const MAX_FOLLOWED_BYTES: usize = 1 << 30;
+
+/// `E0401` when the states of `len` modules written at `step` would pass [`MAX_FOLLOWED_BYTES`].
+pub(super) fn check_followed(model: &Model, step: u32, len: usize) -> Result<(), Diagnostic> {
+    let bytes = len.saturating_mul(FOLLOWED_BYTES_PER_MODULE);
+    if bytes <= MAX_FOLLOWED_BYTES {
+        return Ok(());
+    }
+    Err(Diagnostic::error(
+        "E0401",
+        size_span(model),
+        format!(
+            "{} {len} modules, whose growth states (64 bytes a module, before the step and \
+             after) would take {} MB, above their budget of {} MB; use fewer iterations",
+            size_when(step),
+            bytes.div_ceil(1 << 20),
+            MAX_FOLLOWED_BYTES >> 20
+        ),
+    ))
+}
+
 /// Most bytes a traced derivation ([`derive_traced`]: every step's string and provenance, for the
 /// derivation view and a module's lineage) may hold (`E0410`).
 pub const MAX_TRACE_BYTES: usize = 128 << 20;

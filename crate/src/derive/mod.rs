@@ -550,7 +550,7 @@ impl<'m, 'o, R: rand::Rng> Run<'m, 'o, R> {
                 r.pass(&model.productions, &self.current, &mut self.next, step)?;
                 r.plan = None;
                 if self.observer.follows_modules() {
-                    r.followed(&self.next, Some(step), self.observer);
+                    r.followed(&self.next, Some(step), step, self.observer)?;
                 }
                 if let Some(t) = r.tracker.take() {
                     if tracked {

@@ -210,7 +210,7 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
             if !self.pass(rules, s, scratch, step)? {
                 return Ok(parents);
             }
-            self.followed(scratch, None, observer);
+            self.followed(scratch, None, step, observer)?;
             if let (Some(parents), Some(t)) = (&mut parents, &self.tracker) {
                 *parents = t.parent.iter().map(|&p| parents[p as usize]).collect();
             }
@@ -234,7 +234,16 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
 
     /// Tells the observer, when it follows every module, what the pass just run wrote (`birth`:
     /// the step of a productions pass, `None` for decomposition, which finishes its parents' step).
-    pub fn followed(&mut self, written: &LString, birth: Option<u32>, observer: &mut dyn Observer) {
+    /// `E0401` when their states would pass [`super::limits::MAX_FOLLOWED_BYTES`], before the
+    /// observer allocates them (`step`: the step the pass belongs to).
+    pub fn followed(
+        &mut self,
+        written: &LString,
+        birth: Option<u32>,
+        step: u32,
+        observer: &mut dyn Observer,
+    ) -> Result<(), Diagnostic> {
+        super::limits::check_followed(self.model, step, written.len())?;
         if let Some(t) = &self.tracker {
             let written = super::Written {
                 string: written,
@@ -244,6 +253,7 @@ impl<'m, R: rand::Rng> Rewriter<'m, R> {
             };
             observer.followed(&written, &mut *self.rng);
         }
+        Ok(())
     }
 
     /// Tests production `p` on module `i` of `src`, binding its slots.

@@ -13,7 +13,7 @@
 
 use super::grid::{distance, nearest_on_segment, sub, unit, Near, SegmentGrid};
 use super::settings::{point, positive, whole, BAD_SETTING};
-use super::{Exceeded, Part, Probe, Responder};
+use super::{Exceeded, Part, Probe, Responder, Work};
 use crate::derive::Generator;
 use crate::diagnostics::Diagnostic;
 use crate::model::ProgramSpec;
@@ -29,6 +29,8 @@ pub struct Attractors {
     influence: f64,
     kill: f64,
     points: Vec<[f64; 3]>,
+    /// The parts and `?E` it has tested against a point in this build.
+    work: Work,
 }
 
 /// The volume the points fill.
@@ -123,6 +125,7 @@ impl Attractors {
             influence,
             kill,
             points: volume.fill(count, &mut rng),
+            work: Work::default(),
         })
     }
 
@@ -132,12 +135,16 @@ impl Attractors {
     }
 
     /// For each probe, the number of points it takes and the sum of the unit directions to them.
-    fn takes(&self, probes: &[Probe<'_>]) -> Vec<[f64; 4]> {
+    fn takes(&mut self, probes: &[Probe<'_>]) -> Vec<[f64; 4]> {
         let at: Vec<[[f64; 3]; 2]> = probes.iter().map(|p| [p.position; 2]).collect();
         let grid = SegmentGrid::of_points(&at, self.influence);
         let mut taken = vec![[0.0; 4]; probes.len()];
         let mut near = Near::default();
         for &p in &self.points {
+            self.work.add(std::mem::take(&mut near.scanned));
+            if self.work.over() {
+                break;
+            }
             grid.near(p, &mut near);
             let mut best: Option<(f64, usize)> = None;
             for &i in &near.found {
@@ -157,6 +164,7 @@ impl Attractors {
                 ];
             }
         }
+        self.work.add(near.scanned);
         taken
     }
 }
@@ -191,14 +199,20 @@ impl Responder for Attractors {
             "a grid for the attraction points' kill distance",
         )?;
         let mut near = Near::default();
-        let kill = self.kill;
+        let (kill, mut work) = (self.kill, self.work);
         self.points.retain(|&p| {
+            work.add(std::mem::take(&mut near.scanned));
+            if work.over() {
+                return true;
+            }
             grid.near(p, &mut near);
             !near.found.iter().any(|&i| {
                 let [a, b] = axes[i as usize];
                 distance(nearest_on_segment(p, a, b), p) <= kill
             })
         });
+        work.add(near.scanned);
+        self.work = work;
         Ok(())
     }
 
@@ -213,6 +227,10 @@ impl Responder for Attractors {
 
     fn bytes(&self) -> usize {
         self.points.capacity() * std::mem::size_of::<[f64; 3]>()
+    }
+
+    fn work(&mut self) -> Option<&mut Work> {
+        Some(&mut self.work)
     }
 }
 

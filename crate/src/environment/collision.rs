@@ -10,7 +10,7 @@
 //! neighbouring cells, strongest first, and stops at the first that stops it.
 
 use super::settings::number;
-use super::{Exceeded, Part, Probe, Responder};
+use super::{Exceeded, Part, Probe, Responder, Work};
 use crate::diagnostics::Diagnostic;
 use crate::model::ProgramSpec;
 use std::collections::HashMap;
@@ -21,6 +21,8 @@ pub struct Collision {
     radius: f64,
     /// Compare x and z only.
     flat: bool,
+    /// The `?E` it has tested against another in this build.
+    work: Work,
 }
 
 /// A probe as the test reads it: its place (x, y, z, or x, z, 0 when flat), kind and vigor.
@@ -39,6 +41,7 @@ impl Collision {
         Ok(Collision {
             radius,
             flat: flat == 1.0,
+            work: Work::default(),
         })
     }
 
@@ -87,7 +90,11 @@ impl Responder for Collision {
         }
         let r2 = self.radius * self.radius;
         let reach: &[i64] = &[-1, 0, 1];
+        let mut work = self.work;
         for (i, bud) in buds.iter().enumerate() {
+            if work.over() {
+                break;
+            }
             let stopped = self.cell(bud.at).is_some_and(|c| {
                 let z_reach: &[i64] = if self.flat { &[0] } else { reach };
                 reach.iter().any(|&dx| {
@@ -99,6 +106,7 @@ impl Responder for Collision {
                                     .iter()
                                     .take_while(|&&j| buds[j as usize].vigor >= bud.vigor)
                                     .any(|&j| {
+                                        work.add(1);
                                         j as usize != i
                                             && squared(bud.at, buds[j as usize].at) <= r2
                                     })
@@ -111,10 +119,15 @@ impl Responder for Collision {
                 *slot = if stopped { 0.0 } else { 1.0 };
             }
         }
+        self.work = work;
     }
 
     fn bytes(&self) -> usize {
         0
+    }
+
+    fn work(&mut self) -> Option<&mut Work> {
+        Some(&mut self.work)
     }
 }
 

@@ -51,6 +51,9 @@ impl Hasher for CellHasher {
 #[derive(Clone, Debug, Default)]
 pub struct Near {
     pub found: Vec<u32>,
+    /// The entries of the cells read, over all its queries (a segment of several pieces once a
+    /// piece): the work they cost.
+    pub scanned: u64,
     marks: Vec<u32>,
     round: u32,
 }
@@ -185,6 +188,7 @@ impl SegmentGrid {
                     let Some(&(start, end)) = self.cells.get(&key) else {
                         continue;
                     };
+                    near.scanned += u64::from(end - start);
                     for &index in &self.indices[start as usize..end as usize] {
                         let mark = &mut near.marks[index as usize];
                         if *mark != near.round {

@@ -21,6 +21,45 @@ pub use programs::{responder, ProgramDefaults};
 /// would pass it stops the build with a diagnostic, never a trap.
 pub const MAX_ENVIRONMENT_BYTES: usize = 64 << 20;
 
+/// Most work one program may do in one build, all its passes together, for each module of
+/// `#max_modules` (so 10⁹ by default, and a grammar raises it as it raises the derivation's
+/// work): a test of the distance between a point and a part, an attraction point or another `?E`
+/// (every candidate the grids give, near or not), a voxel a part is spread over, and four
+/// voxels the light's propagation sweeps (seconds of work: 10⁹ of them take 1.5 to 12 s natively). A
+/// program that passes it stops where it is and the build stops with `E0418`, so that many `?E`
+/// crowded in one cell with many parts, points or other `?E` (a quadratic pass) ends in the
+/// command line and an embedded plant too, where no Stop button is at hand.
+pub const ENVIRONMENT_WORK_PER_MODULE: u64 = 200;
+
+/// The work a program has done in a build and the most it may do ([`ENVIRONMENT_WORK_PER_MODULE`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Work {
+    pub done: u64,
+    pub most: u64,
+}
+
+impl Default for Work {
+    /// None done, the most of the default `#max_modules` (5,000,000).
+    fn default() -> Work {
+        Work {
+            done: 0,
+            most: 5_000_000 * ENVIRONMENT_WORK_PER_MODULE,
+        }
+    }
+}
+
+impl Work {
+    /// True once it has done more than its most: the program does no more.
+    pub fn over(&self) -> bool {
+        self.done > self.most
+    }
+
+    /// Counts `n` more.
+    pub fn add(&mut self, n: u64) {
+        self.done = self.done.saturating_add(n);
+    }
+}
+
 /// One part of a plant as the environment sees it: a segment from `from` to `to` of radius
 /// `radius`, or a flat organ (a polygon, a surface, a leaf) at its centre (`from` = `to`) with its
 /// area in `area` (0 for a segment).
@@ -80,6 +119,13 @@ pub trait Responder {
 
     /// Bytes it holds now (for the budget of the programs together).
     fn bytes(&self) -> usize;
+
+    /// The work it has done in this build and its most ([`ENVIRONMENT_WORK_PER_MODULE`]); `None`
+    /// for a program whose work is one step a `?E`. Once past its most it does no more (its
+    /// replies and state are left as they are) and the build stops with `E0418`.
+    fn work(&mut self) -> Option<&mut Work> {
+        None
+    }
 
     /// What the studio can draw of it: a grid of values, if it keeps one.
     fn field(&self) -> Option<Field> {

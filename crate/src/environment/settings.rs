@@ -7,6 +7,16 @@ use crate::model::ProgramSpec;
 /// The code of a setting a program cannot use (docs/LANGUAGE.md, "Diagnostic codes").
 pub const BAD_SETTING: &str = "E0239";
 
+/// `x` for a message: as written when it is 0 or from 0.001 to below 10^9, else in scientific
+/// notation (`1.000e300`, not three hundred digits).
+pub fn shown(x: f64) -> String {
+    if x == 0.0 || (1e-3..1e9).contains(&x.abs()) {
+        format!("{x}")
+    } else {
+        format!("{x:.3e}")
+    }
+}
+
 /// The number of setting `name`, or `default` when it is not written; finite, at most 1e30, and
 /// `ok`, or an error at the setting saying it must be `what` (the program named in the message).
 pub fn number(
@@ -21,10 +31,13 @@ pub fn number(
         return Ok(value);
     }
     let program = spec.info().name;
-    let message = if spec.number(name).is_some() {
-        format!("the {program}'s `{name}` must be {what} (it is {value})")
+    let shown = shown(value);
+    let message = if spec.number(name).is_some() && ok(value) && value.is_finite() {
+        format!("the {program}'s `{name}` must be at most 1e30 (it is {shown})")
+    } else if spec.number(name).is_some() {
+        format!("the {program}'s `{name}` must be {what} (it is {shown})")
     } else {
-        format!("the {program}'s `{name}` is not written and its default ({value}) is not {what}: write `{name}` and {what}")
+        format!("the {program}'s `{name}` is not written and its default ({shown}) is not {what}: write `{name}` and {what}")
     };
     Err(Diagnostic::error(BAD_SETTING, spec.span_of(name), message))
 }
@@ -45,7 +58,10 @@ pub fn whole(spec: &ProgramSpec, name: &str, default: u64, most: u64) -> Result<
     Err(Diagnostic::error(
         BAD_SETTING,
         spec.span_of(name),
-        format!("`{name}` must be a whole number from 0 to {most} (it is {value})"),
+        format!(
+            "`{name}` must be a whole number from 0 to {most} (it is {})",
+            shown(value)
+        ),
     ))
 }
 
@@ -87,5 +103,32 @@ pub mod tests {
                 .collect(),
             span: 0..100,
         }
+    }
+}
+
+#[cfg(test)]
+mod messages {
+    use super::tests::spec;
+    use super::*;
+    use crate::vocabulary::EnvironmentProgram;
+
+    #[test]
+    fn a_huge_setting_is_said_to_be_too_large_in_a_few_digits() {
+        let huge = spec(EnvironmentProgram::Space, None, &[("radius", &[1e300])]);
+        let e = positive(&huge, "radius", 1.0).unwrap_err();
+        // It is above 0: the message names the bound it passed, not the one it meets.
+        assert!(e.message.contains("must be at most 1e30"), "{}", e.message);
+        assert!(e.message.ends_with("(it is 1.000e300)"), "{}", e.message);
+        let negative = spec(EnvironmentProgram::Space, None, &[("radius", &[-1e300])]);
+        let e = positive(&negative, "radius", 1.0).unwrap_err();
+        assert!(
+            e.message
+                .contains("must be a number above 0 (it is -1.000e300)"),
+            "{}",
+            e.message
+        );
+        assert_eq!(shown(0.25), "0.25");
+        assert_eq!(shown(0.0), "0");
+        assert_eq!(shown(4e20), "4.000e20");
     }
 }

@@ -12,7 +12,7 @@
 
 use super::grid::{distance, nearest_on_segment, sub, unit, Near, SegmentGrid};
 use super::settings::positive;
-use super::{Exceeded, Part, Probe, Responder};
+use super::{Exceeded, Part, Probe, Responder, Work};
 use crate::diagnostics::Diagnostic;
 use crate::model::ProgramSpec;
 
@@ -28,6 +28,8 @@ pub struct Space {
     grid: SegmentGrid,
     /// The distance under which a part touches a probe.
     touching: f64,
+    /// The parts it has tested against a probe in this build.
+    work: Work,
 }
 
 impl Space {
@@ -38,6 +40,7 @@ impl Space {
             axes: Vec::new(),
             grid: SegmentGrid::default(),
             touching: 0.0,
+            work: Work::default(),
         })
     }
 
@@ -99,7 +102,11 @@ impl Responder for Space {
     fn answer(&mut self, probes: &[Probe<'_>], replies: &mut [f64], stride: usize, offset: usize) {
         let mut near = Near::default();
         for (i, probe) in probes.iter().enumerate() {
+            if self.work.over() {
+                return;
+            }
             let reply = self.crowding(probe.position, &mut near);
+            self.work.add(std::mem::take(&mut near.scanned));
             if let Some(slot) = replies.get_mut(i * stride + offset..i * stride + offset + 4) {
                 slot.copy_from_slice(&reply);
             }
@@ -108,6 +115,10 @@ impl Responder for Space {
 
     fn bytes(&self) -> usize {
         self.axes.capacity() * std::mem::size_of::<[[f64; 3]; 2]>() + self.grid.bytes()
+    }
+
+    fn work(&mut self) -> Option<&mut Work> {
+        Some(&mut self.work)
     }
 }
 

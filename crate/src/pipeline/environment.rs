@@ -13,11 +13,13 @@ use super::{Build, Progress};
 use crate::derive::{DeriveOptions, Generator, Stepper, TracedStep};
 use crate::diagnostics::Diagnostic;
 use crate::environment::{
-    responder, Exceeded, Part, Probe, ProgramDefaults, Responder, MAX_ENVIRONMENT_BYTES,
+    responder, Exceeded, Part, Probe, ProgramDefaults, Responder, ENVIRONMENT_WORK_PER_MODULE,
+    MAX_ENVIRONMENT_BYTES,
 };
 use crate::growth::Adjustments;
 use crate::model::{LString, Model, ModuleId, ProgramSpec};
 use crate::turtle::{self, Skeleton};
+use crate::vocabulary::EnvironmentProgram;
 use glam::DVec3;
 use rand::SeedableRng;
 use std::cell::RefCell;
@@ -44,6 +46,10 @@ struct Environment<'m> {
     seed: u64,
     /// The answer passes' buffers, kept between passes.
     answers: Answers,
+    /// The modules of the plants' strings the passes have read so far (each pass draws every
+    /// plant): a timed grammar's whole steps without a round rewrite nothing, so the
+    /// derivation's work budget does not see them.
+    read: u64,
 }
 
 impl<'m> Environment<'m> {
@@ -55,8 +61,23 @@ impl<'m> Environment<'m> {
             seed,
         };
         let mut programs = Vec::new();
+        let mut held = 0;
         for spec in &model.environment.programs {
-            let program = responder(spec, &defaults)?;
+            let mut program = responder(spec, &defaults)?;
+            // What it starts with (a million attraction points: 24 MB) counts at once, so that a
+            // hundred such lines stop here, not after 2.4 GB.
+            held += program.bytes();
+            if held > MAX_ENVIRONMENT_BYTES {
+                let exceeded = Exceeded {
+                    what: beside("what it starts with", held - program.bytes()),
+                    bytes: held,
+                };
+                return Err(over_budget(spec, &exceeded));
+            }
+            if let Some(work) = program.work() {
+                let modules = model.settings.max_modules as u64;
+                work.most = modules.saturating_mul(ENVIRONMENT_WORK_PER_MODULE);
+            }
             programs.push((program, spec));
         }
         let places = match &model.environment.plants[..] {
@@ -74,6 +95,7 @@ impl<'m> Environment<'m> {
             query: model.environment_query(),
             seed,
             answers: Answers::default(),
+            read: 0,
         })
     }
 
@@ -98,6 +120,7 @@ impl<'m> Environment<'m> {
         if n == 0 {
             return Ok(());
         }
+        self.count_reading(plants.iter().map(|p| p.string().len()), step)?;
         answering(step);
         self.answers.reset(n, self.stride);
         let mut parts = Vec::new();
@@ -139,12 +162,19 @@ impl<'m> Environment<'m> {
                 });
             }
         }
-        self.update(&parts)?;
+        self.update(&parts, step, probes.len())?;
+        let crowd = Crowd {
+            step,
+            probes: probes.len(),
+            parts: parts.len(),
+        };
         drop(parts);
         let replies = &mut self.answers.replies[..probes.len() * self.stride];
         let mut offset = 0;
-        for (program, _) in &mut self.programs {
+        for (program, spec) in &mut self.programs {
+            overworked(spec, program.as_mut(), &crowd)?;
             program.answer(&probes, replies, self.stride, offset);
+            overworked(spec, program.as_mut(), &crowd)?;
             offset += program.reply_len();
         }
         drop(probes);
@@ -159,8 +189,40 @@ impl<'m> Environment<'m> {
         Ok(())
     }
 
+    /// Counts a pass's reading of strings of `lengths` modules; `E0418` once the passes have read
+    /// more than 20 × `#max_modules` modules (the derivation's work budget): a timed grammar of a
+    /// million modules held for 10,000 whole steps without a round read them all at every step
+    /// (minutes), while the derivation wrote nothing.
+    fn count_reading(
+        &mut self,
+        lengths: impl Iterator<Item = usize>,
+        step: u32,
+    ) -> Result<(), Diagnostic> {
+        let modules: u64 = lengths.map(|l| l as u64).sum();
+        self.read = self.read.saturating_add(modules);
+        let most = (self.model.settings.max_modules as u64).saturating_mul(20);
+        if self.read <= most {
+            return Ok(());
+        }
+        let span = self
+            .programs
+            .first()
+            .map_or(0..0, |(_, spec)| spec.span.clone());
+        Err(Diagnostic::error(
+            "E0418",
+            span,
+            format!(
+                "by step {step} the environment has read {} modules of the plants (every plant \
+                 drawn at every step its `?E` are answered), above its work limit of {most} (20 \
+                 times the module limit); use fewer steps or a smaller plant, or raise the limit \
+                 with '#max_modules N'",
+                self.read
+            ),
+        ))
+    }
+
     /// Every program takes in the parts, each within what the others leave of the budget.
-    fn update(&mut self, parts: &[Part]) -> Result<(), Diagnostic> {
+    fn update(&mut self, parts: &[Part], step: u32, probes: usize) -> Result<(), Diagnostic> {
         for k in 0..self.programs.len() {
             let others: usize = (self.programs.iter().enumerate())
                 .filter(|(j, _)| *j != k)
@@ -168,11 +230,71 @@ impl<'m> Environment<'m> {
                 .sum();
             let budget = MAX_ENVIRONMENT_BYTES.saturating_sub(others);
             let (program, spec) = &mut self.programs[k];
-            if let Err(exceeded) = program.update(parts, budget) {
+            if let Err(mut exceeded) = program.update(parts, budget) {
+                exceeded.what = beside(&exceeded.what, others);
                 return Err(over_budget(spec, &exceeded));
             }
+            let crowd = Crowd {
+                step,
+                probes,
+                parts: parts.len(),
+            };
+            overworked(spec, program.as_mut(), &crowd)?;
         }
         Ok(())
+    }
+}
+
+/// What one answer pass holds, for the message of a program that worked too long.
+struct Crowd {
+    step: u32,
+    probes: usize,
+    parts: usize,
+}
+
+/// `E0418` when `program` has done more than the environment's work limit in this build.
+fn overworked(
+    spec: &ProgramSpec,
+    program: &mut dyn Responder,
+    crowd: &Crowd,
+) -> Result<(), Diagnostic> {
+    let Some(work) = program.work().filter(|w| w.over()).copied() else {
+        return Ok(());
+    };
+    let way_out = match spec.program {
+        EnvironmentProgram::Light => "a larger `cell` (fewer voxels) or fewer iterations",
+        EnvironmentProgram::Space => {
+            "a smaller `radius` (fewer parts near each `?E`) or fewer `?E`"
+        }
+        EnvironmentProgram::Attractors => {
+            "a smaller `influence` or `kill`, a smaller `count`, or fewer `?E`"
+        }
+        EnvironmentProgram::Collision => "a smaller `radius` or fewer `?E` crowded together",
+        EnvironmentProgram::Obstacle => "fewer iterations",
+    };
+    Err(Diagnostic::error(
+        "E0418",
+        spec.span.clone(),
+        format!(
+            "the {} program passed the environment's work limit of {} tests by step {}, \
+             answering {} `?E` among {} parts: the `?E`, parts or points crowd too closely \
+             for its settings; use {way_out} (or raise `#max_modules`: {} tests a module)",
+            spec.info().name,
+            work.most,
+            crowd.step,
+            crowd.probes,
+            crowd.parts,
+            ENVIRONMENT_WORK_PER_MODULE,
+        ),
+    ))
+}
+
+/// `what` a program would hold, and the bytes the other programs hold beside it when they hold
+/// some (a budget passed by many programs together, not by the one named).
+fn beside(what: &str, others: usize) -> String {
+    match others.div_ceil(1 << 20) {
+        0 => what.to_string(),
+        mb => format!("{what} beside the {mb} MB the other programs hold"),
     }
 }
 

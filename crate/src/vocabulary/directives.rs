@@ -524,7 +524,7 @@ pub const DIRECTIVES: &[DirectiveInfo] = &[
         "Further modules that draw a segment like F.").repeatable(),
     row("terminal_age", D::TerminalAge, "Terminal ages", TERMINAL_AGES, G::Derivation,
         "Timed modules (ABOP 6.1) and their terminal ages: a timed module carries its age as its first parameter and is replaced when the age reaches the terminal age.")
-        .usage("E0211", "(pairs of a module name and a terminal age above 0)").repeatable(),
+        .usage("E0211", "(pairs of a module name and a terminal age from 0.000001 up)").repeatable(),
     row("dt", D::Dt, "Time step", &[&[Param::number("dt", "the time one derivation step covers").default(1.0).unit("time units")]], G::Derivation,
         "The time one derivation step covers (default 1): a timed grammar at step n shows time n·dt; expressions read it as dt."),
     row("surface", D::Surface, "Surface", SURFACE, G::Turtle,

@@ -47,8 +47,9 @@ mod sun;
 
 pub use settings::{LightSettings, BAD_SETTING, MOST_DEPTH};
 
-use super::{Exceeded, Field, Part, Probe, Responder};
+use super::{Exceeded, Field, Part, Probe, Responder, Work};
 use crate::diagnostics::Diagnostic;
+use crate::environment::settings::shown;
 use crate::maths;
 use crate::model::ProgramSpec;
 use grid::Extent;
@@ -71,6 +72,8 @@ pub struct Light {
     shadow: Vec<f32>,
     shadow_planes: ShadowPlanes,
     sun_planes: SunPlanes,
+    /// The voxels its updates have swept and spread the parts over in this build.
+    work: Work,
 }
 
 const F32: usize = std::mem::size_of::<f32>();
@@ -94,6 +97,7 @@ impl Light {
             shadow: Vec::new(),
             shadow_planes: ShadowPlanes::default(),
             sun_planes: SunPlanes::default(),
+            work: Work::default(),
         })
     }
 
@@ -133,7 +137,12 @@ impl Light {
         if bytes.is_nan() || bytes > budget as f64 {
             let [x, y, z] = dims;
             return Err(Exceeded {
-                what: format!("a light grid of {x} × {y} × {z} voxels"),
+                what: format!(
+                    "a light grid of {} × {} × {} voxels",
+                    shown(x),
+                    shown(y),
+                    shown(z)
+                ),
                 bytes: bytes.min(usize::MAX as f64) as usize,
             });
         }
@@ -146,6 +155,22 @@ impl Light {
     }
 
     /// Adds each part to the voxels it is in (`beam` holds the parts per voxel).
+    /// The voxels `parts` are spread over (a long segment one piece a voxel it crosses).
+    fn pieces(&self, parts: &[Part]) -> f64 {
+        let inv = self.extent.inv;
+        let pieces = |part: &Part| {
+            let (from, to) = (part.from, part.to);
+            let d = [0, 1, 2].map(|a| to[a] - from[a]);
+            let cells = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt() * inv;
+            if part.area > 0.0 {
+                1.0
+            } else {
+                cells.ceil().max(1.0)
+            }
+        };
+        parts.iter().filter(|p| grid::finite(p)).map(pieces).sum()
+    }
+
     fn deposit(&mut self, parts: &[Part]) {
         let inv = self.extent.inv;
         for part in parts.iter().filter(|p| grid::finite(p)) {
@@ -195,6 +220,14 @@ impl Responder for Light {
             return Ok(());
         };
         self.extent = extent;
+        // A voxel spread over costs a test's time (a write anywhere in the grid); the sweeps of
+        // the propagation, row after row, a quarter of that each voxel.
+        let work = self.pieces(parts) + extent.voxels() as f64 / 4.0;
+        self.work.add(work.min(u64::MAX as f64) as u64);
+        if self.work.over() {
+            self.extent = Extent::default();
+            return Ok(());
+        }
         let dims = extent.dims;
         fit(&mut self.beam, extent.voxels());
         self.beam.fill(0.0);
@@ -220,6 +253,10 @@ impl Responder for Light {
             sun::propagate(&mut self.beam, dims, toward, &mut self.sun_planes);
         }
         Ok(())
+    }
+
+    fn work(&mut self) -> Option<&mut Work> {
+        Some(&mut self.work)
     }
 
     fn answer(&mut self, probes: &[Probe<'_>], replies: &mut [f64], stride: usize, offset: usize) {

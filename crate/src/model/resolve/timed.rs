@@ -22,7 +22,8 @@ pub(super) fn written_dt(file: &SourceFile) -> Option<f64> {
 }
 
 impl Resolver {
-    /// `#terminal_age a 2 b 1`: pairs of a module name and a terminal age above 0 (`E0211`).
+    /// `#terminal_age a 2 b 1`: pairs of a module name and a terminal age of 10^-6 or more
+    /// (`E0211`).
     pub(super) fn terminal_ages(&mut self, d: &Directive, s: &mut Settings) {
         let words = words(d);
         if words.is_empty() || !words.len().is_multiple_of(2) {
@@ -42,9 +43,11 @@ impl Resolver {
             let Some(value) = self.number(age) else {
                 continue;
             };
-            if value <= 0.0 {
+            // Below a millionth the clock cannot tell its moments apart (it takes times 10^-9
+            // apart as one and keeps ages to 12 decimals): 1e-9 was never reached, silently.
+            if value < 1e-6 {
                 let message = format!(
-                    "{} {}: a terminal age must be above 0, found {}",
+                    "{} {}: a terminal age must be at least 0.000001, found {}",
                     d.written,
                     name.args,
                     Decimal(value)
