@@ -92,6 +92,13 @@ fn each_wrong_word_has_its_diagnostic_at_the_word() {
             "E0235",
             "grid 30 30 spacing 1",
         ),
+        // Past the limit by one count alone: the same error, not "a whole number from 0 to 401".
+        ("#stand row 402 spacing 1", "E0235", "row 402 spacing 1"),
+        (
+            "#stand grid 1e9 1e9 spacing 1",
+            "E0235",
+            "grid 1e9 1e9 spacing 1",
+        ),
         (
             "#stand random 50 size 1 1 spacing 1",
             "E0235",

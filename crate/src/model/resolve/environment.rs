@@ -264,8 +264,9 @@ impl Resolver {
             self.directive_error("E0233", d, message);
             return None;
         }
-        let total: usize = counts.iter().product();
-        if total > MAX_STAND_PLANTS {
+        // In u64: two counts of up to u32::MAX multiply without overflow on wasm32.
+        let total = counts.iter().fold(1u64, |t, &n| t.saturating_mul(n as u64));
+        if total > MAX_STAND_PLANTS as u64 {
             self.directive_error(
                 "E0235",
                 d,
@@ -317,7 +318,9 @@ impl Resolver {
                 );
                 return None;
             };
-            let n = self.whole(w, MAX_STAND_PLANTS as u64 + 1)?;
+            // Any count is read (up to u32::MAX), so that one past the limit is `E0235` with the
+            // stand's size, as two whose product is.
+            let n = self.whole(w, u32::MAX as u64)?;
             if n == 0 {
                 self.directive_error(
                     "E0233",
