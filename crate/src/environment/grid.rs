@@ -106,11 +106,7 @@ impl SegmentGrid {
                 what: format!(
                     "{what} of {} parts within {}",
                     segments.len(),
-                    if (1e-3..1e6).contains(&reach) {
-                        format!("{reach}")
-                    } else {
-                        format!("{reach:.3e}")
-                    }
+                    super::settings::shown(reach)
                 ),
                 bytes: bytes.min(usize::MAX as f64) as usize,
             });

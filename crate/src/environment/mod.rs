@@ -39,16 +39,21 @@ pub struct Work {
 }
 
 impl Default for Work {
-    /// None done, the most of the default `#max_modules` (5,000,000).
+    /// None done, the most of the default `#max_modules`.
     fn default() -> Work {
-        Work {
-            done: 0,
-            most: 5_000_000 * ENVIRONMENT_WORK_PER_MODULE,
-        }
+        Work::for_modules(crate::model::Settings::default().max_modules)
     }
 }
 
 impl Work {
+    /// None done, the most of a grammar whose `#max_modules` is `max_modules`.
+    pub fn for_modules(max_modules: usize) -> Work {
+        Work {
+            done: 0,
+            most: (max_modules as u64).saturating_mul(ENVIRONMENT_WORK_PER_MODULE),
+        }
+    }
+
     /// True once it has done more than its most: the program does no more.
     pub fn over(&self) -> bool {
         self.done > self.most

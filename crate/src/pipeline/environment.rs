@@ -13,8 +13,8 @@ use super::{Build, Progress};
 use crate::derive::{DeriveOptions, Generator, Stepper, TracedStep};
 use crate::diagnostics::Diagnostic;
 use crate::environment::{
-    responder, Exceeded, Part, Probe, ProgramDefaults, Responder, ENVIRONMENT_WORK_PER_MODULE,
-    MAX_ENVIRONMENT_BYTES,
+    responder, Exceeded, Part, Probe, ProgramDefaults, Responder, Work,
+    ENVIRONMENT_WORK_PER_MODULE, MAX_ENVIRONMENT_BYTES,
 };
 use crate::growth::Adjustments;
 use crate::model::{LString, Model, ModuleId, ProgramSpec};
@@ -75,8 +75,7 @@ impl<'m> Environment<'m> {
                 return Err(over_budget(spec, &exceeded));
             }
             if let Some(work) = program.work() {
-                let modules = model.settings.max_modules as u64;
-                work.most = modules.saturating_mul(ENVIRONMENT_WORK_PER_MODULE);
+                *work = Work::for_modules(model.settings.max_modules);
             }
             programs.push((program, spec));
         }
@@ -200,7 +199,7 @@ impl<'m> Environment<'m> {
     ) -> Result<(), Diagnostic> {
         let modules: u64 = lengths.map(|l| l as u64).sum();
         self.read = self.read.saturating_add(modules);
-        let most = (self.model.settings.max_modules as u64).saturating_mul(20);
+        let most = crate::derive::work_budget(self.model);
         if self.read <= most {
             return Ok(());
         }

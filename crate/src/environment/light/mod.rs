@@ -154,23 +154,21 @@ impl Light {
         }))
     }
 
-    /// Adds each part to the voxels it is in (`beam` holds the parts per voxel).
-    /// The voxels `parts` are spread over (a long segment one piece a voxel it crosses).
+    /// The voxels `parts` are spread over (a long segment one piece a voxel it crosses), as
+    /// [`Light::deposit`] spreads them.
     fn pieces(&self, parts: &[Part]) -> f64 {
         let inv = self.extent.inv;
         let pieces = |part: &Part| {
-            let (from, to) = (part.from, part.to);
-            let d = [0, 1, 2].map(|a| to[a] - from[a]);
-            let cells = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt() * inv;
             if part.area > 0.0 {
                 1.0
             } else {
-                cells.ceil().max(1.0)
+                length_in_voxels(part, inv).ceil().max(1.0)
             }
         };
         parts.iter().filter(|p| grid::finite(p)).map(pieces).sum()
     }
 
+    /// Adds each part to the voxels it is in (`beam` holds the parts per voxel).
     fn deposit(&mut self, parts: &[Part]) {
         let inv = self.extent.inv;
         for part in parts.iter().filter(|p| grid::finite(p)) {
@@ -181,8 +179,7 @@ impl Light {
                 self.beam[v] += (part.area * inv * inv).max(1.0) as f32;
                 continue;
             }
-            let d = [0, 1, 2].map(|a| to[a] - from[a]);
-            let cells = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt() * inv;
+            let cells = length_in_voxels(part, inv);
             if cells <= 1.0 {
                 let v = self.extent.index(self.extent.voxel_clamped(middle));
                 self.beam[v] += 1.0;
@@ -192,12 +189,18 @@ impl Light {
             let (step, weight) = (1.0 / pieces, (cells / pieces) as f32);
             for s in 0..pieces as usize {
                 let t = (s as f64 + 0.5) * step;
-                let p = [0, 1, 2].map(|a| from[a] + t * d[a]);
+                let p = [0, 1, 2].map(|a| from[a] + t * (to[a] - from[a]));
                 let v = self.extent.index(self.extent.voxel_clamped(p));
                 self.beam[v] += weight;
             }
         }
     }
+}
+
+/// The length of a segment in voxels (`inv`: one over a voxel's side).
+fn length_in_voxels(part: &Part, inv: f64) -> f64 {
+    let d = [0, 1, 2].map(|a| part.to[a] - part.from[a]);
+    (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt() * inv
 }
 
 /// A vector resized to `len` in the allocation it has (given back when it is more than twice
