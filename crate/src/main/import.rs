@@ -1,10 +1,9 @@
 //! `meristem import`: another dialect's grammar or a vlab object translated.
 
 use super::args::Args;
-use super::input::{check_not_input, read_bytes, MAX_FILE_BYTES};
+use super::input::{check_not_input, read_bytes, read_past, MAX_FILE_BYTES};
 use super::python;
 use meristem::import::{self, Dialect, Import};
-use std::io::Read;
 use std::process::ExitCode;
 
 /// `meristem import`: the translation on stdout (or in `-o OUT`), one `FILE:LINE: note: …` line on
@@ -124,14 +123,11 @@ fn read_folder(path: &std::path::Path) -> Result<Vec<import::ObjectFile>, String
                 if files.len() == import::MAX_OBJECT_FILES || metadata.len() > left {
                     return Err(too_many());
                 }
-                let mut bytes = Vec::new();
-                let Ok(file) = std::fs::File::open(&p) else {
+                // (A file of /proc says 0 bytes and may give more: read no further than the limit.)
+                let read = std::fs::File::open(&p).and_then(|file| read_past(file, left));
+                let Ok(bytes) = read else {
                     continue;
                 };
-                // (A file of /proc says 0 bytes and may give more: read no further than the limit.)
-                if file.take(left + 1).read_to_end(&mut bytes).is_err() {
-                    continue;
-                }
                 left = left.checked_sub(bytes.len() as u64).ok_or_else(too_many)?;
                 let name = p.strip_prefix(path).unwrap_or(&p);
                 let name = name.to_string_lossy().into_owned();

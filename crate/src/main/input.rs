@@ -26,7 +26,6 @@ pub fn read_bytes(path: &Path) -> Result<Vec<u8>, String> {
     let cannot = |e: std::io::Error| format!("cannot read {}: {e}", path.display());
     let file = std::fs::File::open(path).map_err(cannot)?;
     let metadata = file.metadata().map_err(cannot)?;
-    let mut bytes = Vec::new();
     if metadata.is_file() {
         let too_large = || {
             format!(
@@ -39,17 +38,13 @@ pub fn read_bytes(path: &Path) -> Result<Vec<u8>, String> {
             return Err(too_large());
         }
         // (A file of /proc says 0 bytes and may give more: read no further than the limit.)
-        file.take(MAX_FILE_BYTES + 1)
-            .read_to_end(&mut bytes)
-            .map_err(cannot)?;
+        let bytes = read_past(file, MAX_FILE_BYTES).map_err(cannot)?;
         if bytes.len() as u64 > MAX_FILE_BYTES {
             return Err(too_large());
         }
         return Ok(bytes);
     }
-    file.take(MAX_STREAM_BYTES + 1)
-        .read_to_end(&mut bytes)
-        .map_err(cannot)?;
+    let bytes = read_past(file, MAX_STREAM_BYTES).map_err(cannot)?;
     if bytes.len() as u64 > MAX_STREAM_BYTES {
         return Err(format!(
             "{} is not a regular file and gives more than {MAX_STREAM_BYTES} bytes, the largest \
@@ -57,6 +52,14 @@ pub fn read_bytes(path: &Path) -> Result<Vec<u8>, String> {
             path.display()
         ));
     }
+    Ok(bytes)
+}
+
+/// What `file` gives, read to its end or to one byte past `most`, whichever comes first: more
+/// than `most` bytes means it is too large, and no more was read to know it.
+pub fn read_past(file: std::fs::File, most: u64) -> std::io::Result<Vec<u8>> {
+    let mut bytes = Vec::new();
+    file.take(most.saturating_add(1)).read_to_end(&mut bytes)?;
     Ok(bytes)
 }
 

@@ -9,18 +9,11 @@ use wasm_bindgen::prelude::*;
 /// bytes and lengths disagree: a note says how).
 #[wasm_bindgen(js_name = importObject)]
 pub fn import_object(names: Vec<String>, bytes: &[u8], lengths: &[u32]) -> String {
-    use crate::import::{self, Dialect, Import};
-    #[derive(serde::Serialize)]
-    struct Imported {
-        #[serde(flatten)]
-        import: Import,
-        dialect: Option<Dialect>,
-    }
     let (import, dialect) = match object_files(names, bytes, lengths) {
-        Ok(files) => import::import_files(&files),
+        Ok(files) => crate::import::import_files(&files),
         Err(why) => (not_imported(why), None),
     };
-    serde_json::to_string(&Imported { import, dialect }).unwrap_or_else(|_| "{}".into())
+    imported_json(import, dialect)
 }
 
 /// Translates `text`, written in another L-system dialect, into Meristem's language.
@@ -30,34 +23,18 @@ pub fn import_object(names: Vec<String>, bytes: &[u8], lengths: &[u32]) -> Strin
 /// file); when the dialect cannot be told, `text` is empty, `dialect` null and one note says why.
 #[wasm_bindgen(js_name = importGrammar)]
 pub fn import_grammar(text: &str, dialect_or_file_name: &str) -> String {
-    use crate::import::{self, Dialect, Import, ImportNote};
-    #[derive(serde::Serialize)]
-    struct Imported {
-        #[serde(flatten)]
-        import: Import,
-        dialect: Option<Dialect>,
-    }
+    use crate::import::{self, Dialect};
     let dialect = Dialect::from_name(dialect_or_file_name)
         .or_else(|| import::detect(text, dialect_or_file_name));
-    let result = match dialect {
-        Some(d) => Imported {
-            import: import::import(text, d),
-            dialect: Some(d),
-        },
-        None => Imported {
-            import: Import {
-                text: String::new(),
-                notes: vec![ImportNote {
-                    line: 0,
-                    message: format!(
-                        "cannot tell which dialect '{dialect_or_file_name}' is written in (green, lparser, cpfg or lpy)"
-                    ),
-                }],
-            },
-            dialect: None,
-        },
-    };
-    serde_json::to_string(&result).unwrap_or_else(|_| "{}".into())
+    match dialect {
+        Some(d) => imported_json(import::import(text, d), Some(d)),
+        None => imported_json(
+            not_imported(format!(
+                "cannot tell which dialect '{dialect_or_file_name}' is written in (green, lparser, cpfg or lpy)"
+            )),
+            None,
+        ),
+    }
 }
 
 /// The files of [`import_object`]'s arguments: `names[k]` with the next `lengths[k]` bytes; or
@@ -94,6 +71,18 @@ fn object_files(
         rest = after;
     }
     Ok(files)
+}
+
+/// The JSON the importers' doors return: the import's `text` and `notes`, and its `dialect`
+/// (null when nothing could be imported).
+fn imported_json(import: crate::import::Import, dialect: Option<crate::import::Dialect>) -> String {
+    #[derive(serde::Serialize)]
+    struct Imported {
+        #[serde(flatten)]
+        import: crate::import::Import,
+        dialect: Option<crate::import::Dialect>,
+    }
+    serde_json::to_string(&Imported { import, dialect }).unwrap_or_else(|_| "{}".into())
 }
 
 /// An import of nothing, with the note that says why.
@@ -148,23 +137,10 @@ pub fn import_derived(
     lengths: &[u32],
     seed: f64,
 ) -> String {
-    use crate::import::{self, Dialect, Import};
-    #[derive(serde::Serialize)]
-    struct Imported {
-        #[serde(flatten)]
-        import: Import,
-        dialect: Option<Dialect>,
-    }
+    use crate::import::{self, Dialect};
     let files = match object_files(names, bytes, lengths) {
         Ok(files) => files,
-        Err(why) => {
-            let import = not_imported(why);
-            return serde_json::to_string(&Imported {
-                import,
-                dialect: None,
-            })
-            .unwrap_or_else(|_| "{}".into());
-        }
+        Err(why) => return imported_json(not_imported(why), None),
     };
     let seed = if seed.is_finite() && seed >= 0.0 {
         seed as u64
@@ -174,7 +150,7 @@ pub fn import_derived(
     let import = import::import_derived(result_json, main_name, &files, seed);
     let lpy = main_name.to_ascii_lowercase().ends_with(".lpy");
     let dialect = (!import.is_empty()).then_some(if lpy { Dialect::Lpy } else { Dialect::Cpfg });
-    serde_json::to_string(&Imported { import, dialect }).unwrap_or_else(|_| "{}".into())
+    imported_json(import, dialect)
 }
 
 /// The import to open: the derived one (`derivedJson`, from [`import_derived`]) when it has a
